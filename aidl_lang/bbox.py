@@ -1,0 +1,177 @@
+"""Deferred bounding-box expressions (paper, appendix "Solver Details", *Deferred expressions*).
+
+``s.bb.left`` evaluates to a :class:`BBTerm`; it is expanded into ``min``/``max`` over the
+extreme points of the target's geometry only when the constraint is compiled, right before
+solving, once the whole tree is known.  A structure's box covers its own geometry and all its
+descendants' (construction geometry excluded), except descendants whose own box appears in the
+same constraint: ``self.bb.top == self.lid.bb.top`` aligns the lid with the rest of the body.
+"""
+from __future__ import annotations
+
+import math
+
+from .expr import Expr, Lin, Nl, evaluate, func, var
+from .model import Geometry, Structure
+
+SIDES = ("left", "right", "bottom", "top")
+
+
+class BBTerm(Expr):
+    """One side (left/right/bottom/top) of a target's box, in the frame of ``frame``."""
+
+    __slots__ = ("target", "side", "frame")
+
+    def __init__(self, target, side: str, frame: Structure):
+        self.target = target
+        self.side = side
+        self.frame = frame
+
+    def __repr__(self):
+        return f"bb({getattr(self.target, 'name', '?')}.{self.side})"
+
+
+def contains_bbox(e) -> bool:
+    if isinstance(e, BBTerm):
+        return True
+    if isinstance(e, Nl):
+        return any(contains_bbox(a) for a in e.args)
+    return False
+
+
+def collect(e, out: list) -> list:
+    if isinstance(e, BBTerm):
+        out.append(e)
+    elif isinstance(e, Nl):
+        for a in e.args:
+            collect(a, out)
+    return out
+
+
+def expand(e, x, exclude: set):
+    """Replace every BBTerm in ``e`` by its min/max expression (at parameter values ``x``)."""
+    if isinstance(e, BBTerm):
+        return side_expr(e.target, e.side, e.frame, x, exclude)
+    if isinstance(e, Nl):
+        args = tuple(expand(a, x, exclude) for a in e.args)
+        from .expr import add, div, mul
+        if e.op == "add":
+            return add(*args)
+        if e.op == "mul":
+            return mul(*args)
+        if e.op == "div":
+            return div(*args)
+        return Nl(e.op, args)
+    return e
+
+
+def exclusions(terms: list[BBTerm]) -> set:
+    """Descendant structures to leave out of ancestors' boxes in one constraint."""
+    structs = {t.target for t in terms if isinstance(t.target, Structure)}
+    out = set()
+    for s in structs:
+        for other in structs:
+            if other is not s and other.is_within(s):
+                out.add(other)
+    return out
+
+
+def side_expr(target, side: str, frame: Structure, x, exclude: set) -> Expr:
+    xs, ys = candidates(target, frame, x, exclude)
+    if side in ("left", "right"):
+        cands = xs
+    else:
+        cands = ys
+    if not cands:
+        ox, oy = (target if isinstance(target, Structure) else target.owner).frame_offset(frame)
+        return ox if side in ("left", "right") else oy
+    if len(cands) == 1:
+        return cands[0]
+    return func("min" if side in ("left", "bottom") else "max", *cands)
+
+
+def candidates(target, frame: Structure, x, exclude: set) -> tuple[list, list]:
+    xs: list = []
+    ys: list = []
+    if isinstance(target, Structure):
+        for s in _subtree(target, exclude, top=target):
+            for g in s.geometry:
+                if not g.construction:
+                    _geom_candidates(g, frame, x, xs, ys)
+    else:
+        _geom_candidates(target, frame, x, xs, ys)
+    return xs, ys
+
+
+def _subtree(s: Structure, exclude: set, top: Structure):
+    if s in exclude and s is not top:
+        return
+    yield s
+    for c in s.children.values():
+        yield from _subtree(c, exclude, top)
+
+
+def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list) -> None:
+    k = g.kind
+    P = {n: p.in_frame(frame) for n, p in g.points.items()}
+    if k == "Circle":
+        cx, cy = P["center"]
+        r = var(g.scalars["radius"].index)
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
+        return
+    if k == "Slot":
+        r = var(g.scalars["radius"].index)
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs += [px - r, px + r]
+            ys += [py - r, py + r]
+        return
+    if k == "Arc":
+        cx, cy = P["center"]
+        sx, sy = P["start"]
+        ex, ey = P["end"]
+        xs += [sx, ex]
+        ys += [sy, ey]
+        c = g.points["center"]
+        s = g.points["start"]
+        e = g.points["end"]
+        a1 = math.atan2(x[s.iy] - x[c.iy], x[s.ix] - x[c.ix])
+        a2 = math.atan2(x[e.iy] - x[c.iy], x[e.ix] - x[c.ix])
+        sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+        r = func("sqrt", (var(s.ix) - var(c.ix)) * (var(s.ix) - var(c.ix))
+                 + (var(s.iy) - var(c.iy)) * (var(s.iy) - var(c.iy)))
+        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
+                              (1.5 * math.pi, (0, -1))):
+            if (ang - a1) % (2 * math.pi) <= sweep:
+                if dx:
+                    xs.append(cx + r * dx)
+                else:
+                    ys.append(cy + r * dy)
+        return
+    if k == "Text":
+        px, py = P["position"]
+        x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
+        xs += [px + x0, px + x1]
+        ys += [py + y0, py + y1]
+        return
+    for n, (px, py) in P.items():
+        if k in ("Rectangle", "RoundedRectangle") and n == "center":
+            continue
+        if k == "RegularPolygon" and n == "center":
+            continue
+        xs.append(px)
+        ys.append(py)
+
+
+def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, float, float] | None:
+    """(left, right, bottom, top) at values ``x``; None if the target holds no geometry."""
+    xs, ys = candidates(target, frame, x, set(exclude))
+    if not xs:
+        return None
+    vx = [evaluate(e, x) for e in xs]
+    vy = [evaluate(e, x) for e in ys]
+    return min(vx), max(vx), min(vy), max(vy)
+
+
+__all__ = ["BBTerm", "SIDES", "contains_bbox", "collect", "expand", "exclusions",
+           "side_expr", "numeric_box", "Lin"]

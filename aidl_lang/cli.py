@@ -1,0 +1,165 @@
+"""The ``aidl`` command line: ``render``, ``check``, ``explain``.
+
+Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
+An output file is written only when the whole pipeline succeeded (written to a temporary file
+beside it, then renamed), so a good drawing is never replaced by a broken one.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from .diagnostics import Diagnostic, DiagnosticSink, render_text
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):      # usage errors: exit 2 with a short message
+        self.print_usage(sys.stderr)
+        print(f"aidl: error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
+    r = sub.add_parser("render", help="compile a .aidl file to SVG")
+    r.add_argument("file")
+    r.add_argument("-o", "--output", help="output .svg (default: FILE with .svg)")
+    r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help="override a model param, e.g. --set width=40mm")
+    r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    c = sub.add_parser("check", help="parse, check and solve; write nothing")
+    c.add_argument("file")
+    c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    e = sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
+    e.add_argument("code")
+    return p
+
+
+def _overrides(items: list[str]) -> dict[str, str]:
+    out = {}
+    for it in items:
+        if "=" not in it:
+            print(f"aidl: error: --set expects NAME=VALUE, got `{it}`", file=sys.stderr)
+            raise SystemExit(2)
+        k, v = it.split("=", 1)
+        out[k.strip()] = v.strip()
+    return out
+
+
+def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = None) -> None:
+    if as_json:
+        doc = {"ok": ok, "diagnostics": [d.to_json(sink.sources) for d in sink.items]}
+        doc.update(extra or {})
+        print(json.dumps(doc, indent=2))
+        return
+    color = sys.stderr.isatty() and not os.environ.get("NO_COLOR")
+    for d in sink.items:
+        print(render_text(d, sink.sources, color=color), file=sys.stderr)
+        print(file=sys.stderr)
+    n_err = sum(d.is_error for d in sink.items)
+    n_warn = sum(d.severity == "warning" for d in sink.items)
+    if n_err:
+        print(f"aidl: {n_err} error{'s' if n_err != 1 else ''}"
+              + (f", {n_warn} warning{'s' if n_warn != 1 else ''}" if n_warn else ""), file=sys.stderr)
+
+
+def _read(path: str, as_json: bool) -> str | None:
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        sink = DiagnosticSink()
+        sink.add(Diagnostic("E0004", f"cannot read `{path}`: {getattr(e, 'strerror', None) or e}",
+                            None, hint="check the file name"))
+        _emit(sink, as_json, False)
+        return None
+
+
+def cmd_check(args) -> int:
+    from .pipeline import compile_source
+    src = _read(args.file, args.json)
+    if src is None:
+        return 1
+    res = compile_source(src, args.file, _overrides(args.set))
+    extra = {}
+    if res.solve is not None:
+        extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
+                          "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
+                          "max_residual": res.solve.max_residual}
+    _emit(res.sink, args.json, res.ok, extra)
+    if res.ok and not args.json:
+        s = res.solve
+        print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
+              f"{s.n_equations} equations, solved in {s.iterations} Newton steps)")
+    return 0 if res.ok else 1
+
+
+def cmd_render(args) -> int:
+    from .pipeline import compile_source
+    from .render import render_model, to_svg
+    src = _read(args.file, args.json)
+    if src is None:
+        return 1
+    res = compile_source(src, args.file, _overrides(args.set))
+    out = Path(args.output) if args.output else Path(args.file).with_suffix(".svg")
+    if not res.ok:
+        _emit(res.sink, args.json, False)
+        return 1
+    drawing = render_model(res.model)
+    for g in drawing.open_curves:
+        res.sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
+                         "line, not filled", g.span,
+                         hint="share endpoints between lines and arcs so they form a loop, or put "
+                              "the curve in a `drawing` structure")
+    svg = to_svg(drawing, title=res.model.root.name)
+    try:
+        fd, tmp = tempfile.mkstemp(suffix=".svg", dir=str(out.parent.resolve()))
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(svg)
+        os.replace(tmp, out)
+    except OSError as e:
+        print(f"aidl: error: cannot write `{out}`: {e.strerror or e}", file=sys.stderr)
+        return 1
+    _emit(res.sink, args.json, True, {"output": str(out)})
+    if not args.json:
+        print(f"wrote {out}")
+    return 0
+
+
+def cmd_explain(args) -> int:
+    from .codes import CODES
+    code = args.code.upper()
+    if code not in CODES:
+        print(f"aidl: unknown code `{args.code}`; known codes: {', '.join(sorted(CODES))}",
+              file=sys.stderr)
+        return 2
+    title, text = CODES[code]
+    print(f"{code}: {title}\n\n{text.strip()}")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return {"check": cmd_check, "render": cmd_render, "explain": cmd_explain}[args.cmd](args)
+    except KeyboardInterrupt:
+        return 130
+    except RecursionError:
+        print("aidl: error[E0302]: the program is nested too deeply to compile", file=sys.stderr)
+        return 1
+    except Exception as e:  # an internal error: report it as such, never a raw traceback
+        print(f"aidl: internal error: {type(e).__name__}: {e}\n"
+              "This is a bug in aidl, not in your program. Please report it with the input file.",
+              file=sys.stderr)
+        if os.environ.get("AIDL_DEBUG"):
+            raise
+        return 3
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,167 @@
+"""Every diagnostic code with a title and a longer explanation (``aidl explain CODE``)."""
+
+CODES: dict[str, tuple[str, str]] = {
+    "E0001": ("syntax error", """
+The text does not follow AIDL's grammar. The message lists what the parser expected at that
+point. The parser skips the bad statement and goes on, so later errors are reported too.
+
+    solid plate {
+        body = Rectangle(center=(0, 0) width=40, height=20)   # missing `,`
+    }
+"""),
+    "E0002": ("unexpected character or unterminated string", """
+A character that cannot start any token, or a string without its closing quote.
+
+    label = "Hello      # close the string: "Hello"
+"""),
+    "E0003": ("nesting too deep", """
+Brackets are nested more than 64 levels deep. Split the expression into named constants.
+"""),
+    "E0004": ("cannot read the input file", "The file does not exist or is not UTF-8 text."),
+    "E0101": ("unknown name", """
+A name is used that is not defined in this structure, an enclosing one, or the file
+(params, constants, templates). The message suggests the nearest known names.
+
+    solid s { c = Circle(center=(0, 0), radius=rad) }   # `rad` is not defined
+"""),
+    "E0102": ("unknown member", """
+`thing.member` names a member that `thing` does not have. Rectangles have top_left, top_right,
+bottom_left, bottom_right, center, top/bottom/left/right (edges), width, height, bb; lines have
+start, end, midpoint, length; circles have center, radius, diameter; structures have their
+children, their named geometry and `bb`.
+
+    corner = body.top_lft     # did you mean `top_left`?
+"""),
+    "E0103": ("unknown function, primitive or constraint", """
+The called name is not a primitive (Circle, Rectangle, ...), a constraint (Coincident, Above,
+...), a function (sin, sqrt, range, ...) or a template defined with `def`.
+
+    Rotate(body, 30 deg)     # there is no Rotate: use `rotation=30 deg` or Angle(...)
+"""),
+    "E0104": ("wrong number of arguments", """
+The call has more positional arguments than the primitive or constraint takes, in any of its
+forms. The hint lists the accepted forms.
+
+    Circle((0, 0), 5, 7)     # Circle(center, radius)
+"""),
+    "E0105": ("unknown keyword argument", """
+A keyword argument that the primitive, constraint or template does not have.
+
+    Circle(center=(0, 0), r=5)     # the argument is `radius`
+"""),
+    "E0106": ("missing argument", """
+A required argument is missing. Dimensions (width, height, radius) are required because they
+are the design intent that the solver holds.
+
+    Rectangle(center=(0, 0), width=10)     # height is missing
+"""),
+    "E0107": ("name defined twice", """
+Two geometry objects or structures of one structure have the same name.
+
+    a = Circle((0, 0), 2)
+    a = Circle((5, 0), 2)     # name the second one `b`
+"""),
+    "E0108": ("wrong type", """
+A value of the wrong kind: a length where a point is expected, a Circle where a Line is
+expected, a comparison joined with `or`, and so on.
+
+    Horizontal(wheel)      # Horizontal takes a Line or two points, wheel is a Circle
+"""),
+    "E0109": ("unit mismatch", """
+Lengths, angles and plain numbers cannot be mixed in + - and comparisons. A bare number
+adapts: it is in the file's unit next to a length and in degrees next to an angle.
+
+    w = 10 mm + 30 deg      # a length plus an angle
+"""),
+    "E0110": ("index out of range", """
+A list is indexed past its end. Lists from loops and comprehensions are indexed from 0.
+
+    holes = [Circle((i * 10, 0), 2) for i in range(4)]
+    Fixed(holes[4])      # valid indices are 0 to 3
+"""),
+    "E0111": ("not iterable / not callable / not indexable", """
+A `for` loop over something that is not a list, a call of a value, or indexing a non-list.
+"""),
+    "E0112": ("math error", "Division by zero, sqrt of a negative number, and similar."),
+    "E0113": ("bad --set override", """
+`--set NAME=VALUE` names a param the file does not declare, or its value cannot be read.
+Declare overridable values with `param NAME = VALUE` at the top of the file.
+"""),
+    "E0114": ("import not found or not allowed", """
+`import "file.aidl"` resolves relative to the importing file and must stay inside that file's
+folder tree; `import "std/NAME.aidl"` reads the standard library. Nothing else can be read.
+"""),
+    "E0115": ("import cycle", "Two files import each other. Move shared templates to a third file."),
+    "E0116": ("top-level statement inside a structure", """
+`param`, `def`, `import` and `units` belong at the top level of a file.
+"""),
+    "E0117": ("geometry outside a structure", """
+Geometry and constraints live in a structure. Loose top-level geometry is put into an implicit
+root named `model`, but inside a template call or a constant it has nowhere to go.
+"""),
+    "E0118": ("value depends on the solver", """
+Conditions (`if`, `a if c else b`, comprehension filters), `//`, `%`, round() and f-strings need
+values known before solving. Geometry positions are only known after the solve: write a
+constraint instead, or test a param.
+"""),
+    "E0119": ("template instance without a name", """
+A template call creates a child structure, and structures have names: `left = wheel(r=10)`.
+"""),
+    "E0120": ("Text outside a drawing", """
+Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
+
+    solid tag {
+        plate = RoundedRectangle(center=(0, 0), width=60, height=20, corner_radius=3)
+        drawing label { t = Text("AIDL", position=(0, -2), size=8) }
+    }
+"""),
+    "E0201": ("geometry refers to another structure (validity rule 1)", """
+Geometry may only be built from geometry of its own structure. This keeps each structure
+solvable on its own. Give the geometry its own starting value and relate it to the other
+structure with a constraint in a structure that contains both:
+
+    solid phone {
+        solid base { body = Rectangle(center=(0, 0), width=60, height=30) }
+        solid dial {
+            plate = Circle(center=base.body.center, radius=10)   # error: base is another structure
+            plate = Circle(center=(0, 0), radius=10)             # fix
+        }
+        CenterInside(dial, base)                                  # relate them here
+    }
+"""),
+    "E0202": ("constraint outside its structure's subtree (validity rule 2)", """
+A constraint may only refer to its own structure and its descendants. A constraint relating two
+sibling structures belongs in their common parent; the hint names it.
+
+    solid phone {
+        solid base { body = Rectangle(center=(0, 0), width=60, height=30) }
+        solid dial {
+            plate = Circle(center=(0, 0), radius=10)
+            CenterInside(self, base)      # error: base is not inside dial
+        }
+        CenterInside(dial, base)          # fix: in the common parent
+    }
+"""),
+    "E0204": ("template argument is geometry", """
+Template parameters are values (numbers, lengths, angles, booleans, strings). Relate a template
+instance to other parts with constraints in the parent structure.
+"""),
+    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items."),
+    "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
+    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
+    "E0401": ("constraints cannot be satisfied", """
+After solving, some constraints still do not hold: they contradict each other or a dimension
+held by a constructor (width, radius, ...). The message lists them with their residuals (how far
+off they are, in mm or radians). Remove or change the one that does not express the intent.
+
+    solid s {
+        c = Circle(center=(0, 0), radius=5)
+        Radius(c, 7)      # contradicts radius=5 given to the constructor
+    }
+"""),
+    "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0402": ("open outline", """
+Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop.
+Share endpoints (`Line(start=a.end, end=b.start)`) or add Coincident constraints.
+"""),
+}

@@ -1,0 +1,288 @@
+"""Residual expressions over the model's parameter vector, with analytic gradients.
+
+An expression is either affine, :class:`Lin` (``sum(coef_i * x_i) + c``: most CAD constraints,
+kept as sparse rows so the solver evaluates all of them in one sparse product), or a nonlinear
+:class:`Nl` tree whose value and gradient are evaluated in forward mode.  Values are in mm and
+radians.  ``min``/``max`` nodes are pruned to their active branch before solving (paper,
+appendix "Solver Details", *Iterated Newton solve for branching expressions*).
+"""
+from __future__ import annotations
+
+import math
+from typing import Union
+
+Number = Union[int, float]
+
+
+class Expr:
+    __slots__ = ()
+
+    # arithmetic -------------------------------------------------------------
+    def __add__(self, o):
+        return add(self, o)
+
+    def __radd__(self, o):
+        return add(o, self)
+
+    def __sub__(self, o):
+        return add(self, mul(-1.0, o))
+
+    def __rsub__(self, o):
+        return add(o, mul(-1.0, self))
+
+    def __mul__(self, o):
+        return mul(self, o)
+
+    def __rmul__(self, o):
+        return mul(o, self)
+
+    def __truediv__(self, o):
+        return div(self, o)
+
+    def __rtruediv__(self, o):
+        return div(o, self)
+
+    def __neg__(self):
+        return mul(-1.0, self)
+
+
+class Lin(Expr):
+    """Affine expression ``sum(terms[i] * x[i]) + const``."""
+
+    __slots__ = ("terms", "const")
+
+    def __init__(self, terms: dict[int, float] | None = None, const: float = 0.0):
+        self.terms = terms or {}
+        self.const = float(const)
+
+    def is_const(self) -> bool:
+        return not self.terms
+
+    def __repr__(self):
+        return f"Lin({self.terms}, {self.const})"
+
+
+class Nl(Expr):
+    """Nonlinear node: ``op`` in mul, div, pow, sin, cos, tan, asin, acos, atan, atan2, sqrt,
+    abs, min, max, exp, log."""
+
+    __slots__ = ("op", "args")
+
+    def __init__(self, op: str, args: tuple):
+        self.op = op
+        self.args = args
+
+    def __repr__(self):
+        return f"{self.op}{self.args}"
+
+
+def var(i: int) -> Lin:
+    return Lin({i: 1.0})
+
+
+def const(c: float) -> Lin:
+    return Lin({}, c)
+
+
+def lift(x) -> Expr:
+    if isinstance(x, Expr):
+        return x
+    return Lin({}, float(x))
+
+
+def as_const(x) -> float | None:
+    """The constant value of ``x`` if it has no unknowns, else None."""
+    if isinstance(x, (int, float)):
+        return float(x)
+    if isinstance(x, Lin) and not x.terms:
+        return x.const
+    return None
+
+
+def add(a, b) -> Expr:
+    a, b = lift(a), lift(b)
+    if isinstance(a, Lin) and isinstance(b, Lin):
+        t = dict(a.terms)
+        for k, v in b.terms.items():
+            t[k] = t.get(k, 0.0) + v
+        return Lin(t, a.const + b.const)
+    return Nl("add", (a, b))
+
+
+def mul(a, b) -> Expr:
+    a, b = lift(a), lift(b)
+    ca, cb = as_const(a), as_const(b)
+    if ca is not None and isinstance(b, Lin):
+        return Lin({k: v * ca for k, v in b.terms.items()}, b.const * ca)
+    if cb is not None and isinstance(a, Lin):
+        return Lin({k: v * cb for k, v in a.terms.items()}, a.const * cb)
+    if ca == 0.0 or cb == 0.0:
+        return const(0.0)
+    return Nl("mul", (a, b))
+
+
+def div(a, b) -> Expr:
+    a, b = lift(a), lift(b)
+    cb = as_const(b)
+    if cb is not None:
+        if cb == 0.0:
+            raise ZeroDivisionError("division by zero")
+        return mul(a, 1.0 / cb)
+    return Nl("div", (a, b))
+
+
+_UNARY = {
+    "sin": (math.sin, math.cos),
+    "cos": (math.cos, lambda v: -math.sin(v)),
+    "tan": (math.tan, lambda v: 1.0 / math.cos(v) ** 2),
+    "asin": (math.asin, lambda v: 1.0 / math.sqrt(max(1e-300, 1 - v * v))),
+    "acos": (math.acos, lambda v: -1.0 / math.sqrt(max(1e-300, 1 - v * v))),
+    "atan": (math.atan, lambda v: 1.0 / (1 + v * v)),
+    "sqrt": (math.sqrt, lambda v: 0.5 / math.sqrt(v) if v > 1e-300 else 1e150),
+    "abs": (abs, lambda v: 1.0 if v >= 0 else -1.0),
+    "exp": (math.exp, math.exp),
+    "log": (math.log, lambda v: 1.0 / v),
+}
+
+
+def func(op: str, *args) -> Expr:
+    """Apply a named function; constant arguments fold to a constant (may raise ValueError)."""
+    args = tuple(lift(a) for a in args)
+    consts = [as_const(a) for a in args]
+    if all(c is not None for c in consts):
+        if op in _UNARY:
+            return const(_UNARY[op][0](consts[0]))
+        if op == "atan2":
+            return const(math.atan2(consts[0], consts[1]))
+        if op == "min":
+            return const(min(consts))
+        if op == "max":
+            return const(max(consts))
+        if op == "pow":
+            return const(consts[0] ** consts[1])
+    if op in ("min", "max") and len(args) > 2:
+        acc = args[0]
+        for a in args[1:]:
+            acc = Nl(op, (acc, a))
+        return acc
+    return Nl(op, args)
+
+
+def sqr(a) -> Expr:
+    return mul(a, a)
+
+
+def hypot(dx, dy) -> Expr:
+    return func("sqrt", add(sqr(dx), sqr(dy)))
+
+
+# ------------------------------------------------------------------ evaluation
+def evaluate(e, x) -> float:
+    if isinstance(e, (int, float)):
+        return float(e)
+    if isinstance(e, Lin):
+        s = e.const
+        for k, v in e.terms.items():
+            s += v * x[k]
+        return s
+    op, args = e.op, e.args
+    if op == "add":
+        return evaluate(args[0], x) + evaluate(args[1], x)
+    if op == "mul":
+        return evaluate(args[0], x) * evaluate(args[1], x)
+    if op == "div":
+        d = evaluate(args[1], x)
+        return evaluate(args[0], x) / (d if d != 0 else 1e-300)
+    if op == "pow":
+        return evaluate(args[0], x) ** evaluate(args[1], x)
+    if op == "min":
+        return min(evaluate(a, x) for a in args)
+    if op == "max":
+        return max(evaluate(a, x) for a in args)
+    if op == "atan2":
+        return math.atan2(evaluate(args[0], x), evaluate(args[1], x))
+    v = evaluate(args[0], x)
+    if op in ("asin", "acos"):
+        v = max(-1.0, min(1.0, v))
+    if op == "sqrt":
+        v = max(0.0, v)
+    return _UNARY[op][0](v)
+
+
+def value_and_grad(e, x) -> tuple[float, dict[int, float]]:
+    """Value of ``e`` at ``x`` and its gradient as a sparse dict {index: d e / d x_index}."""
+    if isinstance(e, Lin):
+        return evaluate(e, x), dict(e.terms)
+    op, args = e.op, e.args
+    if op in ("add", "mul", "div", "pow", "atan2"):
+        a, ga = value_and_grad(args[0], x)
+        b, gb = value_and_grad(args[1], x)
+        if op == "add":
+            return a + b, _comb(ga, 1.0, gb, 1.0)
+        if op == "mul":
+            return a * b, _comb(ga, b, gb, a)
+        if op == "div":
+            bb = b if b != 0 else 1e-300
+            return a / bb, _comb(ga, 1.0 / bb, gb, -a / (bb * bb))
+        if op == "atan2":
+            r2 = a * a + b * b or 1e-300
+            return math.atan2(a, b), _comb(ga, b / r2, gb, -a / r2)
+        # pow
+        v = a ** b
+        ca = b * a ** (b - 1) if a != 0 or b >= 1 else 0.0
+        cb = v * math.log(a) if a > 0 else 0.0
+        return v, _comb(ga, ca, gb, cb)
+    if op in ("min", "max"):
+        vals = [value_and_grad(a, x) for a in args]
+        pick = (min if op == "min" else max)(range(len(vals)), key=lambda i: vals[i][0])
+        return vals[pick]
+    a, ga = value_and_grad(args[0], x)
+    if op in ("asin", "acos"):
+        a = max(-1.0, min(1.0, a))
+    if op == "sqrt":
+        a = max(0.0, a)
+    f, df = _UNARY[op]
+    d = df(a)
+    return f(a), {k: v * d for k, v in ga.items()}
+
+
+def _comb(ga: dict, ca: float, gb: dict, cb: float) -> dict:
+    out = {k: v * ca for k, v in ga.items()} if ca != 0 else {}
+    if cb != 0:
+        for k, v in gb.items():
+            out[k] = out.get(k, 0.0) + v * cb
+    return out
+
+
+def variables(e, out: set | None = None) -> set[int]:
+    out = set() if out is None else out
+    if isinstance(e, Lin):
+        out.update(e.terms)
+    elif isinstance(e, Nl):
+        for a in e.args:
+            variables(a, out)
+    return out
+
+
+def has_branches(e) -> bool:
+    if isinstance(e, Nl):
+        return e.op in ("min", "max") or any(has_branches(a) for a in e.args)
+    return False
+
+
+def prune(e, x):
+    """Replace each min/max by its branch active at ``x`` (returns a branch-free expression)."""
+    if not isinstance(e, Nl):
+        return e
+    if e.op in ("min", "max"):
+        vals = [evaluate(a, x) for a in e.args]
+        i = (min if e.op == "min" else max)(range(len(vals)), key=lambda k: vals[k])
+        return prune(e.args[i], x)
+    args = tuple(prune(a, x) for a in e.args)
+    if e.op == "add":
+        return add(*args)
+    if e.op == "mul":
+        return mul(*args)
+    if e.op == "div":
+        return div(*args)
+    return Nl(e.op, args)

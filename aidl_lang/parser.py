@@ -1,0 +1,471 @@
+"""Parse AIDL source text into the typed AST of :mod:`aidl_lang.ast`.
+
+Lark LALR(1) over ``grammar/aidl.lark`` (the parse table is cached on disk), a post-lexer that
+drops newlines inside brackets and before ``else``, and statement-level error recovery: each
+syntax error becomes an ``E0001`` diagnostic listing the expected tokens, the offending logical
+line is blanked (its braces kept) and the file is parsed again, so one run reports several errors.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from lark import Lark, Token, Transformer, Tree, v_args
+from lark.exceptions import VisitError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+
+from . import ast as A
+from .diagnostics import DiagnosticSink, Span
+
+GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
+if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the package
+    GRAMMAR = Path(__file__).resolve().parent / "grammar" / "aidl.lark"
+
+MAX_ERRORS = 20
+MAX_NESTING = 64           # brackets nested deeper than this are refused (E0003)
+
+UNIT_RE = re.compile(r"^(?P<num>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)[ \t]*(?P<unit>[a-z°]+)?$")
+
+TOKEN_NAMES = {
+    "_NL": "newline", "LPAR": "`(`", "RPAR": "`)`", "LSQB": "`[`", "RSQB": "`]`",
+    "LBRACE": "`{`", "RBRACE": "`}`", "COMMA": "`,`", "EQUAL": "`=`", "COLON": "`:`",
+    "SEMICOLON": "`;`", "DOT": "`.`", "NAME": "a name", "NUMBER": "a number",
+    "STRING": "a string", "FSTRING": "an f-string", "COMP_OP": "a comparison",
+    "ADD_OP": "`+` or `-`", "MUL_OP": "`*` or `/`", "MINUS": "`-`", "PLUS": "`+`",
+    "__ANON_0": "`->`", "RARROW": "`->`", "$END": "end of file",
+}
+
+
+class _PostLex:
+    """Drop ``_NL`` inside () and [] and before ``else``/``elif``; collapse repeats."""
+
+    always_accept = ("_NL",)
+
+    def process(self, stream):
+        depth = 0
+        pending = None
+        for tok in stream:
+            if tok.type == "_NL":
+                if depth == 0 and pending is None:
+                    pending = tok
+                continue
+            if pending is not None:
+                if tok.type not in ("ELSE", "ELIF"):
+                    yield pending
+                pending = None
+            if tok.type in ("LPAR", "LSQB"):
+                depth += 1
+            elif tok.type in ("RPAR", "RSQB"):
+                depth = max(0, depth - 1)
+            yield tok
+        if pending is not None:
+            yield pending
+
+
+_LARK: Lark | None = None
+
+
+def lark_parser() -> Lark:
+    global _LARK
+    if _LARK is None:
+        _LARK = Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic",
+                     postlex=_PostLex(), propagate_positions=True, maybe_placeholders=True,
+                     start=["start", "expr"], cache=True)
+    return _LARK
+
+
+# --------------------------------------------------------------- preprocessing
+def mask_comments(src: str) -> str:
+    """Turn ``//`` comments into ``# `` comments (same length, so spans stay valid).
+
+    ``//`` is floor division when the text after it on the line is a single operand
+    (``n // 2``, ``w // step``); otherwise (line start, or prose after it) it starts a comment.
+    """
+    out = list(src)
+    i, n = 0, len(src)
+    quote = None
+    line_start = True
+    while i < n:
+        ch = src[i]
+        if quote:
+            if ch == "\\":
+                i += 2
+                continue
+            if ch == quote or ch == "\n":
+                quote = None
+            i += 1
+            continue
+        if ch in "\"'":
+            quote = ch
+            line_start = False
+        elif ch == "#":
+            j = src.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        elif ch == "/" and src.startswith("/*", i):
+            j = src.find("*/", i + 2)
+            i = n if j < 0 else j + 2
+            continue
+        elif ch == "/" and src.startswith("//", i):
+            j = src.find("\n", i)
+            rest = src[i + 2: (n if j < 0 else j)]
+            if line_start or not re.fullmatch(r"\s*[A-Za-z0-9_.()\[\]]+\s*", rest):
+                out[i], out[i + 1] = "#", " "
+                i = n if j < 0 else j
+                continue
+            i += 2
+            continue
+        elif ch == "\n":
+            line_start = True
+        elif not ch.isspace():
+            line_start = False
+        i += 1
+    return "".join(out)
+
+
+def _blank_logical_line(text: str, pos: int) -> str:
+    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines."""
+    start = text.rfind("\n", 0, pos) + 1
+    end = text.find("\n", pos)
+    end = len(text) if end < 0 else end
+    # extend forward while () / [] are open
+    depth = sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[start:end])
+    while depth > 0 and end < len(text):
+        nxt = text.find("\n", end + 1)
+        nxt = len(text) if nxt < 0 else nxt
+        depth += sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[end:nxt])
+        end = nxt
+    seg = "".join(c if c in "{}\n" else " " for c in text[start:end])
+    return text[:start] + seg + text[end:]
+
+
+def _expected_text(expected) -> str:
+    names = []
+    for e in sorted(expected or []):
+        nm = TOKEN_NAMES.get(e)
+        if nm is None:
+            if e.isupper() and e.isalpha() and len(e) < 10:
+                nm = f"`{e.lower()}`"
+            else:
+                continue
+        if nm not in names:
+            names.append(nm)
+    if not names:
+        return ""
+    if len(names) > 8:
+        names = names[:8] + ["..."]
+    return "expected " + ", ".join(names)
+
+
+def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    """Parse ``source`` (from ``path``) into a :class:`Program`; syntax errors go to ``sink``.
+
+    On syntax errors the returned program holds the statements that did parse.
+    """
+    sink.sources[path] = source
+    if "\x00" in source:
+        source = source.replace("\x00", " ")
+    text = mask_comments(source)
+    depth = maxdepth = 0
+    for i, ch in enumerate(text):
+        if ch in "([{":
+            depth += 1
+            if depth > maxdepth:
+                maxdepth = depth
+                if depth > MAX_NESTING:
+                    line = text.count("\n", 0, i) + 1
+                    col = i - text.rfind("\n", 0, i)
+                    sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
+                               Span(path, line, col, line, col + 1, i, i + 1),
+                               "split the expression into named constants")
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+        elif ch in ")]}":
+            depth -= 1
+    lp = lark_parser()
+    seen: set[int] = set()
+    for _attempt in range(MAX_ERRORS + 1):
+        try:
+            tree = lp.parse(text, start="start")
+            break
+        except UnexpectedInput as e:
+            pos = _error_pos(e, text)
+            if pos in seen or len(seen) >= MAX_ERRORS:
+                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+            seen.add(pos)
+            _report(e, text, path, pos, sink)
+            if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
+                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+            text = _blank_logical_line(text, pos)
+    else:
+        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    builder = _Builder(path, sink)
+    try:
+        stmts = builder.transform(tree)
+    except VisitError as e:
+        if not isinstance(e.orig_exc, _BuildError):
+            raise
+
+        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    end_line = source.count("\n") + 1
+    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts)
+
+
+def _error_pos(e: UnexpectedInput, text: str) -> int:
+    if isinstance(e, UnexpectedToken) and e.token.type == "$END":
+        return len(text)
+    p = getattr(e, "pos_in_stream", None)
+    if p is None and isinstance(e, UnexpectedToken):
+        p = e.token.start_pos
+    return len(text) if p is None else p
+
+
+def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: DiagnosticSink) -> None:
+    line = text.count("\n", 0, pos) + 1
+    col = pos - text.rfind("\n", 0, pos)
+    if isinstance(e, UnexpectedCharacters):
+        ch = text[pos] if pos < len(text) else ""
+        if ch in "\"'":
+            msg, hint = "unterminated string", "close the string on the same line"
+        else:
+            msg, hint = f"unexpected character `{ch}`", None
+        sink.error("E0002", msg, Span(path, line, col, line, col + 1, pos, pos + 1), hint)
+        return
+    expected = _expected_text(getattr(e, "expected", None) or getattr(e, "accepts", None))
+    if isinstance(e, UnexpectedEOF) or (isinstance(e, UnexpectedToken) and e.token.type == "$END"):
+        sink.error("E0001", "unexpected end of file" + (f"; {expected}" if expected else ""),
+                   Span(path, line, col, line, col + 1, pos, pos + 1),
+                   "a `{` or `(` is probably not closed")
+        return
+    tok = e.token
+    width = max(1, len(str(tok)))
+    what = "newline" if tok.type == "_NL" else f"`{tok}`"
+    hint = None
+    if str(tok) == "=" :
+        hint = "use `==` for an equation constraint, `=` only to name a value"
+    elif str(tok) == "{" :
+        hint = "a structure is written `solid NAME { ... }`"
+    elif tok.type == "_NL":
+        hint = "a statement ended early; check for a missing operand or `)`"
+    if tok.type == "_NL":
+        width = 1
+    sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),
+               Span(path, line, col, line, col + width, pos, pos + width), hint)
+
+
+class _BuildError(Exception):
+    pass
+
+
+def _span(path: str, x) -> Span:
+    if isinstance(x, Token):
+        return Span(path, x.line, x.column, x.end_line, x.end_column, x.start_pos, x.end_pos)
+    m = x.meta if isinstance(x, Tree) else x
+    if getattr(m, "empty", False) or not hasattr(m, "line"):
+        return Span(path, 1, 1, 1, 1)
+    return Span(path, m.line, m.column, m.end_line, m.end_column, m.start_pos, m.end_pos)
+
+
+def parse_number(text: str) -> tuple[float, str | None]:
+    m = UNIT_RE.match(text.strip())
+    if not m:
+        return float(text), None
+    unit = m.group("unit")
+    if unit == "°":
+        unit = "deg"
+    return float(m.group("num")), unit
+
+
+@v_args(meta=True)
+class _Builder(Transformer):
+    def __init__(self, path: str, sink: DiagnosticSink):
+        super().__init__()
+        self.path = path
+        self.sink = sink
+
+    def s(self, x) -> Span:
+        return _span(self.path, x)
+
+    # statements
+    def start(self, meta, items):
+        return [i for i in items if isinstance(i, A.Node)]
+
+    def block(self, meta, items):
+        return A.Block(self.s(meta), [i for i in items if isinstance(i, A.Node)])
+
+    def units_decl(self, meta, items):
+        return A.UnitsDecl(self.s(meta), str(items[0]), self.s(items[0]))
+
+    def import_decl(self, meta, items):
+        tok, alias = items[0], items[1]
+        return A.Import(self.s(meta), _unquote(str(tok)), self.s(tok), str(alias) if alias else None)
+
+    def param_decl(self, meta, items):
+        return A.ParamDecl(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+
+    def params(self, meta, items):
+        return list(items)
+
+    def param(self, meta, items):
+        return A.TemplateParam(self.s(meta), str(items[0]), items[1] if len(items) > 1 else None)
+
+    def def_decl(self, meta, items):
+        name, params, kind, body = items
+        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+                     params or [], body)
+
+    def def_short(self, meta, items):
+        kind, name, params, body = items
+        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+                     params or [], body)
+
+    def struct_decl(self, meta, items):
+        kind, name, body = items
+        return A.StructDecl(self.s(meta), str(kind), self.s(kind), str(name), self.s(name), body)
+
+    def assign(self, meta, items):
+        return A.Assign(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+
+    def for_stmt(self, meta, items):
+        return A.For(self.s(meta), str(items[0]), self.s(items[0]), items[1], items[2])
+
+    def if_stmt(self, meta, items):
+        orelse = items[2] if len(items) > 2 else None
+        return A.If(self.s(meta), items[0], items[1], orelse)
+
+    elif_stmt = if_stmt
+
+    def else_part(self, meta, items):
+        x = items[0]
+        return x if isinstance(x, A.Block) else A.Block(x.span, [x])
+
+    def expr_stmt(self, meta, items):
+        return A.ExprStmt(self.s(meta), items[0])
+
+    def bare_block(self, meta, items):
+        return items[0]
+
+    # expressions
+    def number(self, meta, items):
+        v, unit = parse_number(str(items[0]))
+        return A.Num(self.s(meta), v, unit)
+
+    def string(self, meta, items):
+        return A.Str(self.s(meta), _unquote(str(items[0])))
+
+    def fstring(self, meta, items):
+        tok = items[0]
+        body = _unquote(str(tok)[1:])
+        return A.FStr(self.s(meta), self._fparts(body, tok))
+
+    def _fparts(self, body: str, tok: Token) -> list:
+        parts: list = []
+        i = 0
+        buf = ""
+        while i < len(body):
+            ch = body[i]
+            if ch == "{" and body.startswith("{{", i):
+                buf += "{"; i += 2; continue
+            if ch == "}" and body.startswith("}}", i):
+                buf += "}"; i += 2; continue
+            if ch == "{":
+                j = body.find("}", i)
+                if j < 0:
+                    self.sink.error("E0001", "unclosed `{` in f-string", self.s(tok))
+                    raise _BuildError
+                inner = body[i + 1:j]
+                fmt = None
+                if ":" in inner:
+                    inner, fmt = inner.split(":", 1)
+                if buf:
+                    parts.append(buf); buf = ""
+                try:
+                    sub = lark_parser().parse(inner.strip(), start="expr")
+                except UnexpectedInput:
+                    self.sink.error("E0001", f"cannot parse `{inner}` in f-string", self.s(tok))
+                    raise _BuildError
+                sub_builder = _Builder(self.path, self.sink)
+                expr = sub_builder.transform(sub)
+                _respan(expr, self.s(tok))
+                parts.append((expr, fmt))
+                i = j + 1
+                continue
+            buf += ch
+            i += 1
+        if buf:
+            parts.append(buf)
+        return parts
+
+    def name(self, meta, items):
+        return A.Name(self.s(meta), str(items[0]))
+
+    def tuple(self, meta, items):
+        return A.TupleLit(self.s(meta), [i for i in items if i is not None])
+
+    def list(self, meta, items):
+        return A.ListLit(self.s(meta), [i for i in items if i is not None])
+
+    def listcomp(self, meta, items):
+        elt, var, it, cond = items
+        return A.ListComp(self.s(meta), elt, str(var), self.s(var), it, cond)
+
+    def ternary(self, meta, items):
+        then, cond, orelse = items
+        return A.Ternary(self.s(meta), cond, then, orelse)
+
+    def or_op(self, meta, items):
+        return A.BoolOp(self.s(meta), "or", items[0], items[1])
+
+    def and_op(self, meta, items):
+        return A.BoolOp(self.s(meta), "and", items[0], items[1])
+
+    def not_op(self, meta, items):
+        return A.Not(self.s(meta), items[0])
+
+    def compare(self, meta, items):
+        operands = items[0::2]
+        ops = [str(t) for t in items[1::2]]
+        return A.Compare(self.s(meta), ops, operands)
+
+    def binop(self, meta, items):
+        return A.BinOp(self.s(meta), str(items[1]), items[0], items[2])
+
+    def pow(self, meta, items):
+        return A.BinOp(self.s(meta), "**", items[0], items[1])
+
+    def neg(self, meta, items):
+        sign, x = items
+        if str(sign) == "+":
+            return x
+        if isinstance(x, A.Num):
+            return A.Num(self.s(meta), -x.value, x.unit)
+        return A.Neg(self.s(meta), x)
+
+    def call(self, meta, items):
+        func, args = items[0], items[1] or []
+        pos = [a for a in args if not isinstance(a, A.Keyword)]
+        kws = [a for a in args if isinstance(a, A.Keyword)]
+        return A.Call(self.s(meta), func, pos, kws)
+
+    def args(self, meta, items):
+        return list(items)
+
+    def arg(self, meta, items):
+        return items[0]
+
+    def kwarg(self, meta, items):
+        return A.Keyword(self.s(meta), str(items[0]), items[1])
+
+    def member(self, meta, items):
+        return A.Member(self.s(meta), items[0], str(items[1]), self.s(items[1]))
+
+    def index(self, meta, items):
+        return A.Index(self.s(meta), items[0], items[1])
+
+
+def _respan(node, span: Span) -> None:
+    for n in A.walk(node):
+        n.span = span
+
+
+def _unquote(s: str) -> str:
+    body = s[1:-1]
+    return re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), body)

@@ -1,0 +1,297 @@
+"""The one registry of AIDL's vocabulary: primitives, constraints, structural relations, functions.
+
+Each :class:`Entry` gives its argument lists (one per constructor variant) with types, units and
+defaults, a one-line doc, and a category.  The checker, the interpreter, ``aidl explain`` and the
+docs all read this table.  Adding a synonym is one line in :data:`SYNONYMS`.
+
+Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string``, ``points``
+(list of points), ``line``, ``circular`` (Circle or Arc), ``curve`` (Line, Circle or Arc),
+``geometry``, ``boxed`` (anything with a bounding box: geometry or structure), ``any``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+REQUIRED = object()
+
+
+@dataclass(frozen=True)
+class Arg:
+    name: str
+    type: str
+    default: object = REQUIRED
+    doc: str = ""
+
+    @property
+    def required(self) -> bool:
+        return self.default is REQUIRED
+
+
+@dataclass
+class Entry:
+    name: str
+    category: str                    # primitive | constraint | structural | function
+    variants: list[tuple[Arg, ...]]
+    doc: str
+    members: dict[str, str] = field(default_factory=dict)   # member -> type (primitives)
+
+    def signature(self, variant: tuple[Arg, ...] | None = None) -> str:
+        vs = [variant] if variant is not None else self.variants
+        outs = []
+        for v in vs:
+            parts = []
+            for a in v:
+                if a.required:
+                    parts.append(f"{a.name}: {a.type}")
+                else:
+                    d = a.default
+                    d = "true" if d is True else "false" if d is False else d
+                    parts.append(f"{a.name}: {a.type} = {d}")
+            outs.append(f"{self.name}({', '.join(parts)})")
+        return "\n".join(outs)
+
+
+CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn")
+
+POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
+LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
+                "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
+CIRCLE_MEMBERS = {"center": "point", "radius": "length", "diameter": "length", "bb": "bbox",
+                  "top": "point", "bottom": "point", "left": "point", "right": "point"}
+ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "radius": "length",
+               "diameter": "length", "midpoint": "point", "bb": "bbox"}
+RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point",
+                "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
+                "left": "line", "right": "line", "width": "length", "height": "length",
+                "bb": "bbox"}
+POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "bbox"}
+TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
+               "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
+               "bb": "bbox"}
+SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
+                "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
+TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
+BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
+                "bottom": "coordinate", "width": "length", "height": "length",
+                "center": "point", "center_x": "coordinate", "center_y": "coordinate",
+                "top_left": "point", "top_right": "point", "bottom_left": "point",
+                "bottom_right": "point"}
+STRUCTURE_MEMBERS = {"bb": "bbox"}
+
+
+def _p(*variants, doc, members=None):
+    return ("primitive", [tuple(v) + (CONSTRUCTION,) for v in variants], doc, members or {})
+
+
+def _c(*variants, doc, cat="constraint"):
+    return (cat, [tuple(v) for v in variants], doc, {})
+
+
+A = Arg
+_DEFS = {
+    # ------------------------------------------------------------ primitives
+    "Point": _p([A("x", "length"), A("y", "length")], [A("at", "point")],
+                doc="A point; its position is a starting guess.", members=POINT_MEMBERS),
+    "Line": _p([A("start", "point"), A("end", "point")],
+               doc="A line segment between two points (positions are starting guesses).",
+               members=LINE_MEMBERS),
+    "Circle": _p([A("center", "point"), A("radius", "length")],
+                 [A("center", "point"), A("diameter", "length")],
+                 doc="A circle; the radius (or diameter) is held.", members=CIRCLE_MEMBERS),
+    "Arc": _p([A("center", "point"), A("start", "point"), A("end", "point")],
+              [A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
+               A("end_angle", "angle")],
+              doc="A counter-clockwise arc from start to end about center; by points (guesses) "
+                  "or by radius and angles (held).", members=ARC_MEMBERS),
+    "Rectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
+                     A("rotation", "angle", 0.0)],
+                    [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
+                     A("rotation", "angle", 0.0)],
+                    [A("corner", "point"), A("opposite", "point"), A("rotation", "angle", 0.0)],
+                    doc="A rectangle; width, height and rotation are held, its position is a "
+                        "starting guess. By two corners only the rotation is held.",
+                    members=RECT_MEMBERS),
+    "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
+                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
+                           doc="A rectangle with rounded corners (radius applied when drawn).",
+                           members=RECT_MEMBERS),
+    "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point")],
+                   doc="A triangle through three points (starting guesses).",
+                   members=TRI_MEMBERS),
+    "Polygon": _p([A("points", "points")],
+                  doc="A closed polygon through a list of points (starting guesses).",
+                  members=POLY_MEMBERS),
+    "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
+                          A("rotation", "angle", 0.0)],
+                         doc="A rigid regular polygon; radius (center to vertex), sides and "
+                             "rotation are held.", members=POLY_MEMBERS),
+    "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
+               [A("center", "point"), A("length", "length"), A("width", "length"),
+                A("rotation", "angle", 0.0)],
+               doc="A stadium: the set of points within radius of the segment start-end. "
+                   "The radius (width/2) is held; by center, length and rotation are held too.",
+               members=SLOT_MEMBERS),
+    "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
+                A("anchor", "string", "middle")],
+               doc="Single-stroke text (Hershey font) in a drawing; size is the cap height; "
+                   "anchor is start, middle or end.", members=TEXT_MEMBERS),
+    # ------------------------------------------------------------ geometric constraints
+    "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
+                     doc="Two points are the same point (a point and a line/circle: on it)."),
+    "Horizontal": _c([A("a", "geometry"), A("b", "point", None)],
+                     doc="A line, or the two points a and b, are horizontal."),
+    "Vertical": _c([A("a", "geometry"), A("b", "point", None)],
+                   doc="A line, or the two points a and b, are vertical."),
+    "Fixed": _c([A("a", "any")],
+                doc="Hold a point, geometry or structure where it starts."),
+    "Distance": _c([A("a", "geometry"), A("b", "geometry"), A("distance", "length")],
+                   doc="Distance between two points, or from a point to a line."),
+    "HorizontalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
+                             doc="b.x - a.x == distance."),
+    "VerticalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
+                           doc="b.y - a.y == distance."),
+    "Length": _c([A("line", "line"), A("length", "length")], doc="A line's length."),
+    "Radius": _c([A("circle", "circular"), A("radius", "length")],
+                 doc="A circle's or arc's radius."),
+    "Diameter": _c([A("circle", "circular"), A("diameter", "length")],
+                   doc="A circle's or arc's diameter."),
+    "Equal": _c([A("a", "any"), A("b", "any")],
+                doc="Equal lengths (lines), radii (circles/arcs), sizes (rectangles) or values."),
+    "Parallel": _c([A("a", "line"), A("b", "line")], doc="Two lines are parallel."),
+    "Perpendicular": _c([A("a", "line"), A("b", "line")], doc="Two lines are perpendicular."),
+    "Tangent": _c([A("a", "curve"), A("b", "curve")],
+                  doc="A line and a circle/arc, or two circles/arcs, touch tangentially."),
+    "Symmetric": _c([A("a", "geometry"), A("b", "geometry"), A("about", "line")],
+                    doc="a and b are mirror images about a line."),
+    "Midpoint": _c([A("point", "point"), A("line", "line")],
+                   doc="The point is the line's midpoint."),
+    "OnLine": _c([A("point", "point"), A("line", "line")],
+                 doc="The point lies on the (infinite) line."),
+    "OnCircle": _c([A("point", "point"), A("circle", "circular")],
+                   doc="The point lies on the circle or the arc's circle."),
+    "Concentric": _c([A("a", "circular"), A("b", "circular")],
+                     doc="Two circles/arcs share their center."),
+    "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
+                doc="The angle from line a to line b; the sense (cw/ccw) nearest the starting "
+                    "geometry is used."),
+    # ------------------------------------------------------------ structural
+    "Above": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                doc="a sits on top of b: a.bb.bottom == b.bb.top + gap."),
+    "Below": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                doc="a sits under b: a.bb.top == b.bb.bottom - gap."),
+    "LeftOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                 doc="a touches b from the left: a.bb.right == b.bb.left - gap."),
+    "RightOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                  doc="a touches b from the right: a.bb.left == b.bb.right + gap."),
+    "Inside": _c([A("a", "boxed"), A("b", "boxed"), A("margin", "length", 0.0)],
+                 cat="structural", doc="a's bounding box lies within b's, at least margin in."),
+    "CenterInside": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="a is centered in b: their bounding-box centers coincide."),
+    "Taller": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                 doc="a.bb.height >= b.bb.height."),
+    "Wider": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                doc="a.bb.width >= b.bb.width."),
+    "AlignCenterX": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="Same horizontal center: a.bb.center_x == b.bb.center_x."),
+    "AlignCenterY": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="Same vertical center: a.bb.center_y == b.bb.center_y."),
+    "AlignLeft": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                    doc="a.bb.left == b.bb.left."),
+    "AlignRight": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                     doc="a.bb.right == b.bb.right."),
+    "AlignTop": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                   doc="a.bb.top == b.bb.top."),
+    "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                      doc="a.bb.bottom == b.bb.bottom."),
+}
+
+# name -> canonical name.  One line per synonym.
+SYNONYMS: dict[str, str] = {
+    "Orthogonal": "Perpendicular",
+    "Coincide": "Coincident",
+    "Fix": "Fixed",
+    "Centered": "CenterInside",
+    "OnTopOf": "Above",
+    "Under": "Below",
+    "ToTheLeftOf": "LeftOf",
+    "ToTheRightOf": "RightOf",
+    "HorizontallyCentered": "AlignCenterX",
+    "VerticallyCentered": "AlignCenterY",
+    "PointOnLine": "OnLine",
+    "OnArc": "OnCircle",
+}
+
+# functions usable in expressions: name -> (min args, max args, doc)
+FUNCTIONS: dict[str, tuple[int, int, str]] = {
+    "sin": (1, 1, "sine of an angle (a bare number is radians)"),
+    "cos": (1, 1, "cosine of an angle (a bare number is radians)"),
+    "tan": (1, 1, "tangent of an angle (a bare number is radians)"),
+    "asin": (1, 1, "arc sine, an angle"), "acos": (1, 1, "arc cosine, an angle"),
+    "atan": (1, 1, "arc tangent, an angle"), "atan2": (2, 2, "atan2(y, x), an angle"),
+    "sqrt": (1, 1, "square root"), "abs": (1, 1, "absolute value"),
+    "min": (1, 64, "smallest value (or of one list)"), "max": (1, 64, "largest value"),
+    "norm": (1, 1, "length of a vector/point (x, y)"), "square": (1, 1, "x * x"),
+    "len": (1, 1, "number of items of a list or string"),
+    "range": (1, 3, "range(stop), range(start, stop), range(start, stop, step)"),
+    "round": (1, 2, "round to a number of decimals"), "floor": (1, 1, "round down"),
+    "ceil": (1, 1, "round up"), "str": (1, 1, "text of a value"),
+    "radians": (1, 1, "a bare number of degrees as an angle"),
+    "degrees": (1, 1, "an angle as a bare number of degrees"),
+    "distance": (2, 2, "distance between two points (a length expression)"),
+}
+
+CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",
+             "PI": "number", "tau": "number"}
+
+KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif",
+            "and", "or", "not", "self", "true", "false"]
+STRUCTURE_KINDS = ["solid", "hole", "drawing", "assembly"]
+
+UNITS_LENGTH = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "inches": 25.4,
+                "ft": 304.8}
+UNITS_ANGLE = {"deg": 3.141592653589793 / 180.0, "rad": 1.0}
+
+ENTRIES: dict[str, Entry] = {n: Entry(n, cat, variants, doc, members)
+                             for n, (cat, variants, doc, members) in _DEFS.items()}
+
+
+def lookup(name: str) -> Entry | None:
+    """The entry for a canonical name or synonym, else None."""
+    return ENTRIES.get(SYNONYMS.get(name, name))
+
+
+def canonical(name: str) -> str:
+    return SYNONYMS.get(name, name)
+
+
+def all_callable_names() -> list[str]:
+    return list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS)
+
+
+def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
+    """Pick the constructor variant matching ``npos`` positional and ``kwnames`` keyword args.
+
+    Returns (variant, None) or (None, reason).
+    """
+    best, best_reason = None, None
+    for v in entry.variants:
+        names = [a.name for a in v]
+        if npos > len(v):
+            best_reason = best_reason or f"takes at most {len(v)} arguments, got {npos}"
+            continue
+        bound = set(names[:npos])
+        bad = [k for k in kwnames if k not in names]
+        if bad:
+            best_reason = best_reason or f"has no argument `{bad[0]}`"
+            continue
+        if any(k in bound for k in kwnames):
+            best_reason = f"argument `{next(k for k in kwnames if k in bound)}` given twice"
+            continue
+        given = bound | set(kwnames)
+        missing = [a.name for a in v if a.required and a.name not in given]
+        if missing:
+            if best_reason is None or best_reason.startswith("has no"):
+                best_reason = f"missing argument `{missing[0]}`"
+            continue
+        return v, None
+    return best, best_reason

@@ -1,0 +1,366 @@
+"""From solved model to 2D shapes (Manifold booleans) and SVG.
+
+Closed curves become faces; lines and arcs whose endpoints meet in a cycle become one face.
+A solid is the union of its faces and solid children minus its hole children; a hole is the
+union of its faces; assembly children stay separate parts; drawing geometry is drawn as lines.
+Booleans use ``manifold3d.CrossSection``.  Circles and arcs are tessellated so that the chord
+deviation is below ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm).
+SVG (``svgwrite``): y points up in the model and is flipped for the page; the viewBox fits the
+model with a margin; width and height are in mm.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import manifold3d as mf
+import numpy as np
+
+from .model import Geometry, Model, Structure
+from .text import text_strokes
+
+CHORD_TOL = 0.005
+CLOSE_TOL = 1e-6
+
+
+def segments_for(radius: float, sweep: float = 2 * math.pi) -> int:
+    r = abs(radius)
+    if r <= CHORD_TOL:
+        return max(3, int(8 * sweep / (2 * math.pi)))
+    step = 2 * math.acos(max(-1.0, 1 - CHORD_TOL / r))
+    return max(3, min(20000, int(math.ceil(sweep / step))))
+
+
+@dataclass
+class Part:
+    name: str
+    kind: str                     # solid | hole (a hole with no solid to cut)
+    shape: mf.CrossSection
+
+
+@dataclass
+class Drawing:
+    parts: list[Part] = field(default_factory=list)
+    lines: list[tuple[str, np.ndarray]] = field(default_factory=list)    # (style, Nx2 polyline)
+    hole_outlines: list[np.ndarray] = field(default_factory=list)
+    open_curves: list[Geometry] = field(default_factory=list)
+
+    def bounds(self):
+        xs, ys = [], []
+        for p in self.parts:
+            if not p.shape.is_empty():
+                b = p.shape.bounds()
+                xs += [b[0], b[2]]
+                ys += [b[1], b[3]]
+        for _, pl in self.lines:
+            if len(pl):
+                xs += [pl[:, 0].min(), pl[:, 0].max()]
+                ys += [pl[:, 1].min(), pl[:, 1].max()]
+        if not xs:
+            return (0.0, 0.0, 1.0, 1.0)
+        return (min(xs), min(ys), max(xs), max(ys))
+
+
+class Renderer:
+    def __init__(self, model: Model):
+        self.m = model
+        self.x = model.xs()
+
+    def P(self, p) -> np.ndarray:
+        ox, oy = 0.0, 0.0
+        s = p.owner
+        while s is not None:
+            ox += self.x[s.fx]
+            oy += self.x[s.fy]
+            s = s.parent
+        return np.array([self.x[p.ix] + ox, self.x[p.iy] + oy])
+
+    # -------------------------------------------------------- outlines
+    def arc_points(self, c, r, a1, a2) -> np.ndarray:
+        sweep = (a2 - a1) % (2 * math.pi)
+        if sweep < 1e-12:
+            sweep = 2 * math.pi
+        n = segments_for(r, sweep)
+        t = a1 + np.linspace(0.0, sweep, n + 1)
+        return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+    def circle_points(self, c, r) -> np.ndarray:
+        n = segments_for(r)
+        t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+        return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+    def curve(self, g: Geometry) -> np.ndarray:
+        """Polyline of an open curve (Line or Arc), from start to end."""
+        if g.kind == "Line":
+            return np.array([self.P(g.points["start"]), self.P(g.points["end"])])
+        c, s, e = (self.P(g.points[n]) for n in ("center", "start", "end"))
+        r = float(np.hypot(*(s - c)))
+        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
+        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
+        pts = self.arc_points(c, r, a1, a2)
+        pts[0], pts[-1] = s, e
+        return pts
+
+    def face(self, g: Geometry) -> mf.CrossSection | None:
+        k = g.kind
+        if k == "Circle":
+            r = abs(self.x[g.scalars["radius"].index])
+            if r <= 0:
+                return None
+            return _cs(self.circle_points(self.P(g.points["center"]), r))
+        if k == "Slot":
+            r = abs(self.x[g.scalars["radius"].index])
+            a, b = self.P(g.points["start"]), self.P(g.points["end"])
+            pts = np.vstack([self.circle_points(a, r), self.circle_points(b, r)])
+            return mf.CrossSection.hull_points(pts.tolist())
+        if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon"):
+            from .primitives import points_of
+            pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
+                                                 [g.points[n] for n in ("a", "b", "c")])])
+            cs = _cs(pts)
+            if k == "RoundedRectangle":
+                r = float(g.data.get("corner_radius", 0.0))
+                w = abs(self.x[g.scalars["width"].index])
+                h = abs(self.x[g.scalars["height"].index])
+                r = min(r, w / 2 - 1e-6, h / 2 - 1e-6)
+                if r > 0:
+                    segs = segments_for(r) 
+                    cs = cs.offset(-r, mf.JoinType.Miter, 2.0).offset(r, mf.JoinType.Round, 2.0, segs)
+            return cs
+        return None
+
+    # -------------------------------------------------------- structures
+    def own_faces(self, s: Structure, out: Drawing) -> list:
+        faces = []
+        open_curves = []
+        for g in s.geometry:
+            if g.construction:
+                continue
+            if s.kind == "drawing":
+                self.draw_lines(g, out)
+                continue
+            if g.kind in ("Line", "Arc"):
+                open_curves.append(g)
+            elif g.kind == "Text":
+                self.draw_lines(g, out)
+            elif g.kind == "Point":
+                continue
+            else:
+                f = self.face(g)
+                if f is not None and not f.is_empty():
+                    faces.append(f)
+        if open_curves:
+            loops, rest = self.loops(open_curves)
+            faces += [_cs(lp) for lp in loops]
+            for g in rest:
+                out.open_curves.append(g)
+                out.lines.append(("open", self.curve(g)))
+        return faces
+
+    def loops(self, curves: list[Geometry]):
+        """Chain open curves whose endpoints meet into closed loops."""
+        polys = [self.curve(g) for g in curves]
+        used = [False] * len(curves)
+        loops = []
+        for i in range(len(curves)):
+            if used[i]:
+                continue
+            chain = [i]
+            used[i] = True
+            pts = [polys[i]]
+            start, end = polys[i][0], polys[i][-1]
+            grown = True
+            while grown and np.hypot(*(end - start)) > _tol(start):
+                grown = False
+                for j in range(len(curves)):
+                    if used[j]:
+                        continue
+                    pj = polys[j]
+                    if np.hypot(*(pj[0] - end)) <= _tol(end):
+                        pts.append(pj)
+                    elif np.hypot(*(pj[-1] - end)) <= _tol(end):
+                        pts.append(pj[::-1])
+                    else:
+                        continue
+                    used[j] = True
+                    chain.append(j)
+                    end = pts[-1][-1]
+                    grown = True
+                    break
+            if np.hypot(*(end - start)) <= _tol(start) and len(chain) >= 2 or (
+                    len(chain) == 1 and len(pts[0]) > 3 and np.hypot(*(end - start)) <= _tol(start)):
+                loops.append(np.vstack([p[:-1] for p in pts]))
+            else:
+                for j in chain:
+                    used[j] = False
+                used[i] = True
+                chain_rest = chain
+                loops_rest = [curves[j] for j in chain_rest]
+                for g in loops_rest:
+                    g.data["_open"] = True
+        rest = [g for g in curves if g.data.pop("_open", False)]
+        return loops, rest
+
+    def draw_lines(self, g: Geometry, out: Drawing) -> None:
+        if g.kind in ("Line", "Arc"):
+            out.lines.append(("drawing", self.curve(g)))
+        elif g.kind == "Text":
+            p = self.P(g.points["position"])
+            for a, b in text_strokes(g.data["text"], g.data["size"], g.data["anchor"]):
+                out.lines.append(("drawing", np.array([p + a, p + b])))
+        elif g.kind == "Point":
+            return
+        else:
+            f = self.face(g)
+            if f is not None:
+                for poly in f.to_polygons():
+                    pl = np.asarray(poly)
+                    out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
+
+    def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
+        """Union of a solid or hole structure, holes subtracted for solids."""
+        faces = self.own_faces(s, out)
+        holes = []
+        for c in s.children.values():
+            if c.kind == "drawing":
+                self.drawing(c, out)
+            elif c.kind == "assembly":
+                self.assembly(c, out)
+            elif c.kind == "hole" and s.kind == "solid":
+                h = self.shape(c, out)
+                holes.append(h)
+                for poly in h.to_polygons():
+                    out.hole_outlines.append(np.asarray(poly))
+            else:
+                faces.append(self.shape(c, out))
+        acc = mf.CrossSection.batch_boolean(faces, mf.OpType.Add) if faces else mf.CrossSection()
+        if holes:
+            acc = acc - mf.CrossSection.batch_boolean(holes, mf.OpType.Add)
+        return acc
+
+    def drawing(self, s: Structure, out: Drawing) -> None:
+        for g in s.geometry:
+            if not g.construction:
+                self.draw_lines(g, out)
+        for c in s.children.values():
+            if c.kind == "drawing":
+                self.drawing(c, out)
+            elif c.kind == "assembly":
+                self.assembly(c, out)
+            else:
+                self.part(c, out)
+
+    def assembly(self, s: Structure, out: Drawing) -> None:
+        faces = self.own_faces(s, out)
+        if faces:
+            out.parts.append(Part(s.path, "solid", mf.CrossSection.batch_boolean(faces, mf.OpType.Add)))
+        for c in s.children.values():
+            if c.kind == "drawing":
+                self.drawing(c, out)
+            elif c.kind == "assembly":
+                self.assembly(c, out)
+            else:
+                self.part(c, out)
+
+    def part(self, s: Structure, out: Drawing) -> None:
+        shp = self.shape(s, out)
+        out.parts.append(Part(s.path, s.kind, shp))
+        if s.kind == "hole":
+            for poly in shp.to_polygons():
+                out.hole_outlines.append(np.asarray(poly))
+
+    def run(self) -> Drawing:
+        out = Drawing()
+        root = self.m.root
+        if root.kind == "assembly":
+            self.assembly(root, out)
+        elif root.kind == "drawing":
+            self.drawing(root, out)
+        else:
+            self.part(root, out)
+        return out
+
+
+def _tol(p) -> float:
+    return max(1e-6, 1e-7 * float(np.max(np.abs(p))))
+
+
+def _cs(pts) -> mf.CrossSection:
+    pts = np.asarray(pts, dtype=float)
+    if len(pts) < 3:
+        return mf.CrossSection()
+    return mf.CrossSection([pts.tolist()], mf.FillRule.NonZero) if _area(pts) > 0 else \
+        mf.CrossSection([pts[::-1].tolist()], mf.FillRule.NonZero)
+
+
+def _area(pts) -> float:
+    x, y = pts[:, 0], pts[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def render_model(model: Model) -> Drawing:
+    return Renderer(model).run()
+
+
+def area(drawing: Drawing) -> float:
+    """Total area (mm^2) of the solid parts."""
+    return sum(p.shape.area() for p in drawing.parts if p.kind == "solid")
+
+
+STYLES = {
+    "solid": dict(fill="#cfd8dc", stroke="#263238"),
+    "hole_part": dict(fill="none", stroke="#c62828"),
+    "hole": dict(fill="none", stroke="#c62828"),
+    "drawing": dict(fill="none", stroke="#1565c0"),
+    "open": dict(fill="none", stroke="#ef6c00"),
+}
+
+
+def to_svg(drawing: Drawing, title: str = "") -> str:
+    import svgwrite
+    x0, y0, x1, y1 = drawing.bounds()
+    w, h = max(x1 - x0, 1e-3), max(y1 - y0, 1e-3)
+    margin = max(0.05 * max(w, h), 1.0)
+    vx, vy = x0 - margin, -(y1 + margin)
+    vw, vh = w + 2 * margin, h + 2 * margin
+    sw = max(vw, vh) / 500.0
+    d = svgwrite.Drawing(size=(f"{vw:.3f}mm", f"{vh:.3f}mm"), profile="full")
+    d.viewbox(vx, vy, vw, vh)
+    if title:
+        d.set_desc(title=title)
+    g_solid = d.g(id="solids", fill=STYLES["solid"]["fill"], stroke=STYLES["solid"]["stroke"],
+                  stroke_width=sw, fill_rule="evenodd")
+    for p in drawing.parts:
+        if p.shape.is_empty():
+            continue
+        path = " ".join(_path(np.asarray(poly)) for poly in p.shape.to_polygons())
+        if p.kind == "solid":
+            g_solid.add(d.path(d=path, id=_id(p.name)))
+        else:
+            g_solid.add(d.path(d=path, fill="none", stroke=STYLES["hole"]["stroke"],
+                               stroke_dasharray=f"{4 * sw},{2 * sw}", id=_id(p.name)))
+    d.add(g_solid)
+    if drawing.hole_outlines:
+        gh = d.g(id="holes", fill="none", stroke=STYLES["hole"]["stroke"], stroke_width=sw * 0.8,
+                 stroke_dasharray=f"{4 * sw},{2 * sw}")
+        for pl in drawing.hole_outlines:
+            gh.add(d.path(d=_path(pl)))
+        d.add(gh)
+    if drawing.lines:
+        gd = d.g(id="drawings", fill="none", stroke_width=sw, stroke_linecap="round",
+                 stroke_linejoin="round")
+        for style, pl in drawing.lines:
+            gd.add(d.path(d=_path(pl, close=False), stroke=STYLES[style]["stroke"]))
+        d.add(gd)
+    return d.tostring()
+
+
+def _id(name: str) -> str:
+    return "part-" + "".join(c if c.isalnum() or c in "-_" else "_" for c in name)
+
+
+def _path(pl: np.ndarray, close: bool = True) -> str:
+    if len(pl) == 0:
+        return ""
+    pts = " ".join(f"{x:.4f},{-y:.4f}" for x, y in pl)
+    return f"M{pts}" + ("Z" if close else "")

@@ -1,0 +1,62 @@
+"""Single-stroke text from the Hershey fonts (PyPI ``Hershey-Fonts``; font ``futural``).
+
+Sizes are cap heights in mm.  :func:`text_strokes` gives polylines relative to the anchor point.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1) maps ~1 em)
+
+
+@lru_cache(maxsize=1)
+def _font():
+    from HersheyFonts import HersheyFonts
+    f = HersheyFonts()
+    f.load_default_font("futural")
+    f.normalize_rendering(1.0)
+    return f
+
+
+@lru_cache(maxsize=512)
+def _raw(text: str) -> tuple:
+    f = _font()
+    segs = tuple(((a[0], a[1]), (b[0], b[1])) for a, b in f.lines_for_text(text))
+    return segs
+
+
+def _cap_height() -> float:
+    segs = _raw("H")
+    ys = [p[1] for s in segs for p in s]
+    return (max(ys) - min(ys)) if ys else 1.0
+
+
+def text_strokes(text: str, size: float, anchor: str = "middle") -> list[tuple[tuple, tuple]]:
+    """Line segments ((x0, y0), (x1, y1)) in mm, relative to the anchor on the baseline."""
+    segs = _raw(text)
+    if not segs:
+        return []
+    base = _baseline()
+    k = size / _cap_height()
+    xs = [p[0] for s in segs for p in s]
+    lo, hi = min(xs), max(xs)
+    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
+    return [(((a[0] + dx) * k, (a[1] - base) * k), ((b[0] + dx) * k, (b[1] - base) * k))
+            for a, b in segs]
+
+
+@lru_cache(maxsize=1)
+def _baseline() -> float:
+    segs = _raw("H")
+    ys = [p[1] for s in segs for p in s]
+    return min(ys) if ys else 0.0
+
+
+def text_extent(text: str, size: float, anchor: str = "middle") -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the strokes relative to the anchor point, in mm."""
+    segs = text_strokes(text, size, anchor)
+    if not segs:
+        return (0.0, 0.0, 0.0, 0.0)
+    xs = [p[0] for s in segs for p in s]
+    ys = [p[1] for s in segs for p in s]
+    return min(xs), max(xs), min(ys), max(ys)

@@ -1,0 +1,3 @@
+"""Static checks (placeholder, filled below)."""
+def check(program, sink):
+    pass

@@ -1,0 +1,48 @@
+# AIDL standard library: common shapes as templates.
+#   import "std/shapes.aidl"
+# Positions (cx, cy) are starting guesses: place an instance with constraints
+# (CenterInside, Above, Coincident, ...) in the structure that uses it.
+
+# A flat washer: a ring with a concentric bore. Diameters.
+def washer(outer = 10 mm, inner = 5 mm, cx = 0 mm, cy = 0 mm) -> solid {
+    ring = Circle(center=(cx, cy), diameter=outer)
+    hole bore {
+        b = Circle(center=(cx, cy), diameter=inner)
+    }
+    Concentric(bore.b, ring)
+}
+
+# `count` holes of diameter `hole_d` evenly spaced on a circle of diameter
+# `pcd` (pitch circle diameter), the first at angle `start`.
+def bolt_circle(count = 6, pcd = 40 mm, hole_d = 5 mm, start = 0 deg,
+                cx = 0 mm, cy = 0 mm) -> hole {
+    pitch = Circle(center=(cx, cy), diameter=pcd, construction=true)
+    for i in range(count) {
+        a = start + i * 360 deg / count
+        bolt = Circle(center=(cx + pcd / 2 * cos(a), cy + pcd / 2 * sin(a)), diameter=hole_d)
+        OnCircle(bolt.center, pitch)
+    }
+}
+
+# A mounting tab: a rectangle with a round end (pointing up) and a hole in
+# the round end. `length` runs from the flat base to the tip of the round end.
+def rounded_tab(width = 20 mm, length = 20 mm, hole_d = 6 mm, cx = 0 mm, cy = 0 mm) -> solid {
+    stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
+    end = Circle(center=(cx, cy + length - width / 2), diameter=width)
+    hole eye {
+        e = Circle(center=(cx, cy + length - width / 2), diameter=hole_d)
+    }
+    Coincident(end.center, stem.top.midpoint)
+    Concentric(eye.e, end)
+}
+
+# An oblong hole, e.g. for an adjustable screw.
+def slot_hole(length = 20 mm, width = 5 mm, rotation = 0 deg, cx = 0 mm, cy = 0 mm) -> hole {
+    s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
+}
+
+# A hexagonal pocket for a nut, sized across flats.
+def hex_pocket(across_flats = 8 mm, cx = 0 mm, cy = 0 mm) -> hole {
+    hex = RegularPolygon(center=(cx, cy), radius=across_flats / 2 / cos(30 deg), sides=6,
+                         rotation=30 deg)
+}

@@ -1,0 +1,46 @@
+import math
+
+import pytest
+
+from aidl_lang.render import area, render_model
+
+
+def pos(model, g, name):
+    p = g.points[name]
+    ox = oy = 0.0
+    s = p.owner
+    while s is not None:
+        ox += model.x[s.fx]
+        oy += model.x[s.fy]
+        s = s.parent
+    return model.x[p.ix] + ox, model.x[p.iy] + oy
+
+
+def geom(model, name):
+    return next(g for g in model.all_geometry() if g.name == name)
+
+
+def test_rectangle_corner_fixed_at_origin(compile_text):
+    c = compile_text("""
+solid s {
+    r = Rectangle(center=(3, 4), width=30, height=20)
+    Fixed(r.bottom_left)
+    r.bottom_left == (0, 0)
+}""")
+    assert c.ok, [d.message for d in c.sink.items]
+    r = geom(c.model, "r")
+    assert pos(c.model, r, "top_right") == pytest.approx((30, 20), abs=1e-8)
+    assert pos(c.model, r, "bottom_right") == pytest.approx((30, 0), abs=1e-8)
+    assert pos(c.model, r, "top_left") == pytest.approx((0, 20), abs=1e-8)
+
+
+def test_area_solid_minus_hole(compile_text):
+    c = compile_text("""
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole h { c = Circle(center=(3, 1), radius=5) }
+    CenterInside(h, self)
+}""")
+    assert c.ok
+    a = area(render_model(c.model))
+    assert a == pytest.approx(800 - 25 * math.pi, rel=1e-3)
