@@ -1,10 +1,10 @@
 # A 15 cm ruler: a long bar with a hanging hole, millimetre ticks along the
 # top edge with centimetre numbers, and an inch scale (1/8" ticks) along the
 # bottom edge. Ticks and numbers are drawings (engraved, not cut).
-# Try: --set length_cm=30  --set width=35
+# Try: --set length_cm=30  --set width=40
 
 param length_cm = 15
-param width = 30 mm
+param width = 36 mm
 margin = 8 mm                 # blank bar before the zero mark
 tail = 22 mm                  # blank bar after the last mark (holds the hole)
 scale_len = length_cm * 10 mm
@@ -27,7 +27,7 @@ solid ruler {
         for cm in range(length_cm + 1) {
             label = Text(str(cm), (margin + cm * 10 mm, width - 16), size=4)
         }
-        unit = Text("cm", (margin + 5 mm, width - 16), size=3)
+        unit = Text("cm", (margin + scale_len + tail / 2, width - 9), size=3)
     }
 
     # imperial scale: 1/8 inch ticks rising from the bottom edge
@@ -37,15 +37,15 @@ solid ruler {
             tick = Line((margin + i * 1 in / 8, 0), (margin + i * 1 in / 8, h))
         }
         for k in range(floor(inches / 8) + 1) {
-            label = Text(str(k), (margin + k * 1 in, 12), size=4)
+            label = Text(str(k), (margin + k * 1 in, 11), size=4)
         }
-        unit = Text("in", (margin + 0.5 in, 12), size=3)
+        unit = Text("in", (margin + scale_len + tail / 2, 6), size=3)
     }
 
-    # both scales start at the zero mark and touch their edges
-    metric.bb.top == bar.bb.top
-    imperial.bb.bottom == bar.bb.bottom
+    # both scales start at the zero mark; their ticks start on the bar's edges
     metric.tick[0].start.x == bar.bb.left + margin
+    Coincident(metric.tick[0].start, bar.top)
     imperial.tick[0].start.x == metric.tick[0].start.x
+    Coincident(imperial.tick[0].start, bar.bottom)
     AlignCenterY(hang, bar)
 }

@@ -29,7 +29,7 @@ solid wrench {
     # through its rim; cut from the whole wrench
     hole jaw_opening {
         gap = Slot(start=(-length/2 - 0.5*jaw*cos(tilt), -0.5*jaw*sin(tilt)),
-                   end=(-length/2 - 2.5*jaw*cos(tilt), -2.5*jaw*sin(tilt)),
+                   end=(-length/2 - 1.9*jaw*cos(tilt), -1.9*jaw*sin(tilt)),
                    radius=jaw/2)
     }
 
@@ -55,7 +55,7 @@ solid wrench {
     Coincident(ring_end.head.center, handle.bar.edges[1].midpoint)
     # the jaw's bottom is the open head's center; the star is centered in the ring head
     Distance(jaw_opening.gap.start, open_end.head.center, 0.5*jaw)
-    Angle(jaw_opening.gap.spine, handle.bar.edges[3], 90 deg + tilt)
+    Angle(handle.bar.edges[3], jaw_opening.gap.spine, 90 deg - tilt)
     CenterInside(socket, ring_end.head)
     AlignCenterY(marks, handle)
 }

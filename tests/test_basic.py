@@ -24,7 +24,6 @@ def test_rectangle_corner_fixed_at_origin(compile_text):
     c = compile_text("""
 solid s {
     r = Rectangle(center=(3, 4), width=30, height=20)
-    Fixed(r.bottom_left)
     r.bottom_left == (0, 0)
 }""")
     assert c.ok, [d.message for d in c.sink.items]
@@ -44,3 +43,22 @@ solid plate {
     assert c.ok
     a = area(render_model(c.model))
     assert a == pytest.approx(800 - 25 * math.pi, rel=1e-3)
+
+
+def test_fixed_corner_stays_and_conflict_is_reported(compile_text):
+    ok = compile_text("""
+solid s {
+    r = Rectangle(bottom_left=(0, 0), width=30, height=20)
+    Fixed(r.bottom_left)
+}""")
+    assert ok.ok
+    r = geom(ok.model, "r")
+    assert pos(ok.model, r, "top_right") == pytest.approx((30, 20), abs=1e-8)
+    bad = compile_text("""
+solid s {
+    r = Rectangle(bottom_left=(0, 0), width=30, height=20)
+    Fixed(r.bottom_left)
+    r.top_right == (40, 20)
+}""")
+    assert not bad.ok
+    assert [d.code for d in bad.sink.errors()] == ["E0401"]
