@@ -227,15 +227,15 @@ class Renderer:
             elif c.kind == "assembly":
                 self.assembly(c, out)
             elif c.kind == "hole" and s.kind == "solid":
-                h = self.shape(c, out)
-                holes.append(h)
-                for poly in h.to_polygons():
-                    out.hole_outlines.append(np.asarray(poly))
+                holes.append(self.shape(c, out))
             else:
                 faces.append(self.shape(c, out))
         acc = mf.CrossSection.batch_boolean(faces, mf.OpType.Add) if faces else mf.CrossSection()
         if holes:
-            acc = acc - mf.CrossSection.batch_boolean(holes, mf.OpType.Add)
+            cut = mf.CrossSection.batch_boolean(holes, mf.OpType.Add)
+            for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
+                out.hole_outlines.append(np.asarray(poly))
+            acc = acc - cut
         return acc
 
     def drawing(self, s: Structure, out: Drawing) -> None:
