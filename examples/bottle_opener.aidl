@@ -41,7 +41,7 @@ solid opener {
     }
 
     drawing label {
-        word = Text("OPEN", (0.45 * length - 13 mm, 0), size=6, anchor="end")
+        word = Text("OPEN", ((0.32 * head_d + 0.45 * length - 2 mm) / 2, -2.5), size=5)
     }
 
     # the handle starts at the head's center, on its axis
@@ -51,4 +51,6 @@ solid opener {
     mouth.bb.left == head.bb.left + 0.15 * head_d
     AlignCenterY(mouth, head)
     AlignCenterY(label, handle)
+    # the label sits halfway between the opening and the first grip slot
+    label.bb.center_x == (mouth.bb.right + handle.slots.bb.left) / 2
 }

@@ -1,79 +1,84 @@
-# A telephone handset in profile (side view): earpiece cup on the left,
-# mouthpiece cup on the right, an arched handle between them. The outline is
-# ten lines and arcs that share their end points, so together they form one
-# closed shape; Horizontal/Vertical/Tangent/Symmetric keep its form.
-# Try: --set length=220  --set cup_depth=45  --set corner=20
+# A telephone handset in profile (side view): an arched handle of even
+# thickness with a flared earpiece cup on the left and a mouthpiece cup on
+# the right, both facing down. The outline is eight lines and arcs that
+# share their end points, so together they form one closed shape;
+# Horizontal, Concentric, Symmetric and Equal keep its form.
+# Try: --set length=240  --set cup_depth=60  --set thickness=18
 
-param length = 200 mm       # overall length
-param cup_depth = 38 mm     # how far the cups reach below the handle's axis
-param corner = 16 mm        # radius of the two rounded top corners
-param handle_top = 16 mm    # top edge height above the axis
+param length = 210 mm       # across the two cup faces
+param cup_depth = 50 mm     # how far the cup faces sit below the handle's ends
+param thickness = 24 mm     # thickness of the arched handle
+param face = 56 mm          # width of each cup's face
 
 half = length / 2
-face = 48 mm                # width of each cup's flat face
-arch = 40 mm                # half-span of the arch under the handle
+bend = 120 mm               # the arch's center lies this far below the axis
+neck = 38 mm                # width of a cup where it joins the handle
+r_in = sqrt(square(half - face + 9 mm) + square(bend - 20 mm))   # arch underside radius
+r_out = r_in + thickness
 
 solid handset {
     solid body {
-        p1 = Point(-half, -cup_depth)              # earpiece face, outer end
-        p2 = Point(-half + face, -cup_depth)       # earpiece face, inner end
-        p3 = Point(-arch, -8)                      # arch, left foot
-        p4 = Point(arch, -8)                       # arch, right foot
-        p5 = Point(half - face, -cup_depth)        # mouthpiece face, inner end
-        p6 = Point(half, -cup_depth)               # mouthpiece face, outer end
-        p7 = Point(half, handle_top - corner)      # right corner, start
-        p8 = Point(half - corner, handle_top)      # right corner, end
-        p9 = Point(-half + corner, handle_top)     # left corner, start
-        p10 = Point(-half, handle_top - corner)    # left corner, end
+        # outline points, counter-clockwise from the earpiece face's outer end
+        a = Point(-half, -cup_depth)                    # earpiece face, outer end
+        b = Point(-half + face, -cup_depth)             # earpiece face, inner end
+        c = Point(-half + face - 9 mm, -20)             # arch underside, left foot
+        d = Point(half - face + 9 mm, -20)              # arch underside, right foot
+        e = Point(half - face, -cup_depth)              # mouthpiece face, inner end
+        f = Point(half, -cup_depth)                     # mouthpiece face, outer end
+        g = Point(sqrt(square(r_out) - square(bend - 18 mm)), -18)   # handle top, right end
+        h = Point(-sqrt(square(r_out) - square(bend - 18 mm)), -18)  # handle top, left end
+        o = Point(0, -bend)                             # center of the arch
 
-        ear_face = Line(p1, p2)
-        ear_inner = Line(p2, p3)
-        under = Arc(center=(0, -90), start=p4, end=p3)        # the arch, bulging up
-        mouth_inner = Line(p4, p5)
-        mouth_face = Line(p5, p6)
-        mouth_back = Line(p6, p7)
-        right_corner = Arc(center=(half - corner, handle_top - corner), start=p7, end=p8)
-        top = Line(p8, p9)
-        left_corner = Arc(center=(-half + corner, handle_top - corner), start=p9, end=p10)
-        ear_back = Line(p10, p1)
+        ear_face = Line(a, b)
+        ear_inner = Line(b, c)
+        under = Arc(center=o, start=d, end=c)           # underside of the handle
+        mouth_inner = Line(d, e)
+        mouth_face = Line(e, f)
+        mouth_outer = Line(f, g)
+        top = Arc(center=o, start=g, end=h)             # top of the handle
+        ear_outer = Line(h, a)
 
-        axis = Line((0, -cup_depth), (0, handle_top), construction=true)
-
+        axis = Line((0, -cup_depth), (0, 30), construction=true)
+        Vertical(axis)
+        Coincident(o, axis)
         Horizontal(ear_face)
         Horizontal(mouth_face)
-        Horizontal(top)
-        Vertical(ear_back)
-        Vertical(mouth_back)
-        Vertical(axis)
-        Tangent(top, right_corner)
-        Tangent(top, left_corner)
-        Tangent(mouth_back, right_corner)
-        Tangent(ear_back, left_corner)
-        Symmetric(p3, p4, axis)
         Equal(ear_face, mouth_face)
+        Symmetric(a, f, axis)
+        Symmetric(c, d, axis)
+        Symmetric(g, h, axis)
     }
 
     # speaker grille in the earpiece cup: a row of small holes made by a loop
     hole grille {
         for i in range(4) {
-            dot = Circle(center=(-half + 10 + i * 8 mm, -cup_depth + 9), radius=2.2)
+            dot = Circle(center=(-half + face / 2 + (i - 1.5) * 8 mm, -cup_depth + 17), radius=2.2)
         }
     }
 
     # microphone port in the mouthpiece cup
     hole mic {
-        port = Circle(center=(half - face / 2, -cup_depth + 12), radius=4)
+        port = Circle(center=(half - face / 2, -cup_depth + 17), radius=4.5)
     }
 
-    # engraved seam along the handle
-    drawing seam {
-        s = Line((-half + corner, handle_top - 5), (half - corner, handle_top - 5))
+    # engraved rims where the caps screw onto the cups
+    drawing caps {
+        ear_rim = Line((-half + 1.5, -cup_depth + 5), (-half + face - 1.5, -cup_depth + 5))
+        mouth_rim = Line((half - face + 1.5, -cup_depth + 5), (half - 1.5, -cup_depth + 5))
     }
 
-    grille.bb.bottom == body.ear_face.start.y + 6.8
-    grille.bb.left == body.ear_face.start.x + 7.8
+    # rims lie across the cups, 5 mm above the faces
+    OnLine(caps.ear_rim.start, body.ear_outer)
+    OnLine(caps.ear_rim.end, body.ear_inner)
+    OnLine(caps.mouth_rim.start, body.mouth_inner)
+    OnLine(caps.mouth_rim.end, body.mouth_outer)
+    VerticalDistance(body.a, caps.ear_rim.start, 5 mm)
+    VerticalDistance(body.f, caps.mouth_rim.end, 5 mm)
+    Horizontal(caps.ear_rim)
+    Horizontal(caps.mouth_rim)
+    # grille and port centered over their faces
+    grille.bb.center_x == body.ear_face.midpoint.x
+    grille.bb.center_y == body.a.y + 17
     mic.port.center.x == body.mouth_face.midpoint.x
-    mic.port.center.y == body.mouth_face.midpoint.y + 12
-    AlignCenterX(seam, body.top)
-    seam.bb.top == body.top.start.y - 5
+    mic.port.center.y == body.f.y + 17
 }

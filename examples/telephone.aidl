@@ -44,7 +44,7 @@ solid telephone {
                              size=4)
             }
             # the finger stop, just past the 0 at about four o'clock
-            stop = Line((0.55 * dial_r * cos(-30 deg), dial_y + 0.55 * dial_r * sin(-30 deg)),
+            stop = Line((0.8 * dial_r * cos(-30 deg), dial_y + 0.8 * dial_r * sin(-30 deg)),
                         (1.1 * dial_r * cos(-30 deg), dial_y + 1.1 * dial_r * sin(-30 deg)))
             number = Text("TEL", (0, dial_y - 2 mm), size=5)
         }

@@ -38,8 +38,7 @@ solid sword {
     }
 
     solid grip {
-        handle = RoundedRectangle(center=(0, -guard_h - grip_length / 2), width=grip_w,
-                                  height=grip_length, corner_radius=3)
+        handle = Rectangle(center=(0, -guard_h - grip_length / 2), width=grip_w, height=grip_length)
         # diagonal cord wraps, one per step down the grip
         drawing wrap {
             step = grip_length / wraps

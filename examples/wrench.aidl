@@ -6,7 +6,7 @@ param length = 150 mm     # center-to-center distance of the two heads
 param jaw = 13 mm         # nut size (across flats) of the open end
 param ring = 13 mm        # nut size (across flats) of the ring end
 
-jaw_r = 1.3 * jaw         # radius of the open-end head
+jaw_r = 1.4 * jaw         # radius of the open-end head
 ring_r = 0.95 * ring      # radius of the ring-end head
 tilt = 15 deg             # the open jaw is angled, as on a real wrench
 
