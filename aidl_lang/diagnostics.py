@@ -94,6 +94,8 @@ class DiagnosticSink:
         self.sources: dict[str, str] = {}
 
     def add(self, d: Diagnostic) -> Diagnostic:
+        if d.fix is None and d.suggestions and d.span is not None and d.code in ("E0101", "E0102", "E0103"):
+            d.fix = Fix(d.span, d.suggestions[0])      # the span is exactly the misspelt name
         key = (d.code, d.span, d.message)
         if not any((x.code, x.span, x.message) == key for x in self.items):
             self.items.append(d)

@@ -30,6 +30,16 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
                    do_solve: bool = True) -> Compiled:
     """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics)."""
     sink = DiagnosticSink()
+    try:
+        return _compile(sink, source, path, overrides, do_solve)
+    except RecursionError:
+        sink.sources.setdefault(path, source)
+        sink.error("E0302", "the program is nested too deeply to compile", None,
+                   hint="split long expressions into named constants")
+        return Compiled(sink)
+
+
+def _compile(sink, source, path, overrides, do_solve) -> Compiled:
     program = parse(source, path, sink)
     if sink.has_errors:
         return Compiled(sink)

@@ -46,14 +46,16 @@ assembly kit {
             AlignCenterY(adjust, body)
         }
 
-        tab = rounded_tab(width=24 mm, length=22 mm, hole_d=6 mm, cy=height / 2 - 2 mm)
+        tab = rounded_tab(width=24 mm, length=28 mm, hole_d=6 mm, cy=height / 2 - 2 mm)
         Above(tab, body, gap=-2 mm)
         AlignCenterX(tab, body)
 
         drawing label {
-            t = Text("MOTOR MOUNT", (width / 4 + 7 mm, -height / 2 + 8 mm), size=4)
+            t = Text("MOTOR MOUNT", (width / 2 - 2 * inset - 20 mm, -height / 2 + 6 mm), size=3.5)
         }
+        # engraved along the bottom edge, clear of the corner hole
         label.bb.bottom == body.bb.bottom + 6 mm
+        label.bb.right == body.bb.right - 2 * inset
     }
 
     # the washers, in a row under the plate

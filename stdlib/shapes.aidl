@@ -25,7 +25,8 @@ def bolt_circle(count = 6, pcd = 40 mm, hole_d = 5 mm, start = 0 deg,
 }
 
 # A mounting tab: a rectangle with a round end (pointing up) and a hole in
-# the round end. `length` runs from the flat base to the tip of the round end.
+# the round end. `length` runs from the flat base to the tip of the round end
+# (make it at least `width`, or the round end pokes out below the base).
 def rounded_tab(width = 20 mm, length = 20 mm, hole_d = 6 mm, cx = 0 mm, cy = 0 mm) -> solid {
     stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
     end = Circle(center=(cx, cy + length - width / 2), diameter=width)
