@@ -160,11 +160,6 @@ def func(op: str, *args) -> Expr:
             return const(max(consts))
         if op == "pow":
             return const(consts[0] ** consts[1])
-    if op in ("min", "max") and len(args) > 2:
-        acc = args[0]
-        for a in args[1:]:
-            acc = Nl(op, (acc, a))
-        return acc
     return Nl(op, args)
 
 

@@ -45,6 +45,13 @@ class EvalError(Exception):
         self.labels = labels or []
 
 
+class _Silent(Exception):
+    """Raised when a statement uses a name whose definition already failed (reported once)."""
+
+
+POISON = object()
+
+
 class Scope:
     def __init__(self, parent: "Scope | None", struct: Structure | None, file: "FileCtx"):
         self.vars: dict = {}
@@ -172,6 +179,7 @@ class Interpreter:
                                         suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
                     fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
                 elif isinstance(st, A.ParamDecl):
+                    fctx.params[st.name] = None
                     if st.name in self.overrides and is_main:
                         val = self._eval_override(st.name, self.overrides[st.name], fctx)
                     else:
@@ -199,6 +207,9 @@ class Interpreter:
         except LarkError:
             raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
                             None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
+        if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
+                and node.id not in CONSTANTS:
+            return text                         # a bare word: a string
         return self.eval(node)
 
     def _import(self, st: A.Import, fctx: FileCtx) -> None:
@@ -261,8 +272,14 @@ class Interpreter:
     def _exec_stmt(self, st) -> None:
         try:
             self._exec(st)
+        except _Silent:
+            pass
         except EvalError as e:
             self.error(e)
+            if isinstance(st, A.Assign):       # later uses of the name stay quiet
+                self.scope.vars[st.name] = POISON
+            elif isinstance(st, A.StructDecl):
+                self.scope.vars.setdefault(st.name, POISON)
         except (ValueError, ZeroDivisionError, OverflowError) as e:
             self.error(EvalError("E0112", f"math error: {e}", st.span,
                                  hint="check for division by zero or sqrt/asin of an out-of-range value"))
@@ -305,12 +322,22 @@ class Interpreter:
             raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
                             hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
                             suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
-        name = name or st.name
+        name = name or st.name + self._loop_suffix()
         self._check_new_name(st.name, st.name_span, parent)
         child = self._new_structure(name, st.kind, parent, st.span)
         self.scope.vars[st.name] = StructRef(child)
         self._run_body(child, st.body, Scope(self.scope, child, self.file))
         return child
+
+    def _loop_suffix(self) -> str:
+        """``[i]`` per enclosing loop of the current structure body (outermost first)."""
+        idx = []
+        sc = self.scope
+        while sc is not None and sc.struct is self.struct and sc.parent is not None:
+            if hasattr(sc, "loop_index"):
+                idx.append(sc.loop_index)
+            sc = sc.parent
+        return "".join(f"[{i}]" for i in reversed(idx))
 
     def _check_new_name(self, name: str, span, struct: Structure) -> None:
         prev = self.scope.vars.get(name)
@@ -324,7 +351,7 @@ class Interpreter:
             callee = self._callee(v.func)
             if isinstance(callee, Template):
                 self._check_new_name(st.name, st.name_span, self._need_struct(st.span))
-                ref = self._instantiate(callee, v, st.name)
+                ref = self._instantiate(callee, v, st.name + self._loop_suffix())
                 self.scope.vars[st.name] = ref
                 return
         if st.name in CONSTANTS or st.name in ("self",):
@@ -362,13 +389,7 @@ class Interpreter:
             self.scope = sc
             try:
                 for s in st.body.stmts:
-                    if isinstance(s, A.StructDecl):
-                        try:
-                            self._struct_decl(s, name=f"{s.name}[{k}]")
-                        except EvalError as e:
-                            self.error(e)
-                    else:
-                        self._exec_stmt(s)
+                    self._exec_stmt(s)
             finally:
                 self.scope = outer
             for name, v in sc.vars.items():
@@ -896,6 +917,8 @@ class Interpreter:
                 raise EvalError("E0101", "`self` is only defined inside a structure", e.span)
             return StructRef(self.struct)
         v, sc = self.scope.lookup(e.id)
+        if v is POISON:
+            raise _Silent()
         if sc is not None:
             return v
         if e.id in ("true", "True"):

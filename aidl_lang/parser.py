@@ -36,14 +36,21 @@ TOKEN_NAMES = {
 
 
 class _PostLex:
-    """Drop ``_NL`` inside () and [] and before ``else``/``elif``; collapse repeats."""
+    """Drop ``_NL`` inside () and [] and before ``else``/``elif``; collapse repeats; end a
+    statement after a closing ``}`` even without a newline."""
 
     always_accept = ("_NL",)
 
     def process(self, stream):
         depth = 0
         pending = None
+        prev = None
         for tok in stream:
+            if (prev is not None and prev.type == "RBRACE" and depth == 0 and pending is None
+                    and tok.type not in ("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF")):
+                # `} stmt` on one line: a block ends a statement
+                yield Token.new_borrow_pos("_NL", "\n", prev)
+            prev = tok
             if tok.type == "_NL":
                 if depth == 0 and pending is None:
                     pending = tok
@@ -429,7 +436,7 @@ class _Builder(Transformer):
         return A.BinOp(self.s(meta), str(items[1]), items[0], items[2])
 
     def pow(self, meta, items):
-        return A.BinOp(self.s(meta), "**", items[0], items[1])
+        return A.BinOp(self.s(meta), "**", items[0], items[-1])
 
     def neg(self, meta, items):
         sign, x = items

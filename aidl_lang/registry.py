@@ -113,6 +113,8 @@ _DEFS = {
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length"), A("rotation", "angle", 0.0)],
+                           [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
+                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
                            doc="A rectangle with rounded corners (radius applied when drawn).",
                            members=RECT_MEMBERS),
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point")],

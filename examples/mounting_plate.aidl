@@ -51,7 +51,7 @@ assembly kit {
         AlignCenterX(tab, body)
 
         drawing label {
-            t = Text("MOTOR MOUNT", (width / 2 - 2 * inset - 20 mm, -height / 2 + 6 mm), size=3.5)
+            t = Text("MOTOR MOUNT", (width / 2 - 2 * inset, -height / 2 + 6 mm), size=3.5, anchor="end")
         }
         # engraved along the bottom edge, clear of the corner hole
         label.bb.bottom == body.bb.bottom + 6 mm

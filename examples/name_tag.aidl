@@ -8,7 +8,7 @@ param title = "Analytical Engine Programmer"
 param width = 90 mm
 param height = 55 mm
 
-name_size = min(8 mm, (width - 16 mm) / (0.9 * len(name)))
+name_size = min(8 mm, (width - 20 mm) / len(name))      # shrink long names to fit
 
 solid tag {
     card = RoundedRectangle(center=(0, 0), width=width, height=height, corner_radius=5)
@@ -24,9 +24,9 @@ solid tag {
         who = Text(name, (0, -4), size=name_size)
         role = Text(title, (0, -15), size=3)
         for i in range(9) {
-            dot = Circle(center=(-20 + i * 5 mm, -22), radius=0.8)
+            dot = Circle(center=(-20 + i * 5 mm, -17.5), radius=0.8)
         }
-        # header, name, title and dots stacked down the card, centered
+        # header, name and title stacked down the card, centered
         Below(who, hello, gap=6)
         Below(role, who, gap=5)
         AlignCenterX(who, border)

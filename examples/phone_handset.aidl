@@ -15,6 +15,10 @@ bend = 120 mm               # the arch's center lies this far below the axis
 neck = 38 mm                # width of a cup where it joins the handle
 r_in = sqrt(square(half - face + 9 mm) + square(bend - 20 mm))   # arch underside radius
 r_out = r_in + thickness
+gx = sqrt(square(r_out) - square(bend - 18 mm))       # handle top meets the cups' backs
+rim = 5 mm                                            # cap rims, this far above the faces
+rim_out = (half - gx) * rim / (cup_depth - 18 mm)     # where a rim meets the outer side
+rim_in = 9 mm * rim / (cup_depth - 20 mm)             # ... and the inner side
 
 solid handset {
     solid body {
@@ -25,8 +29,8 @@ solid handset {
         d = Point(half - face + 9 mm, -20)              # arch underside, right foot
         e = Point(half - face, -cup_depth)              # mouthpiece face, inner end
         f = Point(half, -cup_depth)                     # mouthpiece face, outer end
-        g = Point(sqrt(square(r_out) - square(bend - 18 mm)), -18)   # handle top, right end
-        h = Point(-sqrt(square(r_out) - square(bend - 18 mm)), -18)  # handle top, left end
+        g = Point(gx, -18)   # handle top, right end
+        h = Point(-gx, -18)  # handle top, left end
         o = Point(0, -bend)                             # center of the arch
 
         ear_face = Line(a, b)
@@ -63,17 +67,17 @@ solid handset {
 
     # engraved rims where the caps screw onto the cups
     drawing caps {
-        ear_rim = Line((-half + 1.5, -cup_depth + 5), (-half + face - 1.5, -cup_depth + 5))
-        mouth_rim = Line((half - face + 1.5, -cup_depth + 5), (half - 1.5, -cup_depth + 5))
+        ear_rim = Line((-half + rim_out, -cup_depth + rim), (-half + face - rim_in, -cup_depth + rim))
+        mouth_rim = Line((half - face + rim_in, -cup_depth + rim), (half - rim_out, -cup_depth + rim))
     }
 
-    # rims lie across the cups, 5 mm above the faces
+    # rims lie across the cups, `rim` above the faces
     OnLine(caps.ear_rim.start, body.ear_outer)
     OnLine(caps.ear_rim.end, body.ear_inner)
     OnLine(caps.mouth_rim.start, body.mouth_inner)
     OnLine(caps.mouth_rim.end, body.mouth_outer)
-    VerticalDistance(body.a, caps.ear_rim.start, 5 mm)
-    VerticalDistance(body.f, caps.mouth_rim.end, 5 mm)
+    VerticalDistance(body.a, caps.ear_rim.start, rim)
+    VerticalDistance(body.f, caps.mouth_rim.end, rim)
     Horizontal(caps.ear_rim)
     Horizontal(caps.mouth_rim)
     # grille and port centered over their faces

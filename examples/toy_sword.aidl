@@ -19,7 +19,7 @@ solid sword {
                         (blade_width / 2, blade_length - blade_width),
                         (0, blade_length),
                         (-blade_width / 2, blade_length - blade_width)])
-        # the tip is symmetric about the blade's axis
+        # an engraved fuller runs up the middle of the blade
         drawing fuller {
             groove = Line((0, 20), (0, blade_length - blade_width - 15))
         }

@@ -46,8 +46,8 @@ solid wrench {
 
     # engraved size markings on the handle
     drawing marks {
-        open_size = Text(f"{jaw}", (-length/2 + 1.6*jaw_r, 0), size=0.35*jaw, anchor="start")
-        ring_size = Text(f"{ring}", (length/2 - 1.6*ring_r, 0), size=0.35*ring, anchor="end")
+        open_size = Text(f"{jaw}", (-length/2 + 1.6*jaw_r, -0.175*jaw), size=0.35*jaw, anchor="start")
+        ring_size = Text(f"{ring}", (length/2 - 1.6*ring_r, -0.175*ring), size=0.35*ring, anchor="end")
     }
 
     # the heads sit on the ends of the handle's axis

@@ -2,8 +2,9 @@
 
 Solves ``F(x) = 0`` for the free parameters.  Affine equations are one sparse matrix (all
 evaluated in one product); nonlinear equations are evaluated with their analytic gradients.
-The step is ``dx = -J^T (J J^T + mu I)^-1 F`` through ``scipy.sparse.linalg.splu``: the
+The step is ``dx = -D J_D^T (J_D J_D^T + mu I)^-1 F`` with ``J_D = J D`` through ``scipy.sparse.linalg.splu``: the
 minimum-norm step moves the starting guesses as little as the constraints require, and
+the column scaling ``D`` (frames x100) makes moving a whole structure cheaper than deforming it;
 ``mu > 0`` keeps it defined for redundant (rank-deficient) systems.  ``mu`` grows when a step
 does not reduce ``|F|`` and shrinks when it does (Levenberg–Marquardt damping).
 """
@@ -58,7 +59,10 @@ class System:
         return F, J
 
 
-def build_system(exprs: list, free: np.ndarray, x: np.ndarray) -> System:
+def build_system(exprs: list, free: np.ndarray, x: np.ndarray,
+                 scale: np.ndarray | None = None) -> System:
+    """``scale[i]`` > 1 makes parameter ``i`` cheaper to move in the minimum-norm step
+    (translation frames: a part moves rigidly before it deforms)."""
     n = len(x)
     free_idx = np.flatnonzero(free)
     cols = -np.ones(n, dtype=np.int64)
@@ -87,6 +91,9 @@ def build_system(exprs: list, free: np.ndarray, x: np.ndarray) -> System:
                                                   np.arange(len(lin_rows)))),
                       shape=(len(exprs), len(lin_rows)))
     sys_.A_full = (P @ A).tocsr()
+    d = np.ones(len(free_idx)) if scale is None else np.asarray(scale, dtype=float)[free_idx]
+    sys_.D = sp.diags(d)
+    sys_.d = d
     return sys_
 
 
@@ -111,7 +118,8 @@ def newton(system: System, x0: np.ndarray, max_iter: int = 100, tol: float = TOL
     for it in range(1, max_iter + 1):
         if np.max(np.abs(F)) <= tol:
             return NewtonResult(x, True, it - 1, float(np.max(np.abs(F))))
-        JJt = (J @ J.T).tocsc()
+        Js = (J @ system.D).tocsr()
+        JJt = (Js @ Js.T).tocsc()
         accepted = False
         for _ in range(12):
             try:
@@ -120,7 +128,7 @@ def newton(system: System, x0: np.ndarray, max_iter: int = 100, tol: float = TOL
             except RuntimeError:
                 mu = max(mu * 100, 1e-8)
                 continue
-            dx = J.T @ y
+            dx = system.d * (Js.T @ y)
             xn = x.copy()
             xn[system.free_idx] += dx
             Fn, _ = system.residual_and_jacobian(xn, want_j=False)
