@@ -149,6 +149,12 @@ def main(argv: list[str] | None = None) -> int:
         return {"check": cmd_check, "render": cmd_render, "explain": cmd_explain}[args.cmd](args)
     except KeyboardInterrupt:
         return 130
+    except BrokenPipeError:          # `aidl check --json | head`
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:
+            pass
+        return 0
     except RecursionError:
         print("aidl: error[E0302]: the program is nested too deeply to compile", file=sys.stderr)
         return 1

@@ -198,6 +198,12 @@ def equal(ctx, a, b, **_):
         from .values import unify_add
         ea, eb, _d = unify_add(a, b, ctx.unit_scale, math.pi / 180)
         return [Equation(ea - eb)]
+    ka = a.geom.kind if isinstance(a, GeomRef) else "value"
+    kb = b.geom.kind if isinstance(b, GeomRef) else "value"
+    fam = lambda k: {"Arc": "Circle", "RoundedRectangle": "Rectangle"}.get(k, k)
+    if fam(ka) != fam(kb) and "value" not in (ka, kb):
+        raise ConstraintError(f"Equal needs two things of the same kind, got {ka} and {kb}; "
+                              f"compare members instead, e.g. `a.length == b.radius`")
     sa, sb = _size(ctx, a), _size(ctx, b)
     if len(sa) != len(sb):
         raise ConstraintError(f"Equal needs two things of the same kind, got {type_name(a)} "

@@ -96,6 +96,7 @@ class Interpreter:
         self.scope: Scope | None = None
         self.file: FileCtx | None = None
         self.root_dir: Path | None = None
+        self.cur_span: Span | None = None
 
     # ------------------------------------------------------------------ helpers
     @property
@@ -110,7 +111,9 @@ class Interpreter:
                                  labels=e.labels, suggestions=e.suggestions))
 
     def warn_nonconst(self, what: str) -> None:
-        pass
+        self.sink.warning("W0103", f"{what} depends on solved geometry; its starting value is "
+                          "used and held", self.cur_span,
+                          hint="give it a number or a param; relate shapes with constraints instead")
 
     # ------------------------------------------------------------------ entry
     def run(self, program: A.Program) -> Model:
@@ -135,10 +138,15 @@ class Interpreter:
             root = self._new_structure(st.name, st.kind, None, st.span)
             self._run_body(root, st.body, Scope(fctx.scope, root, fctx))
         else:
-            kind = "assembly" if not loose else "solid"
+            kind = "assembly" if not any(_is_geometry_stmt(s) for s in loose) else "solid"
             root = self._new_structure("model", kind, None, program.span)
+            self.scope = fctx.scope
+            for s in top:
+                if _is_plain_const(s):
+                    self._exec_stmt(s)
             scope = Scope(fctx.scope, root, fctx)
-            self._run_body(root, A.Block(program.span, top), scope)
+            rest = [s for s in top if not _is_plain_const(s)]
+            self._run_body(root, A.Block(program.span, rest), scope)
         self.model.root = root
         return self.model
 
@@ -257,19 +265,19 @@ class Interpreter:
     def _run_body(self, struct: Structure, block: A.Block, scope: Scope) -> None:
         saved = (self.struct, self.scope)
         self.struct, self.scope = struct, scope
+        struct.scope = scope.vars            # members (`self.body`) are visible while it runs
         try:
             for st in block.stmts:
                 self._exec_stmt(st)
         finally:
             self.struct, self.scope = saved
-        for k, v in scope.vars.items():
-            struct.scope.setdefault(k, v)
 
     def _exec_block(self, block: A.Block) -> None:
         for st in block.stmts:
             self._exec_stmt(st)
 
     def _exec_stmt(self, st) -> None:
+        self.cur_span = st.span
         try:
             self._exec(st)
         except _Silent:
@@ -717,7 +725,7 @@ class Interpreter:
             return None
         if typ in ("length", "angle", "number"):
             if not isinstance(v, Q):
-                raise EvalError("E0108", f"{where} must be a {typ}, got {type_name(v)}", span,
+                raise EvalError("E0108", f"{where} must be {_a(typ)}, got {type_name(v)}", span,
                                 hint=lookup(fname).signature())
             want = {"length": LEN, "angle": ANG, "number": NUM}[typ]
             if v.dim == want:
@@ -725,7 +733,7 @@ class Interpreter:
             if v.dim == NUM:
                 k = self.unit_scale if typ == "length" else DEG
                 return Q(lift(v.expr) * k, want, v.owners)
-            raise EvalError("E0109", f"{where} must be a {typ}, got a {dim_name(v.dim)}", span,
+            raise EvalError("E0109", f"{where} must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
                             hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
                                                                      " such as `deg`" if typ == "angle" else ""))
         if typ == "point":
@@ -1197,6 +1205,15 @@ def _is_plain_const(st) -> bool:
     return True
 
 
+def _is_geometry_stmt(st) -> bool:
+    """A top-level statement that creates geometry directly (not a constraint)."""
+    v = st.value if isinstance(st, A.Assign) else st.expr if isinstance(st, A.ExprStmt) else None
+    if isinstance(v, A.Call) and isinstance(v.func, A.Name):
+        e = lookup(v.func.id)
+        return e is not None and e.category == "primitive"
+    return isinstance(st, (A.For, A.If))
+
+
 def _common_ancestor(a: Structure, b: Structure):
     anc = set()
     s = a
@@ -1216,6 +1233,10 @@ def _src(sink: DiagnosticSink, span: Span | None) -> str:
         return ""
     src = sink.sources.get(span.file, "")
     return " ".join(src[span.start:span.end].split())[:120]
+
+
+def _a(word: str) -> str:
+    return ("an " if word[:1] in "aeiou" else "a ") + word
 
 
 def _fmt_num(c: float) -> str:

@@ -84,8 +84,9 @@ def lark_parser() -> Lark:
 def mask_comments(src: str) -> str:
     """Turn ``//`` comments into ``# `` comments (same length, so spans stay valid).
 
-    ``//`` is floor division when the text after it on the line is a single operand
-    (``n // 2``, ``w // step``); otherwise (line start, or prose after it) it starts a comment.
+    ``//`` starts a comment at the start of a line, or when the rest of the line reads as prose
+    (two words side by side that are not keywords, or characters no expression uses);
+    otherwise it is floor division (``n // 2 + 1``, ``w // step``).
     """
     out = list(src)
     i, n = 0, len(src)
@@ -115,7 +116,7 @@ def mask_comments(src: str) -> str:
         elif ch == "/" and src.startswith("//", i):
             j = src.find("\n", i)
             rest = src[i + 2: (n if j < 0 else j)]
-            if line_start or not re.fullmatch(r"\s*[A-Za-z0-9_.()\[\]]+\s*", rest):
+            if line_start or _is_prose(rest):
                 out[i], out[i + 1] = "#", " "
                 i = n if j < 0 else j
                 continue
@@ -127,6 +128,20 @@ def mask_comments(src: str) -> str:
             line_start = False
         i += 1
     return "".join(out)
+
+
+_KW = {"if", "else", "and", "or", "not", "for", "in"}
+
+
+def _is_prose(rest: str) -> bool:
+    """After `` // ``: prose (two words side by side, not keywords), so a comment."""
+    code = rest.split("#", 1)[0]
+    if not code.strip():
+        return True
+    for m in re.finditer(r"([A-Za-z_]\w*)[ \t]+(?=([A-Za-z_]\w*))", code):
+        if m.group(1) not in _KW and m.group(2) not in _KW:
+            return True
+    return bool(re.search(r"[^\w\s.()\[\]+\-*/%,<>=!]", code))
 
 
 def _blank_logical_line(text: str, pos: int) -> str:
