@@ -886,6 +886,9 @@ class Interpreter:
         return m(e, name) if type(e) is A.Call else m(e)
 
     def _e_Num(self, e: A.Num):
+        if not math.isfinite(e.value) or abs(e.value) > 1e15:
+            raise EvalError("E0112", "this number is too large", e.span,
+                            hint="AIDL numbers must stay below 1e15")
         if e.unit is None:
             return Q.num(e.value)
         if e.unit in UNITS_LENGTH:

@@ -135,7 +135,7 @@ _KW = {"if", "else", "and", "or", "not", "for", "in"}
 
 def _is_prose(rest: str) -> bool:
     """After `` // ``: prose (two words side by side, not keywords), so a comment."""
-    code = rest.split("#", 1)[0]
+    code = rest.split("#", 1)[0].split("//", 1)[0]
     if not code.strip():
         return True
     for m in re.finditer(r"([A-Za-z_]\w*)[ \t]+(?=([A-Za-z_]\w*))", code):

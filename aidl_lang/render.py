@@ -27,7 +27,9 @@ def segments_for(radius: float, sweep: float = 2 * math.pi) -> int:
     r = abs(radius)
     if r <= CHORD_TOL:
         return max(3, int(8 * sweep / (2 * math.pi)))
-    step = 2 * math.acos(max(-1.0, 1 - CHORD_TOL / r))
+    step = 2 * math.acos(max(-1.0, 1 - CHORD_TOL / r)) if r < 1e9 else 0.0
+    if step <= 0.0 or not math.isfinite(step):
+        step = 2 * math.sqrt(2 * CHORD_TOL / r) if math.isfinite(r) else 2 * math.pi / 20000
     return max(3, min(20000, int(math.ceil(sweep / step))))
 
 
