@@ -135,7 +135,7 @@ def exprs(depth=3):
         st.tuples(sub, st.integers(-1, 3)).map(lambda t: f"{t[0]}[{t[1]}]"),
         st.tuples(sub, st.sampled_from(["x", "y", "center", "bb", "width", "start", "top_left",
                                         "radius", "bb.left"])).map(lambda t: f"{t[0]}.{t[1]}"),
-        sub.map(lambda e: f'f"v={{{e}}}"'),
+        leaf.map(lambda e: f'f"v={{{e}}}"' if '"' not in e else e),
         sub.map(lambda e: f"-{e}"),
         sub.map(lambda e: f"(not {e})"),
     )
@@ -187,12 +187,14 @@ def programs(draw):
     if draw(st.booleans()):
         lines.append("units " + draw(st.sampled_from(["mm", "inch", "cm", "parsec"])))
     for name in draw(st.lists(st.sampled_from(["w", "n"]), max_size=2, unique=True)):
-        lines.append(f"param {name} = {draw(exprs(1))}")
-    if draw(st.booleans()):
+        lines.append(f"param {name} = " + draw(st.sampled_from(["3", "2.5 mm", "1 in", "4", "-1",
+                                                               "0", "30 deg", "true"])))
+    has_def = draw(st.booleans())
+    if has_def:
         body = "\n    ".join(draw(st.lists(statements(1), max_size=3)))
         lines.append(f"def t(a = 1, b = 2 mm) -> solid {{\n    {body}\n}}")
     body = [PRELUDE] + draw(st.lists(statements(2), min_size=1, max_size=6))
-    if draw(st.booleans()):
+    if has_def and draw(st.booleans()):
         body.append("x = t(a=" + draw(exprs(1)) + ")")
     lines.append("solid top {\n    " + "\n    ".join(body) + "\n}")
     return "\n".join(lines) + "\n"
