@@ -457,6 +457,41 @@ def test_syntax_errors_in_separate_structures():
     assert [(d.span.line, d.span.col) for d in sink.items] == [(2, 9), (6, 5), (9, 11)]
 
 
+def test_errors_in_three_structures_with_closed_brackets():
+    src = ("solid a {\n"
+           "    x = = 1\n"
+           "}\n"
+           "solid b {\n"
+           "    y = (1, 2))\n"
+           "    z = 3\n"
+           "}\n"
+           "solid c {\n"
+           "    w = 1 2\n"
+           "}\n")
+    prog, sink = parse_src(src)
+    assert [(d.code, d.span.line, d.span.col) for d in sink.items] == [
+        ("E0001", 2, 9), ("E0001", 5, 15), ("E0001", 9, 11)]
+    assert [s.name for s in prog.stmts] == ["a", "b", "c"]
+    assert [st.name for st in prog.stmts[1].body.stmts] == ["z"]
+
+
+def test_loop_names_become_lists_after_the_loop(compile_text):
+    c = compile_text("""solid s {
+    for i in range(4) {
+        c = Circle(center=(i * 10, 0), radius=1)
+        if i != 1 { k = Point(i, 5) }
+    }
+    a = Point(c[2].center.x, len(c))
+    b = Point(len(k), k[-1].x)
+}
+""")
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    got = {g.name: c.model.x[g.points["p"].ix] for g in c.model.all_geometry() if g.name in "ab"}
+    ys = {g.name: c.model.x[g.points["p"].iy] for g in c.model.all_geometry() if g.name in "ab"}
+    assert (got["a"], ys["a"]) == pytest.approx((20, 4))
+    assert (got["b"], ys["b"]) == pytest.approx((3, 3))
+
+
 def test_equals_instead_of_equation_hint():
     _, sink = parse_src("solid s {\n    c.radius = 3\n}\n")
     (d,) = sink.items

@@ -192,6 +192,75 @@ def test_center_inside_centers_boxes(compile_text):
     assert box(m, "h") == pytest.approx((-3, 3, -3, 3), abs=ABS)
 
 
+def test_constraint_coordinates_are_in_the_owning_structure_frame(compile_text):
+    m = ok(compile_text("""assembly root {
+    solid top {
+        solid c { q = Circle((1, 1), 1) }
+        c.q.center == (3, 4)
+    }
+    top.c.q.center == (103, -6)
+}"""))
+    top = m.root.children["top"]
+    assert (m.x[top.fx], m.x[top.fy]) == pytest.approx((100, -10), abs=1e-8)
+    assert pos(m, geom(m, "q"), "center") == pytest.approx((103, -6), abs=1e-8)
+
+
+def test_a_child_moves_as_a_whole_before_it_deforms(compile_text):
+    m = ok(compile_text("""assembly root {
+    solid a {
+        r = Rectangle(center=(0, 0), width=10, height=10)
+        c = Circle(center=(20, 0), radius=2)
+    }
+    a.r.center == (50, 30)
+}"""))
+    # nothing inside `a` relates r and c, yet they keep their relative placement
+    (rx, ry), (cx, cy) = pos(m, geom(m, "r"), "bottom_left"), pos(m, geom(m, "c"), "center")
+    assert (rx, ry) == pytest.approx((45, 25), abs=1e-6)
+    assert (cx - rx, cy - ry) == pytest.approx((25, 5), abs=0.05)
+
+
+def test_box_of_self_excludes_a_child_named_in_the_same_constraint(compile_text):
+    # `self.bb.top == lid.bb.top`: self's box leaves the lid out, so the lid is aligned with
+    # the rest of the body instead of the equation holding trivially
+    m = ok(compile_text("""solid box {
+    body = Rectangle(center=(0, 0), width=20, height=10)
+    Fixed(body)
+    solid lid { r = Rectangle(center=(0, 30), width=20, height=4) }
+    self.bb.top == lid.bb.top
+}"""))
+    assert box(m, "lid") == pytest.approx((-10, 10, 1, 5), abs=ABS)
+
+
+def test_box_side_switches_branch_during_the_solve(compile_text):
+    # s's top starts as circle a's top (5); b moves up, so the top becomes b's (11)
+    m = ok(compile_text("""assembly top {
+    solid s {
+        a = Circle(center=(0, 0), radius=5)
+        b = Circle(center=(0, 3), radius=1)
+        Fixed(a)
+        b.center == (0, 10)
+    }
+    solid t { r = Rectangle(center=(0, 0), width=4, height=2) }
+    Fixed(s)
+    Above(t, s, gap=2)
+    AlignCenterX(t, s)
+}"""))
+    assert box(m, "s") == pytest.approx((-5, 5, -5, 11), abs=ABS)
+    assert box(m, "t") == pytest.approx((-2, 2, 13, 15), abs=ABS)
+
+
+def test_structure_height_equation(compile_text):
+    m = ok(compile_text("""solid box {
+    body = Rectangle(center=(0, 0), width=20, height=10)
+    Fixed(body)
+    solid lid { r = Rectangle(center=(0, 30), width=20, height=4) }
+    Above(lid, body)
+    self.bb.height == 14
+}"""))
+    assert box(m, "lid") == pytest.approx((-10, 10, 5, 9), abs=ABS)
+    assert box(m, "") == pytest.approx((-10, 10, -5, 9), abs=ABS)
+
+
 @pytest.mark.xfail(strict=True, reason="Fixed(structure) holds only the structure's frame; the "
                    "geometry inside it is still moved by the minimum-norm solve")
 def test_fixed_structure_holds_its_geometry(compile_text):
@@ -237,6 +306,27 @@ def test_tangent_line_through_a_fixed_point(compile_text):
     # the tangent point: foot of the perpendicular is at distance sqrt(|p|^2 - r^2) from p
     t = ((0 - x0) * (x1 - x0) + (0 - y0) * (y1 - y0)) / math.hypot(x1 - x0, y1 - y0)
     assert t == pytest.approx(math.sqrt(100 + 9 - 25), abs=1e-8)
+
+
+def test_tangent_circles_external_and_internal_and_line_arc(compile_text):
+    m = ok(compile_text("""solid s {
+    a = Circle((0, 0), 10)
+    b = Circle((20, 5), 3)
+    c = Circle((2, 1), 3)
+    Fixed(a)
+    Tangent(a, b)
+    Tangent(a, c)
+    b.center.y == 0
+    c.center.y == 0
+    e = Arc(center=(0, 30), radius=5, start_angle=0, end_angle=180)
+    l = Line((-10, 36), (10, 37))
+    Fixed(e)
+    Horizontal(l)
+    Tangent(l, e)
+}"""))
+    assert pos(m, geom(m, "b"), "center") == pytest.approx((13, 0), abs=ABS)    # outside
+    assert pos(m, geom(m, "c"), "center") == pytest.approx((7, 0), abs=ABS)     # inside
+    assert pos(m, geom(m, "l"), "start")[1] == pytest.approx(35, abs=ABS)
 
 
 @pytest.mark.parametrize("start, angle, expect", [
@@ -476,3 +566,16 @@ def test_random_well_posed_sketches_solve(compile_text, sketch):
     for (gx, gy), (px, py) in zip(got, pts):
         assert gx - x0 == pytest.approx(px - pts[0][0], abs=1e-6)
         assert gy - y0 == pytest.approx(py - pts[0][1], abs=1e-6)
+
+
+@pytest.mark.xfail(strict=True, reason="a zero-length starting line has a singular Jacobian for "
+                   "Length/Distance (d|p-q| undefined at p == q): E0401 'cannot all be "
+                   "satisfied' is reported although nothing conflicts")
+def test_zero_length_starting_line_can_be_given_a_length(compile_text):
+    m = ok(compile_text("""solid s {
+    l = Line((0, 0), (0, 0))
+    Fixed(l.start)
+    Length(l, 5)
+}"""))
+    (x0, y0), (x1, y1) = pos(m, geom(m, "l"), "start"), pos(m, geom(m, "l"), "end")
+    assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(5, abs=1e-8)
