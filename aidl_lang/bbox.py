@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import Expr, Lin, Nl, evaluate, func, var
+from .expr import Expr, Nl, evaluate, func, var
 from .model import Geometry, Structure
 
 SIDES = ("left", "right", "bottom", "top")
@@ -174,4 +174,4 @@ def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, fl
 
 
 __all__ = ["BBTerm", "SIDES", "contains_bbox", "collect", "expand", "exclusions",
-           "side_expr", "numeric_box", "Lin"]
+           "side_expr", "numeric_box"]

@@ -12,8 +12,8 @@ import math
 
 from .bbox import BBTerm
 from .expr import Expr, evaluate, hypot, var
-from .model import Equation, Geometry, Structure
-from .values import LEN, PV, BBoxRef, GeomRef, Q, StructRef, type_name
+from .model import Equation
+from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name
 
 
 class ConstraintError(Exception):

@@ -19,7 +19,7 @@ from . import ast as A
 from .bbox import BBTerm, contains_bbox
 from .constraints import BUILDERS, ConstraintError
 from .diagnostics import Diagnostic, DiagnosticSink, Span, did_you_mean
-from .expr import Lin, as_const, evaluate, func, lift, var
+from .expr import as_const, evaluate, func, lift, var
 from .model import Constraint, Equation, Model, Point, Scalar, Structure
 from .primitives import PrimitiveError, build, member as geom_member, member_names
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, canonical,
@@ -616,13 +616,9 @@ class Interpreter:
         for a in variant:
             if a.name in bound:
                 conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm, a.name)
-            elif a.default is not None and a.type in ("length", "angle", "number") and entry.category == "primitive":
-                conv[a.name] = Q.num(a.default if a.type != "length" else a.default * self.unit_scale,
-                                     NUM if a.type == "number" else (LEN if a.type == "length" else ANG))
-                if a.type == "length":
-                    conv[a.name] = Q.num(a.default, LEN)
-            elif a.default is not None and not (a.type in ("length", "angle", "number")):
-                conv[a.name] = a.default
+            elif a.default is not None:      # registry defaults are in mm / radians
+                dim = {"length": LEN, "angle": ANG, "number": NUM}.get(a.type)
+                conv[a.name] = Q.num(a.default, dim) if dim else a.default
         if entry.category == "primitive":
             return self._primitive(canonical(nm), conv, node, spans)
         owners = owners_of(*conv.values())

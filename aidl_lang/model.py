@@ -8,7 +8,6 @@ structure has a translation frame (two parameters) relative to its parent; the r
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
@@ -164,8 +163,8 @@ class Constraint:
     owner: Structure
     span: Span | None
     equations: list[Equation] = field(default_factory=list)
-    # a deferred constraint builds its equations just before solving, from the starting values
-    deferred: Callable[[np.ndarray], list[Equation]] | None = None
+    # equations holding bounding-box terms, expanded just before solving (aidl_lang.bbox)
+    deferred: list[Equation] | None = None
     text: str = ""
     implicit: bool = False         # created by a constructor, not written by the user
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 
-from .expr import Expr, func, hypot, var
+from .expr import func, hypot, var
 from .model import Equation, Geometry
-from .values import ANG, LEN, NUM, PV, GeomRef, Q
+from .values import ANG, LEN, PV, GeomRef, Q
 
 
 class PrimitiveError(Exception):
@@ -341,7 +341,6 @@ def member(g: Geometry, name: str, frame):
             # point on the arc halfway between start and end (counter-clockwise)
             cc, ss, ee = (_pv(g.points[n], frame) for n in ("center", "start", "end"))
             a1 = func("atan2", ss.y - cc.y, ss.x - cc.x)
-            a2 = func("atan2", ee.y - cc.y, ee.x - cc.x)
             # counter-clockwise sweep in (0, 2pi]: the half-angle of start->end, flipped when
             # the cross product says the short way round is clockwise
             sweep = func("atan2", (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x),

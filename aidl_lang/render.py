@@ -163,7 +163,7 @@ class Renderer:
         """Chain open curves whose endpoints meet into closed loops."""
         polys = [self.curve(g) for g in curves]
         used = [False] * len(curves)
-        loops = []
+        loops, rest = [], []
         for i in range(len(curves)):
             if used[i]:
                 continue
@@ -193,14 +193,7 @@ class Renderer:
                     len(chain) == 1 and len(pts[0]) > 3 and np.hypot(*(end - start)) <= _tol(start)):
                 loops.append(np.vstack([p[:-1] for p in pts]))
             else:
-                for j in chain:
-                    used[j] = False
-                used[i] = True
-                chain_rest = chain
-                loops_rest = [curves[j] for j in chain_rest]
-                for g in loops_rest:
-                    g.data["_open"] = True
-        rest = [g for g in curves if g.data.pop("_open", False)]
+                rest += [curves[j] for j in chain]
         return loops, rest
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:

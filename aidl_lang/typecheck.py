@@ -192,7 +192,7 @@ class Checker:
             self.expr(f, scope)
             return
         n = f.id
-        if n in self.templates and not _shadowed(scope, n):
+        if n in self.templates:
             self.template_call(e, self.templates[n])
             return
         if scope.has(n):
@@ -246,10 +246,6 @@ class Checker:
             if p.default is None and p.name not in given:
                 self.sink.error("E0106", f"`{d.name}` needs the argument `{p.name}`", e.span,
                                 hint=f"`{d.name}({p.name}=...)`")
-
-
-def _shadowed(scope: _Scope, n: str) -> bool:
-    return False
 
 
 def _imported_names(path: str, target: str) -> set:

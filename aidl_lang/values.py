@@ -9,7 +9,7 @@ validity rules can be checked where the value is used.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .expr import Expr, Lin, as_const, lift
 from .model import Geometry, Point, Structure
@@ -93,11 +93,6 @@ class Builtin:
 class Namespace:
     name: str
     scope: object
-
-
-@dataclass(eq=False, slots=True)
-class ConstraintVal:
-    pass
 
 
 def dim_name(d: tuple) -> str:
