@@ -261,8 +261,6 @@ def test_structure_height_equation(compile_text):
     assert box(m, "") == pytest.approx((-10, 10, -5, 9), abs=ABS)
 
 
-@pytest.mark.xfail(strict=True, reason="Fixed(structure) holds only the structure's frame; the "
-                   "geometry inside it is still moved by the minimum-norm solve")
 def test_fixed_structure_holds_its_geometry(compile_text):
     m = ok(compile_text("""assembly top {
     solid a { r = Rectangle(center=(0, 0), width=20, height=10) }

@@ -1,15 +1,18 @@
-"""Solve a model's constraints (flat solve of the whole tree).
+"""Solve a model's constraints: the paper's hierarchical solver (appendix "Solver Details").
 
-1. Deferred expressions: bounding boxes are expanded now that the tree is final, each
-   constraint leaving out descendants whose own box it also uses (:mod:`aidl_lang.bbox`).
-2. Branch pruning: ``min``/``max`` are replaced by the branch active at the current point
-   (paper, appendix "Solver Details"); after a solve the original expressions are re-checked and
-   the solve repeats from the new point until they hold.
-3. Inequalities (``<=``, ``>=``, Inside, Taller, ...) use an active set: an inequality violated at
-   the current point is solved as an equality, then everything is re-checked.
-4. Each round is one damped minimum-norm Newton solve (:mod:`.newton`).
+Pipeline of this package, one module per step:
 
-A failure lists the constraints still unsatisfied, with their structure and source span.
+* :mod:`.system`: the model's residual rows, with deferred bounding boxes expanded and
+  inequalities written with slacks (non-inversion included);
+* :mod:`.tape`: rows compiled into a vectorised tape (values and reverse-mode Jacobian);
+* :mod:`.newton`: damped minimum-norm Newton steps on a tape;
+* :mod:`.hierarchy`: the post-order recursive solve with iterative deepening and min/max
+  branch iteration;
+* :mod:`.diagnose`: after a failure, the smallest conflicting constraint sets (rank-revealing
+  QR of the Jacobian); on demand, degrees of freedom per structure and redundant constraints.
+
+:func:`solve` is the entry point; a failure lists the constraints still unsatisfied and the
+conflict sets found, with their structure and source span.
 """
 from __future__ import annotations
 
@@ -17,108 +20,103 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..bbox import collect, expand, exclusions
-from ..expr import evaluate, has_branches, prune
 from ..model import Constraint, Model
-from .newton import TOL, build_system, newton
-
-MAX_ROUNDS = 12
-MAX_ITER = 100
-CHECK_TOL = 1e-6
-FRAME_SCALE = 100.0     # frames move 1e4x cheaper (in the squared step norm) than geometry
-
-
-@dataclass
-class Row:
-    constraint: Constraint
-    expr: object          # original (branches intact)
-    ineq: bool
+from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
+from .system import LINK, SIGN, build_rows
+from .tape import Tape
 
 
 @dataclass
 class SolveResult:
+    """Outcome of :func:`solve`.
+
+    ``unsatisfied``: ``[(Constraint, residual)]`` worst first; ``conflicts``: list of
+    :class:`~.diagnose.Conflict`; ``budget_exceeded``: the iteration budget ran out.
+    """
+
     converged: bool
     iterations: int
     rounds: int
-    unsatisfied: list = field(default_factory=list)   # [(Constraint, residual)]
+    unsatisfied: list = field(default_factory=list)
     max_residual: float = 0.0
     n_unknowns: int = 0
     n_equations: int = 0
+    conflicts: list = field(default_factory=list)
+    budget_exceeded: bool = False
+    attempts: int = 0
+    solver: Solver | None = None
 
 
-def equations(model: Model, x: np.ndarray) -> list[Row]:
-    """All equations of the model with deferred bounding boxes expanded."""
-    rows = []
-    for c in model.constraints:
-        if c.deferred is not None:
-            terms = []
-            for eq in c.deferred:
-                collect(eq.expr, terms)
-            excl = exclusions(terms)
-            for eq in c.deferred:
-                rows.append(Row(c, expand(eq.expr, x, excl), eq.ineq))
-        for eq in c.equations:
-            rows.append(Row(c, eq.expr, eq.ineq))
-    return rows
+def solve(model: Model, flat: bool = False, diagnose: bool = True) -> SolveResult:
+    """Solve ``model`` in place (``model.x`` is updated even on failure, for diagnostics).
+
+    ``flat=True`` solves everything at once instead of hierarchically (for benchmarks)."""
+    solver = Solver(model)
+    return run(solver, flat=flat, diagnose=diagnose)
 
 
-def row_residual(r: Row, x) -> float:
-    v = evaluate(r.expr, x)
-    if r.ineq:
-        return max(0.0, -v)
-    return abs(v)
+def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResult:
+    """(Re-)run a compiled :class:`Solver` from its current point and report."""
+    model = solver.model
+    solver.failed.clear()
+    solver.trace.__init__()
+    ok = solver.solve_flat() if flat else solver.solve_hierarchical()
+    tr = solver.trace
+    model.x = list(map(float, solver.x[:solver.n_model]))
+    res = SolveResult(ok and not tr.budget_exceeded, tr.iterations,
+                      max((a.rounds for a in tr.attempts), default=0),
+                      n_unknowns=int(solver.free.sum()), n_equations=len(solver.rows.exprs),
+                      budget_exceeded=tr.budget_exceeded, attempts=len(tr.attempts),
+                      solver=solver)
+    if not res.converged:
+        per: dict[int, list] = {}
+        worst = 0.0
+        for f in tr.failures:
+            vals = _row_residuals(solver, f.attempt.rows, solver.x)
+            for r, v in zip(f.attempt.rows, vals):
+                worst = max(worst, v)
+                if v > CHECK_TOL:
+                    c = solver.rows.constraint[r]
+                    e = per.setdefault(id(c), [c, 0.0])
+                    e[1] = max(e[1], v)
+        res.unsatisfied = sorted(((c, v) for c, v in per.values()), key=lambda cv: -cv[1])
+        res.max_residual = worst
+        if diagnose and tr.failures:
+            from .diagnose import conflicts
+            for f in tr.failures:
+                res.conflicts += conflicts(solver, f.attempt.rows, f.attempt.cols, solver.x)
+    return res
 
 
-def solve(model: Model, max_iter: int = MAX_ITER) -> SolveResult:
-    x = model.xs()
-    free = np.asarray(model.free, dtype=bool)
-    rows = equations(model, x)
-    scale = np.array([FRAME_SCALE if lab.endswith((".frame.x", ".frame.y")) else 1.0
-                      for lab in model.param_label])
-    active = [not r.ineq or evaluate(r.expr, x) < -TOL for r in rows]
-    total_it = 0
-    res = None
-    rounds = 0
-    for rounds in range(1, MAX_ROUNDS + 1):
-        sel = [i for i, r in enumerate(rows) if active[i]]
-        exprs = [prune(rows[i].expr, x) if has_branches(rows[i].expr) else rows[i].expr
-                 for i in sel]
-        system = build_system(exprs, free, x, scale)
-        res = newton(system, x, max_iter=max_iter)
-        total_it += res.iterations
-        x = res.x
-        changed = False
-        for i, r in enumerate(rows):
-            if r.ineq and not active[i] and evaluate(r.expr, x) < -1e-9:
-                active[i] = True
-                changed = True
-        bad_branch = any(active[i] and has_branches(r.expr) and row_residual(r, x) > CHECK_TOL
-                         for i, r in enumerate(rows))
-        if not changed and not bad_branch:
-            break
-        if not res.converged and not changed:
-            break
-    model.x = list(map(float, x))
-    per: dict[int, tuple[Constraint, float]] = {}
-    worst = 0.0
-    for r in rows:
-        v = row_residual(r, x)
-        worst = max(worst, v)
-        if v > CHECK_TOL:
-            prev = per.get(id(r.constraint))
-            if prev is None or prev[1] < v:
-                per[id(r.constraint)] = (r.constraint, v)
-    unsat = sorted(per.values(), key=lambda cv: -cv[1])
-    return SolveResult(not unsat, total_it, rounds, unsat, worst,
-                       int(free.sum()), len(rows))
+def _row_residuals(solver: Solver, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Residual of each row as the user sees it: |F| for equations, the violation
+    max(0, -g) for an inequality (reported on its LINK row; its SIGN row reports 0)."""
+    if not len(rows):
+        return np.zeros(0)
+    F = solver.tape(rows).evaluate(x)
+    kind = solver.kind[rows]
+    out = np.abs(F)
+    link = kind == LINK
+    if link.any():
+        g = F[link] + x[solver.slack[rows[link]]]
+        out[link] = np.maximum(0.0, -g)
+    out[kind == SIGN] = 0.0
+    return out
 
 
 def constraint_residuals(model: Model) -> list[tuple[Constraint, float]]:
-    """Largest residual of each constraint at the model's current values."""
+    """Largest residual of each constraint at the model's current values (true min/max)."""
     x = model.xs()
+    rows = build_rows(model, x)
+    xe = np.concatenate([x, np.zeros(rows.n_params - len(x))])
+    F = Tape(rows.exprs, rows.n_params).evaluate(xe) if rows.exprs else np.zeros(0)
     out: dict[int, list] = {}
-    for r in equations(model, x):
-        v = row_residual(r, x)
-        e = out.setdefault(id(r.constraint), [r.constraint, 0.0])
+    for r, c in enumerate(rows.constraint):
+        k = rows.kind[r]
+        v = max(0.0, -F[r]) if k == LINK else 0.0 if k == SIGN else abs(F[r])
+        e = out.setdefault(id(c), [c, 0.0])
         e[1] = max(e[1], v)
     return [(c, v) for c, v in out.values()]
+
+
+__all__ = ["SolveResult", "Solver", "solve", "run", "constraint_residuals", "ITER_BUDGET"]

@@ -1,0 +1,221 @@
+"""Why a solve failed, and what is still free: conflict sets, redundancy, degrees of freedom.
+
+All three read the Jacobian ``J`` (rows: residuals, columns: unknowns) at a point:
+
+* **Conflicts.**  Rows are taken in a fixed order (constructor-held dimensions first, then the
+  user's constraints in source order) and added to a basis one by one (a rank-revealing
+  Gram-Schmidt, the greedy form of a column-pivoted QR of ``J^T``).  A row that adds no rank is a
+  combination of earlier rows; the least-squares coefficients of that combination name the
+  rows it depends on.  If any row of that dependent set is unsatisfied, the set is a *conflict*
+  (an over-constrained, inconsistent system): those constraints cannot all hold, and no smaller
+  subset of the basis explains the dependency.  If all are satisfied, the later row is merely
+  *redundant* (consistent, a warning).
+* **Degrees of freedom.**  For each structure, its own unknowns plus its children's frames,
+  against its own constraints: ``dof = unknowns - rank(J)``; a parameter whose column has a
+  component in the null space of ``J`` is not determined, and its geometry (or child) *floats*.
+
+Dense linear algebra: used for one structure's system, or for the connected component of a
+failed system that holds the unsatisfied rows (capped at :data:`MAX_DENSE` rows).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
+
+from ..model import Constraint
+from .system import LINK, SIGN
+
+DEP_TOL = 1e-7
+MAX_DENSE = 3000
+
+
+@dataclass
+class Conflict:
+    """Constraints that cannot all hold together: ``[(Constraint, residual)]``."""
+
+    items: list = field(default_factory=list)
+
+    @property
+    def constraints(self) -> list[Constraint]:
+        return [c for c, _ in self.items]
+
+
+@dataclass
+class Redundant:
+    """``constraint`` is implied by ``by`` (consistent: a warning, not an error)."""
+
+    constraint: Constraint
+    by: list
+
+
+def _order_key(c: Constraint, r: int):
+    sp_ = c.span
+    pos = (sp_.line, sp_.col) if sp_ is not None else (0, 0)
+    return (0 if c.implicit else 1, pos, r)
+
+
+def dependencies(J: np.ndarray, order: list[int]):
+    """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
+
+    Yields ``(row, support)`` for each row that is a combination of earlier independent rows,
+    ``support`` being those rows (their coefficient is not negligible)."""
+    basis: list[np.ndarray] = []       # orthonormal vectors
+    indep: list[int] = []
+    for r in order:
+        v = J[r].astype(float)
+        nv = float(np.linalg.norm(v))
+        if nv == 0.0:
+            continue
+        w = v.copy()
+        for _ in range(2):              # Gram-Schmidt, twice for stability
+            for q in basis:
+                w -= (q @ w) * q
+        nw = float(np.linalg.norm(w))
+        if nw > DEP_TOL * nv:
+            basis.append(w / nw)
+            indep.append(r)
+            continue
+        B = J[indep]
+        c, *_ = np.linalg.lstsq(B.T, v, rcond=None)
+        big = np.abs(c) > 1e-6 * max(1.0, float(np.max(np.abs(c))))
+        yield r, [indep[i] for i in np.flatnonzero(big)]
+
+
+def _component_rows(J: sp.csr_matrix, seeds: np.ndarray) -> np.ndarray:
+    """Rows connected (through shared unknowns) to the rows ``seeds``."""
+    m, n = J.shape
+    B = sp.bmat([[None, J], [J.T, None]]).tocsr()
+    _, lab = connected_components(B, directed=False)
+    keep = np.isin(lab[:m], np.unique(lab[seeds]))
+    return np.flatnonzero(keep)
+
+
+def _user_residuals(solver, rows: np.ndarray, F: np.ndarray, x: np.ndarray) -> np.ndarray:
+    kind = solver.kind[rows]
+    out = np.abs(F)
+    link = kind == LINK
+    if link.any():
+        out[link] = np.maximum(0.0, -(F[link] + x[solver.slack[rows[link]]]))
+    out[kind == SIGN] = 0.0
+    return out
+
+
+def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
+              tol: float = 1e-6) -> list[Conflict]:
+    """The conflicting constraint sets of the system ``rows`` x ``cols`` at ``x``."""
+    t = solver.tape(rows)
+    F = t.evaluate(x)
+    user = _user_residuals(solver, rows, F, x)
+    bad = np.abs(F) > tol
+    if not bad.any():
+        return []
+    J = t.jacobian(x, cols)
+    local = _component_rows(J, np.flatnonzero(bad))
+    if len(local) > MAX_DENSE:
+        return []
+    Jd = J[local].toarray()
+    cons = [solver.rows.constraint[r] for r in rows[local]]
+    order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
+    out: list[Conflict] = []
+    seen: set = set()
+    for r, support in dependencies(Jd, order):
+        members = [r] + support
+        if not any(bad[local[i]] for i in members):
+            continue
+        per: dict[int, list] = {}
+        for i in members:
+            c = cons[i]
+            e = per.setdefault(id(c), [c, 0.0])
+            e[1] = max(e[1], float(user[local[i]]))
+        key = frozenset(per)
+        if key in seen or len(per) < 2:
+            continue
+        seen.add(key)
+        items = sorted(per.values(), key=lambda cv: _order_key(cv[0], 0))
+        out.append(Conflict([(c, v) for c, v in items]))
+    # the smallest sets first
+    out.sort(key=lambda k: len(k.items))
+    return out
+
+
+@dataclass
+class StructureDof:
+    """Remaining freedom of one structure's own sketch (its unknowns and children's frames)."""
+
+    structure: object
+    unknowns: int
+    rank: int
+    floating: list = field(default_factory=list)     # labels of undetermined entities
+
+    @property
+    def dof(self) -> int:
+        return self.unknowns - self.rank
+
+
+def degrees_of_freedom(solver) -> tuple[list[StructureDof], list[Redundant]]:
+    """Per-structure degrees of freedom and floating entities, and redundant constraints.
+
+    Evaluated at the solver's current point (call after solving)."""
+    model = solver.model
+    x = solver.x
+    out, redundant = [], []
+    label_of = {}
+    for g in model.all_geometry():
+        for p in g.points.values():
+            label_of[p.ix] = label_of[p.iy] = g.label
+        for s in g.scalars.values():
+            label_of[s.index] = g.label
+    for s in model.structures:
+        params = list(solver.own.get(id(s), ()))
+        for c in s.children.values():
+            params += [i for i in solver.frame.get(id(c), ())]
+            for i in solver.frame.get(id(c), ()):
+                label_of[i] = f"{c.path} (position)"
+        rows = solver.rows_of([s])
+        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
+        cols = np.unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        n_unknowns = len(params)
+        if not len(cols):
+            out.append(StructureDof(s, 0, 0))
+            continue
+        if not len(rows):
+            floating = sorted({label_of.get(i, model.param_label[i]) for i in params})
+            out.append(StructureDof(s, n_unknowns, 0, floating))
+            continue
+        t = solver.tape(rows)
+        J = t.jacobian(x, cols).toarray()
+        if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
+            out.append(StructureDof(s, n_unknowns, -1))
+            continue
+        sv = np.linalg.svd(J, compute_uv=False) if J.size else np.zeros(0)
+        tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
+        rank = int(np.sum(sv > tolr))
+        # slack columns each come with a LINK row of full rank: they neither add nor remove
+        n_slack = len(cols) - n_unknowns
+        floating = []
+        if len(cols) > rank:
+            _, S, Vt = np.linalg.svd(J, full_matrices=True)
+            null = Vt[rank:]
+            moving = np.linalg.norm(null, axis=0) > 1e-6
+            pos = {int(c): k for k, c in enumerate(cols)}
+            floating = sorted({label_of.get(i, model.param_label[i])
+                               for i in params if moving[pos[i]]})
+        out.append(StructureDof(s, n_unknowns, rank - n_slack, floating))
+        cons = [solver.rows.constraint[r] for r in rows]
+        order = sorted(range(len(rows)), key=lambda i: _order_key(cons[i], int(rows[i])))
+        seen = set()
+        for r, support in dependencies(J, order):
+            c = cons[r]
+            if c.implicit or id(c) in seen:
+                continue
+            by = []
+            for i in support:
+                if cons[i] is not c and cons[i] not in by:
+                    by.append(cons[i])
+            if by:
+                seen.add(id(c))
+                redundant.append(Redundant(c, by))
+    return out, redundant

@@ -1,0 +1,270 @@
+"""The hierarchical solve: post-order over the structure tree with iterative deepening.
+
+Paper, appendix "Solver Details", *Iterative Deepening Recursive Solve*.  Structures are solved
+children first.  At a structure ``S`` only ``S``'s own geometry and parameters are unknown and
+only ``S``'s own constraints are solved; everything deeper is held.  When that fails:
+
+* stage 1 (translation deepening), ``d = 1 .. depth``: the translation frames of descendants
+  down to relative depth ``d`` become unknowns too, and the constraints of their parents (the
+  structures at depth ``< d``), which a move could break, are solved again;
+* stage 2 (geometric deepening), ``d = 1 .. depth``: all frames stay free and all parameters of
+  the structures down to depth ``d`` become unknowns, with the constraints at those levels.
+
+The solve of ``S`` fails only when stage 2 has reached the bottom of its subtree (then the
+subtree was solved flat and the system is inconsistent or intractable).  Frames are cheaper to
+move than geometry (column scaling), so a solved substructure moves rigidly before it deforms.
+
+Every attempt solves min/max with frozen branches and re-checks (*Iterated Newton solve for
+branching expressions*): solve with the branches active at the start, evaluate the true min/max
+at the result, and repeat from there with the new branches until they agree.
+
+A :class:`Solver` compiles each row set once (:class:`~.tape.Tape`), so re-solving after an edit
+of a held value (:meth:`Solver.set_value`) only reruns Newton.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..model import Model, Structure
+from .newton import TOL, newton
+from .system import LINK, SIGN, Rows, build_rows
+from .tape import Tape
+
+MAX_ROUNDS = 12           # min/max branch re-checks per attempt
+MAX_ITER = 100            # Newton steps per attempt and round
+ITER_BUDGET = 20000       # Newton steps for a whole solve; beyond it the solve gives up (E0402)
+CHECK_TOL = 1e-6          # a row counts as satisfied below this residual (mm or rad)
+FRAME_SCALE = 100.0       # frames move 1e4x cheaper (in the squared step norm) than geometry
+SLACK_SCALE = 100.0       # an inactive inequality barely resists motion
+
+
+@dataclass
+class Attempt:
+    """One Newton solve of a row set for a set of unknowns."""
+
+    stage: str                 # "local", "translate", "deform" or "flat"
+    depth: int
+    rows: np.ndarray
+    cols: np.ndarray
+    ok: bool = False
+    iterations: int = 0
+    rounds: int = 0
+
+
+@dataclass
+class Failure:
+    structure: Structure
+    attempt: Attempt
+    x: np.ndarray
+
+
+@dataclass
+class Trace:
+    attempts: list = field(default_factory=list)
+    failures: list = field(default_factory=list)
+    iterations: int = 0
+    budget_exceeded: bool = False
+
+
+class Solver:
+    """Compiled solver state for one model.
+
+    ``x``: extended parameter vector (model parameters, then inequality slacks), mm / rad.
+    """
+
+    def __init__(self, model: Model):
+        self.model = model
+        x = model.xs()
+        self.rows: Rows = build_rows(model, x)
+        n = self.rows.n_params
+        self.n_model = len(x)
+        self.x = np.concatenate([x, np.zeros(n - len(x))])
+        self.free = np.concatenate([np.asarray(model.free, dtype=bool),
+                                    np.ones(n - len(x), dtype=bool)])
+        self.scale = np.ones(n)
+        self.scale[len(x):] = SLACK_SCALE
+        self.is_frame = np.zeros(n, dtype=bool)
+        for s in model.structures:
+            for i in (s.fx, s.fy):
+                if 0 <= i < len(x):
+                    self.is_frame[i] = True
+        self.scale[self.is_frame] = FRAME_SCALE
+        self.slack = np.asarray(self.rows.slack, dtype=np.int64)
+        self.kind = np.asarray(self.rows.kind, dtype=np.int64)
+        # parameters by owning structure: own (geometry, scalars) and frame
+        self.own: dict[int, list[int]] = {}
+        self.frame: dict[int, list[int]] = {}
+        root = model.root
+        for i, owner in enumerate(model.param_owner):
+            if not self.free[i]:
+                continue
+            owner = owner or root
+            if owner is None:
+                continue
+            (self.frame if self.is_frame[i] else self.own).setdefault(id(owner), []).append(i)
+        self._tapes: dict[bytes, Tape] = {}
+        self.failed: set[int] = set()          # ids of constraints given up on
+        self.trace = Trace()
+        self.compiles = 0
+        self.last_x = self.x
+
+    # ------------------------------------------------------------------ helpers
+    def tape(self, rows: np.ndarray) -> Tape:
+        key = rows.tobytes()
+        t = self._tapes.get(key)
+        if t is None:
+            t = Tape([self.rows.exprs[r] for r in rows], self.rows.n_params)
+            self._tapes[key] = t
+            self.compiles += 1
+        return t
+
+    def _init_slacks(self, t: Tape, rows: np.ndarray) -> None:
+        """Set each inequality's slack to max(g, 0) at the current point (g = LINK row + s)."""
+        pos = np.flatnonzero(self.kind[rows] == LINK)
+        if not len(pos):
+            return
+        s = self.slack[rows[pos]]
+        self.x[s] = 0.0
+        g = t.evaluate(self.x)[pos]
+        self.x[s] = np.maximum(g, 0.0)
+
+    def set_value(self, index: int, value: float) -> None:
+        """Edit a parameter (typically a held dimension) before re-solving."""
+        self.x[index] = float(value)
+
+    def rows_of(self, structs) -> np.ndarray:
+        out = []
+        for s in structs:
+            for r in self.rows.by_owner.get(id(s), ()):
+                if id(self.rows.constraint[r]) not in self.failed:
+                    out.append(r)
+        return np.asarray(sorted(out), dtype=np.int64)
+
+    def _cols(self, params: list[int], rows: np.ndarray) -> np.ndarray:
+        sl = self.slack[rows]
+        return np.unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+
+    # ------------------------------------------------------------------ attempts
+    def attempt(self, att: Attempt) -> bool:
+        """Run one attempt from the current point; on success keep its result."""
+        tr = self.trace
+        tr.attempts.append(att)
+        if not len(att.rows):
+            att.ok = True
+            return True
+        t = self.tape(att.rows)
+        self._init_slacks(t, att.rows)
+        x = self.x
+        if float(np.max(np.abs(t.evaluate(x)))) <= CHECK_TOL:
+            att.ok = True
+            return True
+        choices = t.choose(x)
+        scale = self.scale[att.cols]
+        sign_choice = t.root_choice[self.kind[att.rows] == SIGN]
+        released = False
+        for rnd in range(1, MAX_ROUNDS + 1):
+            left = ITER_BUDGET - tr.iterations
+            if left <= 0:
+                tr.budget_exceeded = True
+                break
+            res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL)
+            att.iterations += res.iterations
+            att.rounds = rnd
+            tr.iterations += res.iterations
+            x = res.x
+            F = t.evaluate(x)
+            if float(np.max(np.abs(F))) <= CHECK_TOL:
+                att.ok = True
+                break
+            new = t.choose(x)
+            if np.array_equal(new, choices):
+                # an inequality made active may be what blocks the solve: release them all
+                # once (the next round's check re-activates any that end up violated)
+                if released or not len(sign_choice) or new[sign_choice].all():
+                    break
+                released = True
+                new = new.copy()
+                new[sign_choice] = True
+            choices = new
+        self.last_x = x
+        if att.ok:
+            self.x = x
+        return att.ok
+
+    # ------------------------------------------------------------------ strategies
+    def solve_flat(self) -> bool:
+        """Everything at once: all unknowns, all rows (the baseline the paper improves on)."""
+        rows = np.arange(len(self.rows.exprs), dtype=np.int64)
+        cols = np.flatnonzero(self.free)
+        att = Attempt("flat", 0, rows, cols)
+        ok = self.attempt(att)
+        if not ok:
+            self.trace.failures.append(Failure(self.model.root, att, self.last_x))
+            self.x = self.last_x
+        return ok
+
+    def solve_hierarchical(self) -> bool:
+        ok = True
+        root = self.model.root
+        if root is None:
+            return True
+        for s in _post_order(root):
+            ok = self.solve_structure(s) and ok
+            if self.trace.budget_exceeded:
+                return False
+        return ok
+
+    def solve_structure(self, s: Structure) -> bool:
+        levels = _levels(s)
+        D = len(levels) - 1
+        local = self.rows_of([s])
+        if not len(local):
+            return True
+        own = lambda structs: [i for t in structs for i in self.own.get(id(t), ())]
+        frames = lambda structs: [i for t in structs for i in self.frame.get(id(t), ())]
+        # stage 0: only this structure's own unknowns
+        if self.attempt(Attempt("local", 0, local, self._cols(own([s]), local))):
+            return True
+        upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
+        # stage 1: translate descendants, one level deeper at a time
+        for d in range(1, D + 1):
+            rows = self.rows_of(upto(d - 1))
+            params = own([s]) + frames([t for lv in levels[1:d + 1] for t in lv])
+            if self.attempt(Attempt("translate", d, rows, self._cols(params, rows))):
+                return True
+        # stage 2: deform descendants, one level deeper at a time
+        all_frames = frames([t for lv in levels[1:] for t in lv])
+        last = None
+        for d in range(1, D + 1):
+            rows = self.rows_of(upto(max(d, D - 1)))
+            params = all_frames + own(upto(d))
+            last = Attempt("deform", d, rows, self._cols(params, rows))
+            if self.attempt(last):
+                return True
+        if last is None:
+            last = self.trace.attempts[-1]
+        self.trace.failures.append(Failure(s, last, self.last_x))
+        self.x = self.last_x
+        # do not retry these constraints at every ancestor
+        F = self.tape(last.rows).evaluate(self.x)
+        for r, v in zip(last.rows, F):
+            if abs(v) > CHECK_TOL:
+                self.failed.add(id(self.rows.constraint[r]))
+        return False
+
+
+def _post_order(s: Structure):
+    for c in s.children.values():
+        yield from _post_order(c)
+    yield s
+
+
+def _levels(s: Structure) -> list[list[Structure]]:
+    out = [[s]]
+    while True:
+        nxt = [c for t in out[-1] for c in t.children.values()]
+        if not nxt:
+            return out
+        out.append(nxt)
