@@ -36,6 +36,9 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    c.add_argument("--dof", action="store_true",
+                   help="report degrees of freedom per structure, floating entities and "
+                        "redundant constraints")
     e = sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
     return p
@@ -87,16 +90,37 @@ def cmd_check(args) -> int:
         return 1
     res = compile_source(src, args.file, _overrides(args.set))
     extra = {}
+    dofs = None
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
+        if args.dof and res.ok:
+            from .pipeline import report_redundancies
+            from .solver.diagnose import degrees_of_freedom
+            report_redundancies(res.sink, res.solve)
+            dofs = degrees_of_freedom(res.solve.solver)
+            extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
+                             "dof": d.dof, "floating": d.floating} for d in dofs]
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
         print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
               f"{s.n_equations} equations, solved in {s.iterations} Newton steps)")
+        if dofs is not None:
+            _print_dof(dofs)
     return 0 if res.ok else 1
+
+
+def _print_dof(dofs) -> None:
+    """One line per structure: its own unknowns (geometry and children's positions), the
+    degrees of freedom its constraints leave, and what still floats."""
+    width = max(len(d.structure.path) for d in dofs)
+    print(f"{'structure':{width}}  unknowns  dof  floating")
+    for d in dofs:
+        fl = ", ".join(d.floating[:6]) + (f", ... ({len(d.floating)})" if len(d.floating) > 6
+                                           else "")
+        print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
 
 
 def cmd_render(args) -> int:

@@ -152,12 +152,37 @@ instance to other parts with constraints in the parent structure.
     "E0401": ("constraints cannot be satisfied", """
 After solving, some constraints still do not hold: they contradict each other or a dimension
 held by a constructor (width, radius, ...). The message lists them with their residuals (how far
-off they are, in mm or radians). Remove or change the one that does not express the intent.
+off they are, in mm or radians). When the solver can find the smallest set of constraints that
+contradict each other (a rank-revealing factorization of the Jacobian), the error names exactly
+that set, one label per member, constructor-held dimensions included. Change one member of the
+set so that they agree; the others can stay.
 
     solid s {
         c = Circle(center=(0, 0), radius=5)
         Radius(c, 7)      # contradicts radius=5 given to the constructor
     }
+"""),
+    "E0402": ("solver iteration budget exhausted", """
+The solver stops after a fixed number of Newton steps for the whole model (20000) instead of
+running on: this happens when the constraints are far from satisfiable from the starting
+positions. Give starting positions closer to the intended shape and check the constraints named
+by other errors.
+"""),
+    "W0401": ("redundant constraint", """
+The constraint holds already because other constraints (or a constructor's held dimension) imply
+it: it adds no information. It is harmless, but if a value in it changes later the model becomes
+over-constrained. Reported by `aidl check --dof`.
+
+    solid s {
+        r = Rectangle(center=(0, 0), width=30, height=20)
+        Horizontal(r.top)     # a Rectangle's top is already horizontal
+    }
+"""),
+    "W0403": ("constraint ended on another branch", """
+Convention-dependent constraints (Angle sense, Tangent side, point-line Distance side) pick the
+branch nearest to satisfied at the starting geometry. This warning says the solve ended on the
+other branch (for Angle: a line now points the opposite way), which usually means the
+starting positions were far from the intended shape.
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0402": ("open outline", """

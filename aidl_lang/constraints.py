@@ -236,7 +236,10 @@ def angle(ctx, a, b, angle, **_):
     phi = math.atan2(_val(ctx, cr), _val(ctx, dt))
     # lines are undirected: sin(phi - theta) == 0; pick the sense (theta or -theta) nearest
     best = min((th, -th), key=lambda t: abs(math.sin(phi - t)))
-    return [Equation(cr * math.cos(best) - dt * math.sin(best))]
+    # cos(phi - best) > 0: line b points the way it did at the start (not reversed)
+    along = cr * math.sin(best) + dt * math.cos(best)
+    sign = 1.0 if _val(ctx, along) >= 0 else -1.0
+    return [Equation(cr * math.cos(best) - dt * math.sin(best), branch=along * sign)]
 
 
 def tangent(ctx, a, b, **_):

@@ -155,6 +155,9 @@ class Equation:
 
     expr: Expr
     ineq: bool = False
+    # convention-dependent constraints: an expression that is > 0 on the branch chosen at the
+    # start; the solve warns (W0403) when it ends <= 0 (the part flipped to another branch)
+    branch: Expr | None = None
 
 
 @dataclass(eq=False)

@@ -53,11 +53,84 @@ def _compile(sink, source, path, overrides, do_solve) -> Compiled:
     result = solve(model)
     if not result.converged:
         report_failure(sink, result)
+    else:
+        check_branches(sink, model)
     return Compiled(sink, model, result)
 
 
+def check_branches(sink: DiagnosticSink, model: Model) -> None:
+    """W0403 for a convention-dependent constraint that ended on another branch than the one
+    chosen at the start (paper, appendix "Solver Details", *Deferred expressions*)."""
+    from .expr import evaluate
+    x = model.xs()
+    for c in model.constraints:
+        for eq in c.equations:
+            if eq.branch is not None and evaluate(eq.branch, x) < -1e-9:
+                sink.warning("W0403", f"`{c.describe()}` ended on another branch than it started "
+                             "on: a line now points the opposite way", c.span,
+                             hint="give starting positions closer to the intended shape, so "
+                                  "the nearest branch is the one you mean")
+                break
+
+
+def report_redundancies(sink: DiagnosticSink, result: SolveResult) -> None:
+    """W0401 for each user constraint implied by others (``aidl check --dof``)."""
+    from .solver.diagnose import redundancies
+    for red in redundancies(result.solver):
+        c = red.constraint
+        by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
+        labels = [Label(b.span, "implied by this", primary=False)
+                  for b in red.by[:4] if b.span is not None]
+        what = "partly redundant: part of it" if red.partly else "redundant: it"
+        sink.add(Diagnostic("W0401", f"`{c.describe()}` is {what} already follows from "
+                            f"{by}", c.span, "warning",
+                            hint="harmless now, but if one of these values changes the model "
+                                 "becomes over-constrained; drop one of them only if it repeats "
+                                 "the same intent", labels=labels))
+
+
+def _where(c) -> str:
+    line = f"line {c.span.line}" if c.span is not None else "no line"
+    what = f"held by a constructor ({line})" if c.implicit else line
+    return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
+
+
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
+    """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
+    the iteration budget ran out."""
+    if result.budget_exceeded:
+        sink.add(Diagnostic(
+            "E0402", f"the solver gave up after {result.iterations} Newton steps (its budget)",
+            None, "error",
+            hint="the constraints are probably far from satisfiable from the starting "
+                 "positions: give starting positions closer to the intended shape, or check "
+                 "the constraints named by other errors"))
+    shown = 0
+    for k in result.conflicts[:3]:
+        items = k.items
+        # primary: the last-written user constraint of the set
+        user = [(c, r) for c, r in items if not c.implicit and c.span is not None] or items
+        first, r0 = user[-1]
+        labels = [Label(c.span, f"conflicts with this: {_where(c)}"
+                        + (f", residual {r:.3g}" if r > 1e-6 else ""), primary=False)
+                  for c, r in items if c is not first and c.span is not None]
+        worst = max(r for _, r in items)
+        names = "; ".join(_where(c) for c, _ in items)
+        sink.add(Diagnostic(
+            "E0401",
+            f"these {len(items)} constraints conflict in `{first.owner.path}`: they cannot "
+            f"all hold (largest residual {worst:.3g})",
+            first.span, "error",
+            hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
+                  "(a different value, or a constraint that says what you mean); keep the "
+                  "others"),
+            labels=labels))
+        shown += 1
+    if shown:
+        return
     items = result.unsatisfied
+    if not items:
+        return
     explicit = [(c, r) for c, r in items if not c.implicit] or items
     first, r0 = explicit[0]
     labels = []
@@ -73,5 +146,6 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
         first.span, "error",
         hint=("these constraints conflict with each other or with the dimensions held by "
               f"constructors: {names}. Check that no two of them demand different values "
-              "for the same thing; remove or relax the one that does not express your intent"),
+              "for the same thing, and that the starting positions are near the intended "
+              "shape"),
         labels=labels))

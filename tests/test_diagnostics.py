@@ -547,3 +547,21 @@ def test_every_producible_code_has_a_test():
     text = pathlib.Path(__file__).read_text()
     missing = [code for code in CODES if f'"{code}"' not in text]
     assert missing == []
+
+
+def test_solver_codes_E0402_W0401_W0403(tmp_path, capsys, monkeypatch):
+    """Budget overrun, redundancy (with --dof) and a flipped branch, through the CLI."""
+    from aidl_lang.solver import hierarchy
+    f = tmp_path / "w.aidl"
+    f.write_text("solid s {\n    l1 = Line((0, 0), (10, 0))\n    l2 = Line((10, 0), (18, 5))\n"
+                 "    Fixed(l1)\n    Fixed(l2.start)\n    Angle(l1, l2, 30)\n"
+                 "    l2.end.x == l2.start.x - 8.660254037844386\n    Horizontal(l1)\n}\n")
+    rc, doc = _cli_json(capsys, "check", str(f), "--json", "--dof")
+    codes = [d["code"] for d in doc["diagnostics"]]
+    assert rc == 0 and "W0403" in codes and "W0401" in codes
+    monkeypatch.setattr(hierarchy, "ITER_BUDGET", 1)
+    g = tmp_path / "b.aidl"
+    g.write_text("solid s {\n    a = Point(0, 0)\n    b = Point(1, 9)\n    Fixed(a)\n"
+                 "    Distance(a, b, 50)\n    Angle(Line(a, b), Line((0, 0), (1, 0)), 10)\n}\n")
+    rc, doc = _cli_json(capsys, "check", str(g), "--json")
+    assert rc == 1 and [d["code"] for d in doc["diagnostics"]][0] == "E0402"

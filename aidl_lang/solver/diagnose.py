@@ -49,6 +49,7 @@ class Redundant:
 
     constraint: Constraint
     by: list
+    partly: bool = False         # only some of the constraint's equations are implied
 
 
 def _order_key(c: Constraint, r: int):
@@ -60,8 +61,9 @@ def _order_key(c: Constraint, r: int):
 def dependencies(J: np.ndarray, order: list[int]):
     """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
 
-    Yields ``(row, support)`` for each row that is a combination of earlier independent rows,
-    ``support`` being those rows (their coefficient is not negligible)."""
+    Yields ``(row, support, coef)`` for each row that is a combination of earlier independent
+    rows, ``support`` being those rows (their coefficient is not negligible) and ``coef`` their
+    coefficients."""
     basis: list[np.ndarray] = []       # orthonormal vectors
     indep: list[int] = []
     for r in order:
@@ -81,7 +83,7 @@ def dependencies(J: np.ndarray, order: list[int]):
         B = J[indep]
         c, *_ = np.linalg.lstsq(B.T, v, rcond=None)
         big = np.abs(c) > 1e-6 * max(1.0, float(np.max(np.abs(c))))
-        yield r, [indep[i] for i in np.flatnonzero(big)]
+        yield r, [indep[i] for i in np.flatnonzero(big)], c[big]
 
 
 def _component_rows(J: sp.csr_matrix, seeds: np.ndarray) -> np.ndarray:
@@ -121,9 +123,14 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
     order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
     out: list[Conflict] = []
     seen: set = set()
-    for r, support in dependencies(Jd, order):
+    Fl = F[local]
+    for r, support, coef in dependencies(Jd, order):
         members = [r] + support
-        if not any(bad[local[i]] for i in members):
+        # a dependency J_r = sum c_i J_i is consistent when the residuals obey it too
+        # (F_r = sum c_i F_i: the error is merely spread over the set); otherwise the rows
+        # demand different things: a conflict
+        gap = abs(Fl[r] - float(coef @ Fl[support])) if len(support) else abs(Fl[r])
+        if gap <= tol:
             continue
         per: dict[int, list] = {}
         for i in members:
@@ -155,13 +162,12 @@ class StructureDof:
         return self.unknowns - self.rank
 
 
-def degrees_of_freedom(solver) -> tuple[list[StructureDof], list[Redundant]]:
-    """Per-structure degrees of freedom and floating entities, and redundant constraints.
-
-    Evaluated at the solver's current point (call after solving)."""
+def degrees_of_freedom(solver) -> list[StructureDof]:
+    """Per-structure degrees of freedom and floating entities, at the solver's current point
+    (call after solving)."""
     model = solver.model
     x = solver.x
-    out, redundant = [], []
+    out = []
     label_of = {}
     for g in model.all_geometry():
         for p in g.points.values():
@@ -204,18 +210,54 @@ def degrees_of_freedom(solver) -> tuple[list[StructureDof], list[Redundant]]:
             floating = sorted({label_of.get(i, model.param_label[i])
                                for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, floating))
-        cons = [solver.rows.constraint[r] for r in rows]
-        order = sorted(range(len(rows)), key=lambda i: _order_key(cons[i], int(rows[i])))
-        seen = set()
-        for r, support in dependencies(J, order):
+    return out
+
+
+def redundancies(solver) -> list[Redundant]:
+    """User constraints implied by others (consistent), over the whole model's unknowns.
+
+    The flat system is split into connected components; each (up to :data:`MAX_DENSE` rows)
+    gets the greedy rank-revealing pass.  Only rows whose residuals also obey the dependency
+    count (otherwise it is a conflict, reported by the solve)."""
+    rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
+    rows = rows[solver.kind[rows] == 0]
+    if not len(rows):
+        return []
+    cols = np.flatnonzero(solver.free)
+    t = solver.tape(rows)
+    x = solver.x
+    J = t.jacobian(x, cols)
+    m = J.shape[0]
+    B = sp.bmat([[None, J], [J.T, None]]).tocsr()
+    _, lab = connected_components(B, directed=False)
+    out: list[Redundant] = []
+    seen: set = set()
+    for comp in np.unique(lab[:m]):
+        local = np.flatnonzero(lab[:m] == comp)
+        if len(local) < 2 or len(local) > MAX_DENSE:
+            continue
+        Jd = J[local].toarray()
+        cons = [solver.rows.constraint[r] for r in rows[local]]
+        order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
+        total: dict[int, int] = {}
+        for c in cons:
+            total[id(c)] = total.get(id(c), 0) + 1
+        found: dict[int, Redundant] = {}
+        count: dict[int, int] = {}
+        for r, support, _coef in dependencies(Jd, order):
             c = cons[r]
             if c.implicit or id(c) in seen:
                 continue
-            by = []
+            by = found[id(c)].by if id(c) in found else []
             for i in support:
                 if cons[i] is not c and cons[i] not in by:
                     by.append(cons[i])
             if by:
-                seen.add(id(c))
-                redundant.append(Redundant(c, by))
-    return out, redundant
+                count[id(c)] = count.get(id(c), 0) + 1
+                if id(c) not in found:
+                    found[id(c)] = Redundant(c, by)
+                    out.append(found[id(c)])
+        for k, red in found.items():
+            red.partly = count[k] < total[k]
+            seen.add(k)
+    return out

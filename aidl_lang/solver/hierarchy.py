@@ -30,6 +30,7 @@ import numpy as np
 from ..model import Model, Structure
 from .newton import TOL, newton
 from .system import LINK, SIGN, Rows, build_rows
+from .reduce import reduce
 from .tape import Tape
 
 MAX_ROUNDS = 12           # min/max branch re-checks per attempt
@@ -109,6 +110,7 @@ class Solver:
         self.trace = Trace()
         self.compiles = 0
         self.last_x = self.x
+        self.use_reduction = True
 
     # ------------------------------------------------------------------ helpers
     def tape(self, rows: np.ndarray) -> Tape:
@@ -169,7 +171,9 @@ class Solver:
             if left <= 0:
                 tr.budget_exceeded = True
                 break
-            res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL)
+            red = reduce(t, x, att.cols, scale) if self.use_reduction else None
+            res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL,
+                         reduction=red)
             att.iterations += res.iterations
             att.rounds = rnd
             tr.iterations += res.iterations
@@ -177,6 +181,9 @@ class Solver:
             F = t.evaluate(x)
             if float(np.max(np.abs(F))) <= CHECK_TOL:
                 att.ok = True
+                break
+            if tr.iterations >= ITER_BUDGET:
+                tr.budget_exceeded = True
                 break
             new = t.choose(x)
             if np.array_equal(new, choices):
@@ -230,6 +237,8 @@ class Solver:
         upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
         # stage 1: translate descendants, one level deeper at a time
         for d in range(1, D + 1):
+            if self.trace.budget_exceeded:
+                break
             rows = self.rows_of(upto(d - 1))
             params = own([s]) + frames([t for lv in levels[1:d + 1] for t in lv])
             if self.attempt(Attempt("translate", d, rows, self._cols(params, rows))):
@@ -238,6 +247,8 @@ class Solver:
         all_frames = frames([t for lv in levels[1:] for t in lv])
         last = None
         for d in range(1, D + 1):
+            if self.trace.budget_exceeded:
+                break
             rows = self.rows_of(upto(max(d, D - 1)))
             params = all_frames + own(upto(d))
             last = Attempt("deform", d, rows, self._cols(params, rows))

@@ -50,38 +50,61 @@ def _solve(Js: sp.csr_matrix, F: np.ndarray, mu: float) -> np.ndarray:
 
 def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | None = None,
            choices: np.ndarray | None = None, max_iter: int = 100,
-           tol: float = TOL) -> NewtonResult:
+           tol: float = TOL, reduction=None) -> NewtonResult:
     """Solve ``tape``'s rows for ``x[cols]`` from ``x0`` (not modified).
 
-    ``scale`` (len(cols)) weights the unknowns (default 1); ``choices`` freezes min/max branches.
-    Stops at ``max |F| <= tol``, after ``max_iter`` steps, or when no damping reduces ``|F|``.
+    ``scale`` (len(cols)) weights the unknowns (default 1); ``choices`` freezes min/max branches;
+    ``reduction`` (:class:`~.reduce.Reduction`) substitutes ``x[cols] = S z + t`` and drops the
+    rows it solved.  Stops at ``max |F| <= tol`` (rows kept), after ``max_iter`` steps, or when
+    no damping reduces ``|F|``.
     """
     x = x0.copy()
-    F, v = tape.evaluate(x, choices, nodes=True)
+    if reduction is not None:
+        red = reduction
+        x[cols] = red.S @ red.z0 + red.t
+        keep = red.keep
+        d = red.scale
+        u = red.z0.copy()
+    else:
+        keep = None
+        d = np.ones(len(cols)) if scale is None else scale
+        u = x[cols].copy()
+
+    def place(u):
+        xn = x.copy()
+        xn[cols] = (red.S @ u + red.t) if reduction is not None else u
+        return xn
+
+    def residual(xx):
+        F, v = tape.evaluate(xx, choices, nodes=True)
+        return (F if keep is None else F[keep]), v
+
+    F, v = residual(x)
     res = float(np.max(np.abs(F))) if len(F) else 0.0
-    if res <= tol or not len(cols) or not np.isfinite(res):
+    if res <= tol or not len(u) or not np.isfinite(res):
         return NewtonResult(x, res <= tol, 0, res)
-    d = np.ones(len(cols)) if scale is None else scale
     norm = float(np.linalg.norm(F))
     mu = 1e-12
     it = 0
     while it < max_iter:
         it += 1
         J = tape.jacobian(x, cols, choices, v)
+        if reduction is not None:
+            J = (J[keep] @ red.S).tocsr()
         Js = sp.csr_matrix((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
         for _ in range(14):
             try:
-                dx = d * _solve(Js, F, mu)
+                du = d * _solve(Js, F, mu)
             except (RuntimeError, np.linalg.LinAlgError):
                 mu = max(mu * 100, 1e-8)
                 continue
-            xn = x.copy()
-            xn[cols] += dx
-            Fn, vn = tape.evaluate(xn, choices, nodes=True)
+            un = u + du
+            xn = place(un)
+            Fn, vn = residual(xn)
             nn = float(np.linalg.norm(Fn))
             if np.isfinite(nn) and nn < norm:
-                x, F, v, norm = xn, Fn, vn, nn
+                u, x, F, v, norm = un, xn, Fn, vn, nn
                 mu = max(mu / 10, 1e-12)
                 accepted = True
                 break

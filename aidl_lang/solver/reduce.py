@@ -1,0 +1,141 @@
+"""Remove trivial equations before Newton: fixed values and equal pairs (substitution).
+
+SolveSpace's ``System::SolveBySubstitution`` idea, for the affine rows of a tape:
+
+* a row with a single unknown (``Fixed``, a coordinate set to a value, a held dimension copied
+  onto a free one) fixes that unknown directly; repeated until no such row is left;
+* a row ``x_i - x_j + c == 0`` between two unknowns (``Horizontal``, ``Vertical``,
+  ``Coincident`` in one frame, ``HorizontalDistance``, ``Equal`` of two values) puts both in one
+  class of a weighted union-find: ``x_i = x_root + offset_i``.
+
+What remains is solved for one unknown per class: ``x[cols] = S z + t``.  A row that becomes
+constant (a cycle in the union-find, a second value for a fixed unknown) stays in the system, so
+a conflict is still seen, reported and diagnosed on the unreduced rows.  Scaling keeps the
+minimum-norm step meaningful: a class of ``k`` unknowns weighs like its members together.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from .tape import Tape
+
+
+@dataclass
+class Reduction:
+    """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve."""
+
+    S: sp.csr_matrix           # (len(cols), n_z)
+    t: np.ndarray              # (len(cols),)
+    keep: np.ndarray
+    z0: np.ndarray             # starting unknowns (class means)
+    scale: np.ndarray          # (n_z,)
+
+
+def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Reduction | None:
+    """The substitution for ``tape``'s rows over unknowns ``cols`` at ``x``; None if nothing
+    is trivial (solve the system as it is)."""
+    n = len(cols)
+    if not len(tape.aff_rows) or not n:
+        return None
+    colmap = -np.ones(tape.n_params, dtype=np.int64)
+    colmap[cols] = np.arange(n)
+    A = tape.A.tocoo()
+    free = colmap[A.col] >= 0
+    # constant part of each affine row: held parameters and b
+    const = tape.b.copy()
+    np.add.at(const, A.row[~free], A.data[~free] * x[A.col[~free]])
+    rr, cc, vv = A.row[free], colmap[A.col[free]], A.data[free]
+    nz = vv != 0.0
+    rr, cc, vv = rr[nz], cc[nz], vv[nz]
+    order = np.argsort(rr, kind="stable")
+    rr, cc, vv = rr[order], cc[order], vv[order]
+    counts = np.bincount(rr, minlength=len(tape.aff_rows))
+    starts = np.concatenate([[0], np.cumsum(counts)])
+    parent = list(range(n))
+    off = [0.0] * n
+    used = np.zeros(len(tape.aff_rows), dtype=bool)
+    ccl, vvl, stl, cst_l = cc.tolist(), vv.tolist(), starts.tolist(), const.tolist()
+
+    def find(i):
+        """Root of i and x_i - x_root, compressing the path."""
+        path = []
+        o = 0.0
+        while parent[i] != i:
+            path.append(i)
+            i = parent[i]
+        root = i
+        # second pass: point every node on the path at the root with its total offset
+        acc = 0.0
+        for k in reversed(path):
+            acc += off[k]
+            off[k] = acc
+            parent[k] = root
+        o = off[path[0]] if path else 0.0
+        return root, o
+
+    # pass 1: equal pairs (x_i - x_j + c == 0 with coefficients a, -a)
+    for r in np.flatnonzero(counts == 2).tolist():
+        s = stl[r]
+        i, j = ccl[s], ccl[s + 1]
+        a, b = vvl[s], vvl[s + 1]
+        if a != -b:
+            continue
+        ri, oi = find(i)
+        rj, oj = find(j)
+        if ri == rj:
+            continue                      # a cycle: keep the row (redundant or conflicting)
+        # a x_i - a x_j + c = 0  ->  x_ri + oi = x_rj + oj - c/a
+        parent[ri] = rj
+        off[ri] = oj - cst_l[r] / a - oi
+        used[r] = True
+    roots = np.empty(n, dtype=np.int64)
+    offs = np.empty(n)
+    for i in range(n):
+        roots[i], offs[i] = find(i)
+    # pass 2: single-unknown rows fix their class, repeated while new ones appear
+    fixed_root = {}
+    changed = True
+    while changed:
+        changed = False
+        for r in np.flatnonzero(~used):
+            s, e = starts[r], starts[r + 1]
+            live = [(roots[c], v, offs[c]) for c, v in zip(cc[s:e], vv[s:e])]
+            cst = const[r]
+            unk = {}
+            for root, v, o in live:
+                if root in fixed_root:
+                    cst += v * (fixed_root[root] + o)
+                else:
+                    unk[root] = unk.get(root, 0.0) + v
+                    cst += v * o
+            unk = {k: v for k, v in unk.items() if v != 0.0}
+            if len(unk) == 1:
+                (root, v), = unk.items()
+                fixed_root[root] = -cst / v
+                used[r] = True
+                changed = True
+    if not used.any():
+        return None
+    class_roots = np.unique(roots)
+    live_roots = np.asarray([r for r in class_roots if r not in fixed_root], dtype=np.int64)
+    zidx = -np.ones(n, dtype=np.int64)
+    zidx[live_roots] = np.arange(len(live_roots))
+    t = offs.copy()
+    for root, v in fixed_root.items():
+        t[roots == root] += v
+    zc = zidx[roots]
+    rows = np.flatnonzero(zc >= 0)
+    S = sp.csr_matrix((np.ones(len(rows)), (rows, zc[rows])), shape=(n, len(live_roots)))
+    # start each class at the mean of its members (least total movement), weights 1/d^2
+    xc = x[cols]
+    w = 1.0 / scale ** 2
+    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows],
+                      minlength=len(live_roots))
+    den = np.bincount(zc[rows], weights=w[rows], minlength=len(live_roots))
+    z0 = num / np.where(den > 0, den, 1.0)
+    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
+    keep = np.setdiff1d(np.arange(tape.n_rows), tape.aff_rows[used])
+    return Reduction(S, t, keep, z0, zscale)
