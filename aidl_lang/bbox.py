@@ -75,8 +75,21 @@ def exclusions(terms: list[BBTerm]) -> set:
     return out
 
 
-def side_expr(target, side: str, frame: Structure, x, exclude: set) -> Expr:
-    xs, ys = candidates(target, frame, x, exclude)
+def side_expr(target, side: str, frame: Structure, x, exclude: set,
+              cache: dict | None = None) -> Expr:
+    """``min``/``max`` over the target's extreme coordinates, in ``frame``.  ``cache`` (a dict
+    kept for one build of the rows) shares candidate lists and results between constraints."""
+    if cache is not None:
+        key = (id(target), side, id(frame), frozenset(map(id, exclude)))
+        hit = cache.get(key)
+        if hit is None:
+            hit = cache[key] = _side_expr(target, side, frame, x, exclude, cache)
+        return hit
+    return _side_expr(target, side, frame, x, exclude, None)
+
+
+def _side_expr(target, side, frame, x, exclude, cache) -> Expr:
+    xs, ys = candidates(target, frame, x, exclude, cache)
     if side in ("left", "right"):
         cands = xs
     else:
@@ -89,7 +102,14 @@ def side_expr(target, side: str, frame: Structure, x, exclude: set) -> Expr:
     return func("min" if side in ("left", "bottom") else "max", *cands)
 
 
-def candidates(target, frame: Structure, x, exclude: set) -> tuple[list, list]:
+def candidates(target, frame: Structure, x, exclude: set,
+               cache: dict | None = None) -> tuple[list, list]:
+    if cache is not None:
+        key = ("cand", id(target), id(frame), frozenset(map(id, exclude)))
+        hit = cache.get(key)
+        if hit is None:
+            hit = cache[key] = candidates(target, frame, x, exclude, None)
+        return hit
     xs: list = []
     ys: list = []
     if isinstance(target, Structure):

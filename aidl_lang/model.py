@@ -93,13 +93,13 @@ class Structure:
 
     def frame_offset(self, relative_to: "Structure | None") -> tuple[Expr, Expr]:
         """Translation from this structure's local frame to ``relative_to``'s local frame."""
-        ox, oy = Lin(), Lin()
+        tx, ty = {}, {}
         s = self
         while s is not None and s is not relative_to:
-            ox = ox + var(s.fx)
-            oy = oy + var(s.fy)
+            tx[s.fx] = tx.get(s.fx, 0.0) + 1.0
+            ty[s.fy] = ty.get(s.fy, 0.0) + 1.0
             s = s.parent
-        return ox, oy
+        return Lin(tx), Lin(ty)
 
     def __repr__(self):
         return f"<{self.kind} {self.path}>"
@@ -118,7 +118,9 @@ class Point:
 
     def in_frame(self, s: Structure | None) -> tuple[Expr, Expr]:
         ox, oy = self.owner.frame_offset(s)
-        return var(self.ix) + ox, var(self.iy) + oy
+        ox.terms[self.ix] = ox.terms.get(self.ix, 0.0) + 1.0
+        oy.terms[self.iy] = oy.terms.get(self.iy, 0.0) + 1.0
+        return ox, oy
 
 
 @dataclass(eq=False)

@@ -61,15 +61,15 @@ class Rows:
         self.add(c, func("min", mul(2.0, sv), 0.0), SIGN, s)
 
 
-def _bb_expand(e, x, excl, boxes: dict):
+def _bb_expand(e, x, excl, boxes: dict, cache: dict):
     """Expand BBTerms; record each (target, frame) box used, for non-inversion rows."""
     if isinstance(e, BBTerm):
         key = (id(e.target), id(e.frame))
         ent = boxes.setdefault(key, [e.target, e.frame, set()])
         ent[2].add("x" if e.side in ("left", "right") else "y")
-        return side_expr(e.target, e.side, e.frame, x, excl)
+        return side_expr(e.target, e.side, e.frame, x, excl, cache)
     if isinstance(e, Nl):
-        args = tuple(_bb_expand(a, x, excl, boxes) for a in e.args)
+        args = tuple(_bb_expand(a, x, excl, boxes, cache) for a in e.args)
         if e.op == "add":
             return add(*args)
         if e.op == "mul":
@@ -84,6 +84,7 @@ def _bb_expand(e, x, excl, boxes: dict):
 def build_rows(model: Model, x: np.ndarray) -> Rows:
     """The rows of every constraint of ``model`` at parameter values ``x`` (model part)."""
     rows = Rows(n_model=len(x), n_params=len(x))
+    cache: dict = {}
     for c in model.constraints:
         if c.deferred is not None:
             terms: list = []
@@ -92,13 +93,13 @@ def build_rows(model: Model, x: np.ndarray) -> Rows:
             excl = exclusions(terms)
             boxes: dict = {}
             for eq in c.deferred:
-                e = _bb_expand(eq.expr, x, excl, boxes)
+                e = _bb_expand(eq.expr, x, excl, boxes, cache)
                 if eq.ineq:
                     rows.add_inequality(c, e)
                 else:
                     rows.add(c, e)
             for target, frame, axes in boxes.values():
-                _non_inversion(rows, c, target, frame, axes, x, excl)
+                _non_inversion(rows, c, target, frame, axes, x, excl, cache)
         for eq in c.equations:
             if eq.ineq:
                 rows.add_inequality(c, eq.expr)
@@ -107,11 +108,11 @@ def build_rows(model: Model, x: np.ndarray) -> Rows:
     return rows
 
 
-def _non_inversion(rows: Rows, c, target, frame, axes, x, excl) -> None:
+def _non_inversion(rows: Rows, c, target, frame, axes, x, excl, cache) -> None:
     for axis in sorted(axes):
         lo, hi = ("left", "right") if axis == "x" else ("bottom", "top")
-        a = side_expr(target, lo, frame, x, excl)
-        b = side_expr(target, hi, frame, x, excl)
+        a = side_expr(target, lo, frame, x, excl, cache)
+        b = side_expr(target, hi, frame, x, excl, cache)
         if isinstance(a, Lin) and isinstance(b, Lin):
             continue            # a single point: width 0 by construction
         rows.add_inequality(c, add(b, mul(-1.0, a)))
