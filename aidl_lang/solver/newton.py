@@ -34,14 +34,17 @@ class NewtonResult:
     residual: float          # max |F| at x
 
 
+def _solve_dense(Jd: np.ndarray, F: np.ndarray, mu: float) -> np.ndarray:
+    M = Jd @ Jd.T
+    diag = np.einsum("ii->i", M)
+    diag += mu + (diag == 0.0)
+    return Jd.T @ np.linalg.solve(M, -F)
+
+
 def _solve(Js: sp.csr_matrix, F: np.ndarray, mu: float) -> np.ndarray:
     m = Js.shape[0]
     if m <= DENSE_MAX:
-        Jd = Js.toarray()
-        M = Jd @ Jd.T
-        diag = np.einsum("ii->i", M)
-        diag += mu + (diag == 0.0)
-        return Jd.T @ np.linalg.solve(M, -F)
+        return _solve_dense(Js.toarray(), F, mu)
     M = (Js @ Js.T).tocsc()
     dg = M.diagonal()
     M = M + sp.diags(mu + (dg == 0.0), format="csc")
@@ -86,16 +89,25 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     norm = float(np.linalg.norm(F))
     mu = 1e-12
     it = 0
+    small = len(F) <= DENSE_MAX and len(u) <= 4 * DENSE_MAX
+    if small and reduction is not None:
+        Sd = red.S.toarray()
     while it < max_iter:
         it += 1
-        J = tape.jacobian(x, cols, choices, v)
-        if reduction is not None:
-            J = (J[keep] @ red.S).tocsr()
-        Js = sp.csr_matrix((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
+        if small:                    # dense all the way: no sparse-matrix overhead
+            J = tape.jacobian(x, cols, choices, v, dense=True)
+            if reduction is not None:
+                J = J[keep] @ Sd
+            Js = J * d
+        else:
+            J = tape.jacobian(x, cols, choices, v)
+            if reduction is not None:
+                J = (J[keep] @ red.S).tocsr()
+            Js = sp.csr_matrix((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
         for _ in range(14):
             try:
-                du = d * _solve(Js, F, mu)
+                du = d * (_solve_dense(Js, F, mu) if small else _solve(Js, F, mu))
             except (RuntimeError, np.linalg.LinAlgError):
                 mu = max(mu * 100, 1e-8)
                 continue

@@ -42,12 +42,11 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
         return None
     colmap = -np.ones(tape.n_params, dtype=np.int64)
     colmap[cols] = np.arange(n)
-    A = tape.A.tocoo()
-    free = colmap[A.col] >= 0
+    free = colmap[tape.a_col] >= 0
     # constant part of each affine row: held parameters and b
     const = tape.b.copy()
-    np.add.at(const, A.row[~free], A.data[~free] * x[A.col[~free]])
-    rr, cc, vv = A.row[free], colmap[A.col[free]], A.data[free]
+    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * x[tape.a_col[~free]])
+    rr, cc, vv = tape.a_row[free], colmap[tape.a_col[free]], tape.a_val[free]
     nz = vv != 0.0
     rr, cc, vv = rr[nz], cc[nz], vv[nz]
     order = np.argsort(rr, kind="stable")

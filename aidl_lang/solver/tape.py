@@ -149,13 +149,14 @@ class Tape:
             nl_roots.append(memo[id(e)])
 
         self.aff_rows = np.asarray(arows, dtype=np.int64)
-        self.A = sp.csr_matrix((np.asarray(av, float), (np.asarray(ar, np.int64),
-                                                        np.asarray(ac, np.int64))),
-                               shape=(len(arows), n_params))
+        # sparse rows kept as COO arrays: products are np.bincount (no scipy overhead)
+        self.a_row = np.asarray(ar, dtype=np.int64)
+        self.a_col = np.asarray(ac, dtype=np.int64)
+        self.a_val = np.asarray(av, dtype=float)
         self.b = np.asarray(ab, dtype=float)
-        self.L = sp.csr_matrix((np.asarray(lv, float), (np.asarray(lr, np.int64),
-                                                        np.asarray(lc, np.int64))),
-                               shape=(len(lconst), n_params))
+        self.l_row = np.asarray(lr, dtype=np.int64)
+        self.l_col = np.asarray(lc, dtype=np.int64)
+        self.l_val = np.asarray(lv, dtype=float)
         self.lconst = np.asarray(lconst, dtype=float)
         self.leaf_node = np.asarray(leaf_node, dtype=np.int64)
         self.n_nodes = len(op)
@@ -197,7 +198,8 @@ class Tape:
     def _forward(self, x: np.ndarray, choices: np.ndarray | None):
         v = np.empty(self.n_nodes)
         if len(self.leaf_node):
-            v[self.leaf_node] = self.L @ x + self.lconst
+            v[self.leaf_node] = np.bincount(self.l_row, weights=self.l_val * x[self.l_col],
+                                            minlength=len(self.lconst)) + self.lconst
         for g in self.groups:
             p, q = v[g.a0], v[g.a1]
             o = g.op
@@ -251,7 +253,8 @@ class Tape:
         the true min/max."""
         F = np.empty(self.n_rows)
         if len(self.aff_rows):
-            F[self.aff_rows] = self.A @ x + self.b
+            F[self.aff_rows] = np.bincount(self.a_row, weights=self.a_val * x[self.a_col],
+                                           minlength=len(self.b)) + self.b
         v = self._forward(x, choices) if self.n_nodes else np.empty(0)
         if len(self.nl_rows):
             F[self.nl_rows] = v[self.nl_roots]
@@ -343,8 +346,9 @@ class Tape:
             self._patterns[key] = pat
         return pat
 
-    def jacobian(self, x: np.ndarray, cols: np.ndarray, choices=None, v=None) -> sp.csr_matrix:
-        """``dF/dx[cols]`` at ``x`` as CSR, shape (n_rows, len(cols))."""
+    def jacobian(self, x: np.ndarray, cols: np.ndarray, choices=None, v=None,
+                 dense: bool = False):
+        """``dF/dx[cols]`` at ``x``, shape (n_rows, len(cols)): CSR, or an ndarray if ``dense``."""
         pat = self.pattern(cols)
         if v is None:
             _, v = self.evaluate(x, choices, nodes=True)
@@ -353,17 +357,19 @@ class Tape:
             adj = self._adjoints(v, choices)
             w = np.concatenate([w, adj[self.leaf_node[pat.nl_leaf]] * pat.nl_vals])
         data = np.bincount(pat.inv, weights=w, minlength=pat.nnz) if len(w) else np.zeros(0)
+        if dense:
+            J = np.zeros((self.n_rows, len(cols)))
+            J[pat.urows, pat.indices] = data
+            return J
         return sp.csr_matrix((data, pat.indices, pat.indptr), shape=(self.n_rows, len(cols)))
 
     def variables(self) -> list[set]:
         """The parameter indices each row depends on."""
         out = [set() for _ in range(self.n_rows)]
-        A = self.A.tocoo()
-        for r, c in zip(self.aff_rows[A.row], A.col):
-            out[r].add(int(c))
-        L = self.L.tocoo()
-        rows = self.root_of[self.leaf_node[L.row]]
-        for r, c in zip(rows, L.col):
+        for r, c in zip(self.aff_rows[self.a_row], self.a_col):
+            out[int(r)].add(int(c))
+        rows = self.root_of[self.leaf_node[self.l_row]]
+        for r, c in zip(rows, self.l_col):
             out[int(r)].add(int(c))
         return out
 
@@ -375,19 +381,18 @@ class _Pattern:
         n = tape.n_params
         colmap = -np.ones(n, dtype=np.int64)
         colmap[cols] = np.arange(len(cols))
-        A = tape.A.tocoo()
-        keep = colmap[A.col] >= 0
-        a_rows = tape.aff_rows[A.row[keep]]
-        a_cols = colmap[A.col[keep]]
-        self.aff_vals = A.data[keep].astype(float)
-        L = tape.L.tocoo()
-        keep = colmap[L.col] >= 0
-        self.nl_leaf = L.row[keep].astype(np.int64)
-        self.nl_vals = L.data[keep].astype(float)
+        keep = colmap[tape.a_col] >= 0
+        a_rows = tape.aff_rows[tape.a_row[keep]]
+        a_cols = colmap[tape.a_col[keep]]
+        self.aff_vals = tape.a_val[keep]
+        keep = colmap[tape.l_col] >= 0
+        self.nl_leaf = tape.l_row[keep]
+        self.nl_vals = tape.l_val[keep]
+        l_cols = colmap[tape.l_col[keep]]
         n_rows = tape.root_of[tape.leaf_node[self.nl_leaf]] if len(self.nl_leaf) else \
             np.zeros(0, dtype=np.int64)
         rows = np.concatenate([a_rows, n_rows]).astype(np.int64)
-        cc = np.concatenate([a_cols, colmap[L.col[keep]]]).astype(np.int64)
+        cc = np.concatenate([a_cols, l_cols]).astype(np.int64)
         m = max(len(cols), 1)
         keys = rows * m + cc
         uniq, inv = np.unique(keys, return_inverse=True)
@@ -395,4 +400,5 @@ class _Pattern:
         self.nnz = len(uniq)
         self.indices = (uniq % m).astype(np.int32)
         urows = uniq // m
+        self.urows = urows
         self.indptr = np.searchsorted(urows, np.arange(tape.n_rows + 1)).astype(np.int32)
