@@ -23,7 +23,7 @@ from .expr import as_const, evaluate, func, lift, var
 from .model import Constraint, Equation, Model, Point, Scalar, Structure
 from .primitives import PrimitiveError, build, member as geom_member, member_names
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, canonical,
-                       choose_variant, lookup)
+                       canonical_args, choose_variant, lookup)
 from .values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                      Template, UnitError, dim_name, mul_dim, owners_of, type_name, unify_add)
 
@@ -612,6 +612,7 @@ class Interpreter:
         for k, (v, kw) in kwargs.items():
             bound[k] = v
             spans[k] = kw.value.span
+        bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
         conv = {}
         for a in variant:
             if a.name in bound:

@@ -21,6 +21,7 @@ class Arg:
     type: str
     default: object = REQUIRED
     doc: str = ""
+    kw_only: bool = False            # may only be given by keyword (e.g. ``construction=``)
 
     @property
     def required(self) -> bool:
@@ -40,7 +41,9 @@ class Entry:
         outs = []
         for v in vs:
             parts = []
-            for a in v:
+            for i, a in enumerate(v):
+                if a.kw_only and (i == 0 or not v[i - 1].kw_only):
+                    parts.append("*")
                 if a.required:
                     parts.append(f"{a.name}: {a.type}")
                 else:
@@ -51,7 +54,8 @@ class Entry:
         return "\n".join(outs)
 
 
-CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn")
+CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn",
+                   kw_only=True)
 
 POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
 LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
@@ -171,6 +175,8 @@ _DEFS = {
                  doc="The point lies on the (infinite) line."),
     "OnCircle": _c([A("point", "point"), A("circle", "circular")],
                    doc="The point lies on the circle or the arc's circle."),
+    "Collinear": _c([A("a", "geometry"), A("b", "geometry"), A("c", "point", None)],
+                    doc="Two lines lie on one infinite line, or three points lie on one line."),
     "Concentric": _c([A("a", "circular"), A("b", "circular")],
                      doc="Two circles/arcs share their center."),
     "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
@@ -185,6 +191,10 @@ _DEFS = {
                  doc="a touches b from the left: a.bb.right == b.bb.left - gap."),
     "RightOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
                   doc="a touches b from the right: a.bb.left == b.bb.right + gap."),
+    "Gap": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length"), A("axis", "string", "x")],
+              cat="structural",
+              doc="Empty space between a's and b's bounding boxes along axis \"x\" or \"y\", "
+                  "whichever side each is on."),
     "Inside": _c([A("a", "boxed"), A("b", "boxed"), A("margin", "length", 0.0)],
                  cat="structural", doc="a's bounding box lies within b's, at least margin in."),
     "CenterInside": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
@@ -211,16 +221,43 @@ _DEFS = {
 SYNONYMS: dict[str, str] = {
     "Orthogonal": "Perpendicular",
     "Coincide": "Coincident",
+    "Join": "Coincident",
     "Fix": "Fixed",
+    "Lock": "Fixed",
+    "Anchor": "Fixed",
+    "Same": "Equal",
+    "EqualLength": "Equal",
+    "EqualRadius": "Equal",
     "Centered": "CenterInside",
     "OnTopOf": "Above",
+    "Over": "Above",
     "Under": "Below",
+    "Underneath": "Below",
     "ToTheLeftOf": "LeftOf",
     "ToTheRightOf": "RightOf",
+    "Within": "Inside",
+    "Contains": "Inside",            # argument order swapped: see SWAPPED
+    "AtMidpoint": "Midpoint",
+    "Mirror": "Symmetric",
+    "MirrorSymmetric": "Symmetric",
+    "DistanceX": "HorizontalDistance",
+    "DistanceY": "VerticalDistance",
     "HorizontallyCentered": "AlignCenterX",
     "VerticallyCentered": "AlignCenterY",
     "PointOnLine": "OnLine",
     "OnArc": "OnCircle",
+}
+
+# synonyms whose arguments mean the canonical entry's arguments in another order:
+# synonym -> {argument name as written -> canonical argument name}.  ``Contains(a, b)`` is
+# ``Inside(b, a)``: positional and keyword arguments are both renamed.
+SWAPPED: dict[str, dict[str, str]] = {
+    "Contains": {"a": "b", "b": "a"},
+}
+
+# one-line docs of synonyms that do not simply mean the canonical entry
+SYNONYM_DOCS: dict[str, str] = {
+    "Contains": "a's bounding box contains b's: Contains(a, b) is Inside(b, a).",
 }
 
 # functions usable in expressions: name -> (min args, max args, doc)
@@ -266,6 +303,18 @@ def canonical(name: str) -> str:
     return SYNONYMS.get(name, name)
 
 
+def canonical_args(name: str, args: dict) -> dict:
+    """Bound arguments of a call of ``name`` renamed to the canonical entry's arguments.
+
+    Only synonyms listed in :data:`SWAPPED` rename anything (``Contains(a=X, b=Y)`` gives
+    ``{"a": Y, "b": X}`` for ``Inside``); for every other name ``args`` is returned as is.
+    """
+    ren = SWAPPED.get(name)
+    if not ren:
+        return args
+    return {ren.get(k, k): v for k, v in args.items()}
+
+
 def all_callable_names() -> list[str]:
     return list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS)
 
@@ -278,8 +327,9 @@ def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
     best, best_reason = None, None
     for v in entry.variants:
         names = [a.name for a in v]
-        if npos > len(v):
-            best_reason = best_reason or f"takes at most {len(v)} arguments, got {npos}"
+        npos_max = sum(not a.kw_only for a in v)
+        if npos > npos_max:
+            best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
             continue
         bound = set(names[:npos])
         bad = [k for k in kwnames if k not in names]
