@@ -62,7 +62,8 @@ LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length":
                 "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
 CIRCLE_MEMBERS = {"center": "point", "radius": "length", "diameter": "length", "bb": "bbox",
                   "top": "point", "bottom": "point", "left": "point", "right": "point"}
-ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "radius": "length",
+ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "through": "point",
+               "radius": "length",
                "diameter": "length", "midpoint": "point", "bb": "bbox"}
 RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point",
                 "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
@@ -72,6 +73,9 @@ POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
                "bb": "bbox"}
+TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
+    "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
+ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
 TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
@@ -105,8 +109,10 @@ _DEFS = {
     "Arc": _p([A("center", "point"), A("start", "point"), A("end", "point")],
               [A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
                A("end_angle", "angle")],
-              doc="A counter-clockwise arc from start to end about center; by points (guesses) "
-                  "or by radius and angles (held).", members=ARC_MEMBERS),
+              [A("start", "point"), A("through", "point"), A("end", "point")],
+              doc="A counter-clockwise arc from start to end about center; by points (guesses), "
+                  "by radius and angles (held), or through three points (keywords start=, "
+                  "through=, end=).", members=ARC_MEMBERS),
     "Rectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                      A("rotation", "angle", 0.0)],
                     [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
@@ -122,8 +128,20 @@ _DEFS = {
                            doc="A rectangle with rounded corners (radius applied when drawn).",
                            members=RECT_MEMBERS),
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point")],
-                   doc="A triangle through three points (starting guesses).",
-                   members=TRI_MEMBERS),
+                   [A("center", "point"), A("base", "length"), A("height", "length"),
+                    A("rotation", "angle", 0.0)],
+                   doc="A triangle through three points (starting guesses), or an isosceles "
+                       "one by base and height (held; a, b on the base, c the apex, center the "
+                       "bounding-box center).", members=TRI_MEMBERS),
+    "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
+                     A("height", "length"), A("rotation", "angle", 0.0)],
+                    doc="An isosceles trapezoid; widths, height and rotation are held, the "
+                        "center is a starting guess.", members=TRAP_MEMBERS),
+    "Ellipse": _p([A("center", "point"), A("rx", "length"), A("ry", "length"),
+                   A("rotation", "angle", 0.0)],
+                  doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
+                      "rotation are held, the center is a starting guess.",
+                  members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points")],
                   doc="A closed polygon through a list of points (starting guesses).",
                   members=POLY_MEMBERS),

@@ -45,7 +45,7 @@ HALLUCINATIONS = {
     "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",
     "Square": "write `Rectangle(center=..., width=s, height=s)`",
     "Box": "write `Rectangle(center=..., width=..., height=...)`",
-    "Oval": "write `Ellipse(center=..., rx=..., ry=...)`",
+    "Oval": "write `Ellipse(center=..., rx=..., ry=...)` (or a `Slot` for a stadium)",
     "Hexagon": "write `RegularPolygon(center=..., radius=..., sides=6)`",
     "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
     "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",

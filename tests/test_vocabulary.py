@@ -130,7 +130,7 @@ def test_hallucination_gets_its_hint(compile_text, name):
     assert not re.search(r"\b(delete|remove|drop)\b", d[0].hint, re.I)
 
 
-_PLANNED = {"Ellipse", "Fillet", "Chamfer", "Mirrored", "LinearPattern", "CircularPattern"}
+_PLANNED = {"Fillet", "Chamfer", "Mirrored", "LinearPattern", "CircularPattern"}
 
 
 def test_hallucination_hints_name_only_real_vocabulary():
