@@ -381,7 +381,7 @@ class Interpreter:
             self._equation(e)
             return
         val = self.eval(e)
-        if val is None or isinstance(val, (GeomRef, StructRef)):
+        if val is None or isinstance(val, (GeomRef, StructRef)) or type(val).__name__ == "Copies":
             return
         self.sink.warning("W0101", "this statement has no effect", e.span,
                           hint="name the value (`x = ...`) or write a constraint (`a == b`)")
@@ -622,6 +622,13 @@ class Interpreter:
                 conv[a.name] = Q.num(a.default, dim) if dim else a.default
         if entry.category == "primitive":
             return self._primitive(canonical(nm), conv, node, spans)
+        if entry.category == "operation":
+            from .operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, canonical(nm), conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
         owners = owners_of(*conv.values())
         try:
             eqs = BUILDERS[canonical(nm)](self, **conv)
@@ -1198,7 +1205,7 @@ def _is_plain_const(st) -> bool:
     for n in A.walk(st.value):
         if isinstance(n, A.Call) and isinstance(n.func, A.Name):
             e = lookup(n.func.id)
-            if e is not None and e.category == "primitive":
+            if e is not None and e.category in ("primitive", "operation"):
                 return False
             if n.func.id not in FUNCTIONS and e is None:
                 return False   # a template call

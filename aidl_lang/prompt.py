@@ -15,7 +15,7 @@ from .registry import ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE, UNITS_
 EXAMPLES_DIR = Path(__file__).resolve().parent.parent / "examples"
 # short and varied: hierarchy + stacking relations; holes, loops and bounding-box equations;
 # drawings, text and params; templates, fillets and patterns
-PROMPT_EXAMPLES = ["toy_sword.aidl", "bottle_opener.aidl", "name_tag.aidl"]
+PROMPT_EXAMPLES = ["toy_sword.aidl", "bottle_opener.aidl", "name_tag.aidl", "bracket.aidl"]
 
 INTRO = """\
 You write AIDL, a text language for 2D CAD parts (output: an SVG outline). Reply with one
@@ -28,7 +28,7 @@ and text, not filled), `assembly NAME { ... }` (separate parts). Inside a struct
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
 live inside structures. Top of file: `units mm` (default), `param NAME = VALUE`, constants
-`NAME = expr`, templates `def NAME(p1, p2=default) solid { ... }` (instantiate:
+`NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"`. Control flow: `for i in range(n) { ... }`
 (names defined in a loop become lists: `knob[0]`), `if c { } else { }`, `[f(i) for i in xs]`.
 Comments `#` or `//`. Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare number is a length in
@@ -56,11 +56,7 @@ def _sig(entry) -> str:
             if a.required:
                 parts.append(a.name)
             else:
-                d = a.default
-                d = "true" if d is True else "false" if d is False else \
-                    f'"{d}"' if isinstance(d, str) else "none" if d is None else \
-                    f"{d:g}" if isinstance(d, float) else d
-                parts.append(f"{a.name}={d}")
+                parts.append(f"{a.name}={a.default_text}")
         outs.append(f"{entry.name}({', '.join(parts)})")
     return " | ".join(outs)
 

@@ -10,6 +10,7 @@ Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 REQUIRED = object()
@@ -26,6 +27,20 @@ class Arg:
     @property
     def required(self) -> bool:
         return self.default is REQUIRED
+
+    @property
+    def default_text(self) -> str:
+        """The default as AIDL source: ``true``, ``"x"``, ``none``, ``360 deg``, ``0``."""
+        d = self.default
+        if isinstance(d, bool):
+            return "true" if d else "false"
+        if d is None:
+            return "none"
+        if isinstance(d, str):
+            return f'"{d}"'
+        if isinstance(d, float) and self.type == "angle" and d:
+            return f"{math.degrees(d):g} deg"
+        return f"{d:g}" if isinstance(d, float) else str(d)
 
 
 @dataclass
@@ -47,9 +62,7 @@ class Entry:
                 if a.required:
                     parts.append(f"{a.name}: {a.type}")
                 else:
-                    d = a.default
-                    d = "true" if d is True else "false" if d is False else d
-                    parts.append(f"{a.name}: {a.type} = {d}")
+                    parts.append(f"{a.name}: {a.type} = {a.default_text}")
             outs.append(f"{self.name}({', '.join(parts)})")
         return "\n".join(outs)
 
@@ -233,6 +246,23 @@ _DEFS = {
                    doc="a.bb.top == b.bb.top."),
     "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
                       doc="a.bb.bottom == b.bb.bottom."),
+    # ------------------------------------------------------------ operations
+    "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
+                   doc="A copy of geometry or a structure mirrored about a line; it follows the "
+                       "original. `Mirror(a, b, about)` is the Symmetric constraint."),
+    "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
+                        cat="operation",
+                        doc="count instances in all, each moved by step (a vector) from the last; "
+                            "gives the list [original, copy1, ...]."),
+    "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
+                           A("angle", "angle", 2 * math.pi)], cat="operation",
+                          doc="count instances turned about center, spread evenly over angle; "
+                              "gives the list [original, copy1, ...]."),
+    "Fillet": _c([A("radius", "length")], cat="operation",
+                 doc="Round every corner of this solid's (or hole's) final outline."),
+    "Chamfer": _c([A("distance", "length")], cat="operation",
+                  doc="Cut every convex corner of this solid's final outline with two legs of "
+                      "distance."),
 }
 
 # name -> canonical name.  One line per synonym.

@@ -242,6 +242,9 @@ class Renderer:
             for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
             acc = acc - cut
+        if getattr(s, "finish", None):
+            from .operations import finish
+            acc = finish(s, acc)
         return acc
 
     def drawing(self, s: Structure, out: Drawing) -> None:

@@ -275,8 +275,11 @@ class Checker:
                             suggestions=sugg)
             return
         code = "E0106" if reason and reason.startswith("missing") else "E0104"
-        self.sink.error(code, f"`{n}` {reason}", e.span,
-                        hint="forms: " + "; ".join(entry.signature(v) for v in entry.variants))
+        hint = "forms: " + "; ".join(entry.signature(v) for v in entry.variants)
+        if entry.name == "Symmetric" and len(e.args) + len(e.kwargs) == 2:
+            hint = ("to copy a shape or structure about a line write `Mirrored(target, "
+                    "about=line)`; " + hint)
+        self.sink.error(code, f"`{n}` {reason}", e.span, hint=hint)
 
     def template_call(self, e: A.Call, d: A.Def) -> None:
         params = [p.name for p in d.params]
