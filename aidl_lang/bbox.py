@@ -168,6 +168,15 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list) -> None:
                 else:
                     ys.append(cy + r * dy)
         return
+    if k == "Ellipse":
+        cx, cy = P["center"]
+        rx, ry = var(g.scalars["rx"].index), var(g.scalars["ry"].index)
+        cs, sn = math.cos(g.data.get("rotation", 0.0)), math.sin(g.data.get("rotation", 0.0))
+        ex = func("sqrt", rx * rx * (cs * cs) + ry * ry * (sn * sn))
+        ey = func("sqrt", rx * rx * (sn * sn) + ry * ry * (cs * cs))
+        xs += [cx - ex, cx + ex]
+        ys += [cy - ey, cy + ey]
+        return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
@@ -175,9 +184,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list) -> None:
         ys += [py + y0, py + y1]
         return
     for n, (px, py) in P.items():
-        if k in ("Rectangle", "RoundedRectangle") and n == "center":
-            continue
-        if k == "RegularPolygon" and n == "center":
+        if n == "center":           # a shape's center point is never an extreme point
             continue
         xs.append(px)
         ys.append(py)

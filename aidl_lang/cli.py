@@ -1,4 +1,5 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain``.
+"""The ``aidl`` command line: ``render``, ``check``, ``explain`` (and ``prompt``, ``generate``,
+``eval`` from :mod:`aidl_lang.llm_cli`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
 An output file is written only when the whole pipeline succeeded (written to a temporary file
@@ -41,6 +42,8 @@ def _parser() -> argparse.ArgumentParser:
                         "redundant constraints")
     e = sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
+    from .llm_cli import add_commands
+    add_commands(sub)                  # prompt, generate, eval
     return p
 
 
@@ -170,7 +173,9 @@ def cmd_explain(args) -> int:
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
-        return {"check": cmd_check, "render": cmd_render, "explain": cmd_explain}[args.cmd](args)
+        from .llm_cli import COMMANDS
+        return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain}
+                | COMMANDS)[args.cmd](args)
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:          # `aidl check --json | head`

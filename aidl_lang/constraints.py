@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from .bbox import BBTerm
-from .expr import Expr, evaluate, hypot, var
+from .expr import Expr, evaluate, func, hypot, var
 from .model import Equation
 from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name
 
@@ -304,6 +304,24 @@ def on_circle(ctx, point, circle, **_):
     return [Equation(hypot(p.x - c.x, p.y - c.y) - r)]
 
 
+def collinear(ctx, a, b, c=None, **_):
+    ka, kb = _kind(a), _kind(b)
+    if c is not None:
+        p, q, r = _pt(a, "a"), _pt(b, "b"), _pt(c, "c")
+        # distance of b from the line through a and c
+        # distance of b from the line through a and c (scaled by the starting |c - a|)
+        n = max(_val(ctx, hypot(r.x - p.x, r.y - p.y)), 1e-9)
+        return [Equation(_cross(r.x - p.x, r.y - p.y, q.x - p.x, q.y - p.y) * (1.0 / n))]
+    if ka == kb == "line":
+        s, e = _line(ctx, a, "a")
+        s2, e2 = _line(ctx, b, "b")
+        n = hypot(e.x - s.x, e.y - s.y)
+        return [Equation(_cross(e.x - s.x, e.y - s.y, s2.x - s.x, s2.y - s.y) / n),
+                Equation(_cross(e.x - s.x, e.y - s.y, e2.x - s.x, e2.y - s.y) / n)]
+    raise ConstraintError(f"Collinear takes two lines or three points, "
+                          f"got {type_name(a)} and {type_name(b)}")
+
+
 def concentric(ctx, a, b, **_):
     c1, _ = _circ(ctx, a, "a")
     c2, _ = _circ(ctx, b, "b")
@@ -353,6 +371,16 @@ def inside(ctx, a, b, margin=None, **_):
             Equation(A["bottom"] - B["bottom"] - m, True), Equation(B["top"] - A["top"] - m, True)]
 
 
+def gap(ctx, a, b, gap, axis="x", **_):
+    if axis not in ("x", "y"):
+        raise ConstraintError(f'Gap axis must be "x" or "y", not "{axis}"')
+    lo, hi = ("left", "right") if axis == "x" else ("bottom", "top")
+    # the space between the boxes whichever side each is on: max(lows) - min(highs)
+    start = func("max", _bb(ctx, a, lo, "a"), _bb(ctx, b, lo, "b"))
+    end = func("min", _bb(ctx, a, hi, "a"), _bb(ctx, b, hi, "b"))
+    return [Equation(start - end - gap.expr)]
+
+
 def _center(ctx, v, axis, name):
     lo, hi = ("left", "right") if axis == "x" else ("bottom", "top")
     return (_bb(ctx, v, lo, name) + _bb(ctx, v, hi, name)) * 0.5
@@ -396,7 +424,8 @@ BUILDERS = {
     "VerticalDistance": vertical_distance, "Length": length, "Radius": radius,
     "Diameter": diameter, "Equal": equal, "Parallel": parallel, "Perpendicular": perpendicular,
     "Tangent": tangent, "Symmetric": symmetric, "Midpoint": midpoint, "OnLine": on_line,
-    "OnCircle": on_circle, "Concentric": concentric, "Angle": angle,
+    "OnCircle": on_circle, "Concentric": concentric, "Angle": angle, "Collinear": collinear,
+    "Gap": gap,
     "Above": above, "Below": below, "LeftOf": left_of, "RightOf": right_of, "Inside": inside,
     "CenterInside": center_inside, "Taller": taller, "Wider": wider,
     "AlignCenterX": align_center_x, "AlignCenterY": align_center_y,

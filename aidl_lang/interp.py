@@ -23,7 +23,7 @@ from .expr import as_const, evaluate, func, lift, var
 from .model import Constraint, Equation, Model, Point, Scalar, Structure
 from .primitives import PrimitiveError, build, member as geom_member, member_names
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, canonical,
-                       choose_variant, lookup)
+                       canonical_args, choose_variant, lookup)
 from .values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                      Template, UnitError, dim_name, mul_dim, owners_of, type_name, unify_add)
 
@@ -381,7 +381,7 @@ class Interpreter:
             self._equation(e)
             return
         val = self.eval(e)
-        if val is None or isinstance(val, (GeomRef, StructRef)):
+        if val is None or isinstance(val, (GeomRef, StructRef)) or type(val).__name__ == "Copies":
             return
         self.sink.warning("W0101", "this statement has no effect", e.span,
                           hint="name the value (`x = ...`) or write a constraint (`a == b`)")
@@ -612,6 +612,7 @@ class Interpreter:
         for k, (v, kw) in kwargs.items():
             bound[k] = v
             spans[k] = kw.value.span
+        bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
         conv = {}
         for a in variant:
             if a.name in bound:
@@ -621,6 +622,13 @@ class Interpreter:
                 conv[a.name] = Q.num(a.default, dim) if dim else a.default
         if entry.category == "primitive":
             return self._primitive(canonical(nm), conv, node, spans)
+        if entry.category == "operation":
+            from .operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, canonical(nm), conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
         owners = owners_of(*conv.values())
         try:
             eqs = BUILDERS[canonical(nm)](self, **conv)
@@ -1197,7 +1205,7 @@ def _is_plain_const(st) -> bool:
     for n in A.walk(st.value):
         if isinstance(n, A.Call) and isinstance(n.func, A.Name):
             e = lookup(n.func.id)
-            if e is not None and e.category == "primitive":
+            if e is not None and e.category in ("primitive", "operation"):
                 return False
             if n.func.id not in FUNCTIONS and e is None:
                 return False   # a template call

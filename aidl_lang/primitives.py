@@ -65,6 +65,11 @@ def _build_Circle(ctx, g, a):
 
 
 def _build_Arc(ctx, g, a):
+    t, cw = None, False
+    if "through" in a:
+        t, cw, center = _circumcenter(ctx, a["start"], a["through"], a["end"])
+        g.points["through"] = t
+        a = dict(a, center=center)
     c = g.points["center"] = ctx.point(a["center"], "center")
     if "radius" in a:
         r = _const(ctx, a["radius"], "Arc radius")
@@ -79,9 +84,30 @@ def _build_Arc(ctx, g, a):
     else:
         s = g.points["start"] = ctx.point(a["start"], "start")
         e = g.points["end"] = ctx.point(a["end"], "end")
+        if t is not None:
+            rt = hypot(var(t.ix) - var(c.ix), var(t.iy) - var(c.iy))
+            rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
+            ctx.internal(g, [Equation(rt - rs)], "Arc through three points")
+            if cw:          # counter-clockwise from start to end must pass through `through`
+                g.points["start"], g.points["end"] = e, s
         rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
         re = hypot(var(e.ix) - var(c.ix), var(e.iy) - var(c.iy))
         ctx.internal(g, [Equation(rs - re)], "Arc start and end on one circle")
+
+
+def _circumcenter(ctx, p, q, r):
+    """(through point, clockwise?, starting center) of the circle through p, q, r."""
+    t = ctx.point(q, "through")
+    (ax, ay), (bx, by), (cx, cy) = ((ctx.value_of(v.x), ctx.value_of(v.y)) for v in (p, q, r))
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if abs(d) < 1e-12 * max(1.0, abs(ax), abs(bx), abs(cx), abs(ay), abs(by), abs(cy)) ** 2:
+        raise PrimitiveError("an Arc through three points needs points that are not on one line")
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay)
+          + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx)
+          + (cx * cx + cy * cy) * (bx - ax)) / d
+    cw = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0
+    return t, cw, PV(ux, uy)
 
 
 def _rect_frame(ctx, g, a):
@@ -190,11 +216,66 @@ def _polygon_edges(ctx, g, pts: list):
 
 
 def _build_Triangle(ctx, g, a):
-    pts = [ctx.point(a[k], k) for k in ("a", "b", "c")]
-    g.points.update(dict(zip(("a", "b", "c"), pts)))
+    if "base" in a:
+        b = _const(ctx, a["base"], "base")
+        h = _const(ctx, a["height"], "height")
+        if b <= 0 or h == 0:
+            raise PrimitiveError("a Triangle needs a positive base and a nonzero height")
+        pts = _rigid(ctx, g, a, {"a": (-b / 2, -h / 2), "b": (b / 2, -h / 2), "c": (0.0, h / 2)},
+                     "Triangle")
+    else:
+        pts = [ctx.point(a[k], k) for k in ("a", "b", "c")]
+        g.points.update(dict(zip(("a", "b", "c"), pts)))
     edges = _polygon_edges(ctx, g, pts)
     g.parts.update({"ab": edges[0], "bc": edges[1], "ca": edges[2]})
     g.data["order"] = ["a", "b", "c"]
+    g.closed = True
+
+
+def _rigid(ctx, g, a, offsets: dict, what: str) -> list:
+    """Points at fixed ``offsets`` (name -> (u, v), unrotated) from a center point, turned by
+    the held ``rotation``; the center is a starting guess.  Returns the points in order."""
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.data["rotation"] = rot
+    cs, sn = _cos_sin(rot)
+    c = g.points["center"] = ctx.point(a["center"], "center")
+    cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+    pts, eqs = [], []
+    for nm, (u, v) in offsets.items():
+        ox, oy = u * cs - v * sn, u * sn + v * cs
+        p = g.points[nm] = ctx.point(PV(cx + ox, cy + oy), nm)
+        pts.append(p)
+        eqs += [Equation(var(p.ix) - var(c.ix) - ox), Equation(var(p.iy) - var(c.iy) - oy)]
+    ctx.internal(g, eqs, f"{what} shape")
+    return pts
+
+
+def _build_Trapezoid(ctx, g, a):
+    b = _const(ctx, a["bottom_width"], "bottom_width")
+    t = _const(ctx, a["top_width"], "top_width")
+    h = _const(ctx, a["height"], "height")
+    if min(b, t) < 0 or h <= 0 or max(b, t) <= 0:
+        raise PrimitiveError("a Trapezoid needs a positive height and widths >= 0 (not both 0)")
+    names = ("bottom_left", "bottom_right", "top_right", "top_left")
+    pts = _rigid(ctx, g, a, dict(zip(names, ((-b / 2, -h / 2), (b / 2, -h / 2), (t / 2, h / 2),
+                                             (-t / 2, h / 2)))), "Trapezoid")
+    edges = _polygon_edges(ctx, g, pts)
+    g.parts.update(dict(zip(("bottom", "right", "top", "left"), edges)))
+    g.data["order"] = list(names)
+    g.data["edges"] = edges
+    g.data["dims"] = {"bottom_width": b, "top_width": t, "height": h}
+    g.closed = True
+
+
+def _build_Ellipse(ctx, g, a):
+    rx = _const(ctx, a["rx"], "rx")
+    ry = _const(ctx, a["ry"], "ry")
+    if rx <= 0 or ry <= 0:
+        raise PrimitiveError(f"an Ellipse needs positive rx and ry, got {rx:g} and {ry:g}")
+    g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.points["center"] = ctx.point(a["center"], "center")
+    g.scalars["rx"] = ctx.new_scalar(rx, "rx", held=True)
+    g.scalars["ry"] = ctx.new_scalar(ry, "ry", held=True)
     g.closed = True
 
 
@@ -355,6 +436,15 @@ def member(g: Geometry, name: str, frame):
             return Q.num(g.data["corner_radius"], LEN)
         if name == "corners":
             return [_pv(p, frame) for p in points_of(g)]
+    if k == "Trapezoid":
+        if name in g.data["dims"]:
+            return Q.num(g.data["dims"][name], LEN)
+        if name in ("points", "vertices", "corners"):
+            return [_pv(p, frame) for p in points_of(g)]
+        if name == "edges":
+            return [GeomRef(e) for e in g.data["edges"]]
+    if k == "Ellipse" and name in ("rx", "ry"):
+        return Q(var(g.scalars[name].index), LEN, own)
     if k in ("Polygon", "RegularPolygon", "Triangle"):
         pts = points_of(g) if k != "Triangle" else [g.points[n] for n in ("a", "b", "c")]
         if name in ("points", "vertices", "corners"):

@@ -10,6 +10,7 @@ Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 REQUIRED = object()
@@ -21,10 +22,25 @@ class Arg:
     type: str
     default: object = REQUIRED
     doc: str = ""
+    kw_only: bool = False            # may only be given by keyword (e.g. ``construction=``)
 
     @property
     def required(self) -> bool:
         return self.default is REQUIRED
+
+    @property
+    def default_text(self) -> str:
+        """The default as AIDL source: ``true``, ``"x"``, ``none``, ``360 deg``, ``0``."""
+        d = self.default
+        if isinstance(d, bool):
+            return "true" if d else "false"
+        if d is None:
+            return "none"
+        if isinstance(d, str):
+            return f'"{d}"'
+        if isinstance(d, float) and self.type == "angle" and d:
+            return f"{math.degrees(d):g} deg"
+        return f"{d:g}" if isinstance(d, float) else str(d)
 
 
 @dataclass
@@ -40,25 +56,27 @@ class Entry:
         outs = []
         for v in vs:
             parts = []
-            for a in v:
+            for i, a in enumerate(v):
+                if a.kw_only and (i == 0 or not v[i - 1].kw_only):
+                    parts.append("*")
                 if a.required:
                     parts.append(f"{a.name}: {a.type}")
                 else:
-                    d = a.default
-                    d = "true" if d is True else "false" if d is False else d
-                    parts.append(f"{a.name}: {a.type} = {d}")
+                    parts.append(f"{a.name}: {a.type} = {a.default_text}")
             outs.append(f"{self.name}({', '.join(parts)})")
         return "\n".join(outs)
 
 
-CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn")
+CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn",
+                   kw_only=True)
 
 POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
 LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
                 "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
 CIRCLE_MEMBERS = {"center": "point", "radius": "length", "diameter": "length", "bb": "bbox",
                   "top": "point", "bottom": "point", "left": "point", "right": "point"}
-ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "radius": "length",
+ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "through": "point",
+               "radius": "length",
                "diameter": "length", "midpoint": "point", "bb": "bbox"}
 RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point",
                 "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
@@ -68,6 +86,9 @@ POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
                "bb": "bbox"}
+TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
+    "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
+ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
 TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
@@ -101,8 +122,10 @@ _DEFS = {
     "Arc": _p([A("center", "point"), A("start", "point"), A("end", "point")],
               [A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
                A("end_angle", "angle")],
-              doc="A counter-clockwise arc from start to end about center; by points (guesses) "
-                  "or by radius and angles (held).", members=ARC_MEMBERS),
+              [A("start", "point"), A("through", "point"), A("end", "point")],
+              doc="A counter-clockwise arc from start to end about center; by points (guesses), "
+                  "by radius and angles (held), or through three points (keywords start=, "
+                  "through=, end=).", members=ARC_MEMBERS),
     "Rectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                      A("rotation", "angle", 0.0)],
                     [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
@@ -118,8 +141,20 @@ _DEFS = {
                            doc="A rectangle with rounded corners (radius applied when drawn).",
                            members=RECT_MEMBERS),
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point")],
-                   doc="A triangle through three points (starting guesses).",
-                   members=TRI_MEMBERS),
+                   [A("center", "point"), A("base", "length"), A("height", "length"),
+                    A("rotation", "angle", 0.0)],
+                   doc="A triangle through three points (starting guesses), or an isosceles "
+                       "one by base and height (held; a, b on the base, c the apex, center the "
+                       "bounding-box center).", members=TRI_MEMBERS),
+    "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
+                     A("height", "length"), A("rotation", "angle", 0.0)],
+                    doc="An isosceles trapezoid; widths, height and rotation are held, the "
+                        "center is a starting guess.", members=TRAP_MEMBERS),
+    "Ellipse": _p([A("center", "point"), A("rx", "length"), A("ry", "length"),
+                   A("rotation", "angle", 0.0)],
+                  doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
+                      "rotation are held, the center is a starting guess.",
+                  members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points")],
                   doc="A closed polygon through a list of points (starting guesses).",
                   members=POLY_MEMBERS),
@@ -171,6 +206,8 @@ _DEFS = {
                  doc="The point lies on the (infinite) line."),
     "OnCircle": _c([A("point", "point"), A("circle", "circular")],
                    doc="The point lies on the circle or the arc's circle."),
+    "Collinear": _c([A("a", "geometry"), A("b", "geometry"), A("c", "point", None)],
+                    doc="Two lines lie on one infinite line, or three points lie on one line."),
     "Concentric": _c([A("a", "circular"), A("b", "circular")],
                      doc="Two circles/arcs share their center."),
     "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
@@ -185,6 +222,10 @@ _DEFS = {
                  doc="a touches b from the left: a.bb.right == b.bb.left - gap."),
     "RightOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
                   doc="a touches b from the right: a.bb.left == b.bb.right + gap."),
+    "Gap": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length"), A("axis", "string", "x")],
+              cat="structural",
+              doc="Empty space between a's and b's bounding boxes along axis \"x\" or \"y\", "
+                  "whichever side each is on."),
     "Inside": _c([A("a", "boxed"), A("b", "boxed"), A("margin", "length", 0.0)],
                  cat="structural", doc="a's bounding box lies within b's, at least margin in."),
     "CenterInside": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
@@ -205,22 +246,66 @@ _DEFS = {
                    doc="a.bb.top == b.bb.top."),
     "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
                       doc="a.bb.bottom == b.bb.bottom."),
+    # ------------------------------------------------------------ operations
+    "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
+                   doc="A copy of geometry or a structure mirrored about a line; it follows the "
+                       "original. `Mirror(a, b, about)` is the Symmetric constraint."),
+    "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
+                        cat="operation",
+                        doc="count instances in all, each moved by step (a vector) from the last; "
+                            "gives the list [original, copy1, ...]."),
+    "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
+                           A("angle", "angle", 2 * math.pi)], cat="operation",
+                          doc="count instances turned about center, spread evenly over angle; "
+                              "gives the list [original, copy1, ...]."),
+    "Fillet": _c([A("radius", "length")], cat="operation",
+                 doc="Round every corner of this solid's (or hole's) final outline."),
+    "Chamfer": _c([A("distance", "length")], cat="operation",
+                  doc="Cut every convex corner of this solid's final outline with two legs of "
+                      "distance."),
 }
 
 # name -> canonical name.  One line per synonym.
 SYNONYMS: dict[str, str] = {
     "Orthogonal": "Perpendicular",
     "Coincide": "Coincident",
+    "Join": "Coincident",
     "Fix": "Fixed",
+    "Lock": "Fixed",
+    "Anchor": "Fixed",
+    "Same": "Equal",
+    "EqualLength": "Equal",
+    "EqualRadius": "Equal",
     "Centered": "CenterInside",
     "OnTopOf": "Above",
+    "Over": "Above",
     "Under": "Below",
+    "Underneath": "Below",
     "ToTheLeftOf": "LeftOf",
     "ToTheRightOf": "RightOf",
+    "Within": "Inside",
+    "Contains": "Inside",            # argument order swapped: see SWAPPED
+    "AtMidpoint": "Midpoint",
+    "Mirror": "Symmetric",
+    "MirrorSymmetric": "Symmetric",
+    "DistanceX": "HorizontalDistance",
+    "DistanceY": "VerticalDistance",
     "HorizontallyCentered": "AlignCenterX",
     "VerticallyCentered": "AlignCenterY",
     "PointOnLine": "OnLine",
     "OnArc": "OnCircle",
+}
+
+# synonyms whose arguments mean the canonical entry's arguments in another order:
+# synonym -> {argument name as written -> canonical argument name}.  ``Contains(a, b)`` is
+# ``Inside(b, a)``: positional and keyword arguments are both renamed.
+SWAPPED: dict[str, dict[str, str]] = {
+    "Contains": {"a": "b", "b": "a"},
+}
+
+# one-line docs of synonyms that do not simply mean the canonical entry
+SYNONYM_DOCS: dict[str, str] = {
+    "Contains": "a's bounding box contains b's: Contains(a, b) is Inside(b, a).",
 }
 
 # functions usable in expressions: name -> (min args, max args, doc)
@@ -266,6 +351,18 @@ def canonical(name: str) -> str:
     return SYNONYMS.get(name, name)
 
 
+def canonical_args(name: str, args: dict) -> dict:
+    """Bound arguments of a call of ``name`` renamed to the canonical entry's arguments.
+
+    Only synonyms listed in :data:`SWAPPED` rename anything (``Contains(a=X, b=Y)`` gives
+    ``{"a": Y, "b": X}`` for ``Inside``); for every other name ``args`` is returned as is.
+    """
+    ren = SWAPPED.get(name)
+    if not ren:
+        return args
+    return {ren.get(k, k): v for k, v in args.items()}
+
+
 def all_callable_names() -> list[str]:
     return list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS)
 
@@ -278,8 +375,9 @@ def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
     best, best_reason = None, None
     for v in entry.variants:
         names = [a.name for a in v]
-        if npos > len(v):
-            best_reason = best_reason or f"takes at most {len(v)} arguments, got {npos}"
+        npos_max = sum(not a.kw_only for a in v)
+        if npos > npos_max:
+            best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
             continue
         bound = set(names[:npos])
         bad = [k for k in kwnames if k not in names]

@@ -115,7 +115,18 @@ class Renderer:
             a, b = self.P(g.points["start"]), self.P(g.points["end"])
             pts = np.vstack([self.circle_points(a, r), self.circle_points(b, r)])
             return mf.CrossSection.hull_points(pts.tolist())
-        if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon"):
+        if k == "Ellipse":
+            rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
+            if rx <= 0 or ry <= 0:
+                return None
+            c, rot = self.P(g.points["center"]), g.data.get("rotation", 0.0)
+            n = segments_for(max(rx, ry))     # sagitta of a parameter step <= that of radius a
+            t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+            u, v = rx * np.cos(t), ry * np.sin(t)
+            cs, sn = math.cos(rot), math.sin(rot)
+            return _cs(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
+        if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
+                 "Trapezoid"):
             from .primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
@@ -231,6 +242,9 @@ class Renderer:
             for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
             acc = acc - cut
+        if getattr(s, "finish", None):
+            from .operations import finish
+            acc = finish(s, acc)
         return acc
 
     def drawing(self, s: Structure, out: Drawing) -> None:

@@ -21,18 +21,65 @@ from .registry import CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, choose_variant, l
 
 KINDS = ("solid", "hole", "drawing", "assembly")
 
-# names models invent, and what to write instead
+# names models invent, and what to write instead (short, specific; never "delete it")
+_BOOL = "booleans come from structure kinds: a `solid` unions its children, `hole NAME { ... }` children cut"
+_TWO_D = "AIDL is 2D: draw the outline (Circle, Rectangle, Polygon, ...); the SVG is the part's profile"
+_STRUCT = "group parts in a structure block: `solid NAME { ... }` (also hole, drawing, assembly)"
+_PATTERN = "repeat with `LinearPattern(target, count, spacing)`, `CircularPattern(target, count, center)` or a `for i in range(n) { ... }` loop"
 HALLUCINATIONS = {
     "Rotate": "there is no Rotate: give shapes a `rotation=` argument, or relate lines with `Angle(a, b, 30 deg)`",
     "Rotation": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",
+    "Rotated": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",
     "Translate": "there is no Translate: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
     "Move": "there is no Move: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
-    "Union": "booleans are implied by structure kinds: children of a `solid` are unioned, `hole` children are cut",
-    "Difference": "booleans are implied by structure kinds: put the cut-out in a `hole NAME { ... }` child",
-    "Subtract": "booleans are implied by structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Position": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Place": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Union": _BOOL,
+    "Combine": _BOOL,
+    "Merge": _BOOL,
+    "Difference": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Subtract": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Intersection": "there is no intersection boolean: " + _BOOL,
+    "Intersect": "there is no intersection boolean: " + _BOOL,
+    "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",
     "Square": "write `Rectangle(center=..., width=s, height=s)`",
-    "Ellipse": "there is no Ellipse yet; approximate with a Polygon or a Slot",
+    "Box": "write `Rectangle(center=..., width=..., height=...)`",
+    "Oval": "write `Ellipse(center=..., rx=..., ry=...)` (or a `Slot` for a stadium)",
+    "Hexagon": "write `RegularPolygon(center=..., radius=..., sides=6)`",
+    "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
+    "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",
+    "Polyline": "write `Polygon(points=[...])` for a closed outline, or Lines that share endpoints",
+    "Spline": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
+    "Bezier": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
+    "Ring": "a ring is a Circle in a solid with a smaller Circle in a `hole` child; add `Concentric`",
+    "Extrude": _TWO_D,
+    "Cylinder": _TWO_D,
+    "Cube": _TWO_D,
+    "Sphere": _TWO_D,
+    "Offset": "there is no Offset: draw the outer outline as its own shape (e.g. width + 2 * t) and `CenterInside` the two",
+    "Scale": "there is no Scale: sizes are arguments; multiply them by a `param`",
+    "Round": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle; `round(x)` rounds numbers",
+    "RoundCorners": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle",
+    "Bevel": "bevel corners with `Chamfer(distance)` in the solid",
+    "Pattern": _PATTERN,
+    "Array": _PATTERN,
+    "Repeat": _PATTERN,
+    "Copy": "copy with `Mirrored(target, about=line)`, `LinearPattern(...)`, `CircularPattern(...)` or a template",
+    "Reflect": "copy about a line with `Mirrored(target, about=line)`; `Symmetric(a, b, about=line)` relates two shapes",
+    "Group": _STRUCT,
+    "Sketch": _STRUCT,
+    "Body": _STRUCT,
+    "Part": _STRUCT,
+    "Component": _STRUCT,
+    "Align": "say which: AlignLeft, AlignRight, AlignTop, AlignBottom, AlignCenterX or AlignCenterY",
+    "Center": "write `CenterInside(a, b)` to center a in b (or AlignCenterX / AlignCenterY)",
+    "Dimension": "state the dimension as a constraint: `Length(line, 20)`, `Distance(p, q, 5)` or `a.width == 20`",
+    "Width": "sizes are members: write `a.width == 20` or `a.bb.width <= 60`",
+    "Height": "sizes are members: write `a.height == 20` or `a.bb.height <= 60`",
     "AddConstraint": "constraints are statements: write `Coincident(a, b)` directly",
+    "Constraint": "constraints are statements: write `Coincident(a, b)` directly",
+    "Constrain": "constraints are statements: write `Coincident(a, b)` directly",
 }
 
 
@@ -209,7 +256,10 @@ class Checker:
             sugg = did_you_mean(n, cands)
             hint = HALLUCINATIONS.get(n) or (f"did you mean `{sugg[0]}`?" if sugg else
                                              "see docs/language.md for the primitives and constraints")
-            self.sink.error("E0103", f"unknown function `{n}`", f.span, hint=hint, suggestions=sugg)
+            d = self.sink.error("E0103", f"unknown function `{n}`", f.span, hint=hint,
+                                suggestions=sugg)
+            if n in HALLUCINATIONS:
+                d.fix = None          # not a typo: renaming it to the nearest name is no fix
             return
         kwnames = [k.name for k in e.kwargs]
         variant, reason = choose_variant(entry, len(e.args), kwnames)
@@ -225,8 +275,11 @@ class Checker:
                             suggestions=sugg)
             return
         code = "E0106" if reason and reason.startswith("missing") else "E0104"
-        self.sink.error(code, f"`{n}` {reason}", e.span,
-                        hint="forms: " + "; ".join(entry.signature(v) for v in entry.variants))
+        hint = "forms: " + "; ".join(entry.signature(v) for v in entry.variants)
+        if entry.name == "Symmetric" and len(e.args) + len(e.kwargs) == 2:
+            hint = ("to copy a shape or structure about a line write `Mirrored(target, "
+                    "about=line)`; " + hint)
+        self.sink.error(code, f"`{n}` {reason}", e.span, hint=hint)
 
     def template_call(self, e: A.Call, d: A.Def) -> None:
         params = [p.name for p in d.params]

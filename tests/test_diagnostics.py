@@ -199,8 +199,6 @@ def test_E0001_message_lists_expected_tokens(compile_text):
     assert "`width`" in d.message and "expected" in d.message and "`,`" in d.message
 
 
-@pytest.mark.xfail(strict=True, reason="the registry counts `construction` as a third positional "
-                   "argument, so the example of `aidl explain E0104` gives E0108 instead")
 def test_E0104_for_the_documented_example(compile_text):
     c = compile_text("solid s {\n    c = Circle((0, 0), 5, 7)\n}\n")
     d = the_error(c, "E0104")

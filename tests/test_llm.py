@@ -1,0 +1,202 @@
+"""`aidl prompt`, `aidl generate` and `aidl eval` against a stub chat-completions server on
+127.0.0.1 that replies first with a broken program and, once it has seen feedback, a fixed one."""
+import contextlib
+import io
+import json
+import threading
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+
+import pytest
+
+from aidl_lang.cli import main
+from aidl_lang.generate import extract_code
+from aidl_lang.prompt import EXAMPLES_DIR, code_blocks, example_programs, system_prompt, word_count
+from aidl_lang.registry import ENTRIES, SYNONYMS
+
+BROKEN = """Here is the plate:
+
+```aidl
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=30)
+    hole bore {
+        c = Circle(center=(0, 0), radius=6)
+    }
+    Rotate(body, 30 deg)
+    CenterInside(bore, self)
+}
+```
+"""
+
+FIXED = """Fixed: rotation is an argument.
+
+```aidl
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=30, rotation=30 deg)
+    hole bore {
+        c = Circle(center=(0, 0), radius=6)
+    }
+    CenterInside(bore, self)
+}
+```
+"""
+
+
+class Stub:
+    """Replies BROKEN to a fresh conversation and FIXED once the model has replied before."""
+
+    def __init__(self):
+        self.requests = []
+        stub = self
+
+        class H(BaseHTTPRequestHandler):
+            def do_POST(self):
+                n = int(self.headers.get("Content-Length", 0))
+                body = json.loads(self.rfile.read(n))
+                stub.requests.append({"body": body, "auth": self.headers.get("Authorization"),
+                                      "path": self.path})
+                seen = any(m["role"] == "assistant" for m in body["messages"])
+                reply = FIXED if seen else BROKEN
+                data = json.dumps({"choices": [{"message": {"role": "assistant",
+                                                            "content": reply}}]}).encode()
+                self.send_response(200)
+                self.send_header("Content-Type", "application/json")
+                self.send_header("Content-Length", str(len(data)))
+                self.end_headers()
+                self.wfile.write(data)
+
+            def log_message(self, *a):
+                pass
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), H)
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/v1"
+        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
+
+    def __enter__(self):
+        self.thread.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.server.shutdown()
+        self.server.server_close()
+
+
+@pytest.fixture
+def stub():
+    with Stub() as s:
+        yield s
+
+
+def run_cli(*args, env=None, monkeypatch=None):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = main([str(a) for a in args])
+    return rc, out.getvalue(), err.getvalue()
+
+
+# ------------------------------------------------------------------ prompt
+def test_every_example_in_the_prompt_compiles(compile_text):
+    text = system_prompt()
+    blocks = code_blocks(text)
+    assert len(blocks) == len(example_programs()) >= 3
+    for (name, _), code in zip(example_programs(), blocks):
+        from aidl_lang.pipeline import compile_source
+        c = compile_source(code, str(EXAMPLES_DIR / name))
+        assert c.ok, (name, [d.message for d in c.sink.items])
+
+
+def test_prompt_lists_the_whole_registry_and_stays_compact():
+    text = system_prompt()
+    for name in ENTRIES:
+        assert f"- {name}(" in text, name
+    for syn in SYNONYMS:
+        assert syn in text, syn
+    assert "construction" in text and "Contains(a, b) means Inside(b, a)" in text
+    assert word_count(text) < 2600          # measured: see NOTE / docs/llm.md
+    assert word_count(system_prompt(examples=False)) < 1300
+
+
+def test_aidl_prompt_command():
+    rc, out, err = run_cli("prompt", "--words")
+    assert rc == 0 and out == system_prompt()
+    assert f"{word_count(out)} words" in err
+    rc, out, _ = run_cli("prompt", "--no-examples")
+    assert rc == 0 and code_blocks(out) == [] and "Examples:" not in out
+
+
+def test_extract_code():
+    assert extract_code(BROKEN).startswith("solid plate {")
+    assert extract_code("```\nsolid a {\n}\n```") == "solid a {\n}\n"
+    assert extract_code("no code here") is None
+    assert extract_code("```aidl\nsolid a {\n") == "solid a {\n"      # cut-off reply
+
+
+# ------------------------------------------------------------------ generate
+def test_generate_ends_valid_in_round_two(stub, tmp_path, monkeypatch):
+    monkeypatch.setenv("OPENAI_API_KEY", "sk-test")
+    monkeypatch.delenv("AIDL_BASE_URL", raising=False)
+    out = tmp_path / "plate.aidl"
+    rc, stdout, err = run_cli("generate", "a plate with a bore, turned 30 degrees", "-o", out,
+                              "--base-url", stub.url, "--model", "stub-model")
+    assert rc == 0, err
+    assert "round 1/5" in err and "round 2: valid" in err and "E0103" in err
+    assert out.read_text() == extract_code(FIXED)
+    tr = json.loads((tmp_path / "plate.transcript.json").read_text())
+    assert tr["ok"] and tr["rounds_used"] == 2 and not tr["first_try"]
+    r1, r2 = tr["rounds"]
+    assert r1["error_codes"] == ["E0103"] and r2["ok"] and r2["error_codes"] == []
+    assert "Rotate" in r1["code"] and "rotation=30 deg" in r2["code"]
+    # the feedback carries the diagnostic and asks to fix, not delete
+    fb = r1["feedback"]
+    assert "error[E0103]: unknown function `Rotate`" in fb and "rotation=" in fb
+    assert "rather than deleting it" in fb
+    assert [m["role"] for m in tr["messages"]] == ["system", "user", "assistant", "user", "assistant"]
+    md = (tmp_path / "plate.transcript.md").read_text()
+    assert "## Round 1" in md and "## Round 2: valid" in md
+    # what the server saw: the system prompt, the model name, the key, the path
+    req = stub.requests
+    assert len(req) == 2 and req[0]["path"] == "/v1/chat/completions"
+    assert req[0]["body"]["model"] == "stub-model" and req[0]["auth"] == "Bearer sk-test"
+    assert req[0]["body"]["messages"][0]["content"] == system_prompt()
+    assert req[1]["body"]["messages"][3]["content"] == fb
+
+
+def test_generate_writes_nothing_when_rounds_run_out(stub, tmp_path, monkeypatch):
+    monkeypatch.setenv("AIDL_BASE_URL", stub.url)
+    out = tmp_path / "plate.aidl"
+    rc, _, err = run_cli("generate", "a plate", "-o", out, "--rounds", "1")
+    assert rc == 1 and "not written" in err
+    assert not out.exists()
+    tr = json.loads((tmp_path / "plate.transcript.json").read_text())
+    assert not tr["ok"] and tr["rounds_used"] == 1
+
+
+def test_generate_reports_an_unreachable_endpoint(tmp_path):
+    rc, _, err = run_cli("generate", "x", "-o", tmp_path / "a.aidl",
+                         "--base-url", "http://127.0.0.1:9/v1")
+    assert rc == 1 and "cannot reach http://127.0.0.1:9/v1/chat/completions" in err
+    assert "Traceback" not in err
+
+
+# ------------------------------------------------------------------ eval
+def test_eval_writes_report_and_contact_sheet(stub, tmp_path):
+    prompts = tmp_path / "prompts.txt"
+    prompts.write_text("# three prompts\na plate with a bore\n\na turned plate\na bracket\n")
+    out = tmp_path / "report"
+    rc, stdout, err = run_cli("eval", prompts, "--runs", "1", "-o", out, "--base-url", stub.url,
+                              "--model", "stub-model")
+    assert rc == 0, err
+    assert "3 runs: 0 valid on first try, 3 within 5 rounds" in stdout
+    rep = json.loads((out / "report.json").read_text())
+    s = rep["summary"]
+    assert rep["runs"] == 3 and s["valid_first_try"] == 0 and s["valid_within_rounds"] == 3
+    assert s["mean_rounds_valid"] == 2 and s["error_codes"] == {"E0103": 3}
+    assert [r["rounds_used"] for r in rep["results"]] == [2, 2, 2]
+    assert [r["prompt"] for r in rep["results"]] == ["a plate with a bore", "a turned plate",
+                                                     "a bracket"]
+    page = (out / "index.html").read_text()
+    assert page.count("<svg") == 3 and page.count("<section>") == 3
+    assert "a turned plate" in page and "valid in 2 rounds" in page
+    for r in rep["results"]:
+        assert (out / r["program"]).exists() and (out / r["svg"]).exists()
+    md = (out / "report.md").read_text()
+    assert "valid within 5 rounds: 3 (100%)" in md
