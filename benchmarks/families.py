@@ -180,10 +180,12 @@ def linkage(n_params: int, seed: int = 0) -> Case:
 
 
 def hierarchy(n_structures: int, seed: int = 0) -> Case:
-    """A row of ``n_structures`` parts (in groups of 10 under sub-assemblies), each a small
-    sketch (a plate with a boss and a slot: about 10 constraints) placed by structural
-    constraints and member equations; every part starts 10% off its place."""
+    """About ``n_structures`` structures: a row of parts in groups of 10 under
+    sub-assemblies, each part a small sketch (a plate of 4 points and 4 lines with a hole
+    centered in it: 10 constraints, 2 structures) placed by structural constraints
+    (``RightOf``, ``AlignBottom``) and a member equation; every part starts off its place."""
     rng = np.random.default_rng(seed)
+    n_structures = max(1, round((n_structures - 1) / 2.1))     # parts: 2 structures each
     groups = max(1, math.ceil(n_structures / 10))
     lines = ["units mm", "assembly row {"]
     made = 0
