@@ -43,12 +43,16 @@ def _lexer() -> Lark:
 
 
 class FormatError(Exception):
-    """The source cannot be formatted: ``sink`` holds its syntax errors (or an internal check
-    failure, code ``E0005``)."""
+    """The source cannot be formatted: ``sink`` holds its syntax errors."""
 
     def __init__(self, sink: DiagnosticSink):
         super().__init__("; ".join(d.message for d in sink.items))
         self.sink = sink
+
+
+class FormatterBug(RuntimeError):
+    """The formatted text would not mean the same as the source (a bug in the formatter); the
+    source is left as it is."""
 
 
 @dataclass
@@ -117,7 +121,8 @@ def format_source(source: str, path: str = "<stdin>") -> str:
     """Return the canonical layout of ``source`` (AIDL text).
 
     Raises :class:`FormatError` (with the syntax errors in ``.sink``) if ``source`` does not
-    parse; the returned text parses to the same AST and keeps every comment.
+    parse, :class:`FormatterBug` if the result would not parse to the same AST with the same
+    comments (checked on every call).
     """
     source = source.replace("\r\n", "\n").replace("\r", "\n")
     sink = DiagnosticSink()
@@ -132,11 +137,7 @@ def format_source(source: str, path: str = "<stdin>") -> str:
     same = (not sink2.has_errors and dump(after) == dump(before)
             and comments(out) == comments(source))
     if not same:
-        bad = DiagnosticSink()
-        bad.sources[path] = source
-        bad.error("E0005", "internal error: formatting would change the program; the file is "
-                  "left as it is", None, hint="please report this file as a bug in `aidl fmt`")
-        raise FormatError(bad)
+        raise FormatterBug(f"formatting `{path}` would change its program or comments")
     return out
 
 
@@ -273,7 +274,8 @@ def main(files: list[str], check: bool = False) -> int:
     """``aidl fmt FILE... [--check]``; ``-`` reads stdin and writes stdout.
 
     Returns the exit status: 0 all formatted (or, with ``check``, nothing would change), 1 a
-    file has syntax errors (printed; the file is not touched) or, with ``check``, would change.
+    file has syntax errors (printed; the file is not touched) or, with ``check``, would change;
+    3 the formatter found it would change a program's meaning (a bug; nothing written).
     Files are rewritten atomically (a temporary file beside it, then renamed) and only if their
     text changes.
     """
@@ -291,16 +293,21 @@ def main(files: list[str], check: bool = False) -> int:
         except (OSError, UnicodeDecodeError) as e:
             print(f"aidl: error: cannot read `{f}`: {getattr(e, 'strerror', None) or e}",
                   file=sys.stderr)
-            status = 1
+            status = max(status, 1)
             continue
         try:
             out = format_source(src, "<stdin>" if f == "-" else f)
+        except FormatterBug as e:
+            print(f"aidl: internal error: {e}; the file is left as it is. This is a bug in "
+                  "aidl fmt, please report it with the input file.", file=sys.stderr)
+            status = 3
+            continue
         except FormatError as e:
             for d in e.sink.items:
                 print(render_text(d, e.sink.sources), file=sys.stderr)
                 print(file=sys.stderr)
             print(f"aidl: `{f}` not formatted: it has errors", file=sys.stderr)
-            status = 1
+            status = max(status, 1)
             continue
         if f == "-":
             if check:
@@ -312,7 +319,7 @@ def main(files: list[str], check: bool = False) -> int:
             continue
         if check:
             print(f"would reformat {f}")
-            status = 1
+            status = max(status, 1)
             continue
         p = Path(f)
         try:
@@ -326,7 +333,7 @@ def main(files: list[str], check: bool = False) -> int:
             os.replace(tmp, p)
         except OSError as e:
             print(f"aidl: error: cannot write `{f}`: {e.strerror or e}", file=sys.stderr)
-            status = 1
+            status = max(status, 1)
             continue
         print(f"formatted {f}")
     return status

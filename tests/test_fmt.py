@@ -241,3 +241,16 @@ def test_generated_programs_obey_the_laws(src):
             format_source(src)
         return
     check_laws(src)
+
+
+def test_a_meaning_changing_layout_is_refused(monkeypatch, tmp_path):
+    import aidl_lang.fmt as F
+    monkeypatch.setattr(F, "_layout", lambda src, items: src.replace("1", "2"))
+    with pytest.raises(F.FormatterBug):
+        F.format_source("x = 1\n")
+    monkeypatch.setattr(F, "_layout", lambda src, items: src.replace("# c", ""))
+    with pytest.raises(F.FormatterBug):
+        F.format_source("x = 1 # c\n")
+    p = tmp_path / "a.aidl"
+    p.write_text("x = 1 # c\n")
+    assert F.main([str(p)]) == 3 and p.read_text() == "x = 1 # c\n"
