@@ -110,7 +110,7 @@ def _space(prev: _Item, cur: _Item, prev_kind: str | None, in_parens: bool) -> s
         return ""
     if c == "LPAR" and p in ("NAME", "RPAR", "RSQB", "STRING"):
         return ""
-    if c == "LSQB" and p in ("NAME", "RPAR", "RSQB"):
+    if c == "LSQB" and p in ("NAME", "RPAR", "RSQB", "STRING", "FSTRING"):
         return ""
     if (c == "EQUAL" or p == "EQUAL") and in_parens:
         return ""
