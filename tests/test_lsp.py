@@ -216,3 +216,18 @@ def test_document_symbols_are_the_structure_tree():
 @pytest.mark.parametrize("path", EXAMPLES[:4], ids=lambda p: p.name)
 def test_examples_have_no_diagnostics(path):
     assert an.diagnostics(path.read_text(), str(path)) == []
+
+
+def test_imported_templates_hover_definition_and_members():
+    path = ROOT / "examples" / "gear.aidl"
+    src = path.read_text()
+    h = an.hover(src, *pos(src, "spur_gear("), path=str(path))
+    assert "def spur_gear(teeth=12" in h.contents.value
+    loc = an.definition(src, *pos(src, "spur_gear("), "file:///gear.aidl", path=str(path))
+    gears = ROOT / "examples" / "parts" / "gears.aidl"
+    assert loc.uri == gears.as_uri()
+    assert loc.range.start == T.Position(*pos(gears.read_text(), "spur_gear("))
+    typed = src.replace("    Fixed(pinion", "    pinion.\n    Fixed(pinion")
+    line, ch = pos(typed, "    pinion.\n", len("    pinion."))
+    labels = {c.label for c in an.completions(typed, line, ch, path=str(path))}
+    assert {"hub", "bore_hole", "bb"} <= labels

@@ -12,7 +12,8 @@ recoverable parts allow: the parser blanks bad lines and goes on).
   after a dot, the members of what is before it (``rect.`` -> ``top_left``, ``width``, ``bb``;
   a structure -> its children and ``bb``);
 * :func:`definition`, :func:`references` — of user names (params, templates, structures,
-  variables, loop variables, template parameters), following ``a.b.c`` into structures;
+  variables, loop variables, template parameters), following ``a.b.c`` into structures and
+  names brought in by ``import`` into the imported file;
 * :func:`document_symbols` — the structure tree; :func:`formatting` — through ``aidl fmt``.
 """
 from __future__ import annotations
@@ -146,6 +147,7 @@ class Sym:
     scope: "Scope | None" = None        # members: structures and templates
     value: A.Node | None = None         # variables and params: the assigned expression
     detail: str = ""                    # structure kind, template kind
+    origin: "Index | None" = None       # the document it is defined in
 
 
 @dataclass(eq=False)
@@ -201,6 +203,14 @@ def parse_tolerant(src: str, path: str) -> A.Program:
     return prog
 
 
+def _resolved(path: str) -> str:
+    try:
+        from pathlib import Path
+        return str(Path(path).resolve())
+    except (OSError, ValueError):
+        return path
+
+
 def _name_span(sp: Span, name: str) -> Span:
     return Span(sp.file, sp.line, sp.col, sp.line, sp.col + len(name), sp.start,
                 sp.start + len(name))
@@ -209,9 +219,12 @@ def _name_span(sp: Span, name: str) -> Span:
 class Index:
     """Definitions, scopes and name uses of one parsed document."""
 
-    def __init__(self, src: str, path: str = "doc.aidl"):
+    MAX_IMPORT_DEPTH = 4
+
+    def __init__(self, src: str, path: str = "doc.aidl", _seen: frozenset = frozenset()):
         self.src = src
         self.path = path
+        self._seen = _seen | {_resolved(path)}
         self.program = parse_tolerant(src, path)
         self.scopes: list[Scope] = []
         self.file = self._scope(None, 0, len(src) + 1)
@@ -224,7 +237,36 @@ class Index:
         return s
 
     def _define(self, scope: Scope, sym: Sym) -> None:
+        if sym.origin is None:
+            sym.origin = self
         scope.names.setdefault(sym.name, sym)
+
+    def _import(self, st: A.Import) -> None:
+        """Bind what ``import`` brings: the other file's templates, params and top-level
+        constants (or, with ``as``, a namespace holding them)."""
+        from ..interp import STDLIB
+        from pathlib import Path
+        if len(self._seen) > self.MAX_IMPORT_DEPTH:
+            return
+        if st.path.startswith(("std/", "std:")):
+            p = STDLIB / st.path[4:]
+        else:
+            p = Path(self.path).resolve().parent / st.path
+        if p.suffix != ".aidl":
+            p = p.with_suffix(".aidl")
+        if _resolved(str(p)) in self._seen:
+            return
+        try:
+            text = p.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError, ValueError):
+            return
+        other = Index(text, str(p), self._seen)
+        if st.alias:
+            self._define(self.file, Sym(st.alias, "import", st.span, st, scope=other.file))
+            return
+        for name, sym in other.file.names.items():
+            if sym.kind in ("template", "param", "variable"):
+                self._define(self.file, sym)
 
     def _build(self) -> None:
         for st in self.program.stmts:
@@ -237,8 +279,8 @@ class Index:
                 for p in st.params:
                     self._define(sym.scope, Sym(p.name, "parameter", _name_span(p.span, p.name),
                                                 p, value=p.default))
-            elif isinstance(st, A.Import) and st.alias:
-                self._define(self.file, Sym(st.alias, "import", st.span, st))
+            elif isinstance(st, A.Import):
+                self._import(st)
         for st in self.program.stmts:
             if isinstance(st, A.Def):
                 sym = self.file.names.get(st.name)
@@ -326,10 +368,12 @@ class Index:
     def member_scope(self, sym: Sym | None) -> Scope | None:
         if sym is None:
             return None
-        if sym.kind in ("structure", "template"):
+        if sym.origin is not None and sym.origin is not self:
+            return sym.origin.member_scope(sym)
+        if sym.kind in ("structure", "template", "import"):
             return sym.scope
-        if sym.kind == "variable" and isinstance(sym.value, A.Call) and isinstance(sym.value.func, A.Name):
-            t = self.file.names.get(sym.value.func.id)
+        if sym.kind == "variable" and isinstance(sym.value, A.Call):
+            t = self.resolve(sym.value.func)
             if t is not None and t.kind == "template":
                 return t.scope
         return None
@@ -338,6 +382,8 @@ class Index:
     def type_of_sym(self, sym: Sym | None, depth: int = 0):
         if sym is None or depth > 20:
             return None
+        if sym.origin is not None and sym.origin is not self:
+            return sym.origin.type_of_sym(sym, depth + 1)
         sc = self.member_scope(sym)
         if sc is not None:
             return ("struct", sc)
@@ -459,6 +505,8 @@ def _leading_comment(src: str, offset: int) -> str:
 
 
 def _sym_doc(ix: Index, sym: Sym) -> str:
+    if sym.origin is not None:
+        ix = sym.origin
     src = ix.src
     if sym.kind == "template":
         d: A.Def = sym.node
@@ -474,6 +522,8 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
     first = src[sym.node.span.start:sym.node.span.end].split("\n")[0]
     if len(first) > 120:
         first = first[:117] + "..."
+    if sym.kind == "import":
+        return f"```aidl\n{first}\n```\nimported namespace"
     label = {"param": "model parameter (`--set` overrides it)", "variable": "name",
              "loop": "loop variable", "parameter": "template parameter", "import": "import"}[sym.kind]
     text = f"```aidl\n{first}\n```\n{label}"
@@ -600,8 +650,12 @@ def definition(src: str, line: int, character: int, uri: str, path: str = "doc.a
     """Where the user name at the position is defined (same document), or None."""
     ix = Index(src, path)
     sym = _sym_at(ix, offset_at(src, line, character))
-    if sym is None or sym.kind == "import":
-        return None if sym is None else T.Location(uri=uri, range=span_range(src, sym.span))
+    if sym is None:
+        return None
+    if sym.origin is not None and sym.origin is not ix:       # defined in an imported file
+        from pathlib import Path
+        return T.Location(uri=Path(sym.origin.path).resolve().as_uri(),
+                          range=span_range(sym.origin.src, sym.span))
     return T.Location(uri=uri, range=span_range(src, sym.span))
 
 
@@ -612,7 +666,8 @@ def references(src: str, line: int, character: int, uri: str, include_declaratio
     sym = _sym_at(ix, offset_at(src, line, character))
     if sym is None:
         return []
-    spans = ([sym.span] if include_declaration else []) + ix.references(sym)
+    own = sym.origin is None or sym.origin is ix
+    spans = ([sym.span] if include_declaration and own else []) + ix.references(sym)
     return [T.Location(uri=uri, range=span_range(src, sp)) for sp in spans]
 
 
