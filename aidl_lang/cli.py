@@ -1,5 +1,5 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain`` (and ``prompt``, ``generate``,
-``eval`` from :mod:`aidl_lang.llm_cli`).
+"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp`` (and
+``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.llm_cli`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
 An output file is written only when the whole pipeline succeeded (written to a temporary file
@@ -42,6 +42,10 @@ def _parser() -> argparse.ArgumentParser:
                         "redundant constraints")
     e = sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
+    f = sub.add_parser("fmt", help="format .aidl files in place (canonical layout)")
+    f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
+    f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
+    sub.add_parser("lsp", help="run the language server on stdin/stdout (for editors)")
     from .llm_cli import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
@@ -170,12 +174,22 @@ def cmd_explain(args) -> int:
     return 0
 
 
+def cmd_fmt(args) -> int:
+    from .fmt import main as fmt_main
+    return fmt_main(args.files, check=args.check)
+
+
+def cmd_lsp(args) -> int:
+    from .lsp.server import main as lsp_main
+    return lsp_main()
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         from .llm_cli import COMMANDS
-        return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain}
-                | COMMANDS)[args.cmd](args)
+        return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
+                 "fmt": cmd_fmt, "lsp": cmd_lsp} | COMMANDS)[args.cmd](args)
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:          # `aidl check --json | head`

@@ -3,7 +3,7 @@
 # hanging hole at the end, and an engraved label.
 # Try: --set length=140  --set head_d=56  --set grips=6
 
-param length = 110 mm      # from the head's center to the end of the handle
+param length = 110 mm  # from the head's center to the end of the handle
 param head_d = 48 mm
 param handle_w = 26 mm
 param grips = 4

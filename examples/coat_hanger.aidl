@@ -4,20 +4,20 @@
 # outline of two concentric arcs and two end caps, finished with a ball tip.
 # Try: --set width=460  --set drop=120  --set bar=18
 
-param width = 420 mm      # shoulder tip to shoulder tip
-param drop = 140 mm       # from the apex down to the bottom edge of the bar
-param bar = 14 mm         # thickness of the frame
-param hook_r = 24 mm      # inner radius of the hook (fits a closet rod)
+param width = 420 mm  # shoulder tip to shoulder tip
+param drop = 140 mm   # from the apex down to the bottom edge of the bar
+param bar = 14 mm     # thickness of the frame
+param hook_r = 24 mm  # inner radius of the hook (fits a closet rod)
 param neck = 35 mm
 
-wire = 8 mm               # thickness of the hook
+wire = 8 mm  # thickness of the hook
 
 # the inner opening is the outer triangle shrunk about its incenter so that
 # every side of the frame is `bar` thick
 side = sqrt(square(width / 2) + square(drop))
-inr = (width * drop / 2) / (side + width / 2)   # inradius of the outer triangle
+inr = (width * drop / 2) / (side + width / 2)  # inradius of the outer triangle
 k = (inr - bar) / inr
-iy = -drop + inr                                # incenter height (apex at y = 0)
+iy = -drop + inr  # incenter height (apex at y = 0)
 
 solid hanger {
     solid body {

@@ -2,13 +2,13 @@
 # whose teeth (the bitting) are made by a loop, and a pointed tip.
 # Try: --set blade_length=65  --set bow_d=34  --set blade_h=10
 
-param bow_d = 30 mm           # diameter of the bow (the part you hold)
+param bow_d = 30 mm  # diameter of the bow (the part you hold)
 param blade_length = 55 mm
-param blade_h = 8 mm          # height of the blade above the teeth
+param blade_h = 8 mm  # height of the blade above the teeth
 
-cuts = [3, 1.5, 4, 2, 3.5, 2.5]      # depth of each tooth, in mm (the key's code)
+cuts = [3, 1.5, 4, 2, 3.5, 2.5]  # depth of each tooth, in mm (the key's code)
 pitch = blade_length / (len(cuts) + 1.5)
-x0 = bow_d / 2 + 4                    # where the blade starts
+x0 = bow_d / 2 + 4  # where the blade starts
 
 solid key {
     solid bow {
@@ -54,6 +54,6 @@ solid key {
     # bow | shoulder | blade, all on one axis
     AlignCenterY(shoulder, bow)
     AlignCenterY(blade.shank, shoulder)
-    shoulder.bb.left == bow.bb.right - 1     # overlaps the bow a little
+    shoulder.bb.left == bow.bb.right - 1  # overlaps the bow a little
     RightOf(blade.shank, shoulder, gap=-1)
 }

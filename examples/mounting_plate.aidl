@@ -9,11 +9,11 @@ import "std/shapes.aidl"
 
 param width = 120 mm
 param height = 80 mm
-param motor_pcd = 40 mm        # bolt circle of the motor flange
-param screw = 5 mm             # corner screw size
+param motor_pcd = 40 mm  # bolt circle of the motor flange
+param screw = 5 mm       # corner screw size
 param washers = 4
 
-inset = 8 mm                   # corner holes: distance from the edges
+inset = 8 mm  # corner holes: distance from the edges
 
 assembly kit {
     solid plate {

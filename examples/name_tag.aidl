@@ -8,7 +8,7 @@ param title = "Analytical Engine Programmer"
 param width = 90 mm
 param height = 55 mm
 
-name_size = min(8 mm, (width - 20 mm) / len(name))      # shrink long names to fit
+name_size = min(8 mm, (width - 20 mm) / len(name))  # shrink long names to fit
 
 solid tag {
     card = RoundedRectangle(center=(0, 0), width=width, height=height, corner_radius=5)

@@ -5,41 +5,41 @@
 # Horizontal, Concentric, Symmetric and Equal keep its form.
 # Try: --set length=240  --set cup_depth=60  --set thickness=18
 
-param length = 210 mm       # across the two cup faces
-param cup_depth = 50 mm     # how far the cup faces sit below the handle's ends
-param thickness = 24 mm     # thickness of the arched handle
-param face = 56 mm          # width of each cup's face
+param length = 210 mm    # across the two cup faces
+param cup_depth = 50 mm  # how far the cup faces sit below the handle's ends
+param thickness = 24 mm  # thickness of the arched handle
+param face = 56 mm       # width of each cup's face
 
 half = length / 2
-bend = 120 mm               # the arch's center lies this far below the axis
-neck = 38 mm                # width of a cup where it joins the handle
-r_in = sqrt(square(half - face + 9 mm) + square(bend - 20 mm))   # arch underside radius
+bend = 120 mm                                                   # the arch's center lies this far below the axis
+neck = 38 mm                                                    # width of a cup where it joins the handle
+r_in = sqrt(square(half - face + 9 mm) + square(bend - 20 mm))  # arch underside radius
 r_out = r_in + thickness
-gx = sqrt(square(r_out) - square(bend - 18 mm))       # handle top meets the cups' backs
-rim = 5 mm                                            # cap rims, this far above the faces
-rim_out = (half - gx) * rim / (cup_depth - 18 mm)     # where a rim meets the outer side
-rim_in = 9 mm * rim / (cup_depth - 20 mm)             # ... and the inner side
+gx = sqrt(square(r_out) - square(bend - 18 mm))    # handle top meets the cups' backs
+rim = 5 mm                                         # cap rims, this far above the faces
+rim_out = (half - gx) * rim / (cup_depth - 18 mm)  # where a rim meets the outer side
+rim_in = 9 mm * rim / (cup_depth - 20 mm)          # ... and the inner side
 
 solid handset {
     solid body {
         # outline points, counter-clockwise from the earpiece face's outer end
-        a = Point(-half, -cup_depth)                    # earpiece face, outer end
-        b = Point(-half + face, -cup_depth)             # earpiece face, inner end
-        c = Point(-half + face - 9 mm, -20)             # arch underside, left foot
-        d = Point(half - face + 9 mm, -20)              # arch underside, right foot
-        e = Point(half - face, -cup_depth)              # mouthpiece face, inner end
-        f = Point(half, -cup_depth)                     # mouthpiece face, outer end
-        g = Point(gx, -18)   # handle top, right end
-        h = Point(-gx, -18)  # handle top, left end
-        o = Point(0, -bend)                             # center of the arch
+        a = Point(-half, -cup_depth)         # earpiece face, outer end
+        b = Point(-half + face, -cup_depth)  # earpiece face, inner end
+        c = Point(-half + face - 9 mm, -20)  # arch underside, left foot
+        d = Point(half - face + 9 mm, -20)   # arch underside, right foot
+        e = Point(half - face, -cup_depth)   # mouthpiece face, inner end
+        f = Point(half, -cup_depth)          # mouthpiece face, outer end
+        g = Point(gx, -18)                   # handle top, right end
+        h = Point(-gx, -18)                  # handle top, left end
+        o = Point(0, -bend)                  # center of the arch
 
         ear_face = Line(a, b)
         ear_inner = Line(b, c)
-        under = Arc(center=o, start=d, end=c)           # underside of the handle
+        under = Arc(center=o, start=d, end=c)  # underside of the handle
         mouth_inner = Line(d, e)
         mouth_face = Line(e, f)
         mouth_outer = Line(f, g)
-        top = Arc(center=o, start=g, end=h)             # top of the handle
+        top = Arc(center=o, start=g, end=h)  # top of the handle
         ear_outer = Line(h, a)
 
         axis = Line((0, -cup_depth), (0, 30), construction=true)

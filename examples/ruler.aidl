@@ -5,10 +5,10 @@
 
 param length_cm = 15
 param width = 36 mm
-margin = 8 mm                 # blank bar before the zero mark
-tail = 22 mm                  # blank bar after the last mark (holds the hole)
+margin = 8 mm  # blank bar before the zero mark
+tail = 22 mm   # blank bar after the last mark (holds the hole)
 scale_len = length_cm * 10 mm
-inches = floor(scale_len / 25.4 mm * 8) # number of 1/8 inch steps that fit
+inches = floor(scale_len / 25.4 mm * 8)  # number of 1/8 inch steps that fit
 
 solid ruler {
     bar = RoundedRectangle(center=((margin + scale_len + tail) / 2, width / 2),

@@ -4,14 +4,14 @@
 # an earpiece cup and a mouthpiece cup, and a coiled cord.
 # Try: --set base_w=180  --set dial_r=38  --set handset_len=190
 
-param base_w = 160 mm       # width of the base at the bottom
+param base_w = 160 mm  # width of the base at the bottom
 param base_h = 90 mm
 param dial_r = 34 mm
 param handset_len = 170 mm
 
-top_w = 0.7 * base_w        # the base narrows toward the top
-hole_r = 5.5 mm             # finger holes
-ring_r = 0.72 * dial_r      # finger holes sit on this circle
+top_w = 0.7 * base_w    # the base narrows toward the top
+hole_r = 5.5 mm         # finger holes
+ring_r = 0.72 * dial_r  # finger holes sit on this circle
 dial_y = 0.48 * base_h
 prong_h = 16 mm
 grip_h = 12 mm

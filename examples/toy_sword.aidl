@@ -11,7 +11,7 @@ param pommel_d = 34 mm
 
 guard_h = 14 mm
 grip_w = 24 mm
-wraps = 7                    # number of cord wraps drawn on the grip
+wraps = 7  # number of cord wraps drawn on the grip
 
 solid sword {
     solid blade {

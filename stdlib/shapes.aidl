@@ -4,7 +4,7 @@
 # (CenterInside, Above, Coincident, ...) in the structure that uses it.
 
 # A flat washer: a ring with a concentric bore. Diameters.
-def washer(outer = 10 mm, inner = 5 mm, cx = 0 mm, cy = 0 mm) -> solid {
+def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
     ring = Circle(center=(cx, cy), diameter=outer)
     hole bore {
         b = Circle(center=(cx, cy), diameter=inner)
@@ -14,8 +14,8 @@ def washer(outer = 10 mm, inner = 5 mm, cx = 0 mm, cy = 0 mm) -> solid {
 
 # `count` holes of diameter `hole_d` evenly spaced on a circle of diameter
 # `pcd` (pitch circle diameter), the first at angle `start`.
-def bolt_circle(count = 6, pcd = 40 mm, hole_d = 5 mm, start = 0 deg,
-                cx = 0 mm, cy = 0 mm) -> hole {
+def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
+                cx=0 mm, cy=0 mm) -> hole {
     pitch = Circle(center=(cx, cy), diameter=pcd, construction=true)
     for i in range(count) {
         a = start + i * 360 deg / count
@@ -27,7 +27,7 @@ def bolt_circle(count = 6, pcd = 40 mm, hole_d = 5 mm, start = 0 deg,
 # A mounting tab: a rectangle with a round end (pointing up) and a hole in
 # the round end. `length` runs from the flat base to the tip of the round end
 # (make it at least `width`, or the round end pokes out below the base).
-def rounded_tab(width = 20 mm, length = 20 mm, hole_d = 6 mm, cx = 0 mm, cy = 0 mm) -> solid {
+def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
     stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
     end = Circle(center=(cx, cy + length - width / 2), diameter=width)
     hole eye {
@@ -38,12 +38,12 @@ def rounded_tab(width = 20 mm, length = 20 mm, hole_d = 6 mm, cx = 0 mm, cy = 0 
 }
 
 # An oblong hole, e.g. for an adjustable screw.
-def slot_hole(length = 20 mm, width = 5 mm, rotation = 0 deg, cx = 0 mm, cy = 0 mm) -> hole {
+def slot_hole(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
 }
 
 # A hexagonal pocket for a nut, sized across flats.
-def hex_pocket(across_flats = 8 mm, cx = 0 mm, cy = 0 mm) -> hole {
+def hex_pocket(across_flats=8 mm, cx=0 mm, cy=0 mm) -> hole {
     hex = RegularPolygon(center=(cx, cy), radius=across_flats / 2 / cos(30 deg), sides=6,
                          rotation=30 deg)
 }

@@ -2,8 +2,8 @@
 
 # A spur gear with `teeth` trapezoid teeth of module `module` (the pitch
 # diameter is module * teeth), a bore and a keyway. `phase` turns the teeth.
-def spur_gear(teeth = 12, module = 2 mm, bore = 6 mm, phase = 0 deg,
-              cx = 0 mm, cy = 0 mm) -> solid {
+def spur_gear(teeth=12, module=2 mm, bore=6 mm, phase=0 deg,
+              cx=0 mm, cy=0 mm) -> solid {
     pitch_r = module * teeth / 2
     root_r = pitch_r - 1.25 * module
     tip_r = pitch_r + module
@@ -30,11 +30,11 @@ def spur_gear(teeth = 12, module = 2 mm, bore = 6 mm, phase = 0 deg,
 }
 
 # A gear with lightening holes in its web (for larger gears).
-def spoked_gear(teeth = 30, module = 2 mm, bore = 8 mm, phase = 0 deg, windows = 5,
-                cx = 0 mm, cy = 0 mm) -> solid {
+def spoked_gear(teeth=30, module=2 mm, bore=8 mm, phase=0 deg, windows=5,
+                cx=0 mm, cy=0 mm) -> solid {
     g = spur_gear(teeth=teeth, module=module, bore=bore, phase=phase, cx=cx, cy=cy)
     root_r = module * teeth / 2 - 1.25 * module
-    web_r = (root_r + bore / 2) / 2        # halfway between the bore and the root
+    web_r = (root_r + bore / 2) / 2  # halfway between the bore and the root
     hole lightening {
         ring = Circle(center=(cx, cy), radius=web_r, construction=true)
         for i in range(windows) {

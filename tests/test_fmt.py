@@ -1,0 +1,256 @@
+"""`aidl fmt`: canonical, idempotent, meaning-preserving, keeps comments."""
+import subprocess
+import sys
+
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.fmt import FormatError, comments, dump, format_source
+from aidl_lang.parser import parse
+
+from conftest import EXAMPLES, ROOT
+
+ALL_FILES = EXAMPLES + sorted((ROOT / "examples" / "parts").glob("*.aidl")) + sorted(
+    (ROOT / "stdlib").glob("*.aidl"))
+
+
+def ast_of(src: str):
+    sink = DiagnosticSink()
+    prog = parse(src, "t.aidl", sink)
+    assert not sink.has_errors, [d.message for d in sink.items]
+    return dump(prog)
+
+
+def check_laws(src: str) -> str:
+    out = format_source(src, "t.aidl")
+    assert format_source(out, "t.aidl") == out                 # idempotent
+    assert ast_of(out) == ast_of(src)                          # same program
+    assert comments(out) == comments(src)                      # every comment, in order
+    assert out.endswith("\n") or out == ""
+    assert "\n\n\n" not in out and not out.startswith("\n")
+    assert all(line == line.rstrip() for line in out.splitlines())
+    return out
+
+
+@pytest.mark.parametrize("path", ALL_FILES, ids=lambda p: p.name)
+def test_bundled_files_are_formatted(path):
+    src = path.read_text()
+    assert check_laws(src) == src, f"run `aidl fmt {path.relative_to(ROOT)}`"
+
+
+def test_cli_check_passes_on_examples():
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "--check",
+                        *map(str, ALL_FILES)], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert r.stdout == ""
+
+
+MESSY = """\
+// header comment
+units mm ;  param w=10mm   // the width here
+/* block
+   comment */
+solid a { c = Circle(center=(0,0), radius=-w/2) ; d = Circle((0,0),2)}
+
+
+solid b {
+
+  if w > 5 { x = 1 }
+  else { x = 2 } # after else
+  for i in range(3) { p = Point(i*2, - i) }
+  pts = [
+     (0, 0), # first
+     # own line
+     (1, 1),
+  ]
+  y = -1 if w>2
+     else 3
+  z = w // 2 + 1
+  q = 30deg+1°
+  s = f"{w:.1f} mm"
+}
+"""
+
+MESSY_OUT = """\
+// header comment
+units mm
+param w = 10 mm  // the width here
+/* block
+   comment */
+solid a {
+    c = Circle(center=(0, 0), radius=-w / 2)
+    d = Circle((0, 0), 2)
+}
+
+solid b {
+    if w > 5 {
+        x = 1
+    } else {
+        x = 2
+    }  # after else
+    for i in range(3) {
+        p = Point(i * 2, -i)
+    }
+    pts = [
+        (0, 0),  # first
+        # own line
+        (1, 1),
+    ]
+    y = -1 if w > 2 else 3
+    z = w // 2 + 1
+    q = 30 deg + 1°
+    s = f"{w:.1f} mm"
+}
+"""
+
+
+def test_messy_layout_is_canonicalised():
+    assert check_laws(MESSY) == MESSY_OUT
+
+
+def test_aligned_trailing_comments_and_continuation_lines():
+    src = "a = 1 # one\nlonger_name = 2   # two\n\nr = Rectangle(center=(0, 0),\n  width=2, height=3)\n"
+    assert check_laws(src) == ("a = 1            # one\nlonger_name = 2  # two\n\n"
+                               "r = Rectangle(center=(0, 0),\n              width=2, height=3)\n")
+
+
+def test_syntax_error_is_refused_and_file_untouched(tmp_path):
+    bad = "solid a {\n    x = (1 +\n}\n"
+    with pytest.raises(FormatError) as e:
+        format_source(bad)
+    assert e.value.sink.items[0].code == "E0001"
+    p = tmp_path / "bad.aidl"
+    p.write_text(bad)
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", str(p)],
+                       capture_output=True, text=True)
+    assert r.returncode == 1
+    assert "E0001" in r.stderr and "bad.aidl:3:1" in r.stderr
+    assert p.read_text() == bad
+
+
+def test_cli_writes_check_and_stdin(tmp_path):
+    p = tmp_path / "m.aidl"
+    p.write_text("x=1;y=2\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "--check", str(p)],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and f"would reformat {p}" in r.stdout
+    assert p.read_text() == "x=1;y=2\n"
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", str(p)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0 and p.read_text() == "x = 1\ny = 2\n"
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "-"], input="a=( 1+2 )",
+                       capture_output=True, text=True)
+    assert r.returncode == 0 and r.stdout == "a = (1 + 2)\n"
+
+
+# ------------------------------------------------------------------ generated programs
+NAMES = st.sampled_from(["a", "b", "w", "h", "count", "x1", "body"])
+WS = st.sampled_from(["", " ", "  ", "\t"])
+NUMS = st.sampled_from(["1", "2.5", "10mm", "10 mm", "30°", "45deg", "0.5 in", ".5", "1e3"])
+COMMENT = st.sampled_from(["# note", "// a prose comment", "/* inline */", "#", "# x = 1"])
+
+
+@st.composite
+def expr(draw, depth=0):
+    if depth > 2 or draw(st.booleans()):
+        return draw(st.one_of(NUMS, NAMES, st.just('"txt"'), st.just('f"{a} mm"')))
+    kind = draw(st.sampled_from(["bin", "neg", "call", "tuple", "list", "member", "paren",
+                                 "cmp", "tern"]))
+    sub = lambda: draw(expr(depth + 1))  # noqa: E731
+    w = lambda: draw(WS)  # noqa: E731
+    if kind == "bin":
+        return f"{sub()}{w()}{draw(st.sampled_from(['+', '-', '*', '/', '%', '**']))}{w()}{sub()}"
+    if kind == "neg":
+        return f"-{w()}{draw(NAMES)}"
+    if kind == "call":
+        args = [sub() for _ in range(draw(st.integers(0, 3)))]
+        if draw(st.booleans()):
+            args.append(f"{draw(NAMES)}{w()}={w()}{sub()}")
+        seps = [draw(st.sampled_from([",", ", ", ",\n   ", " ,"])) for _ in args]
+        return f"{draw(NAMES)}({w()}" + "".join(a + s for a, s in zip(args, seps))[:-1] + ")" \
+            if args else f"{draw(NAMES)}()"
+    if kind == "tuple":
+        return f"({sub()},{w()}{sub()})"
+    if kind == "list":
+        items = [sub() for _ in range(draw(st.integers(0, 3)))]
+        return "[" + draw(st.sampled_from([",", ", ", ",\n"])).join(items) + "]"
+    if kind == "member":
+        return f"{draw(NAMES)}.{draw(NAMES)}"
+    if kind == "paren":
+        return f"({w()}{sub()}{w()})"
+    if kind == "cmp":
+        return f"{sub()}{w()}{draw(st.sampled_from(['==', '<=', '>', '!=']))}{w()}{sub()}"
+    return f"{sub()} if {sub()} else {sub()}"
+
+
+@st.composite
+def stmt(draw, depth=0):
+    kind = draw(st.sampled_from(["assign", "expr", "struct", "for", "if", "comment"]
+                                if depth < 3 else ["assign", "expr", "comment"]))
+    w = lambda: draw(WS)  # noqa: E731
+    if kind == "assign":
+        return f"{draw(NAMES)}{w()}={w()}{draw(expr())}"
+    if kind == "expr":
+        return draw(expr())
+    if kind == "comment":
+        return draw(COMMENT)
+    body = draw(block(depth + 1))
+    if kind == "struct":
+        return f"{draw(st.sampled_from(['solid', 'hole', 'drawing', 'assembly']))} {draw(NAMES)}{w()}{body}"
+    if kind == "for":
+        return f"for {draw(NAMES)} in {draw(expr())}{w()}{body}"
+    tail = draw(st.sampled_from(["", " else {}", "\nelse { a = 1 }", " elif a { b = 2 }"]))
+    return f"if {draw(expr())} {body}{tail}"
+
+
+SEP = st.sampled_from(["\n", "\n\n", "\n\n\n", ";", " ; ", "  # trailing\n", "\n  \n"])
+
+
+@st.composite
+def block(draw, depth=0):
+    stmts = draw(st.lists(stmt(depth), max_size=4))
+    parts = []
+    for s in stmts:
+        sep = draw(SEP)
+        if s.startswith(("#", "//")) and not sep.endswith("\n"):
+            sep = "\n"
+        parts.append(s + sep)
+    return "{" + draw(st.sampled_from(["", "\n", " "])) + "".join(parts) + "}"
+
+
+@st.composite
+def program(draw):
+    head = draw(st.sampled_from(["", "units mm\n", "param w = 4 mm # width\n",
+                                 "// file comment\n\n", "def t(a=1, b: 2) -> solid { c = a }\n"]))
+    body = draw(block())
+    return head + body[1:-1] + draw(st.sampled_from(["", "\n", "\n\n"]))
+
+
+def _parses(src: str) -> bool:
+    sink = DiagnosticSink()
+    parse(src, "t.aidl", sink)
+    return not sink.has_errors
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(program())
+def test_generated_programs_obey_the_laws(src):
+    if not _parses(src):          # the generator is loose; the laws hold for valid programs
+        with pytest.raises(FormatError):
+            format_source(src)
+        return
+    check_laws(src)
+
+
+def test_a_meaning_changing_layout_is_refused(monkeypatch, tmp_path):
+    import aidl_lang.fmt as F
+    monkeypatch.setattr(F, "_layout", lambda src, items: src.replace("1", "2"))
+    with pytest.raises(F.FormatterBug):
+        F.format_source("x = 1\n")
+    monkeypatch.setattr(F, "_layout", lambda src, items: src.replace("# c", ""))
+    with pytest.raises(F.FormatterBug):
+        F.format_source("x = 1 # c\n")
+    p = tmp_path / "a.aidl"
+    p.write_text("x = 1 # c\n")
+    assert F.main([str(p)]) == 3 and p.read_text() == "x = 1 # c\n"
