@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import Expr, Nl, evaluate, func, var
+from .expr import Expr, Nl, evaluate, func, rebuild, var
 from .model import Geometry, Structure
 
 SIDES = ("left", "right", "bottom", "top")
@@ -47,20 +47,19 @@ def collect(e, out: list) -> list:
     return out
 
 
-def expand(e, x, exclude: set):
-    """Replace every BBTerm in ``e`` by its min/max expression (at parameter values ``x``)."""
+def expand(e, x, exclude: set, cache: dict | None = None, boxes: dict | None = None):
+    """Replace every BBTerm in ``e`` by its min/max expression (at parameter values ``x``).
+
+    ``cache`` is passed on to :func:`side_expr`; ``boxes``, if given, records each box used as
+    ``(id(target), id(frame)) -> [target, frame, axes]`` (for the solver's non-inversion rows).
+    """
     if isinstance(e, BBTerm):
-        return side_expr(e.target, e.side, e.frame, x, exclude)
+        if boxes is not None:
+            ent = boxes.setdefault((id(e.target), id(e.frame)), [e.target, e.frame, set()])
+            ent[2].add("x" if e.side in ("left", "right") else "y")
+        return side_expr(e.target, e.side, e.frame, x, exclude, cache)
     if isinstance(e, Nl):
-        args = tuple(expand(a, x, exclude) for a in e.args)
-        from .expr import add, div, mul
-        if e.op == "add":
-            return add(*args)
-        if e.op == "mul":
-            return mul(*args)
-        if e.op == "div":
-            return div(*args)
-        return Nl(e.op, args)
+        return rebuild(e.op, tuple(expand(a, x, exclude, cache, boxes) for a in e.args))
     return e
 
 

@@ -1,9 +1,10 @@
 """Residual expressions over the model's parameter vector, with analytic gradients.
 
 An expression is either affine, :class:`Lin` (``sum(coef_i * x_i) + c``: most CAD constraints,
-kept as sparse rows so the solver evaluates all of them in one sparse product), or a nonlinear
-:class:`Nl` tree whose value and gradient are evaluated in forward mode.  Values are in mm and
-radians.  ``min``/``max`` nodes are pruned to their active branch before solving (paper,
+kept as sparse rows), or a nonlinear :class:`Nl` tree.  Values are in mm and radians.
+:func:`evaluate` computes one value in Python (the interpreter's starting values, branch
+choices); the solver compiles expressions into a vectorised tape with a reverse-mode Jacobian
+(:mod:`aidl_lang.solver.tape`), where ``min``/``max`` become frozen branch selections (paper,
 appendix "Solver Details", *Iterated Newton solve for branching expressions*).
 """
 from __future__ import annotations
@@ -131,18 +132,9 @@ def div(a, b) -> Expr:
     return Nl("div", (a, b))
 
 
-_UNARY = {
-    "sin": (math.sin, math.cos),
-    "cos": (math.cos, lambda v: -math.sin(v)),
-    "tan": (math.tan, lambda v: 1.0 / math.cos(v) ** 2),
-    "asin": (math.asin, lambda v: 1.0 / math.sqrt(max(1e-300, 1 - v * v))),
-    "acos": (math.acos, lambda v: -1.0 / math.sqrt(max(1e-300, 1 - v * v))),
-    "atan": (math.atan, lambda v: 1.0 / (1 + v * v)),
-    "sqrt": (math.sqrt, lambda v: 0.5 / math.sqrt(v) if v > 1e-300 else 1e150),
-    "abs": (abs, lambda v: 1.0 if v >= 0 else -1.0),
-    "exp": (math.exp, math.exp),
-    "log": (math.log, lambda v: 1.0 / v),
-}
+_UNARY = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
+          "acos": math.acos, "atan": math.atan, "sqrt": math.sqrt, "abs": abs,
+          "exp": math.exp, "log": math.log}
 
 
 def func(op: str, *args) -> Expr:
@@ -151,7 +143,7 @@ def func(op: str, *args) -> Expr:
     consts = [as_const(a) for a in args]
     if all(c is not None for c in consts):
         if op in _UNARY:
-            return const(_UNARY[op][0](consts[0]))
+            return const(_UNARY[op](consts[0]))
         if op == "atan2":
             return const(math.atan2(consts[0], consts[1]))
         if op == "min":
@@ -201,83 +193,16 @@ def evaluate(e, x) -> float:
         v = max(-1.0, min(1.0, v))
     if op == "sqrt":
         v = max(0.0, v)
-    return _UNARY[op][0](v)
+    return _UNARY[op](v)
 
 
-def value_and_grad(e, x) -> tuple[float, dict[int, float]]:
-    """Value of ``e`` at ``x`` and its gradient as a sparse dict {index: d e / d x_index}."""
-    if isinstance(e, Lin):
-        return evaluate(e, x), dict(e.terms)
-    op, args = e.op, e.args
-    if op in ("add", "mul", "div", "pow", "atan2"):
-        a, ga = value_and_grad(args[0], x)
-        b, gb = value_and_grad(args[1], x)
-        if op == "add":
-            return a + b, _comb(ga, 1.0, gb, 1.0)
-        if op == "mul":
-            return a * b, _comb(ga, b, gb, a)
-        if op == "div":
-            bb = b if b != 0 else 1e-300
-            return a / bb, _comb(ga, 1.0 / bb, gb, -a / (bb * bb))
-        if op == "atan2":
-            r2 = a * a + b * b or 1e-300
-            return math.atan2(a, b), _comb(ga, b / r2, gb, -a / r2)
-        # pow
-        v = a ** b
-        ca = b * a ** (b - 1) if a != 0 or b >= 1 else 0.0
-        cb = v * math.log(a) if a > 0 else 0.0
-        return v, _comb(ga, ca, gb, cb)
-    if op in ("min", "max"):
-        vals = [value_and_grad(a, x) for a in args]
-        pick = (min if op == "min" else max)(range(len(vals)), key=lambda i: vals[i][0])
-        return vals[pick]
-    a, ga = value_and_grad(args[0], x)
-    if op in ("asin", "acos"):
-        a = max(-1.0, min(1.0, a))
-    if op == "sqrt":
-        a = max(0.0, a)
-    f, df = _UNARY[op]
-    d = df(a)
-    return f(a), {k: v * d for k, v in ga.items()}
-
-
-def _comb(ga: dict, ca: float, gb: dict, cb: float) -> dict:
-    out = {k: v * ca for k, v in ga.items()} if ca != 0 else {}
-    if cb != 0:
-        for k, v in gb.items():
-            out[k] = out.get(k, 0.0) + v * cb
-    return out
-
-
-def variables(e, out: set | None = None) -> set[int]:
-    out = set() if out is None else out
-    if isinstance(e, Lin):
-        out.update(e.terms)
-    elif isinstance(e, Nl):
-        for a in e.args:
-            variables(a, out)
-    return out
-
-
-def has_branches(e) -> bool:
-    if isinstance(e, Nl):
-        return e.op in ("min", "max") or any(has_branches(a) for a in e.args)
-    return False
-
-
-def prune(e, x):
-    """Replace each min/max by its branch active at ``x`` (returns a branch-free expression)."""
-    if not isinstance(e, Nl):
-        return e
-    if e.op in ("min", "max"):
-        vals = [evaluate(a, x) for a in e.args]
-        i = (min if e.op == "min" else max)(range(len(vals)), key=lambda k: vals[k])
-        return prune(e.args[i], x)
-    args = tuple(prune(a, x) for a in e.args)
-    if e.op == "add":
+def rebuild(op: str, args: tuple) -> Expr:
+    """The node ``op(*args)`` rebuilt after its arguments were replaced, folding constants
+    again where the arithmetic helpers can (used when expanding deferred terms)."""
+    if op == "add":
         return add(*args)
-    if e.op == "mul":
+    if op == "mul":
         return mul(*args)
-    if e.op == "div":
+    if op == "div":
         return div(*args)
-    return Nl(e.op, args)
+    return Nl(op, args)

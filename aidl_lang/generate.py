@@ -129,7 +129,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
 
 
 def transcript_markdown(res: Result) -> str:
-    out = [f"# aidl generate transcript\n", f"- prompt: {res.prompt}", f"- model: {res.model}",
+    out = ["# aidl generate transcript\n", f"- prompt: {res.prompt}", f"- model: {res.model}",
            f"- result: {'valid' if res.ok else 'not valid'} after {len(res.rounds)} round(s)\n"]
     for r in res.rounds:
         out.append(f"## Round {r.number}: {'valid' if r.ok else 'errors ' + ', '.join(r.error_codes)}\n")

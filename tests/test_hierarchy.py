@@ -305,3 +305,54 @@ def test_random_well_posed_sketches_solve_back_to_their_solution(family, n, seed
     pts = {g.name: g.points["p"] for g in m.all_geometry() if g.kind == "Point"}
     err = max(np.linalg.norm(pt(m, pts[k]) - v) for k, v in case.solution.items())
     assert err < 1e-6
+
+
+# ------------------------------------------------------------------ the tape itself
+# abs is left out: central differences disagree with any one-sided derivative at its kink
+_OPS = st.sampled_from(["add", "mul", "div", "sin", "cos", "atan", "sqrt", "atan2", "min", "max",
+                        "exp"])
+
+
+@st.composite
+def _expr(draw, depth=3):
+    from aidl_lang.expr import Lin, Nl
+    if depth == 0 or draw(st.booleans()):
+        k = draw(st.integers(1, 3))
+        terms = {draw(st.integers(0, 5)): draw(st.floats(-2, 2)) for _ in range(k)}
+        return Lin(terms, draw(st.floats(-1, 1)))
+    op = draw(_OPS)
+    a = draw(_expr(depth - 1))
+    if op in ("sin", "cos", "atan", "exp"):
+        return Nl(op, (a,))
+    if op == "sqrt":
+        return Nl("mul", (Nl("sqrt", (Nl("mul", (a, a)),)), a))     # sqrt of a square: > 0
+    b = draw(_expr(depth - 1))
+    positive = Nl("add", (Nl("mul", (b, b)), Lin({}, 1.0)))     # >= 1: away from singularities
+    if op in ("div", "atan2"):
+        return Nl(op, (a, positive))
+    return Nl(op, (a, b))
+
+
+@settings(max_examples=60, deadline=None)
+@given(exprs=st.lists(_expr(), min_size=1, max_size=4),
+       x=st.lists(st.floats(-1.5, 1.5), min_size=6, max_size=6))
+def test_tape_values_and_jacobian_match_the_expressions(exprs, x):
+    """Tape values equal expr.evaluate; its reverse-mode Jacobian equals central differences."""
+    from aidl_lang.expr import evaluate
+    from aidl_lang.solver.tape import Tape
+    x = np.asarray(x)
+    t = Tape(exprs, 6)
+    F = t.evaluate(x)
+    assert F == pytest.approx([evaluate(e, x) for e in exprs], rel=1e-12, abs=1e-12)
+    cols = np.arange(6)
+    ch = t.choose(x)
+    J = t.jacobian(x, cols, ch, dense=True)
+    h = 1e-6
+    for k in range(6):
+        xp, xm = x.copy(), x.copy()
+        xp[k] += h
+        xm[k] -= h
+        fd = (t.evaluate(xp, ch) - t.evaluate(xm, ch)) / (2 * h)
+        assert J[:, k] == pytest.approx(fd, rel=1e-4, abs=1e-4)
+    # the sparse and dense Jacobians agree
+    assert t.jacobian(x, cols, ch).toarray() == pytest.approx(J)

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
-from .system import LINK, SIGN, build_rows
+from .system import LINK, SIGN, build_rows, user_residuals
 from .tape import Tape
 
 
@@ -89,19 +89,9 @@ def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResul
 
 
 def _row_residuals(solver: Solver, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Residual of each row as the user sees it: |F| for equations, the violation
-    max(0, -g) for an inequality (reported on its LINK row; its SIGN row reports 0)."""
     if not len(rows):
         return np.zeros(0)
-    F = solver.tape(rows).evaluate(x)
-    kind = solver.kind[rows]
-    out = np.abs(F)
-    link = kind == LINK
-    if link.any():
-        g = F[link] + x[solver.slack[rows[link]]]
-        out[link] = np.maximum(0.0, -g)
-    out[kind == SIGN] = 0.0
-    return out
+    return user_residuals(solver, rows, solver.tape(rows).evaluate(x), x)
 
 
 def constraint_residuals(model: Model) -> list[tuple[Constraint, float]]:

@@ -26,7 +26,7 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
 from ..model import Constraint
-from .system import LINK, SIGN
+from .system import user_residuals
 
 DEP_TOL = 1e-7
 MAX_DENSE = 3000
@@ -86,23 +86,12 @@ def dependencies(J: np.ndarray, order: list[int]):
         yield r, [indep[i] for i in np.flatnonzero(big)], c[big]
 
 
-def _component_rows(J: sp.csr_matrix, seeds: np.ndarray) -> np.ndarray:
-    """Rows connected (through shared unknowns) to the rows ``seeds``."""
-    m, n = J.shape
+def _components(J: sp.csr_matrix) -> np.ndarray:
+    """A component label per row of ``J``: rows sharing an unknown are connected."""
+    m = J.shape[0]
     B = sp.bmat([[None, J], [J.T, None]]).tocsr()
     _, lab = connected_components(B, directed=False)
-    keep = np.isin(lab[:m], np.unique(lab[seeds]))
-    return np.flatnonzero(keep)
-
-
-def _user_residuals(solver, rows: np.ndarray, F: np.ndarray, x: np.ndarray) -> np.ndarray:
-    kind = solver.kind[rows]
-    out = np.abs(F)
-    link = kind == LINK
-    if link.any():
-        out[link] = np.maximum(0.0, -(F[link] + x[solver.slack[rows[link]]]))
-    out[kind == SIGN] = 0.0
-    return out
+    return lab[:m]
 
 
 def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
@@ -110,12 +99,13 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
     """The conflicting constraint sets of the system ``rows`` x ``cols`` at ``x``."""
     t = solver.tape(rows)
     F = t.evaluate(x)
-    user = _user_residuals(solver, rows, F, x)
+    user = user_residuals(solver, rows, F, x)
     bad = np.abs(F) > tol
     if not bad.any():
         return []
     J = t.jacobian(x, cols)
-    local = _component_rows(J, np.flatnonzero(bad))
+    lab = _components(J)
+    local = np.flatnonzero(np.isin(lab, np.unique(lab[bad])))
     if len(local) > MAX_DENSE:
         return []
     Jd = J[local].toarray()
@@ -196,14 +186,13 @@ def degrees_of_freedom(solver) -> list[StructureDof]:
         if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
             out.append(StructureDof(s, n_unknowns, -1))
             continue
-        sv = np.linalg.svd(J, compute_uv=False) if J.size else np.zeros(0)
+        _, sv, Vt = np.linalg.svd(J, full_matrices=True)
         tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
         rank = int(np.sum(sv > tolr))
         # slack columns each come with a LINK row of full rank: they neither add nor remove
         n_slack = len(cols) - n_unknowns
         floating = []
         if len(cols) > rank:
-            _, S, Vt = np.linalg.svd(J, full_matrices=True)
             null = Vt[rank:]
             moving = np.linalg.norm(null, axis=0) > 1e-6
             pos = {int(c): k for k, c in enumerate(cols)}
@@ -227,13 +216,11 @@ def redundancies(solver) -> list[Redundant]:
     t = solver.tape(rows)
     x = solver.x
     J = t.jacobian(x, cols)
-    m = J.shape[0]
-    B = sp.bmat([[None, J], [J.T, None]]).tocsr()
-    _, lab = connected_components(B, directed=False)
+    lab = _components(J)
     out: list[Redundant] = []
     seen: set = set()
-    for comp in np.unique(lab[:m]):
-        local = np.flatnonzero(lab[:m] == comp)
+    for comp in np.unique(lab):
+        local = np.flatnonzero(lab == comp)
         if len(local) < 2 or len(local) > MAX_DENSE:
             continue
         Jd = J[local].toarray()

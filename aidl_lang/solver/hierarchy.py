@@ -58,7 +58,6 @@ class Attempt:
 class Failure:
     structure: Structure
     attempt: Attempt
-    x: np.ndarray
 
 
 @dataclass
@@ -208,7 +207,7 @@ class Solver:
         att = Attempt("flat", 0, rows, cols)
         ok = self.attempt(att)
         if not ok:
-            self.trace.failures.append(Failure(self.model.root, att, self.last_x))
+            self.trace.failures.append(Failure(self.model.root, att))
             self.x = self.last_x
         return ok
 
@@ -256,7 +255,7 @@ class Solver:
                 return True
         if last is None:
             last = self.trace.attempts[-1]
-        self.trace.failures.append(Failure(s, last, self.last_x))
+        self.trace.failures.append(Failure(s, last))
         self.x = self.last_x
         # do not retry these constraints at every ancestor
         F = self.tape(last.rows).evaluate(self.x)

@@ -19,9 +19,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..bbox import BBTerm, collect, exclusions, side_expr
-from ..expr import Lin, Nl, add, func, mul, var
-from ..model import Constraint, Model, Structure
+from ..bbox import collect, exclusions, expand, side_expr
+from ..expr import Lin, add, func, mul, var
+from ..model import Constraint, Model
 
 EQ, LINK, SIGN = 0, 1, 2
 
@@ -61,26 +61,6 @@ class Rows:
         self.add(c, func("min", mul(2.0, sv), 0.0), SIGN, s)
 
 
-def _bb_expand(e, x, excl, boxes: dict, cache: dict):
-    """Expand BBTerms; record each (target, frame) box used, for non-inversion rows."""
-    if isinstance(e, BBTerm):
-        key = (id(e.target), id(e.frame))
-        ent = boxes.setdefault(key, [e.target, e.frame, set()])
-        ent[2].add("x" if e.side in ("left", "right") else "y")
-        return side_expr(e.target, e.side, e.frame, x, excl, cache)
-    if isinstance(e, Nl):
-        args = tuple(_bb_expand(a, x, excl, boxes, cache) for a in e.args)
-        if e.op == "add":
-            return add(*args)
-        if e.op == "mul":
-            return mul(*args)
-        from ..expr import div
-        if e.op == "div":
-            return div(*args)
-        return Nl(e.op, args)
-    return e
-
-
 def build_rows(model: Model, x: np.ndarray) -> Rows:
     """The rows of every constraint of ``model`` at parameter values ``x`` (model part)."""
     rows = Rows(n_model=len(x), n_params=len(x))
@@ -93,7 +73,7 @@ def build_rows(model: Model, x: np.ndarray) -> Rows:
             excl = exclusions(terms)
             boxes: dict = {}
             for eq in c.deferred:
-                e = _bb_expand(eq.expr, x, excl, boxes, cache)
+                e = expand(eq.expr, x, excl, cache, boxes)
                 if eq.ineq:
                     rows.add_inequality(c, e)
                 else:
@@ -118,5 +98,14 @@ def _non_inversion(rows: Rows, c, target, frame, axes, x, excl, cache) -> None:
         rows.add_inequality(c, add(b, mul(-1.0, a)))
 
 
-def owner_of(rows: Rows, r: int) -> Structure:
-    return rows.constraint[r].owner
+def user_residuals(solver, rows: np.ndarray, F: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Each row's residual as the user sees it, from the tape's ``F`` over ``rows``: ``|F|``
+    for an equation; for an inequality its violation ``max(0, -g)`` (``g = F + s``) on the
+    LINK row and 0 on the SIGN row."""
+    kind = solver.kind[rows]
+    out = np.abs(F)
+    link = kind == LINK
+    if link.any():
+        out[link] = np.maximum(0.0, -(F[link] + x[solver.slack[rows[link]]]))
+    out[kind == SIGN] = 0.0
+    return out

@@ -72,6 +72,14 @@ class Tape:
         leaf_node = []                                       # node index of each leaf
         nl_rows, nl_roots = [], []
 
+        def node(code: int, p: int, q: int, lev: int, row: int) -> int:
+            op.append(code)
+            a0.append(p)
+            a1.append(q)
+            level.append(lev)
+            root_of.append(row)
+            return len(op) - 1
+
         for r, e in enumerate(exprs):
             if isinstance(e, Lin):
                 k = len(arows)
@@ -85,50 +93,39 @@ class Tape:
             memo: dict[int, int] = {}
             stack = [(e, False)]
             while stack:                       # iterative post-order: deep trees are fine
-                node, ready = stack.pop()
-                key = id(node)
+                item, ready = stack.pop()
+                key = id(item)
                 if key in memo:
                     continue
-                if isinstance(node, Lin):
-                    n = len(op)
-                    memo[key] = n
+                if isinstance(item, Lin):
                     leaf = len(lconst)
-                    for i, c in node.terms.items():
+                    for i, c in item.terms.items():
                         lr.append(leaf)
                         lc.append(i)
                         lv.append(c)
-                    lconst.append(node.const)
+                    lconst.append(item.const)
+                    memo[key] = n = node(LEAF, leaf, leaf, 0, r)
                     leaf_node.append(n)
-                    op.append(LEAF)
-                    a0.append(leaf)
-                    a1.append(leaf)
-                    level.append(0)
-                    root_of.append(r)
                     continue
-                if not isinstance(node, Nl):
-                    raise TapeError(f"cannot compile {type(node).__name__} into a residual")
+                if not isinstance(item, Nl):
+                    raise TapeError(f"cannot compile {type(item).__name__} into a residual")
                 if not ready:
-                    stack.append((node, True))
-                    for arg in node.args:
+                    stack.append((item, True))
+                    for arg in item.args:
                         if id(arg) not in memo:
                             stack.append((arg, False))
                     continue
-                args = [memo[id(a)] for a in node.args]
-                code = _BINARY.get(node.op, _UNARY.get(node.op))
+                args = [memo[id(a)] for a in item.args]
+                code = _BINARY.get(item.op, _UNARY.get(item.op))
                 if code is None:
-                    raise TapeError(f"unknown operator `{node.op}`")
+                    raise TapeError(f"unknown operator `{item.op}`")
                 if code in (MIN, MAX) and len(args) > 2:
                     # n-ary min/max: a balanced tree of binary selections
                     while len(args) > 1:
                         nxt = []
                         for j in range(0, len(args) - 1, 2):
-                            n = len(op)
-                            op.append(code)
-                            a0.append(args[j])
-                            a1.append(args[j + 1])
-                            level.append(max(level[args[j]], level[args[j + 1]]) + 1)
-                            root_of.append(r)
-                            nxt.append(n)
+                            p, q = args[j], args[j + 1]
+                            nxt.append(node(code, p, q, max(level[p], level[q]) + 1, r))
                         if len(args) % 2:
                             nxt.append(args[-1])
                         args = nxt
@@ -137,14 +134,9 @@ class Tape:
                 if len(args) == 1:
                     args = [args[0], args[0]]
                 if len(args) != 2:
-                    raise TapeError(f"operator `{node.op}` with {len(args)} arguments")
-                n = len(op)
-                op.append(code)
-                a0.append(args[0])
-                a1.append(args[1])
-                level.append(max(level[args[0]], level[args[1]]) + 1)
-                root_of.append(r)
-                memo[key] = n
+                    raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
+                p, q = args
+                memo[key] = node(code, p, q, max(level[p], level[q]) + 1, r)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
 
@@ -362,16 +354,6 @@ class Tape:
             J[pat.urows, pat.indices] = data
             return J
         return sp.csr_matrix((data, pat.indices, pat.indptr), shape=(self.n_rows, len(cols)))
-
-    def variables(self) -> list[set]:
-        """The parameter indices each row depends on."""
-        out = [set() for _ in range(self.n_rows)]
-        for r, c in zip(self.aff_rows[self.a_row], self.a_col):
-            out[int(r)].add(int(c))
-        rows = self.root_of[self.leaf_node[self.l_row]]
-        for r, c in zip(rows, self.l_col):
-            out[int(r)].add(int(c))
-        return out
 
 
 class _Pattern:
