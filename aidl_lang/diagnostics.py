@@ -86,6 +86,19 @@ class Abort(Exception):
     """Raised by a stage after it recorded the error diagnostics that stop the pipeline."""
 
 
+class EvalError(Exception):
+    """A located error found while evaluating (interpreter, operations): ``code`` (see
+    :mod:`aidl_lang.codes`), message, span, hint, suggested fixes and extra labels.  The
+    interpreter turns it into an error :class:`Diagnostic` and skips the statement."""
+
+    def __init__(self, code: str, message: str, span: Span | None, hint: str | None = None,
+                 suggestions=None, labels=None):
+        super().__init__(message)
+        self.code, self.message, self.span, self.hint = code, message, span, hint
+        self.suggestions = suggestions or []
+        self.labels = labels or []
+
+
 class DiagnosticSink:
     """Collects diagnostics; remembers source text per file for rendering."""
 

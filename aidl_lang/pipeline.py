@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
-from .model import Model
+from .geometry.model import Model
 from .parser import parse
 from .solver import SolveResult, solve
 from .typecheck import check
@@ -61,7 +61,7 @@ def _compile(sink, source, path, overrides, do_solve) -> Compiled:
 def check_branches(sink: DiagnosticSink, model: Model) -> None:
     """W0403 for a convention-dependent constraint that ended on another branch than the one
     chosen at the start (paper, appendix "Solver Details", *Deferred expressions*)."""
-    from .expr import evaluate
+    from .geometry.expr import evaluate
     x = model.xs()
     for c in model.constraints:
         for eq in c.equations:

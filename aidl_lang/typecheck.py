@@ -302,7 +302,7 @@ class Checker:
 
 
 def _imported_names(path: str, target: str) -> set:
-    from .interp import STDLIB
+    from .sources import STDLIB
     from .parser import parse
     if target.startswith(("std/", "std:")):
         p = STDLIB / target[4:]

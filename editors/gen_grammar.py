@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate the VS Code TextMate grammar from the registry: ``python editors/gen_grammar.py``.
 
-Writes ``editors/vscode/syntaxes/aidl.tmLanguage.json`` (see :mod:`aidl_lang.highlight`).
+Writes ``editors/vscode/syntaxes/aidl.tmLanguage.json`` (see :mod:`aidl_lang.editor.highlight`).
 ``--check`` writes nothing and exits 1 if the committed file is out of date.
 """
 import sys
@@ -10,7 +10,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.highlight import tmlanguage_json  # noqa: E402
+from aidl_lang.editor.highlight import tmlanguage_json  # noqa: E402
 
 TARGET = ROOT / "editors" / "vscode" / "syntaxes" / "aidl.tmLanguage.json"
 

@@ -2,7 +2,7 @@ import math
 
 import pytest
 
-from aidl_lang.render import area, render_model
+from aidl_lang.output import area, render_model
 
 
 def pos(model, g, name):

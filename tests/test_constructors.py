@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from aidl_lang.render import area, render_model
+from aidl_lang.output import area, render_model
 
 
 def solved(compile_text, body):

@@ -296,7 +296,7 @@ def test_imports_bring_templates_and_constants_not_structures(tmp_path):
     assert [s.path for s in m.structures] == ["s", "s.a", "s.b"]
     radii = sorted(m.x[g.scalars["radius"].index] for g in m.all_geometry())
     assert radii == [7.0, 8.0]
-    from aidl_lang.bbox import numeric_box
+    from aidl_lang.geometry.bbox import numeric_box
     la, ra, _, _ = numeric_box(m.root.children["a"], None, m.xs())
     lb, rb, _, _ = numeric_box(m.root.children["b"], None, m.xs())
     assert ra - la == pytest.approx(14) and rb - lb == pytest.approx(16)
@@ -469,7 +469,7 @@ def test_E0202_fix_in_the_common_parent_compiles(compile_text):
 }
 """)
     assert c.ok
-    from aidl_lang.bbox import numeric_box
+    from aidl_lang.geometry.bbox import numeric_box
     m = c.model
     base, dial = m.root.children["base"], m.root.children["dial"]
     bl, br, bb, bt = numeric_box(base, None, m.xs())

@@ -2,7 +2,7 @@
 import pytest
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.render import area, render_model, to_svg
+from aidl_lang.output import area, render_model, to_svg
 from aidl_lang.solver import constraint_residuals
 
 from conftest import EXAMPLES

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.fmt import FormatError, comments, dump, format_source
+from aidl_lang.editor.fmt import FormatError, comments, dump, format_source
 from aidl_lang.parser import parse
 
 from conftest import EXAMPLES, ROOT
@@ -244,7 +244,7 @@ def test_generated_programs_obey_the_laws(src):
 
 
 def test_a_meaning_changing_layout_is_refused(monkeypatch, tmp_path):
-    import aidl_lang.fmt as F
+    import aidl_lang.editor.fmt as F
     monkeypatch.setattr(F, "_layout", lambda src, items: src.replace("1", "2"))
     with pytest.raises(F.FormatterBug):
         F.format_source("x = 1\n")

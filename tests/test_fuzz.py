@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from aidl_lang.codes import CODES
 from aidl_lang.diagnostics import render_text
 from aidl_lang.pipeline import compile_source
-from aidl_lang.render import render_model, to_svg
+from aidl_lang.output import render_model, to_svg
 
 from conftest import EXAMPLES, ROOT
 

@@ -8,7 +8,7 @@ from pygments.lexers import get_lexer_by_name
 from pygments.token import Comment, Error, Keyword, Name, Number, Operator, String
 
 from aidl_lang import registry as R
-from aidl_lang.highlight import grammar_keywords, tmlanguage_json, vocabulary
+from aidl_lang.editor.highlight import grammar_keywords, tmlanguage_json, vocabulary
 
 from conftest import EXAMPLES, ROOT
 

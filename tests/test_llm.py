@@ -9,8 +9,8 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 import pytest
 
 from aidl_lang.cli import main
-from aidl_lang.generate import extract_code
-from aidl_lang.prompt import EXAMPLES_DIR, code_blocks, example_programs, system_prompt, word_count
+from aidl_lang.llm.generate import extract_code
+from aidl_lang.llm.prompt import EXAMPLES_DIR, code_blocks, example_programs, system_prompt, word_count
 from aidl_lang.registry import ENTRIES, SYNONYMS
 
 BROKEN = """Here is the plate:

@@ -6,7 +6,7 @@ import pytest_lsp
 from lsprotocol import types as T
 from pytest_lsp import ClientServerConfig, LanguageClient
 
-from aidl_lang.lsp import analysis as an
+from aidl_lang.editor.lsp import analysis as an
 
 from conftest import EXAMPLES, ROOT
 

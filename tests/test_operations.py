@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from aidl_lang.render import area, render_model
+from aidl_lang.output import area, render_model
 
 
 def run(compile_text, body, kind="solid"):
@@ -22,7 +22,7 @@ def centers(c, kind="Circle"):
             if g.kind == kind:
                 p = g.points["center"]
                 ox, oy = s.frame_offset(None)
-                from aidl_lang.expr import evaluate
+                from aidl_lang.geometry.expr import evaluate
                 out.append((round(x[p.ix] + evaluate(ox, x), 6), round(x[p.iy] + evaluate(oy, x), 6)))
     return out
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from aidl_lang.registry import ENTRIES, SWAPPED, SYNONYMS, canonical_args, lookup
-from aidl_lang.render import render_model, to_svg
+from aidl_lang.output import render_model, to_svg
 from aidl_lang.typecheck import HALLUCINATIONS
 
 SETUP = """solid s {

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..model import Constraint, Model
+from ..geometry.model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
 from .system import LINK, SIGN, build_rows, user_residuals
 from .tape import Tape

@@ -25,7 +25,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
-from ..model import Constraint
+from ..geometry.model import Constraint
 from .system import user_residuals
 
 DEP_TOL = 1e-7

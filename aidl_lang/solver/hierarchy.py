@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..model import Model, Structure
+from ..geometry.model import Model, Structure
 from .newton import TOL, newton
 from .system import LINK, SIGN, Rows, build_rows
 from .reduce import reduce

@@ -19,9 +19,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..bbox import collect, exclusions, expand, side_expr
-from ..expr import Lin, add, func, mul, var
-from ..model import Constraint, Model
+from ..geometry.bbox import collect, exclusions, expand, side_expr
+from ..geometry.expr import Lin, add, func, mul, var
+from ..geometry.model import Constraint, Model
 
 EQ, LINK, SIGN = 0, 1, 2
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from ..expr import Lin, Nl
+from ..geometry.expr import Lin, Nl
 
 LEAF, ADD, MUL, DIV, POW, ATAN2, MIN, MAX = range(8)
 _UNARY_OPS = ["sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "abs", "exp", "log"]

@@ -21,8 +21,11 @@ from __future__ import annotations
 
 import math
 
+from ..diagnostics import EvalError
+from ..limits import MAX_GEOMETRY
 from .expr import var
 from .model import Constraint, Equation, Geometry, Point, Structure
+from .tessellate import segments_for
 from .values import PV, GeomRef, Q, StructRef, type_name
 
 
@@ -82,7 +85,6 @@ class _Cloner:
         if g in self.geoms:
             return self.geoms[g]
         self.ctx.n_geometry += 1
-        from .interp import MAX_GEOMETRY, EvalError
         if self.ctx.n_geometry > MAX_GEOMETRY:
             raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", self.ctx.cur_span,
                             hint="use fewer or larger repetitions")
@@ -233,7 +235,6 @@ def _corners(shape, size: float, fillet: bool):
     of every outline loop whose direction turns by more than :data:`CORNER_TURN`."""
     import manifold3d as mf
     import numpy as np
-    from .render import segments_for
     loops = []
     for poly in shape.to_polygons():
         P = np.asarray(poly, dtype=float)

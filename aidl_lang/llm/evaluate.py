@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Callable
 
 from .generate import Result, generate, save, write_atomic
-from .llm import ChatClient
+from .client import ChatClient
 
 
 @dataclass
@@ -36,8 +36,8 @@ def read_prompts(path: Path) -> list[str]:
 
 
 def _render(code: str, path: str) -> str | None:
-    from .pipeline import compile_source
-    from .render import render_model, to_svg
+    from ..pipeline import compile_source
+    from ..output import render_model, to_svg
     c = compile_source(code, path)
     if not c.ok:
         return None

@@ -13,8 +13,8 @@ from __future__ import annotations
 import json
 import re
 
-from . import registry as R
-from .parser import GRAMMAR
+from .. import registry as R
+from ..parser import GRAMMAR
 
 LANGUAGE_ID = "aidl-cad"
 SCOPE = "source.aidl-cad"

@@ -1,12 +1,10 @@
-"""From solved model to 2D shapes (Manifold booleans) and SVG.
+"""From solved model to 2D shapes (Manifold booleans).
 
 Closed curves become faces; lines and arcs whose endpoints meet in a cycle become one face.
 A solid is the union of its faces and solid children minus its hole children; a hole is the
 union of its faces; assembly children stay separate parts; drawing geometry is drawn as lines.
 Booleans use ``manifold3d.CrossSection``.  Circles and arcs are tessellated so that the chord
 deviation is below ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm).
-SVG (``svgwrite``): y points up in the model and is flipped for the page; the viewBox fits the
-model with a margin; width and height are in mm.
 """
 from __future__ import annotations
 
@@ -16,21 +14,12 @@ from dataclasses import dataclass, field
 import manifold3d as mf
 import numpy as np
 
-from .model import Geometry, Model, Structure
-from .text import text_strokes
+from ..geometry.model import Geometry, Model, Structure
+from ..geometry.operations import finish
+from ..geometry.tessellate import segments_for
+from ..geometry.text import text_strokes
 
-CHORD_TOL = 0.005
 CLOSE_TOL = 1e-6
-
-
-def segments_for(radius: float, sweep: float = 2 * math.pi) -> int:
-    r = abs(radius)
-    if r <= CHORD_TOL:
-        return max(3, int(8 * sweep / (2 * math.pi)))
-    step = 2 * math.acos(max(-1.0, 1 - CHORD_TOL / r)) if r < 1e9 else 0.0
-    if step <= 0.0 or not math.isfinite(step):
-        step = 2 * math.sqrt(2 * CHORD_TOL / r) if math.isfinite(r) else 2 * math.pi / 20000
-    return max(3, min(20000, int(math.ceil(sweep / step))))
 
 
 @dataclass
@@ -127,7 +116,7 @@ class Renderer:
             return _cs(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid"):
-            from .primitives import points_of
+            from ..geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
             cs = _cs(pts)
@@ -243,7 +232,6 @@ class Renderer:
                 out.hole_outlines.append(np.asarray(poly))
             acc = acc - cut
         if getattr(s, "finish", None):
-            from .operations import finish
             acc = finish(s, acc)
         return acc
 
@@ -314,62 +302,3 @@ def render_model(model: Model) -> Drawing:
 def area(drawing: Drawing) -> float:
     """Total area (mm^2) of the solid parts."""
     return sum(p.shape.area() for p in drawing.parts if p.kind == "solid")
-
-
-STYLES = {
-    "solid": dict(fill="#cfd8dc", stroke="#263238"),
-    "hole_part": dict(fill="none", stroke="#c62828"),
-    "hole": dict(fill="none", stroke="#c62828"),
-    "drawing": dict(fill="none", stroke="#1565c0"),
-    "open": dict(fill="none", stroke="#ef6c00"),
-}
-
-
-def to_svg(drawing: Drawing, title: str = "") -> str:
-    import svgwrite
-    x0, y0, x1, y1 = drawing.bounds()
-    w, h = max(x1 - x0, 1e-3), max(y1 - y0, 1e-3)
-    margin = max(0.05 * max(w, h), 1.0)
-    vx, vy = x0 - margin, -(y1 + margin)
-    vw, vh = w + 2 * margin, h + 2 * margin
-    sw = max(vw, vh) / 500.0
-    d = svgwrite.Drawing(size=(f"{vw:.3f}mm", f"{vh:.3f}mm"), profile="full")
-    d.viewbox(vx, vy, vw, vh)
-    if title:
-        d.set_desc(title=title)
-    g_solid = d.g(id="solids", fill=STYLES["solid"]["fill"], stroke=STYLES["solid"]["stroke"],
-                  stroke_width=sw, fill_rule="evenodd")
-    for p in drawing.parts:
-        if p.shape.is_empty():
-            continue
-        path = " ".join(_path(np.asarray(poly)) for poly in p.shape.to_polygons())
-        if p.kind == "solid":
-            g_solid.add(d.path(d=path, id=_id(p.name)))
-        else:
-            g_solid.add(d.path(d=path, fill="none", stroke=STYLES["hole"]["stroke"],
-                               stroke_dasharray=f"{4 * sw},{2 * sw}", id=_id(p.name)))
-    d.add(g_solid)
-    if drawing.hole_outlines:
-        gh = d.g(id="holes", fill="none", stroke=STYLES["hole"]["stroke"], stroke_width=sw * 0.8,
-                 stroke_dasharray=f"{4 * sw},{2 * sw}")
-        for pl in drawing.hole_outlines:
-            gh.add(d.path(d=_path(pl)))
-        d.add(gh)
-    if drawing.lines:
-        gd = d.g(id="drawings", fill="none", stroke_width=sw, stroke_linecap="round",
-                 stroke_linejoin="round")
-        for style, pl in drawing.lines:
-            gd.add(d.path(d=_path(pl, close=False), stroke=STYLES[style]["stroke"]))
-        d.add(gd)
-    return d.tostring()
-
-
-def _id(name: str) -> str:
-    return "part-" + "".join(c if c.isalnum() or c in "-_" else "_" for c in name)
-
-
-def _path(pl: np.ndarray, close: bool = True) -> str:
-    if len(pl) == 0:
-        return ""
-    pts = " ".join(f"{x:.4f},{-y:.4f}" for x, y in pl)
-    return f"M{pts}" + ("Z" if close else "")

@@ -466,7 +466,7 @@ def member(g: Geometry, name: str, frame):
 
 
 def member_names(g: Geometry) -> list[str]:
-    from .registry import ENTRIES
+    from ..registry import ENTRIES
     names = set(ENTRIES[g.kind].members) if g.kind in ENTRIES else set()
     names |= set(g.points) | set(g.parts) | set(g.scalars)
     return sorted(n for n in names if not (n[:1] == "p" and n[1:].isdigit()))

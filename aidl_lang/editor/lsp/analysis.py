@@ -23,10 +23,10 @@ from dataclasses import dataclass, field
 
 from lsprotocol import types as T
 
-from .. import ast as A
-from .. import registry as R
-from ..diagnostics import DiagnosticSink, Span
-from ..parser import _blank_logical_line, mask_comments, parse
+from ... import ast as A
+from ... import registry as R
+from ...diagnostics import DiagnosticSink, Span
+from ...parser import _blank_logical_line, mask_comments, parse
 
 TYPE_MEMBERS = {"point": R.POINT_MEMBERS, "line": R.LINE_MEMBERS, "bbox": R.BBOX_MEMBERS}
 
@@ -113,7 +113,7 @@ def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None)
     ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
     another file (an import) are put on line 1 with their location in the message.
     """
-    from ..pipeline import compile_source
+    from ...pipeline import compile_source
     res = compile_source(src, path, do_solve=solve)
     out = []
     for d in res.sink.items:
@@ -244,7 +244,7 @@ class Index:
     def _import(self, st: A.Import) -> None:
         """Bind what ``import`` brings: the other file's templates, params and top-level
         constants (or, with ``as``, a namespace holding them)."""
-        from ..interp import STDLIB
+        from ...sources import STDLIB
         from pathlib import Path
         if len(self._seen) > self.MAX_IMPORT_DEPTH:
             return

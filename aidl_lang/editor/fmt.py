@@ -25,9 +25,9 @@ from dataclasses import dataclass
 
 from lark import Lark
 
-from . import ast as A
-from .diagnostics import DiagnosticSink
-from .parser import GRAMMAR, mask_comments, parse
+from .. import ast as A
+from ..diagnostics import DiagnosticSink
+from ..parser import GRAMMAR, mask_comments, parse
 
 INDENT = 4
 
@@ -284,7 +284,7 @@ def main(files: list[str], check: bool = False) -> int:
     import tempfile
     from pathlib import Path
 
-    from .diagnostics import render_text
+    from ..diagnostics import render_text
 
     status = 0
     for f in files:

@@ -1,5 +1,5 @@
 """The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp`` (and
-``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.llm_cli`).
+``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
 An output file is written only when the whole pipeline succeeded (written to a temporary file
@@ -14,7 +14,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .diagnostics import Diagnostic, DiagnosticSink, render_text
+from ..diagnostics import Diagnostic, DiagnosticSink, render_text
 
 
 class _Parser(argparse.ArgumentParser):
@@ -46,7 +46,7 @@ def _parser() -> argparse.ArgumentParser:
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
     sub.add_parser("lsp", help="run the language server on stdin/stdout (for editors)")
-    from .llm_cli import add_commands
+    from .llm import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
 
@@ -91,7 +91,7 @@ def _read(path: str, as_json: bool) -> str | None:
 
 
 def cmd_check(args) -> int:
-    from .pipeline import compile_source
+    from ..pipeline import compile_source
     src = _read(args.file, args.json)
     if src is None:
         return 1
@@ -103,8 +103,8 @@ def cmd_check(args) -> int:
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
         if args.dof and res.ok:
-            from .pipeline import report_redundancies
-            from .solver.diagnose import degrees_of_freedom
+            from ..pipeline import report_redundancies
+            from ..solver.diagnose import degrees_of_freedom
             report_redundancies(res.sink, res.solve)
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
@@ -131,8 +131,8 @@ def _print_dof(dofs) -> None:
 
 
 def cmd_render(args) -> int:
-    from .pipeline import compile_source
-    from .render import render_model, to_svg
+    from ..pipeline import compile_source
+    from ..output import render_model, to_svg
     src = _read(args.file, args.json)
     if src is None:
         return 1
@@ -163,7 +163,7 @@ def cmd_render(args) -> int:
 
 
 def cmd_explain(args) -> int:
-    from .codes import CODES
+    from ..codes import CODES
     code = args.code.upper()
     if code not in CODES:
         print(f"aidl: unknown code `{args.code}`; known codes: {', '.join(sorted(CODES))}",
@@ -175,19 +175,19 @@ def cmd_explain(args) -> int:
 
 
 def cmd_fmt(args) -> int:
-    from .fmt import main as fmt_main
+    from ..editor.fmt import main as fmt_main
     return fmt_main(args.files, check=args.check)
 
 
 def cmd_lsp(args) -> int:
-    from .lsp.server import main as lsp_main
+    from ..editor.lsp.server import main as lsp_main
     return lsp_main()
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
-        from .llm_cli import COMMANDS
+        from .llm import COMMANDS
         return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
                  "fmt": cmd_fmt, "lsp": cmd_lsp} | COMMANDS)[args.cmd](args)
     except KeyboardInterrupt:

@@ -38,7 +38,7 @@ def _say(msg: str) -> None:
 
 
 def _client(args):
-    from .llm import client_from
+    from ..llm.client import client_from
     if args.rounds < 1:
         print("aidl: error: --rounds must be at least 1", file=sys.stderr)
         raise SystemExit(2)
@@ -46,7 +46,7 @@ def _client(args):
 
 
 def cmd_prompt(args) -> int:
-    from .prompt import system_prompt, word_count
+    from ..llm.prompt import system_prompt, word_count
     text = system_prompt(examples=not args.no_examples)
     sys.stdout.write(text)
     if args.words:
@@ -55,8 +55,8 @@ def cmd_prompt(args) -> int:
 
 
 def cmd_generate(args) -> int:
-    from .generate import generate, save, transcript_paths
-    from .llm import LLMError
+    from ..llm.generate import generate, save, transcript_paths
+    from ..llm.client import LLMError
     client = _client(args)
     out = Path(args.output)
     if not out.parent.resolve().is_dir():
@@ -78,8 +78,8 @@ def cmd_generate(args) -> int:
 
 
 def cmd_eval(args) -> int:
-    from .evaluate import read_prompts, run_eval
-    from .llm import LLMError
+    from ..llm.evaluate import read_prompts, run_eval
+    from ..llm.client import LLMError
     client = _client(args)
     try:
         prompts = read_prompts(Path(args.prompts))

@@ -10,9 +10,9 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from .registry import ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE, UNITS_LENGTH
+from ..registry import ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE, UNITS_LENGTH
 
-EXAMPLES_DIR = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES_DIR = Path(__file__).resolve().parent.parent.parent / "examples"
 # short and varied: hierarchy + stacking relations; holes, loops and bounding-box equations;
 # drawings, text and params; templates, fillets and patterns
 PROMPT_EXAMPLES = ["toy_sword.aidl", "bottle_opener.aidl", "name_tag.aidl", "bracket.aidl"]

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .diagnostics import Span
+from ..diagnostics import Span
 from .expr import Expr, Lin, var
 
 

@@ -18,9 +18,9 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from .diagnostics import render_text
-from .llm import ChatClient
-from .pipeline import compile_source
+from ..diagnostics import render_text
+from .client import ChatClient
+from ..pipeline import compile_source
 from .prompt import system_prompt
 
 MAX_FEEDBACK_DIAGNOSTICS = 8

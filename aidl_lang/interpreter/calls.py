@@ -1,0 +1,352 @@
+"""Calls: resolving a callee, primitive and constraint constructors from the registry,
+argument coercion to points, lengths and angles, templates, and the built-in functions.
+
+A mixin of :class:`aidl_lang.interp.Interpreter`; it uses the other parts through ``self``."""
+from __future__ import annotations
+
+import math
+
+from .. import ast as A
+from ..diagnostics import EvalError, did_you_mean
+from ..geometry.constraints import BUILDERS, ConstraintError
+from ..geometry.expr import as_const, func, lift, var
+from ..geometry.model import Constraint, Equation, Point, Scalar
+from ..geometry.primitives import PrimitiveError, build, member as geom_member
+from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+                               Template, UnitError, dim_name, mul_dim, owners_of, type_name)
+from ..limits import MAX_GEOMETRY, MAX_ITER
+from ..registry import (ENTRIES, FUNCTIONS, canonical, canonical_args, choose_variant, lookup)
+from .common import (DEG, _a, _fmt_num, _src)
+
+
+class Calls:
+    def _callee(self, f):
+        if isinstance(f, A.Name):
+            v, _ = self.scope.lookup(f.id)
+            if v is not None:
+                return v
+            if lookup(f.id) is not None or f.id in FUNCTIONS:
+                return Builtin(f.id)
+            return None
+        if isinstance(f, A.Member):
+            obj = self._callee(f.obj) if isinstance(f.obj, (A.Name, A.Member)) else None
+            if isinstance(obj, Namespace):
+                return obj.scope.vars.get(f.name)
+        return None
+
+    def _call(self, node: A.Call, name: str | None = None):
+        callee = self._callee(node.func)
+        if callee is None:
+            if isinstance(node.func, A.Name):
+                cands = list(self.scope.names()) + list(ENTRIES) + list(FUNCTIONS)
+                sugg = did_you_mean(node.func.id, cands)
+                raise EvalError("E0103", f"unknown function `{node.func.id}`", node.func.span,
+                                hint=(f"did you mean `{sugg[0]}`?" if sugg else
+                                      "see `aidl explain E0103` for the vocabulary"),
+                                suggestions=sugg)
+            callee = self.eval(node.func)
+        if isinstance(callee, Template):
+            if name is None:
+                raise EvalError("E0119", f"an instance of template `{callee.node.name}` needs a name",
+                                node.span, hint=f"write `part = {callee.node.name}(...)`")
+            return self._instantiate(callee, node, name)
+        if not isinstance(callee, Builtin):
+            raise EvalError("E0111", f"a {type_name(callee)} cannot be called", node.func.span)
+        nm = callee.name
+        if nm in FUNCTIONS:
+            return self._function(nm, node)
+        entry = lookup(nm)
+        args = [self.eval(a) for a in node.args]
+        kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
+        variant, reason = choose_variant(entry, len(args), list(kwargs))
+        if variant is None:
+            span = node.span
+            bad_kw = next((kw for kw in node.kwargs
+                           if not any(kw.name in [a.name for a in v] for v in entry.variants)), None)
+            if bad_kw is not None:
+                names = sorted({a.name for v in entry.variants for a in v})
+                raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
+                                hint=f"{entry.signature()}", suggestions=did_you_mean(bad_kw.name, names))
+            code = "E0106" if reason and reason.startswith("missing") else "E0104"
+            raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
+        bound = {}
+        spans = {}
+        for a, v, node_a in zip(variant, args, node.args):
+            bound[a.name] = v
+            spans[a.name] = node_a.span
+        for k, (v, kw) in kwargs.items():
+            bound[k] = v
+            spans[k] = kw.value.span
+        bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
+        conv = {}
+        for a in variant:
+            if a.name in bound:
+                conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm, a.name)
+            elif a.default is not None:      # registry defaults are in mm / radians
+                dim = {"length": LEN, "angle": ANG, "number": NUM}.get(a.type)
+                conv[a.name] = Q.num(a.default, dim) if dim else a.default
+        if entry.category == "primitive":
+            return self._primitive(canonical(nm), conv, node, spans)
+        if entry.category == "operation":
+            from ..geometry.operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, canonical(nm), conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+        owners = owners_of(*conv.values())
+        try:
+            eqs = BUILDERS[canonical(nm)](self, **conv)
+        except ConstraintError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), node.span)
+        self._add_constraint(canonical(nm), eqs, node.span, _src(self.sink, node.span), owners)
+        return None
+
+    def _primitive(self, kind, conv, node, spans):
+        s = self._need_struct(node.span)
+        for k, v in conv.items():
+            bad = [o for o in owners_of(v) if o is not s]
+            if bad:
+                raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
+                                f"another structure", spans.get(k, node.span),
+                                hint="geometry may only use geometry of its own structure; give it its "
+                                     "own starting value and relate the two with a constraint, "
+                                     "e.g. `Coincident(...)`, in a structure that contains both")
+        if kind == "Text" and s.kind != "drawing":
+            raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
+                            node.span, hint="put it in `drawing labels { ... }` inside this structure")
+        self.n_geometry += 1
+        if self.n_geometry > MAX_GEOMETRY:
+            raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", node.span,
+                            hint="use fewer or larger repetitions")
+        try:
+            g = build(self, kind, conv, node.span)
+        except PrimitiveError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=lookup(kind).signature())
+        if kind == "Text":
+            from ..geometry.text import text_extent
+            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"])
+        return GeomRef(g)
+
+    # -- used by primitives.build
+    def point(self, v: PV, label: str) -> Point:
+        s = self.struct
+        if v.obj is not None and v.obj.owner is s:
+            return v.obj
+        x0, y0 = self.value_of(v.x), self.value_of(v.y)
+        ix = self.model.new_param(x0, True, s, f"{label}.x")
+        iy = self.model.new_param(y0, True, s, f"{label}.y")
+        p = Point(ix, iy, s, None, label)
+        if as_const(v.x) is None or as_const(v.y) is None:
+            c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
+                           text=f"{label} placed at a derived point", implicit=True)
+            s.constraints.append(c)
+            self.model.constraints.append(c)
+        return p
+
+    def scalar(self, q: Q, label: str, held: bool) -> Scalar:
+        c = q.const()
+        if c is not None:
+            return self.new_scalar(c, label, held)
+        sc = self.new_scalar(self.value_of(q.expr), label, held=False)
+        c2 = Constraint("internal", self.struct, None, [Equation(var(sc.index) - q.expr)],
+                        text=f"{label} from an expression", implicit=True)
+        self.struct.constraints.append(c2)
+        self.model.constraints.append(c2)
+        return sc
+
+    def new_scalar(self, value: float, label: str, held: bool) -> Scalar:
+        i = self.model.new_param(value, not held, self.struct, label)
+        return Scalar(i, self.struct, "length", label)
+
+    def internal(self, g, eqs, text: str) -> None:
+        c = Constraint("internal", self.struct, g.span, eqs, text=text, implicit=True)
+        self.struct.constraints.append(c)
+        self.model.constraints.append(c)
+
+    # ------------------------------------------------------------------ coercion
+    def _to_point(self, v, span) -> PV:
+        if isinstance(v, PV):
+            return v
+        if isinstance(v, GeomRef) and v.geom.kind == "Point":
+            return geom_member(v.geom, "p", self.struct)
+        if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
+            xs = [self._as_length(c, span) for c in v]
+            return PV(xs[0], xs[1], None, owners_of(*v))
+        raise EvalError("E0108", f"expected a point, got {type_name(v)}", span,
+                        hint="write a point as `(x, y)` or refer to one, e.g. `rect.top_left`")
+
+    def _as_length(self, q: Q, span):
+        if q.dim == LEN:
+            return q.expr
+        if q.dim == NUM:
+            return lift(q.expr) * self.unit_scale
+        raise EvalError("E0109", f"expected a length, got a {dim_name(q.dim)}", span,
+                        hint="give a length unit such as `mm` or `in`")
+
+    def _coerce(self, v, typ: str, span, fname: str, aname: str):
+        where = f"argument `{aname}` of `{fname}`"
+        if typ == "any":
+            return v
+        if v is None and typ == "point":
+            return None
+        if typ in ("length", "angle", "number"):
+            if not isinstance(v, Q):
+                raise EvalError("E0108", f"{where} must be {_a(typ)}, got {type_name(v)}", span,
+                                hint=lookup(fname).signature())
+            want = {"length": LEN, "angle": ANG, "number": NUM}[typ]
+            if v.dim == want:
+                return v
+            if v.dim == NUM:
+                k = self.unit_scale if typ == "length" else DEG
+                return Q(lift(v.expr) * k, want, v.owners)
+            raise EvalError("E0109", f"{where} must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
+                            hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
+                                                                     " such as `deg`" if typ == "angle" else ""))
+        if typ == "point":
+            return self._to_point(v, span)
+        if typ == "points":
+            if not isinstance(v, (list, tuple)):
+                raise EvalError("E0108", f"{where} must be a list of points, got {type_name(v)}", span)
+            return [self._to_point(p, span) for p in v]
+        if typ == "bool":
+            if not isinstance(v, bool):
+                raise EvalError("E0108", f"{where} must be true or false, got {type_name(v)}", span)
+            return v
+        if typ == "string":
+            if isinstance(v, Q) and v.const() is not None:
+                return _fmt_num(v.const())
+            if not isinstance(v, str):
+                raise EvalError("E0108", f"{where} must be a string, got {type_name(v)}", span)
+            return v
+        if typ == "line":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Slot"):
+                return v
+            raise EvalError("E0108", f"{where} must be a Line, got {type_name(v)}", span,
+                            hint="rectangle edges are lines: `rect.top`, `rect.left`, ...")
+        if typ == "circular":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
+                return v
+            raise EvalError("E0108", f"{where} must be a Circle or Arc, got {type_name(v)}", span)
+        if typ == "curve":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Circle", "Arc"):
+                return v
+            raise EvalError("E0108", f"{where} must be a Line, Circle or Arc, got {type_name(v)}", span)
+        if typ == "geometry":
+            if isinstance(v, (GeomRef, PV)):
+                return v
+            if isinstance(v, (tuple, list)):
+                return self._to_point(v, span)
+            raise EvalError("E0108", f"{where} must be geometry, got {type_name(v)}", span)
+        if typ == "boxed":
+            if isinstance(v, (GeomRef, StructRef, BBoxRef)):
+                return v
+            raise EvalError("E0108", f"{where} must be a structure or geometry, got {type_name(v)}",
+                            span)
+        return v
+
+    # ------------------------------------------------------------------ functions
+    def _function(self, nm: str, node: A.Call):
+        lo, hi, _doc = FUNCTIONS[nm]
+        if node.kwargs:
+            raise EvalError("E0105", f"`{nm}` takes no keyword arguments", node.kwargs[0].span)
+        args = [self.eval(a) for a in node.args]
+        if not lo <= len(args) <= hi:
+            raise EvalError("E0104", f"`{nm}` takes {lo if lo == hi else f'{lo} to {hi}'} "
+                            f"argument{'s' if hi > 1 else ''}, got {len(args)}", node.span)
+        sp = node.span
+        if nm == "range":
+            ns = [self._int(a, sp) for a in args]
+            r = range(*ns)
+            if len(r) > MAX_ITER:
+                raise EvalError("E0301", f"range of {len(r)} items exceeds the limit of {MAX_ITER}", sp)
+            return [Q.num(i) for i in r]
+        if nm == "len":
+            if not isinstance(args[0], (list, tuple, str)):
+                raise EvalError("E0108", f"`len` needs a list or string, got {type_name(args[0])}", sp)
+            return Q.num(len(args[0]))
+        if nm == "str":
+            v = args[0]
+            return _fmt_num(v.const()) if isinstance(v, Q) and v.const() is not None else str(v)
+        if nm in ("min", "max"):
+            if len(args) == 1 and isinstance(args[0], list):
+                args = args[0]
+            if not args:
+                raise EvalError("E0108", f"`{nm}` of an empty list", sp)
+            qs = [self._q(a, sp) for a in args]
+            acc = qs[0]
+            for q in qs[1:]:
+                a, b, d = self._unify(acc, q, sp)
+                acc = Q(func(nm, a, b), d, acc.owners | q.owners)
+            return acc
+        if nm == "norm":
+            p = self._to_point(args[0], sp) if not isinstance(args[0], Q) else None
+            if p is None:
+                return Q(func("abs", args[0].expr), args[0].dim, args[0].owners)
+            return Q(func("sqrt", p.x * p.x + p.y * p.y), LEN, p.owners)
+        if nm == "distance":
+            p, q = self._to_point(args[0], sp), self._to_point(args[1], sp)
+            return Q(func("sqrt", (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)), LEN,
+                     p.owners | q.owners)
+        q = [self._q(a, sp) for a in args]
+        if nm in ("sin", "cos", "tan"):
+            if q[0].dim not in (ANG, NUM):
+                raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
+            return Q(func(nm, q[0].expr), NUM, q[0].owners)
+        if nm in ("asin", "acos", "atan"):
+            self._dimless(q[0], nm, sp)
+            return Q(func(nm, q[0].expr), ANG, q[0].owners)
+        if nm == "atan2":
+            a, b, _ = self._unify(q[0], q[1], sp)
+            return Q(func("atan2", a, b), ANG, q[0].owners | q[1].owners)
+        if nm == "sqrt":
+            d = q[0].dim
+            if d[0] % 2 or d[1] % 2:
+                raise EvalError("E0109", f"`sqrt` of a {dim_name(d)} has no unit", sp)
+            c = q[0].const()
+            if c is not None and c < 0:
+                raise EvalError("E0112", f"`sqrt` of a negative number ({_fmt_num(c)})", sp)
+            return Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners)
+        if nm == "abs":
+            return Q(func("abs", q[0].expr), q[0].dim, q[0].owners)
+        if nm == "square":
+            return Q(q[0].expr * q[0].expr, mul_dim(q[0].dim, q[0].dim), q[0].owners)
+        if nm in ("round", "floor", "ceil"):
+            c = q[0].const()
+            if c is None:
+                raise EvalError("E0118", f"`{nm}` of a solved value", sp,
+                                hint="round params and constants only")
+            if nm == "round":
+                nd = int(q[1].const() or 0) if len(q) > 1 else 0
+                return Q.num(round(c, nd), q[0].dim)
+            return Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim)
+        if nm == "radians":
+            return Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
+        if nm == "degrees":
+            e = q[0].expr if q[0].dim == ANG else q[0].expr
+            return Q(lift(e) * (1 / DEG), NUM, q[0].owners)
+        raise EvalError("E0103", f"unknown function `{nm}`", sp)
+
+    def _dimless(self, q: Q, nm, sp):
+        if q.dim != NUM:
+            raise EvalError("E0109", f"`{nm}` needs a plain number, got a {dim_name(q.dim)}", sp)
+
+    def _q(self, v, sp) -> Q:
+        if isinstance(v, bool):
+            return Q.num(1.0 if v else 0.0)
+        if isinstance(v, Q):
+            return v
+        raise EvalError("E0108", f"expected a number, got {type_name(v)}", sp)
+
+    def _int(self, v, sp) -> int:
+        q = self._q(v, sp)
+        c = q.const()
+        if c is None or q.dim != NUM:
+            raise EvalError("E0108", "range() needs plain whole numbers", sp)
+        if abs(c - round(c)) > 1e-9:
+            raise EvalError("E0108", f"range() needs whole numbers, got {_fmt_num(c)}", sp)
+        return int(round(c))
+
+    # ------------------------------------------------------------------ expressions

@@ -1,0 +1,463 @@
+"""Statements: files and imports, structure bodies, assignments, loops, template instances,
+constraints and equations (docs/language.md \u00a73-\u00a76; the paper's reference and subtree validity
+rules are checked in :meth:`Statements._check_subtree`).
+
+A mixin of :class:`aidl_lang.interp.Interpreter`; it uses the other parts through ``self``."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from .. import ast as A
+from ..diagnostics import EvalError, did_you_mean
+from ..geometry.bbox import contains_bbox
+from ..geometry.model import Constraint, Equation, Model, Structure
+from ..geometry.primitives import member as geom_member
+from ..geometry.values import (PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
+from ..registry import (CONSTANTS, UNITS_LENGTH)
+from ..sources import STDLIB
+from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
+                     _src)
+
+
+class Statements:
+    # ------------------------------------------------------------------ entry
+    def run(self, program: A.Program) -> Model:
+        self.root_dir = Path(program.path).resolve().parent
+        fctx = self._load_file_decls(program, is_main=True)
+        self.file = fctx
+        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def))]
+        structs = [s for s in top if isinstance(s, A.StructDecl)]
+        loose = [s for s in top if not isinstance(s, A.StructDecl) and not _is_plain_const(s)]
+        for name in self.overrides:
+            if name not in getattr(fctx, "params", {}):
+                self.sink.error("E0113", f"`--set {name}=...`: the model has no param `{name}`",
+                                None, hint="params: " + ", ".join(sorted(fctx.params)) if fctx.params else
+                                "declare it with `param NAME = VALUE` at the top of the file",
+                                suggestions=did_you_mean(name, fctx.params))
+        if len(structs) == 1 and not loose:
+            consts = [s for s in top if s is not structs[0]]
+            self.scope = fctx.scope
+            for s in consts:
+                self._exec_stmt(s)
+            st = structs[0]
+            root = self._new_structure(st.name, st.kind, None, st.span)
+            self._run_body(root, st.body, Scope(fctx.scope, root, fctx))
+        else:
+            kind = "assembly" if not any(_is_geometry_stmt(s) for s in loose) else "solid"
+            root = self._new_structure("model", kind, None, program.span)
+            self.scope = fctx.scope
+            for s in top:
+                if _is_plain_const(s):
+                    self._exec_stmt(s)
+            scope = Scope(fctx.scope, root, fctx)
+            rest = [s for s in top if not _is_plain_const(s)]
+            self._run_body(root, A.Block(program.span, rest), scope)
+        self.model.root = root
+        return self.model
+
+    def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
+        s = Structure(name, kind, parent, span, template=template)
+        s.fx = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.x")
+        s.fy = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.y")
+        if parent is not None:
+            parent.children[name] = s
+        self.model.structures.append(s)
+        return s
+
+    # ------------------------------------------------------------------ files
+    def _load_file_decls(self, program: A.Program, is_main: bool) -> FileCtx:
+        fctx = FileCtx(program.path)
+        fctx.params = {}
+        prev = self.file
+        self.file = fctx
+        self.scope = fctx.scope
+        for st in program.stmts:
+            if isinstance(st, A.UnitsDecl):
+                u = st.unit.lower()
+                if u not in UNITS_LENGTH:
+                    self.sink.error("E0109", f"unknown length unit `{st.unit}`", st.unit_span,
+                                    hint="use one of " + ", ".join(UNITS_LENGTH),
+                                    suggestions=did_you_mean(st.unit, UNITS_LENGTH))
+                else:
+                    fctx.unit_scale = UNITS_LENGTH[u]
+        self.model.units = "mm"
+        for st in program.stmts:
+            try:
+                if isinstance(st, A.Import):
+                    self._import(st, fctx)
+                elif isinstance(st, A.Def):
+                    if st.kind not in ("solid", "hole", "drawing", "assembly"):
+                        raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                                        hint="a template returns solid, hole, drawing or assembly",
+                                        suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+                    fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
+                elif isinstance(st, A.ParamDecl):
+                    fctx.params[st.name] = None
+                    if st.name in self.overrides and is_main:
+                        val = self._eval_override(st.name, self.overrides[st.name], fctx)
+                    else:
+                        val = self.eval(st.value)
+                    fctx.scope.vars[st.name] = val
+                    fctx.params[st.name] = val
+            except EvalError as e:
+                self.error(e)
+        if not is_main:
+            for st in program.stmts:
+                if isinstance(st, A.Assign) and _is_plain_const(st):
+                    try:
+                        fctx.scope.vars[st.name] = self.eval(st.value)
+                    except EvalError as e:
+                        self.error(e)
+        self.file = prev if not is_main else fctx
+        return fctx
+
+    def _eval_override(self, name: str, text: str, fctx: FileCtx):
+        from ..parser import lark_parser, _Builder
+        from lark.exceptions import LarkError
+        try:
+            tree = lark_parser().parse(text, start="expr")
+            node = _Builder("<--set>", self.sink).transform(tree)
+        except LarkError:
+            raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
+                            None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
+        if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
+                and node.id not in CONSTANTS:
+            return text                         # a bare word: a string
+        return self.eval(node)
+
+    def _import(self, st: A.Import, fctx: FileCtx) -> None:
+        from ..parser import parse
+        raw = st.path
+        if raw.startswith("std/") or raw.startswith("std:"):
+            base = STDLIB
+            rel = raw[4:]
+        else:
+            base = Path(fctx.path).resolve().parent
+            rel = raw
+        if not rel.endswith(".aidl"):
+            rel += ".aidl"
+        target = (base / rel).resolve()
+        allowed = [STDLIB.resolve(), self.root_dir]
+        if not any(target == a or a in target.parents for a in allowed) or Path(rel).is_absolute():
+            raise EvalError("E0114", f"import `{raw}` leaves the project folder", st.path_span,
+                            hint="import only .aidl files in this file's folder tree, or `std/NAME.aidl`")
+        if not target.is_file():
+            cands = [p.name for p in target.parent.glob("*.aidl")] if target.parent.is_dir() else []
+            raise EvalError("E0114", f"cannot find `{raw}` to import", st.path_span,
+                            hint=f"looked for {target}", suggestions=did_you_mean(target.name, cands))
+        key = str(target)
+        if key in self.loading:
+            raise EvalError("E0115", f"import cycle: `{raw}` imports this file again", st.path_span,
+                            hint="move the shared templates into a third file")
+        if key not in self.loaded:
+            text = target.read_text(encoding="utf-8", errors="replace")
+            prog = parse(text, key, self.sink)
+            self.loading.append(key)
+            saved = (self.scope, self.file)
+            try:
+                self.loaded[key] = self._load_file_decls(prog, is_main=False)
+            finally:
+                self.scope, self.file = saved
+                self.loading.pop()
+        sub = self.loaded[key]
+        if st.alias:
+            fctx.scope.vars[st.alias] = Namespace(st.alias, sub.scope)
+        else:
+            for k, v in sub.scope.vars.items():
+                fctx.scope.vars.setdefault(k, v)
+
+    # ------------------------------------------------------------------ statements
+    def _run_body(self, struct: Structure, block: A.Block, scope: Scope) -> None:
+        saved = (self.struct, self.scope)
+        self.struct, self.scope = struct, scope
+        struct.scope = scope.vars            # members (`self.body`) are visible while it runs
+        try:
+            for st in block.stmts:
+                self._exec_stmt(st)
+        finally:
+            self.struct, self.scope = saved
+
+    def _exec_block(self, block: A.Block) -> None:
+        for st in block.stmts:
+            self._exec_stmt(st)
+
+    def _exec_stmt(self, st) -> None:
+        self.cur_span = st.span
+        try:
+            self._exec(st)
+        except _Silent:
+            pass
+        except EvalError as e:
+            self.error(e)
+            if isinstance(st, A.Assign):       # later uses of the name stay quiet
+                self.scope.vars[st.name] = POISON
+            elif isinstance(st, A.StructDecl):
+                self.scope.vars.setdefault(st.name, POISON)
+        except (ValueError, ZeroDivisionError, OverflowError) as e:
+            self.error(EvalError("E0112", f"math error: {e}", st.span,
+                                 hint="check for division by zero or sqrt/asin of an out-of-range value"))
+        except RecursionError:
+            self.error(EvalError("E0302", "expression nested too deeply", st.span,
+                                 hint="split it into named constants"))
+
+    def _exec(self, st) -> None:
+        if isinstance(st, A.StructDecl):
+            self._struct_decl(st)
+        elif isinstance(st, A.Assign):
+            self._assign(st)
+        elif isinstance(st, A.ExprStmt):
+            self._expr_stmt(st.expr)
+        elif isinstance(st, A.For):
+            self._for(st)
+        elif isinstance(st, A.If):
+            c = self._truth(self.eval(st.cond), st.cond)
+            if c:
+                self._exec_block(st.body)
+            elif st.orelse is not None:
+                self._exec_block(st.orelse)
+        elif isinstance(st, A.Block):
+            raise EvalError("E0001", "a block `{ ... }` without a header", st.span,
+                            hint="name it: `solid NAME { ... }`")
+        elif isinstance(st, (A.ParamDecl, A.Def, A.Import, A.UnitsDecl)):
+            what = {A.ParamDecl: "param", A.Def: "def", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
+            raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
+                            hint=f"move the `{what}` line to the top of the file")
+
+    def _need_struct(self, span) -> Structure:
+        if self.struct is None:
+            raise EvalError("E0117", "geometry and constraints must be inside a structure", span,
+                            hint="wrap them in `solid NAME { ... }`")
+        return self.struct
+
+    def _struct_decl(self, st: A.StructDecl, name: str | None = None):
+        parent = self._need_struct(st.span)
+        if st.kind not in ("solid", "hole", "drawing", "assembly"):
+            raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                            hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
+                            suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+        name = name or st.name + self._loop_suffix()
+        self._check_new_name(st.name, st.name_span, parent)
+        child = self._new_structure(name, st.kind, parent, st.span)
+        self.scope.vars[st.name] = StructRef(child)
+        self._run_body(child, st.body, Scope(self.scope, child, self.file))
+        return child
+
+    def _loop_suffix(self) -> str:
+        """``[i]`` per enclosing loop of the current structure body (outermost first)."""
+        idx = []
+        sc = self.scope
+        while sc is not None and sc.struct is self.struct and sc.parent is not None:
+            if hasattr(sc, "loop_index"):
+                idx.append(sc.loop_index)
+            sc = sc.parent
+        return "".join(f"[{i}]" for i in reversed(idx))
+
+    def _check_new_name(self, name: str, span, struct: Structure) -> None:
+        prev = self.scope.vars.get(name)
+        if isinstance(prev, (GeomRef, StructRef)):
+            raise EvalError("E0107", f"`{name}` is already defined in `{struct.path}`", span,
+                            hint="give each geometry and structure its own name")
+
+    def _assign(self, st: A.Assign) -> None:
+        v = st.value
+        if isinstance(v, A.Call) and isinstance(v.func, (A.Name, A.Member)):
+            callee = self._callee(v.func)
+            if isinstance(callee, Template):
+                self._check_new_name(st.name, st.name_span, self._need_struct(st.span))
+                ref = self._instantiate(callee, v, st.name + self._loop_suffix())
+                self.scope.vars[st.name] = ref
+                return
+        if st.name in CONSTANTS or st.name in ("self",):
+            raise EvalError("E0107", f"`{st.name}` is a built-in name and cannot be assigned",
+                            st.name_span, hint="choose another name")
+        if isinstance(v, A.Call) and self.struct is not None:
+            self._check_new_name(st.name, st.name_span, self.struct)
+        val = self.eval(v, name=st.name)
+        if isinstance(val, GeomRef) and not val.geom.name and val.geom.owner is self.struct:
+            val.geom.name = st.name
+        if isinstance(val, list):
+            for i, item in enumerate(val):
+                if isinstance(item, GeomRef) and not item.geom.name:
+                    item.geom.name = f"{st.name}[{i}]"
+        self.scope.vars[st.name] = val
+
+    def _expr_stmt(self, e) -> None:
+        if isinstance(e, (A.Compare, A.BoolOp)):
+            self._equation(e)
+            return
+        val = self.eval(e)
+        if val is None or isinstance(val, (GeomRef, StructRef)) or type(val).__name__ == "Copies":
+            return
+        self.sink.warning("W0101", "this statement has no effect", e.span,
+                          hint="name the value (`x = ...`) or write a constraint (`a == b`)")
+
+    def _for(self, st: A.For) -> None:
+        items = self._iterable(self.eval(st.iter), st.iter)
+        collected: dict[str, list] = {}
+        outer = self.scope
+        for k, item in enumerate(items):
+            sc = Scope(outer, self.struct, self.file)
+            sc.vars[st.var] = item
+            sc.loop_index = k
+            self.scope = sc
+            try:
+                for s in st.body.stmts:
+                    self._exec_stmt(s)
+            finally:
+                self.scope = outer
+            for name, v in sc.vars.items():
+                if name != st.var:
+                    collected.setdefault(name, []).append(v)
+        for name, vals in collected.items():
+            outer.vars[name] = vals
+
+    def _iterable(self, v, node) -> list:
+        if isinstance(v, (list, tuple)):
+            if len(v) > MAX_ITER:
+                raise EvalError("E0301", f"a loop over {len(v)} items exceeds the limit of {MAX_ITER}",
+                                node.span, hint="use fewer items")
+            return list(v)
+        if isinstance(v, str):
+            return list(v)
+        raise EvalError("E0111", f"cannot loop over a {type_name(v)}", node.span,
+                        hint="loop over `range(n)` or a list")
+
+    def _truth(self, v, node) -> bool:
+        if isinstance(v, bool):
+            return v
+        if isinstance(v, Q):
+            c = v.const()
+            if c is None:
+                raise EvalError("E0118", "a condition cannot depend on geometry the solver moves",
+                                node.span, hint="write it as a constraint, or test a param instead")
+            return c != 0
+        if isinstance(v, (list, str)):
+            return len(v) > 0
+        if v is None:
+            return False
+        return True
+
+    # ------------------------------------------------------------------ templates
+    def _instantiate(self, t: Template, call: A.Call, name: str) -> StructRef:
+        parent = self._need_struct(call.span)
+        d = t.node
+        if self.template_depth >= MAX_TEMPLATE_DEPTH:
+            raise EvalError("E0302", f"templates nested more than {MAX_TEMPLATE_DEPTH} deep",
+                            call.span, hint="a template probably instantiates itself")
+        params = [p.name for p in d.params]
+        if len(call.args) > len(params):
+            raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(call.args)}",
+                            call.span, hint=f"`{d.name}({', '.join(params)})`")
+        vals: dict = {}
+        for p, a in zip(params, call.args):
+            vals[p] = (self.eval(a), a)
+        for kw in call.kwargs:
+            if kw.name not in params:
+                raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
+                                hint=f"parameters: {', '.join(params) or 'none'}",
+                                suggestions=did_you_mean(kw.name, params))
+            vals[kw.name] = (self.eval(kw.value), kw.value)
+        for v, node in vals.values():
+            if owners_of(v):
+                raise EvalError("E0204", "template arguments must be values, not geometry or structures",
+                                node.span, hint="pass numbers; relate the parts with constraints "
+                                "in the parent structure")
+        child = self._new_structure(name, d.kind, parent, call.span, template=d.name)
+        saved_file = self.file
+        tscope = Scope(t.scope, child, t.scope.file)
+        self.file = t.scope.file
+        self.template_depth += 1
+        try:
+            saved_scope = self.scope
+            self.scope = tscope
+            for p in d.params:
+                if p.name in vals:
+                    tscope.vars[p.name] = vals[p.name][0]
+                elif p.default is not None:
+                    tscope.vars[p.name] = self.eval(p.default)
+                else:
+                    raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`", call.span,
+                                    hint=f"`{name} = {d.name}({p.name}=...)`")
+            self.scope = saved_scope
+            self._run_body(child, d.body, tscope)
+        finally:
+            self.template_depth -= 1
+            self.file = saved_file
+        return StructRef(child)
+
+    # ------------------------------------------------------------------ constraints
+    def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
+        s = self._need_struct(span)
+        self._check_subtree(owners, span, s)
+        c = Constraint(kind, s, span, text=text)
+        if any(contains_bbox(e.expr) for e in eqs):
+            c.deferred = eqs
+        else:
+            c.equations = eqs
+        s.constraints.append(c)
+        self.model.constraints.append(c)
+
+    def _check_subtree(self, owners, span, s: Structure) -> None:
+        bad = [o for o in owners if not o.is_within(s)]
+        if bad:
+            o = bad[0]
+            lca = _common_ancestor(o, s)
+            where = f"`{lca.path}`" if lca else "a common parent"
+            raise EvalError("E0202", f"this constraint in `{s.path}` refers to `{o.path}`, "
+                            f"which is outside `{s.name}`'s subtree", span,
+                            hint=f"a constraint may only use its own structure's subtree; "
+                                 f"move it into {where}, which contains both")
+
+    def _equation(self, e) -> None:
+        if isinstance(e, A.BoolOp):
+            if e.op != "and":
+                raise EvalError("E0108", "`or` cannot join constraints", e.span,
+                                hint="constraints all hold at once; join them with `and`")
+            self._equation(e.left)
+            self._equation(e.right)
+            return
+        if not isinstance(e, A.Compare):
+            raise EvalError("E0108", "only comparisons can be joined with `and` into a constraint",
+                            e.span, hint="write `a == b and c <= d`")
+        vals = [self.eval(x) for x in e.operands]
+        for op, (l, r), (ln, rn) in zip(e.ops, zip(vals, vals[1:]), zip(e.operands, e.operands[1:])):
+            eqs = self._compare_eqs(op, l, r, e.span)
+            self._add_constraint("equation", eqs, e.span, _src(self.sink, e.span),
+                                 owners_of(l, r))
+
+    def _compare_eqs(self, op, l, r, span) -> list[Equation]:
+        if op == "!=":
+            raise EvalError("E0108", "`!=` cannot be a constraint", span,
+                            hint="state what should hold: `==`, `<=` or `>=`")
+        if isinstance(l, (tuple, list)) and len(l) == 2:
+            l = self._to_point(l, span)
+        if isinstance(r, (tuple, list)) and len(r) == 2:
+            r = self._to_point(r, span)
+        if isinstance(l, GeomRef) and l.geom.kind == "Point":
+            l = geom_member(l.geom, "p", self.struct)
+        if isinstance(r, GeomRef) and r.geom.kind == "Point":
+            r = geom_member(r.geom, "p", self.struct)
+        if isinstance(l, PV) and isinstance(r, PV):
+            if op != "==":
+                raise EvalError("E0108", f"points can only be compared with `==`, not `{op}`", span)
+            return [Equation(l.x - r.x), Equation(l.y - r.y)]
+        if not isinstance(l, Q) or not isinstance(r, Q):
+            raise EvalError("E0108", f"cannot constrain a {type_name(l)} {op} a {type_name(r)}", span,
+                            hint="compare numbers, lengths or angles (e.g. `a.width == 2 * b.width`), "
+                                 "or points with `==`")
+        le, re_, _ = self._unify(l, r, span)
+        if op == "==":
+            return [Equation(le - re_)]
+        if op in ("<=", "<"):
+            return [Equation(re_ - le, True)]
+        return [Equation(le - re_, True)]
+
+    def _unify(self, a: Q, b: Q, span):
+        try:
+            return unify_add(a, b, self.unit_scale, DEG)
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), span,
+                            hint="both sides must have the same unit kind (length, angle or number)")
+
+    # ------------------------------------------------------------------ calls
