@@ -160,18 +160,27 @@ _DEFS = {
                   members=POLY_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
-                         doc="A rigid regular polygon; radius (center to vertex), sides and "
-                             "rotation are held.", members=POLY_MEMBERS),
+                         [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
+                          A("rotation", "angle", 0.0)],
+                         doc="A rigid regular polygon; radius (center to vertex) or across_flats "
+                             "(distance between opposite sides; 2 * apothem), sides and rotation "
+                             "are held. At rotation 0 the first vertex is on +x from the center "
+                             "(a hexagon has flats at top and bottom).", members=POLY_MEMBERS),
     "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
+               [A("start", "point"), A("end", "point"), A("width", "length")],
                [A("center", "point"), A("length", "length"), A("width", "length"),
                 A("rotation", "angle", 0.0)],
-               doc="A stadium: the set of points within radius of the segment start-end. "
-                   "The radius (width/2) is held; by center, length and rotation are held too.",
+               doc="A stadium: the set of points within radius of the segment start-end (the "
+                   "centers of its round ends). The radius (width/2) is held; by center, length "
+                   "(overall, end to end) and rotation are held too.",
                members=SLOT_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
-                A("anchor", "string", "middle")],
-               doc="Single-stroke text (Hershey font) in a drawing; size is the cap height; "
-                   "anchor is start, middle or end.", members=TEXT_MEMBERS),
+                A("anchor", "string", "middle"), A("valign", "string", "baseline"),
+                A("rotation", "angle", 0.0)],
+               doc="Single-stroke text (Hershey font) in a drawing; size is the cap height. "
+                   "position is on the baseline: anchor (start, middle, end) places it "
+                   "horizontally, valign (baseline, middle, top, bottom) vertically; rotation "
+                   "turns the text counter-clockwise about position.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line/circle: on it)."),
@@ -182,7 +191,8 @@ _DEFS = {
     "Fixed": _c([A("a", "any")],
                 doc="Hold a point, geometry or structure where it starts."),
     "Distance": _c([A("a", "geometry"), A("b", "geometry"), A("distance", "length")],
-                   doc="Distance between two points, or from a point to a line."),
+                   doc="Distance between two points, from a point to a line, or between two "
+                       "parallel lines (they are made parallel)."),
     "HorizontalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
                              doc="b.x - a.x == distance."),
     "VerticalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
@@ -255,8 +265,12 @@ _DEFS = {
                         doc="count instances in all, each moved by step (a vector) from the last; "
                             "gives the list [original, copy1, ...]."),
     "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
-                           A("angle", "angle", 2 * math.pi)], cat="operation",
-                          doc="count instances turned about center, spread evenly over angle; "
+                           A("angle", "angle", 2 * math.pi)],
+                          [A("target", "boxed"), A("count", "number"), A("center", "point"),
+                           A("step", "angle")], cat="operation",
+                          doc="count instances turned counter-clockwise about center; angle is "
+                              "the total span from the first to the last instance (a full 360 deg "
+                              "spaces them 360/count apart), step the angle between neighbours; "
                               "gives the list [original, copy1, ...]."),
     "Fillet": _c([A("radius", "length")], cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline."),
@@ -294,6 +308,32 @@ SYNONYMS: dict[str, str] = {
     "VerticallyCentered": "AlignCenterY",
     "PointOnLine": "OnLine",
     "OnArc": "OnCircle",
+}
+
+# argument synonyms: entry name -> {name a model writes -> canonical argument name}.  One line
+# per synonym; the checker renames silently, and only where the canonical argument belongs to
+# the chosen form and is not given as well.  "*" applies to every entry (each alias lists its
+# candidates; the first one the form has is used).
+ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
+    "*": {"r": "radius", "rad": "radius", "d": ("diameter", "distance"), "dia": "diameter",
+          "w": "width", "h": "height", "pos": ("position", "center"), "rot": "rotation",
+          "n": ("count", "sides"), "num": ("count", "sides")},
+    "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
+             "font_size": "size"},
+    "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
+    "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
+    "Circle": {"position": "center", "at": "center"},
+    "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height"},
+    "RegularPolygon": {"n_sides": "sides", "num_sides": "sides", "af": "across_flats",
+                       "flat_to_flat": "across_flats"},
+    "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end"},
+    "CircularPattern": {"number": "count", "copies": "count", "around": "center",
+                        "origin": "center", "span": "angle", "total_angle": "angle",
+                        "spacing": "step", "pitch": "step", "angle_step": "step"},
+    "LinearPattern": {"number": "count", "copies": "count", "spacing": "step",
+                      "offset": "step", "delta": "step", "pitch": "step"},
+    "Fillet": {"r": "radius"},
+    "Chamfer": {"size": "distance", "d": "distance", "length": "distance"},
 }
 
 # synonyms whose arguments mean the canonical entry's arguments in another order:
@@ -367,31 +407,82 @@ def all_callable_names() -> list[str]:
     return list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS)
 
 
+def arg_synonyms(entry_name: str) -> dict[str, tuple[str, ...]]:
+    """Argument synonyms of an entry: alias -> candidate canonical names (entry's own first)."""
+    out: dict[str, tuple[str, ...]] = {}
+    for table in (ARG_SYNONYMS.get(entry_name, {}), ARG_SYNONYMS["*"]):
+        for alias, canon in table.items():
+            out.setdefault(alias, canon if isinstance(canon, tuple) else (canon,))
+    return out
+
+
+def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
+                kwnames: list[str]) -> dict[str, str]:
+    """Keyword names as written -> the variant's canonical names (aliases resolved).
+
+    An alias is renamed only when its canonical argument belongs to ``variant`` and is not
+    given otherwise (positionally or by its own name); other names map to themselves.
+    """
+    names = [a.name for a in variant]
+    taken = set(names[:npos]) | {k for k in kwnames if k in names}
+    syn = arg_synonyms(entry.name)
+    out = {}
+    for k in kwnames:
+        if k not in names:
+            for canon in syn.get(k, ()):
+                if canon in names and canon not in taken:
+                    out[k] = canon
+                    taken.add(canon)
+                    break
+        out.setdefault(k, k)
+    return out
+
+
+def accepted_args(entry: Entry) -> list[str]:
+    """Every argument name an entry accepts: canonical ones, then synonyms that fit a form."""
+    canon = list(dict.fromkeys(a.name for v in entry.variants for a in v))
+    syn = [k for k, cs in arg_synonyms(entry.name).items() if any(c in canon for c in cs)]
+    return canon + syn
+
+
 def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
-    """Pick the constructor variant matching ``npos`` positional and ``kwnames`` keyword args.
+    """Pick the constructor variant matching ``npos`` positional and ``kwnames`` keyword args
+    (argument synonyms allowed; see :func:`bind_variant` for the renaming).
 
     Returns (variant, None) or (None, reason).
+    """
+    v, _ren, reason = bind_variant(entry, npos, kwnames)
+    return v, reason
+
+
+def bind_variant(entry: Entry, npos: int, kwnames: list[str]):
+    """Like :func:`choose_variant`, also giving the keyword renaming of :func:`rename_args`.
+
+    Returns (variant, {written: canonical}, None) or (None, {}, reason).
     """
     best, best_reason = None, None
     for v in entry.variants:
         names = [a.name for a in v]
+        ren = rename_args(entry, v, npos, kwnames)
+        kwnames_c = [ren[k] for k in kwnames]
         npos_max = sum(not a.kw_only for a in v)
         if npos > npos_max:
             best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
             continue
         bound = set(names[:npos])
-        bad = [k for k in kwnames if k not in names]
+        bad = [k for k in kwnames_c if k not in names]
         if bad:
             best_reason = best_reason or f"has no argument `{bad[0]}`"
             continue
-        if any(k in bound for k in kwnames):
-            best_reason = f"argument `{next(k for k in kwnames if k in bound)}` given twice"
+        if any(k in bound for k in kwnames_c) or len(set(kwnames_c)) < len(kwnames_c):
+            dup = next((k for k in kwnames_c if k in bound or kwnames_c.count(k) > 1))
+            best_reason = f"argument `{dup}` given twice"
             continue
-        given = bound | set(kwnames)
+        given = bound | set(kwnames_c)
         missing = [a.name for a in v if a.required and a.name not in given]
         if missing:
             if best_reason is None or best_reason.startswith("has no"):
                 best_reason = f"missing argument `{missing[0]}`"
             continue
-        return v, None
-    return best, best_reason
+        return v, ren, None
+    return best, {}, best_reason

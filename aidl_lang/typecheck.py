@@ -17,7 +17,8 @@ from pathlib import Path
 
 from . import ast as A
 from .diagnostics import DiagnosticSink, did_you_mean
-from .registry import CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, choose_variant, lookup
+from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
+                       lookup)
 
 KINDS = ("solid", "hole", "drawing", "assembly")
 
@@ -265,13 +266,14 @@ class Checker:
         variant, reason = choose_variant(entry, len(e.args), kwnames)
         if variant is not None:
             return
-        all_names = {a.name for v in entry.variants for a in v}
+        all_names = accepted_args(entry)
         bad = next((k for k in e.kwargs if k.name not in all_names), None)
         if bad is not None:
             sugg = did_you_mean(bad.name, all_names)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
                             hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + "forms: "
-                            + "; ".join(entry.signature(v) for v in entry.variants),
+                            + "; ".join(entry.signature(v) for v in entry.variants)
+                            + f"; accepted names: {', '.join(all_names)}",
                             suggestions=sugg)
             return
         code = "E0106" if reason and reason.startswith("missing") else "E0104"

@@ -42,8 +42,7 @@ def slot_hole(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hol
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
 }
 
-# A hexagonal pocket for a nut, sized across flats.
+# A hexagonal pocket for a nut, sized across flats (flats at top and bottom).
 def hex_pocket(across_flats=8 mm, cx=0 mm, cy=0 mm) -> hole {
-    hex = RegularPolygon(center=(cx, cy), radius=across_flats / 2 / cos(30 deg), sides=6,
-                         rotation=30 deg)
+    hex = RegularPolygon(center=(cx, cy), across_flats=across_flats, sides=6)
 }

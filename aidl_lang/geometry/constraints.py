@@ -148,7 +148,14 @@ def distance(ctx, a, b, distance, **_):
         p = _pt(a, "a")
         c, r = _circ(ctx, b, "b")
         return [Equation(hypot(p.x - c.x, p.y - c.y) - r - d)]
-    raise ConstraintError(f"Distance takes two points or a point and a line, "
+    if ka == "line" and kb == "line":
+        # two parallel lines `distance` apart: parallel, and b's start that far from line a
+        s, e = _line(ctx, a, "a")
+        q, _qe = _line(ctx, b, "b")
+        sd = _cross(e.x - s.x, e.y - s.y, q.x - s.x, q.y - s.y) / hypot(e.x - s.x, e.y - s.y)
+        sign = _sign_nearest(ctx, sd, _val(ctx, d))
+        return parallel(ctx, a, b) + [Equation(sd - d * sign)]
+    raise ConstraintError(f"Distance takes two points, a point and a line, or two lines, "
                           f"got {type_name(a)} and {type_name(b)}")
 
 

@@ -4,8 +4,12 @@ corner finishing of a solid's outline (fillets, chamfers).
 Copies are real model geometry: every point of a copy is a new unknown tied to the transformed
 original point by two equations, every dimension (radius, width, ...) by one, so a copy follows
 its original through the solve, belongs to bounding boxes and can be constrained further.
-A copy of a structure is a new child structure of the one where the operation is written, with
-the same kind, children and member names; its frame is held on its parent's.  The original must
+A copy of a structure is a new sibling of the original (a child of the original's parent, which
+is the structure where the operation is written or one inside it), with the same kind, children
+and member names; its frame is held on its parent's.  A copy of geometry belongs to the
+original's structure.  ``CircularPattern`` turns counter-clockwise: ``angle`` is the span from
+the first instance to the last (a full turn spaces ``count`` instances 360/count apart), ``step``
+the angle between neighbours.  The original must
 lie in that structure's subtree (the validity rule for constraints).  The transform's line,
 center and step may be solved values; rotations (pattern angles) are known before solving.
 
@@ -137,16 +141,20 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
     if isinstance(target, StructRef):
+        # copies belong where the original is: siblings of it, whichever structure the
+        # operation is written in (paper rule: the original lies in that structure's subtree)
+        home = target.struct.parent or S
         base = name or f"{target.struct.name}_{what}"
         nm = base if k == 0 else f"{base}[{k}]"
-        if nm in S.children:
-            raise OperationError(f"`{S.path}` already has a child named `{nm}`; "
+        if nm in home.children:
+            raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
                                  f"name the copy: `copy = ...`")
-        out = StructRef(cl.struct(target.struct, S, nm))
+        out = StructRef(cl.struct(target.struct, home, nm))
     else:
-        g = cl.geom(target.geom, S)
-        if g not in S.geometry:
-            S.geometry.append(g)
+        home = target.geom.owner
+        g = cl.geom(target.geom, home)
+        if g not in home.geometry:
+            home.geometry.append(g)
         out = GeomRef(g)
     c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=f"{what} copy", implicit=True)
     S.constraints.append(c)
@@ -207,11 +215,16 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
         else:
-            total = args["angle"].const()
-            if total is None:
-                raise OperationError("CircularPattern angle must be known before solving")
-            full = abs(abs(total) - 2 * math.pi) < 1e-9
-            step = total / (n if full or n == 1 else n - 1)
+            if "step" in args:
+                step = args["step"].const()
+                if step is None:
+                    raise OperationError("CircularPattern step must be known before solving")
+            else:
+                total = args["angle"].const()
+                if total is None:
+                    raise OperationError("CircularPattern angle must be known before solving")
+                full = abs(abs(total) - 2 * math.pi) < 1e-9
+                step = total / (n if full or n == 1 else n - 1)
             xf, rot, flip = _rotate(args["center"], step * k)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
     return out

@@ -295,13 +295,19 @@ def _build_RegularPolygon(ctx, g, a):
     n = int(round(_const(ctx, a["sides"], "sides")))
     if n < 3 or n > 1000:
         raise PrimitiveError(f"a RegularPolygon needs 3 to 1000 sides, got {n}")
-    r = _const(ctx, a["radius"], "radius")
+    if "across_flats" in a:      # distance between opposite sides = 2 * apothem
+        r = _const(ctx, a["across_flats"], "across_flats") / 2 / math.cos(math.pi / n)
+    else:
+        r = _const(ctx, a["radius"], "radius")
+    if r <= 0:
+        raise PrimitiveError("a RegularPolygon needs a positive size")
     rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.data["rotation"] = rot
     c = g.points["center"] = ctx.point(a["center"], "center")
     cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
     pts, eqs = [], []
-    for k in range(n):
-        t = rot + 2 * math.pi * k / n + math.pi / 2
+    for k in range(n):       # vertex k at angle rotation + 360 deg * k / n from +x (CCW)
+        t = rot + 2 * math.pi * k / n
         ox, oy = r * math.cos(t), r * math.sin(t)
         p = ctx.point(PV(cx + ox, cy + oy), f"points[{k}]")
         pts.append(p)
@@ -333,7 +339,8 @@ def _build_Slot(ctx, g, a):
     else:
         s = ctx.point(a["start"], "start")
         e = ctx.point(a["end"], "end")
-        g.scalars["radius"] = ctx.scalar(a["radius"], "radius", held=True)
+        r = a["radius"] if "radius" in a else Q(a["width"].expr * 0.5, LEN, a["width"].owners)
+        g.scalars["radius"] = ctx.scalar(r, "radius", held=True)
     g.points["start"], g.points["end"] = s, e
     g.closed = True
 
@@ -343,9 +350,18 @@ def _build_Text(ctx, g, a):
     g.data["text"] = a["text"]
     g.data["size"] = _const(ctx, a.get("size", Q.num(5.0, LEN)), "size")
     anchor = a.get("anchor", "middle")
+    if anchor in ("left", "center", "right"):           # the words of CSS and most CAD tools
+        anchor = {"left": "start", "center": "middle", "right": "end"}[anchor]
     if anchor not in ("start", "middle", "end"):
         raise PrimitiveError(f"anchor must be \"start\", \"middle\" or \"end\", not \"{anchor}\"")
     g.data["anchor"] = anchor
+    valign = {"center": "middle", "centre": "middle"}.get(a.get("valign", "baseline"),
+                                                          a.get("valign", "baseline"))
+    if valign not in ("baseline", "middle", "top", "bottom"):
+        raise PrimitiveError(f"valign must be \"baseline\", \"middle\", \"top\" or \"bottom\", "
+                             f"not \"{valign}\"")
+    g.data["valign"] = valign
+    g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
 
 
 # ---------------------------------------------------------------------- members

@@ -4,6 +4,7 @@ Sizes are cap heights in mm.  :func:`text_strokes` gives polylines relative to t
 """
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1) maps ~1 em)
@@ -31,8 +32,18 @@ def _cap_height() -> float:
     return (max(ys) - min(ys)) if ys else 1.0
 
 
-def text_strokes(text: str, size: float, anchor: str = "middle") -> list[tuple[tuple, tuple]]:
-    """Line segments ((x0, y0), (x1, y1)) in mm, relative to the anchor on the baseline."""
+VALIGNS = ("baseline", "middle", "top", "bottom")
+
+
+def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "baseline",
+                 rotation: float = 0.0) -> list[tuple[tuple, tuple]]:
+    """Line segments ((x0, y0), (x1, y1)) in mm, relative to the text's position point.
+
+    ``anchor`` (start, middle, end) puts the position at the left end, middle or right end of
+    the strokes; ``valign`` puts it on the baseline, at half the cap height (middle), at the cap
+    height (top) or at the lowest stroke (bottom, below descenders); ``rotation`` (radians)
+    then turns the text counter-clockwise about the position.
+    """
     segs = _raw(text)
     if not segs:
         return []
@@ -41,8 +52,15 @@ def text_strokes(text: str, size: float, anchor: str = "middle") -> list[tuple[t
     xs = [p[0] for s in segs for p in s]
     lo, hi = min(xs), max(xs)
     dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
-    return [(((a[0] + dx) * k, (a[1] - base) * k), ((b[0] + dx) * k, (b[1] - base) * k))
-            for a, b in segs]
+    low = min(p[1] for s in segs for p in s)
+    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
+          "bottom": -(low - base) * k}[valign]
+    cs, sn = math.cos(rotation), math.sin(rotation)
+
+    def f(p):
+        x, y = (p[0] + dx) * k, (p[1] - base) * k + dy
+        return (x * cs - y * sn, x * sn + y * cs)
+    return [(f(a), f(b)) for a, b in segs]
 
 
 @lru_cache(maxsize=1)
@@ -52,9 +70,10 @@ def _baseline() -> float:
     return min(ys) if ys else 0.0
 
 
-def text_extent(text: str, size: float, anchor: str = "middle") -> tuple[float, float, float, float]:
-    """(x0, x1, y0, y1) of the strokes relative to the anchor point, in mm."""
-    segs = text_strokes(text, size, anchor)
+def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "baseline",
+                rotation: float = 0.0) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the strokes relative to the position point, in mm."""
+    segs = text_strokes(text, size, anchor, valign, rotation)
     if not segs:
         return (0.0, 0.0, 0.0, 0.0)
     xs = [p[0] for s in segs for p in s]

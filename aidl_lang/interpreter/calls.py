@@ -15,7 +15,8 @@ from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_of, type_name)
 from ..limits import MAX_GEOMETRY, MAX_ITER
-from ..registry import (ENTRIES, FUNCTIONS, canonical, canonical_args, choose_variant, lookup)
+from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
+                        lookup)
 from .common import (DEG, _a, _fmt_num, _src)
 
 
@@ -58,15 +59,15 @@ class Calls:
         entry = lookup(nm)
         args = [self.eval(a) for a in node.args]
         kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
-        variant, reason = choose_variant(entry, len(args), list(kwargs))
+        variant, ren, reason = bind_variant(entry, len(args), list(kwargs))
         if variant is None:
             span = node.span
-            bad_kw = next((kw for kw in node.kwargs
-                           if not any(kw.name in [a.name for a in v] for v in entry.variants)), None)
+            ok = accepted_args(entry)
+            bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
-                names = sorted({a.name for v in entry.variants for a in v})
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
-                                hint=f"{entry.signature()}", suggestions=did_you_mean(bad_kw.name, names))
+                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}",
+                                suggestions=did_you_mean(bad_kw.name, ok))
             code = "E0106" if reason and reason.startswith("missing") else "E0104"
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
         bound = {}
@@ -75,8 +76,10 @@ class Calls:
             bound[a.name] = v
             spans[a.name] = node_a.span
         for k, (v, kw) in kwargs.items():
-            bound[k] = v
-            spans[k] = kw.value.span
+            bound[ren[k]] = v
+            spans[ren[k]] = kw.value.span
+        if canonical(nm) == "Text" and "center" in kwargs and "valign" not in bound:
+            bound["valign"] = "middle"        # Text(center=...) means centered on that point
         bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
         conv = {}
         for a in variant:
@@ -127,7 +130,8 @@ class Calls:
             raise EvalError("E0108", str(ex), node.span, hint=lookup(kind).signature())
         if kind == "Text":
             from ..geometry.text import text_extent
-            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"])
+            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"],
+                                           g.data["valign"], g.data["rotation"])
         return GeomRef(g)
 
     # -- used by primitives.build

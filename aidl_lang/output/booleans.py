@@ -201,7 +201,8 @@ class Renderer:
             out.lines.append(("drawing", self.curve(g)))
         elif g.kind == "Text":
             p = self.P(g.points["position"])
-            for a, b in text_strokes(g.data["text"], g.data["size"], g.data["anchor"]):
+            for a, b in text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
+                                     g.data.get("valign", "baseline"), g.data.get("rotation", 0.0)):
                 out.lines.append(("drawing", np.array([p + a, p + b])))
         elif g.kind == "Point":
             return
