@@ -81,17 +81,23 @@ def lark_parser() -> Lark:
 
 
 # --------------------------------------------------------------- preprocessing
-def mask_comments(src: str) -> str:
+def mask_comments(src: str, record: list | None = None) -> str:
     """Turn ``//`` comments into ``# `` comments (same length, so spans stay valid).
 
-    ``//`` starts a comment at the start of a line, or when the rest of the line reads as prose
-    (two words side by side that are not keywords, or characters no expression uses);
-    otherwise it is floor division (``n // 2 + 1``, ``w // step``).
+    The rule (docs/language.md, "Comments"): ``//`` is floor division when the code before it
+    ends an operand (a name, number, ``)``, ``]``) on the same line -- or on an earlier line
+    inside open ``(``/``[`` -- and the rest of the line does not read as prose (two words side
+    by side that are not keywords, or characters no expression uses).  Otherwise it starts a
+    comment: ``// note`` on its own line, ``x = 5  // half the width``.  So code that parses
+    as an expression is never swallowed.  ``record`` (if given) receives ``(offset, is_comment)``
+    for every ``//`` seen, for the syntax-error hints.
     """
     out = list(src)
     i, n = 0, len(src)
     quote = None
     line_start = True
+    depth = 0
+    prev = ""                # the last code character (outside strings and comments)
     while i < n:
         ch = src[i]
         if quote:
@@ -100,6 +106,7 @@ def mask_comments(src: str) -> str:
                 continue
             if ch == quote or ch == "\n":
                 quote = None
+                prev = "a"   # a string ends an operand
             i += 1
             continue
         if ch in "\"'":
@@ -116,32 +123,63 @@ def mask_comments(src: str) -> str:
         elif ch == "/" and src.startswith("//", i):
             j = src.find("\n", i)
             rest = src[i + 2: (n if j < 0 else j)]
-            if line_start or _is_prose(rest):
+            operand_before = prev.isalnum() or prev in "_)]°"
+            division = operand_before and (not line_start or depth > 0) and not _is_prose(rest)
+            if record is not None:
+                record.append((i, not division))
+            if not division:
                 out[i], out[i + 1] = "#", " "
                 i = n if j < 0 else j
                 continue
+            prev = "/"
+            line_start = False
             i += 2
             continue
         elif ch == "\n":
             line_start = True
         elif not ch.isspace():
             line_start = False
+            prev = ch
+            if ch in "([":
+                depth += 1
+            elif ch in ")]" and depth:
+                depth -= 1
         i += 1
     return "".join(out)
 
 
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
+_STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
 
 def _is_prose(rest: str) -> bool:
-    """After `` // ``: prose (two words side by side, not keywords), so a comment."""
-    code = rest.split("#", 1)[0].split("//", 1)[0]
+    """After ``//``: prose (two words side by side, not keywords, or characters no
+    expression uses), so a comment.  Strings in the rest are not looked into."""
+    code = _STRINGS.sub('""', rest).split("#", 1)[0].split("//", 1)[0]
     if not code.strip():
         return True
-    for m in re.finditer(r"([A-Za-z_]\w*)[ \t]+(?=([A-Za-z_]\w*))", code):
+    for m in re.finditer(r"(?<![\w.])([A-Za-z_]\w*)[ \t]+(?=([A-Za-z_]\w*))", code):
         if m.group(1) not in _KW and m.group(2) not in _KW:
             return True
-    return bool(re.search(r"[^\w\s.()\[\]+\-*/%,<>=!]", code))
+    return bool(re.search(r"[^\w\s.()\[\]{}+\-*/%,<>=!:;\"'°]", code))
+
+
+def _slash_hint(sink: DiagnosticSink, slashes: list, text: str, pos: int) -> None:
+    """Add to the syntax error just reported (at ``pos``) which way a nearby ``//`` was read."""
+    if not slashes or not sink.items:
+        return
+    d = sink.items[-1]
+    line = text.count("\n", 0, min(pos, len(text))) + 1
+    for off, is_comment in reversed(slashes):
+        ln = text.count("\n", 0, off) + 1
+        if not is_comment and ln == line:
+            d.hint = ("`//` on this line is read as floor division (after an operand, before "
+                      "code); start a comment with `#`")
+            return
+        if is_comment and ln <= line and (ln == line or pos >= len(text.rstrip())):
+            d.hint = (f"`//` on line {ln} starts a comment, so the rest of that line is not "
+                      f"code; for floor division write the operands on both sides, e.g. `n // 2`")
+            return
 
 
 def _blank_logical_line(text: str, pos: int) -> str:
@@ -186,7 +224,8 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     sink.sources[path] = source
     if "\x00" in source:
         source = source.replace("\x00", " ")
-    text = mask_comments(source)
+    slashes: list = []
+    text = mask_comments(source, slashes)
     depth = maxdepth = 0
     for i, ch in enumerate(text):
         if ch in "([{":
@@ -214,6 +253,7 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
                 return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
             seen.add(pos)
             _report(e, text, path, pos, sink)
+            _slash_hint(sink, slashes, text, pos)
             if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
                 return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
             text = _blank_logical_line(text, pos)
@@ -315,6 +355,25 @@ class _Builder(Transformer):
 
     def units_decl(self, meta, items):
         return A.UnitsDecl(self.s(meta), str(items[0]), self.s(items[0]))
+
+    def units_in(self, meta, items):
+        sp = self.s(meta)
+        return A.UnitsDecl(sp, "in", Span(sp.file, sp.end_line, sp.end_col - 2, sp.end_line,
+                                          sp.end_col, sp.end - 2, sp.end))
+
+    def import_dotted(self, meta, items):
+        # `import stdlib.shapes` / `import std.shapes` is `import "std/shapes.aidl"`;
+        # `import parts.gears` is `import "parts/gears.aidl"` (relative to this file)
+        *parts, alias = items
+        names = [str(t) for t in parts]
+        if names[0] in ("std", "stdlib") and len(names) > 1:
+            path = "std/" + "/".join(names[1:]) + ".aidl"
+        else:
+            path = "/".join(names) + ".aidl"
+        sp = _span(self.path, parts[0])
+        last = _span(self.path, parts[-1])
+        tsp = Span(sp.file, sp.line, sp.col, last.end_line, last.end_col, sp.start, last.end)
+        return A.Import(self.s(meta), path, tsp, str(alias) if alias else None)
 
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]

@@ -61,8 +61,8 @@ CASES = [
     ("E0104", """def f(a = 1) -> solid { c = Circle((0, 0), a) }
 solid s { x = f(1, 2) }""", (2, 15, 2, 22)),
     ("E0105", """solid s {
-    c = Circle(center=(0, 0), r=5)
-}""", (2, 31, 2, 34)),
+    c = Circle(center=(0, 0), rad_ius=5)
+}""", (2, 31, 2, 40)),
     ("E0105", """def f(a = 1) -> solid { c = Circle((0, 0), a) }
 solid s { x = f(b=2) }""", (2, 17, 2, 20)),
     ("E0106", """solid s {

@@ -109,11 +109,16 @@ def cmd_check(args) -> int:
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                              "dof": d.dof, "floating": d.floating} for d in dofs]
+        if res.ok:
+            from ..solver.diagnose import degrees_of_freedom, freedom_text
+            dofs_all = dofs if dofs is not None else degrees_of_freedom(res.solve.solver)
+            extra["freedom"] = freedom_text(dofs_all)
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
         print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
-              f"{s.n_equations} equations, solved in {s.iterations} Newton steps)")
+              f"{s.n_equations} equations, solved in {s.iterations} Newton steps; "
+              f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
     return 0 if res.ok else 1

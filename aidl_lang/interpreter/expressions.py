@@ -85,6 +85,13 @@ class Expressions:
             s = s.parent
         if lookup(e.id) is not None or e.id in FUNCTIONS:
             return Builtin(e.id)
+        later = getattr(self, "later_defs", {}).get(e.id)
+        if later is not None and later > e.span.line:
+            raise EvalError("E0101", f"`{e.id}` is used before its definition: it is defined later, "
+                            f"on line {later}", e.span,
+                            hint=f"a definition may only use names defined above it; move line "
+                                 f"{later} above line {e.span.line} (constraint statements may "
+                                 f"name later geometry)")
         cands = list(self.scope.names()) + [s.name for s in self._enclosing()] + list(CONSTANTS)
         sugg = did_you_mean(e.id, cands)
         raise EvalError("E0101", f"unknown name `{e.id}`", e.span,

@@ -169,14 +169,22 @@ class Statements:
 
     # ------------------------------------------------------------------ statements
     def _run_body(self, struct: Structure, block: A.Block, scope: Scope) -> None:
-        saved = (self.struct, self.scope)
+        """Run a structure body: definitions (assignments, structures, loops, ifs) in order,
+        then its constraint statements (bare calls and equations at the body's top level), so
+        a constraint may name geometry defined below it (docs/language.md, "Order")."""
+        saved = (self.struct, self.scope, getattr(self, "later_defs", {}))
         self.struct, self.scope = struct, scope
+        self.later_defs = _definition_lines(block.stmts)
         struct.scope = scope.vars            # members (`self.body`) are visible while it runs
         try:
             for st in block.stmts:
-                self._exec_stmt(st)
+                if not isinstance(st, A.ExprStmt):
+                    self._exec_stmt(st)
+            for st in block.stmts:
+                if isinstance(st, A.ExprStmt):
+                    self._exec_stmt(st)
         finally:
-            self.struct, self.scope = saved
+            self.struct, self.scope, self.later_defs = saved
 
     def _exec_block(self, block: A.Block) -> None:
         for st in block.stmts:
@@ -461,3 +469,18 @@ class Statements:
                             hint="both sides must have the same unit kind (length, angle or number)")
 
     # ------------------------------------------------------------------ calls
+
+
+def _definition_lines(stmts, out=None) -> dict[str, int]:
+    """Name -> line of its first definition in a body (also inside its loops and ifs)."""
+    out = {} if out is None else out
+    for st in stmts:
+        if isinstance(st, (A.Assign, A.StructDecl)):
+            out.setdefault(st.name, st.span.line)
+        elif isinstance(st, A.For):
+            _definition_lines(st.body.stmts, out)
+        elif isinstance(st, A.If):
+            _definition_lines(st.body.stmts, out)
+            if st.orelse is not None:
+                _definition_lines(st.orelse.stmts, out)
+    return out

@@ -202,6 +202,17 @@ def degrees_of_freedom(solver) -> list[StructureDof]:
     return out
 
 
+def freedom_text(dofs: list[StructureDof]) -> str:
+    """``fully constrained`` or ``N degrees of freedom left, see --dof`` for a whole model
+    (structures too large for the dense rank count are reported as unknown)."""
+    if any(d.rank < 0 for d in dofs):
+        return "degrees of freedom not counted (model too large), see --dof"
+    n = sum(max(0, d.dof) for d in dofs)
+    if n == 0:
+        return "fully constrained"
+    return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
+
+
 def redundancies(solver) -> list[Redundant]:
     """User constraints implied by others (consistent), over the whole model's unknowns.
 
