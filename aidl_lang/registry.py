@@ -70,6 +70,9 @@ class Entry:
 CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn",
                    kw_only=True)
 
+FLEXIBLE = Arg("flexible", "bool", False, "points given by literal coordinates are starting "
+               "guesses only (the shape may bend), not a rigid shape", kw_only=True)
+
 POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
 LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
                 "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
@@ -140,10 +143,11 @@ _DEFS = {
                             A("corner_radius", "length"), A("rotation", "angle", 0.0)],
                            doc="A rectangle with rounded corners (radius applied when drawn).",
                            members=RECT_MEMBERS),
-    "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point")],
+    "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point"), FLEXIBLE],
                    [A("center", "point"), A("base", "length"), A("height", "length"),
                     A("rotation", "angle", 0.0)],
-                   doc="A triangle through three points (starting guesses), or an isosceles "
+                   doc="A triangle through three points (rigid when all are literal coordinates, "
+                       "as Polygon), or an isosceles "
                        "one by base and height (held; a, b on the base, c the apex, center the "
                        "bounding-box center).", members=TRI_MEMBERS),
     "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
@@ -155,8 +159,10 @@ _DEFS = {
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess.",
                   members=ELLIPSE_MEMBERS),
-    "Polygon": _p([A("points", "points")],
-                  doc="A closed polygon through a list of points (starting guesses).",
+    "Polygon": _p([A("points", "points"), FLEXIBLE],
+                  doc="A closed polygon through a list of points. Given only literal "
+                      "coordinates it is rigid (moves, keeps its shape) unless flexible=true; "
+                      "otherwise its points are starting guesses.",
                   members=POLY_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],

@@ -226,6 +226,7 @@ def _build_Triangle(ctx, g, a):
     else:
         pts = [ctx.point(a[k], k) for k in ("a", "b", "c")]
         g.points.update(dict(zip(("a", "b", "c"), pts)))
+        _hold_literal_shape(ctx, g, [a[k] for k in ("a", "b", "c")], pts, a)
     edges = _polygon_edges(ctx, g, pts)
     g.parts.update({"ab": edges[0], "bc": edges[1], "ca": edges[2]})
     g.data["order"] = ["a", "b", "c"]
@@ -279,6 +280,23 @@ def _build_Ellipse(ctx, g, a):
     g.closed = True
 
 
+def _hold_literal_shape(ctx, g, given: list, pts: list, a: dict) -> None:
+    """A shape written as literal coordinates keeps its shape: when every point was given as
+    a value known before solving (numbers, params; no point of other geometry) and
+    ``flexible`` is not set, each point is held at its offset from the first, so relations
+    (RightOf, AlignTop, ...) move the shape without bending it.  Its position stays free."""
+    if a.get("flexible") or not all(p.obj is None and _is_const_pv(p) for p in given):
+        return
+    g.data["rigid"] = True
+    p0 = pts[0]
+    x0, y0 = ctx.value_of(var(p0.ix)), ctx.value_of(var(p0.iy))
+    eqs = []
+    for p in pts[1:]:
+        dx, dy = ctx.value_of(var(p.ix)) - x0, ctx.value_of(var(p.iy)) - y0
+        eqs += [Equation(var(p.ix) - var(p0.ix) - dx), Equation(var(p.iy) - var(p0.iy) - dy)]
+    ctx.internal(g, eqs, f"{g.kind} shape (literal coordinates)")
+
+
 def _build_Polygon(ctx, g, a):
     pts_in = a["points"]
     if len(pts_in) < 3:
@@ -286,6 +304,7 @@ def _build_Polygon(ctx, g, a):
     pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
     for i, p in enumerate(pts):
         g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
     g.data["order"] = [f"p{i}" for i in range(len(pts))]
     g.data["edges"] = _polygon_edges(ctx, g, pts)
     g.closed = True

@@ -80,6 +80,7 @@ class Calls:
             spans[ren[k]] = kw.value.span
         if canonical(nm) == "Text" and "center" in kwargs and "valign" not in bound:
             bound["valign"] = "middle"        # Text(center=...) means centered on that point
+            spans["valign"] = node.span
         bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
         conv = {}
         for a in variant:

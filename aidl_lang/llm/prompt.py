@@ -10,7 +10,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ..registry import ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE, UNITS_LENGTH
+from ..registry import (BBOX_MEMBERS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE,
+                        UNITS_LENGTH)
 
 EXAMPLES_DIR = Path(__file__).resolve().parent.parent.parent / "examples"
 # short and varied: hierarchy + stacking relations; holes, loops and bounding-box equations;
@@ -27,22 +28,35 @@ and text, not filled), `assembly NAME { ... }` (separate parts). Inside a struct
 (`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
-live inside structures. Top of file: `units mm` (default), `param NAME = VALUE`, constants
-`NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
-`part = NAME(p1=...)`), `import "file.aidl"`. Control flow: `for i in range(n) { ... }`
-(names defined in a loop become lists: `knob[0]`), `if c { } else { }`, `[f(i) for i in xs]`.
-Comments `#` or `//`. Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare number is a length in
-the file unit or an angle in degrees. Points are `(x, y)`; y points up.
+live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE`,
+constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
+`part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes`. Control flow:
+`for i in range(n) { ... }` (names defined in a loop become lists: `knob[0]`),
+`if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
+comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
+(`//` after an operand is floor division). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
+number is a length in the file unit or an angle in degrees.
 
 Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
 starting guesses that the solver moves to satisfy the constraints. Relate parts with
-constraints instead of computing coordinates. Members: `rect.top_left`, `rect.top` (an edge
-line), `line.midpoint`, `circle.center`, `s.bb.left/right/top/bottom/width/height/center`;
-a child structure's geometry is `child.name`, the current one is `self`.
+constraints instead of computing coordinates. A shape given by literal coordinates
+(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
+may only use names defined above it; constraint statements may name geometry defined later.
+A child structure's geometry is `child.name`, the current one is `self`; every geometry and
+structure has `.bb` (bounding box).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
-points of its own structure. Rotation is the `rotation=` argument of shapes (there is no
-Rotate/Translate/Union). When fixing errors, keep every structure and constraint that carries
-design intent: correct the call rather than delete it.
+points of its own structure. Booleans: a solid is the union of its shapes and solid children
+(touching or overlapping parts merge into one outline) minus its hole children; a hole cuts
+only its enclosing solid, which is then unioned with its siblings (a sibling can cover the
+hole). Patterns and Mirrored put copies beside the original, in the original's structure.
+Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
+0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
+Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
+is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
+There is no Rotate/Translate/Union. A warning means the program runs but probably not as
+meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
+every structure and constraint that carries design intent: correct the call rather than
+delete it.
 """
 
 
@@ -72,6 +86,7 @@ def vocabulary() -> str:
         rows = [f"- {_sig(e)}: {e.doc}" for e in ENTRIES.values() if e.category == cat]
         if rows:
             out.append(f"{title}:\n" + "\n".join(rows))
+    out.append(members())
     by_canon: dict[str, list[str]] = {}
     for syn, canon in SYNONYMS.items():
         if syn not in SWAPPED:
@@ -82,6 +97,18 @@ def vocabulary() -> str:
     out.append("Functions: " + ", ".join(f"{n}" for n in FUNCTIONS) + "; constants pi, tau, "
                "true, false; units " + ", ".join(list(UNITS_LENGTH) + list(UNITS_ANGLE)) + ".")
     return "\n\n".join(out)
+
+
+def members() -> str:
+    """The members of every shape and of bounding boxes, from the registry (``.bb`` omitted
+    per shape: the intro says every geometry and structure has it)."""
+    rows = []
+    for e in ENTRIES.values():
+        if e.members:
+            names = [m for m in e.members if m != "bb"]
+            rows.append(f"{e.name}: {' '.join(names)}")
+    rows.append(f".bb: {' '.join(BBOX_MEMBERS)}")
+    return "Members (`rect.top_left`, `s.bb.center_x`): " + "; ".join(rows) + "."
 
 
 def _strip(text: str) -> str:

@@ -261,8 +261,9 @@ class Renderer:
                 self.part(c, out)
 
     def part(self, s: Structure, out: Drawing) -> None:
+        at = len(out.parts)             # a part is drawn under the parts of its drawings
         shp = self.shape(s, out)
-        out.parts.append(Part(s.path, s.kind, shp))
+        out.parts.insert(at, Part(s.path, s.kind, shp))
         if s.kind == "hole":
             for poly in shp.to_polygons():
                 out.hole_outlines.append(np.asarray(poly))
