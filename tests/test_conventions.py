@@ -404,5 +404,6 @@ def test_prompt_answers_what_models_asked():
                    "import stdlib.shapes", "step"]:
         assert needle in text, needle
     # argument synonyms stay out of the canonical prompt text
-    assert not re.search(r"[(,] ?(w|h|r|d|axis)=", text.split("Examples:")[0])
+    assert not re.search(r"[(,] ?(w|h|r|d)=", text.split("Examples:")[0])
+    assert "Symmetric(a, b, axis" not in text and "Text(text=" not in text
     assert word_count(text) <= 2750          # 25% over the 2,200 words before issue 14
