@@ -146,8 +146,7 @@ _DEFS = {
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point"), FLEXIBLE],
                    [A("center", "point"), A("base", "length"), A("height", "length"),
                     A("rotation", "angle", 0.0)],
-                   doc="A triangle through three points (rigid when all are literal coordinates, "
-                       "as Polygon), or an isosceles "
+                   doc="A triangle through three points (as Polygon), or an isosceles "
                        "one by base and height (held; a, b on the base, c the apex, center the "
                        "bounding-box center).", members=TRI_MEMBERS),
     "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
@@ -160,33 +159,28 @@ _DEFS = {
                       "rotation are held, the center is a starting guess.",
                   members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points"), FLEXIBLE],
-                  doc="A closed polygon through a list of points. Given only literal "
-                      "coordinates it is rigid (moves, keeps its shape) unless flexible=true; "
-                      "otherwise its points are starting guesses.",
+                  doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
+                      "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
                          [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
                          doc="A rigid regular polygon; radius (center to vertex) or across_flats "
-                             "(distance between opposite sides; 2 * apothem), sides and rotation "
-                             "are held. At rotation 0 the first vertex is on +x from the center "
-                             "(a hexagon has flats at top and bottom).", members=POLY_MEMBERS),
+                             "(between opposite sides), sides and rotation are held; first "
+                             "vertex at +x.", members=POLY_MEMBERS),
     "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
                [A("start", "point"), A("end", "point"), A("width", "length")],
                [A("center", "point"), A("length", "length"), A("width", "length"),
                 A("rotation", "angle", 0.0)],
-               doc="A stadium: the set of points within radius of the segment start-end (the "
-                   "centers of its round ends). The radius (width/2) is held; by center, length "
-                   "(overall, end to end) and rotation are held too.",
+               doc="A stadium around the segment start-end (its end arcs' centers); radius = "
+                   "width/2 is held; by center, length (end to end) and rotation are held too.",
                members=SLOT_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0)],
-               doc="Single-stroke text (Hershey font) in a drawing; size is the cap height. "
-                   "position is on the baseline: anchor (start, middle, end) places it "
-                   "horizontally, valign (baseline, middle, top, bottom) vertically; rotation "
-                   "turns the text counter-clockwise about position.", members=TEXT_MEMBERS),
+               doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
+                   "middle, end; valign: baseline, middle, top, bottom; rotation about position.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line/circle: on it)."),
@@ -274,10 +268,9 @@ _DEFS = {
                            A("angle", "angle", 2 * math.pi)],
                           [A("target", "boxed"), A("count", "number"), A("center", "point"),
                            A("step", "angle")], cat="operation",
-                          doc="count instances turned counter-clockwise about center; angle is "
-                              "the total span from the first to the last instance (a full 360 deg "
-                              "spaces them 360/count apart), step the angle between neighbours; "
-                              "gives the list [original, copy1, ...]."),
+                          doc="count instances turned counter-clockwise about center: angle is "
+                              "the span from first to last (360 deg: evenly all round), step the "
+                              "angle between neighbours; gives [original, copy1, ...]."),
     "Fillet": _c([A("radius", "length")], cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline."),
     "Chamfer": _c([A("distance", "length")], cat="operation",

@@ -111,8 +111,9 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     for syn in SYNONYMS:
         assert syn in text, syn
     assert "construction" in text and "Contains(a, b) means Inside(b, a)" in text
-    assert word_count(text) < 2600          # measured: see NOTE / docs/llm.md
-    assert word_count(system_prompt(examples=False)) < 1300
+    # measured 2,200 words before issue 14; it may grow by at most 25% (docs/llm.md)
+    assert word_count(text) <= 2750
+    assert word_count(system_prompt(examples=False)) < 1650
 
 
 def test_aidl_prompt_command():
@@ -200,3 +201,48 @@ def test_eval_writes_report_and_contact_sheet(stub, tmp_path):
         assert (out / r["program"]).exists() and (out / r["svg"]).exists()
     md = (out / "report.md").read_text()
     assert "valid within 5 rounds: 3 (100%)" in md
+
+
+# ------------------------------------------------------------------ warnings fed back
+WARNED = "```aidl\nsolid plate {\n    body = Rectangle(center=(0, 0), width=60, height=30)\n    1 + 1\n}\n```"
+CLEAN = "```aidl\nsolid plate {\n    body = Rectangle(center=(0, 0), width=60, height=30)\n}\n```"
+
+
+class Scripted:
+    """A chat client that replies from a list and records what it was sent."""
+
+    model = "scripted"
+
+    def __init__(self, replies):
+        self.replies, self.sent = list(replies), []
+
+    def complete(self, messages):
+        self.sent.append([dict(m) for m in messages])
+        return self.replies.pop(0)
+
+
+def test_generate_feeds_warnings_back_for_extra_rounds():
+    from aidl_lang.llm.generate import generate
+    c = Scripted([WARNED, CLEAN])
+    res = generate("a plate", c, max_rounds=1, warning_rounds=1)
+    assert res.ok and res.clean and len(res.rounds) == 2          # one round past max_rounds
+    fb = c.sent[1][-1]["content"]
+    assert "compiles, but with warnings" in fb and "W0101" in fb and "1 + 1" in fb
+    assert res.rounds[0].warning_codes == ["W0101"] and res.code.strip() == CLEAN[8:-3].strip()
+    # no warning rounds: the first valid program is taken, its warnings counted
+    res = generate("a plate", Scripted([WARNED]), max_rounds=3, warning_rounds=0)
+    assert res.ok and not res.clean and res.warnings == ["W0101"] and len(res.rounds) == 1
+    # a warning round that breaks the program keeps the earlier valid one
+    res = generate("a plate", Scripted([WARNED, BROKEN]), max_rounds=1, warning_rounds=1)
+    assert res.ok and res.warnings == ["W0101"] and "1 + 1" in res.code
+
+
+def test_eval_counts_programs_with_warnings_apart_from_clean_ones(tmp_path):
+    from aidl_lang.llm.evaluate import run_eval
+    rep = run_eval(["a", "b"], Scripted([WARNED, CLEAN, WARNED, WARNED]), tmp_path, runs=1,
+                   max_rounds=2, warning_rounds=1)
+    s = rep["summary"]
+    # prompt a: warned, then clean; prompt b: warned twice (the one warning round is used)
+    assert s["valid_within_rounds"] == 2 and s["valid_clean"] == 1 and s["valid_with_warnings"] == 1
+    assert s["warning_codes"] == {"W0101": 1}
+    assert "valid with warnings: 1" in (tmp_path / "report.md").read_text()

@@ -26,6 +26,9 @@ def add_commands(sub) -> None:
             g.add_argument("-o", "--output", default="aidl-eval",
                            help="report folder (default aidl-eval)")
         g.add_argument("--rounds", type=int, default=5, help="at most this many rounds (default 5)")
+        g.add_argument("--warning-rounds", type=int, default=1, metavar="N",
+                       help="extra rounds that send a valid program's warnings back (default 1; "
+                            "0 accepts the first valid program)")
         g.add_argument("--base-url", help="chat-completions endpoint base URL "
                        "(env AIDL_BASE_URL, OPENAI_BASE_URL)")
         g.add_argument("--model", help="model name (env AIDL_MODEL; default gpt-4o)")
@@ -39,8 +42,9 @@ def _say(msg: str) -> None:
 
 def _client(args):
     from ..llm.client import client_from
-    if args.rounds < 1:
-        print("aidl: error: --rounds must be at least 1", file=sys.stderr)
+    if args.rounds < 1 or args.warning_rounds < 0:
+        print("aidl: error: --rounds must be at least 1 and --warning-rounds at least 0",
+              file=sys.stderr)
         raise SystemExit(2)
     return client_from(args.base_url, args.model, args.api_key, args.temperature)
 
@@ -63,14 +67,16 @@ def cmd_generate(args) -> int:
         print(f"aidl: error: folder `{out.parent}` does not exist", file=sys.stderr)
         return 2
     try:
-        res = generate(args.prompt, client, args.rounds, str(out), progress=_say)
+        res = generate(args.prompt, client, args.rounds, str(out), progress=_say,
+                       warning_rounds=args.warning_rounds)
     except LLMError as e:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     save(res, out)
     js, md = transcript_paths(out)
     if res.ok:
-        print(f"wrote {out} (valid in round {len(res.rounds)}); transcript {md}")
+        warn = f", {len(res.warnings)} warning(s) left" if res.warnings else ""
+        print(f"wrote {out} (valid in round {len(res.rounds)}{warn}); transcript {md}")
         return 0
     print(f"aidl: no valid program in {len(res.rounds)} rounds; {out} not written; "
           f"transcript {md}", file=sys.stderr)
@@ -92,13 +98,15 @@ def cmd_eval(args) -> int:
         return 2
     out = Path(args.output)
     try:
-        rep = run_eval(prompts, client, out, args.runs, args.rounds, progress=_say)
+        rep = run_eval(prompts, client, out, args.runs, args.rounds, progress=_say,
+                       warning_rounds=args.warning_rounds)
     except LLMError as e:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     s = rep["summary"]
     print(f"{rep['runs']} runs: {s['valid_first_try']} valid on first try, "
-          f"{s['valid_within_rounds']} within {rep['max_rounds']} rounds; "
+          f"{s['valid_within_rounds']} within {rep['max_rounds']} rounds "
+          f"({s['valid_clean']} clean, {s['valid_with_warnings']} with warnings); "
           f"report {out / 'report.md'}, contact sheet {out / 'index.html'}")
     return 0
 

@@ -45,7 +45,8 @@ def _render(code: str, path: str) -> str | None:
 
 
 def run_eval(prompts: list[str], client: ChatClient, out_dir: Path, runs: int = 1,
-             max_rounds: int = 5, progress: Callable[[str], None] | None = None) -> dict:
+             max_rounds: int = 5, progress: Callable[[str], None] | None = None,
+             warning_rounds: int = 1) -> dict:
     """Run every prompt ``runs`` times; write the report files; return the report dict.
 
     Raises :class:`aidl_lang.llm.LLMError` if the endpoint fails.
@@ -59,7 +60,7 @@ def run_eval(prompts: list[str], client: ChatClient, out_dir: Path, runs: int = 
             out = progs / f"p{i + 1:02d}_r{k + 1}.aidl"
             say(f"[prompt {i + 1}/{len(prompts)}, run {k + 1}/{runs}] {prompt[:60]}")
             res = generate(prompt, client, max_rounds, str(out),
-                           progress=lambda s: say("    " + s))
+                           progress=lambda s: say("    " + s), warning_rounds=warning_rounds)
             save(res, out)
             svg = None
             if res.ok:
@@ -78,6 +79,8 @@ def _report(prompts, runs: list[Run], model: str, max_rounds: int) -> dict:
     n = len(runs)
     valid = [r for r in runs if r.result.ok]
     codes = Counter(c for r in runs for c in r.result.error_codes)
+    wcodes = Counter(c for r in runs for c in r.result.warnings)
+    clean = [r for r in valid if r.result.clean]
     return {
         "model": model, "max_rounds": max_rounds, "prompts": len(prompts), "runs": n,
         "summary": {
@@ -88,10 +91,14 @@ def _report(prompts, runs: list[Run], model: str, max_rounds: int) -> dict:
             "mean_rounds_valid": (sum(len(r.result.rounds) for r in valid) / len(valid))
             if valid else None,
             "error_codes": dict(codes.most_common()),
+            "valid_clean": len(clean),
+            "valid_with_warnings": len(valid) - len(clean),
+            "warning_codes": dict(wcodes.most_common()),
         },
         "results": [{"prompt": prompts[r.prompt_index], "prompt_index": r.prompt_index + 1,
                      "run": r.run + 1, "ok": r.result.ok, "first_try": r.result.first_try,
                      "rounds_used": len(r.result.rounds), "error_codes": r.result.error_codes,
+                     "warnings": r.result.warnings, "clean": r.result.clean,
                      "program": r.program if r.result.ok else None,
                      "svg": str(Path(r.program).with_suffix(".svg")) if r.svg else None}
                     for r in runs],
@@ -107,16 +114,21 @@ def _markdown(rep: dict) -> str:
            f"({s['valid_rate']:.0%})",
            f"- mean rounds of valid runs: "
            f"{'-' if s['mean_rounds_valid'] is None else format(s['mean_rounds_valid'], '.2f')}",
+           f"- valid and clean (no warnings): {s['valid_clean']}; valid with warnings: "
+           f"{s['valid_with_warnings']}",
            "- error codes seen: " + (", ".join(f"{c} x{k}" for c, k in s["error_codes"].items())
-                                     or "none") + "\n",
-           "| # | run | prompt | valid | first try | rounds | errors | rendering |",
-           "|---|---|---|---|---|---|---|---|"]
+                                     or "none"),
+           "- warnings left in valid programs: "
+           + (", ".join(f"{c} x{k}" for c, k in s["warning_codes"].items()) or "none") + "\n",
+           "| # | run | prompt | valid | first try | rounds | errors | warnings | rendering |",
+           "|---|---|---|---|---|---|---|---|---|"]
     for r in rep["results"]:
         pr = r["prompt"].replace("|", "\\|")
         img = f"![]({r['svg']})" if r["svg"] else ""
         out.append(f"| {r['prompt_index']} | {r['run']} | {pr} | {'yes' if r['ok'] else 'no'} | "
                    f"{'yes' if r['first_try'] else 'no'} | {r['rounds_used']} | "
-                   f"{', '.join(r['error_codes']) or '-'} | {img} |")
+                   f"{', '.join(r['error_codes']) or '-'} | {', '.join(r['warnings']) or '-'} | "
+                   f"{img} |")
     return "\n".join(out) + "\n"
 
 
@@ -129,6 +141,7 @@ def _html(rep: dict, prompts: list[str], runs: list[Run]) -> str:
         for r in (r for r in runs if r.prompt_index == i):
             res = r.result
             status = (f"valid in {len(res.rounds)} round{'s' if len(res.rounds) != 1 else ''}"
+                      + (f" with warnings {', '.join(res.warnings)}" if res.warnings else "")
                       if res.ok else f"not valid after {len(res.rounds)} rounds: "
                       + ", ".join(sorted(set(res.error_codes))))
             art = r.svg[r.svg.index("<svg"):] if r.svg else "<div class='none'>no rendering</div>"
@@ -154,7 +167,8 @@ figure.bad {{ color: #b71c1c; }}
 <h1>aidl eval: {e(rep['model'])}</h1>
 <p>{rep['runs']} runs over {rep['prompts']} prompts, at most {rep['max_rounds']} rounds each.
 Valid on first try: {s['valid_first_try']} ({s['valid_first_try_rate']:.0%}).
-Valid within {rep['max_rounds']} rounds: {s['valid_within_rounds']} ({s['valid_rate']:.0%}).
+Valid within {rep['max_rounds']} rounds: {s['valid_within_rounds']} ({s['valid_rate']:.0%}),
+of which clean: {s['valid_clean']}, with warnings: {s['valid_with_warnings']}.
 Mean rounds of valid runs: {mean}. Error codes seen: {e(codes)}.</p>
 {''.join(rows)}
 </body></html>

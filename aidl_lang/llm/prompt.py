@@ -102,11 +102,12 @@ def vocabulary() -> str:
 def members() -> str:
     """The members of every shape and of bounding boxes, from the registry (``.bb`` omitted
     per shape: the intro says every geometry and structure has it)."""
-    rows = []
+    rows, seen = [], {}
     for e in ENTRIES.values():
         if e.members:
-            names = [m for m in e.members if m != "bb"]
-            rows.append(f"{e.name}: {' '.join(names)}")
+            names = " ".join(m for m in e.members if m != "bb")
+            rows.append(f"{e.name}: " + (f"as {seen[names]}" if names in seen else names))
+            seen.setdefault(names, e.name)
     rows.append(f".bb: {' '.join(BBOX_MEMBERS)}")
     return "Members (`rect.top_left`, `s.bb.center_x`): " + "; ".join(rows) + "."
 
