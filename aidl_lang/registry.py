@@ -271,11 +271,15 @@ _DEFS = {
                           doc="count instances turned counter-clockwise about center: angle is "
                               "the span from first to last (360 deg: evenly all round), step the "
                               "angle between neighbours; gives [original, copy1, ...]."),
-    "Fillet": _c([A("radius", "length")], cat="operation",
-                 doc="Round every corner of this solid's (or hole's) final outline."),
-    "Chamfer": _c([A("distance", "length")], cat="operation",
-                  doc="Cut every convex corner of this solid's final outline with two legs of "
-                      "distance."),
+    "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
+                 cat="operation",
+                 doc="Round every corner of this solid's (or hole's) final outline, or only "
+                     "the corners at: a point, [edge1, edge2] (where they meet), a shape's "
+                     "corners, or a list of these."),
+    "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
+                  cat="operation",
+                  doc="Cut every convex corner of this solid's final outline (or those at, "
+                      "as Fillet) with two legs of distance."),
 }
 
 # name -> canonical name.  One line per synonym.
@@ -331,8 +335,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
                         "spacing": "step", "pitch": "step", "angle_step": "step"},
     "LinearPattern": {"number": "count", "copies": "count", "spacing": "step",
                       "offset": "step", "delta": "step", "pitch": "step"},
-    "Fillet": {"r": "radius"},
-    "Chamfer": {"size": "distance", "d": "distance", "length": "distance"},
+    "Fillet": {"r": "radius", "corner": "at", "corners": "at", "where": "at"},
+    "Chamfer": {"size": "distance", "d": "distance", "length": "distance", "corner": "at",
+                "corners": "at", "where": "at"},
 }
 
 # synonyms whose arguments mean the canonical entry's arguments in another order:

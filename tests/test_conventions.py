@@ -409,3 +409,27 @@ def test_prompt_answers_what_models_asked():
     assert not re.search(r"[(,] ?(w|h|r|d)=", text.split("Examples:")[0])
     assert "Symmetric(a, b, axis" not in text and "Text(text=" not in text
     assert word_count(text) <= 2750          # 25% over the 2,200 words before issue 14
+
+
+# ------------------------------------------------------------------ chosen corners
+def test_fillet_and_chamfer_at_chosen_corners(compile_text):
+    from aidl_lang.output import area
+    c = ok(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    Fixed(body.center)
+    Fillet(body.top_right, radius=5)
+    Chamfer([body.left, body.bottom], 3)
+}
+""")
+    d = render_model(c.model)
+    assert area(d) == pytest.approx(800 - 25 * (1 - math.pi / 4) - 4.5, abs=0.05)  # arc tessellated
+    (x0, y0), (x1, y1) = np.asarray(d.parts[0].shape.bounds()).reshape(2, 2)
+    assert (x0, y0, x1, y1) == pytest.approx((-20, -10, 20, 10))
+    pts = np.concatenate([np.asarray(p) for p in d.parts[0].shape.to_polygons()])
+    assert any(np.allclose(p, (-20, 10)) for p in pts)           # top-left untouched
+    assert any(np.allclose(p, (20, -10)) for p in pts)           # bottom-right untouched
+    assert not any(np.allclose(p, (-20, -10)) for p in pts)      # chamfered
+    assert any(np.allclose(p, (-17, -10)) for p in pts) and any(np.allclose(p, (-20, -7)) for p in pts)
+    c = compile_text("solid s {\n    b = Rectangle(center=(0, 0), width=4, height=2)\n"
+                     "    Fillet(3 mm, radius=1)\n}\n")
+    assert any("Fillet at: give a point" in d.message for d in c.sink.items)

@@ -198,7 +198,11 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         if S.kind not in ("solid", "hole"):
             raise OperationError(f"{kind} works on the outline of a solid or hole, not on "
                                  f"{S.kind} `{S.name}`")
-        S.finish = list(getattr(S, "finish", [])) + [(kind, r)]
+        at = None
+        if "at" in args:
+            ox, oy = S.frame_offset(None)
+            at = [(p.x + ox, p.y + oy) for p in _corner_points(ctx, args["at"], S, kind)]
+        S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
@@ -234,18 +238,64 @@ def apply(ctx, kind: str, args: dict, name: str | None):
 CORNER_TURN = math.radians(15)       # smaller turns are tessellated curves, not corners
 
 
-def finish(s: Structure, shape):
-    """Apply the structure's Fillet/Chamfer operations to its rendered CrossSection."""
-    for kind, r in getattr(s, "finish", []):
+CORNER_TOL = 1e-3                   # mm: a chosen corner matches an outline vertex this close
+
+
+def _corner_points(ctx, v, S, kind: str) -> list:
+    """The points (PV in ``S``'s frame) a ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a
+    point; two lines (the corner where they meet); a line (both ends); a shape (its outline
+    corners); or a list of these."""
+    from .constraints import _kind
+    from .primitives import member, points_of
+    if isinstance(v, PV):
+        return [v]
+    if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
+        return [PV(v[0].expr, v[1].expr)]
+    if isinstance(v, (list, tuple)):
+        if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
+            (a1, b1), (a2, b2) = ((member(e.geom, "start", S), member(e.geom, "end", S))
+                                  for e in v)
+            # the corner: the pair of ends (one of each line) closest together now
+            pairs = [(p, q) for p in (a1, b1) for q in (a2, b2)]
+            val = ctx.value_of
+
+            def gap(pq):
+                (p, q) = pq
+                return (val(p.x) - val(q.x)) ** 2 + (val(p.y) - val(q.y)) ** 2
+            return [min(pairs, key=gap)[0]]
+        return [p for e in v for p in _corner_points(ctx, e, S, kind)]
+    if isinstance(v, GeomRef):
+        g = v.geom
+        if g.kind == "Point":
+            return [member(g, "p", S)]
+        if g.kind == "Line":
+            return [member(g, "start", S), member(g, "end", S)]
+        pts = points_of(g) if g.closed else []
+        if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
+            from .primitives import _pv
+            return [_pv(p, S) for p in pts]
+    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
+                         f"a polygonal shape, or a list of these; got {_kind(v)}")
+
+
+def finish(s: Structure, shape, x=None):
+    """Apply the structure's Fillet/Chamfer operations to its rendered CrossSection; ``x``
+    (the solved unknowns) places corners chosen with ``at``."""
+    from .expr import evaluate
+    for kind, r, at in getattr(s, "finish", []):
         if shape.is_empty():
             break
-        shape = _corners(shape, r, kind == "Fillet")
+        pts = None
+        if at is not None and x is not None:
+            pts = [(float(evaluate(px, x)), float(evaluate(py, x))) for px, py in at]
+        shape = _corners(shape, r, kind == "Fillet", pts)
     return shape
 
 
-def _corners(shape, size: float, fillet: bool):
+def _corners(shape, size: float, fillet: bool, only=None):
     """Round (``fillet``: both convex and concave) or cut (chamfer: convex only) every corner
-    of every outline loop whose direction turns by more than :data:`CORNER_TURN`."""
+    of every outline loop whose direction turns by more than :data:`CORNER_TURN` (or only
+    those within :data:`CORNER_TOL` of a point of ``only``)."""
     import manifold3d as mf
     import numpy as np
     loops = []
@@ -261,7 +311,9 @@ def _corners(shape, size: float, fillet: bool):
                 continue
             u1, u2 = e1 / l1, e2 / l2
             turn = math.atan2(u1[0] * u2[1] - u1[1] * u2[0], float(np.dot(u1, u2)))
-            if abs(turn) <= CORNER_TURN or (not fillet and turn < 0):
+            chosen = only is None or any(math.hypot(p1[0] - qx, p1[1] - qy) <= CORNER_TOL
+                                         for qx, qy in only)
+            if abs(turn) <= CORNER_TURN or (not fillet and turn < 0) or not chosen:
                 out.append(p1)           # material is on the left: turn > 0 is convex
                 continue
             if not fillet:

@@ -233,7 +233,7 @@ class Renderer:
                 out.hole_outlines.append(np.asarray(poly))
             acc = acc - cut
         if getattr(s, "finish", None):
-            acc = finish(s, acc)
+            acc = finish(s, acc, self.x)
         return acc
 
     def drawing(self, s: Structure, out: Drawing) -> None:

@@ -17,6 +17,8 @@ solid plate {
     top_rail = Line((-40, 25), (40, 25), construction=true)
     guide = Line((-30, 14), (30, 13), construction=true)
     Distance(top_rail, guide, 10)
+    Fillet(corners=[body.top, body.right], r=4)
+    Chamfer(corner=body.bottom_left, size=3)
     drawing label {
         t = Text(text="PLATE", center=(0, 15), height=5)
     }
