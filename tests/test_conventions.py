@@ -433,3 +433,9 @@ def test_fillet_and_chamfer_at_chosen_corners(compile_text):
     c = compile_text("solid s {\n    b = Rectangle(center=(0, 0), width=4, height=2)\n"
                      "    Fillet(3 mm, radius=1)\n}\n")
     assert any("Fillet at: give a point" in d.message for d in c.sink.items)
+
+
+def test_hover_shows_argument_synonyms():
+    from aidl_lang.editor.lsp import analysis as an
+    h = an.hover("solid s {\n c = Circle((0, 0), 3)\n}\n", 1, 6)
+    assert "argument synonyms:" in h.contents.value and "`r`→`radius`" in h.contents.value

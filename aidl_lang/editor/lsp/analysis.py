@@ -472,6 +472,12 @@ def _registry_doc(name: str) -> str | None:
     if entry is not None:
         syn = f" (synonym of `{entry.name}`)" if name != entry.name else ""
         md = f"```aidl\n{entry.signature()}\n```\n{entry.category}{syn}: {entry.doc}"
+        canon = {a.name for v in entry.variants for a in v}
+        alias = [f"`{k}`→`{next(c for c in cs if c in canon)}`"
+                 for k, cs in R.arg_synonyms(entry.name).items()
+                 if k not in canon and any(c in canon for c in cs)]
+        if alias:
+            md += "\n\nargument synonyms: " + ", ".join(alias)
         if entry.members:
             md += "\n\nmembers: " + ", ".join(f"`{k}` ({v})" for k, v in entry.members.items())
         return md
