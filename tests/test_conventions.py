@@ -439,3 +439,17 @@ def test_hover_shows_argument_synonyms():
     from aidl_lang.editor.lsp import analysis as an
     h = an.hover("solid s {\n c = Circle((0, 0), 3)\n}\n", 1, 6)
     assert "argument synonyms:" in h.contents.value and "`r`→`radius`" in h.contents.value
+
+
+@pytest.mark.parametrize("path", sorted(PROGRAMS.glob("*.aidl")), ids=lambda p: p.stem)
+def test_issue_programs_check_and_render(path):
+    c = compile_source(path.read_text(), str(path))
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    assert not [d for d in c.sink.items if d.severity == "warning"]
+    assert render_model(c.model).parts
+
+
+def test_fillet_at_a_bounding_box_value_is_a_diagnostic(compile_text):
+    c = compile_text("solid s {\n    solid base {\n        p = Rectangle(center=(0, 0), width=4, "
+                     "height=2)\n    }\n    Fillet([base.top, base.right], radius=1)\n}\n")
+    assert any("not by bounding-box values" in d.message for d in c.sink.items)

@@ -111,7 +111,8 @@ def cmd_check(args) -> int:
                              "dof": d.dof, "floating": d.floating} for d in dofs]
         if res.ok:
             from ..solver.diagnose import degrees_of_freedom, freedom_text
-            dofs_all = dofs if dofs is not None else degrees_of_freedom(res.solve.solver)
+            dofs_all = (dofs if dofs is not None
+                        else degrees_of_freedom(res.solve.solver, floating=False))
             extra["freedom"] = freedom_text(dofs_all)
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:

@@ -201,7 +201,12 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         at = None
         if "at" in args:
             ox, oy = S.frame_offset(None)
-            at = [(p.x + ox, p.y + oy) for p in _corner_points(ctx, args["at"], S, kind)]
+            from .bbox import contains_bbox
+            pts = _corner_points(ctx, args["at"], S, kind)
+            if any(contains_bbox(p.x) or contains_bbox(p.y) for p in pts):
+                raise OperationError(f"{kind} at: name corners by geometry (`body.top_right`, "
+                                     f"`[body.top, body.right]`), not by bounding-box values")
+            at = [(p.x + ox, p.y + oy) for p in pts]
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
     target = _target(ctx, args["target"], kind)

@@ -152,9 +152,10 @@ class StructureDof:
         return self.unknowns - self.rank
 
 
-def degrees_of_freedom(solver) -> list[StructureDof]:
+def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     """Per-structure degrees of freedom and floating entities, at the solver's current point
-    (call after solving)."""
+    (call after solving).  ``floating=False`` counts only (singular values, no null space:
+    what the summary line of ``aidl check`` needs)."""
     model = solver.model
     x = solver.x
     out = []
@@ -185,6 +186,11 @@ def degrees_of_freedom(solver) -> list[StructureDof]:
         J = t.jacobian(x, cols).toarray()
         if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
             out.append(StructureDof(s, n_unknowns, -1))
+            continue
+        if not floating:
+            sv = np.linalg.svd(J, compute_uv=False)
+            tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
+            out.append(StructureDof(s, n_unknowns, int(np.sum(sv > tolr)) - (len(cols) - n_unknowns)))
             continue
         _, sv, Vt = np.linalg.svd(J, full_matrices=True)
         tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
