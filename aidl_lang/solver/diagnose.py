@@ -183,14 +183,13 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             out.append(StructureDof(s, n_unknowns, 0, floating))
             continue
         t = solver.tape(rows)
+        if not floating:
+            out.append(StructureDof(s, n_unknowns,
+                                    _block_rank(t.jacobian(x, cols)) - (len(cols) - n_unknowns)))
+            continue
         J = t.jacobian(x, cols).toarray()
         if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
             out.append(StructureDof(s, n_unknowns, -1))
-            continue
-        if not floating:
-            sv = np.linalg.svd(J, compute_uv=False)
-            tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
-            out.append(StructureDof(s, n_unknowns, int(np.sum(sv > tolr)) - (len(cols) - n_unknowns)))
             continue
         _, sv, Vt = np.linalg.svd(J, full_matrices=True)
         tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
@@ -206,6 +205,27 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                                for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, floating))
     return out
+
+
+def _block_rank(J) -> int:
+    """Numerical rank of a sparse Jacobian, block by block (rows that share no unknown are
+    independent), so a large sketch of small independent pieces needs only small SVDs;
+    -1 if one block is too large for a dense SVD."""
+    J = sp.csr_matrix(J)
+    if J.shape[0] == 0:
+        return 0
+    lab = _components(J)
+    rank = 0
+    for k in np.unique(lab):
+        r = np.flatnonzero(lab == k)
+        sub = J[r]
+        c = np.unique(sub.indices)
+        if len(r) > MAX_DENSE or len(c) > MAX_DENSE:
+            return -1
+        sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
+        if len(sv):
+            rank += int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
+    return rank
 
 
 def freedom_text(dofs: list[StructureDof]) -> str:
