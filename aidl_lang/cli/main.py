@@ -45,7 +45,15 @@ def _parser() -> argparse.ArgumentParser:
     f = sub.add_parser("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
-    sub.add_parser("lsp", help="run the language server on stdin/stdout (for editors)")
+    lsp = sub.add_parser("lsp", help="run the language server on stdin/stdout (for editors)")
+    # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
+    # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin/stdout (the default)")
+    lsp.add_argument("--clientProcessId", "--client-process-id", type=int, metavar="PID",
+                     help="the editor's process id (accepted; the server exits when stdin closes)")
+    lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
+    lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
+    lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
     from .llm import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
@@ -186,6 +194,12 @@ def cmd_fmt(args) -> int:
 
 
 def cmd_lsp(args) -> int:
+    for flag, given in (("--node-ipc", args.node_ipc), ("--pipe", args.pipe),
+                        ("--socket", args.socket)):
+        if given:
+            print(f"aidl: error: `aidl lsp {flag}` is not supported: the server talks over "
+                  "stdin/stdout (use the client's stdio transport, `--stdio`)", file=sys.stderr)
+            return 2
     from ..editor.lsp.server import main as lsp_main
     return lsp_main()
 

@@ -132,8 +132,37 @@ def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None)
             related = [T.DiagnosticRelatedInformation(
                 location=T.Location(uri=uri, range=span_range(src, lab.span)),
                 message=lab.message or "here") for lab in d.labels if lab.span.file == path] or None
+        fixes = fix_edits(src, path, d) if d.span is not None and d.span.file == path else []
         out.append(T.Diagnostic(range=rng, message=msg, severity=_SEVERITY.get(d.severity),
-                                code=d.code, source="aidl", related_information=related))
+                                code=d.code, source="aidl", related_information=related,
+                                data={"fixes": fixes} if fixes else None))
+    return out
+
+
+def fix_edits(src: str, path: str, d) -> list[dict]:
+    """The suggested fixes of a pipeline diagnostic as ``{"title", "range", "newText"}`` dicts
+    (LSP ranges in ``src``), preferred first: ``d.fix`` and, when it replaces a name with the
+    first of ``d.suggestions``, the other suggestions as alternatives. Fixes located in another
+    file are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
+    from ...diagnostics import Fix
+    fix = d.fix
+    if fix is None or fix.span is None or fix.span.file != path:
+        return []
+    fixes = [fix]
+    if d.suggestions and fix.replacement == d.suggestions[0]:
+        fixes += [Fix(fix.span, s) for s in d.suggestions[1:]]
+    out = []
+    for f in fixes:
+        old = src[f.span.start:f.span.end]
+        title = getattr(f, "title", None) or (
+            f"Replace `{old}` with `{f.replacement}`" if old and f.replacement else
+            f"Remove `{old}`" if old else f"Insert `{f.replacement}`")
+        rng = span_range(src, f.span)
+        if f.span.end <= f.span.start:             # an insertion: an empty range
+            rng = T.Range(start=rng.start, end=rng.start)
+        out.append({"title": title, "newText": f.replacement,
+                    "range": {"start": {"line": rng.start.line, "character": rng.start.character},
+                              "end": {"line": rng.end.line, "character": rng.end.character}}})
     return out
 
 
@@ -471,7 +500,7 @@ def _registry_doc(name: str) -> str | None:
     entry = R.lookup(name)
     if entry is not None:
         syn = f" (synonym of `{entry.name}`)" if name != entry.name else ""
-        md = f"```aidl\n{entry.signature()}\n```\n{entry.category}{syn}: {entry.doc}"
+        md = f"```aidl-cad\n{entry.signature()}\n```\n{entry.category}{syn}: {entry.doc}"
         canon = {a.name for v in entry.variants for a in v}
         alias = [f"`{k}`→`{next(c for c in cs if c in canon)}`"
                  for k, cs in R.arg_synonyms(entry.name).items()
@@ -483,7 +512,7 @@ def _registry_doc(name: str) -> str | None:
         return md
     if name in R.FUNCTIONS:
         lo, hi, doc = R.FUNCTIONS[name]
-        return f"```aidl\n{name}(...)\n```\nfunction ({lo if lo == hi else f'{lo}-{hi}'} " \
+        return f"```aidl-cad\n{name}(...)\n```\nfunction ({lo if lo == hi else f'{lo}-{hi}'} " \
                f"argument{'s' if hi > 1 else ''}): {doc}"
     if name in R.CONSTANTS:
         return f"constant `{name}` ({R.CONSTANTS[name]})"
@@ -518,10 +547,10 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
         d: A.Def = sym.node
         params = ", ".join(src[p.span.start:p.span.end] for p in d.params)
         doc = _leading_comment(src, d.span.start - (d.span.col - 1))
-        return f"```aidl\ndef {d.name}({params}) -> {d.kind}\n```\ntemplate" + (f": {doc}" if doc else "")
+        return f"```aidl-cad\ndef {d.name}({params}) -> {d.kind}\n```\ntemplate" + (f": {doc}" if doc else "")
     if sym.kind == "structure":
         kids = [k for k, s in sym.scope.names.items() if s.kind == "structure" and k != sym.name]
-        text = f"```aidl\n{sym.detail} {sym.name}\n```\nstructure"
+        text = f"```aidl-cad\n{sym.detail} {sym.name}\n```\nstructure"
         if kids:
             text += "; children: " + ", ".join(f"`{k}`" for k in kids)
         return text
@@ -529,10 +558,10 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
     if len(first) > 120:
         first = first[:117] + "..."
     if sym.kind == "import":
-        return f"```aidl\n{first}\n```\nimported namespace"
+        return f"```aidl-cad\n{first}\n```\nimported namespace"
     label = {"param": "model parameter (`--set` overrides it)", "variable": "name",
              "loop": "loop variable", "parameter": "template parameter", "import": "import"}[sym.kind]
-    text = f"```aidl\n{first}\n```\n{label}"
+    text = f"```aidl-cad\n{first}\n```\n{label}"
     t = ix.type_of_sym(sym)
     if t is not None and t[0] == "members":
         text += f": a {t[2]}"
@@ -559,9 +588,9 @@ def hover(src: str, line: int, character: int, path: str = "doc.aidl") -> T.Hove
             t = ix.type_of_expr(use[1].obj)
             if t is not None:
                 if t[0] == "members" and word in t[1]:
-                    md = f"```aidl\n{word}: {t[1][word]}\n```\nmember of {t[2]}"
+                    md = f"```aidl-cad\n{word}: {t[1][word]}\n```\nmember of {t[2]}"
                 elif t[0] == "struct" and word == "bb":
-                    md = "```aidl\nbb: bbox\n```\nthe structure's bounding box: " + \
+                    md = "```aidl-cad\nbb: bbox\n```\nthe structure's bounding box: " + \
                          ", ".join(R.BBOX_MEMBERS)
     if md is None:
         sym = ix.scope_at(off).lookup(word)

@@ -1,10 +1,19 @@
 """``aidl lsp``: the language server (pygls, JSON-RPC over stdin/stdout).
 
-Thin handlers over :mod:`aidl_lang.lsp.analysis`. Diagnostics are published when a document
-is opened or saved, and after each change once typing pauses for :data:`DEBOUNCE` seconds (the
-full pipeline, solve included: about 20-200 ms on the bundled examples). Every handler is
-wrapped so that an exception in the analysis is logged to the client and answered with an
-empty result: a malformed document never stops the server.
+Thin handlers over :mod:`.analysis` (hover, completion, definition, references, outline,
+formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help) and
+:mod:`.edits` (quick fixes, rename). Documents sync incrementally.
+
+Diagnostics are computed by a worker process (:mod:`.worker`) so that a newer version of a
+document stops a stale analysis: they are published when a document is opened or saved, and
+after each change once typing pauses for :data:`DEBOUNCE` seconds (``initializationOptions``
+``{"debounce": seconds}`` changes it; 0 analyses every change).
+
+Every handler is guarded: an exception in the analysis is logged to the client and answered
+with an empty result, so a malformed document never stops the server. A request whose
+parameters do not match the protocol gets the JSON-RPC error ``-32602`` (invalid params)
+naming the field. Documents over :data:`.window.LARGE` characters are analysed through a view
+(:mod:`.window`) so that no request takes minutes.
 """
 from __future__ import annotations
 
@@ -13,16 +22,61 @@ import functools
 import logging
 import traceback
 
+from lsprotocol import converters
 from lsprotocol import types as T
+from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
 
-from . import analysis
+from . import analysis, edits, semantic, signature, window
+from .worker import AnalysisTimeout, Analyzer
 
 DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
 
 log = logging.getLogger("aidl.lsp")
-server = LanguageServer("aidl", "0.1.0", text_document_sync_kind=T.TextDocumentSyncKind.Full)
+
+
+class RequestFailed(JsonRpcException):
+    """LSP ``RequestFailed`` (-32803): a valid request the server refuses (e.g. a rename of a
+    built-in name), with the reason shown to the user."""
+    code = -32803
+
+
+class Protocol(LanguageServerProtocol):
+    """pygls' protocol, plus an error response for a request whose params do not structure."""
+
+    def structure_message(self, data):
+        try:
+            return super().structure_message(data)
+        except (JsonRpcInvalidParams, JsonRpcInternalError) as exc:
+            if isinstance(data, dict) and "id" in data and "method" in data:
+                err = JsonRpcInvalidParams(_why(exc))
+                self._send_response(data["id"], None, err.to_response_error())
+            raise
+
+
+def _why(exc: Exception) -> str:
+    cause = exc.__cause__
+    try:
+        from cattrs import transform_error
+        details = transform_error(cause) if cause is not None else []
+    except Exception:
+        details = []
+    return "invalid params: " + ("; ".join(details) if details else str(cause or exc))
+
+
+server = LanguageServer("aidl", "0.2.0", text_document_sync_kind=T.TextDocumentSyncKind.Incremental,
+                        protocol_cls=Protocol)
 _pending: dict[str, asyncio.Task] = {}
+_settings = {"debounce": DEBOUNCE}
+_analyzer: Analyzer | None = None
+
+
+def _get_analyzer() -> Analyzer:
+    global _analyzer
+    if _analyzer is None:
+        _analyzer = Analyzer()
+    return _analyzer
 
 
 def _safe(default=None):
@@ -32,7 +86,7 @@ def _safe(default=None):
             async def run_async(ls, params):
                 try:
                     return await fn(ls, params)
-                except asyncio.CancelledError:
+                except (asyncio.CancelledError, JsonRpcException):
                     raise
                 except Exception:          # never let the analysis take the server down
                     _report(ls, fn.__name__)
@@ -43,6 +97,8 @@ def _safe(default=None):
         def run(ls, params):
             try:
                 return fn(ls, params)
+            except JsonRpcException:
+                raise
             except Exception:
                 _report(ls, fn.__name__)
                 return default
@@ -64,13 +120,27 @@ def _doc(ls: LanguageServer, uri: str):
     return doc, (doc.path or "untitled.aidl")
 
 
+def _at(ls: LanguageServer, params):
+    """(text to analyse, path, line, character) for a position request: the document, or its
+    view around the position when it is large (same line and column numbers)."""
+    doc, path = _doc(ls, params.text_document.uri)
+    line, ch = params.position.line, params.position.character
+    return window.view(doc.source, line), path, line, ch
+
+
 async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
     if delay:
         await asyncio.sleep(delay)
     doc, path = _doc(ls, uri)
     version, text = doc.version, doc.source
-    diags = await asyncio.get_running_loop().run_in_executor(
-        None, functools.partial(analysis.diagnostics, text, path, True, uri))
+    try:
+        raw = await _get_analyzer().diagnostics(text, path, uri, True)
+        diags = converters.get_converter().structure(raw, list[T.Diagnostic])
+    except AnalysisTimeout as e:
+        diags = [T.Diagnostic(
+            range=T.Range(start=T.Position(line=0, character=0), end=T.Position(line=0, character=1)),
+            message=f"aidl lsp: {e}; stopped (run `aidl check` for the full report)",
+            severity=T.DiagnosticSeverity.Warning, source="aidl")]
     doc, _ = _doc(ls, uri)
     if doc.version != version or doc.source != text:
         return                      # stale: a newer change will publish
@@ -81,7 +151,7 @@ async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
 def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
     old = _pending.pop(uri, None)
     if old is not None:
-        old.cancel()
+        old.cancel()                # abandons its analysis (see worker.Analyzer)
 
     async def run():
         try:
@@ -93,6 +163,27 @@ def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
     _pending[uri] = asyncio.ensure_future(run())
 
 
+@server.feature(T.INITIALIZED)
+@_safe()
+async def initialized(ls: LanguageServer, params: T.InitializedParams):
+    await _get_analyzer().start()          # warm the worker while the editor opens files
+
+
+@server.feature(T.INITIALIZE)
+@_safe()
+def initialize(ls: LanguageServer, params: T.InitializeParams):
+    opts = params.initialization_options
+    if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
+        _settings["debounce"] = max(0.0, float(opts["debounce"]))
+
+
+@server.feature(T.SHUTDOWN)
+@_safe()
+async def shutdown(ls: LanguageServer, params):
+    if _analyzer is not None:
+        await _analyzer.close()
+
+
 @server.feature(T.TEXT_DOCUMENT_DID_OPEN)
 @_safe()
 def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
@@ -102,7 +193,7 @@ def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
 @server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
 @_safe()
 def did_change(ls: LanguageServer, params: T.DidChangeTextDocumentParams):
-    _schedule(ls, params.text_document.uri, DEBOUNCE)
+    _schedule(ls, params.text_document.uri, _settings["debounce"])
 
 
 @server.feature(T.TEXT_DOCUMENT_DID_SAVE)
@@ -124,45 +215,110 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
 @server.feature(T.TEXT_DOCUMENT_HOVER)
 @_safe()
 def hover(ls: LanguageServer, params: T.HoverParams):
-    doc, path = _doc(ls, params.text_document.uri)
-    return analysis.hover(doc.source, params.position.line, params.position.character, path)
+    src, path, line, ch = _at(ls, params)
+    return analysis.hover(src, line, ch, path)
 
 
 @server.feature(T.TEXT_DOCUMENT_COMPLETION, T.CompletionOptions(trigger_characters=["."]))
 @_safe([])
 def completion(ls: LanguageServer, params: T.CompletionParams):
-    doc, path = _doc(ls, params.text_document.uri)
-    return analysis.completions(doc.source, params.position.line, params.position.character, path)
+    src, path, line, ch = _at(ls, params)
+    return analysis.completions(src, line, ch, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_SIGNATURE_HELP,
+                T.SignatureHelpOptions(trigger_characters=["(", ","], retrigger_characters=["="]))
+@_safe()
+def signature_help(ls: LanguageServer, params: T.SignatureHelpParams):
+    src, path, line, ch = _at(ls, params)
+    return signature.signature_help(src, line, ch, path)
 
 
 @server.feature(T.TEXT_DOCUMENT_DEFINITION)
 @_safe()
 def definition(ls: LanguageServer, params: T.DefinitionParams):
-    doc, path = _doc(ls, params.text_document.uri)
-    return analysis.definition(doc.source, params.position.line, params.position.character,
-                               params.text_document.uri, path)
+    src, path, line, ch = _at(ls, params)
+    return analysis.definition(src, line, ch, params.text_document.uri, path)
 
 
 @server.feature(T.TEXT_DOCUMENT_REFERENCES)
 @_safe([])
 def references(ls: LanguageServer, params: T.ReferenceParams):
-    doc, path = _doc(ls, params.text_document.uri)
-    return analysis.references(doc.source, params.position.line, params.position.character,
-                               params.text_document.uri, params.context.include_declaration, path)
+    src, path, line, ch = _at(ls, params)
+    return analysis.references(src, line, ch, params.text_document.uri,
+                               params.context.include_declaration, path)
 
 
 @server.feature(T.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
 @_safe([])
 def document_symbol(ls: LanguageServer, params: T.DocumentSymbolParams):
     doc, path = _doc(ls, params.text_document.uri)
+    if len(doc.source) > window.LARGE:
+        return window.outline(doc.source)
     return analysis.document_symbols(doc.source, path)
+
+
+def _too_large(doc, what: str) -> None:
+    if len(doc.source) > window.LARGE:
+        raise RequestFailed(f"aidl lsp: {what} is not offered for documents over "
+                            f"{window.LARGE} characters (this one has {len(doc.source)}); "
+                            f"use `aidl fmt` / edit by hand")
 
 
 @server.feature(T.TEXT_DOCUMENT_FORMATTING)
 @_safe([])
 def formatting(ls: LanguageServer, params: T.DocumentFormattingParams):
     doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "formatting")
     return analysis.formatting(doc.source, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_CODE_ACTION,
+                T.CodeActionOptions(code_action_kinds=[T.CodeActionKind.QuickFix]))
+@_safe([])
+def code_action(ls: LanguageServer, params: T.CodeActionParams):
+    return edits.code_actions(params.text_document.uri, params.context.diagnostics, params.range)
+
+
+@server.feature(T.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
+                T.SemanticTokensLegend(token_types=semantic.TOKEN_TYPES,
+                                       token_modifiers=semantic.TOKEN_MODIFIERS))
+@_safe()
+def semantic_tokens(ls: LanguageServer, params: T.SemanticTokensParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    n = len(doc.source)
+    if n > window.HUGE:
+        return None
+    return T.SemanticTokens(data=semantic.semantic_tokens(doc.source, path,
+                                                          lexical=n > window.LARGE))
+
+
+@server.feature(T.TEXT_DOCUMENT_PREPARE_RENAME)
+@_safe()
+def prepare_rename(ls: LanguageServer, params: T.PrepareRenameParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "rename")
+    try:
+        return edits.prepare_rename(doc.source, params.position.line, params.position.character,
+                                    path)
+    except edits.RenameError as e:
+        raise RequestFailed(str(e)) from None
+
+
+@server.feature(T.TEXT_DOCUMENT_RENAME)
+@_safe()
+def rename(ls: LanguageServer, params: T.RenameParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "rename")
+    opened = {}
+    for uri, d in ls.workspace.text_documents.items():
+        if d.path and uri != params.text_document.uri:
+            opened[d.path] = d.source
+    try:
+        return edits.rename(doc.source, params.position.line, params.position.character,
+                            params.new_name, params.text_document.uri, path, opened)
+    except edits.RenameError as e:
+        raise RequestFailed(str(e)) from None
 
 
 def main() -> int:

@@ -1,0 +1,247 @@
+"""`aidl lsp` over stdio (pytest-lsp): quick fixes, semantic tokens, rename across imports,
+signature help, invalid params, a stale analysis superseded by a newer edit; large documents."""
+import sys
+import time
+
+import pytest
+import pytest_lsp
+from lsprotocol import types as T
+from pygls.exceptions import JsonRpcException
+from pytest_lsp import ClientServerConfig, LanguageClient
+
+from aidl_lang.editor.lsp import analysis as an
+from aidl_lang.editor.lsp import semantic, signature, window
+
+from conftest import ROOT
+
+TELEPHONE = (ROOT / "examples" / "telephone.aidl").read_text()
+
+BROKEN = """\
+param w = 10 mm
+
+solid plate {
+    body = Rectangle(center=(0, 0), width=w, height=20)
+    hole bore {
+        c = Circel(center=(0, 0), radius=3)
+    }
+    CenterInside(bore, self)
+}
+"""
+
+
+def pos(src: str, needle: str, k: int = 0) -> T.Position:
+    p = an.position_at(src, src.index(needle) + k)
+    return T.Position(p.line, p.character)
+
+
+def apply(src: str, edits: list[T.TextEdit]) -> str:
+    """Apply LSP text edits (ASCII text) from the last to the first."""
+    lines = src.split("\n")
+    starts = [0]
+    for ln in lines:
+        starts.append(starts[-1] + len(ln) + 1)
+    for e in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
+        a = starts[e.range.start.line] + e.range.start.character
+        b = starts[e.range.end.line] + e.range.end.character
+        src = src[:a] + e.new_text + src[b:]
+    return src
+
+
+# the arguments vscode-languageclient adds for its stdio transport; no debounce
+@pytest_lsp.fixture(config=ClientServerConfig(
+    server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio", "--clientProcessId=1"]))
+async def client(lsp_client: LanguageClient):
+    await lsp_client.initialize_session(T.InitializeParams(
+        capabilities=pytest_lsp.client_capabilities("visual-studio-code"),
+        initialization_options={"debounce": 0}))
+    yield
+    await lsp_client.shutdown_session()
+
+
+def _open(client: LanguageClient, uri: str, text: str, version: int = 1) -> None:
+    client.text_document_did_open(T.DidOpenTextDocumentParams(
+        text_document=T.TextDocumentItem(uri=uri, language_id="aidl-cad", version=version, text=text)))
+
+
+def _change(client: LanguageClient, uri: str, text: str, version: int) -> None:
+    client.text_document_did_change(T.DidChangeTextDocumentParams(
+        text_document=T.VersionedTextDocumentIdentifier(uri=uri, version=version),
+        content_changes=[T.TextDocumentContentChangeWholeDocument(text=text)]))
+
+
+async def _diagnostics(client: LanguageClient, uri: str, version: int | None = None, timeout=60):
+    end = time.monotonic() + timeout
+    while True:
+        params = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if params.uri == uri and (version is None or params.version == version):
+            return params.diagnostics
+        assert time.monotonic() < end, "no diagnostics for this version"
+
+
+@pytest.mark.asyncio
+async def test_quick_fix_applies_and_the_diagnostic_goes_away(client: LanguageClient, tmp_path):
+    uri = (tmp_path / "plate.aidl").as_uri()
+    _open(client, uri, BROKEN)
+    (d,) = await _diagnostics(client, uri)
+    assert d.code == "E0103" and d.data["fixes"][0]["newText"] == "Circle"
+    actions = await client.text_document_code_action_async(T.CodeActionParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), range=d.range,
+        context=T.CodeActionContext(diagnostics=[d])))
+    assert actions[0].kind == T.CodeActionKind.QuickFix and actions[0].is_preferred
+    assert actions[0].title == "Replace `Circel` with `Circle`"
+    fixed = apply(BROKEN, actions[0].edit.changes[uri])
+    assert fixed == BROKEN.replace("Circel", "Circle")
+    _change(client, uri, fixed, 2)
+    assert list(await _diagnostics(client, uri, version=2)) == []
+
+
+@pytest.mark.asyncio
+async def test_semantic_tokens_of_a_known_line(client: LanguageClient, tmp_path):
+    uri = (tmp_path / "telephone.aidl").as_uri()
+    _open(client, uri, TELEPHONE)
+    res = await client.text_document_semantic_tokens_full_async(T.SemanticTokensParams(
+        text_document=T.TextDocumentIdentifier(uri=uri)))
+    toks = semantic.decode(TELEPHONE, res.data)
+    line = pos(TELEPHONE, "            pitch = Circle(").line
+    got = [(text, typ, mods) for ln, _, text, typ, mods in toks if ln == line]
+    assert got == [
+        ("pitch", "variable", ["declaration"]), ("Circle", "class", ["defaultLibrary"]),
+        ("center", "parameter", []), ("0", "number", []), ("dial_y", "variable", []),
+        ("radius", "parameter", []), ("ring_r", "variable", []),
+        ("construction", "parameter", []), ("true", "variable", ["readonly", "defaultLibrary"])]
+    line = pos(TELEPHONE, "param dial_r").line
+    assert [(t, typ, m) for ln, _, t, typ, m in toks if ln == line] == [
+        ("param", "keyword", []), ("dial_r", "variable", ["declaration", "readonly"]),
+        ("34", "number", []), ("mm", "keyword", ["unit"])]
+    kinds = {(t, typ) for _, _, t, typ, _ in toks}
+    assert {("telephone", "struct"), ("OnCircle", "macro"), ("cos", "function"),
+            ("center", "property")} <= kinds
+    assert any(typ == "comment" for *_, typ, _ in toks)
+
+
+def test_semantic_tokens_split_block_comments_and_count_utf16():
+    src = 'x = 1 /* a\nb */\ny = "😀" + 2 deg\n'
+    toks = semantic.decode(src, semantic.semantic_tokens(src))
+    assert [(ln, t, typ) for ln, _, t, typ, _ in toks][:3] == [
+        (0, "x", "variable"), (0, "1", "number"), (0, "/* a", "comment")]
+    data = semantic.semantic_tokens(src)
+    lengths = [data[i + 2] for i in range(0, len(data), 5)]
+    assert 4 in lengths                    # "😀" in quotes: 2 UTF-16 units + 2 quotes
+    assert ("deg", "keyword") in {(t, typ) for _, _, t, typ, _ in toks}
+
+
+@pytest.mark.asyncio
+async def test_rename_across_imports(client: LanguageClient, tmp_path):
+    (tmp_path / "parts").mkdir()
+    lib = tmp_path / "parts" / "pegs.aidl"
+    lib.write_text("def peg(r=3) -> solid {\n    c = Circle(center=(0, 0), radius=r)\n}\n"
+                   "other = peg(r=1)\n")
+    main = tmp_path / "main.aidl"
+    src = ('import "parts/pegs.aidl"\n\nsolid board {\n    a = peg(r=2)\n    b = peg()\n'
+           '    peg_count = 2\n}\n')
+    main.write_text(src)
+    (tmp_path / "parts" / "rack.aidl").write_text('import "pegs.aidl"\nsolid rack {\n    p = peg()\n}\n')
+    (tmp_path / "parts" / "unrelated.aidl").write_text("def peg() -> hole {\n}\nx = peg()\n")
+    _open(client, main.as_uri(), src)
+    r = await client.text_document_prepare_rename_async(T.PrepareRenameParams(
+        text_document=T.TextDocumentIdentifier(uri=main.as_uri()), position=pos(src, "peg(r=2)", 1)))
+    assert r.start == pos(src, "peg(r=2)") and r.end == pos(src, "peg(r=2)", 3)
+    edit = await client.text_document_rename_async(T.RenameParams(
+        text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
+        position=pos(src, "peg(r=2)", 1), new_name="dowel"))
+    ch = edit.changes
+    assert apply(src, ch[main.as_uri()]) == src.replace("peg(", "dowel(")     # not peg_count
+    assert apply(lib.read_text(), ch[lib.as_uri()]) == lib.read_text().replace("peg(", "dowel(")
+    rack = tmp_path / "parts" / "rack.aidl"
+    assert apply(rack.read_text(), ch[rack.as_uri()]).count("dowel()") == 1
+    assert (tmp_path / "parts" / "unrelated.aidl").as_uri() not in ch    # its own `peg`
+    with pytest.raises(JsonRpcException, match="part of the language"):
+        await client.text_document_prepare_rename_async(T.PrepareRenameParams(
+            text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
+            position=pos(src, "solid board", 1)))
+    with pytest.raises(JsonRpcException, match="not a name"):
+        await client.text_document_rename_async(T.RenameParams(
+            text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
+            position=pos(src, "peg(r=2)", 1), new_name="2peg"))
+
+
+@pytest.mark.asyncio
+async def test_signature_help_forms_and_active_argument(client: LanguageClient, tmp_path):
+    uri = (tmp_path / "s.aidl").as_uri()
+    src = "solid a {\n    r = Rectangle(center=(0, 0), width=3, \n}\n"
+    _open(client, uri, src)
+    at = pos(src, "width=3, ", len("width=3, "))
+    h = await client.text_document_signature_help_async(T.SignatureHelpParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=at))
+    labels = [s.label for s in h.signatures]
+    assert labels[0].startswith("Rectangle(center: point, width: length, height: length")
+    assert any(lb.startswith("Rectangle(corner: point, opposite: point") for lb in labels)
+    assert h.active_signature == 0 and h.active_parameter == 2          # height
+    a, b = h.signatures[0].parameters[2].label
+    assert h.signatures[0].label[a:b] == "height: length"
+    # a keyword being typed selects the form that has it
+    src2 = "solid a {\n    r = Rectangle(corner=(0, 0), opposite=\n}\n"
+    h = signature.signature_help(src2, 1, len("    r = Rectangle(corner=(0, 0), opposite="))
+    assert h.signatures[h.active_signature].label.startswith("Rectangle(corner:")
+    assert h.active_parameter == 1
+    assert signature.signature_help(src2, 0, 3) is None                  # not in a call
+
+
+@pytest.mark.asyncio
+async def test_invalid_params_get_an_error_response(client: LanguageClient, tmp_path, monkeypatch):
+    # send the raw dict (the client would refuse to build a HoverRequest without a position)
+    monkeypatch.setattr(client.protocol, "get_message_type", lambda method: None)
+    with pytest.raises(JsonRpcException) as err:
+        await client.protocol.send_request_async(
+            "textDocument/hover", {"textDocument": {"uri": (tmp_path / "x.aidl").as_uri()}})
+    monkeypatch.undo()
+    assert err.value.code == -32602 and "position" in str(err.value)
+    # and the server goes on
+    uri = (tmp_path / "ok.aidl").as_uri()
+    _open(client, uri, "x = 1\n")
+    assert list(await _diagnostics(client, uri)) == []
+
+
+SLOW = """\
+solid s {
+    for i in range(10000) {
+        for j in range(10000) {
+            x = i * j
+        }
+    }
+    body = Circle(center=(0, 0), radius=3)
+}
+"""
+
+
+@pytest.mark.asyncio
+async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClient, tmp_path):
+    uri = (tmp_path / "slow.aidl").as_uri()
+    _open(client, uri, SLOW)              # 10^8 loop iterations: minutes of interpretation
+    t0 = time.monotonic()
+    h = await client.text_document_hover_async(T.HoverParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=pos(SLOW, "Circle")))
+    assert "Circle(center: point" in h.contents.value      # the server answers meanwhile
+    fixed = SLOW.replace("10000", "3")
+    _change(client, uri, fixed, 2)
+    assert list(await _diagnostics(client, uri, version=2, timeout=30)) == []
+    assert time.monotonic() - t0 < 30
+
+
+def test_large_document_completion_uses_a_view():
+    # a 10 MB document: completion must not re-analyse all of it
+    filler = "".join(f"v{i} = {i} mm\n" for i in range(700_000))
+    head = "param w = 10 mm\ndef peg(r=3) -> solid {\n    c = Circle(center=(0, 0), radius=r)\n}\n"
+    body = "solid plate {\n    body = Rectangle(center=(0, 0), width=w, height=20)\n    body.\n}\n"
+    src = head + filler + body
+    assert len(src) > 10_000_000
+    line = src.count("\n", 0, src.index("    body.\n"))
+    t = time.perf_counter()
+    view = window.view(src, line)
+    labels = {c.label for c in an.completions(view, line, len("    body."))}
+    assert {"top_left", "width", "bb"} <= labels
+    labels = {c.label for c in an.completions(view, line + 1, 0)}
+    assert {"w", "peg", "plate", "v699999", "Rectangle"} <= labels
+    assert time.perf_counter() - t < 60            # (whole-document analysis: many minutes)
+    assert view.count("\n") == src.count("\n")     # same lines
+    assert len(window.outline(src)) > 700_000
