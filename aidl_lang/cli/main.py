@@ -200,8 +200,10 @@ def cmd_lsp(args) -> int:
             print(f"aidl: error: `aidl lsp {flag}` is not supported: the server talks over "
                   "stdin/stdout (use the client's stdio transport, `--stdio`)", file=sys.stderr)
             return 2
+    from ..editor.lsp.worker import spawn
+    worker = spawn()                   # the diagnostics worker warms up while the server loads
     from ..editor.lsp.server import main as lsp_main
-    return lsp_main()
+    return lsp_main(worker)
 
 
 def main(argv: list[str] | None = None) -> int:

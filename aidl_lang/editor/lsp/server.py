@@ -166,7 +166,7 @@ def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
 @server.feature(T.INITIALIZED)
 @_safe()
 async def initialized(ls: LanguageServer, params: T.InitializedParams):
-    await _get_analyzer().start()          # warm the worker while the editor opens files
+    _get_analyzer().start()                # adopt the worker started with the server
 
 
 @server.feature(T.INITIALIZE)
@@ -181,7 +181,7 @@ def initialize(ls: LanguageServer, params: T.InitializeParams):
 @_safe()
 async def shutdown(ls: LanguageServer, params):
     if _analyzer is not None:
-        await _analyzer.close()
+        _analyzer.close()
 
 
 @server.feature(T.TEXT_DOCUMENT_DID_OPEN)
@@ -321,8 +321,14 @@ def rename(ls: LanguageServer, params: T.RenameParams):
         raise RequestFailed(str(e)) from None
 
 
-def main() -> int:
-    """Serve over stdin/stdout until the client exits."""
+def main(worker=None) -> int:
+    """Serve over stdin/stdout until the client exits. ``worker``: a diagnostics worker process
+    started before this module was imported (:func:`.worker.spawn`), so it warms up meanwhile."""
+    global _analyzer
     logging.basicConfig(level=logging.WARNING)
-    server.start_io()
+    _analyzer = Analyzer(worker)
+    try:
+        server.start_io()
+    finally:
+        _analyzer.close()
     return 0

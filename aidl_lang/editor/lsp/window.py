@@ -7,7 +7,7 @@ document instead: the top-level statement around the cursor (at most :data:`MAX_
 it) and the top-level declarations (``units``, ``import``, ``param``, ``def`` lines and the last
 :data:`MAX_NAMES` one-line top-level assignments before the cursor); every other line is
 emptied, so line and column numbers are those of the document. Above :data:`LARGE` the outline
-comes from a regular expression (top-level declarations), semantic tokens are lexical only
+comes from a regular expression (the first :data:`MAX_OUTLINE` top-level declarations), semantic tokens are lexical only
 (no name resolution) and above :data:`HUGE` none are sent (the TextMate grammar still colours
 VS Code); rename and formatting are refused with a message.
 """
@@ -21,6 +21,7 @@ LARGE = 50_000            # characters: above this, requests analyse a view
 HUGE = 1_000_000          # characters: above this, no semantic tokens
 MAX_BLOCK = 2_000         # lines of the enclosing top-level statement kept
 MAX_NAMES = 500           # one-line top-level assignments kept
+MAX_OUTLINE = 5_000       # symbols in the outline of a large document
 
 _BARE = re.compile(r"""#.*|//.*|"(?:\\.|[^"\\])*"|'(?:\\.|[^'\\])*'""")
 _DECL = re.compile(r"\s*(units|import|param|def)\b")
@@ -77,10 +78,13 @@ _TOP = re.compile(r"^(param|def|solid|hole|drawing|assembly)\s+([A-Za-z_]\w*)|^(
 
 
 def outline(src: str) -> list[T.DocumentSymbol]:
-    """Top-level declarations found by a regular expression (for large documents)."""
+    """Top-level declarations found by a regular expression (for large documents), the first
+    :data:`MAX_OUTLINE` of them."""
     out, seen = [], set()
     line, last = 0, 0
     for m in _TOP.finditer(src):
+        if len(out) >= MAX_OUTLINE:
+            break
         kw, name = (m.group(1), m.group(2)) if m.group(1) else ("", m.group(3))
         if name in seen:
             continue

@@ -9,8 +9,9 @@ answer per line on its stdout (``{"id", "diagnostics": [...]}``, LSP diagnostics
 
 :class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
 job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
-for :data:`Analyzer.GRACE` seconds the worker is killed and a new one started (about a second
-of imports), else its answer is read and dropped. A job that runs past
+for :data:`Analyzer.GRACE` seconds the worker is killed and a warm spare takes over (the spare
+is started once the first diagnostics are out; a new worker needs about a second of imports),
+else its answer is read and dropped. A job that runs past
 :data:`Analyzer.TIMEOUT` seconds is killed and reported as one diagnostic. If no worker can be
 started, the analysis runs in a thread of the server instead (no preemption, same answers).
 """
@@ -18,14 +19,15 @@ from __future__ import annotations
 
 import asyncio
 import json
+import subprocess
 import sys
+import threading
 import time
 
 
 def _serve() -> int:
     """The worker's loop: read a job per line, answer per line, until stdin closes."""
     import os
-    import threading
 
     from lsprotocol import converters
 
@@ -40,6 +42,7 @@ def _serve() -> int:
     threading.Thread(target=watch, daemon=True).start()
     conv = converters.get_converter()
     out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
+    diagnostics("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl")
     for line in sys.stdin:
         try:
             job = json.loads(line)
@@ -57,46 +60,79 @@ class AnalysisTimeout(Exception):
     """The pipeline ran longer than :data:`Analyzer.TIMEOUT` seconds and was stopped."""
 
 
+def spawn() -> subprocess.Popen | None:
+    """Start a worker process (it warms up, importing the pipeline, while the server starts);
+    None if no process can be started here."""
+    try:
+        return subprocess.Popen([sys.executable, "-m", "aidl_lang.editor.lsp.worker"],
+                                stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    except (OSError, ValueError):
+        return None
+
+
 class Analyzer:
-    """One warm worker process computing diagnostics, one job at a time (see the module doc)."""
+    """One warm worker process computing diagnostics, one job at a time (see the module doc).
 
-    GRACE = 1.0            # seconds a stale job may keep running before its worker is killed
+    A thread per worker reads its answers and hands them to the waiting coroutine; jobs are
+    written from a thread too, so a large document never blocks the event loop."""
+
+    GRACE = 0.5            # seconds a stale job may keep running before its worker is killed
     TIMEOUT = 60.0         # seconds after which any job is stopped
-    LIMIT = 1 << 30        # longest answer line (bytes)
+    SPARE = True           # keep a second warm worker to take over from a killed one
 
-    def __init__(self) -> None:
-        self.proc: asyncio.subprocess.Process | None = None
+    def __init__(self, proc: subprocess.Popen | None = None) -> None:
+        self.proc: subprocess.Popen | None = None
         self.lock = asyncio.Lock()
         self.seq = 0
+        self.waiting: dict[int, tuple[subprocess.Popen, asyncio.Future]] = {}
         self.inflight: tuple[int, float, asyncio.Future] | None = None   # id, start, answer
-        self.failed = False
         self.restarts = 0
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._proc0 = proc
 
-    async def start(self) -> None:
-        """Start the worker (called once the server is up, so it warms while the editor opens)."""
-        if self.proc is not None and self.proc.returncode is None:
+    def start(self) -> None:
+        """Adopt the worker started early (:func:`spawn`) or start one."""
+        self._loop = asyncio.get_running_loop()
+        if self.proc is not None and self.proc.poll() is None:
             return
-        try:
-            self.proc = await asyncio.create_subprocess_exec(
-                sys.executable, "-m", "aidl_lang.editor.lsp.worker",
-                stdin=asyncio.subprocess.PIPE, stdout=asyncio.subprocess.PIPE, limit=self.LIMIT)
-        except (OSError, NotImplementedError, RuntimeError):
-            self.proc, self.failed = None, True
+        proc, self._proc0 = self._proc0, None
+        if proc is None or proc.poll() is not None:
+            proc = spawn()
+        self.proc = proc
+        if proc is not None:
+            threading.Thread(target=self._reader, args=(proc,), daemon=True).start()
 
-    async def kill(self) -> None:
+    def _reader(self, proc: subprocess.Popen) -> None:
+        for line in proc.stdout:
+            try:
+                answer = json.loads(line)
+            except ValueError:
+                continue
+            entry = self.waiting.pop(answer.get("id"), None)
+            if entry is not None:
+                self._loop.call_soon_threadsafe(_settle_future, entry[1], answer, None)
+        for job, (p, fut) in list(self.waiting.items()):     # this worker is gone
+            if p is proc:
+                self.waiting.pop(job, None)
+                self._loop.call_soon_threadsafe(_settle_future, fut, None,
+                                                EOFError("the analysis worker exited"))
+
+    def kill(self) -> None:
         proc, self.proc = self.proc, None
-        if proc is not None and proc.returncode is None:
+        if proc is not None and proc.poll() is None:
             proc.kill()
             try:
-                await asyncio.wait_for(proc.wait(), 5)
-            except asyncio.TimeoutError:
+                proc.wait(5)
+            except subprocess.TimeoutExpired:
                 pass
         if self.inflight is not None and not self.inflight[2].done():
             self.inflight[2].cancel()
         self.inflight = None
 
-    async def close(self) -> None:
-        await self.kill()
+    def close(self) -> None:
+        self.kill()
+        if self._proc0 is not None and self._proc0.poll() is None:
+            self._proc0.kill()
 
     async def _settle(self) -> None:
         """Before a new job: drop the answer of an abandoned one, or kill its worker if it has
@@ -113,56 +149,66 @@ class Analyzer:
                     pass
             if not fut.done():
                 self.restarts += 1
-                await self.kill()
+                self.kill()
         self.inflight = None
-
-    async def _read(self, job_id: int) -> dict:
-        assert self.proc is not None and self.proc.stdout is not None
-        while True:
-            line = await self.proc.stdout.readline()
-            if not line:
-                raise EOFError("the analysis worker exited")
-            answer = json.loads(line)
-            if answer.get("id") == job_id:
-                return answer
 
     async def diagnostics(self, text: str, path: str, uri: str | None, solve: bool = True):
         """The diagnostics of ``text`` as LSP dicts (``Diagnostic`` unstructured); raises
         :class:`AnalysisTimeout` after TIMEOUT seconds. Cancelling the awaiting task abandons
         the job (see :meth:`_settle`)."""
+        loop = asyncio.get_running_loop()
         async with self.lock:
             await self._settle()
-            if self.proc is None or self.proc.returncode is not None:
-                await self.start()
+            self.start()
             if self.proc is None:                        # no subprocess here: a thread
                 from lsprotocol import converters
 
                 from .analysis import diagnostics
-                d = await asyncio.get_running_loop().run_in_executor(
-                    None, diagnostics, text, path, solve, uri)
+                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri)
                 return converters.get_converter().unstructure(d)
             self.seq += 1
             job = self.seq
-            data = json.dumps({"id": job, "text": text, "path": path, "uri": uri,
-                               "solve": solve}) + "\n"
-            self.proc.stdin.write(data.encode())
-            await self.proc.stdin.drain()
-            fut = asyncio.ensure_future(self._read(job))
+            fut = loop.create_future()
+            self.waiting[job] = (self.proc, fut)
             self.inflight = (job, time.monotonic(), fut)
+            data = (json.dumps({"id": job, "text": text, "path": path, "uri": uri,
+                                "solve": solve}) + "\n").encode()
+            proc = self.proc
+            try:
+                await loop.run_in_executor(None, _write, proc, data)
+            except OSError:                              # it died: the next job restarts it
+                self.kill()
+                raise EOFError("the analysis worker exited") from None
         try:
             answer = await asyncio.wait_for(asyncio.shield(fut), self.TIMEOUT)
         except asyncio.TimeoutError:
             async with self.lock:
                 if self.inflight is not None and self.inflight[0] == job:
                     self.restarts += 1
-                    await self.kill()
+                    self.kill()
             raise AnalysisTimeout(f"the analysis took longer than {self.TIMEOUT:g} s") from None
         async with self.lock:
             if self.inflight is not None and self.inflight[0] == job:
                 self.inflight = None
+            if self._proc0 is None and self.SPARE:
+                self._proc0 = spawn()        # a warm spare, started once the first answer is in
         if "error" in answer:
             raise RuntimeError(answer["error"])
         return answer["diagnostics"]
+
+
+def _write(proc: subprocess.Popen, data: bytes) -> None:
+    proc.stdin.write(data)
+    proc.stdin.flush()
+
+
+def _settle_future(fut: asyncio.Future, result, exc) -> None:
+    if fut.done():
+        return
+    if exc is not None:
+        fut.set_exception(exc)
+    else:
+        fut.set_result(result)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,107 @@
+// The extension's own client library starts the real server: vscode-languageclient (with the
+// options extension.js uses, from server.js) under node with a minimal `vscode` shim spawns
+// `aidl lsp --stdio`, completes `initialize`, opens an example and receives its diagnostics
+// in a diagnostic collection, as VS Code would show them.
+//
+// The server is found the way the extension finds it (server.js: aidl.serverPath, the
+// workspace's .venv, $VIRTUAL_ENV, PATH); the repository's .venv is the workspace's here.
+'use strict';
+const test = require('node:test');
+const assert = require('node:assert/strict');
+const fs = require('node:fs');
+const os = require('node:os');
+const path = require('node:path');
+const Module = require('node:module');
+
+const SHIM = path.join(__dirname, 'shim', 'vscode.js');
+const resolve = Module._resolveFilename;
+Module._resolveFilename = function (request, ...rest) {
+  return request === 'vscode' ? SHIM : resolve.call(this, request, ...rest);
+};
+const vscode = require('vscode');
+const { LanguageClient } = require('vscode-languageclient/node');
+const { findServer, serverOptions, clientOptions, notFoundMessage } = require('../server');
+
+const ROOT = path.resolve(__dirname, '..', '..', '..');
+
+function waitFor(pred, ms, what) {
+  return new Promise((resolve, reject) => {
+    const t0 = Date.now();
+    const tick = () => {
+      const v = pred();
+      if (v) return resolve(v);
+      if (Date.now() - t0 > ms) return reject(new Error(`timed out waiting for ${what}`));
+      setTimeout(tick, 20);
+    };
+    tick();
+  });
+}
+
+test('findServer: setting, then the workspace .venv, then PATH, naming what it tried', () => {
+  const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-find-'));
+  const venvBin = path.join(tmp, 'ws', '.venv', 'bin');
+  const other = path.join(tmp, 'other');
+  fs.mkdirSync(venvBin, { recursive: true });
+  fs.mkdirSync(other);
+  for (const d of [venvBin, other]) {
+    fs.writeFileSync(path.join(d, 'aidl'), '#!/bin/sh\n');
+    fs.chmodSync(path.join(d, 'aidl'), 0o755);
+  }
+  const env = { PATH: other };
+  assert.equal(findServer({ folders: [path.join(tmp, 'ws')], env }).command, path.join(venvBin, 'aidl'));
+  assert.equal(findServer({ folders: [tmp], env }).command, path.join(other, 'aidl'));
+  assert.equal(findServer({ serverPath: path.join(other, 'aidl'), folders: [path.join(tmp, 'ws')], env }).command,
+    path.join(other, 'aidl'));
+  assert.equal(findServer({ serverPath: 'aidl', env }).command, path.join(other, 'aidl'));
+  const none = findServer({ folders: [tmp], env: { PATH: path.join(tmp, 'empty') } });
+  assert.equal(none.command, null);
+  assert.ok(none.tried.includes(path.join(tmp, '.venv', 'bin', 'aidl')));
+  assert.ok(none.tried.includes(path.join(tmp, 'empty', 'aidl')));
+  const msg = notFoundMessage(none.tried);
+  assert.match(msg, /\.venv/);
+  assert.match(msg, /aidl\.serverPath/);
+  const missing = findServer({ serverPath: '/nowhere/aidl', env });
+  assert.equal(missing.command, null);
+  assert.deepEqual(missing.tried, ['/nowhere/aidl']);
+});
+
+test('vscode-languageclient starts `aidl lsp`, opens an example and receives diagnostics', async () => {
+  const { command, tried } = findServer({ folders: [ROOT] });
+  assert.ok(command, notFoundMessage(tried));
+  const client = new LanguageClient('aidl', 'AIDL language server', serverOptions(command), clientOptions());
+  const t0 = Date.now();
+  await client.start();
+  assert.equal(client.initializeResult.serverInfo.name, 'aidl');
+  const caps = client.initializeResult.capabilities;
+  assert.ok(caps.codeActionProvider && caps.semanticTokensProvider && caps.renameProvider
+    && caps.signatureHelpProvider, JSON.stringify(caps));
+  const { events, collections, textDocument } = vscode._shim;
+
+  // a good example: published with no diagnostics
+  const good = path.join(ROOT, 'examples', 'telephone.aidl');
+  events.open.fire(textDocument(good, fs.readFileSync(good, 'utf8')));
+  const coll = await waitFor(() => collections.find((c) => c.has(vscode.Uri.file(good))), 60000, 'diagnostics of telephone.aidl');
+  assert.deepEqual(coll.get(vscode.Uri.file(good)), []);
+  const first = Date.now() - t0;
+
+  // a misspelt primitive: one diagnostic, located, with the did-you-mean fix attached
+  const bad = path.join(os.tmpdir(), 'aidl-client-test.aidl');
+  const text = 'solid plate {\n    c = Circel(center=(0, 0), radius=3)\n}\n';
+  events.open.fire(textDocument(bad, text));
+  const diags = await waitFor(() => coll.get(vscode.Uri.file(bad)), 30000, 'diagnostics of the broken file');
+  assert.equal(diags.length, 1);
+  const d = diags[0];
+  assert.equal(d.code, 'E0103');
+  assert.equal(d.severity, vscode.DiagnosticSeverity.Error);
+  assert.deepEqual([d.range.start.line, d.range.start.character, d.range.end.character], [1, 8, 14]);
+  assert.match(d.message, /did you mean `Circle`/);
+  // and the quick fix the server offers for it
+  const actions = await client.sendRequest('textDocument/codeAction', {
+    textDocument: { uri: vscode.Uri.file(bad).toString() },
+    range: { start: { line: 1, character: 8 }, end: { line: 1, character: 14 } },
+    context: { diagnostics: [client.code2ProtocolConverter.asDiagnostic(d)] },
+  });
+  assert.equal(actions[0].title, 'Replace `Circel` with `Circle`');
+  await client.stop();
+  console.log(`# cold start to first diagnostics through vscode-languageclient: ${first} ms`);
+});
