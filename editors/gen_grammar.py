@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Regenerate the VS Code TextMate grammar from the registry: ``python editors/gen_grammar.py``.
+"""Regenerate the highlighting files from the registry: ``python editors/gen_grammar.py``.
 
-Writes ``editors/vscode/syntaxes/aidl.tmLanguage.json`` (see :mod:`aidl_lang.editor.highlight`).
-``--check`` writes nothing and exits 1 if the committed file is out of date.
+Writes ``editors/vscode/syntaxes/aidl.tmLanguage.json`` (the VS Code TextMate grammar) and
+``editors/nvim/syntax/aidl-cad.vim`` (Vim/Neovim), see :mod:`aidl_lang.editor.highlight`.
+``--check`` writes nothing and exits 1 if a committed file is out of date.
 """
 import sys
 from pathlib import Path
@@ -10,23 +11,26 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.editor.highlight import tmlanguage_json  # noqa: E402
+from aidl_lang.editor.highlight import tmlanguage_json, vim_syntax  # noqa: E402
 
 TARGET = ROOT / "editors" / "vscode" / "syntaxes" / "aidl.tmLanguage.json"
+VIM = ROOT / "editors" / "nvim" / "syntax" / "aidl-cad.vim"
 
 
 def main(argv) -> int:
-    text = tmlanguage_json()
-    old = TARGET.read_text(encoding="utf-8") if TARGET.exists() else None
-    if "--check" in argv:
-        if old != text:
-            print(f"{TARGET.relative_to(ROOT)} is out of date: run python editors/gen_grammar.py")
-            return 1
-        return 0
-    if old != text:
-        TARGET.write_text(text, encoding="utf-8")
-        print(f"wrote {TARGET.relative_to(ROOT)}")
-    return 0
+    stale = 0
+    for target, text in ((TARGET, tmlanguage_json()), (VIM, vim_syntax())):
+        old = target.read_text(encoding="utf-8") if target.exists() else None
+        if old == text:
+            continue
+        if "--check" in argv:
+            print(f"{target.relative_to(ROOT)} is out of date: run python editors/gen_grammar.py")
+            stale = 1
+        else:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_text(text, encoding="utf-8")
+            print(f"wrote {target.relative_to(ROOT)}")
+    return stale
 
 
 if __name__ == "__main__":
