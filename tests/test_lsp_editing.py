@@ -89,6 +89,13 @@ async def test_quick_fix_applies_and_the_diagnostic_goes_away(client: LanguageCl
         context=T.CodeActionContext(diagnostics=[d])))
     assert actions[0].kind == T.CodeActionKind.QuickFix and actions[0].is_preferred
     assert actions[0].title == "Replace `Circel` with `Circle`"
+    # a client that does not echo `data`, or sends no diagnostics: the server's own copy
+    bare = T.Diagnostic(range=d.range, message=d.message, code=d.code)
+    for ctx in ([bare], []):
+        again = await client.text_document_code_action_async(T.CodeActionParams(
+            text_document=T.TextDocumentIdentifier(uri=uri), range=d.range,
+            context=T.CodeActionContext(diagnostics=ctx)))
+        assert [a.title for a in again] == [a.title for a in actions]
     fixed = apply(BROKEN, actions[0].edit.changes[uri])
     assert fixed == BROKEN.replace("Circel", "Circle")
     _change(client, uri, fixed, 2)

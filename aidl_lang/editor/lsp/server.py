@@ -68,6 +68,7 @@ def _why(exc: Exception) -> str:
 server = LanguageServer("aidl", "0.2.0", text_document_sync_kind=T.TextDocumentSyncKind.Incremental,
                         protocol_cls=Protocol)
 _pending: dict[str, asyncio.Task] = {}
+_published: dict[str, list[T.Diagnostic]] = {}      # uri -> the diagnostics last published
 _settings = {"debounce": DEBOUNCE}
 _analyzer: Analyzer | None = None
 
@@ -144,6 +145,7 @@ async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
     doc, _ = _doc(ls, uri)
     if doc.version != version or doc.source != text:
         return                      # stale: a newer change will publish
+    _published[uri] = diags
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=uri, diagnostics=diags, version=version))
 
@@ -208,6 +210,7 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
     old = _pending.pop(params.text_document.uri, None)
     if old is not None:
         old.cancel()
+    _published.pop(params.text_document.uri, None)
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=params.text_document.uri, diagnostics=[]))
 
@@ -277,7 +280,20 @@ def formatting(ls: LanguageServer, params: T.DocumentFormattingParams):
                 T.CodeActionOptions(code_action_kinds=[T.CodeActionKind.QuickFix]))
 @_safe([])
 def code_action(ls: LanguageServer, params: T.CodeActionParams):
-    return edits.code_actions(params.text_document.uri, params.context.diagnostics, params.range)
+    uri = params.text_document.uri
+    published = _published.get(uri, [])
+    diags = []
+    for d in params.context.diagnostics or _overlapping(published, params.range):
+        if not isinstance(d.data, dict):          # a client that does not echo `data`
+            d = next((p for p in published if p.range == d.range and p.code == d.code), d)
+        diags.append(d)
+    return edits.code_actions(uri, diags, params.range)
+
+
+def _overlapping(diags: list[T.Diagnostic], rng: T.Range) -> list[T.Diagnostic]:
+    def key(p: T.Position):
+        return (p.line, p.character)
+    return [d for d in diags if key(d.range.start) <= key(rng.end) and key(rng.start) <= key(d.range.end)]
 
 
 @server.feature(T.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
