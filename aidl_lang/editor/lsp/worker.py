@@ -77,7 +77,7 @@ class Analyzer:
     written from a thread too, so a large document never blocks the event loop."""
 
     GRACE = 0.5            # seconds a stale job may keep running before its worker is killed
-    TIMEOUT = 60.0         # seconds after which any job is stopped
+    TIMEOUT = 30.0         # seconds after which any job is stopped
     SPARE = True           # keep a second warm worker to take over from a killed one
 
     def __init__(self, proc: subprocess.Popen | None = None) -> None:
@@ -154,8 +154,9 @@ class Analyzer:
 
     async def diagnostics(self, text: str, path: str, uri: str | None, solve: bool = True):
         """The diagnostics of ``text`` as LSP dicts (``Diagnostic`` unstructured); raises
-        :class:`AnalysisTimeout` after TIMEOUT seconds. Cancelling the awaiting task abandons
-        the job (see :meth:`_settle`)."""
+        :class:`AnalysisTimeout` after TIMEOUT seconds. Jobs run one at a time; cancelling the
+        awaiting task abandons its job (killed at once if it has run GRACE seconds, else the next
+        job gives it the rest of GRACE to finish, see :meth:`_settle`)."""
         loop = asyncio.get_running_loop()
         async with self.lock:
             await self._settle()
@@ -170,26 +171,26 @@ class Analyzer:
             job = self.seq
             fut = loop.create_future()
             self.waiting[job] = (self.proc, fut)
-            self.inflight = (job, time.monotonic(), fut)
+            started = time.monotonic()
+            self.inflight = (job, started, fut)
             data = (json.dumps({"id": job, "text": text, "path": path, "uri": uri,
                                 "solve": solve}) + "\n").encode()
-            proc = self.proc
             try:
-                await loop.run_in_executor(None, _write, proc, data)
-            except OSError:                              # it died: the next job restarts it
+                await loop.run_in_executor(None, _write, self.proc, data)
+                answer = await asyncio.wait_for(asyncio.shield(fut), self.TIMEOUT)
+            except asyncio.TimeoutError:
+                self.restarts += 1
                 self.kill()
-                raise EOFError("the analysis worker exited") from None
-        try:
-            answer = await asyncio.wait_for(asyncio.shield(fut), self.TIMEOUT)
-        except asyncio.TimeoutError:
-            async with self.lock:
-                if self.inflight is not None and self.inflight[0] == job:
+                raise AnalysisTimeout(f"the analysis took longer than {self.TIMEOUT:g} s") from None
+            except asyncio.CancelledError:               # abandoned: a newer edit wants the worker
+                if time.monotonic() - started >= self.GRACE:
                     self.restarts += 1
                     self.kill()
-            raise AnalysisTimeout(f"the analysis took longer than {self.TIMEOUT:g} s") from None
-        async with self.lock:
-            if self.inflight is not None and self.inflight[0] == job:
-                self.inflight = None
+                raise
+            except OSError:                              # it died: the next job starts another
+                self.kill()
+                raise EOFError("the analysis worker exited") from None
+            self.inflight = None
             if self._proc0 is None and self.SPARE:
                 self._proc0 = spawn()        # a warm spare, started once the first answer is in
         if "error" in answer:
