@@ -254,3 +254,21 @@ def test_large_document_completion_uses_a_view():
     assert view.count("\n") == src.count("\n")     # same lines
     names = [s.name for s in window.outline(src)]
     assert names[:3] == ["w", "peg", "v0"] and len(names) == window.MAX_OUTLINE
+
+
+@pytest.mark.asyncio
+async def test_worker_stops_an_analysis_past_its_time_limit_and_goes_on():
+    from aidl_lang.editor.lsp.worker import AnalysisTimeout, Analyzer
+    az = Analyzer()
+    az.TIMEOUT, az.SPARE = 3.0, False
+    try:
+        assert await az.diagnostics("x = 1\n", "a.aidl", None) == []     # warm
+        t = time.monotonic()
+        with pytest.raises(AnalysisTimeout):
+            await az.diagnostics(SLOW, "slow.aidl", None)
+        assert time.monotonic() - t < 10
+        assert az.restarts == 1
+        (d,) = await az.diagnostics(BROKEN, "b.aidl", None)             # a fresh worker
+        assert d["code"] == "E0103"
+    finally:
+        az.close()
