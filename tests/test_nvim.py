@@ -27,6 +27,7 @@ table.insert(out, 'opts=' .. tostring(vim.bo.expandtab) .. ',' .. vim.bo.shiftwi
 local ok = vim.wait(60000, function() return #vim.diagnostic.get(0) > 0 end, 50)
 local d = vim.diagnostic.get(0)[1]
 table.insert(out, 'diag=' .. (d and (d.lnum .. ':' .. d.col .. ':' .. d.code) or 'none'))
+table.insert(out, 'errmsg=' .. vim.v.errmsg)
 io.stdout:write(table.concat(out, '\n') .. '\n')
 vim.cmd('qa!')
 """
@@ -49,6 +50,7 @@ def test_neovim_detects_sets_options_and_attaches_the_server(tmp_path):
     assert got["cad"] == "aidl-cad"
     assert got["opts"] == "true,4,# %s,aidl-cad"
     assert got["diag"] == "2:8:E0103"                            # from `aidl lsp`, found on PATH
+    assert got["errmsg"] == ""                                   # no error from the plugin files
 
 
 def test_vim_syntax_file_is_generated_and_fresh():

@@ -174,11 +174,20 @@ def vim_syntax() -> str:
     tokens colour names by what they are, on top of it)."""
     v = vocabulary()
 
+    # words `:syntax keyword` would read as its own options (E395 for `Contains`)
+    options = {"contains", "contained", "containedin", "nextgroup", "transparent", "skipwhite",
+               "skipnl", "skipempty", "conceal", "cchar", "display", "extend", "fold",
+               "oneline", "keepend", "excludenl", "concealends"}
+
     def kw(group, words):
         words = [w for w in words if re.fullmatch(r"[A-Za-z_]\w*", w)]
+        plain = [w for w in words if w.lower() not in options]
         out = []
-        for i in range(0, len(words), 8):
-            out.append(f"syntax keyword {group} " + " ".join(words[i:i + 8]))
+        for i in range(0, len(plain), 8):
+            out.append(f"syntax keyword {group} " + " ".join(plain[i:i + 8]))
+        for w in words:
+            if w.lower() in options:
+                out.append(f"syntax match {group} /\\<{w}\\>/")
         return "\n".join(out)
 
     units = "\\|".join(u for u in v["units"] if re.fullmatch(r"[A-Za-z]+", u))

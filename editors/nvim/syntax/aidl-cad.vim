@@ -17,13 +17,14 @@ syntax keyword aidlCadPrimitive Arc Circle Ellipse Line Point Polygon Rectangle 
 syntax keyword aidlCadPrimitive RoundedRectangle Slot Text Trapezoid Triangle
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop Anchor
 syntax keyword aidlCadConstraint Angle AtMidpoint Below CenterInside Centered Chamfer CircularPattern Coincide
-syntax keyword aidlCadConstraint Coincident Collinear Concentric Contains Diameter Distance DistanceX DistanceY
-syntax keyword aidlCadConstraint Equal EqualLength EqualRadius Fillet Fix Fixed Gap Horizontal
-syntax keyword aidlCadConstraint HorizontalDistance HorizontallyCentered Inside Join LeftOf Length LinearPattern Lock
-syntax keyword aidlCadConstraint Midpoint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf
-syntax keyword aidlCadConstraint Orthogonal Over Parallel Perpendicular PointOnLine Radius RightOf Same
-syntax keyword aidlCadConstraint Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical
-syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Coincident Collinear Concentric Diameter Distance DistanceX DistanceY Equal
+syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Gap Horizontal HorizontalDistance
+syntax keyword aidlCadConstraint HorizontallyCentered Inside Join LeftOf Length LinearPattern Lock Midpoint
+syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal
+syntax keyword aidlCadConstraint Over Parallel Perpendicular PointOnLine Radius RightOf Same Symmetric
+syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
+syntax keyword aidlCadConstraint VerticallyCentered Wider Within
+syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min norm radians range
 syntax keyword aidlCadFunction round sin sqrt square str tan
