@@ -27,6 +27,8 @@ table.insert(out, 'opts=' .. tostring(vim.bo.expandtab) .. ',' .. vim.bo.shiftwi
 local ok = vim.wait(60000, function() return #vim.diagnostic.get(0) > 0 end, 50)
 local d = vim.diagnostic.get(0)[1]
 table.insert(out, 'diag=' .. (d and (d.lnum .. ':' .. d.col .. ':' .. d.code) or 'none'))
+local function syn(l, c) return vim.fn.synIDattr(vim.fn.synID(l, c, 1), 'name') end
+table.insert(out, 'syn=' .. syn(1, 13) .. ',' .. syn(2, 1) .. ',' .. syn(3, 24))
 table.insert(out, 'errmsg=' .. vim.v.errmsg)
 io.stdout:write(table.concat(out, '\n') .. '\n')
 vim.cmd('qa!')
@@ -38,7 +40,7 @@ def test_neovim_detects_sets_options_and_attaches_the_server(tmp_path):
     (tmp_path / ".git").mkdir()
     (tmp_path / "android.aidl").write_text("package com.example;\ninterface IFoo {\n    void f();\n}\n")
     (tmp_path / "empty.aidl").write_text("")
-    (tmp_path / "cad.aidl").write_text("param w = 3\nsolid plate {\n    c = Circel(center=(0, 0), radius=w)\n}\n")
+    (tmp_path / "cad.aidl").write_text("param w = 3 mm\nsolid plate {\n    c = Circel(center=(0, 0), radius=w)\n}\n")
     (tmp_path / "probe.lua").write_text(PROBE)
     env = {"PATH": f"{Path(sys.executable).parent}:/usr/bin:/bin", "HOME": str(tmp_path)}
     r = subprocess.run([NVIM, "--headless", "-u", "NONE", "-i", "NONE", "--cmd", f"set rtp^={PLUGIN}",
@@ -50,6 +52,7 @@ def test_neovim_detects_sets_options_and_attaches_the_server(tmp_path):
     assert got["cad"] == "aidl-cad"
     assert got["opts"] == "true,4,# %s,aidl-cad"
     assert got["diag"] == "2:8:E0103"                            # from `aidl lsp`, found on PATH
+    assert got["syn"] == "aidlCadUnit,aidlCadStructure,aidlCadNumber"      # mm, solid, 0
     assert got["errmsg"] == ""                                   # no error from the plugin files
 
 

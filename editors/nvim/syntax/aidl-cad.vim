@@ -30,7 +30,7 @@ syntax keyword aidlCadFunction distance floor len max min norm radians range
 syntax keyword aidlCadFunction round sin sqrt square str tan
 
 syntax match aidlCadNumber /\v<\d+\.?\d*([eE][-+]?\d+)?>|\.\d+>/ nextgroup=aidlCadUnit skipwhite
-syntax match aidlCadUnit /\v<(inches\|inch\|deg\|rad\|cm\|ft\|in\|mm\|m)>|°/ contained
+syntax match aidlCadUnit /\v<(inches|inch|deg|rad|cm|ft|in|mm|m)>|°/ contained
 syntax match aidlCadUnitDecl /\v(<units\s+)@<=\a+/
 syntax match aidlCadDefName /\v(<def\s+)@<=\h\w*/
 syntax match aidlCadStructName /\v(<(solid|hole|drawing|assembly)\s+)@<=\h\w*/
