@@ -102,6 +102,17 @@ test('vscode-languageclient starts `aidl lsp`, opens an example and receives dia
     context: { diagnostics: [client.code2ProtocolConverter.asDiagnostic(d)] },
   });
   assert.equal(actions[0].title, 'Replace `Circel` with `Circle`');
+
+  // apply it as VS Code would: an incremental change (the server syncs incrementally)
+  const edit = actions[0].edit.changes[vscode.Uri.file(bad).toString()][0];
+  assert.deepEqual(edit.range, { start: { line: 1, character: 8 }, end: { line: 1, character: 14 } });
+  const fixed = text.replace('Circel', edit.newText);
+  const doc2 = textDocument(bad, fixed, 'aidl-cad', 2);
+  events.change.fire({
+    document: doc2, reason: undefined,
+    contentChanges: [{ range: new vscode.Range(1, 8, 1, 14), rangeOffset: text.indexOf('Circel'), rangeLength: 6, text: 'Circle' }],
+  });
+  await waitFor(() => coll.get(vscode.Uri.file(bad)).length === 0, 30000, 'the diagnostic to go away');
   await client.stop();
   console.log(`# cold start to first diagnostics through vscode-languageclient: ${first} ms`);
 });
