@@ -272,3 +272,13 @@ async def test_worker_stops_an_analysis_past_its_time_limit_and_goes_on():
         assert d["code"] == "E0103"
     finally:
         az.close()
+
+
+def test_lsp_refuses_transports_it_does_not_serve():
+    import subprocess
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "lsp", "--node-ipc"],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and "--node-ipc" in r.stderr and "--stdio" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "lsp", "--socket=5007"],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and "not supported" in r.stderr
