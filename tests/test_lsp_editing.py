@@ -282,3 +282,15 @@ def test_lsp_refuses_transports_it_does_not_serve():
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "lsp", "--socket=5007"],
                        capture_output=True, text=True, timeout=60)
     assert r.returncode == 2 and "not supported" in r.stderr
+
+
+def test_quick_fix_for_a_misspelt_keyword_argument():
+    src = "solid a {\n    c = Circle(centre=(0, 0), radius=3)\n}\n"
+    (d,) = an.diagnostics(src, "k.aidl", uri="file:///k.aidl")
+    assert d.code == "E0105"
+    from aidl_lang.editor.lsp import edits
+    (act,) = edits.code_actions("file:///k.aidl", [d])
+    assert act.title == "Replace `centre` with `center`"
+    fixed = apply(src, act.edit.changes["file:///k.aidl"])
+    assert fixed == src.replace("centre", "center")
+    assert an.diagnostics(fixed, "k.aidl") == []

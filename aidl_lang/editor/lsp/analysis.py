@@ -142,10 +142,22 @@ def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None)
 def fix_edits(src: str, path: str, d) -> list[dict]:
     """The suggested fixes of a pipeline diagnostic as ``{"title", "range", "newText"}`` dicts
     (LSP ranges in ``src``), preferred first: ``d.fix`` and, when it replaces a name with the
-    first of ``d.suggestions``, the other suggestions as alternatives. Fixes located in another
-    file are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
+    first of ``d.suggestions``, the other suggestions as alternatives. A diagnostic with
+    suggestions but no ``Fix`` gets them as replacements of the name its span starts with, when
+    the message quotes that name (an unknown keyword argument). Fixes located in another file
+    are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
     from ...diagnostics import Fix
     fix = d.fix
+    if fix is None and d.suggestions and d.span is not None and d.span.file == path:
+        # no Fix, but suggestions for the name the diagnostic is about: when its span starts
+        # with that name (quoted in the message, e.g. "`Circle` has no argument `centre`" on
+        # `centre=(0, 0)`), each suggestion replaces it
+        m = re.match(r"[A-Za-z_]\w*", src[d.span.start:d.span.end])
+        if m and f"`{m.group()}`" in d.message and all(
+                re.fullmatch(r"[A-Za-z_]\w*", x) for x in d.suggestions):
+            sp = d.span
+            fix = Fix(Span(sp.file, sp.line, sp.col, sp.line, sp.col + len(m.group()),
+                           sp.start, sp.start + len(m.group())), d.suggestions[0])
     if fix is None or fix.span is None or fix.span.file != path:
         return []
     fixes = [fix]
