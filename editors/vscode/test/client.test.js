@@ -83,6 +83,23 @@ test('vscode-languageclient starts `aidl lsp`, opens an example and receives dia
   const coll = await waitFor(() => collections.find((c) => c.has(vscode.Uri.file(good))), 60000, 'diagnostics of telephone.aidl');
   assert.deepEqual(coll.get(vscode.Uri.file(good)), []);
   const first = Date.now() - t0;
+  // semantic tokens of the example, decoded with the legend the server announced
+  const legend = caps.semanticTokensProvider.legend;
+  const sem = await client.sendRequest('textDocument/semanticTokens/full',
+    { textDocument: { uri: vscode.Uri.file(good).toString() } });
+  const lines = fs.readFileSync(good, 'utf8').split('\n');
+  const seen = new Set();
+  let line = 0;
+  let col = 0;
+  for (let i = 0; i < sem.data.length; i += 5) {
+    const [dl, dc, n, type] = sem.data.slice(i, i + 4);
+    line += dl;
+    col = dl ? dc : col + dc;
+    seen.add(`${lines[line].slice(col, col + n)}:${legend.tokenTypes[type]}`);
+  }
+  for (const t of ['telephone:struct', 'Circle:class', 'OnCircle:macro', 'dial_r:variable', 'mm:keyword']) {
+    assert.ok(seen.has(t), t);
+  }
 
   // a misspelt primitive: one diagnostic, located, with the did-you-mean fix attached
   const bad = path.join(os.tmpdir(), 'aidl-client-test.aidl');
