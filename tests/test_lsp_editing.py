@@ -47,8 +47,9 @@ def apply(src: str, edits: list[T.TextEdit]) -> str:
     return src
 
 
-# the arguments vscode-languageclient adds for its stdio transport; no debounce
-@pytest_lsp.fixture(config=ClientServerConfig(
+# the arguments vscode-languageclient adds for its stdio transport; no debounce; one server for
+# the module (each test uses its own documents)
+@pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio", "--clientProcessId=1"]))
 async def client(lsp_client: LanguageClient):
     await lsp_client.initialize_session(T.InitializeParams(
@@ -78,7 +79,7 @@ async def _diagnostics(client: LanguageClient, uri: str, version: int | None = N
         assert time.monotonic() < end, "no diagnostics for this version"
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_quick_fix_applies_and_the_diagnostic_goes_away(client: LanguageClient, tmp_path):
     uri = (tmp_path / "plate.aidl").as_uri()
     _open(client, uri, BROKEN)
@@ -102,7 +103,7 @@ async def test_quick_fix_applies_and_the_diagnostic_goes_away(client: LanguageCl
     assert list(await _diagnostics(client, uri, version=2)) == []
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_semantic_tokens_of_a_known_line(client: LanguageClient, tmp_path):
     uri = (tmp_path / "telephone.aidl").as_uri()
     _open(client, uri, TELEPHONE)
@@ -137,7 +138,7 @@ def test_semantic_tokens_split_block_comments_and_count_utf16():
     assert ("deg", "keyword") in {(t, typ) for _, _, t, typ, _ in toks}
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_rename_across_imports(client: LanguageClient, tmp_path):
     (tmp_path / "parts").mkdir()
     lib = tmp_path / "parts" / "pegs.aidl"
@@ -172,7 +173,7 @@ async def test_rename_across_imports(client: LanguageClient, tmp_path):
             position=pos(src, "peg(r=2)", 1), new_name="2peg"))
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_signature_help_forms_and_active_argument(client: LanguageClient, tmp_path):
     uri = (tmp_path / "s.aidl").as_uri()
     src = "solid a {\n    r = Rectangle(center=(0, 0), width=3, \n}\n"
@@ -194,7 +195,7 @@ async def test_signature_help_forms_and_active_argument(client: LanguageClient, 
     assert signature.signature_help(src2, 0, 3) is None                  # not in a call
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_invalid_params_get_an_error_response(client: LanguageClient, tmp_path, monkeypatch):
     # send the raw dict (the client would refuse to build a HoverRequest without a position)
     monkeypatch.setattr(client.protocol, "get_message_type", lambda method: None)
@@ -221,7 +222,7 @@ solid s {
 """
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClient, tmp_path):
     uri = (tmp_path / "slow.aidl").as_uri()
     _open(client, uri, SLOW)              # 10^8 loop iterations: minutes of interpretation
@@ -256,18 +257,20 @@ def test_large_document_completion_uses_a_view():
     assert names[:3] == ["w", "peg", "v0"] and len(names) == window.MAX_OUTLINE
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_worker_stops_an_analysis_past_its_time_limit_and_goes_on():
     from aidl_lang.editor.lsp.worker import AnalysisTimeout, Analyzer
     az = Analyzer()
-    az.TIMEOUT, az.SPARE = 3.0, False
+    az.SPARE = False
     try:
         assert await az.diagnostics("x = 1\n", "a.aidl", None) == []     # warm
+        az.TIMEOUT = 1.5
         t = time.monotonic()
         with pytest.raises(AnalysisTimeout):
             await az.diagnostics(SLOW, "slow.aidl", None)
         assert time.monotonic() - t < 10
         assert az.restarts == 1
+        az.TIMEOUT = 60
         (d,) = await az.diagnostics(BROKEN, "b.aidl", None)             # a fresh worker
         assert d["code"] == "E0103"
     finally:
@@ -294,3 +297,41 @@ def test_quick_fix_for_a_misspelt_keyword_argument():
     fixed = apply(src, act.edit.changes["file:///k.aidl"])
     assert fixed == src.replace("centre", "center")
     assert an.diagnostics(fixed, "k.aidl") == []
+
+
+# ------------------------------------------------------------------ laws on mutated examples
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_SNIPPETS = ["(", ")", "{", "}", ",", "=", ".", "/*", "*/", "#", '"', "😀", "\n", "mm", "deg",
+             "Circle(", "Rectangle(center=", "def f(a=1) -> solid {", "solid s {", "x.", "°"]
+
+
+@settings(deadline=None, max_examples=25, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(cut=st.integers(0, len(TELEPHONE)), junk=st.lists(st.sampled_from(_SNIPPETS), max_size=6),
+       line=st.integers(0, 130), ch=st.integers(0, 80))
+def test_semantic_tokens_and_signature_help_laws(cut, junk, line, ch):
+    """On any mutation of an example: tokens are in order, never overlap, stay on their line and
+    have positive length; signature help and code actions answer without raising."""
+    src = TELEPHONE[:cut] + "".join(junk) + TELEPHONE[cut:]
+    data = semantic.semantic_tokens(src, "t.aidl")
+    lines = src.split("\n")
+    assert len(data) % 5 == 0
+    ln = col = 0
+    prev_end = (-1, 0)
+    for i in range(0, len(data), 5):
+        dl, dc, n, typ, mods = data[i:i + 5]
+        ln += dl
+        col = col + dc if dl == 0 else dc
+        assert n > 0 and 0 <= typ < len(semantic.TOKEN_TYPES)
+        assert (ln, col) >= prev_end
+        width = len(lines[ln].encode("utf-16-le")) // 2
+        assert col + n <= width
+        prev_end = (ln, col + n)
+    signature.signature_help(src, line, ch, "t.aidl")
+    for d in an.diagnostics(src, "t.aidl", solve=False, uri="file:///t.aidl"):
+        from aidl_lang.editor.lsp import edits
+        for a in edits.code_actions("file:///t.aidl", [d]):
+            (e,) = a.edit.changes["file:///t.aidl"]
+            assert e.range.start.line < len(lines)
