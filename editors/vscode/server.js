@@ -20,7 +20,8 @@ function isExecutable(p) {
 }
 
 // Where to look for the `aidl` command, in order, the way Python tooling does:
-//   1. the `aidl.serverPath` setting (a path, or a command looked up on PATH);
+//   1. the `aidl.serverPath` setting (a path, or a command looked up on PATH; `~` and
+//      `${workspaceFolder}` are expanded);
 //   2. each workspace folder's virtual environment (.venv, then venv);
 //   3. the environment the editor was started from ($VIRTUAL_ENV, $CONDA_PREFIX);
 //   4. PATH.
@@ -38,7 +39,8 @@ function findServer({ serverPath = '', folders = [], env = process.env } = {}) {
   };
   const bin = WIN ? 'Scripts' : 'bin';
   if (serverPath) {
-    const p = serverPath.replace(/^~(?=$|[\\/])/, env.HOME || '~');
+    const p = serverPath.replace(/^~(?=$|[\\/])/, env.HOME || '~')
+      .replace(/\$\{workspaceFolder\}/g, folders[0] || '.');
     if (p.includes('/') || p.includes('\\')) {
       const abs = path.isAbsolute(p) ? p : path.resolve(folders[0] || '.', p);
       return { command: check(abs), tried };

@@ -53,6 +53,8 @@ test('findServer: setting, then the workspace .venv, then PATH, naming what it t
   assert.equal(findServer({ serverPath: path.join(other, 'aidl'), folders: [path.join(tmp, 'ws')], env }).command,
     path.join(other, 'aidl'));
   assert.equal(findServer({ serverPath: 'aidl', env }).command, path.join(other, 'aidl'));
+  assert.equal(findServer({ serverPath: '${workspaceFolder}/.venv/bin/aidl', folders: [path.join(tmp, 'ws')], env }).command,
+    path.join(venvBin, 'aidl'));
   const none = findServer({ folders: [tmp], env: { PATH: path.join(tmp, 'empty') } });
   assert.equal(none.command, null);
   assert.ok(none.tried.includes(path.join(tmp, '.venv', 'bin', 'aidl')));
