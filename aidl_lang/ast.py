@@ -144,6 +144,15 @@ class ParamDecl(Node):
     name: str
     name_span: Span
     value: Node
+    # the optional range ``param w = 40 mm, min=10 mm, max=80 mm, step=1 mm``: name -> option
+    options: dict[str, "ParamOption"] = field(default_factory=dict)
+
+
+@dataclass(eq=False, slots=True)
+class ParamOption(Node):
+    name: str                      # min | max | step (checked by the interpreter)
+    name_span: Span
+    value: Node
 
 
 @dataclass(eq=False, slots=True)

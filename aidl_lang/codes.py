@@ -115,6 +115,16 @@ Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
         drawing label { t = Text("AIDL", position=(0, -2), size=8) }
     }
 """),
+    "E0124": ("param value outside its range", """
+A param may declare the range its value is meant to take (used by `aidl serve` for its
+sliders, and checked by `--set`):
+
+    param width = 40 mm, min=20 mm, max=80 mm, step=1 mm
+
+The value, and any `--set width=...`, must lie between `min` and `max` (both optional);
+`min`, `max` and `step` have the param's unit (a bare number means the file's unit), `min` is
+not larger than `max`, and `step` is positive.  Choose a value inside the range or widen it.
+"""),
     "E0201": ("geometry refers to another structure (validity rule 1)", """
 Geometry may only be built from geometry of its own structure. This keeps each structure
 solvable on its own. Give the geometry its own starting value and relate it to the other

@@ -148,6 +148,8 @@ class Checker:
         for st in program.stmts:
             if isinstance(st, A.ParamDecl):
                 self.expr(st.value, fscope)
+                for o in st.options.values():
+                    self.expr(o.value, fscope)
             elif isinstance(st, A.Def):
                 if st.kind not in KINDS:
                     self._kind_error(st.kind, st.kind_span)

@@ -1,4 +1,4 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp`` (and
+"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
@@ -54,6 +54,10 @@ def _parser() -> argparse.ArgumentParser:
     lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
     lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
     lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
+    v = sub.add_parser("serve", help="live preview in the browser with parameter sliders "
+                                     "(http://127.0.0.1:PORT/)")
+    v.add_argument("file")
+    v.add_argument("--port", type=int, default=8765, help="port on 127.0.0.1 (0: any free one)")
     from .llm import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
@@ -206,12 +210,17 @@ def cmd_lsp(args) -> int:
     return lsp_main(worker)
 
 
+def cmd_serve(args) -> int:
+    from ..serve import serve
+    return serve(args.file, args.port)
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         from .llm import COMMANDS
         return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
-                 "fmt": cmd_fmt, "lsp": cmd_lsp} | COMMANDS)[args.cmd](args)
+                 "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve} | COMMANDS)[args.cmd](args)
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:          # `aidl check --json | head`

@@ -69,6 +69,7 @@ class Statements:
     def _load_file_decls(self, program: A.Program, is_main: bool) -> FileCtx:
         fctx = FileCtx(program.path)
         fctx.params = {}
+        fctx.param_ranges = {}
         prev = self.file
         self.file = fctx
         self.scope = fctx.scope
@@ -94,10 +95,16 @@ class Statements:
                     fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
-                    if st.name in self.overrides and is_main:
+                    overridden = st.name in self.overrides and is_main
+                    if overridden:
                         val = self._eval_override(st.name, self.overrides[st.name], fctx)
                     else:
                         val = self.eval(st.value)
+                    if st.options:
+                        try:
+                            fctx.param_ranges[st.name] = self._param_range(st, val, overridden)
+                        except EvalError as e:
+                            self.error(e)
                     fctx.scope.vars[st.name] = val
                     fctx.params[st.name] = val
             except EvalError as e:
@@ -111,6 +118,53 @@ class Statements:
                         self.error(e)
         self.file = prev if not is_main else fctx
         return fctx
+
+    def _param_range(self, st: A.ParamDecl, val, overridden: bool) -> dict:
+        """Check ``param NAME = V, min=A, max=B, step=S`` (docs/language.md, *Params*): the
+        options have the param's dimension, ``min <= max``, ``step > 0``, and the value (the
+        default, or the ``--set`` override) lies in ``[min, max]`` (E0124).  Returns
+        ``{"min": float|None, "max": ..., "step": ...}`` in internal units (mm, rad)."""
+        from ..geometry.values import dim_name
+        if not isinstance(val, Q) or val.const() is None:
+            raise EvalError("E0124", f"param `{st.name}` has a range but is not a number, length "
+                            "or angle", next(iter(st.options.values())).span,
+                            hint="drop min/max/step, or give the param a numeric value")
+        out: dict = {"min": None, "max": None, "step": None}
+        for o in st.options.values():
+            if o.name not in out:
+                raise EvalError("E0105", f"param option `{o.name}` is not one of min, max, step",
+                                o.name_span, hint="write e.g. `param w = 40 mm, min=10 mm, "
+                                "max=80 mm, step=1 mm`", suggestions=did_you_mean(o.name, list(out)))
+            q = self.eval(o.value)
+            if isinstance(q, Q) and q.dim != val.dim and q.const() is not None \
+                    and q.dim == (0, 0) and val.dim == (1, 0):
+                q = Q.num(q.const() * self.file.unit_scale, val.dim)     # a bare number: file units
+            if not isinstance(q, Q) or q.const() is None or q.dim != val.dim:
+                want = dim_name(val.dim)
+                raise EvalError("E0124", f"`{o.name}` of param `{st.name}` must be a {want} like "
+                                "its value", o.value.span, hint=f"give `{o.name}` the param's unit")
+            out[o.name] = q.const()
+        lo, hi, step = out["min"], out["max"], out["step"]
+        opt = st.options
+        if lo is not None and hi is not None and lo > hi:
+            raise EvalError("E0124", f"param `{st.name}`: min is larger than max", opt["min"].span,
+                            hint="swap them")
+        if step is not None and step <= 0:
+            raise EvalError("E0124", f"param `{st.name}`: step must be positive", opt["step"].span)
+        v = val.const()
+        bad = "min" if lo is not None and v < lo - 1e-9 else \
+              "max" if hi is not None and v > hi + 1e-9 else None
+        if bad:
+            shown = _fmt_q(v, val.dim)
+            rng = f"{_fmt_q(lo, val.dim) if lo is not None else '...'} .. " \
+                  f"{_fmt_q(hi, val.dim) if hi is not None else '...'}"
+            if overridden:
+                raise EvalError("E0124", f"`--set {st.name}={self.overrides[st.name]}`: {shown} is "
+                                f"outside the range {rng} declared for `{st.name}`", opt[bad].span,
+                                hint=f"choose a value from {rng}, or widen the range here")
+            raise EvalError("E0124", f"param `{st.name}` = {shown} is outside its own range {rng}",
+                            st.value.span, hint=f"change the value or `{bad}`")
+        return out
 
     def _eval_override(self, name: str, text: str, fctx: FileCtx):
         from ..parser import lark_parser, _Builder
@@ -484,3 +538,13 @@ def _definition_lines(stmts, out=None) -> dict[str, int]:
             if st.orelse is not None:
                 _definition_lines(st.orelse.stmts, out)
     return out
+
+
+def _fmt_q(v: float, dim) -> str:
+    """A value in internal units (mm, rad) as the user writes it: ``172.5 mm``, ``30 deg``."""
+    import math
+    if dim == (1, 0):
+        return f"{v:.6g} mm"
+    if dim == (0, 1):
+        return f"{math.degrees(v):.6g} deg"
+    return f"{v:.6g}"

@@ -1,0 +1,100 @@
+"""`aidl serve` in a real browser: Debian's Chromium driven by Playwright for Python.
+
+The server runs as a real subprocess (`aidl serve FILE --port 0`) on a copy of
+examples/telephone.aidl; the page is read back through its SVG coordinates.  The screenshot is
+saved as out/serve-telephone.png (AIDL_SCREENSHOT overrides the path).
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import statistics
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+pytest.importorskip("playwright")
+pytest.importorskip("starlette")
+if not Path("/usr/bin/chromium").exists():
+    pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
+                allow_module_level=True)
+
+from benchmarks.serve_latency import chromium, move_slider, open_page, p95, save_latency, served  # noqa: E402
+
+
+def outline(page):
+    """The telephone's solid as subpaths of model coordinates (y up), read from the page."""
+    d = page.locator("#viewer svg #part-telephone").get_attribute("d")
+    subs = []
+    for s in d.split("M"):
+        s = s.strip().rstrip("Z").strip()
+        if s:
+            subs.append([(float(x), -float(y)) for x, y in (p.split(",") for p in s.split())])
+    return subs
+
+
+def base_and_handset(page):
+    """(base width at y = 0, top of the drawing, x centre of the top edge, same outline?)."""
+    subs = outline(page)
+    outer = max(subs, key=lambda s: max(y for _, y in s))        # holds the highest point
+    top = max(y for _, y in outer)
+    top_xs = [x for x, y in outer if abs(y - top) < 1e-6]
+    bottom_xs = [x for x, y in outer if abs(y) < 1e-6]
+    return (max(bottom_xs) - min(bottom_xs), top, (max(top_xs) + min(top_xs)) / 2,
+            bool(bottom_xs))
+
+
+def test_live_preview_of_the_telephone(tmp_path):
+    src = (ROOT / "examples" / "telephone.aidl").read_text()
+    f = tmp_path / "telephone.aidl"
+    f.write_text(src)
+    shot = Path(os.environ.get("AIDL_SCREENSHOT", ROOT / "out" / "serve-telephone.png"))
+    shot.parent.mkdir(parents=True, exist_ok=True)
+    with served(f) as url, chromium() as ctx:
+        page = open_page(ctx, url)
+        # the picture is there, with the file's values
+        assert page.locator("#viewer svg #part-telephone").count() == 1
+        w0, top0, cx0, attached0 = base_and_handset(page)
+        assert w0 == pytest.approx(160, abs=1e-3) and attached0
+        assert top0 == pytest.approx(90 + 16 + 12, abs=1e-3)        # base_h + prong_h + grip_h
+        slider = page.locator('input[type=range][name="base_w"]')
+        assert slider.get_attribute("min") == "40" and slider.get_attribute("max") == "320"
+
+        # move base_w: the base widens by exactly the difference, the handset stays on the
+        # cradle (same outline, same height) and centred over the base
+        lat = [move_slider(page, "base_w", v) for v in (170, 180, 190, 200, 210, 220, 200)]
+        w1, top1, cx1, attached1 = base_and_handset(page)
+        assert w1 == pytest.approx(200, abs=1e-3)
+        assert attached1 and top1 == pytest.approx(top0, abs=1e-3)
+        assert cx1 == pytest.approx(0, abs=1e-3)
+        assert "--set base_w=200mm" in page.locator("#setline").input_value()
+        assert slider.get_attribute("max") == "320"           # the span stays the file's
+        assert page.locator('input[name="base_w-value"]').input_value() == "200"
+        # the download link carries the chosen value and gives the same picture's SVG
+        href = page.locator('#downloads a[data-fmt="svg"]').get_attribute("href")
+        assert href == "/download/svg?set=base_w%3D200mm"
+        page.screenshot(path=str(shot))
+
+        # a broken edit: the error is shown, the last good picture stays
+        save_ms = [save_latency(page, f, src.replace("param base_h = 90 mm",
+                                                     "param base_h = 90 mm + lid_h"))]
+        assert page.locator("#diagnostics li.error").count() >= 1
+        assert "line 8:24" in page.locator("#diagnostics li.error").first.inner_text()
+        assert page.locator("#stale").is_visible()
+        assert base_and_handset(page)[0] == pytest.approx(200, abs=1e-3)   # old picture kept
+        page.locator("#diagnostics li.error").first.click()
+        assert page.locator("#source li.hl").inner_text().startswith("param base_h")
+        page.screenshot(path=str(shot.with_name(shot.stem + "-error.png")))
+
+        # fixed: the error goes, the picture is redrawn with the kept slider value
+        save_ms.append(save_latency(page, f, src.replace("param base_h = 90 mm",
+                                                         "param base_h = 100 mm")))
+        assert page.locator("#diagnostics li.error").count() == 0
+        assert not page.locator("#stale").is_visible()
+        w2, top2, _, attached2 = base_and_handset(page)
+        assert w2 == pytest.approx(200, abs=1e-3) and attached2
+        assert top2 == pytest.approx(100 + 16 + 12, abs=1e-3)
+    print(f"\nslider->picture ms: median {statistics.median(lat):.1f}, p95 {p95(lat):.1f}; "
+          f"save->picture ms: {', '.join(f'{s:.0f}' for s in save_ms)}")
