@@ -144,8 +144,8 @@ class ParamDecl(Node):
     name: str
     name_span: Span
     value: Node
-    # the optional range ``param w = 40 mm, min=10 mm, max=80 mm, step=1 mm``: name -> option
-    options: dict[str, "ParamOption"] = field(default_factory=dict)
+    # the optional range ``param w = 40 mm, min=10 mm, max=80 mm, step=1 mm``, in order
+    options: list["ParamOption"] = field(default_factory=list)
 
 
 @dataclass(eq=False, slots=True)

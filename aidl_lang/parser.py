@@ -380,12 +380,13 @@ class _Builder(Transformer):
         return A.Import(self.s(meta), _unquote(str(tok)), self.s(tok), str(alias) if alias else None)
 
     def param_decl(self, meta, items):
-        opts: dict[str, A.ParamOption] = {}
-        for o in items[2:]:
-            if o.name in opts:
+        opts = list(items[2:])
+        seen = set()
+        for o in opts:
+            if o.name in seen:
                 self.sink.error("E0107", f"`{o.name}` given twice for param `{items[0]}`",
                                 o.name_span, hint="give each of min, max and step once")
-            opts[o.name] = o
+            seen.add(o.name)
         return A.ParamDecl(self.s(meta), str(items[0]), self.s(items[0]), items[1], opts)
 
     def param_opt(self, meta, items):

@@ -148,7 +148,7 @@ class Checker:
         for st in program.stmts:
             if isinstance(st, A.ParamDecl):
                 self.expr(st.value, fscope)
-                for o in st.options.values():
+                for o in st.options:
                     self.expr(o.value, fscope)
             elif isinstance(st, A.Def):
                 if st.kind not in KINDS:

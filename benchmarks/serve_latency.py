@@ -2,8 +2,8 @@
 
 For every bundled example with params: start ``aidl serve`` on a copy, open the page, move each
 numeric param's slider through ``--moves`` positions (one at a time, waiting for the picture)
-and report the time from the slider's ``input`` event to the new picture painted (two
-animation frames after the SVG was put in the page), median and p95; then save the file (a
+and report the time from the slider's ``input`` event to the new picture painted (a task
+queued from the animation frame after the SVG was put in the page), median and p95; then save the file (a
 comment appended) and report the time from the write to the new picture.
 
     .venv/bin/python -m benchmarks.serve_latency [--moves 20] [EXAMPLE.aidl ...]
@@ -125,10 +125,15 @@ def measure(example: Path, ctx, moves: int) -> dict:
                 move_slider(page, p["name"], p["value"])
             saves = [save_latency(page, tmp, tmp.read_text() + f"\n# saved {i}\n") for i in range(5)]
             warm = page.evaluate("window.aidl.state.view.timing.warm")
+            parts = page.evaluate("window.aidl.sliderParts")
             page.close()
     return {"example": example.name, "params": len(params), "moves": len(lat),
             "median": statistics.median(lat) if lat else None, "p95": p95(lat) if lat else None,
-            "save_median": statistics.median(saves), "last_warm": warm}
+            "save_median": statistics.median(saves), "last_warm": warm,
+            "server": statistics.median([q["server"] for q in parts]) if parts else None,
+            "transport": statistics.median([q["roundTrip"] - q["server"] for q in parts])
+            if parts else None,
+            "draw": statistics.median([q["drawAndPaint"] for q in parts]) if parts else None}
 
 
 def main(argv=None) -> int:
@@ -137,8 +142,8 @@ def main(argv=None) -> int:
     ap.add_argument("--moves", type=int, default=10, help="slider positions per param")
     a = ap.parse_args(argv)
     files = [Path(e) for e in a.examples] or sorted((ROOT / "examples").glob("*.aidl"))
-    print(f"{'example':24} {'params':>6} {'moves':>5} {'slider median ms':>16} {'p95 ms':>7} "
-          f"{'save median ms':>14}")
+    print(f"{'example':22} {'params':>6} {'moves':>5} {'slider median ms':>16} {'p95 ms':>7} "
+          f"{'server':>6} {'transport':>9} {'draw':>5} {'save median ms':>14}")
     rows = []
     with chromium() as ctx:
         for f in files:
@@ -146,7 +151,9 @@ def main(argv=None) -> int:
             rows.append(r)
             med = f"{r['median']:.1f}" if r["median"] is not None else "-"
             p = f"{r['p95']:.1f}" if r["p95"] is not None else "-"
-            print(f"{r['example']:24} {r['params']:6d} {r['moves']:5d} {med:>16} {p:>7} "
+            part = " ".join(f"{r[k]:{w}.1f}" if r[k] is not None else f"{'-':>{w}}"
+                            for k, w in (("server", 6), ("transport", 9), ("draw", 5)))
+            print(f"{r['example']:22} {r['params']:6d} {r['moves']:5d} {med:>16} {p:>7} {part} "
                   f"{r['save_median']:14.1f}", flush=True)
     allv = [r["p95"] for r in rows if r["p95"] is not None]
     if allv:

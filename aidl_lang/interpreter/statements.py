@@ -127,10 +127,10 @@ class Statements:
         from ..geometry.values import dim_name
         if not isinstance(val, Q) or val.const() is None:
             raise EvalError("E0124", f"param `{st.name}` has a range but is not a number, length "
-                            "or angle", next(iter(st.options.values())).span,
+                            "or angle", st.options[0].span,
                             hint="drop min/max/step, or give the param a numeric value")
         out: dict = {"min": None, "max": None, "step": None}
-        for o in st.options.values():
+        for o in st.options:
             if o.name not in out:
                 raise EvalError("E0105", f"param option `{o.name}` is not one of min, max, step",
                                 o.name_span, hint="write e.g. `param w = 40 mm, min=10 mm, "
@@ -145,7 +145,7 @@ class Statements:
                                 "its value", o.value.span, hint=f"give `{o.name}` the param's unit")
             out[o.name] = q.const()
         lo, hi, step = out["min"], out["max"], out["step"]
-        opt = st.options
+        opt = {o.name: o for o in st.options}
         if lo is not None and hi is not None and lo > hi:
             raise EvalError("E0124", f"param `{st.name}`: min is larger than max", opt["min"].span,
                             hint="swap them")

@@ -40,6 +40,7 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
         print(f"aidl: error: cannot listen on {HOST}:{port}: {e.strerror or e}; "
               "choose another with --port", file=sys.stderr)
         return 2
+    sock.listen(128)            # connections wait in the backlog until the first compile is done
     port = sock.getsockname()[1]
     app = create_app(path, port)
     config = uvicorn.Config(app, log_level="warning", ws="websockets-sansio",

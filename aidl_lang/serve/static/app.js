@@ -10,7 +10,7 @@ const state = {
   ws: null, nextId: 1, inFlight: null, pending: false, formats: ["svg"],
 };
 // measurements read by the browser test: slider input -> picture drawn, per request
-window.aidl = { sliderMs: [], drawn: {}, version: 0, svgVersion: 0, ready: false, state };
+window.aidl = { sliderMs: [], sliderParts: [], drawn: {}, version: 0, svgVersion: 0, ready: false, state };
 window.aidlBusy = () => !!state.inFlight || state.pending;
 
 function connect() {
@@ -29,6 +29,7 @@ function setStatus(text, cls) { const s = $("status"); s.textContent = text; s.c
 function onView(v) {
   const own = v.id != null && state.inFlight && v.id === state.inFlight.id;
   const t0 = own ? state.inFlight.t0 : null;
+  const sent = own ? state.inFlight.sent : null, received = performance.now();
   if (own) state.inFlight = null;
   state.view = v;
   $("file").textContent = v.file;
@@ -48,11 +49,25 @@ function onView(v) {
     window.aidl.version = v.version;
     if (v.ok) window.aidl.svgVersion = v.version;
     window.aidl.drawn[v.version] = performance.timeOrigin + performance.now();
-    if (t0 != null) window.aidl.sliderMs.push(performance.now() - t0);
+    if (t0 != null) {
+      const now = performance.now();
+      window.aidl.sliderMs.push(now - t0);
+      window.aidl.sliderParts.push({ wait: sent - t0, roundTrip: received - sent,
+        server: v.timing ? v.timing.total_ms : null, drawAndPaint: now - received });
+    }
     window.aidl.ready = true;
   };
-  requestAnimationFrame(() => requestAnimationFrame(draw));   // after the frame is painted
+  afterPaint(draw);
   if (state.pending) send();
+}
+
+// run f just after the next frame is painted: a task queued from requestAnimationFrame runs
+// once that frame's rendering (style, layout, paint) is done
+const afterPaintQueue = [];
+const afterPaintChannel = new MessageChannel();
+afterPaintChannel.port1.onmessage = () => { const f = afterPaintQueue.shift(); if (f) f(); };
+function afterPaint(f) {
+  requestAnimationFrame(() => { afterPaintQueue.push(f); afterPaintChannel.port2.postMessage(0); });
 }
 
 // ------------------------------------------------------------------ picture, pan and zoom
@@ -213,7 +228,7 @@ function send() {   // one request in flight; the newest values win
   if (!state.ws || state.ws.readyState !== 1) return;
   state.pending = false;
   const id = state.nextId++;
-  state.inFlight = { id, t0: state.t0 };
+  state.inFlight = { id, t0: state.t0, sent: performance.now() };
   state.ws.send(JSON.stringify({ type: "set", id, values: chosen() }));
 }
 

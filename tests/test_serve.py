@@ -1,0 +1,221 @@
+"""`aidl serve` without a browser: the param range syntax and `--set` range errors, the
+session's warm re-solve, and the server's routes and guards (Starlette's TestClient)."""
+from __future__ import annotations
+
+import json
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from aidl_lang import cli
+from aidl_lang.pipeline import compile_source
+
+ROOT = Path(__file__).resolve().parent.parent
+TEL = ROOT / "examples" / "telephone.aidl"
+
+RANGED = """units mm
+param w = 40 mm, min=20 mm, max=80, step=1 mm
+param turns = 3, min=1, max=10
+solid plate { body = Rectangle(center=(0, 0), width=w, height=20) }
+"""
+
+
+# ------------------------------------------------------------------ the range syntax
+def test_range_syntax_checks_and_keeps_the_value(compile_text):
+    c = compile_text(RANGED)
+    assert c.ok
+    body = c.model.root.geometry[0]
+    assert c.model.x[body.scalars["width"].index] == pytest.approx(40)
+
+
+@pytest.mark.parametrize("src, code, col", [
+    ("param w = 90 mm, min=20 mm, max=80 mm\n", "E0124", 11),      # default outside: at the value
+    ("param w = 40 mm, min=50 mm, max=20 mm\n", "E0124", 18),      # min > max
+    ("param w = 40 mm, step=0 mm\n", "E0124", 18),                 # step must be positive
+    ("param w = 40 mm, min=10 deg\n", "E0124", 22),                # wrong dimension
+    ("param w = 40 mm, mn=10 mm\n", "E0105", 18),                  # unknown option, suggestion
+    ("param w = 40 mm, min=10 mm, min=20 mm\n", "E0107", 29),      # given twice
+    ('param s = "a", min=1\n', "E0124", 16),                       # a string has no range
+])
+def test_range_errors_are_located(compile_text, src, code, col):
+    c = compile_text(src + "solid p { b = Circle(center=(0, 0), radius=5) }\n")
+    errs = [d for d in c.sink.items if d.is_error]
+    assert errs and errs[0].code == code, [(d.code, d.message) for d in errs]
+    assert (errs[0].span.line, errs[0].span.col) == (1, col)
+
+
+@pytest.mark.parametrize("value, ok", [("80mm", True), ("20mm", True), ("3in", True),
+                                       ("81mm", False), ("19.9mm", False), ("4in", False)])
+def test_set_is_checked_against_the_range(compile_text, value, ok):
+    c = compile_text(RANGED, overrides={"w": value})
+    assert c.ok == ok
+    if not ok:
+        d = c.sink.items[0]
+        assert d.code == "E0124" and f"`--set w={value}`" in d.message
+        assert "20 mm .. 80 mm" in d.message
+        assert d.span.line == 2                      # points at the declared bound
+
+
+def test_cli_set_outside_the_range_is_a_located_error(tmp_path, capsys):
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    out = tmp_path / "r.svg"
+    assert cli.main(["render", str(f), "--set", "w=100mm", "-o", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert "error[E0124]" in err and "r.aidl:2:29" in err and "^^" in err
+    assert not out.exists()                          # nothing written
+    assert cli.main(["explain", "E0124"]) == 0
+
+
+def test_fmt_keeps_the_range(tmp_path):
+    from aidl_lang.editor.fmt import format_source
+    out = format_source(RANGED)
+    assert "param w = 40 mm, min = 20 mm, max = 80, step = 1 mm" in out   # spaced like `w = 40`
+
+
+# ------------------------------------------------------------------ the session
+def test_session_params_and_default_spans():
+    from aidl_lang.serve.session import Session
+    s = Session(TEL)
+    v = s.load()
+    assert v["ok"] and v["svg"].startswith("<svg")
+    p = {q["name"]: q for q in v["params"]}
+    assert p["base_w"] == dict(p["base_w"], kind="length", unit="mm", value=160.0, default=160.0,
+                               min=40, max=320, step=1, declared=False, line=7)
+    assert sum(d["dof"] for d in v["dof"]) > 0
+
+
+def test_slider_moves_reuse_the_warm_solver_and_match_the_cli():
+    from aidl_lang.output import render_model, to_svg
+    from aidl_lang.serve.session import Session
+    s = Session(TEL)
+    s.load()
+    s.set_params({"base_w": "170mm"})
+    compiles = s.solver.compiles
+    v = s.set_params({"base_w": "183mm"})
+    assert v["ok"] and v["timing"]["warm"]              # set_value + run on the same tapes
+    assert s.solver.compiles == compiles
+    c = compile_source(TEL.read_text(), str(TEL), {"base_w": "183mm"})
+    assert to_svg(render_model(c.model), title=c.model.root.name) == v["svg"]
+    # handset_len is baked into a constraint's constant: solved cold, still the CLI's picture
+    v = s.set_params({"handset_len": "150mm"})
+    c = compile_source(TEL.read_text(), str(TEL), {"handset_len": "150mm"})
+    assert not v["timing"]["warm"]
+    assert to_svg(render_model(c.model), title=c.model.root.name) == v["svg"]
+    assert v["params"][0]["max"] == 320                 # spans stay the file's
+
+
+def test_bad_values_keep_the_last_picture(tmp_path):
+    from aidl_lang.serve.session import Session
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    s = Session(f)
+    good = s.load()["svg"]
+    v = s.set_params({"w": "95mm"})
+    assert not v["ok"] and v["svg"] == good
+    assert v["diagnostics"][0]["code"] == "E0124"
+    v = s.set_params({"nosuch": "1"})
+    assert v["diagnostics"][0]["code"] == "E0113"
+    # a save that changes w's default drops the slider value; others are kept
+    s.set_params({"w": "60mm", "turns": "5"})
+    f.write_text(RANGED.replace("param w = 40 mm", "param w = 50 mm"))
+    v = s.load()
+    assert v["values"] == {"turns": "5"}
+    f.write_text("solid p {")
+    v = s.load()
+    assert not v["ok"] and v["svg"] is not None and v["diagnostics"][0]["code"] == "E0001"
+
+
+# ------------------------------------------------------------------ routes and guards
+pytest.importorskip("starlette")
+pytest.importorskip("httpx")
+PORT = 8765
+BASE = f"http://127.0.0.1:{PORT}"
+
+
+@pytest.fixture
+def client(tmp_path):
+    from starlette.testclient import TestClient
+    from aidl_lang.serve.app import create_app
+    f = tmp_path / "telephone.aidl"
+    f.write_text(TEL.read_text())
+    (tmp_path / "secret.txt").write_text("top secret")
+    with TestClient(create_app(f, PORT, watch=False), base_url=BASE) as c:
+        yield c
+
+
+def test_page_and_static_files(client):
+    r = client.get("/")
+    assert r.status_code == 200 and "text/html" in r.headers["content-type"]
+    for src in re.findall(r'(?:src|href)="(/static/[^"]+)"', r.text):
+        assert client.get(src).status_code == 200
+    assert "http" not in re.sub(r"http://www\.w3\.org/2000/svg", "", client.get("/static/app.js").text) \
+        .replace("http://${", "")                       # no CDN: nothing fetched from elsewhere
+    assert client.get("/static/nosuch.js").status_code == 404
+
+
+def test_state_and_formats(client):
+    v = client.get("/api/state").json()
+    assert v["ok"] and v["file"].endswith("telephone.aidl")
+    ET.fromstring(v["svg"])                             # well-formed SVG
+    assert "svg" in client.get("/api/formats").json()
+
+
+def test_download_with_values(client):
+    r = client.get("/download/svg", params={"set": "base_w=200mm"})
+    assert r.status_code == 200 and r.headers["content-type"].startswith("image/svg+xml")
+    assert 'filename="telephone.svg"' in r.headers["content-disposition"]
+    root = ET.fromstring(r.content)
+    vb = [float(t) for t in re.split(r"[\s,]+", root.get("viewBox"))]
+    c = compile_source(TEL.read_text(), str(TEL), {"base_w": "200mm"})
+    from aidl_lang.output import render_model
+    x0, y0, x1, y1 = render_model(c.model).bounds()
+    # the cord's coils hang 20 + 5 mm left of the 200 mm base
+    assert vb[2] > x1 - x0 == pytest.approx(200 / 2 + 25 + 200 / 2, abs=0.05)  # chords
+    bad = client.get("/download/svg", params={"set": "base_w=900mm"})
+    assert bad.status_code == 422 and bad.json()["diagnostics"][0]["code"] == "E0124"
+    assert client.get("/download/exe").status_code == 404
+    assert client.get("/download/svg", params={"set": "nonsense"}).status_code == 400
+
+
+@pytest.mark.parametrize("path", [
+    "/static/../secret.txt", "/static/..%2Fsecret.txt", "/static/%2e%2e/%2e%2e/pyproject.toml",
+    "/static//etc/passwd", "/static/..%5c..%5cpyproject.toml", "/../secret.txt",
+    "/secret.txt", "/telephone.aidl", "/download/..%2Fsecret.txt", "/static/__init__.py",
+])
+def test_no_path_traversal(client, path):
+    r = client.get(path)
+    assert r.status_code in (400, 404) and b"top secret" not in r.content
+    assert b"[project]" not in r.content
+
+
+@pytest.mark.parametrize("headers", [
+    {"host": "evil.example:8765"}, {"host": "127.0.0.1:9999"}, {"origin": "http://evil.example"},
+    {"origin": "http://127.0.0.1:9999"}, {"origin": "null"},
+])
+def test_other_hosts_and_origins_are_refused(client, headers):
+    assert client.get("/api/state", headers=headers).status_code == 403
+    assert client.get("/", headers=headers).status_code == 403
+
+
+def test_websocket_sets_params_and_refuses_other_origins(client):
+    host = {"host": f"127.0.0.1:{PORT}"}       # the test client's websocket says "testserver"
+    with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
+        first = json.loads(ws.receive_text())
+        assert first["type"] == "view" and first["ok"]
+        ws.send_text(json.dumps({"type": "set", "id": 7, "values": {"base_w": "180mm"}}))
+        v = json.loads(ws.receive_text())
+        assert v["id"] == 7 and v["ok"] and v["values"] == {"base_w": "180mm"}
+    from starlette.websockets import WebSocketDisconnect
+    with pytest.raises(WebSocketDisconnect):
+        with client.websocket_connect("/ws", headers={**host, "origin": "http://evil.example"}) as ws:
+            ws.receive_text()
+
+
+def test_serve_binds_loopback_only():
+    import aidl_lang.serve as S
+    assert S.HOST == "127.0.0.1"
+    from aidl_lang.cli.main import _parser
+    assert "--host" not in _parser().format_help()
