@@ -174,8 +174,8 @@ def test_download_with_values(client):
     x0, y0, x1, y1 = render_model(c.model).bounds()
     # the cord's coils hang 20 + 5 mm left of the 200 mm base
     assert vb[2] > x1 - x0 == pytest.approx(200 / 2 + 25 + 200 / 2, abs=0.05)  # chords
-    bad = client.get("/download/svg", params={"set": "base_w=900mm"})
-    assert bad.status_code == 422 and bad.json()["diagnostics"][0]["code"] == "E0124"
+    bad = client.get("/download/svg", params={"set": "base_width=200mm"})
+    assert bad.status_code == 422 and bad.json()["diagnostics"][0]["code"] == "E0113"
     assert client.get("/download/exe").status_code == 404
     assert client.get("/download/svg", params={"set": "nonsense"}).status_code == 400
 
