@@ -242,6 +242,18 @@ def test_E0113_bad_override_value_is_one_error(compile_text, value):
     assert value in d.message
 
 
+@pytest.mark.parametrize("src, overrides, span", [
+    ("param width = 3, min=1, max=5\n", {"width": "6"}, (1, 25, 1, 30)),     # --set: at `max=5`
+    ("param width = 3, min=1, max=5\n", {"width": "0.5"}, (1, 18, 1, 23)),   # at `min=1`
+    ("param width = 9, min=1, max=5\n", {}, (1, 15, 1, 16)),                 # the value itself
+])
+def test_E0124_param_outside_its_range(compile_text, src, overrides, span):
+    c = compile_text(src + "solid s { c = Circle((0, 0), width) }\n", overrides=overrides)
+    d = the_error(c, "E0124")
+    assert (d.span.line, d.span.col, d.span.end_line, d.span.end_col) == span
+    assert "outside" in d.message and "1 .. 5" in d.message
+
+
 def test_E0113_bare_word_override_is_a_string(compile_text):
     c = compile_text('param label = "A"\nsolid s { drawing d { t = Text(label, (0, 0)) } }\n',
                      overrides={"label": "B2"})

@@ -98,3 +98,54 @@ def test_live_preview_of_the_telephone(tmp_path):
         assert top2 == pytest.approx(100 + 16 + 12, abs=1e-3)
     print(f"\nslider->picture ms: median {statistics.median(lat):.1f}, p95 {p95(lat):.1f}; "
           f"save->picture ms: {', '.join(f'{s:.0f}' for s in save_ms)}")
+
+
+KINDS = """units mm
+param width = 40 mm, min=20 mm, max=80 mm, step=2 mm
+param tilt = 10 deg
+param holes = true
+param label = "AIDL tag"
+
+solid tag {
+    body = Rectangle(center=(0, 0), width=width, height=20, rotation=tilt)
+    if holes {
+        hole h { c = Circle(center=(0, 0), radius=3) }
+    }
+}
+"""
+
+
+def test_customizer_controls_zoom_and_set_line(tmp_path):
+    (ROOT / "out").mkdir(exist_ok=True)
+    f = tmp_path / "tag.aidl"
+    f.write_text(KINDS)
+    with served(f) as url, chromium() as ctx:
+        page = open_page(ctx, url)
+        r = page.locator('input[type=range][name="width"]')
+        assert (r.get_attribute("min"), r.get_attribute("max"), r.get_attribute("step")) == ("20", "80", "2")
+        assert "mm · 20…80" in page.locator('.param[data-name="width"] .unit').inner_text()
+        assert "deg" in page.locator('.param[data-name="tilt"] .unit').inner_text()
+        assert page.locator('input[type=checkbox][name="holes"]').is_checked()
+        assert page.locator('input[type=text][name="label"]').input_value() == "AIDL tag"
+        assert page.locator("#viewer svg #holes").count() == 1
+        # the checkbox removes the hole; the text box changes a string param
+        n = page.evaluate("window.aidl.sliderMs.length")
+        page.locator('input[type=checkbox][name="holes"]').uncheck()
+        page.wait_for_function(f"window.aidl.sliderMs.length > {n} && !window.aidlBusy()")
+        assert page.locator("#viewer svg #holes").count() == 0
+        page.locator('input[type=text][name="label"]').fill("it's")
+        move_slider(page, "width", 60)
+        line = page.locator("#setline").input_value()
+        assert "--set width=60mm" in line and "--set holes=false" in line
+        assert """--set 'label="it'\\''s"'""" in line          # shell-quoted, AIDL string
+        # zoom with the wheel, then Fit restores the writer's viewBox
+        svg = page.locator("#viewer svg")
+        fit = svg.get_attribute("viewBox")
+        page.mouse.move(400, 400)
+        page.mouse.wheel(0, -400)
+        page.wait_for_function(f"document.querySelector('#viewer svg').getAttribute('viewBox') != '{fit}'")
+        zoomed = [float(t) for t in svg.get_attribute("viewBox").split()]
+        assert zoomed[2] < float(fit.replace(",", " ").split()[2])
+        page.screenshot(path=str(ROOT / "out" / "serve-tag-zoomed.png"))
+        page.locator("#fit").click()
+        assert svg.get_attribute("viewBox") == fit
