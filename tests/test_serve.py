@@ -90,20 +90,26 @@ def test_session_params_and_default_spans():
 def test_slider_moves_reuse_the_warm_solver_and_match_the_cli():
     from aidl_lang.output import render_model, to_svg
     from aidl_lang.serve.session import Session
+
+    def cli_svg(values):
+        c = compile_source(TEL.read_text(), str(TEL), values)
+        return to_svg(render_model(c.model), title=c.model.root.name)
+
     s = Session(TEL)
     s.load()
-    s.set_params({"base_w": "170mm"})
+    s.set_params({"dial_r": "36mm"})
     compiles = s.solver.compiles
-    v = s.set_params({"base_w": "183mm"})
-    assert v["ok"] and v["timing"]["warm"]              # set_value + run on the same tapes
+    # dial_r only moves held radii and starting points: set_value + run on the same tapes
+    v = s.set_params({"dial_r": "38mm"})
+    assert v["ok"] and v["timing"]["warm"]
     assert s.solver.compiles == compiles
-    c = compile_source(TEL.read_text(), str(TEL), {"base_w": "183mm"})
-    assert to_svg(render_model(c.model), title=c.model.root.name) == v["svg"]
-    # handset_len is baked into a constraint's constant: solved cold, still the CLI's picture
-    v = s.set_params({"handset_len": "150mm"})
-    c = compile_source(TEL.read_text(), str(TEL), {"handset_len": "150mm"})
-    assert not v["timing"]["warm"]
-    assert to_svg(render_model(c.model), title=c.model.root.name) == v["svg"]
+    assert cli_svg({"dial_r": "38mm"}) == v["svg"]
+    # base_w is baked into the rigid base polygon's rows and handset_len into a
+    # HorizontalDistance: solved cold, still exactly the CLI's picture
+    for name, value in (("base_w", "183mm"), ("handset_len", "150mm")):
+        v = s.set_params({name: value})
+        assert v["ok"] and not v["timing"]["warm"]
+        assert cli_svg({name: value}) == v["svg"]
     assert v["params"][0]["max"] == 320                 # spans stay the file's
 
 
