@@ -84,7 +84,10 @@ def test_session_params_and_default_spans():
     p = {q["name"]: q for q in v["params"]}
     assert p["base_w"] == dict(p["base_w"], kind="length", unit="mm", value=160.0, default=160.0,
                                min=40, max=320, step=1, declared=False, line=7)
-    assert sum(d["dof"] for d in v["dof"]) > 0
+    assert v["dof"] == []                               # computed after the picture is out
+    v = s.update_dof()
+    assert sum(d["dof"] for d in v["dof"]) > 0 and v["version"] == 1
+    assert s.update_dof() is None
 
 
 def test_slider_moves_reuse_the_warm_solver_and_match_the_cli():

@@ -56,6 +56,9 @@ def test_live_preview_of_the_telephone(tmp_path):
         page = open_page(ctx, url)
         # the picture is there, with the file's values
         assert page.locator("#viewer svg #part-telephone").count() == 1
+        page.wait_for_function("/degrees of freedom left in 7 structures/"
+                               ".test(document.querySelector('#dof-summary').textContent)")
+        assert page.locator("#dof tbody tr").count() == 7
         w0, top0, cx0, attached0 = base_and_handset(page)
         assert w0 == pytest.approx(160, abs=1e-3) and attached0
         assert top0 == pytest.approx(90 + 16 + 12, abs=1e-3)        # base_h + prong_h + grip_h

@@ -99,6 +99,11 @@ class Hub:
         async with self.lock:
             view = await run_in_threadpool(self.session.load)
         await self.broadcast(view)
+        async with self.lock:                       # then the DOF summary (SVDs), same version
+            dof_view = await run_in_threadpool(self.session.update_dof)
+        if dof_view is not None:
+            await self.broadcast(dof_view)
+            view = dof_view
         return view
 
     async def set_params(self, values: dict) -> dict:

@@ -98,6 +98,7 @@ class Session:
         self.solver: Solver | None = None         # warm: tapes compiled for the last model
         self._row_keys: list[str] | None = None
         self.version = 0                          # bumps on every load / set_params
+        self._dof_pending: Solver | None = None
         self.last: dict = {}                      # timings and warm/cold of the last compile
 
     # ------------------------------------------------------------------ public
@@ -140,9 +141,17 @@ class Session:
             if not res.ok:                              # the kept values no longer fit: drop them
                 self.values, res = {}, base
         self.params = self._params(res.fctx, self.values) if res.fctx is not None else params
-        if res.ok:
-            self._dof(res.solver)
+        self._dof_pending = res.solver if res.ok else None
         return self._publish(res, t0)
+
+    def update_dof(self) -> dict | None:
+        """Compute the degrees-of-freedom summary of the last load (an SVD per structure, so
+        it runs after the picture is out); the view, or None when there is nothing new."""
+        solver, self._dof_pending = self._dof_pending, None
+        if solver is None:
+            return None
+        self._dof(solver)
+        return self.view()
 
     def set_params(self, values: dict[str, str]) -> dict:
         """Apply customizer values (``{name: "172.5mm"}``, the ``--set`` syntax).  Unknown
