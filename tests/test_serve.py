@@ -209,6 +209,12 @@ def test_other_hosts_and_origins_are_refused(client, headers):
     assert client.get("/", headers=headers).status_code == 403
 
 
+def test_localhost_by_name_is_allowed(client):
+    r = client.get("/api/state", headers={"host": f"localhost:{PORT}",
+                                          "origin": f"http://localhost:{PORT}"})
+    assert r.status_code == 200
+
+
 def test_websocket_sets_params_and_refuses_other_origins(client):
     host = {"host": f"127.0.0.1:{PORT}"}       # the test client's websocket says "testserver"
     with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
@@ -217,6 +223,9 @@ def test_websocket_sets_params_and_refuses_other_origins(client):
         ws.send_text(json.dumps({"type": "set", "id": 7, "values": {"base_w": "180mm"}}))
         v = json.loads(ws.receive_text())
         assert v["id"] == 7 and v["ok"] and v["values"] == {"base_w": "180mm"}
+        ws.send_text("[1, 2]")                         # not a message: ignored
+        ws.send_text(json.dumps({"type": "set", "id": 8, "values": {"base_w": "170mm"}}))
+        assert json.loads(ws.receive_text())["id"] == 8
     from starlette.websockets import WebSocketDisconnect
     with pytest.raises(WebSocketDisconnect):
         with client.websocket_connect("/ws", headers={**host, "origin": "http://evil.example"}) as ws:

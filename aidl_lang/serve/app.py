@@ -178,7 +178,8 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
             await ws.send_text(json.dumps({"type": "view", **hub.session.view()}))
             while True:
                 msg = json.loads(await ws.receive_text())
-                if msg.get("type") == "set" and isinstance(msg.get("values"), dict):
+                if isinstance(msg, dict) and msg.get("type") == "set" \
+                        and isinstance(msg.get("values"), dict):
                     view = await hub.set_params(msg["values"])
                     await ws.send_text(json.dumps({"type": "view", "id": msg.get("id"), **view}))
                     await hub.broadcast(view, skip=ws)
