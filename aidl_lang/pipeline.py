@@ -1,4 +1,5 @@
-"""The pipeline in one call: parse -> check -> interpret -> solve (-> render, in cli/render).
+"""The pipeline in one call: parse -> check -> interpret -> solve -> booleans and the geometry
+checks on the final shape (:mod:`aidl_lang.output.checks`); the writers run in cli/render.
 
 Each stage appends diagnostics to one :class:`DiagnosticSink`; a stage runs only when the
 previous ones produced no errors.
@@ -11,6 +12,8 @@ from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
 from .geometry.model import Model
 from .parser import parse
+from .output.booleans import Drawing, render_model
+from .output.checks import check_drawing
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -20,6 +23,7 @@ class Compiled:
     sink: DiagnosticSink
     model: Model | None = None
     solve: SolveResult | None = None
+    drawing: Drawing | None = None      # the booleans' result, when the solve converged
 
     @property
     def ok(self) -> bool:
@@ -53,9 +57,11 @@ def _compile(sink, source, path, overrides, do_solve) -> Compiled:
     result = solve(model)
     if not result.converged:
         report_failure(sink, result)
-    else:
-        check_branches(sink, model)
-    return Compiled(sink, model, result)
+        return Compiled(sink, model, result)
+    check_branches(sink, model)
+    drawing = render_model(model)
+    check_drawing(drawing, sink)
+    return Compiled(sink, model, result, drawing)
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:
