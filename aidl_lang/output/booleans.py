@@ -265,6 +265,7 @@ class Renderer:
         elif g.kind == "Circle":
             r = abs(self.x[g.scalars["radius"].index])
             c = self.P(g.points["center"])
+            self._circle(c, r)
             out.lines.append(("drawing", np.vstack([self.circle_points(c, r),
                                                     self.circle_points(c, r)[:1]])))
             out.strokes.append(("drawing", ("circle", c, r), g))
