@@ -209,29 +209,59 @@ class Output:
 
 # ------------------------------------------------------------------ arc recovery
 class _Circles:
-    """The model's circles, with a bounding-box filter for one polygon."""
+    """The model's circles (cx, cy, r, largest chord angle), with a bounding-box filter."""
 
     def __init__(self, circles):
         uniq = {}
         for cx, cy, r in circles:
             if r > 0 and math.isfinite(r):
                 uniq.setdefault((round(cx, 9), round(cy, 9), round(r, 9)), (cx, cy, r))
-        self.c = np.array(list(uniq.values()), dtype=float).reshape(-1, 3)
+        c = np.array(list(uniq.values()), dtype=float).reshape(-1, 3)
+        self.c = np.column_stack([c, _max_step(c[:, 2]) * 1.001 + 1e-9]) if len(c) else \
+            np.zeros((0, 4))
+        self.lo = self.c[:, :2] - self.c[:, 2:3] - 1e-3
+        self.hi = self.c[:, :2] + self.c[:, 2:3] + 1e-3
+        # a uniform grid over the circles' boxes, so that a loop looks at its neighbours only
+        self.cell = float(np.median(self.hi - self.lo)) if len(self.c) else 1.0
+        self.grid: dict[tuple[int, int], list[int]] = {}
+        self.big: list[int] = []
+        for i in range(len(self.c)):
+            (x0, y0), (x1, y1) = self._cells(self.lo[i], self.hi[i])
+            if (x1 - x0 + 1) * (y1 - y0 + 1) > 64:
+                self.big.append(i)
+                continue
+            for gx in range(x0, x1 + 1):
+                for gy in range(y0, y1 + 1):
+                    self.grid.setdefault((gx, gy), []).append(i)
+
+    def _cells(self, lo, hi):
+        s = self.cell
+        return ((math.floor(lo[0] / s), math.floor(lo[1] / s)),
+                (math.floor(hi[0] / s), math.floor(hi[1] / s)))
 
     def near(self, pts: np.ndarray) -> np.ndarray:
         if not len(self.c) or not len(pts):
             return self.c[:0]
         lo, hi = pts.min(axis=0), pts.max(axis=0)
-        c = self.c
-        m = ((c[:, 0] + c[:, 2] >= lo[0] - 1e-3) & (c[:, 0] - c[:, 2] <= hi[0] + 1e-3) &
-             (c[:, 1] + c[:, 2] >= lo[1] - 1e-3) & (c[:, 1] - c[:, 2] <= hi[1] + 1e-3))
-        return c[m]
+        (x0, y0), (x1, y1) = self._cells(lo, hi)
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > 256:
+            idx = np.arange(len(self.c))
+        else:
+            cand = set(self.big)
+            for gx in range(x0, x1 + 1):
+                for gy in range(y0, y1 + 1):
+                    cand.update(self.grid.get((gx, gy), ()))
+            if not cand:
+                return self.c[:0]
+            idx = np.fromiter(cand, dtype=np.int64)
+        m = np.all((self.hi[idx] >= lo) & (self.lo[idx] <= hi), axis=1)
+        return self.c[idx[m]]
 
 
 def _max_step(r: np.ndarray) -> np.ndarray:
     """Largest angle (rad) one tessellation chord of radius ``r`` spans
     (:func:`~aidl_lang.geometry.tessellate.segments_for`: at least 3 chords a circle)."""
-    with np.errstate(invalid="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore"):
         step = 2 * np.arccos(np.clip(1 - CHORD_TOL / r, -1.0, 1.0))
     return np.minimum(np.maximum(step, math.pi / 4), 2 * math.pi / 3)
 
@@ -240,91 +270,82 @@ def recover(poly: np.ndarray, circles: _Circles) -> Loop:
     """Exact segments of one closed polygon (N x 2, vertices in order, no repeat)."""
     P = np.asarray(poly, dtype=float)
     n = len(P)
-    C = circles.near(P)
-    if n < 3 or not len(C):
-        return Loop([Line(tuple(P[i]), tuple(P[(i + 1) % n])) for i in range(n)])
+    C = circles.near(P) if n >= 3 else circles.c[:0]
+    if not len(C):
+        return Loop([Line(_t(P[i]), _t(P[(i + 1) % n])) for i in range(n)])
     scale = max(1.0, float(np.abs(P).max()))
     vtol = CHORD_TOL * 1.02 + 1e-7 * scale
+    nxt = np.arange(1, n + 1) % n
     # vertex-to-circle deviation, N x M
-    d = np.hypot(P[:, None, 0] - C[None, :, 0], P[:, None, 1] - C[None, :, 1])
-    on = np.abs(d - C[None, :, 2]) <= vtol
-    Q = np.roll(P, -1, axis=0)
-    onq = np.roll(on, -1, axis=0)
-    both = on & onq
-    # angle spanned by each edge about each circle's center, signed
     ax, ay = P[:, None, 0] - C[None, :, 0], P[:, None, 1] - C[None, :, 1]
-    bx, by = Q[:, None, 0] - C[None, :, 0], Q[:, None, 1] - C[None, :, 1]
+    dev = np.abs(np.hypot(ax, ay) - C[None, :, 2])
+    on = dev <= vtol
+    bx, by = ax[nxt], ay[nxt]
+    # angle spanned by each edge about each circle's center, signed
     ang = np.arctan2(ax * by - ay * bx, ax * bx + ay * by)
-    ok = both & (np.abs(ang) <= _max_step(C[:, 2])[None, :] * 1.001 + 1e-9) & (np.abs(ang) > 0)
-    dev = np.abs(d - C[None, :, 2]) + np.abs(np.roll(d, -1, axis=0) - C[None, :, 2])
-    dev = np.where(ok, dev, np.inf)
-    best = np.argmin(dev, axis=1)
-    edge_c = np.where(np.isfinite(dev[np.arange(n), best]), best, -1)
-    edge_s = np.sign(ang[np.arange(n), np.maximum(edge_c, 0)])
-    key = [(int(edge_c[i]), float(edge_s[i])) if edge_c[i] >= 0 else None for i in range(n)]
-    if key[0] is not None and all(k == key[0] for k in key):
-        k = edge_c[0]
-        total = float(np.sum(ang[np.arange(n), k]))
+    absang = np.abs(ang)
+    ok = on & on[nxt] & (absang <= C[None, :, 3]) & (absang > 0)
+    score = np.where(ok, dev + dev[nxt], np.inf)
+    best = np.argmin(score, axis=1)
+    rows = np.arange(n)
+    has = np.isfinite(score[rows, best])
+    if not has.any():
+        return Loop([Line(_t(P[i]), _t(P[(i + 1) % n])) for i in range(n)])
+    sgn = ang[rows, best] > 0
+    keys = np.where(has, best * 2 + sgn, -1)
+    if (keys == keys[0]).all():
+        k = int(best[0])
+        total = float(np.sum(ang[:, k]))
         if abs(abs(total) - 2 * math.pi) < 1e-6:
             return Loop([Circle((float(C[k, 0]), float(C[k, 1])), float(C[k, 2]), total > 0)])
-    # runs of equal keys; rotate so that index 0 starts a run
-    start = 0
-    if all(k == key[0] for k in key):
-        start = 0
+        starts = np.array([0])
     else:
-        for i in range(n):
-            if key[i] != key[i - 1]:
-                start = i
-                break
-    order = [(start + i) % n for i in range(n)]
-    runs: list[tuple[object, list[int]]] = []
-    for i in order:
-        if runs and key[i] is not None and runs[-1][0] == key[i]:
-            runs[-1][1].append(i)
-        else:
-            runs.append((key[i], [i]))
-    # vertices (exact, snapped) at the start of each run; lines keep their vertices
-    verts: list[np.ndarray] = [P[idx[0]].copy() for _, idx in runs]
+        starts = np.flatnonzero(keys != keys[np.arange(-1, n - 1)])
+    # runs of equal keys: (key, first edge, last edge), indices modulo n
+    runs = []
+    for j, st in enumerate(starts):
+        end = starts[j + 1] if j + 1 < len(starts) else starts[0] + n
+        k = int(keys[st])
+        runs.append((k, int(st), int(end - 1)))
     m = len(runs)
+    Pl = P.tolist()
+    verts = [list(Pl[st % n]) for _, st, _ in runs]
 
     def circ(k):
-        return C[k[0]] if k is not None else None
+        return C[k // 2] if k >= 0 else None
 
     for j in range(m):
         kprev, kcur = runs[j - 1][0], runs[j][0]
+        if kprev < 0 and kcur < 0:
+            continue
         cprev, ccur = circ(kprev), circ(kcur)
         v = verts[j]
-        if cprev is None and ccur is None:
-            continue
         if ccur is not None and cprev is not None:
             verts[j] = _snap_cc(v, cprev, ccur)
-        else:
-            c = ccur if ccur is not None else cprev
-            # the neighbouring line: from this vertex to the other end of the line edge
-            if ccur is None:          # line run starts here: its edge goes to P[i+1]
-                other = P[(runs[j][1][0] + 1) % n]
-            else:                     # line run ended here: its last edge came from P[i-1]
-                other = P[runs[j - 1][1][-1]]
-            verts[j] = _snap_lc(v, other, c)
+        elif ccur is None:            # a line run starts here: its first edge goes to P[st+1]
+            verts[j] = _snap_lc(v, Pl[(runs[j][1] + 1) % n], cprev)
+        else:                         # a line run ended here: its last edge came from P[last]
+            verts[j] = _snap_lc(v, Pl[runs[j - 1][2] % n], ccur)
     segs: list[Segment] = []
-    for j, (k, idx) in enumerate(runs):
+    for j, (k, st, last) in enumerate(runs):
         a, b = verts[j], verts[(j + 1) % m]
-        if k is None:
-            pts = [a] + [P[i] for i in idx[1:]] + [b]
+        if k < 0:
+            pts = [a] + [Pl[i % n] for i in range(st + 1, last + 1)] + [b]
             segs += [Line(_t(pts[i]), _t(pts[i + 1])) for i in range(len(pts) - 1)]
             continue
-        c = C[k[0]]
-        a1 = math.atan2(a[1] - c[1], a[0] - c[0])
-        a2 = math.atan2(b[1] - c[1], b[0] - c[0])
-        approx = float(np.sum(ang[idx, k[0]]))
+        c = C[k // 2]
+        cx, cy, r = float(c[0]), float(c[1]), float(c[2])
+        a1 = math.atan2(a[1] - cy, a[0] - cx)
+        a2 = math.atan2(b[1] - cy, b[0] - cx)
+        approx = float(np.sum(ang[np.arange(st, last + 1) % n, k // 2]))
         sweep = a2 - a1
         sweep += 2 * math.pi * round((approx - sweep) / (2 * math.pi))
         if abs(sweep) < 1e-12:
             segs.append(Line(_t(a), _t(b)))
             continue
         if abs(abs(sweep) - 2 * math.pi) < 1e-9 and m == 1:
-            return Loop([Circle((float(c[0]), float(c[1])), float(c[2]), sweep > 0)])
-        segs.append(Arc((float(c[0]), float(c[1])), float(c[2]), a1, sweep))
+            return Loop([Circle((cx, cy), r, sweep > 0)])
+        segs.append(Arc((cx, cy), r, a1, sweep))
     return Loop(segs)
 
 
@@ -332,46 +353,54 @@ def _t(p) -> Point:
     return (float(p[0]), float(p[1]))
 
 
-def _snap_lc(v, other, c) -> np.ndarray:
+def _snap_lc(v, other, c) -> list:
     """The intersection of the line (other -> v) with circle ``c`` nearest to ``v``."""
-    v, o = np.asarray(v, float), np.asarray(other, float)
-    d = v - o
-    L = float(np.hypot(*d))
+    cx, cy, r = float(c[0]), float(c[1]), float(c[2])
+    dx, dy = v[0] - other[0], v[1] - other[1]
+    L = math.hypot(dx, dy)
     if L < 1e-12:
         return _project(v, c)
-    u = d / L
-    f = o - c[:2]
-    b = float(np.dot(f, u))
-    disc = b * b - (float(np.dot(f, f)) - c[2] ** 2)
+    ux, uy = dx / L, dy / L
+    fx, fy = other[0] - cx, other[1] - cy
+    b = fx * ux + fy * uy
+    disc = b * b - (fx * fx + fy * fy - r * r)
     if disc < 0:
         return _project(v, c)
-    roots = [-b - math.sqrt(disc), -b + math.sqrt(disc)]
-    best = min((o + t * u for t in roots), key=lambda q: float(np.hypot(*(q - v))))
-    return best if np.hypot(*(best - v)) <= SNAP_TOL else _project(v, c)
+    best, dist = None, math.inf
+    for t in (-b - math.sqrt(disc), -b + math.sqrt(disc)):
+        q = [other[0] + t * ux, other[1] + t * uy]
+        dq = math.hypot(q[0] - v[0], q[1] - v[1])
+        if dq < dist:
+            best, dist = q, dq
+    return best if dist <= SNAP_TOL else _project(v, c)
 
 
-def _snap_cc(v, c1, c2) -> np.ndarray:
+def _snap_cc(v, c1, c2) -> list:
     """The intersection of two circles nearest to ``v`` (projection when they do not cross)."""
-    if np.allclose(c1, c2):
-        return _project(v, c1)
-    p1, p2 = c1[:2], c2[:2]
-    dvec = p2 - p1
-    D = float(np.hypot(*dvec))
-    r1, r2 = c1[2], c2[2]
+    x1, y1, r1 = float(c1[0]), float(c1[1]), float(c1[2])
+    x2, y2, r2 = float(c2[0]), float(c2[1]), float(c2[2])
+    dx, dy = x2 - x1, y2 - y1
+    D = math.hypot(dx, dy)
     if D < 1e-12 or D > r1 + r2 or D < abs(r1 - r2):
         return _project(v, c1)
     a = (r1 * r1 - r2 * r2 + D * D) / (2 * D)
     h = math.sqrt(max(0.0, r1 * r1 - a * a))
-    m = p1 + a * dvec / D
-    perp = np.array([-dvec[1], dvec[0]]) / D
-    best = min((m + h * perp, m - h * perp), key=lambda q: float(np.hypot(*(q - v))))
-    return best if np.hypot(*(best - v)) <= SNAP_TOL else _project(v, c1)
+    mx, my = x1 + a * dx / D, y1 + a * dy / D
+    px, py = -dy / D, dx / D
+    best, dist = None, math.inf
+    for sg in (1, -1):
+        q = [mx + sg * h * px, my + sg * h * py]
+        dq = math.hypot(q[0] - v[0], q[1] - v[1])
+        if dq < dist:
+            best, dist = q, dq
+    return best if dist <= SNAP_TOL else _project(v, c1)
 
 
-def _project(v, c) -> np.ndarray:
-    d = np.asarray(v, float) - c[:2]
-    L = float(np.hypot(*d))
-    return c[:2] + d / L * c[2] if L > 0 else np.asarray(v, float)
+def _project(v, c) -> list:
+    cx, cy, r = float(c[0]), float(c[1]), float(c[2])
+    dx, dy = v[0] - cx, v[1] - cy
+    L = math.hypot(dx, dy)
+    return [cx + dx / L * r, cy + dy / L * r] if L > 0 else list(v)
 
 
 # ------------------------------------------------------------------ build
