@@ -283,3 +283,60 @@ def test_3mf_has_one_body_per_assembly_part():
     for name, mesh in scene.geometry.items():
         assert mesh.is_watertight
         assert mesh.volume == pytest.approx(areas[name] * 3.0, rel=1e-6)    # default 3 mm
+
+
+# ------------------------------------------------------------------ thickness
+THICK = """param thickness = 24 mm
+thickness 4 mm
+assembly kit {
+    solid a {
+        thickness 6 mm
+        r = Rectangle(center=(0, 0), width=10, height=10)
+    }
+    solid b {
+        r = Rectangle(center=(30, 0), width=thickness, height=10)
+    }
+}
+"""
+
+
+def test_thickness_file_default_and_per_structure_override(compile_text):
+    trimesh = pytest.importorskip("trimesh")
+    o, c = output_of(compile_text, THICK)
+    assert {p.name: p.thickness for p in o.parts} == {"kit.a": 6.0, "kit.b": 4.0}
+    scene = trimesh.load(io.BytesIO(encode(o, ".3mf")), file_type="3mf")
+    vols = {n: g.volume for n, g in scene.geometry.items()}
+    # `param thickness` is still an ordinary name: b is 24 mm wide
+    assert vols == pytest.approx({"kit.a": 100 * 6.0, "kit.b": 240 * 4.0}, rel=1e-9)
+    # --thickness overrides the program's
+    stl = trimesh.load(io.BytesIO(encode(o, ".stl", Options(thickness=2))), file_type="stl")
+    assert stl.volume == pytest.approx((100 + 240) * 2, rel=1e-9)
+
+
+def test_thickness_statement_and_assignment_coexist(compile_text):
+    o, c = output_of(compile_text, """solid s {
+    thickness = 3
+    thickness 2 in
+    r = Rectangle(center=(0, 0), width=thickness, height=1)
+}""")
+    assert o.parts[0].thickness == pytest.approx(50.8) and o.area == pytest.approx(3.0)
+
+
+@pytest.mark.parametrize("src,msg", [
+    ("thickness -2 mm\nsolid s { r = Rectangle(center=(0, 0), width=1, height=1) }",
+     "positive length"),
+    ("thickness 30 deg\nsolid s { r = Rectangle(center=(0, 0), width=1, height=1) }",
+     "expects a length"),
+])
+def test_bad_thickness_is_a_located_error(compile_text, src, msg):
+    c = compile_text(src)
+    (d,) = c.sink.errors()
+    assert d.code == "E0109" and msg in d.message and d.span.line == 1 and d.span.col == 11
+
+
+def test_thickness_formats_and_round_trips():
+    from aidl_lang.editor.fmt import format_source
+    src = "thickness   3mm\nsolid s { thickness 2 mm; r = Rectangle(center=(0,0), width=4, height=4) }\n"
+    out = format_source(src)
+    assert out.startswith("thickness 3 mm\nsolid s {\n    thickness 2 mm\n")
+    assert format_source(out) == out

@@ -276,8 +276,7 @@ def cmd_render(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    output = build(res.drawing, res.model.root.name,
-                   thickness=getattr(res.model, "thickness", None))
+    output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness)
     try:

@@ -59,6 +59,9 @@ class Drawing:
     cuts: list[Cut] = field(default_factory=list)
     construction: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
     part_of: dict = field(default_factory=dict)      # Part name -> its Structure
+    # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
+    # the file's); parts without one are missing
+    thickness: dict = field(default_factory=dict)
 
     def bounds(self):
         xs, ys = [], []
@@ -356,6 +359,12 @@ class Renderer:
         else:
             self.part(root, out)
         out.circles = self.circles
+        default = getattr(self.m, "thickness", None)
+        for name, s in out.part_of.items():
+            t = next((getattr(a, "thickness") for a in [s, *s.ancestors()]
+                      if getattr(a, "thickness", None) is not None), default)
+            if t is not None:
+                out.thickness[name] = float(t)
         return out
 
 

@@ -420,9 +420,12 @@ def _stroke(item, circles: _Circles, style: str, source: str) -> list[Stroke]:
 
 def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
     """The exact :class:`Output` of a booleans :class:`Drawing`.  ``thickness`` maps a part's
-    name to its thickness in mm (or is one number for all parts)."""
+    name to its thickness in mm (or is one number for all parts); by default the program's
+    (``thickness 3 mm``, :attr:`Drawing.thickness`)."""
     circles = _Circles(drawing.circles)
     out = Output(title=title, drawing=drawing)
+    if thickness is None:
+        thickness = drawing.thickness
     for p in drawing.parts:
         if p.shape.is_empty():
             continue
