@@ -208,8 +208,9 @@ hole smaller, or move it so that material remains around it.
     "W0504": ("solid falls apart into separate pieces", """
 The final shape of a solid part is several disconnected pieces; the warning lists which children
 or geometry make up each piece. Usually a child floats free of the body (feet, a handle) because
-a constraint places it with a gap. Make the pieces overlap or touch (`Above(foot, body,
-gap=-1 mm)`, a Coincident edge); if they really are separate parts, make the structure an
+a constraint places it with a gap, or it touches the body at a single point (a round end
+resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
+edge; if they really are separate parts, make the structure an
 `assembly` (its parts are separate by design and are not checked against each other).
 """),
     "W0505": ("engraving off the material", """

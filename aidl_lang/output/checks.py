@@ -169,9 +169,9 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink) -> None
         f"solid `{s.path}` falls apart into {len(pieces)} separate pieces: "
         + "; ".join(groups[:6]) + ("; ..." if len(groups) > 6 else ""),
         s.span,
-        hint="make the pieces overlap or touch (for example `Above(a, b, gap=-1 mm)` or a "
-             "Coincident edge), or, if they are separate parts, make the structure an "
-             "`assembly`")
+        hint="make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
+             "(touching at a point is not enough), or, if they are separate parts, make the "
+             "structure an `assembly`")
 
 
 def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink) -> None:
