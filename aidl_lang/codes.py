@@ -223,6 +223,18 @@ A child solid lies wholly inside the rest of its parent, so it changes nothing i
 shape: typically copies of a pattern that land inside a filled solid, or a feature placed at the
 wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it.
 """),
+    "W0507": ("wall thinner than the minimum", """
+Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
+`aidl check --min-wall MM` or `aidl render --min-wall MM`; 0 turns it off): a laser or router
+burns through or breaks such a wall. The warning names the holes and the outer edge that the
+wall lies between, its approximate width and length and where it is. Move or shrink the hole
+so that enough material is left.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole slot { r = Rectangle(center=(0, 6.85), width=10, height=6) }   # 0.15 mm to the edge
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0402": ("open outline", """
 Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;

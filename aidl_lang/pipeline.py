@@ -13,7 +13,7 @@ from .interp import Interpreter
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
-from .output.checks import check_drawing
+from .output.checks import MIN_WALL, check_drawing
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -31,11 +31,11 @@ class Compiled:
 
 
 def compile_source(source: str, path: str, overrides: dict[str, str] | None = None,
-                   do_solve: bool = True) -> Compiled:
+                   do_solve: bool = True, min_wall: float = MIN_WALL) -> Compiled:
     """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics)."""
     sink = DiagnosticSink()
     try:
-        return _compile(sink, source, path, overrides, do_solve)
+        return _compile(sink, source, path, overrides, do_solve, min_wall)
     except RecursionError:
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", None,
@@ -43,7 +43,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         return Compiled(sink)
 
 
-def _compile(sink, source, path, overrides, do_solve) -> Compiled:
+def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL) -> Compiled:
     program = parse(source, path, sink)
     if sink.has_errors:
         return Compiled(sink)
@@ -60,7 +60,7 @@ def _compile(sink, source, path, overrides, do_solve) -> Compiled:
         return Compiled(sink, model, result)
     check_branches(sink, model)
     drawing = render_model(model)
-    check_drawing(drawing, sink)
+    check_drawing(drawing, sink, min_wall)
     return Compiled(sink, model, result, drawing)
 
 

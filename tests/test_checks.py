@@ -4,7 +4,7 @@ import pytest
 
 from conftest import EXAMPLES
 
-SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0402"}
+SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -143,6 +143,46 @@ def test_W0506_child_solid_that_adds_nothing(compile_text):
     assert [w.span.line for w in ws] == [4, 4]
     assert "`crown.apple[0]`" in ws[0].message and "`crown.apple[1]`" in ws[1].message
     assert "hole" in ws[0].hint
+
+
+WALL = """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole slot {
+        r = Rectangle(center=(0, 6.85), width=10, height=6)
+    }
+    hole bore {
+        c = Circle(center=(-12, 0), radius=3)
+    }
+}"""
+
+
+def test_W0507_thin_wall_names_the_hole_and_the_edge(compile_text):
+    (w,) = warnings(compile_text, WALL, "W0507")
+    assert w.span.line == 3
+    assert "between hole `plate.slot` and the outer edge of `plate`" in w.message
+    assert "about 0.15 mm" in w.message and "near (0.0, 9.9)" in w.message
+    # 0.6 mm left: clean; a lower minimum: clean; a higher one finds it again
+    assert not warnings(compile_text, WALL.replace("6.85", "6.4"), "W0507")
+    c = compile_text(WALL, min_wall=0.1)
+    assert not [d for d in c.sink.items if d.code == "W0507"]
+    c = compile_text(WALL.replace("6.85", "6.4"), min_wall=1.0)
+    assert [d.code for d in c.sink.items] == ["W0507"]
+
+
+def test_W0507_between_two_holes(compile_text):
+    (w,) = warnings(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole a {
+        r = Rectangle(center=(-5.2, 0), width=10, height=10)
+    }
+    hole b {
+        r = Rectangle(center=(5.2, 0), width=10, height=10)
+    }
+}""", "W0507")
+    import re
+    assert "between hole `plate.a` and hole `plate.b`" in w.message
+    width, length = map(float, re.search(r"about ([\d.]+) mm over ([\d.]+) mm", w.message).groups())
+    assert width == pytest.approx(0.4, abs=0.02) and length == pytest.approx(10, abs=0.1)
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)

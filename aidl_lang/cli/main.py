@@ -52,10 +52,14 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     c = sub.add_parser("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
@@ -122,7 +126,7 @@ def cmd_check(args) -> int:
     src = _read(args.file, args.json)
     if src is None:
         return 1
-    res = compile_source(src, args.file, _overrides(args.set))
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -272,7 +276,7 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
-    res = compile_source(src, args.file, _overrides(args.set))
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1

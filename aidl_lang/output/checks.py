@@ -12,6 +12,11 @@ checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.co
 * ``W0505`` engraving (a drawing) outside the material or across a hole;
 * ``W0506`` a child solid that adds nothing: it lies wholly inside the rest of its parent (for
   example pattern copies that land inside a filled solid);
+* ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`, 0.5 mm): what a
+  morphological opening of the part by a disc of that diameter removes (the erosion by
+  ``min_wall / 2`` then the dilation back, Manifold offsets with round joins), in pieces of at
+  least ``2 min_wall^2`` (so that sharp corners, which every opening rounds, do not count); the
+  warning names the holes and the outer edge the wall lies between;
 * ``W0402`` an open outline (lines and arcs that do not close), drawn as engraving.
 
 Areas are compared with a tolerance that ignores the chord slivers of tessellated curves:
@@ -32,6 +37,7 @@ MIN_FRACTION = 0.02      # of a hole's or child's area
 MIN_AREA = 0.05          # mm^2
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
+MIN_WALL = 0.5           # mm: W0507's default minimum wall
 
 
 def _area(cs) -> float:
@@ -82,8 +88,9 @@ def _contributors(d: Drawing, a: Structure, skip: Structure | None = None):
     return out
 
 
-def check_drawing(d: Drawing, sink: DiagnosticSink) -> None:
-    """Append the geometry warnings for the booleans' result ``d`` to ``sink``."""
+def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) -> None:
+    """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
+    (mm) is W0507's minimum wall (0 turns that check off)."""
     roots = _part_roots(d)
     for cut in d.cuts:
         _check_hole(d, cut, roots, sink)
@@ -94,6 +101,10 @@ def check_drawing(d: Drawing, sink: DiagnosticSink) -> None:
         if s.kind == "solid":
             _check_invisible(d, s, sink)
     _check_engraving(d, roots, sink)
+    if min_wall > 0:
+        for s, shape in roots.items():
+            if s.kind == "solid":
+                _check_walls(d, s, shape, min_wall, sink)
     for g in d.open_curves:
         sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
                      "line (engraved), not filled", g.span,
@@ -190,6 +201,41 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink) -> None:
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+def _check_walls(d: Drawing, s: Structure, shape, t: float, sink: DiagnosticSink) -> None:
+    if shape.is_empty():
+        return
+    segs = 64
+    opened = shape.offset(-t / 2, mf.JoinType.Round, 2.0, segs).offset(t / 2, mf.JoinType.Round,
+                                                                       2.0, segs)
+    thin = shape - opened
+    if thin.is_empty():
+        return
+    holes = [c for c in d.cuts if c.owner.is_within(s) and c.hole in d.shapes]
+    filled = _union([shape] + [d.shapes[c.hole] for c in holes])
+    for piece in thin.decompose():
+        a = _area(piece)
+        if a < 2 * t * t:
+            continue
+        near = piece.offset(t, mf.JoinType.Round, 2.0, segs)
+        names = [f"hole `{c.hole.path}`" for c in holes
+                 if _area(near ^ d.shapes[c.hole]) > 1e-9]
+        if _area(near - filled) > 1e-9:
+            names.append(f"the outer edge of `{s.path}`")
+        names = list(dict.fromkeys(names))
+        x0, y0, x1, y1 = piece.bounds()
+        length = max(x1 - x0, y1 - y0, 1e-9)
+        width = min(t, a / length)
+        between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
+            f" beside {names[0]}" if names else "")
+        span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
+        sink.warning("W0507", f"a wall of `{s.path}`{between} is thinner than {t:g} mm "
+                     f"(about {width:.2f} mm over {length:.1f} mm, near "
+                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", span,
+                     hint=f"move or shrink the feature so that at least {t:g} mm of material is "
+                          "left (a laser or router cannot hold a thinner wall); the minimum is "
+                          "set with --min-wall")
 
 
 def _inside(pts: np.ndarray, loops) -> np.ndarray:
