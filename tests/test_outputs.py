@@ -340,3 +340,51 @@ def test_thickness_formats_and_round_trips():
     out = format_source(src)
     assert out.startswith("thickness 3 mm\nsolid s {\n    thickness 2 mm\n")
     assert format_source(out) == out
+
+
+# ------------------------------------------------------------------ STEP (the `step` extra)
+def test_step_keeps_circles_as_cylinders_and_the_exact_volume(compile_text, tmp_path):
+    pytest.importorskip("OCP")
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GeomAbs import GeomAbs_Cylinder, GeomAbs_Plane
+    from OCP.GProp import GProp_GProps
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_FACE, TopAbs_SOLID
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    o, _ = output_of(compile_text, """thickness 3 mm
+assembly kit {
+    solid plate {
+        body = RoundedRectangle(center=(0, 0), width=40, height=20, corner_radius=3)
+        hole bore { c = Circle(center=(0, 0), radius=5) }
+    }
+    solid washer {
+        thickness 1.5 mm
+        d = Circle(center=(40, 0), radius=6)
+        hole h { c = Circle(center=(40, 0), radius=2.5) }
+    }
+}""")
+    path = tmp_path / "kit.step"
+    path.write_bytes(encode(o, ".step"))
+    r = STEPControl_Reader()
+    assert r.ReadFile(str(path)) == 1
+    r.TransferRoots()
+    shape = r.OneShape()
+    g = GProp_GProps()
+    BRepGProp.VolumeProperties_s(shape, g)
+    exact = (800 - (4 - math.pi) * 9 - 25 * math.pi) * 3 + (36 - 6.25) * math.pi * 1.5
+    assert g.Mass() == pytest.approx(exact, rel=1e-6)
+    kinds = []
+    e = TopExp_Explorer(shape, TopAbs_FACE)
+    while e.More():
+        kinds.append(BRepAdaptor_Surface(TopoDS.Face(e.Current())).GetType())
+        e.Next()
+    # 4 rounded corners + the bore + the washer's outside and inside
+    assert kinds.count(GeomAbs_Cylinder) == 7
+    assert kinds.count(GeomAbs_Plane) == 4 + 2 + 2
+    e, n = TopExp_Explorer(shape, TopAbs_SOLID), 0
+    while e.More():
+        n += 1
+        e.Next()
+    assert n == 2

@@ -30,9 +30,9 @@ class _Parser(argparse.ArgumentParser):
 def _parser() -> argparse.ArgumentParser:
     p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
-    r = sub.add_parser("render", help="compile a .aidl file to SVG, DXF, PNG, STL or 3MF",
+    r = sub.add_parser("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
                        description="Compile FILE and write each -o output; the format follows "
-                                   "the extension (.svg .dxf .png .stl .3mf). Nothing is written "
+                                   "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
                                    "unless the whole pipeline succeeded.")
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
@@ -47,7 +47,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
     r.add_argument("--thickness", default=None, metavar="LENGTH",
-                   help="extrusion thickness for STL/3MF, e.g. 3mm (default: the program's "
+                   help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
                         "`thickness`, else 3 mm)")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")

@@ -1,5 +1,5 @@
 """Output formats by file extension: :data:`FORMATS` maps ``.svg``, ``.dxf``, ``.png``,
-``.stl``, ``.3mf`` to a writer that turns an :class:`~.part.Output` into bytes."""
+``.stl``, ``.3mf``, ``.step`` / ``.stp`` to a writer that turns an :class:`~.part.Output` into bytes."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -43,7 +43,13 @@ def _3mf(o: Output, opt: Options) -> bytes:
     return to_3mf(o, opt.thickness)
 
 
-FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf}
+def _step(o: Output, opt: Options) -> bytes:
+    from .step import to_step
+    return to_step(o, opt.thickness)
+
+
+FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf,
+           ".step": _step, ".stp": _step}
 
 
 def encode(output: Output, suffix: str, options: Options | None = None) -> bytes:
