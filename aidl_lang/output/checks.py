@@ -102,9 +102,12 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) 
             _check_invisible(d, s, sink)
     _check_engraving(d, roots, sink)
     if min_wall > 0:
+        by_part: dict = {}
+        for c in d.cuts:
+            by_part.setdefault(_part_of(c.owner, roots), []).append(c)
         for s, shape in roots.items():
             if s.kind == "solid":
-                _check_walls(d, s, shape, min_wall, sink)
+                _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink)
     for g in d.open_curves:
         sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
                      "line (engraved), not filled", g.span,
@@ -203,16 +206,16 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink) -> None:
                               "`hole` if it should cut, or delete it")
 
 
-def _check_walls(d: Drawing, s: Structure, shape, t: float, sink: DiagnosticSink) -> None:
+def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink) -> None:
     if shape.is_empty():
         return
-    segs = 64
+    segs = 16
     opened = shape.offset(-t / 2, mf.JoinType.Round, 2.0, segs).offset(t / 2, mf.JoinType.Round,
                                                                        2.0, segs)
     thin = shape - opened
     if thin.is_empty():
         return
-    holes = [c for c in d.cuts if c.owner.is_within(s) and c.hole in d.shapes]
+    holes = [c for c in cuts if c.hole in d.shapes]
     filled = _union([shape] + [d.shapes[c.hole] for c in holes])
     for piece in thin.decompose():
         a = _area(piece)

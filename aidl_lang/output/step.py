@@ -102,12 +102,18 @@ def to_step(output: Output, thickness: float | None = None) -> bytes:
     w = STEPControl_Writer()
     Interface_Static.SetCVal_s("write.step.unit", "MM")
     Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
+    from OCP.BRep import BRep_Builder
+    from OCP.TopoDS import TopoDS_Compound
+    builder = BRep_Builder()
+    comp = TopoDS_Compound()
+    builder.MakeCompound(comp)
     for _, shape in solids(output, thickness):
-        w.Transfer(shape, STEPControl_AsIs)
+        builder.Add(comp, shape)
     fd, tmp = tempfile.mkstemp(suffix=".step")
     os.close(fd)
     try:
         with _quiet():                 # OCP prints transfer statistics on the C stdout
+            w.Transfer(comp, STEPControl_AsIs)
             w.Write(tmp)
         with open(tmp, "rb") as f:
             return f.read()
