@@ -133,6 +133,13 @@ class UnitsDecl(Node):
 
 
 @dataclass(eq=False, slots=True)
+class ThicknessDecl(Node):
+    """``thickness 3 mm``: the extrusion thickness of the file's parts (at the top level) or of
+    one structure and its children (inside it); see docs/outputs.md."""
+    value: Node
+
+
+@dataclass(eq=False, slots=True)
 class Import(Node):
     path: str
     path_span: Span

@@ -194,9 +194,61 @@ branch nearest to satisfied at the starting geometry. This warning says the solv
 other branch (for Angle: a line now points the opposite way), which usually means the
 starting positions were far from the intended shape.
 """),
+    "W0501": ("hole refilled by another solid", """
+A hole cuts only the solid it is declared in. When that solid is then united with a sibling
+(or its parent's own geometry) that covers the hole, the hole is filled again and does not cut
+the final part. The warning names the solid that refills it and how much of the hole still
+cuts. Declare the hole in the common parent, so that it cuts everything united there:
+
+    solid lock {
+        solid body { b = Rectangle(center=(0, 0), width=40, height=30)
+                     hole key { k = Circle(center=(0, 8), radius=3) } }
+        solid shackle { s = Rectangle(center=(0, 14), width=30, height=8) }   # covers `key`
+    }
+    # fix: move `hole key { ... }` out of `body` into `lock`
+"""),
+    "W0502": ("hole cuts nothing", """
+The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
+solid (for example `CenterInside(bore, self)`) or declare it in the solid it should cut.
+"""),
+    "W0503": ("hole removes all of its solid", """
+The hole covers the whole solid it is declared in, so nothing of that solid is left. Make the
+hole smaller, or move it so that material remains around it.
+"""),
+    "W0504": ("solid falls apart into separate pieces", """
+The final shape of a solid part is several disconnected pieces; the warning lists which children
+or geometry make up each piece. Usually a child floats free of the body (feet, a handle) because
+a constraint places it with a gap, or it touches the body at a single point (a round end
+resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
+edge; if they really are separate parts, make the structure an
+`assembly` (its parts are separate by design and are not checked against each other).
+"""),
+    "W0505": ("engraving off the material", """
+A drawing inside a solid part runs outside the part's outline or across one of its holes, where
+there is no material to engrave. Move or shrink the drawing so that it lies on the material, or
+put a drawing that is only an illustration at assembly level, beside the part.
+"""),
+    "W0506": ("geometry that adds nothing", """
+A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
+shape: typically copies of a pattern that land inside a filled solid, or a feature placed at the
+wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it.
+"""),
+    "W0507": ("wall thinner than the minimum", """
+Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
+`aidl check --min-wall MM` or `aidl render --min-wall MM`; 0 turns it off): a laser or router
+burns through or breaks such a wall. The warning names the holes and the outer edge that the
+wall lies between, its approximate width and length and where it is. Move or shrink the hole
+so that enough material is left.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole slot { r = Rectangle(center=(0, 6.85), width=10, height=6) }   # 0.15 mm to the edge
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0402": ("open outline", """
-Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop.
+Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;
+an open chain is written as engraving, not cut.
 Share endpoints (`Line(start=a.end, end=b.start)`) or add Coincident constraints.
 """),
 }

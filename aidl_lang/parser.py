@@ -42,6 +42,9 @@ class _PostLex:
     always_accept = ("_NL",)
 
     def process(self, stream):
+        return self._process(_retype_thickness(stream))
+
+    def _process(self, stream):
         depth = 0
         pending = None
         prev = None
@@ -66,6 +69,28 @@ class _PostLex:
             yield tok
         if pending is not None:
             yield pending
+
+
+def _retype_thickness(stream):
+    """``thickness`` at the start of a statement and followed by a number, a name or a sign is the
+    ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME."""
+    prev = None
+    held = None
+    for tok in stream:
+        if held is not None:
+            if tok.type in ("NUMBER", "NAME", "ADD_OP"):
+                held = Token.new_borrow_pos("THICKNESS", str(held), held)
+            yield held
+            held = None
+        if (tok.type == "NAME" and str(tok) == "thickness"
+                and (prev is None or prev.type in ("_NL", "SEMICOLON", "LBRACE", "RBRACE"))):
+            held = tok
+            prev = tok
+            continue
+        prev = tok
+        yield tok
+    if held is not None:
+        yield held
 
 
 _LARK: Lark | None = None
@@ -374,6 +399,9 @@ class _Builder(Transformer):
         last = _span(self.path, parts[-1])
         tsp = Span(sp.file, sp.line, sp.col, last.end_line, last.end_col, sp.start, last.end)
         return A.Import(self.s(meta), path, tsp, str(alias) if alias else None)
+
+    def thickness_decl(self, meta, items):
+        return A.ThicknessDecl(self.s(meta), items[1])
 
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]

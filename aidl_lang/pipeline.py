@@ -1,4 +1,5 @@
-"""The pipeline in one call: parse -> check -> interpret -> solve (-> render, in cli/render).
+"""The pipeline in one call: parse -> check -> interpret -> solve -> booleans and the geometry
+checks on the final shape (:mod:`aidl_lang.output.checks`); the writers run in cli/render.
 
 Each stage appends diagnostics to one :class:`DiagnosticSink`; a stage runs only when the
 previous ones produced no errors.
@@ -11,6 +12,8 @@ from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
 from .geometry.model import Model
 from .parser import parse
+from .output.booleans import Drawing, render_model
+from .output.checks import MIN_WALL, check_drawing
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -20,6 +23,7 @@ class Compiled:
     sink: DiagnosticSink
     model: Model | None = None
     solve: SolveResult | None = None
+    drawing: Drawing | None = None      # the booleans' result, when the solve converged
 
     @property
     def ok(self) -> bool:
@@ -27,11 +31,11 @@ class Compiled:
 
 
 def compile_source(source: str, path: str, overrides: dict[str, str] | None = None,
-                   do_solve: bool = True) -> Compiled:
+                   do_solve: bool = True, min_wall: float = MIN_WALL) -> Compiled:
     """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics)."""
     sink = DiagnosticSink()
     try:
-        return _compile(sink, source, path, overrides, do_solve)
+        return _compile(sink, source, path, overrides, do_solve, min_wall)
     except RecursionError:
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", None,
@@ -39,7 +43,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         return Compiled(sink)
 
 
-def _compile(sink, source, path, overrides, do_solve) -> Compiled:
+def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL) -> Compiled:
     program = parse(source, path, sink)
     if sink.has_errors:
         return Compiled(sink)
@@ -53,9 +57,11 @@ def _compile(sink, source, path, overrides, do_solve) -> Compiled:
     result = solve(model)
     if not result.converged:
         report_failure(sink, result)
-    else:
-        check_branches(sink, model)
-    return Compiled(sink, model, result)
+        return Compiled(sink, model, result)
+    check_branches(sink, model)
+    drawing = render_model(model)
+    check_drawing(drawing, sink, min_wall)
+    return Compiled(sink, model, result, drawing)
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:

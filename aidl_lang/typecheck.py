@@ -175,6 +175,8 @@ class Checker:
             self.expr(st.value, scope)
         elif isinstance(st, A.ExprStmt):
             self.expr(st.expr, scope)
+        elif isinstance(st, A.ThicknessDecl):
+            self.expr(st.value, scope)
         elif isinstance(st, A.For):
             self.expr(st.iter, scope)
             self.stmts(st.body.stmts, _Scope(scope, {st.var}))

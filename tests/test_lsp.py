@@ -172,7 +172,7 @@ def test_hover_primitive_constraint_template_and_member():
     ("    r = Rectangle(center=(0, 0), width=2, height=3)\n    r.top.", {"start", "end", "length"}),
     ("    q = base.", {"body", "finger_holes", "dial", "foot", "bb"}),
     ("    q = base.body.bb.", {"top_left", "center_x", "width"}),
-    ("    q = self.", {"base", "cradle", "handset", "cord", "bb"}),
+    ("    q = self.", {"base", "cradle", "handset", "bb"}),
     ("    q = cradle.prong[0].", {"top_left", "width"}),
 ])
 def test_completion_after_a_dot(typed, expected):
@@ -206,9 +206,11 @@ def test_definition_and_references():
 
 def test_document_symbols_are_the_structure_tree():
     syms = an.document_symbols(TELEPHONE)
-    tel = next(s for s in syms if s.name == "telephone")
+    desk = next(s for s in syms if s.name == "desk")
+    assert desk.detail == "assembly" and [c.name for c in desk.children] == ["telephone", "cord"]
+    tel = desk.children[0]
     assert tel.kind == T.SymbolKind.Struct and tel.detail == "solid"
-    assert [c.name for c in tel.children] == ["base", "cradle", "handset", "cord"]
+    assert [c.name for c in tel.children] == ["base", "cradle", "handset"]
     base = tel.children[0]
     assert {"body", "foot", "finger_holes", "dial"} <= {c.name for c in base.children}
 

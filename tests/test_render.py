@@ -269,7 +269,7 @@ def test_svg_paths_flip_y(compile_text):
     d = rendered(compile_text, "solid s { r = Rectangle(bottom_left=(0, 10), width=5, height=5) }")
     svg = to_svg(d)
     path = re.search(r'<path d="M([^"]*)Z"', svg).group(1)
-    ys = sorted({round(float(p.split(",")[1]), 4) for p in path.split()})
+    ys = sorted({round(float(p.split(",")[1]), 4) for p in re.split(r"[ML]", path)})
     assert ys == [-15.0, -10.0]
 
 

@@ -76,6 +76,10 @@ def test_fmt_keeps_the_range(tmp_path):
 
 
 # ------------------------------------------------------------------ the session
+def _line_of(path, prefix: str) -> int:
+    return next(i for i, s in enumerate(path.read_text().splitlines(), 1) if s.startswith(prefix))
+
+
 def test_session_params_and_default_spans():
     from aidl_lang.serve.session import Session
     s = Session(TEL)
@@ -83,7 +87,8 @@ def test_session_params_and_default_spans():
     assert v["ok"] and v["svg"].startswith("<svg")
     p = {q["name"]: q for q in v["params"]}
     assert p["base_w"] == dict(p["base_w"], kind="length", unit="mm", value=160.0, default=160.0,
-                               min=40, max=320, step=1, declared=False, line=7)
+                               min=40, max=320, step=1, declared=False,
+                               line=_line_of(TEL, "param base_w"))
     assert v["dof"] == []                               # computed after the picture is out
     v = s.update_dof()
     assert sum(d["dof"] for d in v["dof"]) > 0 and v["version"] == 1
@@ -187,6 +192,19 @@ def test_download_with_values(client):
     assert bad.status_code == 422 and bad.json()["diagnostics"][0]["code"] == "E0113"
     assert client.get("/download/exe").status_code == 404
     assert client.get("/download/svg", params={"set": "nonsense"}).status_code == 400
+
+
+def test_download_dxf_is_the_cli_part(client):
+    """Every format `aidl render` writes is offered; the DXF re-read by ezdxf has the exact
+    dial circle (dial_r is 30 mm in the file; the download asks for 25 mm)."""
+    import io
+    import ezdxf
+    assert {"svg", "dxf", "png", "stl", "3mf", "step"} <= set(client.get("/api/formats").json())
+    r = client.get("/download/dxf", params={"set": "dial_r=25mm"})
+    assert r.status_code == 200 and 'filename="telephone.dxf"' in r.headers["content-disposition"]
+    doc = ezdxf.read(io.StringIO(r.content.decode()))
+    radii = sorted(e.dxf.radius for e in doc.modelspace().query("CIRCLE"))
+    assert any(abs(rr - 25.0) < 1e-9 for rr in radii), radii
 
 
 @pytest.mark.parametrize("path", [

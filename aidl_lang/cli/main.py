@@ -2,8 +2,11 @@
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
-An output file is written only when the whole pipeline succeeded (written to a temporary file
-beside it, then renamed), so a good drawing is never replaced by a broken one.
+An output file is written only when the whole pipeline succeeded and every requested format was
+produced (each written to a temporary file beside it, then renamed), so a good drawing is never
+replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
+directory as output, writes through a symlink (the link stays), and creates files with the
+user's umask (an existing file keeps its mode); docs/outputs.md has the details.
 """
 from __future__ import annotations
 
@@ -27,16 +30,36 @@ class _Parser(argparse.ArgumentParser):
 def _parser() -> argparse.ArgumentParser:
     p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
-    r = sub.add_parser("render", help="compile a .aidl file to SVG")
-    r.add_argument("file")
-    r.add_argument("-o", "--output", help="output .svg (default: FILE with .svg)")
+    r = sub.add_parser("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
+                       description="Compile FILE and write each -o output; the format follows "
+                                   "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
+                                   "unless the whole pipeline succeeded.")
+    r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
+    r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
+                   help="output file, format by extension; repeat for several "
+                        "(default: FILE with .svg)")
+    r.add_argument("--show", default="", metavar="LAYERS",
+                   help="debug layers in SVG/PNG, comma-separated: construction,holes,bboxes")
+    r.add_argument("--svg-style", choices=["preview", "laser"], default="preview",
+                   help="preview: filled solids (default); laser: stroke-only red cut and blue "
+                        "engrave hairlines, one element per loop")
+    r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
+    r.add_argument("--png-width", type=int, default=None, metavar="PX",
+                   help="PNG width in pixels (overrides --dpi)")
+    r.add_argument("--thickness", default=None, metavar="LENGTH",
+                   help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
+                        "`thickness`, else 3 mm)")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     c = sub.add_parser("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
@@ -107,7 +130,7 @@ def cmd_check(args) -> int:
     src = _read(args.file, args.json)
     if src is None:
         return 1
-    res = compile_source(src, args.file, _overrides(args.set))
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -148,35 +171,135 @@ def _print_dof(dofs) -> None:
         print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
 
 
+def _usage(msg: str) -> int:
+    print(f"aidl: error: {msg}", file=sys.stderr)
+    return 2
+
+
+def _length_mm(text: str) -> float | None:
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length."""
+    import re
+    m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
+        (m.group(2) or "mm").lower()]
+    return v if v > 0 else None
+
+
+def _outputs(args) -> list[Path] | int:
+    """The output paths, checked before compiling (usage errors exit 2): known extensions,
+    not the program itself, not a directory; a default only for a regular input file."""
+    from ..output import FORMATS
+    if args.output:
+        outs = [Path(o) for o in args.output]
+    else:
+        src = Path(args.file)
+        special = os.path.abspath(args.file).startswith(("/dev/", "/proc/"))
+        if args.file == "-" or special or not src.is_file():
+            if args.file == "-" or special or src.exists():
+                return _usage(f"`{args.file}` is not a regular file, so there is no default "
+                              "output name: give one with -o OUT.svg")
+            return []              # a missing file: reported as E0004 when read
+        if src.suffix.lower() == ".svg":
+            return _usage(f"the default output `{src.with_suffix('.svg')}` is the program "
+                          "itself: give an output name with -o")
+        outs = [src.with_suffix(".svg")]
+    seen = set()
+    for o in outs:
+        real = os.path.realpath(o)
+        if args.file != "-" and os.path.exists(args.file) and os.path.exists(real) \
+                and os.path.samefile(real, args.file):
+            return _usage(f"`{o}` is the program being rendered; refusing to overwrite it")
+        if o.is_dir():
+            return _usage(f"`{o}` is a directory; give a file name, e.g. {o / 'part.svg'}")
+        if o.suffix.lower() not in FORMATS:
+            return _usage(f"cannot tell the format of `{o}` from its extension; use one of "
+                          + ", ".join(sorted(FORMATS)))
+        if real in seen:
+            return _usage(f"`{o}` is given twice")
+        seen.add(real)
+    return outs
+
+
+def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
+    """Write every output or none: each to a temporary file beside its target, then renamed
+    over it.  A symlink is written through (its target is replaced, the link kept).  A new file
+    gets the permissions the umask allows (0666 & ~umask); an existing file keeps its mode.
+    Returns an error message, or None."""
+    staged = []
+    out = items[0][0] if items else ""
+    try:
+        for out, data in items:
+            target = Path(os.path.realpath(out))
+            try:
+                mode = os.stat(target).st_mode & 0o7777
+            except FileNotFoundError:
+                mask = os.umask(0)
+                os.umask(mask)
+                mode = 0o666 & ~mask
+            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                                       dir=str(target.parent))
+            staged.append((tmp, target))
+            with os.fdopen(fd, "wb") as f:
+                f.write(data)
+            os.chmod(tmp, mode)
+        for tmp, target in staged:
+            os.replace(tmp, target)
+        staged = []
+        return None
+    except OSError as e:
+        return f"cannot write `{out}`: {e.strerror or e}"
+    finally:
+        for tmp, _ in staged:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+
+
 def cmd_render(args) -> int:
     from ..pipeline import compile_source
-    from ..output import render_model, to_svg
-    src = _read(args.file, args.json)
-    if src is None:
-        return 1
-    res = compile_source(src, args.file, _overrides(args.set))
-    out = Path(args.output) if args.output else Path(args.file).with_suffix(".svg")
+    from ..output import MissingDependency, Options, build, encode
+    outs = _outputs(args)
+    if isinstance(outs, int):
+        return outs
+    show = tuple(x.strip() for x in args.show.split(",") if x.strip())
+    from ..output.svg import SHOW
+    if set(show) - set(SHOW):
+        return _usage(f"--show takes {', '.join(SHOW)}; got `{args.show}`")
+    thickness = None
+    if args.thickness is not None:
+        thickness = _length_mm(args.thickness)
+        if thickness is None:
+            return _usage(f"--thickness expects a positive length such as 3mm, got "
+                          f"`{args.thickness}`")
+    if args.file == "-":
+        src = sys.stdin.read()
+    else:
+        src = _read(args.file, args.json)
+        if src is None:
+            return 1
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    drawing = render_model(res.model)
-    for g in drawing.open_curves:
-        res.sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
-                         "line, not filled", g.span,
-                         hint="share endpoints between lines and arcs so they form a loop, or put "
-                              "the curve in a `drawing` structure")
-    svg = to_svg(drawing, title=res.model.root.name)
+    output = build(res.drawing, res.model.root.name)
+    opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
+                  thickness=thickness)
     try:
-        fd, tmp = tempfile.mkstemp(suffix=".svg", dir=str(out.parent.resolve()))
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(svg)
-        os.replace(tmp, out)
-    except OSError as e:
-        print(f"aidl: error: cannot write `{out}`: {e.strerror or e}", file=sys.stderr)
+        items = [(o, encode(output, o.suffix, opt)) for o in outs]
+    except MissingDependency as e:
+        print(f"aidl: error: {e}", file=sys.stderr)
         return 1
-    _emit(res.sink, args.json, True, {"output": str(out)})
+    err = _write_all(items)
+    if err:
+        print(f"aidl: error: {err}", file=sys.stderr)
+        return 1
+    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
     if not args.json:
-        print(f"wrote {out}")
+        for o in outs:
+            print(f"wrote {o}")
     return 0
 
 

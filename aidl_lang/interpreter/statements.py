@@ -12,7 +12,7 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.primitives import member as geom_member
-from ..geometry.values import (PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
 from ..sources import STDLIB
@@ -26,7 +26,8 @@ class Statements:
         self.root_dir = Path(program.path).resolve().parent
         fctx = self._load_file_decls(program, is_main=True)
         self.file = fctx
-        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def))]
+        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def,
+                                                               A.ThicknessDecl))]
         structs = [s for s in top if isinstance(s, A.StructDecl)]
         loose = [s for s in top if not isinstance(s, A.StructDecl) and not _is_plain_const(s)]
         for name in self.overrides:
@@ -53,6 +54,13 @@ class Statements:
             scope = Scope(fctx.scope, root, fctx)
             rest = [s for s in top if not _is_plain_const(s)]
             self._run_body(root, A.Block(program.span, rest), scope)
+        # `thickness 3 mm` at the top level: the default of every part (after the constants)
+        saved = self.struct, self.scope
+        self.struct, self.scope = None, fctx.scope
+        for s in program.stmts:
+            if isinstance(s, A.ThicknessDecl):
+                self._exec_stmt(s)
+        self.struct, self.scope = saved
         self.model.root = root
         return self.model
 
@@ -270,6 +278,8 @@ class Statements:
             self._assign(st)
         elif isinstance(st, A.ExprStmt):
             self._expr_stmt(st.expr)
+        elif isinstance(st, A.ThicknessDecl):
+            self._thickness(st)
         elif isinstance(st, A.For):
             self._for(st)
         elif isinstance(st, A.If):
@@ -285,6 +295,22 @@ class Statements:
             what = {A.ParamDecl: "param", A.Def: "def", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
             raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
                             hint=f"move the `{what}` line to the top of the file")
+
+    def _thickness(self, st) -> None:
+        """``thickness LENGTH``: the model's default (top level) or a structure's own, in mm."""
+        v = self.eval(st.value)
+        if not isinstance(v, Q) or v.dim not in (LEN, NUM):
+            raise EvalError("E0109", "`thickness` expects a length", st.value.span,
+                            hint="write it with a unit: `thickness 3 mm`")
+        val = Q(self._as_length(v, st.value.span), LEN).const()
+        if val is None or not val > 0:
+            raise EvalError("E0109", "`thickness` must be a positive length known before "
+                            "solving", st.value.span,
+                            hint="use a number or a param: `thickness 3 mm`")
+        if self.struct is None:
+            self.model.thickness = val
+        else:
+            self.struct.thickness = val
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:

@@ -5,6 +5,11 @@ A solid is the union of its faces and solid children minus its hole children; a 
 union of its faces; assembly children stay separate parts; drawing geometry is drawn as lines.
 Booleans use ``manifold3d.CrossSection``.  Circles and arcs are tessellated so that the chord
 deviation is below ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm).
+
+Besides the shapes, the renderer records what the exact outputs and the geometry checks need
+(:class:`Drawing` fields ``circles``, ``shapes``, ``cuts``, ``own``): every circle of the
+solved model (absolute center and radius, the source of arc recovery in
+:mod:`aidl_lang.output.part`), the shape of every structure, and what each hole cut.
 """
 from __future__ import annotations
 
@@ -30,11 +35,33 @@ class Part:
 
 
 @dataclass
+class Cut:
+    """A hole child ``hole`` of the solid ``owner``: ``region`` is what it removed (mm)."""
+    hole: Structure
+    owner: Structure
+    before: mf.CrossSection       # the owner's shape before its holes
+    region: mf.CrossSection       # before ∩ hole
+
+
+@dataclass
 class Drawing:
     parts: list[Part] = field(default_factory=list)
     lines: list[tuple[str, np.ndarray]] = field(default_factory=list)    # (style, Nx2 polyline)
     hole_outlines: list[np.ndarray] = field(default_factory=list)
     open_curves: list[Geometry] = field(default_factory=list)
+    # exact curves of the solved model, absolute: (cx, cy, r) in mm
+    circles: list[tuple[float, float, float]] = field(default_factory=list)
+    # engraving in exact form: ("line", p, q) | ("arc", c, r, a1, a2) | ("circle", c, r) |
+    # ("poly", Nx2 closed polyline); with its style and source geometry
+    strokes: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
+    shapes: dict = field(default_factory=dict)       # Structure -> its final CrossSection
+    own: dict = field(default_factory=dict)          # Structure -> [(Geometry, CrossSection)]
+    cuts: list[Cut] = field(default_factory=list)
+    construction: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
+    part_of: dict = field(default_factory=dict)      # Part name -> its Structure
+    # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
+    # the file's); parts without one are missing
+    thickness: dict = field(default_factory=dict)
 
     def bounds(self):
         xs, ys = [], []
@@ -56,6 +83,10 @@ class Renderer:
     def __init__(self, model: Model):
         self.m = model
         self.x = model.xs()
+        self.circles: list[tuple[float, float, float]] = []
+
+    def _circle(self, c, r) -> None:
+        self.circles.append((float(c[0]), float(c[1]), float(abs(r))))
 
     def P(self, p) -> np.ndarray:
         ox, oy = 0.0, 0.0
@@ -86,6 +117,7 @@ class Renderer:
             return np.array([self.P(g.points["start"]), self.P(g.points["end"])])
         c, s, e = (self.P(g.points[n]) for n in ("center", "start", "end"))
         r = float(np.hypot(*(s - c)))
+        self._circle(c, r)
         a1 = math.atan2(s[1] - c[1], s[0] - c[0])
         a2 = math.atan2(e[1] - c[1], e[0] - c[0])
         pts = self.arc_points(c, r, a1, a2)
@@ -98,10 +130,14 @@ class Renderer:
             r = abs(self.x[g.scalars["radius"].index])
             if r <= 0:
                 return None
-            return _cs(self.circle_points(self.P(g.points["center"]), r))
+            c = self.P(g.points["center"])
+            self._circle(c, r)
+            return _cs(self.circle_points(c, r))
         if k == "Slot":
             r = abs(self.x[g.scalars["radius"].index])
             a, b = self.P(g.points["start"]), self.P(g.points["end"])
+            self._circle(a, r)
+            self._circle(b, r)
             pts = np.vstack([self.circle_points(a, r), self.circle_points(b, r)])
             return mf.CrossSection.hull_points(pts.tolist())
         if k == "Ellipse":
@@ -126,8 +162,12 @@ class Renderer:
                 h = abs(self.x[g.scalars["height"].index])
                 r = min(r, w / 2 - 1e-6, h / 2 - 1e-6)
                 if r > 0:
-                    segs = segments_for(r) 
-                    cs = cs.offset(-r, mf.JoinType.Miter, 2.0).offset(r, mf.JoinType.Round, 2.0, segs)
+                    segs = segments_for(r)
+                    inner = cs.offset(-r, mf.JoinType.Miter, 2.0)
+                    for poly in inner.to_polygons():       # the corner arcs' centers
+                        for q in poly:
+                            self._circle(q, r)
+                    cs = inner.offset(r, mf.JoinType.Round, 2.0, segs)
             return cs
         return None
 
@@ -137,6 +177,7 @@ class Renderer:
         open_curves = []
         for g in s.geometry:
             if g.construction:
+                self.construct(g, out)
                 continue
             if s.kind == "drawing":
                 self.draw_lines(g, out)
@@ -151,12 +192,17 @@ class Renderer:
                 f = self.face(g)
                 if f is not None and not f.is_empty():
                     faces.append(f)
+                    out.own.setdefault(s, []).append((g, f))
         if open_curves:
             loops, rest = self.loops(open_curves)
-            faces += [_cs(lp) for lp in loops]
+            for lp, chain in loops:
+                f = _cs(lp)
+                faces.append(f)
+                out.own.setdefault(s, []).append((chain[0], f))
             for g in rest:
                 out.open_curves.append(g)
                 out.lines.append(("open", self.curve(g)))
+                self.stroke(g, "open", out)
         return faces
 
     def loops(self, curves: list[Geometry]):
@@ -191,27 +237,48 @@ class Renderer:
                     break
             if np.hypot(*(end - start)) <= _tol(start) and len(chain) >= 2 or (
                     len(chain) == 1 and len(pts[0]) > 3 and np.hypot(*(end - start)) <= _tol(start)):
-                loops.append(np.vstack([p[:-1] for p in pts]))
+                loops.append((np.vstack([p[:-1] for p in pts]), [curves[j] for j in chain]))
             else:
                 rest += [curves[j] for j in chain]
         return loops, rest
 
+    def stroke(self, g: Geometry, style: str, out: Drawing) -> None:
+        """The exact engraving stroke of a Line or Arc."""
+        if g.kind == "Line":
+            out.strokes.append((style, ("line", self.P(g.points["start"]), self.P(g.points["end"])), g))
+            return
+        c, s, e = (self.P(g.points[n]) for n in ("center", "start", "end"))
+        r = float(np.hypot(*(s - c)))
+        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
+        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
+        out.strokes.append((style, ("arc", c, r, a1, a2), g))
+
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
         if g.kind in ("Line", "Arc"):
             out.lines.append(("drawing", self.curve(g)))
+            self.stroke(g, "drawing", out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
             for a, b in text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
                                      g.data.get("valign", "baseline"), g.data.get("rotation", 0.0)):
                 out.lines.append(("drawing", np.array([p + a, p + b])))
+                out.strokes.append(("drawing", ("line", p + a, p + b), g))
         elif g.kind == "Point":
             return
+        elif g.kind == "Circle":
+            r = abs(self.x[g.scalars["radius"].index])
+            c = self.P(g.points["center"])
+            self._circle(c, r)
+            out.lines.append(("drawing", np.vstack([self.circle_points(c, r),
+                                                    self.circle_points(c, r)[:1]])))
+            out.strokes.append(("drawing", ("circle", c, r), g))
         else:
             f = self.face(g)
             if f is not None:
                 for poly in f.to_polygons():
                     pl = np.asarray(poly)
                     out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
+                    out.strokes.append(("drawing", ("poly", pl), g))
 
     def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
         """Union of a solid or hole structure, holes subtracted for solids."""
@@ -223,22 +290,34 @@ class Renderer:
             elif c.kind == "assembly":
                 self.assembly(c, out)
             elif c.kind == "hole" and s.kind == "solid":
-                holes.append(self.shape(c, out))
+                holes.append((c, self.shape(c, out)))
             else:
                 faces.append(self.shape(c, out))
         acc = mf.CrossSection.batch_boolean(faces, mf.OpType.Add) if faces else mf.CrossSection()
         if holes:
-            cut = mf.CrossSection.batch_boolean(holes, mf.OpType.Add)
+            cut = mf.CrossSection.batch_boolean([h for _, h in holes], mf.OpType.Add)
             for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
+            for c, h in holes:
+                out.cuts.append(Cut(c, s, acc, acc ^ h))
             acc = acc - cut
         if getattr(s, "finish", None):
             acc = finish(s, acc, self.x)
+        out.shapes[s] = acc
         return acc
+
+    def construct(self, g: Geometry, out: Drawing) -> None:
+        """Construction geometry, kept only for ``--show construction``."""
+        mark = len(out.strokes), len(out.lines), len(self.circles)
+        self.draw_lines(g, out)
+        out.construction += out.strokes[mark[0]:]
+        del out.strokes[mark[0]:], out.lines[mark[1]:], self.circles[mark[2]:]
 
     def drawing(self, s: Structure, out: Drawing) -> None:
         for g in s.geometry:
-            if not g.construction:
+            if g.construction:
+                self.construct(g, out)
+            else:
                 self.draw_lines(g, out)
         for c in s.children.values():
             if c.kind == "drawing":
@@ -252,6 +331,7 @@ class Renderer:
         faces = self.own_faces(s, out)
         if faces:
             out.parts.append(Part(s.path, "solid", mf.CrossSection.batch_boolean(faces, mf.OpType.Add)))
+            out.part_of[s.path] = s
         for c in s.children.values():
             if c.kind == "drawing":
                 self.drawing(c, out)
@@ -264,6 +344,7 @@ class Renderer:
         at = len(out.parts)             # a part is drawn under the parts of its drawings
         shp = self.shape(s, out)
         out.parts.insert(at, Part(s.path, s.kind, shp))
+        out.part_of[s.path] = s
         if s.kind == "hole":
             for poly in shp.to_polygons():
                 out.hole_outlines.append(np.asarray(poly))
@@ -277,6 +358,13 @@ class Renderer:
             self.drawing(root, out)
         else:
             self.part(root, out)
+        out.circles = self.circles
+        default = getattr(self.m, "thickness", None)
+        for name, s in out.part_of.items():
+            t = next((getattr(a, "thickness") for a in [s, *s.ancestors()]
+                      if getattr(a, "thickness", None) is not None), default)
+            if t is not None:
+                out.thickness[name] = float(t)
         return out
 
 

@@ -31,11 +31,13 @@ from starlette.responses import JSONResponse, PlainTextResponse, Response
 from starlette.routing import Route, WebSocketRoute
 from starlette.websockets import WebSocket, WebSocketDisconnect
 
+from .. import output
 from .session import Session
 
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "svg": "image/svg+xml", "png": "image/png",
-         "dxf": "application/dxf", "stl": "model/stl", "json": "application/json"}
+         "dxf": "application/dxf", "stl": "model/stl", "json": "application/json",
+         "3mf": "model/3mf", "step": "model/step", "stp": "model/step"}
 
 
 def static_files() -> dict[str, bytes]:
@@ -45,16 +47,15 @@ def static_files() -> dict[str, bytes]:
 
 
 def writers() -> dict[str, object]:
-    """Output formats for downloads: extension -> ``f(drawing, title) -> str | bytes``.
+    """Output formats for downloads: extension -> ``f(drawing, title) -> bytes``.
 
-    Asks the output package: if it offers a ``WRITERS`` table (extension -> writer), every
-    format in it is offered; the SVG writer always is.  The CLI's ``render`` writes the same
-    formats."""
-    from .. import output
-    table = {"svg": lambda d, title: output.to_svg(d, title=title)}
-    for ext, fn in (getattr(output, "WRITERS", None) or {}).items():
-        table[ext.lower().lstrip(".")] = fn
-    return table
+    Every format of :data:`aidl_lang.output.FORMATS` (the ones ``aidl render`` writes by
+    extension: svg, dxf, png, stl, 3mf, step): the drawing becomes the exact output model
+    (:func:`aidl_lang.output.build`) and is encoded by the same writer the CLI uses.  A format
+    whose optional library is missing raises :class:`aidl_lang.output.MissingDependency`."""
+    def writer(suffix: str):
+        return lambda d, title: output.encode(output.build(d, title), suffix)
+    return {s.lstrip("."): writer(s) for s in output.FORMATS}
 
 
 class LocalOnly:
@@ -161,7 +162,10 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
             drawing, extra = await run_in_threadpool(hub.session.drawing, values)
             if drawing is None:
                 return JSONResponse({"ok": False, "diagnostics": extra}, status_code=422)
-            body = await run_in_threadpool(table[fmt], drawing, extra)
+            try:
+                body = await run_in_threadpool(table[fmt], drawing, extra)
+            except output.MissingDependency as e:
+                return PlainTextResponse(str(e), status_code=501)
         if isinstance(body, str):
             body = body.encode("utf-8")
         stem = Path(hub.session.name).stem or "part"

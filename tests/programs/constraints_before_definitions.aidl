@@ -3,7 +3,7 @@
 units mm
 
 solid bracket {
-    Above(tab, base)
+    Above(tab, base, gap=-2 mm)      // overlap, so that the bracket is one piece
     AlignCenterX(tab, base)
     Fillet([base.plate.top, base.plate.right], radius=2)
     solid base {

@@ -1,0 +1,390 @@
+"""The exact output model and its writers (docs/outputs.md): arcs recovered from the solved
+model, SVG re-read by svgelements, DXF re-read by ezdxf, PNG, STL/3MF re-read by trimesh."""
+import io
+import math
+import struct
+
+import numpy as np
+import pytest
+
+from conftest import EXAMPLES
+from aidl_lang.geometry.tessellate import CHORD_TOL
+from aidl_lang.output import Options, build, encode
+from aidl_lang.output.part import Arc, Circle, Line
+
+PLATE = """
+units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole bore {
+        c = Circle(center=(0, 0), radius=5)
+    }
+    CenterInside(bore, self)
+}
+"""
+
+
+def output_of(compile_text, src):
+    c = compile_text(src)
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    return build(c.drawing, c.model.root.name), c
+
+
+_compiled = {}
+
+
+def example(path):
+    if path not in _compiled:
+        from aidl_lang.pipeline import compile_source
+        c = compile_source(path.read_text(), str(path))
+        assert c.ok
+        _compiled[path] = (build(c.drawing, c.model.root.name), c)
+    return _compiled[path]
+
+
+# ------------------------------------------------------------------ the output model
+def test_plate_area_and_perimeter_are_exact(compile_text):
+    o, _ = output_of(compile_text, PLATE)
+    (part,) = o.parts
+    assert part.area == pytest.approx(800 - 25 * math.pi, rel=1e-9)
+    assert part.perimeter == pytest.approx(120 + 10 * math.pi, rel=1e-9)
+    outer, bore = sorted(part.loops, key=lambda lp: -lp.area)
+    assert all(isinstance(s, Line) for s in outer.segments) and len(outer.segments) == 4
+    (c,) = bore.segments
+    assert isinstance(c, Circle) and c.radius == pytest.approx(5, abs=1e-12) and bore.is_hole
+
+
+def test_arcs_cut_by_lines_end_exactly_on_both(compile_text):
+    # a disc cut by a rectangle hole: a D shape; the arc ends where the line meets the circle
+    o, _ = output_of(compile_text, """
+solid d {
+    disc = Circle(center=(0, 0), radius=10)
+    hole flat { r = Rectangle(center=(0, 8), width=30, height=4) }
+}""")
+    (part,) = o.parts
+    (loop,) = part.loops
+    arcs = [s for s in loop.segments if isinstance(s, Arc)]
+    lines = [s for s in loop.segments if isinstance(s, Line)]
+    assert len(arcs) == 1 and len(lines) == 1
+    y = 6.0
+    x = math.sqrt(100 - y * y)
+    ends = sorted([arcs[0].start, arcs[0].end])
+    assert ends[0] == pytest.approx((-x, y), abs=1e-9) and ends[1] == pytest.approx((x, y), abs=1e-9)
+    # exact area: the disc minus the circular segment above y = 6
+    theta = 2 * math.acos(y / 10)
+    assert part.area == pytest.approx(math.pi * 100 - 50 * (theta - math.sin(theta)), rel=1e-9)
+
+
+def test_rounded_rectangle_corners_are_arcs(compile_text):
+    o, _ = output_of(compile_text, "solid s { r = RoundedRectangle(center=(0, 0), width=40, "
+                                   "height=20, corner_radius=4) }")
+    (loop,) = o.parts[0].loops
+    arcs = [s for s in loop.segments if isinstance(s, Arc)]
+    assert len(arcs) == 4 and all(a.radius == pytest.approx(4, abs=1e-9) for a in arcs)
+    assert all(abs(a.sweep) == pytest.approx(math.pi / 2, abs=1e-9) for a in arcs)
+    assert o.area == pytest.approx(800 - (4 - math.pi) * 16, rel=1e-9)
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_example_loops_are_closed_and_close_to_the_booleans(path):
+    o, c = example(path)
+    d = c.drawing
+    for p, loopsrc in zip(o.parts, [q for q in d.parts if not q.shape.is_empty()]):
+        for lp in p.loops:
+            segs = lp.segments
+            if len(segs) == 1 and isinstance(segs[0], Circle):
+                continue
+            for a, b in zip(segs, segs[1:] + segs[:1]):
+                assert math.dist(a.end, b.start) < 1e-9
+        # the exact area differs from the chords' by at most the sagitta along the outline
+        assert abs(p.area - loopsrc.shape.area()) <= CHORD_TOL * p.perimeter + 1e-9
+        assert p.perimeter >= loopsrc.shape.area() * 0 and p.perimeter > 0
+
+
+# ------------------------------------------------------------------ DXF, re-read by ezdxf
+def _dxf(o):
+    import ezdxf
+    return ezdxf.read(io.StringIO(encode(o, ".dxf").decode()))
+
+
+def test_dxf_bore_is_a_circle_and_units_are_mm(compile_text):
+    o, _ = output_of(compile_text, """
+solid flange {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole bore { c = Circle(center=(0, 0), diameter=22) }
+}""")
+    doc = _dxf(o)
+    assert doc.header["$INSUNITS"] == 4 and doc.header["$MEASUREMENT"] == 1
+    msp = doc.modelspace()
+    (circle,) = msp.query("CIRCLE")
+    assert circle.dxf.radius == pytest.approx(11.0, abs=1e-9) and circle.dxf.layer == "CUT"
+    (pl,) = msp.query("LWPOLYLINE")
+    assert pl.closed and len(pl) == 4 and pl.dxf.layer == "CUT"
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_example_dxf_matches_the_model(path):
+    o, c = example(path)
+    doc = _dxf(o)
+    msp = doc.modelspace()
+    assert doc.header["$INSUNITS"] == 4
+    layers = {e.dxf.layer for e in msp}
+    cut_layers = {e.dxf.layer for e in msp if e.dxf.layer != "ENGRAVE"}
+    if len(o.parts) == 1:
+        assert cut_layers == {"CUT"}
+    else:
+        assert cut_layers == {"CUT-" + p.name for p in o.parts}
+    assert ("ENGRAVE" in layers) == bool(o.engrave)
+    loops = [lp for p in o.parts for lp in p.loops]
+    cut = [e for e in msp if e.dxf.layer != "ENGRAVE"]
+    assert len(cut) == len(loops)
+    radii = np.array([r for _, _, r in c.drawing.circles])
+    for e in msp.query("CIRCLE"):
+        assert np.min(np.abs(radii - e.dxf.radius)) < 1e-9
+    # every cut entity encloses exactly the area of its loop (from the entity's own data)
+    dxf_areas = sorted(abs(_entity_area(e)) for e in cut)
+    model_areas = sorted(abs(lp.area) for lp in loops)
+    assert dxf_areas == pytest.approx(model_areas, rel=1e-9, abs=1e-9)
+
+
+def _entity_area(e):
+    """Area of a CIRCLE or a closed LWPOLYLINE with bulges, from the DXF data alone."""
+    if e.dxftype() == "CIRCLE":
+        return math.pi * e.dxf.radius ** 2
+    pts = list(e.get_points("xyb"))
+    a = 0.0
+    for (x0, y0, b), (x1, y1, _) in zip(pts, pts[1:] + pts[:1]):
+        a += 0.5 * (x0 * y1 - x1 * y0)
+        if b:
+            theta = 4 * math.atan(b)
+            chord = math.hypot(x1 - x0, y1 - y0)
+            r = chord / (2 * math.sin(abs(theta) / 2))
+            a += 0.5 * r * r * (theta - math.sin(theta))
+    return a
+
+
+def _poly_area(P):
+    x, y = P[:, 0], P[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+# ------------------------------------------------------------------ SVG, re-read by svgelements
+def _svg_loops(svg_text):
+    """Every closed subpath of every shape, as a polygon (arcs sampled at 512 points)."""
+    import svgelements as se
+    doc = se.SVG.parse(io.StringIO(svg_text), reify=True)
+    out = []
+    for el in doc.elements():
+        if not isinstance(el, se.Shape):
+            continue
+        for sub in se.Path(el).as_subpaths():
+            pts = []
+            for seg in sub:
+                if isinstance(seg, se.Line):
+                    pts.append((seg.start.x, seg.start.y))
+                elif isinstance(seg, se.Arc):
+                    pts += [tuple(q) for q in seg.npoint(np.linspace(0, 1, 513))[:-1]]
+            if len(pts) >= 3:
+                out.append(np.array(pts, dtype=float))
+    return out
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_example_svg_loops_match_the_dxf(path):
+    """svgelements (an independent reader) sees the same cut loops as ezdxf: same count and,
+    loop by loop, the same enclosed area; in both layouts (preview and laser)."""
+    o, _ = example(path)
+    msp = _dxf(o).modelspace()
+    dxf_areas = sorted(abs(_entity_area(e)) for e in msp if e.dxf.layer != "ENGRAVE")
+    for style in ("preview", "laser"):
+        svg = encode(o, ".svg", Options(style=style)).decode()
+        cut_only = _cut_group(svg)
+        areas = sorted(abs(_poly_area(pts)) for pts in _svg_loops(cut_only))
+        assert len(areas) == len(dxf_areas)
+        # the svg is scaled mm -> px by svgelements (96 dpi): compare ratios to the largest
+        k = areas[-1] / dxf_areas[-1]
+        assert k == pytest.approx((96 / 25.4) ** 2, rel=1e-4)
+        assert [a / k for a in areas] == pytest.approx(dxf_areas, rel=1e-4, abs=1e-4)
+
+
+def _cut_group(svg: str) -> str:
+    """The SVG with only the `cut` group kept (the others removed)."""
+    import xml.etree.ElementTree as ET
+    ET.register_namespace("", "http://www.w3.org/2000/svg")
+    root = ET.fromstring(svg)
+    for g in list(root):
+        if g.get("id") not in ("cut",) and g.tag.endswith("}g"):
+            root.remove(g)
+    return ET.tostring(root, encoding="unicode")
+
+
+def test_svg_uses_arcs_and_circles_and_no_debug_layers_by_default(compile_text):
+    o, _ = output_of(compile_text, PLATE)
+    svg = encode(o, ".svg").decode()
+    assert 'id="cut"' in svg and 'id="engrave"' in svg
+    assert 'id="holes"' not in svg and 'id="bboxes"' not in svg and "dasharray" not in svg
+    assert "A5,5 0 " in svg                    # the bore as two exact half arcs
+    laser = encode(o, ".svg", Options(style="laser")).decode()
+    assert '<circle cx="0" cy="0" r="5"' in laser and 'fill="none"' in laser
+    debug = encode(o, ".svg", Options(show=("holes", "bboxes"))).decode()
+    assert 'id="holes"' in debug and 'id="bboxes"' in debug
+
+
+def test_refilled_hole_is_not_drawn_as_a_hole(compile_text):
+    """A hole wholly refilled by a sibling leaves no trace in the cut layer (the old `holes`
+    group drew its dashed outline)."""
+    o, c = output_of(compile_text, """
+solid lock {
+    solid body {
+        b = Rectangle(center=(0, 0), width=40, height=30)
+        hole key { k = Circle(center=(0, 8), radius=3) }
+    }
+    solid shackle { s = Rectangle(center=(0, 12), width=30, height=20) }
+}""")
+    (part,) = o.parts
+    assert len(part.loops) == 1 and part.area == pytest.approx(40 * 30 + 30 * 7, rel=1e-9)
+    assert "W0501" in [d.code for d in c.sink.items]
+    assert "dasharray" not in encode(o, ".svg").decode()
+
+
+# ------------------------------------------------------------------ PNG
+def test_png_has_the_requested_width(compile_text):
+    pytest.importorskip("cairosvg")
+    o, _ = output_of(compile_text, PLATE)
+    png = encode(o, ".png", Options(width=321))
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    w, h = struct.unpack(">II", png[16:24])
+    assert w == 321 and h == round(321 * (20 + 4) / (40 + 4)) or abs(h - 321 * 24 / 44) <= 1
+    big = encode(o, ".png", Options(dpi=192))
+    w2, _ = struct.unpack(">II", big[16:24])
+    assert w2 == pytest.approx(44 / 25.4 * 192, abs=1.5)       # 40 mm + 2 x 2 mm margin
+
+
+# ------------------------------------------------------------------ STL / 3MF
+def test_stl_and_3mf_are_watertight_with_the_right_volume(compile_text):
+    trimesh = pytest.importorskip("trimesh")
+    o, c = output_of(compile_text, PLATE)
+    area = c.drawing.parts[0].shape.area()
+    stl = trimesh.load(io.BytesIO(encode(o, ".stl", Options(thickness=3))), file_type="stl")
+    assert stl.is_watertight and stl.volume == pytest.approx(area * 3, rel=1e-6)
+    assert stl.bounds[:, 2] == pytest.approx([0, 3])
+    scene = trimesh.load(io.BytesIO(encode(o, ".3mf", Options(thickness=2))), file_type="3mf")
+    (mesh,) = scene.geometry.values()
+    assert mesh.is_watertight and mesh.volume == pytest.approx(area * 2, rel=1e-6)
+
+
+def test_3mf_has_one_body_per_assembly_part():
+    trimesh = pytest.importorskip("trimesh")
+    path = [p for p in EXAMPLES if p.stem == "mounting_plate"][0]
+    o, c = example(path)
+    scene = trimesh.load(io.BytesIO(encode(o, ".3mf")), file_type="3mf")
+    assert len(scene.geometry) == len(o.parts) == 5
+    areas = {p.name: p.shape.area() for p in c.drawing.parts}
+    for name, mesh in scene.geometry.items():
+        assert mesh.is_watertight
+        assert mesh.volume == pytest.approx(areas[name] * 3.0, rel=1e-6)    # default 3 mm
+
+
+# ------------------------------------------------------------------ thickness
+THICK = """param thickness = 24 mm
+thickness 4 mm
+assembly kit {
+    solid a {
+        thickness 6 mm
+        r = Rectangle(center=(0, 0), width=10, height=10)
+    }
+    solid b {
+        r = Rectangle(center=(30, 0), width=thickness, height=10)
+    }
+}
+"""
+
+
+def test_thickness_file_default_and_per_structure_override(compile_text):
+    trimesh = pytest.importorskip("trimesh")
+    o, c = output_of(compile_text, THICK)
+    assert {p.name: p.thickness for p in o.parts} == {"kit.a": 6.0, "kit.b": 4.0}
+    scene = trimesh.load(io.BytesIO(encode(o, ".3mf")), file_type="3mf")
+    vols = {n: g.volume for n, g in scene.geometry.items()}
+    # `param thickness` is still an ordinary name: b is 24 mm wide
+    assert vols == pytest.approx({"kit.a": 100 * 6.0, "kit.b": 240 * 4.0}, rel=1e-9)
+    # --thickness overrides the program's
+    stl = trimesh.load(io.BytesIO(encode(o, ".stl", Options(thickness=2))), file_type="stl")
+    assert stl.volume == pytest.approx((100 + 240) * 2, rel=1e-9)
+
+
+def test_thickness_statement_and_assignment_coexist(compile_text):
+    o, c = output_of(compile_text, """solid s {
+    thickness = 3
+    thickness 2 in
+    r = Rectangle(center=(0, 0), width=thickness, height=1)
+}""")
+    assert o.parts[0].thickness == pytest.approx(50.8) and o.area == pytest.approx(3.0)
+
+
+@pytest.mark.parametrize("src,msg", [
+    ("thickness -2 mm\nsolid s { r = Rectangle(center=(0, 0), width=1, height=1) }",
+     "positive length"),
+    ("thickness 30 deg\nsolid s { r = Rectangle(center=(0, 0), width=1, height=1) }",
+     "expects a length"),
+])
+def test_bad_thickness_is_a_located_error(compile_text, src, msg):
+    c = compile_text(src)
+    (d,) = c.sink.errors()
+    assert d.code == "E0109" and msg in d.message and d.span.line == 1 and d.span.col == 11
+
+
+def test_thickness_formats_and_round_trips():
+    from aidl_lang.editor.fmt import format_source
+    src = "thickness   3mm\nsolid s { thickness 2 mm; r = Rectangle(center=(0,0), width=4, height=4) }\n"
+    out = format_source(src)
+    assert out.startswith("thickness 3 mm\nsolid s {\n    thickness 2 mm\n")
+    assert format_source(out) == out
+
+
+# ------------------------------------------------------------------ STEP (the `step` extra)
+def test_step_keeps_circles_as_cylinders_and_the_exact_volume(compile_text, tmp_path):
+    pytest.importorskip("OCP")
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GeomAbs import GeomAbs_Cylinder, GeomAbs_Plane
+    from OCP.GProp import GProp_GProps
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_FACE, TopAbs_SOLID
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    o, _ = output_of(compile_text, """thickness 3 mm
+assembly kit {
+    solid plate {
+        body = RoundedRectangle(center=(0, 0), width=40, height=20, corner_radius=3)
+        hole bore { c = Circle(center=(0, 0), radius=5) }
+    }
+    solid washer {
+        thickness 1.5 mm
+        d = Circle(center=(40, 0), radius=6)
+        hole h { c = Circle(center=(40, 0), radius=2.5) }
+    }
+}""")
+    path = tmp_path / "kit.step"
+    path.write_bytes(encode(o, ".step"))
+    r = STEPControl_Reader()
+    assert r.ReadFile(str(path)) == 1
+    r.TransferRoots()
+    shape = r.OneShape()
+    g = GProp_GProps()
+    BRepGProp.VolumeProperties_s(shape, g)
+    exact = (800 - (4 - math.pi) * 9 - 25 * math.pi) * 3 + (36 - 6.25) * math.pi * 1.5
+    assert g.Mass() == pytest.approx(exact, rel=1e-6)
+    kinds = []
+    e = TopExp_Explorer(shape, TopAbs_FACE)
+    while e.More():
+        kinds.append(BRepAdaptor_Surface(TopoDS.Face(e.Current())).GetType())
+        e.Next()
+    # 4 rounded corners + the bore + the washer's outside and inside
+    assert kinds.count(GeomAbs_Cylinder) == 7
+    assert kinds.count(GeomAbs_Plane) == 4 + 2 + 2
+    e, n = TopExp_Explorer(shape, TopAbs_SOLID), 0
+    while e.More():
+        n += 1
+        e.Next()
+    assert n == 2

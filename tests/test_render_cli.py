@@ -1,0 +1,136 @@
+"""`aidl render`: the format by extension, several -o, and file safety (docs/outputs.md,
+"Writing files"): never the program itself, no directory, symlinks written through, no
+default name for /dev/stdin, the umask's permissions, an existing file's mode kept."""
+import io
+import os
+import stat
+import sys
+
+import pytest
+
+from aidl_lang.cli.main import main
+
+GOOD = """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    hole h { c = Circle(center=(0, 0), diameter=22 mm) }
+}
+"""
+BAD = "solid s { c = Circel(center=(0, 0), radius=5) }\n"
+
+
+@pytest.fixture
+def good(tmp_path):
+    p = tmp_path / "good.aidl"
+    p.write_text(GOOD)
+    return p
+
+
+def listing(d):
+    return sorted(os.listdir(d))
+
+
+def test_several_outputs_by_extension(good, tmp_path, capsys):
+    import ezdxf
+    outs = [tmp_path / f"part.{e}" for e in ("svg", "dxf", "png", "stl", "3mf")]
+    args = ["render", str(good)]
+    for o in outs:
+        args += ["-o", str(o)]
+    assert main(args) == 0
+    assert all(o.stat().st_size > 0 for o in outs)
+    assert outs[0].read_text().startswith("<svg")
+    doc = ezdxf.readfile(outs[1])
+    (c,) = doc.modelspace().query("CIRCLE")
+    assert c.dxf.radius == pytest.approx(11.0, abs=1e-9)
+    assert outs[2].read_bytes()[:4] == b"\x89PNG"
+    assert len(outs[3].read_bytes()) == 84 + 50 * int.from_bytes(outs[3].read_bytes()[80:84], "little")
+    assert capsys.readouterr().out.count("wrote ") == 5
+
+
+def test_unknown_extension_is_a_usage_error_and_writes_nothing(good, tmp_path, capsys):
+    before = listing(tmp_path)
+    assert main(["render", str(good), "-o", str(tmp_path / "a.svg"),
+                 "-o", str(tmp_path / "b.pdf")]) == 2
+    assert "cannot tell the format of" in capsys.readouterr().err
+    assert listing(tmp_path) == before
+
+
+def test_failed_compile_writes_none_of_the_outputs(good, tmp_path):
+    a, b = tmp_path / "a.svg", tmp_path / "a.dxf"
+    assert main(["render", str(good), "-o", str(a), "-o", str(b)]) == 0
+    old = a.read_bytes(), b.read_bytes()
+    bad = tmp_path / "bad.aidl"
+    bad.write_text(BAD)
+    assert main(["render", str(bad), "-o", str(a), "-o", str(b)]) == 1
+    assert (a.read_bytes(), b.read_bytes()) == old
+
+
+def test_never_overwrites_the_program(tmp_path, capsys):
+    prog = tmp_path / "prog.svg"               # a program that happens to be named .svg
+    prog.write_text(GOOD)
+    assert main(["render", str(prog)]) == 2
+    assert "is the program itself" in capsys.readouterr().err
+    assert prog.read_text() == GOOD
+    assert main(["render", str(prog), "-o", str(prog)]) == 2
+    assert "refusing to overwrite" in capsys.readouterr().err
+    assert prog.read_text() == GOOD and listing(tmp_path) == ["prog.svg"]
+    p2 = tmp_path / "x.aidl"
+    p2.write_text(GOOD)
+    assert main(["render", str(p2), "-o", str(p2)]) == 2
+    assert p2.read_text() == GOOD
+
+
+def test_directory_output_is_a_clear_error_and_leaves_no_tmp_file(good, tmp_path, capsys):
+    d = tmp_path / "out"
+    d.mkdir()
+    assert main(["render", str(good), "-o", str(d)]) == 2
+    assert "is a directory" in capsys.readouterr().err
+    assert listing(d) == [] and listing(tmp_path) == ["good.aidl", "out"]
+
+
+def test_symlink_is_written_through_and_kept(good, tmp_path):
+    target = tmp_path / "real.svg"
+    target.write_text("old")
+    link = tmp_path / "link.svg"
+    link.symlink_to(target.name)
+    assert main(["render", str(good), "-o", str(link)]) == 0
+    assert link.is_symlink() and os.readlink(link) == "real.svg"
+    assert target.read_text().startswith("<svg")
+    assert listing(tmp_path) == ["good.aidl", "link.svg", "real.svg"]
+
+
+def test_dev_stdin_needs_an_output_name(good, tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr(sys, "stdin", io.StringIO(GOOD))
+    assert main(["render", "/dev/stdin"]) == 2
+    assert "no default output name" in capsys.readouterr().err
+    assert not os.path.exists("/dev/stdin.svg")
+    out = tmp_path / "s.svg"
+    assert main(["render", "-", "-o", str(out)]) == 0 and out.exists()
+
+
+def test_new_files_follow_the_umask_and_existing_files_keep_their_mode(good, tmp_path):
+    old = os.umask(0o022)
+    try:
+        a = tmp_path / "a.svg"
+        assert main(["render", str(good), "-o", str(a)]) == 0
+        assert stat.S_IMODE(a.stat().st_mode) == 0o644
+        os.umask(0o077)
+        b = tmp_path / "b.dxf"
+        assert main(["render", str(good), "-o", str(b)]) == 0
+        assert stat.S_IMODE(b.stat().st_mode) == 0o600
+        os.chmod(a, 0o664)
+        assert main(["render", str(good), "-o", str(a)]) == 0
+        assert stat.S_IMODE(a.stat().st_mode) == 0o664
+    finally:
+        os.umask(old)
+
+
+def test_show_and_thickness_options(good, tmp_path, capsys):
+    import trimesh
+    svg, stl = tmp_path / "d.svg", tmp_path / "t.stl"
+    assert main(["render", str(good), "-o", str(svg), "--show", "holes,bboxes",
+                 "-o", str(stl), "--thickness", "0.25in"]) == 0
+    assert 'id="holes"' in svg.read_text() and 'id="bboxes"' in svg.read_text()
+    m = trimesh.load(stl)
+    assert m.bounds[1][2] == pytest.approx(6.35)
+    assert main(["render", str(good), "-o", str(svg), "--show", "nope"]) == 2
+    assert main(["render", str(good), "-o", str(stl), "--thickness", "-1"]) == 2
