@@ -7,11 +7,17 @@ line is blanked (its braces kept) and the file is parsed again, so one run repor
 """
 from __future__ import annotations
 
+import hashlib
+import os
 import re
+import stat
+import tempfile
+import threading
 from pathlib import Path
 
-from lark import Lark, Token, Transformer, Tree, v_args
-from lark.exceptions import VisitError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark import Lark, Token
+from lark.exceptions import (LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput,
+                             UnexpectedToken)
 
 from . import ast as A
 from .diagnostics import DiagnosticSink, Span
@@ -69,14 +75,109 @@ class _PostLex:
 
 
 _LARK: Lark | None = None
+_LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
+_CACHE_FORMAT = 1
+
+
+def cache_dir() -> Path | None:
+    """The user's own cache folder, ``$XDG_CACHE_HOME/aidl`` (else ``~/.cache/aidl``).
+
+    Created with mode 0700.  Returns ``None`` (no caching) unless it is a real directory owned
+    by this user; a folder of ours with group or other bits is first narrowed to 0700.  Nothing
+    is ever cached in the shared temporary folder (issue 15: a file another local user planted
+    there must never be loaded).
+    """
+    base = os.environ.get("XDG_CACHE_HOME", "")
+    if not os.path.isabs(base):
+        base = os.path.join(os.path.expanduser("~"), ".cache")
+    d = os.path.join(base, "aidl")
+    try:
+        os.makedirs(d, mode=0o700, exist_ok=True)
+        st = os.lstat(d)
+        if not stat.S_ISDIR(st.st_mode) or st.st_uid != os.getuid():
+            return None
+        if st.st_mode & 0o077:
+            os.chmod(d, 0o700)
+    except OSError:
+        return None
+    return Path(d)
+
+
+def _read_owned(path: Path) -> str | None:
+    """The text of ``path`` if it is a regular file owned by this user that no one else can
+    write (not followed through a symbolic link); else ``None``."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+    except OSError:
+        return None
+    with os.fdopen(fd, "r", encoding="utf-8") as f:
+        st = os.fstat(f.fileno())
+        if not stat.S_ISREG(st.st_mode) or st.st_uid != os.getuid() or st.st_mode & 0o022:
+            return None
+        return f.read()
+
+
+def cached_lark(postlex=None, **options) -> Lark:
+    """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in
+    :func:`cache_dir` (never pickled: a cache file cannot run code), keyed by the grammar, the
+    options and Lark's version; rebuilt and rewritten (atomically, mode 0600) when missing,
+    stale, unreadable or not owner-only."""
+    import json
+
+    import lark
+    from lark.grammar import Rule
+    from lark.lexer import TerminalDef
+
+    grammar = GRAMMAR.read_text()
+    key = hashlib.sha256(repr((_CACHE_FORMAT, lark.__version__, grammar, sorted(options.items()),
+                               postlex is not None)).encode()).hexdigest()
+    d = cache_dir()
+    path = d / f"parser-{key[:24]}.json" if d is not None else None
+    text = _read_owned(path) if path is not None else None
+    if text is not None:
+        try:
+            blob = json.loads(text, object_hook=_int_keys)
+            if blob.get("key") == key:
+                return Lark._load_from_dict(blob["data"], blob["memo"], postlex=postlex)
+        except Exception:               # a stale or damaged cache: rebuild it below
+            pass
+    lp = Lark(grammar, postlex=postlex, **options)
+    if path is not None:
+        data, memo = lp.memo_serialize([TerminalDef, Rule])
+        data["options"] = {k: v for k, v in data["options"].items() if k != "postlex"}
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=".parser-", suffix=".tmp", dir=path.parent)
+        except OSError:
+            return lp
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8") as f:
+                json.dump({"key": key, "data": data, "memo": memo}, f)
+            os.replace(tmp, path)
+        except (OSError, TypeError, ValueError):
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+    return lp
+
+
+def _int_keys(d: dict) -> dict:
+    """JSON object keys back to ints where Lark used ints (memo ids, parser states)."""
+    return {int(k) if k.isdigit() else k: v for k, v in d.items()}
 
 
 def lark_parser() -> Lark:
+    """The LALR parser whose reductions build the typed AST directly (see :class:`_Builder`).
+
+    ``lark_parser().parse(text, start=...)`` returns a ``_R`` wrapper; use :func:`parse` or
+    :func:`parse_expression` instead.
+    """
     global _LARK
     if _LARK is None:
-        _LARK = Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic",
-                     postlex=_PostLex(), propagate_positions=True, maybe_placeholders=True,
-                     start=["start", "expr"], cache=True)
+        lp = cached_lark(postlex=_PostLex(), **_LARK_OPTIONS)
+        lp._callbacks.clear()                      # shared with the LALR parser by reference
+        lp._callbacks.update(_reduce_callbacks(lp))
+        _LARK = lp
     return _LARK
 
 
@@ -242,33 +343,49 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         elif ch in ")]}":
             depth -= 1
     lp = lark_parser()
-    seen: set[int] = set()
-    for _attempt in range(MAX_ERRORS + 1):
-        try:
-            tree = lp.parse(text, start="start")
-            break
-        except UnexpectedInput as e:
-            pos = _error_pos(e, text)
-            if pos in seen or len(seen) >= MAX_ERRORS:
-                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-            seen.add(pos)
-            _report(e, text, path, pos, sink)
-            _slash_hint(sink, slashes, text, pos)
-            if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
-                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-            text = _blank_logical_line(text, pos)
-    else:
-        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
     builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    seen: set[int] = set()
     try:
-        stmts = builder.transform(tree)
-    except VisitError as e:
-        if not isinstance(e.orig_exc, _BuildError):
-            raise
-
+        for _attempt in range(MAX_ERRORS + 1):
+            builder.failed.clear()
+            try:
+                stmts = lp.parse(text, start="start").v
+                break
+            except UnexpectedInput as e:
+                pos = _error_pos(e, text)
+                if pos in seen or len(seen) >= MAX_ERRORS:
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                seen.add(pos)
+                _report(e, text, path, pos, sink)
+                _slash_hint(sink, slashes, text, pos)
+                if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                text = _blank_logical_line(text, pos)
+        else:
+            return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
         return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
     end_line = source.count("\n") + 1
     return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts)
+
+
+def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
+    """Parse one expression (``--set`` values); raises a ``LarkError`` when it does not parse
+    (an error inside an f-string is also reported to ``sink``)."""
+    builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    try:
+        node = lark_parser().parse(text, start="expr").v
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
+        raise _BuildError(builder.failed[0][1])
+    return node
 
 
 def _error_pos(e: UnexpectedInput, text: str) -> int:
@@ -313,17 +430,18 @@ def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: Diagnostic
                Span(path, line, col, line, col + width, pos, pos + width), hint)
 
 
-class _BuildError(Exception):
-    pass
+class _BuildError(LarkError):
+    """A reduction could not build its node (an f-string whose expression does not parse)."""
 
 
 def _span(path: str, x) -> Span:
+    """A :class:`Span` from a token, a position tuple ``(line, col, start, end_line, end_col,
+    end)`` (a reduction's extent) or ``None`` (a reduction that covers no token)."""
     if isinstance(x, Token):
         return Span(path, x.line, x.column, x.end_line, x.end_column, x.start_pos, x.end_pos)
-    m = x.meta if isinstance(x, Tree) else x
-    if getattr(m, "empty", False) or not hasattr(m, "line"):
+    if x is None:
         return Span(path, 1, 1, 1, 1)
-    return Span(path, m.line, m.column, m.end_line, m.end_column, m.start_pos, m.end_pos)
+    return Span(path, x[0], x[1], x[3], x[4], x[2], x[5])
 
 
 def parse_number(text: str) -> tuple[float, str | None]:
@@ -336,12 +454,129 @@ def parse_number(text: str) -> tuple[float, str | None]:
     return float(m.group("num")), unit
 
 
-@v_args(meta=True)
-class _Builder(Transformer):
+class _R:
+    """A reduction's value with the extent of the text it covers (``pos``: line, column,
+    offset of its first token, then of the end of its last token; ``None`` when it covers no
+    token), as Lark's ``propagate_positions`` computes it for a tree node's container."""
+
+    __slots__ = ("v", "pos")
+
+    def __init__(self, v, pos):
+        self.v = v
+        self.pos = pos
+
+
+_STATE = threading.local()       # .builder: the _Builder of the parse running in this thread
+
+
+def _reduce_callbacks(lp: Lark) -> dict:
+    """One callback per grammar rule for Lark's LALR loop, building the AST in the reduction.
+
+    The same steps as Lark's tree builder with ``propagate_positions=True`` and
+    ``maybe_placeholders=True`` (drop filtered tokens, add ``None`` for missing optional parts,
+    splice ``_rule`` children, pass a ``?rule``'s single child through), except that the node
+    is made by the :class:`_Builder` method named after the rule, from the children and the
+    extent of the first and last child, instead of a ``Tree`` that is walked afterwards.
+    """
+    callbacks = {}
+    for rule in lp.rules:
+        name = rule.alias or rule.options.template_source or rule.origin.name
+        expansion = rule.expansion
+        empty = rule.options.empty_indices
+        if empty:
+            bits = "".join(str(int(b)) for b in empty)
+            nones = [len(ones) for ones in bits.split("0")]
+        else:
+            nones = [0] * (len(expansion) + 1)
+        include = []
+        pending = 0
+        for i, sym in enumerate(expansion):
+            pending += nones[i]
+            if rule.options.keep_all_tokens or not (sym.is_term and sym.filter_out):
+                include.append((i, not sym.is_term and sym.name.startswith("_"), pending))
+                pending = 0
+        tail = pending + nones[len(expansion)]
+        expand1 = bool(rule.options.expand1 and not rule.alias)
+        if name.startswith("_"):
+            build = None                        # spliced into the parent
+        else:
+            build = getattr(_Builder, name, None)
+            if build is None:
+                if not expand1:
+                    raise RuntimeError(f"grammar rule `{name}` has no AST builder")
+                build = _no_builder            # a `?rule` passes its one child through
+        if expand1 and len(expansion) == 1 and include == [(0, False, 0)] and not tail:
+            callbacks[rule] = _unit           # `?sum: product`: the child, extent and all
+        else:
+            callbacks[rule] = _make_callback(tuple(include), tail, expand1, build)
+    # Key the callbacks by the parse table's own Rule objects: the LALR loop looks them up on
+    # every reduction, and an identical key skips Rule.__eq__.
+    table = lp.parser.parser._parse_table
+    for actions in table.states.values():
+        for _action, arg in actions.values():
+            if isinstance(arg, type(lp.rules[0])):
+                callbacks[arg] = callbacks.pop(arg)
+    return callbacks
+
+
+def _unit(children):
+    return children[0]
+
+
+def _no_builder(builder, meta, items):
+    raise RuntimeError("a `?rule` without an AST builder matched more than one item")
+
+
+def _make_callback(include, tail, expand1, build):
+    def reduce(children):
+        first = last = None
+        for c in children:
+            if type(c) is _R:
+                if c.pos is not None:
+                    first = c.pos
+                    break
+            else:
+                first = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
+                break
+        for c in reversed(children):
+            if type(c) is _R:
+                if c.pos is not None:
+                    last = c.pos
+                    break
+            else:
+                last = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
+                break
+        pos = None if first is None else (first[0], first[1], first[2], last[3], last[4], last[5])
+        items = []
+        for i, splice, nn in include:
+            if nn:
+                items += [None] * nn
+            c = children[i]
+            if splice:
+                items += c.v
+            elif type(c) is _R:
+                items.append(c.v)
+            else:
+                items.append(c)
+        if tail:
+            items += [None] * tail
+        if expand1 and len(items) == 1:
+            if type(children[include[0][0]]) is not _R:
+                return children[include[0][0]]      # a token passed through as it is
+            return _R(items[0], pos)
+        if build is None:
+            return _R(items, pos)                   # a `_rule`: its items are spliced
+        return _R(build(_STATE.builder, pos, items), pos)
+    return reduce
+
+
+class _Builder:
+    """The AST node for each grammar rule; ``meta`` is the rule's extent (see :func:`_span`)."""
+
     def __init__(self, path: str, sink: DiagnosticSink):
-        super().__init__()
         self.path = path
         self.sink = sink
+        self.failed: list = []       # f-string errors (code, message, span) of this attempt
 
     def s(self, x) -> Span:
         return _span(self.path, x)
@@ -460,8 +695,8 @@ class _Builder(Transformer):
             if ch == "{":
                 j = body.find("}", i)
                 if j < 0:
-                    self.sink.error("E0001", "unclosed `{` in f-string", self.s(tok))
-                    raise _BuildError
+                    self.failed.append(("E0001", "unclosed `{` in f-string", self.s(tok)))
+                    return parts
                 inner = body[i + 1:j]
                 fmt = None
                 if ":" in inner:
@@ -469,12 +704,11 @@ class _Builder(Transformer):
                 if buf:
                     parts.append(buf); buf = ""
                 try:
-                    sub = lark_parser().parse(inner.strip(), start="expr")
+                    expr = lark_parser().parse(inner.strip(), start="expr").v
                 except UnexpectedInput:
-                    self.sink.error("E0001", f"cannot parse `{inner}` in f-string", self.s(tok))
-                    raise _BuildError
-                sub_builder = _Builder(self.path, self.sink)
-                expr = sub_builder.transform(sub)
+                    self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
+                                        self.s(tok)))
+                    return parts
                 _respan(expr, self.s(tok))
                 parts.append((expr, fmt))
                 i = j + 1

@@ -1,0 +1,158 @@
+"""The parse-table cache (issue 15): nothing planted in the shared temporary folder is ever
+loaded, the cache lives in the user's own folder, owner-only, and holds no pickle.
+
+Each check runs the parser in a fresh interpreter (the cache is read once per process) with
+``TMPDIR``, ``XDG_CACHE_HOME`` and ``HOME`` pointed into the test's own folder.
+"""
+from __future__ import annotations
+
+import json
+import os
+import pickle
+import stat
+import subprocess
+import sys
+import tempfile
+
+import lark
+import pytest
+
+from aidl_lang.parser import GRAMMAR, _PostLex
+
+PROGRAM = "solid s {\n    a = Point(0, 0)\n    b = Point(3, 4)\n    Distance(a, b, 5)\n}\n"
+
+CHILD = """
+import sys
+from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.parser import parse
+sink = DiagnosticSink()
+prog = parse(sys.argv[1], "t.aidl", sink)
+assert not sink.has_errors, [d.message for d in sink.items]
+print(type(prog.stmts[0]).__name__, prog.stmts[0].name)
+"""
+
+
+class _Plant:
+    """Unpickling this writes the marker file: what an attacker's planted pickle would do."""
+
+    def __init__(self, marker: str):
+        self.marker = marker
+
+    def __reduce__(self):
+        return (open, (self.marker, "w"))
+
+
+def _run(tmp_path, **env_extra) -> subprocess.CompletedProcess:
+    env = dict(os.environ, TMPDIR=str(tmp_path / "tmp"), XDG_CACHE_HOME=str(tmp_path / "cache"),
+               HOME=str(tmp_path / "home"))
+    env.update(env_extra)
+    return subprocess.run([sys.executable, "-c", CHILD, PROGRAM], env=env, capture_output=True,
+                          text=True, timeout=120)
+
+
+def _old_cache_file(tmpdir) -> str:
+    """The exact file the old code (Lark ``cache=True``) read: let Lark write it once."""
+    old = tempfile.tempdir
+    tempfile.tempdir = str(tmpdir)
+    try:
+        lark.Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic", postlex=_PostLex(),
+                  propagate_positions=True, maybe_placeholders=True, start=["start", "expr"],
+                  cache=True)
+    finally:
+        tempfile.tempdir = old
+    (name,) = [p for p in os.listdir(tmpdir) if p.startswith(".lark_cache")]
+    return os.path.join(tmpdir, name)
+
+
+def test_a_pickle_planted_where_the_old_code_looked_is_never_loaded(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    path = _old_cache_file(tmp_path / "tmp")
+    marker = tmp_path / "pwned"
+    with open(path, "rb") as f:
+        header = f.readline()                 # the grammar hash the old code compared
+    with open(path, "wb") as f:
+        f.write(header)
+        pickle.dump(_Plant(str(marker)), f)
+    os.chmod(path, 0o666)
+    r = _run(tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["StructDecl", "s"]
+    assert not marker.exists()
+    # and nothing new appears in the shared temporary folder
+    assert os.listdir(tmp_path / "tmp") == [os.path.basename(path)]
+
+
+def test_the_cache_is_owner_only_json_in_the_users_cache_folder(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    d = tmp_path / "cache" / "aidl"
+    st = os.lstat(d)
+    assert stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid()
+    assert stat.S_IMODE(st.st_mode) == 0o700
+    files = list(d.iterdir())
+    assert len(files) == 1 and files[0].name.startswith("parser-")
+    fst = os.lstat(files[0])
+    assert fst.st_uid == os.getuid() and stat.S_IMODE(fst.st_mode) == 0o600
+    blob = json.loads(files[0].read_text())          # plain data, not a pickle
+    assert set(blob) == {"key", "data", "memo"}
+    # a second run reads it and parses the same
+    again = _run(tmp_path)
+    assert again.returncode == 0 and again.stdout.split() == ["StructDecl", "s"]
+
+
+def test_without_xdg_cache_home_the_cache_goes_under_home(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path, XDG_CACHE_HOME="").returncode == 0
+    d = tmp_path / "home" / ".cache" / "aidl"
+    assert stat.S_IMODE(os.lstat(d).st_mode) == 0o700
+    assert [p.name[:7] for p in d.iterdir()] == ["parser-"]
+
+
+def test_a_cache_file_others_can_write_is_not_read_but_replaced(tmp_path):
+    # a valid table with mode 0666: read, it would be kept as it is; refused, it is rebuilt
+    # and rewritten owner-only
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    (f,) = (tmp_path / "cache" / "aidl").iterdir()
+    os.chmod(f, 0o666)
+    ino = os.lstat(f).st_ino
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    st = os.lstat(f)
+    assert stat.S_IMODE(st.st_mode) == 0o600 and st.st_ino != ino
+
+
+def test_a_symbolic_link_in_the_cache_is_not_followed(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    (f,) = (tmp_path / "cache" / "aidl").iterdir()
+    elsewhere = tmp_path / "elsewhere.json"
+    os.replace(f, elsewhere)
+    os.symlink(elsewhere, f)
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert not os.path.islink(f)                      # replaced by a real file of ours
+
+
+@pytest.mark.skipif(os.getuid() != 0, reason="needs root to give a file to another user")
+def test_a_cache_folder_or_file_owned_by_someone_else_is_not_used(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    d = tmp_path / "cache" / "aidl"
+    (f,) = d.iterdir()
+    os.chown(f, 12345, 12345)                         # a valid table, planted by another user
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert os.lstat(f).st_uid == os.getuid()          # refused, rebuilt and replaced
+    os.chown(d, 12345, 12345)                         # the whole folder belongs to another user
+    os.chown(f, 12345, 12345)
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert os.lstat(f).st_uid == 12345                # nothing written into it
+    assert [p.name for p in d.iterdir()] == [f.name]
