@@ -17,8 +17,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse.linalg import splu
 
 from .tape import Tape
 
@@ -41,7 +39,10 @@ def _solve_dense(Jd: np.ndarray, F: np.ndarray, mu: float) -> np.ndarray:
     return Jd.T @ np.linalg.solve(M, -F)
 
 
-def _solve(Js: sp.csr_matrix, F: np.ndarray, mu: float) -> np.ndarray:
+def _solve(Js, F: np.ndarray, mu: float) -> np.ndarray:
+    """The same step with a sparse ``Js`` (SciPy CSR; SciPy is imported only here)."""
+    import scipy.sparse as sp
+    from scipy.sparse.linalg import splu
     m = Js.shape[0]
     if m <= DENSE_MAX:
         return _solve_dense(Js.toarray(), F, mu)
@@ -64,7 +65,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     x = x0.copy()
     if reduction is not None:
         red = reduction
-        x[cols] = red.S @ red.z0 + red.t
+        x[cols] = red.expand(red.z0) + red.t
         keep = red.keep
         d = red.scale
         u = red.z0.copy()
@@ -75,7 +76,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
 
     def place(u):
         xn = x.copy()
-        xn[cols] = (red.S @ u + red.t) if reduction is not None else u
+        xn[cols] = (red.expand(u) + red.t) if reduction is not None else u
         return xn
 
     def residual(xx):
@@ -91,7 +92,9 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     it = 0
     small = len(F) <= DENSE_MAX and len(u) <= 4 * DENSE_MAX
     if small and reduction is not None:
-        Sd = red.S.toarray()
+        Sd = red.dense()
+    elif reduction is not None:
+        S = red.S
     while it < max_iter:
         it += 1
         if small:                    # dense all the way: no sparse-matrix overhead
@@ -102,8 +105,8 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
         else:
             J = tape.jacobian(x, cols, choices, v)
             if reduction is not None:
-                J = (J[keep] @ red.S).tocsr()
-            Js = sp.csr_matrix((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
+                J = (J[keep] @ S).tocsr()
+            Js = type(J)((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
         for _ in range(14):
             try:

@@ -18,20 +18,49 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from .tape import Tape
 
 
 @dataclass
 class Reduction:
-    """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve."""
+    """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve.
 
-    S: sp.csr_matrix           # (len(cols), n_z)
+    ``S`` (len(cols), n_z) has one 1 per row of an unknown left to solve, in column ``zc[i]``
+    (``-1``: the unknown is fixed, its row of ``S`` is empty).  :meth:`expand` applies it with
+    array indexing; the SciPy matrix :attr:`S` is made only when a sparse solve asks for it.
+    """
+
+    zc: np.ndarray             # (len(cols),) class column of each unknown, -1 if fixed
     t: np.ndarray              # (len(cols),)
     keep: np.ndarray
     z0: np.ndarray             # starting unknowns (class means)
     scale: np.ndarray          # (n_z,)
+
+    def expand(self, z: np.ndarray) -> np.ndarray:
+        """``S @ z`` (bit for bit the sparse product: ``0.0 + z[zc[i]]``, 0 where fixed)."""
+        out = np.zeros(len(self.zc))
+        rows = self._rows()
+        out[rows] += z[self.zc[rows]]
+        return out
+
+    def dense(self) -> np.ndarray:
+        """``S`` as an ndarray."""
+        out = np.zeros((len(self.zc), len(self.z0)))
+        rows = self._rows()
+        out[rows, self.zc[rows]] = 1.0
+        return out
+
+    @property
+    def S(self):
+        """``S`` as a SciPy CSR matrix (imports SciPy)."""
+        import scipy.sparse as sp
+        rows = self._rows()
+        return sp.csr_matrix((np.ones(len(rows)), (rows, self.zc[rows])),
+                             shape=(len(self.zc), len(self.z0)))
+
+    def _rows(self) -> np.ndarray:
+        return np.flatnonzero(self.zc >= 0)
 
 
 def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Reduction | None:
@@ -127,7 +156,6 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
         t[roots == root] += v
     zc = zidx[roots]
     rows = np.flatnonzero(zc >= 0)
-    S = sp.csr_matrix((np.ones(len(rows)), (rows, zc[rows])), shape=(n, len(live_roots)))
     # start each class at the mean of its members (least total movement), weights 1/d^2
     xc = x[cols]
     w = 1.0 / scale ** 2
@@ -137,4 +165,4 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
     z0 = num / np.where(den > 0, den, 1.0)
     zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
     keep = np.setdiff1d(np.arange(tape.n_rows), tape.aff_rows[used])
-    return Reduction(S, t, keep, z0, zscale)
+    return Reduction(zc, t, keep, z0, zscale)

@@ -26,7 +26,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from ..geometry.expr import Lin, Nl
 
@@ -353,6 +352,7 @@ class Tape:
             J = np.zeros((self.n_rows, len(cols)))
             J[pat.urows, pat.indices] = data
             return J
+        import scipy.sparse as sp           # only sparse (large) systems need SciPy
         return sp.csr_matrix((data, pat.indices, pat.indptr), shape=(self.n_rows, len(cols)))
 
 
