@@ -167,18 +167,151 @@ def _int_keys(d: dict) -> dict:
 
 
 def lark_parser() -> Lark:
-    """The LALR parser whose reductions build the typed AST directly (see :class:`_Builder`).
+    """The Lark LALR parser whose reductions build the typed AST directly (see
+    :class:`_Builder`).
 
-    ``lark_parser().parse(text, start=...)`` returns a ``_R`` wrapper; use :func:`parse` or
-    :func:`parse_expression` instead.
+    ``lark_parser().parse(text, start=...)`` returns a ``_R`` wrapper; :func:`parse` and
+    :func:`parse_expression` run the same table and callbacks through :func:`_run_lalr`.
     """
-    global _LARK
+    global _LARK, _TABLE
     if _LARK is None:
         lp = cached_lark(postlex=_PostLex(), **_LARK_OPTIONS)
+        callbacks = _reduce_callbacks(lp)
         lp._callbacks.clear()                      # shared with the LALR parser by reference
-        lp._callbacks.update(_reduce_callbacks(lp))
+        lp._callbacks.update(callbacks)
+        _TABLE = _compile_table(lp, callbacks)
         _LARK = lp
     return _LARK
+
+
+_TABLE = None
+
+
+def _compile_table(lp: Lark, callbacks: dict):
+    """Lark's LALR table in the form :func:`_run_lalr` reads fastest: per state, a shift or
+    goto is the next state (an int); a reduction is ``(size, rule name, callback)``, or
+    ``(None, rule name, None)`` for a unit rule whose child stays as it is."""
+    table = lp.parser.parser._parse_table
+    states = {}
+    for st, actions in table.states.items():
+        row = {}
+        for sym, (_action, arg) in actions.items():
+            if isinstance(arg, int):
+                row[sym] = arg
+            else:
+                cb = callbacks[arg]
+                row[sym] = ((None, arg.origin.name, None) if cb is _unit
+                            else (len(arg.expansion), arg.origin.name, cb))
+        states[st] = row
+    return states, table.start_states, table.end_states, table.states
+
+
+_POSTLEX = _PostLex()
+
+
+def _lex(text: str):
+    """Lark's basic lexer over ``text`` (same terminals, same order, same keyword callbacks,
+    same positions), as one loop over its compiled scanner."""
+    basic = _LARK.parser.lexer.lexer
+    scanner = basic.scanner                         # builds basic.callback too
+    mres = scanner._mres
+    single = mres[0] if len(mres) == 1 else None
+    ignore, newline, callback = basic.ignore_types, basic.newline_types, basic.callback
+    pos, line, line_start, end = 0, 1, 0, len(text)
+    last = None
+    while pos < end:
+        m = single.match(text, pos) if single is not None else None
+        if m is None:
+            for mre in mres:
+                m = mre.match(text, pos)
+                if m:
+                    break
+            else:
+                allowed = scanner.allowed_types - ignore or {"<END-OF-FILE>"}
+                raise UnexpectedCharacters(text, pos, line, pos - line_start + 1, allowed=allowed,
+                                           token_history=last and [last],
+                                           terminals_by_name=basic.terminals_by_name)
+        value, type_ = m.group(0), m.lastgroup
+        npos = pos + len(value)
+        if type_ in ignore and type_ not in callback:
+            if type_ in newline:
+                k = value.count("\n")
+                if k:
+                    line += k
+                    line_start = pos + value.rindex("\n") + 1
+            pos = npos
+            continue
+        t = Token(type_, value, pos, line, pos - line_start + 1)
+        if type_ in newline:
+            k = value.count("\n")
+            if k:
+                line += k
+                line_start = pos + value.rindex("\n") + 1
+        t.end_line = line
+        t.end_column = npos - line_start + 1
+        t.end_pos = npos
+        pos = npos
+        if type_ in callback:
+            t = callback[type_](t)
+        if type_ not in ignore:
+            last = t
+            yield t
+
+
+def _run_lalr(text: str, start: str):
+    """Lex ``text`` with Lark's lexer and post-lexer and run Lark's LALR(1) table over it with
+    the AST callbacks: the loop of ``lark.parsers.lalr_parser_state.ParserState.feed_token``
+    without its per-step assertions and rule-object look-ups.  Raises Lark's
+    ``UnexpectedToken`` / ``UnexpectedCharacters`` as ``Lark.parse`` does."""
+    lark_parser()
+    states, start_states, end_states, raw = _TABLE
+    state_stack = [start_states[start]]
+    value_stack: list = []
+    push_state, push_value = state_stack.append, value_stack.append
+    token = None
+    for token in _POSTLEX.process(_lex(text)):
+        while True:
+            try:
+                act = states[state_stack[-1]][token.type]
+            except KeyError:
+                raise UnexpectedToken(token, {s for s in raw[state_stack[-1]] if s.isupper()})
+            if type(act) is int:
+                push_state(act)
+                push_value(token)
+                break
+            size, origin, cb = act
+            if size is None:                 # unit rule: same value, new state
+                state_stack[-1] = states[state_stack[-2]][origin]
+                continue
+            if size:
+                children = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                children = []
+            push_value(cb(children))
+            push_state(states[state_stack[-1]][origin])
+    end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1)
+    end_state = end_states[start]
+    while True:
+        try:
+            act = states[state_stack[-1]]["$END"]
+        except KeyError:
+            raise UnexpectedToken(end, {s for s in raw[state_stack[-1]] if s.isupper()})
+        size, origin, cb = act
+        if size is None:
+            state_stack[-1] = states[state_stack[-2]][origin]
+        else:
+            if size:
+                children = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                children = []
+            push_value(cb(children))
+            push_state(states[state_stack[-1]][origin])
+        if state_stack[-1] == end_state:
+            return value_stack[-1]
 
 
 # --------------------------------------------------------------- preprocessing
@@ -342,7 +475,7 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
                     return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
         elif ch in ")]}":
             depth -= 1
-    lp = lark_parser()
+    lark_parser()
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     seen: set[int] = set()
@@ -350,7 +483,7 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         for _attempt in range(MAX_ERRORS + 1):
             builder.failed.clear()
             try:
-                stmts = lp.parse(text, start="start").v
+                stmts = _run_lalr(text, "start").v
                 break
             except UnexpectedInput as e:
                 pos = _error_pos(e, text)
@@ -379,7 +512,7 @@ def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     try:
-        node = lark_parser().parse(text, start="expr").v
+        node = _run_lalr(text, "expr").v
     finally:
         _STATE.builder = prev
     if builder.failed:
@@ -704,7 +837,7 @@ class _Builder:
                 if buf:
                     parts.append(buf); buf = ""
                 try:
-                    expr = lark_parser().parse(inner.strip(), start="expr").v
+                    expr = _run_lalr(inner.strip(), "expr").v
                 except UnexpectedInput:
                     self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
                                         self.s(tok)))
