@@ -79,8 +79,11 @@ class Tape:
             root_of.append(row)
             return len(op) - 1
 
+        op_add, a0_add, a1_add, lev_add, root_add = (op.append, a0.append, a1.append,
+                                                      level.append, root_of.append)
+        binary_or_unary = {**_UNARY, **_BINARY}
         for r, e in enumerate(exprs):
-            if isinstance(e, Lin):
+            if type(e) is Lin or isinstance(e, Lin):
                 k = len(arows)
                 for i, c in e.terms.items():
                     ar.append(k)
@@ -91,31 +94,37 @@ class Tape:
                 continue
             memo: dict[int, int] = {}
             stack = [(e, False)]
+            push, pop = stack.append, stack.pop
             while stack:                       # iterative post-order: deep trees are fine
-                item, ready = stack.pop()
+                item, ready = pop()
                 key = id(item)
                 if key in memo:
                     continue
-                if isinstance(item, Lin):
+                if type(item) is Lin or isinstance(item, Lin):
                     leaf = len(lconst)
                     for i, c in item.terms.items():
                         lr.append(leaf)
                         lc.append(i)
                         lv.append(c)
                     lconst.append(item.const)
-                    memo[key] = n = node(LEAF, leaf, leaf, 0, r)
+                    memo[key] = n = len(op)          # node(LEAF, leaf, leaf, 0, r)
+                    op_add(LEAF)
+                    a0_add(leaf)
+                    a1_add(leaf)
+                    lev_add(0)
+                    root_add(r)
                     leaf_node.append(n)
                     continue
                 if not isinstance(item, Nl):
                     raise TapeError(f"cannot compile {type(item).__name__} into a residual")
                 if not ready:
-                    stack.append((item, True))
+                    push((item, True))
                     for arg in item.args:
                         if id(arg) not in memo:
-                            stack.append((arg, False))
+                            push((arg, False))
                     continue
                 args = [memo[id(a)] for a in item.args]
-                code = _BINARY.get(item.op, _UNARY.get(item.op))
+                code = binary_or_unary.get(item.op)
                 if code is None:
                     raise TapeError(f"unknown operator `{item.op}`")
                 if code in (MIN, MAX) and len(args) > 2:
@@ -131,11 +140,18 @@ class Tape:
                     memo[key] = args[0]
                     continue
                 if len(args) == 1:
-                    args = [args[0], args[0]]
-                if len(args) != 2:
+                    p = q = args[0]
+                elif len(args) == 2:
+                    p, q = args
+                else:
                     raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
-                p, q = args
-                memo[key] = node(code, p, q, max(level[p], level[q]) + 1, r)
+                memo[key] = len(op)                  # node(code, p, q, ..., r)
+                op_add(code)
+                a0_add(p)
+                a1_add(q)
+                lp_, lq_ = level[p], level[q]
+                lev_add((lp_ if lp_ > lq_ else lq_) + 1)
+                root_add(r)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
 
