@@ -1,9 +1,15 @@
 """Parse AIDL source text into the typed AST of :mod:`aidl_lang.ast`.
 
-Lark LALR(1) over ``grammar/aidl.lark`` (the parse table is cached on disk), a post-lexer that
-drops newlines inside brackets and before ``else``, and statement-level error recovery: each
-syntax error becomes an ``E0001`` diagnostic listing the expected tokens, the offending logical
-line is blanked (its braces kept) and the file is parsed again, so one run reports several errors.
+Lark LALR(1) over ``grammar/aidl.lark``, a post-lexer that drops newlines inside brackets and
+before ``else``, and statement-level error recovery: each syntax error becomes an ``E0001``
+diagnostic listing the expected tokens, the offending logical line is blanked (its braces kept)
+and the file is parsed again, so one run reports several errors.
+
+Speed (issue 12, docs/performance.md): the AST node of each rule is built inside the LALR
+reduction (no parse tree is built and walked), its span taken from the first and last token it
+covers (what Lark's ``propagate_positions`` would give); Lark's table and lexer scanner are run
+by one loop each.  The parse table is cached as JSON (never a pickle) in the user's own cache
+folder, owner-only (issue 15), see :func:`cached_lark`.
 """
 from __future__ import annotations
 
