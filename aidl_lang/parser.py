@@ -349,6 +349,12 @@ def mask_comments(src: str, record: list | None = None) -> str:
                 prev = "a"   # a string ends an operand
             i += 1
             continue
+        if ch not in _SPECIAL:                  # a run of ordinary characters at once
+            m = _PLAIN.match(src, i)
+            if not m.group().isspace():
+                line_start = False
+            i = m.end()
+            continue
         if ch in "\"'":
             quote = ch
             line_start = False
@@ -388,6 +394,8 @@ def mask_comments(src: str, record: list | None = None) -> str:
     return "".join(out)
 
 
+_SPECIAL = frozenset("\"'#/\n")
+_PLAIN = re.compile(r"[^\"'#/\n]+")
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
 _STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
