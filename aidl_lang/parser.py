@@ -14,10 +14,7 @@ folder, owner-only (issue 15), see :func:`cached_lark`.
 from __future__ import annotations
 
 import hashlib
-import os
 import re
-import stat
-import tempfile
 import threading
 from pathlib import Path
 
@@ -26,6 +23,7 @@ from lark.exceptions import (LarkError, UnexpectedCharacters, UnexpectedEOF, Une
                              UnexpectedToken)
 
 from . import ast as A
+from .cache import cache_dir, read_owned, write_atomic
 from .diagnostics import DiagnosticSink, Span
 
 GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
@@ -85,49 +83,11 @@ _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, star
 _CACHE_FORMAT = 1
 
 
-def cache_dir() -> Path | None:
-    """The user's own cache folder, ``$XDG_CACHE_HOME/aidl`` (else ``~/.cache/aidl``).
-
-    Created with mode 0700.  Returns ``None`` (no caching) unless it is a real directory owned
-    by this user; a folder of ours with group or other bits is first narrowed to 0700.  Nothing
-    is ever cached in the shared temporary folder (issue 15: a file another local user planted
-    there must never be loaded).
-    """
-    base = os.environ.get("XDG_CACHE_HOME", "")
-    if not os.path.isabs(base):
-        base = os.path.join(os.path.expanduser("~"), ".cache")
-    d = os.path.join(base, "aidl")
-    try:
-        os.makedirs(d, mode=0o700, exist_ok=True)
-        st = os.lstat(d)
-        if not stat.S_ISDIR(st.st_mode) or st.st_uid != os.getuid():
-            return None
-        if st.st_mode & 0o077:
-            os.chmod(d, 0o700)
-    except OSError:
-        return None
-    return Path(d)
-
-
-def _read_owned(path: Path) -> str | None:
-    """The text of ``path`` if it is a regular file owned by this user that no one else can
-    write (not followed through a symbolic link); else ``None``."""
-    try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
-    except OSError:
-        return None
-    with os.fdopen(fd, "r", encoding="utf-8") as f:
-        st = os.fstat(f.fileno())
-        if not stat.S_ISREG(st.st_mode) or st.st_uid != os.getuid() or st.st_mode & 0o022:
-            return None
-        return f.read()
-
-
 def cached_lark(postlex=None, **options) -> Lark:
-    """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in
-    :func:`cache_dir` (never pickled: a cache file cannot run code), keyed by the grammar, the
-    options and Lark's version; rebuilt and rewritten (atomically, mode 0600) when missing,
-    stale, unreadable or not owner-only."""
+    """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in the
+    user's cache folder (:func:`aidl_lang.cache.cache_dir`; never pickled: a cache file cannot
+    run code), keyed by the grammar, the options and Lark's version; rebuilt and rewritten
+    (atomically, mode 0600) when missing, stale, unreadable or not owner-only."""
     import json
 
     import lark
@@ -139,7 +99,7 @@ def cached_lark(postlex=None, **options) -> Lark:
                                postlex is not None)).encode()).hexdigest()
     d = cache_dir()
     path = d / f"parser-{key[:24]}.json" if d is not None else None
-    text = _read_owned(path) if path is not None else None
+    text = read_owned(path) if path is not None else None
     if text is not None:
         try:
             blob = json.loads(text, object_hook=_int_keys)
@@ -152,18 +112,9 @@ def cached_lark(postlex=None, **options) -> Lark:
         data, memo = lp.memo_serialize([TerminalDef, Rule])
         data["options"] = {k: v for k, v in data["options"].items() if k != "postlex"}
         try:
-            fd, tmp = tempfile.mkstemp(prefix=".parser-", suffix=".tmp", dir=path.parent)
-        except OSError:
-            return lp
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                json.dump({"key": key, "data": data, "memo": memo}, f)
-            os.replace(tmp, path)
-        except (OSError, TypeError, ValueError):
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
+            write_atomic(path, json.dumps({"key": key, "data": data, "memo": memo}))
+        except (TypeError, ValueError):
+            pass
     return lp
 
 

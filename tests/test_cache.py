@@ -1,5 +1,5 @@
-"""The parse-table cache (issue 15): nothing planted in the shared temporary folder is ever
-loaded, the cache lives in the user's own folder, owner-only, and holds no pickle.
+"""The user's cache folder (issue 15): nothing planted in the shared temporary folder is ever
+loaded, the parse table and the font live in the user's own folder, owner-only, as plain data.
 
 Each check runs the parser in a fresh interpreter (the cache is read once per process) with
 ``TMPDIR``, ``XDG_CACHE_HOME`` and ``HOME`` pointed into the test's own folder.
@@ -92,7 +92,7 @@ def test_the_cache_is_owner_only_json_in_the_users_cache_folder(tmp_path):
     assert stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid()
     assert stat.S_IMODE(st.st_mode) == 0o700
     files = list(d.iterdir())
-    assert len(files) == 1 and files[0].name.startswith("parser-")
+    assert [p.name[:7] for p in files] == ["parser-"]
     fst = os.lstat(files[0])
     assert fst.st_uid == os.getuid() and stat.S_IMODE(fst.st_mode) == 0o600
     blob = json.loads(files[0].read_text())          # plain data, not a pickle
@@ -156,3 +156,50 @@ def test_a_cache_folder_or_file_owned_by_someone_else_is_not_used(tmp_path):
     assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
     assert os.lstat(f).st_uid == 12345                # nothing written into it
     assert [p.name for p in d.iterdir()] == [f.name]
+
+
+FONT_CHILD = """
+from aidl_lang.geometry.text import text_extent
+print(*(round(v, 9) for v in text_extent("AIDL 42", 5.0)))
+"""
+
+
+def _run_font(tmp_path) -> list[float]:
+    env = dict(os.environ, TMPDIR=str(tmp_path / "tmp"), XDG_CACHE_HOME=str(tmp_path / "cache"),
+               HOME=str(tmp_path / "home"))
+    r = subprocess.run([sys.executable, "-c", FONT_CHILD], env=env, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    return [float(v) for v in r.stdout.split()]
+
+
+def test_the_font_is_cached_owner_only_and_gives_the_same_strokes(tmp_path):
+    from HersheyFonts import HersheyFonts
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    first = _run_font(tmp_path)
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
+    st = os.lstat(f)
+    assert st.st_uid == os.getuid() and stat.S_IMODE(st.st_mode) == 0o600
+    assert _run_font(tmp_path) == first                       # read back from the cache
+    # the same glyphs as the package's own loader, character by character
+    ref = HersheyFonts()
+    ref.load_default_font("futural")
+    mine = HersheyFonts()
+    mine.read_from_string_lines(f.read_text().splitlines())
+    for ch in map(chr, range(32, 127)):
+        assert list(mine.lines_for_text(ch)) == list(ref.lines_for_text(ch)), ch
+    # width 5 mm cap height: "AIDL 42" is wider than tall, and sits on the baseline
+    x0, x1, y0, y1 = first
+    assert x1 - x0 > 3 * (y1 - y0) > 0 and abs(y0) < 1e-9 and abs(y1 - 5.0) < 0.01
+
+
+def test_a_font_file_others_can_write_is_not_read(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    good = _run_font(tmp_path)
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
+    f.write_text("  1 20 ::\n" * 95)                           # empty glyphs: no strokes
+    os.chmod(f, 0o666)
+    assert _run_font(tmp_path) == good
+    assert stat.S_IMODE(os.lstat(f).st_mode) == 0o600
