@@ -38,6 +38,14 @@ _BINARY = {"add": ADD, "mul": MUL, "div": DIV, "pow": POW, "atan2": ATAN2,
 _TINY = 1e-300
 
 
+def _distinct(a: np.ndarray) -> bool:
+    """No value of ``a`` repeats (a Python set for short arrays: np.unique's overhead
+    dominated small tapes)."""
+    if len(a) <= 64:
+        return len(set(a.tolist())) == len(a)
+    return len(np.unique(a)) == len(a)
+
+
 class TapeError(ValueError):
     """An expression the tape cannot compile (an unknown operator or an unexpanded term)."""
 
@@ -184,9 +192,8 @@ class Tape:
             keys = lev[inner] * 64 + op_a[inner]
             cuts = np.flatnonzero(np.diff(keys)) + 1
             for chunk in np.split(inner, cuts):
-                g = _Group(int(op_a[chunk[0]]), chunk, a0_a[chunk], a1_a[chunk],
-                           len(np.unique(a0_a[chunk])) == len(chunk),
-                           len(np.unique(a1_a[chunk])) == len(chunk))
+                g0, g1 = a0_a[chunk], a1_a[chunk]
+                g = _Group(int(op_a[chunk[0]]), chunk, g0, g1, _distinct(g0), _distinct(g1))
                 if g.op in (MIN, MAX):
                     g.sel = np.arange(self.n_choices, self.n_choices + len(chunk))
                     self.n_choices += len(chunk)
