@@ -63,18 +63,49 @@ class Reduction:
         return np.flatnonzero(self.zc >= 0)
 
 
+_KEEP = 8          # substitutions remembered per tape (a re-solve reuses the last ones)
+
+
 def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Reduction | None:
     """The substitution for ``tape``'s rows over unknowns ``cols`` at ``x``; None if nothing
-    is trivial (solve the system as it is)."""
+    is trivial (solve the system as it is).
+
+    The classes, offsets and fixed values depend on ``x`` only through the held parameters,
+    so they are remembered on the tape, keyed by ``cols`` and those values: a re-solve from
+    new starting guesses recomputes only the class means ``z0``."""
     n = len(cols)
     if not len(tape.aff_rows) or not n:
         return None
     colmap = -np.ones(tape.n_params, dtype=np.int64)
     colmap[cols] = np.arange(n)
     free = colmap[tape.a_col] >= 0
+    held = x[tape.a_col[~free]]
+    memo = tape.__dict__.setdefault("_substitutions", {})
+    key = (np.asarray(cols).tobytes(), held.tobytes())
+    sub = memo.get(key)
+    if sub is None:
+        if len(memo) >= _KEEP:
+            memo.clear()
+        sub = memo[key] = _substitution(tape, n, colmap, free, held)
+    if sub is False:
+        return None
+    zc, t, keep, offs, n_live = sub
+    rows = np.flatnonzero(zc >= 0)
+    # start each class at the mean of its members (least total movement), weights 1/d^2
+    xc = x[cols]
+    w = 1.0 / scale ** 2
+    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows], minlength=n_live)
+    den = np.bincount(zc[rows], weights=w[rows], minlength=n_live)
+    z0 = num / np.where(den > 0, den, 1.0)
+    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
+    return Reduction(zc, t, keep, z0, zscale)
+
+
+def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held: np.ndarray):
+    """``(zc, t, keep, offs, number of classes)``, or False when no row is trivial."""
     # constant part of each affine row: held parameters and b
     const = tape.b.copy()
-    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * x[tape.a_col[~free]])
+    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * held)
     rr, cc, vv = tape.a_row[free], colmap[tape.a_col[free]], tape.a_val[free]
     nz = vv != 0.0
     rr, cc, vv = rr[nz], cc[nz], vv[nz]
@@ -146,7 +177,7 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
                 used[r] = True
                 changed = True
     if not used.any():
-        return None
+        return False
     class_roots = np.unique(roots)
     live_roots = np.asarray([r for r in class_roots if r not in fixed_root], dtype=np.int64)
     zidx = -np.ones(n, dtype=np.int64)
@@ -155,14 +186,5 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
     for root, v in fixed_root.items():
         t[roots == root] += v
     zc = zidx[roots]
-    rows = np.flatnonzero(zc >= 0)
-    # start each class at the mean of its members (least total movement), weights 1/d^2
-    xc = x[cols]
-    w = 1.0 / scale ** 2
-    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows],
-                      minlength=len(live_roots))
-    den = np.bincount(zc[rows], weights=w[rows], minlength=len(live_roots))
-    z0 = num / np.where(den > 0, den, 1.0)
-    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
     keep = np.setdiff1d(np.arange(tape.n_rows), tape.aff_rows[used])
-    return Reduction(zc, t, keep, z0, zscale)
+    return zc, t, keep, offs, len(live_roots)
