@@ -32,24 +32,31 @@ class NewtonResult:
     residual: float          # max |F| at x
 
 
-def _solve_dense(Jd: np.ndarray, F: np.ndarray, mu: float) -> np.ndarray:
-    M = Jd @ Jd.T
-    diag = np.einsum("ii->i", M)
-    diag += mu + (diag == 0.0)
-    return Jd.T @ np.linalg.solve(M, -F)
+class _Step:
+    """The damped minimum-norm step for one Jacobian: ``J J^T`` is formed once and only the
+    damping ``mu`` changes between tries (a rejected step used to rebuild it).  A sparse
+    ``Js`` (SciPy CSR) is solved with ``splu``, SciPy being imported only then."""
 
+    def __init__(self, Js, dense: bool):
+        if not dense and Js.shape[0] <= DENSE_MAX:
+            Js, dense = Js.toarray(), True
+        self.Js, self.dense = Js, dense
+        if dense:
+            self.G = Js @ Js.T
+        else:
+            self.G = (Js @ Js.T).tocsc()
+            self.zero = self.G.diagonal() == 0.0
 
-def _solve(Js, F: np.ndarray, mu: float) -> np.ndarray:
-    """The same step with a sparse ``Js`` (SciPy CSR; SciPy is imported only here)."""
-    import scipy.sparse as sp
-    from scipy.sparse.linalg import splu
-    m = Js.shape[0]
-    if m <= DENSE_MAX:
-        return _solve_dense(Js.toarray(), F, mu)
-    M = (Js @ Js.T).tocsc()
-    dg = M.diagonal()
-    M = M + sp.diags(mu + (dg == 0.0), format="csc")
-    return Js.T @ splu(M).solve(-F)
+    def __call__(self, F: np.ndarray, mu: float) -> np.ndarray:
+        if self.dense:
+            M = self.G.copy()
+            diag = np.einsum("ii->i", M)
+            diag += mu + (diag == 0.0)
+            return self.Js.T @ np.linalg.solve(M, -F)
+        import scipy.sparse as sp
+        from scipy.sparse.linalg import splu
+        M = self.G + sp.diags(mu + self.zero, format="csc")
+        return self.Js.T @ splu(M).solve(-F)
 
 
 def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | None = None,
@@ -108,9 +115,10 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
                 J = (J[keep] @ S).tocsr()
             Js = type(J)((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
+        step = _Step(Js, dense=small)
         for _ in range(14):
             try:
-                du = d * (_solve_dense(Js, F, mu) if small else _solve(Js, F, mu))
+                du = d * step(F, mu)
             except (RuntimeError, np.linalg.LinAlgError):
                 mu = max(mu * 100, 1e-8)
                 continue
