@@ -93,10 +93,10 @@ class Tape:
         for r, e in enumerate(exprs):
             if type(e) is Lin or isinstance(e, Lin):
                 k = len(arows)
-                for i, c in e.terms.items():
-                    ar.append(k)
-                    ac.append(i)
-                    av.append(c)
+                terms = e.terms
+                ar.extend([k] * len(terms))
+                ac.extend(terms.keys())
+                av.extend(terms.values())
                 ab.append(e.const)
                 arows.append(r)
                 continue
@@ -110,10 +110,10 @@ class Tape:
                     continue
                 if type(item) is Lin or isinstance(item, Lin):
                     leaf = len(lconst)
-                    for i, c in item.terms.items():
-                        lr.append(leaf)
-                        lc.append(i)
-                        lv.append(c)
+                    terms = item.terms
+                    lr.extend([leaf] * len(terms))
+                    lc.extend(terms.keys())
+                    lv.extend(terms.values())
                     lconst.append(item.const)
                     memo[key] = n = len(op)          # node(LEAF, leaf, leaf, 0, r)
                     op_add(LEAF)
