@@ -302,8 +302,15 @@ def mask_comments(src: str, record: list | None = None) -> str:
             continue
         if ch not in _SPECIAL:                  # a run of ordinary characters at once
             m = _PLAIN.match(src, i)
-            if not m.group().isspace():
+            seg = m.group()
+            if not seg.isspace():
                 line_start = False
+                prev = seg.rstrip()[-1]
+                for b in _BRACKETS.findall(seg):
+                    if b in "([":
+                        depth += 1
+                    elif depth:
+                        depth -= 1
             i = m.end()
             continue
         if ch in "\"'":
@@ -347,6 +354,7 @@ def mask_comments(src: str, record: list | None = None) -> str:
 
 _SPECIAL = frozenset("\"'#/\n")
 _PLAIN = re.compile(r"[^\"'#/\n]+")
+_BRACKETS = re.compile(r"[()\[\]]")
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
 _STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
