@@ -1,19 +1,29 @@
 """Parse AIDL source text into the typed AST of :mod:`aidl_lang.ast`.
 
-Lark LALR(1) over ``grammar/aidl.lark`` (the parse table is cached on disk), a post-lexer that
-drops newlines inside brackets and before ``else``, and statement-level error recovery: each
-syntax error becomes an ``E0001`` diagnostic listing the expected tokens, the offending logical
-line is blanked (its braces kept) and the file is parsed again, so one run reports several errors.
+Lark LALR(1) over ``grammar/aidl.lark``, a post-lexer that drops newlines inside brackets and
+before ``else``, and statement-level error recovery: each syntax error becomes an ``E0001``
+diagnostic listing the expected tokens, the offending logical line is blanked (its braces kept)
+and the file is parsed again, so one run reports several errors.
+
+Speed (issue 12, docs/performance.md): the AST node of each rule is built inside the LALR
+reduction (no parse tree is built and walked), its span taken from the first and last token it
+covers (what Lark's ``propagate_positions`` would give); Lark's table and lexer scanner are run
+by one loop each.  The parse table is cached as JSON (never a pickle) in the user's own cache
+folder, owner-only (issue 15), see :func:`cached_lark`.
 """
 from __future__ import annotations
 
+import hashlib
 import re
+import threading
 from pathlib import Path
 
-from lark import Lark, Token, Transformer, Tree, v_args
-from lark.exceptions import VisitError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark import Lark, Token
+from lark.exceptions import (LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput,
+                             UnexpectedToken)
 
 from . import ast as A
+from .cache import cache_dir, read_owned, write_atomic
 from .diagnostics import DiagnosticSink, Span
 
 GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
@@ -94,15 +104,196 @@ def _retype_thickness(stream):
 
 
 _LARK: Lark | None = None
+_LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
+_CACHE_FORMAT = 1
+
+
+def cached_lark(postlex=None, **options) -> Lark:
+    """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in the
+    user's cache folder (:func:`aidl_lang.cache.cache_dir`; never pickled: a cache file cannot
+    run code), keyed by the grammar, the options and Lark's version; rebuilt and rewritten
+    (atomically, mode 0600) when missing, stale, unreadable or not owner-only."""
+    import json
+
+    import lark
+    from lark.grammar import Rule
+    from lark.lexer import TerminalDef
+
+    grammar = GRAMMAR.read_text()
+    key = hashlib.sha256(repr((_CACHE_FORMAT, lark.__version__, grammar, sorted(options.items()),
+                               postlex is not None)).encode()).hexdigest()
+    d = cache_dir()
+    path = d / f"parser-{key[:24]}.json" if d is not None else None
+    text = read_owned(path) if path is not None else None
+    if text is not None:
+        try:
+            blob = json.loads(text, object_hook=_int_keys)
+            if blob.get("key") == key:
+                return Lark._load_from_dict(blob["data"], blob["memo"], postlex=postlex)
+        except Exception:               # a stale or damaged cache: rebuild it below
+            pass
+    lp = Lark(grammar, postlex=postlex, **options)
+    if path is not None:
+        data, memo = lp.memo_serialize([TerminalDef, Rule])
+        data["options"] = {k: v for k, v in data["options"].items() if k != "postlex"}
+        try:
+            write_atomic(path, json.dumps({"key": key, "data": data, "memo": memo}))
+        except (TypeError, ValueError):
+            pass
+    return lp
+
+
+def _int_keys(d: dict) -> dict:
+    """JSON object keys back to ints where Lark used ints (memo ids, parser states)."""
+    return {int(k) if k.isdigit() else k: v for k, v in d.items()}
 
 
 def lark_parser() -> Lark:
-    global _LARK
+    """The Lark LALR parser whose reductions build the typed AST directly (see
+    :class:`_Builder`).
+
+    ``lark_parser().parse(text, start=...)`` returns a ``_R`` wrapper; :func:`parse` and
+    :func:`parse_expression` run the same table and callbacks through :func:`_run_lalr`.
+    """
+    global _LARK, _TABLE
     if _LARK is None:
-        _LARK = Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic",
-                     postlex=_PostLex(), propagate_positions=True, maybe_placeholders=True,
-                     start=["start", "expr"], cache=True)
+        lp = cached_lark(postlex=_PostLex(), **_LARK_OPTIONS)
+        callbacks = _reduce_callbacks(lp)
+        lp._callbacks.clear()                      # shared with the LALR parser by reference
+        lp._callbacks.update(callbacks)
+        _TABLE = _compile_table(lp, callbacks)
+        _LARK = lp
     return _LARK
+
+
+_TABLE = None
+
+
+def _compile_table(lp: Lark, callbacks: dict):
+    """Lark's LALR table in the form :func:`_run_lalr` reads fastest: per state, a shift or
+    goto is the next state (an int); a reduction is ``(size, rule name, callback)``, or
+    ``(None, rule name, None)`` for a unit rule whose child stays as it is."""
+    table = lp.parser.parser._parse_table
+    states = {}
+    for st, actions in table.states.items():
+        row = {}
+        for sym, (_action, arg) in actions.items():
+            if isinstance(arg, int):
+                row[sym] = arg
+            else:
+                cb = callbacks[arg]
+                row[sym] = ((None, arg.origin.name, None) if cb is _unit
+                            else (len(arg.expansion), arg.origin.name, cb))
+        states[st] = row
+    return states, table.start_states, table.end_states, table.states
+
+
+_POSTLEX = _PostLex()
+
+
+def _lex(text: str):
+    """Lark's basic lexer over ``text`` (same terminals, same order, same keyword callbacks,
+    same positions), as one loop over its compiled scanner."""
+    basic = _LARK.parser.lexer.lexer
+    scanner = basic.scanner                         # builds basic.callback too
+    mres = scanner._mres
+    single = mres[0] if len(mres) == 1 else None
+    ignore, newline, callback = basic.ignore_types, basic.newline_types, basic.callback
+    pos, line, line_start, end = 0, 1, 0, len(text)
+    last = None
+    while pos < end:
+        m = single.match(text, pos) if single is not None else None
+        if m is None:
+            for mre in mres:
+                m = mre.match(text, pos)
+                if m:
+                    break
+            else:
+                allowed = scanner.allowed_types - ignore or {"<END-OF-FILE>"}
+                raise UnexpectedCharacters(text, pos, line, pos - line_start + 1, allowed=allowed,
+                                           token_history=last and [last],
+                                           terminals_by_name=basic.terminals_by_name)
+        value, type_ = m.group(0), m.lastgroup
+        npos = pos + len(value)
+        if type_ in ignore and type_ not in callback:
+            if type_ in newline:
+                k = value.count("\n")
+                if k:
+                    line += k
+                    line_start = pos + value.rindex("\n") + 1
+            pos = npos
+            continue
+        t = Token(type_, value, pos, line, pos - line_start + 1)
+        if type_ in newline:
+            k = value.count("\n")
+            if k:
+                line += k
+                line_start = pos + value.rindex("\n") + 1
+        t.end_line = line
+        t.end_column = npos - line_start + 1
+        t.end_pos = npos
+        pos = npos
+        if type_ in callback:
+            t = callback[type_](t)
+        if type_ not in ignore:
+            last = t
+            yield t
+
+
+def _run_lalr(text: str, start: str):
+    """Lex ``text`` with Lark's lexer and post-lexer and run Lark's LALR(1) table over it with
+    the AST callbacks: the loop of ``lark.parsers.lalr_parser_state.ParserState.feed_token``
+    without its per-step assertions and rule-object look-ups.  Raises Lark's
+    ``UnexpectedToken`` / ``UnexpectedCharacters`` as ``Lark.parse`` does."""
+    lark_parser()
+    states, start_states, end_states, raw = _TABLE
+    state_stack = [start_states[start]]
+    value_stack: list = []
+    push_state, push_value = state_stack.append, value_stack.append
+    token = None
+    for token in _POSTLEX.process(_lex(text)):
+        while True:
+            try:
+                act = states[state_stack[-1]][token.type]
+            except KeyError:
+                raise UnexpectedToken(token, {s for s in raw[state_stack[-1]] if s.isupper()})
+            if type(act) is int:
+                push_state(act)
+                push_value(token)
+                break
+            size, origin, cb = act
+            if size is None:                 # unit rule: same value, new state
+                state_stack[-1] = states[state_stack[-2]][origin]
+                continue
+            if size:
+                children = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                children = []
+            push_value(cb(children))
+            push_state(states[state_stack[-1]][origin])
+    end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1)
+    end_state = end_states[start]
+    while True:
+        try:
+            act = states[state_stack[-1]]["$END"]
+        except KeyError:
+            raise UnexpectedToken(end, {s for s in raw[state_stack[-1]] if s.isupper()})
+        size, origin, cb = act
+        if size is None:
+            state_stack[-1] = states[state_stack[-2]][origin]
+        else:
+            if size:
+                children = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                children = []
+            push_value(cb(children))
+            push_state(states[state_stack[-1]][origin])
+        if state_stack[-1] == end_state:
+            return value_stack[-1]
 
 
 # --------------------------------------------------------------- preprocessing
@@ -133,6 +324,19 @@ def mask_comments(src: str, record: list | None = None) -> str:
                 quote = None
                 prev = "a"   # a string ends an operand
             i += 1
+            continue
+        if ch not in _SPECIAL:                  # a run of ordinary characters at once
+            m = _PLAIN.match(src, i)
+            seg = m.group()
+            if not seg.isspace():
+                line_start = False
+                prev = seg.rstrip()[-1]
+                for b in _BRACKETS.findall(seg):
+                    if b in "([":
+                        depth += 1
+                    elif depth:
+                        depth -= 1
+            i = m.end()
             continue
         if ch in "\"'":
             quote = ch
@@ -173,6 +377,9 @@ def mask_comments(src: str, record: list | None = None) -> str:
     return "".join(out)
 
 
+_SPECIAL = frozenset("\"'#/\n")
+_PLAIN = re.compile(r"[^\"'#/\n]+")
+_BRACKETS = re.compile(r"[()\[\]]")
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
 _STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
@@ -266,34 +473,50 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
                     return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
         elif ch in ")]}":
             depth -= 1
-    lp = lark_parser()
-    seen: set[int] = set()
-    for _attempt in range(MAX_ERRORS + 1):
-        try:
-            tree = lp.parse(text, start="start")
-            break
-        except UnexpectedInput as e:
-            pos = _error_pos(e, text)
-            if pos in seen or len(seen) >= MAX_ERRORS:
-                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-            seen.add(pos)
-            _report(e, text, path, pos, sink)
-            _slash_hint(sink, slashes, text, pos)
-            if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
-                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-            text = _blank_logical_line(text, pos)
-    else:
-        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    lark_parser()
     builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    seen: set[int] = set()
     try:
-        stmts = builder.transform(tree)
-    except VisitError as e:
-        if not isinstance(e.orig_exc, _BuildError):
-            raise
-
+        for _attempt in range(MAX_ERRORS + 1):
+            builder.failed.clear()
+            try:
+                stmts = _run_lalr(text, "start").v
+                break
+            except UnexpectedInput as e:
+                pos = _error_pos(e, text)
+                if pos in seen or len(seen) >= MAX_ERRORS:
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                seen.add(pos)
+                _report(e, text, path, pos, sink)
+                _slash_hint(sink, slashes, text, pos)
+                if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                text = _blank_logical_line(text, pos)
+        else:
+            return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
         return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
     end_line = source.count("\n") + 1
     return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts)
+
+
+def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
+    """Parse one expression (``--set`` values); raises a ``LarkError`` when it does not parse
+    (an error inside an f-string is also reported to ``sink``)."""
+    builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    try:
+        node = _run_lalr(text, "expr").v
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
+        raise _BuildError(builder.failed[0][1])
+    return node
 
 
 def _error_pos(e: UnexpectedInput, text: str) -> int:
@@ -338,17 +561,18 @@ def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: Diagnostic
                Span(path, line, col, line, col + width, pos, pos + width), hint)
 
 
-class _BuildError(Exception):
-    pass
+class _BuildError(LarkError):
+    """A reduction could not build its node (an f-string whose expression does not parse)."""
 
 
 def _span(path: str, x) -> Span:
+    """A :class:`Span` from a token, a position tuple ``(line, col, start, end_line, end_col,
+    end)`` (a reduction's extent) or ``None`` (a reduction that covers no token)."""
     if isinstance(x, Token):
         return Span(path, x.line, x.column, x.end_line, x.end_column, x.start_pos, x.end_pos)
-    m = x.meta if isinstance(x, Tree) else x
-    if getattr(m, "empty", False) or not hasattr(m, "line"):
+    if x is None:
         return Span(path, 1, 1, 1, 1)
-    return Span(path, m.line, m.column, m.end_line, m.end_column, m.start_pos, m.end_pos)
+    return Span(path, x[0], x[1], x[3], x[4], x[2], x[5])
 
 
 def parse_number(text: str) -> tuple[float, str | None]:
@@ -361,12 +585,129 @@ def parse_number(text: str) -> tuple[float, str | None]:
     return float(m.group("num")), unit
 
 
-@v_args(meta=True)
-class _Builder(Transformer):
+class _R:
+    """A reduction's value with the extent of the text it covers (``pos``: line, column,
+    offset of its first token, then of the end of its last token; ``None`` when it covers no
+    token), as Lark's ``propagate_positions`` computes it for a tree node's container."""
+
+    __slots__ = ("v", "pos")
+
+    def __init__(self, v, pos):
+        self.v = v
+        self.pos = pos
+
+
+_STATE = threading.local()       # .builder: the _Builder of the parse running in this thread
+
+
+def _reduce_callbacks(lp: Lark) -> dict:
+    """One callback per grammar rule for Lark's LALR loop, building the AST in the reduction.
+
+    The same steps as Lark's tree builder with ``propagate_positions=True`` and
+    ``maybe_placeholders=True`` (drop filtered tokens, add ``None`` for missing optional parts,
+    splice ``_rule`` children, pass a ``?rule``'s single child through), except that the node
+    is made by the :class:`_Builder` method named after the rule, from the children and the
+    extent of the first and last child, instead of a ``Tree`` that is walked afterwards.
+    """
+    callbacks = {}
+    for rule in lp.rules:
+        name = rule.alias or rule.options.template_source or rule.origin.name
+        expansion = rule.expansion
+        empty = rule.options.empty_indices
+        if empty:
+            bits = "".join(str(int(b)) for b in empty)
+            nones = [len(ones) for ones in bits.split("0")]
+        else:
+            nones = [0] * (len(expansion) + 1)
+        include = []
+        pending = 0
+        for i, sym in enumerate(expansion):
+            pending += nones[i]
+            if rule.options.keep_all_tokens or not (sym.is_term and sym.filter_out):
+                include.append((i, not sym.is_term and sym.name.startswith("_"), pending))
+                pending = 0
+        tail = pending + nones[len(expansion)]
+        expand1 = bool(rule.options.expand1 and not rule.alias)
+        if name.startswith("_"):
+            build = None                        # spliced into the parent
+        else:
+            build = getattr(_Builder, name, None)
+            if build is None:
+                if not expand1:
+                    raise RuntimeError(f"grammar rule `{name}` has no AST builder")
+                build = _no_builder            # a `?rule` passes its one child through
+        if expand1 and len(expansion) == 1 and include == [(0, False, 0)] and not tail:
+            callbacks[rule] = _unit           # `?sum: product`: the child, extent and all
+        else:
+            callbacks[rule] = _make_callback(tuple(include), tail, expand1, build)
+    # Key the callbacks by the parse table's own Rule objects: the LALR loop looks them up on
+    # every reduction, and an identical key skips Rule.__eq__.
+    table = lp.parser.parser._parse_table
+    for actions in table.states.values():
+        for _action, arg in actions.values():
+            if isinstance(arg, type(lp.rules[0])):
+                callbacks[arg] = callbacks.pop(arg)
+    return callbacks
+
+
+def _unit(children):
+    return children[0]
+
+
+def _no_builder(builder, meta, items):
+    raise RuntimeError("a `?rule` without an AST builder matched more than one item")
+
+
+def _make_callback(include, tail, expand1, build):
+    def reduce(children):
+        first = last = None
+        for c in children:
+            if type(c) is _R:
+                if c.pos is not None:
+                    first = c.pos
+                    break
+            else:
+                first = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
+                break
+        for c in reversed(children):
+            if type(c) is _R:
+                if c.pos is not None:
+                    last = c.pos
+                    break
+            else:
+                last = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
+                break
+        pos = None if first is None else (first[0], first[1], first[2], last[3], last[4], last[5])
+        items = []
+        for i, splice, nn in include:
+            if nn:
+                items += [None] * nn
+            c = children[i]
+            if splice:
+                items += c.v
+            elif type(c) is _R:
+                items.append(c.v)
+            else:
+                items.append(c)
+        if tail:
+            items += [None] * tail
+        if expand1 and len(items) == 1:
+            if type(children[include[0][0]]) is not _R:
+                return children[include[0][0]]      # a token passed through as it is
+            return _R(items[0], pos)
+        if build is None:
+            return _R(items, pos)                   # a `_rule`: its items are spliced
+        return _R(build(_STATE.builder, pos, items), pos)
+    return reduce
+
+
+class _Builder:
+    """The AST node for each grammar rule; ``meta`` is the rule's extent (see :func:`_span`)."""
+
     def __init__(self, path: str, sink: DiagnosticSink):
-        super().__init__()
         self.path = path
         self.sink = sink
+        self.failed: list = []       # f-string errors (code, message, span) of this attempt
 
     def s(self, x) -> Span:
         return _span(self.path, x)
@@ -488,8 +829,8 @@ class _Builder(Transformer):
             if ch == "{":
                 j = body.find("}", i)
                 if j < 0:
-                    self.sink.error("E0001", "unclosed `{` in f-string", self.s(tok))
-                    raise _BuildError
+                    self.failed.append(("E0001", "unclosed `{` in f-string", self.s(tok)))
+                    return parts
                 inner = body[i + 1:j]
                 fmt = None
                 if ":" in inner:
@@ -497,12 +838,11 @@ class _Builder(Transformer):
                 if buf:
                     parts.append(buf); buf = ""
                 try:
-                    sub = lark_parser().parse(inner.strip(), start="expr")
+                    expr = _run_lalr(inner.strip(), "expr").v
                 except UnexpectedInput:
-                    self.sink.error("E0001", f"cannot parse `{inner}` in f-string", self.s(tok))
-                    raise _BuildError
-                sub_builder = _Builder(self.path, self.sink)
-                expr = sub_builder.transform(sub)
+                    self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
+                                        self.s(tok)))
+                    return parts
                 _respan(expr, self.s(tok))
                 parts.append((expr, fmt))
                 i = j + 1

@@ -1,15 +1,18 @@
 """Solver scaling: AIDL's solver against SolveSpace, and hierarchical against flat.
 
-Run:  .venv/bin/python benchmarks/solver_scaling.py  [--quick]
+Run:  .venv/bin/pip install -e ".[bench]"   (SolveSpace's ``slvs`` from PyPI)
+      .venv/bin/python benchmarks/solver_scaling.py  [--quick]
 
 Prints one table in four parts:
 
 (a) flat sketch families (``benchmarks/families.py``: a chain of rectangles, points on a ring
     with equal chords, a linkage with lengths and angles) from 10 to 2000 parameters, each
     started 10% off a known solution and checked against it (max point error, mm).  Columns:
-    our first solve (building rows, compiling, substituting, Newton), our re-solve from the same
+    the build (ours: source text to a model; SolveSpace: the sketch made through its API), our
+    first solve (building rows, compiling, substituting, Newton), our re-solve from the same
     start with the compiled system cached (what an edit costs), and SolveSpace (``slvs`` from
-    PyPI, ``solve_sketch`` only) in the same run.  planegcs needs Python 3.12 and is skipped.
+    PyPI, ``solve_sketch`` only) in the same run, with slvs/ours ratios for each.  planegcs
+    needs Python 3.12 and is skipped.
 (b) generated hierarchical models with 10 to 500 structures: hierarchical solve against a flat
     solve of the same model, with the log-log growth exponent.
 (c) every bundled example: the solve time.
@@ -68,7 +71,7 @@ def flat_rows(sizes, have_slvs: bool):
         for n in sizes:
             case = make(n, seed=7)
             reps = 5 if n <= 200 else 3
-            base = _model(case.source)
+            t_build, base = best_of(lambda: _model(case.source), 1 if n > 200 else 3)
             x0 = list(base.x)
 
             def first():
@@ -82,8 +85,9 @@ def flat_rows(sizes, have_slvs: bool):
                 solver.x[:solver.n_model] = x0
                 return run(solver)
             t_again, res2 = best_of(again, reps)
-            t_slvs = e_slvs = None
+            t_slvs = e_slvs = b_slvs = None
             if have_slvs:
+                b_slvs, _ = best_of(case.slvs, reps if n <= 800 else 1)
                 runner = {}
 
                 def slvs_solve():
@@ -101,8 +105,8 @@ def flat_rows(sizes, have_slvs: bool):
                 read = runner["read"]
                 e_slvs = max(math.hypot(*(np.subtract(read(k), v)))
                              for k, v in case.solution.items())
-            rows.append((name, case.n_params, t_first, t_again, t_slvs, err, e_slvs,
-                         res.converged and res2.converged))
+            rows.append((name, case.n_params, t_build, b_slvs, t_first, t_again, t_slvs, err,
+                         e_slvs, res.converged and res2.converged))
     return rows
 
 
@@ -143,12 +147,19 @@ def main() -> None:
     sizes = [10, 50, 200] if args.quick else [10, 50, 200, 800, 2000]
     print("(a) flat families, started 10% off a known solution"
           + ("" if have_slvs else "  [slvs not installed: pip install slvs]"))
-    print(f"{'family':<11}{'params':>7}{'ours 1st':>10}{'ours re':>9}{'slvs':>10}"
-          f"{'slvs/ours':>10}{'err ours':>10}{'err slvs':>10}  ok")
-    for name, n, t1, t2, ts, e1, es, okk in flat_rows(sizes, have_slvs):
-        ratio = f"{ts / t1:9.1f}x" if ts else "        -"
-        print(f"{name:<11}{n:>7}{t1:>10.2f}{t2:>9.2f}{(ts or float('nan')):>10.2f}{ratio:>10}"
-              f"{e1:>10.1e}{(es if es is not None else float('nan')):>10.1e}  {okk}")
+    print("    build: source text to a model (ours: parse + check + interpret) or the sketch "
+          "built through the slvs API;\n    1st: a cold solve; re: a warm re-solve from the same "
+          "start (compiled system kept); ratios are slvs time / ours (>1: ours faster)")
+    print(f"{'family':<11}{'params':>7}{'build':>9}{'slvs bld':>9}{'ratio':>8}{'ours 1st':>10}"
+          f"{'ours re':>9}{'slvs':>10}{'1st ratio':>10}{'re ratio':>9}{'err ours':>10}"
+          f"{'err slvs':>10}  ok")
+    nan = float("nan")
+    for name, n, tb, bs, t1, t2, ts, e1, es, okk in flat_rows(sizes, have_slvs):
+        def ratio(a, b, w):
+            return f"{a / b:{w - 1}.2f}x" if a else " " * (w - 1) + "-"
+        print(f"{name:<11}{n:>7}{tb:>9.2f}{(bs or nan):>9.3f}{ratio(bs, tb, 8)}{t1:>10.2f}"
+              f"{t2:>9.2f}{(ts or nan):>10.2f}{ratio(ts, t1, 10)}{ratio(ts, t2, 9)}"
+              f"{e1:>10.1e}{(es if es is not None else nan):>10.1e}  {okk}")
     hs = [10, 50] if args.quick else [10, 50, 200, 500]
     print("\n(b) generated hierarchical models (solve only; parse+interpret shown apart)")
     print(f"{'structures':>10}{'params':>8}{'interp':>9}{'hier':>9}{'flat':>9}{'attempts':>10}  ok")

@@ -27,7 +27,7 @@ from lark import Lark
 
 from .. import ast as A
 from ..diagnostics import DiagnosticSink
-from ..parser import GRAMMAR, mask_comments, parse
+from ..parser import GRAMMAR, cached_lark, mask_comments, parse
 
 INDENT = 4
 
@@ -38,7 +38,7 @@ def _lexer() -> Lark:
     """A Lark instance over the same grammar, without the post-lexer (it drops newlines)."""
     global _LEXER
     if _LEXER is None:
-        _LEXER = Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic", cache=True)
+        _LEXER = cached_lark(parser="lalr", lexer="basic")
     return _LEXER
 
 

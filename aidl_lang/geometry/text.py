@@ -10,13 +10,37 @@ from functools import lru_cache
 CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1) maps ~1 em)
 
 
+FONT = "futural"
+
+
 @lru_cache(maxsize=1)
 def _font():
+    """The font, normalized.  Its glyph table (3.5 KB of text) is kept in the user's cache
+    folder (:mod:`aidl_lang.cache`): ``load_default_font`` unpacks a bz2 archive of every
+    Hershey font each time, the slowest step of a cold ``aidl check`` of a part with text."""
     from HersheyFonts import HersheyFonts
+    from ..cache import cache_dir, read_owned, write_atomic
     f = HersheyFonts()
-    f.load_default_font("futural")
+    d = cache_dir()
+    path = d / f"hershey-{FONT}.jhf" if d is not None else None
+    lines = read_owned(path) if path is not None else None
+    if lines:
+        f.read_from_string_lines(lines.splitlines())
+    else:
+        f.load_default_font(FONT)
+        if path is not None:
+            write_atomic(path, _font_text(f))
     f.normalize_rendering(1.0)
     return f
+
+
+def _font_text(f) -> str:
+    """The ``.jhf`` text of the default font ``FONT`` as the package ships it."""
+    import io
+    import tarfile
+    raw = f._HersheyFonts__get_compressed_font_bytes()
+    with tarfile.open(fileobj=io.BytesIO(raw), mode="r") as tar:
+        return tar.extractfile(FONT).read().decode("utf-8")
 
 
 @lru_cache(maxsize=512)

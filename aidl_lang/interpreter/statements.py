@@ -175,11 +175,10 @@ class Statements:
         return out
 
     def _eval_override(self, name: str, text: str, fctx: FileCtx):
-        from ..parser import lark_parser, _Builder
+        from ..parser import parse_expression
         from lark.exceptions import LarkError
         try:
-            tree = lark_parser().parse(text, start="expr")
-            node = _Builder("<--set>", self.sink).transform(tree)
+            node = parse_expression(text, "<--set>", self.sink)
         except LarkError:
             raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
                             None, hint="write a number with an optional unit, e.g. `--set width=40mm`")

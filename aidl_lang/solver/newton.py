@@ -17,8 +17,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse.linalg import splu
 
 from .tape import Tape
 
@@ -34,21 +32,31 @@ class NewtonResult:
     residual: float          # max |F| at x
 
 
-def _solve_dense(Jd: np.ndarray, F: np.ndarray, mu: float) -> np.ndarray:
-    M = Jd @ Jd.T
-    diag = np.einsum("ii->i", M)
-    diag += mu + (diag == 0.0)
-    return Jd.T @ np.linalg.solve(M, -F)
+class _Step:
+    """The damped minimum-norm step for one Jacobian: ``J J^T`` is formed once and only the
+    damping ``mu`` changes between tries (a rejected step used to rebuild it).  A sparse
+    ``Js`` (SciPy CSR) is solved with ``splu``, SciPy being imported only then."""
 
+    def __init__(self, Js, dense: bool):
+        if not dense and Js.shape[0] <= DENSE_MAX:
+            Js, dense = Js.toarray(), True
+        self.Js, self.dense = Js, dense
+        if dense:
+            self.G = Js @ Js.T
+        else:
+            self.G = (Js @ Js.T).tocsc()
+            self.zero = self.G.diagonal() == 0.0
 
-def _solve(Js: sp.csr_matrix, F: np.ndarray, mu: float) -> np.ndarray:
-    m = Js.shape[0]
-    if m <= DENSE_MAX:
-        return _solve_dense(Js.toarray(), F, mu)
-    M = (Js @ Js.T).tocsc()
-    dg = M.diagonal()
-    M = M + sp.diags(mu + (dg == 0.0), format="csc")
-    return Js.T @ splu(M).solve(-F)
+    def __call__(self, F: np.ndarray, mu: float) -> np.ndarray:
+        if self.dense:
+            M = self.G.copy()
+            diag = np.einsum("ii->i", M)
+            diag += mu + (diag == 0.0)
+            return self.Js.T @ np.linalg.solve(M, -F)
+        import scipy.sparse as sp
+        from scipy.sparse.linalg import splu
+        M = self.G + sp.diags(mu + self.zero, format="csc")
+        return self.Js.T @ splu(M).solve(-F)
 
 
 def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | None = None,
@@ -64,7 +72,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     x = x0.copy()
     if reduction is not None:
         red = reduction
-        x[cols] = red.S @ red.z0 + red.t
+        x[cols] = red.expand(red.z0) + red.t
         keep = red.keep
         d = red.scale
         u = red.z0.copy()
@@ -75,7 +83,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
 
     def place(u):
         xn = x.copy()
-        xn[cols] = (red.S @ u + red.t) if reduction is not None else u
+        xn[cols] = (red.expand(u) + red.t) if reduction is not None else u
         return xn
 
     def residual(xx):
@@ -91,7 +99,9 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     it = 0
     small = len(F) <= DENSE_MAX and len(u) <= 4 * DENSE_MAX
     if small and reduction is not None:
-        Sd = red.S.toarray()
+        Sd = red.dense()
+    elif reduction is not None:
+        S = red.S
     while it < max_iter:
         it += 1
         if small:                    # dense all the way: no sparse-matrix overhead
@@ -102,12 +112,13 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
         else:
             J = tape.jacobian(x, cols, choices, v)
             if reduction is not None:
-                J = (J[keep] @ red.S).tocsr()
-            Js = sp.csr_matrix((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
+                J = (J[keep] @ S).tocsr()
+            Js = type(J)((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
+        step = _Step(Js, dense=small)
         for _ in range(14):
             try:
-                du = d * (_solve_dense(Js, F, mu) if small else _solve(Js, F, mu))
+                du = d * step(F, mu)
             except (RuntimeError, np.linalg.LinAlgError):
                 mu = max(mu * 100, 1e-8)
                 continue

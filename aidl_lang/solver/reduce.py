@@ -18,34 +18,94 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from .tape import Tape
 
 
 @dataclass
 class Reduction:
-    """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve."""
+    """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve.
 
-    S: sp.csr_matrix           # (len(cols), n_z)
+    ``S`` (len(cols), n_z) has one 1 per row of an unknown left to solve, in column ``zc[i]``
+    (``-1``: the unknown is fixed, its row of ``S`` is empty).  :meth:`expand` applies it with
+    array indexing; the SciPy matrix :attr:`S` is made only when a sparse solve asks for it.
+    """
+
+    zc: np.ndarray             # (len(cols),) class column of each unknown, -1 if fixed
     t: np.ndarray              # (len(cols),)
     keep: np.ndarray
     z0: np.ndarray             # starting unknowns (class means)
     scale: np.ndarray          # (n_z,)
 
+    def expand(self, z: np.ndarray) -> np.ndarray:
+        """``S @ z`` (bit for bit the sparse product: ``0.0 + z[zc[i]]``, 0 where fixed)."""
+        out = np.zeros(len(self.zc))
+        rows = self._rows()
+        out[rows] += z[self.zc[rows]]
+        return out
+
+    def dense(self) -> np.ndarray:
+        """``S`` as an ndarray."""
+        out = np.zeros((len(self.zc), len(self.z0)))
+        rows = self._rows()
+        out[rows, self.zc[rows]] = 1.0
+        return out
+
+    @property
+    def S(self):
+        """``S`` as a SciPy CSR matrix (imports SciPy)."""
+        import scipy.sparse as sp
+        rows = self._rows()
+        return sp.csr_matrix((np.ones(len(rows)), (rows, self.zc[rows])),
+                             shape=(len(self.zc), len(self.z0)))
+
+    def _rows(self) -> np.ndarray:
+        return np.flatnonzero(self.zc >= 0)
+
+
+_KEEP = 8          # substitutions remembered per tape (a re-solve reuses the last ones)
+
 
 def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Reduction | None:
     """The substitution for ``tape``'s rows over unknowns ``cols`` at ``x``; None if nothing
-    is trivial (solve the system as it is)."""
+    is trivial (solve the system as it is).
+
+    The classes, offsets and fixed values depend on ``x`` only through the held parameters,
+    so they are remembered on the tape, keyed by ``cols`` and those values: a re-solve from
+    new starting guesses recomputes only the class means ``z0``."""
     n = len(cols)
     if not len(tape.aff_rows) or not n:
         return None
     colmap = -np.ones(tape.n_params, dtype=np.int64)
     colmap[cols] = np.arange(n)
     free = colmap[tape.a_col] >= 0
+    held = x[tape.a_col[~free]]
+    memo = tape.__dict__.setdefault("_substitutions", {})
+    key = (np.asarray(cols).tobytes(), held.tobytes())
+    sub = memo.get(key)
+    if sub is None:
+        if len(memo) >= _KEEP:
+            memo.clear()
+        sub = memo[key] = _substitution(tape, n, colmap, free, held)
+    if sub is False:
+        return None
+    zc, t, keep, offs, n_live = sub
+    rows = np.flatnonzero(zc >= 0)
+    # start each class at the mean of its members (least total movement), weights 1/d^2
+    xc = x[cols]
+    w = 1.0 / scale ** 2
+    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows], minlength=n_live)
+    den = np.bincount(zc[rows], weights=w[rows], minlength=n_live)
+    z0 = num / np.where(den > 0, den, 1.0)
+    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
+    return Reduction(zc, t, keep, z0, zscale)
+
+
+def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held: np.ndarray):
+    """``(zc, t, keep, offs, number of classes)``, or False when no row is trivial."""
     # constant part of each affine row: held parameters and b
     const = tape.b.copy()
-    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * x[tape.a_col[~free]])
+    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * held)
     rr, cc, vv = tape.a_row[free], colmap[tape.a_col[free]], tape.a_val[free]
     nz = vv != 0.0
     rr, cc, vv = rr[nz], cc[nz], vv[nz]
@@ -117,7 +177,7 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
                 used[r] = True
                 changed = True
     if not used.any():
-        return None
+        return False
     class_roots = np.unique(roots)
     live_roots = np.asarray([r for r in class_roots if r not in fixed_root], dtype=np.int64)
     zidx = -np.ones(n, dtype=np.int64)
@@ -126,15 +186,5 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
     for root, v in fixed_root.items():
         t[roots == root] += v
     zc = zidx[roots]
-    rows = np.flatnonzero(zc >= 0)
-    S = sp.csr_matrix((np.ones(len(rows)), (rows, zc[rows])), shape=(n, len(live_roots)))
-    # start each class at the mean of its members (least total movement), weights 1/d^2
-    xc = x[cols]
-    w = 1.0 / scale ** 2
-    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows],
-                      minlength=len(live_roots))
-    den = np.bincount(zc[rows], weights=w[rows], minlength=len(live_roots))
-    z0 = num / np.where(den > 0, den, 1.0)
-    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
     keep = np.setdiff1d(np.arange(tape.n_rows), tape.aff_rows[used])
-    return Reduction(S, t, keep, z0, zscale)
+    return zc, t, keep, offs, len(live_roots)

@@ -26,7 +26,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from ..geometry.expr import Lin, Nl
 
@@ -37,6 +36,14 @@ SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, ABS, EXP, LOG = range(8, 18)
 _BINARY = {"add": ADD, "mul": MUL, "div": DIV, "pow": POW, "atan2": ATAN2,
            "min": MIN, "max": MAX}
 _TINY = 1e-300
+
+
+def _distinct(a: np.ndarray) -> bool:
+    """No value of ``a`` repeats (a Python set for short arrays: np.unique's overhead
+    dominated small tapes)."""
+    if len(a) <= 64:
+        return len(set(a.tolist())) == len(a)
+    return len(np.unique(a)) == len(a)
 
 
 class TapeError(ValueError):
@@ -80,43 +87,52 @@ class Tape:
             root_of.append(row)
             return len(op) - 1
 
+        op_add, a0_add, a1_add, lev_add, root_add = (op.append, a0.append, a1.append,
+                                                      level.append, root_of.append)
+        binary_or_unary = {**_UNARY, **_BINARY}
         for r, e in enumerate(exprs):
-            if isinstance(e, Lin):
+            if type(e) is Lin or isinstance(e, Lin):
                 k = len(arows)
-                for i, c in e.terms.items():
-                    ar.append(k)
-                    ac.append(i)
-                    av.append(c)
+                terms = e.terms
+                ar.extend([k] * len(terms))
+                ac.extend(terms.keys())
+                av.extend(terms.values())
                 ab.append(e.const)
                 arows.append(r)
                 continue
             memo: dict[int, int] = {}
             stack = [(e, False)]
+            push, pop = stack.append, stack.pop
             while stack:                       # iterative post-order: deep trees are fine
-                item, ready = stack.pop()
+                item, ready = pop()
                 key = id(item)
                 if key in memo:
                     continue
-                if isinstance(item, Lin):
+                if type(item) is Lin or isinstance(item, Lin):
                     leaf = len(lconst)
-                    for i, c in item.terms.items():
-                        lr.append(leaf)
-                        lc.append(i)
-                        lv.append(c)
+                    terms = item.terms
+                    lr.extend([leaf] * len(terms))
+                    lc.extend(terms.keys())
+                    lv.extend(terms.values())
                     lconst.append(item.const)
-                    memo[key] = n = node(LEAF, leaf, leaf, 0, r)
+                    memo[key] = n = len(op)          # node(LEAF, leaf, leaf, 0, r)
+                    op_add(LEAF)
+                    a0_add(leaf)
+                    a1_add(leaf)
+                    lev_add(0)
+                    root_add(r)
                     leaf_node.append(n)
                     continue
                 if not isinstance(item, Nl):
                     raise TapeError(f"cannot compile {type(item).__name__} into a residual")
                 if not ready:
-                    stack.append((item, True))
+                    push((item, True))
                     for arg in item.args:
                         if id(arg) not in memo:
-                            stack.append((arg, False))
+                            push((arg, False))
                     continue
                 args = [memo[id(a)] for a in item.args]
-                code = _BINARY.get(item.op, _UNARY.get(item.op))
+                code = binary_or_unary.get(item.op)
                 if code is None:
                     raise TapeError(f"unknown operator `{item.op}`")
                 if code in (MIN, MAX) and len(args) > 2:
@@ -132,11 +148,18 @@ class Tape:
                     memo[key] = args[0]
                     continue
                 if len(args) == 1:
-                    args = [args[0], args[0]]
-                if len(args) != 2:
+                    p = q = args[0]
+                elif len(args) == 2:
+                    p, q = args
+                else:
                     raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
-                p, q = args
-                memo[key] = node(code, p, q, max(level[p], level[q]) + 1, r)
+                memo[key] = len(op)                  # node(code, p, q, ..., r)
+                op_add(code)
+                a0_add(p)
+                a1_add(q)
+                lp_, lq_ = level[p], level[q]
+                lev_add((lp_ if lp_ > lq_ else lq_) + 1)
+                root_add(r)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
 
@@ -169,9 +192,8 @@ class Tape:
             keys = lev[inner] * 64 + op_a[inner]
             cuts = np.flatnonzero(np.diff(keys)) + 1
             for chunk in np.split(inner, cuts):
-                g = _Group(int(op_a[chunk[0]]), chunk, a0_a[chunk], a1_a[chunk],
-                           len(np.unique(a0_a[chunk])) == len(chunk),
-                           len(np.unique(a1_a[chunk])) == len(chunk))
+                g0, g1 = a0_a[chunk], a1_a[chunk]
+                g = _Group(int(op_a[chunk[0]]), chunk, g0, g1, _distinct(g0), _distinct(g1))
                 if g.op in (MIN, MAX):
                     g.sel = np.arange(self.n_choices, self.n_choices + len(chunk))
                     self.n_choices += len(chunk)
@@ -353,6 +375,7 @@ class Tape:
             J = np.zeros((self.n_rows, len(cols)))
             J[pat.urows, pat.indices] = data
             return J
+        import scipy.sparse as sp           # only sparse (large) systems need SciPy
         return sp.csr_matrix((data, pat.indices, pat.indptr), shape=(self.n_rows, len(cols)))
 
 

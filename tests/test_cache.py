@@ -1,0 +1,205 @@
+"""The user's cache folder (issue 15): nothing planted in the shared temporary folder is ever
+loaded, the parse table and the font live in the user's own folder, owner-only, as plain data.
+
+Each check runs the parser in a fresh interpreter (the cache is read once per process) with
+``TMPDIR``, ``XDG_CACHE_HOME`` and ``HOME`` pointed into the test's own folder.
+"""
+from __future__ import annotations
+
+import json
+import os
+import pickle
+import stat
+import subprocess
+import sys
+import tempfile
+
+import lark
+import pytest
+
+from aidl_lang.parser import GRAMMAR, _PostLex
+
+PROGRAM = "solid s {\n    a = Point(0, 0)\n    b = Point(3, 4)\n    Distance(a, b, 5)\n}\n"
+
+CHILD = """
+import sys
+from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.parser import parse
+sink = DiagnosticSink()
+prog = parse(sys.argv[1], "t.aidl", sink)
+assert not sink.has_errors, [d.message for d in sink.items]
+print(type(prog.stmts[0]).__name__, prog.stmts[0].name)
+"""
+
+
+class _Plant:
+    """Unpickling this writes the marker file: what an attacker's planted pickle would do."""
+
+    def __init__(self, marker: str):
+        self.marker = marker
+
+    def __reduce__(self):
+        return (open, (self.marker, "w"))
+
+
+def _run(tmp_path, **env_extra) -> subprocess.CompletedProcess:
+    env = dict(os.environ, TMPDIR=str(tmp_path / "tmp"), XDG_CACHE_HOME=str(tmp_path / "cache"),
+               HOME=str(tmp_path / "home"))
+    env.update(env_extra)
+    return subprocess.run([sys.executable, "-c", CHILD, PROGRAM], env=env, capture_output=True,
+                          text=True, timeout=120)
+
+
+def _old_cache_file(tmpdir) -> str:
+    """The exact file the old code (Lark ``cache=True``) read: let Lark write it once."""
+    old = tempfile.tempdir
+    tempfile.tempdir = str(tmpdir)
+    try:
+        lark.Lark(GRAMMAR.read_text(), parser="lalr", lexer="basic", postlex=_PostLex(),
+                  propagate_positions=True, maybe_placeholders=True, start=["start", "expr"],
+                  cache=True)
+    finally:
+        tempfile.tempdir = old
+    (name,) = [p for p in os.listdir(tmpdir) if p.startswith(".lark_cache")]
+    return os.path.join(tmpdir, name)
+
+
+def test_a_pickle_planted_where_the_old_code_looked_is_never_loaded(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    path = _old_cache_file(tmp_path / "tmp")
+    marker = tmp_path / "pwned"
+    with open(path, "rb") as f:
+        header = f.readline()                 # the grammar hash the old code compared
+    with open(path, "wb") as f:
+        f.write(header)
+        pickle.dump(_Plant(str(marker)), f)
+    os.chmod(path, 0o666)
+    r = _run(tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["StructDecl", "s"]
+    assert not marker.exists()
+    # and nothing new appears in the shared temporary folder
+    assert os.listdir(tmp_path / "tmp") == [os.path.basename(path)]
+
+
+def test_the_cache_is_owner_only_json_in_the_users_cache_folder(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    d = tmp_path / "cache" / "aidl"
+    st = os.lstat(d)
+    assert stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid()
+    assert stat.S_IMODE(st.st_mode) == 0o700
+    files = list(d.iterdir())
+    assert [p.name[:7] for p in files] == ["parser-"]
+    fst = os.lstat(files[0])
+    assert fst.st_uid == os.getuid() and stat.S_IMODE(fst.st_mode) == 0o600
+    blob = json.loads(files[0].read_text())          # plain data, not a pickle
+    assert set(blob) == {"key", "data", "memo"}
+    # a second run reads it and parses the same
+    again = _run(tmp_path)
+    assert again.returncode == 0 and again.stdout.split() == ["StructDecl", "s"]
+
+
+def test_without_xdg_cache_home_the_cache_goes_under_home(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path, XDG_CACHE_HOME="").returncode == 0
+    d = tmp_path / "home" / ".cache" / "aidl"
+    assert stat.S_IMODE(os.lstat(d).st_mode) == 0o700
+    assert [p.name[:7] for p in d.iterdir()] == ["parser-"]
+
+
+def test_a_cache_file_others_can_write_is_not_read_but_replaced(tmp_path):
+    # a valid table with mode 0666: read, it would be kept as it is; refused, it is rebuilt
+    # and rewritten owner-only
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    (f,) = (tmp_path / "cache" / "aidl").iterdir()
+    os.chmod(f, 0o666)
+    ino = os.lstat(f).st_ino
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    st = os.lstat(f)
+    assert stat.S_IMODE(st.st_mode) == 0o600 and st.st_ino != ino
+
+
+def test_a_symbolic_link_in_the_cache_is_not_followed(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    (f,) = (tmp_path / "cache" / "aidl").iterdir()
+    elsewhere = tmp_path / "elsewhere.json"
+    os.replace(f, elsewhere)
+    os.symlink(elsewhere, f)
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert not os.path.islink(f)                      # replaced by a real file of ours
+
+
+@pytest.mark.skipif(os.getuid() != 0, reason="needs root to give a file to another user")
+def test_a_cache_folder_or_file_owned_by_someone_else_is_not_used(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    assert _run(tmp_path).returncode == 0
+    d = tmp_path / "cache" / "aidl"
+    (f,) = d.iterdir()
+    os.chown(f, 12345, 12345)                         # a valid table, planted by another user
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert os.lstat(f).st_uid == os.getuid()          # refused, rebuilt and replaced
+    os.chown(d, 12345, 12345)                         # the whole folder belongs to another user
+    os.chown(f, 12345, 12345)
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert os.lstat(f).st_uid == 12345                # nothing written into it
+    assert [p.name for p in d.iterdir()] == [f.name]
+
+
+FONT_CHILD = """
+from aidl_lang.geometry.text import text_extent
+print(*(round(v, 9) for v in text_extent("AIDL 42", 5.0)))
+"""
+
+
+def _run_font(tmp_path) -> list[float]:
+    env = dict(os.environ, TMPDIR=str(tmp_path / "tmp"), XDG_CACHE_HOME=str(tmp_path / "cache"),
+               HOME=str(tmp_path / "home"))
+    r = subprocess.run([sys.executable, "-c", FONT_CHILD], env=env, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    return [float(v) for v in r.stdout.split()]
+
+
+def test_the_font_is_cached_owner_only_and_gives_the_same_strokes(tmp_path):
+    from HersheyFonts import HersheyFonts
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    first = _run_font(tmp_path)
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
+    st = os.lstat(f)
+    assert st.st_uid == os.getuid() and stat.S_IMODE(st.st_mode) == 0o600
+    assert _run_font(tmp_path) == first                       # read back from the cache
+    # the same glyphs as the package's own loader, character by character
+    ref = HersheyFonts()
+    ref.load_default_font("futural")
+    mine = HersheyFonts()
+    mine.read_from_string_lines(f.read_text().splitlines())
+    for ch in map(chr, range(32, 127)):
+        assert list(mine.lines_for_text(ch)) == list(ref.lines_for_text(ch)), ch
+    # width 5 mm cap height: "AIDL 42" is wider than tall, and sits on the baseline
+    x0, x1, y0, y1 = first
+    assert x1 - x0 > 3 * (y1 - y0) > 0 and abs(y0) < 1e-9 and abs(y1 - 5.0) < 0.01
+
+
+def test_a_font_file_others_can_write_is_not_read(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    good = _run_font(tmp_path)
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
+    f.write_text("  1 20 ::\n" * 95)                           # empty glyphs: no strokes
+    os.chmod(f, 0o666)
+    assert _run_font(tmp_path) == good
+    assert stat.S_IMODE(os.lstat(f).st_mode) == 0o600
