@@ -13,12 +13,17 @@ the interpreter (:mod:`aidl_lang.interp`) as it runs, with the same diagnostic m
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 from . import ast as A
 from .diagnostics import DiagnosticSink, did_you_mean
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
                        lookup)
+from .sources import ImportRefused
+
+
+def _real(path: str) -> str:
+    import os
+    return os.path.realpath(path)
 
 KINDS = ("solid", "hole", "drawing", "assembly")
 
@@ -109,6 +114,7 @@ class Checker:
     def __init__(self, sink: DiagnosticSink, path: str):
         self.sink = sink
         self.path = path
+        self.import_failed = False     # names may come from an import that failed: no E0101/E0103
         self.templates: dict[str, A.Def] = {}
 
     # ------------------------------------------------------------------ scopes
@@ -139,8 +145,19 @@ class Checker:
             elif isinstance(st, A.Import):
                 if st.alias:
                     file_names.add(st.alias)
+                    try:
+                        _imported_names(program.path, st.path, frozenset({_real(program.path)}))
+                    except ImportRefused as ex:
+                        self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
+                                        suggestions=ex.suggestions)
                 else:
-                    file_names |= _imported_names(program.path, st.path)
+                    try:
+                        file_names |= _imported_names(program.path, st.path,
+                                                      frozenset({_real(program.path)}))
+                    except ImportRefused as ex:
+                        self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
+                                        suggestions=ex.suggestions)
+                        self.import_failed = True
         top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def))]
         file_names |= self.block_names(top)
         fscope = _Scope(None, file_names)
@@ -227,6 +244,8 @@ class Checker:
         n = e.id
         if scope.has(n) or n in CONSTANTS or n == "self" or n in FUNCTIONS or lookup(n):
             return
+        if self.import_failed:
+            return
         cands = scope.all() | set(CONSTANTS) | {"self"}
         sugg = did_you_mean(n, cands)
         self.sink.error("E0101", f"unknown name `{n}`", e.span,
@@ -256,6 +275,8 @@ class Checker:
                                 f"argument{'s' if hi > 1 else ''}, got {len(e.args)}", e.span)
             return
         entry = lookup(n)
+        if entry is None and self.import_failed:
+            return
         if entry is None:
             cands = list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS) + list(self.templates)
             sugg = did_you_mean(n, cands)
@@ -307,24 +328,34 @@ class Checker:
                                 hint=f"`{d.name}({p.name}=...)`")
 
 
-def _imported_names(path: str, target: str) -> set:
-    from .sources import STDLIB
+MAX_IMPORT_DEPTH = 16
+
+
+def _imported_names(path: str, target: str, seen: frozenset = frozenset()) -> set:
+    """Names ``import "target"`` (in the file ``path``) brings without ``as``: the file's
+    templates, params and top-level constants, aliases, and what it imported in turn
+    (docs/language.md §2.2).  Raises :class:`~aidl_lang.sources.ImportRefused` for the
+    import itself; a refused or cyclic import *inside* the imported file adds no names (the
+    interpreter reports it where it is written)."""
+    from .sources import load_import
     from .parser import parse
-    if target.startswith(("std/", "std:")):
-        p = STDLIB / target[4:]
-    else:
-        p = Path(path).resolve().parent / target
-    if p.suffix != ".aidl":
-        p = p.with_suffix(".aidl")
-    try:
-        text = p.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError):
+    real, text = load_import(target, path)
+    key = str(real)
+    if key in seen or len(seen) > MAX_IMPORT_DEPTH:
         return set()
-    prog = parse(text, str(p), DiagnosticSink())
+    prog = parse(text, key, DiagnosticSink())
     out = set()
     for st in prog.stmts:
         if isinstance(st, (A.Def, A.ParamDecl, A.Assign)):
             out.add(st.name)
+        elif isinstance(st, A.Import):
+            if st.alias:
+                out.add(st.alias)
+            else:
+                try:
+                    out |= _imported_names(key, st.path, seen | {key})
+                except ImportRefused:
+                    pass
     return out
 
 

@@ -278,8 +278,6 @@ def test_E0113_good_override_is_used(compile_text):
     assert c.model.x[g.scalars["radius"].index] == pytest.approx(20.0)
 
 
-@pytest.mark.xfail(strict=True, reason="the static checker reads the missing file's names as "
-                   "empty and reports E0103 at the use; the E0114 at the import is never reached")
 def test_E0114_missing_import_without_alias(compile_text):
     c = compile_text('import "nothere.aidl"\nsolid s { a = gear(teeth=3) }\n')
     assert "E0114" in [d.code for d in errors(c)], [(d.code, d.message) for d in c.sink.items]

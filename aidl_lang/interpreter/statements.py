@@ -15,7 +15,7 @@ from ..geometry.primitives import member as geom_member
 from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
-from ..sources import STDLIB
+from ..sources import ImportRefused, read_import, resolve_import
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
                      _src)
 
@@ -190,29 +190,20 @@ class Statements:
     def _import(self, st: A.Import, fctx: FileCtx) -> None:
         from ..parser import parse
         raw = st.path
-        if raw.startswith("std/") or raw.startswith("std:"):
-            base = STDLIB
-            rel = raw[4:]
-        else:
-            base = Path(fctx.path).resolve().parent
-            rel = raw
-        if not rel.endswith(".aidl"):
-            rel += ".aidl"
-        target = (base / rel).resolve()
-        allowed = [STDLIB.resolve(), self.root_dir]
-        if not any(target == a or a in target.parents for a in allowed) or Path(rel).is_absolute():
-            raise EvalError("E0114", f"import `{raw}` leaves the project folder", st.path_span,
-                            hint="import only .aidl files in this file's folder tree, or `std/NAME.aidl`")
-        if not target.is_file():
-            cands = [p.name for p in target.parent.glob("*.aidl")] if target.parent.is_dir() else []
-            raise EvalError("E0114", f"cannot find `{raw}` to import", st.path_span,
-                            hint=f"looked for {target}", suggestions=did_you_mean(target.name, cands))
+        try:
+            target = resolve_import(raw, fctx.path)
+        except ImportRefused as ex:
+            raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint,
+                            suggestions=ex.suggestions)
         key = str(target)
         if key in self.loading:
             raise EvalError("E0115", f"import cycle: `{raw}` imports this file again", st.path_span,
                             hint="move the shared templates into a third file")
         if key not in self.loaded:
-            text = target.read_text(encoding="utf-8", errors="replace")
+            try:
+                text = read_import(target, raw)
+            except ImportRefused as ex:
+                raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint)
             prog = parse(text, key, self.sink)
             self.loading.append(key)
             saved = (self.scope, self.file)

@@ -285,21 +285,14 @@ class Index:
     def _import(self, st: A.Import) -> None:
         """Bind what ``import`` brings: the other file's templates, params and top-level
         constants (or, with ``as``, a namespace holding them)."""
-        from ...sources import STDLIB
-        from pathlib import Path
+        from ...sources import ImportRefused, load_import
         if len(self._seen) > self.MAX_IMPORT_DEPTH:
             return
-        if st.path.startswith(("std/", "std:")):
-            p = STDLIB / st.path[4:]
-        else:
-            p = Path(self.path).resolve().parent / st.path
-        if p.suffix != ".aidl":
-            p = p.with_suffix(".aidl")
-        if _resolved(str(p)) in self._seen:
-            return
         try:
-            text = p.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError, ValueError):
+            p, text = load_import(st.path, self.path)
+        except ImportRefused:
+            return
+        if _resolved(str(p)) in self._seen:
             return
         other = Index(text, str(p), self._seen)
         if st.alias:
