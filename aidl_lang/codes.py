@@ -159,6 +159,34 @@ instance to other parts with constraints in the parent structure.
     "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items."),
     "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
     "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
+    "E0304": ("evaluation budget exhausted", """
+One compile has one evaluation budget (docs/language.md §8.1): 250 000 steps (every loop
+iteration, comprehension element, call and template instance counts one), 60 000 geometry
+objects, structures and constraints together, 1 000 000 characters in one string or items in
+one list, and 60 s of wall time for interpreting and solving. Each construct's own limit
+(E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
+their product: nested loops, a template that instantiates itself several times per level.
+The error points at the outermost loop or template instance running when the budget ran out
+and labels the ones inside it.
+
+    solid s {
+        for i in range(1000) {
+            for j in range(1000) { ... }    # 1 000 000 iterations: over the budget
+        }
+    }
+
+Build less, or, if the model really needs it, raise every figure with `--budget K`
+(e.g. `aidl render model.aidl --budget 4`).
+"""),
+    "E0305": ("number not finite or beyond the model extent", """
+A computed number is infinite or not a number (NaN), e.g. `1 / 5e-324` or `x - x` with an
+infinite `x`, or a coordinate, size or length is beyond the model extent of 1e6 mm (1 km).
+Such numbers would make the solver and the writers produce nothing useful, so the expression
+that produced them is an error.
+
+    i = 1 / 5e-324                                 # inf
+    c = Circle(center=(0, 0), radius=i - i)        # NaN radius: E0305
+"""),
     "E0401": ("constraints cannot be satisfied", """
 After solving, some constraints still do not hold: they contradict each other or a dimension
 held by a constructor (width, radius, ...). The message lists them with their residuals (how far

@@ -18,16 +18,17 @@ Limits (docs/language.md, "Limits"; :mod:`aidl_lang.limits`): loops and comprehe
 """
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
-from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Span
+from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
 from .geometry.expr import evaluate, lift
 from .geometry.model import Model, Structure
 from .interpreter.calls import Calls
-from .interpreter.common import FileCtx, Scope
+from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
-from .limits import MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH
+from .limits import DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, Budget
 from .sources import STDLIB
 
 __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
@@ -40,8 +41,14 @@ class Interpreter(Statements, Calls, Expressions):
     The methods live in the parts under :mod:`aidl_lang.interpreter`.
     """
 
-    def __init__(self, sink: DiagnosticSink, overrides: dict[str, str] | None = None):
+    def __init__(self, sink: DiagnosticSink, overrides: dict[str, str] | None = None,
+                 budget: Budget = DEFAULT_BUDGET, deadline: float | None = None):
         self.sink = sink
+        self.budget = budget
+        self.deadline = deadline if deadline is not None else time.monotonic() + budget.seconds
+        self.steps = 0
+        self.objects = 0
+        self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
         self.model = Model()
         self.overrides = dict(overrides or {})
         self.template_depth = 0
@@ -53,6 +60,62 @@ class Interpreter(Statements, Calls, Expressions):
         self.file: FileCtx | None = None
         self.root_dir: Path | None = None
         self.cur_span: Span | None = None
+
+    def run(self, program):
+        """Interpret ``program``; an exhausted budget is one ``E0304`` (the model so far is
+        returned, with the error in the sink)."""
+        try:
+            return Statements.run(self, program)
+        except BudgetExhausted as ex:
+            self.budget_error(ex)
+            return self.model
+
+    # ------------------------------------------------------------------ the budget
+    def step(self, span=None) -> None:
+        """Count one evaluation step (loop iteration, comprehension element, call, template
+        instance); checks the wall-time deadline every 1024 steps."""
+        self.steps += 1
+        if self.steps > self.budget.steps:
+            raise BudgetExhausted(f"more than {self.budget.steps:,} evaluation steps (loop "
+                                  "iterations, comprehension elements, calls and template "
+                                  "instances)", span or self.cur_span, self.frames)
+        if not self.steps & 1023 and time.monotonic() > self.deadline:
+            raise BudgetExhausted(f"more than {self.budget.seconds:g} s of wall time",
+                                  span or self.cur_span, self.frames)
+
+    def count_object(self, span=None) -> None:
+        """Count one geometry object, structure or constraint against the budget."""
+        self.objects += 1
+        if self.objects > self.budget.objects:
+            raise BudgetExhausted(f"more than {self.budget.objects:,} geometry objects, "
+                                  "structures and constraints", span or self.cur_span, self.frames)
+
+    def check_size(self, n: int, span, what: str = "a string") -> None:
+        """A string or list of ``n`` characters/items must fit the budget's ``size``."""
+        if n > self.budget.size:
+            raise BudgetExhausted(f"{what} of {n:,} items, more than the {self.budget.size:,} "
+                                  "allowed", span, self.frames)
+
+    def budget_error(self, ex: BudgetExhausted) -> None:
+        frames = [f for f in ex.frames if f[1] is not None]
+        primary = frames[0][1] if frames else ex.span
+        labels, seen = [], {frames[0][1]} if frames else set()
+        for what, sp in frames[1:]:
+            if sp in seen:
+                continue
+            seen.add(sp)
+            n = sum(1 for f in frames if f[1] == sp)
+            labels.append(Label(sp, f"inside {what}" + (f" ({n} levels)" if n > 1 else ""),
+                                primary=False))
+        labels = labels[:6]
+        if ex.span is not None and all(ex.span != f[1] for f in frames):
+            labels.append(Label(ex.span, "the budget ran out here", primary=False))
+        where = f" in {frames[0][0]}" if frames else ""
+        self.sink.add(Diagnostic(
+            "E0304", f"the program ran out of its evaluation budget{where}: {ex.what}",
+            primary, "error", labels=labels,
+            hint="build less (smaller loops, fewer template instances); if the model really "
+                 "needs more, raise the budget with `--budget 2` (or more)"))
 
     # ------------------------------------------------------------------ helpers
     @property

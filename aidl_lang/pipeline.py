@@ -6,10 +6,12 @@ previous ones produced no errors.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
+from .limits import DEFAULT_BUDGET, Budget
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
@@ -31,11 +33,15 @@ class Compiled:
 
 
 def compile_source(source: str, path: str, overrides: dict[str, str] | None = None,
-                   do_solve: bool = True, min_wall: float = MIN_WALL) -> Compiled:
-    """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics)."""
+                   do_solve: bool = True, min_wall: float = MIN_WALL,
+                   budget: Budget = DEFAULT_BUDGET) -> Compiled:
+    """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics).
+
+    ``budget`` bounds interpretation and solving together (:class:`aidl_lang.limits.Budget`;
+    running out is ``E0304``)."""
     sink = DiagnosticSink()
     try:
-        return _compile(sink, source, path, overrides, do_solve, min_wall)
+        return _compile(sink, source, path, overrides, do_solve, min_wall, budget)
     except RecursionError:
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", None,
@@ -43,18 +49,20 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         return Compiled(sink)
 
 
-def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL) -> Compiled:
+def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
+             budget: Budget = DEFAULT_BUDGET) -> Compiled:
+    deadline = time.monotonic() + budget.seconds
     program = parse(source, path, sink)
     if sink.has_errors:
         return Compiled(sink)
     check(program, sink)
     if sink.has_errors:
         return Compiled(sink)
-    interp = Interpreter(sink, overrides)
+    interp = Interpreter(sink, overrides, budget, deadline)
     model = interp.run(program)
     if sink.has_errors or not do_solve:
         return Compiled(sink, model)
-    result = solve(model)
+    result = solve(model, deadline=deadline)
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result)
@@ -104,7 +112,12 @@ def _where(c) -> str:
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
     """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
     the iteration budget ran out."""
-    if result.budget_exceeded:
+    if result.out_of_time:
+        sink.add(Diagnostic(
+            "E0304", "the program ran out of its evaluation budget while solving: more than "
+            "its wall time", None, "error",
+            hint="simplify the model, or raise the budget with `--budget 2` (or more)"))
+    elif result.budget_exceeded:
         sink.add(Diagnostic(
             "E0402", f"the solver gave up after {result.iterations} Newton steps (its budget)",
             None, "error",

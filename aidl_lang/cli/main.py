@@ -54,6 +54,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
     r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
                    help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    _budget_arg(r)
     c = sub.add_parser("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
@@ -63,6 +64,7 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
+    _budget_arg(c)
     e = sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
     f = sub.add_parser("fmt", help="format .aidl files in place (canonical layout)")
@@ -84,6 +86,27 @@ def _parser() -> argparse.ArgumentParser:
     from .llm import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
+
+
+def _budget_factor(text: str) -> float:
+    try:
+        k = float(text)
+    except ValueError:
+        k = -1.0
+    if not 0 < k <= 1000:
+        raise argparse.ArgumentTypeError(f"--budget expects a factor between 0 and 1000, got `{text}`")
+    return k
+
+
+def _budget_arg(p) -> None:
+    p.add_argument("--budget", type=_budget_factor, default=1.0, metavar="K",
+                   help="multiply the evaluation budget (steps, objects, sizes, time; "
+                        "docs/language.md §8.1) by K, e.g. --budget 4")
+
+
+def _budget(args):
+    from ..limits import DEFAULT_BUDGET
+    return DEFAULT_BUDGET.scaled(args.budget)
 
 
 def _overrides(items: list[str]) -> dict[str, str]:
@@ -130,7 +153,8 @@ def cmd_check(args) -> int:
     src = _read(args.file, args.json)
     if src is None:
         return 1
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
+                         budget=_budget(args))
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -280,7 +304,8 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall)
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
+                         budget=_budget(args))
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1

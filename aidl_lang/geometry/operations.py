@@ -89,6 +89,8 @@ class _Cloner:
         if g in self.geoms:
             return self.geoms[g]
         self.ctx.n_geometry += 1
+        if hasattr(self.ctx, "count_object"):       # the interpreter's budget
+            self.ctx.count_object(self.ctx.cur_span)
         if self.ctx.n_geometry > MAX_GEOMETRY:
             raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", self.ctx.cur_span,
                             hint="use fewer or larger repetitions")

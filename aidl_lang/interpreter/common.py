@@ -19,6 +19,18 @@ class _Silent(Exception):
 POISON = object()
 
 
+class BudgetExhausted(Exception):
+    """Raised when the compile's evaluation budget (:class:`aidl_lang.limits.Budget`) runs
+    out; it unwinds the whole interpretation (no statement catches it) and
+    :meth:`aidl_lang.interp.Interpreter.run` turns it into one ``E0304``."""
+
+    def __init__(self, what: str, span, frames):
+        super().__init__(what)
+        self.what = what
+        self.span = span
+        self.frames = list(frames)
+
+
 class Scope:
     def __init__(self, parent: "Scope | None", struct: Structure | None, file: "FileCtx"):
         self.vars: dict = {}

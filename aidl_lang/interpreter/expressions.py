@@ -51,13 +51,19 @@ class Expressions:
                     c /= self.unit_scale
                 elif v.dim == ANG:
                     c /= DEG
+                if fmt and _format_width(fmt) > self.budget.size:
+                    raise EvalError("E0304", f"the format `{fmt}` asks for more than "
+                                    f"{self.budget.size:,} characters", e.span,
+                                    hint="use a width below the string size budget")
                 try:
                     out.append(format(c, fmt) if fmt else _fmt_num(c))
                 except ValueError:
                     raise EvalError("E0108", f"bad format `{fmt}`", e.span)
             else:
                 out.append(str(v).lower() if isinstance(v, bool) else str(v))
-        return "".join(out)
+        text = "".join(out)
+        self.check_size(len(text), e.span, "a string")
+        return text
 
     def _e_Name(self, e: A.Name):
         if e.id == "self":
@@ -105,6 +111,7 @@ class Expressions:
             s = s.parent
 
     def _e_Call(self, e: A.Call, name=None):
+        self.step(e.span)
         return self._call(e, name)
 
     def _e_Keyword(self, e):
@@ -209,8 +216,10 @@ class Expressions:
         items = self._iterable(self.eval(e.iter), e.iter)
         out = []
         outer = self.scope
+        self.frames.append(("the comprehension `[... for " + e.var + " in ...]`", e.span))
         try:
             for item in items:
+                self.step(e.span)
                 sc = Scope(outer, self.struct, self.file)
                 sc.vars[e.var] = item
                 self.scope = sc
@@ -218,6 +227,7 @@ class Expressions:
                     continue
                 out.append(self.eval(e.elt))
         finally:
+            self.frames.pop()
             self.scope = outer
         return out
 
@@ -264,8 +274,10 @@ class Expressions:
         l, r = self.eval(e.left), self.eval(e.right)
         op = e.op
         if op == "+" and isinstance(l, str) and isinstance(r, str):
+            self.check_size(len(l) + len(r), e.span, "a string")
             return l + r
         if op == "+" and isinstance(l, list) and isinstance(r, list):
+            self.check_size(len(l) + len(r), e.span, "a list")
             return l + r
         if isinstance(l, (tuple, list)) and len(l) == 2 and all(isinstance(c, Q) for c in l):
             l = self._to_point(l, e.left.span)
@@ -337,3 +349,8 @@ class Expressions:
         raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
                         hint="points add and subtract as vectors; scale them by numbers")
 
+
+def _format_width(fmt: str) -> int:
+    """The largest number written in a format spec (its width or precision), 0 if none."""
+    import re
+    return max((int(m) for m in re.findall(r"\d+", fmt)), default=0)

@@ -65,6 +65,7 @@ class Statements:
         return self.model
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
+        self.count_object(span)
         s = Structure(name, kind, parent, span, template=template)
         s.fx = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.x")
         s.fy = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.y")
@@ -374,7 +375,17 @@ class Statements:
         items = self._iterable(self.eval(st.iter), st.iter)
         collected: dict[str, list] = {}
         outer = self.scope
+        self.frames.append((f"the loop `for {st.var} in ...`", st.span))
+        try:
+            self._for_items(st, items, collected, outer)
+        finally:
+            self.frames.pop()
+        for name, vals in collected.items():
+            outer.vars[name] = vals
+
+    def _for_items(self, st: A.For, items, collected, outer) -> None:
         for k, item in enumerate(items):
+            self.step(st.span)
             sc = Scope(outer, self.struct, self.file)
             sc.vars[st.var] = item
             sc.loop_index = k
@@ -387,8 +398,6 @@ class Statements:
             for name, v in sc.vars.items():
                 if name != st.var:
                     collected.setdefault(name, []).append(v)
-        for name, vals in collected.items():
-            outer.vars[name] = vals
 
     def _iterable(self, v, node) -> list:
         if isinstance(v, (list, tuple)):
@@ -441,7 +450,9 @@ class Statements:
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
+        self.step(call.span)
         child = self._new_structure(name, d.kind, parent, call.span, template=d.name)
+        self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         saved_file = self.file
         tscope = Scope(t.scope, child, t.scope.file)
         self.file = t.scope.file
@@ -460,6 +471,7 @@ class Statements:
             self.scope = saved_scope
             self._run_body(child, d.body, tscope)
         finally:
+            self.frames.pop()
             self.template_depth -= 1
             self.file = saved_file
         return StructRef(child)
@@ -468,6 +480,7 @@ class Statements:
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
         s = self._need_struct(span)
         self._check_subtree(owners, span, s)
+        self.count_object(span)
         c = Constraint(kind, s, span, text=text)
         if any(contains_bbox(e.expr) for e in eqs):
             c.deferred = eqs

@@ -43,15 +43,20 @@ class SolveResult:
     n_equations: int = 0
     conflicts: list = field(default_factory=list)
     budget_exceeded: bool = False
+    out_of_time: bool = False
     attempts: int = 0
     solver: Solver | None = None
 
 
-def solve(model: Model, flat: bool = False, diagnose: bool = True) -> SolveResult:
+def solve(model: Model, flat: bool = False, diagnose: bool = True,
+          deadline: float | None = None) -> SolveResult:
     """Solve ``model`` in place (``model.x`` is updated even on failure, for diagnostics).
 
-    ``flat=True`` solves everything at once instead of hierarchically (for benchmarks)."""
+    ``flat=True`` solves everything at once instead of hierarchically (for benchmarks);
+    ``deadline`` (a ``time.monotonic()`` value) stops the solve and the conflict search when
+    passed (``SolveResult.out_of_time``)."""
     solver = Solver(model)
+    solver.deadline = deadline
     return run(solver, flat=flat, diagnose=diagnose)
 
 
@@ -67,7 +72,7 @@ def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResul
                       max((a.rounds for a in tr.attempts), default=0),
                       n_unknowns=int(solver.free.sum()), n_equations=len(solver.rows.exprs),
                       budget_exceeded=tr.budget_exceeded, attempts=len(tr.attempts),
-                      solver=solver)
+                      solver=solver, out_of_time=tr.out_of_time)
     if not res.converged:
         per: dict[int, list] = {}
         worst = 0.0

@@ -23,6 +23,7 @@ of a held value (:meth:`Solver.set_value`) only reruns Newton.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -66,6 +67,7 @@ class Trace:
     failures: list = field(default_factory=list)
     iterations: int = 0
     budget_exceeded: bool = False
+    out_of_time: bool = False
 
 
 class Solver:
@@ -73,6 +75,8 @@ class Solver:
 
     ``x``: extended parameter vector (model parameters, then inequality slacks), mm / rad.
     """
+
+    deadline: float | None = None       # time.monotonic() after which solving stops
 
     def __init__(self, model: Model):
         self.model = model
@@ -169,6 +173,9 @@ class Solver:
             left = ITER_BUDGET - tr.iterations
             if left <= 0:
                 tr.budget_exceeded = True
+                break
+            if self.deadline is not None and time.monotonic() > self.deadline:
+                tr.budget_exceeded = tr.out_of_time = True
                 break
             red = reduce(t, x, att.cols, scale) if self.use_reduction else None
             res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL,
