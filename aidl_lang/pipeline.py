@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
-from .limits import DEFAULT_BUDGET, Budget
+from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
@@ -66,10 +66,31 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result)
+    if not check_extent(sink, model):
+        return Compiled(sink, model, result)
     check_branches(sink, model)
     drawing = render_model(model)
     check_drawing(drawing, sink, min_wall)
     return Compiled(sink, model, result, drawing)
+
+
+def check_extent(sink: DiagnosticSink, model: Model) -> bool:
+    """After solving: every unknown finite and within the model extent
+    (:data:`~aidl_lang.limits.MAX_EXTENT`), else one E0305 at the structure that holds the
+    first offending unknown (no NaN or absurd coordinate reaches a writer)."""
+    import math
+    for i, v in enumerate(model.x):
+        if math.isfinite(v) and abs(v) <= MAX_EXTENT:
+            continue
+        owner = model.param_owner[i]
+        what = "not finite" if not math.isfinite(v) else f"{v:.4g} mm"
+        sink.error("E0305", f"after solving, `{model.param_label[i]}` is {what}, beyond the "
+                   f"model extent of {MAX_EXTENT:.0e} mm",
+                   owner.span if owner is not None else None,
+                   hint="the constraints push the geometry very far away: check the values "
+                        "and units of the dimensions")
+        return False
+    return True
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:

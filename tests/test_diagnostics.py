@@ -522,10 +522,7 @@ def test_every_code_has_title_and_explanation():
     "solid s { c = Circle((1e400 - 1e400, 0), 3) }",
     "solid s { c = Circle((0, 0), 1e400) }",
     pytest.param("x = " + " * ".join(["1e14"] * 23) + "\nsolid s { c = Circle((0, 0), x - x) }",
-                 id="computed-nan",
-                 marks=pytest.mark.xfail(strict=True, reason="a computed inf/NaN (each literal "
-                                         "below 1e15) is not checked: the CLI writes an empty "
-                                         "SVG and reports success")),
+                 id="computed-nan"),
 ])
 def test_non_finite_values_are_a_math_error(compile_text, src):
     c = compile_text(src + "\n")
@@ -575,3 +572,18 @@ def test_solver_codes_E0402_W0401_W0403(tmp_path, capsys, monkeypatch):
                  "    Distance(a, b, 50)\n    Angle(Line(a, b), Line((0, 0), (1, 0)), 10)\n}\n")
     rc, doc = _cli_json(capsys, "check", str(g), "--json")
     assert rc == 1 and [d["code"] for d in doc["diagnostics"]][0] == "E0402"
+
+
+def test_E0304_budget_names_the_outer_loop(compile_text):
+    from aidl_lang.limits import Budget
+    c = compile_text("solid s {\n    for i in range(200) {\n        for j in range(200) { x = 1 }\n"
+                     "    }\n}\n", budget=Budget(steps=10_000))
+    d = the_error(c, "E0304")
+    assert span4(d)[:2] == (2, 5) and "for i" in d.message
+    assert [(l.span.line, l.span.col) for l in d.labels] == [(3, 9)]
+
+
+def test_E0305_beyond_the_model_extent(compile_text):
+    c = compile_text("solid s {\n    r = Rectangle(center=(0, 0), width=2e6, height=1)\n}\n")
+    d = the_error(c, "E0305")
+    assert span4(d) == (2, 40, 2, 43)

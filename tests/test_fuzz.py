@@ -256,14 +256,9 @@ def test_regression_inputs_do_not_raise(src):
 RENDER_REGRESSIONS = [
     pytest.param("solid s { c = Circle((0, 0), 1e300) }", id="huge-radius"),
     pytest.param("solid s { c = Circle((0, 0), 1e400) }", id="infinite-radius"),
-    pytest.param("solid s { c = Circle((0, 0), 1e12) }", id="radius-1e12",
-                 marks=pytest.mark.xfail(strict=True, reason="coordinates above ~1e11 mm pass "
-                                         "the 1e15 literal limit but Manifold raises "
-                                         "RuntimeError('Values exceed permitted range')")),
+    pytest.param("solid s { c = Circle((0, 0), 1e12) }", id="radius-1e12"),
     pytest.param("solid s { r = Rectangle(center=(0, 0), width=1e14 * 1e14, height=1) }",
-                 id="computed-huge-width",
-                 marks=pytest.mark.xfail(strict=True, reason="only literals are checked against "
-                                         "the 1e15 limit; a computed 1e28 reaches the renderer")),
+                 id="computed-huge-width"),
     pytest.param("solid s { c = Circle((0, 0), 1e-12) }", id="tiny-radius"),
     pytest.param("solid s { r = Rectangle(center=(0, 0), width=0, height=0) }", id="zero-rect"),
     pytest.param("solid s { a = Line((0, 0), (0, 0)) }", id="zero-line"),

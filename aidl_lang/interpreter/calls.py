@@ -14,7 +14,7 @@ from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_of, type_name)
-from ..limits import MAX_GEOMETRY, MAX_ITER
+from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
 from .common import (DEG, _a, _fmt_num, _src)
@@ -55,7 +55,7 @@ class Calls:
             raise EvalError("E0111", f"a {type_name(callee)} cannot be called", node.func.span)
         nm = callee.name
         if nm in FUNCTIONS:
-            return self._function(nm, node)
+            return self.finite(self._function(nm, node), node.span)
         entry = lookup(nm)
         args = [self.eval(a) for a in node.args]
         kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
@@ -89,6 +89,8 @@ class Calls:
             elif a.default is not None:      # registry defaults are in mm / radians
                 dim = {"length": LEN, "angle": ANG, "number": NUM}.get(a.type)
                 conv[a.name] = Q.num(a.default, dim) if dim else a.default
+        for k, v in conv.items():
+            self._check_magnitudes(v, spans.get(k, node.span), k)
         if entry.category == "primitive":
             return self._primitive(canonical(nm), conv, node, spans)
         if entry.category == "operation":
@@ -356,3 +358,35 @@ class Calls:
         return int(round(c))
 
     # ------------------------------------------------------------------ expressions
+
+    # ------------------------------------------------------------------ magnitudes
+    def _check_magnitudes(self, v, span, arg: str) -> None:
+        """Arguments of primitives, constraints and operations: every number known before
+        solving must be finite (E0112), and lengths and coordinates within the model extent
+        :data:`~aidl_lang.limits.MAX_EXTENT` (E0305)."""
+        if isinstance(v, (list, tuple)):
+            for item in v[:10_000]:
+                self._check_magnitudes(item, span, arg)
+            return
+        if isinstance(v, PV):
+            vals = [(as_const(v.x), True), (as_const(v.y), True)]
+        elif isinstance(v, Q):
+            vals = [(v.const(), v.dim == LEN)]
+        else:
+            return
+        for c, is_len in vals:
+            if c is None:
+                continue
+            if not math.isfinite(c):
+                raise EvalError("E0112", f"`{arg}` is {_nonfinite(c)}", span,
+                                hint="a computation overflowed or divided by a tiny number; "
+                                     "check the expression")
+            if is_len and abs(c) > MAX_EXTENT:
+                raise EvalError("E0305", f"`{arg}` is {c:.4g} mm, beyond the model extent of "
+                                f"{MAX_EXTENT:.0e} mm", span,
+                                hint="models are limited to 1 km in every direction; check the "
+                                     "units and the expression")
+
+
+def _nonfinite(c: float) -> str:
+    return "not a number (NaN)" if c != c else "infinite"

@@ -270,7 +270,22 @@ class Expressions:
                 return False
         return True
 
+    def finite(self, v, span):
+        """``v`` unchanged if it is not a number known before solving or a finite one; an
+        infinite or NaN result is E0112 at ``span``."""
+        if isinstance(v, Q):
+            c = v.const()
+            if c is not None and not math.isfinite(c):
+                raise EvalError("E0112", "this computation gives " +
+                                ("not a number (NaN)" if c != c else "infinity"), span,
+                                hint="a value overflowed or was divided by a tiny number; "
+                                     "AIDL numbers must stay finite")
+        return v
+
     def _e_BinOp(self, e: A.BinOp):
+        return self.finite(self._binop(e), e.span)
+
+    def _binop(self, e: A.BinOp):
         l, r = self.eval(e.left), self.eval(e.right)
         op = e.op
         if op == "+" and isinstance(l, str) and isinstance(r, str):
