@@ -530,8 +530,6 @@ def test_non_finite_values_are_a_math_error(compile_text, src):
     assert errors(c)[0].code == "E0112"
 
 
-@pytest.mark.xfail(strict=True, reason="RegularPolygon accepts a fractional number of sides "
-                   "(3.5 is drawn as a square)")
 def test_fractional_polygon_sides_are_refused(compile_text):
     c = compile_text("solid s { p = RegularPolygon((0, 0), 5, 3.5) }\n")
     d = the_error(c, "E0108")

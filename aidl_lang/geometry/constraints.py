@@ -39,6 +39,22 @@ def _line(ctx, v, name: str) -> tuple[PV, PV]:
     raise ConstraintError(f"`{name}` must be a Line, got {type_name(v)}")
 
 
+def _directed_line(ctx, v, name: str) -> tuple[PV, PV]:
+    """``_line`` for constraints that use the line's direction (they divide by its length):
+    a line of zero starting length has none, and the solver's Jacobian is undefined there."""
+    s, e = _line(ctx, v, name)
+    try:
+        n = math.hypot(_val(ctx, e.x - s.x), _val(ctx, e.y - s.y))
+    except (TypeError, ValueError):
+        return s, e
+    if not n > 1e-9:
+        label = getattr(getattr(v, "geom", None), "label", None) or name
+        raise ConstraintError(f"`{label}` has zero length (its start and end are the same "
+                              "point), so it has no direction for this constraint; give it "
+                              "distinct starting points")
+    return s, e
+
+
 def _circ(ctx, v, name: str) -> tuple[PV, Expr]:
     if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
         from .primitives import member
@@ -140,7 +156,7 @@ def distance(ctx, a, b, distance, **_):
         a, b, ka, kb = b, a, kb, ka
     if ka == "point" and kb == "line":
         p = _pt(a, "a")
-        s, e = _line(ctx, b, "b")
+        s, e = _directed_line(ctx, b, "b")
         sd = _cross(e.x - s.x, e.y - s.y, p.x - s.x, p.y - s.y) / hypot(e.x - s.x, e.y - s.y)
         sign = _sign_nearest(ctx, sd, _val(ctx, d))
         return [Equation(sd - d * sign)]
@@ -168,7 +184,7 @@ def vertical_distance(ctx, a, b, distance, **_):
 
 
 def length(ctx, line, length, **_):
-    s, e = _line(ctx, line, "line")
+    s, e = _directed_line(ctx, line, "line")
     return [Equation(hypot(e.x - s.x, e.y - s.y) - length.expr)]
 
 
@@ -219,7 +235,7 @@ def equal(ctx, a, b, **_):
 
 
 def _dirs(ctx, a, b):
-    (s1, e1), (s2, e2) = _line(ctx, a, "a"), _line(ctx, b, "b")
+    (s1, e1), (s2, e2) = _directed_line(ctx, a, "a"), _directed_line(ctx, b, "b")
     return e1.x - s1.x, e1.y - s1.y, e2.x - s2.x, e2.y - s2.y
 
 
@@ -254,7 +270,7 @@ def tangent(ctx, a, b, **_):
     if ka == "circular" and kb == "line":
         a, b, ka, kb = b, a, kb, ka
     if ka == "line" and kb == "circular":
-        s, e = _line(ctx, a, "a")
+        s, e = _directed_line(ctx, a, "a")
         c, r = _circ(ctx, b, "b")
         sd = _cross(e.x - s.x, e.y - s.y, c.x - s.x, c.y - s.y) / hypot(e.x - s.x, e.y - s.y)
         sign = 1.0 if _val(ctx, sd) >= 0 else -1.0
@@ -278,7 +294,7 @@ def _sym_points(s, e, p, q):
 
 
 def symmetric(ctx, a, b, about, **_):
-    s, e = _line(ctx, about, "about")
+    s, e = _directed_line(ctx, about, "about")
     ka, kb = _kind(a), _kind(b)
     if ka == kb == "point":
         return _sym_points(s, e, _pt(a, "a"), _pt(b, "b"))
@@ -301,7 +317,7 @@ def midpoint(ctx, point, line, **_):
 
 def on_line(ctx, point, line, **_):
     p = _pt(point, "point")
-    s, e = _line(ctx, line, "line")
+    s, e = _directed_line(ctx, line, "line")
     return [Equation(_cross(e.x - s.x, e.y - s.y, p.x - s.x, p.y - s.y) / hypot(e.x - s.x, e.y - s.y))]
 
 

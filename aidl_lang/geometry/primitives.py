@@ -42,6 +42,13 @@ def _const(ctx, q: Q, what: str) -> float:
     return c
 
 
+def _positive(q, what: str, kind: str) -> None:
+    """A size known before solving must be > 0 (a zero or negative size draws nothing)."""
+    c = q.const() if isinstance(q, Q) else None
+    if c is not None and not c > 0:
+        raise PrimitiveError(f"a {kind} needs a positive {what}, got {c:g}")
+
+
 def _build_Point(ctx, g, a):
     if "at" in a:
         g.points["p"] = ctx.point(a["at"], "p")
@@ -55,6 +62,9 @@ def _build_Line(ctx, g, a):
 
 
 def _build_Circle(ctx, g, a):
+    for k in ("radius", "diameter"):
+        if k in a:
+            _positive(a[k], k, "Circle")
     g.points["center"] = ctx.point(a["center"], "center")
     if "diameter" in a:
         r = Q(a["diameter"].expr * 0.5, LEN, a["diameter"].owners)
@@ -72,6 +82,7 @@ def _build_Arc(ctx, g, a):
         a = dict(a, center=center)
     c = g.points["center"] = ctx.point(a["center"], "center")
     if "radius" in a:
+        _positive(a["radius"], "radius", "Arc")
         r = _const(ctx, a["radius"], "Arc radius")
         a1 = _const(ctx, a["start_angle"], "Arc start_angle")
         a2 = _const(ctx, a["end_angle"], "Arc end_angle")
@@ -146,6 +157,8 @@ def _build_Rectangle(ctx, g, a):
                 oy = w0 * uy if nm == "bottom_right" else h0 * vy
                 pts[nm] = ctx.point(PV(bx + ox, by + oy), nm)
     else:
+        _positive(a["width"], "width", g.kind)
+        _positive(a["height"], "height", g.kind)
         w = ctx.scalar(a["width"], "width", held=True)
         h = ctx.scalar(a["height"], "height", held=True)
         wv, hv = ctx.value_of(var(w.index)), ctx.value_of(var(h.index))
@@ -301,6 +314,7 @@ def _build_Polygon(ctx, g, a):
     pts_in = a["points"]
     if len(pts_in) < 3:
         raise PrimitiveError(f"a Polygon needs at least 3 points, got {len(pts_in)}")
+    _check_polygon_points(ctx, pts_in)
     pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
     for i, p in enumerate(pts):
         g.points[f"p{i}"] = p
@@ -310,13 +324,37 @@ def _build_Polygon(ctx, g, a):
     g.closed = True
 
 
+def _check_polygon_points(ctx, pts) -> None:
+    """Starting points: no two consecutive ones equal (a zero-length edge), not all on one
+    line (no area)."""
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts]
+    except (AttributeError, TypeError):
+        return
+    n = len(xy)
+    scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+    for i in range(n):
+        (x0, y0), (x1, y1) = xy[i], xy[(i + 1) % n]
+        if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
+            raise PrimitiveError(f"a Polygon's points[{i}] and points[{(i + 1) % n}] are the "
+                                 f"same point ({x0:g}, {y0:g}): an edge of zero length")
+    area = sum(xy[i][0] * xy[(i + 1) % n][1] - xy[(i + 1) % n][0] * xy[i][1] for i in range(n))
+    if abs(area) <= 1e-9 * scale * scale:
+        raise PrimitiveError("a Polygon's points are all on one line: it has no area")
+
+
 def _build_RegularPolygon(ctx, g, a):
-    n = int(round(_const(ctx, a["sides"], "sides")))
+    sides = _const(ctx, a["sides"], "sides")
+    if abs(sides - round(sides)) > 1e-9:
+        raise PrimitiveError(f"a RegularPolygon needs a whole number of sides, got {sides:g}")
+    n = int(round(sides))
     if n < 3 or n > 1000:
         raise PrimitiveError(f"a RegularPolygon needs 3 to 1000 sides, got {n}")
     if "across_flats" in a:      # distance between opposite sides = 2 * apothem
+        _positive(a["across_flats"], "across_flats", "RegularPolygon")
         r = _const(ctx, a["across_flats"], "across_flats") / 2 / math.cos(math.pi / n)
     else:
+        _positive(a["radius"], "radius", "RegularPolygon")
         r = _const(ctx, a["radius"], "radius")
     if r <= 0:
         raise PrimitiveError("a RegularPolygon needs a positive size")
@@ -341,6 +379,8 @@ def _build_RegularPolygon(ctx, g, a):
 
 def _build_Slot(ctx, g, a):
     if "center" in a:
+        _positive(a["length"], "length", "Slot")
+        _positive(a["width"], "width", "Slot")
         L = _const(ctx, a["length"], "length")
         W = _const(ctx, a["width"], "width")
         rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
@@ -356,6 +396,7 @@ def _build_Slot(ctx, g, a):
                          Equation(var(e.iy) - var(c.iy) - half * uy)], "Slot shape")
         g.scalars["radius"] = ctx.new_scalar(W / 2, "radius", held=True)
     else:
+        _positive(a["radius"], "radius", "Slot")
         s = ctx.point(a["start"], "start")
         e = ctx.point(a["end"], "end")
         r = a["radius"] if "radius" in a else Q(a["width"].expr * 0.5, LEN, a["width"].owners)

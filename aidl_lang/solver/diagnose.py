@@ -69,7 +69,7 @@ def dependencies(J: np.ndarray, order: list[int]):
     for r in order:
         v = J[r].astype(float)
         nv = float(np.linalg.norm(v))
-        if nv == 0.0:
+        if nv == 0.0 or not np.isfinite(nv):
             continue
         w = v.copy()
         for _ in range(2):              # Gram-Schmidt, twice for stability
@@ -79,6 +79,8 @@ def dependencies(J: np.ndarray, order: list[int]):
         if nw > DEP_TOL * nv:
             basis.append(w / nw)
             indep.append(r)
+            continue
+        if not indep:
             continue
         B = J[indep]
         c, *_ = np.linalg.lstsq(B.T, v, rcond=None)
