@@ -6,8 +6,11 @@ previous ones produced no errors.
 """
 from __future__ import annotations
 
+import threading
 import time
 from dataclasses import dataclass
+
+from lark.exceptions import VisitError
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
@@ -41,12 +44,87 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     running out is ``E0304``)."""
     sink = DiagnosticSink()
     try:
-        return _compile(sink, source, path, overrides, do_solve, min_wall, budget)
-    except RecursionError:
+        return run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
+                                         budget))
+    except (RecursionError, MemoryError) as ex:
         sink.sources.setdefault(path, source)
-        sink.error("E0302", "the program is nested too deeply to compile", None,
+        sink.error("E0302", "the program is nested too deeply to compile", _deep_span(ex, path, source),
                    hint="split long expressions into named constants")
         return Compiled(sink)
+    except VisitError as ex:             # the parser's tree builder ran out of stack
+        if not isinstance(ex.orig_exc, (RecursionError, MemoryError)):
+            raise
+        sink.sources.setdefault(path, source)
+        sink.error("E0302", "this expression is nested too deeply to compile",
+                   _deep_span(ex, path, source), hint="split long expressions into named constants")
+        return Compiled(sink)
+
+
+# Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse
+# through the parser's tree builder, the checker and the interpreter.  They run on a thread
+# with a large stack and a raised recursion limit; beyond that, E0302 at the expression.
+DEEP_STACK = 512 * 1024 * 1024
+DEEP_RECURSION = 60_000
+
+
+def run_deep(fn):
+    """Call ``fn()`` on a thread with a :data:`DEEP_STACK` stack and a recursion limit of
+    :data:`DEEP_RECURSION`; returns its result or re-raises its exception."""
+    import sys
+    import threading
+    if getattr(_deep_state, "inside", False):
+        return fn()
+    box: dict = {}
+
+    def target():
+        _deep_state.inside = True
+        try:
+            box["value"] = fn()
+        except BaseException as ex:          # re-raised in the caller's thread
+            box["error"] = ex
+
+    with _deep_lock:
+        old_stack = threading.stack_size()
+        old_limit = sys.getrecursionlimit()
+        try:
+            threading.stack_size(DEEP_STACK)
+            t = threading.Thread(target=target, name="aidl-compile", daemon=True)
+            t.start()
+        finally:
+            threading.stack_size(old_stack)
+        sys.setrecursionlimit(max(old_limit, DEEP_RECURSION))
+        try:
+            t.join()
+        finally:
+            sys.setrecursionlimit(old_limit)
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def _deep_span(ex, path: str, source: str):
+    """The span of the tree node the parser was building when it ran out of stack, else the
+    line with the most operators (the deepest expression, as far as one can tell)."""
+    import re
+    from .diagnostics import Span
+    meta = getattr(getattr(ex, "obj", None), "meta", None)
+    if meta is not None and not getattr(meta, "empty", True):
+        return Span(path, meta.line, meta.column, meta.end_line, meta.end_column,
+                    meta.start_pos, meta.end_pos)
+    best, best_score, start = None, -1, 0
+    for no, line in enumerate(source.split("\n"), 1):
+        score = len(re.findall(r"\*\*|\bif\b|\bnot\b|\band\b|\bor\b|[-+*/(\[]", line))
+        if score > best_score and line.strip():
+            lead = len(line) - len(line.lstrip())
+            body = line.rstrip()
+            best = Span(path, no, lead + 1, no, len(body) + 1, start + lead, start + len(body))
+            best_score = score
+        start += len(line) + 1
+    return best
+
+
+_deep_lock = threading.Lock()
+_deep_state = threading.local()
 
 
 def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
