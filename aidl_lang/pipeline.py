@@ -43,6 +43,8 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     ``budget`` bounds interpretation and solving together (:class:`aidl_lang.limits.Budget`;
     running out is ``E0304``)."""
     sink = DiagnosticSink()
+    if source.startswith("\ufeff"):       # a UTF-8 byte order mark is not part of the program
+        source = source[1:]
     try:
         return run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
                                          budget))

@@ -254,3 +254,47 @@ def test_a_meaning_changing_layout_is_refused(monkeypatch, tmp_path):
     p = tmp_path / "a.aidl"
     p.write_text("x = 1 # c\n")
     assert F.main([str(p)]) == 3 and p.read_text() == "x = 1 # c\n"
+
+
+# ------------------------------------------------------------------ hostile files (issue 15)
+def _fmt(*paths):
+    from aidl_lang.editor.fmt import main
+    return main([str(p) for p in paths])
+
+
+@pytest.mark.parametrize("newline", ["\r\n", "\r", "\n"], ids=["crlf", "cr", "lf"])
+@pytest.mark.parametrize("bom", [False, True], ids=["plain", "bom"])
+def test_line_endings_bom_and_permissions_are_kept(tmp_path, newline, bom):
+    p = tmp_path / "m.aidl"
+    raw = ("\ufeff" if bom else "") + newline.join(["solid s {", "  c = Circle((0,0), 1)", "}", ""])
+    p.write_bytes(raw.encode("utf-8"))
+    p.chmod(0o640)
+    assert _fmt(p) == 0
+    data = p.read_bytes().decode("utf-8")
+    want = newline.join(["solid s {", "    c = Circle((0, 0), 1)", "}", ""])
+    assert data == ("\ufeff" if bom else "") + want
+    assert p.stat().st_mode & 0o777 == 0o640
+    assert _fmt(p) == 0 and p.read_bytes().decode("utf-8") == data      # idempotent
+
+
+def test_nul_byte_is_refused_and_file_untouched(tmp_path, capsys):
+    p = tmp_path / "m.aidl"
+    raw = b"solid s {\n  c = Circle((0,0), 1)  # a\x00b\n}\n"
+    p.write_bytes(raw)
+    assert _fmt(p) == 1
+    assert p.read_bytes() == raw
+    assert "NUL byte (line 2, column 28)" in capsys.readouterr().err
+
+
+def test_symlink_stays_a_link(tmp_path):
+    real = tmp_path / "real.aidl"
+    real.write_text("solid s {\n  c = Circle((0,0), 1)\n}\n")
+    link = tmp_path / "link.aidl"
+    link.symlink_to(real)
+    assert _fmt(link) == 0
+    assert link.is_symlink() and real.read_text().startswith("solid s {\n    c = Circle((0, 0), 1)")
+
+
+def test_bom_is_accepted_by_check(compile_text):
+    c = compile_text("\ufeffsolid s {\n    c = Circle((0, 0), 1)\n}\n")
+    assert c.ok, [d.message for d in c.sink.items]

@@ -117,6 +117,23 @@ def _space(prev: _Item, cur: _Item, prev_kind: str | None, in_parens: bool) -> s
     return " "
 
 
+def format_file_text(text: str, path: str = "<stdin>") -> str:
+    """:func:`format_source` for a file's whole text, keeping what the file had: a UTF-8 byte
+    order mark stays, and the line endings stay (CRLF, CR or LF, whichever comes first)."""
+    bom = text.startswith("\ufeff")
+    if bom:
+        text = text[1:]
+    ends = [i for i in (text.find("\r"), text.find("\n")) if i >= 0]
+    first = min(ends, default=-1)
+    newline = "\n"
+    if first >= 0 and text[first] == "\r":
+        newline = "\r\n" if text[first + 1:first + 2] == "\n" else "\r"
+    out = format_source(text, path)
+    if newline != "\n":
+        out = out.replace("\n", newline)
+    return ("\ufeff" if bom else "") + out
+
+
 def format_source(source: str, path: str = "<stdin>") -> str:
     """Return the canonical layout of ``source`` (AIDL text).
 
@@ -289,14 +306,26 @@ def main(files: list[str], check: bool = False) -> int:
     status = 0
     for f in files:
         try:
-            src = sys.stdin.read() if f == "-" else Path(f).read_text(encoding="utf-8")
+            if f == "-":
+                src = sys.stdin.read()
+            else:
+                with open(f, encoding="utf-8", newline="") as fh:   # keep CR / CRLF as they are
+                    src = fh.read()
         except (OSError, UnicodeDecodeError) as e:
             print(f"aidl: error: cannot read `{f}`: {getattr(e, 'strerror', None) or e}",
                   file=sys.stderr)
             status = max(status, 1)
             continue
+        if "\0" in src:
+            i = src.index("\0")
+            line = src.count("\n", 0, i) + 1
+            col = i - (src.rfind("\n", 0, i) + 1) + 1
+            print(f"aidl: `{f}` not formatted: it contains a NUL byte (line {line}, column "
+                  f"{col}); the file is left as it is", file=sys.stderr)
+            status = max(status, 1)
+            continue
         try:
-            out = format_source(src, "<stdin>" if f == "-" else f)
+            out = format_file_text(src, "<stdin>" if f == "-" else f)
         except FormatterBug as e:
             print(f"aidl: internal error: {e}; the file is left as it is. This is a bug in "
                   "aidl fmt, please report it with the input file.", file=sys.stderr)
@@ -321,9 +350,9 @@ def main(files: list[str], check: bool = False) -> int:
             print(f"would reformat {f}")
             status = max(status, 1)
             continue
-        p = Path(f)
+        p = Path(os.path.realpath(f))       # a symlink stays a link: its target is rewritten
         try:
-            fd, tmp = tempfile.mkstemp(suffix=".aidl", dir=str(p.resolve().parent))
+            fd, tmp = tempfile.mkstemp(suffix=".aidl", dir=str(p.parent))
             with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
                 fh.write(out)
             try:
