@@ -274,6 +274,10 @@ so that enough material is left.
     }
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0104": ("empty drawing", """
+The program builds no geometry at all (an empty file, only params and templates, or only empty
+structures), so the SVG would be empty. Add a structure with shapes, or instantiate a template.
+"""),
     "W0402": ("open outline", """
 Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;
 an open chain is written as engraving, not cut.

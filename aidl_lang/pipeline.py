@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import threading
 import time
+import warnings
 from dataclasses import dataclass
 
+import numpy as np
 from lark.exceptions import VisitError
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
@@ -140,9 +142,17 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         return Compiled(sink)
     interp = Interpreter(sink, overrides, budget, deadline)
     model = interp.run(program)
+    if not sink.has_errors and not any(True for _ in model.all_geometry()):
+        sink.warning("W0104", "the program builds no geometry: the drawing will be empty",
+                     program.span if program.stmts else None,
+                     hint="add a structure with shapes, e.g. `solid plate { body = "
+                          "Rectangle(center=(0, 0), width=40, height=20) }`")
     if sink.has_errors or not do_solve:
         return Compiled(sink, model)
-    result = solve(model, deadline=deadline)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        # overflow in a residual is reported as a failed solve, not as a numpy warning
+        warnings.simplefilter("ignore", RuntimeWarning)
+        result = solve(model, deadline=deadline)
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result)
@@ -197,8 +207,9 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult) -> None:
         labels = [Label(b.span, "implied by this", primary=False)
                   for b in red.by[:4] if b.span is not None]
         what = "partly redundant: part of it" if red.partly else "redundant: it"
+        source = by or "values already held (a constructor's dimensions or `Fixed`)"
         sink.add(Diagnostic("W0401", f"`{c.describe()}` is {what} already follows from "
-                            f"{by}", c.span, "warning",
+                            f"{source}", c.span, "warning",
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))
@@ -250,6 +261,12 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
         return
     items = result.unsatisfied
     if not items:
+        if not result.budget_exceeded:
+            # never "ok" with a solve that did not converge
+            sink.add(Diagnostic("E0401", "the solver did not converge, but no single constraint "
+                                "is off by more than the tolerance", None, "error",
+                                hint="the model is probably badly scaled (sizes far apart); "
+                                     "check the dimensions"))
         return
     explicit = [(c, r) for c, r in items if not c.implicit] or items
     first, r0 = explicit[0]

@@ -585,3 +585,18 @@ def test_E0305_beyond_the_model_extent(compile_text):
     c = compile_text("solid s {\n    r = Rectangle(center=(0, 0), width=2e6, height=1)\n}\n")
     d = the_error(c, "E0305")
     assert span4(d) == (2, 40, 2, 43)
+
+
+@pytest.mark.parametrize("src", ["", "# only a comment\n", "param w = 3\nsolid s { }\n"])
+def test_W0104_empty_drawing(compile_text, src):
+    c = compile_text(src)
+    assert c.ok and [d.code for d in c.sink.items] == ["W0104"]
+
+
+def test_str_of_values_is_readable(compile_text):
+    c = compile_text("units cm\nsolid s {\n    c = Circle((0, 0), 2)\n    p = Point((1, 2))\n"
+                     '    t = str(c) + "|" + str(p) + "|" + str(self) + "|" + str([1, true])\n'
+                     '    u = f"{c}|{[1.5, 2]}"\n}\n')
+    assert c.ok
+    assert c.model.root.scope["t"] == "Circle `s.c`|Point `s.p`|solid `s`|[1, true]"
+    assert c.model.root.scope["u"] == "Circle `s.c`|[1.5, 2]"

@@ -17,7 +17,7 @@ from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Nam
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
-from .common import (DEG, _a, _fmt_num, _src)
+from .common import (DEG, _a, _fmt_num, _src, show)
 
 
 class Calls:
@@ -277,7 +277,9 @@ class Calls:
             return Q.num(len(args[0]))
         if nm == "str":
             v = args[0]
-            return _fmt_num(v.const()) if isinstance(v, Q) and v.const() is not None else str(v)
+            text = _fmt_num(v.const()) if isinstance(v, Q) and v.const() is not None else show(v, self.unit_scale)
+            self.check_size(len(text), sp, "a string")
+            return text
         if nm in ("min", "max"):
             if len(args) == 1 and isinstance(args[0], list):
                 args = args[0]

@@ -115,3 +115,56 @@ def _fmt_num(c: float) -> str:
     if abs(c - round(c)) < 1e-9:
         return str(int(round(c)))
     return f"{c:.6g}"
+
+
+def show(v, unit_scale: float = 1.0, depth: int = 0) -> str:
+    """The text ``str(v)`` and an f-string give for a value: numbers in the file's unit,
+    points as ``(x, y)``, geometry and structures by kind and path; never an internal repr
+    or a file path."""
+    from ..geometry.expr import as_const
+    from ..geometry.values import (ANG, LEN, PV, BBoxRef, Builtin, GeomRef, Namespace, Q,
+                                   StructRef, Template, type_name)
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return v
+    if isinstance(v, Q):
+        c = v.const()
+        if c is None:
+            return f"a {type_name(v)} known after solving"
+        if v.dim == LEN:
+            c /= unit_scale
+        elif v.dim == ANG:
+            c /= DEG
+        return _fmt_num(c)
+    if depth > 3:
+        return "..."
+    if isinstance(v, (list, tuple)):
+        items = [show(x, unit_scale, depth + 1) for x in v[:20]]
+        if len(v) > 20:
+            items.append(f"... ({len(v)} items)")
+        o, c_ = ("[", "]") if isinstance(v, list) else ("(", ")")
+        return o + ", ".join(items) + c_
+    if isinstance(v, PV):
+        x, y = as_const(v.x), as_const(v.y)
+        if x is not None and y is not None:
+            return f"({_fmt_num(x / unit_scale)}, {_fmt_num(y / unit_scale)})"
+        if v.obj is not None:
+            return f"point `{v.obj.label}` in `{v.obj.owner.path}`"
+        return "a point known after solving"
+    if isinstance(v, GeomRef):
+        g = v.geom
+        return f"{g.kind} `{g.owner.path}.{g.name}`" if g.name else f"{g.kind} in `{g.owner.path}`"
+    if isinstance(v, StructRef):
+        return f"{v.struct.kind} `{v.struct.path}`"
+    if isinstance(v, Template):
+        return f"template `{v.node.name}`"
+    if isinstance(v, Namespace):
+        return f"import `{v.name}`"
+    if isinstance(v, Builtin):
+        return f"built-in `{v.name}`"
+    if isinstance(v, BBoxRef):
+        return "a bounding box"
+    if v is None:
+        return "none"
+    return type_name(v)

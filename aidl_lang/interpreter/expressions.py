@@ -14,7 +14,7 @@ from ..geometry.primitives import member as geom_member, member_names
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
-from .common import (DEG, POISON, Scope, _Silent, _fmt_num)
+from .common import (DEG, POISON, Scope, _Silent, _fmt_num, show)
 
 
 class Expressions:
@@ -60,7 +60,7 @@ class Expressions:
                 except ValueError:
                     raise EvalError("E0108", f"bad format `{fmt}`", e.span)
             else:
-                out.append(str(v).lower() if isinstance(v, bool) else str(v))
+                out.append(show(v, self.unit_scale))
         text = "".join(out)
         self.check_size(len(text), e.span, "a string")
         return text

@@ -287,6 +287,15 @@ def redundancies(solver) -> list[Redundant]:
     lab = _components(J)
     out: list[Redundant] = []
     seen: set = set()
+    # a user equation that involves no unknown at all (`r.width == 30` with the width held by
+    # the constructor) and holds: implied by the held values themselves
+    F = t.evaluate(x)
+    empty = np.diff(J.tocsr().indptr) == 0
+    for i in np.flatnonzero(empty):
+        c = solver.rows.constraint[rows[i]]
+        if not c.implicit and id(c) not in seen and abs(F[i]) <= 1e-9:
+            seen.add(id(c))
+            out.append(Redundant(c, []))
     for comp in np.unique(lab):
         local = np.flatnonzero(lab == comp)
         if len(local) < 2 or len(local) > MAX_DENSE:
