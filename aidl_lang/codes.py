@@ -278,6 +278,13 @@ so that enough material is left.
 The program builds no geometry at all (an empty file, only params and templates, or only empty
 structures), so the SVG would be empty. Add a structure with shapes, or instantiate a template.
 """),
+    "W0105": ("character not in the engraving font", """
+`Text` is drawn with a single-stroke (Hershey) font that covers printable ASCII. Characters
+outside it (accents, other scripts, tabs, symbols such as `☃`) cannot be drawn and are left
+out; the warning names each one with its code point.
+
+    drawing labels { t = Text("Café", (0, 0)) }    # `é` (U+00E9) is left out
+"""),
     "W0402": ("open outline", """
 Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;
 an open chain is written as engraving, not cut.

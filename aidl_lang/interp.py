@@ -93,7 +93,8 @@ class Interpreter(Statements, Calls, Expressions):
     def check_size(self, n: int, span, what: str = "a string") -> None:
         """A string or list of ``n`` characters/items must fit the budget's ``size``."""
         if n > self.budget.size:
-            raise BudgetExhausted(f"{what} of {n:,} items, more than the {self.budget.size:,} "
+            unit = "items" if "list" in what else "characters"
+            raise BudgetExhausted(f"{what} of {n:,} {unit}, more than the {self.budget.size:,} "
                                   "allowed", span, self.frames)
 
     def budget_error(self, ex: BudgetExhausted) -> None:

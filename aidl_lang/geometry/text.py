@@ -103,3 +103,15 @@ def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "b
     xs = [p[0] for s in segs for p in s]
     ys = [p[1] for s in segs for p in s]
     return min(xs), max(xs), min(ys), max(ys)
+
+
+def missing_glyphs(text: str) -> list[str]:
+    """Characters of ``text`` the single-stroke font cannot draw (it covers printable ASCII;
+    spaces and newlines are layout, not glyphs), each once, in order."""
+    out: list[str] = []
+    for ch in text:
+        if ch in " \n" or ch in out:
+            continue
+        if not (32 < ord(ch) < 127) or not _raw(ch):
+            out.append(ch)
+    return out

@@ -133,9 +133,18 @@ class Calls:
         except PrimitiveError as ex:
             raise EvalError("E0108", str(ex), node.span, hint=lookup(kind).signature())
         if kind == "Text":
-            from ..geometry.text import text_extent
+            from ..geometry.text import missing_glyphs, text_extent
+            self.check_size(len(g.data["text"]), node.span, "a Text")
             g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"],
                                            g.data["valign"], g.data["rotation"])
+            lost = missing_glyphs(g.data["text"])
+            if lost:
+                shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
+                self.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "
+                                  f"{'they are' if len(lost) > 1 else 'it is'} left out of the "
+                                  "drawing", spans.get("text", node.span),
+                                  hint="the single-stroke font draws printable ASCII only; "
+                                       "write the text in ASCII (e.g. `e` for `é`)")
         return GeomRef(g)
 
     # -- used by primitives.build

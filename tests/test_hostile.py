@@ -1,0 +1,66 @@
+"""Hostile but syntactically valid programs (issue 15): each file under
+tests/programs/hostile/ says on its first line what it must give —
+``# expect: CODE LINE:COL`` (the first diagnostic with that code, at that position),
+``# expect: CODE`` (an unlocated-by-design diagnostic, e.g. an empty file) or ``# expect: ok``
+— and must finish within :data:`SECONDS` under the default budget."""
+import pathlib
+import re
+import subprocess
+import sys
+import time
+
+import pytest
+
+from aidl_lang.pipeline import compile_source
+
+HERE = pathlib.Path(__file__).resolve().parent
+FILES = sorted((HERE / "programs" / "hostile").glob("*.aidl"))
+SECONDS = 20          # the budget cases take 2-3 s alone; room for a loaded CI machine
+
+
+def expectation(path: pathlib.Path):
+    m = re.match(r"# expect: (ok|[EW]\d{4})(?: (\d+):(\d+))?", path.read_text().splitlines()[0])
+    assert m, f"{path.name}: first line must be `# expect: ...`"
+    code, line, col = m.groups()
+    return code, (int(line), int(col)) if line else None
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+def test_hostile_program(path):
+    code, where = expectation(path)
+    t0 = time.perf_counter()
+    c = compile_source(path.read_text(), str(path))
+    elapsed = time.perf_counter() - t0
+    assert elapsed < SECONDS, f"took {elapsed:.1f} s"
+    got = [(d.code, d.span and (d.span.line, d.span.col), d.message) for d in c.sink.items]
+    if code == "ok":
+        assert c.ok and not [g for g in got if g[0].startswith("E")], got
+        return
+    mine = [g for g in got if g[0] == code]
+    assert mine, got
+    if where is not None:
+        assert mine[0][1] == where, got
+    else:
+        assert mine[0][1] is None or code == "W0104", got
+    if code.startswith("E"):
+        assert not c.ok
+    for d in c.sink.items:                       # no internals in any message
+        assert "Traceback" not in d.message and "0x" not in d.message
+
+
+def test_memory_stays_bounded_under_ulimit():
+    """Nested loops of 3000 x 3000 in a structure and a 10000 x 10000 comprehension under a
+    1.5 GB address-space limit: the budget error, not a MemoryError or an internal error."""
+    code = r'''
+import resource, sys
+resource.setrlimit(resource.RLIMIT_AS, (1_500_000_000, 1_500_000_000))
+from aidl_lang.pipeline import compile_source
+srcs = ["solid s {\n for i in range(3000) {\n  for j in range(3000) { x = i * j }\n }\n}\n",
+        "x = [[i for i in range(10000)] for j in range(10000)]\nsolid s { c = Circle((0, 0), 1) }\n"]
+for src in srcs:
+    c = compile_source(src, "m.aidl")
+    print([d.code for d in c.sink.items if d.severity == "error"])
+'''
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert r.stdout.split("\n")[:2] == ["['E0304']", "['E0304']"], r.stdout + r.stderr[-2000:]
