@@ -90,14 +90,14 @@ def run_deep(fn):
     with _deep_lock:
         old_stack = threading.stack_size()
         old_limit = sys.getrecursionlimit()
-        try:
-            threading.stack_size(DEEP_STACK)
-            t = threading.Thread(target=target, name="aidl-compile", daemon=True)
-            t.start()
-        finally:
-            threading.stack_size(old_stack)
         sys.setrecursionlimit(max(old_limit, DEEP_RECURSION))
         try:
+            try:
+                threading.stack_size(DEEP_STACK)
+                t = threading.Thread(target=target, name="aidl-compile", daemon=True)
+                t.start()
+            finally:
+                threading.stack_size(old_stack)
             t.join()
         finally:
             sys.setrecursionlimit(old_limit)
