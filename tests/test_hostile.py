@@ -64,3 +64,27 @@ for src in srcs:
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr[-2000:]
     assert r.stdout.split("\n")[:2] == ["['E0304']", "['E0304']"], r.stdout + r.stderr[-2000:]
+
+
+# ------------------------------------------------------------------ generated nasty programs
+sys.path.insert(0, str(HERE.parent))
+from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
+
+from benchmarks.nasty import DrawChooser, program, verdict  # noqa: E402
+from aidl_lang.limits import Budget  # noqa: E402
+
+SMALL = Budget(steps=20_000, objects=5_000, size=100_000, seconds=10.0)
+
+
+@st.composite
+def nasty_programs(draw):
+    return program(DrawChooser(draw))
+
+
+@settings(deadline=None, max_examples=25, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(nasty_programs())
+def test_generated_nasty_programs(src):
+    """No exception, every diagnostic located, never ok without a converged solve, no NaN in
+    an SVG, within the (reduced) budget's time; benchmarks/fuzz_nasty.py runs thousands."""
+    assert verdict(src, "nasty.aidl", budget=SMALL, seconds=SMALL.seconds + 10) is None
