@@ -48,6 +48,8 @@ class Interpreter(Statements, Calls, Expressions):
         self.deadline = deadline if deadline is not None else time.monotonic() + budget.seconds
         self.steps = 0
         self.objects = 0
+        self.reported: set = set()
+        self.ops = 0                                  # operators evaluated (time checks)
         self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
         self.model = Model()
         self.overrides = dict(overrides or {})
@@ -73,22 +75,27 @@ class Interpreter(Statements, Calls, Expressions):
     # ------------------------------------------------------------------ the budget
     def step(self, span=None) -> None:
         """Count one evaluation step (loop iteration, comprehension element, call, template
-        instance); checks the wall-time deadline every 1024 steps."""
+        instance); checks the wall-time deadline every 128 steps."""
         self.steps += 1
         if self.steps > self.budget.steps:
             raise BudgetExhausted(f"more than {self.budget.steps:,} evaluation steps (loop "
                                   "iterations, comprehension elements, calls and template "
                                   "instances)", span or self.cur_span, self.frames)
-        if not self.steps & 1023 and time.monotonic() > self.deadline:
+        if not self.steps & 127:
+            self.check_time(span)
+
+    def check_time(self, span=None) -> None:
+        """The wall-time deadline (the budget's last resort)."""
+        if time.monotonic() > self.deadline:
             raise BudgetExhausted(f"more than {self.budget.seconds:g} s of wall time",
                                   span or self.cur_span, self.frames)
 
     def count_object(self, span=None) -> None:
-        """Count one geometry object, structure or constraint against the budget."""
+        """Count one point, geometry object, structure or constraint against the budget."""
         self.objects += 1
         if self.objects > self.budget.objects:
-            raise BudgetExhausted(f"more than {self.budget.objects:,} geometry objects, "
-                                  "structures and constraints", span or self.cur_span, self.frames)
+            raise BudgetExhausted(f"more than {self.budget.objects:,} points, geometry "
+                                  "objects, structures and constraints", span or self.cur_span, self.frames)
 
     def check_size(self, n: int, span, what: str = "a string") -> None:
         """A string or list of ``n`` characters/items must fit the budget's ``size``."""
@@ -127,6 +134,10 @@ class Interpreter(Statements, Calls, Expressions):
         return evaluate(lift(e), self.model.x)
 
     def error(self, e: EvalError) -> None:
+        key = (e.code, e.span)
+        if key in self.reported:         # the same error in every iteration of a loop: once
+            return
+        self.reported.add(key)
         self.sink.add(Diagnostic(e.code, e.message, e.span, "error", e.hint,
                                  labels=e.labels, suggestions=e.suggestions))
 

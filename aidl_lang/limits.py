@@ -4,7 +4,7 @@ compile (docs/language.md §8.1 "Limits").
 The per-construct limits (``MAX_ITER``, ``MAX_TEMPLATE_DEPTH``...) are the first line: each
 stops one construct that is too large by itself.  The :class:`Budget` bounds the product: every
 loop iteration, comprehension element, call and template instance is one *step*; geometry
-objects, structures and constraints share one *object* count; every string or list a program
+points, geometry objects, structures and constraints share one *object* count; every string or list a program
 builds is limited in size; and wall time is the last resort.  A program that goes past any of
 them gets one located diagnostic (``E0304``) naming the loops and template instances on the
 stack, never a hang, a crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
@@ -26,13 +26,13 @@ class Budget:
 
     - ``steps``: 250 000 loop iterations, comprehension elements, calls and template
       instances (about 2 s of interpretation);
-    - ``objects``: 60 000 geometry objects, structures and constraints together;
+    - ``objects``: 100 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
     - ``seconds``: 60 s of wall time for interpreting and solving together.
     """
 
     steps: int = 250_000
-    objects: int = 60_000
+    objects: int = 100_000
     size: int = 1_000_000
     seconds: float = 60.0
 

@@ -600,3 +600,9 @@ def test_str_of_values_is_readable(compile_text):
     assert c.ok
     assert c.model.root.scope["t"] == "Circle `s.c`|Point `s.p`|solid `s`|[1, true]"
     assert c.model.root.scope["u"] == "Circle `s.c`|[1.5, 2]"
+
+
+def test_W0105_missing_glyphs(compile_text):
+    c = compile_text('solid s {\n    c = Circle((0, 0), 20)\n    drawing d { t = Text("aé", (0, 0)) }\n}\n')
+    d = next(d for d in c.sink.items if d.code == "W0105")
+    assert "U+00E9" in d.message and span4(d)[:2] == (3, 26)

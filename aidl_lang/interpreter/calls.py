@@ -152,6 +152,7 @@ class Calls:
         s = self.struct
         if v.obj is not None and v.obj.owner is s:
             return v.obj
+        self.count_object(self.cur_span)
         x0, y0 = self.value_of(v.x), self.value_of(v.y)
         ix = self.model.new_param(x0, True, s, f"{label}.x")
         iy = self.model.new_param(y0, True, s, f"{label}.y")

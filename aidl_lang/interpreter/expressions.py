@@ -283,6 +283,9 @@ class Expressions:
         return v
 
     def _e_BinOp(self, e: A.BinOp):
+        self.ops += 1
+        if not self.ops & 4095:
+            self.check_time(e.span)
         return self.finite(self._binop(e), e.span)
 
     def _binop(self, e: A.BinOp):
