@@ -34,6 +34,8 @@ def main() -> int:
     ap.add_argument("--count", type=int, default=1000)
     ap.add_argument("--mem-gb", type=float, default=2.0)
     ap.add_argument("--show", type=int, default=3, help="failing programs to print")
+    ap.add_argument("--max-seconds", type=float, default=540,
+                    help="stop starting programs after this long (the summary says where)")
     a = ap.parse_args()
     lim = int(a.mem_gb * 2**30)
     resource.setrlimit(resource.RLIMIT_AS, (lim, lim))
@@ -42,7 +44,11 @@ def main() -> int:
     slowest = (0.0, -1)
     t_all = time.perf_counter()
     shown = 0
+    done = 0
     for seed in range(a.start, a.start + a.count):
+        if time.perf_counter() - t_all > a.max_seconds:
+            break
+        done += 1
         src = program(RandomChooser(seed))
         t0 = time.perf_counter()
         v = verdict(src, "nasty.aidl", budget=BUDGET, seconds=BUDGET.seconds + 5)
@@ -53,8 +59,8 @@ def main() -> int:
             shown += 1
             print(f"--- seed {seed}: {v}\n{src}")
     total = time.perf_counter() - t_all
-    print(f"seeds {a.start}..{a.start + a.count - 1}: {a.count} programs in {total:.0f} s "
-          f"({total / a.count * 1e3:.0f} ms each); slowest {slowest[0]:.1f} s (seed {slowest[1]}); "
+    print(f"seeds {a.start}..{a.start + done - 1}: {done} programs in {total:.0f} s "
+          f"({total / max(done, 1) * 1e3:.0f} ms each); slowest {slowest[0]:.1f} s (seed {slowest[1]}); "
           f"memory limit {a.mem_gb:g} GB")
     for k, n in kinds.most_common():
         print(f"  {k:24} {n:6d}")
