@@ -161,7 +161,7 @@ instance to other parts with constraints in the parent structure.
     "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
     "E0304": ("evaluation budget exhausted", """
 One compile has one evaluation budget (docs/language.md §8.1): 250 000 steps (every loop
-iteration, comprehension element, call and template instance counts one), 100 000 points,
+iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
 one list, and 60 s of wall time for interpreting and solving. Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops

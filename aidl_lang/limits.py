@@ -26,13 +26,13 @@ class Budget:
 
     - ``steps``: 250 000 loop iterations, comprehension elements, calls and template
       instances (about 2 s of interpretation);
-    - ``objects``: 100 000 points, geometry objects, structures and constraints together;
+    - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
     - ``seconds``: 60 s of wall time for interpreting and solving together.
     """
 
     steps: int = 250_000
-    objects: int = 100_000
+    objects: int = 120_000
     size: int = 1_000_000
     seconds: float = 60.0
 

@@ -396,7 +396,9 @@ def _build_Slot(ctx, g, a):
                          Equation(var(e.iy) - var(c.iy) - half * uy)], "Slot shape")
         g.scalars["radius"] = ctx.new_scalar(W / 2, "radius", held=True)
     else:
-        _positive(a["radius"], "radius", "Slot")
+        for k in ("radius", "width"):
+            if k in a:
+                _positive(a[k], k, "Slot")
         s = ctx.point(a["start"], "start")
         e = ctx.point(a["end"], "end")
         r = a["radius"] if "radius" in a else Q(a["width"].expr * 0.5, LEN, a["width"].owners)

@@ -124,10 +124,10 @@ class Calls:
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure")
         self.n_geometry += 1
-        self.count_object(node.span)
         if self.n_geometry > MAX_GEOMETRY:
             raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", node.span,
                             hint="use fewer or larger repetitions")
+        self.count_object(node.span)
         try:
             g = build(self, kind, conv, node.span)
         except PrimitiveError as ex:
