@@ -346,9 +346,14 @@ class Expressions:
             ca = l.const()
             if ca is not None:
                 try:
-                    return Q.num(ca ** cb, (l.dim[0] * k, l.dim[1] * k))
+                    v = ca ** cb
                 except (OverflowError, ZeroDivisionError) as ex:
                     raise EvalError("E0112", f"math error: {ex}", e.span)
+                if isinstance(v, complex):
+                    raise EvalError("E0112", f"a negative number ({_fmt_num(ca)}) to a fractional "
+                                    f"power ({cb:g}) is not a real number", e.span,
+                                    hint="raise the absolute value, or use a whole exponent")
+                return Q.num(v, (l.dim[0] * k, l.dim[1] * k))
             return Q(func("pow", l.expr, cb), (l.dim[0] * k, l.dim[1] * k), own)
         raise EvalError("E0108", f"unknown operator `{op}`", e.span)
 
