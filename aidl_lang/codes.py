@@ -275,8 +275,9 @@ so that enough material is left.
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0104": ("empty drawing", """
-The program builds no geometry at all (an empty file, only params and templates, or only empty
-structures), so the SVG would be empty. Add a structure with shapes, or instantiate a template.
+The file is empty (nothing but comments), or its structures build no geometry at all, so the
+SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and
+constants is a library and gets no warning.
 """),
     "W0105": ("character not in the engraving font", """
 `Text` is drawn with a single-stroke (Hershey) font that covers printable ASCII. Characters

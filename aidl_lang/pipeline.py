@@ -142,7 +142,7 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         return Compiled(sink)
     interp = Interpreter(sink, overrides, budget, deadline)
     model = interp.run(program)
-    if not sink.has_errors and not any(True for _ in model.all_geometry()):
+    if not sink.has_errors and _empty_drawing(program, model):
         sink.warning("W0104", "the program builds no geometry: the drawing will be empty",
                      program.span if program.stmts else None,
                      hint="add a structure with shapes, e.g. `solid plate { body = "
@@ -162,6 +162,18 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     drawing = render_model(model)
     check_drawing(drawing, sink, min_wall)
     return Compiled(sink, model, result, drawing)
+
+
+def _empty_drawing(program, model: Model) -> bool:
+    """W0104's condition: nothing at all in the file, or structures that build no geometry.
+    A file of only templates, params and constants is a library: no warning."""
+    from . import ast as A
+    if any(True for _ in model.all_geometry()):
+        return False
+    if not program.stmts:
+        return True
+    return any(not isinstance(s, (A.Import, A.ParamDecl, A.Def, A.UnitsDecl, A.Assign))
+               for s in program.stmts)
 
 
 def check_extent(sink: DiagnosticSink, model: Model) -> bool:

@@ -593,6 +593,12 @@ def test_W0104_empty_drawing(compile_text, src):
     assert c.ok and [d.code for d in c.sink.items] == ["W0104"]
 
 
+@pytest.mark.parametrize("src", ["x = 1\n", "def peg(r = 2) -> solid { c = Circle((0, 0), r) }\n"])
+def test_a_library_file_is_not_an_empty_drawing(compile_text, src):
+    c = compile_text(src)
+    assert c.ok and c.sink.items == []
+
+
 def test_str_of_values_is_readable(compile_text):
     c = compile_text("units cm\nsolid s {\n    c = Circle((0, 0), 2)\n    p = Point((1, 2))\n"
                      '    t = str(c) + "|" + str(p) + "|" + str(self) + "|" + str([1, true])\n'
