@@ -67,7 +67,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
 # Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse
 # through the parser's tree builder, the checker and the interpreter.  They run on a thread
 # with a large stack and a raised recursion limit; beyond that, E0302 at the expression.
-DEEP_STACK = 512 * 1024 * 1024
+DEEP_STACK = 256 * 1024 * 1024
 DEEP_RECURSION = 60_000
 
 
@@ -96,8 +96,13 @@ def run_deep(fn):
                 threading.stack_size(DEEP_STACK)
                 t = threading.Thread(target=target, name="aidl-compile", daemon=True)
                 t.start()
+            except (RuntimeError, MemoryError):
+                t = None               # no room for the big stack (an address-space limit)
             finally:
                 threading.stack_size(old_stack)
+            if t is None:
+                sys.setrecursionlimit(old_limit)
+                return fn()            # deep programs then end in a located E0302
             t.join()
         finally:
             sys.setrecursionlimit(old_limit)
@@ -159,7 +164,9 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not check_extent(sink, model):
         return Compiled(sink, model, result)
     check_branches(sink, model)
-    drawing = render_model(model)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)     # degenerate sizes: no numpy noise
+        drawing = render_model(model)
     check_drawing(drawing, sink, min_wall)
     return Compiled(sink, model, result, drawing)
 

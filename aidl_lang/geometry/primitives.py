@@ -42,11 +42,18 @@ def _const(ctx, q: Q, what: str) -> float:
     return c
 
 
+MIN_SIZE = 1e-9     # mm: smaller sizes cannot be drawn (nor tessellated without overflow)
+
+
 def _positive(q, what: str, kind: str) -> None:
-    """A size known before solving must be > 0 (a zero or negative size draws nothing)."""
+    """A size known before solving must be at least :data:`MIN_SIZE` (a zero or negative size
+    draws nothing; a subnormal one overflows the tessellation)."""
     c = q.const() if isinstance(q, Q) else None
     if c is not None and not c > 0:
         raise PrimitiveError(f"a {kind} needs a positive {what}, got {c:g}")
+    if c is not None and c < MIN_SIZE:
+        raise PrimitiveError(f"a {kind}'s {what} of {c:g} mm is below the smallest size, "
+                             f"{MIN_SIZE:g} mm")
 
 
 def _build_Point(ctx, g, a):
