@@ -15,7 +15,10 @@ All three read the Jacobian ``J`` (rows: residuals, columns: unknowns) at a poin
   component in the null space of ``J`` is not determined, and its geometry (or child) *floats*.
 
 Dense linear algebra: used for one structure's system, or for the connected component of a
-failed system that holds the unsatisfied rows (capped at :data:`MAX_DENSE` rows).
+failed system that holds the unsatisfied rows (capped at :data:`MAX_DENSE` rows).  SciPy (sparse
+matrices, connected components) is imported only for systems larger than
+:data:`DENSE_CELLS`: the freedom count on ``aidl check``'s ok line stays in numpy, so a cold
+check does not pay SciPy's import.
 """
 from __future__ import annotations
 
@@ -23,14 +26,13 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse.csgraph import connected_components
 
 from ..geometry.model import Constraint
 from .system import user_residuals
 
 DEP_TOL = 1e-7
 MAX_DENSE = 5000
+DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranked densely
 MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
 
 
@@ -114,12 +116,48 @@ def dependencies(J: np.ndarray, order: list[int]):
         yield r, [indep[i] for i in np.flatnonzero(big)], c[big]
 
 
-def _components(J: sp.csr_matrix) -> np.ndarray:
-    """A component label per row of ``J``: rows sharing an unknown are connected."""
+def _components(J) -> np.ndarray:
+    """A component label per row of the sparse ``J``: rows sharing an unknown are connected."""
+    import scipy.sparse as sp
+    from scipy.sparse.csgraph import connected_components
     m = J.shape[0]
     B = sp.bmat([[None, J], [J.T, None]]).tocsr()
     _, lab = connected_components(B, directed=False)
     return lab[:m]
+
+
+def _dense_components(J: np.ndarray) -> np.ndarray:
+    """The same labels as :func:`_components` for a dense ``J`` (union-find over its nonzeros,
+    no SciPy)."""
+    m, n = J.shape
+    parent = list(range(m + n))
+
+    def find(a: int) -> int:
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    for r, c in zip(*np.nonzero(J)):
+        a, b = find(int(r)), find(m + int(c))
+        if a != b:
+            parent[a] = b
+    return np.array([find(i) for i in range(m)], dtype=np.int64)
+
+
+def _dense_block_rank(J: np.ndarray) -> int:
+    """:func:`_block_rank` for a dense ``J`` (one SVD per block of rows sharing unknowns)."""
+    if J.shape[0] == 0:
+        return 0
+    lab = _dense_components(J)
+    rank = 0
+    for k in np.unique(lab):
+        sub = J[lab == k]
+        sub = sub[:, np.any(sub != 0, axis=0)]
+        if sub.shape[1] == 0:
+            continue
+        sv = np.linalg.svd(sub, compute_uv=False)
+        rank += int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
+    return rank
 
 
 def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
@@ -210,13 +248,16 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             out.append(StructureDof(s, 0, 0))
             continue
         if not len(rows):
-            floating = sorted({label_of.get(i, model.param_label[i]) for i in params})
-            out.append(StructureDof(s, n_unknowns, 0, floating))
+            free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
+            out.append(StructureDof(s, n_unknowns, 0, free))
             continue
         t = solver.tape(rows)
         if not floating:
-            out.append(StructureDof(s, n_unknowns,
-                                    _block_rank(t.jacobian(x, cols)) - (len(cols) - n_unknowns)))
+            if t.n_rows * len(cols) <= DENSE_CELLS:
+                rank = _dense_block_rank(t.jacobian(x, cols, dense=True))
+            else:
+                rank = _block_rank(t.jacobian(x, cols))
+            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
             continue
         J = t.jacobian(x, cols).toarray()
         if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
@@ -227,14 +268,14 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
         rank = int(np.sum(sv > tolr))
         # slack columns each come with a LINK row of full rank: they neither add nor remove
         n_slack = len(cols) - n_unknowns
-        floating = []
+        free = []
         if len(cols) > rank:
             null = Vt[rank:]
             moving = np.linalg.norm(null, axis=0) > 1e-6
             pos = {int(c): k for k, c in enumerate(cols)}
-            floating = sorted({label_of.get(i, model.param_label[i])
-                               for i in params if moving[pos[i]]})
-        out.append(StructureDof(s, n_unknowns, rank - n_slack, floating))
+            free = sorted({label_of.get(i, model.param_label[i])
+                           for i in params if moving[pos[i]]})
+        out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
     return out
 
 
@@ -242,6 +283,7 @@ def _block_rank(J) -> int:
     """Numerical rank of a sparse Jacobian, block by block (rows that share no unknown are
     independent), so a large sketch of small independent pieces needs only small SVDs;
     -1 if one block is too large for a dense SVD."""
+    import scipy.sparse as sp
     J = sp.csr_matrix(J)
     if J.shape[0] == 0:
         return 0
