@@ -161,14 +161,22 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result)
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall))
+
+
+def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL) -> Drawing | None:
+    """The stages after a converged solve, shared by :func:`compile_source` and the live
+    preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
+    checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
+    or ``None`` when the extent check failed (nothing absurd reaches a writer)."""
     if not check_extent(sink, model):
-        return Compiled(sink, model, result)
+        return None
     check_branches(sink, model)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore", RuntimeWarning)     # degenerate sizes: no numpy noise
         drawing = render_model(model)
     check_drawing(drawing, sink, min_wall)
-    return Compiled(sink, model, result, drawing)
+    return drawing
 
 
 def _empty_drawing(program, model: Model) -> bool:

@@ -255,3 +255,32 @@ def test_serve_binds_loopback_only():
     assert S.HOST == "127.0.0.1"
     from aidl_lang.cli.main import _parser
     assert "--host" not in _parser().format_help()
+
+
+def test_preview_reports_the_same_shape_checks_as_check(tmp_path):
+    """The live preview runs the pipeline's post-solve stages (pipeline.after_solve): a slider
+    that slides the shackle over the key hole brings W0501, as `aidl check --set` does."""
+    from aidl_lang.serve.session import Session
+    f = tmp_path / "lock.aidl"
+    f.write_text("""units mm
+param shackle_y = 30 mm
+solid lock {
+    solid body {
+        b = Rectangle(center=(0, 0), width=40, height=30)
+        hole key {
+            k = Circle(center=(0, 8), radius=3)
+        }
+    }
+    solid shackle {
+        s = Rectangle(center=(0, shackle_y), width=30, height=8)
+    }
+}
+""")
+    s = Session(f)
+    codes = lambda v: [d["code"] for d in v["diagnostics"]]
+    v = s.load()
+    assert v["ok"] and "W0501" not in codes(v)
+    v = s.set_params({"shackle_y": "14mm"})
+    assert v["ok"] and "W0501" in codes(v)
+    c = compile_source(f.read_text(), str(f), {"shackle_y": "14mm"})
+    assert sorted(d.code for d in c.sink.items) == sorted(codes(v))

@@ -30,9 +30,9 @@ from .. import ast as A
 from ..diagnostics import Diagnostic, DiagnosticSink
 from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
-from ..output import render_model, to_svg
+from ..output import to_svg
 from ..parser import parse
-from ..pipeline import check_branches, report_failure
+from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
 from ..solver.system import build_rows
 from ..typecheck import check
@@ -198,6 +198,7 @@ class Session:
             return res
         t1 = time.perf_counter()
         solver, warm = self._solver_for(model) if keep_warm else (Solver(model), False)
+        solver.deadline = interp.deadline                # the compile's one time budget
         solved = run(solver)
         if solver.model is not model:                   # warm: the solver writes its own model
             model.x = list(solver.model.x)
@@ -208,20 +209,17 @@ class Session:
                 self.solver = self._row_keys = None
             res.timings = t
             return res
-        check_branches(sink, model)
         res.solver, res.warm, res.model = solver, warm, model
+        t2 = time.perf_counter()
+        d = after_solve(sink, model)             # the same checks as `aidl check`
+        t["render_ms"] = _ms(t2)
+        if d is None:
+            res.timings = t
+            return res
         if drawing:
-            res.drawing, res.title = render_model(model), model.root.name
+            res.drawing, res.title = d, model.root.name
             res.ok = not sink.has_errors
             return res
-        t2 = time.perf_counter()
-        d = render_model(model)
-        for g in d.open_curves:
-            sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn "
-                         "as a line, not filled", g.span,
-                         hint="share endpoints between lines and arcs so they form a loop, or "
-                              "put the curve in a `drawing` structure")
-        t["render_ms"] = _ms(t2)
         t3 = time.perf_counter()
         res.svg = to_svg(d, title=model.root.name)
         t["svg_ms"] = _ms(t3)
