@@ -313,12 +313,8 @@ class Renderer:
         out.construction += out.strokes[mark[0]:]
         del out.strokes[mark[0]:], out.lines[mark[1]:], self.circles[mark[2]:]
 
-    def drawing(self, s: Structure, out: Drawing) -> None:
-        for g in s.geometry:
-            if g.construction:
-                self.construct(g, out)
-            else:
-                self.draw_lines(g, out)
+    def children(self, s: Structure, out: Drawing) -> None:
+        """The children of a drawing or an assembly: each drawn, or a separate part."""
         for c in s.children.values():
             if c.kind == "drawing":
                 self.drawing(c, out)
@@ -327,18 +323,20 @@ class Renderer:
             else:
                 self.part(c, out)
 
+    def drawing(self, s: Structure, out: Drawing) -> None:
+        for g in s.geometry:
+            if g.construction:
+                self.construct(g, out)
+            else:
+                self.draw_lines(g, out)
+        self.children(s, out)
+
     def assembly(self, s: Structure, out: Drawing) -> None:
         faces = self.own_faces(s, out)
         if faces:
             out.parts.append(Part(s.path, "solid", mf.CrossSection.batch_boolean(faces, mf.OpType.Add)))
             out.part_of[s.path] = s
-        for c in s.children.values():
-            if c.kind == "drawing":
-                self.drawing(c, out)
-            elif c.kind == "assembly":
-                self.assembly(c, out)
-            else:
-                self.part(c, out)
+        self.children(s, out)
 
     def part(self, s: Structure, out: Drawing) -> None:
         at = len(out.parts)             # a part is drawn under the parts of its drawings

@@ -11,7 +11,6 @@ watchfiles).
 """
 from __future__ import annotations
 
-import os
 import socket
 import sys
 from pathlib import Path
@@ -23,11 +22,7 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
     """Serve the live preview of ``path`` on http://127.0.0.1:PORT/ until interrupted.
     ``port=0`` picks a free port.  Returns the exit status (2: the extra is not installed or
     the port is taken)."""
-    # one BLAS thread: the degrees-of-freedom SVDs are small, and multi-threaded OpenBLAS spins
-    # when the machine is busy (gear.aidl's summary: 0.9-3.6 s instead of 20 ms on 2 cores
-    # under load); only effective before numpy is first imported, as it is here
-    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-        os.environ.setdefault(var, "1")
+    # one BLAS thread: set by the `aidl` command (aidl_lang/cli/__init__.py)
     try:
         import uvicorn
         from .app import create_app
