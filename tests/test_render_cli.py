@@ -134,3 +134,16 @@ def test_show_and_thickness_options(good, tmp_path, capsys):
     assert m.bounds[1][2] == pytest.approx(6.35)
     assert main(["render", str(good), "-o", str(svg), "--show", "nope"]) == 2
     assert main(["render", str(good), "-o", str(stl), "--thickness", "-1"]) == 2
+
+
+@pytest.mark.parametrize("opt,msg", [(["--dpi", "-3"], "positive --dpi"),
+                                     (["--png-width", "0"], "positive --png-width"),
+                                     (["--dpi", "100000"], "more than 32767 a side"),
+                                     (["--png-width", "50000"], "more than 32767 a side")])
+def test_impossible_png_size_is_a_clear_error_and_writes_nothing(good, tmp_path, capsys, opt, msg):
+    pytest.importorskip("cairosvg")
+    out, svg = tmp_path / "p.png", tmp_path / "p.svg"
+    assert main(["render", str(good), "-o", str(svg), "-o", str(out), *opt]) == 1
+    err = capsys.readouterr().err
+    assert msg in err and "internal error" not in err
+    assert not out.exists() and not svg.exists()

@@ -284,7 +284,7 @@ def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
 
 def cmd_render(args) -> int:
     from ..pipeline import compile_source
-    from ..output import MissingDependency, Options, build, encode
+    from ..output import Options, OutputError, build, encode
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -314,7 +314,7 @@ def cmd_render(args) -> int:
                   thickness=thickness)
     try:
         items = [(o, encode(output, o.suffix, opt)) for o in outs]
-    except MissingDependency as e:
+    except OutputError as e:                 # a missing library, an impossible size
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     err = _write_all(items)

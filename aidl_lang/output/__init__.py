@@ -4,8 +4,8 @@ output model (:mod:`.part`: lines, arcs, circles per part, engraving), the write
 checks on the final shape (:mod:`.checks`).  docs/outputs.md describes them."""
 from .booleans import Drawing, Part, area, render_model
 from .formats import FORMATS, Options, encode
-from .part import MissingDependency, Output, build
+from .part import MissingDependency, Output, OutputError, build
 from .svg import to_svg
 
 __all__ = ["Drawing", "Part", "area", "render_model", "to_svg", "Output", "build", "FORMATS",
-           "Options", "encode", "MissingDependency"]
+           "Options", "encode", "MissingDependency", "OutputError"]

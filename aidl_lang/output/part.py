@@ -33,7 +33,12 @@ from .booleans import Drawing
 Point = tuple[float, float]
 
 
-class MissingDependency(RuntimeError):
+class OutputError(RuntimeError):
+    """A writer cannot produce this file from this part (for example a PNG larger than the
+    rasteriser allows); the message says why and what to change."""
+
+
+class MissingDependency(OutputError):
     """An optional output library is not installed; the message says how to install it."""
 
 # how far a boolean vertex may be from the exact intersection it stands for: two chords that

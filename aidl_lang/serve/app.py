@@ -166,6 +166,8 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                 body = await run_in_threadpool(table[fmt], drawing, extra)
             except output.MissingDependency as e:
                 return PlainTextResponse(str(e), status_code=501)
+            except output.OutputError as e:
+                return PlainTextResponse(str(e), status_code=422)
         if isinstance(body, str):
             body = body.encode("utf-8")
         stem = Path(hub.session.name).stem or "part"
