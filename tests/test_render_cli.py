@@ -147,3 +147,11 @@ def test_impossible_png_size_is_a_clear_error_and_writes_nothing(good, tmp_path,
     err = capsys.readouterr().err
     assert msg in err and "internal error" not in err
     assert not out.exists() and not svg.exists()
+
+
+def test_out_of_range_port_and_thickness_are_usage_errors(good, tmp_path, capsys):
+    with pytest.raises(SystemExit) as e:
+        main(["serve", str(good), "--port", "99999"])
+    assert e.value.code == 2 and "--port expects a number from 0 to 65535" in capsys.readouterr().err
+    assert main(["render", str(good), "-o", str(tmp_path / "p.stl"), "--thickness", "1e9mm"]) == 2
+    assert "--thickness expects a positive length up to 1 km" in capsys.readouterr().err

@@ -82,10 +82,16 @@ def _parser() -> argparse.ArgumentParser:
     v = sub.add_parser("serve", help="live preview in the browser with parameter sliders "
                                      "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
-    v.add_argument("--port", type=int, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
     from .llm import add_commands
     add_commands(sub)                  # prompt, generate, eval
     return p
+
+
+def _port(text: str) -> int:
+    if not (text.isdigit() and int(text) <= 65535):
+        raise argparse.ArgumentTypeError(f"--port expects a number from 0 to 65535, got `{text}`")
+    return int(text)
 
 
 def _budget_factor(text: str) -> float:
@@ -201,14 +207,16 @@ def _usage(msg: str) -> int:
 
 
 def _length_mm(text: str) -> float | None:
-    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length."""
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length up to
+    the model extent (1e6 mm)."""
     import re
     m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
     if not m:
         return None
     v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
         (m.group(2) or "mm").lower()]
-    return v if v > 0 else None
+    from ..limits import MAX_EXTENT
+    return v if 0 < v <= MAX_EXTENT else None
 
 
 def _outputs(args) -> list[Path] | int:
@@ -296,7 +304,7 @@ def cmd_render(args) -> int:
     if args.thickness is not None:
         thickness = _length_mm(args.thickness)
         if thickness is None:
-            return _usage(f"--thickness expects a positive length such as 3mm, got "
+            return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
                           f"`{args.thickness}`")
     if args.file == "-":
         src = sys.stdin.read()
