@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .arrays import unique
+
 from ..geometry.model import Constraint
 from .system import user_residuals
 
@@ -150,7 +152,7 @@ def _dense_block_rank(J: np.ndarray) -> int:
         return 0
     lab = _dense_components(J)
     rank = 0
-    for k in np.unique(lab):
+    for k in unique(lab):
         sub = J[lab == k]
         sub = sub[:, np.any(sub != 0, axis=0)]
         if sub.shape[1] == 0:
@@ -171,7 +173,7 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
         return []
     J = t.jacobian(x, cols)
     lab = _components(J)
-    local = np.flatnonzero(np.isin(lab, np.unique(lab[bad])))
+    local = np.flatnonzero(np.isin(lab, unique(lab[bad])))
     if len(local) > MAX_DENSE:
         return []
     Jd = J[local].toarray()
@@ -242,7 +244,7 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 label_of[i] = f"{c.path} (position)"
         rows = solver.rows_of([s])
         sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
-        cols = np.unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
         n_unknowns = len(params)
         if not len(cols):
             out.append(StructureDof(s, 0, 0))
@@ -289,10 +291,10 @@ def _block_rank(J) -> int:
         return 0
     lab = _components(J)
     rank = 0
-    for k in np.unique(lab):
+    for k in unique(lab):
         r = np.flatnonzero(lab == k)
         sub = J[r]
-        c = np.unique(sub.indices)
+        c = unique(sub.indices)
         if len(r) > MAX_DENSE or len(c) > MAX_DENSE:
             return -1
         sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
@@ -338,7 +340,7 @@ def redundancies(solver) -> list[Redundant]:
         if not c.implicit and id(c) not in seen and abs(F[i]) <= 1e-9:
             seen.add(id(c))
             out.append(Redundant(c, []))
-    for comp in np.unique(lab):
+    for comp in unique(lab):
         local = np.flatnonzero(lab == comp)
         if len(local) < 2 or len(local) > MAX_DENSE:
             continue

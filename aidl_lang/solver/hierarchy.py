@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .arrays import unique
+
 from ..geometry.model import Model, Structure
 from .newton import TOL, newton
 from .system import LINK, SIGN, Rows, build_rows
@@ -149,7 +151,7 @@ class Solver:
 
     def _cols(self, params: list[int], rows: np.ndarray) -> np.ndarray:
         sl = self.slack[rows]
-        return np.unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        return unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
 
     # ------------------------------------------------------------------ attempts
     def attempt(self, att: Attempt) -> bool:

@@ -19,6 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .arrays import unique
+
 from .tape import Tape
 
 
@@ -178,7 +180,7 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
                 changed = True
     if not used.any():
         return False
-    class_roots = np.unique(roots)
+    class_roots = unique(roots)
     live_roots = np.asarray([r for r in class_roots if r not in fixed_root], dtype=np.int64)
     zidx = -np.ones(n, dtype=np.int64)
     zidx[live_roots] = np.arange(len(live_roots))
@@ -186,5 +188,7 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
     for root, v in fixed_root.items():
         t[roots == root] += v
     zc = zidx[roots]
-    keep = np.setdiff1d(np.arange(tape.n_rows), tape.aff_rows[used])
+    dropped = np.zeros(tape.n_rows, dtype=bool)      # np.setdiff1d, without importing numpy.ma
+    dropped[tape.aff_rows[used]] = True
+    keep = np.flatnonzero(~dropped)
     return zc, t, keep, offs, len(live_roots)

@@ -27,6 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .arrays import unique
+
 from ..geometry.expr import Lin, Nl
 
 LEAF, ADD, MUL, DIV, POW, ATAN2, MIN, MAX = range(8)
@@ -43,7 +45,7 @@ def _distinct(a: np.ndarray) -> bool:
     dominated small tapes)."""
     if len(a) <= 64:
         return len(set(a.tolist())) == len(a)
-    return len(np.unique(a)) == len(a)
+    return len(unique(a)) == len(a)
 
 
 class TapeError(ValueError):
