@@ -8,7 +8,7 @@ cannot go on raises :class:`Abort` after recording why.
 from __future__ import annotations
 
 import difflib
-from dataclasses import dataclass, field
+from .records import dataclass, field
 from typing import Iterable
 
 

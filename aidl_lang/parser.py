@@ -13,14 +13,9 @@ folder, owner-only (issue 15), see :func:`cached_lark`.
 """
 from __future__ import annotations
 
-import hashlib
 import re
 import threading
 from pathlib import Path
-
-from lark import Lark, Token
-from lark.exceptions import (LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput,
-                             UnexpectedToken)
 
 from . import ast as A
 from .cache import cache_dir, read_owned, write_atomic
@@ -103,19 +98,68 @@ def _retype_thickness(stream):
         yield held
 
 
-_LARK: Lark | None = None
+class Token(str):
+    """A token from the lexer: its text (the ``str`` value) and where it is, with the fields of
+    Lark's ``Token``: ``type`` (the terminal's name), ``start_pos`` / ``end_pos`` (0-based
+    offsets), ``line`` / ``column`` and ``end_line`` / ``end_column`` (1-based)."""
+
+    def __new__(cls, type, value, start_pos=None, line=None, column=None, end_line=None,
+                end_column=None, end_pos=None):
+        t = str.__new__(cls, value)
+        t.type = type
+        t.start_pos, t.line, t.column = start_pos, line, column
+        t.end_line, t.end_column, t.end_pos = end_line, end_column, end_pos
+        return t
+
+    @property
+    def value(self) -> str:
+        return str(self)
+
+    @classmethod
+    def new_borrow_pos(cls, type_: str, value, borrow: "Token") -> "Token":
+        """A token of another type and text at ``borrow``'s place."""
+        return cls(type_, value, borrow.start_pos, borrow.line, borrow.column, borrow.end_line,
+                   borrow.end_column, borrow.end_pos)
+
+
+class ParseError(Exception):
+    """A syntax error found by the lexer or the LALR table (reported as E0001 / E0002)."""
+
+
+class UnexpectedToken(ParseError):
+    """The LALR table has no action for ``token`` here; ``expected`` holds the terminal names
+    that would have been accepted."""
+
+    def __init__(self, token: Token, expected: set):
+        super().__init__(f"unexpected {token.type} {str(token)!r}")
+        self.token, self.expected = token, expected
+        self.pos_in_stream = token.start_pos
+
+
+class UnexpectedCharacters(ParseError):
+    """No terminal of the grammar matches the text at offset ``pos_in_stream``."""
+
+    def __init__(self, text: str, pos: int, line: int, column: int):
+        super().__init__(f"no terminal matches at line {line}, column {column}")
+        self.pos_in_stream, self.line, self.column = pos, line, column
+
+
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
 _CACHE_FORMAT = 1
+_TABLES_FORMAT = 2
 
 
-def cached_lark(postlex=None, **options) -> Lark:
+def cached_lark(postlex=None, **options):
     """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in the
     user's cache folder (:func:`aidl_lang.cache.cache_dir`; never pickled: a cache file cannot
     run code), keyed by the grammar, the options and Lark's version; rebuilt and rewritten
-    (atomically, mode 0600) when missing, stale, unreadable or not owner-only."""
+    (atomically, mode 0600) when missing, stale, unreadable or not owner-only.  Used by
+    ``aidl fmt``'s lexer; :func:`parse` reads the smaller table of :func:`_tables`."""
+    import hashlib
     import json
 
     import lark
+    from lark import Lark
     from lark.grammar import Rule
     from lark.lexer import TerminalDef
 
@@ -148,59 +192,165 @@ def _int_keys(d: dict) -> dict:
     return {int(k) if k.isdigit() else k: v for k, v in d.items()}
 
 
-def lark_parser() -> Lark:
-    """The Lark LALR parser whose reductions build the typed AST directly (see
-    :class:`_Builder`).
+# ----------------------------------------------------------------- the parse table
+class _Tables:
+    """What :func:`_lex` and :func:`_run_lalr` run, made from Lark's LALR(1) table and basic
+    lexer for ``grammar/aidl.lark`` (:func:`_tables_data`):
 
-    ``lark_parser().parse(text, start=...)`` returns a ``_R`` wrapper; :func:`parse` and
-    :func:`parse_expression` run the same table and callbacks through :func:`_run_lalr`.
-    """
-    global _LARK, _TABLE
-    if _LARK is None:
-        lp = cached_lark(postlex=_PostLex(), **_LARK_OPTIONS)
-        callbacks = _reduce_callbacks(lp)
-        lp._callbacks.clear()                      # shared with the LALR parser by reference
-        lp._callbacks.update(callbacks)
-        _TABLE = _compile_table(lp, callbacks)
-        _LARK = lp
-    return _LARK
+    - ``mres``: the lexer's compiled alternations of every terminal (named groups, Lark's
+      order and priorities); ``ignore`` / ``newline``: terminal names skipped / counted for
+      lines; ``keywords``: per terminal (``NAME``), the whole-match patterns that retype a
+      token as a keyword (Lark's ``UnlessCallback``);
+    - ``states``: per LALR state, terminal or rule name -> the next state (an ``int``: shift or
+      goto) or a reduction ``(size, rule name, callback)``, ``(None, rule name, None)`` for a
+      unit rule whose child stays as it is; ``start`` / ``end``: the first and accepting state
+      of each start symbol (``start``, ``expr``)."""
+
+    def __init__(self, data: dict):
+        lx = data["lexer"]
+        self.mres = [re.compile(p, f) for p, f in lx["patterns"]]
+        self.ignore = frozenset(lx["ignore"])
+        self.newline = frozenset(lx["newline"])
+        self.keywords = {t: [re.compile(p, f) for p, f in pats]
+                         for t, pats in lx["keywords"].items()}
+        ps = data["parser"]
+        reductions = [_reduction(*spec) for spec in ps["rules"]]
+        self.states = [{sym: (a if a >= 0 else reductions[-a - 1]) for sym, a in row.items()}
+                       for row in ps["states"]]
+        self.start, self.end = ps["start"], ps["end"]
 
 
-_TABLE = None
+def _reduction(origin: str, size: int, name: str, include: list, tail: int, expand1: bool,
+               unit: bool):
+    """A reduction of :attr:`_Tables.states` from a rule's spec (see :func:`_tables_data`)."""
+    if unit:
+        return (None, origin, None)
+    if name.startswith("_"):
+        build = None                            # spliced into the parent
+    else:
+        build = getattr(_Builder, name, None)
+        if build is None:
+            if not expand1:
+                raise RuntimeError(f"grammar rule `{name}` has no AST builder")
+            build = _no_builder                # a `?rule` passes its one child through
+    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build))
 
 
-def _compile_table(lp: Lark, callbacks: dict):
-    """Lark's LALR table in the form :func:`_run_lalr` reads fastest: per state, a shift or
-    goto is the next state (an int); a reduction is ``(size, rule name, callback)``, or
-    ``(None, rule name, None)`` for a unit rule whose child stays as it is."""
+def _tables_data() -> dict:
+    """Build Lark's LALR(1) parser for ``grammar/aidl.lark`` (imports Lark; ~0.4 s) and keep what
+    the parse needs as plain data: the lexer's patterns, ignored and newline terminals and
+    keyword patterns, and the LALR table with one spec per rule (origin, length, AST builder,
+    the children it keeps, trailing ``None``s of ``[optional]`` parts, ``?rule`` and unit
+    flags) -- the same steps as Lark's tree builder with ``propagate_positions=True`` and
+    ``maybe_placeholders=True``."""
+    from lark import Lark
+    lp = Lark(GRAMMAR.read_text(), **_LARK_OPTIONS)
+    basic = lp.parser.lexer
+    scanner = basic.scanner
+    keywords = {t: [(m.pattern, m.flags) for m in cb.scanner._mres]
+                for t, cb in basic.callback.items()}
+    index = {}
+    specs = []
+    for rule in lp.rules:
+        name = rule.alias or rule.options.template_source or rule.origin.name
+        expansion = rule.expansion
+        empty = rule.options.empty_indices
+        if empty:
+            bits = "".join(str(int(b)) for b in empty)
+            nones = [len(ones) for ones in bits.split("0")]
+        else:
+            nones = [0] * (len(expansion) + 1)
+        include = []
+        pending = 0
+        for i, sym in enumerate(expansion):
+            pending += nones[i]
+            if rule.options.keep_all_tokens or not (sym.is_term and sym.filter_out):
+                include.append((i, not sym.is_term and sym.name.startswith("_"), pending))
+                pending = 0
+        tail = pending + nones[len(expansion)]
+        expand1 = bool(rule.options.expand1 and not rule.alias)
+        unit = expand1 and len(expansion) == 1 and include == [(0, False, 0)] and not tail
+        index[rule] = len(specs)
+        specs.append([rule.origin.name, len(expansion), name, include, tail, expand1, unit])
     table = lp.parser.parser._parse_table
-    states = {}
-    for st, actions in table.states.items():
+    states = []
+    for st in range(len(table.states)):
         row = {}
-        for sym, (_action, arg) in actions.items():
-            if isinstance(arg, int):
-                row[sym] = arg
-            else:
-                cb = callbacks[arg]
-                row[sym] = ((None, arg.origin.name, None) if cb is _unit
-                            else (len(arg.expansion), arg.origin.name, cb))
-        states[st] = row
-    return states, table.start_states, table.end_states, table.states
+        for sym, (_action, arg) in table.states[st].items():
+            row[sym] = arg if isinstance(arg, int) else -index[arg] - 1
+        states.append(row)
+    return {"lexer": {"patterns": [(m.pattern, m.flags) for m in scanner._mres],
+                      "ignore": sorted(basic.ignore_types), "newline": sorted(basic.newline_types),
+                      "keywords": keywords},
+            "parser": {"rules": specs, "states": states, "start": table.start_states,
+                       "end": table.end_states}}
 
 
-_POSTLEX = _PostLex()
+_TABLES: _Tables | None = None
+_TABLES_LOCK = threading.Lock()
+
+
+def _tables() -> _Tables:
+    """The parse table, read from the user's cache folder (plain JSON, owner-only, see
+    :mod:`aidl_lang.cache`) or built with Lark and written there; keyed by the grammar text,
+    the options, the table format and Lark's version (all kept in the file and compared).  A
+    cold ``aidl check`` so never imports Lark (~35 ms) nor unpacks its serialized parser."""
+    global _TABLES
+    if _TABLES is not None:
+        return _TABLES
+    with _TABLES_LOCK:
+        if _TABLES is None:
+            import json
+            import zlib
+            # the whole key (grammar text included) is kept in the file and compared, so the
+            # file name needs no cryptographic hash (hashlib costs ~5 ms to import)
+            key = repr((_TABLES_FORMAT, _lark_version(), sorted(_LARK_OPTIONS.items()))) \
+                + "\n" + GRAMMAR.read_text()
+            d = cache_dir()
+            name = f"parser-{zlib.crc32(key.encode()):08x}-{len(key)}.json"
+            path = d / name if d is not None else None
+            text = read_owned(path) if path is not None else None
+            data = None
+            if text is not None:
+                try:
+                    blob = json.loads(text)
+                    if blob.get("key") == key:
+                        data = blob["tables"]
+                        tables = _Tables(data)
+                except Exception:           # a stale or damaged cache: rebuild it below
+                    data = None
+            if data is None:
+                data = _tables_data()
+                tables = _Tables(data)
+                if path is not None:
+                    write_atomic(path, json.dumps({"key": key, "tables": data}))
+            _TABLES = tables
+    return _TABLES
+
+
+def _lark_version() -> str:
+    """Lark's version, read from its ``__init__.py`` without importing it (so a Lark upgrade
+    rebuilds the cached table)."""
+    import importlib.util
+    spec = importlib.util.find_spec("lark")
+    if spec is None or spec.origin is None:
+        return "?"
+    try:
+        m = re.search(r"__version__\s*(?::\s*str\s*)?=\s*['\"]([^'\"]+)", Path(spec.origin).read_text())
+    except OSError:
+        return "?"
+    return m.group(1) if m else "?"
 
 
 def _lex(text: str):
-    """Lark's basic lexer over ``text`` (same terminals, same order, same keyword callbacks,
-    same positions), as one loop over its compiled scanner."""
-    basic = _LARK.parser.lexer.lexer
-    scanner = basic.scanner                         # builds basic.callback too
-    mres = scanner._mres
+    """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
+    same positions), as one loop over the compiled alternations of :class:`_Tables`.  Raises
+    :class:`UnexpectedCharacters` where no terminal matches."""
+    tb = _tables()
+    mres = tb.mres
     single = mres[0] if len(mres) == 1 else None
-    ignore, newline, callback = basic.ignore_types, basic.newline_types, basic.callback
+    ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
     pos, line, line_start, end = 0, 1, 0, len(text)
-    last = None
     while pos < end:
         m = single.match(text, pos) if single is not None else None
         if m is None:
@@ -209,13 +359,10 @@ def _lex(text: str):
                 if m:
                     break
             else:
-                allowed = scanner.allowed_types - ignore or {"<END-OF-FILE>"}
-                raise UnexpectedCharacters(text, pos, line, pos - line_start + 1, allowed=allowed,
-                                           token_history=last and [last],
-                                           terminals_by_name=basic.terminals_by_name)
+                raise UnexpectedCharacters(text, pos, line, pos - line_start + 1)
         value, type_ = m.group(0), m.lastgroup
         npos = pos + len(value)
-        if type_ in ignore and type_ not in callback:
+        if type_ in ignore:
             if type_ in newline:
                 k = value.count("\n")
                 if k:
@@ -223,40 +370,39 @@ def _lex(text: str):
                     line_start = pos + value.rindex("\n") + 1
             pos = npos
             continue
-        t = Token(type_, value, pos, line, pos - line_start + 1)
+        start_line, column = line, pos - line_start + 1
         if type_ in newline:
             k = value.count("\n")
             if k:
                 line += k
                 line_start = pos + value.rindex("\n") + 1
-        t.end_line = line
-        t.end_column = npos - line_start + 1
-        t.end_pos = npos
+        if type_ in keywords:
+            for kre in keywords[type_]:
+                km = kre.fullmatch(value)
+                if km:
+                    type_ = km.lastgroup
+                    break
+        yield Token(type_, value, pos, start_line, column, line, npos - line_start + 1, npos)
         pos = npos
-        if type_ in callback:
-            t = callback[type_](t)
-        if type_ not in ignore:
-            last = t
-            yield t
 
 
 def _run_lalr(text: str, start: str):
-    """Lex ``text`` with Lark's lexer and post-lexer and run Lark's LALR(1) table over it with
-    the AST callbacks: the loop of ``lark.parsers.lalr_parser_state.ParserState.feed_token``
-    without its per-step assertions and rule-object look-ups.  Raises Lark's
-    ``UnexpectedToken`` / ``UnexpectedCharacters`` as ``Lark.parse`` does."""
-    lark_parser()
-    states, start_states, end_states, raw = _TABLE
+    """Lex ``text`` (:func:`_lex` and the post-lexer) and run the LALR(1) table over it with the
+    AST callbacks: the loop of ``lark.parsers.lalr_parser_state.ParserState.feed_token``
+    without its per-step assertions and rule-object look-ups.  Raises
+    :class:`UnexpectedToken` / :class:`UnexpectedCharacters`."""
+    tb = _tables()
+    states, start_states, end_states = tb.states, tb.start, tb.end
     state_stack = [start_states[start]]
     value_stack: list = []
     push_state, push_value = state_stack.append, value_stack.append
     token = None
-    for token in _POSTLEX.process(_lex(text)):
+    for token in _PostLex().process(_lex(text)):
         while True:
             try:
                 act = states[state_stack[-1]][token.type]
             except KeyError:
-                raise UnexpectedToken(token, {s for s in raw[state_stack[-1]] if s.isupper()})
+                raise UnexpectedToken(token, _expected(states[state_stack[-1]]))
             if type(act) is int:
                 push_state(act)
                 push_value(token)
@@ -273,13 +419,15 @@ def _run_lalr(text: str, start: str):
                 children = []
             push_value(cb(children))
             push_state(states[state_stack[-1]][origin])
-    end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1)
+    end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1, 1, 1, 0)
     end_state = end_states[start]
     while True:
         try:
             act = states[state_stack[-1]]["$END"]
         except KeyError:
-            raise UnexpectedToken(end, {s for s in raw[state_stack[-1]] if s.isupper()})
+            raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
+        if type(act) is int:
+            raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
         size, origin, cb = act
         if size is None:
             state_stack[-1] = states[state_stack[-2]][origin]
@@ -294,6 +442,11 @@ def _run_lalr(text: str, start: str):
             push_state(states[state_stack[-1]][origin])
         if state_stack[-1] == end_state:
             return value_stack[-1]
+
+
+def _expected(row: dict) -> set:
+    """The terminal names a state accepts (its row's upper-case keys)."""
+    return {s for s in row if s.isupper()}
 
 
 # --------------------------------------------------------------- preprocessing
@@ -473,7 +626,7 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
                     return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
         elif ch in ")]}":
             depth -= 1
-    lark_parser()
+    _tables()
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     seen: set[int] = set()
@@ -483,14 +636,14 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
             try:
                 stmts = _run_lalr(text, "start").v
                 break
-            except UnexpectedInput as e:
+            except (UnexpectedToken, UnexpectedCharacters) as e:
                 pos = _error_pos(e, text)
                 if pos in seen or len(seen) >= MAX_ERRORS:
                     return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
                 seen.add(pos)
                 _report(e, text, path, pos, sink)
                 _slash_hint(sink, slashes, text, pos)
-                if isinstance(e, UnexpectedEOF) or pos >= len(text.rstrip()):
+                if pos >= len(text.rstrip()):
                     return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
                 text = _blank_logical_line(text, pos)
         else:
@@ -505,7 +658,7 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
 
 
 def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
-    """Parse one expression (``--set`` values); raises a ``LarkError`` when it does not parse
+    """Parse one expression (``--set`` values); raises :class:`ParseError` when it does not parse
     (an error inside an f-string is also reported to ``sink``)."""
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
@@ -519,7 +672,7 @@ def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
     return node
 
 
-def _error_pos(e: UnexpectedInput, text: str) -> int:
+def _error_pos(e: ParseError, text: str) -> int:
     if isinstance(e, UnexpectedToken) and e.token.type == "$END":
         return len(text)
     p = getattr(e, "pos_in_stream", None)
@@ -528,7 +681,7 @@ def _error_pos(e: UnexpectedInput, text: str) -> int:
     return len(text) if p is None else p
 
 
-def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: DiagnosticSink) -> None:
+def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink) -> None:
     line = text.count("\n", 0, pos) + 1
     col = pos - text.rfind("\n", 0, pos)
     if isinstance(e, UnexpectedCharacters):
@@ -540,7 +693,7 @@ def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: Diagnostic
         sink.error("E0002", msg, Span(path, line, col, line, col + 1, pos, pos + 1), hint)
         return
     expected = _expected_text(getattr(e, "expected", None) or getattr(e, "accepts", None))
-    if isinstance(e, UnexpectedEOF) or (isinstance(e, UnexpectedToken) and e.token.type == "$END"):
+    if isinstance(e, UnexpectedToken) and e.token.type == "$END":
         sink.error("E0001", "unexpected end of file" + (f"; {expected}" if expected else ""),
                    Span(path, line, col, line, col + 1, pos, pos + 1),
                    "a `{` or `(` is probably not closed")
@@ -561,7 +714,7 @@ def _report(e: UnexpectedInput, text: str, path: str, pos: int, sink: Diagnostic
                Span(path, line, col, line, col + width, pos, pos + width), hint)
 
 
-class _BuildError(LarkError):
+class _BuildError(ParseError):
     """A reduction could not build its node (an f-string whose expression does not parse)."""
 
 
@@ -598,60 +751,6 @@ class _R:
 
 
 _STATE = threading.local()       # .builder: the _Builder of the parse running in this thread
-
-
-def _reduce_callbacks(lp: Lark) -> dict:
-    """One callback per grammar rule for Lark's LALR loop, building the AST in the reduction.
-
-    The same steps as Lark's tree builder with ``propagate_positions=True`` and
-    ``maybe_placeholders=True`` (drop filtered tokens, add ``None`` for missing optional parts,
-    splice ``_rule`` children, pass a ``?rule``'s single child through), except that the node
-    is made by the :class:`_Builder` method named after the rule, from the children and the
-    extent of the first and last child, instead of a ``Tree`` that is walked afterwards.
-    """
-    callbacks = {}
-    for rule in lp.rules:
-        name = rule.alias or rule.options.template_source or rule.origin.name
-        expansion = rule.expansion
-        empty = rule.options.empty_indices
-        if empty:
-            bits = "".join(str(int(b)) for b in empty)
-            nones = [len(ones) for ones in bits.split("0")]
-        else:
-            nones = [0] * (len(expansion) + 1)
-        include = []
-        pending = 0
-        for i, sym in enumerate(expansion):
-            pending += nones[i]
-            if rule.options.keep_all_tokens or not (sym.is_term and sym.filter_out):
-                include.append((i, not sym.is_term and sym.name.startswith("_"), pending))
-                pending = 0
-        tail = pending + nones[len(expansion)]
-        expand1 = bool(rule.options.expand1 and not rule.alias)
-        if name.startswith("_"):
-            build = None                        # spliced into the parent
-        else:
-            build = getattr(_Builder, name, None)
-            if build is None:
-                if not expand1:
-                    raise RuntimeError(f"grammar rule `{name}` has no AST builder")
-                build = _no_builder            # a `?rule` passes its one child through
-        if expand1 and len(expansion) == 1 and include == [(0, False, 0)] and not tail:
-            callbacks[rule] = _unit           # `?sum: product`: the child, extent and all
-        else:
-            callbacks[rule] = _make_callback(tuple(include), tail, expand1, build)
-    # Key the callbacks by the parse table's own Rule objects: the LALR loop looks them up on
-    # every reduction, and an identical key skips Rule.__eq__.
-    table = lp.parser.parser._parse_table
-    for actions in table.states.values():
-        for _action, arg in actions.values():
-            if isinstance(arg, type(lp.rules[0])):
-                callbacks[arg] = callbacks.pop(arg)
-    return callbacks
-
-
-def _unit(children):
-    return children[0]
 
 
 def _no_builder(builder, meta, items):
@@ -839,7 +938,7 @@ class _Builder:
                     parts.append(buf); buf = ""
                 try:
                     expr = _run_lalr(inner.strip(), "expr").v
-                except UnexpectedInput:
+                except (UnexpectedToken, UnexpectedCharacters):
                     self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
                                         self.s(tok)))
                     return parts

@@ -9,10 +9,9 @@ from __future__ import annotations
 import threading
 import time
 import warnings
-from dataclasses import dataclass
+from .records import dataclass
 
 import numpy as np
-from lark.exceptions import VisitError
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
@@ -54,13 +53,6 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", _deep_span(ex, path, source),
                    hint="split long expressions into named constants")
-        return Compiled(sink)
-    except VisitError as ex:             # the parser's tree builder ran out of stack
-        if not isinstance(ex.orig_exc, (RecursionError, MemoryError)):
-            raise
-        sink.sources.setdefault(path, source)
-        sink.error("E0302", "this expression is nested too deeply to compile",
-                   _deep_span(ex, path, source), hint="split long expressions into named constants")
         return Compiled(sink)
 
 

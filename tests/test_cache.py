@@ -96,7 +96,7 @@ def test_the_cache_is_owner_only_json_in_the_users_cache_folder(tmp_path):
     fst = os.lstat(files[0])
     assert fst.st_uid == os.getuid() and stat.S_IMODE(fst.st_mode) == 0o600
     blob = json.loads(files[0].read_text())          # plain data, not a pickle
-    assert set(blob) == {"key", "data", "memo"}
+    assert set(blob) == {"key", "tables"}
     # a second run reads it and parses the same
     again = _run(tmp_path)
     assert again.returncode == 0 and again.stdout.split() == ["StructDecl", "s"]
@@ -159,8 +159,10 @@ def test_a_cache_folder_or_file_owned_by_someone_else_is_not_used(tmp_path):
 
 
 FONT_CHILD = """
+import sys
 from aidl_lang.geometry.text import text_extent
 print(*(round(v, 9) for v in text_extent("AIDL 42", 5.0)))
+print("package-imported" if "HersheyFonts" in sys.modules else "package-not-imported")
 """
 
 
@@ -170,7 +172,9 @@ def _run_font(tmp_path) -> list[float]:
     r = subprocess.run([sys.executable, "-c", FONT_CHILD], env=env, capture_output=True,
                        text=True, timeout=120)
     assert r.returncode == 0, r.stderr
-    return [float(v) for v in r.stdout.split()]
+    *numbers, imported = r.stdout.split()
+    _run_font.imported = imported == "package-imported"
+    return [float(v) for v in numbers]
 
 
 def test_the_font_is_cached_owner_only_and_gives_the_same_strokes(tmp_path):
@@ -178,17 +182,32 @@ def test_the_font_is_cached_owner_only_and_gives_the_same_strokes(tmp_path):
     (tmp_path / "tmp").mkdir()
     (tmp_path / "home").mkdir()
     first = _run_font(tmp_path)
-    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
+    assert _run_font.imported                                 # the first run made the cache
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.json"
     st = os.lstat(f)
     assert st.st_uid == os.getuid() and stat.S_IMODE(st.st_mode) == 0o600
-    assert _run_font(tmp_path) == first                       # read back from the cache
-    # the same glyphs as the package's own loader, character by character
+    assert _run_font(tmp_path) == first                       # read back from the cache,
+    assert not _run_font.imported                             # without the package
+    # the same segments as the package's own renderer, bit for bit, from the cached table
     ref = HersheyFonts()
     ref.load_default_font("futural")
-    mine = HersheyFonts()
-    mine.read_from_string_lines(f.read_text().splitlines())
-    for ch in map(chr, range(32, 127)):
-        assert list(mine.lines_for_text(ch)) == list(ref.lines_for_text(ch)), ch
+    ref.normalize_rendering(1.0)
+    from aidl_lang.geometry import text
+    env_cache = os.environ.get("XDG_CACHE_HOME")
+    os.environ["XDG_CACHE_HOME"] = str(tmp_path / "cache")
+    try:
+        text._glyphs.cache_clear()
+        text._raw.cache_clear()
+        for s in [*map(chr, range(32, 127)), "AIDL 42", "x = 3.5 mm\n(ok)"]:
+            want = tuple((tuple(a), tuple(b)) for a, b in ref.lines_for_text(s))
+            assert text._raw(s) == want, s
+    finally:
+        if env_cache is None:
+            os.environ.pop("XDG_CACHE_HOME")
+        else:
+            os.environ["XDG_CACHE_HOME"] = env_cache
+        text._glyphs.cache_clear()
+        text._raw.cache_clear()
     # width 5 mm cap height: "AIDL 42" is wider than tall, and sits on the baseline
     x0, x1, y0, y1 = first
     assert x1 - x0 > 3 * (y1 - y0) > 0 and abs(y0) < 1e-9 and abs(y1 - 5.0) < 0.01
@@ -198,8 +217,8 @@ def test_a_font_file_others_can_write_is_not_read(tmp_path):
     (tmp_path / "tmp").mkdir()
     (tmp_path / "home").mkdir()
     good = _run_font(tmp_path)
-    f = tmp_path / "cache" / "aidl" / "hershey-futural.jhf"
-    f.write_text("  1 20 ::\n" * 95)                           # empty glyphs: no strokes
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.json"
+    f.write_text('{"font": "futural", "format": 1, "glyphs": {}}')     # no glyphs: no strokes
     os.chmod(f, 0o666)
     assert _run_font(tmp_path) == good
     assert stat.S_IMODE(os.lstat(f).st_mode) == 0o600

@@ -13,41 +13,72 @@ CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1
 FONT = "futural"
 
 
+_GLYPHS_FORMAT = 1
+
+
 @lru_cache(maxsize=1)
-def _font():
-    """The font, normalized.  Its glyph table (3.5 KB of text) is kept in the user's cache
-    folder (:mod:`aidl_lang.cache`): ``load_default_font`` unpacks a bz2 archive of every
-    Hershey font each time, the slowest step of a cold ``aidl check`` of a part with text."""
-    from HersheyFonts import HersheyFonts
+def _glyphs() -> dict:
+    """Every glyph of the font, normalized (``normalize_rendering(1.0)``): character ->
+    ``(strokes, advance)``, each stroke a tuple of ``(x, y)`` points at pen position 0 and
+    ``advance`` the pen's move to the next character, exactly as the package's render iterator
+    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.cache`), so a
+    cold run neither imports the package (~10 ms: it imports ``tarfile``) nor unpacks its bz2
+    archive of every Hershey font."""
+    import json
+
     from ..cache import cache_dir, read_owned, write_atomic
-    f = HersheyFonts()
     d = cache_dir()
-    path = d / f"hershey-{FONT}.jhf" if d is not None else None
-    lines = read_owned(path) if path is not None else None
-    if lines:
-        f.read_from_string_lines(lines.splitlines())
-    else:
-        f.load_default_font(FONT)
-        if path is not None:
-            write_atomic(path, _font_text(f))
+    path = d / f"hershey-{FONT}.json" if d is not None else None
+    text = read_owned(path) if path is not None else None
+    if text:
+        try:
+            data = json.loads(text)
+            if data.get("font") == FONT and data.get("format") == _GLYPHS_FORMAT:
+                return {c: (tuple(tuple(map(tuple, stroke)) for stroke in strokes), adv)
+                        for c, (strokes, adv) in data["glyphs"].items()}
+        except (ValueError, TypeError, KeyError, AttributeError):
+            pass                          # damaged: made again below
+    glyphs = _glyphs_from_package()
+    if path is not None:
+        write_atomic(path, json.dumps({"font": FONT, "format": _GLYPHS_FORMAT,
+                                       "glyphs": glyphs}))
+    return glyphs
+
+
+def _glyphs_from_package() -> dict:
+    """:func:`_glyphs` from the ``Hershey-Fonts`` package (its ``_HersheyRenderIterator``:
+    point ``(xofs + (x - left_offset) * scalex, yofs + y * scaley)``, then
+    ``xofs += spacing + scalex * char_width``)."""
+    from HersheyFonts import HersheyFonts
+    f = HersheyFonts()
+    f.load_default_font(FONT)
     f.normalize_rendering(1.0)
-    return f
-
-
-def _font_text(f) -> str:
-    """The ``.jhf`` text of the default font ``FONT`` as the package ships it."""
-    import io
-    import tarfile
-    raw = f._HersheyFonts__get_compressed_font_bytes()
-    with tarfile.open(fileobj=io.BytesIO(raw), mode="r") as tar:
-        return tar.extractfile(FONT).read().decode("utf-8")
+    o = f.render_options
+    out = {}
+    for ch, g in f.all_glyphs.items():
+        strokes = tuple(tuple(((x - g.left_offset) * o["scalex"], o["yofs"] + y * o["scaley"])
+                              for x, y in stroke) for stroke in g.strokes)
+        out[ch] = (strokes, o["spacing"] + o["scalex"] * g.char_width)
+    return out
 
 
 @lru_cache(maxsize=512)
 def _raw(text: str) -> tuple:
-    f = _font()
-    segs = tuple(((a[0], a[1]), (b[0], b[1])) for a, b in f.lines_for_text(text))
-    return segs
+    """The line segments ``((x0, y0), (x1, y1))`` of ``text`` in normalized font units, the
+    pen starting at 0: the package's ``lines_for_text``, bit for bit."""
+    glyphs = _glyphs()
+    segs = []
+    pen = 0
+    for ch in text:
+        g = glyphs.get(ch)
+        if g is None:
+            continue
+        strokes, advance = g
+        for stroke in strokes:
+            pts = [(pen + x, y) for x, y in stroke]
+            segs.extend(zip(pts, pts[1:]))
+        pen += advance
+    return tuple(segs)
 
 
 def _cap_height() -> float:

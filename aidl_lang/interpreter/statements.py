@@ -176,11 +176,10 @@ class Statements:
         return out
 
     def _eval_override(self, name: str, text: str, fctx: FileCtx):
-        from ..parser import parse_expression
-        from lark.exceptions import LarkError
+        from ..parser import ParseError, parse_expression
         try:
             node = parse_expression(text, "<--set>", self.sink)
-        except LarkError:
+        except ParseError:
             raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
                             None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
         if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
