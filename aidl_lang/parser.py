@@ -40,9 +40,64 @@ TOKEN_NAMES = {
 }
 
 
+_STATEMENT_START = frozenset(("_NL", "SEMICOLON", "LBRACE", "RBRACE"))
+_THICKNESS_NEXT = frozenset(("NUMBER", "NAME", "ADD_OP"))
+_BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
+_OPEN = frozenset(("LPAR", "LSQB"))
+_CLOSE = frozenset(("RPAR", "RSQB"))
+_ELSE = frozenset(("ELSE", "ELIF"))
+
+
+def _postlex(tokens: list, complete: bool = True) -> list:
+    """The post-lexer, on the token list (``complete=False``: the lexer stopped at an error
+    after these tokens, so what the streaming post-lexer would still hold back -- a trailing
+    newline or ``thickness`` -- is not passed on):
+
+    - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
+      the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
+    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
+    - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line)."""
+    out = []
+    push = out.append
+    depth = 0
+    pending = None          # a newline held back: dropped before else/elif, one per run
+    prev_type = None        # the type of the last token seen (after retyping)
+    n = len(tokens)
+    for k in range(n):
+        tok = tokens[k]
+        t = tok.type
+        if t == "NAME" and tok == "thickness" and (k == 0 or tokens[k - 1].type in _STATEMENT_START):
+            if k + 1 == n and not complete:
+                break                          # still held when the lexer failed
+            if k + 1 < n and tokens[k + 1].type in _THICKNESS_NEXT:
+                tok = Token.new_borrow_pos("THICKNESS", str(tok), tok)
+                t = "THICKNESS"
+        if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
+            push(Token.new_borrow_pos("_NL", "\n", prev))
+        prev, prev_type = tok, t
+        if t == "_NL":
+            if depth == 0 and pending is None:
+                pending = tok
+            continue
+        if pending is not None:
+            if t not in _ELSE:
+                push(pending)
+            pending = None
+        if t in _OPEN:
+            depth += 1
+        elif t in _CLOSE:
+            if depth:
+                depth -= 1
+        push(tok)
+    if pending is not None and complete:
+        push(pending)
+    return out
+
+
 class _PostLex:
-    """Drop ``_NL`` inside () and [] and before ``else``/``elif``; collapse repeats; end a
-    statement after a closing ``}`` even without a newline."""
+    """:func:`_postlex` as a streaming Lark post-lexer (``Lark(..., postlex=_PostLex())``): the
+    reference the parser's list version is tested against (tests/test_parse_table.py), for
+    tools that run Lark's own parser over the grammar."""
 
     always_accept = ("_NL",)
 
@@ -57,7 +112,7 @@ class _PostLex:
             if (prev is not None and prev.type == "RBRACE" and depth == 0 and pending is None
                     and tok.type not in ("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF")):
                 # `} stmt` on one line: a block ends a statement
-                yield Token.new_borrow_pos("_NL", "\n", prev)
+                yield type(prev).new_borrow_pos("_NL", "\n", prev)
             prev = tok
             if tok.type == "_NL":
                 if depth == 0 and pending is None:
@@ -77,14 +132,14 @@ class _PostLex:
 
 
 def _retype_thickness(stream):
-    """``thickness`` at the start of a statement and followed by a number, a name or a sign is the
-    ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME."""
+    """Streaming: ``thickness`` at the start of a statement and followed by a number, a name or
+    a sign is the ``thickness 3 mm`` statement (THICKNESS); anywhere else an ordinary NAME."""
     prev = None
     held = None
     for tok in stream:
         if held is not None:
             if tok.type in ("NUMBER", "NAME", "ADD_OP"):
-                held = Token.new_borrow_pos("THICKNESS", str(held), held)
+                held = type(held).new_borrow_pos("THICKNESS", str(held), held)
             yield held
             held = None
         if (tok.type == "NAME" and str(tok) == "thickness"
@@ -99,17 +154,23 @@ def _retype_thickness(stream):
 
 
 class Token(str):
-    """A token from the lexer: its text (the ``str`` value) and where it is, with the fields of
-    Lark's ``Token``: ``type`` (the terminal's name), ``start_pos`` / ``end_pos`` (0-based
-    offsets), ``line`` / ``column`` and ``end_line`` / ``end_column`` (1-based)."""
+    """A token from the lexer: its text (the ``str`` value), ``type`` (the terminal's name) and
+    ``pos`` = ``(line, column, start_pos, end_line, end_column, end_pos)`` (lines and columns
+    1-based, offsets 0-based), also readable by the names of Lark's ``Token`` fields."""
 
     def __new__(cls, type, value, start_pos=None, line=None, column=None, end_line=None,
                 end_column=None, end_pos=None):
         t = str.__new__(cls, value)
         t.type = type
-        t.start_pos, t.line, t.column = start_pos, line, column
-        t.end_line, t.end_column, t.end_pos = end_line, end_column, end_pos
+        t.pos = (line, column, start_pos, end_line, end_column, end_pos)
         return t
+
+    line = property(lambda self: self.pos[0])
+    column = property(lambda self: self.pos[1])
+    start_pos = property(lambda self: self.pos[2])
+    end_line = property(lambda self: self.pos[3])
+    end_column = property(lambda self: self.pos[4])
+    end_pos = property(lambda self: self.pos[5])
 
     @property
     def value(self) -> str:
@@ -118,8 +179,10 @@ class Token(str):
     @classmethod
     def new_borrow_pos(cls, type_: str, value, borrow: "Token") -> "Token":
         """A token of another type and text at ``borrow``'s place."""
-        return cls(type_, value, borrow.start_pos, borrow.line, borrow.column, borrow.end_line,
-                   borrow.end_column, borrow.end_pos)
+        t = str.__new__(cls, value)
+        t.type = type_
+        t.pos = borrow.pos
+        return t
 
 
 class ParseError(Exception):
@@ -218,6 +281,7 @@ class _Tables:
         self.states = [{sym: (a if a >= 0 else reductions[-a - 1]) for sym, a in row.items()}
                        for row in ps["states"]]
         self.start, self.end = ps["start"], ps["end"]
+        self.units: dict = {}           # see _unit_chain
 
 
 def _reduction(origin: str, size: int, name: str, include: list, tail: int, expand1: bool,
@@ -233,7 +297,7 @@ def _reduction(origin: str, size: int, name: str, include: list, tail: int, expa
             if not expand1:
                 raise RuntimeError(f"grammar rule `{name}` has no AST builder")
             build = _no_builder                # a `?rule` passes its one child through
-    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build))
+    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build, size))
 
 
 def _tables_data() -> dict:
@@ -342,15 +406,19 @@ def _lark_version() -> str:
     return m.group(1) if m else "?"
 
 
-def _lex(text: str):
+def _lex(text: str) -> tuple[list, "UnexpectedCharacters | None"]:
     """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
-    same positions), as one loop over the compiled alternations of :class:`_Tables`.  Raises
-    :class:`UnexpectedCharacters` where no terminal matches."""
+    same positions), as one loop over the compiled alternations of :class:`_Tables`: the
+    tokens, and the :class:`UnexpectedCharacters` where no terminal matched (the tokens then
+    stop there), else ``None``."""
     tb = _tables()
     mres = tb.mres
     single = mres[0] if len(mres) == 1 else None
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
     pos, line, line_start, end = 0, 1, 0, len(text)
+    tokens: list = []
+    push = tokens.append
+    new_str = str.__new__
     while pos < end:
         m = single.match(text, pos) if single is not None else None
         if m is None:
@@ -359,9 +427,9 @@ def _lex(text: str):
                 if m:
                     break
             else:
-                raise UnexpectedCharacters(text, pos, line, pos - line_start + 1)
+                return tokens, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
         value, type_ = m.group(0), m.lastgroup
-        npos = pos + len(value)
+        npos = m.end()
         if type_ in ignore:
             if type_ in newline:
                 k = value.count("\n")
@@ -382,25 +450,33 @@ def _lex(text: str):
                 if km:
                     type_ = km.lastgroup
                     break
-        yield Token(type_, value, pos, start_line, column, line, npos - line_start + 1, npos)
+        tok = new_str(Token, value)
+        tok.type = type_
+        tok.pos = (start_line, column, pos, line, npos - line_start + 1, npos)
+        push(tok)
         pos = npos
+    return tokens, None
 
 
 def _run_lalr(text: str, start: str):
-    """Lex ``text`` (:func:`_lex` and the post-lexer) and run the LALR(1) table over it with the
-    AST callbacks: the loop of ``lark.parsers.lalr_parser_state.ParserState.feed_token``
-    without its per-step assertions and rule-object look-ups.  Raises
-    :class:`UnexpectedToken` / :class:`UnexpectedCharacters`."""
+    """Lex ``text`` (:func:`_lex`, :func:`_postlex`) and run the LALR(1) table over the tokens
+    with the AST callbacks: the loop of Lark's ``ParserState.feed_token`` without its per-step
+    assertions and rule-object look-ups.  Raises :class:`UnexpectedToken` /
+    :class:`UnexpectedCharacters` (a lexer error only once the parser has taken every token
+    before it, as a streaming lexer would)."""
     tb = _tables()
     states, start_states, end_states = tb.states, tb.start, tb.end
+    raw, lex_error = _lex(text)
+    tokens = _postlex(raw, lex_error is None)
     state_stack = [start_states[start]]
     value_stack: list = []
     push_state, push_value = state_stack.append, value_stack.append
-    token = None
-    for token in _PostLex().process(_lex(text)):
+    units = tb.units
+    for token in tokens:
+        ttype = token.type
         while True:
             try:
-                act = states[state_stack[-1]][token.type]
+                act = states[state_stack[-1]][ttype]
             except KeyError:
                 raise UnexpectedToken(token, _expected(states[state_stack[-1]]))
             if type(act) is int:
@@ -408,8 +484,12 @@ def _run_lalr(text: str, start: str):
                 push_value(token)
                 break
             size, origin, cb = act
-            if size is None:                 # unit rule: same value, new state
-                state_stack[-1] = states[state_stack[-2]][origin]
+            if size is None:                 # unit rules: same value, new state
+                key = (state_stack[-2], state_stack[-1], ttype)
+                top = units.get(key)
+                if top is None:
+                    top = units[key] = _unit_chain(states, state_stack[-2], origin, ttype)
+                state_stack[-1] = top
                 continue
             if size:
                 children = value_stack[-size:]
@@ -419,6 +499,9 @@ def _run_lalr(text: str, start: str):
                 children = []
             push_value(cb(children))
             push_state(states[state_stack[-1]][origin])
+    if lex_error is not None:
+        raise lex_error
+    token = tokens[-1] if tokens else None
     end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1, 1, 1, 0)
     end_state = end_states[start]
     while True:
@@ -442,6 +525,20 @@ def _run_lalr(text: str, start: str):
             push_state(states[state_stack[-1]][origin])
         if state_stack[-1] == end_state:
             return value_stack[-1]
+
+
+def _unit_chain(states: list, below: int, origin: str, ttype: str) -> int:
+    """The state a run of unit reductions (``?sum: product``...) ends in, looking at a
+    ``ttype`` token with ``below`` under the top of the stack: each one swaps the top for
+    ``below``'s goto on the rule's name, until the action on ``ttype`` is not a unit
+    reduction.  Remembered per ``(below, top, ttype)`` in :attr:`_Tables.units`, since the
+    expression grammar's precedence levels make most reductions unit ones."""
+    while True:
+        top = states[below][origin]
+        act = states[top].get(ttype)
+        if type(act) is not tuple or act[0] is not None:
+            return top
+        origin = act[1]
 
 
 def _expected(row: dict) -> set:
@@ -533,6 +630,7 @@ def mask_comments(src: str, record: list | None = None) -> str:
 _SPECIAL = frozenset("\"'#/\n")
 _PLAIN = re.compile(r"[^\"'#/\n]+")
 _BRACKETS = re.compile(r"[()\[\]]")
+_ANY_BRACKET = re.compile(r"[()\[\]{}]")
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
 _STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
@@ -611,20 +709,19 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         source = source.replace("\x00", " ")
     slashes: list = []
     text = mask_comments(source, slashes)
-    depth = maxdepth = 0
-    for i, ch in enumerate(text):
-        if ch in "([{":
+    depth = 0
+    for m in _ANY_BRACKET.finditer(text):
+        if m.group() in "([{":
             depth += 1
-            if depth > maxdepth:
-                maxdepth = depth
-                if depth > MAX_NESTING:
-                    line = text.count("\n", 0, i) + 1
-                    col = i - text.rfind("\n", 0, i)
-                    sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
-                               Span(path, line, col, line, col + 1, i, i + 1),
-                               "split the expression into named constants")
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-        elif ch in ")]}":
+            if depth > MAX_NESTING:
+                i = m.start()
+                line = text.count("\n", 0, i) + 1
+                col = i - text.rfind("\n", 0, i)
+                sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
+                           Span(path, line, col, line, col + 1, i, i + 1),
+                           "split the expression into named constants")
+                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+        else:
             depth -= 1
     _tables()
     builder = _Builder(path, sink)
@@ -721,10 +818,10 @@ class _BuildError(ParseError):
 def _span(path: str, x) -> Span:
     """A :class:`Span` from a token, a position tuple ``(line, col, start, end_line, end_col,
     end)`` (a reduction's extent) or ``None`` (a reduction that covers no token)."""
-    if isinstance(x, Token):
-        return Span(path, x.line, x.column, x.end_line, x.end_column, x.start_pos, x.end_pos)
     if x is None:
         return Span(path, 1, 1, 1, 1)
+    if type(x) is not tuple:
+        x = x.pos                                   # a token
     return Span(path, x[0], x[1], x[3], x[4], x[2], x[5])
 
 
@@ -757,39 +854,45 @@ def _no_builder(builder, meta, items):
     raise RuntimeError("a `?rule` without an AST builder matched more than one item")
 
 
-def _make_callback(include, tail, expand1, build):
+def _make_callback(include, tail, expand1, build, size: int):
+    """The reduction callback of one rule (see :func:`_tables_data` for ``include`` and
+    ``tail``): the node's extent runs from the first to the last child that has one (tokens
+    and reductions both carry ``pos``)."""
+    simple = not tail and all(not splice and not nn for _i, splice, nn in include)
+    picks = tuple(i for i, _s, _n in include)
+    whole = simple and picks == tuple(range(size))        # every child, in order
+
     def reduce(children):
-        first = last = None
         for c in children:
-            if type(c) is _R:
-                if c.pos is not None:
-                    first = c.pos
-                    break
-            else:
-                first = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
-                break
-        for c in reversed(children):
-            if type(c) is _R:
-                if c.pos is not None:
+            first = c.pos
+            if first is not None:
+                for c in reversed(children):
                     last = c.pos
-                    break
-            else:
-                last = (c.line, c.column, c.start_pos, c.end_line, c.end_column, c.end_pos)
+                    if last is not None:
+                        break
+                pos = first if first is last else (first[0], first[1], first[2], last[3],
+                                                   last[4], last[5])
                 break
-        pos = None if first is None else (first[0], first[1], first[2], last[3], last[4], last[5])
-        items = []
-        for i, splice, nn in include:
-            if nn:
-                items += [None] * nn
-            c = children[i]
-            if splice:
-                items += c.v
-            elif type(c) is _R:
-                items.append(c.v)
-            else:
-                items.append(c)
-        if tail:
-            items += [None] * tail
+        else:
+            pos = None
+        if whole:
+            items = [c.v if type(c) is _R else c for c in children]
+        elif simple:
+            items = [c.v if type(c) is _R else c for c in map(children.__getitem__, picks)]
+        else:
+            items = []
+            for i, splice, nn in include:
+                if nn:
+                    items += [None] * nn
+                c = children[i]
+                if splice:
+                    items += c.v
+                elif type(c) is _R:
+                    items.append(c.v)
+                else:
+                    items.append(c)
+            if tail:
+                items += [None] * tail
         if expand1 and len(items) == 1:
             if type(children[include[0][0]]) is not _R:
                 return children[include[0][0]]      # a token passed through as it is
@@ -809,7 +912,11 @@ class _Builder:
         self.failed: list = []       # f-string errors (code, message, span) of this attempt
 
     def s(self, x) -> Span:
-        return _span(self.path, x)
+        if x is None:
+            return Span(self.path, 1, 1, 1, 1)
+        if type(x) is not tuple:
+            x = x.pos                                   # a token
+        return Span(self.path, x[0], x[1], x[3], x[4], x[2], x[5])
 
     # statements
     def start(self, meta, items):

@@ -104,14 +104,9 @@ def run_deep(fn):
 
 
 def _deep_span(ex, path: str, source: str):
-    """The span of the tree node the parser was building when it ran out of stack, else the
-    line with the most operators (the deepest expression, as far as one can tell)."""
+    """The line with the most operators (the deepest expression, as far as one can tell)."""
     import re
     from .diagnostics import Span
-    meta = getattr(getattr(ex, "obj", None), "meta", None)
-    if meta is not None and not getattr(meta, "empty", True):
-        return Span(path, meta.line, meta.column, meta.end_line, meta.end_column,
-                    meta.start_pos, meta.end_pos)
     best, best_score, start = None, -1, 0
     for no, line in enumerate(source.split("\n"), 1):
         score = len(re.findall(r"\*\*|\bif\b|\bnot\b|\band\b|\bor\b|[-+*/(\[]", line))

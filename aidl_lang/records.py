@@ -98,8 +98,12 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
             ns[f"_d_{name}"] = default
             params.append(f"{name}=_d_{name}")
             value = name
-        body.append(f"  _setattr(self, {name!r}, {value})" if frozen
-                    else f"  self.{name} = {value}")
+        if frozen and slots:                   # the slot's own setter (bound below)
+            body.append(f"  _s_{name}(self, {value})")
+        elif frozen:
+            body.append(f"  _setattr(self, {name!r}, {value})")
+        else:
+            body.append(f"  self.{name} = {value}")
     src = [f"def __init__(self, {', '.join(params)}):"] + (body or ["  pass"])
     shown = ", ".join(f"{n}={{self.{n}!r}}" for n in field_names)
     src.append(f"def __repr__(self):\n  return f'{{self.__class__.__qualname__}}({shown})'")
@@ -137,6 +141,8 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
         if frozen:
             cls.__getstate__ = _frozen_getstate
             cls.__setstate__ = _frozen_setstate
+            for n in field_names:              # a frozen record's __init__ sets its slots
+                ns[f"_s_{n}"] = _slot_setter(cls, n)
     ns["_cls"] = cls
     cls.__record_fields__ = field_names
     cls.__record_defaults__ = {n: d for n, d in names.items() if d is not _MISSING}
@@ -162,6 +168,16 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
         if isinstance(d, _Factory) and n in cls.__dict__ and not slots:
             delattr(cls, n)
     return cls
+
+
+def _slot_setter(cls, name: str):
+    """The ``__set__`` of the slot descriptor for ``name`` (on ``cls`` or a base): setting it
+    skips the frozen ``__setattr__`` (twice as fast as ``object.__setattr__``)."""
+    for c in cls.__mro__:
+        d = c.__dict__.get(name)
+        if d is not None and hasattr(d, "__set__"):
+            return d.__set__
+    return lambda self, value, _n=name: object.__setattr__(self, _n, value)
 
 
 def _frozen_getstate(self):

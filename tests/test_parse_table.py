@@ -1,0 +1,131 @@
+"""The parser runs its own copy of Lark's LALR table and lexer patterns (issue 12, cold start
+without importing Lark).  Law: on every bundled program and on random edits of them it accepts
+exactly what Lark's own parser accepts, fails at the same place, and lexes the same tokens."""
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from lark import Lark
+from lark.exceptions import UnexpectedCharacters as LarkBadChar
+from lark.exceptions import UnexpectedInput, UnexpectedToken as LarkBadToken
+
+from aidl_lang import parser as P
+
+ROOT = Path(__file__).resolve().parent.parent
+PROGRAMS = sorted([*ROOT.glob("examples/*.aidl"), *ROOT.glob("stdlib/**/*.aidl"),
+                   *ROOT.glob("tests/programs/*.aidl")])
+TEXTS = [P.mask_comments(p.read_text()) for p in PROGRAMS]
+
+
+@pytest.fixture(scope="module")
+def lark_parser():
+    return Lark(P.GRAMMAR.read_text(), postlex=P._PostLex(), **P._LARK_OPTIONS)
+
+
+def _outcome_lark(lp, text):
+    try:
+        lp.parse(text, start="start")
+        return "ok"
+    except LarkBadToken as e:
+        return ("token", len(text) if e.token.type == "$END" else e.token.start_pos)
+    except LarkBadChar as e:
+        return ("char", e.pos_in_stream)
+    except UnexpectedInput as e:                     # pragma: no cover - other Lark errors
+        return ("other", type(e).__name__)
+
+
+def _outcome_ours(text):
+    from aidl_lang.diagnostics import DiagnosticSink
+    P._STATE.builder = P._Builder("edit.aidl", DiagnosticSink())
+    try:
+        P._run_lalr(text, "start")
+        return "ok"
+    except P.UnexpectedToken as e:
+        return ("token", len(text) if e.token.type == "$END" else e.token.start_pos)
+    except P.UnexpectedCharacters as e:
+        return ("char", e.pos_in_stream)
+    except P._BuildError:
+        return "ok"                                  # an f-string's inside: checked later
+
+
+def test_there_are_programs():
+    assert len(PROGRAMS) >= 15
+
+
+@pytest.mark.parametrize("i", range(len(PROGRAMS)), ids=[p.name for p in PROGRAMS])
+def test_same_tokens_as_larks_lexer(lark_parser, i):
+    """Lark's ``lex`` runs its lexer and then the post-lexer."""
+    text = TEXTS[i]
+    theirs = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
+              for t in lark_parser.lex(text, dont_ignore=False)]
+    tokens, error = P._lex(text)
+    assert error is None
+    ours = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
+            for t in P._postlex(tokens)]
+    assert ours == theirs
+
+
+_EDITS = st.tuples(st.integers(0, len(PROGRAMS) - 1), st.floats(0, 1),
+                   st.sampled_from(["delete", "insert", "duplicate", "swap"]),
+                   st.sampled_from(list("(){}[]=,:;.\"'#/\n@$ +-*x") + ["if", "else", "thickness",
+                                                                        "solid", " mm", "\n\n"]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(_EDITS)
+def test_accepts_and_fails_where_lark_does(lark_parser, edit):
+    k, where, op, piece = edit
+    text = TEXTS[k]
+    i = int(where * len(text))
+    if op == "delete":
+        text = text[:i] + text[i + 1:]
+    elif op == "insert":
+        text = text[:i] + piece + text[i:]
+    elif op == "duplicate":
+        text = text[:i] + text[i:i + 30] + text[i:]
+    else:
+        j = min(len(text), i + 7)
+        text = text[:i] + text[j:i + 14] + text[i:j] + text[i + 14:]
+    assert _outcome_ours(text) == _outcome_lark(lark_parser, text)
+
+
+SNIPPETS = [
+    "solid s {\n  if w > 3 {\n    a = 1\n  }\n  else {\n    a = 2\n  }\n}\n",
+    "solid s {\n  if w > 3 {\n  }\n\n  elif w > 2 {\n  }\n}\n",
+    "thickness 3 mm\nsolid s { thickness -2 mm }\n", "thickness = 3\nx = thickness\n",
+    "solid a { } solid b { }\n", "x = (1,\n 2)\ny = [1,\n\n 2]\n", "x = 1;;\n\n\ny = 2\n",
+    "thickness\n", "x = \n", "solid s {\n thickness @", "x = 1\n\n@", "} x\n",
+]
+
+
+@pytest.mark.parametrize("text", SNIPPETS)
+def test_post_lexer_rules_as_lark_runs_them(lark_parser, text):
+    assert _outcome_ours(text) == _outcome_lark(lark_parser, text)
+    tokens, error = P._lex(text)
+    if error is None:
+        theirs = [(t.type, str(t), t.start_pos) for t in lark_parser.lex(text)]
+        assert [(t.type, str(t), t.start_pos) for t in P._postlex(tokens)] == theirs
+
+
+def test_every_bundled_program_parses_as_lark_parses_it(lark_parser):
+    for text in TEXTS:
+        assert _outcome_ours(text) == _outcome_lark(lark_parser, text) == "ok"
+
+
+def test_a_freshly_built_table_parses_as_the_cached_one():
+    """Lark numbers its states differently from run to run; what the table parses does not
+    change (the cache's key covers the grammar, the options and Lark's version)."""
+    import json
+    from aidl_lang.diagnostics import DiagnosticSink
+    cached = P._tables()
+    fresh = P._Tables(json.loads(json.dumps(P._tables_data())))
+    outs = []
+    for tables in (cached, fresh):
+        P._TABLES = tables
+        try:
+            outs.append([repr(P.parse(p.read_text(), p.name, DiagnosticSink()))
+                         for p in PROGRAMS])
+        finally:
+            P._TABLES = cached
+    assert outs[0] == outs[1]
