@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import os
 import stat
-import tempfile
 from pathlib import Path
 
 
@@ -54,6 +53,7 @@ def read_owned(path: Path) -> str | None:
 def write_atomic(path: Path, text: str) -> bool:
     """Write ``text`` to ``path`` through a temporary file beside it (mode 0600), renamed over
     it; False (and nothing left behind) when that fails."""
+    import tempfile
     try:
         fd, tmp = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=path.parent)
     except OSError:

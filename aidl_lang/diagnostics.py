@@ -7,9 +7,8 @@ cannot go on raises :class:`Abort` after recording why.
 """
 from __future__ import annotations
 
-import difflib
 from .records import dataclass, field
-from typing import Iterable
+from collections.abc import Iterable
 
 
 @dataclass(frozen=True, slots=True)
@@ -132,6 +131,7 @@ class DiagnosticSink:
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:
     """Nearest known names to ``name`` (case-insensitive similarity, then difflib ratio)."""
+    import difflib
     cands = sorted(set(c for c in candidates if c and not c.startswith("_")))
     lower = {c.lower(): c for c in cands}
     out: list[str] = []

@@ -16,6 +16,11 @@ single runs):
 (d) the stages on generated hierarchical models of 10 to 500 structures: parse, check,
     interpret, solve (hierarchical), in ms, with ms per KB / per structure and the log-log
     growth exponent of each stage.
+
+Children run with bytecode caching on (``PYTHONDONTWRITEBYTECODE`` removed, ``aidl_lang``
+compiled first), as an installed package runs.  ``--instructions`` adds, for (a), the
+instructions a cold ``aidl check`` executes, counted by ``valgrind --tool=callgrind`` (the same
+count whatever else the machine is doing), next to the interpreter's and NumPy's own floor.
 """
 from __future__ import annotations
 
@@ -40,10 +45,21 @@ def _median(xs):
     return statistics.median(xs)
 
 
+CHILD_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+CHILD_ENV.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+
+def _compile_bytecode() -> None:
+    """Write ``aidl_lang``'s bytecode, as installing the package does."""
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "aidl_lang")],
+                   env=CHILD_ENV, stdout=subprocess.DEVNULL, check=False)
+
+
 def _run_child(argv: list[str]) -> tuple[float, float, int]:
     """Wall seconds, CPU seconds (user + system) and exit status of one child process."""
     t0 = time.perf_counter()
-    p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                         env=CHILD_ENV)
     _, status, ru = os.wait4(p.pid, 0)
     wall = time.perf_counter() - t0
     p.returncode = os.waitstatus_to_exitcode(status)
@@ -79,8 +95,33 @@ def cold_start(repeat: int, all_examples: bool) -> None:
              "with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):\n"
              f"    main(['check', {str(ROOT / 'examples/telephone.aidl')!r}])\n"
              f"print(' '.join(m for m in {HEAVY!r} if m in sys.modules))")
-    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True).stdout
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         env=CHILD_ENV).stdout
     print("heavy modules imported by `aidl check telephone.aidl`:", out.strip() or "(none)")
+
+
+def _instructions(argv: list[str]) -> float | None:
+    """Millions of instructions one run of ``argv`` executes (callgrind), or None."""
+    import re
+    import shutil
+    if shutil.which("valgrind") is None:
+        return None
+    r = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", *argv],
+                       env=CHILD_ENV, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                       text=True)
+    m = re.search(r"Collected : (\d+)", r.stderr)
+    return int(m.group(1)) / 1e6 if m else None
+
+
+def instruction_counts() -> None:
+    print("\n(a2) instructions of one cold run (callgrind, millions; independent of load)")
+    cases = [("python -c pass", [sys.executable, "-c", "pass"]),
+             ("python -c 'import numpy'", [sys.executable, "-c", "import numpy"]),
+             ("aidl check telephone.aidl",
+              [sys.executable, "-m", "aidl_lang.cli", "check", str(ROOT / "examples/telephone.aidl")])]
+    for label, argv in cases:
+        n = _instructions(argv)
+        print(f"  {label:<32}" + (f"{n:>10.1f}" if n is not None else "   (no valgrind)"))
 
 
 def import_times(repeat: int) -> None:
@@ -92,7 +133,8 @@ def import_times(repeat: int) -> None:
                 "print(time.perf_counter() - t)")
         ts = []
         for _ in range(repeat):
-            r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+            r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                               env=CHILD_ENV)
             if r.returncode:
                 break
             ts.append(float(r.stdout))
@@ -184,9 +226,14 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=None, help="runs per measurement")
     ap.add_argument("--all-examples", action="store_true",
                     help="cold-render every bundled example, not only the telephone")
+    ap.add_argument("--instructions", action="store_true",
+                    help="also count a cold check's instructions with valgrind (slow: ~30 s)")
     args = ap.parse_args()
     rep = args.repeat or (3 if args.quick else 11)
+    _compile_bytecode()
     cold_start(rep, args.all_examples)
+    if args.instructions:
+        instruction_counts()
     import_times(max(3, rep // 2))
     parse_throughput(rep)
     stages([10, 50] if args.quick else [10, 50, 200, 500], max(3, rep // 3))

@@ -14,7 +14,6 @@ import argparse
 import json
 import os
 import sys
-import tempfile
 from pathlib import Path
 
 from ..diagnostics import Diagnostic, DiagnosticSink, render_text
@@ -270,6 +269,7 @@ def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
                 mask = os.umask(0)
                 os.umask(mask)
                 mode = 0o666 & ~mask
+            import tempfile
             fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
                                        dir=str(target.parent))
             staged.append((tmp, target))
