@@ -886,7 +886,10 @@ def _make_callback(include, tail, expand1, build, size: int):
                     items += [None] * nn
                 c = children[i]
                 if splice:
-                    items += c.v
+                    if i == 0 and not items:
+                        items = c.v         # a left-recursive list grows in place (no copy:
+                    else:                   # the child's list is consumed here)
+                        items += c.v
                 elif type(c) is _R:
                     items.append(c.v)
                 else:
