@@ -9,7 +9,7 @@ validity rules can be checked where the value is used.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import dataclass
 
 from .expr import Expr, Lin, as_const, lift
 from .model import Geometry, Point, Structure

@@ -23,7 +23,7 @@ check does not pay SciPy's import.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from ..records import dataclass, field
 
 import numpy as np
 
