@@ -5,11 +5,15 @@ before ``else``, and statement-level error recovery: each syntax error becomes a
 diagnostic listing the expected tokens, the offending logical line is blanked (its braces kept)
 and the file is parsed again, so one run reports several errors.
 
+Lark is the parser generator: :func:`_tables_data` builds Lark's LALR(1) table and basic
+lexer and keeps them as plain data, cached as JSON (never a pickle) in the user's own cache
+folder, owner-only (issue 15), see :func:`_tables`; a run reads that and never imports Lark.
+
 Speed (issue 12, docs/performance.md): the AST node of each rule is built inside the LALR
 reduction (no parse tree is built and walked), its span taken from the first and last token it
-covers (what Lark's ``propagate_positions`` would give); Lark's table and lexer scanner are run
-by one loop each.  The parse table is cached as JSON (never a pickle) in the user's own cache
-folder, owner-only (issue 15), see :func:`cached_lark`.
+covers (what Lark's ``propagate_positions`` would give); the lexer, the post-lexer and the
+LALR loop each make one pass over a token list.  tests/test_parse_table.py checks the result
+against Lark's own parser.
 """
 from __future__ import annotations
 
@@ -208,51 +212,7 @@ class UnexpectedCharacters(ParseError):
 
 
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
-_CACHE_FORMAT = 1
 _TABLES_FORMAT = 2
-
-
-def cached_lark(postlex=None, **options):
-    """A Lark LALR parser over ``grammar/aidl.lark`` whose parse table is cached as JSON in the
-    user's cache folder (:func:`aidl_lang.cache.cache_dir`; never pickled: a cache file cannot
-    run code), keyed by the grammar, the options and Lark's version; rebuilt and rewritten
-    (atomically, mode 0600) when missing, stale, unreadable or not owner-only.  Used by
-    ``aidl fmt``'s lexer; :func:`parse` reads the smaller table of :func:`_tables`."""
-    import hashlib
-    import json
-
-    import lark
-    from lark import Lark
-    from lark.grammar import Rule
-    from lark.lexer import TerminalDef
-
-    grammar = GRAMMAR.read_text()
-    key = hashlib.sha256(repr((_CACHE_FORMAT, lark.__version__, grammar, sorted(options.items()),
-                               postlex is not None)).encode()).hexdigest()
-    d = cache_dir()
-    path = d / f"parser-{key[:24]}.json" if d is not None else None
-    text = read_owned(path) if path is not None else None
-    if text is not None:
-        try:
-            blob = json.loads(text, object_hook=_int_keys)
-            if blob.get("key") == key:
-                return Lark._load_from_dict(blob["data"], blob["memo"], postlex=postlex)
-        except Exception:               # a stale or damaged cache: rebuild it below
-            pass
-    lp = Lark(grammar, postlex=postlex, **options)
-    if path is not None:
-        data, memo = lp.memo_serialize([TerminalDef, Rule])
-        data["options"] = {k: v for k, v in data["options"].items() if k != "postlex"}
-        try:
-            write_atomic(path, json.dumps({"key": key, "data": data, "memo": memo}))
-        except (TypeError, ValueError):
-            pass
-    return lp
-
-
-def _int_keys(d: dict) -> dict:
-    """JSON object keys back to ints where Lark used ints (memo ids, parser states)."""
-    return {int(k) if k.isdigit() else k: v for k, v in d.items()}
 
 
 # ----------------------------------------------------------------- the parse table
@@ -406,11 +366,12 @@ def _lark_version() -> str:
     return m.group(1) if m else "?"
 
 
-def _lex(text: str) -> tuple[list, "UnexpectedCharacters | None"]:
+def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharacters | None"]:
     """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
     same positions), as one loop over the compiled alternations of :class:`_Tables`: the
     tokens, and the :class:`UnexpectedCharacters` where no terminal matched (the tokens then
-    stop there), else ``None``."""
+    stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
+    parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
     tb = _tables()
     mres = tb.mres
     single = mres[0] if len(mres) == 1 else None
@@ -430,7 +391,7 @@ def _lex(text: str) -> tuple[list, "UnexpectedCharacters | None"]:
                 return tokens, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
         value, type_ = m.group(0), m.lastgroup
         npos = m.end()
-        if type_ in ignore:
+        if type_ in ignore and not keep_ignored:
             if type_ in newline:
                 k = value.count("\n")
                 if k:

@@ -1,7 +1,8 @@
 """``aidl fmt``: the canonical layout of an AIDL file.
 
-The formatter works on the token stream of ``grammar/aidl.lark`` (Lark's basic lexer, with
-comments and whitespace kept) rather than on the AST, so every comment survives where it was:
+The formatter works on the token stream of ``grammar/aidl.lark`` (the parser's copy of
+Lark's basic lexer, :func:`aidl_lang.parser._lex`, with comments and whitespace kept) rather
+than on the AST, so every comment survives where it was:
 
 * one statement per line, blocks indented by 4 spaces, ``{`` at the end of its line and ``}``
   on its own line (``} else {`` joined); ``;`` separators become line breaks;
@@ -23,23 +24,21 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from lark import Lark
-
 from .. import ast as A
 from ..diagnostics import DiagnosticSink
-from ..parser import GRAMMAR, cached_lark, mask_comments, parse
+from ..parser import _lex, mask_comments, parse
 
 INDENT = 4
 
-_LEXER: Lark | None = None
 
 
-def _lexer() -> Lark:
-    """A Lark instance over the same grammar, without the post-lexer (it drops newlines)."""
-    global _LEXER
-    if _LEXER is None:
-        _LEXER = cached_lark(parser="lalr", lexer="basic")
-    return _LEXER
+def _tokens(masked: str) -> list:
+    """Every token of ``masked`` (comments masked as ``#``), whitespace and comments included,
+    without the post-lexer (it drops newlines); the text has parsed, so it lexes."""
+    tokens, error = _lex(masked, keep_ignored=True)
+    if error is not None:
+        raise error
+    return tokens
 
 
 class FormatError(Exception):
@@ -85,7 +84,7 @@ def _number(text: str) -> str:
 def _items(source: str) -> list[_Item]:
     masked = mask_comments(source)
     out = []
-    for tok in _lexer().lex(masked, dont_ignore=True):
+    for tok in _tokens(masked):
         if tok.type in ("WS", "_NL"):
             continue
         s, e = tok.start_pos, tok.end_pos
@@ -280,7 +279,7 @@ def comments(source: str) -> list[str]:
     """The comments of ``source`` in order, as written (trailing spaces dropped)."""
     masked = mask_comments(source)
     out = []
-    for tok in _lexer().lex(masked, dont_ignore=True):
+    for tok in _tokens(masked):
         if tok.type in ("COMMENT", "BLOCK_COMMENT"):
             out.append(source[tok.start_pos:tok.end_pos].rstrip())
     return out
