@@ -119,12 +119,32 @@ class Solver:
 
     # ------------------------------------------------------------------ helpers
     def tape(self, rows: np.ndarray) -> Tape:
+        """The compiled tape of ``rows`` (row indices), cached by row set.
+
+        The whole model is compiled once (:attr:`whole`); the tape of an increasing row set
+        is cut out of it by array selection (:meth:`.Tape.subset`), so no expression is walked
+        twice however many attempts share its row (a parent's translation attempts repeat its
+        children's rows)."""
         key = rows.tobytes()
         t = self._tapes.get(key)
         if t is None:
-            t = Tape([self.rows.exprs[r] for r in rows], self.rows.n_params)
+            whole = self.whole
+            if len(rows) == whole.n_rows:
+                t = whole                       # rows of an attempt are distinct: all of them
+            elif len(rows) < 2 or bool(np.all(rows[1:] > rows[:-1])):
+                t = whole.subset(rows)
+            else:
+                t = Tape([self.rows.exprs[r] for r in rows], self.rows.n_params)
             self._tapes[key] = t
             self.compiles += 1
+        return t
+
+    @property
+    def whole(self) -> Tape:
+        """The tape of every row of the model, compiled on first use."""
+        t = self.__dict__.get("_whole")
+        if t is None:
+            t = self._whole = Tape(self.rows.exprs, self.rows.n_params)
         return t
 
     def _init_slacks(self, t: Tape, rows: np.ndarray) -> None:

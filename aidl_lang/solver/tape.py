@@ -24,6 +24,7 @@ stays valid when a held dimension is edited: re-solving after an edit only rerun
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import chain
 
 import numpy as np
 
@@ -46,6 +47,28 @@ def _distinct(a: np.ndarray) -> bool:
     if len(a) <= 64:
         return len(set(a.tolist())) == len(a)
     return len(unique(a)) == len(a)
+
+
+def _lin_arrays(lins: list):
+    """COO arrays of affine expressions: ``(row, col, value)`` of every term, row by row in
+    each ``terms`` dict's order, and each expression's constant."""
+    terms = [e.terms for e in lins]
+    lens = np.fromiter(map(len, terms), np.int64, len(terms))
+    total = int(lens.sum())
+    rows = np.repeat(np.arange(len(terms), dtype=np.int64), lens)
+    cols = np.fromiter(chain.from_iterable(terms), np.int64, total)
+    vals = np.fromiter(chain.from_iterable(t.values() for t in terms), float, total)
+    const = np.fromiter((e.const for e in lins), float, len(lins))
+    return rows, cols, vals, const
+
+
+def _take(start: np.ndarray, rows: np.ndarray):
+    """Indices of the blocks ``start[r]:start[r + 1]`` for ``r`` in ``rows``, concatenated;
+    with each block's shift (new position - old) and length."""
+    s = start[rows]
+    n = start[rows + 1] - s
+    d = np.cumsum(n) - n - s
+    return np.arange(int(n.sum()), dtype=np.int64) - np.repeat(d, n), d, n
 
 
 class TapeError(ValueError):
@@ -75,31 +98,18 @@ class Tape:
     def __init__(self, exprs: list, n_params: int):
         self.n_rows = len(exprs)
         self.n_params = n_params
-        ar, ac, av, ab, arows = [], [], [], [], []          # affine rows
-        lr, lc, lv, lconst = [], [], [], []                 # leaves of nonlinear rows
-        op, a0, a1, level, root_of = [], [], [], [], []
-        leaf_node = []                                       # node index of each leaf
+        aff, arows = [], []                   # affine rows: their Lin and row
+        leaves = []                           # the Lin of every leaf node, in order
+        nodes = []                            # (op, arg0, arg1, row) of every node
+        level = []                            # depth of every node (leaves: 0)
+        leaf_node = []                        # node index of each leaf
         nl_rows, nl_roots = [], []
-
-        def node(code: int, p: int, q: int, lev: int, row: int) -> int:
-            op.append(code)
-            a0.append(p)
-            a1.append(q)
-            level.append(lev)
-            root_of.append(row)
-            return len(op) - 1
-
-        op_add, a0_add, a1_add, lev_add, root_add = (op.append, a0.append, a1.append,
-                                                      level.append, root_of.append)
+        node_add, lev_add, leaf_add = nodes.append, level.append, leaves.append
+        leaf_node_add = leaf_node.append
         binary_or_unary = {**_UNARY, **_BINARY}
         for r, e in enumerate(exprs):
             if type(e) is Lin or isinstance(e, Lin):
-                k = len(arows)
-                terms = e.terms
-                ar.extend([k] * len(terms))
-                ac.extend(terms.keys())
-                av.extend(terms.values())
-                ab.append(e.const)
+                aff.append(e)
                 arows.append(r)
                 continue
             memo: dict[int, int] = {}
@@ -111,19 +121,12 @@ class Tape:
                 if key in memo:
                     continue
                 if type(item) is Lin or isinstance(item, Lin):
-                    leaf = len(lconst)
-                    terms = item.terms
-                    lr.extend([leaf] * len(terms))
-                    lc.extend(terms.keys())
-                    lv.extend(terms.values())
-                    lconst.append(item.const)
-                    memo[key] = n = len(op)          # node(LEAF, leaf, leaf, 0, r)
-                    op_add(LEAF)
-                    a0_add(leaf)
-                    a1_add(leaf)
+                    leaf = len(leaves)
+                    leaf_add(item)
+                    memo[key] = n = len(nodes)
+                    node_add((LEAF, leaf, leaf, r))
                     lev_add(0)
-                    root_add(r)
-                    leaf_node.append(n)
+                    leaf_node_add(n)
                     continue
                 if not isinstance(item, Nl):
                     raise TapeError(f"cannot compile {type(item).__name__} into a residual")
@@ -143,7 +146,10 @@ class Tape:
                         nxt = []
                         for j in range(0, len(args) - 1, 2):
                             p, q = args[j], args[j + 1]
-                            nxt.append(node(code, p, q, max(level[p], level[q]) + 1, r))
+                            lp_, lq_ = level[p], level[q]
+                            nxt.append(len(nodes))
+                            node_add((code, p, q, r))
+                            lev_add((lp_ if lp_ > lq_ else lq_) + 1)
                         if len(args) % 2:
                             nxt.append(args[-1])
                         args = nxt
@@ -155,35 +161,34 @@ class Tape:
                     p, q = args
                 else:
                     raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
-                memo[key] = len(op)                  # node(code, p, q, ..., r)
-                op_add(code)
-                a0_add(p)
-                a1_add(q)
+                memo[key] = len(nodes)
+                node_add((code, p, q, r))
                 lp_, lq_ = level[p], level[q]
                 lev_add((lp_ if lp_ > lq_ else lq_) + 1)
-                root_add(r)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
+        a_row, a_col, a_val, b = _lin_arrays(aff)
+        l_row, l_col, l_val, lconst = _lin_arrays(leaves)
+        nn = len(nodes)
+        na = np.fromiter(chain.from_iterable(nodes), np.int64, 4 * nn).reshape(nn, 4)
+        self._setup(np.asarray(arows, dtype=np.int64), a_row, a_col, a_val, b,
+                    l_row, l_col, l_val, lconst, np.asarray(leaf_node, dtype=np.int64),
+                    np.asarray(nl_rows, dtype=np.int64), np.asarray(nl_roots, dtype=np.int64),
+                    na[:, 0].copy(), na[:, 1].copy(), na[:, 2].copy(),
+                    np.asarray(level, dtype=np.int64), na[:, 3].copy())
 
-        self.aff_rows = np.asarray(arows, dtype=np.int64)
+    def _setup(self, aff_rows, a_row, a_col, a_val, b, l_row, l_col, l_val, lconst, leaf_node,
+               nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of) -> None:
+        """Store the flattened arrays and group the interior nodes by (level, operator)."""
+        self.aff_rows = aff_rows
         # sparse rows kept as COO arrays: products are np.bincount (no scipy overhead)
-        self.a_row = np.asarray(ar, dtype=np.int64)
-        self.a_col = np.asarray(ac, dtype=np.int64)
-        self.a_val = np.asarray(av, dtype=float)
-        self.b = np.asarray(ab, dtype=float)
-        self.l_row = np.asarray(lr, dtype=np.int64)
-        self.l_col = np.asarray(lc, dtype=np.int64)
-        self.l_val = np.asarray(lv, dtype=float)
-        self.lconst = np.asarray(lconst, dtype=float)
-        self.leaf_node = np.asarray(leaf_node, dtype=np.int64)
-        self.n_nodes = len(op)
-        self.nl_rows = np.asarray(nl_rows, dtype=np.int64)
-        self.nl_roots = np.asarray(nl_roots, dtype=np.int64)
-        op_a = np.asarray(op, dtype=np.int64)
-        a0_a = np.asarray(a0, dtype=np.int64)
-        a1_a = np.asarray(a1, dtype=np.int64)
-        lev = np.asarray(level, dtype=np.int64)
-        self.root_of = np.asarray(root_of, dtype=np.int64)
+        self.a_row, self.a_col, self.a_val, self.b = a_row, a_col, a_val, b
+        self.l_row, self.l_col, self.l_val, self.lconst = l_row, l_col, l_val, lconst
+        self.leaf_node = leaf_node
+        self.n_nodes = len(op_a)
+        self.nl_rows, self.nl_roots = nl_rows, nl_roots
+        self.op, self.a0, self.a1, self.level = op_a, a0_a, a1_a, lev
+        self.root_of = root_of
         # group interior nodes by (level, op)
         self.groups: list[_Group] = []
         inner = np.flatnonzero(op_a != LEAF)
@@ -209,6 +214,53 @@ class Tape:
         if len(self.nl_rows):
             self.root_choice[self.nl_rows] = node_choice[self.nl_roots]
         self._patterns: dict = {}
+
+    def subset(self, rows: np.ndarray) -> "Tape":
+        """The tape of rows ``rows`` (increasing positions in this tape) by array selection,
+        without walking any expression again.
+
+        Equal, array for array, to ``Tape([exprs[r] for r in rows], n_params)``: every node
+        belongs to one row (the compile memoises within a row only), nodes keep their order,
+        and the (level, operator) grouping is stable, so evaluation and Jacobians are the same
+        bit for bit (``tests/test_solver_subset.py``)."""
+        rows = np.asarray(rows, dtype=np.int64)
+        t = Tape.__new__(Tape)
+        t.n_rows = len(rows)
+        t.n_params = self.n_params
+        st = self._starts()
+        # every array is a run of blocks, one per row, in row order (see _starts): gather the
+        # blocks of ``rows`` and shift the indices that point into other blocks
+        nidx, nd, nn = _take(st["node"], rows)
+        lidx, ld, ln = _take(st["leaf"], rows)
+        eidx, _, en = _take(st["lent"], rows)
+        kidx, kd, kn = _take(st["aff"], rows)
+        aidx, _, an = _take(st["aent"], rows)
+        ridx, _, rn = _take(st["nl"], rows)
+        pos = np.arange(len(rows), dtype=np.int64)
+        op = self.op[nidx]
+        shift = np.where(op == LEAF, np.repeat(ld, nn), np.repeat(nd, nn))
+        t._setup(np.repeat(pos, kn), self.a_row[aidx] + np.repeat(kd, an), self.a_col[aidx],
+                 self.a_val[aidx], self.b[kidx], self.l_row[eidx] + np.repeat(ld, en),
+                 self.l_col[eidx], self.l_val[eidx], self.lconst[lidx],
+                 self.leaf_node[lidx] + np.repeat(nd, ln), np.repeat(pos, rn),
+                 self.nl_roots[ridx] + np.repeat(nd, rn), op, self.a0[nidx] + shift,
+                 self.a1[nidx] + shift, self.level[nidx], np.repeat(pos, nn))
+        return t
+
+    def _starts(self) -> dict:
+        """Where each row's block starts in every per-row array (length ``n_rows + 1``):
+        nodes, leaves, leaf entries, affine rows, affine entries, nonlinear roots.  A compile
+        appends each row's items together and in row order, so each array is sorted by row."""
+        st = self.__dict__.get("_row_starts")
+        if st is None:
+            r = np.arange(self.n_rows + 1)
+            leaf = np.searchsorted(self.root_of[self.leaf_node], r)
+            aff = np.searchsorted(self.aff_rows, r)
+            st = self._row_starts = {
+                "node": np.searchsorted(self.root_of, r), "leaf": leaf,
+                "lent": np.searchsorted(self.l_row, leaf), "aff": aff,
+                "aent": np.searchsorted(self.a_row, aff), "nl": np.searchsorted(self.nl_rows, r)}
+        return st
 
     # ------------------------------------------------------------------ evaluation
     def _forward(self, x: np.ndarray, choices: np.ndarray | None):

@@ -1,0 +1,83 @@
+"""A tape cut out of the whole model's tape (``Tape.subset``, what the hierarchical solver does
+for every attempt) is the tape a fresh compile of the same rows gives: the same arrays, and so
+bit for bit the same residuals and Jacobians."""
+from __future__ import annotations
+
+import pathlib
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from aidl_lang.pipeline import compile_source
+from aidl_lang.solver import Solver
+from aidl_lang.solver.tape import Tape
+from benchmarks.families import hierarchy
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+ARRAYS = ("aff_rows", "a_row", "a_col", "a_val", "b", "l_row", "l_col", "l_val", "lconst",
+          "leaf_node", "nl_rows", "nl_roots", "op", "a0", "a1", "level", "root_of",
+          "root_choice")
+
+
+def _solver(src: str, name: str = "t.aidl") -> Solver:
+    c = compile_source(src, name, do_solve=False)
+    assert c.ok, [d.message for d in c.sink.items]
+    return Solver(c.model)
+
+
+_SOURCES = {"hierarchy": hierarchy(12, seed=4).source,
+            "bracket": (ROOT / "examples/bracket.aidl").read_text(),
+            "telephone": (ROOT / "examples/telephone.aidl").read_text()}
+_SOLVERS = {k: _solver(v) for k, v in _SOURCES.items()}
+
+
+def _same(cut: Tape, fresh: Tape) -> None:
+    assert cut.n_rows == fresh.n_rows and cut.n_nodes == fresh.n_nodes
+    for name in ARRAYS:
+        a, b = getattr(cut, name), getattr(fresh, name)
+        assert a.dtype == b.dtype and np.array_equal(a, b), name
+    assert [(g.op, g.uniq0, g.uniq1) for g in cut.groups] == \
+        [(g.op, g.uniq0, g.uniq1) for g in fresh.groups]
+
+
+@settings(max_examples=40, deadline=None)
+@given(which=st.sampled_from(sorted(_SOLVERS)), data=st.data())
+def test_a_cut_tape_equals_a_fresh_compile(which, data):
+    s = _SOLVERS[which]
+    n = len(s.rows.exprs)
+    rows = np.asarray(sorted(data.draw(st.sets(st.integers(0, n - 1), min_size=0,
+                                                max_size=min(n, 40)))), dtype=np.int64)
+    cut = s.whole.subset(rows)
+    fresh = Tape([s.rows.exprs[r] for r in rows], s.rows.n_params)
+    _same(cut, fresh)
+    rng = np.random.default_rng(len(rows))
+    x = s.x + rng.normal(0, 0.5, len(s.x))
+    assert np.array_equal(cut.evaluate(x), fresh.evaluate(x))
+    ch = fresh.choose(x)
+    assert np.array_equal(cut.choose(x), ch)
+    cols = np.flatnonzero(s.free)
+    if len(rows):
+        a = cut.jacobian(x, cols, ch, dense=True)
+        b = fresh.jacobian(x, cols, ch, dense=True)
+        assert np.array_equal(a, b)
+        assert np.abs(a).sum() > 0 or not len(fresh.l_col) + len(fresh.a_col)
+
+
+@pytest.mark.parametrize("which", sorted(_SOLVERS))
+def test_the_solver_compiles_each_expression_once(which, monkeypatch):
+    """Every attempt's tape comes from the one whole-model compile."""
+    c = compile_source(_SOURCES[which], "t.aidl", do_solve=False)
+    walks = []
+    init = Tape.__init__
+
+    def counting(self, exprs, n_params):
+        walks.append(len(exprs))
+        init(self, exprs, n_params)
+    monkeypatch.setattr(Tape, "__init__", counting)
+    from aidl_lang.solver import run
+    s = Solver(c.model)
+    res = run(s)
+    assert res.converged
+    assert walks == [len(s.rows.exprs)]
+    assert s.compiles >= 1
