@@ -21,7 +21,17 @@ import numpy as np
 from .tape import Tape
 
 TOL = 1e-10
-DENSE_MAX = 48          # below this many rows a dense solve beats splu's overhead
+DENSE_MAX = 48          # up to this many rows a system is always solved densely
+DENSE_WORK = 1_000_000  # ... and up to this many multiplications for J J^T (rows^2 x unknowns)
+
+
+def dense_enough(rows: int, unknowns: int) -> bool:
+    """Whether a system of ``rows`` residuals and ``unknowns`` is solved with NumPy's dense
+    solve: up to DENSE_MAX rows and 4 DENSE_MAX unknowns, or ``J J^T`` costing at most
+    DENSE_WORK multiplications (where ``splu``'s fixed overhead, and importing SciPy, would
+    cost more than the dense work: the bracket example's 59 x 8 systems)."""
+    return (rows <= DENSE_MAX and unknowns <= 4 * DENSE_MAX) or \
+        rows * rows * max(unknowns, 1) <= DENSE_WORK
 
 
 @dataclass
@@ -38,14 +48,29 @@ class _Step:
     ``Js`` (SciPy CSR) is solved with ``splu``, SciPy being imported only then."""
 
     def __init__(self, Js, dense: bool):
-        if not dense and Js.shape[0] <= DENSE_MAX:
+        if not dense and dense_enough(*Js.shape):
             Js, dense = Js.toarray(), True
         self.Js, self.dense = Js, dense
         if dense:
             self.G = Js @ Js.T
         else:
-            self.G = (Js @ Js.T).tocsc()
-            self.zero = self.G.diagonal() == 0.0
+            # G + diag(d) in CSC, laid out once per step: G's entries and the diagonal are
+            # summed by np.bincount into a fixed pattern (0 + G_ii + d_i: the same sum, bit for
+            # bit, as scipy's G + diags(d), without its per-try matrix constructions)
+            G = (Js @ Js.T).tocoo()
+            m = G.shape[0]
+            diag = np.arange(m, dtype=np.int64)
+            r = np.concatenate([G.row.astype(np.int64), diag])
+            c = np.concatenate([G.col.astype(np.int64), diag])
+            keys, self.inv = np.unique(c * m + r, return_inverse=True)
+            self.inv = self.inv.ravel()
+            self.gdata = G.data
+            self.indices = (keys % m).astype(np.int32)
+            self.indptr = np.searchsorted(keys // m, np.arange(m + 1)).astype(np.int32)
+            isdiag = np.zeros(m, dtype=bool)
+            isdiag[G.row[(G.row == G.col) & (G.data != 0.0)]] = True
+            self.zero = ~isdiag
+            self.m = m
 
     def __call__(self, F: np.ndarray, mu: float) -> np.ndarray:
         if self.dense:
@@ -55,7 +80,9 @@ class _Step:
             return self.Js.T @ np.linalg.solve(M, -F)
         import scipy.sparse as sp
         from scipy.sparse.linalg import splu
-        M = self.G + sp.diags(mu + self.zero, format="csc")
+        data = np.bincount(self.inv, weights=np.concatenate([self.gdata, mu + self.zero]),
+                           minlength=len(self.indices))
+        M = sp.csc_matrix((data, self.indices, self.indptr), shape=(self.m, self.m))
         return self.Js.T @ splu(M).solve(-F)
 
 
@@ -97,7 +124,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     norm = float(np.linalg.norm(F))
     mu = 1e-12
     it = 0
-    small = len(F) <= DENSE_MAX and len(u) <= 4 * DENSE_MAX
+    small = dense_enough(len(F), len(u))
     if small and reduction is not None:
         Sd = red.dense()
     elif reduction is not None:
