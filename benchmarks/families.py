@@ -34,29 +34,34 @@ class Case:
     source: str
     solution: dict = field(default_factory=dict)     # point name -> (x, y)
     slvs: object = None                              # () -> (solve() -> ok, read(name) -> (x, y))
+    spec: dict = field(default_factory=dict)         # the sketch as data, for other peers
 
 
 def _fmt(v: float) -> str:
     return f"{v:.12f}"
 
 
-def rectangles(n_params: int, seed: int = 0) -> Case:
+def rectangles(n_params: int, seed: int = 0, chained: bool = True) -> Case:
     rng = np.random.default_rng(seed)
     n = max(1, n_params // 8)
     w = rng.uniform(8, 12, n)
     h = rng.uniform(8, 12, n)
     sol = {}
-    x0 = 0.0
+    x0 = y0 = 0.0
     for i in range(n):
-        sol[f"a{i}"] = (x0, 0.0)
-        sol[f"b{i}"] = (x0 + w[i], 0.0)
-        sol[f"c{i}"] = (x0 + w[i], h[i])
-        sol[f"d{i}"] = (x0, h[i])
+        if not chained:                     # islands: a grid of separate rectangles
+            x0, y0 = 15.0 * (i % 20), 15.0 * (i // 20)
+        sol[f"a{i}"] = (x0, y0)
+        sol[f"b{i}"] = (x0 + w[i], y0)
+        sol[f"c{i}"] = (x0 + w[i], y0 + h[i])
+        sol[f"d{i}"] = (x0, y0 + h[i])
         x0 += w[i]
-    start = _perturb(sol, rng, 1.0, fixed={"a0"})
+    fixed = {"a0"} if chained else {f"a{i}" for i in range(n)}
+    start = _perturb(sol, rng, 1.0, fixed=fixed)
     lines = ["units mm", "solid chain {"]
     for k, (x, y) in start.items():
         lines.append(f"    {k} = Point({_fmt(x)}, {_fmt(y)})")
+    cons = []
     for i in range(n):
         a, b, c, d = (f"{p}{i}" for p in "abcd")
         lines += [f"    bot{i} = Line({a}, {b})", f"    rgt{i} = Line({b}, {c})",
@@ -64,9 +69,13 @@ def rectangles(n_params: int, seed: int = 0) -> Case:
                   f"    Horizontal(bot{i})", f"    Horizontal(top{i})",
                   f"    Vertical(lft{i})", f"    Vertical(rgt{i})",
                   f"    Length(bot{i}, {_fmt(w[i])})", f"    Length(lft{i}, {_fmt(h[i])})"]
-        if i:
+        cons += [("horizontal", a, b), ("horizontal", c, d), ("vertical", d, a),
+                 ("vertical", b, c), ("distance", a, b, float(w[i])),
+                 ("distance", d, a, float(h[i]))]
+        if i and chained:
             lines.append(f"    Coincident(a{i}, b{i - 1})")
-    lines += ["    Fixed(a0)", "}"]
+            cons.append(("coincident", a, f"b{i - 1}"))
+    lines += [f"    Fixed({k})" for k in sorted(fixed, key=lambda k: int(k[1:]))] + ["}"]
 
     def build():
         import slvs
@@ -74,7 +83,8 @@ def rectangles(n_params: int, seed: int = 0) -> Case:
         wp = slvs.add_base_2d(1)
         g = 2
         P = {k: slvs.add_point_2d(g, x, y, wp) for k, (x, y) in start.items()}
-        slvs.dragged(g, P["a0"], wp)
+        for k in fixed:
+            slvs.dragged(g, P[k], wp)
         for i in range(n):
             a, b, c, d = (P[f"{p}{i}"] for p in "abcd")
             bot, rgt = slvs.add_line_2d(g, a, b, wp), slvs.add_line_2d(g, b, c, wp)
@@ -85,11 +95,18 @@ def rectangles(n_params: int, seed: int = 0) -> Case:
             slvs.vertical(g, rgt, wp)
             slvs.distance(g, a, b, float(w[i]), wp)
             slvs.distance(g, d, a, float(h[i]), wp)
-            if i:
+            if i and chained:
                 slvs.coincident(g, a, P[f"b{i - 1}"], wp)
         return _slvs_handles(g, P)
 
-    return Case("rectangles", 8 * n, "\n".join(lines) + "\n", sol, build)
+    spec = {"points": start, "fixed": sorted(fixed), "constraints": cons}
+    return Case("rectangles" if chained else "islands", 8 * n,
+                "\n".join(lines) + "\n", sol, build, spec)
+
+
+def islands(n_params: int, seed: int = 0) -> Case:
+    """Independent rectangles (each with its own fixed corner): one solid, many components."""
+    return rectangles(n_params, seed, chained=False)
 
 
 def ring(n_params: int, seed: int = 0) -> Case:
@@ -133,7 +150,11 @@ def ring(n_params: int, seed: int = 0) -> Case:
             slvs.equal(g, S[i], S[i + 1], wp)
         return _slvs_handles(g, P)
 
-    return Case("ring", 2 * (n - 1), "\n".join(lines) + "\n", sol, build)
+    cons = [("on_circle", f"p{i}", 0.0, 0.0, R) for i in range(1, n)]
+    cons += [("equal_length", f"p{i}", f"p{i + 1}", f"p{i + 1}", f"p{(i + 2) % n}")
+             for i in range(n - 1)]
+    spec = {"points": start, "fixed": ["p0"], "constraints": cons}
+    return Case("ring", 2 * (n - 1), "\n".join(lines) + "\n", sol, build, spec)
 
 
 def linkage(n_params: int, seed: int = 0) -> Case:
@@ -176,7 +197,14 @@ def linkage(n_params: int, seed: int = 0) -> Case:
                 slvs.angle(g, L[i - 1], L[i], float(abs(turn[i])), wp)
         return _slvs_handles(g, P)
 
-    return Case("linkage", 2 * n, "\n".join(lines) + "\n", sol, build)
+    cons = [("horizontal", "q0", "q1")]
+    for i in range(n):
+        cons.append(("distance", f"q{i}", f"q{i + 1}", float(length[i])))
+        if i:   # the signed turn from link i-1 to link i (radians)
+            cons.append(("angle", f"q{i - 1}", f"q{i}", f"q{i}", f"q{i + 1}",
+                         math.radians(turn[i])))
+    spec = {"points": start, "fixed": ["q0"], "constraints": cons}
+    return Case("linkage", 2 * n, "\n".join(lines) + "\n", sol, build, spec)
 
 
 def hierarchy(n_structures: int, seed: int = 0) -> Case:
@@ -253,4 +281,4 @@ def _perturb(sol: dict, rng, size: float, fixed: set) -> dict:
     return out
 
 
-FLAT = {"rectangles": rectangles, "ring": ring, "linkage": linkage}
+FLAT = {"rectangles": rectangles, "islands": islands, "ring": ring, "linkage": linkage}

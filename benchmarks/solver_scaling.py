@@ -1,18 +1,23 @@
 """Solver scaling: AIDL's solver against SolveSpace, and hierarchical against flat.
 
 Run:  .venv/bin/pip install -e ".[bench]"   (SolveSpace's ``slvs`` from PyPI)
-      .venv/bin/python benchmarks/solver_scaling.py  [--quick]
+      python3.12 -m venv .venv312 && .venv312/bin/pip install planegcs   (optional peer)
+      .venv/bin/python benchmarks/solver_scaling.py  [--quick] [--no-planegcs]
 
 Prints one table in four parts:
 
-(a) flat sketch families (``benchmarks/families.py``: a chain of rectangles, points on a ring
-    with equal chords, a linkage with lengths and angles) from 10 to 2000 parameters, each
-    started 10% off a known solution and checked against it (max point error, mm).  Columns:
-    the build (ours: source text to a model; SolveSpace: the sketch made through its API), our
-    first solve (building rows, compiling, substituting, Newton), our re-solve from the same
-    start with the compiled system cached (what an edit costs), and SolveSpace (``slvs`` from
-    PyPI, ``solve_sketch`` only) in the same run, with slvs/ours ratios for each.  planegcs
-    needs Python 3.12 and is skipped.
+(a) flat sketch families (``benchmarks/families.py``: a chain of rectangles, independent
+    rectangles ("islands"), points on a ring with equal chords, a linkage with lengths and
+    angles) from 8 to 2000 parameters, each started 10% off a known solution and checked
+    against it (max point error, mm).  Columns: the build (ours: source text to a model; the
+    peers: the sketch made through their API); the cold solve (ours: building rows,
+    compiling, substituting, Newton; ``ref``: :func:`reference_newton`, a 20-line minimum-norm
+    Newton with ``splu`` on our rows, its tape compile included; SolveSpace ``slvs`` from
+    PyPI and FreeCAD's PlaneGCS ``planegcs`` from PyPI: solve only); the warm re-solve from
+    the same start with the compiled system kept (what an edit costs; PlaneGCS keeps its
+    sketch, SolveSpace keeps nothing so its cold time stands); ratios peer/ours.  PlaneGCS
+    needs Python >= 3.12, so it runs in a subprocess (``benchmarks/peer_planegcs.py``) under
+    ``AIDL_PLANEGCS_PYTHON`` or ``.venv312/bin/python``; without it its columns are empty.
 (b) generated hierarchical models with 10 to 500 structures: hierarchical solve against a flat
     solve of the same model, with the log-log growth exponent.
 (c) every bundled example: the solve time.
@@ -35,6 +40,7 @@ sys.path.insert(0, str(ROOT))
 
 from aidl_lang.pipeline import compile_source  # noqa: E402
 from aidl_lang.solver import Solver, run, solve  # noqa: E402
+from aidl_lang.solver.tape import Tape  # noqa: E402
 from benchmarks.families import FLAT, hierarchy  # noqa: E402
 
 
@@ -65,12 +71,61 @@ def _point_error(model, solution) -> float:
     return err
 
 
-def flat_rows(sizes, have_slvs: bool):
+def reference_newton(exprs, n_params: int, x: np.ndarray, cols: np.ndarray,
+                     tol: float = 1e-10, max_iter: int = 50):
+    """The 20-line reference: plain minimum-norm Newton, ``dx = -J^T (J J^T)^-1 F`` through
+    ``splu``, on our compiled tape of every row (no substitution, no damping, no hierarchy).
+    Returns ``(x, converged, steps)``."""
+    import scipy.sparse as sp
+    from scipy.sparse.linalg import splu
+    tape = Tape(exprs, n_params)
+    x = x.copy()
+    for it in range(max_iter):
+        F = tape.evaluate(x)
+        if float(np.max(np.abs(F))) <= tol:
+            return x, True, it
+        J = tape.jacobian(x, cols)
+        G = (J @ J.T + 1e-12 * sp.identity(J.shape[0], format="csr")).tocsc()
+        x[cols] -= J.T @ splu(G).solve(F)
+    return x, False, max_iter
+
+
+def planegcs_python() -> str | None:
+    """The Python that runs ``benchmarks/peer_planegcs.py`` (``AIDL_PLANEGCS_PYTHON``, else
+    the repository's ``.venv312``), or None when it has no ``planegcs``."""
+    import os
+    import subprocess
+    py = os.environ.get("AIDL_PLANEGCS_PYTHON") or str(ROOT / ".venv312/bin/python")
+    try:
+        ok = subprocess.run([py, "-c", "import planegcs"], capture_output=True, timeout=60)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return py if ok.returncode == 0 else None
+
+
+def planegcs_times(py: str | None, cases: list) -> list:
+    """PlaneGCS's build, cold and warm times for ``cases`` ((Case, reps)), in one subprocess."""
+    import json
+    import subprocess
+    if py is None:
+        return [None] * len(cases)
+    data = [{"spec": c.spec, "solution": c.solution, "reps": reps} for c, reps in cases]
+    out = subprocess.run([py, str(ROOT / "benchmarks/peer_planegcs.py")], input=json.dumps(data),
+                         capture_output=True, text=True, timeout=600)
+    if out.returncode != 0:
+        print("planegcs peer failed:", out.stderr.strip().splitlines()[-1:])
+        return [None] * len(cases)
+    return [r if "error" not in r else None for r in json.loads(out.stdout)]
+
+
+def flat_rows(sizes, have_slvs: bool, pgcs: str | None = None):
     rows = []
+    cases = []
     for name, make in FLAT.items():
         for n in sizes:
             case = make(n, seed=7)
             reps = 5 if n <= 200 else 3
+            cases.append((case, reps))
             t_build, base = best_of(lambda: _model(case.source), 1 if n > 200 else 3)
             x0 = list(base.x)
 
@@ -85,6 +140,13 @@ def flat_rows(sizes, have_slvs: bool):
                 solver.x[:solver.n_model] = x0
                 return run(solver)
             t_again, res2 = best_of(again, reps)
+            # the reference, from the same start on the same rows (built outside the timing)
+            xr = solver.x.copy()
+            xr[:solver.n_model] = x0
+            xr[solver.n_model:] = 0.0
+            cols = np.flatnonzero(solver.free)
+            t_ref, (_, ref_ok, _) = best_of(
+                lambda: reference_newton(solver.rows.exprs, solver.rows.n_params, xr, cols), reps)
             t_slvs = e_slvs = b_slvs = None
             if have_slvs:
                 b_slvs, _ = best_of(case.slvs, reps if n <= 800 else 1)
@@ -105,8 +167,10 @@ def flat_rows(sizes, have_slvs: bool):
                 read = runner["read"]
                 e_slvs = max(math.hypot(*(np.subtract(read(k), v)))
                              for k, v in case.solution.items())
-            rows.append((name, case.n_params, t_build, b_slvs, t_first, t_again, t_slvs, err,
-                         e_slvs, res.converged and res2.converged))
+            rows.append([name, case.n_params, t_build, b_slvs, t_first, t_again, t_slvs, err,
+                         e_slvs, res.converged and res2.converged, t_ref if ref_ok else None])
+    for row, pg in zip(rows, planegcs_times(pgcs, cases)):
+        row.append(pg)
     return rows
 
 
@@ -138,28 +202,40 @@ def slope(xs, ys) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes only (a smoke run)")
+    ap.add_argument("--no-planegcs", action="store_true", help="skip the PlaneGCS peer")
     args = ap.parse_args()
     try:
         import slvs  # noqa: F401
         have_slvs = True
     except ImportError:
         have_slvs = False
-    sizes = [10, 50, 200] if args.quick else [10, 50, 200, 800, 2000]
+    sizes = [10, 50, 200] if args.quick else [10, 50, 200, 400, 800, 2000]
+    pgcs = None if args.no_planegcs else planegcs_python()
     print("(a) flat families, started 10% off a known solution"
-          + ("" if have_slvs else "  [slvs not installed: pip install slvs]"))
-    print("    build: source text to a model (ours: parse + check + interpret) or the sketch "
-          "built through the slvs API;\n    1st: a cold solve; re: a warm re-solve from the same "
-          "start (compiled system kept); ratios are slvs time / ours (>1: ours faster)")
-    print(f"{'family':<11}{'params':>7}{'build':>9}{'slvs bld':>9}{'ratio':>8}{'ours 1st':>10}"
-          f"{'ours re':>9}{'slvs':>10}{'1st ratio':>10}{'re ratio':>9}{'err ours':>10}"
-          f"{'err slvs':>10}  ok")
+          + ("" if have_slvs else "  [slvs not installed: pip install slvs]")
+          + ("" if pgcs else "  [planegcs not found: see benchmarks/peer_planegcs.py]"))
+    print("    build: source text to a model (ours: parse + check + interpret; peers: the sketch "
+          "through their API)\n    cold: first solve (ours: rows, compile, substitution, Newton; "
+          "ref: the 20-line numpy/splu Newton incl. its tape compile; slvs, pgcs: solve only)\n"
+          "    warm: re-solve from the same start with the system kept (slvs keeps nothing: its "
+          "cold time)\n    x/ours ratios: >1 means ours is faster; ms, best of several runs")
+    print(f"{'family':<11}{'params':>7}{'build':>8}{'slvs':>7}{'pgcs':>7} |{'cold':>8}{'ref':>8}"
+          f"{'slvs':>8}{'pgcs':>8} |{'warm':>8}{'pgcs':>8} |{'ref/':>6}{'slvs/':>6}{'slvs/':>6}"
+          f"{'pgcs/':>6}{'pgcs/':>6} |{'err':>8}{'slvs':>8}{'pgcs':>8}  ok")
+    print(f"{'':<11}{'':>7}{'':>8}{'':>7}{'':>7} |{'':>8}{'':>8}{'':>8}{'':>8} |{'':>8}{'':>8} |"
+          f"{'cold':>6}{'cold':>6}{'warm':>6}{'cold':>6}{'warm':>6} |")
     nan = float("nan")
-    for name, n, tb, bs, t1, t2, ts, e1, es, okk in flat_rows(sizes, have_slvs):
-        def ratio(a, b, w):
-            return f"{a / b:{w - 1}.2f}x" if a else " " * (w - 1) + "-"
-        print(f"{name:<11}{n:>7}{tb:>9.2f}{(bs or nan):>9.3f}{ratio(bs, tb, 8)}{t1:>10.2f}"
-              f"{t2:>9.2f}{(ts or nan):>10.2f}{ratio(ts, t1, 10)}{ratio(ts, t2, 9)}"
-              f"{e1:>10.1e}{(es if es is not None else nan):>10.1e}  {okk}")
+
+    def r(a, b):
+        return f"{a / b:>6.2f}" if a and b else f"{'-':>6}"
+    for (name, n, tb, bs, t1, t2, ts, e1, es, okk, tr, pg) in flat_rows(sizes, have_slvs, pgcs):
+        pg = pg or {}
+        print(f"{name:<11}{n:>7}{tb:>8.1f}{(bs or nan):>7.2f}{pg.get('build', nan):>7.2f} |"
+              f"{t1:>8.2f}{(tr or nan):>8.2f}{(ts or nan):>8.2f}{pg.get('cold', nan):>8.2f} |"
+              f"{t2:>8.2f}{pg.get('warm', nan):>8.2f} |{r(tr, t1)}{r(ts, t1)}{r(ts, t2)}"
+              f"{r(pg.get('cold'), t1)}{r(pg.get('warm'), t2)} |{e1:>8.0e}"
+              f"{(es if es is not None else nan):>8.0e}{pg.get('err', nan):>8.0e}"
+              f"  {okk and pg.get('ok', True)}")
     hs = [10, 50] if args.quick else [10, 50, 200, 500]
     print("\n(b) generated hierarchical models (solve only; parse+interpret shown apart)")
     print(f"{'structures':>10}{'params':>8}{'interp':>9}{'hier':>9}{'flat':>9}{'attempts':>10}  ok")
