@@ -111,6 +111,7 @@ class Solver:
                 continue
             (self.frame if self.is_frame[i] else self.own).setdefault(id(owner), []).append(i)
         self._tapes: dict[bytes, Tape] = {}
+        self._rows_of: dict[tuple, np.ndarray] = {}
         self.failed: set[int] = set()          # ids of constraints given up on
         self.trace = Trace()
         self.compiles = 0
@@ -162,12 +163,22 @@ class Solver:
         self.x[index] = float(value)
 
     def rows_of(self, structs) -> np.ndarray:
+        """The rows (increasing) of the constraints owned by ``structs``, less those given up
+        on; remembered per structure set while nothing has failed (a re-solve repeats them)."""
+        key = tuple(map(id, structs))
+        if not self.failed:
+            hit = self._rows_of.get(key)
+            if hit is not None:
+                return hit
         out = []
         for s in structs:
             for r in self.rows.by_owner.get(id(s), ()):
                 if id(self.rows.constraint[r]) not in self.failed:
                     out.append(r)
-        return np.asarray(sorted(out), dtype=np.int64)
+        rows = np.asarray(sorted(out), dtype=np.int64)
+        if not self.failed:
+            self._rows_of[key] = rows
+        return rows
 
     def _cols(self, params: list[int], rows: np.ndarray) -> np.ndarray:
         sl = self.slack[rows]

@@ -125,21 +125,13 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     mu = 1e-12
     it = 0
     small = dense_enough(len(F), len(u))
-    if small and reduction is not None:
-        Sd = red.dense()
-    elif reduction is not None:
-        S = red.S
     while it < max_iter:
         it += 1
+        # the reduced Jacobian J[keep] @ S comes straight from the tape (Tape.jacobian)
         if small:                    # dense all the way: no sparse-matrix overhead
-            J = tape.jacobian(x, cols, choices, v, dense=True)
-            if reduction is not None:
-                J = J[keep] @ Sd
-            Js = J * d
+            Js = tape.jacobian(x, cols, choices, v, dense=True, reduction=reduction) * d
         else:
-            J = tape.jacobian(x, cols, choices, v)
-            if reduction is not None:
-                J = (J[keep] @ S).tocsr()
+            J = tape.jacobian(x, cols, choices, v, reduction=reduction)
             Js = type(J)((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
         step = _Step(Js, dense=small)

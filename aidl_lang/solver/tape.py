@@ -415,8 +415,13 @@ class Tape:
         return pat
 
     def jacobian(self, x: np.ndarray, cols: np.ndarray, choices=None, v=None,
-                 dense: bool = False):
-        """``dF/dx[cols]`` at ``x``, shape (n_rows, len(cols)): CSR, or an ndarray if ``dense``."""
+                 dense: bool = False, reduction=None):
+        """``dF/dx[cols]`` at ``x``, shape (n_rows, len(cols)): CSR, or an ndarray if ``dense``.
+
+        With a ``reduction`` (:class:`~.reduce.Reduction`, ``x[cols] = S z + t``) it is the
+        reduced Jacobian ``(dF/dx[cols])[keep] @ S``, shape (len(keep), len(z)), summed
+        straight from the entries into a layout kept per reduction (in column order, as
+        SciPy's CSR product sums them), without forming the full matrix or ``S``."""
         pat = self.pattern(cols)
         if v is None:
             _, v = self.evaluate(x, choices, nodes=True)
@@ -425,12 +430,23 @@ class Tape:
             adj = self._adjoints(v, choices)
             w = np.concatenate([w, adj[self.leaf_node[pat.nl_leaf]] * pat.nl_vals])
         data = np.bincount(pat.inv, weights=w, minlength=pat.nnz) if len(w) else np.zeros(0)
-        if dense:
-            J = np.zeros((self.n_rows, len(cols)))
-            J[pat.urows, pat.indices] = data
-            return J
+        if reduction is not None:
+            lay = pat.reduced(self, reduction)
+            data = np.bincount(lay.inv, weights=data[lay.valid], minlength=lay.nnz)
+            shape = lay.shape
+            if dense:
+                J = np.zeros(shape)
+                J[lay.urows, lay.indices] = data
+                return J
+        else:
+            shape = (self.n_rows, len(cols))
+            if dense:
+                J = np.zeros(shape)
+                J[pat.urows, pat.indices] = data
+                return J
+            lay = pat
         import scipy.sparse as sp           # only sparse (large) systems need SciPy
-        return sp.csr_matrix((data, pat.indices, pat.indptr), shape=(self.n_rows, len(cols)))
+        return sp.csr_matrix((data, lay.indices, lay.indptr), shape=shape)
 
 
 class _Pattern:
@@ -461,3 +477,36 @@ class _Pattern:
         urows = uniq // m
         self.urows = urows
         self.indptr = np.searchsorted(urows, np.arange(tape.n_rows + 1)).astype(np.int32)
+        self._reduced: dict = {}
+
+    def reduced(self, tape: Tape, red) -> "_Reduced":
+        """The layout of the reduced Jacobian for substitution ``red`` (cached)."""
+        key = (red.keep.tobytes(), red.zc.tobytes())
+        lay = self._reduced.get(key)
+        if lay is None:
+            if len(self._reduced) >= 8:
+                self._reduced.clear()
+            lay = self._reduced[key] = _Reduced(self, tape, red)
+        return lay
+
+
+class _Reduced:
+    """Where each Jacobian entry goes in the reduced CSR layout ``J[keep] @ S``: kept rows
+    renumbered, columns merged into their class ``zc`` (entries of fixed unknowns and dropped
+    rows left out)."""
+
+    def __init__(self, pat: _Pattern, tape: Tape, red):
+        nz = max(len(red.z0), 1)
+        rowpos = -np.ones(tape.n_rows, dtype=np.int64)
+        rowpos[red.keep] = np.arange(len(red.keep))
+        r = rowpos[pat.urows]
+        c = red.zc[pat.indices]
+        self.valid = np.flatnonzero((r >= 0) & (c >= 0))
+        keys = r[self.valid] * nz + c[self.valid]
+        uniq, inv = np.unique(keys, return_inverse=True)
+        self.inv = inv.ravel()
+        self.nnz = len(uniq)
+        self.indices = (uniq % nz).astype(np.int32)
+        self.urows = uniq // nz
+        self.indptr = np.searchsorted(self.urows, np.arange(len(red.keep) + 1)).astype(np.int32)
+        self.shape = (len(red.keep), len(red.z0))
