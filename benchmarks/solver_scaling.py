@@ -17,7 +17,8 @@ Prints one table in four parts:
     the same start with the compiled system kept (what an edit costs; PlaneGCS keeps its
     sketch, SolveSpace keeps nothing so its cold time stands); ratios peer/ours.  PlaneGCS
     needs Python >= 3.12, so it runs in a subprocess (``benchmarks/peer_planegcs.py``) under
-    ``AIDL_PLANEGCS_PYTHON`` or ``.venv312/bin/python``; without it its columns are empty.
+    ``AIDL_PLANEGCS_PYTHON`` or ``.venv312/bin/python``; without it its columns are empty, and
+    beyond 800 parameters too (its dense solve takes minutes at 2,000).
 (b) generated hierarchical models with 10 to 500 structures: hierarchical solve against a flat
     solve of the same model, with the log-log growth exponent.
 (c) every bundled example: the solve time.
@@ -29,11 +30,17 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import pathlib
 import sys
 import time
 
-import numpy as np
+# one BLAS thread, as the `aidl` command sets (aidl_lang/cli/__init__.py): threaded OpenBLAS
+# spins on the ~100 x 100 dense Newton steps (a 400-unknown warm re-solve: 12 ms, not 0.6 ms)
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import numpy as np  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -90,10 +97,12 @@ def reference_newton(exprs, n_params: int, x: np.ndarray, cols: np.ndarray,
     return x, False, max_iter
 
 
+PGCS_MAX = 800      # PlaneGCS is timed up to this many parameters
+
+
 def planegcs_python() -> str | None:
     """The Python that runs ``benchmarks/peer_planegcs.py`` (``AIDL_PLANEGCS_PYTHON``, else
     the repository's ``.venv312``), or None when it has no ``planegcs``."""
-    import os
     import subprocess
     py = os.environ.get("AIDL_PLANEGCS_PYTHON") or str(ROOT / ".venv312/bin/python")
     try:
@@ -109,13 +118,24 @@ def planegcs_times(py: str | None, cases: list) -> list:
     import subprocess
     if py is None:
         return [None] * len(cases)
-    data = [{"spec": c.spec, "solution": c.solution, "reps": reps} for c, reps in cases]
-    out = subprocess.run([py, str(ROOT / "benchmarks/peer_planegcs.py")], input=json.dumps(data),
-                         capture_output=True, text=True, timeout=600)
+    # PlaneGCS factorises densely (its solve grows ~n^3: 2,000 parameters take minutes), so
+    # it is run up to PGCS_MAX parameters, once per case above 200
+    todo = [i for i, (c, _) in enumerate(cases) if c.n_params <= PGCS_MAX]
+    data = [{"spec": cases[i][0].spec, "solution": cases[i][0].solution,
+             "reps": cases[i][1] if cases[i][0].n_params <= 200 else 1} for i in todo]
+    try:
+        out = subprocess.run([py, str(ROOT / "benchmarks/peer_planegcs.py")],
+                             input=json.dumps(data), capture_output=True, text=True, timeout=900)
+    except subprocess.TimeoutExpired:
+        print("planegcs peer: out of time (900 s)")
+        return [None] * len(cases)
     if out.returncode != 0:
         print("planegcs peer failed:", out.stderr.strip().splitlines()[-1:])
         return [None] * len(cases)
-    return [r if "error" not in r else None for r in json.loads(out.stdout)]
+    res = [None] * len(cases)
+    for i, r in zip(todo, json.loads(out.stdout)):
+        res[i] = r if "error" not in r else None
+    return res
 
 
 def flat_rows(sizes, have_slvs: bool, pgcs: str | None = None):
