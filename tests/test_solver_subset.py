@@ -117,3 +117,25 @@ def test_the_reduced_jacobian_is_j_keep_times_s(which, seed):
     sparse = t.jacobian(x, cols, ch, reduction=red)
     assert np.array_equal(sparse.toarray(), want)
     assert np.abs(want).sum() > 0
+
+
+def test_a_very_deep_row_compiles_like_a_shallow_one():
+    """A row nested deeper than Python's recursion limit falls back to the explicit stack and
+    gives the same tape as the same row nested shallowly would evaluate."""
+    import sys
+    from aidl_lang.geometry.expr import func, var
+    depth = sys.getrecursionlimit() + 500
+    e = var(0)
+    for _ in range(depth):
+        e = func("sin", e)                      # sin(sin(...sin(x0)))
+    shallow = func("sin", func("sin", var(1)))
+    t = Tape([shallow, e, var(0)], 2)
+    x = np.array([0.3, 0.3])
+    want = 0.3
+    for _ in range(depth):
+        want = np.sin(want)
+    F = t.evaluate(x)
+    assert F[1] == want and F[0] == np.sin(np.sin(0.3)) and F[2] == 0.3
+    assert t.n_nodes == depth + 1 + 3
+    cut = t.subset(np.array([1]))
+    assert cut.evaluate(x)[0] == want

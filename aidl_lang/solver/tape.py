@@ -107,26 +107,70 @@ class Tape:
         node_add, lev_add, leaf_add = nodes.append, level.append, leaves.append
         leaf_node_add = leaf_node.append
         binary_or_unary = {**_UNARY, **_BINARY}
-        for r, e in enumerate(exprs):
-            if type(e) is Lin or isinstance(e, Lin):
-                aff.append(e)
-                arows.append(r)
-                continue
-            memo: dict[int, int] = {}
+
+        def leaf_of(item, r: int, memo: dict) -> int:
+            leaf = len(leaves)
+            leaf_add(item)
+            memo[id(item)] = n = len(nodes)
+            node_add((LEAF, leaf, leaf, r))
+            lev_add(0)
+            leaf_node_add(n)
+            return n
+
+        def interior(item, args: list, r: int, memo: dict) -> int:
+            code = binary_or_unary.get(item.op)
+            if code is None:
+                raise TapeError(f"unknown operator `{item.op}`")
+            if code in (MIN, MAX) and len(args) > 2:
+                # n-ary min/max: a balanced tree of binary selections
+                while len(args) > 1:
+                    nxt = []
+                    for j in range(0, len(args) - 1, 2):
+                        p, q = args[j], args[j + 1]
+                        lp_, lq_ = level[p], level[q]
+                        nxt.append(len(nodes))
+                        node_add((code, p, q, r))
+                        lev_add((lp_ if lp_ > lq_ else lq_) + 1)
+                    if len(args) % 2:
+                        nxt.append(args[-1])
+                    args = nxt
+                memo[id(item)] = args[0]
+                return args[0]
+            if len(args) == 1:
+                p = q = args[0]
+            elif len(args) == 2:
+                p, q = args
+            else:
+                raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
+            memo[id(item)] = n = len(nodes)
+            node_add((code, p, q, r))
+            lp_, lq_ = level[p], level[q]
+            lev_add((lp_ if lp_ > lq_ else lq_) + 1)
+            return n
+
+        def visit(item, r: int, memo: dict) -> int:
+            """Post-order, last argument first (the order of the explicit stack in walk)."""
+            n = memo.get(id(item))
+            if n is not None:
+                return n
+            if type(item) is Lin or isinstance(item, Lin):
+                return leaf_of(item, r, memo)
+            if not isinstance(item, Nl):
+                raise TapeError(f"cannot compile {type(item).__name__} into a residual")
+            for arg in reversed(item.args):
+                if id(arg) not in memo:
+                    visit(arg, r, memo)
+            return interior(item, [memo[id(a)] for a in item.args], r, memo)
+
+        def walk(e, r: int, memo: dict) -> None:
             stack = [(e, False)]
             push, pop = stack.append, stack.pop
             while stack:                       # iterative post-order: deep trees are fine
                 item, ready = pop()
-                key = id(item)
-                if key in memo:
+                if id(item) in memo:
                     continue
                 if type(item) is Lin or isinstance(item, Lin):
-                    leaf = len(leaves)
-                    leaf_add(item)
-                    memo[key] = n = len(nodes)
-                    node_add((LEAF, leaf, leaf, r))
-                    lev_add(0)
-                    leaf_node_add(n)
+                    leaf_of(item, r, memo)
                     continue
                 if not isinstance(item, Nl):
                     raise TapeError(f"cannot compile {type(item).__name__} into a residual")
@@ -136,35 +180,21 @@ class Tape:
                         if id(arg) not in memo:
                             push((arg, False))
                     continue
-                args = [memo[id(a)] for a in item.args]
-                code = binary_or_unary.get(item.op)
-                if code is None:
-                    raise TapeError(f"unknown operator `{item.op}`")
-                if code in (MIN, MAX) and len(args) > 2:
-                    # n-ary min/max: a balanced tree of binary selections
-                    while len(args) > 1:
-                        nxt = []
-                        for j in range(0, len(args) - 1, 2):
-                            p, q = args[j], args[j + 1]
-                            lp_, lq_ = level[p], level[q]
-                            nxt.append(len(nodes))
-                            node_add((code, p, q, r))
-                            lev_add((lp_ if lp_ > lq_ else lq_) + 1)
-                        if len(args) % 2:
-                            nxt.append(args[-1])
-                        args = nxt
-                    memo[key] = args[0]
-                    continue
-                if len(args) == 1:
-                    p = q = args[0]
-                elif len(args) == 2:
-                    p, q = args
-                else:
-                    raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
-                memo[key] = len(nodes)
-                node_add((code, p, q, r))
-                lp_, lq_ = level[p], level[q]
-                lev_add((lp_ if lp_ > lq_ else lq_) + 1)
+                interior(item, [memo[id(a)] for a in item.args], r, memo)
+
+        for r, e in enumerate(exprs):
+            if type(e) is Lin or isinstance(e, Lin):
+                aff.append(e)
+                arows.append(r)
+                continue
+            memo: dict[int, int] = {}
+            n0, f0 = len(nodes), len(leaves)
+            try:
+                visit(e, r, memo)
+            except RecursionError:             # a very deep tree: start the row again with
+                memo.clear()                   # an explicit stack
+                del nodes[n0:], level[n0:], leaves[f0:], leaf_node[f0:]
+                walk(e, r, memo)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
         a_row, a_col, a_val, b = _lin_arrays(aff)
