@@ -156,15 +156,17 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
     offs = np.empty(n)
     for i in range(n):
         roots[i], offs[i] = find(i)
-    # pass 2: single-unknown rows fix their class, repeated while new ones appear
+    # pass 2: single-unknown rows fix their class, repeated while new ones appear (on Python
+    # lists: the same float operations as on NumPy scalars, without their overhead)
     fixed_root = {}
     changed = True
+    roots_l, offs_l = roots.tolist(), offs.tolist()
     while changed:
         changed = False
-        for r in np.flatnonzero(~used):
-            s, e = starts[r], starts[r + 1]
-            live = [(roots[c], v, offs[c]) for c, v in zip(cc[s:e], vv[s:e])]
-            cst = const[r]
+        for r in np.flatnonzero(~used).tolist():
+            s, e = stl[r], stl[r + 1]
+            live = [(roots_l[c], v, offs_l[c]) for c, v in zip(ccl[s:e], vvl[s:e])]
+            cst = cst_l[r]
             unk = {}
             for root, v, o in live:
                 if root in fixed_root:
@@ -180,13 +182,18 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
                 changed = True
     if not used.any():
         return False
+    fv = np.zeros(n)
+    has = np.zeros(n, dtype=bool)
+    if fixed_root:
+        fk = np.fromiter(fixed_root.keys(), np.int64, len(fixed_root))
+        fv[fk] = np.fromiter(fixed_root.values(), float, len(fixed_root))
+        has[fk] = True
     class_roots = unique(roots)
-    live_roots = np.asarray([r for r in class_roots if r not in fixed_root], dtype=np.int64)
+    live_roots = class_roots[~has[class_roots]]
     zidx = -np.ones(n, dtype=np.int64)
     zidx[live_roots] = np.arange(len(live_roots))
-    t = offs.copy()
-    for root, v in fixed_root.items():
-        t[roots == root] += v
+    fixed = has[roots]
+    t = np.where(fixed, offs + fv[roots], offs)       # offs + v where the class is fixed
     zc = zidx[roots]
     dropped = np.zeros(tape.n_rows, dtype=bool)      # np.setdiff1d, without importing numpy.ma
     dropped[tape.aff_rows[used]] = True
