@@ -36,6 +36,7 @@ import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")     # as the aidl command (before NumPy loads)
 
 HEAVY = ("numpy", "scipy", "scipy.sparse", "scipy.sparse.linalg", "scipy.linalg", "svgwrite",
          "manifold3d", "lark")
