@@ -21,6 +21,7 @@ sys.path.insert(0, str(ROOT))
 from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.output import Options, build, encode, render_model  # noqa: E402
 from aidl_lang.output.checks import check_drawing  # noqa: E402
+from aidl_lang.output.part import MissingDependency  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 
 
@@ -61,7 +62,11 @@ def row(name: str, src: str, path: str) -> None:
     cells = [name, f"{len(o.parts)}", f"{segs}", f"{t_compile:.0f}", f"{t_bool:.0f}",
              f"{t_check:.0f}", f"{t_build:.0f}"]
     for ext in (".svg", ".dxf", ".png", ".stl", ".3mf", ".step"):
-        t, data = best_of(lambda: encode(o, ext, Options()), 1 if ext == ".step" else 3)
+        try:
+            t, data = best_of(lambda: encode(o, ext, Options()), 1 if ext == ".step" else 3)
+        except MissingDependency:
+            cells.append("n/a (extra not installed)")
+            continue
         cells.append(f"{t:.0f} ({len(data) // 1024} KiB)")
     print("| " + " | ".join(cells) + " |")
 

@@ -241,8 +241,9 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                           "set with --min-wall")
 
 
-def _inside(pts: np.ndarray, loops) -> np.ndarray:
-    """Even-odd point-in-polygon for many points against many loops."""
+def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
+    """The reference even-odd test: every point against every edge of each loop in turn
+    (O(points x edges) memory and time).  Kept for the property test of :func:`_inside`."""
     res = np.zeros(len(pts), dtype=bool)
     x, y = pts[:, 0], pts[:, 1]
     for lp in loops:
@@ -251,18 +252,68 @@ def _inside(pts: np.ndarray, loops) -> np.ndarray:
         x1, y1, x2, y2 = P[:, 0][None], P[:, 1][None], Q[:, 0][None], Q[:, 1][None]
         yy = y[:, None]
         cond = (y1 > yy) != (y2 > yy)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             xi = x1 + (yy - y1) * (x2 - x1) / (y2 - y1)
         res ^= (np.sum(cond & (x[:, None] < xi), axis=1) % 2).astype(bool)
     return res
+
+
+def _inside(pts: np.ndarray, loops) -> np.ndarray:
+    """Even-odd point-in-polygon of ``pts`` (N x 2, mm) against the union of closed ``loops``
+    (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to -x crosses the loops' edges an odd
+    number of times (the crossing-number test, as in W. R. Franklin's ``pnpoly``).
+
+    The edges of all loops are taken together (the parity of the total equals the XOR of the
+    per-loop parities) and each edge is tested only against the points whose y lies in its
+    half-open y range ``[min(y1, y2), max(y1, y2))``, found by binary search in the points
+    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E).  The
+    crossing abscissa is computed with the same floating-point expression as the reference
+    :func:`_inside_loops`, so the result is identical to it."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 2)
+    n = len(pts)
+    x1, y1, x2, y2 = loops if isinstance(loops, tuple) else _edges(loops)
+    if not n or not len(x1):
+        return np.zeros(n, dtype=bool)
+    x, y = pts[:, 0], pts[:, 1]
+    order = np.argsort(y, kind="stable")
+    ys = y[order]
+    lo = np.searchsorted(ys, np.minimum(y1, y2), side="left")
+    hi = np.searchsorted(ys, np.maximum(y1, y2), side="left")
+    cnt = np.maximum(hi - lo, 0)
+    total = int(cnt.sum())
+    if not total:
+        return np.zeros(n, dtype=bool)
+    edge = np.repeat(np.arange(len(x1)), cnt)
+    start = np.cumsum(cnt) - cnt
+    pt = order[lo[edge] + (np.arange(total) - start[edge])]
+    yy, ex1, ey1, ex2, ey2 = y[pt], x1[edge], y1[edge], x2[edge], y2[edge]
+    cond = (ey1 > yy) != (ey2 > yy)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        xi = ex1 + (yy - ey1) * (ex2 - ex1) / (ey2 - ey1)
+    hit = cond & (x[pt] < xi)
+    return (np.bincount(pt[hit], minlength=n) % 2).astype(bool)
+
+
+def _edges(loops) -> tuple:
+    """The edges of closed ``loops`` as four arrays (x1, y1, x2, y2): each vertex to the next,
+    the last back to the first; what :func:`_inside` takes (prepared once per part)."""
+    polys = [np.asarray(lp, dtype=float).reshape(-1, 2) for lp in loops]
+    polys = [P for P in polys if len(P)]
+    if not polys:
+        return (np.zeros(0),) * 4
+    P = np.concatenate(polys)
+    Q = np.concatenate([np.roll(p, -1, axis=0) for p in polys])
+    return P[:, 0], P[:, 1], Q[:, 0], Q[:, 1]
+
+
+_T9 = np.linspace(0, 1, 9)[:, None]
 
 
 def _sample(item) -> np.ndarray:
     kind = item[0]
     if kind == "line":
         p, q = np.asarray(item[1], float), np.asarray(item[2], float)
-        t = np.linspace(0, 1, 9)[:, None]
-        return p + t * (q - p)
+        return p + _T9 * (q - p)
     if kind == "poly":
         P = np.asarray(item[1], float)
         return np.vstack([P, (P + np.roll(P, -1, axis=0)) / 2])
@@ -274,6 +325,27 @@ def _sample(item) -> np.ndarray:
     sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
     t = a1 + np.linspace(0, sweep, 17)
     return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+
+def _samples(items) -> np.ndarray:
+    """The sample points of engraving ``items``, in order (lines: 9 points each, taken
+    together as one array operation)."""
+    out, lines = [], []
+
+    def flush():
+        if lines:
+            L = np.asarray(lines, dtype=float)             # k x 2 x 2
+            p, q = L[:, 0][:, None, :], L[:, 1][:, None, :]
+            out.append((p + _T9[None] * (q - p)).reshape(-1, 2))
+            lines.clear()
+    for it in items:
+        if it[0] == "line":
+            lines.append((it[1], it[2]))
+        else:
+            flush()
+            out.append(_sample(it))
+    flush()
+    return np.vstack(out)
 
 
 def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
@@ -289,10 +361,10 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
         if part not in cache:
             shp = roots[part]
             grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
-            outer = [p for p in grown.to_polygons() if _signed(p) > 0]
-            cache[part] = (grown.to_polygons(), outer)
+            loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
+            cache[part] = (_edges(loops), _edges([p for p in loops if _signed(p) > 0]))
         loops, outer = cache[part]
-        pts = np.vstack([_sample(it) for it in items])
+        pts = _samples(items)
         inside = _inside(pts, loops)
         if inside.all():
             continue

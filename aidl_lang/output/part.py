@@ -133,21 +133,37 @@ class Loop:
 
     def points(self, tol: float = CHORD_TOL) -> np.ndarray:
         """A polyline of the loop (closed implicitly), arcs sampled within ``tol``."""
-        from ..geometry.tessellate import segments_for
-        out = []
-        for s in self.segments:
-            if isinstance(s, Line):
-                out.append(s.start)
-            elif isinstance(s, Arc):
-                n = max(1, segments_for(s.radius, abs(s.sweep)))
-                out += [s.at(s.start_angle + s.sweep * i / n) for i in range(n)]
-            else:
-                n = segments_for(s.radius)
-                sg = 1 if s.ccw else -1
-                out += [(s.center[0] + s.radius * math.cos(sg * 2 * math.pi * i / n),
-                         s.center[1] + s.radius * math.sin(sg * 2 * math.pi * i / n))
-                        for i in range(n)]
-        return np.asarray(out, dtype=float)
+        xs, ys = [], []
+        _sample_xy(self.segments, xs, ys)
+        return np.column_stack([np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)]) \
+            if xs else np.zeros((0,), dtype=float)
+
+
+def _sample_xy(segments, xs: list, ys: list) -> None:
+    """Append the vertices of :meth:`Loop.points` of ``segments`` to ``xs`` and ``ys``: each
+    line's start, each arc's start and its interior chord ends, each circle's chord ends
+    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords, mm)."""
+    from ..geometry.tessellate import segments_for
+    cos, sin, pi = math.cos, math.sin, math.pi
+    for s in segments:
+        if isinstance(s, Line):
+            xs.append(s.start[0])
+            ys.append(s.start[1])
+        elif isinstance(s, Arc):
+            cx, cy = s.center
+            r, a0, sw = s.radius, s.start_angle, s.sweep
+            n = max(1, segments_for(r, abs(sw)))
+            angles = [a0 + sw * i / n for i in range(n)]
+            xs += [cx + r * cos(a) for a in angles]
+            ys += [cy + r * sin(a) for a in angles]
+        else:
+            cx, cy = s.center
+            r = s.radius
+            n = segments_for(r)
+            sg = 1 if s.ccw else -1
+            angles = [sg * 2 * pi * i / n for i in range(n)]
+            xs += [cx + r * cos(a) for a in angles]
+            ys += [cy + r * sin(a) for a in angles]
 
 
 @dataclass
@@ -192,21 +208,20 @@ class Output:
         return sum(p.area for p in self.parts if p.kind == "solid")
 
     def bounds(self) -> tuple[float, float, float, float]:
-        xs, ys = [], []
+        """(x0, y0, x1, y1) in mm: the extent of every loop's and stroke's :meth:`Loop.points`
+        (and each open stroke's last end), or (0, 0, 1, 1) when there is nothing."""
+        xs: list = []
+        ys: list = []
         for p in self.parts:
             for lp in p.loops:
-                pts = lp.points()
-                if len(pts):
-                    xs += [pts[:, 0].min(), pts[:, 0].max()]
-                    ys += [pts[:, 1].min(), pts[:, 1].max()]
+                _sample_xy(lp.segments, xs, ys)
         for st in self.engrave:
-            pts = Loop(st.segments).points() if st.segments else np.zeros((0, 2))
-            ends = np.array([s.end for s in st.segments if not isinstance(s, Circle)] or
-                            np.zeros((0, 2)))
-            for q in (pts, ends):
-                if len(q):
-                    xs += [q[:, 0].min(), q[:, 0].max()]
-                    ys += [q[:, 1].min(), q[:, 1].max()]
+            _sample_xy(st.segments, xs, ys)
+            for s in st.segments:
+                if not isinstance(s, Circle):
+                    e = s.end
+                    xs.append(e[0])
+                    ys.append(e[1])
         if not xs:
             return (0.0, 0.0, 1.0, 1.0)
         return (min(xs), min(ys), max(xs), max(ys))
