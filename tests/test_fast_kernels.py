@@ -100,3 +100,28 @@ def test_points_and_bounds_equal_the_reference(loops, strokes):
                 ys += [q[:, 1].min(), q[:, 1].max()]
     ref = (min(xs), min(ys), max(xs), max(ys)) if xs else (0.0, 0.0, 1.0, 1.0)
     assert out.bounds() == ref
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.floats(-1e6, 1e6), min_size=1, max_size=30))
+def test_median_equals_numpy(xs):
+    from aidl_lang.output.part import _median
+    a = np.array(xs).reshape(-1, 1)
+    assert _median(a) == float(np.median(a))
+
+
+def test_render_imports_no_network_or_masked_array_modules(tmp_path):
+    """A cold `aidl render` of an example to SVG imports neither the old SVG library's
+    network stack (urllib.request, http.client, ssl) nor numpy.ma (np.median)."""
+    import subprocess
+    import sys
+    from conftest import ROOT
+    src = ROOT / "examples" / "telephone.aidl"
+    probe = ("import sys\nfrom aidl_lang.cli.main import main\n"
+             f"main(['render', {str(src)!r}, '-o', {str(tmp_path / 't.svg')!r}])\n"
+             "print('LOADED:' + ' '.join(m for m in ('svgwrite', 'urllib.request', 'http.client', 'ssl', "
+             "'numpy.ma') if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "t.svg").read_text().startswith("<svg ")
+    assert r.stdout.strip().splitlines()[-1] == "LOADED:", r.stdout

@@ -242,7 +242,7 @@ class _Circles:
         self.lo = self.c[:, :2] - self.c[:, 2:3] - 1e-3
         self.hi = self.c[:, :2] + self.c[:, 2:3] + 1e-3
         # a uniform grid over the circles' boxes, so that a loop looks at its neighbours only
-        self.cell = float(np.median(self.hi - self.lo)) if len(self.c) else 1.0
+        self.cell = _median(self.hi - self.lo) if len(self.c) else 1.0
         self.grid: dict[tuple[int, int], list[int]] = {}
         self.big: list[int] = []
         for i in range(len(self.c)):
@@ -276,6 +276,16 @@ class _Circles:
             idx = np.fromiter(cand, dtype=np.int64)
         m = np.all((self.hi[idx] >= lo) & (self.lo[idx] <= hi), axis=1)
         return self.c[idx[m]]
+
+
+def _median(a: np.ndarray) -> float:
+    """``float(np.median(a))`` over all entries, without ``np.median``'s import of
+    ``numpy.ma`` (10-15 ms of a cold render): the middle value, or the mean of the two."""
+    v = np.sort(np.asarray(a, dtype=float).ravel())
+    n = len(v)
+    if np.isnan(v[-1]):
+        return math.nan
+    return float(v[n // 2]) if n % 2 else float((v[n // 2 - 1] + v[n // 2]) / 2)
 
 
 def _max_step(r: np.ndarray) -> np.ndarray:
