@@ -459,11 +459,26 @@ def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
     return v, reason
 
 
+_BOUND: dict = {}
+
+
 def bind_variant(entry: Entry, npos: int, kwnames: list[str]):
     """Like :func:`choose_variant`, also giving the keyword renaming of :func:`rename_args`.
 
-    Returns (variant, {written: canonical}, None) or (None, {}, reason).
+    Returns (variant, {written: canonical}, None) or (None, {}, reason).  The answer depends
+    only on the (fixed) entry, ``npos`` and the keyword names, so it is remembered: the checker
+    and the interpreter ask it for every call (thousands in a 500-structure model).  The
+    returned renaming is shared: read it, do not change it.
     """
+    key = (entry.name, npos, tuple(kwnames))
+    got = _BOUND.get(key)
+    if got is None or got[0] is not entry:
+        got = (entry, _bind_variant(entry, npos, kwnames))
+        _BOUND[key] = got
+    return got[1]
+
+
+def _bind_variant(entry: Entry, npos: int, kwnames: list[str]):
     best, best_reason = None, None
     for v in entry.variants:
         names = [a.name for a in v]

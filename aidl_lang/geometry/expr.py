@@ -100,23 +100,47 @@ def as_const(x) -> float | None:
     return None
 
 
+def _lin(terms: dict, c: float) -> Lin:
+    """A :class:`Lin` from a fresh terms dict and a float constant, without ``__init__``
+    (the interpreter builds tens of thousands)."""
+    e = _new(Lin)
+    e.terms = terms
+    e.const = c
+    return e
+
+
+_new = object.__new__
+
+
 def add(a, b) -> Expr:
-    a, b = lift(a), lift(b)
+    if not isinstance(a, Expr):
+        a = Lin({}, float(a))
+    if not isinstance(b, Expr):
+        b = Lin({}, float(b))
     if isinstance(a, Lin) and isinstance(b, Lin):
+        bt = b.terms
+        if not bt:
+            return _lin(dict(a.terms), a.const + b.const)
         t = dict(a.terms)
-        for k, v in b.terms.items():
-            t[k] = t.get(k, 0.0) + v
-        return Lin(t, a.const + b.const)
+        get = t.get
+        for k, v in bt.items():
+            t[k] = get(k, 0.0) + v
+        return _lin(t, a.const + b.const)
     return Nl("add", (a, b))
 
 
 def mul(a, b) -> Expr:
-    a, b = lift(a), lift(b)
-    ca, cb = as_const(a), as_const(b)
-    if ca is not None and isinstance(b, Lin):
-        return Lin({k: v * ca for k, v in b.terms.items()}, b.const * ca)
-    if cb is not None and isinstance(a, Lin):
-        return Lin({k: v * cb for k, v in a.terms.items()}, a.const * cb)
+    if not isinstance(a, Expr):
+        a = Lin({}, float(a))
+    if not isinstance(b, Expr):
+        b = Lin({}, float(b))
+    la, lb = isinstance(a, Lin), isinstance(b, Lin)
+    ca = a.const if la and not a.terms else None
+    cb = b.const if lb and not b.terms else None
+    if ca is not None and lb:
+        return _lin({k: v * ca for k, v in b.terms.items()}, b.const * ca)
+    if cb is not None and la:
+        return _lin({k: v * cb for k, v in a.terms.items()}, a.const * cb)
     if ca == 0.0 or cb == 0.0:
         return const(0.0)
     return Nl("mul", (a, b))
