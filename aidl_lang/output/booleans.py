@@ -259,10 +259,13 @@ class Renderer:
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
-            for a, b in text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
-                                     g.data.get("valign", "baseline"), g.data.get("rotation", 0.0)):
-                out.lines.append(("drawing", np.array([p + a, p + b])))
-                out.strokes.append(("drawing", ("line", p + a, p + b), g))
+            segs = text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
+                                g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
+            if segs:      # every stroke moved to the position in one array operation
+                ab = p + np.asarray(segs, dtype=float)          # k x 2 (ends) x 2 (x, y)
+                for pts in ab:
+                    out.lines.append(("drawing", pts))
+                    out.strokes.append(("drawing", ("line", pts[0], pts[1]), g))
         elif g.kind == "Point":
             return
         elif g.kind == "Circle":

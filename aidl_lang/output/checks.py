@@ -302,7 +302,7 @@ def _edges(loops) -> tuple:
     if not polys:
         return (np.zeros(0),) * 4
     P = np.concatenate(polys)
-    Q = np.concatenate([np.roll(p, -1, axis=0) for p in polys])
+    Q = np.concatenate([np.concatenate([p[1:], p[:1]]) for p in polys])   # np.roll(p, -1)
     return P[:, 0], P[:, 1], Q[:, 0], Q[:, 1]
 
 
@@ -381,4 +381,5 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
 def _signed(poly) -> float:
     P = np.asarray(poly, dtype=float)
     x, y = P[:, 0], P[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
+                       - np.dot(y, np.concatenate([x[1:], x[:1]])))
