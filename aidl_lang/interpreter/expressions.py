@@ -17,10 +17,17 @@ from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
 from .common import (DEG, POISON, Scope, _Silent, _fmt_num, show)
 
 
+_HANDLERS: dict = {}      # (interpreter class, AST node class) -> the _e_<Node> function
+
+
 class Expressions:
     def eval(self, e, name: str | None = None):
-        m = getattr(self, "_e_" + type(e).__name__)
-        return m(e, name) if type(e) is A.Call else m(e)
+        t = type(e)
+        key = (type(self), t)
+        m = _HANDLERS.get(key)
+        if m is None:
+            m = _HANDLERS[key] = getattr(type(self), "_e_" + t.__name__)
+        return m(self, e, name) if t is A.Call else m(self, e)
 
     def _e_Num(self, e: A.Num):
         if not math.isfinite(e.value) or abs(e.value) > 1e15:
@@ -291,6 +298,8 @@ class Expressions:
     def _binop(self, e: A.BinOp):
         l, r = self.eval(e.left), self.eval(e.right)
         op = e.op
+        if type(l) is Q and type(r) is Q:         # the common case: two numbers
+            return self._q_op(op, l, r, e)
         if op == "+" and isinstance(l, str) and isinstance(r, str):
             self.check_size(len(l) + len(r), e.span, "a string")
             return l + r
@@ -313,6 +322,10 @@ class Expressions:
             r = Q.num(float(r))
         if not isinstance(l, Q) or not isinstance(r, Q):
             raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span)
+        return self._q_op(op, l, r, e)
+
+    def _q_op(self, op: str, l: Q, r: Q, e: A.BinOp):
+        """``l op r`` for two numbers (:class:`Q`): units checked, constants folded."""
         own = l.owners | r.owners
         if op in ("+", "-"):
             a, b, d = self._unify(l, r, e.span)
