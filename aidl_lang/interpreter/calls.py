@@ -20,6 +20,9 @@ from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonic
 from .common import (DEG, _a, _fmt_num, _src, show)
 
 
+_DIMS = {"length": LEN, "angle": ANG, "number": NUM}
+
+
 class Calls:
     def _callee(self, f):
         if isinstance(f, A.Name):
@@ -87,7 +90,7 @@ class Calls:
             if a.name in bound:
                 conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm, a.name)
             elif a.default is not None:      # registry defaults are in mm / radians
-                dim = {"length": LEN, "angle": ANG, "number": NUM}.get(a.type)
+                dim = _DIMS.get(a.type)
                 conv[a.name] = Q.num(a.default, dim) if dim else a.default
         for k, v in conv.items():
             self._check_magnitudes(v, spans.get(k, node.span), k)
@@ -205,59 +208,58 @@ class Calls:
                         hint="give a length unit such as `mm` or `in`")
 
     def _coerce(self, v, typ: str, span, fname: str, aname: str):
-        where = f"argument `{aname}` of `{fname}`"
         if typ == "any":
             return v
         if v is None and typ == "point":
             return None
         if typ in ("length", "angle", "number"):
             if not isinstance(v, Q):
-                raise EvalError("E0108", f"{where} must be {_a(typ)}, got {type_name(v)}", span,
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {type_name(v)}", span,
                                 hint=lookup(fname).signature())
-            want = {"length": LEN, "angle": ANG, "number": NUM}[typ]
+            want = _DIMS[typ]
             if v.dim == want:
                 return v
             if v.dim == NUM:
                 k = self.unit_scale if typ == "length" else DEG
                 return Q(lift(v.expr) * k, want, v.owners)
-            raise EvalError("E0109", f"{where} must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
+            raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
                             hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
                                                                      " such as `deg`" if typ == "angle" else ""))
         if typ == "point":
             return self._to_point(v, span)
         if typ == "points":
             if not isinstance(v, (list, tuple)):
-                raise EvalError("E0108", f"{where} must be a list of points, got {type_name(v)}", span)
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a list of points, got {type_name(v)}", span)
             return [self._to_point(p, span) for p in v]
         if typ == "bool":
             if not isinstance(v, bool):
-                raise EvalError("E0108", f"{where} must be true or false, got {type_name(v)}", span)
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be true or false, got {type_name(v)}", span)
             return v
         if typ == "string":
             if isinstance(v, Q) and v.const() is not None:
                 return _fmt_num(v.const())
             if not isinstance(v, str):
-                raise EvalError("E0108", f"{where} must be a string, got {type_name(v)}", span)
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a string, got {type_name(v)}", span)
             return v
         if typ == "line":
             if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Slot"):
                 return v
-            raise EvalError("E0108", f"{where} must be a Line, got {type_name(v)}", span,
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Line, got {type_name(v)}", span,
                             hint="rectangle edges are lines: `rect.top`, `rect.left`, ...")
         if typ == "circular":
             if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
                 return v
-            raise EvalError("E0108", f"{where} must be a Circle or Arc, got {type_name(v)}", span)
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Circle or Arc, got {type_name(v)}", span)
         if typ == "curve":
             if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Circle", "Arc"):
                 return v
-            raise EvalError("E0108", f"{where} must be a Line, Circle or Arc, got {type_name(v)}", span)
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Line, Circle or Arc, got {type_name(v)}", span)
         if typ == "geometry":
             if isinstance(v, (GeomRef, PV)):
                 return v
             if isinstance(v, (tuple, list)):
                 return self._to_point(v, span)
-            raise EvalError("E0108", f"{where} must be geometry, got {type_name(v)}", span)
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be geometry, got {type_name(v)}", span)
         if typ == "boxed":
             if isinstance(v, (GeomRef, StructRef, BBoxRef)):
                 return v
