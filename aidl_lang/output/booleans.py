@@ -14,7 +14,7 @@ solved model (absolute center and radius, the source of arc recovery in
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from ..records import dataclass, field
 
 import manifold3d as mf
 import numpy as np

@@ -23,7 +23,7 @@ millimetres, angles in radians, y up.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from ..records import dataclass, field
 
 import numpy as np
 

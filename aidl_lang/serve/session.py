@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from ..records import dataclass, field
 from pathlib import Path
 
 from .. import ast as A
