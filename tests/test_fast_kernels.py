@@ -110,18 +110,27 @@ def test_median_equals_numpy(xs):
     assert _median(a) == float(np.median(a))
 
 
-def test_render_imports_no_network_or_masked_array_modules(tmp_path):
-    """A cold `aidl render` of an example to SVG imports neither the old SVG library's
-    network stack (urllib.request, http.client, ssl) nor numpy.ma (np.median)."""
+def test_check_imports_no_lark_scipy_writers_or_masked_arrays(tmp_path):
+    """A cold `aidl check` imports neither Lark (the parser runs its cached table), SciPy, the
+    writers (svgwrite and its network stack), the Hershey package nor numpy.ma; a cold
+    `aidl render` to SVG imports svgwrite but not numpy.ma (np.median, np.unique)."""
     import subprocess
     import sys
     from conftest import ROOT
     src = ROOT / "examples" / "telephone.aidl"
-    probe = ("import sys\nfrom aidl_lang.cli.main import main\n"
-             f"main(['render', {str(src)!r}, '-o', {str(tmp_path / 't.svg')!r}])\n"
-             "print('LOADED:' + ' '.join(m for m in ('svgwrite', 'urllib.request', 'http.client', 'ssl', "
-             "'numpy.ma') if m in sys.modules))")
-    r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    assert (tmp_path / "t.svg").read_text().startswith("<svg ")
-    assert r.stdout.strip().splitlines()[-1] == "LOADED:", r.stdout
+    heavy = ("lark", "scipy", "svgwrite", "urllib.request", "HersheyFonts", "numpy.ma")
+
+    def loaded(argv):
+        probe = ("import sys\nfrom aidl_lang.cli.main import main\n"
+                 f"main({argv!r})\n"
+                 f"print('LOADED:' + ' '.join(m for m in {heavy!r} if m in sys.modules))")
+        r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        return r.stdout.strip().splitlines()[-1].split(":", 1)[1].split()
+    subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(src)],
+                   capture_output=True)         # the parse table and glyphs are cached now
+    assert loaded(["check", str(src)]) == []
+    assert loaded(["render", str(src), "-o", str(tmp_path / "t.svg")]) == ["svgwrite",
+                                                                           "urllib.request"]
+    assert (tmp_path / "t.svg").read_text().startswith("<?xml") or \
+        "<svg" in (tmp_path / "t.svg").read_text()[:200]
