@@ -14,6 +14,6 @@ import os
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
-from .main import main  # noqa: E402
+from .main import entry, main  # noqa: E402
 
-__all__ = ["main"]
+__all__ = ["entry", "main"]

@@ -1,6 +1,4 @@
 """``python -m aidl_lang.cli``: the same as the ``aidl`` command."""
-import sys
+from .main import entry
 
-from .main import main
-
-sys.exit(main())
+entry()
