@@ -17,6 +17,7 @@ against Lark's own parser.
 """
 from __future__ import annotations
 
+import gc
 import re
 import threading
 from pathlib import Path
@@ -664,7 +665,22 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     """Parse ``source`` (from ``path``) into a :class:`Program`; syntax errors go to ``sink``.
 
     On syntax errors the returned program holds the statements that did parse.
+
+    The cyclic garbage collector is paused while parsing: the parse makes tens of thousands
+    of tokens, tuples and nodes but no reference cycles, and the collector's passes over them
+    were a quarter of the time (a 178 KB program: 358 -> 265 ms).
     """
+    paused = gc.isenabled()
+    if paused:
+        gc.disable()
+    try:
+        return _parse(source, path, sink)
+    finally:
+        if paused:
+            gc.enable()
+
+
+def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     sink.sources[path] = source
     if "\x00" in source:
         source = source.replace("\x00", " ")
