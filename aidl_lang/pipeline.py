@@ -151,19 +151,29 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     return Compiled(sink, model, result, after_solve(sink, model, min_wall))
 
 
-def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL) -> Drawing | None:
+def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
+                shape_checks: bool = True) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
     preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
     checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
-    or ``None`` when the extent check failed (nothing absurd reaches a writer)."""
+    or ``None`` when the extent check failed (nothing absurd reaches a writer).
+    ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
+    preview runs them after the picture is on the page (:func:`shape_checks`)."""
     if not check_extent(sink, model):
         return None
     check_branches(sink, model)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore", RuntimeWarning)     # degenerate sizes: no numpy noise
         drawing = render_model(model)
-    check_drawing(drawing, sink, min_wall)
+    if shape_checks:
+        check_drawing(drawing, sink, min_wall)
     return drawing
+
+
+def shape_checks(drawing: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) -> None:
+    """The geometry checks on the final shape (W0402, W0501-W0507) of a :class:`Drawing` made
+    by ``after_solve(..., shape_checks=False)``."""
+    check_drawing(drawing, sink, min_wall)
 
 
 def _empty_drawing(program, model: Model) -> bool:

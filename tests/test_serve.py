@@ -281,6 +281,47 @@ solid lock {
     v = s.load()
     assert v["ok"] and "W0501" not in codes(v)
     v = s.set_params({"shackle_y": "14mm"})
-    assert v["ok"] and "W0501" in codes(v)
+    # the picture first, its geometry checks right after (update_checks, same version)
+    assert v["ok"] and "W0501" not in codes(v)
+    checked = s.update_checks()
+    assert checked["version"] == v["version"] and "W0501" in codes(checked)
+    assert s.update_checks() is None                      # once
     c = compile_source(f.read_text(), str(f), {"shackle_y": "14mm"})
-    assert sorted(d.code for d in c.sink.items) == sorted(codes(v))
+    assert sorted(d.code for d in c.sink.items) == sorted(codes(checked))
+    # a newer compile (here a reload of the file) makes an older picture's checks moot
+    s.set_params({"shackle_y": "14mm"})
+    s.load()
+    assert s.update_checks() is None
+
+
+def test_websocket_sends_the_picture_then_its_shape_checks(tmp_path):
+    """Over the page's websocket: the slider's picture comes first, its geometry checks (here
+    W0501) in a second view of the same version once the slider rests."""
+    from starlette.testclient import TestClient
+    from aidl_lang.serve.app import create_app
+    f = tmp_path / "lock.aidl"
+    f.write_text("""units mm
+param shackle_y = 30 mm
+solid lock {
+    solid body {
+        b = Rectangle(center=(0, 0), width=40, height=30)
+        hole key {
+            k = Circle(center=(0, 8), radius=3)
+        }
+    }
+    solid shackle {
+        s = Rectangle(center=(0, shackle_y), width=30, height=8)
+    }
+}
+""")
+    host = {"host": f"127.0.0.1:{PORT}"}
+    with TestClient(create_app(f, PORT, watch=False), base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
+            json.loads(ws.receive_text())
+            ws.send_text(json.dumps({"type": "set", "id": 1, "values": {"shackle_y": "14mm"}}))
+            picture = json.loads(ws.receive_text())
+            assert picture["id"] == 1 and picture["ok"]
+            assert "W0501" not in [d["code"] for d in picture["diagnostics"]]
+            checked = json.loads(ws.receive_text())
+            assert checked["version"] == picture["version"] and checked["svg"] == picture["svg"]
+            assert "W0501" in [d["code"] for d in checked["diagnostics"]]

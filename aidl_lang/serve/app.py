@@ -34,6 +34,7 @@ from starlette.websockets import WebSocket, WebSocketDisconnect
 from .. import output
 from .session import Session
 
+CHECKS_DELAY = 0.05     # s a slider must rest before its picture's geometry checks run
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "svg": "image/svg+xml", "png": "image/png",
          "dxf": "application/dxf", "stl": "model/stl", "json": "application/json",
@@ -95,6 +96,7 @@ class Hub:
         self.session = session
         self.lock = asyncio.Lock()
         self.clients: set[WebSocket] = set()
+        self.tasks: set[asyncio.Task] = set()      # pending shape checks (kept referenced)
 
     async def reload(self) -> dict:
         async with self.lock:
@@ -110,6 +112,16 @@ class Hub:
     async def set_params(self, values: dict) -> dict:
         async with self.lock:
             return await run_in_threadpool(self.session.set_params, values)
+
+    async def shape_checks(self) -> None:
+        """After a slider's picture was sent: its geometry checks, once the slider has rested
+        for :data:`CHECKS_DELAY` s (a drag does not queue a check per step), then broadcast
+        when they add diagnostics."""
+        await asyncio.sleep(CHECKS_DELAY)
+        async with self.lock:
+            view = await run_in_threadpool(self.session.update_checks)
+        if view is not None:
+            await self.broadcast(view)
 
     async def broadcast(self, view: dict, skip=None) -> None:
         msg = json.dumps({"type": "view", **view})
@@ -189,6 +201,9 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                     view = await hub.set_params(msg["values"])
                     await ws.send_text(json.dumps({"type": "view", "id": msg.get("id"), **view}))
                     await hub.broadcast(view, skip=ws)
+                    checks = asyncio.create_task(hub.shape_checks())
+                    hub.tasks.add(checks)
+                    checks.add_done_callback(hub.tasks.discard)
         except (WebSocketDisconnect, json.JSONDecodeError, RuntimeError):
             pass
         finally:

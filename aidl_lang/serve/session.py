@@ -32,7 +32,7 @@ from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
 from ..output import to_svg
 from ..parser import parse
-from ..pipeline import after_solve, report_failure
+from ..pipeline import after_solve, report_failure, shape_checks
 from ..solver import Solver, run
 from ..solver.system import build_rows
 from ..typecheck import check
@@ -99,6 +99,7 @@ class Session:
         self._row_keys: list[str] | None = None
         self.version = 0                          # bumps on every load / set_params
         self._dof_pending: Solver | None = None
+        self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
         self.last: dict = {}                      # timings and warm/cold of the last compile
 
     # ------------------------------------------------------------------ public
@@ -160,10 +161,28 @@ class Session:
         if self.program is None:
             return self.view()
         self.values = {str(k): str(v) for k, v in values.items()}
-        res = self._compile(self.values)
+        res = self._compile(self.values, shape_checks=False)
         if res.fctx is not None:
             self.params = self._params(res.fctx, self.values)
-        return self._publish(res, t0)
+        view = self._publish(res, t0)
+        self._checks_pending = (self.version, res.drawing) if res.drawing is not None else None
+        return view
+
+    def update_checks(self) -> dict | None:
+        """The geometry checks (W0402, W0501-W0507: warnings) of the picture the last
+        :meth:`set_params` published, run after that picture was sent, so a slider move shows
+        its picture without waiting for them: the view with their diagnostics added (same
+        version), or ``None`` when they found nothing or a newer compile came first."""
+        pending, self._checks_pending = self._checks_pending, None
+        if pending is None or pending[0] != self.version:
+            return None
+        sink = DiagnosticSink()
+        sink.sources.update(self.sources)
+        shape_checks(pending[1], sink)
+        if not sink.items:
+            return None
+        self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
+        return self.view()
 
     def drawing(self, values: dict[str, str]):
         """A fresh, cold compile with ``values`` for downloads: ``(drawing, title)`` (a
@@ -184,7 +203,7 @@ class Session:
 
     # ------------------------------------------------------------------ compile
     def _compile(self, values: dict[str, str], keep_warm: bool = True,
-                 drawing: bool = False) -> Result:
+                 drawing: bool = False, shape_checks: bool = True) -> Result:
         t = {}
         t0 = time.perf_counter()
         sink = DiagnosticSink()
@@ -211,13 +230,13 @@ class Session:
             return res
         res.solver, res.warm, res.model = solver, warm, model
         t2 = time.perf_counter()
-        d = after_solve(sink, model)             # the same checks as `aidl check`
+        d = after_solve(sink, model, shape_checks=shape_checks)   # as `aidl check` does
         t["render_ms"] = _ms(t2)
         if d is None:
             res.timings = t
             return res
+        res.drawing, res.title = d, model.root.name
         if drawing:
-            res.drawing, res.title = d, model.root.name
             res.ok = not sink.has_errors
             return res
         t3 = time.perf_counter()
