@@ -4,7 +4,8 @@ The standard library's ``dataclasses.dataclass`` costs about 0.4-0.8 ms per clas
 ``exec`` calls, ``inspect.signature`` for a docstring, ABC bookkeeping) and importing
 ``dataclasses`` pulls in ``inspect``; the ~75 record classes a cold ``aidl check`` defines cost
 30-60 ms of its 0.2 s target (issue 12, measured by wrapping ``dataclasses.dataclass``).
-:func:`dataclass` here makes the same methods with one ``compile`` per class.
+:func:`dataclass` here makes the same methods with one small ``compile`` per class (the
+``__init__``; the other methods are closures over the field names).
 
 Supported, with the standard library's meaning: fields from the class's own annotations after
 those of record base classes (a redeclared field keeps its place), class-attribute defaults,
@@ -18,6 +19,7 @@ and ``dataclasses.fields()`` on these classes (use :func:`fields`).
 """
 from __future__ import annotations
 
+import operator
 import threading
 
 __all__ = ["dataclass", "field", "fields", "FrozenInstanceError"]
@@ -105,24 +107,6 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
         else:
             body.append(f"  self.{name} = {value}")
     src = [f"def __init__(self, {', '.join(params)}):"] + (body or ["  pass"])
-    shown = ", ".join(f"{n}={{self.{n}!r}}" for n in field_names)
-    src.append(f"def __repr__(self):\n  return f'{{self.__class__.__qualname__}}({shown})'")
-    tup = "(" + "".join(f"self.{n}," for n in field_names) + ")"
-    if eq:
-        other = tup.replace("self.", "other.")
-        src.append(f"def __eq__(self, other):\n  if other.__class__ is self.__class__:\n"
-                   f"    return {tup} == {other}\n  return NotImplemented")
-    if frozen:
-        src.append("def __setattr__(self, name, value):\n"
-                   "  if type(self) is _cls or name in _cls.__record_fields__:\n"
-                   "    raise _Frozen(f'cannot assign to field {name!r}')\n"
-                   "  super(_cls, self).__setattr__(name, value)")
-        src.append("def __delattr__(self, name):\n"
-                   "  if type(self) is _cls or name in _cls.__record_fields__:\n"
-                   "    raise _Frozen(f'cannot delete field {name!r}')\n"
-                   "  super(_cls, self).__delattr__(name)")
-        if eq:
-            src.append(f"def __hash__(self):\n  return hash({tup})")
     exec(compile("\n".join(src), f"<record {cls.__qualname__}>", "exec"), ns)
 
     if slots:
@@ -147,27 +131,69 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
     cls.__record_fields__ = field_names
     cls.__record_defaults__ = {n: d for n, d in names.items() if d is not _MISSING}
     cls.__match_args__ = field_names
+    # Only __init__ is compiled (it is the hot one); the other methods are closures over the
+    # field tuple, the same for every class (compiling them was half of a record's cost).
+    methods = _methods(cls, field_names, eq, frozen)
     explicit_hash = cls.__dict__.get("__hash__", None) is not None
-    for fn in ("__init__", "__eq__", "__setattr__", "__delattr__", "__hash__"):
-        if fn not in ns:
-            continue
-        if fn in ("__init__", "__eq__") and fn in cls.__dict__:
+    methods["__init__"] = ns["__init__"]
+    for fn, f in methods.items():
+        if fn in ("__init__", "__eq__", "__repr__") and fn in cls.__dict__:
             continue                           # written in the class body: kept
         if fn == "__hash__" and explicit_hash:
             continue
-        f = ns[fn]
         f.__qualname__ = f"{cls.__qualname__}.{fn}"
         setattr(cls, fn, f)
-    if "__repr__" not in cls.__dict__:
-        r = _guard(ns["__repr__"])
-        r.__qualname__ = f"{cls.__qualname__}.__repr__"
-        cls.__repr__ = r
     if eq and not frozen and not explicit_hash:
         cls.__hash__ = None
     for n, d in names.items():                 # class attributes keep plain defaults only
         if isinstance(d, _Factory) and n in cls.__dict__ and not slots:
             delattr(cls, n)
     return cls
+
+
+def _methods(cls, field_names: tuple, eq: bool, frozen: bool) -> dict:
+    """``__repr__`` and, per the options, ``__eq__``, ``__hash__``, ``__setattr__`` and
+    ``__delattr__`` of a record class, with the standard library's meaning."""
+    if len(field_names) > 1:
+        key = operator.attrgetter(*field_names)           # the field tuple
+    elif field_names:
+        one = operator.attrgetter(field_names[0])
+
+        def key(obj):
+            return (one(obj),)
+    else:
+        def key(obj):
+            return ()
+    getters = [(n, operator.attrgetter(n)) for n in field_names]
+
+    def __repr__(self):
+        inner = ", ".join(f"{n}={g(self)!r}" for n, g in getters)
+        return f"{self.__class__.__qualname__}({inner})"
+    out = {"__repr__": _guard(__repr__)}
+    if eq:
+        def __eq__(self, other):
+            if other.__class__ is self.__class__:
+                return key(self) == key(other)
+            return NotImplemented
+        out["__eq__"] = __eq__
+    if frozen:
+        names = frozenset(field_names)
+
+        def __setattr__(self, name, value):
+            if type(self) is cls or name in names:
+                raise FrozenInstanceError(f"cannot assign to field {name!r}")
+            super(cls, self).__setattr__(name, value)
+
+        def __delattr__(self, name):
+            if type(self) is cls or name in names:
+                raise FrozenInstanceError(f"cannot delete field {name!r}")
+            super(cls, self).__delattr__(name)
+        out["__setattr__"], out["__delattr__"] = __setattr__, __delattr__
+        if eq:
+            def __hash__(self):
+                return hash(key(self))
+            out["__hash__"] = __hash__
+    return out
 
 
 def _slot_setter(cls, name: str):
