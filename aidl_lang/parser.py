@@ -225,10 +225,11 @@ class _Tables:
       order and priorities); ``ignore`` / ``newline``: terminal names skipped / counted for
       lines; ``keywords``: per terminal (``NAME``), the whole-match patterns that retype a
       token as a keyword (Lark's ``UnlessCallback``);
-    - ``states``: per LALR state, terminal or rule name -> the next state (an ``int``: shift or
-      goto) or a reduction ``(size, rule name, callback)``, ``(None, rule name, None)`` for a
-      unit rule whose child stays as it is; ``start`` / ``end``: the first and accepting state
-      of each start symbol (``start``, ``expr``)."""
+    - ``states``: per LALR state, terminal or rule name -> an ``int``: the next state (shift or
+      goto) when >= 0, else ``~i`` for reduction ``i``; ``reductions``: per rule
+      ``(size, rule name, callback)``, ``(None, rule name, None)`` for a unit rule whose child
+      stays as it is; ``start`` / ``end``: the first and accepting state of each start symbol
+      (``start``, ``expr``).  The rows are the JSON's own dicts, used as they are loaded."""
 
     def __init__(self, data: dict):
         lx = data["lexer"]
@@ -238,9 +239,8 @@ class _Tables:
         self.keywords = {t: [re.compile(p, f) for p, f in pats]
                          for t, pats in lx["keywords"].items()}
         ps = data["parser"]
-        reductions = [_reduction(*spec) for spec in ps["rules"]]
-        self.states = [{sym: (a if a >= 0 else reductions[-a - 1]) for sym, a in row.items()}
-                       for row in ps["states"]]
+        self.reductions = [_reduction(*spec) for spec in ps["rules"]]
+        self.states = ps["states"]
         self.start, self.end = ps["start"], ps["end"]
         self.units: dict = {}           # see _unit_chain
 
@@ -427,7 +427,7 @@ def _run_lalr(text: str, start: str):
     :class:`UnexpectedCharacters` (a lexer error only once the parser has taken every token
     before it, as a streaming lexer would)."""
     tb = _tables()
-    states, start_states, end_states = tb.states, tb.start, tb.end
+    states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
     raw, lex_error = _lex(text)
     tokens = _postlex(raw, lex_error is None)
     state_stack = [start_states[start]]
@@ -441,16 +441,16 @@ def _run_lalr(text: str, start: str):
                 act = states[state_stack[-1]][ttype]
             except KeyError:
                 raise UnexpectedToken(token, _expected(states[state_stack[-1]]))
-            if type(act) is int:
+            if act >= 0:
                 push_state(act)
                 push_value(token)
                 break
-            size, origin, cb = act
+            size, origin, cb = reductions[~act]
             if size is None:                 # unit rules: same value, new state
                 key = (state_stack[-2], state_stack[-1], ttype)
                 top = units.get(key)
                 if top is None:
-                    top = units[key] = _unit_chain(states, state_stack[-2], origin, ttype)
+                    top = units[key] = _unit_chain(tb, state_stack[-2], origin, ttype)
                 state_stack[-1] = top
                 continue
             if size:
@@ -471,9 +471,9 @@ def _run_lalr(text: str, start: str):
             act = states[state_stack[-1]]["$END"]
         except KeyError:
             raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
-        if type(act) is int:
+        if act >= 0:
             raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
-        size, origin, cb = act
+        size, origin, cb = reductions[~act]
         if size is None:
             state_stack[-1] = states[state_stack[-2]][origin]
         else:
@@ -489,18 +489,18 @@ def _run_lalr(text: str, start: str):
             return value_stack[-1]
 
 
-def _unit_chain(states: list, below: int, origin: str, ttype: str) -> int:
+def _unit_chain(tb: _Tables, below: int, origin: str, ttype: str) -> int:
     """The state a run of unit reductions (``?sum: product``...) ends in, looking at a
     ``ttype`` token with ``below`` under the top of the stack: each one swaps the top for
     ``below``'s goto on the rule's name, until the action on ``ttype`` is not a unit
     reduction.  Remembered per ``(below, top, ttype)`` in :attr:`_Tables.units`, since the
     expression grammar's precedence levels make most reductions unit ones."""
     while True:
-        top = states[below][origin]
-        act = states[top].get(ttype)
-        if type(act) is not tuple or act[0] is not None:
+        top = tb.states[below][origin]
+        act = tb.states[top].get(ttype)
+        if act is None or act >= 0 or tb.reductions[~act][0] is not None:
             return top
-        origin = act[1]
+        origin = tb.reductions[~act][1]
 
 
 def _expected(row: dict) -> set:
