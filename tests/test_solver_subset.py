@@ -17,7 +17,7 @@ from benchmarks.families import hierarchy
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 ARRAYS = ("aff_rows", "a_row", "a_col", "a_val", "b", "l_row", "l_col", "l_val", "lconst",
           "leaf_node", "nl_rows", "nl_roots", "op", "a0", "a1", "level", "root_of",
-          "root_choice")
+          "root_choice", "marg")
 
 
 def _solver(src: str, name: str = "t.aidl") -> Solver:

@@ -228,11 +228,12 @@ class Solver:
             if np.array_equal(new, choices):
                 # an inequality made active may be what blocks the solve: release them all
                 # once (the next round's check re-activates any that end up violated)
-                if released or not len(sign_choice) or new[sign_choice].all():
+                # (a SIGN row is 2 min(s, 0): branch 1, the 0, is the inactive bound)
+                if released or not len(sign_choice) or bool(np.all(new[sign_choice] == 1)):
                     break
                 released = True
                 new = new.copy()
-                new[sign_choice] = True
+                new[sign_choice] = 1
             choices = new
         self.last_x = x
         if att.ok:

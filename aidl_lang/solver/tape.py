@@ -13,7 +13,8 @@ they are compiled once into a :class:`Tape`:
   adjoint, and ``J = A + R diag(adjoint) L`` is refilled into a sparsity pattern that is built
   once per choice of unknown columns (:meth:`Tape.pattern`).
 
-``min``/``max`` become binary selection nodes whose branch is *frozen* for a Newton solve
+``min``/``max`` (any number of arguments) become one selection node each, whose branch (the
+position of the chosen argument) is *frozen* for a Newton solve
 (paper, appendix "Solver Details", *Iterated Newton solve for branching expressions*):
 :meth:`Tape.choose` picks the active branches at a point, :meth:`Tape.evaluate` with those
 choices evaluates the pruned system, and with ``choices=None`` the true min/max.
@@ -79,11 +80,28 @@ class TapeError(ValueError):
 class _Group:
     op: int
     idx: np.ndarray       # node indices computed by this group
-    a0: np.ndarray        # first argument node of each
-    a1: np.ndarray        # second argument node (== a0 for unary ops)
+    a0: np.ndarray        # first argument node of each (MIN/MAX: start of its run of marg)
+    a1: np.ndarray        # second argument node (== a0 for unary ops; MIN/MAX: arity)
     uniq0: bool           # a0 has no repeated node (plain fancy-index accumulation is exact)
     uniq1: bool
     sel: np.ndarray | None = None   # for MIN/MAX: position of each node in the choices array
+    args: np.ndarray | None = None  # for MIN/MAX: argument nodes of all its nodes, flattened
+    starts: np.ndarray | None = None  # for MIN/MAX: where each node's arguments start in args
+    seg: np.ndarray | None = None   # for MIN/MAX: the node (0..len(idx)) of each argument
+
+
+def _pick(g: _Group, vals: np.ndarray) -> np.ndarray:
+    """The position (0-based, per node) of the first smallest (MIN) or largest (MAX) of each
+    node's arguments ``vals`` (flattened like ``g.args``): the branch a chain of binary
+    selections ``q if q < p else p`` picks (ties go to the earlier argument).  A node with a
+    NaN argument picks its first argument."""
+    red = np.minimum if g.op == MIN else np.maximum
+    m = red.reduceat(vals, g.starts)
+    n = len(vals)
+    pos = np.where(vals == m[g.seg], np.arange(n), n)
+    first = np.minimum.reduceat(pos, g.starts)
+    first = np.where(first == n, g.starts, first)
+    return first - g.starts
 
 
 class Tape:
@@ -103,6 +121,7 @@ class Tape:
         nodes = []                            # (op, arg0, arg1, row) of every node
         level = []                            # depth of every node (leaves: 0)
         leaf_node = []                        # node index of each leaf
+        marg = []                             # argument nodes of every min/max, in order
         nl_rows, nl_roots = [], []
         node_add, lev_add, leaf_add = nodes.append, level.append, leaves.append
         leaf_node_add = leaf_node.append
@@ -121,21 +140,13 @@ class Tape:
             code = binary_or_unary.get(item.op)
             if code is None:
                 raise TapeError(f"unknown operator `{item.op}`")
-            if code in (MIN, MAX) and len(args) > 2:
-                # n-ary min/max: a balanced tree of binary selections
-                while len(args) > 1:
-                    nxt = []
-                    for j in range(0, len(args) - 1, 2):
-                        p, q = args[j], args[j + 1]
-                        lp_, lq_ = level[p], level[q]
-                        nxt.append(len(nodes))
-                        node_add((code, p, q, r))
-                        lev_add((lp_ if lp_ > lq_ else lq_) + 1)
-                    if len(args) % 2:
-                        nxt.append(args[-1])
-                    args = nxt
-                memo[id(item)] = args[0]
-                return args[0]
+            if code in (MIN, MAX):
+                # n-ary min/max: one node whose arguments are a run of ``marg``
+                memo[id(item)] = n = len(nodes)
+                node_add((code, len(marg), len(args), r))
+                marg.extend(args)
+                lev_add(max([level[a] for a in args]) + 1)
+                return n
             if len(args) == 1:
                 p = q = args[0]
             elif len(args) == 2:
@@ -205,10 +216,11 @@ class Tape:
                     l_row, l_col, l_val, lconst, np.asarray(leaf_node, dtype=np.int64),
                     np.asarray(nl_rows, dtype=np.int64), np.asarray(nl_roots, dtype=np.int64),
                     na[:, 0].copy(), na[:, 1].copy(), na[:, 2].copy(),
-                    np.asarray(level, dtype=np.int64), na[:, 3].copy())
+                    np.asarray(level, dtype=np.int64), na[:, 3].copy(),
+                    np.asarray(marg, dtype=np.int64))
 
     def _setup(self, aff_rows, a_row, a_col, a_val, b, l_row, l_col, l_val, lconst, leaf_node,
-               nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of) -> None:
+               nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of, marg) -> None:
         """Store the flattened arrays and group the interior nodes by (level, operator)."""
         self.aff_rows = aff_rows
         # sparse rows kept as COO arrays: products are np.bincount (no scipy overhead)
@@ -219,6 +231,7 @@ class Tape:
         self.nl_rows, self.nl_roots = nl_rows, nl_roots
         self.op, self.a0, self.a1, self.level = op_a, a0_a, a1_a, lev
         self.root_of = root_of
+        self.marg = marg
         # group interior nodes by (level, op)
         self.groups: list[_Group] = []
         inner = np.flatnonzero(op_a != LEAF)
@@ -229,11 +242,21 @@ class Tape:
             keys = lev[inner] * 64 + op_a[inner]
             cuts = np.flatnonzero(np.diff(keys)) + 1
             for chunk in np.split(inner, cuts):
+                op = int(op_a[chunk[0]])
                 g0, g1 = a0_a[chunk], a1_a[chunk]
-                g = _Group(int(op_a[chunk[0]]), chunk, g0, g1, _distinct(g0), _distinct(g1))
-                if g.op in (MIN, MAX):
+                if op in (MIN, MAX):
+                    g = _Group(op, chunk, g0, g1, False, True)
+                    # the group's arguments, flattened: each node's run of ``marg``
+                    start = np.cumsum(g1) - g1
+                    g.starts = start
+                    g.args = marg[np.arange(int(g1.sum()), dtype=np.int64)
+                                  + np.repeat(g0 - start, g1)]
+                    g.seg = np.repeat(np.arange(len(chunk), dtype=np.int64), g1)
+                    g.uniq0 = _distinct(g.args)
                     g.sel = np.arange(self.n_choices, self.n_choices + len(chunk))
                     self.n_choices += len(chunk)
+                else:
+                    g = _Group(op, chunk, g0, g1, _distinct(g0), _distinct(g1))
                 self.groups.append(g)
         # the choice index of each row whose top node is a min/max (-1 otherwise)
         self.root_choice = -np.ones(self.n_rows, dtype=np.int64)
@@ -266,41 +289,63 @@ class Tape:
         kidx, kd, kn = _take(st["aff"], rows)
         aidx, _, an = _take(st["aent"], rows)
         ridx, _, rn = _take(st["nl"], rows)
+        midx, md, mn = _take(st["marg"], rows)
         pos = np.arange(len(rows), dtype=np.int64)
         op = self.op[nidx]
-        shift = np.where(op == LEAF, np.repeat(ld, nn), np.repeat(nd, nn))
+        shift = np.repeat(nd, nn)
+        mm = (op == MIN) | (op == MAX)
+        shift0 = np.where(op == LEAF, np.repeat(ld, nn), np.where(mm, np.repeat(md, nn), shift))
+        shift1 = np.where(op == LEAF, shift0, np.where(mm, 0, shift))
         t._setup(np.repeat(pos, kn), self.a_row[aidx] + np.repeat(kd, an), self.a_col[aidx],
                  self.a_val[aidx], self.b[kidx], self.l_row[eidx] + np.repeat(ld, en),
                  self.l_col[eidx], self.l_val[eidx], self.lconst[lidx],
                  self.leaf_node[lidx] + np.repeat(nd, ln), np.repeat(pos, rn),
-                 self.nl_roots[ridx] + np.repeat(nd, rn), op, self.a0[nidx] + shift,
-                 self.a1[nidx] + shift, self.level[nidx], np.repeat(pos, nn))
+                 self.nl_roots[ridx] + np.repeat(nd, rn), op, self.a0[nidx] + shift0,
+                 self.a1[nidx] + shift1, self.level[nidx], np.repeat(pos, nn),
+                 self.marg[midx] + np.repeat(nd, mn))
         return t
 
     def _starts(self) -> dict:
         """Where each row's block starts in every per-row array (length ``n_rows + 1``):
-        nodes, leaves, leaf entries, affine rows, affine entries, nonlinear roots.  A compile
+        nodes, leaves, leaf entries, affine rows, affine entries, nonlinear roots, min/max
+        arguments.  A compile
         appends each row's items together and in row order, so each array is sorted by row."""
         st = self.__dict__.get("_row_starts")
         if st is None:
             r = np.arange(self.n_rows + 1)
             leaf = np.searchsorted(self.root_of[self.leaf_node], r)
             aff = np.searchsorted(self.aff_rows, r)
+            mm = np.flatnonzero((self.op == MIN) | (self.op == MAX))
+            marg_row = np.repeat(self.root_of[mm], self.a1[mm])
             st = self._row_starts = {
                 "node": np.searchsorted(self.root_of, r), "leaf": leaf,
                 "lent": np.searchsorted(self.l_row, leaf), "aff": aff,
-                "aent": np.searchsorted(self.a_row, aff), "nl": np.searchsorted(self.nl_rows, r)}
+                "aent": np.searchsorted(self.a_row, aff), "nl": np.searchsorted(self.nl_rows, r),
+                "marg": np.searchsorted(marg_row, r)}
         return st
 
     # ------------------------------------------------------------------ evaluation
-    def _forward(self, x: np.ndarray, choices: np.ndarray | None):
+    def _forward(self, x: np.ndarray, choices: np.ndarray | None,
+                 record: np.ndarray | None = None):
+        """Node values at ``x``; min/max at the branches ``choices``, or the true min/max
+        (then, if ``record`` is given, each one's branch is written into it)."""
         v = np.empty(self.n_nodes)
         if len(self.leaf_node):
             v[self.leaf_node] = np.bincount(self.l_row, weights=self.l_val * x[self.l_col],
                                             minlength=len(self.lconst)) + self.lconst
         for g in self.groups:
-            p, q = v[g.a0], v[g.a1]
             o = g.op
+            if o == MIN or o == MAX:
+                vals = v[g.args]
+                if choices is not None:
+                    pick = choices[g.sel]
+                else:
+                    pick = _pick(g, vals)
+                    if record is not None:
+                        record[g.sel] = pick
+                v[g.idx] = vals[g.starts + pick]
+                continue
+            p, q = v[g.a0], v[g.a1]
             if o == ADD:
                 r = p + q
             elif o == MUL:
@@ -312,10 +357,6 @@ class Tape:
                     r = np.power(p, q)
             elif o == ATAN2:
                 r = np.arctan2(p, q)
-            elif o in (MIN, MAX):
-                pick = choices[g.sel] if choices is not None else (
-                    (q < p) if o == MIN else (q > p))
-                r = np.where(pick, q, p)
             elif o == SIN:
                 r = np.sin(p)
             elif o == COS:
@@ -359,15 +400,11 @@ class Tape:
         return (F, v) if nodes else F
 
     def choose(self, x: np.ndarray) -> np.ndarray:
-        """The active branch of every min/max at ``x`` (True = second argument)."""
-        ch = np.zeros(self.n_choices, dtype=bool)
-        if not self.n_choices:
-            return ch
-        v = self._forward(x, None)
-        for g in self.groups:
-            if g.sel is not None:
-                p, q = v[g.a0], v[g.a1]
-                ch[g.sel] = (q < p) if g.op == MIN else (q > p)
+        """The active branch of every min/max at ``x``: the position of its chosen argument
+        (0 = first; the first smallest for min, the first largest for max), int64."""
+        ch = np.zeros(self.n_choices, dtype=np.int64)
+        if self.n_choices:
+            self._forward(x, None, record=ch)
         return ch
 
     def _adjoints(self, v: np.ndarray, choices) -> np.ndarray:
@@ -375,8 +412,16 @@ class Tape:
         adj[self.nl_roots] = 1.0
         for g in reversed(self.groups):
             w = adj[g.idx]
-            p, q = v[g.a0], v[g.a1]
             o = g.op
+            if o == MIN or o == MAX:
+                pick = choices[g.sel] if choices is not None else _pick(g, v[g.args])
+                chosen = g.args[g.starts + pick]
+                if g.uniq0:
+                    adj[chosen] += w
+                else:
+                    np.add.at(adj, chosen, w)
+                continue
+            p, q = v[g.a0], v[g.a1]
             d1 = None
             if o == ADD:
                 d0, d1 = w, w
@@ -394,10 +439,6 @@ class Tape:
                 r2 = p * p + q * q
                 r2 = np.where(r2 == 0.0, _TINY, r2)
                 d0, d1 = w * q / r2, -w * p / r2
-            elif o in (MIN, MAX):
-                pick = choices[g.sel] if choices is not None else (
-                    (q < p) if o == MIN else (q > p))
-                d0, d1 = np.where(pick, 0.0, w), np.where(pick, w, 0.0)
             else:
                 if o == SIN:
                     d = np.cos(p)
