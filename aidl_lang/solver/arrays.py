@@ -3,10 +3,32 @@
 :func:`unique` is ``np.unique`` for 1-D integer arrays without its masked-array test: NumPy's
 ``np.unique`` asks ``np.ma.is_masked`` and so imports ``numpy.ma`` (about 15 ms) on a cold
 ``aidl check``.
+
+:func:`gc_paused` holds Python's cyclic garbage collector off while the rows and the tape are
+built: those phases allocate hundreds of thousands of small acyclic objects (expression nodes,
+tuples, dicts), and each allocation burst triggered full collections that traversed the whole
+model (measured: about half of ``build_rows`` on the 500-structure model, ``docs/solver.md``).
 """
 from __future__ import annotations
 
+import gc
+from contextlib import contextmanager
+
 import numpy as np
+
+
+@contextmanager
+def gc_paused():
+    """Disable the cyclic garbage collector inside the block (reference counting still frees
+    everything acyclic); restores the previous state, also on an exception.  Nested use is
+    fine: only the outermost block re-enables it."""
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
 
 
 def unique(a) -> np.ndarray:

@@ -19,6 +19,7 @@ from ..records import dataclass, field
 
 import numpy as np
 
+from .arrays import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
 from ..geometry.expr import Lin, add, func, mul, var
 from ..geometry.model import Constraint, Model
@@ -63,6 +64,11 @@ class Rows:
 
 def build_rows(model: Model, x: np.ndarray) -> Rows:
     """The rows of every constraint of ``model`` at parameter values ``x`` (model part)."""
+    with gc_paused():          # many small acyclic objects: no cyclic collections meanwhile
+        return _build_rows(model, x)
+
+
+def _build_rows(model: Model, x: np.ndarray) -> Rows:
     rows = Rows(n_model=len(x), n_params=len(x))
     cache: dict = {}
     for c in model.constraints:

@@ -29,7 +29,7 @@ from itertools import chain
 
 import numpy as np
 
-from .arrays import unique
+from .arrays import gc_paused, unique
 
 from ..geometry.expr import Lin, Nl
 
@@ -114,6 +114,10 @@ class Tape:
     """
 
     def __init__(self, exprs: list, n_params: int):
+        with gc_paused():      # one tuple per node, none cyclic: no cyclic collections meanwhile
+            self._compile(exprs, n_params)
+
+    def _compile(self, exprs: list, n_params: int) -> None:
         self.n_rows = len(exprs)
         self.n_params = n_params
         aff, arows = [], []                   # affine rows: their Lin and row
