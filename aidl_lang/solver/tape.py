@@ -174,7 +174,14 @@ class Tape:
                 raise TapeError(f"cannot compile {type(item).__name__} into a residual")
             for arg in reversed(item.args):
                 if id(arg) not in memo:
-                    visit(arg, r, memo)
+                    if type(arg) is Lin:       # a leaf, inline (most arguments of min/max)
+                        memo[id(arg)] = n = len(nodes)
+                        node_add((LEAF, len(leaves), len(leaves), r))
+                        leaf_add(arg)
+                        lev_add(0)
+                        leaf_node_add(n)
+                    else:
+                        visit(arg, r, memo)
             return interior(item, [memo[id(a)] for a in item.args], r, memo)
 
         def walk(e, r: int, memo: dict) -> None:
@@ -203,12 +210,12 @@ class Tape:
                 arows.append(r)
                 continue
             memo: dict[int, int] = {}
-            n0, f0 = len(nodes), len(leaves)
+            n0, f0, m0 = len(nodes), len(leaves), len(marg)
             try:
                 visit(e, r, memo)
             except RecursionError:             # a very deep tree: start the row again with
                 memo.clear()                   # an explicit stack
-                del nodes[n0:], level[n0:], leaves[f0:], leaf_node[f0:]
+                del nodes[n0:], level[n0:], leaves[f0:], leaf_node[f0:], marg[m0:]
                 walk(e, r, memo)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
