@@ -45,6 +45,8 @@ def test_nary_min_max_equals_the_binary_chain(op, leaves, x, x2, scale):
     first = (min if op == "min" else max)(range(len(vals)), key=vals.__getitem__)
     ca, cb = a.choose(x), b.choose(x)
     assert ca.dtype == np.int64 and ca.tolist() == [first, first]
+    rec = np.full(a.n_choices, -1, dtype=np.int64)       # one pass: values and branches
+    assert np.array_equal(a.evaluate(x, record=rec), Fa) and np.array_equal(rec, ca)
     # frozen at those branches, elsewhere: the chosen argument's value, not the true min/max
     assert np.array_equal(a.evaluate(x2, ca), b.evaluate(x2, cb))
     assert a.evaluate(x2, ca)[0] == evaluate(leaves[first], x2) * evaluate(scale, x2)

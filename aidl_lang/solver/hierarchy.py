@@ -195,10 +195,10 @@ class Solver:
         t = self.tape(att.rows)
         self._init_slacks(t, att.rows)
         x = self.x
-        if float(np.max(np.abs(t.evaluate(x)))) <= CHECK_TOL:
+        choices = np.zeros(t.n_choices, dtype=np.int64)
+        if float(np.max(np.abs(t.evaluate(x, record=choices)))) <= CHECK_TOL:
             att.ok = True
             return True
-        choices = t.choose(x)
         scale = self.scale[att.cols]
         sign_choice = t.root_choice[self.kind[att.rows] == SIGN]
         released = False
@@ -217,14 +217,14 @@ class Solver:
             att.rounds = rnd
             tr.iterations += res.iterations
             x = res.x
-            F = t.evaluate(x)
+            new = np.zeros(t.n_choices, dtype=np.int64)
+            F = t.evaluate(x, record=new)         # the true min/max, and their branches
             if float(np.max(np.abs(F))) <= CHECK_TOL:
                 att.ok = True
                 break
             if tr.iterations >= ITER_BUDGET:
                 tr.budget_exceeded = True
                 break
-            new = t.choose(x)
             if np.array_equal(new, choices):
                 # an inequality made active may be what blocks the solve: release them all
                 # once (the next round's check re-activates any that end up violated)

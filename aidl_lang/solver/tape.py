@@ -396,16 +396,17 @@ class Tape:
         return v
 
     def evaluate(self, x: np.ndarray, choices: np.ndarray | None = None,
-                 nodes: bool = False):
+                 nodes: bool = False, record: np.ndarray | None = None):
         """Residuals ``F`` (n_rows,) at ``x``; with ``nodes=True`` also the node values.
 
         ``choices`` freezes every min/max at a branch (see :meth:`choose`); ``None`` evaluates
-        the true min/max."""
+        the true min/max, and then ``record`` (int64, ``n_choices``), if given, receives the
+        branches :meth:`choose` would return (one pass for both)."""
         F = np.empty(self.n_rows)
         if len(self.aff_rows):
             F[self.aff_rows] = np.bincount(self.a_row, weights=self.a_val * x[self.a_col],
                                            minlength=len(self.b)) + self.b
-        v = self._forward(x, choices) if self.n_nodes else np.empty(0)
+        v = self._forward(x, choices, record) if self.n_nodes else np.empty(0)
         if len(self.nl_rows):
             F[self.nl_rows] = v[self.nl_roots]
         return (F, v) if nodes else F
