@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import Expr, Nl, evaluate, func, rebuild, var
+from .expr import Expr, Lin, Nl, evaluate, func, rebuild, var
 from .model import Geometry, Structure
 
 SIDES = ("left", "right", "bottom", "top")
@@ -98,7 +98,10 @@ def _side_expr(target, side, frame, x, exclude, cache) -> Expr:
         return ox if side in ("left", "right") else oy
     if len(cands) == 1:
         return cands[0]
-    return func("min" if side in ("left", "bottom") else "max", *cands)
+    op = "min" if side in ("left", "bottom") else "max"
+    if all(type(c) is Lin and c.terms for c in cands):
+        return Nl(op, tuple(cands))      # what func gives (nothing to fold), without lifting
+    return func(op, *cands)
 
 
 def candidates(target, frame: Structure, x, exclude: set,
@@ -107,17 +110,22 @@ def candidates(target, frame: Structure, x, exclude: set,
         key = ("cand", id(target), id(frame), frozenset(map(id, exclude)))
         hit = cache.get(key)
         if hit is None:
-            hit = cache[key] = candidates(target, frame, x, exclude, None)
+            hit = cache[key] = _candidates(target, frame, x, exclude,
+                                           cache.setdefault(("offsets",), {}))
         return hit
+    return _candidates(target, frame, x, exclude, {})
+
+
+def _candidates(target, frame, x, exclude: set, offs: dict) -> tuple[list, list]:
     xs: list = []
     ys: list = []
     if isinstance(target, Structure):
         for s in _subtree(target, exclude, top=target):
             for g in s.geometry:
                 if not g.construction:
-                    _geom_candidates(g, frame, x, xs, ys)
+                    _geom_candidates(g, frame, x, xs, ys, offs)
     else:
-        _geom_candidates(target, frame, x, xs, ys)
+        _geom_candidates(target, frame, x, xs, ys, offs)
     return xs, ys
 
 
@@ -129,9 +137,23 @@ def _subtree(s: Structure, exclude: set, top: Structure):
         yield from _subtree(c, exclude, top)
 
 
-def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list) -> None:
+def _in_frame(p, frame, offs: dict) -> tuple[Lin, Lin]:
+    """``p.in_frame(frame)`` (the same terms in the same order), with the owner's frame
+    offset looked up in ``offs`` instead of walked up the tree for every point."""
+    key = (id(p.owner), id(frame))
+    o = offs.get(key)
+    if o is None:
+        ox, oy = p.owner.frame_offset(frame)
+        o = offs[key] = (ox.terms, oy.terms)
+    tx, ty = dict(o[0]), dict(o[1])
+    tx[p.ix] = tx.get(p.ix, 0.0) + 1.0
+    ty[p.iy] = ty.get(p.iy, 0.0) + 1.0
+    return Lin(tx), Lin(ty)
+
+
+def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> None:
     k = g.kind
-    P = {n: p.in_frame(frame) for n, p in g.points.items()}
+    P = {n: _in_frame(p, frame, offs) for n, p in g.points.items()}
     if k == "Circle":
         cx, cy = P["center"]
         r = var(g.scalars["radius"].index)
