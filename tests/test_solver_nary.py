@@ -5,6 +5,7 @@ agree with the expression evaluator."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.geometry.expr import Lin, Nl, evaluate
@@ -84,3 +85,27 @@ def test_nan_argument_picks_the_first_argument():
     nan = Lin({}, float("nan"))
     t = Tape([Nl("min", (Lin({0: 1.0}), nan, Lin({}, -5.0)))], 1)
     assert t.choose(np.zeros(1)).tolist() == [0]
+
+
+def _depth(e) -> int:
+    return 0 if isinstance(e, Lin) else 1 + max(_depth(a) for a in e.args)
+
+
+@settings(max_examples=40, deadline=None)
+@given(leaves=st.lists(_leaf, min_size=2, max_size=6), ops=st.lists(
+    st.sampled_from(["add", "mul", "sin", "min", "max"]), min_size=1, max_size=12))
+def test_levels_are_depths_by_array_passes_and_by_the_ordered_pass(leaves, ops):
+    """A node's level is its depth (leaves 0); the array relaxation and the fallback pass in
+    node order (used past _LEVEL_PASSES levels) give the same levels."""
+    import aidl_lang.solver.tape as tape_mod
+    e = leaves[0]
+    for i, op in enumerate(ops):
+        other = leaves[i % len(leaves)]
+        e = Nl(op, (e,)) if op == "sin" else Nl(op, (e, other) if op in ("add", "mul")
+                                                 else (other, e, leaves[-1]))
+    rows = [e, Nl("min", tuple(leaves)), Nl("add", (e, leaves[1]))]
+    t = Tape(rows, N)
+    assert t.level[t.nl_roots].tolist() == [_depth(r) for r in rows]
+    with pytest.MonkeyPatch.context() as m:
+        m.setattr(tape_mod, "_LEVEL_PASSES", 1)
+        assert np.array_equal(Tape(rows, N).level, t.level)

@@ -72,6 +72,40 @@ def _take(start: np.ndarray, rows: np.ndarray):
     return np.arange(int(n.sum()), dtype=np.int64) - np.repeat(d, n), d, n
 
 
+def _levels(op: np.ndarray, a0: np.ndarray, a1: np.ndarray, marg: np.ndarray) -> np.ndarray:
+    """Each node's depth: 0 for a leaf, else 1 + the deepest argument's.  Relaxed with array
+    passes (one per level: most rows are a few levels deep); past ``_LEVEL_PASSES`` levels, one
+    pass in node order finishes it (every argument precedes its node: post-order)."""
+    lev = np.zeros(len(op), dtype=np.int64)
+    inner = np.flatnonzero(op != LEAF)
+    if not len(inner):
+        return lev
+    mm = (op[inner] == MIN) | (op[inner] == MAX)
+    bi, mi = inner[~mm], inner[mm]
+    p, q = a0[bi], a1[bi]
+    cnt = a1[mi]                          # min/max: their runs of ``marg``
+    starts = np.cumsum(cnt) - cnt
+    flat = marg[np.arange(int(cnt.sum()), dtype=np.int64) + np.repeat(a0[mi] - starts, cnt)]
+    for _ in range(_LEVEL_PASSES):
+        nb = np.maximum(lev[p], lev[q]) + 1
+        nm = np.maximum.reduceat(lev[flat], starts) + 1 if len(mi) else nb[:0]
+        if np.array_equal(nb, lev[bi]) and np.array_equal(nm, lev[mi]):
+            return lev
+        lev[bi], lev[mi] = nb, nm
+    out = lev.tolist()
+    opl, a0l, a1l, margl = op.tolist(), a0.tolist(), a1.tolist(), marg.tolist()
+    for i in inner.tolist():
+        if opl[i] == MIN or opl[i] == MAX:
+            out[i] = max([out[a] for a in margl[a0l[i]:a0l[i] + a1l[i]]]) + 1
+        else:
+            u, w = out[a0l[i]], out[a1l[i]]
+            out[i] = (u if u > w else w) + 1
+    return np.asarray(out, dtype=np.int64)
+
+
+_LEVEL_PASSES = 64
+
+
 class TapeError(ValueError):
     """An expression the tape cannot compile (an unknown operator or an unexpanded term)."""
 
@@ -123,12 +157,9 @@ class Tape:
         aff, arows = [], []                   # affine rows: their Lin and row
         leaves = []                           # the Lin of every leaf node, in order
         nodes = []                            # (op, arg0, arg1, row) of every node
-        level = []                            # depth of every node (leaves: 0)
-        leaf_node = []                        # node index of each leaf
         marg = []                             # argument nodes of every min/max, in order
         nl_rows, nl_roots = [], []
-        node_add, lev_add, leaf_add = nodes.append, level.append, leaves.append
-        leaf_node_add = leaf_node.append
+        node_add, leaf_add = nodes.append, leaves.append
         binary_or_unary = {**_UNARY, **_BINARY}
 
         def leaf_of(item, r: int, memo: dict) -> int:
@@ -136,8 +167,6 @@ class Tape:
             leaf_add(item)
             memo[id(item)] = n = len(nodes)
             node_add((LEAF, leaf, leaf, r))
-            lev_add(0)
-            leaf_node_add(n)
             return n
 
         def interior(item, args: list, r: int, memo: dict) -> int:
@@ -149,7 +178,6 @@ class Tape:
                 memo[id(item)] = n = len(nodes)
                 node_add((code, len(marg), len(args), r))
                 marg.extend(args)
-                lev_add(max([level[a] for a in args]) + 1)
                 return n
             if len(args) == 1:
                 p = q = args[0]
@@ -159,8 +187,6 @@ class Tape:
                 raise TapeError(f"operator `{item.op}` with {len(args)} arguments")
             memo[id(item)] = n = len(nodes)
             node_add((code, p, q, r))
-            lp_, lq_ = level[p], level[q]
-            lev_add((lp_ if lp_ > lq_ else lq_) + 1)
             return n
 
         def visit(item, r: int, memo: dict) -> int:
@@ -178,8 +204,6 @@ class Tape:
                         memo[id(arg)] = n = len(nodes)
                         node_add((LEAF, len(leaves), len(leaves), r))
                         leaf_add(arg)
-                        lev_add(0)
-                        leaf_node_add(n)
                     else:
                         visit(arg, r, memo)
             return interior(item, [memo[id(a)] for a in item.args], r, memo)
@@ -215,7 +239,7 @@ class Tape:
                 visit(e, r, memo)
             except RecursionError:             # a very deep tree: start the row again with
                 memo.clear()                   # an explicit stack
-                del nodes[n0:], level[n0:], leaves[f0:], leaf_node[f0:], marg[m0:]
+                del nodes[n0:], leaves[f0:], marg[m0:]
                 walk(e, r, memo)
             nl_rows.append(r)
             nl_roots.append(memo[id(e)])
@@ -223,12 +247,12 @@ class Tape:
         l_row, l_col, l_val, lconst = _lin_arrays(leaves)
         nn = len(nodes)
         na = np.fromiter(chain.from_iterable(nodes), np.int64, 4 * nn).reshape(nn, 4)
+        op, a0, a1 = na[:, 0].copy(), na[:, 1].copy(), na[:, 2].copy()
+        marg = np.asarray(marg, dtype=np.int64)
         self._setup(np.asarray(arows, dtype=np.int64), a_row, a_col, a_val, b,
-                    l_row, l_col, l_val, lconst, np.asarray(leaf_node, dtype=np.int64),
+                    l_row, l_col, l_val, lconst, np.flatnonzero(op == LEAF),
                     np.asarray(nl_rows, dtype=np.int64), np.asarray(nl_roots, dtype=np.int64),
-                    na[:, 0].copy(), na[:, 1].copy(), na[:, 2].copy(),
-                    np.asarray(level, dtype=np.int64), na[:, 3].copy(),
-                    np.asarray(marg, dtype=np.int64))
+                    op, a0, a1, _levels(op, a0, a1, marg), na[:, 3].copy(), marg)
 
     def _setup(self, aff_rows, a_row, a_col, a_val, b, l_row, l_col, l_val, lconst, leaf_node,
                nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of, marg) -> None:
