@@ -3,8 +3,9 @@
 Run:  .venv/bin/pip install -e ".[bench]"   (SolveSpace's ``slvs`` from PyPI)
       python3.12 -m venv .venv312 && .venv312/bin/pip install planegcs   (optional peer)
       .venv/bin/python benchmarks/solver_scaling.py  [--quick] [--no-planegcs]
+      .venv/bin/python benchmarks/solver_scaling.py --phases [--repeat N]   (part (e) only)
 
-Prints one table in four parts:
+Prints one table in five parts:
 
 (a) flat sketch families (``benchmarks/families.py``: a chain of rectangles, independent
     rectangles ("islands"), points on a ring with equal chords, a linkage with lengths and
@@ -23,6 +24,10 @@ Prints one table in four parts:
     solve of the same model, with the log-log growth exponent.
 (c) every bundled example: the solve time.
 (d) the fixed overhead of a small solve (two points, one distance).
+(e) where the hierarchical solve of the generated models goes (issue 12 target 3: the
+    500-structure model under 300 ms): building the rows (bounding boxes expanded), the one
+    compile of the whole model, and the attempts (cutting each attempt's tape, substitution,
+    Newton), CPU time (``time.process_time``, median of ``--repeat``), with the tape's size.
 
 Times are the best of several runs (fewer for slow cases), in milliseconds, on this machine.
 """
@@ -214,6 +219,32 @@ def hierarchy_rows(sizes):
     return rows
 
 
+def hierarchy_phases(sizes, repeat: int) -> None:
+    """Part (e): CPU ms of each phase of ``solve(model)`` (the same calls, timed apart)."""
+    print(f"\n(e) phases of the hierarchical solve (CPU ms, median of {repeat}; "
+          "rows: build_rows, compile: Solver.whole, attempts: cuts + substitution + Newton)")
+    print(f"{'structures':>10}{'rows':>7}{'nodes':>8}{'leaves':>8}{'minmax':>8}{'attempts':>9}"
+          f"{'rows':>9}{'compile':>9}{'attempts':>9}{'total':>9}  ok")
+    for n in sizes:
+        model = _model(hierarchy(n, seed=3).source)
+        x0 = list(model.x)
+        runs = []
+        for _ in range(repeat):
+            model.x = list(x0)
+            t0 = time.process_time()
+            s = Solver(model)
+            t1 = time.process_time()
+            whole = s.whole
+            t2 = time.process_time()
+            res = run(s, diagnose=False)
+            t3 = time.process_time()
+            runs.append((t1 - t0, t2 - t1, t3 - t2, t3 - t0))
+        med = [sorted(col)[len(col) // 2] * 1e3 for col in zip(*runs)]
+        print(f"{len(model.structures):>10}{whole.n_rows:>7}{whole.n_nodes:>8}"
+              f"{len(whole.leaf_node):>8}{whole.n_choices:>8}{res.attempts:>9}"
+              + "".join(f"{v:>9.1f}" for v in med) + f"  {res.converged}")
+
+
 def slope(xs, ys) -> float:
     lx, ly = np.log(np.asarray(xs, float)), np.log(np.asarray(ys, float))
     return float(np.polyfit(lx, ly, 1)[0])
@@ -223,7 +254,14 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes only (a smoke run)")
     ap.add_argument("--no-planegcs", action="store_true", help="skip the PlaneGCS peer")
+    ap.add_argument("--phases", action="store_true",
+                    help="only part (e): the phases of the hierarchical solve")
+    ap.add_argument("--repeat", type=int, default=5, help="runs per model in part (e)")
     args = ap.parse_args()
+    phase_sizes = [10, 50] if args.quick else [10, 50, 200, 500]
+    if args.phases:
+        hierarchy_phases(phase_sizes, args.repeat)
+        return
     try:
         import slvs  # noqa: F401
         have_slvs = True
@@ -286,6 +324,7 @@ def main() -> None:
         return solve(model)
     t, res = best_of(small, 50)
     print(f"small solve {t:.3f} ms ({res.iterations} Newton steps, converged={res.converged})")
+    hierarchy_phases(phase_sizes, args.repeat)
 
 
 if __name__ == "__main__":
