@@ -34,6 +34,23 @@ def dense_enough(rows: int, unknowns: int) -> bool:
         rows * rows * max(unknowns, 1) <= DENSE_WORK
 
 
+def unreachable(Js, F: np.ndarray) -> bool:
+    """Whether every row that is off (``F_i != 0``) has an all-zero Jacobian row (dense or
+    SciPy CSR ``Js``): no unknown reaches those rows, the others are already 0, so ``J J^T`` is
+    block-diagonal between them and the damped step is exactly 0 for every damping ``mu``
+    (``y = -(G + mu I)^-1 F`` is 0 on the rows with entries, ``J^T y`` adds only exact zeros).
+    Newton then stops at once, with the result the 14 rejected tries would give.  Typical: a
+    structure's own attempt whose violated rows need its children's frames to move (the next,
+    translation, attempt frees them): 25 such attempts on the 500-structure model."""
+    off = F != 0.0
+    if not off.any():
+        return False
+    if isinstance(Js, np.ndarray):
+        return not bool(np.any(Js[off] != 0.0))
+    rows = np.repeat(np.arange(Js.shape[0]), np.diff(Js.indptr))
+    return not bool(np.any(off[rows] & (Js.data != 0.0)))
+
+
 @dataclass
 class NewtonResult:
     x: np.ndarray
@@ -134,6 +151,8 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
             J = tape.jacobian(x, cols, choices, v, reduction=reduction)
             Js = type(J)((J.data * d[J.indices], J.indices, J.indptr), shape=J.shape)
         accepted = False
+        if unreachable(Js, F):
+            break                    # every damping gives the step 0: none can be accepted
         step = _Step(Js, dense=small)
         for _ in range(14):
             try:
