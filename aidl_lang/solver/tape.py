@@ -198,15 +198,22 @@ class Tape:
                 return leaf_of(item, r, memo)
             if not isinstance(item, Nl):
                 raise TapeError(f"cannot compile {type(item).__name__} into a residual")
-            for arg in reversed(item.args):
-                if id(arg) not in memo:
+            args = item.args
+            k = len(args)
+            out = [0] * k
+            for j in range(k - 1, -1, -1):
+                arg = args[j]
+                n = memo.get(id(arg))
+                if n is None:
                     if type(arg) is Lin:       # a leaf, inline (most arguments of min/max)
                         memo[id(arg)] = n = len(nodes)
-                        node_add((LEAF, len(leaves), len(leaves), r))
+                        leaf = len(leaves)
+                        node_add((LEAF, leaf, leaf, r))
                         leaf_add(arg)
                     else:
-                        visit(arg, r, memo)
-            return interior(item, [memo[id(a)] for a in item.args], r, memo)
+                        n = visit(arg, r, memo)
+                out[j] = n
+            return interior(item, out, r, memo)
 
         def walk(e, r: int, memo: dict) -> None:
             stack = [(e, False)]
