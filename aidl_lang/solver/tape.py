@@ -262,8 +262,10 @@ class Tape:
                     op, a0, a1, _levels(op, a0, a1, marg), na[:, 3].copy(), marg)
 
     def _setup(self, aff_rows, a_row, a_col, a_val, b, l_row, l_col, l_val, lconst, leaf_node,
-               nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of, marg) -> None:
-        """Store the flattened arrays and group the interior nodes by (level, operator)."""
+               nl_rows, nl_roots, op_a, a0_a, a1_a, lev, root_of, marg,
+               uniq_hint: dict | None = None) -> None:
+        """Store the flattened arrays and group the interior nodes by (level, operator).
+        ``uniq_hint``: the whole tape's :attr:`uniq`, when this is a cut of it."""
         self.aff_rows = aff_rows
         # sparse rows kept as COO arrays: products are np.bincount (no scipy overhead)
         self.a_row, self.a_col, self.a_val, self.b = a_row, a_col, a_val, b
@@ -276,16 +278,23 @@ class Tape:
         self.marg = marg
         # group interior nodes by (level, op)
         self.groups: list[_Group] = []
+        self.uniq: dict = {}          # level * 64 + op -> the group's (uniq0, uniq1)
         inner = np.flatnonzero(op_a != LEAF)
         self.n_choices = 0
         if len(inner):
             order = np.lexsort((op_a[inner], lev[inner]))
             inner = inner[order]
             keys = lev[inner] * 64 + op_a[inner]
-            cuts = np.flatnonzero(np.diff(keys)) + 1
-            for chunk in np.split(inner, cuts):
-                op = int(op_a[chunk[0]])
+            cuts = (np.flatnonzero(np.diff(keys)) + 1).tolist()
+            bounds = [0, *cuts, len(inner)]
+            gkeys = keys[bounds[:-1]].tolist()
+            for b0, b1, key in zip(bounds, bounds[1:], gkeys):
+                chunk = inner[b0:b1]
+                op = key % 64
                 g0, g1 = a0_a[chunk], a1_a[chunk]
+                # a group of a cut is part of the whole tape's group of the same key, its
+                # arguments shifted one to one: "no repeats" holds in it if it held there
+                hint = uniq_hint.get(key, (False, False)) if uniq_hint else (False, False)
                 if op in (MIN, MAX):
                     g = _Group(op, chunk, g0, g1, False, True)
                     # the group's arguments, flattened: each node's run of ``marg``
@@ -294,11 +303,13 @@ class Tape:
                     g.args = marg[np.arange(int(g1.sum()), dtype=np.int64)
                                   + np.repeat(g0 - start, g1)]
                     g.seg = np.repeat(np.arange(len(chunk), dtype=np.int64), g1)
-                    g.uniq0 = _distinct(g.args)
+                    g.uniq0 = hint[0] or _distinct(g.args)
                     g.sel = np.arange(self.n_choices, self.n_choices + len(chunk))
                     self.n_choices += len(chunk)
                 else:
-                    g = _Group(op, chunk, g0, g1, _distinct(g0), _distinct(g1))
+                    g = _Group(op, chunk, g0, g1, hint[0] or _distinct(g0),
+                               hint[1] or _distinct(g1))
+                self.uniq[key] = (g.uniq0, g.uniq1)
                 self.groups.append(g)
         # the choice index of each row whose top node is a min/max (-1 otherwise)
         self.root_choice = -np.ones(self.n_rows, dtype=np.int64)
@@ -344,7 +355,7 @@ class Tape:
                  self.leaf_node[lidx] + np.repeat(nd, ln), np.repeat(pos, rn),
                  self.nl_roots[ridx] + np.repeat(nd, rn), op, self.a0[nidx] + shift0,
                  self.a1[nidx] + shift1, self.level[nidx], np.repeat(pos, nn),
-                 self.marg[midx] + np.repeat(nd, mn))
+                 self.marg[midx] + np.repeat(nd, mn), self.uniq)
         return t
 
     def _starts(self) -> dict:
