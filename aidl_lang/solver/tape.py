@@ -74,24 +74,26 @@ def _take(start: np.ndarray, rows: np.ndarray):
 
 def _levels(op: np.ndarray, a0: np.ndarray, a1: np.ndarray, marg: np.ndarray) -> np.ndarray:
     """Each node's depth: 0 for a leaf, else 1 + the deepest argument's.  Relaxed with array
-    passes (one per level: most rows are a few levels deep); past ``_LEVEL_PASSES`` levels, one
-    pass in node order finishes it (every argument precedes its node: post-order)."""
+    passes (one per level: most rows are a few levels deep); for a small tape, or past
+    ``_LEVEL_PASSES`` levels, one pass in node order (every argument precedes its node:
+    post-order)."""
     lev = np.zeros(len(op), dtype=np.int64)
     inner = np.flatnonzero(op != LEAF)
     if not len(inner):
         return lev
-    mm = (op[inner] == MIN) | (op[inner] == MAX)
-    bi, mi = inner[~mm], inner[mm]
-    p, q = a0[bi], a1[bi]
-    cnt = a1[mi]                          # min/max: their runs of ``marg``
-    starts = np.cumsum(cnt) - cnt
-    flat = marg[np.arange(int(cnt.sum()), dtype=np.int64) + np.repeat(a0[mi] - starts, cnt)]
-    for _ in range(_LEVEL_PASSES):
-        nb = np.maximum(lev[p], lev[q]) + 1
-        nm = np.maximum.reduceat(lev[flat], starts) + 1 if len(mi) else nb[:0]
-        if np.array_equal(nb, lev[bi]) and np.array_equal(nm, lev[mi]):
-            return lev
-        lev[bi], lev[mi] = nb, nm
+    if len(inner) > _LEVEL_SMALL:
+        mm = (op[inner] == MIN) | (op[inner] == MAX)
+        bi, mi = inner[~mm], inner[mm]
+        p, q = a0[bi], a1[bi]
+        cnt = a1[mi]                          # min/max: their runs of ``marg``
+        starts = np.cumsum(cnt) - cnt
+        flat = marg[np.arange(int(cnt.sum()), dtype=np.int64) + np.repeat(a0[mi] - starts, cnt)]
+        for _ in range(_LEVEL_PASSES):
+            nb = np.maximum(lev[p], lev[q]) + 1
+            nm = np.maximum.reduceat(lev[flat], starts) + 1 if len(mi) else nb[:0]
+            if np.array_equal(nb, lev[bi]) and np.array_equal(nm, lev[mi]):
+                return lev
+            lev[bi], lev[mi] = nb, nm
     out = lev.tolist()
     opl, a0l, a1l, margl = op.tolist(), a0.tolist(), a1.tolist(), marg.tolist()
     for i in inner.tolist():
@@ -104,6 +106,7 @@ def _levels(op: np.ndarray, a0: np.ndarray, a1: np.ndarray, marg: np.ndarray) ->
 
 
 _LEVEL_PASSES = 64
+_LEVEL_SMALL = 512        # up to this many interior nodes the ordered pass is cheaper
 
 
 class TapeError(ValueError):
