@@ -112,3 +112,9 @@ def test_levels_are_depths_by_array_passes_and_by_the_ordered_pass(leaves, ops):
         m.setattr(tape_mod, "_LEVEL_PASSES", 1)         # ... stopped early, then the pass
         assert np.array_equal(Tape(rows, N).level, relaxed)
     assert np.array_equal(relaxed, t.level)
+
+
+def test_min_without_arguments_is_a_tape_error():
+    from aidl_lang.solver.tape import TapeError
+    with pytest.raises(TapeError, match="no arguments"):
+        Tape([Nl("max", ())], 1)

@@ -178,6 +178,8 @@ class Tape:
                 raise TapeError(f"unknown operator `{item.op}`")
             if code in (MIN, MAX):
                 # n-ary min/max: one node whose arguments are a run of ``marg``
+                if not args:
+                    raise TapeError(f"operator `{item.op}` with no arguments")
                 memo[id(item)] = n = len(nodes)
                 node_add((code, len(marg), len(args), r))
                 marg.extend(args)
