@@ -14,7 +14,7 @@ the step defined for redundant, rank-deficient systems.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import dataclass
 
 import numpy as np
 
