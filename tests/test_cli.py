@@ -292,3 +292,20 @@ def test_closed_stdout_is_not_an_internal_error():
         os.close(wfd)
     assert "internal error" not in r.stderr
     assert r.returncode != 3
+
+
+def test_parser_for_one_subcommand_parses_as_the_full_parser():
+    """`aidl CMD ...` builds only CMD's arguments (cold start); the result is the same as with
+    every subcommand's, and SUBCOMMANDS names every subcommand the full parser has."""
+    from aidl_lang.cli.main import SUBCOMMANDS, _parser
+    full = _parser()
+    choices = next(a for a in full._actions if a.dest == "cmd").choices
+    assert sorted(SUBCOMMANDS) == sorted(choices)
+    samples = [["render", "a.aidl", "-o", "a.svg", "-o", "a.dxf", "--set", "w=3mm", "--dpi", "200"],
+               ["check", "a.aidl", "--json", "--dof", "--budget", "2"], ["explain", "E0202"],
+               ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
+               ["serve", "a.aidl", "--port", "0"], ["prompt", "--words"],
+               ["generate", "a wrench", "-o", "w.aidl", "--rounds", "2"], ["eval", "p.txt"]]
+    assert {s[0] for s in samples} == set(SUBCOMMANDS)
+    for argv in samples:
+        assert vars(_parser(argv[0]).parse_args(argv)) == vars(full.parse_args(argv)), argv
