@@ -213,7 +213,7 @@ class UnexpectedCharacters(ParseError):
 
 
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
-_TABLES_FORMAT = 2
+_TABLES_FORMAT = 3
 
 
 # ----------------------------------------------------------------- the parse table
@@ -223,8 +223,9 @@ class _Tables:
 
     - ``mres``: the lexer's compiled alternations of every terminal (named groups, Lark's
       order and priorities); ``ignore`` / ``newline``: terminal names skipped / counted for
-      lines; ``keywords``: per terminal (``NAME``), the whole-match patterns that retype a
-      token as a keyword (Lark's ``UnlessCallback``);
+      lines; ``keywords``: per terminal (``NAME``), what retypes a token as a keyword (Lark's
+      ``UnlessCallback``): a dict text -> keyword when every keyword is a plain string (as in
+      this grammar), else the whole-match patterns;
     - ``states``: per LALR state, terminal or rule name -> an ``int``: the next state (shift or
       goto) when >= 0, else ``~i`` for reduction ``i``; ``reductions``: per rule
       ``(size, rule name, callback)``, ``(None, rule name, None)`` for a unit rule whose child
@@ -236,8 +237,9 @@ class _Tables:
         self.mres = [re.compile(p, f) for p, f in lx["patterns"]]
         self.ignore = frozenset(lx["ignore"])
         self.newline = frozenset(lx["newline"])
-        self.keywords = {t: [re.compile(p, f) for p, f in pats]
-                         for t, pats in lx["keywords"].items()}
+        self.keywords = {t: (kw["literal"] if "literal" in kw
+                             else [re.compile(p, f) for p, f in kw["patterns"]])
+                         for t, kw in lx["keywords"].items()}
         ps = data["parser"]
         self.reductions = [_reduction(*spec) for spec in ps["rules"]]
         self.states = ps["states"]
@@ -272,8 +274,17 @@ def _tables_data() -> dict:
     lp = Lark(GRAMMAR.read_text(), **_LARK_OPTIONS)
     basic = lp.parser.lexer
     scanner = basic.scanner
-    keywords = {t: [(m.pattern, m.flags) for m in cb.scanner._mres]
-                for t, cb in basic.callback.items()}
+    from lark.lexer import PatternStr
+    keywords = {}
+    for t, cb in basic.callback.items():
+        terms = cb.scanner.terminals
+        if all(isinstance(k.pattern, PatternStr) and not k.pattern.flags for k in terms):
+            literal: dict = {}
+            for k in terms:                     # Lark's order: the first match wins
+                literal.setdefault(k.pattern.value, k.name)
+            keywords[t] = {"literal": literal}
+        else:
+            keywords[t] = {"patterns": [(m.pattern, m.flags) for m in cb.scanner._mres]}
     index = {}
     specs = []
     for rule in lp.rules:
@@ -407,11 +418,15 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
                 line += k
                 line_start = pos + value.rindex("\n") + 1
         if type_ in keywords:
-            for kre in keywords[type_]:
-                km = kre.fullmatch(value)
-                if km:
-                    type_ = km.lastgroup
-                    break
+            kw = keywords[type_]
+            if type(kw) is dict:
+                type_ = kw.get(value, type_)
+            else:
+                for kre in kw:
+                    km = kre.fullmatch(value)
+                    if km:
+                        type_ = km.lastgroup
+                        break
         tok = new_str(Token, value)
         tok.type = type_
         tok.pos = (start_line, column, pos, line, npos - line_start + 1, npos)

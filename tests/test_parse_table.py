@@ -129,3 +129,25 @@ def test_a_freshly_built_table_parses_as_the_cached_one():
         finally:
             P._TABLES = cached
     assert outs[0] == outs[1]
+
+
+def test_keyword_patterns_and_the_literal_table_lex_the_same():
+    """Keywords are looked up in a dict when they are plain strings (this grammar); the
+    general path (Lark's whole-match patterns) gives the same tokens."""
+    import json
+    import re
+    data = json.loads(json.dumps(P._tables_data()))
+    literal = data["lexer"]["keywords"]["NAME"]["literal"]
+    assert literal["if"] == "IF" and literal["param"] == "PARAM"
+    pattern = "|".join(f"(?P<{name}>{re.escape(text)})" for text, name in literal.items())
+    data["lexer"]["keywords"]["NAME"] = {"patterns": [[pattern, 0]]}
+    general = P._Tables(data)
+    cached = P._tables()
+    text = TEXTS[0] + "\nif x in y and not z or w {\n}\nelse_ = 1\nparam p = 2\n"
+    ours = [(t.type, str(t), t.pos) for t in P._lex(text)[0]]
+    P._TABLES = general
+    try:
+        theirs = [(t.type, str(t), t.pos) for t in P._lex(text)[0]]
+    finally:
+        P._TABLES = cached
+    assert ours == theirs and ("IF", "if") in [(a, b) for a, b, _ in ours]
