@@ -449,12 +449,20 @@ def _run_lalr(text: str, start: str):
     value_stack: list = []
     push_state, push_value = state_stack.append, value_stack.append
     units = tb.units
+    end_state = end_states[start]
+    if lex_error is None:
+        last = tokens[-1] if tokens else None
+        tokens.append(Token.new_borrow_pos("$END", "", last) if last is not None
+                      else Token("$END", "", 0, 1, 1, 1, 1, 0))
     for token in tokens:
         ttype = token.type
         while True:
             try:
                 act = states[state_stack[-1]][ttype]
             except KeyError:
+                # the accepting state has no actions: with the input used up, the parse is done
+                if ttype == "$END" and state_stack[-1] == end_state:
+                    return value_stack[-1]
                 raise UnexpectedToken(token, _expected(states[state_stack[-1]]))
             if act >= 0:
                 push_state(act)
@@ -478,30 +486,7 @@ def _run_lalr(text: str, start: str):
             push_state(states[state_stack[-1]][origin])
     if lex_error is not None:
         raise lex_error
-    token = tokens[-1] if tokens else None
-    end = Token.new_borrow_pos("$END", "", token) if token else Token("$END", "", 0, 1, 1, 1, 1, 0)
-    end_state = end_states[start]
-    while True:
-        try:
-            act = states[state_stack[-1]]["$END"]
-        except KeyError:
-            raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
-        if act >= 0:
-            raise UnexpectedToken(end, _expected(states[state_stack[-1]]))
-        size, origin, cb = reductions[~act]
-        if size is None:
-            state_stack[-1] = states[state_stack[-2]][origin]
-        else:
-            if size:
-                children = value_stack[-size:]
-                del state_stack[-size:]
-                del value_stack[-size:]
-            else:
-                children = []
-            push_value(cb(children))
-            push_state(states[state_stack[-1]][origin])
-        if state_stack[-1] == end_state:
-            return value_stack[-1]
+    raise UnexpectedToken(tokens[-1], set())    # $END shifted: no LALR table of Lark's does
 
 
 def _unit_chain(tb: _Tables, below: int, origin: str, ttype: str) -> int:
