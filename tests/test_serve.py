@@ -257,12 +257,8 @@ def test_serve_binds_loopback_only():
     assert "--host" not in _parser().format_help()
 
 
-def test_preview_reports_the_same_shape_checks_as_check(tmp_path):
-    """The live preview runs the pipeline's post-solve stages (pipeline.after_solve): a slider
-    that slides the shackle over the key hole brings W0501, as `aidl check --set` does."""
-    from aidl_lang.serve.session import Session
-    f = tmp_path / "lock.aidl"
-    f.write_text("""units mm
+# a shackle slid down over the key hole (shackle_y = 14 mm) refills it: W0501
+LOCK = """units mm
 param shackle_y = 30 mm
 solid lock {
     solid body {
@@ -275,7 +271,15 @@ solid lock {
         s = Rectangle(center=(0, shackle_y), width=30, height=8)
     }
 }
-""")
+"""
+
+
+def test_preview_reports_the_same_shape_checks_as_check(tmp_path):
+    """The live preview runs the pipeline's post-solve stages (pipeline.after_solve): a slider
+    that slides the shackle over the key hole brings W0501, as `aidl check --set` does."""
+    from aidl_lang.serve.session import Session
+    f = tmp_path / "lock.aidl"
+    f.write_text(LOCK)
     s = Session(f)
     codes = lambda v: [d["code"] for d in v["diagnostics"]]
     v = s.load()
@@ -300,20 +304,7 @@ def test_websocket_sends_the_picture_then_its_shape_checks(tmp_path):
     from starlette.testclient import TestClient
     from aidl_lang.serve.app import create_app
     f = tmp_path / "lock.aidl"
-    f.write_text("""units mm
-param shackle_y = 30 mm
-solid lock {
-    solid body {
-        b = Rectangle(center=(0, 0), width=40, height=30)
-        hole key {
-            k = Circle(center=(0, 8), radius=3)
-        }
-    }
-    solid shackle {
-        s = Rectangle(center=(0, shackle_y), width=30, height=8)
-    }
-}
-""")
+    f.write_text(LOCK)
     host = {"host": f"127.0.0.1:{PORT}"}
     with TestClient(create_app(f, PORT, watch=False), base_url=BASE) as client:
         with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
