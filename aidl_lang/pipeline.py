@@ -158,7 +158,8 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
     checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
     or ``None`` when the extent check failed (nothing absurd reaches a writer).
     ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
-    preview runs them after the picture is on the page (:func:`shape_checks`)."""
+    preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on
+    the page."""
     if not check_extent(sink, model):
         return None
     check_branches(sink, model)
@@ -169,11 +170,6 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         check_drawing(drawing, sink, min_wall)
     return drawing
 
-
-def shape_checks(drawing: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) -> None:
-    """The geometry checks on the final shape (W0402, W0501-W0507) of a :class:`Drawing` made
-    by ``after_solve(..., shape_checks=False)``."""
-    check_drawing(drawing, sink, min_wall)
 
 
 def _empty_drawing(program, model: Model) -> bool:

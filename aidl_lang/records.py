@@ -85,8 +85,7 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
     for name in own:
         names[name] = cls.__dict__.get(name, _MISSING)
     field_names = tuple(names)
-    ns: dict = {"_MISSING": _MISSING, "_Frozen": FrozenInstanceError, "_cls": None,
-                "_setattr": object.__setattr__}
+    ns: dict = {"_MISSING": _MISSING, "_setattr": object.__setattr__}
     params, body = [], []
     for name, default in names.items():
         if default is _MISSING:
@@ -127,7 +126,6 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
             cls.__setstate__ = _frozen_setstate
             for n in field_names:              # a frozen record's __init__ sets its slots
                 ns[f"_s_{n}"] = _slot_setter(cls, n)
-    ns["_cls"] = cls
     cls.__record_fields__ = field_names
     cls.__record_defaults__ = {n: d for n, d in names.items() if d is not _MISSING}
     cls.__match_args__ = field_names

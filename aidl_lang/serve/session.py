@@ -32,7 +32,8 @@ from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
 from ..output import to_svg
 from ..parser import parse
-from ..pipeline import after_solve, report_failure, shape_checks
+from ..output.checks import check_drawing
+from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
 from ..solver.system import build_rows
 from ..typecheck import check
@@ -178,7 +179,7 @@ class Session:
             return None
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
-        shape_checks(pending[1], sink)
+        check_drawing(pending[1], sink)
         if not sink.items:
             return None
         self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
