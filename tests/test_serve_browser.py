@@ -164,3 +164,35 @@ def test_customizer_controls_zoom_and_set_line(tmp_path):
         page.screenshot(path=str(ROOT / "out" / "serve-tag-zoomed.png"))
         page.locator("#fit").click()
         assert svg.get_attribute("viewBox") == fit
+
+
+LOCK = """units mm
+param shackle_y = 30 mm, min=10 mm, max=40 mm
+solid lock {
+    solid body {
+        b = Rectangle(center=(0, 0), width=40, height=30)
+        hole key {
+            k = Circle(center=(0, 8), radius=3)
+        }
+    }
+    solid shackle {
+        s = Rectangle(center=(0, shackle_y), width=30, height=8)
+    }
+}
+"""
+
+
+def test_shape_checks_follow_the_picture(tmp_path):
+    """A slider move shows its picture, then its shape checks (W0501: the shackle refills
+    the key hole) arrive in a second message and are listed without moving the slider."""
+    f = tmp_path / "lock.aidl"
+    f.write_text(LOCK)
+    with served(f) as url, chromium() as ctx:
+        page = open_page(ctx, url)
+        assert "W0501" not in page.locator("#diagnostics").inner_text()
+        move_slider(page, "shackle_y", 14)
+        page.wait_for_function("/W0501/.test(document.querySelector('#diagnostics').textContent)")
+        assert page.locator('input[type=range][name="shackle_y"]').input_value() == "14"
+        assert "--set shackle_y=14mm" in page.locator("#setline").input_value()
+        move_slider(page, "shackle_y", 30)               # moved off the hole: W0501 goes
+        page.wait_for_function("!/W0501/.test(document.querySelector('#diagnostics').textContent)")

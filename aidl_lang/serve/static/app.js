@@ -27,6 +27,16 @@ function connect() {
 function setStatus(text, cls) { const s = $("status"); s.textContent = text; s.className = "status " + cls; }
 
 function onView(v) {
+  // a later message about the picture already shown (its shape checks, its DOF summary):
+  // only the diagnostics and the summary change; the picture and the controls stay (the
+  // slider may have moved on since)
+  if (v.id == null && state.view && v.version === state.view.version && v.svg === state.view.svg) {
+    state.view = v;
+    showDiagnostics(v.diagnostics);
+    showSource(v.source, v.diagnostics);
+    showDof(v.dof);
+    return;
+  }
   const own = v.id != null && state.inFlight && v.id === state.inFlight.id;
   const t0 = own ? state.inFlight.t0 : null;
   const sent = own ? state.inFlight.sent : null, received = performance.now();
