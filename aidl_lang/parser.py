@@ -232,7 +232,7 @@ class _Tables:
       stays as it is; ``start`` / ``end``: the first and accepting state of each start symbol
       (``start``, ``expr``).  The rows are the JSON's own dicts, used as they are loaded."""
 
-    def __init__(self, data: dict):
+    def __init__(self, data: dict, specialise: bool = True):
         lx = data["lexer"]
         self.mres = [re.compile(p, f) for p, f in lx["patterns"]]
         self.ignore = frozenset(lx["ignore"])
@@ -240,17 +240,34 @@ class _Tables:
         self.keywords = {t: (kw["literal"] if "literal" in kw
                              else [re.compile(p, f) for p, f in kw["patterns"]])
                          for t, kw in lx["keywords"].items()}
+        # terminals the lexer passes on as they are: not skipped, not counted for lines, not
+        # retyped as keywords (one set test per token on the common path)
+        self.plain = frozenset(n for mre in self.mres for n in mre.groupindex
+                               if n not in self.ignore and n not in self.newline
+                               and n not in self.keywords)
+        # single-line terminals retyped by a text -> keyword dict (NAME)
+        self.literal_keywords = {t: kw for t, kw in self.keywords.items()
+                                 if type(kw) is dict and t not in self.ignore
+                                 and t not in self.newline}
         ps = data["parser"]
-        self.reductions = [_reduction(*spec) for spec in ps["rules"]]
+        self.reductions = [_reduction(*spec, specialise=specialise) for spec in ps["rules"]]
         self.states = ps["states"]
         self.start, self.end = ps["start"], ps["end"]
         self.units: dict = {}           # see _unit_chain
 
 
+# rules whose AST builder returns its one child as it is (`arg: expr`, `bare_block: block`):
+# with one child they are run as unit reductions (the child stays, only the state changes)
+_PASS_THROUGH = frozenset(("arg", "bare_block"))
+
+
 def _reduction(origin: str, size: int, name: str, include: list, tail: int, expand1: bool,
-               unit: bool):
-    """A reduction of :attr:`_Tables.states` from a rule's spec (see :func:`_tables_data`)."""
-    if unit:
+               unit: bool, specialise: bool = True):
+    """A reduction of :attr:`_Tables.states` from a rule's spec (see :func:`_tables_data`).
+    ``specialise=False``: every rule through the general callback, pass-through rules
+    included (the reference the short callbacks are tested against)."""
+    if unit or (specialise and name in _PASS_THROUGH and size == 1
+                and include == [[0, False, 0]] and not tail):
         return (None, origin, None)
     if name.startswith("_"):
         build = None                            # spliced into the parent
@@ -260,7 +277,8 @@ def _reduction(origin: str, size: int, name: str, include: list, tail: int, expa
             if not expand1:
                 raise RuntimeError(f"grammar rule `{name}` has no AST builder")
             build = _no_builder                # a `?rule` passes its one child through
-    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build, size))
+    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build, size,
+                                         specialise))
 
 
 def _tables_data() -> dict:
@@ -386,23 +404,41 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
     parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
     tb = _tables()
     mres = tb.mres
-    single = mres[0] if len(mres) == 1 else None
+    match = mres[0].match
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
+    plain = tb.plain                # terminals that are neither skipped, multi-line nor retyped
+    literal = tb.literal_keywords
     pos, line, line_start, end = 0, 1, 0, len(text)
     tokens: list = []
     push = tokens.append
     new_str = str.__new__
     while pos < end:
-        m = single.match(text, pos) if single is not None else None
+        m = match(text, pos)
         if m is None:
-            for mre in mres:
+            for mre in mres[1:]:
                 m = mre.match(text, pos)
                 if m:
                     break
             else:
                 return tokens, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
-        value, type_ = m.group(0), m.lastgroup
+        type_ = m.lastgroup
         npos = m.end()
+        if type_ in plain:
+            tok = new_str(Token, m.group())
+            tok.type = type_
+            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            push(tok)
+            pos = npos
+            continue
+        if type_ in literal:        # a NAME, perhaps a keyword
+            value = m.group()
+            tok = new_str(Token, value)
+            tok.type = literal[type_].get(value, type_)
+            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            push(tok)
+            pos = npos
+            continue
+        value = m.group()
         if type_ in ignore and not keep_ignored:
             if type_ in newline:
                 k = value.count("\n")
@@ -443,6 +479,7 @@ def _run_lalr(text: str, start: str):
     before it, as a streaming lexer would)."""
     tb = _tables()
     states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
+    builder = _STATE.builder
     raw, lex_error = _lex(text)
     tokens = _postlex(raw, lex_error is None)
     state_stack = [start_states[start]]
@@ -482,7 +519,7 @@ def _run_lalr(text: str, start: str):
                 del value_stack[-size:]
             else:
                 children = []
-            push_value(cb(children))
+            push_value(cb(children, builder))
             push_state(states[state_stack[-1]][origin])
     if lex_error is not None:
         raise lex_error
@@ -831,15 +868,34 @@ def _no_builder(builder, meta, items):
     raise RuntimeError("a `?rule` without an AST builder matched more than one item")
 
 
-def _make_callback(include, tail, expand1, build, size: int):
+def _make_callback(include, tail, expand1, build, size: int, specialise: bool = True):
     """The reduction callback of one rule (see :func:`_tables_data` for ``include`` and
-    ``tail``): the node's extent runs from the first to the last child that has one (tokens
-    and reductions both carry ``pos``)."""
+    ``tail``), called as ``cb(children, builder)``: the node's extent runs from the first to
+    the last child that has one (tokens and reductions both carry ``pos``).  The common shapes
+    get their own short callback (one child; every child kept in order; a child-free
+    ``_rule``); they compute exactly what the general one does (tests/test_parse_table.py)."""
     simple = not tail and all(not splice and not nn for _i, splice, nn in include)
     picks = tuple(i for i, _s, _n in include)
     whole = simple and picks == tuple(range(size))        # every child, in order
 
-    def reduce(children):
+    if specialise and size == 1 and simple and not expand1:
+        if not picks:                                     # `_sep: _NL`: nothing kept
+            def reduce_none(children, builder):
+                return _R([], children[0].pos)
+            return reduce_none
+        if build is None:                                 # `_stmt: assign`: spliced
+            def reduce_splice1(children, builder):
+                c = children[0]
+                return _R([c.v if type(c) is _R else c], c.pos)
+            return reduce_splice1
+
+        def reduce1(children, builder):
+            c = children[0]
+            pos = c.pos
+            return _R(build(builder, pos, [c.v if type(c) is _R else c]), pos)
+        return reduce1
+
+    def extent(children):
         for c in children:
             first = c.pos
             if first is not None:
@@ -847,11 +903,33 @@ def _make_callback(include, tail, expand1, build, size: int):
                     last = c.pos
                     if last is not None:
                         break
-                pos = first if first is last else (first[0], first[1], first[2], last[3],
-                                                   last[4], last[5])
-                break
-        else:
-            pos = None
+                return first if first is last else (first[0], first[1], first[2], last[3],
+                                                    last[4], last[5])
+        return None
+
+    if specialise and whole and not expand1 and build is not None and size > 1:
+        def reduce_whole(children, builder):
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            return _R(build(builder, pos, [c.v if type(c) is _R else c for c in children]), pos)
+        return reduce_whole
+
+    if specialise and simple and not whole and not expand1 and build is not None and size > 1:
+        def reduce_picks(children, builder):    # `assign: NAME "=" expr`: some tokens dropped
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            return _R(build(builder, pos, [c.v if type(c) is _R else c
+                                           for c in map(children.__getitem__, picks)]), pos)
+        return reduce_picks
+
+    def reduce(children, builder):
+        pos = extent(children)
         if whole:
             items = [c.v if type(c) is _R else c for c in children]
         elif simple:
@@ -879,7 +957,7 @@ def _make_callback(include, tail, expand1, build, size: int):
             return _R(items[0], pos)
         if build is None:
             return _R(items, pos)                   # a `_rule`: its items are spliced
-        return _R(build(_STATE.builder, pos, items), pos)
+        return _R(build(builder, pos, items), pos)
     return reduce
 
 

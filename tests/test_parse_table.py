@@ -151,3 +151,41 @@ def test_keyword_patterns_and_the_literal_table_lex_the_same():
     finally:
         P._TABLES = cached
     assert ours == theirs and ("IF", "if") in [(a, b) for a, b, _ in ours]
+
+
+def _parse_with(tables, text):
+    from aidl_lang.diagnostics import DiagnosticSink
+    cached = P._tables()
+    P._TABLES = tables
+    try:
+        sink = DiagnosticSink()
+        program = P.parse(text, "edit.aidl", sink)
+        return repr(program), [(d.code, d.message, d.span) for d in sink.items]
+    finally:
+        P._TABLES = cached
+
+
+@pytest.fixture(scope="module")
+def general_tables():
+    """Every rule through the general reduction callback (no short callbacks, the
+    pass-through rules `arg` and `bare_block` reduced as ordinary rules)."""
+    import json
+    return P._Tables(json.loads(json.dumps(P._tables_data())), specialise=False)
+
+
+def test_the_short_callbacks_build_what_the_general_one_builds(general_tables):
+    assert sum(r[0] is None for r in general_tables.reductions) \
+        < sum(r[0] is None for r in P._tables().reductions)
+    for p in PROGRAMS:
+        text = p.read_text()
+        assert _parse_with(P._tables(), text) == _parse_with(general_tables, text)
+
+
+@settings(max_examples=150, deadline=None)
+@given(_EDITS)
+def test_the_short_callbacks_build_the_same_on_random_edits(general_tables, edit):
+    k, where, op, piece = edit
+    text = PROGRAMS[k].read_text()
+    i = int(where * len(text))
+    text = text[:i] + piece + text[i:] if op in ("insert", "swap") else text[:i] + text[i + 1:]
+    assert _parse_with(P._tables(), text) == _parse_with(general_tables, text)
