@@ -213,7 +213,7 @@ class UnexpectedCharacters(ParseError):
 
 
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
-_TABLES_FORMAT = 3
+_TABLES_FORMAT = 4
 
 
 # ----------------------------------------------------------------- the parse table
@@ -234,7 +234,13 @@ class _Tables:
 
     def __init__(self, data: dict, specialise: bool = True):
         lx = data["lexer"]
-        self.mres = [re.compile(p, f) for p, f in lx["patterns"]]
+        self.patterns = lx["patterns"]
+        self._mres: list | None = None
+        fc = lx.get("first")
+        self.parts = fc["parts"] if fc else None
+        self.first = {c: tuple(ix) for c, ix in fc["first"].items()} if fc else {}
+        self.by_first: dict = {}        # see regex_for
+        self._by_ids: dict = {}
         self.ignore = frozenset(lx["ignore"])
         self.newline = frozenset(lx["newline"])
         self.keywords = {t: (kw["literal"] if "literal" in kw
@@ -242,7 +248,9 @@ class _Tables:
                          for t, kw in lx["keywords"].items()}
         # terminals the lexer passes on as they are: not skipped, not counted for lines, not
         # retyped as keywords (one set test per token on the common path)
-        self.plain = frozenset(n for mre in self.mres for n in mre.groupindex
+        names = ([n for n, _p, _f in self.parts] if self.parts is not None
+                 else [n for mre in self.mres for n in mre.groupindex])
+        self.plain = frozenset(n for n in names
                                if n not in self.ignore and n not in self.newline
                                and n not in self.keywords)
         # single-line terminals retyped by a text -> keyword dict (NAME)
@@ -254,6 +262,31 @@ class _Tables:
         self.states = ps["states"]
         self.start, self.end = ps["start"], ps["end"]
         self.units: dict = {}           # see _unit_chain
+
+    @property
+    def mres(self) -> list:
+        """Lark's lexer alternations, compiled on first use (~2 ms): the lexer needs them only
+        where the first-character dispatch has no entry."""
+        if self._mres is None:
+            self._mres = [re.compile(p, f) for p, f in self.patterns]
+        return self._mres
+
+    def regex_for(self, ch: str):
+        """The alternation of the terminals that can start with ``ch``, in Lark's order (so the
+        same terminal wins as in Lark's whole alternation: the others cannot match here), or
+        ``None`` when there is no dispatch entry for ``ch`` (the lexer then runs the whole
+        alternations).  Compiled once per set of terminals and remembered per character."""
+        ids = self.first.get(ch)
+        rx = None
+        if ids is not None:
+            rx = self._by_ids.get(ids)
+            if rx is None:
+                flags = {self.parts[i][2] for i in ids}
+                if len(flags) == 1:
+                    rx = re.compile("|".join(self.parts[i][1] for i in ids), flags.pop())
+                    self._by_ids[ids] = rx
+        self.by_first[ch] = rx
+        return rx
 
 
 # rules whose AST builder returns its one child as it is (`arg: expr`, `bare_block: block`):
@@ -279,6 +312,99 @@ def _reduction(origin: str, size: int, name: str, include: list, tail: int, expa
             build = _no_builder                # a `?rule` passes its one child through
     return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build, size,
                                          specialise))
+
+
+def _split_alternation(pattern: str, names) -> list[str] | None:
+    """The alternatives ``(?P<NAME>...)`` of one of Lark's lexer alternations, in order, or
+    ``None`` when the text does not split back into exactly them."""
+    starts = [pattern.find(f"(?P<{n}>") for n in names]
+    if not starts or starts[0] != 0 or sorted(starts) != starts:
+        return None
+    parts = [pattern[a:b - 1] for a, b in zip(starts, starts[1:])] + [pattern[starts[-1]:]]
+    if "|".join(parts) != pattern:
+        return None
+    return parts
+
+
+def _first_chars(patterns: list) -> dict | None:
+    """For the lexer's first-character dispatch (:func:`_lex`): each terminal's regex
+    alternative and the ASCII characters a match of it can start with (the FIRST set of the
+    regex, read from its parse by :mod:`re`'s own parser), as ``{"parts": [[name, regex,
+    flags], ...], "first": {char: [terminal index, ...]}}`` in Lark's order.  A terminal whose
+    FIRST set cannot be worked out (an unknown construct, a category other than ``\\d``, a
+    possibly empty match) counts as starting with every character.  ``None`` when the
+    alternations do not split into their terminals (then the lexer runs the alternations as
+    Lark builds them).  Built with the table, so a cold run never parses a regex."""
+    try:
+        from re import _constants as C
+        from re import _parser as sre
+    except ImportError:                            # pragma: no cover - another Python's re
+        return None
+    every = frozenset(range(128))
+
+    def seq(items):
+        out: set = set()
+        for op, av in items:
+            f, nullable = one(op, av)
+            out |= f
+            if not nullable:
+                return out, False
+        return out, True
+
+    def one(op, av):
+        if op is C.LITERAL:
+            return ({av} if av < 128 else set()), False
+        if op is C.NOT_LITERAL:
+            return set(every - {av}), False
+        if op is C.IN:
+            chars: set = set()
+            negate = False
+            for o, a in av:
+                if o is C.NEGATE:
+                    negate = True
+                elif o is C.LITERAL:
+                    chars |= {a} if a < 128 else set()
+                elif o is C.RANGE:
+                    chars |= set(range(a[0], min(a[1], 127) + 1))
+                elif o is C.CATEGORY and a is C.CATEGORY_DIGIT:
+                    chars |= set(range(48, 58))
+                else:
+                    return set(every), False
+            return (set(every - chars) if negate else chars), False
+        if op is C.SUBPATTERN:
+            return seq(av[-1])
+        if op is C.BRANCH:
+            out, nullable = set(), False
+            for alt in av[1]:
+                f, n = seq(alt)
+                out |= f
+                nullable |= n
+            return out, nullable
+        if op in (C.MAX_REPEAT, C.MIN_REPEAT):
+            f, n = seq(av[2])
+            return f, n or av[0] == 0
+        if op is C.AT:                             # an anchor matches no character
+            return set(), True
+        return set(every), True                    # anything else: it may start anywhere
+
+    parts = []
+    for pattern, flags in patterns:
+        names = list(re.compile(pattern, flags).groupindex)
+        split = _split_alternation(pattern, names)
+        if split is None:
+            return None
+        parts += [[n, p, flags] for n, p in zip(names, split)]
+    first: dict = {}
+    for i, (_name, part, flags) in enumerate(parts):
+        try:
+            chars, nullable = seq(sre.parse(part, flags))
+        except Exception:                          # pragma: no cover - an unparsable regex
+            return None
+        if nullable or flags & re.IGNORECASE:
+            chars = set(every)
+        for c in sorted(chars):
+            first.setdefault(chr(c), []).append(i)
+    return {"parts": parts, "first": first}
 
 
 def _tables_data() -> dict:
@@ -333,9 +459,10 @@ def _tables_data() -> dict:
         for sym, (_action, arg) in table.states[st].items():
             row[sym] = arg if isinstance(arg, int) else -index[arg] - 1
         states.append(row)
-    return {"lexer": {"patterns": [(m.pattern, m.flags) for m in scanner._mres],
+    patterns = [(m.pattern, m.flags) for m in scanner._mres]
+    return {"lexer": {"patterns": patterns,
                       "ignore": sorted(basic.ignore_types), "newline": sorted(basic.newline_types),
-                      "keywords": keywords},
+                      "keywords": keywords, "first": _first_chars(patterns)},
             "parser": {"rules": specs, "states": states, "start": table.start_states,
                        "end": table.end_states}}
 
@@ -398,13 +525,14 @@ def _lark_version() -> str:
 
 def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharacters | None"]:
     """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
-    same positions), as one loop over the compiled alternations of :class:`_Tables`: the
-    tokens, and the :class:`UnexpectedCharacters` where no terminal matched (the tokens then
+    same positions), as one loop: at each position the alternation of only the terminals that
+    can start with the character there (:meth:`_Tables.regex_for`; the whole alternations
+    where there is no entry), since trying two dozen alternatives in turn was half the
+    lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no terminal matched (the tokens then
     stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
     parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
     tb = _tables()
-    mres = tb.mres
-    match = mres[0].match
+    by_first, regex_for = tb.by_first, tb.regex_for
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
     plain = tb.plain                # terminals that are neither skipped, multi-line nor retyped
     literal = tb.literal_keywords
@@ -413,9 +541,14 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
     push = tokens.append
     new_str = str.__new__
     while pos < end:
-        m = match(text, pos)
+        ch = text[pos]
+        try:
+            rx = by_first[ch]
+        except KeyError:
+            rx = regex_for(ch)
+        m = rx.match(text, pos) if rx is not None else None
         if m is None:
-            for mre in mres[1:]:
+            for mre in tb.mres:
                 m = mre.match(text, pos)
                 if m:
                     break

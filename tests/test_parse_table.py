@@ -189,3 +189,52 @@ def test_the_short_callbacks_build_the_same_on_random_edits(general_tables, edit
     i = int(where * len(text))
     text = text[:i] + piece + text[i:] if op in ("insert", "swap") else text[:i] + text[i + 1:]
     assert _parse_with(P._tables(), text) == _parse_with(general_tables, text)
+
+
+@pytest.fixture(scope="module")
+def whole_alternation_tables():
+    """The lexer without the first-character dispatch: Lark's whole alternations at every
+    position."""
+    import json
+    data = json.loads(json.dumps(P._tables_data()))
+    assert data["lexer"].pop("first") is not None
+    return P._Tables(data)
+
+
+def _lexed(tables, text, keep_ignored=False):
+    cached = P._tables()
+    P._TABLES = tables
+    try:
+        tokens, error = P._lex(text, keep_ignored)
+        return ([(t.type, str(t), t.pos) for t in tokens],
+                None if error is None else (error.pos_in_stream, error.line, error.column))
+    finally:
+        P._TABLES = cached
+
+
+def test_first_characters_of_the_terminals():
+    first = P._tables().first
+    parts = P._tables().parts
+    names = lambda ch: [parts[i][0] for i in first[ch]]  # noqa: E731
+    assert names("f") == ["FSTRING", "NAME"] and names("7") == ["NUMBER"]
+    assert names(".") == ["NUMBER", "DOT"] and names("*") == ["POW", "MUL_OP"]
+    assert names("-") == ["__ANON_0", "ADD_OP"] and names("\n") == ["_NL"]
+    assert "@" not in first and "$" not in first
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.one_of(
+    st.lists(st.sampled_from(list("aZf_F09.eE+-*/%<>=!(){}[],:;#\"'\\ \t\r\n°µ@$x")
+                             + ["mm", " deg", "1e5", "**", "->", "/*", "*/", "//", "in", "if"]),
+             max_size=60).map("".join),
+    st.text(max_size=40)))
+def test_the_first_character_dispatch_lexes_as_the_whole_alternation(whole_alternation_tables,
+                                                                     text):
+    for keep in (False, True):
+        assert _lexed(P._tables(), text, keep) == _lexed(whole_alternation_tables, text, keep)
+
+
+def test_the_first_character_dispatch_lexes_the_programs_as_the_whole_alternation(
+        whole_alternation_tables):
+    for text in TEXTS:
+        assert _lexed(P._tables(), text, True) == _lexed(whole_alternation_tables, text, True)
