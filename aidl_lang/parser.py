@@ -615,7 +615,8 @@ def _run_lalr(text: str, start: str):
     builder = _STATE.builder
     raw, lex_error = _lex(text)
     tokens = _postlex(raw, lex_error is None)
-    state_stack = [start_states[start]]
+    state = start_states[start]
+    state_stack = [state]
     value_stack: list = []
     push_state, push_value = state_stack.append, value_stack.append
     units = tb.units
@@ -628,23 +629,24 @@ def _run_lalr(text: str, start: str):
         ttype = token.type
         while True:
             try:
-                act = states[state_stack[-1]][ttype]
+                act = states[state][ttype]
             except KeyError:
                 # the accepting state has no actions: with the input used up, the parse is done
-                if ttype == "$END" and state_stack[-1] == end_state:
+                if ttype == "$END" and state == end_state:
                     return value_stack[-1]
-                raise UnexpectedToken(token, _expected(states[state_stack[-1]]))
+                raise UnexpectedToken(token, _expected(states[state]))
             if act >= 0:
                 push_state(act)
                 push_value(token)
+                state = act
                 break
             size, origin, cb = reductions[~act]
             if size is None:                 # unit rules: same value, new state
-                key = (state_stack[-2], state_stack[-1], ttype)
+                key = (state_stack[-2], state, ttype)
                 top = units.get(key)
                 if top is None:
                     top = units[key] = _unit_chain(tb, state_stack[-2], origin, ttype)
-                state_stack[-1] = top
+                state_stack[-1] = state = top
                 continue
             if size:
                 children = value_stack[-size:]
@@ -653,7 +655,8 @@ def _run_lalr(text: str, start: str):
             else:
                 children = []
             push_value(cb(children, builder))
-            push_state(states[state_stack[-1]][origin])
+            state = states[state_stack[-1]][origin]
+            push_state(state)
     if lex_error is not None:
         raise lex_error
     raise UnexpectedToken(tokens[-1], set())    # $END shifted: no LALR table of Lark's does
@@ -690,6 +693,8 @@ def mask_comments(src: str, record: list | None = None) -> str:
     as an expression is never swallowed.  ``record`` (if given) receives ``(offset, is_comment)``
     for every ``//`` seen, for the syntax-error hints.
     """
+    if "//" not in src:                         # nothing to decide (and nothing to record)
+        return src
     out = list(src)
     i, n = 0, len(src)
     quote = None
