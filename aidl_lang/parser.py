@@ -1066,6 +1066,28 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
                                            for c in map(children.__getitem__, picks)]), pos)
         return reduce_picks
 
+    if (specialise and not tail and not expand1 and build is None and include
+            and include[0] == (0, True, 0) and all(not nn for _i, _s, nn in include)):
+        rest = include[1:]
+
+        def reduce_grow(children, builder):     # `__block_star: __block_star _sep _stmt`
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            items = children[0].v               # the list grows in place
+            for i, splice, _nn in rest:
+                c = children[i]
+                if splice:
+                    items += c.v
+                elif type(c) is _R:
+                    items.append(c.v)
+                else:
+                    items.append(c)
+            return _R(items, pos)
+        return reduce_grow
+
     def reduce(children, builder):
         pos = extent(children)
         if whole:
