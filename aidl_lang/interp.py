@@ -18,6 +18,7 @@ Limits (docs/language.md, "Limits"; :mod:`aidl_lang.limits`): loops and comprehe
 """
 from __future__ import annotations
 
+import gc
 import time
 from pathlib import Path
 
@@ -62,15 +63,28 @@ class Interpreter(Statements, Calls, Expressions):
         self.file: FileCtx | None = None
         self.root_dir: Path | None = None
         self.cur_span: Span | None = None
+        self.plans: dict = {}          # (entry name, positional count, keywords) -> call plan
 
     def run(self, program):
         """Interpret ``program``; an exhausted budget is one ``E0304`` (the model so far is
-        returned, with the error in the sink)."""
+        returned, with the error in the sink).
+
+        The cyclic garbage collector is paused while interpreting (the previous state is
+        restored): a run makes hundreds of thousands of small objects (values, expressions,
+        records) that reference counting frees, and the collector's full passes over a large
+        heap were up to half the time (docs/performance.md, "The interpreter").  What a run
+        makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
+        paused = gc.isenabled()
+        if paused:
+            gc.disable()
         try:
             return Statements.run(self, program)
         except BudgetExhausted as ex:
             self.budget_error(ex)
             return self.model
+        finally:
+            if paused:
+                gc.enable()
 
     # ------------------------------------------------------------------ the budget
     def step(self, span=None) -> None:

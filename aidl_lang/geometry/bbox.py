@@ -31,10 +31,23 @@ class BBTerm(Expr):
 
 
 def contains_bbox(e) -> bool:
-    if isinstance(e, BBTerm):
+    """True if a :class:`BBTerm` occurs in ``e`` (walked without recursion)."""
+    t = type(e)
+    if t is Lin:                  # the common case: an affine expression has no box terms
+        return False
+    if t is BBTerm:
         return True
-    if isinstance(e, Nl):
-        return any(contains_bbox(a) for a in e.args)
+    if t is not Nl:
+        return False
+    todo = list(e.args)
+    pop, extend = todo.pop, todo.extend
+    while todo:
+        a = pop()
+        t = type(a)
+        if t is Nl:
+            extend(a.args)
+        elif t is BBTerm:
+            return True
     return False
 
 

@@ -26,7 +26,7 @@ class Expr:
         return add(o, self)
 
     def __sub__(self, o):
-        return add(self, mul(-1.0, o))
+        return sub(self, o)
 
     def __rsub__(self, o):
         return add(o, mul(-1.0, self))
@@ -127,6 +127,20 @@ def add(a, b) -> Expr:
             t[k] = get(k, 0.0) + v
         return _lin(t, a.const + b.const)
     return Nl("add", (a, b))
+
+
+def sub(a: Expr, b) -> Expr:
+    """``a - b``: the same expression, with the same floating-point operations, as
+    ``add(a, mul(-1.0, b))``, without the negated copy of ``b`` when both are affine."""
+    if type(a) is Lin and type(b) is Lin:
+        bt = b.terms
+        t = dict(a.terms)
+        if bt:
+            get = t.get
+            for k, v in bt.items():
+                t[k] = get(k, 0.0) + v * -1.0
+        return _lin(t, a.const + b.const * -1.0)
+    return add(a, mul(-1.0, b))
 
 
 def mul(a, b) -> Expr:

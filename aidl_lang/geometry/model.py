@@ -12,7 +12,7 @@ from ..records import dataclass, field
 import numpy as np
 
 from ..diagnostics import Span
-from .expr import Expr, Lin, var
+from .expr import Expr, Lin, _lin, var
 
 
 class Model:
@@ -101,6 +101,14 @@ class Structure:
             s = s.parent
         return Lin(tx), Lin(ty)
 
+    def owner_set(self) -> frozenset:
+        """``frozenset({self})``, made once (the owners of every value that refers to this
+        structure's geometry)."""
+        own = self.__dict__.get("_own")
+        if own is None:
+            own = self.__dict__["_own"] = frozenset((self,))
+        return own
+
     def __repr__(self):
         return f"<{self.kind} {self.path}>"
 
@@ -117,6 +125,8 @@ class Point:
         return var(self.ix), var(self.iy)
 
     def in_frame(self, s: Structure | None) -> tuple[Expr, Expr]:
+        if self.owner is s:            # the common case: no frame offset
+            return _lin({self.ix: 1.0}, 0.0), _lin({self.iy: 1.0}, 0.0)
         ox, oy = self.owner.frame_offset(s)
         ox.terms[self.ix] = ox.terms.get(self.ix, 0.0) + 1.0
         oy.terms[self.iy] = oy.terms.get(self.iy, 0.0) + 1.0

@@ -436,7 +436,7 @@ def _build_Text(ctx, g, a):
 # ---------------------------------------------------------------------- members
 def _pv(p, frame) -> PV:
     x, y = p.in_frame(frame)
-    return PV(x, y, p, frozenset([p.owner]))
+    return PV(x, y, p, p.owner.owner_set())
 
 
 def points_of(g: Geometry) -> list:
@@ -451,7 +451,7 @@ def points_of(g: Geometry) -> list:
 
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
-    own = frozenset([g.owner])
+    own = g.owner.owner_set()
     k = g.kind
     if name in g.points and not (k in ("Polygon", "RegularPolygon") and name.startswith("p")
                                  and name[1:].isdigit()):

@@ -55,7 +55,7 @@ class GeomRef:
 
     @property
     def owners(self):
-        return frozenset([self.geom.owner])
+        return self.geom.owner.owner_set()
 
 
 @dataclass(eq=False, slots=True)
@@ -64,7 +64,7 @@ class StructRef:
 
     @property
     def owners(self):
-        return frozenset([self.struct])
+        return self.struct.owner_set()
 
 
 @dataclass(eq=False, slots=True)
@@ -74,7 +74,7 @@ class BBoxRef:
     @property
     def owners(self):
         t = self.target
-        return frozenset([t if isinstance(t, Structure) else t.owner])
+        return (t if isinstance(t, Structure) else t.owner).owner_set()
 
 
 @dataclass(eq=False, slots=True)
@@ -139,9 +139,20 @@ def type_name(v) -> str:
 
 
 def owners_of(*vals) -> frozenset:
+    """The structures whose geometry ``vals`` refer to (lists and tuples looked into)."""
     out = set()
     for v in vals:
-        o = getattr(v, "owners", None)
+        t = type(v)
+        if t is Q or t is PV:
+            o = v.owners
+        elif t is GeomRef:
+            out.add(v.geom.owner)
+            continue
+        elif t is StructRef:
+            out.add(v.struct)
+            continue
+        else:
+            o = getattr(v, "owners", None)
         if o:
             out |= o
         elif isinstance(v, (list, tuple)):

@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
-from ..geometry.expr import as_const, func, lift, var
+from ..geometry.expr import Lin, as_const, func, lift, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
@@ -21,6 +21,60 @@ from .common import (DEG, _a, _fmt_num, _src, show)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
+# argument types a reference to geometry of these kinds passes unchanged (see _coerce)
+_GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
+               "curve": ("Line", "Circle", "Arc")}
+
+
+class _Plan:
+    """How a call binds to a registry entry, worked out once per call shape (entry name,
+    number of positional arguments, keyword names) and interpreter run (the variant,
+    keyword renaming and synonym swaps of :func:`~aidl_lang.registry.bind_variant` and
+    :func:`~aidl_lang.registry.canonical_args`): ``order`` lists, in the variant's order,
+    ``(argument, type, where, index)`` with ``where`` 0 (positional ``index``), 1 (keyword
+    ``index``) or 2 (the registry default ``index``, a number of dimension ``type`` when
+    ``type`` is a dimension, else the value itself)."""
+
+    __slots__ = ("entry", "canonical", "category", "order")
+
+    def __init__(self, entry, canonical_name, order):
+        self.entry = entry
+        self.canonical = canonical_name
+        self.category = entry.category
+        self.order = order
+
+
+_NO_PLAN = object()
+
+
+def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
+    """The :class:`_Plan` of a call of registry entry ``nm`` with ``npos`` positional
+    arguments and keywords ``kwnames``; None when such a call takes the general path (no
+    matching variant: its errors; a repeated keyword; ``Text``, whose ``center`` changes a
+    default)."""
+    entry = lookup(nm)
+    cn = canonical(nm)
+    if entry is None or cn == "Text" or len(set(kwnames)) < len(kwnames):
+        return None
+    kwnames = list(kwnames)
+    variant, ren, _reason = bind_variant(entry, npos, kwnames)
+    if variant is None:
+        return None
+    src: dict = {}
+    for a, i in zip(variant, range(npos)):
+        src[a.name] = (0, i)
+    for i, k in enumerate(kwnames):
+        src[ren[k]] = (1, i)
+    src = canonical_args(nm, src)
+    order = []
+    for a in variant:
+        if a.name in src:
+            where, i = src[a.name]
+            order.append((a.name, a.type, where, i))
+        elif a.default is not None:      # registry defaults are in mm / radians
+            dim = _DIMS.get(a.type)
+            order.append((a.name, dim, 2, a.default))
+    return _Plan(entry, cn, tuple(order))
 
 
 class Calls:
@@ -59,6 +113,13 @@ class Calls:
         nm = callee.name
         if nm in FUNCTIONS:
             return self.finite(self._function(nm, node), node.span)
+        kws = node.kwargs
+        key = (nm, len(node.args), tuple([kw.name for kw in kws]) if kws else ())
+        plan = self.plans.get(key, _NO_PLAN)
+        if plan is _NO_PLAN:
+            plan = self.plans[key] = _plan(nm, len(node.args), key[2])
+        if plan is not None:
+            return self._planned_call(node, nm, plan, name)
         entry = lookup(nm)
         args = [self.eval(a) for a in node.args]
         kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
@@ -113,9 +174,54 @@ class Calls:
         self._add_constraint(canonical(nm), eqs, node.span, _src(self.sink, node.span), owners)
         return None
 
+    def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
+        """A call of a registry entry by its :class:`_Plan`: the same evaluation order,
+        coercions, checks and errors as the general path of :meth:`_call`."""
+        args = [self.eval(a) for a in node.args]
+        kwvals = [self.eval(kw.value) for kw in node.kwargs]
+        conv = {}
+        spans = {}
+        coerce = self._coerce
+        for aname, atype, where, ix in plan.order:
+            if where == 0:
+                v, sp = args[ix], node.args[ix].span
+            elif where == 1:
+                v, sp = kwvals[ix], node.kwargs[ix].value.span
+            else:
+                conv[aname] = Q.num(ix, atype) if atype else ix
+                continue
+            spans[aname] = sp
+            conv[aname] = coerce(v, atype, sp, nm, aname)
+        check = self._check_magnitudes
+        for k, v in conv.items():
+            check(v, spans.get(k, node.span), k)
+        cn = plan.canonical
+        if plan.category == "primitive":
+            return self._primitive(cn, conv, node, spans)
+        if plan.category == "operation":
+            from ..geometry.operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, cn, conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
+        owners = owners_of(*conv.values())
+        try:
+            eqs = BUILDERS[cn](self, **conv)
+        except ConstraintError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), node.span)
+        self._add_constraint(cn, eqs, node.span, _src(self.sink, node.span), owners)
+        return None
+
     def _primitive(self, kind, conv, node, spans):
         s = self._need_struct(node.span)
         for k, v in conv.items():
+            t = type(v)
+            own = v.owners if t is Q or t is PV else owners_of(v)
+            if not own or (s in own and len(own) == 1):
+                continue
             bad = [o for o in owners_of(v) if o is not s]
             if bad:
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
@@ -156,11 +262,13 @@ class Calls:
         if v.obj is not None and v.obj.owner is s:
             return v.obj
         self.count_object(self.cur_span)
-        x0, y0 = self.value_of(v.x), self.value_of(v.y)
+        cx, cy = as_const(v.x), as_const(v.y)
+        x0 = cx if cx is not None else self.value_of(v.x)
+        y0 = cy if cy is not None else self.value_of(v.y)
         ix = self.model.new_param(x0, True, s, f"{label}.x")
         iy = self.model.new_param(y0, True, s, f"{label}.y")
         p = Point(ix, iy, s, None, label)
-        if as_const(v.x) is None or as_const(v.y) is None:
+        if cx is None or cy is None:
             c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
                            text=f"{label} placed at a derived point", implicit=True)
             s.constraints.append(c)
@@ -208,6 +316,16 @@ class Calls:
                         hint="give a length unit such as `mm` or `in`")
 
     def _coerce(self, v, typ: str, span, fname: str, aname: str):
+        t = type(v)                    # the common cases first: nothing to convert
+        if t is Q:
+            if v.dim == _DIMS.get(typ):
+                return v
+        elif t is PV:
+            if typ == "point" or typ == "geometry":
+                return v
+        elif t is GeomRef:
+            if typ in _GEOM_KINDS and v.geom.kind in _GEOM_KINDS[typ]:
+                return v
         if typ == "any":
             return v
         if v is None and typ == "point":
@@ -378,6 +496,21 @@ class Calls:
         """Arguments of primitives, constraints and operations: every number known before
         solving must be finite (E0112), and lengths and coordinates within the model extent
         :data:`~aidl_lang.limits.MAX_EXTENT` (E0305)."""
+        t = type(v)
+        if t is Q:                     # the common case: one number
+            e = v.expr
+            if type(e) is Lin:
+                if e.terms:
+                    return
+                c = e.const
+            else:
+                c = v.const()
+                if c is None:
+                    return
+            if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
+                return                 # finite, and within the extent
+        elif t is GeomRef or t is StructRef or t is str or t is bool:
+            return
         if isinstance(v, (list, tuple)):
             for item in v[:10_000]:
                 self._check_magnitudes(item, span, arg)
