@@ -63,6 +63,7 @@ class Interpreter(Statements, Calls, Expressions):
         self.file: FileCtx | None = None
         self.root_dir: Path | None = None
         self.cur_span: Span | None = None
+        self.body_stmts: list | None = None           # the structure body being run
         self.plans: dict = {}          # (entry name, positional count, keywords) -> call plan
 
     def run(self, program):

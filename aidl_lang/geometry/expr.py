@@ -93,6 +93,8 @@ def lift(x) -> Expr:
 
 def as_const(x) -> float | None:
     """The constant value of ``x`` if it has no unknowns, else None."""
+    if type(x) is Lin:
+        return None if x.terms else x.const
     if isinstance(x, (int, float)):
         return float(x)
     if isinstance(x, Lin) and not x.terms:
@@ -148,13 +150,19 @@ def mul(a, b) -> Expr:
         a = Lin({}, float(a))
     if not isinstance(b, Expr):
         b = Lin({}, float(b))
-    la, lb = isinstance(a, Lin), isinstance(b, Lin)
+    la, lb = type(a) is Lin, type(b) is Lin
     ca = a.const if la and not a.terms else None
     cb = b.const if lb and not b.terms else None
     if ca is not None and lb:
-        return _lin({k: v * ca for k, v in b.terms.items()}, b.const * ca)
+        t = {}
+        for k, v in b.terms.items():
+            t[k] = v * ca
+        return _lin(t, b.const * ca)
     if cb is not None and la:
-        return _lin({k: v * cb for k, v in a.terms.items()}, a.const * cb)
+        t = {}
+        for k, v in a.terms.items():
+            t[k] = v * cb
+        return _lin(t, a.const * cb)
     if ca == 0.0 or cb == 0.0:
         return const(0.0)
     return Nl("mul", (a, b))

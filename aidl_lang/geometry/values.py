@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from ..records import dataclass
 
-from .expr import Expr, Lin, as_const, lift
+from .expr import Expr, Lin, _lin, as_const, lift
 from .model import Geometry, Point, Structure
 
 NUM = (0, 0)
@@ -33,7 +33,7 @@ class Q:
 
     @staticmethod
     def num(v: float, dim=NUM) -> "Q":
-        return Q(Lin({}, float(v)), dim)
+        return Q(_lin({}, float(v)), dim)
 
     def const(self) -> float | None:
         return as_const(self.expr)

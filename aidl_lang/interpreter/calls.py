@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
-from ..geometry.expr import Lin, as_const, func, lift, var
+from ..geometry.expr import Lin, _lin, as_const, func, lift, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
@@ -45,6 +45,7 @@ class _Plan:
 
 
 _NO_PLAN = object()
+_BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
 
 def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
@@ -79,21 +80,31 @@ def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
 
 class Calls:
     def _callee(self, f):
-        if isinstance(f, A.Name):
-            v, _ = self.scope.lookup(f.id)
-            if v is not None:
-                return v
-            if lookup(f.id) is not None or f.id in FUNCTIONS:
-                return Builtin(f.id)
-            return None
+        if type(f) is A.Name:
+            name = f.id
+            sc = self.scope                  # Scope.lookup, inlined: the first scope that has it
+            while sc is not None:
+                vars_ = sc.vars
+                if name in vars_:
+                    v = vars_[name]
+                    if v is not None:
+                        return v
+                    break
+                sc = sc.parent
+            b = _BUILTINS.get(name)
+            if b is None and (lookup(name) is not None or name in FUNCTIONS):
+                b = _BUILTINS[name] = Builtin(name)
+            return b
         if isinstance(f, A.Member):
             obj = self._callee(f.obj) if isinstance(f.obj, (A.Name, A.Member)) else None
             if isinstance(obj, Namespace):
                 return obj.scope.vars.get(f.name)
         return None
 
-    def _call(self, node: A.Call, name: str | None = None):
-        callee = self._callee(node.func)
+    def _call(self, node: A.Call, name: str | None = None, callee=None):
+        """Evaluate a call (``callee``: ``self._callee(node.func)`` when the caller has it)."""
+        if callee is None:
+            callee = self._callee(node.func)
         if callee is None:
             if isinstance(node.func, A.Name):
                 cands = list(self.scope.names()) + list(ENTRIES) + list(FUNCTIONS)
@@ -339,7 +350,10 @@ class Calls:
                 return v
             if v.dim == NUM:
                 k = self.unit_scale if typ == "length" else DEG
-                return Q(lift(v.expr) * k, want, v.owners)
+                e = v.expr
+                if type(e) is Lin and not e.terms:     # a number: what mul() gives, directly
+                    return Q(_lin({}, k * e.const), want, v.owners)
+                return Q(lift(e) * k, want, v.owners)
             raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
                             hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
                                                                      " such as `deg`" if typ == "angle" else ""))

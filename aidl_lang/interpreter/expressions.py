@@ -23,11 +23,14 @@ _HANDLERS: dict = {}      # (interpreter class, AST node class) -> the _e_<Node>
 class Expressions:
     def eval(self, e, name: str | None = None):
         t = type(e)
+        if t is A.Call:                  # what _e_Call does, without the extra frame
+            self.step(e.span)
+            return self._call(e, name)
         key = (type(self), t)
         m = _HANDLERS.get(key)
         if m is None:
             m = _HANDLERS[key] = getattr(type(self), "_e_" + t.__name__)
-        return m(self, e, name) if t is A.Call else m(self, e)
+        return m(self, e)
 
     def _e_Num(self, e: A.Num):
         if not math.isfinite(e.value) or abs(e.value) > 1e15:
@@ -98,7 +101,7 @@ class Expressions:
             s = s.parent
         if lookup(e.id) is not None or e.id in FUNCTIONS:
             return Builtin(e.id)
-        later = getattr(self, "later_defs", {}).get(e.id)
+        later = self.later_definition(e.id)
         if later is not None and later > e.span.line:
             raise EvalError("E0101", f"`{e.id}` is used before its definition: it is defined later, "
                             f"on line {later}", e.span,

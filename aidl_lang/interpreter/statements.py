@@ -224,19 +224,26 @@ class Statements:
         """Run a structure body: definitions (assignments, structures, loops, ifs) in order,
         then its constraint statements (bare calls and equations at the body's top level), so
         a constraint may name geometry defined below it (docs/language.md, "Order")."""
-        saved = (self.struct, self.scope, getattr(self, "later_defs", {}))
+        saved = (self.struct, self.scope, self.body_stmts)
         self.struct, self.scope = struct, scope
-        self.later_defs = _definition_lines(block.stmts)
+        self.body_stmts = block.stmts        # for "defined later" (see later_definition)
         struct.scope = scope.vars            # members (`self.body`) are visible while it runs
         try:
+            later = []
             for st in block.stmts:
-                if not isinstance(st, A.ExprStmt):
+                if type(st) is A.ExprStmt:
+                    later.append(st)
+                else:
                     self._exec_stmt(st)
-            for st in block.stmts:
-                if isinstance(st, A.ExprStmt):
-                    self._exec_stmt(st)
+            for st in later:
+                self._exec_stmt(st)
         finally:
-            self.struct, self.scope, self.later_defs = saved
+            self.struct, self.scope, self.body_stmts = saved
+
+    def later_definition(self, name: str) -> int | None:
+        """The line of ``name``'s first definition in the body being run (also inside its
+        loops and ifs), or None."""
+        return _definition_lines(self.body_stmts or []).get(name)
 
     def _exec_block(self, block: A.Block) -> None:
         for st in block.stmts:
@@ -262,12 +269,13 @@ class Statements:
                                  hint="split it into named constants"))
 
     def _exec(self, st) -> None:
-        if isinstance(st, A.StructDecl):
-            self._struct_decl(st)
-        elif isinstance(st, A.Assign):
+        t = type(st)
+        if t is A.Assign:
             self._assign(st)
-        elif isinstance(st, A.ExprStmt):
+        elif t is A.ExprStmt:
             self._expr_stmt(st.expr)
+        elif t is A.StructDecl:
+            self._struct_decl(st)
         elif isinstance(st, A.ThicknessDecl):
             self._thickness(st)
         elif isinstance(st, A.For):
@@ -339,19 +347,24 @@ class Statements:
 
     def _assign(self, st: A.Assign) -> None:
         v = st.value
-        if isinstance(v, A.Call) and isinstance(v.func, (A.Name, A.Member)):
+        callee = None
+        if type(v) is A.Call and isinstance(v.func, (A.Name, A.Member)):
             callee = self._callee(v.func)
             if isinstance(callee, Template):
                 self._check_new_name(st.name, st.name_span, self._need_struct(st.span))
                 ref = self._instantiate(callee, v, st.name + self._loop_suffix())
                 self.scope.vars[st.name] = ref
                 return
-        if st.name in CONSTANTS or st.name in ("self",):
+        if st.name in CONSTANTS or st.name == "self":
             raise EvalError("E0107", f"`{st.name}` is a built-in name and cannot be assigned",
                             st.name_span, hint="choose another name")
         if isinstance(v, A.Call) and self.struct is not None:
             self._check_new_name(st.name, st.name_span, self.struct)
-        val = self.eval(v, name=st.name)
+        if callee is not None:               # what eval() does for a call, callee known
+            self.step(v.span)
+            val = self._call(v, st.name, callee)
+        else:
+            val = self.eval(v, name=st.name)
         if isinstance(val, GeomRef) and not val.geom.name and val.geom.owner is self.struct:
             val.geom.name = st.name
         if isinstance(val, list):
