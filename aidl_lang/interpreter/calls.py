@@ -31,9 +31,10 @@ class _Plan:
     number of positional arguments, keyword names) and interpreter run (the variant,
     keyword renaming and synonym swaps of :func:`~aidl_lang.registry.bind_variant` and
     :func:`~aidl_lang.registry.canonical_args`): ``order`` lists, in the variant's order,
-    ``(argument, type, where, index)`` with ``where`` 0 (positional ``index``), 1 (keyword
-    ``index``) or 2 (the registry default ``index``, a number of dimension ``type`` when
-    ``type`` is a dimension, else the value itself)."""
+    ``(argument, type, where, index, dimension)`` with ``where`` 0 (positional ``index``),
+    1 (keyword ``index``) or 2 (the registry default ``index``, a number of dimension
+    ``type`` when ``type`` is a dimension, else the value itself); ``dimension`` is the
+    dimension a number of this type has (None if it is not a number)."""
 
     __slots__ = ("entry", "canonical", "category", "order")
 
@@ -71,10 +72,10 @@ def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
     for a in variant:
         if a.name in src:
             where, i = src[a.name]
-            order.append((a.name, a.type, where, i))
+            order.append((a.name, a.type, where, i, _DIMS.get(a.type)))
         elif a.default is not None:      # registry defaults are in mm / radians
             dim = _DIMS.get(a.type)
-            order.append((a.name, dim, 2, a.default))
+            order.append((a.name, dim, 2, a.default, None))
     return _Plan(entry, cn, tuple(order))
 
 
@@ -193,7 +194,7 @@ class Calls:
         conv = {}
         spans = {}
         coerce = self._coerce
-        for aname, atype, where, ix in plan.order:
+        for aname, atype, where, ix, want in plan.order:
             if where == 0:
                 v, sp = args[ix], node.args[ix].span
             elif where == 1:
@@ -202,9 +203,23 @@ class Calls:
                 conv[aname] = Q.num(ix, atype) if atype else ix
                 continue
             spans[aname] = sp
-            conv[aname] = coerce(v, atype, sp, nm, aname)
+            if type(v) is Q and v.dim == want:       # _coerce's first case, inline
+                conv[aname] = v
+            else:
+                conv[aname] = coerce(v, atype, sp, nm, aname)
         check = self._check_magnitudes
         for k, v in conv.items():
+            t = type(v)                 # _check_magnitudes' common cases, inline
+            if t is Q:
+                e = v.expr
+                if type(e) is Lin:
+                    if e.terms:
+                        continue
+                    c = e.const
+                    if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
+                        continue
+            elif t is GeomRef:
+                continue
             check(v, spans.get(k, node.span), k)
         cn = plan.canonical
         if plan.category == "primitive":

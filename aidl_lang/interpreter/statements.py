@@ -491,11 +491,15 @@ class Statements:
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
         s = self._need_struct(span)
-        self._check_subtree(owners, span, s)
+        for o in owners:
+            if not o.is_within(s):
+                self._check_subtree(owners, span, s)
         self.count_object(span)
         c = Constraint(kind, s, span, text=text)
-        if any(contains_bbox(e.expr) for e in eqs):
-            c.deferred = eqs
+        for e in eqs:
+            if contains_bbox(e.expr):
+                c.deferred = eqs
+                break
         else:
             c.equations = eqs
         s.constraints.append(c)
