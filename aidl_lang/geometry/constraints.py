@@ -13,7 +13,8 @@ import math
 from .bbox import BBTerm
 from .expr import Expr, evaluate, func, hypot, var
 from .model import Equation
-from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name
+from .primitives import member
+from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
 
 
 class ConstraintError(Exception):
@@ -24,17 +25,14 @@ def _pt(v, name: str) -> PV:
     if isinstance(v, PV):
         return v
     if isinstance(v, GeomRef) and v.geom.kind == "Point":
-        from .primitives import member
         return member(v.geom, "p", None)
     raise ConstraintError(f"`{name}` must be a point, got {type_name(v)}")
 
 
 def _line(ctx, v, name: str) -> tuple[PV, PV]:
     if isinstance(v, GeomRef) and v.geom.kind == "Line":
-        from .primitives import member
         return member(v.geom, "start", ctx.struct), member(v.geom, "end", ctx.struct)
     if isinstance(v, GeomRef) and v.geom.kind == "Slot":
-        from .primitives import member
         return member(v.geom, "start", ctx.struct), member(v.geom, "end", ctx.struct)
     raise ConstraintError(f"`{name}` must be a Line, got {type_name(v)}")
 
@@ -57,7 +55,6 @@ def _directed_line(ctx, v, name: str) -> tuple[PV, PV]:
 
 def _circ(ctx, v, name: str) -> tuple[PV, Expr]:
     if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
-        from .primitives import member
         return member(v.geom, "center", ctx.struct), member(v.geom, "radius", ctx.struct).expr
     raise ConstraintError(f"`{name}` must be a Circle or Arc, got {type_name(v)}")
 
@@ -129,7 +126,6 @@ def fixed(ctx, a, **_):
     if isinstance(a, PV):
         pts = [a]
     elif isinstance(a, GeomRef):
-        from .primitives import member
         pts = [member(a.geom, n, ctx.struct) for n in a.geom.points]
         eqs = [Equation(var(s.index) - ctx.value_of(var(s.index))) for s in a.geom.scalars.values()]
     elif isinstance(a, StructRef):
@@ -200,7 +196,6 @@ def diameter(ctx, circle, diameter, **_):
 
 def _size(ctx, v):
     """The 'size' of a value for Equal: list of expressions."""
-    from .primitives import member
     if isinstance(v, Q):
         return [v.expr]
     if isinstance(v, GeomRef):
@@ -218,7 +213,6 @@ def equal(ctx, a, b, **_):
     if isinstance(a, PV) or isinstance(b, PV):
         return coincident(ctx, a, b)
     if isinstance(a, Q) and isinstance(b, Q):
-        from .values import unify_add
         ea, eb, _d = unify_add(a, b, ctx.unit_scale, math.pi / 180)
         return [Equation(ea - eb)]
     ka = a.geom.kind if isinstance(a, GeomRef) else "value"

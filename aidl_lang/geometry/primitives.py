@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import func, hypot, var
+from .expr import as_const, func, hypot, var
 from .model import Equation, Geometry
 from .values import ANG, LEN, PV, GeomRef, Q
 
@@ -215,7 +215,6 @@ def _build_Rectangle(ctx, g, a):
 
 
 def _is_const_pv(p: PV) -> bool:
-    from .expr import as_const
     return as_const(p.x) is not None and as_const(p.y) is not None
 
 

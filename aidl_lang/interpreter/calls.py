@@ -350,7 +350,15 @@ class Calls:
             if typ == "point" or typ == "geometry":
                 return v
         elif t is GeomRef:
-            if typ in _GEOM_KINDS and v.geom.kind in _GEOM_KINDS[typ]:
+            if typ in _GEOM_KINDS:
+                if v.geom.kind in _GEOM_KINDS[typ]:
+                    return v
+            elif typ == "boxed" or typ == "geometry" or typ == "any":
+                return v
+            elif typ == "point" and v.geom.kind == "Point":
+                return geom_member(v.geom, "p", self.struct)
+        elif t is StructRef or t is BBoxRef:
+            if typ == "boxed" or typ == "any":
                 return v
         if typ == "any":
             return v
