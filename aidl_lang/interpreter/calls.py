@@ -189,8 +189,9 @@ class Calls:
     def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
         """A call of a registry entry by its :class:`_Plan`: the same evaluation order,
         coercions, checks and errors as the general path of :meth:`_call`."""
-        args = [self.eval(a) for a in node.args]
-        kwvals = [self.eval(kw.value) for kw in node.kwargs]
+        ev = self.eval
+        args = list(map(ev, node.args))
+        kwvals = [ev(kw.value) for kw in node.kwargs] if node.kwargs else ()
         conv = {}
         spans = {}
         coerce = self._coerce
@@ -220,6 +221,10 @@ class Calls:
                         continue
             elif t is GeomRef:
                 continue
+            elif t is PV:
+                x, y = v.x, v.y          # coordinates with unknowns: nothing to check
+                if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
+                    continue
             check(v, spans.get(k, node.span), k)
         cn = plan.canonical
         if plan.category == "primitive":

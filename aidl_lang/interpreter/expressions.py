@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
-from ..geometry.expr import as_const, func, lift
+from ..geometry.expr import _lin, as_const, func, lift
 from ..geometry.primitives import member as geom_member, member_names
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
@@ -26,6 +26,19 @@ class Expressions:
         if t is A.Call:                  # what _e_Call does, without the extra frame
             self.step(e.span)
             return self._call(e, name)
+        if t is A.Name:                  # a name defined in scope: _e_Name's first case, inline
+            nid = e.id
+            if nid != "self":
+                sc = self.scope
+                while sc is not None:
+                    vars_ = sc.vars
+                    if nid in vars_:
+                        v = vars_[nid]
+                        if v is POISON:
+                            raise _Silent()
+                        return v
+                    sc = sc.parent
+            return self._e_Name(e)
         key = (type(self), t)
         m = _HANDLERS.get(key)
         if m is None:
@@ -36,11 +49,12 @@ class Expressions:
         if not math.isfinite(e.value) or abs(e.value) > 1e15:
             raise EvalError("E0112", "this number is too large", e.span,
                             hint="AIDL numbers must stay below 1e15")
-        if e.unit is None:
-            return Q.num(e.value)
-        if e.unit in UNITS_LENGTH:
-            return Q.num(e.value * UNITS_LENGTH[e.unit], LEN)
-        return Q.num(e.value * UNITS_ANGLE[e.unit], ANG)
+        u = e.unit                       # Q.num, inline
+        if u is None:
+            return Q(_lin({}, float(e.value)), NUM)
+        if u in UNITS_LENGTH:
+            return Q(_lin({}, float(e.value * UNITS_LENGTH[u])), LEN)
+        return Q(_lin({}, float(e.value * UNITS_ANGLE[u])), ANG)
 
     def _e_Str(self, e):
         return e.value
