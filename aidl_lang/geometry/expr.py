@@ -141,7 +141,10 @@ def sub(a: Expr, b) -> Expr:
             get = t.get
             for k, v in bt.items():
                 t[k] = get(k, 0.0) + v * -1.0
-        return _lin(t, a.const + b.const * -1.0)
+        e = _new(Lin)
+        e.terms = t
+        e.const = a.const + b.const * -1.0
+        return e
     return add(a, mul(-1.0, b))
 
 

@@ -12,7 +12,7 @@ from ..records import dataclass, field
 import numpy as np
 
 from ..diagnostics import Span
-from .expr import Expr, Lin, _lin, var
+from .expr import Expr, Lin, _new, var
 
 
 class Model:
@@ -101,12 +101,14 @@ class Structure:
             s = s.parent
         return Lin(tx), Lin(ty)
 
+    _own = None                    # frozenset({self}) once made (not a field)
+
     def owner_set(self) -> frozenset:
         """``frozenset({self})``, made once (the owners of every value that refers to this
         structure's geometry)."""
-        own = self.__dict__.get("_own")
+        own = self._own
         if own is None:
-            own = self.__dict__["_own"] = frozenset((self,))
+            own = self._own = frozenset((self,))
         return own
 
     def __repr__(self):
@@ -126,7 +128,9 @@ class Point:
 
     def in_frame(self, s: Structure | None) -> tuple[Expr, Expr]:
         if self.owner is s:            # the common case: no frame offset
-            return _lin({self.ix: 1.0}, 0.0), _lin({self.iy: 1.0}, 0.0)
+            x, y = _new(Lin), _new(Lin)
+            x.terms, x.const, y.terms, y.const = {self.ix: 1.0}, 0.0, {self.iy: 1.0}, 0.0
+            return x, y
         ox, oy = self.owner.frame_offset(s)
         ox.terms[self.ix] = ox.terms.get(self.ix, 0.0) + 1.0
         oy.terms[self.iy] = oy.terms.get(self.iy, 0.0) + 1.0

@@ -434,8 +434,9 @@ def _build_Text(ctx, g, a):
 
 # ---------------------------------------------------------------------- members
 def _pv(p, frame) -> PV:
+    o = p.owner
     x, y = p.in_frame(frame)
-    return PV(x, y, p, p.owner.owner_set())
+    return PV(x, y, p, o._own or o.owner_set())
 
 
 def points_of(g: Geometry) -> list:
@@ -450,11 +451,11 @@ def points_of(g: Geometry) -> list:
 
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
-    own = g.owner.owner_set()
     k = g.kind
     if name in g.points and not (k in ("Polygon", "RegularPolygon") and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
+    own = g.owner.owner_set()
     if name in g.parts:
         return GeomRef(g.parts[name])
     if name in g.scalars:

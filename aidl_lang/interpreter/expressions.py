@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
-from ..geometry.expr import _lin, as_const, func, lift
+from ..geometry.expr import Lin, _new, as_const, func, lift
 from ..geometry.primitives import member as geom_member, member_names
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
@@ -50,11 +50,16 @@ class Expressions:
             raise EvalError("E0112", "this number is too large", e.span,
                             hint="AIDL numbers must stay below 1e15")
         u = e.unit                       # Q.num, inline
+        c = _new(Lin)
+        c.terms = {}
         if u is None:
-            return Q(_lin({}, float(e.value)), NUM)
+            c.const = float(e.value)
+            return Q(c, NUM)
         if u in UNITS_LENGTH:
-            return Q(_lin({}, float(e.value * UNITS_LENGTH[u])), LEN)
-        return Q(_lin({}, float(e.value * UNITS_ANGLE[u])), ANG)
+            c.const = float(e.value * UNITS_LENGTH[u])
+            return Q(c, LEN)
+        c.const = float(e.value * UNITS_ANGLE[u])
+        return Q(c, ANG)
 
     def _e_Str(self, e):
         return e.value
