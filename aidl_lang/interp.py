@@ -23,7 +23,7 @@ import time
 from pathlib import Path
 
 from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
-from .geometry.expr import evaluate, lift
+from .geometry.expr import Lin, evaluate, lift
 from .geometry.model import Model, Structure
 from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
@@ -146,6 +146,12 @@ class Interpreter(Statements, Calls, Expressions):
         return self.file.unit_scale if self.file else 1.0
 
     def value_of(self, e) -> float:
+        """The value of expression ``e`` at the current parameters (mm, radians)."""
+        if type(e) is Lin:               # evaluate() of an affine expression, inline
+            s, x = e.const, self.model.x
+            for k, v in e.terms.items():
+                s += v * x[k]
+            return s
         return evaluate(lift(e), self.model.x)
 
     def error(self, e: EvalError) -> None:

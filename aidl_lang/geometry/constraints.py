@@ -13,7 +13,7 @@ import math
 from .bbox import BBTerm
 from .expr import Expr, evaluate, func, hypot, var
 from .model import Equation
-from .primitives import member
+from .primitives import _pv, member
 from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
 
 
@@ -30,27 +30,34 @@ def _pt(v, name: str) -> PV:
 
 
 def _line(ctx, v, name: str) -> tuple[PV, PV]:
-    if isinstance(v, GeomRef) and v.geom.kind == "Line":
-        return member(v.geom, "start", ctx.struct), member(v.geom, "end", ctx.struct)
-    if isinstance(v, GeomRef) and v.geom.kind == "Slot":
-        return member(v.geom, "start", ctx.struct), member(v.geom, "end", ctx.struct)
+    if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Slot"):
+        pts, frame = v.geom.points, ctx.struct       # member(g, "start" / "end", frame)
+        return _pv(pts["start"], frame), _pv(pts["end"], frame)
     raise ConstraintError(f"`{name}` must be a Line, got {type_name(v)}")
 
 
 def _directed_line(ctx, v, name: str) -> tuple[PV, PV]:
     """``_line`` for constraints that use the line's direction (they divide by its length):
     a line of zero starting length has none, and the solver's Jacobian is undefined there."""
+    s, e, _dx, _dy = _direction(ctx, v, name)
+    return s, e
+
+
+def _direction(ctx, v, name: str):
+    """:func:`_directed_line` and the line's ``end - start`` (``dx``, ``dy`` expressions;
+    None when they could not be evaluated)."""
     s, e = _line(ctx, v, name)
     try:
-        n = math.hypot(_val(ctx, e.x - s.x), _val(ctx, e.y - s.y))
+        dx, dy = e.x - s.x, e.y - s.y
+        n = math.hypot(_val(ctx, dx), _val(ctx, dy))
     except (TypeError, ValueError):
-        return s, e
+        return s, e, None, None
     if not n > 1e-9:
         label = getattr(getattr(v, "geom", None), "label", None) or name
         raise ConstraintError(f"`{label}` has zero length (its start and end are the same "
                               "point), so it has no direction for this constraint; give it "
                               "distinct starting points")
-    return s, e
+    return s, e, dx, dy
 
 
 def _circ(ctx, v, name: str) -> tuple[PV, Expr]:
@@ -180,8 +187,10 @@ def vertical_distance(ctx, a, b, distance, **_):
 
 
 def length(ctx, line, length, **_):
-    s, e = _directed_line(ctx, line, "line")
-    return [Equation(hypot(e.x - s.x, e.y - s.y) - length.expr)]
+    s, e, dx, dy = _direction(ctx, line, "line")
+    if dx is None:
+        dx, dy = e.x - s.x, e.y - s.y
+    return [Equation(hypot(dx, dy) - length.expr)]
 
 
 def radius(ctx, circle, radius, **_):
