@@ -11,7 +11,7 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
 from ..geometry.expr import Lin, _lin, as_const, func, lift, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
-from ..geometry.primitives import PrimitiveError, build, member as geom_member
+from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_of, type_name)
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
@@ -204,8 +204,11 @@ class Calls:
                 conv[aname] = Q.num(ix, atype) if atype else ix
                 continue
             spans[aname] = sp
-            if type(v) is Q and v.dim == want:       # _coerce's first case, inline
+            t = type(v)                 # _coerce's common cases, inline
+            if t is Q and v.dim == want:
                 conv[aname] = v
+            elif t is GeomRef and atype == "point" and v.geom.kind == "Point":
+                conv[aname] = _pv(v.geom.points["p"], self.struct)   # geom_member(.., "p", ..)
             else:
                 conv[aname] = coerce(v, atype, sp, nm, aname)
         check = self._check_magnitudes

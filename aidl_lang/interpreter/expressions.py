@@ -39,6 +39,8 @@ class Expressions:
                         return v
                     sc = sc.parent
             return self._e_Name(e)
+        if t is A.Num:
+            return self._e_Num(e)
         key = (type(self), t)
         m = _HANDLERS.get(key)
         if m is None:

@@ -252,7 +252,13 @@ class Statements:
     def _exec_stmt(self, st) -> None:
         self.cur_span = st.span
         try:
-            self._exec(st)
+            t = type(st)                 # the two common statements without _exec's frame
+            if t is A.Assign:
+                self._assign(st)
+            elif t is A.ExprStmt:
+                self._expr_stmt(st.expr)
+            else:
+                self._exec(st)
         except _Silent:
             pass
         except EvalError as e:
