@@ -188,9 +188,9 @@ _UNARY = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
 
 def func(op: str, *args) -> Expr:
     """Apply a named function; constant arguments fold to a constant (may raise ValueError)."""
-    args = tuple(lift(a) for a in args)
-    consts = [as_const(a) for a in args]
-    if all(c is not None for c in consts):
+    args = tuple(map(lift, args))
+    consts = list(map(as_const, args))
+    if None not in consts:
         if op in _UNARY:
             return const(_UNARY[op](consts[0]))
         if op == "atan2":
