@@ -426,8 +426,9 @@ class Calls:
         if typ == "boxed":
             if isinstance(v, (GeomRef, StructRef, BBoxRef)):
                 return v
-            raise EvalError("E0108", f"{where} must be a structure or geometry, got {type_name(v)}",
-                            span)
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a structure or "
+                            f"geometry, got {type_name(v)}", span,
+                            hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")
         return v
 
     # ------------------------------------------------------------------ functions

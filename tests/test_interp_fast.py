@@ -1,0 +1,184 @@
+"""The interpreter's fast paths (docs/performance.md, "The interpreter") give exactly what the
+general paths give.
+
+* A call of a registry entry runs by a plan made once per call shape
+  (:func:`aidl_lang.interpreter.calls._plan`); with plans switched off every call takes the
+  general path.  Both must build the same model (parameters, labels, every constraint's
+  equations, float for float) and report the same diagnostics, on every bundled program and
+  on calls with wrong, missing, swapped, synonym and keyword arguments.
+* ``sub``, ``mul`` and ``contains_bbox`` against the code they replaced (kept here as the
+  reference), with hypothesis.
+"""
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.geometry.bbox import BBTerm, contains_bbox
+from aidl_lang.geometry.expr import Lin, Nl, add, mul, sub
+from aidl_lang.interp import Interpreter
+from aidl_lang.interpreter import calls
+from aidl_lang.parser import parse
+from aidl_lang.typecheck import check
+
+from conftest import EXAMPLES, ROOT
+
+PROGRAMS = EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl"))
+
+# call shapes the bundled programs do not all use: synonyms, swapped arguments, keywords,
+# defaults, and arguments of the wrong kind, count or size (each a one-structure program)
+SNIPPETS = [
+    "Contains(outer, inner)", "Contains(a=outer, b=inner)", "Contains(b=inner, a=outer)",
+    "Inside(inner, outer, margin=1)", "RightOf(inner, outer, gap=2 mm)", "Above(inner, outer)",
+    "Below(\"oops\", inner, outer)", "Below(inner, 3)", "CenterInside(inner.k, outer)",
+    "Horizontal(zz=1)", "Horizontal(outer.l)", "Vertical(outer.l.start, outer.l.end)",
+    "Length(outer.l, 5 deg)", "Length(outer.l, length=20)", "Length(line=outer.l, length=2 in)",
+    "Distance(outer.p, outer.l.end, 12)", "Coincident(outer.p, outer.l)", "Fixed(outer.p)",
+    "Radius(inner.k, 2 mm)", "Diameter(inner.k, \"x\")", "Parallel(outer.l)",
+    "AlignLeft(inner, outer)", "Gap(inner, outer, 1, axis=\"y\")", "Gap(inner, outer, 1, axis=\"z\")",
+    "extra = Point(1e20, 0)", "extra = Point(at=(1, 2))", "extra = Point(1, 2, construction=true)",
+    "extra = Line(outer.p)", "extra = Line((0, 0), (1 in, 0), construction=true)",
+    "extra = Circle(center=(0, 0), radius=\"x\")", "extra = Circle((0, 0), 3)",
+    "extra = Circle(center=(0, 0), diameter=4)", "extra = Rectangle(center=(0, 0), width=4, height=2)",
+    "extra = Rectangle(width=4)", "extra = Slot((0, 0), (5, 0), width=2)",
+]
+
+
+def _snippet_program(line: str) -> str:
+    return ("units mm\nassembly top {\n    solid outer {\n        p = Point(1, 2)\n"
+            "        l = Line((0, 0), (10, 1))\n        r = Rectangle(center=(5, 5), width=10, "
+            "height=10)\n    }\n    solid inner {\n        k = Circle(center=(3, 3), radius=1)\n"
+            "    }\n    " + line + "\n}\n")
+
+
+def _key(e):
+    """An expression as nested tuples, floats by their bits (``float.hex``)."""
+    if isinstance(e, Lin):
+        return ("L", tuple((k, float(v).hex()) for k, v in e.terms.items()), float(e.const).hex())
+    if isinstance(e, Nl):
+        return (e.op,) + tuple(_key(a) for a in e.args)
+    if isinstance(e, BBTerm):
+        t, f = e.target, e.frame
+        return ("bb", getattr(t, "path", None) or getattr(t, "label", None), e.side,
+                getattr(f, "path", None))
+    if isinstance(e, float):
+        return e.hex()
+    return repr(e)
+
+
+def _build(path: str, source: str):
+    sink = DiagnosticSink()
+    prog = parse(source, path, sink)
+    check(prog, sink)
+    out = [("diag", d.code, d.message, repr(d.span), d.hint) for d in sink.items]
+    if sink.has_errors:
+        return out
+    model = Interpreter(sink).run(prog)
+    out.append(("x", tuple(float(v).hex() for v in model.x), tuple(model.free),
+                tuple(model.param_label)))
+    for s in model.structures:
+        out.append(("S", s.path, s.kind, s.fx, s.fy, tuple(g.name for g in s.geometry)))
+    for c in model.constraints:
+        eqs = c.deferred if c.deferred is not None else c.equations
+        out.append(("C", c.kind, c.owner.path, c.text, c.implicit, c.deferred is not None,
+                    tuple((q.ineq, _key(q.expr), None if q.branch is None else _key(q.branch))
+                          for q in eqs)))
+    out += [("diag", d.code, d.message, repr(d.span), d.hint) for d in sink.items]
+    return out
+
+
+def _both(monkeypatch, path: str, source: str):
+    planned = _build(path, source)
+    with monkeypatch.context() as m:
+        m.setattr(calls, "_plan", lambda *a: None)       # every call takes the general path
+        general = _build(path, source)
+    return planned, general
+
+
+@pytest.mark.parametrize("path", PROGRAMS, ids=lambda p: p.name)
+def test_planned_calls_build_the_same_model(monkeypatch, path):
+    planned, general = _both(monkeypatch, str(path), path.read_text())
+    assert planned == general
+    assert planned
+
+
+@pytest.mark.parametrize("line", SNIPPETS)
+def test_planned_calls_report_the_same(monkeypatch, line, tmp_path):
+    planned, general = _both(monkeypatch, str(tmp_path / "s.aidl"), _snippet_program(line))
+    assert planned == general
+
+
+def test_plans_are_used(monkeypatch):
+    """The fast path is really taken (else the comparison above would test nothing)."""
+    made = []
+    real = calls._plan
+    monkeypatch.setattr(calls, "_plan", lambda *a: made.append(a) or real(*a))
+    _build("s.aidl", _snippet_program("Contains(b=inner, a=outer)"))
+    assert ("Contains", 0, ("b", "a")) in made
+    assert all(real(*a) is not None for a in made if a[0] != "Text")
+
+
+def test_a_wrong_box_argument_is_a_located_error(compile_text):
+    """`Below("oops", ...)` was an internal error (a NameError in the message)."""
+    c = compile_text(_snippet_program('Below("oops", inner, outer)'), do_solve=False)
+    errs = [d for d in c.sink.items if d.is_error]
+    assert [d.code for d in errs] == ["E0108"]
+    assert "argument `a` of `Below` must be a structure or geometry, got string" in errs[0].message
+    assert (errs[0].span.line, errs[0].span.col) == (11, 11)
+
+
+# ---------------------------------------------------------------- expression arithmetic
+def _mul_reference(a, b):
+    """``mul`` before the interpreter work (dict comprehensions, isinstance)."""
+    if not isinstance(a, (Lin, Nl, BBTerm)):
+        a = Lin({}, float(a))
+    if not isinstance(b, (Lin, Nl, BBTerm)):
+        b = Lin({}, float(b))
+    la, lb = isinstance(a, Lin), isinstance(b, Lin)
+    ca = a.const if la and not a.terms else None
+    cb = b.const if lb and not b.terms else None
+    if ca is not None and lb:
+        return Lin({k: v * ca for k, v in b.terms.items()}, b.const * ca)
+    if cb is not None and la:
+        return Lin({k: v * cb for k, v in a.terms.items()}, a.const * cb)
+    if ca == 0.0 or cb == 0.0:
+        return Lin({}, 0.0)
+    return Nl("mul", (a, b))
+
+
+def _contains_reference(e):
+    if isinstance(e, BBTerm):
+        return True
+    if isinstance(e, Nl):
+        return any(_contains_reference(a) for a in e.args)
+    return False
+
+
+floats = st.one_of(st.floats(allow_nan=False, width=64), st.sampled_from([0.0, -0.0, 1.0, -1.0]))
+lins = st.builds(lambda t, c: Lin(dict(t), c),
+                 st.lists(st.tuples(st.integers(0, 6), floats), max_size=4), floats)
+leaves = st.one_of(lins, st.builds(lambda s: BBTerm(None, s, None), st.sampled_from(["left", "top"])))
+exprs = st.recursive(leaves, lambda kids: st.builds(lambda op, a, b: Nl(op, (a, b)),
+                                                    st.sampled_from(["mul", "add", "min"]), kids, kids),
+                     max_leaves=8)
+operands = st.one_of(exprs, floats)
+
+
+@settings(max_examples=150, deadline=None)
+@given(exprs, operands)
+def test_sub_is_add_of_the_negation(a, b):
+    assert _key(sub(a, b)) == _key(add(a, _mul_reference(-1.0, b)))
+    assert _key(a - b) == _key(add(a, _mul_reference(-1.0, b)))
+
+
+@settings(max_examples=150, deadline=None)
+@given(operands, operands)
+def test_mul_is_the_reference(a, b):
+    if isinstance(a, float) and isinstance(b, float):
+        return                                  # two plain numbers are never an expression
+    assert _key(mul(a, b)) == _key(_mul_reference(a, b))
+
+
+@settings(max_examples=150, deadline=None)
+@given(exprs)
+def test_contains_bbox_is_the_reference(e):
+    assert contains_bbox(e) is _contains_reference(e)
