@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
-from ..geometry.expr import Lin, _lin, as_const, func, lift, var
+from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
@@ -24,6 +24,7 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 # argument types a reference to geometry of these kinds passes unchanged (see _coerce)
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
+_ANY_REFERENCE = ("boxed", "geometry", "any")      # types any reference to geometry passes
 
 
 class _Plan:
@@ -205,12 +206,36 @@ class Calls:
                 continue
             spans[aname] = sp
             t = type(v)                 # _coerce's common cases, inline
-            if t is Q and v.dim == want:
+            if t is Q:
+                if v.dim == want:
+                    conv[aname] = v
+                    continue
+                e = v.expr
+                if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
+                        and not e.terms:    # a bare number: file units or degrees
+                    c = _new(Lin)
+                    c.terms = {}
+                    c.const = (self.unit_scale if want == LEN else DEG) * e.const
+                    conv[aname] = Q(c, want, v.owners)
+                    continue
+            elif t is GeomRef:
+                kind = v.geom.kind
+                kinds = _GEOM_KINDS.get(atype)
+                if kinds is not None:
+                    if kind in kinds:
+                        conv[aname] = v
+                        continue
+                elif atype == "point":
+                    if kind == "Point":            # geom_member(v.geom, "p", ...)
+                        conv[aname] = _pv(v.geom.points["p"], self.struct)
+                        continue
+                elif atype in _ANY_REFERENCE:
+                    conv[aname] = v
+                    continue
+            elif (t is StructRef or t is BBoxRef) and (atype == "boxed" or atype == "any"):
                 conv[aname] = v
-            elif t is GeomRef and atype == "point" and v.geom.kind == "Point":
-                conv[aname] = _pv(v.geom.points["p"], self.struct)   # geom_member(.., "p", ..)
-            else:
-                conv[aname] = coerce(v, atype, sp, nm, aname)
+                continue
+            conv[aname] = coerce(v, atype, sp, nm, aname)
         check = self._check_magnitudes
         for k, v in conv.items():
             t = type(v)                 # _check_magnitudes' common cases, inline
