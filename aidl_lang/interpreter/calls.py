@@ -278,7 +278,12 @@ class Calls:
         s = self._need_struct(node.span)
         for k, v in conv.items():
             t = type(v)
-            own = v.owners if t is Q or t is PV else owners_of(v)
+            if t is Q or t is PV:
+                own = v.owners
+            elif t is bool or t is str or v is None or (t is GeomRef and v.geom.owner is s):
+                continue                 # no geometry, or geometry of this structure
+            else:
+                own = owners_of(v)
             if not own or (s in own and len(own) == 1):
                 continue
             bad = [o for o in owners_of(v) if o is not s]
