@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from ..records import dataclass
 
-from .expr import Expr, Lin, _lin, as_const, lift
+from .expr import Expr, _lin, as_const, lift
 from .model import Geometry, Point, Structure
 
 NUM = (0, 0)
