@@ -33,6 +33,18 @@ class Model:
         self.param_label.append(label)
         return len(self.x) - 1
 
+    def new_pair(self, x0: float, y0: float, free: bool, owner: "Structure | None",
+                 label: str) -> tuple[int, int]:
+        """Two parameters ``label.x``, ``label.y`` (a point or a frame): ``new_param`` twice."""
+        xs = self.x
+        ix = len(xs)
+        xs += (float(x0), float(y0))
+        free = bool(free)
+        self.free += (free, free)
+        self.param_owner += (owner, owner)
+        self.param_label += (label + ".x", label + ".y")
+        return ix, ix + 1
+
     def xs(self) -> np.ndarray:
         return np.asarray(self.x, dtype=float)
 

@@ -329,8 +329,7 @@ class Calls:
         cx, cy = as_const(v.x), as_const(v.y)
         x0 = cx if cx is not None else self.value_of(v.x)
         y0 = cy if cy is not None else self.value_of(v.y)
-        ix = self.model.new_param(x0, True, s, f"{label}.x")
-        iy = self.model.new_param(y0, True, s, f"{label}.y")
+        ix, iy = self.model.new_pair(x0, y0, True, s, label)
         p = Point(ix, iy, s, None, label)
         if cx is None or cy is None:
             c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],

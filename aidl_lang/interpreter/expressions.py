@@ -40,6 +40,12 @@ class Expressions:
                     sc = sc.parent
             return self._e_Name(e)
         if t is A.Num:
+            v = e.value
+            if e.unit is None and -1e15 <= v <= 1e15:    # _e_Num of a plain finite number
+                c = _new(Lin)
+                c.terms = {}
+                c.const = float(v)
+                return Q(c, NUM)
             return self._e_Num(e)
         key = (type(self), t)
         m = _HANDLERS.get(key)

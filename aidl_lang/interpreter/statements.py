@@ -67,8 +67,7 @@ class Statements:
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
         self.count_object(span)
         s = Structure(name, kind, parent, span, template=template)
-        s.fx = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.x")
-        s.fy = self.model.new_param(0.0, parent is not None, s, f"{name}.frame.y")
+        s.fx, s.fy = self.model.new_pair(0.0, 0.0, parent is not None, s, f"{name}.frame")
         if parent is not None:
             parent.children[name] = s
         self.model.structures.append(s)
