@@ -31,7 +31,8 @@ import numpy as np
 from .arrays import unique
 
 from ..geometry.model import Model, Structure
-from .newton import TOL, newton
+from .batch import newton_batch
+from .newton import TOL, dense_enough, newton
 from .system import LINK, SIGN, Rows, build_rows
 from .reduce import reduce
 from .tape import Tape
@@ -55,6 +56,8 @@ class Attempt:
     ok: bool = False
     iterations: int = 0
     rounds: int = 0
+    order: int = 0             # post-order position of its structure (trace order)
+    x_end: np.ndarray | None = None     # x[cols] where it ended (a failure restores it)
 
 
 @dataclass
@@ -236,9 +239,116 @@ class Solver:
                 new[sign_choice] = 1
             choices = new
         self.last_x = x
+        att.x_end = x[att.cols]
         if att.ok:
             self.x = x
         return att.ok
+
+    def batchable(self, att: Attempt) -> bool:
+        """Whether ``att`` may join a batch (:meth:`attempt_batch`): it has rows, and its
+        system is small enough to be solved densely even before substitution."""
+        return len(att.rows) > 0 and dense_enough(len(att.rows), len(att.cols))
+
+    def attempt_batch(self, atts: list) -> None:
+        """Run independent attempts (disjoint rows and unknowns, each row using only its own
+        attempt's unknowns) at once, each with exactly the result :meth:`attempt` gives it
+        alone: one tape cut, one substitution, one evaluation per Newton step or try for all
+        (:func:`.batch.newton_batch`), and per attempt its own rounds of branch re-checks,
+        damping and stops.  Falls back to one :meth:`attempt` after the other when the rows
+        are not independent."""
+        rows = np.concatenate([a.rows for a in atts])
+        cols = np.concatenate([a.cols for a in atts])
+        order = np.argsort(rows, kind="stable")
+        rows = rows[order]
+        cols = np.sort(cols)
+        if (len(rows) > 1 and not bool(np.all(rows[1:] > rows[:-1]))) or \
+                (len(cols) > 1 and not bool(np.all(cols[1:] > cols[:-1]))):
+            for a in atts:
+                self.attempt(a)
+            return
+        t = self.tape(rows)
+        blocks = [(np.searchsorted(rows, a.rows), np.searchsorted(cols, a.cols)) for a in atts]
+        if not _independent(t, rows, cols, blocks):
+            for a in atts:
+                self.attempt(a)
+            return
+        tr = self.trace
+        tr.attempts.extend(atts)
+        self._init_slacks(t, rows)
+        x = self.x
+        rowblock = np.empty(len(rows), dtype=np.int64)
+        for k, (rb, _) in enumerate(blocks):
+            rowblock[rb] = k
+        # each block's min/max choices, and those of its SIGN rows (2 min(s, 0))
+        chblock = np.empty(t.n_choices, dtype=np.int64)
+        for g in t.groups:
+            if g.sel is not None:
+                chblock[g.sel] = rowblock[t.root_of[g.idx]]
+        chorder = np.argsort(chblock, kind="stable")
+        chb = np.split(chorder, np.searchsorted(chblock[chorder], np.arange(1, len(atts))))
+        sign_choice = t.root_choice[self.kind[rows] == SIGN]
+        sign_b = np.split(sign_choice[np.argsort(chblock[sign_choice], kind="stable")],
+                          np.searchsorted(np.sort(chblock[sign_choice]),
+                                          np.arange(1, len(atts))))
+        choices = np.zeros(t.n_choices, dtype=np.int64)
+        F = t.evaluate(x, record=choices)
+        live = []
+        for k, a in enumerate(atts):
+            if float(np.max(np.abs(F[blocks[k][0]]))) <= CHECK_TOL:
+                a.ok = True
+            else:
+                live.append(k)
+        if not live:
+            return
+        scale = self.scale[cols]
+        released = [False] * len(atts)
+        for rnd in range(1, MAX_ROUNDS + 1):
+            if not live:
+                break
+            left = ITER_BUDGET - tr.iterations
+            if left <= 0:
+                tr.budget_exceeded = True
+                break
+            if self.deadline is not None and time.monotonic() > self.deadline:
+                tr.budget_exceeded = tr.out_of_time = True
+                break
+            red = reduce(t, x, cols, scale) if self.use_reduction else None
+            x, results, over = newton_batch(t, x, cols, scale, [blocks[k] for k in live],
+                                            choices, max_iter=min(MAX_ITER, left), tol=TOL,
+                                            reduction=red, budget=left)
+            for k, res in zip(live, results):
+                atts[k].iterations += res.iterations
+                atts[k].rounds = rnd
+                tr.iterations += res.iterations
+            if over:
+                tr.budget_exceeded = True
+                break
+            new = np.zeros(t.n_choices, dtype=np.int64)
+            F = t.evaluate(x, record=new)         # the true min/max, and their branches
+            going = []
+            for k in live:
+                if float(np.max(np.abs(F[blocks[k][0]]))) <= CHECK_TOL:
+                    atts[k].ok = True
+                    continue
+                if tr.iterations >= ITER_BUDGET:
+                    tr.budget_exceeded = True
+                    continue
+                c = chb[k]
+                if np.array_equal(new[c], choices[c]):
+                    sb = sign_b[k]
+                    if released[k] or not len(sb) or bool(np.all(new[sb] == 1)):
+                        continue
+                    released[k] = True
+                    new[sb] = 1
+                going.append(k)
+            choices = new
+            live = [] if tr.budget_exceeded else going
+        self.last_x = x
+        for k, a in enumerate(atts):
+            idx = a.cols
+            a.x_end = x[idx]
+            if a.ok:
+                self.x[idx] = x[idx]
 
     # ------------------------------------------------------------------ strategies
     def solve_flat(self) -> bool:
@@ -253,26 +363,86 @@ class Solver:
         return ok
 
     def solve_hierarchical(self) -> bool:
-        ok = True
+        """Every structure after its subtree (paper: post-order), with the iterative
+        deepening of :meth:`steps`.  Structures whose subtrees are disjoint are independent
+        (validity rule 2), so the structures at one depth of the tree are solved together,
+        after everything below them: their attempts go in lockstep, and the small ones of
+        each step are one :meth:`attempt_batch`.  Each attempt's result is what the plain
+        post-order gives it (same steps, same bits); the trace lists attempts and failures
+        in post-order.  (Only when the iteration budget runs out, E0402, which structures
+        were tried before it did depends on this order.)"""
         root = self.model.root
         if root is None:
             return True
-        for s in _post_order(root):
-            ok = self.solve_structure(s) and ok
+        rank = {id(s): i for i, s in enumerate(_post_order(root))}
+        self._rank = rank
+        ok = self._solve_forest([root])
+        tr = self.trace
+        tr.attempts.sort(key=lambda a: a.order)
+        tr.failures.sort(key=lambda f: rank.get(id(f.structure), -1))
+        return ok and not tr.budget_exceeded
+
+    def _solve_forest(self, structs: list) -> bool:
+        """Solve ``structs`` (disjoint subtrees), each after its children."""
+        kids = [c for s in structs for c in s.children.values()]
+        ok = True
+        if kids:
+            ok = self._solve_forest(kids)
             if self.trace.budget_exceeded:
                 return False
+        pending = []                       # (ladder, attempt it waits on)
+        for s in structs:
+            g = self.steps(s)
+            try:
+                pending.append((g, next(g)))
+            except StopIteration as stop:
+                ok = stop.value and ok
+        while pending:
+            small = [a for _, a in pending if self.batchable(a)]
+            if len(small) > 1:
+                self.attempt_batch(small)
+            for _, a in pending:
+                if not (len(small) > 1 and self.batchable(a)):
+                    self.attempt(a)
+            if self.trace.budget_exceeded:
+                return False
+            nxt = []
+            for g, a in pending:
+                try:
+                    nxt.append((g, g.send(a.ok)))
+                except StopIteration as stop:
+                    ok = stop.value and ok
+            pending = nxt
         return ok
 
     def solve_structure(self, s: Structure) -> bool:
+        """Solve ``s`` alone (its subtree solved already): :meth:`steps` one attempt at a
+        time."""
+        if not hasattr(self, "_rank"):
+            self._rank = {}
+        g = self.steps(s)
+        try:
+            att = next(g)
+            while True:
+                att = g.send(self.attempt(att))
+        except StopIteration as stop:
+            return stop.value
+
+    def steps(self, s: Structure):
+        """The iterative deepening at ``s`` as a generator: yields each :class:`Attempt` in
+        turn and is sent whether it succeeded; returns whether ``s`` was solved (paper,
+        appendix "Solver Details", *Iterative Deepening Recursive Solve*)."""
         levels = _levels(s)
         D = len(levels) - 1
         local = self.rows_of([s])
         if not len(local):
             return True
+        order = self._rank.get(id(s), 0)
         own = lambda structs: [i for t in structs for i in self.own.get(id(t), ())]
         frames = lambda structs: [i for t in structs for i in self.frame.get(id(t), ())]
         # stage 0: only this structure's own unknowns
-        if self.attempt(Attempt("local", 0, local, self._cols(own([s]), local))):
+        last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
+        if (yield last):
             return True
         upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
         # stage 1: translate descendants, one level deeper at a time
@@ -281,29 +451,46 @@ class Solver:
                 break
             rows = self.rows_of(upto(d - 1))
             params = own([s]) + frames([t for lv in levels[1:d + 1] for t in lv])
-            if self.attempt(Attempt("translate", d, rows, self._cols(params, rows))):
+            last = Attempt("translate", d, rows, self._cols(params, rows), order=order)
+            if (yield last):
                 return True
         # stage 2: deform descendants, one level deeper at a time
         all_frames = frames([t for lv in levels[1:] for t in lv])
-        last = None
         for d in range(1, D + 1):
             if self.trace.budget_exceeded:
                 break
             rows = self.rows_of(upto(max(d, D - 1)))
             params = all_frames + own(upto(d))
-            last = Attempt("deform", d, rows, self._cols(params, rows))
-            if self.attempt(last):
+            last = Attempt("deform", d, rows, self._cols(params, rows), order=order)
+            if (yield last):
                 return True
-        if last is None:
-            last = self.trace.attempts[-1]
         self.trace.failures.append(Failure(s, last))
-        self.x = self.last_x
+        if last.x_end is not None:
+            # where the last attempt ended (its unknowns; the rest of x is untouched by it)
+            self.x = self.x.copy()
+            self.x[last.cols] = last.x_end
         # do not retry these constraints at every ancestor
         F = self.tape(last.rows).evaluate(self.x)
         for r, v in zip(last.rows, F):
             if abs(v) > CHECK_TOL:
                 self.failed.add(id(self.rows.constraint[r]))
         return False
+
+
+def _independent(t: Tape, rows: np.ndarray, cols: np.ndarray, blocks: list) -> bool:
+    """Whether every row of tape ``t`` (the rows ``rows``) uses no unknown of another block:
+    ``blocks`` gives each block's rows (positions in ``t``) and unknowns (positions in
+    ``cols``).  Validity rule 2 makes this hold for disjoint subtrees; checked anyway, since
+    the batch's equality with one-by-one solving rests on it."""
+    owner = -np.ones(t.n_params, dtype=np.int64)
+    rowblock = np.empty(t.n_rows, dtype=np.int64)
+    for k, (rb, cp) in enumerate(blocks):
+        owner[cols[cp]] = k
+        rowblock[rb] = k
+    ao = owner[t.a_col]
+    lo = owner[t.l_col]
+    return not (bool(np.any((ao >= 0) & (ao != rowblock[t.aff_rows[t.a_row]]))) or
+                bool(np.any((lo >= 0) & (lo != rowblock[t.root_of[t.leaf_node[t.l_row]]]))))
 
 
 def _post_order(s: Structure):

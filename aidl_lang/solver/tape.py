@@ -553,13 +553,7 @@ class Tape:
         straight from the entries into a layout kept per reduction (in column order, as
         SciPy's CSR product sums them), without forming the full matrix or ``S``."""
         pat = self.pattern(cols)
-        if v is None:
-            _, v = self.evaluate(x, choices, nodes=True)
-        w = pat.aff_vals
-        if len(pat.nl_leaf):
-            adj = self._adjoints(v, choices)
-            w = np.concatenate([w, adj[self.leaf_node[pat.nl_leaf]] * pat.nl_vals])
-        data = np.bincount(pat.inv, weights=w, minlength=pat.nnz) if len(w) else np.zeros(0)
+        data = self._entries(pat, x, choices, v)
         if reduction is not None:
             lay = pat.reduced(self, reduction)
             data = np.bincount(lay.inv, weights=data[lay.valid], minlength=lay.nnz)
@@ -577,6 +571,32 @@ class Tape:
             lay = pat
         import scipy.sparse as sp           # only sparse (large) systems need SciPy
         return sp.csr_matrix((data, lay.indices, lay.indptr), shape=shape)
+
+
+    def _entries(self, pat: "_Pattern", x, choices, v) -> np.ndarray:
+        """The Jacobian's entries in ``pat``'s CSR layout (one value per stored entry)."""
+        if v is None:
+            _, v = self.evaluate(x, choices, nodes=True)
+        w = pat.aff_vals
+        if len(pat.nl_leaf):
+            adj = self._adjoints(v, choices)
+            w = np.concatenate([w, adj[self.leaf_node[pat.nl_leaf]] * pat.nl_vals])
+        return np.bincount(pat.inv, weights=w, minlength=pat.nnz) if len(w) else np.zeros(0)
+
+    def jacobian_entries(self, x: np.ndarray, cols: np.ndarray, choices=None, v=None,
+                         reduction=None):
+        """The stored entries of :meth:`jacobian` as COO arrays ``(row, col, value)``: the
+        same values, bit for bit, without building a matrix (for a batch of independent
+        systems, each taking its own block: :mod:`.batch`).  ``row`` indexes the tape's rows
+        (with a ``reduction``, ``reduction.keep``'s rows), ``col`` the positions in ``cols``
+        (with a ``reduction``, its class columns ``z``), both int64."""
+        pat = self.pattern(cols)
+        data = self._entries(pat, x, choices, v)
+        if reduction is not None:
+            lay = pat.reduced(self, reduction)
+            data = np.bincount(lay.inv, weights=data[lay.valid], minlength=lay.nnz)
+            return reduction.keep[lay.urows], lay.indices.astype(np.int64), data
+        return pat.urows, pat.indices.astype(np.int64), data
 
 
 class _Pattern:
