@@ -432,8 +432,6 @@ class Solver:
         """The iterative deepening at ``s`` as a generator: yields each :class:`Attempt` in
         turn and is sent whether it succeeded; returns whether ``s`` was solved (paper,
         appendix "Solver Details", *Iterative Deepening Recursive Solve*)."""
-        levels = _levels(s)
-        D = len(levels) - 1
         local = self.rows_of([s])
         if not len(local):
             return True
@@ -444,6 +442,8 @@ class Solver:
         last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
         if (yield last):
             return True
+        levels = _levels(s)
+        D = len(levels) - 1
         upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
         # stage 1: translate descendants, one level deeper at a time
         for d in range(1, D + 1):
