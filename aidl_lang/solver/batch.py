@@ -27,7 +27,6 @@ from ..records import dataclass
 import numpy as np
 
 from .arrays import unique
-from .newton import _Step, unreachable
 from .tape import Tape
 
 
@@ -38,23 +37,12 @@ class BlockResult:
     residual: float          # max |F| of the block's (kept) rows at its end point
 
 
-class _Block:
-    """One system's state: its rows ``fr`` (tape positions, kept rows only), unknown
-    positions ``cp`` (in ``cols``), class columns ``zb`` (in the reduction's ``z``, or in
-    ``cols`` unreduced) and the Newton variables of :func:`~.newton.newton`."""
-
-    __slots__ = ("fr", "cp", "zb", "reduced", "zloc", "t", "u", "d", "F", "norm", "mu",
-                 "it", "done", "res", "accepted", "step", "un")
-
-    def place(self, x: np.ndarray, cols: np.ndarray, u: np.ndarray) -> None:
-        """Write ``x[cols]`` of this block for ``u`` (as ``newton``'s ``place``)."""
-        if self.reduced:
-            out = np.zeros(len(self.cp))
-            r = self.zloc >= 0
-            out[r] += u[self.zloc[r]]
-            x[cols[self.cp]] = out + self.t
-        else:
-            x[cols[self.cp]] = u
+def _norms(Fk: np.ndarray) -> np.ndarray:
+    """The 2-norm of each row of ``Fk`` (K, m), each as ``np.linalg.norm`` of that row alone
+    (``sqrt(f.dot(f))``: a stacked (1, m) @ (m, 1) product is that dot product per slice)."""
+    if not Fk.shape[1]:
+        return np.zeros(len(Fk))
+    return np.sqrt((Fk[:, None, :] @ Fk[:, :, None])[:, 0, 0])
 
 
 def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray,
@@ -66,16 +54,22 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
     ``cols`` (increasing) are the unknowns of all blocks, ``scale`` their weights;
     ``blocks``: per block ``(rows, colpos)``, its rows (tape positions) and its unknowns
     (positions in ``cols``), disjoint, each block's rows using only its own unknowns (and held
-    values); ``reduction`` is :func:`~.reduce.reduce` of the whole tape over ``cols`` (its
-    classes never span two blocks).  ``budget``: the most Newton steps all blocks together
-    may take (each step of each block counts one); when the next step would pass it, every
-    block stops there and ``out_of_budget`` is True.
+    values), each small enough for a dense step (:func:`~.newton.dense_enough`);
+    ``reduction`` is :func:`~.reduce.reduce` of the whole tape over ``cols`` (its classes never
+    span two blocks).  ``budget``: the most Newton steps all blocks together may take (each
+    step of each block counts one); when the next step would pass it, every block stops there
+    and ``out_of_budget`` is True.
+
+    Blocks of one shape (rows x unknowns after substitution) are stacked: ``J J^T``, the
+    damped solve and ``J^T y`` are one stacked NumPy call per shape and try, which computes
+    each slice exactly as the 2-D call does alone (LAPACK ``gesv`` and BLAS per slice).
 
     Returns ``(x, results, out_of_budget)``: ``x`` with every block's unknowns at its end
     point, and a :class:`BlockResult` per block."""
     x = x0.copy()
     red = reduction
     n_rows = tape.n_rows
+    nb = len(blocks)
     if red is not None:
         kept = np.zeros(n_rows, dtype=bool)
         kept[red.keep] = True
@@ -85,106 +79,173 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
         nz = len(cols)
     rowblock = -np.ones(n_rows, dtype=np.int64)
     rowlocal = np.zeros(n_rows, dtype=np.int64)
-    zblock = -np.ones(nz, dtype=np.int64)
     zlocal = np.zeros(nz, dtype=np.int64)
-    bs: list[_Block] = []
+    u = np.zeros(nz)                      # every block's unknowns (its classes, or its columns)
+    dz = np.ones(nz)                      # their scaling
+    frs, zbs = [], []
+    reduced = np.zeros(nb, dtype=bool)
+    px, pz, pt, pb = [], [], [], []       # placement: x column, z source, offset, block
     for k, (rows, cp) in enumerate(blocks):
-        b = _Block()
-        b.cp = cp
-        b.reduced = red is not None and not bool(kept[rows].all())
-        if b.reduced:
-            b.fr = rows[kept[rows]]
+        if red is not None and not bool(kept[rows].all()):
+            reduced[k] = True
+            fr = rows[kept[rows]]
             zc = red.zc[cp]
-            b.zb = unique(zc[zc >= 0])
-            b.zloc = np.where(zc >= 0, np.searchsorted(b.zb, zc), -1)
-            b.t = red.t[cp]
-            b.u = red.z0[b.zb].copy()
-            b.d = red.scale[b.zb]
-            b.place(x, cols, b.u)
+            zb = unique(zc[zc >= 0])
+            u[zb] = red.z0[zb]
+            dz[zb] = red.scale[zb]
+            px.append(cols[cp])
+            pz.append(zc)
+            pt.append(red.t[cp])
         else:
             # no row of this block was substituted: alone it is solved unreduced
-            b.fr = rows
-            b.zb = red.zc[cp] if red is not None else cp
-            b.u = x[cols[cp]].copy()
-            b.d = scale[cp]
-        rowblock[b.fr] = k
-        rowlocal[b.fr] = np.arange(len(b.fr))
-        zblock[b.zb] = k
-        zlocal[b.zb] = np.arange(len(b.zb))
-        b.it = 0
-        b.done = False
-        bs.append(b)
+            fr = rows
+            zb = red.zc[cp] if red is not None else cp
+            u[zb] = x[cols[cp]]
+            dz[zb] = scale[cp]
+            px.append(cols[cp])
+            pz.append(zb)
+            pt.append(np.full(len(cp), np.nan))      # NaN: place the value itself
+        pb.append(np.full(len(cp), k, dtype=np.int64))
+        rowblock[fr] = k
+        rowlocal[fr] = np.arange(len(fr))
+        zlocal[zb] = np.arange(len(zb))
+        frs.append(fr)
+        zbs.append(zb)
+    px, pz, pt, pb = (np.concatenate(a) for a in (px, pz, pt, pb))
+    unred = np.isnan(pt)
+    pzc = np.maximum(pz, 0)
+    fixed = pz < 0
+
+    def place(xx: np.ndarray, which: np.ndarray, uu: np.ndarray) -> None:
+        """``newton``'s ``place`` for the blocks ``which`` (bool per block): ``0 + z`` (0 when
+        the class is fixed) plus the offset, or the value itself when unreduced."""
+        sel = which[pb]
+        val = np.where(fixed, 0.0, 0.0 + uu[pzc])
+        val = np.where(unred, uu[pzc], val + np.where(unred, 0.0, pt))
+        xx[px[sel]] = val[sel]
+
+    place(x, reduced, u)           # newton starts a reduced system at its class means
+    # blocks by shape: one stack per (rows, unknowns)
+    shapes: dict = {}
+    for k in range(nb):
+        shapes.setdefault((len(frs[k]), len(zbs[k])), []).append(k)
+    stacks = [(np.asarray(ks, dtype=np.int64), np.asarray([frs[k] for k in ks]).reshape(len(ks), m),
+               np.asarray([zbs[k] for k in ks]).reshape(len(ks), n))
+              for (m, n), ks in shapes.items()]
+
     F, v = tape.evaluate(x, choices, nodes=True)
-    for b in bs:
-        b.F = F[b.fr]
-        b.res = float(np.max(np.abs(b.F))) if len(b.F) else 0.0
-        if b.res <= tol or not len(b.u) or not np.isfinite(b.res):
-            b.done = True
-            continue
-        b.norm = float(np.linalg.norm(b.F))
-        b.mu = 1e-12
+    it = np.zeros(nb, dtype=np.int64)
+    done = np.zeros(nb, dtype=bool)
+    res = np.zeros(nb)
+    norm = np.zeros(nb)
+    mu = np.full(nb, 1e-12)
+    for ks, R, Z in stacks:
+        Fk = F[R]
+        r = np.max(np.abs(Fk), axis=1) if R.shape[1] else np.zeros(len(ks))
+        res[ks] = r
+        done[ks] = (r <= tol) | (Z.shape[1] == 0) | ~np.isfinite(r)
+        norm[ks] = _norms(Fk)
     used = 0
     out_of_budget = False
     while True:
-        active = [k for k, b in enumerate(bs) if not b.done and b.it < max_iter]
-        if not active:
+        active = ~done & (it < max_iter)
+        n_active = int(active.sum())
+        if not n_active:
             break
-        if budget is not None and used + len(active) > budget:
+        if budget is not None and used + n_active > budget:
             out_of_budget = True
             break
-        used += len(active)
+        used += n_active
+        it[active] += 1
+        accepted = np.zeros(nb, dtype=bool)
         r, z, data = tape.jacobian_entries(x, cols, choices, v, reduction=red)
         blk = rowblock[r]
-        order = np.argsort(blk, kind="stable")
-        bounds = np.searchsorted(blk[order], np.arange(len(bs) + 1)).tolist()
-        lr, lc = rowlocal[r], zlocal[z]
-        trying = []
-        for k in active:
-            b = bs[k]
-            b.it += 1
-            b.accepted = False
-            sel = order[bounds[k]:bounds[k + 1]]
-            J = np.zeros((len(b.fr), len(b.zb)))
-            J[lr[sel], lc[sel]] = data[sel]
-            Js = J * b.d
-            if unreachable(Js, b.F):
-                b.done = True             # newton's `break`: the step is 0 for every mu
+        js = data * dz[z]                          # the entries of J D
+        # newton.unreachable per block: every row that is off has no nonzero entry
+        off = F != 0.0
+        has_off = np.bincount(rowblock[rowblock >= 0], weights=off[rowblock >= 0],
+                              minlength=nb) > 0
+        has_reach = np.bincount(blk, weights=off[r] & (js != 0.0), minlength=nb) > 0
+        done |= active & has_off & ~has_reach     # newton's `break`: every step would be 0
+        stepping = active & ~done
+        live = stepping[blk]
+        blk, lr, lc, js = blk[live], rowlocal[r[live]], zlocal[z[live]], js[live]
+        mats = []
+        for ks, R, Z in stacks:
+            on = stepping[ks]
+            if not on.any():
                 continue
-            b.step = _Step(Js, dense=True)
-            trying.append(b)
-        stepped = list(trying)
+            ks, R, Z = ks[on], R[on], Z[on]
+            slot = -np.ones(nb, dtype=np.int64)
+            slot[ks] = np.arange(len(ks))
+            mine = slot[blk] >= 0
+            J = np.zeros((len(ks), R.shape[1], Z.shape[1]))
+            J[slot[blk[mine]], lr[mine], lc[mine]] = js[mine]
+            mats.append((ks, R, Z, J, J @ J.transpose(0, 2, 1)))
         for _ in range(14):
-            if not trying:
+            trying = stepping & ~accepted
+            if not trying.any():
                 break
-            xn = x.copy()
-            evals = []
-            for b in trying:
-                try:
-                    du = b.d * b.step(b.F, b.mu)
-                except (RuntimeError, np.linalg.LinAlgError):
-                    b.mu = max(b.mu * 100, 1e-8)
+            un = u.copy()
+            tried = np.zeros(nb, dtype=bool)
+            for ks, R, Z, J, G in mats:
+                sel = np.flatnonzero(trying[ks])
+                if not len(sel):
                     continue
-                b.un = b.u + du
-                b.place(xn, cols, b.un)
-                evals.append(b)
-            if evals:
-                Fn, vn = tape.evaluate(xn, choices, nodes=True)
-            for b in evals:
-                Fb = Fn[b.fr]
-                nn = float(np.linalg.norm(Fb))
-                if np.isfinite(nn) and nn < b.norm:
-                    b.u, b.F, b.norm = b.un, Fb, nn
-                    idx = cols[b.cp]
-                    x[idx] = xn[idx]
-                    b.mu = max(b.mu / 10, 1e-12)
-                    b.accepted = True
-                else:
-                    b.mu = max(b.mu * 10, 1e-8)
-            trying = [b for b in trying if not b.accepted]
-        for b in stepped:
-            b.res = float(np.max(np.abs(b.F)))
-            if b.res <= tol or not b.accepted:
-                b.done = True
-        if any(not b.done and b.it < max_iter for b in bs):
+                kk = ks[sel]
+                M = G[sel]
+                diag = np.einsum("kii->ki", M)
+                diag += mu[kk][:, None] + (diag == 0.0)
+                Fk = F[R[sel]]
+                try:
+                    y = np.linalg.solve(M, -Fk[..., None])[..., 0]
+                    ok = np.ones(len(sel), dtype=bool)
+                except (RuntimeError, np.linalg.LinAlgError):  # which: each alone, as newton
+                    y = np.zeros(Fk.shape)
+                    ok = np.zeros(len(sel), dtype=bool)
+                    for i in range(len(sel)):
+                        try:
+                            y[i] = np.linalg.solve(M[i], -Fk[i])
+                            ok[i] = True
+                        except (RuntimeError, np.linalg.LinAlgError):
+                            pass
+                bad = kk[~ok]
+                mu[bad] = np.maximum(mu[bad] * 100, 1e-8)
+                Jt = J[sel].transpose(0, 2, 1)
+                step = (Jt @ y[..., None])[..., 0]
+                zz = Z[sel][ok]
+                un[zz] = u[zz] + dz[zz] * step[ok]
+                tried[kk[ok]] = True
+            if not tried.any():
+                continue
+            xn = x.copy()
+            place(xn, tried, un)
+            Fn = tape.evaluate(xn, choices)
+            acc = np.zeros(nb, dtype=bool)
+            for ks, R, Z, J, G in mats:
+                sel = np.flatnonzero(tried[ks])
+                if len(sel):
+                    kk = ks[sel]
+                    nn = _norms(Fn[R[sel]])
+                    a = np.isfinite(nn) & (nn < norm[kk])
+                    norm[kk[a]] = nn[a]
+                    acc[kk[a]] = True
+            rej = tried & ~acc
+            mu[acc] = np.maximum(mu[acc] / 10, 1e-12)
+            mu[rej] = np.maximum(mu[rej] * 10, 1e-8)
+            if acc.any():
+                zs = acc[pb] & ~fixed
+                u[pz[zs]] = un[pz[zs]]
+                xs = acc[pb]
+                x[px[xs]] = xn[px[xs]]
+                rs = rowblock >= 0
+                rs[rs] = acc[rowblock[rs]]
+                F[rs] = Fn[rs]
+                accepted |= acc
+        for ks, R, Z, J, G in mats:
+            res[ks] = np.max(np.abs(F[R]), axis=1)
+        done |= stepping & ((res <= tol) | ~accepted)
+        if (~done & (it < max_iter)).any():
             _, v = tape.evaluate(x, choices, nodes=True)
-    return x, [BlockResult(b.res <= tol, b.it, b.res) for b in bs], out_of_budget
+    return x, [BlockResult(bool(res[k] <= tol), int(it[k]), float(res[k])) for k in range(nb)], \
+        out_of_budget

@@ -173,6 +173,10 @@ class Solver:
             hit = self._rows_of.get(key)
             if hit is not None:
                 return hit
+            if len(structs) == 1:          # one owner's rows: already increasing
+                rows = np.asarray(self.rows.by_owner.get(key[0], ()), dtype=np.int64)
+                self._rows_of[key] = rows
+                return rows
         out = []
         for s in structs:
             for r in self.rows.by_owner.get(id(s), ()):
