@@ -160,6 +160,8 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
         accepted = np.zeros(nb, dtype=bool)
         r, z, data = tape.jacobian_entries(x, cols, choices, v, reduction=red)
         blk = rowblock[r]
+        mine = blk >= 0                            # rows of the blocks solved here
+        r, z, data, blk = r[mine], z[mine], data[mine], blk[mine]
         js = data * dz[z]                          # the entries of J D
         # newton.unreachable per block: every row that is off has no nonzero entry
         off = F != 0.0

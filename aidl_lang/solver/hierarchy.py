@@ -120,6 +120,7 @@ class Solver:
         self.compiles = 0
         self.last_x = self.x
         self.use_reduction = True
+        self.batching = True          # False: plain post-order, one attempt at a time
 
     # ------------------------------------------------------------------ helpers
     def tape(self, rows: np.ndarray) -> Tape:
@@ -380,6 +381,13 @@ class Solver:
             return True
         rank = {id(s): i for i, s in enumerate(_post_order(root))}
         self._rank = rank
+        if not self.batching:              # the plain post-order, one attempt at a time
+            ok = True
+            for s in _post_order(root):
+                ok = self.solve_structure(s) and ok
+                if self.trace.budget_exceeded:
+                    return False
+            return ok
         ok = self._solve_forest([root])
         tr = self.trace
         tr.attempts.sort(key=lambda a: a.order)
