@@ -106,6 +106,8 @@ def _levels(op: np.ndarray, a0: np.ndarray, a1: np.ndarray, marg: np.ndarray) ->
 
 
 _LEVEL_PASSES = 64
+_SHARED_MIN_ROWS = 256    # from this many rows the compile walks shared subexpressions once
+_SHARED_BLOWUP = 4        # ... unless the rows' trees are this much larger than the DAG
 _LEVEL_SMALL = 512        # up to this many interior nodes the ordered pass is cheaper
 
 
@@ -150,9 +152,205 @@ class Tape:
     vectorisation of the issue-3 measurements.
     """
 
-    def __init__(self, exprs: list, n_params: int):
+    def __init__(self, exprs: list, n_params: int, shared: bool | None = None):
+        """Compile ``exprs`` (rows over ``n_params`` parameters).  ``shared``: walk every
+        shared subexpression once (:meth:`_compile_shared`, the same arrays); ``None``
+        chooses it for tapes of ``_SHARED_MIN_ROWS`` rows or more."""
         with gc_paused():      # one tuple per node, none cyclic: no cyclic collections meanwhile
-            self._compile(exprs, n_params)
+            if shared is None:
+                shared = len(exprs) >= _SHARED_MIN_ROWS
+            if not (shared and self._compile_shared(exprs, n_params)):
+                self._compile(exprs, n_params)
+
+    def _compile_shared(self, exprs: list, n_params: int) -> bool:
+        """The arrays of :meth:`_compile`, equal one for one, from one walk over the *distinct*
+        expression nodes of all rows (memoised by identity across rows: a bounding-box side
+        shared by many rows is walked once) and array passes that lay each row's nodes out
+        as the per-row walk would.
+
+        The per-row walk emits a row's nodes in post-order, last argument first, each node
+        once (memoised within the row): that is the expansion of the row's expression DAG
+        into a tree, in that post-order, keeping the first occurrence of each node.  Here the
+        distinct nodes' subtree sizes give every tree occurrence its position directly
+        (breadth-first, one array pass per depth, work proportional to the trees), the first
+        occurrence of each (row, node) is kept, and arguments are renumbered by lookup.  Leaf
+        entries are gathered from each distinct affine leaf's terms.  Returns False (nothing
+        set) for an expression nested deeper than the recursion limit or DAGs whose trees
+        would be much larger than their nodes; :meth:`_compile` then does it row by row."""
+        gnodes = []                           # distinct nodes: (operator, p, q, arity)
+        gmarg = []                            # argument runs of min/max (node ids)
+        glin = []                             # distinct leaves (Lin), in order
+        memo: dict[int, int] = {}
+        node_add, lin_add = gnodes.append, glin.append
+        codes = {**_UNARY, **_BINARY}
+
+        def visit(item) -> int:
+            args = item.args
+            k = len(args)
+            out = [0] * k
+            for j in range(k - 1, -1, -1):
+                arg = args[j]
+                n = memo.get(id(arg))
+                if n is None:
+                    if type(arg) is Lin or isinstance(arg, Lin):
+                        memo[id(arg)] = n = len(gnodes)
+                        node_add((LEAF, len(glin), 0, 0))
+                        lin_add(arg)
+                    elif isinstance(arg, Nl):
+                        n = visit(arg)
+                    else:
+                        raise TapeError(f"cannot compile {type(arg).__name__} into a residual")
+                out[j] = n
+            code = codes.get(item.op)
+            if code is None:
+                raise TapeError(f"unknown operator `{item.op}`")
+            if code == MIN or code == MAX:
+                if not k:
+                    raise TapeError(f"operator `{item.op}` with no arguments")
+                memo[id(item)] = n = len(gnodes)
+                node_add((code, len(gmarg), 0, k))
+                gmarg.extend(out)
+            elif k == 1:
+                memo[id(item)] = n = len(gnodes)
+                node_add((code, out[0], out[0], 1))
+            elif k == 2:
+                memo[id(item)] = n = len(gnodes)
+                node_add((code, out[0], out[1], 2))
+            else:
+                raise TapeError(f"operator `{item.op}` with {k} arguments")
+            return n
+
+        aff, arows, nl_rows, roots = [], [], [], []
+        try:
+            for r, e in enumerate(exprs):
+                if type(e) is Lin or isinstance(e, Lin):
+                    aff.append(e)
+                    arows.append(r)
+                    continue
+                if not isinstance(e, Nl):
+                    raise TapeError(f"cannot compile {type(e).__name__} into a residual")
+                n = memo.get(id(e))
+                nl_rows.append(r)
+                roots.append(visit(e) if n is None else n)
+        except RecursionError:
+            return False
+        finally:
+            visit = None                      # break the closure's self-reference
+        G = len(gnodes)
+        ga = np.fromiter(chain.from_iterable(gnodes), np.int64, 4 * G).reshape(G, 4)
+        gnodes.clear()
+        gop, ga0, ga1, nargs = ga[:, 0].copy(), ga[:, 1].copy(), ga[:, 2].copy(), ga[:, 3].copy()
+        gmarg = np.asarray(gmarg, dtype=np.int64)
+        # each node's arguments in order, as a CSR run: a min/max its run of gmarg, a
+        # two-argument node (p, q), a one-argument node (p)
+        mm = (gop == MIN) | (gop == MAX)
+        cstart = np.concatenate([[0], np.cumsum(nargs)])
+        child = np.empty(int(cstart[-1]), dtype=np.int64)
+        mm_nodes = np.flatnonzero(mm)
+        if len(mm_nodes):
+            cnt = nargs[mm_nodes]
+            rel = np.arange(int(cnt.sum()), dtype=np.int64) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+            child[np.repeat(cstart[mm_nodes], cnt) + rel] = gmarg[np.repeat(ga0[mm_nodes], cnt)
+                                                                  + rel]
+        bi = np.flatnonzero(~mm & (nargs >= 1))
+        child[cstart[bi]] = ga0[bi]
+        b2 = bi[nargs[bi] == 2]
+        child[cstart[b2] + 1] = ga1[b2]
+        # subtree sizes of the tree expansions, by depth (a node's depth: 1 + its deepest
+        # argument's; the walk emitted every argument before its node)
+        depth = _levels(gop, ga0, np.where(mm, nargs, ga1), gmarg)
+        size = np.ones(G, dtype=np.int64)
+        order = np.argsort(depth, kind="stable")
+        bounds = np.searchsorted(depth[order], np.arange(int(depth.max(initial=0)) + 2))
+        for lv in range(1, len(bounds) - 1):
+            nodes = order[bounds[lv]:bounds[lv + 1]]
+            na_ = nargs[nodes]
+            grp = np.cumsum(na_) - na_
+            idx = np.repeat(cstart[nodes], na_) + (np.arange(int(na_.sum()), dtype=np.int64)
+                                                   - np.repeat(grp, na_))
+            size[nodes] = np.minimum(1 + np.add.reduceat(size[child[idx]], grp), 1 << 40)
+        roots = np.asarray(roots, dtype=np.int64)
+        total = int(size[roots].sum()) if len(roots) else 0
+        if total > _SHARED_BLOWUP * (G + len(roots)) + 1024:
+            return False
+        # every tree occurrence: its node, row and position (breadth-first by depth)
+        pos_node = np.empty(total, dtype=np.int64)
+        pos_row = np.empty(total, dtype=np.int64)
+        fn = roots
+        fr = np.arange(len(roots), dtype=np.int64)
+        fo = np.cumsum(size[roots]) - size[roots]
+        while len(fn):
+            at = fo + size[fn] - 1                 # post-order: a node ends its subtree
+            pos_node[at] = fn
+            pos_row[at] = fr
+            na_ = nargs[fn]
+            has = na_ > 0
+            fn, fr, fo, na_ = fn[has], fr[has], fo[has], na_[has]
+            if not len(fn):
+                break
+            k = int(na_.sum())
+            grp = np.cumsum(na_) - na_
+            rel = np.arange(k, dtype=np.int64) - np.repeat(grp, na_)
+            ch = child[np.repeat(cstart[fn], na_) + rel]
+            cs = size[ch]
+            # last argument first: argument j starts after the subtrees of arguments > j
+            incl = np.cumsum(cs)
+            gend = np.repeat(incl[grp + na_ - 1], na_)
+            fo = np.repeat(fo, na_) + (gend - incl)
+            fn, fr = ch, np.repeat(fr, na_)
+        # the first occurrence of each (row, node), in position order
+        key = pos_row * G + pos_node
+        srt = np.argsort(key, kind="stable")
+        ks = key[srt]
+        first = np.ones(len(ks), dtype=bool)
+        first[1:] = ks[1:] != ks[:-1]
+        keep = np.sort(srt[first])
+        ukeys = ks[first]                          # sorted distinct keys
+        newid = np.empty(len(ukeys), dtype=np.int64)
+        newid[np.argsort(srt[first], kind="stable")] = np.arange(len(ukeys), dtype=np.int64)
+        # newid[i]: node index of ukeys[i]; keep: positions of the nodes in node order
+        node = pos_node[keep]
+        row = pos_row[keep]
+        N = len(node)
+
+        def new(rows_, nodes_):
+            return newid[np.searchsorted(ukeys, rows_ * G + nodes_)]
+
+        op = gop[node]
+        a0 = np.empty(N, dtype=np.int64)
+        a1 = np.empty(N, dtype=np.int64)
+        is_leaf = op == LEAF
+        leaf_nodes = np.flatnonzero(is_leaf)
+        a0[leaf_nodes] = a1[leaf_nodes] = np.arange(len(leaf_nodes), dtype=np.int64)
+        nn_ = nargs[node]
+        mmn = np.flatnonzero((op == MIN) | (op == MAX))
+        one = np.flatnonzero(~is_leaf & (nn_ == 1) & ~((op == MIN) | (op == MAX)))
+        two = np.flatnonzero(~is_leaf & (nn_ == 2) & ~((op == MIN) | (op == MAX)))
+        a0[one] = a1[one] = new(row[one], child[cstart[node[one]]])
+        a0[two] = new(row[two], child[cstart[node[two]]])
+        a1[two] = new(row[two], child[cstart[node[two]] + 1])
+        cm = nn_[mmn]
+        mstart = np.cumsum(cm) - cm
+        a0[mmn] = mstart
+        a1[mmn] = cm
+        rel = np.arange(int(cm.sum()), dtype=np.int64) - np.repeat(mstart, cm)
+        marg = new(np.repeat(row[mmn], cm), child[np.repeat(cstart[node[mmn]], cm) + rel])
+        nl_rows = np.asarray(nl_rows, dtype=np.int64)
+        nl_roots = new(np.arange(len(roots), dtype=np.int64), roots)
+        root_of = nl_rows[row]
+        # leaves: each distinct leaf's terms, gathered in leaf order
+        u_row, u_col, u_val, u_const = _lin_arrays(glin)
+        lid = ga0[node[leaf_nodes]]
+        start = np.searchsorted(u_row, np.arange(len(glin) + 1))
+        eidx, _, en = _take(start, lid)
+        l_row = np.repeat(np.arange(len(lid), dtype=np.int64), en)
+        a_row, a_col, a_val, b = _lin_arrays(aff)
+        self.n_rows = len(exprs)
+        self.n_params = n_params
+        self._setup(np.asarray(arows, dtype=np.int64), a_row, a_col, a_val, b,
+                    l_row, u_col[eidx], u_val[eidx], u_const[lid], leaf_nodes,
+                    nl_rows, nl_roots, op, a0, a1, _levels(op, a0, a1, marg), root_of, marg)
+        return True
 
     def _compile(self, exprs: list, n_params: int) -> None:
         self.n_rows = len(exprs)
