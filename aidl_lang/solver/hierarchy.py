@@ -244,9 +244,10 @@ class Solver:
                 new[sign_choice] = 1
             choices = new
         self.last_x = x
-        att.x_end = x[att.cols]
         if att.ok:
             self.x = x
+        else:
+            att.x_end = x[att.cols]
         return att.ok
 
     def batchable(self, att: Attempt) -> bool:
@@ -290,11 +291,10 @@ class Solver:
             if g.sel is not None:
                 chblock[g.sel] = rowblock[t.root_of[g.idx]]
         chorder = np.argsort(chblock, kind="stable")
-        chb = np.split(chorder, np.searchsorted(chblock[chorder], np.arange(1, len(atts))))
+        chcut = np.searchsorted(chblock[chorder], np.arange(len(atts) + 1)).tolist()
         sign_choice = t.root_choice[self.kind[rows] == SIGN]
-        sign_b = np.split(sign_choice[np.argsort(chblock[sign_choice], kind="stable")],
-                          np.searchsorted(np.sort(chblock[sign_choice]),
-                                          np.arange(1, len(atts))))
+        sign_choice = sign_choice[np.argsort(chblock[sign_choice], kind="stable")]
+        sgcut = np.searchsorted(chblock[sign_choice], np.arange(len(atts) + 1)).tolist()
         choices = np.zeros(t.n_choices, dtype=np.int64)
         F = t.evaluate(x, record=choices)
         live = []
@@ -338,9 +338,9 @@ class Solver:
                 if tr.iterations >= ITER_BUDGET:
                     tr.budget_exceeded = True
                     continue
-                c = chb[k]
+                c = chorder[chcut[k]:chcut[k + 1]]
                 if np.array_equal(new[c], choices[c]):
-                    sb = sign_b[k]
+                    sb = sign_choice[sgcut[k]:sgcut[k + 1]]
                     if released[k] or not len(sb) or bool(np.all(new[sb] == 1)):
                         continue
                     released[k] = True
@@ -349,11 +349,13 @@ class Solver:
             choices = new
             live = [] if tr.budget_exceeded else going
         self.last_x = x
+        good = np.zeros(len(cols), dtype=bool)
         for k, a in enumerate(atts):
-            idx = a.cols
-            a.x_end = x[idx]
             if a.ok:
-                self.x[idx] = x[idx]
+                good[blocks[k][1]] = True
+            else:
+                a.x_end = x[a.cols]
+        self.x[cols[good]] = x[cols[good]]
 
     # ------------------------------------------------------------------ strategies
     def solve_flat(self) -> bool:
