@@ -28,18 +28,24 @@ def gc_paused():
     long-lived, so on leaving, the tracked objects are moved straight to the oldest generation
     (``gc.freeze()`` then ``gc.unfreeze()``) instead of being traversed by the next young
     collection and again by a middle one (12-18 ms, and up to ~70 ms, on the 500-structure
-    model).  Nothing is kept from the collector: the next full collection sees them all.
-    Skipped when someone else holds objects frozen (``gc.get_freeze_count()``)."""
+    model).  Nothing is kept from the collector: the next full collection sees them all
+    (young garbage cycles made elsewhere just before are collected then too, not at the next
+    young collection).  Only when the block left at least ``PROMOTE_MIN`` young objects (a
+    small compile promotes nothing), and never when someone else holds objects frozen
+    (``gc.get_freeze_count()``)."""
     was = gc.isenabled()
     gc.disable()
     try:
         yield
     finally:
         if was:
-            if not gc.get_freeze_count():
+            if gc.get_count()[0] >= PROMOTE_MIN and not gc.get_freeze_count():
                 gc.freeze()
                 gc.unfreeze()
             gc.enable()
+
+
+PROMOTE_MIN = 10_000     # young objects left by a paused block before they are promoted
 
 
 def unique(a) -> np.ndarray:
