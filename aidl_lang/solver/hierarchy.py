@@ -130,18 +130,27 @@ class Solver:
         is cut out of it by array selection (:meth:`.Tape.subset`), so no expression is walked
         twice however many attempts share its row (a parent's translation attempts repeat its
         children's rows)."""
+        return self.array_tape(rows)
+
+    def array_tape(self, rows: np.ndarray) -> Tape:
+        """The :class:`~.tape.Tape` (NumPy arrays) of ``rows``, cut from :attr:`whole` and
+        cached by row set: what :meth:`tape` gives, and what a batch needs whatever the size
+        of its row set (:meth:`attempt_batch` reads the tape's arrays: groups, entries)."""
         key = rows.tobytes()
         t = self._tapes.get(key)
-        if t is None:
-            whole = self.whole
-            if len(rows) == whole.n_rows:
-                t = whole                       # rows of an attempt are distinct: all of them
-            elif len(rows) < 2 or bool(np.all(rows[1:] > rows[:-1])):
-                t = whole.subset(rows)
-            else:
-                t = Tape([self.rows.exprs[r] for r in rows], self.rows.n_params)
-            self._tapes[key] = t
-            self.compiles += 1
+        if t is None or not isinstance(t, Tape):
+            akey = b"array:" + key
+            t = self._tapes.get(akey)
+            if t is None:
+                whole = self.whole
+                if len(rows) == whole.n_rows:
+                    t = whole                   # rows of an attempt are distinct: all of them
+                elif len(rows) < 2 or bool(np.all(rows[1:] > rows[:-1])):
+                    t = whole.subset(rows)
+                else:
+                    t = Tape([self.rows.exprs[r] for r in rows], self.rows.n_params)
+                self._tapes[key if key not in self._tapes else akey] = t
+                self.compiles += 1
         return t
 
     @property
@@ -272,7 +281,7 @@ class Solver:
             for a in atts:
                 self.attempt(a)
             return
-        t = self.tape(rows)
+        t = self.array_tape(rows)
         blocks = [(np.searchsorted(rows, a.rows), np.searchsorted(cols, a.cols)) for a in atts]
         if not _independent(t, rows, cols, blocks):
             for a in atts:
