@@ -1,5 +1,12 @@
+import os
 import pathlib
+
 import pytest
+
+# One BLAS thread, as the `aidl` command uses (aidl_lang/cli/__init__.py): the matrices are
+# small, and threaded OpenBLAS spun on a busy 2-core machine (one example's dense solves took
+# 64 ms each instead of ~2 ms).  Set before anything imports NumPy.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))
