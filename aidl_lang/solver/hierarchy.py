@@ -35,6 +35,7 @@ from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
 from .system import LINK, SIGN, Rows, build_rows
 from .reduce import reduce
+from .small import SMALL_ROWS, small_tape
 from .tape import Tape
 
 MAX_ROUNDS = 12           # min/max branch re-checks per attempt
@@ -121,6 +122,8 @@ class Solver:
         self.last_x = self.x
         self.use_reduction = True
         self.batching = True          # False: plain post-order, one attempt at a time
+        self.use_small = True         # small row sets in Python floats (small.py)
+        self._not_small: set[int] = set()     # rows small.py does not compile
 
     # ------------------------------------------------------------------ helpers
     def tape(self, rows: np.ndarray) -> Tape:
@@ -129,7 +132,19 @@ class Solver:
         The whole model is compiled once (:attr:`whole`); the tape of an increasing row set
         is cut out of it by array selection (:meth:`.Tape.subset`), so no expression is walked
         twice however many attempts share its row (a parent's translation attempts repeat its
-        children's rows)."""
+        children's rows).  A small row set gets a :class:`~.small.SmallTape` instead (the same
+        numbers in Python floats), when :mod:`.small` compiles it."""
+        if self.use_small and len(rows) <= SMALL_ROWS:
+            key = rows.tobytes()
+            t = self._tapes.get(key)
+            if t is not None:
+                return t
+            t = small_tape(self.rows.exprs, self.rows.n_params, rows, self._not_small,
+                           self.__dict__.get("_whole"))
+            if t is not None:
+                self._tapes[key] = t
+                self.compiles += 1
+                return t
         return self.array_tape(rows)
 
     def array_tape(self, rows: np.ndarray) -> Tape:

@@ -111,8 +111,12 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     ``scale`` (len(cols)) weights the unknowns (default 1); ``choices`` freezes min/max branches;
     ``reduction`` (:class:`~.reduce.Reduction`) substitutes ``x[cols] = S z + t`` and drops the
     rows it solved.  Stops at ``max |F| <= tol`` (rows kept), after ``max_iter`` steps, or when
-    no damping reduces ``|F|``.
+    no damping reduces ``|F|``.  A :class:`~.small.SmallTape` runs the same steps in Python
+    floats (``solve_newton``: the same iterates, bit for bit).
     """
+    small = getattr(tape, "solve_newton", None)
+    if small is not None:
+        return small(x0, cols, scale, choices, max_iter, tol, reduction)
     x = x0.copy()
     if reduction is not None:
         red = reduction

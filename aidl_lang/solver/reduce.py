@@ -74,7 +74,11 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
 
     The classes, offsets and fixed values depend on ``x`` only through the held parameters,
     so they are remembered on the tape, keyed by ``cols`` and those values: a re-solve from
-    new starting guesses recomputes only the class means ``z0``."""
+    new starting guesses recomputes only the class means ``z0``.  A
+    :class:`~.small.SmallTape` does the same in Python floats (``substitute``)."""
+    small = getattr(tape, "substitute", None)
+    if small is not None:
+        return small(x, cols, scale)
     n = len(cols)
     if not len(tape.aff_rows) or not n:
         return None
