@@ -67,7 +67,7 @@ def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResul
     solver.trace.__init__()
     ok = solver.solve_flat() if flat else solver.solve_hierarchical()
     tr = solver.trace
-    model.x = list(map(float, solver.x[:solver.n_model]))
+    model.x = solver.x[:solver.n_model].tolist()
     res = SolveResult(ok and not tr.budget_exceeded, tr.iterations,
                       max((a.rounds for a in tr.attempts), default=0),
                       n_unknowns=int(solver.free.sum()), n_equations=len(solver.rows.exprs),

@@ -14,6 +14,8 @@ the step defined for redundant, rank-deficient systems.
 """
 from __future__ import annotations
 
+import math
+
 from ..records import dataclass
 
 import numpy as np
@@ -92,7 +94,7 @@ class _Step:
     def __call__(self, F: np.ndarray, mu: float) -> np.ndarray:
         if self.dense:
             M = self.G.copy()
-            diag = np.einsum("ii->i", M)
+            diag = M.reshape(-1)[::M.shape[0] + 1]       # a view of M's diagonal
             diag += mu + (diag == 0.0)
             return self.Js.T @ np.linalg.solve(M, -F)
         import scipy.sparse as sp
@@ -142,7 +144,7 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
     res = float(np.max(np.abs(F))) if len(F) else 0.0
     if res <= tol or not len(u) or not np.isfinite(res):
         return NewtonResult(x, res <= tol, 0, res)
-    norm = float(np.linalg.norm(F))
+    norm = math.sqrt(F.dot(F))       # np.linalg.norm of a 1-D array: these very steps
     mu = 1e-12
     it = 0
     small = dense_enough(len(F), len(u))
@@ -167,8 +169,8 @@ def newton(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray | Non
             un = u + du
             xn = place(un)
             Fn, vn = residual(xn)
-            nn = float(np.linalg.norm(Fn))
-            if np.isfinite(nn) and nn < norm:
+            nn = math.sqrt(Fn.dot(Fn))
+            if math.isfinite(nn) and nn < norm:
                 u, x, F, v, norm = un, xn, Fn, vn, nn
                 mu = max(mu / 10, 1e-12)
                 accepted = True

@@ -38,6 +38,7 @@ class Reduction:
     keep: np.ndarray
     z0: np.ndarray             # starting unknowns (class means)
     scale: np.ndarray          # (n_z,)
+    rows: np.ndarray | None = None   # the unknowns in a class (zc >= 0), if known
 
     def expand(self, z: np.ndarray) -> np.ndarray:
         """``S @ z`` (bit for bit the sparse product: ``0.0 + z[zc[i]]``, 0 where fixed)."""
@@ -62,7 +63,9 @@ class Reduction:
                              shape=(len(self.zc), len(self.z0)))
 
     def _rows(self) -> np.ndarray:
-        return np.flatnonzero(self.zc >= 0)
+        if self.rows is None:
+            self.rows = np.flatnonzero(self.zc >= 0)
+        return self.rows
 
 
 _KEEP = 8          # substitutions remembered per tape (a re-solve reuses the last ones)
@@ -82,33 +85,43 @@ def reduce(tape: Tape, x: np.ndarray, cols: np.ndarray, scale: np.ndarray) -> Re
     n = len(cols)
     if not len(tape.aff_rows) or not n:
         return None
-    colmap = -np.ones(tape.n_params, dtype=np.int64)
-    colmap[cols] = np.arange(n)
-    free = colmap[tape.a_col] >= 0
-    held = x[tape.a_col[~free]]
     memo = tape.__dict__.setdefault("_substitutions", {})
-    key = (np.asarray(cols).tobytes(), held.tobytes())
+    ckey = cols.tobytes()
+    hidx = memo.get(ckey)                   # the held entries' parameters, per set of unknowns
+    if hidx is None:
+        colmap = -np.ones(tape.n_params, dtype=np.int64)
+        colmap[cols] = np.arange(n)
+        hidx = memo[ckey] = tape.a_col[colmap[tape.a_col] < 0]
+    held = x[hidx]
+    key = (ckey, held.tobytes())
     sub = memo.get(key)
     if sub is None:
-        if len(memo) >= _KEEP:
+        if len(memo) >= 2 * _KEEP:
             memo.clear()
-        sub = memo[key] = _substitution(tape, n, colmap, free, held)
+            memo[ckey] = hidx
+        colmap = -np.ones(tape.n_params, dtype=np.int64)
+        colmap[cols] = np.arange(n)
+        sub = memo[key] = _substitution(tape, n, colmap, colmap[tape.a_col] >= 0, held)
     if sub is False:
         return None
-    zc, t, keep, offs, n_live = sub
-    rows = np.flatnonzero(zc >= 0)
-    # start each class at the mean of its members (least total movement), weights 1/d^2
-    xc = x[cols]
-    w = 1.0 / scale ** 2
-    num = np.bincount(zc[rows], weights=(xc[rows] - offs[rows]) * w[rows], minlength=n_live)
-    den = np.bincount(zc[rows], weights=w[rows], minlength=n_live)
-    z0 = num / np.where(den > 0, den, 1.0)
-    zscale = 1.0 / np.sqrt(np.where(den > 0, den, 1.0))
-    return Reduction(zc, t, keep, z0, zscale)
+    zc, t, keep, offs, n_live, rows, wkey, parts = sub
+    # start each class at the mean of its members (least total movement), weights 1/d^2;
+    # the weights' sums depend on the scale only (kept with the substitution)
+    if wkey != scale.tobytes():
+        w = 1.0 / scale ** 2
+        den = np.bincount(zc[rows], weights=w[rows], minlength=n_live)
+        dd = np.where(den > 0, den, 1.0)
+        parts = (cols[rows], zc[rows], offs[rows], w[rows], dd, 1.0 / np.sqrt(dd))
+        sub[6], sub[7] = scale.tobytes(), parts
+    xi, zr, offr, wr, dd, zscale = parts
+    num = np.bincount(zr, weights=(x[xi] - offr) * wr, minlength=n_live)
+    return Reduction(zc, t, keep, num / dd, zscale, rows)
 
 
 def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held: np.ndarray):
-    """``(zc, t, keep, offs, number of classes)``, or False when no row is trivial."""
+    """``[zc, t, keep, offs, number of classes, unknowns in a class, None, None]`` (the last
+    two: the class weights, filled by :func:`reduce` per scale), or False when no row is
+    trivial."""
     # constant part of each affine row: held parameters and b
     const = tape.b.copy()
     np.add.at(const, tape.a_row[~free], tape.a_val[~free] * held)
@@ -202,4 +215,4 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
     dropped = np.zeros(tape.n_rows, dtype=bool)      # np.setdiff1d, without importing numpy.ma
     dropped[tape.aff_rows[used]] = True
     keep = np.flatnonzero(~dropped)
-    return zc, t, keep, offs, len(live_roots)
+    return [zc, t, keep, offs, len(live_roots), np.flatnonzero(zc >= 0), None, None]
