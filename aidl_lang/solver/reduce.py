@@ -19,8 +19,6 @@ from ..records import dataclass
 
 import numpy as np
 
-from .arrays import unique
-
 from .tape import Tape
 
 
@@ -122,25 +120,44 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
     """``[zc, t, keep, offs, number of classes, unknowns in a class, None, None]`` (the last
     two: the class weights, filled by :func:`reduce` per scale), or False when no row is
     trivial."""
-    # constant part of each affine row: held parameters and b
-    const = tape.b.copy()
-    np.add.at(const, tape.a_row[~free], tape.a_val[~free] * held)
-    rr, cc, vv = tape.a_row[free], colmap[tape.a_col[free]], tape.a_val[free]
-    nz = vv != 0.0
-    rr, cc, vv = rr[nz], cc[nz], vv[nz]
-    order = np.argsort(rr, kind="stable")
-    rr, cc, vv = rr[order], cc[order], vv[order]
-    counts = np.bincount(rr, minlength=len(tape.aff_rows))
-    starts = np.concatenate([[0], np.cumsum(counts)])
+    # each affine row's constant (b, then its held terms in entry order, as np.add.at sums
+    # them) and its free entries with a nonzero coefficient, on Python lists
+    const = tape.b.tolist()
+    entries: list = [[] for _ in const]
+    vals = tape.a_val.tolist()
+    hv = iter(held.tolist())
+    for r, k, v in zip(tape.a_row.tolist(), colmap[tape.a_col].tolist(), vals):
+        if k < 0:
+            const[r] += v * next(hv)
+        elif v != 0.0:
+            entries[r].append((k, v))
+    sub = classes(n, const, entries)
+    if sub is False:
+        return False
+    zc, t, used, offs, n_live = sub
+    zc = np.array(zc, dtype=np.int64)
+    dropped = np.zeros(tape.n_rows, dtype=bool)      # np.setdiff1d, without importing numpy.ma
+    dropped[tape.aff_rows[np.array(used, dtype=bool)]] = True
+    return [zc, np.array(t, dtype=float), np.flatnonzero(~dropped), np.array(offs, dtype=float),
+            n_live, np.flatnonzero(zc >= 0), None, None]
+
+
+def classes(n: int, const: list, entries: list):
+    """The substitution over ``n`` unknowns from affine rows given as ``const[k]`` (the row's
+    constant, held parameters included) and ``entries[k]`` (its ``(unknown, coefficient)``
+    pairs, nonzero, in entry order): ``(zc, t, used, offs, number of classes)`` as lists
+    (``used[k]``: row ``k`` is solved by the substitution), or False when no row is.
+
+    Pass 1 merges the unknowns of every row ``a x_i - a x_j + c == 0`` into one class of a
+    weighted union-find (``x_i = x_root + offs_i``); pass 2 fixes the class of every row left
+    with one unknown class, repeated while new ones appear."""
     parent = list(range(n))
     off = [0.0] * n
-    used = np.zeros(len(tape.aff_rows), dtype=bool)
-    ccl, vvl, stl, cst_l = cc.tolist(), vv.tolist(), starts.tolist(), const.tolist()
+    used = [False] * len(const)
 
     def find(i):
         """Root of i and x_i - x_root, compressing the path."""
         path = []
-        o = 0.0
         while parent[i] != i:
             path.append(i)
             i = parent[i]
@@ -151,14 +168,13 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
             acc += off[k]
             off[k] = acc
             parent[k] = root
-        o = off[path[0]] if path else 0.0
-        return root, o
+        return root, (off[path[0]] if path else 0.0)
 
     # pass 1: equal pairs (x_i - x_j + c == 0 with coefficients a, -a)
-    for r in np.flatnonzero(counts == 2).tolist():
-        s = stl[r]
-        i, j = ccl[s], ccl[s + 1]
-        a, b = vvl[s], vvl[s + 1]
+    for r, ent in enumerate(entries):
+        if len(ent) != 2:
+            continue
+        (i, a), (j, b) = ent
         if a != -b:
             continue
         ri, oi = find(i)
@@ -167,25 +183,23 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
             continue                      # a cycle: keep the row (redundant or conflicting)
         # a x_i - a x_j + c = 0  ->  x_ri + oi = x_rj + oj - c/a
         parent[ri] = rj
-        off[ri] = oj - cst_l[r] / a - oi
+        off[ri] = oj - const[r] / a - oi
         used[r] = True
-    roots = np.empty(n, dtype=np.int64)
-    offs = np.empty(n)
+    roots, offs = [], []
     for i in range(n):
-        roots[i], offs[i] = find(i)
-    # pass 2: single-unknown rows fix their class, repeated while new ones appear (on Python
-    # lists: the same float operations as on NumPy scalars, without their overhead)
-    fixed_root = {}
+        ro, o = find(i)
+        roots.append(ro)
+        offs.append(o)
+    # pass 2: single-unknown rows fix their class, repeated while new ones appear
+    fixed_root: dict = {}
     changed = True
-    roots_l, offs_l = roots.tolist(), offs.tolist()
     while changed:
         changed = False
-        for r in np.flatnonzero(~used).tolist():
-            s, e = stl[r], stl[r + 1]
-            live = [(roots_l[c], v, offs_l[c]) for c, v in zip(ccl[s:e], vvl[s:e])]
-            cst = cst_l[r]
-            unk = {}
-            for root, v, o in live:
+        for r in [r for r, u in enumerate(used) if not u]:
+            cst = const[r]
+            unk: dict = {}
+            for c, v in entries[r]:
+                root, o = roots[c], offs[c]
                 if root in fixed_root:
                     cst += v * (fixed_root[root] + o)
                 else:
@@ -197,22 +211,12 @@ def _substitution(tape: Tape, n: int, colmap: np.ndarray, free: np.ndarray, held
                 fixed_root[root] = -cst / v
                 used[r] = True
                 changed = True
-    if not used.any():
+    if not any(used):
         return False
-    fv = np.zeros(n)
-    has = np.zeros(n, dtype=bool)
-    if fixed_root:
-        fk = np.fromiter(fixed_root.keys(), np.int64, len(fixed_root))
-        fv[fk] = np.fromiter(fixed_root.values(), float, len(fixed_root))
-        has[fk] = True
-    class_roots = unique(roots)
-    live_roots = class_roots[~has[class_roots]]
-    zidx = -np.ones(n, dtype=np.int64)
-    zidx[live_roots] = np.arange(len(live_roots))
-    fixed = has[roots]
-    t = np.where(fixed, offs + fv[roots], offs)       # offs + v where the class is fixed
-    zc = zidx[roots]
-    dropped = np.zeros(tape.n_rows, dtype=bool)      # np.setdiff1d, without importing numpy.ma
-    dropped[tape.aff_rows[used]] = True
-    keep = np.flatnonzero(~dropped)
-    return [zc, t, keep, offs, len(live_roots), np.flatnonzero(zc >= 0), None, None]
+    zidx: dict = {}
+    for ro in sorted(set(roots)):             # one column per live class, in root order
+        if ro not in fixed_root:
+            zidx[ro] = len(zidx)
+    zc = [zidx.get(ro, -1) for ro in roots]
+    t = [o + fixed_root[ro] if ro in fixed_root else o for ro, o in zip(roots, offs)]
+    return zc, t, used, offs, len(zidx)

@@ -32,7 +32,7 @@ import numpy as np
 
 from ..geometry.expr import Lin, Nl
 from .newton import NewtonResult, _Step, dense_enough, unreachable
-from .reduce import _KEEP, Reduction
+from .reduce import _KEEP, Reduction, classes
 
 SMALL_ROWS = 20      # row sets up to this size are solved in Python floats (measured crossover)
 
@@ -352,73 +352,15 @@ def _substitution(tape: SmallTape, n: int, colpos: dict, xl: list):
                 ent.append((k, v))
         const.append(cst)
         entries.append(ent)
-    parent = list(range(n))
-    off = [0.0] * n
-    used = [False] * len(tape.aff)
-
-    def find(i):
-        path = []
-        while parent[i] != i:
-            path.append(i)
-            i = parent[i]
-        acc = 0.0
-        for k in reversed(path):
-            acc += off[k]
-            off[k] = acc
-            parent[k] = i
-        return i, (off[path[0]] if path else 0.0)
-
-    for r, ent in enumerate(entries):             # pass 1: equal pairs
-        if len(ent) != 2:
-            continue
-        (i, a), (j, b) = ent
-        if a != -b:
-            continue
-        ri, oi = find(i)
-        rj, oj = find(j)
-        if ri == rj:
-            continue
-        parent[ri] = rj
-        off[ri] = oj - const[r] / a - oi
-        used[r] = True
-    roots, offs = [], []
-    for i in range(n):
-        ro, o = find(i)
-        roots.append(ro)
-        offs.append(o)
-    fixed_root: dict = {}
-    changed = True
-    while changed:                                # pass 2: single unknowns fix their class
-        changed = False
-        for r in [r for r in range(len(used)) if not used[r]]:
-            cst = const[r]
-            unk: dict = {}
-            for c, v in entries[r]:
-                root, o = roots[c], offs[c]
-                if root in fixed_root:
-                    cst += v * (fixed_root[root] + o)
-                else:
-                    unk[root] = unk.get(root, 0.0) + v
-                    cst += v * o
-            unk = {k: v for k, v in unk.items() if v != 0.0}
-            if len(unk) == 1:
-                (root, v), = unk.items()
-                fixed_root[root] = -cst / v
-                used[r] = True
-                changed = True
-    if not any(used):
+    sub = classes(n, const, entries)
+    if sub is False:
         return False
-    zidx = {}
-    for ro in sorted(set(roots)):
-        if ro not in fixed_root:
-            zidx[ro] = len(zidx)
-    zc = [zidx.get(ro, -1) for ro in roots]
-    t = [o + fixed_root[ro] if ro in fixed_root else o for ro, o in zip(roots, offs)]
+    zc, t, used, offs, n_live = sub
     dropped = {tape.aff[k][0] for k in range(len(used)) if used[k]}
     keep = [r for r in range(tape.n_rows) if r not in dropped]
     arrays = (np.array(zc, dtype=np.int64), np.array(t, dtype=float),
               np.array(keep, dtype=np.int64))
-    return zc, t, keep, offs, len(zidx), arrays, {}
+    return zc, t, keep, offs, n_live, arrays, {}
 
 
 # ---------------------------------------------------------------------- Newton
