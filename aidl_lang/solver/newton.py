@@ -53,6 +53,27 @@ def unreachable(Js, F: np.ndarray) -> bool:
     return not bool(np.any(off[rows] & (Js.data != 0.0)))
 
 
+try:                                  # the LAPACK solve behind np.linalg.solve
+    from numpy.linalg import _umath_linalg
+except ImportError:                   # pragma: no cover - a NumPy without it
+    _umath_linalg = None
+
+
+def _singular(err, flag):
+    raise np.linalg.LinAlgError("Singular matrix")
+
+
+def solve_dense(M: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``np.linalg.solve(M, b)`` for a float64 ``M`` (m, m) and ``b`` (m,): the same LAPACK
+    call (``gesv`` through NumPy's ``solve1``) and the same ``LinAlgError`` on a singular
+    ``M``, without the wrapper's argument checks (most of its cost on a tiny system)."""
+    if _umath_linalg is None:         # pragma: no cover
+        return np.linalg.solve(M, b)
+    with np.errstate(call=_singular, invalid="call", over="ignore", divide="ignore",
+                     under="ignore"):
+        return _umath_linalg.solve1(M, b, signature="dd->d")
+
+
 @dataclass
 class NewtonResult:
     x: np.ndarray
@@ -96,7 +117,7 @@ class _Step:
             M = self.G.copy()
             diag = M.reshape(-1)[::M.shape[0] + 1]       # a view of M's diagonal
             diag += mu + (diag == 0.0)
-            return self.Js.T @ np.linalg.solve(M, -F)
+            return self.Js.T @ solve_dense(M, -F)
         import scipy.sparse as sp
         from scipy.sparse.linalg import splu
         data = np.bincount(self.inv, weights=np.concatenate([self.gdata, mu + self.zero]),

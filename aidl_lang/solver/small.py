@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from ..geometry.expr import Lin, Nl
-from .newton import NewtonResult, _Step, dense_enough, unreachable
+from .newton import NewtonResult, _Step, dense_enough
 from .reduce import _KEEP, Reduction, classes
 
 SMALL_ROWS = 20      # row sets up to this size are solved in Python floats (measured crossover)
@@ -424,9 +424,11 @@ def newton_small(tape: SmallTape, x0: np.ndarray, cols: np.ndarray, scale=None, 
     while it < max_iter:
         it += 1
         J = tape.jacobian_rows(keep, V, plans, nz)
-        Js = (np.array(J, dtype=float) if J else np.zeros((0, nz))) * d
+        Js = np.array(J, dtype=float) * d
         accepted = False
-        if unreachable(Js, Fa):
+        # newton.unreachable on lists: every row that is off has an all-zero row of J D
+        if any(f != 0.0 for f in F) and not any(
+                any(row) for row, f in zip(Js.tolist(), F) if f != 0.0):
             break
         step = _Step(Js, dense=True)
         for _ in range(14):
