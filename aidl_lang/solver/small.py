@@ -42,6 +42,16 @@ _CODES = {"add": _ADD, "mul": _MUL, "div": _DIV, "sqrt": _SQRT, "abs": _ABS}
 _TINY = 1e-300
 
 
+def _div(a: float, b: float) -> float:
+    """``a / b`` as NumPy divides: IEEE infinities and NaN for a zero ``b`` (Python raises)."""
+    try:
+        return a / b
+    except ZeroDivisionError:
+        if a != a or a == 0.0:
+            return math.nan
+        return math.copysign(math.inf, a) * math.copysign(1.0, b)
+
+
 class Unsupported(Exception):
     """The row set has an operator, a ``min``/``max`` or a shape this module does not compile."""
 
@@ -168,7 +178,7 @@ class SmallTape:
                     q = q if q != 0.0 else _TINY
                     w = adj[n]
                     adj[a] += w / q
-                    d1.append(-w * v[a] / (q * q))
+                    d1.append(_div(-w * v[a], q * q))
                 for (n, a, b), d in zip(nodes, d1):
                     adj[b] += d
             elif op == _SQRT:
@@ -326,7 +336,7 @@ def reduce_small(tape: SmallTape, x: np.ndarray, cols: np.ndarray, scale: np.nda
     for i in range(n):
         z = zc[i]
         if z >= 0:
-            w = 1.0 / (sl[i] * sl[i])
+            w = _div(1.0, sl[i] * sl[i])
             num[z] += (xl[colsl[i]] - offs[i]) * w
             den[z] += w
     z0 = [a / (b if b > 0 else 1.0) for a, b in zip(num, den)]
