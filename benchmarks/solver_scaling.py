@@ -267,7 +267,7 @@ def main() -> None:
         have_slvs = True
     except ImportError:
         have_slvs = False
-    sizes = [10, 50, 200] if args.quick else [10, 50, 200, 400, 800, 2000]
+    sizes = [10, 50, 80, 200] if args.quick else [10, 50, 80, 200, 400, 800, 2000]
     pgcs = None if args.no_planegcs else planegcs_python()
     print("(a) flat families, started 10% off a known solution"
           + ("" if have_slvs else "  [slvs not installed: pip install slvs]")
