@@ -206,3 +206,30 @@ def test_solve_dense_is_numpy_solve(m, seed):
     assert np.array_equal(solve_dense(M, b), np.linalg.solve(M, b))
     with pytest.raises(np.linalg.LinAlgError):
         solve_dense(np.zeros((m, m)), b)
+
+
+def _has_other_op(e) -> bool:
+    if isinstance(e, Lin):
+        return False
+    return e.op not in ("add", "mul", "div", "sqrt", "abs") or any(map(_has_other_op, e.args))
+
+
+def test_rows_the_small_path_cannot_take_are_marked_from_the_whole_tape():
+    """With the whole tape compiled, every row with another operator (a bounding box's
+    min/max) is marked at once, and a row set holding one is left to the tape."""
+    from benchmarks.families import hierarchy
+    c = compile_source(hierarchy(10, seed=3).source, "t.aidl", do_solve=False)
+    s = Solver(c.model)
+    exprs = s.rows.exprs
+    want = {r for r, e in enumerate(exprs) if _has_other_op(e)}
+    assert want and len(want) < len(exprs)
+    bad: set = set()
+    r = min(want)
+    assert small_tape(exprs, s.rows.n_params, np.array([r]), bad, s.whole) is None
+    assert bad - {-1} == want
+    fine = [r for r in range(len(exprs)) if r not in want][:5]
+    assert isinstance(small_tape(exprs, s.rows.n_params, np.array(fine), bad, s.whole),
+                      SmallTape)
+    bad2: set = set()                         # without the whole tape: found by the walk
+    assert small_tape(exprs, s.rows.n_params, np.array([r]), bad2) is None
+    assert bad2 == {r}

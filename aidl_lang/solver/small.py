@@ -37,7 +37,7 @@ from .reduce import _KEEP, Reduction, classes
 SMALL_ROWS = 20      # row sets up to this size are solved in Python floats (measured crossover)
 
 # operator codes: the tape's (tape.py), for the group order of the adjoint sweep
-_ADD, _MUL, _DIV, _SQRT, _ABS = 1, 2, 3, 14, 15
+_LEAF, _ADD, _MUL, _DIV, _SQRT, _ABS = 0, 1, 2, 3, 14, 15
 _CODES = {"add": _ADD, "mul": _MUL, "div": _DIV, "sqrt": _SQRT, "abs": _ABS}
 _TINY = 1e-300
 
@@ -82,7 +82,10 @@ class SmallTape:
                 self.rows.append(("a", terms, e.const))
                 self.aff.append((r, terms, e.const))
             else:
-                self.rows.append(_compile_row(e))
+                try:
+                    self.rows.append(_compile_row(e))
+                except Unsupported as err:
+                    raise Unsupported(*err.args, r) from None
         self._memo: dict = {}
         self._full = None
 
@@ -289,14 +292,32 @@ def _compile_row(e) -> tuple:
     return ("n", leaves, inner, back, root, count[0])
 
 
-def small_tape(exprs: list, n_params: int) -> SmallTape | None:
-    """A :class:`SmallTape` of ``exprs``, or None when the general tape should take them (more
-    than ``SMALL_ROWS`` rows, or an operator not compiled here)."""
-    if len(exprs) > SMALL_ROWS:
+def small_tape(exprs: list, n_params: int, rows=None, bad: set | None = None, whole=None):
+    """A :class:`SmallTape` of ``exprs`` (or of ``exprs[r]`` for ``r`` in ``rows``), or None
+    when the general tape should take them: more than ``SMALL_ROWS`` rows, or an operator not
+    compiled here.
+
+    ``bad``: rows known not to compile here, skipped at once (a row found so is added);
+    ``whole``: the :class:`~.tape.Tape` of every row, if compiled: its operators mark every
+    such row at once (a model with bounding boxes has a ``min``/``max`` in most structures'
+    rows, and each would otherwise be walked up to it)."""
+    if rows is None:
+        rows = range(len(exprs))
+    if len(rows) > SMALL_ROWS:
+        return None
+    if bad is not None and whole is not None and -1 not in bad:
+        ok = np.zeros(64, dtype=bool)
+        ok[[_LEAF, *_CODES.values()]] = True
+        bad.update(set(whole.root_of[~ok[whole.op]].tolist()))
+        bad.add(-1)                             # the whole tape's rows are marked
+    rows = rows.tolist() if isinstance(rows, np.ndarray) else list(rows)
+    if bad and any(r in bad for r in rows):
         return None
     try:
-        return SmallTape(exprs, n_params)
-    except Unsupported:
+        return SmallTape([exprs[r] for r in rows], n_params)
+    except Unsupported as e:
+        if bad is not None and e.args and isinstance(e.args[-1], int):
+            bad.add(rows[e.args[-1]])
         return None
 
 
