@@ -257,21 +257,7 @@ def test_serve_binds_loopback_only():
     assert "--host" not in _parser().format_help()
 
 
-# a shackle slid down over the key hole (shackle_y = 14 mm) refills it: W0501
-LOCK = """units mm
-param shackle_y = 30 mm
-solid lock {
-    solid body {
-        b = Rectangle(center=(0, 0), width=40, height=30)
-        hole key {
-            k = Circle(center=(0, 8), radius=3)
-        }
-    }
-    solid shackle {
-        s = Rectangle(center=(0, shackle_y), width=30, height=8)
-    }
-}
-"""
+LOCK = (Path(__file__).resolve().parent / "programs" / "preview" / "lock.aidl").read_text()
 
 
 def test_preview_reports_the_same_shape_checks_as_check(tmp_path):

@@ -166,20 +166,7 @@ def test_customizer_controls_zoom_and_set_line(tmp_path):
         assert svg.get_attribute("viewBox") == fit
 
 
-LOCK = """units mm
-param shackle_y = 30 mm, min=10 mm, max=40 mm
-solid lock {
-    solid body {
-        b = Rectangle(center=(0, 0), width=40, height=30)
-        hole key {
-            k = Circle(center=(0, 8), radius=3)
-        }
-    }
-    solid shackle {
-        s = Rectangle(center=(0, shackle_y), width=30, height=8)
-    }
-}
-"""
+LOCK = (Path(__file__).resolve().parent / "programs" / "preview" / "lock.aidl").read_text()
 
 
 def test_shape_checks_follow_the_picture(tmp_path):

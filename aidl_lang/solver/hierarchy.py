@@ -217,6 +217,18 @@ class Solver:
         return unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
 
     # ------------------------------------------------------------------ attempts
+    def _steps_left(self, tr) -> int:
+        """Newton steps the solve may still take (:data:`ITER_BUDGET` over the whole solve),
+        or 0 when the budget or the deadline is used up (then ``tr`` says which)."""
+        left = ITER_BUDGET - tr.iterations
+        if left <= 0:
+            tr.budget_exceeded = True
+            return 0
+        if self.deadline is not None and time.monotonic() > self.deadline:
+            tr.budget_exceeded = tr.out_of_time = True
+            return 0
+        return left
+
     def attempt(self, att: Attempt) -> bool:
         """Run one attempt from the current point; on success keep its result."""
         tr = self.trace
@@ -235,12 +247,8 @@ class Solver:
         sign_choice = t.root_choice[self.kind[att.rows] == SIGN]
         released = False
         for rnd in range(1, MAX_ROUNDS + 1):
-            left = ITER_BUDGET - tr.iterations
-            if left <= 0:
-                tr.budget_exceeded = True
-                break
-            if self.deadline is not None and time.monotonic() > self.deadline:
-                tr.budget_exceeded = tr.out_of_time = True
+            left = self._steps_left(tr)
+            if not left:
                 break
             red = reduce(t, x, att.cols, scale) if self.use_reduction else None
             res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL,
@@ -334,12 +342,8 @@ class Solver:
         for rnd in range(1, MAX_ROUNDS + 1):
             if not live:
                 break
-            left = ITER_BUDGET - tr.iterations
-            if left <= 0:
-                tr.budget_exceeded = True
-                break
-            if self.deadline is not None and time.monotonic() > self.deadline:
-                tr.budget_exceeded = tr.out_of_time = True
+            left = self._steps_left(tr)
+            if not left:
                 break
             red = reduce(t, x, cols, scale) if self.use_reduction else None
             x, results, over = newton_batch(t, x, cols, scale, [blocks[k] for k in live],
