@@ -18,7 +18,6 @@ Limits (docs/language.md, "Limits"; :mod:`aidl_lang.limits`): loops and comprehe
 """
 from __future__ import annotations
 
-import gc
 import time
 from pathlib import Path
 
@@ -30,6 +29,7 @@ from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
 from .limits import DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, Budget
+from .memory import gc_paused
 from .sources import STDLIB
 
 __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
@@ -75,17 +75,12 @@ class Interpreter(Statements, Calls, Expressions):
         records) that reference counting frees, and the collector's full passes over a large
         heap were up to half the time (docs/performance.md, "The interpreter").  What a run
         makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
-        paused = gc.isenabled()
-        if paused:
-            gc.disable()
-        try:
-            return Statements.run(self, program)
-        except BudgetExhausted as ex:
-            self.budget_error(ex)
-            return self.model
-        finally:
-            if paused:
-                gc.enable()
+        with gc_paused():
+            try:
+                return Statements.run(self, program)
+            except BudgetExhausted as ex:
+                self.budget_error(ex)
+                return self.model
 
     # ------------------------------------------------------------------ the budget
     def step(self, span=None) -> None:

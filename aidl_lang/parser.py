@@ -17,7 +17,6 @@ against Lark's own parser.
 """
 from __future__ import annotations
 
-import gc
 import re
 import threading
 from pathlib import Path
@@ -25,6 +24,7 @@ from pathlib import Path
 from . import ast as A
 from .cache import cache_dir, read_owned, write_atomic
 from .diagnostics import DiagnosticSink, Span
+from .memory import gc_paused
 
 GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
 if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the package
@@ -845,14 +845,8 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     of tokens, tuples and nodes but no reference cycles, and the collector's passes over them
     were a quarter of the time (a 178 KB program: 358 -> 265 ms).
     """
-    paused = gc.isenabled()
-    if paused:
-        gc.disable()
-    try:
+    with gc_paused():
         return _parse(source, path, sink)
-    finally:
-        if paused:
-            gc.enable()
 
 
 def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:

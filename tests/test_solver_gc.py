@@ -10,7 +10,7 @@ import pytest
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver
-from aidl_lang.solver.arrays import PROMOTE_MIN, gc_paused
+from aidl_lang.memory import PROMOTE_MIN, gc_paused
 from aidl_lang.solver.tape import Tape
 from benchmarks.families import hierarchy
 

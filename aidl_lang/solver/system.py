@@ -19,7 +19,7 @@ from ..records import dataclass, field
 
 import numpy as np
 
-from .arrays import gc_paused
+from ..memory import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
 from ..geometry.expr import Lin, add, func, mul, var
 from ..geometry.model import Constraint, Model

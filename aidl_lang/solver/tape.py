@@ -29,7 +29,8 @@ from itertools import chain
 
 import numpy as np
 
-from .arrays import gc_paused, unique
+from ..memory import gc_paused
+from .arrays import unique
 
 from ..geometry.expr import Lin, Nl
 
