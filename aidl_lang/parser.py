@@ -528,8 +528,8 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
     same positions), as one loop: at each position the alternation of only the terminals that
     can start with the character there (:meth:`_Tables.regex_for`; the whole alternations
     where there is no entry), since trying two dozen alternatives in turn was half the
-    lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no terminal matched (the tokens then
-    stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
+    lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no
+    terminal matched (the tokens then stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
     parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
     tb = _tables()
     by_first, regex_for = tb.by_first, tb.regex_for
