@@ -19,12 +19,16 @@ from __future__ import annotations
 
 import re
 import threading
+from functools import partial
 from pathlib import Path
 
 from . import ast as A
 from .cache import cache_dir, read_owned, write_atomic
 from .diagnostics import DiagnosticSink, Span
 from .memory import gc_paused
+
+# a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
+_new_span = partial(tuple.__new__, Span)
 
 GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
 if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the package
@@ -160,22 +164,22 @@ def _retype_thickness(stream):
 
 class Token(str):
     """A token from the lexer: its text (the ``str`` value), ``type`` (the terminal's name) and
-    ``pos`` = ``(line, column, start_pos, end_line, end_column, end_pos)`` (lines and columns
-    1-based, offsets 0-based), also readable by the names of Lark's ``Token`` fields."""
+    ``pos``, its :class:`Span` (lines and columns 1-based, offsets 0-based; the program's path
+    as ``file``), also readable by the names of Lark's ``Token`` fields."""
 
     def __new__(cls, type, value, start_pos=None, line=None, column=None, end_line=None,
-                end_column=None, end_pos=None):
+                end_column=None, end_pos=None, file=""):
         t = str.__new__(cls, value)
         t.type = type
-        t.pos = (line, column, start_pos, end_line, end_column, end_pos)
+        t.pos = _new_span((file, line, column, end_line, end_column, start_pos, end_pos))
         return t
 
-    line = property(lambda self: self.pos[0])
-    column = property(lambda self: self.pos[1])
-    start_pos = property(lambda self: self.pos[2])
+    line = property(lambda self: self.pos[1])
+    column = property(lambda self: self.pos[2])
     end_line = property(lambda self: self.pos[3])
     end_column = property(lambda self: self.pos[4])
-    end_pos = property(lambda self: self.pos[5])
+    start_pos = property(lambda self: self.pos[5])
+    end_pos = property(lambda self: self.pos[6])
 
     @property
     def value(self) -> str:
@@ -523,14 +527,16 @@ def _lark_version() -> str:
     return m.group(1) if m else "?"
 
 
-def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharacters | None"]:
+def _lex(text: str, keep_ignored: bool = False,
+         path: str = "") -> tuple[list, "UnexpectedCharacters | None"]:
     """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
     same positions), as one loop: at each position the alternation of only the terminals that
     can start with the character there (:meth:`_Tables.regex_for`; the whole alternations
     where there is no entry), since trying two dozen alternatives in turn was half the
     lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no
     terminal matched (the tokens then stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
-    parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
+    parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``).  ``path``: the
+    ``file`` of the tokens' spans."""
     tb = _tables()
     by_first, regex_for = tb.by_first, tb.regex_for
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
@@ -540,6 +546,7 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
     tokens: list = []
     push = tokens.append
     new_str = str.__new__
+    span = _new_span
     while pos < end:
         ch = text[pos]
         try:
@@ -559,7 +566,8 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
         if type_ in plain:
             tok = new_str(Token, m.group())
             tok.type = type_
-            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            tok.pos = span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
+                            npos))
             push(tok)
             pos = npos
             continue
@@ -567,7 +575,8 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
             value = m.group()
             tok = new_str(Token, value)
             tok.type = literal[type_].get(value, type_)
-            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            tok.pos = span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
+                            npos))
             push(tok)
             pos = npos
             continue
@@ -598,7 +607,7 @@ def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharac
                         break
         tok = new_str(Token, value)
         tok.type = type_
-        tok.pos = (start_line, column, pos, line, npos - line_start + 1, npos)
+        tok.pos = span((path, start_line, column, line, npos - line_start + 1, pos, npos))
         push(tok)
         pos = npos
     return tokens, None
@@ -613,7 +622,7 @@ def _run_lalr(text: str, start: str):
     tb = _tables()
     states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
     builder = _STATE.builder
-    raw, lex_error = _lex(text)
+    raw, lex_error = _lex(text, False, builder.path)
     tokens = _postlex(raw, lex_error is None)
     state = start_states[start]
     state_stack = [state]
@@ -624,7 +633,7 @@ def _run_lalr(text: str, start: str):
     if lex_error is None:
         last = tokens[-1] if tokens else None
         tokens.append(Token.new_borrow_pos("$END", "", last) if last is not None
-                      else Token("$END", "", 0, 1, 1, 1, 1, 0))
+                      else Token("$END", "", 0, 1, 1, 1, 1, 0, builder.path))
     for token in tokens:
         ttype = token.type
         while True:
@@ -962,13 +971,13 @@ class _BuildError(ParseError):
 
 
 def _span(path: str, x) -> Span:
-    """A :class:`Span` from a token, a position tuple ``(line, col, start, end_line, end_col,
-    end)`` (a reduction's extent) or ``None`` (a reduction that covers no token)."""
+    """The :class:`Span` of a token, of a reduction's extent (a span already) or, for ``None``
+    (a reduction that covers no token), the program's start."""
     if x is None:
         return Span(path, 1, 1, 1, 1)
-    if type(x) is not tuple:
-        x = x.pos                                   # a token
-    return Span(path, x[0], x[1], x[3], x[4], x[2], x[5])
+    if type(x) is Token:
+        return x.pos
+    return x
 
 
 def parse_number(text: str) -> tuple[float, str | None]:
@@ -1035,8 +1044,8 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
                     last = c.pos
                     if last is not None:
                         break
-                return first if first is last else (first[0], first[1], first[2], last[3],
-                                                    last[4], last[5])
+                return first if first is last else _new_span(
+                    (first[0], first[1], first[2], last[3], last[4], first[5], last[6]))
         return None
 
     if specialise and whole and not expand1 and build is not None and size > 1:
@@ -1045,7 +1054,8 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
             if first is None or last is None:
                 pos = extent(children)
             else:
-                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
+                                 last[6]))
             return _R(build(builder, pos, [c.v if type(c) is _R else c for c in children]), pos)
         return reduce_whole
 
@@ -1055,7 +1065,8 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
             if first is None or last is None:
                 pos = extent(children)
             else:
-                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
+                                 last[6]))
             return _R(build(builder, pos, [c.v if type(c) is _R else c
                                            for c in map(children.__getitem__, picks)]), pos)
         return reduce_picks
@@ -1069,7 +1080,8 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
             if first is None or last is None:
                 pos = extent(children)
             else:
-                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
+                                 last[6]))
             items = children[0].v               # the list grows in place
             for i, splice, _nn in rest:
                 c = children[i]
@@ -1116,32 +1128,26 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
 
 
 class _Builder:
-    """The AST node for each grammar rule; ``meta`` is the rule's extent (see :func:`_span`)."""
+    """The AST node for each grammar rule; ``meta`` is the rule's extent, a :class:`Span` (every
+    rule with a builder covers at least one token, so it is never ``None`` here)."""
 
     def __init__(self, path: str, sink: DiagnosticSink):
         self.path = path
         self.sink = sink
         self.failed: list = []       # f-string errors (code, message, span) of this attempt
 
-    def s(self, x) -> Span:
-        if x is None:
-            return Span(self.path, 1, 1, 1, 1)
-        if type(x) is not tuple:
-            x = x.pos                                   # a token
-        return Span(self.path, x[0], x[1], x[3], x[4], x[2], x[5])
-
     # statements
     def start(self, meta, items):
         return [i for i in items if isinstance(i, A.Node)]
 
     def block(self, meta, items):
-        return A.Block(self.s(meta), [i for i in items if isinstance(i, A.Node)])
+        return A.Block(meta, [i for i in items if isinstance(i, A.Node)])
 
     def units_decl(self, meta, items):
-        return A.UnitsDecl(self.s(meta), str(items[0]), self.s(items[0]))
+        return A.UnitsDecl(meta, str(items[0]), items[0].pos)
 
     def units_in(self, meta, items):
-        sp = self.s(meta)
+        sp = meta
         return A.UnitsDecl(sp, "in", Span(sp.file, sp.end_line, sp.end_col - 2, sp.end_line,
                                           sp.end_col, sp.end - 2, sp.end))
 
@@ -1157,14 +1163,14 @@ class _Builder:
         sp = _span(self.path, parts[0])
         last = _span(self.path, parts[-1])
         tsp = Span(sp.file, sp.line, sp.col, last.end_line, last.end_col, sp.start, last.end)
-        return A.Import(self.s(meta), path, tsp, str(alias) if alias else None)
+        return A.Import(meta, path, tsp, str(alias) if alias else None)
 
     def thickness_decl(self, meta, items):
-        return A.ThicknessDecl(self.s(meta), items[1])
+        return A.ThicknessDecl(meta, items[1])
 
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]
-        return A.Import(self.s(meta), _unquote(str(tok)), self.s(tok), str(alias) if alias else None)
+        return A.Import(meta, _unquote(str(tok)), tok.pos, str(alias) if alias else None)
 
     def param_decl(self, meta, items):
         opts = list(items[2:])
@@ -1174,40 +1180,40 @@ class _Builder:
                 self.sink.error("E0107", f"`{o.name}` given twice for param `{items[0]}`",
                                 o.name_span, hint="give each of min, max and step once")
             seen.add(o.name)
-        return A.ParamDecl(self.s(meta), str(items[0]), self.s(items[0]), items[1], opts)
+        return A.ParamDecl(meta, str(items[0]), items[0].pos, items[1], opts)
 
     def param_opt(self, meta, items):
-        return A.ParamOption(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+        return A.ParamOption(meta, str(items[0]), items[0].pos, items[1])
 
     def params(self, meta, items):
         return list(items)
 
     def param(self, meta, items):
-        return A.TemplateParam(self.s(meta), str(items[0]), items[1] if len(items) > 1 else None)
+        return A.TemplateParam(meta, str(items[0]), items[1] if len(items) > 1 else None)
 
     def def_decl(self, meta, items):
         name, params, kind, body = items
-        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+        return A.Def(meta, str(name), name.pos, str(kind), kind.pos,
                      params or [], body)
 
     def def_short(self, meta, items):
         kind, name, params, body = items
-        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+        return A.Def(meta, str(name), name.pos, str(kind), kind.pos,
                      params or [], body)
 
     def struct_decl(self, meta, items):
         kind, name, body = items
-        return A.StructDecl(self.s(meta), str(kind), self.s(kind), str(name), self.s(name), body)
+        return A.StructDecl(meta, str(kind), kind.pos, str(name), name.pos, body)
 
     def assign(self, meta, items):
-        return A.Assign(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+        return A.Assign(meta, str(items[0]), items[0].pos, items[1])
 
     def for_stmt(self, meta, items):
-        return A.For(self.s(meta), str(items[0]), self.s(items[0]), items[1], items[2])
+        return A.For(meta, str(items[0]), items[0].pos, items[1], items[2])
 
     def if_stmt(self, meta, items):
         orelse = items[2] if len(items) > 2 else None
-        return A.If(self.s(meta), items[0], items[1], orelse)
+        return A.If(meta, items[0], items[1], orelse)
 
     elif_stmt = if_stmt
 
@@ -1216,7 +1222,7 @@ class _Builder:
         return x if isinstance(x, A.Block) else A.Block(x.span, [x])
 
     def expr_stmt(self, meta, items):
-        return A.ExprStmt(self.s(meta), items[0])
+        return A.ExprStmt(meta, items[0])
 
     def bare_block(self, meta, items):
         return items[0]
@@ -1224,15 +1230,15 @@ class _Builder:
     # expressions
     def number(self, meta, items):
         v, unit = parse_number(str(items[0]))
-        return A.Num(self.s(meta), v, unit)
+        return A.Num(meta, v, unit)
 
     def string(self, meta, items):
-        return A.Str(self.s(meta), _unquote(str(items[0])))
+        return A.Str(meta, _unquote(str(items[0])))
 
     def fstring(self, meta, items):
         tok = items[0]
         body = _unquote(str(tok)[1:])
-        return A.FStr(self.s(meta), self._fparts(body, tok))
+        return A.FStr(meta, self._fparts(body, tok))
 
     def _fparts(self, body: str, tok: Token) -> list:
         parts: list = []
@@ -1247,7 +1253,7 @@ class _Builder:
             if ch == "{":
                 j = body.find("}", i)
                 if j < 0:
-                    self.failed.append(("E0001", "unclosed `{` in f-string", self.s(tok)))
+                    self.failed.append(("E0001", "unclosed `{` in f-string", tok.pos))
                     return parts
                 inner = body[i + 1:j]
                 fmt = None
@@ -1259,9 +1265,9 @@ class _Builder:
                     expr = _run_lalr(inner.strip(), "expr").v
                 except (UnexpectedToken, UnexpectedCharacters):
                     self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
-                                        self.s(tok)))
+                                        tok.pos))
                     return parts
-                _respan(expr, self.s(tok))
+                _respan(expr, tok.pos)
                 parts.append((expr, fmt))
                 i = j + 1
                 continue
@@ -1272,55 +1278,55 @@ class _Builder:
         return parts
 
     def name(self, meta, items):
-        return A.Name(self.s(meta), str(items[0]))
+        return A.Name(meta, str(items[0]))
 
     def tuple(self, meta, items):
-        return A.TupleLit(self.s(meta), [i for i in items if i is not None])
+        return A.TupleLit(meta, [i for i in items if i is not None])
 
     def list(self, meta, items):
-        return A.ListLit(self.s(meta), [i for i in items if i is not None])
+        return A.ListLit(meta, [i for i in items if i is not None])
 
     def listcomp(self, meta, items):
         elt, var, it, cond = items
-        return A.ListComp(self.s(meta), elt, str(var), self.s(var), it, cond)
+        return A.ListComp(meta, elt, str(var), var.pos, it, cond)
 
     def ternary(self, meta, items):
         then, cond, orelse = items
-        return A.Ternary(self.s(meta), cond, then, orelse)
+        return A.Ternary(meta, cond, then, orelse)
 
     def or_op(self, meta, items):
-        return A.BoolOp(self.s(meta), "or", items[0], items[1])
+        return A.BoolOp(meta, "or", items[0], items[1])
 
     def and_op(self, meta, items):
-        return A.BoolOp(self.s(meta), "and", items[0], items[1])
+        return A.BoolOp(meta, "and", items[0], items[1])
 
     def not_op(self, meta, items):
-        return A.Not(self.s(meta), items[0])
+        return A.Not(meta, items[0])
 
     def compare(self, meta, items):
         operands = items[0::2]
         ops = [str(t) for t in items[1::2]]
-        return A.Compare(self.s(meta), ops, operands)
+        return A.Compare(meta, ops, operands)
 
     def binop(self, meta, items):
-        return A.BinOp(self.s(meta), str(items[1]), items[0], items[2])
+        return A.BinOp(meta, str(items[1]), items[0], items[2])
 
     def pow(self, meta, items):
-        return A.BinOp(self.s(meta), "**", items[0], items[-1])
+        return A.BinOp(meta, "**", items[0], items[-1])
 
     def neg(self, meta, items):
         sign, x = items
         if str(sign) == "+":
             return x
         if isinstance(x, A.Num):
-            return A.Num(self.s(meta), -x.value, x.unit)
-        return A.Neg(self.s(meta), x)
+            return A.Num(meta, -x.value, x.unit)
+        return A.Neg(meta, x)
 
     def call(self, meta, items):
         func, args = items[0], items[1] or []
         pos = [a for a in args if not isinstance(a, A.Keyword)]
         kws = [a for a in args if isinstance(a, A.Keyword)]
-        return A.Call(self.s(meta), func, pos, kws)
+        return A.Call(meta, func, pos, kws)
 
     def args(self, meta, items):
         return list(items)
@@ -1329,13 +1335,13 @@ class _Builder:
         return items[0]
 
     def kwarg(self, meta, items):
-        return A.Keyword(self.s(meta), str(items[0]), items[1])
+        return A.Keyword(meta, str(items[0]), items[1])
 
     def member(self, meta, items):
-        return A.Member(self.s(meta), items[0], str(items[1]), self.s(items[1]))
+        return A.Member(meta, items[0], str(items[1]), items[1].pos)
 
     def index(self, meta, items):
-        return A.Index(self.s(meta), items[0], items[1])
+        return A.Index(meta, items[0], items[1])
 
 
 def _respan(node, span: Span) -> None:
