@@ -57,50 +57,60 @@ _CLOSE = frozenset(("RPAR", "RSQB"))
 _ELSE = frozenset(("ELSE", "ELIF"))
 
 
-def _postlex(tokens: list, complete: bool = True) -> list:
-    """The post-lexer, on the token list (``complete=False``: the lexer stopped at an error
-    after these tokens, so what the streaming post-lexer would still hold back -- a trailing
-    newline or ``thickness`` -- is not passed on):
+def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tuple[list, list]:
+    """The post-lexer, on the lexer's terminal names and spans (:func:`_lex_lists`; ``text`` is
+    what they index), returning the parser's names and spans (``complete=False``: the lexer
+    stopped at an error after these tokens, so what the streaming post-lexer would still hold
+    back -- a trailing newline or ``thickness`` -- is not passed on):
 
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
     - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
-    - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line)."""
-    out = []
-    push = out.append
+    - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
+      ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
+
+    :class:`_PostLex` is the same as Lark's streaming post-lexer (the tests' reference)."""
+    out_t: list = []
+    out_s: list = []
+    push_t, push_s = out_t.append, out_s.append
     depth = 0
-    pending = None          # a newline held back: dropped before else/elif, one per run
+    pending = None          # the span of a newline held back: dropped before else/elif
     prev_type = None        # the type of the last token seen (after retyping)
-    n = len(tokens)
+    prev_span = None
+    n = len(types)
     for k in range(n):
-        tok = tokens[k]
-        t = tok.type
-        if t == "NAME" and tok == "thickness" and (k == 0 or tokens[k - 1].type in _STATEMENT_START):
+        t = types[k]
+        sp = spans[k]
+        if t == "NAME" and text[sp[5]:sp[6]] == "thickness" and (
+                k == 0 or types[k - 1] in _STATEMENT_START):
             if k + 1 == n and not complete:
                 break                          # still held when the lexer failed
-            if k + 1 < n and tokens[k + 1].type in _THICKNESS_NEXT:
-                tok = Token.new_borrow_pos("THICKNESS", str(tok), tok)
+            if k + 1 < n and types[k + 1] in _THICKNESS_NEXT:
                 t = "THICKNESS"
         if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
-            push(Token.new_borrow_pos("_NL", "\n", prev))
-        prev, prev_type = tok, t
+            push_t("_NL")
+            push_s(prev_span)
+        prev_type, prev_span = t, sp
         if t == "_NL":
             if depth == 0 and pending is None:
-                pending = tok
+                pending = sp
             continue
         if pending is not None:
             if t not in _ELSE:
-                push(pending)
+                push_t("_NL")
+                push_s(pending)
             pending = None
         if t in _OPEN:
             depth += 1
         elif t in _CLOSE:
             if depth:
                 depth -= 1
-        push(tok)
+        push_t(t)
+        push_s(sp)
     if pending is not None and complete:
-        push(pending)
-    return out
+        push_t("_NL")
+        push_s(pending)
+    return out_t, out_s
 
 
 class _PostLex:
@@ -527,25 +537,27 @@ def _lark_version() -> str:
     return m.group(1) if m else "?"
 
 
-def _lex(text: str, keep_ignored: bool = False,
-         path: str = "") -> tuple[list, "UnexpectedCharacters | None"]:
+def _lex_lists(text: str, keep_ignored: bool = False,
+               path: str = "") -> tuple[list, list, "UnexpectedCharacters | None"]:
     """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
     same positions), as one loop: at each position the alternation of only the terminals that
     can start with the character there (:meth:`_Tables.regex_for`; the whole alternations
     where there is no entry), since trying two dozen alternatives in turn was half the
-    lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no
-    terminal matched (the tokens then stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
-    parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``).  ``path``: the
-    ``file`` of the tokens' spans."""
+    lexer's time.  Returns the terminal names, their :class:`Span` s (``file`` = ``path``) and
+    the :class:`UnexpectedCharacters` where no terminal matched (the tokens then stop there),
+    else ``None``.  No token object is made: a token's text is ``text[span.start:span.end]``
+    (a str subclass with a ``__dict__`` per token was a third of the lexer's time).
+    ``keep_ignored``: also the whitespace and comment tokens the parser skips (Lark's
+    ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
     tb = _tables()
     by_first, regex_for = tb.by_first, tb.regex_for
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
     plain = tb.plain                # terminals that are neither skipped, multi-line nor retyped
     literal = tb.literal_keywords
     pos, line, line_start, end = 0, 1, 0, len(text)
-    tokens: list = []
-    push = tokens.append
-    new_str = str.__new__
+    types: list = []
+    spans: list = []
+    push_t, push_s = types.append, spans.append
     span = _new_span
     while pos < end:
         ch = text[pos]
@@ -560,24 +572,19 @@ def _lex(text: str, keep_ignored: bool = False,
                 if m:
                     break
             else:
-                return tokens, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
+                return types, spans, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
         type_ = m.lastgroup
         npos = m.end()
         if type_ in plain:
-            tok = new_str(Token, m.group())
-            tok.type = type_
-            tok.pos = span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
-                            npos))
-            push(tok)
+            push_t(type_)
+            push_s(span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
+                         npos)))
             pos = npos
             continue
         if type_ in literal:        # a NAME, perhaps a keyword
-            value = m.group()
-            tok = new_str(Token, value)
-            tok.type = literal[type_].get(value, type_)
-            tok.pos = span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
-                            npos))
-            push(tok)
+            push_t(literal[type_].get(m.group(), type_))
+            push_s(span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
+                         npos)))
             pos = npos
             continue
         value = m.group()
@@ -605,70 +612,143 @@ def _lex(text: str, keep_ignored: bool = False,
                     if km:
                         type_ = km.lastgroup
                         break
-        tok = new_str(Token, value)
-        tok.type = type_
-        tok.pos = span((path, start_line, column, line, npos - line_start + 1, pos, npos))
-        push(tok)
+        push_t(type_)
+        push_s(span((path, start_line, column, line, npos - line_start + 1, pos, npos)))
         pos = npos
-    return tokens, None
+    return types, spans, None
+
+
+def _token(type_: str, span: Span, text: str) -> Token:
+    """The :class:`Token` of a lexed token (for errors, ``aidl fmt`` and the tests): its text
+    is ``text[span.start:span.end]``, but ``"\n"`` for a newline the post-lexer put in at a
+    ``}`` and ``""`` for ``$END``."""
+    if type_ == "$END":
+        value = ""
+    else:
+        value = text[span[5]:span[6]]
+        if type_ == "_NL" and not value.startswith(("\n", "\r")):
+            value = "\n"
+    t = str.__new__(Token, value)
+    t.type = type_
+    t.pos = span
+    return t
+
+
+def _lex(text: str, keep_ignored: bool = False,
+         path: str = "") -> tuple[list, "UnexpectedCharacters | None"]:
+    """:func:`_lex_lists` as :class:`Token` s (``aidl fmt``; the tests compare them with
+    Lark's)."""
+    types, spans, error = _lex_lists(text, keep_ignored, path)
+    return [_token(t, sp, text) for t, sp in zip(types, spans)], error
+
+
+def _tokens(text: str, path: str = "") -> tuple[list, "UnexpectedCharacters | None"]:
+    """The parser's tokens, lexed and post-lexed, as :class:`Token` s (what Lark's
+    ``Lark.lex`` gives with the post-lexer; for the tests)."""
+    types, spans, error = _lex_lists(text, False, path)
+    types, spans = _postlex(types, spans, text, error is None)
+    return [_token(t, sp, text) for t, sp in zip(types, spans)], error
 
 
 def _run_lalr(text: str, start: str):
-    """Lex ``text`` (:func:`_lex`, :func:`_postlex`) and run the LALR(1) table over the tokens
-    with the AST callbacks: the loop of Lark's ``ParserState.feed_token`` without its per-step
-    assertions and rule-object look-ups.  Raises :class:`UnexpectedToken` /
-    :class:`UnexpectedCharacters` (a lexer error only once the parser has taken every token
-    before it, as a streaming lexer would)."""
+    """Lex ``text`` (:func:`_lex_lists`, :func:`_postlex`) and run the LALR(1) table over the
+    tokens with the AST callbacks: the loop of Lark's ``ParserState.feed_token`` without its
+    per-step assertions and rule-object look-ups.  Returns the start symbol's value.  Raises
+    :class:`UnexpectedToken` / :class:`UnexpectedCharacters` (a lexer error only once the
+    parser has taken every token before it, as a streaming lexer would).
+
+    Three stacks: states, values (a token's value is its :class:`Span`; the builders read its
+    text from ``builder.text``) and extents (the span each value covers, ``None`` for a
+    reduction that covers no token), so no wrapper object is made per reduction."""
     tb = _tables()
     states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
     builder = _STATE.builder
-    raw, lex_error = _lex(text, False, builder.path)
-    tokens = _postlex(raw, lex_error is None)
-    state = start_states[start]
-    state_stack = [state]
-    value_stack: list = []
-    push_state, push_value = state_stack.append, value_stack.append
-    units = tb.units
-    end_state = end_states[start]
-    if lex_error is None:
-        last = tokens[-1] if tokens else None
-        tokens.append(Token.new_borrow_pos("$END", "", last) if last is not None
-                      else Token("$END", "", 0, 1, 1, 1, 1, 0, builder.path))
-    for token in tokens:
-        ttype = token.type
-        while True:
-            try:
-                act = states[state][ttype]
-            except KeyError:
-                # the accepting state has no actions: with the input used up, the parse is done
-                if ttype == "$END" and state == end_state:
-                    return value_stack[-1]
-                raise UnexpectedToken(token, _expected(states[state]))
-            if act >= 0:
-                push_state(act)
-                push_value(token)
-                state = act
-                break
-            size, origin, cb = reductions[~act]
-            if size is None:                 # unit rules: same value, new state
-                key = (state_stack[-2], state, ttype)
-                top = units.get(key)
-                if top is None:
-                    top = units[key] = _unit_chain(tb, state_stack[-2], origin, ttype)
-                state_stack[-1] = state = top
-                continue
-            if size:
-                children = value_stack[-size:]
-                del state_stack[-size:]
-                del value_stack[-size:]
-            else:
-                children = []
-            push_value(cb(children, builder))
-            state = states[state_stack[-1]][origin]
-            push_state(state)
-    if lex_error is not None:
-        raise lex_error
-    raise UnexpectedToken(tokens[-1], set())    # $END shifted: no LALR table of Lark's does
+    outer = builder.text
+    builder.text = text
+    try:
+        types, spans, lex_error = _lex_lists(text, False, builder.path)
+        types, spans = _postlex(types, spans, text, lex_error is None)
+        if lex_error is None:
+            types.append("$END")
+            spans.append(spans[-1] if spans else Span(builder.path, 1, 1, 1, 1, 0, 0))
+        state = start_states[start]
+        state_stack = [state]
+        value_stack: list = []
+        pos_stack: list = []
+        push_state, push_value, push_pos = state_stack.append, value_stack.append, pos_stack.append
+        pop_state = state_stack.pop
+        units = tb.units
+        end_state = end_states[start]
+        span = _new_span
+        k = -1
+        for ttype in types:
+            k += 1
+            while True:
+                try:
+                    act = states[state][ttype]
+                except KeyError:
+                    # the accepting state has no actions: with the input used up, it is done
+                    if ttype == "$END" and state == end_state:
+                        return value_stack[-1]
+                    raise UnexpectedToken(_token(ttype, spans[k], text),
+                                          _expected(states[state]))
+                if act >= 0:
+                    push_state(act)
+                    sp = spans[k]
+                    push_value(sp)
+                    push_pos(sp)
+                    state = act
+                    break
+                size, origin, cb = reductions[~act]
+                if size is None:                 # unit rules: same value, new state
+                    key = (state_stack[-2], state, ttype)
+                    top = units.get(key)
+                    if top is None:
+                        top = units[key] = _unit_chain(tb, state_stack[-2], origin, ttype)
+                    state_stack[-1] = state = top
+                    continue
+                if size == 1:                    # the extent stays the child's
+                    value_stack[-1] = cb(value_stack[-1], pos_stack[-1], builder)
+                    pop_state()
+                    state = states[state_stack[-1]][origin]
+                    push_state(state)
+                    continue
+                if size:
+                    children = value_stack[-size:]
+                    first, last = pos_stack[-size], pos_stack[-1]
+                    if first is None or last is None:
+                        pos = _extent(pos_stack[-size:])
+                    else:
+                        pos = span((first[0], first[1], first[2], last[3], last[4], first[5],
+                                    last[6]))
+                    del state_stack[-size:]
+                    del value_stack[-size:]
+                    del pos_stack[-size:]
+                else:
+                    children = []
+                    pos = None
+                push_value(cb(children, pos, builder))
+                push_pos(pos)
+                state = states[state_stack[-1]][origin]
+                push_state(state)
+        if lex_error is not None:
+            raise lex_error
+        # $END shifted: no LALR table of Lark's does
+        raise UnexpectedToken(_token(types[-1], spans[-1], text), set())
+    finally:
+        builder.text = outer
+
+
+def _extent(poses: list):
+    """The span from the first to the last extent that is not ``None`` (``None`` if all are)."""
+    for first in poses:
+        if first is not None:
+            for last in reversed(poses):
+                if last is not None:
+                    break
+            return first if first is last else _new_span(
+                (first[0], first[1], first[2], last[3], last[4], first[5], last[6]))
+    return None
 
 
 def _unit_chain(tb: _Tables, below: int, origin: str, ttype: str) -> int:
@@ -886,7 +966,7 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         for _attempt in range(MAX_ERRORS + 1):
             builder.failed.clear()
             try:
-                stmts = _run_lalr(text, "start").v
+                stmts = _run_lalr(text, "start")
                 break
             except (UnexpectedToken, UnexpectedCharacters) as e:
                 pos = _error_pos(e, text)
@@ -915,7 +995,7 @@ def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     try:
-        node = _run_lalr(text, "expr").v
+        node = _run_lalr(text, "expr")
     finally:
         _STATE.builder = prev
     if builder.failed:
@@ -970,16 +1050,6 @@ class _BuildError(ParseError):
     """A reduction could not build its node (an f-string whose expression does not parse)."""
 
 
-def _span(path: str, x) -> Span:
-    """The :class:`Span` of a token, of a reduction's extent (a span already) or, for ``None``
-    (a reduction that covers no token), the program's start."""
-    if x is None:
-        return Span(path, 1, 1, 1, 1)
-    if type(x) is Token:
-        return x.pos
-    return x
-
-
 def parse_number(text: str) -> tuple[float, str | None]:
     m = UNIT_RE.match(text.strip())
     if not m:
@@ -988,18 +1058,6 @@ def parse_number(text: str) -> tuple[float, str | None]:
     if unit == "°":
         unit = "deg"
     return float(m.group("num")), unit
-
-
-class _R:
-    """A reduction's value with the extent of the text it covers (``pos``: line, column,
-    offset of its first token, then of the end of its last token; ``None`` when it covers no
-    token), as Lark's ``propagate_positions`` computes it for a tree node's container."""
-
-    __slots__ = ("v", "pos")
-
-    def __init__(self, v, pos):
-        self.v = v
-        self.pos = pos
 
 
 _STATE = threading.local()       # .builder: the _Builder of the parse running in this thread
@@ -1011,95 +1069,61 @@ def _no_builder(builder, meta, items):
 
 def _make_callback(include, tail, expand1, build, size: int, specialise: bool = True):
     """The reduction callback of one rule (see :func:`_tables_data` for ``include`` and
-    ``tail``), called as ``cb(children, builder)``: the node's extent runs from the first to
-    the last child that has one (tokens and reductions both carry ``pos``).  The common shapes
-    get their own short callback (one child; every child kept in order; a child-free
-    ``_rule``); they compute exactly what the general one does (tests/test_parse_table.py)."""
+    ``tail``): ``cb(child, pos, builder)`` for a rule of one symbol, else
+    ``cb(children, pos, builder)`` (``children``: the values, a fresh list the callback may
+    keep; ``pos``: the rule's extent).  It returns the rule's value: the builder's node, the
+    list of items of a ``_rule`` (spliced into its parent by the parent's ``include``), or the
+    one item of a ``?rule``.  The common shapes get their own short callback (one child;
+    every child kept in order; some tokens dropped; a left-recursive list growing in place);
+    they compute exactly what the general one does (tests/test_parse_table.py)."""
     simple = not tail and all(not splice and not nn for _i, splice, nn in include)
     picks = tuple(i for i, _s, _n in include)
     whole = simple and picks == tuple(range(size))        # every child, in order
 
     if specialise and size == 1 and simple and not expand1:
         if not picks:                                     # `_sep: _NL`: nothing kept
-            def reduce_none(children, builder):
-                return _R([], children[0].pos)
+            def reduce_none(child, pos, builder):
+                return []
             return reduce_none
         if build is None:                                 # `_stmt: assign`: spliced
-            def reduce_splice1(children, builder):
-                c = children[0]
-                return _R([c.v if type(c) is _R else c], c.pos)
+            def reduce_splice1(child, pos, builder):
+                return [child]
             return reduce_splice1
 
-        def reduce1(children, builder):
-            c = children[0]
-            pos = c.pos
-            return _R(build(builder, pos, [c.v if type(c) is _R else c]), pos)
+        def reduce1(child, pos, builder):
+            return build(builder, pos, [child])
         return reduce1
 
-    def extent(children):
-        for c in children:
-            first = c.pos
-            if first is not None:
-                for c in reversed(children):
-                    last = c.pos
-                    if last is not None:
-                        break
-                return first if first is last else _new_span(
-                    (first[0], first[1], first[2], last[3], last[4], first[5], last[6]))
-        return None
-
     if specialise and whole and not expand1 and build is not None and size > 1:
-        def reduce_whole(children, builder):
-            first, last = children[0].pos, children[-1].pos
-            if first is None or last is None:
-                pos = extent(children)
-            else:
-                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
-                                 last[6]))
-            return _R(build(builder, pos, [c.v if type(c) is _R else c for c in children]), pos)
+        def reduce_whole(children, pos, builder):
+            return build(builder, pos, children)
         return reduce_whole
 
     if specialise and simple and not whole and not expand1 and build is not None and size > 1:
-        def reduce_picks(children, builder):    # `assign: NAME "=" expr`: some tokens dropped
-            first, last = children[0].pos, children[-1].pos
-            if first is None or last is None:
-                pos = extent(children)
-            else:
-                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
-                                 last[6]))
-            return _R(build(builder, pos, [c.v if type(c) is _R else c
-                                           for c in map(children.__getitem__, picks)]), pos)
+        def reduce_picks(children, pos, builder):   # `assign: NAME "=" expr`: tokens dropped
+            return build(builder, pos, [children[i] for i in picks])
         return reduce_picks
 
     if (specialise and not tail and not expand1 and build is None and include
-            and include[0] == (0, True, 0) and all(not nn for _i, _s, nn in include)):
+            and include[0] == (0, True, 0) and all(not nn for _i, _s, nn in include)
+            and size > 1):
         rest = include[1:]
 
-        def reduce_grow(children, builder):     # `__block_star: __block_star _sep _stmt`
-            first, last = children[0].pos, children[-1].pos
-            if first is None or last is None:
-                pos = extent(children)
-            else:
-                pos = _new_span((first[0], first[1], first[2], last[3], last[4], first[5],
-                                 last[6]))
-            items = children[0].v               # the list grows in place
+        def reduce_grow(children, pos, builder):    # `__block_star: __block_star _sep _stmt`
+            items = children[0]                     # the list grows in place
             for i, splice, _nn in rest:
-                c = children[i]
                 if splice:
-                    items += c.v
-                elif type(c) is _R:
-                    items.append(c.v)
+                    items += children[i]
                 else:
-                    items.append(c)
-            return _R(items, pos)
+                    items.append(children[i])
+            return items
         return reduce_grow
 
-    def reduce(children, builder):
-        pos = extent(children)
+    def reduce(children, pos, builder):
         if whole:
-            items = [c.v if type(c) is _R else c for c in children]
+            items = list(children)
         elif simple:
-            items = [c.v if type(c) is _R else c for c in map(children.__getitem__, picks)]
+            items = [children[i] for i in picks]
         else:
             items = []
             for i, splice, nn in include:
@@ -1108,33 +1132,41 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
                 c = children[i]
                 if splice:
                     if i == 0 and not items:
-                        items = c.v         # a left-recursive list grows in place (no copy:
+                        items = c           # a left-recursive list grows in place (no copy:
                     else:                   # the child's list is consumed here)
-                        items += c.v
-                elif type(c) is _R:
-                    items.append(c.v)
+                        items += c
                 else:
                     items.append(c)
             if tail:
                 items += [None] * tail
         if expand1 and len(items) == 1:
-            if type(children[include[0][0]]) is not _R:
-                return children[include[0][0]]      # a token passed through as it is
-            return _R(items[0], pos)
+            return items[0]                 # a `?rule` passes its one item through
         if build is None:
-            return _R(items, pos)                   # a `_rule`: its items are spliced
-        return _R(build(builder, pos, items), pos)
+            return items                    # a `_rule`: its items are spliced
+        return build(builder, pos, items)
+
+    if size == 1:
+        def reduce_one(child, pos, builder):
+            return reduce([child], pos, builder)
+        return reduce_one
     return reduce
 
 
 class _Builder:
     """The AST node for each grammar rule; ``meta`` is the rule's extent, a :class:`Span` (every
-    rule with a builder covers at least one token, so it is never ``None`` here)."""
+    rule with a builder covers at least one token, so it is never ``None`` here).  A token
+    among ``items`` is its :class:`Span`; its text is ``self.text[span.start:span.end]``
+    (:meth:`tx`)."""
 
     def __init__(self, path: str, sink: DiagnosticSink):
         self.path = path
         self.sink = sink
+        self.text = ""               # the text being parsed (set by _run_lalr)
         self.failed: list = []       # f-string errors (code, message, span) of this attempt
+
+    def tx(self, token: Span) -> str:
+        """A token's text."""
+        return self.text[token.start:token.end]
 
     # statements
     def start(self, meta, items):
@@ -1144,7 +1176,7 @@ class _Builder:
         return A.Block(meta, [i for i in items if isinstance(i, A.Node)])
 
     def units_decl(self, meta, items):
-        return A.UnitsDecl(meta, str(items[0]), items[0].pos)
+        return A.UnitsDecl(meta, self.tx(items[0]), items[0])
 
     def units_in(self, meta, items):
         sp = meta
@@ -1155,61 +1187,61 @@ class _Builder:
         # `import stdlib.shapes` / `import std.shapes` is `import "std/shapes.aidl"`;
         # `import parts.gears` is `import "parts/gears.aidl"` (relative to this file)
         *parts, alias = items
-        names = [str(t) for t in parts]
+        names = [self.tx(t) for t in parts]
         if names[0] in ("std", "stdlib") and len(names) > 1:
             path = "std/" + "/".join(names[1:]) + ".aidl"
         else:
             path = "/".join(names) + ".aidl"
-        sp = _span(self.path, parts[0])
-        last = _span(self.path, parts[-1])
+        sp, last = parts[0], parts[-1]
         tsp = Span(sp.file, sp.line, sp.col, last.end_line, last.end_col, sp.start, last.end)
-        return A.Import(meta, path, tsp, str(alias) if alias else None)
+        return A.Import(meta, path, tsp, self.tx(alias) if alias else None)
 
     def thickness_decl(self, meta, items):
         return A.ThicknessDecl(meta, items[1])
 
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]
-        return A.Import(meta, _unquote(str(tok)), tok.pos, str(alias) if alias else None)
+        return A.Import(meta, _unquote(self.tx(tok)), tok, self.tx(alias) if alias else None)
 
     def param_decl(self, meta, items):
         opts = list(items[2:])
         seen = set()
         for o in opts:
             if o.name in seen:
-                self.sink.error("E0107", f"`{o.name}` given twice for param `{items[0]}`",
+                self.sink.error("E0107", f"`{o.name}` given twice for param `{self.tx(items[0])}`",
                                 o.name_span, hint="give each of min, max and step once")
             seen.add(o.name)
-        return A.ParamDecl(meta, str(items[0]), items[0].pos, items[1], opts)
+        return A.ParamDecl(meta, self.tx(items[0]), items[0], items[1], opts)
 
     def param_opt(self, meta, items):
-        return A.ParamOption(meta, str(items[0]), items[0].pos, items[1])
+        return A.ParamOption(meta, self.tx(items[0]), items[0], items[1])
 
     def params(self, meta, items):
         return list(items)
 
     def param(self, meta, items):
-        return A.TemplateParam(meta, str(items[0]), items[1] if len(items) > 1 else None)
+        return A.TemplateParam(meta, self.tx(items[0]), items[1] if len(items) > 1 else None)
 
     def def_decl(self, meta, items):
         name, params, kind, body = items
-        return A.Def(meta, str(name), name.pos, str(kind), kind.pos,
-                     params or [], body)
+        return A.Def(meta, self.tx(name), name, self.tx(kind), kind, params or [], body)
 
     def def_short(self, meta, items):
         kind, name, params, body = items
-        return A.Def(meta, str(name), name.pos, str(kind), kind.pos,
-                     params or [], body)
+        return A.Def(meta, self.tx(name), name, self.tx(kind), kind, params or [], body)
 
     def struct_decl(self, meta, items):
         kind, name, body = items
-        return A.StructDecl(meta, str(kind), kind.pos, str(name), name.pos, body)
+        tx = self.text
+        return A.StructDecl(meta, tx[kind.start:kind.end], kind, tx[name.start:name.end], name,
+                            body)
 
     def assign(self, meta, items):
-        return A.Assign(meta, str(items[0]), items[0].pos, items[1])
+        name = items[0]
+        return A.Assign(meta, self.text[name.start:name.end], name, items[1])
 
     def for_stmt(self, meta, items):
-        return A.For(meta, str(items[0]), items[0].pos, items[1], items[2])
+        return A.For(meta, self.tx(items[0]), items[0], items[1], items[2])
 
     def if_stmt(self, meta, items):
         orelse = items[2] if len(items) > 2 else None
@@ -1229,18 +1261,19 @@ class _Builder:
 
     # expressions
     def number(self, meta, items):
-        v, unit = parse_number(str(items[0]))
+        tok = items[0]
+        v, unit = parse_number(self.text[tok.start:tok.end])
         return A.Num(meta, v, unit)
 
     def string(self, meta, items):
-        return A.Str(meta, _unquote(str(items[0])))
+        return A.Str(meta, _unquote(self.tx(items[0])))
 
     def fstring(self, meta, items):
         tok = items[0]
-        body = _unquote(str(tok)[1:])
+        body = _unquote(self.tx(tok)[1:])
         return A.FStr(meta, self._fparts(body, tok))
 
-    def _fparts(self, body: str, tok: Token) -> list:
+    def _fparts(self, body: str, tok: Span) -> list:
         parts: list = []
         i = 0
         buf = ""
@@ -1253,7 +1286,7 @@ class _Builder:
             if ch == "{":
                 j = body.find("}", i)
                 if j < 0:
-                    self.failed.append(("E0001", "unclosed `{` in f-string", tok.pos))
+                    self.failed.append(("E0001", "unclosed `{` in f-string", tok))
                     return parts
                 inner = body[i + 1:j]
                 fmt = None
@@ -1262,12 +1295,12 @@ class _Builder:
                 if buf:
                     parts.append(buf); buf = ""
                 try:
-                    expr = _run_lalr(inner.strip(), "expr").v
+                    expr = _run_lalr(inner.strip(), "expr")
                 except (UnexpectedToken, UnexpectedCharacters):
                     self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
-                                        tok.pos))
+                                        tok))
                     return parts
-                _respan(expr, tok.pos)
+                _respan(expr, tok)
                 parts.append((expr, fmt))
                 i = j + 1
                 continue
@@ -1278,7 +1311,8 @@ class _Builder:
         return parts
 
     def name(self, meta, items):
-        return A.Name(meta, str(items[0]))
+        tok = items[0]
+        return A.Name(meta, self.text[tok.start:tok.end])
 
     def tuple(self, meta, items):
         return A.TupleLit(meta, [i for i in items if i is not None])
@@ -1288,7 +1322,7 @@ class _Builder:
 
     def listcomp(self, meta, items):
         elt, var, it, cond = items
-        return A.ListComp(meta, elt, str(var), var.pos, it, cond)
+        return A.ListComp(meta, elt, self.tx(var), var, it, cond)
 
     def ternary(self, meta, items):
         then, cond, orelse = items
@@ -1305,18 +1339,19 @@ class _Builder:
 
     def compare(self, meta, items):
         operands = items[0::2]
-        ops = [str(t) for t in items[1::2]]
+        ops = [self.tx(t) for t in items[1::2]]
         return A.Compare(meta, ops, operands)
 
     def binop(self, meta, items):
-        return A.BinOp(meta, str(items[1]), items[0], items[2])
+        op = items[1]
+        return A.BinOp(meta, self.text[op.start:op.end], items[0], items[2])
 
     def pow(self, meta, items):
         return A.BinOp(meta, "**", items[0], items[-1])
 
     def neg(self, meta, items):
         sign, x = items
-        if str(sign) == "+":
+        if self.tx(sign) == "+":
             return x
         if isinstance(x, A.Num):
             return A.Num(meta, -x.value, x.unit)
@@ -1335,10 +1370,12 @@ class _Builder:
         return items[0]
 
     def kwarg(self, meta, items):
-        return A.Keyword(meta, str(items[0]), items[1])
+        tok = items[0]
+        return A.Keyword(meta, self.text[tok.start:tok.end], items[1])
 
     def member(self, meta, items):
-        return A.Member(meta, items[0], str(items[1]), items[1].pos)
+        tok = items[1]
+        return A.Member(meta, items[0], self.text[tok.start:tok.end], tok)
 
     def index(self, meta, items):
         return A.Index(meta, items[0], items[1])

@@ -59,10 +59,10 @@ def test_same_tokens_as_larks_lexer(lark_parser, i):
     text = TEXTS[i]
     theirs = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
               for t in lark_parser.lex(text, dont_ignore=False)]
-    tokens, error = P._lex(text)
+    tokens, error = P._tokens(text)
     assert error is None
     ours = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
-            for t in P._postlex(tokens)]
+            for t in tokens]
     assert ours == theirs
 
 
@@ -102,10 +102,10 @@ SNIPPETS = [
 @pytest.mark.parametrize("text", SNIPPETS)
 def test_post_lexer_rules_as_lark_runs_them(lark_parser, text):
     assert _outcome_ours(text) == _outcome_lark(lark_parser, text)
-    tokens, error = P._lex(text)
+    tokens, error = P._tokens(text)
     if error is None:
         theirs = [(t.type, str(t), t.start_pos) for t in lark_parser.lex(text)]
-        assert [(t.type, str(t), t.start_pos) for t in P._postlex(tokens)] == theirs
+        assert [(t.type, str(t), t.start_pos) for t in tokens] == theirs
 
 
 def test_every_bundled_program_parses_as_lark_parses_it(lark_parser):
