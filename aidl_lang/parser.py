@@ -554,6 +554,7 @@ def _lex_lists(text: str, keep_ignored: bool = False,
     ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
     plain = tb.plain                # terminals that are neither skipped, multi-line nor retyped
     literal = tb.literal_keywords
+    skip = frozenset() if keep_ignored else ignore - newline
     pos, line, line_start, end = 0, 1, 0, len(text)
     types: list = []
     spans: list = []
@@ -579,6 +580,9 @@ def _lex_lists(text: str, keep_ignored: bool = False,
             push_t(type_)
             push_s(span((path, line, pos - line_start + 1, line, npos - line_start + 1, pos,
                          npos)))
+            pos = npos
+            continue
+        if type_ in skip:           # single-line whitespace or comment: no text needed
             pos = npos
             continue
         if type_ in literal:        # a NAME, perhaps a keyword
@@ -676,13 +680,12 @@ def _run_lalr(text: str, start: str):
         value_stack: list = []
         pos_stack: list = []
         push_state, push_value, push_pos = state_stack.append, value_stack.append, pos_stack.append
-        pop_state = state_stack.pop
         units = tb.units
         end_state = end_states[start]
         span = _new_span
         k = -1
         for ttype in types:
-            k += 1
+            k += 1                               # spans[k] is the token's span
             while True:
                 try:
                     act = states[state][ttype]
@@ -709,9 +712,7 @@ def _run_lalr(text: str, start: str):
                     continue
                 if size == 1:                    # the extent stays the child's
                     value_stack[-1] = cb(value_stack[-1], pos_stack[-1], builder)
-                    pop_state()
-                    state = states[state_stack[-1]][origin]
-                    push_state(state)
+                    state_stack[-1] = state = states[state_stack[-2]][origin]
                     continue
                 if size:
                     children = value_stack[-size:]
@@ -1079,6 +1080,12 @@ def _make_callback(include, tail, expand1, build, size: int, specialise: bool = 
     simple = not tail and all(not splice and not nn for _i, splice, nn in include)
     picks = tuple(i for i, _s, _n in include)
     whole = simple and picks == tuple(range(size))        # every child, in order
+
+    if (specialise and size == 1 and build is None and not expand1 and not tail
+            and include == ((0, True, 0),)):
+        def reduce_pass(child, pos, builder):            # `__x: _sep`: the list as it is
+            return child
+        return reduce_pass
 
     if specialise and size == 1 and simple and not expand1:
         if not picks:                                     # `_sep: _NL`: nothing kept
