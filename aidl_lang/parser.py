@@ -20,6 +20,7 @@ from __future__ import annotations
 import re
 import threading
 from functools import partial
+from itertools import accumulate
 from pathlib import Path
 
 from . import ast as A
@@ -858,6 +859,7 @@ _SPECIAL = frozenset("\"'#/\n")
 _PLAIN = re.compile(r"[^\"'#/\n]+")
 _BRACKETS = re.compile(r"[()\[\]]")
 _ANY_BRACKET = re.compile(r"[()\[\]{}]")
+_BRACKET_STEP = {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}
 _KW = {"if", "else", "and", "or", "not", "for", "in"}
 _STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
 
@@ -945,20 +947,23 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         source = source.replace("\x00", " ")
     slashes: list = []
     text = mask_comments(source, slashes)
-    depth = 0
-    for m in _ANY_BRACKET.finditer(text):
-        if m.group() in "([{":
-            depth += 1
-            if depth > MAX_NESTING:
-                i = m.start()
-                line = text.count("\n", 0, i) + 1
-                col = i - text.rfind("\n", 0, i)
-                sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
-                           Span(path, line, col, line, col + 1, i, i + 1),
-                           "split the expression into named constants")
-                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
-        else:
-            depth -= 1
+    # the deepest nesting, in C (a running sum of +1/-1); the loop below only finds where
+    if max(accumulate(map(_BRACKET_STEP.__getitem__, _ANY_BRACKET.findall(text))),
+           default=0) > MAX_NESTING:
+        depth = 0
+        for m in _ANY_BRACKET.finditer(text):
+            if m.group() in "([{":
+                depth += 1
+                if depth > MAX_NESTING:
+                    i = m.start()
+                    line = text.count("\n", 0, i) + 1
+                    col = i - text.rfind("\n", 0, i)
+                    sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
+                               Span(path, line, col, line, col + 1, i, i + 1),
+                               "split the expression into named constants")
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+            else:
+                depth -= 1
     _tables()
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder

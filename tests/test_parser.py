@@ -3,6 +3,8 @@ errors are reported (with recovery) at the right place."""
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from aidl_lang import ast as A
 from aidl_lang.diagnostics import DiagnosticSink
@@ -523,3 +525,25 @@ def test_nesting_limit():
     ok = "x = " + "(" * 60 + "1" + ")" * 60 + "\n"
     prog, sink = parse_src(ok)
     assert not sink.items and num(prog.stmts[0].value) == (1.0, None)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.integers(50, 70),
+       st.lists(st.sampled_from(["(", ")", "[", "]", "{", "}", "((((", "))))", "x"]), max_size=30))
+def test_nesting_limit_is_the_deepest_running_depth(opens, pieces):
+    """E0003 is reported exactly when some prefix opens more than 64 brackets it has not
+    closed (closers below zero count too), at that 65th bracket: the parser's quick
+    running-sum test and its locating loop agree with a plain count."""
+    text = "x = " + "[" * opens + "".join(pieces)
+    depth, where = 0, None
+    for i, ch in enumerate(text):
+        depth += 1 if ch in "([{" else -1 if ch in ")]}" else 0
+        if depth > 64:
+            where = i
+            break
+    _, sink = parse_src(text)
+    e3 = [d for d in sink.items if d.code == "E0003"]
+    if where is None:
+        assert not e3
+    else:
+        assert len(e3) == 1 and e3[0].span.start == where
