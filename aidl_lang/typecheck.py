@@ -116,6 +116,7 @@ class Checker:
         self.path = path
         self.import_failed = False     # names may come from an import that failed: no E0101/E0103
         self.templates: dict[str, A.Def] = {}
+        self.bound: set = set()        # (name, arguments, keyword names) of registry calls that bind
 
     # ------------------------------------------------------------------ scopes
     def block_names(self, stmts) -> set:
@@ -215,7 +216,18 @@ class Checker:
     def expr(self, e, scope: _Scope) -> None:
         if e is None:
             return
-        if isinstance(e, A.Name):
+        t = type(e)
+        if t is A.Num or t is A.Str:       # leaves (the most common nodes with names)
+            return
+        if t is A.Name:
+            n = e.id                        # name()'s common case, inline
+            s = scope
+            while s is not None:
+                if n in s.names:
+                    return
+                s = s.parent
+            self.name(e, scope)
+        elif isinstance(e, A.Name):
             self.name(e, scope)
         elif isinstance(e, A.Call):
             self.call(e, scope)
@@ -288,8 +300,12 @@ class Checker:
                 d.fix = None          # not a typo: renaming it to the nearest name is no fix
             return
         kwnames = [k.name for k in e.kwargs]
+        key = (n, len(e.args), tuple(kwnames))
+        if key in self.bound:               # this registry call shape binds: checked once
+            return
         variant, reason = choose_variant(entry, len(e.args), kwnames)
         if variant is not None:
+            self.bound.add(key)
             return
         all_names = accepted_args(entry)
         bad = next((k for k in e.kwargs if k.name not in all_names), None)

@@ -205,6 +205,21 @@ def test_E0104_for_the_documented_example(compile_text):
     assert span4(d) == (2, 9, 2, 29)
 
 
+def test_the_checker_reports_every_bad_call_of_a_shape_and_passes_good_ones():
+    """The checker remembers the call shapes that bind (name, positional count, keyword
+    names); a shape that does not bind is reported at each call, names at every use."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.parser import parse
+    from aidl_lang.typecheck import check
+    src = ("solid s {\n    a = Circle((0, 0), 5)\n    b = Circle((1, 0), 5)\n"
+           "    c = Circle((0, 0), 5, 7)\n    d = Circle((2, 0), 5, 7)\n"
+           "    e = Circle(q, 2)\n    f = Circle(q, 3)\n}\n")
+    sink = DiagnosticSink()
+    check(parse(src, "t.aidl", sink), sink)
+    got = [(d.code, d.span.line) for d in sink.items]
+    assert got == [("E0104", 4), ("E0104", 5), ("E0101", 6), ("E0101", 7)]
+
+
 @pytest.mark.xfail(strict=True, reason="the constraint builder's error points at the whole call "
                    "and names the internal parameter `a` instead of the argument `wheel`")
 def test_E0108_points_at_the_wrong_argument(compile_text):
