@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from .bbox import BBTerm
-from .expr import Expr, evaluate, func, hypot, var
+from .expr import Expr, Lin, _new, evaluate, func, hypot, var
 from .model import Equation
 from .primitives import _pv, member
 from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
@@ -49,7 +49,7 @@ def _direction(ctx, v, name: str):
     s, e = _line(ctx, v, name)
     try:
         dx, dy = e.x - s.x, e.y - s.y
-        n = math.hypot(_val(ctx, dx), _val(ctx, dy))
+        n = math.hypot(ctx.value_of(dx), ctx.value_of(dy))
     except (TypeError, ValueError):
         return s, e, None, None
     if not n > 1e-9:
@@ -113,6 +113,19 @@ def coincident(ctx, a, b, **_):
 
 
 def _hv(ctx, a, b, axis: str, name: str):
+    if b is None and type(a) is GeomRef:
+        g, frame = a.geom, ctx.struct
+        ps, pe = g.points.get("start"), g.points.get("end")
+        if (g.kind == "Line" or g.kind == "Slot") and ps.owner is frame and pe.owner is frame:
+            # the line's own end points: s.y - e.y (s.x - e.x) as sub() makes it, directly
+            if axis == "h":
+                t, k = {ps.iy: 1.0}, pe.iy
+            else:
+                t, k = {ps.ix: 1.0}, pe.ix
+            t[k] = t.get(k, 0.0) + -1.0
+            d = _new(Lin)
+            d.terms, d.const = t, 0.0
+            return [Equation(d)]
     if b is None:
         s, e = _line(ctx, a, "a")
     else:
@@ -366,7 +379,16 @@ def _target(v, name):
 
 
 def _bb(ctx, v, side, name):
-    return BBTerm(_target(v, name), side, ctx.struct)
+    t = type(v)
+    if t is StructRef:
+        target = v.struct
+    elif t is GeomRef:
+        target = v.geom
+    else:
+        target = _target(v, name)
+    b = _new(BBTerm)                 # BBTerm(target, side, ctx.struct) without __init__
+    b.target, b.side, b.frame = target, side, ctx.struct
+    return b
 
 
 def above(ctx, a, b, gap=None, **_):

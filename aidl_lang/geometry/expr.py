@@ -115,11 +115,15 @@ _new = object.__new__
 
 
 def add(a, b) -> Expr:
-    if not isinstance(a, Expr):
-        a = Lin({}, float(a))
-    if not isinstance(b, Expr):
-        b = Lin({}, float(b))
-    if isinstance(a, Lin) and isinstance(b, Lin):
+    ta = type(a)                 # type tests first: isinstance only for non-expressions
+    if ta is not Lin and ta is not Nl and not isinstance(a, Expr):
+        a = _lin({}, float(a))
+        ta = Lin
+    tb = type(b)
+    if tb is not Lin and tb is not Nl and not isinstance(b, Expr):
+        b = _lin({}, float(b))
+        tb = Lin
+    if ta is Lin and tb is Lin:
         bt = b.terms
         if not bt:
             return _lin(dict(a.terms), a.const + b.const)
@@ -128,7 +132,10 @@ def add(a, b) -> Expr:
         for k, v in bt.items():
             t[k] = get(k, 0.0) + v
         return _lin(t, a.const + b.const)
-    return Nl("add", (a, b))
+    e = _new(Nl)                 # Nl("add", (a, b)) without __init__
+    e.op = "add"
+    e.args = (a, b)
+    return e
 
 
 def sub(a: Expr, b) -> Expr:
@@ -149,26 +156,32 @@ def sub(a: Expr, b) -> Expr:
 
 
 def mul(a, b) -> Expr:
-    if not isinstance(a, Expr):
-        a = Lin({}, float(a))
-    if not isinstance(b, Expr):
-        b = Lin({}, float(b))
-    la, lb = type(a) is Lin, type(b) is Lin
-    ca = a.const if la and not a.terms else None
-    cb = b.const if lb and not b.terms else None
-    if ca is not None and lb:
+    ta = type(a)
+    if ta is not Lin and ta is not Nl and not isinstance(a, Expr):
+        a = _lin({}, float(a))
+        ta = Lin
+    tb = type(b)
+    if tb is not Lin and tb is not Nl and not isinstance(b, Expr):
+        b = _lin({}, float(b))
+        tb = Lin
+    ca = a.const if ta is Lin and not a.terms else None
+    cb = b.const if tb is Lin and not b.terms else None
+    if ca is not None and tb is Lin:
         t = {}
         for k, v in b.terms.items():
             t[k] = v * ca
         return _lin(t, b.const * ca)
-    if cb is not None and la:
+    if cb is not None and ta is Lin:
         t = {}
         for k, v in a.terms.items():
             t[k] = v * cb
         return _lin(t, a.const * cb)
     if ca == 0.0 or cb == 0.0:
-        return const(0.0)
-    return Nl("mul", (a, b))
+        return _lin({}, 0.0)
+    e = _new(Nl)                 # Nl("mul", (a, b)) without __init__
+    e.op = "mul"
+    e.args = (a, b)
+    return e
 
 
 def div(a, b) -> Expr:
@@ -188,6 +201,19 @@ _UNARY = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
 
 def func(op: str, *args) -> Expr:
     """Apply a named function; constant arguments fold to a constant (may raise ValueError)."""
+    for a in args:               # an argument with unknowns: nothing folds (no lifting needed
+        t = type(a)              # when every argument already is an expression)
+        if t is Nl or (t is Lin and a.terms):
+            for b in args:
+                t = type(b)
+                if t is not Lin and t is not Nl and not isinstance(b, Expr):
+                    break
+            else:
+                e = _new(Nl)     # Nl(op, args)
+                e.op = op
+                e.args = args
+                return e
+            break
     args = tuple(map(lift, args))
     consts = list(map(as_const, args))
     if None not in consts:

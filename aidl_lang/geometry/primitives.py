@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import as_const, func, hypot, var
+from .expr import Lin, _new, as_const, func, hypot, var
 from .model import Equation, Geometry
 from .values import ANG, LEN, PV, GeomRef, Q
 
@@ -23,8 +23,8 @@ class PrimitiveError(Exception):
 
 def build(ctx, kind: str, args: dict, span) -> Geometry:
     """Create geometry ``kind`` in ``ctx.struct`` from bound arguments ``args``."""
-    g = Geometry(kind, ctx.struct, span, construction=bool(args.get("construction", False)))
-    fn = globals()["_build_" + kind]
+    g = Geometry(kind, ctx.struct, span, "", {}, {}, {}, {}, bool(args.get("construction", False)))
+    fn = _BUILD.get(kind) or globals()["_build_" + kind]
     fn(ctx, g, args)
     ctx.struct.geometry.append(g)
     return g
@@ -432,10 +432,17 @@ def _build_Text(ctx, g, a):
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
 
 
+_BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}
+
+
 # ---------------------------------------------------------------------- members
 def _pv(p, frame) -> PV:
     o = p.owner
-    x, y = p.in_frame(frame)
+    if o is frame:                     # Point.in_frame's common case, inline
+        x, y = _new(Lin), _new(Lin)
+        x.terms, x.const, y.terms, y.const = {p.ix: 1.0}, 0.0, {p.iy: 1.0}, 0.0
+    else:
+        x, y = p.in_frame(frame)
     return PV(x, y, p, o._own or o.owner_set())
 
 
