@@ -46,6 +46,33 @@ class _Plan:
         self.order = order
 
 
+def _arg_span(node: A.Call, where: int, ix: int):
+    """The span of a planned call's argument (``where`` 0: positional ``ix``, 1: keyword
+    ``ix``; else the call's)."""
+    if where == 0:
+        return node.args[ix].span
+    if where == 1:
+        return node.kwargs[ix].value.span
+    return node.span
+
+
+class _ArgSpans:
+    """The argument spans of a planned call, by argument name, made only when a diagnostic
+    asks (``.get(name, default)``, like the ``spans`` dict of the general path)."""
+
+    __slots__ = ("node", "plan")
+
+    def __init__(self, node, plan):
+        self.node = node
+        self.plan = plan
+
+    def get(self, name, default=None):
+        for aname, _t, where, ix, _w in self.plan.order:
+            if aname == name and (where == 0 or where == 1):
+                return _arg_span(self.node, where, ix)
+        return default
+
+
 _NO_PLAN = object()
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
@@ -189,56 +216,70 @@ class Calls:
 
     def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
         """A call of a registry entry by its :class:`_Plan`: the same evaluation order,
-        coercions, checks and errors as the general path of :meth:`_call`."""
+        coercions, checks and errors as the general path of :meth:`_call`.
+
+        The magnitude check of an argument that passes it is done right after its coercion
+        (it has no effect); the others are checked after every coercion, in argument order,
+        as :meth:`_call` does."""
         ev = self.eval
-        args = list(map(ev, node.args))
-        kwvals = [ev(kw.value) for kw in node.kwargs] if node.kwargs else ()
+        nargs = node.args
+        args = list(map(ev, nargs)) if nargs else ()
+        kws = node.kwargs
+        kwvals = [ev(kw.value) for kw in kws] if kws else ()
         conv = {}
-        spans = {}
-        coerce = self._coerce
+        later = None                    # (argument, value, span) to check after coercion
         for aname, atype, where, ix, want in plan.order:
             if where == 0:
-                v, sp = args[ix], node.args[ix].span
+                v = args[ix]
             elif where == 1:
-                v, sp = kwvals[ix], node.kwargs[ix].value.span
+                v = kwvals[ix]
             else:
-                conv[aname] = Q.num(ix, atype) if atype else ix
+                if atype:
+                    v = conv[aname] = Q.num(ix, atype)
+                    if later is None:
+                        later = []
+                    later.append((aname, v, node.span))
+                else:
+                    conv[aname] = ix
                 continue
-            spans[aname] = sp
             t = type(v)                 # _coerce's common cases, inline
             if t is Q:
-                if v.dim == want:
-                    conv[aname] = v
-                    continue
-                e = v.expr
-                if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
-                        and not e.terms:    # a bare number: file units or degrees
-                    c = _new(Lin)
-                    c.terms = {}
-                    c.const = (self.unit_scale if want == LEN else DEG) * e.const
-                    conv[aname] = Q(c, want, v.owners)
-                    continue
+                if v.dim != want:
+                    e = v.expr
+                    if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
+                            and not e.terms:    # a bare number: file units or degrees
+                        c = _new(Lin)
+                        c.terms = {}
+                        f = self.file
+                        c.const = ((f.unit_scale if f else 1.0) if want == LEN else DEG) * e.const
+                        q = _new(Q)
+                        q.expr, q.dim, q.owners = c, want, v.owners
+                        v = q
+                    else:
+                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
+                        t = type(v)
             elif t is GeomRef:
-                kind = v.geom.kind
                 kinds = _GEOM_KINDS.get(atype)
                 if kinds is not None:
-                    if kind in kinds:
-                        conv[aname] = v
-                        continue
+                    if v.geom.kind not in kinds:
+                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
+                        t = type(v)
                 elif atype == "point":
-                    if kind == "Point":            # geom_member(v.geom, "p", ...)
-                        conv[aname] = _pv(v.geom.points["p"], self.struct)
-                        continue
-                elif atype in _ANY_REFERENCE:
-                    conv[aname] = v
-                    continue
+                    if v.geom.kind == "Point":     # geom_member(v.geom, "p", ...)
+                        v = _pv(v.geom.points["p"], self.struct)
+                    else:
+                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
+                    t = type(v)
+                elif atype not in _ANY_REFERENCE:
+                    v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
+                    t = type(v)
             elif (t is StructRef or t is BBoxRef) and (atype == "boxed" or atype == "any"):
-                conv[aname] = v
-                continue
-            conv[aname] = coerce(v, atype, sp, nm, aname)
-        check = self._check_magnitudes
-        for k, v in conv.items():
-            t = type(v)                 # _check_magnitudes' common cases, inline
+                pass
+            else:
+                v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
+                t = type(v)
+            conv[aname] = v
+            # _check_magnitudes' passing cases, inline
             if t is Q:
                 e = v.expr
                 if type(e) is Lin:
@@ -247,16 +288,23 @@ class Calls:
                     c = e.const
                     if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
                         continue
-            elif t is GeomRef:
+            elif t is GeomRef or t is StructRef or t is BBoxRef or t is bool or t is str \
+                    or v is None:
                 continue
             elif t is PV:
                 x, y = v.x, v.y          # coordinates with unknowns: nothing to check
                 if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
                     continue
-            check(v, spans.get(k, node.span), k)
+            if later is None:
+                later = []
+            later.append((aname, v, _arg_span(node, where, ix)))
+        if later is not None:
+            check = self._check_magnitudes
+            for k, v, sp in later:
+                check(v, sp, k)
         cn = plan.canonical
         if plan.category == "primitive":
-            return self._primitive(cn, conv, node, spans)
+            return self._primitive(cn, conv, node, _ArgSpans(node, plan))
         if plan.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
@@ -300,7 +348,9 @@ class Calls:
         if self.n_geometry > MAX_GEOMETRY:
             raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", node.span,
                             hint="use fewer or larger repetitions")
-        self.count_object(node.span)
+        if self.objects >= self.budget.objects:      # self.count_object(node.span), inline
+            self.count_object(node.span)
+        self.objects += 1
         try:
             g = build(self, kind, conv, node.span)
         except PrimitiveError as ex:
@@ -323,10 +373,15 @@ class Calls:
     # -- used by primitives.build
     def point(self, v: PV, label: str) -> Point:
         s = self.struct
-        if v.obj is not None and v.obj.owner is s:
-            return v.obj
-        self.count_object(self.cur_span)
-        cx, cy = as_const(v.x), as_const(v.y)
+        o = v.obj
+        if o is not None and o.owner is s:
+            return o
+        if self.objects >= self.budget.objects:      # self.count_object(...), inline
+            self.count_object(self.cur_span)
+        self.objects += 1
+        x, y = v.x, v.y                               # as_const(v.x), as_const(v.y)
+        cx = (None if x.terms else x.const) if type(x) is Lin else as_const(x)
+        cy = (None if y.terms else y.const) if type(y) is Lin else as_const(y)
         x0 = cx if cx is not None else self.value_of(v.x)
         y0 = cy if cy is not None else self.value_of(v.y)
         ix, iy = self.model.new_pair(x0, y0, True, s, label)

@@ -12,10 +12,12 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.primitives import member as geom_member
-from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..geometry.expr import Lin
+from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
 from ..sources import ImportRefused, read_import, resolve_import
+from .calls import _NO_PLAN
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
                      _src)
 
@@ -352,37 +354,63 @@ class Statements:
 
     def _assign(self, st: A.Assign) -> None:
         v = st.value
+        name = st.name
         callee = None
-        if type(v) is A.Call and isinstance(v.func, (A.Name, A.Member)):
+        if type(v) is A.Call and (type(v.func) is A.Name or type(v.func) is A.Member):
             callee = self._callee(v.func)
-            if isinstance(callee, Template):
-                self._check_new_name(st.name, st.name_span, self._need_struct(st.span))
-                ref = self._instantiate(callee, v, st.name + self._loop_suffix())
-                self.scope.vars[st.name] = ref
+            if type(callee) is Template:
+                self._check_new_name(name, st.name_span, self._need_struct(st.span))
+                ref = self._instantiate(callee, v, name + self._loop_suffix())
+                self.scope.vars[name] = ref
                 return
-        if st.name in CONSTANTS or st.name == "self":
-            raise EvalError("E0107", f"`{st.name}` is a built-in name and cannot be assigned",
+        if name in CONSTANTS or name == "self":
+            raise EvalError("E0107", f"`{name}` is a built-in name and cannot be assigned",
                             st.name_span, hint="choose another name")
-        if isinstance(v, A.Call) and self.struct is not None:
-            self._check_new_name(st.name, st.name_span, self.struct)
+        if type(v) is A.Call and self.struct is not None:
+            prev = self.scope.vars.get(name)         # self._check_new_name(...), inline
+            if prev is not None and (type(prev) is GeomRef or type(prev) is StructRef):
+                self._check_new_name(name, st.name_span, self.struct)
         if callee is not None:               # what eval() does for a call, callee known
-            self.step(v.span)
-            val = self._call(v, st.name, callee)
+            n = self.steps + 1               # self.step(v.span), inline
+            if n > self.budget.steps or not n & 127:
+                self.step(v.span)
+            else:
+                self.steps = n
+            if type(callee) is Builtin and not v.kwargs:   # _call's registry entries, plan known
+                plan = self.plans.get((callee.name, len(v.args), ()), _NO_PLAN)
+                if plan is not _NO_PLAN and plan is not None:
+                    val = self._planned_call(v, callee.name, plan, name)
+                else:
+                    val = self._call(v, name, callee)
+            else:
+                val = self._call(v, name, callee)
         else:
-            val = self.eval(v, name=st.name)
-        if isinstance(val, GeomRef) and not val.geom.name and val.geom.owner is self.struct:
-            val.geom.name = st.name
-        if isinstance(val, list):
+            val = self.eval(v, name=name)
+        tv = type(val)
+        if tv is GeomRef:
+            g = val.geom
+            if not g.name and g.owner is self.struct:
+                g.name = name
+        elif isinstance(val, list):
             for i, item in enumerate(val):
                 if isinstance(item, GeomRef) and not item.geom.name:
-                    item.geom.name = f"{st.name}[{i}]"
-        self.scope.vars[st.name] = val
+                    item.geom.name = f"{name}[{i}]"
+        self.scope.vars[name] = val
 
     def _expr_stmt(self, e) -> None:
-        if isinstance(e, (A.Compare, A.BoolOp)):
+        t = type(e)
+        if t is A.Call:                  # what eval() does for a call
+            n = self.steps + 1           # self.step(e.span), inline
+            if n > self.budget.steps or not n & 127:
+                self.step(e.span)
+            else:
+                self.steps = n
+            val = self._call(e)
+        elif t is A.Compare or t is A.BoolOp:
             self._equation(e)
             return
-        val = self.eval(e)
+        else:
+            val = self.eval(e)
         if val is None or isinstance(val, (GeomRef, StructRef)) or type(val).__name__ == "Copies":
             return
         self.sink.warning("W0101", "this statement has no effect", e.span,
@@ -495,18 +523,22 @@ class Statements:
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
-        s = self._need_struct(span)
+        s = self.struct
+        if s is None:
+            s = self._need_struct(span)
         for o in owners:
-            if not o.is_within(s):
+            if o is not s and not o.is_within(s):
                 self._check_subtree(owners, span, s)
-        self.count_object(span)
-        c = Constraint(kind, s, span, text=text)
+        if self.objects >= self.budget.objects:      # self.count_object(span), inline
+            self.count_object(span)
+        self.objects += 1
         for e in eqs:
-            if contains_bbox(e.expr):
-                c.deferred = eqs
+            x = e.expr
+            if type(x) is not Lin and contains_bbox(x):
+                c = Constraint(kind, s, span, [], eqs, text)
                 break
         else:
-            c.equations = eqs
+            c = Constraint(kind, s, span, eqs, None, text)
         s.constraints.append(c)
         self.model.constraints.append(c)
 
