@@ -39,15 +39,15 @@ def contains_bbox(e) -> bool:
         return True
     if t is not Nl:
         return False
-    todo = list(e.args)
-    pop, extend = todo.pop, todo.extend
+    todo = [e]                    # nodes whose arguments are still to look at
+    pop, append = todo.pop, todo.append
     while todo:
-        a = pop()
-        t = type(a)
-        if t is Nl:
-            extend(a.args)
-        elif t is BBTerm:
-            return True
+        for a in pop().args:
+            t = type(a)
+            if t is BBTerm:
+                return True
+            if t is Nl:
+                append(a)
     return False
 
 

@@ -111,15 +111,12 @@ class Calls:
     def _callee(self, f):
         if type(f) is A.Name:
             name = f.id
-            sc = self.scope                  # Scope.lookup, inlined: the first scope that has it
-            while sc is not None:
-                vars_ = sc.vars
+            for vars_ in self.scope.chain:   # Scope.lookup, inlined: the first scope that has it
                 if name in vars_:
                     v = vars_[name]
                     if v is not None:
                         return v
                     break
-                sc = sc.parent
             b = _BUILTINS.get(name)
             if b is None and (lookup(name) is not None or name in FUNCTIONS):
                 b = _BUILTINS[name] = Builtin(name)

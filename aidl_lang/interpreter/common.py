@@ -32,11 +32,15 @@ class BudgetExhausted(Exception):
 
 
 class Scope:
+    """Names bound in a body, loop iteration, comprehension, template instance or file;
+    ``chain`` is the ``vars`` dicts from this scope out to the file's, for lookups."""
+
     def __init__(self, parent: "Scope | None", struct: Structure | None, file: "FileCtx"):
         self.vars: dict = {}
         self.parent = parent
         self.struct = struct
         self.file = file
+        self.chain: tuple = (self.vars,) + parent.chain if parent is not None else (self.vars,)
 
     def lookup(self, name: str):
         s = self

@@ -29,15 +29,12 @@ class Expressions:
         if t is A.Name:                  # a name defined in scope: _e_Name's first case, inline
             nid = e.id
             if nid != "self":
-                sc = self.scope
-                while sc is not None:
-                    vars_ = sc.vars
+                for vars_ in self.scope.chain:
                     if nid in vars_:
                         v = vars_[nid]
                         if v is POISON:
                             raise _Silent()
                         return v
-                    sc = sc.parent
             return self._e_Name(e)
         if t is A.Num:
             v = e.value
