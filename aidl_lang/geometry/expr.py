@@ -156,11 +156,25 @@ def sub(a: Expr, b) -> Expr:
 
 
 def mul(a, b) -> Expr:
-    ta = type(a)
+    ta, tb = type(a), type(b)
+    if ta is float:              # a float and an affine expression: the product directly
+        if tb is Lin:
+            t = {}
+            for k, v in b.terms.items():
+                t[k] = v * a
+            return _lin(t, b.const * a)
+    elif tb is float:
+        if ta is Lin:
+            terms = a.terms
+            if not terms:
+                return _lin({}, b * a.const)
+            t = {}
+            for k, v in terms.items():
+                t[k] = v * b
+            return _lin(t, a.const * b)
     if ta is not Lin and ta is not Nl and not isinstance(a, Expr):
         a = _lin({}, float(a))
         ta = Lin
-    tb = type(b)
     if tb is not Lin and tb is not Nl and not isinstance(b, Expr):
         b = _lin({}, float(b))
         tb = Lin

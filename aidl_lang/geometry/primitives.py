@@ -443,7 +443,9 @@ def _pv(p, frame) -> PV:
         x.terms, x.const, y.terms, y.const = {p.ix: 1.0}, 0.0, {p.iy: 1.0}, 0.0
     else:
         x, y = p.in_frame(frame)
-    return PV(x, y, p, o._own or o.owner_set())
+    v = _new(PV)                       # PV(x, y, p, owners) without __init__
+    v.x, v.y, v.obj, v.owners = x, y, p, o._own or o.owner_set()
+    return v
 
 
 def points_of(g: Geometry) -> list:

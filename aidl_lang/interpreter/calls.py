@@ -25,6 +25,7 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
 _ANY_REFERENCE = ("boxed", "geometry", "any")      # types any reference to geometry passes
+_UNCHECKED = frozenset((GeomRef, StructRef, BBoxRef, bool, str, type(None)))  # no magnitudes
 
 
 class _Plan:
@@ -239,8 +240,8 @@ class Calls:
                 else:
                     conv[aname] = ix
                 continue
-            t = type(v)                 # _coerce's common cases, inline
-            if t is Q:
+            t = type(v)                 # _coerce's common cases, inline; each checks its
+            if t is Q:                  # result's magnitude and goes on when it passes
                 if v.dim != want:
                     e = v.expr
                     if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
@@ -255,28 +256,40 @@ class Calls:
                     else:
                         v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
                         t = type(v)
+                if t is Q:
+                    e = v.expr
+                    if type(e) is Lin:
+                        if e.terms:
+                            conv[aname] = v
+                            continue
+                        c = e.const
+                        if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
+                            conv[aname] = v
+                            continue
             elif t is GeomRef:
                 kinds = _GEOM_KINDS.get(atype)
-                if kinds is not None:
-                    if v.geom.kind not in kinds:
-                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
-                        t = type(v)
-                elif atype == "point":
-                    if v.geom.kind == "Point":     # geom_member(v.geom, "p", ...)
-                        v = _pv(v.geom.points["p"], self.struct)
-                    else:
-                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
-                    t = type(v)
-                elif atype not in _ANY_REFERENCE:
+                if (v.geom.kind in kinds) if kinds is not None else atype in _ANY_REFERENCE:
+                    conv[aname] = v
+                    continue
+                if atype == "point" and v.geom.kind == "Point":     # geom_member(g, "p", ...)
+                    v = _pv(v.geom.points["p"], self.struct)
+                    x, y = v.x, v.y          # coordinates with unknowns: nothing to check
+                    if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
+                        conv[aname] = v
+                        continue
+                    t = PV
+                else:
                     v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
                     t = type(v)
             elif (t is StructRef or t is BBoxRef) and (atype == "boxed" or atype == "any"):
-                pass
+                conv[aname] = v
+                continue
             else:
                 v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
                 t = type(v)
             conv[aname] = v
-            # _check_magnitudes' passing cases, inline
+            if t in _UNCHECKED:         # _check_magnitudes' passing cases, inline
+                continue
             if t is Q:
                 e = v.expr
                 if type(e) is Lin:
@@ -285,9 +298,6 @@ class Calls:
                     c = e.const
                     if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
                         continue
-            elif t is GeomRef or t is StructRef or t is BBoxRef or t is bool or t is str \
-                    or v is None:
-                continue
             elif t is PV:
                 x, y = v.x, v.y          # coordinates with unknowns: nothing to check
                 if type(x) is Lin and x.terms and type(y) is Lin and y.terms:

@@ -405,7 +405,16 @@ class Statements:
                 self.step(e.span)
             else:
                 self.steps = n
-            val = self._call(e)
+            f = e.func
+            callee = self._callee(f) if type(f) is A.Name else None
+            if type(callee) is Builtin and not e.kwargs:   # _call's registry entries, plan known
+                plan = self.plans.get((callee.name, len(e.args), ()), _NO_PLAN)
+                if plan is not _NO_PLAN and plan is not None:
+                    val = self._planned_call(e, callee.name, plan, None)
+                else:
+                    val = self._call(e, None, callee)
+            else:
+                val = self._call(e, None, callee)
         elif t is A.Compare or t is A.BoolOp:
             self._equation(e)
             return
