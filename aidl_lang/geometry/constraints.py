@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 
 from .bbox import BBTerm
-from .expr import Expr, Lin, _new, evaluate, func, hypot, var
-from .model import Equation
+from .expr import Expr, Lin, _new, add, evaluate, func, hypot, mul, sub, var
+from .model import Equation, equation
 from .primitives import _pv, member
 from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
 
@@ -48,7 +48,7 @@ def _direction(ctx, v, name: str):
     None when they could not be evaluated)."""
     s, e = _line(ctx, v, name)
     try:
-        dx, dy = e.x - s.x, e.y - s.y
+        dx, dy = sub(e.x, s.x), sub(e.y, s.y)
         n = math.hypot(ctx.value_of(dx), ctx.value_of(dy))
     except (TypeError, ValueError):
         return s, e, None, None
@@ -125,7 +125,7 @@ def _hv(ctx, a, b, axis: str, name: str):
             t[k] = t.get(k, 0.0) + -1.0
             d = _new(Lin)
             d.terms, d.const = t, 0.0
-            return [Equation(d)]
+            return [equation(d)]
     if b is None:
         s, e = _line(ctx, a, "a")
     else:
@@ -203,7 +203,7 @@ def length(ctx, line, length, **_):
     s, e, dx, dy = _direction(ctx, line, "line")
     if dx is None:
         dx, dy = e.x - s.x, e.y - s.y
-    return [Equation(hypot(dx, dy) - length.expr)]
+    return [equation(sub(hypot(dx, dy), length.expr))]
 
 
 def radius(ctx, circle, radius, **_):
@@ -393,22 +393,22 @@ def _bb(ctx, v, side, name):
 
 def above(ctx, a, b, gap=None, **_):
     g = gap.expr if gap is not None else 0.0
-    return [Equation(_bb(ctx, a, "bottom", "a") - _bb(ctx, b, "top", "b") - g)]
+    return [equation(sub(sub(_bb(ctx, a, "bottom", "a"), _bb(ctx, b, "top", "b")), g))]
 
 
 def below(ctx, a, b, gap=None, **_):
     g = gap.expr if gap is not None else 0.0
-    return [Equation(_bb(ctx, b, "bottom", "b") - _bb(ctx, a, "top", "a") - g)]
+    return [equation(sub(sub(_bb(ctx, b, "bottom", "b"), _bb(ctx, a, "top", "a")), g))]
 
 
 def left_of(ctx, a, b, gap=None, **_):
     g = gap.expr if gap is not None else 0.0
-    return [Equation(_bb(ctx, b, "left", "b") - _bb(ctx, a, "right", "a") - g)]
+    return [equation(sub(sub(_bb(ctx, b, "left", "b"), _bb(ctx, a, "right", "a")), g))]
 
 
 def right_of(ctx, a, b, gap=None, **_):
     g = gap.expr if gap is not None else 0.0
-    return [Equation(_bb(ctx, a, "left", "a") - _bb(ctx, b, "right", "b") - g)]
+    return [equation(sub(sub(_bb(ctx, a, "left", "a"), _bb(ctx, b, "right", "b")), g))]
 
 
 def inside(ctx, a, b, margin=None, **_):
@@ -431,25 +431,25 @@ def gap(ctx, a, b, gap, axis="x", **_):
 
 def _center(ctx, v, axis, name):
     lo, hi = ("left", "right") if axis == "x" else ("bottom", "top")
-    return (_bb(ctx, v, lo, name) + _bb(ctx, v, hi, name)) * 0.5
+    return mul(add(_bb(ctx, v, lo, name), _bb(ctx, v, hi, name)), 0.5)
 
 
 def center_inside(ctx, a, b, **_):
-    return [Equation(_center(ctx, a, "x", "a") - _center(ctx, b, "x", "b")),
-            Equation(_center(ctx, a, "y", "a") - _center(ctx, b, "y", "b"))]
+    return [equation(sub(_center(ctx, a, "x", "a"), _center(ctx, b, "x", "b"))),
+            equation(sub(_center(ctx, a, "y", "a"), _center(ctx, b, "y", "b")))]
 
 
 def align_center_x(ctx, a, b, **_):
-    return [Equation(_center(ctx, a, "x", "a") - _center(ctx, b, "x", "b"))]
+    return [equation(sub(_center(ctx, a, "x", "a"), _center(ctx, b, "x", "b")))]
 
 
 def align_center_y(ctx, a, b, **_):
-    return [Equation(_center(ctx, a, "y", "a") - _center(ctx, b, "y", "b"))]
+    return [equation(sub(_center(ctx, a, "y", "a"), _center(ctx, b, "y", "b")))]
 
 
 def _align(side):
     def f(ctx, a, b, **_):
-        return [Equation(_bb(ctx, a, side, "a") - _bb(ctx, b, side, "b"))]
+        return [equation(sub(_bb(ctx, a, side, "a"), _bb(ctx, b, side, "b")))]
     return f
 
 

@@ -188,6 +188,16 @@ class Equation:
     branch: Expr | None = None
 
 
+def equation(expr: Expr, ineq: bool = False, branch: Expr | None = None) -> Equation:
+    """``Equation(expr, ineq, branch)`` without the class call (the same record; the
+    interpreter makes thousands, and a class call re-enters the bytecode loop)."""
+    e = _new(Equation)
+    e.expr = expr
+    e.ineq = ineq
+    e.branch = branch
+    return e
+
+
 @dataclass(eq=False)
 class Constraint:
     kind: str                      # canonical constraint name or "equation" / "internal"

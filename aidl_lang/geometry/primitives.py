@@ -23,7 +23,10 @@ class PrimitiveError(Exception):
 
 def build(ctx, kind: str, args: dict, span) -> Geometry:
     """Create geometry ``kind`` in ``ctx.struct`` from bound arguments ``args``."""
-    g = Geometry(kind, ctx.struct, span, "", {}, {}, {}, {}, bool(args.get("construction", False)))
+    g = _new(Geometry)                 # Geometry(kind, ctx.struct, span, ...) without the class call
+    g.kind, g.owner, g.span, g.name = kind, ctx.struct, span, ""
+    g.points, g.scalars, g.data, g.parts = {}, {}, {}, {}
+    g.construction, g.closed = bool(args.get("construction", False)), False
     fn = _BUILD.get(kind) or globals()["_build_" + kind]
     fn(ctx, g, args)
     ctx.struct.geometry.append(g)
@@ -60,7 +63,10 @@ def _build_Point(ctx, g, a):
     if "at" in a:
         g.points["p"] = ctx.point(a["at"], "p")
     else:
-        g.points["p"] = ctx.point(PV(a["x"].expr, a["y"].expr, None, a["x"].owners | a["y"].owners), "p")
+        x, y = a["x"], a["y"]
+        v = _new(PV)                   # PV(x, y, None, owners) without the class call
+        v.x, v.y, v.obj, v.owners = x.expr, y.expr, None, x.owners | y.owners
+        g.points["p"] = ctx.point(v, "p")
 
 
 def _build_Line(ctx, g, a):

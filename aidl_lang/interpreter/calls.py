@@ -221,7 +221,7 @@ class Calls:
         as :meth:`_call` does."""
         ev = self.eval
         nargs = node.args
-        args = list(map(ev, nargs)) if nargs else ()
+        args = [ev(a) for a in nargs] if nargs else ()
         kws = node.kwargs
         kwvals = [ev(kw.value) for kw in kws] if kws else ()
         conv = {}
@@ -311,7 +311,9 @@ class Calls:
                 check(v, sp, k)
         cn = plan.canonical
         if plan.category == "primitive":
-            return self._primitive(cn, conv, node, _ArgSpans(node, plan))
+            spans = _new(_ArgSpans)
+            spans.node, spans.plan = node, plan
+            return self._primitive(cn, conv, node, spans)
         if plan.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
@@ -375,7 +377,9 @@ class Calls:
                                   "drawing", spans.get("text", node.span),
                                   hint="the single-stroke font draws printable ASCII only; "
                                        "write the text in ASCII (e.g. `e` for `é`)")
-        return GeomRef(g)
+        r = _new(GeomRef)              # GeomRef(g) without the class call
+        r.geom = g
+        return r
 
     # -- used by primitives.build
     def point(self, v: PV, label: str) -> Point:
@@ -392,7 +396,8 @@ class Calls:
         x0 = cx if cx is not None else self.value_of(v.x)
         y0 = cy if cy is not None else self.value_of(v.y)
         ix, iy = self.model.new_pair(x0, y0, True, s, label)
-        p = Point(ix, iy, s, None, label)
+        p = _new(Point)                # Point(ix, iy, s, None, label) without the class call
+        p.ix, p.iy, p.owner, p.span, p.label = ix, iy, s, None, label
         if cx is None or cy is None:
             c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
                            text=f"{label} placed at a derived point", implicit=True)

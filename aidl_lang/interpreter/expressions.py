@@ -11,7 +11,7 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
 from ..geometry.expr import Lin, _new, as_const, func, lift
 from ..geometry.primitives import member as geom_member, member_names
-from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
 from .common import (DEG, POISON, Scope, _Silent, _fmt_num, show)
@@ -42,7 +42,9 @@ class Expressions:
                 c = _new(Lin)
                 c.terms = {}
                 c.const = float(v)
-                return Q(c, NUM)
+                q = _new(Q)                  # Q(c, NUM) without the class call
+                q.expr, q.dim, q.owners = c, NUM, _EMPTY
+                return q
             return self._e_Num(e)
         key = (type(self), t)
         m = _HANDLERS.get(key)

@@ -12,7 +12,7 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.primitives import member as geom_member
-from ..geometry.expr import Lin
+from ..geometry.expr import Lin, _new
 from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
@@ -541,13 +541,16 @@ class Statements:
         if self.objects >= self.budget.objects:      # self.count_object(span), inline
             self.count_object(span)
         self.objects += 1
+        c = _new(Constraint)                 # Constraint(kind, s, span, ...) without the class call
+        c.kind, c.owner, c.span = kind, s, span
         for e in eqs:
             x = e.expr
             if type(x) is not Lin and contains_bbox(x):
-                c = Constraint(kind, s, span, [], eqs, text)
+                c.equations, c.deferred = [], eqs
                 break
         else:
-            c = Constraint(kind, s, span, eqs, None, text)
+            c.equations, c.deferred = eqs, None
+        c.text, c.implicit = text, False
         s.constraints.append(c)
         self.model.constraints.append(c)
 
