@@ -119,13 +119,8 @@ def _hv(ctx, a, b, axis: str, name: str):
         if (g.kind == "Line" or g.kind == "Slot") and ps.owner is frame and pe.owner is frame:
             # the line's own end points: s.y - e.y (s.x - e.x) as sub() makes it, directly
             if axis == "h":
-                t, k = {ps.iy: 1.0}, pe.iy
-            else:
-                t, k = {ps.ix: 1.0}, pe.ix
-            t[k] = t.get(k, 0.0) + -1.0
-            d = _new(Lin)
-            d.terms, d.const = t, 0.0
-            return [equation(d)]
+                return [equation(_own_delta(pe.iy, ps.iy))]
+            return [equation(_own_delta(pe.ix, ps.ix))]
     if b is None:
         s, e = _line(ctx, a, "a")
     else:
@@ -199,7 +194,25 @@ def vertical_distance(ctx, a, b, distance, **_):
     return [Equation(_pt(b, "b").y - _pt(a, "a").y - distance.expr)]
 
 
+def _own_delta(a, b):
+    """``b - a`` of two points of the structure being run, as ``sub()`` makes it from their
+    coordinates (``Lin({b: 1.0}) - Lin({a: 1.0})``), without the point values in between."""
+    t = {b: 1.0}
+    t[a] = t.get(a, 0.0) + -1.0
+    d = _new(Lin)
+    d.terms, d.const = t, 0.0
+    return d
+
+
 def length(ctx, line, length, **_):
+    if type(line) is GeomRef and (line.geom.kind == "Line" or line.geom.kind == "Slot"):
+        pts, frame = line.geom.points, ctx.struct
+        ps, pe = pts["start"], pts["end"]
+        if ps.owner is frame and pe.owner is frame:     # _direction of the line's own points
+            dx, dy = _own_delta(ps.ix, pe.ix), _own_delta(ps.iy, pe.iy)
+            if not math.hypot(ctx.value_of(dx), ctx.value_of(dy)) > 1e-9:
+                _direction(ctx, line, "line")           # its zero-length error
+            return [equation(sub(hypot(dx, dy), length.expr))]
     s, e, dx, dy = _direction(ctx, line, "line")
     if dx is None:
         dx, dy = e.x - s.x, e.y - s.y

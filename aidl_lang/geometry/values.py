@@ -140,6 +140,12 @@ def type_name(v) -> str:
 
 def owners_of(*vals) -> frozenset:
     """The structures whose geometry ``vals`` refer to (lists and tuples looked into)."""
+    return owners_in(vals)
+
+
+def owners_in(vals) -> frozenset:
+    """:func:`owners_of` of the values in the iterable ``vals`` (``owners_in(d.values())``
+    without unpacking them into a call, which re-enters the bytecode loop)."""
     out = set()
     for v in vals:
         t = type(v)

@@ -13,7 +13,7 @@ from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
-                               Template, UnitError, dim_name, mul_dim, owners_of, type_name)
+                               Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
@@ -321,7 +321,7 @@ class Calls:
                 return apply(self, cn, conv, name)
             except OperationError as ex:
                 raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
-        owners = owners_of(*conv.values())
+        owners = owners_in(conv.values())
         try:
             eqs = BUILDERS[cn](self, **conv)
         except ConstraintError as ex:
