@@ -157,12 +157,19 @@ def sub(a: Expr, b) -> Expr:
 
 def mul(a, b) -> Expr:
     ta, tb = type(a), type(b)
-    if ta is float:              # a float and an affine expression: the product directly
+    if ta is float:              # a float and an expression: the product directly
         if tb is Lin:
             t = {}
             for k, v in b.terms.items():
                 t[k] = v * a
             return _lin(t, b.const * a)
+        if tb is Nl or (tb is not float and isinstance(b, Expr)):
+            if a == 0.0:
+                return _lin({}, 0.0)
+            e = _new(Nl)
+            e.op = "mul"
+            e.args = (_lin({}, a), b)
+            return e
     elif tb is float:
         if ta is Lin:
             terms = a.terms
@@ -172,6 +179,13 @@ def mul(a, b) -> Expr:
             for k, v in terms.items():
                 t[k] = v * b
             return _lin(t, a.const * b)
+        if ta is Nl or isinstance(a, Expr):
+            if b == 0.0:
+                return _lin({}, 0.0)
+            e = _new(Nl)
+            e.op = "mul"
+            e.args = (a, _lin({}, b))
+            return e
     if ta is not Lin and ta is not Nl and not isinstance(a, Expr):
         a = _lin({}, float(a))
         ta = Lin

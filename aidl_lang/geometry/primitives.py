@@ -24,9 +24,16 @@ class PrimitiveError(Exception):
 def build(ctx, kind: str, args: dict, span) -> Geometry:
     """Create geometry ``kind`` in ``ctx.struct`` from bound arguments ``args``."""
     g = _new(Geometry)                 # Geometry(kind, ctx.struct, span, ...) without the class call
-    g.kind, g.owner, g.span, g.name = kind, ctx.struct, span, ""
-    g.points, g.scalars, g.data, g.parts = {}, {}, {}, {}
-    g.construction, g.closed = bool(args.get("construction", False)), False
+    g.kind = kind
+    g.owner = ctx.struct
+    g.span = span
+    g.name = ""
+    g.points = {}
+    g.scalars = {}
+    g.data = {}
+    g.parts = {}
+    g.construction = bool(args.get("construction", False))
+    g.closed = False
     fn = _BUILD.get(kind) or globals()["_build_" + kind]
     fn(ctx, g, args)
     ctx.struct.geometry.append(g)
@@ -65,7 +72,10 @@ def _build_Point(ctx, g, a):
     else:
         x, y = a["x"], a["y"]
         v = _new(PV)                   # PV(x, y, None, owners) without the class call
-        v.x, v.y, v.obj, v.owners = x.expr, y.expr, None, x.owners | y.owners
+        v.x = x.expr
+        v.y = y.expr
+        v.obj = None
+        v.owners = x.owners | y.owners
         g.points["p"] = ctx.point(v, "p")
 
 
@@ -445,12 +455,19 @@ _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_"
 def _pv(p, frame) -> PV:
     o = p.owner
     if o is frame:                     # Point.in_frame's common case, inline
-        x, y = _new(Lin), _new(Lin)
-        x.terms, x.const, y.terms, y.const = {p.ix: 1.0}, 0.0, {p.iy: 1.0}, 0.0
+        x = _new(Lin)
+        x.terms = {p.ix: 1.0}
+        x.const = 0.0
+        y = _new(Lin)
+        y.terms = {p.iy: 1.0}
+        y.const = 0.0
     else:
         x, y = p.in_frame(frame)
     v = _new(PV)                       # PV(x, y, p, owners) without __init__
-    v.x, v.y, v.obj, v.owners = x, y, p, o._own or o.owner_set()
+    v.x = x
+    v.y = y
+    v.obj = p
+    v.owners = o._own or o.owner_set()
     return v
 
 

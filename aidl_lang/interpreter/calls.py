@@ -397,7 +397,11 @@ class Calls:
         y0 = cy if cy is not None else self.value_of(v.y)
         ix, iy = self.model.new_pair(x0, y0, True, s, label)
         p = _new(Point)                # Point(ix, iy, s, None, label) without the class call
-        p.ix, p.iy, p.owner, p.span, p.label = ix, iy, s, None, label
+        p.ix = ix
+        p.iy = iy
+        p.owner = s
+        p.span = None
+        p.label = label
         if cx is None or cy is None:
             c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
                            text=f"{label} placed at a derived point", implicit=True)
