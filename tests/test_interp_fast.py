@@ -6,15 +6,20 @@ general paths give.
   general path.  Both must build the same model (parameters, labels, every constraint's
   equations, float for float) and report the same diagnostics, on every bundled program and
   on calls with wrong, missing, swapped, synonym and keyword arguments.
-* ``sub``, ``mul`` and ``contains_bbox`` against the code they replaced (kept here as the
-  reference), with hypothesis.
+* ``sub``, ``mul``, ``add``, ``func`` and ``contains_bbox`` against the code they replaced
+  (kept here as the reference), with hypothesis; the records made without a class call
+  (``model.equation``) and the constraint builders' shortcuts for a line's own points
+  (``Horizontal``, ``Vertical``, ``Length``) against the general construction.
 """
 import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.geometry.bbox import BBTerm, contains_bbox
-from aidl_lang.geometry.expr import Lin, Nl, add, mul, sub
+from aidl_lang.geometry import constraints as C
+from aidl_lang.geometry.expr import Lin, Nl, add, func, hypot, mul, sub
+from aidl_lang.geometry.model import Equation, equation
+from aidl_lang.geometry.values import GeomRef, LEN, Q, owners_in, owners_of
 from aidl_lang.interp import Interpreter
 from aidl_lang.interpreter import calls
 from aidl_lang.parser import parse
@@ -182,3 +187,90 @@ def test_mul_is_the_reference(a, b):
 @given(exprs)
 def test_contains_bbox_is_the_reference(e):
     assert contains_bbox(e) is _contains_reference(e)
+
+
+def _add_reference(a, b):
+    """``add`` before the interpreter work (isinstance, constructors)."""
+    if not isinstance(a, (Lin, Nl, BBTerm)):
+        a = Lin({}, float(a))
+    if not isinstance(b, (Lin, Nl, BBTerm)):
+        b = Lin({}, float(b))
+    if isinstance(a, Lin) and isinstance(b, Lin):
+        t = dict(a.terms)
+        for k, v in b.terms.items():
+            t[k] = t.get(k, 0.0) + v
+        return Lin(t, a.const + b.const)
+    return Nl("add", (a, b))
+
+
+def _func_reference(op, *args):
+    """``func`` before the interpreter work: lift every argument, fold constants."""
+    args = tuple(a if isinstance(a, (Lin, Nl, BBTerm)) else Lin({}, float(a)) for a in args)
+    consts = [a.const if isinstance(a, Lin) and not a.terms else None for a in args]
+    if None not in consts:
+        import math
+        f = {"sqrt": math.sqrt, "abs": abs, "min": min, "max": max}[op]
+        return Lin({}, f(consts) if op in ("min", "max") else f(consts[0]))
+    return Nl(op, args)
+
+
+@settings(max_examples=150, deadline=None)
+@given(operands, operands)
+def test_add_is_the_reference(a, b):
+    if isinstance(a, float) and isinstance(b, float):
+        return
+    assert _key(add(a, b)) == _key(_add_reference(a, b))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.sampled_from(["min", "max", "abs"]), st.lists(operands, min_size=1, max_size=3))
+def test_func_is_the_reference(op, args):
+    if op == "abs":
+        args = args[:1]
+    assert _key(func(op, *args)) == _key(_func_reference(op, *args))
+
+
+def test_equation_is_the_record():
+    e = Lin({3: 1.0}, 2.0)
+    for args in ((e,), (e, True), (e, False, Lin({1: 1.0}))):
+        a, b = Equation(*args), equation(*args)
+        assert type(a) is type(b) and repr(a) == repr(b) and vars(a) == vars(b)
+
+
+def test_owners_in_is_owners_of(compile_text):
+    m = compile_text(_snippet_program("AlignLeft(inner, outer)")).model
+    outer, inner = (s for s in m.structures if s.name in ("outer", "inner"))
+    vals = [GeomRef(outer.geometry[0]), Q(Lin({}, 1.0), LEN), [GeomRef(inner.geometry[0])], None]
+    assert owners_in(vals) == owners_of(*vals) == frozenset({outer, inner})
+
+
+class _Ctx:
+    """What the builders use of the interpreter: the structure being run and the values."""
+
+    def __init__(self, model, struct):
+        self.model, self.struct = model, struct
+
+    def value_of(self, e):
+        return Interpreter.value_of(self, e)
+
+
+@pytest.mark.parametrize("same_point", [False, True])
+def test_line_builders_equal_the_general_construction(compile_text, same_point):
+    """Horizontal, Vertical and Length of a line of the structure being run build their
+    expressions straight from the point indices; the general path goes through the end points'
+    values (``_line``) and the operators.  Also for a line whose ends share a parameter."""
+    m = compile_text(_snippet_program("Horizontal(outer.l)")).model
+    outer = next(s for s in m.structures if s.name == "outer")
+    line = next(g for g in outer.geometry if g.kind == "Line")
+    if same_point:                      # a degenerate line: both ends the same point
+        line.points["end"] = line.points["start"]
+    ctx, ref = _Ctx(m, outer), GeomRef(line)
+    s, e = C._line(ctx, ref, "a")
+    assert _key(C.horizontal(ctx, ref)[0].expr) == _key(s.y - e.y)
+    assert _key(C.vertical(ctx, ref)[0].expr) == _key(s.x - e.x)
+    L = Q(Lin({}, 7.0), LEN)
+    if same_point:
+        with pytest.raises(C.ConstraintError, match="zero length"):
+            C.length(ctx, ref, L)
+    else:
+        assert _key(C.length(ctx, ref, L)[0].expr) == _key(hypot(e.x - s.x, e.y - s.y) - L.expr)
