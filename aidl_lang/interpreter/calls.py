@@ -17,7 +17,7 @@ from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Nam
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
-from .common import (DEG, _a, _fmt_num, _src, show)
+from .common import (DEG, POISON, _Silent, _a, _fmt_num, _src, show)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -106,6 +106,19 @@ def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
             dim = _DIMS.get(a.type)
             order.append((a.name, dim, 2, a.default, None))
     return _Plan(entry, cn, tuple(order))
+
+
+def _callee_name(interp, f: A.Name):
+    """``interp._callee(f)`` of a name, with a built-in found in one table look-up."""
+    name = f.id
+    for vars_ in interp.scope.chain:     # the first scope that has it
+        if name in vars_:
+            v = vars_[name]
+            if v is not None:
+                return v
+            break
+    b = _BUILTINS.get(name)
+    return b if b is not None else interp._callee(f)
 
 
 class Calls:
@@ -221,7 +234,22 @@ class Calls:
         as :meth:`_call` does."""
         ev = self.eval
         nargs = node.args
-        args = [ev(a) for a in nargs] if nargs else ()
+        args = []
+        chain = self.scope.chain
+        for a in nargs:                 # eval(a); a name in scope looked up inline
+            if type(a) is A.Name and a.id != "self":
+                nid = a.id
+                for vars_ in chain:
+                    if nid in vars_:
+                        v = vars_[nid]
+                        if v is POISON:
+                            raise _Silent()
+                        args.append(v)
+                        break
+                else:
+                    args.append(ev(a))
+            else:
+                args.append(ev(a))
         kws = node.kwargs
         kwvals = [ev(kw.value) for kw in kws] if kws else ()
         conv = {}
@@ -332,13 +360,22 @@ class Calls:
         return None
 
     def _primitive(self, kind, conv, node, spans):
-        s = self._need_struct(node.span)
+        s = self.struct
+        if s is None:
+            s = self._need_struct(node.span)
+        mine = s._own                    # frozenset({s}) once made: the owners of s's points
         for k, v in conv.items():
             t = type(v)
             if t is Q or t is PV:
                 own = v.owners
-            elif t is bool or t is str or v is None or (t is GeomRef and v.geom.owner is s):
-                continue                 # no geometry, or geometry of this structure
+                if not own or own is mine:
+                    continue
+            elif t is GeomRef:
+                if v.geom.owner is s:
+                    continue             # geometry of this structure
+                own = owners_of(v)
+            elif t is bool or t is str or v is None:
+                continue                 # no geometry
             else:
                 own = owners_of(v)
             if not own or (s in own and len(own) == 1):

@@ -17,7 +17,7 @@ from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, Str
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
 from ..sources import ImportRefused, read_import, resolve_import
-from .calls import _NO_PLAN
+from .calls import _NO_PLAN, _callee_name
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
                      _src)
 
@@ -357,7 +357,7 @@ class Statements:
         name = st.name
         callee = None
         if type(v) is A.Call and (type(v.func) is A.Name or type(v.func) is A.Member):
-            callee = self._callee(v.func)
+            callee = self._callee(v.func) if type(v.func) is A.Member else _callee_name(self, v.func)
             if type(callee) is Template:
                 self._check_new_name(name, st.name_span, self._need_struct(st.span))
                 ref = self._instantiate(callee, v, name + self._loop_suffix())
@@ -406,7 +406,7 @@ class Statements:
             else:
                 self.steps = n
             f = e.func
-            callee = self._callee(f) if type(f) is A.Name else None
+            callee = _callee_name(self, f) if type(f) is A.Name else None
             if type(callee) is Builtin and not e.kwargs:   # _call's registry entries, plan known
                 plan = self.plans.get((callee.name, len(e.args), ()), _NO_PLAN)
                 if plan is not _NO_PLAN and plan is not None:
