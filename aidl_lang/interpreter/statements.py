@@ -22,6 +22,10 @@ from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is
                      _src)
 
 
+# what a statement may raise and still be reported and skipped (Statements._stmt_failed)
+_STMT_ERRORS = (_Silent, EvalError, ValueError, ZeroDivisionError, OverflowError, RecursionError)
+
+
 class Statements:
     # ------------------------------------------------------------------ entry
     def run(self, program: A.Program) -> Model:
@@ -231,13 +235,24 @@ class Statements:
         struct.scope = scope.vars            # members (`self.body`) are visible while it runs
         try:
             later = []
-            for st in block.stmts:
-                if type(st) is A.ExprStmt:
+            for st in block.stmts:      # _exec_stmt, inline for assignments
+                t = type(st)
+                if t is A.ExprStmt:
                     later.append(st)
+                elif t is A.Assign:
+                    self.cur_span = st.span
+                    try:
+                        self._assign(st)
+                    except _STMT_ERRORS as ex:
+                        self._stmt_failed(st, ex)
                 else:
                     self._exec_stmt(st)
-            for st in later:
-                self._exec_stmt(st)
+            for st in later:            # _exec_stmt, inline
+                self.cur_span = st.span
+                try:
+                    self._expr_stmt(st.expr)
+                except _STMT_ERRORS as ex:
+                    self._stmt_failed(st, ex)
         finally:
             self.struct, self.scope, self.body_stmts = saved
 
@@ -260,18 +275,25 @@ class Statements:
                 self._expr_stmt(st.expr)
             else:
                 self._exec(st)
-        except _Silent:
-            pass
-        except EvalError as e:
-            self.error(e)
+        except _STMT_ERRORS as ex:
+            self._stmt_failed(st, ex)
+
+    def _stmt_failed(self, st, ex: Exception) -> None:
+        """What a statement that raised ``ex`` (one of ``_STMT_ERRORS``) reports: nothing
+        for a name whose definition already failed, the error itself, a math error (E0112)
+        or too deep an expression (E0302); the statement is skipped."""
+        if isinstance(ex, _Silent):
+            return
+        if isinstance(ex, EvalError):
+            self.error(ex)
             if isinstance(st, A.Assign):       # later uses of the name stay quiet
                 self.scope.vars[st.name] = POISON
             elif isinstance(st, A.StructDecl):
                 self.scope.vars.setdefault(st.name, POISON)
-        except (ValueError, ZeroDivisionError, OverflowError) as e:
-            self.error(EvalError("E0112", f"math error: {e}", st.span,
+        elif isinstance(ex, (ValueError, ZeroDivisionError, OverflowError)):
+            self.error(EvalError("E0112", f"math error: {ex}", st.span,
                                  hint="check for division by zero or sqrt/asin of an out-of-range value"))
-        except RecursionError:
+        else:
             self.error(EvalError("E0302", "expression nested too deeply", st.span,
                                  hint="split it into named constants"))
 
