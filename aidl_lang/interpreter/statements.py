@@ -366,6 +366,8 @@ class Statements:
             if hasattr(sc, "loop_index"):
                 idx.append(sc.loop_index)
             sc = sc.parent
+        if not idx:                      # not inside a loop: no suffix
+            return ""
         return "".join(f"[{i}]" for i in reversed(idx))
 
     def _check_new_name(self, name: str, span, struct: Structure) -> None:
