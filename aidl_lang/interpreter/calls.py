@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
-from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, var
+from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
@@ -472,9 +472,10 @@ class Calls:
             return v
         if isinstance(v, GeomRef) and v.geom.kind == "Point":
             return geom_member(v.geom, "p", self.struct)
-        if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
-            xs = [self._as_length(c, span) for c in v]
-            return PV(xs[0], xs[1], None, owners_of(*v))
+        if isinstance(v, (tuple, list)) and len(v) == 2 and isinstance(v[0], Q) \
+                and isinstance(v[1], Q):
+            x, y = self._as_length(v[0], span), self._as_length(v[1], span)
+            return PV(x, y, None, owners_in(v))
         raise EvalError("E0108", f"expected a point, got {type_name(v)}", span,
                         hint="write a point as `(x, y)` or refer to one, e.g. `rect.top_left`")
 
@@ -482,7 +483,8 @@ class Calls:
         if q.dim == LEN:
             return q.expr
         if q.dim == NUM:
-            return lift(q.expr) * self.unit_scale
+            f = self.file               # lift(q.expr) * self.unit_scale
+            return mul(lift(q.expr), f.unit_scale if f else 1.0)
         raise EvalError("E0109", f"expected a length, got a {dim_name(q.dim)}", span,
                         hint="give a length unit such as `mm` or `in`")
 

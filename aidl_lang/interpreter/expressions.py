@@ -243,7 +243,8 @@ class Expressions:
         return obj[i]
 
     def _e_TupleLit(self, e):
-        return tuple(self.eval(x) for x in e.items)
+        ev = self.eval
+        return tuple([ev(x) for x in e.items])
 
     def _e_ListLit(self, e):
         return [self.eval(x) for x in e.items]
