@@ -274,3 +274,17 @@ def test_line_builders_equal_the_general_construction(compile_text, same_point):
             C.length(ctx, ref, L)
     else:
         assert _key(C.length(ctx, ref, L)[0].expr) == _key(hypot(e.x - s.x, e.y - s.y) - L.expr)
+
+
+@pytest.mark.parametrize("path", PROGRAMS, ids=lambda p: p.name)
+def test_constraint_text_is_the_source(path):
+    """A written constraint's text is cut from its file when first read: the call's source,
+    blanks collapsed, as ``_src`` gives it."""
+    from aidl_lang.interpreter.common import _src
+    sink = DiagnosticSink()
+    prog = parse(path.read_text(), str(path), sink)
+    check(prog, sink)
+    model = Interpreter(sink).run(prog)
+    written = [c for c in model.constraints if not c.implicit]
+    for c in written:
+        assert c.text == _src(sink, c.span) and c.describe() == (c.text or c.kind)

@@ -211,3 +211,21 @@ class Constraint:
 
     def describe(self) -> str:
         return self.text or self.kind
+
+
+def _constraint_text(c: Constraint) -> str:
+    t = c._text
+    if t is None:          # a written constraint: its source text, made on first use
+        sp = c.span
+        t = c._text = " ".join(c._src[sp.start:sp.end].split())[:120]
+    return t
+
+
+def _set_constraint_text(c: Constraint, value: str) -> None:
+    c._text = value
+
+
+# ``text``: what the constraint is called in messages.  The interpreter gives a written
+# constraint its file's text (``_src``) and ``_text = None``; the text (its source, blanks
+# collapsed, at most 120 characters) is cut only when a message asks for it.
+Constraint.text = property(_constraint_text, _set_constraint_text)

@@ -17,7 +17,7 @@ from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Nam
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
-from .common import (DEG, POISON, _Silent, _a, _fmt_num, _src, show)
+from .common import (DEG, POISON, _Silent, _a, _fmt_num, show)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -222,7 +222,7 @@ class Calls:
             raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(canonical(nm), eqs, node.span, _src(self.sink, node.span), owners)
+        self._add_constraint(canonical(nm), eqs, node.span, None, owners)
         return None
 
     def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
@@ -356,7 +356,7 @@ class Calls:
             raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(cn, eqs, node.span, _src(self.sink, node.span), owners)
+        self._add_constraint(cn, eqs, node.span, None, owners)
         return None
 
     def _primitive(self, kind, conv, node, spans):

@@ -105,6 +105,8 @@ def _common_ancestor(a: Structure, b: Structure):
 
 
 def _src(sink: DiagnosticSink, span: Span | None) -> str:
+    """The source text at ``span``, blanks collapsed, at most 120 characters (what
+    ``Constraint.text`` of a written constraint reads, cut when first asked)."""
     if span is None:
         return ""
     src = sink.sources.get(span.file, "")

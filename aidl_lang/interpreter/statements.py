@@ -18,8 +18,7 @@ from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
 from ..sources import ImportRefused, read_import, resolve_import
 from .calls import _NO_PLAN, _callee_name
-from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
-                     _src)
+from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
 
 
 # what a statement may raise and still be reported and skipped (Statements._stmt_failed)
@@ -555,7 +554,10 @@ class Statements:
         return StructRef(child)
 
     # ------------------------------------------------------------------ constraints
-    def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
+    def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
+                        owners) -> None:
+        """Add a written constraint to the structure being run (``text`` None: the source
+        text at ``span``, cut when first read; see ``Constraint.text``)."""
         s = self.struct
         if s is None:
             s = self._need_struct(span)
@@ -574,7 +576,15 @@ class Statements:
                 break
         else:
             c.equations, c.deferred = eqs, None
-        c.text, c.implicit = text, False
+        if text is None:                     # its source text, cut when a message asks
+            if span is None:
+                c._text = ""
+            else:
+                c._text = None
+                c._src = self.sink.sources.get(span.file, "")
+        else:
+            c._text = text
+        c.implicit = False
         s.constraints.append(c)
         self.model.constraints.append(c)
 
@@ -603,7 +613,7 @@ class Statements:
         vals = [self.eval(x) for x in e.operands]
         for op, (l, r), (ln, rn) in zip(e.ops, zip(vals, vals[1:]), zip(e.operands, e.operands[1:])):
             eqs = self._compare_eqs(op, l, r, e.span)
-            self._add_constraint("equation", eqs, e.span, _src(self.sink, e.span),
+            self._add_constraint("equation", eqs, e.span, None,
                                  owners_of(l, r))
 
     def _compare_eqs(self, op, l, r, span) -> list[Equation]:
