@@ -1,6 +1,7 @@
 """Geometry checks on the final shape (aidl_lang/output/checks.py): one program per check,
 asserting the code, the span and the structures named; the bundled examples are clean."""
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES
 
@@ -213,3 +214,110 @@ def test_shape_warnings_reach_check_json(tmp_path, capsys):
 def test_every_shape_code_is_explained():
     from aidl_lang.codes import CODES
     assert SHAPE_CODES <= set(CODES)
+
+
+# ------------------------------------------------------------ W0507's whole-area bound
+def _wall_warnings(drawing, min_wall, quick):
+    """W0507's messages, spans and hints for every part, with or without the bound."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.output import checks as C
+    roots = C._part_roots(drawing)
+    by_part: dict = {}
+    for c in drawing.cuts:
+        by_part.setdefault(C._part_of(c.owner, roots), []).append(c)
+    sink = DiagnosticSink()
+    for s, shape in roots.items():
+        if s.kind == "solid":
+            C._check_walls(drawing, s, shape, min_wall, by_part.get(s, []), sink, quick=quick)
+    return [(d.code, d.message, d.span, d.hint) for d in sink.items]
+
+
+_hole = st.one_of(
+    st.tuples(st.just("Rectangle"), st.floats(-18, 18), st.floats(-8, 8), st.floats(0.5, 12),
+              st.floats(0.5, 12)),
+    st.tuples(st.just("Circle"), st.floats(-18, 18), st.floats(-8, 8), st.floats(0.3, 6)))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(_hole, min_size=0, max_size=3), st.sampled_from([0.3, 0.5, 1.0, 2.0, 3.5]))
+def test_W0507_bound_never_misses_a_thin_wall(holes, min_wall):
+    """The quick test (the whole removed area below 2 t^2: no warning) gives exactly the
+    warnings of the full opening, on plates with holes placed anywhere (walls from nothing
+    to thick, holes breaking the edge, corner slivers only)."""
+    from aidl_lang.pipeline import compile_source
+    body = []
+    for i, h in enumerate(holes):
+        if h[0] == "Rectangle":
+            shape = f"Rectangle(center=({h[1]:.3f}, {h[2]:.3f}), width={h[3]:.3f}, height={h[4]:.3f})"
+        else:
+            shape = f"Circle(center=({h[1]:.3f}, {h[2]:.3f}), radius={h[3]:.3f})"
+        body.append(f"    hole h{i} {{\n        s = {shape}\n    }}")
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           + "\n".join(body) + "\n}")
+    c = compile_source(src, "walls.aidl", min_wall=0)
+    assert c.ok and c.drawing is not None
+    assert _wall_warnings(c.drawing, min_wall, True) == _wall_warnings(c.drawing, min_wall, False)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(0.3, 5.0), st.floats(0.02, 0.98), st.sampled_from([0.5, 1.0, 2.0]))
+def test_W0507_bound_on_short_walls_near_the_threshold(length, gap, t):
+    """A wall of `gap * t` over `length * t` under the top edge: its piece's area runs from
+    far below 2 t^2 to far above, so the bound is tried right at the threshold."""
+    from aidl_lang.pipeline import compile_source
+    w, g = length * t, gap * t
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           f"    hole h {{\n        s = Rectangle(center=(0, {10 - g - 2:.6f}), width={w:.6f}, "
+           "height=4)\n    }\n}")
+    c = compile_source(src, "wall.aidl", min_wall=0)
+    assert c.ok and c.drawing is not None
+    assert _wall_warnings(c.drawing, t, True) == _wall_warnings(c.drawing, t, False)
+
+
+def test_W0507_bound_at_the_threshold():
+    """Bisect the length of a thin wall (t = 1 mm) to where the full opening starts to
+    warn (its piece reaching 2 t^2); just below and just above, the quick test agrees.  The
+    part is a disc, so the wall is nearly all the opening removes (no corner slivers): a
+    bound 0.1% too loose fails here."""
+    from aidl_lang.pipeline import compile_source
+
+    def drawing(w):
+        src = ("solid plate {\n    body = Circle(center=(0, 0), radius=20)\n"
+               f"    hole h {{\n        s = Rectangle(center=(0, 17.5), width={w!r}, "
+               "height=4)\n    }\n}")
+        return compile_source(src, "wall.aidl", min_wall=0).drawing
+    lo, hi = 1.0, 8.0
+    assert not _wall_warnings(drawing(lo), 1.0, False) and _wall_warnings(drawing(hi), 1.0, False)
+    while hi - lo > 1e-5:
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if _wall_warnings(drawing(mid), 1.0, False) else (mid, hi)
+    for w in (lo, hi):
+        d = drawing(w)
+        assert _wall_warnings(d, 1.0, True) == _wall_warnings(d, 1.0, False)
+    assert _wall_warnings(drawing(hi), 1.0, True)
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_W0507_bound_on_the_examples_at_larger_minimum_walls(path):
+    """Every example at minimum walls from 0.5 to 4 mm (where some do have thin walls): the
+    same warnings with and without the bound."""
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(path.read_text(), str(path), min_wall=0)
+    for t in (0.5, 1.5, 4.0):
+        assert _wall_warnings(c.drawing, t, True) == _wall_warnings(c.drawing, t, False)
+
+
+def test_W0507_pieces_never_exceed_the_whole():
+    """The law the bound rests on, for the removed sets of the wall tests above: every
+    piece's area is at most the whole set's area."""
+    import manifold3d as mf
+    plate = mf.CrossSection.square((40, 20), center=True)
+    for dx in (4.2, 5.2, 5.4, 6.0):
+        hole = mf.CrossSection.square((10, 10), center=True)
+        shape = plate - hole.translate((-dx, 0)) - hole.translate((dx, 0))
+        for t in (0.5, 1.0, 2.0):
+            opened = shape.offset(-t / 2, mf.JoinType.Round, 2.0, 16).offset(
+                t / 2, mf.JoinType.Round, 2.0, 16)
+            thin = shape - opened
+            whole = thin.area()
+            assert all(p.area() <= whole * (1 + 1e-12) for p in thin.decompose())

@@ -134,3 +134,28 @@ def test_check_imports_no_lark_scipy_writers_or_masked_arrays(tmp_path):
                                                                            "urllib.request"]
     assert (tmp_path / "t.svg").read_text().startswith("<?xml") or \
         "<svg" in (tmp_path / "t.svg").read_text()[:200]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(loop, min_size=1, max_size=3), st.lists(point, min_size=0, max_size=30),
+       st.lists(point, min_size=0, max_size=30))
+def test_inside_of_points_taken_together_is_per_point(loops, a, b):
+    """W0505 tests the points of all the geometries of one part in one call: a point's verdict
+    does not depend on the other points."""
+    A = np.array(a, dtype=float).reshape(-1, 2)
+    B = np.array(b, dtype=float).reshape(-1, 2)
+    both = _inside(np.vstack([A, B]), loops)
+    assert np.array_equal(both, np.concatenate([_inside(A, loops), _inside(B, loops)]))
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.one_of(line, circle, arc, poly))
+def test_sample_counts(item):
+    from aidl_lang.output.checks import _n_samples
+    assert _n_samples(item) == len(_sample(item))
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.one_of(circle, circle, line), min_size=1, max_size=12))
+def test_runs_of_circles_equal_the_per_item_samples(items):
+    assert np.array_equal(_samples(items), np.vstack([_sample(it) for it in items]))
