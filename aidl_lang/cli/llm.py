@@ -9,16 +9,15 @@ import sys
 from pathlib import Path
 
 
-def add_commands(sub, keep=lambda parser, name: parser) -> None:
-    """Register the subcommands on the ``aidl`` argparse subparsers object (``keep``: see
-    :func:`aidl_lang.cli.main._parser`)."""
-    p = keep(sub.add_parser("prompt", help="print the system prompt for an LLM that writes AIDL"),
-             "prompt")
+def add_commands(add) -> None:
+    """Register the subcommands: ``add(name, **kwargs)`` is the ``aidl`` subparsers'
+    ``add_parser`` (or stands in for it: :func:`aidl_lang.cli.main._parser`)."""
+    p = add("prompt", help="print the system prompt for an LLM that writes AIDL")
     p.add_argument("--no-examples", action="store_true", help="leave out the example programs")
     p.add_argument("--words", action="store_true", help="print the size in words to stderr")
     for name, hlp in (("generate", "ask an LLM for a program until it checks"),
                       ("eval", "run `generate` over a prompt list and write a report")):
-        g = keep(sub.add_parser(name, help=hlp), name)
+        g = add(name, help=hlp)
         if name == "generate":
             g.add_argument("prompt", help="what to design, e.g. \"a wrench with a 10 mm jaw\"")
             g.add_argument("-o", "--output", required=True, help="the .aidl file to write")

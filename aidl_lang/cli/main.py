@@ -66,26 +66,30 @@ SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "prompt", "g
 
 
 class _Unused:
-    """Stands in for the parser of a subcommand that was not asked for: its arguments are
-    not added (argparse makes a help formatter for every ``add_argument``; all the
-    subcommands' arguments cost ~3 ms of every command)."""
+    """Stands in for the parser of a subcommand that was not asked for: it is not built and
+    its arguments are not added (each ``ArgumentParser`` translates its headings through
+    ``gettext``, which searches the locale folders every time, and makes a help formatter
+    for every ``add_argument``: the eight other subcommands cost ~9 M instructions, ~3 ms,
+    of every command)."""
 
     def add_argument(self, *args, **kwargs) -> None:
         pass
 
 
 def _parser(only: str | None = None) -> argparse.ArgumentParser:
-    """The ``aidl`` argument parser; ``only``: the subcommand given, whose arguments are the
-    only ones added (``None``: all, for ``aidl --help`` and errors)."""
+    """The ``aidl`` argument parser; ``only``: the subcommand given, the only one whose parser
+    is built (``None``: all, for ``aidl --help`` and errors).  The subcommand list in the
+    usage line is spelled out, so every message reads the same either way."""
     p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
-    sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser,
+                           metavar=None if only is None else "{" + ",".join(SUBCOMMANDS) + "}")
 
-    def keep(parser, name: str):
-        return parser if only is None or only == name else _Unused()
-    r = keep(sub.add_parser("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
-                       description="Compile FILE and write each -o output; the format follows "
-                                   "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
-                                   "unless the whole pipeline succeeded."), "render")
+    def add(name: str, **kwargs):
+        return sub.add_parser(name, **kwargs) if only is None or only == name else _Unused()
+    r = add("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
+            description="Compile FILE and write each -o output; the format follows "
+                        "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
+                        "unless the whole pipeline succeeded.")
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
                    help="output file, format by extension; repeat for several "
@@ -107,7 +111,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
                    help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     _budget_arg(r)
-    c = keep(sub.add_parser("check", help="parse, check and solve; write nothing"), "check")
+    c = add("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -117,14 +121,12 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
     _budget_arg(c)
-    e = keep(sub.add_parser("explain", help="explain a diagnostic code, e.g. aidl explain E0202"),
-             "explain")
+    e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
-    f = keep(sub.add_parser("fmt", help="format .aidl files in place (canonical layout)"), "fmt")
+    f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
-    lsp = keep(sub.add_parser("lsp", help="run the language server on stdin/stdout (for editors)"),
-               "lsp")
+    lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")
     # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
     # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).
     lsp.add_argument("--stdio", action="store_true", help="talk over stdin/stdout (the default)")
@@ -133,12 +135,13 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
     lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
     lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
-    v = keep(sub.add_parser("serve", help="live preview in the browser with parameter sliders "
-                                          "(http://127.0.0.1:PORT/)"), "serve")
+    v = add("serve", help="live preview in the browser with parameter sliders "
+                          "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
-    from .llm import add_commands
-    add_commands(sub, keep)            # prompt, generate, eval
+    if only is None or only in ("prompt", "generate", "eval"):
+        from .llm import add_commands
+        add_commands(add)              # prompt, generate, eval
     return p
 
 
@@ -434,9 +437,12 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
     _command = args.cmd
     try:
-        from .llm import COMMANDS
-        return ({"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
-                 "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve} | COMMANDS)[args.cmd](args)
+        run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+        if run is None:
+            from .llm import COMMANDS
+            run = COMMANDS[args.cmd]
+        return run(args)
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:          # `aidl check --json | head`

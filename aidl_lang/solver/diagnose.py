@@ -147,12 +147,27 @@ def _dense_components(J: np.ndarray) -> np.ndarray:
 
 
 def _dense_block_rank(J: np.ndarray) -> int:
-    """:func:`_block_rank` for a dense ``J`` (one SVD per block of rows sharing unknowns)."""
+    """:func:`_block_rank` for a dense ``J`` (one SVD per block of rows sharing unknowns).
+
+    A block of one row (most blocks of a sketch: a held dimension, a coordinate) is ranked
+    without an SVD: its one singular value is the row's 2-norm, and the rank is 1 when that
+    exceeds ``1e-9 max(1, norm)``.  Only a finite norm at least twice or at most half the
+    threshold is decided so (LAPACK's value and NumPy's differ by a few ulps at most); a
+    row near it, or not finite, takes the SVD as before."""
     if J.shape[0] == 0:
         return 0
     lab = _dense_components(J)
+    single = np.flatnonzero(np.bincount(lab)[lab] == 1)
     rank = 0
+    if len(single):
+        R = J[single]
+        norms = np.sqrt((R * R).sum(axis=1))
+        sure = np.isfinite(norms) & ((norms >= 2e-9) | (norms <= 0.5e-9))
+        rank += int(np.count_nonzero(sure & (norms >= 2e-9)))
+        lab[single[sure]] = -1                          # counted: no SVD for these
     for k in unique(lab):
+        if k < 0:
+            continue
         sub = J[lab == k]
         sub = sub[:, np.any(sub != 0, axis=0)]
         if sub.shape[1] == 0:
@@ -226,25 +241,39 @@ class StructureDof:
 def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     """Per-structure degrees of freedom and floating entities, at the solver's current point
     (call after solving).  ``floating=False`` counts only (singular values, no null space:
-    what the summary line of ``aidl check`` needs)."""
+    what the summary line of ``aidl check`` needs).
+
+    For the count of a model whose whole Jacobian has at most :data:`DENSE_CELLS` cells, that
+    Jacobian is formed once (:attr:`~.hierarchy.Solver.whole`, every row against every
+    structure's columns) and each structure's block is cut out of it: the same entries, bit
+    for bit, as the structure's own tape gives (each entry sums the same terms in the same
+    order), without compiling or evaluating a tape per structure."""
     model = solver.model
     x = solver.x
     out = []
     label_of = {}
-    for g in model.all_geometry():
-        for p in g.points.values():
-            label_of[p.ix] = label_of[p.iy] = g.label
-        for s in g.scalars.values():
-            label_of[s.index] = g.label
+    if floating:
+        for g in model.all_geometry():
+            for p in g.points.values():
+                label_of[p.ix] = label_of[p.iy] = g.label
+            for s in g.scalars.values():
+                label_of[s.index] = g.label
+    systems = []                       # (structure, params, rows, cols)
     for s in model.structures:
         params = list(solver.own.get(id(s), ()))
         for c in s.children.values():
             params += [i for i in solver.frame.get(id(c), ())]
-            for i in solver.frame.get(id(c), ()):
-                label_of[i] = f"{c.path} (position)"
+            if floating:
+                for i in solver.frame.get(id(c), ()):
+                    label_of[i] = f"{c.path} (position)"
         rows = solver.rows_of([s])
         sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
         cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        systems.append((s, params, rows, cols))
+    whole = None
+    if not floating:
+        whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
+    for s, params, rows, cols in systems:
         n_unknowns = len(params)
         if not len(cols):
             out.append(StructureDof(s, 0, 0))
@@ -253,14 +282,19 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
             out.append(StructureDof(s, n_unknowns, 0, free))
             continue
-        t = solver.tape(rows)
         if not floating:
-            if t.n_rows * len(cols) <= DENSE_CELLS:
-                rank = _dense_block_rank(t.jacobian(x, cols, dense=True))
+            if len(rows) * len(cols) <= DENSE_CELLS:
+                if whole is not None:
+                    W, wcols = whole
+                    J = W[rows][:, np.searchsorted(wcols, cols)]
+                else:
+                    J = solver.tape(rows).jacobian(x, cols, dense=True)
+                rank = _dense_block_rank(J)
             else:
-                rank = _block_rank(t.jacobian(x, cols))
+                rank = _block_rank(solver.tape(rows).jacobian(x, cols))
             out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
             continue
+        t = solver.tape(rows)
         J = t.jacobian(x, cols).toarray()
         if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
             out.append(StructureDof(s, n_unknowns, -1))
@@ -279,6 +313,19 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
     return out
+
+
+def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
+    """``(J, cols)``: the dense Jacobian of every row of the model against the union ``cols``
+    (increasing) of ``col_sets``, or None when it would have more than :data:`DENSE_CELLS`
+    cells (each structure then takes its own tape)."""
+    if not col_sets:
+        return None
+    whole = solver.whole
+    cols = unique(np.concatenate(col_sets))
+    if whole.n_rows * len(cols) > DENSE_CELLS:
+        return None
+    return whole.jacobian(x, cols, dense=True), cols
 
 
 def _block_rank(J) -> int:
