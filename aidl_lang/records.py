@@ -96,6 +96,64 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
         names[name] = cls.__dict__.get(name, _MISSING)
     field_names = tuple(names)
     ns: dict = {"_MISSING": _MISSING, "_setattr": object.__setattr__}
+    init = _from_template(cls.__qualname__, names, frozen, slots, ns)
+    if init is None:
+        init = _compiled_init(cls.__qualname__, names, frozen, slots, ns)
+
+    # The methods go into the class: a slotted record is made anew with them in its namespace
+    # (one class creation, no attribute assignments on the class, each of which re-derives
+    # the type's slots), any other record gets them assigned.
+    # Only __init__ is made from code (it is the hot one); the other methods are closures over
+    # the field tuple, the same for every class (compiling them was half of a record's cost).
+    methods, bind = _methods(field_names, eq, frozen)
+    explicit_hash = cls.__dict__.get("__hash__", None) is not None
+    methods["__init__"] = init
+    qualname = cls.__qualname__
+    extra: dict = {}
+    for fn, f in methods.items():
+        if fn in ("__init__", "__eq__", "__repr__") and fn in cls.__dict__:
+            continue                           # written in the class body: kept
+        if fn == "__hash__" and explicit_hash:
+            continue
+        f.__qualname__ = f"{qualname}.{fn}"
+        extra[fn] = f
+    if eq and not frozen and not explicit_hash:
+        extra["__hash__"] = None
+    extra["__record_fields__"] = field_names
+    extra["__record_defaults__"] = {n: d for n, d in names.items() if d is not _MISSING}
+    extra["__match_args__"] = field_names
+    if slots:
+        cls_dict = dict(cls.__dict__)
+        inherited = set()
+        for base in cls.__mro__[1:-1]:
+            inherited.update(base.__dict__.get("__slots__", ()))
+        cls_dict["__slots__"] = tuple(n for n in field_names if n not in inherited)
+        for n in field_names:
+            cls_dict.pop(n, None)
+        cls_dict.pop("__dict__", None)
+        cls_dict.pop("__weakref__", None)
+        cls_dict.update(extra)
+        if frozen:
+            cls_dict["__getstate__"] = _frozen_getstate
+            cls_dict["__setstate__"] = _frozen_setstate
+        cls_dict["__qualname__"] = qualname
+        cls = type(cls)(cls.__name__, cls.__bases__, cls_dict)
+        if frozen:
+            for i, n in enumerate(field_names):     # a frozen record's __init__ sets its slots
+                ns[f"_s_{n}"] = ns[f"_s{i}"] = _slot_setter(cls, n)
+    else:
+        for k, v in extra.items():
+            setattr(cls, k, v)
+        for n, d in names.items():             # class attributes keep plain defaults only
+            if isinstance(d, _Factory) and n in cls.__dict__:
+                delattr(cls, n)
+    bind(cls)
+    return cls
+
+
+def _compiled_init(qualname: str, names: dict, frozen: bool, slots: bool, ns: dict):
+    """The ``__init__`` of a record with fields ``names`` (field -> default), compiled from
+    source in ``ns`` (for the shapes :func:`_from_template` has no template for)."""
     params, body = [], []
     for name, default in names.items():
         if default is _MISSING:
@@ -109,59 +167,15 @@ def _process(cls, eq: bool, frozen: bool, slots: bool):
             ns[f"_d_{name}"] = default
             params.append(f"{name}=_d_{name}")
             value = name
-        if frozen and slots:                   # the slot's own setter (bound below)
+        if frozen and slots:                   # the slot's own setter (bound by _process)
             body.append(f"  _s_{name}(self, {value})")
         elif frozen:
             body.append(f"  _setattr(self, {name!r}, {value})")
         else:
             body.append(f"  self.{name} = {value}")
-    init = _from_template(cls.__qualname__, names, frozen, slots, ns)
-    if init is None:
-        src = [f"def __init__(self, {', '.join(params)}):"] + (body or ["  pass"])
-        exec(compile("\n".join(src), f"<record {cls.__qualname__}>", "exec"), ns)
-        init = ns["__init__"]
-
-    if slots:
-        cls_dict = dict(cls.__dict__)
-        inherited = set()
-        for base in cls.__mro__[1:-1]:
-            inherited.update(base.__dict__.get("__slots__", ()))
-        cls_dict["__slots__"] = tuple(n for n in field_names if n not in inherited)
-        for n in field_names:
-            cls_dict.pop(n, None)
-        cls_dict.pop("__dict__", None)
-        cls_dict.pop("__weakref__", None)
-        qualname = cls.__qualname__
-        cls = type(cls)(cls.__name__, cls.__bases__, cls_dict)
-        cls.__qualname__ = qualname
-        if frozen:
-            cls.__getstate__ = _frozen_getstate
-            cls.__setstate__ = _frozen_setstate
-            for n in field_names:              # a frozen record's __init__ sets its slots
-                ns[f"_s_{n}"] = _slot_setter(cls, n)
-            for i, n in enumerate(field_names):     # the template's names for the same
-                ns[f"_s{i}"] = ns[f"_s_{n}"]
-    cls.__record_fields__ = field_names
-    cls.__record_defaults__ = {n: d for n, d in names.items() if d is not _MISSING}
-    cls.__match_args__ = field_names
-    # Only __init__ is compiled (it is the hot one); the other methods are closures over the
-    # field tuple, the same for every class (compiling them was half of a record's cost).
-    methods = _methods(cls, field_names, eq, frozen)
-    explicit_hash = cls.__dict__.get("__hash__", None) is not None
-    methods["__init__"] = init
-    for fn, f in methods.items():
-        if fn in ("__init__", "__eq__", "__repr__") and fn in cls.__dict__:
-            continue                           # written in the class body: kept
-        if fn == "__hash__" and explicit_hash:
-            continue
-        f.__qualname__ = f"{cls.__qualname__}.{fn}"
-        setattr(cls, fn, f)
-    if eq and not frozen and not explicit_hash:
-        cls.__hash__ = None
-    for n, d in names.items():                 # class attributes keep plain defaults only
-        if isinstance(d, _Factory) and n in cls.__dict__ and not slots:
-            delattr(cls, n)
-    return cls
+    src = [f"def __init__(self, {', '.join(params)}):"] + (body or ["  pass"])
+    exec(compile("\n".join(src), f"<record {qualname}>", "exec"), ns)
+    return ns["__init__"]
 
 
 MAX_TEMPLATE_FIELDS = 12
@@ -241,9 +255,15 @@ def _from_template(qualname: str, names: dict, frozen: bool, slots: bool, ns: di
     return types.FunctionType(code, ns, "__init__", tuple(defaults) or None)
 
 
-def _methods(cls, field_names: tuple, eq: bool, frozen: bool) -> dict:
+def _methods(field_names: tuple, eq: bool, frozen: bool) -> tuple[dict, object]:
     """``__repr__`` and, per the options, ``__eq__``, ``__hash__``, ``__setattr__`` and
-    ``__delattr__`` of a record class, with the standard library's meaning."""
+    ``__delattr__`` of a record class, with the standard library's meaning; and ``bind``, to
+    be called with the class once it is made (the frozen methods refer to it)."""
+    cls = None
+
+    def bind(c) -> None:
+        nonlocal cls
+        cls = c
     if len(field_names) > 1:
         key = operator.attrgetter(*field_names)           # the field tuple
     elif field_names:
@@ -283,7 +303,7 @@ def _methods(cls, field_names: tuple, eq: bool, frozen: bool) -> dict:
             def __hash__(self):
                 return hash(key(self))
             out["__hash__"] = __hash__
-    return out
+    return out, bind
 
 
 def _slot_setter(cls, name: str):

@@ -1,0 +1,490 @@
+"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
+``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
+
+Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
+An output file is written only when the whole pipeline succeeded and every requested format was
+produced (each written to a temporary file beside it, then renamed), so a good drawing is never
+replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
+directory as output, writes through a symlink (the link stays), and creates files with the
+user's umask (an existing file keeps its mode); docs/outputs.md has the details.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+from ..diagnostics import Diagnostic, DiagnosticSink, render_text
+
+
+_COLUMNS: int | None = None
+
+
+def _columns() -> int:
+    """The terminal's width as ``shutil.get_terminal_size`` finds it (``$COLUMNS``, else the
+    terminal of stdout, else 80), without importing :mod:`shutil`."""
+    global _COLUMNS
+    if _COLUMNS is None:
+        try:
+            _COLUMNS = int(os.environ.get("COLUMNS", "0"))
+        except ValueError:
+            _COLUMNS = 0
+        if _COLUMNS <= 0:
+            try:
+                _COLUMNS = os.get_terminal_size(sys.__stdout__.fileno()).columns
+            except (AttributeError, ValueError, OSError):
+                _COLUMNS = 0
+        if _COLUMNS <= 0:
+            _COLUMNS = 80
+    return _COLUMNS
+
+
+class _Formatter(argparse.HelpFormatter):
+    """argparse's help layout at the terminal's width.  argparse makes a formatter for every
+    ``add_argument`` and each one imported :mod:`shutil` (which imports ``bz2`` and ``lzma``)
+    and asked the terminal: ~4 ms of every ``aidl`` command."""
+
+    def __init__(self, prog, indent_increment=2, max_help_position=24, width=None):
+        super().__init__(prog, indent_increment, max_help_position,
+                         _columns() - 2 if width is None else width)
+
+
+class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", _Formatter)
+        super().__init__(*args, **kwargs)
+
+    def error(self, message):      # usage errors: exit 2 with a short message
+        self.print_usage(sys.stderr)
+        print(f"aidl: error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+
+SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "prompt", "generate", "eval")
+
+
+class _Unused:
+    """Stands in for the parser of a subcommand that was not asked for: it is not built and
+    its arguments are not added (each ``ArgumentParser`` translates its headings through
+    ``gettext``, which searches the locale folders every time, and makes a help formatter
+    for every ``add_argument``: the eight other subcommands cost ~9 M instructions, ~3 ms,
+    of every command)."""
+
+    def add_argument(self, *args, **kwargs) -> None:
+        pass
+
+
+def _parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The ``aidl`` argument parser; ``only``: the subcommand given, the only one whose parser
+    is built (``None``: all, for ``aidl --help`` and errors).  The subcommand list in the
+    usage line is spelled out, so every message reads the same either way."""
+    p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
+    sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser,
+                           metavar=None if only is None else "{" + ",".join(SUBCOMMANDS) + "}")
+
+    def add(name: str, **kwargs):
+        return sub.add_parser(name, **kwargs) if only is None or only == name else _Unused()
+    r = add("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
+            description="Compile FILE and write each -o output; the format follows "
+                        "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
+                        "unless the whole pipeline succeeded.")
+    r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
+    r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
+                   help="output file, format by extension; repeat for several "
+                        "(default: FILE with .svg)")
+    r.add_argument("--show", default="", metavar="LAYERS",
+                   help="debug layers in SVG/PNG, comma-separated: construction,holes,bboxes")
+    r.add_argument("--svg-style", choices=["preview", "laser"], default="preview",
+                   help="preview: filled solids (default); laser: stroke-only red cut and blue "
+                        "engrave hairlines, one element per loop")
+    r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
+    r.add_argument("--png-width", type=int, default=None, metavar="PX",
+                   help="PNG width in pixels (overrides --dpi)")
+    r.add_argument("--thickness", default=None, metavar="LENGTH",
+                   help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
+                        "`thickness`, else 3 mm)")
+    r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help="override a model param, e.g. --set width=40mm")
+    r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    _budget_arg(r)
+    c = add("check", help="parse, check and solve; write nothing")
+    c.add_argument("file")
+    c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
+    c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    c.add_argument("--dof", action="store_true",
+                   help="report degrees of freedom per structure, floating entities and "
+                        "redundant constraints")
+    _budget_arg(c)
+    e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
+    e.add_argument("code")
+    f = add("fmt", help="format .aidl files in place (canonical layout)")
+    f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
+    f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
+    lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")
+    # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
+    # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin/stdout (the default)")
+    lsp.add_argument("--clientProcessId", "--client-process-id", type=int, metavar="PID",
+                     help="the editor's process id (accepted; the server exits when stdin closes)")
+    lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
+    lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
+    lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
+    v = add("serve", help="live preview in the browser with parameter sliders "
+                          "(http://127.0.0.1:PORT/)")
+    v.add_argument("file")
+    v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    if only is None or only in ("prompt", "generate", "eval"):
+        from .llm import add_commands
+        add_commands(add)              # prompt, generate, eval
+    return p
+
+
+def _port(text: str) -> int:
+    if not (text.isdigit() and int(text) <= 65535):
+        raise argparse.ArgumentTypeError(f"--port expects a number from 0 to 65535, got `{text}`")
+    return int(text)
+
+
+def _budget_factor(text: str) -> float:
+    try:
+        k = float(text)
+    except ValueError:
+        k = -1.0
+    if not 0 < k <= 1000:
+        raise argparse.ArgumentTypeError(f"--budget expects a factor between 0 and 1000, got `{text}`")
+    return k
+
+
+def _budget_arg(p) -> None:
+    p.add_argument("--budget", type=_budget_factor, default=1.0, metavar="K",
+                   help="multiply the evaluation budget (steps, objects, sizes, time; "
+                        "docs/language.md §8.1) by K, e.g. --budget 4")
+
+
+def _budget(args):
+    from ..limits import DEFAULT_BUDGET
+    return DEFAULT_BUDGET.scaled(args.budget)
+
+
+def _overrides(items: list[str]) -> dict[str, str]:
+    out = {}
+    for it in items:
+        if "=" not in it:
+            print(f"aidl: error: --set expects NAME=VALUE, got `{it}`", file=sys.stderr)
+            raise SystemExit(2)
+        k, v = it.split("=", 1)
+        out[k.strip()] = v.strip()
+    return out
+
+
+def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = None) -> None:
+    if as_json:
+        doc = {"ok": ok, "diagnostics": [d.to_json(sink.sources) for d in sink.items]}
+        doc.update(extra or {})
+        print(json.dumps(doc, indent=2))
+        return
+    color = sys.stderr.isatty() and not os.environ.get("NO_COLOR")
+    for d in sink.items:
+        print(render_text(d, sink.sources, color=color), file=sys.stderr)
+        print(file=sys.stderr)
+    n_err = sum(d.is_error for d in sink.items)
+    n_warn = sum(d.severity == "warning" for d in sink.items)
+    if n_err:
+        print(f"aidl: {n_err} error{'s' if n_err != 1 else ''}"
+              + (f", {n_warn} warning{'s' if n_warn != 1 else ''}" if n_warn else ""), file=sys.stderr)
+
+
+def _read(path: str, as_json: bool) -> str | None:
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        sink = DiagnosticSink()
+        sink.add(Diagnostic("E0004", f"cannot read `{path}`: {getattr(e, 'strerror', None) or e}",
+                            None, hint="check the file name"))
+        _emit(sink, as_json, False)
+        return None
+
+
+def cmd_check(args) -> int:
+    from ..pipeline import compile_source
+    src = _read(args.file, args.json)
+    if src is None:
+        return 1
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
+                         budget=_budget(args))
+    extra = {}
+    dofs = None
+    if res.solve is not None:
+        extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
+                          "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
+                          "max_residual": res.solve.max_residual}
+        if args.dof and res.ok:
+            from ..pipeline import report_redundancies
+            from ..solver.diagnose import degrees_of_freedom
+            report_redundancies(res.sink, res.solve)
+            dofs = degrees_of_freedom(res.solve.solver)
+            extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
+                             "dof": d.dof, "floating": d.floating} for d in dofs]
+        if res.ok:
+            from ..solver.diagnose import degrees_of_freedom, freedom_text
+            dofs_all = (dofs if dofs is not None
+                        else degrees_of_freedom(res.solve.solver, floating=False))
+            extra["freedom"] = freedom_text(dofs_all)
+    _emit(res.sink, args.json, res.ok, extra)
+    if res.ok and not args.json:
+        s = res.solve
+        print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
+              f"{s.n_equations} equations, solved in {s.iterations} Newton steps; "
+              f"{extra.get('freedom', 'not solved')})")
+        if dofs is not None:
+            _print_dof(dofs)
+    return 0 if res.ok else 1
+
+
+def _print_dof(dofs) -> None:
+    """One line per structure: its own unknowns (geometry and children's positions), the
+    degrees of freedom its constraints leave, and what still floats."""
+    width = max(len(d.structure.path) for d in dofs)
+    print(f"{'structure':{width}}  unknowns  dof  floating")
+    for d in dofs:
+        fl = ", ".join(d.floating[:6]) + (f", ... ({len(d.floating)})" if len(d.floating) > 6
+                                           else "")
+        print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
+
+
+def _usage(msg: str) -> int:
+    print(f"aidl: error: {msg}", file=sys.stderr)
+    return 2
+
+
+def _length_mm(text: str) -> float | None:
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length up to
+    the model extent (1e6 mm)."""
+    import re
+    m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
+        (m.group(2) or "mm").lower()]
+    from ..limits import MAX_EXTENT
+    return v if 0 < v <= MAX_EXTENT else None
+
+
+def _outputs(args) -> list[Path] | int:
+    """The output paths, checked before compiling (usage errors exit 2): known extensions,
+    not the program itself, not a directory; a default only for a regular input file."""
+    from ..output import FORMATS
+    if args.output:
+        outs = [Path(o) for o in args.output]
+    else:
+        src = Path(args.file)
+        special = os.path.abspath(args.file).startswith(("/dev/", "/proc/"))
+        if args.file == "-" or special or not src.is_file():
+            if args.file == "-" or special or src.exists():
+                return _usage(f"`{args.file}` is not a regular file, so there is no default "
+                              "output name: give one with -o OUT.svg")
+            return []              # a missing file: reported as E0004 when read
+        if src.suffix.lower() == ".svg":
+            return _usage(f"the default output `{src.with_suffix('.svg')}` is the program "
+                          "itself: give an output name with -o")
+        outs = [src.with_suffix(".svg")]
+    seen = set()
+    for o in outs:
+        real = os.path.realpath(o)
+        if args.file != "-" and os.path.exists(args.file) and os.path.exists(real) \
+                and os.path.samefile(real, args.file):
+            return _usage(f"`{o}` is the program being rendered; refusing to overwrite it")
+        if o.is_dir():
+            return _usage(f"`{o}` is a directory; give a file name, e.g. {o / 'part.svg'}")
+        if o.suffix.lower() not in FORMATS:
+            return _usage(f"cannot tell the format of `{o}` from its extension; use one of "
+                          + ", ".join(sorted(FORMATS)))
+        if real in seen:
+            return _usage(f"`{o}` is given twice")
+        seen.add(real)
+    return outs
+
+
+def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
+    """Write every output or none: each to a temporary file beside its target, then renamed
+    over it.  A symlink is written through (its target is replaced, the link kept).  A new file
+    gets the permissions the umask allows (0666 & ~umask); an existing file keeps its mode.
+    Returns an error message, or None."""
+    staged = []
+    out = items[0][0] if items else ""
+    try:
+        for out, data in items:
+            target = Path(os.path.realpath(out))
+            try:
+                mode = os.stat(target).st_mode & 0o7777
+            except FileNotFoundError:
+                mask = os.umask(0)
+                os.umask(mask)
+                mode = 0o666 & ~mask
+            import tempfile
+            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                                       dir=str(target.parent))
+            staged.append((tmp, target))
+            with os.fdopen(fd, "wb") as f:
+                f.write(data)
+            os.chmod(tmp, mode)
+        for tmp, target in staged:
+            os.replace(tmp, target)
+        staged = []
+        return None
+    except OSError as e:
+        return f"cannot write `{out}`: {e.strerror or e}"
+    finally:
+        for tmp, _ in staged:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+
+
+def cmd_render(args) -> int:
+    from ..pipeline import compile_source
+    from ..output import Options, OutputError, build, encode
+    outs = _outputs(args)
+    if isinstance(outs, int):
+        return outs
+    show = tuple(x.strip() for x in args.show.split(",") if x.strip())
+    from ..output.svg import SHOW
+    if set(show) - set(SHOW):
+        return _usage(f"--show takes {', '.join(SHOW)}; got `{args.show}`")
+    thickness = None
+    if args.thickness is not None:
+        thickness = _length_mm(args.thickness)
+        if thickness is None:
+            return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
+                          f"`{args.thickness}`")
+    if args.file == "-":
+        src = sys.stdin.read()
+    else:
+        src = _read(args.file, args.json)
+        if src is None:
+            return 1
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
+                         budget=_budget(args))
+    if not res.ok:
+        _emit(res.sink, args.json, False)
+        return 1
+    output = build(res.drawing, res.model.root.name)
+    opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
+                  thickness=thickness)
+    try:
+        items = [(o, encode(output, o.suffix, opt)) for o in outs]
+    except OutputError as e:                 # a missing library, an impossible size
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 1
+    err = _write_all(items)
+    if err:
+        print(f"aidl: error: {err}", file=sys.stderr)
+        return 1
+    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
+    if not args.json:
+        for o in outs:
+            print(f"wrote {o}")
+    return 0
+
+
+def cmd_explain(args) -> int:
+    from ..codes import CODES
+    code = args.code.upper()
+    if code not in CODES:
+        print(f"aidl: unknown code `{args.code}`; known codes: {', '.join(sorted(CODES))}",
+              file=sys.stderr)
+        return 2
+    title, text = CODES[code]
+    print(f"{code}: {title}\n\n{text.strip()}")
+    return 0
+
+
+def cmd_fmt(args) -> int:
+    from ..editor.fmt import main as fmt_main
+    return fmt_main(args.files, check=args.check)
+
+
+def cmd_lsp(args) -> int:
+    for flag, given in (("--node-ipc", args.node_ipc), ("--pipe", args.pipe),
+                        ("--socket", args.socket)):
+        if given:
+            print(f"aidl: error: `aidl lsp {flag}` is not supported: the server talks over "
+                  "stdin/stdout (use the client's stdio transport, `--stdio`)", file=sys.stderr)
+            return 2
+    from ..editor.lsp.worker import spawn
+    worker = spawn()                   # the diagnostics worker warms up while the server loads
+    from ..editor.lsp.server import main as lsp_main
+    return lsp_main(worker)
+
+
+def cmd_serve(args) -> int:
+    from ..serve import serve
+    return serve(args.file, args.port)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run one ``aidl`` command; returns the exit status (see the module text)."""
+    global _command
+    argv = sys.argv[1:] if argv is None else list(argv)
+    first = argv[0] if argv else None
+    args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
+    _command = args.cmd
+    try:
+        run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+        if run is None:
+            from .llm import COMMANDS
+            run = COMMANDS[args.cmd]
+        return run(args)
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:          # `aidl check --json | head`
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:
+            pass
+        return 0
+    except RecursionError:
+        print("aidl: error[E0302]: the program is nested too deeply to compile", file=sys.stderr)
+        return 1
+    except Exception as e:  # an internal error: report it as such, never a raw traceback
+        print(f"aidl: internal error: {type(e).__name__}: {e}\n"
+              "This is a bug in aidl, not in your program. Please report it with the input file.",
+              file=sys.stderr)
+        if os.environ.get("AIDL_DEBUG"):
+            raise
+        return 3
+
+
+_command: str | None = None
+# Commands that leave nothing behind when main() returns: outputs are written and renamed,
+# cache files written, no threads or atexit work.
+_QUICK_EXIT = frozenset({"check", "render", "explain", "fmt"})
+
+
+def entry() -> None:
+    """The ``aidl`` command (and ``python -m aidl_lang.cli``): :func:`main`, then exit with its
+    status.  After the short commands (``check``, ``render``, ``explain``, ``fmt``) the
+    process ends with ``os._exit`` once stdout and stderr are flushed, as mypy does: tearing
+    the interpreter down (freeing every object of NumPy, Manifold, the model and the modules)
+    cost 20-35 ms of a ~0.25 s cold ``aidl check`` and has no effect a user could see."""
+    rc = main()
+    if _command in _QUICK_EXIT:
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):      # a closed pipe: nothing more can be shown
+                pass
+        os._exit(rc)
+    sys.exit(rc)
+
+
+if __name__ == "__main__":
+    entry()

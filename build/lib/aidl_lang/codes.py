@@ -1,0 +1,294 @@
+"""Every diagnostic code with a title and a longer explanation (``aidl explain CODE``)."""
+
+CODES: dict[str, tuple[str, str]] = {
+    "E0001": ("syntax error", """
+The text does not follow AIDL's grammar. The message lists what the parser expected at that
+point. The parser skips the bad statement and goes on, so later errors are reported too.
+
+    solid plate {
+        body = Rectangle(center=(0, 0) width=40, height=20)   # missing `,`
+    }
+"""),
+    "E0002": ("unexpected character or unterminated string", """
+A character that cannot start any token, or a string without its closing quote.
+
+    label = "Hello      # close the string: "Hello"
+"""),
+    "E0003": ("nesting too deep", """
+Brackets are nested more than 64 levels deep. Split the expression into named constants.
+"""),
+    "E0004": ("cannot read the input file", "The file does not exist or is not UTF-8 text."),
+    "E0101": ("unknown name", """
+A name is used that is not defined in this structure, an enclosing one, or the file
+(params, constants, templates). The message suggests the nearest known names.
+
+    solid s { c = Circle(center=(0, 0), radius=rad) }   # `rad` is not defined
+"""),
+    "E0102": ("unknown member", """
+`thing.member` names a member that `thing` does not have. Rectangles have top_left, top_right,
+bottom_left, bottom_right, center, top/bottom/left/right (edges), width, height, bb; lines have
+start, end, midpoint, length; circles have center, radius, diameter; structures have their
+children, their named geometry and `bb`.
+
+    corner = body.top_lft     # did you mean `top_left`?
+"""),
+    "E0103": ("unknown function, primitive or constraint", """
+The called name is not a primitive (Circle, Rectangle, ...), a constraint (Coincident, Above,
+...), a function (sin, sqrt, range, ...) or a template defined with `def`.
+
+    Rotate(body, 30 deg)     # there is no Rotate: use `rotation=30 deg` or Angle(...)
+"""),
+    "E0104": ("wrong number of arguments", """
+The call has more positional arguments than the primitive or constraint takes, in any of its
+forms. The hint lists the accepted forms.
+
+    Circle((0, 0), 5, 7)     # Circle(center, radius)
+"""),
+    "E0105": ("unknown keyword argument", """
+A keyword argument that the primitive, constraint or template does not have.
+
+    Circle(center=(0, 0), r=5)     # the argument is `radius`
+"""),
+    "E0106": ("missing argument", """
+A required argument is missing. Dimensions (width, height, radius) are required because they
+are the design intent that the solver holds.
+
+    Rectangle(center=(0, 0), width=10)     # height is missing
+"""),
+    "E0107": ("name defined twice", """
+Two geometry objects or structures of one structure have the same name.
+
+    a = Circle((0, 0), 2)
+    a = Circle((5, 0), 2)     # name the second one `b`
+"""),
+    "E0108": ("wrong type", """
+A value of the wrong kind: a length where a point is expected, a Circle where a Line is
+expected, a comparison joined with `or`, and so on.
+
+    Horizontal(wheel)      # Horizontal takes a Line or two points, wheel is a Circle
+"""),
+    "E0109": ("unit mismatch", """
+Lengths, angles and plain numbers cannot be mixed in + - and comparisons. A bare number
+adapts: it is in the file's unit next to a length and in degrees next to an angle.
+
+    w = 10 mm + 30 deg      # a length plus an angle
+"""),
+    "E0110": ("index out of range", """
+A list is indexed past its end. Lists from loops and comprehensions are indexed from 0.
+
+    holes = [Circle((i * 10, 0), 2) for i in range(4)]
+    Fixed(holes[4])      # valid indices are 0 to 3
+"""),
+    "E0111": ("not iterable / not callable / not indexable", """
+A `for` loop over something that is not a list, a call of a value, or indexing a non-list.
+"""),
+    "E0112": ("math error", "Division by zero, sqrt of a negative number, and similar."),
+    "E0113": ("bad --set override", """
+`--set NAME=VALUE` names a param the file does not declare, or its value cannot be read.
+Declare overridable values with `param NAME = VALUE` at the top of the file.
+"""),
+    "E0114": ("import not found or not allowed", """
+`import "file.aidl"` resolves relative to the importing file and must stay inside that file's
+folder tree; `import "std/NAME.aidl"` reads the standard library. Nothing else can be read.
+"""),
+    "E0115": ("import cycle", "Two files import each other. Move shared templates to a third file."),
+    "E0116": ("top-level statement inside a structure", """
+`param`, `def`, `import` and `units` belong at the top level of a file.
+"""),
+    "E0117": ("geometry outside a structure", """
+Geometry and constraints live in a structure. Loose top-level geometry is put into an implicit
+root named `model`, but inside a template call or a constant it has nowhere to go.
+"""),
+    "E0118": ("value depends on the solver", """
+Conditions (`if`, `a if c else b`, comprehension filters), `//`, `%`, round() and f-strings need
+values known before solving. Geometry positions are only known after the solve: write a
+constraint instead, or test a param.
+"""),
+    "E0119": ("template instance without a name", """
+A template call creates a child structure, and structures have names: `left = wheel(r=10)`.
+"""),
+    "E0120": ("Text outside a drawing", """
+Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
+
+    solid tag {
+        plate = RoundedRectangle(center=(0, 0), width=60, height=20, corner_radius=3)
+        drawing label { t = Text("AIDL", position=(0, -2), size=8) }
+    }
+"""),
+    "E0124": ("param value outside its range", """
+A param may declare the range its value is meant to take (used by `aidl serve` for its
+sliders, and checked by `--set`):
+
+    param width = 40 mm, min=20 mm, max=80 mm, step=1 mm
+
+The value, and any `--set width=...`, must lie between `min` and `max` (both optional);
+`min`, `max` and `step` have the param's unit (a bare number means the file's unit), `min` is
+not larger than `max`, and `step` is positive.  Choose a value inside the range or widen it.
+"""),
+    "E0201": ("geometry refers to another structure (validity rule 1)", """
+Geometry may only be built from geometry of its own structure. This keeps each structure
+solvable on its own. Give the geometry its own starting value and relate it to the other
+structure with a constraint in a structure that contains both:
+
+    solid phone {
+        solid base { body = Rectangle(center=(0, 0), width=60, height=30) }
+        solid dial {
+            plate = Circle(center=base.body.center, radius=10)   # error: base is another structure
+            plate = Circle(center=(0, 0), radius=10)             # fix
+        }
+        CenterInside(dial, base)                                  # relate them here
+    }
+"""),
+    "E0202": ("constraint outside its structure's subtree (validity rule 2)", """
+A constraint may only refer to its own structure and its descendants. A constraint relating two
+sibling structures belongs in their common parent; the hint names it.
+
+    solid phone {
+        solid base { body = Rectangle(center=(0, 0), width=60, height=30) }
+        solid dial {
+            plate = Circle(center=(0, 0), radius=10)
+            CenterInside(self, base)      # error: base is not inside dial
+        }
+        CenterInside(dial, base)          # fix: in the common parent
+    }
+"""),
+    "E0204": ("template argument is geometry", """
+Template parameters are values (numbers, lengths, angles, booleans, strings). Relate a template
+instance to other parts with constraints in the parent structure.
+"""),
+    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items."),
+    "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
+    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
+    "E0304": ("evaluation budget exhausted", """
+One compile has one evaluation budget (docs/language.md §8.1): 250 000 steps (every loop
+iteration, comprehension element, call and template instance counts one), 120 000 points,
+geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
+one list, and 60 s of wall time for interpreting and solving. Each construct's own limit
+(E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
+their product: nested loops, a template that instantiates itself several times per level.
+The error points at the outermost loop or template instance running when the budget ran out
+and labels the ones inside it.
+
+    solid s {
+        for i in range(1000) {
+            for j in range(1000) { ... }    # 1 000 000 iterations: over the budget
+        }
+    }
+
+Build less, or, if the model really needs it, raise every figure with `--budget K`
+(e.g. `aidl render model.aidl --budget 4`).
+"""),
+    "E0305": ("number not finite or beyond the model extent", """
+A computed number is infinite or not a number (NaN), e.g. `1 / 5e-324` or `x - x` with an
+infinite `x`, or a coordinate, size or length is beyond the model extent of 1e6 mm (1 km).
+Such numbers would make the solver and the writers produce nothing useful, so the expression
+that produced them is an error.
+
+    i = 1 / 5e-324                                 # inf
+    c = Circle(center=(0, 0), radius=i - i)        # NaN radius: E0305
+"""),
+    "E0401": ("constraints cannot be satisfied", """
+After solving, some constraints still do not hold: they contradict each other or a dimension
+held by a constructor (width, radius, ...). The message lists them with their residuals (how far
+off they are, in mm or radians). When the solver can find the smallest set of constraints that
+contradict each other (a rank-revealing factorization of the Jacobian), the error names exactly
+that set, one label per member, constructor-held dimensions included. Change one member of the
+set so that they agree; the others can stay.
+
+    solid s {
+        c = Circle(center=(0, 0), radius=5)
+        Radius(c, 7)      # contradicts radius=5 given to the constructor
+    }
+"""),
+    "E0402": ("solver iteration budget exhausted", """
+The solver stops after a fixed number of Newton steps for the whole model (20000) instead of
+running on: this happens when the constraints are far from satisfiable from the starting
+positions. Give starting positions closer to the intended shape and check the constraints named
+by other errors.
+"""),
+    "W0401": ("redundant constraint", """
+The constraint holds already because other constraints (or a constructor's held dimension) imply
+it: it adds no information. It is harmless, but if a value in it changes later the model becomes
+over-constrained. Reported by `aidl check --dof`.
+
+    solid s {
+        r = Rectangle(center=(0, 0), width=30, height=20)
+        Horizontal(r.top)     # a Rectangle's top is already horizontal
+    }
+"""),
+    "W0403": ("constraint ended on another branch", """
+Convention-dependent constraints (Angle sense, Tangent side, point-line Distance side) pick the
+branch nearest to satisfied at the starting geometry. This warning says the solve ended on the
+other branch (for Angle: a line now points the opposite way), which usually means the
+starting positions were far from the intended shape.
+"""),
+    "W0501": ("hole refilled by another solid", """
+A hole cuts only the solid it is declared in. When that solid is then united with a sibling
+(or its parent's own geometry) that covers the hole, the hole is filled again and does not cut
+the final part. The warning names the solid that refills it and how much of the hole still
+cuts. Declare the hole in the common parent, so that it cuts everything united there:
+
+    solid lock {
+        solid body { b = Rectangle(center=(0, 0), width=40, height=30)
+                     hole key { k = Circle(center=(0, 8), radius=3) } }
+        solid shackle { s = Rectangle(center=(0, 14), width=30, height=8) }   # covers `key`
+    }
+    # fix: move `hole key { ... }` out of `body` into `lock`
+"""),
+    "W0502": ("hole cuts nothing", """
+The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
+solid (for example `CenterInside(bore, self)`) or declare it in the solid it should cut.
+"""),
+    "W0503": ("hole removes all of its solid", """
+The hole covers the whole solid it is declared in, so nothing of that solid is left. Make the
+hole smaller, or move it so that material remains around it.
+"""),
+    "W0504": ("solid falls apart into separate pieces", """
+The final shape of a solid part is several disconnected pieces; the warning lists which children
+or geometry make up each piece. Usually a child floats free of the body (feet, a handle) because
+a constraint places it with a gap, or it touches the body at a single point (a round end
+resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
+edge; if they really are separate parts, make the structure an
+`assembly` (its parts are separate by design and are not checked against each other).
+"""),
+    "W0505": ("engraving off the material", """
+A drawing inside a solid part runs outside the part's outline or across one of its holes, where
+there is no material to engrave. Move or shrink the drawing so that it lies on the material, or
+put a drawing that is only an illustration at assembly level, beside the part.
+"""),
+    "W0506": ("geometry that adds nothing", """
+A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
+shape: typically copies of a pattern that land inside a filled solid, or a feature placed at the
+wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it.
+"""),
+    "W0507": ("wall thinner than the minimum", """
+Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
+`aidl check --min-wall MM` or `aidl render --min-wall MM`; 0 turns it off): a laser or router
+burns through or breaks such a wall. The warning names the holes and the outer edge that the
+wall lies between, its approximate width and length and where it is. Move or shrink the hole
+so that enough material is left.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole slot { r = Rectangle(center=(0, 6.85), width=10, height=6) }   # 0.15 mm to the edge
+    }
+"""),
+    "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0104": ("empty drawing", """
+The file is empty (nothing but comments), or its structures build no geometry at all, so the
+SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and
+constants is a library and gets no warning.
+"""),
+    "W0105": ("character not in the engraving font", """
+`Text` is drawn with a single-stroke (Hershey) font that covers printable ASCII. Characters
+outside it (accents, other scripts, tabs, symbols such as `☃`) cannot be drawn and are left
+out; the warning names each one with its code point.
+
+    drawing labels { t = Text("Café", (0, 0)) }    # `é` (U+00E9) is left out
+"""),
+    "W0402": ("open outline", """
+Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;
+an open chain is written as engraving, not cut.
+Share endpoints (`Line(start=a.end, end=b.start)`) or add Coincident constraints.
+"""),
+}

@@ -1,0 +1,185 @@
+"""One diagnostic model for every pipeline stage, with text (rustc style) and JSON renderings.
+
+A :class:`Diagnostic` has a stable ``code`` (see :mod:`aidl_lang.codes`), a severity, a message,
+labelled source spans, a hint and an optional suggested fix.  Stages never raise Python
+exceptions at the user: they append diagnostics to a :class:`DiagnosticSink`; a stage that
+cannot go on raises :class:`Abort` after recording why.
+"""
+from __future__ import annotations
+
+from .records import dataclass, field
+from collections.abc import Iterable
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A source range. Lines and columns are 1-based; ``end_col`` is exclusive; offsets 0-based."""
+
+    file: str
+    line: int
+    col: int
+    end_line: int
+    end_col: int
+    start: int = 0
+    end: int = 0
+
+    def to_json(self) -> dict:
+        return {"file": self.file, "line": self.line, "column": self.col,
+                "end_line": self.end_line, "end_column": self.end_col,
+                "start": self.start, "end": self.end}
+
+    def cover(self, other: "Span | None") -> "Span":
+        if other is None or other.file != self.file:
+            return self
+        a, b = (self, other) if self.start <= other.start else (other, self)
+        e = self if self.end >= other.end else other
+        return Span(self.file, a.line, a.col, e.end_line, e.end_col, a.start, e.end)
+
+
+@dataclass(slots=True)
+class Label:
+    span: Span
+    message: str = ""
+    primary: bool = True
+
+
+@dataclass(slots=True)
+class Fix:
+    """A suggested edit: replace the text at ``span`` with ``replacement``."""
+
+    span: Span
+    replacement: str
+
+    def to_json(self) -> dict:
+        return {"span": self.span.to_json(), "replacement": self.replacement}
+
+
+@dataclass(slots=True)
+class Diagnostic:
+    code: str
+    message: str
+    span: Span | None = None
+    severity: str = "error"          # "error" | "warning" | "note"
+    hint: str | None = None
+    labels: list[Label] = field(default_factory=list)
+    suggestions: list[str] = field(default_factory=list)
+    fix: Fix | None = None
+
+    @property
+    def is_error(self) -> bool:
+        return self.severity == "error"
+
+    def to_json(self, sources: "dict[str, str] | None" = None) -> dict:
+        return {
+            "code": self.code, "severity": self.severity, "message": self.message,
+            "span": self.span.to_json() if self.span else None,
+            "labels": [{"span": l.span.to_json(), "message": l.message, "primary": l.primary}
+                       for l in self.labels],
+            "hint": self.hint, "suggestions": self.suggestions,
+            "fix": self.fix.to_json() if self.fix else None,
+            "rendered": render_text(self, sources or {}, color=False),
+        }
+
+
+class Abort(Exception):
+    """Raised by a stage after it recorded the error diagnostics that stop the pipeline."""
+
+
+class EvalError(Exception):
+    """A located error found while evaluating (interpreter, operations): ``code`` (see
+    :mod:`aidl_lang.codes`), message, span, hint, suggested fixes and extra labels.  The
+    interpreter turns it into an error :class:`Diagnostic` and skips the statement."""
+
+    def __init__(self, code: str, message: str, span: Span | None, hint: str | None = None,
+                 suggestions=None, labels=None):
+        super().__init__(message)
+        self.code, self.message, self.span, self.hint = code, message, span, hint
+        self.suggestions = suggestions or []
+        self.labels = labels or []
+
+
+class DiagnosticSink:
+    """Collects diagnostics; remembers source text per file for rendering."""
+
+    def __init__(self) -> None:
+        self.items: list[Diagnostic] = []
+        self.sources: dict[str, str] = {}
+
+    def add(self, d: Diagnostic) -> Diagnostic:
+        if d.fix is None and d.suggestions and d.span is not None and d.code in ("E0101", "E0102", "E0103"):
+            d.fix = Fix(d.span, d.suggestions[0])      # the span is exactly the misspelt name
+        key = (d.code, d.span, d.message)
+        if not any((x.code, x.span, x.message) == key for x in self.items):
+            self.items.append(d)
+        return d
+
+    def error(self, code: str, message: str, span: Span | None, hint: str | None = None,
+              **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "error", hint, **kw))
+
+    def warning(self, code: str, message: str, span: Span | None, hint: str | None = None,
+                **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "warning", hint, **kw))
+
+    @property
+    def has_errors(self) -> bool:
+        return any(d.is_error for d in self.items)
+
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.items if d.is_error]
+
+
+def did_you_mean(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:
+    """Nearest known names to ``name`` (case-insensitive similarity, then difflib ratio)."""
+    import difflib
+    cands = sorted(set(c for c in candidates if c and not c.startswith("_")))
+    lower = {c.lower(): c for c in cands}
+    out: list[str] = []
+    if name.lower() in lower and lower[name.lower()] != name:
+        out.append(lower[name.lower()])
+    for m in difflib.get_close_matches(name.lower(), list(lower), n=n, cutoff=0.6):
+        if lower[m] not in out:
+            out.append(lower[m])
+    return out[:n]
+
+
+def _line_text(src: str, line: int) -> str:
+    lines = src.splitlines()
+    return lines[line - 1] if 0 < line <= len(lines) else ""
+
+
+def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> str:
+    """``file:line:col: error[CODE]: message`` + source line + caret + labels + hint."""
+    def c(code: str, s: str) -> str:
+        return f"\x1b[{code}m{s}\x1b[0m" if color else s
+
+    sev_color = {"error": "1;31", "warning": "1;33", "note": "1;36"}.get(d.severity, "1")
+    where = f"{d.span.file}:{d.span.line}:{d.span.col}: " if d.span else ""
+    out = [f"{where}{c(sev_color, f'{d.severity}[{d.code}]')}: {c('1', d.message)}"]
+    spans = ([Label(d.span, "", True)] if d.span else []) + list(d.labels)
+    for lab in spans:
+        src = sources.get(lab.span.file)
+        if src is None:
+            if lab.message:
+                out.append(f"  --> {lab.span.file}:{lab.span.line}:{lab.span.col}: {lab.message}")
+            continue
+        if lab is not spans[0]:
+            out.append(f"  --> {lab.span.file}:{lab.span.line}:{lab.span.col}")
+        text = _line_text(src, lab.span.line).replace("\t", " ")
+        num = str(lab.span.line)
+        pad = " " * len(num)
+        width = (lab.span.end_col - lab.span.col) if lab.span.end_line == lab.span.line \
+            else max(1, len(text) - lab.span.col + 1)
+        width = max(1, width)
+        mark = "^" if lab.primary else "-"
+        out.append(f"{pad} |")
+        out.append(f"{num} | {text}")
+        tail = f" {lab.message}" if lab.message else ""
+        out.append(f"{pad} | " + " " * (lab.span.col - 1) + c(sev_color, mark * width) + tail)
+    if d.hint:
+        out.append(f"  = hint: {d.hint}")
+    if d.suggestions and (not d.hint or "did you mean" not in d.hint):
+        out.append("  = did you mean: " + ", ".join(f"`{s}`" for s in d.suggestions) + "?")
+    if d.fix:
+        out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")
+    return "\n".join(out)

@@ -1,0 +1,350 @@
+"""``aidl lsp``: the language server (pygls, JSON-RPC over stdin/stdout).
+
+Thin handlers over :mod:`.analysis` (hover, completion, definition, references, outline,
+formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help) and
+:mod:`.edits` (quick fixes, rename). Documents sync incrementally.
+
+Diagnostics are computed by a worker process (:mod:`.worker`) so that a newer version of a
+document stops a stale analysis: they are published when a document is opened or saved, and
+after each change once typing pauses for :data:`DEBOUNCE` seconds (``initializationOptions``
+``{"debounce": seconds}`` changes it; 0 analyses every change).
+
+Every handler is guarded: an exception in the analysis is logged to the client and answered
+with an empty result, so a malformed document never stops the server. A request whose
+parameters do not match the protocol gets the JSON-RPC error ``-32602`` (invalid params)
+naming the field. Documents over :data:`.window.LARGE` characters are analysed through a view
+(:mod:`.window`) so that no request takes minutes.
+"""
+from __future__ import annotations
+
+import asyncio
+import functools
+import logging
+import traceback
+
+from lsprotocol import converters
+from lsprotocol import types as T
+from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInvalidParams
+from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
+
+from . import analysis, edits, semantic, signature, window
+from .worker import AnalysisTimeout, Analyzer
+
+DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
+
+log = logging.getLogger("aidl.lsp")
+
+
+class RequestFailed(JsonRpcException):
+    """LSP ``RequestFailed`` (-32803): a valid request the server refuses (e.g. a rename of a
+    built-in name), with the reason shown to the user."""
+    code = -32803
+
+
+class Protocol(LanguageServerProtocol):
+    """pygls' protocol, plus an error response for a request whose params do not structure."""
+
+    def structure_message(self, data):
+        try:
+            return super().structure_message(data)
+        except (JsonRpcInvalidParams, JsonRpcInternalError) as exc:
+            if isinstance(data, dict) and "id" in data and "method" in data:
+                err = JsonRpcInvalidParams(_why(exc))
+                self._send_response(data["id"], None, err.to_response_error())
+            raise
+
+
+def _why(exc: Exception) -> str:
+    cause = exc.__cause__
+    try:
+        from cattrs import transform_error
+        details = transform_error(cause) if cause is not None else []
+    except Exception:
+        details = []
+    return "invalid params: " + ("; ".join(details) if details else str(cause or exc))
+
+
+server = LanguageServer("aidl", "0.2.0", text_document_sync_kind=T.TextDocumentSyncKind.Incremental,
+                        protocol_cls=Protocol)
+_pending: dict[str, asyncio.Task] = {}
+_published: dict[str, list[T.Diagnostic]] = {}      # uri -> the diagnostics last published
+_settings = {"debounce": DEBOUNCE}
+_analyzer: Analyzer | None = None
+
+
+def _get_analyzer() -> Analyzer:
+    global _analyzer
+    if _analyzer is None:
+        _analyzer = Analyzer()
+    return _analyzer
+
+
+def _safe(default=None):
+    def wrap(fn):
+        if asyncio.iscoroutinefunction(fn):
+            @functools.wraps(fn)
+            async def run_async(ls, params):
+                try:
+                    return await fn(ls, params)
+                except (asyncio.CancelledError, JsonRpcException):
+                    raise
+                except Exception:          # never let the analysis take the server down
+                    _report(ls, fn.__name__)
+                    return default
+            return run_async
+
+        @functools.wraps(fn)
+        def run(ls, params):
+            try:
+                return fn(ls, params)
+            except JsonRpcException:
+                raise
+            except Exception:
+                _report(ls, fn.__name__)
+                return default
+        return run
+    return wrap
+
+
+def _report(ls: LanguageServer, where: str) -> None:
+    msg = f"aidl lsp: internal error in {where}:\n{traceback.format_exc()}"
+    log.error(msg)
+    try:
+        ls.window_log_message(T.LogMessageParams(type=T.MessageType.Error, message=msg))
+    except Exception:
+        pass
+
+
+def _doc(ls: LanguageServer, uri: str):
+    doc = ls.workspace.get_text_document(uri)
+    return doc, (doc.path or "untitled.aidl")
+
+
+def _at(ls: LanguageServer, params):
+    """(text to analyse, path, line, character) for a position request: the document, or its
+    view around the position when it is large (same line and column numbers)."""
+    doc, path = _doc(ls, params.text_document.uri)
+    line, ch = params.position.line, params.position.character
+    return window.view(doc.source, line), path, line, ch
+
+
+async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
+    if delay:
+        await asyncio.sleep(delay)
+    doc, path = _doc(ls, uri)
+    version, text = doc.version, doc.source
+    try:
+        raw = await _get_analyzer().diagnostics(text, path, uri, True)
+        diags = converters.get_converter().structure(raw, list[T.Diagnostic])
+    except AnalysisTimeout as e:
+        diags = [T.Diagnostic(
+            range=T.Range(start=T.Position(line=0, character=0), end=T.Position(line=0, character=1)),
+            message=f"aidl lsp: {e}; stopped (run `aidl check` for the full report)",
+            severity=T.DiagnosticSeverity.Warning, source="aidl")]
+    doc, _ = _doc(ls, uri)
+    if doc.version != version or doc.source != text:
+        return                      # stale: a newer change will publish
+    _published[uri] = diags
+    ls.text_document_publish_diagnostics(
+        T.PublishDiagnosticsParams(uri=uri, diagnostics=diags, version=version))
+
+
+def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
+    old = _pending.pop(uri, None)
+    if old is not None:
+        old.cancel()                # abandons its analysis (see worker.Analyzer)
+
+    async def run():
+        try:
+            await _publish(ls, uri, delay)
+        except asyncio.CancelledError:
+            pass
+        except Exception:
+            _report(ls, "diagnostics")
+    _pending[uri] = asyncio.ensure_future(run())
+
+
+@server.feature(T.INITIALIZED)
+@_safe()
+async def initialized(ls: LanguageServer, params: T.InitializedParams):
+    _get_analyzer().start()                # adopt the worker started with the server
+
+
+@server.feature(T.INITIALIZE)
+@_safe()
+def initialize(ls: LanguageServer, params: T.InitializeParams):
+    opts = params.initialization_options
+    if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
+        _settings["debounce"] = max(0.0, float(opts["debounce"]))
+
+
+@server.feature(T.SHUTDOWN)
+@_safe()
+async def shutdown(ls: LanguageServer, params):
+    if _analyzer is not None:
+        _analyzer.close()
+
+
+@server.feature(T.TEXT_DOCUMENT_DID_OPEN)
+@_safe()
+def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
+    _schedule(ls, params.text_document.uri, 0.0)
+
+
+@server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
+@_safe()
+def did_change(ls: LanguageServer, params: T.DidChangeTextDocumentParams):
+    _schedule(ls, params.text_document.uri, _settings["debounce"])
+
+
+@server.feature(T.TEXT_DOCUMENT_DID_SAVE)
+@_safe()
+def did_save(ls: LanguageServer, params: T.DidSaveTextDocumentParams):
+    _schedule(ls, params.text_document.uri, 0.0)
+
+
+@server.feature(T.TEXT_DOCUMENT_DID_CLOSE)
+@_safe()
+def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
+    old = _pending.pop(params.text_document.uri, None)
+    if old is not None:
+        old.cancel()
+    _published.pop(params.text_document.uri, None)
+    ls.text_document_publish_diagnostics(
+        T.PublishDiagnosticsParams(uri=params.text_document.uri, diagnostics=[]))
+
+
+@server.feature(T.TEXT_DOCUMENT_HOVER)
+@_safe()
+def hover(ls: LanguageServer, params: T.HoverParams):
+    src, path, line, ch = _at(ls, params)
+    return analysis.hover(src, line, ch, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_COMPLETION, T.CompletionOptions(trigger_characters=["."]))
+@_safe([])
+def completion(ls: LanguageServer, params: T.CompletionParams):
+    src, path, line, ch = _at(ls, params)
+    return analysis.completions(src, line, ch, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_SIGNATURE_HELP,
+                T.SignatureHelpOptions(trigger_characters=["(", ","], retrigger_characters=["="]))
+@_safe()
+def signature_help(ls: LanguageServer, params: T.SignatureHelpParams):
+    src, path, line, ch = _at(ls, params)
+    return signature.signature_help(src, line, ch, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_DEFINITION)
+@_safe()
+def definition(ls: LanguageServer, params: T.DefinitionParams):
+    src, path, line, ch = _at(ls, params)
+    return analysis.definition(src, line, ch, params.text_document.uri, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_REFERENCES)
+@_safe([])
+def references(ls: LanguageServer, params: T.ReferenceParams):
+    src, path, line, ch = _at(ls, params)
+    return analysis.references(src, line, ch, params.text_document.uri,
+                               params.context.include_declaration, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+@_safe([])
+def document_symbol(ls: LanguageServer, params: T.DocumentSymbolParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    if len(doc.source) > window.LARGE:
+        return window.outline(doc.source)
+    return analysis.document_symbols(doc.source, path)
+
+
+def _too_large(doc, what: str) -> None:
+    if len(doc.source) > window.LARGE:
+        raise RequestFailed(f"aidl lsp: {what} is not offered for documents over "
+                            f"{window.LARGE} characters (this one has {len(doc.source)}); "
+                            f"use `aidl fmt` / edit by hand")
+
+
+@server.feature(T.TEXT_DOCUMENT_FORMATTING)
+@_safe([])
+def formatting(ls: LanguageServer, params: T.DocumentFormattingParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "formatting")
+    return analysis.formatting(doc.source, path)
+
+
+@server.feature(T.TEXT_DOCUMENT_CODE_ACTION,
+                T.CodeActionOptions(code_action_kinds=[T.CodeActionKind.QuickFix]))
+@_safe([])
+def code_action(ls: LanguageServer, params: T.CodeActionParams):
+    uri = params.text_document.uri
+    published = _published.get(uri, [])
+    diags = []
+    for d in params.context.diagnostics or _overlapping(published, params.range):
+        if not isinstance(d.data, dict):          # a client that does not echo `data`
+            d = next((p for p in published if p.range == d.range and p.code == d.code), d)
+        diags.append(d)
+    return edits.code_actions(uri, diags, params.range)
+
+
+def _overlapping(diags: list[T.Diagnostic], rng: T.Range) -> list[T.Diagnostic]:
+    def key(p: T.Position):
+        return (p.line, p.character)
+    return [d for d in diags if key(d.range.start) <= key(rng.end) and key(rng.start) <= key(d.range.end)]
+
+
+@server.feature(T.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
+                T.SemanticTokensLegend(token_types=semantic.TOKEN_TYPES,
+                                       token_modifiers=semantic.TOKEN_MODIFIERS))
+@_safe()
+def semantic_tokens(ls: LanguageServer, params: T.SemanticTokensParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    n = len(doc.source)
+    if n > window.HUGE:
+        return None
+    return T.SemanticTokens(data=semantic.semantic_tokens(doc.source, path,
+                                                          lexical=n > window.LARGE))
+
+
+@server.feature(T.TEXT_DOCUMENT_PREPARE_RENAME)
+@_safe()
+def prepare_rename(ls: LanguageServer, params: T.PrepareRenameParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "rename")
+    try:
+        return edits.prepare_rename(doc.source, params.position.line, params.position.character,
+                                    path)
+    except edits.RenameError as e:
+        raise RequestFailed(str(e)) from None
+
+
+@server.feature(T.TEXT_DOCUMENT_RENAME)
+@_safe()
+def rename(ls: LanguageServer, params: T.RenameParams):
+    doc, path = _doc(ls, params.text_document.uri)
+    _too_large(doc, "rename")
+    opened = {}
+    for uri, d in ls.workspace.text_documents.items():
+        if d.path and uri != params.text_document.uri:
+            opened[d.path] = d.source
+    try:
+        return edits.rename(doc.source, params.position.line, params.position.character,
+                            params.new_name, params.text_document.uri, path, opened)
+    except edits.RenameError as e:
+        raise RequestFailed(str(e)) from None
+
+
+def main(worker=None) -> int:
+    """Serve over stdin/stdout until the client exits. ``worker``: a diagnostics worker process
+    started before this module was imported (:func:`.worker.spawn`), so it warms up meanwhile."""
+    global _analyzer
+    logging.basicConfig(level=logging.WARNING)
+    _analyzer = Analyzer(worker)
+    try:
+        server.start_io()
+    finally:
+        _analyzer.close()
+    return 0

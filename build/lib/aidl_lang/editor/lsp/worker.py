@@ -1,0 +1,216 @@
+"""Diagnostics off the server's process: a worker process that runs the pipeline, so that a
+newer version of a document can stop a stale analysis.
+
+The language server answers hover, completion and the rest on its event loop; the pipeline
+(parse, check, interpret, solve) can take long on an expensive program, and a Python thread
+cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.worker``, one
+JSON request per line on its stdin (``{"id", "text", "path", "uri", "solve"}``) and one JSON
+answer per line on its stdout (``{"id", "diagnostics": [...]}``, LSP diagnostics).
+
+:class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
+job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
+for :data:`Analyzer.GRACE` seconds the worker is killed and a warm spare takes over (the spare
+is started once the first diagnostics are out; a new worker needs about a second of imports),
+else its answer is read and dropped. A job that runs past
+:data:`Analyzer.TIMEOUT` seconds is killed and reported as one diagnostic. If no worker can be
+started, the analysis runs in a thread of the server instead (no preemption, same answers).
+"""
+from __future__ import annotations
+
+import asyncio
+import json
+import subprocess
+import sys
+import threading
+import time
+
+
+def _serve() -> int:
+    """The worker's loop: read a job per line, answer per line, until stdin closes."""
+    import os
+
+    from lsprotocol import converters
+
+    from .analysis import diagnostics
+    parent = os.getppid()
+
+    def watch():                      # end with the server, even in the middle of a job
+        while True:
+            time.sleep(2)
+            if os.getppid() != parent:
+                os._exit(0)
+    threading.Thread(target=watch, daemon=True).start()
+    conv = converters.get_converter()
+    out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
+    diagnostics("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl")
+    for line in sys.stdin:
+        try:
+            job = json.loads(line)
+            diags = diagnostics(job["text"], job["path"], job.get("solve", True), job.get("uri"))
+            answer = {"id": job["id"], "diagnostics": conv.unstructure(diags)}
+        except Exception as e:        # answered, never a dead worker
+            answer = {"id": job.get("id") if isinstance(job, dict) else None,
+                      "error": f"{type(e).__name__}: {e}"}
+        out.write(json.dumps(answer) + "\n")
+        out.flush()
+    return 0
+
+
+class AnalysisTimeout(Exception):
+    """The pipeline ran longer than :data:`Analyzer.TIMEOUT` seconds and was stopped."""
+
+
+def spawn() -> subprocess.Popen | None:
+    """Start a worker process (it warms up, importing the pipeline, while the server starts);
+    None if no process can be started here."""
+    try:
+        return subprocess.Popen([sys.executable, "-m", "aidl_lang.editor.lsp.worker"],
+                                stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    except (OSError, ValueError):
+        return None
+
+
+class Analyzer:
+    """One warm worker process computing diagnostics, one job at a time (see the module doc).
+
+    A thread per worker reads its answers and hands them to the waiting coroutine; jobs are
+    written from a thread too, so a large document never blocks the event loop."""
+
+    GRACE = 0.5            # seconds a stale job may keep running before its worker is killed
+    TIMEOUT = 30.0         # seconds after which any job is stopped
+    SPARE = True           # keep a second warm worker to take over from a killed one
+
+    def __init__(self, proc: subprocess.Popen | None = None) -> None:
+        self.proc: subprocess.Popen | None = None
+        self.lock = asyncio.Lock()
+        self.seq = 0
+        self.waiting: dict[int, tuple[subprocess.Popen, asyncio.Future]] = {}
+        self.inflight: tuple[int, float, asyncio.Future] | None = None   # id, start, answer
+        self.restarts = 0
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._proc0 = proc
+
+    def start(self) -> None:
+        """Adopt the worker started early (:func:`spawn`) or start one."""
+        self._loop = asyncio.get_running_loop()
+        if self.proc is not None and self.proc.poll() is None:
+            return
+        proc, self._proc0 = self._proc0, None
+        if proc is None or proc.poll() is not None:
+            proc = spawn()
+        self.proc = proc
+        if proc is not None:
+            threading.Thread(target=self._reader, args=(proc,), daemon=True).start()
+
+    def _reader(self, proc: subprocess.Popen) -> None:
+        for line in proc.stdout:
+            try:
+                answer = json.loads(line)
+            except ValueError:
+                continue
+            entry = self.waiting.pop(answer.get("id"), None)
+            if entry is not None:
+                self._loop.call_soon_threadsafe(_settle_future, entry[1], answer, None)
+        for job, (p, fut) in list(self.waiting.items()):     # this worker is gone
+            if p is proc:
+                self.waiting.pop(job, None)
+                self._loop.call_soon_threadsafe(_settle_future, fut, None,
+                                                EOFError("the analysis worker exited"))
+
+    def kill(self) -> None:
+        proc, self.proc = self.proc, None
+        if proc is not None and proc.poll() is None:
+            proc.kill()
+            try:
+                proc.wait(5)
+            except subprocess.TimeoutExpired:
+                pass
+        if self.inflight is not None and not self.inflight[2].done():
+            self.inflight[2].cancel()
+        self.inflight = None
+
+    def close(self) -> None:
+        self.kill()
+        if self._proc0 is not None and self._proc0.poll() is None:
+            self._proc0.kill()
+
+    async def _settle(self) -> None:
+        """Before a new job: drop the answer of an abandoned one, or kill its worker if it has
+        been running for more than GRACE seconds."""
+        if self.inflight is None:
+            return
+        _, started, fut = self.inflight
+        if not fut.done():
+            left = self.GRACE - (time.monotonic() - started)
+            if left > 0:
+                try:
+                    await asyncio.wait_for(asyncio.shield(fut), left)
+                except (asyncio.TimeoutError, asyncio.CancelledError, Exception):
+                    pass
+            if not fut.done():
+                self.restarts += 1
+                self.kill()
+        self.inflight = None
+
+    async def diagnostics(self, text: str, path: str, uri: str | None, solve: bool = True):
+        """The diagnostics of ``text`` as LSP dicts (``Diagnostic`` unstructured); raises
+        :class:`AnalysisTimeout` after TIMEOUT seconds. Jobs run one at a time; cancelling the
+        awaiting task abandons its job (killed at once if it has run GRACE seconds, else the next
+        job gives it the rest of GRACE to finish, see :meth:`_settle`)."""
+        loop = asyncio.get_running_loop()
+        async with self.lock:
+            await self._settle()
+            self.start()
+            if self.proc is None:                        # no subprocess here: a thread
+                from lsprotocol import converters
+
+                from .analysis import diagnostics
+                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri)
+                return converters.get_converter().unstructure(d)
+            self.seq += 1
+            job = self.seq
+            fut = loop.create_future()
+            self.waiting[job] = (self.proc, fut)
+            started = time.monotonic()
+            self.inflight = (job, started, fut)
+            data = (json.dumps({"id": job, "text": text, "path": path, "uri": uri,
+                                "solve": solve}) + "\n").encode()
+            try:
+                await loop.run_in_executor(None, _write, self.proc, data)
+                answer = await asyncio.wait_for(asyncio.shield(fut), self.TIMEOUT)
+            except asyncio.TimeoutError:
+                self.restarts += 1
+                self.kill()
+                raise AnalysisTimeout(f"the analysis took longer than {self.TIMEOUT:g} s") from None
+            except asyncio.CancelledError:               # abandoned: a newer edit wants the worker
+                if time.monotonic() - started >= self.GRACE:
+                    self.restarts += 1
+                    self.kill()
+                raise
+            except OSError:                              # it died: the next job starts another
+                self.kill()
+                raise EOFError("the analysis worker exited") from None
+            self.inflight = None
+            if self._proc0 is None and self.SPARE:
+                self._proc0 = spawn()        # a warm spare, started once the first answer is in
+        if "error" in answer:
+            raise RuntimeError(answer["error"])
+        return answer["diagnostics"]
+
+
+def _write(proc: subprocess.Popen, data: bytes) -> None:
+    proc.stdin.write(data)
+    proc.stdin.flush()
+
+
+def _settle_future(fut: asyncio.Future, result, exc) -> None:
+    if fut.done():
+        return
+    if exc is not None:
+        fut.set_exception(exc)
+    else:
+        fut.set_result(result)
+
+
+if __name__ == "__main__":
+    sys.exit(_serve())

@@ -1,0 +1,238 @@
+"""Deferred bounding-box expressions (paper, appendix "Solver Details", *Deferred expressions*).
+
+``s.bb.left`` evaluates to a :class:`BBTerm`; it is expanded into ``min``/``max`` over the
+extreme points of the target's geometry only when the constraint is compiled, right before
+solving, once the whole tree is known.  A structure's box covers its own geometry and all its
+descendants' (construction geometry excluded), except descendants whose own box appears in the
+same constraint: ``self.bb.top == self.lid.bb.top`` aligns the lid with the rest of the body.
+"""
+from __future__ import annotations
+
+import math
+
+from .expr import Expr, Lin, Nl, evaluate, func, rebuild, var
+from .model import Geometry, Structure
+
+SIDES = ("left", "right", "bottom", "top")
+
+
+class BBTerm(Expr):
+    """One side (left/right/bottom/top) of a target's box, in the frame of ``frame``."""
+
+    __slots__ = ("target", "side", "frame")
+
+    def __init__(self, target, side: str, frame: Structure):
+        self.target = target
+        self.side = side
+        self.frame = frame
+
+    def __repr__(self):
+        return f"bb({getattr(self.target, 'name', '?')}.{self.side})"
+
+
+def contains_bbox(e) -> bool:
+    """True if a :class:`BBTerm` occurs in ``e`` (walked without recursion)."""
+    t = type(e)
+    if t is Lin:                  # the common case: an affine expression has no box terms
+        return False
+    if t is BBTerm:
+        return True
+    if t is not Nl:
+        return False
+    todo = list(e.args)
+    pop, extend = todo.pop, todo.extend
+    while todo:
+        a = pop()
+        t = type(a)
+        if t is Nl:
+            extend(a.args)
+        elif t is BBTerm:
+            return True
+    return False
+
+
+def collect(e, out: list) -> list:
+    if isinstance(e, BBTerm):
+        out.append(e)
+    elif isinstance(e, Nl):
+        for a in e.args:
+            collect(a, out)
+    return out
+
+
+def expand(e, x, exclude: set, cache: dict | None = None, boxes: dict | None = None):
+    """Replace every BBTerm in ``e`` by its min/max expression (at parameter values ``x``).
+
+    ``cache`` is passed on to :func:`side_expr`; ``boxes``, if given, records each box used as
+    ``(id(target), id(frame)) -> [target, frame, axes]`` (for the solver's non-inversion rows).
+    """
+    if isinstance(e, BBTerm):
+        if boxes is not None:
+            ent = boxes.setdefault((id(e.target), id(e.frame)), [e.target, e.frame, set()])
+            ent[2].add("x" if e.side in ("left", "right") else "y")
+        return side_expr(e.target, e.side, e.frame, x, exclude, cache)
+    if isinstance(e, Nl):
+        return rebuild(e.op, tuple(expand(a, x, exclude, cache, boxes) for a in e.args))
+    return e
+
+
+def exclusions(terms: list[BBTerm]) -> set:
+    """Descendant structures to leave out of ancestors' boxes in one constraint."""
+    structs = {t.target for t in terms if isinstance(t.target, Structure)}
+    out = set()
+    for s in structs:
+        for other in structs:
+            if other is not s and other.is_within(s):
+                out.add(other)
+    return out
+
+
+def side_expr(target, side: str, frame: Structure, x, exclude: set,
+              cache: dict | None = None) -> Expr:
+    """``min``/``max`` over the target's extreme coordinates, in ``frame``.  ``cache`` (a dict
+    kept for one build of the rows) shares candidate lists and results between constraints."""
+    if cache is not None:
+        key = (id(target), side, id(frame), frozenset(map(id, exclude)))
+        hit = cache.get(key)
+        if hit is None:
+            hit = cache[key] = _side_expr(target, side, frame, x, exclude, cache)
+        return hit
+    return _side_expr(target, side, frame, x, exclude, None)
+
+
+def _side_expr(target, side, frame, x, exclude, cache) -> Expr:
+    xs, ys = candidates(target, frame, x, exclude, cache)
+    if side in ("left", "right"):
+        cands = xs
+    else:
+        cands = ys
+    if not cands:
+        ox, oy = (target if isinstance(target, Structure) else target.owner).frame_offset(frame)
+        return ox if side in ("left", "right") else oy
+    if len(cands) == 1:
+        return cands[0]
+    op = "min" if side in ("left", "bottom") else "max"
+    if all(type(c) is Lin and c.terms for c in cands):
+        return Nl(op, tuple(cands))      # what func gives (nothing to fold), without lifting
+    return func(op, *cands)
+
+
+def candidates(target, frame: Structure, x, exclude: set,
+               cache: dict | None = None) -> tuple[list, list]:
+    if cache is not None:
+        key = ("cand", id(target), id(frame), frozenset(map(id, exclude)))
+        hit = cache.get(key)
+        if hit is None:
+            hit = cache[key] = _candidates(target, frame, x, exclude,
+                                           cache.setdefault(("offsets",), {}))
+        return hit
+    return _candidates(target, frame, x, exclude, {})
+
+
+def _candidates(target, frame, x, exclude: set, offs: dict) -> tuple[list, list]:
+    xs: list = []
+    ys: list = []
+    if isinstance(target, Structure):
+        for s in _subtree(target, exclude, top=target):
+            for g in s.geometry:
+                if not g.construction:
+                    _geom_candidates(g, frame, x, xs, ys, offs)
+    else:
+        _geom_candidates(target, frame, x, xs, ys, offs)
+    return xs, ys
+
+
+def _subtree(s: Structure, exclude: set, top: Structure):
+    if s in exclude and s is not top:
+        return
+    yield s
+    for c in s.children.values():
+        yield from _subtree(c, exclude, top)
+
+
+def _in_frame(p, frame, offs: dict) -> tuple[Lin, Lin]:
+    """``p.in_frame(frame)`` (the same terms in the same order), with the owner's frame
+    offset looked up in ``offs`` instead of walked up the tree for every point."""
+    key = (id(p.owner), id(frame))
+    o = offs.get(key)
+    if o is None:
+        ox, oy = p.owner.frame_offset(frame)
+        o = offs[key] = (ox.terms, oy.terms)
+    tx, ty = dict(o[0]), dict(o[1])
+    tx[p.ix] = tx.get(p.ix, 0.0) + 1.0
+    ty[p.iy] = ty.get(p.iy, 0.0) + 1.0
+    return Lin(tx), Lin(ty)
+
+
+def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> None:
+    k = g.kind
+    P = {n: _in_frame(p, frame, offs) for n, p in g.points.items()}
+    if k == "Circle":
+        cx, cy = P["center"]
+        r = var(g.scalars["radius"].index)
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
+        return
+    if k == "Slot":
+        r = var(g.scalars["radius"].index)
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs += [px - r, px + r]
+            ys += [py - r, py + r]
+        return
+    if k == "Arc":
+        cx, cy = P["center"]
+        sx, sy = P["start"]
+        ex, ey = P["end"]
+        xs += [sx, ex]
+        ys += [sy, ey]
+        c = g.points["center"]
+        s = g.points["start"]
+        e = g.points["end"]
+        a1 = math.atan2(x[s.iy] - x[c.iy], x[s.ix] - x[c.ix])
+        a2 = math.atan2(x[e.iy] - x[c.iy], x[e.ix] - x[c.ix])
+        sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+        r = func("sqrt", (var(s.ix) - var(c.ix)) * (var(s.ix) - var(c.ix))
+                 + (var(s.iy) - var(c.iy)) * (var(s.iy) - var(c.iy)))
+        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
+                              (1.5 * math.pi, (0, -1))):
+            if (ang - a1) % (2 * math.pi) <= sweep:
+                if dx:
+                    xs.append(cx + r * dx)
+                else:
+                    ys.append(cy + r * dy)
+        return
+    if k == "Ellipse":
+        cx, cy = P["center"]
+        rx, ry = var(g.scalars["rx"].index), var(g.scalars["ry"].index)
+        cs, sn = math.cos(g.data.get("rotation", 0.0)), math.sin(g.data.get("rotation", 0.0))
+        ex = func("sqrt", rx * rx * (cs * cs) + ry * ry * (sn * sn))
+        ey = func("sqrt", rx * rx * (sn * sn) + ry * ry * (cs * cs))
+        xs += [cx - ex, cx + ex]
+        ys += [cy - ey, cy + ey]
+        return
+    if k == "Text":
+        px, py = P["position"]
+        x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
+        xs += [px + x0, px + x1]
+        ys += [py + y0, py + y1]
+        return
+    for n, (px, py) in P.items():
+        if n == "center":           # a shape's center point is never an extreme point
+            continue
+        xs.append(px)
+        ys.append(py)
+
+
+def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, float, float] | None:
+    """(left, right, bottom, top) at values ``x``; None if the target holds no geometry."""
+    xs, ys = candidates(target, frame, x, set(exclude))
+    if not xs:
+        return None
+    vx = [evaluate(e, x) for e in xs]
+    vy = [evaluate(e, x) for e in ys]
+    return min(vx), max(vx), min(vy), max(vy)
+
+
+__all__ = ["BBTerm", "SIDES", "contains_bbox", "collect", "expand", "exclusions",
+           "side_expr", "numeric_box"]

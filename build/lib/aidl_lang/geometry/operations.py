@@ -1,0 +1,343 @@
+"""Operations: copies of geometry or structures (mirror, linear and circular patterns) and
+corner finishing of a solid's outline (fillets, chamfers).
+
+Copies are real model geometry: every point of a copy is a new unknown tied to the transformed
+original point by two equations, every dimension (radius, width, ...) by one, so a copy follows
+its original through the solve, belongs to bounding boxes and can be constrained further.
+A copy of a structure is a new sibling of the original (a child of the original's parent, which
+is the structure where the operation is written or one inside it), with the same kind, children
+and member names; its frame is held on its parent's.  A copy of geometry belongs to the
+original's structure.  ``CircularPattern`` turns counter-clockwise: ``angle`` is the span from
+the first instance to the last (a full turn spaces ``count`` instances 360/count apart), ``step``
+the angle between neighbours.  The original must
+lie in that structure's subtree (the validity rule for constraints).  The transform's line,
+center and step may be solved values; rotations (pattern angles) are known before solving.
+
+``Fillet(radius)`` and ``Chamfer(distance)`` act on the finished outline of the structure they
+are written in, after its booleans (:func:`finish`, called by the renderer), on every loop of
+it (outer outlines and holes).  A corner is a vertex where the outline turns by more than 15
+degrees (tessellated circles and arcs turn less).  A fillet replaces every corner, convex or
+concave, by a tangent arc of ``radius``; a chamfer cuts every convex corner with two legs of
+``distance`` along its edges.  Where an edge is too short for both of its corners, each takes
+at most half of it (the fillet radius shrinks to fit).
+"""
+from __future__ import annotations
+
+import math
+
+from ..diagnostics import EvalError
+from ..limits import MAX_GEOMETRY
+from .expr import var
+from .model import Constraint, Equation, Geometry, Point, Structure
+from .tessellate import segments_for
+from .values import PV, GeomRef, Q, StructRef, type_name
+
+
+class OperationError(Exception):
+    """A bad operation call; the message is the diagnostic text (code E0108)."""
+
+
+class Copies(list):
+    """The list an operation returns: the original first, then its copies."""
+
+
+# ------------------------------------------------------------------ transforms
+def _translate(dx, dy):
+    return lambda x, y: (x + dx, y + dy), 0.0, False
+
+
+def _rotate(c: PV, th: float):
+    cs, sn = math.cos(th), math.sin(th)
+    return (lambda x, y: (c.x + (x - c.x) * cs - (y - c.y) * sn,
+                          c.y + (x - c.x) * sn + (y - c.y) * cs)), th, False
+
+
+def _reflect(a: PV, b: PV):
+    dx, dy = b.x - a.x, b.y - a.y
+    dd = dx * dx + dy * dy
+
+    def f(x, y):
+        t = ((x - a.x) * dx + (y - a.y) * dy) / dd
+        return (a.x + dx * t) * 2.0 - x, (a.y + dy * t) * 2.0 - y
+    return f, None, True
+
+
+# ------------------------------------------------------------------ cloning
+class _Cloner:
+    def __init__(self, ctx, frame: Structure, xf, rot, flip: bool, line_angle: float = 0.0):
+        self.ctx, self.frame, self.xf, self.flip = ctx, frame, xf, flip
+        self.rot = rot
+        self.line_angle = line_angle
+        self.points: dict = {}
+        self.geoms: dict = {}
+        self.structs: dict = {}
+        self.eqs: list = []
+
+    def point(self, p: Point, dest: Structure) -> Point:
+        if p in self.points:
+            return self.points[p]
+        m = self.ctx.model
+        X, Y = self.xf(*p.in_frame(self.frame))
+        q = Point(m.new_param(self.ctx.value_of(X), True, dest, f"{p.label}.x"),
+                  m.new_param(self.ctx.value_of(Y), True, dest, f"{p.label}.y"), dest, None, p.label)
+        qx, qy = q.in_frame(self.frame)
+        self.eqs += [Equation(qx - X), Equation(qy - Y)]
+        self.points[p] = q
+        return q
+
+    def geom(self, g: Geometry, dest: Structure) -> Geometry:
+        if g in self.geoms:
+            return self.geoms[g]
+        self.ctx.n_geometry += 1
+        if hasattr(self.ctx, "count_object"):       # the interpreter's budget
+            self.ctx.count_object(self.ctx.cur_span)
+        if self.ctx.n_geometry > MAX_GEOMETRY:
+            raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", self.ctx.cur_span,
+                            hint="use fewer or larger repetitions")
+        new = Geometry(g.kind, dest, g.span, construction=g.construction, closed=g.closed)
+        self.geoms[g] = new
+        new.points = {n: self.point(p, dest) for n, p in g.points.items()}
+        if g.kind == "Arc" and self.flip:      # a mirror turns counter-clockwise into clockwise
+            new.points["start"], new.points["end"] = new.points["end"], new.points["start"]
+        m = self.ctx.model
+        for n, s in g.scalars.items():
+            i = m.new_param(m.x[s.index], True, dest, s.label)
+            self.eqs.append(Equation(var(i) - var(s.index)))
+            new.scalars[n] = type(s)(i, dest, s.dim, s.label)
+        new.data = dict(g.data)
+        if "rotation" in g.data:
+            r = g.data["rotation"]
+            new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
+        if "edges" in g.data:
+            new.data["edges"] = [self.geom(e, dest) for e in g.data["edges"]]
+        if "part_of" in g.data:
+            new.data["part_of"] = self.geoms.get(g.data["part_of"], g.data["part_of"])
+        new.parts = {n: self.geom(p, dest) for n, p in g.parts.items()}
+        if g in g.owner.geometry:            # edges of shapes are parts, not listed
+            dest.geometry.append(new)
+        return new
+
+    def struct(self, s: Structure, parent: Structure, name: str) -> Structure:
+        ctx = self.ctx
+        c = ctx._new_structure(name, s.kind, parent, s.span, template=s.template)
+        ctx.model.free[c.fx] = ctx.model.free[c.fy] = False      # held on the parent's frame
+        self.structs[s] = c
+        for g in s.geometry:
+            self.geom(g, c)
+        for n, ch in s.children.items():
+            self.struct(ch, c, n)
+        c.scope = {k: self.remap(v) for k, v in s.scope.items()}
+        return c
+
+    def remap(self, v):
+        if isinstance(v, GeomRef) and v.geom in self.geoms:
+            return GeomRef(self.geoms[v.geom])
+        if isinstance(v, StructRef) and v.struct in self.structs:
+            return StructRef(self.structs[v.struct])
+        if isinstance(v, list):
+            return [self.remap(x) for x in v]
+        return v
+
+
+def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0):
+    S = ctx.struct
+    cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
+    if isinstance(target, StructRef):
+        # copies belong where the original is: siblings of it, whichever structure the
+        # operation is written in (paper rule: the original lies in that structure's subtree)
+        home = target.struct.parent or S
+        base = name or f"{target.struct.name}_{what}"
+        nm = base if k == 0 else f"{base}[{k}]"
+        if nm in home.children:
+            raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
+                                 f"name the copy: `copy = ...`")
+        out = StructRef(cl.struct(target.struct, home, nm))
+    else:
+        home = target.geom.owner
+        g = cl.geom(target.geom, home)
+        if g not in home.geometry:
+            home.geometry.append(g)
+        out = GeomRef(g)
+    c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=f"{what} copy", implicit=True)
+    S.constraints.append(c)
+    ctx.model.constraints.append(c)
+    return out
+
+
+def _target(ctx, t, op: str):
+    if isinstance(t, StructRef):
+        s = t.struct
+        if s is ctx.struct or ctx.struct.is_within(s):
+            raise OperationError(f"{op} cannot copy `{s.name}` into itself; write it in the "
+                                 f"structure that contains `{s.name}`")
+        return t
+    if isinstance(t, GeomRef):
+        if t.geom.kind == "Text" and op == "Mirrored":
+            raise OperationError("Mirrored cannot mirror Text; place a second Text instead")
+        return t
+    raise OperationError(f"{op} copies geometry or a structure, got {type_name(t)}")
+
+
+def _count(q: Q, op: str) -> int:
+    c = q.const()
+    if c is None or abs(c - round(c)) > 1e-9 or not 1 <= round(c) <= 10_000:
+        raise OperationError(f"{op} count must be a whole number from 1 to 10000")
+    return int(round(c))
+
+
+# ------------------------------------------------------------------ entry point
+def apply(ctx, kind: str, args: dict, name: str | None):
+    """Run operation ``kind`` with checked, unit-converted ``args`` in ``ctx.struct``.
+
+    Returns the copy (Mirrored), a :class:`Copies` list (patterns) or None (Fillet, Chamfer).
+    Raises :class:`OperationError`.
+    """
+    S = ctx.struct
+    if kind in ("Fillet", "Chamfer"):
+        r = args["radius" if kind == "Fillet" else "distance"].const()
+        if r is None or r <= 0:
+            raise OperationError(f"{kind} needs a positive size known before solving")
+        if S.kind not in ("solid", "hole"):
+            raise OperationError(f"{kind} works on the outline of a solid or hole, not on "
+                                 f"{S.kind} `{S.name}`")
+        at = None
+        if "at" in args:
+            ox, oy = S.frame_offset(None)
+            from .bbox import contains_bbox
+            pts = _corner_points(ctx, args["at"], S, kind)
+            if any(contains_bbox(p.x) or contains_bbox(p.y) for p in pts):
+                raise OperationError(f"{kind} at: name corners by geometry (`body.top_right`, "
+                                     f"`[body.top, body.right]`), not by bounding-box values")
+            at = [(p.x + ox, p.y + oy) for p in pts]
+        S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
+        return None
+    target = _target(ctx, args["target"], kind)
+    if kind == "Mirrored":
+        from .primitives import member
+        line = args["about"].geom
+        a, b = member(line, "start", S), member(line, "end", S)
+        ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
+        xf, rot, flip = _reflect(a, b)
+        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang)
+    n = _count(args["count"], kind)
+    out = Copies([target])
+    for k in range(1, n):
+        if kind == "LinearPattern":
+            st = args["step"]
+            xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
+        else:
+            if "step" in args:
+                step = args["step"].const()
+                if step is None:
+                    raise OperationError("CircularPattern step must be known before solving")
+            else:
+                total = args["angle"].const()
+                if total is None:
+                    raise OperationError("CircularPattern angle must be known before solving")
+                full = abs(abs(total) - 2 * math.pi) < 1e-9
+                step = total / (n if full or n == 1 else n - 1)
+            xf, rot, flip = _rotate(args["center"], step * k)
+        out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
+    return out
+
+
+# ------------------------------------------------------------------ rendering
+CORNER_TURN = math.radians(15)       # smaller turns are tessellated curves, not corners
+
+
+CORNER_TOL = 1e-3                   # mm: a chosen corner matches an outline vertex this close
+
+
+def _corner_points(ctx, v, S, kind: str) -> list:
+    """The points (PV in ``S``'s frame) a ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a
+    point; two lines (the corner where they meet); a line (both ends); a shape (its outline
+    corners); or a list of these."""
+    from .constraints import _kind
+    from .primitives import member, points_of
+    if isinstance(v, PV):
+        return [v]
+    if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
+        return [PV(v[0].expr, v[1].expr)]
+    if isinstance(v, (list, tuple)):
+        if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
+            (a1, b1), (a2, b2) = ((member(e.geom, "start", S), member(e.geom, "end", S))
+                                  for e in v)
+            # the corner: the pair of ends (one of each line) closest together now
+            pairs = [(p, q) for p in (a1, b1) for q in (a2, b2)]
+            val = ctx.value_of
+
+            def gap(pq):
+                (p, q) = pq
+                return (val(p.x) - val(q.x)) ** 2 + (val(p.y) - val(q.y)) ** 2
+            return [min(pairs, key=gap)[0]]
+        return [p for e in v for p in _corner_points(ctx, e, S, kind)]
+    if isinstance(v, GeomRef):
+        g = v.geom
+        if g.kind == "Point":
+            return [member(g, "p", S)]
+        if g.kind == "Line":
+            return [member(g, "start", S), member(g, "end", S)]
+        pts = points_of(g) if g.closed else []
+        if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
+            from .primitives import _pv
+            return [_pv(p, S) for p in pts]
+    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
+                         f"a polygonal shape, or a list of these; got {_kind(v)}")
+
+
+def finish(s: Structure, shape, x=None):
+    """Apply the structure's Fillet/Chamfer operations to its rendered CrossSection; ``x``
+    (the solved unknowns) places corners chosen with ``at``."""
+    from .expr import evaluate
+    for kind, r, at in getattr(s, "finish", []):
+        if shape.is_empty():
+            break
+        pts = None
+        if at is not None and x is not None:
+            pts = [(float(evaluate(px, x)), float(evaluate(py, x))) for px, py in at]
+        shape = _corners(shape, r, kind == "Fillet", pts)
+    return shape
+
+
+def _corners(shape, size: float, fillet: bool, only=None):
+    """Round (``fillet``: both convex and concave) or cut (chamfer: convex only) every corner
+    of every outline loop whose direction turns by more than :data:`CORNER_TURN` (or only
+    those within :data:`CORNER_TOL` of a point of ``only``)."""
+    import manifold3d as mf
+    import numpy as np
+    loops = []
+    for poly in shape.to_polygons():
+        P = np.asarray(poly, dtype=float)
+        n = len(P)
+        out = []
+        for i in range(n):
+            p0, p1, p2 = P[i - 1], P[i], P[(i + 1) % n]
+            e1, e2 = p1 - p0, p2 - p1
+            l1, l2 = float(np.hypot(*e1)), float(np.hypot(*e2))
+            if l1 == 0 or l2 == 0:
+                continue
+            u1, u2 = e1 / l1, e2 / l2
+            turn = math.atan2(u1[0] * u2[1] - u1[1] * u2[0], float(np.dot(u1, u2)))
+            chosen = only is None or any(math.hypot(p1[0] - qx, p1[1] - qy) <= CORNER_TOL
+                                         for qx, qy in only)
+            if abs(turn) <= CORNER_TURN or (not fillet and turn < 0) or not chosen:
+                out.append(p1)           # material is on the left: turn > 0 is convex
+                continue
+            if not fillet:
+                t = min(size, l1 / 2, l2 / 2)
+                out += [p1 - u1 * t, p1 + u2 * t]
+                continue
+            half = math.tan(abs(turn) / 2)
+            t = min(size * half, l1 / 2, l2 / 2)           # tangent length, clamped
+            r = t / half
+            a = p1 - u1 * t
+            sg = 1.0 if turn > 0 else -1.0
+            c = a + sg * r * np.array([-u1[1], u1[0]])
+            a0 = math.atan2(a[1] - c[1], a[0] - c[0])
+            k = max(2, segments_for(r, abs(turn)))
+            for j in range(k + 1):
+                ang = a0 + turn * j / k
+                out.append(c + r * np.array([math.cos(ang), math.sin(ang)]))
+        if len(out) >= 3:
+            loops.append(np.asarray(out).tolist())
+    return mf.CrossSection(loops, mf.FillRule.Positive) if loops else mf.CrossSection()

@@ -1,0 +1,557 @@
+"""Geometry constructors: each turns checked, unit-converted arguments into model geometry.
+
+A constructor creates points (starting guesses, or shared when the argument is a point of the
+same structure), held scalar parameters for dimensions, and the *implicit* constraints that
+keep the shape's form (e.g. a rectangle's corners stay a ``width`` x ``height`` rectangle at the
+given rotation: six linear equations).  Paper section "AIDL by example": shared references are
+implicit coincidence constraints.
+
+Members (``rect.top_left``, ``line.midpoint`` ...) are resolved by :func:`member`.
+"""
+from __future__ import annotations
+
+import math
+
+from .expr import as_const, func, hypot, var
+from .model import Equation, Geometry
+from .values import ANG, LEN, PV, GeomRef, Q
+
+
+class PrimitiveError(Exception):
+    pass
+
+
+def build(ctx, kind: str, args: dict, span) -> Geometry:
+    """Create geometry ``kind`` in ``ctx.struct`` from bound arguments ``args``."""
+    g = Geometry(kind, ctx.struct, span, construction=bool(args.get("construction", False)))
+    fn = globals()["_build_" + kind]
+    fn(ctx, g, args)
+    ctx.struct.geometry.append(g)
+    return g
+
+
+def _cos_sin(rot: float) -> tuple[float, float]:
+    return math.cos(rot), math.sin(rot)
+
+
+def _const(ctx, q: Q, what: str) -> float:
+    c = q.const()
+    if c is None:
+        c = ctx.value_of(q.expr)
+        ctx.warn_nonconst(what)
+    return c
+
+
+MIN_SIZE = 1e-9     # mm: smaller sizes cannot be drawn (nor tessellated without overflow)
+
+
+def _positive(q, what: str, kind: str) -> None:
+    """A size known before solving must be at least :data:`MIN_SIZE` (a zero or negative size
+    draws nothing; a subnormal one overflows the tessellation)."""
+    c = q.const() if isinstance(q, Q) else None
+    if c is not None and not c > 0:
+        raise PrimitiveError(f"a {kind} needs a positive {what}, got {c:g}")
+    if c is not None and c < MIN_SIZE:
+        raise PrimitiveError(f"a {kind}'s {what} of {c:g} mm is below the smallest size, "
+                             f"{MIN_SIZE:g} mm")
+
+
+def _build_Point(ctx, g, a):
+    if "at" in a:
+        g.points["p"] = ctx.point(a["at"], "p")
+    else:
+        g.points["p"] = ctx.point(PV(a["x"].expr, a["y"].expr, None, a["x"].owners | a["y"].owners), "p")
+
+
+def _build_Line(ctx, g, a):
+    g.points["start"] = ctx.point(a["start"], "start")
+    g.points["end"] = ctx.point(a["end"], "end")
+
+
+def _build_Circle(ctx, g, a):
+    for k in ("radius", "diameter"):
+        if k in a:
+            _positive(a[k], k, "Circle")
+    g.points["center"] = ctx.point(a["center"], "center")
+    if "diameter" in a:
+        r = Q(a["diameter"].expr * 0.5, LEN, a["diameter"].owners)
+    else:
+        r = a["radius"]
+    g.scalars["radius"] = ctx.scalar(r, "radius", held=True)
+    g.closed = True
+
+
+def _build_Arc(ctx, g, a):
+    t, cw = None, False
+    if "through" in a:
+        t, cw, center = _circumcenter(ctx, a["start"], a["through"], a["end"])
+        g.points["through"] = t
+        a = dict(a, center=center)
+    c = g.points["center"] = ctx.point(a["center"], "center")
+    if "radius" in a:
+        _positive(a["radius"], "radius", "Arc")
+        r = _const(ctx, a["radius"], "Arc radius")
+        a1 = _const(ctx, a["start_angle"], "Arc start_angle")
+        a2 = _const(ctx, a["end_angle"], "Arc end_angle")
+        cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+        s = g.points["start"] = ctx.point(PV(cx + r * math.cos(a1), cy + r * math.sin(a1)), "start")
+        e = g.points["end"] = ctx.point(PV(cx + r * math.cos(a2), cy + r * math.sin(a2)), "end")
+        eqs = [var(s.ix) - var(c.ix) - r * math.cos(a1), var(s.iy) - var(c.iy) - r * math.sin(a1),
+               var(e.ix) - var(c.ix) - r * math.cos(a2), var(e.iy) - var(c.iy) - r * math.sin(a2)]
+        ctx.internal(g, [Equation(x) for x in eqs], "Arc radius and angles")
+    else:
+        s = g.points["start"] = ctx.point(a["start"], "start")
+        e = g.points["end"] = ctx.point(a["end"], "end")
+        if t is not None:
+            rt = hypot(var(t.ix) - var(c.ix), var(t.iy) - var(c.iy))
+            rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
+            ctx.internal(g, [Equation(rt - rs)], "Arc through three points")
+            if cw:          # counter-clockwise from start to end must pass through `through`
+                g.points["start"], g.points["end"] = e, s
+        rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
+        re = hypot(var(e.ix) - var(c.ix), var(e.iy) - var(c.iy))
+        ctx.internal(g, [Equation(rs - re)], "Arc start and end on one circle")
+
+
+def _circumcenter(ctx, p, q, r):
+    """(through point, clockwise?, starting center) of the circle through p, q, r."""
+    t = ctx.point(q, "through")
+    (ax, ay), (bx, by), (cx, cy) = ((ctx.value_of(v.x), ctx.value_of(v.y)) for v in (p, q, r))
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if abs(d) < 1e-12 * max(1.0, abs(ax), abs(bx), abs(cx), abs(ay), abs(by), abs(cy)) ** 2:
+        raise PrimitiveError("an Arc through three points needs points that are not on one line")
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay)
+          + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx)
+          + (cx * cx + cy * cy) * (bx - ax)) / d
+    cw = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0
+    return t, cw, PV(ux, uy)
+
+
+def _rect_frame(ctx, g, a):
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.data["rotation"] = rot
+    return _cos_sin(rot)
+
+
+def _build_Rectangle(ctx, g, a):
+    ux, uy = _rect_frame(ctx, g, a)
+    vx, vy = -uy, ux
+    names = ("bottom_left", "bottom_right", "top_right", "top_left")
+    if "corner" in a:
+        p, q = a["corner"], a["opposite"]
+        px, py = ctx.value_of(p.x), ctx.value_of(p.y)
+        qx, qy = ctx.value_of(q.x), ctx.value_of(q.y)
+        # which corner is which, from the starting coordinates in the rotated frame
+        du = (qx - px) * ux + (qy - py) * uy
+        dv = (qx - px) * vx + (qy - py) * vy
+        slot_p = {(True, True): "bottom_left", (False, True): "bottom_right",
+                  (True, False): "top_left", (False, False): "top_right"}[(du >= 0, dv >= 0)]
+        slot_q = {"bottom_left": "top_right", "top_right": "bottom_left",
+                  "bottom_right": "top_left", "top_left": "bottom_right"}[slot_p]
+        pts = {slot_p: ctx.point(p, slot_p), slot_q: ctx.point(q, slot_q)}
+        bl, tr = pts["bottom_left"], pts["top_right"]
+        w0 = ((ctx.value_of(var(tr.ix)) - ctx.value_of(var(bl.ix))) * ux
+              + (ctx.value_of(var(tr.iy)) - ctx.value_of(var(bl.iy))) * uy)
+        h0 = ((ctx.value_of(var(tr.ix)) - ctx.value_of(var(bl.ix))) * vx
+              + (ctx.value_of(var(tr.iy)) - ctx.value_of(var(bl.iy))) * vy)
+        w = ctx.new_scalar(w0, "width", held=False)
+        h = ctx.new_scalar(h0, "height", held=False)
+        for nm in ("bottom_right", "top_left"):
+            if nm not in pts:
+                bx, by = ctx.value_of(var(bl.ix)), ctx.value_of(var(bl.iy))
+                ox = w0 * ux if nm == "bottom_right" else h0 * vx
+                oy = w0 * uy if nm == "bottom_right" else h0 * vy
+                pts[nm] = ctx.point(PV(bx + ox, by + oy), nm)
+    else:
+        _positive(a["width"], "width", g.kind)
+        _positive(a["height"], "height", g.kind)
+        w = ctx.scalar(a["width"], "width", held=True)
+        h = ctx.scalar(a["height"], "height", held=True)
+        wv, hv = ctx.value_of(var(w.index)), ctx.value_of(var(h.index))
+        if "center" in a:
+            c = a["center"]
+            cx, cy = ctx.value_of(c.x), ctx.value_of(c.y)
+            bx = cx - wv / 2 * ux - hv / 2 * vx
+            by = cy - wv / 2 * uy - hv / 2 * vy
+        else:
+            c = None
+        pts = {}
+        if "bottom_left" in a:
+            pts["bottom_left"] = ctx.point(a["bottom_left"], "bottom_left")
+            bx, by = ctx.value_of(var(pts["bottom_left"].ix)), ctx.value_of(var(pts["bottom_left"].iy))
+        else:
+            pts["bottom_left"] = ctx.point(PV(bx, by), "bottom_left")
+        offs = {"bottom_right": (wv, 0), "top_right": (wv, hv), "top_left": (0, hv)}
+        for nm, (du, dv) in offs.items():
+            pts[nm] = ctx.point(PV(bx + du * ux + dv * vx, by + du * uy + dv * vy), nm)
+    bl, br, tr, tl = (pts[n] for n in names)
+    W, H = var(w.index), var(h.index)
+    eqs = [
+        var(br.ix) - var(bl.ix) - W * ux, var(br.iy) - var(bl.iy) - W * uy,
+        var(tl.ix) - var(bl.ix) - H * vx, var(tl.iy) - var(bl.iy) - H * vy,
+        var(tr.ix) - var(br.ix) - H * vx, var(tr.iy) - var(br.iy) - H * vy,
+    ]
+    g.points.update({n: pts[n] for n in names})
+    g.scalars["width"], g.scalars["height"] = w, h
+    ctx.internal(g, [Equation(e) for e in eqs], f"{g.kind} shape")
+    if "center" in a and a["center"] is not None:
+        cen = a["center"]
+        mx = (var(bl.ix) + var(tr.ix)) * 0.5
+        my = (var(bl.iy) + var(tr.iy)) * 0.5
+        if cen.obj is not None and cen.obj.owner is ctx.struct:
+            # the center is a shared point: keep it at the rectangle's center
+            ctx.internal(g, [Equation(var(cen.obj.ix) - mx), Equation(var(cen.obj.iy) - my)],
+                         "rectangle center")
+            g.points["center"] = cen.obj
+        elif ctx.value_of(cen.x) is not None and not _is_const_pv(cen):
+            ctx.internal(g, [Equation(cen.x - mx), Equation(cen.y - my)], "rectangle center")
+    for nm, (p, q) in {"bottom": (bl, br), "right": (br, tr), "top": (tl, tr), "left": (bl, tl)}.items():
+        edge = Geometry("Line", ctx.struct, g.span, name=f"{g.name}.{nm}" if g.name else nm,
+                        points={"start": p, "end": q}, construction=True)
+        edge.data["part_of"] = g
+        g.parts[nm] = edge
+    g.closed = True
+
+
+def _is_const_pv(p: PV) -> bool:
+    return as_const(p.x) is not None and as_const(p.y) is not None
+
+
+def _build_RoundedRectangle(ctx, g, a):
+    _build_Rectangle(ctx, g, a)
+    g.data["corner_radius"] = _const(ctx, a["corner_radius"], "corner_radius")
+
+
+def _polygon_edges(ctx, g, pts: list):
+    n = len(pts)
+    edges = []
+    for i in range(n):
+        e = Geometry("Line", ctx.struct, g.span, points={"start": pts[i], "end": pts[(i + 1) % n]},
+                     construction=True)
+        e.data["part_of"] = g
+        edges.append(e)
+    return edges
+
+
+def _build_Triangle(ctx, g, a):
+    if "base" in a:
+        b = _const(ctx, a["base"], "base")
+        h = _const(ctx, a["height"], "height")
+        if b <= 0 or h == 0:
+            raise PrimitiveError("a Triangle needs a positive base and a nonzero height")
+        pts = _rigid(ctx, g, a, {"a": (-b / 2, -h / 2), "b": (b / 2, -h / 2), "c": (0.0, h / 2)},
+                     "Triangle")
+    else:
+        pts = [ctx.point(a[k], k) for k in ("a", "b", "c")]
+        g.points.update(dict(zip(("a", "b", "c"), pts)))
+        _hold_literal_shape(ctx, g, [a[k] for k in ("a", "b", "c")], pts, a)
+    edges = _polygon_edges(ctx, g, pts)
+    g.parts.update({"ab": edges[0], "bc": edges[1], "ca": edges[2]})
+    g.data["order"] = ["a", "b", "c"]
+    g.closed = True
+
+
+def _rigid(ctx, g, a, offsets: dict, what: str) -> list:
+    """Points at fixed ``offsets`` (name -> (u, v), unrotated) from a center point, turned by
+    the held ``rotation``; the center is a starting guess.  Returns the points in order."""
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.data["rotation"] = rot
+    cs, sn = _cos_sin(rot)
+    c = g.points["center"] = ctx.point(a["center"], "center")
+    cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+    pts, eqs = [], []
+    for nm, (u, v) in offsets.items():
+        ox, oy = u * cs - v * sn, u * sn + v * cs
+        p = g.points[nm] = ctx.point(PV(cx + ox, cy + oy), nm)
+        pts.append(p)
+        eqs += [Equation(var(p.ix) - var(c.ix) - ox), Equation(var(p.iy) - var(c.iy) - oy)]
+    ctx.internal(g, eqs, f"{what} shape")
+    return pts
+
+
+def _build_Trapezoid(ctx, g, a):
+    b = _const(ctx, a["bottom_width"], "bottom_width")
+    t = _const(ctx, a["top_width"], "top_width")
+    h = _const(ctx, a["height"], "height")
+    if min(b, t) < 0 or h <= 0 or max(b, t) <= 0:
+        raise PrimitiveError("a Trapezoid needs a positive height and widths >= 0 (not both 0)")
+    names = ("bottom_left", "bottom_right", "top_right", "top_left")
+    pts = _rigid(ctx, g, a, dict(zip(names, ((-b / 2, -h / 2), (b / 2, -h / 2), (t / 2, h / 2),
+                                             (-t / 2, h / 2)))), "Trapezoid")
+    edges = _polygon_edges(ctx, g, pts)
+    g.parts.update(dict(zip(("bottom", "right", "top", "left"), edges)))
+    g.data["order"] = list(names)
+    g.data["edges"] = edges
+    g.data["dims"] = {"bottom_width": b, "top_width": t, "height": h}
+    g.closed = True
+
+
+def _build_Ellipse(ctx, g, a):
+    rx = _const(ctx, a["rx"], "rx")
+    ry = _const(ctx, a["ry"], "ry")
+    if rx <= 0 or ry <= 0:
+        raise PrimitiveError(f"an Ellipse needs positive rx and ry, got {rx:g} and {ry:g}")
+    g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.points["center"] = ctx.point(a["center"], "center")
+    g.scalars["rx"] = ctx.new_scalar(rx, "rx", held=True)
+    g.scalars["ry"] = ctx.new_scalar(ry, "ry", held=True)
+    g.closed = True
+
+
+def _hold_literal_shape(ctx, g, given: list, pts: list, a: dict) -> None:
+    """A shape written as literal coordinates keeps its shape: when every point was given as
+    a value known before solving (numbers, params; no point of other geometry) and
+    ``flexible`` is not set, each point is held at its offset from the first, so relations
+    (RightOf, AlignTop, ...) move the shape without bending it.  Its position stays free."""
+    if a.get("flexible") or not all(p.obj is None and _is_const_pv(p) for p in given):
+        return
+    g.data["rigid"] = True
+    p0 = pts[0]
+    x0, y0 = ctx.value_of(var(p0.ix)), ctx.value_of(var(p0.iy))
+    eqs = []
+    for p in pts[1:]:
+        dx, dy = ctx.value_of(var(p.ix)) - x0, ctx.value_of(var(p.iy)) - y0
+        eqs += [Equation(var(p.ix) - var(p0.ix) - dx), Equation(var(p.iy) - var(p0.iy) - dy)]
+    ctx.internal(g, eqs, f"{g.kind} shape (literal coordinates)")
+
+
+def _build_Polygon(ctx, g, a):
+    pts_in = a["points"]
+    if len(pts_in) < 3:
+        raise PrimitiveError(f"a Polygon needs at least 3 points, got {len(pts_in)}")
+    _check_polygon_points(ctx, pts_in)
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    g.data["edges"] = _polygon_edges(ctx, g, pts)
+    g.closed = True
+
+
+def _check_polygon_points(ctx, pts) -> None:
+    """Starting points: no two consecutive ones equal (a zero-length edge), not all on one
+    line (no area)."""
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts]
+    except (AttributeError, TypeError):
+        return
+    n = len(xy)
+    scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+    for i in range(n):
+        (x0, y0), (x1, y1) = xy[i], xy[(i + 1) % n]
+        if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
+            raise PrimitiveError(f"a Polygon's points[{i}] and points[{(i + 1) % n}] are the "
+                                 f"same point ({x0:g}, {y0:g}): an edge of zero length")
+    area = sum(xy[i][0] * xy[(i + 1) % n][1] - xy[(i + 1) % n][0] * xy[i][1] for i in range(n))
+    if abs(area) <= 1e-9 * scale * scale:
+        raise PrimitiveError("a Polygon's points are all on one line: it has no area")
+
+
+def _build_RegularPolygon(ctx, g, a):
+    sides = _const(ctx, a["sides"], "sides")
+    if abs(sides - round(sides)) > 1e-9:
+        raise PrimitiveError(f"a RegularPolygon needs a whole number of sides, got {sides:g}")
+    n = int(round(sides))
+    if n < 3 or n > 1000:
+        raise PrimitiveError(f"a RegularPolygon needs 3 to 1000 sides, got {n}")
+    if "across_flats" in a:      # distance between opposite sides = 2 * apothem
+        _positive(a["across_flats"], "across_flats", "RegularPolygon")
+        r = _const(ctx, a["across_flats"], "across_flats") / 2 / math.cos(math.pi / n)
+    else:
+        _positive(a["radius"], "radius", "RegularPolygon")
+        r = _const(ctx, a["radius"], "radius")
+    if r <= 0:
+        raise PrimitiveError("a RegularPolygon needs a positive size")
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    g.data["rotation"] = rot
+    c = g.points["center"] = ctx.point(a["center"], "center")
+    cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+    pts, eqs = [], []
+    for k in range(n):       # vertex k at angle rotation + 360 deg * k / n from +x (CCW)
+        t = rot + 2 * math.pi * k / n
+        ox, oy = r * math.cos(t), r * math.sin(t)
+        p = ctx.point(PV(cx + ox, cy + oy), f"points[{k}]")
+        pts.append(p)
+        g.points[f"p{k}"] = p
+        eqs += [Equation(var(p.ix) - var(c.ix) - ox), Equation(var(p.iy) - var(c.iy) - oy)]
+    ctx.internal(g, eqs, "RegularPolygon shape")
+    g.data["order"] = [f"p{k}" for k in range(n)]
+    g.data["edges"] = _polygon_edges(ctx, g, pts)
+    g.scalars["radius"] = ctx.new_scalar(r, "radius", held=True)
+    g.closed = True
+
+
+def _build_Slot(ctx, g, a):
+    if "center" in a:
+        _positive(a["length"], "length", "Slot")
+        _positive(a["width"], "width", "Slot")
+        L = _const(ctx, a["length"], "length")
+        W = _const(ctx, a["width"], "width")
+        rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+        ux, uy = _cos_sin(rot)
+        c = g.points["center"] = ctx.point(a["center"], "center")
+        cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+        half = max(0.0, (L - W) / 2)     # length is overall, end to end
+        s = ctx.point(PV(cx - half * ux, cy - half * uy), "start")
+        e = ctx.point(PV(cx + half * ux, cy + half * uy), "end")
+        ctx.internal(g, [Equation(var(s.ix) - var(c.ix) + half * ux),
+                         Equation(var(s.iy) - var(c.iy) + half * uy),
+                         Equation(var(e.ix) - var(c.ix) - half * ux),
+                         Equation(var(e.iy) - var(c.iy) - half * uy)], "Slot shape")
+        g.scalars["radius"] = ctx.new_scalar(W / 2, "radius", held=True)
+    else:
+        for k in ("radius", "width"):
+            if k in a:
+                _positive(a[k], k, "Slot")
+        s = ctx.point(a["start"], "start")
+        e = ctx.point(a["end"], "end")
+        r = a["radius"] if "radius" in a else Q(a["width"].expr * 0.5, LEN, a["width"].owners)
+        g.scalars["radius"] = ctx.scalar(r, "radius", held=True)
+    g.points["start"], g.points["end"] = s, e
+    g.closed = True
+
+
+def _build_Text(ctx, g, a):
+    g.points["position"] = ctx.point(a["position"], "position")
+    g.data["text"] = a["text"]
+    g.data["size"] = _const(ctx, a.get("size", Q.num(5.0, LEN)), "size")
+    anchor = a.get("anchor", "middle")
+    if anchor in ("left", "center", "right"):           # the words of CSS and most CAD tools
+        anchor = {"left": "start", "center": "middle", "right": "end"}[anchor]
+    if anchor not in ("start", "middle", "end"):
+        raise PrimitiveError(f"anchor must be \"start\", \"middle\" or \"end\", not \"{anchor}\"")
+    g.data["anchor"] = anchor
+    valign = {"center": "middle", "centre": "middle"}.get(a.get("valign", "baseline"),
+                                                          a.get("valign", "baseline"))
+    if valign not in ("baseline", "middle", "top", "bottom"):
+        raise PrimitiveError(f"valign must be \"baseline\", \"middle\", \"top\" or \"bottom\", "
+                             f"not \"{valign}\"")
+    g.data["valign"] = valign
+    g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+
+
+# ---------------------------------------------------------------------- members
+def _pv(p, frame) -> PV:
+    o = p.owner
+    x, y = p.in_frame(frame)
+    return PV(x, y, p, o._own or o.owner_set())
+
+
+def points_of(g: Geometry) -> list:
+    """The outline points of a closed polygonal shape, in order."""
+    if g.kind in ("Rectangle", "RoundedRectangle"):
+        return [g.points[n] for n in ("bottom_left", "bottom_right", "top_right", "top_left")]
+    order = g.data.get("order")
+    if order:
+        return [g.points[n] for n in order]
+    return list(g.points.values())
+
+
+def member(g: Geometry, name: str, frame):
+    """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
+    k = g.kind
+    if name in g.points and not (k in ("Polygon", "RegularPolygon") and name.startswith("p")
+                                 and name[1:].isdigit()):
+        return _pv(g.points[name], frame)
+    own = g.owner.owner_set()
+    if name in g.parts:
+        return GeomRef(g.parts[name])
+    if name in g.scalars:
+        return Q(var(g.scalars[name].index), LEN, own)
+    if k == "Point" and name in ("x", "y"):
+        pv = _pv(g.points["p"], frame)
+        return Q(pv.x if name == "x" else pv.y, LEN, own)
+    if name == "diameter" and "radius" in g.scalars:
+        return Q(var(g.scalars["radius"].index) * 2.0, LEN, own)
+    if k in ("Line",) or (k == "Slot" and name in ("length", "spine")):
+        s, e = _pv(g.points["start"], frame), _pv(g.points["end"], frame)
+        if name == "midpoint" or (k == "Slot" and name == "center"):
+            return PV((s.x + e.x) * 0.5, (s.y + e.y) * 0.5, None, own)
+        if name == "length":
+            L = hypot(e.x - s.x, e.y - s.y)
+            if k == "Slot":
+                L = L + var(g.scalars["radius"].index) * 2.0
+            return Q(L, LEN, own)
+        if name == "dx":
+            return Q(e.x - s.x, LEN, own)
+        if name == "dy":
+            return Q(e.y - s.y, LEN, own)
+        if name == "angle":
+            return Q(func("atan2", e.y - s.y, e.x - s.x), ANG, own)
+        if name == "spine":
+            ln = Geometry("Line", g.owner, g.span, points=dict(g.points), construction=True)
+            return GeomRef(ln)
+    if k == "Slot":
+        if name == "center":
+            s, e = _pv(g.points["start"], frame), _pv(g.points["end"], frame)
+            return PV((s.x + e.x) * 0.5, (s.y + e.y) * 0.5, None, own)
+        if name == "width":
+            return Q(var(g.scalars["radius"].index) * 2.0, LEN, own)
+    if k == "Circle":
+        c = _pv(g.points["center"], frame)
+        r = var(g.scalars["radius"].index)
+        off = {"top": (0, 1), "bottom": (0, -1), "left": (-1, 0), "right": (1, 0)}
+        if name in off:
+            dx, dy = off[name]
+            return PV(c.x + r * dx, c.y + r * dy, None, own)
+    if k == "Arc":
+        c, s = g.points["center"], g.points["start"]
+        r = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
+        if name == "radius":
+            return Q(r, LEN, own)
+        if name == "diameter":
+            return Q(r * 2.0, LEN, own)
+        if name == "midpoint":
+            # point on the arc halfway between start and end (counter-clockwise)
+            cc, ss, ee = (_pv(g.points[n], frame) for n in ("center", "start", "end"))
+            a1 = func("atan2", ss.y - cc.y, ss.x - cc.x)
+            # counter-clockwise sweep in (0, 2pi]: the half-angle of start->end, flipped when
+            # the cross product says the short way round is clockwise
+            sweep = func("atan2", (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x),
+                         (ss.x - cc.x) * (ee.x - cc.x) + (ss.y - cc.y) * (ee.y - cc.y))
+            mid = a1 + sweep * 0.5
+            return PV(cc.x + r * func("cos", mid), cc.y + r * func("sin", mid), None, own)
+    if k in ("Rectangle", "RoundedRectangle"):
+        if name == "center":
+            bl, tr = _pv(g.points["bottom_left"], frame), _pv(g.points["top_right"], frame)
+            return PV((bl.x + tr.x) * 0.5, (bl.y + tr.y) * 0.5, None, own)
+        if name == "corner_radius" and "corner_radius" in g.data:
+            return Q.num(g.data["corner_radius"], LEN)
+        if name == "corners":
+            return [_pv(p, frame) for p in points_of(g)]
+    if k == "Trapezoid":
+        if name in g.data["dims"]:
+            return Q.num(g.data["dims"][name], LEN)
+        if name in ("points", "vertices", "corners"):
+            return [_pv(p, frame) for p in points_of(g)]
+        if name == "edges":
+            return [GeomRef(e) for e in g.data["edges"]]
+    if k == "Ellipse" and name in ("rx", "ry"):
+        return Q(var(g.scalars[name].index), LEN, own)
+    if k in ("Polygon", "RegularPolygon", "Triangle"):
+        pts = points_of(g) if k != "Triangle" else [g.points[n] for n in ("a", "b", "c")]
+        if name in ("points", "vertices", "corners"):
+            return [_pv(p, frame) for p in pts]
+        if name == "edges":
+            edges = g.data.get("edges") or [g.parts[n] for n in ("ab", "bc", "ca")]
+            return [GeomRef(e) for e in edges]
+        if name == "center":
+            if "center" in g.points:
+                return _pv(g.points["center"], frame)
+            pvs = [_pv(p, frame) for p in pts]
+            n = float(len(pvs))
+            sx = sum((p.x for p in pvs[1:]), pvs[0].x) * (1.0 / n)
+            sy = sum((p.y for p in pvs[1:]), pvs[0].y) * (1.0 / n)
+            return PV(sx, sy, None, own)
+    if k == "Text" and name == "size":
+        return Q.num(g.data["size"], LEN)
+    return None
+
+
+def member_names(g: Geometry) -> list[str]:
+    from ..registry import ENTRIES
+    names = set(ENTRIES[g.kind].members) if g.kind in ENTRIES else set()
+    names |= set(g.points) | set(g.parts) | set(g.scalars)
+    return sorted(n for n in names if not (n[:1] == "p" and n[1:].isdigit()))

@@ -1,0 +1,148 @@
+"""Single-stroke text from the Hershey fonts (PyPI ``Hershey-Fonts``; font ``futural``).
+
+Sizes are cap heights in mm.  :func:`text_strokes` gives polylines relative to the anchor point.
+"""
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1) maps ~1 em)
+
+
+FONT = "futural"
+
+
+_GLYPHS_FORMAT = 1
+
+
+@lru_cache(maxsize=1)
+def _glyphs() -> dict:
+    """Every glyph of the font, normalized (``normalize_rendering(1.0)``): character ->
+    ``(strokes, advance)``, each stroke a tuple of ``(x, y)`` points at pen position 0 and
+    ``advance`` the pen's move to the next character, exactly as the package's render iterator
+    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.cache`), so a
+    cold run neither imports the package (~10 ms: it imports ``tarfile``) nor unpacks its bz2
+    archive of every Hershey font."""
+    import json
+
+    from ..cache import cache_dir, read_owned, write_atomic
+    d = cache_dir()
+    path = d / f"hershey-{FONT}.json" if d is not None else None
+    text = read_owned(path) if path is not None else None
+    if text:
+        try:
+            data = json.loads(text)
+            if data.get("font") == FONT and data.get("format") == _GLYPHS_FORMAT:
+                return {c: (tuple(tuple(map(tuple, stroke)) for stroke in strokes), adv)
+                        for c, (strokes, adv) in data["glyphs"].items()}
+        except (ValueError, TypeError, KeyError, AttributeError):
+            pass                          # damaged: made again below
+    glyphs = _glyphs_from_package()
+    if path is not None:
+        write_atomic(path, json.dumps({"font": FONT, "format": _GLYPHS_FORMAT,
+                                       "glyphs": glyphs}))
+    return glyphs
+
+
+def _glyphs_from_package() -> dict:
+    """:func:`_glyphs` from the ``Hershey-Fonts`` package (its ``_HersheyRenderIterator``:
+    point ``(xofs + (x - left_offset) * scalex, yofs + y * scaley)``, then
+    ``xofs += spacing + scalex * char_width``)."""
+    from HersheyFonts import HersheyFonts
+    f = HersheyFonts()
+    f.load_default_font(FONT)
+    f.normalize_rendering(1.0)
+    o = f.render_options
+    out = {}
+    for ch, g in f.all_glyphs.items():
+        strokes = tuple(tuple(((x - g.left_offset) * o["scalex"], o["yofs"] + y * o["scaley"])
+                              for x, y in stroke) for stroke in g.strokes)
+        out[ch] = (strokes, o["spacing"] + o["scalex"] * g.char_width)
+    return out
+
+
+@lru_cache(maxsize=512)
+def _raw(text: str) -> tuple:
+    """The line segments ``((x0, y0), (x1, y1))`` of ``text`` in normalized font units, the
+    pen starting at 0: the package's ``lines_for_text``, bit for bit."""
+    glyphs = _glyphs()
+    segs = []
+    pen = 0
+    for ch in text:
+        g = glyphs.get(ch)
+        if g is None:
+            continue
+        strokes, advance = g
+        for stroke in strokes:
+            pts = [(pen + x, y) for x, y in stroke]
+            segs.extend(zip(pts, pts[1:]))
+        pen += advance
+    return tuple(segs)
+
+
+def _cap_height() -> float:
+    segs = _raw("H")
+    ys = [p[1] for s in segs for p in s]
+    return (max(ys) - min(ys)) if ys else 1.0
+
+
+VALIGNS = ("baseline", "middle", "top", "bottom")
+
+
+def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "baseline",
+                 rotation: float = 0.0) -> list[tuple[tuple, tuple]]:
+    """Line segments ((x0, y0), (x1, y1)) in mm, relative to the text's position point.
+
+    ``anchor`` (start, middle, end) puts the position at the left end, middle or right end of
+    the strokes; ``valign`` puts it on the baseline, at half the cap height (middle), at the cap
+    height (top) or at the lowest stroke (bottom, below descenders); ``rotation`` (radians)
+    then turns the text counter-clockwise about the position.
+    """
+    segs = _raw(text)
+    if not segs:
+        return []
+    base = _baseline()
+    k = size / _cap_height()
+    xs = [p[0] for s in segs for p in s]
+    lo, hi = min(xs), max(xs)
+    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
+    low = min(p[1] for s in segs for p in s)
+    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
+          "bottom": -(low - base) * k}[valign]
+    cs, sn = math.cos(rotation), math.sin(rotation)
+
+    def f(p):
+        x, y = (p[0] + dx) * k, (p[1] - base) * k + dy
+        return (x * cs - y * sn, x * sn + y * cs)
+    return [(f(a), f(b)) for a, b in segs]
+
+
+@lru_cache(maxsize=1)
+def _baseline() -> float:
+    segs = _raw("H")
+    ys = [p[1] for s in segs for p in s]
+    return min(ys) if ys else 0.0
+
+
+def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "baseline",
+                rotation: float = 0.0) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the strokes relative to the position point, in mm."""
+    segs = text_strokes(text, size, anchor, valign, rotation)
+    if not segs:
+        return (0.0, 0.0, 0.0, 0.0)
+    xs = [p[0] for s in segs for p in s]
+    ys = [p[1] for s in segs for p in s]
+    return min(xs), max(xs), min(ys), max(ys)
+
+
+def missing_glyphs(text: str) -> list[str]:
+    """Characters of ``text`` the single-stroke font cannot draw (it covers printable ASCII;
+    spaces and newlines are layout, not glyphs), each once, in order."""
+    out: list[str] = []
+    for ch in text:
+        if ch in " \n" or ch in out:
+            continue
+        if not (32 < ord(ch) < 127) or not _raw(ch):
+            out.append(ch)
+    return out

@@ -1,0 +1,188 @@
+"""Runtime values of the interpreter and their unit arithmetic.
+
+A scalar is a :class:`Q`: an expression over the parameter vector (mm / radians) with a
+dimension ``(L, A)`` — length exponent and angle exponent.  ``(0, 0)`` is a bare number: it takes
+the file's length unit where a length is expected and degrees where an angle is expected.
+Points are :class:`PV` (x, y expressions in the frame of the structure being evaluated).
+Every value records the structures whose geometry it references (``owners``) so that the
+validity rules can be checked where the value is used.
+"""
+from __future__ import annotations
+
+from ..records import dataclass
+
+from .expr import Expr, _lin, as_const, lift
+from .model import Geometry, Point, Structure
+
+NUM = (0, 0)
+LEN = (1, 0)
+ANG = (0, 1)
+
+_EMPTY: frozenset = frozenset()
+
+
+class UnitError(Exception):
+    pass
+
+
+@dataclass(eq=False, slots=True)
+class Q:
+    expr: Expr
+    dim: tuple = NUM
+    owners: frozenset = _EMPTY
+
+    @staticmethod
+    def num(v: float, dim=NUM) -> "Q":
+        return Q(_lin({}, float(v)), dim)
+
+    def const(self) -> float | None:
+        return as_const(self.expr)
+
+
+@dataclass(eq=False, slots=True)
+class PV:
+    """A point value: coordinates in the current structure's frame; ``obj`` if it is a point."""
+
+    x: Expr
+    y: Expr
+    obj: Point | None = None
+    owners: frozenset = _EMPTY
+
+
+@dataclass(eq=False, slots=True)
+class GeomRef:
+    geom: Geometry
+
+    @property
+    def owners(self):
+        return self.geom.owner.owner_set()
+
+
+@dataclass(eq=False, slots=True)
+class StructRef:
+    struct: Structure
+
+    @property
+    def owners(self):
+        return self.struct.owner_set()
+
+
+@dataclass(eq=False, slots=True)
+class BBoxRef:
+    target: object                 # Structure | Geometry
+
+    @property
+    def owners(self):
+        t = self.target
+        return (t if isinstance(t, Structure) else t.owner).owner_set()
+
+
+@dataclass(eq=False, slots=True)
+class Template:
+    node: object                   # ast.Def
+    scope: object                  # the defining file's scope
+    file_units: float = 1.0
+
+
+@dataclass(eq=False, slots=True)
+class Builtin:
+    name: str                      # registry entry or function name
+
+
+@dataclass(eq=False, slots=True)
+class Namespace:
+    name: str
+    scope: object
+
+
+def dim_name(d: tuple) -> str:
+    if d == NUM:
+        return "number"
+    if d == LEN:
+        return "length"
+    if d == ANG:
+        return "angle"
+    if d == (2, 0):
+        return "area"
+    parts = []
+    if d[0]:
+        parts.append("length" + (f"^{d[0]}" if d[0] != 1 else ""))
+    if d[1]:
+        parts.append("angle" + (f"^{d[1]}" if d[1] != 1 else ""))
+    return "·".join(parts)
+
+
+def type_name(v) -> str:
+    if isinstance(v, Q):
+        return dim_name(v.dim)
+    if isinstance(v, PV):
+        return "point"
+    if isinstance(v, GeomRef):
+        return v.geom.kind
+    if isinstance(v, StructRef):
+        return f"{v.struct.kind} structure"
+    if isinstance(v, BBoxRef):
+        return "bounding box"
+    if isinstance(v, bool):
+        return "boolean"
+    if isinstance(v, str):
+        return "string"
+    if isinstance(v, (list, tuple)):
+        return "list"
+    if isinstance(v, Template):
+        return "template"
+    if isinstance(v, Builtin):
+        return "function"
+    if v is None:
+        return "nothing"
+    return type(v).__name__
+
+
+def owners_of(*vals) -> frozenset:
+    """The structures whose geometry ``vals`` refer to (lists and tuples looked into)."""
+    out = set()
+    for v in vals:
+        t = type(v)
+        if t is Q or t is PV:
+            o = v.owners
+        elif t is GeomRef:
+            out.add(v.geom.owner)
+            continue
+        elif t is StructRef:
+            out.add(v.struct)
+            continue
+        else:
+            o = getattr(v, "owners", None)
+        if o:
+            out |= o
+        elif isinstance(v, (list, tuple)):
+            out |= owners_of(*v)
+    return frozenset(out)
+
+
+def unify_add(a: Q, b: Q, scale: float, deg: float) -> tuple[Expr, Expr, tuple]:
+    """Bring two operands of + - or a comparison to one dimension (bare numbers adapt)."""
+    if a.dim == b.dim:
+        return a.expr, b.expr, a.dim
+    if a.dim == NUM:
+        return lift(a.expr) * _coef(b.dim, scale, deg), b.expr, b.dim
+    if b.dim == NUM:
+        return a.expr, lift(b.expr) * _coef(a.dim, scale, deg), a.dim
+    raise UnitError(f"cannot combine a {dim_name(a.dim)} with a {dim_name(b.dim)}")
+
+
+def _coef(dim: tuple, scale: float, deg: float) -> float:
+    if dim == LEN:
+        return scale
+    if dim == ANG:
+        return deg
+    if dim[1] == 0 and dim[0] > 0:
+        return scale ** dim[0]
+    raise UnitError(f"a bare number cannot stand for a {dim_name(dim)}; give it a unit")
+
+
+def mul_dim(a: tuple, b: tuple, sign: int = 1) -> tuple:
+    d = (a[0] + sign * b[0], a[1] + sign * b[1])
+    if d[0] != 0 and d[1] != 0:        # radians are dimensionless next to a length (arc length)
+        d = (d[0], 0)
+    return d

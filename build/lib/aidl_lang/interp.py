@@ -1,0 +1,164 @@
+"""Interpret a checked AIDL program into a :class:`~aidl_lang.geometry.model.Model`.
+
+Runs the statements of each structure (post-order children are created as their declarations
+are met), evaluating expressions to values with units (:mod:`aidl_lang.geometry.values`),
+creating geometry (:mod:`aidl_lang.geometry.primitives`) and compiling constraints to residual
+equations (:mod:`aidl_lang.geometry.constraints`).  Errors found while running (types, units,
+indices, limits, the paper's two validity rules on the exact objects referenced) become
+diagnostics; the statement is skipped and interpretation goes on, so one run reports several
+problems.
+
+This module is the entry point; the interpreter's parts are in :mod:`aidl_lang.interpreter`:
+``statements`` (files, imports, bodies, loops, templates, constraints), ``calls`` (constructors,
+coercion, built-in functions) and ``expressions`` (operators, units, members).
+
+Limits (docs/language.md, "Limits"; :mod:`aidl_lang.limits`): loops and comprehensions at most
+``MAX_ITER`` iterations, at most ``MAX_GEOMETRY`` geometry objects, template nesting at most
+``MAX_TEMPLATE_DEPTH``.
+"""
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
+from .geometry.expr import Lin, evaluate, lift
+from .geometry.model import Model, Structure
+from .interpreter.calls import Calls
+from .interpreter.common import BudgetExhausted, FileCtx, Scope
+from .interpreter.expressions import Expressions
+from .interpreter.statements import Statements
+from .limits import DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, Budget
+from .memory import gc_paused
+from .sources import STDLIB
+
+__all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
+
+
+class Interpreter(Statements, Calls, Expressions):
+    """Runs a checked :class:`~aidl_lang.ast.Program` into a :class:`~aidl_lang.geometry.model.Model`.
+
+    Usage: ``Interpreter(sink, overrides).run(program)``; errors go to ``sink`` as diagnostics.
+    The methods live in the parts under :mod:`aidl_lang.interpreter`.
+    """
+
+    def __init__(self, sink: DiagnosticSink, overrides: dict[str, str] | None = None,
+                 budget: Budget = DEFAULT_BUDGET, deadline: float | None = None):
+        self.sink = sink
+        self.budget = budget
+        self.deadline = deadline if deadline is not None else time.monotonic() + budget.seconds
+        self.steps = 0
+        self.objects = 0
+        self.reported: set = set()
+        self.ops = 0                                  # operators evaluated (time checks)
+        self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
+        self.model = Model()
+        self.overrides = dict(overrides or {})
+        self.template_depth = 0
+        self.n_geometry = 0
+        self.loading: list[str] = []
+        self.loaded: dict[str, FileCtx] = {}
+        self.struct: Structure | None = None
+        self.scope: Scope | None = None
+        self.file: FileCtx | None = None
+        self.root_dir: Path | None = None
+        self.cur_span: Span | None = None
+        self.body_stmts: list | None = None           # the structure body being run
+        self.plans: dict = {}          # (entry name, positional count, keywords) -> call plan
+
+    def run(self, program):
+        """Interpret ``program``; an exhausted budget is one ``E0304`` (the model so far is
+        returned, with the error in the sink).
+
+        The cyclic garbage collector is paused while interpreting (the previous state is
+        restored): a run makes hundreds of thousands of small objects (values, expressions,
+        records) that reference counting frees, and the collector's full passes over a large
+        heap were up to half the time (docs/performance.md, "The interpreter").  What a run
+        makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
+        with gc_paused():
+            try:
+                return Statements.run(self, program)
+            except BudgetExhausted as ex:
+                self.budget_error(ex)
+                return self.model
+
+    # ------------------------------------------------------------------ the budget
+    def step(self, span=None) -> None:
+        """Count one evaluation step (loop iteration, comprehension element, call, template
+        instance); checks the wall-time deadline every 128 steps."""
+        self.steps += 1
+        if self.steps > self.budget.steps:
+            raise BudgetExhausted(f"more than {self.budget.steps:,} evaluation steps (loop "
+                                  "iterations, comprehension elements, calls and template "
+                                  "instances)", span or self.cur_span, self.frames)
+        if not self.steps & 127:
+            self.check_time(span)
+
+    def check_time(self, span=None) -> None:
+        """The wall-time deadline (the budget's last resort)."""
+        if time.monotonic() > self.deadline:
+            raise BudgetExhausted(f"more than {self.budget.seconds:g} s of wall time",
+                                  span or self.cur_span, self.frames)
+
+    def count_object(self, span=None) -> None:
+        """Count one point, geometry object, structure or constraint against the budget."""
+        self.objects += 1
+        if self.objects > self.budget.objects:
+            raise BudgetExhausted(f"more than {self.budget.objects:,} points, geometry "
+                                  "objects, structures and constraints", span or self.cur_span, self.frames)
+
+    def check_size(self, n: int, span, what: str = "a string") -> None:
+        """A string or list of ``n`` characters/items must fit the budget's ``size``."""
+        if n > self.budget.size:
+            unit = "items" if "list" in what else "characters"
+            raise BudgetExhausted(f"{what} of {n:,} {unit}, more than the {self.budget.size:,} "
+                                  "allowed", span, self.frames)
+
+    def budget_error(self, ex: BudgetExhausted) -> None:
+        frames = [f for f in ex.frames if f[1] is not None]
+        primary = frames[0][1] if frames else ex.span
+        labels, seen = [], {frames[0][1]} if frames else set()
+        for what, sp in frames[1:]:
+            if sp in seen:
+                continue
+            seen.add(sp)
+            n = sum(1 for f in frames if f[1] == sp)
+            labels.append(Label(sp, f"inside {what}" + (f" ({n} levels)" if n > 1 else ""),
+                                primary=False))
+        labels = labels[:6]
+        if ex.span is not None and all(ex.span != f[1] for f in frames):
+            labels.append(Label(ex.span, "the budget ran out here", primary=False))
+        where = f" in {frames[0][0]}" if frames else ""
+        self.sink.add(Diagnostic(
+            "E0304", f"the program ran out of its evaluation budget{where}: {ex.what}",
+            primary, "error", labels=labels,
+            hint="build less (smaller loops, fewer template instances); if the model really "
+                 "needs more, raise the budget with `--budget 2` (or more)"))
+
+    # ------------------------------------------------------------------ helpers
+    @property
+    def unit_scale(self) -> float:
+        return self.file.unit_scale if self.file else 1.0
+
+    def value_of(self, e) -> float:
+        """The value of expression ``e`` at the current parameters (mm, radians)."""
+        if type(e) is Lin:               # evaluate() of an affine expression, inline
+            s, x = e.const, self.model.x
+            for k, v in e.terms.items():
+                s += v * x[k]
+            return s
+        return evaluate(lift(e), self.model.x)
+
+    def error(self, e: EvalError) -> None:
+        key = (e.code, e.span)
+        if key in self.reported:         # the same error in every iteration of a loop: once
+            return
+        self.reported.add(key)
+        self.sink.add(Diagnostic(e.code, e.message, e.span, "error", e.hint,
+                                 labels=e.labels, suggestions=e.suggestions))
+
+    def warn_nonconst(self, what: str) -> None:
+        self.sink.warning("W0103", f"{what} depends on solved geometry; its starting value is "
+                          "used and held", self.cur_span,
+                          hint="give it a number or a param; relate shapes with constraints instead")
+

@@ -1,0 +1,614 @@
+"""Calls: resolving a callee, primitive and constraint constructors from the registry,
+argument coercion to points, lengths and angles, templates, and the built-in functions.
+
+A mixin of :class:`aidl_lang.interp.Interpreter`; it uses the other parts through ``self``."""
+from __future__ import annotations
+
+import math
+
+from .. import ast as A
+from ..diagnostics import EvalError, did_you_mean
+from ..geometry.constraints import BUILDERS, ConstraintError
+from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, var
+from ..geometry.model import Constraint, Equation, Point, Scalar
+from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
+from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+                               Template, UnitError, dim_name, mul_dim, owners_of, type_name)
+from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
+from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
+                        lookup)
+from .common import (DEG, _a, _fmt_num, _src, show)
+
+
+_DIMS = {"length": LEN, "angle": ANG, "number": NUM}
+# argument types a reference to geometry of these kinds passes unchanged (see _coerce)
+_GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
+               "curve": ("Line", "Circle", "Arc")}
+_ANY_REFERENCE = ("boxed", "geometry", "any")      # types any reference to geometry passes
+
+
+class _Plan:
+    """How a call binds to a registry entry, worked out once per call shape (entry name,
+    number of positional arguments, keyword names) and interpreter run (the variant,
+    keyword renaming and synonym swaps of :func:`~aidl_lang.registry.bind_variant` and
+    :func:`~aidl_lang.registry.canonical_args`): ``order`` lists, in the variant's order,
+    ``(argument, type, where, index, dimension)`` with ``where`` 0 (positional ``index``),
+    1 (keyword ``index``) or 2 (the registry default ``index``, a number of dimension
+    ``type`` when ``type`` is a dimension, else the value itself); ``dimension`` is the
+    dimension a number of this type has (None if it is not a number)."""
+
+    __slots__ = ("entry", "canonical", "category", "order")
+
+    def __init__(self, entry, canonical_name, order):
+        self.entry = entry
+        self.canonical = canonical_name
+        self.category = entry.category
+        self.order = order
+
+
+_NO_PLAN = object()
+_BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
+
+
+def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
+    """The :class:`_Plan` of a call of registry entry ``nm`` with ``npos`` positional
+    arguments and keywords ``kwnames``; None when such a call takes the general path (no
+    matching variant: its errors; a repeated keyword; ``Text``, whose ``center`` changes a
+    default)."""
+    entry = lookup(nm)
+    cn = canonical(nm)
+    if entry is None or cn == "Text" or len(set(kwnames)) < len(kwnames):
+        return None
+    kwnames = list(kwnames)
+    variant, ren, _reason = bind_variant(entry, npos, kwnames)
+    if variant is None:
+        return None
+    src: dict = {}
+    for a, i in zip(variant, range(npos)):
+        src[a.name] = (0, i)
+    for i, k in enumerate(kwnames):
+        src[ren[k]] = (1, i)
+    src = canonical_args(nm, src)
+    order = []
+    for a in variant:
+        if a.name in src:
+            where, i = src[a.name]
+            order.append((a.name, a.type, where, i, _DIMS.get(a.type)))
+        elif a.default is not None:      # registry defaults are in mm / radians
+            dim = _DIMS.get(a.type)
+            order.append((a.name, dim, 2, a.default, None))
+    return _Plan(entry, cn, tuple(order))
+
+
+class Calls:
+    def _callee(self, f):
+        if type(f) is A.Name:
+            name = f.id
+            sc = self.scope                  # Scope.lookup, inlined: the first scope that has it
+            while sc is not None:
+                vars_ = sc.vars
+                if name in vars_:
+                    v = vars_[name]
+                    if v is not None:
+                        return v
+                    break
+                sc = sc.parent
+            b = _BUILTINS.get(name)
+            if b is None and (lookup(name) is not None or name in FUNCTIONS):
+                b = _BUILTINS[name] = Builtin(name)
+            return b
+        if isinstance(f, A.Member):
+            obj = self._callee(f.obj) if isinstance(f.obj, (A.Name, A.Member)) else None
+            if isinstance(obj, Namespace):
+                return obj.scope.vars.get(f.name)
+        return None
+
+    def _call(self, node: A.Call, name: str | None = None, callee=None):
+        """Evaluate a call (``callee``: ``self._callee(node.func)`` when the caller has it)."""
+        if callee is None:
+            callee = self._callee(node.func)
+        if callee is None:
+            if isinstance(node.func, A.Name):
+                cands = list(self.scope.names()) + list(ENTRIES) + list(FUNCTIONS)
+                sugg = did_you_mean(node.func.id, cands)
+                raise EvalError("E0103", f"unknown function `{node.func.id}`", node.func.span,
+                                hint=(f"did you mean `{sugg[0]}`?" if sugg else
+                                      "see `aidl explain E0103` for the vocabulary"),
+                                suggestions=sugg)
+            callee = self.eval(node.func)
+        if isinstance(callee, Template):
+            if name is None:
+                raise EvalError("E0119", f"an instance of template `{callee.node.name}` needs a name",
+                                node.span, hint=f"write `part = {callee.node.name}(...)`")
+            return self._instantiate(callee, node, name)
+        if not isinstance(callee, Builtin):
+            raise EvalError("E0111", f"a {type_name(callee)} cannot be called", node.func.span)
+        nm = callee.name
+        if nm in FUNCTIONS:
+            return self.finite(self._function(nm, node), node.span)
+        kws = node.kwargs
+        key = (nm, len(node.args), tuple([kw.name for kw in kws]) if kws else ())
+        plan = self.plans.get(key, _NO_PLAN)
+        if plan is _NO_PLAN:
+            plan = self.plans[key] = _plan(nm, len(node.args), key[2])
+        if plan is not None:
+            return self._planned_call(node, nm, plan, name)
+        entry = lookup(nm)
+        args = [self.eval(a) for a in node.args]
+        kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
+        variant, ren, reason = bind_variant(entry, len(args), list(kwargs))
+        if variant is None:
+            span = node.span
+            ok = accepted_args(entry)
+            bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
+            if bad_kw is not None:
+                raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
+                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}",
+                                suggestions=did_you_mean(bad_kw.name, ok))
+            code = "E0106" if reason and reason.startswith("missing") else "E0104"
+            raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
+        bound = {}
+        spans = {}
+        for a, v, node_a in zip(variant, args, node.args):
+            bound[a.name] = v
+            spans[a.name] = node_a.span
+        for k, (v, kw) in kwargs.items():
+            bound[ren[k]] = v
+            spans[ren[k]] = kw.value.span
+        if canonical(nm) == "Text" and "center" in kwargs and "valign" not in bound:
+            bound["valign"] = "middle"        # Text(center=...) means centered on that point
+            spans["valign"] = node.span
+        bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
+        conv = {}
+        for a in variant:
+            if a.name in bound:
+                conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm, a.name)
+            elif a.default is not None:      # registry defaults are in mm / radians
+                dim = _DIMS.get(a.type)
+                conv[a.name] = Q.num(a.default, dim) if dim else a.default
+        for k, v in conv.items():
+            self._check_magnitudes(v, spans.get(k, node.span), k)
+        if entry.category == "primitive":
+            return self._primitive(canonical(nm), conv, node, spans)
+        if entry.category == "operation":
+            from ..geometry.operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, canonical(nm), conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+        owners = owners_of(*conv.values())
+        try:
+            eqs = BUILDERS[canonical(nm)](self, **conv)
+        except ConstraintError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), node.span)
+        self._add_constraint(canonical(nm), eqs, node.span, _src(self.sink, node.span), owners)
+        return None
+
+    def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
+        """A call of a registry entry by its :class:`_Plan`: the same evaluation order,
+        coercions, checks and errors as the general path of :meth:`_call`."""
+        ev = self.eval
+        args = list(map(ev, node.args))
+        kwvals = [ev(kw.value) for kw in node.kwargs] if node.kwargs else ()
+        conv = {}
+        spans = {}
+        coerce = self._coerce
+        for aname, atype, where, ix, want in plan.order:
+            if where == 0:
+                v, sp = args[ix], node.args[ix].span
+            elif where == 1:
+                v, sp = kwvals[ix], node.kwargs[ix].value.span
+            else:
+                conv[aname] = Q.num(ix, atype) if atype else ix
+                continue
+            spans[aname] = sp
+            t = type(v)                 # _coerce's common cases, inline
+            if t is Q:
+                if v.dim == want:
+                    conv[aname] = v
+                    continue
+                e = v.expr
+                if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
+                        and not e.terms:    # a bare number: file units or degrees
+                    c = _new(Lin)
+                    c.terms = {}
+                    c.const = (self.unit_scale if want == LEN else DEG) * e.const
+                    conv[aname] = Q(c, want, v.owners)
+                    continue
+            elif t is GeomRef:
+                kind = v.geom.kind
+                kinds = _GEOM_KINDS.get(atype)
+                if kinds is not None:
+                    if kind in kinds:
+                        conv[aname] = v
+                        continue
+                elif atype == "point":
+                    if kind == "Point":            # geom_member(v.geom, "p", ...)
+                        conv[aname] = _pv(v.geom.points["p"], self.struct)
+                        continue
+                elif atype in _ANY_REFERENCE:
+                    conv[aname] = v
+                    continue
+            elif (t is StructRef or t is BBoxRef) and (atype == "boxed" or atype == "any"):
+                conv[aname] = v
+                continue
+            conv[aname] = coerce(v, atype, sp, nm, aname)
+        check = self._check_magnitudes
+        for k, v in conv.items():
+            t = type(v)                 # _check_magnitudes' common cases, inline
+            if t is Q:
+                e = v.expr
+                if type(e) is Lin:
+                    if e.terms:
+                        continue
+                    c = e.const
+                    if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
+                        continue
+            elif t is GeomRef:
+                continue
+            elif t is PV:
+                x, y = v.x, v.y          # coordinates with unknowns: nothing to check
+                if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
+                    continue
+            check(v, spans.get(k, node.span), k)
+        cn = plan.canonical
+        if plan.category == "primitive":
+            return self._primitive(cn, conv, node, spans)
+        if plan.category == "operation":
+            from ..geometry.operations import OperationError, apply
+            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            try:
+                return apply(self, cn, conv, name)
+            except OperationError as ex:
+                raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
+        owners = owners_of(*conv.values())
+        try:
+            eqs = BUILDERS[cn](self, **conv)
+        except ConstraintError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), node.span)
+        self._add_constraint(cn, eqs, node.span, _src(self.sink, node.span), owners)
+        return None
+
+    def _primitive(self, kind, conv, node, spans):
+        s = self._need_struct(node.span)
+        for k, v in conv.items():
+            t = type(v)
+            if t is Q or t is PV:
+                own = v.owners
+            elif t is bool or t is str or v is None or (t is GeomRef and v.geom.owner is s):
+                continue                 # no geometry, or geometry of this structure
+            else:
+                own = owners_of(v)
+            if not own or (s in own and len(own) == 1):
+                continue
+            bad = [o for o in owners_of(v) if o is not s]
+            if bad:
+                raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
+                                f"another structure", spans.get(k, node.span),
+                                hint="geometry may only use geometry of its own structure; give it its "
+                                     "own starting value and relate the two with a constraint, "
+                                     "e.g. `Coincident(...)`, in a structure that contains both")
+        if kind == "Text" and s.kind != "drawing":
+            raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
+                            node.span, hint="put it in `drawing labels { ... }` inside this structure")
+        self.n_geometry += 1
+        if self.n_geometry > MAX_GEOMETRY:
+            raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", node.span,
+                            hint="use fewer or larger repetitions")
+        self.count_object(node.span)
+        try:
+            g = build(self, kind, conv, node.span)
+        except PrimitiveError as ex:
+            raise EvalError("E0108", str(ex), node.span, hint=lookup(kind).signature())
+        if kind == "Text":
+            from ..geometry.text import missing_glyphs, text_extent
+            self.check_size(len(g.data["text"]), node.span, "a Text")
+            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"],
+                                           g.data["valign"], g.data["rotation"])
+            lost = missing_glyphs(g.data["text"])
+            if lost:
+                shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
+                self.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "
+                                  f"{'they are' if len(lost) > 1 else 'it is'} left out of the "
+                                  "drawing", spans.get("text", node.span),
+                                  hint="the single-stroke font draws printable ASCII only; "
+                                       "write the text in ASCII (e.g. `e` for `é`)")
+        return GeomRef(g)
+
+    # -- used by primitives.build
+    def point(self, v: PV, label: str) -> Point:
+        s = self.struct
+        if v.obj is not None and v.obj.owner is s:
+            return v.obj
+        self.count_object(self.cur_span)
+        cx, cy = as_const(v.x), as_const(v.y)
+        x0 = cx if cx is not None else self.value_of(v.x)
+        y0 = cy if cy is not None else self.value_of(v.y)
+        ix, iy = self.model.new_pair(x0, y0, True, s, label)
+        p = Point(ix, iy, s, None, label)
+        if cx is None or cy is None:
+            c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
+                           text=f"{label} placed at a derived point", implicit=True)
+            s.constraints.append(c)
+            self.model.constraints.append(c)
+        return p
+
+    def scalar(self, q: Q, label: str, held: bool) -> Scalar:
+        c = q.const()
+        if c is not None:
+            return self.new_scalar(c, label, held)
+        sc = self.new_scalar(self.value_of(q.expr), label, held=False)
+        c2 = Constraint("internal", self.struct, None, [Equation(var(sc.index) - q.expr)],
+                        text=f"{label} from an expression", implicit=True)
+        self.struct.constraints.append(c2)
+        self.model.constraints.append(c2)
+        return sc
+
+    def new_scalar(self, value: float, label: str, held: bool) -> Scalar:
+        i = self.model.new_param(value, not held, self.struct, label)
+        return Scalar(i, self.struct, "length", label)
+
+    def internal(self, g, eqs, text: str) -> None:
+        c = Constraint("internal", self.struct, g.span, eqs, text=text, implicit=True)
+        self.struct.constraints.append(c)
+        self.model.constraints.append(c)
+
+    # ------------------------------------------------------------------ coercion
+    def _to_point(self, v, span) -> PV:
+        if isinstance(v, PV):
+            return v
+        if isinstance(v, GeomRef) and v.geom.kind == "Point":
+            return geom_member(v.geom, "p", self.struct)
+        if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
+            xs = [self._as_length(c, span) for c in v]
+            return PV(xs[0], xs[1], None, owners_of(*v))
+        raise EvalError("E0108", f"expected a point, got {type_name(v)}", span,
+                        hint="write a point as `(x, y)` or refer to one, e.g. `rect.top_left`")
+
+    def _as_length(self, q: Q, span):
+        if q.dim == LEN:
+            return q.expr
+        if q.dim == NUM:
+            return lift(q.expr) * self.unit_scale
+        raise EvalError("E0109", f"expected a length, got a {dim_name(q.dim)}", span,
+                        hint="give a length unit such as `mm` or `in`")
+
+    def _coerce(self, v, typ: str, span, fname: str, aname: str):
+        t = type(v)                    # the common cases first: nothing to convert
+        if t is Q:
+            if v.dim == _DIMS.get(typ):
+                return v
+        elif t is PV:
+            if typ == "point" or typ == "geometry":
+                return v
+        elif t is GeomRef:
+            if typ in _GEOM_KINDS:
+                if v.geom.kind in _GEOM_KINDS[typ]:
+                    return v
+            elif typ == "boxed" or typ == "geometry" or typ == "any":
+                return v
+            elif typ == "point" and v.geom.kind == "Point":
+                return geom_member(v.geom, "p", self.struct)
+        elif t is StructRef or t is BBoxRef:
+            if typ == "boxed" or typ == "any":
+                return v
+        if typ == "any":
+            return v
+        if v is None and typ == "point":
+            return None
+        if typ in ("length", "angle", "number"):
+            if not isinstance(v, Q):
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {type_name(v)}", span,
+                                hint=lookup(fname).signature())
+            want = _DIMS[typ]
+            if v.dim == want:
+                return v
+            if v.dim == NUM:
+                k = self.unit_scale if typ == "length" else DEG
+                e = v.expr
+                if type(e) is Lin and not e.terms:     # a number: what mul() gives, directly
+                    return Q(_lin({}, k * e.const), want, v.owners)
+                return Q(lift(e) * k, want, v.owners)
+            raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
+                            hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
+                                                                     " such as `deg`" if typ == "angle" else ""))
+        if typ == "point":
+            return self._to_point(v, span)
+        if typ == "points":
+            if not isinstance(v, (list, tuple)):
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a list of points, got {type_name(v)}", span)
+            return [self._to_point(p, span) for p in v]
+        if typ == "bool":
+            if not isinstance(v, bool):
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be true or false, got {type_name(v)}", span)
+            return v
+        if typ == "string":
+            if isinstance(v, Q) and v.const() is not None:
+                return _fmt_num(v.const())
+            if not isinstance(v, str):
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a string, got {type_name(v)}", span)
+            return v
+        if typ == "line":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Slot"):
+                return v
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Line, got {type_name(v)}", span,
+                            hint="rectangle edges are lines: `rect.top`, `rect.left`, ...")
+        if typ == "circular":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
+                return v
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Circle or Arc, got {type_name(v)}", span)
+        if typ == "curve":
+            if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Circle", "Arc"):
+                return v
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Line, Circle or Arc, got {type_name(v)}", span)
+        if typ == "geometry":
+            if isinstance(v, (GeomRef, PV)):
+                return v
+            if isinstance(v, (tuple, list)):
+                return self._to_point(v, span)
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be geometry, got {type_name(v)}", span)
+        if typ == "boxed":
+            if isinstance(v, (GeomRef, StructRef, BBoxRef)):
+                return v
+            raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a structure or "
+                            f"geometry, got {type_name(v)}", span,
+                            hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")
+        return v
+
+    # ------------------------------------------------------------------ functions
+    def _function(self, nm: str, node: A.Call):
+        lo, hi, _doc = FUNCTIONS[nm]
+        if node.kwargs:
+            raise EvalError("E0105", f"`{nm}` takes no keyword arguments", node.kwargs[0].span)
+        args = [self.eval(a) for a in node.args]
+        if not lo <= len(args) <= hi:
+            raise EvalError("E0104", f"`{nm}` takes {lo if lo == hi else f'{lo} to {hi}'} "
+                            f"argument{'s' if hi > 1 else ''}, got {len(args)}", node.span)
+        sp = node.span
+        if nm == "range":
+            ns = [self._int(a, sp) for a in args]
+            r = range(*ns)
+            if len(r) > MAX_ITER:
+                raise EvalError("E0301", f"range of {len(r)} items exceeds the limit of {MAX_ITER}", sp)
+            return [Q.num(i) for i in r]
+        if nm == "len":
+            if not isinstance(args[0], (list, tuple, str)):
+                raise EvalError("E0108", f"`len` needs a list or string, got {type_name(args[0])}", sp)
+            return Q.num(len(args[0]))
+        if nm == "str":
+            v = args[0]
+            text = _fmt_num(v.const()) if isinstance(v, Q) and v.const() is not None else show(v, self.unit_scale)
+            self.check_size(len(text), sp, "a string")
+            return text
+        if nm in ("min", "max"):
+            if len(args) == 1 and isinstance(args[0], list):
+                args = args[0]
+            if not args:
+                raise EvalError("E0108", f"`{nm}` of an empty list", sp)
+            qs = [self._q(a, sp) for a in args]
+            acc = qs[0]
+            for q in qs[1:]:
+                a, b, d = self._unify(acc, q, sp)
+                acc = Q(func(nm, a, b), d, acc.owners | q.owners)
+            return acc
+        if nm == "norm":
+            p = self._to_point(args[0], sp) if not isinstance(args[0], Q) else None
+            if p is None:
+                return Q(func("abs", args[0].expr), args[0].dim, args[0].owners)
+            return Q(func("sqrt", p.x * p.x + p.y * p.y), LEN, p.owners)
+        if nm == "distance":
+            p, q = self._to_point(args[0], sp), self._to_point(args[1], sp)
+            return Q(func("sqrt", (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)), LEN,
+                     p.owners | q.owners)
+        q = [self._q(a, sp) for a in args]
+        if nm in ("sin", "cos", "tan"):
+            if q[0].dim not in (ANG, NUM):
+                raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
+            return Q(func(nm, q[0].expr), NUM, q[0].owners)
+        if nm in ("asin", "acos", "atan"):
+            self._dimless(q[0], nm, sp)
+            return Q(func(nm, q[0].expr), ANG, q[0].owners)
+        if nm == "atan2":
+            a, b, _ = self._unify(q[0], q[1], sp)
+            return Q(func("atan2", a, b), ANG, q[0].owners | q[1].owners)
+        if nm == "sqrt":
+            d = q[0].dim
+            if d[0] % 2 or d[1] % 2:
+                raise EvalError("E0109", f"`sqrt` of a {dim_name(d)} has no unit", sp)
+            c = q[0].const()
+            if c is not None and c < 0:
+                raise EvalError("E0112", f"`sqrt` of a negative number ({_fmt_num(c)})", sp)
+            return Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners)
+        if nm == "abs":
+            return Q(func("abs", q[0].expr), q[0].dim, q[0].owners)
+        if nm == "square":
+            return Q(q[0].expr * q[0].expr, mul_dim(q[0].dim, q[0].dim), q[0].owners)
+        if nm in ("round", "floor", "ceil"):
+            c = q[0].const()
+            if c is None:
+                raise EvalError("E0118", f"`{nm}` of a solved value", sp,
+                                hint="round params and constants only")
+            if nm == "round":
+                nd = int(q[1].const() or 0) if len(q) > 1 else 0
+                return Q.num(round(c, nd), q[0].dim)
+            return Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim)
+        if nm == "radians":
+            return Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
+        if nm == "degrees":
+            e = q[0].expr if q[0].dim == ANG else q[0].expr
+            return Q(lift(e) * (1 / DEG), NUM, q[0].owners)
+        raise EvalError("E0103", f"unknown function `{nm}`", sp)
+
+    def _dimless(self, q: Q, nm, sp):
+        if q.dim != NUM:
+            raise EvalError("E0109", f"`{nm}` needs a plain number, got a {dim_name(q.dim)}", sp)
+
+    def _q(self, v, sp) -> Q:
+        if isinstance(v, bool):
+            return Q.num(1.0 if v else 0.0)
+        if isinstance(v, Q):
+            return v
+        raise EvalError("E0108", f"expected a number, got {type_name(v)}", sp)
+
+    def _int(self, v, sp) -> int:
+        q = self._q(v, sp)
+        c = q.const()
+        if c is None or q.dim != NUM:
+            raise EvalError("E0108", "range() needs plain whole numbers", sp)
+        if abs(c - round(c)) > 1e-9:
+            raise EvalError("E0108", f"range() needs whole numbers, got {_fmt_num(c)}", sp)
+        return int(round(c))
+
+    # ------------------------------------------------------------------ expressions
+
+    # ------------------------------------------------------------------ magnitudes
+    def _check_magnitudes(self, v, span, arg: str) -> None:
+        """Arguments of primitives, constraints and operations: every number known before
+        solving must be finite (E0112), and lengths and coordinates within the model extent
+        :data:`~aidl_lang.limits.MAX_EXTENT` (E0305)."""
+        t = type(v)
+        if t is Q:                     # the common case: one number
+            e = v.expr
+            if type(e) is Lin:
+                if e.terms:
+                    return
+                c = e.const
+            else:
+                c = v.const()
+                if c is None:
+                    return
+            if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
+                return                 # finite, and within the extent
+        elif t is GeomRef or t is StructRef or t is str or t is bool:
+            return
+        if isinstance(v, (list, tuple)):
+            for item in v[:10_000]:
+                self._check_magnitudes(item, span, arg)
+            return
+        if isinstance(v, PV):
+            vals = [(as_const(v.x), True), (as_const(v.y), True)]
+        elif isinstance(v, Q):
+            vals = [(v.const(), v.dim == LEN)]
+        else:
+            return
+        for c, is_len in vals:
+            if c is None:
+                continue
+            if not math.isfinite(c):
+                raise EvalError("E0112", f"`{arg}` is {_nonfinite(c)}", span,
+                                hint="a computation overflowed or divided by a tiny number; "
+                                     "check the expression")
+            if is_len and abs(c) > MAX_EXTENT:
+                raise EvalError("E0305", f"`{arg}` is {c:.4g} mm, beyond the model extent of "
+                                f"{MAX_EXTENT:.0e} mm", span,
+                                hint="models are limited to 1 km in every direction; check the "
+                                     "units and the expression")
+
+
+def _nonfinite(c: float) -> str:
+    return "not a number (NaN)" if c != c else "infinite"

@@ -1,0 +1,170 @@
+"""Names shared by the interpreter's parts: scopes, per-file context, the poison marker for
+names whose definition failed, and small helpers (see :mod:`aidl_lang.interp`)."""
+from __future__ import annotations
+
+import math
+
+from .. import ast as A
+from ..diagnostics import DiagnosticSink, Span
+from ..geometry.model import Structure
+from ..registry import (FUNCTIONS, lookup)
+
+DEG = math.pi / 180.0
+
+
+class _Silent(Exception):
+    """Raised when a statement uses a name whose definition already failed (reported once)."""
+
+
+POISON = object()
+
+
+class BudgetExhausted(Exception):
+    """Raised when the compile's evaluation budget (:class:`aidl_lang.limits.Budget`) runs
+    out; it unwinds the whole interpretation (no statement catches it) and
+    :meth:`aidl_lang.interp.Interpreter.run` turns it into one ``E0304``."""
+
+    def __init__(self, what: str, span, frames):
+        super().__init__(what)
+        self.what = what
+        self.span = span
+        self.frames = list(frames)
+
+
+class Scope:
+    def __init__(self, parent: "Scope | None", struct: Structure | None, file: "FileCtx"):
+        self.vars: dict = {}
+        self.parent = parent
+        self.struct = struct
+        self.file = file
+
+    def lookup(self, name: str):
+        s = self
+        while s is not None:
+            if name in s.vars:
+                return s.vars[name], s
+            s = s.parent
+        return None, None
+
+    def names(self):
+        out = set()
+        s = self
+        while s is not None:
+            out |= set(s.vars)
+            s = s.parent
+        return out
+
+
+class FileCtx:
+    def __init__(self, path: str, unit_scale: float = 1.0):
+        self.path = path
+        self.unit_scale = unit_scale
+        self.scope = Scope(None, None, self)
+
+
+
+def _is_plain_const(st) -> bool:
+    """A top-level `NAME = expr` that creates no geometry (a file constant)."""
+    if not isinstance(st, A.Assign):
+        return False
+    for n in A.walk(st.value):
+        if isinstance(n, A.Call) and isinstance(n.func, A.Name):
+            e = lookup(n.func.id)
+            if e is not None and e.category in ("primitive", "operation"):
+                return False
+            if n.func.id not in FUNCTIONS and e is None:
+                return False   # a template call
+    return True
+
+
+def _is_geometry_stmt(st) -> bool:
+    """A top-level statement that creates geometry directly (not a constraint)."""
+    v = st.value if isinstance(st, A.Assign) else st.expr if isinstance(st, A.ExprStmt) else None
+    if isinstance(v, A.Call) and isinstance(v.func, A.Name):
+        e = lookup(v.func.id)
+        return e is not None and e.category == "primitive"
+    return isinstance(st, (A.For, A.If))
+
+
+def _common_ancestor(a: Structure, b: Structure):
+    anc = set()
+    s = a
+    while s is not None:
+        anc.add(s)
+        s = s.parent
+    s = b
+    while s is not None:
+        if s in anc:
+            return s
+        s = s.parent
+    return None
+
+
+def _src(sink: DiagnosticSink, span: Span | None) -> str:
+    if span is None:
+        return ""
+    src = sink.sources.get(span.file, "")
+    return " ".join(src[span.start:span.end].split())[:120]
+
+
+def _a(word: str) -> str:
+    return ("an " if word[:1] in "aeiou" else "a ") + word
+
+
+def _fmt_num(c: float) -> str:
+    if abs(c - round(c)) < 1e-9:
+        return str(int(round(c)))
+    return f"{c:.6g}"
+
+
+def show(v, unit_scale: float = 1.0, depth: int = 0) -> str:
+    """The text ``str(v)`` and an f-string give for a value: numbers in the file's unit,
+    points as ``(x, y)``, geometry and structures by kind and path; never an internal repr
+    or a file path."""
+    from ..geometry.expr import as_const
+    from ..geometry.values import (ANG, LEN, PV, BBoxRef, Builtin, GeomRef, Namespace, Q,
+                                   StructRef, Template, type_name)
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return v
+    if isinstance(v, Q):
+        c = v.const()
+        if c is None:
+            return f"a {type_name(v)} known after solving"
+        if v.dim == LEN:
+            c /= unit_scale
+        elif v.dim == ANG:
+            c /= DEG
+        return _fmt_num(c)
+    if depth > 3:
+        return "..."
+    if isinstance(v, (list, tuple)):
+        items = [show(x, unit_scale, depth + 1) for x in v[:20]]
+        if len(v) > 20:
+            items.append(f"... ({len(v)} items)")
+        o, c_ = ("[", "]") if isinstance(v, list) else ("(", ")")
+        return o + ", ".join(items) + c_
+    if isinstance(v, PV):
+        x, y = as_const(v.x), as_const(v.y)
+        if x is not None and y is not None:
+            return f"({_fmt_num(x / unit_scale)}, {_fmt_num(y / unit_scale)})"
+        if v.obj is not None:
+            return f"point `{v.obj.label}` in `{v.obj.owner.path}`"
+        return "a point known after solving"
+    if isinstance(v, GeomRef):
+        g = v.geom
+        return f"{g.kind} `{g.owner.path}.{g.name}`" if g.name else f"{g.kind} in `{g.owner.path}`"
+    if isinstance(v, StructRef):
+        return f"{v.struct.kind} `{v.struct.path}`"
+    if isinstance(v, Template):
+        return f"template `{v.node.name}`"
+    if isinstance(v, Namespace):
+        return f"import `{v.name}`"
+    if isinstance(v, Builtin):
+        return f"built-in `{v.name}`"
+    if isinstance(v, BBoxRef):
+        return "a bounding box"
+    if v is None:
+        return "none"
+    return type_name(v)

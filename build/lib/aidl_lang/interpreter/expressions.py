@@ -1,0 +1,422 @@
+"""Expressions: numbers with units, strings, names, members, indexing, lists and
+comprehensions, operators with unit arithmetic, and point arithmetic.
+
+A mixin of :class:`aidl_lang.interp.Interpreter`; it uses the other parts through ``self``."""
+from __future__ import annotations
+
+import math
+
+from .. import ast as A
+from ..diagnostics import EvalError, did_you_mean
+from ..geometry.bbox import BBTerm
+from ..geometry.expr import Lin, _new, as_const, func, lift
+from ..geometry.primitives import member as geom_member, member_names
+from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+                               dim_name, mul_dim, type_name)
+from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
+from .common import (DEG, POISON, Scope, _Silent, _fmt_num, show)
+
+
+_HANDLERS: dict = {}      # (interpreter class, AST node class) -> the _e_<Node> function
+
+
+class Expressions:
+    def eval(self, e, name: str | None = None):
+        t = type(e)
+        if t is A.Call:                  # what _e_Call does, without the extra frame
+            self.step(e.span)
+            return self._call(e, name)
+        if t is A.Name:                  # a name defined in scope: _e_Name's first case, inline
+            nid = e.id
+            if nid != "self":
+                sc = self.scope
+                while sc is not None:
+                    vars_ = sc.vars
+                    if nid in vars_:
+                        v = vars_[nid]
+                        if v is POISON:
+                            raise _Silent()
+                        return v
+                    sc = sc.parent
+            return self._e_Name(e)
+        if t is A.Num:
+            v = e.value
+            if e.unit is None and -1e15 <= v <= 1e15:    # _e_Num of a plain finite number
+                c = _new(Lin)
+                c.terms = {}
+                c.const = float(v)
+                return Q(c, NUM)
+            return self._e_Num(e)
+        key = (type(self), t)
+        m = _HANDLERS.get(key)
+        if m is None:
+            m = _HANDLERS[key] = getattr(type(self), "_e_" + t.__name__)
+        return m(self, e)
+
+    def _e_Num(self, e: A.Num):
+        if not math.isfinite(e.value) or abs(e.value) > 1e15:
+            raise EvalError("E0112", "this number is too large", e.span,
+                            hint="AIDL numbers must stay below 1e15")
+        u = e.unit                       # Q.num, inline
+        c = _new(Lin)
+        c.terms = {}
+        if u is None:
+            c.const = float(e.value)
+            return Q(c, NUM)
+        if u in UNITS_LENGTH:
+            c.const = float(e.value * UNITS_LENGTH[u])
+            return Q(c, LEN)
+        c.const = float(e.value * UNITS_ANGLE[u])
+        return Q(c, ANG)
+
+    def _e_Str(self, e):
+        return e.value
+
+    def _e_FStr(self, e: A.FStr):
+        out = []
+        for p in e.parts:
+            if isinstance(p, str):
+                out.append(p)
+                continue
+            node, fmt = p
+            v = self.eval(node)
+            if isinstance(v, Q):
+                c = v.const()
+                if c is None:
+                    raise EvalError("E0118", "an f-string cannot show a solved value", e.span)
+                if v.dim == LEN:
+                    c /= self.unit_scale
+                elif v.dim == ANG:
+                    c /= DEG
+                if fmt and _format_width(fmt) > self.budget.size:
+                    raise EvalError("E0304", f"the format `{fmt}` asks for more than "
+                                    f"{self.budget.size:,} characters", e.span,
+                                    hint="use a width below the string size budget")
+                try:
+                    out.append(format(c, fmt) if fmt else _fmt_num(c))
+                except ValueError:
+                    raise EvalError("E0108", f"bad format `{fmt}`", e.span)
+            else:
+                out.append(show(v, self.unit_scale))
+        text = "".join(out)
+        self.check_size(len(text), e.span, "a string")
+        return text
+
+    def _e_Name(self, e: A.Name):
+        if e.id == "self":
+            if self.struct is None:
+                raise EvalError("E0101", "`self` is only defined inside a structure", e.span)
+            return StructRef(self.struct)
+        v, sc = self.scope.lookup(e.id)
+        if v is POISON:
+            raise _Silent()
+        if sc is not None:
+            return v
+        if e.id in ("true", "True"):
+            return True
+        if e.id in ("false", "False"):
+            return False
+        if e.id in ("pi", "PI"):
+            return Q.num(math.pi)
+        if e.id == "tau":
+            return Q.num(2 * math.pi)
+        # a structure's own name or an enclosing structure's name
+        s = self.struct
+        while s is not None:
+            if s.name == e.id:
+                return StructRef(s)
+            s = s.parent
+        if lookup(e.id) is not None or e.id in FUNCTIONS:
+            return Builtin(e.id)
+        later = self.later_definition(e.id)
+        if later is not None and later > e.span.line:
+            raise EvalError("E0101", f"`{e.id}` is used before its definition: it is defined later, "
+                            f"on line {later}", e.span,
+                            hint=f"a definition may only use names defined above it; move line "
+                                 f"{later} above line {e.span.line} (constraint statements may "
+                                 f"name later geometry)")
+        cands = list(self.scope.names()) + [s.name for s in self._enclosing()] + list(CONSTANTS)
+        sugg = did_you_mean(e.id, cands)
+        raise EvalError("E0101", f"unknown name `{e.id}`", e.span,
+                        hint=f"did you mean `{sugg[0]}`?" if sugg else "define it before use",
+                        suggestions=sugg)
+
+    def _enclosing(self):
+        s = self.struct
+        while s is not None:
+            yield s
+            s = s.parent
+
+    def _e_Call(self, e: A.Call, name=None):
+        self.step(e.span)
+        return self._call(e, name)
+
+    def _e_Keyword(self, e):
+        raise EvalError("E0001", "keyword argument outside a call", e.span)
+
+    def _e_Member(self, e: A.Member):
+        obj = self.eval(e.obj)
+        return self.member(obj, e.name, e.name_span, e.obj.span)
+
+    def member(self, obj, name: str, span, obj_span=None):
+        S = self.struct
+        if isinstance(obj, Namespace):
+            if name in obj.scope.vars:
+                return obj.scope.vars[name]
+            raise EvalError("E0102", f"`{obj.name}` has no `{name}`", span,
+                            suggestions=did_you_mean(name, obj.scope.vars))
+        if isinstance(obj, StructRef):
+            s = obj.struct
+            if name == "bb":
+                return BBoxRef(s)
+            if name in s.scope:
+                return s.scope[name]
+            if name in s.children:
+                return StructRef(s.children[name])
+            if name in ("width", "height", "left", "right", "top", "bottom", "center"):
+                return self.member(BBoxRef(s), name, span)
+            cands = list(s.scope) + list(s.children) + ["bb"]
+            sugg = did_you_mean(name, cands)
+            raise EvalError("E0102", f"structure `{s.path}` has no member `{name}`", span,
+                            hint=f"did you mean `{sugg[0]}`?" if sugg else
+                            f"its members: {', '.join(sorted(cands)[:12])}", suggestions=sugg)
+        if isinstance(obj, GeomRef):
+            g = obj.geom
+            if name == "bb":
+                return BBoxRef(g)
+            v = geom_member(g, name, S)
+            if v is not None:
+                return v
+            cands = member_names(g)
+            sugg = did_you_mean(name, cands)
+            raise EvalError("E0102", f"a {g.kind} has no member `{name}`", span,
+                            hint=f"did you mean `{sugg[0]}`?" if sugg else f"its members: {', '.join(cands)}",
+                            suggestions=sugg)
+        if isinstance(obj, BBoxRef):
+            t = obj.target
+            own = obj.owners
+            side = {s: BBTerm(t, s, S) for s in ("left", "right", "bottom", "top")}
+            L = lambda e: Q(e, LEN, own)
+            table = {
+                "left": lambda: L(side["left"]), "right": lambda: L(side["right"]),
+                "bottom": lambda: L(side["bottom"]), "top": lambda: L(side["top"]),
+                "width": lambda: L(side["right"] - side["left"]),
+                "height": lambda: L(side["top"] - side["bottom"]),
+                "center_x": lambda: L((side["left"] + side["right"]) * 0.5),
+                "center_y": lambda: L((side["bottom"] + side["top"]) * 0.5),
+                "center": lambda: PV((side["left"] + side["right"]) * 0.5,
+                                     (side["bottom"] + side["top"]) * 0.5, None, own),
+                "top_left": lambda: PV(side["left"], side["top"], None, own),
+                "top_right": lambda: PV(side["right"], side["top"], None, own),
+                "bottom_left": lambda: PV(side["left"], side["bottom"], None, own),
+                "bottom_right": lambda: PV(side["right"], side["bottom"], None, own),
+            }
+            if name in table:
+                return table[name]()
+            sugg = did_you_mean(name, table)
+            raise EvalError("E0102", f"a bounding box has no member `{name}`", span,
+                            hint=f"did you mean `{sugg[0]}`?" if sugg else "members: " + ", ".join(table),
+                            suggestions=sugg)
+        if isinstance(obj, PV):
+            if name in ("x", "y"):
+                return Q(obj.x if name == "x" else obj.y, LEN, obj.owners)
+            raise EvalError("E0102", f"a point has no member `{name}`", span,
+                            hint="a point has `x` and `y`", suggestions=did_you_mean(name, ["x", "y"]))
+        if isinstance(obj, (tuple, list)) and len(obj) == 2 and name in ("x", "y") and all(isinstance(c, Q) for c in obj):
+            p = self._to_point(obj, span)
+            return Q(p.x if name == "x" else p.y, LEN, p.owners)
+        raise EvalError("E0102", f"a {type_name(obj)} has no member `{name}`", span)
+
+    def _e_Index(self, e: A.Index):
+        obj = self.eval(e.obj)
+        idx = self.eval(e.index)
+        if not isinstance(obj, (list, tuple, str)):
+            raise EvalError("E0111", f"a {type_name(obj)} cannot be indexed", e.obj.span,
+                            hint="only lists (loops, comprehensions, `poly.points`) are indexed")
+        i = self._q(idx, e.index.span).const()
+        if i is None or abs(i - round(i)) > 1e-9:
+            raise EvalError("E0108", "a list index must be a whole number", e.index.span)
+        i = int(round(i))
+        n = len(obj)
+        if not -n <= i < n:
+            raise EvalError("E0110", f"index {i} is out of range: the list has {n} item{'s' if n != 1 else ''}",
+                            e.index.span, hint=f"valid indices are 0 to {n - 1}" if n else "the list is empty")
+        return obj[i]
+
+    def _e_TupleLit(self, e):
+        return tuple(self.eval(x) for x in e.items)
+
+    def _e_ListLit(self, e):
+        return [self.eval(x) for x in e.items]
+
+    def _e_ListComp(self, e: A.ListComp):
+        items = self._iterable(self.eval(e.iter), e.iter)
+        out = []
+        outer = self.scope
+        self.frames.append(("the comprehension `[... for " + e.var + " in ...]`", e.span))
+        try:
+            for item in items:
+                self.step(e.span)
+                sc = Scope(outer, self.struct, self.file)
+                sc.vars[e.var] = item
+                self.scope = sc
+                if e.cond is not None and not self._truth(self.eval(e.cond), e.cond):
+                    continue
+                out.append(self.eval(e.elt))
+        finally:
+            self.frames.pop()
+            self.scope = outer
+        return out
+
+    def _e_Ternary(self, e):
+        return self.eval(e.then) if self._truth(self.eval(e.cond), e.cond) else self.eval(e.orelse)
+
+    def _e_BoolOp(self, e):
+        l = self._truth(self.eval(e.left), e.left)
+        if e.op == "and":
+            return l and self._truth(self.eval(e.right), e.right)
+        return l or self._truth(self.eval(e.right), e.right)
+
+    def _e_Not(self, e):
+        return not self._truth(self.eval(e.operand), e.operand)
+
+    def _e_Neg(self, e):
+        v = self.eval(e.operand)
+        if isinstance(v, Q):
+            return Q(-lift(v.expr), v.dim, v.owners)
+        if isinstance(v, PV):
+            return PV(-lift(v.x), -lift(v.y), None, v.owners)
+        raise EvalError("E0108", f"cannot negate a {type_name(v)}", e.span)
+
+    def _e_Compare(self, e: A.Compare):
+        vals = [self.eval(x) for x in e.operands]
+        for op, l, r in zip(e.ops, vals, vals[1:]):
+            if isinstance(l, str) or isinstance(r, str) or isinstance(l, bool) or isinstance(r, bool):
+                res = {"==": l == r, "!=": l != r}.get(op)
+                if res is None:
+                    raise EvalError("E0108", f"cannot order {type_name(l)} and {type_name(r)}", e.span)
+            else:
+                a, b, _ = self._unify(self._q(l, e.span), self._q(r, e.span), e.span)
+                ca, cb = as_const(a), as_const(b)
+                if ca is None or cb is None:
+                    raise EvalError("E0118", "a condition cannot depend on geometry the solver moves",
+                                    e.span, hint="as a statement of its own, `a == b` is a constraint")
+                res = {"==": abs(ca - cb) <= 1e-9 * max(1.0, abs(ca), abs(cb)), "!=": abs(ca - cb) > 1e-9,
+                       "<": ca < cb, "<=": ca <= cb, ">": ca > cb, ">=": ca >= cb}[op]
+            if not res:
+                return False
+        return True
+
+    def finite(self, v, span):
+        """``v`` unchanged if it is not a number known before solving or a finite one; an
+        infinite or NaN result is E0112 at ``span``."""
+        if isinstance(v, Q):
+            c = v.const()
+            if c is not None and not math.isfinite(c):
+                raise EvalError("E0112", "this computation gives " +
+                                ("not a number (NaN)" if c != c else "infinity"), span,
+                                hint="a value overflowed or was divided by a tiny number; "
+                                     "AIDL numbers must stay finite")
+        return v
+
+    def _e_BinOp(self, e: A.BinOp):
+        self.ops += 1
+        if not self.ops & 4095:
+            self.check_time(e.span)
+        return self.finite(self._binop(e), e.span)
+
+    def _binop(self, e: A.BinOp):
+        l, r = self.eval(e.left), self.eval(e.right)
+        op = e.op
+        if type(l) is Q and type(r) is Q:         # the common case: two numbers
+            return self._q_op(op, l, r, e)
+        if op == "+" and isinstance(l, str) and isinstance(r, str):
+            self.check_size(len(l) + len(r), e.span, "a string")
+            return l + r
+        if op == "+" and isinstance(l, list) and isinstance(r, list):
+            self.check_size(len(l) + len(r), e.span, "a list")
+            return l + r
+        if isinstance(l, (tuple, list)) and len(l) == 2 and all(isinstance(c, Q) for c in l):
+            l = self._to_point(l, e.left.span)
+        if isinstance(r, (tuple, list)) and len(r) == 2 and all(isinstance(c, Q) for c in r):
+            r = self._to_point(r, e.right.span)
+        if isinstance(l, GeomRef) and l.geom.kind == "Point":
+            l = geom_member(l.geom, "p", self.struct)
+        if isinstance(r, GeomRef) and r.geom.kind == "Point":
+            r = geom_member(r.geom, "p", self.struct)
+        if isinstance(l, PV) or isinstance(r, PV):
+            return self._point_op(op, l, r, e)
+        if isinstance(l, bool):
+            l = Q.num(float(l))
+        if isinstance(r, bool):
+            r = Q.num(float(r))
+        if not isinstance(l, Q) or not isinstance(r, Q):
+            raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span)
+        return self._q_op(op, l, r, e)
+
+    def _q_op(self, op: str, l: Q, r: Q, e: A.BinOp):
+        """``l op r`` for two numbers (:class:`Q`): units checked, constants folded."""
+        own = l.owners | r.owners
+        if op in ("+", "-"):
+            a, b, d = self._unify(l, r, e.span)
+            return Q(a + b if op == "+" else a - b, d, own)
+        if op == "*":
+            return Q(lift(l.expr) * r.expr, mul_dim(l.dim, r.dim), own)
+        if op == "/":
+            if r.const() == 0:
+                raise EvalError("E0112", "division by zero", e.right.span)
+            return Q(lift(l.expr) / r.expr, mul_dim(l.dim, r.dim, -1), own)
+        if op in ("//", "%"):
+            ca, cb = l.const(), r.const()
+            if ca is None or cb is None:
+                raise EvalError("E0118", f"`{op}` needs values known before solving", e.span)
+            if l.dim != r.dim and NUM not in (l.dim, r.dim):
+                raise EvalError("E0109", f"cannot apply `{op}` to a {dim_name(l.dim)} and a {dim_name(r.dim)}", e.span)
+            a, b, d = self._unify(l, r, e.span) if op == "%" else (l.expr, r.expr, None)
+            ca, cb = as_const(a), as_const(b)
+            if cb == 0:
+                raise EvalError("E0112", "division by zero", e.right.span)
+            if op == "//":
+                return Q.num(math.floor(ca / cb), mul_dim(l.dim, r.dim, -1))
+            return Q.num(math.fmod(ca, cb) if ca * cb >= 0 else ca - cb * math.floor(ca / cb), d)
+        if op == "**":
+            cb = r.const()
+            if cb is None or r.dim != NUM:
+                raise EvalError("E0108", "an exponent must be a plain number known before solving", e.right.span)
+            if l.dim != NUM and abs(cb - round(cb)) > 1e-12:
+                raise EvalError("E0109", "a length can only be raised to a whole power", e.span)
+            k = int(round(cb)) if l.dim != NUM else 1
+            ca = l.const()
+            if ca is not None:
+                try:
+                    v = ca ** cb
+                except (OverflowError, ZeroDivisionError) as ex:
+                    raise EvalError("E0112", f"math error: {ex}", e.span)
+                if isinstance(v, complex):
+                    raise EvalError("E0112", f"a negative number ({_fmt_num(ca)}) to a fractional "
+                                    f"power ({cb:g}) is not a real number", e.span,
+                                    hint="raise the absolute value, or use a whole exponent")
+                return Q.num(v, (l.dim[0] * k, l.dim[1] * k))
+            return Q(func("pow", l.expr, cb), (l.dim[0] * k, l.dim[1] * k), own)
+        raise EvalError("E0108", f"unknown operator `{op}`", e.span)
+
+    def _point_op(self, op, l, r, e):
+        if op in ("+", "-") and isinstance(l, PV) and isinstance(r, PV):
+            sg = 1.0 if op == "+" else -1.0
+            return PV(l.x + r.x * sg, l.y + r.y * sg, None, l.owners | r.owners)
+        if op in ("*", "/") and (isinstance(l, Q) or isinstance(r, Q)):
+            p, q = (l, r) if isinstance(l, PV) else (r, l)
+            if op == "/" and isinstance(r, PV):
+                raise EvalError("E0108", "cannot divide by a point", e.span)
+            if q.dim != NUM:
+                raise EvalError("E0109", "a point can only be scaled by a plain number", e.span)
+            k = q.expr if op == "*" else lift(1.0) / q.expr
+            return PV(lift(p.x) * k, lift(p.y) * k, None, p.owners | q.owners)
+        raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
+                        hint="points add and subtract as vectors; scale them by numbers")
+
+
+def _format_width(fmt: str) -> int:
+    """The largest number written in a format spec (its width or precision), 0 if none."""
+    import re
+    return max((int(m) for m in re.findall(r"\d+", fmt)), default=0)

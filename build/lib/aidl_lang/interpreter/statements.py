@@ -1,0 +1,600 @@
+"""Statements: files and imports, structure bodies, assignments, loops, template instances,
+constraints and equations (docs/language.md \u00a73-\u00a76; the paper's reference and subtree validity
+rules are checked in :meth:`Statements._check_subtree`).
+
+A mixin of :class:`aidl_lang.interp.Interpreter`; it uses the other parts through ``self``."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from .. import ast as A
+from ..diagnostics import EvalError, did_you_mean
+from ..geometry.bbox import contains_bbox
+from ..geometry.model import Constraint, Equation, Model, Structure
+from ..geometry.primitives import member as geom_member
+from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
+from ..registry import (CONSTANTS, UNITS_LENGTH)
+from ..sources import ImportRefused, read_import, resolve_import
+from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const,
+                     _src)
+
+
+class Statements:
+    # ------------------------------------------------------------------ entry
+    def run(self, program: A.Program) -> Model:
+        self.root_dir = Path(program.path).resolve().parent
+        fctx = self._load_file_decls(program, is_main=True)
+        self.file = fctx
+        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def,
+                                                               A.ThicknessDecl))]
+        structs = [s for s in top if isinstance(s, A.StructDecl)]
+        loose = [s for s in top if not isinstance(s, A.StructDecl) and not _is_plain_const(s)]
+        for name in self.overrides:
+            if name not in getattr(fctx, "params", {}):
+                self.sink.error("E0113", f"`--set {name}=...`: the model has no param `{name}`",
+                                None, hint="params: " + ", ".join(sorted(fctx.params)) if fctx.params else
+                                "declare it with `param NAME = VALUE` at the top of the file",
+                                suggestions=did_you_mean(name, fctx.params))
+        if len(structs) == 1 and not loose:
+            consts = [s for s in top if s is not structs[0]]
+            self.scope = fctx.scope
+            for s in consts:
+                self._exec_stmt(s)
+            st = structs[0]
+            root = self._new_structure(st.name, st.kind, None, st.span)
+            self._run_body(root, st.body, Scope(fctx.scope, root, fctx))
+        else:
+            kind = "assembly" if not any(_is_geometry_stmt(s) for s in loose) else "solid"
+            root = self._new_structure("model", kind, None, program.span)
+            self.scope = fctx.scope
+            for s in top:
+                if _is_plain_const(s):
+                    self._exec_stmt(s)
+            scope = Scope(fctx.scope, root, fctx)
+            rest = [s for s in top if not _is_plain_const(s)]
+            self._run_body(root, A.Block(program.span, rest), scope)
+        # `thickness 3 mm` at the top level: the default of every part (after the constants)
+        saved = self.struct, self.scope
+        self.struct, self.scope = None, fctx.scope
+        for s in program.stmts:
+            if isinstance(s, A.ThicknessDecl):
+                self._exec_stmt(s)
+        self.struct, self.scope = saved
+        self.model.root = root
+        return self.model
+
+    def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
+        self.count_object(span)
+        s = Structure(name, kind, parent, span, template=template)
+        s.fx, s.fy = self.model.new_pair(0.0, 0.0, parent is not None, s, f"{name}.frame")
+        if parent is not None:
+            parent.children[name] = s
+        self.model.structures.append(s)
+        return s
+
+    # ------------------------------------------------------------------ files
+    def _load_file_decls(self, program: A.Program, is_main: bool) -> FileCtx:
+        fctx = FileCtx(program.path)
+        fctx.params = {}
+        fctx.param_ranges = {}
+        prev = self.file
+        self.file = fctx
+        self.scope = fctx.scope
+        for st in program.stmts:
+            if isinstance(st, A.UnitsDecl):
+                u = st.unit.lower()
+                if u not in UNITS_LENGTH:
+                    self.sink.error("E0109", f"unknown length unit `{st.unit}`", st.unit_span,
+                                    hint="use one of " + ", ".join(UNITS_LENGTH),
+                                    suggestions=did_you_mean(st.unit, UNITS_LENGTH))
+                else:
+                    fctx.unit_scale = UNITS_LENGTH[u]
+        self.model.units = "mm"
+        for st in program.stmts:
+            try:
+                if isinstance(st, A.Import):
+                    self._import(st, fctx)
+                elif isinstance(st, A.Def):
+                    if st.kind not in ("solid", "hole", "drawing", "assembly"):
+                        raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                                        hint="a template returns solid, hole, drawing or assembly",
+                                        suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+                    fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
+                elif isinstance(st, A.ParamDecl):
+                    fctx.params[st.name] = None
+                    overridden = st.name in self.overrides and is_main
+                    if overridden:
+                        val = self._eval_override(st.name, self.overrides[st.name], fctx)
+                    else:
+                        val = self.eval(st.value)
+                    if st.options:
+                        try:
+                            fctx.param_ranges[st.name] = self._param_range(st, val, overridden)
+                        except EvalError as e:
+                            self.error(e)
+                    fctx.scope.vars[st.name] = val
+                    fctx.params[st.name] = val
+            except EvalError as e:
+                self.error(e)
+        if not is_main:
+            for st in program.stmts:
+                if isinstance(st, A.Assign) and _is_plain_const(st):
+                    try:
+                        fctx.scope.vars[st.name] = self.eval(st.value)
+                    except EvalError as e:
+                        self.error(e)
+        self.file = prev if not is_main else fctx
+        return fctx
+
+    def _param_range(self, st: A.ParamDecl, val, overridden: bool) -> dict:
+        """Check ``param NAME = V, min=A, max=B, step=S`` (docs/language.md, *Params*): the
+        options have the param's dimension, ``min <= max``, ``step > 0``, and the value (the
+        default, or the ``--set`` override) lies in ``[min, max]`` (E0124).  Returns
+        ``{"min": float|None, "max": ..., "step": ...}`` in internal units (mm, rad)."""
+        from ..geometry.values import dim_name
+        if not isinstance(val, Q) or val.const() is None:
+            raise EvalError("E0124", f"param `{st.name}` has a range but is not a number, length "
+                            "or angle", st.options[0].span,
+                            hint="drop min/max/step, or give the param a numeric value")
+        out: dict = {"min": None, "max": None, "step": None}
+        for o in st.options:
+            if o.name not in out:
+                raise EvalError("E0105", f"param option `{o.name}` is not one of min, max, step",
+                                o.name_span, hint="write e.g. `param w = 40 mm, min=10 mm, "
+                                "max=80 mm, step=1 mm`", suggestions=did_you_mean(o.name, list(out)))
+            q = self.eval(o.value)
+            if isinstance(q, Q) and q.dim != val.dim and q.const() is not None \
+                    and q.dim == (0, 0) and val.dim == (1, 0):
+                q = Q.num(q.const() * self.file.unit_scale, val.dim)     # a bare number: file units
+            if not isinstance(q, Q) or q.const() is None or q.dim != val.dim:
+                want = dim_name(val.dim)
+                raise EvalError("E0124", f"`{o.name}` of param `{st.name}` must be a {want} like "
+                                "its value", o.value.span, hint=f"give `{o.name}` the param's unit")
+            out[o.name] = q.const()
+        lo, hi, step = out["min"], out["max"], out["step"]
+        opt = {o.name: o for o in st.options}
+        if lo is not None and hi is not None and lo > hi:
+            raise EvalError("E0124", f"param `{st.name}`: min is larger than max", opt["min"].span,
+                            hint="swap them")
+        if step is not None and step <= 0:
+            raise EvalError("E0124", f"param `{st.name}`: step must be positive", opt["step"].span)
+        v = val.const()
+        bad = "min" if lo is not None and v < lo - 1e-9 else \
+              "max" if hi is not None and v > hi + 1e-9 else None
+        if bad:
+            shown = _fmt_q(v, val.dim)
+            rng = f"{_fmt_q(lo, val.dim) if lo is not None else '...'} .. " \
+                  f"{_fmt_q(hi, val.dim) if hi is not None else '...'}"
+            if overridden:
+                raise EvalError("E0124", f"`--set {st.name}={self.overrides[st.name]}`: {shown} is "
+                                f"outside the range {rng} declared for `{st.name}`", opt[bad].span,
+                                hint=f"choose a value from {rng}, or widen the range here")
+            raise EvalError("E0124", f"param `{st.name}` = {shown} is outside its own range {rng}",
+                            st.value.span, hint=f"change the value or `{bad}`")
+        return out
+
+    def _eval_override(self, name: str, text: str, fctx: FileCtx):
+        from ..parser import ParseError, parse_expression
+        try:
+            node = parse_expression(text, "<--set>", self.sink)
+        except ParseError:
+            raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
+                            None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
+        if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
+                and node.id not in CONSTANTS:
+            return text                         # a bare word: a string
+        return self.eval(node)
+
+    def _import(self, st: A.Import, fctx: FileCtx) -> None:
+        from ..parser import parse
+        raw = st.path
+        try:
+            target = resolve_import(raw, fctx.path)
+        except ImportRefused as ex:
+            raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint,
+                            suggestions=ex.suggestions)
+        key = str(target)
+        if key in self.loading:
+            raise EvalError("E0115", f"import cycle: `{raw}` imports this file again", st.path_span,
+                            hint="move the shared templates into a third file")
+        if key not in self.loaded:
+            try:
+                text = read_import(target, raw)
+            except ImportRefused as ex:
+                raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint)
+            prog = parse(text, key, self.sink)
+            self.loading.append(key)
+            saved = (self.scope, self.file)
+            try:
+                self.loaded[key] = self._load_file_decls(prog, is_main=False)
+            finally:
+                self.scope, self.file = saved
+                self.loading.pop()
+        sub = self.loaded[key]
+        if st.alias:
+            fctx.scope.vars[st.alias] = Namespace(st.alias, sub.scope)
+        else:
+            for k, v in sub.scope.vars.items():
+                fctx.scope.vars.setdefault(k, v)
+
+    # ------------------------------------------------------------------ statements
+    def _run_body(self, struct: Structure, block: A.Block, scope: Scope) -> None:
+        """Run a structure body: definitions (assignments, structures, loops, ifs) in order,
+        then its constraint statements (bare calls and equations at the body's top level), so
+        a constraint may name geometry defined below it (docs/language.md, "Order")."""
+        saved = (self.struct, self.scope, self.body_stmts)
+        self.struct, self.scope = struct, scope
+        self.body_stmts = block.stmts        # for "defined later" (see later_definition)
+        struct.scope = scope.vars            # members (`self.body`) are visible while it runs
+        try:
+            later = []
+            for st in block.stmts:
+                if type(st) is A.ExprStmt:
+                    later.append(st)
+                else:
+                    self._exec_stmt(st)
+            for st in later:
+                self._exec_stmt(st)
+        finally:
+            self.struct, self.scope, self.body_stmts = saved
+
+    def later_definition(self, name: str) -> int | None:
+        """The line of ``name``'s first definition in the body being run (also inside its
+        loops and ifs), or None."""
+        return _definition_lines(self.body_stmts or []).get(name)
+
+    def _exec_block(self, block: A.Block) -> None:
+        for st in block.stmts:
+            self._exec_stmt(st)
+
+    def _exec_stmt(self, st) -> None:
+        self.cur_span = st.span
+        try:
+            t = type(st)                 # the two common statements without _exec's frame
+            if t is A.Assign:
+                self._assign(st)
+            elif t is A.ExprStmt:
+                self._expr_stmt(st.expr)
+            else:
+                self._exec(st)
+        except _Silent:
+            pass
+        except EvalError as e:
+            self.error(e)
+            if isinstance(st, A.Assign):       # later uses of the name stay quiet
+                self.scope.vars[st.name] = POISON
+            elif isinstance(st, A.StructDecl):
+                self.scope.vars.setdefault(st.name, POISON)
+        except (ValueError, ZeroDivisionError, OverflowError) as e:
+            self.error(EvalError("E0112", f"math error: {e}", st.span,
+                                 hint="check for division by zero or sqrt/asin of an out-of-range value"))
+        except RecursionError:
+            self.error(EvalError("E0302", "expression nested too deeply", st.span,
+                                 hint="split it into named constants"))
+
+    def _exec(self, st) -> None:
+        t = type(st)
+        if t is A.Assign:
+            self._assign(st)
+        elif t is A.ExprStmt:
+            self._expr_stmt(st.expr)
+        elif t is A.StructDecl:
+            self._struct_decl(st)
+        elif isinstance(st, A.ThicknessDecl):
+            self._thickness(st)
+        elif isinstance(st, A.For):
+            self._for(st)
+        elif isinstance(st, A.If):
+            c = self._truth(self.eval(st.cond), st.cond)
+            if c:
+                self._exec_block(st.body)
+            elif st.orelse is not None:
+                self._exec_block(st.orelse)
+        elif isinstance(st, A.Block):
+            raise EvalError("E0001", "a block `{ ... }` without a header", st.span,
+                            hint="name it: `solid NAME { ... }`")
+        elif isinstance(st, (A.ParamDecl, A.Def, A.Import, A.UnitsDecl)):
+            what = {A.ParamDecl: "param", A.Def: "def", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
+            raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
+                            hint=f"move the `{what}` line to the top of the file")
+
+    def _thickness(self, st) -> None:
+        """``thickness LENGTH``: the model's default (top level) or a structure's own, in mm."""
+        v = self.eval(st.value)
+        if not isinstance(v, Q) or v.dim not in (LEN, NUM):
+            raise EvalError("E0109", "`thickness` expects a length", st.value.span,
+                            hint="write it with a unit: `thickness 3 mm`")
+        val = Q(self._as_length(v, st.value.span), LEN).const()
+        if val is None or not val > 0:
+            raise EvalError("E0109", "`thickness` must be a positive length known before "
+                            "solving", st.value.span,
+                            hint="use a number or a param: `thickness 3 mm`")
+        if self.struct is None:
+            self.model.thickness = val
+        else:
+            self.struct.thickness = val
+
+    def _need_struct(self, span) -> Structure:
+        if self.struct is None:
+            raise EvalError("E0117", "geometry and constraints must be inside a structure", span,
+                            hint="wrap them in `solid NAME { ... }`")
+        return self.struct
+
+    def _struct_decl(self, st: A.StructDecl, name: str | None = None):
+        parent = self._need_struct(st.span)
+        if st.kind not in ("solid", "hole", "drawing", "assembly"):
+            raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                            hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
+                            suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+        name = name or st.name + self._loop_suffix()
+        self._check_new_name(st.name, st.name_span, parent)
+        child = self._new_structure(name, st.kind, parent, st.span)
+        self.scope.vars[st.name] = StructRef(child)
+        self._run_body(child, st.body, Scope(self.scope, child, self.file))
+        return child
+
+    def _loop_suffix(self) -> str:
+        """``[i]`` per enclosing loop of the current structure body (outermost first)."""
+        idx = []
+        sc = self.scope
+        while sc is not None and sc.struct is self.struct and sc.parent is not None:
+            if hasattr(sc, "loop_index"):
+                idx.append(sc.loop_index)
+            sc = sc.parent
+        return "".join(f"[{i}]" for i in reversed(idx))
+
+    def _check_new_name(self, name: str, span, struct: Structure) -> None:
+        prev = self.scope.vars.get(name)
+        if isinstance(prev, (GeomRef, StructRef)):
+            raise EvalError("E0107", f"`{name}` is already defined in `{struct.path}`", span,
+                            hint="give each geometry and structure its own name")
+
+    def _assign(self, st: A.Assign) -> None:
+        v = st.value
+        callee = None
+        if type(v) is A.Call and isinstance(v.func, (A.Name, A.Member)):
+            callee = self._callee(v.func)
+            if isinstance(callee, Template):
+                self._check_new_name(st.name, st.name_span, self._need_struct(st.span))
+                ref = self._instantiate(callee, v, st.name + self._loop_suffix())
+                self.scope.vars[st.name] = ref
+                return
+        if st.name in CONSTANTS or st.name == "self":
+            raise EvalError("E0107", f"`{st.name}` is a built-in name and cannot be assigned",
+                            st.name_span, hint="choose another name")
+        if isinstance(v, A.Call) and self.struct is not None:
+            self._check_new_name(st.name, st.name_span, self.struct)
+        if callee is not None:               # what eval() does for a call, callee known
+            self.step(v.span)
+            val = self._call(v, st.name, callee)
+        else:
+            val = self.eval(v, name=st.name)
+        if isinstance(val, GeomRef) and not val.geom.name and val.geom.owner is self.struct:
+            val.geom.name = st.name
+        if isinstance(val, list):
+            for i, item in enumerate(val):
+                if isinstance(item, GeomRef) and not item.geom.name:
+                    item.geom.name = f"{st.name}[{i}]"
+        self.scope.vars[st.name] = val
+
+    def _expr_stmt(self, e) -> None:
+        if isinstance(e, (A.Compare, A.BoolOp)):
+            self._equation(e)
+            return
+        val = self.eval(e)
+        if val is None or isinstance(val, (GeomRef, StructRef)) or type(val).__name__ == "Copies":
+            return
+        self.sink.warning("W0101", "this statement has no effect", e.span,
+                          hint="name the value (`x = ...`) or write a constraint (`a == b`)")
+
+    def _for(self, st: A.For) -> None:
+        items = self._iterable(self.eval(st.iter), st.iter)
+        collected: dict[str, list] = {}
+        outer = self.scope
+        self.frames.append((f"the loop `for {st.var} in ...`", st.span))
+        try:
+            self._for_items(st, items, collected, outer)
+        finally:
+            self.frames.pop()
+        for name, vals in collected.items():
+            outer.vars[name] = vals
+
+    def _for_items(self, st: A.For, items, collected, outer) -> None:
+        for k, item in enumerate(items):
+            self.step(st.span)
+            sc = Scope(outer, self.struct, self.file)
+            sc.vars[st.var] = item
+            sc.loop_index = k
+            self.scope = sc
+            try:
+                for s in st.body.stmts:
+                    self._exec_stmt(s)
+            finally:
+                self.scope = outer
+            for name, v in sc.vars.items():
+                if name != st.var:
+                    collected.setdefault(name, []).append(v)
+
+    def _iterable(self, v, node) -> list:
+        if isinstance(v, (list, tuple)):
+            if len(v) > MAX_ITER:
+                raise EvalError("E0301", f"a loop over {len(v)} items exceeds the limit of {MAX_ITER}",
+                                node.span, hint="use fewer items")
+            return list(v)
+        if isinstance(v, str):
+            return list(v)
+        raise EvalError("E0111", f"cannot loop over a {type_name(v)}", node.span,
+                        hint="loop over `range(n)` or a list")
+
+    def _truth(self, v, node) -> bool:
+        if isinstance(v, bool):
+            return v
+        if isinstance(v, Q):
+            c = v.const()
+            if c is None:
+                raise EvalError("E0118", "a condition cannot depend on geometry the solver moves",
+                                node.span, hint="write it as a constraint, or test a param instead")
+            return c != 0
+        if isinstance(v, (list, str)):
+            return len(v) > 0
+        if v is None:
+            return False
+        return True
+
+    # ------------------------------------------------------------------ templates
+    def _instantiate(self, t: Template, call: A.Call, name: str) -> StructRef:
+        parent = self._need_struct(call.span)
+        d = t.node
+        if self.template_depth >= MAX_TEMPLATE_DEPTH:
+            raise EvalError("E0302", f"templates nested more than {MAX_TEMPLATE_DEPTH} deep",
+                            call.span, hint="a template probably instantiates itself")
+        params = [p.name for p in d.params]
+        if len(call.args) > len(params):
+            raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(call.args)}",
+                            call.span, hint=f"`{d.name}({', '.join(params)})`")
+        vals: dict = {}
+        for p, a in zip(params, call.args):
+            vals[p] = (self.eval(a), a)
+        for kw in call.kwargs:
+            if kw.name not in params:
+                raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
+                                hint=f"parameters: {', '.join(params) or 'none'}",
+                                suggestions=did_you_mean(kw.name, params))
+            vals[kw.name] = (self.eval(kw.value), kw.value)
+        for v, node in vals.values():
+            if owners_of(v):
+                raise EvalError("E0204", "template arguments must be values, not geometry or structures",
+                                node.span, hint="pass numbers; relate the parts with constraints "
+                                "in the parent structure")
+        self.step(call.span)
+        child = self._new_structure(name, d.kind, parent, call.span, template=d.name)
+        self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
+        saved_file = self.file
+        tscope = Scope(t.scope, child, t.scope.file)
+        self.file = t.scope.file
+        self.template_depth += 1
+        try:
+            saved_scope = self.scope
+            self.scope = tscope
+            for p in d.params:
+                if p.name in vals:
+                    tscope.vars[p.name] = vals[p.name][0]
+                elif p.default is not None:
+                    tscope.vars[p.name] = self.eval(p.default)
+                else:
+                    raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`", call.span,
+                                    hint=f"`{name} = {d.name}({p.name}=...)`")
+            self.scope = saved_scope
+            self._run_body(child, d.body, tscope)
+        finally:
+            self.frames.pop()
+            self.template_depth -= 1
+            self.file = saved_file
+        return StructRef(child)
+
+    # ------------------------------------------------------------------ constraints
+    def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str, owners) -> None:
+        s = self._need_struct(span)
+        for o in owners:
+            if not o.is_within(s):
+                self._check_subtree(owners, span, s)
+        self.count_object(span)
+        c = Constraint(kind, s, span, text=text)
+        for e in eqs:
+            if contains_bbox(e.expr):
+                c.deferred = eqs
+                break
+        else:
+            c.equations = eqs
+        s.constraints.append(c)
+        self.model.constraints.append(c)
+
+    def _check_subtree(self, owners, span, s: Structure) -> None:
+        bad = [o for o in owners if not o.is_within(s)]
+        if bad:
+            o = bad[0]
+            lca = _common_ancestor(o, s)
+            where = f"`{lca.path}`" if lca else "a common parent"
+            raise EvalError("E0202", f"this constraint in `{s.path}` refers to `{o.path}`, "
+                            f"which is outside `{s.name}`'s subtree", span,
+                            hint=f"a constraint may only use its own structure's subtree; "
+                                 f"move it into {where}, which contains both")
+
+    def _equation(self, e) -> None:
+        if isinstance(e, A.BoolOp):
+            if e.op != "and":
+                raise EvalError("E0108", "`or` cannot join constraints", e.span,
+                                hint="constraints all hold at once; join them with `and`")
+            self._equation(e.left)
+            self._equation(e.right)
+            return
+        if not isinstance(e, A.Compare):
+            raise EvalError("E0108", "only comparisons can be joined with `and` into a constraint",
+                            e.span, hint="write `a == b and c <= d`")
+        vals = [self.eval(x) for x in e.operands]
+        for op, (l, r), (ln, rn) in zip(e.ops, zip(vals, vals[1:]), zip(e.operands, e.operands[1:])):
+            eqs = self._compare_eqs(op, l, r, e.span)
+            self._add_constraint("equation", eqs, e.span, _src(self.sink, e.span),
+                                 owners_of(l, r))
+
+    def _compare_eqs(self, op, l, r, span) -> list[Equation]:
+        if op == "!=":
+            raise EvalError("E0108", "`!=` cannot be a constraint", span,
+                            hint="state what should hold: `==`, `<=` or `>=`")
+        if isinstance(l, (tuple, list)) and len(l) == 2:
+            l = self._to_point(l, span)
+        if isinstance(r, (tuple, list)) and len(r) == 2:
+            r = self._to_point(r, span)
+        if isinstance(l, GeomRef) and l.geom.kind == "Point":
+            l = geom_member(l.geom, "p", self.struct)
+        if isinstance(r, GeomRef) and r.geom.kind == "Point":
+            r = geom_member(r.geom, "p", self.struct)
+        if isinstance(l, PV) and isinstance(r, PV):
+            if op != "==":
+                raise EvalError("E0108", f"points can only be compared with `==`, not `{op}`", span)
+            return [Equation(l.x - r.x), Equation(l.y - r.y)]
+        if not isinstance(l, Q) or not isinstance(r, Q):
+            raise EvalError("E0108", f"cannot constrain a {type_name(l)} {op} a {type_name(r)}", span,
+                            hint="compare numbers, lengths or angles (e.g. `a.width == 2 * b.width`), "
+                                 "or points with `==`")
+        le, re_, _ = self._unify(l, r, span)
+        if op == "==":
+            return [Equation(le - re_)]
+        if op in ("<=", "<"):
+            return [Equation(re_ - le, True)]
+        return [Equation(le - re_, True)]
+
+    def _unify(self, a: Q, b: Q, span):
+        try:
+            return unify_add(a, b, self.unit_scale, DEG)
+        except UnitError as ex:
+            raise EvalError("E0109", str(ex), span,
+                            hint="both sides must have the same unit kind (length, angle or number)")
+
+    # ------------------------------------------------------------------ calls
+
+
+def _definition_lines(stmts, out=None) -> dict[str, int]:
+    """Name -> line of its first definition in a body (also inside its loops and ifs)."""
+    out = {} if out is None else out
+    for st in stmts:
+        if isinstance(st, (A.Assign, A.StructDecl)):
+            out.setdefault(st.name, st.span.line)
+        elif isinstance(st, A.For):
+            _definition_lines(st.body.stmts, out)
+        elif isinstance(st, A.If):
+            _definition_lines(st.body.stmts, out)
+            if st.orelse is not None:
+                _definition_lines(st.orelse.stmts, out)
+    return out
+
+
+def _fmt_q(v: float, dim) -> str:
+    """A value in internal units (mm, rad) as the user writes it: ``172.5 mm``, ``30 deg``."""
+    import math
+    if dim == (1, 0):
+        return f"{v:.6g} mm"
+    if dim == (0, 1):
+        return f"{math.degrees(v):.6g} deg"
+    return f"{v:.6g}"

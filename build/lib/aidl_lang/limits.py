@@ -1,0 +1,45 @@
+"""What one program may build: the per-construct limits and the one evaluation budget of a
+compile (docs/language.md §8.1 "Limits").
+
+The per-construct limits (``MAX_ITER``, ``MAX_TEMPLATE_DEPTH``...) are the first line: each
+stops one construct that is too large by itself.  The :class:`Budget` bounds the product: every
+loop iteration, comprehension element, call and template instance is one *step*; geometry
+points, geometry objects, structures and constraints share one *object* count; every string or list a program
+builds is limited in size; and wall time is the last resort.  A program that goes past any of
+them gets one located diagnostic (``E0304``) naming the loops and template instances on the
+stack, never a hang, a crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
+every budget figure by ``K``.
+"""
+from __future__ import annotations
+
+from .records import dataclass
+
+MAX_ITER = 10_000            # iterations of one loop or comprehension
+MAX_GEOMETRY = 50_000        # geometry objects in one model
+MAX_TEMPLATE_DEPTH = 16      # nested template instances
+MAX_EXTENT = 1e6             # |coordinate|, size or length in mm a model may reach (1 km)
+
+
+@dataclass(frozen=True)
+class Budget:
+    """The evaluation budget of one compile.  Defaults (docs/language.md §8.1):
+
+    - ``steps``: 250 000 loop iterations, comprehension elements, calls and template
+      instances (about 2 s of interpretation);
+    - ``objects``: 120 000 points, geometry objects, structures and constraints together;
+    - ``size``: 1 000 000 characters of one string / items of one list;
+    - ``seconds``: 60 s of wall time for interpreting and solving together.
+    """
+
+    steps: int = 250_000
+    objects: int = 120_000
+    size: int = 1_000_000
+    seconds: float = 60.0
+
+    def scaled(self, k: float) -> "Budget":
+        """Every figure multiplied by ``k`` (``--budget K``); ``k`` > 0."""
+        return Budget(int(self.steps * k), int(self.objects * k), int(self.size * k),
+                      self.seconds * k)
+
+
+DEFAULT_BUDGET = Budget()

@@ -1,0 +1,146 @@
+"""The system prompt for an LLM that writes AIDL (``aidl prompt``).
+
+Built from the registry (every primitive, constraint, structural relation, operation, synonym
+and function with its signature and one-line doc) and from a few bundled example programs, so
+it never drifts from the implementation.  It is kept compact because a model reads it on every
+call: :func:`word_count` measures it (about 0.75 words per token for English and code).
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from ..registry import (BBOX_MEMBERS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE,
+                        UNITS_LENGTH)
+
+EXAMPLES_DIR = Path(__file__).resolve().parent.parent.parent / "examples"
+# short and varied: hierarchy + stacking relations; holes, loops and bounding-box equations;
+# drawings, text and params; templates, fillets and patterns
+PROMPT_EXAMPLES = ["toy_sword.aidl", "bottle_opener.aidl", "name_tag.aidl", "bracket.aidl"]
+
+INTRO = """\
+You write AIDL, a text language for 2D CAD parts (output: an SVG outline). Reply with one
+complete program in a ```aidl code block.
+
+A program is a tree of named structures: `solid NAME { ... }` (filled; unions its children),
+`hole NAME { ... }` (cut out of the enclosing solid), `drawing NAME { ... }` (engraved lines
+and text, not filled), `assembly NAME { ... }` (separate parts). Inside a structure: geometry
+(`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
+statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
+(`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
+live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE`,
+constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
+`part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes`. Control flow:
+`for i in range(n) { ... }` (names defined in a loop become lists: `knob[0]`),
+`if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
+comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
+(`//` after an operand is floor division). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
+number is a length in the file unit or an angle in degrees.
+
+Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
+starting guesses that the solver moves to satisfy the constraints. Relate parts with
+constraints instead of computing coordinates. A shape given by literal coordinates
+(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
+may only use names defined above it; constraint statements may name geometry defined later.
+A child structure's geometry is `child.name`, the current one is `self`; every geometry and
+structure has `.bb` (bounding box).
+Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
+points of its own structure. Booleans: a solid is the union of its shapes and solid children
+(touching or overlapping parts merge into one outline) minus its hole children; a hole cuts
+only its enclosing solid, which is then unioned with its siblings (a sibling can cover the
+hole). Patterns and Mirrored put copies beside the original, in the original's structure.
+Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
+0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
+Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
+is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
+There is no Rotate/Translate/Union. A warning means the program runs but probably not as
+meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
+every structure and constraint that carries design intent: correct the call rather than
+delete it.
+"""
+
+
+def _sig(entry) -> str:
+    outs = []
+    for v in entry.variants:
+        parts = []
+        for a in v:
+            if a.kw_only:
+                continue
+            if a.required:
+                parts.append(a.name)
+            else:
+                parts.append(f"{a.name}={a.default_text}")
+        outs.append(f"{entry.name}({', '.join(parts)})")
+    return " | ".join(outs)
+
+
+def vocabulary() -> str:
+    """Signatures and one-line docs of the whole registry, grouped by category."""
+    titles = {"primitive": "Geometry (every form also takes `construction=true`: solved, not drawn)",
+              "constraint": "Geometric constraints", "structural": "Structural relations "
+              "(between structures or geometry, by bounding box)",
+              "operation": "Operations"}
+    out = []
+    for cat, title in titles.items():
+        rows = [f"- {_sig(e)}: {e.doc}" for e in ENTRIES.values() if e.category == cat]
+        if rows:
+            out.append(f"{title}:\n" + "\n".join(rows))
+    out.append(members())
+    by_canon: dict[str, list[str]] = {}
+    for syn, canon in SYNONYMS.items():
+        if syn not in SWAPPED:
+            by_canon.setdefault(canon, []).append(syn)
+    syn = "; ".join(f"{c}: {', '.join(s)}" for c, s in by_canon.items())
+    swapped = " ".join(f"{s}(a, b) means {SYNONYMS[s]}(b, a)." for s in SWAPPED)
+    out.append(f"Synonyms (same meaning): {syn}. {swapped}")
+    out.append("Functions: " + ", ".join(f"{n}" for n in FUNCTIONS) + "; constants pi, tau, "
+               "true, false; units " + ", ".join(list(UNITS_LENGTH) + list(UNITS_ANGLE)) + ".")
+    return "\n\n".join(out)
+
+
+def members() -> str:
+    """The members of every shape and of bounding boxes, from the registry (``.bb`` omitted
+    per shape: the intro says every geometry and structure has it)."""
+    rows, seen = [], {}
+    for e in ENTRIES.values():
+        if e.members:
+            names = " ".join(m for m in e.members if m != "bb")
+            rows.append(f"{e.name}: " + (f"as {seen[names]}" if names in seen else names))
+            seen.setdefault(names, e.name)
+    rows.append(f".bb: {' '.join(BBOX_MEMBERS)}")
+    return "Members (`rect.top_left`, `s.bb.center_x`): " + "; ".join(rows) + "."
+
+
+def _strip(text: str) -> str:
+    """An example without its `Try:` line and blank-line runs."""
+    lines = [ln for ln in text.splitlines() if not re.match(r"\s*#\s*Try:", ln)]
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(lines)).strip()
+
+
+def example_programs(names: list[str] | None = None) -> list[tuple[str, str]]:
+    """(file name, program text) of the prompt's examples."""
+    out = []
+    for n in names or PROMPT_EXAMPLES:
+        out.append((n, _strip((EXAMPLES_DIR / n).read_text(encoding="utf-8"))))
+    return out
+
+
+def system_prompt(examples: bool = True) -> str:
+    """The whole system prompt: description, vocabulary and (optionally) example programs."""
+    parts = [INTRO, vocabulary()]
+    if examples:
+        parts.append("Examples:")
+        for name, text in example_programs():
+            parts.append(f"```aidl\n{text}\n```")
+    return "\n\n".join(p.strip() for p in parts) + "\n"
+
+
+def word_count(text: str) -> int:
+    """Whitespace-separated words (a rough token estimate: tokens ~ 1.3-1.5 x words for code)."""
+    return len(text.split())
+
+
+def code_blocks(text: str) -> list[str]:
+    """The contents of every ```aidl fenced block in ``text``."""
+    return re.findall(r"```aidl\n(.*?)```", text, re.S)

@@ -1,0 +1,136 @@
+"""STEP writer (the optional ``step`` extra: OCP from ``cadquery-ocp``), built from the exact
+profiles of :mod:`.part`, so circles stay circles and their extrusions cylinders.
+
+Each solid part becomes one solid: its outer loops are faces (lines as straight edges, arcs
+and circles as circular edges, ``gp_Circ``), its hole loops are inner wires of the face that
+contains them, and the face is extruded along +z by the part's thickness
+(``BRepPrimAPI_MakePrism``).  All parts go into one compound, written as AP214 STEP in mm.
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+
+from .part import Circle, Line, Loop, MissingDependency, Output
+
+DEFAULT_THICKNESS = 3.0
+
+
+def _ocp():
+    try:
+        import OCP  # noqa: F401
+    except ImportError:
+        raise MissingDependency("STEP output needs OCP: pip install 'aidl-lang[step]'") from None
+
+
+def _wire(loop: Loop, reverse: bool):
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeWire
+    from OCP.GC import GC_MakeArcOfCircle
+    from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
+    mk = BRepBuilderAPI_MakeWire()
+    for s in loop.segments:
+        if isinstance(s, Line):
+            a, b = gp_Pnt(*s.start, 0.0), gp_Pnt(*s.end, 0.0)
+            if a.Distance(b) < 1e-9:
+                continue
+            mk.Add(BRepBuilderAPI_MakeEdge(a, b).Edge())
+        elif isinstance(s, Circle):
+            circ = gp_Circ(gp_Ax2(gp_Pnt(*s.center, 0.0), gp_Dir(0, 0, 1)), s.radius)
+            mk.Add(BRepBuilderAPI_MakeEdge(circ).Edge())
+        else:
+            mid = s.at(s.start_angle + s.sweep / 2)
+            arc = GC_MakeArcOfCircle(gp_Pnt(*s.start, 0.0), gp_Pnt(*mid, 0.0),
+                                     gp_Pnt(*s.end, 0.0)).Value()
+            mk.Add(BRepBuilderAPI_MakeEdge(arc).Edge())
+    w = mk.Wire()
+    return w.Reversed() if reverse else w
+
+
+def _contains(outer: Loop, inner: Loop) -> bool:
+    """Is a point of ``inner`` inside ``outer`` (even-odd over ``outer``'s polyline)?"""
+    P = outer.points()
+    p = inner.points()[0]
+    x, y = float(p[0]), float(p[1])
+    inside = False
+    n = len(P)
+    for i in range(n):
+        (x1, y1), (x2, y2) = P[i], P[(i + 1) % n]
+        if (y1 > y) != (y2 > y) and x < x1 + (y - y1) * (x2 - x1) / (y2 - y1):
+            inside = not inside
+    return inside
+
+
+def solids(output: Output, thickness: float | None = None):
+    """(part name, OCP ``TopoDS_Shape``) per solid part."""
+    _ocp()
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakePrism
+    from OCP.gp import gp_Vec
+    out = []
+    for p in output.parts:
+        if p.kind != "solid" or not p.loops:
+            continue
+        t = float(thickness or p.thickness or DEFAULT_THICKNESS)
+        outers = [lp for lp in p.loops if lp.area > 0]
+        holes = [lp for lp in p.loops if lp.area < 0]
+        # nest: each hole goes to the smallest outer loop containing it
+        owners: dict[int, list[Loop]] = {i: [] for i in range(len(outers))}
+        for h in holes:
+            cands = [i for i, o in enumerate(outers) if _contains(o, h)]
+            if cands:
+                owners[min(cands, key=lambda i: outers[i].area)].append(h)
+        from OCP.TopoDS import TopoDS_Compound
+        from OCP.BRep import BRep_Builder
+        builder = BRep_Builder()
+        comp = TopoDS_Compound()
+        builder.MakeCompound(comp)
+        for i, o in enumerate(outers):
+            mf = BRepBuilderAPI_MakeFace(_wire(o, False), True)
+            for h in owners[i]:
+                mf.Add(_wire(h, False))
+            prism = BRepPrimAPI_MakePrism(mf.Face(), gp_Vec(0, 0, t)).Shape()
+            builder.Add(comp, prism)
+        out.append((p.name, comp))
+    return out
+
+
+def to_step(output: Output, thickness: float | None = None) -> bytes:
+    """AP214 STEP bytes of every solid part, extruded (mm)."""
+    _ocp()
+    from OCP.Interface import Interface_Static
+    from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
+    w = STEPControl_Writer()
+    Interface_Static.SetCVal_s("write.step.unit", "MM")
+    Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
+    from OCP.BRep import BRep_Builder
+    from OCP.TopoDS import TopoDS_Compound
+    builder = BRep_Builder()
+    comp = TopoDS_Compound()
+    builder.MakeCompound(comp)
+    for _, shape in solids(output, thickness):
+        builder.Add(comp, shape)
+    fd, tmp = tempfile.mkstemp(suffix=".step")
+    os.close(fd)
+    try:
+        with _quiet():                 # OCP prints transfer statistics on the C stdout
+            w.Transfer(comp, STEPControl_AsIs)
+            w.Write(tmp)
+        with open(tmp, "rb") as f:
+            return f.read()
+    finally:
+        os.unlink(tmp)
+
+
+class _quiet:
+    def __enter__(self):
+        import sys
+        sys.stdout.flush()
+        self.saved = os.dup(1)
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, 1)
+        os.close(devnull)
+
+    def __exit__(self, *exc):
+        os.dup2(self.saved, 1)
+        os.close(self.saved)
+

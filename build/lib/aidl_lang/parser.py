@@ -1,0 +1,1348 @@
+"""Parse AIDL source text into the typed AST of :mod:`aidl_lang.ast`.
+
+Lark LALR(1) over ``grammar/aidl.lark``, a post-lexer that drops newlines inside brackets and
+before ``else``, and statement-level error recovery: each syntax error becomes an ``E0001``
+diagnostic listing the expected tokens, the offending logical line is blanked (its braces kept)
+and the file is parsed again, so one run reports several errors.
+
+Lark is the parser generator: :func:`_tables_data` builds Lark's LALR(1) table and basic
+lexer and keeps them as plain data, cached as JSON (never a pickle) in the user's own cache
+folder, owner-only (issue 15), see :func:`_tables`; a run reads that and never imports Lark.
+
+Speed (issue 12, docs/performance.md): the AST node of each rule is built inside the LALR
+reduction (no parse tree is built and walked), its span taken from the first and last token it
+covers (what Lark's ``propagate_positions`` would give); the lexer, the post-lexer and the
+LALR loop each make one pass over a token list.  tests/test_parse_table.py checks the result
+against Lark's own parser.
+"""
+from __future__ import annotations
+
+import re
+import threading
+from pathlib import Path
+
+from . import ast as A
+from .cache import cache_dir, read_owned, write_atomic
+from .diagnostics import DiagnosticSink, Span
+from .memory import gc_paused
+
+GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
+if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the package
+    GRAMMAR = Path(__file__).resolve().parent / "grammar" / "aidl.lark"
+
+MAX_ERRORS = 20
+MAX_NESTING = 64           # brackets nested deeper than this are refused (E0003)
+
+UNIT_RE = re.compile(r"^(?P<num>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)[ \t]*(?P<unit>[a-z°]+)?$")
+
+TOKEN_NAMES = {
+    "_NL": "newline", "LPAR": "`(`", "RPAR": "`)`", "LSQB": "`[`", "RSQB": "`]`",
+    "LBRACE": "`{`", "RBRACE": "`}`", "COMMA": "`,`", "EQUAL": "`=`", "COLON": "`:`",
+    "SEMICOLON": "`;`", "DOT": "`.`", "NAME": "a name", "NUMBER": "a number",
+    "STRING": "a string", "FSTRING": "an f-string", "COMP_OP": "a comparison",
+    "ADD_OP": "`+` or `-`", "MUL_OP": "`*` or `/`", "MINUS": "`-`", "PLUS": "`+`",
+    "__ANON_0": "`->`", "RARROW": "`->`", "$END": "end of file",
+}
+
+
+_STATEMENT_START = frozenset(("_NL", "SEMICOLON", "LBRACE", "RBRACE"))
+_THICKNESS_NEXT = frozenset(("NUMBER", "NAME", "ADD_OP"))
+_BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
+_OPEN = frozenset(("LPAR", "LSQB"))
+_CLOSE = frozenset(("RPAR", "RSQB"))
+_ELSE = frozenset(("ELSE", "ELIF"))
+
+
+def _postlex(tokens: list, complete: bool = True) -> list:
+    """The post-lexer, on the token list (``complete=False``: the lexer stopped at an error
+    after these tokens, so what the streaming post-lexer would still hold back -- a trailing
+    newline or ``thickness`` -- is not passed on):
+
+    - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
+      the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
+    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
+    - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line)."""
+    out = []
+    push = out.append
+    depth = 0
+    pending = None          # a newline held back: dropped before else/elif, one per run
+    prev_type = None        # the type of the last token seen (after retyping)
+    n = len(tokens)
+    for k in range(n):
+        tok = tokens[k]
+        t = tok.type
+        if t == "NAME" and tok == "thickness" and (k == 0 or tokens[k - 1].type in _STATEMENT_START):
+            if k + 1 == n and not complete:
+                break                          # still held when the lexer failed
+            if k + 1 < n and tokens[k + 1].type in _THICKNESS_NEXT:
+                tok = Token.new_borrow_pos("THICKNESS", str(tok), tok)
+                t = "THICKNESS"
+        if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
+            push(Token.new_borrow_pos("_NL", "\n", prev))
+        prev, prev_type = tok, t
+        if t == "_NL":
+            if depth == 0 and pending is None:
+                pending = tok
+            continue
+        if pending is not None:
+            if t not in _ELSE:
+                push(pending)
+            pending = None
+        if t in _OPEN:
+            depth += 1
+        elif t in _CLOSE:
+            if depth:
+                depth -= 1
+        push(tok)
+    if pending is not None and complete:
+        push(pending)
+    return out
+
+
+class _PostLex:
+    """:func:`_postlex` as a streaming Lark post-lexer (``Lark(..., postlex=_PostLex())``): the
+    reference the parser's list version is tested against (tests/test_parse_table.py), for
+    tools that run Lark's own parser over the grammar."""
+
+    always_accept = ("_NL",)
+
+    def process(self, stream):
+        return self._process(_retype_thickness(stream))
+
+    def _process(self, stream):
+        depth = 0
+        pending = None
+        prev = None
+        for tok in stream:
+            if (prev is not None and prev.type == "RBRACE" and depth == 0 and pending is None
+                    and tok.type not in ("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF")):
+                # `} stmt` on one line: a block ends a statement
+                yield type(prev).new_borrow_pos("_NL", "\n", prev)
+            prev = tok
+            if tok.type == "_NL":
+                if depth == 0 and pending is None:
+                    pending = tok
+                continue
+            if pending is not None:
+                if tok.type not in ("ELSE", "ELIF"):
+                    yield pending
+                pending = None
+            if tok.type in ("LPAR", "LSQB"):
+                depth += 1
+            elif tok.type in ("RPAR", "RSQB"):
+                depth = max(0, depth - 1)
+            yield tok
+        if pending is not None:
+            yield pending
+
+
+def _retype_thickness(stream):
+    """Streaming: ``thickness`` at the start of a statement and followed by a number, a name or
+    a sign is the ``thickness 3 mm`` statement (THICKNESS); anywhere else an ordinary NAME."""
+    prev = None
+    held = None
+    for tok in stream:
+        if held is not None:
+            if tok.type in ("NUMBER", "NAME", "ADD_OP"):
+                held = type(held).new_borrow_pos("THICKNESS", str(held), held)
+            yield held
+            held = None
+        if (tok.type == "NAME" and str(tok) == "thickness"
+                and (prev is None or prev.type in ("_NL", "SEMICOLON", "LBRACE", "RBRACE"))):
+            held = tok
+            prev = tok
+            continue
+        prev = tok
+        yield tok
+    if held is not None:
+        yield held
+
+
+class Token(str):
+    """A token from the lexer: its text (the ``str`` value), ``type`` (the terminal's name) and
+    ``pos`` = ``(line, column, start_pos, end_line, end_column, end_pos)`` (lines and columns
+    1-based, offsets 0-based), also readable by the names of Lark's ``Token`` fields."""
+
+    def __new__(cls, type, value, start_pos=None, line=None, column=None, end_line=None,
+                end_column=None, end_pos=None):
+        t = str.__new__(cls, value)
+        t.type = type
+        t.pos = (line, column, start_pos, end_line, end_column, end_pos)
+        return t
+
+    line = property(lambda self: self.pos[0])
+    column = property(lambda self: self.pos[1])
+    start_pos = property(lambda self: self.pos[2])
+    end_line = property(lambda self: self.pos[3])
+    end_column = property(lambda self: self.pos[4])
+    end_pos = property(lambda self: self.pos[5])
+
+    @property
+    def value(self) -> str:
+        return str(self)
+
+    @classmethod
+    def new_borrow_pos(cls, type_: str, value, borrow: "Token") -> "Token":
+        """A token of another type and text at ``borrow``'s place."""
+        t = str.__new__(cls, value)
+        t.type = type_
+        t.pos = borrow.pos
+        return t
+
+
+class ParseError(Exception):
+    """A syntax error found by the lexer or the LALR table (reported as E0001 / E0002)."""
+
+
+class UnexpectedToken(ParseError):
+    """The LALR table has no action for ``token`` here; ``expected`` holds the terminal names
+    that would have been accepted."""
+
+    def __init__(self, token: Token, expected: set):
+        super().__init__(f"unexpected {token.type} {str(token)!r}")
+        self.token, self.expected = token, expected
+        self.pos_in_stream = token.start_pos
+
+
+class UnexpectedCharacters(ParseError):
+    """No terminal of the grammar matches the text at offset ``pos_in_stream``."""
+
+    def __init__(self, text: str, pos: int, line: int, column: int):
+        super().__init__(f"no terminal matches at line {line}, column {column}")
+        self.pos_in_stream, self.line, self.column = pos, line, column
+
+
+_LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
+_TABLES_FORMAT = 4
+
+
+# ----------------------------------------------------------------- the parse table
+class _Tables:
+    """What :func:`_lex` and :func:`_run_lalr` run, made from Lark's LALR(1) table and basic
+    lexer for ``grammar/aidl.lark`` (:func:`_tables_data`):
+
+    - ``mres``: the lexer's compiled alternations of every terminal (named groups, Lark's
+      order and priorities); ``ignore`` / ``newline``: terminal names skipped / counted for
+      lines; ``keywords``: per terminal (``NAME``), what retypes a token as a keyword (Lark's
+      ``UnlessCallback``): a dict text -> keyword when every keyword is a plain string (as in
+      this grammar), else the whole-match patterns;
+    - ``states``: per LALR state, terminal or rule name -> an ``int``: the next state (shift or
+      goto) when >= 0, else ``~i`` for reduction ``i``; ``reductions``: per rule
+      ``(size, rule name, callback)``, ``(None, rule name, None)`` for a unit rule whose child
+      stays as it is; ``start`` / ``end``: the first and accepting state of each start symbol
+      (``start``, ``expr``).  The rows are the JSON's own dicts, used as they are loaded."""
+
+    def __init__(self, data: dict, specialise: bool = True):
+        lx = data["lexer"]
+        self.patterns = lx["patterns"]
+        self._mres: list | None = None
+        fc = lx.get("first")
+        self.parts = fc["parts"] if fc else None
+        self.first = {c: tuple(ix) for c, ix in fc["first"].items()} if fc else {}
+        self.by_first: dict = {}        # see regex_for
+        self._by_ids: dict = {}
+        self.ignore = frozenset(lx["ignore"])
+        self.newline = frozenset(lx["newline"])
+        self.keywords = {t: (kw["literal"] if "literal" in kw
+                             else [re.compile(p, f) for p, f in kw["patterns"]])
+                         for t, kw in lx["keywords"].items()}
+        # terminals the lexer passes on as they are: not skipped, not counted for lines, not
+        # retyped as keywords (one set test per token on the common path)
+        names = ([n for n, _p, _f in self.parts] if self.parts is not None
+                 else [n for mre in self.mres for n in mre.groupindex])
+        self.plain = frozenset(n for n in names
+                               if n not in self.ignore and n not in self.newline
+                               and n not in self.keywords)
+        # single-line terminals retyped by a text -> keyword dict (NAME)
+        self.literal_keywords = {t: kw for t, kw in self.keywords.items()
+                                 if type(kw) is dict and t not in self.ignore
+                                 and t not in self.newline}
+        ps = data["parser"]
+        self.reductions = [_reduction(*spec, specialise=specialise) for spec in ps["rules"]]
+        self.states = ps["states"]
+        self.start, self.end = ps["start"], ps["end"]
+        self.units: dict = {}           # see _unit_chain
+
+    @property
+    def mres(self) -> list:
+        """Lark's lexer alternations, compiled on first use (~2 ms): the lexer needs them only
+        where the first-character dispatch has no entry."""
+        if self._mres is None:
+            self._mres = [re.compile(p, f) for p, f in self.patterns]
+        return self._mres
+
+    def regex_for(self, ch: str):
+        """The alternation of the terminals that can start with ``ch``, in Lark's order (so the
+        same terminal wins as in Lark's whole alternation: the others cannot match here), or
+        ``None`` when there is no dispatch entry for ``ch`` (the lexer then runs the whole
+        alternations).  Compiled once per set of terminals and remembered per character."""
+        ids = self.first.get(ch)
+        rx = None
+        if ids is not None:
+            rx = self._by_ids.get(ids)
+            if rx is None:
+                flags = {self.parts[i][2] for i in ids}
+                if len(flags) == 1:
+                    rx = re.compile("|".join(self.parts[i][1] for i in ids), flags.pop())
+                    self._by_ids[ids] = rx
+        self.by_first[ch] = rx
+        return rx
+
+
+# rules whose AST builder returns its one child as it is (`arg: expr`, `bare_block: block`):
+# with one child they are run as unit reductions (the child stays, only the state changes)
+_PASS_THROUGH = frozenset(("arg", "bare_block"))
+
+
+def _reduction(origin: str, size: int, name: str, include: list, tail: int, expand1: bool,
+               unit: bool, specialise: bool = True):
+    """A reduction of :attr:`_Tables.states` from a rule's spec (see :func:`_tables_data`).
+    ``specialise=False``: every rule through the general callback, pass-through rules
+    included (the reference the short callbacks are tested against)."""
+    if unit or (specialise and name in _PASS_THROUGH and size == 1
+                and include == [[0, False, 0]] and not tail):
+        return (None, origin, None)
+    if name.startswith("_"):
+        build = None                            # spliced into the parent
+    else:
+        build = getattr(_Builder, name, None)
+        if build is None:
+            if not expand1:
+                raise RuntimeError(f"grammar rule `{name}` has no AST builder")
+            build = _no_builder                # a `?rule` passes its one child through
+    return (size, origin, _make_callback(tuple(map(tuple, include)), tail, expand1, build, size,
+                                         specialise))
+
+
+def _split_alternation(pattern: str, names) -> list[str] | None:
+    """The alternatives ``(?P<NAME>...)`` of one of Lark's lexer alternations, in order, or
+    ``None`` when the text does not split back into exactly them."""
+    starts = [pattern.find(f"(?P<{n}>") for n in names]
+    if not starts or starts[0] != 0 or sorted(starts) != starts:
+        return None
+    parts = [pattern[a:b - 1] for a, b in zip(starts, starts[1:])] + [pattern[starts[-1]:]]
+    if "|".join(parts) != pattern:
+        return None
+    return parts
+
+
+def _first_chars(patterns: list) -> dict | None:
+    """For the lexer's first-character dispatch (:func:`_lex`): each terminal's regex
+    alternative and the ASCII characters a match of it can start with (the FIRST set of the
+    regex, read from its parse by :mod:`re`'s own parser), as ``{"parts": [[name, regex,
+    flags], ...], "first": {char: [terminal index, ...]}}`` in Lark's order.  A terminal whose
+    FIRST set cannot be worked out (an unknown construct, a category other than ``\\d``, a
+    possibly empty match) counts as starting with every character.  ``None`` when the
+    alternations do not split into their terminals (then the lexer runs the alternations as
+    Lark builds them).  Built with the table, so a cold run never parses a regex."""
+    try:
+        from re import _constants as C
+        from re import _parser as sre
+    except ImportError:                            # pragma: no cover - another Python's re
+        return None
+    every = frozenset(range(128))
+
+    def seq(items):
+        out: set = set()
+        for op, av in items:
+            f, nullable = one(op, av)
+            out |= f
+            if not nullable:
+                return out, False
+        return out, True
+
+    def one(op, av):
+        if op is C.LITERAL:
+            return ({av} if av < 128 else set()), False
+        if op is C.NOT_LITERAL:
+            return set(every - {av}), False
+        if op is C.IN:
+            chars: set = set()
+            negate = False
+            for o, a in av:
+                if o is C.NEGATE:
+                    negate = True
+                elif o is C.LITERAL:
+                    chars |= {a} if a < 128 else set()
+                elif o is C.RANGE:
+                    chars |= set(range(a[0], min(a[1], 127) + 1))
+                elif o is C.CATEGORY and a is C.CATEGORY_DIGIT:
+                    chars |= set(range(48, 58))
+                else:
+                    return set(every), False
+            return (set(every - chars) if negate else chars), False
+        if op is C.SUBPATTERN:
+            return seq(av[-1])
+        if op is C.BRANCH:
+            out, nullable = set(), False
+            for alt in av[1]:
+                f, n = seq(alt)
+                out |= f
+                nullable |= n
+            return out, nullable
+        if op in (C.MAX_REPEAT, C.MIN_REPEAT):
+            f, n = seq(av[2])
+            return f, n or av[0] == 0
+        if op is C.AT:                             # an anchor matches no character
+            return set(), True
+        return set(every), True                    # anything else: it may start anywhere
+
+    parts = []
+    for pattern, flags in patterns:
+        names = list(re.compile(pattern, flags).groupindex)
+        split = _split_alternation(pattern, names)
+        if split is None:
+            return None
+        parts += [[n, p, flags] for n, p in zip(names, split)]
+    first: dict = {}
+    for i, (_name, part, flags) in enumerate(parts):
+        try:
+            chars, nullable = seq(sre.parse(part, flags))
+        except Exception:                          # pragma: no cover - an unparsable regex
+            return None
+        if nullable or flags & re.IGNORECASE:
+            chars = set(every)
+        for c in sorted(chars):
+            first.setdefault(chr(c), []).append(i)
+    return {"parts": parts, "first": first}
+
+
+def _tables_data() -> dict:
+    """Build Lark's LALR(1) parser for ``grammar/aidl.lark`` (imports Lark; ~0.4 s) and keep what
+    the parse needs as plain data: the lexer's patterns, ignored and newline terminals and
+    keyword patterns, and the LALR table with one spec per rule (origin, length, AST builder,
+    the children it keeps, trailing ``None``s of ``[optional]`` parts, ``?rule`` and unit
+    flags) -- the same steps as Lark's tree builder with ``propagate_positions=True`` and
+    ``maybe_placeholders=True``."""
+    from lark import Lark
+    lp = Lark(GRAMMAR.read_text(), **_LARK_OPTIONS)
+    basic = lp.parser.lexer
+    scanner = basic.scanner
+    from lark.lexer import PatternStr
+    keywords = {}
+    for t, cb in basic.callback.items():
+        terms = cb.scanner.terminals
+        if all(isinstance(k.pattern, PatternStr) and not k.pattern.flags for k in terms):
+            literal: dict = {}
+            for k in terms:                     # Lark's order: the first match wins
+                literal.setdefault(k.pattern.value, k.name)
+            keywords[t] = {"literal": literal}
+        else:
+            keywords[t] = {"patterns": [(m.pattern, m.flags) for m in cb.scanner._mres]}
+    index = {}
+    specs = []
+    for rule in lp.rules:
+        name = rule.alias or rule.options.template_source or rule.origin.name
+        expansion = rule.expansion
+        empty = rule.options.empty_indices
+        if empty:
+            bits = "".join(str(int(b)) for b in empty)
+            nones = [len(ones) for ones in bits.split("0")]
+        else:
+            nones = [0] * (len(expansion) + 1)
+        include = []
+        pending = 0
+        for i, sym in enumerate(expansion):
+            pending += nones[i]
+            if rule.options.keep_all_tokens or not (sym.is_term and sym.filter_out):
+                include.append((i, not sym.is_term and sym.name.startswith("_"), pending))
+                pending = 0
+        tail = pending + nones[len(expansion)]
+        expand1 = bool(rule.options.expand1 and not rule.alias)
+        unit = expand1 and len(expansion) == 1 and include == [(0, False, 0)] and not tail
+        index[rule] = len(specs)
+        specs.append([rule.origin.name, len(expansion), name, include, tail, expand1, unit])
+    table = lp.parser.parser._parse_table
+    states = []
+    for st in range(len(table.states)):
+        row = {}
+        for sym, (_action, arg) in table.states[st].items():
+            row[sym] = arg if isinstance(arg, int) else -index[arg] - 1
+        states.append(row)
+    patterns = [(m.pattern, m.flags) for m in scanner._mres]
+    return {"lexer": {"patterns": patterns,
+                      "ignore": sorted(basic.ignore_types), "newline": sorted(basic.newline_types),
+                      "keywords": keywords, "first": _first_chars(patterns)},
+            "parser": {"rules": specs, "states": states, "start": table.start_states,
+                       "end": table.end_states}}
+
+
+_TABLES: _Tables | None = None
+_TABLES_LOCK = threading.Lock()
+
+
+def _tables() -> _Tables:
+    """The parse table, read from the user's cache folder (plain JSON, owner-only, see
+    :mod:`aidl_lang.cache`) or built with Lark and written there; keyed by the grammar text,
+    the options, the table format and Lark's version (all kept in the file and compared).  A
+    cold ``aidl check`` so never imports Lark (~35 ms) nor unpacks its serialized parser."""
+    global _TABLES
+    if _TABLES is not None:
+        return _TABLES
+    with _TABLES_LOCK:
+        if _TABLES is None:
+            import json
+            import zlib
+            # the whole key (grammar text included) is kept in the file and compared, so the
+            # file name needs no cryptographic hash (hashlib costs ~5 ms to import)
+            key = repr((_TABLES_FORMAT, _lark_version(), sorted(_LARK_OPTIONS.items()))) \
+                + "\n" + GRAMMAR.read_text()
+            d = cache_dir()
+            name = f"parser-{zlib.crc32(key.encode()):08x}-{len(key)}.json"
+            path = d / name if d is not None else None
+            text = read_owned(path) if path is not None else None
+            data = None
+            if text is not None:
+                try:
+                    blob = json.loads(text)
+                    if blob.get("key") == key:
+                        data = blob["tables"]
+                        tables = _Tables(data)
+                except Exception:           # a stale or damaged cache: rebuild it below
+                    data = None
+            if data is None:
+                data = _tables_data()
+                tables = _Tables(data)
+                if path is not None:
+                    write_atomic(path, json.dumps({"key": key, "tables": data}))
+            _TABLES = tables
+    return _TABLES
+
+
+def _lark_version() -> str:
+    """Lark's version, read from its ``__init__.py`` without importing it (so a Lark upgrade
+    rebuilds the cached table)."""
+    import importlib.util
+    spec = importlib.util.find_spec("lark")
+    if spec is None or spec.origin is None:
+        return "?"
+    try:
+        m = re.search(r"__version__\s*(?::\s*str\s*)?=\s*['\"]([^'\"]+)", Path(spec.origin).read_text())
+    except OSError:
+        return "?"
+    return m.group(1) if m else "?"
+
+
+def _lex(text: str, keep_ignored: bool = False) -> tuple[list, "UnexpectedCharacters | None"]:
+    """Lark's basic lexer over ``text`` (same terminals, same order, same keyword retyping,
+    same positions), as one loop: at each position the alternation of only the terminals that
+    can start with the character there (:meth:`_Tables.regex_for`; the whole alternations
+    where there is no entry), since trying two dozen alternatives in turn was half the
+    lexer's time.  Returns the tokens, and the :class:`UnexpectedCharacters` where no
+    terminal matched (the tokens then stop there), else ``None``.  ``keep_ignored``: also the whitespace and comment tokens the
+    parser skips (Lark's ``lex(dont_ignore=True)``; used by ``aidl fmt``)."""
+    tb = _tables()
+    by_first, regex_for = tb.by_first, tb.regex_for
+    ignore, newline, keywords = tb.ignore, tb.newline, tb.keywords
+    plain = tb.plain                # terminals that are neither skipped, multi-line nor retyped
+    literal = tb.literal_keywords
+    pos, line, line_start, end = 0, 1, 0, len(text)
+    tokens: list = []
+    push = tokens.append
+    new_str = str.__new__
+    while pos < end:
+        ch = text[pos]
+        try:
+            rx = by_first[ch]
+        except KeyError:
+            rx = regex_for(ch)
+        m = rx.match(text, pos) if rx is not None else None
+        if m is None:
+            for mre in tb.mres:
+                m = mre.match(text, pos)
+                if m:
+                    break
+            else:
+                return tokens, UnexpectedCharacters(text, pos, line, pos - line_start + 1)
+        type_ = m.lastgroup
+        npos = m.end()
+        if type_ in plain:
+            tok = new_str(Token, m.group())
+            tok.type = type_
+            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            push(tok)
+            pos = npos
+            continue
+        if type_ in literal:        # a NAME, perhaps a keyword
+            value = m.group()
+            tok = new_str(Token, value)
+            tok.type = literal[type_].get(value, type_)
+            tok.pos = (line, pos - line_start + 1, pos, line, npos - line_start + 1, npos)
+            push(tok)
+            pos = npos
+            continue
+        value = m.group()
+        if type_ in ignore and not keep_ignored:
+            if type_ in newline:
+                k = value.count("\n")
+                if k:
+                    line += k
+                    line_start = pos + value.rindex("\n") + 1
+            pos = npos
+            continue
+        start_line, column = line, pos - line_start + 1
+        if type_ in newline:
+            k = value.count("\n")
+            if k:
+                line += k
+                line_start = pos + value.rindex("\n") + 1
+        if type_ in keywords:
+            kw = keywords[type_]
+            if type(kw) is dict:
+                type_ = kw.get(value, type_)
+            else:
+                for kre in kw:
+                    km = kre.fullmatch(value)
+                    if km:
+                        type_ = km.lastgroup
+                        break
+        tok = new_str(Token, value)
+        tok.type = type_
+        tok.pos = (start_line, column, pos, line, npos - line_start + 1, npos)
+        push(tok)
+        pos = npos
+    return tokens, None
+
+
+def _run_lalr(text: str, start: str):
+    """Lex ``text`` (:func:`_lex`, :func:`_postlex`) and run the LALR(1) table over the tokens
+    with the AST callbacks: the loop of Lark's ``ParserState.feed_token`` without its per-step
+    assertions and rule-object look-ups.  Raises :class:`UnexpectedToken` /
+    :class:`UnexpectedCharacters` (a lexer error only once the parser has taken every token
+    before it, as a streaming lexer would)."""
+    tb = _tables()
+    states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
+    builder = _STATE.builder
+    raw, lex_error = _lex(text)
+    tokens = _postlex(raw, lex_error is None)
+    state = start_states[start]
+    state_stack = [state]
+    value_stack: list = []
+    push_state, push_value = state_stack.append, value_stack.append
+    units = tb.units
+    end_state = end_states[start]
+    if lex_error is None:
+        last = tokens[-1] if tokens else None
+        tokens.append(Token.new_borrow_pos("$END", "", last) if last is not None
+                      else Token("$END", "", 0, 1, 1, 1, 1, 0))
+    for token in tokens:
+        ttype = token.type
+        while True:
+            try:
+                act = states[state][ttype]
+            except KeyError:
+                # the accepting state has no actions: with the input used up, the parse is done
+                if ttype == "$END" and state == end_state:
+                    return value_stack[-1]
+                raise UnexpectedToken(token, _expected(states[state]))
+            if act >= 0:
+                push_state(act)
+                push_value(token)
+                state = act
+                break
+            size, origin, cb = reductions[~act]
+            if size is None:                 # unit rules: same value, new state
+                key = (state_stack[-2], state, ttype)
+                top = units.get(key)
+                if top is None:
+                    top = units[key] = _unit_chain(tb, state_stack[-2], origin, ttype)
+                state_stack[-1] = state = top
+                continue
+            if size:
+                children = value_stack[-size:]
+                del state_stack[-size:]
+                del value_stack[-size:]
+            else:
+                children = []
+            push_value(cb(children, builder))
+            state = states[state_stack[-1]][origin]
+            push_state(state)
+    if lex_error is not None:
+        raise lex_error
+    raise UnexpectedToken(tokens[-1], set())    # $END shifted: no LALR table of Lark's does
+
+
+def _unit_chain(tb: _Tables, below: int, origin: str, ttype: str) -> int:
+    """The state a run of unit reductions (``?sum: product``...) ends in, looking at a
+    ``ttype`` token with ``below`` under the top of the stack: each one swaps the top for
+    ``below``'s goto on the rule's name, until the action on ``ttype`` is not a unit
+    reduction.  Remembered per ``(below, top, ttype)`` in :attr:`_Tables.units`, since the
+    expression grammar's precedence levels make most reductions unit ones."""
+    while True:
+        top = tb.states[below][origin]
+        act = tb.states[top].get(ttype)
+        if act is None or act >= 0 or tb.reductions[~act][0] is not None:
+            return top
+        origin = tb.reductions[~act][1]
+
+
+def _expected(row: dict) -> set:
+    """The terminal names a state accepts (its row's upper-case keys)."""
+    return {s for s in row if s.isupper()}
+
+
+# --------------------------------------------------------------- preprocessing
+def mask_comments(src: str, record: list | None = None) -> str:
+    """Turn ``//`` comments into ``# `` comments (same length, so spans stay valid).
+
+    The rule (docs/language.md, "Comments"): ``//`` is floor division when the code before it
+    ends an operand (a name, number, ``)``, ``]``) on the same line -- or on an earlier line
+    inside open ``(``/``[`` -- and the rest of the line does not read as prose (two words side
+    by side that are not keywords, or characters no expression uses).  Otherwise it starts a
+    comment: ``// note`` on its own line, ``x = 5  // half the width``.  So code that parses
+    as an expression is never swallowed.  ``record`` (if given) receives ``(offset, is_comment)``
+    for every ``//`` seen, for the syntax-error hints.
+    """
+    if "//" not in src:                         # nothing to decide (and nothing to record)
+        return src
+    out = list(src)
+    i, n = 0, len(src)
+    quote = None
+    line_start = True
+    depth = 0
+    prev = ""                # the last code character (outside strings and comments)
+    while i < n:
+        ch = src[i]
+        if quote:
+            if ch == "\\":
+                i += 2
+                continue
+            if ch == quote or ch == "\n":
+                quote = None
+                prev = "a"   # a string ends an operand
+            i += 1
+            continue
+        if ch not in _SPECIAL:                  # a run of ordinary characters at once
+            m = _PLAIN.match(src, i)
+            seg = m.group()
+            if not seg.isspace():
+                line_start = False
+                prev = seg.rstrip()[-1]
+                for b in _BRACKETS.findall(seg):
+                    if b in "([":
+                        depth += 1
+                    elif depth:
+                        depth -= 1
+            i = m.end()
+            continue
+        if ch in "\"'":
+            quote = ch
+            line_start = False
+        elif ch == "#":
+            j = src.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        elif ch == "/" and src.startswith("/*", i):
+            j = src.find("*/", i + 2)
+            i = n if j < 0 else j + 2
+            continue
+        elif ch == "/" and src.startswith("//", i):
+            j = src.find("\n", i)
+            rest = src[i + 2: (n if j < 0 else j)]
+            operand_before = prev.isalnum() or prev in "_)]°"
+            division = operand_before and (not line_start or depth > 0) and not _is_prose(rest)
+            if record is not None:
+                record.append((i, not division))
+            if not division:
+                out[i], out[i + 1] = "#", " "
+                i = n if j < 0 else j
+                continue
+            prev = "/"
+            line_start = False
+            i += 2
+            continue
+        elif ch == "\n":
+            line_start = True
+        elif not ch.isspace():
+            line_start = False
+            prev = ch
+            if ch in "([":
+                depth += 1
+            elif ch in ")]" and depth:
+                depth -= 1
+        i += 1
+    return "".join(out)
+
+
+_SPECIAL = frozenset("\"'#/\n")
+_PLAIN = re.compile(r"[^\"'#/\n]+")
+_BRACKETS = re.compile(r"[()\[\]]")
+_ANY_BRACKET = re.compile(r"[()\[\]{}]")
+_KW = {"if", "else", "and", "or", "not", "for", "in"}
+_STRINGS = re.compile(r"[fF]?(\"(\\.|[^\"\\\n])*\"?|'(\\.|[^'\\\n])*'?)")
+
+
+def _is_prose(rest: str) -> bool:
+    """After ``//``: prose (two words side by side, not keywords, or characters no
+    expression uses), so a comment.  Strings in the rest are not looked into."""
+    code = _STRINGS.sub('""', rest).split("#", 1)[0].split("//", 1)[0]
+    if not code.strip():
+        return True
+    for m in re.finditer(r"(?<![\w.])([A-Za-z_]\w*)[ \t]+(?=([A-Za-z_]\w*))", code):
+        if m.group(1) not in _KW and m.group(2) not in _KW:
+            return True
+    return bool(re.search(r"[^\w\s.()\[\]{}+\-*/%,<>=!:;\"'°]", code))
+
+
+def _slash_hint(sink: DiagnosticSink, slashes: list, text: str, pos: int) -> None:
+    """Add to the syntax error just reported (at ``pos``) which way a nearby ``//`` was read."""
+    if not slashes or not sink.items:
+        return
+    d = sink.items[-1]
+    line = text.count("\n", 0, min(pos, len(text))) + 1
+    for off, is_comment in reversed(slashes):
+        ln = text.count("\n", 0, off) + 1
+        if not is_comment and ln == line:
+            d.hint = ("`//` on this line is read as floor division (after an operand, before "
+                      "code); start a comment with `#`")
+            return
+        if is_comment and ln <= line and (ln == line or pos >= len(text.rstrip())):
+            d.hint = (f"`//` on line {ln} starts a comment, so the rest of that line is not "
+                      f"code; for floor division write the operands on both sides, e.g. `n // 2`")
+            return
+
+
+def _blank_logical_line(text: str, pos: int) -> str:
+    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines."""
+    start = text.rfind("\n", 0, pos) + 1
+    end = text.find("\n", pos)
+    end = len(text) if end < 0 else end
+    # extend forward while () / [] are open
+    depth = sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[start:end])
+    while depth > 0 and end < len(text):
+        nxt = text.find("\n", end + 1)
+        nxt = len(text) if nxt < 0 else nxt
+        depth += sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[end:nxt])
+        end = nxt
+    seg = "".join(c if c in "{}\n" else " " for c in text[start:end])
+    return text[:start] + seg + text[end:]
+
+
+def _expected_text(expected) -> str:
+    names = []
+    for e in sorted(expected or []):
+        nm = TOKEN_NAMES.get(e)
+        if nm is None:
+            if e.isupper() and e.isalpha() and len(e) < 10:
+                nm = f"`{e.lower()}`"
+            else:
+                continue
+        if nm not in names:
+            names.append(nm)
+    if not names:
+        return ""
+    if len(names) > 8:
+        names = names[:8] + ["..."]
+    return "expected " + ", ".join(names)
+
+
+def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    """Parse ``source`` (from ``path``) into a :class:`Program`; syntax errors go to ``sink``.
+
+    On syntax errors the returned program holds the statements that did parse.
+
+    The cyclic garbage collector is paused while parsing: the parse makes tens of thousands
+    of tokens, tuples and nodes but no reference cycles, and the collector's passes over them
+    were a quarter of the time (a 178 KB program: 358 -> 265 ms).
+    """
+    with gc_paused():
+        return _parse(source, path, sink)
+
+
+def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    sink.sources[path] = source
+    if "\x00" in source:
+        source = source.replace("\x00", " ")
+    slashes: list = []
+    text = mask_comments(source, slashes)
+    depth = 0
+    for m in _ANY_BRACKET.finditer(text):
+        if m.group() in "([{":
+            depth += 1
+            if depth > MAX_NESTING:
+                i = m.start()
+                line = text.count("\n", 0, i) + 1
+                col = i - text.rfind("\n", 0, i)
+                sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
+                           Span(path, line, col, line, col + 1, i, i + 1),
+                           "split the expression into named constants")
+                return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+        else:
+            depth -= 1
+    _tables()
+    builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    seen: set[int] = set()
+    try:
+        for _attempt in range(MAX_ERRORS + 1):
+            builder.failed.clear()
+            try:
+                stmts = _run_lalr(text, "start").v
+                break
+            except (UnexpectedToken, UnexpectedCharacters) as e:
+                pos = _error_pos(e, text)
+                if pos in seen or len(seen) >= MAX_ERRORS:
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                seen.add(pos)
+                _report(e, text, path, pos, sink)
+                _slash_hint(sink, slashes, text, pos)
+                if pos >= len(text.rstrip()):
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                text = _blank_logical_line(text, pos)
+        else:
+            return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
+        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+    end_line = source.count("\n") + 1
+    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts)
+
+
+def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
+    """Parse one expression (``--set`` values); raises :class:`ParseError` when it does not parse
+    (an error inside an f-string is also reported to ``sink``)."""
+    builder = _Builder(path, sink)
+    prev, _STATE.builder = getattr(_STATE, "builder", None), builder
+    try:
+        node = _run_lalr(text, "expr").v
+    finally:
+        _STATE.builder = prev
+    if builder.failed:
+        sink.error(*builder.failed[0])
+        raise _BuildError(builder.failed[0][1])
+    return node
+
+
+def _error_pos(e: ParseError, text: str) -> int:
+    if isinstance(e, UnexpectedToken) and e.token.type == "$END":
+        return len(text)
+    p = getattr(e, "pos_in_stream", None)
+    if p is None and isinstance(e, UnexpectedToken):
+        p = e.token.start_pos
+    return len(text) if p is None else p
+
+
+def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink) -> None:
+    line = text.count("\n", 0, pos) + 1
+    col = pos - text.rfind("\n", 0, pos)
+    if isinstance(e, UnexpectedCharacters):
+        ch = text[pos] if pos < len(text) else ""
+        if ch in "\"'":
+            msg, hint = "unterminated string", "close the string on the same line"
+        else:
+            msg, hint = f"unexpected character `{ch}`", None
+        sink.error("E0002", msg, Span(path, line, col, line, col + 1, pos, pos + 1), hint)
+        return
+    expected = _expected_text(getattr(e, "expected", None) or getattr(e, "accepts", None))
+    if isinstance(e, UnexpectedToken) and e.token.type == "$END":
+        sink.error("E0001", "unexpected end of file" + (f"; {expected}" if expected else ""),
+                   Span(path, line, col, line, col + 1, pos, pos + 1),
+                   "a `{` or `(` is probably not closed")
+        return
+    tok = e.token
+    width = max(1, len(str(tok)))
+    what = "newline" if tok.type == "_NL" else f"`{tok}`"
+    hint = None
+    if str(tok) == "=" :
+        hint = "use `==` for an equation constraint, `=` only to name a value"
+    elif str(tok) == "{" :
+        hint = "a structure is written `solid NAME { ... }`"
+    elif tok.type == "_NL":
+        hint = "a statement ended early; check for a missing operand or `)`"
+    if tok.type == "_NL":
+        width = 1
+    sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),
+               Span(path, line, col, line, col + width, pos, pos + width), hint)
+
+
+class _BuildError(ParseError):
+    """A reduction could not build its node (an f-string whose expression does not parse)."""
+
+
+def _span(path: str, x) -> Span:
+    """A :class:`Span` from a token, a position tuple ``(line, col, start, end_line, end_col,
+    end)`` (a reduction's extent) or ``None`` (a reduction that covers no token)."""
+    if x is None:
+        return Span(path, 1, 1, 1, 1)
+    if type(x) is not tuple:
+        x = x.pos                                   # a token
+    return Span(path, x[0], x[1], x[3], x[4], x[2], x[5])
+
+
+def parse_number(text: str) -> tuple[float, str | None]:
+    m = UNIT_RE.match(text.strip())
+    if not m:
+        return float(text), None
+    unit = m.group("unit")
+    if unit == "°":
+        unit = "deg"
+    return float(m.group("num")), unit
+
+
+class _R:
+    """A reduction's value with the extent of the text it covers (``pos``: line, column,
+    offset of its first token, then of the end of its last token; ``None`` when it covers no
+    token), as Lark's ``propagate_positions`` computes it for a tree node's container."""
+
+    __slots__ = ("v", "pos")
+
+    def __init__(self, v, pos):
+        self.v = v
+        self.pos = pos
+
+
+_STATE = threading.local()       # .builder: the _Builder of the parse running in this thread
+
+
+def _no_builder(builder, meta, items):
+    raise RuntimeError("a `?rule` without an AST builder matched more than one item")
+
+
+def _make_callback(include, tail, expand1, build, size: int, specialise: bool = True):
+    """The reduction callback of one rule (see :func:`_tables_data` for ``include`` and
+    ``tail``), called as ``cb(children, builder)``: the node's extent runs from the first to
+    the last child that has one (tokens and reductions both carry ``pos``).  The common shapes
+    get their own short callback (one child; every child kept in order; a child-free
+    ``_rule``); they compute exactly what the general one does (tests/test_parse_table.py)."""
+    simple = not tail and all(not splice and not nn for _i, splice, nn in include)
+    picks = tuple(i for i, _s, _n in include)
+    whole = simple and picks == tuple(range(size))        # every child, in order
+
+    if specialise and size == 1 and simple and not expand1:
+        if not picks:                                     # `_sep: _NL`: nothing kept
+            def reduce_none(children, builder):
+                return _R([], children[0].pos)
+            return reduce_none
+        if build is None:                                 # `_stmt: assign`: spliced
+            def reduce_splice1(children, builder):
+                c = children[0]
+                return _R([c.v if type(c) is _R else c], c.pos)
+            return reduce_splice1
+
+        def reduce1(children, builder):
+            c = children[0]
+            pos = c.pos
+            return _R(build(builder, pos, [c.v if type(c) is _R else c]), pos)
+        return reduce1
+
+    def extent(children):
+        for c in children:
+            first = c.pos
+            if first is not None:
+                for c in reversed(children):
+                    last = c.pos
+                    if last is not None:
+                        break
+                return first if first is last else (first[0], first[1], first[2], last[3],
+                                                    last[4], last[5])
+        return None
+
+    if specialise and whole and not expand1 and build is not None and size > 1:
+        def reduce_whole(children, builder):
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            return _R(build(builder, pos, [c.v if type(c) is _R else c for c in children]), pos)
+        return reduce_whole
+
+    if specialise and simple and not whole and not expand1 and build is not None and size > 1:
+        def reduce_picks(children, builder):    # `assign: NAME "=" expr`: some tokens dropped
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            return _R(build(builder, pos, [c.v if type(c) is _R else c
+                                           for c in map(children.__getitem__, picks)]), pos)
+        return reduce_picks
+
+    if (specialise and not tail and not expand1 and build is None and include
+            and include[0] == (0, True, 0) and all(not nn for _i, _s, nn in include)):
+        rest = include[1:]
+
+        def reduce_grow(children, builder):     # `__block_star: __block_star _sep _stmt`
+            first, last = children[0].pos, children[-1].pos
+            if first is None or last is None:
+                pos = extent(children)
+            else:
+                pos = (first[0], first[1], first[2], last[3], last[4], last[5])
+            items = children[0].v               # the list grows in place
+            for i, splice, _nn in rest:
+                c = children[i]
+                if splice:
+                    items += c.v
+                elif type(c) is _R:
+                    items.append(c.v)
+                else:
+                    items.append(c)
+            return _R(items, pos)
+        return reduce_grow
+
+    def reduce(children, builder):
+        pos = extent(children)
+        if whole:
+            items = [c.v if type(c) is _R else c for c in children]
+        elif simple:
+            items = [c.v if type(c) is _R else c for c in map(children.__getitem__, picks)]
+        else:
+            items = []
+            for i, splice, nn in include:
+                if nn:
+                    items += [None] * nn
+                c = children[i]
+                if splice:
+                    if i == 0 and not items:
+                        items = c.v         # a left-recursive list grows in place (no copy:
+                    else:                   # the child's list is consumed here)
+                        items += c.v
+                elif type(c) is _R:
+                    items.append(c.v)
+                else:
+                    items.append(c)
+            if tail:
+                items += [None] * tail
+        if expand1 and len(items) == 1:
+            if type(children[include[0][0]]) is not _R:
+                return children[include[0][0]]      # a token passed through as it is
+            return _R(items[0], pos)
+        if build is None:
+            return _R(items, pos)                   # a `_rule`: its items are spliced
+        return _R(build(builder, pos, items), pos)
+    return reduce
+
+
+class _Builder:
+    """The AST node for each grammar rule; ``meta`` is the rule's extent (see :func:`_span`)."""
+
+    def __init__(self, path: str, sink: DiagnosticSink):
+        self.path = path
+        self.sink = sink
+        self.failed: list = []       # f-string errors (code, message, span) of this attempt
+
+    def s(self, x) -> Span:
+        if x is None:
+            return Span(self.path, 1, 1, 1, 1)
+        if type(x) is not tuple:
+            x = x.pos                                   # a token
+        return Span(self.path, x[0], x[1], x[3], x[4], x[2], x[5])
+
+    # statements
+    def start(self, meta, items):
+        return [i for i in items if isinstance(i, A.Node)]
+
+    def block(self, meta, items):
+        return A.Block(self.s(meta), [i for i in items if isinstance(i, A.Node)])
+
+    def units_decl(self, meta, items):
+        return A.UnitsDecl(self.s(meta), str(items[0]), self.s(items[0]))
+
+    def units_in(self, meta, items):
+        sp = self.s(meta)
+        return A.UnitsDecl(sp, "in", Span(sp.file, sp.end_line, sp.end_col - 2, sp.end_line,
+                                          sp.end_col, sp.end - 2, sp.end))
+
+    def import_dotted(self, meta, items):
+        # `import stdlib.shapes` / `import std.shapes` is `import "std/shapes.aidl"`;
+        # `import parts.gears` is `import "parts/gears.aidl"` (relative to this file)
+        *parts, alias = items
+        names = [str(t) for t in parts]
+        if names[0] in ("std", "stdlib") and len(names) > 1:
+            path = "std/" + "/".join(names[1:]) + ".aidl"
+        else:
+            path = "/".join(names) + ".aidl"
+        sp = _span(self.path, parts[0])
+        last = _span(self.path, parts[-1])
+        tsp = Span(sp.file, sp.line, sp.col, last.end_line, last.end_col, sp.start, last.end)
+        return A.Import(self.s(meta), path, tsp, str(alias) if alias else None)
+
+    def thickness_decl(self, meta, items):
+        return A.ThicknessDecl(self.s(meta), items[1])
+
+    def import_decl(self, meta, items):
+        tok, alias = items[0], items[1]
+        return A.Import(self.s(meta), _unquote(str(tok)), self.s(tok), str(alias) if alias else None)
+
+    def param_decl(self, meta, items):
+        opts = list(items[2:])
+        seen = set()
+        for o in opts:
+            if o.name in seen:
+                self.sink.error("E0107", f"`{o.name}` given twice for param `{items[0]}`",
+                                o.name_span, hint="give each of min, max and step once")
+            seen.add(o.name)
+        return A.ParamDecl(self.s(meta), str(items[0]), self.s(items[0]), items[1], opts)
+
+    def param_opt(self, meta, items):
+        return A.ParamOption(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+
+    def params(self, meta, items):
+        return list(items)
+
+    def param(self, meta, items):
+        return A.TemplateParam(self.s(meta), str(items[0]), items[1] if len(items) > 1 else None)
+
+    def def_decl(self, meta, items):
+        name, params, kind, body = items
+        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+                     params or [], body)
+
+    def def_short(self, meta, items):
+        kind, name, params, body = items
+        return A.Def(self.s(meta), str(name), self.s(name), str(kind), self.s(kind),
+                     params or [], body)
+
+    def struct_decl(self, meta, items):
+        kind, name, body = items
+        return A.StructDecl(self.s(meta), str(kind), self.s(kind), str(name), self.s(name), body)
+
+    def assign(self, meta, items):
+        return A.Assign(self.s(meta), str(items[0]), self.s(items[0]), items[1])
+
+    def for_stmt(self, meta, items):
+        return A.For(self.s(meta), str(items[0]), self.s(items[0]), items[1], items[2])
+
+    def if_stmt(self, meta, items):
+        orelse = items[2] if len(items) > 2 else None
+        return A.If(self.s(meta), items[0], items[1], orelse)
+
+    elif_stmt = if_stmt
+
+    def else_part(self, meta, items):
+        x = items[0]
+        return x if isinstance(x, A.Block) else A.Block(x.span, [x])
+
+    def expr_stmt(self, meta, items):
+        return A.ExprStmt(self.s(meta), items[0])
+
+    def bare_block(self, meta, items):
+        return items[0]
+
+    # expressions
+    def number(self, meta, items):
+        v, unit = parse_number(str(items[0]))
+        return A.Num(self.s(meta), v, unit)
+
+    def string(self, meta, items):
+        return A.Str(self.s(meta), _unquote(str(items[0])))
+
+    def fstring(self, meta, items):
+        tok = items[0]
+        body = _unquote(str(tok)[1:])
+        return A.FStr(self.s(meta), self._fparts(body, tok))
+
+    def _fparts(self, body: str, tok: Token) -> list:
+        parts: list = []
+        i = 0
+        buf = ""
+        while i < len(body):
+            ch = body[i]
+            if ch == "{" and body.startswith("{{", i):
+                buf += "{"; i += 2; continue
+            if ch == "}" and body.startswith("}}", i):
+                buf += "}"; i += 2; continue
+            if ch == "{":
+                j = body.find("}", i)
+                if j < 0:
+                    self.failed.append(("E0001", "unclosed `{` in f-string", self.s(tok)))
+                    return parts
+                inner = body[i + 1:j]
+                fmt = None
+                if ":" in inner:
+                    inner, fmt = inner.split(":", 1)
+                if buf:
+                    parts.append(buf); buf = ""
+                try:
+                    expr = _run_lalr(inner.strip(), "expr").v
+                except (UnexpectedToken, UnexpectedCharacters):
+                    self.failed.append(("E0001", f"cannot parse `{inner}` in f-string",
+                                        self.s(tok)))
+                    return parts
+                _respan(expr, self.s(tok))
+                parts.append((expr, fmt))
+                i = j + 1
+                continue
+            buf += ch
+            i += 1
+        if buf:
+            parts.append(buf)
+        return parts
+
+    def name(self, meta, items):
+        return A.Name(self.s(meta), str(items[0]))
+
+    def tuple(self, meta, items):
+        return A.TupleLit(self.s(meta), [i for i in items if i is not None])
+
+    def list(self, meta, items):
+        return A.ListLit(self.s(meta), [i for i in items if i is not None])
+
+    def listcomp(self, meta, items):
+        elt, var, it, cond = items
+        return A.ListComp(self.s(meta), elt, str(var), self.s(var), it, cond)
+
+    def ternary(self, meta, items):
+        then, cond, orelse = items
+        return A.Ternary(self.s(meta), cond, then, orelse)
+
+    def or_op(self, meta, items):
+        return A.BoolOp(self.s(meta), "or", items[0], items[1])
+
+    def and_op(self, meta, items):
+        return A.BoolOp(self.s(meta), "and", items[0], items[1])
+
+    def not_op(self, meta, items):
+        return A.Not(self.s(meta), items[0])
+
+    def compare(self, meta, items):
+        operands = items[0::2]
+        ops = [str(t) for t in items[1::2]]
+        return A.Compare(self.s(meta), ops, operands)
+
+    def binop(self, meta, items):
+        return A.BinOp(self.s(meta), str(items[1]), items[0], items[2])
+
+    def pow(self, meta, items):
+        return A.BinOp(self.s(meta), "**", items[0], items[-1])
+
+    def neg(self, meta, items):
+        sign, x = items
+        if str(sign) == "+":
+            return x
+        if isinstance(x, A.Num):
+            return A.Num(self.s(meta), -x.value, x.unit)
+        return A.Neg(self.s(meta), x)
+
+    def call(self, meta, items):
+        func, args = items[0], items[1] or []
+        pos = [a for a in args if not isinstance(a, A.Keyword)]
+        kws = [a for a in args if isinstance(a, A.Keyword)]
+        return A.Call(self.s(meta), func, pos, kws)
+
+    def args(self, meta, items):
+        return list(items)
+
+    def arg(self, meta, items):
+        return items[0]
+
+    def kwarg(self, meta, items):
+        return A.Keyword(self.s(meta), str(items[0]), items[1])
+
+    def member(self, meta, items):
+        return A.Member(self.s(meta), items[0], str(items[1]), self.s(items[1]))
+
+    def index(self, meta, items):
+        return A.Index(self.s(meta), items[0], items[1])
+
+
+def _respan(node, span: Span) -> None:
+    for n in A.walk(node):
+        n.span = span
+
+
+def _unquote(s: str) -> str:
+    body = s[1:-1]
+    return re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), body)

@@ -1,0 +1,308 @@
+"""The pipeline in one call: parse -> check -> interpret -> solve -> booleans and the geometry
+checks on the final shape (:mod:`aidl_lang.output.checks`); the writers run in cli/render.
+
+Each stage appends diagnostics to one :class:`DiagnosticSink`; a stage runs only when the
+previous ones produced no errors.
+"""
+from __future__ import annotations
+
+import threading
+import time
+import warnings
+from .records import dataclass
+
+import numpy as np
+
+from .diagnostics import Diagnostic, DiagnosticSink, Label
+from .interp import Interpreter
+from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget
+from .geometry.model import Model
+from .parser import parse
+from .output.booleans import Drawing, render_model
+from .output.checks import MIN_WALL, check_drawing
+from .solver import SolveResult, solve
+from .typecheck import check
+
+
+@dataclass
+class Compiled:
+    sink: DiagnosticSink
+    model: Model | None = None
+    solve: SolveResult | None = None
+    drawing: Drawing | None = None      # the booleans' result, when the solve converged
+
+    @property
+    def ok(self) -> bool:
+        return not self.sink.has_errors
+
+
+def compile_source(source: str, path: str, overrides: dict[str, str] | None = None,
+                   do_solve: bool = True, min_wall: float = MIN_WALL,
+                   budget: Budget = DEFAULT_BUDGET) -> Compiled:
+    """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics).
+
+    ``budget`` bounds interpretation and solving together (:class:`aidl_lang.limits.Budget`;
+    running out is ``E0304``)."""
+    sink = DiagnosticSink()
+    if source.startswith("\ufeff"):       # a UTF-8 byte order mark is not part of the program
+        source = source[1:]
+    try:
+        return run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
+                                         budget))
+    except (RecursionError, MemoryError) as ex:
+        sink.sources.setdefault(path, source)
+        sink.error("E0302", "the program is nested too deeply to compile", _deep_span(ex, path, source),
+                   hint="split long expressions into named constants")
+        return Compiled(sink)
+
+
+# Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse
+# through the parser's tree builder, the checker and the interpreter.  They run on a thread
+# with a large stack and a raised recursion limit; beyond that, E0302 at the expression.
+DEEP_STACK = 256 * 1024 * 1024
+DEEP_RECURSION = 60_000
+
+
+def run_deep(fn):
+    """Call ``fn()`` on a thread with a :data:`DEEP_STACK` stack and a recursion limit of
+    :data:`DEEP_RECURSION`; returns its result or re-raises its exception."""
+    import sys
+    import threading
+    if getattr(_deep_state, "inside", False):
+        return fn()
+    box: dict = {}
+
+    def target():
+        _deep_state.inside = True
+        try:
+            box["value"] = fn()
+        except BaseException as ex:          # re-raised in the caller's thread
+            box["error"] = ex
+
+    with _deep_lock:
+        old_stack = threading.stack_size()
+        old_limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(max(old_limit, DEEP_RECURSION))
+        try:
+            try:
+                threading.stack_size(DEEP_STACK)
+                t = threading.Thread(target=target, name="aidl-compile", daemon=True)
+                t.start()
+            except (RuntimeError, MemoryError):
+                t = None               # no room for the big stack (an address-space limit)
+            finally:
+                threading.stack_size(old_stack)
+            if t is None:
+                sys.setrecursionlimit(old_limit)
+                return fn()            # deep programs then end in a located E0302
+            t.join()
+        finally:
+            sys.setrecursionlimit(old_limit)
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def _deep_span(ex, path: str, source: str):
+    """The line with the most operators (the deepest expression, as far as one can tell)."""
+    import re
+    from .diagnostics import Span
+    best, best_score, start = None, -1, 0
+    for no, line in enumerate(source.split("\n"), 1):
+        score = len(re.findall(r"\*\*|\bif\b|\bnot\b|\band\b|\bor\b|[-+*/(\[]", line))
+        if score > best_score and line.strip():
+            lead = len(line) - len(line.lstrip())
+            body = line.rstrip()
+            best = Span(path, no, lead + 1, no, len(body) + 1, start + lead, start + len(body))
+            best_score = score
+        start += len(line) + 1
+    return best
+
+
+_deep_lock = threading.Lock()
+_deep_state = threading.local()
+
+
+def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
+             budget: Budget = DEFAULT_BUDGET) -> Compiled:
+    deadline = time.monotonic() + budget.seconds
+    program = parse(source, path, sink)
+    if sink.has_errors:
+        return Compiled(sink)
+    check(program, sink)
+    if sink.has_errors:
+        return Compiled(sink)
+    interp = Interpreter(sink, overrides, budget, deadline)
+    model = interp.run(program)
+    if not sink.has_errors and _empty_drawing(program, model):
+        sink.warning("W0104", "the program builds no geometry: the drawing will be empty",
+                     program.span if program.stmts else None,
+                     hint="add a structure with shapes, e.g. `solid plate { body = "
+                          "Rectangle(center=(0, 0), width=40, height=20) }`")
+    if sink.has_errors or not do_solve:
+        return Compiled(sink, model)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        # overflow in a residual is reported as a failed solve, not as a numpy warning
+        warnings.simplefilter("ignore", RuntimeWarning)
+        result = solve(model, deadline=deadline)
+    if not result.converged:
+        report_failure(sink, result)
+        return Compiled(sink, model, result)
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall))
+
+
+def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
+                shape_checks: bool = True) -> Drawing | None:
+    """The stages after a converged solve, shared by :func:`compile_source` and the live
+    preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
+    checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
+    or ``None`` when the extent check failed (nothing absurd reaches a writer).
+    ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
+    preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on
+    the page."""
+    if not check_extent(sink, model):
+        return None
+    check_branches(sink, model)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)     # degenerate sizes: no numpy noise
+        drawing = render_model(model)
+    if shape_checks:
+        check_drawing(drawing, sink, min_wall)
+    return drawing
+
+
+
+def _empty_drawing(program, model: Model) -> bool:
+    """W0104's condition: nothing at all in the file, or structures that build no geometry.
+    A file of only templates, params and constants is a library: no warning."""
+    from . import ast as A
+    if any(True for _ in model.all_geometry()):
+        return False
+    if not program.stmts:
+        return True
+    return any(not isinstance(s, (A.Import, A.ParamDecl, A.Def, A.UnitsDecl, A.Assign))
+               for s in program.stmts)
+
+
+def check_extent(sink: DiagnosticSink, model: Model) -> bool:
+    """After solving: every unknown finite and within the model extent
+    (:data:`~aidl_lang.limits.MAX_EXTENT`), else one E0305 at the structure that holds the
+    first offending unknown (no NaN or absurd coordinate reaches a writer)."""
+    import math
+    for i, v in enumerate(model.x):
+        if math.isfinite(v) and abs(v) <= MAX_EXTENT:
+            continue
+        owner = model.param_owner[i]
+        what = "not finite" if not math.isfinite(v) else f"{v:.4g} mm"
+        sink.error("E0305", f"after solving, `{model.param_label[i]}` is {what}, beyond the "
+                   f"model extent of {MAX_EXTENT:.0e} mm",
+                   owner.span if owner is not None else None,
+                   hint="the constraints push the geometry very far away: check the values "
+                        "and units of the dimensions")
+        return False
+    return True
+
+
+def check_branches(sink: DiagnosticSink, model: Model) -> None:
+    """W0403 for a convention-dependent constraint that ended on another branch than the one
+    chosen at the start (paper, appendix "Solver Details", *Deferred expressions*)."""
+    from .geometry.expr import evaluate
+    x = model.xs()
+    for c in model.constraints:
+        for eq in c.equations:
+            if eq.branch is not None and evaluate(eq.branch, x) < -1e-9:
+                sink.warning("W0403", f"`{c.describe()}` ended on another branch than it started "
+                             "on: a line now points the opposite way", c.span,
+                             hint="give starting positions closer to the intended shape, so "
+                                  "the nearest branch is the one you mean")
+                break
+
+
+def report_redundancies(sink: DiagnosticSink, result: SolveResult) -> None:
+    """W0401 for each user constraint implied by others (``aidl check --dof``)."""
+    from .solver.diagnose import redundancies
+    for red in redundancies(result.solver):
+        c = red.constraint
+        by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
+        labels = [Label(b.span, "implied by this", primary=False)
+                  for b in red.by[:4] if b.span is not None]
+        what = "partly redundant: part of it" if red.partly else "redundant: it"
+        source = by or "values already held (a constructor's dimensions or `Fixed`)"
+        sink.add(Diagnostic("W0401", f"`{c.describe()}` is {what} already follows from "
+                            f"{source}", c.span, "warning",
+                            hint="harmless now, but if one of these values changes the model "
+                                 "becomes over-constrained; drop one of them only if it repeats "
+                                 "the same intent", labels=labels))
+
+
+def _where(c) -> str:
+    line = f"line {c.span.line}" if c.span is not None else "no line"
+    what = f"held by a constructor ({line})" if c.implicit else line
+    return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
+
+
+def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
+    """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
+    the iteration budget ran out."""
+    if result.out_of_time:
+        sink.add(Diagnostic(
+            "E0304", "the program ran out of its evaluation budget while solving: more than "
+            "its wall time", None, "error",
+            hint="simplify the model, or raise the budget with `--budget 2` (or more)"))
+    elif result.budget_exceeded:
+        sink.add(Diagnostic(
+            "E0402", f"the solver gave up after {result.iterations} Newton steps (its budget)",
+            None, "error",
+            hint="the constraints are probably far from satisfiable from the starting "
+                 "positions: give starting positions closer to the intended shape, or check "
+                 "the constraints named by other errors"))
+    shown = 0
+    for k in result.conflicts[:3]:
+        items = k.items
+        # primary: the last-written user constraint of the set
+        user = [(c, r) for c, r in items if not c.implicit and c.span is not None] or items
+        first, r0 = user[-1]
+        labels = [Label(c.span, f"conflicts with this: {_where(c)}"
+                        + (f", residual {r:.3g}" if r > 1e-6 else ""), primary=False)
+                  for c, r in items if c is not first and c.span is not None]
+        worst = max(r for _, r in items)
+        names = "; ".join(_where(c) for c, _ in items)
+        sink.add(Diagnostic(
+            "E0401",
+            f"these {len(items)} constraints conflict in `{first.owner.path}`: they cannot "
+            f"all hold (largest residual {worst:.3g})",
+            first.span, "error",
+            hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
+                  "(a different value, or a constraint that says what you mean); keep the "
+                  "others"),
+            labels=labels))
+        shown += 1
+    if shown:
+        return
+    items = result.unsatisfied
+    if not items:
+        if not result.budget_exceeded:
+            # never "ok" with a solve that did not converge
+            sink.add(Diagnostic("E0401", "the solver did not converge, but no single constraint "
+                                "is off by more than the tolerance", None, "error",
+                                hint="the model is probably badly scaled (sizes far apart); "
+                                     "check the dimensions"))
+        return
+    explicit = [(c, r) for c, r in items if not c.implicit] or items
+    first, r0 = explicit[0]
+    labels = []
+    for c, r in explicit[1:8]:
+        if c.span is not None:
+            labels.append(Label(c.span, f"also unsatisfied (residual {r:.3g}) in `{c.owner.path}`",
+                                primary=False))
+    names = ", ".join(f"`{c.describe()}`" for c, _ in explicit[:4])
+    sink.add(Diagnostic(
+        "E0401",
+        f"the constraints cannot all be satisfied: {len(explicit)} still off after solving "
+        f"(largest residual {r0:.3g} in `{first.owner.path}`)",
+        first.span, "error",
+        hint=("these constraints conflict with each other or with the dimensions held by "
+              f"constructors: {names}. Check that no two of them demand different values "
+              "for the same thing, and that the starting positions are near the intended "
+              "shape"),
+        labels=labels))

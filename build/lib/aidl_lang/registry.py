@@ -1,0 +1,507 @@
+"""The one registry of AIDL's vocabulary: primitives, constraints, structural relations, functions.
+
+Each :class:`Entry` gives its argument lists (one per constructor variant) with types, units and
+defaults, a one-line doc, and a category.  The checker, the interpreter, ``aidl explain`` and the
+docs all read this table.  Adding a synonym is one line in :data:`SYNONYMS`.
+
+Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string``, ``points``
+(list of points), ``line``, ``circular`` (Circle or Arc), ``curve`` (Line, Circle or Arc),
+``geometry``, ``boxed`` (anything with a bounding box: geometry or structure), ``any``.
+"""
+from __future__ import annotations
+
+import math
+from .records import dataclass, field
+
+REQUIRED = object()
+
+
+@dataclass(frozen=True)
+class Arg:
+    name: str
+    type: str
+    default: object = REQUIRED
+    doc: str = ""
+    kw_only: bool = False            # may only be given by keyword (e.g. ``construction=``)
+
+    @property
+    def required(self) -> bool:
+        return self.default is REQUIRED
+
+    @property
+    def default_text(self) -> str:
+        """The default as AIDL source: ``true``, ``"x"``, ``none``, ``360 deg``, ``0``."""
+        d = self.default
+        if isinstance(d, bool):
+            return "true" if d else "false"
+        if d is None:
+            return "none"
+        if isinstance(d, str):
+            return f'"{d}"'
+        if isinstance(d, float) and self.type == "angle" and d:
+            return f"{math.degrees(d):g} deg"
+        return f"{d:g}" if isinstance(d, float) else str(d)
+
+
+@dataclass
+class Entry:
+    name: str
+    category: str                    # primitive | constraint | structural | function
+    variants: list[tuple[Arg, ...]]
+    doc: str
+    members: dict[str, str] = field(default_factory=dict)   # member -> type (primitives)
+
+    def signature(self, variant: tuple[Arg, ...] | None = None) -> str:
+        vs = [variant] if variant is not None else self.variants
+        outs = []
+        for v in vs:
+            parts = []
+            for i, a in enumerate(v):
+                if a.kw_only and (i == 0 or not v[i - 1].kw_only):
+                    parts.append("*")
+                if a.required:
+                    parts.append(f"{a.name}: {a.type}")
+                else:
+                    parts.append(f"{a.name}: {a.type} = {a.default_text}")
+            outs.append(f"{self.name}({', '.join(parts)})")
+        return "\n".join(outs)
+
+
+CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn",
+                   kw_only=True)
+
+FLEXIBLE = Arg("flexible", "bool", False, "points given by literal coordinates are starting "
+               "guesses only (the shape may bend), not a rigid shape", kw_only=True)
+
+POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
+LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
+                "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
+CIRCLE_MEMBERS = {"center": "point", "radius": "length", "diameter": "length", "bb": "bbox",
+                  "top": "point", "bottom": "point", "left": "point", "right": "point"}
+ARC_MEMBERS = {"center": "point", "start": "point", "end": "point", "through": "point",
+               "radius": "length",
+               "diameter": "length", "midpoint": "point", "bb": "bbox"}
+RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point",
+                "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
+                "left": "line", "right": "line", "width": "length", "height": "length",
+                "bb": "bbox"}
+POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "bbox"}
+TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
+               "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
+               "bb": "bbox"}
+TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
+    "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
+ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
+SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
+                "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
+TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
+BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
+                "bottom": "coordinate", "width": "length", "height": "length",
+                "center": "point", "center_x": "coordinate", "center_y": "coordinate",
+                "top_left": "point", "top_right": "point", "bottom_left": "point",
+                "bottom_right": "point"}
+STRUCTURE_MEMBERS = {"bb": "bbox"}
+
+
+def _p(*variants, doc, members=None):
+    return ("primitive", [tuple(v) + (CONSTRUCTION,) for v in variants], doc, members or {})
+
+
+def _c(*variants, doc, cat="constraint"):
+    return (cat, [tuple(v) for v in variants], doc, {})
+
+
+A = Arg
+_DEFS = {
+    # ------------------------------------------------------------ primitives
+    "Point": _p([A("x", "length"), A("y", "length")], [A("at", "point")],
+                doc="A point; its position is a starting guess.", members=POINT_MEMBERS),
+    "Line": _p([A("start", "point"), A("end", "point")],
+               doc="A line segment between two points (positions are starting guesses).",
+               members=LINE_MEMBERS),
+    "Circle": _p([A("center", "point"), A("radius", "length")],
+                 [A("center", "point"), A("diameter", "length")],
+                 doc="A circle; the radius (or diameter) is held.", members=CIRCLE_MEMBERS),
+    "Arc": _p([A("center", "point"), A("start", "point"), A("end", "point")],
+              [A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
+               A("end_angle", "angle")],
+              [A("start", "point"), A("through", "point"), A("end", "point")],
+              doc="A counter-clockwise arc from start to end about center; by points (guesses), "
+                  "by radius and angles (held), or through three points (keywords start=, "
+                  "through=, end=).", members=ARC_MEMBERS),
+    "Rectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
+                     A("rotation", "angle", 0.0)],
+                    [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
+                     A("rotation", "angle", 0.0)],
+                    [A("corner", "point"), A("opposite", "point"), A("rotation", "angle", 0.0)],
+                    doc="A rectangle; width, height and rotation are held, its position is a "
+                        "starting guess. By two corners only the rotation is held.",
+                    members=RECT_MEMBERS),
+    "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
+                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
+                           [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
+                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
+                           doc="A rectangle with rounded corners (radius applied when drawn).",
+                           members=RECT_MEMBERS),
+    "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point"), FLEXIBLE],
+                   [A("center", "point"), A("base", "length"), A("height", "length"),
+                    A("rotation", "angle", 0.0)],
+                   doc="A triangle through three points (as Polygon), or an isosceles "
+                       "one by base and height (held; a, b on the base, c the apex, center the "
+                       "bounding-box center).", members=TRI_MEMBERS),
+    "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
+                     A("height", "length"), A("rotation", "angle", 0.0)],
+                    doc="An isosceles trapezoid; widths, height and rotation are held, the "
+                        "center is a starting guess.", members=TRAP_MEMBERS),
+    "Ellipse": _p([A("center", "point"), A("rx", "length"), A("ry", "length"),
+                   A("rotation", "angle", 0.0)],
+                  doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
+                      "rotation are held, the center is a starting guess.",
+                  members=ELLIPSE_MEMBERS),
+    "Polygon": _p([A("points", "points"), FLEXIBLE],
+                  doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
+                      "its shape) unless flexible=true; other points are starting guesses.",
+                  members=POLY_MEMBERS),
+    "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
+                          A("rotation", "angle", 0.0)],
+                         [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
+                          A("rotation", "angle", 0.0)],
+                         doc="A rigid regular polygon; radius (center to vertex) or across_flats "
+                             "(between opposite sides), sides and rotation are held; first "
+                             "vertex at +x.", members=POLY_MEMBERS),
+    "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
+               [A("start", "point"), A("end", "point"), A("width", "length")],
+               [A("center", "point"), A("length", "length"), A("width", "length"),
+                A("rotation", "angle", 0.0)],
+               doc="A stadium around the segment start-end (its end arcs' centers); radius = "
+                   "width/2 is held; by center, length (end to end) and rotation are held too.",
+               members=SLOT_MEMBERS),
+    "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
+                A("anchor", "string", "middle"), A("valign", "string", "baseline"),
+                A("rotation", "angle", 0.0)],
+               doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
+                   "middle, end; valign: baseline, middle, top, bottom; rotation about position.", members=TEXT_MEMBERS),
+    # ------------------------------------------------------------ geometric constraints
+    "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
+                     doc="Two points are the same point (a point and a line/circle: on it)."),
+    "Horizontal": _c([A("a", "geometry"), A("b", "point", None)],
+                     doc="A line, or the two points a and b, are horizontal."),
+    "Vertical": _c([A("a", "geometry"), A("b", "point", None)],
+                   doc="A line, or the two points a and b, are vertical."),
+    "Fixed": _c([A("a", "any")],
+                doc="Hold a point, geometry or structure where it starts."),
+    "Distance": _c([A("a", "geometry"), A("b", "geometry"), A("distance", "length")],
+                   doc="Distance between two points, from a point to a line, or between two "
+                       "parallel lines (they are made parallel)."),
+    "HorizontalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
+                             doc="b.x - a.x == distance."),
+    "VerticalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
+                           doc="b.y - a.y == distance."),
+    "Length": _c([A("line", "line"), A("length", "length")], doc="A line's length."),
+    "Radius": _c([A("circle", "circular"), A("radius", "length")],
+                 doc="A circle's or arc's radius."),
+    "Diameter": _c([A("circle", "circular"), A("diameter", "length")],
+                   doc="A circle's or arc's diameter."),
+    "Equal": _c([A("a", "any"), A("b", "any")],
+                doc="Equal lengths (lines), radii (circles/arcs), sizes (rectangles) or values."),
+    "Parallel": _c([A("a", "line"), A("b", "line")], doc="Two lines are parallel."),
+    "Perpendicular": _c([A("a", "line"), A("b", "line")], doc="Two lines are perpendicular."),
+    "Tangent": _c([A("a", "curve"), A("b", "curve")],
+                  doc="A line and a circle/arc, or two circles/arcs, touch tangentially."),
+    "Symmetric": _c([A("a", "geometry"), A("b", "geometry"), A("about", "line")],
+                    doc="a and b are mirror images about a line."),
+    "Midpoint": _c([A("point", "point"), A("line", "line")],
+                   doc="The point is the line's midpoint."),
+    "OnLine": _c([A("point", "point"), A("line", "line")],
+                 doc="The point lies on the (infinite) line."),
+    "OnCircle": _c([A("point", "point"), A("circle", "circular")],
+                   doc="The point lies on the circle or the arc's circle."),
+    "Collinear": _c([A("a", "geometry"), A("b", "geometry"), A("c", "point", None)],
+                    doc="Two lines lie on one infinite line, or three points lie on one line."),
+    "Concentric": _c([A("a", "circular"), A("b", "circular")],
+                     doc="Two circles/arcs share their center."),
+    "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
+                doc="The angle from line a to line b; the sense (cw/ccw) nearest the starting "
+                    "geometry is used."),
+    # ------------------------------------------------------------ structural
+    "Above": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                doc="a sits on top of b: a.bb.bottom == b.bb.top + gap."),
+    "Below": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                doc="a sits under b: a.bb.top == b.bb.bottom - gap."),
+    "LeftOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                 doc="a touches b from the left: a.bb.right == b.bb.left - gap."),
+    "RightOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
+                  doc="a touches b from the right: a.bb.left == b.bb.right + gap."),
+    "Gap": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length"), A("axis", "string", "x")],
+              cat="structural",
+              doc="Empty space between a's and b's bounding boxes along axis \"x\" or \"y\", "
+                  "whichever side each is on."),
+    "Inside": _c([A("a", "boxed"), A("b", "boxed"), A("margin", "length", 0.0)],
+                 cat="structural", doc="a's bounding box lies within b's, at least margin in."),
+    "CenterInside": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="a is centered in b: their bounding-box centers coincide."),
+    "Taller": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                 doc="a.bb.height >= b.bb.height."),
+    "Wider": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                doc="a.bb.width >= b.bb.width."),
+    "AlignCenterX": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="Same horizontal center: a.bb.center_x == b.bb.center_x."),
+    "AlignCenterY": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                       doc="Same vertical center: a.bb.center_y == b.bb.center_y."),
+    "AlignLeft": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                    doc="a.bb.left == b.bb.left."),
+    "AlignRight": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                     doc="a.bb.right == b.bb.right."),
+    "AlignTop": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                   doc="a.bb.top == b.bb.top."),
+    "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
+                      doc="a.bb.bottom == b.bb.bottom."),
+    # ------------------------------------------------------------ operations
+    "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
+                   doc="A copy of geometry or a structure mirrored about a line; it follows the "
+                       "original. `Mirror(a, b, about)` is the Symmetric constraint."),
+    "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
+                        cat="operation",
+                        doc="count instances in all, each moved by step (a vector) from the last; "
+                            "gives the list [original, copy1, ...]."),
+    "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
+                           A("angle", "angle", 2 * math.pi)],
+                          [A("target", "boxed"), A("count", "number"), A("center", "point"),
+                           A("step", "angle")], cat="operation",
+                          doc="count instances turned counter-clockwise about center: angle is "
+                              "the span from first to last (360 deg: evenly all round), step the "
+                              "angle between neighbours; gives [original, copy1, ...]."),
+    "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
+                 cat="operation",
+                 doc="Round every corner of this solid's (or hole's) final outline, or only "
+                     "the corners at: a point, [edge1, edge2] (where they meet), a shape's "
+                     "corners, or a list of these."),
+    "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
+                  cat="operation",
+                  doc="Cut every convex corner of this solid's final outline (or those at, "
+                      "as Fillet) with two legs of distance."),
+}
+
+# name -> canonical name.  One line per synonym.
+SYNONYMS: dict[str, str] = {
+    "Orthogonal": "Perpendicular",
+    "Coincide": "Coincident",
+    "Join": "Coincident",
+    "Fix": "Fixed",
+    "Lock": "Fixed",
+    "Anchor": "Fixed",
+    "Same": "Equal",
+    "EqualLength": "Equal",
+    "EqualRadius": "Equal",
+    "Centered": "CenterInside",
+    "OnTopOf": "Above",
+    "Over": "Above",
+    "Under": "Below",
+    "Underneath": "Below",
+    "ToTheLeftOf": "LeftOf",
+    "ToTheRightOf": "RightOf",
+    "Within": "Inside",
+    "Contains": "Inside",            # argument order swapped: see SWAPPED
+    "AtMidpoint": "Midpoint",
+    "Mirror": "Symmetric",
+    "MirrorSymmetric": "Symmetric",
+    "DistanceX": "HorizontalDistance",
+    "DistanceY": "VerticalDistance",
+    "HorizontallyCentered": "AlignCenterX",
+    "VerticallyCentered": "AlignCenterY",
+    "PointOnLine": "OnLine",
+    "OnArc": "OnCircle",
+}
+
+# argument synonyms: entry name -> {name a model writes -> canonical argument name}.  One line
+# per synonym; the checker renames silently, and only where the canonical argument belongs to
+# the chosen form and is not given as well.  "*" applies to every entry (each alias lists its
+# candidates; the first one the form has is used).
+ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
+    "*": {"r": "radius", "rad": "radius", "d": ("diameter", "distance"), "dia": "diameter",
+          "w": "width", "h": "height", "pos": ("position", "center"), "rot": "rotation",
+          "n": ("count", "sides"), "num": ("count", "sides")},
+    "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
+             "font_size": "size"},
+    "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
+    "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
+    "Circle": {"position": "center", "at": "center"},
+    "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height"},
+    "RegularPolygon": {"n_sides": "sides", "num_sides": "sides", "af": "across_flats",
+                       "flat_to_flat": "across_flats"},
+    "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end"},
+    "CircularPattern": {"number": "count", "copies": "count", "around": "center",
+                        "origin": "center", "span": "angle", "total_angle": "angle",
+                        "spacing": "step", "pitch": "step", "angle_step": "step"},
+    "LinearPattern": {"number": "count", "copies": "count", "spacing": "step",
+                      "offset": "step", "delta": "step", "pitch": "step"},
+    "Fillet": {"r": "radius", "corner": "at", "corners": "at", "where": "at"},
+    "Chamfer": {"size": "distance", "d": "distance", "length": "distance", "corner": "at",
+                "corners": "at", "where": "at"},
+}
+
+# synonyms whose arguments mean the canonical entry's arguments in another order:
+# synonym -> {argument name as written -> canonical argument name}.  ``Contains(a, b)`` is
+# ``Inside(b, a)``: positional and keyword arguments are both renamed.
+SWAPPED: dict[str, dict[str, str]] = {
+    "Contains": {"a": "b", "b": "a"},
+}
+
+# one-line docs of synonyms that do not simply mean the canonical entry
+SYNONYM_DOCS: dict[str, str] = {
+    "Contains": "a's bounding box contains b's: Contains(a, b) is Inside(b, a).",
+}
+
+# functions usable in expressions: name -> (min args, max args, doc)
+FUNCTIONS: dict[str, tuple[int, int, str]] = {
+    "sin": (1, 1, "sine of an angle (a bare number is radians)"),
+    "cos": (1, 1, "cosine of an angle (a bare number is radians)"),
+    "tan": (1, 1, "tangent of an angle (a bare number is radians)"),
+    "asin": (1, 1, "arc sine, an angle"), "acos": (1, 1, "arc cosine, an angle"),
+    "atan": (1, 1, "arc tangent, an angle"), "atan2": (2, 2, "atan2(y, x), an angle"),
+    "sqrt": (1, 1, "square root"), "abs": (1, 1, "absolute value"),
+    "min": (1, 64, "smallest value (or of one list)"), "max": (1, 64, "largest value"),
+    "norm": (1, 1, "length of a vector/point (x, y)"), "square": (1, 1, "x * x"),
+    "len": (1, 1, "number of items of a list or string"),
+    "range": (1, 3, "range(stop), range(start, stop), range(start, stop, step)"),
+    "round": (1, 2, "round to a number of decimals"), "floor": (1, 1, "round down"),
+    "ceil": (1, 1, "round up"), "str": (1, 1, "text of a value"),
+    "radians": (1, 1, "a bare number of degrees as an angle"),
+    "degrees": (1, 1, "an angle as a bare number of degrees"),
+    "distance": (2, 2, "distance between two points (a length expression)"),
+}
+
+CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",
+             "PI": "number", "tau": "number"}
+
+KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif",
+            "and", "or", "not", "self", "true", "false"]
+STRUCTURE_KINDS = ["solid", "hole", "drawing", "assembly"]
+
+UNITS_LENGTH = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "inches": 25.4,
+                "ft": 304.8}
+UNITS_ANGLE = {"deg": 3.141592653589793 / 180.0, "rad": 1.0}
+
+ENTRIES: dict[str, Entry] = {n: Entry(n, cat, variants, doc, members)
+                             for n, (cat, variants, doc, members) in _DEFS.items()}
+
+
+def lookup(name: str) -> Entry | None:
+    """The entry for a canonical name or synonym, else None."""
+    return ENTRIES.get(SYNONYMS.get(name, name))
+
+
+def canonical(name: str) -> str:
+    return SYNONYMS.get(name, name)
+
+
+def canonical_args(name: str, args: dict) -> dict:
+    """Bound arguments of a call of ``name`` renamed to the canonical entry's arguments.
+
+    Only synonyms listed in :data:`SWAPPED` rename anything (``Contains(a=X, b=Y)`` gives
+    ``{"a": Y, "b": X}`` for ``Inside``); for every other name ``args`` is returned as is.
+    """
+    ren = SWAPPED.get(name)
+    if not ren:
+        return args
+    return {ren.get(k, k): v for k, v in args.items()}
+
+
+def all_callable_names() -> list[str]:
+    return list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS)
+
+
+def arg_synonyms(entry_name: str) -> dict[str, tuple[str, ...]]:
+    """Argument synonyms of an entry: alias -> candidate canonical names (entry's own first)."""
+    out: dict[str, tuple[str, ...]] = {}
+    for table in (ARG_SYNONYMS.get(entry_name, {}), ARG_SYNONYMS["*"]):
+        for alias, canon in table.items():
+            out.setdefault(alias, canon if isinstance(canon, tuple) else (canon,))
+    return out
+
+
+def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
+                kwnames: list[str]) -> dict[str, str]:
+    """Keyword names as written -> the variant's canonical names (aliases resolved).
+
+    An alias is renamed only when its canonical argument belongs to ``variant`` and is not
+    given otherwise (positionally or by its own name); other names map to themselves.
+    """
+    names = [a.name for a in variant]
+    taken = set(names[:npos]) | {k for k in kwnames if k in names}
+    syn = arg_synonyms(entry.name)
+    out = {}
+    for k in kwnames:
+        if k not in names:
+            for canon in syn.get(k, ()):
+                if canon in names and canon not in taken:
+                    out[k] = canon
+                    taken.add(canon)
+                    break
+        out.setdefault(k, k)
+    return out
+
+
+def accepted_args(entry: Entry) -> list[str]:
+    """Every argument name an entry accepts: canonical ones, then synonyms that fit a form."""
+    canon = list(dict.fromkeys(a.name for v in entry.variants for a in v))
+    syn = [k for k, cs in arg_synonyms(entry.name).items() if any(c in canon for c in cs)]
+    return canon + syn
+
+
+def choose_variant(entry: Entry, npos: int, kwnames: list[str]):
+    """Pick the constructor variant matching ``npos`` positional and ``kwnames`` keyword args
+    (argument synonyms allowed; see :func:`bind_variant` for the renaming).
+
+    Returns (variant, None) or (None, reason).
+    """
+    v, _ren, reason = bind_variant(entry, npos, kwnames)
+    return v, reason
+
+
+_BOUND: dict = {}
+
+
+def bind_variant(entry: Entry, npos: int, kwnames: list[str]):
+    """Like :func:`choose_variant`, also giving the keyword renaming of :func:`rename_args`.
+
+    Returns (variant, {written: canonical}, None) or (None, {}, reason).  The answer depends
+    only on the (fixed) entry, ``npos`` and the keyword names, so it is remembered: the checker
+    and the interpreter ask it for every call (thousands in a 500-structure model).  The
+    returned renaming is shared: read it, do not change it.
+    """
+    key = (entry.name, npos, tuple(kwnames))
+    got = _BOUND.get(key)
+    if got is None or got[0] is not entry:
+        got = (entry, _bind_variant(entry, npos, kwnames))
+        _BOUND[key] = got
+    return got[1]
+
+
+def _bind_variant(entry: Entry, npos: int, kwnames: list[str]):
+    best, best_reason = None, None
+    for v in entry.variants:
+        names = [a.name for a in v]
+        ren = rename_args(entry, v, npos, kwnames)
+        kwnames_c = [ren[k] for k in kwnames]
+        npos_max = sum(not a.kw_only for a in v)
+        if npos > npos_max:
+            best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
+            continue
+        bound = set(names[:npos])
+        bad = [k for k in kwnames_c if k not in names]
+        if bad:
+            best_reason = best_reason or f"has no argument `{bad[0]}`"
+            continue
+        if any(k in bound for k in kwnames_c) or len(set(kwnames_c)) < len(kwnames_c):
+            dup = next((k for k in kwnames_c if k in bound or kwnames_c.count(k) > 1))
+            best_reason = f"argument `{dup}` given twice"
+            continue
+        given = bound | set(kwnames_c)
+        missing = [a.name for a in v if a.required and a.name not in given]
+        if missing:
+            if best_reason is None or best_reason.startswith("has no"):
+                best_reason = f"missing argument `{missing[0]}`"
+            continue
+        return v, ren, None
+    return best, {}, best_reason

@@ -1,0 +1,55 @@
+"""``aidl serve FILE``: a live preview in the browser with a customizer (docs/serve.md).
+
+* :mod:`.session`: the warm compile of one file (no HTTP): reload after a save, re-solve for
+  new param values with the warm solver, the view as JSON.
+* :mod:`.app`: the Starlette app (page, state, downloads, WebSocket, file watching with
+  ``watchfiles``) and the local-only guard.
+* ``static/``: the page (HTML, JS, CSS), shipped in the package; no CDN, works offline.
+
+Needs the ``serve`` extra: ``pip install -e ".[serve]"`` (Starlette, uvicorn, websockets,
+watchfiles).
+"""
+from __future__ import annotations
+
+import socket
+import sys
+from pathlib import Path
+
+HOST = "127.0.0.1"      # never another interface: the preview is for this machine only
+
+
+def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
+    """Serve the live preview of ``path`` on http://127.0.0.1:PORT/ until interrupted.
+    ``port=0`` picks a free port.  Returns the exit status (2: the extra is not installed or
+    the port is taken)."""
+    # one BLAS thread: set by the `aidl` command (aidl_lang/cli/__init__.py)
+    try:
+        import uvicorn
+        from .app import create_app
+    except ImportError as e:
+        print(f"aidl: error: `aidl serve` needs the serve extra ({e.name} is missing): "
+              "pip install 'aidl-lang[serve]'", file=sys.stderr)
+        return 2
+    if not Path(path).is_file():
+        print(f"aidl: error: cannot read `{path}`: no such file", file=sys.stderr)
+        return 2
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((HOST, port))
+    except OSError as e:
+        print(f"aidl: error: cannot listen on {HOST}:{port}: {e.strerror or e}; "
+              "choose another with --port", file=sys.stderr)
+        return 2
+    sock.listen(128)            # connections wait in the backlog until the first compile is done
+    port = sock.getsockname()[1]
+    app = create_app(path, port)
+    config = uvicorn.Config(app, log_level="warning", ws="websockets-sansio",
+                            timeout_graceful_shutdown=1, lifespan="on")
+    server = uvicorn.Server(config)
+    print(f"aidl serve: http://{HOST}:{port}/  (watching {path}; Ctrl-C stops)", flush=True)
+    server.run(sockets=[sock])
+    return 0
+
+
+__all__ = ["serve", "HOST"]

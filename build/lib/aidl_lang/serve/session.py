@@ -1,0 +1,372 @@
+"""One live-preview session: a watched ``.aidl`` file compiled in a warm process.
+
+No HTTP here (that is :mod:`.app`); a :class:`Session` turns the file and the customizer's values
+into a *view*: a JSON-ready dict with the SVG of the last good picture, the diagnostics of the
+last compile, the params (for the customizer) and the degrees-of-freedom summary.
+
+Two ways in:
+
+* :meth:`Session.load` re-reads the file (after a save): parse, check, interpret, solve, render.
+  A broken edit keeps the last good picture and reports its errors beside it.
+* :meth:`Session.set_params` applies customizer values, as ``--set NAME=VALUE`` texts.  The
+  checked AST is reused (no re-parse); the program is interpreted again with the new values
+  (params feed starting values, held dimensions and constants, so only the interpreter knows
+  what a param moves), and when the new model has the same rows as the warm solver's
+  (compared expression by expression; held values and starting positions may differ, constants
+  baked into rows may not), the warm :class:`~aidl_lang.solver.Solver` is reused: every
+  changed parameter is written with :meth:`~aidl_lang.solver.Solver.set_value` and Newton is
+  re-run on the already-compiled tapes (paper, appendix "Solver Details"; the solver's
+  *edit a held value, re-solve* path).  The start point is the new model's own, so the picture
+  is exactly what ``aidl render FILE --set ...`` draws.  Otherwise the model is solved cold.
+"""
+from __future__ import annotations
+
+import math
+import time
+from ..records import dataclass, field
+from pathlib import Path
+
+from .. import ast as A
+from ..diagnostics import Diagnostic, DiagnosticSink
+from ..geometry.values import ANG, LEN, NUM, Q
+from ..interp import Interpreter
+from ..output import to_svg
+from ..parser import parse
+from ..output.checks import check_drawing
+from ..pipeline import after_solve, report_failure
+from ..solver import Solver, run
+from ..solver.system import build_rows
+from ..typecheck import check
+
+MAX_SOURCE_BYTES = 2_000_000       # a bigger file is refused (E0004), not compiled
+
+
+@dataclass
+class Param:
+    """A ``param`` as the customizer shows it.  ``kind``: length (mm), angle (deg), number,
+    bool or string; ``value``/``default``/``min``/``max``/``step`` in those display units;
+    ``declared``: the range comes from the file (``min=``/``max=``/``step=``), else a default
+    span chosen around the value."""
+
+    name: str
+    kind: str
+    value: object
+    default: object
+    unit: str = ""
+    min: float | None = None
+    max: float | None = None
+    step: float | None = None
+    declared: bool = False
+    line: int = 0
+
+    def to_json(self) -> dict:
+        return dict(self.__dict__)
+
+
+@dataclass
+class Result:
+    """One compile: diagnostics, and when it succeeded the SVG and the solver."""
+
+    sink: DiagnosticSink
+    ok: bool = False
+    svg: str | None = None
+    model: object = None
+    solver: Solver | None = None
+    fctx: object = None
+    warm: bool = False
+    drawing: object = None
+    title: str = ""
+    timings: dict = field(default_factory=dict)
+
+
+class Session:
+    """The state of ``aidl serve FILE``.  Not thread-safe: the server calls it from one worker
+    at a time."""
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self.name = str(path)
+        self.source = ""
+        self.sources: dict[str, str] = {}
+        self.program: A.Program | None = None
+        self.values: dict[str, str] = {}          # customizer values, as --set texts
+        self.params: list[Param] = []
+        self.svg: str | None = None               # the last good picture
+        self.svg_values: dict[str, str] = {}      # the values it was drawn with
+        self.diagnostics: list[dict] = []
+        self.ok = False
+        self.dof: list[dict] = []
+        self.solver: Solver | None = None         # warm: tapes compiled for the last model
+        self._row_keys: list[str] | None = None
+        self.version = 0                          # bumps on every load / set_params
+        self._dof_pending: Solver | None = None
+        self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
+        self.last: dict = {}                      # timings and warm/cold of the last compile
+
+    # ------------------------------------------------------------------ public
+    def load(self) -> dict:
+        """Re-read and recompile the file; keep customizer values whose param still exists
+        and whose default did not change."""
+        t0 = time.perf_counter()
+        sink = DiagnosticSink()
+        try:
+            raw = self.path.read_bytes()
+            if len(raw) > MAX_SOURCE_BYTES:
+                raise OSError(f"the file is larger than {MAX_SOURCE_BYTES} bytes")
+            src = raw.decode("utf-8")
+        except (OSError, UnicodeDecodeError) as e:
+            sink.add(Diagnostic("E0004", f"cannot read `{self.name}`: "
+                                f"{getattr(e, 'strerror', None) or e}", None,
+                                hint="check the file name and that it is UTF-8 text"))
+            self.program = None
+            self.solver = self._row_keys = None
+            return self._publish(Result(sink), t0)
+        self.source = src
+        program = parse(src, self.name, sink)
+        if not sink.has_errors:
+            check(program, sink)
+        self.sources = dict(sink.sources)
+        if sink.has_errors:
+            self.program = None
+            return self._publish(Result(sink), t0)
+        self.program = program
+        self.solver = self._row_keys = None             # a new program: nothing warm to reuse
+        old_defaults = {p.name: p.default for p in self.params}
+        base = self._compile({})
+        params = self._params(base.fctx, {}) if base.fctx is not None else []
+        defaults = {p.name: p.default for p in params}
+        self.values = {k: v for k, v in self.values.items()
+                       if k in defaults and old_defaults.get(k) == defaults[k]}
+        res = base
+        if self.values and base.ok:
+            res = self._compile(self.values)
+            if not res.ok:                              # the kept values no longer fit: drop them
+                self.values, res = {}, base
+        self.params = self._params(res.fctx, self.values) if res.fctx is not None else params
+        self._dof_pending = res.solver if res.ok else None
+        return self._publish(res, t0)
+
+    def update_dof(self) -> dict | None:
+        """Compute the degrees-of-freedom summary of the last load (an SVD per structure, so
+        it runs after the picture is out); the view, or None when there is nothing new."""
+        solver, self._dof_pending = self._dof_pending, None
+        if solver is None:
+            return None
+        self._dof(solver)
+        return self.view()
+
+    def set_params(self, values: dict[str, str]) -> dict:
+        """Apply customizer values (``{name: "172.5mm"}``, the ``--set`` syntax).  Unknown
+        names are reported (E0113); a failed compile keeps the last good picture."""
+        t0 = time.perf_counter()
+        if self.program is None:
+            return self.view()
+        self.values = {str(k): str(v) for k, v in values.items()}
+        res = self._compile(self.values, shape_checks=False)
+        if res.fctx is not None:
+            self.params = self._params(res.fctx, self.values)
+        view = self._publish(res, t0)
+        self._checks_pending = (self.version, res.drawing) if res.drawing is not None else None
+        return view
+
+    def update_checks(self) -> dict | None:
+        """The geometry checks (W0402, W0501-W0507: warnings) of the picture the last
+        :meth:`set_params` published, run after that picture was sent, so a slider move shows
+        its picture without waiting for them: the view with their diagnostics added (same
+        version), or ``None`` when they found nothing or a newer compile came first."""
+        pending, self._checks_pending = self._checks_pending, None
+        if pending is None or pending[0] != self.version:
+            return None
+        sink = DiagnosticSink()
+        sink.sources.update(self.sources)
+        check_drawing(pending[1], sink)
+        if not sink.items:
+            return None
+        self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
+        return self.view()
+
+    def drawing(self, values: dict[str, str]):
+        """A fresh, cold compile with ``values`` for downloads: ``(drawing, title)`` (a
+        :class:`~aidl_lang.output.Drawing`), or ``(None, diagnostics)`` when it fails."""
+        if self.program is None:
+            return None, self.diagnostics
+        res = self._compile(values, keep_warm=False, drawing=True)
+        if not res.ok:
+            return None, [_diag_json(d, self.sources) for d in res.sink.items]
+        return res.drawing, res.title
+
+    def view(self) -> dict:
+        """The page's state as JSON-ready data."""
+        return {"file": self.name, "version": self.version, "ok": self.ok, "svg": self.svg,
+                "values": self.svg_values, "diagnostics": self.diagnostics,
+                "params": [p.to_json() for p in self.params], "dof": self.dof,
+                "source": self.source, "timing": self.last}
+
+    # ------------------------------------------------------------------ compile
+    def _compile(self, values: dict[str, str], keep_warm: bool = True,
+                 drawing: bool = False, shape_checks: bool = True) -> Result:
+        t = {}
+        t0 = time.perf_counter()
+        sink = DiagnosticSink()
+        sink.sources.update(self.sources)
+        interp = Interpreter(sink, values)
+        model = interp.run(self.program)
+        res = Result(sink, fctx=interp.file)
+        t["interpret_ms"] = _ms(t0)
+        if sink.has_errors:
+            res.timings = t
+            return res
+        t1 = time.perf_counter()
+        solver, warm = self._solver_for(model) if keep_warm else (Solver(model), False)
+        solver.deadline = interp.deadline                # the compile's one time budget
+        solved = run(solver)
+        if solver.model is not model:                   # warm: the solver writes its own model
+            model.x = list(solver.model.x)
+        t["solve_ms"] = _ms(t1)
+        if not solved.converged:
+            report_failure(sink, solved)
+            if warm:                                    # do not keep a solver that failed
+                self.solver = self._row_keys = None
+            res.timings = t
+            return res
+        res.solver, res.warm, res.model = solver, warm, model
+        t2 = time.perf_counter()
+        d = after_solve(sink, model, shape_checks=shape_checks)   # as `aidl check` does
+        t["render_ms"] = _ms(t2)
+        if d is None:
+            res.timings = t
+            return res
+        res.drawing, res.title = d, model.root.name
+        if drawing:
+            res.ok = not sink.has_errors
+            return res
+        t3 = time.perf_counter()
+        res.svg = to_svg(d, title=model.root.name)
+        t["svg_ms"] = _ms(t3)
+        res.ok = not sink.has_errors
+        res.timings = t
+        return res
+
+    def _solver_for(self, model) -> tuple[Solver, bool]:
+        """The warm solver with the new model's values written in, when its rows are the new
+        model's rows; else a new solver (which becomes the warm one)."""
+        x = model.xs()
+        old = self.solver
+        if old is not None and old.n_model == len(x) and list(old.model.free) == list(model.free):
+            rows = build_rows(model, x)
+            keys = [repr(e) for e in rows.exprs]
+            if keys == self._row_keys and rows.n_params == old.rows.n_params \
+                    and rows.kind == old.rows.kind and rows.slack == old.rows.slack:
+                for i in range(len(x)):
+                    if old.x[i] != x[i]:
+                        old.set_value(i, x[i])
+                return old, True
+        s = Solver(model)
+        self.solver, self._row_keys = s, [repr(e) for e in s.rows.exprs]
+        return s, False
+
+    def _dof(self, solver: Solver | None) -> None:
+        self.dof = []
+        if solver is None:
+            return
+        from ..solver.diagnose import degrees_of_freedom
+        try:
+            self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns, "dof": d.dof,
+                         "floating": d.floating[:12]} for d in degrees_of_freedom(solver)]
+        except Exception:          # the summary is an extra; never lose the picture over it
+            self.dof = []
+
+    def _publish(self, res: Result, t0: float) -> dict:
+        self.version += 1
+        self.diagnostics = [_diag_json(d, self.sources) for d in res.sink.items]
+        self.ok = res.ok
+        if res.ok:
+            self.svg = res.svg
+            self.svg_values = dict(self.values)
+        self.last = dict(res.timings, total_ms=_ms(t0), warm=res.warm)
+        return self.view()
+
+    # ------------------------------------------------------------------ params
+    def _params(self, fctx, values: dict[str, str]) -> list[Param]:
+        decls = {st.name: st for st in self.program.stmts if isinstance(st, A.ParamDecl)}
+        ranges = getattr(fctx, "param_ranges", {})
+        old = {p.name: p for p in self.params}
+        out = []
+        for name, st in decls.items():
+            v = fctx.params.get(name)
+            prev = old.get(name) if name in values else None
+            p = _param(name, v, ranges.get(name), st.span.line if st.span else 0,
+                       prev.default if prev is not None else None)
+            if p is not None:
+                out.append(p)
+        return out
+
+
+def _param(name: str, v, rng: dict | None, line: int, default=None) -> Param | None:
+    """The customizer's view of a param's value ``v``; ``default``: the file's value when
+    ``v`` is a customizer value (the default span is chosen around the file's value, so the
+    slider does not rescale while it moves)."""
+    if isinstance(v, bool):
+        return Param(name, "bool", v, v if default is None else default, line=line)
+    if isinstance(v, str):
+        return Param(name, "string", v, v if default is None else default, line=line)
+    if not isinstance(v, Q) or v.const() is None:
+        return None
+    c = v.const()
+    kind, unit, k = {LEN: ("length", "mm", 1.0), ANG: ("angle", "deg", 180 / math.pi),
+                     NUM: ("number", "", 1.0)}.get(v.dim, (None, "", 1.0))
+    if kind is None:
+        return None
+    val = round(c * k, 9)
+    dflt = val if not isinstance(default, (int, float)) or isinstance(default, bool) else default
+    p = Param(name, kind, val, dflt, unit, line=line)
+    lo = rng.get("min") if rng else None
+    hi = rng.get("max") if rng else None
+    step = rng.get("step") if rng else None
+    p.declared = rng is not None
+    p.min, p.max = (lo * k if lo is not None else None), (hi * k if hi is not None else None)
+    p.step = step * k if step is not None else None
+    dlo, dhi, dstep = default_span(kind, dflt)
+    if p.min is None:
+        p.min = min(dlo, dflt) if p.max is None else min(dlo, dflt, p.max)
+    if p.max is None:
+        p.max = max(dhi, dflt, p.min)
+    if p.step is None:
+        p.step = dstep if kind != "number" or float(dflt).is_integer() else _nice((p.max - p.min) / 200)
+    for a in ("min", "max", "step"):
+        setattr(p, a, round(getattr(p, a), 9))
+    return p
+
+
+def default_span(kind: str, v: float) -> tuple[float, float, float]:
+    """Slider span for a param without a declared range: a quarter to twice a length or number
+    (an integer keeps step 1: it may count things), a full turn for an angle."""
+    if kind == "angle":
+        return -180.0, 360.0 if v > 180 else 180.0, 1.0
+    if v == 0:
+        return (-100.0, 100.0, 0.5) if kind == "length" else (0.0, 10.0, 1.0)
+    a, b = sorted((v / 4, v * 2)) if v > 0 else sorted((v * 2, v / 4))
+    if kind == "number" and float(v).is_integer():
+        return math.floor(min(a, 0 if v > 0 else a)), math.ceil(max(b, 10 if v > 0 else b)), 1.0
+    step = _nice((b - a) / 200)
+    return math.floor(a / step) * step, math.ceil(b / step) * step, step
+
+
+def _nice(x: float) -> float:
+    """The 1-2-5 step not above ``x``."""
+    if x <= 0:
+        return 1.0
+    e = math.floor(math.log10(x))
+    for m in (5, 2, 1):
+        if m * 10 ** e <= x:
+            return m * 10 ** e
+    return 10 ** e
+
+
+def _diag_json(d: Diagnostic, sources: dict) -> dict:
+    j = d.to_json(sources)
+    return {k: j[k] for k in ("code", "severity", "message", "span", "hint", "rendered")}
+
+
+def _ms(t0: float) -> float:
+    return round((time.perf_counter() - t0) * 1000, 2)

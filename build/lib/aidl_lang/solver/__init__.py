@@ -1,0 +1,117 @@
+"""Solve a model's constraints: the paper's hierarchical solver (appendix "Solver Details").
+
+Pipeline of this package, one module per step:
+
+* :mod:`.system`: the model's residual rows, with deferred bounding boxes expanded and
+  inequalities written with slacks (non-inversion included);
+* :mod:`.tape`: rows compiled into a vectorised tape (values and reverse-mode Jacobian);
+* :mod:`.newton`: damped minimum-norm Newton steps on a tape;
+* :mod:`.hierarchy`: the post-order recursive solve with iterative deepening and min/max
+  branch iteration;
+* :mod:`.diagnose`: after a failure, the smallest conflicting constraint sets (rank-revealing
+  QR of the Jacobian); on demand, degrees of freedom per structure and redundant constraints.
+
+:func:`solve` is the entry point; a failure lists the constraints still unsatisfied and the
+conflict sets found, with their structure and source span.
+"""
+from __future__ import annotations
+
+from ..records import dataclass, field
+
+import numpy as np
+
+from ..geometry.model import Constraint, Model
+from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
+from .system import LINK, SIGN, build_rows, user_residuals
+from .tape import Tape
+
+
+@dataclass
+class SolveResult:
+    """Outcome of :func:`solve`.
+
+    ``unsatisfied``: ``[(Constraint, residual)]`` worst first; ``conflicts``: list of
+    :class:`~.diagnose.Conflict`; ``budget_exceeded``: the iteration budget ran out.
+    """
+
+    converged: bool
+    iterations: int
+    rounds: int
+    unsatisfied: list = field(default_factory=list)
+    max_residual: float = 0.0
+    n_unknowns: int = 0
+    n_equations: int = 0
+    conflicts: list = field(default_factory=list)
+    budget_exceeded: bool = False
+    out_of_time: bool = False
+    attempts: int = 0
+    solver: Solver | None = None
+
+
+def solve(model: Model, flat: bool = False, diagnose: bool = True,
+          deadline: float | None = None) -> SolveResult:
+    """Solve ``model`` in place (``model.x`` is updated even on failure, for diagnostics).
+
+    ``flat=True`` solves everything at once instead of hierarchically (for benchmarks);
+    ``deadline`` (a ``time.monotonic()`` value) stops the solve and the conflict search when
+    passed (``SolveResult.out_of_time``)."""
+    solver = Solver(model)
+    solver.deadline = deadline
+    return run(solver, flat=flat, diagnose=diagnose)
+
+
+def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResult:
+    """(Re-)run a compiled :class:`Solver` from its current point and report."""
+    model = solver.model
+    solver.failed.clear()
+    solver.trace.__init__()
+    ok = solver.solve_flat() if flat else solver.solve_hierarchical()
+    tr = solver.trace
+    model.x = solver.x[:solver.n_model].tolist()
+    res = SolveResult(ok and not tr.budget_exceeded, tr.iterations,
+                      max((a.rounds for a in tr.attempts), default=0),
+                      n_unknowns=int(solver.free.sum()), n_equations=len(solver.rows.exprs),
+                      budget_exceeded=tr.budget_exceeded, attempts=len(tr.attempts),
+                      solver=solver, out_of_time=tr.out_of_time)
+    if not res.converged:
+        per: dict[int, list] = {}
+        worst = 0.0
+        for f in tr.failures:
+            vals = _row_residuals(solver, f.attempt.rows, solver.x)
+            for r, v in zip(f.attempt.rows, vals):
+                worst = max(worst, v)
+                if v > CHECK_TOL:
+                    c = solver.rows.constraint[r]
+                    e = per.setdefault(id(c), [c, 0.0])
+                    e[1] = max(e[1], v)
+        res.unsatisfied = sorted(((c, v) for c, v in per.values()), key=lambda cv: -cv[1])
+        res.max_residual = worst
+        if diagnose and tr.failures:
+            from .diagnose import conflicts
+            for f in tr.failures:
+                res.conflicts += conflicts(solver, f.attempt.rows, f.attempt.cols, solver.x)
+    return res
+
+
+def _row_residuals(solver: Solver, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
+    if not len(rows):
+        return np.zeros(0)
+    return user_residuals(solver, rows, solver.tape(rows).evaluate(x), x)
+
+
+def constraint_residuals(model: Model) -> list[tuple[Constraint, float]]:
+    """Largest residual of each constraint at the model's current values (true min/max)."""
+    x = model.xs()
+    rows = build_rows(model, x)
+    xe = np.concatenate([x, np.zeros(rows.n_params - len(x))])
+    F = Tape(rows.exprs, rows.n_params).evaluate(xe) if rows.exprs else np.zeros(0)
+    out: dict[int, list] = {}
+    for r, c in enumerate(rows.constraint):
+        k = rows.kind[r]
+        v = max(0.0, -F[r]) if k == LINK else 0.0 if k == SIGN else abs(F[r])
+        e = out.setdefault(id(c), [c, 0.0])
+        e[1] = max(e[1], v)
+    return [(c, v) for c, v in out.values()]
+
+
+__all__ = ["SolveResult", "Solver", "solve", "run", "constraint_residuals", "ITER_BUDGET"]

@@ -1,0 +1,418 @@
+"""Why a solve failed, and what is still free: conflict sets, redundancy, degrees of freedom.
+
+All three read the Jacobian ``J`` (rows: residuals, columns: unknowns) at a point:
+
+* **Conflicts.**  Rows are taken in a fixed order (constructor-held dimensions first, then the
+  user's constraints in source order) and added to a basis one by one (a rank-revealing
+  Gram-Schmidt, the greedy form of a column-pivoted QR of ``J^T``).  A row that adds no rank is a
+  combination of earlier rows; the least-squares coefficients of that combination name the
+  rows it depends on.  If any row of that dependent set is unsatisfied, the set is a *conflict*
+  (an over-constrained, inconsistent system): those constraints cannot all hold, and no smaller
+  subset of the basis explains the dependency.  If all are satisfied, the later row is merely
+  *redundant* (consistent, a warning).
+* **Degrees of freedom.**  For each structure, its own unknowns plus its children's frames,
+  against its own constraints: ``dof = unknowns - rank(J)``; a parameter whose column has a
+  component in the null space of ``J`` is not determined, and its geometry (or child) *floats*.
+
+Dense linear algebra: used for one structure's system, or for the connected component of a
+failed system that holds the unsatisfied rows (capped at :data:`MAX_DENSE` rows).  SciPy (sparse
+matrices, connected components) is imported only for systems larger than
+:data:`DENSE_CELLS`: the freedom count on ``aidl check``'s ok line stays in numpy, so a cold
+check does not pay SciPy's import.
+"""
+from __future__ import annotations
+
+import time
+from ..records import dataclass, field
+
+import numpy as np
+
+from .arrays import unique
+
+from ..geometry.model import Constraint
+from .system import user_residuals
+
+DEP_TOL = 1e-7
+MAX_DENSE = 5000
+DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranked densely
+MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
+
+
+@dataclass
+class Conflict:
+    """Constraints that cannot all hold together: ``[(Constraint, residual)]``."""
+
+    items: list = field(default_factory=list)
+
+    @property
+    def constraints(self) -> list[Constraint]:
+        return [c for c, _ in self.items]
+
+
+@dataclass
+class Redundant:
+    """``constraint`` is implied by ``by`` (consistent: a warning, not an error)."""
+
+    constraint: Constraint
+    by: list
+    partly: bool = False         # only some of the constraint's equations are implied
+
+
+def _order_key(c: Constraint, r: int):
+    sp_ = c.span
+    pos = (sp_.line, sp_.col) if sp_ is not None else (0, 0)
+    return (0 if c.implicit else 1, pos, r)
+
+
+def dependencies(J: np.ndarray, order: list[int]):
+    """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
+
+    Yields ``(row, support, coef)`` for each row that is a combination of earlier independent
+    rows, ``support`` being those rows (their coefficient is not negligible) and ``coef`` their
+    coefficients.
+
+    Classical Gram-Schmidt with re-orthogonalisation, vectorised: the orthonormal basis ``Q``
+    and the lower-triangular ``L`` with ``J[indep] = L Q`` grow one row at a time, so a
+    dependent row's coefficients come from one triangular solve ``L^T c = Q v`` instead of a
+    least-squares problem; a row's projection only touches the basis vectors that overlap it.
+    Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
+    Jacobian (benchmarks/bench_diagnose.py)."""
+    from scipy.linalg import solve_triangular
+    m, n = J.shape
+    cap = min(m, n)
+    Q = np.zeros((cap, n))
+    L = np.zeros((cap, cap))
+    indep: list[int] = []
+    k = 0
+    for r in order:
+        v = np.asarray(J[r], dtype=float)
+        nv = float(np.linalg.norm(v))
+        if nv == 0.0 or not np.isfinite(nv):
+            continue
+        a = np.zeros(k)
+        w = v.copy()
+        for _ in range(2):              # twice for stability
+            if not k:
+                break
+            nz = np.flatnonzero(w)
+            if len(nz) * 4 < n:
+                d = Q[:k, nz] @ w[nz]
+            else:
+                d = Q[:k] @ w
+            hit = np.flatnonzero(d)
+            if len(hit):
+                w -= Q[hit].T @ d[hit]
+                a[hit] += d[hit]
+        nw = float(np.linalg.norm(w))
+        if nw > DEP_TOL * nv and k < cap:
+            Q[k] = w / nw
+            L[k, :k] = a
+            L[k, k] = nw
+            indep.append(r)
+            k += 1
+            continue
+        if not k:
+            continue
+        c = solve_triangular(L[:k, :k], a, trans="T", lower=True, check_finite=False)
+        big = np.abs(c) > 1e-6 * max(1.0, float(np.max(np.abs(c))))
+        yield r, [indep[i] for i in np.flatnonzero(big)], c[big]
+
+
+def _components(J) -> np.ndarray:
+    """A component label per row of the sparse ``J``: rows sharing an unknown are connected."""
+    import scipy.sparse as sp
+    from scipy.sparse.csgraph import connected_components
+    m = J.shape[0]
+    B = sp.bmat([[None, J], [J.T, None]]).tocsr()
+    _, lab = connected_components(B, directed=False)
+    return lab[:m]
+
+
+def _dense_components(J: np.ndarray) -> np.ndarray:
+    """The same labels as :func:`_components` for a dense ``J`` (union-find over its nonzeros,
+    no SciPy)."""
+    m, n = J.shape
+    parent = list(range(m + n))
+
+    def find(a: int) -> int:
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    for r, c in zip(*np.nonzero(J)):
+        a, b = find(int(r)), find(m + int(c))
+        if a != b:
+            parent[a] = b
+    return np.array([find(i) for i in range(m)], dtype=np.int64)
+
+
+def _dense_block_rank(J: np.ndarray) -> int:
+    """:func:`_block_rank` for a dense ``J`` (one SVD per block of rows sharing unknowns).
+
+    A block of one row (most blocks of a sketch: a held dimension, a coordinate) is ranked
+    without an SVD: its one singular value is the row's 2-norm, and the rank is 1 when that
+    exceeds ``1e-9 max(1, norm)``.  Only a finite norm at least twice or at most half the
+    threshold is decided so (LAPACK's value and NumPy's differ by a few ulps at most); a
+    row near it, or not finite, takes the SVD as before."""
+    if J.shape[0] == 0:
+        return 0
+    lab = _dense_components(J)
+    single = np.flatnonzero(np.bincount(lab)[lab] == 1)
+    rank = 0
+    if len(single):
+        R = J[single]
+        norms = np.sqrt((R * R).sum(axis=1))
+        sure = np.isfinite(norms) & ((norms >= 2e-9) | (norms <= 0.5e-9))
+        rank += int(np.count_nonzero(sure & (norms >= 2e-9)))
+        lab[single[sure]] = -1                          # counted: no SVD for these
+    for k in unique(lab):
+        if k < 0:
+            continue
+        sub = J[lab == k]
+        sub = sub[:, np.any(sub != 0, axis=0)]
+        if sub.shape[1] == 0:
+            continue
+        sv = np.linalg.svd(sub, compute_uv=False)
+        rank += int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
+    return rank
+
+
+def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
+              tol: float = 1e-6) -> list[Conflict]:
+    """The conflicting constraint sets of the system ``rows`` x ``cols`` at ``x``."""
+    t = solver.tape(rows)
+    F = t.evaluate(x)
+    user = user_residuals(solver, rows, F, x)
+    bad = np.abs(F) > tol
+    if not bad.any():
+        return []
+    J = t.jacobian(x, cols)
+    lab = _components(J)
+    local = np.flatnonzero(np.isin(lab, unique(lab[bad])))
+    if len(local) > MAX_DENSE:
+        return []
+    Jd = J[local].toarray()
+    cons = [solver.rows.constraint[r] for r in rows[local]]
+    order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
+    out: list[Conflict] = []
+    seen: set = set()
+    Fl = F[local]
+    deadline = getattr(solver, "deadline", None)
+    for r, support, coef in dependencies(Jd, order):
+        if len(out) >= MAX_CONFLICTS or (deadline is not None and time.monotonic() > deadline):
+            break                        # the best sets found so far
+        members = [r] + support
+        # a dependency J_r = sum c_i J_i is consistent when the residuals obey it too
+        # (F_r = sum c_i F_i: the error is merely spread over the set); otherwise the rows
+        # demand different things: a conflict
+        gap = abs(Fl[r] - float(coef @ Fl[support])) if len(support) else abs(Fl[r])
+        if gap <= tol:
+            continue
+        per: dict[int, list] = {}
+        for i in members:
+            c = cons[i]
+            e = per.setdefault(id(c), [c, 0.0])
+            e[1] = max(e[1], float(user[local[i]]))
+        key = frozenset(per)
+        if key in seen or len(per) < 2:
+            continue
+        seen.add(key)
+        items = sorted(per.values(), key=lambda cv: _order_key(cv[0], 0))
+        out.append(Conflict([(c, v) for c, v in items]))
+    # the smallest sets first
+    out.sort(key=lambda k: len(k.items))
+    return out
+
+
+@dataclass
+class StructureDof:
+    """Remaining freedom of one structure's own sketch (its unknowns and children's frames)."""
+
+    structure: object
+    unknowns: int
+    rank: int
+    floating: list = field(default_factory=list)     # labels of undetermined entities
+
+    @property
+    def dof(self) -> int:
+        return self.unknowns - self.rank
+
+
+def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
+    """Per-structure degrees of freedom and floating entities, at the solver's current point
+    (call after solving).  ``floating=False`` counts only (singular values, no null space:
+    what the summary line of ``aidl check`` needs).
+
+    For the count of a model whose whole Jacobian has at most :data:`DENSE_CELLS` cells, that
+    Jacobian is formed once (:attr:`~.hierarchy.Solver.whole`, every row against every
+    structure's columns) and each structure's block is cut out of it: the same entries, bit
+    for bit, as the structure's own tape gives (each entry sums the same terms in the same
+    order), without compiling or evaluating a tape per structure."""
+    model = solver.model
+    x = solver.x
+    out = []
+    label_of = {}
+    if floating:
+        for g in model.all_geometry():
+            for p in g.points.values():
+                label_of[p.ix] = label_of[p.iy] = g.label
+            for s in g.scalars.values():
+                label_of[s.index] = g.label
+    systems = []                       # (structure, params, rows, cols)
+    for s in model.structures:
+        params = list(solver.own.get(id(s), ()))
+        for c in s.children.values():
+            params += [i for i in solver.frame.get(id(c), ())]
+            if floating:
+                for i in solver.frame.get(id(c), ()):
+                    label_of[i] = f"{c.path} (position)"
+        rows = solver.rows_of([s])
+        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
+        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        systems.append((s, params, rows, cols))
+    whole = None
+    if not floating:
+        whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
+    for s, params, rows, cols in systems:
+        n_unknowns = len(params)
+        if not len(cols):
+            out.append(StructureDof(s, 0, 0))
+            continue
+        if not len(rows):
+            free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
+            out.append(StructureDof(s, n_unknowns, 0, free))
+            continue
+        if not floating:
+            if len(rows) * len(cols) <= DENSE_CELLS:
+                if whole is not None:
+                    W, wcols = whole
+                    J = W[rows][:, np.searchsorted(wcols, cols)]
+                else:
+                    J = solver.tape(rows).jacobian(x, cols, dense=True)
+                rank = _dense_block_rank(J)
+            else:
+                rank = _block_rank(solver.tape(rows).jacobian(x, cols))
+            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
+            continue
+        t = solver.tape(rows)
+        J = t.jacobian(x, cols).toarray()
+        if J.shape[0] > MAX_DENSE or J.shape[1] > MAX_DENSE:
+            out.append(StructureDof(s, n_unknowns, -1))
+            continue
+        _, sv, Vt = np.linalg.svd(J, full_matrices=True)
+        tolr = 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)
+        rank = int(np.sum(sv > tolr))
+        # slack columns each come with a LINK row of full rank: they neither add nor remove
+        n_slack = len(cols) - n_unknowns
+        free = []
+        if len(cols) > rank:
+            null = Vt[rank:]
+            moving = np.linalg.norm(null, axis=0) > 1e-6
+            pos = {int(c): k for k, c in enumerate(cols)}
+            free = sorted({label_of.get(i, model.param_label[i])
+                           for i in params if moving[pos[i]]})
+        out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+    return out
+
+
+def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
+    """``(J, cols)``: the dense Jacobian of every row of the model against the union ``cols``
+    (increasing) of ``col_sets``, or None when it would have more than :data:`DENSE_CELLS`
+    cells (each structure then takes its own tape)."""
+    if not col_sets:
+        return None
+    whole = solver.whole
+    cols = unique(np.concatenate(col_sets))
+    if whole.n_rows * len(cols) > DENSE_CELLS:
+        return None
+    return whole.jacobian(x, cols, dense=True), cols
+
+
+def _block_rank(J) -> int:
+    """Numerical rank of a sparse Jacobian, block by block (rows that share no unknown are
+    independent), so a large sketch of small independent pieces needs only small SVDs;
+    -1 if one block is too large for a dense SVD."""
+    import scipy.sparse as sp
+    J = sp.csr_matrix(J)
+    if J.shape[0] == 0:
+        return 0
+    lab = _components(J)
+    rank = 0
+    for k in unique(lab):
+        r = np.flatnonzero(lab == k)
+        sub = J[r]
+        c = unique(sub.indices)
+        if len(r) > MAX_DENSE or len(c) > MAX_DENSE:
+            return -1
+        sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
+        if len(sv):
+            rank += int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
+    return rank
+
+
+def freedom_text(dofs: list[StructureDof]) -> str:
+    """``fully constrained`` or ``N degrees of freedom left, see --dof`` for a whole model
+    (structures too large for the dense rank count are reported as unknown)."""
+    if any(d.rank < 0 for d in dofs):
+        return "degrees of freedom not counted (model too large), see --dof"
+    n = sum(max(0, d.dof) for d in dofs)
+    if n == 0:
+        return "fully constrained"
+    return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
+
+
+def redundancies(solver) -> list[Redundant]:
+    """User constraints implied by others (consistent), over the whole model's unknowns.
+
+    The flat system is split into connected components; each (up to :data:`MAX_DENSE` rows)
+    gets the greedy rank-revealing pass.  Only rows whose residuals also obey the dependency
+    count (otherwise it is a conflict, reported by the solve)."""
+    rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
+    rows = rows[solver.kind[rows] == 0]
+    if not len(rows):
+        return []
+    cols = np.flatnonzero(solver.free)
+    t = solver.tape(rows)
+    x = solver.x
+    J = t.jacobian(x, cols)
+    lab = _components(J)
+    out: list[Redundant] = []
+    seen: set = set()
+    # a user equation that involves no unknown at all (`r.width == 30` with the width held by
+    # the constructor) and holds: implied by the held values themselves
+    F = t.evaluate(x)
+    empty = np.diff(J.tocsr().indptr) == 0
+    for i in np.flatnonzero(empty):
+        c = solver.rows.constraint[rows[i]]
+        if not c.implicit and id(c) not in seen and abs(F[i]) <= 1e-9:
+            seen.add(id(c))
+            out.append(Redundant(c, []))
+    for comp in unique(lab):
+        local = np.flatnonzero(lab == comp)
+        if len(local) < 2 or len(local) > MAX_DENSE:
+            continue
+        Jd = J[local].toarray()
+        cons = [solver.rows.constraint[r] for r in rows[local]]
+        order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
+        total: dict[int, int] = {}
+        for c in cons:
+            total[id(c)] = total.get(id(c), 0) + 1
+        found: dict[int, Redundant] = {}
+        count: dict[int, int] = {}
+        for r, support, _coef in dependencies(Jd, order):
+            c = cons[r]
+            if c.implicit or id(c) in seen:
+                continue
+            by = found[id(c)].by if id(c) in found else []
+            for i in support:
+                if cons[i] is not c and cons[i] not in by:
+                    by.append(cons[i])
+            if by:
+                count[id(c)] = count.get(id(c), 0) + 1
+                if id(c) not in found:
+                    found[id(c)] = Redundant(c, by)
+                    out.append(found[id(c)])
+        for k, red in found.items():
+            red.partly = count[k] < total[k]
+            seen.add(k)
+    return out

@@ -1,0 +1,132 @@
+"""Where programs come from: the standard library folder and the one import resolver
+(docs/language.md §2.2 "import" and §8.2 "The import sandbox").
+
+Every stage that follows an ``import`` — the static checker, the interpreter and the language
+server — calls :func:`load_import`, which resolves the path and reads the file in one place,
+before anything else looks at it.  A path is allowed when its *real* path (every symlink
+resolved) is a regular ``.aidl`` file of at most :data:`MAX_IMPORT_BYTES` inside the importing
+file's folder tree, or inside the bundled standard library for ``std/NAME.aidl``.  Anything
+else raises :class:`ImportRefused`, whose message names only the path as written in the
+program: nothing about the target (its contents, its kind, names defined in it, its absolute
+path) reaches a diagnostic.
+"""
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
+if not STDLIB.exists():
+    STDLIB = Path(__file__).resolve().parent / "stdlib"
+
+MAX_IMPORT_BYTES = 1_000_000     # size of one imported file
+MAX_IMPORT_PATH = 255            # characters of an import path as written
+_SANDBOX_HINT = ("import only .aidl files in this file's folder tree (a relative path without "
+                 "`..` leaving it), or `std/NAME.aidl`")
+
+
+class ImportRefused(Exception):
+    """An import that cannot be read: ``code`` (E0114), ``message``, ``hint`` and
+    ``suggestions`` (file names of the same folder inside the sandbox, never outside it)."""
+
+    def __init__(self, message: str, hint: str = _SANDBOX_HINT, suggestions=None,
+                 code: str = "E0114"):
+        super().__init__(message)
+        self.code = code
+        self.message = message
+        self.hint = hint
+        self.suggestions = list(suggestions or [])
+
+
+def _inside(p: str, root: str) -> bool:
+    return p == root or p.startswith(root.rstrip(os.sep) + os.sep)
+
+
+def resolve_import(raw: str, importer: str) -> Path:
+    """The real path of ``import "raw"`` written in the file ``importer``.
+
+    Raises :class:`ImportRefused` for an overlong path, an absolute path, a path leaving the
+    importing file's folder tree (lexically or through a symlink), a target that is not a
+    regular ``.aidl`` file (directory, FIFO, device, a symlink to one), or a missing file (with
+    did-you-mean from the same folder, which is inside the sandbox)."""
+    if len(raw) > MAX_IMPORT_PATH or any(len(part) > 200 for part in raw.split("/")):
+        raise ImportRefused(f"import path is too long ({len(raw)} characters)",
+                            hint=f"import paths have at most {MAX_IMPORT_PATH} characters; "
+                                 "name the file shorter")
+    if "\0" in raw or "\\" in raw:
+        raise ImportRefused("import path has a character that cannot be in a path",
+                            hint="write the path with `/` between folder names")
+    if raw.startswith(("std/", "std:")):
+        base = str(STDLIB.resolve())
+        rel = raw[4:]
+        root = base
+    else:
+        base = os.path.dirname(os.path.realpath(importer))
+        rel = raw
+        # a file of the standard library may import its neighbours; a user file only its tree
+        root = base
+    if not rel.endswith(".aidl"):
+        rel += ".aidl"
+    if os.path.isabs(rel) or rel.startswith("~"):
+        raise ImportRefused(f"import `{raw}` leaves the project folder")
+    lexical = os.path.normpath(os.path.join(base, rel))
+    if not _inside(lexical, root):
+        raise ImportRefused(f"import `{raw}` leaves the project folder")
+    try:
+        real = os.path.realpath(lexical)
+    except (OSError, ValueError):
+        raise ImportRefused(f"cannot import `{raw}`")
+    if not os.path.lexists(lexical):
+        folder = os.path.dirname(lexical)
+        cands = []
+        if _inside(os.path.realpath(folder), root) and os.path.isdir(folder):
+            try:
+                cands = sorted(n for n in os.listdir(folder) if n.endswith(".aidl"))[:200]
+            except OSError:
+                cands = []
+        from .diagnostics import did_you_mean
+        raise ImportRefused(f"cannot find `{raw}` to import",
+                            hint="the path is relative to this file's folder; `std/NAME.aidl` "
+                                 "is the standard library",
+                            suggestions=did_you_mean(os.path.basename(lexical), cands))
+    if not _inside(real, root) or not real.endswith(".aidl"):
+        # a symlink leading out of the tree, or to something that is not a program
+        raise ImportRefused(f"import `{raw}` is not a .aidl file inside the project folder")
+    return Path(real)
+
+
+def read_import(real: Path, raw: str) -> str:
+    """Read a resolved import: a regular file of at most ``MAX_IMPORT_BYTES``, UTF-8 (a BOM
+    is dropped).  Opening never blocks (FIFOs and devices are refused before reading)."""
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0)
+    try:
+        fd = os.open(str(real), flags)
+    except OSError:
+        raise ImportRefused(f"cannot read `{raw}`")
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise ImportRefused(f"import `{raw}` is not a .aidl file inside the project folder")
+        if st.st_size > MAX_IMPORT_BYTES:
+            raise ImportRefused(f"import `{raw}` is larger than {MAX_IMPORT_BYTES} bytes",
+                                hint="split it into smaller files")
+        data = os.read(fd, MAX_IMPORT_BYTES + 1)
+    finally:
+        os.close(fd)
+    if len(data) > MAX_IMPORT_BYTES:
+        raise ImportRefused(f"import `{raw}` is larger than {MAX_IMPORT_BYTES} bytes",
+                            hint="split it into smaller files")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise ImportRefused(f"import `{raw}` is not UTF-8 text",
+                            hint="save the imported file as UTF-8")
+    return text[1:] if text.startswith("\ufeff") else text
+
+
+def load_import(raw: str, importer: str) -> tuple[Path, str]:
+    """Resolve and read ``import "raw"`` of ``importer``: ``(real path, text)``; raises
+    :class:`ImportRefused` (see :func:`resolve_import`, :func:`read_import`)."""
+    real = resolve_import(raw, importer)
+    return real, read_import(real, raw)

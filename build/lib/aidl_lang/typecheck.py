@@ -1,0 +1,364 @@
+"""Static checks before anything runs: names, calls, structure kinds.
+
+* every name resolves (lexical scopes: structure bodies, template bodies with their parameters,
+  loop and comprehension variables, the file's params/constants/templates/imports, built-ins);
+  an unknown name is ``E0101`` with the nearest known names;
+* every call names a primitive, constraint, function or template (``E0103``), with arguments
+  that fit one of its forms: count (``E0104``), keywords (``E0105``), required ones (``E0106``);
+* structure kinds are solid, hole, drawing or assembly (``E0108``).
+
+Checks that need values — types and units of arguments, list indices, members of geometry and
+structures, and the paper's two validity rules on the exact objects referenced — are made by
+the interpreter (:mod:`aidl_lang.interp`) as it runs, with the same diagnostic model.
+"""
+from __future__ import annotations
+
+
+from . import ast as A
+from .diagnostics import DiagnosticSink, did_you_mean
+from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
+                       lookup)
+from .sources import ImportRefused
+
+
+def _real(path: str) -> str:
+    import os
+    return os.path.realpath(path)
+
+KINDS = ("solid", "hole", "drawing", "assembly")
+
+# names models invent, and what to write instead (short, specific; never "delete it")
+_BOOL = "booleans come from structure kinds: a `solid` unions its children, `hole NAME { ... }` children cut"
+_TWO_D = "AIDL is 2D: draw the outline (Circle, Rectangle, Polygon, ...); the SVG is the part's profile"
+_STRUCT = "group parts in a structure block: `solid NAME { ... }` (also hole, drawing, assembly)"
+_PATTERN = "repeat with `LinearPattern(target, count, spacing)`, `CircularPattern(target, count, center)` or a `for i in range(n) { ... }` loop"
+HALLUCINATIONS = {
+    "Rotate": "there is no Rotate: give shapes a `rotation=` argument, or relate lines with `Angle(a, b, 30 deg)`",
+    "Rotation": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",
+    "Rotated": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",
+    "Translate": "there is no Translate: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Move": "there is no Move: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Position": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Place": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
+    "Union": _BOOL,
+    "Combine": _BOOL,
+    "Merge": _BOOL,
+    "Difference": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Subtract": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Intersection": "there is no intersection boolean: " + _BOOL,
+    "Intersect": "there is no intersection boolean: " + _BOOL,
+    "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",
+    "Square": "write `Rectangle(center=..., width=s, height=s)`",
+    "Box": "write `Rectangle(center=..., width=..., height=...)`",
+    "Oval": "write `Ellipse(center=..., rx=..., ry=...)` (or a `Slot` for a stadium)",
+    "Hexagon": "write `RegularPolygon(center=..., radius=..., sides=6)`",
+    "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
+    "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",
+    "Polyline": "write `Polygon(points=[...])` for a closed outline, or Lines that share endpoints",
+    "Spline": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
+    "Bezier": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
+    "Ring": "a ring is a Circle in a solid with a smaller Circle in a `hole` child; add `Concentric`",
+    "Extrude": _TWO_D,
+    "Cylinder": _TWO_D,
+    "Cube": _TWO_D,
+    "Sphere": _TWO_D,
+    "Offset": "there is no Offset: draw the outer outline as its own shape (e.g. width + 2 * t) and `CenterInside` the two",
+    "Scale": "there is no Scale: sizes are arguments; multiply them by a `param`",
+    "Round": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle; `round(x)` rounds numbers",
+    "RoundCorners": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle",
+    "Bevel": "bevel corners with `Chamfer(distance)` in the solid",
+    "Pattern": _PATTERN,
+    "Array": _PATTERN,
+    "Repeat": _PATTERN,
+    "Copy": "copy with `Mirrored(target, about=line)`, `LinearPattern(...)`, `CircularPattern(...)` or a template",
+    "Reflect": "copy about a line with `Mirrored(target, about=line)`; `Symmetric(a, b, about=line)` relates two shapes",
+    "Group": _STRUCT,
+    "Sketch": _STRUCT,
+    "Body": _STRUCT,
+    "Part": _STRUCT,
+    "Component": _STRUCT,
+    "Align": "say which: AlignLeft, AlignRight, AlignTop, AlignBottom, AlignCenterX or AlignCenterY",
+    "Center": "write `CenterInside(a, b)` to center a in b (or AlignCenterX / AlignCenterY)",
+    "Dimension": "state the dimension as a constraint: `Length(line, 20)`, `Distance(p, q, 5)` or `a.width == 20`",
+    "Width": "sizes are members: write `a.width == 20` or `a.bb.width <= 60`",
+    "Height": "sizes are members: write `a.height == 20` or `a.bb.height <= 60`",
+    "AddConstraint": "constraints are statements: write `Coincident(a, b)` directly",
+    "Constraint": "constraints are statements: write `Coincident(a, b)` directly",
+    "Constrain": "constraints are statements: write `Coincident(a, b)` directly",
+}
+
+
+class _Scope:
+    def __init__(self, parent: "_Scope | None", names=()):
+        self.parent = parent
+        self.names = set(names)
+
+    def has(self, n: str) -> bool:
+        s = self
+        while s is not None:
+            if n in s.names:
+                return True
+            s = s.parent
+        return False
+
+    def all(self) -> set:
+        out, s = set(), self
+        while s is not None:
+            out |= s.names
+            s = s.parent
+        return out
+
+
+class Checker:
+    def __init__(self, sink: DiagnosticSink, path: str):
+        self.sink = sink
+        self.path = path
+        self.import_failed = False     # names may come from an import that failed: no E0101/E0103
+        self.templates: dict[str, A.Def] = {}
+
+    # ------------------------------------------------------------------ scopes
+    def block_names(self, stmts) -> set:
+        """Names bound anywhere in a structure body (not inside child structures)."""
+        out = set()
+        for st in stmts:
+            if isinstance(st, A.Assign):
+                out.add(st.name)
+            elif isinstance(st, A.StructDecl):
+                out.add(st.name)
+            elif isinstance(st, A.For):
+                out |= self.block_names(st.body.stmts)
+            elif isinstance(st, A.If):
+                out |= self.block_names(st.body.stmts)
+                if st.orelse is not None:
+                    out |= self.block_names(st.orelse.stmts)
+        return out
+
+    def run(self, program: A.Program) -> None:
+        file_names = set()
+        for st in program.stmts:
+            if isinstance(st, A.ParamDecl):
+                file_names.add(st.name)
+            elif isinstance(st, A.Def):
+                file_names.add(st.name)
+                self.templates[st.name] = st
+            elif isinstance(st, A.Import):
+                if st.alias:
+                    file_names.add(st.alias)
+                    try:
+                        _imported_names(program.path, st.path, frozenset({_real(program.path)}))
+                    except ImportRefused as ex:
+                        self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
+                                        suggestions=ex.suggestions)
+                else:
+                    try:
+                        file_names |= _imported_names(program.path, st.path,
+                                                      frozenset({_real(program.path)}))
+                    except ImportRefused as ex:
+                        self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
+                                        suggestions=ex.suggestions)
+                        self.import_failed = True
+        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def))]
+        file_names |= self.block_names(top)
+        fscope = _Scope(None, file_names)
+        struct_names = [s.name for s in top if isinstance(s, A.StructDecl)]
+        for st in program.stmts:
+            if isinstance(st, A.ParamDecl):
+                self.expr(st.value, fscope)
+                for o in st.options:
+                    self.expr(o.value, fscope)
+            elif isinstance(st, A.Def):
+                if st.kind not in KINDS:
+                    self._kind_error(st.kind, st.kind_span)
+                names = {p.name for p in st.params}
+                for p in st.params:
+                    if p.default is not None:
+                        self.expr(p.default, fscope)
+                tscope = _Scope(fscope, names | self.block_names(st.body.stmts) | {st.name})
+                self.stmts(st.body.stmts, tscope)
+        self.stmts(top, _Scope(fscope, set(struct_names) | {"model"}))
+
+    def stmts(self, stmts, scope: _Scope) -> None:
+        for st in stmts:
+            self.stmt(st, scope)
+
+    def stmt(self, st, scope: _Scope) -> None:
+        if isinstance(st, A.StructDecl):
+            if st.kind not in KINDS:
+                self._kind_error(st.kind, st.kind_span)
+            inner = _Scope(scope, self.block_names(st.body.stmts) | {st.name})
+            self.stmts(st.body.stmts, inner)
+        elif isinstance(st, A.Assign):
+            self.expr(st.value, scope)
+        elif isinstance(st, A.ExprStmt):
+            self.expr(st.expr, scope)
+        elif isinstance(st, A.ThicknessDecl):
+            self.expr(st.value, scope)
+        elif isinstance(st, A.For):
+            self.expr(st.iter, scope)
+            self.stmts(st.body.stmts, _Scope(scope, {st.var}))
+        elif isinstance(st, A.If):
+            self.expr(st.cond, scope)
+            self.stmts(st.body.stmts, scope)
+            if st.orelse is not None:
+                self.stmts(st.orelse.stmts, scope)
+        elif isinstance(st, A.Block):
+            self.stmts(st.stmts, scope)
+
+    def _kind_error(self, kind: str, span) -> None:
+        sugg = did_you_mean(kind, KINDS)
+        self.sink.error("E0108", f"unknown structure kind `{kind}`", span,
+                        hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
+                        suggestions=sugg)
+
+    # ------------------------------------------------------------------ expressions
+    def expr(self, e, scope: _Scope) -> None:
+        if e is None:
+            return
+        if isinstance(e, A.Name):
+            self.name(e, scope)
+        elif isinstance(e, A.Call):
+            self.call(e, scope)
+        elif isinstance(e, A.ListComp):
+            self.expr(e.iter, scope)
+            inner = _Scope(scope, {e.var})
+            self.expr(e.elt, inner)
+            self.expr(e.cond, inner)
+        elif isinstance(e, A.Member):
+            self.expr(e.obj, scope)
+        elif isinstance(e, A.FStr):
+            for p in e.parts:
+                if isinstance(p, tuple):
+                    self.expr(p[0], scope)
+        else:
+            for name in getattr(type(e), "__slots__", ()):
+                v = getattr(e, name, None)
+                if isinstance(v, A.Node):
+                    self.expr(v, scope)
+                elif isinstance(v, list):
+                    for x in v:
+                        if isinstance(x, A.Node):
+                            self.expr(x, scope)
+
+    def name(self, e: A.Name, scope: _Scope) -> None:
+        n = e.id
+        if scope.has(n) or n in CONSTANTS or n == "self" or n in FUNCTIONS or lookup(n):
+            return
+        if self.import_failed:
+            return
+        cands = scope.all() | set(CONSTANTS) | {"self"}
+        sugg = did_you_mean(n, cands)
+        self.sink.error("E0101", f"unknown name `{n}`", e.span,
+                        hint=f"did you mean `{sugg[0]}`?" if sugg else
+                        "define it first (`NAME = ...`, or `param NAME = ...` at the top)",
+                        suggestions=sugg)
+
+    def call(self, e: A.Call, scope: _Scope) -> None:
+        for a in e.args:
+            self.expr(a, scope)
+        for kw in e.kwargs:
+            self.expr(kw.value, scope)
+        f = e.func
+        if not isinstance(f, A.Name):
+            self.expr(f, scope)
+            return
+        n = f.id
+        if n in self.templates:
+            self.template_call(e, self.templates[n])
+            return
+        if scope.has(n):
+            return            # a user value (imported template, alias...): checked when run
+        if n in FUNCTIONS:
+            lo, hi, _ = FUNCTIONS[n]
+            if not lo <= len(e.args) <= hi:
+                self.sink.error("E0104", f"`{n}` takes {lo if lo == hi else f'{lo} to {hi}'} "
+                                f"argument{'s' if hi > 1 else ''}, got {len(e.args)}", e.span)
+            return
+        entry = lookup(n)
+        if entry is None and self.import_failed:
+            return
+        if entry is None:
+            cands = list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS) + list(self.templates)
+            sugg = did_you_mean(n, cands)
+            hint = HALLUCINATIONS.get(n) or (f"did you mean `{sugg[0]}`?" if sugg else
+                                             "see docs/language.md for the primitives and constraints")
+            d = self.sink.error("E0103", f"unknown function `{n}`", f.span, hint=hint,
+                                suggestions=sugg)
+            if n in HALLUCINATIONS:
+                d.fix = None          # not a typo: renaming it to the nearest name is no fix
+            return
+        kwnames = [k.name for k in e.kwargs]
+        variant, reason = choose_variant(entry, len(e.args), kwnames)
+        if variant is not None:
+            return
+        all_names = accepted_args(entry)
+        bad = next((k for k in e.kwargs if k.name not in all_names), None)
+        if bad is not None:
+            sugg = did_you_mean(bad.name, all_names)
+            self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
+                            hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + "forms: "
+                            + "; ".join(entry.signature(v) for v in entry.variants)
+                            + f"; accepted names: {', '.join(all_names)}",
+                            suggestions=sugg)
+            return
+        code = "E0106" if reason and reason.startswith("missing") else "E0104"
+        hint = "forms: " + "; ".join(entry.signature(v) for v in entry.variants)
+        if entry.name == "Symmetric" and len(e.args) + len(e.kwargs) == 2:
+            hint = ("to copy a shape or structure about a line write `Mirrored(target, "
+                    "about=line)`; " + hint)
+        self.sink.error(code, f"`{n}` {reason}", e.span, hint=hint)
+
+    def template_call(self, e: A.Call, d: A.Def) -> None:
+        params = [p.name for p in d.params]
+        if len(e.args) > len(params):
+            self.sink.error("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(e.args)}",
+                            e.span, hint=f"`{d.name}({', '.join(params)})`")
+            return
+        given = set(params[:len(e.args)])
+        for kw in e.kwargs:
+            if kw.name not in params:
+                sugg = did_you_mean(kw.name, params)
+                self.sink.error("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
+                                hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
+                                + f"parameters: {', '.join(params) or 'none'}", suggestions=sugg)
+            given.add(kw.name)
+        for p in d.params:
+            if p.default is None and p.name not in given:
+                self.sink.error("E0106", f"`{d.name}` needs the argument `{p.name}`", e.span,
+                                hint=f"`{d.name}({p.name}=...)`")
+
+
+MAX_IMPORT_DEPTH = 16
+
+
+def _imported_names(path: str, target: str, seen: frozenset = frozenset()) -> set:
+    """Names ``import "target"`` (in the file ``path``) brings without ``as``: the file's
+    templates, params and top-level constants, aliases, and what it imported in turn
+    (docs/language.md §2.2).  Raises :class:`~aidl_lang.sources.ImportRefused` for the
+    import itself; a refused or cyclic import *inside* the imported file adds no names (the
+    interpreter reports it where it is written)."""
+    from .sources import load_import
+    from .parser import parse
+    real, text = load_import(target, path)
+    key = str(real)
+    if key in seen or len(seen) > MAX_IMPORT_DEPTH:
+        return set()
+    prog = parse(text, key, DiagnosticSink())
+    out = set()
+    for st in prog.stmts:
+        if isinstance(st, (A.Def, A.ParamDecl, A.Assign)):
+            out.add(st.name)
+        elif isinstance(st, A.Import):
+            if st.alias:
+                out.add(st.alias)
+            else:
+                try:
+                    out |= _imported_names(key, st.path, seen | {key})
+                except ImportRefused:
+                    pass
+    return out
+
+
+def check(program: A.Program, sink: DiagnosticSink) -> None:
+    """Run the static checks on ``program``; diagnostics go to ``sink``."""
+    Checker(sink, program.path).run(program)
