@@ -159,3 +159,66 @@ def test_sample_counts(item):
 @given(st.lists(st.one_of(circle, circle, line), min_size=1, max_size=12))
 def test_runs_of_circles_equal_the_per_item_samples(items):
     assert np.array_equal(_samples(items), np.vstack([_sample(it) for it in items]))
+
+
+# ------------------------------------------------ W0505: on the material without growing it
+_shape_spec = st.lists(st.tuples(st.sampled_from(["square", "circle"]), st.floats(-5, 5),
+                                 st.floats(-5, 5), st.floats(0.5, 6), st.booleans()),
+                       min_size=1, max_size=4)
+
+
+def _cross_section(spec):
+    import manifold3d as mf
+    acc = mf.CrossSection()
+    for kind, x, y, size, cut in spec:
+        s = (mf.CrossSection.square((size, size * 0.7), center=True) if kind == "square"
+             else mf.CrossSection.circle(size / 2, 40)).translate((x, y))
+        acc = acc - s if cut else acc + s
+    return acc
+
+
+@settings(max_examples=150, deadline=None)
+@given(_shape_spec, st.integers(0, 2**32 - 1))
+def test_points_surely_on_the_material_are_inside_the_grown_part(spec, seed):
+    """What `_all_on_material` accepts per point (inside the outline, or within
+    `_SURELY_GROWN` of an edge) is inside Manifold's outline grown by ENGRAVE_TOL: points at
+    0 to 1.5 ENGRAVE_TOL from the vertices and edges of random unions and differences."""
+    import manifold3d as mf
+    from aidl_lang.output.checks import (ENGRAVE_TOL, _SURELY_GROWN, _edges, _inside,
+                                         _within)
+    shape = _cross_section(spec)
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    if not loops:
+        return
+    rng = np.random.default_rng(seed)
+    P = np.concatenate(loops)
+    Q = np.concatenate([np.concatenate([p[1:], p[:1]]) for p in loops])
+    k = rng.integers(0, len(P), 300)
+    base = P[k] + rng.uniform(0, 1, (300, 1)) * (Q[k] - P[k])      # on the edges
+    ang = rng.uniform(0, 2 * np.pi, 300)
+    r = rng.uniform(0, 1.5 * ENGRAVE_TOL, 300)
+    pts = base + np.column_stack([r * np.cos(ang), r * np.sin(ang)])
+    e = _edges(loops)
+    surely = _inside(pts, e) | _within(pts, e, _SURELY_GROWN)
+    grown = shape.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
+    inside = _inside(pts, _edges([np.asarray(p, dtype=float) for p in grown.to_polygons()]))
+    assert not (surely & ~inside).any()
+    assert surely.sum() > 100          # the test decides most points
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(coord, coord, coord, coord), min_size=1, max_size=8),
+       st.lists(point, min_size=1, max_size=30), st.floats(0, 3))
+def test_within_equals_the_brute_force_distance(segs, pts, dist):
+    from aidl_lang.output.checks import _within
+    S = np.array(segs, dtype=float)
+    P = np.array(pts, dtype=float)
+    got = _within(P, (S[:, 0], S[:, 1], S[:, 2], S[:, 3]), dist)
+    a, b = S[None, :, :2], S[None, :, 2:]
+    d = b - a
+    L2 = (d * d).sum(-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, ((P[:, None] - a) * d).sum(-1) / L2, 0), 0, 1)
+    e = P[:, None] - a - t[..., None] * d
+    want = ((e * e).sum(-1) <= dist * dist).any(axis=1)
+    assert np.array_equal(got, want)

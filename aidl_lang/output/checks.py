@@ -386,10 +386,65 @@ def _samples(items) -> np.ndarray:
     return np.vstack(out)
 
 
+# Manifold's round offset puts its arc vertices on the circle (Clipper2's round joins, arc
+# tolerance r (1 - cos(pi / segments)) with 16 segments), so the part grown by ENGRAVE_TOL
+# holds every point within ENGRAVE_TOL cos(pi / 16) of the part, less the 1e-8 mm grid
+_SURELY_GROWN = ENGRAVE_TOL * math.cos(math.pi / 16) - 1e-6
+
+
+def _all_on_material(shape, pts: np.ndarray) -> bool:
+    """True when every point of ``pts`` is certainly inside ``shape`` grown by
+    :data:`ENGRAVE_TOL` (what W0505 tests), without growing it: each point is inside the
+    outline itself or within :data:`_SURELY_GROWN` of one of its edges.  False means "not
+    shown": the grown outline then decides (engraving drawn on the edge is the usual case
+    the outline alone cannot settle)."""
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    edges = _edges(loops)
+    out = ~_inside(pts, edges)
+    if not out.any():
+        return True
+    return bool(_within(pts[out], edges, _SURELY_GROWN).all())
+
+
+def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_000) -> np.ndarray:
+    """True where a point of ``pts`` (N x 2) lies within ``dist`` of one of the segments
+    ``edges`` (x1, y1, x2, y2 arrays).  Each segment is measured only against the points
+    whose y lies within ``dist`` of its y range (binary search in the points sorted by y).
+    All False when more than ``max_pairs`` pairs would be measured."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 2)
+    n = len(pts)
+    x1, y1, x2, y2 = edges
+    res = np.zeros(n, dtype=bool)
+    if not n or not len(x1):
+        return res
+    x, y = pts[:, 0], pts[:, 1]
+    order = np.argsort(y, kind="stable")
+    ys = y[order]
+    lo = np.searchsorted(ys, np.minimum(y1, y2) - dist, side="left")
+    hi = np.searchsorted(ys, np.maximum(y1, y2) + dist, side="right")
+    cnt = np.maximum(hi - lo, 0)
+    total = int(cnt.sum())
+    if not total or total > max_pairs:
+        return res
+    edge = np.repeat(np.arange(len(x1)), cnt)
+    start = np.cumsum(cnt) - cnt
+    pt = order[lo[edge] + (np.arange(total) - start[edge])]
+    ax, ay = x1[edge], y1[edge]
+    dx, dy = x2[edge] - ax, y2[edge] - ay
+    px, py = x[pt] - ax, y[pt] - ay
+    L2 = dx * dx + dy * dy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
+    ex, ey = px - t * dx, py - t * dy
+    res[pt[ex * ex + ey * ey <= dist * dist]] = True
+    return res
+
+
 def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
     """W0505 for each engraved geometry with sample points off its part's material (the part
     grown by :data:`ENGRAVE_TOL`).  The points of all the geometries of one part are tested
-    in one :func:`_inside` call (a point's verdict does not depend on the other points)."""
+    in one :func:`_inside` call (a point's verdict does not depend on the other points), and
+    a part whose points are all certainly on it (:func:`_all_on_material`) is not grown."""
     by_geom: dict = {}
     for style, item, g in d.strokes:
         if style == "drawing" and g is not None:
@@ -403,11 +458,12 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
     verdicts: dict = {}
     for part, geoms in by_part.items():
         shp = roots[part]
+        pts = _samples([it for _, items in geoms for it in items])
+        if _all_on_material(shp, pts):
+            continue
         grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
         loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
-        edges = _edges(loops)
-        pts = _samples([it for _, items in geoms for it in items])
-        inside = _inside(pts, edges)
+        inside = _inside(pts, _edges(loops))
         at = 0
         for g, items in geoms:
             n = sum(_n_samples(it) for it in items)
