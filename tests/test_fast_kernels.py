@@ -222,3 +222,16 @@ def test_within_equals_the_brute_force_distance(segs, pts, dist):
     e = P[:, None] - a - t[..., None] * d
     want = ((e * e).sum(-1) <= dist * dist).any(axis=1)
     assert np.array_equal(got, want)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_shape_spec)
+def test_pieces_are_the_counter_clockwise_loops(spec):
+    """W0504 skips the split when at most one loop runs counter-clockwise: a non-empty
+    Manifold cross-section has exactly one piece per such loop."""
+    from aidl_lang.output.checks import _signed
+    shape = _cross_section(spec)
+    if shape.is_empty():
+        return
+    outer = sum(_signed(np.asarray(p, dtype=float)) > 0 for p in shape.to_polygons())
+    assert outer == len(shape.decompose())

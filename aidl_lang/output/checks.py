@@ -94,13 +94,15 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) 
     roots = _part_roots(d)
     for cut in d.cuts:
         _check_hole(d, cut, roots, sink)
+    loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+             for s, shape in roots.items() if s.kind == "solid"}
     for s, shape in roots.items():
         if s.kind == "solid":
-            _check_pieces(d, s, shape, sink)
+            _check_pieces(d, s, shape, sink, loops[s])
     for s in list(d.shapes):
         if s.kind == "solid":
             _check_invisible(d, s, sink)
-    _check_engraving(d, roots, sink)
+    _check_engraving(d, roots, sink, loops)
     if min_wall > 0:
         by_part: dict = {}
         for c in d.cuts:
@@ -166,8 +168,16 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink) -> None:
               "or move it clear of the solid that covers it"))
 
 
-def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink) -> None:
+def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
+                  loops: list | None = None) -> None:
+    """W0504 for part ``s``.  A shape has one piece per outline loop that runs
+    counter-clockwise (an outer boundary; holes run clockwise), so a shape with at most one
+    such loop (``loops``: its polygons, when already at hand) is not split into pieces."""
     if shape.is_empty():
+        return
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    if sum(_signed(p) > 0 for p in loops) < 2:
         return
     total = _area(shape)
     pieces = [p for p in shape.decompose() if _area(p) > max(1e-9, 1e-6 * total)]
@@ -392,13 +402,14 @@ def _samples(items) -> np.ndarray:
 _SURELY_GROWN = ENGRAVE_TOL * math.cos(math.pi / 16) - 1e-6
 
 
-def _all_on_material(shape, pts: np.ndarray) -> bool:
+def _all_on_material(shape, pts: np.ndarray, loops: list | None = None) -> bool:
     """True when every point of ``pts`` is certainly inside ``shape`` grown by
     :data:`ENGRAVE_TOL` (what W0505 tests), without growing it: each point is inside the
     outline itself or within :data:`_SURELY_GROWN` of one of its edges.  False means "not
     shown": the grown outline then decides (engraving drawn on the edge is the usual case
-    the outline alone cannot settle)."""
-    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    the outline alone cannot settle).  ``loops``: the shape's polygons, when at hand."""
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     edges = _edges(loops)
     out = ~_inside(pts, edges)
     if not out.any():
@@ -440,7 +451,7 @@ def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_0
     return res
 
 
-def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
+def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None) -> None:
     """W0505 for each engraved geometry with sample points off its part's material (the part
     grown by :data:`ENGRAVE_TOL`).  The points of all the geometries of one part are tested
     in one :func:`_inside` call (a point's verdict does not depend on the other points), and
@@ -459,7 +470,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink) -> None:
     for part, geoms in by_part.items():
         shp = roots[part]
         pts = _samples([it for _, items in geoms for it in items])
-        if _all_on_material(shp, pts):
+        if _all_on_material(shp, pts, (loops or {}).get(part)):
             continue
         grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
         loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
