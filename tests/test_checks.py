@@ -321,3 +321,29 @@ def test_W0507_pieces_never_exceed_the_whole():
             thin = shape - opened
             whole = thin.area()
             assert all(p.area() <= whole * (1 + 1e-12) for p in thin.decompose())
+
+
+_child = st.tuples(st.floats(-25, 25), st.floats(-15, 15), st.floats(0.5, 30), st.floats(0.5, 20))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(_child, min_size=1, max_size=4), st.floats(1, 40), st.floats(1, 25))
+def test_W0506_area_bound_gives_the_measured_warnings(children, w, h):
+    """W0506 skips measuring a child whose area exceeds the others' by far: the same warnings
+    as measuring every child, for child solids of any size inside, across or outside their
+    parent and each other."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.output import checks as C
+    from aidl_lang.pipeline import compile_source
+    body = [f"    solid c{i} {{\n        r = Rectangle(center=({x:.3f}, {y:.3f}), width={cw:.3f}, "
+            f"height={ch:.3f})\n    }}" for i, (x, y, cw, ch) in enumerate(children)]
+    src = (f"solid plate {{\n    body = Rectangle(center=(0, 0), width={w:.3f}, height={h:.3f})\n"
+           + "\n".join(body) + "\n}")
+    c = compile_source(src, "kids.aidl", min_wall=0)
+    assert c.ok and c.drawing is not None
+    got, want = DiagnosticSink(), DiagnosticSink()
+    for s in list(c.drawing.shapes):
+        if s.kind == "solid":
+            C._check_invisible(c.drawing, s, got, quick=True)
+            C._check_invisible(c.drawing, s, want, quick=False)
+    assert [(d.message, d.span) for d in got.items] == [(d.message, d.span) for d in want.items]
