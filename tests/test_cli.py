@@ -311,61 +311,6 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
         assert vars(_parser(argv[0]).parse_args(argv)) == vars(full.parse_args(argv)), argv
 
 
-# ------------------------------------------------------- argparse's texts without gettext
-def _mo(path, pairs: dict) -> None:
-    """A GNU message catalogue (.mo) holding ``pairs`` (what msgfmt writes)."""
-    import struct
-    keys = sorted(pairs)
-    ids = b"".join(k.encode() + b"\0" for k in keys)
-    strs = b"".join(pairs[k].encode() + b"\0" for k in keys)
-    n = len(keys)
-    start = 7 * 4 + 16 * n
-    koff, voff, o = [], [], 0
-    for k in keys:
-        koff += [len(k.encode()), start + o]
-        o += len(k.encode()) + 1
-    o = 0
-    for k in keys:
-        voff += [len(pairs[k].encode()), start + len(ids) + o]
-        o += len(pairs[k].encode()) + 1
-    head = struct.pack("<7I", 0x950412de, 0, n, 7 * 4, 7 * 4 + 8 * n, 0, 0)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_bytes(head + struct.pack(f"<{2 * n}I", *koff) + struct.pack(f"<{2 * n}I", *voff)
-                     + ids + strs)
-
-
-def test_argparse_texts_are_translated_when_a_catalogue_exists(tmp_path, monkeypatch, capsys):
-    """The short cut around gettext (no catalogue: texts as given) never hides a real
-    catalogue: with one for the domain and language, argparse's texts are translated."""
-    import gettext
-    import argparse
-    from aidl_lang.cli import main as cli_main
-    mod = sys.modules["aidl_lang.cli.main"]
-    assert mod._no_catalogue()                       # this machine: none
-    domain = gettext.textdomain()
-    old = gettext.bindtextdomain(domain)
-    _mo(tmp_path / "de" / "LC_MESSAGES" / f"{domain}.mo", {"usage: ": "Aufruf: "})
-    monkeypatch.setenv("LANGUAGE", "de")
-    try:
-        gettext.bindtextdomain(domain, str(tmp_path))
-        assert not mod._no_catalogue()
-        with pytest.raises(SystemExit):
-            cli_main(["check", "--bogus"])
-        assert capsys.readouterr().err.startswith("Aufruf: aidl")
-    finally:
-        gettext.bindtextdomain(domain, old)
-    with pytest.raises(SystemExit):
-        cli_main(["check", "--bogus"])
-    assert capsys.readouterr().err.startswith("usage: aidl check")
-    assert argparse._ is gettext.gettext and argparse.ngettext is gettext.ngettext
-
-
-def test_no_catalogue_when_a_locale_variable_names_a_path(monkeypatch):
-    mod = sys.modules["aidl_lang.cli.main"]
-    monkeypatch.setenv("LANGUAGE", "../elsewhere")
-    assert not mod._no_catalogue()
-
-
 def test_only_the_given_subcommand_is_built_and_usage_is_unchanged(capsys):
     """`aidl check ...` builds only the check parser; the top-level usage line still lists
     every subcommand, as when all are built."""

@@ -145,48 +145,6 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     return p
 
 
-def _no_catalogue() -> bool:
-    """True when ``gettext`` can find no message catalogue for argparse's texts: no
-    ``<lang>/LC_MESSAGES/<domain>.mo`` under the current domain's locale folder, and no
-    locale variable naming a path.  ``gettext.gettext`` then returns every text as it is
-    given; it finds that out anew on each call, importing :mod:`locale` on the first
-    (~5 M instructions of every command)."""
-    import gettext
-    if any("/" in os.environ.get(v, "") for v in ("LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG")):
-        return False
-    domain = gettext.textdomain()
-    folder = gettext.bindtextdomain(domain)
-    try:
-        langs = os.listdir(folder)
-    except OSError:
-        return True                      # no locale folder: nothing to find
-    return not any(os.path.exists(os.path.join(folder, lang, "LC_MESSAGES", f"{domain}.mo"))
-                   for lang in langs)
-
-
-def _parse_args(argv: list[str], only: str | None) -> argparse.Namespace:
-    """``_parser(only).parse_args(argv)``; when there is no catalogue to translate argparse's
-    texts with (:func:`_no_catalogue`), its ``gettext`` and ``ngettext`` are what gettext's
-    fallback does (the text as given) for the call, so every message is the same."""
-    if not _no_catalogue():
-        return _parser(only).parse_args(argv)
-    saved = argparse._, argparse.ngettext
-    argparse._ = _same_text
-    argparse.ngettext = _same_plural
-    try:
-        return _parser(only).parse_args(argv)
-    finally:
-        argparse._, argparse.ngettext = saved
-
-
-def _same_text(message: str) -> str:
-    return message
-
-
-def _same_plural(singular: str, plural: str, n: int) -> str:
-    return singular if n == 1 else plural
-
-
 def _port(text: str) -> int:
     if not (text.isdigit() and int(text) <= 65535):
         raise argparse.ArgumentTypeError(f"--port expects a number from 0 to 65535, got `{text}`")
@@ -476,7 +434,7 @@ def main(argv: list[str] | None = None) -> int:
     global _command
     argv = sys.argv[1:] if argv is None else list(argv)
     first = argv[0] if argv else None
-    args = _parse_args(argv, first if first in SUBCOMMANDS else None)
+    args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
     _command = args.cmd
     try:
         run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,

@@ -1,2 +1,0 @@
-"""The AIDL language server (``aidl lsp``): :mod:`.analysis` (pure functions) and :mod:`.server`
-(pygls handlers)."""
