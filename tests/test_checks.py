@@ -129,6 +129,22 @@ def test_W0505_engraving_across_a_hole_and_outside(compile_text):
     assert "outside the outline" in ws[1].message and "67%" in ws[1].message
 
 
+def test_W0505_on_two_parts_each_reported(compile_text):
+    """Two parts whose engravings both run off their outlines: each is grown and reported
+    (the second part once read the first part's grown outline in place of its own polygons,
+    an internal error)."""
+    ws = warnings(compile_text, """solid a {
+    body = Rectangle((0, 0), 20, 10)
+    drawing label { l = Line((-15, 0), (15, 0)) }
+}
+solid b {
+    body = Rectangle((50, 0), 20, 10)
+    drawing label { l = Line((35, 0), (65, 0)) }
+}""", "W0505")
+    assert [(w.span.line, "outside the outline" in w.message, "44%" in w.message)
+            for w in ws] == [(3, True, True), (7, True, True)]
+
+
 def test_W0506_child_solid_that_adds_nothing(compile_text):
     ws = warnings(compile_text, """solid crown {
     body = Rectangle(center=(0, 0), width=60, height=30)

@@ -483,22 +483,22 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if _all_on_material(shp, pts, (loops or {}).get(part)):
             continue
         grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
-        loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
-        inside = _inside(pts, _edges(loops))
+        grown_loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
+        inside = _inside(pts, _edges(grown_loops))
         at = 0
         for g, items in geoms:
             n = sum(_n_samples(it) for it in items)
-            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], loops)
+            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops)
             at += n
     outer_of: dict = {}
     for g in by_geom:
         if g not in verdicts:
             continue
-        part, pts, inside, loops = verdicts[g]
+        part, pts, inside, grown_loops = verdicts[g]
         if inside.all():
             continue
         if part not in outer_of:
-            outer_of[part] = _edges([p for p in loops if _signed(p) > 0])
+            outer_of[part] = _edges([p for p in grown_loops if _signed(p) > 0])
         in_outline = _inside(pts[~inside], outer_of[part])
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
