@@ -322,7 +322,9 @@ def _expr(draw, depth=3):
         return Lin(terms, draw(st.floats(-1, 1)))
     op = draw(_OPS)
     a = draw(_expr(depth - 1))
-    if op in ("sin", "cos", "atan", "exp"):
+    if op == "exp":           # of a bounded argument: exp(exp(..)) is ill-conditioned (sin of
+        return Nl("exp", (Nl("sin", (a,)),))   # 1e8 differs by 1e-9 between two roundings)
+    if op in ("sin", "cos", "atan"):
         return Nl(op, (a,))
     if op == "sqrt":
         return Nl("mul", (Nl("sqrt", (Nl("mul", (a, a)),)), a))     # sqrt of a square: > 0
