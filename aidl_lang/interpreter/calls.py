@@ -108,19 +108,6 @@ def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
     return _Plan(entry, cn, tuple(order))
 
 
-def _callee_name(interp, f: A.Name):
-    """``interp._callee(f)`` of a name, with a built-in found in one table look-up."""
-    name = f.id
-    for vars_ in interp.scope.chain:     # the first scope that has it
-        if name in vars_:
-            v = vars_[name]
-            if v is not None:
-                return v
-            break
-    b = _BUILTINS.get(name)
-    return b if b is not None else interp._callee(f)
-
-
 class Calls:
     def _callee(self, f):
         if type(f) is A.Name:

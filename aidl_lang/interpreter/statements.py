@@ -17,7 +17,7 @@ from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, Str
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import (CONSTANTS, UNITS_LENGTH)
 from ..sources import ImportRefused, read_import, resolve_import
-from .calls import _NO_PLAN, _callee_name
+from .calls import _NO_PLAN
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
 
 
@@ -380,7 +380,7 @@ class Statements:
         name = st.name
         callee = None
         if type(v) is A.Call and (type(v.func) is A.Name or type(v.func) is A.Member):
-            callee = self._callee(v.func) if type(v.func) is A.Member else _callee_name(self, v.func)
+            callee = self._callee(v.func)
             if type(callee) is Template:
                 self._check_new_name(name, st.name_span, self._need_struct(st.span))
                 ref = self._instantiate(callee, v, name + self._loop_suffix())
@@ -393,20 +393,8 @@ class Statements:
             prev = self.scope.vars.get(name)         # self._check_new_name(...), inline
             if prev is not None and (type(prev) is GeomRef or type(prev) is StructRef):
                 self._check_new_name(name, st.name_span, self.struct)
-        if callee is not None:               # what eval() does for a call, callee known
-            n = self.steps + 1               # self.step(v.span), inline
-            if n > self.budget.steps or not n & 127:
-                self.step(v.span)
-            else:
-                self.steps = n
-            if type(callee) is Builtin and not v.kwargs:   # _call's registry entries, plan known
-                plan = self.plans.get((callee.name, len(v.args), ()), _NO_PLAN)
-                if plan is not _NO_PLAN and plan is not None:
-                    val = self._planned_call(v, callee.name, plan, name)
-                else:
-                    val = self._call(v, name, callee)
-            else:
-                val = self._call(v, name, callee)
+        if callee is not None:
+            val = self._call_statement(v, callee, name)
         else:
             val = self.eval(v, name=name)
         tv = type(val)
@@ -420,24 +408,26 @@ class Statements:
                     item.geom.name = f"{name}[{i}]"
         self.scope.vars[name] = val
 
+    def _call_statement(self, node: A.Call, callee, name: str | None):
+        """What ``eval`` does for a call that is a statement's whole value, with its callee
+        (``None``: not yet known) at hand: one step, then a registry entry's call plan when it
+        has one (no keywords), else :meth:`_call`."""
+        n = self.steps + 1               # self.step(node.span), inline
+        if n > self.budget.steps or not n & 127:
+            self.step(node.span)
+        else:
+            self.steps = n
+        if type(callee) is Builtin and not node.kwargs:
+            plan = self.plans.get((callee.name, len(node.args), ()), _NO_PLAN)
+            if plan is not _NO_PLAN and plan is not None:
+                return self._planned_call(node, callee.name, plan, name)
+        return self._call(node, name, callee)
+
     def _expr_stmt(self, e) -> None:
         t = type(e)
-        if t is A.Call:                  # what eval() does for a call
-            n = self.steps + 1           # self.step(e.span), inline
-            if n > self.budget.steps or not n & 127:
-                self.step(e.span)
-            else:
-                self.steps = n
+        if t is A.Call:
             f = e.func
-            callee = _callee_name(self, f) if type(f) is A.Name else None
-            if type(callee) is Builtin and not e.kwargs:   # _call's registry entries, plan known
-                plan = self.plans.get((callee.name, len(e.args), ()), _NO_PLAN)
-                if plan is not _NO_PLAN and plan is not None:
-                    val = self._planned_call(e, callee.name, plan, None)
-                else:
-                    val = self._call(e, None, callee)
-            else:
-                val = self._call(e, None, callee)
+            val = self._call_statement(e, self._callee(f) if type(f) is A.Name else None, None)
         elif t is A.Compare or t is A.BoolOp:
             self._equation(e)
             return
