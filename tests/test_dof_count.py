@@ -30,17 +30,24 @@ def _solved(src: str, name: str):
     return c.solve.solver
 
 
+def _system(solver, s) -> tuple:
+    """A structure's own unknowns (its geometry and its children's frames), its rows, and
+    the columns of those rows: the unknowns and the rows' slacks."""
+    params = list(solver.own.get(id(s), ()))
+    for c in s.children.values():
+        params += list(solver.frame.get(id(c), ()))
+    rows = solver.rows_of([s])
+    sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
+    cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+    return params, rows, cols
+
+
 def _reference(solver) -> list[tuple]:
     """(path, unknowns, rank) per structure the way it was counted before: each structure's
     own tape, one SVD per block."""
     out = []
     for s in solver.model.structures:
-        params = list(solver.own.get(id(s), ()))
-        for c in s.children.values():
-            params += list(solver.frame.get(id(c), ()))
-        rows = solver.rows_of([s])
-        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
-        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        params, rows, cols = _system(solver, s)
         if not len(cols) or not len(rows):
             out.append((s.path, len(params) if len(cols) else 0, 0))
             continue
@@ -77,12 +84,7 @@ def test_count_equals_per_structure_tapes(name, src):
     # the blocks cut from the whole Jacobian are each structure's own, bit for bit
     systems = []
     for s in solver.model.structures:
-        params = list(solver.own.get(id(s), ()))
-        for c in s.children.values():
-            params += list(solver.frame.get(id(c), ()))
-        rows = solver.rows_of([s])
-        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
-        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        _params, rows, cols = _system(solver, s)
         if len(rows) and len(cols):
             systems.append((rows, cols))
     W, wcols = D._whole_jacobian(solver, solver.x, [c for _, c in systems])
