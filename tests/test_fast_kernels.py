@@ -102,14 +102,6 @@ def test_points_and_bounds_equal_the_reference(loops, strokes):
     assert out.bounds() == ref
 
 
-@settings(max_examples=200, deadline=None)
-@given(st.lists(st.floats(-1e6, 1e6), min_size=1, max_size=30))
-def test_median_equals_numpy(xs):
-    from aidl_lang.output.part import _median
-    a = np.array(xs).reshape(-1, 1)
-    assert _median(a) == float(np.median(a))
-
-
 def test_check_imports_no_lark_scipy_writers_or_masked_arrays(tmp_path):
     """A cold `aidl check` imports neither Lark (the parser runs its cached table), SciPy, the
     writers (svgwrite and its network stack), the Hershey package nor numpy.ma; a cold

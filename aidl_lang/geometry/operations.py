@@ -13,13 +13,15 @@ the angle between neighbours.  The original must
 lie in that structure's subtree (the validity rule for constraints).  The transform's line,
 center and step may be solved values; rotations (pattern angles) are known before solving.
 
-``Fillet(radius)`` and ``Chamfer(distance)`` act on the finished outline of the structure they
-are written in, after its booleans (:func:`finish`, called by the renderer), on every loop of
-it (outer outlines and holes).  A corner is a vertex where the outline turns by more than 15
-degrees (tessellated circles and arcs turn less).  A fillet replaces every corner, convex or
-concave, by a tangent arc of ``radius``; a chamfer cuts every convex corner with two legs of
-``distance`` along its edges.  Where an edge is too short for both of its corners, each takes
-at most half of it (the fillet radius shrinks to fit).
+``Fillet(radius)`` and ``Chamfer(distance)`` act on the finished exact outline of the structure
+they are written in, after its booleans (:func:`finish`, called by the renderer), on every
+loop of it (outer outlines and holes).  A corner is a join where the outline's direction turns
+by more than :data:`CORNER_TURN` (0.06 degrees; tangent joins are not corners).  A fillet
+replaces every corner, convex or concave, by an arc of ``radius`` tangent to both segments
+(lines or arcs: its center is where the two segments' offsets by ``radius`` cross); a chamfer
+cuts every convex corner with two legs of ``distance`` along its segments.  Where a segment is
+too short for both of its corners, each takes at most half of it (the fillet radius shrinks to
+fit).
 """
 from __future__ import annotations
 
@@ -29,7 +31,6 @@ from ..diagnostics import EvalError
 from ..limits import MAX_GEOMETRY
 from .expr import var
 from .model import Constraint, Equation, Geometry, Point, Structure
-from .tessellate import segments_for
 from .values import PV, GeomRef, Q, StructRef, type_name
 
 
@@ -242,7 +243,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
 
 
 # ------------------------------------------------------------------ rendering
-CORNER_TURN = math.radians(15)       # smaller turns are tessellated curves, not corners
+CORNER_TURN = 1e-3      # rad: a join that turns less is tangent (a slot's side into its end)
 
 
 CORNER_TOL = 1e-3                   # mm: a chosen corner matches an outline vertex this close
@@ -285,59 +286,153 @@ def _corner_points(ctx, v, S, kind: str) -> list:
                          f"a polygonal shape, or a list of these; got {_kind(v)}")
 
 
-def finish(s: Structure, shape, x=None):
-    """Apply the structure's Fillet/Chamfer operations to its rendered CrossSection; ``x``
-    (the solved unknowns) places corners chosen with ``at``."""
+def finish(s: Structure, loops: list, x=None) -> list:
+    """Apply the structure's Fillet/Chamfer operations, in order, to its exact outline
+    ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
+    ``x`` (the solved unknowns) places corners chosen with ``at``.  Returns the new loops."""
     from .expr import evaluate
     for kind, r, at in getattr(s, "finish", []):
-        if shape.is_empty():
-            break
         pts = None
         if at is not None and x is not None:
             pts = [(float(evaluate(px, x)), float(evaluate(py, x))) for px, py in at]
-        shape = _corners(shape, r, kind == "Fillet", pts)
-    return shape
+        loops = [corners(lp, r, kind == "Fillet", pts) for lp in loops]
+    return loops
 
 
-def _corners(shape, size: float, fillet: bool, only=None):
-    """Round (``fillet``: both convex and concave) or cut (chamfer: convex only) every corner
-    of every outline loop whose direction turns by more than :data:`CORNER_TURN` (or only
-    those within :data:`CORNER_TOL` of a point of ``only``)."""
-    import manifold3d as mf
-    import numpy as np
-    loops = []
-    for poly in shape.to_polygons():
-        P = np.asarray(poly, dtype=float)
-        n = len(P)
-        out = []
-        for i in range(n):
-            p0, p1, p2 = P[i - 1], P[i], P[(i + 1) % n]
-            e1, e2 = p1 - p0, p2 - p1
-            l1, l2 = float(np.hypot(*e1)), float(np.hypot(*e2))
-            if l1 == 0 or l2 == 0:
-                continue
-            u1, u2 = e1 / l1, e2 / l2
-            turn = math.atan2(u1[0] * u2[1] - u1[1] * u2[0], float(np.dot(u1, u2)))
-            chosen = only is None or any(math.hypot(p1[0] - qx, p1[1] - qy) <= CORNER_TOL
-                                         for qx, qy in only)
-            if abs(turn) <= CORNER_TURN or (not fillet and turn < 0) or not chosen:
-                out.append(p1)           # material is on the left: turn > 0 is convex
-                continue
-            if not fillet:
-                t = min(size, l1 / 2, l2 / 2)
-                out += [p1 - u1 * t, p1 + u2 * t]
-                continue
-            half = math.tan(abs(turn) / 2)
-            t = min(size * half, l1 / 2, l2 / 2)           # tangent length, clamped
-            r = t / half
-            a = p1 - u1 * t
-            sg = 1.0 if turn > 0 else -1.0
-            c = a + sg * r * np.array([-u1[1], u1[0]])
-            a0 = math.atan2(a[1] - c[1], a[0] - c[0])
-            k = max(2, segments_for(r, abs(turn)))
-            for j in range(k + 1):
-                ang = a0 + turn * j / k
-                out.append(c + r * np.array([math.cos(ang), math.sin(ang)]))
-        if len(out) >= 3:
-            loops.append(np.asarray(out).tolist())
-    return mf.CrossSection(loops, mf.FillRule.Positive) if loops else mf.CrossSection()
+def corners(loop, size: float, fillet: bool, only=None):
+    """``loop`` with its corners rounded (``fillet``: every corner, convex or concave, by an
+    arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
+    corner, by a line between the points ``size`` mm along each segment, arc length on an
+    arc).  A corner is a join where the direction turns by more than :data:`CORNER_TURN`
+    (tangent joins are not corners); with ``only`` (points, mm), just the corners within
+    :data:`CORNER_TOL` of one of them.  No corner takes more than half of a segment: where
+    a segment is too short for both of its corners the fillet radius (or chamfer leg)
+    shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
+    exact (:mod:`.curves`)."""
+    from .curves import Circle, Line, Loop, simplify, turn_between, with_ends
+    segs = loop.segments
+    n = len(segs)
+    if n < 2 or any(isinstance(g, Circle) for g in segs):
+        return loop
+    cut = [None] * n                 # corner k (before segment k): (end of k-1, start of k, new)
+    for k in range(n):
+        a, b = segs[k - 1], segs[k]
+        p = b.start
+        turn = turn_between(a, b)
+        chosen = only is None or any(math.hypot(p[0] - qx, p[1] - qy) <= CORNER_TOL
+                                     for qx, qy in only)
+        if abs(turn) <= CORNER_TURN or not chosen or (not fillet and turn < 0):
+            continue
+        cut[k] = _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
+    if not any(cut):
+        return loop
+    out = []
+    for k in range(n):
+        g = segs[k]
+        if cut[k] is not None:
+            out.append(cut[k][2])
+        start = cut[k][1] if cut[k] is not None else g.start
+        nxt = cut[(k + 1) % n]
+        end = nxt[0] if nxt is not None else g.end
+        out.append(with_ends(g, start, end) if (start, end) != (g.start, g.end) else g)
+    scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
+    return Loop(simplify([g for g in out if isinstance(g, Line) or g.sweep != 0], scale))
+
+
+def _offset(g, d: float):
+    """The carrier of segment ``g`` moved ``d`` mm to its left (None: a circle shrunk away)."""
+    from .curves import Line, carrier
+    c = carrier(g)
+    if isinstance(g, Line):
+        _, px, py, ux, uy = c
+        return ("L", px - d * uy, py + d * ux, ux, uy)
+    r = c[3] - d if g.sweep > 0 else c[3] + d       # left of a counter-clockwise arc: inward
+    return ("C", c[1], c[2], r) if r > 1e-12 else None
+
+
+def _fraction(g, p, from_end: bool) -> float:
+    """How far along segment ``g`` point ``p`` (on its carrier) lies from its start (or its
+    end), as a fraction of its length; negative before it."""
+    from .curves import Line
+    if isinstance(g, Line):
+        (x0, y0), (x1, y1) = g.start, g.end
+        L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
+        t = ((p[0] - x0) * (x1 - x0) + (p[1] - y0) * (y1 - y0)) / L2 if L2 else 0.0
+    else:
+        a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
+        d = (a - g.start_angle) * (1 if g.sweep > 0 else -1)
+        d = (d + math.pi) % (2 * math.pi) - math.pi          # nearest turn
+        t = d / abs(g.sweep) if g.sweep else 0.0
+    return 1.0 - t if from_end else t
+
+
+def _fillet_at(a, b, turn: float, r: float):
+    """(tangent point on a, tangent point on b, the fillet Arc) for radius ``r``, or None when
+    the tangent points fall outside the halves of ``a`` and ``b`` next to the corner."""
+    from .curves import Arc, foot, intersect
+    s = 1.0 if turn > 0 else -1.0
+    oa, ob = _offset(a, s * r), _offset(b, s * r)
+    if oa is None or ob is None:
+        return None
+    p = b.start
+    (ax, ay), (bx, by) = _dir(a, True), _dir(b, False)
+    # the guess: the line-line fillet center at this corner
+    mx, my = (-ay - by) * s, (ax + bx) * s
+    L = math.hypot(mx, my) or 1.0
+    h = r / max(math.cos(turn / 2), 1e-9)
+    c = intersect(oa, ob, (p[0] + mx / L * h, p[1] + my / L * h))
+    from .curves import carrier
+    ta, tb = foot(carrier(a), c), foot(carrier(b), c)
+    fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
+    if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
+        return None
+    a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
+    a2 = math.atan2(tb[1] - c[1], tb[0] - c[0])
+    sw = (a2 - a1) % (2 * math.pi)
+    if s < 0:
+        sw -= 2 * math.pi
+    if abs(sw) > math.pi + abs(turn):
+        return None
+    return ta, tb, Arc(c, r, a1, sw)
+
+
+def _fillet(a, b, turn: float, r: float):
+    got = _fillet_at(a, b, turn, r)
+    if got is not None:
+        return got
+    lo, hi = 0.0, r                  # the largest radius that fits: bisection
+    best = None
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        got = _fillet_at(a, b, turn, mid)
+        if got is None:
+            hi = mid
+        else:
+            lo, best = mid, got
+    return best
+
+
+def _dir(g, end: bool):
+    from .curves import tangent_at
+    return tangent_at(g, end)
+
+
+def _chamfer(a, b, d: float):
+    """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
+    segment (at most half of it)."""
+    from .curves import Line
+    pa, pb = _along(a, d, True), _along(b, d, False)
+    return pa, pb, Line(pa, pb)
+
+
+def _along(g, d: float, from_end: bool):
+    """The point ``d`` mm (at most half the segment) from ``g``'s end (or start)."""
+    from .curves import Line
+    d = min(d, g.length / 2)
+    if isinstance(g, Line):
+        (x0, y0), (x1, y1) = g.start, g.end
+        L = g.length or 1.0
+        t = 1.0 - d / L if from_end else d / L
+        return (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t)
+    da = d / g.radius * (1 if g.sweep > 0 else -1)
+    return g.at(g.end_angle - da if from_end else g.start_angle + da)

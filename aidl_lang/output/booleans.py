@@ -1,15 +1,19 @@
-"""From solved model to 2D shapes (Manifold booleans).
+"""From solved model to 2D shapes (Manifold booleans), keeping the exact curves.
 
-Closed curves become faces; lines and arcs whose endpoints meet in a cycle become one face.
-A solid is the union of its faces and solid children minus its hole children; a hole is the
-union of its faces; assembly children stay separate parts; drawing geometry is drawn as lines.
-Booleans use ``manifold3d.CrossSection``.  Circles and arcs are tessellated so that the chord
-deviation is below ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm).
+Every closed shape has an exact outline (:mod:`aidl_lang.geometry.curves`: a slot is two lines
+and two half circles meeting at their tangent points, a rounded rectangle four lines and four
+quarter arcs, a full round one two lines and two half circles; lines and arcs whose endpoints
+meet in a cycle become one loop).  A solid is the union of its faces and solid children minus
+its hole children; a hole is the union of its faces; assembly children stay separate parts;
+drawing geometry is drawn as lines.  Booleans use ``manifold3d.CrossSection`` on the outlines
+tessellated within ``CHORD_TOL`` (0.005 mm); :class:`~.exact.Provenance` records which exact
+curve each polygon edge came from, so the result goes back onto the exact curves
+(:mod:`.part`), and Fillet/Chamfer are cut on those exact loops.
 
 Besides the shapes, the renderer records what the exact outputs and the geometry checks need
-(:class:`Drawing` fields ``circles``, ``shapes``, ``cuts``, ``own``): every circle of the
-solved model (absolute center and radius, the source of arc recovery in
-:mod:`aidl_lang.output.part`), the shape of every structure, and what each hole cut.
+(:class:`Drawing` fields ``exact``, ``shapes``, ``cuts``, ``own``, ``empty_faces``): the
+provenance of every polygon, the shape of every structure, what each hole cut, and the faces
+that close on no area.
 """
 from __future__ import annotations
 
@@ -19,10 +23,12 @@ from ..records import dataclass, field
 import manifold3d as mf
 import numpy as np
 
+from ..geometry.curves import Arc, Circle, Line, Loop, carrier, reverse, simplify
 from ..geometry.model import Geometry, Model, Structure
 from ..geometry.operations import finish
 from ..geometry.tessellate import segments_for
 from ..geometry.text import text_strokes
+from .exact import Provenance
 
 CLOSE_TOL = 1e-6
 
@@ -49,8 +55,8 @@ class Drawing:
     lines: list[tuple[str, np.ndarray]] = field(default_factory=list)    # (style, Nx2 polyline)
     hole_outlines: list[np.ndarray] = field(default_factory=list)
     open_curves: list[Geometry] = field(default_factory=list)
-    # exact curves of the solved model, absolute: (cx, cy, r) in mm
-    circles: list[tuple[float, float, float]] = field(default_factory=list)
+    # the exact curves behind every polygon handed to Manifold (:mod:`.exact`)
+    exact: Provenance | None = None
     # engraving in exact form: ("line", p, q) | ("arc", c, r, a1, a2) | ("circle", c, r) |
     # ("poly", Nx2 closed polyline); with its style and source geometry
     strokes: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
@@ -62,6 +68,18 @@ class Drawing:
     # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
     # the file's); parts without one are missing
     thickness: dict = field(default_factory=dict)
+
+    # faces that close on no area: [(structure, geometry or first curve of the loop, area
+    # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
+    # are made from templates, docs/performance.md)
+    empty_faces = ()
+
+    @property
+    def circles(self) -> list[tuple[float, float, float]]:
+        """Every circle of the solved model's outlines, absolute: (cx, cy, r) in mm."""
+        if self.exact is None:
+            return []
+        return [c[1:] for c in self.exact.carriers if c[0] == "C"]
 
     def bounds(self):
         xs, ys = [], []
@@ -83,10 +101,8 @@ class Renderer:
     def __init__(self, model: Model):
         self.m = model
         self.x = model.xs()
-        self.circles: list[tuple[float, float, float]] = []
-
-    def _circle(self, c, r) -> None:
-        self.circles.append((float(c[0]), float(c[1]), float(abs(r))))
+        self.exact = Provenance()
+        self.empty_faces: list = []
 
     def P(self, p) -> np.ndarray:
         ox, oy = 0.0, 0.0
@@ -97,49 +113,44 @@ class Renderer:
             s = s.parent
         return np.array([self.x[p.ix] + ox, self.x[p.iy] + oy])
 
-    # -------------------------------------------------------- outlines
-    def arc_points(self, c, r, a1, a2) -> np.ndarray:
+    def _pt(self, p) -> tuple[float, float]:
+        q = self.P(p)
+        return (float(q[0]), float(q[1]))
+
+    # -------------------------------------------------------- exact outlines
+    def segment(self, g: Geometry):
+        """The exact segment of an open curve (a Line, or an Arc counter-clockwise from its
+        start to its end point on the circle through its start)."""
+        if g.kind == "Line":
+            return Line(self._pt(g.points["start"]), self._pt(g.points["end"]))
+        c, s, e = (self._pt(g.points[n]) for n in ("center", "start", "end"))
+        r = math.hypot(s[0] - c[0], s[1] - c[1])
+        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
+        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
         sweep = (a2 - a1) % (2 * math.pi)
         if sweep < 1e-12:
             sweep = 2 * math.pi
-        n = segments_for(r, sweep)
-        t = a1 + np.linspace(0.0, sweep, n + 1)
-        return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
-
-    def circle_points(self, c, r) -> np.ndarray:
-        n = segments_for(r)
-        t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-        return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+        return Arc(c, r, a1, sweep)
 
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line or Arc), from start to end."""
-        if g.kind == "Line":
-            return np.array([self.P(g.points["start"]), self.P(g.points["end"])])
-        c, s, e = (self.P(g.points[n]) for n in ("center", "start", "end"))
-        r = float(np.hypot(*(s - c)))
-        self._circle(c, r)
-        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
-        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
-        pts = self.arc_points(c, r, a1, a2)
-        pts[0], pts[-1] = s, e
-        return pts
+        seg = self.segment(g)
+        if isinstance(seg, Line):
+            return np.array([seg.start, seg.end])
+        pts = Loop([seg]).points()
+        return np.vstack([pts, [seg.end]])
 
-    def face(self, g: Geometry) -> mf.CrossSection | None:
+    def outline(self, g: Geometry) -> Loop | None:
+        """The exact closed outline of a shape (any orientation), or None when it has none."""
         k = g.kind
         if k == "Circle":
             r = abs(self.x[g.scalars["radius"].index])
+            return Loop([Circle(self._pt(g.points["center"]), float(r))]) if r > 0 else None
+        if k == "Slot":
+            r = float(abs(self.x[g.scalars["radius"].index]))
             if r <= 0:
                 return None
-            c = self.P(g.points["center"])
-            self._circle(c, r)
-            return _cs(self.circle_points(c, r))
-        if k == "Slot":
-            r = abs(self.x[g.scalars["radius"].index])
-            a, b = self.P(g.points["start"]), self.P(g.points["end"])
-            self._circle(a, r)
-            self._circle(b, r)
-            pts = np.vstack([self.circle_points(a, r), self.circle_points(b, r)])
-            return mf.CrossSection.hull_points(pts.tolist())
+            return Loop(slot_outline(self._pt(g.points["start"]), self._pt(g.points["end"]), r))
         if k == "Ellipse":
             rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
             if rx <= 0 or ry <= 0:
@@ -149,27 +160,35 @@ class Renderer:
             t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
             u, v = rx * np.cos(t), ry * np.sin(t)
             cs, sn = math.cos(rot), math.sin(rot)
-            return _cs(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
+            return _polygon(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid"):
             from ..geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
-            cs = _cs(pts)
             if k == "RoundedRectangle":
                 r = float(g.data.get("corner_radius", 0.0))
-                w = abs(self.x[g.scalars["width"].index])
-                h = abs(self.x[g.scalars["height"].index])
-                r = min(r, w / 2 - 1e-6, h / 2 - 1e-6)
                 if r > 0:
-                    segs = segments_for(r)
-                    inner = cs.offset(-r, mf.JoinType.Miter, 2.0)
-                    for poly in inner.to_polygons():       # the corner arcs' centers
-                        for q in poly:
-                            self._circle(q, r)
-                    cs = inner.offset(r, mf.JoinType.Round, 2.0, segs)
-            return cs
+                    return Loop(rounded_outline(pts, r))
+            return _polygon(pts)
         return None
+
+    def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        lp = self.outline(g)
+        if lp is None:
+            return None
+        return self._face(lp, g, s)
+
+    def _face(self, lp: Loop, g: Geometry, s: Structure | None) -> mf.CrossSection | None:
+        """The CrossSection of an exact loop; a loop of no area is recorded in
+        :attr:`Drawing.empty_faces` and gives None."""
+        scale = max(1.0, max((abs(v) for seg in lp.segments for p in _ends(seg) for v in p),
+                             default=1.0))
+        if abs(lp.area) <= 1e-9 * scale:
+            if s is not None:
+                self.empty_faces.append((s, g, abs(lp.area)))
+            return None
+        return self.exact.face(lp)
 
     # -------------------------------------------------------- structures
     def own_faces(self, s: Structure, out: Drawing) -> list:
@@ -189,16 +208,17 @@ class Renderer:
             elif g.kind == "Point":
                 continue
             else:
-                f = self.face(g)
+                f = self.face(g, s)
                 if f is not None and not f.is_empty():
                     faces.append(f)
                     out.own.setdefault(s, []).append((g, f))
         if open_curves:
             loops, rest = self.loops(open_curves)
             for lp, chain in loops:
-                f = _cs(lp)
-                faces.append(f)
-                out.own.setdefault(s, []).append((chain[0], f))
+                f = self._face(lp, chain[0], s)
+                if f is not None and not f.is_empty():
+                    faces.append(f)
+                    out.own.setdefault(s, []).append((chain[0], f))
             for g in rest:
                 out.open_curves.append(g)
                 out.lines.append(("open", self.curve(g)))
@@ -206,8 +226,11 @@ class Renderer:
         return faces
 
     def loops(self, curves: list[Geometry]):
-        """Chain open curves whose endpoints meet into closed loops."""
-        polys = [self.curve(g) for g in curves]
+        """Chain open curves whose endpoints meet into closed exact loops: ``([(Loop, the
+        curves in order)], the curves left open)``.  Where a line meets an arc, the line's end
+        is the arc's exact end (the solve leaves them equal to its tolerance)."""
+        segs = [self.segment(g) for g in curves]
+        ends = [(self._pt(g.points["start"]), self._pt(g.points["end"])) for g in curves]
         used = [False] * len(curves)
         loops, rest = [], []
         for i in range(len(curves)):
@@ -215,43 +238,41 @@ class Renderer:
                 continue
             chain = [i]
             used[i] = True
-            pts = [polys[i]]
-            start, end = polys[i][0], polys[i][-1]
+            run = [segs[i]]
+            start, end = ends[i]
             grown = True
-            while grown and np.hypot(*(end - start)) > _tol(start):
+            while grown and _dist(end, start) > _tol(start):
                 grown = False
                 for j in range(len(curves)):
                     if used[j]:
                         continue
-                    pj = polys[j]
-                    if np.hypot(*(pj[0] - end)) <= _tol(end):
-                        pts.append(pj)
-                    elif np.hypot(*(pj[-1] - end)) <= _tol(end):
-                        pts.append(pj[::-1])
+                    if _dist(ends[j][0], end) <= _tol(end):
+                        run.append(segs[j])
+                        end = ends[j][1]
+                    elif _dist(ends[j][1], end) <= _tol(end):
+                        run.append(reverse(segs[j]))
+                        end = ends[j][0]
                     else:
                         continue
                     used[j] = True
                     chain.append(j)
-                    end = pts[-1][-1]
                     grown = True
                     break
-            if np.hypot(*(end - start)) <= _tol(start) and len(chain) >= 2 or (
-                    len(chain) == 1 and len(pts[0]) > 3 and np.hypot(*(end - start)) <= _tol(start)):
-                loops.append((np.vstack([p[:-1] for p in pts]), [curves[j] for j in chain]))
+            closed = _dist(end, start) <= _tol(start)
+            if closed and (len(chain) >= 2 or isinstance(run[0], Arc)):
+                loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:
                 rest += [curves[j] for j in chain]
         return loops, rest
 
     def stroke(self, g: Geometry, style: str, out: Drawing) -> None:
         """The exact engraving stroke of a Line or Arc."""
-        if g.kind == "Line":
-            out.strokes.append((style, ("line", self.P(g.points["start"]), self.P(g.points["end"])), g))
+        seg = self.segment(g)
+        if isinstance(seg, Line):
+            out.strokes.append((style, ("line", np.array(seg.start), np.array(seg.end)), g))
             return
-        c, s, e = (self.P(g.points[n]) for n in ("center", "start", "end"))
-        r = float(np.hypot(*(s - c)))
-        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
-        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
-        out.strokes.append((style, ("arc", c, r, a1, a2), g))
+        out.strokes.append((style, ("arc", np.array(seg.center), seg.radius, seg.start_angle,
+                                    seg.end_angle), g))
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
         if g.kind in ("Line", "Arc"):
@@ -269,19 +290,21 @@ class Renderer:
         elif g.kind == "Point":
             return
         elif g.kind == "Circle":
-            r = abs(self.x[g.scalars["radius"].index])
+            r = float(abs(self.x[g.scalars["radius"].index]))
             c = self.P(g.points["center"])
-            self._circle(c, r)
-            out.lines.append(("drawing", np.vstack([self.circle_points(c, r),
-                                                    self.circle_points(c, r)[:1]])))
+            circle = Circle((float(c[0]), float(c[1])), r)
+            self.exact.carrier_id(carrier(circle))
+            pts = Loop([circle]).points()
+            out.lines.append(("drawing", np.vstack([pts, pts[:1]])))
             out.strokes.append(("drawing", ("circle", c, r), g))
         else:
-            f = self.face(g)
-            if f is not None:
-                for poly in f.to_polygons():
-                    pl = np.asarray(poly)
-                    out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
-                    out.strokes.append(("drawing", ("poly", pl), g))
+            lp = self.outline(g)
+            if lp is not None and lp.segments:
+                for seg in lp.segments:
+                    self.exact.carrier_id(carrier(seg))
+                pl = lp.points()
+                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
+                out.strokes.append(("drawing", ("poly", pl, lp), g))
 
     def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
         """Union of a solid or hole structure, holes subtracted for solids."""
@@ -304,17 +327,18 @@ class Renderer:
             for c, h in holes:
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
             acc = acc - cut
-        if getattr(s, "finish", None):
-            acc = finish(s, acc, self.x)
+        if getattr(s, "finish", None) and not acc.is_empty():
+            loops = finish(s, self.exact.loops(acc), self.x)
+            acc = self.exact.section(loops)
         out.shapes[s] = acc
         return acc
 
     def construct(self, g: Geometry, out: Drawing) -> None:
         """Construction geometry, kept only for ``--show construction``."""
-        mark = len(out.strokes), len(out.lines), len(self.circles)
+        mark = len(out.strokes), len(out.lines)
         self.draw_lines(g, out)
         out.construction += out.strokes[mark[0]:]
-        del out.strokes[mark[0]:], out.lines[mark[1]:], self.circles[mark[2]:]
+        del out.strokes[mark[0]:], out.lines[mark[1]:]
 
     def children(self, s: Structure, out: Drawing) -> None:
         """The children of a drawing or an assembly: each drawn, or a separate part."""
@@ -359,7 +383,8 @@ class Renderer:
             self.drawing(root, out)
         else:
             self.part(root, out)
-        out.circles = self.circles
+        out.exact = self.exact
+        out.empty_faces = self.empty_faces
         default = getattr(self.m, "thickness", None)
         for name, s in out.part_of.items():
             t = next((getattr(a, "thickness") for a in [s, *s.ancestors()]
@@ -370,20 +395,97 @@ class Renderer:
 
 
 def _tol(p) -> float:
-    return max(1e-6, 1e-7 * float(np.max(np.abs(p))))
+    return max(1e-6, 1e-7 * max(abs(p[0]), abs(p[1])))
 
 
-def _cs(pts) -> mf.CrossSection:
-    pts = np.asarray(pts, dtype=float)
-    if len(pts) < 3:
-        return mf.CrossSection()
-    return mf.CrossSection([pts.tolist()], mf.FillRule.NonZero) if _area(pts) > 0 else \
-        mf.CrossSection([pts[::-1].tolist()], mf.FillRule.NonZero)
+def _dist(p, q) -> float:
+    return math.hypot(p[0] - q[0], p[1] - q[1])
 
 
-def _area(pts) -> float:
-    x, y = pts[:, 0], pts[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+def _ends(seg):
+    if isinstance(seg, Circle):
+        c, r = seg.center, seg.radius
+        return ((c[0] - r, c[1] - r), (c[0] + r, c[1] + r))
+    return (seg.start, seg.end)
+
+
+def _weld(run: list) -> list:
+    """A closed chain with each line's ends moved onto its neighbours' exact ends (an arc's
+    ends are where its angles put them); consecutive lines share their solved points."""
+    n = len(run)
+    out = list(run)
+    for i in range(n):
+        a, b = out[i - 1], out[i]
+        if isinstance(b, Line):
+            out[i] = Line(a.end, b.end) if not isinstance(a, Line) or a.end != b.start else b
+        elif isinstance(a, Line):
+            out[i - 1] = Line(a.start, b.start)
+    return simplify(out)
+
+
+def _polygon(pts) -> Loop | None:
+    """The exact loop of a polygon's vertices (N x 2), repeated vertices dropped."""
+    P = [(float(x), float(y)) for x, y in np.asarray(pts, dtype=float)]
+    segs = [Line(P[i], P[(i + 1) % len(P)]) for i in range(len(P))]
+    segs = simplify(segs, max((abs(v) for p in P for v in p), default=1.0))
+    return Loop(segs) if len(segs) >= 3 else Loop([])
+
+
+def slot_outline(a, b, r: float) -> list:
+    """The exact outline of a slot whose end circles (radius ``r`` mm) are centred on ``a``
+    and ``b``: two lines and two half circles, counter-clockwise, the lines meeting the
+    arcs at their tangent points; a circle when ``a`` and ``b`` coincide."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L = math.hypot(dx, dy)
+    if L <= 1e-12 * max(1.0, abs(a[0]), abs(a[1])):
+        return [Circle((a[0], a[1]), r)]
+    ux, uy = dx / L, dy / L
+    nx, ny = -uy, ux                        # left of a -> b
+    right = math.atan2(-ny, -nx)            # the angle of -n
+    p1 = (a[0] - r * nx, a[1] - r * ny)
+    p2 = (b[0] - r * nx, b[1] - r * ny)
+    p3 = (b[0] + r * nx, b[1] + r * ny)
+    p4 = (a[0] + r * nx, a[1] + r * ny)
+    return [Line(p1, p2), Arc((b[0], b[1]), r, right, math.pi), Line(p3, p4),
+            Arc((a[0], a[1]), r, right + math.pi, math.pi)]
+
+
+def rounded_outline(corners, r: float) -> list:
+    """The exact outline of a rectangle (four corners in order, N x 2, mm) with corners of
+    radius ``r``, clamped to half the shorter side: four lines and four quarter arcs,
+    counter-clockwise; at half the shorter side the short lines vanish and their arcs merge
+    into half circles, a square at half its side is a circle."""
+    P = [np.asarray(p, dtype=float) for p in corners]
+    if _shoelace(P) < 0:
+        P = P[::-1]
+    edges = [P[(i + 1) % 4] - P[i] for i in range(4)]
+    lengths = [float(np.hypot(*e)) for e in edges]
+    r = min(r, min(lengths) / 2)
+    u = [e / L for e, L in zip(edges, lengths)]
+    segs = []
+    for i in range(4):
+        j = (i + 1) % 4
+        a = P[i] + r * u[i]
+        b = P[j] - r * u[i]
+        segs.append(Line(_t(a), _t(b)))
+        c = P[j] - r * u[i] + r * u[j]                  # the corner arc's center
+        a0 = math.atan2(-u[j][1], -u[j][0])             # from the edge's end, inward normal
+        segs.append(Arc(_t(c), r, a0, math.pi / 2))
+    # each line starts where the previous arc ends (exactly, through the same angles)
+    fixed = []
+    for i in range(0, 8, 2):
+        prev_arc = segs[i - 1]
+        fixed += [Line(prev_arc.end, segs[i + 1].start), segs[i + 1]]
+    return simplify(fixed, max(abs(float(v)) for p in P for v in p))
+
+
+def _shoelace(P) -> float:
+    n = len(P)
+    return 0.5 * sum(P[i][0] * P[(i + 1) % n][1] - P[(i + 1) % n][0] * P[i][1] for i in range(n))
+
+
+def _t(p):
+    return (float(p[0]), float(p[1]))
 
 
 def render_model(model: Model) -> Drawing:

@@ -1,0 +1,357 @@
+"""Exact plane curves: lines, circular arcs and circles, closed loops of them, and the
+computations on their *carriers* (the infinite line or the full circle a segment lies on).
+
+These are the output's geometry (issue "Exact by construction"): every shape of a program has
+an exact outline made of these segments (:mod:`aidl_lang.output.booleans` builds them from the
+solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.exact`),
+fillets and chamfers are cut on them (:mod:`aidl_lang.geometry.operations`), and every writer
+reads them.  All lengths are in millimetres, angles in radians, counter-clockwise positive,
+y up.
+
+Carriers are tuples, compared and intersected without building objects:
+
+* ``("L", px, py, ux, uy)``: the line through ``(px, py)`` with unit direction ``(ux, uy)``;
+* ``("C", cx, cy, r)``: the circle of center ``(cx, cy)`` and radius ``r > 0``.
+
+Where two carriers meet, :func:`intersect` gives the meeting point nearest to a guess; where
+they touch (a tangent join: a slot's side and its end, a fillet and its edges) or come within
+:data:`TANGENT` of touching, it gives the touching point itself, so a tangent join stays
+tangent instead of being split into two close, ill-conditioned roots.
+"""
+from __future__ import annotations
+
+import math
+
+from ..records import dataclass
+
+Point = tuple[float, float]
+
+TANGENT = 1e-5       # relative half-chord below which two crossing points count as one touch
+EPS = 1e-9           # mm: shorter segments are dropped, closer points are one point
+
+
+def tolerance(scale: float) -> float:
+    """:data:`EPS` for coordinates up to ``scale`` mm (grown past 1 m, where doubles hold
+    fewer decimals)."""
+    return EPS * max(1.0, scale * 1e-3)
+
+
+@dataclass(frozen=True)
+class Line:
+    """The straight segment from ``start`` to ``end`` (mm)."""
+    start: Point
+    end: Point
+
+    @property
+    def length(self) -> float:
+        return math.dist(self.start, self.end)
+
+
+@dataclass(frozen=True)
+class Arc:
+    """Circular arc from ``start_angle`` sweeping ``sweep`` radians (> 0 counter-clockwise)."""
+    center: Point
+    radius: float
+    start_angle: float
+    sweep: float
+
+    @property
+    def end_angle(self) -> float:
+        return self.start_angle + self.sweep
+
+    @property
+    def ccw(self) -> bool:
+        return self.sweep > 0
+
+    def at(self, a: float) -> Point:
+        return (self.center[0] + self.radius * math.cos(a), self.center[1] + self.radius * math.sin(a))
+
+    @property
+    def start(self) -> Point:
+        return self.at(self.start_angle)
+
+    @property
+    def end(self) -> Point:
+        return self.at(self.end_angle)
+
+    @property
+    def length(self) -> float:
+        return self.radius * abs(self.sweep)
+
+
+@dataclass(frozen=True)
+class Circle:
+    """A full circle; ``ccw`` False when it is a hole (clockwise) of its part."""
+    center: Point
+    radius: float
+    ccw: bool = True
+
+    @property
+    def length(self) -> float:
+        return 2 * math.pi * self.radius
+
+
+Segment = Line | Arc | Circle
+
+
+@dataclass
+class Loop:
+    """A closed outline: consecutive segments, each ending where the next starts.  A loop
+    that runs clockwise (negative :attr:`area`) is a hole of its part."""
+    segments: list[Segment]
+
+    @property
+    def area(self) -> float:
+        """Signed area (mm^2): shoelace over the segment ends plus each arc's circular segment."""
+        if len(self.segments) == 1 and isinstance(self.segments[0], Circle):
+            c = self.segments[0]
+            return (1 if c.ccw else -1) * math.pi * c.radius ** 2
+        a = 0.0
+        for s in self.segments:
+            (x0, y0), (x1, y1) = s.start, s.end
+            a += 0.5 * (x0 * y1 - x1 * y0)
+            if isinstance(s, Arc):
+                t = s.sweep
+                a += 0.5 * s.radius ** 2 * (t - math.sin(t))
+        return a
+
+    @property
+    def perimeter(self) -> float:
+        return sum(s.length for s in self.segments)
+
+    @property
+    def is_hole(self) -> bool:
+        return self.area < 0
+
+    def points(self, tol: float | None = None):
+        """A polyline of the loop (N x 2 array, closed implicitly), arcs sampled by
+        :func:`~aidl_lang.geometry.tessellate.segments_for` chords."""
+        import numpy as np
+        xs, ys = [], []
+        sample_xy(self.segments, xs, ys)
+        return np.column_stack([np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)]) \
+            if xs else np.zeros((0,), dtype=float)
+
+    def reversed(self) -> "Loop":
+        return Loop([reverse(s) for s in reversed(self.segments)])
+
+
+def sample_xy(segments, xs: list, ys: list) -> None:
+    """Append the vertices of :meth:`Loop.points` of ``segments`` to ``xs`` and ``ys``: each
+    line's start, each arc's start and its interior chord ends, each circle's chord ends
+    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords, mm)."""
+    from .tessellate import segments_for
+    cos, sin, pi = math.cos, math.sin, math.pi
+    for s in segments:
+        if isinstance(s, Line):
+            xs.append(s.start[0])
+            ys.append(s.start[1])
+        elif isinstance(s, Arc):
+            cx, cy = s.center
+            r, a0, sw = s.radius, s.start_angle, s.sweep
+            n = max(1, segments_for(r, abs(sw)))
+            angles = [a0 + sw * i / n for i in range(n)]
+            xs += [cx + r * cos(a) for a in angles]
+            ys += [cy + r * sin(a) for a in angles]
+        else:
+            cx, cy = s.center
+            r = s.radius
+            n = segments_for(r)
+            sg = 1 if s.ccw else -1
+            angles = [sg * 2 * pi * i / n for i in range(n)]
+            xs += [cx + r * cos(a) for a in angles]
+            ys += [cy + r * sin(a) for a in angles]
+
+
+# ------------------------------------------------------------------ segments
+def reverse(s: Segment) -> Segment:
+    """The same segment run the other way."""
+    if isinstance(s, Line):
+        return Line(s.end, s.start)
+    if isinstance(s, Arc):
+        return Arc(s.center, s.radius, s.start_angle + s.sweep, -s.sweep)
+    return Circle(s.center, s.radius, not s.ccw)
+
+
+def carrier(s: Segment) -> tuple:
+    """The carrier of a segment: ``("L", px, py, ux, uy)`` or ``("C", cx, cy, r)``."""
+    if isinstance(s, Line):
+        (x0, y0), (x1, y1) = s.start, s.end
+        L = math.hypot(x1 - x0, y1 - y0)
+        if L == 0.0:
+            return ("L", x0, y0, 1.0, 0.0)
+        return ("L", x0, y0, (x1 - x0) / L, (y1 - y0) / L)
+    return ("C", float(s.center[0]), float(s.center[1]), float(s.radius))
+
+
+def tangent_at(s: Segment, end: bool) -> Point:
+    """Unit direction of travel of ``s`` at its end (``end``) or start."""
+    if isinstance(s, Line):
+        (x0, y0), (x1, y1) = s.start, s.end
+        L = math.hypot(x1 - x0, y1 - y0) or 1.0
+        return ((x1 - x0) / L, (y1 - y0) / L)
+    a = s.end_angle if end else s.start_angle
+    sg = 1.0 if s.sweep > 0 else -1.0
+    return (-sg * math.sin(a), sg * math.cos(a))
+
+
+def turn_between(a: Segment, b: Segment) -> float:
+    """Signed angle (radians, left turn positive) from ``a``'s direction at its end to
+    ``b``'s at its start: 0 at a tangent join."""
+    (ax, ay), (bx, by) = tangent_at(a, True), tangent_at(b, False)
+    return math.atan2(ax * by - ay * bx, ax * bx + ay * by)
+
+
+def with_ends(s: Segment, p: Point, q: Point) -> Segment:
+    """``s`` cut (or extended) to run from ``p`` to ``q`` on its own carrier, turning the
+    same way (an arc keeps the sign of its sweep; its size comes from the two angles)."""
+    if isinstance(s, Line):
+        return Line(p, q)
+    cx, cy = s.center
+    a1 = math.atan2(p[1] - cy, p[0] - cx)
+    a2 = math.atan2(q[1] - cy, q[0] - cx)
+    sw = (a2 - a1) % (2 * math.pi)
+    if s.sweep < 0:
+        sw -= 2 * math.pi
+    if abs(sw) < 1e-15 or abs(abs(sw) - 2 * math.pi) < 1e-15:
+        sw = 0.0 if abs(s.sweep) < math.pi else math.copysign(2 * math.pi, s.sweep)
+    return Arc(s.center, s.radius, a1, sw)
+
+
+def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
+    """A closed chain without zero-length segments (below :data:`EPS`, relative to
+    ``scale``), with consecutive segments on one carrier merged (two quarter arcs of one
+    circle become a semicircle), and a chain that is one whole circle as a :class:`Circle`."""
+    tol = tolerance(scale)
+    segs = [s for s in segments if isinstance(s, Circle) or s.length > tol]
+    changed = True
+    while changed and len(segs) > 1:
+        changed = False
+        for i in range(len(segs)):
+            a, b = segs[i - 1], segs[i]
+            if _mergeable(a, b, tol):
+                m = Line(a.start, b.end) if isinstance(a, Line) else \
+                    Arc(a.center, a.radius, a.start_angle, a.sweep + b.sweep)
+                if i == 0:
+                    segs = [m] + segs[1:-1]
+                else:
+                    segs[i - 1:i + 1] = [m]
+                changed = True
+                break
+    if len(segs) == 1 and isinstance(segs[0], Arc) and abs(abs(segs[0].sweep) - 2 * math.pi) < 1e-9:
+        a = segs[0]
+        return [Circle(a.center, a.radius, a.sweep > 0)]
+    return segs
+
+
+def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
+    if isinstance(a, Line) and isinstance(b, Line):
+        return abs(turn_between(a, b)) < 1e-12 and same_carrier(carrier(a), carrier(b), tol)
+    if isinstance(a, Arc) and isinstance(b, Arc):
+        return (a.sweep > 0) == (b.sweep > 0) and same_carrier(carrier(a), carrier(b), tol) \
+            and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
+    return False
+
+
+# ------------------------------------------------------------------ carriers
+def same_carrier(a: tuple, b: tuple, tol: float = EPS) -> bool:
+    """True when two carriers are the same line or circle (within ``tol`` mm)."""
+    if a[0] != b[0]:
+        return False
+    if a[0] == "C":
+        return math.hypot(a[1] - b[1], a[2] - b[2]) <= tol and abs(a[3] - b[3]) <= tol
+    _, px, py, ux, uy = a
+    _, qx, qy, vx, vy = b
+    if abs(ux * vy - uy * vx) > 1e-12:
+        return False
+    return abs(ux * (qy - py) - uy * (qx - px)) <= tol
+
+
+def distance_to(c: tuple, p: Point) -> float:
+    """Distance (mm) from point ``p`` to carrier ``c``."""
+    if c[0] == "L":
+        _, px, py, ux, uy = c
+        return abs(ux * (p[1] - py) - uy * (p[0] - px))
+    _, cx, cy, r = c
+    return abs(math.hypot(p[0] - cx, p[1] - cy) - r)
+
+
+def foot(c: tuple, p: Point) -> Point:
+    """The point of carrier ``c`` nearest to ``p``."""
+    if c[0] == "L":
+        _, px, py, ux, uy = c
+        t = (p[0] - px) * ux + (p[1] - py) * uy
+        return (px + t * ux, py + t * uy)
+    _, cx, cy, r = c
+    dx, dy = p[0] - cx, p[1] - cy
+    L = math.hypot(dx, dy)
+    if L == 0.0:
+        return (cx + r, cy)
+    return (cx + dx / L * r, cy + dy / L * r)
+
+
+def intersect(a: tuple, b: tuple, near: Point) -> Point:
+    """The point where carriers ``a`` and ``b`` meet nearest to ``near``.  Two crossing
+    points closer together than :data:`TANGENT` times the radius count as one touch and give
+    the touching point; carriers that do not meet (parallel lines, circles apart) give their
+    point of closest approach on ``a``."""
+    if a[0] == "L" and b[0] == "L":
+        return _line_line(a, b, near)
+    if a[0] == "L":
+        return _line_circle(a, b, near)
+    if b[0] == "L":
+        return _line_circle(b, a, near)
+    return _circle_circle(a, b, near)
+
+
+def _line_line(a, b, near):
+    _, px, py, ux, uy = a
+    _, qx, qy, vx, vy = b
+    den = ux * vy - uy * vx
+    if abs(den) < 1e-14:
+        return foot(a, near)
+    t = ((qx - px) * vy - (qy - py) * vx) / den
+    return (px + t * ux, py + t * uy)
+
+
+def _line_circle(ln, c, near):
+    _, px, py, ux, uy = ln
+    _, cx, cy, r = c
+    fx, fy = cx - px, cy - py
+    t0 = fx * ux + fy * uy                      # foot of the center on the line
+    d = ux * fy - uy * fx                       # signed distance of the center from the line
+    h2 = (r - d) * (r + d)
+    if h2 <= (TANGENT * r) ** 2:
+        return (px + t0 * ux, py + t0 * uy)
+    h = math.sqrt(h2)
+    best, dist = None, math.inf
+    for t in (t0 - h, t0 + h):
+        q = (px + t * ux, py + t * uy)
+        dq = math.hypot(q[0] - near[0], q[1] - near[1])
+        if dq < dist:
+            best, dist = q, dq
+    return best
+
+
+def _circle_circle(c1, c2, near):
+    _, x1, y1, r1 = c1
+    _, x2, y2, r2 = c2
+    dx, dy = x2 - x1, y2 - y1
+    D = math.hypot(dx, dy)
+    if D < 1e-15:
+        return foot(c1, near)
+    ux, uy = dx / D, dy / D
+    a = (r1 * r1 - r2 * r2 + D * D) / (2 * D)
+    h2 = (r1 - a) * (r1 + a)
+    if h2 <= (TANGENT * min(r1, r2)) ** 2:
+        s = 1.0 if a >= 0 else -1.0                # the touching point, on the center line
+        return (x1 + s * r1 * ux, y1 + s * r1 * uy)
+    h = math.sqrt(h2)
+    mx, my = x1 + a * ux, y1 + a * uy
+    best, dist = None, math.inf
+    for sg in (1.0, -1.0):
+        q = (mx - sg * h * uy, my + sg * h * ux)
+        dq = math.hypot(q[0] - near[0], q[1] - near[1])
+        if dq < dist:
+            best, dist = q, dq
+    return best

@@ -1,0 +1,449 @@
+"""Provenance: the booleans run on polygons, their result is put back on the exact curves.
+
+Every face a renderer hands to Manifold is an exact :class:`~aidl_lang.geometry.curves.Loop`
+(lines, arcs, circles).  :meth:`Provenance.section` tessellates it — every segment end is a
+polygon vertex, every arc is cut into chords within
+:data:`~aidl_lang.geometry.tessellate.CHORD_TOL` — and records, for each chord, the *carrier*
+it came from (the segment's infinite line or full circle) and, for each segment end, the exact
+point.  A boolean's result polygon (Manifold keeps edges on their input edges: every result
+edge is a piece of one input chord, every result vertex an input vertex or the crossing of two
+chords, to its 1e-8 mm grid) is then rebuilt by :meth:`Provenance.recover`:
+
+1. each result edge is matched to the input chord that contains it (a uniform grid over the
+   chords, so a part costs O(n) for n edges), which names its carrier;
+2. consecutive edges on one carrier form a *run*: one :class:`Line` or one :class:`Arc`
+   (a loop that is one circle's run is a :class:`Circle`);
+3. each vertex between two runs becomes exact: the input segment end it stands for, when it
+   lies on both carriers, else the carriers' exact intersection nearest to it
+   (:func:`~aidl_lang.geometry.curves.intersect`: line-line, line-circle, circle-circle;
+   touching carriers give their touching point, so a tangent join stays tangent);
+4. a run whose exact ends come out in the wrong order or closer than
+   :data:`~aidl_lang.geometry.curves.EPS` (an overlap thinner than the chords can show) is
+   dropped and its neighbours joined at their own intersection.
+
+So every vertex of an output loop lies on the curves that meet there to floating-point
+accuracy, independent of the tessellation.  An edge no chord explains (none is known today)
+stays a straight :class:`Line` between its polygon vertices; :attr:`Provenance.unmatched`
+counts them.
+"""
+from __future__ import annotations
+
+import math
+
+import manifold3d as mf
+import numpy as np
+
+from ..geometry.curves import (Arc, Circle, Line, Loop, carrier, distance_to, foot, intersect,
+                               same_carrier, simplify, tolerance)
+from ..geometry.tessellate import CHORD_TOL, segments_for
+
+MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
+SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
+
+
+class Provenance:
+    """The exact curves behind every polygon handed to Manifold, and the way back.
+
+    ``carriers[k]`` is a carrier tuple (``("L", px, py, ux, uy)`` or ``("C", cx, cy, r)``,
+    mm); each chord of a tessellated face is stored with its carrier's index; ``ends`` are the
+    exact segment ends (mm), each with the carriers of the two segments that meet there."""
+
+    def __init__(self):
+        self.carriers: list[tuple] = []
+        self._key: dict = {}
+        self._a: list = []            # chord starts, ends (x, y) and carrier index
+        self._b: list = []
+        self._c: list = []
+        self._ends: list = []         # (x, y, carrier before, carrier after)
+        self._index = None
+        self.unmatched = 0
+
+    # ------------------------------------------------------------ forward: faces
+    def carrier_id(self, c: tuple) -> int:
+        """The index of carrier ``c``, registered on first use (equal carriers share one)."""
+        if c[0] == "C":
+            key = ("C", round(c[1], 9), round(c[2], 9), round(c[3], 9))
+        else:
+            _, px, py, ux, uy = c
+            if ux < 0 or (ux == 0 and uy < 0):
+                ux, uy = -ux, -uy
+            key = ("L", round(ux, 12), round(uy, 12), round(ux * py - uy * px, 9))
+        k = self._key.get(key)
+        if k is None:
+            k = self._key[key] = len(self.carriers)
+            self.carriers.append(c)
+        return k
+
+    def polygon(self, loop: Loop) -> np.ndarray:
+        """The tessellated polygon (N x 2, closed implicitly) of an exact ``loop``, its
+        chords and segment ends recorded."""
+        segs = loop.segments
+        xs: list = []
+        ys: list = []
+        ids: list = []
+        for s in segs:
+            k = self.carrier_id(carrier(s))
+            if isinstance(s, Line):
+                xs.append(float(s.start[0]))
+                ys.append(float(s.start[1]))
+                ids.append(k)
+                continue
+            cx, cy = s.center
+            r = s.radius
+            if isinstance(s, Circle):
+                n = segments_for(r)
+                sg = 1.0 if s.ccw else -1.0
+                t = [sg * 2 * math.pi * i / n for i in range(n)]
+            else:
+                n = max(1, segments_for(r, abs(s.sweep)))
+                t = [s.start_angle + s.sweep * i / n for i in range(n)]
+            xs += [cx + r * math.cos(a) for a in t]
+            ys += [cy + r * math.sin(a) for a in t]
+            ids += [k] * n
+        if not xs:
+            return np.zeros((0, 2))
+        P = np.column_stack([np.asarray(xs, float), np.asarray(ys, float)])
+        self._a.append(P)
+        self._b.append(np.roll(P, -1, axis=0))
+        self._c.append(np.asarray(ids, dtype=np.int64))
+        if len(segs) > 1:
+            for i, s in enumerate(segs):
+                before = self.carrier_id(carrier(segs[i - 1]))
+                x, y = s.start
+                self._ends.append((float(x), float(y), before, self.carrier_id(carrier(s))))
+        self._index = None
+        return P
+
+    def face(self, loop: Loop) -> mf.CrossSection:
+        """A Manifold ``CrossSection`` of one exact closed ``loop`` (either orientation)."""
+        if loop.area < 0:
+            loop = loop.reversed()
+        P = self.polygon(loop)
+        if len(P) < 3:
+            return mf.CrossSection()
+        return mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
+
+    def section(self, loops: list[Loop]) -> mf.CrossSection:
+        """A Manifold ``CrossSection`` of exact ``loops`` as :meth:`loops` gives them (outer
+        loops counter-clockwise, holes clockwise)."""
+        polys = [P.tolist() for P in (self.polygon(lp) for lp in loops) if len(P) >= 3]
+        return mf.CrossSection(polys, mf.FillRule.NonZero) if polys else mf.CrossSection()
+
+    # ------------------------------------------------------------ back: result polygons
+    def loops(self, shape: mf.CrossSection) -> list[Loop]:
+        """The exact loops of a boolean result (outer loops counter-clockwise, holes
+        clockwise, as Manifold gives them); loops that close on nothing are left out."""
+        out = []
+        for poly in shape.to_polygons():
+            lp = self.recover(np.asarray(poly, dtype=float))
+            if lp.segments:
+                out.append(lp)
+        return out
+
+    def recover(self, poly: np.ndarray) -> Loop:
+        """The exact :class:`Loop` of one result polygon (N x 2, vertices in order, no
+        repeat); see the module docstring for the steps."""
+        P = np.asarray(poly, dtype=float).reshape(-1, 2)
+        n = len(P)
+        if n < 3:
+            return Loop([])
+        scale = max(1.0, float(np.abs(P).max()))
+        cid = self._match(P, scale)
+        runs = _runs(cid, self.carriers, scale)
+        if runs is None:                    # the whole loop on one carrier
+            k = int(cid[0])
+            c = self.carriers[k] if k >= 0 else None
+            if c is not None and c[0] == "C":
+                total = _sweep_sum(P, c, 0, n - 1)
+                if abs(abs(total) - 2 * math.pi) < 1e-6:
+                    return Loop([Circle((c[1], c[2]), c[3], total > 0)])
+            return _polyline(P)
+        # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
+        joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
+                 for j in range(len(runs))]
+        runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale)
+        if len(runs) < 2:
+            return _polyline(P)
+        segs = []
+        m = len(runs)
+        for j, (k, first, last) in enumerate(runs):
+            a, b = joins[j], joins[(j + 1) % m]
+            if k < 0:                        # an unexplained polygon edge
+                pts = [a] + [tuple(P[i % n]) for i in range(first + 1, last + 1)] + [b]
+                segs += [Line(_t(p), _t(q)) for p, q in zip(pts, pts[1:])]
+                continue
+            c = self.carriers[k]
+            if c[0] == "L":
+                segs.append(Line(a, b))
+            else:
+                segs.append(_arc(c, a, b, _sweep_sum(P, c, first, last)))
+        return Loop(simplify(segs, scale))
+
+    def _join(self, ka: int, kb: int, v, scale: float):
+        """The exact vertex where carrier ``ka``'s run ends and ``kb``'s begins, near the
+        polygon vertex ``v``."""
+        v = (float(v[0]), float(v[1]))
+        if ka < 0 or kb < 0:
+            c = self.carriers[kb] if kb >= 0 else (self.carriers[ka] if ka >= 0 else None)
+            return foot(c, v) if c is not None else v
+        ca, cb = self.carriers[ka], self.carriers[kb]
+        tol = tolerance(scale)
+        for x, y, _, _ in self._near_ends(v):
+            p = (x, y)
+            if distance_to(ca, p) <= tol and distance_to(cb, p) <= tol:
+                return p
+        return intersect(ca, cb, v)
+
+    def _near_ends(self, v):
+        ends = self._ends_grid()
+        if ends is None:
+            return ()
+        cell, grid, rows = ends
+        key = (math.floor(v[0] / cell), math.floor(v[1] / cell))
+        out = []
+        for i in grid.get(key, ()):
+            x, y = rows[i][0], rows[i][1]
+            if math.hypot(x - v[0], y - v[1]) <= SNAP_TOL:
+                out.append(rows[i])
+        return out
+
+    def _ends_grid(self):
+        if not self._ends:
+            return None
+        if getattr(self, "_eg", None) is not None and self._eg[0] == len(self._ends):
+            return self._eg[1]
+        cell = 1e-3
+        grid: dict = {}
+        for i, (x, y, _, _) in enumerate(self._ends):
+            for gx in {math.floor((x - SNAP_TOL) / cell), math.floor((x + SNAP_TOL) / cell)}:
+                for gy in {math.floor((y - SNAP_TOL) / cell), math.floor((y + SNAP_TOL) / cell)}:
+                    grid.setdefault((gx, gy), []).append(i)
+        self._eg = (len(self._ends), (cell, grid, self._ends))
+        return self._eg[1]
+
+    # ------------------------------------------------------------ edge -> chord
+    def _chords(self):
+        if self._index is None:
+            A = np.concatenate(self._a) if self._a else np.zeros((0, 2))
+            B = np.concatenate(self._b) if self._b else np.zeros((0, 2))
+            C = np.concatenate(self._c) if self._c else np.zeros(0, dtype=np.int64)
+            self._a, self._b, self._c = [A], [B], [C]
+            self._index = _Grid(A, B, C)
+        return self._index
+
+    def _match(self, P: np.ndarray, scale: float) -> np.ndarray:
+        """The carrier index of each polygon edge ``P[i] -> P[i+1]`` (-1: none)."""
+        g = self._chords()
+        Q = np.roll(P, -1, axis=0)
+        tol = MATCH_TOL + 1e-11 * scale
+        cid = g.match(P, Q, tol)
+        bad = cid < 0
+        if bad.any():
+            self.unmatched += int(bad.sum())
+        return cid
+
+
+class _Grid:
+    """Chords (A[i] -> B[i], carrier C[i]) sampled into a uniform grid: every chord has a
+    sample within half a cell of each of its points, so a query point's chords are among the
+    samples of its cell and the eight around it."""
+
+    def __init__(self, A, B, C):
+        self.A, self.B, self.C = A, B, C
+        m = len(A)
+        if not m:
+            self.cell = 1.0
+            self.keys = np.zeros(0, dtype=np.int64)
+            self.chord = np.zeros(0, dtype=np.int64)
+            return
+        D = B - A
+        L = np.hypot(D[:, 0], D[:, 1])
+        total = float(L.sum())
+        med = float(np.sort(L)[m // 2])
+        self.cell = h = max(med, total / (16 * m + 1024), 1e-6)
+        ns = np.maximum(1, np.ceil(L / h).astype(np.int64))           # pieces per chord
+        chord = np.repeat(np.arange(m), ns + 1)
+        start = np.cumsum(ns + 1) - (ns + 1)
+        t = (np.arange(len(chord)) - np.repeat(start, ns + 1)) / np.repeat(ns, ns + 1)
+        S = A[chord] + D[chord] * t[:, None]
+        keys = self._key(S)
+        order = np.argsort(keys, kind="stable")
+        self.keys, self.chord = keys[order], chord[order]
+
+    def _key(self, S, dx=0, dy=0):
+        ix = np.floor(S[:, 0] / self.cell).astype(np.int64) + dx
+        iy = np.floor(S[:, 1] / self.cell).astype(np.int64) + dy
+        return ix * 4_294_967_311 + iy
+
+    def match(self, P, Q, tol) -> np.ndarray:
+        n = len(P)
+        cid = np.full(n, -1, dtype=np.int64)
+        if not len(self.keys):
+            return cid
+        M = (P + Q) / 2
+        qs, cs = [], []
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                qk = self._key(M, dx, dy)
+                lo = np.searchsorted(self.keys, qk, "left")
+                hi = np.searchsorted(self.keys, qk, "right")
+                cnt = hi - lo
+                tot = int(cnt.sum())
+                if not tot:
+                    continue
+                q = np.repeat(np.arange(n), cnt)
+                off = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+                qs.append(q)
+                cs.append(self.chord[np.repeat(lo, cnt) + off])
+        if not qs:
+            return cid
+        q = np.concatenate(qs)
+        c = np.concatenate(cs)
+        pair = np.sort(q * len(self.A) + c)          # np.unique without importing numpy.ma
+        pair = pair[np.r_[True, pair[1:] != pair[:-1]]]
+        q, c = pair // len(self.A), pair % len(self.A)
+        a, b = self.A[c], self.B[c]
+        d = b - a
+        L = np.hypot(d[:, 0], d[:, 1])
+        ok = L > 0
+        u = d / np.where(ok, L, 1.0)[:, None]
+        p, e = P[q] - a, Q[q] - a
+        dp = np.abs(u[:, 0] * p[:, 1] - u[:, 1] * p[:, 0])
+        de = np.abs(u[:, 0] * e[:, 1] - u[:, 1] * e[:, 0])
+        tp = u[:, 0] * p[:, 0] + u[:, 1] * p[:, 1]
+        te = u[:, 0] * e[:, 0] + u[:, 1] * e[:, 1]
+        ok &= (dp <= tol) & (de <= tol) & (tp >= -tol) & (te >= -tol) & (tp <= L + tol) & \
+            (te <= L + tol)                    # either way round: a hole runs backwards
+        q, k = q[ok], self.C[c[ok]]
+        if not len(q):
+            return cid
+        # several chords may hold one (short) edge, where curves meet: keep them all for now
+        first = np.full(n, -1, dtype=np.int64)
+        order = np.lexsort((k, q))
+        q, k = q[order], k[order]
+        starts = np.flatnonzero(np.r_[True, q[1:] != q[:-1]])
+        first[q[starts]] = k[starts]
+        multi = np.r_[q[1:] == q[:-1], False] | np.r_[False, q[1:] == q[:-1]]
+        cid = first
+        if multi.any():
+            # an edge several chords hold (a short edge where curves meet) takes the carrier
+            # it shares with a neighbouring edge, else the first
+            cand: dict = {}
+            for qi, ki in zip(q[multi].tolist(), k[multi].tolist()):
+                cand.setdefault(qi, []).append(ki)
+            for qi, ks in cand.items():
+                for nb in (int(cid[qi - 1]), int(cid[(qi + 1) % n])):
+                    if nb in ks:
+                        cid[qi] = nb
+                        break
+        return cid
+
+
+def _runs(cid: np.ndarray, carriers: list, scale: float):
+    """Runs of consecutive edges on one carrier: [(carrier, first edge, last edge)], indices
+    modulo n; ``None`` when every edge is on the same carrier."""
+    n = len(cid)
+    same = np.empty(n, dtype=bool)                 # edge i continues edge i-1's run
+    prev = np.roll(cid, 1)
+    same[:] = (cid == prev) & (cid >= 0)
+    tol = tolerance(scale)
+    for i in np.flatnonzero(~same & (cid >= 0) & (prev >= 0)).tolist():
+        if same_carrier(carriers[int(cid[i])], carriers[int(prev[i])], tol):
+            same[i] = True
+            cid[i] = prev[i]
+    if same.all():
+        return None
+    starts = np.flatnonzero(~same)
+    runs = []
+    for j, st in enumerate(starts.tolist()):
+        end = starts[j + 1] if j + 1 < len(starts) else starts[0] + n
+        k = int(cid[st])
+        if k < 0:                              # unexplained edges: one run each
+            runs += [(-1, i, i) for i in range(st, int(end))]
+        else:
+            runs.append((k, st, int(end) - 1))
+    return runs
+
+
+def _sweep_sum(P, c, first: int, last: int) -> float:
+    """The angle the polygon edges first..last turn about circle ``c``'s center."""
+    n = len(P)
+    idx = np.arange(first, last + 2) % n
+    X = P[idx, 0] - c[1]
+    Y = P[idx, 1] - c[2]
+    a = np.arctan2(X[:-1] * Y[1:] - Y[:-1] * X[1:], X[:-1] * X[1:] + Y[:-1] * Y[1:])
+    return float(a.sum())
+
+
+def _arc(c, a, b, approx: float) -> Arc:
+    cx, cy, r = c[1], c[2], c[3]
+    a1 = math.atan2(a[1] - cy, a[0] - cx)
+    a2 = math.atan2(b[1] - cy, b[0] - cx)
+    sw = a2 - a1
+    sw += 2 * math.pi * round((approx - sw) / (2 * math.pi))
+    return Arc((cx, cy), r, a1, sw)
+
+
+def _bad(k, a, b, P, first, last, carriers, tol) -> bool:
+    """True when run ``k`` from exact point ``a`` to ``b`` is shorter than ``tol`` or runs
+    against its polygon edges (an overlap the chords could not show)."""
+    n = len(P)
+    if k < 0:
+        return False
+    c = carriers[k]
+    if c[0] == "L":
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        ex = P[(last + 1) % n] - P[first % n]
+        return math.hypot(dx, dy) <= tol or dx * ex[0] + dy * ex[1] <= 0
+    approx = _sweep_sum(P, c, first, last)
+    arc = _arc(c, a, b, approx)
+    return abs(arc.sweep) * c[3] <= tol or arc.sweep * approx <= 0
+
+
+def _drop_inverted(runs, joins, P, carriers, prov, scale):
+    """Drop the runs :func:`_bad` finds, joining their neighbours (one run when they are on
+    one carrier, else at the neighbours' own intersection); ``([], [])`` when fewer than
+    two runs would be left."""
+    tol = tolerance(scale)
+    n = len(P)
+    changed = True
+    while changed:
+        changed = False
+        m = len(runs)
+        for j in range(m):
+            k, first, last = runs[j]
+            if not _bad(k, joins[j], joins[(j + 1) % m], P, first, last, carriers, tol):
+                continue
+            if m <= 2:
+                return [], []
+            # turn the lists so that the bad run is the second: neighbours 0 and 2
+            r = (j - 1) % m
+            runs, joins = runs[r:] + runs[:r], joins[r:] + joins[:r]
+            kp, kn = runs[0][0], runs[2][0]
+            mid = P[(first + last + 1) // 2 % n]
+            if kp >= 0 and kn >= 0 and (kp == kn or same_carrier(carriers[kp], carriers[kn], tol)):
+                last2 = runs[2][2]
+                while last2 < runs[0][1]:
+                    last2 += n
+                runs = [(kp, runs[0][1], last2)] + runs[3:]
+                joins = [joins[0]] + joins[3:]
+                if len(runs) < 2:
+                    return [], []
+            else:
+                joins[2] = prov._join(kp, kn, mid, scale)
+                del runs[1], joins[1]
+            changed = True
+            break
+    return runs, joins
+
+
+def _polyline(P) -> Loop:
+    n = len(P)
+    return Loop([Line(_t(P[i]), _t(P[(i + 1) % n])) for i in range(n)])
+
+
+def _t(p):
+    return (float(p[0]), float(p[1]))
+
+
+__all__ = ["Provenance", "CHORD_TOL"]
