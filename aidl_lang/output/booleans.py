@@ -182,13 +182,15 @@ class Renderer:
     def _face(self, lp: Loop, g: Geometry, s: Structure | None) -> mf.CrossSection | None:
         """The CrossSection of an exact loop; a loop of no area is recorded in
         :attr:`Drawing.empty_faces` and gives None."""
-        scale = max(1.0, max((abs(v) for seg in lp.segments for p in _ends(seg) for v in p),
-                             default=1.0))
-        if abs(lp.area) <= 1e-9 * scale:
-            if s is not None:
-                self.empty_faces.append((s, g, abs(lp.area)))
-            return None
-        return self.exact.face(lp)
+        area = lp.area
+        if abs(area) <= 1e-6:           # small: compare with the size of the coordinates
+            scale = max(1.0, max((abs(v) for seg in lp.segments for p in _ends(seg) for v in p),
+                                 default=1.0))
+            if abs(area) <= 1e-9 * scale:
+                if s is not None:
+                    self.empty_faces.append((s, g, abs(area)))
+                return None
+        return self.exact.face(lp, area)
 
     # -------------------------------------------------------- structures
     def own_faces(self, s: Structure, out: Drawing) -> list:

@@ -81,8 +81,8 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
-        for s in segs:
-            k = self.carrier_id(carrier(s))
+        seg_ids = [self.carrier_id(carrier(s)) for s in segs]
+        for s, k in zip(segs, seg_ids):
             if isinstance(s, Line):
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
@@ -108,15 +108,15 @@ class Provenance:
         self._c.append(np.asarray(ids, dtype=np.int64))
         if len(segs) > 1:
             for i, s in enumerate(segs):
-                before = self.carrier_id(carrier(segs[i - 1]))
                 x, y = s.start
-                self._ends.append((float(x), float(y), before, self.carrier_id(carrier(s))))
+                self._ends.append((float(x), float(y), seg_ids[i - 1], seg_ids[i]))
         self._index = None
         return P
 
-    def face(self, loop: Loop) -> mf.CrossSection:
-        """A Manifold ``CrossSection`` of one exact closed ``loop`` (either orientation)."""
-        if loop.area < 0:
+    def face(self, loop: Loop, area: float | None = None) -> mf.CrossSection:
+        """A Manifold ``CrossSection`` of one exact closed ``loop`` (either orientation;
+        ``area``: its signed area when known)."""
+        if (loop.area if area is None else area) < 0:
             loop = loop.reversed()
         P = self.polygon(loop)
         if len(P) < 3:
@@ -133,22 +133,41 @@ class Provenance:
     def loops(self, shape: mf.CrossSection) -> list[Loop]:
         """The exact loops of a boolean result (outer loops counter-clockwise, holes
         clockwise, as Manifold gives them); loops that close on nothing are left out."""
-        out = []
-        for poly in shape.to_polygons():
-            lp = self.recover(np.asarray(poly, dtype=float))
-            if lp.segments:
-                out.append(lp)
+        return self.loops_of([shape])[0]
+
+    def loops_of(self, shapes: list) -> list[list[Loop]]:
+        """:meth:`loops` of each of ``shapes``, every edge matched in one pass."""
+        polys = [[np.asarray(p, dtype=float).reshape(-1, 2) for p in s.to_polygons()
+                  if len(p) >= 3] for s in shapes]
+        flat = [P for ps in polys for P in ps]
+        if not flat:
+            return [[] for _ in shapes]
+        A = np.concatenate(flat)
+        B = np.concatenate([np.roll(P, -1, axis=0) for P in flat])
+        scale = max(1.0, float(np.abs(A).max()))
+        cid = self._chords().match(A, B, MATCH_TOL + 1e-11 * scale)
+        self.unmatched += int((cid < 0).sum())
+        out, at = [], 0
+        for ps in polys:
+            loops = []
+            for P in ps:
+                lp = self.recover(P, cid[at:at + len(P)])
+                at += len(P)
+                if lp.segments:
+                    loops.append(lp)
+            out.append(loops)
         return out
 
-    def recover(self, poly: np.ndarray) -> Loop:
+    def recover(self, poly: np.ndarray, cid: np.ndarray | None = None) -> Loop:
         """The exact :class:`Loop` of one result polygon (N x 2, vertices in order, no
-        repeat); see the module docstring for the steps."""
+        repeat); ``cid``: its edges' carriers when already matched.  See the module
+        docstring for the steps."""
         P = np.asarray(poly, dtype=float).reshape(-1, 2)
         n = len(P)
         if n < 3:
             return Loop([])
         scale = max(1.0, float(np.abs(P).max()))
-        cid = self._match(P, scale)
+        cid = self._match(P, scale) if cid is None else cid.copy()
         runs = _runs(cid, self.carriers, scale)
         if runs is None:                    # the whole loop on one carrier
             k = int(cid[0])
@@ -161,7 +180,14 @@ class Provenance:
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
         joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
                  for j in range(len(runs))]
-        runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale)
+        sweeps: dict = {}
+
+        def approx(c, first, last):       # the polygon's sweep of a run, computed once
+            key = (first, last)
+            if key not in sweeps:
+                sweeps[key] = _sweep_sum(P, c, first, last)
+            return sweeps[key]
+        runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
         if len(runs) < 2:
             return _polyline(P)
         segs = []
@@ -176,7 +202,7 @@ class Provenance:
             if c[0] == "L":
                 segs.append(Line(a, b))
             else:
-                segs.append(_arc(c, a, b, _sweep_sum(P, c, first, last)))
+                segs.append(_arc(c, a, b, approx(c, first, last)))
         return Loop(simplify(segs, scale))
 
     def _join(self, ka: int, kb: int, v, scale: float):
@@ -384,7 +410,7 @@ def _arc(c, a, b, approx: float) -> Arc:
     return Arc((cx, cy), r, a1, sw)
 
 
-def _bad(k, a, b, P, first, last, carriers, tol) -> bool:
+def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
     """True when run ``k`` from exact point ``a`` to ``b`` is shorter than ``tol`` or runs
     against its polygon edges (an overlap the chords could not show)."""
     n = len(P)
@@ -395,12 +421,12 @@ def _bad(k, a, b, P, first, last, carriers, tol) -> bool:
         dx, dy = b[0] - a[0], b[1] - a[1]
         ex = P[(last + 1) % n] - P[first % n]
         return math.hypot(dx, dy) <= tol or dx * ex[0] + dy * ex[1] <= 0
-    approx = _sweep_sum(P, c, first, last)
-    arc = _arc(c, a, b, approx)
-    return abs(arc.sweep) * c[3] <= tol or arc.sweep * approx <= 0
+    sw = approx(c, first, last) if approx is not None else _sweep_sum(P, c, first, last)
+    arc = _arc(c, a, b, sw)
+    return abs(arc.sweep) * c[3] <= tol or arc.sweep * sw <= 0
 
 
-def _drop_inverted(runs, joins, P, carriers, prov, scale):
+def _drop_inverted(runs, joins, P, carriers, prov, scale, approx=None):
     """Drop the runs :func:`_bad` finds, joining their neighbours (one run when they are on
     one carrier, else at the neighbours' own intersection); ``([], [])`` when fewer than
     two runs would be left."""
@@ -412,7 +438,7 @@ def _drop_inverted(runs, joins, P, carriers, prov, scale):
         m = len(runs)
         for j in range(m):
             k, first, last = runs[j]
-            if not _bad(k, joins[j], joins[(j + 1) % m], P, first, last, carriers, tol):
+            if not _bad(k, joins[j], joins[(j + 1) % m], P, first, last, carriers, tol, approx):
                 continue
             if m <= 2:
                 return [], []

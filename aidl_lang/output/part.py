@@ -42,14 +42,21 @@ class MissingDependency(OutputError):
 @dataclass
 class PartOutline:
     """One part: its name (structure path), kind (``solid``, or ``hole`` for a hole with no
-    solid to cut), outline loops (outer ones counter-clockwise, holes clockwise), thickness
-    (mm, for 3D outputs) and ``shape``, a manifold3d CrossSection of the exact loops (every
-    vertex on its curve; what STL/3MF extrude)."""
+    solid to cut), outline loops (outer ones counter-clockwise, holes clockwise) and thickness
+    (mm, for 3D outputs)."""
     name: str
     kind: str
     loops: list[Loop]
     thickness: float | None = None
-    shape: object = None
+
+    @property
+    def shape(self):
+        """A manifold3d CrossSection of the exact loops cut into chords within
+        ``CHORD_TOL``, every vertex on its curve (what STL/3MF extrude); made on first use."""
+        got = self.__dict__.get("_shape")
+        if got is None:
+            got = self.__dict__["_shape"] = _mesh_section(self.loops)
+        return got
 
     @property
     def area(self) -> float:
@@ -151,14 +158,12 @@ def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
     out = Output(title=title, drawing=drawing)
     if thickness is None:
         thickness = drawing.thickness
-    for p in drawing.parts:
-        if p.shape.is_empty():
-            continue
-        loops = exact.loops(p.shape)
+    parts = [p for p in drawing.parts if not p.shape.is_empty()]
+    for p, loops in zip(parts, exact.loops_of([p.shape for p in parts])):
         if not loops:
             continue
         t = thickness.get(p.name) if isinstance(thickness, dict) else thickness
-        out.parts.append(PartOutline(p.name, p.kind, loops, t, _mesh_section(loops)))
+        out.parts.append(PartOutline(p.name, p.kind, loops, t))
     strokes = []
     for style, item, g in drawing.strokes:
         st = _stroke(item, exact, style, g.label if g is not None else "")
