@@ -286,7 +286,9 @@ class _Grid:
         L = np.hypot(D[:, 0], D[:, 1])
         total = float(L.sum())
         med = float(np.sort(L)[m // 2])
-        self.cell = h = max(med, total / (16 * m + 1024), 1e-6)
+        span = float(max(np.abs(A).max(), np.abs(B).max()))
+        # cells small enough to hold few chords, few enough that a cell's key fits int64
+        self.cell = h = max(med, total / (16 * m + 1024), 1e-6, span / 2 ** 30)
         ns = np.maximum(1, np.ceil(L / h).astype(np.int64))           # pieces per chord
         chord = np.repeat(np.arange(m), ns + 1)
         start = np.cumsum(ns + 1) - (ns + 1)
