@@ -190,8 +190,8 @@ def read_dxf(path) -> list[Entity]:
 # ------------------------------------------------------------------ SVG (svgelements)
 def read_svg_loops(path, group: str = "cut") -> list[list]:
     """The subpaths of the ``<g id=group>`` of the SVG file ``path`` as lists of segments, in
-    millimetres (the viewBox's units; y is flipped by the writer, which only reverses
-    orientation).  A closing ``Z`` that adds nothing (the path
+    millimetres and the model's coordinates (the viewBox's units moved back to its corner,
+    y up again).  A closing ``Z`` that adds nothing (the path
     already returned to its start) is dropped."""
     import xml.etree.ElementTree as ET
 
@@ -207,6 +207,12 @@ def read_svg_loops(path, group: str = "cut") -> list[list]:
     root.set("width", vb[2])
     root.set("height", vb[3])
     doc = se.SVG.parse(io.StringIO(ET.tostring(root, encoding="unicode")), reify=True)
+    # svgelements puts the viewBox's corner at the origin: move it back, and undo the
+    # writer's y flip (y_svg = -y), which also turns every arc the other way
+    vx, vy = float(vb[0]), float(vb[1])
+
+    def model(pt):
+        return (pt.x + vx, -(pt.y + vy))
     loops = []
     for el in doc.elements():
         if not isinstance(el, se.Shape):
@@ -216,7 +222,7 @@ def read_svg_loops(path, group: str = "cut") -> list[list]:
             for s in sub:
                 if isinstance(s, se.Move):
                     continue
-                p, q = (s.start.x, s.start.y), (s.end.x, s.end.y)
+                p, q = model(s.start), model(s.end)
                 if isinstance(s, se.Close):
                     if math.dist(p, q) <= SVG_TOL:
                         continue
@@ -225,7 +231,7 @@ def read_svg_loops(path, group: str = "cut") -> list[list]:
                     segs.append(L(p, q))
                 elif isinstance(s, se.Arc):
                     assert abs(s.rx - s.ry) <= SVG_TOL, f"elliptical arc rx {s.rx} ry {s.ry}"
-                    segs.append(A(p, q, (s.center.x, s.center.y), (s.rx + s.ry) / 2, s.sweep))
+                    segs.append(A(p, q, model(s.center), (s.rx + s.ry) / 2, -s.sweep))
                 else:
                     raise AssertionError(f"unexpected SVG segment {type(s).__name__}: {s}")
             if segs:
