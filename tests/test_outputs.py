@@ -6,6 +6,7 @@ import struct
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES
 from aidl_lang.geometry.tessellate import CHORD_TOL
@@ -247,6 +248,94 @@ solid lock {
     assert "dasharray" not in encode(o, ".svg").decode()
 
 
+def _px_per_mm() -> float:
+    """svgelements' own pixels per mm (3.7795296: its constant, not 96 / 25.4 to the digit)."""
+    import svgelements as se
+    return float(se.Length("1mm").value(ppi=96))
+
+
+def _hand_built():
+    """A 40 x 20 plate whose right side is an arc through 0 degrees (x = 25 exactly, which no
+    chord vertex need reach), a circular hole, and two engraving strokes: a chain of a line
+    and an arc, and a single line."""
+    from aidl_lang.output.part import Loop, Output, PartOutline, Stroke
+    a = math.asin(10 / 25)                               # the arc meets y = +-10 at x = 25 cos a
+    xr = 25 * math.cos(a)
+    outer = Loop([Line((-20, -10), (xr, -10)), Arc((0, 0), 25, -a, 2 * a),
+                  Line((xr, 10), (-20, 10)), Line((-20, 10), (-20, -10))])
+    hole = Loop([Circle((0, 0), 3, ccw=False)])
+    chain = Stroke([Line((-15, -5), (-10, -5)), Arc((-10, 0), 5, -math.pi / 2, math.pi)])
+    single = Stroke([Line((5, 0), (10, 0))])
+    return Output(parts=[PartOutline("plate", "solid", [outer, hole])],
+                  engrave=[chain, single], title="plate")
+
+
+def test_laser_svg_strokes_are_true_hairlines_red_cut_blue_engrave():
+    """Re-read by svgelements, every laser-style element renders at most 0.025 mm wide (the
+    old ``stroke-width="0.01mm"`` was 0.0378 mm on the mm page), cuts red, engraving blue."""
+    import svgelements as se
+    o = _hand_built()
+    doc = se.SVG.parse(io.StringIO(encode(o, ".svg", Options(style="laser")).decode()))
+    shapes = [e for e in doc.elements() if isinstance(e, se.Shape)]
+    widths = [e.implicit_stroke_width / _px_per_mm() for e in shapes]
+    assert len(shapes) == 4 and max(widths) <= 0.025 and min(widths) > 0
+    colours = sorted(str(e.stroke) for e in shapes)
+    assert colours == ["#0000ff"] * 2 + ["#ff0000"] * 2
+    assert all(e.fill is None or e.fill.value is None for e in shapes)
+
+
+def test_svg_draws_a_chained_stroke_as_one_path():
+    svg = encode(_hand_built(), ".svg", Options(style="laser")).decode()
+    engrave = svg[svg.index('id="engrave"'):]
+    assert engrave.count("<path") == 2 and "M-15,5L-10,5A5,5 0 0 0 -10,-5" in engrave
+
+
+def test_margin_zero_makes_the_page_the_exact_bounding_box():
+    import svgelements as se
+    from aidl_lang.output.extent import extent
+    o = _hand_built()
+    assert extent(o) == pytest.approx((-20, -10, 25, 10), abs=1e-12)
+    assert o.bounds()[2] < 25 - 1e-6                 # the sampled extent falls short of the arc
+    for style in ("preview", "laser"):
+        svg = encode(o, ".svg", Options(style=style, margin=0)).decode()
+        doc = se.SVG.parse(io.StringIO(svg))
+        assert doc.width / _px_per_mm() == pytest.approx(45, abs=1e-6)
+        assert doc.height / _px_per_mm() == pytest.approx(20, abs=1e-6)
+        assert ' width="45mm"' in svg and ' height="20mm"' in svg
+        assert 'viewBox="-20,-10,45,20"' in svg
+    wide = se.SVG.parse(io.StringIO(encode(o, ".svg", Options(margin=2.5)).decode()))
+    assert wide.width / _px_per_mm() == pytest.approx(50, abs=1e-6)
+    default = se.SVG.parse(io.StringIO(encode(o, ".svg").decode()))
+    assert default.width / _px_per_mm() == pytest.approx(45 + 2 * 2.25, abs=1e-6)   # 5 % of 45
+
+
+@pytest.mark.parametrize("margin", [-1.0, math.inf, math.nan])
+def test_a_bad_margin_is_an_output_error(margin):
+    from aidl_lang.output.part import OutputError
+    with pytest.raises(OutputError, match="margin"):
+        encode(_hand_built(), ".svg", Options(margin=margin))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(-50, 50), st.floats(-50, 50), st.floats(0.01, 100), st.floats(-20, 20),
+       st.floats(-2 * math.pi, 2 * math.pi).filter(lambda v: abs(v) > 1e-6))
+def test_an_arcs_extent_is_the_box_of_its_points(cx, cy, r, a0, sweep):
+    """The exact extent of an arc holds all its points and is no larger than they reach
+    (densely sampled: a sample misses an extreme by at most r (1 - cos(pi / 4000)))."""
+    from aidl_lang.output.extent import extent
+    from aidl_lang.output.part import Output, Stroke
+    arc = Arc((cx, cy), r, a0, sweep)
+    t = a0 + sweep * np.linspace(0, 1, 4001)
+    xs, ys = cx + r * np.cos(t), cy + r * np.sin(t)
+    got = extent(Output(engrave=[Stroke([arc])]))
+    tol = 1e-9 * (1 + r + abs(cx) + abs(cy))
+    slack = r * (1 - math.cos(math.pi / 4000)) + tol
+    assert got[0] <= xs.min() + tol and got[1] <= ys.min() + tol
+    assert got[2] >= xs.max() - tol and got[3] >= ys.max() - tol
+    assert got[0] >= xs.min() - slack and got[1] >= ys.min() - slack
+    assert got[2] <= xs.max() + slack and got[3] <= ys.max() + slack
+
+
 # ------------------------------------------------------------------ PNG
 def test_png_has_the_requested_width(compile_text):
     pytest.importorskip("cairosvg")
@@ -258,6 +347,8 @@ def test_png_has_the_requested_width(compile_text):
     big = encode(o, ".png", Options(dpi=192))
     w2, _ = struct.unpack(">II", big[16:24])
     assert w2 == pytest.approx(44 / 25.4 * 192, abs=1.5)       # 40 mm + 2 x 2 mm margin
+    tight = encode(o, ".png", Options(dpi=254, margin=0))    # 10 pixels per mm, no margin
+    assert struct.unpack(">II", tight[16:24]) == (400, 200)
 
 
 # ------------------------------------------------------------------ STL / 3MF

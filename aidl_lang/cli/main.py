@@ -99,6 +99,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--svg-style", choices=["preview", "laser"], default="preview",
                    help="preview: filled solids (default); laser: stroke-only red cut and blue "
                         "engrave hairlines, one element per loop")
+    r.add_argument("--margin", type=float, default=None, metavar="MM",
+                   help="space around the drawing on the SVG/PNG page, in mm (default 5%% of "
+                        "the larger side, at least 1 mm; 0: the page is the bounding box)")
     r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
@@ -364,6 +367,9 @@ def cmd_render(args) -> int:
         if thickness is None:
             return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
                           f"`{args.thickness}`")
+    from ..limits import MAX_EXTENT
+    if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
+        return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
     if args.file == "-":
         src = sys.stdin.read()
     else:
@@ -377,7 +383,7 @@ def cmd_render(args) -> int:
         return 1
     output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
-                  thickness=thickness)
+                  thickness=thickness, margin=args.margin)
     try:
         items = [(o, encode(output, o.suffix, opt)) for o in outs]
     except OutputError as e:                 # a missing library, an impossible size
