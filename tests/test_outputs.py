@@ -148,6 +148,82 @@ def test_example_dxf_matches_the_model(path):
     assert dxf_areas == pytest.approx(model_areas, rel=1e-9, abs=1e-9)
 
 
+def test_dxf_header_extents_are_the_drawings():
+    o = _hand_built()
+    doc = _dxf(o)
+    assert doc.header["$EXTMIN"] == pytest.approx((-20, -10, 0), abs=1e-12)
+    assert doc.header["$EXTMAX"] == pytest.approx((25, 10, 0), abs=1e-12)
+
+
+def _strokes_output(*strokes):
+    from aidl_lang.output.part import Output, Stroke
+    return Output(engrave=[Stroke(list(s)) for s in strokes])
+
+
+def _as_model(e):
+    """A LINE or ARC entity as (kind, numbers): a line's start and end x, y; an arc's start
+    and end x, y (ezdxf's own geometry, counter-clockwise from start to end angle), center x,
+    y and radius."""
+    if e.dxftype() == "LINE":
+        return "line", [*tuple(e.dxf.start)[:2], *tuple(e.dxf.end)[:2]]
+    return "arc", [*tuple(e.start_point)[:2], *tuple(e.end_point)[:2], *tuple(e.dxf.center)[:2],
+                   e.dxf.radius]
+
+
+def test_dxf_chained_engraving_is_one_open_polyline_with_bulges():
+    """An open stroke of chained lines and arcs is ONE open LWPOLYLINE (a laser runs it in one
+    go); exploded by ezdxf, it gives back the same lines and arcs (a 270-degree arc as two
+    halves).  A stroke with a gap becomes two chains; lone segments stay LINE / ARC / CIRCLE."""
+    big = Arc((10, 5), 5, -math.pi / 2, 1.5 * math.pi)     # 270 degrees ccw, (10, 0) -> (5, 5)
+    cw = Arc((5, 8), 3, -math.pi / 2, -math.pi / 2)         # 90 degrees cw, (5, 5) -> (2, 8)
+    chain = [Line((0, 0), (10, 0)), big, cw, Line((2, 8), (2, 12))]
+    gapped = [Line((30, 0), (35, 0)), Line((35, 0), (35, 5)),       # a chain of two,
+              Line((40, 0), (45, 0))]                               # then a lone line
+    lone_arc = [Arc((0, 30), 2, 0.0, math.pi / 3)]
+    lone_circle = [Circle((0, 40), 1.5)]
+    doc = _dxf(_strokes_output(chain, gapped, lone_arc, lone_circle))
+    msp = doc.modelspace()
+    assert sorted(e.dxftype() for e in msp) == ["ARC", "CIRCLE", "LINE", "LWPOLYLINE",
+                                                "LWPOLYLINE"]
+    assert all(e.dxf.layer == "ENGRAVE" for e in msp)
+    first, second = msp.query("LWPOLYLINE")
+    assert not first.closed and not second.closed
+    assert len(first) == 6           # line, 2 halves of the big arc, the cw arc, line, end point
+    got = [_as_model(e) for e in first.virtual_entities()]
+    assert [g[0] for g in got] == ["line", "arc", "arc", "arc", "line"]
+    a = 1e-9
+    assert got[0][1] == pytest.approx([0, 0, 10, 0], abs=a)
+    # the big arc's halves: ccw from (10, 0) through (15, 5)... to (5, 5), center (10, 5)
+    assert got[1][1] == pytest.approx([10, 0, *big.at(-math.pi / 2 + 0.75 * math.pi), 10, 5, 5],
+                                      abs=a)
+    assert got[2][1] == pytest.approx([*big.at(-math.pi / 2 + 0.75 * math.pi), 5, 5, 10, 5, 5],
+                                      abs=a)
+    # the cw arc: DXF arcs run ccw, so ezdxf's ARC runs from the model's end to its start
+    assert got[3][1] == pytest.approx([2, 8, 5, 5, 5, 8, 3], abs=a)
+    assert got[4][1] == pytest.approx([2, 8, 2, 12], abs=a)
+    assert [c for p in second.get_points("xy") for c in p] == pytest.approx([30, 0, 35, 0, 35, 5])
+    (line,) = msp.query("LINE")
+    assert _as_model(line)[1] == pytest.approx([40, 0, 45, 0])
+    (arc,) = msp.query("ARC")
+    assert (arc.dxf.start_angle, arc.dxf.end_angle) == pytest.approx((0, 60))
+    (circle,) = msp.query("CIRCLE")
+    assert circle.dxf.radius == 1.5
+
+
+def test_svg_moves_over_a_gap_in_a_stroke():
+    """A stroke with a gap is drawn as two subpaths: the gap is a move, not a line."""
+    import svgelements as se
+    o = _strokes_output([Line((0, 0), (5, 0)), Line((5, 0), (5, 5)), Line((9, 0), (12, 0))],
+                        [Circle((0, 20), 1), Line((1, 20), (3, 20))])
+    svg = encode(o, ".svg", Options(style="laser")).decode()
+    engrave = svg[svg.index('id="engrave"'):]
+    assert engrave.count("<path") == 2
+    assert "M0,0L5,0L5,-5M9,0L12,0" in engrave and "ZM1,-20L3,-20" in engrave
+    doc = se.SVG.parse(io.StringIO(svg))
+    (path, _) = [e for e in doc.elements() if isinstance(e, se.Path)]
+    assert len(list(path.as_subpaths())) == 2
+
+
 def _entity_area(e):
     """Area of a CIRCLE or a closed LWPOLYLINE with bulges, from the DXF data alone."""
     if e.dxftype() == "CIRCLE":

@@ -26,6 +26,7 @@ from .part import Arc, Circle, Line, Loop, Output, OutputError, build
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
+CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
 HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
 
 
@@ -46,19 +47,23 @@ def _arc_cmd(a: Arc) -> str:
 
 
 def segments_d(segments, closed: bool) -> str:
-    """Path data of a chain of exact segments (a Circle as two half arcs)."""
+    """Path data of a chain of exact segments (a Circle as two half arcs): one subpath per
+    run of segments each starting within :data:`CHAIN_TOL` (mm) of the previous
+    one's end, so a gap is a move, never a drawn line."""
     out = []
-    for i, s in enumerate(segments):
+    here = None                       # the pen's position, None after a circle or at the start
+    for s in segments:
         if isinstance(s, Circle):
-            cx, cy = s.center
             sg = 1 if s.ccw else -1
             h1 = Arc(s.center, s.radius, 0.0, sg * math.pi)
             h2 = Arc(s.center, s.radius, sg * math.pi, sg * math.pi)
             out.append(f"M{_pt(h1.start)}{_arc_cmd(h1)}{_arc_cmd(h2)}Z")
+            here = None
             continue
-        if i == 0:
+        if here is None or math.dist(here, s.start) > CHAIN_TOL:
             out.append(f"M{_pt(s.start)}")
         out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
+        here = s.end
     if closed and segments and not isinstance(segments[-1], Circle):
         out.append("Z")
     return "".join(out)
