@@ -171,3 +171,16 @@ def test_out_of_range_port_and_thickness_are_usage_errors(good, tmp_path, capsys
     assert e.value.code == 2 and "--port expects a number from 0 to 65535" in capsys.readouterr().err
     assert main(["render", str(good), "-o", str(tmp_path / "p.stl"), "--thickness", "1e9mm"]) == 2
     assert "--thickness expects a positive length up to 1 km" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("module,ext,extra", [("networkx", ".3mf", "mesh"),
+                                              ("lxml.etree", ".3mf", "mesh"),
+                                              ("cairosvg", ".png", "png"), ("OCP", ".step", "step")])
+def test_a_missing_optional_library_exits_2_with_the_install_line(good, tmp_path, capsys,
+                                                                  monkeypatch, module, ext, extra):
+    monkeypatch.setitem(sys.modules, module, None)        # `import module` raises ImportError
+    out, svg = tmp_path / ("p" + ext), tmp_path / "p.svg"
+    assert main(["render", str(good), "-o", str(svg), "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"pip install 'aidl-lang[{extra}]'" in err and "internal error" not in err
+    assert not out.exists() and not svg.exists()

@@ -1,7 +1,9 @@
 """The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
-Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
+Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
+writer cannot make (an impossible PNG size), 2 a usage error or a format whose optional library
+is not installed (the message gives the ``pip install`` line), 3 an internal error (a bug).
 An output file is written only when the whole pipeline succeeded and every requested format was
 produced (each written to a temporary file beside it, then renamed), so a good drawing is never
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
@@ -353,7 +355,7 @@ def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
 
 def cmd_render(args) -> int:
     from ..pipeline import compile_source
-    from ..output import Options, OutputError, build, encode
+    from ..output import MissingDependency, Options, OutputError, build, encode
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -386,7 +388,10 @@ def cmd_render(args) -> int:
                   thickness=thickness, margin=args.margin)
     try:
         items = [(o, encode(output, o.suffix, opt)) for o in outs]
-    except OutputError as e:                 # a missing library, an impossible size
+    except MissingDependency as e:           # not the program's fault: install the extra
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 2
+    except OutputError as e:                 # an impossible size
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     err = _write_all(items)
