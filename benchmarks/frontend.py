@@ -21,6 +21,8 @@ Children run with bytecode caching on (``PYTHONDONTWRITEBYTECODE`` removed, ``ai
 compiled first), as an installed package runs.  ``--instructions`` adds, for (a), the
 instructions a cold ``aidl check`` executes, counted by ``valgrind --tool=callgrind`` (the same
 count whatever else the machine is doing), next to the interpreter's and NumPy's own floor.
+``--writers`` prints only (a3): the instructions of a cold ``aidl render`` to SVG and to DXF
+side by side, and what importing svgwrite and ezdxf costs.
 """
 from __future__ import annotations
 
@@ -123,6 +125,28 @@ def instruction_counts() -> None:
     for label, argv in cases:
         n = _instructions(argv)
         print(f"  {label:<32}" + (f"{n:>10.1f}" if n is not None else "   (no valgrind)"))
+
+
+def writer_costs(examples: list[str]) -> None:
+    """(a3) a cold ``aidl render`` to SVG against the same render to DXF: callgrind
+    instructions of each (one run: the count does not depend on load) and their ratio, next to
+    the cost of importing each writer's library on top of NumPy (docs/outputs.md, "Speed")."""
+    print("\n(a3) cold render, SVG against DXF (callgrind, millions of instructions)")
+    print(f"{'example':<20}{'svg':>10}{'dxf':>10}{'dxf/svg':>9}")
+    aidl = [sys.executable, "-m", "aidl_lang.cli"]
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in examples:
+            src = str(ROOT / f"examples/{name}.aidl")
+            n = {ext: _instructions(aidl + ["render", src, "-o", os.path.join(tmp, name + ext)])
+                 for ext in (".svg", ".dxf")}
+            if None in n.values():
+                print(f"{name:<20}   (no valgrind)")
+                return
+            print(f"{name:<20}{n['.svg']:>10.0f}{n['.dxf']:>10.0f}{n['.dxf'] / n['.svg']:>9.2f}")
+    floor = _instructions([sys.executable, "-c", "import numpy"])
+    for lib in ("svgwrite", "ezdxf"):
+        n = _instructions([sys.executable, "-c", f"import numpy, {lib}"])
+        print(f"  import {lib} (over numpy){n - floor:>12.0f}")
 
 
 def import_times(repeat: int) -> None:
@@ -231,9 +255,14 @@ def main() -> None:
                     help="cold-render every bundled example, not only the telephone")
     ap.add_argument("--instructions", action="store_true",
                     help="also count a cold check's instructions with valgrind (slow: ~30 s)")
+    ap.add_argument("--writers", action="store_true",
+                    help="only (a3): a cold render to SVG against DXF, instructions by valgrind")
     args = ap.parse_args()
     rep = args.repeat or (3 if args.quick else 11)
     _compile_bytecode()
+    if args.writers:
+        writer_costs(["mounting_plate", "telephone"])
+        return
     cold_start(rep, args.all_examples)
     if args.instructions:
         instruction_counts()

@@ -6,6 +6,7 @@ import struct
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES
 from aidl_lang.geometry.tessellate import CHORD_TOL
@@ -147,6 +148,82 @@ def test_example_dxf_matches_the_model(path):
     assert dxf_areas == pytest.approx(model_areas, rel=1e-9, abs=1e-9)
 
 
+def test_dxf_header_extents_are_the_drawings():
+    o = _hand_built()
+    doc = _dxf(o)
+    assert doc.header["$EXTMIN"] == pytest.approx((-20, -10, 0), abs=1e-12)
+    assert doc.header["$EXTMAX"] == pytest.approx((25, 10, 0), abs=1e-12)
+
+
+def _strokes_output(*strokes):
+    from aidl_lang.output.part import Output, Stroke
+    return Output(engrave=[Stroke(list(s)) for s in strokes])
+
+
+def _as_model(e):
+    """A LINE or ARC entity as (kind, numbers): a line's start and end x, y; an arc's start
+    and end x, y (ezdxf's own geometry, counter-clockwise from start to end angle), center x,
+    y and radius."""
+    if e.dxftype() == "LINE":
+        return "line", [*tuple(e.dxf.start)[:2], *tuple(e.dxf.end)[:2]]
+    return "arc", [*tuple(e.start_point)[:2], *tuple(e.end_point)[:2], *tuple(e.dxf.center)[:2],
+                   e.dxf.radius]
+
+
+def test_dxf_chained_engraving_is_one_open_polyline_with_bulges():
+    """An open stroke of chained lines and arcs is ONE open LWPOLYLINE (a laser runs it in one
+    go); exploded by ezdxf, it gives back the same lines and arcs (a 270-degree arc as two
+    halves).  A stroke with a gap becomes two chains; lone segments stay LINE / ARC / CIRCLE."""
+    big = Arc((10, 5), 5, -math.pi / 2, 1.5 * math.pi)     # 270 degrees ccw, (10, 0) -> (5, 5)
+    cw = Arc((5, 8), 3, -math.pi / 2, -math.pi / 2)         # 90 degrees cw, (5, 5) -> (2, 8)
+    chain = [Line((0, 0), (10, 0)), big, cw, Line((2, 8), (2, 12))]
+    gapped = [Line((30, 0), (35, 0)), Line((35, 0), (35, 5)),       # a chain of two,
+              Line((40, 0), (45, 0))]                               # then a lone line
+    lone_arc = [Arc((0, 30), 2, 0.0, math.pi / 3)]
+    lone_circle = [Circle((0, 40), 1.5)]
+    doc = _dxf(_strokes_output(chain, gapped, lone_arc, lone_circle))
+    msp = doc.modelspace()
+    assert sorted(e.dxftype() for e in msp) == ["ARC", "CIRCLE", "LINE", "LWPOLYLINE",
+                                                "LWPOLYLINE"]
+    assert all(e.dxf.layer == "ENGRAVE" for e in msp)
+    first, second = msp.query("LWPOLYLINE")
+    assert not first.closed and not second.closed
+    assert len(first) == 6           # line, 2 halves of the big arc, the cw arc, line, end point
+    got = [_as_model(e) for e in first.virtual_entities()]
+    assert [g[0] for g in got] == ["line", "arc", "arc", "arc", "line"]
+    a = 1e-9
+    assert got[0][1] == pytest.approx([0, 0, 10, 0], abs=a)
+    # the big arc's halves: ccw from (10, 0) through (15, 5)... to (5, 5), center (10, 5)
+    assert got[1][1] == pytest.approx([10, 0, *big.at(-math.pi / 2 + 0.75 * math.pi), 10, 5, 5],
+                                      abs=a)
+    assert got[2][1] == pytest.approx([*big.at(-math.pi / 2 + 0.75 * math.pi), 5, 5, 10, 5, 5],
+                                      abs=a)
+    # the cw arc: DXF arcs run ccw, so ezdxf's ARC runs from the model's end to its start
+    assert got[3][1] == pytest.approx([2, 8, 5, 5, 5, 8, 3], abs=a)
+    assert got[4][1] == pytest.approx([2, 8, 2, 12], abs=a)
+    assert [c for p in second.get_points("xy") for c in p] == pytest.approx([30, 0, 35, 0, 35, 5])
+    (line,) = msp.query("LINE")
+    assert _as_model(line)[1] == pytest.approx([40, 0, 45, 0])
+    (arc,) = msp.query("ARC")
+    assert (arc.dxf.start_angle, arc.dxf.end_angle) == pytest.approx((0, 60))
+    (circle,) = msp.query("CIRCLE")
+    assert circle.dxf.radius == 1.5
+
+
+def test_svg_moves_over_a_gap_in_a_stroke():
+    """A stroke with a gap is drawn as two subpaths: the gap is a move, not a line."""
+    import svgelements as se
+    o = _strokes_output([Line((0, 0), (5, 0)), Line((5, 0), (5, 5)), Line((9, 0), (12, 0))],
+                        [Circle((0, 20), 1), Line((1, 20), (3, 20))])
+    svg = encode(o, ".svg", Options(style="laser")).decode()
+    engrave = svg[svg.index('id="engrave"'):]
+    assert engrave.count("<path") == 2
+    assert "M0,0L5,0L5,-5M9,0L12,0" in engrave and "ZM1,-20L3,-20" in engrave
+    doc = se.SVG.parse(io.StringIO(svg))
+    (path, _) = [e for e in doc.elements() if isinstance(e, se.Path)]
+    assert len(list(path.as_subpaths())) == 2
+
+
 def _entity_area(e):
     """Area of a CIRCLE or a closed LWPOLYLINE with bulges, from the DXF data alone."""
     if e.dxftype() == "CIRCLE":
@@ -247,6 +324,94 @@ solid lock {
     assert "dasharray" not in encode(o, ".svg").decode()
 
 
+def _px_per_mm() -> float:
+    """svgelements' own pixels per mm (3.7795296: its constant, not 96 / 25.4 to the digit)."""
+    import svgelements as se
+    return float(se.Length("1mm").value(ppi=96))
+
+
+def _hand_built():
+    """A 40 x 20 plate whose right side is an arc through 0 degrees (x = 25 exactly, which no
+    chord vertex need reach), a circular hole, and two engraving strokes: a chain of a line
+    and an arc, and a single line."""
+    from aidl_lang.output.part import Loop, Output, PartOutline, Stroke
+    a = math.asin(10 / 25)                               # the arc meets y = +-10 at x = 25 cos a
+    xr = 25 * math.cos(a)
+    outer = Loop([Line((-20, -10), (xr, -10)), Arc((0, 0), 25, -a, 2 * a),
+                  Line((xr, 10), (-20, 10)), Line((-20, 10), (-20, -10))])
+    hole = Loop([Circle((0, 0), 3, ccw=False)])
+    chain = Stroke([Line((-15, -5), (-10, -5)), Arc((-10, 0), 5, -math.pi / 2, math.pi)])
+    single = Stroke([Line((5, 0), (10, 0))])
+    return Output(parts=[PartOutline("plate", "solid", [outer, hole])],
+                  engrave=[chain, single], title="plate")
+
+
+def test_laser_svg_strokes_are_true_hairlines_red_cut_blue_engrave():
+    """Re-read by svgelements, every laser-style element renders at most 0.025 mm wide (the
+    old ``stroke-width="0.01mm"`` was 0.0378 mm on the mm page), cuts red, engraving blue."""
+    import svgelements as se
+    o = _hand_built()
+    doc = se.SVG.parse(io.StringIO(encode(o, ".svg", Options(style="laser")).decode()))
+    shapes = [e for e in doc.elements() if isinstance(e, se.Shape)]
+    widths = [e.implicit_stroke_width / _px_per_mm() for e in shapes]
+    assert len(shapes) == 4 and max(widths) <= 0.025 and min(widths) > 0
+    colours = sorted(str(e.stroke) for e in shapes)
+    assert colours == ["#0000ff"] * 2 + ["#ff0000"] * 2
+    assert all(e.fill is None or e.fill.value is None for e in shapes)
+
+
+def test_svg_draws_a_chained_stroke_as_one_path():
+    svg = encode(_hand_built(), ".svg", Options(style="laser")).decode()
+    engrave = svg[svg.index('id="engrave"'):]
+    assert engrave.count("<path") == 2 and "M-15,5L-10,5A5,5 0 0 0 -10,-5" in engrave
+
+
+def test_margin_zero_makes_the_page_the_exact_bounding_box():
+    import svgelements as se
+    from aidl_lang.output.extent import extent
+    o = _hand_built()
+    assert extent(o) == pytest.approx((-20, -10, 25, 10), abs=1e-12)
+    assert o.bounds()[2] < 25 - 1e-6                 # the sampled extent falls short of the arc
+    for style in ("preview", "laser"):
+        svg = encode(o, ".svg", Options(style=style, margin=0)).decode()
+        doc = se.SVG.parse(io.StringIO(svg))
+        assert doc.width / _px_per_mm() == pytest.approx(45, abs=1e-6)
+        assert doc.height / _px_per_mm() == pytest.approx(20, abs=1e-6)
+        assert ' width="45mm"' in svg and ' height="20mm"' in svg
+        assert 'viewBox="-20,-10,45,20"' in svg
+    wide = se.SVG.parse(io.StringIO(encode(o, ".svg", Options(margin=2.5)).decode()))
+    assert wide.width / _px_per_mm() == pytest.approx(50, abs=1e-6)
+    default = se.SVG.parse(io.StringIO(encode(o, ".svg").decode()))
+    assert default.width / _px_per_mm() == pytest.approx(45 + 2 * 2.25, abs=1e-6)   # 5 % of 45
+
+
+@pytest.mark.parametrize("margin", [-1.0, math.inf, math.nan])
+def test_a_bad_margin_is_an_output_error(margin):
+    from aidl_lang.output.part import OutputError
+    with pytest.raises(OutputError, match="margin"):
+        encode(_hand_built(), ".svg", Options(margin=margin))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(-50, 50), st.floats(-50, 50), st.floats(0.01, 100), st.floats(-20, 20),
+       st.floats(-2 * math.pi, 2 * math.pi).filter(lambda v: abs(v) > 1e-6))
+def test_an_arcs_extent_is_the_box_of_its_points(cx, cy, r, a0, sweep):
+    """The exact extent of an arc holds all its points and is no larger than they reach
+    (densely sampled: a sample misses an extreme by at most r (1 - cos(pi / 4000)))."""
+    from aidl_lang.output.extent import extent
+    from aidl_lang.output.part import Output, Stroke
+    arc = Arc((cx, cy), r, a0, sweep)
+    t = a0 + sweep * np.linspace(0, 1, 4001)
+    xs, ys = cx + r * np.cos(t), cy + r * np.sin(t)
+    got = extent(Output(engrave=[Stroke([arc])]))
+    tol = 1e-9 * (1 + r + abs(cx) + abs(cy))
+    slack = r * (1 - math.cos(math.pi / 4000)) + tol
+    assert got[0] <= xs.min() + tol and got[1] <= ys.min() + tol
+    assert got[2] >= xs.max() - tol and got[3] >= ys.max() - tol
+    assert got[0] >= xs.min() - slack and got[1] >= ys.min() - slack
+    assert got[2] <= xs.max() + slack and got[3] <= ys.max() + slack
+
+
 # ------------------------------------------------------------------ PNG
 def test_png_has_the_requested_width(compile_text):
     pytest.importorskip("cairosvg")
@@ -258,6 +423,8 @@ def test_png_has_the_requested_width(compile_text):
     big = encode(o, ".png", Options(dpi=192))
     w2, _ = struct.unpack(">II", big[16:24])
     assert w2 == pytest.approx(44 / 25.4 * 192, abs=1.5)       # 40 mm + 2 x 2 mm margin
+    tight = encode(o, ".png", Options(dpi=254, margin=0))    # 10 pixels per mm, no margin
+    assert struct.unpack(">II", tight[16:24]) == (400, 200)
 
 
 # ------------------------------------------------------------------ STL / 3MF

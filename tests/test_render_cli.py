@@ -136,6 +136,22 @@ def test_show_and_thickness_options(good, tmp_path, capsys):
     assert main(["render", str(good), "-o", str(stl), "--thickness", "-1"]) == 2
 
 
+def test_margin_option(good, tmp_path, capsys):
+    import svgelements as se
+    svg = tmp_path / "m.svg"
+    assert main(["render", str(good), "-o", str(svg), "--margin", "0"]) == 0
+    mm = float(se.Length("1mm").value(ppi=96))          # svgelements' pixels per mm
+    doc = se.SVG.parse(str(svg))
+    assert (doc.width / mm, doc.height / mm) == pytest.approx((40, 30), abs=1e-6)
+    assert main(["render", str(good), "-o", str(svg), "--margin", "3.5"]) == 0
+    assert se.SVG.parse(str(svg)).width / mm == pytest.approx(47, abs=1e-6)
+    capsys.readouterr()
+    for bad in ("-1", "nan", "1e9"):
+        assert main(["render", str(good), "-o", str(tmp_path / "n.svg"), "--margin", bad]) == 2
+        assert "--margin expects a length in mm" in capsys.readouterr().err
+    assert not (tmp_path / "n.svg").exists()
+
+
 @pytest.mark.parametrize("opt,msg", [(["--dpi", "-3"], "positive --dpi"),
                                      (["--png-width", "0"], "positive --png-width"),
                                      (["--dpi", "100000"], "more than 32767 a side"),
@@ -155,3 +171,16 @@ def test_out_of_range_port_and_thickness_are_usage_errors(good, tmp_path, capsys
     assert e.value.code == 2 and "--port expects a number from 0 to 65535" in capsys.readouterr().err
     assert main(["render", str(good), "-o", str(tmp_path / "p.stl"), "--thickness", "1e9mm"]) == 2
     assert "--thickness expects a positive length up to 1 km" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("module,ext,extra", [("networkx", ".3mf", "mesh"),
+                                              ("lxml.etree", ".3mf", "mesh"),
+                                              ("cairosvg", ".png", "png"), ("OCP", ".step", "step")])
+def test_a_missing_optional_library_exits_2_with_the_install_line(good, tmp_path, capsys,
+                                                                  monkeypatch, module, ext, extra):
+    monkeypatch.setitem(sys.modules, module, None)        # `import module` raises ImportError
+    out, svg = tmp_path / ("p" + ext), tmp_path / "p.svg"
+    assert main(["render", str(good), "-o", str(svg), "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"pip install 'aidl-lang[{extra}]'" in err and "internal error" not in err
+    assert not out.exists() and not svg.exists()

@@ -1,7 +1,9 @@
 """The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
-Exit status: 0 success, 1 a user error in the program (diagnostics printed), 2 a usage error.
+Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
+writer cannot make (an impossible PNG size), 2 a usage error or a format whose optional library
+is not installed (the message gives the ``pip install`` line), 3 an internal error (a bug).
 An output file is written only when the whole pipeline succeeded and every requested format was
 produced (each written to a temporary file beside it, then renamed), so a good drawing is never
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
@@ -99,6 +101,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--svg-style", choices=["preview", "laser"], default="preview",
                    help="preview: filled solids (default); laser: stroke-only red cut and blue "
                         "engrave hairlines, one element per loop")
+    r.add_argument("--margin", type=float, default=None, metavar="MM",
+                   help="space around the drawing on the SVG/PNG page, in mm (default 5%% of "
+                        "the larger side, at least 1 mm; 0: the page is the bounding box)")
     r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
@@ -350,7 +355,7 @@ def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
 
 def cmd_render(args) -> int:
     from ..pipeline import compile_source
-    from ..output import Options, OutputError, build, encode
+    from ..output import MissingDependency, Options, OutputError, build, encode
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -364,6 +369,9 @@ def cmd_render(args) -> int:
         if thickness is None:
             return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
                           f"`{args.thickness}`")
+    from ..limits import MAX_EXTENT
+    if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
+        return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
     if args.file == "-":
         src = sys.stdin.read()
     else:
@@ -377,10 +385,13 @@ def cmd_render(args) -> int:
         return 1
     output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
-                  thickness=thickness)
+                  thickness=thickness, margin=args.margin)
     try:
         items = [(o, encode(output, o.suffix, opt)) for o in outs]
-    except OutputError as e:                 # a missing library, an impossible size
+    except MissingDependency as e:           # not the program's fault: install the extra
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 2
+    except OutputError as e:                 # an impossible size
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     err = _write_all(items)

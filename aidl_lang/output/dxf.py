@@ -4,7 +4,13 @@ What laser, waterjet and CNC software imports: a DXF R2010 file in millimetres (
 ``$INSUNITS`` = 4, ``$MEASUREMENT`` = 1).  Each closed outline loop is a ``CIRCLE`` when it is
 a circle and otherwise a closed ``LWPOLYLINE`` whose arcs are bulges (bulge = tan(sweep / 4);
 arcs over 180 degrees are split in two).  Engraving (drawings, text strokes, unclosed curves)
-is ``LINE``, ``ARC``, ``CIRCLE`` and ``LWPOLYLINE`` entities.
+is written so that a laser runs each stroke in one go: a closed stroke is a closed
+``LWPOLYLINE``; an open stroke whose segments are chained (each starting where the one before
+ends, within :data:`CHAIN_TOL`) is ONE open ``LWPOLYLINE`` with bulges; a lone line, arc or
+circle is a ``LINE``, ``ARC`` or ``CIRCLE`` (a stroke with gaps is cut into its chains).
+
+The header's ``$EXTMIN`` / ``$EXTMAX`` are the drawing's exact extent
+(:func:`~.extent.extent`, z = 0).
 
 Layers: ``CUT`` (red) for the outlines of a single part, ``ENGRAVE`` (blue) for engraving; in an
 assembly with several parts, each part's outlines are on their own layer ``CUT-<part>``
@@ -15,9 +21,11 @@ from __future__ import annotations
 import io
 import math
 
+from .extent import extent
 from .part import Arc, Circle, Line, Output, PartOutline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
+CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
 _BAD = '<>/\\":;?*|=`'
 
 
@@ -28,8 +36,23 @@ def layer_of(part: PartOutline, output: Output) -> str:
     return "CUT-" + "".join("_" if c in _BAD else c for c in part.name)
 
 
-def _bulge_points(segments):
-    """(x, y, bulge) vertices of a closed chain of lines and arcs."""
+def _chains(segments) -> list[list]:
+    """``segments`` cut into maximal chains: runs of lines and arcs each starting within
+    :data:`CHAIN_TOL` of the previous one's end; a circle is a chain of its own."""
+    chains: list[list] = []
+    for s in segments:
+        last = chains[-1][-1] if chains else None
+        if (last is not None and not isinstance(s, Circle) and not isinstance(last, Circle)
+                and math.dist(last.end, s.start) <= CHAIN_TOL):
+            chains[-1].append(s)
+        else:
+            chains.append([s])
+    return chains
+
+
+def _bulge_points(segments, closed: bool = True):
+    """(x, y, bulge) vertices of a chain of lines and arcs (bulge = tan(sweep / 4), arcs over
+    180 degrees split in two); an open chain ends with its last segment's end point."""
     pts = []
     for s in segments:
         if isinstance(s, Line):
@@ -40,6 +63,9 @@ def _bulge_points(segments):
                 part = Arc(s.center, s.radius, s.start_angle + s.sweep * i / k, s.sweep / k)
                 x, y = part.start
                 pts.append((x, y, math.tan(part.sweep / 4)))
+    if not closed and segments:
+        x, y = segments[-1].end
+        pts.append((x, y, 0.0))
     return pts
 
 
@@ -53,6 +79,8 @@ def to_dxf_document(output: Output):
     doc.layers.add(CUT, color=1)
     doc.layers.add(ENGRAVE, color=5)
     msp = doc.modelspace()
+    x0, y0, x1, y1 = extent(output)
+    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))   # ezdxf copies them to $EXTMIN/$EXTMAX
     for p in output.parts:
         layer = layer_of(p, output)
         if layer not in doc.layers:
@@ -70,7 +98,12 @@ def to_dxf_document(output: Output):
             msp.add_lwpolyline(_bulge_points(st.segments), format="xyb", close=True,
                                dxfattribs=att)
             continue
-        for s in st.segments:
+        for chain in _chains(st.segments):
+            if len(chain) > 1:          # one polyline: the laser does not stop at each joint
+                msp.add_lwpolyline(_bulge_points(chain, closed=False), format="xyb",
+                                   close=False, dxfattribs=att)
+                continue
+            (s,) = chain
             if isinstance(s, Line):
                 msp.add_line(s.start, s.end, dxfattribs=att)
             elif isinstance(s, Circle):

@@ -10,17 +10,20 @@ from .part import Output
 @dataclass
 class Options:
     """Writer options: ``show`` debug layers (SVG/PNG), SVG ``style`` (preview | laser), PNG
-    ``dpi`` / ``width`` (pixels), ``thickness`` (mm, STL/3MF; overrides the program's)."""
+    ``dpi`` / ``width`` (pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
+    ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
+    least 1 mm; 0: the page is exactly the drawing's bounding box)."""
     show: tuple = ()
     style: str = "preview"
     dpi: float = 96.0
     width: int | None = None
     thickness: float | None = None
+    margin: float | None = None
 
 
 def _svg(o: Output, opt: Options) -> bytes:
     from .svg import to_svg
-    return to_svg(o, show=opt.show, style=opt.style).encode()
+    return to_svg(o, show=opt.show, style=opt.style, margin=opt.margin).encode()
 
 
 def _dxf(o: Output, opt: Options) -> bytes:
@@ -30,7 +33,8 @@ def _dxf(o: Output, opt: Options) -> bytes:
 
 def _png(o: Output, opt: Options) -> bytes:
     from .png import to_png
-    return to_png(o, dpi=opt.dpi, width=opt.width, show=opt.show, style=opt.style)
+    return to_png(o, dpi=opt.dpi, width=opt.width, show=opt.show, style=opt.style,
+                  margin=opt.margin)
 
 
 def _stl(o: Output, opt: Options) -> bytes:

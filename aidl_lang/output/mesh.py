@@ -1,6 +1,8 @@
 """3D outputs: each part extruded by its thickness with ``manifold3d`` (``Manifold.extrude``),
 written as STL (all bodies in one binary STL) or 3MF (one object per part, named after it) with
-``trimesh`` (the ``mesh`` extra).
+``trimesh`` (a core dependency, imported only here: ``aidl check`` and SVG do not load it).
+trimesh's 3MF writer needs ``networkx`` and ``lxml`` (the ``mesh`` extra); without them
+:func:`to_3mf` raises :class:`~.part.MissingDependency` naming the install line.
 
 The profile extruded is the part's boolean result (circles as chords within
 :data:`~aidl_lang.geometry.tessellate.CHORD_TOL`), so the volume is the profile's area times the
@@ -15,15 +17,20 @@ from .part import MissingDependency, Output
 DEFAULT_THICKNESS = 3.0
 
 
+def _trimesh():
+    try:
+        import trimesh
+    except ImportError:         # a core dependency: only a damaged install lacks it
+        raise MissingDependency("STL and 3MF output need trimesh: pip install 'trimesh>=4.0' "
+                                "(or reinstall aidl-lang)") from None
+    return trimesh
+
+
 def bodies(output: Output, thickness: float | None = None) -> list[tuple[str, object]]:
     """(part name, ``trimesh.Trimesh``) per solid part.  ``thickness`` (mm) overrides the
     parts' own; without either, :data:`DEFAULT_THICKNESS`."""
     import manifold3d as mf
-    try:
-        import trimesh
-    except ImportError:
-        raise MissingDependency("STL and 3MF output need trimesh: pip install 'aidl-lang[mesh]'") \
-            from None
+    trimesh = _trimesh()
     out = []
     for p in output.parts:
         if p.kind != "solid" or p.shape is None or p.shape.is_empty():
@@ -38,8 +45,9 @@ def bodies(output: Output, thickness: float | None = None) -> list[tuple[str, ob
 
 
 def to_stl(output: Output, thickness: float | None = None) -> bytes:
-    """Binary STL of every solid part, extruded."""
-    import trimesh
+    """Binary STL of every solid part, extruded (mm).  Raises :class:`MissingDependency`
+    only on a damaged install (trimesh is a core dependency)."""
+    trimesh = _trimesh()
     meshes = [m for _, m in bodies(output, thickness)]
     if not meshes:
         return trimesh.Trimesh().export(file_type="stl")
@@ -47,13 +55,15 @@ def to_stl(output: Output, thickness: float | None = None) -> bytes:
 
 
 def to_3mf(output: Output, thickness: float | None = None) -> bytes:
-    """3MF with one object per solid part (named after the part)."""
-    import trimesh
+    """3MF with one object per solid part (named after the part; mm).  Raises
+    :class:`MissingDependency` without ``networkx`` or ``lxml`` (the ``mesh`` extra)."""
+    trimesh = _trimesh()
     try:
-        import networkx  # noqa: F401  (trimesh's 3MF exporter needs it)
-    except ImportError:
-        raise MissingDependency("3MF output needs networkx: pip install 'aidl-lang[mesh]'") \
-            from None
+        import networkx  # noqa: F401  (trimesh's 3MF exporter needs both)
+        import lxml.etree  # noqa: F401
+    except ImportError as e:
+        raise MissingDependency(f"3MF output needs networkx and lxml (no {e.name}): "
+                                "pip install 'aidl-lang[mesh]'") from None
     scene = trimesh.Scene()
     for name, m in bodies(output, thickness):
         scene.add_geometry(m, geom_name=name, node_name=name)

@@ -17,8 +17,9 @@ MAX_AREA = 100_000_000       # 400 MB of RGBA at most
 
 
 def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
-           style: str = "preview") -> bytes:
-    """PNG bytes of ``output``.  Raises :class:`MissingDependency` without ``cairosvg`` and
+           style: str = "preview", margin: float | None = None) -> bytes:
+    """PNG bytes of ``output`` (the page of :func:`~.svg.to_svg` with ``show``, ``style`` and
+    ``margin``, mm).  Raises :class:`MissingDependency` without ``cairosvg`` and
     :class:`OutputError` for a non-positive size or an image over :data:`MAX_SIDE` a side or
     :data:`MAX_AREA` pixels."""
     try:
@@ -27,7 +28,7 @@ def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
         raise MissingDependency(
             "PNG output needs cairosvg and the cairo library: pip install 'aidl-lang[png]' "
             f"(and apt-get install libcairo2 on Debian/Ubuntu) ({e})") from None
-    svg = to_svg(output, show=show, style=style).encode()
+    svg = to_svg(output, show=show, style=style, margin=margin).encode()
     if width is not None and width < 1 or width is None and not dpi > 0:
         raise OutputError(f"a PNG needs a positive {'--png-width' if width is not None else '--dpi'}")
     w_mm = re.search(rb' width="([0-9.]+)mm"', svg)

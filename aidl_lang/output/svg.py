@@ -8,8 +8,10 @@ declared outline, dashed), ``bboxes`` (every structure's bounding box), ``constr
 (construction geometry).
 
 Styles: ``preview`` (default) fills solids light grey for readability, with a thin dark stroke;
-``laser`` is stroke-only, red hairlines for cuts and blue for engraving, one element per loop
-— what laser-cutter software (LightBurn, Inkscape, VisiCut) imports as cut and engrave paths.
+``laser`` is stroke-only, hairlines 0.01 mm wide (:data:`HAIRLINE`, in the mm user units of
+the viewBox) in red ``#ff0000`` for cuts and blue ``#0000ff`` for engraving, one element per
+loop and one path per stroke — what laser-cutter software (LightBurn, Inkscape, VisiCut)
+imports as cut and engrave paths.
 Either way the geometry is exact.  Units: width and height in mm, the viewBox in mm; the
 model's y points up and is flipped for the page (y_svg = -y).
 """
@@ -19,10 +21,13 @@ import math
 
 import numpy as np
 
-from .part import Arc, Circle, Line, Loop, Output, build
+from .extent import extent
+from .part import Arc, Circle, Line, Loop, Output, OutputError, build
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
+CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
+HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
 
 
 def _f(v: float) -> str:
@@ -42,27 +47,37 @@ def _arc_cmd(a: Arc) -> str:
 
 
 def segments_d(segments, closed: bool) -> str:
-    """Path data of a chain of exact segments (a Circle as two half arcs)."""
+    """Path data of a chain of exact segments (a Circle as two half arcs): one subpath per
+    run of segments each starting within :data:`CHAIN_TOL` (mm) of the previous
+    one's end, so a gap is a move, never a drawn line."""
     out = []
-    for i, s in enumerate(segments):
+    here = None                       # the pen's position, None after a circle or at the start
+    for s in segments:
         if isinstance(s, Circle):
-            cx, cy = s.center
             sg = 1 if s.ccw else -1
             h1 = Arc(s.center, s.radius, 0.0, sg * math.pi)
             h2 = Arc(s.center, s.radius, sg * math.pi, sg * math.pi)
             out.append(f"M{_pt(h1.start)}{_arc_cmd(h1)}{_arc_cmd(h2)}Z")
+            here = None
             continue
-        if i == 0:
+        if here is None or math.dist(here, s.start) > CHAIN_TOL:
             out.append(f"M{_pt(s.start)}")
         out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
+        here = s.end
     if closed and segments and not isinstance(segments[-1], Circle):
         out.append("Z")
     return "".join(out)
 
 
-def to_svg(output, title: str = "", show=(), style: str = "preview") -> str:
+def to_svg(output, title: str = "", show=(), style: str = "preview",
+           margin: float | None = None) -> str:
     """The SVG text of ``output`` (an :class:`Output`, or a booleans ``Drawing``, which is
-    converted with :func:`~.part.build`).  ``show``: debug layers from :data:`SHOW`."""
+    converted with :func:`~.part.build`).  ``show``: debug layers from :data:`SHOW`.
+
+    The page is the exact extent of the drawing (:func:`~.extent.extent`) plus ``margin`` mm
+    on every side; ``None`` (the default) is 5 % of the larger side, at least 1 mm, and ``0``
+    makes the page exactly the bounding box.  Raises :class:`ValueError` for an unknown layer
+    and :class:`~.part.OutputError` for a negative or non-finite margin."""
     import svgwrite
     if not isinstance(output, Output):
         output = build(output, title)
@@ -71,7 +86,9 @@ def to_svg(output, title: str = "", show=(), style: str = "preview") -> str:
         raise ValueError(f"unknown layer(s) to show: {', '.join(sorted(bad))}; "
                          f"known: {', '.join(SHOW)}")
     d0 = output.drawing
-    x0, y0, x1, y1 = output.bounds()
+    if margin is not None and not 0 <= margin < math.inf:
+        raise OutputError(f"the SVG margin must be a length of 0 mm or more, got {margin}")
+    x0, y0, x1, y1 = extent(output)
     if "construction" in show and d0 is not None:
         for _, item, _ in d0.construction:
             pts = _item_points(item)
@@ -79,7 +96,8 @@ def to_svg(output, title: str = "", show=(), style: str = "preview") -> str:
                 x0, y0 = min(x0, pts[:, 0].min()), min(y0, pts[:, 1].min())
                 x1, y1 = max(x1, pts[:, 0].max()), max(y1, pts[:, 1].max())
     w, h = max(x1 - x0, 1e-3), max(y1 - y0, 1e-3)
-    margin = max(0.05 * max(w, h), 1.0)
+    if margin is None:
+        margin = max(0.05 * max(w, h), 1.0)
     vx, vy = x0 - margin, -(y1 + margin)
     vw, vh = w + 2 * margin, h + 2 * margin
     sw = max(vw, vh) / 500.0
@@ -90,8 +108,9 @@ def to_svg(output, title: str = "", show=(), style: str = "preview") -> str:
         d.set_desc(title=title or output.title)
     laser = style == "laser"
     if laser:
-        cut = d.g(id="cut", fill="none", stroke="#ff0000", stroke_width="0.01mm")
-        cut_w = 0.01
+        # a true hairline: 0.01 user units = 0.01 mm ("0.01mm" would be 0.01 CSS mm in user
+        # units, i.e. 3.78 times wider on this page)
+        cut = d.g(id="cut", fill="none", stroke="#ff0000", stroke_width=_f(HAIRLINE))
     else:
         cut = d.g(id="cut", fill="#cfd8dc", stroke="#263238", stroke_width=_f(sw),
                   fill_rule="evenodd")
@@ -108,7 +127,7 @@ def to_svg(output, title: str = "", show=(), style: str = "preview") -> str:
         cut.add(g)
     d.add(cut)
     eng = d.g(id="engrave", fill="none", stroke="#0000ff" if laser else "#1565c0",
-              stroke_width="0.01mm" if laser else _f(sw), stroke_linecap="round",
+              stroke_width=_f(HAIRLINE if laser else sw), stroke_linecap="round",
               stroke_linejoin="round")
     for st in output.engrave:
         e = _element(d, st.segments, st.closed)
