@@ -203,8 +203,9 @@ def turn_between(a: Segment, b: Segment) -> float:
 
 
 def with_ends(s: Segment, p: Point, q: Point) -> Segment:
-    """``s`` cut (or extended) to run from ``p`` to ``q`` on its own carrier, turning the
-    same way (an arc keeps the sign of its sweep; its size comes from the two angles)."""
+    """``s`` cut to run from ``p`` to ``q`` (points of it, in its order) on its own carrier,
+    turning the same way: an arc keeps the sign of its sweep, and never grows past its own
+    (``p`` = ``q`` is no arc, not a whole turn)."""
     if isinstance(s, Line):
         return Line(p, q)
     cx, cy = s.center
@@ -213,8 +214,10 @@ def with_ends(s: Segment, p: Point, q: Point) -> Segment:
     sw = (a2 - a1) % (2 * math.pi)
     if s.sweep < 0:
         sw -= 2 * math.pi
-    if abs(sw) < 1e-15 or abs(abs(sw) - 2 * math.pi) < 1e-15:
-        sw = 0.0 if abs(s.sweep) < math.pi else math.copysign(2 * math.pi, s.sweep)
+    if abs(sw) > abs(s.sweep) + 1e-9:        # past a whole turn: the same point, no arc
+        sw -= math.copysign(2 * math.pi, sw)
+        if abs(sw) > 1e-9:
+            sw = 0.0
     return Arc(s.center, s.radius, a1, sw)
 
 
@@ -290,68 +293,81 @@ def foot(c: tuple, p: Point) -> Point:
     return (cx + dx / L * r, cy + dy / L * r)
 
 
+def crossings(a: tuple, b: tuple) -> list[Point]:
+    """Every point where carriers ``a`` and ``b`` meet: two, one (lines crossing, or a touch
+    within :data:`TANGENT`) or none (parallel lines, circles apart)."""
+    if a[0] == "L" and b[0] == "L":
+        return _line_line(a, b)
+    if a[0] == "L":
+        return _line_circle(a, b)
+    if b[0] == "L":
+        return _line_circle(b, a)
+    return _circle_circle(a, b)
+
+
 def intersect(a: tuple, b: tuple, near: Point) -> Point:
     """The point where carriers ``a`` and ``b`` meet nearest to ``near``.  Two crossing
     points closer together than :data:`TANGENT` times the radius count as one touch and give
-    the touching point; carriers that do not meet (parallel lines, circles apart) give their
-    point of closest approach on ``a``."""
-    if a[0] == "L" and b[0] == "L":
-        return _line_line(a, b, near)
-    if a[0] == "L":
-        return _line_circle(a, b, near)
-    if b[0] == "L":
-        return _line_circle(b, a, near)
-    return _circle_circle(a, b, near)
+    the touching point; carriers that do not meet (parallel lines, circles apart) give the
+    point of ``a`` nearest to ``near``, or their point of closest approach."""
+    pts = crossings(a, b)
+    if not pts:
+        return _closest(a, b, near)
+    return min(pts, key=lambda q: math.hypot(q[0] - near[0], q[1] - near[1]))
 
 
-def _line_line(a, b, near):
+def _closest(a, b, near):
+    if a[0] == "C" and b[0] == "C" and math.hypot(a[1] - b[1], a[2] - b[2]) > 1e-15:
+        return foot(a, (b[1], b[2])) if math.hypot(a[1] - b[1], a[2] - b[2]) > a[3] else \
+            foot(a, (2 * a[1] - b[1], 2 * a[2] - b[2]))
+    if a[0] == "L" and b[0] == "C":
+        return foot(a, (b[1], b[2]))
+    if a[0] == "C" and b[0] == "L":
+        return foot(a, foot(b, (a[1], a[2])))
+    return foot(a, near)
+
+
+def _line_line(a, b):
     _, px, py, ux, uy = a
     _, qx, qy, vx, vy = b
     den = ux * vy - uy * vx
     if abs(den) < 1e-14:
-        return foot(a, near)
+        return []
     t = ((qx - px) * vy - (qy - py) * vx) / den
-    return (px + t * ux, py + t * uy)
+    return [(px + t * ux, py + t * uy)]
 
 
-def _line_circle(ln, c, near):
+def _line_circle(ln, c):
     _, px, py, ux, uy = ln
     _, cx, cy, r = c
     fx, fy = cx - px, cy - py
     t0 = fx * ux + fy * uy                      # foot of the center on the line
     d = ux * fy - uy * fx                       # signed distance of the center from the line
     h2 = (r - d) * (r + d)
+    if h2 < -(TANGENT * r) ** 2:
+        return []
     if h2 <= (TANGENT * r) ** 2:
-        return (px + t0 * ux, py + t0 * uy)
+        return [(px + t0 * ux, py + t0 * uy)]
     h = math.sqrt(h2)
-    best, dist = None, math.inf
-    for t in (t0 - h, t0 + h):
-        q = (px + t * ux, py + t * uy)
-        dq = math.hypot(q[0] - near[0], q[1] - near[1])
-        if dq < dist:
-            best, dist = q, dq
-    return best
+    return [(px + (t0 - h) * ux, py + (t0 - h) * uy), (px + (t0 + h) * ux, py + (t0 + h) * uy)]
 
 
-def _circle_circle(c1, c2, near):
+def _circle_circle(c1, c2):
     _, x1, y1, r1 = c1
     _, x2, y2, r2 = c2
     dx, dy = x2 - x1, y2 - y1
     D = math.hypot(dx, dy)
     if D < 1e-15:
-        return foot(c1, near)
+        return []
     ux, uy = dx / D, dy / D
     a = (r1 * r1 - r2 * r2 + D * D) / (2 * D)
     h2 = (r1 - a) * (r1 + a)
-    if h2 <= (TANGENT * min(r1, r2)) ** 2:
+    tol = (TANGENT * min(r1, r2)) ** 2
+    if h2 < -tol:
+        return []
+    if h2 <= tol:
         s = 1.0 if a >= 0 else -1.0                # the touching point, on the center line
-        return (x1 + s * r1 * ux, y1 + s * r1 * uy)
+        return [(x1 + s * r1 * ux, y1 + s * r1 * uy)]
     h = math.sqrt(h2)
     mx, my = x1 + a * ux, y1 + a * uy
-    best, dist = None, math.inf
-    for sg in (1.0, -1.0):
-        q = (mx - sg * h * uy, my + sg * h * ux)
-        dq = math.hypot(q[0] - near[0], q[1] - near[1])
-        if dq < dist:
-            best, dist = q, dq
-    return best
+    return [(mx - h * uy, my + h * ux), (mx + h * uy, my - h * ux)]

@@ -368,32 +368,44 @@ def _fraction(g, p, from_end: bool) -> float:
 
 def _fillet_at(a, b, turn: float, r: float):
     """(tangent point on a, tangent point on b, the fillet Arc) for radius ``r``, or None when
-    the tangent points fall outside the halves of ``a`` and ``b`` next to the corner."""
-    from .curves import Arc, foot, intersect
+    no arc of that radius fits: its center is where ``a`` and ``b``'s carriers offset by
+    ``r`` toward the corner's inside cross, it must run the way both segments run where it
+    touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
+    the corner."""
+    from .curves import Arc, carrier, crossings, foot, tangent_at
     s = 1.0 if turn > 0 else -1.0
     oa, ob = _offset(a, s * r), _offset(b, s * r)
     if oa is None or ob is None:
         return None
     p = b.start
-    (ax, ay), (bx, by) = _dir(a, True), _dir(b, False)
-    # the guess: the line-line fillet center at this corner
-    mx, my = (-ay - by) * s, (ax + bx) * s
-    L = math.hypot(mx, my) or 1.0
-    h = r / max(math.cos(turn / 2), 1e-9)
-    c = intersect(oa, ob, (p[0] + mx / L * h, p[1] + my / L * h))
-    from .curves import carrier
-    ta, tb = foot(carrier(a), c), foot(carrier(b), c)
-    fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
-    if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
-        return None
-    a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
-    a2 = math.atan2(tb[1] - c[1], tb[0] - c[0])
-    sw = (a2 - a1) % (2 * math.pi)
-    if s < 0:
-        sw -= 2 * math.pi
-    if abs(sw) > math.pi + abs(turn):
-        return None
-    return ta, tb, Arc(c, r, a1, sw)
+    best = None
+    for c in crossings(oa, ob):
+        ta, tb = foot(carrier(a), c), foot(carrier(b), c)
+        fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
+        if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
+            continue
+        # the arc, turning the corner's way, runs along a at ta and along b at tb
+        a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
+        a2 = math.atan2(tb[1] - c[1], tb[0] - c[0])
+        arc_a = (-s * math.sin(a1), s * math.cos(a1))
+        arc_b = (-s * math.sin(a2), s * math.cos(a2))
+        da = tangent_at(with_ends_at(a, ta), True)
+        db = tangent_at(with_ends_at(b, tb, start=True), False)
+        if arc_a[0] * da[0] + arc_a[1] * da[1] < 0.5 or arc_b[0] * db[0] + arc_b[1] * db[1] < 0.5:
+            continue
+        sw = (a2 - a1) % (2 * math.pi)
+        if s < 0:
+            sw -= 2 * math.pi
+        d = math.hypot(c[0] - p[0], c[1] - p[1])
+        if best is None or d < best[0]:
+            best = (d, (ta, tb, Arc(c, r, a1, sw)))
+    return best[1] if best is not None else None
+
+
+def with_ends_at(g, t, start: bool = False):
+    """``g`` cut to end (or, with ``start``, to begin) at ``t`` on its carrier."""
+    from .curves import with_ends
+    return with_ends(g, t, g.end) if start else with_ends(g, g.start, t)
 
 
 def _fillet(a, b, turn: float, r: float):

@@ -129,23 +129,70 @@ def _stroke(item, exact, style: str, source: str) -> Stroke | None:
 
 
 def _join(strokes: list[Stroke]) -> list[Stroke]:
-    """Consecutive open strokes of one source whose ends meet, as one stroke (a text's pen
-    strokes: one polyline per stroke of each glyph instead of one line per segment)."""
+    """The open strokes of one source (a text's pen strokes, a drawing's lines) joined into
+    runs: wherever exactly two open ends meet, the two strokes become one (one is turned
+    round when needed), so a laser runs each run without lifting; a run that comes back to
+    its start is a closed stroke.  Strokes of other sources, closed ones and circles stay."""
+    from ..geometry.curves import reverse
     out: list[Stroke] = []
+    groups: dict = {}
     for st in strokes:
-        last = out[-1] if out else None
-        if (last is not None and not st.closed and not last.closed and last.source == st.source
-                and last.style == st.style and st.segments
-                and not isinstance(st.segments[0], Circle)
-                and not isinstance(last.segments[-1], Circle)
-                and math.dist(last.segments[-1].end, st.segments[0].start) <= 1e-12):
-            last.segments.extend(st.segments)
+        if st.closed or not st.segments or any(isinstance(g, Circle) for g in st.segments):
+            out.append(st)
             continue
-        out.append(Stroke(list(st.segments), st.style, st.closed, st.source))
-    for st in out:                  # a run that comes back to its start is a closed stroke
-        if len(st.segments) > 2 and not st.closed and \
-                math.dist(st.segments[-1].end, st.segments[0].start) <= 1e-12:
-            st.closed = True
+        key = (st.source, st.style)
+        if key not in groups:
+            groups[key] = []
+            out.append(key)              # the group's place in the drawing order
+        groups[key].append(list(st.segments))
+    result = []
+    for item in out:
+        if isinstance(item, Stroke):
+            result.append(item)
+            continue
+        source, style = item
+        for chain, closed in _runs_of(groups[item], reverse):
+            result.append(Stroke(chain, style, closed, source))
+    return result
+
+
+def _end_key(p) -> tuple:
+    return (round(p[0], 9), round(p[1], 9))
+
+
+def _runs_of(chains: list[list], reverse) -> list[tuple[list, bool]]:
+    """Join open chains of segments at every point where exactly two chain ends meet."""
+    chains = [c for c in chains]
+    alive = [True] * len(chains)
+    ends: dict = {}
+    for i, c in enumerate(chains):
+        ends.setdefault(_end_key(c[0].start), []).append(i)
+        ends.setdefault(_end_key(c[-1].end), []).append(i)
+    changed = True
+    while changed:
+        changed = False
+        for key, at in list(ends.items()):
+            live = [i for i in at if alive[i]]
+            if len(live) != 2 or live[0] == live[1]:
+                continue
+            i, j = live
+            a, b = chains[i], chains[j]
+            # orient so that a ends and b starts at this point
+            if _end_key(a[-1].end) != key:
+                a = [reverse(g) for g in reversed(a)]
+            if _end_key(b[0].start) != key:
+                b = [reverse(g) for g in reversed(b)]
+            chains[i] = a + b
+            alive[j] = False
+            ends[key] = []
+            for k in (_end_key(chains[i][0].start), _end_key(chains[i][-1].end)):
+                ends[k] = [i if x == j else x for x in ends.get(k, [])]
+            changed = True
+    out = []
+    for i, c in enumerate(chains):
+        if alive[i]:
+            closed = len(c) > 2 and _end_key(c[0].start) == _end_key(c[-1].end)
+            out.append((c, closed))
     return out
 
 
