@@ -559,3 +559,54 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
                 want[(i, j)] = x
     assert got.keys() == want.keys()
     assert all(abs(got[k] - want[k]) <= 1e-9 for k in want)
+
+
+# ------------------------------------------------------------ topology under --set (W0510)
+def test_W0510_a_set_that_runs_the_cups_into_the_prongs(tmp_path, capsys):
+    """The telephone's `--set base_w=240` pushes the cradle's prongs into the handset's cups
+    (solids: no hole merges, the counts stay): the faces that now overlap are named, at the
+    part; the defaults compiled as the baseline."""
+    import json
+    from aidl_lang.cli.main import main
+    from conftest import ROOT
+    path = ROOT / "examples" / "telephone.aidl"
+    assert main(["check", str(path), "--set", "base_w=240", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0510"]
+    assert w["message"] == ("with base_w=240, part `desk.telephone` changes: "
+                            "`desk.telephone.cradle.prong` now overlaps "
+                            "`desk.telephone.handset.ear`; `desk.telephone.cradle.prong` now "
+                            "overlaps `desk.telephone.handset.mouth` (not so with the defaults)")
+    assert w["span"]["line"] == 24 and "min=" in w["hint"]
+    # its own "Try" value keeps the topology: no W0510
+    assert main(["check", str(path), "--set", "base_w=180", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert not [d for d in doc["diagnostics"] if d["code"] == "W0510"]
+
+
+def test_W0510_counts_pieces_openings_and_notches():
+    """A param that moves a hole across the edge, and one that pulls a wing off the body:
+    each change said in words, against the program's defaults."""
+    from aidl_lang.pipeline import compile_source
+    src = """param x = 0 mm
+param gap = -1 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole a { c = Circle(center=(x, 0), radius=3) }
+    solid wing { w = Rectangle(center=(0, 15 + gap), width=10, height=10) }
+}"""
+    c = compile_source(src, "t.aidl", {"x": "18.5mm"})
+    (w,) = [d for d in c.sink.items if d.code == "W0510"]
+    assert w.message == ("with x=18.5mm, part `plate` changes: 0 openings instead of 1; "
+                         "hole `plate.a` now breaks through the outline (not so with the "
+                         "defaults)")
+    assert w.span.line == 3 and [d.code for d in c.sink.items] == ["W0510"]
+    c = compile_source(src, "t.aidl", {"gap": "2mm"})
+    (w,) = [d for d in c.sink.items if d.code == "W0510"]
+    assert w.message == ("with gap=2mm, part `plate` changes: 2 pieces instead of 1; "
+                         "`plate.body` no longer overlaps `plate.wing.w` (not so with the "
+                         "defaults)")
+    assert [d.code for d in c.sink.items] == ["W0504", "W0510"]
+    # a value that keeps the topology: no W0510
+    c = compile_source(src, "t.aidl", {"x": "5mm", "gap": "-2mm"})
+    assert not c.sink.items

@@ -251,9 +251,15 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
             merged.add((i, j))
             res.merges.append((i + 1, j + 1, _depth(common, boxes[i], boxes[j]), a))
     # 2. the least distance between every two boundaries closer than `reach`
-    filled = _union([shape] + regions)
-    parts = [boundary([np.asarray(p, dtype=float) for p in filled.to_polygons()], 0)]
+    # the outline: the part with its holes filled; its outer loops are feature 0, the loops
+    # of openings no hole cut (between solids, or left by a fillet) the last feature
+    filled = [np.asarray(p, dtype=float) for p in _union([shape] + regions).to_polygons()]
+    inner = len(feats) + 1
+    res.names.append(f"an inner edge of `{s.path}`")
+    res.spans.append(s.span)
+    parts = [boundary([p for p in filled if _signed(p) > 0], 0)]
     parts += [boundary(polys[k], k + 1) for k in range(len(feats))]
+    parts.append(boundary([p for p in filled if _signed(p) <= 0], inner))
     V, vf, A, B, sf = (np.concatenate([p[k] for p in parts]) for k in range(5))
     v, sg, dist, foot = close_pairs(V, vf, A, B, sf, reach)
     if not len(v):
@@ -261,7 +267,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     fa, fb = vf[v], sf[sg]
     lo, hi = np.minimum(fa, fb), np.maximum(fa, fb)
     mid = (V[v] + foot) / 2
-    key = lo * (len(feats) + 1) + hi
+    key = lo * (inner + 1) + hi
     order = np.lexsort((dist, key))
     key, dist, mid, lo, hi = key[order], dist[order], mid[order], lo[order], hi[order]
     starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
@@ -271,12 +277,12 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     in_material = _inside(mid[starts], edges)
     for k, (a0, a1) in enumerate(zip(starts, ends)):
         i, j, w = int(lo[a0]), int(hi[a0]), float(dist[a0])
-        if i > 0 and (i - 1, j - 1) in merged:
+        if i > 0 and j < inner and (i - 1, j - 1) in merged:
             continue
         if w <= TOUCH:
-            if i == 0:
+            if i == 0 and j < inner:
                 res.notches.add(j)
-            else:
+            elif i > 0 and j < inner:
                 merged.add((i - 1, j - 1))
                 res.merges.append((i, j, 0.0, None))
             continue
@@ -322,19 +328,24 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
                      hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
                           "material is left between them; if one opening is meant, draw both "
                           "shapes in one hole structure (the faces of one hole may overlap)")
+    inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
-        first, second = a.names[i], a.names[j]
-        covered.add(frozenset((first, second)))
-        labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
-            if i > 0 and a.spans[i] else []
-        pair = f"{second} and {first}" if i == 0 else f"{first} and {second}"
+        covered.add(frozenset((a.names[i], a.names[j])))
+        if i == 0 or j == inner:          # a hole and an edge of the outline
+            hole, edge = (j, i) if i == 0 else (i, j)
+            pair, away, labels = f"{a.names[hole]} and {a.names[edge]}", \
+                a.names[edge].split(" of ")[0], []
+        else:                             # two holes, located at the later one
+            hole, pair, away = j, f"{a.names[i]} and {a.names[j]}", a.names[i]
+            labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
+                if a.spans[i] else []
         sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
                      f"{w:.2f} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
-                     f"({x:.1f}, {y:.1f}))", a.spans[j], labels=labels,
-                     hint=f"move {second} {t - w:.2f} mm further from "
-                          f"{'the outer edge' if i == 0 else first} (or shrink it) so that at "
-                          f"least {t:g} mm of material is left (a laser or router cannot hold a "
-                          "thinner wall); the minimum is set with --min-wall")
+                     f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
+                     hint=f"move {a.names[hole]} {t - w:.2f} mm further from {away} (or shrink "
+                          f"it) so that at least {t:g} mm of material is left (a laser or "
+                          "router cannot hold a thinner wall); the minimum is set with "
+                          "--min-wall")
     return covered
 
 
@@ -744,3 +755,114 @@ def _signed(poly) -> float:
     x, y = P[:, 0], P[:, 1]
     return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
                        - np.dot(y, np.concatenate([x[1:], x[:1]])))
+
+
+# ------------------------------------------------------------ topology under `--set` (W0510)
+@dataclass
+class Topology:
+    """What W0510 compares of one solid part between the program's defaults and a `--set`."""
+    span: object
+    pieces: int
+    openings: int
+    merges: set          # frozensets of two hole names that cut one opening
+    notches: set         # hole names that reach the outline
+    contacts: set        # frozensets of two face names (different solids) that overlap
+    holes: set           # every hole name
+    faces: set           # every solid face name
+
+
+def topology(d: Drawing) -> dict:
+    """The :class:`Topology` of every solid part of ``d``, by part path: its pieces and
+    openings (counter-clockwise and clockwise loops of its final shape), the holes that merge
+    (:func:`_analyse` at the touching distance) or reach the outline, and the faces of
+    different solid structures that overlap (candidates from :func:`.nearby.box_pairs`)."""
+    roots = _part_roots(d)
+    by_part: dict = {}
+    for c in d.cuts:
+        by_part.setdefault(_part_of(c.owner, roots), []).append(c)
+    faces_of: dict = {}
+    for st, own in d.own.items():
+        if st.kind != "solid":
+            continue
+        part = _part_of(st, roots)
+        if part is not None and part.kind == "solid":
+            faces_of.setdefault(part, []).extend(
+                (f"`{g.label}`", st, f) for g, f in own if f is not None and not f.is_empty())
+    out = {}
+    for s, shape in roots.items():
+        if s.kind != "solid":
+            continue
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+        pos = sum(_signed(p) > 0 for p in loops)
+        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops)
+        faces = faces_of.get(s, [])
+        contacts = set()
+        if len(faces) > 1:
+            boxes = [f.bounds() for _, _, f in faces]
+            for i, j in box_pairs(boxes):
+                (ni, si, fi), (nj, sj, fj) = faces[i], faces[j]
+                if si is not sj and _area(fi ^ fj) > 1e-6:
+                    contacts.add(frozenset((ni, nj)))
+        out[s.path] = Topology(s.span, pos, len(loops) - pos,
+                               {frozenset((a.names[i], a.names[j])) for i, j, _, _ in a.merges},
+                               {a.names[j] for j in a.notches}, contacts, set(a.names[1:]),
+                               {n for n, _, _ in faces})
+    return out
+
+
+def _count(n: int, what: str) -> str:
+    return f"{n} {what}" + ("" if n == 1 else "s")
+
+
+def topology_changes(base: Topology, new: Topology) -> list[str]:
+    """What changed from ``base`` (the defaults) to ``new``, in words, most telling first."""
+    out = []
+    if new.pieces != base.pieces:
+        out.append(f"{_count(new.pieces, 'piece')} instead of {base.pieces}")
+    if new.openings != base.openings:
+        out.append(f"{_count(new.openings, 'opening')} instead of {base.openings}")
+    for m in sorted(new.merges - base.merges, key=sorted):
+        a, b = sorted(m)
+        out.append(f"{a} merges with {b}")
+    for m in sorted(base.merges - new.merges, key=sorted):
+        if m <= new.holes:
+            a, b = sorted(m)
+            out.append(f"{a} and {b} no longer merge")
+    for h in sorted(new.notches - base.notches):
+        out.append(f"{h} now breaks through the outline")
+    for h in sorted(base.notches - new.notches):
+        if h in new.holes:
+            out.append(f"{h} no longer reaches the outline")
+    for c in sorted(new.contacts - base.contacts, key=sorted):
+        if c <= base.faces:
+            a, b = sorted(c)
+            out.append(f"{a} now overlaps {b}")
+    for c in sorted(base.contacts - new.contacts, key=sorted):
+        if c <= new.faces:
+            a, b = sorted(c)
+            out.append(f"{a} no longer overlaps {b}")
+    return out
+
+
+def check_topology(base: Drawing | dict, d: Drawing, values: dict, sink: DiagnosticSink) -> None:
+    """W0510 for each solid part of ``d`` (compiled with the param ``values``) whose
+    topology differs from ``base`` (the same program with its defaults: a Drawing, or its
+    :func:`topology` already taken)."""
+    if not values:
+        return
+    before = base if isinstance(base, dict) else topology(base)
+    now = topology(d)
+    with_ = ", ".join(f"{k}={v}" for k, v in values.items())
+    for path, t in now.items():
+        b = before.get(path)
+        if b is None:
+            continue
+        what = topology_changes(b, t)
+        if not what:
+            continue
+        sink.warning("W0510", f"with {with_}, part `{path}` changes: " + "; ".join(what[:4])
+                     + ("; ..." if len(what) > 4 else "") + " (not so with the defaults)",
+                     t.span,
+                     hint="such a change is rarely what the param is for: choose another "
+                          "value, derive the spacing from the param so that the design follows "
+                          "it, or declare the param's `min=`/`max=` to keep values that fit")
