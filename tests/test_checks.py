@@ -610,3 +610,35 @@ solid plate {
     # a value that keeps the topology: no W0510
     c = compile_source(src, "t.aidl", {"x": "5mm", "gap": "-2mm"})
     assert not c.sink.items
+
+
+# ------------------------------------------------------------ W0507's opening in tiles
+@settings(max_examples=30, deadline=None)
+@given(st.lists(_hole, min_size=1, max_size=5), st.sampled_from([0.5, 1.0, 2.0]),
+       st.sampled_from([40, 120, 400]))
+def test_W0507_opening_in_tiles_is_the_whole_opening(holes, t, tile):
+    """The opening taken tile by tile (each tile opened with a 2 t margin) removes the same
+    set as the opening of the whole part: the same area, and the same pieces of at least
+    2 t^2 (what W0507 reports), on plates with holes anywhere."""
+    import numpy as np
+    from aidl_lang.output import checks as C
+    from aidl_lang.pipeline import compile_source
+    body = []
+    for i, h in enumerate(holes):
+        if h[0] == "Rectangle":
+            shape = f"Rectangle(center=({h[1]:.3f}, {h[2]:.3f}), width={h[3]:.3f}, height={h[4]:.3f})"
+        else:
+            shape = f"Circle(center=({h[1]:.3f}, {h[2]:.3f}), radius={h[3]:.3f})"
+        body.append(f"    hole h{i} {{\n        s = {shape}\n    }}")
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           + "\n".join(body) + "\n}")
+    c = compile_source(src, "tiles.aidl", min_wall=0)
+    shape = c.drawing.parts[0].shape
+    whole, tiled = C._thin(shape, t, tile=10 ** 9), C._thin(shape, t, tile=tile)
+    assert tiled.area() == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
+    assert (whole ^ tiled).area() == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
+
+    def pieces(x):
+        return sorted(np.round(p.bounds(), 3).tolist() for p in x.decompose()
+                      if p.area() >= 2 * t * t)
+    assert pieces(tiled) == pieces(whole)
