@@ -163,7 +163,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
                 shape_checks: bool = True) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
     preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
-    checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
+    checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
     or ``None`` when the extent check failed (nothing absurd reaches a writer).
     ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
     preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on

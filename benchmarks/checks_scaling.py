@@ -4,9 +4,11 @@
 Run:  .venv/bin/python benchmarks/checks_scaling.py [N ...]
 
 Compiles a generated plate with N round holes on a square grid (default N = 100, 400, 900;
-pitch 6 mm, radius 2 mm: 2 mm walls, nothing to warn about) and times ``check_drawing`` on its
-booleans' result, best of 3 runs, in milliseconds on this machine; one row per check family
-(W0501-W0503 per hole, W0507 walls and webs, W0508 merged holes, the rest) and the total.
+radius 2 mm) and times ``check_drawing`` on its booleans' result, best of 3 runs, in
+milliseconds on this machine, with two of its stages apart: the holes (W0501-W0503, each
+hole against its neighbourhood) and the webs and merges (W0507 measured, W0508), and the
+number of warnings.  Two grids: pitch 6 mm (2 mm walls, nothing to warn about) and pitch
+4.3 mm (0.3 mm webs: a W0507 for every two neighbours, the warning path at its busiest).
 """
 from __future__ import annotations
 
@@ -47,15 +49,30 @@ def best(fn, runs: int = 3) -> float:
 
 
 def main(sizes) -> None:
-    print(f"{'holes':>6} {'check_drawing ms':>17} {'warnings':>9}")
-    for n in sizes:
-        c = compile_source(plate(n), f"grid{n}.aidl", min_wall=0)
-        assert c.ok and c.drawing is not None, [d.message for d in c.sink.items]
-        d = c.drawing
-        sink = DiagnosticSink()
-        ms = best(lambda: C.check_drawing(d, DiagnosticSink()))
-        C.check_drawing(d, sink)
-        print(f"{n:>6} {ms:>17.1f} {len(sink.items):>9}")
+    print(f"{'pitch':>5} {'holes':>6} {'holes ms':>9} {'webs ms':>8} {'check_drawing ms':>17} "
+          f"{'warnings':>9}")
+    for pitch in (6.0, 4.3):
+        for n in sizes:
+            c = compile_source(plate(n, pitch), f"grid{n}.aidl", min_wall=0)
+            assert c.ok and c.drawing is not None, [d.message for d in c.sink.items]
+            d = c.drawing
+            roots = C._part_roots(d)
+            part, shape = next(iter(roots.items()))
+            loops = {part: [p for p in shape.to_polygons()]}
+
+            def holes():
+                near = C._Near(roots, loops, d.cuts)
+                for cut in d.cuts:
+                    C._check_hole(d, cut, roots, DiagnosticSink(), near.local)
+
+            def webs():
+                a = C._analyse(d, part, shape, d.cuts, C.MIN_WALL)
+                C._report_openings(a, part, C.MIN_WALL, DiagnosticSink())
+            sink = DiagnosticSink()
+            ms = best(lambda: C.check_drawing(d, DiagnosticSink()))
+            C.check_drawing(d, sink)
+            print(f"{pitch:>5} {n:>6} {best(holes):>9.1f} {best(webs):>8.1f} {ms:>17.1f} "
+                  f"{len(sink.items):>9}")
 
 
 if __name__ == "__main__":

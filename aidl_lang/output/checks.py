@@ -17,7 +17,16 @@ checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.co
   ``min_wall / 2`` then the dilation back, Manifold offsets with round joins), in pieces of at
   least ``2 min_wall^2`` (so that sharp corners, which every opening rounds, do not count); the
   warning names the holes and the outer edge the wall lies between;
+  between two holes, or a hole and the outline, the width is measured as the least distance
+  between their boundaries, whatever the area;
+* ``W0508`` two separately declared holes that overlap or touch: one opening;
+* ``W0509`` a face of zero area, or a solid part that comes out empty unexplained;
+* ``W0510`` (:func:`check_topology`, run by the pipeline and the live preview when param
+  values are overridden) a part whose topology differs from the defaults';
 * ``W0402`` an open outline (lines and arcs that do not close), drawn as engraving.
+
+Pairs of holes are found with a spatial index (:mod:`.nearby`), so the checks grow as
+n log n in the number of holes.
 
 Areas are compared with a tolerance that ignores the chord slivers of tessellated curves:
 :data:`MIN_FRACTION` of the feature and at least :data:`MIN_AREA` mm^2.
