@@ -283,6 +283,8 @@ both holes and says by how much they overlap (the depth along the line between t
 common area). Move one of them away (by the overlap plus the minimum wall), or shrink it. A
 single opening made of several shapes (a keyhole: a circle and a slot) is drawn as the faces
 of ONE hole structure, whose faces may overlap without a warning.
+A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is
+often in another unit or frame than meant).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)

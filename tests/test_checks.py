@@ -522,31 +522,45 @@ _box = st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(0, 30), st.fl
 @settings(max_examples=60, deadline=None)
 @given(st.lists(_box, max_size=40), st.sampled_from([0.0, 0.5, 3.0]))
 def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
-    """box_pairs (a k-d tree over the centres, large boxes apart) gives exactly the pairs
-    that the all-pairs test gives."""
+    """box_pairs (a k-d tree over the centres, large boxes apart; or, for few boxes, all
+    pairs) gives exactly the pairs that the all-pairs reference gives."""
     import numpy as np
     from aidl_lang.output.nearby import box_pairs
     B = np.array([(x, y, x + w, y + h) for x, y, w, h in boxes]).reshape(-1, 4)
     want = {(i, j) for i in range(len(B)) for j in range(i + 1, len(B))
             if B[i, 0] - pad <= B[j, 2] + pad and B[j, 0] - pad <= B[i, 2] + pad
             and B[i, 1] - pad <= B[j, 3] + pad and B[j, 1] - pad <= B[i, 3] + pad}
-    got = {tuple(map(int, p)) for p in box_pairs(B, pad)}
-    assert got == want
+    from aidl_lang.output import nearby
+    for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the k-d tree
+        old, nearby.SMALL_BOXES = nearby.SMALL_BOXES, small
+        try:
+            got = {tuple(map(int, p)) for p in box_pairs(B, pad)}
+        finally:
+            nearby.SMALL_BOXES = old
+        assert got == want
 
 
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.tuples(st.floats(-20, 20), st.floats(-20, 20)), min_size=3, max_size=30),
        st.lists(st.integers(0, 3), min_size=30, max_size=30), st.floats(0.1, 8))
 def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
-    """close_pairs gives every (vertex, segment) pair of different features closer than
-    `dist`, with the exact distance, as measuring all pairs does."""
+    """close_pairs (by y band for small inputs, by k-d tree for large) gives every
+    (vertex, segment) pair of different features closer than `dist`, with the exact
+    distance, as measuring all pairs does."""
     import numpy as np
     from aidl_lang.output.nearby import close_pairs
     V = np.array(points, dtype=float)
     f = np.array(feats[:len(V)])
     A, B = V, np.roll(V, -1, axis=0)
-    v, s, d, foot = close_pairs(V, f, A, B, f, dist)
-    got = {(int(a), int(b)): float(x) for a, b, x in zip(v, s, d)}
+    from aidl_lang.output import nearby
+    gots = []
+    for small in (nearby.SMALL_VERTS, 0):       # the y band, then the k-d tree
+        old, nearby.SMALL_VERTS = nearby.SMALL_VERTS, small
+        try:
+            v, s, d, foot = close_pairs(V, f, A, B, f, dist)
+        finally:
+            nearby.SMALL_VERTS = old
+        gots.append({(int(a), int(b)): float(x) for a, b, x in zip(v, s, d)})
     want = {}
     for i in range(len(V)):
         for j in range(len(A)):
@@ -557,8 +571,9 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
             x = float(np.hypot(*(ap - t * ab)))
             if x < dist:
                 want[(i, j)] = x
-    assert got.keys() == want.keys()
-    assert all(abs(got[k] - want[k]) <= 1e-9 for k in want)
+    for got in gots:
+        assert got.keys() == want.keys()
+        assert all(abs(got[k] - want[k]) <= 1e-9 for k in want)
 
 
 # ------------------------------------------------------------ topology under --set (W0510)
@@ -642,3 +657,17 @@ def test_W0507_opening_in_tiles_is_the_whole_opening(holes, t, tile):
         return sorted(np.round(p.bounds(), 3).tolist() for p in x.decompose()
                       if p.area() >= 2 * t * t)
     assert pieces(tiled) == pieces(whole)
+
+
+def test_W0508_a_hole_wholly_inside_another(compile_text):
+    """A pocket that landed inside a bore (its size read in another unit): said as such, at
+    the swallowed hole, with its area."""
+    (w,) = warnings(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=30)
+    hole nut { c = Rectangle(center=(1.4, 0), width=0.5, height=0.4) }
+    hole bore { c = Circle(center=(0, 0), radius=8) }
+}""", "W0508")
+    assert w.span.line == 3 and [lab.span.line for lab in w.labels] == [4]
+    assert w.message == ("hole `plate.nut` lies wholly inside hole `plate.bore` of `plate`: the "
+                         "two cut one opening, and hole `plate.nut` cuts nothing of its own "
+                         "(0.20 mm^2)")

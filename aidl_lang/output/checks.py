@@ -234,6 +234,7 @@ class _Openings:
     merges: list = field(default_factory=list)   # (i, j, depth mm, common area mm^2 | None)
     webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
     notches: set = field(default_factory=set)    # holes that reach the outline
+    areas: list = field(default_factory=list)    # of the features' regions, mm^2
 
 
 def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Openings:
@@ -249,6 +250,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     if not feats or shape.is_empty():
         return res
     regions = [c.region for c in feats]
+    res.areas = [0.0] + [_area(r) for r in regions] + [0.0]
     polys = [[np.asarray(p, dtype=float) for p in r.to_polygons()] for r in regions]
     boxes = np.array([r.bounds() for r in regions], dtype=float)
     reach = max(t, TOUCH)
@@ -320,6 +322,17 @@ def _depth(common, bi, bj) -> float:
     return float(proj.max() - proj.min())
 
 
+def _inner(a: _Openings, i: int, j: int, common) -> int | None:
+    """Which of holes ``i`` and ``j`` lies wholly inside the other (their common area is
+    all of its area), if one does."""
+    if common is None:
+        return None
+    for k in (j, i):
+        if common >= (1 - 1e-6) * a.areas[k] - 1e-9:
+            return k
+    return None
+
+
 def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink) -> set:
     """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
     the name pairs reported (the opening test of :func:`_check_walls` skips them)."""
@@ -327,6 +340,17 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
+        inner = _inner(a, i, j, common)
+        if inner is not None:
+            outer = a.names[i + j - inner]
+            labels = [Label(a.spans[i + j - inner], f"{outer} is here", primary=False)] \
+                if a.spans[i + j - inner] else []
+            sink.warning("W0508", f"{a.names[inner]} lies wholly inside {outer} of `{s.path}`: "
+                         f"the two cut one opening, and {a.names[inner]} cuts nothing of its "
+                         f"own ({common:.2f} mm^2)", a.spans[inner], labels=labels,
+                         hint=f"move {a.names[inner]} clear of {outer} (its size or position may "
+                              "be in another unit or frame than meant), or delete it")
+            continue
         if common is None:
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
         else:
