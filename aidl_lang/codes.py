@@ -264,14 +264,60 @@ wrong position. Move it where it shows, make it a `hole` if it should cut, or de
     "W0507": ("wall thinner than the minimum", """
 Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
 `aidl check --min-wall MM` or `aidl render --min-wall MM`; 0 turns it off): a laser or router
-burns through or breaks such a wall. The warning names the holes and the outer edge that the
-wall lies between, its approximate width and length and where it is. Move or shrink the hole
-so that enough material is left.
+burns through or breaks such a wall. Between two holes, or a hole and the outline, the width
+is the measured least distance between their boundaries (to 0.01 mm); other thin walls are
+found by an opening of the part and their width is estimated. The warning names the holes and
+the outer edge that the wall lies between, its width and length and where it is. Move or
+shrink the hole so that enough material is left.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)
         hole slot { r = Rectangle(center=(0, 6.85), width=10, height=6) }   # 0.15 mm to the edge
     }
+"""),
+    "W0508": ("holes merge into one opening", """
+Two separately declared holes (two hole structures, or two copies of a pattern) overlap or
+touch, so they cut one opening where the program declares two: usually an edit or a `--set`
+moved or multiplied one of them (a bolt row grown into a ring of vents). The warning names
+both holes and says by how much they overlap (the depth along the line between them and the
+common area). Move one of them away (by the overlap plus the minimum wall), or shrink it. A
+single opening made of several shapes (a keyhole: a circle and a slot) is drawn as the faces
+of ONE hole structure, whose faces may overlap without a warning.
+A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is
+often in another unit or frame than meant).
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        hole bore { c = Circle(center=(0, 0), radius=8) }
+        hole bolt { c = Circle(center=(9, 0), radius=3) }    # overlaps the bore by 2 mm
+    }
+"""),
+    "W0509": ("face or part with no area", """
+A closed shape that encloses nothing: a loop of lines that goes out and comes back along the
+same path (a line and its own mirror image, `Mirrored(l, about=l)`), points all on one line, a
+zero width, height or radius. It adds nothing to a solid and cuts nothing from a hole. Also
+reported for a solid part whose final shape is empty although it has geometry, when no other
+warning (W0503, W0402) explains why. Give the face an inside, or delete it.
+
+    solid s {
+        l = Line((0, 0), (10, 0))
+        m = Mirrored(l, about=l)     # the same segment back: a loop of zero area
+    }
+"""),
+    "W0510": ("part changes topology under a param value", """
+With `--set NAME=VALUE` (or a slider in `aidl serve`), a part has another topology than with
+the program's own defaults: a different number of pieces or openings, two holes that now merge
+(or no longer do), a hole that now breaks through the outline, or two faces of different
+structures that now overlap (or no longer do). Such a change is rarely what a parameter is
+for: a bigger count that runs holes into each other, a width that pushes the cradle into the
+handset. The warning names the part, the values and what changed; the baseline is the same
+program compiled with its defaults. Choose another value, make the design follow the param
+(spacing derived from the count), or declare the param's `min=`/`max=` to keep values that
+fit.
+
+    # aidl check examples/bracket.aidl --set bolts=5
+    # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges
+    #                 with hole `bracket.first_pattern[4]`
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0104": ("empty drawing", """

@@ -19,7 +19,7 @@ from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
-from .output.checks import MIN_WALL, check_drawing
+from .output.checks import MIN_WALL, check_drawing, check_topology
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -47,8 +47,16 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     if source.startswith("\ufeff"):       # a UTF-8 byte order mark is not part of the program
         source = source[1:]
     try:
-        return run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
-                                         budget))
+        res = run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
+                                        budget))
+        if overrides and res.drawing is not None and res.ok:
+            # W0510: the baseline is the program with its own defaults (compiled only here,
+            # when values are overridden; its warnings are not reported)
+            base = run_deep(lambda: _compile(DiagnosticSink(), source, path, None, True,
+                                             min_wall, budget, shape_checks=False))
+            if base.drawing is not None and base.ok:
+                check_topology(base.drawing, res.drawing, overrides, sink)
+        return res
     except (RecursionError, MemoryError) as ex:
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", _deep_span(ex, path, source),
@@ -124,7 +132,7 @@ _deep_state = threading.local()
 
 
 def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
-             budget: Budget = DEFAULT_BUDGET) -> Compiled:
+             budget: Budget = DEFAULT_BUDGET, shape_checks: bool = True) -> Compiled:
     deadline = time.monotonic() + budget.seconds
     program = parse(source, path, sink)
     if sink.has_errors:
@@ -148,14 +156,14 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result)
-    return Compiled(sink, model, result, after_solve(sink, model, min_wall))
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks))
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
                 shape_checks: bool = True) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
     preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
-    checks on the final shape (W0402, W0501-W0507).  Returns the booleans' :class:`Drawing`,
+    checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
     or ``None`` when the extent check failed (nothing absurd reaches a writer).
     ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
     preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on

@@ -302,3 +302,23 @@ def test_websocket_sends_the_picture_then_its_shape_checks(tmp_path):
             checked = json.loads(ws.receive_text())
             assert checked["version"] == picture["version"] and checked["svg"] == picture["svg"]
             assert "W0501" in [d["code"] for d in checked["diagnostics"]]
+
+
+def test_preview_reports_a_topology_change_of_a_slider(tmp_path):
+    """W0510 in the live preview: a slider that adds a fifth bolt to the bracket merges it
+    into a vent; the checks after the picture name the part and the two holes, as
+    `aidl check --set bolts=5` does; back at the default value, nothing."""
+    from aidl_lang.serve.session import Session
+    f = tmp_path / "bracket.aidl"
+    f.write_text((Path(__file__).resolve().parent.parent / "examples" / "bracket.aidl").read_text())
+    s = Session(f)
+    assert s.load()["ok"]
+    s.set_params({"bolts": "5"})
+    checked = s.update_checks()
+    (w,) = [d for d in checked["diagnostics"] if d["code"] == "W0510"]
+    assert w["message"].startswith("with bolts=5, part `bracket` changes: hole `bracket.")
+    assert "merges with hole `bracket." in w["message"] and w["span"]["line"] == 14
+    c = compile_source(f.read_text(), str(f), {"bolts": "5"})
+    assert [d.message for d in c.sink.items if d.code == "W0510"] == [w["message"]]
+    s.set_params({"bolts": "4"})
+    assert s.update_checks() is None

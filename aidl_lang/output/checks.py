@@ -17,7 +17,16 @@ checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.co
   ``min_wall / 2`` then the dilation back, Manifold offsets with round joins), in pieces of at
   least ``2 min_wall^2`` (so that sharp corners, which every opening rounds, do not count); the
   warning names the holes and the outer edge the wall lies between;
+  between two holes, or a hole and the outline, the width is measured as the least distance
+  between their boundaries, whatever the area;
+* ``W0508`` two separately declared holes that overlap or touch: one opening;
+* ``W0509`` a face of zero area, or a solid part that comes out empty unexplained;
+* ``W0510`` (:func:`check_topology`, run by the pipeline and the live preview when param
+  values are overridden) a part whose topology differs from the defaults';
 * ``W0402`` an open outline (lines and arcs that do not close), drawn as engraving.
+
+Pairs of holes are found with a spatial index (:mod:`.nearby`), so the checks grow as
+n log n in the number of holes.
 
 Areas are compared with a tolerance that ignores the chord slivers of tessellated curves:
 :data:`MIN_FRACTION` of the feature and at least :data:`MIN_AREA` mm^2.
@@ -30,8 +39,11 @@ import manifold3d as mf
 import numpy as np
 
 from ..diagnostics import DiagnosticSink, Label
+from ..geometry.tessellate import CHORD_TOL
+from ..records import dataclass, field
 from ..geometry.model import Structure
 from .booleans import Drawing
+from .nearby import box_pairs, boundary, close_pairs
 
 MIN_FRACTION = 0.02      # of a hole's or child's area
 MIN_AREA = 0.05          # mm^2
@@ -90,12 +102,15 @@ def _contributors(d: Drawing, a: Structure, skip: Structure | None = None):
 
 def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) -> None:
     """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
-    (mm) is W0507's minimum wall (0 turns that check off)."""
+    (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on)."""
     roots = _part_roots(d)
-    for cut in d.cuts:
-        _check_hole(d, cut, roots, sink)
     loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
              for s, shape in roots.items() if s.kind == "solid"}
+    near = _Near(roots, loops, d.cuts)
+    explained: set = set()          # parts whose emptiness a warning already explains
+    for cut in d.cuts:
+        if _check_hole(d, cut, roots, sink, near.local) == "W0503":
+            explained.add(_part_of(cut.owner, roots))
     for s, shape in roots.items():
         if s.kind == "solid":
             _check_pieces(d, s, shape, sink, loops[s])
@@ -103,21 +118,274 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL) 
         if s.kind == "solid":
             _check_invisible(d, s, sink)
     _check_engraving(d, roots, sink, loops)
-    if min_wall > 0:
-        by_part: dict = {}
-        for c in d.cuts:
-            by_part.setdefault(_part_of(c.owner, roots), []).append(c)
-        for s, shape in roots.items():
-            if s.kind == "solid":
-                _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink)
+    by_part: dict = {}
+    for c in d.cuts:
+        by_part.setdefault(_part_of(c.owner, roots), []).append(c)
+    for s, shape in roots.items():
+        if s.kind == "solid":
+            a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
+            covered = _report_openings(a, s, min_wall, sink)
+            if min_wall > 0:
+                _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
+                             loops=loops[s])
+    for s, g, area in empty_faces(d):
+        part = _part_of(s, roots)
+        explained.add(part)
+        what = "cuts" if s.kind == "hole" else "adds"
+        sink.warning("W0509", f"`{g.label}` closes a loop of zero area ({abs(area):.2g} mm^2) "
+                     f"in {s.kind} `{s.path}`: it encloses nothing, so it {what} nothing",
+                     g.span,
+                     hint="a face needs an inside: give it a non-zero width, height or radius, "
+                          "or points that are not all on one line (a line and its own mirror "
+                          "image close a loop with nothing inside); delete it if it is not "
+                          "needed")
     for g in d.open_curves:
+        explained.add(_part_of(g.owner, roots))
         sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
                      "line (engraved), not filled", g.span,
                      hint="share endpoints between lines and arcs so they form a loop, or put "
                           "the curve in a `drawing` structure")
+    for s, shape in roots.items():
+        if s.kind == "solid" and shape.is_empty() and s not in explained and any(
+                not g.construction for n in s.subtree() for g in n.geometry):
+            sink.warning("W0509", f"solid `{s.path}` comes out empty: none of its geometry "
+                         "encloses any area", s.span,
+                         hint="give the part a closed shape with an inside (a Rectangle, a "
+                              "Circle, lines and arcs that close a loop around some area)")
 
 
-def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink) -> None:
+_CLOSED = {"Circle", "Slot", "Ellipse", "Rectangle", "RoundedRectangle", "Triangle", "Polygon",
+           "RegularPolygon", "Trapezoid"}
+
+
+def empty_faces(d: Drawing) -> list:
+    """The faces that close but enclose no area, as ``(structure, geometry, area)``: the
+    booleans' ``Drawing.empty_faces`` when it has that field, and in any case what the model
+    shows (a solid or hole whose own closed geometry gave no shape, or a chain of lines and
+    arcs that closed into an empty loop), each geometry once, in model order."""
+    out: dict = {}
+    for s, g, a in getattr(d, "empty_faces", None) or []:
+        out.setdefault(id(g), (s, g, float(a)))
+    for s in d.shapes:
+        if s.kind not in ("solid", "hole"):
+            continue
+        own = d.own.get(s, [])
+        shaped = {id(g) for g, f in own if f is not None and not f.is_empty()}
+        for g, f in own:
+            if f is None or f.is_empty():
+                out.setdefault(id(g), (s, g, 0.0))
+        for g in s.geometry:
+            if not g.construction and g.kind in _CLOSED and id(g) not in shaped:
+                out.setdefault(id(g), (s, g, 0.0))
+    return list(out.values())
+
+
+class _Near:
+    """The final shape of a part near a region, for W0501: a part's loops whose bounding
+    boxes meet the region's (found for every cut at once with :func:`.nearby.box_pairs`)
+    filled even-odd give the part's shape exactly inside the region's box, so each hole is
+    intersected with its neighbourhood, not with the whole part (which made W0501 quadratic
+    in the number of holes)."""
+
+    def __init__(self, roots, loops, cuts):
+        self.roots, self.loops = roots, loops
+        self.near: dict = {}                  # id(region) -> indices of the part's loops
+        by_part: dict = {}
+        for c in cuts:
+            part = _part_of(c.owner, roots)
+            if part in loops and c.region is not None and not c.region.is_empty():
+                by_part.setdefault(part, []).append(c.region)
+        for part, regions in by_part.items():
+            lp = loops[part]
+            if len(lp) <= 8:
+                continue                      # small part: intersect with the whole
+            boxes = [(p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()) for p in lp]
+            boxes += [r.bounds() for r in regions]
+            pairs = box_pairs(boxes)
+            n = len(lp)
+            hit = pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]
+            found: dict = {i: [] for i in range(len(regions))}
+            for i, j in hit:
+                found[int(j) - n].append(int(i))
+            for k, r in enumerate(regions):
+                self.near[id(r)] = found[k]
+
+    def local(self, part, region) -> mf.CrossSection:
+        idx = self.near.get(id(region))
+        if idx is None:
+            return self.roots[part]
+        lp = self.loops[part]
+        return mf.CrossSection([lp[i].tolist() for i in idx], mf.FillRule.EvenOdd) if idx \
+            else mf.CrossSection()
+
+
+# ------------------------------------------------------------ webs and merged holes
+# mm: boundaries closer than this touch.  Curves are tessellated into inscribed polygons that
+# deviate from them by up to CHORD_TOL each, so two circles that touch can come out up to
+# 2 CHORD_TOL apart: below that, the gap is the tessellation's, not the design's.
+TOUCH = 2 * CHORD_TOL
+
+
+@dataclass
+class _Openings:
+    """What :func:`_analyse` finds between the holes of one part and its outline."""
+    names: list                     # feature names: 0 the outline, 1.. the holes
+    spans: list
+    merges: list = field(default_factory=list)   # (i, j, depth mm, common area mm^2 | None)
+    webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
+    notches: set = field(default_factory=set)    # holes that reach the outline
+    areas: list = field(default_factory=list)    # of the features' regions, mm^2
+
+
+def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Openings:
+    """The holes of part ``s`` (its ``cuts``) that overlap or touch each other (W0508) and the
+    walls narrower than ``t`` between two holes or a hole and the outline (W0507), measured
+    as the least distance between their boundaries (:func:`.nearby.close_pairs`; the hole's
+    region is what it cut).  Candidate hole pairs come from :func:`.nearby.box_pairs`, so the
+    work grows as n log n in the number of holes."""
+    feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
+             and _area(c.region) > 1e-9]
+    res = _Openings([f"the outer edge of `{s.path}`"] + [f"hole `{c.hole.path}`" for c in feats],
+                    [s.span] + [c.hole.span for c in feats])
+    if not feats or shape.is_empty():
+        return res
+    regions = [c.region for c in feats]
+    res.areas = [0.0] + [_area(r) for r in regions] + [0.0]
+    polys = [[np.asarray(p, dtype=float) for p in r.to_polygons()] for r in regions]
+    boxes = np.array([r.bounds() for r in regions], dtype=float)
+    reach = max(t, TOUCH)
+    # 1. holes whose regions overlap: one opening
+    merged = set()
+    for i, j in box_pairs(boxes, pad=reach / 2):
+        common = regions[i] ^ regions[j]
+        a = _area(common)
+        if a > 1e-9:
+            merged.add((i, j))
+            res.merges.append((i + 1, j + 1, _depth(common, boxes[i], boxes[j]), a))
+    # 2. the least distance between every two boundaries closer than `reach`
+    # the outline: the part with its holes filled; its outer loops are feature 0, the loops
+    # of openings no hole cut (between solids, or left by a fillet) the last feature
+    filled = [np.asarray(p, dtype=float) for p in _union([shape] + regions).to_polygons()]
+    inner = len(feats) + 1
+    res.names.append(f"an inner edge of `{s.path}`")
+    res.spans.append(s.span)
+    parts = [boundary([p for p in filled if _signed(p) > 0], 0)]
+    parts += [boundary(polys[k], k + 1) for k in range(len(feats))]
+    parts.append(boundary([p for p in filled if _signed(p) <= 0], inner))
+    V, vf, A, B, sf = (np.concatenate([p[k] for p in parts]) for k in range(5))
+    v, sg, dist, foot = close_pairs(V, vf, A, B, sf, reach)
+    if not len(v):
+        return res
+    fa, fb = vf[v], sf[sg]
+    lo, hi = np.minimum(fa, fb), np.maximum(fa, fb)
+    mid = (V[v] + foot) / 2
+    key = lo * (inner + 1) + hi
+    order = np.lexsort((dist, key))
+    key, dist, mid, lo, hi = key[order], dist[order], mid[order], lo[order], hi[order]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    ends = np.r_[starts[1:], len(key)]
+    edges = _edges(loops if loops is not None else
+                   [np.asarray(p, dtype=float) for p in shape.to_polygons()])
+    in_material = _inside(mid[starts], edges)
+    for k, (a0, a1) in enumerate(zip(starts, ends)):
+        i, j, w = int(lo[a0]), int(hi[a0]), float(dist[a0])
+        if i > 0 and j < inner and (i - 1, j - 1) in merged:
+            continue
+        if w <= TOUCH:
+            if i == 0 and j < inner:
+                res.notches.add(j)
+            elif i > 0 and j < inner:
+                merged.add((i - 1, j - 1))
+                res.merges.append((i, j, 0.0, None))
+            continue
+        if w >= t or not in_material[k]:
+            continue
+        m = mid[a0:a1]
+        x0, y0 = m.min(axis=0)
+        x1, y1 = m.max(axis=0)
+        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), ((x0 + x1) / 2, (y0 + y1) / 2)))
+    res.merges.sort(key=lambda m: (m[1], m[0]))      # in the order of the located hole
+    res.webs.sort(key=lambda w: (w[1], w[0]))
+    return res
+
+
+def _depth(common, bi, bj) -> float:
+    """How far two overlapping regions reach into each other: the extent of their common
+    part along the line between their boxes' centres (for two circles exactly
+    ``r1 + r2 - distance``), or its narrower side when the centres coincide."""
+    P = np.concatenate([np.asarray(p, dtype=float) for p in common.to_polygons()])
+    u = (np.asarray(bj[:2]) + bj[2:]) / 2 - (np.asarray(bi[:2]) + bi[2:]) / 2
+    n = float(np.hypot(*u))
+    if n < 1e-9:
+        return float(min(np.ptp(P[:, 0]), np.ptp(P[:, 1])))
+    proj = P @ (u / n)
+    return float(proj.max() - proj.min())
+
+
+def _inner(a: _Openings, i: int, j: int, common) -> int | None:
+    """Which of holes ``i`` and ``j`` lies wholly inside the other (their common area is
+    all of its area), if one does."""
+    if common is None:
+        return None
+    for k in (j, i):
+        if common >= (1 - 1e-6) * a.areas[k] - 1e-9:
+            return k
+    return None
+
+
+def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink) -> set:
+    """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
+    the name pairs reported (the opening test of :func:`_check_walls` skips them)."""
+    covered = set()
+    for i, j, depth, common in a.merges:
+        first, second = a.names[i], a.names[j]
+        covered.add(frozenset((first, second)))
+        inner = _inner(a, i, j, common)
+        if inner is not None:
+            outer = a.names[i + j - inner]
+            labels = [Label(a.spans[i + j - inner], f"{outer} is here", primary=False)] \
+                if a.spans[i + j - inner] else []
+            sink.warning("W0508", f"{a.names[inner]} lies wholly inside {outer} of `{s.path}`: "
+                         f"the two cut one opening, and {a.names[inner]} cuts nothing of its "
+                         f"own ({common:.2f} mm^2)", a.spans[inner], labels=labels,
+                         hint=f"move {a.names[inner]} clear of {outer} (its size or position may "
+                              "be in another unit or frame than meant), or delete it")
+            continue
+        if common is None:
+            how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
+        else:
+            how = f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)"
+            far = f"{depth + t:.2f} mm" if t > 0 else f"{depth:.2f} mm"
+        labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
+        sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
+                     "opening, not two", a.spans[j], labels=labels,
+                     hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
+                          "material is left between them; if one opening is meant, draw both "
+                          "shapes in one hole structure (the faces of one hole may overlap)")
+    inner = len(a.names) - 1
+    for i, j, w, length, (x, y) in a.webs:
+        covered.add(frozenset((a.names[i], a.names[j])))
+        if i == 0 or j == inner:          # a hole and an edge of the outline
+            hole, edge = (j, i) if i == 0 else (i, j)
+            pair, away, labels = f"{a.names[hole]} and {a.names[edge]}", \
+                a.names[edge].split(" of ")[0], []
+        else:                             # two holes, located at the later one
+            hole, pair, away = j, f"{a.names[i]} and {a.names[j]}", a.names[i]
+            labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
+                if a.spans[i] else []
+        sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
+                     f"{w:.2f} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
+                     f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
+                     hint=f"move {a.names[hole]} {t - w:.2f} mm further from {away} (or shrink "
+                          f"it) so that at least {t:g} mm of material is left (a laser or "
+                          "router cannot hold a thinner wall); the minimum is set with "
+                          "--min-wall")
+    return covered
+
+
+def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None) -> str | None:
+    """W0501-W0503 for one cut; ``local(part, region)``: the part's final shape near
+    ``region`` (:class:`_Near`), else the whole final shape is intersected."""
     h, s = cut.hole, cut.owner
     hole_shape = d.shapes.get(h)
     whole = _area(hole_shape)
@@ -135,11 +403,11 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink) -> None:
         sink.warning("W0503", f"hole `{h.path}` removes all of solid `{s.path}`", h.span,
                      hint=f"make the hole smaller than `{s.path}` or move it so that material "
                           "is left around it")
-        return
+        return "W0503"
     part = _part_of(s, roots)
     if part is None:
         return
-    final = roots[part]
+    final = local(part, cut.region) if local is not None else roots[part]
     refilled = _area(cut.region ^ final)
     if not _significant(refilled, cut_area):
         return
@@ -227,16 +495,15 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
 
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
-                 quick: bool = True) -> None:
+                 quick: bool = True, covered: set = frozenset(), loops=None) -> None:
     """W0507 for part ``s`` (its final ``shape``, its ``cuts``) at minimum wall ``t`` mm: one
     warning per piece of at least ``2 t^2`` that the opening removes.  ``quick=False`` skips
-    the whole-area bound below (the reference for its test)."""
+    the whole-area bound below (the reference for its test); ``covered``: name pairs already
+    reported with their measured width (:func:`_report_openings`), whose pieces are skipped."""
     if shape.is_empty():
         return
     segs = 16
-    opened = shape.offset(-t / 2, mf.JoinType.Round, 2.0, segs).offset(t / 2, mf.JoinType.Round,
-                                                                       2.0, segs)
-    thin = shape - opened
+    thin = _thin(shape, t, loops)
     if thin.is_empty():
         return
     # The pieces below partition `thin`, so none reaches 2 t^2 when the whole does not (the
@@ -245,7 +512,8 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     # of them, 0.1 mm^2 in all against 0.5 mm^2), which are then neither split nor measured.
     if quick and _area(thin) < 2 * t * t * (1 - 1e-9):
         return
-    holes = [c for c in cuts if c.hole in d.shapes]
+    holes = [c for c in cuts if c.hole in d.shapes and not d.shapes[c.hole].is_empty()]
+    hb = np.array([d.shapes[c.hole].bounds() for c in holes], dtype=float).reshape(-1, 4)
     filled = None
     for piece in thin.decompose():
         a = _area(piece)
@@ -254,11 +522,16 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         if filled is None:
             filled = _union([shape] + [d.shapes[c.hole] for c in holes])
         near = piece.offset(t, mf.JoinType.Round, 2.0, segs)
-        names = [f"hole `{c.hole.path}`" for c in holes
-                 if _area(near ^ d.shapes[c.hole]) > 1e-9]
+        nx0, ny0, nx1, ny1 = near.bounds()
+        close = np.flatnonzero((hb[:, 0] <= nx1) & (hb[:, 2] >= nx0) & (hb[:, 1] <= ny1)
+                               & (hb[:, 3] >= ny0))
+        names = [f"hole `{holes[k].hole.path}`" for k in close
+                 if _area(near ^ d.shapes[holes[k].hole]) > 1e-9]
         if _area(near - filled) > 1e-9:
             names.append(f"the outer edge of `{s.path}`")
         names = list(dict.fromkeys(names))
+        if names and any(set(names) <= c for c in covered):
+            continue
         x0, y0, x1, y1 = piece.bounds()
         length = max(x1 - x0, y1 - y0, 1e-9)
         width = min(t, a / length)
@@ -271,6 +544,60 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                      hint=f"move or shrink the feature so that at least {t:g} mm of material is "
                           "left (a laser or router cannot hold a thinner wall); the minimum is "
                           "set with --min-wall")
+
+
+TILE_VERTS = 2000      # W0507's opening is taken tile by tile above this many vertices
+
+
+def _open(shape, t: float):
+    segs = 16
+    return shape.offset(-t / 2, mf.JoinType.Round, 2.0, segs).offset(t / 2, mf.JoinType.Round,
+                                                                     2.0, segs)
+
+
+def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS):
+    """What the opening of ``shape`` by a disc of diameter ``t`` removes.  Clipper2's offset
+    runs a sweep whose cost grows faster than the vertex count (on a grid of holes about as
+    n^1.5: 12 ms at 100 holes, 256 ms at 900), so a shape of more than ``tile`` vertices is
+    cut into tiles of about that many: whether a point survives the opening depends only on
+    the shape within ``t`` of it, so each tile is opened with a margin of ``2 t`` around it
+    (the part's loops that meet the grown tile, filled even-odd, clipped to it) and what the
+    opening removes inside the tile itself is kept; the union of the tiles' parts is the
+    whole removed set."""
+    n = shape.num_vert()
+    if n <= tile:
+        return shape - _open(shape, t)
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    x0, y0, x1, y1 = shape.bounds()
+    w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
+    k = math.ceil(n / tile)
+    nx = max(1, round(math.sqrt(k * w / h)))
+    ny = max(1, math.ceil(k / nx))
+    xs, ys = np.linspace(x0, x1, nx + 1), np.linspace(y0, y1, ny + 1)
+    m = 2 * t
+    tiles = [(xs[i], ys[j], xs[i + 1], ys[j + 1]) for i in range(nx) for j in range(ny)]
+    boxes = [(p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()) for p in loops]
+    grown = [(a - m, b - m, c + m, e + m) for a, b, c, e in tiles]
+    pairs = box_pairs(boxes + grown)
+    nl = len(loops)
+    hit = pairs[(pairs[:, 0] < nl) & (pairs[:, 1] >= nl)]
+    near: dict = {}
+    for i, j in hit:
+        near.setdefault(int(j) - nl, []).append(int(i))
+    out = []
+    for k, (a, b, c, e) in enumerate(tiles):
+        idx = near.get(k)
+        if not idx:
+            continue
+        ga, gb, gc, ge = grown[k]
+        local = mf.CrossSection([loops[i].tolist() for i in idx], mf.FillRule.EvenOdd) ^ \
+            mf.CrossSection.square((gc - ga, ge - gb)).translate((ga, gb))
+        part = (local - _open(local, t)) ^ \
+            mf.CrossSection.square((c - a, e - b)).translate((a, b))
+        if not part.is_empty():
+            out.append(part)
+    return _union(out)
 
 
 def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
@@ -514,3 +841,114 @@ def _signed(poly) -> float:
     x, y = P[:, 0], P[:, 1]
     return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
                        - np.dot(y, np.concatenate([x[1:], x[:1]])))
+
+
+# ------------------------------------------------------------ topology under `--set` (W0510)
+@dataclass
+class Topology:
+    """What W0510 compares of one solid part between the program's defaults and a `--set`."""
+    span: object
+    pieces: int
+    openings: int
+    merges: set          # frozensets of two hole names that cut one opening
+    notches: set         # hole names that reach the outline
+    contacts: set        # frozensets of two face names (different solids) that overlap
+    holes: set           # every hole name
+    faces: set           # every solid face name
+
+
+def topology(d: Drawing) -> dict:
+    """The :class:`Topology` of every solid part of ``d``, by part path: its pieces and
+    openings (counter-clockwise and clockwise loops of its final shape), the holes that merge
+    (:func:`_analyse` at the touching distance) or reach the outline, and the faces of
+    different solid structures that overlap (candidates from :func:`.nearby.box_pairs`)."""
+    roots = _part_roots(d)
+    by_part: dict = {}
+    for c in d.cuts:
+        by_part.setdefault(_part_of(c.owner, roots), []).append(c)
+    faces_of: dict = {}
+    for st, own in d.own.items():
+        if st.kind != "solid":
+            continue
+        part = _part_of(st, roots)
+        if part is not None and part.kind == "solid":
+            faces_of.setdefault(part, []).extend(
+                (f"`{g.label}`", st, f) for g, f in own if f is not None and not f.is_empty())
+    out = {}
+    for s, shape in roots.items():
+        if s.kind != "solid":
+            continue
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+        pos = sum(_signed(p) > 0 for p in loops)
+        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops)
+        faces = faces_of.get(s, [])
+        contacts = set()
+        if len(faces) > 1:
+            boxes = [f.bounds() for _, _, f in faces]
+            for i, j in box_pairs(boxes):
+                (ni, si, fi), (nj, sj, fj) = faces[i], faces[j]
+                if si is not sj and _area(fi ^ fj) > 1e-6:
+                    contacts.add(frozenset((ni, nj)))
+        out[s.path] = Topology(s.span, pos, len(loops) - pos,
+                               {frozenset((a.names[i], a.names[j])) for i, j, _, _ in a.merges},
+                               {a.names[j] for j in a.notches}, contacts, set(a.names[1:]),
+                               {n for n, _, _ in faces})
+    return out
+
+
+def _count(n: int, what: str) -> str:
+    return f"{n} {what}" + ("" if n == 1 else "s")
+
+
+def topology_changes(base: Topology, new: Topology) -> list[str]:
+    """What changed from ``base`` (the defaults) to ``new``, in words, most telling first."""
+    out = []
+    if new.pieces != base.pieces:
+        out.append(f"{_count(new.pieces, 'piece')} instead of {base.pieces}")
+    if new.openings != base.openings:
+        out.append(f"{_count(new.openings, 'opening')} instead of {base.openings}")
+    for m in sorted(new.merges - base.merges, key=sorted):
+        a, b = sorted(m)
+        out.append(f"{a} merges with {b}")
+    for m in sorted(base.merges - new.merges, key=sorted):
+        if m <= new.holes:
+            a, b = sorted(m)
+            out.append(f"{a} and {b} no longer merge")
+    for h in sorted(new.notches - base.notches):
+        out.append(f"{h} now breaks through the outline")
+    for h in sorted(base.notches - new.notches):
+        if h in new.holes:
+            out.append(f"{h} no longer reaches the outline")
+    for c in sorted(new.contacts - base.contacts, key=sorted):
+        if c <= base.faces:
+            a, b = sorted(c)
+            out.append(f"{a} now overlaps {b}")
+    for c in sorted(base.contacts - new.contacts, key=sorted):
+        if c <= new.faces:
+            a, b = sorted(c)
+            out.append(f"{a} no longer overlaps {b}")
+    return out
+
+
+def check_topology(base: Drawing | dict, d: Drawing, values: dict, sink: DiagnosticSink) -> None:
+    """W0510 for each solid part of ``d`` (compiled with the param ``values``) whose
+    topology differs from ``base`` (the same program with its defaults: a Drawing, or its
+    :func:`topology` already taken)."""
+    if not values:
+        return
+    before = base if isinstance(base, dict) else topology(base)
+    now = topology(d)
+    with_ = ", ".join(f"{k}={v}" for k, v in values.items())
+    for path, t in now.items():
+        b = before.get(path)
+        if b is None:
+            continue
+        what = topology_changes(b, t)
+        if not what:
+            continue
+        sink.warning("W0510", f"with {with_}, part `{path}` changes: " + "; ".join(what[:4])
+                     + ("; ..." if len(what) > 4 else "") + " (not so with the defaults)",
+                     t.span,
+                     hint="such a change is rarely what the param is for: choose another "
+                          "value, derive the spacing from the param so that the design follows "
+                          "it, or declare the param's `min=`/`max=` to keep values that fit")

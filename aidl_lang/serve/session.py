@@ -32,7 +32,7 @@ from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
 from ..output import to_svg
 from ..parser import parse
-from ..output.checks import check_drawing
+from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
 from ..solver.system import build_rows
@@ -101,6 +101,7 @@ class Session:
         self.version = 0                          # bumps on every load / set_params
         self._dof_pending: Solver | None = None
         self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
+        self._base: object = None                 # the defaults' Drawing, then its topology
         self.last: dict = {}                      # timings and warm/cold of the last compile
 
     # ------------------------------------------------------------------ public
@@ -133,6 +134,7 @@ class Session:
         self.solver = self._row_keys = None             # a new program: nothing warm to reuse
         old_defaults = {p.name: p.default for p in self.params}
         base = self._compile({})
+        self._base = base.drawing if base.ok else None    # W0510's baseline: the defaults
         params = self._params(base.fctx, {}) if base.fctx is not None else []
         defaults = {p.name: p.default for p in params}
         self.values = {k: v for k, v in self.values.items()
@@ -142,6 +144,8 @@ class Session:
             res = self._compile(self.values)
             if not res.ok:                              # the kept values no longer fit: drop them
                 self.values, res = {}, base
+            elif res.drawing is not None:
+                self._topology_checks(res.drawing, res.sink)
         self.params = self._params(res.fctx, self.values) if res.fctx is not None else params
         self._dof_pending = res.solver if res.ok else None
         return self._publish(res, t0)
@@ -170,7 +174,7 @@ class Session:
         return view
 
     def update_checks(self) -> dict | None:
-        """The geometry checks (W0402, W0501-W0507: warnings) of the picture the last
+        """The geometry checks (W0402, W0501-W0510: warnings) of the picture the last
         :meth:`set_params` published, run after that picture was sent, so a slider move shows
         its picture without waiting for them: the view with their diagnostics added (same
         version), or ``None`` when they found nothing or a newer compile came first."""
@@ -180,10 +184,20 @@ class Session:
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
         check_drawing(pending[1], sink)
+        self._topology_checks(pending[1], sink)
         if not sink.items:
             return None
         self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
         return self.view()
+
+    def _topology_checks(self, drawing, sink: DiagnosticSink) -> None:
+        """W0510 for ``drawing`` (compiled with the customizer's values) against the defaults'
+        drawing of the last load (its topology taken once, then kept)."""
+        if self._base is None or not self.values:
+            return
+        if not isinstance(self._base, dict):
+            self._base = topology(self._base)
+        check_topology(self._base, drawing, self.values, sink)
 
     def drawing(self, values: dict[str, str]):
         """A fresh, cold compile with ``values`` for downloads: ``(drawing, title)`` (a
