@@ -571,9 +571,20 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
             x = float(np.hypot(*(ap - t * ab)))
             if x < dist:
                 want[(i, j)] = x
+    # a pair at the limit itself (to rounding) may fall either side: the two computations
+    # of the foot round differently (a fresh CI seed found 0.1 against 0.0999999999999996)
+    edge = {(i, j) for i in range(len(V)) for j in range(len(A))
+            if abs(_seg_dist(V[i], A[j], B[j]) - dist) <= 1e-9}
     for got in gots:
-        assert got.keys() == want.keys()
-        assert all(abs(got[k] - want[k]) <= 1e-9 for k in want)
+        assert got.keys() - edge == want.keys() - edge
+        assert all(abs(got[k] - want[k]) <= 1e-9 for k in want.keys() & got.keys())
+
+
+def _seg_dist(p, a, b) -> float:
+    import numpy as np
+    ab, ap = b - a, p - a
+    t = min(1.0, max(0.0, float(ap @ ab) / float(ab @ ab))) if ab @ ab > 0 else 0.0
+    return float(np.hypot(*(ap - t * ab)))
 
 
 # ------------------------------------------------------------ topology under --set (W0510)
