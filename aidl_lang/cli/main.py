@@ -302,6 +302,11 @@ def _length_mm(text: str, zero: bool = False) -> float | None:
     return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
 
 
+# the formats a cutter reads (and their preview): the kerf offsets their cuts; STL, 3MF and
+# STEP keep the designed size
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
+
 def _sheet_mm(text: str) -> tuple[float, float] | None:
     """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
     import re
@@ -453,23 +458,27 @@ def cmd_render(args) -> int:
     try:
         if kerf is None:
             kerf = res.drawing.kerf or None        # the program's `kerf` statements
+        cut = output                               # the 2D formats' output: kerf offset
         if kerf:
             from ..output.layout import compensate
-            output = compensate(output, kerf)
-        sheets = [output]
+            cut = compensate(output, kerf)
+        flat, solid = [cut], [output]
         if args.layout:
-            from ..output.layout import lay_out
-            sheets, dropped = lay_out(output, sheet, gap, rotate, args.nest_time)
-            notes.append(f"laid out {sum(len(s.parts) for s in sheets)} parts on "
-                         f"{len(sheets)} sheet{'s' if len(sheets) != 1 else ''} of "
+            from ..output.layout import place, plan
+            where = plan(cut, sheet, gap, rotate, args.nest_time)
+            flat, dropped = place(cut, where, sheet)
+            solid, _ = place(output, where, sheet)
+            notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
+                         f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
                          f"{sheet[0]:g} x {sheet[1]:g} mm")
             if dropped:
                 notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
                              "outside every part left out of the layout")
-        names = _sheet_names(outs, len(sheets))
+        names = _sheet_names(outs, len(flat))
         outs = [n for per in names for n in per]
         items = [(n, encode(s, o.suffix, opt))
-                 for o, per in zip([p[0] for p in names], names) for n, s in zip(per, sheets)]
+                 for o, per in zip([p[0] for p in names], names)
+                 for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2

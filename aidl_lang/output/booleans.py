@@ -74,7 +74,7 @@ class Drawing:
     # are made from templates, docs/performance.md)
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
-    kerf: dict | None = None
+    kerf = None
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:

@@ -187,13 +187,38 @@ def _nest(shapes: dict, height: float, angles, seconds: int, seed: int):
 
 def lay_out(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
             seconds: int = 0, seed: int = 0) -> tuple[list[Output], int]:
-    """Every solid part of ``output`` placed once on sheets ``sheet`` = (width, height) mm,
-    at least ``gap`` mm from each other and from the sheet's edges, turned only by the angles
-    of ``rotate`` (degrees; None: any angle).  ``seconds``: the packer's time to improve its
-    first packing (0: the first packing, a fraction of a second).  Returns one Output per
-    sheet (its page is the sheet: (0, 0) to (width, height)) and the number of engraving
-    strokes left out (outside every part).  Raises :class:`MissingDependency` without
-    spyrrow and :class:`LayoutError` for a part larger than the sheet."""
+    """Every solid part of ``output`` placed once on sheets ``sheet`` = (width, height) mm:
+    :func:`place` of :func:`plan`.  Returns one Output per sheet (its page is the sheet: (0, 0)
+    to (width, height)) and the number of engraving strokes left out (outside every part)."""
+    return place(output, plan(output, sheet, gap, rotate, seconds, seed), sheet)
+
+
+def place(output: Output, where: list[dict], sheet) -> tuple[list[Output], int]:
+    """``output``'s parts moved as :func:`plan` says (``where``: one dict part name ->
+    :class:`Motion` per sheet), with the engraving of each part; parts the plan does not name
+    are left out.  Returns one Output per sheet and the number of engraving strokes left out."""
+    W, H = float(sheet[0]), float(sheet[1])
+    by_name = {p.name: p for p in output.parts}
+    outs = []
+    n = len(where)
+    for j, moves in enumerate(where):
+        parts = [m.part(by_name[name]) for name, m in moves.items()]
+        strokes = [moves[st.part].stroke(st) for st in output.engrave if st.part in moves]
+        title = output.title + (f" (sheet {j + 1} of {n})" if n > 1 else "")
+        outs.append(Output(parts, strokes, title, None, (0.0, 0.0, W, H)))
+    placed = {name for moves in where for name in moves}
+    dropped = sum(1 for st in output.engrave if st.part not in placed)
+    return outs, dropped
+
+
+def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
+         seconds: int = 0, seed: int = 0) -> list[dict]:
+    """Where every solid part of ``output`` goes: one dict part name -> :class:`Motion` per
+    sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
+    from the sheet's edges, turned only by the angles of ``rotate`` (degrees; None: any
+    angle).  ``seconds``: the packer's time to improve its first packing (0: the first
+    packing, a fraction of a second).  Raises :class:`MissingDependency` without spyrrow and
+    :class:`LayoutError` for a part larger than the sheet."""
     try:
         import spyrrow  # noqa: F401
     except ImportError as e:
@@ -239,13 +264,4 @@ def lay_out(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0,
         for i, _ in here:
             del left[str(i)]
         sheets.append(sorted(here, key=lambda t: t[0]))
-    outs = []
-    n = len(sheets)
-    for j, placed in enumerate(sheets):
-        moves = {solids[i].name: m for i, m in placed}
-        parts = [m.part(solids[i]) for i, m in placed]
-        strokes = [moves[st.part].stroke(st) for st in output.engrave if st.part in moves]
-        title = output.title + (f" (sheet {j + 1} of {n})" if n > 1 else "")
-        outs.append(Output(parts, strokes, title, None, (0.0, 0.0, W, H)))
-    dropped = sum(1 for st in output.engrave if st.part not in {p.name for p in solids})
-    return outs, dropped
+    return [{solids[i].name: m for i, m in placed} for placed in sheets]

@@ -124,8 +124,9 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
                   fill_rule="evenodd")
     if output.page is not None and not laser:      # the sheet's edge (never in the laser style)
         px0, py0, px1, py1 = output.page
-        d.add(d.rect(insert=(_f(px0), _f(-py1)), size=(_f(px1 - px0), _f(py1 - py0)),
-                     id="sheet", fill="none", stroke="#90a4ae", stroke_width=_f(sw)))
+        gs = d.g(id="sheet", fill="none", stroke="#90a4ae", stroke_width=_f(sw))
+        gs.add(d.rect(insert=(_f(px0), _f(-py1)), size=(_f(px1 - px0), _f(py1 - py0))))
+        d.add(gs)
     solids = [p for p in output.parts if p.kind == "solid"]
     colour = {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)} \
         if len(solids) > 1 and not laser else {}
