@@ -395,3 +395,15 @@ def test_parts_lists_paths_sizes_holes_and_copies(tmp_path, capsys):
     assert main(["parts", str(prog)]) == 0
     text = capsys.readouterr().out
     assert "width mm" in text and "6 parts, 4 shapes" in text
+
+
+def test_the_laser_box_example_checks_clean_and_lays_out(tmp_path):
+    from conftest import EXAMPLES
+    from aidl_lang.output.layout import lay_out
+    path = next(p for p in EXAMPLES if p.stem == "laser_box")
+    view = output_of(path.read_text(), tmp_path, "laser_box")      # no warnings
+    assert len(view.parts) == 6
+    sheets, dropped = lay_out(view, (300.0, 200.0), 3.0, (0.0, 90.0))
+    assert len(sheets) == 1 and dropped == 0
+    check_sheets(sheets, view, 300.0, 200.0, 3.0)
+    assert len(sheets[0].engrave) == len(view.engrave) > 0     # the lid's label went along
