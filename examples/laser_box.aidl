@@ -7,14 +7,14 @@
 # Try: --set length=120mm  --set depth=70mm  --set height=50mm
 
 units mm
-param length = 100 mm, min=60 mm, max=200 mm, step=5 mm
-param depth = 60 mm, min=40 mm, max=120 mm, step=5 mm
-param height = 40 mm, min=20 mm, max=100 mm, step=5 mm
+param length = 100 mm, min = 60 mm, max = 200 mm, step = 5 mm
+param depth = 60 mm, min = 40 mm, max = 120 mm, step = 5 mm
+param height = 40 mm, min = 20 mm, max = 100 mm, step = 5 mm
 param wall = 3 mm
 thickness 3 mm
 
 gap = 4 mm
-side_len = depth - 2 * wall          # the short sides fit between the long ones
+side_len = depth - 2 * wall  # the short sides fit between the long ones
 
 assembly box {
     solid bottom {
