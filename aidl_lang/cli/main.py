@@ -125,6 +125,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
+    c.add_argument("--values", nargs="*", default=None, metavar="NAME",
+                   help="print the solved values of named entities (points, sizes, frames, "
+                        "boxes) in the file's units; NAMEs filter by dotted prefix")
     _budget_arg(c)
     e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
@@ -217,12 +220,10 @@ def _read(path: str, as_json: bool) -> str | None:
 
 
 def cmd_check(args) -> int:
-    from ..pipeline import compile_source
-    src = _read(args.file, args.json)
-    if src is None:
-        return 1
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
-                         budget=_budget(args))
+    from ..api import compile as compile_program
+    program = compile_program(path=args.file, overrides=_overrides(args.set),
+                              budget=_budget(args), min_wall=args.min_wall)
+    res = program.compiled
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -241,6 +242,11 @@ def cmd_check(args) -> int:
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False))
             extra["freedom"] = freedom_text(dofs_all)
+    values = None
+    if args.values is not None and program.ok:
+        values = program.values_matching(args.values)
+        extra["units"] = program.units
+        extra["values"] = [v.to_json() for v in values]
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -249,6 +255,10 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
+        for v in values or ():
+            print(v.text())
+        if values is not None and not values:
+            print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
     return 0 if res.ok else 1
 
 
