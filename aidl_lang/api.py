@@ -201,6 +201,23 @@ class Result:
         near = did_you_mean(name, [v.name for v in self.values])
         raise KeyError(f"no value `{name}`" + (f"; did you mean {', '.join(near)}?" if near else ""))
 
+    def freedom(self, detail: bool = False) -> dict:
+        """Degrees of freedom left after solving: ``{"dof": N or None (not counted: too
+        large), "text": "fully constrained" | "N degrees of freedom left, ..."}``; with
+        ``detail``, ``"structures"``: per structure ``{"structure", "unknowns", "dof",
+        "floating"}`` (entities still free to move; costs a null-space computation).  Raises
+        :class:`NotCompiled`."""
+        self._need("degrees of freedom")
+        from .solver.diagnose import degrees_of_freedom, freedom_text
+        dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail)
+        counted = all(d.rank >= 0 for d in dofs)
+        doc: dict = {"dof": sum(max(0, d.dof) for d in dofs) if counted else None,
+                     "text": freedom_text(dofs)}
+        if detail:
+            doc["structures"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
+                                  "dof": d.dof, "floating": list(d.floating)} for d in dofs]
+        return doc
+
     # ------------------------------------------------------------------ outputs
     @property
     def output(self):

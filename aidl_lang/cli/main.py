@@ -1,4 +1,4 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
+"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve``, ``mcp`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
@@ -64,7 +64,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "mcp", "prompt", "generate",
+               "eval")
 
 
 class _Unused:
@@ -147,6 +148,13 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
+            description="Serve AIDL's tools (check, render, values, explain) and resources "
+                        "(language reference, prompt, stdlib, examples) to an MCP host over "
+                        "stdio. Only files inside --root can be read or written.")
+    m.add_argument("--root", default=".", metavar="DIR",
+                   help="the folder the server may read and write (default: the current one)")
+    _budget_arg(m)
     if only is None or only in ("prompt", "generate", "eval"):
         from .llm import add_commands
         add_commands(add)              # prompt, generate, eval
@@ -450,6 +458,20 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_mcp(args) -> int:
+    if not os.path.isdir(args.root):
+        return _usage(f"--root `{args.root}` is not a folder")
+    try:
+        import mcp.server.mcpserver  # noqa: F401  (the `mcp` extra)
+    except ImportError:
+        print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
+              file=sys.stderr)
+        return 2
+    from ..llm.prompt import system_prompt
+    from ..mcp.server import main as mcp_main
+    return mcp_main(args.root, min(args.budget, 4.0), system_prompt)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run one ``aidl`` command; returns the exit status (see the module text)."""
     global _command
@@ -459,7 +481,7 @@ def main(argv: list[str] | None = None) -> int:
     _command = args.cmd
     try:
         run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]
