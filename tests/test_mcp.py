@@ -52,6 +52,8 @@ async def test_mcp_server_over_stdio(tmp_path):
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "explain"}
             assert "source" in tools["check"].input_schema["properties"]
+            assert tools["check"].annotations.read_only_hint
+            assert not tools["render"].annotations.read_only_hint
 
             # a broken program: a located diagnostic with its fix
             r = await session.call_tool("check", {"source": BROKEN})

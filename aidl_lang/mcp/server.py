@@ -14,6 +14,7 @@ from pathlib import Path
 
 from mcp.server.mcpserver import Image, MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
+from mcp_types import ToolAnnotations
 
 from . import tools as T
 
@@ -55,7 +56,13 @@ def build_server(root: str, budget: float = 1.0,
     def refused(e: Exception) -> ToolError:
         return ToolError(str(e))
 
-    @server.tool(structured_output=False)
+    # hints for hosts: check, values and explain only read; render writes only when given
+    # `output` (never outside the root); nothing reaches the network
+    reads = ToolAnnotations(read_only_hint=True, idempotent_hint=True, open_world_hint=False)
+    writes = ToolAnnotations(read_only_hint=False, destructive_hint=True, idempotent_hint=True,
+                             open_world_hint=False)
+
+    @server.tool(structured_output=False, annotations=reads)
     def check(source: str | None = None, path: str | None = None,
               overrides: dict[str, str] | None = None, dof: bool = False,
               budget: float | None = None) -> str:
@@ -72,7 +79,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False)
+    @server.tool(structured_output=False, annotations=writes)
     def render(source: str | None = None, path: str | None = None, output: str | None = None,
                width: int = 800, overrides: dict[str, str] | None = None,
                style: str = "preview", budget: float | None = None) -> list:
@@ -87,7 +94,7 @@ def build_server(root: str, budget: float = 1.0,
             raise refused(e) from None
         return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]
 
-    @server.tool(structured_output=False)
+    @server.tool(structured_output=False, annotations=reads)
     def values(source: str | None = None, path: str | None = None,
                names: list[str] | None = None, overrides: dict[str, str] | None = None,
                budget: float | None = None) -> str:
@@ -102,7 +109,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False)
+    @server.tool(structured_output=False, annotations=reads)
     def explain(code: str) -> str:
         """What a diagnostic code (E0103, W0402, ...) means, with an example."""
         try:
