@@ -37,6 +37,8 @@ KEYWORD_DOCS = {
     "param": "`param NAME = value` — a model parameter, overridable with `--set NAME=VALUE`.",
     "def": "`def name(params) -> kind { ... }` — a template: a structure made by a call.",
     "for": "`for x in list { ... }` — repeat; names assigned inside become lists.",
+    "assert": "`assert cond, \"reason\"` — checked at the solved values, never solved for; "
+              "false is E0405.",
     "in": "`for x in list` / `[e for x in list]`.",
     "if": "`if cond { ... } else { ... }`, or `a if cond else b`.",
     "else": "the other branch of `if`.", "elif": "`else if`.",
