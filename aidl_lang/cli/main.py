@@ -1,4 +1,5 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve``, ``mcp`` (and
+"""The ``aidl`` command line: ``render``, ``check``, ``parts``, ``explain``, ``fmt``, ``lsp``,
+``serve``, ``mcp`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
@@ -64,8 +65,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "mcp", "prompt", "generate",
-               "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "prompt",
+               "generate", "eval")
 
 
 class _Unused:
@@ -111,6 +112,21 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--thickness", default=None, metavar="LENGTH",
                    help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
                         "`thickness`, else 3 mm)")
+    r.add_argument("--kerf", default=None, metavar="LENGTH",
+                   help="offset every cut by half this kerf so parts come out at their size, "
+                        "e.g. 0.15mm (default: the program's `kerf`, else none)")
+    r.add_argument("--layout", choices=["sheet"], default=None,
+                   help="sheet: lay every solid part out flat on cutting sheets (true-shape "
+                        "nesting; `layout` extra), one file per sheet when there are several")
+    r.add_argument("--sheet", default="600x400mm", metavar="WxH",
+                   help="sheet size for --layout, e.g. 600x400mm or 24x12in (default 600x400mm)")
+    r.add_argument("--gap", default="3mm", metavar="LENGTH",
+                   help="space between parts and to the sheet's edge for --layout (default 3mm)")
+    r.add_argument("--rotate", default="0,90", metavar="ANGLES",
+                   help="angles in degrees parts may be turned by for --layout, e.g. 0 or 0,90 "
+                        "(default), or any")
+    r.add_argument("--nest-time", type=int, default=0, metavar="S",
+                   help="seconds the nesting may spend improving its first packing (default 0)")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -130,6 +146,11 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="print the solved values of named entities (points, sizes, frames, "
                         "boxes) in the file's units; NAMEs filter by dotted prefix")
     _budget_arg(c)
+    pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
+    pl.add_argument("file")
+    pl.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    pl.add_argument("--json", action="store_true", help="the list as JSON on stdout")
+    _budget_arg(pl)
     e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
     f = add("fmt", help="format .aidl files in place (canonical layout)")
@@ -286,9 +307,9 @@ def _usage(msg: str) -> int:
     return 2
 
 
-def _length_mm(text: str) -> float | None:
-    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length up to
-    the model extent (1e6 mm)."""
+def _length_mm(text: str, zero: bool = False) -> float | None:
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length (or
+    0 with ``zero``) up to the model extent (1e6 mm)."""
     import re
     m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
     if not m:
@@ -296,7 +317,31 @@ def _length_mm(text: str) -> float | None:
     v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
         (m.group(2) or "mm").lower()]
     from ..limits import MAX_EXTENT
-    return v if 0 < v <= MAX_EXTENT else None
+    return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
+
+
+# the formats a cutter reads (and their preview): the kerf offsets their cuts; STL, 3MF and
+# STEP keep the designed size
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
+
+def _sheet_mm(text: str) -> tuple[float, float] | None:
+    """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
+    import re
+    m = re.fullmatch(r"\s*([0-9.e+-]+)\s*[x×*]\s*([0-9.e+-]+)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    unit = m.group(3) or "mm"
+    w, h = _length_mm(m.group(1) + unit), _length_mm(m.group(2) + unit)
+    return None if w is None or h is None else (w, h)
+
+
+def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
+    """The files of ``n`` sheets for each output: ``cut.svg`` for one sheet, else
+    ``cut-1.svg``, ``cut-2.svg``, ..."""
+    if n == 1:
+        return [[o] for o in outs]
+    return [[o.with_name(f"{o.stem}-{k + 1}{o.suffix}") for k in range(n)] for o in outs]
 
 
 def _outputs(args) -> list[Path] | int:
@@ -390,6 +435,29 @@ def cmd_render(args) -> int:
     from ..limits import MAX_EXTENT
     if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
         return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
+    kerf = None
+    if args.kerf is not None:
+        kerf = _length_mm(args.kerf)
+        if kerf is None or kerf > 10:
+            return _usage(f"--kerf expects a positive length up to 10 mm, such as 0.15mm, got "
+                          f"`{args.kerf}`")
+    sheet = _sheet_mm(args.sheet)
+    if sheet is None:
+        return _usage(f"--sheet expects WIDTHxHEIGHT with a unit, such as 600x400mm, got "
+                      f"`{args.sheet}`")
+    gap = _length_mm(args.gap, zero=True)
+    if gap is None:
+        return _usage(f"--gap expects a length of 0 or more, such as 3mm, got `{args.gap}`")
+    from ..output.layout import parse_rotate
+    try:
+        rotate = parse_rotate(args.rotate)
+    except ValueError:
+        return _usage(f"--rotate expects angles in degrees such as 0,90, or any; got "
+                      f"`{args.rotate}`")
+    if args.nest_time < 0 or args.nest_time > 3600:
+        return _usage(f"--nest-time expects seconds from 0 to 3600, got `{args.nest_time}`")
+    if args.layout is None and (args.sheet, args.gap, args.rotate) != ("600x400mm", "3mm", "0,90"):
+        return _usage("--sheet, --gap and --rotate are for a cutting layout: add --layout sheet")
     if args.file == "-":
         src = sys.stdin.read()
     else:
@@ -404,8 +472,31 @@ def cmd_render(args) -> int:
     output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin)
+    notes = []
     try:
-        items = [(o, encode(output, o.suffix, opt)) for o in outs]
+        if kerf is None:
+            kerf = res.drawing.kerf or None        # the program's `kerf` statements
+        cut = output                               # the 2D formats' output: kerf offset
+        if kerf:
+            from ..output.layout import compensate
+            cut = compensate(output, kerf)
+        flat, solid = [cut], [output]
+        if args.layout:
+            from ..output.layout import place, plan
+            where = plan(cut, sheet, gap, rotate, args.nest_time)
+            flat, dropped = place(cut, where, sheet)
+            solid, _ = place(output, where, sheet)
+            notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
+                         f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
+                         f"{sheet[0]:g} x {sheet[1]:g} mm")
+            if dropped:
+                notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
+                             "outside every part left out of the layout")
+        names = _sheet_names(outs, len(flat))
+        outs = [n for per in names for n in per]
+        items = [(n, encode(s, o.suffix, opt))
+                 for o, per in zip([p[0] for p in names], names)
+                 for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2
@@ -418,8 +509,29 @@ def cmd_render(args) -> int:
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
     if not args.json:
+        for line in notes:
+            print(line)
         for o in outs:
             print(f"wrote {o}")
+    return 0
+
+
+def cmd_parts(args) -> int:
+    from ..pipeline import compile_source
+    from ..output import build
+    from ..output.inventory import parts_list, parts_text
+    src = _read(args.file, args.json)
+    if src is None:
+        return 1
+    res = compile_source(src, args.file, _overrides(args.set), budget=_budget(args))
+    if not res.ok:
+        _emit(res.sink, args.json, False)
+        return 1
+    rows = parts_list(build(res.drawing, res.model.root.name))
+    if args.json:
+        print(json.dumps({"ok": True, "unit": "mm", "parts": rows}, indent=2))
+    else:
+        print(parts_text(rows))
     return 0
 
 
@@ -480,7 +592,8 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
     _command = args.cmd
     try:
-        run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
+        run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
+               "explain": cmd_explain,
                "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
@@ -509,7 +622,7 @@ def main(argv: list[str] | None = None) -> int:
 _command: str | None = None
 # Commands that leave nothing behind when main() returns: outputs are written and renamed,
 # cache files written, no threads or atexit work.
-_QUICK_EXIT = frozenset({"check", "render", "explain", "fmt"})
+_QUICK_EXIT = frozenset({"check", "render", "parts", "explain", "fmt"})
 
 
 def entry() -> None:

@@ -338,20 +338,20 @@ class Statements:
                             hint=f"move the `{what}` line to the top of the file")
 
     def _thickness(self, st) -> None:
-        """``thickness LENGTH``: the model's default (top level) or a structure's own, in mm."""
+        """``thickness LENGTH`` (and ``kerf LENGTH``): the model's default (top level) or a
+        structure's own, in mm."""
+        word, eg = ("kerf", "kerf 0.15 mm") if isinstance(st, A.KerfDecl) else \
+            ("thickness", "thickness 3 mm")
         v = self.eval(st.value)
         if not isinstance(v, Q) or v.dim not in (LEN, NUM):
-            raise EvalError("E0109", "`thickness` expects a length", st.value.span,
-                            hint="write it with a unit: `thickness 3 mm`")
+            raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
+                            hint=f"write it with a unit: `{eg}`")
         val = Q(self._as_length(v, st.value.span), LEN).const()
         if val is None or not val > 0:
-            raise EvalError("E0109", "`thickness` must be a positive length known before "
+            raise EvalError("E0109", f"`{word}` must be a positive length known before "
                             "solving", st.value.span,
-                            hint="use a number or a param: `thickness 3 mm`")
-        if self.struct is None:
-            self.model.thickness = val
-        else:
-            self.struct.thickness = val
+                            hint=f"use a number or a param: `{eg}`")
+        setattr(self.model if self.struct is None else self.struct, word, val)
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:

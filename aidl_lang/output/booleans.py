@@ -73,6 +73,8 @@ class Drawing:
     # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
     # are made from templates, docs/performance.md)
     empty_faces = ()
+    # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
+    kerf = None
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:
@@ -387,12 +389,14 @@ class Renderer:
             self.part(root, out)
         out.exact = self.exact
         out.empty_faces = self.empty_faces
-        default = getattr(self.m, "thickness", None)
-        for name, s in out.part_of.items():
-            t = next((getattr(a, "thickness") for a in [s, *s.ancestors()]
-                      if getattr(a, "thickness", None) is not None), default)
-            if t is not None:
-                out.thickness[name] = float(t)
+        out.kerf = {}
+        for word, into in (("thickness", out.thickness), ("kerf", out.kerf)):
+            default = getattr(self.m, word, None)
+            for name, s in out.part_of.items():
+                t = next((getattr(a, word) for a in [s, *s.ancestors()]
+                          if getattr(a, word, None) is not None), default)
+                if t is not None:
+                    into[name] = float(t)
         return out
 
 
