@@ -222,6 +222,14 @@ class ExprStmt(Node):
 
 
 @dataclass(eq=False, slots=True)
+class Assert(Node):
+    """``assert cond, "message"``: ``cond`` (comparisons joined by ``and``) must hold at the
+    solved values; checked after solving, never a constraint (docs/language.md)."""
+    expr: Node
+    message: str | None = None
+
+
+@dataclass(eq=False, slots=True)
 class Program(Node):
     path: str
     source: str

@@ -1274,6 +1274,10 @@ class _Builder:
     def expr_stmt(self, meta, items):
         return A.ExprStmt(meta, items[0])
 
+    def assert_stmt(self, meta, items):
+        msg = _unquote(self.tx(items[1])) if len(items) > 1 and items[1] is not None else None
+        return A.Assert(meta, items[0], msg)
+
     def bare_block(self, meta, items):
         return items[0]
 

@@ -396,7 +396,7 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
 CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",
              "PI": "number", "tau": "number"}
 
-KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif",
+KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif", "assert",
             "and", "or", "not", "self", "true", "false"]
 STRUCTURE_KINDS = ["solid", "hole", "drawing", "assembly"]
 

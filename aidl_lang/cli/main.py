@@ -1,5 +1,5 @@
 """The ``aidl`` command line: ``render``, ``check``, ``parts``, ``explain``, ``fmt``, ``lsp``,
-``serve`` (and
+``serve``, ``mcp`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
@@ -65,7 +65,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "prompt",
+               "generate", "eval")
 
 
 class _Unused:
@@ -141,6 +142,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
+    c.add_argument("--values", nargs="*", default=None, metavar="NAME",
+                   help="print the solved values of named entities (points, sizes, frames, "
+                        "boxes) in the file's units; NAMEs filter by dotted prefix")
     _budget_arg(c)
     pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
     pl.add_argument("file")
@@ -165,6 +169,13 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
+            description="Serve AIDL's tools (check, render, values, explain) and resources "
+                        "(language reference, prompt, stdlib, examples) to an MCP host over "
+                        "stdio. Only files inside --root can be read or written.")
+    m.add_argument("--root", default=".", metavar="DIR",
+                   help="the folder the server may read and write (default: the current one)")
+    _budget_arg(m)
     if only is None or only in ("prompt", "generate", "eval"):
         from .llm import add_commands
         add_commands(add)              # prompt, generate, eval
@@ -238,12 +249,10 @@ def _read(path: str, as_json: bool) -> str | None:
 
 
 def cmd_check(args) -> int:
-    from ..pipeline import compile_source
-    src = _read(args.file, args.json)
-    if src is None:
-        return 1
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
-                         budget=_budget(args))
+    from ..api import compile as compile_program
+    program = compile_program(path=args.file, overrides=_overrides(args.set),
+                              budget=_budget(args), min_wall=args.min_wall)
+    res = program.compiled
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -262,6 +271,11 @@ def cmd_check(args) -> int:
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False))
             extra["freedom"] = freedom_text(dofs_all)
+    values = None
+    if args.values is not None and program.ok:
+        values = program.values_matching(args.values)
+        extra["units"] = program.units
+        extra["values"] = [v.to_json() for v in values]
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -270,6 +284,10 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
+        for v in values or ():
+            print(v.text())
+        if values is not None and not values:
+            print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
     return 0 if res.ok else 1
 
 
@@ -552,6 +570,20 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_mcp(args) -> int:
+    if not os.path.isdir(args.root):
+        return _usage(f"--root `{args.root}` is not a folder")
+    try:
+        import mcp.server.mcpserver  # noqa: F401  (the `mcp` extra)
+    except ImportError:
+        print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
+              file=sys.stderr)
+        return 2
+    from ..llm.prompt import system_prompt
+    from ..mcp.server import main as mcp_main
+    return mcp_main(args.root, min(args.budget, 4.0), system_prompt)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run one ``aidl`` command; returns the exit status (see the module text)."""
     global _command
@@ -562,7 +594,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]

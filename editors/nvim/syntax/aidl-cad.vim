@@ -10,7 +10,7 @@ syntax keyword aidlCadStructure solid hole drawing assembly
 syntax keyword aidlCadConditional elif else if
 syntax keyword aidlCadRepeat for in
 syntax keyword aidlCadOperator and not or
-syntax keyword aidlCadKeyword as def import param units
+syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
 syntax keyword aidlCadPrimitive Arc ArcSlot Circle Ellipse Line Point Polygon Rectangle
