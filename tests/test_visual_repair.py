@@ -250,3 +250,10 @@ def test_request_messages_sends_only_the_newest_picture():
     assert sent[0]["content"][1]["type"] == "text"
     assert sent[2]["content"][1]["image_url"]["url"] == "data:image/png;base64,Qg=="
     assert msgs[2]["content"][1]["image_url"]["url"] == "b.png"        # the record is unchanged
+
+
+def test_a_visual_revision_that_checks_replaces_the_program_even_with_a_warning():
+    warned = JOINED.replace("radius=8)\n", "radius=8)\n    1 + 1\n")       # W0101
+    res = generate("a key tag", Scripted([JOINED, warned]), max_rounds=1, warning_rounds=0,
+                   visual_rounds=1)
+    assert res.ok and res.code == extract_code(warned) and res.warnings == ["W0101"]

@@ -236,9 +236,10 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
 
     ``visual_rounds``: after that, up to this many times, the best program's rendering is
     sent as a picture (:func:`visual_message`); a reply ``LOOKS RIGHT`` ends the loop, a
-    program is compiled like any other round (each visual round may go past ``max_rounds``;
-    a revision that does not compile gets the error rounds left, and at least one, and never
-    replaces the earlier valid program).  Pictures are kept in ``Result.pictures`` by path
+    program is compiled like any other round (each visual round may go past ``max_rounds``).
+    A revision that checks replaces the program (even with more warnings); one that does not
+    compile gets the error rounds left, and at least one, and never replaces the earlier
+    valid program.  Pictures are kept in ``Result.pictures`` by path
     (:func:`picture_path`), older ones are left out of later requests.
 
     Raises :class:`aidl_lang.llm.LLMError` if the endpoint fails."""
@@ -249,7 +250,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
     best: Round | None = None
     pictures: dict[str, bytes] = {}
     warn_used = visual_used = 0
-    expect_visual = looks_right = False
+    expect_visual = looks_right = revising = False
     limit = max_rounds
     n = 0
     while n < limit:
@@ -277,6 +278,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
             diags = [d.to_json(compiled.sink.sources) for d in compiled.sink.items]
             rnd = Round(n, reply, code, compiled.ok, diags, kind=kind,
                         verdict="revised" if expect_visual else None)
+            revising = revising or expect_visual
             if not compiled.ok or (rnd.warning_codes and warn_used < warning_rounds):
                 rnd.feedback = feedback_for(compiled)
             expect_visual = False
@@ -285,8 +287,11 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
         rounds.append(rnd)
         content: str | list[dict] | None = rnd.feedback
         if rnd.ok:
-            if best is None or len(rnd.warning_codes) <= len(best.warning_codes):
+            # a visual revision (or the repair of one) that checks replaces the program;
+            # otherwise the fewest warnings win, the latest of equals
+            if best is None or revising or len(rnd.warning_codes) <= len(best.warning_codes):
                 best = rnd
+            revising = False
             if rnd.feedback is None:
                 say(f"round {n}: valid" + (f", {len(rnd.warning_codes)} warning(s)"
                                             if rnd.warning_codes else ""))
