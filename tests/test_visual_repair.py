@@ -257,3 +257,24 @@ def test_a_visual_revision_that_checks_replaces_the_program_even_with_a_warning(
     res = generate("a key tag", Scripted([JOINED, warned]), max_rounds=1, warning_rounds=0,
                    visual_rounds=1)
     assert res.ok and res.code == extract_code(warned) and res.warnings == ["W0101"]
+
+
+def test_an_endpoint_refusing_the_picture_keeps_the_valid_program(tmp_path):
+    from aidl_lang.llm.client import LLMError
+
+    class TextOnly(Scripted):
+        def complete(self, messages):
+            if any(isinstance(m["content"], list) for m in messages):
+                raise LLMError("http://x/v1/chat/completions answered HTTP 400: no images")
+            return super().complete(messages)
+
+    res = generate("a key tag", TextOnly([JOINED]), max_rounds=1, visual_rounds=1)
+    assert res.ok and res.code == extract_code(JOINED) and "HTTP 400" in res.visual_error
+    # before any picture an endpoint failure still raises
+
+    class Down(Scripted):
+        def complete(self, messages):
+            raise LLMError("cannot reach http://x/v1/chat/completions")
+
+    with pytest.raises(LLMError):
+        generate("a key tag", Down([]), max_rounds=1, visual_rounds=1)

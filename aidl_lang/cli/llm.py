@@ -90,7 +90,8 @@ def cmd_generate(args) -> int:
         warn = f", {len(res.warnings)} warning(s) left" if res.warnings else ""
         if res.visual_rounds:
             warn += (f", {res.visual_rounds} picture(s) checked"
-                     + (", LOOKS RIGHT" if res.looks_right else ""))
+                     + (", LOOKS RIGHT" if res.looks_right else "")
+                     + (" (the visual check failed)" if res.visual_error else ""))
         print(f"wrote {out} (valid in round {len(res.rounds)}{warn}); transcript {md}")
         return 0
     print(f"aidl: no valid program in {len(res.rounds)} rounds; {out} not written; "

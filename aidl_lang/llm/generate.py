@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..diagnostics import render_text
-from .client import ChatClient
+from .client import ChatClient, LLMError
 from ..pipeline import compile_source
 from .prompt import system_prompt
 
@@ -109,6 +109,7 @@ class Result:
     pictures: dict[str, bytes] = field(default_factory=dict)   # path -> PNG (not in JSON)
     visual_rounds: int = 0            # pictures sent
     looks_right: bool = False         # the model answered LOOKS RIGHT to the last picture
+    visual_error: str | None = None   # the endpoint failed on a picture (the program is kept)
 
     @property
     def first_try(self) -> bool:
@@ -128,7 +129,8 @@ class Result:
                 "first_try": self.first_try, "rounds_used": len(self.rounds),
                 "error_codes": self.error_codes, "warnings": self.warnings,
                 "clean": self.clean, "visual_rounds": self.visual_rounds,
-                "looks_right": self.looks_right, "pictures": list(self.pictures),
+                "looks_right": self.looks_right, "visual_error": self.visual_error,
+                "pictures": list(self.pictures),
                 "rounds": [asdict(r) | {"error_codes": r.error_codes,
                                         "warning_codes": r.warning_codes} for r in self.rounds],
                 "messages": self.messages}
@@ -242,7 +244,8 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
     valid program.  Pictures are kept in ``Result.pictures`` by path
     (:func:`picture_path`), older ones are left out of later requests.
 
-    Raises :class:`aidl_lang.llm.LLMError` if the endpoint fails."""
+    Raises :class:`aidl_lang.llm.LLMError` if the endpoint fails, except once a picture was
+    sent and a program checks: then the loop stops with it (``Result.visual_error``)."""
     say = progress or (lambda s: None)
     messages = [{"role": "system", "content": system if system is not None else system_prompt()},
                 {"role": "user", "content": prompt}]
@@ -251,13 +254,23 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
     pictures: dict[str, bytes] = {}
     warn_used = visual_used = 0
     expect_visual = looks_right = revising = False
+    visual_error = None
     limit = max_rounds
     n = 0
     while n < limit:
         n += 1
         say(f"round {n}/{limit}: asking {client.model} ..."
             + (" (visual check)" if expect_visual else ""))
-        reply = client.complete(request_messages(messages, pictures))
+        try:
+            reply = client.complete(request_messages(messages, pictures))
+        except LLMError as e:
+            if not pictures or best is None:
+                raise
+            # e.g. a text-only model refusing the image: the valid program is not lost
+            visual_error = str(e)
+            say(f"round {n}: the visual check failed ({e}); keeping round {best.number}'s "
+                "program")
+            break
         messages.append({"role": "assistant", "content": reply})
         code = extract_code(reply)
         kind = "visual" if expect_visual else "program"
@@ -324,7 +337,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
         return Result(prompt, client.model, False, rounds, None, messages, pictures=pictures,
                       visual_rounds=visual_used)
     return Result(prompt, client.model, True, rounds, best.code, messages, best.warning_codes,
-                  pictures, visual_used, looks_right)
+                  pictures, visual_used, looks_right, visual_error)
 
 
 def _picture(best: Round, compiled, path: str, say: Callable[[str], None]) -> bytes | None:
@@ -350,6 +363,7 @@ def transcript_markdown(res: Result) -> str:
         out[-1] = out[-1].rstrip("\n")
         out.append(f"- visual rounds: {res.visual_rounds} picture(s) sent; "
                    + ("the model answered LOOKS RIGHT" if res.looks_right
+                      else f"the endpoint failed: {res.visual_error}" if res.visual_error
                       else "no LOOKS RIGHT") + "\n")
     for r in res.rounds:
         head = ("valid" + (" with warnings " + ", ".join(r.warning_codes) if r.warning_codes else "")
