@@ -278,3 +278,14 @@ def test_an_endpoint_refusing_the_picture_keeps_the_valid_program(tmp_path):
 
     with pytest.raises(LLMError):
         generate("a key tag", Down([]), max_rounds=1, visual_rounds=1)
+
+
+def test_a_model_that_never_answers_the_picture_ends_with_the_rounds():
+    c = Scripted([JOINED] + ["What a nice tag."] * 10)
+    res = generate("a key tag", c, max_rounds=1, visual_rounds=1)
+    assert res.ok and res.code == extract_code(JOINED) and not res.looks_right
+    assert len(res.rounds) == 3 and [r.verdict for r in res.rounds] == [None, "no verdict",
+                                                                          "no verdict"]
+    c = Scripted([JOINED] + ["What a nice tag."] * 10)
+    res = generate("a key tag", c, max_rounds=4, visual_rounds=1)
+    assert len(res.rounds) == 4 and res.code == extract_code(JOINED)

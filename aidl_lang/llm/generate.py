@@ -255,6 +255,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
     warn_used = visual_used = 0
     expect_visual = looks_right = revising = False
     visual_error = None
+    grace = False
     limit = max_rounds
     n = 0
     while n < limit:
@@ -295,8 +296,10 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
             if not compiled.ok or (rnd.warning_codes and warn_used < warning_rounds):
                 rnd.feedback = feedback_for(compiled)
             expect_visual = False
-        if kind == "visual" and not rnd.ok:
+        if kind == "visual" and not rnd.ok and grace:
             limit = max(limit, n + 1)      # a broken visual reply gets at least one repair
+            grace = False                  # (once per picture: a model that never answers
+                                           # ends when the rounds run out)
         rounds.append(rnd)
         content: str | list[dict] | None = rnd.feedback
         if rnd.ok:
@@ -318,7 +321,7 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
                 pictures[rnd.picture] = picture
                 content = visual_message(prompt, best, rnd, rnd.picture)
                 rnd.feedback = content[0]["text"]
-                expect_visual = True
+                expect_visual = grace = True
                 limit = max(limit, n + 1)
                 w, h = png_size(picture) or (0, 0)
                 say(f"round {n}: sending a {w}x{h} picture of round {best.number}'s program "
