@@ -94,7 +94,7 @@ TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
-TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
+TEXT_MEMBERS = {"position": "point", "center": "point", "size": "length", "bb": "bbox"}
 STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length"}
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
                    "radius": "length", "width": "length", "inner_radius": "length",
@@ -287,11 +287,13 @@ _DEFS = {
                               "the span from first to last (360 deg: evenly all round), step the "
                               "angle between neighbours; gives [original, copy1, ...]."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
+                 [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline, or only "
-                     "the corners at: a point, [edge1, edge2] (where they meet), a shape's "
-                     "corners, or a list of these."),
+                     "the corners at: a point, [edge1, edge2] (where they meet; also "
+                     "Fillet(edge1, edge2, radius)), a shape's corners, or a list of these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
+                  [A("a", "any"), A("b", "any"), A("distance", "length")],
                   cat="operation",
                   doc="Cut every convex corner of this solid's final outline (or those at, "
                       "as Fillet) with two legs of distance."),

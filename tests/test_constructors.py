@@ -152,3 +152,31 @@ def test_star_and_arc_slot_errors_are_located(compile_text, src, msg):
     c = compile_text("solid s {\n    g = " + src + "\n}\n")
     (d,) = [d for d in c.sink.items if d.severity == "error"]
     assert msg in d.message and d.span.line == 2
+
+
+def test_fillet_and_chamfer_take_two_edges_as_their_corner():
+    """`Fillet(edge1, edge2, radius=r)` (what models write) rounds the corner where the two
+    edges meet, as `Fillet([edge1, edge2], r)` does; it was "`radius` given twice"."""
+    from aidl_lang.geometry.curves import Arc, Line
+    c, o = _exact("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+                  "    Fillet(body.top, body.right, radius=5)\n"
+                  "    Chamfer(body.bottom, body.left, 3)\n}\n")
+    segs = o.parts[0].loops[0].segments
+    (arc,) = [g for g in segs if isinstance(g, Arc)]
+    assert arc.radius == pytest.approx(5, abs=1e-12)
+    assert arc.center == pytest.approx((15, 5), abs=1e-12)
+    ends = sorted((round(g.start[0], 9), round(g.start[1], 9)) for g in segs if isinstance(g, Line))
+    assert (-20.0, -7.0) in ends and (-17.0, -10.0) in ends
+
+
+def test_text_center_is_the_middle_of_its_strokes(compile_text):
+    from aidl_lang.geometry.text import text_extent
+    c = compile_text("drawing d {\n    t = Text(\"HELLO\", (10, 30), size=5)\n"
+                     "    p = Point(at=t.center)\n}\n")
+    assert c.ok
+    x = c.model.xs()
+    g = {g.name: g for g in c.model.root.geometry}
+    x0, x1, y0, y1 = text_extent("HELLO", 5.0, "middle", "baseline", 0.0)
+    pt = g["p"].points["p"]
+    assert (x[pt.ix], x[pt.iy]) == pytest.approx((10 + (x0 + x1) / 2, 30 + (y0 + y1) / 2),
+                                                abs=1e-9)

@@ -632,6 +632,10 @@ def member(g: Geometry, name: str, frame):
             return PV(sx, sy, None, own)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
+    if k == "Text" and name == "center":          # the middle of the strokes' box
+        p = _pv(g.points["position"], frame)
+        x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
+        return PV(p.x + (x0 + x1) / 2, p.y + (y0 + y1) / 2, None, own)
     return None
 
 
