@@ -64,7 +64,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "batch", "prompt", "generate",
+               "eval")
 
 
 class _Unused:
@@ -144,6 +145,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    if only is None or only == "batch":
+        from ..batch.command import add_arguments as add_batch
+        add_batch(add("batch", help="compile many programs (files, folders, JSONL) into "
+                                    "one row each, locally or on Dask (docs/batch.md)"))
     if only is None or only in ("prompt", "generate", "eval"):
         from .llm import add_commands
         add_commands(add)              # prompt, generate, eval
@@ -440,6 +445,11 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_batch(args) -> int:
+    from ..batch.command import main as batch_main
+    return batch_main(args)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run one ``aidl`` command; returns the exit status (see the module text)."""
     global _command
@@ -449,7 +459,7 @@ def main(argv: list[str] | None = None) -> int:
     _command = args.cmd
     try:
         run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "batch": cmd_batch}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]
