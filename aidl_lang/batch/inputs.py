@@ -115,10 +115,10 @@ def collect(inputs: list[str], overrides: dict, budget: float, cfg: dict) -> lis
 
 
 def _stem(task: dict, used: dict[str, int]) -> str:
-    """The rendered files' name: the id with `.aidl` dropped and every character but letters,
-    digits, `.`, `-`, `_` turned into `_` (so `examples/key.aidl` gives `examples_key`); a
-    name taken twice gets the id's hash appended."""
-    name = task["id"][:-5] if task["id"].endswith(".aidl") else task["id"]
+    """The rendered files' name: a file's name without `.aidl` (`examples/key.aidl` gives
+    `key`), or a JSONL row's id, every character but letters, digits, `.`, `-`, `_` turned
+    into `_`; a name taken by an earlier task gets the id's hash appended (`key-1f0c...`)."""
+    name = Path(task["path"]).stem if task["path"] is not None else task["id"]
     name = re.sub(r"[^A-Za-z0-9._-]+", "_", name).strip("._")[:120] or "program"
     if name in used:
         name = f"{name}-{sha256(task['id'])[:10]}"
