@@ -110,8 +110,9 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
               out_dir: str | None = None, workers: int | None = None,
               scheduler: str | None = None, budget: float = 1.0,
               overrides: dict | None = None, timeout: float | None = None,
-              min_wall: float = 0.5, progress: bool = False, console=None) -> dict:
-    """Run a batch; returns ``{"rows": [...] (one per input, in input order), "ran": N,
+              min_wall: float = 0.5, progress: bool = False, console=None,
+              on_row=None) -> dict:
+    """Run a batch (``on_row``, if given, is called with each row as it is written); returns ``{"rows": [...] (one per input, in input order), "ran": N,
     "skipped": N, "seconds": wall time, "out": path}``.  Raises :class:`UsageError` (and
     :class:`.inputs.InputError`), the engines' errors, and ``KeyboardInterrupt`` with every
     finished row kept."""
@@ -147,17 +148,19 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
         with bar:
             job = bar.add_task("compiling", total=len(todo))
 
-            def on_row(row: dict) -> None:
+            def record(row: dict) -> None:
                 store.append(row)
                 rows[row["id"]] = row
                 bar.advance(job)
+                if on_row is not None:
+                    on_row(row)
 
             if todo and scheduler:
                 from .cluster import run_dask
-                run_dask(todo, cfg, scheduler, workers, timeout, on_row)
+                run_dask(todo, cfg, scheduler, workers, timeout, record)
             elif todo:
                 from .local import run_local
-                run_local(todo, cfg, workers, timeout, on_row)
+                run_local(todo, cfg, workers, timeout, record)
     finally:
         store.close()
     store.finish([t["id"] for t in tasks])
