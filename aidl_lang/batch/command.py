@@ -247,6 +247,11 @@ def main(args) -> int:
     from .store import MissingArrow
     from .cluster import MissingDask
     try:
+        try:
+            import rich  # noqa: F401
+        except ImportError:
+            raise UsageError("`aidl batch` needs the batch extra (rich is missing): "
+                             "pip install 'aidl-lang[batch]'") from None
         render = _formats(args.render)
         if args.out_dir and not render:
             raise UsageError("--out-dir is for --render's files; give --render svg (or more)")

@@ -94,7 +94,7 @@ def collect(inputs: list[str], overrides: dict, budget: float, cfg: dict) -> lis
             tasks.append(_file_task(os.path.normpath(item)))
         else:
             raise InputError(f"`{item}` does not exist (give .aidl files, folders or "
-                             ".jsonl files of {{\"id\", \"source\"}} rows)")
+                             ".jsonl files of {\"id\", \"source\"} rows)")
     seen: dict[str, dict] = {}
     out = []
     for t in tasks:
