@@ -214,3 +214,27 @@ def test_the_command_line_summary_and_usage_errors(tmp_path):
         r = _aidl(*argv, cwd=tmp_path)
         assert r.returncode == 2, (argv, r.stderr)
         assert message in r.stderr and "Traceback" not in r.stderr, (argv, r.stderr)
+
+
+def test_a_worker_that_dies_gives_a_crashed_row_and_is_replaced():
+    """A worker killed under a program (as the kernel's out-of-memory killer would): the row
+    says `crashed`, and the next program gets a fresh worker."""
+    from aidl_lang.batch.child import Slot
+    slot = Slot()
+    try:
+        task = {"id": "runaway", "path": None, "source": RUNAWAY, "sha256": "", "options": "",
+                "overrides": {}, "budget": 100.0, "stem": "runaway"}
+        slot.send(task, {}, 60)
+        while not slot.ready:                      # the worker started and took the task
+            assert slot.rx.poll(60)
+            assert slot.receive() is None
+        os.kill(slot.proc.pid, signal.SIGKILL)
+        assert slot.rx.poll(10)
+        row = slot.receive()
+        assert row["status"] == "crashed" and "died" in row["failure"] and not row["ok"]
+        assert not slot.alive
+        ok = dict(task, id="plate", source=_plate(1), budget=1.0)
+        row = slot.run(ok, {}, 60)
+        assert row["status"] == "ok" and row["holes"] == 2
+    finally:
+        slot.kill()

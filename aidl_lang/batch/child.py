@@ -46,6 +46,9 @@ class Slot:
         env = dict(os.environ)
         for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
             env.setdefault(var, "1")    # small matrices: one BLAS thread (cli/__init__.py)
+        # the package the batch runs from, also when it is a source checkout not installed
+        here = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        env["PYTHONPATH"] = os.pathsep.join(p for p in (here, env.get("PYTHONPATH")) if p)
         debug = bool(os.environ.get("AIDL_DEBUG"))
         try:
             self.proc = subprocess.Popen(
@@ -116,7 +119,8 @@ class Slot:
             code = self.proc.poll() if self.proc is not None else None
             self.kill()
             return self._finish("crashed", f"the worker process died (exit status {code}): "
-                                "out of memory, or a crash in a native library")
+                                "out of memory, or a crash in a native library "
+                                "(AIDL_DEBUG=1 shows the workers' stderr)")
         if msg == "ready":
             self.ready = True
             if self.task is not None:

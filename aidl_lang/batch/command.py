@@ -131,7 +131,8 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
         _check_writers(list(render))
     workers = workers or default_workers()
     timeout = timeout or 120.0 * budget
-    cfg = {"render": list(render), "out_dir": str(out_dir) if render else None,
+    # absolute: the workers (Dask's too) write there whatever their working folder
+    cfg = {"render": list(render), "out_dir": os.path.abspath(out_dir) if render else None,
            "min_wall": min_wall}
     tasks = collect(inputs, overrides or {}, budget, cfg)
     out.parent.mkdir(parents=True, exist_ok=True)
