@@ -103,7 +103,10 @@ class Slot:
         self.task, self.timeout = task, timeout
         if self.ready:
             self._start_clock()
-        self.tx.send((task, cfg))
+        try:
+            self.tx.send((task, cfg))
+        except OSError:
+            pass               # the worker died before reading: :meth:`receive` says so
 
     def _start_clock(self) -> None:
         self.started = time.monotonic()
