@@ -62,7 +62,7 @@ def add_arguments(p) -> None:
                    help="write each good program in these formats, comma-separated: "
                         + ",".join(FORMAT_NAMES) + " (needs --out-dir)")
     p.add_argument("--out-dir", default=None, metavar="DIR",
-                   help="the folder for --render's files (DIR/ID.svg, ...)")
+                   help="the folder for --render's files (DIR/NAME.svg, ...)")
     p.add_argument("--workers", type=_positive(int), default=None, metavar="N",
                    help="worker processes (default: this machine's cores; with "
                         "--scheduler local, the LocalCluster's workers)")
