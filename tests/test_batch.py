@@ -197,6 +197,9 @@ def test_the_command_line_summary_and_usage_errors(tmp_path):
     rows = {Path(x["id"]).name: x for x in read_jsonl(tmp_path / "out.jsonl")}
     assert rows["latin1.aidl"]["errors"][0]["code"] == "E0004"
     assert rows["bad.aidl"]["status"] == "error" and rows["ok.aidl"]["ok"]
+    again = _aidl("batch", str(tmp_path), "-o", str(tmp_path / "out.jsonl"))
+    assert again.returncode == 0 and "run now          │ 0 in" in again.stdout
+    assert read_jsonl(tmp_path / "out.jsonl") == list(rows.values())
 
     bad_jsonl = tmp_path / "bad.jsonl"
     bad_jsonl.write_text('{"id": "a", "source": "solid s { }"}\n{"id": "b"}\n')
