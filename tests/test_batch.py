@@ -203,6 +203,7 @@ def test_the_command_line_summary_and_usage_errors(tmp_path):
 
     bad_jsonl = tmp_path / "bad.jsonl"
     bad_jsonl.write_text('{"id": "a", "source": "solid s { }"}\n{"id": "b"}\n')
+    bad_jsonl.with_suffix(".parquet").write_text("not parquet")
     cases = [
         (["batch", "nowhere/", "-o", "o.jsonl"], "`nowhere/` does not exist"),
         (["batch", str(good), "-o", "o.csv"], "must end in .parquet or .jsonl"),
@@ -212,6 +213,9 @@ def test_the_command_line_summary_and_usage_errors(tmp_path):
         (["batch", str(bad_jsonl), "-o", "o.jsonl"], "bad.jsonl:2: `source` must be a string"),
         (["batch", str(good), "-o", "o.jsonl", "--set", "width"], "NAME=VALUE"),
         (["batch", str(good), "-o", "o.jsonl", "--workers", "0"], "positive"),
+        (["batch", str(bad_jsonl), "-o", str(bad_jsonl)], "would write over the input"),
+        (["batch", str(good), "-o", str(bad_jsonl.with_suffix(".parquet"))],
+         "not a batch result"),
     ]
     for argv, message in cases:
         r = _aidl(*argv, cwd=tmp_path)

@@ -134,10 +134,18 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
     # absolute: the workers (Dask's too) write there whatever their working folder
     cfg = {"render": list(render), "out_dir": os.path.abspath(out_dir) if render else None,
            "min_wall": min_wall}
+    store = Store(out)
+    for item in inputs:
+        for mine in (out, store.journal):
+            if mine.exists() and Path(item).exists() and os.path.samefile(mine, item):
+                raise UsageError(f"-o `{out}` would write over the input `{item}`")
     tasks = collect(inputs, overrides or {}, budget, cfg)
     out.parent.mkdir(parents=True, exist_ok=True)
-    store = Store(out)
-    done = store.load()
+    try:
+        done = store.load()
+    except Exception as e:             # pyarrow's ArrowInvalid: not a Parquet file
+        raise UsageError(f"cannot resume from `{out}`: it is not a batch result "
+                         f"({type(e).__name__}: {e}); give another -o or delete it") from None
     todo = [t for t in tasks
             if not (t["id"] in done and done[t["id"]].get("sha256") == t["sha256"]
                     and done[t["id"]].get("options") == t["options"])]
