@@ -41,8 +41,9 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
     tasks = list(tasks)
     cluster = None
     if address == "local":
+        import logging
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=None, silence_logs=logging.ERROR)
         client = Client(cluster)
     else:
         try:
