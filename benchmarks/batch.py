@@ -12,7 +12,8 @@ and a slot, sizes and counts varied) up to ``--files``.  Prints programs per sec
 - ``aidl batch --scheduler local``: a 2-worker ``dask.distributed.LocalCluster`` (its start
   and stop included), unless ``--no-dask``;
 
-each with its rate over the whole wall time (start-up included) and its steady rate (from the
+each with its CPU time per program (load-independent on a shared machine, where wall-time
+ratios swing with the other jobs), its rate over the whole wall time (start-up included) and its steady rate (from the
 first row of each worker to the last: what a long batch runs at), their speed-ups over the
 shell loop, and the time 10,000 such programs would take (start-up + 10,000 at the steady
 rate).
@@ -23,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import pathlib
 import subprocess
 import sys
@@ -64,27 +66,37 @@ def corpus(folder: pathlib.Path, n: int) -> list[str]:
     return files
 
 
-def shell_loop(files: list[str]) -> float:
+def cpu() -> float:
+    """CPU seconds (user + system) of this process and of its children that ended."""
+    return sum(getattr(resource.getrusage(who), f) for who in
+               (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN) for f in ("ru_utime", "ru_stime"))
+
+
+def shell_loop(files: list[str]) -> tuple[float, float, float]:
     aidl = pathlib.Path(sys.executable).with_name("aidl")
     script = 'for f in "$@"; do "$AIDL" check "$f" >/dev/null 2>&1; done'
-    t0 = time.perf_counter()
+    c0, t0 = cpu(), time.perf_counter()
     subprocess.run(["bash", "-c", script, "loop", *files], check=False,
                    env=dict(os.environ, AIDL=str(aidl)))
-    return time.perf_counter() - t0
+    took = time.perf_counter() - t0
+    return took, len(files) / took, cpu() - c0
 
 
-def batch(files: list[str], out: pathlib.Path, workers: int, **kw) -> tuple[float, float]:
-    """(wall time, steady rate): the rate between the first row of each worker and the last
-    row, which leaves out the start-up (worker processes, a cluster)."""
+def batch(files: list[str], out: pathlib.Path, workers: int,
+          **kw) -> tuple[float, float, float | None]:
+    """(wall time, steady rate, CPU seconds): the steady rate is the one between the first row
+    of each worker and the last row, which leaves out the start-up (worker processes, a
+    cluster); the CPU time counts this process and its workers (not a Dask cluster's, whose
+    processes are not this one's children: None)."""
     stamps = []
-    t0 = time.perf_counter()
+    c0, t0 = cpu(), time.perf_counter()
     result = run_batch(files, out, workers=workers,
                        on_row=lambda row: stamps.append(time.perf_counter()), **kw)
     took = time.perf_counter() - t0
     bad = [r["id"] for r in result["rows"] if not r["ok"]]
     assert not bad, f"programs that failed: {bad[:5]}"
     steady = (len(stamps) - workers) / (stamps[-1] - stamps[workers - 1])
-    return took, steady
+    return took, steady, None if "scheduler" in kw else cpu() - c0
 
 
 def main() -> None:
@@ -96,8 +108,7 @@ def main() -> None:
         tmp = pathlib.Path(tmp)
         files = corpus(tmp, args.files)
         n = len(files)
-        loop = shell_loop(files)
-        runs = [("shell loop of `aidl check`", loop, n / loop)]
+        runs = [("shell loop of `aidl check`", *shell_loop(files))]
         runs.append(("aidl batch, 1 local worker", *batch(files, tmp / "w1.jsonl", 1)))
         runs.append(("aidl batch, 2 local workers", *batch(files, tmp / "w2.jsonl", 2)))
         if not args.no_dask:
@@ -106,13 +117,16 @@ def main() -> None:
     print(f"{n} programs ({min(12, n)} examples, {max(0, n - 12)} generated plates); "
           f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     print(f"{'':36} {'wall s':>7} {'prog/s':>7} {'x loop':>7} {'steady/s':>9} {'x loop':>7} "
-          f"{'10,000 programs':>16}")
-    for name, took, steady in runs:
+          f"{'CPU ms/prog':>12} {'x loop':>7} {'10,000 programs':>16}")
+    loop_rate, loop_cpu = runs[0][2], runs[0][3]
+    for name, took, steady, used in runs:
         rate = n / took
         startup = max(0.0, took - n / steady)
         per10k = startup + 10_000 / steady
-        print(f"{name:36} {took:7.2f} {rate:7.1f} {rate / runs[0][2]:6.1f}x {steady:9.1f} "
-              f"{steady / runs[0][2]:6.1f}x {per10k / 60:12.1f} min")
+        cpu_txt = (f"{used / n * 1000:12.1f} {loop_cpu / used:6.1f}x" if used
+                   else f"{'-':>12} {'-':>7}")
+        print(f"{name:36} {took:7.2f} {rate:7.1f} {rate / loop_rate:6.1f}x {steady:9.1f} "
+              f"{steady / loop_rate:6.1f}x {cpu_txt} {per10k / 60:12.1f} min")
 
 
 if __name__ == "__main__":
