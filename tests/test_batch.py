@@ -141,9 +141,16 @@ def test_an_interrupted_batch_resumes_without_redoing_rows(corpus, tmp_path):
     inputs = [str(ROOT / "examples"), str(folder / "gen")]
     out = tmp_path / "rows.parquet"
     journal = tmp_path / "rows.parquet.journal.jsonl"
-    proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "batch", *inputs,
-                             "-o", str(out), "--workers", "1"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # the runaway last, with a long time-out: however slow the machine, the batch is still
+    # running when it is interrupted
+    last = tmp_path / "last.jsonl"
+    last.write_text(json.dumps({"id": "runaway", "source": RUNAWAY, "budget": 100}) + "\n")
+    proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "batch", *inputs, str(last),
+                             "-o", str(out), "--workers", "1", "--timeout", "120"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            # Ctrl-C reaches it even when these tests run in the background
+                            # (`nohup pytest &`), whose children start with SIGINT ignored
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     t0 = time.monotonic()
     while time.monotonic() - t0 < 60:
         if journal.exists() and len(read_jsonl(journal)) >= 10:
@@ -151,7 +158,7 @@ def test_an_interrupted_batch_resumes_without_redoing_rows(corpus, tmp_path):
         time.sleep(0.02)
     proc.send_signal(signal.SIGINT)                    # Ctrl-C
     stdout, stderr = proc.communicate(timeout=30)
-    assert proc.returncode == 130, stderr
+    assert proc.returncode == 130, (stdout, stderr)
     assert "interrupted" in stderr and "Traceback" not in stderr
     assert not out.exists()
     before = {r["id"]: r for r in read_jsonl(journal)}
