@@ -23,6 +23,10 @@ FIELDS = ("id", "path", "sha256", "options", "status", "ok", "failure", "errors"
 
 STATUSES = ("ok", "error", "timeout", "crashed")
 
+# the formats a cutter reads (and their preview): written with the program's kerf, as
+# `aidl render` writes them; STL, 3MF and STEP keep the designed size
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
 
 def sha256(data: str | bytes) -> str:
     if isinstance(data, str):
@@ -110,7 +114,14 @@ def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
     """Write each format as ``OUT_DIR/STEM.EXT`` (a temporary file beside it, then renamed:
     a reader never sees half a file); returns the paths written."""
     from ..output import encode
-    items = [(out_dir / f"{stem}{suffix}", encode(output, suffix)) for suffix in suffixes]
+    cut = output                  # what a cutter reads: the program's `kerf` offsets its cuts,
+    kerf = output.drawing.kerf if output.drawing is not None else None     # as `aidl render`
+    if kerf and any(s in CUT_FORMATS for s in suffixes):
+        from ..output.layout import compensate
+        cut = compensate(output, kerf)
+    items = [(out_dir / f"{stem}{suffix}", encode(cut if suffix in CUT_FORMATS else output,
+                                                  suffix))
+             for suffix in suffixes]
     out_dir.mkdir(parents=True, exist_ok=True)
     written = []
     for path, data in items:
