@@ -252,3 +252,24 @@ def test_a_worker_that_dies_gives_a_crashed_row_and_is_replaced():
         assert row["status"] == "ok" and row["holes"] == 2
     finally:
         slot.kill()
+
+
+def test_rendered_files_are_what_aidl_render_writes(tmp_path):
+    """--render writes the bytes `aidl render` writes, the program's kerf applied to the cut
+    formats."""
+    prog = tmp_path / "kerfed.aidl"
+    prog.write_text("kerf 0.2 mm\n" + _plate(2))
+    res = run_batch([str(prog)], tmp_path / "rows.jsonl", render=[".svg", ".dxf"],
+                    out_dir=tmp_path / "out", workers=1)
+    row = res["rows"][0]
+    assert row["ok"] and row["outputs"] == [str(tmp_path / "out" / "kerfed.svg"),
+                                            str(tmp_path / "out" / "kerfed.dxf")]
+    r = _aidl("render", str(prog), "-o", str(tmp_path / "ref.svg"), "-o",
+              str(tmp_path / "ref.dxf"))
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "out" / "kerfed.svg").read_bytes() == (tmp_path / "ref.svg").read_bytes()
+    # a DXF holds fresh GUIDs and the time it was written: the same lines less those
+    ours, ref = ((p.read_text().splitlines()) for p in (tmp_path / "out" / "kerfed.dxf",
+                                                        tmp_path / "ref.dxf"))
+    assert len(ours) == len(ref)
+    assert sum(a != b for a, b in zip(ours, ref)) <= 4
