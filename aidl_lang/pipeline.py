@@ -30,6 +30,7 @@ class Compiled:
     model: Model | None = None
     solve: SolveResult | None = None
     drawing: Drawing | None = None      # the booleans' result, when the solve converged
+    solve_seconds: float = 0.0          # wall time of the solve alone (``aidl batch`` rows)
 
     @property
     def ok(self) -> bool:
@@ -152,11 +153,14 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         # overflow in a residual is reported as a failed solve, not as a numpy warning
         warnings.simplefilter("ignore", RuntimeWarning)
+        t0 = time.perf_counter()
         result = solve(model, deadline=deadline)
+        took = time.perf_counter() - t0
     if not result.converged:
         report_failure(sink, result)
-        return Compiled(sink, model, result)
-    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks))
+        return Compiled(sink, model, result, solve_seconds=took)
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks),
+                    solve_seconds=took)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,

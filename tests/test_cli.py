@@ -308,6 +308,8 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
                ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
                ["serve", "a.aidl", "--port", "0"], ["mcp", "--root", "parts", "--budget", "2"],
                ["prompt", "--words"],
+               ["batch", "d", "x.jsonl", "-o", "o.parquet", "--render", "svg", "--out-dir", "r",
+                "--workers", "2", "--scheduler", "local", "--set", "w=3", "--timeout", "5"],
                ["generate", "a wrench", "-o", "w.aidl", "--rounds", "2"], ["eval", "p.txt"]]
     assert {s[0] for s in samples} == set(SUBCOMMANDS)
     for argv in samples:

@@ -65,8 +65,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "prompt",
-               "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "batch",
+               "prompt", "generate", "eval")
 
 
 class _Unused:
@@ -176,6 +176,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     m.add_argument("--root", default=".", metavar="DIR",
                    help="the folder the server may read and write (default: the current one)")
     _budget_arg(m)
+    if only is None or only == "batch":
+        from ..batch.command import add_arguments as add_batch
+        add_batch(add("batch", help="compile many programs (files, folders, JSONL) into "
+                                    "one row each, locally or on Dask (docs/batch.md)"))
     if only is None or only in ("prompt", "generate", "eval"):
         from .llm import add_commands
         add_commands(add)              # prompt, generate, eval
@@ -570,6 +574,11 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_batch(args) -> int:
+    from ..batch.command import main as batch_main
+    return batch_main(args)
+
+
 def cmd_mcp(args) -> int:
     if not os.path.isdir(args.root):
         return _usage(f"--root `{args.root}` is not a folder")
@@ -594,7 +603,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp}.get(args.cmd)
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp,
+               "batch": cmd_batch}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]

@@ -1,0 +1,73 @@
+"""The Dask engine: the same rows on a ``dask.distributed`` cluster (docs/batch.md).
+
+``address`` is a scheduler (``tcp://host:8786``) or ``local``: a :class:`LocalCluster` of
+``workers`` single-threaded worker processes on this machine, started and stopped here.
+Every task runs :func:`run_task` on a Dask worker, which hands it to a warm worker process of
+its own (:class:`.child.Slot`, one per worker thread) with the same hard time-out as the local
+pool: a runaway program kills that process, not the Dask worker, and the row says
+``timeout``.  Rows come back as they finish (:func:`distributed.as_completed`).
+"""
+from __future__ import annotations
+
+import threading
+from typing import Callable, Iterable
+
+from .row import blank_row
+
+_slots = threading.local()
+
+
+def run_task(task: dict, cfg: dict, timeout: float) -> dict:
+    """On a Dask worker: the row of one task, compiled in this thread's warm worker
+    process."""
+    from .child import Slot
+    slot = getattr(_slots, "slot", None)
+    if slot is None:
+        slot = _slots.slot = Slot()
+    return slot.run(task, cfg, timeout)
+
+
+class MissingDask(RuntimeError):
+    pass
+
+
+def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeout: float,
+             on_row: Callable[[dict], None]) -> None:
+    try:
+        from dask.distributed import Client, LocalCluster, as_completed
+    except ImportError as e:
+        raise MissingDask(f"--scheduler needs Dask ({e.name} is missing): "
+                          "pip install 'aidl-lang[dask]'") from None
+    tasks = list(tasks)
+    cluster = None
+    if address == "local":
+        import logging
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                               dashboard_address=None, silence_logs=logging.ERROR)
+        client = Client(cluster)
+    else:
+        try:
+            client = Client(address, timeout="20s")
+        except OSError as e:
+            raise OSError(f"cannot reach the Dask scheduler at {address}: {e}") from None
+    try:
+        futures = [client.submit(run_task, t, cfg, timeout, pure=False,
+                                 key=f"aidl-{i}-{t['sha256'][:12]}")
+                   for i, t in enumerate(tasks)]
+        task_of = {f.key: t for f, t in zip(futures, tasks)}
+        try:
+            for fut in as_completed(futures):
+                try:
+                    row = fut.result()
+                except Exception as e:     # a Dask worker lost more than once (KilledWorker)
+                    row = blank_row(task_of[fut.key], "crashed",
+                                    f"dask: {type(e).__name__}: {e}")
+                on_row(row)
+                fut.release()
+        except BaseException:
+            client.cancel(futures)
+            raise
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()

@@ -1,0 +1,141 @@
+"""One program in, one result row out: compile, measure, render (docs/batch.md, "Rows").
+
+:func:`run_one` runs in a worker process (:mod:`.child`) and never raises for a bad program:
+errors are the row's data.  A row is a flat ``dict`` of JSON values, the same whichever engine
+ran it (local pool or Dask), so the two can be compared field by field less :data:`TIMINGS`.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+import time
+from pathlib import Path
+
+# the fields that differ from one run to the next (wall times)
+TIMINGS = ("compile_s", "solve_s", "render_s")
+
+# every field of a row, in file order (the Parquet schema in :mod:`.store` follows it)
+FIELDS = ("id", "path", "sha256", "options", "status", "ok", "failure", "errors", "warnings",
+          "dof", "parts", "holes", "bbox", "area", "compile_s", "solve_s", "render_s",
+          "outputs")
+
+STATUSES = ("ok", "error", "timeout", "crashed")
+
+# the formats a cutter reads (and their preview): written with the program's kerf, as
+# `aidl render` writes them; STL, 3MF and STEP keep the designed size
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
+
+def sha256(data: str | bytes) -> str:
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    return hashlib.sha256(data).hexdigest()
+
+
+def options_key(overrides: dict, budget: float, cfg: dict) -> str:
+    """What besides the source decides a row (a resumed batch redoes a row whose source *or*
+    these changed): the ``--set`` values, the budget factor, the renders and their folder, the
+    minimum wall."""
+    return json.dumps({"set": overrides, "budget": budget, "render": cfg.get("render", []),
+                       "out_dir": cfg.get("out_dir"), "min_wall": cfg.get("min_wall", 0.5)},
+                      sort_keys=True, separators=(",", ":"))
+
+
+def blank_row(task: dict, status: str, failure: str | None = None, **extra) -> dict:
+    """A row with every field present (``None`` where nothing was measured)."""
+    row = {k: None for k in FIELDS}
+    row.update(id=task["id"], path=task.get("path"), sha256=task["sha256"],
+               options=task["options"], status=status, ok=status == "ok", failure=failure,
+               errors=[], warnings=[], outputs=[])
+    row.update(extra)
+    return row
+
+
+def _diag(d) -> dict:
+    s = d.span
+    return {"code": d.code, "line": s.line if s is not None else None,
+            "column": s.col if s is not None else None, "message": d.message}
+
+
+def run_one(task: dict, cfg: dict) -> dict:
+    """The row of one task: ``task`` has ``id``, ``path`` (or None), ``source``, ``sha256``,
+    ``options``, ``overrides``, ``budget`` (a factor) and ``stem`` (the rendered files' name);
+    ``cfg`` has ``render`` (suffixes such as ``.svg``), ``out_dir``, ``min_wall``."""
+    from ..limits import DEFAULT_BUDGET
+    from ..pipeline import compile_source
+    if task.get("read_error"):               # the parent could not read the file: E0004
+        return blank_row(task, "error", errors=[{"code": "E0004", "line": None, "column": None,
+                                                  "message": task["read_error"]}])
+    t0 = time.perf_counter()
+    res = compile_source(task["source"], task.get("path") or task["id"], task["overrides"],
+                         min_wall=cfg.get("min_wall", 0.5),
+                         budget=DEFAULT_BUDGET.scaled(task["budget"]))
+    row = blank_row(task, "ok" if res.ok else "error",
+                    errors=[_diag(d) for d in res.sink.items if d.is_error],
+                    warnings=[_diag(d) for d in res.sink.items if d.severity == "warning"],
+                    solve_s=res.solve_seconds if res.solve is not None else None)
+    if res.ok and res.solve is not None:
+        from ..solver.diagnose import degrees_of_freedom
+        dofs = degrees_of_freedom(res.solve.solver, floating=False)
+        row["dof"] = (None if any(d.rank < 0 for d in dofs)
+                      else sum(max(0, d.dof) for d in dofs))
+    output = None
+    if res.ok and res.drawing is not None:
+        from ..output import build
+        output = build(res.drawing, res.model.root.name)
+        row["parts"] = len(output.parts)
+        row["holes"] = sum(lp.is_hole for p in output.parts for lp in p.loops)
+        row["area"] = round(output.area, 9)
+        if output.parts or output.engrave:
+            row["bbox"] = [round(v, 9) for v in output.bounds()]
+    row["compile_s"] = time.perf_counter() - t0
+    if output is not None and cfg.get("render"):
+        t1 = time.perf_counter()
+        try:
+            row["outputs"] = _render(output, cfg["render"], Path(cfg["out_dir"]), task["stem"])
+        except Exception as e:                  # an impossible PNG size, a full disk
+            row.update(status="error", ok=False, failure=f"render: {e}")
+        row["render_s"] = time.perf_counter() - t1
+    return row
+
+
+def _umask_mode() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+_MODE = _umask_mode()        # new files get what the umask allows, as `aidl render` does
+
+
+def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
+    """Write each format as ``OUT_DIR/STEM.EXT`` (a temporary file beside it, then renamed:
+    a reader never sees half a file); returns the paths written."""
+    from ..output import encode
+    cut = output                  # what a cutter reads: the program's `kerf` offsets its cuts,
+    kerf = output.drawing.kerf if output.drawing is not None else None     # as `aidl render`
+    if kerf and any(s in CUT_FORMATS for s in suffixes):
+        from ..output.layout import compensate
+        cut = compensate(output, kerf)
+    items = [(out_dir / f"{stem}{suffix}", encode(cut if suffix in CUT_FORMATS else output,
+                                                  suffix))
+             for suffix in suffixes]
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = []
+    for path, data in items:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=str(out_dir))
+        try:
+            with os.fdopen(fd, "wb") as f:
+                f.write(data)
+            os.chmod(tmp, _MODE)
+            os.replace(tmp, path)
+        except BaseException:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+            raise
+        written.append(str(path))
+    return written

@@ -1,0 +1,156 @@
+"""Where rows go: ``OUT.jsonl`` or ``OUT.parquet``, written so that a crash or a Ctrl-C loses
+no finished row (docs/batch.md, "Output and resuming").
+
+Every row is appended to a JSONL *journal* and flushed as soon as it finishes.  For ``.jsonl``
+the journal is ``OUT`` itself.  For ``.parquet`` it is ``OUT.journal.jsonl`` beside it: a
+Parquet file is only readable once its footer is written, so rows cannot be appended to it one
+by one, and a batch killed half-way through a Parquet writer would leave nothing readable; row
+groups of one row each would also make a poor file.  At the end of a batch the Parquet file is
+written in one go (to a temporary file, then renamed) from the earlier ``OUT.parquet``, if any,
+and the journal, and the journal is removed.  An interrupted batch keeps its journal, and the
+next run reads both.
+
+At the end, ``OUT`` holds one row per id (the latest), the ids of this batch in input order
+first; an interrupted ``.jsonl`` may hold an older row of an id before its newer one (readers
+should take the last).
+"""
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+
+from .row import FIELDS
+
+
+class MissingArrow(RuntimeError):
+    pass
+
+
+def _schema():
+    import pyarrow as pa
+    diag = pa.list_(pa.struct([("code", pa.string()), ("line", pa.int64()),
+                               ("column", pa.int64()), ("message", pa.string())]))
+    types = {"id": pa.string(), "path": pa.string(), "sha256": pa.string(),
+             "options": pa.string(), "status": pa.string(), "ok": pa.bool_(),
+             "failure": pa.string(), "errors": diag, "warnings": diag, "dof": pa.int64(),
+             "parts": pa.int64(), "holes": pa.int64(), "bbox": pa.list_(pa.float64()),
+             "area": pa.float64(), "compile_s": pa.float64(), "solve_s": pa.float64(),
+             "render_s": pa.float64(), "outputs": pa.list_(pa.string())}
+    return pa.schema([(name, types[name]) for name in FIELDS])
+
+
+def need_arrow() -> None:
+    try:
+        import pyarrow  # noqa: F401
+        import pyarrow.parquet  # noqa: F401
+    except ImportError as e:
+        raise MissingArrow(f"Parquet output needs pyarrow ({e.name} is missing): "
+                           "pip install 'aidl-lang[batch]', or write OUT.jsonl") from None
+
+
+def read_jsonl(path: Path) -> list[dict]:
+    """The rows of a JSONL file; a line that is not a row (one cut short by a crash) is
+    skipped."""
+    rows = []
+    try:
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                try:
+                    row = json.loads(line)
+                except ValueError:
+                    continue
+                if isinstance(row, dict) and isinstance(row.get("id"), str):
+                    rows.append(row)
+    except FileNotFoundError:
+        pass
+    return rows
+
+
+def read_parquet(path: Path) -> list[dict]:
+    if not path.exists():
+        return []
+    import pyarrow.parquet as pq
+    return pq.read_table(path).to_pylist()
+
+
+def read_rows(path: Path) -> list[dict]:
+    """The rows of a batch result, ``.jsonl`` or ``.parquet`` (with its journal, if a batch
+    was interrupted), the latest row per id."""
+    store = Store(path)
+    return list(store.load().values())
+
+
+class Store:
+    def __init__(self, out: Path) -> None:
+        self.out = Path(out)
+        self.parquet = self.out.suffix.lower() == ".parquet"
+        self.journal = (self.out.with_name(self.out.name + ".journal.jsonl") if self.parquet
+                        else self.out)
+        self._f = None
+
+    def load(self) -> dict[str, dict]:
+        """id -> the latest finished row, from ``OUT`` and the journal."""
+        rows: dict[str, dict] = {}
+        if self.parquet:
+            for row in read_parquet(self.out):
+                rows[row["id"]] = row
+        for row in read_jsonl(self.journal):
+            rows.pop(row["id"], None)            # keep the order of the latest
+            rows[row["id"]] = row
+        return rows
+
+    def open(self) -> None:
+        self.journal.parent.mkdir(parents=True, exist_ok=True)
+        self._f = open(self.journal, "a+", encoding="utf-8")
+        if self._f.tell() > 0:                   # a line cut short by a crash: end it
+            self._f.seek(self._f.tell() - 1)
+            last = self._f.read(1)
+            self._f.seek(0, os.SEEK_END)
+            if last != "\n":
+                self._f.write("\n")
+
+    def append(self, row: dict) -> None:
+        self._f.write(json.dumps(row, separators=(",", ":")) + "\n")
+        self._f.flush()
+
+    def close(self) -> None:
+        if self._f is not None:
+            self._f.close()
+            self._f = None
+
+    def finish(self, order: list[str]) -> None:
+        """Write the final ``OUT``: one row per id, ``order`` first (see the module text)."""
+        self.close()
+        rows = self.load()
+        ordered = [rows.pop(i) for i in order if i in rows] + list(rows.values())
+        fd, tmp = tempfile.mkstemp(prefix=f".{self.out.name}.", suffix=".tmp",
+                                   dir=str(self.out.parent))
+        os.close(fd)
+        try:
+            if self.parquet:
+                import pyarrow as pa
+                import pyarrow.parquet as pq
+                table = pa.Table.from_pylist([{k: r.get(k) for k in FIELDS} for r in ordered],
+                                             schema=_schema())
+                pq.write_table(table, tmp)
+            else:
+                with open(tmp, "w", encoding="utf-8") as f:
+                    for r in ordered:
+                        f.write(json.dumps(r, separators=(",", ":")) + "\n")
+            mask = os.umask(0)
+            os.umask(mask)
+            os.chmod(tmp, 0o666 & ~mask)
+            os.replace(tmp, self.out)
+        except BaseException:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+            raise
+        if self.parquet:
+            try:
+                os.unlink(self.journal)
+            except FileNotFoundError:
+                pass
