@@ -322,3 +322,69 @@ def test_preview_reports_a_topology_change_of_a_slider(tmp_path):
     assert [d.message for d in c.sink.items if d.code == "W0510"] == [w["message"]]
     s.set_params({"bolts": "4"})
     assert s.update_checks() is None
+
+
+# ------------------------------------------------------------------ robustness (issue 26)
+def _recv(ws, seconds: float = 10.0) -> dict:
+    """The next message of a test websocket, or a failed test after ``seconds``."""
+    import concurrent.futures
+    pool = concurrent.futures.ThreadPoolExecutor(1)
+    try:
+        return json.loads(pool.submit(ws.receive_text).result(timeout=seconds))
+    finally:
+        pool.shutdown(wait=False)
+
+
+def test_live_reload_goes_on_after_an_internal_error(tmp_path, monkeypatch, capsys):
+    """A save whose compile raises (a bug in a stage, here planted in the booleans) shows
+    E0900 beside the last good picture and is logged; the watcher keeps going, so the next
+    save (fixed) gets a new picture."""
+    import time
+    from starlette.testclient import TestClient
+    from aidl_lang.serve import session as S
+    from aidl_lang.serve.app import create_app
+    real = S.after_solve
+
+    def planted(sink, model, *a, **kw):
+        if "boom" in {s.name for s in model.structures}:
+            raise ZeroDivisionError("planted")
+        return real(sink, model, *a, **kw)
+    monkeypatch.setattr(S, "after_solve", planted)
+    f = tmp_path / "p.aidl"
+    f.write_text("solid p { c = Circle(center=(0, 0), radius=5) }\n")
+    host = {"host": f"127.0.0.1:{PORT}"}
+    t0 = time.monotonic()
+    with TestClient(create_app(f, PORT, watch=True), base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
+            good = _recv(ws)
+            assert good["ok"] and good["svg"]
+            time.sleep(0.3)                            # the watcher is up
+            f.write_text("solid boom { c = Circle(center=(0, 0), radius=5) }\n")
+            v = _recv(ws)
+            while v["ok"]:                             # (a late event of the first write)
+                v = _recv(ws)
+            assert v["diagnostics"][0]["code"] == "E0900" and v["svg"] == good["svg"]
+            assert "ZeroDivisionError: planted" in v["diagnostics"][0]["message"]
+            f.write_text("solid q { c = Circle(center=(0, 0), radius=7) }\n")
+            v = _recv(ws)
+            while not v["ok"]:
+                v = _recv(ws)
+            assert v["svg"] != good["svg"] and not v["diagnostics"]
+    assert time.monotonic() - t0 < 30
+    assert "internal error while compiling the file" in capsys.readouterr().err
+
+
+def test_internal_errors_in_sliders_and_downloads_are_diagnostics(tmp_path, monkeypatch):
+    from aidl_lang.serve import session as S
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    s = S.Session(f)
+    good = s.load()
+    assert good["ok"]
+    monkeypatch.setattr(S, "after_solve", lambda *a, **k: 1 / 0)
+    v = s.set_params({"w": "50mm"})
+    assert not v["ok"] and v["svg"] == good["svg"] and v["diagnostics"][0]["code"] == "E0900"
+    drawing, diags = s.drawing({"w": "50mm"})
+    assert drawing is None and diags[0]["code"] == "E0900"
+    monkeypatch.undo()
+    assert s.set_params({"w": "50mm"})["ok"]

@@ -216,7 +216,13 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
         async for changes in awatch(target.parent, debounce=200, step=20, recursive=True,
                                     watch_filter=lambda c, p: p.endswith(".aidl")
                                     and c != Change.deleted or Path(p) == target):
-            await hub.reload()
+            try:
+                await hub.reload()
+            except Exception:       # noqa: BLE001 - logged; the next save reloads again
+                import sys
+                import traceback
+                print(f"aidl serve: reload failed:\n{traceback.format_exc()}", file=sys.stderr,
+                      flush=True)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):
