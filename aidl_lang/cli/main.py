@@ -316,6 +316,26 @@ def _outputs(args) -> list[Path] | int:
     return outs
 
 
+def _encode_all(output, outs: list[Path], opt, res, started: float, budget, as_json: bool):
+    """Each output encoded in turn, within the compile's wall-time budget (checked between
+    writers; what a writer gets is bounded by the budget's outline vertices): the
+    ``[(path, bytes)]`` to write, or None after an ``E0304`` naming the writer."""
+    import time
+    from ..limits import OutOfBudget
+    from ..output import encode
+    from ..pipeline import report_out_of_budget
+    items = []
+    for o in outs:
+        if time.monotonic() > started + budget.seconds:
+            report_out_of_budget(res.sink, OutOfBudget(
+                f"more than {budget.seconds:g} s of wall time", f"the writer of `{o}` (nothing "
+                "was written)", res.model.root))
+            _emit(res.sink, as_json, False)
+            return None
+        items.append((o, encode(output, o.suffix, opt)))
+    return items
+
+
 def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
     """Write every output or none: each to a temporary file beside its target, then renamed
     over it.  A symlink is written through (its target is replaced, the link kept).  A new file
@@ -378,6 +398,8 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
+    import time
+    started = time.monotonic()
     res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
                          budget=_budget(args))
     if not res.ok:
@@ -387,7 +409,9 @@ def cmd_render(args) -> int:
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin)
     try:
-        items = [(o, encode(output, o.suffix, opt)) for o in outs]
+        items = _encode_all(output, outs, opt, res, started, _budget(args), args.json)
+        if items is None:
+            return 1
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2

@@ -30,6 +30,7 @@ from .. import ast as A
 from ..diagnostics import Diagnostic, DiagnosticSink
 from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
+from ..limits import Deadline
 from ..output import to_svg
 from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
@@ -267,7 +268,8 @@ class Session:
             return res
         res.solver, res.warm, res.model = solver, warm, model
         t2 = time.perf_counter()
-        d = after_solve(sink, model, shape_checks=shape_checks)   # as `aidl check` does
+        d = after_solve(sink, model, shape_checks=shape_checks,   # as `aidl check` does
+                        deadline=Deadline(interp.deadline, interp.budget))
         t["render_ms"] = _ms(t2)
         if d is None:
             res.timings = t
