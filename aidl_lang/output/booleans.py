@@ -33,6 +33,7 @@ from .exact import Provenance
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
+END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 
 
 @dataclass
@@ -128,15 +129,15 @@ class Renderer:
         5 000 small circles).  The deadline is checked between groups."""
         if not faces:
             return mf.CrossSection()
-        while len(faces) > 1:
+        while len(faces) > UNION_GROUP:
             nxt = []
             for i in range(0, len(faces), UNION_GROUP):
                 self.tick(s)
-                grp = faces[i:i + UNION_GROUP]
-                nxt.append(grp[0] if len(grp) == 1 else
-                           mf.CrossSection.batch_boolean(grp, mf.OpType.Add))
+                nxt.append(mf.CrossSection.batch_boolean(faces[i:i + UNION_GROUP],
+                                                         mf.OpType.Add))
             faces = nxt
-        return faces[0]
+        self.tick(s)
+        return mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
 
     def P(self, p) -> np.ndarray:
         ox, oy = 0.0, 0.0
@@ -266,9 +267,29 @@ class Renderer:
     def loops(self, curves: list[Geometry]):
         """Chain open curves whose endpoints meet into closed exact loops: ``([(Loop, the
         curves in order)], the curves left open)``.  Where a line meets an arc, the line's end
-        is the arc's exact end (the solve leaves them equal to its tolerance)."""
+        is the arc's exact end (the solve leaves them equal to its tolerance).  The next curve
+        of a chain is the first unused one (in declaration order) with an end within
+        :func:`_tol` of the chain's end, found through a grid of the curves' ends (cells of
+        :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
+        curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
         segs = [self.segment(g) for g in curves]
         ends = [(self._pt(g.points["start"]), self._pt(g.points["end"])) for g in curves]
+        grid: dict = {}
+        for j, (a, b) in enumerate(ends):
+            for p in (a, b):
+                key = (math.floor(p[0] / END_CELL), math.floor(p[1] / END_CELL))
+                lst = grid.setdefault(key, [])
+                if not lst or lst[-1] != j:
+                    lst.append(j)
+
+        def near(p):
+            cx, cy = math.floor(p[0] / END_CELL), math.floor(p[1] / END_CELL)
+            found = []
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    found += grid.get((cx + dx, cy + dy), ())
+            return sorted(set(found))
+
         used = [False] * len(curves)
         loops, rest = [], []
         for i in range(len(curves)):
@@ -282,7 +303,7 @@ class Renderer:
             grown = True
             while grown and _dist(end, start) > _tol(start):
                 grown = False
-                for j in range(len(curves)):
+                for j in near(end):
                     if used[j]:
                         continue
                     if _dist(ends[j][0], end) <= _tol(end):
