@@ -207,3 +207,42 @@ def test_chaining_many_lines_into_a_loop_is_linear():
     assert time.perf_counter() - t0 < 3
     assert len(loops) == 1 and not rest and len(loops[0][1]) == n
     assert abs(loops[0][0].area) == pytest.approx(0.5 * n * 100 ** 2 * math.sin(2 * math.pi / n))
+
+
+# ------------------------------------------------------------------ imports
+def _diamond(folder, levels: int = 16):
+    """Each file of a level imports the two files of the next; the last two import one
+    bottom file (2 * levels + 1 files, 2^levels paths from the top to the bottom)."""
+    folder.joinpath("bottom.aidl").write_text(
+        "def base() -> solid {\n    c = Circle(center=(0, 0), radius=1)\n}\n")
+    for k in range(levels - 1, -1, -1):
+        for s in "ab":
+            imps = ('import "bottom.aidl"\n' if k == levels - 1 else
+                    f'import "d{k + 1}a.aidl"\nimport "d{k + 1}b.aidl"\n')
+            folder.joinpath(f"d{k}{s}.aidl").write_text(
+                imps + f"def t{k}{s}() -> solid {{\n    c = Circle(center=(0, 0), radius=1)\n}}\n")
+    main = folder / "main.aidl"
+    main.write_text('import "d0a.aidl"\nimport "d0b.aidl"\n'
+                    "solid p {\n    c = Circle(center=(0, 0), radius=5)\n    b = t9b()\n}\n")
+    return main
+
+
+def test_an_import_diamond_reads_each_file_once(tmp_path, monkeypatch):
+    """16 levels of diamonds (33 files): the checker read every file on every path (2^16
+    reads, 82 s); each file is now read and parsed once by the checker and once by the
+    interpreter, and names still flow from the bottom file to the top."""
+    from aidl_lang import sources
+    main = _diamond(tmp_path)
+    reads = []
+    real = sources.read_import
+
+    def counting(path, raw):
+        reads.append(str(path))
+        return real(path, raw)
+    monkeypatch.setattr(sources, "read_import", counting)
+    t0 = time.perf_counter()
+    c = compile_source(main.read_text(), str(main))
+    assert time.perf_counter() - t0 < 10
+    assert c.ok, _errors(c)
+    assert len(reads) <= 2 * 33, len(reads)
+    assert "b" in c.model.root.children                  # t9b(), from 10 levels down
