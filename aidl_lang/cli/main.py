@@ -7,7 +7,8 @@ is not installed (the message gives the ``pip install`` line), 3 an internal err
 An output file is written only when the whole pipeline succeeded and every requested format was
 produced (each written to a temporary file beside it, then renamed), so a good drawing is never
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
-directory as output, writes through a symlink (the link stays), and creates files with the
+directory as output, refuses a symlink as output unless ``--follow-symlinks`` (then it writes
+through it; the link stays) and a read-only file unless ``--force``, and creates files with the
 user's umask (an existing file keeps its mode); docs/outputs.md has the details.
 """
 from __future__ import annotations
@@ -116,6 +117,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
                    help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     _budget_arg(r)
+    r.add_argument("--follow-symlinks", action="store_true",
+                   help="write through an output that is a symbolic link (default: refuse it)")
+    r.add_argument("--force", action="store_true",
+                   help="replace an output file that is read-only (default: refuse it)")
     c = add("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
@@ -313,7 +318,35 @@ def _outputs(args) -> list[Path] | int:
         if real in seen:
             return _usage(f"`{o}` is given twice")
         seen.add(real)
+        refused = _refused_output(o, getattr(args, "follow_symlinks", False),
+                                  getattr(args, "force", False))
+        if refused is not None:
+            return refused
     return outs
+
+
+def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
+    """A symbolic link as output is refused (exit 2: someone may have planted it to make the
+    render overwrite another file) unless ``--follow-symlinks``; an existing read-only file
+    is refused (exit 1) unless ``--force``.  None when ``o`` may be written."""
+    if os.path.islink(o) and not follow:
+        return _usage(f"`{o}` is a symbolic link (to `{os.readlink(o)}`); refusing to write "
+                      "through it: give --follow-symlinks to write the file it points to, or "
+                      "another output name")
+    target = os.path.realpath(o) if follow else str(o)
+    try:
+        st = os.stat(target)
+    except OSError:
+        return None
+    import stat as S
+    # read-only: no write bit for its owner (so also for root, whom os.access lets through),
+    # or not writable by this user
+    read_only = not st.st_mode & S.S_IWUSR or not os.access(target, os.W_OK)
+    if S.S_ISREG(st.st_mode) and read_only and not force:
+        print(f"aidl: error: `{o}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
+              "to replace it: give --force to replace it anyway", file=sys.stderr)
+        return 1
+    return None
 
 
 def _encode_all(output, outs: list[Path], opt, res, started: float, budget, as_json: bool):
@@ -336,16 +369,19 @@ def _encode_all(output, outs: list[Path], opt, res, started: float, budget, as_j
     return items
 
 
-def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
+def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
     """Write every output or none: each to a temporary file beside its target, then renamed
-    over it.  A symlink is written through (its target is replaced, the link kept).  A new file
-    gets the permissions the umask allows (0666 & ~umask); an existing file keeps its mode.
-    Returns an error message, or None."""
+    over it (``os.replace``: never half-written).  ``follow``: a symlink is written through
+    (its target is replaced, the link kept); otherwise the path itself is replaced, so a link
+    planted after the check is replaced, never written through.  A new file gets the
+    permissions the umask allows (0666 & ~umask); an existing file keeps its mode.  Returns
+    an error message, or None."""
     staged = []
     out = items[0][0] if items else ""
     try:
         for out, data in items:
-            target = Path(os.path.realpath(out))
+            target = Path(os.path.realpath(out)) if follow else \
+                Path(os.path.abspath(out))
             try:
                 mode = os.stat(target).st_mode & 0o7777
             except FileNotFoundError:
@@ -418,7 +454,7 @@ def cmd_render(args) -> int:
     except OutputError as e:                 # an impossible size
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
-    err = _write_all(items)
+    err = _write_all(items, args.follow_symlinks)
     if err:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1
