@@ -388,3 +388,85 @@ def test_internal_errors_in_sliders_and_downloads_are_diagnostics(tmp_path, monk
     assert drawing is None and diags[0]["code"] == "E0900"
     monkeypatch.undo()
     assert s.set_params({"w": "50mm"})["ok"]
+
+
+@pytest.fixture
+def ranged_ws(tmp_path):
+    """A websocket to a server of RANGED (params w, turns), its first view read."""
+    from starlette.testclient import TestClient
+    from aidl_lang.serve.app import create_app
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    app = create_app(f, PORT, watch=False)
+    with TestClient(app, base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
+                                                      "origin": BASE}) as ws:
+            assert _recv(ws)["ok"]
+            yield ws, app.state.hub.session
+
+
+def _set_ok(ws, i, w="50mm"):
+    ws.send_text(json.dumps({"type": "set", "id": i, "values": {"w": w}}))
+    v = _recv(ws)
+    assert v["type"] == "view" and v["id"] == i and v["ok"], v
+    return v
+
+
+def test_unknown_params_and_oversized_messages_are_refused_before_compiling(ranged_ws):
+    ws, session = ranged_ws
+    version = session.version
+    ws.send_text(json.dumps({"type": "set", "id": 3, "values": {"tunrs": "5"}}))
+    e = _recv(ws)
+    assert e["type"] == "error" and e["id"] == 3
+    assert "unknown param `tunrs`: the program declares turns, w" in e["message"]
+    assert "did you mean `turns`?" in e["message"]
+    ws.send_text(json.dumps({"type": "set", "id": 4, "values": {"w": "1" * 5000}}))
+    assert "at most 256 characters" in _recv(ws)["message"]
+    ws.send_text(json.dumps({"type": "set", "id": 5, "values": {"w": "x" * 70_000}}))
+    assert "more than the 65,536 accepted" in _recv(ws)["message"]
+    assert session.version == version                      # nothing was compiled
+    _set_ok(ws, 6)
+
+
+def test_deep_json_and_binary_frames_get_error_frames(ranged_ws):
+    """A deeply nested value (json.loads would recurse: a RecursionError, once an HTTP 500)
+    and a binary frame (once `KeyError: 'text'`) are answered with an error frame, located
+    where it can be; the connection goes on."""
+    ws, _ = ranged_ws
+    t0 = __import__("time").monotonic()
+    ws.send_text('{"type": "set", "values": ' + "[" * 30_000 + "]" * 30_000 + "}")
+    e = _recv(ws)
+    assert e["type"] == "error" and "more than 8 deep" in e["message"]
+    ws.send_text('{"type": "set", "values":\n  ' + "[" * 50 + "]" * 50 + "}")
+    e = _recv(ws)
+    assert "nests arrays and objects more than 8 deep" in e["message"]
+    assert (e["line"], e["column"]) == (2, 10)
+    ws.send_text('{"type": "set", "values": {"w": 3,}}')
+    e = _recv(ws)
+    assert e["message"].startswith("the message is not JSON") and e["line"] == 1
+    ws.send_bytes(b'{"type": "set", "id": 1, "values": {}}')
+    assert "binary WebSocket messages are not accepted" in _recv(ws)["message"]
+    _set_ok(ws, 7)
+    assert __import__("time").monotonic() - t0 < 20
+
+
+def test_queued_slider_moves_are_coalesced(ranged_ws, monkeypatch):
+    """Moves sent while one compiles wait in one slot: the newest replaces the older ones,
+    so a burst costs at most two compiles and ends on the last value."""
+    import time
+    ws, session = ranged_ws
+    seen = []
+    real = session.set_params
+
+    def slow(values):
+        seen.append(values["w"])
+        time.sleep(0.4)
+        return real(values)
+    monkeypatch.setattr(session, "set_params", slow)
+    for i in range(1, 7):
+        ws.send_text(json.dumps({"type": "set", "id": i, "values": {"w": f"{40 + i}mm"}}))
+    v = _recv(ws)
+    while v.get("id") != 6:
+        v = _recv(ws)
+    assert v["ok"] and v["values"] == {"w": "46mm"}
+    assert len(seen) <= 3 and seen[-1] == "46mm", seen

@@ -232,6 +232,13 @@ class Session:
             return None, [_diag_json(d, self.sources) for d in res.sink.items]
         return res.drawing, res.title
 
+    def param_names(self) -> set[str] | None:
+        """The names of the program's top-level ``param`` declarations (what a customizer
+        message may set), or None when no program is loaded."""
+        if self.program is None:
+            return None
+        return {st.name for st in self.program.stmts if isinstance(st, A.ParamDecl)}
+
     def view(self) -> dict:
         """The page's state as JSON-ready data."""
         return {"file": self.name, "version": self.version, "ok": self.ok, "svg": self.svg,
