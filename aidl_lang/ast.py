@@ -140,6 +140,13 @@ class ThicknessDecl(Node):
 
 
 @dataclass(eq=False, slots=True)
+class KerfDecl(ThicknessDecl):
+    """``kerf 0.15 mm``: the width the laser burns away, for the file's parts (top level) or
+    one structure and its children; cuts are offset by half of it (docs/outputs.md, "Kerf").
+    Handled wherever a :class:`ThicknessDecl` is."""
+
+
+@dataclass(eq=False, slots=True)
 class Import(Node):
     path: str
     path_span: Span
@@ -212,6 +219,14 @@ class If(Node):
 @dataclass(eq=False, slots=True)
 class ExprStmt(Node):
     expr: Node
+
+
+@dataclass(eq=False, slots=True)
+class Assert(Node):
+    """``assert cond, "message"``: ``cond`` (comparisons joined by ``and``) must hold at the
+    solved values; checked after solving, never a constraint (docs/language.md)."""
+    expr: Node
+    message: str | None = None
 
 
 @dataclass(eq=False, slots=True)

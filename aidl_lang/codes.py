@@ -206,6 +206,18 @@ running on: this happens when the constraints are far from satisfiable from the 
 positions. Give starting positions closer to the intended shape and check the constraints named
 by other errors.
 """),
+    "E0405": ("assertion failed", """
+An `assert` statement's condition is false: at the solved values (or, for a condition on params
+and constants alone, as soon as it is read). The message gives the condition, the reason written
+after it and the values found, in the file's units. An `assert` is a check, not a constraint: the
+solver never moves geometry to satisfy it. Change the values or constraints so that it holds.
+
+    param width = 400 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=width, height=100)
+        assert body.width <= 300 mm, "fits the laser bed"   # 400 mm <= 300 mm is false
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the

@@ -52,6 +52,8 @@ TOKEN_NAMES = {
 
 _STATEMENT_START = frozenset(("_NL", "SEMICOLON", "LBRACE", "RBRACE"))
 _THICKNESS_NEXT = frozenset(("NUMBER", "NAME", "ADD_OP"))
+# the words that start a `WORD LENGTH` statement (retyped by the post-lexer) and their terminals
+_DECL_WORDS = {"thickness": "THICKNESS", "kerf": "KERF"}
 _BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
 _OPEN = frozenset(("LPAR", "LSQB"))
 _CLOSE = frozenset(("RPAR", "RSQB"))
@@ -66,6 +68,7 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
 
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
+      ``kerf`` likewise (KERF, the ``kerf 0.15 mm`` statement);
     - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
     - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
       ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
@@ -82,12 +85,12 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
     for k in range(n):
         t = types[k]
         sp = spans[k]
-        if t == "NAME" and text[sp[5]:sp[6]] == "thickness" and (
+        if t == "NAME" and text[sp[5]:sp[6]] in _DECL_WORDS and (
                 k == 0 or types[k - 1] in _STATEMENT_START):
             if k + 1 == n and not complete:
                 break                          # still held when the lexer failed
             if k + 1 < n and types[k + 1] in _THICKNESS_NEXT:
-                t = "THICKNESS"
+                t = _DECL_WORDS[text[sp[5]:sp[6]]]
         if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
             push_t("_NL")
             push_s(prev_span)
@@ -159,10 +162,10 @@ def _retype_thickness(stream):
     for tok in stream:
         if held is not None:
             if tok.type in ("NUMBER", "NAME", "ADD_OP"):
-                held = type(held).new_borrow_pos("THICKNESS", str(held), held)
+                held = type(held).new_borrow_pos(_DECL_WORDS[str(held)], str(held), held)
             yield held
             held = None
-        if (tok.type == "NAME" and str(tok) == "thickness"
+        if (tok.type == "NAME" and str(tok) in _DECL_WORDS
                 and (prev is None or prev.type in ("_NL", "SEMICOLON", "LBRACE", "RBRACE"))):
             held = tok
             prev = tok
@@ -1226,6 +1229,9 @@ class _Builder:
     def thickness_decl(self, meta, items):
         return A.ThicknessDecl(meta, items[1])
 
+    def kerf_decl(self, meta, items):
+        return A.KerfDecl(meta, items[1])
+
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]
         return A.Import(meta, _unquote(self.tx(tok)), tok, self.tx(alias) if alias else None)
@@ -1282,6 +1288,10 @@ class _Builder:
 
     def expr_stmt(self, meta, items):
         return A.ExprStmt(meta, items[0])
+
+    def assert_stmt(self, meta, items):
+        msg = _unquote(self.tx(items[1])) if len(items) > 1 and items[1] is not None else None
+        return A.Assert(meta, items[0], msg)
 
     def bare_block(self, meta, items):
         return items[0]

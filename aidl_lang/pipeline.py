@@ -171,6 +171,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
     the page."""
     if not check_extent(sink, model):
         return None
+    check_assertions(sink, model)
     check_branches(sink, model)
     try:
         with warnings.catch_warnings(), np.errstate(all="ignore"):
@@ -226,6 +227,18 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
                         "and units of the dimensions")
         return False
     return True
+
+
+def check_assertions(sink: DiagnosticSink, model: Model) -> None:
+    """E0405 for each ``assert`` that does not hold at the solution."""
+    if not model.assertions:
+        return
+    from .geometry.assertions import describe, failed
+    for a, bad in failed(model):
+        sink.error("E0405", describe(a, bad), a.span,
+                   hint="an `assert` states what must be true of the design; change the values "
+                        "or constraints so that it holds (it is not a constraint: the solver "
+                        "does not try to satisfy it)")
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:

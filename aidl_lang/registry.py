@@ -94,7 +94,11 @@ TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
-TEXT_MEMBERS = {"position": "point", "size": "length", "bb": "bbox"}
+TEXT_MEMBERS = {"position": "point", "center": "point", "size": "length", "bb": "bbox"}
+STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length"}
+ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
+                   "radius": "length", "width": "length", "inner_radius": "length",
+                   "outer_radius": "length", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",
                 "center": "point", "center_x": "coordinate", "center_y": "coordinate",
@@ -176,6 +180,17 @@ _DEFS = {
                doc="A stadium around the segment start-end (its end arcs' centers); radius = "
                    "width/2 is held; by center, length (end to end) and rotation are held too.",
                members=SLOT_MEMBERS),
+    "ArcSlot": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
+                   A("end_angle", "angle"), A("width", "length")],
+                  doc="A slot `width` wide along the counter-clockwise arc of `radius` about "
+                      "center from start_angle to end_angle (all held); start, end: its end "
+                      "caps' centers.",
+                  members=ARCSLOT_MEMBERS),
+    "Star": _p([A("center", "point"), A("points", "number"), A("outer_radius", "length"),
+                A("inner_radius", "length"), A("rotation", "angle", 0.0)],
+               doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
+                   "first tip up (+y), turned by rotation.",
+               members=STAR_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0)],
@@ -272,11 +287,13 @@ _DEFS = {
                               "the span from first to last (360 deg: evenly all round), step the "
                               "angle between neighbours; gives [original, copy1, ...]."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
+                 [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline, or only "
-                     "the corners at: a point, [edge1, edge2] (where they meet), a shape's "
-                     "corners, or a list of these."),
+                     "the corners at: a point, [edge1, edge2] (where they meet; also "
+                     "Fillet(edge1, edge2, radius)), a shape's corners, or a list of these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
+                  [A("a", "any"), A("b", "any"), A("distance", "length")],
                   cat="operation",
                   doc="Cut every convex corner of this solid's final outline (or those at, "
                       "as Fillet) with two legs of distance."),
@@ -320,7 +337,7 @@ SYNONYMS: dict[str, str] = {
 ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "*": {"r": "radius", "rad": "radius", "d": ("diameter", "distance"), "dia": "diameter",
           "w": "width", "h": "height", "pos": ("position", "center"), "rot": "rotation",
-          "n": ("count", "sides"), "num": ("count", "sides")},
+          "n": ("count", "sides", "points"), "num": ("count", "sides", "points")},
     "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
              "font_size": "size"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
@@ -330,6 +347,13 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "RegularPolygon": {"n_sides": "sides", "num_sides": "sides", "af": "across_flats",
                        "flat_to_flat": "across_flats"},
     "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end"},
+    "ArcSlot": {"position": "center", "at": "center", "start": "start_angle",
+                "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
+                "angle1": "start_angle", "angle2": "end_angle", "path_radius": "radius"},
+    "Star": {"position": "center", "at": "center", "n_points": "points", "tips": "points",
+             "count": "points", "num_points": "points", "r_outer": "outer_radius",
+             "r_inner": "inner_radius", "radius": "outer_radius",
+             "outer": "outer_radius", "inner": "inner_radius"},
     "CircularPattern": {"number": "count", "copies": "count", "around": "center",
                         "origin": "center", "span": "angle", "total_angle": "angle",
                         "spacing": "step", "pitch": "step", "angle_step": "step"},
@@ -374,7 +398,7 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
 CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",
              "PI": "number", "tau": "number"}
 
-KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif",
+KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif", "assert",
             "and", "or", "not", "self", "true", "false"]
 STRUCTURE_KINDS = ["solid", "hole", "drawing", "assembly"]
 

@@ -193,7 +193,7 @@ class Checker:
             self.stmts(st.body.stmts, inner)
         elif isinstance(st, A.Assign):
             self.expr(st.value, scope)
-        elif isinstance(st, A.ExprStmt):
+        elif isinstance(st, (A.ExprStmt, A.Assert)):
             self.expr(st.expr, scope)
         elif isinstance(st, A.ThicknessDecl):
             self.expr(st.value, scope)

@@ -258,13 +258,9 @@ _hole = st.one_of(
     st.tuples(st.just("Circle"), st.floats(-18, 18), st.floats(-8, 8), st.floats(0.3, 6)))
 
 
-@settings(max_examples=40, deadline=None)
-@given(st.lists(_hole, min_size=0, max_size=3), st.sampled_from([0.3, 0.5, 1.0, 2.0, 3.5]))
-def test_W0507_bound_never_misses_a_thin_wall(holes, min_wall):
-    """The quick test (the whole removed area below 2 t^2: no warning) gives exactly the
-    warnings of the full opening, on plates with holes placed anywhere (walls from nothing
-    to thick, holes breaking the edge, corner slivers only)."""
-    from aidl_lang.pipeline import compile_source
+def _plate_with_holes(holes) -> str:
+    """A 40 x 20 plate with a hole structure for each of ``holes`` (Rectangle: kind, x, y, w,
+    h; Circle: kind, x, y, r)."""
     body = []
     for i, h in enumerate(holes):
         if h[0] == "Rectangle":
@@ -272,8 +268,18 @@ def test_W0507_bound_never_misses_a_thin_wall(holes, min_wall):
         else:
             shape = f"Circle(center=({h[1]:.3f}, {h[2]:.3f}), radius={h[3]:.3f})"
         body.append(f"    hole h{i} {{\n        s = {shape}\n    }}")
-    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
-           + "\n".join(body) + "\n}")
+    return ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+            + "\n".join(body) + "\n}")
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(_hole, min_size=0, max_size=3), st.sampled_from([0.3, 0.5, 1.0, 2.0, 3.5]))
+def test_W0507_bound_never_misses_a_thin_wall(holes, min_wall):
+    """The quick test (the whole removed area below 2 t^2: no warning) gives exactly the
+    warnings of the full opening, on plates with holes placed anywhere (walls from nothing
+    to thick, holes breaking the edge, corner slivers only)."""
+    from aidl_lang.pipeline import compile_source
+    src = _plate_with_holes(holes)
     c = compile_source(src, "walls.aidl", min_wall=0)
     assert c.ok and c.drawing is not None
     assert _wall_warnings(c.drawing, min_wall, True) == _wall_warnings(c.drawing, min_wall, False)
@@ -571,9 +577,20 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
             x = float(np.hypot(*(ap - t * ab)))
             if x < dist:
                 want[(i, j)] = x
+    # a pair at the limit itself (to rounding) may fall either side: the two computations
+    # of the foot round differently (a fresh CI seed found 0.1 against 0.0999999999999996)
+    edge = {(i, j) for i in range(len(V)) for j in range(len(A))
+            if abs(_seg_dist(V[i], A[j], B[j]) - dist) <= 1e-9}
     for got in gots:
-        assert got.keys() == want.keys()
-        assert all(abs(got[k] - want[k]) <= 1e-9 for k in want)
+        assert got.keys() - edge == want.keys() - edge
+        assert all(abs(got[k] - want[k]) <= 1e-9 for k in want.keys() & got.keys())
+
+
+def _seg_dist(p, a, b) -> float:
+    import numpy as np
+    ab, ap = b - a, p - a
+    t = min(1.0, max(0.0, float(ap @ ab) / float(ab @ ab))) if ab @ ab > 0 else 0.0
+    return float(np.hypot(*(ap - t * ab)))
 
 
 # ------------------------------------------------------------ topology under --set (W0510)
@@ -638,15 +655,7 @@ def test_W0507_opening_in_tiles_is_the_whole_opening(holes, t, tile):
     import numpy as np
     from aidl_lang.output import checks as C
     from aidl_lang.pipeline import compile_source
-    body = []
-    for i, h in enumerate(holes):
-        if h[0] == "Rectangle":
-            shape = f"Rectangle(center=({h[1]:.3f}, {h[2]:.3f}), width={h[3]:.3f}, height={h[4]:.3f})"
-        else:
-            shape = f"Circle(center=({h[1]:.3f}, {h[2]:.3f}), radius={h[3]:.3f})"
-        body.append(f"    hole h{i} {{\n        s = {shape}\n    }}")
-    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
-           + "\n".join(body) + "\n}")
+    src = _plate_with_holes(holes)
     c = compile_source(src, "tiles.aidl", min_wall=0)
     shape = c.drawing.parts[0].shape
     whole, tiled = C._thin(shape, t, tile=10 ** 9), C._thin(shape, t, tile=tile)

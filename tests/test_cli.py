@@ -302,9 +302,12 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
     choices = next(a for a in full._actions if a.dest == "cmd").choices
     assert sorted(SUBCOMMANDS) == sorted(choices)
     samples = [["render", "a.aidl", "-o", "a.svg", "-o", "a.dxf", "--set", "w=3mm", "--dpi", "200"],
-               ["check", "a.aidl", "--json", "--dof", "--budget", "2"], ["explain", "E0202"],
+               ["check", "a.aidl", "--json", "--dof", "--budget", "2"],
+               ["check", "a.aidl", "--values", "plate.bore", "--json"], ["explain", "E0202"],
+               ["parts", "a.aidl", "--json", "--set", "w=3mm"],
                ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
-               ["serve", "a.aidl", "--port", "0"], ["prompt", "--words"],
+               ["serve", "a.aidl", "--port", "0"], ["mcp", "--root", "parts", "--budget", "2"],
+               ["prompt", "--words"],
                ["generate", "a wrench", "-o", "w.aidl", "--rounds", "2"], ["eval", "p.txt"]]
     assert {s[0] for s in samples} == set(SUBCOMMANDS)
     for argv in samples:

@@ -73,3 +73,110 @@ def test_ellipse_area_rotation_and_bounding_box(compile_text):
 def test_ellipse_needs_positive_axes(compile_text):
     c = compile_text("solid s {\n    e = Ellipse((0, 0), 0, 3)\n}\n")
     assert [d.code for d in c.sink.items] == ["E0108"]
+
+
+# ---------------------------------------------------------------- ArcSlot and Star (issue 23)
+def _exact(src):
+    from aidl_lang.output.part import build
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(src, "t.aidl")
+    assert c.ok and not [d for d in c.sink.items if d.severity == "warning"], \
+        [d.message for d in c.sink.items]
+    return c, build(c.drawing)
+
+
+def test_arc_slot_is_four_tangent_arcs_of_the_asked_radii():
+    import math
+    from aidl_lang.geometry.curves import Arc, turn_between
+    c, o = _exact("solid s { a = ArcSlot(center=(3, -2), radius=15, start_angle=20 deg, "
+                  "end_angle=160 deg, width=5) }")
+    (loop,) = o.parts[0].loops
+    segs = loop.segments
+    assert all(isinstance(g, Arc) for g in segs) and len(segs) == 4
+    assert sorted(g.radius for g in segs) == pytest.approx([2.5, 2.5, 12.5, 17.5], abs=1e-12)
+    for g in segs:
+        if g.radius > 3:
+            assert g.center == pytest.approx((3, -2), abs=1e-12)
+            assert abs(g.sweep) == pytest.approx(math.radians(140), abs=1e-12)
+        else:
+            assert abs(g.sweep) == pytest.approx(math.pi, abs=1e-12)
+    for i, g in enumerate(segs):
+        assert abs(turn_between(segs[i - 1], g)) < 1e-12
+        assert math.dist(segs[i - 1].end, g.start) < 1e-12
+    # area: the annular sector plus two half discs (= one disc of width/2)
+    area = 0.5 * math.radians(140) * (17.5 ** 2 - 12.5 ** 2) + math.pi * 2.5 ** 2
+    assert loop.area == pytest.approx(area, rel=1e-12)
+
+
+def test_arc_slot_members_and_bounding_box(compile_text):
+    import math
+    c = compile_text("solid s {\n a = ArcSlot(center=(0, 0), radius=10, start_angle=0 deg, "
+                     "end_angle=90 deg, width=2)\n"
+                     " p = Point(at=a.end)\n q = Point(at=a.midpoint)\n}\n")
+    assert c.ok
+    x = c.model.xs()
+    g = {g.name: g for g in c.model.root.geometry}
+    pe, pm = g["p"].points["p"], g["q"].points["p"]
+    assert (x[pe.ix], x[pe.iy]) == pytest.approx((0, 10), abs=1e-9)
+    h = 10 / math.sqrt(2)
+    assert (x[pm.ix], x[pm.iy]) == pytest.approx((h, h), abs=1e-9)
+    from aidl_lang.geometry.bbox import numeric_box
+    # caps around (10, 0) and (0, 10) of radius 1, the outer arc's extremes at x = 11, y = 11
+    assert numeric_box(g["a"], c.model.root, x) == pytest.approx((-1, 11, -1, 11), abs=1e-9)
+
+
+def test_star_tips_and_notches_at_their_radii():
+    import math
+    c, o = _exact("solid s { st = Star(center=(5, 5), points=5, outer_radius=12, "
+                  "inner_radius=5, rotation=10 deg) }")
+    (loop,) = o.parts[0].loops
+    pts = [g.start for g in loop.segments]
+    assert len(pts) == 10
+    radii = sorted(round(math.dist(p, (5, 5)), 9) for p in pts)
+    assert radii == [5.0] * 5 + [12.0] * 5
+    tip = max(pts, key=lambda p: p[1])
+    assert math.degrees(math.atan2(tip[1] - 5, tip[0] - 5)) == pytest.approx(100, abs=1e-9)
+    # the area of a star polygon: 2n triangles between a tip and a notch
+    area = 10 * 0.5 * 12 * 5 * math.sin(math.pi / 5)
+    assert loop.area == pytest.approx(area, rel=1e-12)
+
+
+@pytest.mark.parametrize("src, msg", [
+    ("Star(center=(0, 0), points=5, outer_radius=3, inner_radius=4)", "smaller than"),
+    ("Star(center=(0, 0), points=2.5, outer_radius=3, inner_radius=1)", "whole number"),
+    ("ArcSlot(center=(0, 0), radius=2, start_angle=0, end_angle=90 deg, width=5)", "twice"),
+    ("ArcSlot(center=(0, 0), radius=9, start_angle=0 deg, end_angle=360 deg, width=1)",
+     "whole turn"),
+])
+def test_star_and_arc_slot_errors_are_located(compile_text, src, msg):
+    c = compile_text("solid s {\n    g = " + src + "\n}\n")
+    (d,) = [d for d in c.sink.items if d.severity == "error"]
+    assert msg in d.message and d.span.line == 2
+
+
+def test_fillet_and_chamfer_take_two_edges_as_their_corner():
+    """`Fillet(edge1, edge2, radius=r)` (what models write) rounds the corner where the two
+    edges meet, as `Fillet([edge1, edge2], r)` does; it was "`radius` given twice"."""
+    from aidl_lang.geometry.curves import Arc, Line
+    c, o = _exact("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+                  "    Fillet(body.top, body.right, radius=5)\n"
+                  "    Chamfer(body.bottom, body.left, 3)\n}\n")
+    segs = o.parts[0].loops[0].segments
+    (arc,) = [g for g in segs if isinstance(g, Arc)]
+    assert arc.radius == pytest.approx(5, abs=1e-12)
+    assert arc.center == pytest.approx((15, 5), abs=1e-12)
+    ends = sorted((round(g.start[0], 9), round(g.start[1], 9)) for g in segs if isinstance(g, Line))
+    assert (-20.0, -7.0) in ends and (-17.0, -10.0) in ends
+
+
+def test_text_center_is_the_middle_of_its_strokes(compile_text):
+    from aidl_lang.geometry.text import text_extent
+    c = compile_text("drawing d {\n    t = Text(\"HELLO\", (10, 30), size=5)\n"
+                     "    p = Point(at=t.center)\n}\n")
+    assert c.ok
+    x = c.model.xs()
+    g = {g.name: g for g in c.model.root.geometry}
+    x0, x1, y0, y1 = text_extent("HELLO", 5.0, "middle", "baseline", 0.0)
+    pt = g["p"].points["p"]
+    assert (x[pt.ix], x[pt.iy]) == pytest.approx((10 + (x0 + x1) / 2, 30 + (y0 + y1) / 2),
+                                                abs=1e-9)

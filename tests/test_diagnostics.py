@@ -180,6 +180,10 @@ solid s {
     c = Circle(center=(0, 0), radius=5)
     Radius(c, 7)
 }""", (3, 5, 3, 17)),
+    ("E0405", """solid s {
+    c = Circle(center=(0, 0), radius=5)
+    assert c.radius >= 6, "room for the screw"
+}""", (3, 5, 3, 47)),
 ]
 
 

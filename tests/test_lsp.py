@@ -85,6 +85,14 @@ async def test_server_diagnostics_hover_completion_definition(client: LanguageCl
     h = await client.text_document_hover_async(T.HoverParams(
         text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(*pos(GOOD, "Rectangle", 2))))
     assert "Rectangle(center: point, width: length" in h.contents.value
+    # the file solves: hover on a name shows its solved values too
+    h = await client.text_document_hover_async(T.HoverParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(*pos(GOOD, "c = Circle"))))
+    assert "plate.bore.c.center = (0.000, 0.000) mm" in h.contents.value
+    assert "plate.bore.c.radius = 3.000 mm" in h.contents.value
+    h = await client.text_document_hover_async(T.HoverParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(*pos(GOOD, "body =", 1))))
+    assert "plate.body.width = 10.000 mm" in h.contents.value
 
     # type `body.` on a new line inside the structure: members of a Rectangle
     typed = GOOD.replace("    CenterInside", "    body.\n    CenterInside")
@@ -233,3 +241,20 @@ def test_imported_templates_hover_definition_and_members():
     line, ch = pos(typed, "    pinion.\n", len("    pinion."))
     labels = {c.label for c in an.completions(typed, line, ch, path=str(path))}
     assert {"hub", "bore_hole", "bb"} <= labels
+
+
+def test_value_hover_names_chains_loops_and_the_enclosing_structure():
+    src = (ROOT / "examples" / "mounting_plate.aidl").read_text()
+    values: dict = {}
+    an.diagnostics(src, "mounting_plate.aidl", True, None, values)
+    assert values["kit.plate.shaft.boss.radius"] == "kit.plate.shaft.boss.radius = 11.000 mm"
+    at_boss = an.value_hover(src, *pos(src, "shaft.boss.center", 7), values)
+    assert "kit.plate.shaft.boss.center = (-20.000, 0.000) mm" in at_boss and "radius" in at_boss
+    at_center = an.value_hover(src, *pos(src, "shaft.boss.center", 12), values)
+    assert "radius" not in at_center
+    corners = an.value_hover(src, *pos(src, "hole corner", 6), values)
+    assert "kit.plate.corner[3].bbox = (-54.500, 29.500, -49.500, 34.500) mm" in corners
+    assert an.value_hover(src, *pos(src, "import", 2), values) is None
+    broken: dict = {}
+    an.diagnostics(BROKEN, "b.aidl", True, None, broken)
+    assert broken == {}

@@ -21,6 +21,10 @@ def add_commands(add) -> None:
         if name == "generate":
             g.add_argument("prompt", help="what to design, e.g. \"a wrench with a 10 mm jaw\"")
             g.add_argument("-o", "--output", required=True, help="the .aidl file to write")
+            g.add_argument("--visual-rounds", type=int, default=0, metavar="N",
+                           help="extra rounds that send the valid program's picture (PNG) to a "
+                                "multimodal model, which replies LOOKS RIGHT or a corrected "
+                                "program (default 0: off; needs cairosvg)")
         else:
             g.add_argument("prompts", help="text file: one prompt per line (# comments)")
             g.add_argument("--runs", type=int, default=1, help="runs per prompt (default 1)")
@@ -43,9 +47,9 @@ def _say(msg: str) -> None:
 
 def _client(args):
     from ..llm.client import client_from
-    if args.rounds < 1 or args.warning_rounds < 0:
-        print("aidl: error: --rounds must be at least 1 and --warning-rounds at least 0",
-              file=sys.stderr)
+    if args.rounds < 1 or args.warning_rounds < 0 or getattr(args, "visual_rounds", 0) < 0:
+        print("aidl: error: --rounds must be at least 1, --warning-rounds and --visual-rounds "
+              "at least 0", file=sys.stderr)
         raise SystemExit(2)
     return client_from(args.base_url, args.model, args.api_key, args.temperature)
 
@@ -67,9 +71,16 @@ def cmd_generate(args) -> int:
     if not out.parent.resolve().is_dir():
         print(f"aidl: error: folder `{out.parent}` does not exist", file=sys.stderr)
         return 2
+    if args.visual_rounds:
+        try:
+            import cairosvg  # noqa: F401  (the pictures of --visual-rounds)
+        except (ImportError, OSError) as e:
+            print("aidl: error: --visual-rounds needs cairosvg and the cairo library: pip "
+                  f"install 'aidl-lang[png]' ({e})", file=sys.stderr)
+            return 2
     try:
         res = generate(args.prompt, client, args.rounds, str(out), progress=_say,
-                       warning_rounds=args.warning_rounds)
+                       warning_rounds=args.warning_rounds, visual_rounds=args.visual_rounds)
     except LLMError as e:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
@@ -77,6 +88,10 @@ def cmd_generate(args) -> int:
     js, md = transcript_paths(out)
     if res.ok:
         warn = f", {len(res.warnings)} warning(s) left" if res.warnings else ""
+        if res.visual_rounds:
+            warn += (f", {res.visual_rounds} picture(s) checked"
+                     + (", LOOKS RIGHT" if res.looks_right else "")
+                     + (" (the visual check failed)" if res.visual_error else ""))
         print(f"wrote {out} (valid in round {len(res.rounds)}{warn}); transcript {md}")
         return 0
     print(f"aidl: no valid program in {len(res.rounds)} rounds; {out} not written; "

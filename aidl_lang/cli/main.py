@@ -1,4 +1,5 @@
-"""The ``aidl`` command line: ``render``, ``check``, ``explain``, ``fmt``, ``lsp``, ``serve`` (and
+"""The ``aidl`` command line: ``render``, ``check``, ``parts``, ``explain``, ``fmt``, ``lsp``,
+``serve``, ``mcp`` (and
 ``prompt``, ``generate``, ``eval`` from :mod:`aidl_lang.cli.llm`).
 
 Exit status: 0 success, 1 a user error in the program (diagnostics printed) or an output the
@@ -65,7 +66,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "explain", "fmt", "lsp", "serve", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "prompt",
+               "generate", "eval")
 
 
 class _Unused:
@@ -111,6 +113,21 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--thickness", default=None, metavar="LENGTH",
                    help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
                         "`thickness`, else 3 mm)")
+    r.add_argument("--kerf", default=None, metavar="LENGTH",
+                   help="offset every cut by half this kerf so parts come out at their size, "
+                        "e.g. 0.15mm (default: the program's `kerf`, else none)")
+    r.add_argument("--layout", choices=["sheet"], default=None,
+                   help="sheet: lay every solid part out flat on cutting sheets (true-shape "
+                        "nesting; `layout` extra), one file per sheet when there are several")
+    r.add_argument("--sheet", default="600x400mm", metavar="WxH",
+                   help="sheet size for --layout, e.g. 600x400mm or 24x12in (default 600x400mm)")
+    r.add_argument("--gap", default="3mm", metavar="LENGTH",
+                   help="space between parts and to the sheet's edge for --layout (default 3mm)")
+    r.add_argument("--rotate", default="0,90", metavar="ANGLES",
+                   help="angles in degrees parts may be turned by for --layout, e.g. 0 or 0,90 "
+                        "(default), or any")
+    r.add_argument("--nest-time", type=int, default=0, metavar="S",
+                   help="seconds the nesting may spend improving its first packing (default 0)")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -130,7 +147,15 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
+    c.add_argument("--values", nargs="*", default=None, metavar="NAME",
+                   help="print the solved values of named entities (points, sizes, frames, "
+                        "boxes) in the file's units; NAMEs filter by dotted prefix")
     _budget_arg(c)
+    pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
+    pl.add_argument("file")
+    pl.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    pl.add_argument("--json", action="store_true", help="the list as JSON on stdout")
+    _budget_arg(pl)
     e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
     f = add("fmt", help="format .aidl files in place (canonical layout)")
@@ -149,6 +174,13 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
+            description="Serve AIDL's tools (check, render, values, explain) and resources "
+                        "(language reference, prompt, stdlib, examples) to an MCP host over "
+                        "stdio. Only files inside --root can be read or written.")
+    m.add_argument("--root", default=".", metavar="DIR",
+                   help="the folder the server may read and write (default: the current one)")
+    _budget_arg(m)
     if only is None or only in ("prompt", "generate", "eval"):
         from .llm import add_commands
         add_commands(add)              # prompt, generate, eval
@@ -222,12 +254,10 @@ def _read(path: str, as_json: bool) -> str | None:
 
 
 def cmd_check(args) -> int:
-    from ..pipeline import compile_source
-    src = _read(args.file, args.json)
-    if src is None:
-        return 1
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
-                         budget=_budget(args))
+    from ..api import compile as compile_program
+    program = compile_program(path=args.file, overrides=_overrides(args.set),
+                              budget=_budget(args), min_wall=args.min_wall)
+    res = program.compiled
     extra = {}
     dofs = None
     if res.solve is not None:
@@ -246,6 +276,11 @@ def cmd_check(args) -> int:
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False))
             extra["freedom"] = freedom_text(dofs_all)
+    values = None
+    if args.values is not None and program.ok:
+        values = program.values_matching(args.values)
+        extra["units"] = program.units
+        extra["values"] = [v.to_json() for v in values]
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -254,6 +289,10 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
+        for v in values or ():
+            print(v.text())
+        if values is not None and not values:
+            print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
     return 0 if res.ok else 1
 
 
@@ -273,9 +312,9 @@ def _usage(msg: str) -> int:
     return 2
 
 
-def _length_mm(text: str) -> float | None:
-    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length up to
-    the model extent (1e6 mm)."""
+def _length_mm(text: str, zero: bool = False) -> float | None:
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length (or
+    0 with ``zero``) up to the model extent (1e6 mm)."""
     import re
     m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
     if not m:
@@ -283,7 +322,31 @@ def _length_mm(text: str) -> float | None:
     v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
         (m.group(2) or "mm").lower()]
     from ..limits import MAX_EXTENT
-    return v if 0 < v <= MAX_EXTENT else None
+    return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
+
+
+# the formats a cutter reads (and their preview): the kerf offsets their cuts; STL, 3MF and
+# STEP keep the designed size
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
+
+def _sheet_mm(text: str) -> tuple[float, float] | None:
+    """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
+    import re
+    m = re.fullmatch(r"\s*([0-9.e+-]+)\s*[x×*]\s*([0-9.e+-]+)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    unit = m.group(3) or "mm"
+    w, h = _length_mm(m.group(1) + unit), _length_mm(m.group(2) + unit)
+    return None if w is None or h is None else (w, h)
+
+
+def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
+    """The files of ``n`` sheets for each output: ``cut.svg`` for one sheet, else
+    ``cut-1.svg``, ``cut-2.svg``, ..."""
+    if n == 1:
+        return [[o] for o in outs]
+    return [[o.with_name(f"{o.stem}-{k + 1}{o.suffix}") for k in range(n)] for o in outs]
 
 
 def _outputs(args) -> list[Path] | int:
@@ -349,23 +412,24 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     return None
 
 
-def _encode_all(output, outs: list[Path], opt, res, started: float, budget, as_json: bool):
-    """Each output encoded in turn, within the compile's wall-time budget (checked between
-    writers; what a writer gets is bounded by the budget's outline vertices): the
-    ``[(path, bytes)]`` to write, or None after an ``E0304`` naming the writer."""
+def _encode_all(jobs: list, opt, res, started: float, budget, as_json: bool):
+    """Each ``(path, output, suffix)`` of ``jobs`` encoded in turn, within the compile's
+    wall-time budget (checked between writers; what a writer gets is bounded by the budget's
+    outline vertices): the ``[(path, bytes)]`` to write, or None after an ``E0304`` naming
+    the writer."""
     import time
     from ..limits import OutOfBudget
     from ..output import encode
     from ..pipeline import report_out_of_budget
     items = []
-    for o in outs:
+    for o, output, suffix in jobs:
         if time.monotonic() > started + budget.seconds:
             report_out_of_budget(res.sink, OutOfBudget(
                 f"more than {budget.seconds:g} s of wall time", f"the writer of `{o}` (nothing "
                 "was written)", res.model.root))
             _emit(res.sink, as_json, False)
             return None
-        items.append((o, encode(output, o.suffix, opt)))
+        items.append((o, encode(output, suffix, opt)))
     return items
 
 
@@ -428,6 +492,29 @@ def cmd_render(args) -> int:
     from ..limits import MAX_EXTENT
     if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
         return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
+    kerf = None
+    if args.kerf is not None:
+        kerf = _length_mm(args.kerf)
+        if kerf is None or kerf > 10:
+            return _usage(f"--kerf expects a positive length up to 10 mm, such as 0.15mm, got "
+                          f"`{args.kerf}`")
+    sheet = _sheet_mm(args.sheet)
+    if sheet is None:
+        return _usage(f"--sheet expects WIDTHxHEIGHT with a unit, such as 600x400mm, got "
+                      f"`{args.sheet}`")
+    gap = _length_mm(args.gap, zero=True)
+    if gap is None:
+        return _usage(f"--gap expects a length of 0 or more, such as 3mm, got `{args.gap}`")
+    from ..output.layout import parse_rotate
+    try:
+        rotate = parse_rotate(args.rotate)
+    except ValueError:
+        return _usage(f"--rotate expects angles in degrees such as 0,90, or any; got "
+                      f"`{args.rotate}`")
+    if args.nest_time < 0 or args.nest_time > 3600:
+        return _usage(f"--nest-time expects seconds from 0 to 3600, got `{args.nest_time}`")
+    if args.layout is None and (args.sheet, args.gap, args.rotate) != ("600x400mm", "3mm", "0,90"):
+        return _usage("--sheet, --gap and --rotate are for a cutting layout: add --layout sheet")
     if args.file == "-":
         src = sys.stdin.read()
     else:
@@ -444,8 +531,31 @@ def cmd_render(args) -> int:
     output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin)
+    notes = []
     try:
-        items = _encode_all(output, outs, opt, res, started, _budget(args), args.json)
+        if kerf is None:
+            kerf = res.drawing.kerf or None        # the program's `kerf` statements
+        cut = output                               # the 2D formats' output: kerf offset
+        if kerf:
+            from ..output.layout import compensate
+            cut = compensate(output, kerf)
+        flat, solid = [cut], [output]
+        if args.layout:
+            from ..output.layout import place, plan
+            where = plan(cut, sheet, gap, rotate, args.nest_time)
+            flat, dropped = place(cut, where, sheet)
+            solid, _ = place(output, where, sheet)
+            notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
+                         f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
+                         f"{sheet[0]:g} x {sheet[1]:g} mm")
+            if dropped:
+                notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
+                             "outside every part left out of the layout")
+        names = _sheet_names(outs, len(flat))
+        outs = [n for per in names for n in per]
+        jobs = [(n, s, o.suffix) for o, per in zip([p[0] for p in names], names)
+                for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
+        items = _encode_all(jobs, opt, res, started, _budget(args), args.json)
         if items is None:
             return 1
     except MissingDependency as e:           # not the program's fault: install the extra
@@ -460,8 +570,29 @@ def cmd_render(args) -> int:
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
     if not args.json:
+        for line in notes:
+            print(line)
         for o in outs:
             print(f"wrote {o}")
+    return 0
+
+
+def cmd_parts(args) -> int:
+    from ..pipeline import compile_source
+    from ..output import build
+    from ..output.inventory import parts_list, parts_text
+    src = _read(args.file, args.json)
+    if src is None:
+        return 1
+    res = compile_source(src, args.file, _overrides(args.set), budget=_budget(args))
+    if not res.ok:
+        _emit(res.sink, args.json, False)
+        return 1
+    rows = parts_list(build(res.drawing, res.model.root.name))
+    if args.json:
+        print(json.dumps({"ok": True, "unit": "mm", "parts": rows}, indent=2))
+    else:
+        print(parts_text(rows))
     return 0
 
 
@@ -500,6 +631,20 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_mcp(args) -> int:
+    if not os.path.isdir(args.root):
+        return _usage(f"--root `{args.root}` is not a folder")
+    try:
+        import mcp.server.mcpserver  # noqa: F401  (the `mcp` extra)
+    except ImportError:
+        print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
+              file=sys.stderr)
+        return 2
+    from ..llm.prompt import system_prompt
+    from ..mcp.server import main as mcp_main
+    return mcp_main(args.root, min(args.budget, 4.0), system_prompt)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run one ``aidl`` command; returns the exit status (see the module text)."""
     global _command
@@ -508,8 +653,9 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
     _command = args.cmd
     try:
-        run = {"check": cmd_check, "render": cmd_render, "explain": cmd_explain,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve}.get(args.cmd)
+        run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
+               "explain": cmd_explain,
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]
@@ -537,7 +683,7 @@ def main(argv: list[str] | None = None) -> int:
 _command: str | None = None
 # Commands that leave nothing behind when main() returns: outputs are written and renamed,
 # cache files written, no threads or atexit work.
-_QUICK_EXIT = frozenset({"check", "render", "explain", "fmt"})
+_QUICK_EXIT = frozenset({"check", "render", "parts", "explain", "fmt"})
 
 
 def entry() -> None:

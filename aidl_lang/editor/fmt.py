@@ -62,7 +62,7 @@ class _Item:
     end: int
 
 
-KEYWORDS = {"UNITS", "IMPORT", "AS", "PARAM", "DEF", "FOR", "IN", "IF", "ELSE", "ELIF", "AND",
+KEYWORDS = {"UNITS", "IMPORT", "AS", "PARAM", "DEF", "FOR", "IN", "IF", "ELSE", "ELIF", "AND", "ASSERT",
             "OR", "NOT"}
 OPEN = {"LPAR": "RPAR", "LSQB": "RSQB"}
 CLOSE = {"RPAR", "RSQB"}

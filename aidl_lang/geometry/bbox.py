@@ -180,6 +180,25 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
             xs += [px - r, px + r]
             ys += [py - r, py + r]
         return
+    if k == "ArcSlot":
+        # the end caps (half circles of width/2 around start and end) and the outer arc's
+        # extremes that its sweep passes (held shape: angles and radii are numbers)
+        h = g.data["dims"]["width"] / 2
+        Ro = g.data["dims"]["outer_radius"]
+        a1, sweep = g.data["angles"]
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs += [px - h, px + h]
+            ys += [py - h, py + h]
+        cx, cy = P["center"]
+        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
+                              (1.5 * math.pi, (0, -1))):
+            if (ang - a1) % (2 * math.pi) <= sweep:
+                if dx:
+                    xs.append(cx + Ro * dx)
+                else:
+                    ys.append(cy + Ro * dy)
+        return
     if k == "Arc":
         cx, cy = P["center"]
         sx, sy = P["start"]

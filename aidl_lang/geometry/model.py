@@ -25,6 +25,7 @@ class Model:
         self.constraints: list[Constraint] = []
         self.structures: list[Structure] = []
         self.units = "mm"
+        self.assertions: list[Assertion] = []     # `assert` statements left for after solving
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))
@@ -229,3 +230,20 @@ def _set_constraint_text(c: Constraint, value: str) -> None:
 # constraint its file's text (``_src``) and ``_text = None``; the text (its source, blanks
 # collapsed, at most 120 characters) is cut only when a message asks for it.
 Constraint.text = property(_constraint_text, _set_constraint_text)
+
+
+@dataclass(eq=False)
+class Assertion:
+    """An ``assert`` statement whose condition depends on solved values: each of ``sides`` is
+    ``(op, left, right, dim)`` (``op`` one of ``==`` ``<=`` ``<`` ``>=`` ``>``; ``left``,
+    ``right`` expressions in mm or radians, box terms allowed; ``dim`` the values' dimension),
+    all of which must hold at the solution.  ``text``: the condition as written; ``message``:
+    the user's reason, or None; ``unit``/``scale``: the file's length unit for messages."""
+
+    span: Span | None
+    text: str
+    message: str | None
+    owner: Structure
+    sides: list = field(default_factory=list)
+    unit: str = "mm"
+    scale: float = 1.0

@@ -202,6 +202,8 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             raise OperationError(f"{kind} works on the outline of a solid or hole, not on "
                                  f"{S.kind} `{S.name}`")
         at = None
+        if "a" in args and "b" in args:           # Fillet(edge1, edge2, radius): their corner
+            args = dict(args, at=[args["a"], args["b"]])
         if "at" in args:
             ox, oy = S.frame_offset(None)
             from .bbox import contains_bbox

@@ -399,6 +399,57 @@ def _build_RegularPolygon(ctx, g, a):
     g.closed = True
 
 
+def _build_Star(ctx, g, a):
+    n = _const(ctx, a["points"], "points")
+    if abs(n - round(n)) > 1e-9 or not 2 <= round(n) <= 500:
+        raise PrimitiveError(f"a Star needs a whole number of points from 2 to 500, got {n:g}")
+    n = int(round(n))
+    _positive(a["outer_radius"], "outer_radius", "Star")
+    _positive(a["inner_radius"], "inner_radius", "Star")
+    ro = _const(ctx, a["outer_radius"], "outer_radius")
+    ri = _const(ctx, a["inner_radius"], "inner_radius")
+    if not ri < ro:
+        raise PrimitiveError(f"a Star's inner_radius ({ri:g} mm) must be smaller than its "
+                             f"outer_radius ({ro:g} mm)")
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    offsets = {}
+    for k in range(2 * n):        # tip k/2 straight up (+y) turned by rotation, notches between
+        t = math.pi / 2 + math.pi * k / n
+        r = ro if k % 2 == 0 else ri
+        offsets[f"p{k}"] = (r * math.cos(t), r * math.sin(t))
+    pts = _rigid(ctx, g, a, offsets, "Star")
+    g.data["order"] = list(offsets)
+    g.data["edges"] = _polygon_edges(ctx, g, pts)
+    g.data["dims"] = {"outer_radius": ro, "inner_radius": ri}
+    g.closed = True
+
+
+def _build_ArcSlot(ctx, g, a):
+    _positive(a["radius"], "radius", "ArcSlot")
+    _positive(a["width"], "width", "ArcSlot")
+    R = _const(ctx, a["radius"], "radius")
+    w = _const(ctx, a["width"], "width")
+    a1 = _const(ctx, a["start_angle"], "ArcSlot start_angle")
+    a2 = _const(ctx, a["end_angle"], "ArcSlot end_angle")
+    if not w / 2 < R:
+        raise PrimitiveError(f"an ArcSlot's width ({w:g} mm) must be less than twice its "
+                             f"radius ({R:g} mm): its inner side would cross the center")
+    sweep = (a2 - a1) % (2 * math.pi)
+    if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
+        raise PrimitiveError("an ArcSlot needs different start and end angles (less than a "
+                             "whole turn apart): for a ring use a Circle with a hole")
+    mid = a1 + sweep / 2
+    pts = _rigid(ctx, g, dict(a, rotation=Q.num(0.0, ANG)),
+                 {"start": (R * math.cos(a1), R * math.sin(a1)),
+                  "end": (R * math.cos(a1 + sweep), R * math.sin(a1 + sweep)),
+                  "midpoint": (R * math.cos(mid), R * math.sin(mid))}, "ArcSlot")
+    del pts
+    g.data["dims"] = {"radius": R, "width": w, "inner_radius": R - w / 2,
+                      "outer_radius": R + w / 2}
+    g.data["angles"] = (a1, sweep)
+    g.closed = True
+
+
 def _build_Slot(ctx, g, a):
     if "center" in a:
         _positive(a["length"], "length", "Slot")
@@ -484,7 +535,7 @@ def points_of(g: Geometry) -> list:
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    if name in g.points and not (k in ("Polygon", "RegularPolygon") and name.startswith("p")
+    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star") and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
     own = g.owner.owner_set()
@@ -553,6 +604,8 @@ def member(g: Geometry, name: str, frame):
             return Q.num(g.data["corner_radius"], LEN)
         if name == "corners":
             return [_pv(p, frame) for p in points_of(g)]
+    if k in ("Star", "ArcSlot") and name in g.data["dims"]:
+        return Q.num(g.data["dims"][name], LEN)
     if k == "Trapezoid":
         if name in g.data["dims"]:
             return Q.num(g.data["dims"][name], LEN)
@@ -562,7 +615,7 @@ def member(g: Geometry, name: str, frame):
             return [GeomRef(e) for e in g.data["edges"]]
     if k == "Ellipse" and name in ("rx", "ry"):
         return Q(var(g.scalars[name].index), LEN, own)
-    if k in ("Polygon", "RegularPolygon", "Triangle"):
+    if k in ("Polygon", "RegularPolygon", "Triangle", "Star"):
         pts = points_of(g) if k != "Triangle" else [g.points[n] for n in ("a", "b", "c")]
         if name in ("points", "vertices", "corners"):
             return [_pv(p, frame) for p in pts]
@@ -579,6 +632,10 @@ def member(g: Geometry, name: str, frame):
             return PV(sx, sy, None, own)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
+    if k == "Text" and name == "center":          # the middle of the strokes' box
+        p = _pv(g.points["position"], frame)
+        x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
+        return PV(p.x + (x0 + x1) / 2, p.y + (y0 + y1) / 2, None, own)
     return None
 
 

@@ -34,7 +34,9 @@ class Statements:
         top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def,
                                                                A.ThicknessDecl))]
         structs = [s for s in top if isinstance(s, A.StructDecl)]
-        loose = [s for s in top if not isinstance(s, A.StructDecl) and not _is_plain_const(s)]
+        asserts = [s for s in top if isinstance(s, A.Assert)]
+        loose = [s for s in top if not isinstance(s, (A.StructDecl, A.Assert))
+                 and not _is_plain_const(s)]
         for name in self.overrides:
             if name not in getattr(fctx, "params", {}):
                 self.sink.error("E0113", f"`--set {name}=...`: the model has no param `{name}`",
@@ -42,13 +44,21 @@ class Statements:
                                 "declare it with `param NAME = VALUE` at the top of the file",
                                 suggestions=did_you_mean(name, fctx.params))
         if len(structs) == 1 and not loose:
-            consts = [s for s in top if s is not structs[0]]
+            consts = [s for s in top if s is not structs[0] and not isinstance(s, A.Assert)]
             self.scope = fctx.scope
             for s in consts:
                 self._exec_stmt(s)
             st = structs[0]
             root = self._new_structure(st.name, st.kind, None, st.span)
             self._run_body(root, st.body, Scope(fctx.scope, root, fctx))
+            if asserts:                 # after the structure, which they may name
+                outer = Scope(fctx.scope, root, fctx)
+                outer.vars[st.name] = StructRef(root)
+                saved = self.struct, self.scope
+                self.struct, self.scope = root, outer
+                for s in asserts:
+                    self._exec_stmt(s)
+                self.struct, self.scope = saved
         else:
             kind = "assembly" if not any(_is_geometry_stmt(s) for s in loose) else "solid"
             root = self._new_structure("model", kind, None, program.span)
@@ -236,7 +246,7 @@ class Statements:
             later = []
             for st in block.stmts:      # _exec_stmt, inline for assignments
                 t = type(st)
-                if t is A.ExprStmt:
+                if t is A.ExprStmt or t is A.Assert:
                     later.append(st)
                 elif t is A.Assign:
                     self.cur_span = st.span
@@ -249,7 +259,10 @@ class Statements:
             for st in later:            # _exec_stmt, inline
                 self.cur_span = st.span
                 try:
-                    self._expr_stmt(st.expr)
+                    if type(st) is A.Assert:
+                        self._assert(st)
+                    else:
+                        self._expr_stmt(st.expr)
                 except _STMT_ERRORS as ex:
                     self._stmt_failed(st, ex)
         finally:
@@ -306,6 +319,8 @@ class Statements:
             self._struct_decl(st)
         elif isinstance(st, A.ThicknessDecl):
             self._thickness(st)
+        elif t is A.Assert:
+            self._assert(st)
         elif isinstance(st, A.For):
             self._for(st)
         elif isinstance(st, A.If):
@@ -323,20 +338,20 @@ class Statements:
                             hint=f"move the `{what}` line to the top of the file")
 
     def _thickness(self, st) -> None:
-        """``thickness LENGTH``: the model's default (top level) or a structure's own, in mm."""
+        """``thickness LENGTH`` (and ``kerf LENGTH``): the model's default (top level) or a
+        structure's own, in mm."""
+        word, eg = ("kerf", "kerf 0.15 mm") if isinstance(st, A.KerfDecl) else \
+            ("thickness", "thickness 3 mm")
         v = self.eval(st.value)
         if not isinstance(v, Q) or v.dim not in (LEN, NUM):
-            raise EvalError("E0109", "`thickness` expects a length", st.value.span,
-                            hint="write it with a unit: `thickness 3 mm`")
+            raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
+                            hint=f"write it with a unit: `{eg}`")
         val = Q(self._as_length(v, st.value.span), LEN).const()
         if val is None or not val > 0:
-            raise EvalError("E0109", "`thickness` must be a positive length known before "
+            raise EvalError("E0109", f"`{word}` must be a positive length known before "
                             "solving", st.value.span,
-                            hint="use a number or a param: `thickness 3 mm`")
-        if self.struct is None:
-            self.model.thickness = val
-        else:
-            self.struct.thickness = val
+                            hint=f"use a number or a param: `{eg}`")
+        setattr(self.model if self.struct is None else self.struct, word, val)
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:
@@ -606,6 +621,54 @@ class Statements:
             self._add_constraint("equation", eqs, e.span, None,
                                  owners_of(l, r))
 
+    def _assert(self, st) -> None:
+        """``assert cond[, "message"]``: comparisons joined by ``and``.  Sides known now
+        (params, constants) are checked at once; the rest are kept on the model
+        (:class:`~aidl_lang.geometry.model.Assertion`) and checked after solving (E0405)."""
+        from ..geometry.model import Assertion
+        sides = []
+        self._assert_sides(st.expr, sides)
+        scale = self.unit_scale
+        unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
+        from .common import _src
+        a = Assertion(st.span, _src(self.sink, st.expr.span) or "condition", st.message,
+                      self.struct, [], unit, scale)
+        for side in sides:
+            op, l, r, dim = side
+            if _const(l) and _const(r):
+                from ..geometry.assertions import holds, describe
+                if not holds(op, _value(l), _value(r)):
+                    raise EvalError("E0405", describe(a, [(op, _value(l), _value(r), dim)]),
+                                    st.span, hint=_ASSERT_HINT)
+            else:
+                a.sides.append(side)
+        if a.sides:
+            self.model.assertions.append(a)
+
+    def _assert_sides(self, e, out: list) -> None:
+        if isinstance(e, A.BoolOp):
+            if e.op != "and":
+                raise EvalError("E0108", "`or` cannot join the conditions of an `assert`", e.span,
+                                hint="write one `assert` per condition that must hold, or join "
+                                     "them with `and`")
+            self._assert_sides(e.left, out)
+            self._assert_sides(e.right, out)
+            return
+        if not isinstance(e, A.Compare):
+            raise EvalError("E0108", "`assert` takes comparisons (`a <= b`), joined by `and`",
+                            e.span, hint="write e.g. `assert plate.body.width <= 300 mm`")
+        vals = [self.eval(x) for x in e.operands]
+        for op, (l, r) in zip(e.ops, zip(vals, vals[1:])):
+            for eq in self._compare_eqs(op, l, r, e.span):
+                # each equation is `left - right` (== 0 or >= 0); keep the two sides apart
+                out.append(self._sides_of(op, l, r, e.span, eq))
+
+    def _sides_of(self, op, l, r, span, eq):
+        if isinstance(l, Q) and isinstance(r, Q):
+            le, re_, dim = self._unify(l, r, span)
+            return op, le, re_, dim
+        return "==", eq.expr, 0.0, LEN      # points: each coordinate's difference is 0
+
     def _compare_eqs(self, op, l, r, span) -> list[Equation]:
         if op == "!=":
             raise EvalError("E0108", "`!=` cannot be a constraint", span,
@@ -641,6 +704,19 @@ class Statements:
                             hint="both sides must have the same unit kind (length, angle or number)")
 
     # ------------------------------------------------------------------ calls
+
+
+_ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
+                "constraints so that it holds (it is not a constraint: the solver does not try "
+                "to satisfy it)")
+
+
+def _const(x) -> bool:
+    return isinstance(x, (int, float)) or (type(x) is Lin and not x.terms)
+
+
+def _value(x) -> float:
+    return float(x) if isinstance(x, (int, float)) else float(x.const)
 
 
 def _definition_lines(stmts, out=None) -> dict[str, int]:

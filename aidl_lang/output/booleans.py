@@ -76,6 +76,8 @@ class Drawing:
     # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
     # are made from templates, docs/performance.md)
     empty_faces = ()
+    # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
+    kerf = None
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:
@@ -196,8 +198,13 @@ class Renderer:
             u, v = rx * np.cos(t), ry * np.sin(t)
             cs, sn = math.cos(rot), math.sin(rot)
             return _polygon(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
+        if k == "ArcSlot":
+            c = self._pt(g.points["center"])
+            a1, sweep = g.data["angles"]
+            d = g.data["dims"]
+            return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
-                 "Trapezoid"):
+                 "Trapezoid", "Star"):
             from ..geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
@@ -452,12 +459,14 @@ class Renderer:
             raise
         out.exact = self.exact
         out.empty_faces = self.empty_faces
-        default = getattr(self.m, "thickness", None)
-        for name, s in out.part_of.items():
-            t = next((getattr(a, "thickness") for a in [s, *s.ancestors()]
-                      if getattr(a, "thickness", None) is not None), default)
-            if t is not None:
-                out.thickness[name] = float(t)
+        out.kerf = {}
+        for word, into in (("thickness", out.thickness), ("kerf", out.kerf)):
+            default = getattr(self.m, word, None)
+            for name, s in out.part_of.items():
+                t = next((getattr(a, word) for a in [s, *s.ancestors()]
+                          if getattr(a, word, None) is not None), default)
+                if t is not None:
+                    into[name] = float(t)
         return out
 
 
@@ -515,6 +524,19 @@ def slot_outline(a, b, r: float) -> list:
     p4 = (a[0] + r * nx, a[1] + r * ny)
     return [Line(p1, p2), Arc((b[0], b[1]), r, right, math.pi), Line(p3, p4),
             Arc((a[0], a[1]), r, right + math.pi, math.pi)]
+
+
+def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
+    """The exact outline of an arc slot: the center line is the counter-clockwise arc of
+    radius ``R`` about ``c`` from angle ``a1`` sweeping ``sweep`` (0..2 pi); the slot is
+    ``2 h`` wide: the outer arc (R + h), a half circle around the end, the inner arc (R - h)
+    back, a half circle around the start; counter-clockwise, every join tangent."""
+    a2 = a1 + sweep
+    cx, cy = c
+    end = (cx + R * math.cos(a2), cy + R * math.sin(a2))
+    start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
+    return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
+            Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
 
 
 def rounded_outline(corners, r: float) -> list:

@@ -166,7 +166,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                               "Circle, lines and arcs that close a loop around some area)")
 
 
-_CLOSED = {"Circle", "Slot", "Ellipse", "Rectangle", "RoundedRectangle", "Triangle", "Polygon",
+_CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
+           "Triangle", "Polygon",
            "RegularPolygon", "Trapezoid"}
 
 

@@ -39,7 +39,10 @@ def _segment_box(s) -> tuple[float, float, float, float]:
 
 def extent(output: Output) -> tuple[float, float, float, float]:
     """(x0, y0, x1, y1) in mm: the exact bounding box of every part loop and engraving stroke
-    of ``output``; (0, 0, 1, 1) when it has neither (as :meth:`~.part.Output.bounds`)."""
+    of ``output``; (0, 0, 1, 1) when it has neither (as :meth:`~.part.Output.bounds`).  An
+    output with a fixed :attr:`~.part.Output.page` (a cutting layout's sheet) gives the page."""
+    if output.page is not None:
+        return tuple(float(v) for v in output.page)
     x0 = y0 = math.inf
     x1 = y1 = -math.inf
     for segs in [lp.segments for p in output.parts for lp in p.loops] + \

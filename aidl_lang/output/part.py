@@ -70,11 +70,14 @@ class PartOutline:
 @dataclass
 class Stroke:
     """Engraving: an open or closed chain of segments (``style`` drawing | open), each
-    segment ending where the next starts (a laser runs it without lifting)."""
+    segment ending where the next starts (a laser runs it without lifting).  ``part``: the
+    name of the part whose structure (or an ancestor of it) holds the engraving, "" for one
+    at assembly level outside every part (a cutting layout moves it with that part)."""
     segments: list[Segment]
     style: str = "drawing"
     closed: bool = False
     source: str = ""
+    part: str = ""
 
 
 @dataclass
@@ -83,6 +86,8 @@ class Output:
     engrave: list[Stroke] = field(default_factory=list)
     title: str = ""
     drawing: Drawing | None = None     # the booleans' result (debug layers, checks)
+    # (x0, y0, x1, y1) mm: a fixed page (a cutting layout's sheet) instead of the extent
+    page: tuple | None = None
 
     @property
     def area(self) -> float:
@@ -140,7 +145,7 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
         if st.closed or not st.segments or any(isinstance(g, Circle) for g in st.segments):
             out.append(st)
             continue
-        key = (st.source, st.style)
+        key = (st.source, st.style, st.part)
         if key not in groups:
             groups[key] = []
             out.append(key)              # the group's place in the drawing order
@@ -150,9 +155,9 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
         if isinstance(item, Stroke):
             result.append(item)
             continue
-        source, style = item
+        source, style, part = item
         for chain, closed in _runs_of(groups[item], reverse):
-            result.append(Stroke(chain, style, closed, source))
+            result.append(Stroke(chain, style, closed, source, part))
     return result
 
 
@@ -212,12 +217,26 @@ def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
         t = thickness.get(p.name) if isinstance(thickness, dict) else thickness
         out.parts.append(PartOutline(p.name, p.kind, loops, t))
     strokes = []
+    owner = {s: name for name, s in drawing.part_of.items()}
     for style, item, g in drawing.strokes:
         st = _stroke(item, exact, style, g.label if g is not None else "")
         if st is not None:
+            st.part = _part_of(g, owner)
             strokes.append(st)
     out.engrave = _join(strokes)
     return out
+
+
+def _part_of(g, owner: dict) -> str:
+    """The part holding geometry ``g``: the nearest structure of ``g``'s owner and its
+    ancestors that is a part ("" when none is)."""
+    s = getattr(g, "owner", None)
+    if s is None:
+        return ""
+    for a in (s, *s.ancestors()):
+        if a in owner:
+            return owner[a]
+    return ""
 
 
 def _mesh_section(loops: list[Loop]):

@@ -28,6 +28,12 @@ SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
 CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
 HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
+# The preview's outline colours for the parts of an assembly, in order (Okabe and Ito's
+# palette for colour-blind readers, with black moved last): each part is drawn in its colour
+# over a fill of the same colour at PART_FILL_OPACITY, so overlapping parts stay visible.
+PALETTE = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#b8a200",
+           "#000000")
+PART_FILL_OPACITY = 0.18
 
 
 def _f(v: float) -> str:
@@ -88,6 +94,8 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     d0 = output.drawing
     if margin is not None and not 0 <= margin < math.inf:
         raise OutputError(f"the SVG margin must be a length of 0 mm or more, got {margin}")
+    if margin is None and output.page is not None:
+        margin = 0.0                 # a sheet: the page is the sheet
     x0, y0, x1, y1 = extent(output)
     if "construction" in show and d0 is not None:
         for _, item, _ in d0.construction:
@@ -114,11 +122,24 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     else:
         cut = d.g(id="cut", fill="#cfd8dc", stroke="#263238", stroke_width=_f(sw),
                   fill_rule="evenodd")
+    if output.page is not None and not laser:      # the sheet's edge (never in the laser style)
+        px0, py0, px1, py1 = output.page
+        gs = d.g(id="sheet", fill="none", stroke="#90a4ae", stroke_width=_f(sw))
+        gs.add(d.rect(insert=(_f(px0), _f(-py1)), size=(_f(px1 - px0), _f(py1 - py0))))
+        d.add(gs)
+    solids = [p for p in output.parts if p.kind == "solid"]
+    colour = {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)} \
+        if len(solids) > 1 and not laser else {}
     for p in output.parts:
         g = d.g(id=_id(p.name), **({"class_": p.kind}))
+        if len(output.parts) > 1:
+            g.set_desc(title=p.name)           # the part's name on hover
         if p.kind == "hole" and not laser:
             g.update({"fill": "none", "stroke": "#c62828",
                       "stroke_dasharray": f"{_f(4 * sw)},{_f(2 * sw)}"})
+        elif p.name in colour:
+            g.update({"fill": colour[p.name], "fill_opacity": _f(PART_FILL_OPACITY),
+                      "stroke": colour[p.name]})
         if laser:
             for lp in p.loops:
                 g.add(_element(d, lp.segments, True))

@@ -37,6 +37,8 @@ KEYWORD_DOCS = {
     "param": "`param NAME = value` — a model parameter, overridable with `--set NAME=VALUE`.",
     "def": "`def name(params) -> kind { ... }` — a template: a structure made by a call.",
     "for": "`for x in list { ... }` — repeat; names assigned inside become lists.",
+    "assert": "`assert cond, \"reason\"` — checked at the solved values, never solved for; "
+              "false is E0405.",
     "in": "`for x in list` / `[e for x in list]`.",
     "if": "`if cond { ... } else { ... }`, or `a if cond else b`.",
     "else": "the other branch of `if`.", "elif": "`else if`.",
@@ -107,14 +109,20 @@ _SEVERITY = {"error": T.DiagnosticSeverity.Error, "warning": T.DiagnosticSeverit
              "note": T.DiagnosticSeverity.Information}
 
 
-def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None) -> list[T.Diagnostic]:
+def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None,
+                values: dict[str, str] | None = None) -> list[T.Diagnostic]:
     """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP diagnostics.
 
     ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
-    another file (an import) are put on line 1 with their location in the message.
+    another file (an import) are put on line 1 with their location in the message.  When the
+    file solves and ``values`` is a dict, it receives the solved values of the named entities
+    (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`value_hover`.
     """
     from ...pipeline import compile_source
     res = compile_source(src, path, do_solve=solve)
+    if values is not None and res.ok and res.solve is not None and res.solve.converged:
+        from ...api import Result
+        values.update((v.name, v.text()) for v in Result(res, path, src).values)
     out = []
     for d in res.sink.items:
         msg = d.message
@@ -606,6 +614,57 @@ def hover(src: str, line: int, character: int, path: str = "doc.aidl") -> T.Hove
     if md is None:
         return None
     return T.Hover(contents=T.MarkupContent(kind=T.MarkupKind.Markdown, value=md), range=rng)
+
+
+def value_hover(src: str, line: int, character: int, values: dict[str, str],
+                path: str = "doc.aidl", limit: int = 8) -> str | None:
+    """Markdown of the solved values (``values``: name -> text, from :func:`diagnostics`) of
+    the entity named at the position: the dotted chain ending at the word (``shaft.boss``,
+    ``boss.center``, a structure's name); values of the entity itself (a point, a size) or one
+    level below it (a structure's ``origin`` and ``bbox``, a circle's ``center`` and
+    ``radius``).  Names made in loops (``corner[2]``) match without their index; when several
+    entities match, those inside the structure around the position come first.  None when
+    nothing matches."""
+    off = offset_at(src, line, character)
+    ls = src.rfind("\n", 0, off) + 1
+    le = src.find("\n", off)
+    text = src[ls:len(src) if le < 0 else le]
+    col = off - ls
+    chain = None
+    for m in re.finditer(r"[A-Za-z_]\w*(?:\s*\.\s*[A-Za-z_]\w*)*", text):
+        if m.start() <= col <= m.end():
+            words = [(w.start(), w.end(), w.group()) for w in re.finditer(r"[A-Za-z_]\w*", m.group())]
+            chain = [w for a, b, w in words if a + m.start() <= col] or [words[0][2]]
+            break
+    if not chain:
+        return None
+    chain = [w for w in chain if w != "self"]
+    if chain and chain[-1] == "bb":
+        chain[-1] = "bbox"
+    if not chain:
+        return None
+    key = ".".join(chain)
+
+    def norm(n: str) -> str:
+        return re.sub(r"\[\d+\]", "", n)
+
+    def at(n: str, k: str) -> bool:
+        return n == k or n.endswith("." + k)
+    hits = [n for n in values if at(norm(n), key)]
+    if not hits:
+        hits = [n for n in values if "." in n and at(norm(n).rsplit(".", 1)[0], key)]
+    if not hits:
+        return None
+    try:
+        enc = Index(src, path).enclosing_structure(off)
+    except Exception:
+        enc = None
+    if enc is not None:
+        inside = [n for n in hits if f".{enc.name}." in "." + norm(n)]
+        hits = inside or hits
+    shown = [values[n] for n in hits[:limit]]
+    more = f"\n... ({len(hits) - limit} more)" if len(hits) > limit else ""
+    return "solved:\n```\n" + "\n".join(shown) + more + "\n```"
 
 
 _SYM_KIND = {"param": T.CompletionItemKind.Constant, "template": T.CompletionItemKind.Function,

@@ -219,7 +219,16 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
 @_safe()
 def hover(ls: LanguageServer, params: T.HoverParams):
     src, path, line, ch = _at(ls, params)
-    return analysis.hover(src, line, ch, path)
+    h = analysis.hover(src, line, ch, path)
+    values = _analyzer.values.get(params.text_document.uri) if _analyzer is not None else None
+    solved = analysis.value_hover(src, line, ch, values, path) if values else None
+    if solved is None:
+        return h
+    if h is None:
+        return T.Hover(contents=T.MarkupContent(kind=T.MarkupKind.Markdown, value=solved))
+    return T.Hover(contents=T.MarkupContent(kind=T.MarkupKind.Markdown,
+                                            value=f"{h.contents.value}\n\n---\n{solved}"),
+                   range=h.range)
 
 
 @server.feature(T.TEXT_DOCUMENT_COMPLETION, T.CompletionOptions(trigger_characters=["."]))

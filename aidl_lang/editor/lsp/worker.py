@@ -5,7 +5,8 @@ The language server answers hover, completion and the rest on its event loop; th
 (parse, check, interpret, solve) can take long on an expensive program, and a Python thread
 cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.worker``, one
 JSON request per line on its stdin (``{"id", "text", "path", "uri", "solve"}``) and one JSON
-answer per line on its stdout (``{"id", "diagnostics": [...]}``, LSP diagnostics).
+answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}}``, LSP
+diagnostics and, when the document solves, its solved values for hover).
 
 :class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
 job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
@@ -46,8 +47,10 @@ def _serve() -> int:
     for line in sys.stdin:
         try:
             job = json.loads(line)
-            diags = diagnostics(job["text"], job["path"], job.get("solve", True), job.get("uri"))
-            answer = {"id": job["id"], "diagnostics": conv.unstructure(diags)}
+            values: dict[str, str] = {}
+            diags = diagnostics(job["text"], job["path"], job.get("solve", True), job.get("uri"),
+                                values)
+            answer = {"id": job["id"], "diagnostics": conv.unstructure(diags), "values": values}
         except Exception as e:        # answered, never a dead worker
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
                       "error": f"{type(e).__name__}: {e}"}
@@ -89,6 +92,7 @@ class Analyzer:
         self.restarts = 0
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
+        self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
 
     def start(self) -> None:
         """Adopt the worker started early (:func:`spawn`) or start one."""
@@ -165,7 +169,9 @@ class Analyzer:
                 from lsprotocol import converters
 
                 from .analysis import diagnostics
-                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri)
+                values: dict[str, str] = {}
+                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri, values)
+                self.values[uri] = values
                 return converters.get_converter().unstructure(d)
             self.seq += 1
             job = self.seq
@@ -195,6 +201,7 @@ class Analyzer:
                 self._proc0 = spawn()        # a warm spare, started once the first answer is in
         if "error" in answer:
             raise RuntimeError(answer["error"])
+        self.values[uri] = answer.get("values") or {}
         return answer["diagnostics"]
 
 

@@ -1,0 +1,512 @@
+"""The public Python API: compile an AIDL program and read what it made.
+
+>>> import aidl_lang
+>>> r = aidl_lang.compile(source="solid plate { body = Rectangle(center=(0, 0), width=40, height=20) }")
+>>> r.ok
+True
+>>> r.value("plate.body.width").text()
+'plate.body.width = 40.000 mm'
+>>> r.parts[0].bbox
+(-20.0, -10.0, 20.0, 10.0)
+
+Every front end (``aidl check``/``render``, the MCP server, editors) goes through
+:func:`compile` and :class:`Result`; docs/api.md describes them.  A mistake in the program is
+never an exception: it is a :class:`~aidl_lang.diagnostics.Diagnostic` in
+:attr:`Result.diagnostics` and ``ok`` is False.  Exceptions are kept for mistakes in the
+*call* (:class:`TypeError`, :class:`ValueError`), for asking a failed result for geometry
+(:class:`NotCompiled`), and for outputs that cannot be made or written
+(:class:`~aidl_lang.output.part.OutputError`, :class:`WriteError`).
+
+Units: the model is solved in millimetres and radians.  :attr:`Result.parts` and
+:meth:`Result.to_svg`/``write`` are in millimetres; :attr:`Result.values` are given in the
+file's own units (``units in`` / ``cm`` / ...; mm when the file declares none) and degrees,
+with the unit named in :attr:`Value.unit`.
+"""
+from __future__ import annotations
+
+import math
+import os
+import re
+from collections.abc import Iterable, Mapping
+from .records import dataclass
+from pathlib import Path
+from typing import Literal
+
+from .diagnostics import Diagnostic, DiagnosticSink
+from .limits import DEFAULT_BUDGET, Budget
+
+__all__ = ["compile", "Result", "Value", "PartInfo", "NotCompiled", "WriteError",
+           "check_output_path"]
+
+
+class NotCompiled(RuntimeError):
+    """Raised when a :class:`Result` whose program has errors is asked for geometry or an
+    output (``parts``, ``to_svg``, ``write``, ...); read :attr:`Result.diagnostics` instead."""
+
+
+class WriteError(OSError):
+    """An output file cannot be written where asked (the program itself, a directory, an
+    unknown extension, a folder that does not exist or is not writable); the message says
+    why."""
+
+
+@dataclass(frozen=True)
+class Value:
+    """One solved value of a named entity.
+
+    ``name``: the dotted path (``plate.corner[0].h.center``); ``kind``: ``point`` (``value`` is
+    ``(x, y)``), ``length`` or ``angle`` or ``number`` (a float), ``box`` (``(left, bottom,
+    right, top)``); ``unit``: the unit of ``value`` (the file's length unit, ``deg`` for
+    angles, ``""`` for plain numbers).  ``mm`` holds the same value in millimetres (or radians
+    for an angle): what the solver and the writers use."""
+
+    name: str
+    kind: Literal["point", "length", "angle", "number", "box"]
+    value: float | tuple[float, ...]
+    unit: str
+    mm: float | tuple[float, ...]
+
+    def text(self, digits: int = 3) -> str:
+        """``name = value unit``, e.g. ``plate.bore.c.center = (-25.000, -15.000) mm``."""
+        if isinstance(self.value, tuple):
+            v = "(" + ", ".join(f"{c:.{digits}f}" for c in self.value) + ")"
+        else:
+            v = f"{self.value:.{digits}f}"
+        return f"{self.name} = {v}" + (f" {self.unit}" if self.unit else "")
+
+    def to_json(self) -> dict:
+        """``{"name", "kind", "value", "unit", "mm"}``; tuples as lists."""
+        def j(v):
+            return list(v) if isinstance(v, tuple) else v
+        return {"name": self.name, "kind": self.kind, "value": j(self.value), "unit": self.unit,
+                "mm": j(self.mm)}
+
+
+@dataclass(frozen=True)
+class PartInfo:
+    """One part of the final shape (after the booleans), in millimetres.
+
+    ``name``: the structure's path; ``kind``: ``solid`` (or ``hole`` for a hole with no solid to
+    cut); ``bbox``: ``(x0, y0, x1, y1)``; ``area``: mm² (holes subtracted); ``holes``: the
+    number of inner loops (holes through the part); ``loops``: every loop (outer and inner)."""
+
+    name: str
+    kind: str
+    bbox: tuple[float, float, float, float]
+    area: float
+    holes: int
+    loops: int
+
+    def to_json(self) -> dict:
+        return {"name": self.name, "kind": self.kind, "bbox": list(self.bbox),
+                "area": self.area, "holes": self.holes, "loops": self.loops}
+
+
+_UNITS = re.compile(r"^[ \t]*units[ \t]+([A-Za-z]+)", re.M)
+
+
+def file_units(source: str) -> tuple[str, float]:
+    """The length unit a file declares (``units in``) and its size in mm; ``("mm", 1.0)``
+    when it declares none or an unknown one."""
+    from .registry import UNITS_LENGTH
+    for m in _UNITS.finditer(source):
+        u = m.group(1).lower()
+        if u in UNITS_LENGTH:
+            name = {"inch": "in", "inches": "in"}.get(u, u)
+            return name, UNITS_LENGTH[u]
+    return "mm", 1.0
+
+
+class Result:
+    """What :func:`compile` made.
+
+    Attributes: ``ok`` (no error diagnostics), ``diagnostics`` (every
+    :class:`~aidl_lang.diagnostics.Diagnostic`, errors and warnings, in the order found),
+    ``sink`` (the :class:`~aidl_lang.diagnostics.DiagnosticSink`: diagnostics and source texts,
+    for :meth:`diagnostics_json`), ``path`` (the file name diagnostics are located in),
+    ``source`` (the program text), ``units`` and ``unit_scale`` (the file's length unit and its
+    size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
+    solve, drawing)."""
+
+    def __init__(self, compiled, path: str, source: str | None) -> None:
+        self.compiled = compiled
+        self.sink: DiagnosticSink = compiled.sink
+        self.path = path
+        self.source = source
+        self.units, self.unit_scale = file_units(source or "")
+        self._values: list[Value] | None = None
+        self._output = None
+
+    # ------------------------------------------------------------------ status
+    @property
+    def ok(self) -> bool:
+        """True when the program has no errors (warnings allowed) and solved."""
+        return self.compiled.ok and self.compiled.drawing is not None
+
+    @property
+    def diagnostics(self) -> list[Diagnostic]:
+        return list(self.sink.items)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.sink.items if d.is_error]
+
+    def diagnostics_json(self) -> list[dict]:
+        """Every diagnostic in its JSON form (code, severity, message, span, labels, hint,
+        suggestions, fix, rendered text): the ``diagnostics`` of ``aidl check --json``."""
+        return [d.to_json(self.sink.sources) for d in self.sink.items]
+
+    def _need(self, what: str):
+        if self.compiled.model is None or self.compiled.solve is None \
+                or not self.compiled.solve.converged:
+            raise NotCompiled(f"no {what}: the program did not compile and solve "
+                              f"({len(self.errors)} errors; see .diagnostics)")
+
+    # ------------------------------------------------------------------ values
+    @property
+    def values(self) -> list[Value]:
+        """Every named entity's solved values (see :class:`Value`), in model order: for each
+        structure its frame ``origin`` and ``bbox``; for each named geometry its points
+        (``center``, ``start``, ``end``, corners; a rectangle's ``center`` too) and scalars
+        (``radius``, ``width``, ``height``, ...).  Raises :class:`NotCompiled` when the
+        program did not solve."""
+        self._need("values")
+        if self._values is None:
+            self._values = _values(self.compiled.model, self.unit_scale, self.units)
+        return self._values
+
+    def values_matching(self, names: Iterable[str] = ()) -> list[Value]:
+        """The :attr:`values` whose name is one of ``names`` or below one of them (a dotted
+        prefix: ``plate.corner`` covers ``plate.corner[0].h.center``); all of them when
+        ``names`` is empty.  The root structure's name may be left out."""
+        names = [n.strip() for n in names if n.strip()]
+        vals = self.values
+        if not names:
+            return list(vals)
+        root = self.compiled.model.root.name + "."
+        wanted = set()
+        for n in names:
+            wanted.add(n)
+            if not n.startswith(root):
+                wanted.add(root + n)
+        return [v for v in vals if any(_below(v.name, w) for w in wanted)]
+
+    def value(self, name: str) -> Value:
+        """The one value called ``name`` (exactly; the root's name may be left out).  Raises
+        :class:`KeyError` (with the nearest names) when there is none."""
+        for v in self.values:
+            if v.name == name or v.name == f"{self.compiled.model.root.name}.{name}":
+                return v
+        from .diagnostics import did_you_mean
+        near = did_you_mean(name, [v.name for v in self.values])
+        raise KeyError(f"no value `{name}`" + (f"; did you mean {', '.join(near)}?" if near else ""))
+
+    def freedom(self, detail: bool = False) -> dict:
+        """Degrees of freedom left after solving: ``{"dof": N or None (not counted: too
+        large), "text": "fully constrained" | "N degrees of freedom left, ..."}``; with
+        ``detail``, ``"structures"``: per structure ``{"structure", "unknowns", "dof",
+        "floating"}`` (entities still free to move; costs a null-space computation).  Raises
+        :class:`NotCompiled`."""
+        self._need("degrees of freedom")
+        from .solver.diagnose import degrees_of_freedom, freedom_text
+        dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail)
+        counted = all(d.rank >= 0 for d in dofs)
+        doc: dict = {"dof": sum(max(0, d.dof) for d in dofs) if counted else None,
+                     "text": freedom_text(dofs)}
+        if detail:
+            doc["structures"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
+                                  "dof": d.dof, "floating": list(d.floating)} for d in dofs]
+        return doc
+
+    # ------------------------------------------------------------------ outputs
+    @property
+    def output(self):
+        """The exact output model (:class:`~aidl_lang.output.part.Output`: lines, arcs and
+        circles per part, mm) every writer reads.  Raises :class:`NotCompiled`."""
+        self._need("output")
+        if self.compiled.drawing is None:
+            raise NotCompiled("no output: the solved model failed the extent check (E0305)")
+        if self._output is None:
+            from .output import build
+            self._output = build(self.compiled.drawing, self.compiled.model.root.name)
+        return self._output
+
+    @property
+    def parts(self) -> list[PartInfo]:
+        """The parts of the final shape (see :class:`PartInfo`).  Raises :class:`NotCompiled`."""
+        out = []
+        for p in self.output.parts:
+            bbox = exact_bbox(seg for lp in p.loops for seg in lp.segments)
+            inner = sum(1 for lp in p.loops if lp.area < 0)
+            out.append(PartInfo(p.name, p.kind, tuple(float(v) for v in bbox), float(p.area),
+                                inner, len(p.loops)))
+        return out
+
+    def encode(self, fmt: str, **options) -> bytes:
+        """The output in format ``fmt`` (``svg``, ``dxf``, ``png``, ``stl``, ``3mf``, ``step``;
+        a leading dot is allowed) as bytes.  ``options``: those of
+        :class:`~aidl_lang.output.formats.Options` (``show``, ``style``, ``dpi``, ``width``,
+        ``thickness`` mm, ``margin`` mm).  Raises :class:`ValueError` for an unknown format,
+        :class:`NotCompiled`, :class:`~aidl_lang.output.part.MissingDependency` (a format's
+        library is not installed) and :class:`~aidl_lang.output.part.OutputError`."""
+        from .output import FORMATS, Options, encode
+        suffix = "." + fmt.lower().lstrip(".")
+        if suffix not in FORMATS:
+            raise ValueError(f"unknown output format `{fmt}`; use one of "
+                             + ", ".join(sorted(f[1:] for f in FORMATS)))
+        return encode(self.output, suffix, Options(**options))
+
+    def to_svg(self, **options) -> str:
+        """The SVG text (mm page; ``options`` as for :meth:`encode`)."""
+        return self.encode("svg", **options).decode()
+
+    def to_png(self, **options) -> bytes:
+        """PNG bytes (``dpi`` default 96, or ``width`` in pixels; needs the ``png`` extra)."""
+        return self.encode("png", **options)
+
+    def to_dxf(self) -> str:
+        """The DXF text (R2010, mm, ``cut``/``engrave`` layers)."""
+        return self.encode("dxf").decode()
+
+    def write(self, path: str | os.PathLike, follow_symlinks: bool = False,
+              force: bool = False, **options) -> Path:
+        """Write the output to ``path``, the format by its extension, with the rules of
+        ``aidl render`` (docs/outputs.md, "Writing files"): never over the program itself,
+        never a directory, a symlink refused unless ``follow_symlinks`` (then written
+        through), a read-only file refused unless ``force``, written to a temporary file
+        beside it and renamed, a new file gets the umask's permissions.  Returns the path.
+        Raises :class:`WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
+        out = check_output_path(path, self.path, follow_symlinks, force)
+        data = self.encode(out.suffix, **options)
+        write_atomic(out, data, follow_symlinks)
+        return out
+
+    def to_json(self, values: Iterable[str] | None = None) -> dict:
+        """``{"ok", "diagnostics", "units", "values"?, "parts"?}``: ``values`` (those matching
+        ``values``, see :meth:`values_matching`) and ``parts`` only when the program solved."""
+        doc: dict = {"ok": self.ok, "diagnostics": self.diagnostics_json(), "units": self.units}
+        if self.ok:
+            if values is not None:
+                doc["values"] = [v.to_json() for v in self.values_matching(values)]
+            doc["parts"] = [p.to_json() for p in self.parts]
+        return doc
+
+    def __repr__(self) -> str:
+        return f"<aidl Result {self.path} ok={self.ok} diagnostics={len(self.sink.items)}>"
+
+
+def compile(source: str | None = None, path: str | os.PathLike | None = None,
+            overrides: Mapping[str, str | float] | None = None,
+            budget: float | Budget | None = None, min_wall: float = 0.5) -> Result:
+    """Compile an AIDL program: parse, check, interpret, solve, booleans and the shape checks.
+
+    Give ``source`` (the program text; ``path`` then only names it in diagnostics and is where
+    ``import "x.aidl"`` is resolved from) or ``path`` alone (the file is read as UTF-8).
+    ``overrides``: param values as ``aidl render --set`` takes them (``{"width": "40 mm"}``,
+    numbers are in the file's units).  ``budget``: a factor of the default evaluation budget
+    (``aidl --budget K``) or a :class:`~aidl_lang.limits.Budget`.  ``min_wall``: the W0507 wall
+    thickness in mm (0: off).
+
+    Never raises for a mistake in the program or an unreadable file (``E0004``): those are
+    diagnostics and ``ok`` is False.  Raises :class:`TypeError` when neither ``source`` nor
+    ``path`` is given, and :class:`ValueError` for a budget factor outside (0, 1000]."""
+    from .pipeline import compile_source
+    if source is None and path is None:
+        raise TypeError("compile() needs source= (the program text) or path= (a file)")
+    if budget is None:
+        b = DEFAULT_BUDGET
+    elif isinstance(budget, Budget):
+        b = budget
+    else:
+        k = float(budget)
+        if not 0 < k <= 1000:
+            raise ValueError(f"budget expects a factor between 0 and 1000, got {budget!r}")
+        b = DEFAULT_BUDGET.scaled(k)
+    name = os.fspath(path) if path is not None else "<source>"
+    if source is None:
+        try:
+            source = Path(name).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as e:
+            return _unreadable(name, e)
+    ov = {str(k): str(v) for k, v in (overrides or {}).items()}
+    return Result(compile_source(source, name, ov or None, min_wall=min_wall, budget=b),
+                  name, source)
+
+
+def _unreadable(name: str, e: Exception) -> Result:
+    from .pipeline import Compiled
+    sink = DiagnosticSink()
+    sink.add(Diagnostic("E0004", f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}",
+                        None, hint="check the file name"))
+    return Result(Compiled(sink), name, None)
+
+
+def exact_bbox(segments) -> tuple[float, float, float, float]:
+    """``(x0, y0, x1, y1)`` of exact lines, arcs and circles (an arc's extreme points where
+    it crosses an axis direction, not its chords); zeros when there are none."""
+    from .geometry.curves import Arc, Circle
+    xs: list[float] = []
+    ys: list[float] = []
+    for s in segments:
+        if isinstance(s, Circle):
+            (cx, cy), r = s.center, s.radius
+            xs += (cx - r, cx + r)
+            ys += (cy - r, cy + r)
+        elif isinstance(s, Arc):
+            (cx, cy), r = s.center, s.radius
+            a0, sw = s.start_angle, s.sweep
+            lo, hi = (a0, a0 + sw) if sw >= 0 else (a0 + sw, a0)
+            for a in (lo, hi):
+                xs.append(cx + r * math.cos(a))
+                ys.append(cy + r * math.sin(a))
+            k = math.ceil(lo / (math.pi / 2))
+            while k * math.pi / 2 <= hi:
+                a = k * math.pi / 2
+                xs.append(cx + r * round(math.cos(a)))
+                ys.append(cy + r * round(math.sin(a)))
+                k += 1
+        else:
+            for px, py in (s.start, s.end):
+                xs.append(px)
+                ys.append(py)
+    if not xs:
+        return (0.0, 0.0, 0.0, 0.0)
+    return (float(min(xs)), float(min(ys)), float(max(xs)), float(max(ys)))
+
+
+def _below(name: str, prefix: str) -> bool:
+    return name == prefix or name.startswith((prefix + ".", prefix + "["))
+
+
+# ------------------------------------------------------------------ solved values
+def _values(model, scale: float, unit: str) -> list[Value]:
+    from .geometry.bbox import numeric_box
+    x = model.x
+    xs = model.xs()
+    root = model.root
+    implicit = root.name == "model" and root.span is not None and root.span.start == 0
+
+    def name_of(s) -> str:
+        p = s.path
+        if implicit:
+            p = p[len("model"):].lstrip(".")
+        return p
+
+    def length(n, mm):
+        return Value(n, "length", mm / scale, unit, mm)
+
+    def point(n, px, py):
+        return Value(n, "point", (px / scale, py / scale), unit, (px, py))
+
+    out: list[Value] = []
+    for s in model.structures:
+        ox = oy = 0.0
+        t = s
+        while t is not None:
+            ox += x[t.fx]
+            oy += x[t.fy]
+            t = t.parent
+        base = name_of(s)
+        prefix = base + "." if base else ""
+        out.append(point(prefix + "origin", ox, oy))
+        box = numeric_box(s, None, xs)
+        if box is not None:
+            l, r, b, tp = (float(v) for v in box)
+            out.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
+                             unit, (l, b, r, tp)))
+        counts: dict[str, int] = {}
+        for g in s.geometry:
+            if g.name:
+                counts[g.name] = counts.get(g.name, 0) + 1
+        seen: dict[str, int] = {}
+        for g in s.geometry:
+            if not g.name:
+                continue
+            gname = g.name
+            if counts[g.name] > 1:
+                gname = f"{g.name}[{seen.get(g.name, 0)}]"
+                seen[g.name] = seen.get(g.name, 0) + 1
+            gp = prefix + gname
+            pts = {}
+            for pn, p in g.points.items():
+                pts[pn] = (x[p.ix] + ox, x[p.iy] + oy)
+            if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
+                a, c = pts["bottom_left"], pts["top_right"]
+                pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
+            for pn, (px, py) in pts.items():
+                out.append(point(f"{gp}.{pn}", px, py))
+            for sn, sc in g.scalars.items():
+                v = x[sc.index]
+                if sc.dim == "length":
+                    out.append(length(f"{gp}.{sn}", v))
+                elif sc.dim == "angle":
+                    out.append(Value(f"{gp}.{sn}", "angle", math.degrees(v), "deg", v))
+                else:
+                    out.append(Value(f"{gp}.{sn}", "number", v, "", v))
+    return out
+
+
+# ------------------------------------------------------------------ file safety
+def check_output_path(path: str | os.PathLike, program: str | None = None,
+                      follow_symlinks: bool = False, force: bool = False) -> Path:
+    """``path`` as an output file the way ``aidl render`` accepts it: a known extension, not a
+    directory, not the program ``program`` itself, not a symbolic link (unless
+    ``follow_symlinks``), not a read-only file (unless ``force``).  Raises
+    :class:`WriteError`."""
+    from .output import FORMATS
+    out = Path(path)
+    if out.suffix.lower() not in FORMATS:
+        raise WriteError(f"cannot tell the format of `{out}` from its extension; use one of "
+                         + ", ".join(sorted(FORMATS)))
+    if out.is_dir():
+        raise WriteError(f"`{out}` is a directory; give a file name, e.g. {out / 'part.svg'}")
+    real = os.path.realpath(out)
+    if program and os.path.exists(program) and os.path.exists(real) \
+            and os.path.samefile(real, program):
+        raise WriteError(f"`{out}` is the program being compiled; refusing to overwrite it")
+    if os.path.islink(out) and not follow_symlinks:
+        raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
+                         "(follow_symlinks=True writes the file it points to)")
+    import stat as S
+    try:
+        st = os.stat(real if follow_symlinks else out)
+    except OSError:
+        return out
+    if S.S_ISREG(st.st_mode) and not force and (
+            not st.st_mode & S.S_IWUSR or not os.access(real, os.W_OK)):
+        raise WriteError(f"`{out}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
+                         "to replace it (force=True replaces it)")
+    return out
+
+
+def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
+    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it; with
+    ``follow_symlinks`` a symlink is written through (its target replaced, the link kept),
+    else the path itself is replaced (a link planted after the check is never followed); a
+    new file gets ``0666 & ~umask``, an existing one keeps its mode.  Raises
+    :class:`WriteError`."""
+    import tempfile
+    target = Path(os.path.realpath(out)) if follow_symlinks else Path(os.path.abspath(out))
+    tmp = None
+    try:
+        try:
+            mode = os.stat(target).st_mode & 0o7777
+        except FileNotFoundError:
+            mask = os.umask(0)
+            os.umask(mask)
+            mode = 0o666 & ~mask
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                                   dir=str(target.parent))
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.chmod(tmp, mode)
+        os.replace(tmp, target)
+        tmp = None
+    except OSError as e:
+        raise WriteError(f"cannot write `{out}`: {e.strerror or e}") from None
+    finally:
+        if tmp is not None:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass

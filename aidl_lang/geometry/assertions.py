@@ -1,0 +1,73 @@
+"""``assert`` statements checked at the solved values (docs/language.md, "assert").
+
+The interpreter keeps each ``assert`` whose sides depend on the solve as an
+:class:`~.model.Assertion`; :func:`failed` evaluates them at the solution (box terms expanded
+there) and :func:`describe` says what was found.  A condition holds within :data:`TOL`
+(mm or radians), the solver's own accuracy being far finer.
+"""
+from __future__ import annotations
+
+import math
+
+from .bbox import collect, contains_bbox, exclusions, expand
+from .expr import evaluate
+from .model import Assertion, Model
+
+TOL = 1e-6
+
+
+def holds(op: str, left: float, right: float) -> bool:
+    """``left op right`` within :data:`TOL` (``<`` and ``>`` need a gap of more than TOL)."""
+    if not (math.isfinite(left) and math.isfinite(right)):
+        return False
+    d = left - right
+    return {"==": abs(d) <= TOL, "<=": d <= TOL, ">=": d >= -TOL,
+            "<": d < -TOL, ">": d > TOL}[op]
+
+
+def _show(v: float, dim, a: Assertion) -> str:
+    if dim == (1, 0):
+        return f"{v / a.scale:.6g} {a.unit}"
+    if dim == (0, 1):
+        return f"{math.degrees(v):.6g} deg"
+    return f"{v:.6g}"
+
+
+def describe(a: Assertion, found: list) -> str:
+    """The E0405 message: the condition, the user's reason and the values found
+    (``found``: ``(op, left, right, dim)`` of the sides that fail)."""
+    why = f" ({a.message})" if a.message else ""
+    parts = []
+    for op, l, r, dim in found[:3]:
+        parts.append(f"{_show(l, dim, a)} {op} {_show(r, dim, a)} is false")
+    return f"assertion failed: `{a.text}`{why}: " + "; ".join(parts)
+
+
+def _eval(e, x, exclude: set) -> float:
+    if isinstance(e, (int, float)):
+        return float(e)
+    if contains_bbox(e):
+        e = expand(e, x, exclude)
+    return float(evaluate(e, x))
+
+
+def failed(model: Model) -> list[tuple[Assertion, list]]:
+    """Each assertion that does not hold at ``model.x``, with its failing sides' values."""
+    out = []
+    if not model.assertions:
+        return out
+    x = model.xs()
+    for a in model.assertions:
+        bad = []
+        for op, le, re_, dim in a.sides:
+            terms: list = []
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    collect(side, terms)
+            exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
+            lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
+            if not holds(op, lv, rv):
+                bad.append((op, lv, rv, dim))
+        if bad:
+            out.append((a, bad))
+    return out

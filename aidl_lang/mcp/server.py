@@ -1,0 +1,148 @@
+"""``aidl mcp``: the Model Context Protocol server over stdio, on the official ``mcp`` SDK
+(``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
+
+Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
+``values``, ``explain``.  Resources: ``aidl://docs/language`` (the language reference),
+``aidl://docs/api``, ``aidl://prompt`` (the ``aidl prompt`` text, when the caller provides it),
+``aidl://stdlib/NAME`` and ``aidl://examples/NAME``.
+"""
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from pathlib import Path
+
+from mcp.server.mcpserver import Image, MCPServer
+from mcp.server.mcpserver.exceptions import ToolError
+from mcp_types import ToolAnnotations
+
+from . import tools as T
+
+INSTRUCTIONS = """AIDL is a text language for 2D CAD parts (laser cutting, CNC): named \
+structures (solid, hole, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
+constraints that a solver satisfies. Read aidl://prompt for the vocabulary and examples, or \
+aidl://docs/language for the full reference. Write a program, call `check` until it reports \
+ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
+more), then `render` to see it and `values` to read exact positions and sizes. Paths are \
+relative to the server's allowed folder; nothing outside it can be read or written."""
+
+_PKG = Path(__file__).resolve().parent.parent
+_DOCS = _PKG.parent / "docs"
+_EXAMPLES = _PKG.parent / "examples"
+
+
+def _text_of(path: Path, what: str) -> Callable[[], str]:
+    def read() -> str:
+        try:
+            return path.read_text(encoding="utf-8")
+        except OSError:
+            return f"({what} is not installed with this copy of aidl: see docs in the source " \
+                   "repository)"
+    return read
+
+
+def _json(doc: dict) -> str:
+    return json.dumps(doc, indent=1)
+
+
+def build_server(root: str, budget: float = 1.0,
+                 prompt: Callable[[], str] | None = None) -> MCPServer:
+    """The server for the allowed folder ``root`` with ``budget`` (a factor of the default
+    evaluation budget) as each call's default; ``prompt``: a function that returns the
+    ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
+    ws = T.Workspace(root, budget)
+    server = MCPServer("aidl", instructions=INSTRUCTIONS)
+
+    def refused(e: Exception) -> ToolError:
+        return ToolError(str(e))
+
+    # hints for hosts: check, values and explain only read; render writes only when given
+    # `output` (never outside the root); nothing reaches the network
+    reads = ToolAnnotations(read_only_hint=True, idempotent_hint=True, open_world_hint=False)
+    writes = ToolAnnotations(read_only_hint=False, destructive_hint=True, idempotent_hint=True,
+                             open_world_hint=False)
+
+    @server.tool(structured_output=False, annotations=reads)
+    def check(source: str | None = None, path: str | None = None,
+              overrides: dict[str, str] | None = None, dof: bool = False,
+              budget: float | None = None) -> str:
+        """Parse, check and solve an AIDL program; write nothing.
+
+        Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder).
+        `overrides` sets params like `aidl --set` ({"width": "40 mm"}); `dof` adds degrees of
+        freedom per structure; `budget` multiplies the evaluation budget (at most 4).
+        Returns JSON: ok, diagnostics (code, severity, message, span with 1-based line and
+        column, labels, hint, suggestions, fix), solve statistics, freedom (degrees of freedom
+        left) and parts (name, kind, bbox [x0, y0, x1, y1] mm, area mm2, holes)."""
+        try:
+            return _json(T.check(ws, source, path, overrides, dof, budget))
+        except T.Refused as e:
+            raise refused(e) from None
+
+    @server.tool(structured_output=False, annotations=writes)
+    def render(source: str | None = None, path: str | None = None, output: str | None = None,
+               width: int = 800, overrides: dict[str, str] | None = None,
+               style: str = "preview", budget: float | None = None) -> list:
+        """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
+        JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
+        inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
+        .png, .stl, .3mf).  `style`: preview (filled) or laser (hairlines).  When the program
+        has errors there is no picture, only the diagnostics."""
+        try:
+            doc, png = T.render(ws, source, path, output, width, overrides, budget, style)
+        except T.Refused as e:
+            raise refused(e) from None
+        return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]
+
+    @server.tool(structured_output=False, annotations=reads)
+    def values(source: str | None = None, path: str | None = None,
+               names: list[str] | None = None, overrides: dict[str, str] | None = None,
+               budget: float | None = None) -> str:
+        """The solved values of named entities, in the file's units: each structure's frame
+        origin and bounding box, each named geometry's points (center, start, end, corners)
+        and sizes (radius, width, height).  `names` filters by dotted prefix (e.g.
+        ["plate.bore", "plate.body.width"]); the root structure's name may be left out.
+        Returns JSON: ok, units, values [{name, kind, value, unit, mm}] and text (one
+        `name = value unit` line each)."""
+        try:
+            return _json(T.values(ws, source, path, names, overrides, budget))
+        except T.Refused as e:
+            raise refused(e) from None
+
+    @server.tool(structured_output=False, annotations=reads)
+    def explain(code: str) -> str:
+        """What a diagnostic code (E0103, W0402, ...) means, with an example."""
+        try:
+            return T.explain(code)
+        except T.Refused as e:
+            raise refused(e) from None
+
+    server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
+                    description="The AIDL language reference (docs/language.md)")(
+        _text_of(_DOCS / "language.md", "docs/language.md"))
+    server.resource("aidl://docs/api", name="Python API", mime_type="text/markdown",
+                    description="The Python API and the solved values (docs/api.md)")(
+        _text_of(_DOCS / "api.md", "docs/api.md"))
+    if prompt is not None:
+        server.resource("aidl://prompt", name="system prompt", mime_type="text/plain",
+                        description="`aidl prompt`: the vocabulary with signatures, and "
+                                    "example programs")(lambda: prompt())
+    from ..sources import STDLIB
+    for f in sorted(Path(STDLIB).glob("**/*.aidl")):
+        rel = f.relative_to(STDLIB).as_posix()
+        server.resource(f"aidl://stdlib/{rel}", name=f"std/{rel}", mime_type="text/plain",
+                        description=f"standard library module: import \"std/{rel}\"")(
+            _text_of(f, f"std/{rel}"))
+    if _EXAMPLES.is_dir():
+        for f in sorted(_EXAMPLES.glob("**/*.aidl")):
+            rel = f.relative_to(_EXAMPLES).as_posix()
+            server.resource(f"aidl://examples/{rel}", name=f"example {rel}",
+                            mime_type="text/plain", description="an example program")(
+                _text_of(f, f"examples/{rel}"))
+    return server
+
+
+def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:
+    """Serve over stdin/stdout until the client closes them."""
+    build_server(root, budget, prompt).run("stdio")
+    return 0

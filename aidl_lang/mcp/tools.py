@@ -1,0 +1,161 @@
+"""What the MCP tools do, without the protocol: plain functions over :mod:`aidl_lang.api`
+that the server (:mod:`.server`) exposes.  Each takes a :class:`Workspace` (the allowed
+folder) and returns JSON-ready dicts, or raises :class:`Refused` for a request the server must
+turn down (a path outside the folder, both or neither of ``source``/``path``, a budget out of
+range).  A mistake in the *program* is never an exception: it is in ``diagnostics``.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from ..api import NotCompiled, Result, WriteError, compile as compile_program
+
+MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
+MAX_SOURCE = 1_000_000    # characters of program text per call
+MAX_PNG_WIDTH = 4096      # pixels
+
+
+class Refused(Exception):
+    """The request is turned down; the message says why (shown to the agent as a tool
+    error)."""
+
+
+class Workspace:
+    """The one folder a server may read and write: ``root`` (resolved, real path).
+    :meth:`inside` resolves a path given by the agent (relative to the root) and refuses
+    anything whose real path (symlinks followed) is outside it."""
+
+    def __init__(self, root: str | os.PathLike, budget: float = 1.0) -> None:
+        self.root = Path(os.path.realpath(root))
+        if not self.root.is_dir():
+            raise NotADirectoryError(f"`{root}` is not a folder")
+        self.budget = budget
+
+    def inside(self, path: str, must_exist: bool = False) -> Path:
+        """The real path of ``path`` (relative to the root, or absolute), checked to be inside
+        the root.  Raises :class:`Refused`."""
+        if not isinstance(path, str) or not path or "\x00" in path:
+            raise Refused("give a path as a non-empty string")
+        p = Path(path)
+        if not p.is_absolute():
+            p = self.root / p
+        real = Path(os.path.realpath(p))
+        if real != self.root and self.root not in real.parents:
+            raise Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
+                          "--root); only files inside it can be read or written")
+        if must_exist and not real.is_file():
+            raise Refused(f"`{path}` is not a file in {self.root}")
+        return real
+
+    def relative(self, p: Path | str) -> str:
+        try:
+            return str(Path(p).relative_to(self.root))
+        except ValueError:
+            return str(p)
+
+    def compile(self, source: str | None, path: str | None,
+                overrides: dict | None = None, budget: float | None = None) -> Result:
+        """Compile ``source`` (named by ``path`` if given, else ``untitled.aidl`` in the root:
+        imports resolve from there, in the sandbox of the importing file's folder) or the file
+        ``path``.  Raises :class:`Refused`."""
+        if (source is None) == (path is None):
+            raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
+                          "inside the allowed folder)")
+        k = self.budget if budget is None else budget
+        if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
+            raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
+                          f"{MAX_BUDGET:g}; got {budget!r}")
+        if overrides is not None and not isinstance(overrides, dict):
+            raise Refused("overrides maps param names to values, e.g. {\"width\": \"40 mm\"}")
+        if source is not None:
+            if len(source) > MAX_SOURCE:
+                raise Refused(f"the program is longer than {MAX_SOURCE} characters")
+            return compile_program(source=source, path=str(self.root / "untitled.aidl"),
+                                   overrides=overrides, budget=k)
+        real = self.inside(path, must_exist=True)
+        return compile_program(path=real, overrides=overrides, budget=k)
+
+
+def _summary(ws: Workspace, r: Result) -> dict:
+    doc: dict = {"ok": r.ok, "diagnostics": r.diagnostics_json(), "units": r.units}
+    s = r.compiled.solve
+    if s is not None:
+        doc["solve"] = {"converged": s.converged, "iterations": s.iterations,
+                        "unknowns": s.n_unknowns, "equations": s.n_equations,
+                        "max_residual": s.max_residual}
+    if not r.ok:
+        n = len(r.errors)
+        doc["summary"] = f"{n} error{'s' if n != 1 else ''}: " + "; ".join(
+            f"{d.code} line {d.span.line if d.span else '-'}: {d.message}" for d in r.errors[:5])
+    return doc
+
+
+def check(ws: Workspace, source: str | None = None, path: str | None = None,
+          overrides: dict | None = None, dof: bool = False,
+          budget: float | None = None) -> dict:
+    """``{"ok", "diagnostics" (JSON, with spans and fixes), "units", "solve", "freedom",
+    "parts"}`` (the last two when the program solved; ``freedom`` per structure with
+    ``dof``)."""
+    r = ws.compile(source, path, overrides, budget)
+    doc = _summary(ws, r)
+    if r.ok:
+        doc["freedom"] = r.freedom(detail=bool(dof))
+        doc["parts"] = [p.to_json() for p in r.parts]
+    return doc
+
+
+def values(ws: Workspace, source: str | None = None, path: str | None = None,
+           names: list[str] | None = None, overrides: dict | None = None,
+           budget: float | None = None) -> dict:
+    """``{"ok", "units", "values": [{"name", "kind", "value", "unit", "mm"}], "text"}`` for the
+    names at or below ``names`` (all when empty); the diagnostics when it did not solve."""
+    r = ws.compile(source, path, overrides, budget)
+    if not r.ok:
+        return _summary(ws, r)
+    vals = r.values_matching(names or [])
+    return {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
+            "text": "\n".join(v.text() for v in vals) or
+            f"no value matches {' '.join(names or [])}"}
+
+
+def render(ws: Workspace, source: str | None = None, path: str | None = None,
+           output: str | None = None, width: int = 800, overrides: dict | None = None,
+           budget: float | None = None, style: str = "preview") -> tuple[dict, bytes | None]:
+    """Compile and draw: ``(summary, png)``; ``png`` is ``width`` pixels wide (None when the
+    program has errors).  ``output``: also write the drawing there (``.svg``, ``.dxf``,
+    ``.png``, ...; inside the allowed folder, with ``aidl render``'s file safety)."""
+    if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
+        raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
+    if style not in ("preview", "laser"):
+        raise Refused("style is `preview` or `laser`")
+    target = ws.inside(output) if output is not None else None
+    r = ws.compile(source, path, overrides, budget)
+    doc = _summary(ws, r)
+    if not r.ok:
+        return doc, None
+    from ..output import MissingDependency, OutputError
+    try:
+        png = r.to_png(width=width, style=style)
+        if target is not None:
+            prog = None if path is None else str(ws.inside(path))
+            from ..api import check_output_path, write_atomic
+            out = check_output_path(target, prog)
+            write_atomic(out, r.encode(out.suffix, style=style))
+            doc["written"] = ws.relative(out)
+    except (MissingDependency, OutputError, WriteError, NotCompiled) as e:
+        raise Refused(str(e)) from None
+    doc["parts"] = [p.to_json() for p in r.parts]
+    doc["image"] = {"format": "png", "width": width}
+    return doc, png
+
+
+def explain(code: str) -> str:
+    """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
+    an unknown code, naming the known ones."""
+    from ..codes import CODES
+    c = (code or "").strip().upper()
+    if c not in CODES:
+        raise Refused(f"unknown code `{code}`; known codes: {', '.join(sorted(CODES))}")
+    title, text = CODES[c]
+    return f"{c}: {title}\n\n{text.strip()}"

@@ -1,0 +1,267 @@
+"""Cutting layouts: an assembly's parts placed flat on sheets, and kerf compensation
+(docs/outputs.md, "Cutting an assembly").
+
+:func:`lay_out` maps an :class:`~.part.Output` to one laid-out ``Output`` per sheet.  Every
+solid part is placed once, by a rigid motion (a rotation about the origin, then a
+translation) applied to each of its exact segments: a line's ends, an arc's center (its start
+angle turned by the rotation; radius and sweep kept), a circle's center.  Nothing is
+re-tessellated, so a placed part is the designed part to floating-point accuracy.  Engraving
+moves with the part that holds it; engraving outside every part (an illustration at assembly
+level) is left out.
+
+Where the parts go is decided by true-shape nesting: ``spyrrow`` (Python bindings of
+*sparrow*, the state-of-the-art strip packer built on the *jagua-rs* collision engine; MIT,
+wheels for CPython 3.10+), in the ``layout`` extra.  Each part is given to it as its outer
+outline cut into chords and grown by ``gap / 2`` plus :data:`SAFETY` (Manifold offset with
+miter joins, which contains the round offset, so the grown polygon holds the exact curves and
+the gap); it packs these polygons in a strip as high as the sheet.  Parts that end past the
+sheet's width go to the next sheet, where the packer runs again on those that are left (any
+subset of a packing is a packing, so every sheet is valid).  Holes are not used to nest small
+parts (the packer takes outer outlines only).
+
+:func:`compensate` offsets every cut by half the kerf (:func:`~..geometry.offset.offset_loop`).
+"""
+from __future__ import annotations
+
+import math
+
+from ..geometry.curves import Arc, Circle, Line, Loop
+from ..geometry.offset import OffsetError, offset_loop
+from .extent import _segment_box
+from .part import MissingDependency, Output, OutputError, PartOutline, Stroke
+
+SAFETY = 0.01        # mm added to the gap around each part: chords, the packer's f32 positions
+INSTALL = "pip install 'aidl-lang[layout]'"
+
+
+class LayoutError(OutputError):
+    """The parts cannot be laid out as asked (a part larger than the sheet, a kerf larger than
+    a feature); the message names the part."""
+
+
+# ------------------------------------------------------------------ rigid motions
+def _rotation(deg: float) -> tuple[float, float]:
+    """(cos, sin) of ``deg`` degrees, exact at multiples of 90."""
+    q, r = divmod(deg, 90.0)
+    if r == 0.0:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(q) % 4]
+    a = math.radians(deg)
+    return math.cos(a), math.sin(a)
+
+
+class Motion:
+    """``p -> R(deg) (p - about) + to``: a rotation by ``deg`` degrees about ``about``, then a
+    translation that takes ``about`` to ``to`` (mm)."""
+
+    def __init__(self, deg: float = 0.0, about=(0.0, 0.0), to=(0.0, 0.0)):
+        self.deg = deg
+        self.cs, self.sn = _rotation(deg)
+        self.about = (float(about[0]), float(about[1]))
+        self.to = (float(to[0]), float(to[1]))
+
+    def point(self, p):
+        x, y = p[0] - self.about[0], p[1] - self.about[1]
+        return (self.cs * x - self.sn * y + self.to[0], self.sn * x + self.cs * y + self.to[1])
+
+    def segment(self, s):
+        if isinstance(s, Line):
+            return Line(self.point(s.start), self.point(s.end))
+        if isinstance(s, Circle):
+            return Circle(self.point(s.center), s.radius, s.ccw)
+        return Arc(self.point(s.center), s.radius, s.start_angle + math.radians(self.deg),
+                   s.sweep)
+
+    def loop(self, lp: Loop) -> Loop:
+        return Loop([self.segment(s) for s in lp.segments])
+
+    def part(self, p: PartOutline) -> PartOutline:
+        return PartOutline(p.name, p.kind, [self.loop(lp) for lp in p.loops], p.thickness)
+
+    def stroke(self, st: Stroke) -> Stroke:
+        return Stroke([self.segment(s) for s in st.segments], st.style, st.closed, st.source,
+                      st.part)
+
+
+def part_box(p: PartOutline) -> tuple[float, float, float, float]:
+    """The exact bounding box (x0, y0, x1, y1, mm) of a part's loops."""
+    x0 = y0 = math.inf
+    x1 = y1 = -math.inf
+    for lp in p.loops:
+        for s in lp.segments:
+            a, b, c, d = _segment_box(s)
+            x0, y0, x1, y1 = min(x0, a), min(y0, b), max(x1, c), max(y1, d)
+    return x0, y0, x1, y1
+
+
+# ------------------------------------------------------------------ kerf
+def compensate(output: Output, kerf) -> Output:
+    """``output`` with every cut of its solid parts offset by half the kerf: outer loops
+    outward, holes inward, so the parts come out at their designed size.  ``kerf``: mm for
+    every part, or a dict part name -> mm (parts missing from it are not offset).  Engraving
+    is not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
+    than the offset."""
+    parts = []
+    for p in output.parts:
+        k = kerf.get(p.name, 0.0) if isinstance(kerf, dict) else kerf
+        if p.kind != "solid" or not k:
+            parts.append(p)
+            continue
+        try:
+            loops = [offset_loop(lp, k / 2) for lp in p.loops]
+        except OffsetError as e:
+            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}") from None
+        parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
+    return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
+
+
+# ------------------------------------------------------------------ nesting
+def parse_rotate(text: str):
+    """``0,90`` -> (0.0, 90.0); ``any`` -> None (free rotation).  Raises ValueError."""
+    t = text.strip().lower()
+    if t == "any":
+        return None
+    out = []
+    for w in t.split(","):
+        a = float(w)
+        if not math.isfinite(a):
+            raise ValueError(w)
+        out.append(a % 360.0)
+    if not out:
+        raise ValueError(text)
+    return tuple(dict.fromkeys(out))
+
+
+def _outline(p: PartOutline, grow: float):
+    """The part's outer outline grown by ``grow`` mm, as an N x 2 array of points that
+    contains the exact curves (one outline: the hull when the part has several)."""
+    import manifold3d as mf
+    import numpy as np
+    outer = [lp.points().tolist() for lp in p.loops if not lp.is_hole]
+    outer = [q for q in outer if len(q) >= 3]
+    cs = mf.CrossSection(outer, mf.FillRule.NonZero)
+    if len(outer) > 1:
+        cs = cs.hull()
+    cs = cs.offset(grow, mf.JoinType.Miter, 2.0)
+    polys = [np.asarray(q, dtype=float) for q in cs.to_polygons()]
+    best = max(polys, key=lambda q: abs(_shoelace(q)))
+    if len(polys) > 1:              # several pieces: their hull holds them all
+        best = np.asarray(mf.CrossSection(polys, mf.FillRule.NonZero).hull().to_polygons()[0])
+    return best
+
+
+def _shoelace(q) -> float:
+    x, y = q[:, 0], q[:, 1]
+    return 0.5 * float((x * (list(y[1:]) + [y[0]])).sum() - (y * (list(x[1:]) + [x[0]])).sum())
+
+
+def _fits(pts, w: float, h: float, angles) -> bool:
+    import numpy as np
+    for deg in (angles if angles is not None else [float(a) for a in range(180)]):
+        cs, sn = _rotation(deg)
+        x = cs * pts[:, 0] - sn * pts[:, 1]
+        y = sn * pts[:, 0] + cs * pts[:, 1]
+        if np.ptp(x) <= w and np.ptp(y) <= h:
+            return True
+    return False
+
+
+def _nest(shapes: dict, height: float, angles, seconds: int, seed: int):
+    """spyrrow's strip packing of ``shapes`` (id -> points) in a strip ``height`` high:
+    id -> (rotation in degrees, translation)."""
+    import spyrrow
+    items = [spyrrow.Item(k, [tuple(map(float, q)) for q in pts], 1,
+                          None if angles is None else list(angles))
+             for k, pts in shapes.items()]
+    inst = spyrrow.StripPackingInstance("aidl", float(height), items)
+    if seconds > 0:
+        cfg = spyrrow.StripPackingConfig(early_termination=True, total_computation_time=seconds,
+                                         seed=seed)
+    else:
+        cfg = spyrrow.StripPackingConfig(early_termination=True, total_computation_time=None,
+                                         exploration_time=0, compression_time=0, seed=seed,
+                                         num_workers=1)
+    sol = inst.solve(cfg)
+    return {it.id: (float(it.rotation), tuple(map(float, it.translation)))
+            for it in sol.placed_items}
+
+
+def lay_out(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
+            seconds: int = 0, seed: int = 0) -> tuple[list[Output], int]:
+    """Every solid part of ``output`` placed once on sheets ``sheet`` = (width, height) mm:
+    :func:`place` of :func:`plan`.  Returns one Output per sheet (its page is the sheet: (0, 0)
+    to (width, height)) and the number of engraving strokes left out (outside every part)."""
+    return place(output, plan(output, sheet, gap, rotate, seconds, seed), sheet)
+
+
+def place(output: Output, where: list[dict], sheet) -> tuple[list[Output], int]:
+    """``output``'s parts moved as :func:`plan` says (``where``: one dict part name ->
+    :class:`Motion` per sheet), with the engraving of each part; parts the plan does not name
+    are left out.  Returns one Output per sheet and the number of engraving strokes left out."""
+    W, H = float(sheet[0]), float(sheet[1])
+    by_name = {p.name: p for p in output.parts}
+    outs = []
+    n = len(where)
+    for j, moves in enumerate(where):
+        parts = [m.part(by_name[name]) for name, m in moves.items()]
+        strokes = [moves[st.part].stroke(st) for st in output.engrave if st.part in moves]
+        title = output.title + (f" (sheet {j + 1} of {n})" if n > 1 else "")
+        outs.append(Output(parts, strokes, title, None, (0.0, 0.0, W, H)))
+    placed = {name for moves in where for name in moves}
+    dropped = sum(1 for st in output.engrave if st.part not in placed)
+    return outs, dropped
+
+
+def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
+         seconds: int = 0, seed: int = 0) -> list[dict]:
+    """Where every solid part of ``output`` goes: one dict part name -> :class:`Motion` per
+    sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
+    from the sheet's edges, turned only by the angles of ``rotate`` (degrees; None: any
+    angle).  ``seconds``: the packer's time to improve its first packing (0: the first
+    packing, a fraction of a second).  Raises :class:`MissingDependency` without spyrrow and
+    :class:`LayoutError` for a part larger than the sheet."""
+    try:
+        import spyrrow  # noqa: F401
+    except ImportError as e:
+        raise MissingDependency(f"cutting layouts need spyrrow for true-shape nesting "
+                                f"({e}): {INSTALL}") from None
+    W, H = float(sheet[0]), float(sheet[1])
+    inset = gap / 2
+    Wu, Hu = W - 2 * inset, H - 2 * inset
+    solids = [p for p in output.parts if p.kind == "solid"]
+    shapes, about = {}, {}
+    for i, p in enumerate(solids):
+        pts = _outline(p, gap / 2 + SAFETY)
+        c = ((pts[:, 0].min() + pts[:, 0].max()) / 2, (pts[:, 1].min() + pts[:, 1].max()) / 2)
+        pts = pts - c
+        if not _fits(pts, Wu, Hu, rotate):
+            x0, y0, x1, y1 = part_box(p)
+            turn = "turned by any angle" if rotate is None else \
+                "at " + ", ".join(f"{a:g}" for a in rotate) + " degrees"
+            raise LayoutError(
+                f"part `{p.name}` ({x1 - x0:.6g} x {y1 - y0:.6g} mm) does not fit on the "
+                f"{W:g} x {H:g} mm sheet {turn} with a {gap:g} mm gap: use a larger --sheet"
+                + (" or a smaller --gap" if rotate is None else
+                   ", a smaller --gap, or --rotate any"))
+        shapes[str(i)] = pts
+        about[str(i)] = c
+    sheets: list[list[tuple[int, Motion]]] = []
+    left = dict(shapes)
+    while left:
+        placed = _nest(left, Hu, rotate, seconds, seed)
+        here = []
+        for k, (deg, (tx, ty)) in placed.items():
+            cs, sn = _rotation(deg)
+            pts = left[k]
+            xs = cs * pts[:, 0] - sn * pts[:, 1] + tx
+            ys = sn * pts[:, 0] + cs * pts[:, 1] + ty
+            if xs.max() <= Wu + 1e-3 and ys.max() <= Hu + 1e-3 and \
+                    xs.min() >= -1e-3 and ys.min() >= -1e-3:
+                here.append((int(k), Motion(deg, about[k], (tx + inset, ty + inset))))
+        if not here:                   # nothing ended inside: the largest part on its own
+            k = max(left, key=lambda k: abs(_shoelace(left[k])))
+            deg, (tx, ty) = _nest({k: left[k]}, Hu, rotate, seconds, seed)[k]
+            here = [(int(k), Motion(deg, about[k], (tx + inset, ty + inset)))]
+        for i, _ in here:
+            del left[str(i)]
+        sheets.append(sorted(here, key=lambda t: t[0]))
+    return [{solids[i].name: m for i, m in placed} for placed in sheets]

@@ -1,0 +1,169 @@
+"""The public Python API (`aidl_lang.compile`, docs/api.md) and `aidl check --values`: solved
+values in the file's units, parts, outputs and file safety, checked against the real writers
+(the DXF re-read with ezdxf)."""
+import io
+import json
+import os
+import re
+import subprocess
+import sys
+
+import ezdxf
+import pytest
+
+import aidl_lang
+from aidl_lang.api import NotCompiled, WriteError
+from conftest import ROOT
+
+PLATE = ROOT / "examples" / "mounting_plate.aidl"
+
+GOOD = """units in
+param width = 4
+solid plate {
+    body = Rectangle(center=(0, 0), width=width, height=2)
+    hole bore { c = Circle(center=(1, 0.5), radius=0.25) }
+}
+"""
+
+BAD = """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    c = Circel(center=(0, 0), radius=5)
+}
+"""
+
+
+def aidl(*args):
+    env = dict(os.environ, NO_COLOR="1")
+    env.pop("AIDL_DEBUG", None)
+    return subprocess.run([sys.executable, "-m", "aidl_lang.cli", *map(str, args)],
+                          capture_output=True, text=True, cwd=ROOT, env=env, timeout=120)
+
+
+def test_compile_source_values_in_file_units():
+    r = aidl_lang.compile(source=GOOD)
+    assert r.ok and r.units == "in" and r.diagnostics == []
+    assert r.value("plate.body.width").text() == "plate.body.width = 4.000 in"
+    c = r.value("plate.bore.c.center")
+    assert c.kind == "point" and c.value == pytest.approx((1, 0.5))
+    assert c.mm == pytest.approx((25.4, 12.7))
+    assert r.value("plate.bore.c.radius").mm == pytest.approx(6.35)
+    assert r.value("plate.bbox").value == pytest.approx((-2, -1, 2, 1))
+    assert [v.name for v in r.values_matching(["plate.bore"])] == [
+        "plate.bore.origin", "plate.bore.bbox", "plate.bore.c.center", "plate.bore.c.radius"]
+    with pytest.raises(KeyError, match="did you mean"):
+        r.value("plate.bore.c.radiu")
+
+
+def test_parts_and_overrides():
+    r = aidl_lang.compile(source=GOOD, overrides={"width": 6})
+    [p] = r.parts
+    assert p.name == "plate" and p.kind == "solid" and p.holes == 1 and p.loops == 2
+    assert p.bbox == pytest.approx((-76.2, -25.4, 76.2, 25.4))
+    assert p.area == pytest.approx(6 * 2 * 25.4 ** 2 - 3.141592653589793 * 6.35 ** 2)
+
+
+def test_errors_are_diagnostics_not_exceptions(tmp_path):
+    r = aidl_lang.compile(source=BAD, path="bad.aidl")
+    assert not r.ok
+    [d] = r.errors
+    assert d.code == "E0103" and d.span.line == 3 and d.fix.replacement == "Circle"
+    assert r.diagnostics_json()[0]["span"]["file"] == "bad.aidl"
+    with pytest.raises(NotCompiled):
+        r.parts
+    with pytest.raises(NotCompiled):
+        r.to_svg()
+    missing = aidl_lang.compile(path=tmp_path / "nope.aidl")
+    assert not missing.ok and missing.errors[0].code == "E0004"
+    with pytest.raises(TypeError):
+        aidl_lang.compile()
+    with pytest.raises(ValueError):
+        aidl_lang.compile(source=GOOD, budget=0)
+    assert aidl_lang.compile(source=GOOD, budget=2).ok
+
+
+def test_outputs_and_write_safety(tmp_path):
+    prog = tmp_path / "p.aidl"
+    prog.write_text(GOOD)
+    r = aidl_lang.compile(path=prog)
+    assert r.to_svg().lstrip().startswith("<?xml") or "<svg" in r.to_svg()
+    png = r.to_png(width=200)
+    assert png[:8] == b"\x89PNG\r\n\x1a\n" and int.from_bytes(png[16:20], "big") == 200
+    out = r.write(tmp_path / "p.dxf")
+    doc = ezdxf.read(io.StringIO(out.read_text()))
+    [c] = doc.modelspace().query("CIRCLE")
+    assert (c.dxf.center.x, c.dxf.center.y, c.dxf.radius) == pytest.approx((25.4, 12.7, 6.35))
+    # a symlink is refused, its target untouched; with follow_symlinks written through
+    target = tmp_path / "real.svg"
+    target.write_text("old")
+    link = tmp_path / "link.svg"
+    link.symlink_to(target)
+    with pytest.raises(WriteError, match="symbolic link"):
+        r.write(link)
+    assert target.read_text() == "old"
+    r.write(link, follow_symlinks=True)
+    assert link.is_symlink() and "<svg" in target.read_text()
+    # a read-only file is refused unless forced
+    ro = tmp_path / "ro.svg"
+    ro.write_text("old")
+    os.chmod(ro, 0o444)
+    with pytest.raises(WriteError, match="read-only"):
+        r.write(ro)
+    assert ro.read_text() == "old"
+    r.write(ro, force=True)
+    assert "<svg" in ro.read_text()
+    with pytest.raises(WriteError, match="extension"):
+        r.write(tmp_path / "p.aidl")
+    os.symlink(prog, tmp_path / "same.svg")
+    with pytest.raises(WriteError, match="program being compiled"):
+        r.write(tmp_path / "same.svg")
+    assert prog.read_text() == GOOD
+    with pytest.raises(WriteError, match="directory"):
+        (tmp_path / "d.svg").mkdir()
+        r.write(tmp_path / "d.svg")
+    with pytest.raises(WriteError, match="extension"):
+        r.write(tmp_path / "p.txt")
+    with pytest.raises(ValueError):
+        r.encode("bmp")
+
+
+def _dxf_circles(path):
+    doc = ezdxf.readfile(path)
+    return sorted((round(c.dxf.center.x, 9), round(c.dxf.center.y, 9), round(c.dxf.radius, 9))
+                  for c in doc.modelspace().query("CIRCLE"))
+
+
+def test_check_values_match_the_dxf(tmp_path):
+    """`aidl check --values` prints the corner holes where the DXF writer puts them."""
+    out = aidl("check", PLATE, "--values", "plate.corner")
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.splitlines()[1:]
+    centers = {}
+    radii = {}
+    for ln in lines:
+        m = re.fullmatch(r"(kit\.plate\.corner\[(\d)\]\.h)\.(center|radius) = (.*) mm", ln)
+        if m:
+            nums = [float(v) for v in re.findall(r"-?\d+\.\d+", m.group(4))]
+            (centers if m.group(3) == "center" else radii)[m.group(2)] = nums
+        else:
+            assert re.fullmatch(r"kit\.plate\.corner\[\d\]\.(origin|bbox) = .* mm", ln), ln
+    assert sorted(centers) == ["0", "1", "2", "3"]
+    assert centers["0"] == [-52.0, -32.0] and radii["0"] == [2.5]
+    dxf = tmp_path / "plate.dxf"
+    assert aidl("render", PLATE, "-o", dxf).returncode == 0
+    circles = _dxf_circles(dxf)
+    # the exact values (JSON, full precision) against the DXF's circles, to 1e-6
+    js = json.loads(aidl("check", PLATE, "--json", "--values", "plate.corner").stdout)
+    assert js["units"] == "mm"
+    vals = {v["name"]: v["mm"] for v in js["values"]}
+    for i in range(4):
+        cx, cy = vals[f"kit.plate.corner[{i}].h.center"]
+        r = vals[f"kit.plate.corner[{i}].h.radius"]
+        assert any(abs(cx - x) < 1e-6 and abs(cy - y) < 1e-6 and abs(r - rr) < 1e-6
+                   for x, y, rr in circles), (i, cx, cy, r)
+
+
+def test_check_values_unknown_name_and_errors():
+    out = aidl("check", PLATE, "--values", "plate.nothing_here")
+    assert out.returncode == 0 and "no value matches" in out.stderr
+    bad = aidl("check", ROOT / "tests" / "programs" / "nonexistent.aidl", "--values")
+    assert bad.returncode == 1 and "E0004" in bad.stderr

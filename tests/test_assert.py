@@ -1,0 +1,66 @@
+"""The `assert` statement (docs/language.md, "assert"): checked at the solved values, never a
+constraint; conditions on params alone checked when read; E0405 names the condition, the
+reason and the values in the file's units."""
+import pytest
+
+import aidl_lang
+
+PLATE = """units {unit}
+param width = {width}
+solid plate {{
+    body = Rectangle(center=(0, 0), width=width, height=4)
+    hole bore {{ c = Circle(center=(0, 0), radius=0.5) }}
+    CenterInside(bore, body)
+    assert body.width <= 12, "fits the laser bed"
+    assert bore.c.radius >= 0.25 and self.bb.right - self.bb.left == width
+    assert bore.bb.left - body.bb.left >= 1
+}}
+assert plate.bb.top <= 2
+"""
+
+
+def errors(r):
+    return [(d.code, d.span.line if d.span else None, d.message) for d in r.errors]
+
+
+def test_holding_asserts_change_nothing():
+    r = aidl_lang.compile(source=PLATE.format(unit="in", width=10))
+    assert r.ok, errors(r)
+    base = aidl_lang.compile(source=PLATE.format(unit="in", width=10).replace("assert", "#"))
+    assert [p.to_json() for p in r.parts] == [p.to_json() for p in base.parts]
+    assert r.compiled.solve.n_equations == base.compiled.solve.n_equations   # not constraints
+
+
+def test_failed_assert_after_solving_in_file_units():
+    r = aidl_lang.compile(source=PLATE.format(unit="in", width=14))
+    [(code, line, msg)] = errors(r)
+    assert (code, line) == ("E0405", 7)
+    assert msg == ("assertion failed: `body.width <= 12` (fits the laser bed): "
+                   "14 in <= 12 in is false")
+    # the box terms are evaluated at the solution
+    r = aidl_lang.compile(source=PLATE.format(unit="mm", width=1.5))
+    assert [(c, ln) for c, ln, _ in errors(r)] == [("E0405", 9)]
+    assert "0.25 mm >= 1 mm is false" in errors(r)[0][2]
+
+
+def test_top_level_assert_names_the_structure():
+    src = PLATE.format(unit="mm", width=10).replace("<= 2\n", "<= 1.5\n")
+    r = aidl_lang.compile(source=src)
+    [(code, line, msg)] = errors(r)
+    assert (code, line) == ("E0405", 11) and "2 mm <= 1.5 mm is false" in msg
+
+
+def test_param_only_assert_is_checked_when_read():
+    src = "param n = 3\nassert n >= 4, \"at least four\"\nsolid s { c = Circle((0, 0), n) }\n"
+    r = aidl_lang.compile(source=src)
+    [(code, line, msg)] = errors(r)
+    assert (code, line) == ("E0405", 2) and "3 >= 4 is false" in msg
+    assert r.compiled.solve is None           # an interpretation error: no solve
+
+
+@pytest.mark.parametrize("cond, code", [("a or b", "E0108"), ("1 + 2", "E0108"),
+                                        ("nothing > 2", "E0101")])
+def test_bad_conditions_are_located_errors(cond, code):
+    src = f"a = 1\nb = 2\nsolid s {{\n    c = Circle((0, 0), 1)\n    assert {cond}\n}}\n"
+    r = aidl_lang.compile(source=src.replace("a or b", "a > 0 or b > 0"))
+    assert r.errors and r.errors[0].code == code and r.errors[0].span.line == 5

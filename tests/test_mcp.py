@@ -1,0 +1,124 @@
+"""`aidl mcp` started as a subprocess and driven by the official SDK's own stdio client
+(`mcp.client.stdio.stdio_client` + `ClientSession`): tools, resources, a located diagnostic,
+a PNG image block, solved values, a file written inside the root and paths refused outside
+it (also through a symlink)."""
+import base64
+import json
+import os
+import sys
+
+import pytest
+
+mcp = pytest.importorskip("mcp")
+from mcp.client.session import ClientSession  # noqa: E402
+from mcp.client.stdio import StdioServerParameters, stdio_client  # noqa: E402
+
+from aidl_lang.mcp import tools as T  # noqa: E402
+from conftest import ROOT  # noqa: E402
+
+GOOD = """units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole bore { c = Circle(center=(10, 0), radius=4) }
+}
+"""
+
+BROKEN = """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    c = Circel(center=(0, 0), radius=5)
+}
+"""
+
+
+def _text(result) -> str:
+    return "\n".join(c.text for c in result.content if c.type == "text")
+
+
+@pytest.mark.asyncio
+async def test_mcp_server_over_stdio(tmp_path):
+    root = tmp_path / "work"
+    root.mkdir()
+    (root / "plate.aidl").write_text(GOOD)
+    outside = tmp_path / "secret.aidl"
+    outside.write_text(GOOD)
+    (root / "escape.aidl").symlink_to(outside)
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    params = StdioServerParameters(command=sys.executable,
+                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
+                                   env=env, cwd=str(ROOT))
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            tools = {t.name: t for t in (await session.list_tools()).tools}
+            assert set(tools) == {"check", "render", "values", "explain"}
+            assert "source" in tools["check"].input_schema["properties"]
+            assert tools["check"].annotations.read_only_hint
+            assert not tools["render"].annotations.read_only_hint
+
+            # a broken program: a located diagnostic with its fix
+            r = await session.call_tool("check", {"source": BROKEN})
+            assert not r.is_error
+            doc = json.loads(_text(r))
+            assert doc["ok"] is False
+            [d] = doc["diagnostics"]
+            assert d["code"] == "E0103" and d["span"]["line"] == 3 and d["span"]["column"] == 9
+            assert d["fix"]["replacement"] == "Circle"
+
+            # a good one by path: ok, degrees of freedom, parts
+            doc = json.loads(_text(await session.call_tool("check", {"path": "plate.aidl"})))
+            assert doc["ok"] and doc["freedom"]["dof"] >= 0
+            assert doc["parts"][0]["holes"] == 1
+
+            # render: an image block that decodes to a PNG of the asked width, and a DXF
+            r = await session.call_tool("render", {"path": "plate.aidl", "width": 300,
+                                                   "output": "out/../plate.dxf"})
+            assert not r.is_error, _text(r)
+            [img] = [c for c in r.content if c.type == "image"]
+            assert img.mime_type == "image/png"
+            png = base64.b64decode(img.data)
+            assert png[:8] == b"\x89PNG\r\n\x1a\n" and int.from_bytes(png[16:20], "big") == 300
+            assert json.loads(_text(r))["written"] == "plate.dxf"
+            assert (root / "plate.dxf").read_text().lstrip().startswith("0")
+
+            # a value, in the file's units
+            doc = json.loads(_text(await session.call_tool(
+                "values", {"path": "plate.aidl", "names": ["bore.c"]})))
+            assert doc["text"].splitlines() == ["plate.bore.c.center = (10.000, 0.000) mm",
+                                                "plate.bore.c.radius = 4.000 mm"]
+
+            # refused: outside the root, directly, by `..` and through a symlink
+            for args in ({"path": str(outside)}, {"path": "../secret.aidl"},
+                         {"path": "escape.aidl"}):
+                r = await session.call_tool("check", args)
+                assert r.is_error and "outside the allowed folder" in _text(r), args
+            r = await session.call_tool("render", {"source": GOOD, "output": str(tmp_path / "x.svg")})
+            assert r.is_error and not (tmp_path / "x.svg").exists()
+            r = await session.call_tool("render", {"path": "plate.aidl", "output": "plate.aidl"})
+            assert r.is_error and (root / "plate.aidl").read_text() == GOOD
+
+            assert (await session.call_tool("explain", {"code": "e0103"})).content[0].text \
+                .startswith("E0103:")
+            assert (await session.call_tool("explain", {"code": "X9"})).is_error
+
+            uris = {str(x.uri) for x in (await session.list_resources()).resources}
+            assert {"aidl://docs/language", "aidl://prompt", "aidl://stdlib/shapes.aidl",
+                    "aidl://examples/mounting_plate.aidl"} <= uris
+            got = await session.read_resource("aidl://stdlib/shapes.aidl")
+            assert "def " in got.contents[0].text
+            got = await session.read_resource("aidl://prompt")
+            assert "Rectangle" in got.contents[0].text
+
+
+def test_workspace_refuses_what_is_outside(tmp_path):
+    ws = T.Workspace(tmp_path)
+    with pytest.raises(T.Refused, match="exactly one"):
+        T.check(ws)
+    with pytest.raises(T.Refused, match="budget"):
+        T.check(ws, source=GOOD, budget=100)
+    with pytest.raises(T.Refused, match="outside"):
+        ws.inside("/etc/passwd")
+    with pytest.raises(T.Refused, match="not a file"):
+        ws.inside("missing.aidl", must_exist=True)
+    assert T.check(ws, source=GOOD)["ok"]
+    doc = T.values(ws, source=BROKEN)
+    assert doc["ok"] is False and "E0103 line 3" in doc["summary"]
