@@ -268,15 +268,17 @@ class Result:
         """The DXF text (R2010, mm, ``cut``/``engrave`` layers)."""
         return self.encode("dxf").decode()
 
-    def write(self, path: str | os.PathLike, **options) -> Path:
+    def write(self, path: str | os.PathLike, follow_symlinks: bool = False,
+              force: bool = False, **options) -> Path:
         """Write the output to ``path``, the format by its extension, with the rules of
-        ``aidl render`` (docs/outputs.md, "File safety"): never over the program itself, never
-        a directory, written to a temporary file beside it and renamed (a symlink is written
-        through), a new file gets the umask's permissions.  Returns the path.  Raises
-        :class:`WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
-        out = check_output_path(path, self.path)
+        ``aidl render`` (docs/outputs.md, "Writing files"): never over the program itself,
+        never a directory, a symlink refused unless ``follow_symlinks`` (then written
+        through), a read-only file refused unless ``force``, written to a temporary file
+        beside it and renamed, a new file gets the umask's permissions.  Returns the path.
+        Raises :class:`WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
+        out = check_output_path(path, self.path, follow_symlinks, force)
         data = self.encode(out.suffix, **options)
-        write_atomic(out, data)
+        write_atomic(out, data, follow_symlinks)
         return out
 
     def to_json(self, values: Iterable[str] | None = None) -> dict:
@@ -445,9 +447,12 @@ def _values(model, scale: float, unit: str) -> list[Value]:
 
 
 # ------------------------------------------------------------------ file safety
-def check_output_path(path: str | os.PathLike, program: str | None = None) -> Path:
+def check_output_path(path: str | os.PathLike, program: str | None = None,
+                      follow_symlinks: bool = False, force: bool = False) -> Path:
     """``path`` as an output file the way ``aidl render`` accepts it: a known extension, not a
-    directory, not the program ``program`` itself.  Raises :class:`WriteError`."""
+    directory, not the program ``program`` itself, not a symbolic link (unless
+    ``follow_symlinks``), not a read-only file (unless ``force``).  Raises
+    :class:`WriteError`."""
     from .output import FORMATS
     out = Path(path)
     if out.suffix.lower() not in FORMATS:
@@ -459,15 +464,29 @@ def check_output_path(path: str | os.PathLike, program: str | None = None) -> Pa
     if program and os.path.exists(program) and os.path.exists(real) \
             and os.path.samefile(real, program):
         raise WriteError(f"`{out}` is the program being compiled; refusing to overwrite it")
+    if os.path.islink(out) and not follow_symlinks:
+        raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
+                         "(follow_symlinks=True writes the file it points to)")
+    import stat as S
+    try:
+        st = os.stat(real if follow_symlinks else out)
+    except OSError:
+        return out
+    if S.S_ISREG(st.st_mode) and not force and (
+            not st.st_mode & S.S_IWUSR or not os.access(real, os.W_OK)):
+        raise WriteError(f"`{out}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
+                         "to replace it (force=True replaces it)")
     return out
 
 
-def write_atomic(out: Path, data: bytes) -> None:
-    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it; a
-    symlink is written through (its target replaced, the link kept); a new file gets
-    ``0666 & ~umask``, an existing one keeps its mode.  Raises :class:`WriteError`."""
+def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
+    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it; with
+    ``follow_symlinks`` a symlink is written through (its target replaced, the link kept),
+    else the path itself is replaced (a link planted after the check is never followed); a
+    new file gets ``0666 & ~umask``, an existing one keeps its mode.  Raises
+    :class:`WriteError`."""
     import tempfile
-    target = Path(os.path.realpath(out))
+    target = Path(os.path.realpath(out)) if follow_symlinks else Path(os.path.abspath(out))
     tmp = None
     try:
         try:

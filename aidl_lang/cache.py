@@ -35,9 +35,11 @@ def cache_dir() -> Path | None:
 
 def read_owned(path: Path) -> str | None:
     """The text of ``path`` if it is a regular file owned by this user that no one else can
-    write (a symbolic link is not followed); else ``None``."""
+    write (a symbolic link is not followed); else ``None``.  Opening never blocks (a FIFO or
+    a device at the path is opened non-blocking, then refused by its ``fstat``)."""
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0)
+                     | getattr(os, "O_NONBLOCK", 0))
     except OSError:
         return None
     with os.fdopen(fd, "r", encoding="utf-8") as f:
@@ -48,6 +50,40 @@ def read_owned(path: Path) -> str | None:
             return f.read()
         except (OSError, UnicodeDecodeError):
             return None
+
+
+def read_checked(path: Path, key: str) -> str | None:
+    """The payload :func:`write_checked` stored at ``path`` under ``key``, or ``None`` when
+    the file is unreadable, not ours (:func:`read_owned`), for another key, truncated or
+    changed (its length and CRC-32 are kept in a header line and compared): an entry that
+    fails any of this is ignored, and the caller makes it again."""
+    import json
+    import zlib
+    text = read_owned(path)
+    if text is None:
+        return None
+    head, sep, payload = text.partition("\n")
+    if not sep:
+        return None
+    try:
+        h = json.loads(head)
+    except ValueError:
+        return None
+    if not isinstance(h, dict) or h.get("key") != key or h.get("len") != len(payload):
+        return None
+    if h.get("crc") != zlib.crc32(payload.encode("utf-8")):
+        return None
+    return payload
+
+
+def write_checked(path: Path, key: str, payload: str) -> bool:
+    """Store ``payload`` at ``path`` (:func:`write_atomic`) after a one-line header with
+    ``key``, the payload's length and its CRC-32, for :func:`read_checked`."""
+    import json
+    import zlib
+    head = json.dumps({"key": key, "len": len(payload),
+                       "crc": zlib.crc32(payload.encode("utf-8"))})
+    return write_atomic(path, head + "\n" + payload)
 
 
 def write_atomic(path: Path, text: str) -> bool:

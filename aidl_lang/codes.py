@@ -218,6 +218,12 @@ solver never moves geometry to satisfy it. Change the values or constraints so t
         assert body.width <= 300 mm, "fits the laser bed"   # 400 mm <= 300 mm is false
     }
 """),
+    "E0900": ("internal error in aidl", """
+A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
+turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the
+live preview (`aidl serve`) shows it beside the last good picture, logs it, and goes on watching
+the file. Please report it with the input file.
+"""),
     "W0401": ("redundant constraint", """
 The constraint holds already because other constraints (or a constructor's held dimension) imply
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes

@@ -7,7 +7,8 @@ loop iteration, comprehension element, call and template instance is one *step*;
 points, geometry objects, structures and constraints share one *object* count; every string or list a program
 builds is limited in size; and wall time is the last resort.  A program that goes past any of
 them gets one located diagnostic (``E0304``) naming the loops and template instances on the
-stack, never a hang, a crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
+stack (after the solve: the structure and the stage, :class:`OutOfBudget`), never a hang, a
+crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
 every budget figure by ``K``.
 """
 from __future__ import annotations
@@ -28,18 +29,49 @@ class Budget:
       instances (about 2 s of interpretation);
     - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
-    - ``seconds``: 60 s of wall time for interpreting and solving together.
+    - ``seconds``: 60 s of wall time for the whole compile: interpreting, solving, the
+      booleans and the shape checks (and, in ``aidl render``, the writers);
+    - ``vertices``: 2 000 000 vertices of the tessellated outlines handed to the booleans
+      (counted before they are made: a circle of radius ``r`` needs
+      :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``).
     """
 
     steps: int = 250_000
     objects: int = 120_000
     size: int = 1_000_000
     seconds: float = 60.0
+    vertices: int = 2_000_000
 
     def scaled(self, k: float) -> "Budget":
         """Every figure multiplied by ``k`` (``--budget K``); ``k`` > 0."""
         return Budget(int(self.steps * k), int(self.objects * k), int(self.size * k),
-                      self.seconds * k)
+                      self.seconds * k, int(self.vertices * k))
 
 
 DEFAULT_BUDGET = Budget()
+
+
+class OutOfBudget(Exception):
+    """The budget ran out after the solve: in the booleans, the shape checks or a writer.
+    ``what``: which figure (``more than 60 s of wall time``); ``stage``: where (``the
+    booleans``); ``where``: the structure being worked on (with ``path`` and ``span``), or
+    ``None``.  :func:`aidl_lang.pipeline.after_solve` turns it into one located ``E0304``."""
+
+    def __init__(self, what: str, stage: str, where=None):
+        super().__init__(what)
+        self.what, self.stage, self.where = what, stage, where
+
+
+class Deadline:
+    """The wall-time end of one compile (``time.monotonic()`` seconds) and the budget it
+    comes from; :meth:`check` raises :class:`OutOfBudget` once it has passed."""
+
+    __slots__ = ("at", "budget")
+
+    def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET):
+        self.at, self.budget = at, budget
+
+    def check(self, stage: str, where=None) -> None:
+        import time
+        if time.monotonic() > self.at:
+            raise OutOfBudget(f"more than {self.budget.seconds:g} s of wall time", stage, where)

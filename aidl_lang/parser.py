@@ -24,7 +24,7 @@ from itertools import accumulate
 from pathlib import Path
 
 from . import ast as A
-from .cache import cache_dir, read_owned, write_atomic
+from .cache import cache_dir, read_checked, write_checked
 from .diagnostics import DiagnosticSink, Span
 from .memory import gc_paused
 
@@ -231,7 +231,7 @@ class UnexpectedCharacters(ParseError):
 
 
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
-_TABLES_FORMAT = 4
+_TABLES_FORMAT = 5      # 5: a header line with the key, length and CRC-32 (cache.write_checked)
 
 
 # ----------------------------------------------------------------- the parse table
@@ -508,23 +508,38 @@ def _tables() -> _Tables:
             d = cache_dir()
             name = f"parser-{zlib.crc32(key.encode()):08x}-{len(key)}.json"
             path = d / name if d is not None else None
-            text = read_owned(path) if path is not None else None
+            text = read_checked(path, key) if path is not None else None
             data = None
             if text is not None:
                 try:
-                    blob = json.loads(text)
-                    if blob.get("key") == key:
-                        data = blob["tables"]
-                        tables = _Tables(data)
+                    data = json.loads(text)
+                    _check_tables(data)
+                    tables = _Tables(data)
                 except Exception:           # a stale or damaged cache: rebuild it below
                     data = None
             if data is None:
                 data = _tables_data()
                 tables = _Tables(data)
                 if path is not None:
-                    write_atomic(path, json.dumps({"key": key, "tables": data}))
+                    write_checked(path, key, json.dumps(data))
             _TABLES = tables
     return _TABLES
+
+
+def _check_tables(data: dict) -> None:
+    """Raise ``ValueError`` unless every state and reduction the cached table names exists
+    (a table read back must never send the parser to a missing row: an IndexError, or an
+    E0001 on a valid program)."""
+    ps = data["parser"]
+    states, n_rules = ps["states"], len(ps["rules"])
+    n = len(states)
+    for row in states:
+        for v in row.values():
+            if type(v) is not int or not (0 <= v < n or 0 <= ~v < n_rules):
+                raise ValueError("a damaged parse table")
+    for st in (*ps["start"].values(), *ps["end"].values()):
+        if type(st) is not int or not 0 <= st < n:
+            raise ValueError("a damaged parse table")
 
 
 def _lark_version() -> str:

@@ -15,7 +15,7 @@ import numpy as np
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
-from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget
+from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget, Deadline, OutOfBudget
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
@@ -159,12 +159,13 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result, solve_seconds=took)
-    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks),
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks,
+                                                     Deadline(deadline, budget)),
                     solve_seconds=took)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
-                shape_checks: bool = True) -> Drawing | None:
+                shape_checks: bool = True, deadline: Deadline | None = None) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
     preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
     checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
@@ -176,12 +177,28 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         return None
     check_assertions(sink, model)
     check_branches(sink, model)
-    with warnings.catch_warnings(), np.errstate(all="ignore"):
-        warnings.simplefilter("ignore", RuntimeWarning)     # degenerate sizes: no numpy noise
-        drawing = render_model(model)
-    if shape_checks:
-        check_drawing(drawing, sink, min_wall)
+    try:
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no numpy noise
+            drawing = render_model(model, deadline)
+        if shape_checks:
+            check_drawing(drawing, sink, min_wall, deadline)
+    except OutOfBudget as ex:
+        report_out_of_budget(sink, ex)
+        return None
     return drawing
+
+
+def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:
+    """One ``E0304`` for a budget that ran out after the solve, at the structure being worked
+    on (the booleans, the shape checks, a writer)."""
+    s = ex.where
+    at = f" of `{s.path}`" if s is not None else ""
+    sink.add(Diagnostic(
+        "E0304", f"the program ran out of its evaluation budget in {ex.stage}{at}: {ex.what}",
+        getattr(s, "span", None), "error",
+        hint="build less (fewer or smaller shapes: every circle and arc becomes chords of "
+             "0.005 mm), or raise the budget with `--budget 2` (or more)"))
 
 
 

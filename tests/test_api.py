@@ -92,13 +92,25 @@ def test_outputs_and_write_safety(tmp_path):
     doc = ezdxf.read(io.StringIO(out.read_text()))
     [c] = doc.modelspace().query("CIRCLE")
     assert (c.dxf.center.x, c.dxf.center.y, c.dxf.radius) == pytest.approx((25.4, 12.7, 6.35))
-    # a symlink is written through, the link kept
+    # a symlink is refused, its target untouched; with follow_symlinks written through
     target = tmp_path / "real.svg"
     target.write_text("old")
     link = tmp_path / "link.svg"
     link.symlink_to(target)
-    r.write(link)
+    with pytest.raises(WriteError, match="symbolic link"):
+        r.write(link)
+    assert target.read_text() == "old"
+    r.write(link, follow_symlinks=True)
     assert link.is_symlink() and "<svg" in target.read_text()
+    # a read-only file is refused unless forced
+    ro = tmp_path / "ro.svg"
+    ro.write_text("old")
+    os.chmod(ro, 0o444)
+    with pytest.raises(WriteError, match="read-only"):
+        r.write(ro)
+    assert ro.read_text() == "old"
+    r.write(ro, force=True)
+    assert "<svg" in ro.read_text()
     with pytest.raises(WriteError, match="extension"):
         r.write(tmp_path / "p.aidl")
     os.symlink(prog, tmp_path / "same.svg")

@@ -95,8 +95,9 @@ def test_the_cache_is_owner_only_json_in_the_users_cache_folder(tmp_path):
     assert [p.name[:7] for p in files] == ["parser-"]
     fst = os.lstat(files[0])
     assert fst.st_uid == os.getuid() and stat.S_IMODE(fst.st_mode) == 0o600
-    blob = json.loads(files[0].read_text())          # plain data, not a pickle
-    assert set(blob) == {"key", "tables"}
+    head, payload = files[0].read_text().split("\n", 1)  # plain data, not a pickle
+    assert set(json.loads(head)) == {"key", "len", "crc"}
+    assert set(json.loads(payload)) == {"lexer", "parser"}
     # a second run reads it and parses the same
     again = _run(tmp_path)
     assert again.returncode == 0 and again.stdout.split() == ["StructDecl", "s"]
@@ -222,3 +223,77 @@ def test_a_font_file_others_can_write_is_not_read(tmp_path):
     os.chmod(f, 0o666)
     assert _run_font(tmp_path) == good
     assert stat.S_IMODE(os.lstat(f).st_mode) == 0o600
+
+
+
+# ------------------------------------------------------------------ damaged entries (issue 26)
+def _table(tmp_path):
+    (tmp_path / "tmp").mkdir(exist_ok=True)
+    (tmp_path / "home").mkdir(exist_ok=True)
+    assert _run(tmp_path).returncode == 0
+    (f,) = (tmp_path / "cache" / "aidl").iterdir()
+    return f
+
+
+def _rebuilt(tmp_path, f):
+    """A run answers right within its time limit, and leaves a valid table behind."""
+    r = _run(tmp_path)
+    assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
+    assert stat.S_ISREG(os.lstat(f).st_mode)
+    from aidl_lang.cache import read_checked
+    head = json.loads(f.read_text().split("\n", 1)[0])
+    assert read_checked(f, head["key"]) is not None
+
+
+def test_a_fifo_at_the_cache_path_does_not_hang(tmp_path):
+    """A FIFO where the table should be hung every run (opened for reading, it waits for a
+    writer): opened non-blocking and refused by its fstat, then replaced by a real table."""
+    f = _table(tmp_path)
+    os.unlink(f)
+    os.mkfifo(f, 0o600)
+    _rebuilt(tmp_path, f)                 # _run's timeout bounds it
+
+
+@pytest.mark.parametrize("damage", ["truncated", "payload", "key-kept", "consistent-bad-state"])
+def test_a_damaged_table_is_ignored_and_rebuilt(tmp_path, damage):
+    """A table cut short, with bytes changed, or with the right key but another body (once
+    an E0001 on a valid program or an IndexError): the header's length and CRC-32 fail, and
+    a body that passes them but names a state that does not exist fails the table check."""
+    import zlib
+    f = _table(tmp_path)
+    text = f.read_text()
+    head, payload = text.split("\n", 1)
+    if damage == "truncated":
+        f.write_text(text[: len(text) // 2])
+    elif damage == "payload":
+        i = payload.index('"states"') + 20
+        f.write_text(head + "\n" + payload[:i] + ("7" if payload[i] != "7" else "8")
+                     + payload[i + 1:])
+    else:
+        data = json.loads(payload)
+        states = data["parser"]["states"]
+        if damage == "key-kept":           # the old format's damage: the right key, rows cut
+            data["parser"]["states"] = states[: len(states) // 2]
+        else:
+            row = next(r for r in states if r)
+            row[next(iter(row))] = len(states) + 5
+        body = json.dumps(data)
+        h = json.loads(head)
+        if damage == "consistent-bad-state":
+            h.update(len=len(body), crc=zlib.crc32(body.encode()))
+        f.write_text(json.dumps(h) + "\n" + body)
+    os.chmod(f, 0o600)
+    _rebuilt(tmp_path, f)
+
+
+def test_a_damaged_font_file_is_ignored(tmp_path):
+    (tmp_path / "tmp").mkdir()
+    (tmp_path / "home").mkdir()
+    good = _run_font(tmp_path)
+    f = tmp_path / "cache" / "aidl" / "hershey-futural.json"
+    head, payload = f.read_text().split("\n", 1)
+    f.write_text(head + "\n" + payload.replace("[", "[[", 3))       # the right key, a bad body
+    assert _run_font(tmp_path) == good
+    os.unlink(f)
+    os.mkfifo(f, 0o600)
+    assert _run_font(tmp_path) == good

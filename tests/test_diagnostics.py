@@ -631,3 +631,16 @@ def test_W0105_missing_glyphs(compile_text):
     c = compile_text('solid s {\n    c = Circle((0, 0), 20)\n    drawing d { t = Text("aé", (0, 0)) }\n}\n')
     d = next(d for d in c.sink.items if d.code == "W0105")
     assert "U+00E9" in d.message and span4(d)[:2] == (3, 26)
+
+
+def test_E0900_internal_error_in_the_live_preview(tmp_path, monkeypatch):
+    """A stage that raises (a bug) in `aidl serve` is an E0900 diagnostic, not a dead
+    server (tests/test_serve.py has the live reload going on after it)."""
+    pytest.importorskip("starlette")
+    from aidl_lang.serve import session as S
+    f = tmp_path / "p.aidl"
+    f.write_text("solid p { c = Circle(center=(0, 0), radius=5) }\n")
+    monkeypatch.setattr(S, "after_solve", lambda *a, **k: [][1])
+    v = S.Session(f).load()
+    assert not v["ok"] and v["diagnostics"][0]["code"] == "E0900"
+    assert "IndexError" in v["diagnostics"][0]["message"]

@@ -1,5 +1,5 @@
 """`aidl render`: the format by extension, several -o, and file safety (docs/outputs.md,
-"Writing files"): never the program itself, no directory, symlinks written through, no
+"Writing files"): never the program itself, no directory, symlinks and read-only files refused unless asked, no
 default name for /dev/stdin, the umask's permissions, an existing file's mode kept."""
 import io
 import os
@@ -87,15 +87,57 @@ def test_directory_output_is_a_clear_error_and_leaves_no_tmp_file(good, tmp_path
     assert listing(d) == [] and listing(tmp_path) == ["good.aidl", "out"]
 
 
-def test_symlink_is_written_through_and_kept(good, tmp_path):
+def test_symlink_is_refused_unless_followed(good, tmp_path, capsys):
+    """An output that is a symbolic link (planted to make the render overwrite another file)
+    is refused, exit 2, its target untouched; with --follow-symlinks the target is written
+    and the link kept."""
     target = tmp_path / "real.svg"
     target.write_text("old")
     link = tmp_path / "link.svg"
     link.symlink_to(target.name)
-    assert main(["render", str(good), "-o", str(link)]) == 0
+    assert main(["render", str(good), "-o", str(link)]) == 2
+    err = capsys.readouterr().err
+    assert "is a symbolic link" in err and "--follow-symlinks" in err
+    assert target.read_text() == "old" and link.is_symlink()
+    dangling = tmp_path / "dangling.svg"
+    dangling.symlink_to("nowhere/x.svg")
+    assert main(["render", str(good), "-o", str(dangling)]) == 2
+    assert main(["render", str(good), "-o", str(link), "--follow-symlinks"]) == 0
     assert link.is_symlink() and os.readlink(link) == "real.svg"
     assert target.read_text().startswith("<svg")
-    assert listing(tmp_path) == ["good.aidl", "link.svg", "real.svg"]
+    assert listing(tmp_path) == ["dangling.svg", "good.aidl", "link.svg", "real.svg"]
+
+
+def test_a_link_planted_after_the_check_is_replaced_not_followed(good, tmp_path, monkeypatch):
+    """The write replaces the output path itself (temp file + os.replace): a link that
+    appears between the check and the write is replaced; the file it points to stays."""
+    M = sys.modules["aidl_lang.cli.main"]
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious")
+    out = tmp_path / "o.svg"
+    real = M._write_all
+
+    def plant(items, follow=False):
+        out.symlink_to(victim.name)
+        return real(items, follow)
+    monkeypatch.setattr(M, "_write_all", plant)
+    assert main(["render", str(good), "-o", str(out)]) == 0
+    assert victim.read_text() == "precious"
+    assert not out.is_symlink() and out.read_text().startswith("<svg")
+
+
+def test_read_only_output_is_refused_unless_forced(good, tmp_path, capsys):
+    out = tmp_path / "ro.svg"
+    out.write_text("old")
+    os.chmod(out, 0o444)
+    assert main(["render", str(good), "-o", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert "is read-only (mode 0444)" in err and "--force" in err
+    assert out.read_text() == "old"
+    assert main(["render", str(good), "-o", str(out), "--force"]) == 0
+    assert out.read_text().startswith("<svg")
+    assert stat.S_IMODE(out.stat().st_mode) == 0o444          # replaced, its mode kept
+    assert listing(tmp_path) == ["good.aidl", "ro.svg"]
 
 
 def test_dev_stdin_needs_an_output_name(good, tmp_path, monkeypatch, capsys):

@@ -322,3 +322,151 @@ def test_preview_reports_a_topology_change_of_a_slider(tmp_path):
     assert [d.message for d in c.sink.items if d.code == "W0510"] == [w["message"]]
     s.set_params({"bolts": "4"})
     assert s.update_checks() is None
+
+
+# ------------------------------------------------------------------ robustness (issue 26)
+def _recv(ws, seconds: float = 10.0) -> dict:
+    """The next message of a test websocket, or a failed test after ``seconds``."""
+    import concurrent.futures
+    pool = concurrent.futures.ThreadPoolExecutor(1)
+    try:
+        return json.loads(pool.submit(ws.receive_text).result(timeout=seconds))
+    finally:
+        pool.shutdown(wait=False)
+
+
+def test_live_reload_goes_on_after_an_internal_error(tmp_path, monkeypatch, capsys):
+    """A save whose compile raises (a bug in a stage, here planted in the booleans) shows
+    E0900 beside the last good picture and is logged; the watcher keeps going, so the next
+    save (fixed) gets a new picture."""
+    import time
+    from starlette.testclient import TestClient
+    from aidl_lang.serve import session as S
+    from aidl_lang.serve.app import create_app
+    real = S.after_solve
+
+    def planted(sink, model, *a, **kw):
+        if "boom" in {s.name for s in model.structures}:
+            raise ZeroDivisionError("planted")
+        return real(sink, model, *a, **kw)
+    monkeypatch.setattr(S, "after_solve", planted)
+    f = tmp_path / "p.aidl"
+    f.write_text("solid p { c = Circle(center=(0, 0), radius=5) }\n")
+    host = {"host": f"127.0.0.1:{PORT}"}
+    t0 = time.monotonic()
+    with TestClient(create_app(f, PORT, watch=True), base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={**host, "origin": BASE}) as ws:
+            good = _recv(ws)
+            assert good["ok"] and good["svg"]
+            time.sleep(0.3)                            # the watcher is up
+            f.write_text("solid boom { c = Circle(center=(0, 0), radius=5) }\n")
+            v = _recv(ws)
+            while v["ok"]:                             # (a late event of the first write)
+                v = _recv(ws)
+            assert v["diagnostics"][0]["code"] == "E0900" and v["svg"] == good["svg"]
+            assert "ZeroDivisionError: planted" in v["diagnostics"][0]["message"]
+            f.write_text("solid q { c = Circle(center=(0, 0), radius=7) }\n")
+            v = _recv(ws)
+            while not v["ok"]:
+                v = _recv(ws)
+            assert v["svg"] != good["svg"] and not v["diagnostics"]
+    assert time.monotonic() - t0 < 30
+    assert "internal error while compiling the file" in capsys.readouterr().err
+
+
+def test_internal_errors_in_sliders_and_downloads_are_diagnostics(tmp_path, monkeypatch):
+    from aidl_lang.serve import session as S
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    s = S.Session(f)
+    good = s.load()
+    assert good["ok"]
+    monkeypatch.setattr(S, "after_solve", lambda *a, **k: 1 / 0)
+    v = s.set_params({"w": "50mm"})
+    assert not v["ok"] and v["svg"] == good["svg"] and v["diagnostics"][0]["code"] == "E0900"
+    drawing, diags = s.drawing({"w": "50mm"})
+    assert drawing is None and diags[0]["code"] == "E0900"
+    monkeypatch.undo()
+    assert s.set_params({"w": "50mm"})["ok"]
+
+
+@pytest.fixture
+def ranged_ws(tmp_path):
+    """A websocket to a server of RANGED (params w, turns), its first view read."""
+    from starlette.testclient import TestClient
+    from aidl_lang.serve.app import create_app
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    app = create_app(f, PORT, watch=False)
+    with TestClient(app, base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
+                                                      "origin": BASE}) as ws:
+            assert _recv(ws)["ok"]
+            yield ws, app.state.hub.session
+
+
+def _set_ok(ws, i, w="50mm"):
+    ws.send_text(json.dumps({"type": "set", "id": i, "values": {"w": w}}))
+    v = _recv(ws)
+    assert v["type"] == "view" and v["id"] == i and v["ok"], v
+    return v
+
+
+def test_unknown_params_and_oversized_messages_are_refused_before_compiling(ranged_ws):
+    ws, session = ranged_ws
+    version = session.version
+    ws.send_text(json.dumps({"type": "set", "id": 3, "values": {"tunrs": "5"}}))
+    e = _recv(ws)
+    assert e["type"] == "error" and e["id"] == 3
+    assert "unknown param `tunrs`: the program declares turns, w" in e["message"]
+    assert "did you mean `turns`?" in e["message"]
+    ws.send_text(json.dumps({"type": "set", "id": 4, "values": {"w": "1" * 5000}}))
+    assert "at most 256 characters" in _recv(ws)["message"]
+    ws.send_text(json.dumps({"type": "set", "id": 5, "values": {"w": "x" * 70_000}}))
+    assert "more than the 65,536 accepted" in _recv(ws)["message"]
+    assert session.version == version                      # nothing was compiled
+    _set_ok(ws, 6)
+
+
+def test_deep_json_and_binary_frames_get_error_frames(ranged_ws):
+    """A deeply nested value (json.loads would recurse: a RecursionError, once an HTTP 500)
+    and a binary frame (once `KeyError: 'text'`) are answered with an error frame, located
+    where it can be; the connection goes on."""
+    ws, _ = ranged_ws
+    t0 = __import__("time").monotonic()
+    ws.send_text('{"type": "set", "values": ' + "[" * 30_000 + "]" * 30_000 + "}")
+    e = _recv(ws)
+    assert e["type"] == "error" and "more than 8 deep" in e["message"]
+    ws.send_text('{"type": "set", "values":\n  ' + "[" * 50 + "]" * 50 + "}")
+    e = _recv(ws)
+    assert "nests arrays and objects more than 8 deep" in e["message"]
+    assert (e["line"], e["column"]) == (2, 10)
+    ws.send_text('{"type": "set", "values": {"w": 3,}}')
+    e = _recv(ws)
+    assert e["message"].startswith("the message is not JSON") and e["line"] == 1
+    ws.send_bytes(b'{"type": "set", "id": 1, "values": {}}')
+    assert "binary WebSocket messages are not accepted" in _recv(ws)["message"]
+    _set_ok(ws, 7)
+    assert __import__("time").monotonic() - t0 < 20
+
+
+def test_queued_slider_moves_are_coalesced(ranged_ws, monkeypatch):
+    """Moves sent while one compiles wait in one slot: the newest replaces the older ones,
+    so a burst costs at most two compiles and ends on the last value."""
+    import time
+    ws, session = ranged_ws
+    seen = []
+    real = session.set_params
+
+    def slow(values):
+        seen.append(values["w"])
+        time.sleep(0.4)
+        return real(values)
+    monkeypatch.setattr(session, "set_params", slow)
+    for i in range(1, 7):
+        ws.send_text(json.dumps({"type": "set", "id": i, "values": {"w": f"{40 + i}mm"}}))
+    v = _recv(ws)
+    while v.get("id") != 6:
+        v = _recv(ws)
+    assert v["ok"] and v["values"] == {"w": "46mm"}
+    assert len(seen) <= 3 and seen[-1] == "46mm", seen

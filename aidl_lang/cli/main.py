@@ -8,7 +8,8 @@ is not installed (the message gives the ``pip install`` line), 3 an internal err
 An output file is written only when the whole pipeline succeeded and every requested format was
 produced (each written to a temporary file beside it, then renamed), so a good drawing is never
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
-directory as output, writes through a symlink (the link stays), and creates files with the
+directory as output, refuses a symlink as output unless ``--follow-symlinks`` (then it writes
+through it; the link stays) and a read-only file unless ``--force``, and creates files with the
 user's umask (an existing file keeps its mode); docs/outputs.md has the details.
 """
 from __future__ import annotations
@@ -133,6 +134,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
                    help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
     _budget_arg(r)
+    r.add_argument("--follow-symlinks", action="store_true",
+                   help="write through an output that is a symbolic link (default: refuse it)")
+    r.add_argument("--force", action="store_true",
+                   help="replace an output file that is read-only (default: refuse it)")
     c = add("check", help="parse, check and solve; write nothing")
     c.add_argument("file")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
@@ -380,19 +385,71 @@ def _outputs(args) -> list[Path] | int:
         if real in seen:
             return _usage(f"`{o}` is given twice")
         seen.add(real)
+        refused = _refused_output(o, getattr(args, "follow_symlinks", False),
+                                  getattr(args, "force", False))
+        if refused is not None:
+            return refused
     return outs
 
 
-def _write_all(items: list[tuple[Path, bytes]]) -> str | None:
+def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
+    """A symbolic link as output is refused (exit 2: someone may have planted it to make the
+    render overwrite another file) unless ``--follow-symlinks``; an existing read-only file
+    is refused (exit 1) unless ``--force``.  None when ``o`` may be written."""
+    if os.path.islink(o) and not follow:
+        return _usage(f"`{o}` is a symbolic link (to `{os.readlink(o)}`); refusing to write "
+                      "through it: give --follow-symlinks to write the file it points to, or "
+                      "another output name")
+    target = os.path.realpath(o) if follow else str(o)
+    try:
+        st = os.stat(target)
+    except OSError:
+        return None
+    import stat as S
+    # read-only: no write bit for its owner (so also for root, whom os.access lets through),
+    # or not writable by this user
+    read_only = not st.st_mode & S.S_IWUSR or not os.access(target, os.W_OK)
+    if S.S_ISREG(st.st_mode) and read_only and not force:
+        print(f"aidl: error: `{o}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
+              "to replace it: give --force to replace it anyway", file=sys.stderr)
+        return 1
+    return None
+
+
+def _encode_all(jobs: list, opt, res, started: float, budget, as_json: bool):
+    """Each ``(path, output, suffix)`` of ``jobs`` encoded in turn, within the compile's
+    wall-time budget (checked between writers; what a writer gets is bounded by the budget's
+    outline vertices): the ``[(path, bytes)]`` to write, or None after an ``E0304`` naming
+    the writer."""
+    import time
+    from ..limits import OutOfBudget
+    from ..output import encode
+    from ..pipeline import report_out_of_budget
+    items = []
+    for o, output, suffix in jobs:
+        if time.monotonic() > started + budget.seconds:
+            report_out_of_budget(res.sink, OutOfBudget(
+                f"more than {budget.seconds:g} s of wall time", f"the writer of `{o}` (nothing "
+                "was written)", res.model.root))
+            _emit(res.sink, as_json, False)
+            return None
+        items.append((o, encode(output, suffix, opt)))
+    return items
+
+
+def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
     """Write every output or none: each to a temporary file beside its target, then renamed
-    over it.  A symlink is written through (its target is replaced, the link kept).  A new file
-    gets the permissions the umask allows (0666 & ~umask); an existing file keeps its mode.
-    Returns an error message, or None."""
+    over it (``os.replace``: never half-written).  ``follow``: a symlink is written through
+    (its target is replaced, the link kept); otherwise the path itself is replaced, so a link
+    planted after the check is replaced, never written through.  A new file gets the
+    permissions the umask allows (0666 & ~umask); an existing file keeps its mode.  Returns
+    an error message, or None."""
     staged = []
     out = items[0][0] if items else ""
     try:
         for out, data in items:
-            target = Path(os.path.realpath(out))
+            target = Path(os.path.realpath(out)) if follow else \
+                Path(os.path.abspath(out))
             try:
                 mode = os.stat(target).st_mode & 0o7777
             except FileNotFoundError:
@@ -468,6 +525,8 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
+    import time
+    started = time.monotonic()
     res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
                          budget=_budget(args))
     if not res.ok:
@@ -498,16 +557,18 @@ def cmd_render(args) -> int:
                              "outside every part left out of the layout")
         names = _sheet_names(outs, len(flat))
         outs = [n for per in names for n in per]
-        items = [(n, encode(s, o.suffix, opt))
-                 for o, per in zip([p[0] for p in names], names)
-                 for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
+        jobs = [(n, s, o.suffix) for o, per in zip([p[0] for p in names], names)
+                for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
+        items = _encode_all(jobs, opt, res, started, _budget(args), args.json)
+        if items is None:
+            return 1
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2
     except OutputError as e:                 # an impossible size
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
-    err = _write_all(items)
+    err = _write_all(items, args.follow_symlinks)
     if err:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1

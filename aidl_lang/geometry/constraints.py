@@ -141,7 +141,7 @@ def fixed(ctx, a, **_):
     if isinstance(a, PV):
         pts = [a]
     elif isinstance(a, GeomRef):
-        pts = [member(a.geom, n, ctx.struct) for n in a.geom.points]
+        pts = [_pv(p, ctx.struct) for p in a.geom.points.values()]   # every point, p0.. too
         eqs = [Equation(var(s.index) - ctx.value_of(var(s.index))) for s in a.geom.scalars.values()]
     elif isinstance(a, StructRef):
         s = a.struct

@@ -26,22 +26,23 @@ def _glyphs() -> dict:
     archive of every Hershey font."""
     import json
 
-    from ..cache import cache_dir, read_owned, write_atomic
+    from ..cache import cache_dir, read_checked, write_checked
     d = cache_dir()
+    key = f"hershey {FONT} {_GLYPHS_FORMAT}"
     path = d / f"hershey-{FONT}.json" if d is not None else None
-    text = read_owned(path) if path is not None else None
+    text = read_checked(path, key) if path is not None else None
     if text:
         try:
             data = json.loads(text)
-            if data.get("font") == FONT and data.get("format") == _GLYPHS_FORMAT:
-                return {c: (tuple(tuple(map(tuple, stroke)) for stroke in strokes), adv)
-                        for c, (strokes, adv) in data["glyphs"].items()}
+            out = {c: (tuple(tuple((float(x), float(y)) for x, y in stroke) for stroke in strokes),
+                       float(adv)) for c, (strokes, adv) in data.items()}
+            if all(type(c) is str and len(c) == 1 for c in out):
+                return out
         except (ValueError, TypeError, KeyError, AttributeError):
             pass                          # damaged: made again below
     glyphs = _glyphs_from_package()
     if path is not None:
-        write_atomic(path, json.dumps({"font": FONT, "format": _GLYPHS_FORMAT,
-                                       "glyphs": glyphs}))
+        write_checked(path, key, json.dumps(glyphs))
     return glyphs
 
 

@@ -28,9 +28,12 @@ from ..geometry.model import Geometry, Model, Structure
 from ..geometry.operations import finish
 from ..geometry.tessellate import segments_for
 from ..geometry.text import text_strokes
+from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
 
 CLOSE_TOL = 1e-6
+UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
+END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 
 
 @dataclass
@@ -100,11 +103,43 @@ class Drawing:
 
 
 class Renderer:
-    def __init__(self, model: Model):
+    """``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
+    geometries, loops and unions (running out raises :class:`~aidl_lang.limits.OutOfBudget`
+    naming the structure); its budget's ``vertices`` bounds the tessellated outlines."""
+
+    STAGE = "the booleans"
+
+    def __init__(self, model: Model, deadline: Deadline | None = None):
         self.m = model
         self.x = model.xs()
-        self.exact = Provenance()
+        self.deadline = deadline
+        budget = deadline.budget if deadline is not None else DEFAULT_BUDGET
+        self.exact = Provenance(max_vertices=budget.vertices)
         self.empty_faces: list = []
+        self.current: Structure | None = None       # the structure being built (E0304)
+
+    def tick(self, s: Structure | None = None) -> None:
+        if self.deadline is not None:
+            self.deadline.check(self.STAGE, s or self.current)
+
+    def union(self, faces: list, s: Structure | None = None) -> mf.CrossSection:
+        """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
+        results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
+        edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
+        line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Disjoint
+        faces cost a little more (each level passes them again: 0.3 s instead of 0.1 s for
+        5 000 small circles).  The deadline is checked between groups."""
+        if not faces:
+            return mf.CrossSection()
+        while len(faces) > UNION_GROUP:
+            nxt = []
+            for i in range(0, len(faces), UNION_GROUP):
+                self.tick(s)
+                nxt.append(mf.CrossSection.batch_boolean(faces[i:i + UNION_GROUP],
+                                                         mf.OpType.Add))
+            faces = nxt
+        self.tick(s)
+        return mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
 
     def P(self, p) -> np.ndarray:
         ox, oy = 0.0, 0.0
@@ -203,7 +238,9 @@ class Renderer:
     def own_faces(self, s: Structure, out: Drawing) -> list:
         faces = []
         open_curves = []
+        self.current = s
         for g in s.geometry:
+            self.tick(s)
             if g.construction:
                 self.construct(g, out)
                 continue
@@ -237,14 +274,35 @@ class Renderer:
     def loops(self, curves: list[Geometry]):
         """Chain open curves whose endpoints meet into closed exact loops: ``([(Loop, the
         curves in order)], the curves left open)``.  Where a line meets an arc, the line's end
-        is the arc's exact end (the solve leaves them equal to its tolerance)."""
+        is the arc's exact end (the solve leaves them equal to its tolerance).  The next curve
+        of a chain is the first unused one (in declaration order) with an end within
+        :func:`_tol` of the chain's end, found through a grid of the curves' ends (cells of
+        :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
+        curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
         segs = [self.segment(g) for g in curves]
         ends = [(self._pt(g.points["start"]), self._pt(g.points["end"])) for g in curves]
+        grid: dict = {}
+        for j, (a, b) in enumerate(ends):
+            for p in (a, b):
+                key = (math.floor(p[0] / END_CELL), math.floor(p[1] / END_CELL))
+                lst = grid.setdefault(key, [])
+                if not lst or lst[-1] != j:
+                    lst.append(j)
+
+        def near(p):
+            cx, cy = math.floor(p[0] / END_CELL), math.floor(p[1] / END_CELL)
+            found = []
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    found += grid.get((cx + dx, cy + dy), ())
+            return sorted(set(found))
+
         used = [False] * len(curves)
         loops, rest = [], []
         for i in range(len(curves)):
             if used[i]:
                 continue
+            self.tick()
             chain = [i]
             used[i] = True
             run = [segs[i]]
@@ -252,7 +310,7 @@ class Renderer:
             grown = True
             while grown and _dist(end, start) > _tol(start):
                 grown = False
-                for j in range(len(curves)):
+                for j in near(end):
                     if used[j]:
                         continue
                     if _dist(ends[j][0], end) <= _tol(end):
@@ -328,12 +386,14 @@ class Renderer:
                 holes.append((c, self.shape(c, out)))
             else:
                 faces.append(self.shape(c, out))
-        acc = mf.CrossSection.batch_boolean(faces, mf.OpType.Add) if faces else mf.CrossSection()
+        self.current = s
+        acc = self.union(faces, s)
         if holes:
-            cut = mf.CrossSection.batch_boolean([h for _, h in holes], mf.OpType.Add)
+            cut = self.union([h for _, h in holes], s)
             for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
             for c, h in holes:
+                self.tick(s)
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
             acc = acc - cut
         if getattr(s, "finish", None) and not acc.is_empty():
@@ -370,7 +430,7 @@ class Renderer:
     def assembly(self, s: Structure, out: Drawing) -> None:
         faces = self.own_faces(s, out)
         if faces:
-            out.parts.append(Part(s.path, "solid", mf.CrossSection.batch_boolean(faces, mf.OpType.Add)))
+            out.parts.append(Part(s.path, "solid", self.union(faces, s)))
             out.part_of[s.path] = s
         self.children(s, out)
 
@@ -386,12 +446,17 @@ class Renderer:
     def run(self) -> Drawing:
         out = Drawing()
         root = self.m.root
-        if root.kind == "assembly":
-            self.assembly(root, out)
-        elif root.kind == "drawing":
-            self.drawing(root, out)
-        else:
-            self.part(root, out)
+        try:
+            if root.kind == "assembly":
+                self.assembly(root, out)
+            elif root.kind == "drawing":
+                self.drawing(root, out)
+            else:
+                self.part(root, out)
+        except OutOfBudget as ex:           # the vertex count knows no structure: this one
+            if ex.where is None:
+                ex.where = self.current
+            raise
         out.exact = self.exact
         out.empty_faces = self.empty_faces
         out.kerf = {}
@@ -512,8 +577,10 @@ def _t(p):
     return (float(p[0]), float(p[1]))
 
 
-def render_model(model: Model) -> Drawing:
-    return Renderer(model).run()
+def render_model(model: Model, deadline: Deadline | None = None) -> Drawing:
+    """The booleans' :class:`Drawing` of a solved ``model``; ``deadline``: see
+    :class:`Renderer` (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
+    return Renderer(model, deadline).run()
 
 
 def area(drawing: Drawing) -> float:

@@ -36,6 +36,7 @@ import numpy as np
 from ..geometry.curves import (Arc, Circle, Line, Loop, carrier, distance_to, foot, intersect,
                                same_carrier, simplify, tolerance)
 from ..geometry.tessellate import CHORD_TOL, segments_for
+from ..limits import OutOfBudget
 
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
@@ -48,8 +49,10 @@ class Provenance:
     mm); each chord of a tessellated face is stored with its carrier's index; ``ends`` are the
     exact segment ends (mm), each with the carriers of the two segments that meet there."""
 
-    def __init__(self):
+    def __init__(self, max_vertices: int | None = None):
         self.carriers: list[tuple] = []
+        self.max_vertices = max_vertices      # the budget's ``vertices`` (None: no limit)
+        self.vertices = 0                     # tessellated so far
         self._key: dict = {}
         self._a: list = []            # chord starts, ends (x, y) and carrier index
         self._b: list = []
@@ -81,6 +84,13 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
+        if self.max_vertices is not None:         # counted before anything is made
+            self.vertices += sum(1 if isinstance(s, Line) else
+                                 segments_for(s.radius) if isinstance(s, Circle) else
+                                 max(1, segments_for(s.radius, abs(s.sweep))) for s in segs)
+            if self.vertices > self.max_vertices:
+                raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
+                                  "(circles and arcs in chords of 0.005 mm)", "the booleans")
         seg_ids = [self.carrier_id(carrier(s)) for s in segs]
         for s, k in zip(segs, seg_ids):
             if isinstance(s, Line):

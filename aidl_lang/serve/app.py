@@ -35,6 +35,10 @@ from .. import output
 from .session import Session
 
 CHECKS_DELAY = 0.05     # s a slider must rest before its picture's geometry checks run
+MAX_MESSAGE = 65_536    # characters of one WebSocket message
+MAX_DEPTH = 8           # nesting of arrays and objects in one message ({"values": {...}} is 2)
+MAX_VALUES = 256        # entries of one message's "values"
+MAX_VALUE = 256         # characters of one value
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "svg": "image/svg+xml", "png": "image/png",
          "dxf": "application/dxf", "stl": "model/stl", "json": "application/json",
@@ -57,6 +61,80 @@ def writers() -> dict[str, object]:
     def writer(suffix: str):
         return lambda d, title: output.encode(output.build(d, title), suffix)
     return {s.lstrip("."): writer(s) for s in output.FORMATS}
+
+
+def parse_message(raw: dict, names: set[str] | None) -> tuple[dict | None, dict | None]:
+    """Check one received WebSocket message (the ASGI ``websocket.receive`` event) before
+    anything is compiled: ``(error, None)`` with an error frame to send back, ``(None, msg)``
+    with a customizer message ``{"id": int | None, "values": {name: text}}``, or
+    ``(None, None)`` for a message that is not a customizer message (ignored).  Refused: a
+    binary frame, more than :data:`MAX_MESSAGE` characters, nesting deeper than
+    :data:`MAX_DEPTH` (before ``json.loads``, which would recurse), text that is not JSON
+    (with its line and column), values that are not text, numbers or booleans or are too
+    long, and names that are not params of the program (``names``)."""
+    def error(message: str, **where) -> tuple[dict, None]:
+        return {"type": "error", "message": message, **where}, None
+    text = raw.get("text")
+    if text is None:
+        return error("binary WebSocket messages are not accepted: send JSON text, e.g. "
+                     '{"type": "set", "id": 1, "values": {"width": "40mm"}}')
+    if len(text) > MAX_MESSAGE:
+        return error(f"a message of {len(text):,} characters, more than the {MAX_MESSAGE:,} "
+                     "accepted")
+    depth, in_str, esc, line, col0 = 0, False, False, 1, -1
+    for i, ch in enumerate(text):
+        if in_str:
+            if esc:
+                esc = False
+            elif ch == "\\":
+                esc = True
+            elif ch == '"':
+                in_str = False
+        elif ch == '"':
+            in_str = True
+        elif ch in "[{":
+            depth += 1
+            if depth > MAX_DEPTH:
+                return error(f"the message nests arrays and objects more than {MAX_DEPTH} deep",
+                             line=line, column=i - col0)
+        elif ch in "]}":
+            depth -= 1
+        elif ch == "\n":
+            line, col0 = line + 1, i
+    try:
+        msg = json.loads(text)
+    except ValueError as e:
+        return error(f"the message is not JSON: {getattr(e, 'msg', e)}",
+                     line=getattr(e, "lineno", None), column=getattr(e, "colno", None))
+    if not (isinstance(msg, dict) and msg.get("type") == "set"):
+        return None, None
+    mid = msg.get("id")
+    mid = mid if isinstance(mid, int) and not isinstance(mid, bool) else None
+    values = msg.get("values")
+    if not isinstance(values, dict):
+        return error('a "set" message needs "values": {NAME: VALUE, ...}', id=mid)
+    if len(values) > MAX_VALUES:
+        return error(f'"values" has {len(values)} entries, more than {MAX_VALUES}', id=mid)
+    out = {}
+    for k, v in values.items():
+        if isinstance(v, bool):
+            v = "true" if v else "false"
+        elif isinstance(v, (int, float)):
+            v = repr(v)
+        if not isinstance(v, str) or len(v) > MAX_VALUE:
+            return error(f"the value of `{k[:64]}` must be text, a number or a boolean of at "
+                         f"most {MAX_VALUE} characters", id=mid)
+        out[k] = v
+    if names is not None:
+        unknown = sorted(k for k in out if k not in names)
+        if unknown:
+            from ..diagnostics import did_you_mean
+            shown = ", ".join(f"`{k[:64]}`" for k in unknown[:5])
+            near = did_you_mean(unknown[0], names) if names else []
+            return error(f"unknown param{'s' if len(unknown) > 1 else ''} {shown}: the program "
+                         f"declares {', '.join(sorted(names)[:20]) or 'no params'}"
+                         + (f"; did you mean `{near[0]}`?" if near else ""), id=mid)
+    return None, {"id": mid, "values": out}
 
 
 class LocalOnly:
@@ -190,23 +268,46 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
         return JSONResponse(sorted(writers()))
 
     async def ws_endpoint(ws: WebSocket):
+        """Receives and checks messages (:func:`parse_message`: errors answered at once with
+        an error frame); customizer messages are compiled one at a time by a worker, and
+        the newest one waiting replaces any older one (a slider dragged faster than it
+        compiles shows its last position; only that message's id is answered)."""
         await ws.accept()
         hub.clients.add(ws)
+        slot: dict = {"msg": None}
+        wake = asyncio.Event()
+
+        async def worker():
+            while True:
+                await wake.wait()
+                wake.clear()
+                msg, slot["msg"] = slot["msg"], None
+                if msg is None:
+                    continue
+                view = await hub.set_params(msg["values"])
+                await ws.send_text(json.dumps({"type": "view", "id": msg["id"], **view}))
+                await hub.broadcast(view, skip=ws)
+                checks = asyncio.create_task(hub.shape_checks())
+                hub.tasks.add(checks)
+                checks.add_done_callback(hub.tasks.discard)
+
+        task = asyncio.create_task(worker())
         try:
             await ws.send_text(json.dumps({"type": "view", **hub.session.view()}))
             while True:
-                msg = json.loads(await ws.receive_text())
-                if isinstance(msg, dict) and msg.get("type") == "set" \
-                        and isinstance(msg.get("values"), dict):
-                    view = await hub.set_params(msg["values"])
-                    await ws.send_text(json.dumps({"type": "view", "id": msg.get("id"), **view}))
-                    await hub.broadcast(view, skip=ws)
-                    checks = asyncio.create_task(hub.shape_checks())
-                    hub.tasks.add(checks)
-                    checks.add_done_callback(hub.tasks.discard)
-        except (WebSocketDisconnect, json.JSONDecodeError, RuntimeError):
+                raw = await ws.receive()
+                if raw.get("type") == "websocket.disconnect":
+                    break
+                err, msg = parse_message(raw, hub.session.param_names())
+                if err is not None:
+                    await ws.send_text(json.dumps(err))
+                elif msg is not None:
+                    slot["msg"] = msg                     # the newest wins
+                    wake.set()
+        except (WebSocketDisconnect, RuntimeError):
             pass
         finally:
+            task.cancel()
             hub.clients.discard(ws)
 
     async def watcher():
@@ -216,7 +317,13 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
         async for changes in awatch(target.parent, debounce=200, step=20, recursive=True,
                                     watch_filter=lambda c, p: p.endswith(".aidl")
                                     and c != Change.deleted or Path(p) == target):
-            await hub.reload()
+            try:
+                await hub.reload()
+            except Exception:       # noqa: BLE001 - logged; the next save reloads again
+                import sys
+                import traceback
+                print(f"aidl serve: reload failed:\n{traceback.format_exc()}", file=sys.stderr,
+                      flush=True)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):

@@ -30,6 +30,7 @@ from .. import ast as A
 from ..diagnostics import Diagnostic, DiagnosticSink
 from ..geometry.values import ANG, LEN, NUM, Q
 from ..interp import Interpreter
+from ..limits import Deadline
 from ..output import to_svg
 from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
@@ -107,8 +108,19 @@ class Session:
     # ------------------------------------------------------------------ public
     def load(self) -> dict:
         """Re-read and recompile the file; keep customizer values whose param still exists
-        and whose default did not change."""
+        and whose default did not change.  Never raises: an internal error (a bug in aidl)
+        becomes an ``E0900`` diagnostic beside the last good picture, is logged, and the next
+        save is compiled as usual."""
         t0 = time.perf_counter()
+        try:
+            return self._load(t0)
+        except Exception as e:          # noqa: BLE001 - a bug must not stop the live reload
+            self.program = None
+            self.solver = self._row_keys = None
+            self._dof_pending = self._checks_pending = None
+            return self._publish(Result(_internal(e, "compiling the file")), t0)
+
+    def _load(self, t0: float) -> dict:
         sink = DiagnosticSink()
         try:
             raw = self.path.read_bytes()
@@ -166,7 +178,12 @@ class Session:
         if self.program is None:
             return self.view()
         self.values = {str(k): str(v) for k, v in values.items()}
-        res = self._compile(self.values, shape_checks=False)
+        try:
+            res = self._compile(self.values, shape_checks=False)
+        except Exception as e:          # noqa: BLE001 - keep the last picture, say so
+            self.solver = self._row_keys = None
+            self._checks_pending = None
+            return self._publish(Result(_internal(e, "applying the customizer values")), t0)
         if res.fctx is not None:
             self.params = self._params(res.fctx, self.values)
         view = self._publish(res, t0)
@@ -183,8 +200,11 @@ class Session:
             return None
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
-        check_drawing(pending[1], sink)
-        self._topology_checks(pending[1], sink)
+        try:
+            check_drawing(pending[1], sink)
+            self._topology_checks(pending[1], sink)
+        except Exception as e:          # noqa: BLE001 - warnings only: log, keep the picture
+            sink = _internal(e, "checking the shape")
         if not sink.items:
             return None
         self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
@@ -204,10 +224,20 @@ class Session:
         :class:`~aidl_lang.output.Drawing`), or ``(None, diagnostics)`` when it fails."""
         if self.program is None:
             return None, self.diagnostics
-        res = self._compile(values, keep_warm=False, drawing=True)
+        try:
+            res = self._compile(values, keep_warm=False, drawing=True)
+        except Exception as e:          # noqa: BLE001 - a 422 with the diagnostic, not a 500
+            res = Result(_internal(e, "compiling a download"))
         if not res.ok:
             return None, [_diag_json(d, self.sources) for d in res.sink.items]
         return res.drawing, res.title
+
+    def param_names(self) -> set[str] | None:
+        """The names of the program's top-level ``param`` declarations (what a customizer
+        message may set), or None when no program is loaded."""
+        if self.program is None:
+            return None
+        return {st.name for st in self.program.stmts if isinstance(st, A.ParamDecl)}
 
     def view(self) -> dict:
         """The page's state as JSON-ready data."""
@@ -245,7 +275,8 @@ class Session:
             return res
         res.solver, res.warm, res.model = solver, warm, model
         t2 = time.perf_counter()
-        d = after_solve(sink, model, shape_checks=shape_checks)   # as `aidl check` does
+        d = after_solve(sink, model, shape_checks=shape_checks,   # as `aidl check` does
+                        deadline=Deadline(interp.deadline, interp.budget))
         t["render_ms"] = _ms(t2)
         if d is None:
             res.timings = t
@@ -375,6 +406,21 @@ def _nice(x: float) -> float:
         if m * 10 ** e <= x:
             return m * 10 ** e
     return 10 ** e
+
+
+def _internal(e: BaseException, stage: str) -> DiagnosticSink:
+    """A sink holding one ``E0900`` for an exception raised while ``stage`` (a bug in aidl);
+    the traceback goes to the server's log (stderr)."""
+    import sys
+    import traceback
+    print(f"aidl serve: internal error while {stage}:\n{traceback.format_exc()}",
+          file=sys.stderr, flush=True)
+    sink = DiagnosticSink()
+    sink.add(Diagnostic("E0900", f"internal error while {stage}: {type(e).__name__}: {e}",
+                        None, hint="this is a bug in aidl, not in your program; please report "
+                        "it with the file. The preview keeps watching: the next save is "
+                        "compiled again"))
+    return sink
 
 
 def _diag_json(d: Diagnostic, sources: dict) -> dict:

@@ -1,0 +1,248 @@
+"""Issue 26: classes of inputs that broke the compiler's promises (an internal error, a
+compile beyond its budget, work that grows faster than the input), each with a time bound."""
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from aidl_lang import registry
+from aidl_lang.pipeline import compile_source
+
+# one instance of every primitive (positional and keyword forms the registry documents)
+PRIMS = {
+    "Point": "Point((1, 2))", "Line": "Line((0, 0), (10, 1))",
+    "Circle": "Circle(center=(0, 0), radius=3)",
+    "Arc": "Arc(center=(0, 0), start=(5, 0), end=(0, 5))",
+    "Rectangle": "Rectangle(center=(0, 0), width=10, height=5)",
+    "RoundedRectangle": "RoundedRectangle(center=(0, 0), width=10, height=5, corner_radius=1)",
+    "Triangle": "Triangle((0, 0), (5, 0), (0, 5))",
+    "Trapezoid": "Trapezoid(center=(0, 0), bottom_width=10, top_width=5, height=4)",
+    "Ellipse": "Ellipse(center=(0, 0), rx=5, ry=3)",
+    "Polygon": "Polygon(points=[(0, 0), (5, 0), (0, 5)])",
+    "RegularPolygon": "RegularPolygon(center=(0, 0), radius=5, sides=6)",
+    "Slot": "Slot((0, 0), (10, 0), radius=2)",
+}
+CONSTRAINTS = [n for n in registry.ENTRIES if n not in PRIMS and n != "Text"]
+
+
+def test_every_primitive_compiles_alone():
+    for kind, call in PRIMS.items():
+        c = compile_source(f"solid p {{ g = {call} }}\n", "p.aidl")
+        assert c.ok, (kind, [(d.code, d.message) for d in c.sink.items])
+
+
+@pytest.mark.parametrize("name", CONSTRAINTS)
+def test_constraints_on_every_primitive_answer_with_diagnostics(name):
+    """`Fixed(g)` of a Polygon or RegularPolygon raised AttributeError (an internal error):
+    every constraint, given one or two geometries of each kind, answers with a model or a
+    located diagnostic, never an exception."""
+    t0 = time.perf_counter()
+    cases = [(a, None) for a in PRIMS] + [(a, a) for a in PRIMS]
+    for a, b in cases:
+        body = f" g = {PRIMS[a]}\n" + (f" h = {PRIMS[b]}\n" if b else "")
+        src = f"solid p {{\n{body} {name}({'g, h' if b else 'g'})\n}}\n"
+        c = compile_source(src, "p.aidl")               # raises on an internal error
+        for d in c.sink.items:
+            if d.is_error and d.code not in ("E0401", "E0402"):
+                assert d.span is not None, (src, d.code, d.message)
+    assert time.perf_counter() - t0 < 20
+
+
+@pytest.mark.parametrize("kind", ["Polygon", "RegularPolygon", "Rectangle", "Triangle"])
+def test_fixed_polygon_holds_every_vertex(kind):
+    c = compile_source(f"solid p {{\n g = {PRIMS[kind]}\n Fixed(g)\n}}\n", "p.aidl")
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    from aidl_lang.solver.diagnose import degrees_of_freedom
+    assert sum(d.dof for d in degrees_of_freedom(c.solve.solver, floating=False)) == 0
+
+
+# ------------------------------------------------------------------ one budget for the compile
+def _errors(c):
+    return [(d.code, d.message, d.span and (d.span.line, d.span.col))
+            for d in c.sink.items if d.is_error]
+
+
+def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
+    """After the solve the compile's deadline still counts: a passed deadline ends the
+    booleans, or the shape checks, with one E0304 at the structure, naming it and the stage."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.limits import Deadline
+    from aidl_lang.output import checks
+    from aidl_lang.output.booleans import render_model
+    from aidl_lang.pipeline import after_solve
+    src = "solid plate {\n    body = Circle(center=(0, 0), radius=9)\n" \
+          "    hole bore { c = Circle(center=(0, 0), radius=2) }\n}\n"
+    c = compile_source(src, "p.aidl")
+    assert c.ok
+    sink = DiagnosticSink()
+    assert after_solve(sink, c.model, deadline=Deadline(time.monotonic() - 1)) is None
+    (d,) = sink.items
+    assert d.code == "E0304" and (d.span.line, d.span.col) == (1, 1)
+    assert "in the booleans of `plate`: more than 60 s of wall time" in d.message
+    drawing = render_model(c.model)
+    sink = DiagnosticSink()
+    from aidl_lang.limits import OutOfBudget
+    with pytest.raises(OutOfBudget) as ex:
+        checks.check_drawing(drawing, sink, deadline=Deadline(time.monotonic() - 1))
+    assert ex.value.stage == "the shape checks" and ex.value.where is not None
+
+
+def test_outline_vertices_are_counted_before_they_are_made():
+    """The budget's `vertices` bounds the tessellated outlines: counted from the radii before
+    any chord is computed; E0304 at the structure that went over, scaled by --budget."""
+    from aidl_lang.limits import Budget
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=900, height=900)\n"
+           "    hole holes {\n"
+           "        for i in range(40) { c = Circle(center=(i * 10 - 200, 0), radius=4) }\n"
+           "    }\n}\n")
+    t0 = time.perf_counter()
+    c = compile_source(src, "v.aidl", budget=Budget(vertices=2_000))
+    (e,) = _errors(c)
+    assert e[0] == "E0304" and e[2] == (3, 5), e
+    assert "in the booleans of `plate.holes`: outlines of more than 2,000 vertices" in e[1]
+    assert compile_source(src, "v.aidl", budget=Budget(vertices=2_000).scaled(50)).ok
+    assert time.perf_counter() - t0 < 10
+
+
+def _circles(n, step, r=1.0, pattern=False):
+    if pattern:
+        return (f"solid s {{\n    c = Circle(center=(0, 0), radius={r})\n"
+                f"    p = LinearPattern(c, {n}, (-1, 1))\n}}\n")
+    return "solid s {\n" + "".join(
+        f"    c{i} = Circle(center=({step(i)[0]}, {step(i)[1]}), radius={step(i)[2]})\n"
+        for i in range(n)) + "}\n"
+
+
+@pytest.mark.parametrize("name, src, seconds", [
+    # 1 000 concentric circles: one batch union took 10 s (every circle crosses every scan
+    # line); united in groups of 16, 0.2 s
+    ("concentric", _circles(1000, lambda i: (0, 0, round(1 + i * 0.1, 1))), 6),
+    # 2 000 separate circles: W0504 measured every piece against every circle (4 M
+    # intersections); now the 6 pieces it names, against the circles in their box
+    ("separate", _circles(2000, lambda i: ((i % 70) * 3, (i // 70) * 3, 1)), 8),
+    # a diagonal chain of 4 000 circles: W0507's tiles each clipped the whole long loop
+    ("chain", _circles(4000, None, pattern=True), 10),
+], ids=["concentric", "separate", "chain"])
+def test_large_outlines_check_in_bounded_time(name, src, seconds, tmp_path):
+    """`aidl check` (compile, shape checks, and the freedom count of its ok line) on outlines
+    that were quadratic somewhere; the bounds are ~5x the time on a quiet machine."""
+    import contextlib
+    import io
+    from aidl_lang.cli.main import main
+    f = tmp_path / f"{name}.aidl"
+    f.write_text(src)
+    t0 = time.perf_counter()
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["check", str(f)]) == 0
+    assert time.perf_counter() - t0 < seconds, out.getvalue()
+    assert ": ok (" in out.getvalue()
+
+
+def test_freedom_count_of_a_long_pattern_peels_its_copies():
+    """A LinearPattern of 5 000 copies is one 15 000-row block of the Jacobian (an SVD of
+    minutes); rows that alone hold some unknown are peeled off first, in O(non-zeros)."""
+    import numpy as np
+    import scipy.sparse as sp
+    from aidl_lang.solver.diagnose import _block_rank, degrees_of_freedom, freedom_text
+    c = compile_source(_circles(5000, None, pattern=True), "lp.aidl")
+    assert c.ok
+    t0 = time.perf_counter()
+    assert freedom_text(degrees_of_freedom(c.solve.solver, floating=False)) == \
+        "2 degrees of freedom left, see --dof"
+    assert time.perf_counter() - t0 < 5
+    rng = np.random.default_rng(7)                # the same rank as a dense SVD
+    for _ in range(200):
+        m, n = (int(v) for v in rng.integers(1, 30, 2))
+        A = sp.random(m, n, density=float(rng.uniform(0.05, 0.3)),
+                      random_state=int(rng.integers(1 << 30))).toarray()
+        if m > 2 and rng.random() < 0.5:
+            A[-1] = 2 * A[0] - 0.5 * A[1]          # a dependent row
+        sv = np.linalg.svd(A, compute_uv=False)
+        want = int(np.sum(sv > 1e-9 * max(1.0, float(sv[0])))) if len(sv) else 0
+        assert _block_rank(sp.csr_matrix(A)) == want
+
+
+def test_the_writers_are_inside_the_budget(tmp_path, monkeypatch, capsys):
+    """`aidl render` checks the compile's wall time between writers: past it, E0304 names the
+    writer and nothing is written (not even the outputs already encoded)."""
+    import aidl_lang.output as O
+    from aidl_lang.cli.main import main
+    real = O.encode
+
+    def slow(output, suffix, opt=None):
+        time.sleep(1.3)
+        return real(output, suffix, opt)
+    monkeypatch.setattr(O, "encode", slow)
+    f = tmp_path / "p.aidl"
+    f.write_text("solid plate { c = Circle(center=(0, 0), radius=5) }\n")
+    a, b = tmp_path / "a.svg", tmp_path / "b.dxf"
+    assert main(["render", str(f), "-o", str(a), "-o", str(b), "--budget", "0.02"]) == 1
+    err = capsys.readouterr().err
+    assert "error[E0304]" in err and f"in the writer of `{b}`" in err
+    assert not a.exists() and not b.exists()
+    monkeypatch.undo()
+    assert main(["render", str(f), "-o", str(a), "-o", str(b)]) == 0
+
+
+def test_chaining_many_lines_into_a_loop_is_linear():
+    """5 000 lines declared in shuffled order close one 5 000-gon: chaining them scanned every
+    curve at every step (O(n^2), 12 s); through a grid of their ends, well under a second."""
+    import math
+    import random
+    from aidl_lang.output.booleans import Renderer
+    n = 5000
+    pts = [(round(100 * math.cos(2 * math.pi * i / n), 9), round(100 * math.sin(2 * math.pi * i / n), 9))
+           for i in range(n)]
+    order = list(range(n))
+    random.Random(1).shuffle(order)
+    body = "".join(f"    l{i} = Line(({pts[i][0]}, {pts[i][1]}), ({pts[(i + 1) % n][0]}, "
+                   f"{pts[(i + 1) % n][1]}))\n" for i in order)
+    c = compile_source("solid s {\n" + body + "}\n", "lines.aidl", do_solve=True)
+    assert c.ok, _errors(c)
+    r = Renderer(c.model)
+    t0 = time.perf_counter()
+    loops, rest = r.loops(list(c.model.root.geometry))
+    assert time.perf_counter() - t0 < 3
+    assert len(loops) == 1 and not rest and len(loops[0][1]) == n
+    assert abs(loops[0][0].area) == pytest.approx(0.5 * n * 100 ** 2 * math.sin(2 * math.pi / n))
+
+
+# ------------------------------------------------------------------ imports
+def _diamond(folder, levels: int = 16):
+    """Each file of a level imports the two files of the next; the last two import one
+    bottom file (2 * levels + 1 files, 2^levels paths from the top to the bottom)."""
+    folder.joinpath("bottom.aidl").write_text(
+        "def base() -> solid {\n    c = Circle(center=(0, 0), radius=1)\n}\n")
+    for k in range(levels - 1, -1, -1):
+        for s in "ab":
+            imps = ('import "bottom.aidl"\n' if k == levels - 1 else
+                    f'import "d{k + 1}a.aidl"\nimport "d{k + 1}b.aidl"\n')
+            folder.joinpath(f"d{k}{s}.aidl").write_text(
+                imps + f"def t{k}{s}() -> solid {{\n    c = Circle(center=(0, 0), radius=1)\n}}\n")
+    main = folder / "main.aidl"
+    main.write_text('import "d0a.aidl"\nimport "d0b.aidl"\n'
+                    "solid p {\n    c = Circle(center=(0, 0), radius=5)\n    b = t9b()\n}\n")
+    return main
+
+
+def test_an_import_diamond_reads_each_file_once(tmp_path, monkeypatch):
+    """16 levels of diamonds (33 files): the checker read every file on every path (2^16
+    reads, 82 s); each file is now read and parsed once by the checker and once by the
+    interpreter, and names still flow from the bottom file to the top."""
+    from aidl_lang import sources
+    main = _diamond(tmp_path)
+    reads = []
+    real = sources.read_import
+
+    def counting(path, raw):
+        reads.append(str(path))
+        return real(path, raw)
+    monkeypatch.setattr(sources, "read_import", counting)
+    t0 = time.perf_counter()
+    c = compile_source(main.read_text(), str(main))
+    assert time.perf_counter() - t0 < 10
+    assert c.ok, _errors(c)
+    assert len(reads) <= 2 * 33, len(reads)
+    assert "b" in c.model.root.children                  # t9b(), from 10 levels down
