@@ -93,7 +93,7 @@ shape_st = st.tuples(st.sampled_from(["circle", "slot", "rounded", "rect"]),
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(shape_st, min_size=1, max_size=4), st.lists(shape_st, max_size=3),
-       st.sampled_from([0.0, 1.5]))
+       st.sampled_from([0.0, 0.45]))   # below every shape radius (slots: size / 2 >= 0.5)
 def test_union_and_cut_loops_lie_on_the_exact_curves(solids, holes, fillet):
     body = "\n".join(f"    f{i} = {_shape(*s)}" for i, s in enumerate(solids))
     cuts = "\n".join(f"    hole h{i} {{ g = {_shape(*s)} }}" for i, s in enumerate(holes))

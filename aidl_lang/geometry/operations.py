@@ -383,6 +383,11 @@ def _fillet_at(a, b, turn: float, r: float):
     best = None
     for c in crossings(oa, ob):
         ta, tb = foot(carrier(a), c), foot(carrier(b), c)
+        # offsets that only nearly touch give their touching point, which may lie off the
+        # circle of radius r around the tangent points: not a fillet
+        tol = 1e-9 * max(1.0, abs(c[0]), abs(c[1]))
+        if abs(math.dist(ta, c) - r) > tol or abs(math.dist(tb, c) - r) > tol:
+            continue
         fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
         if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
             continue

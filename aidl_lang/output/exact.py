@@ -19,7 +19,9 @@ chords, to its 1e-8 mm grid) is then rebuilt by :meth:`Provenance.recover`:
    touching carriers give their touching point, so a tangent join stays tangent);
 4. a run whose exact ends come out in the wrong order or closer than
    :data:`~aidl_lang.geometry.curves.EPS` (an overlap thinner than the chords can show) is
-   dropped and its neighbours joined at their own intersection.
+   dropped and its neighbours joined at their own intersection; a loop left with fewer than
+   two runs closes on nothing in exact geometry (a sliver where two curves touch, cut by
+   their chords) and is left out.
 
 So every vertex of an output loop lies on the curves that meet there to floating-point
 accuracy, independent of the tessellation.  An edge no chord explains (none is known today)
@@ -186,7 +188,8 @@ class Provenance:
                 total = _sweep_sum(P, c, 0, n - 1)
                 if abs(abs(total) - 2 * math.pi) < 1e-6:
                     return Loop([Circle((c[1], c[2]), c[3], total > 0)])
-            return _polyline(P)
+            # every edge on one line, or on part of one circle: no area in exact geometry
+            return _polyline(P) if c is None else Loop([])
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
         joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
                  for j in range(len(runs))]
@@ -197,9 +200,12 @@ class Provenance:
             if key not in sweeps:
                 sweeps[key] = _sweep_sum(P, c, first, last)
             return sweeps[key]
+        explained = all(k >= 0 for k, _, _ in runs)
         runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
         if len(runs) < 2:
-            return _polyline(P)
+            # the exact curves close on nothing: a sliver the chords made (two curves that
+            # touch, cut by their chords), left out; what no chord explains stays a polyline
+            return Loop([]) if explained else _polyline(P)
         segs = []
         m = len(runs)
         for j, (k, first, last) in enumerate(runs):
