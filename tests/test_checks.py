@@ -663,15 +663,12 @@ def test_W0507_opening_in_tiles_is_the_whole_opening(holes, t, tile):
     assert (whole ^ tiled).area() == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
 
     def pieces(x):
-        return sorted(np.asarray(p.bounds()).tolist() for p in x.decompose()
-                      if p.area() >= 2 * t * t)
-    # the same pieces; their boxes may differ by the round joins' facets where a tile's edge
-    # cuts a piece (16 segments a turn: t / 2 (1 - cos(pi / 16)) < 0.01 t; a fresh CI seed
-    # met 0.009 mm at t = 0.5)
+        return sorted(p.area() for p in x.decompose() if p.area() >= 2 * t * t)
+    # the same pieces (what W0507 reports), compared by area: where a tile's edge cuts a
+    # piece, Clipper may leave or drop a zero-width spike of it, which moves its box by up to
+    # 0.3 mm but not its area (two fresh seeds met 0.009 and 0.3 mm)
     got, want = pieces(tiled), pieces(whole)
-    assert len(got) == len(want)
-    assert np.allclose(np.asarray(got).reshape(-1, 4), np.asarray(want).reshape(-1, 4),
-                       atol=0.05 * t)
+    assert got == pytest.approx(want, rel=1e-6, abs=1e-6)
 
 
 def test_W0508_a_hole_wholly_inside_another(compile_text):
