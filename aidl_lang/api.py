@@ -479,27 +479,40 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     return out
 
 
-def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
-    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it; with
-    ``follow_symlinks`` a symlink is written through (its target replaced, the link kept),
-    else the path itself is replaced (a link planted after the check is never followed); a
-    new file gets ``0666 & ~umask``, an existing one keeps its mode.  Raises
-    :class:`WriteError`."""
+def stage(out, data: bytes, follow_symlinks: bool = False) -> tuple[str, Path]:
+    """Write ``data`` to a temporary file beside ``out`` and return ``(temporary path,
+    target)``; :func:`os.replace` of the one over the other finishes the write.  With
+    ``follow_symlinks`` the target is a symlink's target (the link is kept), else the path
+    itself (a link planted after the check is never followed); a new file gets ``0666 &
+    ~umask``, an existing one keeps its mode.  Raises ``OSError`` (nothing left behind)."""
     import tempfile
     target = Path(os.path.realpath(out)) if follow_symlinks else Path(os.path.abspath(out))
-    tmp = None
     try:
-        try:
-            mode = os.stat(target).st_mode & 0o7777
-        except FileNotFoundError:
-            mask = os.umask(0)
-            os.umask(mask)
-            mode = 0o666 & ~mask
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
-                                   dir=str(target.parent))
+        mode = os.stat(target).st_mode & 0o7777
+    except FileNotFoundError:
+        mask = os.umask(0)
+        os.umask(mask)
+        mode = 0o666 & ~mask
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=str(target.parent))
+    try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
         os.chmod(tmp, mode)
+    except OSError:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+    return tmp, target
+
+
+def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
+    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it
+    (:func:`stage`, then :func:`os.replace`).  Raises :class:`WriteError`."""
+    tmp = None
+    try:
+        tmp, target = stage(out, data, follow_symlinks)
         os.replace(tmp, target)
         tmp = None
     except OSError as e:

@@ -438,31 +438,15 @@ def _encode_all(jobs: list, opt, res, started: float, budget, as_json: bool):
 
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
-    """Write every output or none: each to a temporary file beside its target, then renamed
-    over it (``os.replace``: never half-written).  ``follow``: a symlink is written through
-    (its target is replaced, the link kept); otherwise the path itself is replaced, so a link
-    planted after the check is replaced, never written through.  A new file gets the
-    permissions the umask allows (0666 & ~umask); an existing file keeps its mode.  Returns
-    an error message, or None."""
+    """Write every output or none: each staged beside its target (:func:`aidl_lang.api.stage`:
+    symlinks, modes), then all renamed over their targets (``os.replace``: never
+    half-written).  Returns an error message, or None."""
+    from ..api import stage
     staged = []
     out = items[0][0] if items else ""
     try:
         for out, data in items:
-            target = Path(os.path.realpath(out)) if follow else \
-                Path(os.path.abspath(out))
-            try:
-                mode = os.stat(target).st_mode & 0o7777
-            except FileNotFoundError:
-                mask = os.umask(0)
-                os.umask(mask)
-                mode = 0o666 & ~mask
-            import tempfile
-            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
-                                       dir=str(target.parent))
-            staged.append((tmp, target))
-            with os.fdopen(fd, "wb") as f:
-                f.write(data)
-            os.chmod(tmp, mode)
+            staged.append(stage(out, data, follow))
         for tmp, target in staged:
             os.replace(tmp, target)
         staged = []
