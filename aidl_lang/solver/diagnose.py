@@ -11,7 +11,9 @@ All three read the Jacobian ``J`` (rows: residuals, columns: unknowns) at a poin
   subset of the basis explains the dependency.  If all are satisfied, the later row is merely
   *redundant* (consistent, a warning).
 * **Degrees of freedom.**  For each structure, its own unknowns plus its children's frames,
-  against its own constraints: ``dof = unknowns - rank(J)``; a parameter whose column has a
+  against its own constraints and those of its ancestors that use these unknowns (a parent's
+  ``CenterInside(bore, self)`` places the hole's geometry), everything else held at the
+  solution: ``dof = unknowns - rank(J)``; a parameter whose column has a
   component in the null space of ``J`` is not determined, and its geometry (or child) *floats*.
 
 Dense linear algebra: used for one structure's system, or for the connected component of a
@@ -259,6 +261,7 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             for s in g.scalars.values():
                 label_of[s.index] = g.label
     systems = []                       # (structure, params, rows, cols)
+    touching = _ancestor_rows(solver, x)
     for s in model.structures:
         params = list(solver.own.get(id(s), ()))
         for c in s.children.values():
@@ -267,6 +270,8 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 for i in solver.frame.get(id(c), ()):
                     label_of[i] = f"{c.path} (position)"
         rows = solver.rows_of([s])
+        if touching is not None and s.parent is not None and params:
+            rows = touching(s, rows, params)
         sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
         cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
         systems.append((s, params, rows, cols))
@@ -313,6 +318,64 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
     return out
+
+
+def _ancestor_rows(solver, x: np.ndarray):
+    """``touching(s, rows, params)``: structure ``s``'s own ``rows`` and the rows of its
+    ancestors that use one of ``params`` (its own unknowns and its children's frames), in
+    increasing order; ``None`` when no structure has a parent.
+
+    A parent may constrain its descendants' geometry (``CenterInside(bore, self)`` reads the
+    hole's circle; validity rule 2): at the solution those rows pin the child's unknowns as
+    much as the child's own constraints do, so the count holds them too (issue 23: a hole
+    placed by its parent was counted, and listed by ``--dof``, as floating).  The rows are
+    found from the sparsity of the whole model's Jacobian (one evaluation over every free
+    column)."""
+    model = solver.model
+    if not any(s.parent is not None for s in model.structures):
+        return None
+    cols = np.flatnonzero(solver.free)
+    if not len(cols):
+        return None
+    whole = solver.whole
+    if whole.n_rows * len(cols) <= DENSE_CELLS:       # numpy only (no SciPy on a cold check)
+        nz_r, nz_c = np.nonzero(whole.jacobian(x, cols, dense=True).T)
+        indices, indptr = nz_c, np.searchsorted(nz_r, np.arange(len(cols) + 1))
+    else:
+        C = whole.jacobian(x, cols).tocsc()
+        indices, indptr = C.indices, C.indptr
+    where = np.full(len(solver.free), -1, dtype=np.int64)
+    where[cols] = np.arange(len(cols))
+    anc_cache: dict = {}
+
+    def ancestors_rows(s) -> np.ndarray:
+        hit = anc_cache.get(id(s))
+        if hit is None:
+            chain = []
+            a = s.parent
+            while a is not None:
+                chain.append(a)
+                a = a.parent
+            hit = np.asarray(sorted(r for a in chain for r in solver.rows_of([a])),
+                             dtype=np.int64)
+            anc_cache[id(s)] = hit
+        return hit
+
+    def touching(s, rows: np.ndarray, params: list) -> np.ndarray:
+        anc = ancestors_rows(s)
+        if not len(anc):
+            return rows
+        k = where[np.asarray(params, dtype=np.int64)]
+        k = k[k >= 0]
+        if not len(k):
+            return rows
+        used = np.concatenate([indices[indptr[j]:indptr[j + 1]] for j in k])
+        extra = np.intersect1d(anc, used)
+        if not len(extra):
+            return rows
+        return np.union1d(rows, extra).astype(np.int64)
+
+    return touching
 
 
 def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
