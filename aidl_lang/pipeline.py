@@ -260,18 +260,30 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
                 break
 
 
-def report_redundancies(sink: DiagnosticSink, result: SolveResult) -> None:
-    """W0401 for each user constraint implied by others (``aidl check --dof``)."""
+def report_redundancies(sink: DiagnosticSink, result: SolveResult,
+                        seconds: float | None = None) -> None:
+    """W0401 for each user constraint that others already imply (``aidl check``; what it
+    measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
+    (the constraints found by then are reported)."""
     from .solver.diagnose import redundancies
-    for red in redundancies(result.solver):
+    deadline = None if seconds is None else time.monotonic() + seconds
+    for red in redundancies(result.solver, deadline=deadline):
         c = red.constraint
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
-        labels = [Label(b.span, "implied by this", primary=False)
+        more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
+        labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
+                        primary=False)
                   for b in red.by[:4] if b.span is not None]
-        what = "partly redundant: part of it" if red.partly else "redundant: it"
-        source = by or "values already held (a constructor's dimensions or `Fixed`)"
-        sink.add(Diagnostic("W0401", f"`{c.describe()}` is {what} already follows from "
-                            f"{source}", c.span, "warning",
+        if red.partly:
+            msg = (f"`{c.describe()}` is partly redundant: part of what it says already "
+                   f"follows from {by}{more} (the rest still pins the model)")
+        elif by:
+            msg = (f"`{c.describe()}` is redundant: it follows from {by}{more}, so removing "
+                   "it would free nothing")
+        else:
+            msg = (f"`{c.describe()}` is redundant: it only restates values already held (a "
+                   "constructor's dimensions or `Fixed`), so removing it would free nothing")
+        sink.add(Diagnostic("W0401", msg, c.span, "warning",
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))

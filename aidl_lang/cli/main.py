@@ -257,6 +257,11 @@ def _read(path: str, as_json: bool) -> str | None:
         return None
 
 
+# plain `aidl check` looks for redundant constraints (W0401) for at most this long; `--dof`
+# looks without a bound (docs/solver.md, section 6)
+REDUNDANCY_SECONDS = 2.0
+
+
 def cmd_check(args) -> int:
     from ..api import compile as compile_program
     program = compile_program(path=args.file, overrides=_overrides(args.set),
@@ -268,10 +273,11 @@ def cmd_check(args) -> int:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
-        if args.dof and res.ok:
+        if res.ok:
             from ..pipeline import report_redundancies
+            report_redundancies(res.sink, res.solve, None if args.dof else REDUNDANCY_SECONDS)
+        if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
-            report_redundancies(res.sink, res.solve)
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                              "dof": d.dof, "floating": d.floating} for d in dofs]
