@@ -559,7 +559,7 @@ def redundancies(solver, deadline: float | None = None) -> list[Redundant]:
         # the constructors' rows: what a constraint says beyond them is measured modulo
         # their span (an orthonormal basis of it), see rank_c
         imp = [i for i, c in enumerate(lc) if c.implicit]
-        basis = _row_basis(Jd[imp]) if imp else None
+        basis = None                        # made when first needed (an SVD)
         for k, idx in mine.items():
             pos = {i: j for j, i in enumerate(idx)}
             M = []
@@ -578,14 +578,22 @@ def redundancies(solver, deadline: float | None = None) -> list[Redundant]:
                     if id(lc[i]) != k and lc[i] not in others:
                         others.append(lc[i])
             rM = _rank(np.array(M)) if M else 0
-            contribution[k] = contribution.get(k, 0) + len(idx) - rM
-            Jc = Jd[idx]
-            if basis is not None and not lc[idx[0]].implicit:
-                Jc = Jc - (Jc @ basis.T) @ basis
-            rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
+            gain = len(idx) - rM
+            contribution[k] = contribution.get(k, 0) + gain
             if rM:
                 lst = by.setdefault(k, [])
                 lst += [o for o in others if o not in lst]
+            if rM == 0 or gain == 0 or lc[idx[0]].implicit:
+                # independent of every other row (no overlap: rank beyond the shapes = gain),
+                # or fully implied (reported as such whatever its own rank)
+                rank_c[k] = rank_c.get(k, 0) + gain
+                continue
+            Jc = Jd[idx]
+            if imp:
+                if basis is None:
+                    basis = _row_basis(Jd[imp])
+                Jc = Jc - (Jc @ basis.T) @ basis
+            rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
     out: list[Redundant] = []
     seen: set = set()
     for i, c in enumerate(cons):
