@@ -84,8 +84,15 @@ A `for` loop over something that is not a list, a call of a value, or indexing a
 """),
     "E0112": ("math error", "Division by zero, sqrt of a negative number, and similar."),
     "E0113": ("bad --set override", """
-`--set NAME=VALUE` names a param the file does not declare, or its value cannot be read.
-Declare overridable values with `param NAME = VALUE` at the top of the file.
+`--set NAME=VALUE` names a param the file does not declare, its value cannot be read, or the
+value is of another kind than the param's default (a length for an angle, a word for a
+number). The error names the `--set` argument (also a value given to `aidl_lang.compile`
+or a live-preview slider); the file is then compiled with the default, so its uses of the
+param are not blamed. Declare overridable values with `param NAME = VALUE` at the top of
+the file.
+
+    param leg = 100 mm
+    aidl check part.aidl --set leg=100 deg   # `leg` is a length like its default `100 mm`
 """),
     "E0114": ("import not found or not allowed", """
 `import "file.aidl"` resolves relative to the importing file and must stay inside that file's

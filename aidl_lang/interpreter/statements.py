@@ -119,10 +119,16 @@ class Statements:
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
                     overridden = st.name in self.overrides and is_main
+                    val = self.eval(st.value)
                     if overridden:
-                        val = self._eval_override(st.name, self.overrides[st.name], fctx)
-                    else:
-                        val = self.eval(st.value)
+                        try:
+                            val = self._eval_override(st.name, self.overrides[st.name], fctx,
+                                                      val)
+                        except EvalError as e:
+                            # one error that names the `--set` argument; the file goes on
+                            # with the default, so nothing in it is blamed for the value
+                            self.error(e)
+                            overridden = False
                     if st.options:
                         try:
                             fctx.param_ranges[st.name] = self._param_range(st, val, overridden)
@@ -189,17 +195,58 @@ class Statements:
                             st.value.span, hint=f"change the value or `{bad}`")
         return out
 
-    def _eval_override(self, name: str, text: str, fctx: FileCtx):
+    def _eval_override(self, name: str, text: str, fctx: FileCtx, default=None):
+        """The value of ``--set NAME=TEXT`` (also ``aidl_lang.compile(overrides=...)`` and the
+        live preview's sliders) for the param whose value in the file is ``default``.  Raises
+        E0113, naming the ``--set`` argument, when ``TEXT`` does not read as a value or is of
+        another kind than the default (a length for an angle, a word for a number): that one
+        error, not the errors the wrong value would cause where the param is used (issue
+        28).  A bare number stands for a length or an angle like a bare number in the file;
+        a unit given for a param whose default is a bare number is checked where it is used
+        (:meth:`override_misuse`)."""
+        from ..geometry.values import ANG, dim_name
         from ..parser import ParseError, parse_expression
+        arg = f"`--set {name}={text}`"
+        want = type_name(default) if default is not None else "value"
+        if isinstance(default, Q):
+            shown = _fmt_q(default.const(), default.dim) if default.const() is not None \
+                else None
+            like = _a(dim_name(default.dim)) + (f" like its default `{shown}`" if shown else "")
+            example = {LEN: f"`--set {name}=40mm`", ANG: f"`--set {name}=30deg`"}.get(
+                default.dim, f"`--set {name}=4`")
+        elif isinstance(default, bool):
+            like, example = "true or false", f"`--set {name}=true`"
+        else:
+            like, example = _a(want), f"`--set {name}=...`"
         try:
             node = parse_expression(text, "<--set>", self.sink)
         except ParseError:
-            raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
-                            None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
+            raise EvalError("E0113", f"{arg}: cannot read `{text}` as a value", None,
+                            hint=f"`{name}` is {like}: write a number with an optional unit, "
+                                 f"e.g. {example}")
         if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
                 and node.id not in CONSTANTS:
+            if isinstance(default, (Q, bool)):
+                raise EvalError("E0113", f"{arg}: `{text}` is not a number or a known name, and "
+                                f"`{name}` is {like}", None, hint=f"write e.g. {example}")
             return text                         # a bare word: a string
-        return self.eval(node)
+        try:
+            val = self.eval(node)
+        except EvalError as e:
+            raise EvalError("E0113", f"{arg}: {e.message}", None, hint=e.hint,
+                            suggestions=e.suggestions)
+        if isinstance(default, Q) and isinstance(val, Q):
+            a, b = default.dim, val.dim
+            if a != b and NUM not in (a, b):
+                raise EvalError("E0113", f"{arg}: `{name}` is {like}, got {_a(dim_name(b))}",
+                                None, hint=f"give it in {_a(dim_name(a))} unit, e.g. {example}")
+            if a == NUM and b != NUM:
+                self.override_units[name] = (text, b)
+        elif isinstance(default, Q) or isinstance(default, bool):
+            if not (isinstance(default, bool) and isinstance(val, bool)):
+                raise EvalError("E0113", f"{arg}: `{name}` is {like}, got {_a(type_name(val))}", None,
+                                hint=f"write e.g. {example}")
+        return val
 
     def _import(self, st: A.Import, fctx: FileCtx) -> None:
         from ..parser import parse
@@ -732,6 +779,10 @@ def _definition_lines(stmts, out=None) -> dict[str, int]:
             if st.orelse is not None:
                 _definition_lines(st.orelse.stmts, out)
     return out
+
+
+def _a(what: str) -> str:
+    return ("an " if what[:1] in "aeiou" else "a ") + what
 
 
 def _fmt_q(v: float, dim) -> str:
