@@ -345,6 +345,15 @@ fit.
     #                 with hole `bracket.first_pattern[4]`
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0106": ("floor division used as a length", """
+`//` between two numbers or lengths is floor division (`7 // 2` is 3), and its result is used
+as a length, or is a length (`80 mm // 3` is 26 mm): the fraction is dropped, which is rarely
+meant for a size. Write `/` for division. `//` is read as floor division after an operand and
+before code (docs/language.md, "Comments"); if it was meant as a comment, write `#`.
+
+    r = Rectangle(center=(0, 0), width=80 // 3, height=10)   # 26 mm: write 80 / 3
+    w = 80 // width        # floor division by `width`; a comment is `# width`
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

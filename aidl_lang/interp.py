@@ -57,6 +57,9 @@ class Interpreter(Statements, Calls, Expressions):
         # `--set NAME=TEXT` with a unit for a param whose default is a bare number:
         # NAME -> (TEXT, the value's dimension), see error()
         self.override_units: dict[str, tuple] = {}
+        # id -> (value, the `//` node, its exact quotient): bare numbers made by floor
+        # division, warned about (W0106) if used as a length
+        self.floor_results: dict[int, tuple] = {}
         self.template_depth = 0
         self.n_geometry = 0
         self.loading: list[str] = []

@@ -700,3 +700,46 @@ def test_E0900_internal_error_in_the_live_preview(tmp_path, monkeypatch):
     v = S.Session(f).load()
     assert not v["ok"] and v["diagnostics"][0]["code"] == "E0900"
     assert "IndexError" in v["diagnostics"][0]["message"]
+
+
+# ------------------------------------------------------------------ W0106 (issue 28)
+def test_W0106_floor_division_used_as_a_length(compile_text):
+    c = compile_text("units mm\nn = 80 // 7\nsolid s {\n"
+                     "    r = Rectangle(center=(0, 0), width=80 // 3, height=10)\n"
+                     "    c = Circle((0, 0), radius=n)\n"
+                     "    e = Circle((0, 0), radius=80 mm // 7)\n"
+                     "    for i in range(80 // 20) { p = Circle((i * 10, 0), 2) }\n}\n")
+    assert c.ok
+    ws = {d.span.line: d for d in c.sink.items if d.code == "W0106"}
+    assert sorted(ws) == [2, 4, 6]                 # not the count given to range()
+    d = ws[4]
+    assert d.message == "`80 // 3` is floor division: it gives 26 (the whole part of 26.6667), " \
+                        "used as a length"
+    assert span4(d) == (4, 40, 4, 47) and d.hint == "write `/` for division; `//` is floor division"
+    assert (d.fix.span.line, d.fix.span.col, d.fix.span.end_col, d.fix.replacement) == (4, 43, 45, "/")
+    # a named result: the warning at the `//`, a label where it is used as a length
+    assert [(l.span.line, l.span.col, l.message) for l in ws[2].labels] == \
+        [(5, 31, "used as a length here")]
+    assert "it gives 11 mm" in ws[6].message
+    # the radius is what the program says: 26 mm, not 26.67 (the warning does not change it)
+    r = c.model.root.geometry[0]
+    assert c.model.x[r.scalars["width"].index] == pytest.approx(26.0)
+
+
+def test_W0106_a_word_after_slashes_may_have_been_a_comment(compile_text):
+    c = compile_text("units mm\nparam width = 30 mm\nw = 80 // width\n"
+                     "solid s { r = Rectangle(center=(0, 0), width=w * 1 mm * 1 mm, height=10) }\n")
+    (d,) = [d for d in c.sink.items if d.code == "W0106"]
+    assert span4(d)[:2] == (3, 5) and "a number by a length" in d.message
+    assert "if `// width` was meant as a comment, write `# width`" in d.hint and d.fix is None
+
+
+def test_W0106_through_the_cli_and_explain(tmp_path):
+    f = tmp_path / "f.aidl"
+    f.write_text("solid s { r = Rectangle(center=(0, 0), width=80 // 3, height=10) }\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and "warning[W0106]: `80 // 3` is floor division" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "explain", "W0106"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and "floor division used as a length" in r.stdout
