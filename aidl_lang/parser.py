@@ -25,7 +25,7 @@ from pathlib import Path
 
 from . import ast as A
 from .cache import cache_dir, read_checked, write_checked
-from .diagnostics import DiagnosticSink, Span
+from .diagnostics import DiagnosticSink, Label, Span
 from .memory import gc_paused
 
 # a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
@@ -946,6 +946,204 @@ def _expected_text(expected) -> str:
     return "expected " + ", ".join(names)
 
 
+# ----------------------------------------------------------------- brackets (issue 28)
+_PAIR = {"RPAR": "LPAR", "RSQB": "LSQB", "RBRACE": "LBRACE"}
+_CHAR = {"LPAR": "(", "RPAR": ")", "LSQB": "[", "RSQB": "]", "LBRACE": "{", "RBRACE": "}"}
+_CLOSER_OF = {"LPAR": ")", "LSQB": "]", "LBRACE": "}"}
+
+
+class _Lines:
+    """Lines of a text: their indentation (``None`` for a blank or comment-only line)."""
+
+    def __init__(self, text: str):
+        self.lines = text.split("\n")
+        self.indent = []
+        for ln in self.lines:
+            body = ln.lstrip(" \t")
+            blank = not body.strip() or body.startswith(("#", "//"))
+            self.indent.append(None if blank else len(ln) - len(body))
+
+    def of(self, line: int) -> int | None:
+        return self.indent[line - 1] if 0 < line <= len(self.indent) else None
+
+    def first_on_line(self, sp) -> bool:
+        ln = self.lines[sp.line - 1]
+        return not ln[:sp.col - 1].strip()
+
+    def next_code(self, line: int) -> int | None:
+        """The first line after ``line`` with code on it."""
+        for k in range(line + 1, len(self.indent) + 1):
+            if self.indent[k - 1] is not None:
+                return k
+        return None
+
+    def prev_code(self, line: int) -> int | None:
+        for k in range(line - 1, 0, -1):
+            if self.indent[k - 1] is not None:
+                return k
+        return None
+
+
+def _bracket_problems(text: str, path: str) -> list:
+    """Where the brackets of ``text`` (comments masked) do not balance: a list of
+    ``((lo, hi), code, message, span, hint, labels)``, in the order found, the parser's own
+    errors at offsets ``lo..hi`` being consequences of this one; ``[]`` when every
+    bracket is matched (or the lexer stopped early: E0002 says why).
+
+    Plain matching decides whether there is a problem; where it is comes from the
+    indentation as well: a closing bracket first on its line belongs to the open bracket of
+    the same kind on a line with the same indentation, so the brackets opened after that one
+    are the unclosed ones (``hole bore {`` missing its ``}`` is reported at ``hole bore {``,
+    not at the end of the file), and the likely place of the missing ``}`` is the first line
+    after the opener whose indentation comes back to the opener's line's.  A closing bracket
+    that closes nothing is reported with the line whose indentation it matches, where its
+    open bracket was probably left out."""
+    types, spans, err = _lex_lists(text, path=path)
+    if err is not None:
+        return []
+    stack: list = []
+    balanced = True
+    for t, sp in zip(types, spans):
+        if t in _CLOSER_OF:
+            stack.append(t)
+        elif t in _PAIR:
+            if not stack or stack[-1] != _PAIR[t]:
+                balanced = False
+                break
+            stack.pop()
+    if balanced and not stack:
+        return []
+    L = _Lines(text)
+    out: list = []
+    stack = []                      # (type, span)
+    suspects: list = []             # closers matched though their indentation matched no opener
+
+    def unclosed(t, sp) -> None:
+        ch, close = _CHAR[t], _CLOSER_OF[t]
+        ind = L.of(sp.line)
+        nxt = L.next_code(sp.line)
+        labels = []
+        if t == "LBRACE":
+            k = nxt
+            while k is not None and (L.of(k) or 0) > (ind or 0):
+                k = L.next_code(k)
+            if k is None:
+                hint = f"add `{close}` at the end of the file"
+            else:
+                last = L.prev_code(k) or sp.line
+                hint = (f"add `{close}` after line {last}, where the block probably ends (line {k} "
+                        f"is back at the indentation of line {sp.line})")
+                labels = [_line_label(L, path, text, k, f"the block probably ends before this line")]
+        else:
+            if nxt is None or (L.of(nxt) or 0) <= (ind or 0):
+                hint = f"add `{close}` at the end of line {sp.line}: the next line starts a new statement"
+            else:
+                hint = f"add `{close}` where the expression ends"
+        out.append(((sp.start, len(text) + 1), "E0001", f"`{ch}` is never closed", sp, hint,
+                    labels))
+
+    def stray(t, sp) -> None:
+        ch, want = _CHAR[t], _CHAR[_PAIR[t]]
+        guess = None
+        if L.first_on_line(sp):
+            ind = L.of(sp.line)
+            k = L.prev_code(sp.line)
+            while k is not None and L.of(k) != ind:
+                k = L.prev_code(k)
+            guess = k
+        else:
+            guess = sp.line
+        labels = [Label(sp, f"`{ch}` closes nothing", primary=False)]
+        if guess is not None and guess != sp.line:
+            where = _line_end_span(L, path, text, guess)
+            out.append(((where.start, _line_end(text, sp.start)), "E0001",
+                        f"`{ch}` on line {sp.line} closes nothing: the `{want}` that it closes is "
+                        f"probably missing here", where,
+                        f"add `{want}` at the end of line {guess} (line {sp.line}'s `{ch}` is at its "
+                        "indentation), or remove the extra `" + ch + "`", labels))
+        else:
+            out.append(((text.rfind("\n", 0, sp.start) + 1, _line_end(text, sp.start)),
+                        "E0001", f"`{ch}` closes nothing", sp,
+                        f"remove it, or add the `{want}` it should close", []))
+
+    for t, sp in zip(types, spans):
+        if t in _CLOSER_OF:
+            stack.append((t, sp))
+            continue
+        if t not in _PAIR:
+            continue
+        want = _PAIR[t]
+        match = None
+        if L.first_on_line(sp):     # the opener of the same kind at this line's indentation
+            ind = L.of(sp.line)
+            for k in range(len(stack) - 1, -1, -1):
+                if stack[k][0] == want and L.of(stack[k][1].line) == ind:
+                    match = k
+                    break
+        if match is None:
+            if stack and stack[-1][0] == want:
+                match = len(stack) - 1
+                if L.first_on_line(sp) and L.of(stack[-1][1].line) != L.of(sp.line):
+                    suspects.append(sp)
+            else:
+                match = next((k for k in range(len(stack) - 1, -1, -1) if stack[k][0] == want),
+                             None)
+        if match is None:
+            if suspects:
+                stray(t, suspects.pop())
+            else:
+                stray(t, sp)
+            continue
+        for ot, osp in stack[match + 1:]:
+            unclosed(ot, osp)
+        del stack[match:]
+    for ot, osp in stack:
+        unclosed(ot, osp)
+    return out
+
+
+def _line_end(text: str, pos: int) -> int:
+    end = text.find("\n", pos)
+    return len(text) if end < 0 else end
+
+
+def _line_end_span(L: "_Lines", path: str, text: str, line: int) -> Span:
+    """A one-character span just after the code of ``line``."""
+    start = sum(len(x) + 1 for x in L.lines[:line - 1])
+    body = L.lines[line - 1].split("#", 1)[0].rstrip()
+    col = len(body) + 1
+    return Span(path, line, col, line, col + 1, start + col - 1, start + col)
+
+
+def _line_label(L: "_Lines", path: str, text: str, line: int, message: str):
+    start = sum(len(x) + 1 for x in L.lines[:line - 1])
+    ind = L.of(line) or 0
+    width = max(1, len(L.lines[line - 1].rstrip()) - ind)
+    return Label(Span(path, line, ind + 1, line, ind + 1 + width, start + ind,
+                      start + ind + width), message, primary=False)
+
+
+def _report_brackets(text: str, path: str, sink: DiagnosticSink, first: int) -> None:
+    """After a failed parse: when the brackets do not balance, report where
+    (:func:`_bracket_problems`) instead of the parser's errors that follow from it (those in
+    each problem's range; the others are kept).  ``first``: the index
+    of this parse's first diagnostic in ``sink.items``."""
+    problems = _bracket_problems(text, path)
+    if not problems:
+        return
+    def consequence(d) -> bool:
+        return d.code == "E0001" and d.span is not None and any(
+            lo <= d.span.start <= hi for (lo, hi), *_rest in problems)
+    mine = sink.items[first:]
+    keep = [d for d in mine if not consequence(d)]
+    del sink.items[first:]
+    sink.items.extend(keep)
+    for _off, code, message, span, hint, labels in problems[:MAX_ERRORS]:
+        sink.error(code, message, span, hint, labels=labels)
+    sink.items[first:] = sorted(sink.items[first:],
+                                key=lambda d: d.span.start if d.span is not None else -1)
+
+
 def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     """Parse ``source`` (from ``path``) into a :class:`Program`; syntax errors go to ``sink``.
 
@@ -960,11 +1158,21 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
 
 
 def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    first = len(sink.items)
+    program, text = _parse_text(source, path, sink)
+    if len(sink.items) > first and text is not None:
+        _report_brackets(text, path, sink, first)
+    return program
+
+
+def _parse_text(source: str, path: str, sink: DiagnosticSink):
+    """The parse with error recovery: ``(program, masked text)`` (text ``None`` when
+    nesting was refused)."""
     sink.sources[path] = source
     if "\x00" in source:
         source = source.replace("\x00", " ")
     slashes: list = []
-    text = mask_comments(source, slashes)
+    text = masked = mask_comments(source, slashes)
     # the deepest nesting, in C (a running sum of +1/-1); the loop below only finds where
     if max(accumulate(map(_BRACKET_STEP.__getitem__, _ANY_BRACKET.findall(text))),
            default=0) > MAX_NESTING:
@@ -979,7 +1187,7 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
                     sink.error("E0003", f"brackets nested more than {MAX_NESTING} deep",
                                Span(path, line, col, line, col + 1, i, i + 1),
                                "split the expression into named constants")
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, []), None
             else:
                 depth -= 1
     _tables()
@@ -995,22 +1203,22 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
             except (UnexpectedToken, UnexpectedCharacters) as e:
                 pos = _error_pos(e, text)
                 if pos in seen or len(seen) >= MAX_ERRORS:
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
                 seen.add(pos)
                 _report(e, text, path, pos, sink)
                 _slash_hint(sink, slashes, text, pos)
                 if pos >= len(text.rstrip()):
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+                    return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
                 text = _blank_logical_line(text, pos)
         else:
-            return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+            return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
     finally:
         _STATE.builder = prev
     if builder.failed:
         sink.error(*builder.failed[0])
-        return A.Program(Span(path, 1, 1, 1, 1), path, source, [])
+        return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
     end_line = source.count("\n") + 1
-    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts)
+    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts), masked
 
 
 def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
@@ -1058,6 +1266,23 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
     width = max(1, len(str(tok)))
     what = "newline" if tok.type == "_NL" else f"`{tok}`"
     hint = None
+    line_start = text.rfind("\n", 0, pos) + 1
+    head = text[line_start:pos].strip().lstrip("}").strip()
+    if tok.type in _TOP_ONLY:
+        opener = _outermost_open_brace(text, pos)
+        if opener is not None:
+            _report_top_only(tok, text, path, pos, opener, sink)
+            return
+    if tok.type == "COLON" and re.match(r"(for|if|elif|else|while|def)\b", head):
+        kw = head.split()[0]
+        stmt = head.rstrip(":").rstrip()
+        hint = (f"AIDL writes blocks with braces, not a colon and indentation: `{stmt} {{` on "
+                f"this line and `}}` after the block's last line" +
+                (" (`else if` or `elif`, `else` follow the `}` of the `if`)" if kw in ("if", "elif", "else") else "") +
+                (" (templates: `def NAME(PARAMS) -> solid { ... }`)" if kw == "def" else ""))
+        sink.error("E0001", f"unexpected `:` after `{kw}`: a block is written in braces",
+                   Span(path, line, col, line, col + 1, pos, pos + 1), hint)
+        return
     if str(tok) == "=" :
         hint = "use `==` for an equation constraint, `=` only to name a value"
     elif str(tok) == "{" :
@@ -1068,6 +1293,47 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         width = 1
     sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),
                Span(path, line, col, line, col + width, pos, pos + width), hint)
+
+
+# statements only the top level of a file may hold (E0116 inside a structure)
+_TOP_ONLY = {"PARAM": "param", "UNITS": "units", "IMPORT": "import", "DEF": "def"}
+
+
+def _outermost_open_brace(text: str, pos: int) -> int | None:
+    """The offset of the outermost ``{`` still open at ``pos`` (``None`` at the top level)."""
+    types, spans, _err = _lex_lists(text[:pos])
+    stack: list = []
+    for t, sp in zip(types, spans):
+        if t == "LBRACE":
+            stack.append(sp.start)
+        elif t == "RBRACE" and stack:
+            stack.pop()
+    return stack[0] if stack else None
+
+
+def _report_top_only(tok, text: str, path: str, pos: int, opener: int,
+                     sink: DiagnosticSink) -> None:
+    """E0116: ``param``, ``units``, ``import`` or ``def`` inside a structure; the hint says
+    where it goes (above the structure that holds it)."""
+    word = _TOP_ONLY[tok.type]
+    line = text.count("\n", 0, pos) + 1
+    col = pos - text.rfind("\n", 0, pos)
+    end = text.find("\n", pos)
+    stmt = text[pos:len(text) if end < 0 else end].split("#", 1)[0].strip()
+    oline = text.count("\n", 0, opener) + 1
+    ostart = text.rfind("\n", 0, opener) + 1
+    head = text[ostart:opener + 1].strip()
+    where = {"param": "params are declared at the top level of the file, before the structures",
+             "units": "`units` is given once, at the top of the file",
+             "import": "imports go at the top of the file",
+             "def": "templates are defined at the top level of the file"}[word]
+    short = stmt if len(stmt) <= 40 else stmt[:37] + "..."
+    sink.error("E0116", f"`{word}` is only allowed at the top level of a file, not inside a "
+               "structure", Span(path, line, col, line, col + len(word), pos, pos + len(word)),
+               f"{where}: move `{short}` above line {oline} (`{head}`)"
+               + ("; a value used only here can be a plain assignment, e.g. "
+                  f"`{stmt.split(None, 1)[1].split(',')[0].strip()}`"
+                  if word == "param" and len(stmt.split(None, 1)) > 1 else ""))
 
 
 class _BuildError(ParseError):

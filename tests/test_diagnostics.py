@@ -234,8 +234,6 @@ def test_E0108_points_at_the_wrong_argument(compile_text):
     assert span4(d) == (3, 16, 3, 21)
 
 
-@pytest.mark.xfail(strict=True, reason="`param`/`def`/`import`/`units` inside a structure is a "
-                   "generic E0001 from the grammar; the interpreter's E0116 is unreachable")
 @pytest.mark.parametrize("stmt", ["param w = 3", "units inch", 'import "x.aidl"',
                                   "def f() -> solid { }"])
 def test_E0116_top_level_statement_inside_structure(compile_text, stmt):
