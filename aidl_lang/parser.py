@@ -37,6 +37,7 @@ if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the pac
 
 MAX_ERRORS = 20
 MAX_NESTING = 64           # brackets nested deeper than this are refused (E0003)
+MAX_BRACKET_DECISIONS = 64  # closers weighed by look-ahead when locating a bracket problem
 
 UNIT_RE = re.compile(r"^(?P<num>(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)[ \t]*(?P<unit>[a-z°]+)?$")
 
@@ -966,6 +967,27 @@ class _Lines:
     def of(self, line: int) -> int | None:
         return self.indent[line - 1] if 0 < line <= len(self.indent) else None
 
+    def continued(self, toks: list) -> None:
+        """Mark the lines that start inside an open ``(`` or ``[`` (an expression carried on):
+        :meth:`stmt` gives them the indentation of the line the statement starts on."""
+        self.cont = [False] * (len(self.indent) + 1)
+        depth, line = 0, 1
+        for t, sp in toks:
+            if sp.line > line:
+                for k in range(line + 1, sp.line + 1):
+                    self.cont[k - 1] = depth > 0
+                line = sp.line
+            if t in ("LPAR", "LSQB"):
+                depth += 1
+            elif t in ("RPAR", "RSQB") and depth:
+                depth -= 1
+
+    def stmt(self, line: int) -> int | None:
+        """The indentation of the statement that ``line`` is part of."""
+        while line > 1 and self.cont[line - 1]:
+            line -= 1
+        return self.of(line)
+
     def first_on_line(self, sp) -> bool:
         ln = self.lines[sp.line - 1]
         return not ln[:sp.col - 1].strip()
@@ -987,75 +1009,82 @@ class _Lines:
 def _bracket_problems(text: str, path: str) -> list:
     """Where the brackets of ``text`` (comments masked) do not balance: a list of
     ``((lo, hi), code, message, span, hint, labels)``, in the order found, the parser's own
-    errors at offsets ``lo..hi`` being consequences of this one; ``[]`` when every
-    bracket is matched (or the lexer stopped early: E0002 says why).
+    errors at offsets ``lo..hi`` being consequences of this one; ``[]`` when every bracket is
+    matched (or the lexer stopped early: E0002 says why).
 
-    Plain matching decides whether there is a problem; where it is comes from the
-    indentation as well: a closing bracket first on its line belongs to the open bracket of
-    the same kind on a line with the same indentation, so the brackets opened after that one
-    are the unclosed ones (``hole bore {`` missing its ``}`` is reported at ``hole bore {``,
-    not at the end of the file), and the likely place of the missing ``}`` is the first line
-    after the opener whose indentation comes back to the opener's line's.  A closing bracket
-    that closes nothing is reported with the line whose indentation it matches, where its
-    open bracket was probably left out."""
+    Plain matching decides whether there is a problem.  Where it is: at each closing bracket
+    that does not simply close the innermost open one, the readings -- it closes an open
+    bracket further out (those in between were never closed) or it closes nothing -- are
+    compared by how many problems the rest of the file then has under plain matching, the
+    fewest winning; a tie goes by indentation (a ``}`` first on its line belongs to the ``{``
+    on a line indented like it; a ``}`` indented deeper than the innermost open ``{``'s line
+    closes nothing).  So ``hole bore {`` missing its ``}`` is reported at ``hole bore {``, not
+    at the end of the file, with the line where the indentation comes back to it; a ``}``
+    whose ``{`` was left out is reported with the line whose indentation it matches."""
     types, spans, err = _lex_lists(text, path=path)
     if err is not None:
         return []
-    stack: list = []
-    balanced = True
-    for t, sp in zip(types, spans):
-        if t in _CLOSER_OF:
-            stack.append(t)
-        elif t in _PAIR:
-            if not stack or stack[-1] != _PAIR[t]:
-                balanced = False
-                break
-            stack.pop()
-    if balanced and not stack:
+    toks = [(t, sp) for t, sp in zip(types, spans) if t in _CLOSER_OF or t in _PAIR]
+    if _plain_cost(toks, 0, []) == 0:
         return []
     L = _Lines(text)
+    L.continued(toks)
     out: list = []
-    stack = []                      # (type, span)
-    suspects: list = []             # closers matched though their indentation matched no opener
+    net_of: dict = {}               # line -> opened minus closed ( and [ on it
+    for t, sp in toks:
+        if t in ("LPAR", "LSQB"):
+            net_of[sp.line] = net_of.get(sp.line, 0) + 1
+        elif t in ("RPAR", "RSQB"):
+            net_of[sp.line] = net_of.get(sp.line, 0) - 1
 
     def unclosed(t, sp) -> None:
         ch, close = _CHAR[t], _CLOSER_OF[t]
-        ind = L.of(sp.line)
-        nxt = L.next_code(sp.line)
+        ind = L.stmt(sp.line) or 0
+        k = L.next_code(sp.line)          # the first line back at the opener's indentation
+        while k is not None and (L.of(k) or 0) > ind:
+            k = L.next_code(k)
+        last = (L.prev_code(k) or sp.line) if k is not None else (
+            L.prev_code(len(L.lines) + 1) or sp.line)
         labels = []
         if t == "LBRACE":
-            k = nxt
-            while k is not None and (L.of(k) or 0) > (ind or 0):
-                k = L.next_code(k)
             if k is None:
                 hint = f"add `{close}` at the end of the file"
             else:
-                last = L.prev_code(k) or sp.line
-                hint = (f"add `{close}` after line {last}, where the block probably ends (line {k} "
-                        f"is back at the indentation of line {sp.line})")
-                labels = [_line_label(L, path, text, k, f"the block probably ends before this line")]
+                hint = (f"add `{close}` after line {last}, where the block probably ends (line "
+                        f"{k} is back at the indentation of line {sp.line})")
+                labels = [_line_label(L, path, k, "the block probably ends before this line")]
         else:
-            if nxt is None or (L.of(nxt) or 0) <= (ind or 0):
-                hint = f"add `{close}` at the end of line {sp.line}: the next line starts a new statement"
+            # a continuation line that opens more than it closes and ends with `,` (an
+            # argument list goes on) is where a `)` went missing; else the statement's end
+            for ln in range(sp.line + 1, last + 1):
+                net = net_of.get(ln, 0)
+                code = L.lines[ln - 1].split("#", 1)[0].rstrip()
+                if net > 0 and code.endswith(","):
+                    hint = (f"a `)` or `]` is probably missing in line {ln}: it opens "
+                            f"{net} more than it closes")
+                    labels = [Label(_line_end_span(L, path, ln), "a closing bracket is "
+                                    "probably missing in this line", primary=False)]
+                    break
             else:
-                hint = f"add `{close}` where the expression ends"
+                hint = (f"add `{close}` at the end of line {last}, where the statement ends" +
+                        (" (the next line starts a new one)" if k is not None else ""))
+                labels = [Label(_line_end_span(L, path, last), f"`{close}` probably missing here",
+                                primary=False)]
         out.append(((sp.start, len(text) + 1), "E0001", f"`{ch}` is never closed", sp, hint,
                     labels))
 
     def stray(t, sp) -> None:
         ch, want = _CHAR[t], _CHAR[_PAIR[t]]
-        guess = None
+        guess = sp.line
         if L.first_on_line(sp):
             ind = L.of(sp.line)
             k = L.prev_code(sp.line)
             while k is not None and L.of(k) != ind:
                 k = L.prev_code(k)
             guess = k
-        else:
-            guess = sp.line
         labels = [Label(sp, f"`{ch}` closes nothing", primary=False)]
         if guess is not None and guess != sp.line:
-            where = _line_end_span(L, path, text, guess)
+            where = _line_end_span(L, path, guess)
             out.append(((where.start, _line_end(text, sp.start)), "E0001",
                         f"`{ch}` on line {sp.line} closes nothing: the `{want}` that it closes is "
                         f"probably missing here", where,
@@ -1066,40 +1095,84 @@ def _bracket_problems(text: str, path: str) -> list:
                         "E0001", f"`{ch}` closes nothing", sp,
                         f"remove it, or add the `{want}` it should close", []))
 
-    for t, sp in zip(types, spans):
+    stack: list = []                # (type, span)
+    decisions = 0
+    for i, (t, sp) in enumerate(toks):
         if t in _CLOSER_OF:
             stack.append((t, sp))
             continue
-        if t not in _PAIR:
-            continue
         want = _PAIR[t]
-        match = None
-        if L.first_on_line(sp):     # the opener of the same kind at this line's indentation
-            ind = L.of(sp.line)
-            for k in range(len(stack) - 1, -1, -1):
-                if stack[k][0] == want and L.of(stack[k][1].line) == ind:
-                    match = k
-                    break
-        if match is None:
-            if stack and stack[-1][0] == want:
-                match = len(stack) - 1
-                if L.first_on_line(sp) and L.of(stack[-1][1].line) != L.of(sp.line):
-                    suspects.append(sp)
-            else:
-                match = next((k for k in range(len(stack) - 1, -1, -1) if stack[k][0] == want),
-                             None)
-        if match is None:
-            if suspects:
-                stray(t, suspects.pop())
-            else:
-                stray(t, sp)
+        first = L.first_on_line(sp)
+        ind = L.of(sp.line) if first else None
+        top_ok = bool(stack) and stack[-1][0] == want
+        same = [k for k in range(len(stack)) if stack[k][0] == want]
+        by_indent = [k for k in same if first and L.stmt(stack[k][1].line) == ind]
+        top_line = stack[-1][1].line if stack else None
+        if top_ok and (not first or not by_indent or by_indent[-1] == len(stack) - 1) and \
+                (t != "RBRACE" or (first and L.stmt(top_line) == ind)
+                 or (not first and top_line == sp.line)):
+            stack.pop()             # the plain case
             continue
-        for ot, osp in stack[match + 1:]:
+        # a `}` after code on its line closing a `{` of an earlier line: perhaps its own `{`
+        # on this line was left out (`hole h { c = ... }`)
+        inline = t == "RBRACE" and not first and top_ok and top_line != sp.line
+        if len(out) >= MAX_ERRORS:
+            break
+        decisions += 1
+        if decisions > MAX_BRACKET_DECISIONS:    # hostile input: plain matching from here
+            k = next((k for k in range(len(stack) - 1, -1, -1) if stack[k][0] == want), None)
+            if k is None:
+                stray(t, sp)
+            else:
+                for ot, osp in stack[k + 1:]:
+                    unclosed(ot, osp)
+                del stack[k:]
+            continue
+        # the readings: close one of the open brackets of this kind, or close nothing
+        rest = [(st[0], None) for st in stack]
+        options = []
+        for k in same:
+            cost = len(stack) - 1 - k + _plain_cost(toks, i + 1, [x for x, _ in rest[:k]])
+            pref = 0 if k in by_indent else (1 if k == len(stack) - 1 else 3)
+            options.append((cost, pref, k))
+        deeper = first and t == "RBRACE" and stack and L.stmt(top_line) is not None \
+            and ind is not None and ind > L.stmt(top_line)
+        options.append((1 + _plain_cost(toks, i + 1, [x for x, _ in rest]),
+                        0 if deeper or inline else 2, None))
+        _cost, _pref, k = min(options, key=lambda o: (o[0], o[1]))
+        if k is None:
+            stray(t, sp)
+            continue
+        for ot, osp in stack[k + 1:]:
             unclosed(ot, osp)
-        del stack[match:]
-    for ot, osp in stack:
+        del stack[k:]
+    for ot, osp in stack[:max(0, MAX_ERRORS - len(out))]:
         unclosed(ot, osp)
     return out
+
+
+def _plain_cost(toks: list, i: int, stack: list) -> int:
+    """How many bracket problems plain matching finds in ``toks[i:]`` with ``stack`` (types)
+    open: a closer that closes an open bracket further out counts those in between, one that
+    closes nothing counts one, and what is open at the end counts."""
+    stack = list(stack)
+    n = 0
+    for t, _sp in toks[i:]:
+        if t in _CLOSER_OF:
+            stack.append(t)
+            continue
+        want = _PAIR[t]
+        if stack and stack[-1] == want:
+            stack.pop()
+            continue
+        for k in range(len(stack) - 1, -1, -1):
+            if stack[k] == want:
+                n += len(stack) - 1 - k
+                del stack[k:]
+                break
+        else:
+            n += 1
+    return n + len(stack)
 
 
 def _line_end(text: str, pos: int) -> int:
@@ -1107,7 +1180,7 @@ def _line_end(text: str, pos: int) -> int:
     return len(text) if end < 0 else end
 
 
-def _line_end_span(L: "_Lines", path: str, text: str, line: int) -> Span:
+def _line_end_span(L: "_Lines", path: str, line: int) -> Span:
     """A one-character span just after the code of ``line``."""
     start = sum(len(x) + 1 for x in L.lines[:line - 1])
     body = L.lines[line - 1].split("#", 1)[0].rstrip()
@@ -1115,7 +1188,7 @@ def _line_end_span(L: "_Lines", path: str, text: str, line: int) -> Span:
     return Span(path, line, col, line, col + 1, start + col - 1, start + col)
 
 
-def _line_label(L: "_Lines", path: str, text: str, line: int, message: str):
+def _line_label(L: "_Lines", path: str, line: int, message: str):
     start = sum(len(x) + 1 for x in L.lines[:line - 1])
     ind = L.of(line) or 0
     width = max(1, len(L.lines[line - 1].rstrip()) - ind)
@@ -1131,8 +1204,8 @@ def _report_brackets(text: str, path: str, sink: DiagnosticSink, first: int) -> 
     problems = _bracket_problems(text, path)
     if not problems:
         return
-    def consequence(d) -> bool:
-        return d.code == "E0001" and d.span is not None and any(
+    def consequence(d) -> bool:             # E0116: a `def` after a block never closed
+        return d.code in ("E0001", "E0116") and d.span is not None and any(
             lo <= d.span.start <= hi for (lo, hi), *_rest in problems)
     mine = sink.items[first:]
     keep = [d for d in mine if not consequence(d)]
