@@ -1356,7 +1356,11 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         sink.error("E0001", f"unexpected `:` after `{kw}`: a block is written in braces",
                    Span(path, line, col, line, col + 1, pos, pos + 1), hint)
         return
-    if str(tok) == "=" :
+    exp = getattr(e, "expected", None) or ()
+    if tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
+            and _open_paren(text, pos):
+        hint = f"a `,` is probably missing before `{tok}`"
+    elif str(tok) == "=" :
         hint = "use `==` for an equation constraint, `=` only to name a value"
     elif str(tok) == "{" :
         hint = "a structure is written `solid NAME { ... }`"
@@ -1366,6 +1370,20 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         width = 1
     sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),
                Span(path, line, col, line, col + width, pos, pos + width), hint)
+
+
+def _open_paren(text: str, pos: int) -> bool:
+    """Whether a ``(`` or ``[`` is open at ``pos`` in its statement (arguments, a list)."""
+    types, _spans, _err = _lex_lists(text[max(0, text.rfind("{", 0, pos)):pos])
+    depth = 0
+    for t in types:
+        if t in ("LPAR", "LSQB"):
+            depth += 1
+        elif t in ("RPAR", "RSQB") and depth:
+            depth -= 1
+        elif t in ("RBRACE", "LBRACE"):
+            depth = 0
+    return depth > 0
 
 
 # statements only the top level of a file may hold (E0116 inside a structure)

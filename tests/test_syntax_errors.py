@@ -159,3 +159,12 @@ def test_unclosed_brace_through_the_cli(tmp_path):
                        capture_output=True, text=True, timeout=120, cwd=ROOT)
     assert r.returncode == 1 and "u.aidl:4:15: error[E0001]: `{` is never closed" in r.stderr
     assert "end of file" not in r.stderr and r.stderr.count("error[") == 1
+
+
+def test_missing_comma_between_arguments():
+    d = _first_error("solid s {\n    r = Rectangle(center=(0, 0) width=40, height=20)\n}\n")
+    assert (d.span.line, d.span.col) == (2, 33) and d.message.startswith("unexpected `width`")
+    assert d.hint == "a `,` is probably missing before `width`"
+    # not outside brackets: two names side by side there are not an argument list
+    d = _first_error("solid s {\n    r = 3 w\n}\n")
+    assert d.hint != "a `,` is probably missing before `w`"
