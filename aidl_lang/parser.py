@@ -1046,6 +1046,7 @@ def _bracket_problems(text: str, path: str) -> list:
         last = (L.prev_code(k) or sp.line) if k is not None else (
             L.prev_code(len(L.lines) + 1) or sp.line)
         labels = []
+        lo = sp.start               # the parser's errors from here on follow from it
         if t == "LBRACE":
             if k is None:
                 hint = f"add `{close}` at the end of the file"
@@ -1064,13 +1065,16 @@ def _bracket_problems(text: str, path: str) -> list:
                             f"{net} more than it closes")
                     labels = [Label(_line_end_span(L, path, ln), "a closing bracket is "
                                     "probably missing in this line", primary=False)]
+                    lo = labels[0].span.start
                     break
             else:
                 hint = (f"add `{close}` at the end of line {last}, where the statement ends" +
                         (" (the next line starts a new one)" if k is not None else ""))
                 labels = [Label(_line_end_span(L, path, last), f"`{close}` probably missing here",
                                 primary=False)]
-        out.append(((sp.start, len(text) + 1), "E0001", f"`{ch}` is never closed", sp, hint,
+                # a mistake inside the statement itself (`height= }`) is its own: kept
+                lo = labels[0].span.start
+        out.append(((lo, len(text) + 1), "E0001", f"`{ch}` is never closed", sp, hint,
                     labels))
 
     def stray(t, sp) -> None:
