@@ -261,13 +261,14 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
 
 
 def report_redundancies(sink: DiagnosticSink, result: SolveResult,
-                        seconds: float | None = None) -> None:
+                        seconds: float | None = None, max_rows: int | None = None) -> None:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
     measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
-    (the constraints found by then are reported)."""
-    from .solver.diagnose import redundancies
+    (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
+    unknowns that it ranks."""
+    from .solver.diagnose import MAX_DENSE, redundancies
     deadline = None if seconds is None else time.monotonic() + seconds
-    for red in redundancies(result.solver, deadline=deadline):
+    for red in redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE):
         c = red.constraint
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""

@@ -257,9 +257,11 @@ def _read(path: str, as_json: bool) -> str | None:
         return None
 
 
-# plain `aidl check` looks for redundant constraints (W0401) for at most this long; `--dof`
-# looks without a bound (docs/solver.md, section 6)
-REDUNDANCY_SECONDS = 2.0
+# plain `aidl check` looks for redundant constraints (W0401) for at most this long, in blocks
+# of at most this many rows sharing unknowns; `--dof` looks without these bounds
+# (docs/solver.md, section 6)
+REDUNDANCY_SECONDS = 1.0
+REDUNDANCY_ROWS = 1000
 
 
 def cmd_check(args) -> int:
@@ -275,7 +277,10 @@ def cmd_check(args) -> int:
                           "max_residual": res.solve.max_residual}
         if res.ok:
             from ..pipeline import report_redundancies
-            report_redundancies(res.sink, res.solve, None if args.dof else REDUNDANCY_SECONDS)
+            if args.dof:
+                report_redundancies(res.sink, res.solve)
+            else:
+                report_redundancies(res.sink, res.solve, REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
         if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
             dofs = degrees_of_freedom(res.solve.solver)

@@ -66,7 +66,7 @@ def _order_key(c: Constraint, r: int):
     return (0 if c.implicit else 1, pos, r)
 
 
-def dependencies(J: np.ndarray, order: list[int]):
+def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None):
     """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
 
     Yields ``(row, support, coef)`` for each row that is a combination of earlier independent
@@ -78,14 +78,17 @@ def dependencies(J: np.ndarray, order: list[int]):
     dependent row's coefficients come from one triangular solve ``L^T c = Q v`` instead of a
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
-    Jacobian (benchmarks/bench_diagnose.py)."""
+    Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (``time.monotonic()``,
+    looked at every 32 rows) it stops early."""
     m, n = J.shape
     cap = min(m, n)
     Q = np.zeros((cap, n))
     L = np.zeros((cap, cap))
     indep: list[int] = []
     k = 0
-    for r in order:
+    for step, r in enumerate(order):
+        if deadline is not None and not step % 32 and time.monotonic() > deadline:
+            return
         v = np.asarray(J[r], dtype=float)
         nv = float(np.linalg.norm(v))
         if nv == 0.0 or not np.isfinite(nv):
@@ -352,6 +355,7 @@ def _ancestor_rows(solver, x: np.ndarray):
     else:
         C = whole.jacobian(x, cols).tocsc()
         indices, indptr = C.indices, C.indptr
+    n_rows = whole.n_rows
     where = np.full(len(solver.free), -1, dtype=np.int64)
     where[cols] = np.arange(len(cols))
     anc_cache: dict = {}
@@ -377,11 +381,16 @@ def _ancestor_rows(solver, x: np.ndarray):
         k = k[k >= 0]
         if not len(k):
             return rows
-        used = np.concatenate([indices[indptr[j]:indptr[j + 1]] for j in k])
-        extra = np.intersect1d(anc, used)
+        used = np.zeros(n_rows, dtype=bool)        # masks, not np.intersect1d/union1d:
+        for j in k:                                 # those import numpy.ma (cold start)
+            used[indices[indptr[j]:indptr[j + 1]]] = True
+        extra = anc[used[anc]]
         if not len(extra):
             return rows
-        return np.union1d(rows, extra).astype(np.int64)
+        keep = np.zeros(n_rows, dtype=bool)
+        keep[rows] = True
+        keep[extra] = True
+        return np.flatnonzero(keep).astype(np.int64)
 
     return touching
 
@@ -480,7 +489,8 @@ def freedom_text(dofs: list[StructureDof]) -> str:
     return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
 
 
-def redundancies(solver, deadline: float | None = None) -> list[Redundant]:
+def redundancies(solver, deadline: float | None = None,
+                 max_rows: int = MAX_DENSE) -> list[Redundant]:
     """User constraints that other constraints already imply, over the whole model's
     unknowns: what W0401 reports.
 
@@ -507,7 +517,7 @@ def redundancies(solver, deadline: float | None = None) -> list[Redundant]:
     The flat system is split into connected components (rows sharing unknowns); each, up to
     :data:`MAX_DENSE` rows, is ranked densely.  Only consistent systems are looked at (a
     failed solve reports conflicts instead).  Past ``deadline`` (``time.monotonic()``) the
-    blocks not yet ranked are left out.  NumPy only while the Jacobian has at most
+    blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows.  NumPy only while the Jacobian has at most
     :data:`DENSE_CELLS` cells, so plain ``aidl check`` does not import SciPy for it."""
     rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
     rows = rows[solver.kind[rows] == 0]
@@ -545,14 +555,17 @@ def redundancies(solver, deadline: float | None = None) -> list[Redundant]:
             contribution[k] = contribution.get(k, 0) + 1
             rank_c[k] = rank_c.get(k, 0) + 1
             continue
-        if len(local) > MAX_DENSE:
+        if len(local) > min(max_rows, MAX_DENSE):
             unknown.update(id(cons[i]) for i in local)
             continue
         Jd = J[local] if dense else J[local].toarray()
         Jd = Jd[:, np.any(Jd != 0, axis=0)]
         lc = [cons[i] for i in local]
         order = sorted(range(len(local)), key=lambda i: _order_key(lc[i], int(rows[local[i]])))
-        null = [(r, support, coef) for r, support, coef in dependencies(Jd, order)]
+        null = list(dependencies(Jd, order, deadline))
+        if deadline is not None and time.monotonic() > deadline:
+            unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
+            continue
         mine: dict[int, list[int]] = {}
         for i, c in enumerate(lc):
             mine.setdefault(id(c), []).append(i)
