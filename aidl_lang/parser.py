@@ -1369,7 +1369,9 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
     elif str(tok) == "{" :
         hint = "a structure is written `solid NAME { ... }`"
     elif tok.type == "_NL":
-        hint = "a statement ended early; check for a missing operand or `)`"
+        # (an unclosed `(` is reported at the bracket instead: newlines inside it are dropped)
+        hint = ("the statement ended early: an operand is missing before the line break; to "
+                "go on with an expression on the next line, wrap it in `( )`")
     if tok.type == "_NL":
         width = 1
     sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),

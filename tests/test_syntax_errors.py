@@ -168,3 +168,10 @@ def test_missing_comma_between_arguments():
     # not outside brackets: two names side by side there are not an argument list
     d = _first_error("solid s {\n    r = 3 w\n}\n")
     assert d.hint != "a `,` is probably missing before `w`"
+
+
+def test_line_break_in_an_expression_outside_brackets():
+    d = _first_error("solid s {\n    x = 3 +\n    c = Circle((0, 0), x)\n}\n")
+    assert (d.span.line, d.span.col) == (2, 12) and d.message.startswith("unexpected newline")
+    assert d.hint == ("the statement ended early: an operand is missing before the line break; "
+                      "to go on with an expression on the next line, wrap it in `( )`")
