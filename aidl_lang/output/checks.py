@@ -140,6 +140,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s])
+    for g, _m, _h in getattr(d, "shape_errors", None) or ():
+        explained.add(_part_of(g.owner, roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
         part = _part_of(s, roots)
         explained.add(part)
