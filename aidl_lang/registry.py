@@ -148,9 +148,9 @@ _DEFS = {
                            [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length", None), A("rotation", "angle", 0.0),
                             A("corner_radii", "any", None)],
-                           doc="A rectangle with rounded corners: corner_radius, or "
-                               "corner_radii=[top_left, top_right, bottom_right, bottom_left] "
-                               "(0: sharp).", members=RECT_MEMBERS),
+                           doc="A rectangle with rounded corners; corner_radii=[top_left, "
+                               "top_right, bottom_right, bottom_left] (0: sharp).",
+                           members=RECT_MEMBERS),
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point"), FLEXIBLE],
                    [A("center", "point"), A("base", "length"), A("height", "length"),
                     A("rotation", "angle", 0.0)],
@@ -196,17 +196,17 @@ _DEFS = {
                    "first tip up (+y), turned by rotation.",
                members=STAR_MEMBERS),
     "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
-                 doc="The shape grown by distance (negative: inset); join \"round\" or "
-                     "\"miter\" corners. The shape itself is not drawn.", members=DERIVED_MEMBERS),
+                 doc="The shape grown by distance (negative: shrunk), join \"round\" or "
+                     "\"miter\"; the shape is not drawn.", members=DERIVED_MEMBERS),
     "Inset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
                 doc="Offset(shape, -distance).", members=DERIVED_MEMBERS),
     "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
-                doc="A wall `thickness` wide around the shape's outline, outside it (negative: "
-                    "inside); the shape itself is not drawn.", members=DERIVED_MEMBERS),
+                doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
+                    "is not drawn.", members=DERIVED_MEMBERS),
     "Hull": _p([A("shapes", "any")],
                [A("a", "geometry"), A("b", "geometry"), A("c", "geometry", None),
                 A("d", "geometry", None), A("e", "geometry", None), A("f", "geometry", None)],
-               doc="The convex hull of shapes (a list, or up to six); they are not drawn.",
+               doc="The convex hull of shapes (a list, or up to six), not drawn.",
                members=DERIVED_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
