@@ -63,7 +63,6 @@ HALLUCINATIONS = {
     "Cylinder": _TWO_D,
     "Cube": _TWO_D,
     "Sphere": _TWO_D,
-    "Offset": "there is no Offset: draw the outer outline as its own shape (e.g. width + 2 * t) and `CenterInside` the two",
     "Scale": "there is no Scale: sizes are arguments; multiply them by a `param`",
     "Round": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle; `round(x)` rounds numbers",
     "RoundCorners": "round corners with `Fillet(radius)` in the solid, or use RoundedRectangle",
