@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from exact_geometry import DXF_TOL, SVG_TOL, A, C, L, count, loop_defects, read_dxf, read_svg_loops
 
@@ -277,3 +277,66 @@ def test_corner_radii_that_overrun_a_side_are_a_located_error(compile_text):
     c = compile_text("solid s {\n    b = RoundedRectangle(center=(0, 0), width=40, height=20, "
                      "corner_radii=[1, 2])\n}\n")
     assert "four radii" in [d for d in c.sink.items if d.severity == "error"][0].message
+
+
+def test_grow_then_shrink_gives_back_the_rectangle(tmp_path):
+    """Offset(Offset(r, 3), -3) of a convex shape is the shape again (a morphological
+    closing): the corner arcs of radius 3 shrink to the sharp corners, exactly."""
+    path = render(tmp_path, "solid p {\n    r = Rectangle(center=(2, 3), width=40, height=20)\n"
+                            "    g = Offset(r, 3)\n    s = Offset(g, -3)\n}\n")
+    (segs,) = cut_loops(path)
+    assert count(segs) == (4, 0, 0)
+    assert flat(s.start for s in segs) == pytest.approx(
+        flat([(-18, -7), (22, -7), (22, 13), (-18, 13)]), abs=DXF_TOL)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(0.5, 20)),
+                min_size=1, max_size=5),
+       st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(1, 30), st.floats(1, 30)),
+       st.none() | st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(-50, 50),
+                             st.floats(-50, 50), st.floats(0.5, 10)))
+@example(circles=[(-2.0, 0.0, 1.0), (-3.0, -1.0, 1.0), (-3.0, -1.0, 1.0)],
+         rect=(0.0, 0.0, 1.0, 1.0), slot=None)           # one circle twice
+def test_hull_law(circles, rect, slot):
+    """The hull of circles, a rectangle and a slot (its end arcs are half circles) is
+    convex, its lines meet its arcs tangent, every arc lies on one of the circles, and every
+    circle and corner lies inside it."""
+    from aidl_lang.geometry.curves import Arc, Circle, Line, Loop, turn_between
+    from aidl_lang.geometry.hull import hull_loop
+    from aidl_lang.geometry.offset import sweep_loops
+    x, y, w, h = rect
+    corners = [(x, y), (x + w, y), (x + w, y + h), (x, y + h)]
+    loops = [Loop([Circle((cx, cy), r)]) for cx, cy, r in circles]
+    loops.append(Loop([Line(corners[i], corners[(i + 1) % 4]) for i in range(4)]))
+    if slot is not None:               # a stadium is the hull of its two end circles
+        ax, ay, bx, by, r = slot
+        loops += sweep_loops(Line((ax, ay), (bx, by)), r)
+        circles = circles + [(ax, ay, r), (bx, by, r)]
+    lp = hull_loop(loops)
+    assert lp is not None and lp.area > 0
+    segs = lp.segments
+    if len(segs) == 1:
+        (c,) = segs
+        assert isinstance(c, Circle) and any(
+            c.center == (cx, cy) and c.radius == r for cx, cy, r in circles)
+        return
+    scale = 1e-9 * 100
+    for i, s in enumerate(segs):
+        t = turn_between(segs[i - 1], s)
+        assert t >= -1e-9                                     # convex: never turns right
+        assert math.dist(segs[i - 1].end, s.start) <= scale
+        if isinstance(s, Arc):
+            assert s.sweep > 0 and any(math.dist(s.center, (cx, cy)) <= 1e-12 and
+                                       abs(s.radius - r) <= 1e-12 for cx, cy, r in circles)
+            for nb in (segs[i - 1], segs[(i + 1) % len(segs)]):
+                if isinstance(nb, Line):
+                    assert abs(turn_between(*((nb, s) if nb is segs[i - 1] else (s, nb)))) \
+                        <= 1e-9                               # a tangent join
+        if isinstance(s, Line) and s.length > 1e-9:
+            (x0, y0), (x1, y1) = s.start, s.end
+            L = s.length
+            for cx, cy, r in circles:                 # left of the line by at least r
+                assert ((x1 - x0) * (cy - y0) - (y1 - y0) * (cx - x0)) / L >= r - scale
+            for px, py in corners:
+                assert ((x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)) / L >= -scale

@@ -20,6 +20,7 @@ from .curves import Arc, Circle, Line, Loop, simplify
 from .tessellate import segments_for
 
 TWO_PI = 2 * math.pi
+TOUCH = 1e-12          # relative: two sites this close to touching inside touch
 
 
 def tangent_normal(a: tuple, b: tuple) -> float | None:
@@ -28,9 +29,15 @@ def tangent_normal(a: tuple, b: tuple) -> float | None:
     contains the other (no outer tangent)."""
     dx, dy = b[0] - a[0], b[1] - a[1]
     D = math.hypot(dx, dy)
-    if D <= abs(a[2] - b[2]) or D == 0.0:
+    dr = a[2] - b[2]
+    gap = D - abs(dr)
+    if D == 0.0 or gap < -TOUCH * max(1.0, D):
         return None
-    return math.atan2(dy, dx) - math.acos((a[2] - b[2]) / D)
+    if gap <= TOUCH * max(1.0, D):     # touching inside (an arc's end point on its circle):
+        c = 1.0 if dr > 0 else -1.0    # acos is ill-conditioned there (1e-15 -> 4e-8 rad)
+    else:
+        c = dr / D
+    return math.atan2(dy, dx) - math.acos(c)
 
 
 def _cross(o, a, b) -> float:
@@ -55,9 +62,9 @@ def _monotone_chain(pts: list) -> list:
 
 
 def _sites(loops: list[Loop]):
-    """The sites of the outlines (``(cx, cy, r, lo, sweep)``: a point has r 0, a circle the
-    whole turn, an arc its counter-clockwise angular range) and the samples
-    ``(x, y, site)``."""
+    """The sites of the outlines (``(cx, cy, r, ranges)``: a point has r 0, a circle the
+    whole turn, the arcs of one circle their counter-clockwise angular ranges
+    ``[(lo, sweep), ...]``) and the samples ``(x, y, site)``."""
     sites: list = []
     index: dict = {}
     samples: list = []
@@ -67,7 +74,7 @@ def _sites(loops: list[Loop]):
         k = index.get(key)
         if k is None:
             k = index[key] = len(sites)
-            sites.append((float(p[0]), float(p[1]), 0.0, 0.0, TWO_PI))
+            sites.append((float(p[0]), float(p[1]), 0.0, [(0.0, TWO_PI)]))
             samples.append((float(p[0]), float(p[1]), k))
         return k
 
@@ -83,11 +90,17 @@ def _sites(loops: list[Loop]):
                 point(s.start)
                 point(s.end)
                 lo, sw = (s.start_angle, s.sweep) if s.sweep > 0 else (s.end_angle, -s.sweep)
-            k = len(sites)
-            sites.append((float(s.center[0]), float(s.center[1]), float(s.radius), lo, sw))
+            key = ("C",) + tuple(round(float(v), 9) for v in (*s.center, s.radius))
+            k = index.get(key)
+            if k is None:                      # arcs of one circle: one site, their ranges
+                k = index[key] = len(sites)
+                sites.append((float(s.center[0]), float(s.center[1]), float(s.radius), []))
+            if (lo, sw) in sites[k][3]:
+                continue
+            sites[k][3].append((lo, sw))
             n = 4 * segments_for(s.radius, sw)
-            first, last = (0, n) if isinstance(s, Circle) else (1, n - 1)
-            for i in range(first, last + (0 if isinstance(s, Circle) else 1)):
+            first, last = (0, n - 1) if isinstance(s, Circle) else (1, n - 1)
+            for i in range(first, last + 1):
                 t = lo + sw * i / n
                 samples.append((s.center[0] + s.radius * math.cos(t),
                                 s.center[1] + s.radius * math.sin(t), k))
@@ -95,9 +108,8 @@ def _sites(loops: list[Loop]):
 
 
 def _in_range(site, phi: float, tol: float = 1e-9) -> bool:
-    if site[4] >= TWO_PI - 1e-12:
-        return True
-    return (phi - site[3] + tol) % TWO_PI <= site[4] + 2 * tol
+    return any(sw >= TWO_PI - 1e-12 or (phi - lo + tol) % TWO_PI <= sw + 2 * tol
+               for lo, sw in site[3])
 
 
 def _support(site, phi: float) -> float:
@@ -122,8 +134,9 @@ def hull_loop(loops: list[Loop]) -> Loop | None:
         bad = None
         for j in range(n):
             i, k = (j - 1) % n, (j + 1) % n
-            if phis[i] is None or phis[j] is None:
-                bad = ("drop", j if sites[seq[j]][2] <= sites[seq[(j + 1) % n]][2] else k)
+            if phis[i] is None or phis[j] is None:      # one of a pair holds the other
+                a, b = (i, j) if phis[i] is None else (j, k)
+                bad = ("drop", a if sites[seq[a]][2] <= sites[seq[b]][2] else b)
                 break
             s = sites[seq[j]]
             if s[2] > 0 and not (_in_range(s, phis[i]) and _in_range(s, phis[j])):
@@ -131,26 +144,50 @@ def hull_loop(loops: list[Loop]) -> Loop | None:
                 break
             if n > 2:                            # j must reach past the tangent from i to k
                 phi = tangent_normal(sites[seq[i]], sites[seq[k]])
-                if phi is not None and _support(s, phi) <= _support(sites[seq[i]], phi) + tol:
+                if phi is not None and all(q[2] == 0 or _in_range(q, phi)
+                                           for q in (sites[seq[i]], sites[seq[k]])) \
+                        and _support(s, phi) < _support(sites[seq[i]], phi) - tol:
+                    # (strictly inside: a site on the tangent's line may lie past its end)
                     bad = ("drop", j)
                     break
         if bad is None:
-            break
+            # a site the sampling missed (an arc bulging past a tangent by less than the
+            # samples' spacing): the one reaching farthest past a tangent goes in there
+            best = None
+            for i in range(n):
+                if phis[i] is None:
+                    continue
+                ref = _support(sites[seq[i]], phis[i]) + tol
+                for m, q in enumerate(sites):
+                    if m in (seq[i], seq[(i + 1) % n]) or (q[2] > 0 and not _in_range(q, phis[i])):
+                        continue
+                    out = _support(q, phis[i]) - ref
+                    if out > 0 and (best is None or out > best[0]):
+                        best = (out, i, m)
+            if best is None:
+                break
+            seq.insert(best[1] + 1, best[2])
+            continue
         what, j = bad
         s = sites[seq[j]]
-        if what == "split":
+        if what == "split":                     # the arcs' ends instead, in turn from phi_in
+            start = phis[(j - 1) % n] or 0.0
             ends = []
-            for t in (s[3], s[3] + s[4]):
-                p = (s[0] + s[2] * math.cos(t), s[1] + s[2] * math.sin(t))
-                ends.append(next((m for m, q in enumerate(sites) if q[2] == 0.0
-                                  and abs(q[0] - p[0]) <= tol and abs(q[1] - p[1]) <= tol), None))
-            seq[j:j + 1] = [e for e in ends if e is not None]
+            for lo, sw in s[3]:
+                for t in (lo, lo + sw):
+                    p = (s[0] + s[2] * math.cos(t), s[1] + s[2] * math.sin(t))
+                    m = next((m for m, q in enumerate(sites) if q[2] == 0.0
+                              and abs(q[0] - p[0]) <= tol and abs(q[1] - p[1]) <= tol), None)
+                    if m is not None and m not in ends:
+                        ends.append(((t - start) % TWO_PI, m))
+            seq[j:j + 1] = [m for _, m in sorted(ends)]
         else:
             del seq[j]
         seq = [k for i, k in enumerate(seq) if k != seq[i - 1]] or seq[:1]
     if len(seq) == 1:
         s = sites[seq[0]]
-        return Loop([Circle((s[0], s[1]), s[2])]) if s[2] > 0 and s[4] >= TWO_PI - 1e-12 else None
+        whole = s[2] > 0 and sum(sw for _, sw in s[3]) >= TWO_PI - 1e-9
+        return Loop([Circle((s[0], s[1]), s[2])]) if whole else None
     n = len(seq)
     phis = [tangent_normal(sites[seq[i]], sites[seq[(i + 1) % n]]) for i in range(n)]
     segs: list = []
