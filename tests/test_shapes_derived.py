@@ -377,3 +377,20 @@ def test_offset_matches_shapely_buffer(tmp_path_factory, polar, d):
         ours = ours.difference(shapely.unary_union(holes))
     # our loops drawn with chords of sagitta <= 0.005 mm (CHORD_TOL) along the outline
     assert ours.symmetric_difference(ref).area <= 0.005 * ref.length
+
+
+def test_a_pattern_of_a_hull_copies_its_sources(tmp_path):
+    """LinearPattern of a Hull copies the shapes it is made from (construction copies), so
+    every copy is the same exact hull moved by the step."""
+    path = render(tmp_path, "solid plate {\n    body = Rectangle(center=(40, 0), width=120, "
+                            "height=40)\n    hole cut {\n        a = Circle(center=(0, 0), "
+                            "radius=5)\n        b = Circle(center=(10, 5), radius=3)\n"
+                            "        h = Hull(a, b)\n        more = LinearPattern(h, 3, (30, 0))\n"
+                            "    }\n}\n")
+    holes = [segs for segs in cut_loops(path) if count(segs) == (2, 2, 0)]
+    assert len(holes) == 3
+    centers = sorted(a.center for segs in holes for a in segs if isinstance(a, A))
+    assert flat(centers) == pytest.approx(flat([(k * 30 + dx, dy) for k in range(3)
+                                                for dx, dy in ((0, 0), (10, 5))]), abs=DXF_TOL)
+    for segs in holes:
+        assert loop_defects(segs, radii=[5, 3], tangent="all") == []
