@@ -58,7 +58,7 @@ HALLUCINATIONS = {
     "Polyline": "write `Polygon(points=[...])` for a closed outline, or Lines that share endpoints",
     "Spline": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
     "Bezier": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
-    "Ring": "a ring is a Circle in a solid with a smaller Circle in a `hole` child; add `Concentric`",
+    "Ring": "a ring is `Shell(Circle(...), thickness)`, or a Circle in a solid with a smaller Circle in a `hole` child (add `Concentric`)",
     "Extrude": _TWO_D,
     "Cylinder": _TWO_D,
     "Cube": _TWO_D,
