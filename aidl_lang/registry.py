@@ -204,8 +204,8 @@ _DEFS = {
                 doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
                     "is not drawn.", members=DERIVED_MEMBERS),
     "Hull": _p([A("shapes", "any")],
-               [A("a", "geometry"), A("b", "geometry"), A("c", "geometry", None),
-                A("d", "geometry", None), A("e", "geometry", None), A("f", "geometry", None)],
+               [A("shape1", "geometry"), A("shape2", "geometry")]
+               + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six), not drawn.",
                members=DERIVED_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),

@@ -551,7 +551,7 @@ def _build_Hull(ctx, g, a):
         v = a["shapes"]
         items = list(v) if isinstance(v, (list, tuple)) else [v]
     else:
-        items = [a[k] for k in ("a", "b", "c", "d", "e", "f") if a.get(k) is not None]
+        items = [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
     if not items:
         raise PrimitiveError("Hull needs at least one shape")
     _consume(g, [_source(v, "Hull") for v in items])
