@@ -280,12 +280,23 @@ _DEFS = {
                         doc="count instances in all, each moved by step (a vector) from the last; "
                             "gives the list [original, copy1, ...]."),
     "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
-                           A("angle", "angle", 2 * math.pi)],
+                           A("angle", "angle", 2 * math.pi), A("start_angle", "angle", 0.0)],
                           [A("target", "boxed"), A("count", "number"), A("center", "point"),
-                           A("step", "angle")], cat="operation",
+                           A("step", "angle"), A("start_angle", "angle", 0.0)], cat="operation",
                           doc="count instances turned counter-clockwise about center: angle is "
                               "the span from first to last (360 deg: evenly all round), step the "
-                              "angle between neighbours; gives [original, copy1, ...]."),
+                              "angle between neighbours; gives [original, copy1, ...]; "
+                              "start_angle turns them all (the original becomes construction)."),
+    "GridPattern": _c([A("target", "boxed"), A("rows", "number"), A("cols", "number"),
+                       A("spacing", "any")],
+                      [A("target", "boxed"), A("rows", "number"), A("cols", "number"),
+                       A("col_spacing", "length"), A("row_spacing", "length")], cat="operation",
+                      doc="rows x cols instances, copy (r, c) moved by (c*dx, r*dy); spacing: "
+                          "(dx, dy) or one length; gives the row-major list."),
+    "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "length", 0.0)],
+                        [A("target", "boxed"), A("at", "points")], cat="operation",
+                        doc="target's center moved to rect's first corner (inset toward its "
+                            "center), copies at the others; or at each of a list of points."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -328,6 +339,11 @@ SYNONYMS: dict[str, str] = {
     "VerticallyCentered": "AlignCenterY",
     "PointOnLine": "OnLine",
     "OnArc": "OnCircle",
+    "RectangularPattern": "GridPattern",
+    "ArrayPattern": "GridPattern",
+    "Grid": "GridPattern",
+    "CornerHoles": "CornerPattern",
+    "AtCorners": "CornerPattern",
 }
 
 # argument synonyms: entry name -> {name a model writes -> canonical argument name}.  One line
@@ -356,9 +372,19 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "outer": "outer_radius", "inner": "inner_radius"},
     "CircularPattern": {"number": "count", "copies": "count", "around": "center",
                         "origin": "center", "span": "angle", "total_angle": "angle",
-                        "spacing": "step", "pitch": "step", "angle_step": "step"},
+                        "spacing": "step", "pitch": "step", "angle_step": "step",
+                        "start": "start_angle", "offset_angle": "start_angle",
+                        "phase": "start_angle", "first_angle": "start_angle"},
     "LinearPattern": {"number": "count", "copies": "count", "spacing": "step",
                       "offset": "step", "delta": "step", "pitch": "step"},
+    "GridPattern": {"nrows": "rows", "n_rows": "rows", "ny": "rows", "columns": "cols",
+                    "ncols": "cols", "n_cols": "cols", "nx": "cols", "n_columns": "cols",
+                    "step": "spacing", "pitch": "spacing", "gap": "spacing",
+                    "column_spacing": "col_spacing", "x_spacing": "col_spacing",
+                    "dx": "col_spacing", "y_spacing": "row_spacing", "dy": "row_spacing"},
+    "CornerPattern": {"rectangle": "rect", "shape": "rect", "of": "rect", "on": "rect",
+                      "margin": "inset", "offset": "inset", "edge_distance": "inset",
+                      "corners": "at", "points": "at", "positions": "at", "locations": "at"},
     "Fillet": {"r": "radius", "corner": "at", "corners": "at", "where": "at"},
     "Chamfer": {"size": "distance", "d": "distance", "length": "distance", "corner": "at",
                 "corners": "at", "where": "at"},

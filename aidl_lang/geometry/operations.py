@@ -140,7 +140,8 @@ class _Cloner:
         return v
 
 
-def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0):
+def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
+          indexed: bool = False):
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
     if isinstance(target, StructRef):
@@ -148,7 +149,7 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
         # operation is written in (paper rule: the original lies in that structure's subtree)
         home = target.struct.parent or S
         base = name or f"{target.struct.name}_{what}"
-        nm = base if k == 0 else f"{base}[{k}]"
+        nm = base if k == 0 and not indexed else f"{base}[{k}]"
         if nm in home.children:
             raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
                                  f"name the copy: `copy = ...`")
@@ -222,9 +223,20 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
         xf, rot, flip = _reflect(a, b)
         return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang)
+    if kind == "GridPattern":
+        return _grid(ctx, target, args, name)
+    if kind == "CornerPattern":
+        return _corners(ctx, target, args, name)
     n = _count(args["count"], kind)
-    out = Copies([target])
-    for k in range(1, n):
+    start = 0.0
+    if kind == "CircularPattern":
+        start = args.get("start_angle", Q.num(0.0)).const()
+        if start is None:
+            raise OperationError("CircularPattern start_angle must be known before solving")
+    # a start angle turns every instance: the original is then only the pattern's template
+    hide = start % (2 * math.pi) != 0.0
+    out = Copies() if hide else Copies([target])
+    for k in range(0 if hide else 1, n):
         if kind == "LinearPattern":
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
@@ -239,9 +251,110 @@ def apply(ctx, kind: str, args: dict, name: str | None):
                     raise OperationError("CircularPattern angle must be known before solving")
                 full = abs(abs(total) - 2 * math.pi) < 1e-9
                 step = total / (n if full or n == 1 else n - 1)
-            xf, rot, flip = _rotate(args["center"], step * k)
+            xf, rot, flip = _rotate(args["center"], start + step * k)
+        out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern", indexed=hide))
+    if hide:
+        _as_construction(target)
+    return out
+
+
+def _as_construction(target) -> None:
+    """Make ``target`` (geometry, or every shape of a structure's subtree) construction: solved
+    and referable, not drawn (the template of a pattern that moves every instance)."""
+    if isinstance(target, GeomRef):
+        target.geom.construction = True
+        return
+    todo = [target.struct]
+    while todo:
+        s = todo.pop()
+        for g in s.geometry:
+            g.construction = True
+        todo += s.children.values()
+
+
+def _grid(ctx, target, args: dict, name: str | None) -> Copies:
+    """GridPattern: ``rows`` x ``cols`` instances, copy (r, c) moved by (c * dx, r * dy);
+    the list in row-major order (index r * cols + c), the original first."""
+    rows, cols = _count(args["rows"], "GridPattern rows"), _count(args["cols"], "GridPattern cols")
+    if rows * cols > 10_000:
+        raise OperationError(f"GridPattern makes {rows} x {cols} = {rows * cols} instances, more "
+                             f"than 10000")
+    if "spacing" in args:
+        sp = args["spacing"]
+        span = ctx.cur_span
+        if isinstance(sp, Q):
+            d = ctx._coerce(sp, "length", span, "GridPattern", "spacing").expr
+            dx = dy = d
+        elif isinstance(sp, (tuple, list, PV)):
+            p = ctx._coerce(sp, "point", span, "GridPattern", "spacing")
+            dx, dy = p.x, p.y
+        else:
+            raise OperationError(f"GridPattern spacing is a length (the same both ways) or "
+                                 f"(dx, dy), got {type_name(sp)}")
+    else:
+        dx, dy = args["col_spacing"].expr, args["row_spacing"].expr
+    out = Copies([target])
+    for r in range(rows):
+        for c in range(cols):
+            if r == 0 and c == 0:
+                continue
+            xf, rot, flip = _translate(dx * float(c), dy * float(r))
+            out.append(_copy(ctx, target, xf, rot, flip, name, r * cols + c, "pattern"))
+    return out
+
+
+def _corners(ctx, target, args: dict, name: str | None) -> Copies:
+    """CornerPattern: the target's center (a shape's ``center``, else its bounding box's)
+    placed on the first point, a copy moved onto each other point; the points are a
+    Rectangle's corners (bottom_left, bottom_right, top_right, top_left), each ``inset``
+    toward the center along the rectangle's own sides, or the list ``at``."""
+    from .primitives import _pv
+    S = ctx.struct
+    span = ctx.cur_span
+    if "at" in args:
+        pts = list(args["at"])
+        if not pts:
+            raise OperationError("CornerPattern at: needs at least one point")
+        if len(pts) > 10_000:
+            raise OperationError("CornerPattern at: more than 10000 points")
+    else:
+        rect = args["rect"]
+        if not (isinstance(rect, GeomRef) and rect.geom.kind in ("Rectangle", "RoundedRectangle")):
+            raise OperationError(f"CornerPattern needs a Rectangle (e.g. `body`), got "
+                                 f"{_what(rect)}; for other points write `at=[p1, p2, ...]`")
+        g = rect.geom
+        inset = args.get("inset", Q.num(0.0)).expr
+        rot = g.data.get("rotation", 0.0)
+        ux, uy = math.cos(rot), math.sin(rot)
+        vx, vy = -uy, ux
+        pts = []
+        for nm, (su, sv) in (("bottom_left", (1, 1)), ("bottom_right", (-1, 1)),
+                             ("top_right", (-1, -1)), ("top_left", (1, -1))):
+            p = _pv(g.points[nm], S)
+            ox, oy = su * ux + sv * vx, su * uy + sv * vy
+            pts.append(PV(p.x + inset * ox, p.y + inset * oy, None, p.owners))
+    ref = None
+    if isinstance(target, GeomRef):
+        from .primitives import member
+        ref = member(target.geom, "center", S)
+    if not isinstance(ref, PV):
+        ref = ctx.member(ctx.member(target, "bb", span), "center", span)
+    p0 = pts[0]
+    ctx._add_constraint("CornerPattern", [Equation(ref.x - p0.x), Equation(ref.y - p0.y)],
+                        span, None, set(ref.owners) | set(p0.owners))
+    out = Copies([target])
+    for k, p in enumerate(pts[1:], 1):
+        xf, rot, flip = _translate(p.x - p0.x, p.y - p0.y)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
     return out
+
+
+def _what(v) -> str:
+    if isinstance(v, GeomRef):
+        return f"a {v.geom.kind}"
+    if isinstance(v, StructRef):
+        return f"structure `{v.struct.name}`"
+    return type_name(v)
 
 
 # ------------------------------------------------------------------ rendering

@@ -1,0 +1,163 @@
+"""Issue 23, "Say it directly": the language-level forms -- GridPattern, CornerPattern,
+CircularPattern(start_angle=), copies that vary with the index (a `for` loop), the polar and
+segment forms (Line/Slot by length and angle, a Rectangle along a segment, At), a template's
+kind chosen at the call site, AllowOverlap and rigid structures.
+
+Real `.aidl` text through the parser, solver, Manifold and the DXF writer; the DXF re-read
+with ezdxf (tests/exact_geometry.py)."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from exact_geometry import DXF_TOL, C, read_dxf
+
+
+def compile_ok(src: str, tmp_path, warnings_ok: bool = False):
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(src, str(tmp_path / "t.aidl"))
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    if not warnings_ok:
+        assert not [d for d in c.sink.items if d.severity == "warning"], \
+            [(d.code, d.message) for d in c.sink.items]
+    return c
+
+
+def dxf(src: str, tmp_path):
+    """Compile ``src``, write it through the real DXF writer, read it back with ezdxf."""
+    from aidl_lang.output import Options, build, encode
+    c = compile_ok(src, tmp_path)
+    out = build(c.drawing, c.model.root.name)
+    path = tmp_path / "t.dxf"
+    path.write_bytes(encode(out, ".dxf", Options()))
+    return c, read_dxf(path)
+
+
+def circles(ents) -> list[tuple[float, float, float]]:
+    """(x, y, r) of every CIRCLE, sorted."""
+    return sorted((s.center[0], s.center[1], s.radius) for e in ents for s in e.segments
+                  if isinstance(s, C))
+
+
+def same(got, want, tol=DXF_TOL) -> bool:
+    """Two lists of points (or tuples) equal within ``tol``, in any order."""
+    def key(p):
+        return tuple(round(v, 6) + 0.0 for v in p)
+    got, want = sorted(got, key=key), sorted(want, key=key)
+    return len(got) == len(want) and all(
+        len(g) == len(w) and all(abs(a - b) <= tol for a, b in zip(g, w))
+        for g, w in zip(got, want))
+
+
+def errors(c):
+    return [d for d in c.sink.items if d.severity == "error"]
+
+
+# ---------------------------------------------------------------- 1 GridPattern, CornerPattern
+def test_mounting_plate_with_four_corner_holes_in_three_lines(tmp_path):
+    c, ents = dxf("solid plate {\n"
+                  "    body = Rectangle(center=(0, 0), width=80, height=50)\n"
+                  "    hole h { c = Circle(center=(0, 0), diameter=5) }\n"
+                  "    CornerPattern(h, body, inset=6)\n"
+                  "}\n", tmp_path)
+    (outline,) = [e for e in ents if not isinstance(e.segments[0], C)]
+    xs = [p for s in outline.segments for p in (s.start[0], s.end[0])]
+    ys = [p for s in outline.segments for p in (s.start[1], s.end[1])]
+    x0, y0 = min(xs), min(ys)
+    assert (max(xs) - x0, max(ys) - y0) == pytest.approx((80, 50), abs=DXF_TOL)
+    got = circles(ents)
+    want = sorted((x0 + dx, y0 + dy, 2.5) for dx in (6, 74) for dy in (6, 44))
+    assert same(got, want)
+
+
+def test_corner_pattern_follows_a_rotated_rectangle_and_takes_at_points(tmp_path):
+    c, ents = dxf("solid plate {\n"
+                  "    body = Rectangle(center=(0, 0), width=40, height=20, rotation=30 deg)\n"
+                  "    Fixed(body)\n"
+                  "    hole g { c = Circle(center=(1, 1), radius=1) }\n"
+                  "    hole h { k = Circle(center=(0, 0), radius=0.5) }\n"
+                  "    CornerPattern(g, body, inset=3)\n"
+                  "    CornerPattern(h, at=[(5, 0), (-5, 0)])\n"
+                  "}\n", tmp_path)
+    th = math.radians(30)
+    u, v = (math.cos(th), math.sin(th)), (-math.sin(th), math.cos(th))
+    want = []
+    for su, sv in ((1, 1), (-1, 1), (-1, -1), (1, -1)):
+        a, b = -su * (20 - 3), -sv * (10 - 3)       # corner, inset 3 along both sides
+        want.append((a * u[0] + b * v[0], a * u[1] + b * v[1]))
+    got = circles(ents)
+    small = [(x, y) for x, y, r in got if abs(r - 1) < 1e-9]
+    assert same(sorted(small), sorted(want))
+    holes = [(x, y) for x, y, r in got if abs(r - 0.5) < 1e-9]
+    assert same(sorted(holes), [(-5, 0), (5, 0)])
+
+
+def test_grid_pattern_places_rows_and_columns(tmp_path):
+    c, ents = dxf("solid plate {\n"
+                  "    body = Rectangle(bottom_left=(0, 0), width=100, height=60)\n"
+                  "    Fixed(body)\n"
+                  "    hole h { c = Circle(center=(10, 10), radius=2) }\n"
+                  "    holes = GridPattern(h, rows=3, cols=4, spacing=(20, 15))\n"
+                  "    hole small {\n"
+                  "        dot = Circle(center=(90, 50), radius=1)\n"
+                  "        dots = GridPattern(dot, nrows=2, columns=2, dx=-5, dy=-6)\n"
+                  "        sq = GridPattern(Circle(center=(50, 3), radius=0.5), 1, 3, 2)\n"
+                  "    }\n"
+                  "}\n", tmp_path)
+    got = circles(ents)
+    big = sorted((x, y) for x, y, r in got if r == pytest.approx(2, abs=1e-12))
+    assert same(big, sorted((10 + 20 * i, 10 + 15 * j) for i in range(4)
+                                       for j in range(3)))
+    small = sorted((x, y) for x, y, r in got if r == pytest.approx(1, abs=1e-12))
+    assert same(small, [(85, 44), (85, 50), (90, 44), (90, 50)])
+    tiny = sorted((x, y) for x, y, r in got if r == pytest.approx(0.5, abs=1e-12))
+    assert same(tiny, [(50, 3), (52, 3), (54, 3)])
+    # row-major: holes[r * cols + c]
+    names = [s.name for s in c.model.root.children.values()]
+    assert names[:2] == ["h", "holes[1]"] and "holes[11]" in names
+
+
+@pytest.mark.parametrize("line, msg", [
+    ("CornerPattern(h, c)", "needs a Rectangle"),
+    ('GridPattern(h, 2, 2, spacing="wide")', "spacing is a length"),
+    ("GridPattern(h, 0, 2, spacing=3)", "whole number"),
+    ("GridPattern(h, 200, 200, spacing=3)", "more than 10000"),
+])
+def test_pattern_errors_are_located(compile_text, line, msg):
+    c = compile_text("solid s {\n    b = Rectangle(center=(0, 0), width=9, height=9)\n"
+                     "    c = Circle(center=(0, 0), radius=9)\n"
+                     "    hole h { k = Circle(center=(0, 0), radius=1) }\n"
+                     f"    {line}\n}}\n")
+    (d,) = errors(c)
+    assert msg in d.message and d.span.line == 5 and d.code == "E0108", d.message
+
+
+# ---------------------------------------------------------------- 2 start_angle, varying copies
+def test_circular_pattern_start_angle_turns_every_instance(tmp_path):
+    c, ents = dxf("solid flange {\n"
+                  "    disc = Circle(center=(0, 0), radius=30)\n"
+                  "    Fixed(disc)\n"
+                  "    hole h { c = Circle(center=(20, 0), radius=2) }\n"
+                  "    holes = CircularPattern(h, 6, center=disc.center, start_angle=30 deg)\n"
+                  "}\n", tmp_path)
+    got = [(x, y) for x, y, r in circles(ents) if r < 3]
+    want = [(20 * math.cos(math.radians(30 + 60 * k)), 20 * math.sin(math.radians(30 + 60 * k)))
+            for k in range(6)]
+    assert same(sorted(got), sorted(want))
+    names = [s.name for s in c.model.root.children.values()]
+    assert "holes[0]" in names and "holes[5]" in names
+
+
+def test_drill_gauge_copies_vary_with_the_index(tmp_path):
+    """Copies that differ (2 ... 9 mm) are a `for` loop over the index: docs/language.md 2.8."""
+    c, ents = dxf("solid gauge {\n"
+                  "    body = Rectangle(bottom_left=(0, 0), width=110, height=25)\n"
+                  "    Fixed(body)\n"
+                  "    for i in range(8) {\n"
+                  "        d = 2 + i\n"
+                  "        hole drill { c = Circle(center=(8 + 13 * i, 12), diameter=d) }\n"
+                  "    }\n"
+                  "}\n", tmp_path)
+    got = circles(ents)
+    assert same(got, [(8 + 13 * i, 12, (2 + i) / 2) for i in range(8)])
