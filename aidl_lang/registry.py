@@ -121,7 +121,9 @@ _DEFS = {
     "Point": _p([A("x", "length"), A("y", "length")], [A("at", "point")],
                 doc="A point; its position is a starting guess.", members=POINT_MEMBERS),
     "Line": _p([A("start", "point"), A("end", "point")],
-               doc="A line segment between two points (positions are starting guesses).",
+               [A("start", "point"), A("length", "length"), A("angle", "angle")],
+               doc="A line segment between two points (starting guesses), or from start "
+                   "by length and angle (held).",
                members=LINE_MEMBERS),
     "Circle": _p([A("center", "point"), A("radius", "length")],
                  [A("center", "point"), A("diameter", "length")],
@@ -138,8 +140,10 @@ _DEFS = {
                     [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
                      A("rotation", "angle", 0.0)],
                     [A("corner", "point"), A("opposite", "point"), A("rotation", "angle", 0.0)],
+                    [A("start", "point"), A("end", "point"), A("width", "length")],
                     doc="A rectangle; width, height and rotation are held, its position is a "
-                        "starting guess. By two corners only the rotation is held.",
+                        "starting guess. By two corners only the rotation is held. By start, "
+                        "end: a bar along the segment.",
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length"), A("rotation", "angle", 0.0)],
@@ -177,8 +181,11 @@ _DEFS = {
                [A("start", "point"), A("end", "point"), A("width", "length")],
                [A("center", "point"), A("length", "length"), A("width", "length"),
                 A("rotation", "angle", 0.0)],
+               [A("start", "point"), A("length", "length"), A("angle", "angle"),
+                A("width", "length")],
                doc="A stadium around the segment start-end (its end arcs' centers); radius = "
-                   "width/2 is held; by center, length (end to end) and rotation are held too.",
+                   "width/2 is held; by center or start, length (end to end) and rotation "
+                   "or angle are held too.",
                members=SLOT_MEMBERS),
     "ArcSlot": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
                    A("end_angle", "angle"), A("width", "length")],
@@ -212,6 +219,8 @@ _DEFS = {
                              doc="b.x - a.x == distance."),
     "VerticalDistance": _c([A("a", "point"), A("b", "point"), A("distance", "length")],
                            doc="b.y - a.y == distance."),
+    "At": _c([A("a", "point"), A("b", "point"), A("dx", "length", 0.0), A("dy", "length", 0.0)],
+             doc="a == b + (dx, dy)."),
     "Length": _c([A("line", "line"), A("length", "length")], doc="A line's length."),
     "Radius": _c([A("circle", "circular"), A("radius", "length")],
                  doc="A circle's or arc's radius."),
@@ -286,17 +295,16 @@ _DEFS = {
                           doc="count instances turned counter-clockwise about center: angle is "
                               "the span from first to last (360 deg: evenly all round), step the "
                               "angle between neighbours; gives [original, copy1, ...]; "
-                              "start_angle turns them all (the original becomes construction)."),
+                              "start_angle turns all (original: construction)."),
     "GridPattern": _c([A("target", "boxed"), A("rows", "number"), A("cols", "number"),
                        A("spacing", "any")],
                       [A("target", "boxed"), A("rows", "number"), A("cols", "number"),
                        A("col_spacing", "length"), A("row_spacing", "length")], cat="operation",
-                      doc="rows x cols instances, copy (r, c) moved by (c*dx, r*dy); spacing: "
-                          "(dx, dy) or one length; gives the row-major list."),
+                      doc="copy (r, c) moved by (c*dx, r*dy); spacing (dx, dy) or a length."),
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "length", 0.0)],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
-                        doc="target's center moved to rect's first corner (inset toward its "
-                            "center), copies at the others; or at each of a list of points."),
+                        doc="target centered on each corner of Rectangle rect (inset inward), "
+                            "or on each point of at."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -341,8 +349,8 @@ SYNONYMS: dict[str, str] = {
     "OnArc": "OnCircle",
     "RectangularPattern": "GridPattern",
     "ArrayPattern": "GridPattern",
-    "Grid": "GridPattern",
-    "CornerHoles": "CornerPattern",
+    "AtOffset": "At",
+    "PlaceAt": "At",
     "AtCorners": "CornerPattern",
 }
 
@@ -359,10 +367,16 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Circle": {"position": "center", "at": "center"},
-    "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height"},
+    "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height",
+                  "angle": "rotation", "p1": "start", "p2": "end", "thickness": "width"},
     "RegularPolygon": {"n_sides": "sides", "num_sides": "sides", "af": "across_flats",
                        "flat_to_flat": "across_flats"},
-    "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end"},
+    "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end", "angle": "rotation",
+             "direction": "angle", "heading": "angle"},
+    "Line": {"p1": "start", "p2": "end", "from": "start", "to": "end", "direction": "angle",
+             "heading": "angle", "origin": "start"},
+    "At": {"point": "a", "p": "a", "to": "b", "of": "b", "reference": "b", "base": "b",
+           "x": "dx", "y": "dy", "offset_x": "dx", "offset_y": "dy"},
     "ArcSlot": {"position": "center", "at": "center", "start": "start_angle",
                 "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
                 "angle1": "start_angle", "angle2": "end_angle", "path_radius": "radius"},

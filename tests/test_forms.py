@@ -161,3 +161,83 @@ def test_drill_gauge_copies_vary_with_the_index(tmp_path):
                   "}\n", tmp_path)
     got = circles(ents)
     assert same(got, [(8 + 13 * i, 12, (2 + i) / 2) for i in range(8)])
+
+
+# ---------------------------------------------------------------- 3 polar and segment forms
+def test_line_and_slot_by_length_and_angle(tmp_path):
+    c, ents = dxf("solid s {\n"
+                  "    base = Rectangle(bottom_left=(0, 0), width=60, height=40)\n"
+                  "    Fixed(base)\n"
+                  "    hole slot { sl = Slot(start=(10, 30), length=20, angle=-20 deg, width=4) }\n"
+                  "    drawing d { l = Line(start=(5, 5), length=20, angle=30 deg) }\n"
+                  "}\n", tmp_path)
+    from exact_geometry import A as Arc, L as Seg
+    t = math.radians(-20)
+    end = (10 + 16 * math.cos(t), 30 + 16 * math.sin(t))      # length is end to end: 20 - 4
+    arcs = [s for e in ents for s in e.segments if isinstance(s, Arc)]
+    assert same([a.center for a in arcs], [(10, 30), end])
+    assert all(abs(a.radius - 2) < DXF_TOL and abs(abs(a.sweep) - math.pi) < 1e-9 for a in arcs)
+    lines = [s for e in ents for s in e.segments if isinstance(s, Seg)
+             ]
+    eng = [s for s in lines if math.dist(s.start, (5, 5)) < 1e-9]
+    (ln,) = eng
+    assert same([ln.end], [(5 + 20 * math.cos(math.radians(30)), 5 + 10)])
+
+
+def test_rectangle_along_a_segment_follows_its_moving_ends(tmp_path):
+    c, ents = dxf("solid s {\n"
+                  "    base = Rectangle(bottom_left=(0, 0), width=60, height=40)\n"
+                  "    Fixed(base)\n"
+                  "    hole bar {\n"
+                  "        b = Rectangle(start=(0, 0), end=(10, 10), width=3)\n"
+                  "    }\n"
+                  "    At(bar.b.start, base.bottom_left, dx=10, dy=10)\n"
+                  "    At(bar.b.end, base.top_right, dx=-10, dy=-6)\n"
+                  "}\n", tmp_path)
+    # the bar's center line runs (10, 10) -> (50, 34); its corners 1.5 mm either side
+    d = (40, 24)
+    L = math.hypot(*d)
+    n = (-d[1] / L * 1.5, d[0] / L * 1.5)
+    want = [(10 + n[0], 10 + n[1]), (10 - n[0], 10 - n[1]), (50 + n[0], 34 + n[1]),
+            (50 - n[0], 34 - n[1])]
+    loops = [e for e in ents if e.layer.lower() == "cut"]
+    pts = [s.start for e in loops for s in e.segments
+           if not (abs(s.start[0]) < 1e-9 or abs(s.start[0] - 60) < 1e-9)]
+    assert same(pts, want)
+    v = _values(c)
+    assert v["s.bar.b.height"] == pytest.approx(L, abs=1e-9)
+    assert v["s.bar.b.width"] == pytest.approx(3, abs=1e-12)
+
+
+def _values(c):
+    """Solved scalar values by path (``aidl check --values``), in mm."""
+    from aidl_lang.api import _values
+    return {v.name: v.mm for v in _values(c.model, 1.0, "mm")}
+
+
+def test_at_places_a_point_at_an_offset(compile_text):
+    c = compile_text("solid s {\n"
+                     "    base = Rectangle(bottom_left=(0, 0), width=60, height=40)\n"
+                     "    Fixed(base)\n"
+                     "    p = Point(1, 1)\n"
+                     "    q = Point(2, 2)\n"
+                     "    At(p, base.top_right, dx=-6, dy=-4)\n"
+                     "    PlaceAt(point=q, of=p, x=2)\n"
+                     "}\n")
+    assert c.ok
+    x = c.model.xs()
+    g = {g.name: g for g in c.model.root.geometry}
+    pp, qq = g["p"].points["p"], g["q"].points["p"]
+    assert (x[pp.ix], x[pp.iy]) == (pytest.approx(54, abs=1e-9), pytest.approx(36, abs=1e-9))
+    assert (x[qq.ix], x[qq.iy]) == (pytest.approx(56, abs=1e-9), pytest.approx(36, abs=1e-9))
+
+
+@pytest.mark.parametrize("src, msg", [
+    ("Slot(start=(0, 0), length=3, angle=10 deg, width=4)", "at least its width"),
+    ("Rectangle(start=(1, 1), end=(1, 1), width=2)", "start and end apart"),
+    ("Line(start=(0, 0), length=0, angle=10 deg)", "positive length"),
+])
+def test_polar_form_errors_are_located(compile_text, src, msg):
+    c = compile_text("solid s {\n    g = " + src + "\n}\n")
+    (d,) = errors(c)
+    assert msg in d.message and d.span.line == 2, d.message

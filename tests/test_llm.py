@@ -112,9 +112,11 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
         assert syn in text, syn
     assert "construction" in text and "Contains(a, b) means Inside(b, a)" in text
     # measured 2,200 words before issue 14; it may grow by at most 25% (docs/llm.md); issue
-    # 23 allows 25% over its 2,596 words for new constructs (ArcSlot, Star: +60 words)
-    assert word_count(text) <= 2750
-    assert word_count(system_prompt(examples=False)) < 1700
+    # 23 allows 25% over its 2,596 words for new constructs (ArcSlot, Star: +60 words; the
+    # forms branch: GridPattern, CornerPattern, start_angle, polar Line/Slot, bar Rectangle,
+    # At, AllowOverlap, `rigid`: about +140 words, for the coordinator to rebalance)
+    assert word_count(text) <= 2830
+    assert word_count(system_prompt(examples=False)) < 1850
 
 
 def test_aidl_prompt_command():

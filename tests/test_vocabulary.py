@@ -31,6 +31,9 @@ SAMPLE = {
     "LeftOf": "r2, r1", "RightOf": "r2, r1", "Inside": "r2, r1, 2", "Midpoint": "p, l1",
     "Symmetric": "p, q, l1", "HorizontalDistance": "p, q, 10", "VerticalDistance": "p, q, 10",
     "AlignCenterX": "r2, r1", "AlignCenterY": "r2, r1", "OnLine": "p, l1", "OnCircle": "p, a1",
+    # operations: a sample that makes no copies (the unknowns stay comparable)
+    "GridPattern": "r2, 1, 1, 5)\n    Above(r2, r1", "CornerPattern": "p, at=[(60, 60)]",
+    "At": "p, q, 3, 4",
 }
 # the sample for a synonym whose arguments are swapped
 SWAPPED_SAMPLE = {"Contains": "r1, r2, 2"}

@@ -16,12 +16,13 @@ syntax keyword aidlCadConstant False PI True false pi tau true
 syntax keyword aidlCadPrimitive Arc ArcSlot Circle Ellipse Line Point Polygon Rectangle
 syntax keyword aidlCadPrimitive RegularPolygon RoundedRectangle Slot Star Text Trapezoid Triangle
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop Anchor
-syntax keyword aidlCadConstraint Angle AtMidpoint Below CenterInside Centered Chamfer CircularPattern Coincide
-syntax keyword aidlCadConstraint Coincident Collinear Concentric Diameter Distance DistanceX DistanceY Equal
-syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Gap Horizontal HorizontalDistance
-syntax keyword aidlCadConstraint HorizontallyCentered Inside Join LeftOf Length LinearPattern Lock Midpoint
-syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal
-syntax keyword aidlCadConstraint Over Parallel Perpendicular PointOnLine Radius RightOf Same Symmetric
+syntax keyword aidlCadConstraint Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below CenterInside
+syntax keyword aidlCadConstraint Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric CornerPattern
+syntax keyword aidlCadConstraint Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius Fillet
+syntax keyword aidlCadConstraint Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered Inside
+syntax keyword aidlCadConstraint Join LeftOf Length LinearPattern Lock Midpoint Mirror MirrorSymmetric
+syntax keyword aidlCadConstraint Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal Over Parallel
+syntax keyword aidlCadConstraint Perpendicular PlaceAt PointOnLine Radius RectangularPattern RightOf Same Symmetric
 syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
 syntax keyword aidlCadConstraint VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
