@@ -241,3 +241,42 @@ def test_polar_form_errors_are_located(compile_text, src, msg):
     c = compile_text("solid s {\n    g = " + src + "\n}\n")
     (d,) = errors(c)
     assert msg in d.message and d.span.line == 2, d.message
+
+
+# ---------------------------------------------------------------- 4 a template's kind at the call
+TAB = "def tab(w = 10) -> solid {\n    r = Rectangle(center=(0, 0), width=w, height=4)\n}\n"
+
+
+def test_a_solid_template_used_as_a_hole_and_as_a_drawing(tmp_path):
+    c, ents = dxf(TAB + "solid plate {\n"
+                  "    body = Rectangle(center=(0, 0), width=80, height=40)\n"
+                  "    Fixed(body)\n"
+                  "    hole slot = tab(w=20)\n"
+                  "    drawing mark = tab(w=6)\n"
+                  "    lug = tab()\n"
+                  "    CenterInside(slot, body)\n"
+                  "    mark.r.center == (0, 12)\n"
+                  "    Above(lug, body, gap=-2)\n"
+                  "}\n", tmp_path)
+    kinds = {n: s.kind for n, s in c.model.root.children.items()}
+    assert kinds == {"slot": "hole", "mark": "drawing", "lug": "solid"}
+    cut = [e for e in ents if e.layer.lower() == "cut"]
+    pts = sorted({(round(s.start[0], 9) + 0, round(s.start[1], 9) + 0)
+                  for e in cut for s in e.segments})
+    # the 20 x 4 slot cut through the middle; the lug (10 x 4) overlaps the top by 2 mm
+    for p in [(-10, -2), (10, -2), (10, 2), (-10, 2), (-5, 22), (5, 22)]:
+        assert p in pts, (p, pts)
+    eng = [s for e in ents if e.layer.lower() != "cut" for s in e.segments]
+    assert same(sorted({(round(s.start[0], 9) + 0, round(s.start[1], 9) + 0) for s in eng}),
+                [(-3, 10), (-3, 14), (3, 10), (3, 14)])
+
+
+@pytest.mark.parametrize("line, msg, col", [
+    ("hole c = Circle(center=(0, 0), radius=2)", "not a template call", 5),
+    ("hoel c = tab()", "unknown structure kind `hoel`", 5),
+])
+def test_a_kind_at_the_call_site_needs_a_template_and_a_kind(compile_text, line, msg, col):
+    c = compile_text(TAB + "solid s {\n    b = Circle(center=(0, 0), radius=9)\n"
+                     f"    {line}\n}}\n")
+    (d,) = errors(c)
+    assert msg in d.message and (d.span.line, d.span.col) == (6, col), d.message
