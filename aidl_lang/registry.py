@@ -305,6 +305,8 @@ _DEFS = {
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
                             "or on each point of at."),
+    "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
+                       doc="hole a may be refilled by b (a solid or shape): no W0501 for them."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -350,6 +352,8 @@ SYNONYMS: dict[str, str] = {
     "RectangularPattern": "GridPattern",
     "ArrayPattern": "GridPattern",
     "AtOffset": "At",
+    "IntendedOverlap": "AllowOverlap",
+    "OverlapOK": "AllowOverlap",
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
 }

@@ -280,3 +280,39 @@ def test_a_kind_at_the_call_site_needs_a_template_and_a_kind(compile_text, line,
                      f"    {line}\n}}\n")
     (d,) = errors(c)
     assert msg in d.message and (d.span.line, d.span.col) == (6, col), d.message
+
+
+# ---------------------------------------------------------------- 5 an intended overlap
+LOCK = """solid lock {
+    solid body {
+        b = Rectangle(center=(0, 0), width=40, height=30)
+        hole key { k = Circle(center=(0, 8), radius=3) }
+        hole vent { v = Circle(center=(-12, 11), radius=2) }
+    }
+    solid shackle { s = Rectangle(center=(0, 14), width=30, height=8) }
+    %s
+}
+"""
+
+
+def test_allow_overlap_silences_w0501_for_that_pair_only(compile_text):
+    import re
+    c = compile_text(LOCK % "")
+    w = {d.message.split("`")[1]: d for d in c.sink.items if d.code == "W0501"}
+    assert set(w) == {"lock.body.key", "lock.body.vent"}
+    # the hint's own fix, pasted in, silences exactly that hole
+    fix = re.search(r"write `(AllowOverlap\(body\.key, shackle\))` in `lock`",
+                    w["lock.body.key"].hint).group(1)
+    c = compile_text(LOCK % fix)
+    assert [d.message.split("`")[1] for d in c.sink.items if d.code == "W0501"] == \
+        ["lock.body.vent"]
+    # by synonym, with the shape instead of its structure, in either order
+    c = compile_text(LOCK % "IntendedOverlap(shackle.s, body.key)\n"
+                            "    AllowOverlap(body.vent.v, shackle)")
+    assert not [d for d in c.sink.items if d.code == "W0501"]
+
+
+def test_allow_overlap_needs_a_hole(compile_text):
+    c = compile_text(LOCK % "AllowOverlap(body, shackle)")
+    (d,) = errors(c)
+    assert "names a hole" in d.message and d.span.line == 8 and d.code == "E0108"

@@ -215,6 +215,8 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             at = [(p.x + ox, p.y + oy) for p in pts]
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
+    if kind == "AllowOverlap":
+        return _allow_overlap(args["a"], args["b"])
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
         from .primitives import member
@@ -256,6 +258,31 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if hide:
         _as_construction(target)
     return out
+
+
+def _allow_overlap(a, b) -> None:
+    """``AllowOverlap(a, b)``: the hole among ``a`` and ``b`` (a hole structure, or a shape
+    in one) may be refilled by the other (a solid structure or a shape): W0501 is not
+    reported for that pair (:func:`aidl_lang.output.checks._intended`)."""
+    def hole_of(v):
+        if isinstance(v, StructRef) and v.struct.kind == "hole":
+            return v.struct
+        if isinstance(v, GeomRef) and v.geom.owner.kind == "hole":
+            return v.geom.owner
+        return None
+
+    def obj(v):
+        return v.struct if isinstance(v, StructRef) else v.geom if isinstance(v, GeomRef) else None
+    h, other = hole_of(a), b
+    if h is None:
+        h, other = hole_of(b), a
+    if h is None or obj(other) is None:
+        raise OperationError(f"AllowOverlap names a hole and what covers it (a solid or a "
+                             f"shape); got {_what(a)} and {_what(b)}")
+    if not hasattr(h, "overlap_ok"):
+        h.overlap_ok = set()
+    h.overlap_ok.add(obj(other))
+    return None
 
 
 def _as_construction(target) -> None:

@@ -15,16 +15,16 @@ syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
 syntax keyword aidlCadPrimitive Arc ArcSlot Circle Ellipse Line Point Polygon Rectangle
 syntax keyword aidlCadPrimitive RegularPolygon RoundedRectangle Slot Star Text Trapezoid Triangle
-syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop Anchor
-syntax keyword aidlCadConstraint Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below CenterInside
-syntax keyword aidlCadConstraint Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric CornerPattern
-syntax keyword aidlCadConstraint Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius Fillet
-syntax keyword aidlCadConstraint Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered Inside
-syntax keyword aidlCadConstraint Join LeftOf Length LinearPattern Lock Midpoint Mirror MirrorSymmetric
-syntax keyword aidlCadConstraint Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal Over Parallel
-syntax keyword aidlCadConstraint Perpendicular PlaceAt PointOnLine Radius RectangularPattern RightOf Same Symmetric
-syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
-syntax keyword aidlCadConstraint VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
+syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
+syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
+syntax keyword aidlCadConstraint CornerPattern Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius
+syntax keyword aidlCadConstraint Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered
+syntax keyword aidlCadConstraint Inside IntendedOverlap Join LeftOf Length LinearPattern Lock Midpoint
+syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal
+syntax keyword aidlCadConstraint Over OverlapOK Parallel Perpendicular PlaceAt PointOnLine Radius RectangularPattern
+syntax keyword aidlCadConstraint RightOf Same Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Under
+syntax keyword aidlCadConstraint Underneath Vertical VerticalDistance VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min norm radians range
