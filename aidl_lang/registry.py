@@ -305,8 +305,12 @@ _DEFS = {
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
                             "or on each point of at."),
+    "Rigid": _c([A("a", "boxed"), A("b", "boxed", None), A("c", "boxed", None),
+                 A("d", "boxed", None)], cat="operation",
+                doc="shapes keep their placement to each other; a structure moves, never "
+                    "bends."),
     "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
-                       doc="hole a may be refilled by b (a solid or shape): no W0501 for them."),
+                       doc="hole a may be refilled by b (no W0501)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -353,6 +357,8 @@ SYNONYMS: dict[str, str] = {
     "ArrayPattern": "GridPattern",
     "AtOffset": "At",
     "IntendedOverlap": "AllowOverlap",
+    "RigidGroup": "Rigid",
+    "MoveTogether": "Rigid",
     "OverlapOK": "AllowOverlap",
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",

@@ -316,3 +316,85 @@ def test_allow_overlap_needs_a_hole(compile_text):
     c = compile_text(LOCK % "AllowOverlap(body, shackle)")
     (d,) = errors(c)
     assert "names a hole" in d.message and d.span.line == 8 and d.code == "E0108"
+
+
+# ---------------------------------------------------------------- 6 rigid
+WINDMILL = """solid windmill {
+    tower = Rectangle(bottom_left=(-5, 0), width=10, height=60)
+    Fixed(tower)
+    %s
+}
+"""
+
+
+def _pt(c, path):
+    return _values(c)[path]
+
+
+def test_rigid_shapes_move_together(compile_text):
+    body = ("spar = Rectangle(center=(0, 90), width=4, height=50)\n"
+            "    sail = Rectangle(center=(9, 100), width=14, height=30)\n"
+            "    %s\n"
+            "    Coincident(spar.bottom.midpoint, tower.top.midpoint)")
+    free = compile_text(WINDMILL % (body % ""))
+    assert free.ok
+    # without Rigid the spar moves down 5 mm and the sail stays: left behind
+    assert _pt(free, "windmill.spar.center") == pytest.approx((0, 85), abs=1e-9)
+    assert _pt(free, "windmill.sail.center") == pytest.approx((9, 100), abs=1e-9)
+    c = compile_text(WINDMILL % (body % "Rigid(spar, sail)"))
+    assert c.ok and not [d for d in c.sink.items if d.severity == "warning"]
+    assert _pt(c, "windmill.spar.center") == pytest.approx((0, 85), abs=1e-9)
+    assert _pt(c, "windmill.sail.center") == pytest.approx((9, 95), abs=1e-9)
+    # one placing point per held shape: no redundant rows (W0401 under --dof)
+    from aidl_lang.solver.diagnose import redundancies
+    assert not [r for r in redundancies(c.solve.solver) if r.constraint.kind == "Rigid"]
+
+
+def test_a_rigid_structure_is_moved_never_bent(compile_text):
+    body = ("solid blades {\n"
+            "        spar = Rectangle(center=(0, 90), width=4, height=50)\n"
+            "        sail = Rectangle(center=(9, 100), width=14, height=30)\n"
+            "    }\n"
+            "    %s\n"
+            "    Coincident(blades.spar.bottom.midpoint, tower.top.midpoint)\n"
+            "    %s")
+    # translation suffices: both kinds move the whole structure
+    for rigid in ("", "Rigid(blades)"):
+        c = compile_text(WINDMILL % (body % (rigid, "")))
+        assert c.ok
+        assert _pt(c, "windmill.blades.sail.center") == pytest.approx((9, 95), abs=1e-9)
+    # a constraint translation cannot meet: the solver bends a plain structure (the sail
+    # torn off the spar) but reports a conflict for a rigid one
+    extra = "blades.sail.top_right.y == 120"
+    bent = compile_text(WINDMILL % (body % ("", extra)))
+    assert bent.ok
+    spar, sail = (_pt(bent, f"windmill.blades.{n}.center") for n in ("spar", "sail"))
+    assert sail[1] - spar[1] == pytest.approx(20, abs=1e-9)      # 10 at the start
+    c = compile_text(WINDMILL % (body % ("Rigid(blades)", extra)))
+    (d,) = errors(c)
+    assert d.code == "E0401" and d.span.line == 10
+
+
+def test_rigid_self_in_a_template_makes_every_instance_rigid(compile_text):
+    src = ("def blade() -> solid {\n"
+           "    spar = Rectangle(center=(0, 0), width=4, height=50)\n"
+           "    sail = Rectangle(center=(9, 10), width=14, height=30)\n"
+           "    Rigid(self)\n"
+           "}\n"
+           "solid s {\n"
+           "    base = Rectangle(center=(0, 0), width=10, height=10)\n"
+           "    Fixed(base)\n"
+           "    b = blade()\n"
+           "    b.spar.center == (0, 0)\n"
+           "    b.sail.center == (0, 0)\n"
+           "}\n")
+    c = compile_text(src)
+    assert [d.code for d in errors(c)] == ["E0401"]
+    c = compile_text(src.replace("    Rigid(self)\n", ""))
+    assert c.ok
+
+
+def test_rigid_takes_structures_and_shapes(compile_text):
+    c = compile_text("solid s {\n    a = Circle(center=(0, 0), radius=2)\n    Rigid(a, 3)\n}\n")
+    (d,) = errors(c)
+    assert d.span.line == 3 and d.code == "E0108", d.message

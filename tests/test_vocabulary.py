@@ -33,7 +33,7 @@ SAMPLE = {
     "AlignCenterX": "r2, r1", "AlignCenterY": "r2, r1", "OnLine": "p, l1", "OnCircle": "p, a1",
     # operations: a sample that makes no copies (the unknowns stay comparable)
     "GridPattern": "r2, 1, 1, 5)\n    Above(r2, r1", "CornerPattern": "p, at=[(60, 60)]",
-    "At": "p, q, 3, 4",
+    "At": "p, q, 3, 4", "Rigid": "p, q)\n    Midpoint(p, l1",
 }
 # canonical entries that change no solved value (their synonyms are tested where they act:
 # AllowOverlap's in tests/test_forms.py)

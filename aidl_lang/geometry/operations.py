@@ -217,6 +217,8 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         return None
     if kind == "AllowOverlap":
         return _allow_overlap(args["a"], args["b"])
+    if kind == "Rigid":
+        return _rigid(ctx, [args[k] for k in "abcd" if args.get(k) is not None])
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
         from .primitives import member
@@ -283,6 +285,58 @@ def _allow_overlap(a, b) -> None:
         h.overlap_ok = set()
     h.overlap_ok.add(obj(other))
     return None
+
+
+def _rigid(ctx, items: list) -> None:
+    """``Rigid(a, b, ...)``: a structure is marked rigid (the solver of its ancestors moves it
+    only by its frame, :func:`aidl_lang.solver.hierarchy._rigid_below`); shapes keep their
+    points' starting offsets from the first shape's first point (two linear equations per
+    point, in the writing structure's frame): they move together, translation only."""
+    S = ctx.struct
+    pts: list = []
+    seen: set = set()
+    for v in items:
+        if isinstance(v, StructRef):
+            v.struct.rigid = True
+        elif isinstance(v, GeomRef):
+            for p in _placing_points(ctx, v.geom):
+                if id(p) not in seen:
+                    seen.add(id(p))
+                    pts.append(p)
+        else:
+            raise OperationError(f"Rigid takes structures and shapes, got {_what(v)}")
+    if len(pts) < 2:
+        return None
+    x0, y0 = pts[0].in_frame(S)
+    eqs = []
+    for p in pts[1:]:
+        x, y = p.in_frame(S)
+        dx, dy = ctx.value_of(x - x0), ctx.value_of(y - y0)
+        eqs += [Equation(x - x0 - dx), Equation(y - y0 - dy)]
+    ctx._add_constraint("Rigid", eqs, ctx.cur_span, None, {p.owner for p in pts})
+    return None
+
+
+_HELD_SHAPES = ("Circle", "RegularPolygon", "Star", "ArcSlot", "Trapezoid", "Ellipse", "Text")
+
+
+def _placing_points(ctx, g) -> list:
+    """The points that place shape ``g`` given its own implicit constraints: one for a shape
+    whose form is held (a Circle, a Rectangle by size, a rigid Polygon, ...), the two ends
+    of a bar or of a Rectangle by corners, else every point (no redundant rows)."""
+    P = g.points
+    free = ctx.model.free
+    if g.kind in _HELD_SHAPES or g.data.get("rigid") or (
+            g.kind in ("Rectangle", "RoundedRectangle", "Slot", "Triangle")
+            and "center" in P and not any(free[s.index] for s in g.scalars.values())):
+        return [P["center"] if "center" in P else next(iter(P.values()))]
+    if g.kind in ("Rectangle", "RoundedRectangle"):
+        if "start" in P:
+            return [P["start"], P["end"]]
+        if not any(free[s.index] for s in g.scalars.values()):
+            return [P["bottom_left"]]
+        return [P["bottom_left"], P["top_right"]]
+    return list(P.values())
 
 
 def _as_construction(target) -> None:

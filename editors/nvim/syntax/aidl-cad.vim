@@ -21,10 +21,11 @@ syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern C
 syntax keyword aidlCadConstraint CornerPattern Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius
 syntax keyword aidlCadConstraint Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered
 syntax keyword aidlCadConstraint Inside IntendedOverlap Join LeftOf Length LinearPattern Lock Midpoint
-syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal
-syntax keyword aidlCadConstraint Over OverlapOK Parallel Perpendicular PlaceAt PointOnLine Radius RectangularPattern
-syntax keyword aidlCadConstraint RightOf Same Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Under
-syntax keyword aidlCadConstraint Underneath Vertical VerticalDistance VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine OnTopOf
+syntax keyword aidlCadConstraint Orthogonal Over OverlapOK Parallel Perpendicular PlaceAt PointOnLine Radius
+syntax keyword aidlCadConstraint RectangularPattern RightOf Rigid RigidGroup Same Symmetric Taller Tangent
+syntax keyword aidlCadConstraint ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance VerticallyCentered Wider
+syntax keyword aidlCadConstraint Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min norm radians range
