@@ -305,8 +305,8 @@ _DEFS = {
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
                             "or on each point of at."),
-    "Rigid": _c([A("a", "boxed"), A("b", "boxed", None), A("c", "boxed", None),
-                 A("d", "boxed", None)], cat="operation",
+    "Rigid": _c([A("a", "boxed"), A("b", "boxed", None), A("c", "boxed", None)],
+                cat="operation",
                 doc="shapes keep their placement to each other; a structure moves, never "
                     "bends."),
     "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
