@@ -398,3 +398,25 @@ def test_rigid_takes_structures_and_shapes(compile_text):
     c = compile_text("solid s {\n    a = Circle(center=(0, 0), radius=2)\n    Rigid(a, 3)\n}\n")
     (d,) = errors(c)
     assert d.span.line == 3 and d.code == "E0108", d.message
+
+
+# ---------------------------------------------------------------- a law: the grid is a lattice
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=12, deadline=None)
+@given(rows=st.integers(1, 4), cols=st.integers(1, 4),
+       dx=st.integers(-30, 30).filter(lambda v: v != 0), dy=st.integers(-30, 30),
+       x0=st.integers(-50, 50), y0=st.integers(-50, 50))
+def test_grid_copy_r_c_sits_at_the_lattice_point(tmp_path_factory, rows, cols, dx, dy, x0, y0):
+    from aidl_lang.pipeline import compile_source
+    src = (f"solid s {{\n    c = Circle(center=({x0}, {y0}), radius=0.5)\n"
+           f"    g = GridPattern(c, {rows}, {cols}, col_spacing={dx}, row_spacing={dy})\n}}\n")
+    c = compile_source(src, str(tmp_path_factory.mktemp("g") / "t.aidl"), do_solve=True)
+    assert not errors(c), [d.message for d in c.sink.items]
+    v = _values(c)
+    for r in range(rows):
+        for k in range(cols):
+            i = r * cols + k
+            name = "s.c.center" if i == 0 else f"s.g[{i}].center"
+            assert v[name] == pytest.approx((x0 + k * dx, y0 + r * dy), abs=1e-9), name
