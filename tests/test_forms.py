@@ -420,3 +420,25 @@ def test_grid_copy_r_c_sits_at_the_lattice_point(tmp_path_factory, rows, cols, d
             i = r * cols + k
             name = "s.c.center" if i == 0 else f"s.g[{i}].center"
             assert v[name] == pytest.approx((x0 + k * dx, y0 + r * dy), abs=1e-9), name
+
+
+def test_corner_pattern_on_a_bar_follows_its_direction(tmp_path):
+    c, ents = dxf("solid s {\n"
+                  "    base = Rectangle(bottom_left=(-10, -10), width=80, height=60)\n"
+                  "    Fixed(base)\n"
+                  "    drawing link { b = Rectangle(start=(0, 0), end=(10, 0), width=8) }\n"
+                  "    hole h { c = Circle(center=(0, 0), radius=1) }\n"
+                  "    CornerPattern(h, link.b, inset=2)\n"
+                  "    At(link.b.start, (0, 0))\n"
+                  "    At(link.b.end, (30, 40))\n"
+                  "}\n", tmp_path)
+    # the bar runs (0, 0) -> (30, 40): along d = (0.6, 0.8), across n = (0.8, -0.6), 4 wide
+    d, n = (0.6, 0.8), (0.8, -0.6)
+    want = []
+    for end, inward in ((0.0, 1), (50.0, -1)):
+        for side in (1, -1):
+            along = end + inward * 2
+            across = side * (4 - 2)
+            want.append((along * d[0] + across * n[0], along * d[1] + across * n[1]))
+    got = [(x, y) for x, y, r in circles(ents) if abs(r - 1) < 1e-9]
+    assert same(got, want)

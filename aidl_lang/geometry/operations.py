@@ -405,9 +405,16 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
                                  f"{_what(rect)}; for other points write `at=[p1, p2, ...]`")
         g = rect.geom
         inset = args.get("inset", Q.num(0.0)).expr
-        rot = g.data.get("rotation", 0.0)
-        ux, uy = math.cos(rot), math.sin(rot)
-        vx, vy = -uy, ux
+        if "start" in g.points:      # a bar: its direction follows its ends
+            from .expr import hypot
+            bl, br, tl = (_pv(g.points[n], S) for n in ("bottom_left", "bottom_right", "top_left"))
+            wu, wv = hypot(br.x - bl.x, br.y - bl.y), hypot(tl.x - bl.x, tl.y - bl.y)
+            ux, uy = (br.x - bl.x) / wu, (br.y - bl.y) / wu
+            vx, vy = (tl.x - bl.x) / wv, (tl.y - bl.y) / wv
+        else:                        # the held rotation
+            rot = g.data.get("rotation", 0.0)
+            ux, uy = math.cos(rot), math.sin(rot)
+            vx, vy = -uy, ux
         pts = []
         for nm, (su, sv) in (("bottom_left", (1, 1)), ("bottom_right", (-1, 1)),
                              ("top_right", (-1, -1)), ("top_left", (1, -1))):
