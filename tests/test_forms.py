@@ -373,6 +373,7 @@ def test_a_rigid_structure_is_moved_never_bent(compile_text):
     c = compile_text(WINDMILL % (body % ("Rigid(blades)", extra)))
     (d,) = errors(c)
     assert d.code == "E0401" and d.span.line == 10
+    assert "`windmill.blades` is rigid" in d.hint
 
 
 def test_rigid_self_in_a_template_makes_every_instance_rigid(compile_text):
