@@ -263,6 +263,9 @@ cuts. Declare the hole in the common parent, so that it cuts everything united t
         solid shackle { s = Rectangle(center=(0, 14), width=30, height=8) }   # covers `key`
     }
     # fix: move `hole key { ... }` out of `body` into `lock`
+
+When the refill is intended (a boss over a relief cut, say), silence it for that pair only
+with `AllowOverlap(body.key, shackle)` written in `lock` (docs/language.md 4.5).
 """),
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the

@@ -285,6 +285,23 @@ def _where(c) -> str:
     return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
 
 
+def _rigid_note(s) -> str:
+    """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
+    moved, never bent, so a conflict there may ask for a change of shape."""
+    rigid, todo = [], list(s.children.values())
+    while todo:
+        t = todo.pop()
+        if getattr(t, "rigid", False):
+            rigid.append(t)
+        else:
+            todo += t.children.values()
+    if not rigid:
+        return ""
+    names = ", ".join(f"`{t.path}`" for t in sorted(rigid, key=lambda t: t.path)[:3])
+    return (f". {names} {'is' if len(rigid) == 1 else 'are'} rigid (`Rigid(...)`): moved as "
+            "one body, never bent; if the shape must change, drop `Rigid` or constrain inside it")
+
+
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
     """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
     the iteration budget ran out."""
@@ -318,7 +335,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others"),
+                  "others" + _rigid_note(first.owner)),
             labels=labels))
         shown += 1
     if shown:
