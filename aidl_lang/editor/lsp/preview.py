@@ -31,7 +31,7 @@ curves): they are for pointing at, never for output.
 A document that does not compile answers ``ok: false`` with the last good picture of that
 document (``stale: true``) and the diagnostics' summary, so the preview does not go blank while
 the user types.  Param definitions (name, kind, range for a slider: ``min=``/``max=``/``step=``
-from the file, else the span ``aidl serve`` chooses, :func:`aidl_lang.serve.session._param`)
+from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.params.params`)
 come from an interpretation of the document with its own values, made once per text.
 """
 from __future__ import annotations
@@ -147,39 +147,15 @@ def params(source: str, path: str, uri: str, values: dict, cache: Cache = CACHE)
 
 
 def _params(source: str, path: str) -> list[dict] | None:
-    from ... import ast as A
-    from ...diagnostics import DiagnosticSink
-    from ...interp import Interpreter
-    from ...parser import parse
-    from ...pipeline import run_deep
-    from ...serve.session import _param
-    from ...typecheck import check
-    sink = DiagnosticSink()
-    try:
-        program = parse(source, path, sink)
-        if sink.has_errors:
-            return None
-        check(program, sink)
-        if sink.has_errors:
-            return None
-        interp = Interpreter(sink, {})
-        run_deep(lambda: interp.run(program))
-        fctx = interp.file
-    except Exception:          # noqa: BLE001 - sliders are an extra; the picture still comes
+    from ...params import params as declared
+    found = declared(source, path)
+    if found is None:
         return None
-    if fctx is None:
-        return None
-    ranges = getattr(fctx, "param_ranges", {})
     out = []
-    for st in program.stmts:
-        if not isinstance(st, A.ParamDecl):
-            continue
-        p = _param(st.name, fctx.params.get(st.name), ranges.get(st.name), 0)
-        if p is None:
-            continue
+    for p in found:
         j = p.to_json()
         j.pop("line", None)
-        j["range"] = _range(span_range(source, st.span)) if st.span else None
+        j["range"] = _range(span_range(source, p.span)) if p.span else None
         out.append(j)
     return out
 
