@@ -36,7 +36,7 @@ from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
 from ..solver.system import build_rows
 from ..typecheck import check
-from ..params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
+from ..api import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
 
 MAX_SOURCE_BYTES = 2_000_000       # a bigger file is refused (E0004), not compiled
 
