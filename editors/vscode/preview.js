@@ -232,18 +232,22 @@ function html(cspSource) {
     const before = l < r[2] || (l === r[2] && c <= r[3]);
     return after && before;
   }
-  function size(r) { return (r[2] - r[0]) * 100000 + (r[3] - r[1]); }
 
   // The shape(s) made by the smallest source range around the cursor (a template's shape is
-  // every instance's: they share the range).
+  // every instance's: they share the range). Ranges over fewer lines first, so the cursor
+  // anywhere on the line of \`h = Circle(...)\` shows that circle, not its structure; on one
+  // line, the range around the cursor first.
   function highlight() {
     const els = document.querySelectorAll('#aidl-shapes [data-range]');
     let best = null;
-    let bestSize = Infinity;
+    let bestScore = Infinity;
     if (cursor) {
       for (const e of els) {
         const r = e.dataset.range.split(',').map(Number);
-        if (inside(r, cursor.line, cursor.character) && size(r) < bestSize) { best = e.dataset.range; bestSize = size(r); }
+        const around = inside(r, cursor.line, cursor.character);
+        if (!around && !(r[0] <= cursor.line && cursor.line <= r[2])) continue;
+        const score = (r[2] - r[0]) * 1e9 + (around ? 0 : 1e6) + (r[3] - r[1]);
+        if (score < bestScore) { best = e.dataset.range; bestScore = score; }
       }
     }
     let n = 0;
