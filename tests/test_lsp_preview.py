@@ -112,3 +112,17 @@ async def test_preview_request_over_stdio(client: LanguageClient):
     assert (b2[2] - b2[0]) > (b1[2] - b1[0]) + 40
     with pytest.raises(Exception, match="invalid params"):
         await client.protocol.send_request_async("aidl/preview", {"values": 3})
+
+
+def test_the_cache_keeps_the_last_documents_only(tmp_path):
+    cache = pv.Cache()
+    cache.KEEP = 2
+    for name in ("a", "b", "c"):
+        pv.preview(PLATE, str(tmp_path / f"{name}.aidl"), f"file:///{name}.aidl", 1, cache=cache)
+    assert list(cache.good) == ["file:///b.aidl", "file:///c.aidl"]
+    assert list(cache.params) == ["file:///b.aidl", "file:///c.aidl"]
+    # b previewed again (broken): its last good picture is still there, and b is now the newest
+    r = pv.preview(PLATE.replace("Circle(", "Circel("), str(tmp_path / "b.aidl"), "file:///b.aidl", 2,
+                   cache=cache)
+    assert r["stale"] and r["svg"] == cache.good["file:///b.aidl"]["svg"]
+    assert list(cache.good) == ["file:///c.aidl", "file:///b.aidl"]

@@ -47,11 +47,22 @@ MAX_SHAPES = 4000          # overlay elements; beyond this, the picture is sent 
 
 
 class Cache:
-    """Per document: the last good result (its SVG and shapes) and the params of a text."""
+    """Per document: the last good result (its SVG and shapes) and the params of a text; the
+    :data:`KEEP` documents previewed last (a closed document's entry ages out)."""
+
+    KEEP = 16
 
     def __init__(self) -> None:
         self.good: dict[str, dict] = {}              # uri -> last ok result
         self.params: dict[str, tuple[str, list]] = {}  # uri -> (text, params)
+
+    def touch(self, uri: str) -> None:
+        """``uri`` was just previewed: move it last, forget the oldest beyond KEEP."""
+        for d in (self.good, self.params):
+            if uri in d:
+                d[uri] = d.pop(uri)
+            while len(d) > self.KEEP:
+                d.pop(next(iter(d)))
 
     def forget(self, uri: str) -> None:
         self.good.pop(uri, None)
@@ -101,6 +112,7 @@ def preview(source: str, path: str, uri: str, version: int | None = None,
         out.update(svg=good["svg"], shapes=good["shapes"], stale=True,
                    drawn_version=good["version"], drawn_values=good["values"])
     out["params"] = params(source, path, uri, values, cache)
+    cache.touch(uri)
     out["ms"] = round((time.perf_counter() - t0) * 1000, 1)
     return out
 
