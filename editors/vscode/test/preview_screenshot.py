@@ -3,8 +3,10 @@ in Chromium beside the code, fed the `aidl/preview` result of a file with the cu
 
     .venv/bin/python editors/vscode/test/preview_screenshot.py examples/telephone.aidl 36 OUT.png
 
-(line: 1-based; the cursor goes to its first non-blank character). Needs node, Playwright and
-Debian's /usr/bin/chromium. Used for docs/images/vscode-preview.png.
+(line: 1-based; the cursor goes to its first non-blank character). ``--break OLD NEW``: then
+replace OLD by NEW in the text (an edit that breaks it) and show that state: the last good
+picture, dimmed, and the error. Needs node, Playwright and Debian's /usr/bin/chromium. Used for
+docs/images/vscode-preview.png.
 """
 import html
 import json
@@ -44,13 +46,18 @@ def colour(line: str) -> str:
     return re.sub(r"\b([A-Z][A-Za-z]+)(?=\()", r'<span class="fn">\1</span>', s)
 
 
-def main(src: str, line: int, out: str, values: str | None = None) -> None:
+def main(src: str, line: int, out: str, values: str | None = None, broken=None) -> None:
     from playwright.sync_api import sync_playwright
     text = Path(src).read_text()
     lines = text.split("\n")
     col = len(lines[line - 1]) - len(lines[line - 1].lstrip())
     vals = json.loads(values) if values else {}
-    res = preview(text, str(Path(src).resolve()), Path(src).resolve().as_uri(), 1, vals, Cache())
+    cache = Cache()
+    res = preview(text, str(Path(src).resolve()), Path(src).resolve().as_uri(), 1, vals, cache)
+    if broken:
+        text = text.replace(broken[0], broken[1], 1)
+        lines = text.split("\n")
+        res = preview(text, str(Path(src).resolve()), Path(src).resolve().as_uri(), 2, vals, cache)
     page_html = _webview_html()
     page_html = page_html.replace("const vscode = acquireVsCodeApi();",
                                   "const vscode = { postMessage() {} };")
@@ -88,4 +95,9 @@ def _webview_html() -> str:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4] if len(sys.argv) > 4 else None)
+    a = sys.argv[1:]
+    brk = None
+    if "--break" in a:
+        i = a.index("--break")
+        brk, a = (a[i + 1], a[i + 2]), a[:i] + a[i + 3:]
+    main(a[0], int(a[1]), a[2], a[3] if len(a) > 3 else None, brk)
