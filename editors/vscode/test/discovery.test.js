@@ -123,6 +123,11 @@ test('every snippet, expanded with its defaults, compiles', () => {
   const pkg = JSON.parse(fs.readFileSync(path.join(__dirname, '..', 'package.json'), 'utf8'));
   assert.deepEqual(pkg.contributes.snippets, [{ language: 'aidl-cad', path: './snippets/aidl.json' }]);
   assert.equal(pkg.contributes.configurationDefaults['[aidl-cad]']['editor.tabSize'], 4);
+  // hovers fence their code as `aidl_cad` (analysis.py): an alias of the language, so VS Code
+  // colours it with this grammar
+  assert.ok(pkg.contributes.languages[0].aliases.includes('aidl_cad'));
+  const analysis = fs.readFileSync(path.join(ROOT, 'aidl_lang', 'editor', 'lsp', 'analysis.py'), 'utf8');
+  assert.ok(analysis.includes('```aidl_cad\\n') && !analysis.includes('```aidl-cad'));
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-snip-'));
   assert.ok(Object.keys(snippets).length >= 15);
   const files = [];
