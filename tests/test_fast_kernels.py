@@ -1,7 +1,7 @@
 """The fast kernels of the shape checks and writers (output/checks.py, output/part.py) against their
 reference versions: same booleans, same sample points, bit for bit (hypothesis)."""
 import numpy as np
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from aidl_lang.output.checks import _inside, _inside_loops, _sample, _samples
 
@@ -207,6 +207,7 @@ _wdist = st.one_of(st.integers(1, 3).map(float), st.floats(1e-3, 3))
 
 
 @settings(max_examples=100, deadline=None)
+@example([(0.0, 1.0, 0.0, 2.0)], [(0.0, -1.05e-82)], 1.0)   # 1 + 1e-82 rounds to 1: within
 @given(st.lists(st.tuples(_wcoord, _wcoord, _wcoord, _wcoord), min_size=1, max_size=8),
        st.lists(st.tuples(_wcoord, _wcoord), min_size=1, max_size=30), _wdist)
 def test_within_equals_the_brute_force_distance(segs, pts, dist):

@@ -845,8 +845,12 @@ def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_0
     x, y = pts[:, 0], pts[:, 1]
     order = np.argsort(y, kind="stable")
     ys = y[order]
-    lo = np.searchsorted(ys, np.minimum(y1, y2) - dist, side="left")
-    hi = np.searchsorted(ys, np.maximum(y1, y2) + dist, side="right")
+    ymin, ymax = np.minimum(y1, y2), np.maximum(y1, y2)
+    # the window is wider than ``dist`` by a few units in the last place, so that a point
+    # which the distance below rounds to exactly ``dist`` is never filtered out first
+    pad = dist + 8 * np.finfo(float).eps * (np.abs(ymin) + np.abs(ymax) + dist)
+    lo = np.searchsorted(ys, ymin - pad, side="left")
+    hi = np.searchsorted(ys, ymax + pad, side="right")
     cnt = np.maximum(hi - lo, 0)
     total = int(cnt.sum())
     if not total or total > max_pairs:
