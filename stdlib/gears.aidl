@@ -34,9 +34,12 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     for k in range(n) {
         ps = [base_r * sqrt(1 + square(t)) for t in [t0 + (t1 - t0) * (k + j / 2) / n for j in range(3)]]
         qs = [half - t + atan(t) / (1 rad) for t in [t0 + (t1 - t0) * (k + j / 2) / n for j in range(3)]]
-        ax = ps[0] * cos(qs[0]); ay = ps[0] * sin(qs[0])
-        bx = ps[1] * cos(qs[1]) - ax; by = ps[1] * sin(qs[1]) - ay
-        ex = ps[2] * cos(qs[2]) - ax; ey = ps[2] * sin(qs[2]) - ay
+        ax = ps[0] * cos(qs[0])
+        ay = ps[0] * sin(qs[0])
+        bx = ps[1] * cos(qs[1]) - ax
+        by = ps[1] * sin(qs[1]) - ay
+        ex = ps[2] * cos(qs[2]) - ax
+        ey = ps[2] * sin(qs[2]) - ay
         dd = 2 * (bx * ey - by * ex)
         ux = ax + (ey * (bx * bx + by * by) - by * (ex * ex + ey * ey)) / dd
         uy = ay + (bx * (ex * ex + ey * ey) - ex * (bx * bx + by * by)) / dd
@@ -56,7 +59,8 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
                 lo = Arc(center=(cx + ux[k] * cos(rot) + uy[k] * sin(rot), cy + ux[k] * sin(rot) - uy[k] * cos(rot)),
                          radius=rad[k], start_angle=rot - (a_in[k] if cw[k] else a_out[k]),
                          end_angle=rot - (a_out[k] if cw[k] else a_in[k]))
-                Fixed(up.center); Fixed(lo.center)
+                Fixed(up.center)
+                Fixed(lo.center)
             }
             top = Arc(center=(cx, cy), radius=tip_r, start_angle=rot - tip_half * 1 rad, end_angle=rot + tip_half * 1 rad)
             # close the tooth inside the root disk: two radial lines and a chord
@@ -67,7 +71,10 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
             l_up = Line(s_up, i_up)
             chord = Line(i_up, i_lo)
             l_lo = Line(i_lo, s_lo)
-            Fixed(top.center); Fixed(l_up); Fixed(chord); Fixed(l_lo)
+            Fixed(top.center)
+            Fixed(l_up)
+            Fixed(chord)
+            Fixed(l_lo)
         }
         axis = Point(cx, cy)
         Fixed(axis)
