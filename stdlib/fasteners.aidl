@@ -21,7 +21,7 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
     medium = fit == "medium" or fit == "normal"
     coarse = fit == "coarse" or fit == "loose"
     assert (1 if fine or medium or coarse else 0) == 1, "fit is \"fine\", \"medium\" or \"coarse\""
-    i = found[0]
+    i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
     d = clearance_fine[i] if fine else (clearance_medium[i] if medium else clearance_coarse[i])
     c = Circle(center=(cx, cy), diameter=d)
 }
@@ -32,7 +32,7 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
 def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
-    hex = RegularPolygon(center=(cx, cy), across_flats=nut_across_flats[found[0]] + clearance,
+    hex = RegularPolygon(center=(cx, cy), across_flats=nut_across_flats[found[0] if len(found) == 1 else 2] + clearance,
                          sides=6, rotation=rotation)
 }
 
@@ -45,7 +45,7 @@ def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 de
            cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
-    i = found[0]
+    i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
     assert nut_depth + nut_thickness[i] / 2 < length, "the nut pocket must end before the slot does"
     slot = Rectangle(center=(cx + sin(rotation) * (length - 1 mm) / 2, cy - cos(rotation) * (length - 1 mm) / 2),
                      width=clearance_medium[i], height=length + 1 mm, rotation=rotation)

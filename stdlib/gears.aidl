@@ -13,6 +13,7 @@
 # and `root` (construction), `hub` (the root disk), `bore_hole`.
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+    assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
     tip_r = pitch_r + module
@@ -26,7 +27,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     half = pi / (2 * teeth) - backlash / (2 * pitch_r) + tan(pressure_angle) - pressure_angle / (1 rad)
     tip_half = half - t1 + atan(t1) / (1 rad)
     start_half = half - t0 + atan(t0) / (1 rad)
-    assert tip_half > 0, "the teeth come to a point before the tip circle: use more teeth"
+    assert tip_half > 0, "the teeth come to a point before the tip circle: use more teeth or a smaller pressure angle"
     assert root_r > bore / 2, "the bore is larger than the root circle"
     # arcs per flank: a 3-point arc's deviation from the involute falls as 1/n^3
     n = max(3, ceil(3.6 * (module / 1 mm) ** (1 / 3)))
