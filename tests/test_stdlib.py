@@ -378,3 +378,92 @@ def test_unknown_metric_size_is_a_located_error(tmp_path):
     r = aidl_lang.compile(source=src, path=p)
     assert [e.code for e in r.errors] == ["E0405"]
     assert "M2 to M8" in r.errors[0].message
+
+
+# ---------------------------------------------------------------------------------------------
+# Plates and cut-outs
+
+def test_keyhole_and_chamfered_plate_are_exact(tmp_path):
+    src = """
+import "std/plates.aidl"
+solid tag {
+    b = chamfered_plate(width=50 mm, height=40 mm, chamfer=6 mm)
+    k = keyhole(head=8 mm, slot_width=4 mm, length=10 mm, cy=-5 mm)
+    Fixed(b.body.points[0])
+    k.head_hole.center == (0 mm, -5 mm)
+}
+"""
+    r = compile_ok(tmp_path, src)
+    (outer, inner) = sorted((polygon(p, 200) for p in dxf_of(r).modelspace()
+                             if p.dxftype() == "LWPOLYLINE"), key=lambda q: -q.area)
+    # the octagon: a 50 x 40 box less four 6 x 6 / 2 corners, its points exact
+    assert outer.area == pytest.approx(50 * 40 - 4 * 18, abs=1e-9)
+    assert outer.bounds == pytest.approx((-25, -20, 25, 20), abs=1e-9)
+    (pl,) = [p for p in dxf_of(r).modelspace() if p.dxftype() == "LWPOLYLINE" and len(list(p.get_points())) == 8]
+    assert sorted((round(x, 9), round(y, 9)) for x, y in pl.get_points("xy"))[:2] == [(-25, -14), (-25, 14)]
+    # the keyhole: a circle of 8 and a slot of 4 reaching 10 + 2 above its center
+    x0, y0, x1, y1 = inner.bounds
+    assert (x0, x1, y0) == pytest.approx((-4, 4, -9), abs=1e-9)
+    assert y1 == pytest.approx(-5 + 10 + 2, abs=1e-9)
+    segs = [s for p in dxf_of(r).modelspace() if p.dxftype() == "LWPOLYLINE" for s in segments(p)]
+    arcs = sorted(round(s[2], 9) for s in segs if s[0] == "A")
+    assert set(arcs) == {2.0, 4.0}   # the slot's round end and the head opening (in two bulges)
+
+
+def test_living_hinge_cuts_and_bridges(tmp_path):
+    src = """
+import "std/plates.aidl"
+solid panel {
+    body = Rectangle(center=(0, 0), width=60 mm, height=40 mm)
+    Fixed(body)
+    h = living_hinge(width=20 mm, height=40 mm, pitch=2 mm, cut=15 mm, bridge=3 mm, kerf_width=0.5 mm)
+    AlignCenterX(h, body)
+    h.cut_a[0][0].center.y == 0 mm - 9 mm
+}
+"""
+    r = compile_ok(tmp_path, src)
+    layers = by_layer(dxf_of(r))
+    (outline,) = [p for p in layers["CUT"] if p.dxftype() == "LWPOLYLINE"
+                  and polygon(p).bounds[0] == pytest.approx(-30, abs=1e-9)]
+    shape = polygon(outline)
+    assert shape.bounds == pytest.approx((-30, -20, 30, 20), abs=1e-9)
+    cuts = [polygon(p) for p in layers["CUT"] if p is not outline]
+    # 11 columns 2 mm apart: 6 unshifted columns of 2 cuts, 5 shifted of 1 cut (the shifted
+    # columns' end cuts open into the outline's edges instead)
+    assert len(cuts) == 6 * 2 + 5
+    assert all(c.bounds[2] - c.bounds[0] == pytest.approx(0.5, abs=1e-9) for c in cuts)
+    xs = sorted({round((c.bounds[0] + c.bounds[2]) / 2, 9) for c in cuts})
+    assert xs == pytest.approx([-10 + 2 * i for i in range(11)], abs=1e-9)
+    # every cut is 15 long, 3 of material between cuts of a column and 3.5 to the edge
+    for c in cuts:
+        assert c.bounds[3] - c.bounds[1] == pytest.approx(15, abs=1e-9)
+    column0 = sorted(c.bounds[1] for c in cuts if abs(c.bounds[0] + 10.25) < 1e-9)
+    assert column0 == pytest.approx([-16.5, 1.5], abs=1e-9)
+    # the shifted columns' slits through the edges: 10 notches in each long edge
+    top = {round(x, 9) for x, y in shape.exterior.coords if abs(y - 20) < 1e-9}
+    assert len(top) == 2 + 2 * 5
+
+
+def test_mounting_plate_holes_and_text_on_arc(tmp_path):
+    src = """
+import "std/plates.aidl"
+solid plate {
+    m = mounting_plate(width=80 mm, height=50 mm, screw=4, fit="fine", inset=6 mm)
+    drawing label {
+        t = text_on_arc(text="AB C", radius=15 mm, size=4 mm, angle=90 deg, spacing=1)
+    }
+}
+"""
+    r = compile_ok(tmp_path, src)
+    circles = [e for e in dxf_of(r).modelspace() if e.dxftype() == "CIRCLE"]
+    assert sorted((round(c.dxf.center.x, 9), round(c.dxf.center.y, 9)) for c in circles) == [
+        (-34, -19), (-34, 19), (34, -19), (34, 19)]
+    assert all(c.dxf.radius == pytest.approx(4.3 / 2, abs=1e-12) for c in circles)
+    # three characters (the space is left out: `ch` lists A, B, C) on the 15 mm circle, 4 mm of arc apart,
+    # centered on the top and turned to the circle's tangent
+    pos = [r.value(f"plate.label.t.ch[{j}].position") for j in range(3)]
+    step = 4 / 15
+    for v, i in zip(pos, (0, 1, 3)):
+        a = math.pi / 2 + (1.5 - i) * step
+        x, y = v.value
+        assert (x, y) == pytest.approx((15 * math.cos(a), 15 * math.sin(a)), abs=1e-9)
