@@ -467,3 +467,16 @@ solid plate {
         a = math.pi / 2 + (1.5 - i) * step
         x, y = v.value
         assert (x, y) == pytest.approx((15 * math.cos(a), 15 * math.sin(a)), abs=1e-9)
+
+
+def test_every_program_of_docs_stdlib_compiles(tmp_path):
+    """The programs shown in docs/stdlib.md (and drawn in its pictures) compile without a
+    warning."""
+    import re
+    from conftest import ROOT
+    text = (ROOT / "docs" / "stdlib.md").read_text()
+    blocks = re.findall(r"```aidl\n(.*?)```", text, re.S)
+    assert len(blocks) == 4
+    for i, src in enumerate(blocks):
+        r = compile_ok(tmp_path, src, name=f"doc{i}.aidl")
+        assert not r.diagnostics, [d.message for d in r.diagnostics]
