@@ -24,6 +24,7 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
     i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
     d = clearance_fine[i] if fine else (clearance_medium[i] if medium else clearance_coarse[i])
     c = Circle(center=(cx, cy), diameter=d)
+    Fixed(c.center)
 }
 
 # A hexagonal cut-out that holds an ISO 4032 nut of `size` from turning:
@@ -34,6 +35,7 @@ def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
     hex = RegularPolygon(center=(cx, cy), across_flats=nut_across_flats[found[0] if len(found) == 1 else 2] + clearance,
                          sides=6, rotation=rotation)
+    Fixed(hex.center)
 }
 
 # A T-slot for a screw of `size` entering a panel from its edge (the joint of
@@ -52,4 +54,6 @@ def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 de
     nut = Rectangle(center=(cx + sin(rotation) * nut_depth, cy - cos(rotation) * nut_depth),
                     width=nut_across_flats[i] + clearance, height=nut_thickness[i] + clearance,
                     rotation=rotation)
+    Fixed(slot.center)
+    Fixed(nut.center)
 }

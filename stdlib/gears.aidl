@@ -81,12 +81,14 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
         Fixed(axis)
     }
     hub = Circle(center=(cx, cy), radius=root_r)
+    Fixed(hub.center)
     pitch = Circle(center=(cx, cy), radius=pitch_r, construction=true)
     Concentric(pitch, hub)
     Coincident(teeth_ring.axis, hub.center)
     if bore > 0 {
         hole bore_hole {
             b = Circle(center=(cx, cy), diameter=bore)
+            Fixed(b.center)
         }
         Concentric(bore_hole.b, hub)
     }

@@ -9,6 +9,7 @@ import "std/fasteners.aidl"
 # Member: `body`.
 def rounded_plate(width=80 mm, height=50 mm, corner_radius=5 mm, cx=0 mm, cy=0 mm) -> solid {
     body = RoundedRectangle(center=(cx, cy), width=width, height=height, corner_radius=corner_radius)
+    Fixed(body.center)
 }
 
 # A plate `width` x `height` whose four corners are cut at 45 degrees,
@@ -21,6 +22,7 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
     c = chamfer
     body = Polygon([(cx - w + c, cy - h), (cx + w - c, cy - h), (cx + w, cy - h + c), (cx + w, cy + h - c),
                     (cx + w - c, cy + h), (cx - w + c, cy + h), (cx - w, cy + h - c), (cx - w, cy - h + c)])
+    Fixed(body.points[0])
 }
 
 # A rounded plate with a clearance hole for a metric screw (`screw` 3: M3,
@@ -56,6 +58,7 @@ def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm,
 # turned by `rotation`. Member: `s`.
 def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
+    Fixed(s.center)
 }
 
 # A living hinge: a band `width` x `height` (centered at (cx, cy)) of
