@@ -21,7 +21,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     # the involute starts on the base circle, or just inside the root circle
     start_r = max(base_r, root_r - 0.1 * module)
     # roll angles (plain radians) of the involute at the start and the tip
-    t0 = sqrt(square(start_r / base_r) - 1)
+    t0 = sqrt(max(0, square(start_r / base_r) - 1))
     t1 = sqrt(square(tip_r / base_r) - 1)
     # half the tooth's angle at the base circle: pi/(2z) + inv(pressure angle)
     half = pi / (2 * teeth) - backlash / (2 * pitch_r) + tan(pressure_angle) - pressure_angle / (1 rad)

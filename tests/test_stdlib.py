@@ -480,3 +480,31 @@ def test_every_program_of_docs_stdlib_compiles(tmp_path):
     for i, src in enumerate(blocks):
         r = compile_ok(tmp_path, src, name=f"doc{i}.aidl")
         assert not r.diagnostics, [d.message for d in r.diagnostics]
+
+
+from hypothesis import HealthCheck, example, given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(z1=st.integers(8, 30), z2=st.integers(8, 40), m=st.sampled_from([0.8, 1.0, 1.5, 2.5]),
+       angle=st.sampled_from([0, 30, 135]))
+@example(z1=8, z2=11, m=1.5, angle=0)    # the involute starts on the base circle: sqrt(-1e-16)
+def test_gear_pair_law(tmp_path, z1, z2, m, angle):
+    """For any pair: tooth counts, tip circles m (z + 2), centers m (z1 + z2) / 2 apart along
+    `angle`, and the teeth of the two gears do not overlap."""
+    src = (f'import "std/gears.aidl"\nassembly d {{\n    p = gear_pair(teeth1={z1}, teeth2={z2}, '
+           f'module={m} mm, angle={angle} deg, bore1=2 mm, bore2=2 mm, backlash=0.02 mm)\n}}\n')
+    r = compile_ok(tmp_path, src)
+    layers = by_layer(dxf_of(r))
+    (o1, b1), (o2, b2) = (_gear_parts(layers[f"CUT-d.p.gear{i}"]) for i in (1, 2))
+    c1, c2 = tuple(b1.dxf.center)[:2], tuple(b2.dxf.center)[:2]
+    d = m * (z1 + z2) / 2
+    a = math.radians(angle)
+    assert c2[0] - c1[0] == pytest.approx(d * math.cos(a), abs=1e-9)
+    assert c2[1] - c1[1] == pytest.approx(d * math.sin(a), abs=1e-9)
+    for o, c, z in ((o1, c1, z1), (o2, c2, z2)):
+        tips = [s for s in segments(o) if s[0] == "A" and math.dist(s[1], c) < 1e-9
+                and abs(s[2] - m * (z + 2) / 2) < 1e-9]
+        assert len(tips) == z
+        assert max(math.dist(p[:2], c) for p in o.get_points("xy")) == pytest.approx(m * (z + 2) / 2, abs=1e-9)
+    assert polygon(o1).intersection(polygon(o2)).area < 1e-9
