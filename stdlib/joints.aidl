@@ -9,7 +9,8 @@
 # for material `thickness`, each edge one of "fingers", "slots" or "flat".
 # Along an edge, the part between the two corner squares (thickness x
 # thickness) is cut into an odd number of equal segments, each at least
-# `finger` wide (the largest odd count that fits); "fingers" keeps the even
+# `finger` wide (the largest odd count that fits, but at least 3 as long as
+# they stay `thickness` wide); "fingers" keeps the even
 # ones (the first, the third, ...) and cuts the others `thickness` deep,
 # "slots" is its complement, so the "fingers" edge of one panel mates the
 # "slots" edge of another of the same length. "flat" keeps the whole edge. A
@@ -32,8 +33,11 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     for e in range(4) {
         kind = kinds[e]
         run = (width if e % 2 == 0 else height) - 2 * t
+        # the largest odd count of segments at least `finger` wide; at least 3 (narrower
+        # fingers) while they stay `thickness` wide, so that the joint interlocks
         q = floor(run / finger)
-        n = 1 if kind == "flat" or q < 1 else (q if q % 2 == 1 else q - 1)
+        odd = q if q % 2 == 1 else q - 1
+        n = 1 if kind == "flat" else (odd if odd >= 3 else (3 if run >= 3 * t else 1))
         w = run / n
         for i in range(n) {
             if kind == "flat" or (kind == "fingers") == (i % 2 == 0) {

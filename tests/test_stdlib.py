@@ -11,6 +11,7 @@ import math
 import ezdxf
 import pytest
 from ezdxf.math import bulge_to_arc
+from hypothesis import HealthCheck, example, given, settings, strategies as st
 from shapely.geometry import Point as SPoint, Polygon as SPolygon
 
 import aidl_lang
@@ -276,7 +277,22 @@ def edge_profile(poly: SPolygon, edge: str, depth: float):
 
 @pytest.mark.parametrize("kerf", [0.0, 0.2])
 def test_finger_box_mating_edges_match(tmp_path, kerf):
-    src = BOX.replace("KERF", f"kerf {kerf} mm" if kerf else "")
+    check_box(tmp_path, 120, 80, 50, T, 10, kerf)
+
+
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(length=st.integers(40, 160), depth=st.integers(30, 100), height=st.integers(30, 80),
+       t=st.sampled_from([2.0, 3.0, 4.0]), finger=st.sampled_from([6.0, 10.0, 12.5]),
+       kerf=st.sampled_from([0.0, 0.1, 0.3]))
+def test_finger_box_law(tmp_path, length, depth, height, t, finger, kerf):
+    """Any box: every pair of mating edges has fingers exactly where the other has slots."""
+    check_box(tmp_path, length, depth, height, t, finger, kerf)
+
+
+def check_box(tmp_path, L, D, H, T, finger, kerf):
+    src = BOX.replace("KERF", f"kerf {kerf} mm" if kerf else "").replace(
+        "length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm, finger=10 mm",
+        f"length={L} mm, depth={D} mm, height={H} mm, thickness={T} mm, finger={finger} mm")
     r = compile_ok(tmp_path, src)
     layers = by_layer(cut_dxf_of(r))
     panels = {}
@@ -284,8 +300,8 @@ def test_finger_box_mating_edges_match(tmp_path, kerf):
         (pl,) = [e for e in layers[f"CUT-kit.box.{name}"] if e.dxftype() == "LWPOLYLINE"]
         panels[name] = polygon(pl)
     assert len(panels) == 6 and len(layers) == 6
-    sizes = {"bottom": (120, 80), "lid": (120, 80), "front": (120, 50), "back": (120, 50),
-             "left": (50, 80), "right": (50, 80)}
+    sizes = {"bottom": (L, D), "lid": (L, D), "front": (L, H), "back": (L, H),
+             "left": (H, D), "right": (H, D)}
     for name, (w, h) in sizes.items():
         x0, y0, x1, y1 = panels[name].bounds
         assert (x1 - x0, y1 - y0) == pytest.approx((w + kerf, h + kerf), abs=1e-9)
@@ -293,8 +309,9 @@ def test_finger_box_mating_edges_match(tmp_path, kerf):
         ta, ma = edge_profile(panels[pa], ea, T + kerf / 2)
         tb, mb = edge_profile(panels[pb], eb, T + kerf / 2)
         length = sizes[pa][0] if ea in ("top", "bottom") else sizes[pa][1]
-        n = int((length - 2 * T) // 10)
+        n = math.floor((length - 2 * T) / finger)
         n = n if n % 2 else n - 1
+        n = n if n >= 3 else 3             # narrower fingers rather than none
         w = (length - 2 * T) / n
         # the sides between the segments (away from the corner squares) ...
         inner_a = [s for s in ta if abs(s) < length / 2 - T - kerf]
@@ -312,7 +329,7 @@ def test_finger_box_mating_edges_match(tmp_path, kerf):
                     if m == material and abs(s0) < lim and abs(s1) < lim]
         pairs = list(zip(inner(ta, ma, True), inner(tb, mb, False))) + list(
             zip(inner(tb, mb, True), inner(ta, ma, False)))
-        assert len(pairs) == n - 2
+        assert len(pairs) == max(0, n - 2)
         for (a0, a1), (b0, b1) in pairs:
             assert a1 - a0 == pytest.approx(w + kerf, abs=1e-9)      # a finger, widened
             assert b1 - b0 == pytest.approx(w - kerf, abs=1e-9)      # its slot, narrowed
@@ -481,8 +498,6 @@ def test_every_program_of_docs_stdlib_compiles(tmp_path):
         r = compile_ok(tmp_path, src, name=f"doc{i}.aidl")
         assert not r.diagnostics, [d.message for d in r.diagnostics]
 
-
-from hypothesis import HealthCheck, example, given, settings, strategies as st  # noqa: E402
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
