@@ -216,6 +216,18 @@ def test_gear_involute_deviation_bound_holds_across_modules(tmp_path, module):
     assert 1e-7 < worst < 1e-3
 
 
+@pytest.mark.parametrize("teeth,module", [(11, "1.5 mm"), (8, "1.5 mm"), (41, "1 mm")])
+def test_gear_whose_involute_starts_on_the_base_circle(tmp_path, teeth, module):
+    """The roll angle at the base circle is 0, never sqrt of a rounding below 0 (E0112 once,
+    at 11 teeth of module 1.5)."""
+    src = f'import "std/gears.aidl"\nsolid g {{ w = spur_gear(teeth={teeth}, module={module}, backlash=0.02 mm) }}\n'
+    r = compile_ok(tmp_path, src)
+    (outline,) = [e for e in dxf_of(r).modelspace() if e.dxftype() == "LWPOLYLINE"]
+    m = float(module.split()[0])
+    assert max(math.hypot(*p[:2]) for p in outline.get_points("xy")) == pytest.approx(
+        m * (teeth + 2) / 2, abs=1e-9)
+
+
 def test_gear_with_pointed_teeth_is_a_located_error(tmp_path):
     src = 'import "std/gears.aidl"\nsolid g { w = spur_gear(teeth=6, module=2 mm, pressure_angle=35 deg) }\n'
     p = tmp_path / "t.aidl"
@@ -501,12 +513,13 @@ def test_every_program_of_docs_stdlib_compiles(tmp_path):
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(z1=st.integers(8, 30), z2=st.integers(8, 40), m=st.sampled_from([0.8, 1.0, 1.5, 2.5]),
+@given(z1=st.integers(17, 30), z2=st.integers(17, 60), m=st.sampled_from([0.8, 1.0, 1.5, 2.5]),
        angle=st.sampled_from([0, 30, 135]))
-@example(z1=8, z2=11, m=1.5, angle=0)    # the involute starts on the base circle: sqrt(-1e-16)
+@example(z1=17, z2=17, m=1.5, angle=0)
 def test_gear_pair_law(tmp_path, z1, z2, m, angle):
-    """For any pair: tooth counts, tip circles m (z + 2), centers m (z1 + z2) / 2 apart along
-    `angle`, and the teeth of the two gears do not overlap."""
+    """For any pair without undercut (17 teeth or more at 20 degrees): tooth counts, tip
+    circles m (z + 2), centers m (z1 + z2) / 2 apart along `angle`, and the teeth of the two
+    gears do not overlap.  (Fewer teeth: docs/stdlib.md, "What is simplified".)"""
     src = (f'import "std/gears.aidl"\nassembly d {{\n    p = gear_pair(teeth1={z1}, teeth2={z2}, '
            f'module={m} mm, angle={angle} deg, bore1=2 mm, bore2=2 mm, backlash=0.02 mm)\n}}\n')
     r = compile_ok(tmp_path, src)
