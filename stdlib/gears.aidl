@@ -9,8 +9,8 @@
 # module * teeth, outer diameter module * (teeth + 2)), centered at (cx, cy),
 # one tooth pointing along `phase` (0 deg: along +x). A `bore` of 0 leaves the
 # center solid. `backlash` thins every tooth by that much along the pitch
-# circle. Members: `pitch` (construction circle of the pitch diameter), `tip`
-# and `root` (construction), `hub` (the root disk), `bore_hole`.
+# circle. Members: `pitch` and `tip` (construction circles of the pitch and
+# outer diameters), `hub` (the root disk), `teeth_ring`, `bore_hole`.
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
@@ -83,6 +83,8 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     hub = Circle(center=(cx, cy), radius=root_r)
     Fixed(hub.center)
     pitch = Circle(center=(cx, cy), radius=pitch_r, construction=true)
+    tip = Circle(center=(cx, cy), radius=tip_r, construction=true)
+    Concentric(tip, hub)
     Concentric(pitch, hub)
     Coincident(teeth_ring.axis, hub.center)
     if bore > 0 {

@@ -175,6 +175,11 @@ def test_gear_pair_centre_distance_and_mesh(tmp_path):
     d = math.dist(tuple(b1.dxf.center)[:2], tuple(b2.dxf.center)[:2])
     assert d == pytest.approx(1.0 * (12 + 90) / 2, abs=1e-9)
     assert b1.dxf.radius == pytest.approx(1.5, abs=1e-12) and b2.dxf.radius == pytest.approx(4, abs=1e-12)
+    for g, z in (("gear1", 12), ("gear2", 90)):            # pitch diameter m z, tip m (z + 2)
+        assert r.value(f"drive.pair.{g}.pitch.radius").mm == pytest.approx(z / 2, abs=1e-12)
+        assert r.value(f"drive.pair.{g}.tip.radius").mm == pytest.approx((z + 2) / 2, abs=1e-12)
+        assert r.value(f"drive.pair.{g}.pitch.center").value == pytest.approx(
+            tuple((b1 if g == "gear1" else b2).dxf.center)[:2], abs=1e-9)
     from shapely import affinity
     p1, p2 = polygon(o1), polygon(o2)
     cx2 = tuple(b2.dxf.center)[:2]
