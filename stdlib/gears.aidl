@@ -2,8 +2,8 @@
 #   import "std/gears.aidl"
 # Tooth proportions follow the ISO 53 basic rack: addendum 1 m, dedendum
 # 1.25 m, pressure angle 20 deg unless given. docs/stdlib.md ("Gears") says how
-# the involute is written as circular arcs (within 0.001 mm of the true
-# involute) and what is simplified (no root fillet, no undercut).
+# the involute is written as tangent circular arcs (within 0.001 mm of the
+# true involute) and what is simplified (no root fillet, no undercut).
 
 # An involute spur gear of `teeth` teeth and module `module` (pitch diameter
 # module * teeth, outer diameter module * (teeth + 2)), centered at (cx, cy),
@@ -29,39 +29,60 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     start_half = half - t0 + atan(t0) / (1 rad)
     assert tip_half > 0, "the teeth come to a point before the tip circle: use more teeth or a smaller pressure angle"
     assert root_r > bore / 2, "the bore is larger than the root circle"
-    # arcs per flank: a 3-point arc's deviation from the involute falls as 1/n^3
-    n = max(3, ceil(3.6 * (module / 1 mm) ** (1 / 3)))
-    # the upper flank of the tooth on +x as n arcs, each through 3 involute points
+    # the flank as n biarcs: both ends of each on the involute with the involute's own
+    # direction there, so every join is tangent; n grows with the module (deviation ~ m/n^3)
+    # and the ends crowd toward the base circle (t ~ k^1.2), where the involute curves most
+    n = max(3, ceil(3.8 * (module / 1 mm) ** (1 / 3)))
+    # the upper flank of the tooth on +x: the point at roll angle t and its direction
     for k in range(n) {
-        ps = [base_r * sqrt(1 + square(t)) for t in [t0 + (t1 - t0) * (k + j / 2) / n for j in range(3)]]
-        qs = [half - t + atan(t) / (1 rad) for t in [t0 + (t1 - t0) * (k + j / 2) / n for j in range(3)]]
-        ax = ps[0] * cos(qs[0])
-        ay = ps[0] * sin(qs[0])
-        bx = ps[1] * cos(qs[1]) - ax
-        by = ps[1] * sin(qs[1]) - ay
-        ex = ps[2] * cos(qs[2]) - ax
-        ey = ps[2] * sin(qs[2]) - ay
-        dd = 2 * (bx * ey - by * ex)
-        ux = ax + (ey * (bx * bx + by * by) - by * (ex * ex + ey * ey)) / dd
-        uy = ay + (bx * (ex * ex + ey * ey) - ex * (bx * bx + by * by)) / dd
-        rad = sqrt(square(ax - ux) + square(ay - uy))
-        a_in = atan2(ay - uy, ax - ux)
-        a_out = atan2(ay + ey - uy, ax + ex - ux)
-        cw = dd < 0
+        ta = t0 + (t1 - t0) * (k / n) ** 1.2
+        tb = t0 + (t1 - t0) * ((k + 1) / n) ** 1.2
+        pax = base_r * sqrt(1 + ta * ta) * cos(half - ta + atan(ta) / (1 rad))
+        pay = base_r * sqrt(1 + ta * ta) * sin(half - ta + atan(ta) / (1 rad))
+        pbx = base_r * sqrt(1 + tb * tb) * cos(half - tb + atan(tb) / (1 rad))
+        pby = base_r * sqrt(1 + tb * tb) * sin(half - tb + atan(tb) / (1 rad))
+        dax = cos(half - ta)
+        day = sin(half - ta)
+        dbx = cos(half - tb)
+        dby = sin(half - tb)
+        # the biarc's joint q (equal tangent lengths d)
+        vx = pbx - pax
+        vy = pby - pay
+        vt = vx * (dax + dbx) + vy * (day + dby)
+        cc = 1 - (dax * dbx + day * dby)
+        d = (sqrt(vt * vt + 2 * cc * (vx * vx + vy * vy)) - vt) / (2 * cc)
+        qx = (pax + d * dax + pbx - d * dbx) / 2
+        qy = (pay + d * day + pby - d * dby) / 2
+        # first arc: from p_a along its direction to q (r1 > 0: turning left)
+        r1 = ((qx - pax) * (qx - pax) + (qy - pay) * (qy - pay)) / (2 * (-day * (qx - pax) + dax * (qy - pay)))
+        c1x = pax - r1 * day
+        c1y = pay + r1 * dax
+        s1 = atan2(pay - c1y, pax - c1x) if r1 > 0 else atan2(qy - c1y, qx - c1x)
+        e1 = atan2(qy - c1y, qx - c1x) if r1 > 0 else atan2(pay - c1y, pax - c1x)
+        # second arc: from p_b backwards (against its direction) to q
+        r2 = ((qx - pbx) * (qx - pbx) + (qy - pby) * (qy - pby)) / (2 * (dby * (qx - pbx) - dbx * (qy - pby)))
+        c2x = pbx + r2 * dby
+        c2y = pby - r2 * dbx
+        s2 = atan2(pby - c2y, pbx - c2x) if r2 > 0 else atan2(qy - c2y, qx - c2x)
+        e2 = atan2(qy - c2y, qx - c2x) if r2 > 0 else atan2(pby - c2y, pbx - c2x)
     }
     solid teeth_ring {
         for i in range(teeth) {
             rot = phase + i * 360 deg / teeth
             for k in range(n) {
-                # upper flank, and its mirror image about the tooth's axis
-                up = Arc(center=(cx + ux[k] * cos(rot) - uy[k] * sin(rot), cy + ux[k] * sin(rot) + uy[k] * cos(rot)),
-                         radius=rad[k], start_angle=rot + (a_out[k] if cw[k] else a_in[k]),
-                         end_angle=rot + (a_in[k] if cw[k] else a_out[k]))
-                lo = Arc(center=(cx + ux[k] * cos(rot) + uy[k] * sin(rot), cy + ux[k] * sin(rot) - uy[k] * cos(rot)),
-                         radius=rad[k], start_angle=rot - (a_in[k] if cw[k] else a_out[k]),
-                         end_angle=rot - (a_out[k] if cw[k] else a_in[k]))
-                Fixed(up.center)
-                Fixed(lo.center)
+                # the two arcs of the upper flank, and their mirror images about the tooth's axis
+                up1 = Arc(center=(cx + c1x[k] * cos(rot) - c1y[k] * sin(rot), cy + c1x[k] * sin(rot) + c1y[k] * cos(rot)),
+                          radius=abs(r1[k]), start_angle=rot + s1[k], end_angle=rot + e1[k])
+                up2 = Arc(center=(cx + c2x[k] * cos(rot) - c2y[k] * sin(rot), cy + c2x[k] * sin(rot) + c2y[k] * cos(rot)),
+                          radius=abs(r2[k]), start_angle=rot + s2[k], end_angle=rot + e2[k])
+                lo1 = Arc(center=(cx + c1x[k] * cos(rot) + c1y[k] * sin(rot), cy + c1x[k] * sin(rot) - c1y[k] * cos(rot)),
+                          radius=abs(r1[k]), start_angle=rot - e1[k], end_angle=rot - s1[k])
+                lo2 = Arc(center=(cx + c2x[k] * cos(rot) + c2y[k] * sin(rot), cy + c2x[k] * sin(rot) - c2y[k] * cos(rot)),
+                          radius=abs(r2[k]), start_angle=rot - e2[k], end_angle=rot - s2[k])
+                Fixed(up1.center)
+                Fixed(up2.center)
+                Fixed(lo1.center)
+                Fixed(lo2.center)
             }
             top = Arc(center=(cx, cy), radius=tip_r, start_angle=rot - tip_half * 1 rad, end_angle=rot + tip_half * 1 rad)
             # close the tooth inside the root disk: two radial lines and a chord
