@@ -120,8 +120,10 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
         """``newton``'s ``place`` for the blocks ``which`` (bool per block): ``0 + z`` (0 when
         the class is fixed) plus the offset, or the value itself when unreduced."""
         sel = which[pb]
-        val = np.where(fixed, 0.0, 0.0 + uu[pzc])
-        val = np.where(unred, uu[pzc], val + np.where(unred, 0.0, pt))
+        # every class fixed (blocks of only `Fixed` points): no unknown to read
+        got = uu[pzc] if uu.size else np.zeros(len(pzc))
+        val = np.where(fixed, 0.0, 0.0 + got)
+        val = np.where(unred, got, val + np.where(unred, 0.0, pt))
         xx[px[sel]] = val[sel]
 
     place(x, reduced, u)           # newton starts a reduced system at its class means
