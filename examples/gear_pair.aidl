@@ -1,14 +1,14 @@
 # A gear pair from the standard library (import "std/gears.aidl"): a
-# 12-tooth pinion meshing a 90-tooth wheel of module 1 mm, true involute
-# teeth (as circular arcs within 0.001 mm of the involute). The pair is placed
-# at the center distance m * (z1 + z2) / 2 = 51 mm by `gear_pair`.
-# Try: --set wheel_teeth=60  --set module=1.5mm  --set backlash=0.1mm
+# 12-tooth pinion meshing a 36-tooth wheel (3:1) of module 1.5 mm, true
+# involute teeth (as tangent circular arcs within 0.001 mm of the involute).
+# `gear_pair` places them at the center distance m * (z1 + z2) / 2 = 36 mm.
+# Try: --set wheel_teeth=90 --set module=1mm  --set backlash=0.1mm
 
 import "std/gears.aidl"
 
 param pinion_teeth = 12, min = 8, max = 40
-param wheel_teeth = 90, min = 20, max = 120
-param module = 1 mm, min = 0.5 mm, max = 3 mm, step = 0.25 mm
+param wheel_teeth = 36, min = 20, max = 120
+param module = 1.5 mm, min = 0.5 mm, max = 3 mm, step = 0.25 mm
 param backlash = 0.05 mm
 
 assembly drive {
