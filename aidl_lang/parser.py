@@ -1273,6 +1273,12 @@ class _Builder:
         name = items[0]
         return A.Assign(meta, self.text[name.start:name.end], name, items[1])
 
+    def kind_assign(self, meta, items):
+        kind, name, value = items
+        tx = self.text
+        return A.KindAssign(meta, tx[name.start:name.end], name, value,
+                            tx[kind.start:kind.end], kind)
+
     def for_stmt(self, meta, items):
         return A.For(meta, self.tx(items[0]), items[0], items[1], items[2])
 

@@ -167,8 +167,8 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
                 shape_checks: bool = True, deadline: Deadline | None = None) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
-    preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
-    checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
+    preview: the extent check (E0305), branch flips (W0403), the booleans (an Offset or
+    Shell that leaves nothing: E0406) and the geometry checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
     or ``None`` when the extent check failed (nothing absurd reaches a writer).
     ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
     preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on
@@ -181,6 +181,8 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no numpy noise
             drawing = render_model(model, deadline)
+        for g, message, hint in drawing.shape_errors:
+            sink.add(Diagnostic("E0406", message, g.span, "error", hint=hint))
         if shape_checks:
             check_drawing(drawing, sink, min_wall, deadline)
     except OutOfBudget as ex:
@@ -283,6 +285,23 @@ def _where(c) -> str:
     return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
 
 
+def _rigid_note(s) -> str:
+    """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
+    moved, never bent, so a conflict there may ask for a change of shape."""
+    rigid, todo = [], list(s.children.values())
+    while todo:
+        t = todo.pop()
+        if getattr(t, "rigid", False):
+            rigid.append(t)
+        else:
+            todo += t.children.values()
+    if not rigid:
+        return ""
+    names = ", ".join(f"`{t.path}`" for t in sorted(rigid, key=lambda t: t.path)[:3])
+    return (f". {names} {'is' if len(rigid) == 1 else 'are'} rigid (`Rigid(...)`): moved as "
+            "one body, never bent; if the shape must change, drop `Rigid` or constrain inside it")
+
+
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
     """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
     the iteration budget ran out."""
@@ -316,7 +335,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others"),
+                  "others" + _rigid_note(first.owner)),
             labels=labels))
         shown += 1
     if shown:

@@ -317,6 +317,8 @@ class Statements:
             self._expr_stmt(st.expr)
         elif t is A.StructDecl:
             self._struct_decl(st)
+        elif t is A.KindAssign:
+            self._assign(st)
         elif isinstance(st, A.ThicknessDecl):
             self._thickness(st)
         elif t is A.Assert:
@@ -398,9 +400,17 @@ class Statements:
             callee = self._callee(v.func)
             if type(callee) is Template:
                 self._check_new_name(name, st.name_span, self._need_struct(st.span))
-                ref = self._instantiate(callee, v, name + self._loop_suffix())
+                ref = self._instantiate(callee, v, name + self._loop_suffix(),
+                                        kind=self._kind_of(st))
                 self.scope.vars[name] = ref
                 return
+        if type(st) is A.KindAssign:
+            self._kind_of(st)
+            raise EvalError("E0108", f"`{st.kind} {name} = ...` makes a template instance of "
+                            f"kind {st.kind}, but the value is not a template call",
+                            st.kind_span,
+                            hint=f"write `{st.kind} {name} {{ ... }}` around geometry, or call "
+                                 f"a template: `{st.kind} {name} = outline(...)`")
         if name in CONSTANTS or name == "self":
             raise EvalError("E0107", f"`{name}` is a built-in name and cannot be assigned",
                             st.name_span, hint="choose another name")
@@ -422,6 +432,18 @@ class Statements:
                 if isinstance(item, GeomRef) and not item.geom.name:
                     item.geom.name = f"{name}[{i}]"
         self.scope.vars[name] = val
+
+    def _kind_of(self, st) -> str | None:
+        """The structure kind written before a template instance's name (``hole h = t()``),
+        or None for a plain assignment."""
+        if type(st) is not A.KindAssign:
+            return None
+        if st.kind not in A.STRUCTURE_KINDS:
+            raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                            hint="an instance's kind is `solid`, `hole`, `drawing` or "
+                                 "`assembly`: `hole h = outline(...)`",
+                            suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
+        return st.kind
 
     def _call_statement(self, node: A.Call, callee, name: str | None):
         """What ``eval`` does for a call that is a statement's whole value, with its callee
@@ -508,7 +530,10 @@ class Statements:
         return True
 
     # ------------------------------------------------------------------ templates
-    def _instantiate(self, t: Template, call: A.Call, name: str) -> StructRef:
+    def _instantiate(self, t: Template, call: A.Call, name: str,
+                     kind: str | None = None) -> StructRef:
+        """Instance ``name`` of template ``t`` called by ``call``, a child of the structure
+        being run; ``kind`` (from ``hole h = t(...)``) replaces the template's own kind."""
         parent = self._need_struct(call.span)
         d = t.node
         if self.template_depth >= MAX_TEMPLATE_DEPTH:
@@ -533,7 +558,7 @@ class Statements:
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
         self.step(call.span)
-        child = self._new_structure(name, d.kind, parent, call.span, template=d.name)
+        child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         saved_file = self.file
         tscope = Scope(t.scope, child, t.scope.file)

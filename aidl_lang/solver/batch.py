@@ -120,10 +120,9 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
         """``newton``'s ``place`` for the blocks ``which`` (bool per block): ``0 + z`` (0 when
         the class is fixed) plus the offset, or the value itself when unreduced."""
         sel = which[pb]
-        # every class fixed (blocks of only `Fixed` points): no unknown to read
-        got = uu[pzc] if uu.size else np.zeros(len(pzc))
-        val = np.where(fixed, 0.0, 0.0 + got)
-        val = np.where(unred, got, val + np.where(unred, 0.0, pt))
+        z = uu[pzc] if len(uu) else np.zeros(len(pzc))    # every class fixed: nothing to read
+        val = np.where(fixed, 0.0, 0.0 + z)
+        val = np.where(unred, z, val + np.where(unred, 0.0, pt))
         xx[px[sel]] = val[sel]
 
     place(x, reduced, u)           # newton starts a reduced system at its class means

@@ -28,7 +28,7 @@ from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInva
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 
-from . import analysis, edits, semantic, signature, window
+from . import analysis, edits, preview, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
 
 DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
@@ -344,6 +344,13 @@ def rename(ls: LanguageServer, params: T.RenameParams):
                             params.new_name, params.text_document.uri, path, opened)
     except edits.RenameError as e:
         raise RequestFailed(str(e)) from None
+
+
+@server.feature("aidl/preview")
+@_safe()
+async def aidl_preview(ls: LanguageServer, params):
+    """The editor preview's picture of a document (:mod:`.preview`)."""
+    return await preview.handle(ls, params)
 
 
 def main(worker=None) -> int:
