@@ -126,6 +126,16 @@ def test_the_batch_checks_that_its_blocks_are_independent():
     assert not _independent(t, rows, cols, blocks)
 
 
+def test_blocks_whose_classes_are_all_fixed_start_from_a_perturbed_point():
+    """A batch of blocks that substitution reduced to fixed classes only (the Fixed arcs of a
+    std/gears.aidl tooth ring) has no unknown to place: it once indexed an empty vector."""
+    src = 'import "std/gears.aidl"\nassembly s { g = gear_pair(teeth1=6, teeth2=7, module=1 mm) }\n'
+    x0 = np.asarray(_model(src).x, dtype=float)
+    rng = np.random.default_rng(7)
+    got = _solve_both(src, [None, x0 + rng.normal(0, 0.05, len(x0))])
+    assert got[0][0] and got[1][0]
+
+
 FULLY_SUBSTITUTED = """def p() -> solid {
     body = Rectangle(center=(0, 0), width=80, height=50)
     for sx in [-1, 1] {

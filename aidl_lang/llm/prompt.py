@@ -31,7 +31,8 @@ statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
 live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE`,
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
-`part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes`. Control flow:
+`part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
+`.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
 `for i in range(n) { ... }` (names defined in a loop become lists: `knob[0]`),
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`

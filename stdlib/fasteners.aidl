@@ -1,0 +1,59 @@
+# AIDL standard library: holes for metric screws and nuts, M2 to M8.
+#   import "std/fasteners.aidl"
+# Clearance holes: ISO 273 (fine, medium, coarse series). Nuts: ISO 4032
+# hexagon nuts, style 1 (width across flats s, thickness m max).
+
+# The table, one entry per size (index with `metric_index`'s rule).
+metric_sizes = [2, 2.5, 3, 4, 5, 6, 8]
+clearance_fine = [2.2 mm, 2.7 mm, 3.2 mm, 4.3 mm, 5.3 mm, 6.4 mm, 8.4 mm]
+clearance_medium = [2.4 mm, 2.9 mm, 3.4 mm, 4.5 mm, 5.5 mm, 6.6 mm, 9 mm]
+clearance_coarse = [2.6 mm, 3.1 mm, 3.6 mm, 4.8 mm, 5.8 mm, 7 mm, 10 mm]
+nut_across_flats = [4 mm, 5 mm, 5.5 mm, 7 mm, 8 mm, 10 mm, 13 mm]
+nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm]
+
+# A through hole for a metric screw of `size` (3 for M3) by ISO 273: `fit`
+# "fine" (also "close"), "medium" (also "normal") or "coarse" (also "loose").
+# M3 medium is 3.4 mm. Member: `c` (the circle).
+def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
+    found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
+    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
+    fine = fit == "fine" or fit == "close"
+    medium = fit == "medium" or fit == "normal"
+    coarse = fit == "coarse" or fit == "loose"
+    assert (1 if fine or medium or coarse else 0) == 1, "fit is \"fine\", \"medium\" or \"coarse\""
+    i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
+    d = clearance_fine[i] if fine else (clearance_medium[i] if medium else clearance_coarse[i])
+    c = Circle(center=(cx, cy), diameter=d)
+    Fixed(c.center)
+}
+
+# A hexagonal cut-out that holds an ISO 4032 nut of `size` from turning:
+# across flats s (5.5 mm for M3) plus `clearance`, flats at top and bottom
+# (turn with `rotation`). Member: `hex` (a RegularPolygon).
+def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
+    found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
+    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
+    hex = RegularPolygon(center=(cx, cy), across_flats=nut_across_flats[found[0] if len(found) == 1 else 2] + clearance,
+                         sides=6, rotation=rotation)
+    Fixed(hex.center)
+}
+
+# A T-slot for a screw of `size` entering a panel from its edge (the joint of
+# laser-cut boxes): a slot as wide as the medium clearance hole running
+# `length` from the edge (the mouth at (cx, cy), running toward -y when
+# `rotation` is 0), crossed by a pocket for the nut (across flats wide, nut
+# thickness deep plus `clearance`) at `nut_depth` from the edge.
+def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 deg,
+           cx=0 mm, cy=0 mm) -> hole {
+    found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
+    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
+    i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
+    assert nut_depth + nut_thickness[i] / 2 < length, "the nut pocket must end before the slot does"
+    slot = Rectangle(center=(cx + sin(rotation) * (length - 1 mm) / 2, cy - cos(rotation) * (length - 1 mm) / 2),
+                     width=clearance_medium[i], height=length + 1 mm, rotation=rotation)
+    nut = Rectangle(center=(cx + sin(rotation) * nut_depth, cy - cos(rotation) * nut_depth),
+                    width=nut_across_flats[i] + clearance, height=nut_thickness[i] + clearance,
+                    rotation=rotation)
+    Fixed(slot.center)
+    Fixed(nut.center)
+}

@@ -1,0 +1,118 @@
+# AIDL standard library: plates and the cut-outs laser-cut parts use most.
+#   import "std/plates.aidl"
+# Rounded and chamfered plates, keyholes, slots, a living hinge, and text set
+# along an arc. docs/stdlib.md ("Plates and cut-outs") has pictures.
+
+import "std/fasteners.aidl"
+
+# A plate `width` x `height` with rounded corners of `corner_radius`.
+# Member: `body`.
+def rounded_plate(width=80 mm, height=50 mm, corner_radius=5 mm, cx=0 mm, cy=0 mm) -> solid {
+    body = RoundedRectangle(center=(cx, cy), width=width, height=height, corner_radius=corner_radius)
+    Fixed(body.center)
+}
+
+# A plate `width` x `height` whose four corners are cut at 45 degrees,
+# `chamfer` along each edge. Member: `body` (an octagon; `body.points[0]` is
+# the bottom edge's left end, then counter-clockwise).
+def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -> solid {
+    assert 2 * chamfer < width and 2 * chamfer < height, "the chamfers must leave some of every edge"
+    w = width / 2
+    h = height / 2
+    c = chamfer
+    body = Polygon([(cx - w + c, cy - h), (cx + w - c, cy - h), (cx + w, cy - h + c), (cx + w, cy + h - c),
+                    (cx + w - c, cy + h), (cx - w + c, cy + h), (cx - w, cy + h - c), (cx - w, cy - h + c)])
+    Fixed(body.points[0])
+}
+
+# A rounded plate with a clearance hole for a metric screw (`screw` 3: M3,
+# ISO 273 `fit`) in each corner, `inset` from both edges. Members: `body`,
+# `corner[0..3]` (clearance_hole instances, counter-clockwise from the
+# bottom left).
+def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
+                   inset=6 mm, cx=0 mm, cy=0 mm) -> solid {
+    body = RoundedRectangle(center=(cx, cy), width=width, height=height, corner_radius=corner_radius)
+    Fixed(body.center)
+    for k in range(4) {
+        sx = -1 if k == 0 or k == 3 else 1
+        sy = -1 if k < 2 else 1
+        corner = clearance_hole(size=screw, fit=fit, cx=cx + sx * (width / 2 - inset), cy=cy + sy * (height / 2 - inset))
+        corner.c.center == body.center + (sx * (width / 2 - inset), sy * (height / 2 - inset))
+    }
+}
+
+# A keyhole to hang a part on a screw: a round opening of `head` diameter for
+# the screw head, at (cx, cy), and a slot of `slot_width` (the shank) running
+# `length` from its center toward `direction` (90 deg: up, so the part drops
+# onto the screw). Members: `head_hole` (Circle), `slot` (Slot).
+def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm, cy=0 mm) -> hole {
+    assert slot_width < head, "the slot must be narrower than the head opening"
+    head_hole = Circle(center=(cx, cy), diameter=head)
+    slot = Slot(start=(cx, cy), end=(cx + length * cos(direction), cy + length * sin(direction)), width=slot_width)
+    Fixed(head_hole.center)
+    Fixed(slot.start)
+    Fixed(slot.end)
+}
+
+# A straight slot (stadium) `length` overall (tip to tip) and `width` wide,
+# turned by `rotation`. Member: `s`.
+def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
+    s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
+    Fixed(s.center)
+}
+
+# A living hinge: a band `width` x `height` (centered at (cx, cy)) of
+# staggered straight cuts that lets a plate of stiff sheet bend about the
+# band's long axis (y). Columns of cuts `pitch` apart; each cut is `cut`
+# long and `kerf_width` wide with `bridge` of material between cuts of a
+# column; every second column is shifted by half a period, and its end cuts
+# run `overrun` past the band's top and bottom (so a band as tall as the
+# plate opens at its edges, as the hinge needs). Members: `cut_a` (the
+# full-length cuts, per column), `cut_b` (the end cuts).
+def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
+                 kerf_width=0.5 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> hole {
+    period = cut + bridge
+    rows = max(1, floor((height - bridge) / period))
+    cols = max(1, floor(width / pitch) + 1)
+    x0 = cx - (cols - 1) * pitch / 2
+    for i in range(cols) {
+        x = x0 + i * pitch
+        shifted = i % 2 == 1
+        # the full cuts of the column
+        n = rows - 1 if shifted else rows
+        for k in range(n) {
+            y = cy + (k - (n - 1) / 2) * period
+            cut_a = Rectangle(center=(x, y), width=kerf_width, height=cut)
+            Fixed(cut_a.center)
+        }
+        # a shifted column ends in two cuts through the band's edges
+        if shifted {
+            inner = rows / 2 * period - cut / 2
+            for s in [-1, 1] {
+                top = cy + s * (height / 2 + overrun)
+                cut_b = Rectangle(center=(x, (top + cy + s * inner) / 2), width=kerf_width, height=abs(top - cy - s * inner))
+                Fixed(cut_b.center)
+            }
+        }
+    }
+}
+
+# `text` set along a circle of `radius` about (cx, cy), centered on the
+# direction `angle` (90 deg: over the top) and reading clockwise (left to
+# right across the top), one Text per character, their baselines on the
+# circle. Characters are placed `spacing` x `size` apart along the arc (the
+# font is proportional, so this spacing is an average: wide letters sit a
+# little closer). Members: `ch` (the characters' Texts, spaces left out).
+def text_on_arc(text="AIDL", radius=30 mm, size=5 mm, angle=90 deg, spacing=0.9,
+                cx=0 mm, cy=0 mm) -> drawing {
+    n = len(text)
+    step = spacing * size / radius * 1 rad
+    for i in range(n) {
+        if text[i] != " " {
+            a = angle + ((n - 1) / 2 - i) * step
+            ch = Text(text[i], position=(cx + radius * cos(a), cy + radius * sin(a)), size=size,
+                      anchor="middle", rotation=a - 90 deg)
+            Fixed(ch.position)
+        }
+    }
+}
