@@ -92,6 +92,9 @@ def test_W0401_is_what_removing_the_constraint_does_to_the_rank(name, src):
     c = compile_source(src, name if name.endswith(".aidl") else f"{name}.aidl")
     assert c.ok, [d.message for d in c.sink.items]
     solver = c.solve.solver
+    if int(solver.free.sum()) > 1000:
+        # one dense SVD per constraint: gear_pair's 6,658 unknowns would take hours
+        pytest.skip("too large for the brute-force rank (the bounded search is what runs)")
     found = {id(r.constraint): r for r in D.redundancies(solver)}
     for k, (con, gain, beyond) in _brute(solver).items():
         r = found.get(k)
