@@ -27,6 +27,7 @@ from lsprotocol import types as T
 from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
+from pygls.protocol.language_server import lsp_method
 
 from . import analysis, edits, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
@@ -43,7 +44,15 @@ class RequestFailed(JsonRpcException):
 
 
 class Protocol(LanguageServerProtocol):
-    """pygls' protocol, plus an error response for a request whose params do not structure."""
+    """pygls' protocol, plus an error response for a request whose params do not structure,
+    and positions always in UTF-16 (what :mod:`.analysis` counts; pygls would otherwise pick
+    the client's first preference, e.g. Neovim's UTF-8)."""
+
+    @lsp_method(T.INITIALIZE)
+    def lsp_initialize(self, params: T.InitializeParams):
+        if params.capabilities.general is not None:
+            params.capabilities.general.position_encodings = None
+        return (yield from super().lsp_initialize(params))
 
     def structure_message(self, data):
         try:
@@ -346,14 +355,19 @@ def rename(ls: LanguageServer, params: T.RenameParams):
         raise RequestFailed(str(e)) from None
 
 
-def main(worker=None) -> int:
-    """Serve over stdin/stdout until the client exits. ``worker``: a diagnostics worker process
-    started before this module was imported (:func:`.worker.spawn`), so it warms up meanwhile."""
+def main(worker=None, stdin=None, stdout=None, published: dict | None = None) -> int:
+    """Serve over stdin/stdout (or the streams given: :mod:`.boot` passes its own) until the
+    client exits. ``worker``: a diagnostics worker process started before this module was
+    imported (:func:`.worker.spawn`), so it warms up meanwhile. ``published``: uri -> the
+    diagnostics (LSP dicts) already published for it (by :mod:`.boot`), for quick fixes."""
     global _analyzer
     logging.basicConfig(level=logging.WARNING)
     _analyzer = Analyzer(worker)
+    conv = converters.get_converter()
+    for uri, diags in list((published or {}).items()):
+        _published.setdefault(uri, conv.structure(diags, list[T.Diagnostic]))
     try:
-        server.start_io()
+        server.start_io(stdin, stdout)
     finally:
         _analyzer.close()
     return 0

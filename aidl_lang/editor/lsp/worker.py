@@ -5,8 +5,9 @@ The language server answers hover, completion and the rest on its event loop; th
 (parse, check, interpret, solve) can take long on an expensive program, and a Python thread
 cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.worker``, one
 JSON request per line on its stdin (``{"id", "text", "path", "uri", "solve"}``) and one JSON
-answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}}``, LSP
-diagnostics and, when the document solves, its solved values for hover).
+answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}, "facts": {...}}``,
+LSP diagnostics (:mod:`.plain`, no lsprotocol import) and, when the document solves, its
+solved values for hover and :func:`.hints.solved_facts` for inlay hints and code lenses).
 
 :class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
 job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
@@ -30,9 +31,7 @@ def _serve() -> int:
     """The worker's loop: read a job per line, answer per line, until stdin closes."""
     import os
 
-    from lsprotocol import converters
-
-    from .analysis import diagnostics
+    from .analysis import diagnostics_json
     parent = os.getppid()
 
     def watch():                      # end with the server, even in the middle of a job
@@ -41,16 +40,17 @@ def _serve() -> int:
             if os.getppid() != parent:
                 os._exit(0)
     threading.Thread(target=watch, daemon=True).start()
-    conv = converters.get_converter()
     out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
-    diagnostics("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl")
+    diagnostics_json("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl",
+                     values={}, extra={})
     for line in sys.stdin:
         try:
             job = json.loads(line)
             values: dict[str, str] = {}
-            diags = diagnostics(job["text"], job["path"], job.get("solve", True), job.get("uri"),
-                                values)
-            answer = {"id": job["id"], "diagnostics": conv.unstructure(diags), "values": values}
+            extra: dict = {}
+            diags = diagnostics_json(job["text"], job["path"], job.get("solve", True),
+                                     job.get("uri"), values, extra)
+            answer = {"id": job["id"], "diagnostics": diags, "values": values, "facts": extra}
         except Exception as e:        # answered, never a dead worker
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
                       "error": f"{type(e).__name__}: {e}"}
@@ -93,6 +93,7 @@ class Analyzer:
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
         self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
+        self.facts: dict[str, dict] = {}              # uri -> its last analysis' hints.solved_facts
 
     def start(self) -> None:
         """Adopt the worker started early (:func:`spawn`) or start one."""
@@ -166,13 +167,14 @@ class Analyzer:
             await self._settle()
             self.start()
             if self.proc is None:                        # no subprocess here: a thread
-                from lsprotocol import converters
-
-                from .analysis import diagnostics
+                from .analysis import diagnostics_json
                 values: dict[str, str] = {}
-                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri, values)
+                extra: dict = {}
+                d = await loop.run_in_executor(None, diagnostics_json, text, path, solve, uri,
+                                               values, extra)
                 self.values[uri] = values
-                return converters.get_converter().unstructure(d)
+                self.facts[uri] = extra
+                return d
             self.seq += 1
             job = self.seq
             fut = loop.create_future()
@@ -202,6 +204,7 @@ class Analyzer:
         if "error" in answer:
             raise RuntimeError(answer["error"])
         self.values[uri] = answer.get("values") or {}
+        self.facts[uri] = answer.get("facts") or {}
         return answer["diagnostics"]
 
 

@@ -1,0 +1,284 @@
+"""The first half-second of ``aidl lsp``: answer ``initialize`` and publish the first
+diagnostics before pygls is loaded, then hand the connection to the pygls server.
+
+Importing pygls and lsprotocol costs about 0.45 s (``lsprotocol.types`` alone ~0.4 s: hundreds
+of attrs classes), four times ``import numpy``; the parser and checker cost 0.07 s.  So
+``aidl lsp`` starts here, with the standard library only:
+
+1. a reader thread reads the client's messages (``Content-Length`` framing) from stdin;
+2. ``initialize`` is answered at once with the server's capabilities
+   (:data:`._capabilities.CAPABILITIES`, generated from the pygls server by
+   ``python editors/gen_lsp_capabilities.py``; a test keeps them equal);
+3. the first ``textDocument/didOpen`` gets its parse-and-check diagnostics
+   (:func:`.plain.quick_diagnostics`) published at once; the full diagnostics (interpretation
+   and solve, from the worker process started beside this one) follow for the same version,
+   as after any change;
+4. then :mod:`.server` is imported and pygls serves the connection: every message read so far
+   is replayed to it in order, ``initialize`` included (pygls builds its workspace from it; its
+   answer, a copy of the one sent, is dropped), then the rest of stdin.
+
+Only the standard library and :mod:`.plain` are imported before step 4.
+"""
+from __future__ import annotations
+
+import json
+import sys
+import threading
+
+#: seconds after start to wait for the first ``didOpen`` before loading pygls anyway
+IDLE = 1.0
+
+
+class Feed:
+    """A blocking byte stream (``readline``, ``read``) fed by another thread: what pygls
+    reads instead of stdin."""
+
+    def __init__(self) -> None:
+        self._buf = bytearray()
+        self._eof = False
+        self._cv = threading.Condition()
+
+    def put(self, data: bytes) -> None:
+        with self._cv:
+            self._buf += data
+            self._cv.notify_all()
+
+    def close(self) -> None:
+        with self._cv:
+            self._eof = True
+            self._cv.notify_all()
+
+    def readline(self) -> bytes:
+        with self._cv:
+            while True:
+                i = self._buf.find(b"\n")
+                if i >= 0 or self._eof:
+                    n = i + 1 if i >= 0 else len(self._buf)
+                    out = bytes(self._buf[:n])
+                    del self._buf[:n]
+                    return out
+                self._cv.wait()
+
+    def read(self, n: int = -1) -> bytes:
+        with self._cv:
+            while len(self._buf) < n and not self._eof:
+                self._cv.wait()
+            n = len(self._buf) if n < 0 else min(n, len(self._buf))
+            out = bytes(self._buf[:n])
+            del self._buf[:n]
+            return out
+
+
+class Writer:
+    """stdout for both halves: whole messages under a lock; drops the pygls answer to an
+    ``initialize`` already answered here."""
+
+    def __init__(self, out) -> None:
+        self.out = out
+        self.lock = threading.Lock()
+        self.drop_id = None
+
+    def send(self, msg: dict) -> None:
+        body = json.dumps(msg).encode()
+        self.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+
+    def write(self, data: bytes) -> None:
+        if self.drop_id is not None and b'"id"' in data:
+            body = data[data.find(b"\r\n\r\n") + 4:]
+            try:
+                msg = json.loads(body)
+            except ValueError:
+                msg = None
+            if isinstance(msg, dict) and "method" not in msg and msg.get("id") == self.drop_id:
+                self.drop_id = None
+                return
+        with self.lock:
+            self.out.write(data)
+            self.out.flush()
+
+    def flush(self) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+def read_message(stream) -> bytes | None:
+    """One message body (bytes) of the base protocol, or None at the end of the stream."""
+    length = None
+    while True:
+        line = stream.readline()
+        if not line:
+            return None
+        line = line.strip()
+        if not line:
+            if length is not None:
+                break
+            continue
+        name, _, value = line.partition(b":")
+        if name.strip().lower() == b"content-length":
+            try:
+                length = int(value)
+            except ValueError:
+                length = None
+    body = stream.read(length)
+    return body if len(body) == length else None
+
+
+def initialize_result(params) -> dict:
+    """The ``initialize`` answer pygls would give (see :mod:`._capabilities`)."""
+    from ._capabilities import CAPABILITIES, SERVER_INFO
+    caps = json.loads(json.dumps(CAPABILITIES))
+    prepare = False
+    try:
+        prepare = bool(params["capabilities"]["textDocument"]["rename"]["prepareSupport"])
+    except (KeyError, TypeError):
+        pass
+    if "renameProvider" in caps and not prepare:
+        caps["renameProvider"] = True          # RenameOptions only for a client that prepares
+    try:
+        sync = params["capabilities"]["textDocument"]["synchronization"]
+    except (KeyError, TypeError):
+        sync = None
+    if isinstance(sync, dict) and isinstance(caps.get("textDocumentSync"), dict):
+        for key in ("willSave", "willSaveWaitUntil"):     # pygls: the client's and ours (no)
+            if sync.get(key) is not None:
+                caps["textDocumentSync"][key] = False
+    return {"capabilities": caps, "serverInfo": dict(SERVER_INFO)}
+
+
+class Boot:
+    """The reader thread's state (see the module doc)."""
+
+    def __init__(self, stdin, writer: Writer, feed: Feed) -> None:
+        self.stdin = stdin
+        self.writer = writer
+        self.feed = feed
+        self.go = threading.Event()           # load pygls now
+        self.quick_done = False
+        self.published: dict[str, list[dict]] = {}
+
+    def run(self) -> None:
+        try:
+            while True:
+                body = read_message(self.stdin)
+                if body is None:
+                    break
+                if not self.go.is_set():
+                    self._see(body)
+                self.feed.put(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        finally:
+            self.feed.close()
+            self.go.set()
+
+    def _see(self, body: bytes) -> None:
+        try:
+            msg = json.loads(body)
+        except ValueError:
+            self.go.set()
+            return
+        if not isinstance(msg, dict):
+            self.go.set()
+            return
+        method = msg.get("method")
+        if method == "initialize" and "id" in msg:
+            try:
+                result = initialize_result(msg.get("params") or {})
+            except Exception:                 # let pygls answer it
+                self.go.set()
+                return
+            self.writer.send({"jsonrpc": "2.0", "id": msg["id"], "result": result})
+            self.writer.drop_id = msg["id"]          # pygls' copy of this answer
+        elif method == "initialized":
+            pass
+        elif method == "textDocument/didOpen" and not self.quick_done:
+            self.quick_done = True
+            try:
+                self._quick(msg["params"]["textDocument"])
+            except Exception:                 # the full analysis will say it
+                pass
+            self.go.set()
+        else:
+            self.go.set()                     # anything else is pygls' to answer
+
+    def _quick(self, doc: dict) -> None:
+        from .plain import quick_diagnostics
+        uri, text = doc["uri"], doc["text"]
+        path = _path(uri)
+        diags = quick_diagnostics(text, path, uri)
+        if diags is None:
+            return
+        self.published[uri] = diags
+        self.writer.send({"jsonrpc": "2.0", "method": "textDocument/publishDiagnostics",
+                          "params": {"uri": uri, "version": doc.get("version"),
+                                     "diagnostics": diags}})
+
+
+def _path(uri: str) -> str:
+    """The file path of a ``file:`` URI as pygls gives it (``Document.path``), else
+    ``untitled.aidl``."""
+    from urllib.parse import unquote, urlparse
+    u = urlparse(uri)
+    if u.scheme != "file":
+        return "untitled.aidl"
+    p = unquote(u.path)
+    if sys.platform == "win32" and len(p) > 2 and p[0] == "/" and p[2] == ":":
+        p = p[1:]
+    return p or "untitled.aidl"
+
+
+def main(worker=None, stdin=None, stdout=None) -> int:
+    """Serve over stdin/stdout (see the module doc). ``worker``: a diagnostics worker process
+    already started (:func:`.worker.spawn`)."""
+    stdin = stdin or sys.stdin.buffer
+    writer = Writer(stdout or sys.stdout.buffer)
+    feed = Feed()
+    boot = Boot(stdin, writer, feed)
+    threading.Thread(target=boot.run, name="aidl-lsp-boot", daemon=True).start()
+    try:                                      # while the client answers: the parser, checker
+        from . import plain                   # noqa: F401
+        from ... import parser, typecheck     # noqa: F401
+    except Exception:
+        pass
+    boot.go.wait(IDLE)
+    boot.go.set()
+    from .server import main as serve
+    code = serve(worker, stdin=feed, stdout=writer, published=boot.published)
+    # the reader thread is blocked reading stdin: end here rather than in an interpreter
+    # shutdown that would wait for it
+    sys.stdout.flush()
+    sys.stderr.flush()
+    import os
+    os._exit(code)
+
+
+def pygls_initialize_result(client_capabilities: dict | None = None) -> dict:
+    """The ``initialize`` answer the pygls server (:mod:`.server`) computes from its registered
+    features for a client with ``client_capabilities`` (JSON), as JSON: what
+    :func:`initialize_result` must equal (imports pygls; for the generator and the tests)."""
+    from lsprotocol import types as T
+    from pygls.capabilities import ServerCapabilitiesBuilder
+
+    from .server import server
+    proto = server.protocol
+    conv = proto._converter
+    caps = conv.structure(client_capabilities or {}, T.ClientCapabilities)
+    fm = proto.fm
+    built = ServerCapabilitiesBuilder(
+        caps, set({**fm.features, **fm.builtin_features}.keys()), fm.feature_options,
+        list(fm.commands.keys()), server._text_document_sync_kind,
+        server._notebook_document_sync, T.PositionEncodingKind.Utf16).build()
+    result = T.InitializeResult(capabilities=built, server_info=proto.server_info)
+    return json.loads(json.dumps(conv.unstructure(result)))
+
+
+def capabilities_module() -> str:
+    """The text of :mod:`._capabilities` (for ``editors/gen_lsp_capabilities.py``)."""
+    import pprint
+    full = pygls_initialize_result({"textDocument": {"rename": {"prepareSupport": True}}})
+    return ('"""The ``initialize`` answer of ``aidl lsp`` (capabilities and server info), generated\n'
+            'from the pygls server by ``python editors/gen_lsp_capabilities.py``: do not edit.\n'
+            ':mod:`.boot` sends it before pygls is loaded; tests/test_lsp_features.py keeps it\n'
+            'equal to what pygls computes."""\n\n'
+            f"CAPABILITIES = {pprint.pformat(full['capabilities'], width=96, sort_dicts=True)}\n\n"
+            f"SERVER_INFO = {pprint.pformat(full['serverInfo'], width=96)}\n")
