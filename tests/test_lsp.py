@@ -49,6 +49,9 @@ def pos(src: str, needle: str, k: int = 0, nth: int = 0) -> tuple[int, int]:
 @pytest_lsp.fixture(config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
+    # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
+    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
+    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
     await lsp_client.initialize_session(T.InitializeParams(
         capabilities=pytest_lsp.client_capabilities("visual-studio-code")))
     yield

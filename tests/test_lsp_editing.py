@@ -52,6 +52,9 @@ def apply(src: str, edits: list[T.TextEdit]) -> str:
 @pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio", "--clientProcessId=1"]))
 async def client(lsp_client: LanguageClient):
+    # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
+    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
+    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
     await lsp_client.initialize_session(T.InitializeParams(
         capabilities=pytest_lsp.client_capabilities("visual-studio-code"),
         initialization_options={"debounce": 0}))

@@ -4,12 +4,17 @@ from the pygls server by ``python editors/gen_lsp_capabilities.py``: do not edit
 equal to what pygls computes."""
 
 CAPABILITIES = {'codeActionProvider': {'codeActionKinds': ['quickfix']},
+ 'codeLensProvider': {'resolveProvider': False},
  'completionProvider': {'triggerCharacters': ['.']},
  'definitionProvider': True,
  'documentFormattingProvider': True,
+ 'documentHighlightProvider': True,
+ 'documentLinkProvider': {'resolveProvider': False},
  'documentSymbolProvider': True,
  'executeCommandProvider': {'commands': []},
+ 'foldingRangeProvider': True,
  'hoverProvider': True,
+ 'inlayHintProvider': {'resolveProvider': False},
  'positionEncoding': 'utf-16',
  'referencesProvider': True,
  'renameProvider': {'prepareProvider': True},
@@ -33,6 +38,7 @@ CAPABILITIES = {'codeActionProvider': {'codeActionKinds': ['quickfix']},
  'signatureHelpProvider': {'retriggerCharacters': ['='], 'triggerCharacters': ['(', ',']},
  'textDocumentSync': {'change': 2, 'openClose': True, 'save': True},
  'workspace': {'fileOperations': {},
-               'workspaceFolders': {'changeNotifications': True, 'supported': True}}}
+               'workspaceFolders': {'changeNotifications': True, 'supported': True}},
+ 'workspaceSymbolProvider': {'resolveProvider': False}}
 
 SERVER_INFO = {'name': 'aidl', 'version': '0.2.0'}

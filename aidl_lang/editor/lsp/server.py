@@ -29,7 +29,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
 
-from . import analysis, edits, semantic, signature, window
+from . import analysis, edits, features, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
 
 DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
@@ -157,6 +157,7 @@ async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
     _published[uri] = diags
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=uri, diagnostics=diags, version=version))
+    features.refresh(ls)          # inlay hints and code lenses come with the analysis
 
 
 def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
@@ -186,6 +187,7 @@ def initialize(ls: LanguageServer, params: T.InitializeParams):
     opts = params.initialization_options
     if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
         _settings["debounce"] = max(0.0, float(opts["debounce"]))
+    features.configure(opts)
 
 
 @server.feature(T.SHUTDOWN)
@@ -204,6 +206,7 @@ def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
 @server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
 @_safe()
 def did_change(ls: LanguageServer, params: T.DidChangeTextDocumentParams):
+    _get_analyzer().editing = True         # a warm spare worker is worth its start from now on
     _schedule(ls, params.text_document.uri, _settings["debounce"])
 
 
@@ -353,6 +356,11 @@ def rename(ls: LanguageServer, params: T.RenameParams):
                             params.new_name, params.text_document.uri, path, opened)
     except edits.RenameError as e:
         raise RequestFailed(str(e)) from None
+
+
+features.register(server, _safe, _doc,
+                  lambda uri: _analyzer.facts.get(uri) if _analyzer is not None else None,
+                  RequestFailed)
 
 
 def main(worker=None, stdin=None, stdout=None, published: dict | None = None) -> int:

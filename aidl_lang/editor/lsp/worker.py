@@ -12,7 +12,8 @@ solved values for hover and :func:`.hints.solved_facts` for inlay hints and code
 :class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
 job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
 for :data:`Analyzer.GRACE` seconds the worker is killed and a warm spare takes over (the spare
-is started once the first diagnostics are out; a new worker needs about a second of imports),
+is started after the first answer once a document has been changed, so a session that only
+reads files runs one worker; a new worker needs about half a second of imports),
 else its answer is read and dropped. A job that runs past
 :data:`Analyzer.TIMEOUT` seconds is killed and reported as one diagnostic. If no worker can be
 started, the analysis runs in a thread of the server instead (no preemption, same answers).
@@ -90,6 +91,7 @@ class Analyzer:
         self.waiting: dict[int, tuple[subprocess.Popen, asyncio.Future]] = {}
         self.inflight: tuple[int, float, asyncio.Future] | None = None   # id, start, answer
         self.restarts = 0
+        self.editing = False                 # set by the server on the first change
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
         self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
@@ -199,8 +201,8 @@ class Analyzer:
                 self.kill()
                 raise EOFError("the analysis worker exited") from None
             self.inflight = None
-            if self._proc0 is None and self.SPARE:
-                self._proc0 = spawn()        # a warm spare, started once the first answer is in
+            if self._proc0 is None and self.SPARE and self.editing:
+                self._proc0 = spawn()        # a warm spare, once the document is being edited
         if "error" in answer:
             raise RuntimeError(answer["error"])
         self.values[uri] = answer.get("values") or {}
