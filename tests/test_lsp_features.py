@@ -356,3 +356,20 @@ async def test_server_folding_highlight_links_symbols_explain(client: LanguageCl
 async def test_server_positions_are_utf16_even_for_a_utf8_client(client: LanguageClient):
     """Neovim 0.11 offers UTF-8 first; the server answers UTF-16, the unit it counts in."""
     assert client.init_result.capabilities.position_encoding == T.PositionEncodingKind.Utf16
+
+
+def test_param_hints_in_file_units_and_instance_lenses():
+    import aidl_lang
+    src = ("units cm\nparam w = 40 mm\nparam r = w / 4\nparam k = 2\n"
+           "def peg(rad) -> solid {\n    c = Circle(center=(0, 0), radius=rad)\n}\n"
+           "solid board {\n    a = peg(r)\n    Fixed(a.c)\n}\n")
+    r = aidl_lang.compile(source=src, path="p.aidl")
+    facts = hints.solved_facts(r)
+    prog = parse(src, "p.aidl", DiagnosticSink())
+    got = {h["position"]["line"]: h["label"] for h in hints.inlay_hints(src, prog, facts)}
+    assert got[1] == "= 4 cm" and got[2] == "= 1 cm"
+    assert 3 not in got                         # `param k = 2` says it already
+    lenses = {L["range"]["start"]["line"]: L["command"]["title"]
+              for L in hints.code_lenses(src, prog, facts)}
+    assert lenses[8] == facts["structures"]["board.a"]      # the template instance `a = peg(r)`
+    assert lenses[7] == facts["structures"]["board"]

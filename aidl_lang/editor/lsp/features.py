@@ -119,7 +119,8 @@ def register(server, safe, doc, facts, failed) -> None:
         d, path = doc(ls, params.text_document.uri)
         if len(d.source) > window.LARGE:
             return []
-        return navigate.document_links(d.source, path)
+        caps = getattr(getattr(ls.client_capabilities, "text_document", None), "document_link", None)
+        return navigate.document_links(d.source, path, bool(getattr(caps, "tooltip_support", False)))
 
     @server.feature(T.WORKSPACE_SYMBOL)
     @safe([])

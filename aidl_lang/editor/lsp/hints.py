@@ -7,9 +7,11 @@ computed once per analysis, with the diagnostics); the server places them in the
 without another solve.  Both come from :mod:`aidl_lang.api` (``Result.values`` as
 ``aidl check --values`` prints them, ``Result.freedom`` as ``aidl check --dof``).
 
-* inlay hint after ``c = Circle(...)``: ``r=5 @ (10, 0)`` (file units; a rectangle
-  ``40 × 20 @ (0, 0)``, a line ``(0, 0) → (10, 0)``, a point ``@ (3, 4)``), and after
-  a structure's name its frame origin when it is not ``(0, 0)``;
+* inlay hint after ``c = Circle(...)``: ``r=5 mm @ (10, 0)`` (file units; a rectangle
+  ``40 × 20 mm @ (0, 0)``, a line ``(0, 0) → (10, 0), L=10 mm``, a point ``@ (3, 4)``; a name
+  made in a loop shows its first copy and the number of others), after a structure's name its
+  frame origin when it is not ``(0, 0)``, after a param its value (``= 10 mm``) unless the
+  param is that literal already;
 * code lens on each structure: ``fully constrained`` or ``3 DOF: body, bore (position)`` (the
   entities the degrees-of-freedom analysis finds still free, named relative to the
   structure), ``DOF not counted (too large)``.
@@ -79,7 +81,31 @@ def solved_facts(result) -> dict:
         if text:
             geometry[g] = text
     return {"geometry": geometry, "origins": origins, "structures": _freedom(result),
-            "unit": unit}
+            "params": _params(result), "unit": unit}
+
+
+def _params(result) -> dict[str, str]:
+    """name -> value text of the main file's params, lengths in the file's unit, angles in
+    degrees (``--set`` overrides included)."""
+    import math as _m
+    out = {}
+    for name, v in (getattr(result.compiled, "params", None) or {}).items():
+        if isinstance(v, bool):
+            out[name] = "true" if v else "false"
+        elif isinstance(v, str):
+            out[name] = repr(v)
+        else:
+            c = v.const() if hasattr(v, "const") else None
+            dim = getattr(v, "dim", None)
+            if c is None:
+                continue
+            if dim == (1, 0):
+                out[name] = f"{_num(c / result.unit_scale)} {result.units}"
+            elif dim == (0, 1):
+                out[name] = f"{_num(_m.degrees(c))} deg"
+            elif dim == (0, 0):
+                out[name] = _num(c)
+    return out
 
 
 def _freedom(result) -> dict[str, str]:
@@ -133,8 +159,8 @@ def _walk(stmts, prefix: str, out: list, in_struct: bool) -> None:
 
 
 def placed(program: A.Program) -> list[tuple[str, str, object]]:
-    """Every structure and named assignment of ``program`` with its value path."""
-    out: list = []
+    """Every param, structure and named assignment of ``program`` with its value path."""
+    out: list = [("param", st.name, st) for st in program.stmts if isinstance(st, A.ParamDecl)]
     _walk([s for s in program.stmts if not isinstance(s, (A.Def, A.ParamDecl))], "", out, False)
     return out
 
@@ -158,8 +184,16 @@ def inlay_hints(src: str, program: A.Program, facts: dict, first_line: int = 0,
     lines = src.split("\n")
     out = []
     geometry, origins = facts.get("geometry") or {}, facts.get("origins") or {}
+    params = facts.get("params") or {}
     for kind, path, node in placed(program):
-        if kind == "geometry":
+        if kind == "param":
+            text = params.get(path)
+            sp = node.value.span
+            if text is None or src[sp.start:sp.end].replace(" ", "") == text.replace(" ", ""):
+                continue                      # a literal that says it already
+            text = f"= {text}"
+            line, col = sp.end_line - 1, sp.end_col - 1
+        elif kind == "geometry":
             text = _lookup(geometry, path)
             sp = node.span
             line, col = sp.end_line - 1, sp.end_col - 1
@@ -176,16 +210,16 @@ def inlay_hints(src: str, program: A.Program, facts: dict, first_line: int = 0,
 
 
 def code_lenses(src: str, program: A.Program, facts: dict) -> list[dict]:
-    """LSP ``CodeLens`` dicts, one per structure with a known degrees-of-freedom text, on its
-    name; its command is empty (``""``), so clients show the title and do nothing on a click."""
+    """LSP ``CodeLens`` dicts, one per structure (a ``solid``/``hole``/... block or a
+    template instance ``b = f(...)``) with a known degrees-of-freedom text, on its name; its command is empty (``""``), so clients show the title and do nothing on a click."""
     from .plain import span_range
     structures = facts.get("structures") or {}
     out = []
     for kind, path, node in placed(program):
-        if kind != "structure":
+        if kind == "param":
             continue
-        text = structures.get(path)
-        if text is None and "." not in path and len(structures) == 1:
+        text = structures.get(path)            # a structure, or a template instance `b = f()`
+        if text is None and kind == "structure" and "." not in path and len(structures) == 1:
             text = next(iter(structures.values()))          # the whole-model count
         if text is None:
             continue

@@ -126,8 +126,9 @@ def _bare(src: str) -> str:
                   blank, src, flags=re.DOTALL)
 
 
-def document_links(src: str, path: str) -> list[T.DocumentLink]:
-    """See the module doc."""
+def document_links(src: str, path: str, tooltips: bool = False) -> list[T.DocumentLink]:
+    """See the module doc; ``tooltips``: give each link the target's path as its tooltip (for
+    clients that declare ``tooltipSupport``)."""
     from ... import ast as A
     from ...sources import ImportRefused, resolve_import
     prog = parse_tolerant(src, path)
@@ -146,7 +147,7 @@ def document_links(src: str, path: str) -> list[T.DocumentLink]:
             rng = T.Range(start=T.Position(line=rng.start.line, character=rng.start.character + 1),
                           end=T.Position(line=rng.end.line, character=rng.end.character - 1))
         out.append(T.DocumentLink(range=rng, target=Path(target).resolve().as_uri(),
-                                  tooltip=str(target)))
+                                  tooltip=str(target) if tooltips else None))
     return out
 
 
