@@ -84,7 +84,8 @@ src = sys.stdin.buffer.read()
 out = io.BytesIO()
 b = boot.Boot(io.BytesIO(src), boot.Writer(out), boot.Feed())
 b.run()
-heavy = [m for m in ("pygls", "lsprotocol", "numpy", "scipy") if m in sys.modules]
+heavy = [m for m in ("pygls.lsp", "pygls.protocol", "lsprotocol", "cattrs", "numpy", "scipy")
+         if m in sys.modules]
 sys.stdout.write(json.dumps({"out": out.getvalue().decode(), "heavy": heavy,
                              "replay": b.feed.read(-1).decode()}))
 """
@@ -98,6 +99,8 @@ def test_boot_answers_and_publishes_before_loading_pygls(tmp_path):
     broken = PLATE.replace("Circle(", "Circel(")
     msgs = [{"jsonrpc": "2.0", "id": 7, "method": "initialize", "params": {"capabilities": {}}},
             {"jsonrpc": "2.0", "method": "initialized", "params": {}},
+            {"jsonrpc": "2.0", "method": "workspace/didChangeConfiguration",
+             "params": {"settings": {"aidl": {}}}},          # as VS Code sends it, before opening
             {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {
                 "uri": uri, "languageId": "aidl-cad", "version": 3, "text": broken}}}]
     data = b"".join(_frame(m) for m in msgs)
@@ -115,7 +118,7 @@ def test_boot_answers_and_publishes_before_loading_pygls(tmp_path):
                                                    "end": {"line": 7, "character": 18}}
     assert d["data"]["fixes"][0]["newText"] == "Circle"
     assert [m.get("method") for m in _messages(got["replay"].encode())] == \
-        ["initialize", "initialized", "textDocument/didOpen"]
+        ["initialize", "initialized", "workspace/didChangeConfiguration", "textDocument/didOpen"]
 
 
 def test_quick_diagnostics_equal_the_pipeline_when_they_hold_an_error():

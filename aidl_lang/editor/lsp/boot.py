@@ -17,7 +17,8 @@ of attrs classes), four times ``import numpy``; the parser and checker cost 0.07
    is replayed to it in order, ``initialize`` included (pygls builds its workspace from it; its
    answer, a copy of the one sent, is dropped), then the rest of stdin.
 
-Only the standard library and :mod:`.plain` are imported before step 4.
+Only the standard library, :mod:`pygls.uris` (plain Python) and :mod:`.plain` with the parser
+and checker are imported before step 4.
 """
 from __future__ import annotations
 
@@ -189,8 +190,6 @@ class Boot:
                 return
             self.writer.send({"jsonrpc": "2.0", "id": msg["id"], "result": result})
             self.writer.drop_id = msg["id"]          # pygls' copy of this answer
-        elif method == "initialized":
-            pass
         elif method == "textDocument/didOpen" and not self.quick_done:
             self.quick_done = True
             try:
@@ -198,8 +197,10 @@ class Boot:
             except Exception:                 # the full analysis will say it
                 pass
             self.go.set()
-        else:
-            self.go.set()                     # anything else is pygls' to answer
+        elif "id" in msg:
+            self.go.set()                     # a request: pygls' to answer
+        # other notifications (initialized, didChangeConfiguration, $/setTrace, ...) wait
+        # for pygls in the feed; VS Code sends some between `initialized` and `didOpen`
 
     def _quick(self, doc: dict) -> None:
         from .plain import quick_diagnostics
@@ -215,16 +216,13 @@ class Boot:
 
 
 def _path(uri: str) -> str:
-    """The file path of a ``file:`` URI as pygls gives it (``Document.path``), else
-    ``untitled.aidl``."""
-    from urllib.parse import unquote, urlparse
-    u = urlparse(uri)
-    if u.scheme != "file":
+    """The file path of ``uri`` as pygls gives it (``Document.path``; :mod:`pygls.uris` is
+    plain Python, no lsprotocol), else ``untitled.aidl``."""
+    from pygls.uris import to_fs_path
+    try:
+        return to_fs_path(uri) or "untitled.aidl"
+    except Exception:
         return "untitled.aidl"
-    p = unquote(u.path)
-    if sys.platform == "win32" and len(p) > 2 and p[0] == "/" and p[2] == ":":
-        p = p[1:]
-    return p or "untitled.aidl"
 
 
 def main(worker=None, stdin=None, stdout=None) -> int:
