@@ -322,6 +322,11 @@ async def test_server_inlay_hints_code_lens_and_toggle(client: LanguageClient, t
     titles = {L.range.start.line: L.command.title for L in lenses}
     assert titles[6] == "2 DOF: c"
     assert titles[4].endswith(" DOF: body, bore (position)")
+    line, ch = _pos(PLATE, "plate {")
+    h = await client.text_document_hover_async(T.HoverParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(line=line, character=ch + 2)))
+    assert f"degrees of freedom: **{titles[4]}**" in h.contents.value
+    assert "plate.origin = (0.000, 0.000) mm" in h.contents.value       # and its solved values
     client.workspace_did_change_configuration(T.DidChangeConfigurationParams(
         settings={"aidl": {"inlayHints": {"enabled": False}}}))
     assert not await hints_now()

@@ -24,6 +24,18 @@ from . import hints, navigate, window
 from .analysis import parse_tolerant
 
 settings = {"inlayHints": True, "codeLens": True}
+_programs: dict[str, tuple[int | None, str, object]] = {}    # uri -> (version, text, program)
+
+
+def program_of(uri: str, d, path: str):
+    """The document's syntax tree, parsed once per version (inlay hints are asked for on every
+    scroll)."""
+    hit = _programs.get(uri)
+    if hit is not None and hit[0] == d.version and hit[1] is d.source:
+        return hit[2]
+    prog = parse_tolerant(d.source, path)
+    _programs[uri] = (d.version, d.source, prog)
+    return prog
 
 
 def _flag(opts, key: str):
@@ -80,7 +92,7 @@ def register(server, safe, doc, facts, failed) -> None:
         d, path = doc(ls, params.text_document.uri)
         if len(d.source) > window.LARGE:
             return []
-        prog = parse_tolerant(d.source, path)
+        prog = program_of(params.text_document.uri, d, path)
         out = hints.inlay_hints(d.source, prog, f, params.range.start.line, params.range.end.line)
         return conv.structure(out, list[T.InlayHint])
 
@@ -95,7 +107,7 @@ def register(server, safe, doc, facts, failed) -> None:
         d, path = doc(ls, params.text_document.uri)
         if len(d.source) > window.LARGE:
             return []
-        out = hints.code_lenses(d.source, parse_tolerant(d.source, path), f)
+        out = hints.code_lenses(d.source, program_of(params.text_document.uri, d, path), f)
         return conv.structure(out, list[T.CodeLens])
 
     @server.feature(T.TEXT_DOCUMENT_FOLDING_RANGE)
@@ -153,6 +165,22 @@ def register(server, safe, doc, facts, failed) -> None:
             return explain(code)
         except KeyError as e:
             raise failed(e.args[0]) from None
+
+
+def forget(uri: str) -> None:
+    """Drop what is kept for a closed document."""
+    _programs.pop(uri, None)
+
+
+def dof_hover(uri: str, d, path: str, line: int, character: int, f: dict | None) -> str | None:
+    """Markdown for a hover on a structure's name: its degrees of freedom (the code lens text)."""
+    if not f or len(d.source) > window.LARGE:
+        return None
+    for L in hints.code_lenses(d.source, program_of(uri, d, path), f):
+        r = L["range"]
+        if r["start"]["line"] == line and r["start"]["character"] <= character <= r["end"]["character"]:
+            return f"degrees of freedom: **{L['command']['title']}**"
+    return None
 
 
 def _refresh(ls) -> None:

@@ -223,6 +223,7 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
     if old is not None:
         old.cancel()
     _published.pop(params.text_document.uri, None)
+    features.forget(params.text_document.uri)
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=params.text_document.uri, diagnostics=[]))
 
@@ -234,6 +235,11 @@ def hover(ls: LanguageServer, params: T.HoverParams):
     h = analysis.hover(src, line, ch, path)
     values = _analyzer.values.get(params.text_document.uri) if _analyzer is not None else None
     solved = analysis.value_hover(src, line, ch, values, path) if values else None
+    dof = features.dof_hover(params.text_document.uri, _doc(ls, params.text_document.uri)[0], path,
+                             line, ch, _analyzer.facts.get(params.text_document.uri)
+                             if _analyzer is not None else None)
+    if dof is not None:
+        solved = dof if solved is None else f"{solved}\n\n{dof}"
     if solved is None:
         return h
     if h is None:
