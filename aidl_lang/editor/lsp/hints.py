@@ -14,7 +14,8 @@ without another solve.  Both come from :mod:`aidl_lang.api` (``Result.values`` a
   param is that literal already;
 * code lens on each structure: ``fully constrained`` or ``3 DOF: body, bore (position)`` (the
   entities the degrees-of-freedom analysis finds still free, named relative to the
-  structure), ``DOF not counted (too large)``.
+  structure; counted without names when a structure has over :data:`MAX_NAMED_UNKNOWNS`
+  unknowns), ``DOF not counted (too large)``.
 """
 from __future__ import annotations
 
@@ -22,7 +23,7 @@ import math
 
 from ... import ast as A
 
-MAX_FLOATING_UNKNOWNS = 3000      # above this many unknowns, count DOF without naming (no SVD)
+MAX_NAMED_UNKNOWNS = 300         # structures up to this many unknowns get their floating names
 MAX_NAMED = 4                     # floating entities named in a lens
 
 
@@ -109,9 +110,13 @@ def _params(result) -> dict[str, str]:
 
 
 def _freedom(result) -> dict[str, str]:
+    """structure path -> its degrees-of-freedom text.  The count per structure is cheap (ranks,
+    as ``aidl check`` counts them); naming what floats needs a null space per structure, so it
+    is done (``Result.freedom(detail=True)``, as ``aidl check --dof``) only when no structure
+    has more than :data:`MAX_NAMED_UNKNOWNS` unknowns (~0.1 s at that size)."""
+    from ...solver.diagnose import degrees_of_freedom
     model = result.compiled.model
-    detail = len(model.x) <= MAX_FLOATING_UNKNOWNS if hasattr(model, "x") else False
-    doc = result.freedom(detail=detail)
+    counts = degrees_of_freedom(result.compiled.solve.solver, floating=False)
     root = model.root
     implicit = root.name == "model" and root.span is not None and root.span.start == 0
 
@@ -119,24 +124,23 @@ def _freedom(result) -> dict[str, str]:
         if implicit and (path == "model" or path.startswith("model.")):
             return path[len("model"):].lstrip(".")
         return path
+    named = {}
+    if counts and max(d.unknowns for d in counts) <= MAX_NAMED_UNKNOWNS:
+        named = {s["structure"]: s["floating"] for s in result.freedom(detail=True)["structures"]}
     out: dict[str, str] = {}
-    if not detail:
-        out[rel(root.path)] = f"{doc['text'].replace(', see --dof', '')} (whole model)"
-        return out
-    for s in doc["structures"]:
-        path = rel(s["structure"])
-        dof = s["dof"]
-        if s["unknowns"] and dof < 0 and not s["floating"]:
-            out[path] = "DOF not counted (too large)"
+    for d in counts:
+        path = d.structure.path
+        if d.rank < 0:
+            out[rel(path)] = "DOF not counted (too large)"
             continue
-        dof = max(0, dof)
+        dof = max(0, d.dof)
         if dof == 0:
-            out[path] = "fully constrained"
+            out[rel(path)] = "fully constrained"
             continue
-        prefix = s["structure"] + "."
-        names = [f[len(prefix):] if f.startswith(prefix) else f for f in s["floating"]]
+        prefix = path + "."
+        names = [f[len(prefix):] if f.startswith(prefix) else f for f in named.get(path, [])]
         more = f", +{len(names) - MAX_NAMED}" if len(names) > MAX_NAMED else ""
-        out[path] = f"{dof} DOF" + (f": {', '.join(names[:MAX_NAMED])}{more}" if names else "")
+        out[rel(path)] = f"{dof} DOF" + (f": {', '.join(names[:MAX_NAMED])}{more}" if names else "")
     return out
 
 
