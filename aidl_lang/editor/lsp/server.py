@@ -1,8 +1,11 @@
 """``aidl lsp``: the language server (pygls, JSON-RPC over stdin/stdout).
 
 Thin handlers over :mod:`.analysis` (hover, completion, definition, references, outline,
-formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help) and
-:mod:`.edits` (quick fixes, rename). Documents sync incrementally.
+formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help),
+:mod:`.edits` (quick fixes, rename) and :mod:`.features` (inlay hints, code lenses, folding,
+highlight, links, workspace symbols, ``aidl/explain``). Documents sync incrementally.
+``aidl lsp`` starts in :mod:`.boot`, which answers ``initialize`` and publishes the first
+diagnostics before this module (pygls) is imported, then calls :func:`main`.
 
 Diagnostics are computed by a worker process (:mod:`.worker`) so that a newer version of a
 document stops a stale analysis: they are published when a document is opened or saved, and
