@@ -218,6 +218,17 @@ solver never moves geometry to satisfy it. Change the values or constraints so t
         assert body.width <= 300 mm, "fits the laser bed"   # 400 mm <= 300 mm is false
     }
 """),
+    "E0406": ("offset leaves nothing", """
+An `Offset` (or `Inset`) with a negative distance, or a `Shell` with a negative thickness,
+removes a band that wide along the whole outline of its shape; when the shape is nowhere
+wider than twice that, nothing is left. The shape's size is only known after the solve, so
+this is found then; the error points at the call. Use a smaller inset.
+
+    solid s {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        inner = Offset(body, -12)     # 20 mm high: an inset of at most 10 mm leaves something
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the

@@ -169,8 +169,8 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
                 shape_checks: bool = True, deadline: Deadline | None = None) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
-    preview: the extent check (E0305), branch flips (W0403), the booleans and the geometry
-    checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
+    preview: the extent check (E0305), branch flips (W0403), the booleans (an Offset or
+    Shell that leaves nothing: E0406) and the geometry checks on the final shape (W0402, W0501-W0509).  Returns the booleans' :class:`Drawing`,
     or ``None`` when the extent check failed (nothing absurd reaches a writer).
     ``shape_checks=False`` leaves the geometry checks (warnings only) to the caller: the live
     preview runs them (:func:`aidl_lang.output.checks.check_drawing`) after the picture is on
@@ -183,6 +183,8 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no numpy noise
             drawing = render_model(model, deadline)
+        for g, message, hint in drawing.shape_errors:
+            sink.add(Diagnostic("E0406", message, g.span, "error", hint=hint))
         if shape_checks:
             check_drawing(drawing, sink, min_wall, deadline)
     except OutOfBudget as ex:

@@ -99,6 +99,7 @@ STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
                    "radius": "length", "width": "length", "inner_radius": "length",
                    "outer_radius": "length", "bb": "bbox"}
+DERIVED_MEMBERS = {"bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",
                 "center": "point", "center_x": "coordinate", "center_y": "coordinate",
@@ -142,10 +143,13 @@ _DEFS = {
                         "starting guess. By two corners only the rotation is held.",
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
-                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
+                            A("corner_radius", "length", None), A("rotation", "angle", 0.0),
+                            A("corner_radii", "any", None)],
                            [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
-                            A("corner_radius", "length"), A("rotation", "angle", 0.0)],
-                           doc="A rectangle with rounded corners (radius applied when drawn).",
+                            A("corner_radius", "length", None), A("rotation", "angle", 0.0),
+                            A("corner_radii", "any", None)],
+                           doc="A rectangle with rounded corners; corner_radii=[top_left, "
+                               "top_right, bottom_right, bottom_left] (0: sharp).",
                            members=RECT_MEMBERS),
     "Triangle": _p([A("a", "point"), A("b", "point"), A("c", "point"), FLEXIBLE],
                    [A("center", "point"), A("base", "length"), A("height", "length"),
@@ -191,6 +195,19 @@ _DEFS = {
                doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
                    "first tip up (+y), turned by rotation.",
                members=STAR_MEMBERS),
+    "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
+                 doc="The shape grown by distance (negative: shrunk), join \"round\" or "
+                     "\"miter\"; the shape is not drawn.", members=DERIVED_MEMBERS),
+    "Inset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
+                doc="Offset(shape, -distance).", members=DERIVED_MEMBERS),
+    "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
+                doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
+                    "is not drawn.", members=DERIVED_MEMBERS),
+    "Hull": _p([A("shapes", "any")],
+               [A("shape1", "geometry"), A("shape2", "geometry")]
+               + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
+               doc="The convex hull of shapes (a list, or up to six), not drawn.",
+               members=DERIVED_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0)],
@@ -328,7 +345,18 @@ SYNONYMS: dict[str, str] = {
     "VerticallyCentered": "AlignCenterY",
     "PointOnLine": "OnLine",
     "OnArc": "OnCircle",
+    "Outset": "Offset",
+    "Grow": "Offset",
+    "Expand": "Offset",
+    "Shrink": "Inset",
+    "ConvexHull": "Hull",
+    "convex_hull": "Hull",
 }
+
+# Offset's and Inset's argument synonyms (Shell's too, with thickness for distance)
+_OFFSET = {"target": "shape", "geometry": "shape", "of": "shape", "amount": "distance",
+           "by": "distance", "offset": "distance", "delta": "distance", "r": "distance",
+           "radius": "distance", "style": "join", "join_type": "join", "corners": "join"}
 
 # argument synonyms: entry name -> {name a model writes -> canonical argument name}.  One line
 # per synonym; the checker renames silently, and only where the canonical argument belongs to
@@ -354,6 +382,17 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "count": "points", "num_points": "points", "r_outer": "outer_radius",
              "r_inner": "inner_radius", "radius": "outer_radius",
              "outer": "outer_radius", "inner": "inner_radius"},
+    "Offset": _OFFSET,
+    "Inset": _OFFSET,
+    "Shell": {**_OFFSET, "amount": "thickness", "by": "thickness", "offset": "thickness",
+              "delta": "thickness", "r": "thickness", "radius": "thickness", "wall": "thickness",
+              "t": "thickness", "width": "thickness", "distance": "thickness",
+              "wall_thickness": "thickness"},
+    "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
+             "children": "shapes", "of": "shapes"},
+    "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",
+                         "radius": "corner_radius", "r": "corner_radius",
+                         "position": "center", "at": "center"},
     "CircularPattern": {"number": "count", "copies": "count", "around": "center",
                         "origin": "center", "span": "angle", "total_angle": "angle",
                         "spacing": "step", "pitch": "step", "angle_step": "step"},

@@ -184,6 +184,10 @@ solid s {
     c = Circle(center=(0, 0), radius=5)
     assert c.radius >= 6, "room for the screw"
 }""", (3, 5, 3, 47)),
+    ("E0406", """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    inner = Offset(body, -12)
+}""", (3, 13, 3, 30)),
 ]
 
 

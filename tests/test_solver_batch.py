@@ -124,3 +124,34 @@ def test_the_batch_checks_that_its_blocks_are_independent():
     # use unknowns owned by the first
     blocks = [(rows[:half], np.arange(len(cols))), (rows[half:], np.arange(0))]
     assert not _independent(t, rows, cols, blocks)
+
+
+FULLY_SUBSTITUTED = """def p() -> solid {
+    body = Rectangle(center=(0, 0), width=80, height=50)
+    for sx in [-1, 1] {
+        hole screw {
+            c = Circle(center=(0, 0), diameter=3.2)
+        }
+        screw.c.center == body.center + (sx * 34, 19)
+    }
+}
+
+assembly kit {
+    a = p()
+    b = p()
+}
+"""
+
+
+def test_a_batch_whose_every_class_is_fixed_by_substitution_solves_like_the_plain_order():
+    # the screws' blocks are all substituted away (no free class left): the batch's start
+    # placement read an empty class vector (IndexError, an internal error before)
+    (first,) = _solve_both(FULLY_SUBSTITUTED, [None])
+    assert first[0]
+    import aidl_lang
+    got = {v.name: v.mm for v in aidl_lang.compile(FULLY_SUBSTITUTED, path="t.aidl").values}
+    for part in ("a", "b"):
+        cx, cy = got[f"kit.{part}.body.center"]
+        for i, sx in enumerate((-1, 1)):
+            assert got[f"kit.{part}.screw[{i}].c.center"] == pytest.approx(
+                (cx + sx * 34, cy + 19), abs=1e-9)

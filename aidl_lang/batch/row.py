@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import tempfile
 import time
 from pathlib import Path
 
@@ -101,18 +99,10 @@ def run_one(task: dict, cfg: dict) -> dict:
     return row
 
 
-def _umask_mode() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return 0o666 & ~mask
-
-
-_MODE = _umask_mode()        # new files get what the umask allows, as `aidl render` does
-
-
 def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
-    """Write each format as ``OUT_DIR/STEM.EXT`` (a temporary file beside it, then renamed:
-    a reader never sees half a file); returns the paths written."""
+    """Write each format as ``OUT_DIR/STEM.EXT`` (:func:`aidl_lang.api.write_atomic`, as
+    ``aidl render``: a reader never sees half a file); returns the paths written."""
+    from ..api import write_atomic
     from ..output import encode
     cut = output                  # what a cutter reads: the program's `kerf` offsets its cuts,
     kerf = output.drawing.kerf if output.drawing is not None else None     # as `aidl render`
@@ -125,17 +115,6 @@ def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
     out_dir.mkdir(parents=True, exist_ok=True)
     written = []
     for path, data in items:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=str(out_dir))
-        try:
-            with os.fdopen(fd, "wb") as f:
-                f.write(data)
-            os.chmod(tmp, _MODE)
-            os.replace(tmp, path)
-        except BaseException:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-            raise
+        write_atomic(path, data)
         written.append(str(path))
     return written

@@ -18,9 +18,9 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
 from pathlib import Path
 
+from ..api import write_atomic
 from .row import FIELDS
 
 
@@ -125,30 +125,18 @@ class Store:
         self.close()
         rows = self.load()
         ordered = [rows.pop(i) for i in order if i in rows] + list(rows.values())
-        fd, tmp = tempfile.mkstemp(prefix=f".{self.out.name}.", suffix=".tmp",
-                                   dir=str(self.out.parent))
-        os.close(fd)
-        try:
-            if self.parquet:
-                import pyarrow as pa
-                import pyarrow.parquet as pq
-                table = pa.Table.from_pylist([{k: r.get(k) for k in FIELDS} for r in ordered],
-                                             schema=_schema())
-                pq.write_table(table, tmp)
-            else:
-                with open(tmp, "w", encoding="utf-8") as f:
-                    for r in ordered:
-                        f.write(json.dumps(r, separators=(",", ":")) + "\n")
-            mask = os.umask(0)
-            os.umask(mask)
-            os.chmod(tmp, 0o666 & ~mask)
-            os.replace(tmp, self.out)
-        except BaseException:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-            raise
+        if self.parquet:
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+            table = pa.Table.from_pylist([{k: r.get(k) for k in FIELDS} for r in ordered],
+                                         schema=_schema())
+            sink = pa.BufferOutputStream()
+            pq.write_table(table, sink)
+            data = sink.getvalue().to_pybytes()
+        else:
+            data = "".join(json.dumps(r, separators=(",", ":")) + "\n"
+                           for r in ordered).encode("utf-8")
+        write_atomic(self.out, data)
         if self.parquet:
             try:
                 os.unlink(self.journal)

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 
-from .curves import (Arc, Circle, Line, Loop, Segment, carrier, intersect, simplify,
+from .curves import (Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 
 TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent join
@@ -107,3 +107,94 @@ def offset_loop(loop: Loop, d: float) -> Loop:
         out.append(t)
     scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
     return Loop(simplify(out, scale))
+
+
+# ------------------------------------------------------------------ Offset(shape, distance)
+MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is cut (bevel)
+
+
+def sweep_loops(s: Segment, d: float) -> list[Loop]:
+    """The region every point of segment ``s`` reaches within ``d`` mm (> 0), as exact
+    counter-clockwise loops whose union it is: a line gives a stadium (two lines, two half
+    circles of radius ``d`` around its ends); an arc of radius R an arc slot (arcs R + d and
+    R - d, half circles around its ends) or, when ``d`` >= R, the pie of radius R + d and the
+    two end circles; a circle the ring from r - d to r + d (two half rings; the whole disk
+    of r + d when ``d`` >= r).  Used by :func:`offset_pieces`."""
+    if isinstance(s, Line):
+        (ax, ay), (bx, by) = s.start, s.end
+        L = math.hypot(bx - ax, by - ay)
+        if L <= 0.0:
+            return [Loop([Circle((ax, ay), d)])]
+        nx, ny = -(by - ay) / L, (bx - ax) / L            # left of a -> b
+        right = math.atan2(-ny, -nx)
+        p1, p2 = (ax - d * nx, ay - d * ny), (bx - d * nx, by - d * ny)
+        p3, p4 = (bx + d * nx, by + d * ny), (ax + d * nx, ay + d * ny)
+        return [Loop([Line(p1, p2), Arc((bx, by), d, right, math.pi), Line(p3, p4),
+                      Arc((ax, ay), d, right + math.pi, math.pi)])]
+    if isinstance(s, Circle):
+        c, R = s.center, s.radius
+        if d >= R:
+            return [Loop([Circle(c, R + d)])]
+        out = []                               # the ring as two half rings
+        for a1 in (0.0, math.pi):
+            outer, inner = Arc(c, R + d, a1, math.pi), Arc(c, R - d, a1 + math.pi, -math.pi)
+            out.append(Loop([outer, Line(outer.end, inner.start), inner,
+                             Line(inner.end, outer.start)]))
+        return out
+    a = s if s.sweep > 0 else reverse(s)
+    c, R, a1, sw = a.center, a.radius, a.start_angle, a.sweep
+    if d < R:
+        return [Loop([Arc(c, R + d, a1, sw), Arc(a.end, d, a1 + sw, math.pi),
+                      Arc(c, R - d, a1 + sw, -sw), Arc(a.start, d, a1 + math.pi, math.pi)])]
+    big = Arc(c, R + d, a1, sw)
+    return [Loop([Line(c, big.start), big, Line(big.end, c)]),
+            Loop([Circle(a.start, d)]), Loop([Circle(a.end, d)])]
+
+
+def _miter_kite(a: Segment, b: Segment, d: float) -> Loop | None:
+    """The miter at the corner from line ``a`` into line ``b`` turning left (the corner's
+    outside on the right): the quadrilateral from the corner out to both offset ends and the
+    point where the offset lines meet; None (the round join's disk is the bevel) when that
+    point lies farther than :data:`MITER_LIMIT` x ``d`` from the corner."""
+    ma, mb = _right(a, d), _right(b, d)
+    m = intersect(carrier(ma), carrier(mb), b.start)
+    v = b.start
+    if math.dist(m, v) > MITER_LIMIT * d * (1 + 1e-12):
+        return None
+    return Loop([Line(v, ma.end), Line(ma.end, m), Line(m, mb.start), Line(mb.start, v)])
+
+
+def offset_pieces(loops: list[Loop], d: float, join: str = "round") -> list[Loop]:
+    """The exact loops whose union, added to the shape (``d`` > 0) or cut from it
+    (``d`` < 0), is the shape offset by ``d`` mm: the sweep of every segment by a disk of
+    radius ``|d|`` (:func:`sweep_loops`; its disks at the corners are the round joins), and
+    with ``join="miter"`` the miter kite of every corner between two lines that turns away
+    from the offset side (see :func:`_miter_kite`; sharper than the miter limit: a bevel).
+
+    ``loops``: the shape's outline, outer loops counter-clockwise, holes clockwise.  Source:
+    the offset of a region is its Minkowski sum with a disk (outward) or the complement's
+    (inward); exact because every piece is made of lines and arcs of the offset carriers."""
+    r = abs(d)
+    out: list[Loop] = []
+    for lp in loops:
+        segs = lp.segments
+        for s in segs:
+            out += sweep_loops(s, r)
+        if join != "miter" or len(segs) < 2:
+            continue
+        for k in range(len(segs)):
+            a, b = segs[k - 1], segs[k]
+            if not (isinstance(a, Line) and isinstance(b, Line)):
+                continue
+            turn = turn_between(a, b)
+            if abs(turn) <= TANGENT_TURN:
+                continue
+            if d > 0 and turn > 0:          # convex corner, outward offset
+                kite = _miter_kite(a, b, r)
+            elif d < 0 and turn < 0:        # reflex corner, inset: the kite on the inside
+                kite = _miter_kite(reverse(b), reverse(a), r)
+            else:
+                continue
+            if kite is not None:
+                out.append(kite if kite.area > 0 else kite.reversed())
+    return out

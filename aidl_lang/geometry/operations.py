@@ -111,6 +111,8 @@ class _Cloner:
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
         if "edges" in g.data:
             new.data["edges"] = [self.geom(e, dest) for e in g.data["edges"]]
+        if "sources" in g.data:              # Offset, Shell, Hull: made from the copies
+            new.data["sources"] = [self.geom(src, dest) for src in g.data["sources"]]
         if "part_of" in g.data:
             new.data["part_of"] = self.geoms.get(g.data["part_of"], g.data["part_of"])
         new.parts = {n: self.geom(p, dest) for n, p in g.parts.items()}

@@ -14,7 +14,7 @@ import math
 
 from .expr import Lin, _new, as_const, func, hypot, var
 from .model import Equation, Geometry
-from .values import ANG, LEN, PV, GeomRef, Q
+from .values import ANG, LEN, NUM, PV, GeomRef, Q, type_name
 
 
 class PrimitiveError(Exception):
@@ -235,8 +235,52 @@ def _is_const_pv(p: PV) -> bool:
 
 
 def _build_RoundedRectangle(ctx, g, a):
+    one, each = a.get("corner_radius"), a.get("corner_radii")
+    if (one is None) == (each is None):
+        raise PrimitiveError("a RoundedRectangle needs corner_radius (every corner) or "
+                             "corner_radii=[top_left, top_right, bottom_right, bottom_left]"
+                             + (", not both" if one is not None else ""))
+    if each is not None:
+        radii = _corner_radii(ctx, each)
+        w = _const(ctx, a["width"], "width")
+        h = _const(ctx, a["height"], "height")
+        tl, tr, br, bl = radii
+        for side, (r1, n1), (r2, n2), L in (("top", (tl, "top_left"), (tr, "top_right"), w),
+                                           ("bottom", (bl, "bottom_left"), (br, "bottom_right"), w),
+                                           ("left", (tl, "top_left"), (bl, "bottom_left"), h),
+                                           ("right", (tr, "top_right"), (br, "bottom_right"), h)):
+            if r1 + r2 > L * (1 + 1e-12):
+                raise PrimitiveError(
+                    f"a RoundedRectangle's {n1} and {n2} radii ({r1:g} + {r2:g} mm) exceed its "
+                    f"{side} side ({L:g} mm): two corners on a side may take at most its length")
     _build_Rectangle(ctx, g, a)
-    g.data["corner_radius"] = _const(ctx, a["corner_radius"], "corner_radius")
+    if each is not None:
+        g.data["corner_radii"] = [bl, br, tr, tl]          # in points_of order
+        g.data["corner_radius"] = max(radii)
+    else:
+        g.data["corner_radius"] = _const(ctx, one, "corner_radius")
+
+
+def _corner_radii(ctx, v) -> list[float]:
+    """``corner_radii=[top_left, top_right, bottom_right, bottom_left]`` (the CSS order) as
+    four lengths in mm, each >= 0 and known before solving."""
+    if not isinstance(v, (list, tuple)) or len(v) != 4:
+        n = f"{len(v)} values" if isinstance(v, (list, tuple)) else "one value"
+        raise PrimitiveError(f"corner_radii takes four radii [top_left, top_right, "
+                             f"bottom_right, bottom_left], got {n}")
+    out = []
+    for name, q in zip(("top_left", "top_right", "bottom_right", "bottom_left"), v):
+        if not isinstance(q, Q) or q.dim not in (LEN, NUM):
+            raise PrimitiveError(f"corner_radii: the {name} radius must be a length, got "
+                                 f"{type_name(q)}")
+        r = _const(ctx, q, f"corner_radii {name}")
+        if q.dim == NUM:                  # a bare number: the file's units
+            r *= ctx.unit_scale
+        if not r >= 0:
+            raise PrimitiveError(f"corner_radii: the {name} radius must be 0 (a sharp corner) "
+                                 f"or positive, got {r:g}")
+        out.append(r)
+    return out
 
 
 def _polygon_edges(ctx, g, pts: list):
@@ -448,6 +492,69 @@ def _build_ArcSlot(ctx, g, a):
                       "outer_radius": R + w / 2}
     g.data["angles"] = (a1, sweep)
     g.closed = True
+
+
+def _source(v, what: str) -> Geometry:
+    """The shape an Offset, Shell or Hull is made from: geometry with an inside."""
+    if not isinstance(v, GeomRef):
+        raise PrimitiveError(f"{what} takes shapes (a Circle, Rectangle, Polygon, Slot, ...), "
+                             f"got {type_name(v)}")
+    g = v.geom
+    if not g.closed or g.kind == "Text":
+        raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
+                             f"Slot, ...), not a {g.kind}")
+    return g
+
+
+def _consume(g: Geometry, sources: list) -> None:
+    """``g`` is made from ``sources``, which are no longer drawn (construction geometry:
+    still solved, shown with ``--show construction``), as OpenSCAD's offset() and hull()
+    replace their children."""
+    for src in sources:
+        src.construction = True
+    g.data["sources"] = list(sources)
+    g.closed = True
+
+
+def _join(a) -> str:
+    j = a.get("join", "round")
+    if j not in ("round", "miter"):
+        raise PrimitiveError(f'join must be "round" or "miter", got "{j}"')
+    return j
+
+
+def _build_Offset(ctx, g, a, sign: float = 1.0):
+    src = _source(a["shape"], "Offset" if sign > 0 else "Inset")
+    g.data["distance"] = sign * _const(ctx, a["distance"], "Offset distance")
+    g.data["join"] = _join(a)
+    _consume(g, [src])
+
+
+def _build_Inset(ctx, g, a):
+    g.kind = "Offset"
+    _build_Offset(ctx, g, a, -1.0)
+
+
+def _build_Shell(ctx, g, a):
+    src = _source(a["shape"], "Shell")
+    t = _const(ctx, a["thickness"], "Shell thickness")
+    if t == 0:
+        raise PrimitiveError("a Shell needs a non-zero thickness (positive: the wall outside "
+                             "the shape; negative: inside it)")
+    g.data["thickness"] = t
+    g.data["join"] = _join(a)
+    _consume(g, [src])
+
+
+def _build_Hull(ctx, g, a):
+    if "shapes" in a:
+        v = a["shapes"]
+        items = list(v) if isinstance(v, (list, tuple)) else [v]
+    else:
+        items = [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
+    if not items:
+        raise PrimitiveError("Hull needs at least one shape")
+    _consume(g, [_source(v, "Hull") for v in items])
 
 
 def _build_Slot(ctx, g, a):

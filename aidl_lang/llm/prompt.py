@@ -53,6 +53,10 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
+Each child of an `assembly` is a separate part, drawn where the solver puts it (parts
+may overlap; `aidl render --layout sheet` lays them out flat for cutting). `aidl check` ends
+with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
+turn; the program is valid, but pin what matters with constraints.
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
@@ -100,16 +104,32 @@ def vocabulary() -> str:
 
 
 def members() -> str:
-    """The members of every shape and of bounding boxes, from the registry (``.bb`` omitted
-    per shape: the intro says every geometry and structure has it)."""
+    """The members of every shape and of bounding boxes by kind, from the registry: points
+    (for Coincident, At, Distance, ...), lines (Parallel, Horizontal, Length, ...) and numbers
+    (lengths, coordinates, angles: for equations).  ``.bb`` is omitted per shape: the intro says
+    every geometry and structure has it.  Shapes with the same members share a row."""
+    kinds = {"point": "points", "points": "point lists", "line": "lines", "lines": "line lists"}
     rows, seen = [], {}
-    for e in ENTRIES.values():
-        if e.members:
-            names = " ".join(m for m in e.members if m != "bb")
-            rows.append(f"{e.name}: " + (f"as {seen[names]}" if names in seen else names))
-            seen.setdefault(names, e.name)
-    rows.append(f".bb: {' '.join(BBOX_MEMBERS)}")
-    return "Members (`rect.top_left`, `s.bb.center_x`): " + "; ".join(rows) + "."
+    for e in list(ENTRIES.values()) + [None]:
+        table = BBOX_MEMBERS if e is None else e.members
+        name = ".bb" if e is None else e.name
+        if not table:
+            continue
+        groups: dict[str, list[str]] = {k: [] for k in ("points", "lines", "numbers",
+                                                         "point lists", "line lists")}
+        for m, kind in table.items():
+            if m != "bb":
+                groups.setdefault(kinds.get(kind, "numbers"), []).append(m)
+        cells = "; ".join(f"{k}: {' '.join(v)}" for k, v in groups.items() if v)
+        if cells in seen:
+            seen[cells].append(name)
+        else:
+            seen[cells] = [name]
+            rows.append(cells)
+    lines = [f"- {', '.join(next(n for c, n in seen.items() if c == cells))} | {cells}"
+             for cells in rows]
+    return ("Members by kind (`rect.top_left` is a point, `rect.top` a line, `s.bb.center_x` a "
+            "number):\n" + "\n".join(lines))
 
 
 def _strip(text: str) -> str:

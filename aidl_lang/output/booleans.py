@@ -25,6 +25,8 @@ import numpy as np
 
 from ..geometry.curves import Arc, Circle, Line, Loop, carrier, reverse, simplify
 from ..geometry.model import Geometry, Model, Structure
+from ..geometry.hull import hull_loop
+from ..geometry.offset import offset_pieces
 from ..geometry.operations import finish
 from ..geometry.tessellate import segments_for
 from ..geometry.text import text_strokes
@@ -33,6 +35,7 @@ from .exact import Provenance
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
+DERIVED = ("Offset", "Shell")   # shapes whose outline is a boolean of their source's
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 
 
@@ -78,6 +81,8 @@ class Drawing:
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
+    # [(geometry, message, hint)]: an Offset or Shell that leaves nothing (E0406)
+    shape_errors = ()
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:
@@ -117,6 +122,10 @@ class Renderer:
         self.exact = Provenance(max_vertices=budget.vertices)
         self.empty_faces: list = []
         self.current: Structure | None = None       # the structure being built (E0304)
+        # shapes made from other shapes (Offset, Shell): their CrossSection, once each
+        self.derived: dict = {}
+        # (geometry, message, hint) of Offset/Shell/Hull results that cannot be made (E0406)
+        self.shape_errors: list = []
 
     def tick(self, s: Structure | None = None) -> None:
         if self.deadline is not None:
@@ -203,6 +212,15 @@ class Renderer:
             a1, sweep = g.data["angles"]
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
+        if k == "Hull":
+            return hull_loop([lp for src in g.data["sources"] for lp in self.loops_of(src)])
+        if k in DERIVED:
+            loops = self.loops_of(g)
+            return loops[0] if len(loops) == 1 else None
+        if k == "RoundedRectangle" and g.data.get("corner_radii"):
+            from ..geometry.primitives import points_of
+            return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
+                                              g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid", "Star"):
             from ..geometry.primitives import points_of
@@ -215,7 +233,61 @@ class Renderer:
             return _polygon(pts)
         return None
 
+    def loops_of(self, g: Geometry) -> list[Loop]:
+        """The exact outline of a shape as loops: outer ones counter-clockwise, holes
+        clockwise (a shape made by Offset or Shell may have several; others have one)."""
+        if g.kind in DERIVED:
+            sec = self.derived_section(g)
+            return self.exact.loops(sec) if sec is not None else []
+        lp = self.outline(g)
+        if lp is None or not lp.segments:
+            return []
+        return [lp.reversed() if lp.area < 0 else lp]
+
+    def derived_section(self, g: Geometry) -> mf.CrossSection | None:
+        """The shape of an ``Offset`` or ``Shell`` (cached): its source's shape with the
+        sweeps of :func:`~aidl_lang.geometry.offset.offset_pieces` added (outward) or cut
+        (inset), all exact loops, so :mod:`.exact` puts the result back on the offset lines
+        and arcs; None (and an E0406 in :attr:`shape_errors`) when nothing is left."""
+        if id(g) in self.derived:
+            return self.derived[id(g)]
+        self.derived[id(g)] = None                 # (a cycle cannot be written; be safe)
+        src = g.data["sources"][0]
+        loops = self.loops_of(src)
+        base = self.exact.section(loops) if loops else mf.CrossSection()
+        join = g.data.get("join", "round")
+        if g.kind == "Offset":
+            d = g.data["distance"]
+            out = self._offset(base, loops, d, join)
+        else:
+            t = g.data["thickness"]
+            moved = self._offset(base, loops, t, join)
+            out = moved - base if t > 0 else base - moved
+            if t < 0 and moved.is_empty():
+                out = mf.CrossSection()
+        if out.is_empty() and not base.is_empty():
+            what = "distance" if g.kind == "Offset" else "thickness"
+            v = g.data[what]
+            self.shape_errors.append((g, (
+                f"`{g.label}`: an inset of {abs(v):g} mm leaves nothing of `{src.label}`: "
+                f"the shape is nowhere more than {2 * abs(v):g} mm across"),
+                f"use a smaller {what}: an inset removes a band {abs(v):g} mm wide along the "
+                f"whole outline" + ("" if g.kind == "Offset" else
+                                    "; a Shell that fills the shape is the shape itself")))
+            out = None
+        self.derived[id(g)] = out
+        return out
+
+    def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
+        if d == 0 or base.is_empty():
+            return base
+        pieces = [self.exact.face(lp) for lp in offset_pieces(loops, d, join)]
+        band = self.union(pieces)
+        return base + band if d > 0 else base - band
+
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        if g.kind in DERIVED:
+            return self.derived_section(g)
         lp = self.outline(g)
         if lp is None:
             return None
@@ -459,6 +531,7 @@ class Renderer:
             raise
         out.exact = self.exact
         out.empty_faces = self.empty_faces
+        out.shape_errors = self.shape_errors
         out.kerf = {}
         for word, into in (("thickness", out.thickness), ("kerf", out.kerf)):
             default = getattr(self.m, word, None)
@@ -566,6 +639,37 @@ def rounded_outline(corners, r: float) -> list:
         prev_arc = segs[i - 1]
         fixed += [Line(prev_arc.end, segs[i + 1].start), segs[i + 1]]
     return simplify(fixed, max(abs(float(v)) for p in P for v in p))
+
+
+def rounded_outline_radii(corners, radii) -> list:
+    """The exact outline of a rectangle (four corners in order, mm) whose corner ``k`` is
+    rounded by ``radii[k]`` (mm; 0: a sharp corner): lines and quarter arcs,
+    counter-clockwise.  The radii fit their sides (the primitive checks that two radii on a
+    side add up to at most its length)."""
+    P = [np.asarray(p, dtype=float) for p in corners]
+    R = [float(r) for r in radii]
+    if _shoelace(P) < 0:
+        P, R = P[::-1], R[::-1]
+    u = []
+    for i in range(4):
+        e = P[(i + 1) % 4] - P[i]
+        u.append(e / float(np.hypot(*e)))
+    arcs = []                            # corner k: (arc or None, its start, its end)
+    for k in range(4):
+        r, a, b = R[k], u[k - 1], u[k]      # the edge into corner k, and out of it
+        if r <= 0:
+            p = _t(P[k])
+            arcs.append((None, p, p))
+            continue
+        c = P[k] - r * a + r * b
+        arc = Arc(_t(c), r, math.atan2(-b[1], -b[0]), math.pi / 2)
+        arcs.append((arc, arc.start, arc.end))
+    segs = []
+    for k in range(4):
+        if arcs[k][0] is not None:
+            segs.append(arcs[k][0])
+        segs.append(Line(arcs[k][2], arcs[(k + 1) % 4][1]))
+    return simplify(segs, max(abs(float(v)) for p in P for v in p))
 
 
 def _shoelace(P) -> float:

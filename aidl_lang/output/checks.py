@@ -140,6 +140,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s])
+    for g, _m, _h in getattr(d, "shape_errors", None) or ():
+        explained.add(_part_of(g.owner, roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
         part = _part_of(s, roots)
         explained.add(part)
@@ -168,7 +170,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
            "Triangle", "Polygon",
-           "RegularPolygon", "Trapezoid"}
+           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull"}
 
 
 def empty_faces(d: Drawing) -> list:
@@ -177,6 +179,7 @@ def empty_faces(d: Drawing) -> list:
     shows (a solid or hole whose own closed geometry gave no shape, or a chain of lines and
     arcs that closed into an empty loop), each geometry once, in model order."""
     out: dict = {}
+    errored = {id(g) for g, _m, _h in getattr(d, "shape_errors", None) or ()}   # E0406 said
     for s, g, a in getattr(d, "empty_faces", None) or []:
         out.setdefault(id(g), (s, g, float(a)))
     for s in d.shapes:
@@ -188,7 +191,8 @@ def empty_faces(d: Drawing) -> list:
             if f is None or f.is_empty():
                 out.setdefault(id(g), (s, g, 0.0))
         for g in s.geometry:
-            if not g.construction and g.kind in _CLOSED and id(g) not in shaped:
+            if not g.construction and g.kind in _CLOSED and id(g) not in shaped \
+                    and id(g) not in errored:
                 out.setdefault(id(g), (s, g, 0.0))
     return list(out.values())
 

@@ -13,8 +13,10 @@ syntax keyword aidlCadOperator and not or
 syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
-syntax keyword aidlCadPrimitive Arc ArcSlot Circle Ellipse Line Point Polygon Rectangle
-syntax keyword aidlCadPrimitive RegularPolygon RoundedRectangle Slot Star Text Trapezoid Triangle
+syntax keyword aidlCadPrimitive Arc ArcSlot Circle ConvexHull Ellipse Expand Grow Hull
+syntax keyword aidlCadPrimitive Inset Line Offset Outset Point Polygon Rectangle RegularPolygon
+syntax keyword aidlCadPrimitive RoundedRectangle Shell Shrink Slot Star Text Trapezoid Triangle
+syntax keyword aidlCadPrimitive convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop Anchor
 syntax keyword aidlCadConstraint Angle AtMidpoint Below CenterInside Centered Chamfer CircularPattern Coincide
 syntax keyword aidlCadConstraint Coincident Collinear Concentric Diameter Distance DistanceX DistanceY Equal
