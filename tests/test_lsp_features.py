@@ -102,13 +102,17 @@ def test_boot_answers_and_publishes_before_loading_pygls(tmp_path):
             {"jsonrpc": "2.0", "method": "workspace/didChangeConfiguration",
              "params": {"settings": {"aidl": {}}}},          # as VS Code sends it, before opening
             {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {
-                "uri": uri, "languageId": "aidl-cad", "version": 3, "text": broken}}}]
+                "uri": uri, "languageId": "aidl-cad", "version": 3, "text": broken}}},
+            {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {
+                "uri": uri + "2", "languageId": "aidl-cad", "version": 1, "text": "x = (\n"}}}]
     data = b"".join(_frame(m) for m in msgs)
     r = subprocess.run([sys.executable, "-c", BOOT_RUN], input=data, capture_output=True,
                        check=True, cwd=ROOT)
     got = json.loads(r.stdout)
     assert got["heavy"] == []
-    answer, published = _messages(got["out"].encode())
+    answer, published, second = _messages(got["out"].encode())
+    assert second["params"]["uri"] == uri + "2"          # a second tab restored meanwhile
+    assert [d["code"] for d in second["params"]["diagnostics"]] == ["E0001"]
     assert answer["id"] == 7 and "hoverProvider" in answer["result"]["capabilities"]
     assert published["method"] == "textDocument/publishDiagnostics"
     p = published["params"]
@@ -118,7 +122,8 @@ def test_boot_answers_and_publishes_before_loading_pygls(tmp_path):
                                                    "end": {"line": 7, "character": 18}}
     assert d["data"]["fixes"][0]["newText"] == "Circle"
     assert [m.get("method") for m in _messages(got["replay"].encode())] == \
-        ["initialize", "initialized", "workspace/didChangeConfiguration", "textDocument/didOpen"]
+        ["initialize", "initialized", "workspace/didChangeConfiguration", "textDocument/didOpen",
+         "textDocument/didOpen"]
 
 
 def test_quick_diagnostics_equal_the_pipeline_when_they_hold_an_error():

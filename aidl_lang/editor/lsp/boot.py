@@ -9,10 +9,11 @@ of attrs classes), four times ``import numpy``; the parser and checker cost 0.07
 2. ``initialize`` is answered at once with the server's capabilities
    (:data:`._capabilities.CAPABILITIES`, generated from the pygls server by
    ``python editors/gen_lsp_capabilities.py``; a test keeps them equal);
-3. the first ``textDocument/didOpen`` gets its parse-and-check diagnostics
-   (:func:`.plain.quick_diagnostics`) published at once; the full diagnostics (interpretation
-   and solve, from the worker process started beside this one) follow for the same version,
-   as after any change;
+3. a ``textDocument/didOpen`` gets its parse-and-check diagnostics
+   (:func:`.plain.quick_diagnostics`) published at once (the first one, and any others that
+   arrive while pygls loads, as when an editor restores several tabs; documents up to
+   :data:`QUICK_MAX` characters); the full diagnostics (interpretation and solve, from the
+   worker process started beside this one) follow for the same version, as after any change;
 4. then :mod:`.server` is imported and pygls serves the connection: every message read so far
    is replayed to it in order, ``initialize`` included (pygls builds its workspace from it; its
    answer, a copy of the one sent, is dropped), then the rest of stdin.
@@ -28,6 +29,8 @@ import threading
 
 #: seconds after start to wait for the first ``didOpen`` before loading pygls anyway
 IDLE = 1.0
+#: characters: larger documents get no parse-and-check pass here (~20 ms per kilobyte)
+QUICK_MAX = 50_000
 
 
 class Feed:
@@ -156,7 +159,7 @@ class Boot:
         self.writer = writer
         self.feed = feed
         self.go = threading.Event()           # load pygls now
-        self.quick_done = False
+        self.handed = False                   # pygls reads the feed from now on
         self.published: dict[str, list[dict]] = {}
 
     def run(self) -> None:
@@ -165,7 +168,7 @@ class Boot:
                 body = read_message(self.stdin)
                 if body is None:
                     break
-                if not self.go.is_set():
+                if not self.handed:
                     self._see(body)
                 self.feed.put(b"Content-Length: %d\r\n\r\n" % len(body) + body)
         finally:
@@ -182,6 +185,8 @@ class Boot:
             self.go.set()
             return
         method = msg.get("method")
+        if self.go.is_set() and method != "textDocument/didOpen":
+            return
         if method == "initialize" and "id" in msg:
             try:
                 result = initialize_result(msg.get("params") or {})
@@ -190,8 +195,7 @@ class Boot:
                 return
             self.writer.send({"jsonrpc": "2.0", "id": msg["id"], "result": result})
             self.writer.drop_id = msg["id"]          # pygls' copy of this answer
-        elif method == "textDocument/didOpen" and not self.quick_done:
-            self.quick_done = True
+        elif method == "textDocument/didOpen":
             try:
                 self._quick(msg["params"]["textDocument"])
             except Exception:                 # the full analysis will say it
@@ -205,6 +209,8 @@ class Boot:
     def _quick(self, doc: dict) -> None:
         from .plain import quick_diagnostics
         uri, text = doc["uri"], doc["text"]
+        if len(text) > QUICK_MAX:
+            return
         path = _path(uri)
         diags = quick_diagnostics(text, path, uri)
         if diags is None:
@@ -241,6 +247,7 @@ def main(worker=None, stdin=None, stdout=None) -> int:
     boot.go.wait(IDLE)
     boot.go.set()
     from .server import main as serve
+    boot.handed = True
     code = serve(worker, stdin=feed, stdout=writer, published=boot.published)
     # the reader thread is blocked reading stdin: end here rather than in an interpreter
     # shutdown that would wait for it
