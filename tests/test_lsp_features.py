@@ -338,6 +338,16 @@ async def test_server_inlay_hints_code_lens_and_toggle(client: LanguageClient, t
     client.workspace_did_change_configuration(T.DidChangeConfigurationParams(
         settings={"aidl": {"inlayHints": {"enabled": True}}}))
     assert len(await hints_now()) == 2
+    # a change that does not solve (typing): the last solved hints stay
+    client.text_document_did_change(T.DidChangeTextDocumentParams(
+        text_document=T.VersionedTextDocumentIdentifier(uri=uri, version=2),
+        content_changes=[T.TextDocumentContentChangeWholeDocument(text=PLATE.replace("Circle(", "Circel("))]))
+    while True:
+        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if p.uri == uri and p.version == 2:
+            break
+    assert [d.code for d in p.diagnostics] == ["E0103"]
+    assert {h.label for h in await hints_now()} == set(labels)
 
 
 @pytest.mark.asyncio(loop_scope="module")

@@ -170,6 +170,7 @@ def register(server, safe, doc, facts, failed) -> None:
 def forget(uri: str) -> None:
     """Drop what is kept for a closed document."""
     _programs.pop(uri, None)
+    _shown.pop(uri, None)
 
 
 def dof_hover(uri: str, d, path: str, line: int, character: int, f: dict | None) -> str | None:
@@ -196,7 +197,12 @@ def _refresh(ls) -> None:
         pass
 
 
-def refresh(ls) -> None:
-    """After an analysis: refresh hints and lenses if either is on."""
-    if settings["inlayHints"] or settings["codeLens"]:
+_shown: dict[str, object] = {}        # uri -> the facts hints and lenses were last refreshed for
+
+
+def refresh(ls, uri: str, facts) -> None:
+    """After an analysis of ``uri``: ask for fresh hints and lenses if either is on and the
+    solved facts changed."""
+    if (settings["inlayHints"] or settings["codeLens"]) and _shown.get(uri) != facts:
+        _shown[uri] = facts
         _refresh(ls)

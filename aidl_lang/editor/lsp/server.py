@@ -160,7 +160,7 @@ async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
     _published[uri] = diags
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=uri, diagnostics=diags, version=version))
-    features.refresh(ls)          # inlay hints and code lenses come with the analysis
+    features.refresh(ls, uri, _get_analyzer().facts.get(uri))   # hints and lenses, if changed
 
 
 def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
@@ -227,6 +227,8 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
         old.cancel()
     _published.pop(params.text_document.uri, None)
     features.forget(params.text_document.uri)
+    if _analyzer is not None:
+        _analyzer.facts.pop(params.text_document.uri, None)
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=params.text_document.uri, diagnostics=[]))
 

@@ -95,7 +95,7 @@ class Analyzer:
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
         self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
-        self.facts: dict[str, dict] = {}              # uri -> its last analysis' hints.solved_facts
+        self.facts: dict[str, dict] = {}              # uri -> its last solved analysis' solved_facts
 
     def start(self) -> None:
         """Adopt the worker started early (:func:`spawn`) or start one."""
@@ -175,7 +175,8 @@ class Analyzer:
                 d = await loop.run_in_executor(None, diagnostics_json, text, path, solve, uri,
                                                values, extra)
                 self.values[uri] = values
-                self.facts[uri] = extra
+                if extra:
+                    self.facts[uri] = extra
                 return d
             self.seq += 1
             job = self.seq
@@ -206,7 +207,8 @@ class Analyzer:
         if "error" in answer:
             raise RuntimeError(answer["error"])
         self.values[uri] = answer.get("values") or {}
-        self.facts[uri] = answer.get("facts") or {}
+        if answer.get("facts"):                  # a program that does not solve keeps the
+            self.facts[uri] = answer["facts"]    # last solved hints (no flicker while typing)
         return answer["diagnostics"]
 
 
