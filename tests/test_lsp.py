@@ -64,9 +64,13 @@ def _open(client: LanguageClient, uri: str, text: str, version: int = 1) -> None
                                          text=text)))
 
 
-async def _diagnostics(client: LanguageClient, uri: str):
-    await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-    return client.diagnostics[uri]
+async def _diagnostics(client: LanguageClient, uri: str, version: int | None = None):
+    """The next diagnostics published for ``uri`` (of ``version`` if given: a version may be
+    published more than once, parse-and-check first at start-up)."""
+    while True:
+        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if p.uri == uri and (version is None or p.version == version):
+            return p.diagnostics
 
 
 @pytest.mark.asyncio
@@ -83,7 +87,7 @@ async def test_server_diagnostics_hover_completion_definition(client: LanguageCl
     client.text_document_did_change(T.DidChangeTextDocumentParams(
         text_document=T.VersionedTextDocumentIdentifier(uri=uri, version=2),
         content_changes=[T.TextDocumentContentChangeWholeDocument(text=GOOD)]))
-    assert list(await _diagnostics(client, uri)) == []
+    assert list(await _diagnostics(client, uri, version=2)) == []
 
     h = await client.text_document_hover_async(T.HoverParams(
         text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(*pos(GOOD, "Rectangle", 2))))

@@ -182,6 +182,13 @@ def test_cold_start_publishes_first_diagnostics_then_the_solved_ones(tmp_path):
         assert second["params"]["version"] == 1
         assert [d["code"] for d in second["params"]["diagnostics"]] == ["E0401"]
         assert time.perf_counter() - t0 < 60
+        # pygls answers from here on; the document is known to it (the replayed didOpen)
+        p.stdin.write(_frame({"jsonrpc": "2.0", "id": 9, "method": "textDocument/documentSymbol",
+                              "params": {"textDocument": {"uri": uri}}}))
+        p.stdin.flush()
+        while (m := json.loads(boot.read_message(p.stdout))).get("id") != 9:
+            assert m.get("method") == "textDocument/publishDiagnostics"   # the server's own pass
+        assert [s["name"] for s in m["result"]] == ["part"]
         p.stdin.write(_frame({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}))
         p.stdin.write(_frame({"jsonrpc": "2.0", "method": "exit"}))
         p.stdin.flush()

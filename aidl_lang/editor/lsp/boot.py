@@ -12,8 +12,12 @@ of attrs classes), four times ``import numpy``; the parser and checker cost 0.07
 3. a ``textDocument/didOpen`` gets its parse-and-check diagnostics
    (:func:`.plain.quick_diagnostics`) published at once (the first one, and any others that
    arrive while pygls loads, as when an editor restores several tabs; documents up to
-   :data:`QUICK_MAX` characters); the full diagnostics (interpretation and solve, from the
-   worker process started beside this one) follow for the same version, as after any change;
+   :data:`QUICK_MAX` characters); the first one is also given to the worker process started
+   beside this one, and its full diagnostics (interpretation and solve) are published for the
+   same version as soon as the worker answers, while pygls may still be loading (the server
+   reads the worker's answers only after that one, see ``hold`` in :class:`.worker.Analyzer`;
+   when the answer is in before pygls sees that ``didOpen``, the server takes it instead of
+   analysing the document again);
 4. then :mod:`.server` is imported and pygls serves the connection: every message read so far
    is replayed to it in order, ``initialize`` included (pygls builds its workspace from it; its
    answer, a copy of the one sent, is dropped), then the rest of stdin.
@@ -154,10 +158,15 @@ def initialize_result(params) -> dict:
 class Boot:
     """The reader thread's state (see the module doc)."""
 
-    def __init__(self, stdin, writer: Writer, feed: Feed) -> None:
+    def __init__(self, stdin, writer: Writer, feed: Feed, worker=None) -> None:
         self.stdin = stdin
         self.writer = writer
         self.feed = feed
+        self.worker = worker                  # the analysis worker process (or None)
+        self.worker_free = threading.Event()  # the worker's stdout is the server's from now
+        self.lock = threading.Lock()
+        self.job_sent = False
+        self.answers: dict[str, tuple] = {}   # uri -> (version, text, the worker's answer)
         self.go = threading.Event()           # load pygls now
         self.handed = False                   # pygls reads the feed from now on
         self.published: dict[str, list[dict]] = {}
@@ -219,6 +228,38 @@ class Boot:
         self.writer.send({"jsonrpc": "2.0", "method": "textDocument/publishDiagnostics",
                           "params": {"uri": uri, "version": doc.get("version"),
                                      "diagnostics": diags}})
+        self._full(uri, doc.get("version"), text, path)
+
+    def _full(self, uri: str, version, text: str, path: str) -> None:
+        """Give the first opened document to the worker now (it is warming up beside this
+        process) and publish its solved diagnostics when they come, rather than after pygls
+        has loaded; the server's analysis of the same version follows (same answer)."""
+        with self.lock:
+            if self.job_sent or self.handed or self.worker is None or self.worker.poll() is not None:
+                return
+            self.job_sent = True
+        try:
+            job = {"id": 0, "text": text, "path": path, "uri": uri, "solve": True}
+            self.worker.stdin.write((json.dumps(job) + "\n").encode())
+            self.worker.stdin.flush()
+        except (OSError, ValueError):
+            self.worker_free.set()
+            return
+        threading.Thread(target=self._await_full, args=(uri, version, text), daemon=True).start()
+
+    def _await_full(self, uri: str, version, text: str) -> None:
+        try:
+            line = self.worker.stdout.readline()
+            answer = json.loads(line) if line else {}
+            if isinstance(answer, dict) and answer.get("id") == 0 and "diagnostics" in answer:
+                self.answers[uri] = (version, text, answer)
+                self.writer.send({"jsonrpc": "2.0", "method": "textDocument/publishDiagnostics",
+                                  "params": {"uri": uri, "version": version,
+                                             "diagnostics": answer["diagnostics"]}})
+        except (OSError, ValueError):
+            pass
+        finally:
+            self.worker_free.set()
 
 
 def _path(uri: str) -> str:
@@ -237,7 +278,7 @@ def main(worker=None, stdin=None, stdout=None) -> int:
     stdin = stdin or sys.stdin.buffer
     writer = Writer(stdout or sys.stdout.buffer)
     feed = Feed()
-    boot = Boot(stdin, writer, feed)
+    boot = Boot(stdin, writer, feed, worker)
     threading.Thread(target=boot.run, name="aidl-lsp-boot", daemon=True).start()
     try:                                      # while the client answers: the parser, checker
         from . import plain                   # noqa: F401
@@ -247,8 +288,12 @@ def main(worker=None, stdin=None, stdout=None) -> int:
     boot.go.wait(IDLE)
     boot.go.set()
     from .server import main as serve
-    boot.handed = True
-    code = serve(worker, stdin=feed, stdout=writer, published=boot.published)
+    with boot.lock:
+        boot.handed = True
+        if not boot.job_sent:
+            boot.worker_free.set()
+    code = serve(worker, stdin=feed, stdout=writer, published=boot.published,
+                 hold=boot.worker_free, early=boot.answers)
     # the reader thread is blocked reading stdin: end here rather than in an interpreter
     # shutdown that would wait for it
     sys.stdout.flush()

@@ -83,6 +83,7 @@ _pending: dict[str, asyncio.Task] = {}
 _published: dict[str, list[T.Diagnostic]] = {}      # uri -> the diagnostics last published
 _settings = {"debounce": DEBOUNCE}
 _analyzer: Analyzer | None = None
+_early: dict = {}          # uri -> (version, text, worker answer) from :mod:`.boot`
 
 
 def _get_analyzer() -> Analyzer:
@@ -203,7 +204,18 @@ async def shutdown(ls: LanguageServer, params):
 @server.feature(T.TEXT_DOCUMENT_DID_OPEN)
 @_safe()
 def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
-    _schedule(ls, params.text_document.uri, 0.0)
+    d = params.text_document
+    early = _early.pop(d.uri, None)           # analysed by the start-up front already
+    if early is not None and early[0] == d.version and early[1] == d.text:
+        answer = early[2]
+        _published[d.uri] = converters.get_converter().structure(answer["diagnostics"],
+                                                                 list[T.Diagnostic])
+        _get_analyzer().values[d.uri] = answer.get("values") or {}
+        if answer.get("facts"):
+            _get_analyzer().facts[d.uri] = answer["facts"]
+        features.refresh(ls, d.uri, answer.get("facts"))
+        return
+    _schedule(ls, d.uri, 0.0)
 
 
 @server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
@@ -374,14 +386,20 @@ features.register(server, _safe, _doc,
                   RequestFailed)
 
 
-def main(worker=None, stdin=None, stdout=None, published: dict | None = None) -> int:
+def main(worker=None, stdin=None, stdout=None, published: dict | None = None,
+         hold=None, early: dict | None = None) -> int:
     """Serve over stdin/stdout (or the streams given: :mod:`.boot` passes its own) until the
     client exits. ``worker``: a diagnostics worker process started before this module was
     imported (:func:`.worker.spawn`), so it warms up meanwhile. ``published``: uri -> the
-    diagnostics (LSP dicts) already published for it (by :mod:`.boot`), for quick fixes."""
-    global _analyzer
+    diagnostics (LSP dicts) already published for it (by :mod:`.boot`), for quick fixes;
+    ``hold``: an event set once :mod:`.boot` has read the answer to the job it gave ``worker``;
+    ``early``: uri -> (version, text, that answer), filled by :mod:`.boot` when it comes (a
+    ``didOpen`` of that version and text is then not analysed again)."""
+    global _analyzer, _early
     logging.basicConfig(level=logging.WARNING)
-    _analyzer = Analyzer(worker)
+    _analyzer = Analyzer(worker, hold)
+    if early is not None:
+        _early = early
     conv = converters.get_converter()
     for uri, diags in list((published or {}).items()):
         _published.setdefault(uri, conv.structure(diags, list[T.Diagnostic]))

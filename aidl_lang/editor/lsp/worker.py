@@ -84,7 +84,8 @@ class Analyzer:
     TIMEOUT = 30.0         # seconds after which any job is stopped
     SPARE = True           # keep a second warm worker to take over from a killed one
 
-    def __init__(self, proc: subprocess.Popen | None = None) -> None:
+    def __init__(self, proc: subprocess.Popen | None = None,
+                 hold: threading.Event | None = None) -> None:
         self.proc: subprocess.Popen | None = None
         self.lock = asyncio.Lock()
         self.seq = 0
@@ -94,6 +95,7 @@ class Analyzer:
         self.editing = False                 # set by the server on the first change
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
+        self._hold = hold          # set when the start-up front has read its answer from proc
         self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
         self.facts: dict[str, dict] = {}              # uri -> its last solved analysis' solved_facts
 
@@ -103,13 +105,16 @@ class Analyzer:
         if self.proc is not None and self.proc.poll() is None:
             return
         proc, self._proc0 = self._proc0, None
+        hold, self._hold = self._hold, None
         if proc is None or proc.poll() is not None:
-            proc = spawn()
+            proc, hold = spawn(), None
         self.proc = proc
         if proc is not None:
-            threading.Thread(target=self._reader, args=(proc,), daemon=True).start()
+            threading.Thread(target=self._reader, args=(proc, hold), daemon=True).start()
 
-    def _reader(self, proc: subprocess.Popen) -> None:
+    def _reader(self, proc: subprocess.Popen, hold: threading.Event | None = None) -> None:
+        if hold is not None:       # the front's job comes first; its answer is the front's
+            hold.wait()
         for line in proc.stdout:
             try:
                 answer = json.loads(line)
