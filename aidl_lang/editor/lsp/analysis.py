@@ -28,7 +28,7 @@ from ... import registry as R
 from ...diagnostics import DiagnosticSink, Span
 from ...parser import _blank_logical_line, mask_comments, parse
 from . import plain
-from .plain import sink_json
+from .worker import diagnostics_json
 
 TYPE_MEMBERS = {"point": R.POINT_MEMBERS, "line": R.LINE_MEMBERS, "bbox": R.BBOX_MEMBERS}
 
@@ -105,32 +105,6 @@ def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None,
     from lsprotocol import converters
     return converters.get_converter().structure(
         diagnostics_json(src, path, solve, uri, values), list[T.Diagnostic])
-
-
-def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,
-                     values: dict[str, str] | None = None, extra: dict | None = None) -> list[dict]:
-    """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP ``Diagnostic`` dicts
-    (:mod:`.plain`).
-
-    ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
-    another file (an import) are put on line 1 with their location in the message.  When the
-    file solves and ``values`` is a dict, it receives the solved values of the named entities
-    (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`value_hover`; ``extra``, a
-    dict, receives what :func:`.hints.solved_facts` makes of the solved model (inlay hints and
-    degrees of freedom per structure).
-    """
-    from ...pipeline import compile_source
-    res = compile_source(src, path, do_solve=solve)
-    if res.ok and res.solve is not None and res.solve.converged and (
-            values is not None or extra is not None):
-        from ...api import Result
-        result = Result(res, path, src)
-        if values is not None:
-            values.update((v.name, v.text()) for v in result.values)
-        if extra is not None:
-            from .hints import solved_facts
-            extra.update(solved_facts(result))
-    return sink_json(src, path, res.sink.items, uri)
 
 
 def fix_edits(src: str, path: str, d) -> list[dict]:

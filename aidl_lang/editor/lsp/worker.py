@@ -28,11 +28,37 @@ import threading
 import time
 
 
+def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,
+                     values: dict[str, str] | None = None, extra: dict | None = None) -> list[dict]:
+    """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP ``Diagnostic`` dicts
+    (:mod:`.plain`; no lsprotocol import, so the worker process starts without it).
+
+    ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
+    another file (an import) are put on line 1 with their location in the message.  When the
+    file solves and ``values`` is a dict, it receives the solved values of the named entities
+    (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`.analysis.value_hover`; ``extra``, a
+    dict, receives what :func:`.hints.solved_facts` makes of the solved model (inlay hints and
+    degrees of freedom per structure).
+    """
+    from ...pipeline import compile_source
+    res = compile_source(src, path, do_solve=solve)
+    if res.ok and res.solve is not None and res.solve.converged and (
+            values is not None or extra is not None):
+        from ...api import Result
+        result = Result(res, path, src)
+        if values is not None:
+            values.update((v.name, v.text()) for v in result.values)
+        if extra is not None:
+            from .hints import solved_facts
+            extra.update(solved_facts(result))
+    from .plain import sink_json
+    return sink_json(src, path, res.sink.items, uri)
+
+
 def _serve() -> int:
     """The worker's loop: read a job per line, answer per line, until stdin closes."""
     import os
 
-    from .analysis import diagnostics_json
     parent = os.getppid()
 
     def watch():                      # end with the server, even in the middle of a job
@@ -174,7 +200,6 @@ class Analyzer:
             await self._settle()
             self.start()
             if self.proc is None:                        # no subprocess here: a thread
-                from .analysis import diagnostics_json
                 values: dict[str, str] = {}
                 extra: dict = {}
                 d = await loop.run_in_executor(None, diagnostics_json, text, path, solve, uri,
