@@ -202,6 +202,13 @@ class Assign(Node):
 
 
 @dataclass(eq=False, slots=True)
+class KindAssign(Assign):
+    """``KIND NAME = template(...)``: a template instance of structure kind ``kind``."""
+    kind: str
+    kind_span: Span
+
+
+@dataclass(eq=False, slots=True)
 class For(Node):
     var: str
     var_span: Span

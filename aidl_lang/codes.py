@@ -84,8 +84,15 @@ A `for` loop over something that is not a list, a call of a value, or indexing a
 """),
     "E0112": ("math error", "Division by zero, sqrt of a negative number, and similar."),
     "E0113": ("bad --set override", """
-`--set NAME=VALUE` names a param the file does not declare, or its value cannot be read.
-Declare overridable values with `param NAME = VALUE` at the top of the file.
+`--set NAME=VALUE` names a param the file does not declare, its value cannot be read, or the
+value is of another kind than the param's default (a length for an angle, a word for a
+number). The error names the `--set` argument (also a value given to `aidl_lang.compile`
+or a live-preview slider); the file is then compiled with the default, so its uses of the
+param are not blamed. Declare overridable values with `param NAME = VALUE` at the top of
+the file.
+
+    param leg = 100 mm
+    aidl check part.aidl --set leg=100 deg   # `leg` is a length like its default `100 mm`
 """),
     "E0114": ("import not found or not allowed", """
 `import "file.aidl"` resolves relative to the importing file and must stay inside that file's
@@ -263,6 +270,9 @@ cuts. Declare the hole in the common parent, so that it cuts everything united t
         solid shackle { s = Rectangle(center=(0, 14), width=30, height=8) }   # covers `key`
     }
     # fix: move `hole key { ... }` out of `body` into `lock`
+
+When the refill is intended (a boss over a relief cut, say), silence it for that pair only
+with `AllowOverlap(body.key, shackle)` written in `lock` (docs/language.md 4.5).
 """),
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
@@ -349,6 +359,15 @@ fit.
     #                 with hole `bracket.first_pattern[4]`
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0106": ("floor division used as a length", """
+`//` between two numbers or lengths is floor division (`7 // 2` is 3), and its result is used
+as a length, or is a length (`80 mm // 3` is 26 mm): the fraction is dropped, which is rarely
+meant for a size. Write `/` for division. `//` is read as floor division after an operand and
+before code (docs/language.md, "Comments"); if it was meant as a comment, write `#`.
+
+    r = Rectangle(center=(0, 0), width=80 // 3, height=10)   # 26 mm: write 80 / 3
+    w = 80 // width        # floor division by `width`; a comment is `# width`
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

@@ -54,6 +54,12 @@ class Interpreter(Statements, Calls, Expressions):
         self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
         self.model = Model()
         self.overrides = dict(overrides or {})
+        # `--set NAME=TEXT` with a unit for a param whose default is a bare number:
+        # NAME -> (TEXT, the value's dimension), see error()
+        self.override_units: dict[str, tuple] = {}
+        # id -> (value, the `//` node, its exact quotient): bare numbers made by floor
+        # division, warned about (W0106) if used as a length
+        self.floor_results: dict[int, tuple] = {}
         self.template_depth = 0
         self.n_geometry = 0
         self.loading: list[str] = []
@@ -150,12 +156,37 @@ class Interpreter(Statements, Calls, Expressions):
         return evaluate(lift(e), self.model.x)
 
     def error(self, e: EvalError) -> None:
+        if self.override_units and e.code in ("E0108", "E0109") and e.span is not None:
+            e = self._override_misuse(e)
+            if e is None:
+                return
         key = (e.code, e.span)
         if key in self.reported:         # the same error in every iteration of a loop: once
             return
         self.reported.add(key)
         self.sink.add(Diagnostic(e.code, e.message, e.span, "error", e.hint,
                                  labels=e.labels, suggestions=e.suggestions))
+
+    def _override_misuse(self, e: EvalError) -> EvalError | None:
+        """A unit mismatch at a use of a param given by ``--set NAME=TEXT`` with a unit while
+        its default is a bare number (``param leg = 40``, ``--set leg=100 deg``, used as a
+        length): the ``--set`` argument is the mistake, so the error names it (E0113), once
+        per param (``None`` for the later uses)."""
+        import re
+        src = self.sink.sources.get(e.span.file, "")
+        words = set(re.findall(r"[A-Za-z_]\w*", src[e.span.start:e.span.end]))
+        used = next((n for n in self.override_units if n in words), None)
+        if used is None:
+            return e
+        hit = self.override_units[used]
+        text, _dim = hit
+        if ("override", used) in self.reported:
+            return None
+        self.reported.add(("override", used))
+        return EvalError("E0113", f"`--set {used}={text}`: {e.message} (the value of `{used}`, "
+                         f"whose default in the file has no unit)", e.span,
+                         hint=f"give `{used}` a value of the kind used here; a bare number is "
+                              "read like one in the file (file units or degrees)")
 
     def warn_nonconst(self, what: str) -> None:
         self.sink.warning("W0103", f"{what} depends on solved geometry; its starting value is "

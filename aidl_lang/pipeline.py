@@ -264,18 +264,31 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
                 break
 
 
-def report_redundancies(sink: DiagnosticSink, result: SolveResult) -> None:
-    """W0401 for each user constraint implied by others (``aidl check --dof``)."""
-    from .solver.diagnose import redundancies
-    for red in redundancies(result.solver):
+def report_redundancies(sink: DiagnosticSink, result: SolveResult,
+                        seconds: float | None = None, max_rows: int | None = None) -> None:
+    """W0401 for each user constraint that others already imply (``aidl check``; what it
+    measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
+    (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
+    unknowns that it ranks."""
+    from .solver.diagnose import MAX_DENSE, redundancies
+    deadline = None if seconds is None else time.monotonic() + seconds
+    for red in redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE):
         c = red.constraint
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
-        labels = [Label(b.span, "implied by this", primary=False)
+        more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
+        labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
+                        primary=False)
                   for b in red.by[:4] if b.span is not None]
-        what = "partly redundant: part of it" if red.partly else "redundant: it"
-        source = by or "values already held (a constructor's dimensions or `Fixed`)"
-        sink.add(Diagnostic("W0401", f"`{c.describe()}` is {what} already follows from "
-                            f"{source}", c.span, "warning",
+        if red.partly:
+            msg = (f"`{c.describe()}` is partly redundant: part of what it says already "
+                   f"follows from {by}{more} (the rest still pins the model)")
+        elif by:
+            msg = (f"`{c.describe()}` is redundant: it follows from {by}{more}, so removing "
+                   "it would free nothing")
+        else:
+            msg = (f"`{c.describe()}` is redundant: it only restates values already held (a "
+                   "constructor's dimensions or `Fixed`), so removing it would free nothing")
+        sink.add(Diagnostic("W0401", msg, c.span, "warning",
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))
@@ -285,6 +298,23 @@ def _where(c) -> str:
     line = f"line {c.span.line}" if c.span is not None else "no line"
     what = f"held by a constructor ({line})" if c.implicit else line
     return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
+
+
+def _rigid_note(s) -> str:
+    """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
+    moved, never bent, so a conflict there may ask for a change of shape."""
+    rigid, todo = [], list(s.children.values())
+    while todo:
+        t = todo.pop()
+        if getattr(t, "rigid", False):
+            rigid.append(t)
+        else:
+            todo += t.children.values()
+    if not rigid:
+        return ""
+    names = ", ".join(f"`{t.path}`" for t in sorted(rigid, key=lambda t: t.path)[:3])
+    return (f". {names} {'is' if len(rigid) == 1 else 'are'} rigid (`Rigid(...)`): moved as "
+            "one body, never bent; if the shape must change, drop `Rigid` or constrain inside it")
 
 
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
@@ -320,7 +350,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others"),
+                  "others" + _rigid_note(first.owner)),
             labels=labels))
         shown += 1
     if shown:

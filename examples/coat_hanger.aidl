@@ -27,9 +27,8 @@ solid hanger {
             inner = Triangle((0, iy + k * (0 - iy)), (-k * width / 2, iy + k * (-drop - iy)),
                              (k * width / 2, iy + k * (-drop - iy)))
         }
-        # the opening follows the frame: parallel sides, centered, `bar` above the bottom
-        Parallel(opening.inner.ab, frame.ab)
-        Parallel(opening.inner.ca, frame.ca)
+        # the opening follows the frame: centered, `bar` above the bottom (its sides are
+        # parallel to the frame's already: both triangles keep the shapes written above)
         opening.bb.bottom == frame.bb.bottom + bar
         AlignCenterX(opening, frame)
 

@@ -49,8 +49,8 @@ solid handset {
         Horizontal(mouth_face)
         Equal(ear_face, mouth_face)
         Symmetric(a, f, axis)
-        Symmetric(c, d, axis)
-        Symmetric(g, h, axis)
+        c.y == d.y  # with the arc's center on the axis, c and d mirror each other
+        g.y == h.y  # (Symmetric would say the arc's center is on the axis a second time)
     }
 
     # speaker grille in the earpiece cup: a row of small holes made by a loop

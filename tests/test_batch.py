@@ -108,8 +108,9 @@ def test_local_pool_and_dask_give_the_same_rows(corpus, tmp_path):
         bad = by_id[f"broken-{k}"]
         assert bad["status"] == "error" and bad["errors"], bad
         assert all(e["code"].startswith("E") for e in bad["errors"])
-    syntax = by_id["broken-0"]["errors"][0]
-    assert (syntax["line"], syntax["column"]) == (1, 61)
+    # the `(` never closed (issue 28), then the missing value at the `}`
+    syntax = by_id["broken-0"]["errors"]
+    assert [(e["line"], e["column"]) for e in syntax] == [(1, 27), (1, 61)]
 
     # the examples and the plates compile, and their measures are right
     examples = [r for r in rows if r["path"] and "/examples/" in r["path"]]

@@ -346,7 +346,9 @@ def test_slash_slash_comments_and_hints():
     assert mask_comments("c = Circle((0, 0), radius=n//2) }") == "c = Circle((0, 0), radius=n//2) }"
     sink = DiagnosticSink()
     parse("solid s {\n    c = Circle((0, 0), radius=4 // 2 then\n}\n", "t.aidl", sink)
-    assert "floor division" in sink.items[0].hint
+    # the `(` never closed comes first (issue 28); the error at `then` keeps the `//` hint
+    assert sink.items[0].message == "`(` is never closed"
+    assert "floor division" in sink.items[1].hint
 
 
 _names = st.sampled_from(["n", "w", "count", "a_1", "self.width", "r.bb.width"])

@@ -1,4 +1,5 @@
-"""The freedom count on `aidl check`'s ok line (solver/diagnose.py `degrees_of_freedom(...,
+"""The freedom count on `aidl check`'s ok line (each structure's unknowns against its own rows
+and its ancestors' rows that use them) (solver/diagnose.py `degrees_of_freedom(...,
 floating=False)`) takes each structure's Jacobian out of the whole model's one, and ranks
 single-row blocks without an SVD: the same matrices, bit for bit, and the same counts as each
 structure's own tape and an SVD per block, on every example, test program and generated
@@ -37,6 +38,17 @@ def _system(solver, s) -> tuple:
     for c in s.children.values():
         params += list(solver.frame.get(id(c), ()))
     rows = solver.rows_of([s])
+    # and the rows of every ancestor that use one of these unknowns (issue 23), found here
+    # from the ancestors' own tape (the count finds them in the whole model's Jacobian)
+    chain, a = [], s.parent
+    while a is not None:
+        chain.append(a)
+        a = a.parent
+    anc = np.asarray(sorted(r for a in chain for r in solver.rows_of([a])), dtype=np.int64)
+    if len(anc) and params:
+        Ja = solver.tape(anc).jacobian(solver.x, np.asarray(sorted(params), dtype=np.int64),
+                                       dense=True)
+        rows = np.union1d(rows, anc[np.any(Ja != 0, axis=1)]).astype(np.int64)
     sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
     cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
     return params, rows, cols
@@ -106,3 +118,76 @@ def test_block_rank_equals_an_svd_per_block(m, n, data):
     J = np.array(data.draw(st.lists(st.lists(_entry, min_size=n, max_size=n), min_size=m,
                                     max_size=m)), dtype=float)
     assert D._dense_block_rank(J) == _svd_rank(J)
+
+
+# ------------------------------------------------------------------ ancestors (issue 23)
+PINNED_BY_PARENT = """units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    Fixed(body)
+    hole bore {
+        c = Circle(center=(0, 0), radius=5)
+    }
+    CenterInside(bore, self)
+}
+"""
+
+PINNED_BY_GRANDPARENT = """assembly top {
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole bore { c = Circle(center=(0, 0), radius=5) }
+    }
+    Fixed(plate.body)
+    CenterInside(plate.bore, plate)
+}
+"""
+
+
+def _check(tmp_path, src, *flags):
+    import json
+    import subprocess
+    import sys
+    f = tmp_path / "p.aidl"
+    f.write_text(src)
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), *flags],
+                         capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout) if "--json" in flags else out.stdout
+
+
+@pytest.mark.parametrize("src", [PINNED_BY_PARENT, PINNED_BY_GRANDPARENT],
+                         ids=["parent", "grandparent"])
+def test_a_hole_placed_by_an_ancestor_is_not_floating(tmp_path, src):
+    """The hole's circle has no constraint of its own, but an ancestor's CenterInside reads it:
+    it is pinned, the ok line says fully constrained and --dof lists nothing floating."""
+    assert "; fully constrained)" in _check(tmp_path, src)
+    doc = _check(tmp_path, src, "--dof", "--json")
+    assert doc["freedom"] == "fully constrained"
+    assert [(d["structure"].split(".")[-1], d["dof"], d["floating"]) for d in doc["dof"]][-1] \
+        == ("bore", 0, [])
+    assert all(d["dof"] == 0 and d["floating"] == [] for d in doc["dof"])
+
+
+def test_without_the_ancestor_constraint_the_hole_floats(tmp_path):
+    """The control: the same part without the CenterInside, whose hole really is free."""
+    src = PINNED_BY_PARENT.replace("    CenterInside(bore, self)\n", "")
+    doc = _check(tmp_path, src, "--dof", "--json")
+    dof = {d["structure"]: d for d in doc["dof"]}
+    assert dof["plate.bore"]["dof"] == 2 and dof["plate.bore"]["floating"] == ["plate.bore.c"]
+    assert dof["plate"]["dof"] == 2 and dof["plate"]["floating"] == ["plate.bore (position)"]
+    assert doc["freedom"] == "4 degrees of freedom left, see --dof"
+
+
+def test_an_ancestor_row_pins_only_what_it_reads(tmp_path):
+    """RightOf in the parent fixes the child circle's x, not its y: one freedom left there."""
+    src = """assembly top {
+    solid a { c = Circle(center=(0, 0), radius=5)
+              Fixed(c) }
+    solid b { c = Circle(center=(20, 0), radius=5) }
+    Fixed(a)
+    RightOf(b, a, gap=3)
+}
+"""
+    doc = _check(tmp_path, src, "--dof", "--json")
+    dof = {d["structure"]: (d["dof"], d["floating"]) for d in doc["dof"]}
+    assert dof["top.b"] == (1, ["top.b.c"]) and dof["top.a"] == (0, [])

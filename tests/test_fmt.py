@@ -125,7 +125,7 @@ def test_syntax_error_is_refused_and_file_untouched(tmp_path):
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", str(p)],
                        capture_output=True, text=True)
     assert r.returncode == 1
-    assert "E0001" in r.stderr and "bad.aidl:3:1" in r.stderr
+    assert "E0001" in r.stderr and "bad.aidl:2:9" in r.stderr     # the `(` never closed
     assert p.read_text() == bad
 
 

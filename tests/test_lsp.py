@@ -176,7 +176,7 @@ def test_hover_primitive_constraint_template_and_member():
     assert "center: point" in h.contents.value
     gears = (ROOT / "examples" / "parts" / "gears.aidl").read_text()
     h = an.hover(gears, *pos(gears, "spur_gear"))
-    assert h.contents.value.startswith("```aidl-cad\ndef spur_gear(teeth=12")
+    assert h.contents.value.startswith("```aidl_cad\ndef spur_gear(teeth=12")
     assert "spur gear" in h.contents.value           # the comment above the def
     h = an.hover(TELEPHONE, *pos(TELEPHONE, "dial_r * cos"))
     assert "param dial_r = 34 mm" in h.contents.value

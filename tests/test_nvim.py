@@ -62,3 +62,125 @@ def test_vim_syntax_file_is_generated_and_fresh():
     assert text == vim_syntax(), "run `python editors/gen_grammar.py` and commit the result"
     assert "syntax keyword aidlCadPrimitive" in text and " Rectangle" in text
     assert "CenterInside" in text
+
+
+EDITOR_PROBE = r"""
+local out = {}
+vim.cmd('edit cad.aidl')
+local ok = vim.wait(60000, function() return #vim.lsp.buf_get_clients(0) > 0
+  and vim.lsp.buf_get_clients(0)[1].initialized end, 50)
+table.insert(out, 'attached=' .. tostring(ok))
+-- the default maps and options, buffer-local
+local k = vim.fn.maparg('K', 'n', false, true)
+table.insert(out, 'K=' .. tostring(k.buffer) .. ',' .. (k.rhs or ''))
+table.insert(out, 'omnifunc=' .. vim.bo.omnifunc)
+table.insert(out, 'formatexpr=' .. vim.bo.formatexpr)
+-- hover on `Circle` (line 3), drawn the way K draws it (Neovim 0.7's markdown): the code
+-- fence must be understood, so no ``` line is left in the float
+local params = vim.lsp.util.make_position_params()
+params.position = { line = 2, character = 7 }
+local res = vim.lsp.buf_request_sync(0, 'textDocument/hover', params, 30000)
+local hover
+for _, r in pairs(res or {}) do if r.result then hover = r.result end end
+local lines = vim.lsp.util.convert_input_to_markdown_lines(hover.contents)
+local buf = vim.api.nvim_create_buf(false, true)
+vim.lsp.util.stylize_markdown(buf, lines, {})
+local shown = vim.api.nvim_buf_get_lines(buf, 0, -1, false)
+local fences = 0
+for _, l in ipairs(shown) do if l:match('```') then fences = fences + 1 end end
+table.insert(out, 'hover1=' .. shown[1])
+table.insert(out, 'fences=' .. fences)
+table.insert(out, 'fencesyntax=' .. vim.api.nvim_buf_call(buf, function()
+  return vim.fn.synIDattr(vim.fn.synID(1, 1, 1), 'name') end))
+-- gq formats the whole file through the server
+vim.cmd('normal! gggqG')
+table.insert(out, 'formatted=' .. table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '|'))
+-- :AidlPreview starts `aidl serve` and opens the page with g:aidl_browser
+vim.g.aidl_browser = vim.fn.getcwd() .. '/browser.sh'
+vim.cmd('AidlPreview')
+local got = vim.wait(60000, function() return vim.fn.filereadable('url.txt') == 1
+  and #vim.fn.readfile('url.txt') > 0 end, 50)
+table.insert(out, 'url=' .. (got and vim.fn.readfile('url.txt')[1] or 'none'))
+table.insert(out, 'errmsg=' .. vim.v.errmsg)
+vim.fn.writefile(out, 'out.tmp')
+vim.loop.fs_rename('out.tmp', 'out.txt')
+vim.wait(120000, function() return vim.fn.filereadable('quit') == 1 end, 50)
+vim.cmd('qa!')
+"""
+
+
+def _nvim(tmp_path, probe: str, path: str, wait_for_url: bool = False):
+    (tmp_path / "probe.lua").write_text(probe)
+    env = {"PATH": path, "HOME": str(tmp_path)}
+    args = [NVIM, "--headless", "-u", "NONE", "-i", "NONE", "--cmd", f"set rtp^={PLUGIN}",
+            "-c", "filetype plugin on", "-c", "syntax on", "-c", "luafile probe.lua"]
+    return subprocess.Popen(args, cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, env=env)
+
+
+@pytest.mark.skipif(NVIM is None, reason="neovim is not installed (.ci/run installs it)")
+def test_neovim_maps_hover_fence_formatexpr_and_preview(tmp_path):
+    import urllib.request
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "cad.aidl").write_text(
+        "param w = 3 mm\nsolid plate {\n  c = Circle(center=(0,0),   radius=w)\n}\n")
+    (tmp_path / "browser.sh").write_text('#!/bin/sh\necho "$1" > url.txt\n')
+    (tmp_path / "browser.sh").chmod(0o755)
+    import time
+    p = _nvim(tmp_path, EDITOR_PROBE, f"{Path(sys.executable).parent}:/usr/bin:/bin")
+    result = tmp_path / "out.txt"
+    try:
+        # the probe leaves nvim (and its `aidl serve` job) running: wait for its report, check
+        # the page is served, then quit
+        deadline = time.monotonic() + 150
+        while not result.exists() and time.monotonic() < deadline and p.poll() is None:
+            time.sleep(0.1)
+        out = result.read_text() if result.exists() else p.communicate(timeout=10)[1]
+        got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+        assert got.get("attached") == "true", out
+        assert got["K"].startswith("1,") and "hover" in got["K"]
+        assert got["omnifunc"] == "v:lua.vim.lsp.omnifunc"
+        assert got["formatexpr"] == "v:lua.require'aidl_cad'.formatexpr()"
+        assert got["fences"] == "0", out                       # the fence was understood
+        assert got["hover1"].startswith("Circle(")
+        assert got["fencesyntax"] == "aidlCadPrimitive"         # and highlighted as aidl-cad
+        assert got["formatted"] == "param w = 3 mm|solid plate {|    c = Circle(center=(0, 0), radius=w)|}"
+        url = got["url"]
+        assert url.startswith("http://127.0.0.1:"), out
+        page = urllib.request.urlopen(url, timeout=30).read().decode()
+        assert "<html" in page.lower()
+        assert got["errmsg"] == ""
+    finally:
+        (tmp_path / "quit").write_text("")      # nvim quits, stopping its `aidl serve` job
+        try:
+            p.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            p.communicate()
+
+
+@pytest.mark.skipif(NVIM is None, reason="neovim is not installed (.ci/run installs it)")
+def test_neovim_without_aidl_says_so_in_one_line(tmp_path):
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "cad.aidl").write_text("solid plate {\n    c = Circle(center=(0, 0), radius=3)\n}\n")
+    probe = r"""
+vim.cmd('edit cad.aidl')
+vim.wait(300, function() return false end)
+local msgs = vim.api.nvim_exec('messages', true)
+io.stdout:write('ft=' .. vim.bo.filetype .. '\n')
+io.stdout:write('errmsg=' .. vim.v.errmsg .. '\n')
+io.stdout:write('messages=' .. msgs:gsub('\n', '|') .. '\n')
+vim.cmd('AidlInfo')
+io.stdout:write('info=' .. vim.api.nvim_exec('messages', true):gsub('\n', '|') .. '\n')
+vim.cmd('qa!')
+"""
+    p = _nvim(tmp_path, probe, "/usr/bin:/bin")
+    out, err = p.communicate(timeout=60)
+    got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+    assert got["ft"] == "aidl-cad"
+    assert got["errmsg"] == "", out + err                 # a warning, not an error
+    msgs = [m for m in got["messages"].split("|") if m]
+    assert len(msgs) == 1 and msgs[0].startswith("aidl-cad: no `aidl` found"), msgs
+    assert len(msgs[0]) < 80                              # fits the command line: no prompt
+    assert "Error detected" not in out + err
+    assert ".venv/bin/aidl" in got["info"] and "pip install" in got["info"]

@@ -512,8 +512,9 @@ def test_unexpected_character_and_unterminated_string():
 def test_unclosed_brace_at_end_of_file():
     _, sink = parse_src("solid s {\n    c = Circle((0, 0), 1)\n")
     (d,) = sink.items
-    assert d.code == "E0001" and "end of file" in d.message
-    assert d.span.line == 3
+    # at the `{` that is never closed, not at the end of the file (issue 28)
+    assert d.code == "E0001" and d.message == "`{` is never closed"
+    assert span4(d.span) == (1, 9, 1, 10) and d.hint == "add `}` at the end of the file"
 
 
 def test_nesting_limit():

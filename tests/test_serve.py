@@ -132,6 +132,11 @@ def test_bad_values_keep_the_last_picture(tmp_path):
     assert v["diagnostics"][0]["code"] == "E0124"
     v = s.set_params({"nosuch": "1"})
     assert v["diagnostics"][0]["code"] == "E0113"
+    # a slider value of the wrong kind: one error naming it, not the file (issue 28)
+    v = s.set_params({"w": "50 deg"})
+    assert not v["ok"] and v["svg"] == good
+    assert [(d["code"], d["message"]) for d in v["diagnostics"]] == [
+        ("E0113", "`--set w=50 deg`: `w` is a length like its default `40 mm`, got an angle")]
     # a save that changes w's default drops the slider value; others are kept
     s.set_params({"w": "60mm", "turns": "5"})
     f.write_text(RANGED.replace("param w = 40 mm", "param w = 50 mm"))

@@ -183,3 +183,58 @@ def test_shape_checks_follow_the_picture(tmp_path):
         assert "--set shackle_y=14mm" in page.locator("#setline").input_value()
         move_slider(page, "shackle_y", 30)               # moved off the hole: W0501 goes
         page.wait_for_function("!/W0501/.test(document.querySelector('#diagnostics').textContent)")
+
+
+PLATE = """units mm
+param w = 40 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=w, height=20)
+    hole bore { c = Circle(center=(0, 0), radius=5) }
+}
+"""
+
+
+def _wait_ready(page, url):
+    page.goto(url)
+    page.wait_for_function("window.aidl && window.aidl.ready")
+
+
+def test_reload_while_broken_shows_the_last_good_picture(tmp_path):
+    """Issue 28: a page opened or reloaded while the file is broken draws the picture the
+    server kept, marked as the last good one; with no good compile yet it says so."""
+    f = tmp_path / "plate.aidl"
+    f.write_text(PLATE)
+    with served(f) as url, chromium() as ctx:
+        page = open_page(ctx, url)
+        good = page.locator("#viewer svg").inner_html()
+        assert page.locator("#viewer svg #part-plate").count() == 1
+        save_latency(page, f, PLATE.replace("width=w,", "width=w"))       # a syntax error
+        assert page.locator("#diagnostics li.error").count() >= 1
+        page.reload()
+        page.wait_for_function("window.aidl && window.aidl.ready")
+        assert "error" in page.locator("#status").inner_text()
+        assert page.locator("#viewer svg #part-plate").count() == 1     # kept by the server
+        assert page.locator("#viewer svg").inner_html() == good
+        assert page.locator("#stale").is_visible()
+        assert page.locator("#stale").inner_text() == \
+            "showing the last good picture: the program has errors"
+        assert page.locator("#diagnostics li.error").count() >= 1
+        (ROOT / "out").mkdir(exist_ok=True)
+        page.screenshot(path=str(ROOT / "out" / "serve-reload-broken.png"))
+    g = tmp_path / "broken.aidl"
+    g.write_text(PLATE.replace("width=w,", "width=w"))
+    with served(g) as url, chromium() as ctx:
+        page = ctx.pages[0] if ctx.pages else ctx.new_page()
+        _wait_ready(page, url)
+        assert page.locator("#viewer svg").count() == 0
+        assert page.locator("#stale").is_visible()
+        assert page.locator("#stale").inner_text().startswith("no picture yet: the program has "
+                                                             "not compiled without errors")
+        page.reload()
+        page.wait_for_function("window.aidl && window.aidl.ready")
+        assert page.locator("#stale").inner_text().startswith("no picture yet")
+        page.screenshot(path=str(ROOT / "out" / "serve-no-picture-yet.png"))
+        # fixed: the picture appears and the note goes
+        save_latency(page, g, PLATE)
+        assert page.locator("#viewer svg #part-plate").count() == 1
+        assert not page.locator("#stale").is_visible()

@@ -257,6 +257,13 @@ def _read(path: str, as_json: bool) -> str | None:
         return None
 
 
+# plain `aidl check` looks for redundant constraints (W0401) for at most this long, in blocks
+# of at most this many rows sharing unknowns; `--dof` looks without these bounds
+# (docs/solver.md, section 6)
+REDUNDANCY_SECONDS = 1.0
+REDUNDANCY_ROWS = 1000
+
+
 def cmd_check(args) -> int:
     from ..api import compile as compile_program
     program = compile_program(path=args.file, overrides=_overrides(args.set),
@@ -268,10 +275,14 @@ def cmd_check(args) -> int:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
-        if args.dof and res.ok:
+        if res.ok:
             from ..pipeline import report_redundancies
+            if args.dof:
+                report_redundancies(res.sink, res.solve)
+            else:
+                report_redundancies(res.sink, res.solve, REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
+        if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
-            report_redundancies(res.sink, res.solve)
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                              "dof": d.dof, "floating": d.floating} for d in dofs]

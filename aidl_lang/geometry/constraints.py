@@ -194,6 +194,12 @@ def vertical_distance(ctx, a, b, distance, **_):
     return [Equation(_pt(b, "b").y - _pt(a, "a").y - distance.expr)]
 
 
+def at(ctx, a, b, dx, dy, **_):
+    """``a == b + (dx, dy)``: two linear equations (points in the writing structure's frame)."""
+    pa, pb = _pt(a, "a"), _pt(b, "b")
+    return [Equation(pa.x - pb.x - dx.expr), Equation(pa.y - pb.y - dy.expr)]
+
+
 def _own_delta(a, b):
     """``b - a`` of two points of the structure being run, as ``sub()`` makes it from their
     coordinates (``Lin({b: 1.0}) - Lin({a: 1.0})``), without the point values in between."""
@@ -482,7 +488,7 @@ def wider(ctx, a, b, **_):
 BUILDERS = {
     "Coincident": coincident, "Horizontal": horizontal, "Vertical": vertical, "Fixed": fixed,
     "Distance": distance, "HorizontalDistance": horizontal_distance,
-    "VerticalDistance": vertical_distance, "Length": length, "Radius": radius,
+    "VerticalDistance": vertical_distance, "At": at, "Length": length, "Radius": radius,
     "Diameter": diameter, "Equal": equal, "Parallel": parallel, "Perpendicular": perpendicular,
     "Tangent": tangent, "Symmetric": symmetric, "Midpoint": midpoint, "OnLine": on_line,
     "OnCircle": on_circle, "Concentric": concentric, "Angle": angle, "Collinear": collinear,

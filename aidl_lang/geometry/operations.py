@@ -142,7 +142,8 @@ class _Cloner:
         return v
 
 
-def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0):
+def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
+          indexed: bool = False):
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
     if isinstance(target, StructRef):
@@ -150,7 +151,7 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
         # operation is written in (paper rule: the original lies in that structure's subtree)
         home = target.struct.parent or S
         base = name or f"{target.struct.name}_{what}"
-        nm = base if k == 0 else f"{base}[{k}]"
+        nm = base if k == 0 and not indexed else f"{base}[{k}]"
         if nm in home.children:
             raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
                                  f"name the copy: `copy = ...`")
@@ -216,6 +217,10 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             at = [(p.x + ox, p.y + oy) for p in pts]
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
+    if kind == "AllowOverlap":
+        return _allow_overlap(args["a"], args["b"])
+    if kind == "Rigid":
+        return _rigid(ctx, [args[k] for k in "abc" if args.get(k) is not None])
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
         from .primitives import member
@@ -224,9 +229,20 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
         xf, rot, flip = _reflect(a, b)
         return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang)
+    if kind == "GridPattern":
+        return _grid(ctx, target, args, name)
+    if kind == "CornerPattern":
+        return _corners(ctx, target, args, name)
     n = _count(args["count"], kind)
-    out = Copies([target])
-    for k in range(1, n):
+    start = 0.0
+    if kind == "CircularPattern":
+        start = args.get("start_angle", Q.num(0.0)).const()
+        if start is None:
+            raise OperationError("CircularPattern start_angle must be known before solving")
+    # a start angle turns every instance: the original is then only the pattern's template
+    hide = start % (2 * math.pi) != 0.0
+    out = Copies() if hide else Copies([target])
+    for k in range(0 if hide else 1, n):
         if kind == "LinearPattern":
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
@@ -241,9 +257,194 @@ def apply(ctx, kind: str, args: dict, name: str | None):
                     raise OperationError("CircularPattern angle must be known before solving")
                 full = abs(abs(total) - 2 * math.pi) < 1e-9
                 step = total / (n if full or n == 1 else n - 1)
-            xf, rot, flip = _rotate(args["center"], step * k)
+            xf, rot, flip = _rotate(args["center"], start + step * k)
+        out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern", indexed=hide))
+    if hide:
+        _as_construction(target)
+    return out
+
+
+def _allow_overlap(a, b) -> None:
+    """``AllowOverlap(a, b)``: the hole among ``a`` and ``b`` (a hole structure, or a shape
+    in one) may be refilled by the other (a solid structure or a shape): W0501 is not
+    reported for that pair (:func:`aidl_lang.output.checks._intended`)."""
+    def hole_of(v):
+        if isinstance(v, StructRef) and v.struct.kind == "hole":
+            return v.struct
+        if isinstance(v, GeomRef) and v.geom.owner.kind == "hole":
+            return v.geom.owner
+        return None
+
+    def obj(v):
+        return v.struct if isinstance(v, StructRef) else v.geom if isinstance(v, GeomRef) else None
+    h, other = hole_of(a), b
+    if h is None:
+        h, other = hole_of(b), a
+    if h is None or obj(other) is None:
+        raise OperationError(f"AllowOverlap names a hole and what covers it (a solid or a "
+                             f"shape); got {_what(a)} and {_what(b)}")
+    if not hasattr(h, "overlap_ok"):
+        h.overlap_ok = set()
+    h.overlap_ok.add(obj(other))
+    return None
+
+
+def _rigid(ctx, items: list) -> None:
+    """``Rigid(a, b, ...)``: a structure is marked rigid (the solver of its ancestors moves it
+    only by its frame, :func:`aidl_lang.solver.hierarchy._rigid_below`); shapes keep their
+    points' starting offsets from the first shape's first point (two linear equations per
+    point, in the writing structure's frame): they move together, translation only."""
+    S = ctx.struct
+    pts: list = []
+    seen: set = set()
+    for v in items:
+        if isinstance(v, StructRef):
+            v.struct.rigid = True
+        elif isinstance(v, GeomRef):
+            for p in _placing_points(ctx, v.geom):
+                if id(p) not in seen:
+                    seen.add(id(p))
+                    pts.append(p)
+        else:
+            raise OperationError(f"Rigid takes structures and shapes, got {_what(v)}")
+    if len(pts) < 2:
+        return None
+    x0, y0 = pts[0].in_frame(S)
+    eqs = []
+    for p in pts[1:]:
+        x, y = p.in_frame(S)
+        dx, dy = ctx.value_of(x - x0), ctx.value_of(y - y0)
+        eqs += [Equation(x - x0 - dx), Equation(y - y0 - dy)]
+    ctx._add_constraint("Rigid", eqs, ctx.cur_span, None, {p.owner for p in pts})
+    return None
+
+
+_HELD_SHAPES = ("Circle", "RegularPolygon", "Star", "ArcSlot", "Trapezoid", "Ellipse", "Text")
+
+
+def _placing_points(ctx, g) -> list:
+    """The points that place shape ``g`` given its own implicit constraints: one for a shape
+    whose form is held (a Circle, a Rectangle by size, a rigid Polygon, ...), the two ends
+    of a bar or of a Rectangle by corners, else every point (no redundant rows)."""
+    P = g.points
+    free = ctx.model.free
+    if g.kind in _HELD_SHAPES or g.data.get("rigid") or (
+            g.kind in ("Rectangle", "RoundedRectangle", "Slot", "Triangle")
+            and "center" in P and not any(free[s.index] for s in g.scalars.values())):
+        return [P["center"] if "center" in P else next(iter(P.values()))]
+    if g.kind in ("Rectangle", "RoundedRectangle"):
+        if "start" in P:
+            return [P["start"], P["end"]]
+        if not any(free[s.index] for s in g.scalars.values()):
+            return [P["bottom_left"]]
+        return [P["bottom_left"], P["top_right"]]
+    return list(P.values())
+
+
+def _as_construction(target) -> None:
+    """Make ``target`` (geometry, or every shape of a structure's subtree) construction: solved
+    and referable, not drawn (the template of a pattern that moves every instance)."""
+    if isinstance(target, GeomRef):
+        target.geom.construction = True
+        return
+    todo = [target.struct]
+    while todo:
+        s = todo.pop()
+        for g in s.geometry:
+            g.construction = True
+        todo += s.children.values()
+
+
+def _grid(ctx, target, args: dict, name: str | None) -> Copies:
+    """GridPattern: ``rows`` x ``cols`` instances, copy (r, c) moved by (c * dx, r * dy);
+    the list in row-major order (index r * cols + c), the original first."""
+    rows, cols = _count(args["rows"], "GridPattern rows"), _count(args["cols"], "GridPattern cols")
+    if rows * cols > 10_000:
+        raise OperationError(f"GridPattern makes {rows} x {cols} = {rows * cols} instances, more "
+                             f"than 10000")
+    if "spacing" in args:
+        sp = args["spacing"]
+        span = ctx.cur_span
+        if isinstance(sp, Q):
+            d = ctx._coerce(sp, "length", span, "GridPattern", "spacing").expr
+            dx = dy = d
+        elif isinstance(sp, (tuple, list, PV)):
+            p = ctx._coerce(sp, "point", span, "GridPattern", "spacing")
+            dx, dy = p.x, p.y
+        else:
+            raise OperationError(f"GridPattern spacing is a length (the same both ways) or "
+                                 f"(dx, dy), got {type_name(sp)}")
+    else:
+        dx, dy = args["col_spacing"].expr, args["row_spacing"].expr
+    out = Copies([target])
+    for r in range(rows):
+        for c in range(cols):
+            if r == 0 and c == 0:
+                continue
+            xf, rot, flip = _translate(dx * float(c), dy * float(r))
+            out.append(_copy(ctx, target, xf, rot, flip, name, r * cols + c, "pattern"))
+    return out
+
+
+def _corners(ctx, target, args: dict, name: str | None) -> Copies:
+    """CornerPattern: the target's center (a shape's ``center``, else its bounding box's)
+    placed on the first point, a copy moved onto each other point; the points are a
+    Rectangle's corners (bottom_left, bottom_right, top_right, top_left), each ``inset``
+    toward the center along the rectangle's own sides, or the list ``at``."""
+    from .primitives import _pv
+    S = ctx.struct
+    span = ctx.cur_span
+    if "at" in args:
+        pts = list(args["at"])
+        if not pts:
+            raise OperationError("CornerPattern at: needs at least one point")
+        if len(pts) > 10_000:
+            raise OperationError("CornerPattern at: more than 10000 points")
+    else:
+        rect = args["rect"]
+        if not (isinstance(rect, GeomRef) and rect.geom.kind in ("Rectangle", "RoundedRectangle")):
+            raise OperationError(f"CornerPattern needs a Rectangle (e.g. `body`), got "
+                                 f"{_what(rect)}; for other points write `at=[p1, p2, ...]`")
+        g = rect.geom
+        inset = args.get("inset", Q.num(0.0)).expr
+        if "start" in g.points:      # a bar: its direction follows its ends
+            from .expr import hypot
+            bl, br, tl = (_pv(g.points[n], S) for n in ("bottom_left", "bottom_right", "top_left"))
+            wu, wv = hypot(br.x - bl.x, br.y - bl.y), hypot(tl.x - bl.x, tl.y - bl.y)
+            ux, uy = (br.x - bl.x) / wu, (br.y - bl.y) / wu
+            vx, vy = (tl.x - bl.x) / wv, (tl.y - bl.y) / wv
+        else:                        # the held rotation
+            rot = g.data.get("rotation", 0.0)
+            ux, uy = math.cos(rot), math.sin(rot)
+            vx, vy = -uy, ux
+        pts = []
+        for nm, (su, sv) in (("bottom_left", (1, 1)), ("bottom_right", (-1, 1)),
+                             ("top_right", (-1, -1)), ("top_left", (1, -1))):
+            p = _pv(g.points[nm], S)
+            ox, oy = su * ux + sv * vx, su * uy + sv * vy
+            pts.append(PV(p.x + inset * ox, p.y + inset * oy, None, p.owners))
+    ref = None
+    if isinstance(target, GeomRef):
+        from .primitives import member
+        ref = member(target.geom, "center", S)
+    if not isinstance(ref, PV):
+        ref = ctx.member(ctx.member(target, "bb", span), "center", span)
+    p0 = pts[0]
+    ctx._add_constraint("CornerPattern", [Equation(ref.x - p0.x), Equation(ref.y - p0.y)],
+                        span, None, set(ref.owners) | set(p0.owners))
+    out = Copies([target])
+    for k, p in enumerate(pts[1:], 1):
+        xf, rot, flip = _translate(p.x - p0.x, p.y - p0.y)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
     return out
+
+
+def _what(v) -> str:
+    if isinstance(v, GeomRef):
+        return f"a {v.geom.kind}"
+    if isinstance(v, StructRef):
+        return f"structure `{v.struct.name}`"
+    return type_name(v)
 
 
 # ------------------------------------------------------------------ rendering

@@ -80,7 +80,17 @@ def _build_Point(ctx, g, a):
 
 
 def _build_Line(ctx, g, a):
-    g.points["start"] = ctx.point(a["start"], "start")
+    s = g.points["start"] = ctx.point(a["start"], "start")
+    if "length" in a:               # polar: from start, length and angle held
+        _positive(a["length"], "length", "Line")
+        L = _const(ctx, a["length"], "Line length")
+        t = _const(ctx, a["angle"], "Line angle")
+        ox, oy = L * math.cos(t), L * math.sin(t)
+        sx, sy = ctx.value_of(var(s.ix)), ctx.value_of(var(s.iy))
+        e = g.points["end"] = ctx.point(PV(sx + ox, sy + oy), "end")
+        ctx.internal(g, [Equation(var(e.ix) - var(s.ix) - ox),
+                         Equation(var(e.iy) - var(s.iy) - oy)], "Line length and angle")
+        return
     g.points["end"] = ctx.point(a["end"], "end")
 
 
@@ -150,7 +160,49 @@ def _rect_frame(ctx, g, a):
     return _cos_sin(rot)
 
 
+def _build_bar(ctx, g, a):
+    """Rectangle(start, end, width): a bar ``width`` wide along the segment start-end, which
+    is its center line; its own up direction runs from start to end, so ``height`` is the
+    segment's length (free) and ``width`` (held) is across; ``bottom`` is the start's end,
+    ``top`` the end's.  The direction follows the two points (four quadratic equations)."""
+    _positive(a["width"], "width", g.kind)
+    s = g.points["start"] = ctx.point(a["start"], "start")
+    e = g.points["end"] = ctx.point(a["end"], "end")
+    sx, sy = ctx.value_of(var(s.ix)), ctx.value_of(var(s.iy))
+    ex, ey = ctx.value_of(var(e.ix)), ctx.value_of(var(e.iy))
+    L0 = math.hypot(ex - sx, ey - sy)
+    if L0 <= 1e-9 * max(1.0, abs(sx), abs(sy)):
+        raise PrimitiveError("a Rectangle along a segment needs start and end apart (they "
+                             f"start at the same point ({sx:g}, {sy:g}))")
+    w = ctx.scalar(a["width"], "width", held=True)
+    h = ctx.new_scalar(L0, "height", held=False)
+    wv = ctx.value_of(var(w.index))
+    ux, uy = (ey - sy) / L0, -(ex - sx) / L0            # across: the bar's own +x
+    g.data["rotation"] = math.atan2(uy, ux)
+    W, H = var(w.index) * 0.5, var(h.index)
+    DX, DY = var(e.ix) - var(s.ix), var(e.iy) - var(s.iy)
+    names = ("bottom_left", "bottom_right", "top_right", "top_left")
+    eqs = [Equation(H - hypot(DX, DY))]
+    for nm, base, sg in zip(names, (s, s, e, e), (-1.0, 1.0, 1.0, -1.0)):
+        bx, by = ctx.value_of(var(base.ix)), ctx.value_of(var(base.iy))
+        p = g.points[nm] = ctx.point(PV(bx + sg * wv / 2 * ux, by + sg * wv / 2 * uy), nm)
+        # p = base + sg * (w / 2) * (DY, -DX) / H, times H
+        eqs += [Equation((var(p.ix) - var(base.ix)) * H - W * DY * sg),
+                Equation((var(p.iy) - var(base.iy)) * H + W * DX * sg)]
+    g.scalars["width"], g.scalars["height"] = w, h
+    ctx.internal(g, eqs, "Rectangle along a segment")
+    bl, br, tr, tl = (g.points[n] for n in names)
+    for nm, (p, q) in {"bottom": (bl, br), "right": (br, tr), "top": (tl, tr), "left": (bl, tl)}.items():
+        edge = Geometry("Line", ctx.struct, g.span, name=f"{g.name}.{nm}" if g.name else nm,
+                        points={"start": p, "end": q}, construction=True)
+        edge.data["part_of"] = g
+        g.parts[nm] = edge
+    g.closed = True
+
+
 def _build_Rectangle(ctx, g, a):
+    if "start" in a:
+        return _build_bar(ctx, g, a)
     ux, uy = _rect_frame(ctx, g, a)
     vx, vy = -uy, ux
     names = ("bottom_left", "bottom_right", "top_right", "top_left")
@@ -558,6 +610,25 @@ def _build_Hull(ctx, g, a):
 
 
 def _build_Slot(ctx, g, a):
+    if "angle" in a:                # polar: from start (an end arc's center) by length, angle
+        _positive(a["length"], "length", "Slot")
+        _positive(a["width"], "width", "Slot")
+        L = _const(ctx, a["length"], "length")
+        W = _const(ctx, a["width"], "width")
+        if L < W:
+            raise PrimitiveError(f"a Slot's length ({L:g} mm, end to end) must be at least its "
+                                 f"width ({W:g} mm)")
+        t = _const(ctx, a["angle"], "Slot angle")
+        ox, oy = (L - W) * math.cos(t), (L - W) * math.sin(t)
+        s = ctx.point(a["start"], "start")
+        sx, sy = ctx.value_of(var(s.ix)), ctx.value_of(var(s.iy))
+        e = ctx.point(PV(sx + ox, sy + oy), "end")
+        ctx.internal(g, [Equation(var(e.ix) - var(s.ix) - ox),
+                         Equation(var(e.iy) - var(s.iy) - oy)], "Slot length and angle")
+        g.scalars["radius"] = ctx.new_scalar(W / 2, "radius", held=True)
+        g.points["start"], g.points["end"] = s, e
+        g.closed = True
+        return
     if "center" in a:
         _positive(a["length"], "length", "Slot")
         _positive(a["width"], "width", "Slot")

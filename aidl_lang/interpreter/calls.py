@@ -261,6 +261,8 @@ class Calls:
                     e = v.expr
                     if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
                             and not e.terms:    # a bare number: file units or degrees
+                        if self.floor_results and want == LEN and id(v) in self.floor_results:
+                            self._floor_used(v, _arg_span(node, where, ix))
                         c = _new(Lin)
                         c.terms = {}
                         f = self.file
@@ -475,6 +477,12 @@ class Calls:
         raise EvalError("E0109", f"expected a length, got a {dim_name(q.dim)}", span,
                         hint="give a length unit such as `mm` or `in`")
 
+    def _floor_used(self, v: Q, span) -> None:
+        """A bare number made by ``//`` is used as a length at ``span``: W0106."""
+        q, node, exact = self.floor_results[id(v)]
+        if q is v:
+            self.floor_as_length(node, exact, q, span)
+
     def _coerce(self, v, typ: str, span, fname: str, aname: str):
         t = type(v)                    # the common cases first: nothing to convert
         if t is Q:
@@ -506,6 +514,8 @@ class Calls:
             if v.dim == want:
                 return v
             if v.dim == NUM:
+                if self.floor_results and typ == "length" and id(v) in self.floor_results:
+                    self._floor_used(v, span)
                 k = self.unit_scale if typ == "length" else DEG
                 e = v.expr
                 if type(e) is Lin and not e.terms:     # a number: what mul() gives, directly

@@ -354,6 +354,47 @@ class Expressions:
             raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span)
         return self._q_op(op, l, r, e)
 
+    def floor_as_length(self, e: A.BinOp, exact: float, q: Q, use) -> None:
+        """W0106: the floor division ``e`` (exactly ``exact``, floored to ``q``) gives a length
+        (``80 mm // 3``) or is used as one at ``use`` (``width=80 // 3``): ``//`` is floor
+        division (docs/language.md, *Comments*), and a truncated length is rarely what was
+        meant.  Once per ``//``.  The fix replaces the operator with ``/``; the hint also says
+        how to write a comment when the right operand is a single word ending the line (the
+        ``// comment`` reading the rule did not take)."""
+        from ..diagnostics import Fix, Label, Span
+        key = ("W0106", e.span)
+        if key in self.reported:
+            return
+        self.reported.add(key)
+        src = self.sink.sources.get(e.span.file, "")
+        mid = src[e.left.span.end:e.right.span.start]
+        k = mid.find("//")
+        fix = None
+        if k >= 0:
+            at = e.left.span.end + k
+            line = src.count("\n", 0, at) + 1
+            col = at - src.rfind("\n", 0, at)
+            fix = Fix(Span(e.span.file, line, col, line, col + 2, at, at + 2), "/")
+        whole = src[e.span.start:e.span.end]
+        value = f"{q.const():g}" + (" mm" if q.dim == LEN else "")
+        hint = "write `/` for division; `//` is floor division"
+        if isinstance(e.right, A.Name):
+            end = src.find("\n", e.right.span.end)
+            rest = src[e.right.span.end:len(src) if end < 0 else end]
+            if not rest.strip() or rest.strip().startswith("#"):
+                hint += (f"; if `// {e.right.id}` was meant as a comment, write "
+                         f"`# {e.right.id}` (`//` after an operand and before a single word "
+                         "is read as floor division)")
+        labels = [] if use is e.span else [Label(use, "used as a length here", primary=False)]
+        if q.dim in (NUM, LEN):
+            msg = (f"`{whole}` is floor division: it gives {value} (the whole part of "
+                   f"{exact:.6g}), used as a length")
+        else:
+            msg = (f"`{whole}` is floor division of a number by a length: it gives "
+                   f"{q.const():g} per mm, neither a number nor a length")
+            fix = None                      # `/` would not make it a length either
+        self.sink.warning("W0106", msg, e.span, hint, labels=labels, fix=fix)
+
     def _q_op(self, op: str, l: Q, r: Q, e: A.BinOp):
         """``l op r`` for two numbers (:class:`Q`): units checked, constants folded."""
         own = l.owners | r.owners
@@ -377,7 +418,14 @@ class Expressions:
             if cb == 0:
                 raise EvalError("E0112", "division by zero", e.right.span)
             if op == "//":
-                return Q.num(math.floor(ca / cb), mul_dim(l.dim, r.dim, -1))
+                q = Q.num(math.floor(ca / cb), mul_dim(l.dim, r.dim, -1))
+                if q.dim == LEN:            # `80 mm // 3`: a length cut to whole mm
+                    self.floor_as_length(e, ca / cb, q, e.span)
+                elif q.dim == NUM:          # a count, unless it is used as a length
+                    self.floor_results[id(q)] = (q, e, ca / cb)
+                elif l.dim == NUM:          # `80 // width`: a number by a length
+                    self.floor_as_length(e, ca / cb, q, e.span)
+                return q
             return Q.num(math.fmod(ca, cb) if ca * cb >= 0 else ca - cb * math.floor(ca / cb), d)
         if op == "**":
             cb = r.const()

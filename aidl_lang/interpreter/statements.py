@@ -119,10 +119,16 @@ class Statements:
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
                     overridden = st.name in self.overrides and is_main
+                    val = self.eval(st.value)
                     if overridden:
-                        val = self._eval_override(st.name, self.overrides[st.name], fctx)
-                    else:
-                        val = self.eval(st.value)
+                        try:
+                            val = self._eval_override(st.name, self.overrides[st.name], fctx,
+                                                      val)
+                        except EvalError as e:
+                            # one error that names the `--set` argument; the file goes on
+                            # with the default, so nothing in it is blamed for the value
+                            self.error(e)
+                            overridden = False
                     if st.options:
                         try:
                             fctx.param_ranges[st.name] = self._param_range(st, val, overridden)
@@ -189,17 +195,58 @@ class Statements:
                             st.value.span, hint=f"change the value or `{bad}`")
         return out
 
-    def _eval_override(self, name: str, text: str, fctx: FileCtx):
+    def _eval_override(self, name: str, text: str, fctx: FileCtx, default=None):
+        """The value of ``--set NAME=TEXT`` (also ``aidl_lang.compile(overrides=...)`` and the
+        live preview's sliders) for the param whose value in the file is ``default``.  Raises
+        E0113, naming the ``--set`` argument, when ``TEXT`` does not read as a value or is of
+        another kind than the default (a length for an angle, a word for a number): that one
+        error, not the errors the wrong value would cause where the param is used (issue
+        28).  A bare number stands for a length or an angle like a bare number in the file;
+        a unit given for a param whose default is a bare number is checked where it is used
+        (:meth:`override_misuse`)."""
+        from ..geometry.values import ANG, dim_name
         from ..parser import ParseError, parse_expression
+        arg = f"`--set {name}={text}`"
+        want = type_name(default) if default is not None else "value"
+        if isinstance(default, Q):
+            shown = _fmt_q(default.const(), default.dim) if default.const() is not None \
+                else None
+            like = _a(dim_name(default.dim)) + (f" like its default `{shown}`" if shown else "")
+            example = {LEN: f"`--set {name}=40mm`", ANG: f"`--set {name}=30deg`"}.get(
+                default.dim, f"`--set {name}=4`")
+        elif isinstance(default, bool):
+            like, example = "true or false", f"`--set {name}=true`"
+        else:
+            like, example = _a(want), f"`--set {name}=...`"
         try:
             node = parse_expression(text, "<--set>", self.sink)
         except ParseError:
-            raise EvalError("E0113", f"`--set {name}={text}`: cannot read `{text}` as a value",
-                            None, hint="write a number with an optional unit, e.g. `--set width=40mm`")
+            raise EvalError("E0113", f"{arg}: cannot read `{text}` as a value", None,
+                            hint=f"`{name}` is {like}: write a number with an optional unit, "
+                                 f"e.g. {example}")
         if isinstance(node, A.Name) and fctx.scope.lookup(node.id)[1] is None \
                 and node.id not in CONSTANTS:
+            if isinstance(default, (Q, bool)):
+                raise EvalError("E0113", f"{arg}: `{text}` is not a number or a known name, and "
+                                f"`{name}` is {like}", None, hint=f"write e.g. {example}")
             return text                         # a bare word: a string
-        return self.eval(node)
+        try:
+            val = self.eval(node)
+        except EvalError as e:
+            raise EvalError("E0113", f"{arg}: {e.message}", None, hint=e.hint,
+                            suggestions=e.suggestions)
+        if isinstance(default, Q) and isinstance(val, Q):
+            a, b = default.dim, val.dim
+            if a != b and NUM not in (a, b):
+                raise EvalError("E0113", f"{arg}: `{name}` is {like}, got {_a(dim_name(b))}",
+                                None, hint=f"give it in {_a(dim_name(a))} unit, e.g. {example}")
+            if a == NUM and b != NUM:
+                self.override_units[name] = (text, b)
+        elif isinstance(default, Q) or isinstance(default, bool):
+            if not (isinstance(default, bool) and isinstance(val, bool)):
+                raise EvalError("E0113", f"{arg}: `{name}` is {like}, got {_a(type_name(val))}", None,
+                                hint=f"write e.g. {example}")
+        return val
 
     def _import(self, st: A.Import, fctx: FileCtx) -> None:
         from ..parser import parse
@@ -317,6 +364,8 @@ class Statements:
             self._expr_stmt(st.expr)
         elif t is A.StructDecl:
             self._struct_decl(st)
+        elif t is A.KindAssign:
+            self._assign(st)
         elif isinstance(st, A.ThicknessDecl):
             self._thickness(st)
         elif t is A.Assert:
@@ -398,9 +447,17 @@ class Statements:
             callee = self._callee(v.func)
             if type(callee) is Template:
                 self._check_new_name(name, st.name_span, self._need_struct(st.span))
-                ref = self._instantiate(callee, v, name + self._loop_suffix())
+                ref = self._instantiate(callee, v, name + self._loop_suffix(),
+                                        kind=self._kind_of(st))
                 self.scope.vars[name] = ref
                 return
+        if type(st) is A.KindAssign:
+            self._kind_of(st)
+            raise EvalError("E0108", f"`{st.kind} {name} = ...` makes a template instance of "
+                            f"kind {st.kind}, but the value is not a template call",
+                            st.kind_span,
+                            hint=f"write `{st.kind} {name} {{ ... }}` around geometry, or call "
+                                 f"a template: `{st.kind} {name} = outline(...)`")
         if name in CONSTANTS or name == "self":
             raise EvalError("E0107", f"`{name}` is a built-in name and cannot be assigned",
                             st.name_span, hint="choose another name")
@@ -422,6 +479,18 @@ class Statements:
                 if isinstance(item, GeomRef) and not item.geom.name:
                     item.geom.name = f"{name}[{i}]"
         self.scope.vars[name] = val
+
+    def _kind_of(self, st) -> str | None:
+        """The structure kind written before a template instance's name (``hole h = t()``),
+        or None for a plain assignment."""
+        if type(st) is not A.KindAssign:
+            return None
+        if st.kind not in A.STRUCTURE_KINDS:
+            raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
+                            hint="an instance's kind is `solid`, `hole`, `drawing` or "
+                                 "`assembly`: `hole h = outline(...)`",
+                            suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
+        return st.kind
 
     def _call_statement(self, node: A.Call, callee, name: str | None):
         """What ``eval`` does for a call that is a statement's whole value, with its callee
@@ -508,7 +577,10 @@ class Statements:
         return True
 
     # ------------------------------------------------------------------ templates
-    def _instantiate(self, t: Template, call: A.Call, name: str) -> StructRef:
+    def _instantiate(self, t: Template, call: A.Call, name: str,
+                     kind: str | None = None) -> StructRef:
+        """Instance ``name`` of template ``t`` called by ``call``, a child of the structure
+        being run; ``kind`` (from ``hole h = t(...)``) replaces the template's own kind."""
         parent = self._need_struct(call.span)
         d = t.node
         if self.template_depth >= MAX_TEMPLATE_DEPTH:
@@ -533,7 +605,7 @@ class Statements:
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
         self.step(call.span)
-        child = self._new_structure(name, d.kind, parent, call.span, template=d.name)
+        child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         saved_file = self.file
         tscope = Scope(t.scope, child, t.scope.file)
@@ -732,6 +804,10 @@ def _definition_lines(stmts, out=None) -> dict[str, int]:
             if st.orelse is not None:
                 _definition_lines(st.orelse.stmts, out)
     return out
+
+
+def _a(what: str) -> str:
+    return ("an " if what[:1] in "aeiou" else "a ") + what
 
 
 def _fmt_q(v: float, dim) -> str:

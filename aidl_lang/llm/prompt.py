@@ -1,7 +1,8 @@
 """The system prompt for an LLM that writes AIDL (``aidl prompt``).
 
-Built from the registry (every primitive, constraint, structural relation, operation, synonym
-and function with its signature and one-line doc) and from a few bundled example programs, so
+Built from the registry (every primitive, constraint, structural relation, operation and
+function with its signature and one-line doc; of the synonyms only those that swap their
+arguments, since the others are accepted silently) and from a few bundled example programs, so
 it never drifts from the implementation.  It is kept compact because a model reads it on every
 call: :func:`word_count` measures it (about 0.75 words per token for English and code).
 """
@@ -91,13 +92,9 @@ def vocabulary() -> str:
         if rows:
             out.append(f"{title}:\n" + "\n".join(rows))
     out.append(members())
-    by_canon: dict[str, list[str]] = {}
-    for syn, canon in SYNONYMS.items():
-        if syn not in SWAPPED:
-            by_canon.setdefault(canon, []).append(syn)
-    syn = "; ".join(f"{c}: {', '.join(s)}" for c, s in by_canon.items())
-    swapped = " ".join(f"{s}(a, b) means {SYNONYMS[s]}(b, a)." for s in SWAPPED)
-    out.append(f"Synonyms (same meaning): {syn}. {swapped}")
+    # other names a model guesses (Orthogonal, ConvexHull, ...) are accepted silently and
+    # need no words here; only the ones with swapped arguments change the meaning
+    out.append(" ".join(f"{s}(a, b) means {SYNONYMS[s]}(b, a)." for s in SWAPPED))
     out.append("Functions: " + ", ".join(f"{n}" for n in FUNCTIONS) + "; constants pi, tau, "
                "true, false; units " + ", ".join(list(UNITS_LENGTH) + list(UNITS_ANGLE)) + ".")
     return "\n\n".join(out)

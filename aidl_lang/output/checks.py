@@ -87,17 +87,46 @@ def _part_of(s: Structure, roots) -> Structure | None:
     return None
 
 
-def _contributors(d: Drawing, a: Structure, skip: Structure | None = None):
-    """What a solid ``a`` unites: (name, span, shape) of its own faces and solid children."""
+def _contributors(d: Drawing, a: Structure, skip: Structure | None = None,
+                  objects: bool = False):
+    """What a solid ``a`` unites: (name, span, shape) of its own faces and solid children
+    (``objects``: (name, span, shape, the Geometry or Structure))."""
     out = []
     for g, f in d.own.get(a, []):
-        out.append((f"`{g.label}`", g.span, f))
+        out.append((f"`{g.label}`", g.span, f, g) if objects else (f"`{g.label}`", g.span, f))
     for c in a.children.values():
         if c is skip or c.kind not in ("solid", "hole") or c.kind == "hole":
             continue
         if c in d.shapes:
-            out.append((f"solid `{c.path}`", c.span, d.shapes[c]))
+            item = (f"solid `{c.path}`", c.span, d.shapes[c])
+            out.append(item + (c,) if objects else item)
     return out
+
+
+def _intended(hole: Structure, owner: Structure, obj) -> bool:
+    """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
+    the solid it cuts) with ``x`` the refilling ``obj`` (a shape or a solid), a structure
+    around it, or a shape inside it."""
+    allowed: set = set()
+    s = hole
+    while s is not None:
+        allowed |= getattr(s, "overlap_ok", set())
+        if s is owner:
+            break
+        s = s.parent
+    if not allowed:
+        return False
+    t = obj if isinstance(obj, Structure) else obj.owner
+    if obj in allowed:
+        return True
+    if isinstance(obj, Structure) and any(not isinstance(a, Structure) and a.owner.is_within(obj)
+                                          for a in allowed):
+        return True                  # a shape named in AllowOverlap, inside this solid
+    while t is not None:
+        if t in allowed:
+            return True
+        t = t.parent
+    return False
 
 
 def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
@@ -429,20 +458,25 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None) -> str
     if not _significant(refilled, cut_area):
         return
     # who refills it: the other contributors of each ancestor between the owner and the part
-    culprits, node = [], s
+    culprits, node, intended = [], s, 0
     while node is not part and node.parent is not None:
         a = node.parent
-        for name, span, shp in _contributors(d, a, skip=node):
+        for name, span, shp, obj in _contributors(d, a, skip=node, objects=True):
             if _significant(_area(cut.region ^ shp), cut_area):
-                culprits.append((name, span, a))
+                if _intended(h, s, obj):        # AllowOverlap(hole, this): not reported
+                    intended += 1
+                    continue
+                culprits.append((name, span, a, obj))
         if node.parent is part:
             break
         node = a
+    if intended and not culprits:
+        return
     survives = max(0.0, cut_area - refilled)
     who = ", ".join(c[0] for c in culprits[:3]) or "a solid united later"
     common = culprits[0][2] if culprits else part
     labels = [Label(span, "refills the hole", primary=False)
-              for _, span, _ in culprits[:3] if span is not None]
+              for _, span, _, _ in culprits[:3] if span is not None]
     sink.warning(
         "W0501",
         f"hole `{h.path}` is refilled by {who}: only {_pct(survives, cut_area)} of it still "
@@ -450,7 +484,20 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None) -> str
         h.span, labels=labels,
         hint=(f"a hole cuts only the solid it is declared in (`{s.path}`); declare the hole in "
               f"`{common.path}`, the common parent, so that it cuts everything united there, "
-              "or move it clear of the solid that covers it"))
+              "or move it clear of the solid that covers it; if the overlap is intended, "
+              f"write `AllowOverlap({_rel(h, common)}, "
+              f"{_rel(culprits[0][3], common) if culprits else 'solid'})` in `{common.path}`"))
+
+
+def _rel(obj, base: Structure) -> str:
+    """How structure ``base``'s body names ``obj`` (a structure or a named shape below it)."""
+    if isinstance(obj, Structure):
+        path, own = obj.path, None
+    else:
+        path, own = obj.owner.path, obj.name or obj.kind
+    rel = path[len(base.path) + 1:] if path.startswith(base.path + ".") else \
+        ("" if path == base.path else path)
+    return ".".join(p for p in (rel, own) if p)
 
 
 def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,

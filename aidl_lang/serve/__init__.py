@@ -6,8 +6,8 @@
   ``watchfiles``) and the local-only guard.
 * ``static/``: the page (HTML, JS, CSS), shipped in the package; no CDN, works offline.
 
-Needs the ``serve`` extra: ``pip install -e ".[serve]"`` (Starlette, uvicorn, websockets,
-watchfiles).
+Starlette, uvicorn, websockets and watchfiles are core dependencies, imported only here (in
+:func:`serve`) and in :mod:`.app`, so the other commands do not load them.
 """
 from __future__ import annotations
 
@@ -27,8 +27,8 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
         import uvicorn
         from .app import create_app
     except ImportError as e:
-        print(f"aidl: error: `aidl serve` needs the serve extra ({e.name} is missing): "
-              "pip install 'aidl-lang[serve]'", file=sys.stderr)
+        print(f"aidl: error: `aidl serve` cannot import {e.name}, one of aidl's dependencies: "
+              "reinstall aidl (pip install -e /path/to/aidl)", file=sys.stderr)
         return 2
     if not Path(path).is_file():
         print(f"aidl: error: cannot read `{path}`: no such file", file=sys.stderr)

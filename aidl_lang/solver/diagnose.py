@@ -11,7 +11,9 @@ All three read the Jacobian ``J`` (rows: residuals, columns: unknowns) at a poin
   subset of the basis explains the dependency.  If all are satisfied, the later row is merely
   *redundant* (consistent, a warning).
 * **Degrees of freedom.**  For each structure, its own unknowns plus its children's frames,
-  against its own constraints: ``dof = unknowns - rank(J)``; a parameter whose column has a
+  against its own constraints and those of its ancestors that use these unknowns (a parent's
+  ``CenterInside(bore, self)`` places the hole's geometry), everything else held at the
+  solution: ``dof = unknowns - rank(J)``; a parameter whose column has a
   component in the null space of ``J`` is not determined, and its geometry (or child) *floats*.
 
 Dense linear algebra: used for one structure's system, or for the connected component of a
@@ -64,7 +66,7 @@ def _order_key(c: Constraint, r: int):
     return (0 if c.implicit else 1, pos, r)
 
 
-def dependencies(J: np.ndarray, order: list[int]):
+def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None):
     """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
 
     Yields ``(row, support, coef)`` for each row that is a combination of earlier independent
@@ -76,15 +78,17 @@ def dependencies(J: np.ndarray, order: list[int]):
     dependent row's coefficients come from one triangular solve ``L^T c = Q v`` instead of a
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
-    Jacobian (benchmarks/bench_diagnose.py)."""
-    from scipy.linalg import solve_triangular
+    Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (``time.monotonic()``,
+    looked at every 32 rows) it stops early."""
     m, n = J.shape
     cap = min(m, n)
     Q = np.zeros((cap, n))
     L = np.zeros((cap, cap))
     indep: list[int] = []
     k = 0
-    for r in order:
+    for step, r in enumerate(order):
+        if deadline is not None and not step % 32 and time.monotonic() > deadline:
+            return
         v = np.asarray(J[r], dtype=float)
         nv = float(np.linalg.norm(v))
         if nv == 0.0 or not np.isfinite(nv):
@@ -113,9 +117,18 @@ def dependencies(J: np.ndarray, order: list[int]):
             continue
         if not k:
             continue
-        c = solve_triangular(L[:k, :k], a, trans="T", lower=True, check_finite=False)
+        c = _solve_upper(L[:k, :k].T, a)
         big = np.abs(c) > 1e-6 * max(1.0, float(np.max(np.abs(c))))
         yield r, [indep[i] for i in np.flatnonzero(big)], c[big]
+
+
+def _solve_upper(U: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``U^-1 b`` for an upper-triangular ``U``: SciPy's triangular solve for a large basis,
+    NumPy's general solve for a small one (no SciPy import on a plain ``aidl check``)."""
+    if len(b) <= 200:
+        return np.linalg.solve(U, b)
+    from scipy.linalg import solve_triangular
+    return solve_triangular(U, b, lower=False, check_finite=False)
 
 
 def _components(J) -> np.ndarray:
@@ -259,6 +272,7 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             for s in g.scalars.values():
                 label_of[s.index] = g.label
     systems = []                       # (structure, params, rows, cols)
+    touching = _ancestor_rows(solver, x)
     for s in model.structures:
         params = list(solver.own.get(id(s), ()))
         for c in s.children.values():
@@ -267,6 +281,8 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 for i in solver.frame.get(id(c), ()):
                     label_of[i] = f"{c.path} (position)"
         rows = solver.rows_of([s])
+        if touching is not None and s.parent is not None and params:
+            rows = touching(s, rows, params)
         sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
         cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
         systems.append((s, params, rows, cols))
@@ -313,6 +329,70 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
     return out
+
+
+def _ancestor_rows(solver, x: np.ndarray):
+    """``touching(s, rows, params)``: structure ``s``'s own ``rows`` and the rows of its
+    ancestors that use one of ``params`` (its own unknowns and its children's frames), in
+    increasing order; ``None`` when no structure has a parent.
+
+    A parent may constrain its descendants' geometry (``CenterInside(bore, self)`` reads the
+    hole's circle; validity rule 2): at the solution those rows pin the child's unknowns as
+    much as the child's own constraints do, so the count holds them too (issue 23: a hole
+    placed by its parent was counted, and listed by ``--dof``, as floating).  The rows are
+    found from the sparsity of the whole model's Jacobian (one evaluation over every free
+    column)."""
+    model = solver.model
+    if not any(s.parent is not None for s in model.structures):
+        return None
+    cols = np.flatnonzero(solver.free)
+    if not len(cols):
+        return None
+    whole = solver.whole
+    if whole.n_rows * len(cols) <= DENSE_CELLS:       # numpy only (no SciPy on a cold check)
+        nz_r, nz_c = np.nonzero(whole.jacobian(x, cols, dense=True).T)
+        indices, indptr = nz_c, np.searchsorted(nz_r, np.arange(len(cols) + 1))
+    else:
+        C = whole.jacobian(x, cols).tocsc()
+        indices, indptr = C.indices, C.indptr
+    n_rows = whole.n_rows
+    where = np.full(len(solver.free), -1, dtype=np.int64)
+    where[cols] = np.arange(len(cols))
+    anc_cache: dict = {}
+
+    def ancestors_rows(s) -> np.ndarray:
+        hit = anc_cache.get(id(s))
+        if hit is None:
+            chain = []
+            a = s.parent
+            while a is not None:
+                chain.append(a)
+                a = a.parent
+            hit = np.asarray(sorted(r for a in chain for r in solver.rows_of([a])),
+                             dtype=np.int64)
+            anc_cache[id(s)] = hit
+        return hit
+
+    def touching(s, rows: np.ndarray, params: list) -> np.ndarray:
+        anc = ancestors_rows(s)
+        if not len(anc):
+            return rows
+        k = where[np.asarray(params, dtype=np.int64)]
+        k = k[k >= 0]
+        if not len(k):
+            return rows
+        used = np.zeros(n_rows, dtype=bool)        # masks, not np.intersect1d/union1d:
+        for j in k:                                 # those import numpy.ma (cold start)
+            used[indices[indptr[j]:indptr[j + 1]]] = True
+        extra = anc[used[anc]]
+        if not len(extra):
+            return rows
+        keep = np.zeros(n_rows, dtype=bool)
+        keep[rows] = True
+        keep[extra] = True
+        return np.flatnonzero(keep).astype(np.int64)
+
+    return touching
 
 
 def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
@@ -409,12 +489,36 @@ def freedom_text(dofs: list[StructureDof]) -> str:
     return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
 
 
-def redundancies(solver) -> list[Redundant]:
-    """User constraints implied by others (consistent), over the whole model's unknowns.
+def redundancies(solver, deadline: float | None = None,
+                 max_rows: int = MAX_DENSE) -> list[Redundant]:
+    """User constraints that other constraints already imply, over the whole model's
+    unknowns: what W0401 reports.
 
-    The flat system is split into connected components; each (up to :data:`MAX_DENSE` rows)
-    gets the greedy rank-revealing pass.  Only rows whose residuals also obey the dependency
-    count (otherwise it is a conflict, reported by the solve)."""
+    What it measures (issue 23): for a constraint ``C`` with rows ``J_C`` (its equations'
+    gradients; rows with no unknown left out) among all rows ``J``,
+
+    * ``C`` is **redundant** when removing it keeps the rank, ``rank(J without C) ==
+      rank(J)``: every equation of ``C`` follows from the others, so dropping it frees
+      nothing;
+    * ``C`` is **partly redundant** when it still pins something but some of what it says
+      also follows from the others: ``rank(J_C) + rank(J without C) > rank(J)`` (its row space
+      meets theirs), with ``J_C`` taken modulo the constructors' rows (the held shapes).  So
+      ``Fixed(body)`` of a rectangle, which fixes every corner while the corners follow from
+      the center through the rectangle's own shape, is not "partly redundant": beyond the
+      shape it says two things (the center), and both count.
+
+    Both come from one basis of the left null space of ``J`` (a vector ``y`` with
+    ``y^T J = 0`` per dependent row of the greedy rank-revealing pass, :func:`dependencies`):
+    with ``N_C`` that basis restricted to ``C``'s rows, ``rank(J) - rank(J without C) =
+    |C| - rank(N_C)``.  ``by`` names the other constraints in the dependencies that touch
+    ``C``.  A constraint whose every equation involves no unknown and holds (``r.width == 30``
+    with the width held by the constructor) follows from the held values (``by`` empty).
+
+    The flat system is split into connected components (rows sharing unknowns); each, up to
+    :data:`MAX_DENSE` rows, is ranked densely.  Only consistent systems are looked at (a
+    failed solve reports conflicts instead).  Past ``deadline`` (``time.monotonic()``) the
+    blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows.  NumPy only while the Jacobian has at most
+    :data:`DENSE_CELLS` cells, so plain ``aidl check`` does not import SciPy for it."""
     rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
     rows = rows[solver.kind[rows] == 0]
     if not len(rows):
@@ -422,45 +526,123 @@ def redundancies(solver) -> list[Redundant]:
     cols = np.flatnonzero(solver.free)
     t = solver.tape(rows)
     x = solver.x
-    J = t.jacobian(x, cols)
-    lab = _components(J)
+    F = t.evaluate(x)
+    dense = len(rows) * len(cols) <= DENSE_CELLS
+    if dense:
+        J = t.jacobian(x, cols, dense=True) if len(cols) else np.zeros((len(rows), 0))
+        lab = _dense_components(J) if len(cols) else np.arange(len(rows))
+        norms = np.sqrt((J * J).sum(axis=1))
+    else:
+        J = t.jacobian(x, cols).tocsr()
+        lab = _components(J)
+        norms = np.sqrt(np.asarray(J.multiply(J).sum(axis=1)).ravel())
+    cons = [solver.rows.constraint[r] for r in rows]
+    live = norms > 0.0                      # a row with no unknown left: held values only
+    by_c: dict[int, list[int]] = {}
+    for i, c in enumerate(cons):
+        by_c.setdefault(id(c), []).append(i)
+    contribution: dict[int, int] = {}       # rank(J) - rank(J without C), summed over blocks
+    rank_c: dict[int, int] = {}             # rank(J_C)
+    by: dict[int, list] = {}
+    unknown: set = set()                    # in a block too large to rank
+    for comp in unique(lab[live]):
+        local = np.flatnonzero((lab == comp) & live)
+        if deadline is not None and time.monotonic() > deadline:
+            unknown.update(id(cons[i]) for i in local)
+            continue
+        if len(local) == 1:                 # one row, independent of all others
+            k = id(cons[local[0]])
+            contribution[k] = contribution.get(k, 0) + 1
+            rank_c[k] = rank_c.get(k, 0) + 1
+            continue
+        if len(local) > min(max_rows, MAX_DENSE):
+            unknown.update(id(cons[i]) for i in local)
+            continue
+        Jd = J[local] if dense else J[local].toarray()
+        Jd = Jd[:, np.any(Jd != 0, axis=0)]
+        lc = [cons[i] for i in local]
+        order = sorted(range(len(local)), key=lambda i: _order_key(lc[i], int(rows[local[i]])))
+        null = list(dependencies(Jd, order, deadline))
+        if deadline is not None and time.monotonic() > deadline:
+            unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
+            continue
+        mine: dict[int, list[int]] = {}
+        for i, c in enumerate(lc):
+            mine.setdefault(id(c), []).append(i)
+        # the constructors' rows: what a constraint says beyond them is measured modulo
+        # their span (an orthonormal basis of it), see rank_c
+        imp = [i for i, c in enumerate(lc) if c.implicit]
+        basis = None                        # made when first needed (an SVD)
+        for k, idx in mine.items():
+            pos = {i: j for j, i in enumerate(idx)}
+            M = []
+            others: list = []
+            for r, support, coef in null:
+                if r not in pos and not any(i in pos for i in support):
+                    continue
+                v = np.zeros(len(idx))
+                if r in pos:
+                    v[pos[r]] += 1.0
+                for i, cf in zip(support, coef):
+                    if i in pos:
+                        v[pos[i]] -= cf
+                M.append(v)
+                for i in [r, *support]:
+                    if id(lc[i]) != k and lc[i] not in others:
+                        others.append(lc[i])
+            rM = _rank(np.array(M)) if M else 0
+            gain = len(idx) - rM
+            contribution[k] = contribution.get(k, 0) + gain
+            if rM:
+                lst = by.setdefault(k, [])
+                lst += [o for o in others if o not in lst]
+            if rM == 0 or gain == 0 or lc[idx[0]].implicit:
+                # independent of every other row (no overlap: rank beyond the shapes = gain),
+                # or fully implied (reported as such whatever its own rank)
+                rank_c[k] = rank_c.get(k, 0) + gain
+                continue
+            Jc = Jd[idx]
+            if imp:
+                if basis is None:
+                    basis = _row_basis(Jd[imp])
+                Jc = Jc - (Jc @ basis.T) @ basis
+            rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
     out: list[Redundant] = []
     seen: set = set()
-    # a user equation that involves no unknown at all (`r.width == 30` with the width held by
-    # the constructor) and holds: implied by the held values themselves
-    F = t.evaluate(x)
-    empty = np.diff(J.tocsr().indptr) == 0
-    for i in np.flatnonzero(empty):
-        c = solver.rows.constraint[rows[i]]
-        if not c.implicit and id(c) not in seen and abs(F[i]) <= 1e-9:
-            seen.add(id(c))
-            out.append(Redundant(c, []))
-    for comp in unique(lab):
-        local = np.flatnonzero(lab == comp)
-        if len(local) < 2 or len(local) > MAX_DENSE:
+    for i, c in enumerate(cons):
+        k = id(c)
+        if c.implicit or k in seen or k in unknown:
             continue
-        Jd = J[local].toarray()
-        cons = [solver.rows.constraint[r] for r in rows[local]]
-        order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
-        total: dict[int, int] = {}
-        for c in cons:
-            total[id(c)] = total.get(id(c), 0) + 1
-        found: dict[int, Redundant] = {}
-        count: dict[int, int] = {}
-        for r, support, _coef in dependencies(Jd, order):
-            c = cons[r]
-            if c.implicit or id(c) in seen:
-                continue
-            by = found[id(c)].by if id(c) in found else []
-            for i in support:
-                if cons[i] is not c and cons[i] not in by:
-                    by.append(cons[i])
-            if by:
-                count[id(c)] = count.get(id(c), 0) + 1
-                if id(c) not in found:
-                    found[id(c)] = Redundant(c, by)
-                    out.append(found[id(c)])
-        for k, red in found.items():
-            red.partly = count[k] < total[k]
-            seen.add(k)
+        seen.add(k)
+        mine_rows = by_c[k]
+        if not any(live[j] for j in mine_rows):
+            if all(abs(F[j]) <= 1e-9 for j in mine_rows):
+                out.append(Redundant(c, []))        # follows from held values alone
+            continue
+        gain, rk = contribution.get(k, 0), rank_c.get(k, 0)
+        if gain == 0:
+            out.append(Redundant(c, _explicit_first(by.get(k, []))))
+        elif rk > gain:
+            out.append(Redundant(c, _explicit_first(by.get(k, [])), partly=True))
     return out
+
+
+def _row_basis(A: np.ndarray) -> np.ndarray:
+    """An orthonormal basis (rows) of the row space of ``A``."""
+    if A.size == 0:
+        return np.zeros((0, A.shape[1]))
+    _, sv, Vt = np.linalg.svd(A, full_matrices=False)
+    return Vt[:int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))]
+
+
+def _explicit_first(cs: list) -> list:
+    return sorted(cs, key=lambda c: (c.implicit, _order_key(c, 0)))
+
+
+def _rank(A: np.ndarray) -> int:
+    """Numerical rank of a small dense matrix (singular values above ``1e-9`` of the
+    largest, or above ``1e-6`` for the combination coefficients' matrices, see callers)."""
+    if A.size == 0:
+        return 0
+    sv = np.linalg.svd(A, compute_uv=False)
+    return int(np.sum(sv > 1e-7 * max(1.0, float(sv[0]))))

@@ -123,6 +123,7 @@ class Solver:
         self.use_reduction = True
         self.batching = True          # False: plain post-order, one attempt at a time
         self.use_small = True         # small row sets in Python floats (small.py)
+        self.any_rigid = any(getattr(t, "rigid", False) for t in model.structures)
         self._not_small: set[int] = set()     # rows small.py does not compile
 
     # ------------------------------------------------------------------ helpers
@@ -478,8 +479,13 @@ class Solver:
         if not len(local):
             return True
         order = self._rank.get(id(s), 0)
-        own = lambda structs: [i for t in structs for i in self.own.get(id(t), ())]
-        frames = lambda structs: [i for t in structs for i in self.frame.get(id(t), ())]
+        # a rigid structure below s (``Rigid(part)``) moves only by its own frame: its own
+        # parameters, and everything of its descendants, stay as its own solve left them
+        no_own, no_frame = _rigid_below(s) if self.any_rigid else ((), ())
+        own = lambda structs: [i for t in structs if id(t) not in no_own
+                               for i in self.own.get(id(t), ())]
+        frames = lambda structs: [i for t in structs if id(t) not in no_frame
+                                  for i in self.frame.get(id(t), ())]
         # stage 0: only this structure's own unknowns
         last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
         if (yield last):
@@ -533,6 +539,29 @@ def _independent(t: Tape, rows: np.ndarray, cols: np.ndarray, blocks: list) -> b
     lo = owner[t.l_col]
     return not (bool(np.any((ao >= 0) & (ao != rowblock[t.aff_rows[t.a_row]]))) or
                 bool(np.any((lo >= 0) & (lo != rowblock[t.root_of[t.leaf_node[t.l_row]]]))))
+
+
+def _rigid_below(s: Structure) -> tuple[set, set]:
+    """(ids of structures whose own parameters, ids of those whose frames) the solve of ``s``
+    may not free: every rigid structure strictly below ``s`` keeps its own parameters and
+    its whole subtree (only its own frame moves); ``s``'s own rigidity does not concern its
+    own solve."""
+    no_own: set = set()
+    no_frame: set = set()
+    todo = list(s.children.values())
+    while todo:
+        t = todo.pop()
+        if getattr(t, "rigid", False):
+            inner = [t]
+            while inner:
+                u = inner.pop()
+                no_own.add(id(u))
+                if u is not t:
+                    no_frame.add(id(u))
+                inner += u.children.values()
+        else:
+            todo += t.children.values()
+    return no_own, no_frame
 
 
 def _post_order(s: Structure):

@@ -22,12 +22,14 @@ function isExecutable(p) {
 // Where to look for the `aidl` command, in order, the way Python tooling does:
 //   1. the `aidl.serverPath` setting (a path, or a command looked up on PATH; `~` and
 //      `${workspaceFolder}` are expanded);
-//   2. each workspace folder's virtual environment (.venv, then venv);
+//   2. a virtual environment (.venv, then venv) in each workspace folder or any folder above
+//      it, nearest first; then the same from each open file's folder (a file outside the
+//      workspace, or a project nested in it);
 //   3. the environment the editor was started from ($VIRTUAL_ENV, $CONDA_PREFIX);
 //   4. PATH.
 // Returns { command, tried }: command is null when nothing was found; tried lists every place
 // looked at, for the error message.
-function findServer({ serverPath = '', folders = [], env = process.env } = {}) {
+function findServer({ serverPath = '', folders = [], files = [], env = process.env } = {}) {
   const tried = [];
   const check = (p) => { tried.push(p); return isExecutable(p) ? p : null; };
   const onPath = (name) => {
@@ -47,11 +49,16 @@ function findServer({ serverPath = '', folders = [], env = process.env } = {}) {
     }
     return { command: onPath(p), tried: tried.length ? tried : [`${p} on PATH (empty)`] };
   }
-  for (const folder of folders) {
-    for (const venv of ['.venv', 'venv']) {
-      for (const exe of EXE) {
-        const hit = check(path.join(folder, venv, bin, exe));
-        if (hit) return { command: hit, tried };
+  const seen = new Set();
+  for (const start of [...folders, ...files.map((f) => path.dirname(f))]) {
+    for (const dir of ancestors(path.resolve(start))) {
+      if (seen.has(dir)) break;            // the rest of this walk was looked at already
+      seen.add(dir);
+      for (const venv of ['.venv', 'venv']) {
+        for (const exe of EXE) {
+          const hit = check(path.join(dir, venv, bin, exe));
+          if (hit) return { command: hit, tried };
+        }
       }
     }
   }
@@ -69,23 +76,33 @@ function findServer({ serverPath = '', folders = [], env = process.env } = {}) {
   return { command: null, tried };
 }
 
+// `dir`, its parent, ... up to the file system's root.
+function ancestors(dir) {
+  const out = [dir];
+  for (let d = dir, up = path.dirname(d); up !== d; d = up, up = path.dirname(d)) out.push(up);
+  return out;
+}
+
 // The options handed to vscode-languageclient's LanguageClient.
 function serverOptions(command, args = ['lsp']) {
   return { command, args, transport: TransportKind.stdio };
 }
 
-function clientOptions() {
-  return {
-    documentSelector: [{ language: 'aidl-cad' }],
-    outputChannelName: 'AIDL language server',
-  };
+// outputChannel: where the server's log (window/logMessage, stderr) goes; the extension passes
+// its "AIDL" channel, so its own messages and the server's are in one place.
+function clientOptions(outputChannel) {
+  const opts = { documentSelector: [{ language: 'aidl-cad' }] };
+  if (outputChannel) opts.outputChannel = outputChannel;
+  else opts.outputChannelName = 'AIDL';
+  return opts;
 }
 
 function notFoundMessage(tried) {
-  const shown = tried.slice(0, 8).join(', ') + (tried.length > 8 ? `, ... (${tried.length} places)` : '');
-  return 'AIDL: could not find the `aidl` command for the language server. Looked at: ' +
-    `${shown}. Install it into the workspace (python3 -m venv .venv && .venv/bin/pip install ` +
-    '-e /path/to/aidl) or set "aidl.serverPath" to the full path of `aidl`.';
+  const shown = tried.slice(0, 6).join(', ') + (tried.length > 6 ? `, ... (${tried.length} places)` : '');
+  return 'AIDL: no `aidl` command found, so there are no diagnostics, hover or preview. ' +
+    'Install it into the workspace: `python3 -m venv .venv && .venv/bin/pip install -e /path/to/aidl` ' +
+    '(it is picked up within seconds, no reload needed; or run "AIDL: Restart Language Server"), ' +
+    `or set "aidl.serverPath" to the full path of \`aidl\`. Looked at: ${shown}.`;
 }
 
-module.exports = { findServer, serverOptions, clientOptions, notFoundMessage, isExecutable };
+module.exports = { findServer, serverOptions, clientOptions, notFoundMessage, isExecutable, ancestors };

@@ -439,7 +439,7 @@ def _registry_doc(name: str) -> str | None:
     entry = R.lookup(name)
     if entry is not None:
         syn = f" (synonym of `{entry.name}`)" if name != entry.name else ""
-        md = f"```aidl-cad\n{entry.signature()}\n```\n{entry.category}{syn}: {entry.doc}"
+        md = f"```aidl_cad\n{entry.signature()}\n```\n{entry.category}{syn}: {entry.doc}"
         canon = {a.name for v in entry.variants for a in v}
         alias = [f"`{k}`→`{next(c for c in cs if c in canon)}`"
                  for k, cs in R.arg_synonyms(entry.name).items()
@@ -451,7 +451,7 @@ def _registry_doc(name: str) -> str | None:
         return md
     if name in R.FUNCTIONS:
         lo, hi, doc = R.FUNCTIONS[name]
-        return f"```aidl-cad\n{name}(...)\n```\nfunction ({lo if lo == hi else f'{lo}-{hi}'} " \
+        return f"```aidl_cad\n{name}(...)\n```\nfunction ({lo if lo == hi else f'{lo}-{hi}'} " \
                f"argument{'s' if hi > 1 else ''}): {doc}"
     if name in R.CONSTANTS:
         return f"constant `{name}` ({R.CONSTANTS[name]})"
@@ -486,10 +486,10 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
         d: A.Def = sym.node
         params = ", ".join(src[p.span.start:p.span.end] for p in d.params)
         doc = _leading_comment(src, d.span.start - (d.span.col - 1))
-        return f"```aidl-cad\ndef {d.name}({params}) -> {d.kind}\n```\ntemplate" + (f": {doc}" if doc else "")
+        return f"```aidl_cad\ndef {d.name}({params}) -> {d.kind}\n```\ntemplate" + (f": {doc}" if doc else "")
     if sym.kind == "structure":
         kids = [k for k, s in sym.scope.names.items() if s.kind == "structure" and k != sym.name]
-        text = f"```aidl-cad\n{sym.detail} {sym.name}\n```\nstructure"
+        text = f"```aidl_cad\n{sym.detail} {sym.name}\n```\nstructure"
         if kids:
             text += "; children: " + ", ".join(f"`{k}`" for k in kids)
         return text
@@ -497,10 +497,10 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
     if len(first) > 120:
         first = first[:117] + "..."
     if sym.kind == "import":
-        return f"```aidl-cad\n{first}\n```\nimported namespace"
+        return f"```aidl_cad\n{first}\n```\nimported namespace"
     label = {"param": "model parameter (`--set` overrides it)", "variable": "name",
              "loop": "loop variable", "parameter": "template parameter", "import": "import"}[sym.kind]
-    text = f"```aidl-cad\n{first}\n```\n{label}"
+    text = f"```aidl_cad\n{first}\n```\n{label}"
     t = ix.type_of_sym(sym)
     if t is not None and t[0] == "members":
         text += f": a {t[2]}"
@@ -527,9 +527,9 @@ def hover(src: str, line: int, character: int, path: str = "doc.aidl") -> T.Hove
             t = ix.type_of_expr(use[1].obj)
             if t is not None:
                 if t[0] == "members" and word in t[1]:
-                    md = f"```aidl-cad\n{word}: {t[1][word]}\n```\nmember of {t[2]}"
+                    md = f"```aidl_cad\n{word}: {t[1][word]}\n```\nmember of {t[2]}"
                 elif t[0] == "struct" and word == "bb":
-                    md = "```aidl-cad\nbb: bbox\n```\nthe structure's bounding box: " + \
+                    md = "```aidl_cad\nbb: bbox\n```\nthe structure's bounding box: " + \
                          ", ".join(R.BBOX_MEMBERS)
     if md is None:
         sym = ix.scope_at(off).lookup(word)

@@ -32,7 +32,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
 
-from . import analysis, edits, features, semantic, signature, window
+from . import analysis, edits, features, preview, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
 
 DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
@@ -384,6 +384,13 @@ def rename(ls: LanguageServer, params: T.RenameParams):
 features.register(server, _safe, _doc,
                   lambda uri: _analyzer.facts.get(uri) if _analyzer is not None else None,
                   RequestFailed)
+
+
+@server.feature("aidl/preview")
+@_safe()
+async def aidl_preview(ls: LanguageServer, params):
+    """The editor preview's picture of a document (:mod:`.preview`)."""
+    return await preview.handle(ls, params)
 
 
 def main(worker=None, stdin=None, stdout=None, published: dict | None = None,

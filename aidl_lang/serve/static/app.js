@@ -8,6 +8,7 @@ const state = {
   paramKey: "",          // signature of the param list, to rebuild controls only when it changes
   userBox: null,         // viewBox chosen by pan/zoom, null = fit
   ws: null, nextId: 1, inFlight: null, pending: false, formats: ["svg"],
+  shownSvg: null,        // the SVG text in the viewer
 };
 // measurements read by the browser test: slider input -> picture drawn, per request
 window.aidl = { sliderMs: [], sliderParts: [], drawn: {}, version: 0, svgVersion: 0, ready: false, state };
@@ -47,9 +48,14 @@ function onView(v) {
   const nerr = v.diagnostics.filter((d) => d.severity === "error").length;
   setStatus(v.ok ? `ok · ${v.timing && v.timing.total_ms != null ? v.timing.total_ms.toFixed(0) + " ms" : ""}`
                  : `${nerr} error${nerr === 1 ? "" : "s"}`, v.ok ? "ok" : "err");
-  if (v.ok && v.svg) drawSvg(v.svg);
-  $("stale").hidden = v.ok || !v.svg;
-  $("stale").textContent = v.svg ? "showing the last good picture: the program has errors" : "";
+  // the server keeps the last good picture: a page opened (or reloaded) while the file is
+  // broken draws it too, and says plainly when there is none yet
+  if (v.svg && (v.ok || v.svg !== state.shownSvg)) drawSvg(v.svg);
+  if (!v.svg && state.shownSvg != null) { $("viewer").innerHTML = ""; state.shownSvg = null; }
+  $("stale").hidden = v.ok;
+  $("stale").textContent = v.ok ? "" : v.svg
+    ? "showing the last good picture: the program has errors"
+    : "no picture yet: the program has not compiled without errors since `aidl serve` started; fix the errors listed on the right";
   showParams(v.params, v.values, !own);
   showDiagnostics(v.diagnostics);
   showSource(v.source, v.diagnostics);
@@ -84,6 +90,7 @@ function afterPaint(f) {
 function drawSvg(text) {
   const viewer = $("viewer");
   viewer.innerHTML = text;
+  state.shownSvg = text;
   const svg = viewer.querySelector("svg");
   if (!svg) return;
   svg.removeAttribute("width"); svg.removeAttribute("height");

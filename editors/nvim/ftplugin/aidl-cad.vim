@@ -1,7 +1,11 @@
 " Filetype plugin for AIDL (CAD): the layout `aidl fmt` writes (4 spaces, no tabs), comments,
-" `gf` on imports, and (Neovim 0.7+) the language server `aidl lsp` (lua/aidl_cad.lua).
+" `gf` on imports, and (Neovim 0.7+) the language server `aidl lsp` (lua/aidl_cad.lua) with
+" buffer-local `K` (hover), `gd` (definition), 'omnifunc' (<C-x><C-o>) and 'formatexpr' (`gq`).
+" Commands: :AidlPreview (live preview in the browser, `aidl serve`), :AidlPreviewStop,
+" :AidlInfo (which `aidl` is used, or where it was looked for).
 " Set `let g:aidl_lsp = 0` to leave the server to your own configuration (e.g. nvim-lspconfig),
-" `let g:aidl_server_path = '/path/to/.venv/bin/aidl'` to choose the server.
+" `let g:aidl_lsp_keymaps = 0` to keep your own maps, `let g:aidl_server_path =
+" '/path/to/.venv/bin/aidl'` to choose the server, `let g:aidl_browser = 'firefox'` the browser.
 if exists('b:did_ftplugin')
   finish
 endif
@@ -18,6 +22,11 @@ if has('nvim-0.9')
   highlight default link @lsp.mod.unit Special
 endif
 
-if has('nvim-0.7') && get(g:, 'aidl_lsp', 1)
-  lua require('aidl_cad').start(0)
+if has('nvim-0.7')
+  command! -buffer AidlPreview lua require('aidl_cad').preview(0)
+  command! -buffer AidlPreviewStop lua require('aidl_cad').preview_stop(0)
+  command! -buffer AidlInfo lua require('aidl_cad').info()
+  if get(g:, 'aidl_lsp', 1)
+    lua require('aidl_cad').start(0)
+  endif
 endif

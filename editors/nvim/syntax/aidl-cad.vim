@@ -17,15 +17,17 @@ syntax keyword aidlCadPrimitive Arc ArcSlot Circle ConvexHull Ellipse Expand Gro
 syntax keyword aidlCadPrimitive Inset Line Offset Outset Point Polygon Rectangle RegularPolygon
 syntax keyword aidlCadPrimitive RoundedRectangle Shell Shrink Slot Star Text Trapezoid Triangle
 syntax keyword aidlCadPrimitive convex_hull
-syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop Anchor
-syntax keyword aidlCadConstraint Angle AtMidpoint Below CenterInside Centered Chamfer CircularPattern Coincide
-syntax keyword aidlCadConstraint Coincident Collinear Concentric Diameter Distance DistanceX DistanceY Equal
-syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Gap Horizontal HorizontalDistance
-syntax keyword aidlCadConstraint HorizontallyCentered Inside Join LeftOf Length LinearPattern Lock Midpoint
-syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored OnArc OnCircle OnLine OnTopOf Orthogonal
-syntax keyword aidlCadConstraint Over Parallel Perpendicular PointOnLine Radius RightOf Same Symmetric
-syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
-syntax keyword aidlCadConstraint VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
+syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
+syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
+syntax keyword aidlCadConstraint CornerPattern Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius
+syntax keyword aidlCadConstraint Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered
+syntax keyword aidlCadConstraint Inside IntendedOverlap Join LeftOf Length LinearPattern Lock Midpoint
+syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine OnTopOf
+syntax keyword aidlCadConstraint Orthogonal Over OverlapOK Parallel Perpendicular PlaceAt PointOnLine Radius
+syntax keyword aidlCadConstraint RectangularPattern RightOf Rigid RigidGroup Same Symmetric Taller Tangent
+syntax keyword aidlCadConstraint ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance VerticallyCentered Wider
+syntax keyword aidlCadConstraint Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min norm radians range

@@ -66,15 +66,25 @@ class CancellationTokenSource {
 }
 class CancellationError extends Error {}
 
+class Selection extends Range {
+  constructor(a, b, c, d) { super(a, b, c, d); this.anchor = this.start; this.active = this.end; }
+}
+
 // what the test drives and observes
 const events = {
   open: new EventEmitter(), close: new EventEmitter(), change: new EventEmitter(),
   save: new EventEmitter(), config: new EventEmitter(), folders: new EventEmitter(),
+  selection: new EventEmitter(), activeEditor: new EventEmitter(),
 };
 const collections = [];
 const output = [];
+const channels = {};            // name -> the text appended to that output channel
 const messages = [];
+const commands = new Map();     // registered command -> its callback
+const panels = [];              // webview panels: { html, posted: [messages], receive(msg), ... }
+const statusItems = [];
 let settings = {};
+let saveDialog;                 // what showSaveDialog answers
 
 function createDiagnosticCollection(name) {
   const map = new Map();
@@ -99,10 +109,12 @@ function createDiagnosticCollection(name) {
 }
 
 function outputChannel(name) {
+  channels[name] = channels[name] || '';
+  const put = (s) => { output.push(String(s)); channels[name] += String(s); };
   const ch = {
     name,
-    append: (s) => output.push(String(s)), appendLine: (s) => output.push(`${s}\n`),
-    replace() {}, clear() {}, show() {}, hide() {}, dispose() {},
+    append: (s) => put(s), appendLine: (s) => put(`${s}\n`),
+    replace(s) { channels[name] = String(s); }, clear() { channels[name] = ''; }, show() {}, hide() {}, dispose() {},
     trace: (s) => output.push(String(s)), debug: (s) => output.push(String(s)), info: (s) => output.push(String(s)),
     warn: (s) => output.push(String(s)), error: (s) => output.push(String(s)),
     logLevel: 0, onDidChangeLogLevel: new EventEmitter().event,
@@ -110,9 +122,40 @@ function outputChannel(name) {
   return ch;
 }
 
+// A webview panel: the HTML the extension sets and every message it posts are kept;
+// receive(msg) plays a message from the page.
+function createWebviewPanel(viewType, title, showOptions, options) {
+  const fromPage = new EventEmitter();
+  const disposed = new EventEmitter();
+  const panel = {
+    viewType, title, options, showOptions, active: true, visible: true, posted: [], disposed: false,
+    webview: {
+      html: '', cspSource: 'vscode-resource:', options,
+      postMessage: async (m) => { panel.posted.push(JSON.parse(JSON.stringify(m))); return true; },
+      onDidReceiveMessage: fromPage.event,
+      asWebviewUri: (u) => u,
+    },
+    reveal() { panel.revealed = (panel.revealed || 0) + 1; },
+    onDidDispose: disposed.event,
+    onDidChangeViewState: () => new Disposable(),
+    dispose() { if (!panel.disposed) { panel.disposed = true; disposed.fire(); } },
+    receive: (m) => fromPage.fire(m),
+  };
+  panels.push(panel);
+  return panel;
+}
+
+function createStatusBarItem(alignment, priority) {
+  const item = { alignment, priority, text: '', tooltip: '', command: undefined, visible: false,
+    show() { item.visible = true; }, hide() { item.visible = false; }, dispose() {} };
+  statusItems.push(item);
+  return item;
+}
+
 const workspace = new Proxy({
   workspaceFolders: undefined,
   textDocuments: [],
+  openTextDocument: async (u) => workspace.textDocuments.find((d) => d.uri.toString() === u.toString()),
   notebookDocuments: [],
   getConfiguration: (section) => ({
     get: (key, dflt) => {
@@ -133,6 +176,7 @@ const workspace = new Proxy({
 
 const languages = new Proxy({
   createDiagnosticCollection,
+  getDiagnostics: (uri) => collections.flatMap((c) => c.get(uri) || []),
   match: (selector, doc) => {
     const sels = Array.isArray(selector) ? selector : [selector];
     return sels.some((s) => (typeof s === 'string' ? s === doc.languageId : (!s.language || s.language === doc.languageId)
@@ -142,6 +186,13 @@ const languages = new Proxy({
 
 const window = new Proxy({
   createOutputChannel: outputChannel,
+  createWebviewPanel,
+  createStatusBarItem,
+  showSaveDialog: async () => saveDialog,
+  showInputBox: async () => undefined,
+  showTextDocument: async (doc) => { const ed = { document: doc, selection: new Selection(0, 0, 0, 0), revealRange() {} }; window.activeTextEditor = ed; return ed; },
+  onDidChangeTextEditorSelection: events.selection.event,
+  onDidChangeActiveTextEditor: events.activeEditor.event,
   showErrorMessage: async (m) => { messages.push(['error', m]); return undefined; },
   showWarningMessage: async (m) => { messages.push(['warning', m]); return undefined; },
   showInformationMessage: async (m) => { messages.push(['info', m]); return undefined; },
@@ -165,17 +216,28 @@ function textDocument(fsPath, text, languageId = 'aidl-cad', version = 1) {
 const base = {
   version: '1.95.0',
   env: { appName: 'vscode-shim', language: 'en', machineId: 'shim', sessionId: 'shim', uiKind: 1, openExternal: async () => true },
-  commands: new Proxy({ registerCommand: () => new Disposable(), executeCommand: async () => undefined }, { get: (t, p) => (p in t ? t[p] : stub(`commands.${String(p)}`)) }),
+  commands: new Proxy({
+    registerCommand: (name, fn) => { commands.set(name, fn); return new Disposable(() => commands.delete(name)); },
+    executeCommand: async (name, ...args) => (commands.has(name) ? commands.get(name)(...args) : undefined),
+  }, { get: (t, p) => (p in t ? t[p] : stub(`commands.${String(p)}`)) }),
   workspace, languages, window,
   Disposable, EventEmitter, Uri, Position, Range, Diagnostic, Location, DiagnosticRelatedInformation,
-  MarkdownString, CancellationTokenSource, CancellationError,
+  MarkdownString, CancellationTokenSource, CancellationError, Selection,
+  ViewColumn: { Active: -1, Beside: -2, One: 1, Two: 2 },
+  StatusBarAlignment: { Left: 1, Right: 2 },
+  TextEditorRevealType: { Default: 0, InCenter: 1, InCenterIfOutsideViewport: 2, AtTop: 3 },
   DiagnosticSeverity: { Error: 0, Warning: 1, Information: 2, Hint: 3 },
   DiagnosticTag: { Unnecessary: 1, Deprecated: 2 },
   ProgressLocation: { SourceControl: 1, Window: 10, Notification: 15 },
   TextDocumentSaveReason: { Manual: 1, AfterDelay: 2, FocusOut: 3 },
   ConfigurationTarget: { Global: 1, Workspace: 2, WorkspaceFolder: 3 },
   // test hooks (not part of VS Code)
-  _shim: { events, collections, output, messages, textDocument, setSettings: (s) => { settings = s; } },
+  _shim: {
+    events, collections, output, channels, messages, commands, panels, statusItems, textDocument,
+    setSettings: (s) => { settings = s; },
+    setSaveDialog: (u) => { saveDialog = u; },
+    setFolders: (paths) => { workspace.workspaceFolders = paths.map((p, index) => ({ uri: Uri.file(p), name: p, index })); },
+  },
 };
 
 module.exports = new Proxy(base, {
