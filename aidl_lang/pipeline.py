@@ -31,6 +31,7 @@ class Compiled:
     solve: SolveResult | None = None
     drawing: Drawing | None = None      # the booleans' result, when the solve converged
     solve_seconds: float = 0.0          # wall time of the solve alone (``aidl batch`` rows)
+    params: dict | None = None          # the main file's params: name -> value (Q, bool, str)
 
     @property
     def ok(self) -> bool:
@@ -143,13 +144,14 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         return Compiled(sink)
     interp = Interpreter(sink, overrides, budget, deadline)
     model = interp.run(program)
+    params = getattr(interp.file, "params", None)
     if not sink.has_errors and _empty_drawing(program, model):
         sink.warning("W0104", "the program builds no geometry: the drawing will be empty",
                      program.span if program.stmts else None,
                      hint="add a structure with shapes, e.g. `solid plate { body = "
                           "Rectangle(center=(0, 0), width=40, height=20) }`")
     if sink.has_errors or not do_solve:
-        return Compiled(sink, model)
+        return Compiled(sink, model, params=params)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         # overflow in a residual is reported as a failed solve, not as a numpy warning
         warnings.simplefilter("ignore", RuntimeWarning)
@@ -158,10 +160,10 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         took = time.perf_counter() - t0
     if not result.converged:
         report_failure(sink, result)
-        return Compiled(sink, model, result, solve_seconds=took)
+        return Compiled(sink, model, result, solve_seconds=took, params=params)
     return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks,
                                                      Deadline(deadline, budget)),
-                    solve_seconds=took)
+                    solve_seconds=took, params=params)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,

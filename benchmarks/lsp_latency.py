@@ -1,14 +1,19 @@
 """Language-server latency over stdio, as an editor sees it (prints a table).
 
-* cold start: from launching ``aidl lsp --stdio`` to the ``initialize`` answer, and to the first
-  ``publishDiagnostics`` of a document opened right after ``initialized``;
+* cold start: from launching ``aidl lsp --stdio`` to the ``initialize`` answer, to the first
+  ``publishDiagnostics`` of a document opened right after ``initialized`` (parse and check,
+  published before pygls is loaded, see ``aidl_lang/editor/lsp/boot.py``), to the first answer
+  of pygls (a hover), and to the full diagnostics (the second publish of that version: solved);
+  beside ``python -c "import numpy"`` (the yardstick: the first diagnostics should take at most
+  3x it) and, with ``--compare``, the same for the server started without the boot front
+  (pygls imported first: how ``aidl lsp`` started before), run alternately in one run;
 * change to diagnostics: ``didChange`` (whole document, a new version) to the
   ``publishDiagnostics`` of that version, with the debounce off (``initializationOptions``
   ``{"debounce": 0}``), median and max over N edits;
 * a stale expensive analysis: an edit that makes the program expensive (10^8 loop iterations),
   then an edit that fixes it: time to the fixed version's diagnostics.
 
-Usage: ``python benchmarks/lsp_latency.py [FILE.aidl] [--edits N]``
+Usage: ``python benchmarks/lsp_latency.py [FILE.aidl] [--edits N] [--starts K] [--compare]``
 """
 from __future__ import annotations
 
@@ -79,16 +84,20 @@ class Client:
                          and m["params"]["uri"] == uri and m["params"].get("version") == version)
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser()
-    ap.add_argument("file", nargs="?", default=str(ROOT / "examples" / "telephone.aidl"))
-    ap.add_argument("--edits", type=int, default=20)
-    a = ap.parse_args()
-    path = Path(a.file).resolve()
-    text = path.read_text()
-    uri = path.as_uri()
-    aidl = Path(sys.executable).with_name("aidl")
-    c = Client([str(aidl), "lsp", "--stdio", f"--clientProcessId={os.getpid()}"])
+OLD_START = ("from aidl_lang.editor.lsp.worker import spawn; w = spawn(); "
+             "from aidl_lang.editor.lsp.server import main; main(w)")
+
+
+def numpy_ms() -> float:
+    t = time.perf_counter()
+    subprocess.run([sys.executable, "-c", "import numpy"], check=True)
+    return (time.perf_counter() - t) * 1000
+
+
+def cold(cmd, uri: str, text: str, rows: list | None = None):
+    """One cold start: (ms to initialize answer, to first diagnostics, to pygls' first answer,
+    to the full diagnostics) and the client, still open."""
+    c = Client(cmd)
     rid = c.send("initialize", {"processId": os.getpid(), "capabilities": {},
                                 "initializationOptions": {"debounce": 0}}, request=True)
     t_init, _ = c.wait(lambda m: m.get("id") == rid)
@@ -96,8 +105,61 @@ def main() -> None:
     c.send("textDocument/didOpen", {"textDocument": {"uri": uri, "languageId": "aidl-cad",
                                                      "version": 1, "text": text}})
     t_diag, first = c.diagnostics(uri, 1)
-    rows = [("cold start to initialize answer", (t_init - c.t0) * 1000),
-            ("cold start to first diagnostics", (t_diag - c.t0) * 1000)]
+    hid = c.send("textDocument/hover", {"textDocument": {"uri": uri},
+                                        "position": {"line": 0, "character": 0}}, request=True)
+    t_hover, _ = c.wait(lambda m: m.get("id") == hid)
+    try:
+        t_full, _ = c.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics"
+                           and m["params"]["uri"] == uri and m["params"].get("version") == 1,
+                           timeout=5 if t_diag < t_hover else 0.01)
+    except TimeoutError:          # one publish only: the first was the full one
+        t_full = t_diag
+    ms = [(t - c.t0) * 1000 for t in (t_init, t_diag, t_hover, t_full)]
+    return ms, c, first
+
+
+def close(c: Client) -> None:
+    rid = c.send("shutdown", None, request=True)
+    c.wait(lambda m: m.get("id") == rid)
+    c.send("exit", None)
+    c.p.wait(10)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("file", nargs="?", default=str(ROOT / "examples" / "telephone.aidl"))
+    ap.add_argument("--edits", type=int, default=20)
+    ap.add_argument("--starts", type=int, default=3, help="cold starts measured (median)")
+    ap.add_argument("--compare", action="store_true",
+                    help="also start the server the old way (pygls first), alternately")
+    a = ap.parse_args()
+    path = Path(a.file).resolve()
+    text = path.read_text()
+    uri = path.as_uri()
+    aidl = Path(sys.executable).with_name("aidl")
+    cmd = [str(aidl), "lsp", "--stdio", f"--clientProcessId={os.getpid()}"]
+    starts, old, numpys = [], [], []
+    for k in range(a.starts):
+        numpys.append(numpy_ms())
+        if a.compare:
+            ms, c, _ = cold([sys.executable, "-c", OLD_START], uri, text)
+            close(c)
+            old.append(ms)
+        ms, c, first = cold(cmd, uri, text)
+        starts.append(ms)
+        if k < a.starts - 1:
+            close(c)
+    np_ms = statistics.median(numpys)
+    rows = [(f"python -c 'import numpy' (yardstick), median of {a.starts}", np_ms)]
+    names = ["initialize answer", "first diagnostics", "first pygls answer (hover)",
+             "full (solved) diagnostics"]
+    for label, runs in (("", starts), ("old start: ", old)):
+        if not runs:
+            continue
+        for i, name in enumerate(names):
+            v = statistics.median(r[i] for r in runs)
+            rows.append((f"{label}cold start to {name}", v))
+        rows.append((f"{label}first diagnostics / numpy", statistics.median(r[1] for r in runs) / np_ms))
     times = []
     for v in range(2, 2 + a.edits):
         edited = text + f"\nedit_{v} = {v} mm\n"
@@ -119,15 +181,12 @@ def main() -> None:
                                       "contentChanges": [{"text": text}]})
     t1, _ = c.diagnostics(uri, v + 1)
     rows.append(("stale expensive analysis, fix to diagnostics", (t1 - t) * 1000))
-    rid = c.send("shutdown", None, request=True)
-    c.wait(lambda m: m.get("id") == rid)
-    c.send("exit", None)
-    c.p.wait(10)
+    close(c)
     print(f"`aidl lsp` over stdio, {path.name} ({len(text)} characters), "
           f"{len(first['params']['diagnostics'])} diagnostics")
-    print(f"| {'measure':<48} | {'ms':>8} |\n|{'-' * 50}|{'-' * 10}|")
+    print(f"| {'measure':<58} | {'ms':>8} |\n|{'-' * 60}|{'-' * 10}|")
     for name, ms in rows:
-        print(f"| {name:<48} | {ms:8.0f} |")
+        print(f"| {name:<58} | {ms:8.2f} |" if "/" in name else f"| {name:<58} | {ms:8.0f} |")
 
 
 if __name__ == "__main__":

@@ -49,6 +49,9 @@ def pos(src: str, needle: str, k: int = 0, nth: int = 0) -> tuple[int, int]:
 @pytest_lsp.fixture(config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
+    # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
+    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
+    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
     await lsp_client.initialize_session(T.InitializeParams(
         capabilities=pytest_lsp.client_capabilities("visual-studio-code")))
     yield
@@ -61,9 +64,13 @@ def _open(client: LanguageClient, uri: str, text: str, version: int = 1) -> None
                                          text=text)))
 
 
-async def _diagnostics(client: LanguageClient, uri: str):
-    await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-    return client.diagnostics[uri]
+async def _diagnostics(client: LanguageClient, uri: str, version: int | None = None):
+    """The next diagnostics published for ``uri`` (of ``version`` if given: a version may be
+    published more than once, parse-and-check first at start-up)."""
+    while True:
+        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if p.uri == uri and (version is None or p.version == version):
+            return p.diagnostics
 
 
 @pytest.mark.asyncio
@@ -80,7 +87,7 @@ async def test_server_diagnostics_hover_completion_definition(client: LanguageCl
     client.text_document_did_change(T.DidChangeTextDocumentParams(
         text_document=T.VersionedTextDocumentIdentifier(uri=uri, version=2),
         content_changes=[T.TextDocumentContentChangeWholeDocument(text=GOOD)]))
-    assert list(await _diagnostics(client, uri)) == []
+    assert list(await _diagnostics(client, uri, version=2)) == []
 
     h = await client.text_document_hover_async(T.HoverParams(
         text_document=T.TextDocumentIdentifier(uri=uri), position=T.Position(*pos(GOOD, "Rectangle", 2))))

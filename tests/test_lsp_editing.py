@@ -52,6 +52,9 @@ def apply(src: str, edits: list[T.TextEdit]) -> str:
 @pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio", "--clientProcessId=1"]))
 async def client(lsp_client: LanguageClient):
+    # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
+    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
+    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
     await lsp_client.initialize_session(T.InitializeParams(
         capabilities=pytest_lsp.client_capabilities("visual-studio-code"),
         initialization_options={"debounce": 0}))
@@ -198,7 +201,11 @@ async def test_signature_help_forms_and_active_argument(client: LanguageClient, 
 @pytest.mark.asyncio(loop_scope="module")
 async def test_invalid_params_get_an_error_response(client: LanguageClient, tmp_path, monkeypatch):
     # send the raw dict (the client would refuse to build a HoverRequest without a position)
-    monkeypatch.setattr(client.protocol, "get_message_type", lambda method: None)
+    # (for this method only: the server's own requests, e.g. workspace/inlayHint/refresh, may
+    # arrive meanwhile)
+    known = client.protocol.get_message_type
+    monkeypatch.setattr(client.protocol, "get_message_type",
+                        lambda method: None if method == "textDocument/hover" else known(method))
     with pytest.raises(JsonRpcException) as err:
         await client.protocol.send_request_async(
             "textDocument/hover", {"textDocument": {"uri": (tmp_path / "x.aidl").as_uri()}})

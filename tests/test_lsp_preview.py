@@ -88,6 +88,9 @@ def test_preview_svg_maps_shapes_to_source_and_sliders(tmp_path):
 @pytest_lsp.fixture(config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
+    # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
+    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
+    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
     await lsp_client.initialize_session(T.InitializeParams(
         capabilities=pytest_lsp.client_capabilities("visual-studio-code")))
     yield

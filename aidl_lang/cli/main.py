@@ -621,7 +621,7 @@ def cmd_lsp(args) -> int:
             return 2
     from ..editor.lsp.worker import spawn
     worker = spawn()                   # the diagnostics worker warms up while the server loads
-    from ..editor.lsp.server import main as lsp_main
+    from ..editor.lsp.boot import main as lsp_main      # answers before pygls is loaded
     return lsp_main(worker)
 
 

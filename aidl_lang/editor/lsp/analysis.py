@@ -27,6 +27,8 @@ from ... import ast as A
 from ... import registry as R
 from ...diagnostics import DiagnosticSink, Span
 from ...parser import _blank_logical_line, mask_comments, parse
+from . import plain
+from .worker import diagnostics_json
 
 TYPE_MEMBERS = {"point": R.POINT_MEMBERS, "line": R.LINE_MEMBERS, "bbox": R.BBOX_MEMBERS}
 
@@ -91,99 +93,23 @@ def position_at(src: str, offset: int) -> T.Position:
 
 def span_range(src: str, sp: Span) -> T.Range:
     """The LSP range of a :class:`Span` (1-based lines/columns, end column exclusive)."""
-    lines = src.split("\n")
-
-    def pos(line: int, col: int) -> T.Position:
-        li = max(0, line - 1)
-        text = lines[li] if li < len(lines) else ""
-        return T.Position(line=li, character=_u16len(text[:max(0, col - 1)]))
-
-    a, b = pos(sp.line, sp.col), pos(sp.end_line, sp.end_col)
-    if (b.line, b.character) <= (a.line, a.character):
-        b = T.Position(line=a.line, character=a.character + 1)
-    return T.Range(start=a, end=b)
+    r = plain.span_range(src, sp)
+    return T.Range(start=T.Position(**r["start"]), end=T.Position(**r["end"]))
 
 
 # ------------------------------------------------------------------ diagnostics
-_SEVERITY = {"error": T.DiagnosticSeverity.Error, "warning": T.DiagnosticSeverity.Warning,
-             "note": T.DiagnosticSeverity.Information}
-
-
 def diagnostics(src: str, path: str, solve: bool = True, uri: str | None = None,
                 values: dict[str, str] | None = None) -> list[T.Diagnostic]:
-    """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP diagnostics.
-
-    ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
-    another file (an import) are put on line 1 with their location in the message.  When the
-    file solves and ``values`` is a dict, it receives the solved values of the named entities
-    (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`value_hover`.
-    """
-    from ...pipeline import compile_source
-    res = compile_source(src, path, do_solve=solve)
-    if values is not None and res.ok and res.solve is not None and res.solve.converged:
-        from ...api import Result
-        values.update((v.name, v.text()) for v in Result(res, path, src).values)
-    out = []
-    for d in res.sink.items:
-        msg = d.message
-        if d.hint:
-            msg += f"\nhint: {d.hint}"
-        if d.span is None or d.span.file != path:
-            if d.span is not None:
-                msg = f"{d.span.file}:{d.span.line}:{d.span.col}: {msg}"
-            rng = T.Range(start=T.Position(line=0, character=0),
-                          end=T.Position(line=0, character=1))
-        else:
-            rng = span_range(src, d.span)
-        related = None
-        if uri is not None:
-            related = [T.DiagnosticRelatedInformation(
-                location=T.Location(uri=uri, range=span_range(src, lab.span)),
-                message=lab.message or "here") for lab in d.labels if lab.span.file == path] or None
-        fixes = fix_edits(src, path, d) if d.span is not None and d.span.file == path else []
-        out.append(T.Diagnostic(range=rng, message=msg, severity=_SEVERITY.get(d.severity),
-                                code=d.code, source="aidl", related_information=related,
-                                data={"fixes": fixes} if fixes else None))
-    return out
+    """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP diagnostics
+    (:func:`diagnostics_json`, structured)."""
+    from lsprotocol import converters
+    return converters.get_converter().structure(
+        diagnostics_json(src, path, solve, uri, values), list[T.Diagnostic])
 
 
 def fix_edits(src: str, path: str, d) -> list[dict]:
-    """The suggested fixes of a pipeline diagnostic as ``{"title", "range", "newText"}`` dicts
-    (LSP ranges in ``src``), preferred first: ``d.fix`` and, when it replaces a name with the
-    first of ``d.suggestions``, the other suggestions as alternatives. A diagnostic with
-    suggestions but no ``Fix`` gets them as replacements of the name its span starts with, when
-    the message quotes that name (an unknown keyword argument). Fixes located in another file
-    are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
-    from ...diagnostics import Fix
-    fix = d.fix
-    if fix is None and d.suggestions and d.span is not None and d.span.file == path:
-        # no Fix, but suggestions for the name the diagnostic is about: when its span starts
-        # with that name (quoted in the message, e.g. "`Circle` has no argument `centre`" on
-        # `centre=(0, 0)`), each suggestion replaces it
-        m = re.match(r"[A-Za-z_]\w*", src[d.span.start:d.span.end])
-        if m and f"`{m.group()}`" in d.message and all(
-                re.fullmatch(r"[A-Za-z_]\w*", x) for x in d.suggestions):
-            sp = d.span
-            fix = Fix(Span(sp.file, sp.line, sp.col, sp.line, sp.col + len(m.group()),
-                           sp.start, sp.start + len(m.group())), d.suggestions[0])
-    if fix is None or fix.span is None or fix.span.file != path:
-        return []
-    fixes = [fix]
-    if d.suggestions and fix.replacement == d.suggestions[0]:
-        fixes += [Fix(fix.span, s) for s in d.suggestions[1:]]
-    out = []
-    for f in fixes:
-        old = src[f.span.start:f.span.end]
-        title = getattr(f, "title", None) or (
-            f"Replace `{old}` with `{f.replacement}`" if old and f.replacement else
-            f"Remove `{old}`" if old else f"Insert `{f.replacement}`")
-        rng = span_range(src, f.span)
-        if f.span.end <= f.span.start:             # an insertion: an empty range
-            rng = T.Range(start=rng.start, end=rng.start)
-        out.append({"title": title, "newText": f.replacement,
-                    "range": {"start": {"line": rng.start.line, "character": rng.start.character},
-                              "end": {"line": rng.end.line, "character": rng.end.character}}})
-    return out
+    """:func:`.plain.fix_edits` (kept here for callers)."""
+    return plain.fix_edits(src, path, d)
 
 
 # ------------------------------------------------------------------ the symbol index

@@ -1,8 +1,11 @@
 """``aidl lsp``: the language server (pygls, JSON-RPC over stdin/stdout).
 
 Thin handlers over :mod:`.analysis` (hover, completion, definition, references, outline,
-formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help) and
-:mod:`.edits` (quick fixes, rename). Documents sync incrementally.
+formatting), :mod:`.semantic` (semantic tokens), :mod:`.signature` (signature help),
+:mod:`.edits` (quick fixes, rename) and :mod:`.features` (inlay hints, code lenses, folding,
+highlight, links, workspace symbols, ``aidl/explain``). Documents sync incrementally.
+``aidl lsp`` starts in :mod:`.boot`, which answers ``initialize`` and publishes the first
+diagnostics before this module (pygls) is imported, then calls :func:`main`.
 
 Diagnostics are computed by a worker process (:mod:`.worker`) so that a newer version of a
 document stops a stale analysis: they are published when a document is opened or saved, and
@@ -27,8 +30,9 @@ from lsprotocol import types as T
 from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
+from pygls.protocol.language_server import lsp_method
 
-from . import analysis, edits, preview, semantic, signature, window
+from . import analysis, edits, features, preview, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
 
 DEBOUNCE = 0.3          # seconds of quiet after a change before diagnostics are recomputed
@@ -43,7 +47,15 @@ class RequestFailed(JsonRpcException):
 
 
 class Protocol(LanguageServerProtocol):
-    """pygls' protocol, plus an error response for a request whose params do not structure."""
+    """pygls' protocol, plus an error response for a request whose params do not structure,
+    and positions always in UTF-16 (what :mod:`.analysis` counts; pygls would otherwise pick
+    the client's first preference, e.g. Neovim's UTF-8)."""
+
+    @lsp_method(T.INITIALIZE)
+    def lsp_initialize(self, params: T.InitializeParams):
+        if params.capabilities.general is not None:
+            params.capabilities.general.position_encodings = None
+        return (yield from super().lsp_initialize(params))
 
     def structure_message(self, data):
         try:
@@ -71,6 +83,7 @@ _pending: dict[str, asyncio.Task] = {}
 _published: dict[str, list[T.Diagnostic]] = {}      # uri -> the diagnostics last published
 _settings = {"debounce": DEBOUNCE}
 _analyzer: Analyzer | None = None
+_early: dict = {}          # uri -> (version, text, worker answer) from :mod:`.boot`
 
 
 def _get_analyzer() -> Analyzer:
@@ -148,6 +161,7 @@ async def _publish(ls: LanguageServer, uri: str, delay: float = 0.0) -> None:
     _published[uri] = diags
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=uri, diagnostics=diags, version=version))
+    features.refresh(ls, uri, _get_analyzer().facts.get(uri))   # hints and lenses, if changed
 
 
 def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
@@ -177,6 +191,7 @@ def initialize(ls: LanguageServer, params: T.InitializeParams):
     opts = params.initialization_options
     if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
         _settings["debounce"] = max(0.0, float(opts["debounce"]))
+    features.configure(opts)
 
 
 @server.feature(T.SHUTDOWN)
@@ -189,12 +204,24 @@ async def shutdown(ls: LanguageServer, params):
 @server.feature(T.TEXT_DOCUMENT_DID_OPEN)
 @_safe()
 def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
-    _schedule(ls, params.text_document.uri, 0.0)
+    d = params.text_document
+    early = _early.pop(d.uri, None)           # analysed by the start-up front already
+    if early is not None and early[0] == d.version and early[1] == d.text:
+        answer = early[2]
+        _published[d.uri] = converters.get_converter().structure(answer["diagnostics"],
+                                                                 list[T.Diagnostic])
+        _get_analyzer().values[d.uri] = answer.get("values") or {}
+        if answer.get("facts"):
+            _get_analyzer().facts[d.uri] = answer["facts"]
+        features.refresh(ls, d.uri, answer.get("facts"))
+        return
+    _schedule(ls, d.uri, 0.0)
 
 
 @server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
 @_safe()
 def did_change(ls: LanguageServer, params: T.DidChangeTextDocumentParams):
+    _get_analyzer().editing = True         # a warm spare worker is worth its start from now on
     _schedule(ls, params.text_document.uri, _settings["debounce"])
 
 
@@ -211,6 +238,9 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
     if old is not None:
         old.cancel()
     _published.pop(params.text_document.uri, None)
+    features.forget(params.text_document.uri)
+    if _analyzer is not None:
+        _analyzer.facts.pop(params.text_document.uri, None)
     ls.text_document_publish_diagnostics(
         T.PublishDiagnosticsParams(uri=params.text_document.uri, diagnostics=[]))
 
@@ -222,6 +252,11 @@ def hover(ls: LanguageServer, params: T.HoverParams):
     h = analysis.hover(src, line, ch, path)
     values = _analyzer.values.get(params.text_document.uri) if _analyzer is not None else None
     solved = analysis.value_hover(src, line, ch, values, path) if values else None
+    dof = features.dof_hover(params.text_document.uri, _doc(ls, params.text_document.uri)[0], path,
+                             line, ch, _analyzer.facts.get(params.text_document.uri)
+                             if _analyzer is not None else None)
+    if dof is not None:
+        solved = dof if solved is None else f"{solved}\n\n{dof}"
     if solved is None:
         return h
     if h is None:
@@ -346,6 +381,11 @@ def rename(ls: LanguageServer, params: T.RenameParams):
         raise RequestFailed(str(e)) from None
 
 
+features.register(server, _safe, _doc,
+                  lambda uri: _analyzer.facts.get(uri) if _analyzer is not None else None,
+                  RequestFailed)
+
+
 @server.feature("aidl/preview")
 @_safe()
 async def aidl_preview(ls: LanguageServer, params):
@@ -353,14 +393,25 @@ async def aidl_preview(ls: LanguageServer, params):
     return await preview.handle(ls, params)
 
 
-def main(worker=None) -> int:
-    """Serve over stdin/stdout until the client exits. ``worker``: a diagnostics worker process
-    started before this module was imported (:func:`.worker.spawn`), so it warms up meanwhile."""
-    global _analyzer
+def main(worker=None, stdin=None, stdout=None, published: dict | None = None,
+         hold=None, early: dict | None = None) -> int:
+    """Serve over stdin/stdout (or the streams given: :mod:`.boot` passes its own) until the
+    client exits. ``worker``: a diagnostics worker process started before this module was
+    imported (:func:`.worker.spawn`), so it warms up meanwhile. ``published``: uri -> the
+    diagnostics (LSP dicts) already published for it (by :mod:`.boot`), for quick fixes;
+    ``hold``: an event set once :mod:`.boot` has read the answer to the job it gave ``worker``;
+    ``early``: uri -> (version, text, that answer), filled by :mod:`.boot` when it comes (a
+    ``didOpen`` of that version and text is then not analysed again)."""
+    global _analyzer, _early
     logging.basicConfig(level=logging.WARNING)
-    _analyzer = Analyzer(worker)
+    _analyzer = Analyzer(worker, hold)
+    if early is not None:
+        _early = early
+    conv = converters.get_converter()
+    for uri, diags in list((published or {}).items()):
+        _published.setdefault(uri, conv.structure(diags, list[T.Diagnostic]))
     try:
-        server.start_io()
+        server.start_io(stdin, stdout)
     finally:
         _analyzer.close()
     return 0

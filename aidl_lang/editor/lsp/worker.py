@@ -5,13 +5,15 @@ The language server answers hover, completion and the rest on its event loop; th
 (parse, check, interpret, solve) can take long on an expensive program, and a Python thread
 cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.worker``, one
 JSON request per line on its stdin (``{"id", "text", "path", "uri", "solve"}``) and one JSON
-answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}}``, LSP
-diagnostics and, when the document solves, its solved values for hover).
+answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}, "facts": {...}}``,
+LSP diagnostics (:mod:`.plain`, no lsprotocol import) and, when the document solves, its
+solved values for hover and :func:`.hints.solved_facts` for inlay hints and code lenses).
 
 :class:`Analyzer` (in the server) keeps one worker warm and sends it one job at a time. When a
 job becomes stale (a newer edit of the same document), it is abandoned: if it has already run
 for :data:`Analyzer.GRACE` seconds the worker is killed and a warm spare takes over (the spare
-is started once the first diagnostics are out; a new worker needs about a second of imports),
+is started after the first answer once a document has been changed, so a session that only
+reads files runs one worker; a new worker needs about half a second of imports),
 else its answer is read and dropped. A job that runs past
 :data:`Analyzer.TIMEOUT` seconds is killed and reported as one diagnostic. If no worker can be
 started, the analysis runs in a thread of the server instead (no preemption, same answers).
@@ -26,13 +28,37 @@ import threading
 import time
 
 
+def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,
+                     values: dict[str, str] | None = None, extra: dict | None = None) -> list[dict]:
+    """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP ``Diagnostic`` dicts
+    (:mod:`.plain`; no lsprotocol import, so the worker process starts without it).
+
+    ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
+    another file (an import) are put on line 1 with their location in the message.  When the
+    file solves and ``values`` is a dict, it receives the solved values of the named entities
+    (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`.analysis.value_hover`; ``extra``, a
+    dict, receives what :func:`.hints.solved_facts` makes of the solved model (inlay hints and
+    degrees of freedom per structure).
+    """
+    from ...pipeline import compile_source
+    res = compile_source(src, path, do_solve=solve)
+    if res.ok and res.solve is not None and res.solve.converged and (
+            values is not None or extra is not None):
+        from ...api import Result
+        result = Result(res, path, src)
+        if values is not None:
+            values.update((v.name, v.text()) for v in result.values)
+        if extra is not None:
+            from .hints import solved_facts
+            extra.update(solved_facts(result))
+    from .plain import sink_json
+    return sink_json(src, path, res.sink.items, uri)
+
+
 def _serve() -> int:
     """The worker's loop: read a job per line, answer per line, until stdin closes."""
     import os
 
-    from lsprotocol import converters
-
-    from .analysis import diagnostics
     parent = os.getppid()
 
     def watch():                      # end with the server, even in the middle of a job
@@ -41,16 +67,17 @@ def _serve() -> int:
             if os.getppid() != parent:
                 os._exit(0)
     threading.Thread(target=watch, daemon=True).start()
-    conv = converters.get_converter()
     out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
-    diagnostics("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl")
+    diagnostics_json("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl",
+                     values={}, extra={})
     for line in sys.stdin:
         try:
             job = json.loads(line)
             values: dict[str, str] = {}
-            diags = diagnostics(job["text"], job["path"], job.get("solve", True), job.get("uri"),
-                                values)
-            answer = {"id": job["id"], "diagnostics": conv.unstructure(diags), "values": values}
+            extra: dict = {}
+            diags = diagnostics_json(job["text"], job["path"], job.get("solve", True),
+                                     job.get("uri"), values, extra)
+            answer = {"id": job["id"], "diagnostics": diags, "values": values, "facts": extra}
         except Exception as e:        # answered, never a dead worker
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
                       "error": f"{type(e).__name__}: {e}"}
@@ -83,16 +110,20 @@ class Analyzer:
     TIMEOUT = 30.0         # seconds after which any job is stopped
     SPARE = True           # keep a second warm worker to take over from a killed one
 
-    def __init__(self, proc: subprocess.Popen | None = None) -> None:
+    def __init__(self, proc: subprocess.Popen | None = None,
+                 hold: threading.Event | None = None) -> None:
         self.proc: subprocess.Popen | None = None
         self.lock = asyncio.Lock()
         self.seq = 0
         self.waiting: dict[int, tuple[subprocess.Popen, asyncio.Future]] = {}
         self.inflight: tuple[int, float, asyncio.Future] | None = None   # id, start, answer
         self.restarts = 0
+        self.editing = False                 # set by the server on the first change
         self._loop: asyncio.AbstractEventLoop | None = None
         self._proc0 = proc
+        self._hold = hold          # set when the start-up front has read its answer from proc
         self.values: dict[str, dict[str, str]] = {}   # uri -> its last analysis' solved values
+        self.facts: dict[str, dict] = {}              # uri -> its last solved analysis' solved_facts
 
     def start(self) -> None:
         """Adopt the worker started early (:func:`spawn`) or start one."""
@@ -100,13 +131,16 @@ class Analyzer:
         if self.proc is not None and self.proc.poll() is None:
             return
         proc, self._proc0 = self._proc0, None
+        hold, self._hold = self._hold, None
         if proc is None or proc.poll() is not None:
-            proc = spawn()
+            proc, hold = spawn(), None
         self.proc = proc
         if proc is not None:
-            threading.Thread(target=self._reader, args=(proc,), daemon=True).start()
+            threading.Thread(target=self._reader, args=(proc, hold), daemon=True).start()
 
-    def _reader(self, proc: subprocess.Popen) -> None:
+    def _reader(self, proc: subprocess.Popen, hold: threading.Event | None = None) -> None:
+        if hold is not None:       # the front's job comes first; its answer is the front's
+            hold.wait()
         for line in proc.stdout:
             try:
                 answer = json.loads(line)
@@ -166,13 +200,14 @@ class Analyzer:
             await self._settle()
             self.start()
             if self.proc is None:                        # no subprocess here: a thread
-                from lsprotocol import converters
-
-                from .analysis import diagnostics
                 values: dict[str, str] = {}
-                d = await loop.run_in_executor(None, diagnostics, text, path, solve, uri, values)
+                extra: dict = {}
+                d = await loop.run_in_executor(None, diagnostics_json, text, path, solve, uri,
+                                               values, extra)
                 self.values[uri] = values
-                return converters.get_converter().unstructure(d)
+                if extra:
+                    self.facts[uri] = extra
+                return d
             self.seq += 1
             job = self.seq
             fut = loop.create_future()
@@ -197,11 +232,13 @@ class Analyzer:
                 self.kill()
                 raise EOFError("the analysis worker exited") from None
             self.inflight = None
-            if self._proc0 is None and self.SPARE:
-                self._proc0 = spawn()        # a warm spare, started once the first answer is in
+            if self._proc0 is None and self.SPARE and self.editing:
+                self._proc0 = spawn()        # a warm spare, once the document is being edited
         if "error" in answer:
             raise RuntimeError(answer["error"])
         self.values[uri] = answer.get("values") or {}
+        if answer.get("facts"):                  # a program that does not solve keeps the
+            self.facts[uri] = answer["facts"]    # last solved hints (no flicker while typing)
         return answer["diagnostics"]
 
 

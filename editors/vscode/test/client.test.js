@@ -110,7 +110,9 @@ test('vscode-languageclient starts `aidl lsp`, opens an example and receives dia
   const diags = await waitFor(() => coll.get(vscode.Uri.file(bad)), 30000, 'diagnostics of the broken file');
   assert.equal(diags.length, 1);
   const d = diags[0];
-  assert.equal(d.code, 'E0103');
+  // the code links to its explanation (codeDescription.href -> docs/codes.md#e0103)
+  assert.equal(typeof d.code === 'object' ? d.code.value : d.code, 'E0103');
+  if (typeof d.code === 'object') assert.match(d.code.target.path, /docs\/codes\.md$/);
   assert.equal(d.severity, vscode.DiagnosticSeverity.Error);
   assert.deepEqual([d.range.start.line, d.range.start.character, d.range.end.character], [1, 8, 14]);
   assert.match(d.message, /did you mean `Circle`/);

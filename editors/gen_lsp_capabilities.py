@@ -1,0 +1,32 @@
+#!/usr/bin/env python3
+"""Regenerate ``aidl_lang/editor/lsp/_capabilities.py`` (the ``initialize`` answer that
+``aidl lsp`` sends before pygls is loaded, see :mod:`aidl_lang.editor.lsp.boot`) from the
+pygls server: ``python editors/gen_lsp_capabilities.py`` after adding or changing a server
+feature.  ``--check`` writes nothing and exits 1 if the committed file is out of date.
+"""
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from aidl_lang.editor.lsp.boot import capabilities_module  # noqa: E402
+
+TARGET = ROOT / "aidl_lang" / "editor" / "lsp" / "_capabilities.py"
+
+
+def main(argv) -> int:
+    text = capabilities_module()
+    old = TARGET.read_text(encoding="utf-8") if TARGET.exists() else None
+    if old == text:
+        return 0
+    if "--check" in argv:
+        print(f"{TARGET.relative_to(ROOT)} is out of date: run python editors/gen_lsp_capabilities.py")
+        return 1
+    TARGET.write_text(text, encoding="utf-8")
+    print(f"wrote {TARGET.relative_to(ROOT)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
