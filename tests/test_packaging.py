@@ -218,3 +218,13 @@ def test_check_and_svg_do_not_import_trimesh(tmp_path):
     r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
                        timeout=120, cwd=ROOT)
     assert r.stdout.strip() == "False", r.stderr
+
+
+def test_version_option_prints_the_installed_version(capsys):
+    """``aidl --version`` (in this checkout's editable install): ``aidl X.Y.Z``, exit 0, even
+    though a subcommand is otherwise required."""
+    from aidl_lang.cli.main import main
+    with pytest.raises(SystemExit) as e:
+        main(["--version"])
+    assert e.value.code == 0
+    assert capsys.readouterr().out == f"aidl {VERSION}\n"
