@@ -124,3 +124,38 @@ def test_the_batch_checks_that_its_blocks_are_independent():
     # use unknowns owned by the first
     blocks = [(rows[:half], np.arange(len(cols))), (rows[half:], np.arange(0))]
     assert not _independent(t, rows, cols, blocks)
+
+
+TWIN_PLATES = """def p() -> solid {
+    body = Rectangle(center=(0, 0), width=80, height=50)
+    for sx in [-1, 1] {
+        hole screw {
+            c = Circle(center=(0, 0), diameter=3.2)
+        }
+        screw.c.center == body.center + (sx * 34, 19)
+    }
+}
+
+assembly kit {
+    a = p()
+    b = p()
+}
+"""
+
+
+def test_blocks_whose_unknowns_substitution_holds_entirely_solve_batched():
+    """Two instances of a template whose holes are placed by an equation: every unknown of the
+    batched blocks is held once the equations are substituted (no class left), which made
+    ``newton_batch`` index an empty array (an internal error from ``aidl check``).  Batched
+    equals sequential, and each screw hole ends 34 mm beside and 19 mm above its plate's center."""
+    (first,) = _solve_both(TWIN_PLATES, [None])
+    assert first[0]
+    c = compile_source(TWIN_PLATES, "t.aidl")
+    assert c.ok, [d.message for d in c.sink.items]
+    import aidl_lang
+    r = aidl_lang.compile(source=TWIN_PLATES)
+    for inst in ("a", "b"):
+        cx, cy = r.value(f"kit.{inst}.body.center").value
+        for k, sx in enumerate((-1, 1)):
+            x, y = r.value(f"kit.{inst}.screw[{k}].c.center").value
+            assert (x - cx, y - cy) == pytest.approx((sx * 34, 19), abs=1e-9)

@@ -120,8 +120,10 @@ def newton_batch(tape: Tape, x0: np.ndarray, cols: np.ndarray, scale: np.ndarray
         """``newton``'s ``place`` for the blocks ``which`` (bool per block): ``0 + z`` (0 when
         the class is fixed) plus the offset, or the value itself when unreduced."""
         sel = which[pb]
-        val = np.where(fixed, 0.0, 0.0 + uu[pzc])
-        val = np.where(unred, uu[pzc], val + np.where(unred, 0.0, pt))
+        # no class left at all (every unknown held by substitution): nothing to gather
+        src = uu[pzc] if len(uu) else np.zeros(len(pzc))
+        val = np.where(fixed, 0.0, 0.0 + src)
+        val = np.where(unred, src, val + np.where(unred, 0.0, pt))
         xx[px[sel]] = val[sel]
 
     place(x, reduced, u)           # newton starts a reduced system at its class means
