@@ -10,6 +10,9 @@ skipped) is a marker naming what the block is meant to show:
 A ``# error[CODE]`` or ``# warning[CODE]`` comment inside a block must name an expected code,
 so the prose cannot promise a diagnostic the compiler does not give.
 
+The tutorial's ``aidl ...`` command lines run on the program above them (no warning; the
+parts list it shows is what ``aidl parts`` prints).
+
 Also: the command table (docs/language.md §10.1) lists every ``aidl`` subcommand of the CLI
 parser and only options that the parser has; the code table (§10.4) lists exactly the codes
 of :mod:`aidl_lang.codes`.  Failure messages name the file, the line of the block's first
@@ -180,3 +183,62 @@ def test_the_text_example_moves_the_label_onto_the_plate_not_the_plate():
     assert r.value("tag.eye.c.center").value == pytest.approx((-24, 0), abs=1e-9)
     x0, y0, x1, y1 = r.value("tag.label.bbox").value
     assert (x0 + x1) / 2 == pytest.approx(0, abs=1e-6) and (y0 + y1) / 2 == pytest.approx(0, abs=1e-6)
+
+
+# ------------------------------------------------------------------ the tutorial's commands
+def _tutorial_commands():
+    """Each ``aidl ...`` line of a ```sh block in docs/tutorial.md, with the ```aidl block
+    above it (saved as kit.aidl) and, for ``aidl parts``, the ```text block that shows its
+    output, if any."""
+    path = ROOT / "docs" / "tutorial.md"
+    lines = path.read_text(encoding="utf-8").split("\n")
+    out, program, i = [], None, 0
+    while i < len(lines):
+        fence = lines[i].strip()
+        if fence.startswith("```") and fence != "```":
+            j = i + 1
+            while lines[j].strip() != "```":
+                j += 1
+            body = lines[i + 1:j]
+            if fence == "```aidl":
+                program = "\n".join(body) + "\n"
+            elif fence == "```sh":
+                for k, line in enumerate(body):
+                    cmd = line.split("#", 1)[0].strip()
+                    if cmd.startswith("aidl "):
+                        out.append((f"docs/tutorial.md:{i + 2 + k}", program, cmd))
+            elif fence == "```text":         # the output of the last `aidl parts` above
+                k = max(n for n, c in enumerate(out) if c[2].startswith("aidl parts "))
+                out[k] = (*out[k][:3], "\n".join(body) + "\n")
+            i = j
+        i += 1
+    return [c if len(c) == 4 else (*c, None) for c in out]
+
+
+TUTORIAL_COMMANDS = _tutorial_commands()
+
+
+@pytest.mark.parametrize("where,program,cmd,shown", TUTORIAL_COMMANDS,
+                         ids=[c[0] for c in TUTORIAL_COMMANDS])
+def test_every_tutorial_command_runs_on_its_program(where, program, cmd, shown, tmp_path,
+                                                    monkeypatch, capsys):
+    """The commands the tutorial tells a newcomer to type work on the program above them, with
+    no warning; a shown output (the parts list) is what the command prints."""
+    import shlex
+
+    from aidl_lang.cli.main import main
+    assert program is not None, f"{where}: a command with no program above it"
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "kit.aidl").write_text(program)
+    rc = main(shlex.split(cmd)[1:])
+    out, err = capsys.readouterr()
+    assert rc == 0, f"{where}: `{cmd}` exits {rc}:\n{err}"
+    assert "warning[" not in err, f"{where}: `{cmd}` warns:\n{err}"
+    if shown is not None:
+        assert out == shown, f"{where}: `{cmd}` prints\n{out}\nnot what the tutorial shows:\n{shown}"
+
+
+def test_the_tutorial_commands_are_found():
+    cmds = [c[2] for c in TUTORIAL_COMMANDS]
+    assert len(cmds) >= 8 and any("--layout sheet" in c for c in cmds)
+    assert sum(c[3] is not None for c in TUTORIAL_COMMANDS) == 1
