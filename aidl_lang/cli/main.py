@@ -81,11 +81,31 @@ class _Unused:
         pass
 
 
+class _Version(argparse.Action):
+    """``aidl --version``: prints ``aidl X.Y.Z`` (the installed distribution's version) and
+    exits 0.  The version is read only when asked (``importlib.metadata`` costs ~10 ms)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS,
+                 help="print the version of aidl and exit"):
+        super().__init__(option_strings=option_strings, dest=dest, default=default, nargs=0,
+                         help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import PackageNotFoundError, version
+        try:
+            v = version("aidl-lang")
+        except PackageNotFoundError:       # run from a source tree that was never installed
+            v = "unknown (not installed)"
+        print(f"aidl {v}")
+        parser.exit(0)
+
+
 def _parser(only: str | None = None) -> argparse.ArgumentParser:
     """The ``aidl`` argument parser; ``only``: the subcommand given, the only one whose parser
     is built (``None``: all, for ``aidl --help`` and errors).  The subcommand list in the
     usage line is spelled out, so every message reads the same either way."""
     p = _Parser(prog="aidl", description="AIDL: a solver-aided hierarchical language for 2D CAD.")
+    p.add_argument("--version", action=_Version)
     sub = p.add_subparsers(dest="cmd", required=True, parser_class=_Parser,
                            metavar=None if only is None else "{" + ",".join(SUBCOMMANDS) + "}")
 
