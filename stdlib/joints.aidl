@@ -42,9 +42,12 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
         for i in range(n) {
             if kind == "flat" or (kind == "fingers") == (i % 2 == 0) {
                 s = t + (i + 0.5) * w
-                tab = Rectangle(center=(cx - width / 2 + s if e % 2 == 0 else (cx + width / 2 - 0.75 * t if e == 1 else cx - width / 2 + 0.75 * t),
-                                        cy - height / 2 + s if e % 2 == 1 else (cy - height / 2 + 0.75 * t if e == 0 else cy + height / 2 - 0.75 * t)),
-                                width=w if e % 2 == 0 else 1.5 * t, height=w if e % 2 == 1 else 1.5 * t)
+                side_x = cx + width / 2 - 0.75 * t if e == 1 else cx - width / 2 + 0.75 * t
+                side_y = cy - height / 2 + 0.75 * t if e == 0 else cy + height / 2 - 0.75 * t
+                tx = cx - width / 2 + s if e % 2 == 0 else side_x
+                ty = cy - height / 2 + s if e % 2 == 1 else side_y
+                tab = Rectangle(center=(tx, ty), width=w if e % 2 == 0 else 1.5 * t,
+                                height=w if e % 2 == 1 else 1.5 * t)
                 Fixed(tab.center)
             }
         }
