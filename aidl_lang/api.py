@@ -28,7 +28,7 @@ import math
 import os
 import re
 from collections.abc import Iterable, Mapping
-from .records import dataclass
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 

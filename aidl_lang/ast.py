@@ -4,7 +4,7 @@ Built by :mod:`aidl_lang.parser` from the Lark tree of ``grammar/aidl.lark``.
 """
 from __future__ import annotations
 
-from .records import dataclass, field
+from dataclasses import dataclass, field
 
 from .diagnostics import Span
 

@@ -7,7 +7,7 @@ cannot go on raises :class:`Abort` after recording why.
 """
 from __future__ import annotations
 
-from .records import dataclass, field
+from dataclasses import dataclass, field
 from collections import namedtuple
 from collections.abc import Iterable
 

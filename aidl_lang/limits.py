@@ -13,7 +13,7 @@ every budget figure by ``K``.
 """
 from __future__ import annotations
 
-from .records import dataclass
+from dataclasses import dataclass
 
 MAX_ITER = 10_000            # iterations of one loop or comprehension
 MAX_GEOMETRY = 50_000        # geometry objects in one model

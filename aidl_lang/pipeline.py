@@ -9,7 +9,7 @@ from __future__ import annotations
 import threading
 import time
 import warnings
-from .records import dataclass
+from dataclasses import dataclass
 
 import numpy as np
 

@@ -11,7 +11,7 @@ Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string
 from __future__ import annotations
 
 import math
-from .records import dataclass, field
+from dataclasses import dataclass, field
 
 REQUIRED = object()
 

@@ -22,7 +22,7 @@ Formatting is idempotent: ``format_source(format_source(s)) == format_source(s)`
 from __future__ import annotations
 
 import re
-from ..records import dataclass
+from dataclasses import dataclass
 
 from .. import ast as A
 from ..diagnostics import DiagnosticSink

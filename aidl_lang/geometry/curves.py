@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 Point = tuple[float, float]
 

@@ -7,7 +7,7 @@ structure has a translation frame (two parameters) relative to its parent; the r
 """
 from __future__ import annotations
 
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

@@ -9,7 +9,7 @@ validity rules can be checked where the value is used.
 """
 from __future__ import annotations
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 from .expr import Expr, _lin, as_const, lift
 from .model import Geometry, Point, Structure

@@ -18,7 +18,7 @@ that close on no area.
 from __future__ import annotations
 
 import math
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import manifold3d as mf
 import numpy as np

@@ -40,7 +40,7 @@ import numpy as np
 
 from ..diagnostics import DiagnosticSink, Label
 from ..geometry.tessellate import CHORD_TOL
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 from ..geometry.model import Structure
 from .booleans import Drawing
 from .nearby import box_pairs, boundary, close_pairs

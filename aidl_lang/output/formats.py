@@ -2,7 +2,7 @@
 ``.stl``, ``.3mf``, ``.step`` / ``.stp`` to a writer that turns an :class:`~.part.Output` into bytes."""
 from __future__ import annotations
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 from .part import Output
 

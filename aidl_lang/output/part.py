@@ -17,7 +17,7 @@ millimetres, angles in radians, y up.
 from __future__ import annotations
 
 import math
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

@@ -22,7 +22,7 @@ Two ways in:
 from __future__ import annotations
 
 import time
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import ast as A

@@ -16,7 +16,7 @@ conflict sets found, with their structure and source span.
 """
 from __future__ import annotations
 
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

@@ -22,7 +22,7 @@ on its own (``tests/test_solver_batch.py``).  Only dense-sized blocks are batche
 """
 from __future__ import annotations
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 import numpy as np
 

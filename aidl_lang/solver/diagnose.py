@@ -25,7 +25,7 @@ check does not pay SciPy's import.
 from __future__ import annotations
 
 import time
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

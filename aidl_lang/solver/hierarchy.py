@@ -24,7 +24,7 @@ of a held value (:meth:`Solver.set_value`) only reruns Newton.
 from __future__ import annotations
 
 import time
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 import numpy as np
 

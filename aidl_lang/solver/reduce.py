@@ -15,7 +15,7 @@ minimum-norm step meaningful: a class of ``k`` unknowns weighs like its members 
 """
 from __future__ import annotations
 
-from ..records import dataclass
+from dataclasses import dataclass
 
 import numpy as np
 

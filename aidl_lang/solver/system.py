@@ -15,7 +15,7 @@ Parameters: the model's ``x`` (``n_model`` entries) followed by one slack per in
 """
 from __future__ import annotations
 
-from ..records import dataclass, field
+from dataclasses import dataclass, field
 
 import numpy as np
 

@@ -24,7 +24,7 @@ stays valid when a held dimension is edited: re-solving after an edit only rerun
 """
 from __future__ import annotations
 
-from ..records import dataclass
+from dataclasses import dataclass
 from itertools import chain
 
 import numpy as np
