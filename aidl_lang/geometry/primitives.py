@@ -192,6 +192,12 @@ def _build_bar(ctx, g, a):
     g.scalars["width"], g.scalars["height"] = w, h
     ctx.internal(g, eqs, "Rectangle along a segment")
     bl, br, tr, tl = (g.points[n] for n in names)
+    _rectangle_edges(ctx, g, bl, br, tr, tl)
+
+
+def _rectangle_edges(ctx, g, bl, br, tr, tl) -> None:
+    """Give a four-cornered shape ``g`` its edges ``bottom right top left`` (construction
+    Lines between its corner points, parts of ``g``) and mark it closed."""
     for nm, (p, q) in {"bottom": (bl, br), "right": (br, tr), "top": (tl, tr), "left": (bl, tl)}.items():
         edge = Geometry("Line", ctx.struct, g.span, name=f"{g.name}.{nm}" if g.name else nm,
                         points={"start": p, "end": q}, construction=True)
@@ -274,12 +280,7 @@ def _build_Rectangle(ctx, g, a):
             g.points["center"] = cen.obj
         elif ctx.value_of(cen.x) is not None and not _is_const_pv(cen):
             ctx.internal(g, [Equation(cen.x - mx), Equation(cen.y - my)], "rectangle center")
-    for nm, (p, q) in {"bottom": (bl, br), "right": (br, tr), "top": (tl, tr), "left": (bl, tl)}.items():
-        edge = Geometry("Line", ctx.struct, g.span, name=f"{g.name}.{nm}" if g.name else nm,
-                        points={"start": p, "end": q}, construction=True)
-        edge.data["part_of"] = g
-        g.parts[nm] = edge
-    g.closed = True
+    _rectangle_edges(ctx, g, bl, br, tr, tl)
 
 
 def _is_const_pv(p: PV) -> bool:
