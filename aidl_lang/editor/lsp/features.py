@@ -81,34 +81,33 @@ def register(server, safe, doc, facts, failed) -> None:
     None); ``failed(message)`` -> the exception for a refused request."""
     conv = converters.get_converter()
 
+    def solved(ls, setting: str, uri: str):
+        """(source, program, facts) for a hint or lens request, or None: turned off, not
+        solved yet, or too large."""
+        f = settings[setting] and facts(uri)
+        if not f:
+            return None
+        d, path = doc(ls, uri)
+        if len(d.source) > window.LARGE:
+            return None
+        return d.source, program_of(uri, d, path), f
+
     @server.feature(T.TEXT_DOCUMENT_INLAY_HINT, T.InlayHintOptions())
     @safe([])
     def inlay_hint(ls, params: T.InlayHintParams):
-        if not settings["inlayHints"]:
+        got = solved(ls, "inlayHints", params.text_document.uri)
+        if got is None:
             return []
-        f = facts(params.text_document.uri)
-        if not f:
-            return []
-        d, path = doc(ls, params.text_document.uri)
-        if len(d.source) > window.LARGE:
-            return []
-        prog = program_of(params.text_document.uri, d, path)
-        out = hints.inlay_hints(d.source, prog, f, params.range.start.line, params.range.end.line)
+        out = hints.inlay_hints(*got, params.range.start.line, params.range.end.line)
         return conv.structure(out, list[T.InlayHint])
 
     @server.feature(T.TEXT_DOCUMENT_CODE_LENS, T.CodeLensOptions(resolve_provider=False))
     @safe([])
     def code_lens(ls, params: T.CodeLensParams):
-        if not settings["codeLens"]:
+        got = solved(ls, "codeLens", params.text_document.uri)
+        if got is None:
             return []
-        f = facts(params.text_document.uri)
-        if not f:
-            return []
-        d, path = doc(ls, params.text_document.uri)
-        if len(d.source) > window.LARGE:
-            return []
-        out = hints.code_lenses(d.source, program_of(params.text_document.uri, d, path), f)
-        return conv.structure(out, list[T.CodeLens])
+        return conv.structure(hints.code_lenses(*got), list[T.CodeLens])
 
     @server.feature(T.TEXT_DOCUMENT_FOLDING_RANGE)
     @safe([])
