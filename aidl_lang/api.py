@@ -242,34 +242,41 @@ class Result:
                                 inner, len(p.loops)))
         return out
 
-    def encode(self, fmt: str, **options) -> bytes:
+    def encode(self, fmt: str, kerf: float | None = None, **options) -> bytes:
         """The output in format ``fmt`` (``svg``, ``dxf``, ``png``, ``stl``, ``3mf``, ``step``;
-        a leading dot is allowed) as bytes.  ``options``: those of
-        :class:`~aidl_lang.output.formats.Options` (``show``, ``style``, ``dpi``, ``width``,
-        ``thickness`` mm, ``margin`` mm).  Raises :class:`ValueError` for an unknown format,
-        :class:`NotCompiled`, :class:`~aidl_lang.output.part.MissingDependency` (a format's
-        library is not installed) and :class:`~aidl_lang.output.part.OutputError`."""
-        from .output import FORMATS, Options, encode
+        a leading dot is allowed) as bytes, as ``aidl render`` writes it: the cutting formats
+        (SVG, DXF, PNG) with every cut offset by half the kerf — ``kerf`` in mm, ``None`` for
+        the program's own ``kerf`` statements, 0 for none; STL, 3MF and STEP are the designed
+        solid.  ``options``: those of :class:`~aidl_lang.output.formats.Options` (``show``,
+        ``style``, ``dpi``, ``width``, ``thickness`` mm, ``margin`` mm).  Raises
+        :class:`ValueError` for an unknown format, :class:`NotCompiled`,
+        :class:`~aidl_lang.output.part.MissingDependency` (a format's library is not
+        installed) and :class:`~aidl_lang.output.part.OutputError` (also a kerf larger than a
+        feature, naming the part)."""
+        from .output import CUT_FORMATS, FORMATS, Options, encode, for_cutting
         suffix = "." + fmt.lower().lstrip(".")
         if suffix not in FORMATS:
             raise ValueError(f"unknown output format `{fmt}`; use one of "
                              + ", ".join(sorted(f[1:] for f in FORMATS)))
-        return encode(self.output, suffix, Options(**options))
+        out = for_cutting(self.output, kerf) if suffix in CUT_FORMATS else self.output
+        return encode(out, suffix, Options(**options))
 
-    def to_svg(self, **options) -> str:
-        """The SVG text (mm page; ``options`` as for :meth:`encode`)."""
-        return self.encode("svg", **options).decode()
+    def to_svg(self, kerf: float | None = None, **options) -> str:
+        """The SVG text (mm page; ``kerf`` and ``options`` as for :meth:`encode`)."""
+        return self.encode("svg", kerf, **options).decode()
 
-    def to_png(self, **options) -> bytes:
-        """PNG bytes (``dpi`` default 96, or ``width`` in pixels; needs the ``png`` extra)."""
-        return self.encode("png", **options)
+    def to_png(self, kerf: float | None = None, **options) -> bytes:
+        """PNG bytes (``dpi`` default 96, or ``width`` in pixels; needs the ``png`` extra;
+        ``kerf`` as for :meth:`encode`)."""
+        return self.encode("png", kerf, **options)
 
-    def to_dxf(self) -> str:
-        """The DXF text (R2010, mm, ``cut``/``engrave`` layers)."""
-        return self.encode("dxf").decode()
+    def to_dxf(self, kerf: float | None = None) -> str:
+        """The DXF text (R2010, mm, ``cut``/``engrave`` layers; ``kerf`` as for
+        :meth:`encode`: the program's own unless given)."""
+        return self.encode("dxf", kerf).decode()
 
     def write(self, path: str | os.PathLike, follow_symlinks: bool = False,
-              force: bool = False, **options) -> Path:
+              force: bool = False, kerf: float | None = None, **options) -> Path:
         """Write the output to ``path``, the format by its extension, with the rules of
         ``aidl render`` (docs/outputs.md, "Writing files"): never over the program itself,
         never a directory, a symlink refused unless ``follow_symlinks`` (then written
@@ -277,7 +284,7 @@ class Result:
         beside it and renamed, a new file gets the umask's permissions.  Returns the path.
         Raises :class:`WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
         out = check_output_path(path, self.path, follow_symlinks, force)
-        data = self.encode(out.suffix, **options)
+        data = self.encode(out.suffix, kerf, **options)
         write_atomic(out, data, follow_symlinks)
         return out
 

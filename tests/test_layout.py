@@ -297,6 +297,28 @@ def _check_kerf_dxf(path):
         assert abs(s.length - 20) <= 1e-9
 
 
+def test_api_writes_the_programs_kerf_as_render_does(tmp_path):
+    """`aidl_lang.compile(...).to_dxf()` / `write` / `encode` apply the program's `kerf` to the
+    cutting formats as `aidl render` does (they used to ignore it); `kerf=` overrides it, 0 is
+    none; STL keeps the designed size."""
+    import aidl_lang
+    prog = write(tmp_path, "plate", "kerf 0.2 mm\n" + PLATE)
+    r = aidl_lang.compile(path=prog)
+    api_dxf = tmp_path / "api.dxf"
+    api_dxf.write_text(r.to_dxf())
+    _check_kerf_dxf(api_dxf)
+    r.write(tmp_path / "w.dxf")
+    _check_kerf_dxf(tmp_path / "w.dxf")
+    cli_svg = tmp_path / "cli.svg"
+    assert main(["render", str(prog), "-o", str(cli_svg)]) == 0
+    assert r.to_svg() == cli_svg.read_text()
+    for kerf, radius in ((0, 5.0), (0.4, 4.8)):
+        (tmp_path / "k.dxf").write_text(r.to_dxf(kerf=kerf))
+        (circle,) = [e for e in read_dxf(tmp_path / "k.dxf") if e.dxftype == "CIRCLE"]
+        assert abs(circle.segments[0].radius - radius) <= 1e-9
+    assert r.encode("stl") == aidl_lang.compile(source=PLATE, path=prog).encode("stl")
+
+
 @pytest.mark.parametrize("how", ["option", "statement"])
 def test_kerf_offsets_cuts_exactly_dxf_and_svg(how, tmp_path):
     src = PLATE if how == "option" else "kerf 0.2 mm\n" + PLATE

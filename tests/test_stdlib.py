@@ -26,16 +26,8 @@ def compile_ok(tmp_path, src: str, name: str = "t.aidl", **kw):
 
 
 def dxf_of(result):
+    """The DXF `aidl render` writes (the program's `kerf` applied), re-read by ezdxf."""
     return ezdxf.read(io.StringIO(result.to_dxf()))
-
-
-def cut_dxf_of(result):
-    """The DXF `aidl render` writes: the program's `kerf` applied (the API's to_dxf does not)."""
-    from aidl_lang.output import Options, encode
-    from aidl_lang.output.layout import compensate
-    kerf = result.compiled.drawing.kerf
-    out = compensate(result.output, kerf) if kerf else result.output
-    return ezdxf.read(io.StringIO(encode(out, ".dxf", Options()).decode()))
 
 
 def segments(poly):
@@ -311,7 +303,7 @@ def check_box(tmp_path, L, D, H, T, finger, kerf):
         "length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm, finger=10 mm",
         f"length={L} mm, depth={D} mm, height={H} mm, thickness={T} mm, finger={finger} mm")
     r = compile_ok(tmp_path, src)
-    layers = by_layer(cut_dxf_of(r))
+    layers = by_layer(dxf_of(r))
     panels = {}
     for name in ("bottom", "front", "back", "left", "right", "lid"):
         (pl,) = [e for e in layers[f"CUT-kit.box.{name}"] if e.dxftype() == "LWPOLYLINE"]

@@ -21,11 +21,6 @@ FIELDS = ("id", "path", "sha256", "options", "status", "ok", "failure", "errors"
 
 STATUSES = ("ok", "error", "timeout", "crashed")
 
-# the formats a cutter reads (and their preview): written with the program's kerf, as
-# `aidl render` writes them; STL, 3MF and STEP keep the designed size
-CUT_FORMATS = (".svg", ".dxf", ".png")
-
-
 def sha256(data: str | bytes) -> str:
     if isinstance(data, str):
         data = data.encode("utf-8")
@@ -103,12 +98,9 @@ def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
     """Write each format as ``OUT_DIR/STEM.EXT`` (:func:`aidl_lang.api.write_atomic`, as
     ``aidl render``: a reader never sees half a file); returns the paths written."""
     from ..api import write_atomic
-    from ..output import encode
-    cut = output                  # what a cutter reads: the program's `kerf` offsets its cuts,
-    kerf = output.drawing.kerf if output.drawing is not None else None     # as `aidl render`
-    if kerf and any(s in CUT_FORMATS for s in suffixes):
-        from ..output.layout import compensate
-        cut = compensate(output, kerf)
+    from ..output import CUT_FORMATS, encode, for_cutting
+    # what a cutter reads has the program's `kerf` applied, as `aidl render` writes it
+    cut = for_cutting(output) if any(s in CUT_FORMATS for s in suffixes) else output
     items = [(out_dir / f"{stem}{suffix}", encode(cut if suffix in CUT_FORMATS else output,
                                                   suffix))
              for suffix in suffixes]

@@ -360,11 +360,6 @@ def _length_mm(text: str, zero: bool = False) -> float | None:
     return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
 
 
-# the formats a cutter reads (and their preview): the kerf offsets their cuts; STL, 3MF and
-# STEP keep the designed size
-CUT_FORMATS = (".svg", ".dxf", ".png")
-
-
 def _sheet_mm(text: str) -> tuple[float, float] | None:
     """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
     import re
@@ -552,12 +547,8 @@ def cmd_render(args) -> int:
                   thickness=thickness, margin=args.margin)
     notes = []
     try:
-        if kerf is None:
-            kerf = res.drawing.kerf or None        # the program's `kerf` statements
-        cut = output                               # the 2D formats' output: kerf offset
-        if kerf:
-            from ..output.layout import compensate
-            cut = compensate(output, kerf)
+        from ..output import CUT_FORMATS, for_cutting
+        cut = for_cutting(output, kerf)            # --kerf, else the program's `kerf`
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan

@@ -12,7 +12,8 @@ import importlib
 _WHERE = {"Drawing": "booleans", "Part": "booleans", "area": "booleans",
           "render_model": "booleans", "to_svg": "svg", "Output": "part", "build": "part",
           "MissingDependency": "part", "OutputError": "part", "FORMATS": "formats",
-          "Options": "formats", "encode": "formats"}
+          "Options": "formats", "encode": "formats", "CUT_FORMATS": "formats",
+          "for_cutting": "formats"}
 
 __all__ = list(_WHERE)
 

@@ -52,6 +52,25 @@ def _step(o: Output, opt: Options) -> bytes:
     return to_step(o, opt.thickness)
 
 
+# The formats a cutter reads (and their preview): written with the kerf offset applied.  STL,
+# 3MF and STEP are the designed solid and never offset.
+CUT_FORMATS = (".svg", ".dxf", ".png")
+
+
+def for_cutting(output: Output, kerf: float | dict | None = None) -> Output:
+    """``output`` as a cutter reads it: every cut of a solid part offset by half the kerf
+    (:func:`~.layout.compensate`).  ``kerf``: mm, or a dict part name -> mm; ``None`` takes
+    the program's ``kerf`` statements (``output.drawing.kerf``); 0 or no kerf anywhere returns
+    ``output`` itself.  Raises :class:`~.layout.LayoutError` (an :class:`~.part.OutputError`)
+    naming the part where a feature is smaller than the offset."""
+    if kerf is None and output.drawing is not None:
+        kerf = output.drawing.kerf
+    if not kerf:
+        return output
+    from .layout import compensate
+    return compensate(output, kerf)
+
+
 FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf,
            ".step": _step, ".stp": _step}
 

@@ -56,10 +56,16 @@ def writers() -> dict[str, object]:
 
     Every format of :data:`aidl_lang.output.FORMATS` (the ones ``aidl render`` writes by
     extension: svg, dxf, png, stl, 3mf, step): the drawing becomes the exact output model
-    (:func:`aidl_lang.output.build`) and is encoded by the same writer the CLI uses.  A format
+    (:func:`aidl_lang.output.build`), the cutting formats with the program's ``kerf`` applied,
+    and is encoded by the same writer the CLI uses.  A format
     whose optional library is missing raises :class:`aidl_lang.output.MissingDependency`."""
     def writer(suffix: str):
-        return lambda d, title: output.encode(output.build(d, title), suffix)
+        def write(d, title):
+            out = output.build(d, title)
+            if suffix in output.CUT_FORMATS:       # the program's `kerf`, as `aidl render`
+                out = output.for_cutting(out)
+            return output.encode(out, suffix)
+        return write
     return {s.lstrip("."): writer(s) for s in output.FORMATS}
 
 

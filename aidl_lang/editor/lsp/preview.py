@@ -17,8 +17,9 @@ Result (JSON)::
      "diagnostics": {"errors", "warnings", "first": {"code", "message", "range"} | null},
      "ms": compile time in milliseconds}
 
-The SVG is ``aidl_lang.compile(...).to_svg()`` — exactly what ``aidl render FILE --set ...``
-writes — plus one last group, ``<g id="aidl-shapes">``, drawn invisible (``fill`` and
+The SVG is ``aidl_lang.compile(...).to_svg(kerf=0)`` — what ``aidl render FILE --set ...``
+writes, at the designed size (a program's ``kerf`` is left out, so the picture matches the
+shapes below and the code) — plus one last group, ``<g id="aidl-shapes">``, drawn invisible (``fill`` and
 ``stroke`` transparent, so it can be hovered and clicked): one element per shape of the
 program (a primitive's face as the booleans saw it, ``class="aidl-shape"``; an engraved or
 open curve, ``class="aidl-stroke"``; a structure's whole shape, ``class="aidl-struct"``, drawn
@@ -97,7 +98,7 @@ def preview(source: str, path: str, uri: str, version: int | None = None,
            "diagnostics": _summary(r, source, path)}
     if r.ok and r.compiled.drawing is not None:
         try:
-            svg = r.to_svg()
+            svg = r.to_svg(kerf=0)        # the designed size, as the shapes below
             overlay, shapes = _overlay(r.compiled.drawing, source, path)
             out["svg"] = svg.replace("</svg>", overlay + "</svg>") if overlay else svg
             out["shapes"] = shapes
