@@ -359,6 +359,18 @@ fit.
     #                 with hole `bracket.first_pattern[4]`
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0103": ("a size that depends on solved geometry", """
+A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and
+`angle`, an `Arc`'s radius and angles, a `rotation`, a rectangle's `width`...) is read once,
+when the shape is made. If it depends on geometry that the solver moves (`c.radius` of a
+circle constrained later), the value before solving is used and held: the shape does not follow
+the solved value. Give a number or a param, or relate the shapes with a constraint.
+
+    c = Circle(center=(0, 0), radius=5)
+    l = Line(start=(0, 0), length=c.radius, angle=0 deg)    # 5, even if c is solved to 8
+    l = Line(start=(0, 0), end=(8, 0))                      # instead: draw it, then
+    Length(l, c.radius)                                     # relate it with a constraint
+"""),
     "W0106": ("floor division used as a length", """
 `//` between two numbers or lengths is floor division (`7 // 2` is 3), and its result is used
 as a length, or is a length (`80 mm // 3` is 26 mm): the fraction is dropped, which is rarely
