@@ -199,8 +199,9 @@ After solving, some constraints still do not hold: they contradict each other or
 held by a constructor (width, radius, ...). The message lists them with their residuals (how far
 off they are, in mm or radians). When the solver can find the smallest set of constraints that
 contradict each other (a rank-revealing factorization of the Jacobian), the error names exactly
-that set, one label per member, constructor-held dimensions included. Change one member of the
-set so that they agree; the others can stay.
+that set, one label per member, constructor-held dimensions included. A constraint on sizes
+that constructors hold and nothing else (below) is named with those sizes, a label on each
+constructor. Change one member of the set so that they agree; the others can stay.
 
     solid s {
         c = Circle(center=(0, 0), radius=5)

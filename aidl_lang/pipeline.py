@@ -6,6 +6,7 @@ previous ones produced no errors.
 """
 from __future__ import annotations
 
+import math
 import threading
 import time
 import warnings
@@ -317,6 +318,55 @@ def _rigid_note(s) -> str:
             "one body, never bent; if the shape must change, drop `Rigid` or constrain inside it")
 
 
+def _against_held(sink: DiagnosticSink, model: Model, c) -> bool:
+    """E0401 for a constraint whose every parameter is a dimension its constructor holds
+    (``Radius(c, 8)`` on ``Circle(..., radius=5)``): no solve can move it, so the message
+    names the held values and the label points at the constructors.  False (nothing
+    reported) when the constraint involves an unknown or a value held by no constructor."""
+    from .registry import UNITS_LENGTH
+    index: set[int] = set()
+    todo = [e.expr for e in c.equations]
+    while todo:
+        e = todo.pop()
+        if hasattr(e, "terms"):
+            index.update(e.terms)
+        else:
+            todo += [a for a in getattr(e, "args", ()) if hasattr(a, "terms") or hasattr(a, "args")]
+    if not index or any(model.free[i] for i in index):
+        return False
+    held = {}
+    for st in model.structures:
+        for g in st.geometry:
+            for name, sc in g.scalars.items():
+                if sc.index in index and g.span is not None:
+                    held[sc.index] = (g, name, sc)
+    if set(held) != index:
+        return False
+    unit = model.file_units.get(c.span.file, "mm") if c.span is not None else "mm"
+
+    def value(sc) -> str:
+        v = model.x[sc.index]
+        if sc.dim == "length":
+            return f"{v / UNITS_LENGTH[unit]:.6g} {unit}"
+        if sc.dim == "angle":
+            return f"{math.degrees(v):.6g} deg"
+        return f"{v:.6g}"
+    said = ", ".join(f"`{g.owner.path}.{g.name or g.kind}.{name}` = {value(sc)}"
+                     for g, name, sc in held.values())
+    labels = [Label(g.span, f"`{name}` is held at {value(sc)} by this constructor",
+                    primary=False) for g, name, sc in held.values()]
+    sink.add(Diagnostic(
+        "E0401",
+        f"`{c.describe()}` cannot hold: it involves only sizes held by "
+        f"{'their constructors' if len(held) > 1 else 'a constructor'} ({said}), which no "
+        "solve changes",
+        c.span, "error",
+        hint="a size given to a constructor is held, not solved: give the constructor the "
+             f"size you want and drop `{c.describe()}`, or change it to agree",
+        labels=labels))
+    return True
+
+
 def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
     """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
     the iteration budget ran out."""
@@ -365,6 +415,8 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
                                      "check the dimensions"))
         return
     explicit = [(c, r) for c, r in items if not c.implicit] or items
+    if sum([_against_held(sink, result.solver.model, c) for c, _ in explicit[:3]]):
+        return
     first, r0 = explicit[0]
     labels = []
     for c, r in explicit[1:8]:

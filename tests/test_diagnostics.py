@@ -646,6 +646,19 @@ def test_size_from_solved_geometry_W0103(compile_text):
     assert span4(d)[:2] == (3, 5)
 
 
+def test_constraint_on_constructor_held_sizes_names_them(compile_text):
+    """`Radius(c, 7)` on `Circle(..., radius=5)` (no unknown in it): E0401 at the constraint
+    naming the held value in the file's units, one label on each constructor."""
+    c = compile_text("units in\nsolid s {\n    a = Circle(center=(0, 0), radius=1)\n"
+                     "    b = Circle(center=(3, 0), radius=2)\n    Equal(a, b)\n}\n")
+    d = the_error(c, "E0401")
+    assert span4(d)[:2] == (5, 5)
+    assert "`s.a.radius` = 1 in, `s.b.radius` = 2 in" in d.message
+    assert [(lab.span.line, lab.message) for lab in d.labels] == [
+        (3, "`radius` is held at 1 in by this constructor"),
+        (4, "`radius` is held at 2 in by this constructor")]
+
+
 def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)

@@ -25,6 +25,7 @@ class Model:
         self.constraints: list[Constraint] = []
         self.structures: list[Structure] = []
         self.units = "mm"
+        self.file_units: dict[str, str] = {}      # file -> its `units` (when not mm), for messages
         self.assertions: list[Assertion] = []     # `assert` statements left for after solving
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:

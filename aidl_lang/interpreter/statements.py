@@ -105,6 +105,8 @@ class Statements:
                                     suggestions=did_you_mean(st.unit, UNITS_LENGTH))
                 else:
                     fctx.unit_scale = UNITS_LENGTH[u]
+                    if st.span is not None:
+                        self.model.file_units[st.span.file] = u
         self.model.units = "mm"
         for st in program.stmts:
             try:
