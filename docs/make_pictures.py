@@ -12,6 +12,12 @@ HTML comment on the same line adds render options, e.g.
 *Gallery.*  Every ``examples/*.aidl`` is rendered to ``docs/images/gallery-NAME.png`` and
 listed in docs/gallery.md with the first sentence of its leading comment.
 
+*Figures.*  Every other picture of the docs comes from a program: ``docs/figures/NAME.aidl``
+is rendered to ``docs/images/NAME.png`` (its ``# render: OPTIONS`` line, if any, adds
+``aidl render`` options such as ``--png-width 654``), and the pictures of bundled examples
+with options (:data:`EXAMPLE_FIGURES`, e.g. the laser box's cutting sheet).  The editor
+screenshots (``vscode-*.png``) are made by editors/vscode/test/*_screenshot.py instead.
+
 *Up to date.*  tests/test_pictures.py re-renders every picture and compares it with the
 committed PNG pixel by pixel, allowing for anti-aliasing: a picture is out of date when more
 than ``TOLERANCE`` of its pixels differ by more than ``LEVELS`` (of 255) in some channel, or
@@ -78,6 +84,32 @@ def tutorial_pictures() -> list[Picture]:
     return out
 
 
+# pictures of bundled examples with render options: (name, example, options)
+EXAMPLE_FIGURES = [
+    ("laser_box_assembly", "laser_box", ("--png-width", "420")),
+    ("laser_box_sheet", "laser_box", ("--layout", "sheet", "--sheet", "300x200mm",
+                                      "--kerf", "0.15mm")),
+    ("stdlib_gear_pair", "gear_pair", ("--png-width", "520")),
+]
+RENDER_LINE = re.compile(r"^#\s*render:(.*)$", re.M)
+SCREENSHOTS = "vscode-*.png"     # drawn by editors/vscode/test/*_screenshot.py
+
+
+def figure_pictures() -> list[Picture]:
+    """docs/figures/*.aidl (options from a ``# render:`` line) and :data:`EXAMPLE_FIGURES`."""
+    out = []
+    for p in sorted((DOCS / "figures").glob("*.aidl")):
+        m = RENDER_LINE.search(p.read_text(encoding="utf-8"))
+        out.append(Picture(p.stem, None, p, tuple(m[1].split()) if m else ()))
+    for name, example, options in EXAMPLE_FIGURES:
+        out.append(Picture(name, None, ROOT / "examples" / f"{example}.aidl", options))
+    return out
+
+
+def all_pictures() -> list[Picture]:
+    return tutorial_pictures() + gallery_pictures() + figure_pictures()
+
+
 def examples() -> list[Path]:
     return sorted((ROOT / "examples").glob("*.aidl"))
 
@@ -123,8 +155,8 @@ def render(pic: Picture) -> bytes:
         out = Path(tmp) / f"{pic.name}.png"
         err = io.StringIO()
         with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
-            rc = main(["render", str(prog), "-o", str(out), "--png-width", str(WIDTH),
-                       *pic.options])
+            width = () if "--png-width" in pic.options else ("--png-width", str(WIDTH))
+            rc = main(["render", str(prog), "-o", str(out), *width, *pic.options])
         if rc != 0 or not out.exists():
             where = (f"docs/tutorial.md:{pic.line}" if pic.line
                      else str(pic.path.relative_to(ROOT)))
@@ -155,7 +187,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--check", action="store_true", help="write nothing; list what is out of date")
     args = ap.parse_args(argv)
     stale = []
-    for pic in tutorial_pictures() + gallery_pictures():
+    for pic in all_pictures():
         png = render(pic)
         why = difference(png, pic.png)
         if why is None:
@@ -164,6 +196,10 @@ def main(argv: list[str] | None = None) -> int:
         if not args.check:
             pic.png.write_bytes(png)
             print(f"wrote {pic.png.relative_to(ROOT)} ({why})")
+    made = {pic.png.name for pic in all_pictures()}
+    stale += [f"docs/images/{p.name} is made by nothing: add its program to docs/figures/"
+              for p in sorted(IMAGES.glob("*.png"))
+              if p.name not in made and not p.match(SCREENSHOTS)]
     gallery = DOCS / "gallery.md"
     text = gallery_markdown()
     if not gallery.exists() or gallery.read_text(encoding="utf-8") != text:

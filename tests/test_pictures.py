@@ -1,5 +1,6 @@
-"""The documentation's pictures are up to date: every tutorial step (docs/tutorial.md) and
-every example of the gallery (docs/gallery.md) is rendered again by the real command line
+"""The documentation's pictures are up to date: every tutorial step (docs/tutorial.md), every
+example of the gallery (docs/gallery.md) and every figure (docs/figures/*.aidl and the
+examples' figures) is rendered again by the real command line
 and compared with the committed PNG in docs/images, pixel by pixel within the anti-aliasing
 tolerance of docs/make_pictures.py (which regenerates them: ``python docs/make_pictures.py``)."""
 import importlib.util
@@ -18,7 +19,7 @@ mp = importlib.util.module_from_spec(_spec)
 sys.modules["make_pictures"] = mp          # its dataclasses look their module up
 _spec.loader.exec_module(mp)
 
-PICTURES = mp.tutorial_pictures() + mp.gallery_pictures()
+PICTURES = mp.all_pictures()
 FIX = "; regenerate with `python docs/make_pictures.py` and look at the picture before committing"
 
 
@@ -37,6 +38,19 @@ def test_the_gallery_shows_every_example_and_is_generated():
     assert text == mp.gallery_markdown(), "docs/gallery.md is out of date" + FIX
     for p in mp.examples():
         assert f"(images/gallery-{p.stem}.png)" in text, p.name
+
+
+def test_every_picture_of_the_docs_is_made_by_a_program():
+    """Each docs/images/*.png (but the editor screenshots) is rendered from a program, and each
+    picture a page shows exists: no picture that nobody can regenerate."""
+    made = {p.png.name for p in PICTURES}
+    images = {p.name for p in (ROOT / "docs" / "images").glob("*.png")}
+    assert sorted(n for n in images - made if not n.startswith("vscode-")) == []
+    shown = set()
+    for page in [ROOT / "README.md", *(ROOT / "docs").glob("*.md")]:
+        shown |= set(re.findall(r"\]\((?:docs/)?images/([\w.-]+\.png)\)", page.read_text()))
+    assert shown and sorted(shown - images) == []
+    assert len(made & shown) >= 30
 
 
 def test_the_readme_shows_the_telephone():
