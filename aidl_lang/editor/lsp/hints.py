@@ -23,7 +23,7 @@ import math
 
 from ... import ast as A
 
-MAX_NAMED_UNKNOWNS = 300         # structures up to this many unknowns get their floating names
+MAX_NAMED_UNKNOWNS = 5000        # structures up to this many unknowns get their floating names
 MAX_NAMED = 4                     # floating entities named in a lens
 
 
@@ -112,8 +112,9 @@ def _params(result) -> dict[str, str]:
 def _freedom(result) -> dict[str, str]:
     """structure path -> its degrees-of-freedom text.  The count per structure is cheap (ranks,
     as ``aidl check`` counts them); naming what floats needs a null space per structure, so it
-    is done (``Result.freedom(detail=True)``, as ``aidl check --dof``) only when no structure
-    has more than :data:`MAX_NAMED_UNKNOWNS` unknowns (~0.1 s at that size)."""
+    is done (``Result.freedom(detail=True)``, as ``aidl check --dof``: propagation, then an
+    SVD of what is left, ~0.1 s for the 5 000-unknown gear pair) only when no structure has
+    more than :data:`MAX_NAMED_UNKNOWNS` unknowns."""
     from ...solver.diagnose import degrees_of_freedom
     model = result.compiled.model
     counts = degrees_of_freedom(result.compiled.solve.solver, floating=False)
