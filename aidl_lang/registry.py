@@ -533,6 +533,28 @@ def arg_synonyms(entry_name: str) -> dict[str, tuple[str, ...]]:
     return out
 
 
+# a count spelled as an LLM would guess it: `num_teeth`, `n_teeth`, `number_of_teeth`,
+# `teeth_count` for a template parameter `teeth`
+_COUNT_PREFIXES = ("num_", "n_", "number_of_")
+_COUNT_SUFFIXES = ("_count",)
+
+
+def template_param(keyword: str, params: list[str]) -> str | None:
+    """The parameter of a template (``def f(teeth=20, radius=5 mm)``) that the keyword
+    ``keyword`` of a call names: itself, else a synonym an LLM would guess — the generic
+    argument synonyms of every entry (``r`` -> ``radius``, ``d`` -> ``diameter``, ``w`` ->
+    ``width``...) or a count spelled ``num_X``, ``n_X``, ``number_of_X``, ``X_count`` — when
+    it is a parameter; ``None`` when nothing fits.  A library written in AIDL gets the same
+    synonyms as the built-in shapes without declaring any."""
+    if keyword in params:
+        return keyword
+    canon = ARG_SYNONYMS["*"].get(keyword, ())
+    cands = list(canon if isinstance(canon, tuple) else (canon,))
+    cands += [keyword[len(p):] for p in _COUNT_PREFIXES if keyword.startswith(p)]
+    cands += [keyword[:-len(s)] for s in _COUNT_SUFFIXES if keyword.endswith(s)]
+    return next((c for c in cands if c in params), None)
+
+
 def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
                 kwnames: list[str]) -> dict[str, str]:
     """Keyword names as written -> the variant's canonical names (aliases resolved).

@@ -17,7 +17,7 @@ from __future__ import annotations
 from . import ast as A
 from .diagnostics import DiagnosticSink, did_you_mean
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
-                       lookup)
+                       lookup, template_param)
 from .sources import ImportRefused
 
 
@@ -333,12 +333,17 @@ class Checker:
             return
         given = set(params[:len(e.args)])
         for kw in e.kwargs:
-            if kw.name not in params:
+            name = template_param(kw.name, params)
+            if name is None:
                 sugg = did_you_mean(kw.name, params)
                 self.sink.error("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
                                 hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
                                 + f"parameters: {', '.join(params) or 'none'}", suggestions=sugg)
-            given.add(kw.name)
+            elif name in given:
+                self.sink.error("E0105", f"`{d.name}`: `{name}` is given twice"
+                                + (f" (`{kw.name}` is another name for it)" if name != kw.name
+                                   else ""), kw.span, hint=f"give `{name}` once")
+            given.add(name or kw.name)
         for p in d.params:
             if p.default is None and p.name not in given:
                 self.sink.error("E0106", f"`{d.name}` needs the argument `{p.name}`", e.span,

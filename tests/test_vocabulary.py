@@ -211,3 +211,41 @@ def test_mirror_with_two_arguments_points_to_the_operation(compile_text):
                      "    Mirror(a, l)\n}\n")
     d = c.sink.items[0]
     assert d.code == "E0106" and "Mirrored(target, about=line)" in d.hint
+
+
+# ------------------------------------------------------------------ template keywords
+WHEEL = """def wheel(radius = 10 mm, teeth = 8, bore = 2 mm) -> solid {
+    rim = Circle(center=(0, 0), radius=radius)
+    hole axle { c = Circle(center=(0, 0), radius=bore) }
+}
+assembly cart {
+    w = wheel(CALL)
+}
+"""
+
+
+@pytest.mark.parametrize("call,radius,teeth", [
+    ("r=12 mm", 12.0, 8), ("num_teeth=14", 10.0, 14), ("n_teeth=15", 10.0, 15),
+    ("number_of_teeth=16", 10.0, 16), ("teeth_count=17, r=7 mm", 7.0, 17),
+])
+def test_template_keywords_take_the_synonyms_of_built_in_shapes(compile_text, call, radius, teeth):
+    """A template's parameters answer to the synonyms an LLM would guess (`r`, `num_teeth`...)
+    as the built-in shapes' arguments do, in the checker and the interpreter alike."""
+    import aidl_lang
+    r = aidl_lang.compile(source=WHEEL.replace("CALL", call + ", bore=1 mm"))
+    assert r.ok, [d.message for d in r.diagnostics]
+    assert r.value("cart.w.rim.radius").value == pytest.approx(radius, abs=1e-12)
+    src = WHEEL.replace("CALL", call).replace("radius=bore", "radius=teeth / 4")
+    r = aidl_lang.compile(source=src)
+    assert r.ok and r.value("cart.w.axle.c.radius").value == pytest.approx(teeth / 4, abs=1e-12)
+
+
+@pytest.mark.parametrize("call,message", [
+    ("num_teeth=14, teeth=12", "`wheel`: `teeth` is given twice"),
+    ("teeth=12, n_teeth=14", "`wheel`: `teeth` is given twice (`n_teeth` is another name for it)"),
+    ("num_spokes=3", "`wheel` has no parameter `num_spokes`"),
+])
+def test_template_keyword_errors(compile_text, call, message):
+    c = compile_text(WHEEL.replace("CALL", call))
+    (d,) = [d for d in c.sink.items if d.code == "E0105"]
+    assert d.message == message

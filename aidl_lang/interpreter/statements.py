@@ -15,7 +15,7 @@ from ..geometry.primitives import member as geom_member
 from ..geometry.expr import Lin, _new
 from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
-from ..registry import (CONSTANTS, UNITS_LENGTH)
+from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
 from .calls import _NO_PLAN
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
@@ -596,11 +596,15 @@ class Statements:
         for p, a in zip(params, call.args):
             vals[p] = (self.eval(a), a)
         for kw in call.kwargs:
-            if kw.name not in params:
+            param = template_param(kw.name, params)
+            if param is None:
                 raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
                                 hint=f"parameters: {', '.join(params) or 'none'}",
                                 suggestions=did_you_mean(kw.name, params))
-            vals[kw.name] = (self.eval(kw.value), kw.value)
+            if param in vals:
+                raise EvalError("E0105", f"`{d.name}`: `{param}` is given twice", kw.span,
+                                hint=f"give `{param}` once")
+            vals[param] = (self.eval(kw.value), kw.value)
         for v, node in vals.values():
             if owners_of(v):
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
