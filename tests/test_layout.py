@@ -225,6 +225,46 @@ def test_parts_that_do_not_fit_go_on_more_sheets(tmp_path, capsys):
     check_sheets(sheets, view, 100.0, 100.0, 1.0)
 
 
+MIXED = """
+units mm
+assembly kit {
+    solid plate {
+        thickness 3 mm
+        body = Rectangle(center=(0, 0), width=60, height=40)
+    }
+    solid spacer {
+        thickness 6 mm
+        body = Rectangle(center=(80, 0), width=20, height=20)
+    }
+    solid plate2 {
+        thickness 3 mm
+        body = Rectangle(center=(0, 60), width=30, height=30)
+    }
+}
+"""
+
+
+def test_each_sheet_holds_one_material_thickness(tmp_path, capsys):
+    """Parts of 3 mm and 6 mm stock are never nested on one sheet (a laser cuts one material
+    at a time), though all would fit on one: the 3 mm parts on sheet 1, the spacer on sheet
+    2, each sheet's title and the note saying which."""
+    prog = write(tmp_path, "kit", MIXED)
+    out = tmp_path / "cut.svg"
+    assert main(["render", str(prog), "--layout", "sheet", "--sheet", "200x150mm",
+                 "-o", str(out)]) == 0
+    assert "on 2 sheets of 200 x 150 mm (3 mm: sheet 1; 6 mm: sheet 2)" in capsys.readouterr().out
+    one, two = (tmp_path / "cut-1.svg").read_text(), (tmp_path / "cut-2.svg").read_text()
+    ids = [re.findall(r'<g class="solid"[^>]*id="(part-[^"]+)"', t) for t in (one, two)]
+    assert sorted(ids[0]) == ["part-kit_plate", "part-kit_plate2"] and ids[1] == ["part-kit_spacer"]
+    assert "<title>kit (sheet 1 of 2), 3 mm material</title>" in one
+    assert "<title>kit (sheet 2 of 2), 6 mm material</title>" in two
+    from aidl_lang.output.layout import lay_out
+    view = output_of(MIXED, tmp_path)
+    sheets, _ = lay_out(view, (200.0, 150.0), 3.0, (0.0, 90.0))
+    check_sheets(sheets, view, 200.0, 150.0, 3.0)
+    assert [sorted({p.thickness for p in sh.parts}) for sh in sheets] == [[3.0], [6.0]]
+
+
 def test_a_part_larger_than_the_sheet_is_an_error_naming_it(tmp_path, capsys):
     prog = write(tmp_path, "box", BOX)
     assert main(["render", str(prog), "--layout", "sheet", "--sheet", "70x70mm",

@@ -360,6 +360,22 @@ def _length_mm(text: str, zero: bool = False) -> float | None:
     return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
 
 
+def _materials(sheets) -> str:
+    """`` (3 mm: sheets 1-2; 6 mm: sheet 3)`` when the sheets hold more than one material
+    thickness (each sheet holds one, :func:`aidl_lang.output.layout.plan`), else ``""``."""
+    by: dict = {}
+    for j, s in enumerate(sheets, 1):
+        t = {p.thickness for p in s.parts}
+        by.setdefault(t.pop() if len(t) == 1 else None, []).append(j)
+    if len(by) < 2:
+        return ""
+    said = []
+    for t, js in by.items():
+        which = f"sheet {js[0]}" if len(js) == 1 else f"sheets {js[0]}-{js[-1]}"
+        said.append(f"{'no thickness' if t is None else f'{t:g} mm'}: {which}")
+    return " (" + "; ".join(said) + ")"
+
+
 def _sheet_mm(text: str) -> tuple[float, float] | None:
     """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
     import re
@@ -557,7 +573,7 @@ def cmd_render(args) -> int:
             solid, _ = place(output, where, sheet)
             notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
                          f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
-                         f"{sheet[0]:g} x {sheet[1]:g} mm")
+                         f"{sheet[0]:g} x {sheet[1]:g} mm" + _materials(flat))
             if dropped:
                 notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
                              "outside every part left out of the layout")

@@ -205,6 +205,10 @@ def place(output: Output, where: list[dict], sheet) -> tuple[list[Output], int]:
         parts = [m.part(by_name[name]) for name, m in moves.items()]
         strokes = [moves[st.part].stroke(st) for st in output.engrave if st.part in moves]
         title = output.title + (f" (sheet {j + 1} of {n})" if n > 1 else "")
+        kinds = {p.thickness for p in parts}
+        if len(kinds) == 1 and None not in kinds and \
+                len({p.thickness for p in output.parts if p.kind == "solid"}) > 1:
+            title += f", {kinds.pop():g} mm material"
         outs.append(Output(parts, strokes, title, None, (0.0, 0.0, W, H)))
     placed = {name for moves in where for name in moves}
     dropped = sum(1 for st in output.engrave if st.part not in placed)
@@ -216,7 +220,8 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     """Where every solid part of ``output`` goes: one dict part name -> :class:`Motion` per
     sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
     from the sheet's edges, turned only by the angles of ``rotate`` (degrees; None: any
-    angle).  ``seconds``: the packer's time to improve its first packing (0: the first
+    angle).  A sheet holds parts of one thickness (``thickness``/``kerf`` statements: one
+    material per sheet), the thinnest first.  ``seconds``: the packer's time to improve its first packing (0: the first
     packing, a fraction of a second).  Raises :class:`MissingDependency` without spyrrow and
     :class:`LayoutError` for a part larger than the sheet."""
     try:
@@ -245,6 +250,21 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
         shapes[str(i)] = pts
         about[str(i)] = c
     sheets: list[list[tuple[int, Motion]]] = []
+    # one material per sheet: the parts of each thickness are nested on sheets of their own
+    # (thinnest first; parts of no stated thickness last)
+    groups: dict = {}
+    for i, p in enumerate(solids):
+        groups.setdefault(p.thickness, {})[str(i)] = shapes[str(i)]
+    for t in sorted(groups, key=lambda t: (t is None, t or 0.0)):
+        sheets += _sheets(groups[t], about, Hu, Wu, inset, rotate, seconds, seed)
+    return [{solids[i].name: m for i, m in placed} for placed in sheets]
+
+
+def _sheets(shapes: dict, about: dict, Hu: float, Wu: float, inset: float, rotate,
+            seconds: int, seed: int) -> list[list[tuple[int, Motion]]]:
+    """Sheets for ``shapes`` (id -> grown outline points): nest in the strip, keep what ends
+    within the sheet's usable ``Wu`` x ``Hu``, nest the rest again on the next sheet."""
+    sheets: list[list[tuple[int, Motion]]] = []
     left = dict(shapes)
     while left:
         placed = _nest(left, Hu, rotate, seconds, seed)
@@ -264,4 +284,4 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
         for i, _ in here:
             del left[str(i)]
         sheets.append(sorted(here, key=lambda t: t[0]))
-    return [{solids[i].name: m for i, m in placed} for placed in sheets]
+    return sheets
