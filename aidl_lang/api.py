@@ -136,6 +136,7 @@ class Result:
         self.units, self.unit_scale = file_units(source or "")
         self._values: list[Value] | None = None
         self._output = None
+        self._redundant: list[Diagnostic] | None = None
 
     # ------------------------------------------------------------------ status
     @property
@@ -217,6 +218,22 @@ class Result:
             doc["structures"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                                   "dof": d.dof, "floating": list(d.floating)} for d in dofs]
         return doc
+
+    def find_redundant(self, seconds: float | None = 1.0,
+                       max_rows: int | None = 1000) -> list[Diagnostic]:
+        """Look for constraints that others already imply and add each as a ``W0401`` warning
+        to :attr:`diagnostics` (what ``aidl check`` does; docs/solver.md §6); returns those
+        warnings.  ``seconds`` bounds the search (None: no bound, as ``--dof``), ``max_rows``
+        the blocks of rows it ranks.  Runs once per result; [] when the program did not
+        solve."""
+        if self._redundant is None:
+            self._redundant = []
+            if self.compiled.ok and self.compiled.solve is not None:
+                from .pipeline import report_redundancies
+                before = len(self.sink.items)
+                report_redundancies(self.sink, self.compiled.solve, seconds, max_rows)
+                self._redundant = list(self.sink.items[before:])
+        return list(self._redundant)
 
     # ------------------------------------------------------------------ outputs
     @property

@@ -122,3 +122,26 @@ def test_workspace_refuses_what_is_outside(tmp_path):
     assert T.check(ws, source=GOOD)["ok"]
     doc = T.values(ws, source=BROKEN)
     assert doc["ok"] is False and "E0103 line 3" in doc["summary"]
+
+
+REDUNDANT = """solid s {
+    l1 = Line((0, 0), (10, 0))
+    Fixed(l1)
+    Horizontal(l1)
+}
+"""
+
+
+def test_check_reports_redundant_constraints_as_aidl_check_does(tmp_path):
+    """The MCP check tool lists W0401 (an LLM's loop sees over-constraining), like `aidl check`;
+    the API adds them on request only, once."""
+    import aidl_lang
+    doc = T.check(T.Workspace(tmp_path), source=REDUNDANT)
+    w = [d for d in doc["diagnostics"] if d["code"] == "W0401"]
+    assert doc["ok"] and any("`Horizontal(l1)` is redundant" in d["message"] for d in w)
+    r = aidl_lang.compile(source=REDUNDANT)
+    assert [d.code for d in r.diagnostics if d.code == "W0401"] == []
+    found = r.find_redundant()
+    assert [d.message for d in found] == [d["message"] for d in w]
+    assert r.find_redundant() == found
+    assert [d.code for d in r.diagnostics].count("W0401") == len(w)

@@ -296,11 +296,10 @@ def cmd_check(args) -> int:
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
         if res.ok:
-            from ..pipeline import report_redundancies
             if args.dof:
-                report_redundancies(res.sink, res.solve)
+                program.find_redundant(None, None)
             else:
-                report_redundancies(res.sink, res.solve, REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
+                program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
         if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
             dofs = degrees_of_freedom(res.solve.solver)

@@ -94,10 +94,11 @@ def _summary(ws: Workspace, r: Result) -> dict:
 def check(ws: Workspace, source: str | None = None, path: str | None = None,
           overrides: dict | None = None, dof: bool = False,
           budget: float | None = None) -> dict:
-    """``{"ok", "diagnostics" (JSON, with spans and fixes), "units", "solve", "freedom",
-    "parts"}`` (the last two when the program solved; ``freedom`` per structure with
-    ``dof``)."""
+    """``{"ok", "diagnostics" (JSON, with spans and fixes; redundant constraints as W0401,
+    looked for at most 1 s, as ``aidl check``), "units", "solve", "freedom", "parts"}`` (the
+    last two when the program solved; ``freedom`` per structure with ``dof``)."""
     r = ws.compile(source, path, overrides, budget)
+    r.find_redundant()                    # W0401, as `aidl check` reports them
     doc = _summary(ws, r)
     if r.ok:
         doc["freedom"] = r.freedom(detail=bool(dof))
