@@ -394,3 +394,16 @@ def test_a_pattern_of_a_hull_copies_its_sources(tmp_path):
                                                 for dx, dy in ((0, 0), (10, 5))]), abs=DXF_TOL)
     for segs in holes:
         assert loop_defects(segs, radii=[5, 3], tangent="all") == []
+
+
+@pytest.mark.parametrize("call,fix", [
+    ("Offset(body, -5)", "`Shell(body, -thickness)` there"),
+    ("Hull(body, body)", "write it in `frame`, where `body` is"),
+])
+def test_derived_shape_of_a_parent_shape_says_where_to_write_it(compile_text, call, fix):
+    """`Offset(body, ...)` in a hole with `body` in its parent: E0201 says to write it where
+    `body` is (a window or frame cut from it is a `Shell` there)."""
+    c = compile_text("units mm\nsolid frame {\n    body = Rectangle(center=(0, 0), width=60, "
+                     f"height=40)\n    hole window {{\n        w = {call}\n    }}\n}}\n")
+    (d,) = [d for d in c.sink.items if d.code == "E0201"]
+    assert (d.span.line, d.span.col) == (5, 14 + len(call.split("(")[0])) and fix in d.hint

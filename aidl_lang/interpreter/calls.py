@@ -24,6 +24,8 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 # argument types a reference to geometry of these kinds passes unchanged (see _coerce)
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
+# shapes made from other shapes (their source must be in the same structure: E0201's hint)
+DERIVED = ("Offset", "Inset", "Shell", "Hull")
 _ANY_REFERENCE = ("boxed", "geometry", "any")      # types any reference to geometry passes
 _UNCHECKED = frozenset((GeomRef, StructRef, BBoxRef, bool, str, type(None)))  # no magnitudes
 
@@ -371,11 +373,17 @@ class Calls:
                 continue
             bad = [o for o in owners_of(v) if o is not s]
             if bad:
+                hint = ("geometry may only use geometry of its own structure; give it its "
+                        "own starting value and relate the two with a constraint, "
+                        "e.g. `Coincident(...)`, in a structure that contains both")
+                if kind in DERIVED and t is GeomRef:
+                    hint = (f"`{kind}` makes its shape from a shape of its own structure: write "
+                            f"it in `{bad[0].path}`, where `{v.geom.name or k}` is"
+                            + (f" (a frame or wall cut from it: `Shell({v.geom.name or k}, "
+                               "-thickness)` there)" if kind in ("Offset", "Inset") else "")
+                            + ", or draw the shape again here and place it with a constraint")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
-                                f"another structure", spans.get(k, node.span),
-                                hint="geometry may only use geometry of its own structure; give it its "
-                                     "own starting value and relate the two with a constraint, "
-                                     "e.g. `Coincident(...)`, in a structure that contains both")
+                                f"another structure", spans.get(k, node.span), hint=hint)
         if kind == "Text" and s.kind != "drawing":
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure")
