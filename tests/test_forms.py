@@ -443,3 +443,22 @@ def test_corner_pattern_on_a_bar_follows_its_direction(tmp_path):
             want.append((along * d[0] + across * n[0], along * d[1] + across * n[1]))
     got = [(x, y) for x, y, r in circles(ents) if abs(r - 1) < 1e-9]
     assert same(got, want)
+
+
+@pytest.mark.parametrize("corner,opposite", [((0, 0), (10, 6)), ((10, 6), (0, 0)),
+                                             ((10, 0), (0, 6)), ((0, 6), (10, 0))],
+                         ids=["bl-tr", "tr-bl", "br-tl", "tl-br"])
+def test_rectangle_by_two_opposite_corners_in_any_order(corner, opposite):
+    """`Rectangle(corner=, opposite=)` with the corner at any of the four corners: the same
+    10 x 6 rectangle, its corners named by where they are (bottom-right/top-left used to be an
+    internal error, KeyError 'bottom_left', found by the nasty-program fuzzer)."""
+    import aidl_lang
+    r = aidl_lang.compile(source=f"solid s {{\n    r = Rectangle(corner={corner}, "
+                                 f"opposite={opposite})\n}}\n")
+    assert r.ok, [d.message for d in r.diagnostics]
+    want = {"bottom_left": (0, 0), "bottom_right": (10, 0), "top_right": (10, 6),
+            "top_left": (0, 6), "center": (5, 3)}
+    for name, xy in want.items():
+        assert r.value(f"s.r.{name}").value == pytest.approx(xy, abs=1e-12), name
+    assert r.value("s.r.width").value == pytest.approx(10) and \
+        r.value("s.r.height").value == pytest.approx(6)

@@ -224,19 +224,20 @@ def _build_Rectangle(ctx, g, a):
         slot_q = {"bottom_left": "top_right", "top_right": "bottom_left",
                   "bottom_right": "top_left", "top_left": "bottom_right"}[slot_p]
         pts = {slot_p: ctx.point(p, slot_p), slot_q: ctx.point(q, slot_q)}
-        bl, tr = pts["bottom_left"], pts["top_right"]
-        w0 = ((ctx.value_of(var(tr.ix)) - ctx.value_of(var(bl.ix))) * ux
-              + (ctx.value_of(var(tr.iy)) - ctx.value_of(var(bl.iy))) * uy)
-        h0 = ((ctx.value_of(var(tr.ix)) - ctx.value_of(var(bl.ix))) * vx
-              + (ctx.value_of(var(tr.iy)) - ctx.value_of(var(bl.iy))) * vy)
+        w0, h0 = abs(du), abs(dv)
         w = ctx.new_scalar(w0, "width", held=False)
         h = ctx.new_scalar(h0, "height", held=False)
-        for nm in ("bottom_right", "top_left"):
+        # the other two corners, from the given pair (bottom-left/top-right or
+        # bottom-right/top-left) by the width along u and the height along v
+        offset = {"bottom_left": (0.0, 0.0), "bottom_right": (w0, 0.0),
+                  "top_right": (w0, h0), "top_left": (0.0, h0)}
+        known = pts[slot_p]
+        kx, ky = ctx.value_of(var(known.ix)), ctx.value_of(var(known.iy))
+        k0 = offset[slot_p]
+        for nm, (ou, ov) in offset.items():
             if nm not in pts:
-                bx, by = ctx.value_of(var(bl.ix)), ctx.value_of(var(bl.iy))
-                ox = w0 * ux if nm == "bottom_right" else h0 * vx
-                oy = w0 * uy if nm == "bottom_right" else h0 * vy
-                pts[nm] = ctx.point(PV(bx + ox, by + oy), nm)
+                du_, dv_ = ou - k0[0], ov - k0[1]
+                pts[nm] = ctx.point(PV(kx + du_ * ux + dv_ * vx, ky + du_ * uy + dv_ * vy), nm)
     else:
         _positive(a["width"], "width", g.kind)
         _positive(a["height"], "height", g.kind)
