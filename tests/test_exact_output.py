@@ -520,3 +520,26 @@ def test_stl_is_watertight_without_degenerate_facets(outdir, src):
         (f"{int((areas <= 1e-12).sum())} of {len(areas)} facets of area <= 1e-12 "
          f"(smallest {areas.min():.3g} mm^2); {int((edges <= 1e-9).sum())} zero-length edges "
          f"(shortest {edges.min():.3g} mm)")
+
+
+def test_stacked_copies_of_one_outline_are_matched_once():
+    """A circle drawn in 2 000 instances at one place (a template recursing `fan(n - 1)`
+    twice, fuzz seed 12900 had 32 767): the exact recovery keeps one copy of each chord, so
+    a result vertex meets one candidate, not 2 000 (the seed asked numpy for 232 GiB); the
+    union is still the one exact circle."""
+    import time
+    import manifold3d as mf
+    from aidl_lang.geometry.curves import Circle as XC, Loop
+    from aidl_lang.output.exact import Provenance
+    prov = Provenance()
+    one = Loop([XC((5.0, -2.0), 3.0, True)])
+    n = len(prov.polygon(one))
+    sections = [prov.face(one) for _ in range(2000)]
+    prov.polygon(Loop([XC((5.0, -2.0), 3.0, False)]))     # the same circle, run as a hole
+    t0 = time.perf_counter()
+    union = mf.CrossSection.batch_boolean(sections, mf.OpType.Add)
+    (lp,) = prov.loops(union)
+    assert time.perf_counter() - t0 < 5
+    assert len(prov._chords().A) <= 2 * n          # one copy each way round
+    (c,) = lp.segments
+    assert isinstance(c, XC) and c.center == (5.0, -2.0) and c.radius == 3.0
