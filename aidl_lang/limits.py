@@ -29,7 +29,7 @@ class Budget:
       instances (about 2 s of interpretation);
     - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
-    - ``seconds``: 60 s of wall time for the whole compile: interpreting, solving, the
+    - ``seconds``: 15 s of wall time for the whole compile: interpreting, solving, the
       booleans and the shape checks (and, in ``aidl render``, the writers);
     - ``vertices``: 2 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
@@ -39,7 +39,7 @@ class Budget:
     steps: int = 250_000
     objects: int = 120_000
     size: int = 1_000_000
-    seconds: float = 60.0
+    seconds: float = 15.0
     vertices: int = 2_000_000
 
     def scaled(self, k: float) -> "Budget":
@@ -53,7 +53,7 @@ DEFAULT_BUDGET = Budget()
 
 class OutOfBudget(Exception):
     """The budget ran out after the solve: in the booleans, the shape checks or a writer.
-    ``what``: which figure (``more than 60 s of wall time``); ``stage``: where (``the
+    ``what``: which figure (``more than 15 s of wall time``); ``stage``: where (``the
     booleans``); ``where``: the structure being worked on (with ``path`` and ``span``), or
     ``None``.  :func:`aidl_lang.pipeline.after_solve` turns it into one located ``E0304``."""
 
