@@ -42,6 +42,7 @@ from ..limits import OutOfBudget
 
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
+PAIRS_PER_BLOCK = 1_000_000   # candidate (edge, chord) pairs matched at once (~100 MB)
 
 
 class Provenance:
@@ -341,28 +342,21 @@ class _Grid:
         iy = np.floor(S[:, 1] / self.cell).astype(np.int64) + dy
         return ix * 4_294_967_311 + iy
 
-    def match(self, P, Q, tol) -> np.ndarray:
-        n = len(P)
-        cid = np.full(n, -1, dtype=np.int64)
-        if not len(self.keys):
-            return cid
-        M = (P + Q) / 2
+    def _candidates(self, P, Q, tol, lo, cnt, first: int):
+        """``(q, k)``: the query edges ``first + i`` (``P[q] -> Q[q]``) and the carriers of the
+        chords that hold them within ``tol`` (either way round), among the candidates
+        ``lo``/``cnt`` of these edges."""
         qs, cs = [], []
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                qk = self._key(M, dx, dy)
-                lo = np.searchsorted(self.keys, qk, "left")
-                hi = np.searchsorted(self.keys, qk, "right")
-                cnt = hi - lo
-                tot = int(cnt.sum())
-                if not tot:
-                    continue
-                q = np.repeat(np.arange(n), cnt)
-                off = np.arange(tot) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-                qs.append(q)
-                cs.append(self.chord[np.repeat(lo, cnt) + off])
+        for j in range(9):
+            c_ = cnt[j]
+            tot = int(c_.sum())
+            if not tot:
+                continue
+            qs.append(first + np.repeat(np.arange(len(c_)), c_))
+            off = np.arange(tot) - np.repeat(np.cumsum(c_) - c_, c_)
+            cs.append(self.chord[np.repeat(lo[j], c_) + off])
         if not qs:
-            return cid
+            return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
         q = np.concatenate(qs)
         c = np.concatenate(cs)
         pair = np.sort(q * len(self.A) + c)          # np.unique without importing numpy.ma
@@ -380,7 +374,36 @@ class _Grid:
         te = u[:, 0] * e[:, 0] + u[:, 1] * e[:, 1]
         ok &= (dp <= tol) & (de <= tol) & (tp >= -tol) & (te >= -tol) & (tp <= L + tol) & \
             (te <= L + tol)                    # either way round: a hole runs backwards
-        q, k = q[ok], self.C[c[ok]]
+        return q[ok], self.C[c[ok]]
+
+    def match(self, P, Q, tol) -> np.ndarray:
+        n = len(P)
+        cid = np.full(n, -1, dtype=np.int64)
+        if not len(self.keys):
+            return cid
+        M = (P + Q) / 2
+        # each query edge's candidate chords: the samples of its midpoint's cell and the eight
+        # around it, [lo, lo + cnt) in the sorted samples, per neighbour cell
+        lo = np.empty((9, n), dtype=np.int64)
+        cnt = np.empty((9, n), dtype=np.int64)
+        for j, (dx, dy) in enumerate((dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
+            qk = self._key(M, dx, dy)
+            lo[j] = np.searchsorted(self.keys, qk, "left")
+            cnt[j] = np.searchsorted(self.keys, qk, "right") - lo[j]
+        # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
+        # stays bounded however many chords lie on top of each other
+        ends = np.cumsum(cnt.sum(axis=0))
+        qs, ks = [], []
+        at = 0
+        while at < n:
+            base = ends[at - 1] if at else 0
+            stop = max(at + 1, int(np.searchsorted(ends, base + PAIRS_PER_BLOCK, "right")))
+            q, k = self._candidates(P, Q, tol, lo[:, at:stop], cnt[:, at:stop], at)
+            qs.append(q)
+            ks.append(k)
+            at = stop
+        q = np.concatenate(qs)
+        k = np.concatenate(ks)
         if not len(q):
             return cid
         # several chords may hold one (short) edge, where curves meet: keep them all for now
