@@ -239,7 +239,9 @@ class Result:
     @property
     def output(self):
         """The exact output model (:class:`~aidl_lang.output.part.Output`: lines, arcs and
-        circles per part, mm) every writer reads.  Raises :class:`NotCompiled`."""
+        circles per part, mm) every writer reads.  Raises :class:`NotCompiled`, and
+        :class:`~aidl_lang.output.part.OutputError` when the outlines cannot be recovered
+        within bounded work (thousands of curves on top of each other)."""
         self._need("output")
         if self.compiled.drawing is None:
             raise NotCompiled("no output: the solved model failed the extent check (E0305)")

@@ -278,10 +278,12 @@ def verdict(src: str, path: str, budget=None, seconds: float = 30.0, render: boo
         return "ok-without-solve"
     if c.ok and render:
         try:
-            from aidl_lang.output import render_model, to_svg
+            from aidl_lang.output import OutputError, render_model, to_svg
             svg = to_svg(render_model(c.model))
             if re.search(r"\b(nan|inf|infinity)\b", svg, re.IGNORECASE):
                 return "non-finite-in-svg"
+        except OutputError:                 # the writers' own clear refusal: an answer
+            return None
         except MemoryError:
             return "memory"
         except Exception as ex:

@@ -76,8 +76,13 @@ def run_one(task: dict, cfg: dict) -> dict:
                       else sum(max(0, d.dof) for d in dofs))
     output = None
     if res.ok and res.drawing is not None:
-        from ..output import build
-        output = build(res.drawing, res.model.root.name)
+        from ..output import OutputError, build
+        try:
+            output = build(res.drawing, res.model.root.name)
+        except OutputError as e:                # outlines past bounded work: say so
+            row.update(status="error", ok=False, failure=f"output: {e}")
+            row["compile_s"] = time.perf_counter() - t0
+            return row
         row["parts"] = len(output.parts)
         row["holes"] = sum(lp.is_hole for p in output.parts for lp in p.loops)
         row["area"] = round(output.area, 9)

@@ -557,11 +557,11 @@ def cmd_render(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    output = build(res.drawing, res.model.root.name)
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin)
     notes = []
     try:
+        output = build(res.drawing, res.model.root.name)
         from ..output import CUT_FORMATS, for_cutting
         cut = for_cutting(output, kerf)            # --kerf, else the program's `kerf`
         flat, solid = [cut], [output]

@@ -43,6 +43,8 @@ from ..limits import OutOfBudget
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
 PAIRS_PER_BLOCK = 1_000_000   # candidate (edge, chord) pairs matched at once (~100 MB)
+CARRIERS_PER_EDGE = 8         # chords kept per result edge (the nearest)
+MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)
 
 
 class Provenance:
@@ -374,7 +376,15 @@ class _Grid:
         te = u[:, 0] * e[:, 0] + u[:, 1] * e[:, 1]
         ok &= (dp <= tol) & (de <= tol) & (tp >= -tol) & (te >= -tol) & (tp <= L + tol) & \
             (te <= L + tol)                    # either way round: a hole runs backwards
-        return q[ok], self.C[c[ok]]
+        q, k, off = q[ok], self.C[c[ok]], (dp + de)[ok]
+        # keep the CARRIERS_PER_EDGE nearest chords of an edge: more are curves within
+        # MATCH_TOL of each other (5 000 circles 1e-9 mm apart), and each would be kept
+        order = np.lexsort((off, q))
+        q, k = q[order], k[order]
+        group = np.flatnonzero(np.r_[True, q[1:] != q[:-1]])
+        rank = np.arange(len(q)) - np.repeat(group, np.diff(np.r_[group, len(q)]))
+        keep = rank < CARRIERS_PER_EDGE
+        return q[keep], k[keep]
 
     def match(self, P, Q, tol) -> np.ndarray:
         n = len(P)
@@ -393,6 +403,10 @@ class _Grid:
         # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
         # stays bounded however many chords lie on top of each other
         ends = np.cumsum(cnt.sum(axis=0))
+        if ends[-1] > MAX_CANDIDATES:
+            raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
+                              "(thousands of curves drawn within 0.001 mm of each other)",
+                              "the exact outlines")
         qs, ks = [], []
         at = 0
         while at < n:

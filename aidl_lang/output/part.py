@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geometry.curves import Arc, Circle, Line, Loop, Segment, sample_xy
+from ..limits import OutOfBudget
 from .booleans import Drawing
 
 __all__ = ["Arc", "Circle", "Line", "Loop", "Segment", "Output", "PartOutline", "Stroke",
@@ -204,14 +205,21 @@ def _runs_of(chains: list[list], reverse) -> list[tuple[list, bool]]:
 def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
     """The exact :class:`Output` of a booleans :class:`Drawing`.  ``thickness`` maps a part's
     name to its thickness in mm (or is one number for all parts); by default the program's
-    (``thickness 3 mm``, :attr:`Drawing.thickness`)."""
+    (``thickness 3 mm``, :attr:`Drawing.thickness`).  Raises :class:`OutputError` when the
+    exact outlines cannot be recovered within bounded work (thousands of curves on top of
+    each other)."""
     from .exact import Provenance
     exact = drawing.exact if drawing.exact is not None else Provenance()
     out = Output(title=title, drawing=drawing)
     if thickness is None:
         thickness = drawing.thickness
     parts = [p for p in drawing.parts if not p.shape.is_empty()]
-    for p, loops in zip(parts, exact.loops_of([p.shape for p in parts])):
+    try:
+        part_loops = exact.loops_of([p.shape for p in parts])
+    except OutOfBudget as ex:
+        raise OutputError(f"cannot recover the exact outlines: {ex.what}; draw fewer curves "
+                          "on top of each other") from None
+    for p, loops in zip(parts, part_loops):
         if not loops:
             continue
         t = thickness.get(p.name) if isinstance(thickness, dict) else thickness
