@@ -183,7 +183,9 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`).
+(e.g. `aidl render model.aidl --budget 4`). A program that runs out of the machine's memory
+before any figure of the budget is also `E0304` ("ran out of memory while compiling"), shown
+at its first structure.
 """),
     "E0305": ("number not finite or beyond the model extent", """
 A computed number is infinite or not a number (NaN), e.g. `1 / 5e-324` or `x - x` with an

@@ -60,11 +60,25 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
             if base.drawing is not None and base.ok:
                 check_topology(base.drawing, res.drawing, overrides, sink)
         return res
-    except (RecursionError, MemoryError) as ex:
+    except RecursionError as ex:
         sink.sources.setdefault(path, source)
         sink.error("E0302", "the program is nested too deeply to compile", _deep_span(ex, path, source),
                    hint="split long expressions into named constants")
         return Compiled(sink)
+    except MemoryError:
+        pass                         # handled below, once the exception (and its frames) is gone
+    # Out of memory: what the failed compile built is garbage now, much of it in reference
+    # cycles (structures and their parents), which only the cycle collector frees — and it
+    # would not run before the next allocations fail.  Free it, then report.
+    import gc
+    sink = DiagnosticSink()
+    gc.collect()
+    sink.sources[path] = source
+    sink.error("E0304", "the program ran out of memory while compiling: it builds more than "
+               "this machine can hold", _structure_span(path, source),
+               hint="build less (fewer loop iterations, template instances or circles), or "
+                    "look for a template that instantiates itself more than once per level")
+    return Compiled(sink)
 
 
 # Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse
@@ -111,7 +125,21 @@ def run_deep(fn):
             sys.setrecursionlimit(old_limit)
     if "error" in box:
         raise box["error"]
+    if "value" not in box:        # the thread died before its own handler ran: no memory
+        raise MemoryError("the compile thread ended without a result")
     return box["value"]
+
+
+def _structure_span(path: str, source: str):
+    """The first top-level structure's header line (``solid plate {``), else line 1: where a
+    whole-program error (out of memory) is shown."""
+    import re
+    from .diagnostics import Span
+    m = re.search(r"^(solid|hole|drawing|assembly)[ \t]+\w+", source, re.M)
+    start, end = (m.start(), m.end()) if m else (0, len(source.split("\n", 1)[0]))
+    line = source.count("\n", 0, start) + 1
+    col = start - (source.rfind("\n", 0, start) + 1) + 1
+    return Span(path, line, col, line, col + end - start, start, end)
 
 
 def _deep_span(ex, path: str, source: str):

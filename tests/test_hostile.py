@@ -88,3 +88,26 @@ def test_generated_nasty_programs(src):
     """No exception, every diagnostic located, never ok without a converged solve, no NaN in
     an SVG, within the (reduced) budget's time; benchmarks/fuzz_nasty.py runs thousands."""
     assert verdict(src, "nasty.aidl", budget=SMALL, seconds=SMALL.seconds + 10) is None
+
+
+def test_out_of_memory_is_E0304_and_the_process_goes_on():
+    """A template doubling itself 14 levels deep (32 767 structures, inside the object budget)
+    under a 600 MB address-space limit: a located E0304 "ran out of memory", not E0302 or a
+    MemoryError; the memory is freed (reference cycles collected), so the next program in
+    the same process compiles (fuzz chunks died or hung after one MemoryError)."""
+    code = r'''
+import resource
+resource.setrlimit(resource.RLIMIT_AS, (600_000_000, 600_000_000))
+from aidl_lang.pipeline import compile_source
+src = ("def fan(n = 3) -> assembly {\n    if n > 0 {\n        s0 = fan(n - 1)\n"
+       "        s1 = fan(n - 1)\n    }\n    c = Circle((0, 0), 1)\n}\n"
+       "solid top {\n    v = fan(14)\n}\n")
+c = compile_source(src, "m.aidl")
+print([(d.code, d.span.line, d.span.col, d.message[:40]) for d in c.sink.items])
+print(compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok)
+'''
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    first, second = r.stdout.split("\n")[:2]
+    assert first == "[('E0304', 8, 1, 'the program ran out of memory while comp')]", r.stdout
+    assert second == "True"
