@@ -71,7 +71,10 @@ class Deadline:
     def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET):
         self.at, self.budget = at, budget
 
-    def check(self, stage: str, where=None) -> None:
+    def check(self, stage: str, where=None, ahead: float = 0.0) -> None:
+        """Raise :class:`OutOfBudget` once the deadline has passed, or when a step expected to
+        take ``ahead`` seconds (a single call into Manifold that cannot be interrupted) would
+        end past it: refused before it starts."""
         import time
-        if time.monotonic() > self.at:
+        if time.monotonic() + ahead > self.at:
             raise OutOfBudget(f"more than {self.budget.seconds:g} s of wall time", stage, where)

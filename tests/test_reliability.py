@@ -278,3 +278,26 @@ def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path
     assert "cannot recover the exact outlines: more than 10,000,000 (edge, chord) pairs" in err
     assert not out.exists()
     assert main(["check", str(f)]) == 0
+
+
+def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeypatch):
+    """The wall-thickness check's opening and decomposition are single calls into Manifold
+    that no deadline interrupts (fuzz seed 1951: 10 s + 12 s on a 515 000-vertex sliver set,
+    23.8 s in all at a 15 s budget); each is refused when its vertex count says it would end
+    past the deadline.  Here the cost per vertex is set absurdly high, so the first is
+    refused at once: E0304 in the shape checks, long before the 10 s deadline."""
+    from aidl_lang.limits import Budget, Deadline, OutOfBudget
+    from aidl_lang.output import checks
+    d = Deadline(time.monotonic() + 10)
+    d.check("here", ahead=5)
+    with pytest.raises(OutOfBudget):
+        d.check("here", ahead=20)
+    monkeypatch.setattr(checks, "THIN_SECONDS_PER_VERTEX", 1.0)
+    src = ("solid plate {\n    body = Rectangle(center=(10, 10), width=40, height=40)\n"
+           "    hole h { c = Circle(center=(0, 0), radius=5) }\n"
+           "    hole g { c = Circle(center=(10.2, 0), radius=5) }\n}\n")
+    t0 = time.perf_counter()
+    c = compile_source(src, "thin.aidl", budget=Budget(seconds=10))
+    assert time.perf_counter() - t0 < 5
+    (e,) = [x for x in c.sink.items if x.code == "E0304"]
+    assert "in the shape checks of `plate`" in e.message

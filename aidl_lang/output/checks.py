@@ -135,9 +135,9 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on).
     ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
     structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
-    def tick(s):
+    def tick(s, ahead: float = 0.0):
         if deadline is not None:
-            deadline.check("the shape checks", s)
+            deadline.check("the shape checks", s, ahead)
     roots = _part_roots(d)
     loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
              for s, shape in roots.items() if s.kind == "solid"}
@@ -168,7 +168,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             tick(s)
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
-                             loops=loops[s])
+                             loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
     for g, _m, _h in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(g.owner, roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
@@ -572,15 +572,19 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
 
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
-                 quick: bool = True, covered: set = frozenset(), loops=None) -> None:
+                 quick: bool = True, covered: set = frozenset(), loops=None,
+                 tick=lambda ahead=0.0: None) -> None:
     """W0507 for part ``s`` (its final ``shape``, its ``cuts``) at minimum wall ``t`` mm: one
     warning per piece of at least ``2 t^2`` that the opening removes.  ``quick=False`` skips
     the whole-area bound below (the reference for its test); ``covered``: name pairs already
-    reported with their measured width (:func:`_report_openings`), whose pieces are skipped."""
+    reported with their measured width (:func:`_report_openings`), whose pieces are skipped;
+    ``tick(ahead)`` is called before each step (the compile's deadline; ``ahead``: the
+    seconds a step that cannot be interrupted is expected to take, from its vertex count)."""
     if shape.is_empty():
         return
     segs = 16
-    thin = _thin(shape, t, loops)
+    tick(shape.num_vert() * THIN_SECONDS_PER_VERTEX)
+    thin = _thin(shape, t, loops, tick=tick)
     if thin.is_empty():
         return
     # The pieces below partition `thin`, so none reaches 2 t^2 when the whole does not (the
@@ -592,7 +596,9 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     holes = [c for c in cuts if c.hole in d.shapes and not d.shapes[c.hole].is_empty()]
     hb = np.array([d.shapes[c.hole].bounds() for c in holes], dtype=float).reshape(-1, 4)
     filled = None
+    tick(thin.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
     for piece in thin.decompose():
+        tick()
         a = _area(piece)
         if a < 2 * t * t:
             continue
@@ -624,6 +630,11 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
 
 
 TILE_VERTS = 2000      # W0507's opening is taken tile by tile above this many vertices
+# the least time per vertex of the steps the deadline cannot interrupt (measured on the 2-core
+# machine: the opening ~60 us, decomposing what it removes ~24 us per vertex; half of that, so
+# that only steps sure to overrun are refused before they start)
+THIN_SECONDS_PER_VERTEX = 30e-6
+DECOMPOSE_SECONDS_PER_VERTEX = 12e-6
 
 
 def _open(shape, t: float):
@@ -632,7 +643,7 @@ def _open(shape, t: float):
                                                                      2.0, segs)
 
 
-def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS):
+def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead=0.0: None):
     """What the opening of ``shape`` by a disc of diameter ``t`` removes.  Clipper2's offset
     runs a sweep whose cost grows faster than the vertex count (on a grid of holes about as
     n^1.5: 12 ms at 100 holes, 256 ms at 900), so a shape of more than ``tile`` vertices is
@@ -644,7 +655,8 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS):
     clipped from its parent's piece): O(n log n) whatever the shape.  A grid of tiles over
     the bounding box cost tiles x vertices for one long loop (a diagonal chain of 10 000
     circles: 81 tiles, each clipping the whole 150 000-vertex loop, 20 s).  ``loops`` is
-    accepted for the callers' convenience (unused)."""
+    accepted for the callers' convenience (unused); ``tick()`` is called before each tile
+    (the compile's deadline)."""
     n = shape.num_vert()
     if n <= tile:
         return shape - _open(shape, t)
@@ -655,6 +667,7 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS):
         return mf.CrossSection.square((c - a, e - b)).translate((a, b))
 
     def split(piece, a, b, c, e):
+        tick()
         if piece.is_empty():
             return
         small = max(c - a, e - b) <= 8 * t          # halving no longer sheds the margin
