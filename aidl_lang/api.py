@@ -473,12 +473,29 @@ def _values(model, scale: float, unit: str) -> list[Value]:
 
 
 # ------------------------------------------------------------------ file safety
+def planted_link(out: Path) -> str | None:
+    """Why the symbolic link ``out`` must not be followed even when asked to, or None: the
+    kernel's ``fs.protected_symlinks`` rule — in a sticky world-writable folder (``/tmp``) a
+    link is followed only by its owner or the folder's owner, since another user may have
+    planted it to aim this write at a file of yours."""
+    import stat as S
+    link, folder = os.lstat(out), os.stat(out.parent)
+    if folder.st_mode & S.S_ISVTX and folder.st_mode & S.S_IWOTH \
+            and link.st_uid not in (os.geteuid(), folder.st_uid):
+        return (f"`{out}` is a symbolic link that another user (uid {link.st_uid}) made in the "
+                f"shared folder `{out.parent}`; refusing to write through it even when asked "
+                "to follow links (it may aim this write at a file of yours): write to a path of "
+                "your own")
+    return None
+
+
 def check_output_path(path: str | os.PathLike, program: str | None = None,
                       follow_symlinks: bool = False, force: bool = False) -> Path:
     """``path`` as an output file the way ``aidl render`` accepts it: a known extension, not a
     directory, not the program ``program`` itself, not a symbolic link (unless
-    ``follow_symlinks``), not a read-only file (unless ``force``).  Raises
-    :class:`WriteError`."""
+    ``follow_symlinks``; never one that another user made in a sticky world-writable folder
+    such as /tmp, the kernel's ``fs.protected_symlinks`` rule), not a read-only file (unless
+    ``force``).  Raises :class:`WriteError`."""
     from .output import FORMATS
     out = Path(path)
     if out.suffix.lower() not in FORMATS:
@@ -490,10 +507,14 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     if program and os.path.exists(program) and os.path.exists(real) \
             and os.path.samefile(real, program):
         raise WriteError(f"`{out}` is the program being compiled; refusing to overwrite it")
-    if os.path.islink(out) and not follow_symlinks:
-        raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
-                         "(follow_symlinks=True writes the file it points to)")
     import stat as S
+    if os.path.islink(out):
+        if not follow_symlinks:
+            raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
+                             "(follow_symlinks=True writes the file it points to)")
+        planted = planted_link(out)
+        if planted:
+            raise WriteError(planted)
     try:
         st = os.stat(real if follow_symlinks else out)
     except OSError:

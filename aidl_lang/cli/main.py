@@ -435,12 +435,21 @@ def _outputs(args) -> list[Path] | int:
 
 def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     """A symbolic link as output is refused (exit 2: someone may have planted it to make the
-    render overwrite another file) unless ``--follow-symlinks``; an existing read-only file
-    is refused (exit 1) unless ``--force``.  None when ``o`` may be written."""
+    render overwrite another file) unless ``--follow-symlinks``, and even then (exit 1) when
+    another user made it in a sticky world-writable folder (:func:`aidl_lang.api.planted_link`);
+    an existing read-only file is refused (exit 1) unless ``--force``.  None when ``o`` may
+    be written."""
     if os.path.islink(o) and not follow:
         return _usage(f"`{o}` is a symbolic link (to `{os.readlink(o)}`); refusing to write "
                       "through it: give --follow-symlinks to write the file it points to, or "
                       "another output name")
+    if os.path.islink(o):
+        from ..api import planted_link
+        planted = planted_link(o)
+        if planted:
+            print(f"aidl: error: {planted.replace('when asked to follow links', 'with --follow-symlinks')}",
+                  file=sys.stderr)
+            return 1
     target = os.path.realpath(o) if follow else str(o)
     try:
         st = os.stat(target)
