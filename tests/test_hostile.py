@@ -102,7 +102,8 @@ from aidl_lang.pipeline import compile_source
 src = ("def fan(n = 3) -> assembly {\n    if n > 0 {\n        s0 = fan(n - 1)\n"
        "        s1 = fan(n - 1)\n    }\n    c = Circle((0, 0), 1)\n}\n"
        "solid top {\n    v = fan(14)\n}\n")
-c = compile_source(src, "m.aidl")
+from aidl_lang.limits import Budget
+c = compile_source(src, "m.aidl", budget=Budget(seconds=120))    # memory, not time, runs out
 print([(d.code, d.span.line, d.span.col, d.message[:40]) for d in c.sink.items])
 print(compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok)
 '''
