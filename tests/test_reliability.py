@@ -301,3 +301,24 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     assert time.perf_counter() - t0 < 5
     (e,) = [x for x in c.sink.items if x.code == "E0304"]
     assert "in the shape checks of `plate`" in e.message
+
+
+def test_the_wall_check_unites_its_tiles_a_few_at_a_time(monkeypatch):
+    """W0507's tiled opening united all its tile parts in one Manifold call that no deadline
+    interrupts (fuzz seed 6128: a solid of 5,000 circles, 43 s past a 15 s deadline in that
+    one call).  The parts are now united UNION_GROUP at a time with the deadline checked
+    between groups; the removed area is the same as the untiled opening's."""
+    import manifold3d as mf
+    from aidl_lang.output import checks
+    sizes = []
+    real = checks._union
+    monkeypatch.setattr(checks, "_union", lambda xs: (sizes.append(len(list(xs))), real(xs))[1])
+    shape = checks._union([mf.CrossSection.circle(1.0, 32).translate((3.0 * j, 0.0))
+                           for j in range(200)])
+    sizes.clear()
+    ticks = []
+    thin = checks._thin(shape, 0.5, tile=200, tick=lambda ahead=0.0: ticks.append(ahead))
+    assert sizes and max(sizes) <= checks.UNION_GROUP < 200
+    assert len(ticks) > len(sizes)
+    ref = shape - checks._open(shape, 0.5)
+    assert abs(thin.area() - ref.area()) < 1e-6 * max(ref.area(), 1.0) and ref.area() > 0
