@@ -67,6 +67,19 @@ test('findServer: setting, then the workspace .venv, then PATH, naming what it t
   assert.deepEqual(missing.tried, ['/nowhere/aidl']);
 });
 
+test('clientOptions: the declared aidl.inlayHints/codeLens settings go to the server', () => {
+  const declared = require('../package.json').contributes.configuration.properties;
+  vscode._shim.setSettings({ 'aidl.inlayHints.enabled': false });
+  const opts = clientOptions(undefined, vscode.workspace.getConfiguration('aidl'));
+  vscode._shim.setSettings({});
+  assert.equal(opts.synchronize.configurationSection, 'aidl');
+  // every declared toggle arrives as {aidl: {name: {enabled}}}, the form features.configure reads
+  const sent = Object.keys(opts.initializationOptions.aidl).map((k) => `aidl.${k}.enabled`);
+  assert.deepEqual(sent.sort(), Object.keys(declared).filter((k) => k.endsWith('.enabled')).sort());
+  assert.deepEqual(opts.initializationOptions.aidl, { inlayHints: { enabled: false }, codeLens: { enabled: true } });
+  assert.equal(clientOptions().initializationOptions, undefined);
+});
+
 test('vscode-languageclient starts `aidl lsp`, opens an example and receives diagnostics', async () => {
   const { command, tried } = findServer({ folders: [ROOT] });
   assert.ok(command, notFoundMessage(tried));
