@@ -11,31 +11,11 @@ const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const Module = require('node:module');
 
-const SHIM = path.join(__dirname, 'shim', 'vscode.js');
-const resolve = Module._resolveFilename;
-Module._resolveFilename = function (request, ...rest) {
-  return request === 'vscode' ? SHIM : resolve.call(this, request, ...rest);
-};
-const vscode = require('vscode');
+const { vscode, ROOT, waitFor } = require('./helpers');
 const { LanguageClient } = require('vscode-languageclient/node');
 const { findServer, serverOptions, clientOptions, notFoundMessage } = require('../server');
 
-const ROOT = path.resolve(__dirname, '..', '..', '..');
-
-function waitFor(pred, ms, what) {
-  return new Promise((resolve, reject) => {
-    const t0 = Date.now();
-    const tick = () => {
-      const v = pred();
-      if (v) return resolve(v);
-      if (Date.now() - t0 > ms) return reject(new Error(`timed out waiting for ${what}`));
-      setTimeout(tick, 20);
-    };
-    tick();
-  });
-}
 
 test('findServer: setting, then the workspace .venv, then PATH, naming what it tried', () => {
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-find-'));
