@@ -13,39 +13,46 @@ STRUCTURE_KINDS = ("solid", "hole", "drawing", "assembly")
 
 @dataclass(eq=False, slots=True)
 class Node:
+    """Base of every node: ``span`` is the node's source text (file, line, column, end)."""
     span: Span
 
 
 # ---------------------------------------------------------------- expressions
 @dataclass(eq=False, slots=True)
 class Num(Node):
+    """A number with its unit as written: ``40 mm`` (value 40.0, unit ``"mm"``), ``3`` (unit None)."""
     value: float
     unit: str | None          # as written: "mm", "deg", ... or None for a bare number
 
 
 @dataclass(eq=False, slots=True)
 class Str(Node):
+    """A string literal ``"..."`` (escapes resolved)."""
     value: str
 
 
 @dataclass(eq=False, slots=True)
 class FStr(Node):
+    """An f-string ``f"w={w}"``: literal ``str`` parts and expression nodes, in order."""
     parts: list               # str | Node
 
 
 @dataclass(eq=False, slots=True)
 class Name(Node):
+    """A name in an expression: ``w``, ``Circle``."""
     id: str
 
 
 @dataclass(eq=False, slots=True)
 class Keyword(Node):
+    """A keyword argument ``name=value`` of a call."""
     name: str
     value: Node
 
 
 @dataclass(eq=False, slots=True)
 class Call(Node):
+    """A call ``func(args..., name=value...)``."""
     func: Node
     args: list[Node]
     kwargs: list[Keyword]
@@ -53,6 +60,7 @@ class Call(Node):
 
 @dataclass(eq=False, slots=True)
 class Member(Node):
+    """A member access ``obj.name`` (``name_span`` is the name's own span)."""
     obj: Node
     name: str
     name_span: Span
@@ -60,12 +68,14 @@ class Member(Node):
 
 @dataclass(eq=False, slots=True)
 class Index(Node):
+    """A subscript ``obj[index]``."""
     obj: Node
     index: Node
 
 
 @dataclass(eq=False, slots=True)
 class BinOp(Node):
+    """An arithmetic operation ``left op right``."""
     op: str                   # + - * / // % **
     left: Node
     right: Node
@@ -73,12 +83,14 @@ class BinOp(Node):
 
 @dataclass(eq=False, slots=True)
 class Compare(Node):
+    """A comparison chain ``a < b <= c``: ``len(ops) == len(operands) - 1``."""
     ops: list[str]            # == != <= >= < >
     operands: list[Node]
 
 
 @dataclass(eq=False, slots=True)
 class BoolOp(Node):
+    """``left and right`` / ``left or right``."""
     op: str                   # and | or
     left: Node
     right: Node
@@ -86,16 +98,19 @@ class BoolOp(Node):
 
 @dataclass(eq=False, slots=True)
 class Not(Node):
+    """``not operand``."""
     operand: Node
 
 
 @dataclass(eq=False, slots=True)
 class Neg(Node):
+    """``-operand``."""
     operand: Node
 
 
 @dataclass(eq=False, slots=True)
 class Ternary(Node):
+    """``then if cond else orelse``."""
     cond: Node
     then: Node
     orelse: Node
@@ -103,16 +118,19 @@ class Ternary(Node):
 
 @dataclass(eq=False, slots=True)
 class TupleLit(Node):
+    """A tuple ``(a, b)``."""
     items: list[Node]
 
 
 @dataclass(eq=False, slots=True)
 class ListLit(Node):
+    """A list ``[a, b]``."""
     items: list[Node]
 
 
 @dataclass(eq=False, slots=True)
 class ListComp(Node):
+    """A list comprehension ``[elt for var in iter if cond]``."""
     elt: Node
     var: str
     var_span: Span
@@ -123,11 +141,13 @@ class ListComp(Node):
 # ---------------------------------------------------------------- statements
 @dataclass(eq=False, slots=True)
 class Block(Node):
+    """An indented block of statements."""
     stmts: list[Node]
 
 
 @dataclass(eq=False, slots=True)
 class UnitsDecl(Node):
+    """``units mm``: the file's default length unit."""
     unit: str
     unit_span: Span
 
@@ -148,6 +168,7 @@ class KerfDecl(ThicknessDecl):
 
 @dataclass(eq=False, slots=True)
 class Import(Node):
+    """``import "path.aidl" as alias``."""
     path: str
     path_span: Span
     alias: str | None
@@ -155,6 +176,7 @@ class Import(Node):
 
 @dataclass(eq=False, slots=True)
 class ParamDecl(Node):
+    """``param name = value`` (with its optional ``min=``/``max=``/``step=`` options)."""
     name: str
     name_span: Span
     value: Node
@@ -164,6 +186,7 @@ class ParamDecl(Node):
 
 @dataclass(eq=False, slots=True)
 class ParamOption(Node):
+    """One ``min=``/``max=``/``step=`` option of a ``param``."""
     name: str                      # min | max | step (checked by the interpreter)
     name_span: Span
     value: Node
@@ -171,12 +194,14 @@ class ParamOption(Node):
 
 @dataclass(eq=False, slots=True)
 class TemplateParam(Node):
+    """One parameter of a ``def`` template, with its default expression if any."""
     name: str
     default: Node | None
 
 
 @dataclass(eq=False, slots=True)
 class Def(Node):
+    """``def KIND name(params):`` a structure template of kind ``kind``."""
     name: str
     name_span: Span
     kind: str
@@ -187,6 +212,7 @@ class Def(Node):
 
 @dataclass(eq=False, slots=True)
 class StructDecl(Node):
+    """``KIND name:`` a structure (solid, hole, drawing, assembly) and its body."""
     kind: str
     kind_span: Span
     name: str
@@ -196,6 +222,7 @@ class StructDecl(Node):
 
 @dataclass(eq=False, slots=True)
 class Assign(Node):
+    """``name = value``."""
     name: str
     name_span: Span
     value: Node
@@ -210,6 +237,7 @@ class KindAssign(Assign):
 
 @dataclass(eq=False, slots=True)
 class For(Node):
+    """``for var in iter:`` body."""
     var: str
     var_span: Span
     iter: Node
@@ -218,6 +246,7 @@ class For(Node):
 
 @dataclass(eq=False, slots=True)
 class If(Node):
+    """``if cond:`` body, with the ``else`` (or ``elif``, nested) block if any."""
     cond: Node
     body: Block
     orelse: Block | None
@@ -225,6 +254,7 @@ class If(Node):
 
 @dataclass(eq=False, slots=True)
 class ExprStmt(Node):
+    """An expression used as a statement (a constraint call, a primitive)."""
     expr: Node
 
 
@@ -238,6 +268,7 @@ class Assert(Node):
 
 @dataclass(eq=False, slots=True)
 class Program(Node):
+    """A parsed file: its path, source text and top-level statements."""
     path: str
     source: str
     stmts: list[Node] = field(default_factory=list)

@@ -37,6 +37,7 @@ class Span(namedtuple("Span", "file line col end_line end_col start end", defaul
 
 @dataclass(slots=True)
 class Label:
+    """A secondary span with a message, shown under the primary caret (rustc's labels)."""
     span: Span
     message: str = ""
     primary: bool = True
@@ -55,6 +56,7 @@ class Fix:
 
 @dataclass(slots=True)
 class Diagnostic:
+    """One located problem: code (aidl_lang.codes), message, span, severity, hint, labels, suggestions, fix."""
     code: str
     message: str
     span: Span | None = None

@@ -18,6 +18,7 @@ REQUIRED = object()
 
 @dataclass(frozen=True)
 class Arg:
+    """One argument of a registry entry's variant: name, AIDL type, default (REQUIRED if none), doc."""
     name: str
     type: str
     default: object = REQUIRED
@@ -43,8 +44,9 @@ class Arg:
         return f"{d:g}" if isinstance(d, float) else str(d)
 
 
-@dataclass
+@dataclass(eq=False)
 class Entry:
+    """A builtin (primitive, constraint, structural or function): its call variants, doc and members."""
     name: str
     category: str                    # primitive | constraint | structural | function
     variants: list[tuple[Arg, ...]]

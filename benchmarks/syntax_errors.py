@@ -18,23 +18,36 @@ if os.environ.get("AIDL_SRC"):
     sys.path.insert(0, os.environ["AIDL_SRC"])
 
 
+def bracket_pairs(src: str) -> list[tuple[int, int, int]]:
+    """Every bracket of ``src`` (a balanced, lexable program): ``(offset, its line, its
+    partner's line)``, sorted; ``ValueError`` if it does not lex or is unbalanced."""
+    from aidl_lang.parser import _lex_lists, mask_comments
+    types, spans, err = _lex_lists(mask_comments(src))
+    if err is not None:
+        raise ValueError(f"does not lex: {err}")
+    stack, out = [], []
+    for t, sp in zip(types, spans):
+        if t in ("LPAR", "LSQB", "LBRACE"):
+            stack.append(sp)
+        elif t in ("RPAR", "RSQB", "RBRACE"):
+            if not stack:
+                raise ValueError(f"unbalanced: {t} on line {sp.line}")
+            o = stack.pop()
+            out += [(o.start, o.line, sp.line), (sp.start, sp.line, o.line)]
+    if stack:
+        raise ValueError(f"unbalanced: a bracket on line {stack[-1].line} is never closed")
+    return sorted(out)
+
+
 def main(paths: list[str]) -> None:
     from aidl_lang.diagnostics import DiagnosticSink
-    from aidl_lang.parser import _lex_lists, mask_comments, parse
+    from aidl_lang.parser import parse
     files = paths or sorted(str(p) for p in (ROOT / "examples").glob("*.aidl"))
     right = total = 0
     counts: collections.Counter = collections.Counter()
     for p in files:
         src = pathlib.Path(p).read_text()
-        types, spans, _err = _lex_lists(mask_comments(src))
-        stack, pairs = [], []
-        for t, sp in zip(types, spans):
-            if t in ("LPAR", "LSQB", "LBRACE"):
-                stack.append(sp)
-            elif t in ("RPAR", "RSQB", "RBRACE"):
-                o = stack.pop()
-                pairs += [(o.start, o.line, sp.line), (sp.start, sp.line, o.line)]
-        for off, line, partner in pairs:
+        for off, line, partner in bracket_pairs(src):
             sink = DiagnosticSink()
             parse(src[:off] + src[off + 1:], p, sink)
             errors = [d for d in sink.items if d.is_error]

@@ -10,21 +10,13 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from aidl_lang.codes import codes_markdown  # noqa: E402
+from generated import write_or_check  # noqa: E402
 
 TARGET = ROOT / "docs" / "codes.md"
 
 
 def main(argv) -> int:
-    text = codes_markdown()
-    old = TARGET.read_text(encoding="utf-8") if TARGET.exists() else None
-    if old == text:
-        return 0
-    if "--check" in argv:
-        print(f"{TARGET.relative_to(ROOT)} is out of date: run python editors/gen_codes_doc.py")
-        return 1
-    TARGET.write_text(text, encoding="utf-8")
-    print(f"wrote {TARGET.relative_to(ROOT)}")
-    return 0
+    return write_or_check([(TARGET, codes_markdown())], argv, Path(__file__).name)
 
 
 if __name__ == "__main__":

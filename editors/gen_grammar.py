@@ -12,25 +12,14 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from aidl_lang.editor.highlight import tmlanguage_json, vim_syntax  # noqa: E402
+from generated import write_or_check  # noqa: E402
 
 TARGET = ROOT / "editors" / "vscode" / "syntaxes" / "aidl.tmLanguage.json"
 VIM = ROOT / "editors" / "nvim" / "syntax" / "aidl-cad.vim"
 
 
 def main(argv) -> int:
-    stale = 0
-    for target, text in ((TARGET, tmlanguage_json()), (VIM, vim_syntax())):
-        old = target.read_text(encoding="utf-8") if target.exists() else None
-        if old == text:
-            continue
-        if "--check" in argv:
-            print(f"{target.relative_to(ROOT)} is out of date: run python editors/gen_grammar.py")
-            stale = 1
-        else:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(text, encoding="utf-8")
-            print(f"wrote {target.relative_to(ROOT)}")
-    return stale
+    return write_or_check([(TARGET, tmlanguage_json()), (VIM, vim_syntax())], argv, Path(__file__).name)
 
 
 if __name__ == "__main__":

@@ -11,21 +11,13 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from aidl_lang.editor.lsp.boot import capabilities_module  # noqa: E402
+from generated import write_or_check  # noqa: E402
 
 TARGET = ROOT / "aidl_lang" / "editor" / "lsp" / "_capabilities.py"
 
 
 def main(argv) -> int:
-    text = capabilities_module()
-    old = TARGET.read_text(encoding="utf-8") if TARGET.exists() else None
-    if old == text:
-        return 0
-    if "--check" in argv:
-        print(f"{TARGET.relative_to(ROOT)} is out of date: run python editors/gen_lsp_capabilities.py")
-        return 1
-    TARGET.write_text(text, encoding="utf-8")
-    print(f"wrote {TARGET.relative_to(ROOT)}")
-    return 0
+    return write_or_check([(TARGET, capabilities_module())], argv, Path(__file__).name)
 
 
 if __name__ == "__main__":

@@ -76,6 +76,20 @@ def test_generated_files_are_up_to_date():
                            capture_output=True, text=True)
         assert r.returncode == 0, r.stdout
 
+    gen = ROOT / "editors" / "gen_grammar.py"          # stale: --check names it, writes nothing
+    vim = ROOT / "editors" / "nvim" / "syntax" / "aidl-cad.vim"
+    text = vim.read_text(encoding="utf-8")
+    try:
+        vim.write_text(text + "\n", encoding="utf-8")
+        r = subprocess.run([sys.executable, str(gen), "--check"], capture_output=True, text=True)
+        assert r.returncode == 1 and "aidl-cad.vim is out of date" in r.stdout, r.stdout
+        assert vim.read_text(encoding="utf-8") == text + "\n"
+        r = subprocess.run([sys.executable, str(gen)], capture_output=True, text=True)
+        assert r.returncode == 0 and "wrote editors/nvim/syntax/aidl-cad.vim" in r.stdout, r.stdout
+        assert vim.read_text(encoding="utf-8") == text
+    finally:
+        vim.write_text(text, encoding="utf-8")
+
 
 BOOT_RUN = """
 import io, json, sys

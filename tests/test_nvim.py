@@ -184,3 +184,44 @@ vim.cmd('qa!')
     assert len(msgs[0]) < 80                              # fits the command line: no prompt
     assert "Error detected" not in out + err
     assert ".venv/bin/aidl" in got["info"] and "pip install" in got["info"]
+
+
+@pytest.mark.skipif(NVIM is None, reason="neovim is not installed (.ci/run installs it)")
+def test_neovim_root_and_server_walk_up_the_folders(tmp_path):
+    """root_dir: the nearest folder holding .git; server_cmd: the nearest .venv/venv above the
+    root, then above the file's folder, each folder tried once (aidl_cad.lua's walk_up)."""
+    proj = tmp_path / "proj"
+    (proj / "sub" / "deep").mkdir(parents=True)
+    (proj / ".git").mkdir()
+    (proj / "sub" / "deep" / "cad.aidl").write_text("units mm\n")
+    probe = r"""
+local m = require('aidl_cad')
+vim.cmd('edit proj/sub/deep/cad.aidl')
+local root = m.root_dir(0)
+local cmd, tried = m.server_cmd(root, vim.fn.expand('%:p:h'))
+io.stdout:write('root=' .. root .. '\n' .. 'cmd=' .. tostring(cmd) .. '\n'
+  .. 'tried=' .. table.concat(tried, '|') .. '\n')
+vim.cmd('qa!')
+"""
+    venv = tmp_path / "venv" / "bin"
+    venv.mkdir(parents=True)
+    (venv / "aidl").write_text("#!/bin/sh\n")
+    (venv / "aidl").chmod(0o755)
+    out, err = _nvim(tmp_path, probe, "/usr/bin:/bin").communicate(timeout=60)
+    got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+    assert got["root"] == str(proj), out + err
+    assert got["cmd"] == str(venv / "aidl")
+    assert got["tried"].split("|") == [f"{proj}/.venv/bin/aidl", f"{proj}/venv/bin/aidl",
+                                       f"{tmp_path}/.venv/bin/aidl", f"{tmp_path}/venv/bin/aidl"]
+    (venv / "aidl").unlink()                  # none: the file's folders are walked up to `proj` only
+    out, err = _nvim(tmp_path, probe, "/usr/bin:/bin").communicate(timeout=60)
+    got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+    tried = got["tried"].split("|")
+    assert got["cmd"] == "nil"
+    assert tried.count(f"{proj}/.venv/bin/aidl") == 1
+    # the root's walk went up to / first; the file's walk stops at `proj` (already tried)
+    i = tried.index(f"{proj}/sub/deep/.venv/bin/aidl")
+    assert i > tried.index(f"{tmp_path}/venv/bin/aidl")
+    assert tried[i:i + 4] == [f"{proj}/sub/deep/.venv/bin/aidl", f"{proj}/sub/deep/venv/bin/aidl",
+                              f"{proj}/sub/.venv/bin/aidl", f"{proj}/sub/venv/bin/aidl"]
+    assert "/bin/aidl" not in tried[i + 4]

@@ -15,25 +15,11 @@ from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES, ROOT
 from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.parser import _lex_lists, mask_comments, parse
+from aidl_lang.parser import parse
+from benchmarks.syntax_errors import bracket_pairs as _pairs
 
 FILES = EXAMPLES + sorted((ROOT / "stdlib").glob("*.aidl")) + \
     sorted((ROOT / "tests/programs").glob("*.aidl"))
-
-
-def _pairs(src: str) -> list[tuple[int, int, int]]:
-    """Every bracket of ``src``: (offset, its line, its partner's line)."""
-    types, spans, err = _lex_lists(mask_comments(src))
-    assert err is None
-    stack, out = [], []
-    for t, sp in zip(types, spans):
-        if t in ("LPAR", "LSQB", "LBRACE"):
-            stack.append(sp)
-        elif t in ("RPAR", "RSQB", "RBRACE"):
-            o = stack.pop()
-            out += [(o.start, o.line, sp.line), (sp.start, sp.line, o.line)]
-    assert not stack
-    return sorted(out)
 
 
 def _first_error(src: str, name: str = "t.aidl"):

@@ -54,8 +54,9 @@ class FormatterBug(RuntimeError):
     source is left as it is."""
 
 
-@dataclass
+@dataclass(eq=False)
 class _Item:
+    """A token or comment to write, with its source offsets."""
     kind: str          # token type, or COMMENT / BLOCK_COMMENT
     text: str          # text as it will be written
     start: int

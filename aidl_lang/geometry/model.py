@@ -57,6 +57,7 @@ class Model:
 
 @dataclass(eq=False)
 class Structure:
+    """A structure of the model: kind, parent, frame translation parameters, children, geometry."""
     name: str
     kind: str                      # solid | hole | drawing | assembly
     parent: "Structure | None"
@@ -131,6 +132,7 @@ class Structure:
 
 @dataclass(eq=False)
 class Point:
+    """A point: the indices of its x and y parameters in the model's parameter vector."""
     ix: int
     iy: int
     owner: Structure
@@ -163,6 +165,7 @@ class Scalar:
 
 @dataclass(eq=False)
 class Geometry:
+    """A primitive (line, circle, ...): its named points and scalar parameters."""
     kind: str                      # Point | Line | Circle | Arc | Rectangle | ...
     owner: Structure
     span: Span | None
@@ -202,6 +205,7 @@ def equation(expr: Expr, ineq: bool = False, branch: Expr | None = None) -> Equa
 
 @dataclass(eq=False)
 class Constraint:
+    """A constraint as written in the source and the equations it adds."""
     kind: str                      # canonical constraint name or "equation" / "internal"
     owner: Structure
     span: Span | None

@@ -27,6 +27,7 @@ class UnitError(Exception):
 
 @dataclass(eq=False, slots=True)
 class Q:
+    """A quantity: an expression with its dimension (length, angle, number) and the structures it reads."""
     expr: Expr
     dim: tuple = NUM
     owners: frozenset = _EMPTY
@@ -51,6 +52,7 @@ class PV:
 
 @dataclass(eq=False, slots=True)
 class GeomRef:
+    """A value naming a primitive."""
     geom: Geometry
 
     @property
@@ -60,6 +62,7 @@ class GeomRef:
 
 @dataclass(eq=False, slots=True)
 class StructRef:
+    """A value naming a structure."""
     struct: Structure
 
     @property
@@ -69,6 +72,7 @@ class StructRef:
 
 @dataclass(eq=False, slots=True)
 class BBoxRef:
+    """``x.bbox``: the bounding box of a structure or primitive, its terms expanded before solving."""
     target: object                 # Structure | Geometry
 
     @property
@@ -79,6 +83,7 @@ class BBoxRef:
 
 @dataclass(eq=False, slots=True)
 class Template:
+    """A ``def`` template with the scope it was defined in."""
     node: object                   # ast.Def
     scope: object                  # the defining file's scope
     file_units: float = 1.0
@@ -86,11 +91,13 @@ class Template:
 
 @dataclass(eq=False, slots=True)
 class Builtin:
+    """A registry builtin (primitive, constraint, function) used as a value."""
     name: str                      # registry entry or function name
 
 
 @dataclass(eq=False, slots=True)
 class Namespace:
+    """An imported file's scope, named by its ``as`` alias."""
     name: str
     scope: object
 

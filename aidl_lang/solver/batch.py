@@ -30,8 +30,9 @@ from .arrays import unique
 from .tape import Tape
 
 
-@dataclass
+@dataclass(eq=False)
 class BlockResult:
+    """One block's Newton outcome in a batched solve."""
     converged: bool
     iterations: int
     residual: float          # max |F| of the block's (kept) rows at its end point

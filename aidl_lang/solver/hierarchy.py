@@ -61,14 +61,16 @@ class Attempt:
     x_end: np.ndarray | None = None     # x[cols] where it ended (a failure restores it)
 
 
-@dataclass
+@dataclass(eq=False)
 class Failure:
+    """A structure whose solve failed, with the attempt that failed."""
     structure: Structure
     attempt: Attempt
 
 
-@dataclass
+@dataclass(eq=False)
 class Trace:
+    """What the hierarchical solve did: its attempts, failures, iterations and limits hit."""
     attempts: list = field(default_factory=list)
     failures: list = field(default_factory=list)
     iterations: int = 0

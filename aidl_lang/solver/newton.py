@@ -74,8 +74,9 @@ def solve_dense(M: np.ndarray, b: np.ndarray) -> np.ndarray:
         return _umath_linalg.solve1(M, b, signature="dd->d")
 
 
-@dataclass
+@dataclass(eq=False)
 class NewtonResult:
+    """A Newton solve's end point, whether it converged, its iterations and residual."""
     x: np.ndarray
     converged: bool
     iterations: int

@@ -116,8 +116,9 @@ class TapeError(ValueError):
     """An expression the tape cannot compile (an unknown operator or an unexpanded term)."""
 
 
-@dataclass
+@dataclass(eq=False)
 class _Group:
+    """The nodes of one operation, evaluated together by fancy indexing."""
     op: int
     idx: np.ndarray       # node indices computed by this group
     a0: np.ndarray        # first argument node of each (MIN/MAX: start of its run of marg)

@@ -71,7 +71,7 @@ async function start() {
   log(`starting ${command} ${args.join(' ')}`);
   setStatus('starting', `Starting ${command} ${args.join(' ')}`);
   client = new LanguageClient('aidl', 'AIDL language server', serverOptions(command, args),
-    clientOptions(output));
+    clientOptions(output, cfg));
   client.onDidChangeState((e) => {
     if (e.newState === State.Running) setStatus('running', `AIDL language server: ${command} (click for its log)`);
     else if (e.newState === State.Starting) setStatus('starting', `Starting ${command}`);

@@ -90,8 +90,17 @@ function serverOptions(command, args = ['lsp']) {
 
 // outputChannel: where the server's log (window/logMessage, stderr) goes; the extension passes
 // its "AIDL" channel, so its own messages and the server's are in one place.
-function clientOptions(outputChannel) {
-  const opts = { documentSelector: [{ language: 'aidl-cad' }] };
+// settings: the "aidl" section (vscode.workspace.getConfiguration('aidl')); the server reads
+// aidl.inlayHints.enabled and aidl.codeLens.enabled from the initialization options, then from
+// each workspace/didChangeConfiguration the client sends for the "aidl" section.
+function clientOptions(outputChannel, settings) {
+  const opts = { documentSelector: [{ language: 'aidl-cad' }], synchronize: { configurationSection: 'aidl' } };
+  if (settings) {
+    opts.initializationOptions = { aidl: {
+      inlayHints: { enabled: settings.get('inlayHints.enabled', true) },
+      codeLens: { enabled: settings.get('codeLens.enabled', true) },
+    } };
+  }
   if (outputChannel) opts.outputChannel = outputChannel;
   else opts.outputChannelName = 'AIDL';
   return opts;

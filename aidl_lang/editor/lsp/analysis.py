@@ -115,6 +115,7 @@ def fix_edits(src: str, path: str, d) -> list[dict]:
 # ------------------------------------------------------------------ the symbol index
 @dataclass(eq=False)
 class Sym:
+    """A name defined in a document, with where and what it is."""
     name: str
     kind: str                 # param | template | structure | variable | loop | parameter | import
     span: Span                # the defining name
@@ -127,6 +128,7 @@ class Sym:
 
 @dataclass(eq=False)
 class Scope:
+    """A lexical scope: its text range and the names defined in it."""
     parent: "Scope | None"
     start: int
     end: int

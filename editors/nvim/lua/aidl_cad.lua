@@ -21,21 +21,32 @@ local function is_dir(p)
   return st ~= nil and st.type == 'directory'
 end
 
+--- fn(dir) for dir and each folder above it, up to the root; the first non-nil result.
+--- `seen` (optional, a set) skips the folders already walked and marks the new ones.
+local function walk_up(dir, fn, seen)
+  while dir and dir ~= '' and not (seen and seen[dir]) do
+    if seen then
+      seen[dir] = true
+    end
+    local got = fn(dir)
+    if got ~= nil then
+      return got
+    end
+    local parent = vim.fn.fnamemodify(dir, ':h')
+    if parent == dir then
+      return nil
+    end
+    dir = parent
+  end
+end
+
 --- The project root of a buffer: the nearest folder above it holding .git, else the cwd.
 function M.root_dir(bufnr)
   local name = vim.api.nvim_buf_get_name(bufnr)
   local dir = name ~= '' and vim.fn.fnamemodify(name, ':p:h') or vim.fn.getcwd()
-  while dir and dir ~= '' do
-    if uv.fs_stat(dir .. '/.git') then
-      return dir
-    end
-    local parent = vim.fn.fnamemodify(dir, ':h')
-    if parent == dir then
-      break
-    end
-    dir = parent
-  end
-  return vim.fn.getcwd()
+  return walk_up(dir, function(d)
+    return uv.fs_stat(d .. '/.git') and d or nil
+  end) or vim.fn.getcwd()
 end
 
 --- The `aidl` command for a project root (and a file's folder), and the places looked at.
@@ -59,20 +70,11 @@ function M.server_cmd(root, file_dir)
   end
   local seen = {}
   for _, start in ipairs({ root, file_dir }) do
-    local dir = start
-    while dir and dir ~= '' and not seen[dir] do
-      seen[dir] = true
-      for _, venv in ipairs({ '.venv', 'venv' }) do
-        local p = try(dir .. '/' .. venv .. '/bin/aidl')
-        if p then
-          return p, tried
-        end
-      end
-      local parent = vim.fn.fnamemodify(dir, ':h')
-      if parent == dir then
-        break
-      end
-      dir = parent
+    local p = walk_up(start, function(dir)
+      return try(dir .. '/.venv/bin/aidl') or try(dir .. '/venv/bin/aidl')
+    end, seen)
+    if p then
+      return p, tried
     end
   end
   for _, var in ipairs({ 'VIRTUAL_ENV', 'CONDA_PREFIX' }) do

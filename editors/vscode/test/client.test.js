@@ -11,31 +11,11 @@ const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const Module = require('node:module');
 
-const SHIM = path.join(__dirname, 'shim', 'vscode.js');
-const resolve = Module._resolveFilename;
-Module._resolveFilename = function (request, ...rest) {
-  return request === 'vscode' ? SHIM : resolve.call(this, request, ...rest);
-};
-const vscode = require('vscode');
+const { vscode, ROOT, waitFor } = require('./helpers');
 const { LanguageClient } = require('vscode-languageclient/node');
 const { findServer, serverOptions, clientOptions, notFoundMessage } = require('../server');
 
-const ROOT = path.resolve(__dirname, '..', '..', '..');
-
-function waitFor(pred, ms, what) {
-  return new Promise((resolve, reject) => {
-    const t0 = Date.now();
-    const tick = () => {
-      const v = pred();
-      if (v) return resolve(v);
-      if (Date.now() - t0 > ms) return reject(new Error(`timed out waiting for ${what}`));
-      setTimeout(tick, 20);
-    };
-    tick();
-  });
-}
 
 test('findServer: setting, then the workspace .venv, then PATH, naming what it tried', () => {
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-find-'));
@@ -65,6 +45,19 @@ test('findServer: setting, then the workspace .venv, then PATH, naming what it t
   const missing = findServer({ serverPath: '/nowhere/aidl', env });
   assert.equal(missing.command, null);
   assert.deepEqual(missing.tried, ['/nowhere/aidl']);
+});
+
+test('clientOptions: the declared aidl.inlayHints/codeLens settings go to the server', () => {
+  const declared = require('../package.json').contributes.configuration.properties;
+  vscode._shim.setSettings({ 'aidl.inlayHints.enabled': false });
+  const opts = clientOptions(undefined, vscode.workspace.getConfiguration('aidl'));
+  vscode._shim.setSettings({});
+  assert.equal(opts.synchronize.configurationSection, 'aidl');
+  // every declared toggle arrives as {aidl: {name: {enabled}}}, the form features.configure reads
+  const sent = Object.keys(opts.initializationOptions.aidl).map((k) => `aidl.${k}.enabled`);
+  assert.deepEqual(sent.sort(), Object.keys(declared).filter((k) => k.endsWith('.enabled')).sort());
+  assert.deepEqual(opts.initializationOptions.aidl, { inlayHints: { enabled: false }, codeLens: { enabled: true } });
+  assert.equal(clientOptions().initializationOptions, undefined);
 });
 
 test('vscode-languageclient starts `aidl lsp`, opens an example and receives diagnostics', async () => {

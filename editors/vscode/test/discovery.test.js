@@ -7,18 +7,11 @@ const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const Module = require('node:module');
 const { execFileSync } = require('node:child_process');
 
-const SHIM = path.join(__dirname, 'shim', 'vscode.js');
-const resolve = Module._resolveFilename;
-Module._resolveFilename = function (request, ...rest) {
-  return request === 'vscode' ? SHIM : resolve.call(this, request, ...rest);
-};
-const vscode = require('vscode');
+const { vscode, ROOT, waitFor } = require('./helpers');
 const { findServer } = require('../server');
 
-const ROOT = path.resolve(__dirname, '..', '..', '..');
 const AIDL = path.join(ROOT, '.venv', 'bin', 'aidl');
 const PYTHON = path.join(ROOT, '.venv', 'bin', 'python');
 
@@ -27,19 +20,6 @@ function fakeAidl(dir) {
   fs.writeFileSync(path.join(dir, 'aidl'), '#!/bin/sh\n');
   fs.chmodSync(path.join(dir, 'aidl'), 0o755);
   return path.join(dir, 'aidl');
-}
-
-function waitFor(pred, ms, what) {
-  return new Promise((res, rej) => {
-    const t0 = Date.now();
-    const tick = () => {
-      const v = pred();
-      if (v) return res(v);
-      if (Date.now() - t0 > ms) return rej(new Error(`timed out waiting for ${what}`));
-      setTimeout(tick, 20);
-    };
-    tick();
-  });
 }
 
 test('findServer walks up from the workspace folder, then from the file, to the nearest venv', () => {

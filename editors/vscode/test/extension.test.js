@@ -10,32 +10,11 @@ const assert = require('node:assert/strict');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const Module = require('node:module');
 
-const SHIM = path.join(__dirname, 'shim', 'vscode.js');
-const resolve = Module._resolveFilename;
-Module._resolveFilename = function (request, ...rest) {
-  return request === 'vscode' ? SHIM : resolve.call(this, request, ...rest);
-};
-const vscode = require('vscode');
+const { vscode, ROOT, waitFor } = require('./helpers');
 const extension = require('../extension');
 
-const ROOT = path.resolve(__dirname, '..', '..', '..');
 const TELEPHONE = path.join(ROOT, 'examples', 'telephone.aidl');
-
-function waitFor(pred, ms, what) {
-  return new Promise((resolve, reject) => {
-    const t0 = Date.now();
-    const tick = () => {
-      let v;
-      try { v = pred(); } catch (e) { v = undefined; }
-      if (v) return resolve(v);
-      if (Date.now() - t0 > ms) return reject(new Error(`timed out waiting for ${what}`));
-      setTimeout(tick, 20);
-    };
-    tick();
-  });
-}
 
 // The viewBox width of an SVG text (mm).
 function viewWidth(svg) {
