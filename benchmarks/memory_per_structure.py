@@ -20,6 +20,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 PROGRAMS = {
     "circle": ("assembly a {{\n  for i in range({n}) {{\n"
@@ -58,7 +59,8 @@ def run(kind: str, n: int, top: int = 0) -> dict:
     # moves the traced peak by several MiB from one run to the next
     out = subprocess.run([sys.executable, "-c", CHILD, PROGRAMS[kind].format(n=n), str(top)],
                          capture_output=True, text=True, check=True,
-                         env={**os.environ, "PYTHONHASHSEED": "0"})
+                         env={**os.environ, "PYTHONHASHSEED": "0"},
+                         cwd=tempfile.gettempdir())   # not this folder: PYTHONPATH decides
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
