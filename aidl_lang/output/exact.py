@@ -42,7 +42,9 @@ from ..limits import OutOfBudget
 
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
-PAIRS_PER_BLOCK = 1_000_000   # candidate (edge, chord) pairs matched at once (~100 MB)
+PAIRS_PER_BLOCK = 100_000     # candidate (edge, chord) pairs matched at once (~10 MB)
+CHORDS_PER_BLOCK = 20_000     # chords sampled into the grid at once (~10 MB)
+EDGES_PER_BLOCK = 10_000      # result edges looked up in the grid at once (~2 MB)
 CARRIERS_PER_EDGE = 8         # chords kept per result edge (the nearest)
 MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)
 
@@ -331,13 +333,26 @@ class _Grid:
         # cells small enough to hold few chords, few enough that a cell's key fits int64
         self.cell = h = max(med, total / (16 * m + 1024), 1e-6, span / 2 ** 30)
         ns = np.maximum(1, np.ceil(L / h).astype(np.int64))           # pieces per chord
-        chord = np.repeat(np.arange(m), ns + 1)
-        start = np.cumsum(ns + 1) - (ns + 1)
-        t = (np.arange(len(chord)) - np.repeat(start, ns + 1)) / np.repeat(ns, ns + 1)
-        S = A[chord] + D[chord] * t[:, None]
-        keys = self._key(S)
+        # the samples' cells, CHORDS_PER_BLOCK chords at a time: the sample points of all
+        # chords at once were the largest temporaries of a compile (issue 26)
+        keys, chord = [], []
+        for b in range(0, m, CHORDS_PER_BLOCK):
+            k, c = self._samples(A, D, ns, b, min(m, b + CHORDS_PER_BLOCK))
+            keys.append(k)
+            chord.append(c)
+        keys, chord = np.concatenate(keys), np.concatenate(chord)
         order = np.argsort(keys, kind="stable")
-        self.keys, self.chord = keys[order], chord[order]
+        self.keys = keys[order]
+        self.chord = chord[order]
+
+    def _samples(self, A, D, ns, first: int, stop: int) -> tuple[np.ndarray, np.ndarray]:
+        """``(cell keys, chord)`` of the samples of chords ``first:stop``: ``ns[i] + 1``
+        points evenly along chord ``i`` (both ends included)."""
+        n = ns[first:stop]
+        chord = np.repeat(np.arange(first, stop), n + 1)
+        start = np.cumsum(n + 1) - (n + 1)
+        t = (np.arange(len(chord)) - np.repeat(start, n + 1)) / np.repeat(n, n + 1)
+        return self._key(A[chord] + D[chord] * t[:, None]), chord
 
     def _key(self, S, dx=0, dy=0):
         ix = np.floor(S[:, 0] / self.cell).astype(np.int64) + dx
@@ -386,6 +401,17 @@ class _Grid:
         keep = rank < CARRIERS_PER_EDGE
         return q[keep], k[keep]
 
+    def _cells(self, M) -> tuple[np.ndarray, np.ndarray]:
+        """``(lo, cnt)``, each 9 x len(M): the samples in the cell of point ``M[i]`` and in the
+        eight around it are ``self.chord[lo[j, i]:lo[j, i] + cnt[j, i]]``, j = 0..8."""
+        lo = np.empty((9, len(M)), dtype=np.int64)
+        cnt = np.empty((9, len(M)), dtype=np.int64)
+        for j, (dx, dy) in enumerate((dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
+            qk = self._key(M, dx, dy)
+            lo[j] = np.searchsorted(self.keys, qk, "left")
+            cnt[j] = np.searchsorted(self.keys, qk, "right") - lo[j]
+        return lo, cnt
+
     def match(self, P, Q, tol) -> np.ndarray:
         n = len(P)
         cid = np.full(n, -1, dtype=np.int64)
@@ -393,26 +419,23 @@ class _Grid:
             return cid
         M = (P + Q) / 2
         # each query edge's candidate chords: the samples of its midpoint's cell and the eight
-        # around it, [lo, lo + cnt) in the sorted samples, per neighbour cell
-        lo = np.empty((9, n), dtype=np.int64)
-        cnt = np.empty((9, n), dtype=np.int64)
-        for j, (dx, dy) in enumerate((dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
-            qk = self._key(M, dx, dy)
-            lo[j] = np.searchsorted(self.keys, qk, "left")
-            cnt[j] = np.searchsorted(self.keys, qk, "right") - lo[j]
-        # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
-        # stays bounded however many chords lie on top of each other
-        ends = np.cumsum(cnt.sum(axis=0))
+        # around it (_cells); first only how many, to refuse before any work is done
+        ends = np.cumsum(np.concatenate([self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
+                                         for b in range(0, n, EDGES_PER_BLOCK)]))
         if ends[-1] > MAX_CANDIDATES:
             raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
                               "(thousands of curves drawn within 0.001 mm of each other)",
                               "the exact outlines")
+        # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
+        # stays bounded however many chords lie on top of each other
         qs, ks = [], []
         at = 0
         while at < n:
             base = ends[at - 1] if at else 0
             stop = max(at + 1, int(np.searchsorted(ends, base + PAIRS_PER_BLOCK, "right")))
-            q, k = self._candidates(P, Q, tol, lo[:, at:stop], cnt[:, at:stop], at)
+            stop = min(stop, at + EDGES_PER_BLOCK)
+            lo, cnt = self._cells(M[at:stop])
+            q, k = self._candidates(P, Q, tol, lo, cnt, at)
             qs.append(q)
             ks.append(k)
             at = stop
