@@ -632,10 +632,12 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
 UNION_GROUP = 16       # tile parts united in one uninterruptible call by _thin
 TILE_VERTS = 2000      # W0507's opening is taken tile by tile above this many vertices
 # the least time per vertex of the steps the deadline cannot interrupt (measured on the 2-core
-# machine: the opening ~60 us, decomposing what it removes ~24 us per vertex; half of that, so
-# that only steps sure to overrun are refused before they start)
+# machine: the opening ~60 us, decomposing what it removes ~24 us, uniting the tiles' parts
+# ~18 us per vertex; half of that, so that only steps sure to overrun are refused before they
+# start)
 THIN_SECONDS_PER_VERTEX = 30e-6
 DECOMPOSE_SECONDS_PER_VERTEX = 12e-6
+UNION_SECONDS_PER_VERTEX = 9e-6     # seed 791: the tiles' last union, 515,225 vertices, 9.3 s
 
 
 def _open(shape, t: float):
@@ -694,8 +696,9 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
     while len(out) > 1:
         nxt = []
         for i in range(0, len(out), UNION_GROUP):
-            tick()
-            nxt.append(_union(out[i:i + UNION_GROUP]))
+            group = out[i:i + UNION_GROUP]
+            tick(sum(p.num_vert() for p in group) * UNION_SECONDS_PER_VERTEX)
+            nxt.append(_union(group))
         out = nxt
     return out[0] if out else mf.CrossSection()
 
