@@ -17,6 +17,7 @@ import numpy as np
 from .diagnostics import Diagnostic, DiagnosticSink, Label
 from .interp import Interpreter
 from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget, Deadline, OutOfBudget
+from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
@@ -352,14 +353,14 @@ def _against_held(sink: DiagnosticSink, model: Model, c) -> bool:
     names the held values and the label points at the constructors.  False (nothing
     reported) when the constraint involves an unknown or a value held by no constructor."""
     from .registry import UNITS_LENGTH
-    index: set[int] = set()
+    index: set[int] = set()                 # the parameters of its equations
     todo = [e.expr for e in c.equations]
     while todo:
         e = todo.pop()
-        if hasattr(e, "terms"):
+        if isinstance(e, Lin):
             index.update(e.terms)
-        else:
-            todo += [a for a in getattr(e, "args", ()) if hasattr(a, "terms") or hasattr(a, "args")]
+        elif isinstance(e, Nl):
+            todo += [a for a in e.args if isinstance(a, (Lin, Nl))]
     if not index or any(model.free[i] for i in index):
         return False
     held = {}

@@ -12,6 +12,7 @@ saying why, elsewhere.  The users are removed afterwards, also when a check fail
 from __future__ import annotations
 
 import os
+import pwd
 import shutil
 import subprocess
 import sys
@@ -107,7 +108,8 @@ def test_a_link_planted_by_another_user_never_aims_a_render_at_a_private_file(us
     link.symlink_to(target)
     for p in (mine, target):
         shutil.chown(p, victim, victim)
-    os.lchown(link, *(lambda pw: (pw.pw_uid, pw.pw_gid))(__import__("pwd").getpwnam(victim)))
+    owner = pwd.getpwnam(victim)
+    os.lchown(link, owner.pw_uid, owner.pw_gid)
     assert render_as(victim, prog, link).returncode == 2
     assert target.read_text() == "old"
     r = render_as(victim, prog, link, "--follow-symlinks")

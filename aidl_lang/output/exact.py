@@ -424,7 +424,7 @@ class _Grid:
                                          for b in range(0, n, EDGES_PER_BLOCK)]))
         if ends[-1] > MAX_CANDIDATES:
             raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
-                              "(thousands of curves drawn within 0.001 mm of each other)",
+                              "(thousands of curves drawn on top of each other)",
                               "the exact outlines")
         # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
         # stays bounded however many chords lie on top of each other

@@ -11,7 +11,6 @@ its structure), in Chromium.
 """
 import html
 import sys
-import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -23,7 +22,7 @@ import aidl_lang  # noqa: E402
 from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.editor.lsp import hints  # noqa: E402
 from aidl_lang.parser import parse  # noqa: E402
-from preview_screenshot import colour  # noqa: E402
+from preview_screenshot import chromium_page, colour  # noqa: E402
 
 PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"><style>
 body {{ margin: 0; font: 13px sans-serif; background: #fff; }}
@@ -38,7 +37,6 @@ pre {{ margin: 0; padding: 6px 0; font: 12px/18px "DejaVu Sans Mono", monospace;
 
 
 def main(src: str, first: int, out: str) -> None:
-    from playwright.sync_api import sync_playwright
     text = Path(src).read_text()
     lines = text.split("\n")
     path = str(Path(src).resolve())
@@ -63,15 +61,8 @@ def main(src: str, first: int, out: str) -> None:
             done = c
         rows.append(f'<span class="ln">{i + 1}</span>{row + colour(ln[done:])}')
     doc = PAGE.format(name=html.escape(Path(src).name), code="\n".join(rows))
-    with tempfile.TemporaryDirectory() as tmp, sync_playwright() as pw:
-        f = Path(tmp) / "page.html"
-        f.write_text(doc)
-        b = pw.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
-                               args=["--no-sandbox", "--disable-gpu"])
-        page = b.new_page(viewport={"width": 1100, "height": 860})
-        page.goto(f.as_uri())
+    with chromium_page(doc, 1100, 860) as page:
         page.screenshot(path=out)
-        b.close()
     n = sum(len(v) for v in at.values())
     print(f"{out}: {n} inlay hints, {len(lens)} code lenses in the file")
 

@@ -8,6 +8,7 @@ replace OLD by NEW in the text (an edit that breaks it) and show that state: the
 picture, dimmed, and the error. Needs node, Playwright and Debian's /usr/bin/chromium. Used for
 docs/images/vscode-preview.png.
 """
+import contextlib
 import html
 import json
 import subprocess
@@ -36,6 +37,24 @@ iframe {{ width: 50%; border: 0; background: #fff; }}
 </body></html>"""
 
 
+@contextlib.contextmanager
+def chromium_page(doc: str, width: int, height: int):
+    """A page of Debian's Chromium (Playwright, headless) showing the HTML ``doc`` at
+    ``width`` x ``height`` px; the browser is closed on leaving."""
+    from playwright.sync_api import sync_playwright
+    with tempfile.TemporaryDirectory() as tmp, sync_playwright() as pw:
+        f = Path(tmp) / "page.html"
+        f.write_text(doc)
+        b = pw.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
+                               args=["--no-sandbox", "--disable-gpu"])
+        try:
+            page = b.new_page(viewport={"width": width, "height": height})
+            page.goto(f.as_uri())
+            yield page
+        finally:
+            b.close()
+
+
 def colour(line: str) -> str:
     import re
     s = html.escape(line)
@@ -47,7 +66,6 @@ def colour(line: str) -> str:
 
 
 def main(src: str, line: int, out: str, values: str | None = None, broken=None) -> None:
-    from playwright.sync_api import sync_playwright
     text = Path(src).read_text()
     lines = text.split("\n")
     col = len(lines[line - 1]) - len(lines[line - 1].lstrip())
@@ -65,13 +83,7 @@ def main(src: str, line: int, out: str, values: str | None = None, broken=None) 
     code = "\n".join(f'<span class="{"cur" if i + 1 == line else ""}"><span class="ln">{i + 1}</span>'
                      f"{colour(lines[i])}</span>" for i in range(first, min(len(lines), first + 60)))
     doc = PAGE.format(name=html.escape(Path(src).name), code=code, webview=html.escape(page_html, quote=True))
-    with tempfile.TemporaryDirectory() as tmp, sync_playwright() as pw:
-        f = Path(tmp) / "page.html"
-        f.write_text(doc)
-        b = pw.chromium.launch(executable_path="/usr/bin/chromium", headless=True,
-                               args=["--no-sandbox", "--disable-gpu"])
-        page = b.new_page(viewport={"width": 1400, "height": 820})
-        page.goto(f.as_uri())
+    with chromium_page(doc, 1400, 820) as page:
         frame = page.frame_locator("#wv")
         frame.locator("#status").wait_for()
         wv = page.frames[1]
@@ -82,7 +94,6 @@ def main(src: str, line: int, out: str, values: str | None = None, broken=None) 
         page.wait_for_timeout(300)
         n = wv.evaluate("document.querySelectorAll('#aidl-shapes .hl').length")
         page.screenshot(path=out)
-        b.close()
     print(f"{out}: {res['ms']} ms compile, {len(res['shapes'])} shapes, {n} highlighted")
 
 
