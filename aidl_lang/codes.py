@@ -185,7 +185,10 @@ and labels the ones inside it.
 Build less, or, if the model really needs it, raise every figure with `--budget K`
 (e.g. `aidl render model.aidl --budget 4`). A program that runs out of the machine's memory
 before any figure of the budget is also `E0304` ("ran out of memory while compiling"), shown
-at its first structure.
+at its first structure. One bound no `--budget` raises: `aidl render` matches the edges of the
+final outlines back to the exact curves in at most 10 000 000 (edge, curve) pairs, so
+thousands of copies of one curve at one place (a template or pattern repeated without moving
+it) are `E0304` "in the exact outlines" of the part, with the fix: draw each curve once.
 """),
     "E0305": ("number not finite or beyond the model extent", """
 A computed number is infinite or not a number (NaN), e.g. `1 / 5e-324` or `x - x` with an

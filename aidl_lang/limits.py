@@ -55,11 +55,13 @@ class OutOfBudget(Exception):
     """The budget ran out after the solve: in the booleans, the shape checks or a writer.
     ``what``: which figure (``more than 15 s of wall time``); ``stage``: where (``the
     booleans``); ``where``: the structure being worked on (with ``path`` and ``span``), or
-    ``None``.  :func:`aidl_lang.pipeline.after_solve` turns it into one located ``E0304``."""
+    ``None``; ``hint``: the fix when it is not "build less or raise ``--budget``" (a bound
+    that no budget raises).  :func:`aidl_lang.pipeline.after_solve` turns it into one located
+    ``E0304``."""
 
-    def __init__(self, what: str, stage: str, where=None):
+    def __init__(self, what: str, stage: str, where=None, hint: str | None = None):
         super().__init__(what)
-        self.what, self.stage, self.where = what, stage, where
+        self.what, self.stage, self.where, self.hint = what, stage, where, hint
 
 
 class Deadline:

@@ -231,8 +231,8 @@ def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:
     sink.add(Diagnostic(
         "E0304", f"the program ran out of its evaluation budget in {ex.stage}{at}: {ex.what}",
         getattr(s, "span", None), "error",
-        hint="build less (fewer or smaller shapes: every circle and arc becomes chords of "
-             "0.005 mm), or raise the budget with `--budget 2` (or more)"))
+        hint=ex.hint or "build less (fewer or smaller shapes: every circle and arc becomes "
+                        "chords of 0.005 mm), or raise the budget with `--budget 2` (or more)"))
 
 
 

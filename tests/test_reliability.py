@@ -265,8 +265,8 @@ solid top {
 def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path, capsys):
     """5 000 circles 1e-9 mm apart under 1 023 instances of another at one place (fuzz seeds
     1399, 1466: a MemoryError at 2 GB while `check` said ok): matching the result's edges to
-    their curves is bounded work — `aidl render` says why it cannot, exit 1, nothing
-    written, in seconds; the file itself checks."""
+    their curves is bounded work — `aidl render` says why it cannot in a located E0304, exit
+    1, nothing written, in seconds; the file itself checks."""
     from aidl_lang.cli.main import main
     f = tmp_path / "stack.aidl"
     f.write_text(STACKED)
@@ -274,8 +274,12 @@ def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path
     t0 = time.perf_counter()
     assert main(["render", str(f), "-o", str(out)]) == 1
     assert time.perf_counter() - t0 < 20
-    err = capsys.readouterr().err
-    assert "cannot recover the exact outlines: more than 10,000,000 (edge, chord) pairs" in err
+    cap = capsys.readouterr()
+    said = cap.out + cap.err
+    # a located E0304 at the part whose outlines they are, with a fix no budget gives
+    assert "stack.aidl:8:1: error[E0304]" in said
+    assert "in the exact outlines of `top`: more than 10,000,000 (edge, chord) pairs" in said
+    assert "draw each curve once" in said
     assert not out.exists()
     assert main(["check", str(f)]) == 0
 

@@ -512,7 +512,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 
 
 def cmd_render(args) -> int:
-    from ..pipeline import compile_source
+    from ..pipeline import compile_source, report_out_of_budget
     from ..output import MissingDependency, Options, OutputError, build, encode
     outs = _outputs(args)
     if isinstance(outs, int):
@@ -595,8 +595,12 @@ def cmd_render(args) -> int:
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2
-    except OutputError as e:                 # an impossible size
-        print(f"aidl: error: {e}", file=sys.stderr)
+    except OutputError as e:                 # an impossible size, or bounded work ran out
+        if e.budget is not None:                 # located: which structure, which stage
+            report_out_of_budget(res.sink, e.budget)
+            _emit(res.sink, args.json, False)
+        else:
+            print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     err = _write_all(items, args.follow_symlinks)
     if err:

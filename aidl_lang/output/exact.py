@@ -46,6 +46,9 @@ PAIRS_PER_BLOCK = 100_000     # candidate (edge, chord) pairs matched at once (~
 CHORDS_PER_BLOCK = 20_000     # chords sampled into the grid at once (~10 MB)
 EDGES_PER_BLOCK = 10_000      # result edges looked up in the grid at once (~2 MB)
 CARRIERS_PER_EDGE = 8         # chords kept per result edge (the nearest)
+STACKED_HINT = ("draw each curve once: copies at the same place (a pattern or template "
+                "repeated without moving it) add nothing to the part; this bound is the same "
+                "at every `--budget`")
 MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)
 
 
@@ -425,7 +428,7 @@ class _Grid:
         if ends[-1] > MAX_CANDIDATES:
             raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
                               "(thousands of curves drawn on top of each other)",
-                              "the exact outlines")
+                              "the exact outlines", hint=STACKED_HINT)
         # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
         # stays bounded however many chords lie on top of each other
         qs, ks = [], []

@@ -33,7 +33,14 @@ Point = tuple[float, float]
 
 class OutputError(RuntimeError):
     """A writer cannot produce this file from this part (for example a PNG larger than the
-    rasteriser allows); the message says why and what to change."""
+    rasteriser allows); the message says why and what to change.  ``budget``: the
+    :class:`~aidl_lang.limits.OutOfBudget` behind it when bounded work ran out (its ``where``
+    names the structure), so that a front end with the compile's diagnostics can report it as
+    a located ``E0304`` (:func:`aidl_lang.pipeline.report_out_of_budget`); else ``None``."""
+
+    def __init__(self, message: str, budget=None):
+        super().__init__(message)
+        self.budget = budget
 
 
 class MissingDependency(OutputError):
@@ -217,8 +224,11 @@ def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
     try:
         part_loops = exact.loops_of([p.shape for p in parts])
     except OutOfBudget as ex:
+        # the part with the most result vertices: where the curves lie on top of each other
+        biggest = max(parts, key=lambda p: p.shape.num_vert())
+        ex.where = drawing.part_of.get(biggest.name)
         raise OutputError(f"cannot recover the exact outlines: {ex.what}; draw fewer curves "
-                          "on top of each other") from None
+                          "on top of each other", ex) from None
     for p, loops in zip(parts, part_loops):
         if not loops:
             continue
