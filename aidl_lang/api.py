@@ -469,6 +469,31 @@ def _values(model, scale: float, unit: str) -> list[Value]:
                     out.append(Value(f"{gp}.{sn}", "angle", math.degrees(v), "deg", v))
                 else:
                     out.append(Value(f"{gp}.{sn}", "number", v, "", v))
+        out.extend(_named_quantities(s, prefix, x, (ox, oy), scale, unit))
+    return out
+
+
+def _named_quantities(s, prefix: str, x, origin, scale: float, unit: str) -> list[Value]:
+    """The named numbers and points of structure ``s`` (its template's parameters and its
+    ``name = expression`` constants, e.g. ``pair.center_distance``), solved: lengths in the
+    file's unit, angles in degrees, bare numbers as they are, points in the model frame.
+    Geometry, structures, lists and other dimensions (an area) are left out."""
+    from .geometry.expr import evaluate
+    from .geometry.values import ANG, LEN, NUM, PV, Q
+    out = []
+    for name, v in s.scope.items():
+        n = prefix + name
+        if isinstance(v, Q) and v.dim in (LEN, ANG, NUM):
+            mm = evaluate(v.expr, x)
+            if v.dim == LEN:
+                out.append(Value(n, "length", mm / scale, unit, mm))
+            elif v.dim == ANG:
+                out.append(Value(n, "angle", math.degrees(mm), "deg", mm))
+            else:
+                out.append(Value(n, "number", mm, "", mm))
+        elif isinstance(v, PV) and v.obj is None:       # a point that is not a geometry's
+            px, py = evaluate(v.x, x) + origin[0], evaluate(v.y, x) + origin[1]
+            out.append(Value(n, "point", (px / scale, py / scale), unit, (px, py)))
     return out
 
 

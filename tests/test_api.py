@@ -54,6 +54,30 @@ def test_compile_source_values_in_file_units():
         r.value("plate.bore.c.radiu")
 
 
+def test_values_name_a_structures_numbers_and_points():
+    """Template parameters and ``name = expression`` constants are values too (``aidl check
+    --values pair.center_distance``): lengths in the file's unit, angles in degrees, points
+    in the model frame (the structure's origin added)."""
+    src = ("units inch\nsolid s {\n  b = Rectangle(center=(1, 0), width=2, height=1)\n"
+           "  half = b.width / 2\n  k = 3\n  a = 30 deg\n  p = b.center + (half, 0)\n}\n"
+           "def pair(teeth1 = 12, module = 4 mm) -> assembly {\n"
+           "  center_distance = module * (teeth1 + 20) / 2\n"
+           "  g = Circle(center=(0, 0), radius=module)\n}\n"
+           "assembly top {\n  t = pair(teeth1=10)\n  t.g.center == (1, 1)\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok, r.diagnostics
+    assert r.value("s.half").text() == "s.half = 1.000 in"
+    assert r.value("s.half").mm == pytest.approx(25.4)
+    assert (r.value("s.k").kind, r.value("s.k").value, r.value("s.k").unit) == ("number", 3, "")
+    assert r.value("s.a").text() == "s.a = 30.000 deg"
+    assert r.value("s.p").value == pytest.approx((2, 0))
+    assert r.value("top.t.center_distance").mm == pytest.approx(4 * 30 / 2)
+    assert r.value("top.t.teeth1").value == 10
+    # a structure: its origin, its geometry, then its named numbers
+    assert [v.name for v in r.values_matching(["top.t"]) if v.kind != "box"][:2] == [
+        "top.t.origin", "top.t.g.center"]
+
+
 def test_parts_and_overrides():
     r = aidl_lang.compile(source=GOOD, overrides={"width": 6})
     [p] = r.parts

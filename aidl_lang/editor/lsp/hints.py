@@ -71,7 +71,7 @@ def solved_facts(result) -> dict:
     origins: dict[str, str] = {}
     for v in values:
         base, _, member = v.name.rpartition(".")
-        if base in structures and member in ("origin", "bbox") or (not base and member in ("origin", "bbox")):
+        if base in structures or not base:      # a structure's origin, bbox, named numbers
             if member == "origin" and (abs(v.value[0]) > 5e-10 or abs(v.value[1]) > 5e-10):
                 origins[base] = f"@ {_pt(v.value)}"
             continue
