@@ -78,5 +78,9 @@ class Deadline:
         take ``ahead`` seconds (a single call into Manifold that cannot be interrupted) would
         end past it: refused before it starts."""
         import time
-        if time.monotonic() + ahead > self.at:
+        now = time.monotonic()
+        if now > self.at:
             raise OutOfBudget(f"more than {self.budget.seconds:g} s of wall time", stage, where)
+        if now + ahead > self.at:
+            raise OutOfBudget(f"about {ahead:.3g} s more would end past the "
+                              f"{self.budget.seconds:g} s of wall time", stage, where)

@@ -34,6 +34,7 @@ class Compiled:
     drawing: Drawing | None = None      # the booleans' result, when the solve converged
     solve_seconds: float = 0.0          # wall time of the solve alone (``aidl batch`` rows)
     params: dict | None = None          # the main file's params: name -> value (Q, bool, str)
+    deadline: Deadline | None = None    # the compile's wall-time end, for the writers after it
 
     @property
     def ok(self) -> bool:
@@ -191,9 +192,9 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
     if not result.converged:
         report_failure(sink, result)
         return Compiled(sink, model, result, solve_seconds=took, params=params)
-    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks,
-                                                     Deadline(deadline, budget)),
-                    solve_seconds=took, params=params)
+    end = Deadline(deadline, budget)
+    return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks, end),
+                    solve_seconds=took, params=params, deadline=end)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,

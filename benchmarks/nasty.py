@@ -278,11 +278,13 @@ def verdict(src: str, path: str, budget=None, seconds: float = 30.0, render: boo
         return "ok-without-solve"
     if c.ok and render:
         try:
-            from aidl_lang.output import OutputError, render_model, to_svg
-            # the compile made the booleans' drawing under its deadline: the writer uses it as
-            # ``aidl render`` does (rendering again without the deadline timed the fuzzer, not AIDL)
+            from aidl_lang.output import OutputError, build, encode, render_model
+            # as ``aidl render`` does: the compile's drawing (made under its deadline), its exact
+            # outlines and the SVG writer under the same deadline (rendering again without it
+            # timed the fuzzer, not AIDL)
             drawing = c.drawing if c.drawing is not None else render_model(c.model)
-            svg = to_svg(drawing)
+            out = build(drawing, "", deadline=c.deadline)
+            svg = encode(out, ".svg", deadline=c.deadline).decode()
             if time.perf_counter() - t0 > seconds:      # compile + writer, as a user waits
                 return "slow"
             if re.search(r"\b(nan|inf|infinity)\b", svg, re.IGNORECASE):

@@ -165,22 +165,22 @@ def test_freedom_count_of_a_long_pattern_peels_its_copies():
 
 
 def test_the_writers_are_inside_the_budget(tmp_path, monkeypatch, capsys):
-    """`aidl render` checks the compile's wall time between writers: past it, E0304 names the
-    writer and nothing is written (not even the outputs already encoded)."""
+    """`aidl render` checks the compile's wall time before each writer: past it, E0304 names
+    the writer and the part, and nothing is written (not even the outputs already encoded)."""
     import aidl_lang.output as O
     from aidl_lang.cli.main import main
     real = O.encode
 
-    def slow(output, suffix, opt=None):
+    def slow(output, suffix, opt=None, deadline=None):
         time.sleep(1.3)
-        return real(output, suffix, opt)
+        return real(output, suffix, opt, deadline)
     monkeypatch.setattr(O, "encode", slow)
     f = tmp_path / "p.aidl"
     f.write_text("solid plate { c = Circle(center=(0, 0), radius=5) }\n")
     a, b = tmp_path / "a.svg", tmp_path / "b.dxf"
     assert main(["render", str(f), "-o", str(a), "-o", str(b), "--budget", "0.02"]) == 1
     err = capsys.readouterr().err
-    assert "error[E0304]" in err and f"in the writer of `{b}`" in err
+    assert "p.aidl:1:1: error[E0304]" in err and "in the SVG writer of `plate`" in err, err
     assert not a.exists() and not b.exists()
     monkeypatch.undo()
     assert main(["render", str(f), "-o", str(a), "-o", str(b)]) == 0
@@ -326,3 +326,68 @@ def test_the_wall_check_unites_its_tiles_a_few_at_a_time(monkeypatch):
     assert len(ticks) > len(sizes)
     ref = shape - checks._open(shape, 0.5)
     assert abs(thin.area() - ref.area()) < 1e-6 * max(ref.area(), 1.0) and ref.area() > 0
+
+
+FAN = """def fan(n = 3) -> assembly {
+    if n > 0 {
+        s0 = fan(n - 1)
+        s1 = fan(n - 1)
+    }
+    c = Circle((0, 0), 1)
+}
+assembly top {
+    v = fan(FANS)
+}
+"""
+
+
+def test_a_writer_sure_to_end_past_the_deadline_is_refused_and_nothing_is_written(
+        tmp_path, capsys, monkeypatch):
+    """The writers after the compile ran outside every budget (fuzz seed 11681: 32,767
+    one-circle parts; compile 7.7 s, exact outlines 6.5 s, SVG 3.8 s: 19 s at a 15 s budget).
+    Each writer is now refused before it starts when its cost estimate
+    (:func:`aidl_lang.output.formats.writer_seconds`) would end past the compile's deadline:
+    a located E0304 naming the writer and the part, exit 1, the old file kept.  Here the SVG
+    cost per item is set absurdly high so that a small fan is refused at once."""
+    from aidl_lang.cli.main import main
+    from aidl_lang.output import formats
+    f = tmp_path / "fan.aidl"
+    f.write_text(FAN.replace("FANS", "3"))
+    out = tmp_path / "fan.svg"
+    out.write_text("the good old picture")
+    # the estimate counts every part, loop and segment: 15 parts of one circle each
+    c = compile_source(f.read_text(), str(f))
+    from aidl_lang.output import build
+    o = build(c.drawing, "fan")
+    assert len(o.parts) == 15
+    assert formats.writer_seconds(o, ".svg") == pytest.approx(
+        formats.WRITER_START + 15 * 3 * formats.SECONDS_PER_ITEM[".svg"])
+    monkeypatch.setitem(formats.SECONDS_PER_ITEM, ".svg", 100.0)
+    t0 = time.perf_counter()
+    assert main(["render", str(f), "-o", str(out)]) == 1
+    assert time.perf_counter() - t0 < 10
+    said = capsys.readouterr()
+    said = said.out + said.err
+    assert "fan.aidl:9:9: error[E0304]" in said, said
+    assert "in the SVG writer of `top.v`" in said and "nothing was written" in said, said
+    assert out.read_text() == "the good old picture"
+    monkeypatch.undo()
+    assert main(["render", str(f), "-o", str(out)]) == 0
+    assert out.read_text().startswith("<svg")
+
+
+def test_the_exact_outlines_stop_at_the_deadline(tmp_path):
+    """Recovering the exact outlines of thousands of parts is a Python loop (seed 11681: 6.5 s
+    for 32,767 parts, outside the budget): it looks at the compile's deadline every
+    POLYGONS_PER_CHECK polygons.  A deadline already past stops it at the first look, with an
+    OutputError carrying the located budget error (the stage and the part)."""
+    from aidl_lang.limits import Deadline
+    from aidl_lang.output import OutputError, build
+    c = compile_source(FAN.replace("FANS", "4"), "fan.aidl")
+    assert c.ok and c.deadline is not None
+    assert len(build(c.drawing, "fan", deadline=c.deadline).parts) == 31
+    with pytest.raises(OutputError) as e:
+        build(c.drawing, "fan", deadline=Deadline(time.monotonic() - 1))
+    assert e.value.budget.stage == "the exact outlines"
+    assert e.value.budget.where.path.startswith("top.v")
+    assert "raise the budget" in str(e.value)

@@ -78,7 +78,7 @@ def run_one(task: dict, cfg: dict) -> dict:
     if res.ok and res.drawing is not None:
         from ..output import OutputError, build
         try:
-            output = build(res.drawing, res.model.root.name)
+            output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         except OutputError as e:                # outlines past bounded work: say so
             row.update(status="error", ok=False, failure=f"output: {e}")
             row["compile_s"] = time.perf_counter() - t0
@@ -92,22 +92,24 @@ def run_one(task: dict, cfg: dict) -> dict:
     if output is not None and cfg.get("render"):
         t1 = time.perf_counter()
         try:
-            row["outputs"] = _render(output, cfg["render"], Path(cfg["out_dir"]), task["stem"])
+            row["outputs"] = _render(output, cfg["render"], Path(cfg["out_dir"]), task["stem"],
+                                     res.deadline)
         except Exception as e:                  # an impossible PNG size, a full disk
             row.update(status="error", ok=False, failure=f"render: {e}")
         row["render_s"] = time.perf_counter() - t1
     return row
 
 
-def _render(output, suffixes: list[str], out_dir: Path, stem: str) -> list[str]:
+def _render(output, suffixes: list[str], out_dir: Path, stem: str, deadline=None) -> list[str]:
     """Write each format as ``OUT_DIR/STEM.EXT`` (:func:`aidl_lang.api.write_atomic`, as
-    ``aidl render``: a reader never sees half a file); returns the paths written."""
+    ``aidl render``: a reader never sees half a file; a writer that would end past the
+    compile's ``deadline`` is refused, and nothing is written); returns the paths written."""
     from ..api import write_atomic
     from ..output import CUT_FORMATS, encode, for_cutting
     # what a cutter reads has the program's `kerf` applied, as `aidl render` writes it
     cut = for_cutting(output) if any(s in CUT_FORMATS for s in suffixes) else output
     items = [(out_dir / f"{stem}{suffix}", encode(cut if suffix in CUT_FORMATS else output,
-                                                  suffix))
+                                                  suffix, deadline=deadline))
              for suffix in suffixes]
     out_dir.mkdir(parents=True, exist_ok=True)
     written = []

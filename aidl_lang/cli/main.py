@@ -466,25 +466,13 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     return None
 
 
-def _encode_all(jobs: list, opt, res, started: float, budget, as_json: bool):
-    """Each ``(path, output, suffix)`` of ``jobs`` encoded in turn, within the compile's
-    wall-time budget (checked between writers; what a writer gets is bounded by the budget's
-    outline vertices): the ``[(path, bytes)]`` to write, or None after an ``E0304`` naming
-    the writer."""
-    import time
-    from ..limits import OutOfBudget
+def _encode_all(jobs: list, opt, deadline):
+    """Each ``(path, output, suffix)`` of ``jobs`` encoded in turn: the ``[(path, bytes)]`` to
+    write.  A writer that would end past the compile's ``deadline`` is refused before it
+    starts (:func:`aidl_lang.output.encode`: an :class:`~aidl_lang.output.OutputError` whose
+    ``budget`` names the part), and nothing is written."""
     from ..output import encode
-    from ..pipeline import report_out_of_budget
-    items = []
-    for o, output, suffix in jobs:
-        if time.monotonic() > started + budget.seconds:
-            report_out_of_budget(res.sink, OutOfBudget(
-                f"more than {budget.seconds:g} s of wall time", f"the writer of `{o}` (nothing "
-                "was written)", res.model.root))
-            _emit(res.sink, as_json, False)
-            return None
-        items.append((o, encode(output, suffix, opt)))
-    return items
+    return [(o, encode(output, suffix, opt, deadline)) for o, output, suffix in jobs]
 
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
@@ -559,8 +547,6 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
-    import time
-    started = time.monotonic()
     res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
                          budget=_budget(args))
     if not res.ok:
@@ -570,7 +556,7 @@ def cmd_render(args) -> int:
                   thickness=thickness, margin=args.margin)
     notes = []
     try:
-        output = build(res.drawing, res.model.root.name)
+        output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         from ..output import CUT_FORMATS, for_cutting
         cut = for_cutting(output, kerf)            # --kerf, else the program's `kerf`
         flat, solid = [cut], [output]
@@ -589,9 +575,7 @@ def cmd_render(args) -> int:
         outs = [n for per in names for n in per]
         jobs = [(n, s, o.suffix) for o, per in zip([p[0] for p in names], names)
                 for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
-        items = _encode_all(jobs, opt, res, started, _budget(args), args.json)
-        if items is None:
-            return 1
+        items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
         return 2

@@ -49,6 +49,7 @@ CARRIERS_PER_EDGE = 8         # chords kept per result edge (the nearest)
 STACKED_HINT = ("draw each curve once: copies at the same place (a pattern or template "
                 "repeated without moving it) add nothing to the part; this bound is the same "
                 "at every `--budget`")
+POLYGONS_PER_CHECK = 256      # polygons recovered between two looks at the deadline (~25 ms)
 MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)
 
 
@@ -155,8 +156,10 @@ class Provenance:
         clockwise, as Manifold gives them); loops that close on nothing are left out."""
         return self.loops_of([shape])[0]
 
-    def loops_of(self, shapes: list) -> list[list[Loop]]:
-        """:meth:`loops` of each of ``shapes``, every edge matched in one pass."""
+    def loops_of(self, shapes: list, deadline=None) -> list[list[Loop]]:
+        """:meth:`loops` of each of ``shapes``, every edge matched in one pass.  ``deadline``
+        (a :class:`~aidl_lang.limits.Deadline`, or None): checked every
+        :data:`POLYGONS_PER_CHECK` polygons (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
         polys = [[np.asarray(p, dtype=float).reshape(-1, 2) for p in s.to_polygons()
                   if len(p) >= 3] for s in shapes]
         flat = [P for ps in polys for P in ps]
@@ -167,10 +170,13 @@ class Provenance:
         scale = max(1.0, float(np.abs(A).max()))
         cid = self._chords().match(A, B, MATCH_TOL + 1e-11 * scale)
         self.unmatched += int((cid < 0).sum())
-        out, at = [], 0
+        out, at, done = [], 0, 0
         for ps in polys:
             loops = []
             for P in ps:
+                if deadline is not None and done % POLYGONS_PER_CHECK == 0:
+                    deadline.check("the exact outlines")
+                done += 1
                 lp = self.recover(P, cid[at:at + len(P)])
                 at += len(P)
                 if lp.segments:

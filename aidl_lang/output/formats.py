@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .part import Output
+from .part import Output, OutputError
 
 
 @dataclass
@@ -75,8 +75,68 @@ FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf,
            ".step": _step, ".stp": _step}
 
 
-def encode(output: Output, suffix: str, options: Options | None = None) -> bytes:
+# What one writer costs, measured by benchmarks/writer_cost.py on the reference machine (2
+# cores, busy) and rounded up about twice: a start (its library's import) and seconds per item
+# of the output, an item being a part, a loop or a segment (engraving strokes' segments
+# included); STL and 3MF per vertex of the drawing's shapes (their triangles follow the
+# tessellation); PNG adds its pixels.
+WRITER_START = 0.5
+SECONDS_PER_ITEM = {".svg": 100e-6, ".dxf": 150e-6, ".png": 100e-6, ".step": 5e-3,
+                    ".stp": 5e-3}
+SECONDS_PER_VERTEX = {".stl": 50e-6, ".3mf": 60e-6}
+SECONDS_PER_PIXEL = 1e-7
+
+
+def writer_seconds(output: Output, suffix: str, options: Options | None = None) -> float:
+    """An upper estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
+    (:data:`WRITER_START` and :data:`SECONDS_PER_ITEM`, :data:`SECONDS_PER_VERTEX`,
+    :data:`SECONDS_PER_PIXEL`), so that a writer sure to end past the deadline is refused
+    before it starts."""
+    suffix = suffix.lower()
+    if suffix in SECONDS_PER_VERTEX:
+        d = output.drawing
+        verts = sum(p.shape.num_vert() for p in d.parts) if d is not None else 0
+        return WRITER_START + SECONDS_PER_VERTEX[suffix] * verts
+    items = sum(1 + len(p.loops) + sum(len(lp.segments) for lp in p.loops)
+                for p in output.parts) + sum(len(st.segments) for st in output.engrave)
+    seconds = WRITER_START + SECONDS_PER_ITEM.get(suffix, 0.0) * items
+    if suffix == ".png" and (output.parts or output.engrave):
+        opt = options or Options()
+        x0, y0, x1, y1 = output.bounds()
+        w, h = x1 - x0, y1 - y0
+        m = opt.margin if opt.margin is not None else max(1.0, 0.05 * max(w, h))
+        w, h = w + 2 * m, h + 2 * m
+        px = opt.width / w if opt.width else opt.dpi / 25.4          # pixels per mm
+        seconds += SECONDS_PER_PIXEL * (w * px) * (h * px)
+    return seconds
+
+
+def encode(output: Output, suffix: str, options: Options | None = None,
+           deadline=None) -> bytes:
     """The bytes of ``output`` in the format named by ``suffix`` (``.svg``, ...).  Raises
     ``KeyError`` for an unknown suffix and :class:`~.part.MissingDependency` when the format's
-    library is not installed."""
-    return FORMATS[suffix.lower()](output, options or Options())
+    library is not installed.  ``deadline``: the compile's
+    :class:`~aidl_lang.limits.Deadline` (``aidl render``, ``aidl batch``), or None: a writer
+    whose :func:`writer_seconds` would end past it is refused before it starts, with an
+    :class:`~.part.OutputError` whose ``budget`` names the part with the most segments."""
+    writer = FORMATS[suffix.lower()]
+    if deadline is not None:
+        from ..limits import OutOfBudget
+        try:
+            deadline.check(f"the {suffix.lstrip('.').upper()} writer",
+                           ahead=writer_seconds(output, suffix, options))
+        except OutOfBudget as ex:
+            ex.where = _biggest_part(output)
+            ex.what += "; nothing was written"
+            raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
+                              f"budget ({ex.what}); build less or raise the budget "
+                              "(`--budget 2`)", ex) from None
+    return writer(output, options or Options())
+
+
+def _biggest_part(output: Output):
+    """The structure of the part with the most segments (None without a drawing)."""
+    if output.drawing is None or not output.parts:
+        return None
+    p = max(output.parts, key=lambda p: sum(len(lp.segments) for lp in p.loops))
+    return output.drawing.part_of.get(p.name)

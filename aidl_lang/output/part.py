@@ -209,12 +209,14 @@ def _runs_of(chains: list[list], reverse) -> list[tuple[list, bool]]:
     return out
 
 
-def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
+def build(drawing: Drawing, title: str = "", thickness=None, deadline=None) -> Output:
     """The exact :class:`Output` of a booleans :class:`Drawing`.  ``thickness`` maps a part's
     name to its thickness in mm (or is one number for all parts); by default the program's
-    (``thickness 3 mm``, :attr:`Drawing.thickness`).  Raises :class:`OutputError` when the
-    exact outlines cannot be recovered within bounded work (thousands of curves on top of
-    each other)."""
+    (``thickness 3 mm``, :attr:`Drawing.thickness`).  ``deadline``: the compile's
+    :class:`~aidl_lang.limits.Deadline` (``aidl render``), or None for no wall-time bound.
+    Raises :class:`OutputError` (with its ``budget``) when the exact outlines cannot be
+    recovered within bounded work (thousands of curves on top of each other) or before the
+    deadline."""
     from .exact import Provenance
     exact = drawing.exact if drawing.exact is not None else Provenance()
     out = Output(title=title, drawing=drawing)
@@ -222,13 +224,14 @@ def build(drawing: Drawing, title: str = "", thickness=None) -> Output:
         thickness = drawing.thickness
     parts = [p for p in drawing.parts if not p.shape.is_empty()]
     try:
-        part_loops = exact.loops_of([p.shape for p in parts])
+        part_loops = exact.loops_of([p.shape for p in parts], deadline)
     except OutOfBudget as ex:
         # the part with the most result vertices: where the curves lie on top of each other
         biggest = max(parts, key=lambda p: p.shape.num_vert())
         ex.where = drawing.part_of.get(biggest.name)
-        raise OutputError(f"cannot recover the exact outlines: {ex.what}; draw fewer curves "
-                          "on top of each other", ex) from None
+        fix = ("draw fewer curves on top of each other" if ex.hint else
+               "build less or raise the budget (`--budget 2`)")
+        raise OutputError(f"cannot recover the exact outlines: {ex.what}; {fix}", ex) from None
     for p, loops in zip(parts, part_loops):
         if not loops:
             continue
