@@ -424,7 +424,8 @@ def _values(model, scale: float, unit: str) -> list[Value]:
     def point(n, px, py):
         return Value(n, "point", (px / scale, py / scale), unit, (px, py))
 
-    out: list[Value] = []
+    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
+    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
     for s in model.structures:
         ox = oy = 0.0
         t = s
@@ -469,19 +470,21 @@ def _values(model, scale: float, unit: str) -> list[Value]:
                     out.append(Value(f"{gp}.{sn}", "angle", math.degrees(v), "deg", v))
                 else:
                     out.append(Value(f"{gp}.{sn}", "number", v, "", v))
-        out.extend(_named_quantities(s, prefix, x, (ox, oy), scale, unit))
+        out.extend(_named_quantities(s.scope, prefix, x, (ox, oy), scale, unit))
     return out
 
 
-def _named_quantities(s, prefix: str, x, origin, scale: float, unit: str) -> list[Value]:
-    """The named numbers and points of structure ``s`` (its template's parameters and its
-    ``name = expression`` constants, e.g. ``pair.center_distance``), solved: lengths in the
-    file's unit, angles in degrees, bare numbers as they are, points in the model frame.
-    Geometry, structures, lists and other dimensions (an area) are left out."""
+def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
+                      unit: str) -> list[Value]:
+    """The named numbers and points of a structure's ``scope`` (its template's parameters and
+    its ``name = expression`` constants, e.g. ``pair.center_distance``) or of the file's
+    (params and constants), solved: lengths in the file's unit, angles in degrees, bare
+    numbers as they are, points in the model frame.  Geometry, structures, lists and other
+    dimensions (an area) are left out."""
     from .geometry.expr import evaluate
     from .geometry.values import ANG, LEN, NUM, PV, Q
     out = []
-    for name, v in s.scope.items():
+    for name, v in scope.items():
         n = prefix + name
         if isinstance(v, Q) and v.dim in (LEN, ANG, NUM):
             mm = evaluate(v.expr, x)

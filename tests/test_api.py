@@ -78,6 +78,19 @@ def test_values_name_a_structures_numbers_and_points():
         "top.t.origin", "top.t.g.center"]
 
 
+def test_values_name_the_files_params_and_constants():
+    """A file's top-level params and constants are values too, first, in the file's unit and
+    with ``--set`` overrides applied (they were missing: only structures were listed)."""
+    src = ("units cm\nparam width = 4 cm\nlength = width * 2 + 1 cm\nturn = 15 deg\n"
+           "solid plate { body = Rectangle(center=(0, 0), width=width, height=length) }\n")
+    r = aidl_lang.compile(source=src, overrides={"width": "5cm"})
+    assert r.ok, r.diagnostics
+    assert [v.text() for v in r.values[:3]] == [
+        "width = 5.000 cm", "length = 11.000 cm", "turn = 15.000 deg"]
+    assert r.value("length").mm == pytest.approx(110)
+    assert r.value("plate.body.height").mm == pytest.approx(110)
+
+
 def test_parts_and_overrides():
     r = aidl_lang.compile(source=GOOD, overrides={"width": 6})
     [p] = r.parts

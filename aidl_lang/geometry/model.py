@@ -27,6 +27,7 @@ class Model:
         self.units = "mm"
         self.file_units: dict[str, str] = {}      # file -> its `units` (when not mm), for messages
         self.assertions: list[Assertion] = []     # `assert` statements left for after solving
+        self.constants: dict = {}     # the main file's top-level names (params, constants)
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))

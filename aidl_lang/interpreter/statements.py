@@ -77,6 +77,7 @@ class Statements:
                 self._exec_stmt(s)
         self.struct, self.scope = saved
         self.model.root = root
+        self.model.constants = fctx.scope.vars
         return self.model
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
