@@ -391,3 +391,20 @@ def test_the_exact_outlines_stop_at_the_deadline(tmp_path):
     assert e.value.budget.stage == "the exact outlines"
     assert e.value.budget.where.path.startswith("top.v")
     assert "raise the budget" in str(e.value)
+
+
+def test_the_kerf_offset_stops_at_the_deadline():
+    """The kerf offset of every part (a Python loop over the parts, after the exact outlines)
+    looks at the compile's deadline before each part: past it, an OutputError carrying the
+    located budget error ("the kerf offset", the part's structure)."""
+    from aidl_lang.limits import Deadline
+    from aidl_lang.output import OutputError, build, for_cutting
+    c = compile_source("kerf 0.2 mm\n" + FAN.replace("FANS", "2"), "fan.aidl")
+    assert c.ok
+    out = build(c.drawing, "fan", deadline=c.deadline)
+    cut = for_cutting(out, deadline=c.deadline)
+    assert cut.parts[0].loops[0].segments[0].radius == pytest.approx(1.1, abs=1e-12)
+    with pytest.raises(OutputError) as e:
+        for_cutting(out, deadline=Deadline(time.monotonic() - 1))
+    assert e.value.budget.stage == "the kerf offset"
+    assert e.value.budget.where.path == "top.v"

@@ -107,7 +107,8 @@ def _render(output, suffixes: list[str], out_dir: Path, stem: str, deadline=None
     from ..api import write_atomic
     from ..output import CUT_FORMATS, encode, for_cutting
     # what a cutter reads has the program's `kerf` applied, as `aidl render` writes it
-    cut = for_cutting(output) if any(s in CUT_FORMATS for s in suffixes) else output
+    cut = (for_cutting(output, deadline=deadline) if any(s in CUT_FORMATS for s in suffixes)
+           else output)
     items = [(out_dir / f"{stem}{suffix}", encode(cut if suffix in CUT_FORMATS else output,
                                                   suffix, deadline=deadline))
              for suffix in suffixes]

@@ -558,7 +558,7 @@ def cmd_render(args) -> int:
     try:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         from ..output import CUT_FORMATS, for_cutting
-        cut = for_cutting(output, kerf)            # --kerf, else the program's `kerf`
+        cut = for_cutting(output, kerf, res.deadline)   # --kerf, else the program's `kerf`
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan

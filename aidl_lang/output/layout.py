@@ -94,14 +94,18 @@ def part_box(p: PartOutline) -> tuple[float, float, float, float]:
 
 
 # ------------------------------------------------------------------ kerf
-def compensate(output: Output, kerf) -> Output:
+def compensate(output: Output, kerf, deadline=None) -> Output:
     """``output`` with every cut of its solid parts offset by half the kerf: outer loops
     outward, holes inward, so the parts come out at their designed size.  ``kerf``: mm for
     every part, or a dict part name -> mm (parts missing from it are not offset).  Engraving
     is not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
-    than the offset."""
+    than the offset; ``deadline`` (a :class:`~aidl_lang.limits.Deadline`, or None) is looked
+    at before each part (:class:`~aidl_lang.limits.OutOfBudget` naming the part's structure)."""
     parts = []
+    where = output.drawing.part_of if output.drawing is not None else {}
     for p in output.parts:
+        if deadline is not None:
+            deadline.check("the kerf offset", where.get(p.name))
         k = kerf.get(p.name, 0.0) if isinstance(kerf, dict) else kerf
         if p.kind != "solid" or not k:
             parts.append(p)
