@@ -408,3 +408,24 @@ def test_the_kerf_offset_stops_at_the_deadline():
         for_cutting(out, deadline=Deadline(time.monotonic() - 1))
     assert e.value.budget.stage == "the kerf offset"
     assert e.value.budget.where.path == "top.v"
+
+
+def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monkeypatch):
+    """The booleans' last union is one Manifold call that no deadline interrupts (fuzz seed
+    791: 4 faces of 480,000 vertices, 3.5 s, the last thing before a 23.6 s run on a busy
+    machine); like the shape checks' steps, it is refused before it starts when its vertex
+    count says it would end past the deadline.  Here the cost per vertex is set absurdly
+    high: E0304 in the booleans at once."""
+    from aidl_lang.limits import Budget
+    from aidl_lang.output import booleans
+    monkeypatch.setattr(booleans, "UNION_SECONDS_PER_VERTEX", 1.0)
+    src = ("solid plate {\n    a = Circle(center=(0, 0), radius=5)\n"
+           "    b = Circle(center=(4, 0), radius=5)\n}\n")
+    t0 = time.perf_counter()
+    c = compile_source(src, "u.aidl", budget=Budget(seconds=10))
+    assert time.perf_counter() - t0 < 5
+    (e,) = [x for x in c.sink.items if x.code == "E0304"]
+    assert "in the booleans of `plate`: about" in e.message, e.message
+    assert "would end past the 10 s of wall time" in e.message
+    monkeypatch.undo()
+    assert compile_source(src, "u.aidl", budget=Budget(seconds=10)).ok
