@@ -98,7 +98,8 @@ def writer_seconds(output: Output, suffix: str, options: Options | None = None) 
     """An upper estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
     (:data:`WRITER_START` and :data:`SECONDS_PER_ITEM`, :data:`SECONDS_PER_VERTEX`,
     :data:`SECONDS_PER_PIXEL`), so that a writer sure to end past the deadline is refused
-    before it starts."""
+    before it starts.  A PNG over :data:`~.png.MAX_SIDE` or :data:`~.png.MAX_AREA` costs only
+    the start: :func:`~.png.to_png` refuses it before drawing."""
     suffix = suffix.lower()
     if suffix in SECONDS_PER_VERTEX:
         d = output.drawing
@@ -108,13 +109,16 @@ def writer_seconds(output: Output, suffix: str, options: Options | None = None) 
                 for p in output.parts) + sum(len(st.segments) for st in output.engrave)
     seconds = WRITER_START + SECONDS_PER_ITEM.get(suffix, 0.0) * items
     if suffix == ".png" and (output.parts or output.engrave):
+        from .png import MAX_AREA, MAX_SIDE
         opt = options or Options()
         x0, y0, x1, y1 = output.bounds()
         w, h = x1 - x0, y1 - y0
         m = opt.margin if opt.margin is not None else max(1.0, 0.05 * max(w, h))
         w, h = w + 2 * m, h + 2 * m
         px = opt.width / w if opt.width else opt.dpi / 25.4          # pixels per mm
-        seconds += SECONDS_PER_PIXEL * (w * px) * (h * px)
+        w_px, h_px = w * px, h * px
+        if max(w_px, h_px) <= MAX_SIDE and w_px * h_px <= MAX_AREA:   # else refused at once
+            seconds += SECONDS_PER_PIXEL * w_px * h_px
     return seconds
 
 
