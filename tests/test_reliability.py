@@ -307,25 +307,54 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     assert "in the shape checks of `plate`" in e.message
 
 
-def test_the_wall_check_unites_its_tiles_a_few_at_a_time(monkeypatch):
-    """W0507's tiled opening united all its tile parts in one Manifold call that no deadline
-    interrupts (fuzz seed 6128: a solid of 5,000 circles, 43 s past a 15 s deadline in that
-    one call).  The parts are now united UNION_GROUP at a time with the deadline checked
-    between groups; the removed area is the same as the untiled opening's."""
+def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
+    """W0507's tiled opening united all its tile parts into one shape: Manifold calls that no
+    deadline interrupts (fuzz seed 6128: a solid of 5,000 circles, 43 s past a 15 s deadline
+    in one call; seeds 791 and 1542: a last union of 8 parts, 515,225 vertices of corner
+    slivers, 9-25 s).  Now only the pieces that meet across a tile's edge are united, at most
+    UNION_GROUP at a time with the deadline checked before each; slivers are never united;
+    the pieces' areas add up to the untiled opening's, and a thin wall that crosses tiles
+    comes out as one piece."""
     import manifold3d as mf
     from aidl_lang.output import checks
     sizes = []
     real = checks._union
     monkeypatch.setattr(checks, "_union", lambda xs: (sizes.append(len(list(xs))), real(xs))[1])
-    shape = checks._union([mf.CrossSection.circle(1.0, 32).translate((3.0 * j, 0.0))
-                           for j in range(200)])
+    circles = checks._union([mf.CrossSection.circle(1.0, 32).translate((3.0 * j, 0.0))
+                             for j in range(200)])
     sizes.clear()
     ticks = []
-    thin = checks._thin(shape, 0.5, tile=200, tick=lambda ahead=0.0: ticks.append(ahead))
-    assert sizes and max(sizes) <= checks.UNION_GROUP < 200
-    assert len(ticks) > len(sizes)
-    ref = shape - checks._open(shape, 0.5)
-    assert abs(thin.area() - ref.area()) < 1e-6 * max(ref.area(), 1.0) and ref.area() > 0
+    pieces = checks._thin(circles, 0.5, tile=200, tick=lambda ahead=0.0: ticks.append(ahead),
+                          least=0.5)
+    assert sizes == [] and ticks                      # slivers only: no union at all
+    ref = circles - checks._open(circles, 0.5)
+    assert abs(sum(p.area() for p in pieces) - ref.area()) < 1e-6 * max(ref.area(), 1.0)
+    # a 0.3 mm wall 600 mm long under a slot of overlapping circles: crosses every tile, one
+    # piece
+    plate = mf.CrossSection.square((620.0, 20.0))
+    holes = checks._union([mf.CrossSection.circle(5.0, 32).translate((10.0 + j, 5.3))
+                           for j in range(600)])
+    part = plate - holes
+    sizes.clear()
+    pieces = checks._thin(part, 0.5, tile=100, least=0.5)
+    big = [p for p in pieces if p.area() >= 0.5]
+    assert sizes and max(sizes) <= checks.UNION_GROUP
+    want = [p for p in (part - checks._open(part, 0.5)).decompose() if p.area() >= 0.5]
+    assert sorted(p.area() for p in big) == pytest.approx(sorted(p.area() for p in want),
+                                                          rel=1e-6)
+    assert max(p.bounds()[2] - p.bounds()[0] for p in big) > 590    # the long wall, whole
+
+
+def test_a_row_of_five_thousand_circles_checks_within_the_budget():
+    """Fuzz seed 1542 (5,000 circles 1 mm apart in one solid): 22-34 s, 25 s of them in the
+    last union of W0507's tiles; now no union and no W0507, within the 15 s budget."""
+    src = ("solid top {\n    for j in range(5000) { solid c { k = Circle(center=(j * 3, 0), "
+           "radius=1) } }\n}\n")
+    t0 = time.perf_counter()
+    c = compile_source(src, "row.aidl")
+    took = time.perf_counter() - t0
+    assert [d.code for d in c.sink.items] == ["W0504"]      # the circles do not touch
+    assert took < 15
 
 
 FAN = """def fan(n = 3) -> assembly {

@@ -584,22 +584,19 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         return
     segs = 16
     tick(shape.num_vert() * THIN_SECONDS_PER_VERTEX)
-    thin = _thin(shape, t, loops, tick=tick)
-    if thin.is_empty():
-        return
-    # The pieces below partition `thin`, so none reaches 2 t^2 when the whole does not (the
-    # same polygon areas summed in another order: the margin is far above the rounding).  On
-    # a part without thin walls the opening removes only corner slivers (the telephone: 391
-    # of them, 0.1 mm^2 in all against 0.5 mm^2), which are then neither split nor measured.
-    if quick and _area(thin) < 2 * t * t * (1 - 1e-9):
+    pieces = _thin(shape, t, loops, tick=tick, least=2 * t * t)
+    # The pieces partition what the opening removes, so none reaches 2 t^2 when the whole does
+    # not (the same polygon areas summed in another order: the margin is far above the
+    # rounding).  On a part without thin walls the opening removes only corner slivers (the
+    # telephone: 391 of them, 0.1 mm^2 in all against 0.5 mm^2), which are then not measured.
+    areas = [_area(p) for p in pieces]
+    if not pieces or quick and sum(areas) < 2 * t * t * (1 - 1e-9):
         return
     holes = [c for c in cuts if c.hole in d.shapes and not d.shapes[c.hole].is_empty()]
     hb = np.array([d.shapes[c.hole].bounds() for c in holes], dtype=float).reshape(-1, 4)
     filled = None
-    tick(thin.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
-    for piece in thin.decompose():
+    for piece, a in zip(pieces, areas):
         tick()
-        a = _area(piece)
         if a < 2 * t * t:
             continue
         if filled is None:
@@ -629,7 +626,7 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                           "set with --min-wall")
 
 
-UNION_GROUP = 16       # tile parts united in one uninterruptible call by _thin
+UNION_GROUP = 16       # tile pieces united in one uninterruptible call by _join
 TILE_VERTS = 2000      # W0507's opening is taken tile by tile above this many vertices
 # the least time per vertex of the steps the deadline cannot interrupt (measured on the 2-core
 # machine: the opening ~60 us, decomposing what it removes ~24 us, uniting the tiles' parts
@@ -646,25 +643,38 @@ def _open(shape, t: float):
                                                                      2.0, segs)
 
 
-def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead=0.0: None):
-    """What the opening of ``shape`` by a disc of diameter ``t`` removes.  Clipper2's offset
-    runs a sweep whose cost grows faster than the vertex count (on a grid of holes about as
-    n^1.5: 12 ms at 100 holes, 256 ms at 900), so a shape of more than ``tile`` vertices is
-    cut into tiles: whether a point survives the opening depends only on the shape within
-    ``t`` of it, so each tile is opened with a margin of ``2 t`` around it (the shape clipped
-    to the grown tile) and what the opening removes inside the tile itself is kept; the union
-    of the tiles' parts is the whole removed set.  The tiles come from halving the box along
-    its longer side while the clipped shape has more than ``tile`` vertices (each half
-    clipped from its parent's piece): O(n log n) whatever the shape.  A grid of tiles over
-    the bounding box cost tiles x vertices for one long loop (a diagonal chain of 10 000
-    circles: 81 tiles, each clipping the whole 150 000-vertex loop, 20 s).  ``loops`` is
-    accepted for the callers' convenience (unused); ``tick()`` is called before each tile
-    (the compile's deadline)."""
+def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead=0.0: None,
+          least: float = 0.0) -> list:
+    """The connected pieces of what the opening of ``shape`` by a disc of diameter ``t``
+    removes (a list of CrossSections; pieces of area below ``least`` mm^2 may come in bits).
+
+    Clipper2's offset runs a sweep whose cost grows faster than the vertex count (on a grid of
+    holes about as n^1.5: 12 ms at 100 holes, 256 ms at 900), so a shape of more than ``tile``
+    vertices is cut into tiles: whether a point survives the opening depends only on the shape
+    within ``t`` of it, so each tile is opened with a margin of ``2 t`` around it (the shape
+    clipped to the grown tile) and what the opening removes inside the tile itself is kept.
+    The tiles come from halving the box along its longer side while the clipped shape has more
+    than ``tile`` vertices (each half clipped from its parent's piece): O(n log n) whatever the
+    shape.  A grid of tiles over the bounding box cost tiles x vertices for one long loop (a
+    diagonal chain of 10 000 circles: 81 tiles, each clipping the whole 150 000-vertex loop,
+    20 s).
+
+    When all of it weighs less than ``least``, the tiles' parts are returned as they are;
+    else each is split into its pieces, and only the pieces that meet across a tile's edge
+    (their boxes touch) and weigh at least ``least`` together are united (:func:`_join`).
+    Uniting every tile's part into one shape first cost one uninterruptible Manifold call over
+    all of them (fuzz seeds 791 and 1542: 5,000 circles, 515,225 vertices of corner slivers,
+    9-25 s).  ``loops`` is accepted for the callers' convenience (unused); ``tick(ahead)`` is
+    called before each tile and each union (the compile's deadline)."""
     n = shape.num_vert()
     if n <= tile:
-        return shape - _open(shape, t)
+        thin = shape - _open(shape, t)
+        if _area(thin) < least:
+            return [thin]
+        tick(thin.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
+        return thin.decompose()
     m = 2 * t
-    out: list = []
+    out: list = []           # what the opening removes in each tile
 
     def box(a, b, c, e):
         return mf.CrossSection.square((c - a, e - b)).translate((a, b))
@@ -690,17 +700,52 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
 
     x0, y0, x1, y1 = shape.bounds()
     split(shape, x0, y0, max(x1, x0 + 1e-9), max(y1, y0 + 1e-9))
-    # the tiles' parts are united a few at a time, the deadline checked between groups: one
-    # union of thousands of parts cannot be interrupted (fuzz seed 6128: 5,000 pieces, 43 s
-    # past the deadline in a single batch_boolean)
-    while len(out) > 1:
-        nxt = []
-        for i in range(0, len(out), UNION_GROUP):
-            group = out[i:i + UNION_GROUP]
-            tick(sum(p.num_vert() for p in group) * UNION_SECONDS_PER_VERTEX)
-            nxt.append(_union(group))
-        out = nxt
-    return out[0] if out else mf.CrossSection()
+    if sum(_area(p) for p in out) < least:        # corner slivers only: nothing to measure
+        return out
+    pieces = []
+    for k, part in enumerate(out):
+        tick(part.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
+        pieces.extend((k, p) for p in part.decompose())
+    return _join(pieces, least, tick)
+
+
+def _join(pieces: list, least: float, tick) -> list:
+    """The connected pieces made of ``pieces`` ((tile number, CrossSection) pairs; pieces of
+    one tile are disjoint, pieces of different tiles meet at most along the tiles' edges):
+    pieces of different tiles whose boxes touch are grouped (connected components of the
+    touching pairs), and a group of at least ``least`` mm^2 is united :data:`UNION_GROUP`
+    parts at a time, the deadline's ``tick(ahead)`` before each union, then split again
+    (touching boxes do not make the shapes touch)."""
+    if not pieces:
+        return []
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    tiles = np.array([k for k, _ in pieces])
+    shapes = [p for _, p in pieces]
+    boxes = np.array([p.bounds() for p in shapes], dtype=float).reshape(-1, 4)
+    span = float(np.max(np.abs(boxes))) if len(boxes) else 1.0
+    pairs = box_pairs(boxes, pad=1e-9 * max(span, 1.0))
+    pairs = pairs[tiles[pairs[:, 0]] != tiles[pairs[:, 1]]]
+    n = len(shapes)
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _count, label = connected_components(graph, directed=False)
+    groups: dict = {}
+    for i, g in enumerate(label):
+        groups.setdefault(g, []).append(shapes[i])
+    result = []
+    for group in groups.values():
+        if len(group) == 1 or sum(_area(p) for p in group) < least:
+            result.extend(group)
+            continue
+        while len(group) > 1:
+            nxt = []
+            for i in range(0, len(group), UNION_GROUP):
+                part = group[i:i + UNION_GROUP]
+                tick(sum(p.num_vert() for p in part) * UNION_SECONDS_PER_VERTEX)
+                nxt.append(_union(part))
+            group = nxt
+        result.extend(group[0].decompose())
+    return result
 
 
 def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
