@@ -16,7 +16,8 @@ listed in docs/gallery.md with the first sentence of its leading comment.
 is rendered to ``docs/images/NAME.png`` (its ``# render: OPTIONS`` line, if any, adds
 ``aidl render`` options such as ``--png-width 654``), and the pictures of bundled examples
 with options (:data:`EXAMPLE_FIGURES`, e.g. the laser box's cutting sheet).  The editor
-screenshots (``vscode-*.png``) are made by editors/vscode/test/*_screenshot.py instead.
+screenshots (``vscode-*.png``) are taken by editors/vscode/test/code_server_screenshots.py
+instead.
 
 *Up to date.*  tests/test_pictures.py re-renders every picture and compares it with the
 committed PNG pixel by pixel, allowing for anti-aliasing: a picture is out of date when more
@@ -92,7 +93,7 @@ EXAMPLE_FIGURES = [
     ("stdlib_gear_pair", "gear_pair", ("--png-width", "520")),
 ]
 RENDER_LINE = re.compile(r"^#\s*render:(.*)$", re.M)
-SCREENSHOTS = "vscode-*.png"     # drawn by editors/vscode/test/*_screenshot.py
+SCREENSHOTS = "vscode-*.png"     # taken by editors/vscode/test/code_server_screenshots.py
 
 
 def figure_pictures() -> list[Picture]:
