@@ -458,3 +458,35 @@ def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monke
     assert "would end past the 10 s of wall time" in e.message
     monkeypatch.undo()
     assert compile_source(src, "u.aidl", budget=Budget(seconds=10)).ok
+
+
+PATTERN_OF_POINTS = """solid top {
+    for i in range(N) {
+        p = Point(1e6, i)
+        Fixed(p)
+        c = CircularPattern(p, 10000, (0, 0), angle=360 deg)
+    }
+}
+"""
+
+
+def test_patterns_of_thousands_copy_in_linear_time_and_stop_at_the_deadline():
+    """Fuzz seed 15501 (CircularPattern of 10,000 copies of a point, ten times): 127 s past a
+    15 s budget.  Each copy looked itself up in its structure's geometry list (O(n) a copy,
+    O(n^2) a pattern) and the wall clock was read only between evaluation steps, while one
+    pattern call is a single step.  Now 30,000 copies compile in a few seconds, and a 1 s
+    budget ends 100,000 copies with a located E0304 soon after the second."""
+    from aidl_lang.limits import Budget
+    t0 = time.perf_counter()
+    c = compile_source(PATTERN_OF_POINTS.replace("N", "3"), "pat.aidl", do_solve=False)
+    took = time.perf_counter() - t0
+    assert not c.sink.has_errors and took < 8, (took, [d.message for d in c.sink.items])
+    assert len(c.model.root.geometry) == 30_000          # each pattern: the point + 9,999
+    t0 = time.perf_counter()
+    c = compile_source(PATTERN_OF_POINTS.replace("N", "10"), "pat.aidl",
+                       budget=Budget(seconds=1.0))
+    took = time.perf_counter() - t0
+    (e,) = [d for d in c.sink.items if d.code == "E0304"]
+    assert "1 s of wall time" in e.message and e.span.line == 2          # the loop
+    assert [lb.span.line for lb in e.labels] == [5]                        # the pattern call
+    assert took < 4, took

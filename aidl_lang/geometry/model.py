@@ -177,6 +177,7 @@ class Geometry:
     parts: dict = field(default_factory=dict)      # sub-geometry (rectangle edges, ...)
     construction: bool = False
     closed: bool = False
+    listed: bool = False           # in its owner's ``geometry`` (else a part: an edge, a spine)
 
     @property
     def label(self) -> str:

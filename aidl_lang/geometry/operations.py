@@ -116,7 +116,8 @@ class _Cloner:
         if "part_of" in g.data:
             new.data["part_of"] = self.geoms.get(g.data["part_of"], g.data["part_of"])
         new.parts = {n: self.geom(p, dest) for n, p in g.parts.items()}
-        if g in g.owner.geometry:            # edges of shapes are parts, not listed
+        if g.listed:                         # edges of shapes are parts, not listed
+            new.listed = True
             dest.geometry.append(new)
         return new
 
@@ -159,7 +160,8 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
     else:
         home = target.geom.owner
         g = cl.geom(target.geom, home)
-        if g not in home.geometry:
+        if not g.listed:           # a copy of an edge stands on its own
+            g.listed = True
             home.geometry.append(g)
         out = GeomRef(g)
     c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=f"{what} copy", implicit=True)
