@@ -70,7 +70,6 @@ class Interpreter(Statements, Calls, Expressions):
         self.root_dir: Path | None = None
         self.cur_span: Span | None = None
         self.body_stmts: list | None = None           # the structure body being run
-        self.plans: dict = {}          # (entry name, positional count, keywords) -> call plan
 
     def run(self, program):
         """Interpret ``program``; an exhausted budget is one ``E0304`` (the model so far is

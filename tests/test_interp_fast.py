@@ -1,11 +1,6 @@
 """The interpreter's fast paths (docs/performance.md, "The interpreter") give exactly what the
 general paths give.
 
-* A call of a registry entry runs by a plan made once per call shape
-  (:func:`aidl_lang.interpreter.calls._plan`); with plans switched off every call takes the
-  general path.  Both must build the same model (parameters, labels, every constraint's
-  equations, float for float) and report the same diagnostics, on every bundled program and
-  on calls with wrong, missing, swapped, synonym and keyword arguments.
 * ``sub``, ``mul``, ``add``, ``func`` and ``contains_bbox`` against the code they replaced
   (kept here as the reference), with hypothesis; the records made without a class call
   (``model.equation``) and the constraint builders' shortcuts for a line's own points
@@ -21,31 +16,12 @@ from aidl_lang.geometry.expr import Lin, Nl, add, func, hypot, mul, sub
 from aidl_lang.geometry.model import Equation, equation
 from aidl_lang.geometry.values import GeomRef, LEN, Q, owners_in, owners_of
 from aidl_lang.interp import Interpreter
-from aidl_lang.interpreter import calls
 from aidl_lang.parser import parse
 from aidl_lang.typecheck import check
 
 from conftest import EXAMPLES, ROOT
 
 PROGRAMS = EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl"))
-
-# call shapes the bundled programs do not all use: synonyms, swapped arguments, keywords,
-# defaults, and arguments of the wrong kind, count or size (each a one-structure program)
-SNIPPETS = [
-    "Contains(outer, inner)", "Contains(a=outer, b=inner)", "Contains(b=inner, a=outer)",
-    "Inside(inner, outer, margin=1)", "RightOf(inner, outer, gap=2 mm)", "Above(inner, outer)",
-    "Below(\"oops\", inner, outer)", "Below(inner, 3)", "CenterInside(inner.k, outer)",
-    "Horizontal(zz=1)", "Horizontal(outer.l)", "Vertical(outer.l.start, outer.l.end)",
-    "Length(outer.l, 5 deg)", "Length(outer.l, length=20)", "Length(line=outer.l, length=2 in)",
-    "Distance(outer.p, outer.l.end, 12)", "Coincident(outer.p, outer.l)", "Fixed(outer.p)",
-    "Radius(inner.k, 2 mm)", "Diameter(inner.k, \"x\")", "Parallel(outer.l)",
-    "AlignLeft(inner, outer)", "Gap(inner, outer, 1, axis=\"y\")", "Gap(inner, outer, 1, axis=\"z\")",
-    "extra = Point(1e20, 0)", "extra = Point(at=(1, 2))", "extra = Point(1, 2, construction=true)",
-    "extra = Line(outer.p)", "extra = Line((0, 0), (1 in, 0), construction=true)",
-    "extra = Circle(center=(0, 0), radius=\"x\")", "extra = Circle((0, 0), 3)",
-    "extra = Circle(center=(0, 0), diameter=4)", "extra = Rectangle(center=(0, 0), width=4, height=2)",
-    "extra = Rectangle(width=4)", "extra = Slot((0, 0), (5, 0), width=2)",
-]
 
 
 def _snippet_program(line: str) -> str:
@@ -68,58 +44,6 @@ def _key(e):
     if isinstance(e, float):
         return e.hex()
     return repr(e)
-
-
-def _build(path: str, source: str):
-    sink = DiagnosticSink()
-    prog = parse(source, path, sink)
-    check(prog, sink)
-    out = [("diag", d.code, d.message, repr(d.span), d.hint) for d in sink.items]
-    if sink.has_errors:
-        return out
-    model = Interpreter(sink).run(prog)
-    out.append(("x", tuple(float(v).hex() for v in model.x), tuple(model.free),
-                tuple(model.param_label)))
-    for s in model.structures:
-        out.append(("S", s.path, s.kind, s.fx, s.fy, tuple(g.name for g in s.geometry)))
-    for c in model.constraints:
-        eqs = c.deferred if c.deferred is not None else c.equations
-        out.append(("C", c.kind, c.owner.path, c.text, c.implicit, c.deferred is not None,
-                    tuple((q.ineq, _key(q.expr), None if q.branch is None else _key(q.branch))
-                          for q in eqs)))
-    out += [("diag", d.code, d.message, repr(d.span), d.hint) for d in sink.items]
-    return out
-
-
-def _both(monkeypatch, path: str, source: str):
-    planned = _build(path, source)
-    with monkeypatch.context() as m:
-        m.setattr(calls, "_plan", lambda *a: None)       # every call takes the general path
-        general = _build(path, source)
-    return planned, general
-
-
-@pytest.mark.parametrize("path", PROGRAMS, ids=lambda p: p.name)
-def test_planned_calls_build_the_same_model(monkeypatch, path):
-    planned, general = _both(monkeypatch, str(path), path.read_text())
-    assert planned == general
-    assert planned
-
-
-@pytest.mark.parametrize("line", SNIPPETS)
-def test_planned_calls_report_the_same(monkeypatch, line, tmp_path):
-    planned, general = _both(monkeypatch, str(tmp_path / "s.aidl"), _snippet_program(line))
-    assert planned == general
-
-
-def test_plans_are_used(monkeypatch):
-    """The fast path is really taken (else the comparison above would test nothing)."""
-    made = []
-    real = calls._plan
-    monkeypatch.setattr(calls, "_plan", lambda *a: made.append(a) or real(*a))
-    _build("s.aidl", _snippet_program("Contains(b=inner, a=outer)"))
-    assert ("Contains", 0, ("b", "a")) in made
-    assert all(real(*a) is not None for a in made if a[0] != "Text")
 
 
 def test_a_wrong_box_argument_is_a_located_error(compile_text):

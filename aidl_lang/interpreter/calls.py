@@ -11,13 +11,13 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.constraints import BUILDERS, ConstraintError
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
-from ..geometry.primitives import PrimitiveError, _pv, build, member as geom_member
+from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
 from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
-from .common import (DEG, POISON, _Silent, _a, _fmt_num, show)
+from .common import (DEG, _a, _fmt_num, show)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -26,88 +26,9 @@ _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
 # shapes made from other shapes (their source must be in the same structure: E0201's hint)
 DERIVED = ("Offset", "Inset", "Shell", "Hull")
-_ANY_REFERENCE = ("boxed", "geometry", "any")      # types any reference to geometry passes
-_UNCHECKED = frozenset((GeomRef, StructRef, BBoxRef, bool, str, type(None)))  # no magnitudes
 
 
-class _Plan:
-    """How a call binds to a registry entry, worked out once per call shape (entry name,
-    number of positional arguments, keyword names) and interpreter run (the variant,
-    keyword renaming and synonym swaps of :func:`~aidl_lang.registry.bind_variant` and
-    :func:`~aidl_lang.registry.canonical_args`): ``order`` lists, in the variant's order,
-    ``(argument, type, where, index, dimension)`` with ``where`` 0 (positional ``index``),
-    1 (keyword ``index``) or 2 (the registry default ``index``, a number of dimension
-    ``type`` when ``type`` is a dimension, else the value itself); ``dimension`` is the
-    dimension a number of this type has (None if it is not a number)."""
-
-    __slots__ = ("entry", "canonical", "category", "order")
-
-    def __init__(self, entry, canonical_name, order):
-        self.entry = entry
-        self.canonical = canonical_name
-        self.category = entry.category
-        self.order = order
-
-
-def _arg_span(node: A.Call, where: int, ix: int):
-    """The span of a planned call's argument (``where`` 0: positional ``ix``, 1: keyword
-    ``ix``; else the call's)."""
-    if where == 0:
-        return node.args[ix].span
-    if where == 1:
-        return node.kwargs[ix].value.span
-    return node.span
-
-
-class _ArgSpans:
-    """The argument spans of a planned call, by argument name, made only when a diagnostic
-    asks (``.get(name, default)``, like the ``spans`` dict of the general path)."""
-
-    __slots__ = ("node", "plan")
-
-    def __init__(self, node, plan):
-        self.node = node
-        self.plan = plan
-
-    def get(self, name, default=None):
-        for aname, _t, where, ix, _w in self.plan.order:
-            if aname == name and (where == 0 or where == 1):
-                return _arg_span(self.node, where, ix)
-        return default
-
-
-_NO_PLAN = object()
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
-
-
-def _plan(nm: str, npos: int, kwnames: tuple) -> "_Plan | None":
-    """The :class:`_Plan` of a call of registry entry ``nm`` with ``npos`` positional
-    arguments and keywords ``kwnames``; None when such a call takes the general path (no
-    matching variant: its errors; a repeated keyword; ``Text``, whose ``center`` changes a
-    default)."""
-    entry = lookup(nm)
-    cn = canonical(nm)
-    if entry is None or cn == "Text" or len(set(kwnames)) < len(kwnames):
-        return None
-    kwnames = list(kwnames)
-    variant, ren, _reason = bind_variant(entry, npos, kwnames)
-    if variant is None:
-        return None
-    src: dict = {}
-    for a, i in zip(variant, range(npos)):
-        src[a.name] = (0, i)
-    for i, k in enumerate(kwnames):
-        src[ren[k]] = (1, i)
-    src = canonical_args(nm, src)
-    order = []
-    for a in variant:
-        if a.name in src:
-            where, i = src[a.name]
-            order.append((a.name, a.type, where, i, _DIMS.get(a.type)))
-        elif a.default is not None:      # registry defaults are in mm / radians
-            dim = _DIMS.get(a.type)
-            order.append((a.name, dim, 2, a.default, None))
-    return _Plan(entry, cn, tuple(order))
 
 
 class Calls:
@@ -153,13 +74,6 @@ class Calls:
         nm = callee.name
         if nm in FUNCTIONS:
             return self.finite(self._function(nm, node), node.span)
-        kws = node.kwargs
-        key = (nm, len(node.args), tuple([kw.name for kw in kws]) if kws else ())
-        plan = self.plans.get(key, _NO_PLAN)
-        if plan is _NO_PLAN:
-            plan = self.plans[key] = _plan(nm, len(node.args), key[2])
-        if plan is not None:
-            return self._planned_call(node, nm, plan, name)
         entry = lookup(nm)
         args = [self.eval(a) for a in node.args]
         kwargs = {kw.name: (self.eval(kw.value), kw) for kw in node.kwargs}
@@ -212,142 +126,6 @@ class Calls:
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(canonical(nm), eqs, node.span, None, owners)
-        return None
-
-    def _planned_call(self, node: A.Call, nm: str, plan: "_Plan", name: str | None):
-        """A call of a registry entry by its :class:`_Plan`: the same evaluation order,
-        coercions, checks and errors as the general path of :meth:`_call`.
-
-        The magnitude check of an argument that passes it is done right after its coercion
-        (it has no effect); the others are checked after every coercion, in argument order,
-        as :meth:`_call` does."""
-        ev = self.eval
-        nargs = node.args
-        args = []
-        chain = self.scope.chain
-        for a in nargs:                 # eval(a); a name in scope looked up inline
-            if type(a) is A.Name and a.id != "self":
-                nid = a.id
-                for vars_ in chain:
-                    if nid in vars_:
-                        v = vars_[nid]
-                        if v is POISON:
-                            raise _Silent()
-                        args.append(v)
-                        break
-                else:
-                    args.append(ev(a))
-            else:
-                args.append(ev(a))
-        kws = node.kwargs
-        kwvals = [ev(kw.value) for kw in kws] if kws else ()
-        conv = {}
-        later = None                    # (argument, value, span) to check after coercion
-        for aname, atype, where, ix, want in plan.order:
-            if where == 0:
-                v = args[ix]
-            elif where == 1:
-                v = kwvals[ix]
-            else:
-                if atype:
-                    v = conv[aname] = Q.num(ix, atype)
-                    if later is None:
-                        later = []
-                    later.append((aname, v, node.span))
-                else:
-                    conv[aname] = ix
-                continue
-            t = type(v)                 # _coerce's common cases, inline; each checks its
-            if t is Q:                  # result's magnitude and goes on when it passes
-                if v.dim != want:
-                    e = v.expr
-                    if v.dim == NUM and want is not None and want != NUM and type(e) is Lin \
-                            and not e.terms:    # a bare number: file units or degrees
-                        if self.floor_results and want == LEN and id(v) in self.floor_results:
-                            self._floor_used(v, _arg_span(node, where, ix))
-                        c = _new(Lin)
-                        c.terms = {}
-                        f = self.file
-                        c.const = ((f.unit_scale if f else 1.0) if want == LEN else DEG) * e.const
-                        q = _new(Q)
-                        q.expr, q.dim, q.owners = c, want, v.owners
-                        v = q
-                    else:
-                        v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
-                        t = type(v)
-                if t is Q:
-                    e = v.expr
-                    if type(e) is Lin:
-                        if e.terms:
-                            conv[aname] = v
-                            continue
-                        c = e.const
-                        if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
-                            conv[aname] = v
-                            continue
-            elif t is GeomRef:
-                kinds = _GEOM_KINDS.get(atype)
-                if (v.geom.kind in kinds) if kinds is not None else atype in _ANY_REFERENCE:
-                    conv[aname] = v
-                    continue
-                if atype == "point" and v.geom.kind == "Point":     # geom_member(g, "p", ...)
-                    v = _pv(v.geom.points["p"], self.struct)
-                    x, y = v.x, v.y          # coordinates with unknowns: nothing to check
-                    if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
-                        conv[aname] = v
-                        continue
-                    t = PV
-                else:
-                    v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
-                    t = type(v)
-            elif (t is StructRef or t is BBoxRef) and (atype == "boxed" or atype == "any"):
-                conv[aname] = v
-                continue
-            else:
-                v = self._coerce(v, atype, _arg_span(node, where, ix), nm, aname)
-                t = type(v)
-            conv[aname] = v
-            if t in _UNCHECKED:         # _check_magnitudes' passing cases, inline
-                continue
-            if t is Q:
-                e = v.expr
-                if type(e) is Lin:
-                    if e.terms:
-                        continue
-                    c = e.const
-                    if c - c == 0.0 and (v.dim != LEN or abs(c) <= MAX_EXTENT):
-                        continue
-            elif t is PV:
-                x, y = v.x, v.y          # coordinates with unknowns: nothing to check
-                if type(x) is Lin and x.terms and type(y) is Lin and y.terms:
-                    continue
-            if later is None:
-                later = []
-            later.append((aname, v, _arg_span(node, where, ix)))
-        if later is not None:
-            check = self._check_magnitudes
-            for k, v, sp in later:
-                check(v, sp, k)
-        cn = plan.canonical
-        if plan.category == "primitive":
-            spans = _new(_ArgSpans)
-            spans.node, spans.plan = node, plan
-            return self._primitive(cn, conv, node, spans)
-        if plan.category == "operation":
-            from ..geometry.operations import OperationError, apply
-            self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
-            try:
-                return apply(self, cn, conv, name)
-            except OperationError as ex:
-                raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
-        owners = owners_in(conv.values())
-        try:
-            eqs = BUILDERS[cn](self, **conv)
-        except ConstraintError as ex:
-            raise EvalError("E0108", str(ex), node.span, hint=plan.entry.signature())
-        except UnitError as ex:
-            raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(cn, eqs, node.span, None, owners)
         return None
 
     def _primitive(self, kind, conv, node, spans):

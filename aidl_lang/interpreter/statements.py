@@ -13,11 +13,10 @@ from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.primitives import member as geom_member
 from ..geometry.expr import Lin, _new
-from ..geometry.values import (LEN, NUM, PV, Builtin, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
-from .calls import _NO_PLAN
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
 
 
@@ -497,17 +496,12 @@ class Statements:
 
     def _call_statement(self, node: A.Call, callee, name: str | None):
         """What ``eval`` does for a call that is a statement's whole value, with its callee
-        (``None``: not yet known) at hand: one step, then a registry entry's call plan when it
-        has one (no keywords), else :meth:`_call`."""
+        (``None``: not yet known) at hand: one step, then :meth:`_call`."""
         n = self.steps + 1               # self.step(node.span), inline
         if n > self.budget.steps or not n & 127:
             self.step(node.span)
         else:
             self.steps = n
-        if type(callee) is Builtin and not node.kwargs:
-            plan = self.plans.get((callee.name, len(node.args), ()), _NO_PLAN)
-            if plan is not _NO_PLAN and plan is not None:
-                return self._planned_call(node, callee.name, plan, name)
         return self._call(node, name, callee)
 
     def _expr_stmt(self, e) -> None:

@@ -3,29 +3,18 @@ output model (:mod:`.part`: lines, arcs, circles per part, engraving), the write
 :mod:`.dxf`, :mod:`.png`, :mod:`.mesh`, :mod:`.step`, by extension in :mod:`.formats`) and the geometry
 checks on the final shape (:mod:`.checks`).  docs/outputs.md describes them.
 
-The names below are imported on first use (PEP 562), so ``aidl check``, which needs only the
-booleans and the checks, never loads the writers (issue 12: cold start)."""
+Importing it loads the modules of the names below but no writer library: :mod:`.formats`
+imports the DXF, PNG, mesh and STEP writers (with ``ezdxf``, ``cairosvg``, ``trimesh``, OCP)
+when that format is written, and :func:`.svg.to_svg` imports ``svgwrite`` when it is called.
+(Until issue 27 these names were resolved on first use by a PEP 562 ``__getattr__``: 1.5-3%
+of a cold ``aidl check``'s instructions, under the 5% rule's bar; docs/performance.md.)"""
 from __future__ import annotations
 
-import importlib
+from .booleans import Drawing, Part, area, render_model
+from .formats import CUT_FORMATS, FORMATS, Options, encode, for_cutting
+from .part import MissingDependency, Output, OutputError, build
+from .svg import to_svg
 
-_WHERE = {"Drawing": "booleans", "Part": "booleans", "area": "booleans",
-          "render_model": "booleans", "to_svg": "svg", "Output": "part", "build": "part",
-          "MissingDependency": "part", "OutputError": "part", "FORMATS": "formats",
-          "Options": "formats", "encode": "formats", "CUT_FORMATS": "formats",
-          "for_cutting": "formats"}
-
-__all__ = list(_WHERE)
-
-
-def __getattr__(name: str):
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(set(globals()) | set(_WHERE))
+__all__ = ["Drawing", "Part", "area", "render_model", "to_svg", "Output", "build",
+           "MissingDependency", "OutputError", "FORMATS", "Options", "encode", "CUT_FORMATS",
+           "for_cutting"]
