@@ -244,3 +244,291 @@ def test_cut_spline_is_the_exact_sub_piece():
     above = S[S[:, 1] >= -30]
     assert loops[0].area > 0 and loops[0].area < Loop([Spline(c, 0, c.n)]).area
     assert len(above)
+
+
+# ------------------------------------------------------------------ the language and writers
+GUITAR_SRC = """units mm
+
+solid guitar {
+    body = Spline(points=[(0, -60), (38, -52), (44, -20), (26, 2), (32, 30), (18, 52),
+                          (0, 56), (-18, 52), (-32, 30), (-26, 2), (-44, -20), (-38, -52)],
+                  closed=true)
+    hole sound {
+        c = Circle(center=(0, 20), radius=12)
+    }
+    drawing deco {
+        wave = Spline(points=[(-20, -45), (-8, -40), (0, -47), (10, -41), (20, -45)])
+    }
+}
+"""
+
+CUT_SRC = """units mm
+
+solid pick {
+    body = Spline(points=[(0, -30), (20, 0), (12, 20), (-12, 20), (-20, 0)], closed=true)
+    hole notch {
+        c = Circle(center=(20, 0), radius=5)
+    }
+    hole flat {
+        r = Rectangle(center=(0, 25), width=60, height=10)
+    }
+}
+"""
+
+
+def _compile(src, tmp_path, name="p"):
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(src, str(tmp_path / f"{name}.aidl"))
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    return c
+
+
+def _output(src, tmp_path):
+    from aidl_lang.output import build
+    c = _compile(src, tmp_path)
+    return build(c.drawing, c.model.root.name)
+
+
+def _write(out, suffix, tmp_path):
+    from aidl_lang.output import Options, encode
+    p = tmp_path / f"out{suffix}"
+    p.write_bytes(encode(out, suffix, Options()))
+    return p
+
+
+def _splines(out):
+    segs = [s for p in out.parts for lp in p.loops for s in lp.segments] + \
+        [s for st in out.engrave for s in st.segments]
+    return [s for s in segs if isinstance(s, Spline)]
+
+
+def _ours(sp, n=50):
+    """Points of our exact Bézier spans at n parameters each."""
+    return [bez_at(b, float(t)) for b in sp.spans for t in np.linspace(0, 1, n)]
+
+
+def test_untouched_closed_spline_and_open_engraving_are_exact_in_the_output(tmp_path):
+    out = _output(GUITAR_SRC, tmp_path)
+    sps = _splines(out)
+    assert len(sps) == 2
+    body = next(s for s in sps if s.whole)
+    wave = next(s for s in sps if not s.whole)
+    pts = [(0, -60), (38, -52), (44, -20), (26, 2), (32, 30), (18, 52), (0, 56), (-18, 52),
+           (-32, 30), (-26, 2), (-44, -20), (-38, -52)]
+    ref = interpolate(pts, True)
+    assert body.curve == ref                    # the program's curve, bit for bit
+    assert _dist(wave.start, (-20, -45)) <= 1e-9 and _dist(wave.end, (20, -45)) <= 1e-9
+    for i, p in enumerate([(-20, -45), (-8, -40), (0, -47), (10, -41), (20, -45)]):
+        assert _dist(wave.curve.at(i), p) <= 1e-9
+    part = out.parts[0]
+    circles = [s for lp in part.loops for s in lp.segments if isinstance(s, Circle)]
+    assert len(circles) == 1 and abs(circles[0].radius - 12) <= 1e-12
+    assert abs(part.area - (Loop([Spline(ref, 0, ref.n)]).area - math.pi * 144)) <= 1e-9
+
+
+def _dxf_splines(path):
+    import ezdxf
+    doc = ezdxf.readfile(str(path))
+    return [e for e in doc.modelspace() if e.dxftype() == "SPLINE"]
+
+
+def _eval_dxf(e, n_per_span):
+    """Points of a DXF SPLINE evaluated by ezdxf from its control points and knots."""
+    from ezdxf.math import BSpline
+    ctrl = [(v[0], v[1]) for v in e.control_points]
+    knots = list(e.knots)
+    bs = BSpline(ctrl, order=e.dxf.degree + 1, knots=knots)
+    distinct = sorted(set(knots))
+    out = []
+    for a, b in zip(distinct, distinct[1:]):
+        for t in np.linspace(a, b, n_per_span):
+            p = bs.point(float(t))
+            out.append((p[0], p[1]))
+    return out
+
+
+def test_dxf_spline_reread_by_ezdxf_evaluates_to_our_beziers(tmp_path):
+    out = _output(GUITAR_SRC, tmp_path)
+    path = _write(out, ".dxf", tmp_path)
+    ents = _dxf_splines(path)
+    assert len(ents) == 2
+    ours = sorted(_splines(out), key=lambda s: -len(s.spans))
+    theirs = sorted(ents, key=lambda e: -len(e.control_points))
+    for sp, e in zip(ours, theirs):
+        assert e.dxf.degree == 3
+        assert len(e.control_points) == 3 * len(sp.spans) + 1
+        a, b = _ours(sp), _eval_dxf(e, 50)
+        assert len(a) == len(b)
+        assert max(_dist(p, q) for p, q in zip(a, b)) <= 1e-9
+    # and the curve through the program's points
+    body = theirs[0]
+    from ezdxf.math import BSpline
+    bs = BSpline([(v[0], v[1]) for v in body.control_points], order=4, knots=list(body.knots))
+    ks = sorted(set(body.knots))
+    pts = [(0, -60), (38, -52), (44, -20), (26, 2), (32, 30), (18, 52), (0, 56), (-18, 52),
+           (-32, 30), (-26, 2), (-44, -20), (-38, -52)]
+    for k, p in zip(ks, pts):
+        q = bs.point(k)
+        assert _dist((q[0], q[1]), p) <= 1e-9
+
+
+def _svg_cubics(path):
+    """The cubic Béziers of each path of the SVG file, as functions t -> model point (mm):
+    the view transform made the identity as in tests/exact_geometry.py (width and height
+    in user units), the viewBox corner moved back and the y flip undone."""
+    import io
+    import xml.etree.ElementTree as ET
+    import svgelements as se
+    ET.register_namespace("", "http://www.w3.org/2000/svg")
+    root = ET.parse(str(path)).getroot()
+    vb = root.get("viewBox").replace(",", " ").split()
+    root.set("width", vb[2])
+    root.set("height", vb[3])
+    svg = se.SVG.parse(io.StringIO(ET.tostring(root, encoding="unicode")), reify=True)
+    vx, vy = float(vb[0]), float(vb[1])
+    out = []
+    for el in svg.elements():
+        if isinstance(el, se.Path):
+            cub = [s for s in el if isinstance(s, se.CubicBezier)]
+            if cub:
+                out.append([(lambda t, c=c: (c.point(t).x + vx, -(c.point(t).y + vy)))
+                            for c in cub])
+    return out
+
+
+def test_svg_path_reread_by_svgelements_evaluates_to_our_beziers(tmp_path):
+    out = _output(GUITAR_SRC, tmp_path)
+    path = _write(out, ".svg", tmp_path)
+    paths = _svg_cubics(path)
+    ours = sorted(_splines(out), key=lambda s: -len(s.spans))
+    paths = sorted(paths, key=len, reverse=True)
+    assert [len(p) for p in paths] == [len(s.spans) for s in ours]
+    for sp, cubics in zip(ours, paths):
+        for b, c in zip(sp.spans, cubics):
+            for t in np.linspace(0, 1, 25):
+                assert _dist(bez_at(b, float(t)), c(float(t))) <= 1e-9
+
+
+def test_cut_spline_comes_out_as_exact_pieces_in_every_writer(tmp_path):
+    out = _output(CUT_SRC, tmp_path)
+    sps = _splines(out)
+    assert len(sps) == 2 and not any(s.whole for s in sps)
+    pts = [(0, -30), (20, 0), (12, 20), (-12, 20), (-20, 0)]
+    ref = interpolate(pts, True)
+    for s in sps:
+        assert s.curve == ref
+        for p in _ours(s, 20):
+            assert ref.distance(p) <= 1e-9       # every point of the pieces on the curve
+    ends = [p for s in sps for p in (s.start, s.end)]
+    on_circle = [p for p in ends if abs(math.hypot(p[0] - 20, p[1]) - 5) <= 1e-9]
+    on_flat = [p for p in ends if abs(p[1] - 20) <= 1e-9]
+    assert len(on_circle) == 2 and len(on_flat) == 2
+    # DXF: the pieces are SPLINE entities equal to our pieces
+    ents = _dxf_splines(_write(out, ".dxf", tmp_path))
+    assert len(ents) == 2
+    for e in ents:
+        a = _eval_dxf(e, 20)
+        match = [s for s in sps if len(s.spans) * 20 == len(a) and
+                 max(_dist(p, q) for p, q in zip(_ours(s, 20), a)) <= 1e-9]
+        assert match
+
+
+def test_step_holds_bspline_curves(tmp_path):
+    """The STEP file, re-read by OCP: the body's edges are B-spline curves whose every
+    point lies on the program's spline (5e-12 mm seen)."""
+    pytest.importorskip("OCP")
+    out = _output(GUITAR_SRC, tmp_path)
+    data = _write(out, ".step", tmp_path).read_text()
+    assert "B_SPLINE_CURVE_WITH_KNOTS" in data
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.GeomAbs import GeomAbs_BSplineCurve
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    r = STEPControl_Reader()
+    r.ReadFile(str(tmp_path / "out.step"))
+    r.TransferRoots()
+    ref = interpolate(GUITAR, True)
+    ex = TopExp_Explorer(r.OneShape(), TopAbs_EDGE)
+    n, worst = 0, 0.0
+    while ex.More():
+        ad = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
+        if ad.GetType() == GeomAbs_BSplineCurve:
+            a, b = ad.FirstParameter(), ad.LastParameter()
+            for i in range(201):
+                q = ad.Value(a + (b - a) * i / 200)
+                if abs(q.Z()) < 1e-12:                     # the bottom face's edge
+                    worst = max(worst, ref.distance((q.X(), q.Y())))
+                    n += 1
+        ex.Next()
+    assert n >= 201 and worst <= 1e-9
+
+
+def test_open_spline_closed_by_a_line_is_a_face(tmp_path):
+    src = """units mm
+solid tab {
+    top = Spline(points=[(-20, 0), (-10, 8), (0, 10), (10, 8), (20, 0)])
+    bottom = Line(start=top.end, end=top.start)
+}
+"""
+    out = _output(src, tmp_path)
+    segs = out.parts[0].loops[0].segments
+    assert sorted(type(s).__name__ for s in segs) == ["Line", "Spline"]
+    c = interpolate([(-20, 0), (-10, 8), (0, 10), (10, 8), (20, 0)], False)
+    assert abs(out.parts[0].area - abs(Loop([Spline(c, 0, c.n), Line((20, 0), (-20, 0))]).area)) <= 1e-9
+
+
+def test_spline_points_are_members_and_the_box_is_exact(tmp_path):
+    src = """units mm
+solid s {
+    body = Spline(points=[(0, 0), (30, 0), (30, 20), (0, 20)], closed=true)
+    dot = Circle(center=body.points[2], radius=1)
+    assert body.bb.right > 30.5
+}
+"""
+    c = _compile(src, tmp_path)
+    from aidl_lang.geometry.bbox import numeric_box
+    body = next(g for g in c.model.root.geometry if g.kind == "Spline")
+    left, right, bottom, top = numeric_box(body, c.model.root, c.model.xs())
+    ref = interpolate([(0, 0), (30, 0), (30, 20), (0, 20)], True).box()
+    assert abs(left - ref[0]) <= 1e-9 and abs(right - ref[2]) <= 1e-9
+    assert abs(bottom - ref[1]) <= 1e-9 and abs(top - ref[3]) <= 1e-9
+
+
+def _diag(src, tmp_path):
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(src, str(tmp_path / "bad.aidl"))
+    assert not c.ok
+    return [d for d in c.sink.items if d.severity == "error"]
+
+
+@pytest.mark.parametrize("call, words", [
+    ("Spline(points=[(0, 0), (10, 0)], closed=true)", "at least 3 points"),
+    ("Spline(points=[(0, 0), (10, 0), (10, 0), (0, 9)], closed=true)",
+     "points[1] and points[2] are the same point"),
+    ("Spline(points=[(0, 0), 5, (10, 10)])", "point"),
+    ("Spline(points=[(0, 0)])", "at least 2 points"),
+])
+def test_bad_input_is_a_located_diagnostic(tmp_path, call, words):
+    src = f"units mm\nsolid s {{\n    body = {call}\n}}\n"
+    errs = _diag(src, tmp_path)
+    assert errs, src
+    d = errs[0]
+    assert words in d.message, d.message
+    assert d.span is not None and d.span.line == 3 and d.span.col >= 5
+    assert "Traceback" not in d.message and "internal" not in d.message
+
+
+def test_offset_of_a_spline_is_refused_at_the_call(tmp_path):
+    src = ("units mm\nsolid s {\n    body = Spline(points=[(0, 0), (30, 0), (30, 20)], "
+           "closed=true, construction=true)\n    grown = Offset(body, 2)\n}\n")
+    errs = _diag(src, tmp_path)
+    assert errs[0].span.line == 4 and "Spline cannot be exact" in errs[0].message
+
+
+def test_synonyms_map_to_spline(tmp_path):
+    src = ("units mm\nsolid s {\n    body = BSpline(through=[(0, 0), (30, 0), (30, 20)], "
+           "periodic=true)\n}\n")
+    out = _output(src, tmp_path)
+    assert _splines(out) and _splines(out)[0].whole

@@ -135,6 +135,13 @@ class Spline:
         from .spline import bez_area
         return sum(bez_area(b) for b in self.spans)
 
+    def box(self) -> tuple[float, float, float, float]:
+        """Exact ``(x0, y0, x1, y1)`` of the piece (its spans' derivative roots)."""
+        from .spline import bez_box
+        bs = [bez_box(b) for b in self.spans]
+        return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+                max(b[3] for b in bs))
+
     def bspline(self):
         """``(3, knots, control points)`` of the piece (clamped, triple interior knots;
         knot steps: each span's share of its curve's parameter step)."""

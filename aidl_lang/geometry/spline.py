@@ -59,7 +59,8 @@ def check_points(pts, closed: bool) -> None:
     need = 3 if closed else 2
     if m < need:
         raise SplineError(f"a {'closed' if closed else 'open'} Spline needs at least {need} "
-                          f"points, got {m}")
+                          f"points, got {m}: add points along the curve"
+                          + (" (a closed outline goes round at least 3)" if closed else ""))
     if m > MAX_POINTS:
         raise SplineError(f"a Spline takes at most {MAX_POINTS} points, got {m}")
     P = np.asarray(pts, dtype=float)
@@ -70,7 +71,7 @@ def check_points(pts, closed: bool) -> None:
             j = (i + 1) % m
             raise SplineError(f"a Spline's points[{i}] and points[{j}] are the same point "
                               f"({P[i, 0]:g}, {P[i, 1]:g}): a smooth curve cannot pass "
-                              f"through one point twice in a row")
+                              f"through one point twice in a row; remove one of them")
 
 
 def interpolation_matrix(h: np.ndarray, closed: bool) -> np.ndarray:
@@ -174,6 +175,12 @@ def _poly(b, k: int) -> np.ndarray:
     return np.array([-p0 + 3 * p1 - 3 * p2 + p3, 3 * p0 - 6 * p1 + 3 * p2, -3 * p0 + 3 * p1, p0])
 
 
+def _der(c: np.ndarray) -> np.ndarray:
+    """Derivative of power-basis coefficients (highest first), length kept minus one."""
+    n = len(c) - 1
+    return c[:-1] * np.arange(n, 0, -1)
+
+
 def _real_roots(coef: np.ndarray, lo=-1e-9, hi=1 + 1e-9) -> list[float]:
     c = np.trim_zeros(np.asarray(coef, dtype=float), "f")
     if len(c) <= 1:
@@ -194,7 +201,7 @@ def bez_extremes(b) -> tuple[list[float], list[float]]:
     zero derivative."""
     out = []
     for k in (0, 1):
-        d = np.polyder(_poly(b, k))
+        d = _der(_poly(b, k))
         out.append([t for t in _real_roots(d, 1e-12, 1 - 1e-12)])
     return out[0], out[1]
 
@@ -340,7 +347,7 @@ class CubicSpline:
             X, Y = _poly(b, 0), _poly(b, 1)
             X[-1] -= px
             Y[-1] -= py
-            g = np.polymul(X, np.polyder(X)) + np.polymul(Y, np.polyder(Y))
+            g = np.convolve(X, _der(X)) + np.convolve(Y, _der(Y))
             for t in _real_roots(g) + [0.0, 1.0]:
                 t = _polish_foot(b, p, t)
                 q = bez_at(b, t)
@@ -374,7 +381,7 @@ class CubicSpline:
             X, Y = _poly(b, 0), _poly(b, 1)
             X[-1] -= cx
             Y[-1] -= cy
-            f = np.polymul(X, X) + np.polymul(Y, Y)
+            f = np.convolve(X, X) + np.convolve(Y, Y)
             f[-1] -= r * r
 
             def g(s, b=b):
