@@ -532,3 +532,96 @@ def test_synonyms_map_to_spline(tmp_path):
            "periodic=true)\n}\n")
     out = _output(src, tmp_path)
     assert _splines(out) and _splines(out)[0].whole
+
+
+def test_fillet_at_a_spline_corner_is_a_located_refusal(tmp_path):
+    src = """units mm
+solid pick {
+    body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)
+    hole notch {
+        c = Circle(center=(20, 0), radius=5)
+    }
+    Fillet(1)
+}
+"""
+    errs = _diag(src, tmp_path)
+    assert [d.code for d in errs] == ["E0407"]
+    d = errs[0]
+    assert d.span.line == 3 and d.span.col == 12
+    assert "Fillet cannot round the corner" in d.message and "at=" in d.hint
+
+
+def test_kerf_on_a_spline_part_is_refused_naming_the_spline(tmp_path):
+    from aidl_lang.output import build
+    from aidl_lang.output.layout import LayoutError, compensate
+    src = ("units mm\nsolid pick {\n    body = Spline(points=[(0, -30), (20, 0), (0, 20), "
+           "(-20, 0)], closed=true)\n}\n")
+    c = _compile(src, tmp_path)
+    out = build(c.drawing, c.model.root.name)
+    with pytest.raises(LayoutError) as ei:
+        compensate(out, 0.2)
+    msg = str(ei.value)
+    assert "cannot be offset exactly" in msg and "p.aidl:3:12" in msg and "kerf 0 mm" in msg
+
+
+def test_union_of_two_splines_and_a_spline_hole(tmp_path):
+    src = """units mm
+solid s {
+    a = Spline(points=[(0, 0), (30, -5), (40, 15), (10, 20)], closed=true)
+    b = Spline(points=[(25, 5), (60, 0), (55, 30), (30, 25)], closed=true)
+    hole h {
+        c = Spline(points=[(5, 5), (15, 3), (12, 12)], closed=true)
+    }
+}
+"""
+    out = _output(src, tmp_path)
+    loops = out.parts[0].loops
+    ca = interpolate([(0, 0), (30, -5), (40, 15), (10, 20)], True)
+    cb = interpolate([(25, 5), (60, 0), (55, 30), (30, 25)], True)
+    ch = interpolate([(5, 5), (15, 3), (12, 12)], True)
+    outer = [lp for lp in loops if lp.area > 0]
+    holes = [lp for lp in loops if lp.area < 0]
+    assert len(outer) == 1 and len(holes) == 1
+    # the hole: the whole spline, run clockwise
+    (hs,) = holes[0].segments
+    assert isinstance(hs, Spline) and hs.whole and hs.curve == ch
+    # the outline: pieces of a and b meeting exactly where the curves cross
+    segs = outer[0].segments
+    assert all(isinstance(s, Spline) for s in segs) and {s.curve for s in segs} == {ca, cb}
+    for s, t in zip(segs, segs[1:] + segs[:1]):
+        assert _dist(s.end, t.start) <= 1e-9
+        assert ca.distance(s.end) <= 1e-9 and cb.distance(s.end) <= 1e-9
+    # the area: by the pieces' exact integrals, and the polygon area agrees to the chords
+    sh = out.drawing.parts[0].shape.area()
+    assert abs(out.parts[0].area - sh) <= 0.005 * (ca.length() + cb.length() + ch.length())
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.floats(-50, 45), st.floats(-1.2, 1.2))
+def test_law_a_line_cut_gives_pieces_of_the_curve_ending_on_the_line(y0, slope):
+    """Law: a closed spline cut by a half-plane comes back as pieces of the same curve whose
+    ends lie on the cutting line and on the curve (1e-9 mm), joined by that line."""
+    c, lp = _closed_loop()
+    ux, uy = 1 / math.hypot(1, slope), slope / math.hypot(1, slope)
+    # a big quadrilateral below the line y = y0 + slope x
+    far = 500.0
+    p0 = (-far, y0 - slope * far)
+    p1 = (far, y0 + slope * far)
+    box = Loop([Line(p0, (-far, -far)), Line((-far, -far), (far, -far)), Line((far, -far), p1),
+                Line(p1, p0)])
+    pv = Provenance()
+    loops = pv.loops(pv.face(lp) - pv.face(box))
+    for L in loops:
+        for s in L.segments:
+            if isinstance(s, Spline):
+                assert s.curve == c
+                for p in _ours(s, 5):
+                    assert c.distance(p) <= 1e-9
+            else:
+                assert isinstance(s, Line)
+                for p in (s.start, s.end):
+                    # on the cutting line
+                    assert abs(ux * (p[1] - p0[1]) - uy * (p[0] - p0[0])) <= 1e-9
+                    assert c.distance(p) <= 1e-9
+        for s, t in zip(L.segments, L.segments[1:] + L.segments[:1]):
+            assert _dist(s.end, t.start) <= 1e-9
