@@ -178,11 +178,8 @@ _DEFS = {
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                 doc="A smooth curve through the points (interpolating C2 cubic spline, "
-                     "chord-length parameters); closed=true: a closed outline (periodic), "
-                     "else an open curve (natural ends). Exact in SVG (cubic Béziers), DXF "
-                     "(SPLINE) and STEP; points as Polygon's (literal ones rigid unless "
-                     "flexible=true).", members=SPLINE_MEMBERS),
+                 doc="A smooth curve through the points; closed=true: an outline.",
+                 members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
                          [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
