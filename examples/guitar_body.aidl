@@ -4,9 +4,9 @@
 # Try: --set waist=22  --set lower_bout=48  --set hole_radius=14
 
 units mm
-param waist = 26            # half width at the waist
-param lower_bout = 44       # half width of the lower bout
-param upper_bout = 32       # half width of the upper bout
+param waist = 26       # half width at the waist
+param lower_bout = 44  # half width of the lower bout
+param upper_bout = 32  # half width of the upper bout
 param hole_radius = 12
 thickness 3 mm
 

@@ -625,3 +625,32 @@ def test_law_a_line_cut_gives_pieces_of_the_curve_ending_on_the_line(y0, slope):
                     assert c.distance(p) <= 1e-9
         for s, t in zip(L.segments, L.segments[1:] + L.segments[:1]):
             assert _dist(s.end, t.start) <= 1e-9
+
+
+def test_points_moved_together_by_the_solve_are_a_located_error(tmp_path):
+    src = """units mm
+solid s {
+    body = Spline(points=[(0, 0), (30, 0), (30, 20), (0, 20)], closed=true, flexible=true)
+    Coincident(body.points[1], body.points[2])
+}
+"""
+    errs = _diag(src, tmp_path)
+    assert [d.code for d in errs] == ["E0108"] and errs[0].span.line == 3
+    assert "after the solve" in errs[0].message and "points[1] and points[2]" in errs[0].message
+
+
+def test_mirrored_spline_is_the_mirror_image(tmp_path):
+    src = """units mm
+solid s {
+    half = Spline(points=[(5, 0), (20, 5), (25, 20), (10, 30)], closed=true)
+    axis = Line((0, -10), (0, 40), construction=true)
+    Mirrored(half, about=axis)
+}
+"""
+    out = _output(src, tmp_path)
+    sps = _splines(out)
+    assert len(sps) == 2 and all(s.whole for s in sps)
+    a, b = sps
+    for u in np.linspace(0, a.curve.n, 41):
+        p = a.curve.at(float(u))
+        assert b.curve.distance((-p[0], p[1])) <= 1e-9

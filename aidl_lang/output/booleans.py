@@ -185,7 +185,11 @@ class Renderer:
         from ..geometry.primitives import points_of
         try:
             c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")))
-        except SplineError:
+        except SplineError as ex:
+            if not any(e[0] is g for e in self.shape_errors):     # said once, at the call
+                self.shape_errors.append((g, f"`{g.label}` after the solve: {ex}",
+                                          "a constraint moved the points onto each other: "
+                                          "keep consecutive points apart", "E0108"))
             return None
         self.spline_source.setdefault(c, g)
         return Spline(c, 0.0, float(c.n))
