@@ -337,12 +337,31 @@ class CubicSpline:
         return bspline_of(list(self.ctrl), list(self.h))
 
     # ---------------------------------------------------------------- queries
+    def _hulls(self) -> np.ndarray:
+        """``n x 4 x 2``: each span's control points (a span lies in their convex hull)."""
+        got = self.__dict__.get("_hull_cache")
+        if got is None:
+            C = np.asarray(self.ctrl, dtype=float)
+            idx = 3 * np.arange(self.n)[:, None] + np.arange(4)[None, :]
+            got = C[idx]
+            object.__setattr__(self, "_hull_cache", got)
+        return got
+
     def foot(self, p: Point, spans=None) -> float:
         """The position ``u`` of the point of the curve nearest to ``p``: on each span, the
-        roots of ``(B(t) - p) . B'(t)`` (degree 5) and the ends, the nearest kept."""
+        roots of ``(B(t) - p) . B'(t)`` (degree 5) and the ends, the nearest kept; spans whose
+        control box is farther than the best distance so far are skipped."""
         best, bu = math.inf, 0.0
         px, py = p
-        for i in (range(self.n) if spans is None else spans):
+        H = self._hulls()
+        lo, hi = H.min(axis=1), H.max(axis=1)
+        dx = np.maximum(0.0, np.maximum(lo[:, 0] - px, px - hi[:, 0]))
+        dy = np.maximum(0.0, np.maximum(lo[:, 1] - py, py - hi[:, 1]))
+        bound = np.hypot(dx, dy)                       # no point of span i is nearer
+        order = np.argsort(bound)
+        for i in (order.tolist() if spans is None else spans):
+            if spans is None and bound[i] ** 2 > best:     # sorted: no later span is nearer
+                break
             b = self.span(i)
             X, Y = _poly(b, 0), _poly(b, 1)
             X[-1] -= px
@@ -364,7 +383,10 @@ class CubicSpline:
         """Positions ``u`` where the curve meets the line through ``(px, py)`` with unit
         direction ``(ux, uy)`` (roots of a cubic per span, Newton-polished)."""
         out = []
-        for i in range(self.n):
+        H = self._hulls()
+        sd = ux * (H[:, :, 1] - py) - uy * (H[:, :, 0] - px)       # control points' sides
+        near = ~((sd > 0).all(axis=1) | (sd < 0).all(axis=1))
+        for i in np.flatnonzero(near).tolist():
             b = self.span(i)
             f = ux * _poly(b, 1) - uy * _poly(b, 0)
             f[-1] -= ux * py - uy * px
@@ -376,7 +398,14 @@ class CubicSpline:
     def cross_circle(self, cx, cy, r) -> list[float]:
         """Positions ``u`` where the curve meets the circle (roots of a sextic per span)."""
         out = []
-        for i in range(self.n):
+        H = self._hulls()
+        lo, hi = H.min(axis=1), H.max(axis=1)
+        dxn = np.maximum(0.0, np.maximum(lo[:, 0] - cx, cx - hi[:, 0]))
+        dyn = np.maximum(0.0, np.maximum(lo[:, 1] - cy, cy - hi[:, 1]))
+        far = np.hypot(np.maximum(np.abs(lo[:, 0] - cx), np.abs(hi[:, 0] - cx)),
+                       np.maximum(np.abs(lo[:, 1] - cy), np.abs(hi[:, 1] - cy)))
+        near = (np.hypot(dxn, dyn) <= r * (1 + 1e-9)) & (far >= r * (1 - 1e-9))
+        for i in np.flatnonzero(near).tolist():
             b = self.span(i)
             X, Y = _poly(b, 0), _poly(b, 1)
             X[-1] -= cx
