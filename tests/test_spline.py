@@ -671,3 +671,29 @@ def test_law_the_foot_is_the_nearest_point(x, y):
     dense = float(np.hypot(_DENSE[:, 0] - x, _DENSE[:, 1] - y).min())
     assert d <= dense + 1e-9
     assert dense - d <= 0.01          # the samples are at most ~2.5 um apart
+
+
+def test_a_closed_spline_that_crosses_itself_is_a_located_error(tmp_path):
+    src = ("units mm\nsolid s {\n    body = Spline(points=[(0, 0), (20, 15), (40, 0), (40, 15), "
+           "(20, 0), (0, 15)], closed=true)\n}\n")
+    errs = _diag(src, tmp_path)
+    assert [d.code for d in errs] == ["E0108"] and errs[0].span.line == 3
+    assert "crosses itself at (9.24204, 7.5)" in errs[0].message
+    from aidl_lang.geometry.spline import self_crossings
+    c = interpolate([(0, 0), (20, 15), (40, 0), (40, 15), (20, 0), (0, 15)], True)
+    cross = self_crossings(c)
+    assert len(cross) == 2                       # a pretzel: it crosses itself twice
+    for u, v in cross:                           # on its mirror line y = 7.5
+        assert _dist(c.at(u), c.at(v)) <= 1e-9 and abs(c.at(u)[1] - 7.5) <= 1e-9
+    assert self_crossings(interpolate(GUITAR, True)) == []
+
+
+def test_an_open_spline_returning_to_its_start_is_a_face(tmp_path):
+    src = ("units mm\nsolid s {\n    body = Spline(points=[(0, 0), (20, 15), (40, 0), "
+           "(20, -15), (0, 0)])\n}\n")
+    out = _output(src, tmp_path)
+    (lp,) = out.parts[0].loops
+    (s,) = lp.segments
+    c = interpolate([(0, 0), (20, 15), (40, 0), (20, -15), (0, 0)], False)
+    assert isinstance(s, Spline) and s.curve == c and lp.area > 0
+    assert abs(lp.area - abs(Loop([Spline(c, 0, c.n)]).area)) <= 1e-9

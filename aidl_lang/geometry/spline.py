@@ -442,6 +442,37 @@ class CubicSpline:
         return res
 
 
+def self_crossings(c: CubicSpline) -> list[tuple[float, float]]:
+    """``(u, v)``, ``u < v``: where curve ``c`` crosses itself (two spans that are not
+    neighbours, or neighbours away from their shared point): spans whose control boxes
+    overlap, halved until small, then 2-D Newton (:func:`newton2`)."""
+    H = c._hulls()
+    lo, hi = H.min(axis=1), H.max(axis=1)
+    over = ((lo[:, None, 0] <= hi[None, :, 0]) & (lo[None, :, 0] <= hi[:, None, 0])
+            & (lo[:, None, 1] <= hi[None, :, 1]) & (lo[None, :, 1] <= hi[:, None, 1]))
+    n = c.n
+    cand = []
+    for i, j in zip(*np.nonzero(np.triu(over, 1))):
+        i, j = int(i), int(j)
+        cand_ij: list = []
+        _cross_bez(c.span(i), c.span(j), 0.0, 1.0, 0.0, 1.0, i, j, cand_ij, 0)
+        cand += cand_ij
+    out: list = []
+    scale = max(1.0, float(np.abs(H).max()))
+    for u, v in cand:
+        u, v = newton2(c, c, u, v)
+        if c.closed:
+            u, v = u % n, v % n
+        u, v = min(u, v), max(u, v)
+        gap = v - u if not c.closed else min(v - u, n - (v - u))
+        p, q = c.at(u), c.at(v)
+        if gap < 1e-6 or math.hypot(p[0] - q[0], p[1] - q[1]) > 1e-7 * scale:
+            continue                 # the shared point of neighbours, or no crossing
+        if not any(abs(u - a) < 1e-7 and abs(v - b) < 1e-7 for a, b in out):
+            out.append((u, v))
+    return out
+
+
 def bspline_of(ctrl: list, h: list) -> tuple[int, list[float], list[Point]]:
     """The clamped degree-3 B-spline of Bézier spans ``ctrl`` (``3 n + 1`` points) with
     parameter steps ``h``: knots ``0 0 0 0 s1 s1 s1 ... sn sn sn sn`` (``s`` the running sum

@@ -225,7 +225,20 @@ class Renderer:
         k = g.kind
         if k == "Spline":
             seg = self.spline(g) if g.closed else None
-            return Loop([seg]) if seg is not None else None
+            if seg is None:
+                return None
+            from ..geometry.spline import self_crossings
+            cross = self_crossings(seg.curve)
+            if cross:
+                x, y = seg.curve.at(cross[0][0])
+                if not any(e[0] is g for e in self.shape_errors):
+                    self.shape_errors.append((g, (
+                        f"`{g.label}` crosses itself at ({x:g}, {y:g}) mm: a closed Spline "
+                        f"outline must not loop over itself (its inside would be ambiguous)"),
+                        "move or reorder the points so that the curve goes round once "
+                        "without crossing", "E0108"))
+                return None
+            return Loop([seg])
         if k == "Circle":
             r = abs(self.x[g.scalars["radius"].index])
             return Loop([Circle(self._pt(g.points["center"]), float(r))]) if r > 0 else None

@@ -211,7 +211,7 @@ class Provenance:
                 total = _sweep_sum(P, c, 0, n - 1)
                 if abs(abs(total) - 2 * math.pi) < 1e-6:
                     return Loop([Circle((c[1], c[2]), c[3], total > 0)])
-            if c is not None and c[0] == "S" and c[1].closed:
+            if c is not None and c[0] == "S":       # closed, or open with meeting ends
                 whole = Spline(c[1], 0.0, float(c[1].n))
                 if _shoelace(P) * whole.area_term < 0:
                     whole = Spline(c[1], float(c[1].n), 0.0)
