@@ -370,11 +370,15 @@ def _unreadable(name: str, e: Exception) -> Result:
 def exact_bbox(segments) -> tuple[float, float, float, float]:
     """``(x0, y0, x1, y1)`` of exact lines, arcs and circles (an arc's extreme points where
     it crosses an axis direction, not its chords); zeros when there are none."""
-    from .geometry.curves import Arc, Circle
+    from .geometry.curves import Arc, Circle, Spline
     xs: list[float] = []
     ys: list[float] = []
     for s in segments:
-        if isinstance(s, Circle):
+        if isinstance(s, Spline):
+            x0, y0, x1, y1 = s.box()
+            xs += (x0, x1)
+            ys += (y0, y1)
+        elif isinstance(s, Circle):
             (cx, cy), r = s.center, s.radius
             xs += (cx - r, cx + r)
             ys += (cy - r, cy + r)

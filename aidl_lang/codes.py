@@ -242,6 +242,24 @@ this is found then; the error points at the call. Use a smaller inset.
         inner = Offset(body, -12)     # 20 mm high: an inset of at most 10 mm leaves something
     }
 """),
+    "E0407": ("operation cannot stay exact on a spline", """
+A `Fillet` or `Chamfer` asked for a corner where a `Spline` meets another curve (a hole or a
+cut that crosses the spline, or a line the open spline is chained with). The rounding arc
+would have to be tangent to a cubic spline, and its end on the spline is no line, arc or
+spline piece that the exact outputs can write: AIDL refuses rather than write chords. The
+error points at the `Spline`. Choose the corners with `Fillet(r, at=[...])` away from the
+spline, or let the spline itself turn smoothly there (give it a point at the corner).
+(`Offset`, `Inset`, `Shell` and `Hull` of a Spline are refused at their call, E0108, and a
+cutting layout's kerf on a part with a spline is refused naming the Spline.)
+
+    solid pick {
+        body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)
+        hole notch {
+            c = Circle(center=(20, 0), radius=5)      # two corners on the spline
+        }
+        Fillet(1)
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the

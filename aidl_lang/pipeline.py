@@ -214,8 +214,9 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no numpy noise
             drawing = render_model(model, deadline)
-        for g, message, hint in drawing.shape_errors:
-            sink.add(Diagnostic("E0406", message, g.span, "error", hint=hint))
+        for g, message, hint, *code in drawing.shape_errors:
+            sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
+                                hint=hint))
         if shape_checks:
             check_drawing(drawing, sink, min_wall, deadline)
     except OutOfBudget as ex:

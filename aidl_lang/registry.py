@@ -102,6 +102,7 @@ ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoin
                    "radius": "length", "width": "length", "inner_radius": "length",
                    "outer_radius": "length", "bb": "bbox"}
 DERIVED_MEMBERS = {"bb": "bbox"}
+SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",
                 "center": "point", "center_x": "coordinate", "center_y": "coordinate",
@@ -176,6 +177,9 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
+    "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
+                 doc="A smooth curve through the points; closed=true: an outline.",
+                 members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
                          [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
@@ -387,6 +391,13 @@ SYNONYMS: dict[str, str] = {
     "OverlapOK": "AllowOverlap",
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
+    "BSpline": "Spline",
+    "Interpolate": "Spline",
+    "InterpolatedCurve": "Spline",
+    "SmoothCurve": "Spline",
+    "Curve": "Spline",
+    "FitSpline": "Spline",
+    "CubicSpline": "Spline",
 }
 
 # Offset's and Inset's argument synonyms (Shell's too, with thickness for distance)
@@ -430,6 +441,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
               "delta": "thickness", "r": "thickness", "radius": "thickness", "wall": "thickness",
               "t": "thickness", "width": "thickness", "distance": "thickness",
               "wall_thickness": "thickness"},
+    "Spline": {"through": "points", "pts": "points", "vertices": "points",
+               "fit_points": "points", "through_points": "points", "periodic": "closed",
+               "cyclic": "closed", "is_closed": "closed", "loop": "closed"},
     "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",

@@ -56,8 +56,12 @@ HALLUCINATIONS = {
     "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
     "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",
     "Polyline": "write `Polygon(points=[...])` for a closed outline, or Lines that share endpoints",
-    "Spline": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
-    "Bezier": "there are no splines: chain Arcs and Lines that share endpoints into a closed outline",
+    "Bezier": "there are no Bézier control points: `Spline(points=[...], closed=true)` is a "
+              "smooth curve THROUGH its points (exact cubic Béziers in SVG, SPLINE in DXF)",
+    "BezierCurve": "there are no Bézier control points: `Spline(points=[...], closed=true)` is "
+                   "a smooth curve THROUGH its points",
+    "NURBS": "write `Spline(points=[...])`: a smooth curve through its points (no weights or "
+             "control points)",
     "Ring": "a ring is `Shell(Circle(...), thickness)`, or a Circle in a solid with a smaller Circle in a `hole` child (add `Concentric`)",
     "Extrude": _TWO_D,
     "Cylinder": _TWO_D,

@@ -7,7 +7,9 @@ independent libraries (ezdxf for DXF, svgelements for SVG) and turned into plain
 * :class:`L` -- a straight segment from ``start`` to ``end``;
 * :class:`A` -- a circular arc from ``start`` to ``end`` about ``center`` with ``radius``,
   sweeping ``sweep`` radians (> 0 counter-clockwise);
-* :class:`C` -- a full circle (a loop on its own).
+* :class:`C` -- a full circle (a loop on its own);
+* :class:`B` -- a cubic Bézier span (a spline's piece: SVG ``C``, a DXF ``SPLINE`` cut into its
+  Bézier pieces by ezdxf).
 
 :func:`loop_defects` then lists, in words, everything that keeps a loop from being exact:
 gaps, zero-length segments, kinks at joins that should be tangent, radii that nobody asked for.
@@ -87,6 +89,48 @@ class C:
 
     def __str__(self):
         return f"CIRCLE center {_p(self.center)} r {self.radius:.12g}"
+
+
+@dataclass(frozen=True)
+class B:
+    p0: tuple
+    p1: tuple
+    p2: tuple
+    p3: tuple
+
+    @property
+    def start(self):
+        return self.p0
+
+    @property
+    def end(self):
+        return self.p3
+
+    def at(self, t: float):
+        s = 1 - t
+        c = (s ** 3, 3 * s * s * t, 3 * s * t * t, t ** 3)
+        P = (self.p0, self.p1, self.p2, self.p3)
+        return (sum(k * p[0] for k, p in zip(c, P)), sum(k * p[1] for k, p in zip(c, P)))
+
+    @property
+    def length(self) -> float:
+        pts = [self.at(i / 64) for i in range(65)]
+        return sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+
+    def tangent_at_start(self):
+        for q in (self.p1, self.p2, self.p3):
+            if math.dist(q, self.p0) > 0:
+                return _unit(q[0] - self.p0[0], q[1] - self.p0[1])
+        return (0.0, 0.0)
+
+    def tangent_at_end(self):
+        for q in (self.p2, self.p1, self.p0):
+            if math.dist(q, self.p3) > 0:
+                return _unit(self.p3[0] - q[0], self.p3[1] - q[1])
+        return (0.0, 0.0)
+
+    def __str__(self):
+        return f"BEZIER {_p(self.p0)} {_p(self.p1)} {_p(self.p2)} {_p(self.p3)}"
 
 
 def _unit(x, y):
@@ -182,6 +226,13 @@ def read_dxf(path) -> list[Entity]:
                 segs.append(arc_from_bulge((x0, y0), (x1, y1), b) if b else L((x0, y0), (x1, y1)))
             segs = merge_cocircular(segs, DXF_TOL) if e.closed else segs
             out.append(Entity(t, layer, bool(e.closed), segs, n))
+        elif t == "SPLINE":
+            from ezdxf.math import BSpline
+            bs = BSpline([tuple(v)[:2] for v in e.control_points], order=e.dxf.degree + 1,
+                         knots=list(e.knots))
+            segs = [B(*(tuple(p)[:2] for p in piece)) for piece in bs.bezier_decomposition()]
+            closed = bool(segs) and math.dist(segs[0].start, segs[-1].end) <= DXF_TOL
+            out.append(Entity(t, layer, closed, segs))
         else:
             out.append(Entity(t, layer, False, []))
     return out
@@ -232,6 +283,8 @@ def read_svg_loops(path, group: str = "cut") -> list[list]:
                 elif isinstance(s, se.Arc):
                     assert abs(s.rx - s.ry) <= SVG_TOL, f"elliptical arc rx {s.rx} ry {s.ry}"
                     segs.append(A(p, q, model(s.center), (s.rx + s.ry) / 2, -s.sweep))
+                elif isinstance(s, se.CubicBezier):
+                    segs.append(B(p, model(s.control1), model(s.control2), q))
                 else:
                     raise AssertionError(f"unexpected SVG segment {type(s).__name__}: {s}")
             if segs:

@@ -190,6 +190,13 @@ solid s {
     body = Rectangle(center=(0, 0), width=40, height=20)
     inner = Offset(body, -12)
 }""", (3, 13, 3, 30)),
+    ("E0407", """solid s {
+    body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)
+    hole notch {
+        c = Circle(center=(20, 0), radius=5)
+    }
+    Fillet(1)
+}""", (2, 12, 2, 78)),
 ]
 
 

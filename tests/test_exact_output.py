@@ -389,7 +389,7 @@ def test_example_dxf_loops_are_exact(example_files, path):
     dxf, _, radii = example_files[path.stem]
     problems = []
     for k, e in enumerate(read_dxf(dxf)):
-        if e.dxftype in ("LWPOLYLINE", "LINE", "ARC"):
+        if e.dxftype in ("LWPOLYLINE", "LINE", "ARC", "SPLINE"):
             d = loop_defects(e.segments, closed=e.closed, tangent="auto",
                              radii=radii if e.layer.startswith("CUT") else None)
         else:

@@ -228,6 +228,22 @@ def _entity_area(e):
     """Area of a CIRCLE or a closed LWPOLYLINE with bulges, from the DXF data alone."""
     if e.dxftype() == "CIRCLE":
         return math.pi * e.dxf.radius ** 2
+    if e.dxftype() == "SPLINE":          # a closed spline: its Bézier pieces (ezdxf), exactly
+        from ezdxf.math import BSpline
+        bs = BSpline([tuple(v)[:2] for v in e.control_points], order=e.dxf.degree + 1,
+                     knots=list(e.knots))
+        a = 0.0
+        gx, gw = np.polynomial.legendre.leggauss(4)     # x y' - y x': degree 5, exact
+        for piece in bs.bezier_decomposition():
+            P = np.array([tuple(q)[:2] for q in piece], dtype=float)
+            for x, w in zip(gx, gw):
+                t = 0.5 * (x + 1)
+                B = np.array([(1 - t) ** 3, 3 * (1 - t) ** 2 * t, 3 * (1 - t) * t * t, t ** 3])
+                D = 3 * np.array([-(1 - t) ** 2, (1 - t) ** 2 - 2 * (1 - t) * t,
+                                  2 * (1 - t) * t - t * t, t * t])
+                (px, py), (dx, dy) = B @ P, D @ P
+                a += 0.25 * w * (px * dy - py * dx)
+        return a
     pts = list(e.get_points("xyb"))
     a = 0.0
     for (x0, y0, b), (x1, y1, _) in zip(pts, pts[1:] + pts[:1]):
@@ -259,7 +275,7 @@ def _svg_loops(svg_text):
             for seg in sub:
                 if isinstance(seg, se.Line):
                     pts.append((seg.start.x, seg.start.y))
-                elif isinstance(seg, se.Arc):
+                elif isinstance(seg, (se.Arc, se.CubicBezier)):
                     pts += [tuple(q) for q in seg.npoint(np.linspace(0, 1, 513))[:-1]]
             if len(pts) >= 3:
                 out.append(np.array(pts, dtype=float))

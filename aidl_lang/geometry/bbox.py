@@ -245,6 +245,9 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         xs += [cx - ex, cx + ex]
         ys += [cy - ey, cy + ey]
         return
+    if k == "Spline":
+        _spline_candidates(g, P, x, xs, ys)
+        return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
@@ -256,6 +259,43 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
             continue
         xs.append(px)
         ys.append(py)
+
+
+def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
+    """A spline's extreme points: its points, and where a span's x (or y) turns, as the
+    affine combination of the points that gives that point of the curve.  The weights are
+    taken at the values ``x`` (the chord lengths and turning parameters there): exact for a
+    rigid spline (literal points move together), a first-order model of a flexible one."""
+    import numpy as np
+    from .spline import _steps, bez_extremes, interpolation_matrix
+    names = g.data["order"]
+    pts = [g.points[n] for n in names]
+    V = np.array([(float(x[p.ix]), float(x[p.iy])) for p in pts])
+    closed = g.data.get("closed", False)
+    for n in names:
+        px, py = P[n]
+        xs.append(px)
+        ys.append(py)
+    h = _steps(V, closed)
+    if len(V) < (3 if closed else 2) or not (h > 0).all():
+        return
+    W = interpolation_matrix(h, closed)
+    C = W @ V
+    for i in range(len(h)):
+        b = tuple(tuple(C[3 * i + k]) for k in range(4))
+        for axis, ts in enumerate(bez_extremes(b)):
+            for t in ts:
+                s_ = 1.0 - t
+                bern = np.array([s_ ** 3, 3 * s_ * s_ * t, 3 * s_ * t * t, t ** 3])
+                w = bern @ W[3 * i:3 * i + 4]
+                terms: dict = {}
+                const = 0.0
+                for wj, n in zip(w.tolist(), names):
+                    e = P[n][axis]
+                    for kk, vv in e.terms.items():
+                        terms[kk] = terms.get(kk, 0.0) + wj * vv
+                    const += wj * e.const
+                (xs if axis == 0 else ys).append(Lin(terms, const))
 
 
 def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, float, float] | None:

@@ -11,7 +11,9 @@ y up.
 Carriers are tuples, compared and intersected without building objects:
 
 * ``("L", px, py, ux, uy)``: the line through ``(px, py)`` with unit direction ``(ux, uy)``;
-* ``("C", cx, cy, r)``: the circle of center ``(cx, cy)`` and radius ``r > 0``.
+* ``("C", cx, cy, r)``: the circle of center ``(cx, cy)`` and radius ``r > 0``;
+* ``("S", curve)``: a whole :class:`~.spline.CubicSpline` (a :class:`Spline` segment is a piece
+  of one, between two positions on it).
 
 Where two carriers meet, :func:`intersect` gives the meeting point nearest to a guess; where
 they touch (a tangent join: a slot's side and its end, a fillet and its edges) or come within
@@ -91,7 +93,80 @@ class Circle:
         return 2 * math.pi * self.radius
 
 
-Segment = Line | Arc | Circle
+@dataclass(frozen=True)
+class Spline:
+    """The piece of an interpolating cubic spline ``curve`` (:class:`~.spline.CubicSpline`)
+    from position ``u0`` to ``u1`` (``u1 < u0``: run backwards; a closed curve wraps, so
+    ``|u1 - u0|`` may be its whole ``n``).  Its exact form is :attr:`spans`: cubic Béziers
+    cut from the curve's spans by de Casteljau at ``u0`` and ``u1``."""
+    curve: object
+    u0: float
+    u1: float
+
+    @property
+    def spans(self) -> list:
+        got = self.__dict__.get("_spans")
+        if got is None:
+            got = self.curve.spans_between(self.u0, self.u1)
+            object.__setattr__(self, "_spans", got)
+        return got
+
+    @property
+    def start(self) -> Point:
+        return self.spans[0][0] if self.spans else self.curve.at(self.u0)
+
+    @property
+    def end(self) -> Point:
+        return self.spans[-1][3] if self.spans else self.curve.at(self.u1)
+
+    @property
+    def whole(self) -> bool:
+        """The whole of a closed curve (a loop of its own, like a :class:`Circle`)."""
+        return self.curve.closed and abs(abs(self.u1 - self.u0) - self.curve.n) < 1e-12
+
+    @property
+    def length(self) -> float:
+        from .spline import bez_length
+        return sum(bez_length(b) for b in self.spans)
+
+    @property
+    def area_term(self) -> float:
+        """``1/2 * integral of (x dy - y dx)`` along the piece (mm^2)."""
+        from .spline import bez_area
+        return sum(bez_area(b) for b in self.spans)
+
+    def box(self) -> tuple[float, float, float, float]:
+        """Exact ``(x0, y0, x1, y1)`` of the piece (its spans' derivative roots)."""
+        from .spline import bez_box
+        bs = [bez_box(b) for b in self.spans]
+        return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+                max(b[3] for b in bs))
+
+    def bspline(self):
+        """``(3, knots, control points)`` of the piece (clamped, triple interior knots;
+        knot steps: each span's share of its curve's parameter step)."""
+        from .spline import bspline_of
+        ctrl = [self.spans[0][0]] if self.spans else []
+        for b in self.spans:
+            ctrl += [b[1], b[2], b[3]]
+        return bspline_of(ctrl, _span_steps(self))
+
+
+def _span_steps(s: "Spline") -> list[float]:
+    """The parameter step (mm) of each span of ``s.spans``."""
+    c = s.curve
+    lo, hi = min(s.u0, s.u1), max(s.u0, s.u1)
+    out = []
+    i = math.floor(lo)
+    while i < hi:
+        t0, t1 = max(lo - i, 0.0), min(hi - i, 1.0)
+        if t1 > t0:
+            out.append(c.h[i % c.n] * (t1 - t0))
+        i += 1
+    return out if s.u1 >= s.u0 else out[::-1]
+
+
+Segment = Line | Arc | Circle | Spline
 
 
 @dataclass
@@ -108,6 +183,9 @@ class Loop:
             return (1 if c.ccw else -1) * math.pi * c.radius ** 2
         a = 0.0
         for s in self.segments:
+            if isinstance(s, Spline):
+                a += s.area_term
+                continue
             (x0, y0), (x1, y1) = s.start, s.end
             a += 0.5 * (x0 * y1 - x1 * y0)
             if isinstance(s, Arc):
@@ -146,6 +224,8 @@ def sample_xy(segments, xs: list, ys: list) -> None:
         if isinstance(s, Line):
             xs.append(s.start[0])
             ys.append(s.start[1])
+        elif isinstance(s, Spline):
+            spline_xy(s, xs, ys)
         elif isinstance(s, Arc):
             cx, cy = s.center
             r, a0, sw = s.radius, s.start_angle, s.sweep
@@ -163,11 +243,33 @@ def sample_xy(segments, xs: list, ys: list) -> None:
             ys += [cy + r * sin(a) for a in angles]
 
 
+def spline_xy(s: Spline, xs: list, ys: list) -> None:
+    """Append the chord starts of :class:`Spline` ``s`` (each span cut into
+    :func:`~.spline.bez_pieces` chords within ``CHORD_TOL``) to ``xs`` and ``ys``."""
+    from .spline import bez_at, bez_pieces
+    from .tessellate import CHORD_TOL
+    for b in s.spans:
+        k = bez_pieces(b, CHORD_TOL)
+        for i in range(k):
+            x, y = bez_at(b, i / k) if i else b[0]
+            xs.append(x)
+            ys.append(y)
+
+
+def spline_chords(s: Spline) -> int:
+    """How many chords :func:`spline_xy` cuts ``s`` into."""
+    from .spline import bez_pieces
+    from .tessellate import CHORD_TOL
+    return sum(bez_pieces(b, CHORD_TOL) for b in s.spans)
+
+
 # ------------------------------------------------------------------ segments
 def reverse(s: Segment) -> Segment:
     """The same segment run the other way."""
     if isinstance(s, Line):
         return Line(s.end, s.start)
+    if isinstance(s, Spline):
+        return Spline(s.curve, s.u1, s.u0)
     if isinstance(s, Arc):
         return Arc(s.center, s.radius, s.start_angle + s.sweep, -s.sweep)
     return Circle(s.center, s.radius, not s.ccw)
@@ -181,6 +283,8 @@ def carrier(s: Segment) -> tuple:
         if L == 0.0:
             return ("L", x0, y0, 1.0, 0.0)
         return ("L", x0, y0, (x1 - x0) / L, (y1 - y0) / L)
+    if isinstance(s, Spline):
+        return ("S", s.curve)
     return ("C", float(s.center[0]), float(s.center[1]), float(s.radius))
 
 
@@ -190,6 +294,9 @@ def tangent_at(s: Segment, end: bool) -> Point:
         (x0, y0), (x1, y1) = s.start, s.end
         L = math.hypot(x1 - x0, y1 - y0) or 1.0
         return ((x1 - x0) / L, (y1 - y0) / L)
+    if isinstance(s, Spline):
+        dx, dy = s.curve.tangent(s.u1 if end else s.u0)
+        return (dx, dy) if s.u1 >= s.u0 else (-dx, -dy)
     a = s.end_angle if end else s.start_angle
     sg = 1.0 if s.sweep > 0 else -1.0
     return (-sg * math.sin(a), sg * math.cos(a))
@@ -208,6 +315,8 @@ def with_ends(s: Segment, p: Point, q: Point) -> Segment:
     (``p`` = ``q`` is no arc, not a whole turn)."""
     if isinstance(s, Line):
         return Line(p, q)
+    if isinstance(s, Spline):
+        return spline_between(s, p, q)
     cx, cy = s.center
     a1 = math.atan2(p[1] - cy, p[0] - cx)
     a2 = math.atan2(q[1] - cy, q[0] - cx)
@@ -226,7 +335,8 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
     ``scale``), with consecutive segments on one carrier merged (two quarter arcs of one
     circle become a semicircle), and a chain that is one whole circle as a :class:`Circle`."""
     tol = tolerance(scale)
-    segs = [s for s in segments if isinstance(s, Circle) or s.length > tol]
+    segs = [s for s in segments if isinstance(s, Circle) or s.length > tol
+            or (isinstance(s, Spline) and s.whole)]
     changed = True
     while changed and len(segs) > 1:
         changed = False
@@ -234,6 +344,7 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
             a, b = segs[i - 1], segs[i]
             if _mergeable(a, b, tol):
                 m = Line(a.start, b.end) if isinstance(a, Line) else \
+                    Spline(a.curve, a.u0, a.u1 + (b.u1 - b.u0)) if isinstance(a, Spline) else \
                     Arc(a.center, a.radius, a.start_angle, a.sweep + b.sweep)
                 if i == 0:
                     segs = [m] + segs[1:-1]
@@ -248,6 +359,11 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
 
 
 def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
+    if isinstance(a, Spline) and isinstance(b, Spline):
+        n = a.curve.n
+        return a.curve == b.curve and (a.u1 >= a.u0) == (b.u1 >= b.u0) and \
+            abs(a.u1 - a.u0) + abs(b.u1 - b.u0) <= n + 1e-12 and \
+            (abs(a.u1 - b.u0) < 1e-12 or (a.curve.closed and abs(abs(a.u1 - b.u0) - n) < 1e-12))
     if isinstance(a, Line) and isinstance(b, Line):
         return abs(turn_between(a, b)) < 1e-12 and same_carrier(carrier(a), carrier(b), tol)
     if isinstance(a, Arc) and isinstance(b, Arc):
@@ -261,6 +377,8 @@ def same_carrier(a: tuple, b: tuple, tol: float = EPS) -> bool:
     """True when two carriers are the same line or circle (within ``tol`` mm)."""
     if a[0] != b[0]:
         return False
+    if a[0] == "S":
+        return a[1] == b[1]
     if a[0] == "C":
         return math.hypot(a[1] - b[1], a[2] - b[2]) <= tol and abs(a[3] - b[3]) <= tol
     _, px, py, ux, uy = a
@@ -272,6 +390,8 @@ def same_carrier(a: tuple, b: tuple, tol: float = EPS) -> bool:
 
 def distance_to(c: tuple, p: Point) -> float:
     """Distance (mm) from point ``p`` to carrier ``c``."""
+    if c[0] == "S":
+        return c[1].distance(p)
     if c[0] == "L":
         _, px, py, ux, uy = c
         return abs(ux * (p[1] - py) - uy * (p[0] - px))
@@ -281,6 +401,8 @@ def distance_to(c: tuple, p: Point) -> float:
 
 def foot(c: tuple, p: Point) -> Point:
     """The point of carrier ``c`` nearest to ``p``."""
+    if c[0] == "S":
+        return c[1].at(c[1].foot(p))
     if c[0] == "L":
         _, px, py, ux, uy = c
         t = (p[0] - px) * ux + (p[1] - py) * uy
@@ -295,7 +417,10 @@ def foot(c: tuple, p: Point) -> Point:
 
 def crossings(a: tuple, b: tuple) -> list[Point]:
     """Every point where carriers ``a`` and ``b`` meet: two, one (lines crossing, or a touch
-    within :data:`TANGENT`) or none (parallel lines, circles apart)."""
+    within :data:`TANGENT`) or none (parallel lines, circles apart); a spline's crossings
+    are roots of its spans' polynomials, polished by Newton (:mod:`.spline`)."""
+    if a[0] == "S" or b[0] == "S":
+        return _spline_crossings(a, b)
     if a[0] == "L" and b[0] == "L":
         return _line_line(a, b)
     if a[0] == "L":
@@ -316,7 +441,38 @@ def intersect(a: tuple, b: tuple, near: Point) -> Point:
     return min(pts, key=lambda q: math.hypot(q[0] - near[0], q[1] - near[1]))
 
 
+def _spline_crossings(a, b) -> list[Point]:
+    if a[0] != "S":
+        a, b = b, a
+    c = a[1]
+    if b[0] == "L":
+        return [c.at(u) for u in c.cross_line(*b[1:])]
+    if b[0] == "C":
+        return [c.at(u) for u in c.cross_circle(*b[1:])]
+    if b[1] == c:
+        return []
+    return [c.at(u) for u, _ in c.cross_spline(b[1])]
+
+
+def spline_between(s: Spline, p: Point, q: Point) -> Spline:
+    """The piece of ``s``'s curve from its point nearest ``p`` to the one nearest ``q``, run
+    in ``s``'s direction (a closed curve wraps forward or backward as ``s`` does)."""
+    c = s.curve
+    up, uq = c.foot(p), c.foot(q)
+    if s.u1 >= s.u0:
+        if c.closed:
+            while uq < up:
+                uq += c.n
+        return Spline(c, up, uq)
+    if c.closed:
+        while uq > up:
+            uq -= c.n
+    return Spline(c, up, uq)
+
+
 def _closest(a, b, near):
+    if a[0] == "S" or b[0] == "S":
+        return foot(a, near)
     if a[0] == "C" and b[0] == "C" and math.hypot(a[1] - b[1], a[2] - b[2]) > 1e-15:
         return foot(a, (b[1], b[2])) if math.hypot(a[1] - b[1], a[2] - b[2]) > a[3] else \
             foot(a, (2 * a[1] - b[1], 2 * a[2] - b[2]))

@@ -24,14 +24,16 @@ from __future__ import annotations
 
 import math
 
-from .curves import (Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
+from .curves import (Spline, Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 
 TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent join
 
 
 class OffsetError(ValueError):
-    """The loop cannot be offset by this distance; the message says where and why."""
+    """The loop cannot be offset by this distance; the message says where and why.
+    ``curve``: the :class:`~.spline.CubicSpline` that cannot be offset exactly, else None."""
+    curve = None
 
 
 def _right(s: Segment, d: float) -> Segment:
@@ -69,6 +71,13 @@ def offset_loop(loop: Loop, d: float) -> Loop:
     """``loop`` offset ``d`` mm (>= 0) to the right of its direction of travel: outward for
     an outer (counter-clockwise) loop, into the hole for a hole (see the module text).
     Raises :class:`OffsetError` where a feature is too small for the offset."""
+    for g in loop.segments:
+        if isinstance(g, Spline):
+            e = OffsetError(f"the spline through ({g.start[0]:g}, {g.start[1]:g}) cannot be "
+                            f"offset exactly (the offset of a cubic spline is no cubic "
+                            f"spline, and chords are not written)")
+            e.curve = g.curve
+            raise e
     segs = loop.segments
     if d == 0 or not segs:
         return loop

@@ -493,6 +493,18 @@ def _corner_points(ctx, v, S, kind: str) -> list:
                          f"a polygonal shape, or a list of these; got {_kind(v)}")
 
 
+class SplineCorner(ValueError):
+    """A Fillet or Chamfer asked for a corner where a spline meets another curve: the
+    rounding arc would have to be tangent to a cubic spline, which no line, arc or spline
+    piece of the exact output model is; ``curve``: the spline's
+    :class:`~.spline.CubicSpline`, ``hint``: what to do."""
+
+    def __init__(self, message: str, curve, hint: str):
+        super().__init__(message)
+        self.curve = curve
+        self.hint = hint
+
+
 def finish(s: Structure, loops: list, x=None) -> list:
     """Apply the structure's Fillet/Chamfer operations, in order, to its exact outline
     ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
@@ -516,7 +528,7 @@ def corners(loop, size: float, fillet: bool, only=None):
     a segment is too short for both of its corners the fillet radius (or chamfer leg)
     shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
     exact (:mod:`.curves`)."""
-    from .curves import Circle, Line, Loop, simplify, turn_between, with_ends
+    from .curves import Arc, Circle, Line, Loop, Spline, simplify, turn_between, with_ends
     segs = loop.segments
     n = len(segs)
     if n < 2 or any(isinstance(g, Circle) for g in segs):
@@ -530,6 +542,17 @@ def corners(loop, size: float, fillet: bool, only=None):
                                      for qx, qy in only)
         if abs(turn) <= CORNER_TURN or not chosen or (not fillet and turn < 0):
             continue
+        sp = next((g for g in (a, b) if isinstance(g, Spline)), None)
+        if sp is not None:
+            what = "Fillet" if fillet else "Chamfer"
+            raise SplineCorner(
+                f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where a Spline "
+                f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
+                f"on the spline at a point the exact output cannot place, and the result would "
+                f"be chords", sp.curve,
+                f"choose corners away from the spline with `{what}(..., at=[...])`, or make "
+                f"the corner part of the spline (a point of it placed there, so the curve "
+                f"itself turns smoothly)")
         cut[k] = _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
     if not any(cut):
         return loop
@@ -543,7 +566,7 @@ def corners(loop, size: float, fillet: bool, only=None):
         end = nxt[0] if nxt is not None else g.end
         out.append(with_ends(g, start, end) if (start, end) != (g.start, g.end) else g)
     scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
-    return Loop(simplify([g for g in out if isinstance(g, Line) or g.sweep != 0], scale))
+    return Loop(simplify([g for g in out if not isinstance(g, Arc) or g.sweep != 0], scale))
 
 
 def _offset(g, d: float):

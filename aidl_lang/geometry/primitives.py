@@ -445,6 +445,28 @@ def _build_Polygon(ctx, g, a):
     g.closed = True
 
 
+def _build_Spline(ctx, g, a):
+    from .spline import SplineError, check_points
+    pts_in = a["points"]
+    closed = bool(a.get("closed", False))
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
+    except (AttributeError, TypeError):
+        xy = None
+    try:
+        check_points(xy if xy is not None else [(0.0, float(i)) for i in range(len(pts_in))],
+                     closed)
+    except SplineError as ex:
+        raise PrimitiveError(str(ex)) from None
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    g.data["closed"] = closed
+    g.closed = closed
+
+
 def _check_polygon_points(ctx, pts) -> None:
     """Starting points: no two consecutive ones equal (a zero-length edge), not all on one
     line (no area)."""
@@ -555,6 +577,11 @@ def _source(v, what: str) -> Geometry:
         raise PrimitiveError(f"{what} takes shapes (a Circle, Rectangle, Polygon, Slot, ...), "
                              f"got {type_name(v)}")
     g = v.geom
+    if g.kind == "Spline":
+        raise PrimitiveError(f"{what} of a Spline cannot be exact: the offset (or hull) of a "
+                             f"cubic spline is not a cubic spline, and outputs here are exact "
+                             f"or refused; draw the grown outline as a second Spline through "
+                             f"offset points, or offset a Polygon or arcs instead")
     if not g.closed or g.kind == "Text":
         raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
                              f"Slot, ...), not a {g.kind}")
@@ -716,7 +743,8 @@ def points_of(g: Geometry) -> list:
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star") and name.startswith("p")
+    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline")
+                                 and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
     own = g.owner.owner_set()
@@ -811,6 +839,14 @@ def member(g: Geometry, name: str, frame):
             sx = sum((p.x for p in pvs[1:]), pvs[0].x) * (1.0 / n)
             sy = sum((p.y for p in pvs[1:]), pvs[0].y) * (1.0 / n)
             return PV(sx, sy, None, own)
+    if k == "Spline":
+        pts = points_of(g)
+        if name in ("points", "vertices", "through"):
+            return [_pv(p, frame) for p in pts]
+        if name == "start":
+            return _pv(pts[0], frame)
+        if name == "end":
+            return _pv(pts[-1 if not g.closed else 0], frame)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
     if k == "Text" and name == "center":          # the middle of the strokes' box

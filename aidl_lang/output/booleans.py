@@ -23,11 +23,11 @@ from dataclasses import dataclass, field
 import manifold3d as mf
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, Line, Loop, carrier, reverse, simplify
+from ..geometry.curves import Arc, Circle, Line, Loop, Spline, carrier, reverse, simplify
 from ..geometry.model import Geometry, Model, Structure
 from ..geometry.hull import hull_loop
 from ..geometry.offset import offset_pieces
-from ..geometry.operations import finish
+from ..geometry.operations import SplineCorner, finish
 from ..geometry.tessellate import segments_for
 from ..geometry.text import text_strokes
 from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
@@ -85,8 +85,11 @@ class Drawing:
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
-    # [(geometry, message, hint)]: an Offset or Shell that leaves nothing (E0406)
+    # [(geometry, message, hint[, code])]: an Offset or Shell that leaves nothing (E0406), a
+    # Fillet or Chamfer at a spline's corner (E0407)
     shape_errors = ()
+    # CubicSpline -> the Spline geometry it was drawn from (located refusals after the solve)
+    spline_source = {}
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:
@@ -128,8 +131,10 @@ class Renderer:
         self.current: Structure | None = None       # the structure being built (E0304)
         # shapes made from other shapes (Offset, Shell): their CrossSection, once each
         self.derived: dict = {}
-        # (geometry, message, hint) of Offset/Shell/Hull results that cannot be made (E0406)
+        # (geometry, message, hint[, code]) of Offset/Shell/Hull results that cannot be made
+        # (E0406) and operations that cannot stay exact on a spline (E0407)
         self.shape_errors: list = []
+        self.spline_source: dict = {}        # CubicSpline -> the Spline geometry drawn as it
 
     def tick(self, s: Structure | None = None, faces=()) -> None:
         """Look at the deadline before a step; ``faces``: the Manifold shapes one
@@ -172,9 +177,28 @@ class Renderer:
         return (float(q[0]), float(q[1]))
 
     # -------------------------------------------------------- exact outlines
+    def spline(self, g: Geometry) -> Spline | None:
+        """The exact :class:`Spline` segment of a ``Spline`` geometry at the solved points:
+        the whole curve (closed or open); None when the solved points give no spline (two
+        consecutive ones moved onto each other)."""
+        from ..geometry.spline import SplineError, interpolate
+        from ..geometry.primitives import points_of
+        try:
+            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")))
+        except SplineError as ex:
+            if not any(e[0] is g for e in self.shape_errors):     # said once, at the call
+                self.shape_errors.append((g, f"`{g.label}` after the solve: {ex}",
+                                          "a constraint moved the points onto each other: "
+                                          "keep consecutive points apart", "E0108"))
+            return None
+        self.spline_source.setdefault(c, g)
+        return Spline(c, 0.0, float(c.n))
+
     def segment(self, g: Geometry):
-        """The exact segment of an open curve (a Line, or an Arc counter-clockwise from its
-        start to its end point on the circle through its start)."""
+        """The exact segment of an open curve (a Line, an open Spline, or an Arc
+        counter-clockwise from its start to its end point on the circle through its start)."""
+        if g.kind == "Spline":
+            return self.spline(g)
         if g.kind == "Line":
             return Line(self._pt(g.points["start"]), self._pt(g.points["end"]))
         c, s, e = (self._pt(g.points[n]) for n in ("center", "start", "end"))
@@ -189,6 +213,8 @@ class Renderer:
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line or Arc), from start to end."""
         seg = self.segment(g)
+        if seg is None:
+            return np.zeros((0, 2))
         if isinstance(seg, Line):
             return np.array([seg.start, seg.end])
         pts = Loop([seg]).points()
@@ -197,6 +223,22 @@ class Renderer:
     def outline(self, g: Geometry) -> Loop | None:
         """The exact closed outline of a shape (any orientation), or None when it has none."""
         k = g.kind
+        if k == "Spline":
+            seg = self.spline(g) if g.closed else None
+            if seg is None:
+                return None
+            from ..geometry.spline import self_crossings
+            cross = self_crossings(seg.curve)
+            if cross:
+                x, y = seg.curve.at(cross[0][0])
+                if not any(e[0] is g for e in self.shape_errors):
+                    self.shape_errors.append((g, (
+                        f"`{g.label}` crosses itself at ({x:g}, {y:g}) mm: a closed Spline "
+                        f"outline must not loop over itself (its inside would be ambiguous)"),
+                        "move or reorder the points so that the curve goes round once "
+                        "without crossing", "E0108"))
+                return None
+            return Loop([seg])
         if k == "Circle":
             r = abs(self.x[g.scalars["radius"].index])
             return Loop([Circle(self._pt(g.points["center"]), float(r))]) if r > 0 else None
@@ -327,7 +369,7 @@ class Renderer:
             if s.kind == "drawing":
                 self.draw_lines(g, out)
                 continue
-            if g.kind in ("Line", "Arc"):
+            if g.kind in ("Line", "Arc") or (g.kind == "Spline" and not g.closed):
                 open_curves.append(g)
             elif g.kind == "Text":
                 self.draw_lines(g, out)
@@ -360,7 +402,11 @@ class Renderer:
         :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
         segs = [self.segment(g) for g in curves]
-        ends = [(self._pt(g.points["start"]), self._pt(g.points["end"])) for g in curves]
+        keep = [i for i, sg in enumerate(segs) if sg is not None]
+        curves, segs = [curves[i] for i in keep], [segs[i] for i in keep]
+        ends = [(sg.start, sg.end) if g.kind == "Spline" else
+                (self._pt(g.points["start"]), self._pt(g.points["end"]))
+                for g, sg in zip(curves, segs)]
         grid: dict = {}
         for j, (a, b) in enumerate(ends):
             for p in (a, b):
@@ -406,15 +452,21 @@ class Renderer:
                     grown = True
                     break
             closed = _dist(end, start) <= _tol(start)
-            if closed and (len(chain) >= 2 or isinstance(run[0], Arc)):
+            if closed and (len(chain) >= 2 or isinstance(run[0], (Arc, Spline))):
                 loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:
                 rest += [curves[j] for j in chain]
         return loops, rest
 
     def stroke(self, g: Geometry, style: str, out: Drawing) -> None:
-        """The exact engraving stroke of a Line or Arc."""
+        """The exact engraving stroke of a Line, Arc or Spline."""
         seg = self.segment(g)
+        if seg is None:
+            return
+        if isinstance(seg, Spline):
+            self.exact.carrier_id(carrier(seg))
+            out.strokes.append((style, ("spline", seg), g))
+            return
         if isinstance(seg, Line):
             out.strokes.append((style, ("line", np.array(seg.start), np.array(seg.end)), g))
             return
@@ -422,7 +474,7 @@ class Renderer:
                                     seg.end_angle), g))
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
-        if g.kind in ("Line", "Arc"):
+        if g.kind in ("Line", "Arc", "Spline"):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
@@ -477,8 +529,12 @@ class Renderer:
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
             acc = acc - cut
         if getattr(s, "finish", None) and not acc.is_empty():
-            loops = finish(s, self.exact.loops(acc), self.x)
-            acc = self.exact.section(loops)
+            try:
+                loops = finish(s, self.exact.loops(acc), self.x)
+                acc = self.exact.section(loops)
+            except SplineCorner as ex:
+                g = self.spline_source.get(ex.curve)
+                self.shape_errors.append((g if g is not None else s, str(ex), ex.hint, "E0407"))
         out.shapes[s] = acc
         return acc
 
@@ -540,6 +596,7 @@ class Renderer:
         out.exact = self.exact
         out.empty_faces = self.empty_faces
         out.shape_errors = self.shape_errors
+        out.spline_source = self.spline_source
         out.kerf = {}
         for word, into in (("thickness", out.thickness), ("kerf", out.kerf)):
             default = getattr(self.m, word, None)
@@ -563,6 +620,9 @@ def _ends(seg):
     if isinstance(seg, Circle):
         c, r = seg.center, seg.radius
         return ((c[0] - r, c[1] - r), (c[0] + r, c[1] + r))
+    if isinstance(seg, Spline):
+        x0, y0, x1, y1 = seg.curve.box()
+        return ((x0, y0), (x1, y1))
     return (seg.start, seg.end)
 
 

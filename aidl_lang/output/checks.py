@@ -169,8 +169,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
-    for g, _m, _h in getattr(d, "shape_errors", None) or ():
-        explained.add(_part_of(g.owner, roots))     # an E0406 says why the part is empty
+    for g, *_ in getattr(d, "shape_errors", None) or ():
+        explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
         part = _part_of(s, roots)
         explained.add(part)
@@ -208,7 +208,7 @@ def empty_faces(d: Drawing) -> list:
     shows (a solid or hole whose own closed geometry gave no shape, or a chain of lines and
     arcs that closed into an empty loop), each geometry once, in model order."""
     out: dict = {}
-    errored = {id(g) for g, _m, _h in getattr(d, "shape_errors", None) or ()}   # E0406 said
+    errored = {id(g) for g, *_ in getattr(d, "shape_errors", None) or ()}   # E0406 said
     for s, g, a in getattr(d, "empty_faces", None) or []:
         out.setdefault(id(g), (s, g, float(a)))
     for s in d.shapes:
@@ -828,6 +828,9 @@ def _sample(item) -> np.ndarray:
         c, r = np.asarray(item[1], float), float(item[2])
         t = np.linspace(0, 2 * math.pi, 32, endpoint=False)
         return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+    if kind == "spline":                 # 9 points along each span
+        from ..geometry.spline import bez_at
+        return np.array([bez_at(b, float(t)) for b in item[1].spans for t in _T9[:, 0]])
     _, c, r, a1, a2 = item
     sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
     t = a1 + np.linspace(0, sweep, 17)
@@ -839,6 +842,8 @@ def _n_samples(item) -> int:
     kind = item[0]
     if kind == "poly":
         return 2 * len(item[1])
+    if kind == "spline":
+        return 9 * len(item[1].spans)
     return {"line": 9, "circle": 32}.get(kind, 17)
 
 

@@ -9,6 +9,12 @@ is written so that a laser runs each stroke in one go: a closed stroke is a clos
 ends, within :data:`CHAIN_TOL`) is ONE open ``LWPOLYLINE`` with bulges; a lone line, arc or
 circle is a ``LINE``, ``ARC`` or ``CIRCLE`` (a stroke with gaps is cut into its chains).
 
+A loop or stroke that holds a spline cannot be one ``LWPOLYLINE`` (it has no cubic segments):
+it is written segment by segment, each spline piece as a ``SPLINE`` entity (degree 3,
+clamped, its knots the chord-length parameters with triple interior knots: every span one
+Bézier piece, control points to the last bit), each line as a ``LINE`` and each arc as an
+``ARC``, ends meeting exactly, so CAM software joins them into one contour.
+
 The header's ``$EXTMIN`` / ``$EXTMAX`` are the drawing's exact extent
 (:func:`~.extent.extent`, z = 0).
 
@@ -22,7 +28,7 @@ import io
 import math
 
 from .extent import extent
-from .part import Arc, Circle, Line, Output, PartOutline
+from .part import Arc, Circle, Line, Output, PartOutline, Spline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
@@ -69,6 +75,22 @@ def _bulge_points(segments, closed: bool = True):
     return pts
 
 
+def _pieces(msp, segments, att) -> None:
+    """Each segment of a chain holding a spline as its own entity (see the module docstring)."""
+    for s in segments:
+        if isinstance(s, Spline):
+            deg, knots, ctrl = s.bspline()
+            msp.add_open_spline([(x, y, 0.0) for x, y in ctrl], degree=deg, knots=knots,
+                                dxfattribs=att)
+        elif isinstance(s, Line):
+            msp.add_line(s.start, s.end, dxfattribs=att)
+        elif isinstance(s, Circle):
+            msp.add_circle(s.center, s.radius, dxfattribs=att)
+        else:
+            a, b = (s.start_angle, s.end_angle) if s.sweep > 0 else (s.end_angle, s.start_angle)
+            msp.add_arc(s.center, s.radius, math.degrees(a), math.degrees(b), dxfattribs=att)
+
+
 def to_dxf_document(output: Output):
     """An ``ezdxf`` document of ``output`` (see the module docstring for layers and units)."""
     import ezdxf
@@ -90,10 +112,16 @@ def to_dxf_document(output: Output):
             if len(segs) == 1 and isinstance(segs[0], Circle):
                 msp.add_circle(segs[0].center, segs[0].radius, dxfattribs={"layer": layer})
                 continue
+            if any(isinstance(g, Spline) for g in segs):
+                _pieces(msp, segs, {"layer": layer})
+                continue
             msp.add_lwpolyline(_bulge_points(segs), format="xyb", close=True,
                                dxfattribs={"layer": layer})
     for st in output.engrave:
         att = {"layer": ENGRAVE}
+        if any(isinstance(g, Spline) for g in st.segments):
+            _pieces(msp, st.segments, att)
+            continue
         if st.closed and not (len(st.segments) == 1 and isinstance(st.segments[0], Circle)):
             msp.add_lwpolyline(_bulge_points(st.segments), format="xyb", close=True,
                                dxfattribs=att)

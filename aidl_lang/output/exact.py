@@ -35,8 +35,9 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ..geometry.curves import (Arc, Circle, Line, Loop, carrier, distance_to, foot, intersect,
-                               same_carrier, simplify, tolerance)
+from ..geometry.curves import (Arc, Circle, Line, Loop, Spline, carrier, distance_to, foot,
+                               intersect, same_carrier, simplify, spline_chords, spline_xy,
+                               tolerance)
 from ..geometry.tessellate import CHORD_TOL, segments_for
 from ..limits import OutOfBudget
 
@@ -77,6 +78,8 @@ class Provenance:
         """The index of carrier ``c``, registered on first use (equal carriers share one)."""
         if c[0] == "C":
             key = ("C", round(c[1], 9), round(c[2], 9), round(c[3], 9))
+        elif c[0] == "S":
+            key = c
         else:
             _, px, py, ux, uy = c
             if ux < 0 or (ux == 0 and uy < 0):
@@ -97,6 +100,7 @@ class Provenance:
         ids: list = []
         if self.max_vertices is not None:         # counted before anything is made
             self.vertices += sum(1 if isinstance(s, Line) else
+                                 spline_chords(s) if isinstance(s, Spline) else
                                  segments_for(s.radius) if isinstance(s, Circle) else
                                  max(1, segments_for(s.radius, abs(s.sweep))) for s in segs)
             if self.vertices > self.max_vertices:
@@ -108,6 +112,11 @@ class Provenance:
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
                 ids.append(k)
+                continue
+            if isinstance(s, Spline):
+                at = len(xs)
+                spline_xy(s, xs, ys)
+                ids += [k] * (len(xs) - at)
                 continue
             cx, cy = s.center
             r = s.radius
@@ -202,6 +211,11 @@ class Provenance:
                 total = _sweep_sum(P, c, 0, n - 1)
                 if abs(abs(total) - 2 * math.pi) < 1e-6:
                     return Loop([Circle((c[1], c[2]), c[3], total > 0)])
+            if c is not None and c[0] == "S":       # closed, or open with meeting ends
+                whole = Spline(c[1], 0.0, float(c[1].n))
+                if _shoelace(P) * whole.area_term < 0:
+                    whole = Spline(c[1], float(c[1].n), 0.0)
+                return Loop([whole])
             # every edge on one line, or on part of one circle: no area in exact geometry
             return _polyline(P) if c is None else Loop([])
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
@@ -231,6 +245,8 @@ class Provenance:
             c = self.carriers[k]
             if c[0] == "L":
                 segs.append(Line(a, b))
+            elif c[0] == "S":
+                segs.append(_spline_run(c[1], a, b, P, first, last))
             else:
                 segs.append(_arc(c, a, b, approx(c, first, last)))
         return Loop(simplify(segs, scale))
@@ -526,6 +542,9 @@ def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
     if k < 0:
         return False
     c = carriers[k]
+    if c[0] == "S":
+        sp = _spline_run(c[1], a, b, P, first, last)
+        return sp is None or sp.length <= tol
     if c[0] == "L":
         dx, dy = b[0] - a[0], b[1] - a[1]
         ex = P[(last + 1) % n] - P[first % n]
@@ -570,6 +589,52 @@ def _drop_inverted(runs, joins, P, carriers, prov, scale, approx=None):
             changed = True
             break
     return runs, joins
+
+
+def _shoelace(P) -> float:
+    X, Y = P[:, 0], P[:, 1]
+    return 0.5 * float(np.dot(X, np.roll(Y, -1)) - np.dot(Y, np.roll(X, -1)))
+
+
+def _cyc(c, u: float, v: float) -> float:
+    """How far forward from position ``u`` to ``v`` along curve ``c`` (modulo ``n`` when
+    closed)."""
+    d = v - u
+    return d % c.n if c.closed else d
+
+
+def _spline_run(c, a, b, P, first: int, last: int):
+    """The exact piece of spline ``c`` from exact point ``a`` to ``b`` that the polygon
+    edges ``first..last`` follow; None when the exact ends come in the wrong order (an
+    overlap thinner than the chords could show)."""
+    n = len(P)
+    ua, ub = c.foot(a), c.foot(b)
+    # the run's own vertices say which way it goes along the curve, and how far
+    v0 = P[first % n]
+    v1 = P[(last + 1) % n]
+    vm = P[((first + last + 1) // 2) % n] if last > first else (P[first % n] + P[(last + 1) % n]) / 2
+    u0, um, u1 = c.foot(tuple(v0)), c.foot(tuple(vm)), c.foot(tuple(v1))
+    fwd = _cyc(c, u0, um) + _cyc(c, um, u1)
+    back = _cyc(c, um, u0) + _cyc(c, u1, um)
+    if c.closed:
+        forward = fwd <= back
+        approx = fwd if forward else back
+    else:
+        forward = u1 >= u0 if abs(u1 - u0) > 1e-12 else um >= u0
+        approx = abs(u1 - u0)
+    if forward:
+        d = _cyc(c, ua, ub)
+        if c.closed and abs(d - approx) > c.n / 2:       # ends swapped past each other
+            return None
+        if not c.closed and d < 0:
+            return None
+        return Spline(c, ua, ua + d)
+    d = _cyc(c, ub, ua)
+    if c.closed and abs(d - approx) > c.n / 2:
+        return None
+    if not c.closed and d < 0:
+        return None
+    return Spline(c, ua, ua - d)
 
 
 def _polyline(P) -> Loop:

@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import math
 
-from .part import Arc, Circle, Line, Output
+from .part import Arc, Circle, Line, Output, Spline
 
 
 def _segment_box(s) -> tuple[float, float, float, float]:
+    if isinstance(s, Spline):
+        return s.box()
     if isinstance(s, Line):
         (x0, y0), (x1, y1) = s.start, s.end
         return min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)

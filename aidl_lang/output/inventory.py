@@ -27,6 +27,8 @@ def _measures(p: PartOutline) -> list[tuple]:
                 out.append((1, s.radius, s.length))
             elif isinstance(s, Circle):
                 out.append((2, s.radius, s.length))
+            else:                                   # a spline piece
+                out.append((3, s.length, s.area_term))
     return sorted(out)
 
 

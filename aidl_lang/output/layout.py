@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, Line, Loop
+from ..geometry.curves import Arc, Circle, Line, Loop, Spline
 from ..geometry.offset import OffsetError, offset_loop
 from .extent import _segment_box
 from .part import MissingDependency, Output, OutputError, PartOutline, Stroke
@@ -64,6 +64,11 @@ class Motion:
         return (self.cs * x - self.sn * y + self.to[0], self.sn * x + self.cs * y + self.to[1])
 
     def segment(self, s):
+        if isinstance(s, Spline):          # a rigid motion of the control points is exact
+            from ..geometry.spline import CubicSpline
+            c = s.curve
+            moved = CubicSpline(tuple(self.point(p) for p in c.ctrl), c.h, c.closed)
+            return Spline(moved, s.u0, s.u1)
         if isinstance(s, Line):
             return Line(self.point(s.start), self.point(s.end))
         if isinstance(s, Circle):
@@ -113,9 +118,25 @@ def compensate(output: Output, kerf, deadline=None) -> Output:
         try:
             loops = [offset_loop(lp, k / 2) for lp in p.loops]
         except OffsetError as e:
-            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}") from None
+            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}{_spline_fix(output, e)}") \
+                from None
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
     return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
+
+
+def _spline_fix(output: Output, e: OffsetError) -> str:
+    """Where the spline a kerf cannot offset was written, and what to do."""
+    if e.curve is None:
+        return ""
+    src = getattr(output.drawing, "spline_source", {}).get(e.curve) \
+        if output.drawing is not None else None
+    at = ""
+    if src is not None and src.span is not None:
+        sp = src.span
+        at = f" (the Spline `{src.label}` at {sp.file}:{sp.line}:{sp.col})"
+    return (f"{at}; set the kerf of this part to 0 (`kerf 0 mm` in its structure) and let the "
+            f"cutter's software compensate, or draw the spline through points moved out by "
+            f"half the kerf")
 
 
 # ------------------------------------------------------------------ nesting

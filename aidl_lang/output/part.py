@@ -6,7 +6,8 @@ booleans' :class:`~.exact.Provenance` knows which exact curve each polygon edge 
 geometry"): each run of edges on one carrier is one :class:`Line`, :class:`Arc` or
 :class:`Circle`, and each vertex where two curves meet is their exact intersection (or the
 touching point of a tangent join), so slots, rounded rectangles, fillets and every union or
-cut of them come out as the program meant them, to floating-point accuracy.  Ellipses are the
+cut of them come out as the program meant them, to floating-point accuracy; a spline that a
+cut crosses is its exact piece (de Casteljau at the crossing positions).  Ellipses are the
 one approximation: a polygon of chords within ``CHORD_TOL``.
 
 The result, :class:`Output`, holds :class:`PartOutline` s (name, kind, loops, thickness, and
@@ -21,11 +22,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Segment, sample_xy
+from ..geometry.curves import Arc, Circle, Line, Loop, Segment, Spline, sample_xy
 from ..limits import OutOfBudget
 from .booleans import Drawing
 
-__all__ = ["Arc", "Circle", "Line", "Loop", "Segment", "Output", "PartOutline", "Stroke",
+__all__ = ["Arc", "Circle", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
            "OutputError", "MissingDependency", "build"]
 
 Point = tuple[float, float]
@@ -137,6 +138,8 @@ def _stroke(item, exact, style: str, source: str) -> Stroke | None:
         return Stroke([Arc(_t(c), float(r), float(a1), float(sweep))], style, False, source)
     if kind == "circle":
         return Stroke([Circle(_t(item[1]), float(item[2]))], style, True, source)
+    if kind == "spline":
+        return Stroke([item[1]], style, item[1].whole, source)
     lp = item[2] if len(item) > 2 else exact.recover(item[1])
     return Stroke(list(lp.segments), style, True, source) if lp.segments else None
 
@@ -150,7 +153,9 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
     out: list[Stroke] = []
     groups: dict = {}
     for st in strokes:
-        if st.closed or not st.segments or any(isinstance(g, Circle) for g in st.segments):
+        if st.closed or not st.segments or any(isinstance(g, Circle) or
+                                               (isinstance(g, Spline) and g.whole)
+                                               for g in st.segments):
             out.append(st)
             continue
         key = (st.source, st.style, st.part)

@@ -1,5 +1,6 @@
 """STEP writer (the optional ``step`` extra: OCP from ``cadquery-ocp``), built from the exact
-profiles of :mod:`.part`, so circles stay circles and their extrusions cylinders.
+profiles of :mod:`.part`, so circles stay circles and their extrusions cylinders, and a
+spline stays a B-spline (``B_SPLINE_CURVE_WITH_KNOTS``; its extrusion a surface of it).
 
 Each solid part becomes one solid: its outer loops are faces (lines as straight edges, arcs
 and circles as circular edges, ``gp_Circ``), its hole loops are inner wires of the face that
@@ -11,7 +12,7 @@ from __future__ import annotations
 import os
 import tempfile
 
-from .part import Circle, Line, Loop, MissingDependency, Output
+from .part import Circle, Line, Loop, MissingDependency, Output, Spline
 
 DEFAULT_THICKNESS = 3.0
 
@@ -29,7 +30,9 @@ def _wire(loop: Loop, reverse: bool):
     from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
     mk = BRepBuilderAPI_MakeWire()
     for s in loop.segments:
-        if isinstance(s, Line):
+        if isinstance(s, Spline):
+            mk.Add(BRepBuilderAPI_MakeEdge(_bspline(s)).Edge())
+        elif isinstance(s, Line):
             a, b = gp_Pnt(*s.start, 0.0), gp_Pnt(*s.end, 0.0)
             if a.Distance(b) < 1e-9:
                 continue
@@ -44,6 +47,33 @@ def _wire(loop: Loop, reverse: bool):
             mk.Add(BRepBuilderAPI_MakeEdge(arc).Edge())
     w = mk.Wire()
     return w.Reversed() if reverse else w
+
+
+def _bspline(s):
+    """OCP ``Geom_BSplineCurve`` of a spline piece: the clamped degree-3 form of
+    :meth:`~aidl_lang.geometry.curves.Spline.bspline` (distinct knots with multiplicities 4,
+    3, ..., 3, 4), written as STEP ``B_SPLINE_CURVE_WITH_KNOTS``."""
+    from OCP.Geom import Geom_BSplineCurve
+    from OCP.gp import gp_Pnt
+    try:                          # OCP 7.8 and later: NCollection arrays in OCP.collections
+        from OCP.OCP.collections import (Array1_double as TColStd_Array1OfReal,
+                                         Array1_gp_Pnt as TColgp_Array1OfPnt,
+                                         Array1_int as TColStd_Array1OfInteger)
+    except ImportError:           # earlier OCP
+        from OCP.TColgp import TColgp_Array1OfPnt
+        from OCP.TColStd import TColStd_Array1OfInteger, TColStd_Array1OfReal
+    deg, knots, ctrl = s.bspline()
+    poles = TColgp_Array1OfPnt(1, len(ctrl))
+    for i, (x, y) in enumerate(ctrl):
+        poles.SetValue(i + 1, gp_Pnt(x, y, 0.0))
+    distinct = [knots[0]] + [k for a, k in zip(knots, knots[1:]) if k != a]
+    mult = [knots.count(k) for k in distinct]
+    K = TColStd_Array1OfReal(1, len(distinct))
+    M = TColStd_Array1OfInteger(1, len(distinct))
+    for i, (k, m) in enumerate(zip(distinct, mult)):
+        K.SetValue(i + 1, k)
+        M.SetValue(i + 1, m)
+    return Geom_BSplineCurve(poles, K, M, deg)
 
 
 def _contains(outer: Loop, inner: Loop) -> bool:

@@ -1,7 +1,8 @@
 """SVG writer (``svgwrite``) for the exact output model (:class:`~.part.Output`).
 
 Layers are groups with stable ids: ``cut`` holds one group per part (``part-<path>``), each
-part's outline loops as exact ``L`` / ``A`` path commands (a full circle is two half arcs in
+part's outline loops as exact ``L`` / ``A`` / ``C`` path commands (``C``: a spline's cubic
+Bézier spans) (a full circle is two half arcs in
 the preview style, a ``<circle>`` in the laser style); ``engrave`` holds drawings, text and
 unclosed curves.  Debug layers appear only when asked for (``show``): ``holes`` (each hole's
 declared outline, dashed), ``bboxes`` (every structure's bounding box), ``construction``
@@ -22,7 +23,7 @@ import math
 import numpy as np
 
 from .extent import extent
-from .part import Arc, Circle, Line, Loop, Output, OutputError, build
+from .part import Arc, Circle, Line, Loop, Output, OutputError, Spline, build
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
@@ -43,6 +44,17 @@ def _f(v: float) -> str:
 
 def _pt(p) -> str:
     return f"{_f(p[0])},{_f(-p[1])}"
+
+
+def _f10(v: float) -> str:
+    s = f"{v:.10f}".rstrip("0").rstrip(".")
+    return "0" if s in ("-0", "") else s
+
+
+def _pt10(p) -> str:
+    """A spline's point, to 1e-10 mm: the curve a reader draws from the control points is
+    the program's to 1e-9 mm (lines and arcs are written to 1e-6 mm, :func:`_pt`)."""
+    return f"{_f10(p[0])},{_f10(-p[1])}"
 
 
 def _arc_cmd(a: Arc) -> str:
@@ -67,8 +79,11 @@ def segments_d(segments, closed: bool) -> str:
             here = None
             continue
         if here is None or math.dist(here, s.start) > CHAIN_TOL:
-            out.append(f"M{_pt(s.start)}")
-        out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
+            out.append(f"M{_pt10(s.start) if isinstance(s, Spline) else _pt(s.start)}")
+        if isinstance(s, Spline):         # each span one cubic Bézier: the curve itself
+            out += [f"C{_pt10(b[1])} {_pt10(b[2])} {_pt10(b[3])}" for b in s.spans]
+        else:
+            out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
         here = s.end
     if closed and segments and not isinstance(segments[-1], Circle):
         out.append("Z")
@@ -195,6 +210,8 @@ def _item_points(item) -> np.ndarray:
         return np.array([item[1], item[2]], dtype=float)
     if kind == "poly":
         return np.asarray(item[1], dtype=float)
+    if kind == "spline":
+        return np.vstack([Loop([item[1]]).points(), [item[1].end]])
     if kind == "circle":
         seg = Circle(tuple(item[1]), float(item[2]))
     else:

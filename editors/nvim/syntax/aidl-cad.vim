@@ -13,9 +13,10 @@ syntax keyword aidlCadOperator and not or
 syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
-syntax keyword aidlCadPrimitive Arc ArcSlot Circle ConvexHull Ellipse Expand Grow Hull
-syntax keyword aidlCadPrimitive Inset Line Offset Outset Point Polygon Rectangle RegularPolygon
-syntax keyword aidlCadPrimitive RoundedRectangle Shell Shrink Slot Star Text Trapezoid Triangle
+syntax keyword aidlCadPrimitive Arc ArcSlot BSpline Circle ConvexHull CubicSpline Curve Ellipse
+syntax keyword aidlCadPrimitive Expand FitSpline Grow Hull Inset Interpolate InterpolatedCurve Line
+syntax keyword aidlCadPrimitive Offset Outset Point Polygon Rectangle RegularPolygon RoundedRectangle Shell
+syntax keyword aidlCadPrimitive Shrink Slot SmoothCurve Spline Star Text Trapezoid Triangle
 syntax keyword aidlCadPrimitive convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
