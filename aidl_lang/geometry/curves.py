@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 
 from dataclasses import dataclass
+from functools import cached_property
 
 Point = tuple[float, float]
 
@@ -103,13 +104,9 @@ class Spline:
     u0: float
     u1: float
 
-    @property
+    @cached_property
     def spans(self) -> list:
-        got = self.__dict__.get("_spans")
-        if got is None:
-            got = self.curve.spans_between(self.u0, self.u1)
-            object.__setattr__(self, "_spans", got)
-        return got
+        return self.curve.spans_between(self.u0, self.u1)
 
     @property
     def start(self) -> Point:
