@@ -622,19 +622,10 @@ def _spline_run(c, a, b, P, first: int, last: int):
     else:
         forward = u1 >= u0 if abs(u1 - u0) > 1e-12 else um >= u0
         approx = abs(u1 - u0)
-    if forward:
-        d = _cyc(c, ua, ub)
-        if c.closed and abs(d - approx) > c.n / 2:       # ends swapped past each other
-            return None
-        if not c.closed and d < 0:
-            return None
-        return Spline(c, ua, ua + d)
-    d = _cyc(c, ub, ua)
-    if c.closed and abs(d - approx) > c.n / 2:
-        return None
-    if not c.closed and d < 0:
-        return None
-    return Spline(c, ua, ua - d)
+    d = _cyc(c, ua, ub) if forward else _cyc(c, ub, ua)
+    if c.closed and abs(d - approx) > c.n / 2 or not c.closed and d < 0:
+        return None                                 # the ends swapped past each other
+    return Spline(c, ua, ua + d if forward else ua - d)
 
 
 def _polyline(P) -> Loop:
