@@ -318,8 +318,9 @@ def _reduction(origin: str, size: int, name: str, include: list, tail: int, expa
     """A reduction of :attr:`_Tables.states` from a rule's spec (see :func:`_tables_data`).
     ``specialise=False``: every rule through the general callback, pass-through rules
     included (the reference the short callbacks are tested against)."""
+    include = [tuple(i) for i in include]      # lists when read from the JSON cache
     if unit or (specialise and name in _PASS_THROUGH and size == 1
-                and include == [[0, False, 0]] and not tail):
+                and include == [(0, False, 0)] and not tail):
         return (None, origin, None)
     if name.startswith("_"):
         build = None                            # spliced into the parent
