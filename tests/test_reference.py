@@ -1,0 +1,146 @@
+"""`aidl docs` and the reference it prints (aidl_lang/reference.py): a topic for every registry
+name, statement and standard-library template, each with an example that compiles; lenient
+lookups; the stdlib doc comments the prompt and the topics are generated from."""
+from __future__ import annotations
+
+import contextlib
+import io
+
+import pytest
+
+from aidl_lang import ast as A
+from aidl_lang.cli.main import main
+from aidl_lang.llm.prompt import system_prompt
+from aidl_lang.pipeline import compile_source
+from aidl_lang.reference import (STATEMENTS, find, index_text, lookup_text, stdlib_templates,
+                                 suggest, topics)
+from aidl_lang.registry import ENTRIES, SYNONYMS
+
+STDLIB_NAMES = {"spur_gear", "gear_pair", "washer", "bolt_circle", "rounded_tab", "slot_hole",
+                "hex_pocket", "finger_panel", "finger_box", "clearance_hole", "nut_trap",
+                "t_slot", "rounded_plate", "chamfered_plate", "mounting_plate", "keyhole",
+                "slot", "living_hinge", "text_on_arc"}
+
+
+def run_cli(*args):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = main([str(a) for a in args])
+    return rc, out.getvalue(), err.getvalue()
+
+
+def test_every_registry_name_statement_and_template_has_a_topic():
+    ts = topics()
+    for name in ENTRIES:
+        assert name in ts and ts[name].kind in ("shape", "constraint", "structural relation",
+                                                "operation"), name
+    for name in STATEMENTS:
+        assert ts[name].kind == "statement"
+    assert set(stdlib_templates()) == STDLIB_NAMES        # the library as it is today
+    for name in STDLIB_NAMES:
+        assert find(name).kind.endswith(".aidl") and "template" in find(name).kind
+    for needed in ("assert", "kerf", "thickness", "import", "param", "def", "bb", "hole"):
+        assert needed in ts
+    for syn, canon in SYNONYMS.items():
+        assert find(syn).name == canon, syn
+
+
+@pytest.mark.parametrize("name", sorted(topics()))
+def test_every_topic_example_compiles_cleanly(name):
+    t = topics()[name]
+    assert t.example, f"{name} has no example"
+    res = compile_source(t.example, f"/tmp/aidl-docs-{name}.aidl")
+    assert res.ok and not res.sink.items, [f"{d.code} {d.message}" for d in res.sink.items]
+    # the printed topic carries the example as it compiled
+    assert t.example.strip().splitlines()[0] in t.render()
+
+
+def test_topic_gives_signature_units_and_members():
+    text = find("spur_gear").render()
+    assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm" in text
+    assert "phase = 0 deg: angle: degrees" in text
+    assert "cx = 0 mm: length" in text and "center's starting position" in text
+    assert "teeth = 20: number" in text
+    for m in ("bore_hole", "pitch", "hub", "teeth_ring"):
+        assert m in text.split("Members")[-1]
+    assert "hub.center" in text                             # where the gear's center is
+    assert 'import "std/gears.aidl"' in text
+    circle = find("Circle").render()
+    assert "Circle(center, radius)" in circle and "Circle(center, diameter)" in circle
+    assert "radius: length: a number in the file's unit" in circle
+    assert "points: center top bottom left right" in circle
+    assert "construction=false" in circle
+    assert "Also written" in find("Perpendicular").render()        # Orthogonal
+    assert "Contains" in find("Inside").render()
+
+
+@pytest.mark.parametrize("written, topic", [
+    ("SpurGear", "spur_gear"), ("spur-gear", "spur_gear"), ("SPUR_GEAR", "spur_gear"),
+    ("gears.spur_gear", "spur_gear"), ("spur_gear()", "spur_gear"),
+    ("Slot", "Slot"), ("slot", "slot"), ("regular_polygon", "RegularPolygon"),
+    ("Orthogonal", "Perpendicular"), ("Contains", "Inside"), ("bbox", "bb"), ("self", "bb"),
+    ("elif", "if"), ("sin", "functions"), ("mm", "units"), ("Assert", "assert"),
+    ("text-on-arc", "text_on_arc"), ("template", "def"),
+])
+def test_lookups_are_lenient(written, topic):
+    assert find(written).name == topic
+
+
+def test_unknown_names_get_did_you_mean():
+    assert suggest("spur_gaer")[0] == "spur_gear"
+    assert "spur_gear" in suggest("gear")
+    assert suggest("Rectangel")[0] == "Rectangle"
+    text, found = lookup_text("Rectangel")
+    assert not found and "did you mean `Rectangle`" in text
+    assert find("Frobnicate") is None
+
+
+def test_aidl_docs_command():
+    rc, out, _ = run_cli("docs")
+    assert rc == 0
+    for name in list(ENTRIES) + list(STDLIB_NAMES) + ["assert", "kerf", "thickness"]:
+        assert name in out, name
+    assert out == index_text()
+    rc, out, _ = run_cli("docs", "SpurGear")
+    assert rc == 0 and out.startswith("spur_gear (solid template, std/gears.aidl)")
+    rc, out, err = run_cli("docs", "spur-gaer")
+    assert rc == 2 and out == "" and "did you mean `spur_gear`" in err
+
+
+def _body_names(stmts) -> set:
+    out = set()
+    for st in stmts:
+        if isinstance(st, (A.Assign, A.StructDecl)):
+            out.add(st.name)
+        elif isinstance(st, A.For):
+            out |= _body_names(st.body.stmts)
+        elif isinstance(st, A.If):
+            out |= _body_names(st.body.stmts)
+            if st.orelse is not None:
+                out |= _body_names(st.orelse.stmts)
+    return out
+
+
+def test_stdlib_doc_comments_are_complete_and_true():
+    """Every stdlib template has a doc comment whose first sentence is one short line, and the
+    members it names exist in its body (the prompt and `aidl docs` are made from them)."""
+    for t in stdlib_templates().values():
+        assert t.doc and t.summary.endswith("."), t.name
+        assert len(t.summary.split()) <= 20, (t.name, t.summary)
+        assert t.members, f"{t.name}: no `Members:` sentence"
+        names = _body_names(t.node.body.stmts)
+        for m in t.members:
+            assert m in names, (t.name, m)
+        assert "cx" in [p.name for p in t.node.params], t.name
+
+
+def test_prompt_lists_every_stdlib_template_from_its_doc_comment():
+    text = system_prompt()
+    for t in stdlib_templates().values():
+        line = next(ln for ln in text.splitlines() if ln.startswith(f"- {t.name}("))
+        assert t.summary in line and f"-> {t.node.kind}" in line
+        assert "cx=" not in line                   # said once for all
+        assert ", ".join(t.members) in line
+    for needle in ("assert cond", "thickness 3 mm", "kerf 0.15 mm", "Rigid(a, b)", "Fixed(x)",
+                   "never turn", "holes included", "plate.body.bb"):
+        assert needle in text, needle
