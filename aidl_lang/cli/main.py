@@ -199,7 +199,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
     m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
-            description="Serve AIDL's tools (check, render, values, explain) and resources "
+            description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
                         "(language reference, prompt, stdlib, examples) to an MCP host over "
                         "stdio. Only files inside --root can be read or written.")
     m.add_argument("--root", default=".", metavar="DIR",
