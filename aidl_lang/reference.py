@@ -585,6 +585,13 @@ and descendants, holes included: a hole that pokes out past the outline widens i
 (`plate.body.bb`). Structural relations (Above, Inside, ...) work on boxes. `self` is the
 current structure: `CenterInside(bore, self)`, `self.bb.width <= 60`.
 """, ["bbox", "bounding box", "boundingbox", "self", "box", "members"]),
+    "comments": ("statement", "`# a comment`; `//` after an operand is floor division.", """
+`# text` and `/* text */` are comments. `//` is floor division when the code before it on
+the line ends an operand (a name, number, string, `)` or `]`) and the rest of the line does not
+read as prose (`7 // 2` is 3; `80 mm // 3` is 26 mm, warning W0106 when it becomes a length);
+otherwise it starts a comment (`// note` on its own line, `x = f(a) // half of it`). Write
+`#` for comments and `/` for division.
+""", ["comment", "#", "//", "floor division"]),
     "functions": ("statement", "sin, cos, sqrt, min, max, range, ...: functions and "
                   "constants.", "\n".join(
         [f"`{n}`: {doc}" for n, (_lo, _hi, doc) in FUNCTIONS.items()]
@@ -812,6 +819,11 @@ EXAMPLES: dict[str, str] = {
                  "hole notch { c = Circle(center=(20, 0), radius=5) }   # pokes out 5 mm\n"
                  "Fixed(body)\nFixed(notch)\n"
                  "assert self.bb.right == 25 mm and body.bb.right == 20 mm", "plate"),
+    "comments": "# a plate with a bore\n" + _solid(
+        "body = Rectangle(center=(0, 0), width=80 / 3, height=10)   # 26.667 mm wide\n"
+        "n = 7 // 2    # floor division: 3, a count\nfor i in range(n) {\n    hole bore { "
+        "c = Circle(center=(-8 + 8 * i, 0), radius=2) }\n}\nFixed(body)\n"
+        "Fixed(bore[0])\nFixed(bore[1])\nFixed(bore[2])", "plate"),
     "functions": _solid("for i in range(6) {\n    hole bolt { c = Circle(center=(20 * "
                         "cos(i * 60 deg), 20 * sin(i * 60 deg)), radius=max(2, sqrt(9))) }\n}\n"
                         "disc = Circle(center=(0, 0), radius=30)\nFixed(disc)\n"

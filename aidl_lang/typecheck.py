@@ -298,7 +298,8 @@ class Checker:
             cands = list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS) + list(self.templates)
             sugg = did_you_mean(n, cands)
             hint = HALLUCINATIONS.get(n) or (f"did you mean `{sugg[0]}`?" if sugg else
-                                             "see docs/language.md for the primitives and constraints")
+                                             "`aidl docs` lists every shape, constraint and "
+                                             "standard-library template")
             d = self.sink.error("E0103", f"unknown function `{n}`", f.span, hint=hint,
                                 suggestions=sugg)
             if n in HALLUCINATIONS:

@@ -144,3 +144,44 @@ def test_prompt_lists_every_stdlib_template_from_its_doc_comment():
     for needle in ("assert cond", "thickness 3 mm", "kerf 0.15 mm", "Rigid(a, b)", "Fixed(x)",
                    "never turn", "holes included", "plate.body.bb"):
         assert needle in text, needle
+
+
+def test_no_message_or_hint_names_a_file_the_model_cannot_read():
+    """Diagnostics and `aidl explain` point to `aidl docs X`, never to docs/*.md: a model
+    (through the CLI or MCP) has the tool but not the source tree.  Every string literal of the
+    compiler that is not a docstring is looked at; the front ends that link documentation
+    for people (command-line help, the language server's code links, MCP resource
+    descriptions, LLM report files) are left out."""
+    import ast
+    import re
+    from pathlib import Path
+
+    import aidl_lang
+    from aidl_lang.codes import CODES
+    md = re.compile(r"\b[\w./-]+\.md\b")
+    for code, (title, text) in CODES.items():
+        assert not md.search(title + text), code
+    pkg = Path(aidl_lang.__file__).parent
+    people = {"cli", "editor", "llm", "mcp", "batch", "serve"}
+    bad = []
+    for f in sorted(pkg.rglob("*.py")):
+        rel = f.relative_to(pkg)
+        if rel.parts[0] in people:
+            continue
+        tree = ast.parse(f.read_text(encoding="utf-8"))
+        docs = {id(n.body[0].value) for n in ast.walk(tree)
+                if isinstance(n, (ast.Module, ast.FunctionDef, ast.ClassDef,
+                                  ast.AsyncFunctionDef))
+                and n.body and isinstance(n.body[0], ast.Expr)
+                and isinstance(n.body[0].value, ast.Constant)}
+        for n in ast.walk(tree):
+            if (isinstance(n, ast.Constant) and isinstance(n.value, str)
+                    and id(n) not in docs and md.search(n.value)):
+                bad.append(f"{rel}:{n.lineno}: {n.value[:80]!r}")
+    assert not bad, bad
+
+
+def test_unknown_function_hint_points_to_aidl_docs(compile_text):
+    res = compile_source("solid p {\n    x = Frobnicate(1)\n}\n", "/tmp/aidl-frob.aidl")
+    [d] = [d for d in res.sink.items if d.code == "E0103"]
+    assert "aidl docs" in d.hint and ".md" not in d.hint
