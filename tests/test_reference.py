@@ -185,3 +185,58 @@ def test_unknown_function_hint_points_to_aidl_docs(compile_text):
     res = compile_source("solid p {\n    x = Frobnicate(1)\n}\n", "/tmp/aidl-frob.aidl")
     [d] = [d for d in res.sink.items if d.code == "E0103"]
     assert "aidl docs" in d.hint and ".md" not in d.hint
+
+
+# ------------------------------------------------------------------ did-you-mean and units
+def _diag(src: str, code: str, tmp_path):
+    f = tmp_path / "p.aidl"
+    f.write_text(src)
+    res = compile_source(src, str(f))
+    found = [d for d in res.sink.items if d.code == code]
+    assert found, [f"{d.code} {d.message}" for d in res.sink.items]
+    return found[0]
+
+
+def test_did_you_mean_ignores_case_and_word_style():
+    from aidl_lang.diagnostics import did_you_mean
+    assert did_you_mean("SpurGear", ["spur_gear", "Rectangle", "gear_pair"])[0] == "spur_gear"
+    assert did_you_mean("spur-gear", ["spur_gear"]) == ["spur_gear"]
+    assert did_you_mean("ROUNDED_PLATE", ["rounded_plate", "rounded_tab"])[0] == "rounded_plate"
+
+
+def test_imported_template_in_another_style_is_named_with_its_parameters(tmp_path):
+    d = _diag('import "std/gears.aidl"\nsolid part {\n    g = SpurGear(teeth=20)\n}\n',
+              "E0103", tmp_path)
+    assert d.suggestions[0] == "spur_gear" and d.fix.replacement == "spur_gear"
+    assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg" in d.hint
+    assert "angles (degrees" in d.hint and "pressure_angle, phase" in d.hint
+    assert "cx, cy: the x and y where its center starts" in d.hint
+    # a template of the file itself, too
+    d = _diag("def my_plate(w=40 mm) -> solid {\n    r = Rectangle(center=(0, 0), width=w, "
+              "height=10)\n}\nsolid part {\n    p = MyPlate(w=30 mm)\n}\n", "E0103", tmp_path)
+    assert d.suggestions[0] == "my_plate" and "`my_plate(w=40 mm) -> solid`" in d.hint
+
+
+def test_a_stdlib_template_used_without_its_import_names_the_import(tmp_path):
+    d = _diag("solid part {\n    g = spur_gear(teeth=20)\n}\n", "E0103", tmp_path)
+    assert 'import "std/gears.aidl"' in d.hint and "aidl docs spur_gear" in d.hint
+
+
+def test_unknown_argument_hint_gives_every_unit(tmp_path):
+    # an imported template: checked when it runs (the interpreter)
+    d = _diag('import "std/gears.aidl"\nsolid part {\n    g = spur_gear(teeth=20, '
+              'angle=10 deg)\n}\n', "E0105", tmp_path)
+    assert "phase=0 deg" in d.hint and "angles (degrees" in d.hint and "phase" in d.hint
+    assert "lengths (the file's unit" in d.hint and "cx, cy" in d.hint
+    # a template of the file (the checker), with did-you-mean
+    d = _diag("def tab(width=10 mm, turn=0 deg) -> solid {\n    r = Rectangle(center=(0, 0), "
+              "width=width, height=5, rotation=turn)\n}\nsolid part {\n    t = tab(widht=5)\n}\n",
+              "E0105", tmp_path)
+    assert d.hint.startswith("did you mean `width`?")
+    assert "lengths (the file's unit, mm by default, or e.g. `5 mm`): width" in d.hint
+    assert "angles (degrees, or e.g. `1 rad`): turn" in d.hint
+    # a shape of the registry
+    d = _diag("solid part {\n    c = Circle(centre=(0, 0), radius=3)\n}\n", "E0105", tmp_path)
+    assert d.suggestions[0] == "center"
+    assert "units: points `(x, y)`: center; lengths (the file's unit" in d.hint
+    assert "radius, diameter" in d.hint
