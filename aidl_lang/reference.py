@@ -274,8 +274,14 @@ def _member_text(members: dict[str, str]) -> str:
     return "\n".join(rows + ["  bb: its bounding box (`aidl docs bb`)"])
 
 
+def _units_block(kinds) -> list[str]:
+    """``Units:`` and what to write for each kind of the given ones, once each."""
+    ks = [k for k in dict.fromkeys(kinds) if k in KIND_TEXT and k != "any"]
+    return ["", "Units:"] + [f"  {KIND_TEXT[k]}" for k in ks] if ks else []
+
+
 def _entry_topic(e: Entry) -> Topic:
-    lines = [e.doc, "", "Forms:"]
+    lines = [_wrap(e.doc, ""), "", "Forms:"]
     for v in e.variants:
         ps = []
         for a in v:
@@ -294,7 +300,8 @@ def _entry_topic(e: Entry) -> Topic:
             if a.name not in seen and not a.kw_only:
                 seen[a.name] = a.type
                 extra = f" ({a.doc})" if a.doc else ""
-                lines.append(f"  {a.name}: {KIND_TEXT.get(a.type, a.type)}{extra}")
+                lines.append(f"  {a.name}: {a.type}{extra}")
+    lines += _units_block(seen.values())
     if e.members:
         lines += ["", "Members:", _member_text(e.members)]
     syn = sorted(s for s, c in SYNONYMS.items() if c == e.name)
@@ -311,11 +318,12 @@ def _entry_topic(e: Entry) -> Topic:
 
 
 def _template_topic(t: StdTemplate) -> Topic:
-    lines = [t.doc, "", f"Import: `import \"std/{t.module}.aidl\"` (or `import stdlib.{t.module}`)",
+    lines = [_wrap(t.doc, ""), "", f"Import: `import \"std/{t.module}.aidl\"` (or `import stdlib.{t.module}`)",
              "", "Signature:", f"  {t.signature}", "", "Parameters:"]
     for n, kind, d in t.params:
         gloss = f"; {PARAM_GLOSS[n]}" if n in PARAM_GLOSS else ""
-        lines.append(f"  {n} = {d}: {KIND_TEXT.get(kind, kind)}{gloss}")
+        lines.append(f"  {n} = {d}: {kind}{gloss}")
+    lines += _units_block(k for _, k, _ in t.params)
     if t.members:
         lines += ["", "Members (reach them by path: `g.NAME`, `g.NAME.center`): "
                   + ", ".join(t.members)]
@@ -707,8 +715,8 @@ EXAMPLES: dict[str, str] = {
     "Perpendicular": _QUAD.format(line="Perpendicular(a, d)"),
     "Tangent": _solid("c = Circle(center=(0, 0), radius=10)\n"
                       "r = Rectangle(center=(0, 0), width=30, height=10)\n"
-                      "Fixed(c)\nTangent(r.bottom, c)    # a D: the circle's bottom on the "
-                      "line\nAlignCenterX(r, c)", "cam"),
+                      "Fixed(c)\nTangent(r.bottom, c)    # r's bottom edge touches the circle's "
+                      "bottom\nAlignCenterX(r, c)", "cam"),
     "Symmetric": _PLATE2.format(line="axis = Line((0, -15), (0, 15), construction=true)\n"
                                 "    Symmetric(left.c.center, right.c.center, axis)"),
     "Midpoint": _HOLES.format(line="Midpoint(h.c.center, body.bottom)    # a notch"),

@@ -58,7 +58,7 @@ def test_every_topic_example_compiles_cleanly(name):
 def test_topic_gives_signature_units_and_members():
     text = find("spur_gear").render()
     assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm" in text
-    assert "phase = 0 deg: angle: degrees" in text
+    assert "phase = 0 deg: angle" in text and "angle: degrees (`30` or `30 deg`" in text
     assert "cx = 0 mm: length" in text and "center's starting position" in text
     assert "teeth = 20: number" in text
     for m in ("bore_hole", "pitch", "hub", "teeth_ring"):
@@ -67,7 +67,7 @@ def test_topic_gives_signature_units_and_members():
     assert 'import "std/gears.aidl"' in text
     circle = find("Circle").render()
     assert "Circle(center, radius)" in circle and "Circle(center, diameter)" in circle
-    assert "radius: length: a number in the file's unit" in circle
+    assert "radius: length" in circle and "length: a number in the file's unit" in circle
     assert "points: center top bottom left right" in circle
     assert "construction=false" in circle
     assert "Also written" in find("Perpendicular").render()        # Orthogonal
