@@ -67,11 +67,12 @@ solid plate {
 A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
 the cut solid is united with its own siblings, which are not cut. Patterns and Mirrored put
 copies beside the original, in the original's structure.
-`Fixed(x)` holds a point, shape or structure where it starts. Shapes never turn while solving:
-sizes and `rotation=` given to a constructor are held, and a Polygon of literal points keeps
-its shape and angle (it may only move). `Rigid(a, b)` keeps shapes or structures placed
-relative to each other (a constraint on one moves all, by translation); a rigid structure is
-moved, never bent.
+`Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
+when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
+of literal points never turns while solving: it only moves. Shapes through guessed points (a
+Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes or
+structures placed relative to each other (a constraint on one moves all, by translation); a
+rigid structure is moved, never bent.
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
