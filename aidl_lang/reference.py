@@ -760,9 +760,11 @@ EXAMPLES: dict[str, str] = {
                             "hole h { c = Circle(center=(0, 0), radius=2) }\nFixed(body)\n"
                             "corners = CornerPattern(h, body, 5)", "plate"),
     "Rigid": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\n"
-                    "hole a { c = Circle(center=(-10, 0), radius=3) }\n"
-                    "hole b { c = Circle(center=(10, 0), radius=3) }\nFixed(body)\n"
-                    "Rigid(a, b)\na.c.center == (-12, 2)    # b moves with a: to (8, 2)",
+                    "hole pins {\n    a = Circle(center=(-10, 0), radius=3)\n"
+                    "    b = Circle(center=(10, 0), radius=3)\n    Rigid(a, b)    # shapes: "
+                    "moved together\n}\nFixed(body)\n"
+                    "pins.a.center == (-12, 2)    # b moves with a: to (8, 2)\n"
+                    "assert pins.b.center == (8, 2)",
                     "plate"),
     "AllowOverlap": _solid("body = Rectangle(center=(0, 0), width=60, height=30)\n"
                            "solid tab {\n    r = Rectangle(center=(30, 0), width=10, "
@@ -799,8 +801,8 @@ EXAMPLES: dict[str, str] = {
                  "0), width=60, height=40) }\n    solid spacer {\n        thickness 6 mm\n"
                  "        c = Circle(center=(50, 0), radius=8)\n    }\n}\n",
     "solid": "solid plate {\n    body = Rectangle(center=(0, 0), width=60, height=30)\n"
-             "    solid boss { c = Circle(center=(-15, 12), radius=8) }  # plate's child: bore "
-             "cuts it too\n    hole bore { c = Circle(center=(-15, 12), radius=4) }  # an "
+             "    solid boss { c = Circle(center=(-15, 10), radius=8) }  # plate's child: bore "
+             "cuts it too\n    hole bore { c = Circle(center=(-15, 10), radius=4) }  # an "
              "opening through body and boss\n}\n",
     "hole": "solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
             "    hole bore { c = Circle(center=(0, 0), radius=5) }\n"

@@ -240,3 +240,62 @@ def test_unknown_argument_hint_gives_every_unit(tmp_path):
     assert d.suggestions[0] == "center"
     assert "units: points `(x, y)`: center; lengths (the file's unit" in d.hint
     assert "radius, diameter" in d.hint
+
+
+# ------------------------------------------------------------------ what the prompt claims
+def _booleans_example() -> str:
+    from aidl_lang.llm.prompt import code_blocks
+    return code_blocks(system_prompt(examples=0))[0]
+
+
+def test_the_prompt_booleans_example_is_true():
+    """The four-line example: the hole cuts its solid's own shape and its solid child (one
+    opening through both); declared inside the child instead, it cuts only the child and the
+    parent's body fills it again (W0501)."""
+    import aidl_lang
+    src = _booleans_example()
+    r = aidl_lang.compile(src, path="booleans.aidl")
+    assert r.ok and not r.diagnostics
+    [part] = r.parts
+    assert part.holes == 1
+    # body 60 x 30 plus the boss's cap above y = 15, minus the whole bore (r = 4)
+    import math
+    cap = 64 * math.acos(5 / 8) - 5 * math.sqrt(64 - 25)      # circular segment, h = 3
+    assert part.area == pytest.approx(60 * 30 + cap - math.pi * 16, abs=1e-3)
+    inside = src.replace("    hole bore { c = Circle(center=(-15, 10), radius=4) }   # opening "
+                         "through body and boss\n", "")
+    inside = inside.replace("radius=8) }", "radius=8)\n        hole bore { c = Circle(center="
+                            "(-15, 10), radius=4) } }")
+    assert inside != src and "hole bore" in inside
+    r = aidl_lang.compile(inside, path="booleans.aidl")
+    assert "W0501" in [d.code for d in r.diagnostics]
+    assert r.parts[0].holes == 0                   # the body filled the opening again
+
+
+@pytest.mark.parametrize("turn", [
+    "tri = Polygon([(0, 0), (20, 0), (10, 10)])\n    tri.edges[0].angle == 30 deg",
+    "r = Rectangle(center=(0, 0), width=20, height=10)\n    r.bottom.angle == 30 deg",
+    "a = Rectangle(center=(0, 0), width=20, height=10)\n    b = Rectangle(center=(30, 0), "
+    "width=10, height=10)\n    Rigid(a, b)\n    Angle(a.bottom, b.bottom, 30 deg)",
+])
+def test_shapes_the_prompt_says_never_turn_do_not(turn, tmp_path):
+    d = _diag("solid p {\n    " + turn + "\n}\n", "E0401", tmp_path)
+    assert "conflict" in d.message
+
+
+def test_a_line_through_guessed_points_may_turn(tmp_path):
+    src = ("solid p {\n    a = Line((0, 0), (20, 0))\n    b = Line(start=a.end, end=(0, 10))\n"
+           "    c = Line(start=b.end, end=a.start)\n    Fixed(a.start)\n    a.angle == 30 deg\n}\n")
+    res = compile_source(src, str(tmp_path / "p.aidl"))
+    assert res.ok and not [d for d in res.sink.items if d.severity == "error"]
+
+
+def test_rigid_ties_shapes_together_but_not_two_structures(tmp_path):
+    """What the prompt says of Rigid: shapes move together; each structure only keeps its
+    own shape (the second hole stays free to go elsewhere)."""
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    hole a { c = Circle(center=(-10, 0), radius=3) }\n"
+           "    hole b { c = Circle(center=(10, 0), radius=3) }\n    Fixed(body)\n"
+           "    Rigid(a, b)\n    a.c.center == (-12, 2)\n    b.c.center == (12, -2)\n}\n")
+    res = compile_source(src, str(tmp_path / "p.aidl"))
+    assert res.ok and not res.sink.items

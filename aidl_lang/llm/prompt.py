@@ -60,8 +60,8 @@ a hole cuts the solid it is declared in, that solid's own shapes and solid child
 ```aidl
 solid plate {
     body = Rectangle(center=(0, 0), width=60, height=30)
-    solid boss { c = Circle(center=(-15, 12), radius=8) }  # plate's child: bore cuts it too
-    hole bore { c = Circle(center=(-15, 12), radius=4) }   # opening through body and boss
+    solid boss { c = Circle(center=(-15, 10), radius=8) }  # plate's child: bore cuts it too
+    hole bore { c = Circle(center=(-15, 10), radius=4) }   # opening through body and boss
 }
 ```
 A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
@@ -70,9 +70,9 @@ copies beside the original, in the original's structure.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
-Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes or
-structures placed relative to each other (a constraint on one moves all, by translation); a
-rigid structure is moved, never bent.
+Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes
+placed relative to each other (a constraint on one moves all, by translation); `Rigid(s)`
+makes a structure move whole, never bent (two rigid structures still move independently).
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
