@@ -167,7 +167,7 @@ instance to other parts with constraints in the parent structure.
     "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
     "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
     "E0304": ("evaluation budget exhausted", """
-One compile has one evaluation budget (docs/language.md §8.1): 250 000 steps (every loop
+One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
 one list, and 15 s of wall time for the whole compile. Each construct's own limit
@@ -296,7 +296,7 @@ cuts. Declare the hole in the common parent, so that it cuts everything united t
     # fix: move `hole key { ... }` out of `body` into `lock`
 
 When the refill is intended (a boss over a relief cut, say), silence it for that pair only
-with `AllowOverlap(body.key, shackle)` written in `lock` (docs/language.md 4.5).
+with `AllowOverlap(body.key, shackle)` written in `lock` (`aidl docs AllowOverlap`).
 """),
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
@@ -399,7 +399,7 @@ the solved value. Give a number or a param, or relate the shapes with a constrai
 `//` between two numbers or lengths is floor division (`7 // 2` is 3), and its result is used
 as a length, or is a length (`80 mm // 3` is 26 mm): the fraction is dropped, which is rarely
 meant for a size. Write `/` for division. `//` is read as floor division after an operand and
-before code (docs/language.md, "Comments"); if it was meant as a comment, write `#`.
+before code (`aidl docs comments`); if it was meant as a comment, write `#`.
 
     r = Rectangle(center=(0, 0), width=80 // 3, height=10)   # 26 mm: write 80 / 3
     w = 80 // width        # floor division by `width`; a comment is `# width`

@@ -131,13 +131,19 @@ class DiagnosticSink:
 
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:
-    """Nearest known names to ``name`` (case-insensitive similarity, then difflib ratio)."""
+    """Nearest known names to ``name``: first those that differ only in case or word style
+    (``SpurGear``, ``spur-gear`` and ``SPUR_GEAR`` for ``spur_gear``), then by difflib ratio."""
     import difflib
+    import re
     cands = sorted(set(c for c in candidates if c and not c.startswith("_")))
     lower = {c.lower(): c for c in cands}
     out: list[str] = []
     if name.lower() in lower and lower[name.lower()] != name:
         out.append(lower[name.lower()])
+    key = re.sub(r"[^a-z0-9]", "", name.lower())
+    for c in cands:
+        if c != name and c not in out and key and re.sub(r"[^a-z0-9]", "", c.lower()) == key:
+            out.append(c)
     for m in difflib.get_close_matches(name.lower(), list(lower), n=n, cutoff=0.6):
         if lower[m] not in out:
             out.append(lower[m])

@@ -119,6 +119,7 @@ class Checker:
         self.path = path
         self.import_failed = False     # names may come from an import that failed: no E0101/E0103
         self.templates: dict[str, A.Def] = {}
+        self.imported: dict[str, A.Def] = {}    # templates imported without `as`, by name
         self.bound: set = set()        # (name, arguments, keyword names) of registry calls that bind
 
     # ------------------------------------------------------------------ scopes
@@ -159,7 +160,8 @@ class Checker:
                 else:
                     try:
                         file_names |= _imported_names(program.path, st.path,
-                                                      frozenset({_real(program.path)}), memo)
+                                                      frozenset({_real(program.path)}), memo,
+                                                      self.imported)
                     except ImportRefused as ex:
                         self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
                                         suggestions=ex.suggestions)
@@ -295,10 +297,27 @@ class Checker:
         if entry is None and self.import_failed:
             return
         if entry is None:
-            cands = list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS) + list(self.templates)
+            cands = (list(ENTRIES) + list(SYNONYMS) + list(FUNCTIONS) + list(self.templates)
+                     + [c for c in scope.all() if c in self.imported])
             sugg = did_you_mean(n, cands)
             hint = HALLUCINATIONS.get(n) or (f"did you mean `{sugg[0]}`?" if sugg else
-                                             "see docs/language.md for the primitives and constraints")
+                                             "`aidl docs` lists every shape, constraint and "
+                                             "standard-library template")
+            d_sugg = (self.templates.get(sugg[0]) or self.imported.get(sugg[0])) if sugg else None
+            if d_sugg is not None and n not in HALLUCINATIONS:
+                from .reference import template_params_hint
+                hint += " " + template_params_hint(d_sugg)
+            elif sugg and n not in HALLUCINATIONS and lookup(sugg[0]) is not None:
+                e_sugg = lookup(sugg[0])
+                hint += " " + "; ".join(e_sugg.signature(v) for v in e_sugg.variants)
+            elif not sugg and n not in HALLUCINATIONS:
+                from .reference import find
+                t = find(n)             # `aidl docs` knows it: a stdlib template not imported
+                if t is not None and t.kind.endswith(".aidl"):
+                    module = t.kind.rsplit("std/", 1)[1]
+                    hint = (f"`{t.name}` is a template of the standard library: write "
+                            f"`import \"std/{module}\"` at the top, then `{t.name}(...)`; "
+                            f"`aidl docs {t.name}` gives its parameters")
             d = self.sink.error("E0103", f"unknown function `{n}`", f.span, hint=hint,
                                 suggestions=sugg)
             if n in HALLUCINATIONS:
@@ -315,11 +334,13 @@ class Checker:
         all_names = accepted_args(entry)
         bad = next((k for k in e.kwargs if k.name not in all_names), None)
         if bad is not None:
+            from .reference import entry_units_hint
             sugg = did_you_mean(bad.name, all_names)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
                             hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + "forms: "
                             + "; ".join(entry.signature(v) for v in entry.variants)
-                            + f"; accepted names: {', '.join(all_names)}",
+                            + f"; accepted names: {', '.join(all_names)}; units: "
+                            + entry_units_hint(entry),
                             suggestions=sugg)
             return
         code = "E0106" if reason and reason.startswith("missing") else "E0104"
@@ -339,10 +360,11 @@ class Checker:
         for kw in e.kwargs:
             name = template_param(kw.name, params)
             if name is None:
+                from .reference import template_params_hint
                 sugg = did_you_mean(kw.name, params)
                 self.sink.error("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
                                 hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
-                                + f"parameters: {', '.join(params) or 'none'}", suggestions=sugg)
+                                + "parameters: " + template_params_hint(d), suggestions=sugg)
             elif name in given:
                 self.sink.error("E0105", f"`{d.name}`: `{name}` is given twice"
                                 + (f" (`{kw.name}` is another name for it)" if name != kw.name
@@ -358,7 +380,7 @@ MAX_IMPORT_DEPTH = 16
 
 
 def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
-                    memo: dict | None = None) -> set:
+                    memo: dict | None = None, defs: dict | None = None) -> set:
     """Names ``import "target"`` (in the file ``path``) brings without ``as``: the file's
     templates, params and top-level constants, aliases, and what it imported in turn
     (docs/language.md §2.2).  Raises :class:`~aidl_lang.sources.ImportRefused` for the
@@ -366,7 +388,8 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
     interpreter reports it where it is written).  ``memo`` (real path -> names) makes each
     file read and parsed once per check: an import graph costs linear time (a diamond of
     16 levels, each file importing the two of the next, was read on every path: 2^16
-    times, 82 s)."""
+    times, 82 s).  ``defs`` (name -> :class:`~aidl_lang.ast.Def`), when given, receives the
+    templates read, for the hints that list a template's parameters."""
     from .sources import read_import, resolve_import
     from .parser import parse
     real = resolve_import(target, path)
@@ -381,12 +404,14 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
     for st in prog.stmts:
         if isinstance(st, (A.Def, A.ParamDecl, A.Assign)):
             out.add(st.name)
+            if defs is not None and isinstance(st, A.Def):
+                defs.setdefault(st.name, st)
         elif isinstance(st, A.Import):
             if st.alias:
                 out.add(st.alias)
             else:
                 try:
-                    out |= _imported_names(key, st.path, seen | {key}, memo)
+                    out |= _imported_names(key, st.path, seen | {key}, memo, defs)
                 except ImportRefused:
                     pass
     if memo is not None:

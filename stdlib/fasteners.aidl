@@ -11,7 +11,7 @@ clearance_coarse = [2.6 mm, 3.1 mm, 3.6 mm, 4.8 mm, 5.8 mm, 7 mm, 10 mm]
 nut_across_flats = [4 mm, 5 mm, 5.5 mm, 7 mm, 8 mm, 10 mm, 13 mm]
 nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm]
 
-# A through hole for a metric screw of `size` (3 for M3) by ISO 273: `fit`
+# A through hole for a metric screw (ISO 273). `size` 3 is M3; `fit`
 # "fine" (also "close"), "medium" (also "normal") or "coarse" (also "loose").
 # M3 medium is 3.4 mm. Member: `c` (the circle).
 def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
@@ -27,9 +27,9 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
     Fixed(c.center)
 }
 
-# A hexagonal cut-out that holds an ISO 4032 nut of `size` from turning:
-# across flats s (5.5 mm for M3) plus `clearance`, flats at top and bottom
-# (turn with `rotation`). Member: `hex` (a RegularPolygon).
+# A hexagonal cut-out that holds a metric nut (ISO 4032) from turning. It is
+# across flats s of the nut of `size` (5.5 mm for M3) plus `clearance`, flats
+# at top and bottom (turn with `rotation`). Member: `hex` (a RegularPolygon).
 def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
@@ -38,11 +38,12 @@ def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     Fixed(hex.center)
 }
 
-# A T-slot for a screw of `size` entering a panel from its edge (the joint of
-# laser-cut boxes): a slot as wide as the medium clearance hole running
+# A T-slot: a screw and its nut entering a panel from its edge (the joint of
+# laser-cut boxes). For a screw of `size`: a slot as wide as the medium clearance hole running
 # `length` from the edge (the mouth at (cx, cy), running toward -y when
 # `rotation` is 0), crossed by a pocket for the nut (across flats wide, nut
-# thickness deep plus `clearance`) at `nut_depth` from the edge.
+# thickness deep plus `clearance`) at `nut_depth` from the edge. Members:
+# `slot`, `nut` (Rectangles).
 def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 deg,
            cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]

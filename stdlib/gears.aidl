@@ -5,12 +5,13 @@
 # the involute is written as tangent circular arcs (within 0.001 mm of the
 # true involute) and what is simplified (no root fillet, no undercut).
 
-# An involute spur gear of `teeth` teeth and module `module` (pitch diameter
-# module * teeth, outer diameter module * (teeth + 2)), centered at (cx, cy),
-# one tooth pointing along `phase` (0 deg: along +x). A `bore` of 0 leaves the
-# center solid. `backlash` thins every tooth by that much along the pitch
-# circle. Members: `pitch` and `tip` (construction circles of the pitch and
-# outer diameters), `hub` (the root disk), `teeth_ring`, `bore_hole`.
+# An involute spur gear with a center bore. It has `teeth` teeth of module
+# `module` (pitch diameter module * teeth, outer diameter module * (teeth + 2)),
+# is centered at (cx, cy), one tooth pointing along `phase` (0 deg: along +x).
+# A `bore` of 0 leaves the center solid. `backlash` thins every tooth by that
+# much along the pitch circle. Members: `pitch` and `tip` (construction
+# circles of the pitch and outer diameters), `hub` (the root disk; the gear's
+# center is `hub.center`), `teeth_ring`, `bore_hole` (a hole, when the bore is not 0).
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
@@ -117,10 +118,11 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     }
 }
 
-# Two meshing spur gears of one module: `gear1` (teeth1) centered at (cx, cy)
-# with a tooth pointing along `angle`, and `gear2` (teeth2) on that line at the
-# center distance module * (teeth1 + teeth2) / 2, turned so that a tooth of
-# gear1 sits in a gap of gear2. `center_distance` is readable as a member.
+# Two meshing spur gears of one module, as an assembly. `gear1` (teeth1) is
+# centered at (cx, cy) with a tooth pointing along `angle`, and `gear2`
+# (teeth2) on that line at the center distance module * (teeth1 + teeth2) / 2,
+# turned so that a tooth of gear1 sits in a gap of gear2. Members: `gear1`,
+# `gear2` (spur_gear instances), `center_distance` (a length).
 def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
               bore1=0 mm, bore2=0 mm, backlash=0 mm, angle=0 deg,
               cx=0 mm, cy=0 mm) -> assembly {

@@ -5,9 +5,9 @@
 # widens every finger and narrows every slot by the kerf, so joints fit as
 # drawn.
 
-# A rectangular panel `width` x `height` (outer size, centered at (cx, cy))
-# for material `thickness`, each edge one of "fingers", "slots" or "flat".
-# Along an edge, the part between the two corner squares (thickness x
+# A box panel with finger joints: `width` x `height` (outer size, centered at
+# (cx, cy)) for material `thickness`. Each edge is one of "fingers", "slots"
+# or "flat". Along an edge, the part between the two corner squares (thickness x
 # thickness) is cut into an odd number of equal segments, each at least
 # `finger` wide (the largest odd count that fits, but at least 3 as long as
 # they stay `thickness` wide); "fingers" keeps the even
@@ -64,9 +64,10 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     }
 }
 
-# A closed finger-jointed box (`closed=false`: open-top, no lid) of outer
-# size `length` x `depth` x `height` from material `thickness`, as six panels laid
-# out flat (a net, `gap` apart) around the bottom centered at (cx, cy): front
+# A finger-jointed box as six flat panels (`closed=false`: open-top, no lid).
+# Its outer size is `length` x `depth` x `height` from material `thickness`;
+# the panels are laid out flat (a net, `gap` apart) around the bottom
+# centered at (cx, cy): front
 # below it, back above it, the lid above the back, left and right beside it.
 # The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the

@@ -25,8 +25,9 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
     Fixed(body.points[0])
 }
 
-# A rounded plate with a clearance hole for a metric screw (`screw` 3: M3,
-# ISO 273 `fit`) in each corner, `inset` from both edges. Members: `body`,
+# A rounded plate with a screw hole in each corner. The holes are
+# clearance holes for a metric screw (`screw` 3: M3, ISO 273 `fit`),
+# `inset` from both edges. Members: `body`,
 # `corner[0..3]` (clearance_hole instances, counter-clockwise from the
 # bottom left).
 def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
@@ -41,7 +42,7 @@ def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="
     }
 }
 
-# A keyhole to hang a part on a screw: a round opening of `head` diameter for
+# A keyhole to hang a part on a screw. A round opening of `head` diameter for
 # the screw head, at (cx, cy), and a slot of `slot_width` (the shank) running
 # `length` from its center toward `direction` (90 deg: up, so the part drops
 # onto the screw). Members: `head_hole` (Circle), `slot` (Slot).
@@ -61,9 +62,8 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     Fixed(s.center)
 }
 
-# A living hinge: a band `width` x `height` (centered at (cx, cy)) of
-# staggered straight cuts that lets a plate of stiff sheet bend about the
-# band's long axis (y). Columns of cuts `pitch` apart; each cut is `cut`
+# A living hinge: staggered cuts that let stiff sheet bend. The band is
+# `width` x `height` (centered at (cx, cy)) and bends about its long axis (y). Columns of cuts `pitch` apart; each cut is `cut`
 # long and `kerf_width` wide with `bridge` of material between cuts of a
 # column; every second column is shifted by half a period, and its end cuts
 # run `overrun` past the band's top and bottom (so a band as tall as the
@@ -97,10 +97,10 @@ def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
     }
 }
 
-# `text` set along a circle of `radius` about (cx, cy), centered on the
-# direction `angle` (90 deg: over the top) and reading clockwise (left to
-# right across the top), one Text per character, their baselines on the
-# circle. Characters are placed `spacing` x `size` apart along the arc (the
+# Text set along an arc, to engrave. The `text` follows a circle of `radius`
+# about (cx, cy), centered on the direction `angle` (90 deg: over the top),
+# reading clockwise (left to right across the top), one Text per character,
+# their baselines on the circle. Characters are placed `spacing` x `size` apart along the arc (the
 # font is proportional, so this spacing is an average: wide letters sit a
 # little closer). Members: `ch` (the characters' Texts, spaces left out).
 def text_on_arc(text="AIDL", radius=30 mm, size=5 mm, angle=90 deg, spacing=0.9,

@@ -3,7 +3,8 @@
 # Positions (cx, cy) are starting guesses: place an instance with constraints
 # (CenterInside, Above, Coincident, ...) in the structure that uses it.
 
-# A flat washer: a ring with a concentric bore. Diameters.
+# A flat washer: a ring with a concentric bore. `outer` and `inner` are
+# diameters. Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
     ring = Circle(center=(cx, cy), diameter=outer)
     hole bore {
@@ -12,8 +13,9 @@ def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
     Concentric(bore.b, ring)
 }
 
-# `count` holes of diameter `hole_d` evenly spaced on a circle of diameter
-# `pcd` (pitch circle diameter), the first at angle `start`.
+# Bolt holes evenly spaced on a circle. There are `count` holes of diameter
+# `hole_d` on a circle of diameter `pcd` (pitch circle diameter), the first at
+# angle `start`. Members: `pitch` (construction Circle), `bolt[i]` (Circles).
 def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     pitch = Circle(center=(cx, cy), diameter=pcd, construction=true)
@@ -27,6 +29,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 # A mounting tab: a rectangle with a round end (pointing up) and a hole in
 # the round end. `length` runs from the flat base to the tip of the round end
 # (make it at least `width`, or the round end pokes out below the base).
+# Members: `stem` (Rectangle), `end` (Circle), `eye` (the hole; `eye.e`).
 def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
     stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
     end = Circle(center=(cx, cy + length - width / 2), diameter=width)
@@ -37,12 +40,13 @@ def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> sol
     Concentric(eye.e, end)
 }
 
-# An oblong hole, e.g. for an adjustable screw.
+# An oblong hole, e.g. for an adjustable screw. Member: `s` (a Slot).
 def slot_hole(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
 }
 
 # A hexagonal pocket for a nut, sized across flats (flats at top and bottom).
+# Member: `hex` (a RegularPolygon).
 def hex_pocket(across_flats=8 mm, cx=0 mm, cy=0 mm) -> hole {
     hex = RegularPolygon(center=(cx, cy), across_flats=across_flats, sides=6)
 }

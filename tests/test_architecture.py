@@ -48,7 +48,7 @@ def test_flat_package_is_gone():
     public API (`api`)."""
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
     assert top == ["api", "ast", "cache", "codes", "diagnostics", "interp", "limits", "memory", "parser",
-                   "pipeline", "registry", "sources", "typecheck"]
+                   "pipeline", "reference", "registry", "sources", "typecheck"]
 
 
 def test_readme_layout_names_every_package_and_core_module():

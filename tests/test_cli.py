@@ -304,10 +304,11 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
     samples = [["render", "a.aidl", "-o", "a.svg", "-o", "a.dxf", "--set", "w=3mm", "--dpi", "200"],
                ["check", "a.aidl", "--json", "--dof", "--budget", "2"],
                ["check", "a.aidl", "--values", "plate.bore", "--json"], ["explain", "E0202"],
+               ["docs", "SpurGear"], ["docs"],
                ["parts", "a.aidl", "--json", "--set", "w=3mm"],
                ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
                ["serve", "a.aidl", "--port", "0"], ["mcp", "--root", "parts", "--budget", "2"],
-               ["prompt", "--words"],
+               ["prompt", "--words"], ["prompt", "--examples", "3"],
                ["batch", "d", "x.jsonl", "-o", "o.parquet", "--render", "svg", "--out-dir", "r",
                 "--workers", "2", "--scheduler", "local", "--set", "w=3", "--timeout", "5"],
                ["generate", "a wrench", "-o", "w.aidl", "--rounds", "2"], ["eval", "p.txt"]]

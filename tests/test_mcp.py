@@ -50,7 +50,7 @@ async def test_mcp_server_over_stdio(tmp_path):
         async with ClientSession(read, write) as session:
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
-            assert set(tools) == {"check", "render", "values", "explain"}
+            assert set(tools) == {"check", "render", "values", "explain", "docs"}
             assert "source" in tools["check"].input_schema["properties"]
             assert tools["check"].annotations.read_only_hint
             assert not tools["render"].annotations.read_only_hint
@@ -107,6 +107,29 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert "def " in got.contents[0].text
             got = await session.read_resource("aidl://prompt")
             assert "Rectangle" in got.contents[0].text
+
+            # docs: the tool gives what `aidl docs` prints; every topic is a resource
+            from aidl_lang.reference import find, index_text, topics
+            r = await session.call_tool("docs", {"name": "SpurGear"})
+            assert not r.is_error and _text(r) == find("spur_gear").render()
+            assert "bore_hole" in _text(r) and "phase = 0 deg: angle" in _text(r)
+            assert _text(await session.call_tool("docs", {})) == index_text()
+            r = await session.call_tool("docs", {"name": "spur_gaer"})
+            assert r.is_error and "did you mean `spur_gear`" in _text(r)
+            assert {f"aidl://docs/topic/{n}" for n in topics()} | {"aidl://docs/topics"} <= uris
+            got = await session.read_resource("aidl://docs/topic/assert")
+            assert got.contents[0].text == find("assert").render()
+
+            # the system prompt, offered as a prompt too
+            from aidl_lang.llm.prompt import system_prompt
+            prompts = {p.name: p for p in (await session.list_prompts()).prompts}
+            assert set(prompts) == {"aidl"}
+            got = await session.get_prompt("aidl", {})
+            [msg] = got.messages
+            assert msg.role == "user" and msg.content.text == system_prompt()
+            got = await session.get_prompt("aidl", {"request": "a washer 20 mm across"})
+            assert got.messages[0].content.text.endswith("Design this part: a washer 20 mm "
+                                                         "across\n")
 
 
 def test_workspace_refuses_what_is_outside(tmp_path):

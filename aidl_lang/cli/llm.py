@@ -13,7 +13,10 @@ def add_commands(add) -> None:
     """Register the subcommands: ``add(name, **kwargs)`` is the ``aidl`` subparsers'
     ``add_parser`` (or stands in for it: :func:`aidl_lang.cli.main._parser`)."""
     p = add("prompt", help="print the system prompt for an LLM that writes AIDL")
-    p.add_argument("--no-examples", action="store_true", help="leave out the example programs")
+    p.add_argument("--examples", type=int, default=None, metavar="N",
+                   help="include the first N example programs (default 2, at most 4; 0: none)")
+    p.add_argument("--no-examples", action="store_true",
+                   help="leave out the example programs (--examples 0)")
     p.add_argument("--words", action="store_true", help="print the size in words to stderr")
     for name, hlp in (("generate", "ask an LLM for a program until it checks"),
                       ("eval", "run `generate` over a prompt list and write a report")):
@@ -56,7 +59,11 @@ def _client(args):
 
 def cmd_prompt(args) -> int:
     from ..llm.prompt import system_prompt, word_count
-    text = system_prompt(examples=not args.no_examples)
+    if args.examples is not None and args.examples < 0:
+        _say("aidl: error: --examples must be at least 0")
+        return 2
+    text = system_prompt(examples=0 if args.no_examples else
+                         (True if args.examples is None else args.examples))
     sys.stdout.write(text)
     if args.words:
         _say(f"{word_count(text)} words, {len(text)} characters")

@@ -66,7 +66,7 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "fmt", "lsp", "serve", "mcp", "batch",
+SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "fmt", "lsp", "serve", "mcp", "batch",
                "prompt", "generate", "eval")
 
 
@@ -178,6 +178,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     _budget_arg(pl)
     e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
+    dc = add("docs", help="the reference of a shape, constraint, statement or stdlib template, "
+                          "e.g. aidl docs spur_gear; alone: the list of topics")
+    dc.add_argument("name", nargs="?", default=None,
+                    help="a topic (any case or style: SpurGear, spur-gear); none: list them")
     f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
@@ -195,7 +199,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
     m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
-            description="Serve AIDL's tools (check, render, values, explain) and resources "
+            description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
                         "(language reference, prompt, stdlib, examples) to an MCP host over "
                         "stdio. Only files inside --root can be read or written.")
     m.add_argument("--root", default=".", metavar="DIR",
@@ -630,6 +634,19 @@ def cmd_explain(args) -> int:
     return 0
 
 
+def cmd_docs(args) -> int:
+    from ..reference import index_text, lookup_text
+    if args.name is None:
+        sys.stdout.write(index_text())
+        return 0
+    text, found = lookup_text(args.name)
+    if not found:
+        print(f"aidl: {text.rstrip()}", file=sys.stderr)
+        return 2
+    sys.stdout.write(text)
+    return 0
+
+
 def cmd_fmt(args) -> int:
     from ..editor.fmt import main as fmt_main
     return fmt_main(args.files, check=args.check)
@@ -681,7 +698,7 @@ def main(argv: list[str] | None = None) -> int:
     _command = args.cmd
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
-               "explain": cmd_explain,
+               "explain": cmd_explain, "docs": cmd_docs,
                "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp,
                "batch": cmd_batch}.get(args.cmd)
         if run is None:
@@ -711,7 +728,7 @@ def main(argv: list[str] | None = None) -> int:
 _command: str | None = None
 # Commands that leave nothing behind when main() returns: outputs are written and renamed,
 # cache files written, no threads or atexit work.
-_QUICK_EXIT = frozenset({"check", "render", "parts", "explain", "fmt"})
+_QUICK_EXIT = frozenset({"check", "render", "parts", "explain", "docs", "fmt"})
 
 
 def entry() -> None:

@@ -83,8 +83,10 @@ class Calls:
             ok = accepted_args(entry)
             bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
+                from ..reference import entry_units_hint
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
-                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}",
+                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}"
+                                     f"\nunits: {entry_units_hint(entry)}",
                                 suggestions=did_you_mean(bad_kw.name, ok))
             code = "E0106" if reason and reason.startswith("missing") else "E0104"
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())

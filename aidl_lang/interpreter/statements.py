@@ -593,9 +593,12 @@ class Statements:
         for kw in call.kwargs:
             param = template_param(kw.name, params)
             if param is None:
+                from ..reference import template_params_hint
+                sugg = did_you_mean(kw.name, params)
                 raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
-                                hint=f"parameters: {', '.join(params) or 'none'}",
-                                suggestions=did_you_mean(kw.name, params))
+                                hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
+                                + "parameters: " + template_params_hint(d),
+                                suggestions=sugg)
             if param in vals:
                 raise EvalError("E0105", f"`{d.name}`: `{param}` is given twice", kw.span,
                                 hint=f"give `{param}` once")

@@ -2,8 +2,10 @@
 
 Built from the registry (every primitive, constraint, structural relation, operation and
 function with its signature and one-line doc; of the synonyms only those that swap their
-arguments, since the others are accepted silently) and from a few bundled example programs, so
-it never drifts from the implementation.  It is kept compact because a model reads it on every
+arguments, since the others are accepted silently), from the standard library's doc comments
+(every template with its signature and the first sentence of the comment above its ``def``:
+:func:`aidl_lang.reference.stdlib_lines`) and from a few bundled example programs, so it never
+drifts from the implementation.  It is kept compact because a model reads it on every
 call: :func:`word_count` measures it (about 0.75 words per token for English and code).
 """
 from __future__ import annotations
@@ -11,13 +13,16 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ..reference import stdlib_lines
 from ..registry import (BBOX_MEMBERS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE,
                         UNITS_LENGTH)
 
 EXAMPLES_DIR = Path(__file__).resolve().parent.parent.parent / "examples"
-# short and varied: hierarchy + stacking relations; holes, loops and bounding-box equations;
-# drawings, text and params; templates, fillets and patterns
-PROMPT_EXAMPLES = ["toy_sword.aidl", "bottle_opener.aidl", "name_tag.aidl", "bracket.aidl"]
+# short and varied, most useful first: holes, loops and bounding-box equations; templates,
+# fillets and patterns; hierarchy + stacking relations; drawings, text and params.
+# `aidl prompt` gives the first DEFAULT_EXAMPLES; `--examples N` the first N.
+PROMPT_EXAMPLES = ["bottle_opener.aidl", "bracket.aidl", "toy_sword.aidl", "name_tag.aidl"]
+DEFAULT_EXAMPLES = 2
 
 INTRO = """\
 You write AIDL, a text language for 2D CAD parts (output: an SVG outline). Reply with one
@@ -45,12 +50,34 @@ constraints instead of computing coordinates. A shape given by literal coordinat
 (`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
 may only use names defined above it; constraint statements may name geometry defined later.
 A child structure's geometry is `child.name`, the current one is `self`; every geometry and
-structure has `.bb` (bounding box).
+structure has `.bb` (bounding box). A structure's box covers all it holds, holes included (a
+hole poking past the edge widens it; construction geometry does not count): for the material
+alone use a shape's box (`plate.body.bb`).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
 points of its own structure. Booleans: a solid is the union of its shapes and solid children
-(touching or overlapping parts merge into one outline) minus its hole children; a hole cuts
-only its enclosing solid, which is then unioned with its siblings (a sibling can cover the
-hole). Patterns and Mirrored put copies beside the original, in the original's structure.
+(touching or overlapping parts merge into one outline) minus its hole children. So
+a hole cuts the solid it is declared in, that solid's own shapes and solid children alike:
+```aidl
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=30)
+    solid boss { c = Circle(center=(-15, 10), radius=8) }  # plate's child: bore cuts it too
+    hole bore { c = Circle(center=(-15, 10), radius=4) }   # opening through body and boss
+}
+```
+A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
+the cut solid is united with its own siblings, which are not cut. Patterns and Mirrored put
+copies beside the original, in the original's structure.
+`Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
+when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
+of literal points never turns while solving: it only moves. Shapes through guessed points (a
+Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes
+placed relative to each other (a constraint on one moves all, by translation); `Rigid(s)`
+makes a structure move whole, never bent (two rigid structures still move independently).
+`assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
+never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
+solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
+the parts list) and `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it so
+parts come out at size) stand at the top or inside a structure (for it and its children).
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
@@ -144,12 +171,22 @@ def example_programs(names: list[str] | None = None) -> list[tuple[str, str]]:
     return out
 
 
-def system_prompt(examples: bool = True) -> str:
-    """The whole system prompt: description, vocabulary and (optionally) example programs."""
-    parts = [INTRO, vocabulary()]
-    if examples:
+def stdlib() -> str:
+    """The standard library's templates, one line each, from their doc comments."""
+    return ("Standard library: templates to instantiate, never to rewrite by hand (each also "
+            "takes `cx, cy`: where its center starts; `aidl docs NAME` gives every unit, "
+            "member and an example):\n" + stdlib_lines())
+
+
+def system_prompt(examples: bool | int = True) -> str:
+    """The whole system prompt: description, vocabulary, standard library and example
+    programs: ``examples`` of them (``True``: :data:`DEFAULT_EXAMPLES`; ``False``/0: none;
+    at most all of :data:`PROMPT_EXAMPLES`)."""
+    n = DEFAULT_EXAMPLES if examples is True else int(examples)
+    parts = [INTRO, vocabulary(), stdlib()]
+    if n > 0:
         parts.append("Examples:")
-        for name, text in example_programs():
+        for name, text in example_programs(PROMPT_EXAMPLES[:n]):
             parts.append(f"```aidl\n{text}\n```")
     return "\n\n".join(p.strip() for p in parts) + "\n"
 

@@ -2,9 +2,11 @@
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
-``values``, ``explain``.  Resources: ``aidl://docs/language`` (the language reference),
-``aidl://docs/api``, ``aidl://prompt`` (the ``aidl prompt`` text, when the caller provides it),
-``aidl://stdlib/NAME`` and ``aidl://examples/NAME``.
+``values``, ``explain``, ``docs``.  Resources: ``aidl://docs/language`` (the language
+reference), ``aidl://docs/api``, ``aidl://docs/topics`` and ``aidl://docs/topic/NAME`` (the
+topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl prompt`` text, when the caller provides
+it), ``aidl://stdlib/NAME.aidl`` and ``aidl://examples/NAME.aidl``.  Prompt: ``aidl`` (the
+system prompt, when the caller provides it).
 """
 from __future__ import annotations
 
@@ -20,8 +22,10 @@ from . import tools as T
 
 INSTRUCTIONS = """AIDL is a text language for 2D CAD parts (laser cutting, CNC): named \
 structures (solid, hole, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
-constraints that a solver satisfies. Read aidl://prompt for the vocabulary and examples, or \
-aidl://docs/language for the full reference. Write a program, call `check` until it reports \
+constraints that a solver satisfies. Read aidl://prompt (also offered as the prompt `aidl`) \
+for the vocabulary, standard library and examples; call `docs` with a name (Circle, \
+spur_gear, assert, ...) for its units, members and an example, or read aidl://docs/language \
+for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
 more), then `render` to see it and `values` to read exact positions and sizes. Paths are \
 relative to the server's allowed folder; nothing outside it can be read or written."""
@@ -117,6 +121,25 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
+    @server.tool(structured_output=False, annotations=reads)
+    def docs(name: str | None = None) -> str:
+        """The reference of a shape, constraint, statement or standard-library template (as
+        `aidl docs NAME`): signature, the unit of every parameter, members and an example
+        program that compiles.  Any case or style finds a name (SpurGear, spur-gear); no
+        name: the list of topics."""
+        try:
+            return T.docs(name)
+        except T.Refused as e:
+            raise refused(e) from None
+
+    from ..reference import index_text, topics
+    server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
+                    description="`aidl docs`: every topic (statements, shapes, constraints, "
+                                "relations, operations, stdlib templates)")(index_text)
+    for name, topic in topics().items():
+        server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
+                        mime_type="text/plain",
+                        description=f"{topic.kind}: {topic.summary}")(topic.render)
     server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
                     description="The AIDL language reference (docs/language.md)")(
         _text_of(_DOCS / "language.md", "docs/language.md"))
@@ -127,6 +150,16 @@ def build_server(root: str, budget: float = 1.0,
         server.resource("aidl://prompt", name="system prompt", mime_type="text/plain",
                         description="`aidl prompt`: the vocabulary with signatures, and "
                                     "example programs")(lambda: prompt())
+
+        @server.prompt(name="aidl", title="Write AIDL",
+                       description="The AIDL system prompt (`aidl prompt`): the language, its "
+                                   "vocabulary with signatures, the standard library and example "
+                                   "programs; `request`: a part to design, appended")
+        def aidl_prompt(request: str | None = None) -> str:
+            text = prompt()
+            if request and request.strip():
+                text += f"\nDesign this part: {request.strip()}\n"
+            return text
     from ..sources import STDLIB
     for f in sorted(Path(STDLIB).glob("**/*.aidl")):
         rel = f.relative_to(STDLIB).as_posix()

@@ -151,6 +151,19 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     return doc, png
 
 
+def docs(name: str | None = None) -> str:
+    """The reference of one topic (a shape, constraint, statement or stdlib template), as
+    ``aidl docs NAME`` prints it; no name: the list of topics.  Raises :class:`Refused` for an
+    unknown name, with the nearest topics."""
+    from ..reference import index_text, lookup_text
+    if not (name or "").strip():
+        return index_text()
+    text, found = lookup_text(name)
+    if not found:
+        raise Refused(text.strip())
+    return text
+
+
 def explain(code: str) -> str:
     """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
     an unknown code, naming the known ones."""

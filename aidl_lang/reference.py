@@ -1,0 +1,841 @@
+"""The reference of every name a program may use: ``aidl docs NAME``, the MCP ``docs`` tool and
+resources, the stdlib lines of ``aidl prompt``, and the parameter lists of diagnostics.
+
+A *topic* is a shape, constraint, structural relation or operation (from the registry,
+:mod:`aidl_lang.registry`), a statement or concept (``assert``, ``kerf``, ``bb``, ...), or a
+standard-library template (``spur_gear``; from the comment block above its ``def`` in
+``stdlib/*.aidl``, so the reference cannot drift from the library).  Each topic prints its
+signature, the unit of every parameter, its members and a short example program that compiles
+(``tests/test_reference.py`` compiles them all).
+
+Lookups are lenient: case and word style (``SpurGear``, ``spur-gear``, ``SPUR_GEAR``), the
+registry's synonyms (``Orthogonal``) and a few words (``bbox``, ``elif``) find the topic;
+:func:`suggest` gives the nearest topics for anything else.
+
+Sources: the registry, the stdlib files (parsed with :mod:`aidl_lang.parser`, read once), and
+the statement texts and examples below.  Nothing here compiles a program.
+"""
+from __future__ import annotations
+
+import difflib
+import functools
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import ast as A
+from .registry import (BBOX_MEMBERS, CONSTANTS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYM_DOCS,
+                       SYNONYMS, UNITS_ANGLE, UNITS_LENGTH, Entry, arg_synonyms)
+from .sources import STDLIB
+
+# ---------------------------------------------------------------- units of parameters
+
+# an argument or parameter type -> what to write for it (its unit)
+KIND_TEXT = {
+    "length": "length: a number in the file's unit (mm unless `units`), or with a unit "
+              "(`5 mm`, `0.25 in`)",
+    "angle": "angle: degrees (`30` or `30 deg`; `1 rad`), counter-clockwise from +x",
+    "number": "number: a count or factor, no unit",
+    "point": "point: `(x, y)` in lengths, or a point member (`rect.top_left`)",
+    "points": "list of points: `[(x, y), ...]`",
+    "bool": "`true` or `false`",
+    "string": "text in double quotes",
+    "line": "a line: a Line, or a line member (`rect.top`, `slot.spine`)",
+    "circular": "a Circle or an Arc",
+    "curve": "a Line, Circle or Arc",
+    "geometry": "a shape, or a point or line member",
+    "boxed": "a structure or a shape (anything with a `.bb`)",
+    "any": "see the forms",
+}
+# the short unit note of a kind, for one-line signatures and hints
+KIND_UNIT = {"length": "length, mm", "angle": "angle, deg", "number": "number",
+             "point": "point (x, y) mm", "points": "[(x, y), ...]", "bool": "true/false",
+             "string": "text"}
+
+# what the conventional parameter names of templates mean
+PARAM_GLOSS = {"cx": "x of the center's starting position (constraints may move the instance)",
+               "cy": "y of the center's starting position (constraints may move the instance)"}
+
+
+def kind_of_default(node) -> str:
+    """The kind of a template parameter from its default expression: ``2 mm`` a length,
+    ``20 deg`` an angle, ``20`` a number, ``"x"`` a string, ``true`` a bool; else ``any``."""
+    if isinstance(node, A.Neg):
+        node = node.operand
+    if isinstance(node, A.Num):
+        if node.unit is None:
+            return "number"
+        return "length" if node.unit in UNITS_LENGTH else (
+            "angle" if node.unit in UNITS_ANGLE else "number")
+    if isinstance(node, (A.Str, A.FStr)):
+        return "string"
+    if isinstance(node, A.Name) and node.id in ("true", "false", "True", "False"):
+        return "bool"
+    return "any"
+
+
+def default_text(node) -> str:
+    """A default expression as source (numbers with their units, strings, names)."""
+    if node is None:
+        return ""
+    if isinstance(node, A.Neg):
+        return "-" + default_text(node.operand)
+    if isinstance(node, A.Num):
+        v = f"{node.value:g}"
+        return f"{v} {node.unit}" if node.unit else v
+    if isinstance(node, A.Str):
+        return '"' + node.value.replace('"', '\\"') + '"'
+    if isinstance(node, A.Name):
+        return node.id
+    return "..."
+
+
+def template_signature(d: A.Def) -> str:
+    """``name(p1=default, ...) -> kind`` of a template definition."""
+    ps = [p.name if p.default is None else f"{p.name}={default_text(p.default)}"
+          for p in d.params]
+    return f"{d.name}({', '.join(ps)}) -> {d.kind}"
+
+
+def units_line(pairs) -> str:
+    """``lengths (mm, or with a unit): a, b; angles (deg): c; ...`` for (name, kind) pairs:
+    the unit of every parameter, grouped by kind, in one line."""
+    groups: dict[str, list[str]] = {}
+    for name, kind in pairs:
+        groups.setdefault(kind, []).append(name)
+    heads = {"length": "lengths (the file's unit, mm by default, or e.g. `5 mm`)",
+             "angle": "angles (degrees, or e.g. `1 rad`)", "number": "plain numbers",
+             "point": "points `(x, y)`", "points": "point lists", "bool": "true/false",
+             "string": "text", "line": "lines", "circular": "circles or arcs",
+             "curve": "lines, circles or arcs", "geometry": "shapes or points",
+             "boxed": "structures or shapes", "any": "values"}
+    out = [f"{heads.get(k, k)}: {', '.join(v)}" for k, v in groups.items()]
+    gloss = [f"{n}: {PARAM_GLOSS[n]}" for n, _ in pairs if n in PARAM_GLOSS]
+    if {"cx", "cy"} <= {n for n, _ in pairs}:
+        gloss = ["cx, cy: the x and y where its center starts (constraints may move the "
+                 "instance)"]
+    return "; ".join(out + gloss)
+
+
+def template_params_hint(d: A.Def) -> str:
+    """The parameter list of a template with the unit of each, for E0105/E0103 hints."""
+    pairs = [(p.name, kind_of_default(p.default) if p.default is not None else "any")
+             for p in d.params]
+    return f"`{template_signature(d)}`" + (f"; {units_line(pairs)}" if pairs else "")
+
+
+def entry_units_hint(entry: Entry) -> str:
+    """The unit of every argument of a registry entry, for E0105/E0104 hints."""
+    pairs, seen = [], set()
+    for v in entry.variants:
+        for a in v:
+            if a.name not in seen and not a.kw_only:
+                seen.add(a.name)
+                pairs.append((a.name, a.type))
+    return units_line(pairs)
+
+
+# ---------------------------------------------------------------- the standard library
+
+@dataclass(frozen=True)
+class StdTemplate:
+    """A template of the standard library: where it is, its definition and its doc comment."""
+    name: str
+    module: str                      # "gears" (import "std/gears.aidl")
+    node: A.Def
+    doc: str                         # the comment block above the `def`, joined
+    members: tuple[str, ...]         # the backticked names of its "Members:" sentence
+
+    @property
+    def signature(self) -> str:
+        return template_signature(self.node)
+
+    @property
+    def summary(self) -> str:
+        """The doc comment's first sentence."""
+        return sentences(self.doc)[0] if self.doc else ""
+
+    @property
+    def params(self) -> list[tuple[str, str, str]]:
+        """(name, kind, default text) of every parameter."""
+        return [(p.name, kind_of_default(p.default) if p.default is not None else "any",
+                 default_text(p.default)) for p in self.node.params]
+
+
+def sentences(text: str) -> list[str]:
+    """``text`` split after each full stop that ends a sentence (not inside parentheses or
+    backticks, and followed by a capital letter or a backtick)."""
+    out, depth, tick, start = [], 0, False, 0
+    for i, ch in enumerate(text):
+        if ch == "`":
+            tick = not tick
+        elif not tick and ch == "(":
+            depth += 1
+        elif not tick and ch == ")":
+            depth = max(0, depth - 1)
+        elif (ch == "." and depth == 0 and not tick and i + 2 < len(text)
+              and text[i + 1] == " " and (text[i + 2].isupper() or text[i + 2] == "`")):
+            out.append(text[start:i + 1].strip())
+            start = i + 2
+    rest = text[start:].strip()
+    if rest:
+        out.append(rest)
+    return out
+
+
+def _doc_above(lines: list[str], row: int) -> str:
+    """The comment block that ends on the line above ``row`` (0-based), joined by spaces."""
+    block = []
+    r = row - 1
+    while r >= 0 and lines[r].startswith("#"):
+        block.append(lines[r][1:].strip())
+        r -= 1
+    return " ".join(reversed(block)).strip()
+
+
+def _members(doc: str) -> tuple[str, ...]:
+    for s in sentences(doc):
+        m = re.match(r"Members?:\s*(.*)", s)
+        if m:
+            names = re.findall(r"`([A-Za-z_]\w*)(?:\[[^\]]*\])?`", m.group(1))
+            return tuple(dict.fromkeys(names))
+    return ()
+
+
+@functools.cache
+def stdlib_templates() -> dict[str, StdTemplate]:
+    """Every template of ``stdlib/*.aidl`` by name, in file order (modules alphabetically)."""
+    from .diagnostics import DiagnosticSink
+    from .parser import parse
+    out: dict[str, StdTemplate] = {}
+    for f in sorted(Path(STDLIB).glob("*.aidl")):
+        text = f.read_text(encoding="utf-8")
+        lines = text.splitlines()
+        prog = parse(text, str(f), DiagnosticSink())
+        for st in prog.stmts:
+            if isinstance(st, A.Def):
+                doc = _doc_above(lines, st.span.line - 1)
+                out[st.name] = StdTemplate(st.name, f.stem, st, doc, _members(doc))
+    return out
+
+
+def stdlib_lines() -> str:
+    """One line per stdlib template, by module: signature (without ``cx, cy``) and the first
+    sentence of its doc comment (``aidl prompt``)."""
+    rows, module = [], None
+    for t in stdlib_templates().values():
+        if t.module != module:
+            module = t.module
+            rows.append(f"`import \"std/{module}.aidl\"`:")
+        ps = [f"{n}={d}" for n, _, d in t.params if n not in ("cx", "cy")]
+        mem = f" Members: {', '.join(t.members)}." if t.members else ""
+        rows.append(f"- {t.name}({', '.join(ps)}) -> {t.node.kind}: {t.summary}{mem}")
+    return "\n".join(rows)
+
+
+# ---------------------------------------------------------------- topics
+
+@dataclass
+class Topic:
+    """One entry of ``aidl docs``: ``name`` (as written in programs), ``kind`` (shape,
+    constraint, relation, operation, statement, template), a one-line ``summary`` and the
+    full ``text``; ``example`` is a whole program (empty for none)."""
+    name: str
+    kind: str
+    summary: str
+    text: str
+    example: str = ""
+    aliases: tuple[str, ...] = field(default_factory=tuple)
+
+    def render(self) -> str:
+        out = [f"{self.name} ({self.kind})", "", self.text.rstrip()]
+        if self.example:
+            out += ["", "Example:", "", _indent(self.example.rstrip(), "    ")]
+        return "\n".join(out) + "\n"
+
+
+def _indent(text: str, pad: str) -> str:
+    return "\n".join(pad + ln if ln.strip() else ln for ln in text.splitlines())
+
+
+_KINDS = {"primitive": "shape", "constraint": "constraint", "structural": "structural relation",
+          "operation": "operation"}
+_MEMBER_KINDS = {"point": "points", "points": "point lists", "line": "lines",
+                 "lines": "line lists"}
+
+
+def _member_text(members: dict[str, str]) -> str:
+    groups: dict[str, list[str]] = {}
+    for m, kind in members.items():
+        if m != "bb":
+            groups.setdefault(_MEMBER_KINDS.get(kind, "numbers (lengths, coordinates, "
+                                                      "angles)"), []).append(m)
+    rows = [f"  {k}: {' '.join(v)}" for k, v in groups.items()]
+    return "\n".join(rows + ["  bb: its bounding box (`aidl docs bb`)"])
+
+
+def _units_block(kinds) -> list[str]:
+    """``Units:`` and what to write for each kind of the given ones, once each."""
+    ks = [k for k in dict.fromkeys(kinds) if k in KIND_TEXT and k != "any"]
+    return ["", "Units:"] + [f"  {KIND_TEXT[k]}" for k in ks] if ks else []
+
+
+def _entry_topic(e: Entry) -> Topic:
+    lines = [_wrap(e.doc, ""), "", "Forms:"]
+    for v in e.variants:
+        ps = []
+        for a in v:
+            if a.kw_only:
+                continue
+            ps.append(a.name if a.required else f"{a.name}={a.default_text}")
+        lines.append(f"  {e.name}({', '.join(ps)})")
+    kw = [a for v in e.variants for a in v if a.kw_only]
+    for a in dict((a.name, a) for a in kw).values():
+        lines.append(f"  every form also takes `{a.name}={a.default_text}` (keyword only): "
+                     f"{a.doc}")
+    lines += ["", "Parameters:"]
+    seen: dict[str, str] = {}
+    for v in e.variants:
+        for a in v:
+            if a.name not in seen and not a.kw_only:
+                seen[a.name] = a.type
+                extra = f" ({a.doc})" if a.doc else ""
+                lines.append(f"  {a.name}: {a.type}{extra}")
+    lines += _units_block(seen.values())
+    if e.members:
+        lines += ["", "Members:", _member_text(e.members)]
+    syn = sorted(s for s, c in SYNONYMS.items() if c == e.name)
+    if syn:
+        lines += ["", "Also written: " + ", ".join(
+            f"{s} ({SYNONYM_DOCS[s]})" if s in SYNONYM_DOCS else s for s in syn) + "."]
+    canon = set(seen)
+    arg_syn = [f"{k}={c[0]}" for k, cs in arg_synonyms(e.name).items()
+               for c in [tuple(x for x in cs if x in canon)] if c and k not in canon]
+    if arg_syn:
+        lines.append("Argument synonyms (written -> meant): " + ", ".join(arg_syn) + ".")
+    return Topic(e.name, _KINDS.get(e.category, e.category), e.doc, "\n".join(lines),
+                 EXAMPLES.get(e.name, ""), tuple(syn))
+
+
+def _template_topic(t: StdTemplate) -> Topic:
+    lines = [_wrap(t.doc, ""), "", f"Import: `import \"std/{t.module}.aidl\"` (or `import stdlib.{t.module}`)",
+             "", "Signature:", f"  {t.signature}", "", "Parameters:"]
+    for n, kind, d in t.params:
+        gloss = f"; {PARAM_GLOSS[n]}" if n in PARAM_GLOSS else ""
+        lines.append(f"  {n} = {d}: {kind}{gloss}")
+    lines += _units_block(k for _, k, _ in t.params)
+    if t.members:
+        lines += ["", "Members (reach them by path: `g.NAME`, `g.NAME.center`): "
+                  + ", ".join(t.members)]
+    lines += ["", "Use it by assignment inside a structure: `NAME = "
+              f"{t.name}(...)` (an instance of kind {t.node.kind}; place it with constraints)."]
+    return Topic(t.name, f"{t.node.kind} template, std/{t.module}.aidl", t.summary,
+                 "\n".join(lines), _template_example(t))
+
+
+# arguments of the examples of stdlib templates (the defaults otherwise)
+_TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
+                  "gear_pair": "teeth1=12, teeth2=24, module=2 mm, bore1=5 mm, bore2=8 mm",
+                  "clearance_hole": "size=4", "nut_trap": "size=3",
+                  "t_slot": "size=3", "text_on_arc": "text=\"HELLO\", radius=30 mm",
+                  "finger_box": "length=80 mm, depth=50 mm, height=40 mm",
+                  "mounting_plate": "width=80 mm, height=50 mm, screw=3"}
+
+
+def _template_example(t: StdTemplate) -> str:
+    call = f"{t.name}({_TEMPLATE_ARGS.get(t.name, '')})"
+    imp = f'import "std/{t.module}.aidl"\n\n'
+    if t.node.kind == "hole":
+        return (imp + "solid plate {\n    body = Rectangle(center=(0, 0), width=120, "
+                f"height=120)\n    h = {call}\n    Fixed(body)\n    CenterInside(h, body)\n}}\n")
+    if t.node.kind == "drawing":
+        return (imp + "solid disc {\n    body = Circle(center=(0, 0), radius=45)\n"
+                f"    label = {call}\n    Fixed(body)\n    CenterInside(label, body)\n}}\n")
+    if t.node.kind == "assembly":
+        return imp + f"assembly kit {{\n    k = {call}\n}}\n"
+    return imp + f"solid part {{\n    p = {call}\n}}\n"
+
+
+@functools.cache
+def topics() -> dict[str, Topic]:
+    """Every topic by its name: registry entries, statements and concepts, stdlib templates."""
+    out: dict[str, Topic] = {}
+    for e in ENTRIES.values():
+        out[e.name] = _entry_topic(e)
+    for name, (kind, summary, text, aliases) in STATEMENTS.items():
+        out[name] = Topic(name, kind, summary, text.strip(), EXAMPLES.get(name, ""),
+                          tuple(aliases))
+    for t in stdlib_templates().values():
+        out.setdefault(t.name, _template_topic(t))
+    return out
+
+
+def _key(name: str) -> str:
+    """A name without case and word style: ``SpurGear``, ``spur-gear``, ``SPUR_GEAR`` ->
+    ``spurgear``."""
+    return re.sub(r"[^a-z0-9]", "", name.lower())
+
+
+@functools.cache
+def _index() -> dict[str, list[str]]:
+    """Style-free key -> topic names (the exact name first)."""
+    idx: dict[str, list[str]] = {}
+
+    def add(alias: str, name: str) -> None:
+        lst = idx.setdefault(_key(alias), [])
+        if name not in lst:
+            lst.append(name)
+    for name, t in topics().items():
+        add(name, name)
+        for a in t.aliases:
+            add(a, name)
+    for s, c in SYNONYMS.items():
+        add(s, c)
+    for f in FUNCTIONS:
+        add(f, "functions")
+    for c in CONSTANTS:
+        add(c, "functions")
+    for u in list(UNITS_LENGTH) + list(UNITS_ANGLE):
+        add(u, "units")
+    for t in stdlib_templates().values():
+        add(f"{t.module}.{t.name}", t.name)
+        add(f"std/{t.module}.aidl.{t.name}", t.name)
+    return idx
+
+
+def find(name: str) -> Topic | None:
+    """The topic ``name`` means: exact, then without case and word style, then a synonym;
+    ``None`` when nothing fits (see :func:`suggest`)."""
+    name = name.strip().strip("`")
+    ts = topics()
+    if name in ts:
+        return ts[name]
+    if name.endswith("()"):
+        return find(name[:-2])
+    hits = _index().get(_key(name))
+    if hits:
+        # a style-only match: prefer a name of the same style (`slot` the template, `SLOT`
+        # and `Slot` the shape)
+        lower = [h for h in hits if h.islower() == name.islower()]
+        return ts[(lower or hits)[0]]
+    if "." in name:                       # gears.spur_gear, g.bore_hole -> its last part
+        return find(name.rsplit(".", 1)[1]) if name.rsplit(".", 1)[1] else None
+    return None
+
+
+def suggest(name: str, n: int = 5) -> list[str]:
+    """Topic names nearest to ``name`` (for did-you-mean)."""
+    k = _key(name)
+    idx = _index()
+    keys = difflib.get_close_matches(k, list(idx), n=n, cutoff=0.6)
+    keys += [key for key in idx if k and len(k) >= 3 and k in key and key not in keys]
+    out: list[str] = []
+    for key in keys:
+        for t in idx[key]:
+            if t not in out:
+                out.append(t)
+    return out[:n]
+
+
+def lookup_text(name: str) -> tuple[str, bool]:
+    """(the text ``aidl docs NAME`` prints, found?)."""
+    t = find(name)
+    if t is not None:
+        return t.render(), True
+    near = suggest(name)
+    msg = f"no topic `{name}`"
+    if near:
+        msg += "; did you mean " + ", ".join(f"`{s}`" for s in near) + "?"
+    return msg + "\n`aidl docs` lists every topic.\n", False
+
+
+def index_text() -> str:
+    """The list of topics by kind (``aidl docs`` alone)."""
+    groups: dict[str, list[Topic]] = {}
+    for t in topics().values():
+        k = t.kind.split(",")[0]
+        k = "template" if k.endswith("template") else k
+        groups.setdefault(k, []).append(t)
+    order = ["statement", "shape", "constraint", "structural relation", "operation", "template"]
+    heads = {"statement": "Statements and concepts", "shape": "Shapes",
+             "constraint": "Geometric constraints", "structural relation":
+             "Structural relations (by bounding box)", "operation": "Operations",
+             "template": "Standard-library templates (import \"std/MODULE.aidl\")"}
+    out = ["`aidl docs NAME` prints a topic: signature, units of every parameter, members and "
+           "an example. Names are found whatever their case or style (`SpurGear`, "
+           "`spur-gear`).", ""]
+    for k in order + [k for k in groups if k not in order]:
+        if k in groups:
+            out.append(f"{heads.get(k, k)}:")
+            if k == "template":
+                for t in groups[k]:
+                    out.append(f"  {t.name:<17} {t.summary}")
+            else:
+                out.append(_wrap(", ".join(t.name for t in groups[k]), "  "))
+            out.append("")
+    return "\n".join(out).rstrip() + "\n"
+
+
+def _wrap(text: str, pad: str, width: int = 92) -> str:
+    import textwrap
+    return textwrap.fill(text, width, initial_indent=pad, subsequent_indent=pad)
+
+
+def topic_names() -> list[str]:
+    return list(topics())
+
+
+# ---------------------------------------------------------------- statements and concepts
+
+# name -> (kind, summary, text, aliases)
+STATEMENTS: dict[str, tuple[str, str, str, list[str]]] = {
+    "units": ("statement", "`units mm`: the unit of bare lengths in the file.", """
+`units mm` (default), `cm`, `m`, `in` (also `inch`), `ft`, at the top level: the unit of
+bare lengths in the whole file and its templates. A number may always carry its own unit:
+`5 mm`, `2 in`, `30 deg`, `1 rad`. A bare number is a length in the file unit where a length
+is expected and an angle in degrees where an angle is expected; `sin`, `cos`, `tan` of a bare
+number take radians. Outputs are in millimetres.
+""", ["unit", "mm", "inch", "deg", "degrees", "bare number"]),
+    "import": ("statement", "`import \"std/gears.aidl\"`: templates and constants of another "
+               "file.", """
+`import "FILE.aidl"` or `import "FILE.aidl" as NAME` (top level). `import "std/NAME.aidl"`
+(or `import stdlib.NAME`) reads the standard library: shapes, gears, joints, fasteners,
+plates (`aidl docs` lists its templates). An import brings the file's templates, constants
+and params (without `as`: as plain names; with `as shapes`: `shapes.washer(...)`), never its
+structures. Paths are relative to the importing file and stay inside its folder tree.
+""", ["as", "stdlib", "std", "include", "library"]),
+    "param": ("statement", "`param width = 40 mm`: a value `--set` and the sliders can change.",
+              """
+`param NAME = VALUE [, min=A] [, max=B] [, step=S]` (top level): a number, length, angle,
+string or bool that `aidl render --set NAME=VALUE` (and the live preview's slider) overrides.
+Use it like a constant.
+""", ["parameter", "set", "--set"]),
+    "def": ("statement", "`def NAME(p=default) -> solid { ... }`: a template.", """
+`def NAME(p1, p2=default, ...) -> KIND { body }` (or `KIND NAME(p1, ...) { body }`), top level;
+KIND is solid, hole, drawing or assembly. Instantiate it by assignment inside a structure:
+`part = NAME(p1=...)` makes a child structure named `part` (reach inside: `part.rim.center`);
+`hole cut = NAME(...)` changes the instance's kind. Arguments are values (numbers, lengths,
+angles, strings, lists), not geometry; place the instance with constraints in the parent.
+Bare numbers in the body are in the defining file's unit. A parameter without a default is
+required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
+""", ["template", "templates", "function", "define", "instance"]),
+    "assert": ("statement", "`assert cond, \"why\"`: a requirement checked after solving, never "
+               "solved for.", """
+`assert CONDITION` or `assert CONDITION, "reason"`, in a structure or at the top level: the
+condition (comparisons joined by `and`, on any solved value: sizes, positions, boxes) is
+checked at the solution; it adds no equation and no degree of freedom. A false one is the
+error E0405 with the values found. Use it for requirements ("fits the laser bed", "wall at
+least 2 mm"), and constraints (`==`, `<=` statements) for what the solver should make true.
+""", ["requirement", "check", "require", "E0405"]),
+    "kerf": ("statement", "`kerf 0.15 mm`: the laser's cut width; cuts are offset by half of "
+             "it.", """
+`kerf LENGTH` (top level: every part; inside a structure: that structure and its children,
+the nearest one wins). `aidl render` offsets every cut by half the kerf so parts come out at
+their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
+`aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
+""", ["kerf_width", "laser kerf", "cut width"]),
+    "thickness": ("statement", "`thickness 3 mm`: the material thickness for STL, 3MF, STEP "
+                  "and the parts list.", """
+`thickness LENGTH` (top level: every part; inside a structure: that structure and its
+children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP; default
+3 mm) and the thickness of `aidl parts`. No effect on 2D outputs. `aidl render --thickness`
+overrides it. A positive length known before solving.
+""", ["material thickness", "extrude", "extrusion", "depth"]),
+    "solid": ("statement", "`solid NAME { ... }`: filled material, minus its hole children.", """
+`solid NAME { ... }`: the union of its own shapes and its solid children (touching or
+overlapping shapes merge into one outline), minus its `hole` children. A hole cuts the solid
+it is declared in: that solid's own shapes and its solid children. The cut solid is then
+united with its own siblings in the parent, which are not cut (they can cover the opening).
+Material the model wants to keep in an opening goes outside the solid that holds the hole.
+""", ["structure", "part", "body"]),
+    "hole": ("statement", "`hole NAME { ... }`: a cut-out of the enclosing solid.", """
+`hole NAME { ... }` inside a solid: the union of its shapes and children is cut from the
+enclosing solid (its own shapes and its solid children). A sibling of the enclosing solid is
+not cut: it can cover the opening (warning W0501; `AllowOverlap` when meant). A hole at the
+top level or directly in an assembly is drawn as a dashed outline. The hole's shapes count
+in the enclosing structure's `.bb`.
+""", ["cutout", "cut-out", "opening", "pocket"]),
+    "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
+`drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
+single strokes, on the `engrave` layer; nothing is filled or cut. Text is only allowed in a
+drawing. Put it inside the solid it marks.
+""", ["engraving", "engrave", "label", "mark"]),
+    "assembly": ("statement", "`assembly NAME { ... }`: separate parts.", """
+`assembly NAME { ... }`: each child is a separate part, drawn where the solver puts it
+(parts may overlap); `aidl render --layout sheet` lays them out flat for cutting. Its own
+shapes form one part.
+""", ["parts", "kit"]),
+    "for": ("statement", "`for i in range(n) { ... }`: repetition.", """
+`for NAME in LIST { ... }` (`range(n)`, `range(a, b)`, a list): runs the body once per item;
+names defined in the loop become lists (`knob[0]`), structures too (`bolt[2].c`). Also list
+comprehensions: `[f(i) for i in range(n) if c]`. For copies of a shape see LinearPattern,
+CircularPattern, GridPattern.
+""", ["loop", "range", "in", "repeat"]),
+    "if": ("statement", "`if c { } else { }`: choice on values known before solving.", """
+`if CONDITION { ... } elif CONDITION { ... } else { ... }` on values known before solving
+(params, constants, template parameters). In expressions: `a if c else b`.
+""", ["elif", "else", "conditional"]),
+    "equations": ("statement", "`a.width == 20`, `x <= 60`: equations and inequalities as "
+                  "constraints.", """
+A comparison written as a statement in a structure is a constraint the solver makes true:
+`==`, `<=`, `>=` (`<`, `>` mean `<=`, `>=`) between numbers, lengths, angles, or points
+(`p == q`, `p == (0, 0)`, `c.center == r.bottom_right + (0, 4)`); chains (`0 <= x <= 10`) and
+`and` join several. `or` and `!=` cannot be constraints. To check without solving, write
+`assert`.
+""", ["equation", "==", "<=", ">=", "inequality", "constraint"]),
+    "bb": ("statement", "`x.bb`: the bounding box of a shape or structure.", """
+Every shape and structure has `.bb`, its axis-aligned bounding box: `left`, `right`, `top`,
+`bottom` (coordinates), `width`, `height` (lengths), `center_x`, `center_y`, `center`,
+`top_left`, `top_right`, `bottom_left`, `bottom_right` (points). A structure also answers
+`s.width`, `s.left`, `s.center`, ... with its box. A structure's box covers all its geometry
+and descendants, holes included: a hole that pokes out past the outline widens it
+(construction geometry is left out). For the material only, use a shape's box
+(`plate.body.bb`). Structural relations (Above, Inside, ...) work on boxes. `self` is the
+current structure: `CenterInside(bore, self)`, `self.bb.width <= 60`.
+""", ["bbox", "bounding box", "boundingbox", "self", "box", "members"]),
+    "comments": ("statement", "`# a comment`; `//` after an operand is floor division.", """
+`# text` and `/* text */` are comments. `//` is floor division when the code before it on
+the line ends an operand (a name, number, string, `)` or `]`) and the rest of the line does not
+read as prose (`7 // 2` is 3; `80 mm // 3` is 26 mm, warning W0106 when it becomes a length);
+otherwise it starts a comment (`// note` on its own line, `x = f(a) // half of it`). Write
+`#` for comments and `/` for division.
+""", ["comment", "#", "//", "floor division"]),
+    "functions": ("statement", "sin, cos, sqrt, min, max, range, ...: functions and "
+                  "constants.", "\n".join(
+        [f"`{n}`: {doc}" for n, (_lo, _hi, doc) in FUNCTIONS.items()]
+        + ["Constants: pi, tau, true, false. Functions take no keyword arguments."]),
+        ["function list", "math"]),
+}
+
+# ---------------------------------------------------------------- examples (all compile)
+
+_PLATE2 = """solid plate {{
+    body = Rectangle(center=(0, 0), width=60, height=30)
+    hole left {{ c = Circle(center=(-15, 0), radius=4) }}
+    hole right {{ c = Circle(center=(15, 3), radius=4) }}
+    Fixed(body)
+    {line}
+}}
+"""
+_QUAD = """solid quad {{
+    a = Line((0, 0), (40, 0))
+    b = Line(start=a.end, end=(45, 20))
+    c = Line(start=b.end, end=(0, 25))
+    d = Line(start=c.end, end=a.start)
+    Fixed(a.start)
+    {line}
+}}
+"""
+_SIGN = """solid sign {{
+    solid post {{ r = Rectangle(center=(0, 0), width=6, height=40) }}
+    solid board {{ r = Rectangle(center=(0, 30), width=50, height=20) }}
+    Fixed(post)
+    {line}
+}}
+"""
+_HOLES = """solid plate {{
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h {{ c = Circle(center=(-20, -10), radius=2) }}
+    axis = Line((0, -20), (0, 20), construction=true)
+    Fixed(body)
+    {line}
+}}
+"""
+
+
+def _solid(body: str, name: str = "part") -> str:
+    return f"solid {name} {{\n" + _indent(body.strip("\n"), "    ") + "\n}\n"
+
+
+EXAMPLES: dict[str, str] = {
+    "Point": _solid("body = Rectangle(center=(0, 0), width=20, height=10)\n"
+                    "p = Point(5, 2)\nCoincident(p, body.top_right)"),
+    "Line": _solid("a = Line((0, 0), (40, 0))\nb = Line(start=a.end, end=(0, 20))\n"
+                   "c = Line(start=b.end, end=a.start)    # three lines close a triangle",
+                   "wedge"),
+    "Circle": _solid("c = Circle(center=(0, 0), diameter=20)", "disc"),
+    "Arc": _solid("a = Arc(center=(0, 0), radius=20, start_angle=0 deg, end_angle=90 deg)\n"
+                  "l1 = Line(start=a.center, end=a.start)\nl2 = Line(start=a.end, "
+                  "end=a.center)    # a quarter disc", "fan"),
+    "Rectangle": _solid("r = Rectangle(center=(0, 0), width=40, height=20, rotation=15 deg)",
+                        "plate"),
+    "RoundedRectangle": _solid("r = RoundedRectangle(center=(0, 0), width=40, height=20, "
+                               "corner_radius=4)", "plate"),
+    "Triangle": _solid("t = Triangle(center=(0, 0), base=30, height=20)   # apex up", "sign"),
+    "Trapezoid": _solid("t = Trapezoid(center=(0, 0), bottom_width=40, top_width=20, "
+                        "height=15)", "block"),
+    "Ellipse": _solid("e = Ellipse(center=(0, 0), rx=20, ry=10, rotation=30 deg)", "egg"),
+    "Polygon": _solid("p = Polygon([(0, 0), (30, 0), (30, 10), (10, 20)])   # rigid: keeps "
+                      "its shape", "bracket"),
+    "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)", "leaf"),
+    "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
+                             "hexagon"),
+    "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
+                   "hole slot { s = Slot(center=(0, 0), length=30, width=6) }", "plate"),
+    "ArcSlot": _solid("disc = Circle(center=(0, 0), radius=30)\n"
+                      "hole track { a = ArcSlot(center=(0, 0), radius=20, start_angle=30 deg, "
+                      "end_angle=150 deg, width=5) }\nFixed(disc)\ntrack.a.center == disc.center", "dial"),
+    "Star": _solid("s = Star(center=(0, 0), points=5, outer_radius=20, inner_radius=8)",
+                   "badge"),
+    "Offset": _solid("s = Star(center=(0, 0), points=5, outer_radius=20, inner_radius=8)\n"
+                     "o = Offset(s, 3)    # the star grown by 3 mm, rounded", "badge"),
+    "Inset": _solid("body = Rectangle(center=(0, 0), width=40, height=30)\n"
+                    "hole window {\n    r = Rectangle(center=(0, 0), width=40, height=30)\n"
+                    "    w = Inset(r, 5)\n    Fixed(r)\n}\nFixed(body)", "frame"),
+    "Shell": _solid("c = Circle(center=(0, 0), radius=20)\nw = Shell(c, 3)    # a ring 3 mm "
+                    "wide around the circle", "ring"),
+    "Hull": _solid("a = Circle(center=(0, 0), radius=10)\nb = Circle(center=(30, 0), "
+                   "radius=5)\nh = Hull(a, b)", "cam"),
+    "Text": _solid("body = RoundedRectangle(center=(0, 0), width=50, height=20, "
+                   "corner_radius=3)\ndrawing label {\n    t = Text(\"AIDL\", position=(0, 0), "
+                   "size=8, valign=\"middle\")\n}\nFixed(body)\nCenterInside(label, body)",
+                   "tag"),
+    # geometric constraints
+    "Coincident": _solid("a = Rectangle(center=(0, 0), width=20, height=10)\n"
+                         "b = Rectangle(center=(25, 5), width=10, height=10)\n"
+                         "Fixed(a)\nCoincident(b.bottom_left, a.bottom_right)", "step"),
+    "Horizontal": _PLATE2.format(line="Horizontal(left.c.center, right.c.center)"),
+    "Vertical": _PLATE2.format(line="Vertical(left.c.center, body.center)"),
+    "Fixed": _PLATE2.format(line="Fixed(left)    # holds a point, shape or structure"),
+    "Distance": _PLATE2.format(line="Distance(left.c.center, right.c.center, 36)"),
+    "HorizontalDistance": _PLATE2.format(
+        line="HorizontalDistance(left.c.center, right.c.center, 30)"),
+    "VerticalDistance": _PLATE2.format(
+        line="VerticalDistance(left.c.center, right.c.center, 0)"),
+    "At": _PLATE2.format(line="At(right.c.center, left.c.center, dx=30, dy=0)"),
+    "Length": _QUAD.format(line="Length(a, 50)"),
+    "Radius": _solid("a = Arc(center=(0, 0), start=(20, 0), end=(0, 20))\n"
+                     "l1 = Line(start=a.center, end=a.start)\nl2 = Line(start=a.end, "
+                     "end=a.center)\nFixed(a.center)\nRadius(a, 25)", "fan"),
+    "Diameter": _solid("a = Arc(center=(0, 0), start=(20, 0), end=(0, 20))\n"
+                       "l1 = Line(start=a.center, end=a.start)\nl2 = Line(start=a.end, "
+                       "end=a.center)\nFixed(a.center)\nDiameter(a, 50)", "fan"),
+    "Equal": _QUAD.format(line="Equal(a, c)    # same length"),
+    "Parallel": _QUAD.format(line="Parallel(a, c)"),
+    "Perpendicular": _QUAD.format(line="Perpendicular(a, d)"),
+    "Tangent": _solid("c = Circle(center=(0, 0), radius=10)\n"
+                      "r = Rectangle(center=(0, 0), width=30, height=10)\n"
+                      "Fixed(c)\nTangent(r.bottom, c)    # r's bottom edge touches the circle's "
+                      "bottom\nAlignCenterX(r, c)", "cam"),
+    "Symmetric": _PLATE2.format(line="axis = Line((0, -15), (0, 15), construction=true)\n"
+                                "    Symmetric(left.c.center, right.c.center, axis)"),
+    "Midpoint": _HOLES.format(line="Midpoint(h.c.center, body.bottom)    # a notch"),
+    "OnLine": _HOLES.format(line="OnLine(h.c.center, axis)"),
+    "OnCircle": _HOLES.format(line="pitch = Circle(center=(0, 0), radius=12, "
+                              "construction=true)\n    OnCircle(h.c.center, pitch)"),
+    "Collinear": _PLATE2.format(line="Collinear(left.c.center, right.c.center, body.center)"),
+    "Concentric": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
+                         "hole bore { c = Circle(center=(3, 2), diameter=20) }\n"
+                         "Concentric(bore.c, disc)", "flange"),
+    "Angle": _QUAD.format(line="Angle(a, d, 80 deg)"),
+    # structural relations
+    "Above": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
+    "Below": _SIGN.format(line="Below(post, board)\n    AlignCenterX(board, post)"),
+    "LeftOf": _SIGN.format(line="LeftOf(board, post, gap=-5)   # overlapping by 5 mm"),
+    "RightOf": _SIGN.format(line="RightOf(board, post, gap=-5)"),
+    "Gap": "assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=20, height=20) }\n"
+           "    solid b { r = Rectangle(center=(30, 0), width=20, height=20) }\n"
+           "    Fixed(a)\n    Gap(a, b, 5)    # 5 mm of space along x\n    AlignCenterY(a, b)\n}\n",
+    "Inside": _HOLES.format(line="Inside(h, body, margin=5)"),
+    "CenterInside": _HOLES.format(line="CenterInside(h, body)"),
+    "Taller": _SIGN.format(line="Above(board, post)\n    Taller(post, board)"),
+    "Wider": _SIGN.format(line="Above(board, post)\n    Wider(board, post)"),
+    "AlignCenterX": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
+    "AlignCenterY": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
+                                 "AlignCenterY(board, post)"),
+    "AlignLeft": _SIGN.format(line="Above(board, post)\n    AlignLeft(board, post)"),
+    "AlignRight": _SIGN.format(line="Above(board, post)\n    AlignRight(board, post)"),
+    "AlignTop": _SIGN.format(line="RightOf(board, post, gap=-3)\n    AlignTop(board, post)"),
+    "AlignBottom": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
+                                "AlignBottom(board, post)"),
+    # operations
+    "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
+    "LinearPattern": _HOLES.format(line="row = LinearPattern(h, 5, (10, 0))"),
+    "CircularPattern": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
+                              "hole bolt { c = Circle(center=(20, 0), diameter=5) }\n"
+                              "Fixed(disc)\nFixed(bolt)\n"
+                              "ring = CircularPattern(bolt, 6, (0, 0))", "flange"),
+    "GridPattern": _HOLES.format(line="grid = GridPattern(h, 3, 5, (10, 10))"),
+    "CornerPattern": _solid("body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                            "hole h { c = Circle(center=(0, 0), radius=2) }\nFixed(body)\n"
+                            "corners = CornerPattern(h, body, 5)", "plate"),
+    "Rigid": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\n"
+                    "hole pins {\n    a = Circle(center=(-10, 0), radius=3)\n"
+                    "    b = Circle(center=(10, 0), radius=3)\n    Rigid(a, b)    # shapes: "
+                    "moved together\n}\nFixed(body)\n"
+                    "pins.a.center == (-12, 2)    # b moves with a: to (8, 2)\n"
+                    "assert pins.b.center == (8, 2)",
+                    "plate"),
+    "AllowOverlap": _solid("body = Rectangle(center=(0, 0), width=60, height=30)\n"
+                           "solid tab {\n    r = Rectangle(center=(30, 0), width=10, "
+                           "height=10)\n    hole pin { c = Circle(center=(30, 0), radius=2) }\n"
+                           "}\nFixed(body)\nFixed(tab)\n"
+                           "AllowOverlap(tab.pin, body)    # body refills half of the pin hole",
+                           "plate"),
+    "Fillet": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nFillet(4)",
+                     "plate"),
+    "Chamfer": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nChamfer(3)",
+                      "plate"),
+    # statements
+    "units": "units in\n" + _solid("r = Rectangle(center=(0, 0), width=4, height=2)   "
+                                   "# 4 in x 2 in\nhole h { c = Circle(center=(0, 0), "
+                                   "radius=5 mm) }", "plate"),
+    "import": "import \"std/shapes.aidl\" as shapes\n\n" + _solid(
+        "disc = Circle(center=(0, 0), diameter=60)\nbolts = shapes.bolt_circle(count=4, "
+        "pcd=45 mm, hole_d=5 mm)\nFixed(disc)\nCenterInside(bolts, self)", "flange"),
+    "param": "param width = 40 mm, min=20 mm, max=80 mm, step=1 mm\n\n"
+             + _solid("body = Rectangle(center=(0, 0), width=width, height=width / 2)",
+                      "plate"),
+    "def": "def wheel(r=10 mm, bore=3 mm) -> solid {\n    rim = Circle(center=(0, 0), "
+           "radius=r)\n    hole axle { c = Circle(center=(0, 0), radius=bore) }\n"
+           "    Concentric(axle.c, rim)\n}\n\nassembly cart {\n    left = wheel(r=12 mm)\n"
+           "    right = wheel(8 mm, 2 mm)\n    LeftOf(left, right, gap=5)\n"
+           "    AlignCenterY(left, right)\n    left.rim.center == (0, 0)\n}\n",
+    "assert": "param width = 280 mm\n\n" + _solid(
+        "body = Rectangle(center=(0, 0), width=width, height=100)\nhole bore { c = "
+        "Circle(center=(0, 0), radius=4) }\nCenterInside(bore, body)\n"
+        "assert body.width <= 300 mm, \"fits the laser bed\"", "plate"),
+    "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
+                                        "plate"),
+    "thickness": "thickness 3 mm\n\nassembly kit {\n    solid plate { r = Rectangle(center=(0, "
+                 "0), width=60, height=40) }\n    solid spacer {\n        thickness 6 mm\n"
+                 "        c = Circle(center=(50, 0), radius=8)\n    }\n}\n",
+    "solid": "solid plate {\n    body = Rectangle(center=(0, 0), width=60, height=30)\n"
+             "    solid boss { c = Circle(center=(-15, 10), radius=8) }  # plate's child: bore "
+             "cuts it too\n    hole bore { c = Circle(center=(-15, 10), radius=4) }  # an "
+             "opening through body and boss\n}\n",
+    "hole": "solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+            "    hole bore { c = Circle(center=(0, 0), radius=5) }\n"
+            "    CenterInside(bore, self)\n}\n",
+    "drawing": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
+                      "drawing mark {\n    t = Text(\"A-1\", position=(0, 0), size=6, "
+                      "valign=\"middle\")\n    l = Line((-20, -7), (20, -7))\n}\nFixed(body)",
+                      "tag"),
+    "assembly": "assembly kit {\n    solid base { r = Rectangle(center=(0, 0), width=40, "
+                "height=20) }\n    solid lid { r = Rectangle(center=(0, 30), width=40, "
+                "height=10) }\n    Above(lid, base, gap=5)\n    AlignCenterX(lid, base)\n}\n",
+    "for": _solid("body = Rectangle(center=(0, 0), width=70, height=20)\n"
+                  "for i in range(5) {\n    hole vent { s = Slot(center=(-24 + 12 * i, 0), "
+                  "length=12, width=3, rotation=90 deg) }\n}\nFixed(body)\n"
+                  "vent[0].s.center == (-24, 0)", "grille"),
+    "if": "param rounded = true\n\n" + _solid(
+        "if rounded {\n    body = RoundedRectangle(center=(0, 0), width=40, height=20, "
+        "corner_radius=5)\n} else {\n    body = Rectangle(center=(0, 0), width=40, "
+        "height=20)\n}", "plate"),
+    "equations": _solid("r = Rectangle(center=(5, 5), width=30, height=8)\n"
+                        "c = Circle(center=(30, 3), radius=6)\nr.bottom_left == (0, 0)\n"
+                        "c.center == r.bottom_right + (0, 4)\nself.bb.width <= 60", "bracket"),
+    "bb": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\n"
+                 "hole notch { c = Circle(center=(20, 0), radius=5) }   # pokes out 5 mm\n"
+                 "Fixed(body)\nFixed(notch)\n"
+                 "assert self.bb.right == 25 mm and body.bb.right == 20 mm", "plate"),
+    "comments": "# a plate with a bore\n" + _solid(
+        "body = Rectangle(center=(0, 0), width=80 / 3, height=10)   # 26.667 mm wide\n"
+        "n = 7 // 2    # floor division: 3, a count\nfor i in range(n) {\n    hole bore { "
+        "c = Circle(center=(-8 + 8 * i, 0), radius=2) }\n}\nFixed(body)\n"
+        "Fixed(bore[0])\nFixed(bore[1])\nFixed(bore[2])", "plate"),
+    "functions": _solid("for i in range(6) {\n    hole bolt { c = Circle(center=(20 * "
+                        "cos(i * 60 deg), 20 * sin(i * 60 deg)), radius=max(2, sqrt(9))) }\n}\n"
+                        "disc = Circle(center=(0, 0), radius=30)\nFixed(disc)\n"
+                        "Fixed(bolt[0])", "flange"),
+}
