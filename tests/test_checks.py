@@ -685,3 +685,38 @@ def test_W0508_a_hole_wholly_inside_another(compile_text):
     assert w.message == ("hole `plate.nut` lies wholly inside hole `plate.bore` of `plate`: the "
                          "two cut one opening, and hole `plate.nut` cuts nothing of its own "
                          "(0.20 mm^2)")
+
+
+CAR = """units mm
+solid car {
+    body = RoundedRectangle(center=(0, 15), width=120, height=30, radius=8)
+    roof = RoundedRectangle(center=(0, 36), width=70, height=24, radius=8)
+    hole windows {
+        front = RoundedRectangle(center=(14, 36), width=26, height=23.16, radius=4)
+        back = RoundedRectangle(center=(-14, 36), width=26, height=23.16, radius=4)
+    }
+    hole wheels {
+        front = Circle(center=(35, 0), radius=12)
+        back = Circle(center=(-35, 0), radius=12)
+    }
+}"""
+
+
+def test_W0507_points_at_the_wall_not_between_two_stretches_of_it(compile_text):
+    # both windows of one hole come 0.42 mm under the roof line; the close points run over
+    # x in [-23, -5] and [5, 23], whose box centre (0, 47.8) is the pillar between them
+    import re
+    (w,) = warnings(compile_text, CAR, "W0507")
+    assert "0.42 mm wide" in w.message and w.span.line == 5
+    x, y = map(float, re.search(r"near \((\S+), (\S+)\)\)", w.message).groups())
+    # the wall: between y = 47.58 (the windows' top) and 48 (the roof), over 5 <= |x| <= 23
+    assert 47.58 - 0.05 <= y <= 48.0 + 0.05 and 4.95 <= abs(x) <= 23.05, (x, y)
+
+
+def test_W0507_opening_piece_is_located_on_the_piece():
+    import manifold3d as mf
+    from aidl_lang.output.checks import _point_of
+    # an L-shaped thin piece: its box centre (5, 5) is off it, the reported point is on it
+    L = mf.CrossSection.square((10, 0.3)) + mf.CrossSection.square((0.3, 10))
+    x, y = _point_of(L, (5.0, 5.0))
+    assert (x <= 0.3 + 1e-9 or y <= 0.3 + 1e-9) and (x, y) != (5.0, 5.0)

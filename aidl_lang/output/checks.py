@@ -349,10 +349,31 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
         m = mid[a0:a1]
         x0, y0 = m.min(axis=0)
         x1, y1 = m.max(axis=0)
-        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), ((x0 + x1) / 2, (y0 + y1) / 2)))
+        # located at the middle of a narrowest span (within 0.01 mm of the least width), the
+        # one nearest to the close points' box centre: that centre alone can fall between two
+        # stretches of one pair of features (two windows of one hole under the roof line: the
+        # pillar between them, where nothing is thin)
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        if _seg_distance(c, A[sf == i], B[sf == i]) + _seg_distance(c, A[sf == j], B[sf == j]) \
+                > w + 2 * TOUCH:              # the centre is not in the wall: its nearest narrowest
+            narrow = m[dist[a0:a1] <= w + TOUCH]                          # span's middle is
+            c = narrow[int(np.argmin(np.hypot(*(narrow - c).T)))]
+        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), (float(c[0]), float(c[1]))))
     res.merges.sort(key=lambda m: (m[1], m[0]))      # in the order of the located hole
     res.webs.sort(key=lambda w: (w[1], w[0]))
     return res
+
+
+def _seg_distance(p, A, B) -> float:
+    """The least distance (mm) from point ``p`` to the segments ``A[k]``-``B[k]``."""
+    if not len(A):
+        return math.inf
+    d = B - A
+    L2 = np.einsum("ij,ij->i", d, d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, d) / L2, 0.0), 0.0, 1.0)
+    e = A + t[:, None] * d - p
+    return float(np.sqrt(np.einsum("ij,ij->i", e, e).min()))
 
 
 def _depth(common, bi, bj) -> float:
@@ -618,12 +639,22 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
             f" beside {names[0]}" if names else "")
         span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
+        px, py = _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
         sink.warning("W0507", f"a wall of `{s.path}`{between} is thinner than {t:g} mm "
                      f"(about {width:.2f} mm over {length:.1f} mm, near "
-                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", span,
+                     f"({px:.1f}, {py:.1f}))", span,
                      hint=f"move or shrink the feature so that at least {t:g} mm of material is "
                           "left (a laser or router cannot hold a thinner wall); the minimum is "
                           "set with --min-wall")
+
+
+def _point_of(piece, near) -> tuple[float, float]:
+    """The vertex of ``piece`` (what the opening removed: a thin wall) nearest to ``near``
+    (its box's centre): a point on the wall itself, where the box's centre of a curved or
+    L-shaped wall lies off it."""
+    P = np.concatenate([np.asarray(p, dtype=float) for p in piece.to_polygons()])
+    k = int(np.argmin(np.hypot(P[:, 0] - near[0], P[:, 1] - near[1])))
+    return float(P[k, 0]), float(P[k, 1])
 
 
 UNION_GROUP = 16       # tile pieces united in one uninterruptible call by _join
