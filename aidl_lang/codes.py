@@ -382,6 +382,21 @@ fit.
     # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges
     #                 with hole `bracket.first_pattern[4]`
 """),
+    "W0511": ("parts of an assembly interpenetrate", """
+Two separate parts (the solid children of an assembly) overlap: parts cut from a sheet cannot
+occupy the same place, so the drawing shows them wrongly placed (two gears closer than their
+centre distance, whose teeth run into each other). The warning names both parts, the overlap's
+area and its depth along the line between them. Move one part away (meshing spur gears sit at
+the centre distance module * (teeth1 + teeth2) / 2, which `gear_pair` in std/gears.aidl keeps),
+or shrink it; if the overlap is meant (a picture of parts stacked), say so with
+`AllowOverlap(a, b)` in the assembly.
+
+    import "std/gears.aidl"
+    assembly drive {
+        a = spur_gear(teeth=12, module=1.5 mm, cx=0 mm, cy=0 mm)
+        b = spur_gear(teeth=36, module=1.5 mm, cx=34 mm, cy=0 mm)   # 36 mm apart is right
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

@@ -169,6 +169,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
+    tick(None)
+    _check_interpenetration(d, roots, sink)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
@@ -195,6 +197,45 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                          "encloses any area", s.span,
                          hint="give the part a closed shape with an inside (a Rectangle, a "
                               "Circle, lines and arcs that close a loop around some area)")
+
+
+def _allowed(a: Structure, b: Structure) -> bool:
+    """``AllowOverlap(a, b)`` (or one naming a structure around either) was written."""
+    for x, y in ((a, b), (b, a)):
+        node = x
+        while node is not None:
+            ok = getattr(node, "overlap_ok", set())
+            if any(isinstance(o, Structure) and (y is o or y.is_within(o)) for o in ok):
+                return True
+            node = node.parent
+    return False
+
+
+def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
+    """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
+    by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
+    place (two gears placed closer than their centre distance: their teeth interpenetrate).
+    Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
+    parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
+    if len(parts) < 2:
+        return
+    boxes = np.array([shp.bounds() for _, shp in parts], dtype=float)
+    for i, j in sorted(map(tuple, box_pairs(boxes))):
+        (a, sa), (b, sb) = parts[i], parts[j]
+        common = sa ^ sb
+        area = _area(common)
+        if area <= MIN_AREA or _allowed(a, b):
+            continue
+        depth = _depth(common, boxes[i], boxes[j])
+        labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
+        sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
+                     f"by {area:.2f} mm^2, {depth:.2f} mm deep (separate parts cannot occupy "
+                     "the same place)", b.span or a.span, labels=labels,
+                     hint=f"move `{b.path}` at least {depth:.2f} mm further from `{a.path}` "
+                          "(meshing gears sit at the centre distance module * (teeth1 + "
+                          "teeth2) / 2: `gear_pair` in std/gears.aidl places them), or shrink "
+                          "one; if the overlap is meant (a picture of parts stacked), write "
+                          f"`AllowOverlap({a.name}, {b.name})` in their assembly")
 
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
