@@ -397,6 +397,21 @@ or shrink it; if the overlap is meant (a picture of parts stacked), say so with
         b = spur_gear(teeth=36, module=1.5 mm, cx=34 mm, cy=0 mm)   # 36 mm apart is right
     }
 """),
+    "W0512": ("copies of one shape merge into one opening", """
+One statement of a hole structure draws a shape several times (in a `for` loop), and some of
+the copies overlap or touch, so the hole cuts fewer openings than the shapes drawn: a drill
+gauge asked for ten holes comes out with nine. (Shapes of one hole structure may overlap by
+design, a keyhole's circle and slot; only copies made by one statement are compared.) The
+warning says how many times the shape is drawn, how many openings it cuts, and which copies
+overlap by how much. Space the copies further apart or make them smaller; if one opening is
+meant, draw it as one shape.
+
+    hole drills {
+        for i in range(10) {
+            c = Circle(center=(i * 6, 0), radius=1 + i * 0.25)   # the last two overlap
+        }
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

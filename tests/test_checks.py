@@ -6,7 +6,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
-               "W0509", "W0510", "W0511", "W0402"}
+               "W0509", "W0510", "W0511", "W0512", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -761,3 +761,40 @@ def test_W0511_allow_overlap_silences_it(compile_text):
 }""")
     (w,) = [d for d in c.sink.items if d.code == "W0511"]
     assert "by 150.00 mm^2, 15.00 mm deep" in w.message
+
+
+GAUGE = """units mm
+solid gauge {
+    body = Rectangle(center=(30, 0), width=70, height=20)
+    hole drills {
+        for i in range(10) {
+            c = Circle(center=(i * %s, 0), radius=1 + i * 0.25)
+        }
+    }
+}"""
+
+
+def test_W0512_faces_of_one_statement_that_merge(compile_text):
+    import math
+    import re
+    # the 9th (r = 3) and 10th (r = 3.25) drills are 6 mm apart: they overlap by 0.25 mm
+    (w,) = warnings(compile_text, GAUGE % "6", "W0512")
+    assert w.span.line == 6 and "drawn 10 times but cuts 9 openings" in w.message
+    assert "copies 9 and 10 overlap by 0.25 mm" in w.message
+    area = float(re.search(r"\((\S+) mm\^2 in common", w.message).group(1))
+    r1, r2, d = 3.0, 3.25, 6.0                   # the lens of two circles
+    lens = (r1 * r1 * math.acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1))
+            + r2 * r2 * math.acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2))
+            - 0.5 * math.sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2)))
+    assert abs(area - lens) < 0.02     # circles tessellated within 0.005 mm, inside the curve
+    assert not warnings(compile_text, GAUGE % "6.5", "W0512")
+
+
+def test_W0512_not_for_a_keyhole_of_two_statements(compile_text):
+    assert not warnings(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    hole key {
+        c = Circle(center=(0, 0), radius=4)
+        s = Slot(start=(0, 0), end=(0, 8), width=3)
+    }
+}""", "W0512")

@@ -171,6 +171,9 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
     tick(None)
     _check_interpenetration(d, roots, sink)
+    for s in list(d.shapes):
+        if s.kind == "hole":
+            _check_repeated_faces(d, s, sink)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
@@ -197,6 +200,44 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                          "encloses any area", s.span,
                          hint="give the part a closed shape with an inside (a Rectangle, a "
                               "Circle, lines and arcs that close a loop around some area)")
+
+
+def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> None:
+    """W0512 for hole ``h``: the faces one statement draws several times (in a loop) that
+    overlap or touch, so they cut fewer openings than the statement draws (a drill gauge of
+    ten holes with nine openings).  Faces of different statements (a keyhole's circle and
+    slot) are one opening by design and are not compared."""
+    by_stmt: dict = {}
+    for g, f in d.own.get(h, []):
+        if g.span is not None and f is not None and not f.is_empty():
+            by_stmt.setdefault(g.span, []).append((g, f))
+    for span, faces in by_stmt.items():
+        if len(faces) < 2:
+            continue
+        shapes = [f for _, f in faces]
+        boxes = np.array([f.bounds() for f in shapes], dtype=float)
+        merges = []
+        for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+            common = shapes[i] ^ shapes[j]
+            a = _area(common)
+            if a > 1e-9:
+                merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
+            elif (shapes[i] + shapes[j]).num_contour() < 2:
+                merges.append((i, j, 0.0, 0.0))        # they touch: one contour
+        if not merges:
+            continue
+        openings = _union(shapes).num_contour()
+        i, j, depth, a = merges[0]
+        g = faces[0][0]
+        how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
+               if a > 0 else f"copies {i + 1} and {j + 1} touch")
+        more = f" ({len(merges)} such pairs)" if len(merges) > 1 else ""
+        sink.warning("W0512", f"`{g.label}` of hole `{h.path}` is drawn {len(faces)} times but "
+                     f"cuts {openings} opening{'s' if openings != 1 else ''}: {how}{more}",
+                     span,
+                     hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
+                          "(or make them smaller) so that material is left between them; if one "
+                          "opening is meant, draw it as one shape (a Slot, a Polygon)")
 
 
 def _allowed(a: Structure, b: Structure) -> bool:
