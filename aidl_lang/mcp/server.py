@@ -2,7 +2,7 @@
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
-``values``, ``explain``.  Resources: ``aidl://docs/language`` (the language reference),
+``values``, ``describe`` (the final part in words), ``explain``.  Resources: ``aidl://docs/language`` (the language reference),
 ``aidl://docs/api``, ``aidl://prompt`` (the ``aidl prompt`` text, when the caller provides it),
 ``aidl://stdlib/NAME`` and ``aidl://examples/NAME``.
 """
@@ -106,6 +106,19 @@ def build_server(root: str, budget: float = 1.0,
         `name = value unit` line each)."""
         try:
             return _json(T.values(ws, source, path, names, overrides, budget))
+        except T.Refused as e:
+            raise refused(e) from None
+
+    @server.tool(structured_output=False, annotations=reads)
+    def describe(source: str | None = None, path: str | None = None,
+                 overrides: dict[str, str] | None = None, budget: float | None = None) -> str:
+        """What the final part is, for checking it without a picture: for each part its
+        outline (kind, size, box), each opening with its kind (circle d=..., slot w x l,
+        rectangle, n-gon), centre and size, engravings (text and place), copies (parts of the
+        same shape) and symmetries (mirror, n-fold rotation); mm. Returns JSON: ok,
+        diagnostics, text (one line per feature) and describe (the same as data)."""
+        try:
+            return _json(T.describe(ws, source, path, overrides, budget))
         except T.Refused as e:
             raise refused(e) from None
 

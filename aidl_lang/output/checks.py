@@ -263,6 +263,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
     boxes = np.array([shp.bounds() for _, shp in parts], dtype=float)
     for i, j in sorted(map(tuple, box_pairs(boxes))):
         (a, sa), (b, sb) = parts[i], parts[j]
+        if a.is_within(b) or b.is_within(a):
+            continue              # a part drawn inside another's drawing: shown on it
         common = sa ^ sb
         area = _area(common)
         if area <= MIN_AREA or _allowed(a, b):
