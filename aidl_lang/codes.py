@@ -412,6 +412,20 @@ meant, draw it as one shape.
         }
     }
 """),
+    "W0513": ("text drawn over text or over a mark", """
+Engraved text is drawn over other text, or over an engraved mark (a line, arc or circle), so
+it cannot be read: two protractor labels placed on each other, a number on its tick mark.
+Text counts by the box of its pen strokes (in its own frame, turned with it): two texts whose
+boxes overlap by more than 10% of the smaller one, or a mark running through a text's box
+(less a margin of a tenth of its size) over more than a quarter of its size. The warning names
+both, with the overlap's area or the length of the mark inside the text. Move the text clear
+(beside the tick, further out), or make it smaller.
+
+    drawing scale {
+        tick = Line(start=(40, 0), end=(48, 0))
+        zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

@@ -6,7 +6,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
-               "W0509", "W0510", "W0511", "W0512", "W0402"}
+               "W0509", "W0510", "W0511", "W0512", "W0513", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -798,3 +798,40 @@ def test_W0512_not_for_a_keyhole_of_two_statements(compile_text):
         s = Slot(start=(0, 0), end=(0, 8), width=3)
     }
 }""", "W0512")
+
+
+PROTRACTOR = """units mm
+solid protractor {
+    body = Circle(center=(0, 0), radius=50)
+    drawing scale {
+        for i in range(7) {
+            tick = Line(start=(40 * cos(i * 30 deg), 40 * sin(i * 30 deg)), end=(48 * cos(i * 30 deg), 48 * sin(i * 30 deg)))
+        }
+        a = Text(position=(0, 30), text="90", size=5, valign="middle")
+        b = Text(position=(%s), text="100", size=5, valign="middle")
+        c = Text(position=(%s), text="0", size=4, valign="middle")
+    }
+}"""
+
+
+def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
+    import re
+    from aidl_lang.geometry.text import text_strokes
+    over, tick = warnings(compile_text, PROTRACTOR % ("3, 31", "44, 0"), "W0513")
+    assert over.span.line == 9 and '"100"' in over.message and '"90"' in over.message
+    assert over.labels[0].span.line == 8
+    # the two boxes from the font's own strokes: their overlap, independently
+    def box(text, size, x, y):
+        P = [p for s in text_strokes(text, size, "middle", "middle") for p in s]
+        xs, ys = [p[0] + x for p in P], [p[1] + y for p in P]
+        return min(xs), min(ys), max(xs), max(ys)
+    a, b = box("90", 5, 0, 30), box("100", 5, 3, 31)
+    common = (min(a[2], b[2]) - max(a[0], b[0])) * (min(a[3], b[3]) - max(a[1], b[1]))
+    assert f"overlap by {common:.2f} mm^2" in over.message
+    # the tick along y = 0 from x = 40 to 48 through the "0" (its box shrunk by 0.4 mm)
+    c = box("0", 4, 44, 0)
+    inside = (c[2] - 0.4) - (c[0] + 0.4)
+    assert tick.span.line == 10 and "`protractor.scale.tick`" in tick.message
+    assert float(re.search(r"runs (\S+) mm", tick.message).group(1)) == pytest.approx(inside, abs=0.006)
+    # moved apart and beside the tick: clean
+    assert not warnings(compile_text, PROTRACTOR % ("0, 22", "44, 4"), "W0513")

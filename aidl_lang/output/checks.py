@@ -171,6 +171,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
     tick(None)
     _check_interpenetration(d, roots, sink)
+    _check_text_overlap(d, sink)
     for s in list(d.shapes):
         if s.kind == "hole":
             _check_repeated_faces(d, s, sink)
@@ -200,6 +201,130 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                          "encloses any area", s.span,
                          hint="give the part a closed shape with an inside (a Rectangle, a "
                               "Circle, lines and arcs that close a loop around some area)")
+
+
+TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
+TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
+
+
+def _text_box(g, items) -> tuple:
+    """The box of a text's pen strokes in the text's own frame (turned by its rotation):
+    ``(polygon 4 x 2 in the model frame, rotation, (u0, v0, u1, v1))``."""
+    P = np.concatenate([np.array([it[1], it[2]], dtype=float) for it in items])
+    rot = float(g.data.get("rotation", 0.0) or 0.0)
+    c, s_ = math.cos(rot), math.sin(rot)
+    u, v = P[:, 0] * c + P[:, 1] * s_, -P[:, 0] * s_ + P[:, 1] * c
+    u0, v0, u1, v1 = u.min(), v.min(), u.max(), v.max()
+    corners = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
+    poly = np.column_stack([corners[:, 0] * c - corners[:, 1] * s_,
+                            corners[:, 0] * s_ + corners[:, 1] * c])
+    return poly, rot, (u0, v0, u1, v1)
+
+
+def _length_inside(pts: np.ndarray, rot: float, box) -> float:
+    """The length (mm) of the polyline ``pts`` inside ``box`` (u0, v0, u1, v1) of the frame
+    turned by ``rot``: each piece clipped exactly (Liang-Barsky)."""
+    c, s_ = math.cos(rot), math.sin(rot)
+    u, v = pts[:, 0] * c + pts[:, 1] * s_, -pts[:, 0] * s_ + pts[:, 1] * c
+    u0, v0, u1, v1 = box
+    total = 0.0
+    for k in range(len(pts) - 1):
+        x, y, dx, dy = u[k], v[k], u[k + 1] - u[k], v[k + 1] - v[k]
+        t0, t1 = 0.0, 1.0
+        for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
+            if p_ == 0:
+                if q_ < 0:
+                    t0, t1 = 1.0, 0.0
+                continue
+            r = q_ / p_
+            if p_ < 0:
+                t0 = max(t0, r)
+            else:
+                t1 = min(t1, r)
+        if t1 > t0:
+            total += (t1 - t0) * math.hypot(dx, dy)
+    return total
+
+
+def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
+    """W0513 for engraved text drawn over other text (their boxes, in each text's own frame,
+    overlap by more than :data:`TEXT_OVERLAP` of the smaller) or over an engraved mark (a
+    line, arc or circle that runs through the text's box, shrunk by :data:`TEXT_MARGIN` of the
+    text's size, over more than a quarter of that size): two protractor labels on each other,
+    a label on its tick mark."""
+    texts: dict = {}
+    marks: dict = {}
+    for style, item, g in d.strokes:
+        if g is None:
+            continue
+        if g.kind == "Text":
+            texts.setdefault(g, []).append(item)
+        else:
+            marks.setdefault(g, []).append(item)
+    if not texts:
+        return
+    tg = list(texts)
+    boxes = [_text_box(g, texts[g]) for g in tg]
+    shapes = [mf.CrossSection([b[0].tolist()]) for b in boxes]
+    bb = np.array([[b[0][:, 0].min(), b[0][:, 1].min(), b[0][:, 0].max(), b[0][:, 1].max()]
+                   for b in boxes], dtype=float)
+    said = set()
+    for i, j in sorted(map(tuple, box_pairs(bb))):
+        common = _area(shapes[i] ^ shapes[j])
+        small = min(_area(shapes[i]), _area(shapes[j]))
+        if common <= max(MIN_AREA, TEXT_OVERLAP * small):
+            continue
+        a, b = tg[i], tg[j]
+        said.add(b)
+        depth = _depth(shapes[i] ^ shapes[j], bb[i], bb[j])
+        labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
+        sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") is drawn over "
+                     f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes overlap by "
+                     f"{common:.2f} mm^2 ({_pct(common, small)} of the smaller)", b.span,
+                     labels=labels,
+                     hint=f"move `{b.label}` at least {depth:.2f} mm away from `{a.label}` (or "
+                          "make them smaller) so that both can be read")
+    if not marks:
+        return
+    mg = list(marks)
+    mpts = [_samples(marks[g]) for g in mg]
+    mb = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in mpts],
+                  dtype=float)
+    n = len(tg)
+    pairs = box_pairs(np.vstack([bb, mb]))
+    for i, j in sorted(map(tuple, pairs)):
+        if not (i < n <= j) or tg[i] in said:
+            continue
+        g, m = tg[i], mg[j - n]
+        size = float(g.data.get("size", 0.0) or 0.0) or (boxes[i][2][3] - boxes[i][2][1])
+        u0, v0, u1, v1 = boxes[i][2]
+        e = TEXT_MARGIN * size
+        inner = (u0 + e, v0 + e, u1 - e, v1 - e)
+        if inner[0] >= inner[2] or inner[1] >= inner[3]:
+            continue
+        length = sum(_length_inside(_polyline(it), boxes[i][1], inner) for it in marks[m])
+        if length <= max(0.2, 0.25 * size):
+            continue
+        said.add(g)
+        labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
+        sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
+                     f"the engraved `{m.label}`: it runs {length:.2f} mm through the text",
+                     g.span, labels=labels,
+                     hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
+                          "it: e.g. further out along the same direction), or shorten the mark")
+
+
+def _polyline(item) -> np.ndarray:
+    """An engraving item as a polyline (lines exact, curves sampled as in W0505)."""
+    if item[0] == "line":
+        return np.array([item[1], item[2]], dtype=float)
+    if item[0] == "poly":
+        P = np.asarray(item[1], dtype=float)
+        return np.vstack([P, P[:1]])
+    if item[0] == "circle":
+        P = _sample(item)
+        return np.vstack([P, P[:1]])
+    return _sample(item)
 
 
 def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> None:
