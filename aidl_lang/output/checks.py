@@ -528,6 +528,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     parts += [boundary(polys[k], k + 1) for k in range(len(feats))]
     parts.append(boundary([p for p in filled if _signed(p) <= 0], inner))
     V, vf, A, B, sf = (np.concatenate([p[k] for p in parts]) for k in range(5))
+    # (sf runs 0, 1, ..., inner in order: each feature's segments are one slice of A, B)
     v, sg, dist, foot = close_pairs(V, vf, A, B, sf, reach)
     if not len(v):
         return res
@@ -563,8 +564,8 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
         # stretches of one pair of features (two windows of one hole under the roof line: the
         # pillar between them, where nothing is thin)
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
-        if _seg_distance(c, A[sf == i], B[sf == i]) + _seg_distance(c, A[sf == j], B[sf == j]) \
-                > w + 2 * TOUCH:              # the centre is not in the wall: its nearest narrowest
+        si, sj = slice(*np.searchsorted(sf, (i, i + 1))), slice(*np.searchsorted(sf, (j, j + 1)))
+        if _seg_distance(c, A[si], B[si]) + _seg_distance(c, A[sj], B[sj]) > w + 2 * TOUCH:              # the centre is not in the wall: its nearest narrowest
             narrow = m[dist[a0:a1] <= w + TOUCH]                          # span's middle is
             c = narrow[int(np.argmin(np.hypot(*(narrow - c).T)))]
         res.webs.append((i, j, w, max(x1 - x0, y1 - y0), (float(c[0]), float(c[1]))))
