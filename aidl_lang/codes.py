@@ -426,6 +426,32 @@ both, with the overlap's area or the length of the mark inside the text. Move th
         zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
     }
 """),
+    "W0514": ("hole touches the outer edge", """
+A hole lies wholly inside its solid (no part of it is drawn past the edge) and yet touches the
+outer edge: the wall between them has zero width, so the hole opens onto the edge, as a notch
+(flush along a side: a module's cut-out drawn against the board's edge) or pinched at a point
+(a circle tangent to the edge). The warning names the hole and says how long the contact is.
+Move the hole inward to leave material around it; if a notch is meant, let the hole run past
+the edge (by 1 mm, say), which says so.
+
+    solid board {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        hole module { m = Rectangle(center=(20, 10), width=20, height=20) }   # flush: x to 30
+    }
+"""),
+    "W0515": ("tiny void between merged shapes", """
+A small opening (less than 1 mm^2, or twice the minimum wall squared) is left inside a solid
+part where no hole cuts: the shapes around it nearly meet but leave a gap, which a laser cuts
+out as a sliver. The warning gives its area, width, length and place. Make the shapes overlap
+(a negative gap, a larger size); if an opening is meant, cut it with a hole.
+
+    solid frame {
+        left = Rectangle(center=(-5, 0), width=10, height=10)
+        right = Rectangle(center=(5.05, 0), width=10, height=10)   # 0.05 mm from `left`
+        top = Rectangle(center=(0, 6), width=30, height=2)
+        bottom = Rectangle(center=(0, -6), width=30, height=2)
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

@@ -6,7 +6,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
-               "W0509", "W0510", "W0511", "W0512", "W0513", "W0402"}
+               "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -835,3 +835,43 @@ def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
     assert float(re.search(r"runs (\S+) mm", tick.message).group(1)) == pytest.approx(inside, abs=0.006)
     # moved apart and beside the tick: clean
     assert not warnings(compile_text, PROTRACTOR % ("0, 22", "44, 4"), "W0513")
+
+
+BOARD = """units mm
+solid board {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole module {
+        m = Rectangle(center=(%s, 10), width=20, height=20)
+    }
+    hole bolt { c = Circle(center=(-20, 10), radius=10) }
+}"""
+
+
+def test_W0514_a_hole_flush_with_the_edge_touches_it(compile_text):
+    # the module's square x 10..30, y 0..20 is flush with the right and top edges: 20 + 20 mm;
+    # the bolt's circle (r = 10 at (-20, 10)) touches the left and top edges at points
+    module, bolt = warnings(compile_text, BOARD % "20", "W0514")
+    assert module.span.line == 4 and "`board.module`" in module.message
+    assert "along 40.00 mm" in module.message
+    assert bolt.span.line == 7 and "at a point" in bolt.message
+    # a notch drawn past the edge (x 11..31) is meant: only the bolt is reported
+    (w,) = warnings(compile_text, BOARD % "21", "W0514")
+    assert "`board.bolt`" in w.message
+
+
+VOIDS = """units mm
+solid frame {
+    left = Rectangle(center=(-5, 0), width=10, height=10)
+    right = Rectangle(center=(%s, 0), width=10, height=10)
+    top = Rectangle(center=(0, 6), width=30, height=2)
+    bottom = Rectangle(center=(0, -6), width=30, height=2)
+}"""
+
+
+def test_W0515_a_tiny_void_between_merged_shapes(compile_text):
+    # the right square starts at x = 0.05: a 0.05 x 10 mm gap closed by the bars
+    (w,) = warnings(compile_text, VOIDS % "5.05", "W0515")
+    assert "a void of 0.500 mm^2 (about 0.05 mm wide, 10.00 mm long)" in w.message
+    assert "near (0.0, 0.0)" in w.message and w.span.line == 2
+    assert not warnings(compile_text, VOIDS % "4.9", "W0515")       # they overlap: no void
+    assert not warnings(compile_text, VOIDS % "7", "W0515")         # a 2 x 10 window: meant

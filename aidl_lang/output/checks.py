@@ -165,6 +165,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             tick(s)
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
             covered = _report_openings(a, s, min_wall, sink)
+            _check_flush(d, s, shape, a, by_part.get(s, []), sink)
+            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
             tick(s)
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
@@ -363,6 +365,67 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> Non
                      hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
                           "(or make them smaller) so that material is left between them; if one "
                           "opening is meant, draw it as one shape (a Slot, a Polygon)")
+
+
+def _perimeter(cs) -> float:
+    return float(sum(np.hypot(*(np.roll(P, -1, axis=0) - P).T).sum()
+                     for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())))
+
+
+def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, sink) -> None:
+    """W0514 for each hole of part ``s`` that lies wholly inside its solid (no part of it
+    outside: not drawn as a notch) and yet touches the outer edge (:func:`_analyse`'s
+    notches): a wall of zero width, so the hole opens onto the edge.  The figure is the length
+    of the contact, ``(P(filled) + P(hole) - P(filled - hole)) / 2`` over perimeters."""
+    if not a.notches:
+        return
+    feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
+             and _area(c.region) > 1e-9]
+    for j in sorted(a.notches):
+        c = feats[j - 1]
+        whole = _area(d.shapes.get(c.hole))
+        if whole - _area(c.region) > max(MIN_AREA, 1e-6 * whole):
+            continue                       # it overhangs the edge: a notch by design
+        filled = shape + c.region
+        contact = max(0.0, (_perimeter(filled) + _perimeter(c.region)
+                            - _perimeter(filled - c.region)) / 2)
+        x0, y0, x1, y1 = c.region.bounds()
+        where = "at a point" if contact < 2 * TOUCH else f"along {contact:.2f} mm"
+        sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
+                     f"outer edge {where} (a wall of zero width), so it opens onto the edge "
+                     f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
+                     hint=f"move `{c.hole.name}` inward (by at least the minimum wall) to "
+                          "leave material around it; if a notch is meant, let the hole run "
+                          "past the edge (e.g. by 1 mm) so that the intent is explicit")
+
+
+def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
+    """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
+    of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
+    shapes (two solids that nearly meet around a gap)."""
+    inner = [P for P in loops if _signed(P) < 0]
+    if not inner:
+        return
+    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
+                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    limit = max(2 * t * t, 1.0)
+    for P in inner:
+        area = -_signed(P)
+        if area >= limit:
+            continue
+        x0, y0 = P.min(axis=0)
+        x1, y1 = P.max(axis=0)
+        if len(hb) and ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
+                        & (hb[:, 3] >= y0)).any():
+            continue
+        width = area / max(1e-12, max(x1 - x0, y1 - y0))
+        sink.warning("W0515", f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
+                     f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
+                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
+                     "shapes around it do not quite meet", s.span,
+                     hint="make the shapes around it overlap (e.g. `gap=-1 mm`, or a larger "
+                          "size) so that no gap is left; if an opening is meant, cut it with "
+                          "a hole")
 
 
 def _allowed(a: Structure, b: Structure) -> bool:
