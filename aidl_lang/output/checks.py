@@ -229,23 +229,16 @@ def _length_inside(pts: np.ndarray, rot: float, box) -> float:
     c, s_ = math.cos(rot), math.sin(rot)
     u, v = pts[:, 0] * c + pts[:, 1] * s_, -pts[:, 0] * s_ + pts[:, 1] * c
     u0, v0, u1, v1 = box
-    total = 0.0
-    for k in range(len(pts) - 1):
-        x, y, dx, dy = u[k], v[k], u[k + 1] - u[k], v[k + 1] - v[k]
-        t0, t1 = 0.0, 1.0
-        for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
-            if p_ == 0:
-                if q_ < 0:
-                    t0, t1 = 1.0, 0.0
-                continue
+    x, y, dx, dy = u[:-1], v[:-1], np.diff(u), np.diff(v)
+    t0, t1 = np.zeros(len(x)), np.ones(len(x))
+    for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
+        with np.errstate(divide="ignore", invalid="ignore"):
             r = q_ / p_
-            if p_ < 0:
-                t0 = max(t0, r)
-            else:
-                t1 = min(t1, r)
-        if t1 > t0:
-            total += (t1 - t0) * math.hypot(dx, dy)
-    return total
+        par = p_ == 0
+        t1 = np.where(par & (q_ < 0), 0.0, t1)           # parallel and outside
+        t0 = np.where(~par & (p_ < 0), np.maximum(t0, r), t0)
+        t1 = np.where(~par & (p_ > 0), np.minimum(t1, r), t1)
+    return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
 
 
 def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
