@@ -223,13 +223,15 @@ def _text_box(g, items) -> tuple:
     return poly, rot, (u0, v0, u1, v1)
 
 
-def _length_inside(pts: np.ndarray, rot: float, box) -> float:
-    """The length (mm) of the polyline ``pts`` inside ``box`` (u0, v0, u1, v1) of the frame
-    turned by ``rot``: each piece clipped exactly (Liang-Barsky)."""
+def _length_inside(seg: tuple, rot: float, box) -> float:
+    """The length (mm) of the segments ``seg`` (starts, ends: k x 2 each) inside ``box``
+    (u0, v0, u1, v1) of the frame turned by ``rot``: each clipped exactly (Liang-Barsky), all
+    in one array operation."""
+    a, b = seg
     c, s_ = math.cos(rot), math.sin(rot)
-    u, v = pts[:, 0] * c + pts[:, 1] * s_, -pts[:, 0] * s_ + pts[:, 1] * c
+    x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
+    dx, dy = b[:, 0] * c + b[:, 1] * s_ - x, -b[:, 0] * s_ + b[:, 1] * c - y
     u0, v0, u1, v1 = box
-    x, y, dx, dy = u[:-1], v[:-1], np.diff(u), np.diff(v)
     t0, t1 = np.zeros(len(x)), np.ones(len(x))
     for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -239,6 +241,17 @@ def _length_inside(pts: np.ndarray, rot: float, box) -> float:
         t0 = np.where(~par & (p_ < 0), np.maximum(t0, r), t0)
         t1 = np.where(~par & (p_ > 0), np.minimum(t1, r), t1)
     return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
+
+
+def _mark_segments(items) -> tuple:
+    """The segments of an engraved mark's ``items`` as (starts, ends), k x 2 each: lines
+    exact, curves as the polylines of their W0505 samples."""
+    a, b = [], []
+    for it in items:
+        P = _polyline(it)
+        a.append(P[:-1])
+        b.append(P[1:])
+    return np.concatenate(a), np.concatenate(b)
 
 
 def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
@@ -286,6 +299,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
     mb = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in mpts],
                   dtype=float)
     n = len(tg)
+    segs: dict = {}
     pairs = box_pairs(np.vstack([bb, mb]))
     for i, j in sorted(map(tuple, pairs)):
         if not (i < n <= j) or tg[i] in said:
@@ -297,7 +311,9 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
         inner = (u0 + e, v0 + e, u1 - e, v1 - e)
         if inner[0] >= inner[2] or inner[1] >= inner[3]:
             continue
-        length = sum(_length_inside(_polyline(it), boxes[i][1], inner) for it in marks[m])
+        if m not in segs:
+            segs[m] = _mark_segments(marks[m])
+        length = _length_inside(segs[m], boxes[i][1], inner)
         if length <= max(0.2, 0.25 * size):
             continue
         said.add(g)
