@@ -59,7 +59,7 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 may overlap; `aidl render --layout sheet` lays them out flat for cutting). `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
 turn; the program is valid, but pin what matters with constraints.
-`aidl check --describe` lists each part's outline, openings (kind, centre, size), text, copies and symmetries: compare them with the request.
+Part in words: `aidl check --describe`.
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
