@@ -251,6 +251,22 @@ class Result:
         return self._output
 
     @property
+    def description(self) -> dict:
+        """What the final part is, as JSON-ready data (``aidl check --describe --json``): for
+        each part its outline's kind, size and box, each opening's kind (circle ``d``, slot
+        ``w`` x ``l``, rectangle, polygon ``n``, outline), centre and size, its engravings
+        (text with its string) and place, its copies and symmetries; mm and degrees
+        (:func:`aidl_lang.output.describe.describe`).  Raises :class:`NotCompiled`."""
+        from .output.describe import describe
+        return describe(self.output)
+
+    def describe(self) -> str:
+        """:attr:`description` as compact text, one line per feature, e.g. ``circle d=6 at
+        (10, 5)`` (``aidl check --describe``).  Raises :class:`NotCompiled`."""
+        from .output.describe import describe_text
+        return describe_text(self.description)
+
+    @property
     def parts(self) -> list[PartInfo]:
         """The parts of the final shape (see :class:`PartInfo`).  Raises :class:`NotCompiled`."""
         out = []

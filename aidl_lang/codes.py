@@ -382,6 +382,76 @@ fit.
     # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges
     #                 with hole `bracket.first_pattern[4]`
 """),
+    "W0511": ("parts of an assembly interpenetrate", """
+Two separate parts (the solid children of an assembly) overlap: parts cut from a sheet cannot
+occupy the same place, so the drawing shows them wrongly placed (two gears closer than their
+centre distance, whose teeth run into each other). The warning names both parts, the overlap's
+area and its depth along the line between them. Move one part away (meshing spur gears sit at
+the centre distance module * (teeth1 + teeth2) / 2, which `gear_pair` in std/gears.aidl keeps),
+or shrink it; if the overlap is meant (a picture of parts stacked), say so with
+`AllowOverlap(a, b)` in the assembly.
+
+    import "std/gears.aidl"
+    assembly drive {
+        a = spur_gear(teeth=12, module=1.5 mm, cx=0 mm, cy=0 mm)
+        b = spur_gear(teeth=36, module=1.5 mm, cx=34 mm, cy=0 mm)   # 36 mm apart is right
+    }
+"""),
+    "W0512": ("copies of one shape merge into one opening", """
+One statement of a hole structure draws a shape several times (in a `for` loop), and some of
+the copies overlap or touch, so the hole cuts fewer openings than the shapes drawn: a drill
+gauge asked for ten holes comes out with nine. (Shapes of one hole structure may overlap by
+design, a keyhole's circle and slot; only copies made by one statement are compared.) The
+warning says how many times the shape is drawn, how many openings it cuts, and which copies
+overlap by how much. Space the copies further apart or make them smaller; if one opening is
+meant, draw it as one shape.
+
+    hole drills {
+        for i in range(10) {
+            c = Circle(center=(i * 6, 0), radius=1 + i * 0.25)   # the last two overlap
+        }
+    }
+"""),
+    "W0513": ("text drawn over text or over a mark", """
+Engraved text is drawn over other text, or over an engraved mark (a line, arc or circle), so
+it cannot be read: two protractor labels placed on each other, a number on its tick mark.
+Text counts by the box of its pen strokes (in its own frame, turned with it): two texts whose
+boxes overlap by more than 10% of the smaller one, or a mark running through a text's box
+(less a margin of a tenth of its size) over more than a quarter of its size. The warning names
+both, with the overlap's area or the length of the mark inside the text. Move the text clear
+(beside the tick, further out), or make it smaller.
+
+    drawing scale {
+        tick = Line(start=(40, 0), end=(48, 0))
+        zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
+    }
+"""),
+    "W0514": ("hole touches the outer edge", """
+A hole lies wholly inside its solid (no part of it is drawn past the edge) and yet touches the
+outer edge: the wall between them has zero width, so the hole opens onto the edge, as a notch
+(flush along a side: a module's cut-out drawn against the board's edge) or pinched at a point
+(a circle tangent to the edge). The warning names the hole and says how long the contact is.
+Move the hole inward to leave material around it; if a notch is meant, let the hole run past
+the edge (by 1 mm, say), which says so.
+
+    solid board {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        hole module { m = Rectangle(center=(20, 10), width=20, height=20) }   # flush: x to 30
+    }
+"""),
+    "W0515": ("tiny void between merged shapes", """
+A small opening (less than 1 mm^2, or twice the minimum wall squared) is left inside a solid
+part where no hole cuts: the shapes around it nearly meet but leave a gap, which a laser cuts
+out as a sliver. The warning gives its area, width, length and place. Make the shapes overlap
+(a negative gap, a larger size); if an opening is meant, cut it with a hole.
+
+    solid frame {
+        left = Rectangle(center=(-5, 0), width=10, height=10)
+        right = Rectangle(center=(5.05, 0), width=10, height=10)   # 0.05 mm from `left`
+        top = Rectangle(center=(0, 6), width=30, height=2)
+        bottom = Rectangle(center=(0, -6), width=30, height=2)
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

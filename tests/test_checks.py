@@ -6,7 +6,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
-               "W0509", "W0510", "W0402"}
+               "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -685,3 +685,193 @@ def test_W0508_a_hole_wholly_inside_another(compile_text):
     assert w.message == ("hole `plate.nut` lies wholly inside hole `plate.bore` of `plate`: the "
                          "two cut one opening, and hole `plate.nut` cuts nothing of its own "
                          "(0.20 mm^2)")
+
+
+CAR = """units mm
+solid car {
+    body = RoundedRectangle(center=(0, 15), width=120, height=30, radius=8)
+    roof = RoundedRectangle(center=(0, 36), width=70, height=24, radius=8)
+    hole windows {
+        front = RoundedRectangle(center=(14, 36), width=26, height=23.16, radius=4)
+        back = RoundedRectangle(center=(-14, 36), width=26, height=23.16, radius=4)
+    }
+    hole wheels {
+        front = Circle(center=(35, 0), radius=12)
+        back = Circle(center=(-35, 0), radius=12)
+    }
+}"""
+
+
+def test_W0507_points_at_the_wall_not_between_two_stretches_of_it(compile_text):
+    # both windows of one hole come 0.42 mm under the roof line; the close points run over
+    # x in [-23, -5] and [5, 23], whose box centre (0, 47.8) is the pillar between them
+    import re
+    (w,) = warnings(compile_text, CAR, "W0507")
+    assert "0.42 mm wide" in w.message and w.span.line == 5
+    x, y = map(float, re.search(r"near \((\S+), (\S+)\)\)", w.message).groups())
+    # the wall: between y = 47.58 (the windows' top) and 48 (the roof), over 5 <= |x| <= 23
+    assert 47.58 - 0.05 <= y <= 48.0 + 0.05 and 4.95 <= abs(x) <= 23.05, (x, y)
+
+
+def test_W0507_opening_piece_is_located_on_the_piece():
+    import manifold3d as mf
+    from aidl_lang.output.checks import _point_of
+    # an L-shaped thin piece: its box centre (5, 5) is off it, the reported point is on it
+    L = mf.CrossSection.square((10, 0.3)) + mf.CrossSection.square((0.3, 10))
+    x, y = _point_of(L, (5.0, 5.0))
+    assert (x <= 0.3 + 1e-9 or y <= 0.3 + 1e-9) and (x, y) != (5.0, 5.0)
+
+
+GEARS_CLOSE = """import "std/gears.aidl"
+assembly drive {
+    a = spur_gear(teeth=12, module=1.5 mm, bore=3 mm, cx=0 mm, cy=0 mm)
+    b = spur_gear(teeth=36, module=1.5 mm, bore=8 mm, phase=185 deg, cx=%s, cy=0 mm)
+}"""
+
+
+def test_W0511_gears_placed_too_close_interpenetrate(compile_text):
+    import re
+    # 34 mm apart where the centre distance is 1.5 * (12 + 36) / 2 = 36 mm
+    c = compile_text(GEARS_CLOSE % "34 mm")
+    (w,) = [d for d in c.sink.items if d.code == "W0511"]
+    assert "`drive.a` and `drive.b`" in w.message and w.span.line == 4
+    assert w.labels[0].span.line == 3 and "AllowOverlap(a, b)" in w.hint
+    area = float(re.search(r"by (\S+) mm\^2", w.message).group(1))
+    # the same overlap measured on the exact outlines (tessellated anew)
+    import aidl_lang
+    r = aidl_lang.compile(source=GEARS_CLOSE % "34 mm", path=str(EXAMPLES[0]))
+    pa, pb = r.output.parts
+    assert abs((pa.shape ^ pb.shape).area() - area) < 0.01 * area + 0.01
+    assert area > 5
+    # far apart: silent
+    c = compile_text(GEARS_CLOSE % "40 mm")
+    assert not [d for d in c.sink.items if d.code == "W0511"]
+
+
+def test_W0511_allow_overlap_silences_it(compile_text):
+    c = compile_text("""assembly stack {
+    solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }
+    solid base { r = Rectangle(center=(5, 0), width=20, height=10) }
+    AllowOverlap(lid, base)
+}""")
+    assert not [d for d in c.sink.items if d.code == "W0511"]
+    c = compile_text("""assembly stack {
+    solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }
+    solid base { r = Rectangle(center=(5, 0), width=20, height=10) }
+}""")
+    (w,) = [d for d in c.sink.items if d.code == "W0511"]
+    assert "by 150.00 mm^2, 15.00 mm deep" in w.message
+
+
+GAUGE = """units mm
+solid gauge {
+    body = Rectangle(center=(30, 0), width=70, height=20)
+    hole drills {
+        for i in range(10) {
+            c = Circle(center=(i * %s, 0), radius=1 + i * 0.25)
+        }
+    }
+}"""
+
+
+def test_W0512_faces_of_one_statement_that_merge(compile_text):
+    import math
+    import re
+    # the 9th (r = 3) and 10th (r = 3.25) drills are 6 mm apart: they overlap by 0.25 mm
+    (w,) = warnings(compile_text, GAUGE % "6", "W0512")
+    assert w.span.line == 6 and "drawn 10 times but cuts 9 openings" in w.message
+    assert "copies 9 and 10 overlap by 0.25 mm" in w.message
+    area = float(re.search(r"\((\S+) mm\^2 in common", w.message).group(1))
+    r1, r2, d = 3.0, 3.25, 6.0                   # the lens of two circles
+    lens = (r1 * r1 * math.acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1))
+            + r2 * r2 * math.acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2))
+            - 0.5 * math.sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2)))
+    assert abs(area - lens) < 0.02     # circles tessellated within 0.005 mm, inside the curve
+    assert not warnings(compile_text, GAUGE % "6.5", "W0512")
+
+
+def test_W0512_not_for_a_keyhole_of_two_statements(compile_text):
+    assert not warnings(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    hole key {
+        c = Circle(center=(0, 0), radius=4)
+        s = Slot(start=(0, 0), end=(0, 8), width=3)
+    }
+}""", "W0512")
+
+
+PROTRACTOR = """units mm
+solid protractor {
+    body = Circle(center=(0, 0), radius=50)
+    drawing scale {
+        for i in range(7) {
+            tick = Line(start=(40 * cos(i * 30 deg), 40 * sin(i * 30 deg)), end=(48 * cos(i * 30 deg), 48 * sin(i * 30 deg)))
+        }
+        a = Text(position=(0, 30), text="90", size=5, valign="middle")
+        b = Text(position=(%s), text="100", size=5, valign="middle")
+        c = Text(position=(%s), text="0", size=4, valign="middle")
+    }
+}"""
+
+
+def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
+    import re
+    from aidl_lang.geometry.text import text_strokes
+    over, tick = warnings(compile_text, PROTRACTOR % ("3, 31", "44, 0"), "W0513")
+    assert over.span.line == 9 and '"100"' in over.message and '"90"' in over.message
+    assert over.labels[0].span.line == 8
+    # the two boxes from the font's own strokes: their overlap, independently
+    def box(text, size, x, y):
+        P = [p for s in text_strokes(text, size, "middle", "middle") for p in s]
+        xs, ys = [p[0] + x for p in P], [p[1] + y for p in P]
+        return min(xs), min(ys), max(xs), max(ys)
+    a, b = box("90", 5, 0, 30), box("100", 5, 3, 31)
+    common = (min(a[2], b[2]) - max(a[0], b[0])) * (min(a[3], b[3]) - max(a[1], b[1]))
+    assert f"overlap by {common:.2f} mm^2" in over.message
+    # the tick along y = 0 from x = 40 to 48 through the "0" (its box shrunk by 0.4 mm)
+    c = box("0", 4, 44, 0)
+    inside = (c[2] - 0.4) - (c[0] + 0.4)
+    assert tick.span.line == 10 and "`protractor.scale.tick`" in tick.message
+    assert float(re.search(r"runs (\S+) mm", tick.message).group(1)) == pytest.approx(inside, abs=0.006)
+    # moved apart and beside the tick: clean
+    assert not warnings(compile_text, PROTRACTOR % ("0, 22", "44, 4"), "W0513")
+
+
+BOARD = """units mm
+solid board {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole module {
+        m = Rectangle(center=(%s, 10), width=20, height=20)
+    }
+    hole bolt { c = Circle(center=(-20, 10), radius=10) }
+}"""
+
+
+def test_W0514_a_hole_flush_with_the_edge_touches_it(compile_text):
+    # the module's square x 10..30, y 0..20 is flush with the right and top edges: 20 + 20 mm;
+    # the bolt's circle (r = 10 at (-20, 10)) touches the left and top edges at points
+    module, bolt = warnings(compile_text, BOARD % "20", "W0514")
+    assert module.span.line == 4 and "`board.module`" in module.message
+    assert "along 40.00 mm" in module.message
+    assert bolt.span.line == 7 and "at a point" in bolt.message
+    # a notch drawn past the edge (x 11..31) is meant: only the bolt is reported
+    (w,) = warnings(compile_text, BOARD % "21", "W0514")
+    assert "`board.bolt`" in w.message
+
+
+VOIDS = """units mm
+solid frame {
+    left = Rectangle(center=(-5, 0), width=10, height=10)
+    right = Rectangle(center=(%s, 0), width=10, height=10)
+    top = Rectangle(center=(0, 6), width=30, height=2)
+    bottom = Rectangle(center=(0, -6), width=30, height=2)
+}"""
+
+
+def test_W0515_a_tiny_void_between_merged_shapes(compile_text):
+    # the right square starts at x = 0.05: a 0.05 x 10 mm gap closed by the bars
+    (w,) = warnings(compile_text, VOIDS % "5.05", "W0515")
+    assert "a void of 0.500 mm^2 (about 0.05 mm wide, 10.00 mm long)" in w.message
+    assert "near (0.0, 0.0)" in w.message and w.span.line == 2
+    assert not warnings(compile_text, VOIDS % "4.9", "W0515")       # they overlap: no void
+    assert not warnings(compile_text, VOIDS % "7", "W0515")         # a 2 x 10 window: meant

@@ -50,7 +50,7 @@ async def test_mcp_server_over_stdio(tmp_path):
         async with ClientSession(read, write) as session:
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
-            assert set(tools) == {"check", "render", "values", "explain", "docs"}
+            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs"}
             assert "source" in tools["check"].input_schema["properties"]
             assert tools["check"].annotations.read_only_hint
             assert not tools["render"].annotations.read_only_hint
@@ -68,6 +68,12 @@ async def test_mcp_server_over_stdio(tmp_path):
             doc = json.loads(_text(await session.call_tool("check", {"path": "plate.aidl"})))
             assert doc["ok"] and doc["freedom"]["dof"] >= 0
             assert doc["parts"][0]["holes"] == 1
+
+            # describe: the part in words and numbers (the d=8 bore at (10, 0))
+            doc = json.loads(_text(await session.call_tool("describe", {"path": "plate.aidl"})))
+            assert doc["ok"] and "circle d=8 at (10, 0)" in doc["text"]
+            assert doc["describe"]["parts"][0]["openings"][0]["center"] == [10, 0]
+            assert tools["describe"].annotations.read_only_hint
 
             # render: an image block that decodes to a PNG of the asked width, and a DXF
             r = await session.call_tool("render", {"path": "plate.aidl", "width": 300,

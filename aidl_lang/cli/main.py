@@ -170,6 +170,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("--values", nargs="*", default=None, metavar="NAME",
                    help="print the solved values of named entities (points, sizes, frames, "
                         "boxes) in the file's units; NAMEs filter by dotted prefix")
+    c.add_argument("--describe", action="store_true",
+                   help="describe the final part: outline, openings (kind, centre, size), "
+                        "engravings, copies, symmetries (JSON with --json)")
     _budget_arg(c)
     pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
     pl.add_argument("file")
@@ -319,6 +322,8 @@ def cmd_check(args) -> int:
         values = program.values_matching(args.values)
         extra["units"] = program.units
         extra["values"] = [v.to_json() for v in values]
+    if getattr(args, "describe", False) and program.ok:
+        extra["describe"] = program.description
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -329,6 +334,9 @@ def cmd_check(args) -> int:
             _print_dof(dofs)
         for v in values or ():
             print(v.text())
+        if "describe" in extra:
+            from ..output.describe import describe_text
+            print(describe_text(extra["describe"]))
         if values is not None and not values:
             print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
     return 0 if res.ok else 1

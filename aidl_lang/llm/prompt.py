@@ -82,10 +82,11 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
-Each child of an `assembly` is a separate part, drawn where the solver puts it (parts
-may overlap; `aidl render --layout sheet` lays them out flat for cutting). `aidl check` ends
+Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts get W0511 unless
+`AllowOverlap(a, b)`; `aidl render --layout sheet` lays them out flat for cutting). `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
 turn; the program is valid, but pin what matters with constraints.
+`aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than

@@ -2,11 +2,12 @@
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
-``values``, ``explain``, ``docs``.  Resources: ``aidl://docs/language`` (the language
-reference), ``aidl://docs/api``, ``aidl://docs/topics`` and ``aidl://docs/topic/NAME`` (the
-topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl prompt`` text, when the caller provides
-it), ``aidl://stdlib/NAME.aidl`` and ``aidl://examples/NAME.aidl``.  Prompt: ``aidl`` (the
-system prompt, when the caller provides it).
+``values``, ``describe`` (the final part in words), ``explain``, ``docs``.  Resources:
+``aidl://docs/language`` (the language reference), ``aidl://docs/api``, ``aidl://docs/topics``
+and ``aidl://docs/topic/NAME`` (the topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl
+prompt`` text, when the caller provides it), ``aidl://stdlib/NAME.aidl`` and
+``aidl://examples/NAME.aidl``.  Prompt: ``aidl`` (the system prompt, when the caller provides
+it).
 """
 from __future__ import annotations
 
@@ -27,7 +28,8 @@ for the vocabulary, standard library and examples; call `docs` with a name (Circ
 spur_gear, assert, ...) for its units, members and an example, or read aidl://docs/language \
 for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
-more), then `render` to see it and `values` to read exact positions and sizes. Paths are \
+more), then `render` to see it, `describe` to read the final part in words (outline, openings \
+with centres and sizes, texts, symmetries) and `values` to read exact positions and sizes. Paths are \
 relative to the server's allowed folder; nothing outside it can be read or written."""
 
 _PKG = Path(__file__).resolve().parent.parent
@@ -110,6 +112,19 @@ def build_server(root: str, budget: float = 1.0,
         `name = value unit` line each)."""
         try:
             return _json(T.values(ws, source, path, names, overrides, budget))
+        except T.Refused as e:
+            raise refused(e) from None
+
+    @server.tool(structured_output=False, annotations=reads)
+    def describe(source: str | None = None, path: str | None = None,
+                 overrides: dict[str, str] | None = None, budget: float | None = None) -> str:
+        """What the final part is, for checking it without a picture: for each part its
+        outline (kind, size, box), each opening with its kind (circle d=..., slot w x l,
+        rectangle, n-gon), centre and size, engravings (text and place), copies (parts of the
+        same shape) and symmetries (mirror, n-fold rotation); mm. Returns JSON: ok,
+        diagnostics, text (one line per feature) and describe (the same as data)."""
+        try:
+            return _json(T.describe(ws, source, path, overrides, budget))
         except T.Refused as e:
             raise refused(e) from None
 

@@ -164,6 +164,21 @@ def docs(name: str | None = None) -> str:
     return text
 
 
+def describe(ws: Workspace, source: str | None = None, path: str | None = None,
+             overrides: dict | None = None, budget: float | None = None) -> dict:
+    """``{"ok", "diagnostics", "units", "text", "describe"}``: what the final part is, in words
+    (``text``, as ``aidl check --describe``) and as data (``describe``: each part's outline,
+    openings with kind, centre and size, engravings, copies, symmetries; mm); the
+    diagnostics alone when the program did not solve."""
+    r = ws.compile(source, path, overrides, budget)
+    doc = _summary(ws, r)
+    if r.ok:
+        from ..output.describe import describe_text
+        doc["describe"] = r.description
+        doc["text"] = describe_text(doc["describe"])
+    return doc
+
+
 def explain(code: str) -> str:
     """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
     an unknown code, naming the known ones."""

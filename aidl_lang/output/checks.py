@@ -165,10 +165,18 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             tick(s)
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
             covered = _report_openings(a, s, min_wall, sink)
+            _check_flush(d, s, shape, a, by_part.get(s, []), sink)
+            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
             tick(s)
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
+    tick(None)
+    _check_interpenetration(d, roots, sink)
+    _check_text_overlap(d, sink)
+    for s in list(d.shapes):
+        if s.kind == "hole":
+            _check_repeated_faces(d, s, sink)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
@@ -195,6 +203,279 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                          "encloses any area", s.span,
                          hint="give the part a closed shape with an inside (a Rectangle, a "
                               "Circle, lines and arcs that close a loop around some area)")
+
+
+TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
+TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
+
+
+def _text_box(g, items) -> tuple:
+    """The box of a text's pen strokes in the text's own frame (turned by its rotation):
+    ``(polygon 4 x 2 in the model frame, rotation, (u0, v0, u1, v1))``."""
+    P = np.concatenate([np.array([it[1], it[2]], dtype=float) for it in items])
+    rot = float(g.data.get("rotation", 0.0) or 0.0)
+    c, s_ = math.cos(rot), math.sin(rot)
+    u, v = P[:, 0] * c + P[:, 1] * s_, -P[:, 0] * s_ + P[:, 1] * c
+    u0, v0, u1, v1 = u.min(), v.min(), u.max(), v.max()
+    corners = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
+    poly = np.column_stack([corners[:, 0] * c - corners[:, 1] * s_,
+                            corners[:, 0] * s_ + corners[:, 1] * c])
+    return poly, rot, (u0, v0, u1, v1)
+
+
+def _length_inside(seg: tuple, rot: float, box) -> float:
+    """The length (mm) of the segments ``seg`` (starts, ends: k x 2 each) inside ``box``
+    (u0, v0, u1, v1) of the frame turned by ``rot``: each clipped exactly (Liang-Barsky), all
+    in one array operation."""
+    a, b = seg
+    c, s_ = math.cos(rot), math.sin(rot)
+    x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
+    dx, dy = b[:, 0] * c + b[:, 1] * s_ - x, -b[:, 0] * s_ + b[:, 1] * c - y
+    u0, v0, u1, v1 = box
+    t0, t1 = np.zeros(len(x)), np.ones(len(x))
+    for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = q_ / p_
+        par = p_ == 0
+        t1 = np.where(par & (q_ < 0), 0.0, t1)           # parallel and outside
+        t0 = np.where(~par & (p_ < 0), np.maximum(t0, r), t0)
+        t1 = np.where(~par & (p_ > 0), np.minimum(t1, r), t1)
+    return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
+
+
+def _mark_segments(items) -> tuple:
+    """The segments of an engraved mark's ``items`` as (starts, ends), k x 2 each: lines
+    exact, curves as the polylines of their W0505 samples."""
+    a, b = [], []
+    for it in items:
+        P = _polyline(it)
+        a.append(P[:-1])
+        b.append(P[1:])
+    return np.concatenate(a), np.concatenate(b)
+
+
+def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
+    """W0513 for engraved text drawn over other text (their boxes, in each text's own frame,
+    overlap by more than :data:`TEXT_OVERLAP` of the smaller) or over an engraved mark (a
+    line, arc or circle that runs through the text's box, shrunk by :data:`TEXT_MARGIN` of the
+    text's size, over more than a quarter of that size): two protractor labels on each other,
+    a label on its tick mark."""
+    texts: dict = {}
+    marks: dict = {}
+    for style, item, g in d.strokes:
+        if g is None:
+            continue
+        if g.kind == "Text":
+            texts.setdefault(g, []).append(item)
+        else:
+            marks.setdefault(g, []).append(item)
+    if not texts:
+        return
+    tg = list(texts)
+    boxes = [_text_box(g, texts[g]) for g in tg]
+    shapes = [mf.CrossSection([b[0].tolist()]) for b in boxes]
+    bb = np.array([[b[0][:, 0].min(), b[0][:, 1].min(), b[0][:, 0].max(), b[0][:, 1].max()]
+                   for b in boxes], dtype=float)
+    said = set()
+    for i, j in sorted(map(tuple, box_pairs(bb))):
+        common = _area(shapes[i] ^ shapes[j])
+        small = min(_area(shapes[i]), _area(shapes[j]))
+        if common <= max(MIN_AREA, TEXT_OVERLAP * small):
+            continue
+        a, b = tg[i], tg[j]
+        said.add(b)
+        depth = _depth(shapes[i] ^ shapes[j], bb[i], bb[j])
+        labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
+        sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") is drawn over "
+                     f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes overlap by "
+                     f"{common:.2f} mm^2 ({_pct(common, small)} of the smaller)", b.span,
+                     labels=labels,
+                     hint=f"move `{b.label}` at least {depth:.2f} mm away from `{a.label}` (or "
+                          "make them smaller) so that both can be read")
+    if not marks:
+        return
+    mg = list(marks)
+    mpts = [_samples(marks[g]) for g in mg]
+    mb = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in mpts],
+                  dtype=float)
+    n = len(tg)
+    segs: dict = {}
+    pairs = box_pairs(np.vstack([bb, mb]))
+    for i, j in sorted(map(tuple, pairs)):
+        if not (i < n <= j) or tg[i] in said:
+            continue
+        g, m = tg[i], mg[j - n]
+        size = float(g.data.get("size", 0.0) or 0.0) or (boxes[i][2][3] - boxes[i][2][1])
+        u0, v0, u1, v1 = boxes[i][2]
+        e = TEXT_MARGIN * size
+        inner = (u0 + e, v0 + e, u1 - e, v1 - e)
+        if inner[0] >= inner[2] or inner[1] >= inner[3]:
+            continue
+        if m not in segs:
+            segs[m] = _mark_segments(marks[m])
+        length = _length_inside(segs[m], boxes[i][1], inner)
+        if length <= max(0.2, 0.25 * size):
+            continue
+        said.add(g)
+        labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
+        sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
+                     f"the engraved `{m.label}`: it runs {length:.2f} mm through the text",
+                     g.span, labels=labels,
+                     hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
+                          "it: e.g. further out along the same direction), or shorten the mark")
+
+
+def _polyline(item) -> np.ndarray:
+    """An engraving item as a polyline (lines exact, curves sampled as in W0505)."""
+    if item[0] == "line":
+        return np.array([item[1], item[2]], dtype=float)
+    if item[0] == "poly":
+        P = np.asarray(item[1], dtype=float)
+        return np.vstack([P, P[:1]])
+    if item[0] == "circle":
+        P = _sample(item)
+        return np.vstack([P, P[:1]])
+    return _sample(item)
+
+
+def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> None:
+    """W0512 for hole ``h``: the faces one statement draws several times (in a loop) that
+    overlap or touch, so they cut fewer openings than the statement draws (a drill gauge of
+    ten holes with nine openings).  Faces of different statements (a keyhole's circle and
+    slot) are one opening by design and are not compared."""
+    by_stmt: dict = {}
+    for g, f in d.own.get(h, []):
+        if g.span is not None and f is not None and not f.is_empty():
+            by_stmt.setdefault(g.span, []).append((g, f))
+    for span, faces in by_stmt.items():
+        if len(faces) < 2:
+            continue
+        shapes = [f for _, f in faces]
+        boxes = np.array([f.bounds() for f in shapes], dtype=float)
+        merges = []
+        for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+            common = shapes[i] ^ shapes[j]
+            a = _area(common)
+            if a > 1e-9:
+                merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
+            elif (shapes[i] + shapes[j]).num_contour() < 2:
+                merges.append((i, j, 0.0, 0.0))        # they touch: one contour
+        if not merges:
+            continue
+        openings = _union(shapes).num_contour()
+        i, j, depth, a = merges[0]
+        g = faces[0][0]
+        how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
+               if a > 0 else f"copies {i + 1} and {j + 1} touch")
+        more = f" ({len(merges)} such pairs)" if len(merges) > 1 else ""
+        sink.warning("W0512", f"`{g.label}` of hole `{h.path}` is drawn {len(faces)} times but "
+                     f"cuts {openings} opening{'s' if openings != 1 else ''}: {how}{more}",
+                     span,
+                     hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
+                          "(or make them smaller) so that material is left between them; if one "
+                          "opening is meant, draw it as one shape (a Slot, a Polygon)")
+
+
+def _perimeter(cs) -> float:
+    return float(sum(np.hypot(*(np.roll(P, -1, axis=0) - P).T).sum()
+                     for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())))
+
+
+def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, sink) -> None:
+    """W0514 for each hole of part ``s`` that lies wholly inside its solid (no part of it
+    outside: not drawn as a notch) and yet touches the outer edge (:func:`_analyse`'s
+    notches): a wall of zero width, so the hole opens onto the edge.  The figure is the length
+    of the contact, ``(P(filled) + P(hole) - P(filled - hole)) / 2`` over perimeters."""
+    if not a.notches:
+        return
+    feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
+             and _area(c.region) > 1e-9]
+    for j in sorted(a.notches):
+        c = feats[j - 1]
+        whole = _area(d.shapes.get(c.hole))
+        if whole - _area(c.region) > max(MIN_AREA, 1e-6 * whole):
+            continue                       # it overhangs the edge: a notch by design
+        filled = shape + c.region
+        contact = max(0.0, (_perimeter(filled) + _perimeter(c.region)
+                            - _perimeter(filled - c.region)) / 2)
+        x0, y0, x1, y1 = c.region.bounds()
+        where = "at a point" if contact < 2 * TOUCH else f"along {contact:.2f} mm"
+        sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
+                     f"outer edge {where} (a wall of zero width), so it opens onto the edge "
+                     f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
+                     hint=f"move `{c.hole.name}` inward (by at least the minimum wall) to "
+                          "leave material around it; if a notch is meant, let the hole run "
+                          "past the edge (e.g. by 1 mm) so that the intent is explicit")
+
+
+def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
+    """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
+    of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
+    shapes (two solids that nearly meet around a gap)."""
+    inner = [P for P in loops if _signed(P) < 0]
+    if not inner:
+        return
+    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
+                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    limit = max(2 * t * t, 1.0)
+    for P in inner:
+        area = -_signed(P)
+        if area >= limit:
+            continue
+        x0, y0 = P.min(axis=0)
+        x1, y1 = P.max(axis=0)
+        if len(hb) and ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
+                        & (hb[:, 3] >= y0)).any():
+            continue
+        width = area / max(1e-12, max(x1 - x0, y1 - y0))
+        sink.warning("W0515", f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
+                     f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
+                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
+                     "shapes around it do not quite meet", s.span,
+                     hint="make the shapes around it overlap (e.g. `gap=-1 mm`, or a larger "
+                          "size) so that no gap is left; if an opening is meant, cut it with "
+                          "a hole")
+
+
+def _allowed(a: Structure, b: Structure) -> bool:
+    """``AllowOverlap(a, b)`` (or one naming a structure around either) was written."""
+    for x, y in ((a, b), (b, a)):
+        node = x
+        while node is not None:
+            ok = getattr(node, "overlap_ok", set())
+            if any(isinstance(o, Structure) and (y is o or y.is_within(o)) for o in ok):
+                return True
+            node = node.parent
+    return False
+
+
+def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
+    """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
+    by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
+    place (two gears placed closer than their centre distance: their teeth interpenetrate).
+    Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
+    parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
+    if len(parts) < 2:
+        return
+    boxes = np.array([shp.bounds() for _, shp in parts], dtype=float)
+    for i, j in sorted(map(tuple, box_pairs(boxes))):
+        (a, sa), (b, sb) = parts[i], parts[j]
+        if a.is_within(b) or b.is_within(a):
+            continue              # a part drawn inside another's drawing: shown on it
+        common = sa ^ sb
+        area = _area(common)
+        if area <= MIN_AREA or _allowed(a, b):
+            continue
+        depth = _depth(common, boxes[i], boxes[j])
+        labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
+        sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
+                     f"by {area:.2f} mm^2, {depth:.2f} mm deep (separate parts cannot occupy "
+                     "the same place)", b.span or a.span, labels=labels,
+                     hint=f"move `{b.path}` at least {depth:.2f} mm further from `{a.path}` "
+                          "(meshing gears sit at the centre distance module * (teeth1 + "
+                          "teeth2) / 2: `gear_pair` in std/gears.aidl places them), or shrink "
+                          "one; if the overlap is meant (a picture of parts stacked), write "
+                          f"`AllowOverlap({a.name}, {b.name})` in their assembly")
 
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
@@ -319,6 +600,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     parts += [boundary(polys[k], k + 1) for k in range(len(feats))]
     parts.append(boundary([p for p in filled if _signed(p) <= 0], inner))
     V, vf, A, B, sf = (np.concatenate([p[k] for p in parts]) for k in range(5))
+    # (sf runs 0, 1, ..., inner in order: each feature's segments are one slice of A, B)
     v, sg, dist, foot = close_pairs(V, vf, A, B, sf, reach)
     if not len(v):
         return res
@@ -349,10 +631,31 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
         m = mid[a0:a1]
         x0, y0 = m.min(axis=0)
         x1, y1 = m.max(axis=0)
-        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), ((x0 + x1) / 2, (y0 + y1) / 2)))
+        # located at the middle of a narrowest span (within 0.01 mm of the least width), the
+        # one nearest to the close points' box centre: that centre alone can fall between two
+        # stretches of one pair of features (two windows of one hole under the roof line: the
+        # pillar between them, where nothing is thin)
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        si, sj = slice(*np.searchsorted(sf, (i, i + 1))), slice(*np.searchsorted(sf, (j, j + 1)))
+        if _seg_distance(c, A[si], B[si]) + _seg_distance(c, A[sj], B[sj]) > w + 2 * TOUCH:              # the centre is not in the wall: its nearest narrowest
+            narrow = m[dist[a0:a1] <= w + TOUCH]                          # span's middle is
+            c = narrow[int(np.argmin(np.hypot(*(narrow - c).T)))]
+        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), (float(c[0]), float(c[1]))))
     res.merges.sort(key=lambda m: (m[1], m[0]))      # in the order of the located hole
     res.webs.sort(key=lambda w: (w[1], w[0]))
     return res
+
+
+def _seg_distance(p, A, B) -> float:
+    """The least distance (mm) from point ``p`` to the segments ``A[k]``-``B[k]``."""
+    if not len(A):
+        return math.inf
+    d = B - A
+    L2 = np.einsum("ij,ij->i", d, d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, d) / L2, 0.0), 0.0, 1.0)
+    e = A + t[:, None] * d - p
+    return float(np.sqrt(np.einsum("ij,ij->i", e, e).min()))
 
 
 def _depth(common, bi, bj) -> float:
@@ -618,12 +921,22 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
             f" beside {names[0]}" if names else "")
         span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
+        px, py = _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
         sink.warning("W0507", f"a wall of `{s.path}`{between} is thinner than {t:g} mm "
                      f"(about {width:.2f} mm over {length:.1f} mm, near "
-                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", span,
+                     f"({px:.1f}, {py:.1f}))", span,
                      hint=f"move or shrink the feature so that at least {t:g} mm of material is "
                           "left (a laser or router cannot hold a thinner wall); the minimum is "
                           "set with --min-wall")
+
+
+def _point_of(piece, near) -> tuple[float, float]:
+    """The vertex of ``piece`` (what the opening removed: a thin wall) nearest to ``near``
+    (its box's centre): a point on the wall itself, where the box's centre of a curved or
+    L-shaped wall lies off it."""
+    P = np.concatenate([np.asarray(p, dtype=float) for p in piece.to_polygons()])
+    k = int(np.argmin(np.hypot(P[:, 0] - near[0], P[:, 1] - near[1])))
+    return float(P[k, 0]), float(P[k, 1])
 
 
 UNION_GROUP = 16       # tile pieces united in one uninterruptible call by _join
