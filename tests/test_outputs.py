@@ -300,6 +300,25 @@ def test_example_svg_loops_match_the_dxf(path):
         assert [a / k for a in areas] == pytest.approx(dxf_areas, rel=1e-4, abs=1e-4)
 
 
+def test_a_hole_touching_the_outline_at_a_point_is_drawn(compile_text):
+    """A round hole tangent to the part's edge joins the outline at one point, so its exact
+    loop holds a whole-turn arc from that point back to it: written as one SVG ``A`` it drew
+    nothing (its end is its start) and the hole vanished from the SVG and PNG.  Re-read by
+    svgelements, the cut encloses the board minus the notch and the whole hole."""
+    o, _ = output_of(compile_text, """units mm
+solid board {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole module { m = Rectangle(center=(20, 10), width=20, height=20) }
+    hole bolt { c = Circle(center=(-20, 10), radius=10) }
+}
+""")
+    svg = encode(o, ".svg", Options(style="preview")).decode()
+    loops = _svg_loops(_cut_group(svg))
+    k = (96 / 25.4) ** 2
+    assert abs(sum(_poly_area(p) for p in loops)) / k == pytest.approx(
+        60 * 40 - 20 * 20 - math.pi * 10 ** 2, rel=1e-4)
+
+
 def _cut_group(svg: str) -> str:
     """The SVG with only the `cut` group kept (the others removed)."""
     import xml.etree.ElementTree as ET
@@ -379,7 +398,7 @@ def test_laser_svg_strokes_are_true_hairlines_red_cut_blue_engrave():
 def test_svg_draws_a_chained_stroke_as_one_path():
     svg = encode(_hand_built(), ".svg", Options(style="laser")).decode()
     engrave = svg[svg.index('id="engrave"'):]
-    assert engrave.count("<path") == 2 and "M-15,5L-10,5A5,5 0 0 0 -10,-5" in engrave
+    assert engrave.count("<path") == 2 and "M-15,5L-10,5A5,5 0 0 0 -5,0A5,5 0 0 0 -10,-5" in engrave  # a half turn: two quarters
 
 
 def test_margin_zero_makes_the_page_the_exact_bounding_box():

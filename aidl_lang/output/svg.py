@@ -58,24 +58,28 @@ def _pt10(p) -> str:
 
 
 def _arc_cmd(a: Arc) -> str:
+    """SVG ``A`` commands of an arc: one below a half turn; from a half turn up, equal pieces
+    of at most a quarter turn, since an arc whose end points are (nearly) opposite or equal
+    does not fix its circle for a reader (a whole turn drawn as one ``A`` is nothing at
+    all: the end equals the start)."""
     r = _f(a.radius)
-    large = 1 if abs(a.sweep) > math.pi else 0
     sweep_flag = 0 if a.sweep > 0 else 1          # y is flipped: model ccw is SVG's negative
-    return f"A{r},{r} 0 {large} {sweep_flag} {_pt(a.end)}"
+    n = 1 if abs(a.sweep) < math.pi - 1e-9 else math.ceil(abs(a.sweep) / (math.pi / 2) - 1e-9)
+    step = a.sweep / n
+    return "".join(f"A{r},{r} 0 0 {sweep_flag} {_pt(a.at(a.start_angle + (k + 1) * step))}"
+                   for k in range(n))
 
 
 def segments_d(segments, closed: bool) -> str:
-    """Path data of a chain of exact segments (a Circle as two half arcs): one subpath per
+    """Path data of a chain of exact segments (a Circle as four quarter arcs): one subpath per
     run of segments each starting within :data:`CHAIN_TOL` (mm) of the previous
     one's end, so a gap is a move, never a drawn line."""
     out = []
     here = None                       # the pen's position, None after a circle or at the start
     for s in segments:
         if isinstance(s, Circle):
-            sg = 1 if s.ccw else -1
-            h1 = Arc(s.center, s.radius, 0.0, sg * math.pi)
-            h2 = Arc(s.center, s.radius, sg * math.pi, sg * math.pi)
-            out.append(f"M{_pt(h1.start)}{_arc_cmd(h1)}{_arc_cmd(h2)}Z")
+            whole = Arc(s.center, s.radius, 0.0, 2 * math.pi if s.ccw else -2 * math.pi)
+            out.append(f"M{_pt(whole.start)}{_arc_cmd(whole)}Z")    # four quarter arcs
             here = None
             continue
         if here is None or math.dist(here, s.start) > CHAIN_TOL:
