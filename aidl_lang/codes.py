@@ -220,8 +220,8 @@ positions. Give starting positions closer to the intended shape and check the co
 by other errors.
 """),
     "E0405": ("assertion failed", """
-An `assert` statement's condition is false: at the solved values (or, for a condition on params
-and constants alone, as soon as it is read). The message gives the condition, the reason written
+An `assert` statement's condition is false at the solved values (every false one is reported;
+after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
 after it and the values found, in the file's units. An `assert` is a check, not a constraint: the
 solver never moves geometry to satisfy it. Change the values or constraints so that it holds.
 

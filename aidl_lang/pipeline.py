@@ -181,7 +181,7 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
                      program.span if program.stmts else None,
                      hint="add a structure with shapes, e.g. `solid plate { body = "
                           "Rectangle(center=(0, 0), width=40, height=20) }`")
-    if sink.has_errors or not do_solve:
+    if not do_solve or sink.has_errors and not _only_requirements(sink):
         return Compiled(sink, model, params=params)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         # overflow in a residual is reported as a failed solve, not as a numpy warning
@@ -191,10 +191,18 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         took = time.perf_counter() - t0
     if not result.converged:
         report_failure(sink, result)
+        check_assertions(sink, model, held_only=True)
         return Compiled(sink, model, result, solve_seconds=took, params=params)
     end = Deadline(deadline, budget)
     return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks, end),
                     solve_seconds=took, params=params, deadline=end)
+
+
+def _only_requirements(sink: DiagnosticSink) -> bool:
+    """Whether every error so far is a false ``assert`` on known values (E0405): the program
+    was built whole, so it is solved and its other asserts are checked too (all the failed
+    requirements are reported, not the first one)."""
+    return all(d.code == "E0405" for d in sink.items if d.is_error)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
@@ -269,12 +277,13 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     return True
 
 
-def check_assertions(sink: DiagnosticSink, model: Model) -> None:
-    """E0405 for each ``assert`` that does not hold at the solution."""
+def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False) -> None:
+    """E0405 for each ``assert`` that does not hold at the solution, every one of them (after
+    a failed solve, ``held_only``: those that read no solved value)."""
     if not model.assertions:
         return
     from .geometry.assertions import describe, failed
-    for a, bad in failed(model):
+    for a, bad in failed(model, held_only):
         sink.error("E0405", describe(a, bad), a.span,
                    hint="an `assert` states what must be true of the design; change the values "
                         "or constraints so that it holds (it is not a constraint: the solver "
