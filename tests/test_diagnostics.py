@@ -39,7 +39,7 @@ CASES = [
     x = 3 @ 4
 }""", (2, 11, 2, 12)),
     ("E0003", "x = " + "(" * 70 + "1" + ")" * 70, (1, 69, 1, 70)),
-    ("E0101", """solid s { c = Circle(center=(0, 0), radius=rad) }""", (1, 44, 1, 47)),
+    ("E0101", """solid s { c = Circle(center=(0, 0), radius=rdi) }""", (1, 44, 1, 47)),
     ("E0102", """solid s {
     body = Rectangle(center=(0, 0), width=10, height=5)
     corner = body.top_lft
