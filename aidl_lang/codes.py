@@ -322,7 +322,10 @@ put a drawing that is only an illustration at assembly level, beside the part.
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
 shape: typically copies of a pattern that land inside a filled solid, or a feature placed at the
-wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it.
+wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it. When a
+hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
+in, children included), the warning names that hole and the share it cuts: to keep the solid
+over the hole, declare it beside that structure (a sibling's material survives the hole).
 """),
     "W0507": ("wall thinner than the minimum", """
 Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
