@@ -269,7 +269,9 @@ the file. Please report it with the input file.
     "W0401": ("redundant constraint", """
 The constraint holds already because other constraints (or a constructor's held dimension) imply
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
-over-constrained. Reported by `aidl check --dof`.
+over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
+(two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
+for the group, whose hint says which to keep (the first written) and which to drop.
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)

@@ -313,8 +313,12 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     unknowns that it ranks."""
     from .solver.diagnose import MAX_DENSE, redundancies
     deadline = None if seconds is None else time.monotonic() + seconds
-    for red in redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE):
+    reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE)
+    grouped = _report_groups(sink, reds)
+    for red in reds:
         c = red.constraint
+        if id(c) in grouped:
+            continue
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
         labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
@@ -333,6 +337,55 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))
+
+
+def _report_groups(sink: DiagnosticSink, reds: list) -> set:
+    """One W0401 per group of constraints that each follow from the others (two `Fixed` of
+    points of one held shape, `Coincident(a, b)` beside `a == b`): the group is reported
+    once, at its second-written member, and the hint says which to drop (all but the first
+    written).  Returns the ids of the constraints so reported."""
+    full = {id(r.constraint): r for r in reds if not r.partly and r.by}
+    parent = {k: k for k in full}
+
+    def find(k):
+        while parent[k] != k:
+            parent[k] = parent[parent[k]]
+            k = parent[k]
+        return k
+    for k, r in full.items():
+        for b in r.by:
+            if id(b) in full:
+                parent[find(k)] = find(id(b))
+    groups: dict = {}
+    for k in full:
+        groups.setdefault(find(k), []).append(full[k].constraint)
+    done: set = set()
+
+    def pos(c):
+        return (c.span.line, c.span.col) if c.span is not None else (0, 0)
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        members.sort(key=pos)
+        keep, drop = members[0], members[1:]
+        done.update(id(c) for c in members)
+        names = ", ".join(f"`{c.describe()}`" for c in members[:-1]) + \
+            f" and `{members[-1].describe()}`"
+        others = [b for b in full[id(keep)].by if id(b) not in done]
+        also = (" (with " + ", ".join(f"`{b.describe()}`" for b in others[:3]) + ")"
+                if others else "")
+        lines = ", ".join(f"`{c.describe()}` (line {c.span.line})" if c.span is not None
+                          else f"`{c.describe()}`" for c in drop)
+        labels = [Label(c.span, "says the same" if c is not keep else "keep this one",
+                        primary=False) for c in members if c is not drop[0] and c.span]
+        sink.add(Diagnostic(
+            "W0401", f"{names} say the same thing: each follows from the "
+                     f"{'other' if len(members) == 2 else 'others'}{also}, so "
+                     f"{len(drop)} of the {len(members)} can go", drop[0].span, "warning",
+            hint=f"keep `{keep.describe()}` (line {keep.span.line if keep.span else '?'}) and "
+                 f"drop {lines}: the model stays exactly as constrained",
+            labels=labels))
+    return done
 
 
 def _where(c) -> str:
