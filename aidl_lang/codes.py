@@ -284,6 +284,22 @@ branch nearest to satisfied at the starting geometry. This warning says the solv
 other branch (for Angle: a line now points the opposite way), which usually means the
 starting positions were far from the intended shape.
 """),
+    "W0404": ("feature that can slide", """
+A structure inside a part (a hole, a drawing, a solid child) can move relative to its part:
+no constraint places it along x or y (or both), only its starting position does, so a changed
+value or a small edit can leave it anywhere (a row of holes whose height nothing ties to the
+plate). The warning names the feature, the free direction and the part; place it with a
+constraint in its parent (`AlignCenterY(bits, plate)`, `Below(labels, bits, gap=4)`), or
+`Fixed(bits)` if it is where it belongs. Freedom of a whole part (where it sits on the sheet)
+is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
+(harmless)".
+
+    solid gauge {
+        plate = Rectangle(center=(0, 0), width=120, height=40)
+        hole bits { h = Circle(center=(0, 5), diameter=3) }
+        AlignCenterX(bits, plate)        # x is placed; y is not: W0404
+    }
+"""),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
 (or its parent's own geometry) that covers the hole, the hole is filled again and does not cut

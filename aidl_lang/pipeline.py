@@ -339,6 +339,42 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                                  "the same intent", labels=labels))
 
 
+MAX_SLIDING_UNKNOWNS = 20000    # larger models are not searched for sliding features
+
+
+def report_sliding(sink: DiagnosticSink, result: SolveResult):
+    """W0404 for each feature (a structure inside a part) that can move relative to its part
+    although a constraint places it (in the other direction, typically: `AlignCenterX(bits,
+    plate)` and nothing for y), so only its starting guess holds it there
+    (:func:`aidl_lang.solver.diagnose.sliding`); a feature placed by its coordinates alone is
+    listed on the ok line, not warned.
+    Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
+    :class:`~aidl_lang.solver.diagnose.Sliding` found (None for a model too large)."""
+    from .solver.diagnose import sliding
+    solver = result.solver
+    if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
+        return None
+    sl = sliding(solver)
+    for t, axes in sl.features:
+        if id(t) not in sl.constrained or id(t) in sl.bounded:
+            continue            # placed by its coordinates alone, as AIDL allows, or free
+            #                     only within the room an inequality leaves: not warned
+        part = t.parent
+        while part is not None and part.parent is not None and part.parent.kind != "assembly":
+            part = part.parent
+        name = t.name
+        ex = (f"`AlignCenterX({name}, ...)`" if axes == "x" else
+              f"`AlignCenterY({name}, ...)`" if axes == "y" else
+              f"`{name}.bb.center == (..., ...)`")
+        sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
+                     f"`{part.path if part is not None else t.path}`: only its starting "
+                     "position places it there", t.span,
+                     hint=f"place it with a constraint in its parent (e.g. {ex}, or "
+                          f"`Fixed({name})` if it is where it belongs); where the whole part "
+                          "sits may stay free, that is harmless")
+    return sl
+
+
 def _report_groups(sink: DiagnosticSink, reds: list) -> set:
     """One W0401 per group of constraints that each follow from the others (two `Fixed` of
     points of one held shape, `Coincident(a, b)` beside `a == b`): the group is reported

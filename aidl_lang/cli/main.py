@@ -329,7 +329,7 @@ def cmd_check(args) -> int:
             from ..solver.diagnose import degrees_of_freedom, freedom_text
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False))
-            extra["freedom"] = freedom_text(dofs_all)
+            extra["freedom"] = freedom_text(dofs_all, program.sliding())
     values = None
     if args.values is not None and program.ok:
         values = program.values_matching(args.values)
