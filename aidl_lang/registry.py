@@ -331,7 +331,7 @@ _DEFS = {
     "Rigid": _c([A("a", "any"), A("b", "any", None), A("c", "any", None)],
                 cat="operation",
                 doc="shapes keep their placement to each other; a structure moves, never "
-                    "bends; each argument a structure, shape or list (Rigid([a, b, c, d]))."),
+                    "bends; lists allowed."),
     "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
                        doc="hole a may be refilled by b (no W0501)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
