@@ -778,7 +778,15 @@ def sliding(solver) -> Sliding:
     model = solver.model
     out = Sliding()
     parts = _parts(model)
-    cols = np.flatnonzero(solver.free)
+    # only the columns a move touches: every frame, and the points of a part without one
+    # (the rows' other unknowns stay put); a few columns, so the Jacobian is dense and small
+    need = np.zeros(len(solver.free), dtype=bool)
+    need[:len(solver.is_frame)] |= solver.is_frame
+    for g in model.all_geometry():
+        if g.owner in parts and g.owner.parent is None:
+            for pt in g.points.values():
+                need[pt.ix] = need[pt.iy] = True
+    cols = np.flatnonzero(need & solver.free)
     if not parts or not len(cols):
         return out
     x = solver.x
