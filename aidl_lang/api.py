@@ -137,6 +137,7 @@ class Result:
         self._values: list[Value] | None = None
         self._output = None
         self._redundant: list[Diagnostic] | None = None
+        self._sliding = None           # what the freedom left means (find_redundant)
 
     # ------------------------------------------------------------------ status
     @property
@@ -213,11 +214,25 @@ class Result:
         dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail)
         counted = all(d.rank >= 0 for d in dofs)
         doc: dict = {"dof": sum(max(0, d.dof) for d in dofs) if counted else None,
-                     "text": freedom_text(dofs)}
+                     "text": freedom_text(dofs, self.sliding())}
         if detail:
             doc["structures"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                                   "dof": d.dof, "floating": list(d.floating)} for d in dofs]
         return doc
+
+    def sliding(self):
+        """What the freedom left means (:class:`~aidl_lang.solver.diagnose.Sliding`: the parts
+        whose whole body may move, harmless, and the features that can slide relative to
+        their part, ``W0404``), or None for a model too large to search.  Raises
+        :class:`NotCompiled`."""
+        self._need("degrees of freedom")
+        if self._sliding is None:
+            from .pipeline import MAX_SLIDING_UNKNOWNS
+            from .solver.diagnose import sliding
+            solver = self.compiled.solve.solver
+            if int(solver.free.sum()) <= MAX_SLIDING_UNKNOWNS:
+                self._sliding = sliding(solver)
+        return self._sliding
 
     def find_redundant(self, seconds: float | None = 1.0,
                        max_rows: int | None = 1000) -> list[Diagnostic]:
@@ -232,6 +247,8 @@ class Result:
                 from .pipeline import report_redundancies
                 before = len(self.sink.items)
                 report_redundancies(self.sink, self.compiled.solve, seconds, max_rows)
+                from .pipeline import report_sliding
+                self._sliding = report_sliding(self.sink, self.compiled.solve)
                 self._redundant = list(self.sink.items[before:])
         return list(self._redundant)
 

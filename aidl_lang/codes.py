@@ -220,8 +220,8 @@ positions. Give starting positions closer to the intended shape and check the co
 by other errors.
 """),
     "E0405": ("assertion failed", """
-An `assert` statement's condition is false: at the solved values (or, for a condition on params
-and constants alone, as soon as it is read). The message gives the condition, the reason written
+An `assert` statement's condition is false at the solved values (every false one is reported;
+after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
 after it and the values found, in the file's units. An `assert` is a check, not a constraint: the
 solver never moves geometry to satisfy it. Change the values or constraints so that it holds.
 
@@ -269,7 +269,9 @@ the file. Please report it with the input file.
     "W0401": ("redundant constraint", """
 The constraint holds already because other constraints (or a constructor's held dimension) imply
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
-over-constrained. Reported by `aidl check --dof`.
+over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
+(two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
+for the group, whose hint says which to keep (the first written) and which to drop.
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)
@@ -281,6 +283,22 @@ Convention-dependent constraints (Angle sense, Tangent side, point-line Distance
 branch nearest to satisfied at the starting geometry. This warning says the solve ended on the
 other branch (for Angle: a line now points the opposite way), which usually means the
 starting positions were far from the intended shape.
+"""),
+    "W0404": ("feature that can slide", """
+A structure inside a part (a hole, a drawing, a solid child) can move relative to its part:
+no constraint places it along x or y (or both), only its starting position does, so a changed
+value or a small edit can leave it anywhere (a row of holes whose height nothing ties to the
+plate). The warning names the feature, the free direction and the part; place it with a
+constraint in its parent (`AlignCenterY(bits, plate)`, `Below(labels, bits, gap=4)`), or
+`Fixed(bits)` if it is where it belongs. Freedom of a whole part (where it sits on the sheet)
+is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
+(harmless)".
+
+    solid gauge {
+        plate = Rectangle(center=(0, 0), width=120, height=40)
+        hole bits { h = Circle(center=(0, 5), diameter=3) }
+        AlignCenterX(bits, plate)        # x is placed; y is not: W0404
+    }
 """),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
@@ -322,7 +340,10 @@ put a drawing that is only an illustration at assembly level, beside the part.
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
 shape: typically copies of a pattern that land inside a filled solid, or a feature placed at the
-wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it.
+wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it. When a
+hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
+in, children included), the warning names that hole and the share it cuts: to keep the solid
+over the hole, declare it beside that structure (a sibling's material survives the hole).
 """),
     "W0507": ("wall thinner than the minimum", """
 Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with

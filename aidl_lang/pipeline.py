@@ -181,7 +181,7 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
                      program.span if program.stmts else None,
                      hint="add a structure with shapes, e.g. `solid plate { body = "
                           "Rectangle(center=(0, 0), width=40, height=20) }`")
-    if sink.has_errors or not do_solve:
+    if not do_solve or sink.has_errors and not _only_requirements(sink):
         return Compiled(sink, model, params=params)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         # overflow in a residual is reported as a failed solve, not as a numpy warning
@@ -191,10 +191,18 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         took = time.perf_counter() - t0
     if not result.converged:
         report_failure(sink, result)
+        check_assertions(sink, model, held_only=True)
         return Compiled(sink, model, result, solve_seconds=took, params=params)
     end = Deadline(deadline, budget)
     return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks, end),
                     solve_seconds=took, params=params, deadline=end)
+
+
+def _only_requirements(sink: DiagnosticSink) -> bool:
+    """Whether every error so far is a false ``assert`` on known values (E0405): the program
+    was built whole, so it is solved and its other asserts are checked too (all the failed
+    requirements are reported, not the first one)."""
+    return all(d.code == "E0405" for d in sink.items if d.is_error)
 
 
 def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
@@ -269,12 +277,13 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     return True
 
 
-def check_assertions(sink: DiagnosticSink, model: Model) -> None:
-    """E0405 for each ``assert`` that does not hold at the solution."""
+def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False) -> None:
+    """E0405 for each ``assert`` that does not hold at the solution, every one of them (after
+    a failed solve, ``held_only``: those that read no solved value)."""
     if not model.assertions:
         return
     from .geometry.assertions import describe, failed
-    for a, bad in failed(model):
+    for a, bad in failed(model, held_only):
         sink.error("E0405", describe(a, bad), a.span,
                    hint="an `assert` states what must be true of the design; change the values "
                         "or constraints so that it holds (it is not a constraint: the solver "
@@ -304,8 +313,12 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     unknowns that it ranks."""
     from .solver.diagnose import MAX_DENSE, redundancies
     deadline = None if seconds is None else time.monotonic() + seconds
-    for red in redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE):
+    reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE)
+    grouped = _report_groups(sink, reds)
+    for red in reds:
         c = red.constraint
+        if id(c) in grouped:
+            continue
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
         labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
@@ -324,6 +337,91 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))
+
+
+MAX_SLIDING_UNKNOWNS = 20000    # larger models are not searched for sliding features
+
+
+def report_sliding(sink: DiagnosticSink, result: SolveResult):
+    """W0404 for each feature (a structure inside a part) that can move relative to its part
+    although a constraint places it (in the other direction, typically: `AlignCenterX(bits,
+    plate)` and nothing for y), so only its starting guess holds it there
+    (:func:`aidl_lang.solver.diagnose.sliding`); a feature placed by its coordinates alone is
+    listed on the ok line, not warned.
+    Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
+    :class:`~aidl_lang.solver.diagnose.Sliding` found (None for a model too large)."""
+    from .solver.diagnose import sliding
+    solver = result.solver
+    if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
+        return None
+    sl = sliding(solver)
+    for t, axes in sl.features:
+        if id(t) not in sl.constrained or id(t) in sl.bounded:
+            continue            # placed by its coordinates alone, as AIDL allows, or free
+            #                     only within the room an inequality leaves: not warned
+        part = t.parent
+        while part is not None and part.parent is not None and part.parent.kind != "assembly":
+            part = part.parent
+        name = t.name
+        ex = (f"`AlignCenterX({name}, ...)`" if axes == "x" else
+              f"`AlignCenterY({name}, ...)`" if axes == "y" else
+              f"`{name}.bb.center == (..., ...)`")
+        sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
+                     f"`{part.path if part is not None else t.path}`: only its starting "
+                     "position places it there", t.span,
+                     hint=f"place it with a constraint in its parent (e.g. {ex}, or "
+                          f"`Fixed({name})` if it is where it belongs); where the whole part "
+                          "sits may stay free, that is harmless")
+    return sl
+
+
+def _report_groups(sink: DiagnosticSink, reds: list) -> set:
+    """One W0401 per group of constraints that each follow from the others (two `Fixed` of
+    points of one held shape, `Coincident(a, b)` beside `a == b`): the group is reported
+    once, at its second-written member, and the hint says which to drop (all but the first
+    written).  Returns the ids of the constraints so reported."""
+    full = {id(r.constraint): r for r in reds if not r.partly and r.by}
+    parent = {k: k for k in full}
+
+    def find(k):
+        while parent[k] != k:
+            parent[k] = parent[parent[k]]
+            k = parent[k]
+        return k
+    for k, r in full.items():
+        for b in r.by:
+            if id(b) in full:
+                parent[find(k)] = find(id(b))
+    groups: dict = {}
+    for k in full:
+        groups.setdefault(find(k), []).append(full[k].constraint)
+    done: set = set()
+
+    def pos(c):
+        return (c.span.line, c.span.col) if c.span is not None else (0, 0)
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        members.sort(key=pos)
+        keep, drop = members[0], members[1:]
+        done.update(id(c) for c in members)
+        names = ", ".join(f"`{c.describe()}`" for c in members[:-1]) + \
+            f" and `{members[-1].describe()}`"
+        others = [b for b in full[id(keep)].by if id(b) not in done]
+        also = (" (with " + ", ".join(f"`{b.describe()}`" for b in others[:3]) + ")"
+                if others else "")
+        lines = ", ".join(f"`{c.describe()}` (line {c.span.line})" if c.span is not None
+                          else f"`{c.describe()}`" for c in drop)
+        labels = [Label(c.span, "says the same" if c is not keep else "keep this one",
+                        primary=False) for c in members if c is not drop[0] and c.span]
+        sink.add(Diagnostic(
+            "W0401", f"{names} say the same thing: each follows from the "
+                     f"{'other' if len(members) == 2 else 'others'}{also}, so "
+                     f"{len(drop)} of the {len(members)} can go", drop[0].span, "warning",
+            hint=f"keep `{keep.describe()}` (line {keep.span.line if keep.span else '?'}) and "
+                 f"drop {lines}: the model stays exactly as constrained",
+            labels=labels))
+    return done
 
 
 def _where(c) -> str:

@@ -328,10 +328,10 @@ _DEFS = {
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
                             "or on each point of at."),
-    "Rigid": _c([A("a", "boxed"), A("b", "boxed", None), A("c", "boxed", None)],
+    "Rigid": _c([A("a", "any"), A("b", "any", None), A("c", "any", None)],
                 cat="operation",
                 doc="shapes keep their placement to each other; a structure moves, never "
-                    "bends."),
+                    "bends; lists allowed."),
     "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
                        doc="hole a may be refilled by b (no W0501)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],

@@ -17,7 +17,7 @@ from __future__ import annotations
 from . import ast as A
 from .diagnostics import DiagnosticSink, did_you_mean
 from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
-                       lookup, template_param)
+                       UNITS_ANGLE, UNITS_LENGTH, lookup, template_param)
 from .sources import ImportRefused
 
 
@@ -261,7 +261,8 @@ class Checker:
 
     def name(self, e: A.Name, scope: _Scope) -> None:
         n = e.id
-        if scope.has(n) or n in CONSTANTS or n == "self" or n in FUNCTIONS or lookup(n):
+        if scope.has(n) or n in CONSTANTS or n == "self" or n in FUNCTIONS or lookup(n) \
+                or n in UNITS_LENGTH or n in UNITS_ANGLE:       # `length / mm`: 1 mm
             return
         if self.import_failed:
             return

@@ -50,12 +50,41 @@ def test_top_level_assert_names_the_structure():
     assert (code, line) == ("E0405", 11) and "2 mm <= 1.5 mm is false" in msg
 
 
-def test_param_only_assert_is_checked_when_read():
+def test_param_only_assert_is_checked():
     src = "param n = 3\nassert n >= 4, \"at least four\"\nsolid s { c = Circle((0, 0), n) }\n"
     r = aidl_lang.compile(source=src)
     [(code, line, msg)] = errors(r)
     assert (code, line) == ("E0405", 2) and "3 >= 4 is false" in msg
-    assert r.compiled.solve is None           # an interpretation error: no solve
+
+
+FOUR = """param w = 40 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=w, height=20)
+    hole bore { c = Circle(center=(0, 0), radius=5) }
+    assert w <= 30 mm, "fits the bed"
+    assert body.height >= 25 mm
+    assert bore.c.radius <= 3 mm, "small bore"
+    Inside(bore, body, margin=MARGIN)
+}
+"""
+
+
+def test_every_failed_requirement_is_reported():
+    """Four requirements that fail (issue 35): three asserts, the first on a param alone (it
+    used to stop the program there: one error of four), and an `Inside` margin that cannot
+    hold (the solve fails; the asserts that read no solved value are still reported)."""
+    r = aidl_lang.compile(source=FOUR.replace("MARGIN", "12"))
+    got = sorted((c, ln, m) for c, ln, m in errors(r))
+    assert [(c, ln) for c, ln, _ in got] == [("E0401", 8), ("E0405", 5), ("E0405", 6),
+                                             ("E0405", 7)]
+    assert "largest residual 7" in got[0][2]              # 5 + 12 = 17 > 10: 7 mm short
+    assert got[1][2].endswith("(fits the bed): 40 mm <= 30 mm is false")
+    assert got[2][2].endswith("20 mm >= 25 mm is false")
+    assert got[3][2].endswith("(small bore): 5 mm <= 3 mm is false")
+    # the margin met: the three asserts, after the solve
+    r = aidl_lang.compile(source=FOUR.replace("MARGIN", "1"))
+    assert [(c, ln) for c, ln, _ in sorted(errors(r))] == [("E0405", 5), ("E0405", 6),
+                                                           ("E0405", 7)]
 
 
 @pytest.mark.parametrize("cond, code", [("a or b", "E0108"), ("1 + 2", "E0108"),

@@ -62,3 +62,18 @@ solid s {
 }""")
     assert not bad.ok
     assert [d.code for d in bad.sink.errors()] == ["E0401"]
+
+
+def test_a_unit_name_is_one_of_that_unit():
+    """`length / mm` (issue 35): a unit's name as a value is 1 of that unit (it was E0101
+    "unknown name `mm`"), whatever the file's unit; a name of the program's own hides it."""
+    import aidl_lang
+    src = ("units in\nparam length = 2 in\nn = length / mm\nq = 90 * deg / rad\n"
+           "solid s { body = Rectangle(center=(0, 0), width=n * 1 mm, height=q) }\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.errors]
+    got = {v.name: v for v in r.values_matching(["s.body"])}
+    assert got["s.body.width"].to_json()["value"] == pytest.approx(50.8 / 25.4, abs=1e-12)
+    assert got["s.body.height"].to_json()["value"] == pytest.approx(math.pi / 2, abs=1e-12)
+    shadowed = aidl_lang.compile(source="mm = 3\nsolid s { c = Circle(center=(0, 0), radius=mm) }\n")
+    assert shadowed.ok and shadowed.values_matching(["s.c.radius"])[0].to_json()["value"] == 3

@@ -875,3 +875,40 @@ def test_W0515_a_tiny_void_between_merged_shapes(compile_text):
     assert "near (0.0, 0.0)" in w.message and w.span.line == 2
     assert not warnings(compile_text, VOIDS % "4.9", "W0515")       # they overlap: no void
     assert not warnings(compile_text, VOIDS % "7", "W0515")         # a 2 x 10 window: meant
+
+
+def test_W0506_a_solid_cut_away_by_a_hole_of_its_own_structure(compile_text):
+    """Issue 35: a pin declared in the plate whose hole it sits in is cut away by that hole;
+    W0506 says so (and the share cut away), and that a sibling structure would survive, instead
+    of "move it or delete it".  Beside the plate, the same pin shows and nothing is reported."""
+    src = """assembly a {
+    solid part {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(0, 0), radius=6) }
+        solid pin { p = Circle(center=(X, 0), radius=3) }
+    }
+}"""
+    (w,) = warnings(compile_text, src.replace("X", "0"), "W0506")
+    assert w.span.line == 5
+    assert "hole `a.part.h` of the same structure cuts away all of it" in w.message
+    assert "sibling structure's material survives" in w.hint
+    (w,) = warnings(compile_text, src.replace("X", "7"), "W0506")      # 4 of 6 across: cut
+    assert "cuts away 2" in w.message and "% of it, and the rest lies inside" in w.message
+    share = float(w.message.split("cuts away ")[1].split("%")[0]) / 100
+    import math
+    # the circle r=3 at x=7 against the hole r=6 at 0: the lens area over the disc's
+    d, r1, r2 = 7.0, 3.0, 6.0
+    lens = (r1 * r1 * math.acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1))
+            + r2 * r2 * math.acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2))
+            - 0.5 * math.sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2)))
+    assert share == pytest.approx(lens / (math.pi * r1 * r1), abs=0.006)
+    beside = """assembly a {
+    solid part {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(0, 0), radius=6) }
+    }
+    solid pin { p = Circle(center=(0, 0), radius=3) }
+}"""
+    assert not warnings(compile_text, beside, "W0506")
+    import aidl_lang
+    assert len(aidl_lang.compile(source=beside).parts) == 2     # the pin is a part of its own

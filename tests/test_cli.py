@@ -330,3 +330,19 @@ def test_only_the_given_subcommand_is_built_and_usage_is_unchanged(capsys):
         a = [x for x in mod._parser(name)._actions if x.dest == "cmd"][0].choices[name]
         b = [x for x in full._actions if x.dest == "cmd"][0].choices[name]
         assert a.format_help() == b.format_help()
+
+
+def test_values_before_the_file_does_not_swallow_it(good):
+    """`aidl check --values FILE` (issue 35): `--values` takes any number of names, and used to
+    take the program's name too ("the following arguments are required: file")."""
+    alone = aidl("check", "--values", good)
+    assert alone.returncode == 0, alone.stderr
+    assert "s.h.c.radius = 5.000 mm" in alone.stdout and "s.body.width = 40.000 mm" in alone.stdout
+    named = aidl("check", "--values", "s.h", good)
+    assert named.returncode == 0, named.stderr
+    assert "s.h.c.radius = 5.000 mm" in named.stdout and "s.body" not in named.stdout
+    after = aidl("check", good, "--values", "s.h.c", "s.body.width", "--json")
+    got = {v["name"] for v in json.loads(after.stdout)["values"]}
+    assert "s.h.c.radius" in got and "s.body.width" in got and "s.body.height" not in got
+    none = aidl("check", "--values")
+    assert none.returncode == 2 and "required: file" in none.stderr

@@ -313,7 +313,8 @@ def test_ok_line_says_fully_constrained_or_counts_freedom(tmp_path):
         assert r.returncode == 0, r.stdout + r.stderr
         return r.stdout
     assert "; fully constrained)" in check("solid s {\n    c = Circle((0, 0), 3)\n    Fixed(c)\n}\n")
-    assert "; 2 degrees of freedom left, see --dof)" in check("solid s {\n    c = Circle((0, 0), 3)\n}\n")
+    assert ("; 2 degrees of freedom left (free: only where the whole part sits (harmless)), "
+            "see --dof)") in check("solid s {\n    c = Circle((0, 0), 3)\n}\n")
 
 
 # ------------------------------------------------------------------ syntax traps

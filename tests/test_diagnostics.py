@@ -39,7 +39,7 @@ CASES = [
     x = 3 @ 4
 }""", (2, 11, 2, 12)),
     ("E0003", "x = " + "(" * 70 + "1" + ")" * 70, (1, 69, 1, 70)),
-    ("E0101", """solid s { c = Circle(center=(0, 0), radius=rad) }""", (1, 44, 1, 47)),
+    ("E0101", """solid s { c = Circle(center=(0, 0), radius=rdi) }""", (1, 44, 1, 47)),
     ("E0102", """solid s {
     body = Rectangle(center=(0, 0), width=10, height=5)
     corner = body.top_lft
@@ -789,3 +789,14 @@ def test_W0106_through_the_cli_and_explain(tmp_path):
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "explain", "W0106"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and "floor division used as a length" in r.stdout
+
+
+def test_W0404_a_hole_placed_in_x_only_slides_in_y():
+    import aidl_lang
+    src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    hole h { c = Circle(center=(0, 3), radius=2) }\n    AlignCenterX(h, body)\n}\n")
+    r = aidl_lang.compile(source=src)
+    ws = [d for d in r.find_redundant() if d.code == "W0404"]
+    assert [(d.span.line, d.message) for d in ws] == [
+        (3, "hole `p.h` can slide along y relative to `p`: only its starting position places "
+            "it there")]

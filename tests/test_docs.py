@@ -114,7 +114,7 @@ def test_the_blocks_compile_without_errors_where_the_result_matters(tmp_path):
     compile); one with errors does not.  Guards the marker logic itself."""
     ok = aidl_lang.compile(source="solid s { c = Circle(center=(0, 0), radius=5) }\n")
     assert ok.ok and not ok.diagnostics
-    bad = aidl_lang.compile(source="solid s { c = Circle(center=(0, 0), radius=rad) }\n")
+    bad = aidl_lang.compile(source="solid s { c = Circle(center=(0, 0), radius=rdi) }\n")
     assert {d.code for d in bad.diagnostics} == {"E0101"}
     text = ("<!-- expect: E0101 \"unknown name\" -->\n\n   ```aidl\n   solid s { c = Circle("
             "center=(0, 0), radius=rad) }   # error[E0101]\n   ```\n\n```aidl\nunits mm\n```\n")

@@ -133,13 +133,46 @@ def test_fixed_body_that_holds_the_part_is_not_redundant(tmp_path):
 def test_two_statements_of_one_distance_and_a_partial_overlap(tmp_path):
     ws = _check(tmp_path, SMALL["twice_the_same_distance"])
     msgs = {w["span"]["line"]: w["message"] for w in ws}
-    # the later of two equal statements is not singled out: each follows from the other
-    assert "`Distance(a, b, 10)` is redundant: it follows from" in msgs[5]
-    assert msgs[6].startswith("`b.x - a.x == 10` is redundant: it follows from")
-    assert 7 not in msgs                    # Horizontal pins b.y: nothing else does
+    # two equal statements: one warning for the pair (issue 35: it was one per direction), at
+    # the later one, and the hint says which to drop
+    assert list(msgs) == [6]                # Horizontal pins b.y: nothing else does
+    assert msgs[6].startswith("`Distance(a, b, 10)` and `b.x - a.x == 10` say the same thing: "
+                              "each follows from the other")
+    (w,) = ws
+    assert w["hint"].startswith("keep `Distance(a, b, 10)` (line 5) and drop "
+                                "`b.x - a.x == 10` (line 6)")
     ws = _check(tmp_path, SMALL["symmetric_and_coincident"])
     msgs = {w["span"]["line"]: w["message"] for w in ws}
     assert msgs[8].startswith("`Coincident(o, axis)` is redundant: it follows from "
                               "`Symmetric(c, d, axis)`")
     assert msgs[9].startswith("`Symmetric(c, d, axis)` is partly redundant: part of what it "
                               "says already follows from `Coincident(o, axis)`")
+
+
+def test_pins_that_imply_each_other_are_one_warning_that_says_which_to_drop(tmp_path):
+    """Three `Fixed` of one held rectangle (issue 35): each follows from the others, so the
+    group is one W0401 (it was three), and the hint keeps the first written and drops the rest;
+    dropping them leaves the model exactly as constrained (the same freedom count, no
+    W0401 left)."""
+    src = """solid s {
+    r = Rectangle(center=(0, 0), width=30, height=20)
+    Fixed(r.center)
+    Fixed(r.bottom_left)
+    Fixed(r)
+}
+"""
+    (w,) = _check(tmp_path, src)
+    assert w["span"]["line"] == 4
+    assert w["message"].startswith("`Fixed(r.center)`, `Fixed(r.bottom_left)` and `Fixed(r)` "
+                                   "say the same thing: each follows from the others")
+    assert "2 of the 3 can go" in w["message"]
+    assert w["hint"].startswith("keep `Fixed(r.center)` (line 3) and drop "
+                                "`Fixed(r.bottom_left)` (line 4), `Fixed(r)` (line 5)")
+    kept = "\n".join(ln for ln in src.splitlines() if "bottom_left)" not in ln
+                     and ln.strip() != "Fixed(r)") + "\n"
+    assert _check(tmp_path, kept) == []
+    f = tmp_path / "k.aidl"
+    f.write_text(kept)
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--json"],
+                         capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert json.loads(out.stdout)["freedom"] == "fully constrained"

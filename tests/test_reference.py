@@ -290,12 +290,16 @@ def test_a_line_through_guessed_points_may_turn(tmp_path):
     assert res.ok and not [d for d in res.sink.items if d.severity == "error"]
 
 
-def test_rigid_ties_shapes_together_but_not_two_structures(tmp_path):
-    """What the prompt says of Rigid: shapes move together; each structure only keeps its
-    own shape (the second hole stays free to go elsewhere)."""
+def test_rigid_ties_two_structures_together(tmp_path):
+    """What the prompt says of Rigid: `Rigid(a, b)` of two structures moves them as one body,
+    so placing each hole somewhere else conflicts (E0401 naming the Rigid), and placing one
+    carries the other along."""
     src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
            "    hole a { c = Circle(center=(-10, 0), radius=3) }\n"
            "    hole b { c = Circle(center=(10, 0), radius=3) }\n    Fixed(body)\n"
-           "    Rigid(a, b)\n    a.c.center == (-12, 2)\n    b.c.center == (12, -2)\n}\n")
-    res = compile_source(src, str(tmp_path / "p.aidl"))
-    assert res.ok and not res.sink.items
+           "    Rigid(a, b)\n    a.c.center == (-12, 2)\n    %s\n}\n")
+    res = compile_source(src % "b.c.center == (12, -2)", str(tmp_path / "p.aidl"))
+    (e,) = [d for d in res.sink.items if d.code == "E0401"]
+    assert "Rigid(a, b)" in str([lab.message for lab in e.labels])
+    res = compile_source(src % "assert b.c.center == (8, 2)", str(tmp_path / "p.aidl"))
+    assert res.ok and not [d for d in res.sink.items if d.severity == "error"]

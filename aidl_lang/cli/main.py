@@ -159,7 +159,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--force", action="store_true",
                    help="replace an output file that is read-only (default: refuse it)")
     c = add("check", help="parse, check and solve; write nothing")
-    c.add_argument("file")
+    # optional here only so that `aidl check --values FILE` parses (`--values` takes any
+    # number of names and would swallow it): _check_file takes the file back from the names
+    c.add_argument("file", nargs="?")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
     c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
@@ -291,6 +293,24 @@ REDUNDANCY_SECONDS = 1.0
 REDUNDANCY_ROWS = 1000
 
 
+def _check_file(args, parser) -> None:
+    """``aidl check --values FILE``: ``--values`` (any number of names) swallowed the
+    program's name; the last name that is an existing file or ends in ``.aidl`` (or ``-``) is
+    the program, the others stay names.  No program at all is argparse's usual usage error."""
+    if args.file is not None:
+        return
+    names = args.values or []
+    for k in range(len(names) - 1, -1, -1):
+        v = names[k]
+        if v == "-" or v.endswith(".aidl") or os.path.isfile(v):
+            args.file = v
+            args.values = names[:k] + names[k + 1:]
+            return
+    print("usage: aidl check [options] FILE\n"
+          "aidl check: error: the following arguments are required: file", file=sys.stderr)
+    raise SystemExit(2)
+
+
 def cmd_check(args) -> int:
     from ..api import compile as compile_program
     program = compile_program(path=args.file, overrides=_overrides(args.set),
@@ -316,7 +336,7 @@ def cmd_check(args) -> int:
             from ..solver.diagnose import degrees_of_freedom, freedom_text
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False))
-            extra["freedom"] = freedom_text(dofs_all)
+            extra["freedom"] = freedom_text(dofs_all, program.sliding())
     values = None
     if args.values is not None and program.ok:
         values = program.values_matching(args.values)
@@ -702,8 +722,11 @@ def main(argv: list[str] | None = None) -> int:
     global _command
     argv = sys.argv[1:] if argv is None else list(argv)
     first = argv[0] if argv else None
-    args = _parser(first if first in SUBCOMMANDS else None).parse_args(argv)
+    parser = _parser(first if first in SUBCOMMANDS else None)
+    args = parser.parse_args(argv)
     _command = args.cmd
+    if args.cmd == "check":
+        _check_file(args, parser)
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,

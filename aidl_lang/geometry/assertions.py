@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from .bbox import collect, contains_bbox, exclusions, expand
-from .expr import evaluate
+from .expr import Lin, evaluate
 from .model import Assertion, Model
 
 TOL = 1e-6
@@ -51,13 +51,39 @@ def _eval(e, x, exclude: set) -> float:
     return float(evaluate(e, x))
 
 
-def failed(model: Model) -> list[tuple[Assertion, list]]:
-    """Each assertion that does not hold at ``model.x``, with its failing sides' values."""
+def _unknowns(e, free, out: list) -> None:
+    """Whether expression ``e`` reads a free parameter or a box (appended to ``out``)."""
+    if out or isinstance(e, (int, float)):
+        return
+    if isinstance(e, Lin):
+        if any(free[i] for i in e.terms):
+            out.append(e)
+        return
+    args = getattr(e, "args", None)
+    if args is None:                # a box term
+        out.append(e)
+        return
+    for a in args:
+        _unknowns(a, free, out)
+
+
+def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]]:
+    """Each assertion that does not hold at ``model.x``, with its failing sides' values.
+    ``held_only``: only the assertions whose sides read no solved value (params, constants,
+    held dimensions): what can be judged when the solve failed."""
     out = []
     if not model.assertions:
         return out
     x = model.xs()
+    free = model.free
     for a in model.assertions:
+        if held_only:
+            reads: list = []
+            for _, le, re_, _ in a.sides:
+                _unknowns(le, free, reads)
+                _unknowns(re_, free, reads)
+            if reads:
+                continue
         bad = []
         for op, le, re_, dim in a.sides:
             terms: list = []

@@ -222,7 +222,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if kind == "AllowOverlap":
         return _allow_overlap(args["a"], args["b"])
     if kind == "Rigid":
-        return _rigid(ctx, [args[k] for k in "abc" if args.get(k) is not None])
+        return _rigid(ctx, _flat([args[k] for k in "abc" if args.get(k) is not None]))
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
         from .primitives import member
@@ -291,6 +291,29 @@ def _allow_overlap(a, b) -> None:
     return None
 
 
+class _Origin:
+    """A structure's frame origin as a point of a ``Rigid`` group: its position in frame
+    ``S`` is the sum of the frames between them."""
+
+    def __init__(self, struct):
+        self.owner = struct
+
+    def in_frame(self, S):
+        return self.owner.frame_offset(S)
+
+
+def _flat(items: list) -> list:
+    """``Rigid``'s arguments with lists (``Rigid(holes)``, ``Rigid([a, b])``) spread out."""
+    out: list = []
+    for v in items:
+        if isinstance(v, (list, tuple)) and not (len(v) == 2 and all(
+                isinstance(x, (int, float)) or hasattr(x, "dim") for x in v)):
+            out += _flat(list(v))
+        else:
+            out.append(v)
+    return out
+
+
 def _rigid(ctx, items: list) -> None:
     """``Rigid(a, b, ...)``: a structure is marked rigid (the solver of its ancestors moves it
     only by its frame, :func:`aidl_lang.solver.hierarchy._rigid_below`); shapes keep their
@@ -299,9 +322,15 @@ def _rigid(ctx, items: list) -> None:
     S = ctx.struct
     pts: list = []
     seen: set = set()
+    several = len(items) > 1
     for v in items:
         if isinstance(v, StructRef):
             v.struct.rigid = True
+            if several and v.struct is not S and id(v.struct) not in seen:
+                # named beside others: its origin keeps its offset from them too (the group
+                # moves as one body)
+                seen.add(id(v.struct))
+                pts.append(_Origin(v.struct))
         elif isinstance(v, GeomRef):
             for p in _placing_points(ctx, v.geom):
                 if id(p) not in seen:

@@ -127,6 +127,15 @@ class Expressions:
             s = s.parent
         if lookup(e.id) is not None or e.id in FUNCTIONS:
             return Builtin(e.id)
+        if e.id in UNITS_LENGTH or e.id in UNITS_ANGLE:
+            # a unit's name is one of that unit: `length / mm` is a number, `n * deg` an angle
+            c = _new(Lin)
+            c.terms = {}
+            if e.id in UNITS_LENGTH:
+                c.const = float(UNITS_LENGTH[e.id])
+                return Q(c, LEN)
+            c.const = float(UNITS_ANGLE[e.id])
+            return Q(c, ANG)
         later = self.later_definition(e.id)
         if later is not None and later > e.span.line:
             raise EvalError("E0101", f"`{e.id}` is used before its definition: it is defined later, "

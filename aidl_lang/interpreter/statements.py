@@ -709,16 +709,21 @@ class Statements:
         from .common import _src
         a = Assertion(st.span, _src(self.sink, st.expr.span) or "condition", st.message,
                       self.struct, [], unit, scale)
+        known = []
         for side in sides:
             op, l, r, dim = side
             if _const(l) and _const(r):
-                from ..geometry.assertions import holds, describe
+                from ..geometry.assertions import holds
                 if not holds(op, _value(l), _value(r)):
-                    raise EvalError("E0405", describe(a, [(op, _value(l), _value(r), dim)]),
-                                    st.span, hint=_ASSERT_HINT)
+                    known.append((op, _value(l), _value(r), dim))
             else:
                 a.sides.append(side)
-        if a.sides:
+        if known:
+            # reported now, and the program goes on: every false assert is reported, those
+            # checked after solving too (the pipeline solves when E0405 is the only error)
+            from ..geometry.assertions import describe
+            self.sink.error("E0405", describe(a, known), st.span, hint=_ASSERT_HINT)
+        elif a.sides:
             self.model.assertions.append(a)
 
     def _assert_sides(self, e, out: list) -> None:

@@ -72,7 +72,7 @@ when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) 
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
 Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes
 placed relative to each other (a constraint on one moves all, by translation); `Rigid(s)`
-makes a structure move whole, never bent (two rigid structures still move independently).
+makes a structure move whole, never bent; `Rigid(s1, s2)` moves two structures as one body.
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and

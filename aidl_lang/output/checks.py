@@ -868,6 +868,19 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
             continue
         others = _union([o for j, (_, _, o) in enumerate(items) if j != i])
         if _area(shp - others) <= max(1e-9, 1e-4 * a):
+            cut = [h for h in s.children.values() if h.kind == "hole" and h in d.shapes
+                   and _area(shp ^ d.shapes[h]) > max(1e-9, 1e-4 * a)]
+            if cut:                 # cut away by a hole of the same structure: say so
+                share = _area(shp ^ _union([d.shapes[h] for h in cut])) / a
+                how = ("all of it" if share >= 0.9995 else
+                       f"{share:.0%} of it, and the rest lies inside the rest of `{s.path}`")
+                sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
+                             f"`{cut[0].path}` of the same structure cuts away {how}", span,
+                             hint=f"a hole cuts every solid of the structure it is declared in, "
+                                  f"children included; to keep this solid over the hole, "
+                                  f"declare it beside `{s.name}` (a sibling structure's "
+                                  f"material survives the hole), else delete it")
+                continue
             sink.warning("W0506", f"{name} adds nothing to `{s.path}`: it lies wholly inside "
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "

@@ -289,8 +289,15 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     whole = None
     if not floating:
         whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
+    held = _held_by_rigid(model)
     for s, params, rows, cols in systems:
         n_unknowns = len(params)
+        if id(s) in held:
+            # ``Rigid(s)`` (or a rigid ancestor): its shapes keep their placement to each
+            # other and to its frame, which alone moves (the parent counts it): nothing inside
+            # floats
+            out.append(StructureDof(s, n_unknowns, n_unknowns))
+            continue
         if not len(cols):
             out.append(StructureDof(s, 0, 0))
             continue
@@ -322,6 +329,21 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             free = sorted({label_of.get(i, model.param_label[i])
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+    return out
+
+
+def _held_by_rigid(model) -> set:
+    """The ids of the structures whose inside ``Rigid`` holds: each rigid structure and every
+    structure below it (the solver moves them only by the rigid structure's frame,
+    :func:`aidl_lang.solver.hierarchy._rigid_below`)."""
+    out: set = set()
+    todo = [s for s in model.structures if getattr(s, "rigid", False)]
+    while todo:
+        t = todo.pop()
+        if id(t) in out:
+            continue
+        out.add(id(t))
+        todo += t.children.values()
     return out
 
 
@@ -538,15 +560,22 @@ def _peel(J):
     return sp.csr_matrix(J[keep]), peeled
 
 
-def freedom_text(dofs: list[StructureDof]) -> str:
+def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> str:
     """``fully constrained`` or ``N degrees of freedom left, see --dof`` for a whole model
-    (structures too large for the dense rank count are reported as unknown)."""
+    (structures too large for the dense rank count are reported as unknown); with ``slide``
+    (:func:`sliding`) it says what is free: ``N degrees of freedom left (free: hole `bore`
+    can slide along x), see --dof`` or ``(free: only where the whole part sits
+    (harmless))``."""
     if any(d.rank < 0 for d in dofs):
         return "degrees of freedom not counted (model too large), see --dof"
     n = sum(max(0, d.dof) for d in dofs)
     if n == 0:
         return "fully constrained"
-    return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
+    said = sliding_text(slide) if slide is not None else ""
+    if said.startswith("free: only") and n != sum(len(a.split(", ")) for _, a in slide.placement):
+        said = "no hole, drawing or solid child slides against its part"   # shapes inside may
+    return (f"{n} degree{'s' if n != 1 else ''} of freedom left"
+            + (f" ({said})" if said else "") + ", see --dof")
 
 
 def redundancies(solver, deadline: float | None = None,
@@ -706,3 +735,213 @@ def _rank(A: np.ndarray) -> int:
         return 0
     sv = np.linalg.svd(A, compute_uv=False)
     return int(np.sum(sv > 1e-7 * max(1.0, float(sv[0]))))
+
+
+@dataclass
+class Sliding:
+    """What the freedom left means (issue 35): ``placement`` the parts whose whole body can
+    still move (``[(part, "x"|"y"|"x, y")]``: where the part sits, harmless), ``features``
+    the structures inside a part that can move relative to it (``[(structure, axes)]``)."""
+
+    placement: list = field(default_factory=list)
+    features: list = field(default_factory=list)
+    constrained: set = field(default_factory=set)   # ids of features some row places
+    bounded: set = field(default_factory=set)       # ids of features that slide only within
+    #                                                 inequalities not reached (Inside, ...)
+
+
+def _parts(model) -> list:
+    """The parts: the root when it is a solid (or drawing), else the solids of its
+    assemblies."""
+    root = model.root
+    if root is None:
+        return []
+    if root.kind != "assembly":
+        return [root]
+    out, todo = [], list(root.children.values())
+    while todo:
+        t = todo.pop(0)
+        if t.kind == "assembly":
+            todo += t.children.values()
+        elif t.kind in ("solid", "drawing"):
+            out.append(t)
+    return out
+
+
+def sliding(solver) -> Sliding:
+    """Which whole parts and which features can translate, at the solution: structure ``t``
+    slides along x when the move ``t.frame.x += 1`` (for a root without a frame: each of its
+    own points and children's frames) changes no row, except rows of an inactive inequality
+    (its slack is positive: the bound is not reached).  One product of the whole model's
+    Jacobian with each candidate move: linear in the model's size.  A feature is reported
+    only where its parent does not slide the same way with it."""
+    model = solver.model
+    out = Sliding()
+    parts = _parts(model)
+    # only the columns a move touches: every frame, and the points of a part without one
+    # (the rows' other unknowns stay put); a few columns, so the Jacobian is dense and small
+    need = np.zeros(len(solver.free), dtype=bool)
+    need[:len(solver.is_frame)] |= solver.is_frame
+    for g in model.all_geometry():
+        if g.owner in parts and g.owner.parent is None:
+            for pt in g.points.values():
+                need[pt.ix] = need[pt.iy] = True
+    cols = np.flatnonzero(need & solver.free)
+    if not parts or not len(cols):
+        return out
+    x = solver.x
+    whole = solver.whole
+    if whole.n_rows * len(cols) <= DENSE_CELLS:
+        J = whole.jacobian(x, cols, dense=True)
+        scale = np.abs(J).max(axis=1) if J.shape[1] else np.zeros(J.shape[0])
+    else:
+        J = whole.jacobian(x, cols).tocsr()
+        scale = np.asarray(abs(J).max(axis=1).todense()).ravel()
+    slack = solver.slack[:J.shape[0]] if len(solver.slack) >= J.shape[0] else None
+    loose = np.zeros(J.shape[0], dtype=bool)
+    if slack is not None:
+        has = slack >= 0
+        loose[has] = x[slack[has]] > 1e-9           # an inequality whose bound is not reached
+    where = np.full(len(solver.free), -1, dtype=np.int64)
+    where[cols] = np.arange(len(cols))
+    px: dict = {}
+    for g in model.all_geometry():
+        for p in g.points.values():
+            px.setdefault(id(p.owner), []).append((p.ix, p.iy))
+
+    def move(t, axis: int):
+        v = np.zeros(len(cols))
+        f = (t.fx, t.fy)[axis]
+        if t.parent is not None and 0 <= f < len(where) and where[f] >= 0:
+            v[where[f]] = 1.0
+            return v
+        if t.parent is not None:
+            return None                             # a held frame: it does not slide
+        for pt in px.get(id(t), ()):
+            k = where[pt[axis]]
+            if k < 0:
+                return None                         # a held point: the whole cannot move
+            v[k] = 1.0
+        for c in t.children.values():
+            k = where[(c.fx, c.fy)[axis]] if 0 <= (c.fx, c.fy)[axis] < len(where) else -1
+            if k < 0:
+                return None
+            v[k] = 1.0
+        return v
+
+    def slides(t, axis: int) -> bool:
+        v = move(t, axis)
+        if v is None or not v.any():
+            return False
+        r = np.abs(np.asarray(J @ v).ravel())
+        return not np.any((r > 1e-9 * np.maximum(1.0, scale)) & ~loose)
+
+    def axes(t) -> str:
+        return ", ".join(a for a, k in (("x", 0), ("y", 1)) if slides(t, k))
+    for p in parts:
+        a = axes(p)
+        if a:
+            out.placement.append((p, a))
+        found = _features(p, J, loose, scale, where, px, model)
+        out.features += found
+        if found and loose.any():
+            strict = {id(t) for t, _ in _features(p, J, np.zeros_like(loose), scale, where,
+                                                   px, model)}
+            out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
+        for t, _ in found:
+            for f in (t.fx, t.fy):
+                col = J[:, where[f]]
+                col = col.toarray() if hasattr(col, "toarray") else col
+                if np.any(np.asarray(col) != 0):
+                    out.constrained.add(id(t))
+    asm = [t for t in model.structures if t.kind == "assembly"]
+    if not out.placement and not out.features:
+        for t in asm:                       # a group of parts placed only as a whole
+            a = axes(t)
+            if a:
+                out.placement.append((t, a))
+                break
+    return out
+
+
+MAX_CANDIDATES = 400     # features of one part whose joint motions are searched (2 per axis)
+
+
+def _features(p, J, loose, scale, where, px, model) -> list:
+    """``[(structure, axes)]``: the structures inside part ``p`` that can move relative to it.
+    Candidates are the frames of its structures; their joint moves that change no row
+    (beyond inactive inequalities) are the null space of ``J V`` (``V``: one column per
+    candidate and axis; by its Gram matrix).  A candidate slides along an axis when some such
+    move changes its absolute position there (its frame and those above it, inside ``p``)
+    against ``p``'s own shapes, or, when ``p`` has none, against its first child: a move of
+    the whole part is not a slide.  Only the outermost sliding structure is named."""
+    desc, todo = [], list(p.children.values())
+    while todo:
+        t = todo.pop(0)
+        desc.append(t)
+        todo += t.children.values()
+    cands = [t for t in desc
+             if all(0 <= f < len(where) and where[f] >= 0 for f in (t.fx, t.fy))]
+    if not cands or len(cands) > MAX_CANDIDATES:
+        return []
+    n = len(cands)
+    V = np.zeros((J.shape[1], 2 * n))
+    for i, t in enumerate(cands):
+        V[where[t.fx], 2 * i] = 1.0
+        V[where[t.fy], 2 * i + 1] = 1.0
+    M = np.asarray(J @ V)[~loose]
+    M = M / np.maximum(1.0, scale[~loose])[:, None]
+    w, Q = np.linalg.eigh(M.T @ M)
+    null = Q[:, w <= 1e-12 * max(1.0, float(w.max(initial=0.0)))]
+    if not null.shape[1]:
+        return []
+    index = {id(t): i for i, t in enumerate(cands)}
+    A = np.zeros((2 * n, 2 * n))          # absolute motion: a frame and the frames above it
+    for i, t in enumerate(cands):
+        s_ = t
+        while s_ is not None and s_ is not p:
+            if id(s_) in index:
+                A[2 * i, 2 * index[id(s_)]] = A[2 * i + 1, 2 * index[id(s_)] + 1] = 1.0
+            s_ = s_.parent
+    motion = A @ null
+    anchor = None
+    if not any(not g.construction for g in p.geometry):
+        anchor = next((i for i, t in enumerate(cands) if t.parent is p), None)
+    out, reported = [], set()
+    for i, t in enumerate(cands):
+        if i == anchor:
+            continue
+        ax = []
+        for k, name in ((0, "x"), (1, "y")):
+            m = motion[2 * i + k] - (motion[2 * anchor + k] if anchor is not None else 0.0)
+            if np.any(np.abs(m) > 1e-6):
+                ax.append(name)
+        up, hidden = t.parent, False
+        while up is not None and up is not p:
+            hidden = hidden or id(up) in reported
+            up = up.parent
+        if ax and not hidden:
+            reported.add(id(t))
+            out.append((t, ", ".join(ax)))
+    return out
+
+
+def sliding_text(sl: Sliding) -> str:
+    """``free: hole `bore` can slide along x`` or ``free: only where the whole part sits
+    (harmless)``; "" when nothing slides."""
+    if sl.features:
+        said = [f"{_name(t)} can slide along {a}"
+                + (" within its bounds" if id(t) in sl.bounded else "")
+                for t, a in sl.features[:3]]
+        more = f" and {len(sl.features) - 3} more" if len(sl.features) > 3 else ""
+        return "free: " + "; ".join(said) + more
+    if sl.placement:
+        return "free: only where the whole part sits (harmless)"
+    return ""
+
+
+def _name(o) -> str:
+    """``hole `plate.bore``` for a structure, ```plate.pin.c``` for a shape."""
+    if hasattr(o, "path"):
+        return f"{o.kind} `{o.path}`"
+    return f"`{o.label}`"
