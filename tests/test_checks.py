@@ -748,6 +748,16 @@ def test_W0511_gears_placed_too_close_interpenetrate(compile_text):
     assert not [d for d in c.sink.items if d.code == "W0511"]
 
 
+def test_W0511_parts_stacked_on_a_plate_are_not_interpenetrating(compile_text):
+    """Gears drawn on their mounting plate lie wholly on it (stacked in the product): only the
+    two gears' teeth, which overlap in part, are warned."""
+    src = GEARS_CLOSE.replace("assembly drive {", """assembly drive {
+    solid plate { p = Rectangle(center=(17, 0), width=120, height=80) }""") % "34 mm"
+    c = compile_text(src)
+    pairs = [d.message.split(" interpenetrate")[0] for d in c.sink.items if d.code == "W0511"]
+    assert pairs == ["parts `drive.a` and `drive.b`"]
+
+
 def test_W0511_allow_overlap_silences_it(compile_text):
     c = compile_text("""assembly stack {
     solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }

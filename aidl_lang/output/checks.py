@@ -453,7 +453,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
     """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
     by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
     place (two gears placed closer than their centre distance: their teeth interpenetrate).
-    Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
+    A part lying wholly on another is taken as stacked (a gear drawn on its mounting plate)
+    and not warned.  Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
     parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
     if len(parts) < 2:
         return
@@ -466,6 +467,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
         area = _area(common)
         if area <= MIN_AREA or _allowed(a, b):
             continue
+        if area >= (1 - 1e-6) * min(_area(sa), _area(sb)):
+            continue              # one part wholly on the other: stacked (a gear on its plate)
         depth = _depth(common, boxes[i], boxes[j])
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
         sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
