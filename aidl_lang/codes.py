@@ -410,7 +410,8 @@ centre distance, whose teeth run into each other). The warning names both parts,
 area and its depth along the line between them. Move one part away (meshing spur gears sit at
 the centre distance module * (teeth1 + teeth2) / 2, which `gear_pair` in std/gears.aidl keeps),
 or shrink it; if the overlap is meant (a picture of parts stacked), say so with
-`AllowOverlap(a, b)` in the assembly.
+`AllowOverlap(a, b)` in the assembly. A part lying wholly on another (a gear drawn on its
+mounting plate) is taken as stacked and not warned.
 
     import "std/gears.aidl"
     assembly drive {
