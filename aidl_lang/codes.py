@@ -439,8 +439,11 @@ Engraved text is drawn over other text, or over an engraved mark (a line, arc or
 it cannot be read: two protractor labels placed on each other, a number on its tick mark.
 Text counts by the box of its pen strokes (in its own frame, turned with it): two texts whose
 boxes overlap by more than 10% of the smaller one, or a mark running through a text's box
-(less a margin of a tenth of its size) over more than a quarter of its size. The warning names
-both, with the overlap's area or the length of the mark inside the text. Move the text clear
+(less a margin of a tenth of its size) over more than a quarter of its size. Two labels whose
+boxes come closer than half the text size (about a word space) run into each other and read as
+one string ("140130120" along a protractor's arc): one warning per statement, with the gap and
+the number of such pairs. The warning names both, with the overlap's area, the gap, or the
+length of the mark inside the text. Move the text clear
 (beside the tick, further out), or make it smaller.
 
     drawing scale {

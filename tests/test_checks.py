@@ -847,6 +847,30 @@ def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
     assert not warnings(compile_text, PROTRACTOR % ("0, 22", "44, 4"), "W0513")
 
 
+def test_W0513_labels_that_run_into_each_other(compile_text):
+    """Protractor labels turned along the arc at 10 deg steps on a 64 mm radius: from "100" on,
+    three digits of size 4 leave 1.13 mm between neighbouring boxes, less than half the text
+    size, so "140130120" reads as one string (a model's first protractor): one warning for the
+    statement, with the count of such pairs; a larger radius spaces them out (silent)."""
+    import re
+    src = """units mm
+solid protractor {
+    disc = Circle(center=(0, 0), radius=80)
+    drawing scale {
+        for i in range(19) {
+            a = i * 10 deg
+            num = Text(str(i * 10), (%s * cos(a), %s * sin(a)), size=4, valign="middle",
+                       rotation=a - 90 deg)
+        }
+    }
+}"""
+    (w,) = warnings(compile_text, src % (64, 64), "W0513")
+    gap = float(re.search(r"boxes are (\S+) mm apart", w.message).group(1))
+    assert w.span.line == 7 and "runs into" in w.message and gap == pytest.approx(1.13, abs=0.01)
+    assert "7 more pairs" in w.message
+    assert not warnings(compile_text, src % (75, 75), "W0513")
+
+
 BOARD = """units mm
 solid board {
     body = Rectangle(center=(0, 0), width=60, height=40)

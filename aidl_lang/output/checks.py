@@ -207,6 +207,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
 
 TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
 TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
+TEXT_GAP = 0.5          # of the smaller text's size (about a word space): closer labels read as one
 
 
 def _text_box(g, items) -> tuple:
@@ -277,12 +278,21 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
     bb = np.array([[b[0][:, 0].min(), b[0][:, 1].min(), b[0][:, 0].max(), b[0][:, 1].max()]
                    for b in boxes], dtype=float)
     said = set()
-    for i, j in sorted(map(tuple, box_pairs(bb))):
+    close: dict = {}            # (span, span) -> [(gap, near, a, b)]: labels that run together
+    sizes = [float(g.data.get("size", 0.0) or 0.0) or (b[2][3] - b[2][1])
+             for g, b in zip(tg, boxes)]
+    pad = TEXT_GAP * max(sizes) / 2
+    for i, j in sorted(map(tuple, box_pairs(bb, pad))):
         common = _area(shapes[i] ^ shapes[j])
         small = min(_area(shapes[i]), _area(shapes[j]))
-        if common <= max(MIN_AREA, TEXT_OVERLAP * small):
-            continue
         a, b = tg[i], tg[j]
+        if common <= max(MIN_AREA, TEXT_OVERLAP * small):
+            gap = _quad_gap(boxes[i][0], boxes[j][0])
+            near = TEXT_GAP * min(sizes[i], sizes[j])
+            if gap < near and a.span is not None and b not in said:
+                said.add(b)
+                close.setdefault((a.span, b.span), []).append((gap, near, a, b))
+            continue
         said.add(b)
         depth = _depth(shapes[i] ^ shapes[j], bb[i], bb[j])
         labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
@@ -292,6 +302,16 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
                      labels=labels,
                      hint=f"move `{b.label}` at least {depth:.2f} mm away from `{a.label}` (or "
                           "make them smaller) so that both can be read")
+    for found in close.values():
+        gap, near, a, b = min(found, key=lambda f: f[0])
+        more = f"; {len(found) - 1} more pairs of these labels as close" if len(found) > 1 else ""
+        sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") runs into "
+                     f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes are "
+                     f"{gap:.2f} mm apart, less than {near:.2f} mm (half the text size), so "
+                     f"they read as one string{more}", b.span,
+                     labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
+                     hint=f"leave at least {near:.2f} mm between them: space the labels "
+                          "further apart (a larger radius or step), or make them smaller")
     if not marks:
         return
     mg = list(marks)
@@ -323,6 +343,26 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
                      g.span, labels=labels,
                      hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
                           "it: e.g. further out along the same direction), or shorten the mark")
+
+
+def _quad_gap(p, q) -> float:
+    """The distance (mm) between two convex quadrilaterals ``p``, ``q`` (4 x 2, in order):
+    0 when they overlap, else the least distance of a corner of one to an edge of the other."""
+    def inside(pt, poly):
+        e = np.roll(poly, -1, axis=0) - poly
+        w = pt - poly
+        cross = e[:, 0] * w[:, 1] - e[:, 1] * w[:, 0]
+        return bool((cross >= 0).all() or (cross <= 0).all())
+    if any(inside(pt, q) for pt in p) or any(inside(pt, p) for pt in q):
+        return 0.0
+    best = math.inf
+    for a, b in ((p, q), (q, p)):
+        s0, s1 = b, np.roll(b, -1, axis=0)
+        d = s1 - s0
+        for pt in a:
+            t = np.clip(((pt - s0) * d).sum(1) / (d * d).sum(1), 0.0, 1.0)
+            best = min(best, float(np.hypot(*(s0 + t[:, None] * d - pt).T).min()))
+    return best
 
 
 def _polyline(item) -> np.ndarray:
