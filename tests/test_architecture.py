@@ -47,7 +47,7 @@ def test_flat_package_is_gone():
     """The stages live in their folders; the top level holds only the compiler core and the
     public API (`api`)."""
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
-    assert top == ["api", "ast", "cache", "codes", "diagnostics", "interp", "limits", "memory", "parser",
+    assert top == ["api", "ast", "cache", "codes", "diagnostics", "files", "interp", "limits", "memory", "parser",
                    "pipeline", "registry", "sources", "typecheck"]
 
 

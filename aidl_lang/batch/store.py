@@ -16,11 +16,13 @@ should take the last).
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
 from pathlib import Path
 
 from ..api import write_atomic
+from ..files import NOFOLLOW, FileRefused, open_append
 from .row import FIELDS
 
 
@@ -50,12 +52,14 @@ def need_arrow() -> None:
                            "pip install 'aidl-lang[batch]', or write OUT.jsonl") from None
 
 
-def read_jsonl(path: Path) -> list[dict]:
+def read_jsonl(path: Path, follow_symlinks: bool = True) -> list[dict]:
     """The rows of a JSONL file; a line that is not a row (one cut short by a crash) is
-    skipped."""
+    skipped.  ``follow_symlinks=False``: a link is refused
+    (:class:`~aidl_lang.files.FileRefused`), as a batch reads its own journal."""
     rows = []
     try:
-        with open(path, encoding="utf-8") as f:
+        flags = os.O_RDONLY | (0 if follow_symlinks else NOFOLLOW)
+        with open(os.open(path, flags), encoding="utf-8") as f:
             for line in f:
                 try:
                     row = json.loads(line)
@@ -65,6 +69,11 @@ def read_jsonl(path: Path) -> list[dict]:
                     rows.append(row)
     except FileNotFoundError:
         pass
+    except OSError as e:
+        if e.errno == errno.ELOOP:
+            raise FileRefused(f"`{path}` is a symbolic link; refusing to read it as this "
+                              "batch's rows") from None
+        raise
     return rows
 
 
@@ -96,14 +105,15 @@ class Store:
         if self.parquet:
             for row in read_parquet(self.out):
                 rows[row["id"]] = row
-        for row in read_jsonl(self.journal):
+        for row in read_jsonl(self.journal, follow_symlinks=False):
             rows.pop(row["id"], None)            # keep the order of the latest
             rows[row["id"]] = row
         return rows
 
     def open(self) -> None:
         self.journal.parent.mkdir(parents=True, exist_ok=True)
-        self._f = open(self.journal, "a+", encoding="utf-8")
+        # never through a link, even one swapped in after run_batch looked (O_NOFOLLOW)
+        self._f = open_append(self.journal)
         if self._f.tell() > 0:                   # a line cut short by a crash: end it
             self._f.seek(self._f.tell() - 1)
             last = self._f.read(1)
