@@ -17,7 +17,7 @@ A character that cannot start any token, or a string without its closing quote.
     "E0003": ("nesting too deep", """
 Brackets are nested more than 64 levels deep. Split the expression into named constants.
 """),
-    "E0004": ("cannot read the input file", "The file does not exist or is not UTF-8 text."),
+    "E0004": ("cannot read the input file", "The file does not exist, is not a regular file (a folder, a FIFO, a device such as /dev/zero), is larger than 1000000 bytes (the limit of an import too), or is not UTF-8 text; it is refused before it is read whole or lexed."),
     "E0101": ("unknown name", """
 A name is used that is not defined in this structure, an enclosing one, or the file
 (params, constants, templates). The message suggests the nearest known names.

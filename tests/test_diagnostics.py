@@ -446,7 +446,8 @@ def test_E0004_unreadable_file(tmp_path, capsys):
     rc, doc = _cli_json(capsys, "check", str(tmp_path / "missing.aidl"), "--json")
     assert rc == 1 and doc["ok"] is False
     (d,) = doc["diagnostics"]
-    assert d["code"] == "E0004" and d["span"] is None
+    assert d["code"] == "E0004" and d["span"]["file"].endswith("missing.aidl")
+    assert d["span"]["line"] == 1 and "No such file" in d["message"]
     bad = tmp_path / "latin1.aidl"
     bad.write_bytes(b"solid s { c = Circle((0, 0), 1) } # caf\xe9\n")
     rc, doc = _cli_json(capsys, "check", str(bad), "--json")
