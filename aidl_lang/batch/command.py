@@ -143,6 +143,12 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
         for mine in (out, store.journal):
             if mine.exists() and Path(item).exists() and os.path.samefile(mine, item):
                 raise UsageError(f"-o `{out}` would write over the input `{item}`")
+    from .store import check_result
+    try:
+        check_result(out)
+    except Exception as e:             # NotAResult, pyarrow's ArrowInvalid, a read error
+        raise UsageError(f"cannot resume from `{out}`: it is not a batch result ({e}); give "
+                         "another -o or delete it") from None
     tasks = collect(inputs, overrides or {}, budget, cfg)
     out.parent.mkdir(parents=True, exist_ok=True)
     try:

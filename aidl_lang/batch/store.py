@@ -22,7 +22,7 @@ import os
 from pathlib import Path
 
 from ..api import write_atomic
-from ..files import NOFOLLOW, FileRefused, open_append
+from ..files import NOFOLLOW, NONBLOCK, FileRefused, open_append
 from .row import FIELDS
 
 
@@ -82,6 +82,43 @@ def read_parquet(path: Path) -> list[dict]:
         return []
     import pyarrow.parquet as pq
     return pq.read_table(path).to_pylist()
+
+
+class NotAResult(ValueError):
+    """An existing OUT that a batch did not write (its rows would be dropped or break the
+    final write); the message says what is wrong with it."""
+
+
+def check_result(path: Path) -> None:
+    """Raise :class:`NotAResult` unless ``path`` is missing or a batch result: for Parquet, a
+    file whose columns are the rows' fields with their types (an integer ``id`` is not); for
+    JSONL, every complete line a row object (``id`` text, a ``status``); a last line without
+    its newline, cut short by a crash, is allowed."""
+    if not path.exists():
+        return
+    if path.suffix.lower() == ".parquet":
+        import pyarrow.parquet as pq
+        schema = pq.read_schema(path)
+        want = _schema()
+        for name in want.names:
+            if name not in schema.names:
+                raise NotAResult(f"it has no `{name}` column")
+            if schema.field(name).type != want.field(name).type:
+                raise NotAResult(f"its `{name}` column holds {schema.field(name).type}, "
+                                 f"not {want.field(name).type}")
+        return
+    with open(os.open(path, os.O_RDONLY | NOFOLLOW | NONBLOCK), "rb") as f:
+        lines = f.read().split(b"\n")
+    for no, line in enumerate(lines[:-1], 1):          # the last piece has no newline
+        if not line.strip():
+            continue
+        try:
+            row = json.loads(line)
+        except ValueError:
+            raise NotAResult(f"line {no} is not JSON") from None
+        if not (isinstance(row, dict) and isinstance(row.get("id"), str) and "status" in row):
+            raise NotAResult(f"line {no} is not a batch row (an object with `id` and "
+                             "`status`)")
 
 
 def read_rows(path: Path) -> list[dict]:
