@@ -47,7 +47,7 @@ forms. The hint lists the accepted forms.
     "E0105": ("unknown keyword argument", """
 A keyword argument that the primitive, constraint or template does not have.
 
-    Circle(center=(0, 0), r=5)     # the argument is `radius`
+    Circle(center=(0, 0), radius=5, width=3)     # a circle has no `width`: its size is `radius`
 """),
     "E0106": ("missing argument", """
 A required argument is missing. Dimensions (width, height, radius) are required because they

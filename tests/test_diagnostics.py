@@ -790,3 +790,14 @@ def test_W0106_through_the_cli_and_explain(tmp_path):
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "explain", "W0106"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and "floor division used as a length" in r.stdout
+
+
+def test_explain_E0105_example_is_an_E0105():
+    """`aidl explain E0105`'s example is an error of that code (it showed `r=5`, which is
+    accepted as `radius`)."""
+    from aidl_lang.codes import CODES
+    from aidl_lang.pipeline import compile_source
+    example = [ln.split("#")[0].strip() for ln in CODES["E0105"][1].splitlines()
+               if ln.startswith("    ")][0]
+    c = compile_source(f"solid s {{ c = {example} }}\n", "e.aidl")
+    assert [d.code for d in c.sink.items if d.is_error] == ["E0105"], example
