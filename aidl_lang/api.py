@@ -383,9 +383,10 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
         b = DEFAULT_BUDGET.scaled(k)
     name = os.fspath(path) if path is not None else "<source>"
     if source is None:
+        from .sources import SourceRefused, read_program
         try:
-            source = Path(name).read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as e:
+            source = read_program(name)
+        except SourceRefused as e:
             return _unreadable(name, e)
     ov = {str(k): str(v) for k, v in (overrides or {}).items()}
     return Result(compile_source(source, name, ov or None, min_wall=min_wall, budget=b),
@@ -395,8 +396,10 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
 def _unreadable(name: str, e: Exception) -> Result:
     from .pipeline import Compiled
     sink = DiagnosticSink()
-    sink.add(Diagnostic("E0004", f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}",
-                        None, hint="check the file name"))
+    from .diagnostics import Span
+    sink.add(Diagnostic("E0004", str(e), Span(name, 1, 1, 1, 1, 0, 0),
+                        hint="give a regular UTF-8 .aidl file (programs and imports have at "
+                             "most 1000000 bytes)"))
     return Result(Compiled(sink), name, None)
 
 

@@ -17,7 +17,7 @@ A character that cannot start any token, or a string without its closing quote.
     "E0003": ("nesting too deep", """
 Brackets are nested more than 64 levels deep. Split the expression into named constants.
 """),
-    "E0004": ("cannot read the input file", "The file does not exist or is not UTF-8 text."),
+    "E0004": ("cannot read the input file", "The file does not exist, is not a regular file (a folder, a FIFO, a device such as /dev/zero), is larger than 1000000 bytes (the limit of an import too), or is not UTF-8 text; it is refused before it is read whole or lexed."),
     "E0101": ("unknown name", """
 A name is used that is not defined in this structure, an enclosing one, or the file
 (params, constants, templates). The message suggests the nearest known names.
@@ -47,7 +47,7 @@ forms. The hint lists the accepted forms.
     "E0105": ("unknown keyword argument", """
 A keyword argument that the primitive, constraint or template does not have.
 
-    Circle(center=(0, 0), r=5)     # the argument is `radius`
+    Circle(center=(0, 0), radius=5, width=3)     # a circle has no `width`: its size is `radius`
 """),
     "E0106": ("missing argument", """
 A required argument is missing. Dimensions (width, height, radius) are required because they
@@ -441,7 +441,7 @@ Text counts by the box of its pen strokes (in its own frame, turned with it): tw
 boxes overlap by more than 10% of the smaller one, or a mark running through a text's box
 (less a margin of a tenth of its size) over more than a quarter of its size. Two labels whose
 boxes come closer than half the text size (about a word space) run into each other and read as
-one string ("140130120" along a protractor's arc): one warning per statement, with the gap and
+one string ("140130120" along a protractor's arc; single letters, as `text_on_arc` lays out, are not compared): one warning per statement, with the gap and
 the number of such pairs. The warning names both, with the overlap's area, the gap, or the
 length of the mark inside the text. Move the text clear
 (beside the tick, further out), or make it smaller.

@@ -69,6 +69,11 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         return Compiled(sink)
     except MemoryError:
         pass                         # handled below, once the exception (and its frames) is gone
+    except SystemError as ex:
+        if not out_of_memory(ex):
+            raise
+        # an allocation failed inside C code (numpy, Manifold, the interpreter's own C
+        # helpers) that lost the MemoryError on its way out: the same out of memory
     # Out of memory: what the failed compile built is garbage now, much of it in reference
     # cycles (structures and their parents), which only the cycle collector frees — and it
     # would not run before the next allocations fail.  Free it, then report.
@@ -81,6 +86,23 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
                hint="build less (fewer loop iterations, template instances or circles), or "
                     "look for a template that instantiates itself more than once per level")
     return Compiled(sink)
+
+
+def out_of_memory(ex: BaseException) -> bool:
+    """True when ``ex`` is running out of memory: a :class:`MemoryError`, or the
+    :class:`SystemError` that C code raises when an allocation failed and the MemoryError got
+    lost (``error return without exception set``, or one with a MemoryError as its cause or
+    context; issue 37)."""
+    seen = 0
+    e: BaseException | None = ex
+    while e is not None and seen < 20:
+        if isinstance(e, MemoryError):
+            return True
+        if isinstance(e, SystemError) and "without exception set" in str(e):
+            return True
+        e = e.__cause__ or e.__context__
+        seen += 1
+    return False
 
 
 # Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse

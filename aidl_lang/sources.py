@@ -130,3 +130,35 @@ def load_import(raw: str, importer: str) -> tuple[Path, str]:
     :class:`ImportRefused` (see :func:`resolve_import`, :func:`read_import`)."""
     real = resolve_import(raw, importer)
     return real, read_import(real, raw)
+
+
+class SourceRefused(Exception):
+    """The main file cannot be compiled as given (E0004): missing, not a regular file (a
+    FIFO, a device, a folder), larger than :data:`MAX_IMPORT_BYTES`, or not UTF-8;
+    ``message`` says which."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message)
+        self.message = message
+
+
+def read_program(path: str | os.PathLike) -> str:
+    """The text of the main file ``path``, read the way imports are (:func:`read_import`): a
+    regular file only, opened non-blocking (a FIFO or ``/dev/zero`` is refused, not waited on
+    or read), at most :data:`MAX_IMPORT_BYTES` (checked before reading it whole and before
+    lexing), UTF-8 (a BOM is dropped).  A link is followed: the user named this file.  Raises
+    :class:`SourceRefused`."""
+    from .files import FileRefused, read_file
+    shown = os.fspath(path)
+    try:
+        data = read_file(shown, MAX_IMPORT_BYTES)
+    except FileRefused as e:
+        raise SourceRefused(e.message) from None
+    except OSError as e:
+        raise SourceRefused(f"cannot read `{shown}`: {e.strerror or e}") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise SourceRefused(f"cannot read `{shown}`: not UTF-8 text ({e.reason} at byte "
+                            f"{e.start})") from None
+    return text[1:] if text.startswith("\ufeff") else text

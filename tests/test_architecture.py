@@ -47,8 +47,9 @@ def test_flat_package_is_gone():
     """The stages live in their folders; the top level holds only the compiler core and the
     public API (`api`)."""
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
-    assert top == ["api", "ast", "cache", "codes", "diagnostics", "interp", "limits", "memory", "parser",
-                   "pipeline", "reference", "registry", "sources", "typecheck"]
+    assert top == ["api", "ast", "cache", "codes", "diagnostics", "files", "interp", "limits",
+                   "memory", "parser", "pipeline", "reference", "registry", "sources",
+                   "typecheck"]
 
 
 def test_readme_layout_names_every_package_and_core_module():

@@ -446,7 +446,8 @@ def test_E0004_unreadable_file(tmp_path, capsys):
     rc, doc = _cli_json(capsys, "check", str(tmp_path / "missing.aidl"), "--json")
     assert rc == 1 and doc["ok"] is False
     (d,) = doc["diagnostics"]
-    assert d["code"] == "E0004" and d["span"] is None
+    assert d["code"] == "E0004" and d["span"]["file"].endswith("missing.aidl")
+    assert d["span"]["line"] == 1 and "No such file" in d["message"]
     bad = tmp_path / "latin1.aidl"
     bad.write_bytes(b"solid s { c = Circle((0, 0), 1) } # caf\xe9\n")
     rc, doc = _cli_json(capsys, "check", str(bad), "--json")
@@ -800,3 +801,14 @@ def test_W0404_a_hole_placed_in_x_only_slides_in_y():
     assert [(d.span.line, d.message) for d in ws] == [
         (3, "hole `p.h` can slide along y relative to `p`: only its starting position places "
             "it there")]
+
+
+def test_explain_E0105_example_is_an_E0105():
+    """`aidl explain E0105`'s example is an error of that code (it showed `r=5`, which is
+    accepted as `radius`)."""
+    from aidl_lang.codes import CODES
+    from aidl_lang.pipeline import compile_source
+    example = [ln.split("#")[0].strip() for ln in CODES["E0105"][1].splitlines()
+               if ln.startswith("    ")][0]
+    c = compile_source(f"solid s {{ c = {example} }}\n", "e.aidl")
+    assert [d.code for d in c.sink.items if d.is_error] == ["E0105"], example

@@ -298,3 +298,26 @@ def test_symlink_stays_a_link(tmp_path):
 def test_bom_is_accepted_by_check(compile_text):
     c = compile_text("\ufeffsolid s {\n    c = Circle((0, 0), 1)\n}\n")
     assert c.ok, [d.message for d in c.sink.items]
+
+
+@pytest.mark.parametrize("expr", [
+    " ** ".join(["1"] * 400),                                   # a 400-term `**` chain
+    " ".join(f"{i} if x > {i} else" for i in range(600)) + " 0",  # a 600-term conditional
+])
+def test_fmt_handles_the_deep_programs_the_compiler_handles(expr, tmp_path):
+    """`aidl check` compiles these on its deep-stack thread; the formatter did not (a bare
+    RecursionError in process, an unlocated E0302 from `aidl fmt --check`)."""
+    from aidl_lang.editor.fmt import dump, format_source
+    from aidl_lang.parser import parse
+    from aidl_lang.pipeline import compile_source, run_deep
+    from aidl_lang.diagnostics import DiagnosticSink
+    src = f"x = 3\ny = {expr}\nsolid s {{ c = Circle((0, 0), 1 + y * 0) }}\n"
+    assert compile_source(src, "deep.aidl").ok
+    out = format_source(src, "deep.aidl")
+    assert run_deep(lambda: dump(parse(src, "a", DiagnosticSink()))
+                    == dump(parse(out, "b", DiagnosticSink())))
+    f = tmp_path / "deep.aidl"
+    f.write_text(out)
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "--check", str(f)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and "E0302" not in r.stderr, r.stderr[-500:]

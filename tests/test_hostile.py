@@ -112,3 +112,27 @@ print(compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok)
     first, second = r.stdout.split("\n")[:2]
     assert first == "[('E0304', 8, 1, 'the program ran out of memory while comp')]", r.stdout
     assert second == "True"
+
+
+def test_a_SystemError_from_an_allocation_that_failed_in_C_is_E0304(monkeypatch):
+    """Out of memory inside C code (Manifold, numpy) can surface as ``SystemError: error return
+    without exception set``; that is the same E0304 as a MemoryError (it was exit 3, and the
+    snippet of the test above failed 4 runs in 16 that way), and the process goes on."""
+    from aidl_lang import pipeline
+    real = pipeline._compile
+
+    def failing(*a, **k):
+        raise SystemError("error return without exception set")
+
+    monkeypatch.setattr(pipeline, "_compile", failing)
+    c = pipeline.compile_source("solid s { c = Circle((0, 0), 1) }\n", "m.aidl")
+    assert [(d.code, d.span.line, d.message[:40]) for d in c.sink.items] == \
+        [("E0304", 1, "the program ran out of memory while comp")]
+    other = SystemError("some other bug")
+    assert not pipeline.out_of_memory(other)
+    try:
+        raise SystemError("wrapped") from MemoryError()
+    except SystemError as e:
+        assert pipeline.out_of_memory(e)
+    monkeypatch.setattr(pipeline, "_compile", real)
+    assert pipeline.compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok

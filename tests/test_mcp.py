@@ -174,3 +174,20 @@ def test_check_reports_redundant_constraints_as_aidl_check_does(tmp_path):
     assert [d.message for d in found] == [d["message"] for d in w]
     assert r.find_redundant() == found
     assert [d.code for d in r.diagnostics].count("W0401") == len(w)
+
+
+def test_render_writes_the_file_at_the_asked_width(tmp_path):
+    """`width` is the written PNG's width too, not only the returned image's."""
+    doc, png = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
+    assert doc["written"] == "x.png"
+    data = (tmp_path / "x.png").read_bytes()
+    assert int.from_bytes(data[16:20], "big") == 300 == int.from_bytes(png[16:20], "big")
+
+
+def test_server_info_version_is_the_package_version():
+    from importlib.metadata import version
+    from aidl_lang.mcp.server import build_server
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        server = build_server(d)
+    assert version("aidl-lang") and server.version == version("aidl-lang")

@@ -590,3 +590,25 @@ assembly kit {
         n += 1
         e.Next()
     assert n == 2
+
+
+def test_a_laser_png_shows_its_cuts_one_pixel_wide():
+    """`--svg-style laser -o x.png` was all white (a 0.01 mm hairline is a hundredth of a
+    pixel); a raster draws the cut at least one pixel wide: the rectangle's outline and the
+    bore are red pixels all round."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    import aidl_lang
+    r = aidl_lang.compile(source="solid plate {\n body = Rectangle(center=(0, 0), width=40, "
+                                 "height=20)\n hole bore { c = Circle(center=(10, 0), radius=4) }\n}\n")
+    for kw in ({}, {"width": 800}):
+        a = np.asarray(Image.open(io.BytesIO(r.to_png(style="laser", **kw))).convert("RGB"))
+        red = (a[:, :, 0] > 200) & (a[:, :, 1] < 100) & (a[:, :, 2] < 100)
+        px = a.shape[1] / 44.0                   # pixels per mm (a 2 mm margin each side)
+        # the rectangle's perimeter (120 mm) and the bore's (25 mm); a one-pixel line off
+        # the pixel grid is half red on two pixels, so not every pixel counts
+        assert red.sum() >= 0.4 * 145 * px, (kw, int(red.sum()), px)
+    assert 'stroke-width="0.01"' in r.to_svg(style="laser")      # the SVG keeps its hairline

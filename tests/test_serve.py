@@ -475,3 +475,12 @@ def test_queued_slider_moves_are_coalesced(ranged_ws, monkeypatch):
         v = _recv(ws)
     assert v["ok"] and v["values"] == {"w": "46mm"}
     assert len(seen) <= 3 and seen[-1] == "46mm", seen
+
+
+def test_download_compiles_a_deep_value_like_check_set(client):
+    """`/download/svg?set=base_w=1**1**...` (600 terms): compiled on the deep-stack thread, as
+    `aidl check --set` does, not an internal error (E0900, RecursionError)."""
+    deep = "**".join(["1"] * 600) + " * 150 mm"
+    r = client.get("/download/svg", params={"set": f"base_w={deep}"})
+    assert "E0900" not in r.text and "RecursionError" not in r.text, r.text[:500]
+    assert r.status_code == 200 and r.text.lstrip().startswith("<svg")

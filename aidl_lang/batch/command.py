@@ -135,10 +135,20 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
     cfg = {"render": list(render), "out_dir": os.path.abspath(out_dir) if render else None,
            "min_wall": min_wall}
     store = Store(out)
+    for mine in (out, store.journal):
+        if os.path.islink(mine):       # as `aidl render` refuses: the rows would go elsewhere
+            raise UsageError(f"-o: `{mine}` is a symbolic link; refusing to write through it "
+                             "(give the file it points to, or another name)")
     for item in inputs:
         for mine in (out, store.journal):
             if mine.exists() and Path(item).exists() and os.path.samefile(mine, item):
                 raise UsageError(f"-o `{out}` would write over the input `{item}`")
+    from .store import check_result
+    try:
+        check_result(out)
+    except Exception as e:             # NotAResult, pyarrow's ArrowInvalid, a read error
+        raise UsageError(f"cannot resume from `{out}`: it is not a batch result ({e}); give "
+                         "another -o or delete it") from None
     tasks = collect(inputs, overrides or {}, budget, cfg)
     out.parent.mkdir(parents=True, exist_ok=True)
     try:

@@ -8,6 +8,8 @@ import os
 import re
 from pathlib import Path
 
+from ..files import FileRefused, read_file
+from ..sources import MAX_IMPORT_BYTES
 from .row import options_key, sha256
 
 
@@ -17,8 +19,11 @@ class InputError(ValueError):
 
 def _file_task(path: str) -> dict:
     task = {"id": path, "path": path, "source": None}
-    try:
-        data = Path(path).read_bytes()
+    try:        # as the main file of `aidl check`: a regular file, size-limited, non-blocking
+        data = read_file(path, MAX_IMPORT_BYTES)
+    except FileRefused as e:           # a FIFO, /dev/zero, a file larger than imports may be
+        task.update(sha256=sha256(b""), read_error=e.message)
+        return task
     except OSError as e:
         task.update(sha256=sha256(b""),
                     read_error=f"cannot read `{path}`: {e.strerror or e}")

@@ -16,11 +16,13 @@ should take the last).
 """
 from __future__ import annotations
 
+import errno
 import json
 import os
 from pathlib import Path
 
 from ..api import write_atomic
+from ..files import NOFOLLOW, NONBLOCK, FileRefused, open_append
 from .row import FIELDS
 
 
@@ -50,12 +52,14 @@ def need_arrow() -> None:
                            "pip install 'aidl-lang[batch]', or write OUT.jsonl") from None
 
 
-def read_jsonl(path: Path) -> list[dict]:
+def read_jsonl(path: Path, follow_symlinks: bool = True) -> list[dict]:
     """The rows of a JSONL file; a line that is not a row (one cut short by a crash) is
-    skipped."""
+    skipped.  ``follow_symlinks=False``: a link is refused
+    (:class:`~aidl_lang.files.FileRefused`), as a batch reads its own journal."""
     rows = []
     try:
-        with open(path, encoding="utf-8") as f:
+        flags = os.O_RDONLY | (0 if follow_symlinks else NOFOLLOW)
+        with open(os.open(path, flags), encoding="utf-8") as f:
             for line in f:
                 try:
                     row = json.loads(line)
@@ -65,6 +69,11 @@ def read_jsonl(path: Path) -> list[dict]:
                     rows.append(row)
     except FileNotFoundError:
         pass
+    except OSError as e:
+        if e.errno == errno.ELOOP:
+            raise FileRefused(f"`{path}` is a symbolic link; refusing to read it as this "
+                              "batch's rows") from None
+        raise
     return rows
 
 
@@ -73,6 +82,43 @@ def read_parquet(path: Path) -> list[dict]:
         return []
     import pyarrow.parquet as pq
     return pq.read_table(path).to_pylist()
+
+
+class NotAResult(ValueError):
+    """An existing OUT that a batch did not write (its rows would be dropped or break the
+    final write); the message says what is wrong with it."""
+
+
+def check_result(path: Path) -> None:
+    """Raise :class:`NotAResult` unless ``path`` is missing or a batch result: for Parquet, a
+    file whose columns are the rows' fields with their types (an integer ``id`` is not); for
+    JSONL, every complete line a row object (``id`` text, a ``status``); a last line without
+    its newline, cut short by a crash, is allowed."""
+    if not path.exists():
+        return
+    if path.suffix.lower() == ".parquet":
+        import pyarrow.parquet as pq
+        schema = pq.read_schema(path)
+        want = _schema()
+        for name in want.names:
+            if name not in schema.names:
+                raise NotAResult(f"it has no `{name}` column")
+            if schema.field(name).type != want.field(name).type:
+                raise NotAResult(f"its `{name}` column holds {schema.field(name).type}, "
+                                 f"not {want.field(name).type}")
+        return
+    with open(os.open(path, os.O_RDONLY | NOFOLLOW | NONBLOCK), "rb") as f:
+        lines = f.read().split(b"\n")
+    for no, line in enumerate(lines[:-1], 1):          # the last piece has no newline
+        if not line.strip():
+            continue
+        try:
+            row = json.loads(line)
+        except ValueError:
+            raise NotAResult(f"line {no} is not JSON") from None
+        if not (isinstance(row, dict) and isinstance(row.get("id"), str) and "status" in row):
+            raise NotAResult(f"line {no} is not a batch row (an object with `id` and "
+                             "`status`)")
 
 
 def read_rows(path: Path) -> list[dict]:
@@ -96,14 +142,15 @@ class Store:
         if self.parquet:
             for row in read_parquet(self.out):
                 rows[row["id"]] = row
-        for row in read_jsonl(self.journal):
+        for row in read_jsonl(self.journal, follow_symlinks=False):
             rows.pop(row["id"], None)            # keep the order of the latest
             rows[row["id"]] = row
         return rows
 
     def open(self) -> None:
         self.journal.parent.mkdir(parents=True, exist_ok=True)
-        self._f = open(self.journal, "a+", encoding="utf-8")
+        # never through a link, even one swapped in after run_batch looked (O_NOFOLLOW)
+        self._f = open_append(self.journal)
         if self._f.tell() > 0:                   # a line cut short by a crash: end it
             self._f.seek(self._f.tell() - 1)
             last = self._f.read(1)

@@ -276,12 +276,15 @@ def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = No
 
 
 def _read(path: str, as_json: bool) -> str | None:
+    from ..sources import SourceRefused, read_program
     try:
-        return Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as e:
+        return read_program(path)          # a regular file, size-limited, never blocking
+    except SourceRefused as e:
+        from ..diagnostics import Span
         sink = DiagnosticSink()
-        sink.add(Diagnostic("E0004", f"cannot read `{path}`: {getattr(e, 'strerror', None) or e}",
-                            None, hint="check the file name"))
+        sink.add(Diagnostic("E0004", e.message, Span(path, 1, 1, 1, 1, 0, 0),
+                            hint="give a regular UTF-8 .aidl file (programs and imports have "
+                                 "at most 1000000 bytes)"))
         _emit(sink, as_json, False)
         return None
 

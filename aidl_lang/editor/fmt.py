@@ -141,6 +141,13 @@ def format_source(source: str, path: str = "<stdin>") -> str:
     parse, :class:`FormatterBug` if the result would not parse to the same AST with the same
     comments (checked on every call).
     """
+    from ..pipeline import run_deep
+    # on the compiler's deep-stack thread: what `aidl check` compiles (a 400-term `**` chain,
+    # a 600-term conditional) formats too
+    return run_deep(lambda: _format(source, path))
+
+
+def _format(source: str, path: str) -> str:
     source = source.replace("\r\n", "\n").replace("\r", "\n")
     sink = DiagnosticSink()
     before = parse(source, path, sink)

@@ -57,7 +57,12 @@ def build_server(root: str, budget: float = 1.0,
     evaluation budget) as each call's default; ``prompt``: a function that returns the
     ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
     ws = T.Workspace(root, budget)
-    server = MCPServer("aidl", instructions=INSTRUCTIONS)
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        ver = version("aidl-lang")
+    except PackageNotFoundError:         # a source tree that is not installed
+        ver = "0+unknown"
+    server = MCPServer("aidl", instructions=INSTRUCTIONS, version=ver)
 
     def refused(e: Exception) -> ToolError:
         return ToolError(str(e))

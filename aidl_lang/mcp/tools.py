@@ -10,6 +10,7 @@ import os
 from pathlib import Path
 
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
+from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular, write_in_dir
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
 MAX_SOURCE = 1_000_000    # characters of program text per call
@@ -40,7 +41,10 @@ class Workspace:
         p = Path(path)
         if not p.is_absolute():
             p = self.root / p
-        real = Path(os.path.realpath(p))
+        try:
+            real = Path(os.path.realpath(p))
+        except (OSError, ValueError):          # a link swapped while it was resolved
+            raise Refused(f"`{path}` changed while it was being resolved; try again") from None
         if real != self.root and self.root not in real.parents:
             raise Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
                           "--root); only files inside it can be read or written")
@@ -73,8 +77,30 @@ class Workspace:
                 raise Refused(f"the program is longer than {MAX_SOURCE} characters")
             return compile_program(source=source, path=str(self.root / "untitled.aidl"),
                                    overrides=overrides, budget=k)
+        real, text = self.read(path)
+        return compile_program(source=text, path=str(real), overrides=overrides, budget=k)
+
+    def read(self, path: str) -> tuple[Path, str]:
+        """``(real path, text)`` of the program file ``path``: its real path checked to be
+        inside the root, then opened once from the root's folder without following any link
+        (:func:`aidl_lang.files.open_beneath`: a file or folder swapped for a link after the
+        check is refused, never read), a regular file of at most :data:`MAX_SOURCE` bytes of
+        UTF-8 text.  Raises :class:`Refused`."""
         real = self.inside(path, must_exist=True)
-        return compile_program(path=real, overrides=overrides, budget=k)
+        try:
+            fd = open_beneath(self.root, real.relative_to(self.root))
+            try:
+                data = read_regular(fd, MAX_SOURCE, path)
+            finally:
+                os.close(fd)
+        except OSError as e:
+            raise Refused(f"cannot read `{path}`: {e}") from None
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as e:
+            raise Refused(f"cannot read `{path}`: not UTF-8 text ({e.reason} at byte "
+                          f"{e.start})") from None
+        return real, text
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
@@ -140,11 +166,12 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
         png = r.to_png(width=width, style=style)
         if target is not None:
             prog = None if path is None else str(ws.inside(path))
-            from ..api import check_output_path, write_atomic
+            from ..api import check_output_path
             out = check_output_path(target, prog)
-            write_atomic(out, r.encode(out.suffix, style=style))
+            data = r.encode(out.suffix, style=style, width=width)
+            _write_inside(ws, target, data, prog, output)
             doc["written"] = ws.relative(out)
-    except (MissingDependency, OutputError, WriteError, NotCompiled) as e:
+    except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e)) from None
     doc["parts"] = [p.to_json() for p in r.parts]
     doc["image"] = {"format": "png", "width": width}
@@ -177,6 +204,31 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
         doc["describe"] = r.description
         doc["text"] = describe_text(doc["describe"])
     return doc
+
+
+def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
+                  shown: str) -> None:
+    """Write ``data`` to ``target`` (a real path inside the root, checked when the call came
+    in) through the folder opened from the root without following links
+    (:func:`aidl_lang.files.open_dir_beneath`), so a folder swapped for a link to somewhere
+    else while the program compiled is refused, never written through; never over the
+    program file ``program``.  Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    rel = target.relative_to(ws.root)
+    dfd = open_dir_beneath(ws.root, rel.parent)
+    try:
+        if program is not None:
+            try:
+                here = os.stat(rel.name, dir_fd=dfd, follow_symlinks=False)
+                prog = os.stat(program)
+            except FileNotFoundError:
+                pass
+            else:
+                if (here.st_dev, here.st_ino) == (prog.st_dev, prog.st_ino):
+                    raise FileRefused(f"`{shown}` is the program being compiled; refusing to "
+                                      "overwrite it")
+        write_in_dir(dfd, rel.name, data, shown)
+    finally:
+        os.close(dfd)
 
 
 def explain(code: str) -> str:

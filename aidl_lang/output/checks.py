@@ -260,7 +260,9 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
     overlap by more than :data:`TEXT_OVERLAP` of the smaller) or over an engraved mark (a
     line, arc or circle that runs through the text's box, shrunk by :data:`TEXT_MARGIN` of the
     text's size, over more than a quarter of that size): two protractor labels on each other,
-    a label on its tick mark."""
+    a label on its tick mark.  Labels of two characters or more whose boxes come closer than
+    :data:`TEXT_GAP` of their size run into each other (single letters are a word's letters
+    laid out one by one, as ``text_on_arc`` does)."""
     texts: dict = {}
     marks: dict = {}
     for style, item, g in d.strokes:
@@ -289,7 +291,8 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
         if common <= max(MIN_AREA, TEXT_OVERLAP * small):
             gap = _quad_gap(boxes[i][0], boxes[j][0])
             near = TEXT_GAP * min(sizes[i], sizes[j])
-            if gap < near and a.span is not None and b not in said:
+            word = min(len(str(g.data.get("text", "")).strip()) for g in (a, b)) > 1
+            if gap < near and word and a.span is not None and b not in said:
                 said.add(b)
                 close.setdefault((a.span, b.span), []).append((gap, near, a, b))
             continue

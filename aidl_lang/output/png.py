@@ -41,5 +41,10 @@ def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
             raise OutputError(
                 f"the PNG would be {w_px:.0f} x {h_px:.0f} pixels, more than {MAX_SIDE} a side "
                 f"or {MAX_AREA // 1_000_000} megapixels; use a lower --dpi or --png-width")
+        if style == "laser":
+            # the laser style's 0.01 mm hairline is a fraction of a pixel: antialiased to
+            # nearly white.  A raster draws it one pixel wide (the SVG and DXF keep 0.01 mm).
+            svg = to_svg(output, show=show, style=style, margin=margin,
+                         hairline=1.0 / px).encode()
     kw = {"output_width": int(width)} if width else {"dpi": float(dpi)}
     return cairosvg.svg2png(bytestring=svg, background_color="white", **kw)

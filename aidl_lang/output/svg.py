@@ -95,14 +95,16 @@ def segments_d(segments, closed: bool) -> str:
 
 
 def to_svg(output, title: str = "", show=(), style: str = "preview",
-           margin: float | None = None) -> str:
+           margin: float | None = None, hairline: float = HAIRLINE) -> str:
     """The SVG text of ``output`` (an :class:`Output`, or a booleans ``Drawing``, which is
     converted with :func:`~.part.build`).  ``show``: debug layers from :data:`SHOW`.
 
     The page is the exact extent of the drawing (:func:`~.extent.extent`) plus ``margin`` mm
     on every side; ``None`` (the default) is 5 % of the larger side, at least 1 mm, and ``0``
     makes the page exactly the bounding box.  Raises :class:`ValueError` for an unknown layer
-    and :class:`~.part.OutputError` for a negative or non-finite margin."""
+    and :class:`~.part.OutputError` for a negative or non-finite margin.  ``hairline``: the
+    laser style's stroke width in mm (:data:`HAIRLINE`; a raster output passes one pixel's
+    width, so the cuts show)."""
     import svgwrite
     if not isinstance(output, Output):
         output = build(output, title)
@@ -137,7 +139,7 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     if laser:
         # a true hairline: 0.01 user units = 0.01 mm ("0.01mm" would be 0.01 CSS mm in user
         # units, i.e. 3.78 times wider on this page)
-        cut = d.g(id="cut", fill="none", stroke="#ff0000", stroke_width=_f(HAIRLINE))
+        cut = d.g(id="cut", fill="none", stroke="#ff0000", stroke_width=_f(hairline))
     else:
         cut = d.g(id="cut", fill="#cfd8dc", stroke="#263238", stroke_width=_f(sw),
                   fill_rule="evenodd")
@@ -167,7 +169,7 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
         cut.add(g)
     d.add(cut)
     eng = d.g(id="engrave", fill="none", stroke="#0000ff" if laser else "#1565c0",
-              stroke_width=_f(HAIRLINE if laser else sw), stroke_linecap="round",
+              stroke_width=_f(hairline if laser else sw), stroke_linecap="round",
               stroke_linejoin="round")
     for st in output.engrave:
         e = _element(d, st.segments, st.closed)

@@ -201,8 +201,9 @@ class Session:
         :class:`~aidl_lang.output.Drawing`), or ``(None, diagnostics)`` when it fails."""
         if self.program is None:
             return None, self.diagnostics
-        try:
-            res = self._compile(values, keep_warm=False, drawing=True)
+        from ..pipeline import run_deep
+        try:        # on the deep-stack thread, as `aidl check --set`: a deep value compiles
+            res = run_deep(lambda: self._compile(values, keep_warm=False, drawing=True))
         except Exception as e:          # noqa: BLE001 - a 422 with the diagnostic, not a 500
             res = Result(_internal(e, "compiling a download"))
         if not res.ok:
