@@ -528,7 +528,7 @@ _box = st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(0, 30), st.fl
 @settings(max_examples=60, deadline=None)
 @given(st.lists(_box, max_size=40), st.sampled_from([0.0, 0.5, 3.0]))
 def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
-    """box_pairs (a k-d tree over the centres, large boxes apart; or, for few boxes, all
+    """box_pairs (a grid over the centres, large boxes apart; or, for few boxes, all
     pairs) gives exactly the pairs that the all-pairs reference gives."""
     import numpy as np
     from aidl_lang.output.nearby import box_pairs
@@ -537,7 +537,7 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
             if B[i, 0] - pad <= B[j, 2] + pad and B[j, 0] - pad <= B[i, 2] + pad
             and B[i, 1] - pad <= B[j, 3] + pad and B[j, 1] - pad <= B[i, 3] + pad}
     from aidl_lang.output import nearby
-    for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the k-d tree
+    for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the grid
         old, nearby.SMALL_BOXES = nearby.SMALL_BOXES, small
         try:
             got = {tuple(map(int, p)) for p in box_pairs(B, pad)}
@@ -550,7 +550,7 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
 @given(st.lists(st.tuples(st.floats(-20, 20), st.floats(-20, 20)), min_size=3, max_size=30),
        st.lists(st.integers(0, 3), min_size=30, max_size=30), st.floats(0.1, 8))
 def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
-    """close_pairs (by y band for small inputs, by k-d tree for large) gives every
+    """close_pairs (by y band for small inputs, by a grid for large) gives every
     (vertex, segment) pair of different features closer than `dist`, with the exact
     distance, as measuring all pairs does."""
     import numpy as np
@@ -560,7 +560,7 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
     A, B = V, np.roll(V, -1, axis=0)
     from aidl_lang.output import nearby
     gots = []
-    for small in (nearby.SMALL_VERTS, 0):       # the y band, then the k-d tree
+    for small in (nearby.SMALL_VERTS, 0):       # the y band, then the grid
         old, nearby.SMALL_VERTS = nearby.SMALL_VERTS, small
         try:
             v, s, d, foot = close_pairs(V, f, A, B, f, dist)
