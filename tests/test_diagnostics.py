@@ -789,3 +789,37 @@ def test_W0106_through_the_cli_and_explain(tmp_path):
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "explain", "W0106"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and "floor division used as a length" in r.stdout
+
+
+def test_an_error_flood_prints_the_first_ten_of_a_code_and_counts_the_rest(tmp_path):
+    """3,000 calls of an unknown function: 3,000 E0103 kept (--json lists them all), the
+    first 10 printed in full and "and 2,990 more of E0103" for the rest."""
+    f = tmp_path / "flood.aidl"
+    f.write_text("solid s {\n  c = Circle(center=(0, 0), radius=5)\n"
+                 + "".join(f"  x{i} = Bogus(1)\n" for i in range(3000)) + "}\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 1
+    assert r.stderr.count("error[E0103]") == 10
+    assert "aidl: and 2,990 more of E0103" in r.stderr
+    assert "aidl: 3000 errors" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--json"],
+                       capture_output=True, text=True, timeout=120)
+    codes = [d["code"] for d in json.loads(r.stdout)["diagnostics"]]
+    assert codes == ["E0103"] * 3000
+
+
+def test_the_sink_drops_repeats_by_key_after_items_are_edited_in_place():
+    """DiagnosticSink.add keeps one diagnostic per (code, span, message), also after a caller
+    removed items from ``sink.items`` (the parser's bracket pass does)."""
+    from aidl_lang.diagnostics import DiagnosticSink, Span
+    sink = DiagnosticSink()
+    spans = [Span("f", 1, i, 1, i + 1, i, i + 1) for i in range(1, 6)]
+    for _ in range(2):
+        for sp in spans:
+            sink.error("E0103", "unknown function `Bogus`", sp)
+    assert len(sink.items) == 5
+    del sink.items[3:]
+    sink.error("E0103", "unknown function `Bogus`", spans[4])   # gone, so added again
+    sink.error("E0103", "unknown function `Bogus`", spans[0])   # still there
+    assert [d.span for d in sink.items] == spans[:3] + [spans[4]]

@@ -249,6 +249,9 @@ def _overrides(items: list[str]) -> dict[str, str]:
     return out
 
 
+PRINTED_PER_CODE = 10      # diagnostics of one code printed in full; the rest are counted
+
+
 def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = None) -> None:
     if as_json:
         doc = {"ok": ok, "diagnostics": [d.to_json(sink.sources) for d in sink.items]}
@@ -256,9 +259,16 @@ def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = No
         print(json.dumps(doc, indent=2))
         return
     color = sys.stderr.isatty() and not os.environ.get("NO_COLOR")
-    for d in sink.items:
-        print(render_text(d, sink.sources, color=color), file=sys.stderr)
-        print(file=sys.stderr)
+    shown: dict[str, int] = {}
+    for d in sink.items:            # a flood: the first PRINTED_PER_CODE of each code in full
+        shown[d.code] = shown.get(d.code, 0) + 1
+        if shown[d.code] <= PRINTED_PER_CODE:
+            print(render_text(d, sink.sources, color=color), file=sys.stderr)
+            print(file=sys.stderr)
+    for code, n in shown.items():
+        if n > PRINTED_PER_CODE:
+            print(f"aidl: and {n - PRINTED_PER_CODE:,} more of {code} (`--json` lists them all)",
+                  file=sys.stderr)
     n_err = sum(d.is_error for d in sink.items)
     n_warn = sum(d.severity == "warning" for d in sink.items)
     if n_err:
