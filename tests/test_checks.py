@@ -644,6 +644,37 @@ solid plate {
     assert not c.sink.items
 
 
+def test_W0510_the_defaults_are_compiled_once_per_source_until_an_import_changes(tmp_path,
+                                                                               monkeypatch):
+    """A slider move compiles once: the defaults' topology is kept per source (serve, the
+    editor's preview, MCP), and compiled again when a file it imports reads differently."""
+    from aidl_lang import pipeline
+    (tmp_path / "lib.aidl").write_text("const R = 3 mm\n")
+    main = tmp_path / "main.aidl"
+    src = """import "lib.aidl"
+param x = 0 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole a { c = Circle(center=(x, 0), radius=R) }
+}"""
+    main.write_text(src)
+    calls = []
+    real = pipeline._compile
+    monkeypatch.setattr(pipeline, "_compile", lambda *a, **k: calls.append(a[3]) or real(*a, **k))
+    monkeypatch.setattr(pipeline, "_defaults", {})
+    moves = ["18.5mm", "5mm", "18.5mm"]
+    got = [[d.code for d in pipeline.compile_source(src, str(main), {"x": v}).sink.items]
+           for v in moves]
+    assert got == [["W0510"], [], ["W0510"]]
+    assert calls == [{"x": "18.5mm"}, None, {"x": "5mm"}, {"x": "18.5mm"}]   # defaults once
+    # the import changes: a hole of radius 12 already breaks through at x = 0 with the
+    # defaults, so moving it further changes nothing
+    (tmp_path / "lib.aidl").write_text("const R = 12 mm\n")
+    calls.clear()
+    c = pipeline.compile_source(src, str(main), {"x": "1mm"})
+    assert calls == [{"x": "1mm"}, None] and not [d for d in c.sink.items if d.code == "W0510"]
+
+
 # ------------------------------------------------------------ W0507's opening in tiles
 @settings(max_examples=30, deadline=None)
 @given(st.lists(_hole, min_size=1, max_size=5), st.sampled_from([0.5, 1.0, 2.0]),
