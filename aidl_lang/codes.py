@@ -163,9 +163,11 @@ sibling structures belongs in their common parent; the hint names it.
 Template parameters are values (numbers, lengths, angles, booleans, strings). Relate a template
 instance to other parts with constraints in the parent structure.
 """),
-    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items."),
+    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items "
+                                   "(times `--budget K`)."),
     "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
-    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
+    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects (times "
+                                      "`--budget K`)."),
     "E0304": ("evaluation budget exhausted", """
 One compile has one evaluation budget (docs/language.md §8.1): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,

@@ -823,3 +823,24 @@ def test_the_sink_drops_repeats_by_key_after_items_are_edited_in_place():
     sink.error("E0103", "unknown function `Bogus`", spans[4])   # gone, so added again
     sink.error("E0103", "unknown function `Bogus`", spans[0])   # still there
     assert [d.span for d in sink.items] == spans[:3] + [spans[4]]
+
+
+def test_range_and_geometry_caps_grow_with_the_budget():
+    """`range()`'s 10,000 items and the 50,000 geometry objects are budget figures: twice
+    the budget allows twice as many (docs/language.md 8.1)."""
+    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.pipeline import compile_source
+    loop = "solid s {\n    for i in range(15000) { p = Point(i, 0) }\n}\n"
+    c = compile_source(loop, "r.aidl", do_solve=False)
+    (d,) = c.sink.errors()
+    assert d.code == "E0301" and d.message == "range of 15000 items exceeds the limit of 10000"
+    assert "--budget" in d.hint
+    c = compile_source(loop, "r.aidl", do_solve=False, budget=DEFAULT_BUDGET.scaled(2))
+    assert not c.sink.errors(), [x.message for x in c.sink.items]
+    many = ("solid s {\n    for i in range(6) { for j in range(9000) { p = Point(j, i) } }\n"
+            "}\n")            # 54,000 points: over 50,000 at --budget 1, under 100,000 at 2
+    c = compile_source(many, "g.aidl", do_solve=False)
+    assert [x.code for x in c.sink.errors()] == ["E0303"]
+    assert "more than 50000 geometry objects" in c.sink.errors()[0].message
+    c = compile_source(many, "g.aidl", do_solve=False, budget=DEFAULT_BUDGET.scaled(2))
+    assert not c.sink.errors(), [x.message for x in c.sink.items]
