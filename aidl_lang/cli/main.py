@@ -147,7 +147,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="angles in degrees parts may be turned by for --layout, e.g. 0 or 0,90 "
                         "(default), or any")
     r.add_argument("--nest-time", type=int, default=0, metavar="S",
-                   help="seconds the nesting may spend improving its first packing (default 0)")
+                   help="seconds the nesting may spend improving its first packing (default 0); "
+                        "added to the --budget wall time")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -572,6 +573,10 @@ def cmd_render(args) -> int:
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan
+            if args.nest_time and res.deadline is not None:
+                # the nesting's own time limit comes on top of the compile's wall budget
+                from ..limits import Deadline
+                res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
             where = plan(cut, sheet, gap, rotate, args.nest_time)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
