@@ -28,6 +28,8 @@ from .typecheck import check
 
 @dataclass
 class Compiled:
+    """What :func:`compile_source` made: the diagnostics, and each stage's result it reached."""
+
     sink: DiagnosticSink
     model: Model | None = None
     solve: SolveResult | None = None
