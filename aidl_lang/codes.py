@@ -163,9 +163,11 @@ sibling structures belongs in their common parent; the hint names it.
 Template parameters are values (numbers, lengths, angles, booleans, strings). Relate a template
 instance to other parts with constraints in the parent structure.
 """),
-    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items."),
+    "E0301": ("loop too large", "Loops, ranges and comprehensions are limited to 10000 items "
+                                   "(times `--budget K`)."),
     "E0302": ("nesting too deep", "Templates may nest at most 16 deep; expressions at most 64 brackets."),
-    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects."),
+    "E0303": ("too much geometry", "A model is limited to 50000 geometry objects (times "
+                                      "`--budget K`)."),
     "E0304": ("evaluation budget exhausted", """
 One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
@@ -410,8 +412,9 @@ centre distance, whose teeth run into each other). The warning names both parts,
 area and its depth along the line between them. Move one part away (meshing spur gears sit at
 the centre distance module * (teeth1 + teeth2) / 2, which `gear_pair` in std/gears.aidl keeps),
 or shrink it; if the overlap is meant (a picture of parts stacked), say so with
-`AllowOverlap(a, b)` in the assembly. A part lying wholly on another (a gear drawn on its
-mounting plate) is taken as stacked and not warned.
+`AllowOverlap(a, b)` in the assembly. Parts overlapping by more than a quarter of the smaller
+one are taken as laid on each other in the assembly view (a gear drawn on its mounting plate, a
+clock's hands) and not warned: parts meant to mesh or touch collide at their rims.
 
     import "std/gears.aidl"
     assembly drive {

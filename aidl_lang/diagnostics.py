@@ -105,13 +105,21 @@ class DiagnosticSink:
     def __init__(self) -> None:
         self.items: list[Diagnostic] = []
         self.sources: dict[str, str] = {}
+        self._keys: set = set()      # (code, span, message) of ``items``, when ``_indexed`` long
+        self._indexed = 0
 
     def add(self, d: Diagnostic) -> Diagnostic:
+        """Append ``d`` unless a diagnostic with the same code, span and message is already
+        there (found by key: a flood of 100,000 errors stays linear)."""
         if d.fix is None and d.suggestions and d.span is not None and d.code in ("E0101", "E0102", "E0103"):
             d.fix = Fix(d.span, d.suggestions[0])      # the span is exactly the misspelt name
+        if self._indexed != len(self.items):            # ``items`` was edited in place
+            self._keys = {(x.code, x.span, x.message) for x in self.items}
         key = (d.code, d.span, d.message)
-        if not any((x.code, x.span, x.message) == key for x in self.items):
+        if key not in self._keys:
+            self._keys.add(key)
             self.items.append(d)
+        self._indexed = len(self.items)
         return d
 
     def error(self, code: str, message: str, span: Span | None, hint: str | None = None,

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-MAX_ITER = 10_000            # iterations of one loop or comprehension
-MAX_GEOMETRY = 50_000        # geometry objects in one model
+MAX_ITER = 10_000            # iterations of one loop or comprehension (Budget.items)
+MAX_GEOMETRY = 50_000        # geometry objects in one model (Budget.geometry)
 MAX_TEMPLATE_DEPTH = 16      # nested template instances
 MAX_EXTENT = 1e6             # |coordinate|, size or length in mm a model may reach (1 km)
 
@@ -33,7 +33,10 @@ class Budget:
       booleans and the shape checks (and, in ``aidl render``, the writers);
     - ``vertices``: 2 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
-      :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``).
+      :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``);
+    - ``items``: :data:`MAX_ITER` (10 000) items of one loop, ``range`` or comprehension
+      (``E0301``);
+    - ``geometry``: :data:`MAX_GEOMETRY` (50 000) geometry objects in one model (``E0303``).
     """
 
     steps: int = 250_000
@@ -41,11 +44,14 @@ class Budget:
     size: int = 1_000_000
     seconds: float = 15.0
     vertices: int = 2_000_000
+    items: int = MAX_ITER
+    geometry: int = MAX_GEOMETRY
 
     def scaled(self, k: float) -> "Budget":
         """Every figure multiplied by ``k`` (``--budget K``); ``k`` > 0."""
         return Budget(int(self.steps * k), int(self.objects * k), int(self.size * k),
-                      self.seconds * k, int(self.vertices * k))
+                      self.seconds * k, int(self.vertices * k), int(self.items * k),
+                      int(self.geometry * k))
 
 
 DEFAULT_BUDGET = Budget()

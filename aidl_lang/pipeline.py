@@ -21,13 +21,15 @@ from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
-from .output.checks import MIN_WALL, check_drawing, check_topology
+from .output.checks import MIN_WALL, check_drawing, check_topology, topology
 from .solver import SolveResult, solve
 from .typecheck import check
 
 
 @dataclass
 class Compiled:
+    """What :func:`compile_source` made: the diagnostics, and each stage's result it reached."""
+
     sink: DiagnosticSink
     model: Model | None = None
     solve: SolveResult | None = None
@@ -55,12 +57,11 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         res = run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
                                         budget))
         if overrides and res.drawing is not None and res.ok:
-            # W0510: the baseline is the program with its own defaults (compiled only here,
-            # when values are overridden; its warnings are not reported)
-            base = run_deep(lambda: _compile(DiagnosticSink(), source, path, None, True,
-                                             min_wall, budget, shape_checks=False))
-            if base.drawing is not None and base.ok:
-                check_topology(base.drawing, res.drawing, overrides, sink)
+            # W0510: the baseline is the program with its own defaults (its warnings are not
+            # reported), compiled once per source and kept (defaults_topology)
+            base = defaults_topology(source, path, min_wall, budget)
+            if base is not None:
+                check_topology(base, res.drawing, overrides, sink)
         return res
     except RecursionError as ex:
         sink.sources.setdefault(path, source)
@@ -103,6 +104,40 @@ def out_of_memory(ex: BaseException) -> bool:
         e = e.__cause__ or e.__context__
         seen += 1
     return False
+
+
+DEFAULTS_KEPT = 8     # sources whose defaults' topology a process keeps (serve, LSP, MCP)
+_defaults: dict = {}  # (path, source, min_wall, budget) -> (imported files' texts, topology)
+
+
+def defaults_topology(source: str, path: str, min_wall: float = MIN_WALL,
+                      budget: Budget = DEFAULT_BUDGET) -> dict | None:
+    """The :func:`~aidl_lang.output.checks.topology` of ``source`` compiled with its own
+    defaults (what W0510 compares a ``--set`` compile with), or None when that compile
+    fails.  Kept for the last :data:`DEFAULTS_KEPT` sources, so a slider move in ``aidl
+    serve``, the editor's preview or an MCP session compiles once; a kept one is used while
+    the files it imported still read the same."""
+    key = (path, source, min_wall, budget)
+    kept = _defaults.pop(key, None)
+    if kept is not None and all(_reads(p) == text for p, text in kept[0].items()):
+        _defaults[key] = kept                          # the most recent last
+        return kept[1]
+    base = run_deep(lambda: _compile(DiagnosticSink(), source, path, None, True,
+                                     min_wall, budget, shape_checks=False))
+    topo = topology(base.drawing) if base.drawing is not None and base.ok else None
+    imported = {p: t for p, t in base.sink.sources.items() if p != path}
+    while len(_defaults) >= DEFAULTS_KEPT:
+        del _defaults[next(iter(_defaults))]           # the least recently used
+    _defaults[key] = (imported, topo)
+    return topo
+
+
+def _reads(path: str) -> str | None:
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+    except (OSError, UnicodeDecodeError):
+        return None
 
 
 # Deep but legal programs (a 500-term `**` chain, 600 nested conditional expressions) recurse

@@ -528,7 +528,7 @@ _box = st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(0, 30), st.fl
 @settings(max_examples=60, deadline=None)
 @given(st.lists(_box, max_size=40), st.sampled_from([0.0, 0.5, 3.0]))
 def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
-    """box_pairs (a k-d tree over the centres, large boxes apart; or, for few boxes, all
+    """box_pairs (a grid over the centres, large boxes apart; or, for few boxes, all
     pairs) gives exactly the pairs that the all-pairs reference gives."""
     import numpy as np
     from aidl_lang.output.nearby import box_pairs
@@ -537,7 +537,7 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
             if B[i, 0] - pad <= B[j, 2] + pad and B[j, 0] - pad <= B[i, 2] + pad
             and B[i, 1] - pad <= B[j, 3] + pad and B[j, 1] - pad <= B[i, 3] + pad}
     from aidl_lang.output import nearby
-    for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the k-d tree
+    for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the grid
         old, nearby.SMALL_BOXES = nearby.SMALL_BOXES, small
         try:
             got = {tuple(map(int, p)) for p in box_pairs(B, pad)}
@@ -550,7 +550,7 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
 @given(st.lists(st.tuples(st.floats(-20, 20), st.floats(-20, 20)), min_size=3, max_size=30),
        st.lists(st.integers(0, 3), min_size=30, max_size=30), st.floats(0.1, 8))
 def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
-    """close_pairs (by y band for small inputs, by k-d tree for large) gives every
+    """close_pairs (by y band for small inputs, by a grid for large) gives every
     (vertex, segment) pair of different features closer than `dist`, with the exact
     distance, as measuring all pairs does."""
     import numpy as np
@@ -560,7 +560,7 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
     A, B = V, np.roll(V, -1, axis=0)
     from aidl_lang.output import nearby
     gots = []
-    for small in (nearby.SMALL_VERTS, 0):       # the y band, then the k-d tree
+    for small in (nearby.SMALL_VERTS, 0):       # the y band, then the grid
         old, nearby.SMALL_VERTS = nearby.SMALL_VERTS, small
         try:
             v, s, d, foot = close_pairs(V, f, A, B, f, dist)
@@ -642,6 +642,37 @@ solid plate {
     # a value that keeps the topology: no W0510
     c = compile_source(src, "t.aidl", {"x": "5mm", "gap": "-2mm"})
     assert not c.sink.items
+
+
+def test_W0510_the_defaults_are_compiled_once_per_source_until_an_import_changes(tmp_path,
+                                                                               monkeypatch):
+    """A slider move compiles once: the defaults' topology is kept per source (serve, the
+    editor's preview, MCP), and compiled again when a file it imports reads differently."""
+    from aidl_lang import pipeline
+    (tmp_path / "lib.aidl").write_text("const R = 3 mm\n")
+    main = tmp_path / "main.aidl"
+    src = """import "lib.aidl"
+param x = 0 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole a { c = Circle(center=(x, 0), radius=R) }
+}"""
+    main.write_text(src)
+    calls = []
+    real = pipeline._compile
+    monkeypatch.setattr(pipeline, "_compile", lambda *a, **k: calls.append(a[3]) or real(*a, **k))
+    monkeypatch.setattr(pipeline, "_defaults", {})
+    moves = ["18.5mm", "5mm", "18.5mm"]
+    got = [[d.code for d in pipeline.compile_source(src, str(main), {"x": v}).sink.items]
+           for v in moves]
+    assert got == [["W0510"], [], ["W0510"]]
+    assert calls == [{"x": "18.5mm"}, None, {"x": "5mm"}, {"x": "18.5mm"}]   # defaults once
+    # the import changes: a hole of radius 12 already breaks through at x = 0 with the
+    # defaults, so moving it further changes nothing
+    (tmp_path / "lib.aidl").write_text("const R = 12 mm\n")
+    calls.clear()
+    c = pipeline.compile_source(src, str(main), {"x": "1mm"})
+    assert calls == [{"x": "1mm"}, None] and not [d for d in c.sink.items if d.code == "W0510"]
 
 
 # ------------------------------------------------------------ W0507's opening in tiles
@@ -761,16 +792,27 @@ def test_W0511_parts_stacked_on_a_plate_are_not_interpenetrating(compile_text):
 def test_W0511_allow_overlap_silences_it(compile_text):
     c = compile_text("""assembly stack {
     solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }
-    solid base { r = Rectangle(center=(5, 0), width=20, height=10) }
+    solid base { r = Rectangle(center=(18, 0), width=20, height=10) }
     AllowOverlap(lid, base)
 }""")
     assert not [d for d in c.sink.items if d.code == "W0511"]
     c = compile_text("""assembly stack {
     solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }
-    solid base { r = Rectangle(center=(5, 0), width=20, height=10) }
+    solid base { r = Rectangle(center=(18, 0), width=20, height=10) }
 }""")
     (w,) = [d for d in c.sink.items if d.code == "W0511"]
-    assert "by 150.00 mm^2, 15.00 mm deep" in w.message
+    assert "by 20.00 mm^2, 2.00 mm deep" in w.message
+
+
+def test_W0511_parts_laid_on_each_other_are_not_warned(compile_text):
+    """An overlap of more than a quarter of the smaller part is parts laid on each other in
+    the assembly view (clock hands, a gear on its plate): 5 mm apart, the two 20 x 10 plates
+    overlap by 150 mm^2 (75%), silent; 18 mm apart (10%) they collide at their rims."""
+    c = compile_text("""assembly stack {
+    solid lid { r = Rectangle(center=(0, 0), width=20, height=10) }
+    solid base { r = Rectangle(center=(5, 0), width=20, height=10) }
+}""")
+    assert not [d for d in c.sink.items if d.code == "W0511"]
 
 
 GAUGE = """units mm

@@ -812,3 +812,58 @@ def test_explain_E0105_example_is_an_E0105():
                if ln.startswith("    ")][0]
     c = compile_source(f"solid s {{ c = {example} }}\n", "e.aidl")
     assert [d.code for d in c.sink.items if d.is_error] == ["E0105"], example
+
+
+def test_an_error_flood_prints_the_first_ten_of_a_code_and_counts_the_rest(tmp_path):
+    """3,000 calls of an unknown function: 3,000 E0103 kept (--json lists them all), the
+    first 10 printed in full and "and 2,990 more of E0103" for the rest."""
+    f = tmp_path / "flood.aidl"
+    f.write_text("solid s {\n  c = Circle(center=(0, 0), radius=5)\n"
+                 + "".join(f"  x{i} = Bogus(1)\n" for i in range(3000)) + "}\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 1
+    assert r.stderr.count("error[E0103]") == 10
+    assert "aidl: and 2,990 more of E0103" in r.stderr
+    assert "aidl: 3000 errors" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--json"],
+                       capture_output=True, text=True, timeout=120)
+    codes = [d["code"] for d in json.loads(r.stdout)["diagnostics"]]
+    assert codes == ["E0103"] * 3000
+
+
+def test_the_sink_drops_repeats_by_key_after_items_are_edited_in_place():
+    """DiagnosticSink.add keeps one diagnostic per (code, span, message), also after a caller
+    removed items from ``sink.items`` (the parser's bracket pass does)."""
+    from aidl_lang.diagnostics import DiagnosticSink, Span
+    sink = DiagnosticSink()
+    spans = [Span("f", 1, i, 1, i + 1, i, i + 1) for i in range(1, 6)]
+    for _ in range(2):
+        for sp in spans:
+            sink.error("E0103", "unknown function `Bogus`", sp)
+    assert len(sink.items) == 5
+    del sink.items[3:]
+    sink.error("E0103", "unknown function `Bogus`", spans[4])   # gone, so added again
+    sink.error("E0103", "unknown function `Bogus`", spans[0])   # still there
+    assert [d.span for d in sink.items] == spans[:3] + [spans[4]]
+
+
+def test_range_and_geometry_caps_grow_with_the_budget():
+    """`range()`'s 10,000 items and the 50,000 geometry objects are budget figures: twice
+    the budget allows twice as many (docs/language.md 8.1)."""
+    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.pipeline import compile_source
+    loop = "solid s {\n    for i in range(15000) { p = Point(i, 0) }\n}\n"
+    c = compile_source(loop, "r.aidl", do_solve=False)
+    (d,) = c.sink.errors()
+    assert d.code == "E0301" and d.message == "range of 15000 items exceeds the limit of 10000"
+    assert "--budget" in d.hint
+    c = compile_source(loop, "r.aidl", do_solve=False, budget=DEFAULT_BUDGET.scaled(2))
+    assert not c.sink.errors(), [x.message for x in c.sink.items]
+    many = ("solid s {\n    for i in range(6) { for j in range(9000) { p = Point(j, i) } }\n"
+            "}\n")            # 54,000 points: over 50,000 at --budget 1, under 100,000 at 2
+    c = compile_source(many, "g.aidl", do_solve=False)
+    assert [x.code for x in c.sink.errors()] == ["E0303"]
+    assert "more than 50000 geometry objects" in c.sink.errors()[0].message
+    c = compile_source(many, "g.aidl", do_solve=False, budget=DEFAULT_BUDGET.scaled(2))
+    assert not c.sink.errors(), [x.message for x in c.sink.items]

@@ -469,3 +469,26 @@ def test_the_laser_box_example_checks_clean_and_lays_out(tmp_path):
     assert len(sheets) == 1 and dropped == 0
     check_sheets(sheets, view, 300.0, 200.0, 3.0)
     assert len(sheets[0].engrave) == len(view.engrave) > 0     # the lid's label went along
+
+
+def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys):
+    """`--nest-time S` is the nesting's own time limit, on top of the compile's wall budget:
+    a packer that uses its whole S (here the real plan, then the rest of S waited out) does
+    not leave the writers after it out of budget (E0304) at a small `--budget`."""
+    import time
+    from aidl_lang.output import layout
+    real = layout.plan
+
+    def full_time(output, sheet, gap, rotate, seconds, *a, **k):
+        t0 = time.monotonic()
+        where = real(output, sheet, gap, rotate, 0, *a, **k)
+        time.sleep(max(0.0, seconds - (time.monotonic() - t0)))
+        return where
+    monkeypatch.setattr(layout, "plan", full_time)
+    prog = write(tmp_path, "box", BOX)
+    out = tmp_path / "cut.svg"
+    # --budget 0.2: 3 s of wall time; the nesting takes 4 s of its own
+    assert main(["render", str(prog), "--layout", "sheet", "--sheet", "300x200mm",
+                 "--budget", "0.2", "--nest-time", "4", "-o", str(out)]) == 0, \
+        capsys.readouterr().err
+    assert out.read_text().count("<svg") == 1

@@ -147,7 +147,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="angles in degrees parts may be turned by for --layout, e.g. 0 or 0,90 "
                         "(default), or any")
     r.add_argument("--nest-time", type=int, default=0, metavar="S",
-                   help="seconds the nesting may spend improving its first packing (default 0)")
+                   help="seconds the nesting may spend improving its first packing (default 0); "
+                        "added to the --budget wall time")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -258,6 +259,9 @@ def _overrides(items: list[str]) -> dict[str, str]:
     return out
 
 
+PRINTED_PER_CODE = 10      # diagnostics of one code printed in full; the rest are counted
+
+
 def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = None) -> None:
     if as_json:
         doc = {"ok": ok, "diagnostics": [d.to_json(sink.sources) for d in sink.items]}
@@ -265,9 +269,16 @@ def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = No
         print(json.dumps(doc, indent=2))
         return
     color = sys.stderr.isatty() and not os.environ.get("NO_COLOR")
-    for d in sink.items:
-        print(render_text(d, sink.sources, color=color), file=sys.stderr)
-        print(file=sys.stderr)
+    shown: dict[str, int] = {}
+    for d in sink.items:            # a flood: the first PRINTED_PER_CODE of each code in full
+        shown[d.code] = shown.get(d.code, 0) + 1
+        if shown[d.code] <= PRINTED_PER_CODE:
+            print(render_text(d, sink.sources, color=color), file=sys.stderr)
+            print(file=sys.stderr)
+    for code, n in shown.items():
+        if n > PRINTED_PER_CODE:
+            print(f"aidl: and {n - PRINTED_PER_CODE:,} more of {code} (`--json` lists them all)",
+                  file=sys.stderr)
     n_err = sum(d.is_error for d in sink.items)
     n_warn = sum(d.severity == "warning" for d in sink.items)
     if n_err:
@@ -597,6 +608,10 @@ def cmd_render(args) -> int:
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan
+            if args.nest_time and res.deadline is not None:
+                # the nesting's own time limit comes on top of the compile's wall budget
+                from ..limits import Deadline
+                res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
             where = plan(cut, sheet, gap, rotate, args.nest_time)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)

@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 
 from ..diagnostics import EvalError
-from ..limits import MAX_GEOMETRY
+from ..limits import DEFAULT_BUDGET
 from .expr import var
 from .model import Constraint, Equation, Geometry, Point, Structure
 from .values import PV, GeomRef, Q, StructRef, type_name
@@ -92,9 +92,10 @@ class _Cloner:
         self.ctx.n_geometry += 1
         if hasattr(self.ctx, "count_object"):       # the interpreter's budget
             self.ctx.count_object(self.ctx.cur_span)
-        if self.ctx.n_geometry > MAX_GEOMETRY:
-            raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", self.ctx.cur_span,
-                            hint="use fewer or larger repetitions")
+        most = getattr(self.ctx, "budget", DEFAULT_BUDGET).geometry
+        if self.ctx.n_geometry > most:
+            raise EvalError("E0303", f"more than {most} geometry objects", self.ctx.cur_span,
+                            hint="use fewer or larger repetitions, or raise `--budget`")
         new = Geometry(g.kind, dest, g.span, construction=g.construction, closed=g.closed)
         self.geoms[g] = new
         new.points = {n: self.point(p, dest) for n, p in g.points.items()}

@@ -14,7 +14,7 @@ from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build, member as geom_member
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
-from ..limits import MAX_EXTENT, MAX_GEOMETRY, MAX_ITER
+from ..limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
 from .common import (DEG, _a, _fmt_num, show)
@@ -168,9 +168,9 @@ class Calls:
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure")
         self.n_geometry += 1
-        if self.n_geometry > MAX_GEOMETRY:
-            raise EvalError("E0303", f"more than {MAX_GEOMETRY} geometry objects", node.span,
-                            hint="use fewer or larger repetitions")
+        if self.n_geometry > self.budget.geometry:
+            raise EvalError("E0303", f"more than {self.budget.geometry} geometry objects", node.span,
+                            hint="use fewer or larger repetitions, or raise `--budget`")
         if self.objects >= self.budget.objects:      # self.count_object(node.span), inline
             self.count_object(node.span)
         self.objects += 1
@@ -368,8 +368,9 @@ class Calls:
         if nm == "range":
             ns = [self._int(a, sp) for a in args]
             r = range(*ns)
-            if len(r) > MAX_ITER:
-                raise EvalError("E0301", f"range of {len(r)} items exceeds the limit of {MAX_ITER}", sp)
+            if len(r) > self.budget.items:
+                raise EvalError("E0301", f"range of {len(r)} items exceeds the limit of "
+                                f"{self.budget.items}", sp, hint="use fewer items, or raise `--budget`")
             return [Q.num(i) for i in r]
         if nm == "len":
             if not isinstance(args[0], (list, tuple, str)):

@@ -14,7 +14,7 @@ from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.primitives import member as geom_member
 from ..geometry.expr import Lin, _new
 from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
-from ..limits import MAX_ITER, MAX_TEMPLATE_DEPTH
+from ..limits import MAX_TEMPLATE_DEPTH
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
@@ -549,9 +549,10 @@ class Statements:
 
     def _iterable(self, v, node) -> list:
         if isinstance(v, (list, tuple)):
-            if len(v) > MAX_ITER:
-                raise EvalError("E0301", f"a loop over {len(v)} items exceeds the limit of {MAX_ITER}",
-                                node.span, hint="use fewer items")
+            if len(v) > self.budget.items:
+                raise EvalError("E0301", f"a loop over {len(v)} items exceeds the limit of "
+                                f"{self.budget.items}", node.span,
+                                hint="use fewer items, or raise `--budget`")
             return list(v)
         if isinstance(v, str):
             return list(v)

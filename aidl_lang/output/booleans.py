@@ -45,6 +45,8 @@ END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (
 
 @dataclass
 class Part:
+    """One part of the booleans' result: its structure's final shape (mm)."""
+
     name: str
     kind: str                     # solid | hole (a hole with no solid to cut)
     shape: mf.CrossSection
@@ -61,6 +63,8 @@ class Cut:
 
 @dataclass
 class Drawing:
+    """The booleans' result of a model: its parts, lines, cuts and each structure's own shape."""
+
     parts: list[Part] = field(default_factory=list)
     lines: list[tuple[str, np.ndarray]] = field(default_factory=list)    # (style, Nx2 polyline)
     hole_outlines: list[np.ndarray] = field(default_factory=list)

@@ -143,9 +143,10 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
              for s, shape in roots.items() if s.kind == "solid"}
     near = _Near(roots, loops, d.cuts)
     explained: set = set()          # parts whose emptiness a warning already explains
+    owner_areas: dict = {}          # a solid's final area, taken once for all its holes
     for cut in d.cuts:
         tick(cut.hole)
-        if _check_hole(d, cut, roots, sink, near.local) == "W0503":
+        if _check_hole(d, cut, roots, sink, near.local, owner_areas) == "W0503":
             explained.add(_part_of(cut.owner, roots))
     for s, shape in roots.items():
         if s.kind == "solid":
@@ -492,12 +493,16 @@ def _allowed(a: Structure, b: Structure) -> bool:
     return False
 
 
+STACKED = 0.25          # of the smaller part's area: a larger overlap is parts laid on each other
+
+
 def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
     """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
     by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
     place (two gears placed closer than their centre distance: their teeth interpenetrate).
-    A part lying wholly on another is taken as stacked (a gear drawn on its mounting plate)
-    and not warned.  Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
+    Parts whose overlap covers more than :data:`STACKED` of the smaller one are taken as laid
+    one on the other in the assembly view (a gear on its mounting plate, a clock's hands on
+    each other) and not warned: parts meant to mesh or touch collide at their rims.  Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
     parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
     if len(parts) < 2:
         return
@@ -510,8 +515,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
         area = _area(common)
         if area <= MIN_AREA or _allowed(a, b):
             continue
-        if area >= (1 - 1e-6) * min(_area(sa), _area(sb)):
-            continue              # one part wholly on the other: stacked (a gear on its plate)
+        if area > STACKED * min(_area(sa), _area(sb)):
+            continue              # laid one on the other (a gear on its plate, clock hands)
         depth = _depth(common, boxes[i], boxes[j])
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
         sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
@@ -778,9 +783,12 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
     return covered
 
 
-def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None) -> str | None:
+def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
+                owner_areas: dict | None = None) -> str | None:
     """W0501-W0503 for one cut; ``local(part, region)``: the part's final shape near
-    ``region`` (:class:`_Near`), else the whole final shape is intersected."""
+    ``region`` (:class:`_Near`), else the whole final shape is intersected;
+    ``owner_areas``: the owners' final areas by structure, filled as they are taken (a plate's
+    area is O(its vertices): once per hole, it made 5,000 holes quadratic, issue 38)."""
     h, s = cut.hole, cut.owner
     hole_shape = d.shapes.get(h)
     whole = _area(hole_shape)
@@ -794,7 +802,11 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None) -> str
                                   f"`CenterInside({h.name}, self)`), or declare it in the solid "
                                   "it should cut")
         return
-    if before > 0 and _area(d.shapes.get(s)) <= max(1e-9, 1e-6 * before):
+    if owner_areas is None:
+        owner_areas = {}
+    if before > 0 and s not in owner_areas:
+        owner_areas[s] = _area(d.shapes.get(s))
+    if before > 0 and owner_areas[s] <= max(1e-9, 1e-6 * before):
         sink.warning("W0503", f"hole `{h.path}` removes all of solid `{s.path}`", h.span,
                      hint=f"make the hole smaller than `{s.path}` or move it so that material "
                           "is left around it")

@@ -2,21 +2,21 @@
 keeps the geometry checks (:mod:`.checks`) O(n log n) in the number of holes.
 
 * :func:`box_pairs`: the pairs of axis-aligned boxes that overlap (each grown by a pad), from a
-  k-d tree over the box centres (``scipy.spatial.cKDTree``): two boxes can overlap only when
+  uniform grid over the box centres (:class:`_Grid`): two boxes can overlap only when
   their centres are within the sum of their half diagonals, so the boxes up to four times
-  the median half diagonal are paired by one ``query_pairs`` at twice the largest of them, and
+  the median half diagonal are paired by one grid query at twice the largest of them, and
   the larger ones (the outline of a plate, a few long slots) are treated the same way among
-  themselves and queried against the small ones' tree; the candidates are then tested exactly.
+  themselves and queried against the small ones' grid; the candidates are then tested exactly.
 * :func:`close_pairs`: the (vertex, segment) pairs of different features closer than a
   distance, with the exact point-segment distance and the foot of the perpendicular: the
   minimum distance between two non-crossing polygon boundaries is the least of these (it is
-  reached at a vertex of one of them).  A k-d tree over the vertices is searched around each
-  segment's midpoint, within half the segment's length plus the distance.
+  reached at a vertex of one of them).  A grid over the vertices is searched in each
+  segment's bounding box grown by the distance.
 
 Small inputs (at most :data:`SMALL_BOXES` boxes, :data:`SMALL_VERTS` vertices) are measured
-without SciPy: every pair of boxes, and each segment against the vertices in its y band (found
-by binary search in the vertices sorted by y).  SciPy is imported only above that, so a cold
-``aidl check`` of an ordinary part does not pay for its import.
+more simply: every pair of boxes, and each segment against the vertices in its y band (found
+by binary search in the vertices sorted by y).  Neither path imports SciPy (its k-d tree cost
+a cold ``aidl check`` of a 400-hole plate +1,229 M instructions to import, issue 38).
 """
 from __future__ import annotations
 
@@ -33,9 +33,63 @@ def _median(a) -> float:
     return float(a[k]) if len(a) % 2 else float((a[k - 1] + a[k]) / 2)
 
 
-def _kdtree(points):
-    from scipy.spatial import cKDTree      # imported only for large inputs (see above)
-    return cKDTree(points)
+class _Grid:
+    """Points (n x 2) in a uniform grid of square cells of side ``cell``, sorted row by row
+    (key ``row * columns + column``), so that the points whose cells meet a box are one slice
+    of the sorted points per row of cells: a box query costs a binary search per row it
+    spans and the points it finds, whatever the spread of the points (NumPy only)."""
+
+    def __init__(self, P, cell: float):
+        self.P = P = np.asarray(P, dtype=float).reshape(-1, 2)
+        lo, hi = P.min(axis=0), P.max(axis=0)
+        # at most 2**20 cells a side: the keys fit int64 and a query spans few rows
+        self.h = h = max(float(cell), float((hi - lo).max()) / 2 ** 20, 1e-9)
+        self.lo = lo
+        ij = np.floor((P - lo) / h).astype(np.int64)
+        self.nx, self.ny = int(ij[:, 0].max()) + 1, int(ij[:, 1].max()) + 1
+        key = ij[:, 1] * self.nx + ij[:, 0]
+        self.order = np.argsort(key, kind="stable")
+        self.keys = key[self.order]
+
+    def in_boxes(self, qlo, qhi) -> tuple[np.ndarray, np.ndarray]:
+        """``(q, p)``: every point ``p`` inside box ``q`` (``qlo[q]`` to ``qhi[q]``, edges
+        included), in the order of the queries."""
+        qlo = np.asarray(qlo, dtype=float).reshape(-1, 2)
+        qhi = np.asarray(qhi, dtype=float).reshape(-1, 2)
+        with np.errstate(invalid="ignore", over="ignore"):
+            a = np.floor((qlo - self.lo) / self.h)
+            b = np.floor((qhi - self.lo) / self.h)
+        lim = np.array([self.nx - 1, self.ny - 1], dtype=float)
+        hit = np.all((b >= 0) & (a <= lim), axis=1)
+        qs = np.flatnonzero(hit)
+        a = np.clip(a[qs], 0, lim).astype(np.int64)
+        b = np.clip(b[qs], 0, lim).astype(np.int64)
+        rows = b[:, 1] - a[:, 1] + 1
+        total = int(rows.sum())
+        none = (np.zeros(0, np.intp), np.zeros(0, np.intp))
+        if not total:
+            return none
+        k = np.repeat(np.arange(len(qs)), rows)
+        row = a[k, 1] + (np.arange(total) - np.repeat(np.cumsum(rows) - rows, rows))
+        first = np.searchsorted(self.keys, row * self.nx + a[k, 0], "left")
+        cnt = np.searchsorted(self.keys, row * self.nx + b[k, 0], "right") - first
+        n = int(cnt.sum())
+        if not n:
+            return none
+        q = qs[np.repeat(k, cnt)]
+        p = self.order[np.repeat(first, cnt) + (np.arange(n) - np.repeat(np.cumsum(cnt) - cnt, cnt))]
+        x, y = self.P[p, 0], self.P[p, 1]
+        ok = (x >= qlo[q, 0]) & (x <= qhi[q, 0]) & (y >= qlo[q, 1]) & (y <= qhi[q, 1])
+        return q[ok].astype(np.intp), p[ok].astype(np.intp)
+
+    def within(self, C, r) -> tuple[np.ndarray, np.ndarray]:
+        """``(q, p)``: every point ``p`` within distance ``r[q]`` (or ``r``) of ``C[q]``."""
+        C = np.asarray(C, dtype=float).reshape(-1, 2)
+        r = np.broadcast_to(np.asarray(r, dtype=float), (len(C),))[:, None]
+        q, p = self.in_boxes(C - r, C + r)
+        d = self.P[p] - C[q]
+        ok = np.hypot(d[:, 0], d[:, 1]) <= r[q, 0]
+        return q[ok], p[ok]
 
 
 def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
@@ -55,7 +109,7 @@ def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
         cand = _candidates(c, np.hypot(h[:, 0], h[:, 1]) * (1 + 1e-6) + 1e-9, np.arange(n))
     if not len(cand):
         return np.zeros((0, 2), dtype=np.intp)
-    if n > SMALL_BOXES:                   # the tree's pairs, each once, in order
+    if n > SMALL_BOXES:                   # the grid's pairs, each once, in order
         cand = np.sort(cand, axis=1)
         key = np.sort(cand[:, 0] * n + cand[:, 1])
         key = key[np.r_[True, key[1:] != key[:-1]]]
@@ -68,7 +122,7 @@ def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
 
 def _candidates(c, R, idx) -> np.ndarray:
     """Index pairs (into the full arrays) of the boxes ``idx`` whose centres are within the sum
-    of their radii ``R``: small boxes by one k-d tree, the large ones recursively."""
+    of their radii ``R``: small boxes by one grid, the large ones recursively."""
     if len(idx) < 2:
         return np.zeros((0, 2), dtype=np.intp)
     r = R[idx]
@@ -76,18 +130,17 @@ def _candidates(c, R, idx) -> np.ndarray:
     small, big = idx[r <= cut], idx[r > cut]
     out = []
     if len(small) > 1:
-        tree = _kdtree(c[small])
-        p = tree.query_pairs(2 * float(R[small].max()), output_type="ndarray")
-        if len(p):
-            out.append(small[p])
+        rs2 = 2 * float(R[small].max())
+        q, p = _Grid(c[small], rs2).within(c[small], rs2)
+        keep = q < p                      # each pair once, as (i, j) with i before j
+        if keep.any():
+            out.append(np.column_stack([small[q[keep]], small[p[keep]]]))
     if len(big):
         if len(small):
-            tree = _kdtree(c[small])
             rs = float(R[small].max())
-            for i in big:                 # few: the recursion halves them at least
-                js = tree.query_ball_point(c[i], float(R[i]) + rs, return_sorted=False)
-                if js:
-                    out.append(np.column_stack([np.full(len(js), i), small[np.asarray(js)]]))
+            q, p = _Grid(c[small], 2 * rs).within(c[big], R[big] + rs)
+            if len(q):
+                out.append(np.column_stack([big[q], small[p]]))
         if len(big) == len(idx):          # all alike in size but spread: no smaller set
             ii, jj = np.triu_indices(len(big), 1)
             out.append(np.column_stack([big[ii], big[jj]]))
@@ -113,7 +166,7 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
     if len(V) <= SMALL_VERTS and len(A) <= SMALL_VERTS:
         s, v = _band_pairs(V, A, B, dist)
     else:
-        s, v = _tree_pairs(V, A, B, dist)
+        s, v = _grid_pairs(V, A, B, dist)
     if not len(s):
         return empty
     keep = vfeat[v] != sfeat[s]
@@ -148,28 +201,14 @@ def _band_pairs(V, A, B, dist):
     return s[ok], v[ok]
 
 
-def _tree_pairs(V, A, B, dist):
-    """Candidate (segment, vertex) pairs from a k-d tree over the vertices, searched around
-    each segment's midpoint within half its length plus ``dist``."""
-    mid = (A + B) / 2
+def _grid_pairs(V, A, B, dist):
+    """Candidate (segment, vertex) pairs from a grid over the vertices: the vertices in each
+    segment's bounding box grown by ``dist`` (cells of the median segment's length, at least
+    ``dist``)."""
     L = np.hypot(*(B - A).T)
-    cut = max(4 * _median(L), 1e-9)
-    short, long_ = np.flatnonzero(L <= cut), np.flatnonzero(L > cut)
-    tree = _kdtree(V)
-    si, vi = [], []
-    if len(short):
-        m = _kdtree(mid[short]).sparse_distance_matrix(
-            tree, dist + float(L[short].max()) / 2, output_type="ndarray")
-        si.append(short[m["i"]])
-        vi.append(m["j"].astype(np.intp))
-    for s in long_:                       # long edges (an outline's sides): one query each
-        js = tree.query_ball_point(mid[s], dist + float(L[s]) / 2, return_sorted=False)
-        if js:
-            si.append(np.full(len(js), s, dtype=np.intp))
-            vi.append(np.asarray(js, dtype=np.intp))
-    if not si:
-        return np.zeros(0, np.intp), np.zeros(0, np.intp)
-    return np.concatenate(si), np.concatenate(vi)
+    q, p = _Grid(V, max(_median(L), dist, 1e-9)).in_boxes(
+        np.minimum(A, B) - dist, np.maximum(A, B) + dist)
+    return q, p
 
 
 def boundary(loops, fid: int):

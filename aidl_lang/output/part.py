@@ -91,6 +91,8 @@ class Stroke:
 
 @dataclass
 class Output:
+    """What the writers get: exact part outlines and engraving strokes (mm)."""
+
     parts: list[PartOutline] = field(default_factory=list)
     engrave: list[Stroke] = field(default_factory=list)
     title: str = ""
