@@ -31,6 +31,7 @@ solid opener {
             }
         }
         AlignCenterY(slots, grip)
+        slots.s[0].center.x == grip.bb.left + 0.45 * length
     }
 
     # the opening: a round hole merged with a rectangular notch whose straight

@@ -49,6 +49,7 @@ solid key {
             g = Line((x0 + 2, 0), (x0 + blade_length - 2, 0))
         }
         AlignCenterY(groove, shank)
+        groove.bb.left == shank.bb.left + 2
     }
 
     # bow | shoulder | blade, all on one axis

@@ -44,6 +44,7 @@ assembly kit {
             adjust = slot_hole(length=24 mm, width=screw + 0.5 mm, rotation=90 deg,
                                cx=width / 4 + j * 14 mm)
             AlignCenterY(adjust, body)
+            adjust.bb.center_x == body.center.x + width / 4 + j * 14 mm
         }
 
         tab = rounded_tab(width=24 mm, length=28 mm, hole_d=6 mm, cy=height / 2 - 2 mm)

@@ -38,4 +38,5 @@ solid tag {
     AlignCenterX(lanyard, card)
     lanyard.bb.top == card.bb.top - 4
     AlignCenterX(face, card)
+    face.border.center.y == card.center.y - 2
 }

@@ -47,5 +47,7 @@ solid ruler {
     Coincident(metric.tick[0].start, bar.top)
     imperial.tick[0].start.x == metric.tick[0].start.x
     Coincident(imperial.tick[0].start, bar.bottom)
+    # the hanging hole is centered in the tail
     AlignCenterY(hang, bar)
+    hang.bb.center_x == bar.bb.right - tail / 2
 }

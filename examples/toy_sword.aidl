@@ -24,6 +24,7 @@ solid sword {
             groove = Line((0, 20), (0, blade_length - blade_width - 15))
         }
         AlignCenterX(fuller, edge)
+        fuller.bb.bottom == edge.bb.bottom + 20
     }
 
     solid guard {

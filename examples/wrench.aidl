@@ -56,6 +56,9 @@ solid wrench {
     # the jaw's bottom is the open head's center; the star is centered in the ring head
     Distance(jaw_opening.gap.start, open_end.head.center, 0.5 * jaw)
     Angle(handle.bar.edges[3], jaw_opening.gap.spine, 90 deg - tilt)
+    OnLine(open_end.head.center, jaw_opening.gap.spine)
     CenterInside(socket, ring_end.head)
+    # the sizes on the handle's axis, the open one 1.6 head radii from its head
     AlignCenterY(marks, handle)
+    marks.open_size.position.x == open_end.head.center.x + 1.6 * jaw_r
 }

@@ -41,3 +41,12 @@ def test_telephone_edit_keeps_constraints():
     worst = max((r for _, r in constraint_residuals(edited.model)), default=0.0)
     assert worst < 1e-6
     assert area(render_model(edited.model)) != pytest.approx(area(render_model(base.model)))
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=[p.stem for p in EXAMPLES])
+def test_no_example_has_a_sliding_feature(path):
+    """W0404: every hole and drawing of a bundled example is placed by its constraints on
+    both axes, not by its starting position alone (what `aidl check` reports)."""
+    import aidl_lang
+    r = aidl_lang.compile(path=path)
+    assert [d.message for d in r.find_redundant() if d.code == "W0404"] == []
