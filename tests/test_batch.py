@@ -21,6 +21,15 @@ from aidl_lang.batch.store import read_jsonl, read_rows
 ROOT = Path(__file__).resolve().parent.parent
 TIMEOUT = 4.0           # the per-program time-out of these batches (the runaway needs minutes)
 
+# within --budget 0.02's loop cap (200 items a range) but past its evaluation steps: E0304
+OVER_BUDGET = """solid s {
+    for i in range(150) {
+        for j in range(150) {
+            for k in range(150) { x = 1 }
+        }
+    }
+}
+"""
 RUNAWAY = """solid s {
     for i in range(10000) {
         for j in range(10000) { x = 1 }
@@ -68,7 +77,7 @@ def _corpus(folder: Path) -> list[str]:
     bracket = (ROOT / "examples" / "bracket.aidl").read_text()
     for b in (2, 3, 5, 6):
         rows.append({"id": f"bracket-bolts-{b}", "source": bracket, "set": {"bolts": b}})
-    rows.append({"id": "over-budget", "source": RUNAWAY, "budget": 0.02})
+    rows.append({"id": "over-budget", "source": OVER_BUDGET, "budget": 0.02})
     rows.append({"id": "runaway", "source": RUNAWAY, "budget": 100})
     jsonl = folder / "more.jsonl"
     jsonl.write_text("".join(json.dumps(r) + "\n" for r in rows))
