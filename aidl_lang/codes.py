@@ -291,8 +291,9 @@ A structure inside a part (a hole, a drawing, a solid child) can move relative t
 no constraint places it along x or y (or both), only its starting position does, so a changed
 value or a small edit can leave it anywhere (a row of holes whose height nothing ties to the
 plate). The warning names the feature, the free direction and the part; place it with a
-constraint in its parent (`AlignCenterY(bits, plate)`, `Below(labels, bits, gap=4)`), or
-`Fixed(bits)` if it is where it belongs. Freedom of a whole part (where it sits on the sheet)
+constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, plate)`,
+`Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
+the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
 (harmless)".
 
@@ -501,6 +502,14 @@ before code (`aidl docs comments`); if it was meant as a comment, write `#`.
 
     r = Rectangle(center=(0, 0), width=80 // 3, height=10)   # 26 mm: write 80 / 3
     w = 80 // width        # floor division by `width`; a comment is `# width`
+"""),
+    "W0107": ("a plain number read as radians", """
+`sin`, `cos` and `tan` read a plain number as radians, unlike arguments that are angles
+(`rotation=30` is 30 degrees). A plain number past a whole turn (2 pi) there is almost surely
+meant as degrees: labels every 10 degrees written `cos(i * 10)` land at 10 rad = 573 deg, scattered
+round the circle. Write the unit: `cos(i * 10 deg)`. Warned once per call.
+
+    x = 40 * cos(i * 10)       # radians: write cos(i * 10 deg)
 """),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the

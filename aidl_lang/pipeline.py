@@ -426,9 +426,10 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
         sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
                      f"`{part.path if part is not None else t.path}`: only its starting "
                      "position places it there", t.span,
-                     hint=f"place it with a constraint in its parent (e.g. {ex}, or "
-                          f"`Fixed({name})` if it is where it belongs); where the whole part "
-                          "sits may stay free, that is harmless")
+                     hint=f"tie it to a shape of its part with a constraint in the parent "
+                          f"(e.g. {ex}); `Fixed({name})` holds it only where the part is "
+                          "fixed too; where the whole part sits may stay free, that is "
+                          "harmless")
     return sl
 
 

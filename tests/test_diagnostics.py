@@ -1,6 +1,7 @@
 """Every diagnostic code the compiler can produce: the code and its exact span for a small
 program, "did you mean" suggestions, and the hints that name where a fix goes."""
 import json
+from pathlib import Path
 import subprocess
 import sys
 
@@ -867,3 +868,21 @@ def test_range_and_geometry_caps_grow_with_the_budget():
     assert "more than 50000 geometry objects" in c.sink.errors()[0].message
     c = compile_source(many, "g.aidl", do_solve=False, budget=DEFAULT_BUDGET.scaled(2))
     assert not c.sink.errors(), [x.message for x in c.sink.items]
+
+
+def test_W0107_a_plain_number_past_a_turn_in_cos_is_radians():
+    """Labels every 30 degrees written `cos(i * 30)` (a model's protractor wrote this): one
+    warning per call, located at the call, naming the value in degrees; `deg` and plain radians
+    under a turn (the stdlib's involutes) are silent."""
+    from aidl_lang.pipeline import compile_source
+    src = ("units mm\nsolid dial {\n    disc = Circle(center=(0, 0), radius=50)\n"
+           "    drawing ticks {\n        for i in range(12) {\n"
+           "            t = Line((40 * cos(i * 30), 0), (45 * cos(i * 30 deg), "
+           "45 * sin(pi / 6)))\n        }\n    }\n}\n")
+    c = compile_source(src, "d.aidl")
+    ws = [d for d in c.sink.items if d.code == "W0107"]
+    assert [(d.span.line, d.span.col) for d in ws] == [(6, 28)]
+    assert "reaches 30 (1718.87 deg)" in ws[0].message and "cos(i * 10 deg)" in ws[0].hint
+    c = compile_source('import "std/gears.aidl"\nsolid g { a = spur_gear(teeth=12) }\n',
+                       str(Path(__file__).parent.parent / "examples" / "g.aidl"))
+    assert not [d for d in c.sink.items if d.code == "W0107"]

@@ -405,6 +405,8 @@ class Calls:
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):
                 raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
+            if q[0].dim == NUM:
+                self._plain_radians(nm, q[0].const(), sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm in ("asin", "acos", "atan"):
             self._dimless(q[0], nm, sp)
@@ -443,6 +445,22 @@ class Calls:
     def _dimless(self, q: Q, nm, sp):
         if q.dim != NUM:
             raise EvalError("E0109", f"`{nm}` needs a plain number, got a {dim_name(q.dim)}", sp)
+
+    def _plain_radians(self, nm: str, c, sp) -> None:
+        """W0107 once per call site: ``sin``/``cos``/``tan`` of a plain number past a whole turn
+        (2 pi), which reads radians where a degree was almost surely meant (``cos(i * 10)``
+        for labels every 10 degrees: 10 rad is 573 deg)."""
+        if c is None or abs(c) <= 2 * math.pi + 1e-9:
+            return
+        said = self.__dict__.setdefault("_radians_said", set())
+        if sp in said:
+            return
+        said.add(sp)
+        self.sink.warning("W0107", f"`{nm}` reads a plain number as radians, and this one "
+                          f"reaches {_fmt_num(c)} ({_fmt_num(math.degrees(c))} deg)", sp,
+                          hint=f"an angle in degrees takes `deg`: `{nm}(i * 10 deg)`, "
+                               f"`{nm}(30 deg)`; a plain number is only degrees where an "
+                               "argument is an angle (rotation=, angle=)")
 
     def _q(self, v, sp) -> Q:
         if isinstance(v, bool):

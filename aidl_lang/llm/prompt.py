@@ -42,7 +42,8 @@ constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
 (`//` after an operand is floor division). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
-number is a length in the file unit or an angle in degrees.
+number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
+radians: write `cos(i * 10 deg)`).
 
 Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
 starting guesses that the solver moves to satisfy the constraints. Relate parts with
