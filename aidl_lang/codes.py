@@ -455,17 +455,18 @@ length of the mark inside the text. Move the text clear
         zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
     }
 """),
-    "W0514": ("hole touches the outer edge", """
-A hole lies wholly inside its solid (no part of it is drawn past the edge) and yet touches the
-outer edge: the wall between them has zero width, so the hole opens onto the edge, as a notch
-(flush along a side: a module's cut-out drawn against the board's edge) or pinched at a point
-(a circle tangent to the edge). The warning names the hole and says how long the contact is.
-Move the hole inward to leave material around it; if a notch is meant, let the hole run past
-the edge (by 1 mm, say), which says so.
+    "W0514": ("hole only touches the outer edge", """
+A hole lies wholly inside its solid (no part of it is drawn past the edge) and only touches the
+outer edge: at a point (a circle tangent to the edge, a window's corner on the roof line) or
+along less than the minimum wall (0.5 mm unless `--min-wall`). The wall between them has zero
+width, so the hole is pinched open onto the edge: neither a closed hole nor a clean notch. The
+warning names the hole and says how long the contact is. Move the hole inward to leave
+material around it, or out past the edge to make a notch. A hole flush with the edge along more
+than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and is not warned.
 
     solid board {
         body = Rectangle(center=(0, 0), width=60, height=40)
-        hole module { m = Rectangle(center=(20, 10), width=20, height=20) }   # flush: x to 30
+        hole bolt { c = Circle(center=(-20, 10), radius=10) }   # tangent to two edges
     }
 """),
     "W0515": ("tiny void between merged shapes", """

@@ -923,16 +923,24 @@ solid board {
 }"""
 
 
-def test_W0514_a_hole_flush_with_the_edge_touches_it(compile_text):
-    # the module's square x 10..30, y 0..20 is flush with the right and top edges: 20 + 20 mm;
-    # the bolt's circle (r = 10 at (-20, 10)) touches the left and top edges at points
-    module, bolt = warnings(compile_text, BOARD % "20", "W0514")
-    assert module.span.line == 4 and "`board.module`" in module.message
-    assert "along 40.00 mm" in module.message
-    assert bolt.span.line == 7 and "at a point" in bolt.message
-    # a notch drawn past the edge (x 11..31) is meant: only the bolt is reported
+def test_W0514_a_hole_that_only_touches_the_edge(compile_text):
+    # the bolt's circle (r = 10 at (-20, 10)) touches the left and top edges at points: a
+    # pinched wall; the module's square x 10..30, y 0..20 is flush with the right and top
+    # edges along 20 + 20 mm: a notch (a connector cut-out, a slot), not warned
+    (bolt,) = warnings(compile_text, BOARD % "20", "W0514")
+    assert bolt.span.line == 7 and "`board.bolt`" in bolt.message and "at a point" in bolt.message
+    # a notch drawn past the edge (x 11..31): the same
     (w,) = warnings(compile_text, BOARD % "21", "W0514")
     assert "`board.bolt`" in w.message
+    # a wedge whose tip meets the right edge (x = 30) along 0.3 mm, under the 0.5 mm wall
+    edge = """units mm
+solid board {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h { m = Polygon([(20, 10), (30, 10), (30, %s), (20, 15)]) }
+}"""
+    (w,) = warnings(compile_text, edge % "10.3", "W0514")
+    assert "along only 0.30 mm" in w.message
+    assert not warnings(compile_text, edge % "11", "W0514")        # 1 mm open: a notch
 
 
 VOIDS = """units mm

@@ -166,7 +166,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             tick(s)
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
             covered = _report_openings(a, s, min_wall, sink)
-            _check_flush(d, s, shape, a, by_part.get(s, []), sink)
+            _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
             _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
             tick(s)
             if min_wall > 0:
@@ -425,11 +425,16 @@ def _perimeter(cs) -> float:
                      for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())))
 
 
-def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, sink) -> None:
+def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: float,
+                 sink) -> None:
     """W0514 for each hole of part ``s`` that lies wholly inside its solid (no part of it
-    outside: not drawn as a notch) and yet touches the outer edge (:func:`_analyse`'s
-    notches): a wall of zero width, so the hole opens onto the edge.  The figure is the length
-    of the contact, ``(P(filled) + P(hole) - P(filled - hole)) / 2`` over perimeters."""
+    outside: not drawn as a notch) and yet only touches the outer edge (:func:`_analyse`'s
+    notches): at a point, or along less than ``min_wall`` mm (at least :data:`MIN_WALL`), a
+    wall of zero width that pinches the hole open onto the edge (a round hole tangent to the
+    edge, a window's corner on the roof line).  A hole flush with the edge along more than
+    that is a notch, as asked for a connector cut-out or a cross-halving slot, and is left
+    alone.  The figure is the length of the contact, ``(P(filled) + P(hole) - P(filled -
+    hole)) / 2`` over perimeters."""
     if not a.notches:
         return
     feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
@@ -442,8 +447,10 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, sink) -> N
         filled = shape + c.region
         contact = max(0.0, (_perimeter(filled) + _perimeter(c.region)
                             - _perimeter(filled - c.region)) / 2)
+        if contact >= max(min_wall, MIN_WALL):
+            continue                       # flush along a side: a notch
         x0, y0, x1, y1 = c.region.bounds()
-        where = "at a point" if contact < 2 * TOUCH else f"along {contact:.2f} mm"
+        where = "at a point" if contact < 2 * TOUCH else f"along only {contact:.2f} mm"
         sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
                      f"outer edge {where} (a wall of zero width), so it opens onto the edge "
                      f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
