@@ -482,6 +482,18 @@ out as a sliver. The warning gives its area, width, length and place. Make the s
         bottom = Rectangle(center=(0, -6), width=30, height=2)
     }
 """),
+    "W0516": ("engraving along the cut edge", """
+An engraved mark lies along the part's outline (within 0.05 mm) over more than a third of it:
+the laser engraves exactly where it cuts, so the mark is lost in the cut (a protractor's 0 and
+180 degree ticks drawn on its straight edge, a border drawn on the outline). The warning names
+the mark, the part and how much of the mark lies on the outline. Move the mark inside, or leave
+it out: the cut already draws the edge.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        drawing marks { edge = Line((-30, -20), (30, -20)) }   # on the bottom edge
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

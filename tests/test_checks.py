@@ -6,7 +6,8 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
-               "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0402"}
+               "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0516",
+               "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -941,6 +942,24 @@ solid board {
     (w,) = warnings(compile_text, edge % "10.3", "W0514")
     assert "along only 0.30 mm" in w.message
     assert not warnings(compile_text, edge % "11", "W0514")        # 1 mm open: a notch
+
+
+def test_W0516_a_tick_drawn_on_the_cut_edge(compile_text):
+    """A half-disc protractor whose 0 deg tick lies on its straight (cut) edge: 100% of the
+    tick on the outline; the 90 deg tick, perpendicular to the rim, touches it at one end only
+    (1 of 9 samples) and is silent."""
+    src = """units mm
+solid protractor {
+    disc = Circle(center=(0, 0), radius=80)
+    hole lower { cut = Rectangle(center=(0, -41), width=164, height=82) }
+    drawing scale {
+        tick0 = Line((80, 0), (72, 0))
+        tick90 = Line((0, 80), (0, 72))
+    }
+}"""
+    (w,) = warnings(compile_text, src, "W0516")
+    assert "`protractor.scale.tick0`" in w.message and "100% of it" in w.message
+    assert w.span.line == 6
 
 
 VOIDS = """units mm

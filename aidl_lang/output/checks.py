@@ -1355,6 +1355,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
     for part, geoms in by_part.items():
         shp = roots[part]
         pts = _samples([it for _, items in geoms for it in items])
+        _check_on_cut(part, shp, geoms, pts, (loops or {}).get(part), sink)
         if _all_on_material(shp, pts, (loops or {}).get(part)):
             continue
         grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
@@ -1382,6 +1383,34 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                      g.span,
                      hint="move or shrink the drawing so that it lies on the material (constrain "
                           "it, e.g. `Inside(label, body)`), or clear the hole it crosses")
+
+
+ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
+
+
+def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> None:
+    """W0516 for each engraved geometry of ``part`` of which more than :data:`ON_CUT` of the
+    sample points (at least 3) lie within :data:`ENGRAVE_TOL` of the part's outline: a mark
+    drawn along the cut edge (a protractor's 0 and 180 deg ticks on its straight edge), which
+    the laser engraves over the cut, so it is not seen.  ``pts``: the samples of ``geoms`` in
+    order (:func:`_samples`)."""
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    on = _within(pts, _edges(loops), ENGRAVE_TOL)
+    if not on.any():
+        return
+    at = 0
+    for g, items in geoms:
+        n = sum(_n_samples(it) for it in items)
+        k = int(on[at:at + n].sum())
+        at += n
+        if k < 3 or k <= ON_CUT * n:
+            continue
+        sink.warning("W0516", f"engraving `{g.label}` runs along the cut edge of `{part.path}` "
+                     f"({_pct(float(k), float(n))} of it lies on the outline): the laser "
+                     "engraves over the cut, so the mark is not seen", g.span,
+                     hint="move the mark inside the outline (start it at least its line "
+                          "width from the edge) or leave it out; the cut already draws the edge")
 
 
 def _signed(poly) -> float:
