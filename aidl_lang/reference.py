@@ -287,8 +287,8 @@ def _entry_topic(e: Entry) -> Topic:
         for a in v:
             if a.kw_only:
                 continue
-            ps.append(a.name if a.required else f"{a.name}={a.default_text}")
-        lines.append(f"  {e.name}({', '.join(ps)})")
+            ps.append(a.name if a.required or e.varargs else f"{a.name}={a.default_text}")
+        lines.append(f"  {e.name}({', '.join(ps + ['...'] * e.varargs)})")
     kw = [a for v in e.variants for a in v if a.kw_only]
     for a in dict((a.name, a) for a in kw).values():
         lines.append(f"  every form also takes `{a.name}={a.default_text}` (keyword only): "

@@ -52,6 +52,9 @@ class Entry:
     variants: list[tuple[Arg, ...]]
     doc: str
     members: dict[str, str] = field(default_factory=dict)   # member -> type (primitives)
+    # more positional arguments than the variant has join its last positional one, as a list:
+    # ``Rigid(a, b, c, d)`` binds b = [b, c, d]
+    varargs: bool = False
 
     def signature(self, variant: tuple[Arg, ...] | None = None) -> str:
         vs = [variant] if variant is not None else self.variants
@@ -65,6 +68,8 @@ class Entry:
                     parts.append(f"{a.name}: {a.type}")
                 else:
                     parts.append(f"{a.name}: {a.type} = {a.default_text}")
+            if self.varargs:
+                parts.insert(sum(not a.kw_only for a in v), "...")
             outs.append(f"{self.name}({', '.join(parts)})")
         return "\n".join(outs)
 
@@ -115,8 +120,8 @@ def _p(*variants, doc, members=None):
     return ("primitive", [tuple(v) + (CONSTRUCTION,) for v in variants], doc, members or {})
 
 
-def _c(*variants, doc, cat="constraint"):
-    return (cat, [tuple(v) for v in variants], doc, {})
+def _c(*variants, doc, cat="constraint", varargs=False):
+    return (cat, [tuple(v) for v in variants], doc, {}, varargs)
 
 
 A = Arg
@@ -328,10 +333,10 @@ _DEFS = {
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
                             "or on each point of at."),
-    "Rigid": _c([A("a", "any"), A("b", "any", None), A("c", "any", None)],
-                cat="operation",
-                doc="shapes keep their placement to each other; a structure moves, never "
-                    "bends; lists allowed."),
+    "Rigid": _c([A("a", "any"), A("b", "any", None, "and every further argument, as a list")],
+                cat="operation", varargs=True,
+                doc="any number of shapes, structures (drawings too) or lists of them keep "
+                    "their placement to each other; a structure moves, never bends."),
     "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
                        doc="hole a may be refilled by b (no W0501)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
@@ -511,8 +516,7 @@ UNITS_LENGTH = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "i
                 "ft": 304.8}
 UNITS_ANGLE = {"deg": 3.141592653589793 / 180.0, "rad": 1.0}
 
-ENTRIES: dict[str, Entry] = {n: Entry(n, cat, variants, doc, members)
-                             for n, (cat, variants, doc, members) in _DEFS.items()}
+ENTRIES: dict[str, Entry] = {n: Entry(n, *spec) for n, spec in _DEFS.items()}
 
 
 def lookup(name: str) -> Entry | None:
@@ -636,7 +640,7 @@ def _bind_variant(entry: Entry, npos: int, kwnames: list[str]):
         ren = rename_args(entry, v, npos, kwnames)
         kwnames_c = [ren[k] for k in kwnames]
         npos_max = sum(not a.kw_only for a in v)
-        if npos > npos_max:
+        if npos > npos_max and not entry.varargs:
             best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
             continue
         bound = set(names[:npos])

@@ -401,6 +401,72 @@ def test_rigid_takes_structures_and_shapes(compile_text):
     assert d.span.line == 3 and d.code == "E0108", d.message
 
 
+FIVE_HOLES = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=60)
+    Fixed(body)
+    hole a { c = Circle(center=(10, 0), radius=3) }
+    hole b { c = Circle(center=(-10, 0), radius=3) }
+    hole c { c = Circle(center=(0, 10), radius=3) }
+    hole d { c = Circle(center=(0, -10), radius=3) }
+    hole e { c = Circle(center=(20, 20), radius=3) }
+    %s
+    a.c.center == (15, 5)
+}
+"""
+_STARTS = {"a": (10, 0), "b": (-10, 0), "c": (0, 10), "d": (0, -10), "e": (20, 20)}
+
+
+def test_rigid_takes_any_number_of_arguments_and_moves_them_as_one_body(compile_text):
+    """Issue 35 §3: `Rigid(a, b, c, d, e)` was E0104 "takes at most 3 arguments"; five
+    holes now move as one body: hole a pinned 5 mm right and 5 mm up carries the other four by
+    the same offset (without Rigid they stay where they started)."""
+    free = compile_text(FIVE_HOLES % "")
+    assert free.ok
+    assert _pt(free, "plate.b.c.center") == pytest.approx((-10, 0), abs=1e-9)
+    c = compile_text(FIVE_HOLES % "Rigid(a, b, c, d, e)")
+    assert c.ok, [d.message for d in c.sink.items]
+    for k, (x, y) in _STARTS.items():
+        assert _pt(c, f"plate.{k}.c.center") == pytest.approx((x + 5, y + 5), abs=1e-9), k
+    # the program says it too, in its own asserts (E0405 if one were false)
+    asserts = "Rigid(a, b, c, d, e)\n" + "".join(
+        f"    assert {k}.c.center.x == {x + 5} and {k}.c.center.y == {y + 5}\n"
+        for k, (x, y) in _STARTS.items())
+    c = compile_text(FIVE_HOLES % asserts)
+    assert c.ok and not errors(c)
+    wrong = compile_text(FIVE_HOLES % (asserts + "    assert e.c.center.x == 20\n"))
+    assert [d.code for d in errors(wrong)] == ["E0405"]
+
+
+def test_rigid_of_four_checks_and_mixes_structures_lists_shapes_and_a_drawing(compile_text):
+    """`Rigid(a, b, c, d)` binds in the checker and the interpreter (no E0104); a drawing, a
+    list and a shape are arguments like any other: the engraved text moves with the holes."""
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(FIVE_HOLES % "Rigid(a, b, c, d)", "t.aidl", do_solve=False)
+    assert not errors(c), [d.message for d in c.sink.items]
+    src = FIVE_HOLES.replace("    %s", "    drawing t { m = Text(\"X\", (30, 0), size=5) }\n"
+                             "    mark = Circle(center=(-30, 20), radius=1)\n"
+                             "    Rigid(a, [b, c], t, d, mark, e)")
+    c = compile_text(src)
+    assert c.ok, [d.message for d in c.sink.items]
+    assert _pt(c, "plate.e.c.center") == pytest.approx((25, 25), abs=1e-9)
+    assert _pt(c, "plate.mark.center") == pytest.approx((-25, 25), abs=1e-9)
+    assert _pt(c, "plate.t.m.position") == pytest.approx((35, 5), abs=1e-9)
+
+
+def test_rigid_keyword_mistakes_are_located(compile_text):
+    """Extra positional arguments do not hide a wrong keyword: E0105 points at it; a name
+    given both ways is E0104 at the call."""
+    c = compile_text(FIVE_HOLES % "Rigid(a, b, c, d, bodyy=e)")
+    (d,) = errors(c)
+    assert d.code == "E0105" and "`Rigid` has no argument `bodyy`" in d.message
+    assert (d.span.line, d.span.col) == (9, 23)
+    assert "Rigid(a: any, b: any = none, ...)" in d.hint
+    c = compile_text(FIVE_HOLES % "Rigid(a, b, c, b=d)")
+    (d,) = errors(c)
+    assert d.code == "E0104" and "argument `b` given twice" in d.message
+    assert d.span.line == 9
+
+
 # ---------------------------------------------------------------- a law: the grid is a lattice
 from hypothesis import given, settings, strategies as st  # noqa: E402
 

@@ -198,6 +198,17 @@ async def test_signature_help_forms_and_active_argument(client: LanguageClient, 
     assert signature.signature_help(src2, 0, 3) is None                  # not in a call
 
 
+def test_signature_help_of_rigid_keeps_b_active_past_its_place():
+    """`Rigid(a, b, ...)` gathers every further argument into b: the fifth argument still
+    highlights b, and the label says more may follow."""
+    line = "    Rigid(p, q, r, s, "
+    h = signature.signature_help("solid a {\n" + line + "\n}\n", 1, len(line))
+    sig = h.signatures[h.active_signature]
+    assert sig.label == "Rigid(a: any, b: any = none, ...)"
+    a, b = sig.parameters[h.active_parameter].label
+    assert sig.label[a:b] == "b: any = none"
+
+
 @pytest.mark.asyncio(loop_scope="module")
 async def test_invalid_params_get_an_error_response(client: LanguageClient, tmp_path, monkeypatch):
     # send the raw dict (the client would refuse to build a HoverRequest without a position)

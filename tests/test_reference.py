@@ -141,7 +141,7 @@ def test_prompt_lists_every_stdlib_template_from_its_doc_comment():
         assert t.summary in line and f"-> {t.node.kind}" in line
         assert "cx=" not in line                   # said once for all
         assert ", ".join(t.members) in line
-    for needle in ("assert cond", "thickness 3 mm", "kerf 0.15 mm", "Rigid(a, b)", "Fixed(x)",
+    for needle in ("assert cond", "thickness 3 mm", "kerf 0.15 mm", "Rigid(a, b, ...)", "Fixed(x)",
                    "never turns", "holes included", "plate.body.bb"):
         assert needle in text, needle
 

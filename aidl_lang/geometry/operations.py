@@ -223,7 +223,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if kind == "AllowOverlap":
         return _allow_overlap(args["a"], args["b"])
     if kind == "Rigid":
-        return _rigid(ctx, _flat([args[k] for k in "abc" if args.get(k) is not None]))
+        return _rigid(ctx, _flat([args[k] for k in "ab" if args.get(k) is not None]))
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
         from .primitives import member

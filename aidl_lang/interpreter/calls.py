@@ -92,9 +92,14 @@ class Calls:
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
         bound = {}
         spans = {}
-        for a, v, node_a in zip(variant, args, node.args):
+        arg_spans = [a.span for a in node.args]
+        npos = sum(not a.kw_only for a in variant)
+        if len(args) > npos:             # entry.varargs: the extras join the last positional
+            args = args[:npos - 1] + [args[npos - 1:]]
+            arg_spans[npos - 1:] = [arg_spans[npos - 1].cover(arg_spans[-1])]
+        for a, v, span_a in zip(variant, args, arg_spans):
             bound[a.name] = v
-            spans[a.name] = node_a.span
+            spans[a.name] = span_a
         for k, (v, kw) in kwargs.items():
             bound[ren[k]] = v
             spans[ren[k]] = kw.value.span

@@ -71,9 +71,10 @@ copies beside the original, in the original's structure.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
-Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b)` keeps shapes
-placed relative to each other (a constraint on one moves all, by translation); `Rigid(s)`
-makes a structure move whole, never bent; `Rigid(s1, s2)` moves two structures as one body.
+Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b, ...)` keeps
+shapes placed relative to each other (a constraint on one moves all, by translation);
+`Rigid(s)` makes a structure move whole, never bent; `Rigid(s1, s2, ...)` moves any number of
+structures as one body.
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
@@ -102,11 +103,11 @@ def _sig(entry) -> str:
         for a in v:
             if a.kw_only:
                 continue
-            if a.required:
+            if a.required or entry.varargs:
                 parts.append(a.name)
             else:
                 parts.append(f"{a.name}={a.default_text}")
-        outs.append(f"{entry.name}({', '.join(parts)})")
+        outs.append(f"{entry.name}({', '.join(parts + ['...'] * entry.varargs)})")
     return " | ".join(outs)
 
 

@@ -112,6 +112,11 @@ def signature_help(src: str, line: int, character: int, path: str = "doc.aidl") 
                     params.append(("*", ""))
                 text = f"{a.name}: {a.type}" if a.required else f"{a.name}: {a.type} = {a.default_text}"
                 params.append((text, a.name))
+            if entry.varargs:            # Rigid(a, b, ...): the extras are gathered into b
+                npos = sum(not a.kw_only for a in v)
+                params.insert(npos, ("...", ""))
+                if isinstance(active, int):
+                    active = min(active, npos - 1)
             forms.append((params, entry.doc))
         title = entry.name
     elif short in R.FUNCTIONS and "." not in callee:
