@@ -141,12 +141,23 @@ class SourceRefused(Exception):
         super().__init__(message)
         self.message = message
 
+    def diagnostic(self, path: str | os.PathLike):
+        """The refusal as the ``E0004`` :class:`~aidl_lang.diagnostics.Diagnostic` every
+        command shows (``aidl check``, ``render``, ``fmt``, ``serve``), at the start of
+        ``path``, with the hint to give a regular UTF-8 file within the size limit."""
+        from .diagnostics import Diagnostic, Span
+        shown = os.fspath(path)
+        return Diagnostic("E0004", self.message, Span(shown, 1, 1, 1, 1, 0, 0),
+                          hint=f"give a regular UTF-8 .aidl file (programs and imports have "
+                               f"at most {MAX_IMPORT_BYTES} bytes)")
 
-def read_program(path: str | os.PathLike) -> str:
+
+def read_program(path: str | os.PathLike, keep_bom: bool = False) -> str:
     """The text of the main file ``path``, read the way imports are (:func:`read_import`): a
     regular file only, opened non-blocking (a FIFO or ``/dev/zero`` is refused, not waited on
     or read), at most :data:`MAX_IMPORT_BYTES` (checked before reading it whole and before
-    lexing), UTF-8 (a BOM is dropped).  A link is followed: the user named this file.  Raises
+    lexing), UTF-8 (a BOM is dropped, unless ``keep_bom``: the formatter keeps it); line
+    endings as they are.  A link is followed: the user named this file.  Raises
     :class:`SourceRefused`."""
     from .files import FileRefused, read_file
     shown = os.fspath(path)
@@ -161,4 +172,4 @@ def read_program(path: str | os.PathLike) -> str:
     except UnicodeDecodeError as e:
         raise SourceRefused(f"cannot read `{shown}`: not UTF-8 text ({e.reason} at byte "
                             f"{e.start})") from None
-    return text[1:] if text.startswith("\ufeff") else text
+    return text[1:] if text.startswith("\ufeff") and not keep_bom else text

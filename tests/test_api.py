@@ -199,6 +199,54 @@ def test_check_values_match_the_dxf(tmp_path):
                    for x, y, rr in circles), (i, cx, cy, r)
 
 
+CORNERS = """solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole corner { c = Circle(center=(0, 0), diameter=6) }
+    corners = CornerPattern(corner, body, inset=5)
+    Fixed(body)
+}
+"""
+
+# bottom_left (the original), bottom_right, top_right, top_left
+CORNER_CENTRES = [(-25.0, -15.0), (25.0, -15.0), (25.0, 15.0), (-25.0, 15.0)]
+
+
+def test_values_of_pattern_copies_give_their_geometry():
+    """A pattern copy's values are its shapes' too, like any structure's (issue 37: a
+    CornerPattern's copies gave only an origin and a box, so three of four hole centres
+    could not be read)."""
+    r = aidl_lang.compile(source=CORNERS)
+    assert r.ok, r.diagnostics
+    names = ["plate.corner"] + [f"plate.corners[{k}]" for k in (1, 2, 3)]
+    for name, (x, y) in zip(names, CORNER_CENTRES):
+        assert r.value(f"{name}.c.center").mm == pytest.approx((x, y), abs=1e-9), name
+        assert r.value(f"{name}.c.radius").mm == pytest.approx(3.0, abs=1e-9), name
+    assert [v.name for v in r.values_matching(["corners[2]"])] == [
+        "plate.corners[2].origin", "plate.corners[2].bbox", "plate.corners[2].c.center",
+        "plate.corners[2].c.radius"]
+
+
+def test_check_values_of_pattern_copies(tmp_path):
+    """`aidl check --values` prints every copy's centre and radius, as text and as JSON."""
+    f = tmp_path / "corners.aidl"
+    f.write_text(CORNERS)
+    out = aidl("check", f, "--values", "plate.corner", "plate.corners")
+    assert out.returncode == 0, out.stderr
+    got = {}
+    for ln in out.stdout.splitlines()[1:]:
+        m = re.fullmatch(r"plate\.(corners?(?:\[\d\])?)\.c\.center = \((.*), (.*)\) mm", ln)
+        if m:
+            got[m.group(1)] = (float(m.group(2)), float(m.group(3)))
+    assert got == dict(zip(["corner", "corners[1]", "corners[2]", "corners[3]"],
+                           CORNER_CENTRES))
+    assert "plate.corners[3].c.radius = 3.000 mm" in out.stdout.splitlines()
+    js = json.loads(aidl("check", f, "--json", "--values", "corners").stdout)
+    vals = {v["name"]: v["mm"] for v in js["values"]}
+    for k in (1, 2, 3):
+        assert vals[f"plate.corners[{k}].c.center"] == pytest.approx(CORNER_CENTRES[k],
+                                                                      abs=1e-9)
+
+
 def test_check_values_unknown_name_and_errors():
     out = aidl("check", PLATE, "--values", "plate.nothing_here")
     assert out.returncode == 0 and "no value matches" in out.stderr

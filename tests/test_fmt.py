@@ -321,3 +321,28 @@ def test_fmt_handles_the_deep_programs_the_compiler_handles(expr, tmp_path):
     r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "--check", str(f)],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and "E0302" not in r.stderr, r.stderr[-500:]
+
+
+def test_fmt_refuses_a_fifo_and_a_device_with_E0004_and_goes_on(tmp_path):
+    """`aidl fmt` reads a file as `aidl check` does (issue 37: it opened a FIFO and waited
+    forever, and read /dev/zero until memory ran out): each is one located E0004, the other
+    files are still formatted."""
+    import os
+    fifo = tmp_path / "fifo.aidl"
+    os.mkfifo(fifo)
+    zero = tmp_path / "zero.aidl"
+    zero.symlink_to("/dev/zero")
+    good = tmp_path / "good.aidl"
+    good.write_text("\ufeffsolid s {\r\n  c = Circle((0,0), 1)\r\n}\r\n", newline="")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", str(fifo), str(zero),
+                        str(good)], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert r.returncode == 1, r.stderr
+    for f in (fifo, zero):
+        assert f"{f}:1:1: error[E0004]: `{f}` is not a regular file" in r.stderr
+        assert f"`{f}` not formatted" in r.stderr
+    assert "Traceback" not in r.stderr and "internal error" not in r.stderr
+    # the good file: formatted, its byte order mark and CRLF kept
+    assert good.read_bytes() == "\ufeffsolid s {\r\n    c = Circle((0, 0), 1)\r\n}\r\n".encode()
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "fmt", "--check", str(fifo)],
+                       capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert r.returncode == 1 and "error[E0004]" in r.stderr

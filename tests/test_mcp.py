@@ -191,3 +191,43 @@ def test_server_info_version_is_the_package_version():
     with tempfile.TemporaryDirectory() as d:
         server = build_server(d)
     assert version("aidl-lang") and server.version == version("aidl-lang")
+
+
+@pytest.mark.asyncio
+async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(tmp_path):
+    """`tools/list` gives each argument a description, the allowed values (style) and ranges
+    (width, budget), and the SDK refuses a call outside them before the tool runs (issue 37:
+    the schemas had titles only)."""
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    params = StdioServerParameters(command=sys.executable,
+                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
+                                   env=env, cwd=str(ROOT))
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            tools = {t.name: t for t in (await session.list_tools()).tools}
+            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs"}
+            for t in tools.values():
+                props = t.input_schema["properties"]
+                assert props, t.name
+                for name, prop in props.items():
+                    assert len(prop.get("description", "")) > 20, (t.name, name)
+            render = tools["render"].input_schema["properties"]
+            assert render["style"]["enum"] == ["preview", "laser"]
+            assert render["style"]["default"] == "preview"
+            assert (render["width"]["minimum"], render["width"]["maximum"]) == (16, 4096)
+            for t in ("check", "render", "values", "describe"):
+                [budget] = [b for b in tools[t].input_schema["properties"]["budget"]["anyOf"]
+                            if b.get("type") == "number"]
+                assert budget["exclusiveMinimum"] == 0 and budget["maximum"] == 4
+            assert tools["explain"].input_schema["required"] == ["code"]
+
+            # a call outside the schema is refused, naming the argument; a good one is not
+            for args in ({"style": "blueprint"}, {"width": 0}, {"budget": 0},
+                         {"budget": 5.0}):
+                r = await session.call_tool("render", {"source": GOOD, **args})
+                assert r.is_error, args
+                assert next(iter(args)) in _text(r), (args, _text(r))
+            r = await session.call_tool("render", {"source": GOOD, "style": "laser",
+                                                   "width": 64, "budget": 0.5})
+            assert not r.is_error and json.loads(_text(r))["ok"], _text(r)

@@ -484,3 +484,48 @@ def test_download_compiles_a_deep_value_like_check_set(client):
     r = client.get("/download/svg", params={"set": f"base_w={deep}"})
     assert "E0900" not in r.text and "RecursionError" not in r.text, r.text[:500]
     assert r.status_code == 200 and r.text.lstrip().startswith("<svg")
+
+
+# ------------------------------------------------------------------ a FIFO is not a program
+def test_serve_refuses_a_fifo_or_a_device_at_start(tmp_path):
+    """`aidl serve` reads its file as `aidl check` does (issue 37): a FIFO or a link to
+    /dev/zero is one located E0004 and exit 1, not "no such file" (nor a hang)."""
+    import os
+    import subprocess
+    import sys
+    fifo = tmp_path / "fifo.aidl"
+    os.mkfifo(fifo)
+    zero = tmp_path / "zero.aidl"
+    zero.symlink_to("/dev/zero")
+    for f in (fifo, zero):
+        r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "serve", str(f), "--port",
+                            "0"], capture_output=True, text=True, cwd=ROOT, timeout=60)
+        assert r.returncode == 1, r.stderr
+        assert f"{f}:1:1: error[E0004]: `{f}` is not a regular file" in r.stderr
+        assert "http://" not in r.stdout
+
+
+SWAP_FOR_A_FIFO = """
+import json, os, sys
+from aidl_lang.serve.session import Session
+f = sys.argv[1]
+s = Session(f)
+assert s.load()["ok"]
+os.unlink(f)
+os.mkfifo(f)                      # saved over by a FIFO while the preview runs
+v = s.load()                      # read_bytes() waited here for a writer, forever
+print(json.dumps([(d["code"], d["message"]) for d in v["diagnostics"]]))
+"""
+
+
+def test_serve_reload_of_a_file_swapped_for_a_fifo_is_E0004_not_a_hang(tmp_path):
+    """The live reload reads the file with the session's lock held: a FIFO saved in its place
+    must be refused at once, or every slider and download waits behind it."""
+    import subprocess
+    import sys
+    f = tmp_path / "r.aidl"
+    f.write_text(RANGED)
+    r = subprocess.run([sys.executable, "-c", SWAP_FOR_A_FIFO, str(f)], capture_output=True,
+                       text=True, cwd=ROOT, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout) == [["E0004", f"`{f}` is not a regular file"]]

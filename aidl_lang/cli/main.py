@@ -20,7 +20,7 @@ import os
 import sys
 from pathlib import Path
 
-from ..diagnostics import Diagnostic, DiagnosticSink, render_text
+from ..diagnostics import DiagnosticSink, render_text
 
 
 _COLUMNS: int | None = None
@@ -291,11 +291,8 @@ def _read(path: str, as_json: bool) -> str | None:
     try:
         return read_program(path)          # a regular file, size-limited, never blocking
     except SourceRefused as e:
-        from ..diagnostics import Span
         sink = DiagnosticSink()
-        sink.add(Diagnostic("E0004", e.message, Span(path, 1, 1, 1, 1, 0, 0),
-                            hint="give a regular UTF-8 .aidl file (programs and imports have "
-                                 "at most 1000000 bytes)"))
+        sink.add(e.diagnostic(path))
         _emit(sink, as_json, False)
         return None
 
@@ -712,6 +709,8 @@ def cmd_lsp(args) -> int:
 
 
 def cmd_serve(args) -> int:
+    if _read(args.file, False) is None:     # E0004: missing, a FIFO, a device, too large
+        return 1
     from ..serve import serve
     return serve(args.file, args.port)
 

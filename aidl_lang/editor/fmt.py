@@ -309,6 +309,7 @@ def main(files: list[str], check: bool = False) -> int:
     from pathlib import Path
 
     from ..diagnostics import render_text
+    from ..sources import SourceRefused, read_program
 
     status = 0
     for f in files:
@@ -316,9 +317,16 @@ def main(files: list[str], check: bool = False) -> int:
             if f == "-":
                 src = sys.stdin.read()
             else:
-                with open(f, encoding="utf-8", newline="") as fh:   # keep CR / CRLF as they are
-                    src = fh.read()
-        except (OSError, UnicodeDecodeError) as e:
+                # as `aidl check` reads a program: a regular file only (a FIFO or /dev/zero is
+                # refused, E0004, not waited on), at most 1000000 bytes, UTF-8; the byte order
+                # mark and CR / CRLF kept as they are
+                src = read_program(f, keep_bom=True)
+        except SourceRefused as e:
+            print(render_text(e.diagnostic(f), {}), file=sys.stderr)
+            print(f"aidl: `{f}` not formatted: it cannot be read", file=sys.stderr)
+            status = max(status, 1)
+            continue
+        except (OSError, UnicodeDecodeError) as e:        # stdin
             print(f"aidl: error: cannot read `{f}`: {getattr(e, 'strerror', None) or e}",
                   file=sys.stderr)
             status = max(status, 1)

@@ -97,6 +97,10 @@ class _Cloner:
             raise EvalError("E0303", f"more than {most} geometry objects", self.ctx.cur_span,
                             hint="use fewer or larger repetitions, or raise `--budget`")
         new = Geometry(g.kind, dest, g.span, construction=g.construction, closed=g.closed)
+        if dest is not g.owner:
+            # a copy of a structure: its shapes keep their names (`holes[1].c`, read by
+            # `aidl check --values`); a copy of a shape next to it is named by its assignment
+            new.name = g.name
         self.geoms[g] = new
         new.points = {n: self.point(p, dest) for n, p in g.points.items()}
         if g.kind == "Arc" and self.flip:      # a mirror turns counter-clockwise into clockwise

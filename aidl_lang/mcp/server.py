@@ -14,12 +14,54 @@ from __future__ import annotations
 import json
 from collections.abc import Callable
 from pathlib import Path
+from typing import Annotated, Literal
 
 from mcp.server.mcpserver import Image, MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
 from mcp_types import ToolAnnotations
+from pydantic import Field
 
 from . import tools as T
+
+# The tools' arguments: the SDK turns each description, allowed value and range into the
+# JSON Schema of `tools/list`, and checks calls against it before a tool runs.
+Source = Annotated[str | None, Field(
+    description="The AIDL program text. Give this or `path`, not both.",
+    max_length=T.MAX_SOURCE)]
+ProgramPath = Annotated[str | None, Field(
+    description="A .aidl file, relative to the server's allowed folder (nothing outside it "
+                "is read). Give this or `source`, not both.")]
+Overrides = Annotated[dict[str, str] | None, Field(
+    description="Param values, as `aidl --set` takes them: param name -> value, e.g. "
+                "{\"width\": \"40 mm\"} (a bare number is in the file's units).")]
+Budget = Annotated[float | None, Field(
+    description=f"A factor of the default evaluation budget (steps, objects, sizes, 15 s of "
+                f"wall time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
+                f"(`aidl mcp --budget`).",
+    gt=0, le=T.MAX_BUDGET)]
+Dof = Annotated[bool, Field(
+    description="Also count the degrees of freedom left per structure, with the entities "
+                "still free to move.")]
+Output = Annotated[str | None, Field(
+    description="Also write the drawing to this file, relative to the allowed folder (never "
+                "outside it, never over the program or through a symbolic link); the format "
+                "by extension: .svg, .dxf (laser cutters), .png, .stl, .3mf, .step.")]
+Width = Annotated[int, Field(
+    description="The PNG's width in pixels (the returned image's and a written .png's).",
+    ge=16, le=T.MAX_PNG_WIDTH)]
+Style = Annotated[Literal["preview", "laser"], Field(
+    description="`preview`: parts filled, holes cut out; `laser`: hairline cut paths, as a "
+                "laser cutter reads them.")]
+Names = Annotated[list[str] | None, Field(
+    description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
+                "root structure's name may be left out); default: every value.")]
+Code = Annotated[str, Field(
+    description="A diagnostic code, e.g. E0103 or W0402 (any case).", min_length=1,
+    max_length=16)]
+TopicName = Annotated[str | None, Field(
+    description="A shape, constraint, statement or standard-library template, in any case "
+                "or style (Circle, SpurGear, spur-gear, assert); none: the list of topics.",
+    max_length=200)]
 
 INSTRUCTIONS = """AIDL is a text language for 2D CAD parts (laser cutting, CNC): named \
 structures (solid, hole, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
@@ -74,9 +116,8 @@ def build_server(root: str, budget: float = 1.0,
                              open_world_hint=False)
 
     @server.tool(structured_output=False, annotations=reads)
-    def check(source: str | None = None, path: str | None = None,
-              overrides: dict[str, str] | None = None, dof: bool = False,
-              budget: float | None = None) -> str:
+    def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+              dof: Dof = False, budget: Budget = None) -> str:
         """Parse, check and solve an AIDL program; write nothing.
 
         Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder).
@@ -91,9 +132,9 @@ def build_server(root: str, budget: float = 1.0,
             raise refused(e) from None
 
     @server.tool(structured_output=False, annotations=writes)
-    def render(source: str | None = None, path: str | None = None, output: str | None = None,
-               width: int = 800, overrides: dict[str, str] | None = None,
-               style: str = "preview", budget: float | None = None) -> list:
+    def render(source: Source = None, path: ProgramPath = None, output: Output = None,
+               width: Width = 800, overrides: Overrides = None, style: Style = "preview",
+               budget: Budget = None) -> list:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
@@ -106,12 +147,11 @@ def build_server(root: str, budget: float = 1.0,
         return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]
 
     @server.tool(structured_output=False, annotations=reads)
-    def values(source: str | None = None, path: str | None = None,
-               names: list[str] | None = None, overrides: dict[str, str] | None = None,
-               budget: float | None = None) -> str:
+    def values(source: Source = None, path: ProgramPath = None, names: Names = None,
+               overrides: Overrides = None, budget: Budget = None) -> str:
         """The solved values of named entities, in the file's units: each structure's frame
         origin and bounding box, each named geometry's points (center, start, end, corners)
-        and sizes (radius, width, height).  `names` filters by dotted prefix (e.g.
+        and sizes (radius, width, height), a pattern's copies' too (corners[1].c.center).  `names` filters by dotted prefix (e.g.
         ["plate.bore", "plate.body.width"]); the root structure's name may be left out.
         Returns JSON: ok, units, values [{name, kind, value, unit, mm}] and text (one
         `name = value unit` line each)."""
@@ -121,8 +161,8 @@ def build_server(root: str, budget: float = 1.0,
             raise refused(e) from None
 
     @server.tool(structured_output=False, annotations=reads)
-    def describe(source: str | None = None, path: str | None = None,
-                 overrides: dict[str, str] | None = None, budget: float | None = None) -> str:
+    def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+                 budget: Budget = None) -> str:
         """What the final part is, for checking it without a picture: for each part its
         outline (kind, size, box), each opening with its kind (circle d=..., slot w x l,
         rectangle, n-gon), centre and size, engravings (text and place), copies (parts of the
@@ -134,7 +174,7 @@ def build_server(root: str, budget: float = 1.0,
             raise refused(e) from None
 
     @server.tool(structured_output=False, annotations=reads)
-    def explain(code: str) -> str:
+    def explain(code: Code) -> str:
         """What a diagnostic code (E0103, W0402, ...) means, with an example."""
         try:
             return T.explain(code)
@@ -142,7 +182,7 @@ def build_server(root: str, budget: float = 1.0,
             raise refused(e) from None
 
     @server.tool(structured_output=False, annotations=reads)
-    def docs(name: str | None = None) -> str:
+    def docs(name: TopicName = None) -> str:
         """The reference of a shape, constraint, statement or standard-library template (as
         `aidl docs NAME`): signature, the unit of every parameter, members and an example
         program that compiles.  Any case or style finds a name (SpurGear, spur-gear); no

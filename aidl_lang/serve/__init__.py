@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import socket
 import sys
-from pathlib import Path
 
 HOST = "127.0.0.1"      # never another interface: the preview is for this machine only
 
@@ -30,8 +29,11 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
         print(f"aidl: error: `aidl serve` cannot import {e.name}, one of aidl's dependencies: "
               "reinstall aidl (pip install -e /path/to/aidl)", file=sys.stderr)
         return 2
-    if not Path(path).is_file():
-        print(f"aidl: error: cannot read `{path}`: no such file", file=sys.stderr)
+    from ..sources import SourceRefused, read_program
+    try:
+        read_program(path)          # missing, a FIFO, a device, too large: E0004, never a hang
+    except SourceRefused as e:
+        print(f"aidl: error[E0004]: {e.message}", file=sys.stderr)
         return 2
     sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)

@@ -35,10 +35,10 @@ from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
 from ..solver.system import build_rows
+from ..sources import SourceRefused, read_program
 from ..typecheck import check
 from ..api import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
 
-MAX_SOURCE_BYTES = 2_000_000       # a bigger file is refused (E0004), not compiled
 
 
 @dataclass
@@ -100,14 +100,11 @@ class Session:
     def _load(self, t0: float) -> dict:
         sink = DiagnosticSink()
         try:
-            raw = self.path.read_bytes()
-            if len(raw) > MAX_SOURCE_BYTES:
-                raise OSError(f"the file is larger than {MAX_SOURCE_BYTES} bytes")
-            src = raw.decode("utf-8")
-        except (OSError, UnicodeDecodeError) as e:
-            sink.add(Diagnostic("E0004", f"cannot read `{self.name}`: "
-                                f"{getattr(e, 'strerror', None) or e}", None,
-                                hint="check the file name and that it is UTF-8 text"))
+            # as `aidl check` reads it: a regular file only (a FIFO swapped in is refused, not
+            # waited on with the lock held), non-blocking, at most 1000000 bytes, UTF-8
+            src = read_program(self.path)
+        except SourceRefused as e:
+            sink.add(e.diagnostic(self.name))
             self.program = None
             self.solver = self._row_keys = None
             return self._publish(Result(sink), t0)
