@@ -167,6 +167,13 @@ def read_program(path: str | os.PathLike, keep_bom: bool = False) -> str:
         raise SourceRefused(e.message) from None
     except OSError as e:
         raise SourceRefused(f"cannot read `{shown}`: {e.strerror or e}") from None
+    return decode_program(data, shown, keep_bom)
+
+
+def decode_program(data: bytes, shown: str, keep_bom: bool = False) -> str:
+    """The text of a program file's bytes ``data`` (``shown``: its name in the message):
+    UTF-8, a BOM dropped unless ``keep_bom``.  Raises :class:`SourceRefused` naming the
+    first byte that is not UTF-8.  Shared by the CLI, the API, MCP and batch."""
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as e:

@@ -231,3 +231,13 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
             r = await session.call_tool("render", {"source": GOOD, "style": "laser",
                                                    "width": 64, "budget": 0.5})
             assert not r.is_error and json.loads(_text(r))["ok"], _text(r)
+
+
+def test_a_program_path_that_is_not_utf8_or_has_a_bom_reads_as_aidl_check_reads_it(tmp_path):
+    """MCP `check` by path decodes like `aidl check` (sources.decode_program): Latin-1 bytes are
+    refused naming the first bad byte; a UTF-8 BOM is dropped."""
+    (tmp_path / "latin1.aidl").write_bytes("# caf\xe9\n".encode("latin-1"))
+    with pytest.raises(T.Refused, match=r"not UTF-8 text \(invalid continuation byte at byte 5\)"):
+        T.Workspace(tmp_path).read("latin1.aidl")
+    (tmp_path / "bom.aidl").write_bytes("\ufeffunits mm\n".encode("utf-8"))
+    assert T.Workspace(tmp_path).read("bom.aidl")[1] == "units mm\n"

@@ -9,7 +9,7 @@ import re
 from pathlib import Path
 
 from ..files import FileRefused, read_file
-from ..sources import MAX_IMPORT_BYTES
+from ..sources import MAX_IMPORT_BYTES, SourceRefused, decode_program
 from .row import options_key, sha256
 
 
@@ -30,9 +30,9 @@ def _file_task(path: str) -> dict:
         return task
     task["sha256"] = sha256(data)
     try:
-        task["source"] = data.decode("utf-8")
-    except UnicodeDecodeError as e:
-        task["read_error"] = f"cannot read `{path}`: not UTF-8 text ({e.reason} at byte {e.start})"
+        task["source"] = decode_program(data, path)
+    except SourceRefused as e:
+        task["read_error"] = e.message
     return task
 
 

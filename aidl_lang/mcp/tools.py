@@ -10,6 +10,7 @@ import os
 from pathlib import Path
 
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
+from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular, write_in_dir
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
@@ -96,11 +97,9 @@ class Workspace:
         except OSError as e:
             raise Refused(f"cannot read `{path}`: {e}") from None
         try:
-            text = data.decode("utf-8")
-        except UnicodeDecodeError as e:
-            raise Refused(f"cannot read `{path}`: not UTF-8 text ({e.reason} at byte "
-                          f"{e.start})") from None
-        return real, text
+            return real, decode_program(data, path)
+        except SourceRefused as e:
+            raise Refused(e.message) from None
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
