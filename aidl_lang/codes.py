@@ -494,6 +494,33 @@ it out: the cut already draws the edge.
         drawing marks { edge = Line((-30, -20), (30, -20)) }   # on the bottom edge
     }
 """),
+    "W0517": ("parts collide when assembled", """
+The program places its parts in 3D (`Place`), and two parts' solids, each its profile extruded
+by its `thickness` and placed, overlap by more than 0.001 mm^3: assembled, they cannot both be
+there. Most often a slot (or the gap between two fingers) is narrower than the thickness of the
+part that goes in it, or the material is thicker than the joint was drawn for. The warning
+names both parts, the common volume, its depth (the smallest side of its box: by how much the
+slot is too narrow) and the box where it lies. Widen the slot to the partner's thickness, use
+the material the joint was drawn for, or move the part with its `Place`. The check reads the
+designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.
+
+    import "std/joints.aidl"
+    thickness 3.5 mm                # the material is thicker than the fingers were cut for
+    assembly kit { box = finger_box(thickness=3 mm) }
+"""),
+    "W0518": ("part touches no other part when assembled", """
+The program places its parts in 3D (`Place`), and one part comes no nearer than 0.000001 mm to
+any other: assembled, it floats free, as when a tab does not reach its slot or a placement is
+off by a figure. The warning names the part, the nearest other part and the gap. Move the part
+by the gap with its `Place`, or lengthen the tab.
+
+    thickness 3 mm
+    assembly kit {
+        solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+        solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+        Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 14))   # 1 mm above the base
+    }
+"""),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and

@@ -259,7 +259,7 @@ def _indent(text: str, pad: str) -> str:
 
 
 _KINDS = {"primitive": "shape", "constraint": "constraint", "structural": "structural relation",
-          "operation": "operation"}
+          "operation": "operation", "placement": "3D placement"}
 _MEMBER_KINDS = {"point": "points", "points": "point lists", "line": "lines",
                  "lines": "line lists"}
 
@@ -456,7 +456,8 @@ def index_text() -> str:
         k = t.kind.split(",")[0]
         k = "template" if k.endswith("template") else k
         groups.setdefault(k, []).append(t)
-    order = ["statement", "shape", "constraint", "structural relation", "operation", "template"]
+    order = ["statement", "shape", "constraint", "structural relation", "operation",
+             "3D placement", "template"]
     heads = {"statement": "Statements and concepts", "shape": "Shapes",
              "constraint": "Geometric constraints", "structural relation":
              "Structural relations (by bounding box)", "operation": "Operations",

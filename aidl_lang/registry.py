@@ -308,6 +308,13 @@ _DEFS = {
                    doc="a.bb.top == b.bb.top."),
     "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
                       doc="a.bb.bottom == b.bb.bottom."),
+    # ------------------------------------------------------------ placement (3D)
+    "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None)],
+                cat="placement",
+                doc="Place a part (or an assembly) in 3D for the assembled view: its local "
+                    "point p (x, y in its frame, z up through its thickness) goes to "
+                    "R p + position; position (x, y, z) lengths, rotation (rx, ry, rz) angles "
+                    "turned about x, then y, then z; both known before solving."),
     # ------------------------------------------------------------ operations
     "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
                    doc="A copy of geometry or a structure mirrored about a line; it follows the "

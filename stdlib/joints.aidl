@@ -72,7 +72,9 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the
 # sides; the sides have slots all round. Members: `bottom`, `front`, `back`,
-# `left`, `right`, `lid` (each a finger_panel).
+# `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D
+# (`Place`): assembled (`aidl render --assembled`), the box stands on z = 0,
+# centered on x = y = 0, its fingers in their slots.
 def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
                finger=10 mm, closed=true, gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
     open = "slots" if closed else "flat"
@@ -98,5 +100,16 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
                            bottom="slots", right="fingers", top="slots", left="fingers",
                            cx=cx, cy=cy + depth + height + 2 * gap)
         lid.outline.center == (cx, cy + depth + height + 2 * gap)
+        Place(lid, position=(-cx, -(cy + depth + height + 2 * gap), height - thickness))
     }
+    # assembled: each panel folded up from the net about its edge on the bottom
+    Place(bottom, position=(-cx, -cy, 0 mm))
+    Place(front, rotation=(90 deg, 0, 0),
+          position=(-cx, thickness - depth / 2, height / 2 - (cy - (depth + height) / 2 - gap)))
+    Place(back, rotation=(90 deg, 0, 0),
+          position=(-cx, depth / 2, height / 2 - (cy + (depth + height) / 2 + gap)))
+    Place(left, rotation=(0, 90 deg, 0),
+          position=(-length / 2, -cy, cx - (length + height) / 2 - gap + height / 2))
+    Place(right, rotation=(0, -90 deg, 0),
+          position=(length / 2, -cy, height / 2 - (cx + (length + height) / 2 + gap)))
 }

@@ -7,7 +7,7 @@ from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
                "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0516",
-               "W0402"}
+               "W0517", "W0518", "W0402"}
 
 
 def warnings(compile_text, src, code):
@@ -1015,3 +1015,64 @@ def test_W0506_a_solid_cut_away_by_a_hole_of_its_own_structure(compile_text):
     assert not warnings(compile_text, beside, "W0506")
     import aidl_lang
     assert len(aidl_lang.compile(source=beside).parts) == 2     # the pin is a part of its own
+
+
+# ------------------------------------------------------------------ the assembled fit check
+BOX = """import "std/joints.aidl"
+thickness {material} mm
+{kerf}
+assembly kit {{ box = finger_box(thickness=3 mm) }}
+"""
+
+
+@pytest.mark.parametrize("kerf", ["", "kerf 0.15 mm"])
+def test_stdlib_finger_box_assembles_without_a_collision_or_a_gap(compile_text, kerf):
+    c = compile_text(BOX.format(material=3, kerf=kerf))
+    assert c.ok and [d.code for d in c.sink.items if d.code in ("W0517", "W0518")] == []
+    assert c.drawing.placement is not None and len(c.drawing.placement) == 6
+
+
+def test_W0517_material_half_a_millimetre_thicker_than_the_slots(compile_text):
+    """3.5 mm material in a box whose fingers and slots were drawn for 3 mm: every joint
+    collides, each 0.5 mm deep (the slot is 0.5 mm narrower than its partner)."""
+    c = compile_text(BOX.format(material=3.5, kerf=""))
+    ws = [d for d in c.sink.items if d.code == "W0517"]
+    pairs = {tuple(w.message.split("`")[1:4:2]) for w in ws}
+    assert ("kit.box.bottom", "kit.box.front") in pairs and ("kit.box.back", "kit.box.lid") in pairs
+    assert len(ws) == 11 and all(", 0.5 mm deep," in w.message for w in ws)
+    w = next(w for w in ws if "`kit.box.bottom` and `kit.box.front`" in w.message)
+    assert "77.7 mm^3" in w.message and "y -40..-37" in w.message
+    assert w.span.file.endswith("joints.aidl") and "Place(front" in open(w.span.file).read(
+        ).splitlines()[w.span.line - 1]
+    assert "0.5 mm narrower" in w.hint
+
+
+def test_W0517_cross_halving_slot_too_narrow_gives_the_figure(compile_text):
+    from conftest import ROOT
+    src = (ROOT / "examples" / "phone_stand.aidl").read_text()
+    assert [d.code for d in compile_text(src).sink.items if d.code == "W0517"] == []
+    (w,) = [d for d in compile_text(src, overrides={"slot": "2.5mm"}).sink.items
+            if d.code == "W0517"]
+    # each slot 0.25 mm short on either side over 20 mm: 4 strips of 3 x 0.25 x 20 mm
+    assert "`stand.support` and `stand.foot`" in w.message
+    assert "60 mm^3, 0.5 mm deep" in w.message and "z 0..40 mm" in w.message
+    assert w.span.line == 40 and w.labels[0].span.line == 39
+
+
+def test_W0518_a_wall_placed_short_of_its_base_gives_the_gap(compile_text):
+    c = compile_text("""thickness 3 mm
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+    solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 13.25))
+}""")
+    (w,) = [d for d in c.sink.items if d.code == "W0518"]
+    assert "`kit.base` touches no other part" in w.message and "`kit.wall`, is 0.25 mm away" in w.message
+    assert w.span.line == 3
+    c = compile_text("""thickness 3 mm
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+    solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 13))
+}""")
+    assert [d.code for d in c.sink.items if d.code in ("W0517", "W0518")] == []

@@ -118,6 +118,8 @@ class Calls:
             self._check_magnitudes(v, spans.get(k, node.span), k)
         if entry.category == "primitive":
             return self._primitive(canonical(nm), conv, node, spans)
+        if entry.category == "placement":
+            return self._place(conv, node, spans)
         if entry.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
@@ -134,6 +136,60 @@ class Calls:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(canonical(nm), eqs, node.span, None, owners)
         return None
+
+    def _place(self, conv, node, spans):
+        """``Place(part, position=(x, y, z), rotation=(rx, ry, rz))``: the part's rigid 3D
+        placement (mm and radians, known before solving), kept on its structure as
+        ``placement = (position, rotation, span)`` for the assembled outputs."""
+        s = self._need_struct(node.span)
+        ref = conv["part"]
+        if not isinstance(ref, StructRef):
+            raise EvalError("E0108", f"`Place` places a structure, not {_a(type_name(ref))}",
+                            spans.get("part", node.span),
+                            hint="name a part: `Place(lid, position=(0, 0, 47))`")
+        target = ref.struct
+        if target is s or not target.is_within(s):
+            raise EvalError("E0108", f"`{target.path}` is not a part inside `{s.path}`: a part "
+                            "is placed by the structure that holds it",
+                            spans.get("part", node.span),
+                            hint=f"write the `Place(...)` in `{target.parent.path}`"
+                            if target.parent is not None else "place the parts of this structure")
+        prev = getattr(target, "placement", None)
+        if prev is not None:
+            line = f", on line {prev[2].line}" if prev[2] is not None else ""
+            raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
+                            hint="a part has one placement: keep one `Place`")
+        pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
+        rot = self._triple(conv.get("rotation"), "rotation", ANG, spans.get("rotation"), node)
+        target.placement = (pos, rot, node.span)
+        return None
+
+    def _triple(self, v, what, dim, span, node) -> tuple[float, float, float]:
+        """An (x, y, z) of lengths (mm) or angles (radians) known before solving; None: 0."""
+        span = span or node.span
+        eg = "position=(0, 0, 3 mm)" if dim is LEN else "rotation=(90 deg, 0, 0)"
+        if v is None:
+            return (0.0, 0.0, 0.0)
+        if isinstance(v, PV):
+            v = [Q(v.x, LEN), Q(v.y, LEN)] + ([Q.num(0.0, LEN)] if dim is LEN else [])
+        if not isinstance(v, (list, tuple)) or len(v) != 3:
+            raise EvalError("E0108", f"`{what}` of `Place` must be three "
+                            f"{'lengths' if dim is LEN else 'angles'} (x, y, z), got "
+                            f"{_a(type_name(v)) if not isinstance(v, (list, tuple)) else f'{len(v)} items'}",
+                            span, hint=f"write `{eg}`")
+        out = []
+        for q in v:
+            if not isinstance(q, Q) or q.dim not in (dim, NUM):
+                raise EvalError("E0109", f"`{what}` of `Place` must be three "
+                                f"{'lengths' if dim is LEN else 'angles'}, got {_a(type_name(q))}",
+                                span, hint=f"write `{eg}`")
+            c = q.const()
+            if c is None:
+                raise EvalError("E0109", f"`{what}` of `Place` must be known before solving",
+                                span, hint="use numbers and params: a placement is not solved")
+            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN else DEG)
+            out.append(float(c) * scale)
+        return tuple(out)
 
     def _primitive(self, kind, conv, node, spans):
         s = self.struct

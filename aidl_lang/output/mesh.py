@@ -26,11 +26,15 @@ def _trimesh():
     return trimesh
 
 
-def bodies(output: Output, thickness: float | None = None) -> list[tuple[str, object]]:
+def bodies(output: Output, thickness: float | None = None,
+           assembled: bool = False) -> list[tuple[str, object]]:
     """(part name, ``trimesh.Trimesh``) per solid part.  ``thickness`` (mm) overrides the
-    parts' own; without either, :data:`DEFAULT_THICKNESS`."""
+    parts' own; without either, :data:`DEFAULT_THICKNESS`.  ``assembled``: each body moved
+    by its part's placement (the booleans' ``Drawing.placement``; the sheet where none)."""
     import manifold3d as mf
     trimesh = _trimesh()
+    d = output.drawing
+    where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
     out = []
     for p in output.parts:
         if p.kind != "solid" or p.shape is None or p.shape.is_empty():
@@ -39,23 +43,27 @@ def bodies(output: Output, thickness: float | None = None) -> list[tuple[str, ob
         m = mf.Manifold.extrude(p.shape, float(t))
         mesh = m.to_mesh()
         v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
+        M = where.get(p.name)
+        if M is not None:
+            v = v @ M[:3, :3].T + M[:3, 3]
         f = np.asarray(mesh.tri_verts, dtype=np.int64)
         out.append((p.name, trimesh.Trimesh(vertices=v, faces=f, process=False)))
     return out
 
 
-def to_stl(output: Output, thickness: float | None = None) -> bytes:
-    """Binary STL of every solid part, extruded (mm).  Raises :class:`MissingDependency`
-    only on a damaged install (trimesh is a core dependency)."""
+def to_stl(output: Output, thickness: float | None = None, assembled: bool = False) -> bytes:
+    """Binary STL of every solid part, extruded (mm; ``assembled``: placed).  Raises
+    :class:`MissingDependency` only on a damaged install (trimesh is a core dependency)."""
     trimesh = _trimesh()
-    meshes = [m for _, m in bodies(output, thickness)]
+    meshes = [m for _, m in bodies(output, thickness, assembled)]
     if not meshes:
         return trimesh.Trimesh().export(file_type="stl")
     return trimesh.util.concatenate(meshes).export(file_type="stl")
 
 
-def to_3mf(output: Output, thickness: float | None = None) -> bytes:
-    """3MF with one object per solid part (named after the part; mm).  Raises
+def to_3mf(output: Output, thickness: float | None = None, assembled: bool = False) -> bytes:
+    """3MF with one object per solid part (named after the part; mm; ``assembled``: each
+    placed, as on the sheet where the program places nothing).  Raises
     :class:`MissingDependency` without ``networkx`` or ``lxml`` (the ``mesh`` extra)."""
     trimesh = _trimesh()
     try:
@@ -65,6 +73,6 @@ def to_3mf(output: Output, thickness: float | None = None) -> bytes:
         raise MissingDependency(f"3MF output needs networkx and lxml (no {e.name}): "
                                 "pip install 'aidl-lang[mesh]'") from None
     scene = trimesh.Scene()
-    for name, m in bodies(output, thickness):
+    for name, m in bodies(output, thickness, assembled):
         scene.add_geometry(m, geom_name=name, node_name=name)
     return scene.export(file_type="3mf")

@@ -1,0 +1,304 @@
+"""The assembled product: every solid part extruded by its thickness and moved by its ``Place``
+(docs/language.md, "Placing parts in 3D"), as GLB (one named node per part, in the flat
+assembly view's colours), the fit check on it with Manifold's 3D booleans (W0517 parts that
+collide, W0518 a part that reaches no other), and a picture of it (PNG: the triangles projected
+and sorted back to front, rasterised by cairosvg like the flat PNG).
+
+Placements come from the booleans' :attr:`~.booleans.Drawing.placement` (a 4x4 matrix per
+part from the flat sheet to the product); without any ``Place`` each part stays where it is on
+the sheet, z from 0 up through its thickness.  All lengths are in millimetres.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .part import Output
+
+DEFAULT_THICKNESS = 3.0
+# mm^3 and mm: a smaller common volume, or one thinner than this, is parts touching (faces flush)
+VOLUME_TOL = 1e-3
+DEPTH_TOL = 1e-6
+# mm: a part farther than this from every other part reaches none (a tab short of its slot)
+GAP_TOL = 1e-6
+
+
+def placements(output: Output) -> dict[str, np.ndarray]:
+    """Part name -> 4x4 matrix (flat sheet to assembled product) of every part the program
+    places (or whose assembly it places); {} when it places none."""
+    d = output.drawing
+    got = getattr(d, "placement", None) if d is not None else None
+    return dict(got) if got else {}
+
+
+def colours(output: Output) -> dict[str, str]:
+    """Part name -> ``#rrggbb``: the flat assembly view's colour of each solid part (the SVG
+    preview's :data:`~.svg.PALETTE`, in the parts' order)."""
+    from .svg import PALETTE
+    solids = [p for p in output.parts if p.kind == "solid"]
+    return {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)}
+
+
+def solids(output: Output, thickness: float | None = None) -> list[tuple[str, object]]:
+    """(part name, ``manifold3d.Manifold``) per solid part: its profile extruded by its
+    thickness (``thickness`` mm overrides) and placed."""
+    return extrude([(p.name, p.kind, p.shape, p.thickness) for p in output.parts],
+                   placements(output), thickness)
+
+
+def extrude(parts, where: dict, thickness: float | None = None) -> list[tuple[str, object]]:
+    """(name, ``manifold3d.Manifold``) of each solid of ``parts`` = [(name, kind,
+    CrossSection, thickness mm or None)], extruded and moved by ``where[name]`` (4x4)."""
+    import manifold3d as mf
+    out = []
+    for name, kind, shape, t in parts:
+        if kind != "solid" or shape is None or shape.is_empty():
+            continue
+        m = mf.Manifold.extrude(shape, float(thickness or t or DEFAULT_THICKNESS))
+        M = where.get(name)
+        if M is not None:
+            m = m.transform(np.asarray(M[:3, :4], dtype=float))
+        out.append((name, m))
+    return out
+
+
+def _rgba(colour: str) -> list[int]:
+    return [int(colour[i:i + 2], 16) for i in (1, 3, 5)] + [255]
+
+
+def scene(output: Output, thickness: float | None = None):
+    """A ``trimesh.Scene`` of the assembled product: one node per part, named after it, its
+    mesh coloured like the part in the flat view."""
+    from .mesh import _trimesh, bodies
+    trimesh = _trimesh()
+    colour = colours(output)
+    sc = trimesh.Scene()
+    for name, m in bodies(output, thickness, assembled=True):
+        c = colour.get(name)
+        if c is not None:
+            m.visual = trimesh.visual.ColorVisuals(m, face_colors=_rgba(c))
+        sc.add_geometry(m, geom_name=name, node_name=name)
+    return sc
+
+
+def to_glb(output: Output, thickness: float | None = None) -> bytes:
+    """Binary glTF (GLB) of the assembled product: one named node per part (mm; glTF's y is
+    up, so viewers show the product lying on its side unless they turn z up)."""
+    return scene(output, thickness).export(file_type="glb")
+
+
+# ------------------------------------------------------------------ fit check
+@dataclass
+class Collision:
+    """Two parts whose solids share ``volume`` mm^3 inside ``box`` (x0, y0, z0, x1, y1, z1 mm);
+    ``depth``: how far one part runs into the other, across both sheets (a slot that much
+    too narrow, :func:`_depth`)."""
+    a: str
+    b: str
+    volume: float
+    box: tuple
+    depth: float
+
+
+@dataclass
+class Gap:
+    """A part that touches no other part: ``nearest`` is ``gap`` mm away."""
+    part: str
+    nearest: str
+    gap: float
+
+
+def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = None
+        ) -> tuple[list[Collision], list[Gap]]:
+    """The fit check of the assembled product with Manifold's 3D booleans: every pair of parts
+    whose solids overlap by more than :data:`VOLUME_TOL` (and :data:`DEPTH_TOL` deep), and,
+    with two parts or more, every part that comes no nearer than :data:`GAP_TOL` to any
+    other (a tab that does not reach its slot).  ``bodies``: (name, ``Manifold``) placed
+    (:func:`solids`, :func:`extrude`); ``normals``: part name -> the unit normal of its sheet
+    (the placement's z axis; +z when missing), for the depth (:func:`_depth`).  Pairs are
+    taken from the solids' boxes."""
+    boxes = [np.asarray(_box(m), dtype=float) for _, m in bodies]
+    normals = normals or {}
+    hits: list[Collision] = []
+    touching = set()
+    n = len(bodies)
+    for i in range(n):
+        for j in range(i + 1, n):
+            bi, bj = boxes[i], boxes[j]
+            if np.any(bi[:3] > bj[3:] + GAP_TOL) or np.any(bj[:3] > bi[3:] + GAP_TOL):
+                continue
+            if deadline is not None:
+                deadline.check("the fit check", None)
+            (na, ma), (nb, mb) = bodies[i], bodies[j]
+            common = ma ^ mb
+            vol = float(common.volume()) if not common.is_empty() else 0.0
+            if vol > VOLUME_TOL:
+                # the connected pieces with volume (Manifold leaves zero-volume sheets where
+                # faces touch)
+                pieces = np.array([_box(m) for m in common.decompose()
+                                   if m.volume() > VOLUME_TOL] or [_box(common)], dtype=float)
+                box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
+                                                              pieces[:, 3:].max(axis=0)]))
+                depth = _depth(common, normals.get(na), normals.get(nb), box)
+                if depth > DEPTH_TOL:
+                    hits.append(Collision(na, nb, vol, box, depth))
+                    touching.update((i, j))
+                    continue
+            if i not in touching or j not in touching:
+                if ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
+                    touching.update((i, j))
+    gaps = []
+    if n >= 2:
+        for i in range(n):
+            if i in touching:
+                continue
+            best = None
+            for j in range(n):
+                if j != i:
+                    g = _distance(boxes[i], boxes[j])
+                    g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
+                    if best is None or g < best[0]:
+                        best = (g, bodies[j][0])
+            if not any(g.part == best[1] and g.nearest == bodies[i][0] for g in gaps):
+                gaps.append(Gap(bodies[i][0], best[1], best[0]))    # a pair is said once
+    return hits, gaps
+
+
+def normals_of(where: dict) -> dict:
+    """Part name -> the unit normal of its sheet in the product (its placement's z axis)."""
+    return {name: np.asarray(M[:3, 2], dtype=float) for name, M in where.items()}
+
+
+def _depth(common, na, nb, box) -> float:
+    """How far two plates run into each other: ``common`` (their common volume) cut across
+    the line where their planes meet (``na`` x ``nb``), at seven heights along it; in each
+    cut the pieces' widths are summed along each normal (a slot 0.5 mm too narrow leaves
+    0.25 mm each side: 0.5), the smaller sum taken; the most frequent figure of the cuts.
+    Parallel plates (or no normals): the common volume's extent along the normal."""
+    z = np.array([0.0, 0.0, 1.0])
+    na = z if na is None else na
+    nb = z if nb is None else nb
+    d = np.cross(na, nb)
+    if np.linalg.norm(d) < 1e-9:
+        v = np.asarray(common.to_mesh().vert_properties, dtype=float)[:, :3] @ na
+        return float(v.max() - v.min())
+    e3 = d / np.linalg.norm(d)
+    e1 = na - (na @ e3) * e3
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(e3, e1)
+    R = np.eye(4)[:3]
+    R[:, :3] = np.array([e1, e2, e3])
+    turned = common.transform(R)
+    ub = np.array([nb @ e1, nb @ e2])
+    ub /= np.linalg.norm(ub)
+    lo, hi = turned.bounding_box()[2], turned.bounding_box()[5]
+    figures = []
+    for f in (0.13, 0.27, 0.38, 0.5, 0.62, 0.73, 0.87):
+        polys = [np.asarray(p, dtype=float) for p in turned.slice(lo + f * (hi - lo)).to_polygons()]
+        polys = [p for p in polys if len(p) >= 3]
+        if not polys:
+            continue
+        sa = sum(float(p[:, 0].max() - p[:, 0].min()) for p in polys)
+        sb = sum(float((p @ ub).max() - (p @ ub).min()) for p in polys)
+        figures.append(round(min(sa, sb), 6))
+    if not figures:
+        return float(min(box[3] - box[0], box[4] - box[1], box[5] - box[2]))
+    return max(set(figures), key=lambda v: (figures.count(v), -v))
+
+
+def _box(m) -> tuple:
+    b = m.bounding_box()
+    return tuple(b)
+
+
+def _distance(a: np.ndarray, b: np.ndarray) -> float:
+    d = np.maximum(0.0, np.maximum(a[:3] - b[3:], b[:3] - a[3:]))
+    return float(np.sqrt((d * d).sum()))
+
+
+# ------------------------------------------------------------------ picture
+VIEW = (-35.0, 25.0)        # degrees: the picture's azimuth (about z) and elevation
+
+
+def to_png(output: Output, thickness: float | None = None, width: int = 800,
+           highlight: tuple = ()) -> bytes:
+    """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
+    each part's triangles in its colour, shaded by how squarely they face the viewer, drawn
+    back to front (painter's order) as SVG polygons, rasterised by ``cairosvg`` as
+    :mod:`.png` does.  ``highlight``: :class:`Collision` s drawn over it as red boxes.
+    ``width`` in pixels."""
+    import math
+
+    colour = colours(output)
+    bodies = solids(output, thickness)
+    az, el = (math.radians(v) for v in VIEW)
+    # camera axes: right, up, towards the viewer
+    fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
+    right = np.array([math.cos(az), math.sin(az), 0.0])
+    up = np.cross(fwd, right)
+    light = fwd * 0.6 + up * 0.6 + right * 0.2
+    light /= np.linalg.norm(light)
+    tris = []
+    for name, m in bodies:
+        mesh = m.to_mesh()
+        v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
+        f = np.asarray(mesh.tri_verts, dtype=np.int64)
+        if not len(f):
+            continue
+        P = v[f]                                         # (n, 3, 3)
+        nrm = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+        ln = np.linalg.norm(nrm, axis=1)
+        keep = ln > 1e-12
+        P, nrm = P[keep], nrm[keep] / ln[keep, None]
+        facing = nrm @ fwd > 0                           # back faces are hidden by the front
+        P, nrm = P[facing], nrm[facing]
+        shade = 0.45 + 0.55 * np.clip(nrm @ light, 0.0, 1.0)
+        depth = (P.mean(axis=1) @ fwd)
+        base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
+        for k in range(len(P)):
+            tris.append((depth[k], P[k], base * shade[k]))
+    boxes = []
+    for c in highlight:
+        x0, y0, z0, x1, y1, z1 = c.box
+        boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
+    pts = [t[1] for t in tris] + boxes
+    if not pts:
+        return _svg_to_png('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>')
+    allp = np.concatenate([p.reshape(-1, 3) for p in pts])
+    X, Y = allp @ right, allp @ up
+    x0, x1, y0, y1 = X.min(), X.max(), Y.min(), Y.max()
+    span = max(x1 - x0, y1 - y0, 1e-9)
+    margin = 0.05 * span
+    scale = (width - 2) / (x1 - x0 + 2 * margin or 1.0)
+    height = max(1, int(round((y1 - y0 + 2 * margin) * scale)))
+
+    def xy(p):
+        return (f"{(p @ right - x0 + margin) * scale:.2f},"
+                f"{(y1 + margin - p @ up) * scale:.2f}")
+    body = []
+    for _, P, rgb in sorted(tris, key=lambda t: t[0]):
+        fill = "#%02x%02x%02x" % tuple(int(min(255, max(0, c))) for c in rgb)
+        body.append(f'<polygon points="{xy(P[0])} {xy(P[1])} {xy(P[2])}" fill="{fill}" '
+                    f'stroke="{fill}" stroke-width="0.6" stroke-linejoin="round"/>')
+    edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
+             (5, 7), (6, 7))
+    for B in boxes:
+        for i, j in edges:
+            body.append(f'<polyline points="{xy(B[i])} {xy(B[j])}" fill="none" '
+                        'stroke="#ff0000" stroke-width="3"/>')
+    svg = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+           f'viewBox="0 0 {width} {height}"><rect width="100%" height="100%" fill="#ffffff"/>'
+           + "".join(body) + "</svg>")
+    return _svg_to_png(svg)
+
+
+def _svg_to_png(svg: str) -> bytes:
+    try:
+        import cairosvg
+    except (ImportError, OSError) as e:      # OSError: the cairo C library is missing
+        from .part import MissingDependency
+        raise MissingDependency(
+            "PNG output needs cairosvg and the cairo library: pip install 'aidl-lang[png]' "
+            f"(and apt-get install libcairo2 on Debian/Ubuntu) ({e})") from None
+    return cairosvg.svg2png(bytestring=svg.encode(), background_color="white")
