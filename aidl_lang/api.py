@@ -295,12 +295,13 @@ class Result:
         return out
 
     def encode(self, fmt: str, kerf: float | None = None, **options) -> bytes:
-        """The output in format ``fmt`` (``svg``, ``dxf``, ``png``, ``stl``, ``3mf``, ``step``;
-        a leading dot is allowed) as bytes, as ``aidl render`` writes it: the cutting formats
+        """The output in format ``fmt`` (``svg``, ``dxf``, ``png``, ``stl``, ``3mf``, ``step``,
+        ``glb``; a leading dot is allowed) as bytes, as ``aidl render`` writes it: the cutting formats
         (SVG, DXF, PNG) with every cut offset by half the kerf — ``kerf`` in mm, ``None`` for
         the program's own ``kerf`` statements, 0 for none; STL, 3MF and STEP are the designed
         solid.  ``options``: those of :class:`~aidl_lang.output.formats.Options` (``show``,
-        ``style``, ``dpi``, ``width``, ``thickness`` mm, ``margin`` mm).  Raises
+        ``style``, ``dpi``, ``width``, ``thickness`` mm, ``margin`` mm, ``assembled``: the
+        3D formats with every part placed by its ``Place``, PNG a picture of that).  Raises
         :class:`ValueError` for an unknown format, :class:`NotCompiled`,
         :class:`~aidl_lang.output.part.MissingDependency` (a format's library is not
         installed) and :class:`~aidl_lang.output.part.OutputError` (also a kerf larger than a
@@ -310,7 +311,8 @@ class Result:
         if suffix not in FORMATS:
             raise ValueError(f"unknown output format `{fmt}`; use one of "
                              + ", ".join(sorted(f[1:] for f in FORMATS)))
-        out = for_cutting(self.output, kerf) if suffix in CUT_FORMATS else self.output
+        cutting = suffix in CUT_FORMATS and not options.get("assembled")
+        out = for_cutting(self.output, kerf) if cutting else self.output
         return encode(out, suffix, Options(**options))
 
     def to_svg(self, kerf: float | None = None, **options) -> str:

@@ -136,6 +136,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--kerf", default=None, metavar="LENGTH",
                    help="offset every cut by half this kerf so parts come out at their size, "
                         "e.g. 0.15mm (default: the program's `kerf`, else none)")
+    r.add_argument("--assembled", action="store_true",
+                   help="write the assembled product: every part extruded by its thickness and "
+                        "placed by its `Place` (STL, 3MF, STEP, GLB: one named object per part; "
+                        "PNG: a picture of it)")
     r.add_argument("--layout", choices=["sheet"], default=None,
                    help="sheet: lay every solid part out flat on cutting sheets (true-shape "
                         "nesting; `layout` extra), one file per sheet when there are several")
@@ -582,6 +586,15 @@ def cmd_render(args) -> int:
                       f"`{args.rotate}`")
     if args.nest_time < 0 or args.nest_time > 3600:
         return _usage(f"--nest-time expects seconds from 0 to 3600, got `{args.nest_time}`")
+    if args.assembled:
+        from ..output.formats import ASSEMBLED_FORMATS
+        flat_only = [str(o) for o in outs if o.suffix.lower() not in ASSEMBLED_FORMATS]
+        if flat_only:
+            return _usage(f"--assembled writes STL, 3MF, STEP, GLB or PNG, not "
+                          f"`{flat_only[0]}` (SVG and DXF are the flat parts)")
+        if args.layout:
+            return _usage("--assembled and --layout do not go together: the assembled product "
+                          "is in 3D, a layout is flat")
     if args.layout is None and (args.sheet, args.gap, args.rotate) != ("600x400mm", "3mm", "0,90"):
         return _usage("--sheet, --gap and --rotate are for a cutting layout: add --layout sheet")
     if args.file == "-":
@@ -596,7 +609,7 @@ def cmd_render(args) -> int:
         _emit(res.sink, args.json, False)
         return 1
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
-                  thickness=thickness, margin=args.margin)
+                  thickness=thickness, margin=args.margin, assembled=args.assembled)
     notes = []
     try:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
@@ -620,8 +633,12 @@ def cmd_render(args) -> int:
                              "outside every part left out of the layout")
         names = _sheet_names(outs, len(flat))
         outs = [n for per in names for n in per]
+        cutting = () if args.assembled else CUT_FORMATS      # an assembled PNG: designed
         jobs = [(n, s, o.suffix) for o, per in zip([p[0] for p in names], names)
-                for n, s in zip(per, flat if o.suffix.lower() in CUT_FORMATS else solid)]
+                for n, s in zip(per, flat if o.suffix.lower() in cutting else solid)]
+        if args.assembled and not getattr(res.drawing, "placement", None):
+            notes.append("note: no part is placed (`Place`): the assembled product is the "
+                         "parts as on the sheet")
         items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)

@@ -154,6 +154,12 @@ class Calls:
                             spans.get("part", node.span),
                             hint=f"write the `Place(...)` in `{target.parent.path}`"
                             if target.parent is not None else "place the parts of this structure")
+        if target.parent.kind != "assembly":
+            raise EvalError("E0108", f"`{target.path}` is not a part: it is merged into "
+                            f"{target.parent.kind} `{target.parent.path}`",
+                            spans.get("part", node.span),
+                            hint="place a part (a child of an assembly) or an assembly; to "
+                                 "turn a shape within its part, draw it turned")
         prev = getattr(target, "placement", None)
         if prev is not None:
             line = f", on line {prev[2].line}" if prev[2] is not None else ""

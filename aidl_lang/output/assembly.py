@@ -67,14 +67,15 @@ def _rgba(colour: str) -> list[int]:
     return [int(colour[i:i + 2], 16) for i in (1, 3, 5)] + [255]
 
 
-def scene(output: Output, thickness: float | None = None):
-    """A ``trimesh.Scene`` of the assembled product: one node per part, named after it, its
-    mesh coloured like the part in the flat view."""
+def scene(output: Output, thickness: float | None = None, assembled: bool = True):
+    """A ``trimesh.Scene`` of the assembled product (``assembled=False``: the parts as on the
+    sheet): one node per part, named after it, its mesh coloured like the part in the flat
+    view."""
     from .mesh import _trimesh, bodies
     trimesh = _trimesh()
     colour = colours(output)
     sc = trimesh.Scene()
-    for name, m in bodies(output, thickness, assembled=True):
+    for name, m in bodies(output, thickness, assembled):
         c = colour.get(name)
         if c is not None:
             m.visual = trimesh.visual.ColorVisuals(m, face_colors=_rgba(c))
@@ -82,10 +83,11 @@ def scene(output: Output, thickness: float | None = None):
     return sc
 
 
-def to_glb(output: Output, thickness: float | None = None) -> bytes:
-    """Binary glTF (GLB) of the assembled product: one named node per part (mm; glTF's y is
-    up, so viewers show the product lying on its side unless they turn z up)."""
-    return scene(output, thickness).export(file_type="glb")
+def to_glb(output: Output, thickness: float | None = None, assembled: bool = True) -> bytes:
+    """Binary glTF (GLB) of the assembled product (``assembled=False``: as on the sheet):
+    one named node per part, its mesh in the part's colour (mm; glTF's y is up, so a viewer
+    turns the product's z up itself)."""
+    return scene(output, thickness, assembled).export(file_type="glb")
 
 
 # ------------------------------------------------------------------ fit check
@@ -222,16 +224,21 @@ VIEW = (-35.0, 25.0)        # degrees: the picture's azimuth (about z) and eleva
 
 
 def to_png(output: Output, thickness: float | None = None, width: int = 800,
-           highlight: tuple = ()) -> bytes:
+           highlight=None) -> bytes:
     """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
-    each part's triangles in its colour, shaded by how squarely they face the viewer, drawn
-    back to front (painter's order) as SVG polygons, rasterised by ``cairosvg`` as
+    each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
+    a 24th of the largest part's size and drawn back to front (painter's order) as SVG polygons, rasterised by ``cairosvg`` as
     :mod:`.png` does.  ``highlight``: :class:`Collision` s drawn over it as red boxes.
     ``width`` in pixels."""
     import math
 
+    if not 16 <= width <= 4096:
+        from .part import OutputError
+        raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
     colour = colours(output)
     bodies = solids(output, thickness)
+    if highlight is None:
+        highlight = fit(bodies, normals=normals_of(placements(output)))[0]
     az, el = (math.radians(v) for v in VIEW)
     # camera axes: right, up, towards the viewer
     fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
@@ -240,12 +247,16 @@ def to_png(output: Output, thickness: float | None = None, width: int = 800,
     light = fwd * 0.6 + up * 0.6 + right * 0.2
     light /= np.linalg.norm(light)
     tris = []
+    from trimesh.remesh import subdivide_to_size
+    size = max((max(np.subtract(_box(m)[3:], _box(m)[:3])) for _, m in bodies), default=1.0)
     for name, m in bodies:
         mesh = m.to_mesh()
         v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
         f = np.asarray(mesh.tri_verts, dtype=np.int64)
         if not len(f):
             continue
+        # small triangles, so that sorting them by their centres draws them in depth order
+        v, f = subdivide_to_size(v, f, max_edge=size / 24, max_iter=12)
         P = v[f]                                         # (n, 3, 3)
         nrm = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
         ln = np.linalg.norm(nrm, axis=1)

@@ -1,5 +1,5 @@
 """Output formats by file extension: :data:`FORMATS` maps ``.svg``, ``.dxf``, ``.png``,
-``.stl``, ``.3mf``, ``.step`` / ``.stp`` to a writer that turns an :class:`~.part.Output` into bytes."""
+``.stl``, ``.3mf``, ``.step`` / ``.stp``, ``.glb`` to a writer that turns an :class:`~.part.Output` into bytes."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -12,13 +12,16 @@ class Options:
     """Writer options: ``show`` debug layers (SVG/PNG), SVG ``style`` (preview | laser), PNG
     ``dpi`` / ``width`` (pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
-    least 1 mm; 0: the page is exactly the drawing's bounding box)."""
+    least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
+    STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
+    product)."""
     show: tuple = ()
     style: str = "preview"
     dpi: float = 96.0
     width: int | None = None
     thickness: float | None = None
     margin: float | None = None
+    assembled: bool = False
 
 
 def _svg(o: Output, opt: Options) -> bytes:
@@ -32,6 +35,9 @@ def _dxf(o: Output, opt: Options) -> bytes:
 
 
 def _png(o: Output, opt: Options) -> bytes:
+    if opt.assembled:
+        from .assembly import to_png as assembled_png
+        return assembled_png(o, opt.thickness, width=opt.width or 800)
     from .png import to_png
     return to_png(o, dpi=opt.dpi, width=opt.width, show=opt.show, style=opt.style,
                   margin=opt.margin)
@@ -39,17 +45,22 @@ def _png(o: Output, opt: Options) -> bytes:
 
 def _stl(o: Output, opt: Options) -> bytes:
     from .mesh import to_stl
-    return to_stl(o, opt.thickness)
+    return to_stl(o, opt.thickness, opt.assembled)
 
 
 def _3mf(o: Output, opt: Options) -> bytes:
     from .mesh import to_3mf
-    return to_3mf(o, opt.thickness)
+    return to_3mf(o, opt.thickness, opt.assembled)
 
 
 def _step(o: Output, opt: Options) -> bytes:
     from .step import to_step
-    return to_step(o, opt.thickness)
+    return to_step(o, opt.thickness, opt.assembled)
+
+
+def _glb(o: Output, opt: Options) -> bytes:
+    from .assembly import to_glb
+    return to_glb(o, opt.thickness, opt.assembled)
 
 
 # The formats a cutter reads (and their preview): written with the kerf offset applied.  STL,
@@ -79,7 +90,9 @@ def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None)
 
 
 FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf,
-           ".step": _step, ".stp": _step}
+           ".step": _step, ".stp": _step, ".glb": _glb}
+# the formats `--assembled` writes (the product in 3D, or its picture)
+ASSEMBLED_FORMATS = (".stl", ".3mf", ".step", ".stp", ".glb", ".png")
 
 
 # What one writer costs, measured by benchmarks/writer_cost.py on the reference machine (2
@@ -90,7 +103,7 @@ FORMATS = {".svg": _svg, ".dxf": _dxf, ".png": _png, ".stl": _stl, ".3mf": _3mf,
 WRITER_START = 0.5
 SECONDS_PER_ITEM = {".svg": 100e-6, ".dxf": 150e-6, ".png": 100e-6, ".step": 5e-3,
                     ".stp": 5e-3}
-SECONDS_PER_VERTEX = {".stl": 50e-6, ".3mf": 60e-6}
+SECONDS_PER_VERTEX = {".stl": 50e-6, ".3mf": 60e-6, ".glb": 60e-6}
 SECONDS_PER_PIXEL = 1e-7
 
 

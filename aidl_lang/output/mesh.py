@@ -41,13 +41,29 @@ def bodies(output: Output, thickness: float | None = None,
             continue
         t = thickness or p.thickness or DEFAULT_THICKNESS
         m = mf.Manifold.extrude(p.shape, float(t))
-        mesh = m.to_mesh()
-        v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
+        mesh = m.to_mesh64()
+        v = _exact(np.asarray(mesh.vert_properties, dtype=float)[:, :3], p.loops)
         M = where.get(p.name)
         if M is not None:
             v = v @ M[:3, :3].T + M[:3, 3]
         f = np.asarray(mesh.tri_verts, dtype=np.int64)
         out.append((p.name, trimesh.Trimesh(vertices=v, faces=f, process=False)))
+    return out
+
+
+def _exact(v: np.ndarray, loops) -> np.ndarray:
+    """The extruded vertices ``v`` put back on the exact profile's points: the section handed to
+    Manifold is rounded to 1e-8 mm (Clipper's precision), its vertices are the loops' points
+    (:meth:`~.part.Loop.points`), so each goes back to the point within 1e-6 mm of it."""
+    exact = {}
+    for lp in loops:
+        for x, y in lp.points():
+            exact[(round(float(x), 6), round(float(y), 6))] = (float(x), float(y))
+    out = v.copy()
+    for i, (x, y) in enumerate(v[:, :2]):
+        p = exact.get((round(float(x), 6), round(float(y), 6)))
+        if p is not None:
+            out[i, 0], out[i, 1] = p
     return out
 
 

@@ -5,7 +5,8 @@ spline stays a B-spline (``B_SPLINE_CURVE_WITH_KNOTS``; its extrusion a surface 
 Each solid part becomes one solid: its outer loops are faces (lines as straight edges, arcs
 and circles as circular edges, ``gp_Circ``), its hole loops are inner wires of the face that
 contains them, and the face is extruded along +z by the part's thickness
-(``BRepPrimAPI_MakePrism``).  All parts go into one compound, written as AP214 STEP in mm.
+(``BRepPrimAPI_MakePrism``).  Each part is one named, coloured shape of an XCAF document
+(``--assembled``: moved by its placement), written as AP214 STEP in mm.
 """
 from __future__ import annotations
 
@@ -90,12 +91,15 @@ def _contains(outer: Loop, inner: Loop) -> bool:
     return inside
 
 
-def solids(output: Output, thickness: float | None = None):
-    """(part name, OCP ``TopoDS_Shape``) per solid part."""
+def solids(output: Output, thickness: float | None = None, assembled: bool = False):
+    """(part name, OCP ``TopoDS_Shape``) per solid part (``assembled``: moved by its
+    placement, the booleans' ``Drawing.placement``)."""
     _ocp()
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace
     from OCP.BRepPrimAPI import BRepPrimAPI_MakePrism
     from OCP.gp import gp_Vec
+    d = output.drawing
+    where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
     out = []
     for p in output.parts:
         if p.kind != "solid" or not p.loops:
@@ -120,30 +124,56 @@ def solids(output: Output, thickness: float | None = None):
                 mf.Add(_wire(h, False))
             prism = BRepPrimAPI_MakePrism(mf.Face(), gp_Vec(0, 0, t)).Shape()
             builder.Add(comp, prism)
+        M = where.get(p.name)
+        if M is not None:
+            comp = _moved(comp, M)
         out.append((p.name, comp))
     return out
 
 
-def to_step(output: Output, thickness: float | None = None) -> bytes:
-    """AP214 STEP bytes of every solid part, extruded (mm)."""
+def _moved(shape, M):
+    """``shape`` moved by the rigid 4x4 matrix ``M`` (rotation and translation, mm)."""
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_Transform
+    from OCP.gp import gp_Trsf
+    tr = gp_Trsf()
+    tr.SetValues(*(float(M[i][j]) for i in range(3) for j in range(4)))
+    return BRepBuilderAPI_Transform(shape, tr, True).Shape()
+
+
+def to_step(output: Output, thickness: float | None = None, assembled: bool = False) -> bytes:
+    """AP214 STEP bytes of every solid part, extruded (mm): one solid per part, named after
+    it (an XCAF document: the product names a STEP reader shows) and coloured like the flat
+    assembly view; ``assembled``: each placed by its ``Place``."""
     _ocp()
     from OCP.Interface import Interface_Static
-    from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
-    w = STEPControl_Writer()
+    from OCP.Quantity import Quantity_Color, Quantity_TOC_RGB
+    from OCP.STEPCAFControl import STEPCAFControl_Writer
+    from OCP.STEPControl import STEPControl_AsIs
+    from OCP.TCollection import TCollection_ExtendedString
+    from OCP.TDataStd import TDataStd_Name
+    from OCP.TDocStd import TDocStd_Document
+    from OCP.XCAFDoc import XCAFDoc_ColorType, XCAFDoc_DocumentTool
+    from .svg import PALETTE
+    doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
+    shapes = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
+    colours = XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
+    for i, (name, shape) in enumerate(solids(output, thickness, assembled)):
+        label = shapes.AddShape(shape, False)
+        TDataStd_Name.Set_s(label, TCollection_ExtendedString(name))
+        c = PALETTE[i % len(PALETTE)]
+        rgb = [int(c[k:k + 2], 16) / 255 for k in (1, 3, 5)]
+        colours.SetColor(label, Quantity_Color(*rgb, Quantity_TOC_RGB),
+                         XCAFDoc_ColorType.XCAFDoc_ColorSurf)
     Interface_Static.SetCVal_s("write.step.unit", "MM")
     Interface_Static.SetCVal_s("write.step.schema", "AP214IS")
-    from OCP.BRep import BRep_Builder
-    from OCP.TopoDS import TopoDS_Compound
-    builder = BRep_Builder()
-    comp = TopoDS_Compound()
-    builder.MakeCompound(comp)
-    for _, shape in solids(output, thickness):
-        builder.Add(comp, shape)
+    w = STEPCAFControl_Writer()
+    w.SetNameMode(True)
+    w.SetColorMode(True)
     fd, tmp = tempfile.mkstemp(suffix=".step")
     os.close(fd)
     try:
         with _quiet():                 # OCP prints transfer statistics on the C stdout
-            w.Transfer(comp, STEPControl_AsIs)
+            w.Transfer(doc, STEPControl_AsIs)
             w.Write(tmp)
         with open(tmp, "rb") as f:
             return f.read()
