@@ -241,3 +241,43 @@ def test_a_program_path_that_is_not_utf8_or_has_a_bom_reads_as_aidl_check_reads_
         T.Workspace(tmp_path).read("latin1.aidl")
     (tmp_path / "bom.aidl").write_bytes("\ufeffunits mm\n".encode("utf-8"))
     assert T.Workspace(tmp_path).read("bom.aidl")[1] == "units mm\n"
+
+
+@pytest.mark.asyncio
+async def test_render_assembled_returns_the_product_in_3d(tmp_path):
+    """`assembled`: the image is the phone stand stood up (a collision boxed in red when the
+    slot is too narrow), a written .glb has one node per part, an .svg is refused."""
+    import io
+
+    import numpy as np
+    import trimesh
+    from PIL import Image
+    root = tmp_path / "work"
+    root.mkdir()
+    (root / "stand.aidl").write_text((ROOT / "examples" / "phone_stand.aidl").read_text())
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    params = StdioServerParameters(command=sys.executable,
+                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
+                                   env=env, cwd=str(ROOT))
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            reds = []
+            for slot in ("3mm", "2.5mm"):
+                r = await session.call_tool("render", {
+                    "path": "stand.aidl", "width": 240, "assembled": True,
+                    "overrides": {"slot": slot}, "output": "stand.glb"})
+                assert not r.is_error, _text(r)
+                doc = json.loads(_text(r))
+                assert doc["image"]["view"] == "assembled" and doc["written"] == "stand.glb"
+                [img] = [c for c in r.content if c.type == "image"]
+                im = np.asarray(Image.open(io.BytesIO(base64.b64decode(img.data))).convert("RGB"))
+                assert im.shape[1] == 240
+                im = im.astype(int)
+                reds.append(int(((im[:, :, 0] > 200) & (im[:, :, 1] < 60) & (im[:, :, 2] < 60)).sum()))
+            assert reds[0] == 0 and reds[1] > 20
+            sc = trimesh.load(root / "stand.glb")
+            assert sorted(sc.graph.nodes_geometry) == ["stand.foot", "stand.support"]
+            r = await session.call_tool("render", {"path": "stand.aidl", "assembled": True,
+                                                   "output": "stand.svg"})
+            assert r.is_error and "not `.svg`" in _text(r)

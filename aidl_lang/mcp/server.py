@@ -45,13 +45,17 @@ Dof = Annotated[bool, Field(
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file, relative to the allowed folder (never "
                 "outside it, never over the program or through a symbolic link); the format "
-                "by extension: .svg, .dxf (laser cutters), .png, .stl, .3mf, .step.")]
+                "by extension: .svg, .dxf (laser cutters), .png, .stl, .3mf, .step, .glb.")]
 Width = Annotated[int, Field(
     description="The PNG's width in pixels (the returned image's and a written .png's).",
     ge=16, le=T.MAX_PNG_WIDTH)]
 Style = Annotated[Literal["preview", "laser"], Field(
     description="`preview`: parts filled, holes cut out; `laser`: hairline cut paths, as a "
                 "laser cutter reads them.")]
+Assembled = Annotated[bool, Field(
+    description="Picture the assembled product instead of the flat parts: every part "
+                "extruded by its thickness and placed by its `Place`, collisions boxed in red "
+                "(a written .stl/.3mf/.step/.glb/.png is assembled too).")]
 Names = Annotated[list[str] | None, Field(
     description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
                 "root structure's name may be left out); default: every value.")]
@@ -134,14 +138,17 @@ def build_server(root: str, budget: float = 1.0,
     @server.tool(structured_output=False, annotations=writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                width: Width = 800, overrides: Overrides = None, style: Style = "preview",
-               budget: Budget = None) -> list:
+               budget: Budget = None, assembled: Assembled = False) -> list:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
-        .png, .stl, .3mf).  `style`: preview (filled) or laser (hairlines).  When the program
-        has errors there is no picture, only the diagnostics."""
+        .png, .stl, .3mf, .step, .glb).  `style`: preview (filled) or laser (hairlines).
+        `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
+        boxed in red.  When the program has errors there is no picture, only the
+        diagnostics."""
         try:
-            doc, png = T.render(ws, source, path, output, width, overrides, budget, style)
+            doc, png = T.render(ws, source, path, output, width, overrides, budget, style,
+                                assembled)
         except T.Refused as e:
             raise refused(e) from None
         return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]

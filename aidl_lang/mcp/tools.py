@@ -147,33 +147,44 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
 
 def render(ws: Workspace, source: str | None = None, path: str | None = None,
            output: str | None = None, width: int = 800, overrides: dict | None = None,
-           budget: float | None = None, style: str = "preview") -> tuple[dict, bytes | None]:
+           budget: float | None = None, style: str = "preview",
+           assembled: bool = False) -> tuple[dict, bytes | None]:
     """Compile and draw: ``(summary, png)``; ``png`` is ``width`` pixels wide (None when the
     program has errors).  ``output``: also write the drawing there (``.svg``, ``.dxf``,
-    ``.png``, ...; inside the allowed folder, with ``aidl render``'s file safety)."""
+    ``.png``, ...; inside the allowed folder, with ``aidl render``'s file safety).
+    ``assembled``: the picture (and a 3D or PNG ``output``) is the assembled product, every
+    part placed by its ``Place``, collisions boxed in red; an SVG or DXF ``output`` is
+    refused."""
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
         raise Refused("style is `preview` or `laser`")
     target = ws.inside(output) if output is not None else None
+    if assembled and target is not None:
+        from ..output.formats import ASSEMBLED_FORMATS
+        if target.suffix.lower() not in ASSEMBLED_FORMATS:
+            raise Refused(f"assembled, the output is .stl, .3mf, .step, .glb or .png, not "
+                          f"`{target.suffix}` (SVG and DXF are the flat parts)")
     r = ws.compile(source, path, overrides, budget)
     doc = _summary(ws, r)
     if not r.ok:
         return doc, None
     from ..output import MissingDependency, OutputError
     try:
-        png = r.to_png(width=width, style=style)
+        png = (r.encode("png", width=width, assembled=True) if assembled
+               else r.to_png(width=width, style=style))
         if target is not None:
             prog = None if path is None else str(ws.inside(path))
             from ..api import check_output_path
             out = check_output_path(target, prog)
-            data = r.encode(out.suffix, style=style, width=width)
+            data = r.encode(out.suffix, style=style, width=width, assembled=assembled)
             _write_inside(ws, target, data, prog, output)
             doc["written"] = ws.relative(out)
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e)) from None
     doc["parts"] = [p.to_json() for p in r.parts]
-    doc["image"] = {"format": "png", "width": width}
+    doc["image"] = {"format": "png", "width": width,
+                    "view": "assembled" if assembled else "flat"}
     return doc, png
 
 
