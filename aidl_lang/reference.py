@@ -542,6 +542,20 @@ children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP
 3 mm) and the thickness of `aidl parts`. No effect on 2D outputs. `aidl render --thickness`
 overrides it. A positive length known before solving.
 """, ["material thickness", "extrude", "extrusion", "depth"]),
+    "assembled": ("statement", "The assembled product: parts placed in 3D with `Place`, "
+                  "written by `aidl render --assembled`, checked for fit.", """
+`Place(part, position=(x, y, z), rotation=(rx, ry, rz))` in the assembly that holds the part
+(or an assembly) places it in 3D: its point (x, y) of the sheet, relative to its frame, with z
+up through its `thickness`, is turned about x, then y, then z and moved by `position`
+(lengths and angles known before solving; a part is placed once). Unplaced parts stay as on
+the sheet. `aidl render FILE --assembled -o box.3mf` (or .step, .glb, .stl; .png for a
+picture) writes every part extruded and placed, one named object per part. The fit check
+warns W0517 when two placed parts collide (a slot narrower than its partner's thickness, with
+the figure) and W0518 when a part touches no other (a tab short of its slot, with the gap).
+`finger_box` in std/joints.aidl places its panels; examples/phone_stand.aidl is a
+cross-halving joint.
+""", ["assembly 3d", "3d", "place", "placement", "assemble", "fit check", "collision", "W0517",
+      "W0518"]),
     "solid": ("statement", "`solid NAME { ... }`: filled material, minus its hole children.", """
 `solid NAME { ... }`: the union of its own shapes and its solid children (touching or
 overlapping shapes merge into one outline), minus its `hole` children. A hole cuts the solid
@@ -750,6 +764,10 @@ EXAMPLES: dict[str, str] = {
     "AlignBottom": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
                                 "AlignBottom(board, post)"),
     # operations
+    "Place": "thickness 3 mm\n\nassembly kit {\n    solid base { r = Rectangle(center=(0, 0), "
+             "width=60, height=40) }\n    solid wall { r = Rectangle(center=(0, 15), width=60, "
+             "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"
+             "    Place(wall, rotation=(90 deg, 0, 0), position=(0, 20, 3))\n}\n",
     "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
     "LinearPattern": _HOLES.format(line="row = LinearPattern(h, 5, (10, 0))"),
     "CircularPattern": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
