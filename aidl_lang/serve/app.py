@@ -8,6 +8,8 @@ Routes (all GET, plus one WebSocket):
 * ``/api/state``: the current view (SVG, diagnostics, params, degrees of freedom) as JSON.
 * ``/download/FORMAT?set=NAME=VALUE...``: the watched file rendered with those values, in a
   format the output package writes (see :func:`writers`); a fresh compile, like ``aidl render``.
+  ``/download/glb`` is the assembled product, which the page's 3D view (``static/view3d.js``,
+  three.js vendored beside it) loads on every new picture while it is shown.
 * ``/ws``: a WebSocket.  The server pushes ``{"type": "view", ...}`` after every recompile (a
   save of the file, from any editor, seen by ``watchfiles``); the page sends
   ``{"type": "set", "id": N, "values": {NAME: "172.5mm"}}`` for the customizer and gets the
@@ -42,7 +44,8 @@ MAX_VALUE = 256         # characters of one value
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "svg": "image/svg+xml", "png": "image/png",
          "dxf": "application/dxf", "stl": "model/stl", "json": "application/json",
-         "3mf": "model/3mf", "step": "model/step", "stp": "model/step"}
+         "3mf": "model/3mf", "step": "model/step", "stp": "model/step", "glb": "model/gltf-binary",
+         "txt": "text/plain; charset=utf-8"}
 
 
 def static_files() -> dict[str, bytes]:
@@ -55,16 +58,18 @@ def writers() -> dict[str, object]:
     """Output formats for downloads: extension -> ``f(drawing, title) -> bytes``.
 
     Every format of :data:`aidl_lang.output.FORMATS` (the ones ``aidl render`` writes by
-    extension: svg, dxf, png, stl, 3mf, step): the drawing becomes the exact output model
+    extension: svg, dxf, png, stl, 3mf, step, glb): the drawing becomes the exact output model
     (:func:`aidl_lang.output.build`), the cutting formats with the program's ``kerf`` applied,
-    and is encoded by the same writer the CLI uses.  A format
+    and is encoded by the same writer the CLI uses; GLB is the assembled product (every part
+    placed by its ``Place``, as ``aidl render --assembled``), which the page's 3D view loads.  A format
     whose optional library is missing raises :class:`aidl_lang.output.MissingDependency`."""
     def writer(suffix: str):
         def write(d, title):
             out = output.build(d, title)
             if suffix in output.CUT_FORMATS:       # the program's `kerf`, as `aidl render`
                 out = output.for_cutting(out)
-            return output.encode(out, suffix)
+            # GLB is the assembled product (the page's 3D view), the others as on the sheet
+            return output.encode(out, suffix, output.Options(assembled=suffix == ".glb"))
         return write
     return {s.lstrip("."): writer(s) for s in output.FORMATS}
 

@@ -56,6 +56,7 @@ function onView(v) {
   $("stale").textContent = v.ok ? "" : v.svg
     ? "showing the last good picture: the program has errors"
     : "no picture yet: the program has not compiled without errors since `aidl serve` started; fix the errors listed on the right";
+  if (v.ok && !$("viewer3d").hidden) load3d();
   showParams(v.params, v.values, !own);
   showDiagnostics(v.diagnostics);
   showSource(v.source, v.diagnostics);
@@ -142,6 +143,7 @@ const endDrag = () => { drag = null; $("viewer").classList.remove("dragging"); }
 $("viewer").addEventListener("pointerup", endDrag);
 $("viewer").addEventListener("pointercancel", endDrag);
 $("fit").onclick = () => {
+  if (!$("viewer3d").hidden) { if (window.aidl3d) window.aidl3d.frame(); return; }
   state.userBox = null;
   const svg = $("viewer").querySelector("svg");
   if (svg && svg.dataset.fit) svg.setAttribute("viewBox", svg.dataset.fit);
@@ -270,6 +272,22 @@ function updateSetLine() {
   const q = Object.entries(chosen()).map(([k, v]) => "set=" + encodeURIComponent(`${k}=${v}`)).join("&");
   for (const a of $("downloads").querySelectorAll("a")) a.href = `/download/${a.dataset.fmt}` + (q ? "?" + q : "");
 }
+
+// ------------------------------------------------------------------ the assembled 3D view
+function glbUrl() {   // the assembled product with the customizer's values (view3d.js loads it)
+  const q = Object.entries(chosen()).map(([k, v]) => "set=" + encodeURIComponent(`${k}=${v}`)).join("&");
+  return "/download/glb" + (q ? "?" + q : "");
+}
+
+function load3d() { if (window.aidl3d) window.aidl3d.load(glbUrl()); }
+
+$("mode3d").onclick = () => {
+  const on = $("viewer3d").hidden;          // switch to 3D, or back to the flat sheet
+  $("viewer3d").hidden = !on;
+  $("viewer").hidden = on;
+  $("mode3d").setAttribute("aria-pressed", String(on));
+  if (on) load3d();
+};
 
 $("copy").onclick = async () => {
   const text = $("setline").value;

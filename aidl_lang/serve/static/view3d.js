@@ -1,0 +1,95 @@
+// aidl serve: the assembled product in 3D (three.js, vendored beside this file; MIT, see
+// three-LICENSE.txt). The server's GLB (/download/glb: every part extruded by its thickness,
+// placed by its `Place`, one named node per part in the flat view's colours) is loaded into a
+// scene with orbit (drag), zoom (wheel) and pan (right-drag); app.js calls load() on every new
+// picture while the 3D view is shown, and the camera stays where the user left it.
+import * as THREE from "three";
+import { GLTFLoader } from "/static/GLTFLoader.js";
+import { OrbitControls } from "/static/OrbitControls.js";
+
+const host = document.getElementById("viewer3d");
+const state = { renderer: null, scene: null, camera: null, controls: null, root: null,
+                framed: false, seq: 0 };
+// read by the browser test: loads finished, the part names and their colours, the last error
+window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame };
+
+function init() {
+  const r = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  r.setPixelRatio(window.devicePixelRatio || 1);
+  host.appendChild(r.domElement);
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e7);
+  camera.up.set(0, 0, 1);                       // the product's z is up (z = 0: the table)
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+  sun.position.set(-0.6, -1, 1.4);
+  camera.add(sun);                              // a light that turns with the view
+  scene.add(camera);
+  const controls = new OrbitControls(camera, r.domElement);
+  controls.enableDamping = false;
+  Object.assign(state, { renderer: r, scene, camera, controls });
+  new ResizeObserver(resize).observe(host);
+  resize();
+  r.setAnimationLoop(() => { controls.update(); r.render(scene, camera); });
+}
+
+function resize() {
+  const w = host.clientWidth || 1, h = host.clientHeight || 1;
+  state.renderer.setSize(w, h, false);
+  state.renderer.domElement.style.width = "100%";
+  state.renderer.domElement.style.height = "100%";
+  state.camera.aspect = w / h;
+  state.camera.updateProjectionMatrix();
+}
+
+function frame() {    // look at the whole product from above its front-left corner
+  if (!state.root) return;
+  const box = new THREE.Box3().setFromObject(state.root);
+  const c = box.getCenter(new THREE.Vector3());
+  const r = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
+  const d = r / Math.sin((state.camera.fov * Math.PI) / 360) * 1.1;
+  state.camera.position.copy(c).add(new THREE.Vector3(-0.55, -0.75, 0.45).normalize().multiplyScalar(d));
+  state.camera.near = d / 1000; state.camera.far = d * 100;
+  state.camera.updateProjectionMatrix();
+  state.controls.target.copy(c);
+  state.controls.update();
+}
+
+async function load(url) {
+  if (!state.renderer) init();
+  const seq = ++state.seq;
+  try {
+    const gltf = await new GLTFLoader().loadAsync(url);
+    if (seq !== state.seq) return;               // a newer picture was asked for meanwhile
+    if (state.root) {
+      state.scene.remove(state.root);
+      state.root.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+    }
+    state.root = gltf.scene;
+    const parts = [], colours = {};
+    const nodes = gltf.parser.json.nodes || [];
+    state.root.traverse((o) => {
+      if (!o.isMesh) return;
+      // the part's name as the server wrote it (three.js drops the dots of `kit.box.lid`)
+      const at = gltf.parser.associations.get(o) || gltf.parser.associations.get(o.parent) || {};
+      const name = (nodes[at.nodes] && nodes[at.nodes].name) || o.name;
+      // each part is one colour (its vertex colours, sRGB bytes): a matte material of it,
+      // flat-shaded, so the faces of a panel read as in the flat view's colours
+      const col = o.geometry.getAttribute("color");
+      const colour = new THREE.Color(0x607d8b);
+      if (col) colour.setRGB(col.getX(0), col.getY(0), col.getZ(0), THREE.SRGBColorSpace);
+      o.material = new THREE.MeshStandardMaterial({ color: colour, roughness: 0.9, metalness: 0,
+                                                    flatShading: true, side: THREE.DoubleSide });
+      o.name = name;
+      parts.push(name);
+      colours[name] = "#" + colour.getHexString(THREE.SRGBColorSpace);
+    });
+    state.scene.add(state.root);
+    if (!state.framed) { frame(); state.framed = true; }
+    Object.assign(window.aidl3d, { parts, colours, error: null });
+    window.aidl3d.loaded += 1;
+  } catch (e) {
+    window.aidl3d.error = String(e && e.message || e);
+  }
+}
