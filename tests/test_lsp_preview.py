@@ -129,3 +129,27 @@ def test_the_cache_keeps_the_last_documents_only(tmp_path):
                    cache=cache)
     assert r["stale"] and r["svg"] == cache.good["file:///b.aidl"]["svg"]
     assert list(cache.good) == ["file:///c.aidl", "file:///b.aidl"]
+
+
+@pytest.mark.asyncio
+async def test_preview_request_assembled_carries_the_glb(client: LanguageClient):
+    """`"assembled": true`: the result's `glb` is the phone stand placed in 3D (trimesh reads
+    two named nodes; the foot turned a quarter about z); without it there is none."""
+    import base64
+
+    import trimesh
+    path = ROOT / "examples" / "phone_stand.aidl"
+    uri = path.as_uri()
+    client.text_document_did_open(T.DidOpenTextDocumentParams(
+        text_document=T.TextDocumentItem(uri=uri, language_id="aidl-cad", version=1,
+                                         text=path.read_text())))
+    r = pv.plain(await client.protocol.send_request_async("aidl/preview", {"uri": uri}))
+    assert r["ok"] and "glb" not in r
+    r = pv.plain(await client.protocol.send_request_async(
+        "aidl/preview", {"uri": uri, "assembled": True, "values": {"slot": "2.5 mm"}}))
+    assert r["ok"] and r["diagnostics"]["first"]["code"] == "W0517"
+    sc = trimesh.load(io.BytesIO(base64.b64decode(r["glb"])), file_type="glb")
+    assert sorted(sc.graph.nodes_geometry) == ["stand.foot", "stand.support"]
+    T_, g = sc.graph["stand.foot"]
+    v = trimesh.transform_points(sc.geometry[g].vertices, T_)
+    assert abs(v[:, 0].min() + 1.5) < 1e-5 and abs(v[:, 1].max() - 35) < 1e-5

@@ -2,7 +2,8 @@
 
 A custom language-server request (registered in :mod:`.server`).  Params::
 
-    {"uri": "file:///.../part.aidl", "values": {"width": "40 mm", ...}}   # values optional
+    {"uri": "file:///.../part.aidl", "values": {"width": "40 mm", ...},   # values optional
+     "assembled": true}                                                    # optional
 
 Result (JSON)::
 
@@ -15,7 +16,8 @@ Result (JSON)::
                  "declared", "range"}],
      "values": {...},           # the overrides the picture was drawn with
      "diagnostics": {"errors", "warnings", "first": {"code", "message", "range"} | null},
-     "ms": compile time in milliseconds}
+     "ms": compile time in milliseconds,
+     "glb": base64 GLB of the assembled product (only with "assembled": true and ok)}
 
 The SVG is ``aidl_lang.compile(...).to_svg(kerf=0)`` — what ``aidl render FILE --set ...``
 writes, at the designed size (a program's ``kerf`` is left out, so the picture matches the
@@ -34,6 +36,11 @@ document (``stale: true``) and the diagnostics' summary, so the preview does not
 the user types.  Param definitions (name, kind, range for a slider: ``min=``/``max=``/``step=``
 from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.api.declared_params`)
 come from an interpretation of the document with its own values, made once per text.
+
+With ``"assembled": true`` the result also carries ``glb``: the assembled product (every part
+extruded by its thickness and placed by its ``Place``, one named node per part in the flat
+view's colours; what ``aidl render --assembled -o X.glb`` writes), base64, for the preview's
+3D view.
 """
 from __future__ import annotations
 
@@ -86,9 +93,10 @@ def plain(obj):
 
 
 def preview(source: str, path: str, uri: str, version: int | None = None,
-            values: dict | None = None, cache: Cache = CACHE) -> dict:
+            values: dict | None = None, cache: Cache = CACHE, assembled: bool = False) -> dict:
     """The ``aidl/preview`` result for ``source`` (named ``path``) with the param ``values``
-    (``--set`` texts or numbers in the file's units).  Never raises for a bad program."""
+    (``--set`` texts or numbers in the file's units); ``assembled``: also ``glb``, the
+    assembled product (base64).  Never raises for a bad program."""
     import aidl_lang
     t0 = time.perf_counter()
     values = {str(k): str(v) for k, v in (values or {}).items() if v is not None}
@@ -103,6 +111,9 @@ def preview(source: str, path: str, uri: str, version: int | None = None,
             out["svg"] = svg.replace("</svg>", overlay + "</svg>") if overlay else svg
             out["shapes"] = shapes
             cache.good[uri] = {k: out[k] for k in ("svg", "shapes", "values", "version")}
+            if assembled:
+                import base64
+                out["glb"] = base64.b64encode(r.encode("glb", assembled=True)).decode("ascii")
         except Exception as e:   # noqa: BLE001 - an output that cannot be drawn is a message
             out["ok"] = False
             out["diagnostics"]["errors"] += 1
@@ -279,7 +290,7 @@ async def handle(ls, params) -> dict:
         path = doc.path or "untitled.aidl"
         loop = asyncio.get_running_loop()
         return await loop.run_in_executor(None, preview, doc.source, path, uri, doc.version,
-                                          values)
+                                          values, CACHE, p.get("assembled") is True)
 
 
 __all__ = ["preview", "handle", "params", "plain", "Cache", "CACHE"]
