@@ -151,7 +151,7 @@ function openPreview(uri) {
   const key = doc.uri.toString();
   let p = previews.get(key);
   if (p) { p.reveal(); return p; }
-  p = new Preview(doc, () => client, log, (gone) => previews.delete(gone.uri));
+  p = new Preview(doc, () => client, log, (gone) => previews.delete(gone.uri), extensionPath);
   previews.set(key, p);
   return p;
 }
@@ -244,7 +244,10 @@ async function explain(code) {
   return r;
 }
 
+let extensionPath = null;        // the extension's folder (three.js for the preview's 3D view)
+
 async function activate(context) {
+  extensionPath = context.extensionPath || null;
   output = vscode.window.createOutputChannel('AIDL');
   status = vscode.window.createStatusBarItem(vscode.StatusBarAlignment.Right, 100);
   status.name = 'AIDL language server';

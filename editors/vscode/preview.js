@@ -7,7 +7,8 @@
 // Extension -> page messages: {type: 'update', result} (the request's result), {type: 'cursor',
 // line, character}, {type: 'error', message}. Page -> extension: {type: 'ready'},
 // {type: 'values', values} (slider values, `--set` texts), {type: 'reveal', range},
-// {type: 'render', format}.
+// {type: 'render', format}, {type: 'assembled', on} (the 3D button: ask for the assembled
+// product's GLB with every picture while on).
 'use strict';
 const vscode = require('vscode');
 const path = require('node:path');
@@ -16,8 +17,9 @@ const crypto = require('node:crypto');
 const DEBOUNCE_MS = 120;        // quiet after a keystroke before the picture is asked for
 
 class Preview {
-  // getClient(): the running LanguageClient or undefined; log(line): the output channel.
-  constructor(document, getClient, log, onDispose) {
+  // getClient(): the running LanguageClient or undefined; log(line): the output channel;
+  // extensionPath: the extension's folder (three.js for the 3D view is in its node_modules).
+  constructor(document, getClient, log, onDispose, extensionPath) {
     this.uri = document.uri.toString();
     this.document = document;
     this.getClient = getClient;
@@ -27,10 +29,13 @@ class Preview {
     this.pending = false;
     this.timer = null;
     this.last = null;             // the last result posted
+    this.assembled = false;       // the 3D view is shown: ask for the assembled product too
+    const three = extensionPath ? vscode.Uri.file(path.join(extensionPath, 'node_modules', 'three')) : null;
     this.panel = vscode.window.createWebviewPanel('aidlPreview', title(document),
       { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true },
-      { enableScripts: true, retainContextWhenHidden: true, localResourceRoots: [] });
-    this.panel.webview.html = html(this.panel.webview.cspSource);
+      { enableScripts: true, retainContextWhenHidden: true, localResourceRoots: three ? [three] : [] });
+    const threeBase = three ? String(this.panel.webview.asWebviewUri(three)).replace(/\/$/, '') : null;
+    this.panel.webview.html = html(this.panel.webview.cspSource, threeBase);
     const subs = [];
     subs.push(this.panel.webview.onDidReceiveMessage((m) => this.receive(m)));
     subs.push(vscode.workspace.onDidChangeTextDocument((e) => {
@@ -75,7 +80,8 @@ class Preview {
       this.post({ type: 'error', message: 'The AIDL language server is not running (see the AIDL output).' });
       return;
     }
-    this.inflight = client.sendRequest('aidl/preview', { uri: this.uri, values: this.values });
+    this.inflight = client.sendRequest('aidl/preview', { uri: this.uri, values: this.values,
+                                                        ...(this.assembled ? { assembled: true } : {}) });
     try {
       const res = await this.inflight;
       if (res && !res.superseded) {
@@ -105,6 +111,9 @@ class Preview {
       const sel = new vscode.Selection(l0, c0, l1, c1);
       ed.selection = sel;
       ed.revealRange(sel, vscode.TextEditorRevealType.InCenterIfOutsideViewport);
+    } else if (m.type === 'assembled') {
+      this.assembled = !!m.on;
+      this.schedule(0);
     } else if (m.type === 'render' && typeof m.format === 'string') {
       vscode.commands.executeCommand('aidl.render', m.format, vscode.Uri.parse(this.uri));
     }
@@ -117,12 +126,77 @@ function title(document) {
   return `Preview ${path.basename(document.uri.fsPath || document.uri.path || 'untitled')}`;
 }
 
-// The page. Everything inline (no CDN, works offline); a nonce-only script policy.
-function html(cspSource) {
+// The 3D view: three.js (the extension's own npm dependency, from its node_modules through
+// the webview's resource URIs; no CDN) shows the assembled product the server sends as base64
+// GLB (`aidl/preview` with `assembled: true`): orbit (drag), zoom (wheel), pan (right-drag),
+// the parts in the flat view's colours; the camera stays put across updates.
+function view3d(threeBase, nonce) {
+  if (!threeBase) return '';
+  return `<script type="importmap" nonce="${nonce}">{"imports": {"three": "${threeBase}/build/three.module.min.js"}}</script>
+<script type="module" nonce="${nonce}">
+import * as THREE from "three";
+import { GLTFLoader } from "${threeBase}/examples/jsm/loaders/GLTFLoader.js";
+import { OrbitControls } from "${threeBase}/examples/jsm/controls/OrbitControls.js";
+const host = document.getElementById("view3d");
+let r = null, scene, camera, controls, root = null, framed = false;
+function init() {
+  r = new THREE.WebGLRenderer({ antialias: true });
+  r.setPixelRatio(window.devicePixelRatio || 1);
+  host.appendChild(r.domElement);
+  scene = new THREE.Scene(); scene.background = new THREE.Color(0xffffff);
+  camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e7); camera.up.set(0, 0, 1);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.6); sun.position.set(-0.6, -1, 1.4);
+  camera.add(sun); scene.add(camera);
+  controls = new OrbitControls(camera, r.domElement);
+  const resize = () => { const w = host.clientWidth || 1, h = host.clientHeight || 1;
+    r.setSize(w, h, false); r.domElement.style.width = "100%"; r.domElement.style.height = "100%";
+    camera.aspect = w / h; camera.updateProjectionMatrix(); };
+  new ResizeObserver(resize).observe(host); resize();
+  r.setAnimationLoop(() => { controls.update(); r.render(scene, camera); });
+}
+function frame() {
+  if (!root) return;
+  const box = new THREE.Box3().setFromObject(root), c = box.getCenter(new THREE.Vector3());
+  const rad = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
+  const d = rad / Math.sin(camera.fov * Math.PI / 360) * 1.1;
+  camera.position.copy(c).add(new THREE.Vector3(-0.55, -0.75, 0.45).normalize().multiplyScalar(d));
+  camera.near = d / 1000; camera.far = d * 100; camera.updateProjectionMatrix();
+  controls.target.copy(c); controls.update();
+}
+function show(b64) {
+  if (!r) init();
+  const bin = atob(b64), buf = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) buf[i] = bin.charCodeAt(i);
+  new GLTFLoader().parse(buf.buffer, "", (gltf) => {
+    if (root) scene.remove(root);
+    root = gltf.scene;
+    const nodes = gltf.parser.json.nodes || [];
+    root.traverse((o) => {
+      if (!o.isMesh) return;
+      const at = gltf.parser.associations.get(o) || {};
+      const col = o.geometry.getAttribute("color"), colour = new THREE.Color(0x607d8b);
+      if (col) colour.setRGB(col.getX(0), col.getY(0), col.getZ(0), THREE.SRGBColorSpace);
+      o.material = new THREE.MeshStandardMaterial({ color: colour, roughness: 0.9, metalness: 0,
+                                                    flatShading: true, side: THREE.DoubleSide });
+      o.name = (nodes[at.nodes] && nodes[at.nodes].name) || o.name;
+    });
+    scene.add(root);
+    if (!framed) { frame(); framed = true; }
+    document.body.dataset.loaded3d = String(Number(document.body.dataset.loaded3d || 0) + 1);
+  }, (e) => { document.body.dataset.error3d = String(e && e.message || e); });
+}
+window.aidl3d = { show, frame };
+</script>`;
+}
+
+// The page. Everything inline or from the extension's own folder (no CDN, works offline); a
+// nonce-only script policy.
+function html(cspSource, threeBase) {
   const nonce = crypto.randomBytes(16).toString('base64');
   return `<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
-<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src data: ${cspSource}; style-src 'unsafe-inline' ${cspSource}; script-src 'nonce-${nonce}';">
+<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src data: ${cspSource}; style-src 'unsafe-inline' ${cspSource}; script-src 'nonce-${nonce}' ${cspSource};">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>AIDL preview</title>
 <style>
@@ -148,6 +222,9 @@ function html(cspSource) {
   #view { position: absolute; inset: 0; padding: 8px; box-sizing: border-box; }
   #view svg { width: 100%; height: 100%; display: block; }
   #view.stale svg { opacity: .45; }
+  #view3d { position: absolute; inset: 0; }
+  #view3d canvas { display: block; }
+  [hidden] { display: none !important; }
   #empty { padding: 1em; opacity: .7; }
   #aidl-shapes .aidl-shape, #aidl-shapes .aidl-stroke { cursor: pointer; }
   #aidl-shapes .hover { stroke: rgba(255, 143, 0, .6); }
@@ -158,10 +235,12 @@ function html(cspSource) {
 <body>
 <header><span id="status">Compiling&hellip;</span><span id="hover"></span>
   <button id="reset" title="Back to the file's values" hidden>Reset</button>
+  <button id="mode3d" title="The parts placed in 3D by their Place (aidl render --assembled); again: the flat sheet"${threeBase ? '' : ' hidden'}>3D</button>
   <button id="svg" title="Render to SVG (aidl render)">SVG</button>
   <button id="dxf" title="Render to DXF (aidl render)">DXF</button></header>
 <section id="params"></section>
-<main><div id="view"><div id="empty">Waiting for the language server&hellip;</div></div></main>
+<main><div id="view"><div id="empty">Waiting for the language server&hellip;</div></div><div id="view3d" hidden></div></main>
+${view3d(threeBase, nonce)}
 <script nonce="${nonce}">
 (function () {
   const vscode = acquireVsCodeApi();
@@ -312,10 +391,17 @@ function html(cspSource) {
     }
     renderParams(r.params || []);
     highlight();
+    if (r.glb && !$('view3d').hidden && window.aidl3d) window.aidl3d.show(r.glb);
   }
 
   $('status').addEventListener('click', () => { if (firstError && firstError.range) vscode.postMessage({ type: 'reveal', range: firstError.range }); });
   $('reset').addEventListener('click', () => { values = {}; params = []; send(); });
+  $('mode3d').addEventListener('click', () => {
+    const on = $('view3d').hidden;
+    $('view3d').hidden = !on; $('view').hidden = on;
+    $('mode3d').textContent = on ? 'Flat' : '3D';
+    vscode.postMessage({ type: 'assembled', on });
+  });
   $('svg').addEventListener('click', () => vscode.postMessage({ type: 'render', format: 'svg' }));
   $('dxf').addEventListener('click', () => vscode.postMessage({ type: 'render', format: 'dxf' }));
   window.addEventListener('message', (ev) => {
