@@ -148,7 +148,8 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
                     touching.update((i, j))
                     continue
             if i not in touching or j not in touching:
-                if ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
+                # faces in contact leave a common part of no volume; else ask how far apart
+                if not common.is_empty() or ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
                     touching.update((i, j))
     gaps = []
     if n >= 2:
