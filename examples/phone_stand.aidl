@@ -12,8 +12,8 @@ param slot = 3 mm, min = 1 mm, max = 6 mm, step = 0.5 mm
 param angle = 70 deg, min = 50 deg, max = 80 deg, step = 5 deg
 thickness 3 mm
 
-t = 3 mm          # the material
-foot_h = 40 mm    # the foot's height: the pieces overlap over it, each slot half of it
+t = 3 mm        # the material
+foot_h = 40 mm  # the foot's height: the pieces overlap over it, each slot half of it
 
 assembly stand {
     # the leaning back, with a lip at its foot for the phone to rest on
