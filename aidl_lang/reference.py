@@ -764,6 +764,9 @@ EXAMPLES: dict[str, str] = {
     "AlignBottom": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
                                 "AlignBottom(board, post)"),
     # operations
+    "assembled": "import \"std/joints.aidl\"\n\nthickness 3 mm\n\n# aidl render FILE --assembled "
+                 "-o box.3mf: the six panels folded up\nassembly kit {\n    box = finger_box("
+                 "length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm)\n}\n",
     "Place": "thickness 3 mm\n\nassembly kit {\n    solid base { r = Rectangle(center=(0, 0), "
              "width=60, height=40) }\n    solid wall { r = Rectangle(center=(0, 15), width=60, "
              "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"

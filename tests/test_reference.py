@@ -32,7 +32,7 @@ def run_cli(*args):
 def test_every_registry_name_statement_and_template_has_a_topic():
     ts = topics()
     for name in ENTRIES:
-        assert name in ts and ts[name].kind in ("shape", "constraint", "structural relation",
+        assert name in ts and ts[name].kind in ("shape", "constraint", "structural relation", "3D placement",
                                                 "operation"), name
     for name in STATEMENTS:
         assert ts[name].kind == "statement"
