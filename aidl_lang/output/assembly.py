@@ -2,7 +2,7 @@
 (docs/language.md, "Placing parts in 3D"), as GLB (one named node per part, in the flat
 assembly view's colours), the fit check on it with Manifold's 3D booleans (W0517 parts that
 collide, W0518 a part that reaches no other), and a picture of it (PNG: the triangles projected
-and sorted back to front, rasterised by cairosvg like the flat PNG).
+and painted back to front with Pillow).
 
 Placements come from the booleans' :attr:`~.booleans.Drawing.placement` (a 4x4 matrix per
 part from the flat sheet to the product); without any ``Place`` each part stays where it is on
@@ -228,9 +228,10 @@ def to_png(output: Output, thickness: float | None = None, width: int = 800,
            highlight=None) -> bytes:
     """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
     each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
-    a 24th of the largest part's size and drawn back to front (painter's order) as SVG polygons, rasterised by ``cairosvg`` as
-    :mod:`.png` does.  ``highlight``: :class:`Collision` s drawn over it as red boxes.
-    ``width`` in pixels."""
+    a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
+    at twice the size and scaled down (antialiasing).  ``highlight``: :class:`Collision` s
+    drawn over it as red boxes (None: those the fit check finds).  ``width`` in pixels (16 to
+    4096).  Raises :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
     import math
 
     if not 16 <= width <= 4096:
@@ -268,15 +269,18 @@ def to_png(output: Output, thickness: float | None = None, width: int = 800,
         shade = 0.45 + 0.55 * np.clip(nrm @ light, 0.0, 1.0)
         depth = (P.mean(axis=1) @ fwd)
         base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
-        for k in range(len(P)):
-            tris.append((depth[k], P[k], base * shade[k]))
+        tris.append((depth, P, shade[:, None] * base[None, :]))
     boxes = []
     for c in highlight:
         x0, y0, z0, x1, y1, z1 = c.box
         boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
-    pts = [t[1] for t in tris] + boxes
+    pts = [t[1] for t in tris if len(t[1])] + boxes
     if not pts:
-        return _svg_to_png('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>')
+        Image, _ = _pil()
+        import io
+        buf = io.BytesIO()
+        Image.new("RGB", (width, width // 2), "white").save(buf, format="PNG")
+        return buf.getvalue()
     allp = np.concatenate([p.reshape(-1, 3) for p in pts])
     X, Y = allp @ right, allp @ up
     x0, x1, y0, y1 = X.min(), X.max(), Y.min(), Y.max()
@@ -285,32 +289,44 @@ def to_png(output: Output, thickness: float | None = None, width: int = 800,
     scale = (width - 2) / (x1 - x0 + 2 * margin or 1.0)
     height = max(1, int(round((y1 - y0 + 2 * margin) * scale)))
 
-    def xy(p):
-        return (f"{(p @ right - x0 + margin) * scale:.2f},"
-                f"{(y1 + margin - p @ up) * scale:.2f}")
-    body = []
-    for _, P, rgb in sorted(tris, key=lambda t: t[0]):
-        fill = "#%02x%02x%02x" % tuple(int(min(255, max(0, c))) for c in rgb)
-        body.append(f'<polygon points="{xy(P[0])} {xy(P[1])} {xy(P[2])}" fill="{fill}" '
-                    f'stroke="{fill}" stroke-width="0.6" stroke-linejoin="round"/>')
+    Image, ImageDraw = _pil()
+    k = 2                                           # drawn twice as large, then scaled down
+    img = Image.new("RGB", (width * k, height * k), "white")
+    draw = ImageDraw.Draw(img)
+
+    def xy(P):
+        P = np.atleast_2d(P)
+        u = ((P @ right) - x0 + margin) * scale * k
+        v = (y1 + margin - (P @ up)) * scale * k
+        return [(float(a), float(b)) for a, b in zip(u, v)]
+    depth = np.concatenate([t[0] for t in tris]) if tris else np.zeros(0)
+    if len(depth):
+        P = np.concatenate([t[1] for t in tris])
+        rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8)
+        order = np.argsort(depth, kind="stable")                 # farthest first
+        uv = np.stack([((P @ right) - x0 + margin) * scale * k,
+                       (y1 + margin - (P @ up)) * scale * k], axis=-1)[order]
+        for flat, fill in zip(uv.reshape(len(uv), 6).tolist(), map(tuple, rgb[order].tolist())):
+            draw.polygon(flat, fill=fill, outline=fill)
     edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
              (5, 7), (6, 7))
     for B in boxes:
         for i, j in edges:
-            body.append(f'<polyline points="{xy(B[i])} {xy(B[j])}" fill="none" '
-                        'stroke="#ff0000" stroke-width="3"/>')
-    svg = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'viewBox="0 0 {width} {height}"><rect width="100%" height="100%" fill="#ffffff"/>'
-           + "".join(body) + "</svg>")
-    return _svg_to_png(svg)
+            draw.line(xy(np.array([B[i], B[j]])), fill=(255, 0, 0), width=3 * k)
+    img = img.resize((width, height), Image.LANCZOS)
+    import io
+    buf = io.BytesIO()
+    img.save(buf, format="PNG")
+    return buf.getvalue()
 
 
-def _svg_to_png(svg: str) -> bytes:
+def _pil():
+    """Pillow (installed with the ``png`` extra, which cairosvg needs), or
+    :class:`~.part.MissingDependency` naming the install line."""
     try:
-        import cairosvg
-    except (ImportError, OSError) as e:      # OSError: the cairo C library is missing
+        from PIL import Image, ImageDraw
+    except ImportError:
         from .part import MissingDependency
-        raise MissingDependency(
-            "PNG output needs cairosvg and the cairo library: pip install 'aidl-lang[png]' "
-            f"(and apt-get install libcairo2 on Debian/Ubuntu) ({e})") from None
-    return cairosvg.svg2png(bytestring=svg.encode(), background_color="white")
+        raise MissingDependency("an assembled PNG needs Pillow: pip install 'aidl-lang[png]'"
+                                ) from None
+    return Image, ImageDraw
