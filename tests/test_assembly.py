@@ -73,6 +73,7 @@ def test_place_errors_are_located(compile_text):
         ("Place(a, position=(a.r.width, 0, 0))", "E0109", "known before solving", "(a.r.width"),
         ("Place(a)\n    Place(a, position=(0, 0, 3))", "E0108", "already placed, on line 4",
          "Place(a, position"),
+        ("Place(a, position=(2e9, 0, 0))", "E0305", "beyond the model extent", "(2e9"),
     ]
     for stmt, code, words, at in cases:
         src = ("assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=20, height=10) }\n"

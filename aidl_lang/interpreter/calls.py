@@ -194,7 +194,12 @@ class Calls:
                 raise EvalError("E0109", f"`{what}` of `Place` must be known before solving",
                                 span, hint="use numbers and params: a placement is not solved")
             scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN else DEG)
-            out.append(float(c) * scale)
+            v = float(c) * scale
+            if dim is LEN and not abs(v) <= MAX_EXTENT:
+                raise EvalError("E0305", f"`position` of `Place` is {v:g} mm, beyond the model "
+                                f"extent of {MAX_EXTENT:g} mm", span,
+                                hint="place parts within 1 km of the origin")
+            out.append(v)
         return tuple(out)
 
     def _primitive(self, kind, conv, node, spans):
