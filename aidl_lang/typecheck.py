@@ -39,7 +39,6 @@ HALLUCINATIONS = {
     "Translate": "there is no Translate: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
     "Move": "there is no Move: give a starting position and relate parts with constraints (Above, LeftOf, Coincident, ...)",
     "Position": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
-    "Place": "positions are arguments (`center=(x, y)`); relate parts with constraints (Above, LeftOf, Coincident, ...)",
     "Union": _BOOL,
     "Combine": _BOOL,
     "Merge": _BOOL,

@@ -86,8 +86,9 @@ Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a 
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts get W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` lays them out flat for cutting).
-`Place(part, position=(x, y, z), rotation=(rx, ry, rz))` in its assembly places a part in 3D
-(numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing. `aidl check` ends
+- Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
+(numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
+`aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
 turn; the program is valid, but pin what matters with constraints.
 `aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).

@@ -25,10 +25,10 @@ syntax keyword aidlCadConstraint CornerPattern Diameter Distance DistanceX Dista
 syntax keyword aidlCadConstraint Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered
 syntax keyword aidlCadConstraint Inside IntendedOverlap Join LeftOf Length LinearPattern Lock Midpoint
 syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine OnTopOf
-syntax keyword aidlCadConstraint Orthogonal Over OverlapOK Parallel Perpendicular PlaceAt PointOnLine Radius
-syntax keyword aidlCadConstraint RectangularPattern RightOf Rigid RigidGroup Same Symmetric Taller Tangent
-syntax keyword aidlCadConstraint ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance VerticallyCentered Wider
-syntax keyword aidlCadConstraint Within
+syntax keyword aidlCadConstraint Orthogonal Over OverlapOK Parallel Perpendicular Place PlaceAt PointOnLine
+syntax keyword aidlCadConstraint Radius RectangularPattern RightOf Rigid RigidGroup Same Symmetric Taller
+syntax keyword aidlCadConstraint Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance VerticallyCentered
+syntax keyword aidlCadConstraint Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min norm radians range
