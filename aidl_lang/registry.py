@@ -106,6 +106,7 @@ STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
                    "radius": "length", "width": "length", "inner_radius": "length",
                    "outer_radius": "length", "bb": "bbox"}
+SECTOR_MEMBERS = ARCSLOT_MEMBERS
 DERIVED_MEMBERS = {"bb": "bbox"}
 SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
@@ -182,8 +183,10 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
-    "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                 doc="A smooth curve through the points; closed=true: an outline.",
+    "Spline": _p([A("points", "points"), A("closed", "bool", False),
+                  A("corners", "any", None), FLEXIBLE],
+                 doc="A smooth curve through the points; closed=true: an outline; corners: "
+                     "indices of sharp points.",
                  members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
@@ -208,6 +211,11 @@ _DEFS = {
                       "center from start_angle to end_angle (all held); start, end: its end "
                       "caps' centers.",
                   members=ARCSLOT_MEMBERS),
+    "Sector": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
+                  A("end_angle", "angle"), A("inner_radius", "length", 0.0)],
+                 doc="A pie slice counter-clockwise from start_angle to end_angle; "
+                     "inner_radius: an annulus segment.",
+                 members=SECTOR_MEMBERS),
     "Star": _p([A("center", "point"), A("points", "number"), A("outer_radius", "length"),
                 A("inner_radius", "length"), A("rotation", "angle", 0.0)],
                doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
@@ -397,6 +405,13 @@ SYNONYMS: dict[str, str] = {
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
     "BSpline": "Spline",
+    "Wedge": "Sector",
+    "Pie": "Sector",
+    "PieSlice": "Sector",
+    "CircularSector": "Sector",
+    "AnnularSector": "Sector",
+    "AnnulusSegment": "Sector",
+    "RingSegment": "Sector",
     "Interpolate": "Spline",
     "InterpolatedCurve": "Spline",
     "SmoothCurve": "Spline",
@@ -436,6 +451,11 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "ArcSlot": {"position": "center", "at": "center", "start": "start_angle",
                 "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
                 "angle1": "start_angle", "angle2": "end_angle", "path_radius": "radius"},
+    "Sector": {"position": "center", "at": "center", "start": "start_angle",
+               "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
+               "angle1": "start_angle", "angle2": "end_angle", "outer_radius": "radius",
+               "r_outer": "radius", "outer": "radius", "r_inner": "inner_radius",
+               "inner": "inner_radius", "hole_radius": "inner_radius"},
     "Star": {"position": "center", "at": "center", "n_points": "points", "tips": "points",
              "count": "points", "num_points": "points", "r_outer": "outer_radius",
              "r_inner": "inner_radius", "radius": "outer_radius",
@@ -448,7 +468,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
               "wall_thickness": "thickness"},
     "Spline": {"through": "points", "pts": "points", "vertices": "points",
                "fit_points": "points", "through_points": "points", "periodic": "closed",
-               "cyclic": "closed", "is_closed": "closed", "loop": "closed"},
+               "cyclic": "closed", "is_closed": "closed", "loop": "closed",
+               "sharp": "corners", "sharp_points": "corners", "cusps": "corners",
+               "kinks": "corners", "corner_points": "corners", "sharp_corners": "corners"},
     "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",

@@ -464,7 +464,34 @@ def _build_Spline(ctx, g, a):
     _hold_literal_shape(ctx, g, pts_in, pts, a)
     g.data["order"] = [f"p{i}" for i in range(len(pts))]
     g.data["closed"] = closed
+    g.data["corners"] = _spline_corners(ctx, a.get("corners"), len(pts), closed)
     g.closed = closed
+
+
+def _spline_corners(ctx, v, m: int, closed: bool) -> tuple[int, ...]:
+    """``corners=[i, ...]``: indices (0 .. m - 1) of a Spline's points where it turns sharply;
+    an open spline's first and last points are ends already."""
+    if v is None:
+        return ()
+    items = list(v) if isinstance(v, (list, tuple)) else [v]
+    out = []
+    for q in items:
+        c = q.const() if isinstance(q, Q) and q.dim == NUM else None
+        if c is None or abs(c - round(c)) > 1e-9:
+            raise PrimitiveError(f"a Spline's corners are indices of its points (whole numbers "
+                                 f"0 to {m - 1}), got {type_name(q) if c is None else f'{c:g}'}")
+        i = int(round(c))
+        if i < 0:
+            i += m                                  # corners=[-1]: the last point, as lists
+        if not 0 <= i < m:
+            raise PrimitiveError(f"a Spline's corner {int(round(c))} is not one of its points "
+                                 f"(indices 0 to {m - 1})")
+        if not closed and i in (0, m - 1):
+            raise PrimitiveError(f"corner {i} is an end of the open Spline, where it stops "
+                                 f"anyway: name inner points (1 to {m - 2}), or use "
+                                 f"closed=true")
+        out.append(i)
+    return tuple(sorted(set(out)))
 
 
 def _check_polygon_points(ctx, pts) -> None:
@@ -567,6 +594,36 @@ def _build_ArcSlot(ctx, g, a):
     del pts
     g.data["dims"] = {"radius": R, "width": w, "inner_radius": R - w / 2,
                       "outer_radius": R + w / 2}
+    g.data["angles"] = (a1, sweep)
+    g.closed = True
+
+
+def _build_Sector(ctx, g, a):
+    """A pie slice (``inner_radius`` 0) or an annulus segment: the counter-clockwise arc of
+    ``radius`` about center from start_angle to end_angle, closed by two radial lines (to the
+    center, or to the inner arc of ``inner_radius`` back); rigid, every dimension held."""
+    _positive(a["radius"], "radius", "Sector")
+    R = _const(ctx, a["radius"], "radius")
+    r = _const(ctx, a.get("inner_radius", Q.num(0.0, LEN)), "inner_radius")
+    a1 = _const(ctx, a["start_angle"], "Sector start_angle")
+    a2 = _const(ctx, a["end_angle"], "Sector end_angle")
+    if r < 0 or not r < R:
+        raise PrimitiveError(f"a Sector's inner_radius ({r:g} mm) must be 0 (a pie slice) or "
+                             f"between 0 and its radius ({R:g} mm)")
+    sweep = (a2 - a1) % (2 * math.pi)
+    if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
+        raise PrimitiveError("a Sector needs different start and end angles (less than a "
+                             "whole turn apart): for a disc use a Circle, for a ring a "
+                             "Circle with a hole")
+    mid = a1 + sweep / 2
+    offs = {"start": (R * math.cos(a1), R * math.sin(a1)),
+            "end": (R * math.cos(a1 + sweep), R * math.sin(a1 + sweep)),
+            "midpoint": (R * math.cos(mid), R * math.sin(mid))}
+    if r > 0:
+        offs["inner_start"] = (r * math.cos(a1), r * math.sin(a1))
+        offs["inner_end"] = (r * math.cos(a1 + sweep), r * math.sin(a1 + sweep))
+    _rigid(ctx, g, dict(a, rotation=Q.num(0.0, ANG)), offs, "Sector")
+    g.data["dims"] = {"radius": R, "width": R - r, "inner_radius": r, "outer_radius": R}
     g.data["angles"] = (a1, sweep)
     g.closed = True
 
@@ -813,7 +870,7 @@ def member(g: Geometry, name: str, frame):
             return Q.num(g.data["corner_radius"], LEN)
         if name == "corners":
             return [_pv(p, frame) for p in points_of(g)]
-    if k in ("Star", "ArcSlot") and name in g.data["dims"]:
+    if k in ("Star", "ArcSlot", "Sector") and name in g.data["dims"]:
         return Q.num(g.data["dims"][name], LEN)
     if k == "Trapezoid":
         if name in g.data["dims"]:

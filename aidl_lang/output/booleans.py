@@ -188,7 +188,8 @@ class Renderer:
         from ..geometry.spline import SplineError, interpolate
         from ..geometry.primitives import points_of
         try:
-            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")))
+            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")),
+                            g.data.get("corners", ()))
         except SplineError as ex:
             if not any(e[0] is g for e in self.shape_errors):     # said once, at the call
                 self.shape_errors.append((g, f"`{g.label}` after the solve: {ex}",
@@ -266,6 +267,10 @@ class Renderer:
             a1, sweep = g.data["angles"]
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
+        if k == "Sector":
+            a1, sweep = g.data["angles"]
+            return Loop(sector_outline(self._pt(g.points["center"]), g.data["dims"]["radius"],
+                                       g.data["dims"]["inner_radius"], a1, sweep))
         if k == "Hull":
             return hull_loop([lp for src in g.data["sources"] for lp in self.loops_of(src)])
         if k in DERIVED:
@@ -682,6 +687,18 @@ def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
     start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
     return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
             Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
+
+
+def sector_outline(c, R: float, r: float, a1: float, sweep: float) -> list:
+    """The exact outline of a sector: the counter-clockwise arc of radius ``R`` about ``c``
+    from angle ``a1`` sweeping ``sweep`` (0..2 pi), then a radial line to the center (``r``
+    0: a pie slice) or to the inner arc of radius ``r``, that arc back and a radial line out
+    (an annulus segment); counter-clockwise, the lines' ends the arcs' own ends."""
+    outer = Arc((c[0], c[1]), R, a1, sweep)
+    if r <= 0:
+        return [outer, Line(outer.end, (c[0], c[1])), Line((c[0], c[1]), outer.start)]
+    inner = Arc((c[0], c[1]), r, a1 + sweep, -sweep)
+    return [outer, Line(outer.end, inner.start), inner, Line(inner.end, outer.start)]
 
 
 def rounded_outline(corners, r: float) -> list:
