@@ -183,6 +183,9 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
+    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
+                   doc="Straight segments through the points; open unless closed=true.",
+                   members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
                   A("corners", "any", None), FLEXIBLE],
                  doc="A smooth curve through the points; closed=true: an outline; corners: "
@@ -405,6 +408,12 @@ SYNONYMS: dict[str, str] = {
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
     "BSpline": "Spline",
+    "PolyLine": "Polyline",
+    "LineString": "Polyline",
+    "Path": "Polyline",
+    "OpenPolygon": "Polyline",
+    "Chain": "Polyline",
+    "ZigZag": "Polyline",
     "Wedge": "Sector",
     "Pie": "Sector",
     "PieSlice": "Sector",
@@ -471,6 +480,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
                "cyclic": "closed", "is_closed": "closed", "loop": "closed",
                "sharp": "corners", "sharp_points": "corners", "cusps": "corners",
                "kinks": "corners", "corner_points": "corners", "sharp_corners": "corners"},
+    "Polyline": {"through": "points", "pts": "points", "vertices": "points",
+                 "is_closed": "closed", "loop": "closed", "close": "closed"},
     "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",
@@ -525,6 +536,10 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "radians": (1, 1, "a bare number of degrees as an angle"),
     "degrees": (1, 1, "an angle as a bare number of degrees"),
     "distance": (2, 2, "distance between two points (a length expression)"),
+    "mirror": (1, 2, "mirror(points, about=\"y\"): the points, then their mirror images in "
+                     "reverse order (a symmetric outline written once); about: \"y\" (the "
+                     "y axis: x -> -x), \"x\" (y -> -y) or a Line (as it starts); a point on "
+                     "the axis at either end is not repeated"),
 }
 
 CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",

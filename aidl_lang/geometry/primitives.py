@@ -445,6 +445,37 @@ def _build_Polygon(ctx, g, a):
     g.closed = True
 
 
+def _build_Polyline(ctx, g, a):
+    """An open chain of straight segments through the points (closed=true: a Polygon)."""
+    if a.get("closed"):
+        _build_Polygon(ctx, g, a)
+        g.data["closed"] = True
+        return
+    pts_in = a["points"]
+    if len(pts_in) < 2:
+        raise PrimitiveError(f"an open Polyline needs at least 2 points, got {len(pts_in)}")
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
+    except (AttributeError, TypeError):
+        xy = None
+    if xy is not None:
+        scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+        for i in range(len(xy) - 1):
+            (x0, y0), (x1, y1) = xy[i], xy[i + 1]
+            if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
+                raise PrimitiveError(f"a Polyline's points[{i}] and points[{i + 1}] are the "
+                                     f"same point ({x0:g}, {y0:g}): a segment of zero "
+                                     f"length; remove one of them")
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    g.data["closed"] = False
+    g.data["edges"] = _polygon_edges(ctx, g, pts)[:-1]
+    g.closed = False
+
+
 def _build_Spline(ctx, g, a):
     from .spline import SplineError, check_points
     pts_in = a["points"]
@@ -800,7 +831,8 @@ def points_of(g: Geometry) -> list:
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline")
+    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline",
+                                       "Polyline")
                                  and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
@@ -896,7 +928,9 @@ def member(g: Geometry, name: str, frame):
             sx = sum((p.x for p in pvs[1:]), pvs[0].x) * (1.0 / n)
             sy = sum((p.y for p in pvs[1:]), pvs[0].y) * (1.0 / n)
             return PV(sx, sy, None, own)
-    if k == "Spline":
+    if k == "Polyline" and name == "edges":
+        return [GeomRef(e) for e in g.data["edges"]]
+    if k in ("Spline", "Polyline"):
         pts = points_of(g)
         if name in ("points", "vertices", "through"):
             return [_pv(p, frame) for p in pts]

@@ -215,8 +215,21 @@ class Renderer:
             sweep = 2 * math.pi
         return Arc(c, r, a1, sweep)
 
+    def pieces(self, g: Geometry) -> list:
+        """The exact segments of an open curve in order: a Polyline's lines, else the one
+        :meth:`segment` (none when it has none)."""
+        if g.kind == "Polyline":
+            from ..geometry.primitives import points_of
+            P = [self._pt(p) for p in points_of(g)]
+            return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
+        seg = self.segment(g)
+        return [] if seg is None else [seg]
+
     def curve(self, g: Geometry) -> np.ndarray:
-        """Polyline of an open curve (Line or Arc), from start to end."""
+        """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
+        if g.kind == "Polyline":
+            from ..geometry.primitives import points_of
+            return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
             return np.zeros((0, 2))
@@ -281,7 +294,7 @@ class Renderer:
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
-                 "Trapezoid", "Star"):
+                 "Trapezoid", "Star") or (k == "Polyline" and g.closed):
             from ..geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
@@ -378,7 +391,8 @@ class Renderer:
             if s.kind == "drawing":
                 self.draw_lines(g, out)
                 continue
-            if g.kind in ("Line", "Arc") or (g.kind == "Spline" and not g.closed):
+            if g.kind in ("Line", "Arc") or (g.kind in ("Spline", "Polyline")
+                                             and not g.closed):
                 open_curves.append(g)
             elif g.kind == "Text":
                 self.draw_lines(g, out)
@@ -410,10 +424,10 @@ class Renderer:
         :func:`_tol` of the chain's end, found through a grid of the curves' ends (cells of
         :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
-        segs = [self.segment(g) for g in curves]
-        keep = [i for i, sg in enumerate(segs) if sg is not None]
+        segs = [self.pieces(g) for g in curves]
+        keep = [i for i, sg in enumerate(segs) if sg]
         curves, segs = [curves[i] for i in keep], [segs[i] for i in keep]
-        ends = [(sg.start, sg.end) if g.kind == "Spline" else
+        ends = [(sg[0].start, sg[-1].end) if g.kind in ("Spline", "Polyline") else
                 (self._pt(g.points["start"]), self._pt(g.points["end"]))
                 for g, sg in zip(curves, segs)]
         grid: dict = {}
@@ -440,7 +454,7 @@ class Renderer:
             self.tick()
             chain = [i]
             used[i] = True
-            run = [segs[i]]
+            run = list(segs[i])
             start, end = ends[i]
             grown = True
             while grown and _dist(end, start) > _tol(start):
@@ -449,10 +463,10 @@ class Renderer:
                     if used[j]:
                         continue
                     if _dist(ends[j][0], end) <= _tol(end):
-                        run.append(segs[j])
+                        run += segs[j]
                         end = ends[j][1]
                     elif _dist(ends[j][1], end) <= _tol(end):
-                        run.append(reverse(segs[j]))
+                        run += [reverse(sg) for sg in reversed(segs[j])]
                         end = ends[j][0]
                     else:
                         continue
@@ -461,14 +475,18 @@ class Renderer:
                     grown = True
                     break
             closed = _dist(end, start) <= _tol(start)
-            if closed and (len(chain) >= 2 or isinstance(run[0], (Arc, Spline))):
+            if closed and (len(run) >= 2 or isinstance(run[0], (Arc, Spline))):
                 loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:
                 rest += [curves[j] for j in chain]
         return loops, rest
 
     def stroke(self, g: Geometry, style: str, out: Drawing) -> None:
-        """The exact engraving stroke of a Line, Arc or Spline."""
+        """The exact engraving stroke of a Line, Arc, Spline or open Polyline."""
+        if g.kind == "Polyline":
+            for ln in self.pieces(g):
+                out.strokes.append((style, ("line", np.array(ln.start), np.array(ln.end)), g))
+            return
         seg = self.segment(g)
         if seg is None:
             return
@@ -483,7 +501,7 @@ class Renderer:
                                     seg.end_angle), g))
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
-        if g.kind in ("Line", "Arc", "Spline"):
+        if g.kind in ("Line", "Arc", "Spline") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
