@@ -218,7 +218,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
                 else:
                     ys.append(cy + R * dy)
         return
-    if k in ("Offset", "Shell", "Hull"):
+    if k in ("Offset", "Shell", "Hull", "Stroke"):
         # the sources' boxes (they are construction geometry, left out of the structure's
         # box): a hull's box is theirs; an outward offset's (round joins) theirs grown by the
         # distance, exactly; an inset's is taken as its shape's (a little larger than it)
@@ -226,7 +226,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         sy: list = []
         for src in g.data["sources"]:
             _geom_candidates(src, frame, x, sx, sy, offs)
-        d = g.data.get("distance", g.data.get("thickness", 0.0))
+        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
         if k != "Hull" and d > 0:
             sx = [c - d for c in sx] + [c + d for c in sx]
             sy = [c - d for c in sy] + [c + d for c in sy]

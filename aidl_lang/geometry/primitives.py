@@ -727,6 +727,70 @@ def _build_Hull(ctx, g, a):
     _consume(g, [_source(v, "Hull") for v in items])
 
 
+_STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline")
+
+
+def _build_Stroke(ctx, g, a):
+    """A band of constant width along an open path: the path's Minkowski sum with a disc of
+    radius width/2 (round caps), or with the ends cut square (flat caps).  The path is one
+    open curve or a list of them that join end to end (in any direction)."""
+    v = a["path"]
+    items = list(v) if isinstance(v, (list, tuple)) else [v]
+    if not items:
+        raise PrimitiveError("a Stroke needs a path: a Line, Arc, Polyline or Spline, or a "
+                             "list of them joined end to end")
+    srcs = []
+    for it in items:
+        if not isinstance(it, GeomRef) or it.geom.kind not in _STROKE_PATHS:
+            raise PrimitiveError(f"a Stroke follows a Line, Arc, open Polyline or open Spline "
+                                 f"(or a list of them), got "
+                                 f"{it.geom.kind if isinstance(it, GeomRef) else type_name(it)}"
+                                 + (": for a band around a closed shape use Shell(shape, "
+                                    "width)" if isinstance(it, GeomRef) else ""))
+        src = it.geom
+        if src.closed:
+            raise PrimitiveError(f"a Stroke follows an open path, not a closed {src.kind}: "
+                                 f"for a band around a closed shape use Shell(shape, width)")
+        srcs.append(src)
+    _positive(a["width"], "width", "Stroke")
+    w = _const(ctx, a["width"], "Stroke width")
+    cap = a.get("cap", "round")
+    cap = {"square": "flat", "butt": "flat"}.get(cap, cap)
+    if cap not in ("round", "flat"):
+        raise PrimitiveError(f'a Stroke\'s cap must be "round" or "flat", not "{cap}"')
+    _stroke_chain(ctx, srcs)
+    g.data["width"] = w
+    g.data["cap"] = cap
+    _consume(g, srcs)
+
+
+def _stroke_ends(ctx, src) -> tuple:
+    names = src.data.get("order") or ["start", "end"]
+    p, q = src.points[names[0]], src.points[names[-1]]
+    return tuple((ctx.value_of(var(pt.ix)), ctx.value_of(var(pt.iy))) for pt in (p, q))
+
+
+def _stroke_chain(ctx, srcs) -> None:
+    """The pieces of a Stroke's path must join end to end (as they start): the first
+    gap is named."""
+    if len(srcs) < 2:
+        return
+    ends = [_stroke_ends(ctx, s) for s in srcs]
+    tail = None
+    for i in range(len(srcs) - 1):
+        a, b = ends[i], ends[i + 1]
+        cands = [a[1], a[0]] if tail is None else [tail]
+        best = min(((math.dist(p, q), q, other) for p in cands for q, other in
+                    ((b[0], b[1]), (b[1], b[0]))), key=lambda t: t[0])
+        gap, _q, other = best
+        scale = max(1.0, *(abs(c) for pt in a + b for c in pt))
+        if gap > 1e-6 * scale:
+            raise PrimitiveError(f"a Stroke's path pieces {i} and {i + 1} do not join: their "
+                                 f"nearest ends are {gap:g} mm apart; start each piece where "
+                                 f"the previous one ends (e.g. `start=a.end`)")
+        tail = other
+
+
 def _build_Slot(ctx, g, a):
     if "angle" in a:                # polar: from start (an end arc's center) by length, angle
         _positive(a["length"], "length", "Slot")

@@ -25,7 +25,7 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
 # shapes made from other shapes (their source must be in the same structure: E0201's hint)
-DERIVED = ("Offset", "Inset", "Shell", "Hull")
+DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke")
 
 
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)

@@ -39,7 +39,7 @@ UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
 # 480,000 vertices in 3.5 s, 7.3 us; half of it, so that only a union sure to end past the
 # deadline is refused before it starts, as the shape checks' estimates in checks.py)
 UNION_SECONDS_PER_VERTEX = 3.5e-6
-DERIVED = ("Offset", "Shell")   # shapes whose outline is a boolean of their source's
+DERIVED = ("Offset", "Shell", "Stroke")   # shapes whose outline is a boolean of pieces
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 
 
@@ -324,6 +324,10 @@ class Renderer:
         if id(g) in self.derived:
             return self.derived[id(g)]
         self.derived[id(g)] = None                 # (a cycle cannot be written; be safe)
+        if g.kind == "Stroke":
+            out = self._stroke(g)
+            self.derived[id(g)] = out
+            return out
         src = g.data["sources"][0]
         loops = self.loops_of(src)
         base = self.exact.section(loops) if loops else mf.CrossSection()
@@ -349,6 +353,68 @@ class Renderer:
             out = None
         self.derived[id(g)] = out
         return out
+
+    def stroke_path(self, g: Geometry) -> list:
+        """The exact segments of a Stroke's path in order, each piece turned to start where
+        the previous one ends."""
+        chain: list = []
+        for src in g.data["sources"]:
+            segs = self.pieces(src)
+            if not segs:
+                continue
+            if chain:
+                end = chain[-1].end
+                if _dist(segs[-1].end, end) < _dist(segs[0].start, end):
+                    segs = [reverse(sg) for sg in reversed(segs)]
+            elif len(g.data["sources"]) > 1:
+                nxt = self.pieces(g.data["sources"][1])
+                if nxt:
+                    far = min(_dist(segs[0].start, p) for p in (nxt[0].start, nxt[-1].end))
+                    near = min(_dist(segs[-1].end, p) for p in (nxt[0].start, nxt[-1].end))
+                    if far < near:
+                        segs = [reverse(sg) for sg in reversed(segs)]
+            chain += segs
+        return chain
+
+    def _stroke(self, g: Geometry) -> mf.CrossSection | None:
+        """The band of a ``Stroke``: the union of every path segment's sweep by a disc of
+        radius width/2 (:func:`~aidl_lang.geometry.offset.sweep_loops`: stadiums, arc slots);
+        with flat caps the first and last segments are swept square at the free end (a
+        rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
+        arcs throughout; a Spline in the path is refused (E0108 at the call)."""
+        from ..geometry.offset import sweep_loops
+        h = g.data["width"] / 2
+        path = self.stroke_path(g)
+        bad = next((sg for sg in path if isinstance(sg, Spline)), None)
+        if bad is not None or not path:
+            if bad is not None:
+                self.shape_errors.append((g, (
+                    f"`{g.label}`: a Stroke along a Spline cannot be exact (the offset of a "
+                    f"cubic spline is not a cubic spline)"),
+                    "build the path from Lines and Arcs (an S curve is two tangent Arcs) or "
+                    "a Polyline", "E0108"))
+            return None
+        flat = g.data.get("cap") == "flat"
+        loops: list = []
+        n = len(path)
+        for i, sg in enumerate(path):
+            free = (flat and i == 0, flat and i == n - 1)
+            if not any(free):
+                loops += sweep_loops(sg, h)
+                continue
+            band = _band(sg, h)
+            if band is None:
+                self.shape_errors.append((g, (
+                    f"`{g.label}`: an arc of radius {sg.radius:g} mm in the path is tighter "
+                    f"than half the width ({h:g} mm): a flat end cannot be cut square there"),
+                    'use cap="round", a smaller width or a wider arc', "E0108"))
+                return None
+            loops.append(band)
+            for k, p in ((0, sg.start), (1, sg.end)):
+                if not free[k]:
+                    loops.append(Loop([Circle(p, h)]))
+        faces = [self.exact.face(lp) for lp in loops]
+        return self.union(faces)
 
     def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
         if d == 0 or base.is_empty():
@@ -705,6 +771,24 @@ def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
     start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
     return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
             Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
+
+
+def _band(sg, h: float) -> Loop | None:
+    """The square-ended band ``2 h`` wide along one line or arc (counter-clockwise): a
+    rectangle, or the annulus segment between radii R - h and R + h; None for an arc of
+    radius R <= h."""
+    if isinstance(sg, Line):
+        (ax, ay), (bx, by) = sg.start, sg.end
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = -(by - ay) / L * h, (bx - ax) / L * h
+        return Loop([Line((ax - nx, ay - ny), (bx - nx, by - ny)),
+                     Line((bx - nx, by - ny), (bx + nx, by + ny)),
+                     Line((bx + nx, by + ny), (ax + nx, ay + ny)),
+                     Line((ax + nx, ay + ny), (ax - nx, ay - ny))])
+    a = sg if sg.sweep > 0 else reverse(sg)
+    if not a.radius > h:
+        return None
+    return Loop(sector_outline(a.center, a.radius + h, a.radius - h, a.start_angle, a.sweep))
 
 
 def sector_outline(c, R: float, r: float, a1: float, sweep: float) -> list:
