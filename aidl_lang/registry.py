@@ -244,8 +244,12 @@ _DEFS = {
     "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0)],
+               [A("text", "string"), A("along", "any"), A("size", "length", 5.0),
+                A("anchor", "string", "middle"), A("valign", "string", "baseline"),
+                A("angle", "angle", None)],
                doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
-                   "middle, end; valign: baseline, middle, top, bottom; rotation about position.", members=TEXT_MEMBERS),
+                   "middle, end; valign: baseline, middle, top, bottom; rotation about "
+                   "position; along a Circle/Arc: upright, at angle.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line/circle: on it)."),
@@ -453,7 +457,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
           "w": "width", "h": "height", "pos": ("position", "center"), "rot": "rotation",
           "n": ("count", "sides", "points"), "num": ("count", "sides", "points")},
     "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
-             "font_size": "size"},
+             "font_size": "size", "on": "along", "path": "along", "arc": "along",
+             "circle": "along", "curve": "along", "at_angle": "angle", "start_angle": "angle",
+             "around": "along"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Circle": {"position": "center", "at": "center"},

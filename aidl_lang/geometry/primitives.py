@@ -841,7 +841,10 @@ def _build_Slot(ctx, g, a):
 
 
 def _build_Text(ctx, g, a):
-    g.points["position"] = ctx.point(a["position"], "position")
+    if "along" in a:
+        _text_along(ctx, g, a)
+    else:
+        g.points["position"] = ctx.point(a["position"], "position")
     g.data["text"] = a["text"]
     g.data["size"] = _const(ctx, a.get("size", Q.num(5.0, LEN)), "size")
     anchor = a.get("anchor", "middle")
@@ -857,6 +860,50 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    if "along" in a:
+        from .text import text_strokes_along
+        ang = g.data["angle"]
+        if ang is None:
+            ang = g.data["start_angle"]
+        segs = text_strokes_along(g.data["text"], g.data["size"], g.data["radius0"], ang,
+                                  anchor, valign)
+        xs = [p[0] for s_ in segs for p in s_] or [0.0]
+        ys = [p[1] for s_ in segs for p in s_] or [0.0]
+        g.data["extent"] = (min(xs), max(xs), min(ys), max(ys))
+
+
+def _text_along(ctx, g, a) -> None:
+    """``Text(..., along=circle_or_arc, angle=)``: the position is the curve's center
+    (shared); the radius and, without ``angle``, the arc's middle angle are read after the
+    solve (at their starting values for the bounding box)."""
+    v = a["along"]
+    if not isinstance(v, GeomRef) or v.geom.kind not in ("Circle", "Arc"):
+        raise PrimitiveError("a Text along a curve follows a Circle or an Arc (of its drawing; "
+                             "a construction one is not drawn), got "
+                             + (v.geom.kind if isinstance(v, GeomRef) else type_name(v)))
+    src = v.geom
+    c = src.points["center"]
+    g.points["position"] = c if c.owner is ctx.struct else ctx.point(
+        PV(ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))), "position")
+    cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+    if src.kind == "Circle":
+        r = ctx.value_of(var(src.scalars["radius"].index))
+        mid = math.pi / 2
+    else:
+        s_, e_ = src.points["start"], src.points["end"]
+        sx, sy = ctx.value_of(var(s_.ix)) - cx, ctx.value_of(var(s_.iy)) - cy
+        ex, ey = ctx.value_of(var(e_.ix)) - cx, ctx.value_of(var(e_.iy)) - cy
+        r = math.hypot(sx, sy)
+        a1 = math.atan2(sy, sx)
+        sweep = (math.atan2(ey, ex) - a1) % (2 * math.pi) or 2 * math.pi
+        mid = a1 + sweep / 2
+    if not r > 0:
+        raise PrimitiveError("a Text along a curve needs a curve of positive radius")
+    ang = a.get("angle")
+    g.data["along"] = src
+    g.data["angle"] = None if ang is None else _const(ctx, ang, "Text angle")
+    g.data["start_angle"] = mid
+    g.data["radius0"] = r
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}

@@ -186,7 +186,7 @@ class Calls:
         if kind == "Text":
             from ..geometry.text import missing_glyphs, text_extent
             self.check_size(len(g.data["text"]), node.span, "a Text")
-            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"],
+            g.data["extent"] = g.data.get("extent") or text_extent(g.data["text"], g.data["size"], g.data["anchor"],
                                            g.data["valign"], g.data["rotation"])
             lost = missing_glyphs(g.data["text"])
             if lost:

@@ -572,8 +572,14 @@ class Renderer:
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
-            segs = text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
-                                g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
+            along = g.data.get("along")
+            if along is not None:
+                segs = self.text_along(g, along)
+                p = np.array(self.segment(along).center if along.kind == "Arc" else
+                             self._pt(along.points["center"]))
+            else:
+                segs = text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
+                                    g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
             if segs:      # every stroke moved to the position in one array operation
                 ab = p + np.asarray(segs, dtype=float)          # k x 2 (ends) x 2 (x, y)
                 for pts in ab:
@@ -597,6 +603,20 @@ class Renderer:
                 pl = lp.points()
                 out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
                 out.strokes.append(("drawing", ("poly", pl, lp), g))
+
+    def text_along(self, g: Geometry, along: Geometry) -> list:
+        """The strokes of a Text along a Circle or Arc (relative to its solved center): at
+        its ``angle``, else the arc's middle (a circle's top)."""
+        from ..geometry.text import text_strokes_along
+        if along.kind == "Arc":
+            arc = self.segment(along)
+            r, mid = arc.radius, arc.start_angle + arc.sweep / 2
+        else:
+            r, mid = float(abs(self.x[along.scalars["radius"].index])), math.pi / 2
+        ang = g.data.get("angle")
+        return text_strokes_along(g.data["text"], g.data["size"], r,
+                                  mid if ang is None else ang, g.data["anchor"],
+                                  g.data.get("valign", "baseline"))
 
     def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
         """Union of a solid or hole structure, holes subtracted for solids."""
