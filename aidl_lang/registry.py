@@ -184,12 +184,13 @@ _DEFS = {
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
     "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                   doc="Straight segments through the points; open unless closed=true.",
+                   doc="Open chain of lines.",
                    members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
-                  A("corners", "any", None), FLEXIBLE],
-                 doc="A smooth curve through the points; closed=true: an outline; corners: "
-                     "indices of sharp points.",
+                  A("corners", "any", None, "indices of points where the curve turns "
+                    "sharply (tangent-discontinuous)", kw_only=True), FLEXIBLE],
+                 doc="A smooth curve through the points; closed=true: an outline; "
+                     "corners=[i]: sharp.",
                  members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
@@ -215,9 +216,10 @@ _DEFS = {
                       "caps' centers.",
                   members=ARCSLOT_MEMBERS),
     "Sector": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
-                  A("end_angle", "angle"), A("inner_radius", "length", 0.0)],
-                 doc="A pie slice counter-clockwise from start_angle to end_angle; "
-                     "inner_radius: an annulus segment.",
+                  A("end_angle", "angle"),
+                  A("inner_radius", "length", 0.0, "> 0: an annulus segment (a ring's piece) "
+                    "instead of a pie slice", kw_only=True)],
+                 doc="Pie slice; inner_radius=: annulus.",
                  members=SECTOR_MEMBERS),
     "Star": _p([A("center", "point"), A("points", "number"), A("outer_radius", "length"),
                 A("inner_radius", "length"), A("rotation", "angle", 0.0)],
@@ -232,24 +234,26 @@ _DEFS = {
     "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
                 doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
                     "is not drawn.", members=DERIVED_MEMBERS),
-    "Stroke": _p([A("path", "any"), A("width", "length"), A("cap", "string", "round")],
-                 doc="A band `width` wide along an open path (a Line, Arc, Polyline, Spline "
-                     "or a list); cap \"round\" or \"flat\"; the path is not drawn.",
+    "Stroke": _p([A("path", "any"), A("width", "length"),
+                  A("cap", "string", "round", "\"round\" (the path's Minkowski sum with a "
+                    "disc) or \"flat\" (ends cut square)", kw_only=True)],
+                 doc="Band along an open path; cap=\"flat\".",
                  members=DERIVED_MEMBERS),
     "Hull": _p([A("shapes", "any")],
                [A("shape1", "geometry"), A("shape2", "geometry")]
                + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six), not drawn.",
                members=DERIVED_MEMBERS),
-    "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
+    "Text": _p([A("text", "string"), A("position", "point", None), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
-                A("rotation", "angle", 0.0)],
-               [A("text", "string"), A("along", "any"), A("size", "length", 5.0),
-                A("anchor", "string", "middle"), A("valign", "string", "baseline"),
-                A("angle", "angle", None)],
+                A("rotation", "angle", 0.0),
+                A("along", "any", None, "a Circle or Arc: the text follows it clockwise, "
+                  "each letter upright, instead of a position", kw_only=True),
+                A("angle", "angle", None, "with along=: where on the circle the position "
+                  "point goes (default: the arc's middle, a circle's top)", kw_only=True)],
                doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
-                   "position; along a Circle/Arc: upright, at angle.", members=TEXT_MEMBERS),
+                   "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line/circle: on it)."),

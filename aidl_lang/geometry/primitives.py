@@ -841,8 +841,14 @@ def _build_Slot(ctx, g, a):
 
 
 def _build_Text(ctx, g, a):
-    if "along" in a:
+    if a.get("along") is not None:
+        if a.get("position") is not None:
+            raise PrimitiveError("a Text takes a position or along=, not both: along= puts "
+                                 "it on the curve (angle= says where)")
         _text_along(ctx, g, a)
+    elif a.get("position") is None:
+        raise PrimitiveError("a Text needs a position (on its baseline, e.g. `position=(0, "
+                             "0)`) or along=circle_or_arc")
     else:
         g.points["position"] = ctx.point(a["position"], "position")
     g.data["text"] = a["text"]
@@ -860,7 +866,7 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
-    if "along" in a:
+    if a.get("along") is not None:
         from .text import text_strokes_along
         ang = g.data["angle"]
         if ang is None:
