@@ -226,10 +226,38 @@ def test_stroke_errors_are_located(outdir, body, words):
     assert errs[0].span.line == body.count("\n") + 2
 
 
-def test_stroke_along_a_spline_is_refused_at_the_call(outdir):
-    errs = errors(outdir, "solid s {\n    c = Spline([(0, 0), (10, 5), (20, 0)])\n"
-                          "    s = Stroke(c, width=2)\n}\n")
-    assert [e.code for e in errs] == ["E0108"] and "Spline" in errs[0].message
+S_POINTS = [(0, 0), (10, 8), (20, 0), (30, -8), (40, 0)]
+
+
+def test_stroke_along_a_spline_is_within_its_tolerance(outdir):
+    """The sides of a Stroke along a Spline, re-read from the DXF, are width/2 from the
+    centre line within STROKE_TOL (1e-4 mm): the centre line is scipy's natural cubic spline
+    through the same points with chord-length parameters, sampled densely."""
+    import numpy as np
+    from scipy.interpolate import CubicSpline as SciSpline
+    P = np.array(S_POINTS, dtype=float)
+    t = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(P, axis=0).T))])
+    fine = SciSpline(t, P, bc_type="natural")(np.linspace(0, t[-1], 40001))
+    src = f"solid s {{\n    c = Spline({S_POINTS})\n    s = Stroke(c, width=3)\n}}\n"
+    ents = cut(render(outdir, src, ".dxf"))
+    beziers = [b for e in ents for b in e.segments if isinstance(b, B)]
+    arcs = [a for e in ents for a in e.segments if isinstance(a, A)]
+    assert len(beziers) >= 8 and len(arcs) == 2
+    assert all(abs(a.radius - 1.5) <= TOL for a in arcs)
+    assert sorted(a.center for a in arcs) == [(0.0, 0.0), (40.0, 0.0)]
+    worst = 0.0
+    for b in beziers:
+        for k in range(1, 8):
+            q = np.array(b.at(k / 8))
+            d = np.sqrt(((fine - q) ** 2).sum(axis=1)).min()
+            worst = max(worst, abs(d - 1.5))
+    assert worst <= 1e-4 + 1e-6, worst
+
+
+def test_stroke_along_a_spline_too_tight_is_refused_at_the_call(outdir):
+    errs = errors(outdir, "solid s {\n    c = Spline([(0, 0), (3, 4), (6, 0)])\n"
+                          "    s = Stroke(c, width=8)\n}\n")
+    assert [e.code for e in errs] == ["E0108"] and "bends tighter" in errs[0].message
     assert errs[0].span.line == 3
 
 

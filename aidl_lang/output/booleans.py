@@ -381,24 +381,28 @@ class Renderer:
         radius width/2 (:func:`~aidl_lang.geometry.offset.sweep_loops`: stadiums, arc slots);
         with flat caps the first and last segments are swept square at the free end (a
         rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
-        arcs throughout; a Spline in the path is refused (E0108 at the call)."""
+        arcs; a Spline piece's band is :func:`spline_band` (within :data:`STROKE_TOL`; a
+        bend tighter than width/2 is E0108 at the call)."""
         from ..geometry.offset import sweep_loops
+        from ..geometry.spline import SplineError
         h = g.data["width"] / 2
         path = self.stroke_path(g)
-        bad = next((sg for sg in path if isinstance(sg, Spline)), None)
-        if bad is not None or not path:
-            if bad is not None:
-                self.shape_errors.append((g, (
-                    f"`{g.label}`: a Stroke along a Spline cannot be exact (the offset of a "
-                    f"cubic spline is not a cubic spline)"),
-                    "build the path from Lines and Arcs (an S curve is two tangent Arcs) or "
-                    "a Polyline", "E0108"))
+        if not path:
             return None
         flat = g.data.get("cap") == "flat"
         loops: list = []
         n = len(path)
         for i, sg in enumerate(path):
             free = (flat and i == 0, flat and i == n - 1)
+            if isinstance(sg, Spline):
+                try:
+                    loops.append(spline_band(sg, h, free))
+                except SplineError as ex:
+                    self.shape_errors.append((g, f"`{g.label}`: {ex}",
+                                              "use a smaller width, or smooth the path "
+                                              "(points further apart)", "E0108"))
+                    return None
+                continue
             if not any(free):
                 loops += sweep_loops(sg, h)
                 continue
@@ -791,6 +795,73 @@ def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
     start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
     return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
             Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
+
+
+STROKE_TOL = 1e-4     # mm: how far a Stroke's side along a Spline may be from the true offset
+
+
+def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
+    """The band ``2 h`` wide along a piece of spline, counter-clockwise: its two sides are
+    cubic splines through points of the true offset curves (the offset of a cubic is no
+    cubic), sampled until the spline between two samples is within :data:`STROKE_TOL` of the
+    true offset everywhere checked (the midpoints of the samples); the ends are half circles
+    of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
+    bends tighter than ``h`` (the inner side would fold over itself)."""
+    from ..geometry.spline import SplineError, interpolate
+    c, u0, u1 = sg.curve, sg.u0, sg.u1
+    span = u1 - u0
+
+    def true_offset(u: float, side: float):
+        (x, y), (tx, ty) = c.at(u), c.tangent(u)
+        if u1 < u0:
+            tx, ty = -tx, -ty
+        return (x - side * h * ty, y + side * h * tx)
+    # the tightest bend: curvature from the derivatives by arc length, sampled finely
+    m = max(16, 32 * int(math.ceil(abs(span))))
+    for k in range(m + 1):
+        u = u0 + span * k / m
+        (dx, dy), (ex, ey) = c.d1(u), c.d2(u)
+        v = math.hypot(dx, dy)
+        if v > 0 and abs(dx * ey - dy * ex) / v ** 3 * h >= 1.0:
+            x, y = c.at(u)
+            raise SplineError(f"the Spline bends tighter than half the Stroke's width "
+                              f"({h:g} mm) near ({x:g}, {y:g}): the band's inner side would "
+                              f"fold over itself")
+    per = 4
+    while True:
+        N = max(2, int(math.ceil(abs(span) * per)))
+        us = [u0 + span * k / N for k in range(N + 1)]
+        mids = [u0 + span * (k + 0.5) / N for k in range(N)]
+        sides, worst = [], 0.0
+        for side in (-1.0, 1.0):                       # right side, left side
+            pts = [true_offset(u, side) for u in us]
+            curve = interpolate(pts, False)
+            for um in mids:                            # halfway between two samples
+                worst = max(worst, curve.distance(true_offset(um, side)))
+            sides.append(curve)
+        if worst <= STROKE_TOL or per >= 512:
+            break
+        per *= 2
+    if worst > STROKE_TOL:
+        raise SplineError(f"the Stroke along a Spline cannot be made within {STROKE_TOL:g} "
+                          f"mm of its true sides (off by {worst:.2g} mm)")
+    right, left = sides
+    R = Spline(right, 0.0, float(right.n))
+    Lf = Spline(left, float(left.n), 0.0)
+    end, start = sg.end, sg.start
+    segs: list = [R]
+    if flat[1]:
+        segs.append(Line(R.end, Lf.start))
+    else:
+        a = math.atan2(R.end[1] - end[1], R.end[0] - end[0])
+        segs.append(Arc((end[0], end[1]), h, a, math.pi))
+    segs.append(Lf)
+    if flat[0]:
+        segs.append(Line(Lf.end, R.start))
+    else:
+        a = math.atan2(Lf.end[1] - start[1], Lf.end[0] - start[0])
+        segs.append(Arc((start[0], start[1]), h, a, math.pi))
+    return Loop(segs)
 
 
 def _band(sg, h: float) -> Loop | None:
