@@ -18,7 +18,9 @@ solid protractor {
         w = Sector(center=(0, 0), radius=0.55 * radius, inner_radius=0.3 * radius,
                    start_angle=20 deg, end_angle=160 deg)
     }
-    hole pivot { c = Circle(center=(0, 0), radius=1) }
+    hole pivot {
+        c = Circle(center=(0, 0), radius=1)
+    }
     Coincident(window.w.center, body.center)
     Coincident(pivot.c.center, body.center)
 

@@ -3,7 +3,9 @@
 # Drawn by `python docs/make_pictures.py` to docs/images/sector_text_along.png.
 
 assembly sectors {
-    solid pie { s = Sector(center=(-60, -15), radius=30, start_angle=30 deg, end_angle=110 deg) }
+    solid pie {
+        s = Sector(center=(-60, -15), radius=30, start_angle=30 deg, end_angle=110 deg)
+    }
     solid ring {
         s = Sector(center=(2, -15), radius=28, inner_radius=18, start_angle=-30 deg,
                    end_angle=210 deg)
