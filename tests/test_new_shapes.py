@@ -418,3 +418,65 @@ def test_mirror_law_the_outline_equals_its_reflection(tmp_path_factory, half):
     got = SP([s.start for s in loop.segments])
     assert got.symmetric_difference(scale(got, -1, 1, origin=(0, 0))).area == 0.0
     assert abs(got.area - shape.area) <= 1e-9 * shape.area
+
+
+# ------------------------------------------------------------------ laws under copies
+def _exact_loops(c):
+    """Every closed exact outline of the compiled model, as (vertices, arcs): the segment
+    starts and the arcs' (centre, radius), each rounded for comparison."""
+    from aidl_lang.output.booleans import Renderer
+    from aidl_lang.geometry.curves import Arc as XA
+    r = Renderer(c.model)
+    out = []
+    stack = [c.model.root]
+    while stack:
+        s = stack.pop()
+        stack += list(s.children.values())
+        for g in s.geometry:
+            if g.kind in ("Sector", "Stroke") and not g.construction:
+                lp = r.loops_of(g)[0]
+                out.append(([sg.start for sg in lp.segments],
+                            [(sg.center, sg.radius) for sg in lp.segments if isinstance(sg, XA)]))
+    return out
+
+
+def _same_shape(a, b, tol=1e-9) -> bool:
+    (va, ca), (vb, cb) = a, b
+    return (len(va) == len(vb) and len(ca) == len(cb)
+            and all(any(near(p, q, tol) for q in vb) for p in va)
+            and all(any(near(p, q, tol) and abs(r - s) <= tol for q, s in cb) for p, r in ca))
+
+
+def _turn(shape, th, flip=False):
+    """The reference motion: a rotation by ``th`` about the origin, or the mirror about the
+    line through the origin at angle ``th``."""
+    cs, sn = math.cos(th), math.sin(th)
+    c2, s2 = math.cos(2 * th), math.sin(2 * th)
+
+    def f(p):
+        x, y = p
+        return (x * c2 + y * s2, x * s2 - y * c2) if flip else (x * cs - y * sn, x * sn + y * cs)
+    vs, cs_ = shape
+    return ([f(p) for p in vs], [(f(p), r) for p, r in cs_])
+
+
+@settings(max_examples=12, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@given(a1=st.integers(-180, 180), sweep=st.integers(10, 350), inner=st.sampled_from([0, 8]),
+       th=st.integers(-170, 170), mirror=st.booleans())
+def test_law_a_copied_sector_is_the_moved_original(tmp_path_factory, a1, sweep, inner, th, mirror):
+    """Law: a Sector copied by Mirrored (about a line through the centre at angle th) or by
+    CircularPattern (turned by th) is the reference motion of the original's exact outline
+    (every vertex and every arc's centre and radius, to 1e-9 mm)."""
+    out = tmp_path_factory.mktemp("law")
+    t = math.radians(th)
+    op = (f"axis = Line((0, 0), ({50 * math.cos(t)!r}, {50 * math.sin(t)!r}), construction=true)\n"
+          f"    m = Mirrored(w, about=axis)" if mirror else
+          f"m = CircularPattern(w, 2, center=(0, 0), angle={th} deg)")
+    src = (f"solid s {{\n    w = Sector(center=(0, 0), radius=20, inner_radius={inner}, "
+           f"start_angle={a1}, end_angle={a1 + sweep})\n    Fixed(w.center)\n    {op}\n}}\n")
+    c = _compile(src, out / "law.aidl")
+    assert c.ok, [d.message for d in c.sink.items]
+    shapes = _exact_loops(c)
+    assert len(shapes) == 2
+    orig, copy = shapes
+    assert _same_shape(copy, _turn(orig, t, mirror), 1e-9), src

@@ -203,7 +203,9 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         # the radial lines' ends (the center of a pie slice) and the outer arc's extremes
         # that its sweep passes (a held shape: angles and radii are numbers)
         R = g.data["dims"]["radius"]
-        a1, sweep = g.data["angles"]
+        sweep = g.data["angles"][1]
+        c, m = g.points["center"], g.points["midpoint"]       # a copy's, turned or mirrored
+        a1 = math.atan2(x[m.iy] - x[c.iy], x[m.ix] - x[c.ix]) - sweep / 2
         for n in ("start", "end", "inner_start", "inner_end") if "inner_start" in P else \
                 ("start", "end", "center"):
             px, py = P[n]

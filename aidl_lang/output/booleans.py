@@ -281,8 +281,12 @@ class Renderer:
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
         if k == "Sector":
-            a1, sweep = g.data["angles"]
-            return Loop(sector_outline(self._pt(g.points["center"]), g.data["dims"]["radius"],
+            # from the solved midpoint: a copy turned or mirrored (a pattern, Mirrored) has
+            # its midpoint turned or mirrored with it, and the sweep is the original's
+            c, m = self._pt(g.points["center"]), self._pt(g.points["midpoint"])
+            sweep = g.data["angles"][1]
+            a1 = math.atan2(m[1] - c[1], m[0] - c[0]) - sweep / 2
+            return Loop(sector_outline(c, g.data["dims"]["radius"],
                                        g.data["dims"]["inner_radius"], a1, sweep))
         if k == "Hull":
             return hull_loop([lp for src in g.data["sources"] for lp in self.loops_of(src)])
