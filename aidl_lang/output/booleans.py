@@ -811,7 +811,7 @@ def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
     true offset everywhere checked (the midpoints of the samples); the ends are half circles
     of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
     bends tighter than ``h`` (the inner side would fold over itself)."""
-    from ..geometry.spline import SplineError, interpolate
+    from ..geometry.spline import SplineError, _polish_foot, bez_at, interpolate
     c, u0, u1 = sg.curve, sg.u0, sg.u1
     span = u1 - u0
 
@@ -840,8 +840,11 @@ def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
         for side in (-1.0, 1.0):                       # right side, left side
             pts = [true_offset(u, side) for u in us]
             curve = interpolate(pts, False)
-            for um in mids:                            # halfway between two samples
-                worst = max(worst, curve.distance(true_offset(um, side)))
+            for k, um in enumerate(mids):              # halfway between two samples: the
+                q = true_offset(um, side)                # fit's span k, from its middle
+                b = curve.span(k)
+                f = bez_at(b, _polish_foot(b, q, 0.5))
+                worst = max(worst, math.dist(f, q))
             sides.append(curve)
         if worst <= STROKE_TOL or per >= 512:
             break
