@@ -522,6 +522,17 @@ angles, strings, lists), not geometry; place the instance with constraints in th
 Bare numbers in the body are in the defining file's unit. A parameter without a default is
 required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
 """, ["template", "templates", "function", "define", "instance"]),
+    "mirror": ("statement", "`mirror(points, about=\"y\")`: a point list and its mirror image, "
+               "for a symmetric outline written once.", """
+`mirror(points, about="y")` gives the points, then their mirror images in reverse order, so
+that `Polygon(mirror(half, about="y"))` or `Spline(mirror(half, about="y"), closed=true)` is
+symmetric and is written once. `about`: `"y"` (the y axis: x -> -x, exact), `"x"` (y ->
+-y), or a Line (reflected across the line through its start and end as they are before
+solving: exact for lines at multiples of 45 degrees). A first or last point that lies on the
+axis is not repeated, so a half from the axis to the axis gives 2n - 2 points: with Spline
+corners, point i and its mirror 2n - 2 - i. A list that is not points, or another `about`,
+is E0108; `about=` is the one keyword argument a function takes.
+""", ["mirror points", "symmetric outline", "symmetric"]),
     "assert": ("statement", "`assert cond, \"why\"`: a requirement checked after solving, never "
                "solved for.", """
 `assert CONDITION` or `assert CONDITION, "reason"`, in a structure or at the top level: the
@@ -725,6 +736,9 @@ EXAMPLES: dict[str, str] = {
     "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)\n"
                      "tip = Spline([(30, 0), (50, 10), (70, 0), (50, -10)], closed=true, "
                      "corners=[0, 2])    # pointed at points 0 and 2", "leaf"),
+    "mirror": _solid("half = [(0, -20), (12, -15), (15, 5), (6, 18), (0, 20)]\n"
+                     "p = Polygon(mirror(half, about=\"y\"))    # symmetric left and right",
+                     "vase"),
     "Polyline": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nFixed(body)\n"
                        "drawing zigzag {\n    z = Polyline([(-15, -5), (-5, 5), (5, -5), "
                        "(15, 5)])\n}\nCoincident(zigzag.z.start, (-15, -5))", "plate"),
