@@ -480,3 +480,10 @@ def test_law_a_copied_sector_is_the_moved_original(tmp_path_factory, a1, sweep, 
     assert len(shapes) == 2
     orig, copy = shapes
     assert _same_shape(copy, _turn(orig, t, mirror), 1e-9), src
+
+
+def test_text_along_a_curve_of_another_structure_says_how(outdir):
+    errs = errors(outdir, "solid s {\n    c = Circle(center=(0, 0), radius=20)\n"
+                          "    drawing d { t = Text(\"A\", along=c) }\n}\n")
+    assert [e.code for e in errs] == ["E0201"] and errs[0].span.line == 3
+    assert "construction=true" in errs[0].hint and "Coincident" in errs[0].hint

@@ -167,6 +167,11 @@ class Calls:
                             + (f" (a frame or wall cut from it: `Shell({v.geom.name or k}, "
                                "-thickness)` there)" if kind in ("Offset", "Inset") else "")
                             + ", or draw the shape again here and place it with a constraint")
+                if kind == "Text" and k == "along":
+                    hint = ("a Text follows a curve of its own drawing: draw one there, "
+                            "`ring = Circle(center=(0, 0), radius=30, construction=true)`, "
+                            f"and put its center on the shape's with `Coincident(...)` in "
+                            f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
         if kind == "Text" and s.kind != "drawing":
