@@ -281,6 +281,13 @@ def test_sector_pie_and_annulus_segment(outdir):
     assert all(near(s.center, (100, 0)) and abs(abs(s.sweep) - 1.5 * math.pi) <= TOL
                for s in arcs)
     assert sorted(round(s.length, 9) for s in ring.segments if isinstance(s, L)) == [10, 10]
+    loops = read_svg_loops(render(outdir, src, ".svg"))
+    svg_arcs = [s for lp in loops for s in lp if isinstance(s, A)]
+    assert {round(a.radius, 9) for a in svg_arcs} == {20, 30}      # arcs of a quarter turn
+    turn = {r: sum(abs(a.sweep) for a in svg_arcs if round(a.radius, 9) == r) for r in (20, 30)}
+    assert abs(turn[20] - 1.5 * math.pi) <= 1e-6 and abs(turn[30] - 2 * math.pi) <= 1e-6
+    for a in svg_arcs:
+        assert near(a.center, (0, 0), SVG_TOL) or near(a.center, (100, 0), SVG_TOL)
 
 
 def test_sector_box_and_members(outdir):
