@@ -494,3 +494,46 @@ def test_text_along_a_curve_of_another_structure_says_how(outdir):
                           "    drawing d { t = Text(\"A\", along=c) }\n}\n")
     assert [e.code for e in errs] == ["E0201"] and errs[0].span.line == 3
     assert "construction=true" in errs[0].hint and "Coincident" in errs[0].hint
+
+
+def test_open_polyline_in_a_solid_is_engraved_with_a_warning(outdir):
+    c = _compile("solid s {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+                 "    z = Polyline([(-10, 0), (0, 5), (10, 0)])\n}\n", outdir / "w.aidl")
+    assert c.ok and [d.code for d in c.sink.items] == ["W0402"]
+    assert c.sink.items[0].span.line == 3
+
+
+def _loop_area(segs) -> float:
+    """Signed area of a loop of lines and arcs read from a file (mm^2): the shoelace over the
+    ends plus each arc's circular segment."""
+    a = 0.0
+    for s in segs:
+        if isinstance(s, C):
+            return math.pi * s.radius ** 2
+        (x0, y0), (x1, y1) = s.start, s.end
+        a += 0.5 * (x0 * y1 - x1 * y0)
+        if isinstance(s, A):
+            a += 0.5 * s.radius ** 2 * (s.sweep - math.sin(s.sweep))
+    return a
+
+
+@settings(max_examples=10, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@given(ys=st.lists(st.integers(-12, 12), min_size=2, max_size=6),
+       dxs=st.lists(st.integers(4, 12), min_size=5, max_size=5),
+       w=st.sampled_from([1, 2, 3]))
+def test_law_a_round_stroke_is_the_buffer_of_its_path(tmp_path_factory, ys, dxs, w):
+    """Law: Stroke(polyline, w) with round caps is the polyline's Minkowski sum with a disc of
+    radius w/2, which is shapely's buffer (round caps and joins, 256 segments a quarter
+    circle): equal areas to the buffer's polygon error (1e-5 relative)."""
+    from shapely.geometry import LineString
+    xs = [0]
+    for d in dxs[:len(ys) - 1]:
+        xs.append(xs[-1] + d)
+    pts = list(zip(xs, ys))
+    out = tmp_path_factory.mktemp("stroke")
+    text = ", ".join(f"({x}, {y})" for x, y in pts)
+    src = f"solid s {{\n    p = Polyline([{text}])\n    b = Stroke(p, width={w})\n}}\n"
+    loops = cut(render(out, src, ".dxf"))
+    got = sum(_loop_area(e.segments) for e in loops)
+    ref = LineString(pts).buffer(w / 2, quad_segs=256).area
+    assert abs(abs(got) - ref) <= 1e-5 * ref, (src, got, ref)
