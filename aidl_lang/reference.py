@@ -667,7 +667,9 @@ DETAILS: dict[str, str] = {
             "middle on the circle at the arc length of its middle in the straight text. "
             "angle= says where the text's position point goes (anchor and valign as "
             "usual: the baseline on the circle by default); without it the arc's middle, a "
-            "circle's top. Labels round a center: `for a in range(0, 181, 10) { t = "
+            "circle's top. flip=true reads counter-clockwise with the letters' up toward the center: "
+            "text under a circle, the right way up (its default place: the circle's bottom). "
+            "Labels round a center: `for a in range(0, 181, 10) { t = "
             "Text(str(a), along=ring, angle=a * 1 deg, size=3) }`, no cos or sin. The "
             "text's position is the curve's center; its box is taken at the starting radius.",
 }

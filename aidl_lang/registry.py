@@ -250,7 +250,9 @@ _DEFS = {
                 A("along", "any", None, "a Circle or Arc: the text follows it clockwise, "
                   "each letter upright, instead of a position", kw_only=True),
                 A("angle", "angle", None, "with along=: where on the circle the position "
-                  "point goes (default: the arc's middle, a circle's top)", kw_only=True)],
+                  "point goes (default: the arc's middle, a circle's top)", kw_only=True),
+                A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
+                  "toward the center (text under a circle, readable)", kw_only=True)],
                doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=.", members=TEXT_MEMBERS),
@@ -463,7 +465,7 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
              "font_size": "size", "on": "along", "path": "along", "arc": "along",
              "circle": "along", "curve": "along", "at_angle": "angle", "start_angle": "angle",
-             "around": "along"},
+             "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Circle": {"position": "center", "at": "center"},

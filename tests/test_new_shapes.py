@@ -360,6 +360,26 @@ def test_text_along_an_arc_reads_clockwise_with_upright_letters(outdir):
     assert xs[0] < 0 < xs[1] and abs(xs[0] + xs[1]) <= 1e-9      # symmetric about the top
 
 
+def test_text_along_flipped_reads_counter_clockwise_under_the_circle(outdir):
+    """flip=true: an "I" under a circle of radius 30 (its bottom by default) runs from radius
+    30 in to 25, its up toward the centre; "IL" starting at the bottom reads left to right,
+    counter-clockwise, so its L (foot on the circle) lies to the right, x > 0."""
+    src = ("solid s {\n    body = Circle(center=(0, 0), radius=50)\n    Fixed(body)\n"
+           "    drawing t {\n        ring = Circle(center=(0, 0), radius=30, construction=true)\n"
+           "        i = Text(\"I\", along=ring, flip=true, size=5)\n    }\n"
+           "    Coincident(t.ring.center, body.center)\n}\n")
+    segs = _engraved(render(outdir, src, ".dxf"))
+    assert len(segs) == 1
+    ends = sorted([segs[0].start, segs[0].end], key=lambda p: p[1])
+    assert near(ends[0], (0, -30)) and near(ends[1], (0, -25))
+    src = src.replace('Text(\"I\", along=ring, flip=true, size=5)',
+                      'Text(\"IL\", along=ring, flip=true, angle=-90 deg, size=5, '
+                      'anchor=\"start\")')
+    segs = _engraved(render(outdir, src, ".dxf"))
+    xs = [p[0] for s in segs for p in (s.start, s.end)]
+    assert min(xs) >= -1e-9 and max(xs) > 3          # from the bottom, to the right
+
+
 @pytest.mark.parametrize("call, words", [
     ("l = Line((0, 0), (10, 0), construction=true)\n        t = Text(\"A\", along=l)",
      "Circle or an Arc"),

@@ -872,7 +872,7 @@ def _build_Text(ctx, g, a):
         if ang is None:
             ang = g.data["start_angle"]
         segs = text_strokes_along(g.data["text"], g.data["size"], g.data["radius0"], ang,
-                                  anchor, valign)
+                                  anchor, valign, g.data["flip"])
         xs = [p[0] for s_ in segs for p in s_] or [0.0]
         ys = [p[1] for s_ in segs for p in s_] or [0.0]
         g.data["extent"] = (min(xs), max(xs), min(ys), max(ys))
@@ -908,8 +908,9 @@ def _text_along(ctx, g, a) -> None:
     ang = a.get("angle")
     g.data["along"] = src
     g.data["angle"] = None if ang is None else _const(ctx, ang, "Text angle")
-    g.data["start_angle"] = mid
+    g.data["start_angle"] = mid if not a.get("flip") else mid + math.pi * (src.kind == "Circle")
     g.data["radius0"] = r
+    g.data["flip"] = bool(a.get("flip"))
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}

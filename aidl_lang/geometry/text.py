@@ -120,13 +120,15 @@ def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "
 
 
 def text_strokes_along(text: str, size: float, radius: float, angle: float,
-                       anchor: str = "middle", valign: str = "baseline") -> list[tuple[tuple, tuple]]:
+                       anchor: str = "middle", valign: str = "baseline",
+                       flip: bool = False) -> list[tuple[tuple, tuple]]:
     """Line segments in mm relative to the center of a circle of ``radius`` mm: the text laid
     along the circle clockwise (left to right over the top), each letter upright (its up
     pointing away from the center) and rigid, its middle on the circle at the arc length of
     its middle along the straight text.  ``angle`` (radians, counter-clockwise from +x) is
     where the straight text's position point lands: ``anchor`` and ``valign`` as in
-    :func:`text_strokes` (baseline on the circle by default)."""
+    :func:`text_strokes` (baseline on the circle by default).  ``flip``: counter-clockwise
+    instead, each letter's up toward the center (readable under a circle)."""
     glyphs = _glyphs()
     segs = _raw(text)
     if not segs or radius <= 0:
@@ -147,14 +149,15 @@ def text_strokes_along(text: str, size: float, radius: float, angle: float,
             continue
         strokes, advance = g
         mid = (pen + advance / 2 + dx) * k           # the letter's middle along the text (mm)
-        t = angle - mid / radius                     # clockwise along the circle
-        er = (math.cos(t), math.sin(t))              # up: away from the center
-        tg = (math.sin(t), -math.cos(t))             # along: clockwise
+        sg = -1.0 if flip else 1.0
+        t = angle - sg * mid / radius                # clockwise (flip: counter-clockwise)
+        er = (math.cos(t), math.sin(t))              # outward
+        tg = (sg * math.sin(t), -sg * math.cos(t))   # along the reading direction
         for stroke in strokes:
             pts = []
             for x, y in stroke:
                 u = (pen + x + dx) * k - mid
-                v = radius + (y - base) * k + dy
+                v = radius + sg * ((y - base) * k + dy)   # up: away from (flip: toward) the center
                 pts.append((v * er[0] + u * tg[0], v * er[1] + u * tg[1]))
             out.extend(zip(pts, pts[1:]))
         pen += advance

@@ -616,15 +616,17 @@ class Renderer:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
         its ``angle``, else the arc's middle (a circle's top)."""
         from ..geometry.text import text_strokes_along
+        flip = bool(g.data.get("flip"))
         if along.kind == "Arc":
             arc = self.segment(along)
             r, mid = arc.radius, arc.start_angle + arc.sweep / 2
-        else:
-            r, mid = float(abs(self.x[along.scalars["radius"].index])), math.pi / 2
+        else:                                    # a circle's top (flip: its bottom)
+            r, mid = float(abs(self.x[along.scalars["radius"].index])), \
+                -math.pi / 2 if flip else math.pi / 2
         ang = g.data.get("angle")
         return text_strokes_along(g.data["text"], g.data["size"], r,
                                   mid if ang is None else ang, g.data["anchor"],
-                                  g.data.get("valign", "baseline"))
+                                  g.data.get("valign", "baseline"), flip)
 
     def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
         """Union of a solid or hole structure, holes subtracted for solids."""
