@@ -281,7 +281,10 @@ def _units_block(kinds) -> list[str]:
 
 
 def _entry_topic(e: Entry) -> Topic:
-    lines = [_wrap(e.doc, ""), "", "Forms:"]
+    lines = [_wrap(e.doc, "")]
+    if e.name in DETAILS:
+        lines += [""] + [_wrap(par, "") for par in DETAILS[e.name].split("\n\n")]
+    lines += ["", "Forms:"]
     for v in e.variants:
         ps = []
         for a in v:
@@ -520,6 +523,17 @@ angles, strings, lists), not geometry; place the instance with constraints in th
 Bare numbers in the body are in the defining file's unit. A parameter without a default is
 required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
 """, ["template", "templates", "function", "define", "instance"]),
+    "mirror": ("statement", "`mirror(points, about=\"y\")`: a point list and its mirror image, "
+               "for a symmetric outline written once.", """
+`mirror(points, about="y")` gives the points, then their mirror images in reverse order, so
+that `Polygon(mirror(half, about="y"))` or `Spline(mirror(half, about="y"), closed=true)` is
+symmetric and is written once. `about`: `"y"` (the y axis: x -> -x, exact), `"x"` (y ->
+-y), or a Line (reflected across the line through its start and end as they are before
+solving: exact for lines at multiples of 45 degrees). A first or last point that lies on the
+axis is not repeated, so a half from the axis to the axis gives 2n - 2 points: with Spline
+corners, point i and its mirror 2n - 2 - i. A list that is not points, or another `about`,
+is E0108; `about=` is the one keyword argument a function takes.
+""", ["mirror points", "symmetric outline", "symmetric"]),
     "assert": ("statement", "`assert cond, \"why\"`: a requirement checked after solving, never "
                "solved for.", """
 `assert CONDITION` or `assert CONDITION, "reason"`, in a structure or at the top level: the
@@ -618,9 +632,63 @@ otherwise it starts a comment (`// note` on its own line, `x = f(a) // half of i
     "functions": ("statement", "sin, cos, sqrt, min, max, range, ...: functions and "
                   "constants.", "\n".join(
         [f"`{n}`: {doc}" for n, (_lo, _hi, doc) in FUNCTIONS.items()]
-        + ["Constants: pi, tau, true, false. Functions take no keyword arguments."]),
+        + ["Constants: pi, tau, true, false. Functions take no keyword arguments, but "
+           "`mirror(points, about=...)`."]),
         ["function list", "math"]),
 }
+
+# ---------------------------------------------------------------- details of entries
+# what the registry's one-line docs (also the prompt's) leave out: `aidl docs NAME` only
+DETAILS: dict[str, str] = {
+    "Polyline": "Straight segments through the points, in order, not closed: an engraving "
+                "in a drawing (a cord, a zig-zag, a meander), a path for Stroke, or a chain "
+                "that Lines, Arcs and open Splines sharing its ends close into an outline. "
+                "closed=true makes it a Polygon. Literal coordinates make it rigid (as "
+                "Polygon) unless flexible=true. Members: points, start, end, edges (the "
+                "segments as Lines), bb. Fewer than 2 points or two consecutive equal points "
+                "are E0108. Also written PolyLine, LineString, Path, Chain, ZigZag.",
+    "Spline": "corners=[i, ...] names points where the curve turns sharply "
+              "(tangent-discontinuous): a leaf's tip, a violin's corners. The spline is cut "
+              "there into runs, each the natural spline through its points (a run of two "
+              "points is straight), so it is C2 between corners and passes through every "
+              "point. An index that is not a point's, or an open spline's first or last "
+              "point, is E0108. Negative indices count from the end.",
+    "Sector": "The arc of `radius` about center runs counter-clockwise from start_angle to "
+              "end_angle (held, rigid: the shape only moves); two radial lines close it to "
+              "the center (a pie slice) or, with inner_radius=, to the inner arc (an annulus "
+              "segment: a ring's piece). Exact: one or two arcs and two lines. Members: "
+              "center, start, end (the outer arc's ends), midpoint (halfway along it), "
+              "radius = outer_radius, inner_radius, width (radius - inner_radius), bb (the "
+              "ends and the outer arc's extremes). Equal angles (a whole turn) or an "
+              "inner_radius not below the radius are E0108. Also written Wedge, Pie, "
+              "PieSlice, CircularSector, AnnularSector, AnnulusSegment, RingSegment.",
+    "Stroke": "A band `width` wide along an open path: a Line, an Arc, an open Polyline "
+              "or Spline, or a list of them joined end to end (in any direction: each piece is turned "
+              "to start where the previous one ends; a gap is E0108). cap=\"round\" (the "
+              "default) is the path's Minkowski sum with a disc of radius width/2: each "
+              "segment's stadium or arc slot, round joins and ends; cap=\"flat\" cuts "
+              "both ends square (the joins stay round; an end arc tighter than width/2 is "
+              "E0108). Exact: lines offset by width/2 and arcs concentric with the path's, "
+              "united by Manifold and put back on the exact curves. Along an open Spline "
+              "the sides are cubic splines through points of the true offset, within 1e-4 "
+              "mm of it (the offset of a cubic is no cubic); a spline bending tighter than "
+              "width/2 is E0108. For exact sides build the curve from tangent Arcs. The "
+              "path is not drawn "
+              "(construction). Box: the path's grown by width/2. A band around a closed "
+              "shape is Shell.",
+    "Text": "along=circle_or_arc lays the text along a Circle or Arc (of the same drawing, "
+            "usually construction=true) instead of at a position: clockwise, left to right "
+            "over the top, each letter rigid and upright (its up away from the center), its "
+            "middle on the circle at the arc length of its middle in the straight text. "
+            "angle= says where the text's position point goes (anchor and valign as "
+            "usual: the baseline on the circle by default); without it the arc's middle, a "
+            "circle's top. flip=true reads counter-clockwise with the letters' up toward the center: "
+            "text under a circle, the right way up (its default place: the circle's bottom). "
+            "Labels round a center: `for a in range(0, 181, 10) { t = "
+            "Text(str(a), along=ring, angle=a * 1 deg, size=3) }`, no cos or sin. The "
+            "text's position is the curve's center; its box is taken at the starting radius.",
+}
+
 
 # ---------------------------------------------------------------- examples (all compile)
 
@@ -682,7 +750,22 @@ EXAMPLES: dict[str, str] = {
     "Ellipse": _solid("e = Ellipse(center=(0, 0), rx=20, ry=10, rotation=30 deg)", "egg"),
     "Polygon": _solid("p = Polygon([(0, 0), (30, 0), (30, 10), (10, 20)])   # rigid: keeps "
                       "its shape", "bracket"),
-    "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)", "leaf"),
+    "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)\n"
+                     "tip = Spline([(30, 0), (50, 10), (70, 0), (50, -10)], closed=true, "
+                     "corners=[0, 2])    # pointed at points 0 and 2", "leaf"),
+    "mirror": _solid("half = [(0, -20), (12, -15), (15, 5), (6, 18), (0, 20)]\n"
+                     "p = Polygon(mirror(half, about=\"y\"))    # symmetric left and right",
+                     "vase"),
+    "Polyline": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nFixed(body)\n"
+                       "drawing zigzag {\n    z = Polyline([(-15, -5), (-5, 5), (5, -5), "
+                       "(15, 5)])\n}\nCoincident(zigzag.z.start, (-15, -5))", "plate"),
+    "Sector": _solid("pie = Sector(center=(0, 0), radius=30, start_angle=0 deg, end_angle=120 deg)\n"
+                     "Fixed(pie)\nhole window {\n    w = Sector(center=(0, 0), radius=24, "
+                     "inner_radius=12, start_angle=20 deg, end_angle=100 deg)\n}\n"
+                     "Coincident(window.w.center, pie.center)", "fan"),
+    "Stroke": _solid("a = Arc(center=(0, 8), radius=8, start_angle=-90 deg, end_angle=90 deg)\n"
+                     "b = Arc(center=(0, -8), radius=8, start_angle=90 deg, end_angle=270 deg)\n"
+                     "s = Stroke([a, b], width=3)    # an S, 3 mm wide, round ends", "hook"),
     "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
@@ -702,8 +785,10 @@ EXAMPLES: dict[str, str] = {
     "Hull": _solid("a = Circle(center=(0, 0), radius=10)\nb = Circle(center=(30, 0), "
                    "radius=5)\nh = Hull(a, b)", "cam"),
     "Text": _solid("body = RoundedRectangle(center=(0, 0), width=50, height=20, "
-                   "corner_radius=3)\ndrawing label {\n    t = Text(\"AIDL\", position=(0, 0), "
-                   "size=8, valign=\"middle\")\n}\nFixed(body)\nCenterInside(label, body)",
+                   "corner_radius=3)\ndrawing label {\n    t = Text(\"AIDL\", position=(0, -3), "
+                   "size=7, valign=\"middle\")\n    ring = Circle(center=(0, -46), radius=49, "
+                   "construction=true)\n    top = Text(\"TOP\", along=ring, size=3)    # on "
+                   "the circle's top, upright\n}\nFixed(body)\nCenterInside(label, body)",
                    "tag"),
     # geometric constraints
     "Coincident": _solid("a = Rectangle(center=(0, 0), width=20, height=10)\n"

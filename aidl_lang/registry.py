@@ -106,6 +106,7 @@ STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
                    "radius": "length", "width": "length", "inner_radius": "length",
                    "outer_radius": "length", "bb": "bbox"}
+SECTOR_MEMBERS = ARCSLOT_MEMBERS
 DERIVED_MEMBERS = {"bb": "bbox"}
 SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
@@ -182,8 +183,14 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
-    "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                 doc="A smooth curve through the points; closed=true: an outline.",
+    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
+                   doc="Open chain of lines.",
+                   members=SPLINE_MEMBERS),
+    "Spline": _p([A("points", "points"), A("closed", "bool", False),
+                  A("corners", "any", None, "indices of points where the curve turns "
+                    "sharply (tangent-discontinuous)", kw_only=True), FLEXIBLE],
+                 doc="A smooth curve through the points; closed=true: an outline; "
+                     "corners=[i]: sharp.",
                  members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
@@ -208,6 +215,12 @@ _DEFS = {
                       "center from start_angle to end_angle (all held); start, end: its end "
                       "caps' centers.",
                   members=ARCSLOT_MEMBERS),
+    "Sector": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
+                  A("end_angle", "angle"),
+                  A("inner_radius", "length", 0.0, "> 0: an annulus segment (a ring's piece) "
+                    "instead of a pie slice", kw_only=True)],
+                 doc="Pie slice; inner_radius=: annulus.",
+                 members=SECTOR_MEMBERS),
     "Star": _p([A("center", "point"), A("points", "number"), A("outer_radius", "length"),
                 A("inner_radius", "length"), A("rotation", "angle", 0.0)],
                doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
@@ -221,16 +234,28 @@ _DEFS = {
     "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
                 doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
                     "is not drawn.", members=DERIVED_MEMBERS),
+    "Stroke": _p([A("path", "any"), A("width", "length"),
+                  A("cap", "string", "round", "\"round\" (the path's Minkowski sum with a "
+                    "disc) or \"flat\" (ends cut square)", kw_only=True)],
+                 doc="Band along an open path; cap=\"flat\".",
+                 members=DERIVED_MEMBERS),
     "Hull": _p([A("shapes", "any")],
                [A("shape1", "geometry"), A("shape2", "geometry")]
                + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six), not drawn.",
                members=DERIVED_MEMBERS),
-    "Text": _p([A("text", "string"), A("position", "point"), A("size", "length", 5.0),
+    "Text": _p([A("text", "string"), A("position", "point", None), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
-                A("rotation", "angle", 0.0)],
+                A("rotation", "angle", 0.0),
+                A("along", "any", None, "a Circle or Arc: the text follows it clockwise, "
+                  "each letter upright, instead of a position", kw_only=True),
+                A("angle", "angle", None, "with along=: where on the circle the position "
+                  "point goes (default: the arc's middle, a circle's top)", kw_only=True),
+                A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
+                  "toward the center (text under a circle, readable)", kw_only=True)],
                doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
-                   "middle, end; valign: baseline, middle, top, bottom; rotation about position.", members=TEXT_MEMBERS),
+                   "middle, end; valign: baseline, middle, top, bottom; rotation about "
+                   "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line/circle: on it)."),
@@ -404,6 +429,25 @@ SYNONYMS: dict[str, str] = {
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
     "BSpline": "Spline",
+    "PolyLine": "Polyline",
+    "LineString": "Polyline",
+    "Path": "Polyline",
+    "OpenPolygon": "Polyline",
+    "Chain": "Polyline",
+    "ZigZag": "Polyline",
+    "Sweep": "Stroke",
+    "Band": "Stroke",
+    "Thicken": "Stroke",
+    "ThickLine": "Stroke",
+    "Wire": "Stroke",
+    "Trace": "Stroke",
+    "Wedge": "Sector",
+    "Pie": "Sector",
+    "PieSlice": "Sector",
+    "CircularSector": "Sector",
+    "AnnularSector": "Sector",
+    "AnnulusSegment": "Sector",
+    "RingSegment": "Sector",
     "Interpolate": "Spline",
     "InterpolatedCurve": "Spline",
     "SmoothCurve": "Spline",
@@ -426,7 +470,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
           "w": "width", "h": "height", "pos": ("position", "center"), "rot": "rotation",
           "n": ("count", "sides", "points"), "num": ("count", "sides", "points")},
     "Text": {"center": "position", "at": "position", "height": "size", "string": "text",
-             "font_size": "size"},
+             "font_size": "size", "on": "along", "path": "along", "arc": "along",
+             "circle": "along", "curve": "along", "at_angle": "angle", "start_angle": "angle",
+             "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Circle": {"position": "center", "at": "center"},
@@ -443,6 +489,11 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "ArcSlot": {"position": "center", "at": "center", "start": "start_angle",
                 "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
                 "angle1": "start_angle", "angle2": "end_angle", "path_radius": "radius"},
+    "Sector": {"position": "center", "at": "center", "start": "start_angle",
+               "end": "end_angle", "from_angle": "start_angle", "to_angle": "end_angle",
+               "angle1": "start_angle", "angle2": "end_angle", "outer_radius": "radius",
+               "r_outer": "radius", "outer": "radius", "r_inner": "inner_radius",
+               "inner": "inner_radius", "hole_radius": "inner_radius"},
     "Star": {"position": "center", "at": "center", "n_points": "points", "tips": "points",
              "count": "points", "num_points": "points", "r_outer": "outer_radius",
              "r_inner": "inner_radius", "radius": "outer_radius",
@@ -455,7 +506,15 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
               "wall_thickness": "thickness"},
     "Spline": {"through": "points", "pts": "points", "vertices": "points",
                "fit_points": "points", "through_points": "points", "periodic": "closed",
-               "cyclic": "closed", "is_closed": "closed", "loop": "closed"},
+               "cyclic": "closed", "is_closed": "closed", "loop": "closed",
+               "sharp": "corners", "sharp_points": "corners", "cusps": "corners",
+               "kinks": "corners", "corner_points": "corners", "sharp_corners": "corners"},
+    "Polyline": {"through": "points", "pts": "points", "vertices": "points",
+                 "is_closed": "closed", "loop": "closed", "close": "closed"},
+    "Stroke": {"along": "path", "curve": "path", "spine": "path", "shape": "path",
+               "of": "path", "paths": "path", "thickness": "width", "stroke_width": "width",
+               "line_width": "width", "caps": "cap", "end": "cap", "ends": "cap",
+               "cap_style": "cap", "end_cap": "cap"},
     "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",
@@ -510,6 +569,10 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "radians": (1, 1, "a bare number of degrees as an angle"),
     "degrees": (1, 1, "an angle as a bare number of degrees"),
     "distance": (2, 2, "distance between two points (a length expression)"),
+    "mirror": (1, 2, "mirror(points, about=\"y\"): the points, then their mirror images in "
+                     "reverse order (a symmetric outline written once); about: \"y\" (the "
+                     "y axis: x -> -x), \"x\" (y -> -y) or a Line (as it starts); a point on "
+                     "the axis at either end is not repeated"),
 }
 
 CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "False": "bool",

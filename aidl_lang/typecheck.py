@@ -54,7 +54,6 @@ HALLUCINATIONS = {
     "Hexagon": "write `RegularPolygon(center=..., radius=..., sides=6)`",
     "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
     "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",
-    "Polyline": "write `Polygon(points=[...])` for a closed outline, or Lines that share endpoints",
     "Bezier": "there are no Bézier control points: `Spline(points=[...], closed=true)` is a "
               "smooth curve THROUGH its points (exact cubic Béziers in SVG, SPLINE in DXF)",
     "BezierCurve": "there are no Bézier control points: `Spline(points=[...], closed=true)` is "

@@ -34,6 +34,9 @@ SAMPLE = {
     # shapes made from shapes: the sample changes the drawn area, not the solution
     "Offset": "r2, 2", "Inset": "r1, 3", "Hull": "r1, r2",
     "Spline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",
+    "Polyline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",
+    "Sector": "center=(200, 0), radius=20, start_angle=0, end_angle=90",
+    "Stroke": "l1, 2",
     # operations: a sample that makes no copies (the unknowns stay comparable)
     "GridPattern": "r2, 1, 1, 5)\n    Above(r2, r1", "CornerPattern": "p, at=[(60, 60)]",
     "At": "p, q, 3, 4", "Rigid": "p, q)\n    Midpoint(p, l1",

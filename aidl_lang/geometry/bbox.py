@@ -199,7 +199,28 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
                 else:
                     ys.append(cy + Ro * dy)
         return
-    if k in ("Offset", "Shell", "Hull"):
+    if k == "Sector":
+        # the radial lines' ends (the center of a pie slice) and the outer arc's extremes
+        # that its sweep passes (a held shape: angles and radii are numbers)
+        R = g.data["dims"]["radius"]
+        sweep = g.data["angles"][1]
+        c, m = g.points["center"], g.points["midpoint"]       # a copy's, turned or mirrored
+        a1 = math.atan2(x[m.iy] - x[c.iy], x[m.ix] - x[c.ix]) - sweep / 2
+        for n in ("start", "end", "inner_start", "inner_end") if "inner_start" in P else \
+                ("start", "end", "center"):
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+        cx, cy = P["center"]
+        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
+                              (1.5 * math.pi, (0, -1))):
+            if (ang - a1) % (2 * math.pi) <= sweep:
+                if dx:
+                    xs.append(cx + R * dx)
+                else:
+                    ys.append(cy + R * dy)
+        return
+    if k in ("Offset", "Shell", "Hull", "Stroke"):
         # the sources' boxes (they are construction geometry, left out of the structure's
         # box): a hull's box is theirs; an outward offset's (round joins) theirs grown by the
         # distance, exactly; an inset's is taken as its shape's (a little larger than it)
@@ -207,7 +228,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         sy: list = []
         for src in g.data["sources"]:
             _geom_candidates(src, frame, x, sx, sy, offs)
-        d = g.data.get("distance", g.data.get("thickness", 0.0))
+        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
         if k != "Hull" and d > 0:
             sx = [c - d for c in sx] + [c + d for c in sx]
             sy = [c - d for c in sy] + [c + d for c in sy]
@@ -279,7 +300,7 @@ def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
     h = _steps(V, closed)
     if len(V) < (3 if closed else 2) or not (h > 0).all():
         return
-    W = interpolation_matrix(h, closed)
+    W = interpolation_matrix(h, closed, g.data.get("corners", ()))
     C = W @ V
     for i in range(len(h)):
         b = tuple(tuple(C[3 * i + k]) for k in range(4))

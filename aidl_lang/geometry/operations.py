@@ -120,6 +120,11 @@ class _Cloner:
             new.data["sources"] = [self.geom(src, dest) for src in g.data["sources"]]
         if "part_of" in g.data:
             new.data["part_of"] = self.geoms.get(g.data["part_of"], g.data["part_of"])
+        if g.data.get("along") is not None:  # Text along a curve: the copy follows the copy
+            new.data["along"] = self.geom(g.data["along"], dest)
+            if g.data.get("angle") is not None:
+                a = g.data["angle"]
+                new.data["angle"] = 2 * self.line_angle - a if self.flip else a + (self.rot or 0.0)
         new.parts = {n: self.geom(p, dest) for n, p in g.parts.items()}
         if g.listed:                         # edges of shapes are parts, not listed
             new.listed = True

@@ -445,6 +445,37 @@ def _build_Polygon(ctx, g, a):
     g.closed = True
 
 
+def _build_Polyline(ctx, g, a):
+    """An open chain of straight segments through the points (closed=true: a Polygon)."""
+    if a.get("closed"):
+        _build_Polygon(ctx, g, a)
+        g.data["closed"] = True
+        return
+    pts_in = a["points"]
+    if len(pts_in) < 2:
+        raise PrimitiveError(f"an open Polyline needs at least 2 points, got {len(pts_in)}")
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
+    except (AttributeError, TypeError):
+        xy = None
+    if xy is not None:
+        scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+        for i in range(len(xy) - 1):
+            (x0, y0), (x1, y1) = xy[i], xy[i + 1]
+            if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
+                raise PrimitiveError(f"a Polyline's points[{i}] and points[{i + 1}] are the "
+                                     f"same point ({x0:g}, {y0:g}): a segment of zero "
+                                     f"length; remove one of them")
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    g.data["closed"] = False
+    g.data["edges"] = _polygon_edges(ctx, g, pts)[:-1]
+    g.closed = False
+
+
 def _build_Spline(ctx, g, a):
     from .spline import SplineError, check_points
     pts_in = a["points"]
@@ -464,7 +495,34 @@ def _build_Spline(ctx, g, a):
     _hold_literal_shape(ctx, g, pts_in, pts, a)
     g.data["order"] = [f"p{i}" for i in range(len(pts))]
     g.data["closed"] = closed
+    g.data["corners"] = _spline_corners(ctx, a.get("corners"), len(pts), closed)
     g.closed = closed
+
+
+def _spline_corners(ctx, v, m: int, closed: bool) -> tuple[int, ...]:
+    """``corners=[i, ...]``: indices (0 .. m - 1) of a Spline's points where it turns sharply;
+    an open spline's first and last points are ends already."""
+    if v is None:
+        return ()
+    items = list(v) if isinstance(v, (list, tuple)) else [v]
+    out = []
+    for q in items:
+        c = q.const() if isinstance(q, Q) and q.dim == NUM else None
+        if c is None or abs(c - round(c)) > 1e-9:
+            raise PrimitiveError(f"a Spline's corners are indices of its points (whole numbers "
+                                 f"0 to {m - 1}), got {type_name(q) if c is None else f'{c:g}'}")
+        i = int(round(c))
+        if i < 0:
+            i += m                                  # corners=[-1]: the last point, as lists
+        if not 0 <= i < m:
+            raise PrimitiveError(f"a Spline's corner {int(round(c))} is not one of its points "
+                                 f"(indices 0 to {m - 1})")
+        if not closed and i in (0, m - 1):
+            raise PrimitiveError(f"corner {i} is an end of the open Spline, where it stops "
+                                 f"anyway: name inner points (1 to {m - 2}), or use "
+                                 f"closed=true")
+        out.append(i)
+    return tuple(sorted(set(out)))
 
 
 def _check_polygon_points(ctx, pts) -> None:
@@ -571,6 +629,36 @@ def _build_ArcSlot(ctx, g, a):
     g.closed = True
 
 
+def _build_Sector(ctx, g, a):
+    """A pie slice (``inner_radius`` 0) or an annulus segment: the counter-clockwise arc of
+    ``radius`` about center from start_angle to end_angle, closed by two radial lines (to the
+    center, or to the inner arc of ``inner_radius`` back); rigid, every dimension held."""
+    _positive(a["radius"], "radius", "Sector")
+    R = _const(ctx, a["radius"], "radius")
+    r = _const(ctx, a.get("inner_radius", Q.num(0.0, LEN)), "inner_radius")
+    a1 = _const(ctx, a["start_angle"], "Sector start_angle")
+    a2 = _const(ctx, a["end_angle"], "Sector end_angle")
+    if r < 0 or not r < R:
+        raise PrimitiveError(f"a Sector's inner_radius ({r:g} mm) must be 0 (a pie slice) or "
+                             f"between 0 and its radius ({R:g} mm)")
+    sweep = (a2 - a1) % (2 * math.pi)
+    if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
+        raise PrimitiveError("a Sector needs different start and end angles (less than a "
+                             "whole turn apart): for a disc use a Circle, for a ring a "
+                             "Circle with a hole")
+    mid = a1 + sweep / 2
+    offs = {"start": (R * math.cos(a1), R * math.sin(a1)),
+            "end": (R * math.cos(a1 + sweep), R * math.sin(a1 + sweep)),
+            "midpoint": (R * math.cos(mid), R * math.sin(mid))}
+    if r > 0:
+        offs["inner_start"] = (r * math.cos(a1), r * math.sin(a1))
+        offs["inner_end"] = (r * math.cos(a1 + sweep), r * math.sin(a1 + sweep))
+    _rigid(ctx, g, dict(a, rotation=Q.num(0.0, ANG)), offs, "Sector")
+    g.data["dims"] = {"radius": R, "width": R - r, "inner_radius": r, "outer_radius": R}
+    g.data["angles"] = (a1, sweep)
+    g.closed = True
+
+
 def _source(v, what: str) -> Geometry:
     """The shape an Offset, Shell or Hull is made from: geometry with an inside."""
     if not isinstance(v, GeomRef):
@@ -639,6 +727,70 @@ def _build_Hull(ctx, g, a):
     _consume(g, [_source(v, "Hull") for v in items])
 
 
+_STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline")
+
+
+def _build_Stroke(ctx, g, a):
+    """A band of constant width along an open path: the path's Minkowski sum with a disc of
+    radius width/2 (round caps), or with the ends cut square (flat caps).  The path is one
+    open curve or a list of them that join end to end (in any direction)."""
+    v = a["path"]
+    items = list(v) if isinstance(v, (list, tuple)) else [v]
+    if not items:
+        raise PrimitiveError("a Stroke needs a path: a Line, Arc, Polyline or Spline, or a "
+                             "list of them joined end to end")
+    srcs = []
+    for it in items:
+        if not isinstance(it, GeomRef) or it.geom.kind not in _STROKE_PATHS:
+            raise PrimitiveError(f"a Stroke follows a Line, Arc, open Polyline or open Spline "
+                                 f"(or a list of them), got "
+                                 f"{it.geom.kind if isinstance(it, GeomRef) else type_name(it)}"
+                                 + (": for a band around a closed shape use Shell(shape, "
+                                    "width)" if isinstance(it, GeomRef) else ""))
+        src = it.geom
+        if src.closed:
+            raise PrimitiveError(f"a Stroke follows an open path, not a closed {src.kind}: "
+                                 f"for a band around a closed shape use Shell(shape, width)")
+        srcs.append(src)
+    _positive(a["width"], "width", "Stroke")
+    w = _const(ctx, a["width"], "Stroke width")
+    cap = a.get("cap", "round")
+    cap = {"square": "flat", "butt": "flat"}.get(cap, cap)
+    if cap not in ("round", "flat"):
+        raise PrimitiveError(f'a Stroke\'s cap must be "round" or "flat", not "{cap}"')
+    _stroke_chain(ctx, srcs)
+    g.data["width"] = w
+    g.data["cap"] = cap
+    _consume(g, srcs)
+
+
+def _stroke_ends(ctx, src) -> tuple:
+    names = src.data.get("order") or ["start", "end"]
+    p, q = src.points[names[0]], src.points[names[-1]]
+    return tuple((ctx.value_of(var(pt.ix)), ctx.value_of(var(pt.iy))) for pt in (p, q))
+
+
+def _stroke_chain(ctx, srcs) -> None:
+    """The pieces of a Stroke's path must join end to end (as they start): the first
+    gap is named."""
+    if len(srcs) < 2:
+        return
+    ends = [_stroke_ends(ctx, s) for s in srcs]
+    tail = None
+    for i in range(len(srcs) - 1):
+        a, b = ends[i], ends[i + 1]
+        cands = [a[1], a[0]] if tail is None else [tail]
+        best = min(((math.dist(p, q), q, other) for p in cands for q, other in
+                    ((b[0], b[1]), (b[1], b[0]))), key=lambda t: t[0])
+        gap, _q, other = best
+        scale = max(1.0, *(abs(c) for pt in a + b for c in pt))
+        if gap > 1e-6 * scale:
+            raise PrimitiveError(f"a Stroke's path pieces {i} and {i + 1} do not join: their "
+                                 f"nearest ends are {gap:g} mm apart; start each piece where "
+                                 f"the previous one ends (e.g. `start=a.end`)")
+        tail = other
+
+
 def _build_Slot(ctx, g, a):
     if "angle" in a:                # polar: from start (an end arc's center) by length, angle
         _positive(a["length"], "length", "Slot")
@@ -689,7 +841,16 @@ def _build_Slot(ctx, g, a):
 
 
 def _build_Text(ctx, g, a):
-    g.points["position"] = ctx.point(a["position"], "position")
+    if a.get("along") is not None:
+        if a.get("position") is not None:
+            raise PrimitiveError("a Text takes a position or along=, not both: along= puts "
+                                 "it on the curve (angle= says where)")
+        _text_along(ctx, g, a)
+    elif a.get("position") is None:
+        raise PrimitiveError("a Text needs a position (on its baseline, e.g. `position=(0, "
+                             "0)`) or along=circle_or_arc")
+    else:
+        g.points["position"] = ctx.point(a["position"], "position")
     g.data["text"] = a["text"]
     g.data["size"] = _const(ctx, a.get("size", Q.num(5.0, LEN)), "size")
     anchor = a.get("anchor", "middle")
@@ -705,6 +866,51 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    if a.get("along") is not None:
+        from .text import text_strokes_along
+        ang = g.data["angle"]
+        if ang is None:
+            ang = g.data["start_angle"]
+        segs = text_strokes_along(g.data["text"], g.data["size"], g.data["radius0"], ang,
+                                  anchor, valign, g.data["flip"])
+        xs = [p[0] for s_ in segs for p in s_] or [0.0]
+        ys = [p[1] for s_ in segs for p in s_] or [0.0]
+        g.data["extent"] = (min(xs), max(xs), min(ys), max(ys))
+
+
+def _text_along(ctx, g, a) -> None:
+    """``Text(..., along=circle_or_arc, angle=)``: the position is the curve's center
+    (shared); the radius and, without ``angle``, the arc's middle angle are read after the
+    solve (at their starting values for the bounding box)."""
+    v = a["along"]
+    if not isinstance(v, GeomRef) or v.geom.kind not in ("Circle", "Arc"):
+        raise PrimitiveError("a Text along a curve follows a Circle or an Arc (of its drawing; "
+                             "a construction one is not drawn), got "
+                             + (v.geom.kind if isinstance(v, GeomRef) else type_name(v)))
+    src = v.geom
+    c = src.points["center"]
+    g.points["position"] = c if c.owner is ctx.struct else ctx.point(
+        PV(ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))), "position")
+    cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
+    if src.kind == "Circle":
+        r = ctx.value_of(var(src.scalars["radius"].index))
+        mid = math.pi / 2
+    else:
+        s_, e_ = src.points["start"], src.points["end"]
+        sx, sy = ctx.value_of(var(s_.ix)) - cx, ctx.value_of(var(s_.iy)) - cy
+        ex, ey = ctx.value_of(var(e_.ix)) - cx, ctx.value_of(var(e_.iy)) - cy
+        r = math.hypot(sx, sy)
+        a1 = math.atan2(sy, sx)
+        sweep = (math.atan2(ey, ex) - a1) % (2 * math.pi) or 2 * math.pi
+        mid = a1 + sweep / 2
+    if not r > 0:
+        raise PrimitiveError("a Text along a curve needs a curve of positive radius")
+    ang = a.get("angle")
+    g.data["along"] = src
+    g.data["angle"] = None if ang is None else _const(ctx, ang, "Text angle")
+    g.data["start_angle"] = mid if not a.get("flip") else mid + math.pi * (src.kind == "Circle")
+    g.data["radius0"] = r
+    g.data["flip"] = bool(a.get("flip"))
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}
@@ -743,7 +949,8 @@ def points_of(g: Geometry) -> list:
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline")
+    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline",
+                                       "Polyline")
                                  and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
@@ -813,7 +1020,7 @@ def member(g: Geometry, name: str, frame):
             return Q.num(g.data["corner_radius"], LEN)
         if name == "corners":
             return [_pv(p, frame) for p in points_of(g)]
-    if k in ("Star", "ArcSlot") and name in g.data["dims"]:
+    if k in ("Star", "ArcSlot", "Sector") and name in g.data["dims"]:
         return Q.num(g.data["dims"][name], LEN)
     if k == "Trapezoid":
         if name in g.data["dims"]:
@@ -839,7 +1046,9 @@ def member(g: Geometry, name: str, frame):
             sx = sum((p.x for p in pvs[1:]), pvs[0].x) * (1.0 / n)
             sy = sum((p.y for p in pvs[1:]), pvs[0].y) * (1.0 / n)
             return PV(sx, sy, None, own)
-    if k == "Spline":
+    if k == "Polyline" and name == "edges":
+        return [GeomRef(e) for e in g.data["edges"]]
+    if k in ("Spline", "Polyline"):
         pts = points_of(g)
         if name in ("points", "vertices", "through"):
             return [_pv(p, frame) for p in pts]

@@ -74,9 +74,17 @@ def check_points(pts, closed: bool) -> None:
                               f"through one point twice in a row; remove one of them")
 
 
-def interpolation_matrix(h: np.ndarray, closed: bool) -> np.ndarray:
+def interpolation_matrix(h: np.ndarray, closed: bool, corners=()) -> np.ndarray:
     """The ``(3 n + 1) x m`` matrix ``W`` with ``control points = W @ points`` for parameter
-    steps ``h`` (``n`` spans, ``m`` points; ``n = m`` closed, ``m - 1`` open)."""
+    steps ``h`` (``n`` spans, ``m`` points; ``n = m`` closed, ``m - 1`` open).
+
+    ``corners``: indices of points where the curve may turn sharply (tangent-discontinuous):
+    the spline is cut there into open runs, each the natural spline through its points (a
+    run of two points is a straight line), so each corner is the end of one run and the start
+    of the next; a closed curve with corners is the chain of runs from corner to corner."""
+    cs = sorted(set(int(c) for c in corners))
+    if cs:
+        return _cornered_matrix(np.asarray(h, dtype=float), closed, cs)
     n = len(h)
     m = n if closed else n + 1
     A = np.zeros((m, m))
@@ -110,14 +118,46 @@ def interpolation_matrix(h: np.ndarray, closed: bool) -> np.ndarray:
     return W
 
 
-def interpolate(points, closed: bool) -> "CubicSpline":
+def _cornered_matrix(h: np.ndarray, closed: bool, cs: list[int]) -> np.ndarray:
+    """:func:`interpolation_matrix` with corners ``cs`` (sorted point indices): each run
+    between consecutive corners (and, open, the ends) is interpolated on its own."""
+    n = len(h)
+    m = n if closed else n + 1
+    stops = list(cs) if closed else sorted(set([0] + cs + [m - 1]))
+    runs = []
+    if closed:
+        for k, c in enumerate(stops):
+            nxt = stops[(k + 1) % len(stops)]
+            length = (nxt - c) % m or m
+            runs.append([(c + j) % m for j in range(length + 1)])
+    else:
+        runs = [list(range(a, b + 1)) for a, b in zip(stops, stops[1:])]
+    W = np.zeros((3 * n + 1, m))
+    for run in runs:
+        k = len(run) - 1                        # spans of the run: run[j] -> run[j + 1]
+        hr = np.array([h[run[j]] for j in range(k)])
+        Wr = interpolation_matrix(hr, False)    # (3 k + 1) x (k + 1), on the run's points
+        for j in range(k):
+            span = run[j]                       # the global span starting at that point
+            for q in range(4):
+                W[3 * span + q] = 0.0
+                for col, pt in enumerate(run):
+                    W[3 * span + q, pt] += Wr[3 * j + q, col]
+    last = np.zeros(m)
+    last[0 if closed else m - 1] = 1.0
+    W[3 * n] = last
+    return W
+
+
+def interpolate(points, closed: bool, corners=()) -> "CubicSpline":
     """The C2 cubic spline through ``points`` (m x 2, mm) with chord-length parametrisation:
-    periodic when ``closed``, natural ends otherwise (see the module docstring).  Raises
-    :class:`SplineError` (:func:`check_points`)."""
+    periodic when ``closed``, natural ends otherwise (see the module docstring); with
+    ``corners`` (point indices), C2 between corners and sharp at them
+    (:func:`interpolation_matrix`).  Raises :class:`SplineError` (:func:`check_points`)."""
     check_points(points, closed)
     P = np.asarray(points, dtype=float)
     h = _steps(P, closed)
-    C = interpolation_matrix(h, closed) @ P
+    C = interpolation_matrix(h, closed, corners) @ P
     ctrl = [(float(x), float(y)) for x, y in C]
     for i in range(len(P)):         # the curve passes through the points bit for bit
         ctrl[3 * i if 3 * i < len(ctrl) else 0] = (float(P[i, 0]), float(P[i, 1]))

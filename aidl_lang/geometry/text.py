@@ -119,6 +119,51 @@ def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "
     return [(f(a), f(b)) for a, b in segs]
 
 
+def text_strokes_along(text: str, size: float, radius: float, angle: float,
+                       anchor: str = "middle", valign: str = "baseline",
+                       flip: bool = False) -> list[tuple[tuple, tuple]]:
+    """Line segments in mm relative to the center of a circle of ``radius`` mm: the text laid
+    along the circle clockwise (left to right over the top), each letter upright (its up
+    pointing away from the center) and rigid, its middle on the circle at the arc length of
+    its middle along the straight text.  ``angle`` (radians, counter-clockwise from +x) is
+    where the straight text's position point lands: ``anchor`` and ``valign`` as in
+    :func:`text_strokes` (baseline on the circle by default).  ``flip``: counter-clockwise
+    instead, each letter's up toward the center (readable under a circle)."""
+    glyphs = _glyphs()
+    segs = _raw(text)
+    if not segs or radius <= 0:
+        return []
+    base = _baseline()
+    k = size / _cap_height()
+    xs = [p[0] for s in segs for p in s]
+    lo, hi = min(xs), max(xs)
+    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
+    low = min(p[1] for s in segs for p in s)
+    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
+          "bottom": -(low - base) * k}[valign]
+    out = []
+    pen = 0.0
+    for ch in text:
+        g = glyphs.get(ch)
+        if g is None:
+            continue
+        strokes, advance = g
+        mid = (pen + advance / 2 + dx) * k           # the letter's middle along the text (mm)
+        sg = -1.0 if flip else 1.0
+        t = angle - sg * mid / radius                # clockwise (flip: counter-clockwise)
+        er = (math.cos(t), math.sin(t))              # outward
+        tg = (sg * math.sin(t), -sg * math.cos(t))   # along the reading direction
+        for stroke in strokes:
+            pts = []
+            for x, y in stroke:
+                u = (pen + x + dx) * k - mid
+                v = radius + sg * ((y - base) * k + dy)   # up: away from (flip: toward) the center
+                pts.append((v * er[0] + u * tg[0], v * er[1] + u * tg[1]))
+            out.extend(zip(pts, pts[1:]))
+        pen += advance
+    return out
+
+
 @lru_cache(maxsize=1)
 def _baseline() -> float:
     segs = _raw("H")

@@ -25,7 +25,7 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
 # shapes made from other shapes (their source must be in the same structure: E0201's hint)
-DERIVED = ("Offset", "Inset", "Shell", "Hull")
+DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke")
 
 
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
@@ -234,6 +234,11 @@ class Calls:
                             + (f" (a frame or wall cut from it: `Shell({v.geom.name or k}, "
                                "-thickness)` there)" if kind in ("Offset", "Inset") else "")
                             + ", or draw the shape again here and place it with a constraint")
+                if kind == "Text" and k == "along":
+                    hint = ("a Text follows a curve of its own drawing: draw one there, "
+                            "`ring = Circle(center=(0, 0), radius=30, construction=true)`, "
+                            f"and put its center on the shape's with `Coincident(...)` in "
+                            f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
         if kind == "Text" and s.kind != "drawing":
@@ -253,7 +258,7 @@ class Calls:
         if kind == "Text":
             from ..geometry.text import missing_glyphs, text_extent
             self.check_size(len(g.data["text"]), node.span, "a Text")
-            g.data["extent"] = text_extent(g.data["text"], g.data["size"], g.data["anchor"],
+            g.data["extent"] = g.data.get("extent") or text_extent(g.data["text"], g.data["size"], g.data["anchor"],
                                            g.data["valign"], g.data["rotation"])
             lost = missing_glyphs(g.data["text"])
             if lost:
@@ -430,9 +435,17 @@ class Calls:
     # ------------------------------------------------------------------ functions
     def _function(self, nm: str, node: A.Call):
         lo, hi, _doc = FUNCTIONS[nm]
-        if node.kwargs:
-            raise EvalError("E0105", f"`{nm}` takes no keyword arguments", node.kwargs[0].span)
+        kw = {}
+        if nm == "mirror" and len(node.kwargs) == 1 and node.kwargs[0].name in (
+                "about", "axis", "line", "across") and len(node.args) == 1:
+            kw["about"] = self.eval(node.kwargs[0].value)
+        elif node.kwargs:
+            raise EvalError("E0105", f"`{nm}` takes no keyword arguments" + (
+                " but `about=`" if nm == "mirror" else ""), node.kwargs[0].span)
         args = [self.eval(a) for a in node.args]
+        if nm == "mirror":
+            return self._mirror(args[0], kw.get("about", args[1] if len(args) > 1 else "y"),
+                                node)
         if not lo <= len(args) <= hi:
             raise EvalError("E0104", f"`{nm}` takes {lo if lo == hi else f'{lo} to {hi}'} "
                             f"argument{'s' if hi > 1 else ''}, got {len(args)}", node.span)
@@ -513,6 +526,63 @@ class Calls:
             e = q[0].expr if q[0].dim == ANG else q[0].expr
             return Q(lift(e) * (1 / DEG), NUM, q[0].owners)
         raise EvalError("E0103", f"unknown function `{nm}`", sp)
+
+    def _mirror(self, pts, about, node) -> list:
+        """``mirror(points, about)``: the points, then their reflections in reverse order, so
+        that a Polygon or closed Spline through them is symmetric; a first or last point on
+        the axis is not repeated.  ``about``: "y" (x -> -x: exact), "x" (y -> -y), or a Line
+        (reflected across it as it starts, before solving)."""
+        sp = node.span
+        if not isinstance(pts, (list, tuple)) or isinstance(pts, tuple) and len(pts) == 2 \
+                and all(isinstance(v, Q) for v in pts):
+            raise EvalError("E0108", f"`mirror` takes a list of points, got {type_name(pts)}",
+                            node.args[0].span if node.args else sp,
+                            hint='write `mirror([(0, -20), (10, -10), (0, 20)], about="y")`')
+        P = [self._to_point(v, sp) for v in pts]
+        if isinstance(about, str) and about.lower() in ("y", "x"):
+            if about.lower() == "y":
+                def refl(p):
+                    return PV(p.x * -1.0, p.y, None, p.owners)
+            else:
+                def refl(p):
+                    return PV(p.x, p.y * -1.0, None, p.owners)
+        elif isinstance(about, GeomRef) and about.geom.kind in ("Line", "Slot"):
+            s_, e_ = (geom_member(about.geom, n, self.struct) for n in ("start", "end"))
+            ax, ay = self.value_of(s_.x), self.value_of(s_.y)
+            dx, dy = self.value_of(e_.x) - ax, self.value_of(e_.y) - ay
+            L = math.hypot(dx, dy)
+            if not L > 0:
+                raise EvalError("E0108", "`mirror` about a Line of zero length", sp)
+            L2 = dx * dx + dy * dy
+            c2, s2 = (dx * dx - dy * dy) / L2, 2 * dx * dy / L2   # cos, sin of twice the angle
+
+            def refl(p):
+                # p' = a + [[cos 2t, sin 2t], [sin 2t, -cos 2t]] (p - a): rational in the
+                # line's direction, so a line at 0, 45 or 90 degrees reflects exactly
+                qx, qy = p.x - ax, p.y - ay
+                return PV(qx * c2 + qy * s2 + ax, qx * s2 - qy * c2 + ay, None, p.owners)
+        else:
+            raise EvalError("E0108", f"`mirror` reflects about \"y\" (the y axis), \"x\" or a "
+                            f"Line, got {type_name(about) if not isinstance(about, str) else repr(about)}",
+                            sp, hint='write `about="y"` for a shape symmetric left and right')
+        if not P:
+            return []
+        M = [refl(p) for p in P]
+
+        def on_axis(p, m) -> bool:
+            try:
+                px, py = self.value_of(p.x), self.value_of(p.y)
+                mx, my = self.value_of(m.x), self.value_of(m.y)
+            except (TypeError, AttributeError):
+                return False
+            return math.hypot(px - mx, py - my) <= 1e-9 * max(1.0, abs(px), abs(py))
+        back = M[::-1]
+        if on_axis(P[-1], M[-1]):
+            back = back[1:]
+        if back and len(P) > 1 and on_axis(P[0], M[0]):
+            back = back[:-1]
+        self.check_size(len(P) + len(back), sp, "a list")
+        return P + back
 
     def _dimless(self, q: Q, nm, sp):
         if q.dim != NUM:

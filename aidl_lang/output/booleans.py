@@ -39,7 +39,7 @@ UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
 # 480,000 vertices in 3.5 s, 7.3 us; half of it, so that only a union sure to end past the
 # deadline is refused before it starts, as the shape checks' estimates in checks.py)
 UNION_SECONDS_PER_VERTEX = 3.5e-6
-DERIVED = ("Offset", "Shell")   # shapes whose outline is a boolean of their source's
+DERIVED = ("Offset", "Shell", "Stroke")   # shapes whose outline is a boolean of pieces
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 
 
@@ -191,7 +191,8 @@ class Renderer:
         from ..geometry.spline import SplineError, interpolate
         from ..geometry.primitives import points_of
         try:
-            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")))
+            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")),
+                            g.data.get("corners", ()))
         except SplineError as ex:
             if not any(e[0] is g for e in self.shape_errors):     # said once, at the call
                 self.shape_errors.append((g, f"`{g.label}` after the solve: {ex}",
@@ -217,8 +218,21 @@ class Renderer:
             sweep = 2 * math.pi
         return Arc(c, r, a1, sweep)
 
+    def pieces(self, g: Geometry) -> list:
+        """The exact segments of an open curve in order: a Polyline's lines, else the one
+        :meth:`segment` (none when it has none)."""
+        if g.kind == "Polyline":
+            from ..geometry.primitives import points_of
+            P = [self._pt(p) for p in points_of(g)]
+            return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
+        seg = self.segment(g)
+        return [] if seg is None else [seg]
+
     def curve(self, g: Geometry) -> np.ndarray:
-        """Polyline of an open curve (Line or Arc), from start to end."""
+        """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
+        if g.kind == "Polyline":
+            from ..geometry.primitives import points_of
+            return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
             return np.zeros((0, 2))
@@ -269,6 +283,14 @@ class Renderer:
             a1, sweep = g.data["angles"]
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
+        if k == "Sector":
+            # from the solved midpoint: a copy turned or mirrored (a pattern, Mirrored) has
+            # its midpoint turned or mirrored with it, and the sweep is the original's
+            c, m = self._pt(g.points["center"]), self._pt(g.points["midpoint"])
+            sweep = g.data["angles"][1]
+            a1 = math.atan2(m[1] - c[1], m[0] - c[0]) - sweep / 2
+            return Loop(sector_outline(c, g.data["dims"]["radius"],
+                                       g.data["dims"]["inner_radius"], a1, sweep))
         if k == "Hull":
             return hull_loop([lp for src in g.data["sources"] for lp in self.loops_of(src)])
         if k in DERIVED:
@@ -279,7 +301,7 @@ class Renderer:
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
-                 "Trapezoid", "Star"):
+                 "Trapezoid", "Star") or (k == "Polyline" and g.closed):
             from ..geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
@@ -309,6 +331,10 @@ class Renderer:
         if id(g) in self.derived:
             return self.derived[id(g)]
         self.derived[id(g)] = None                 # (a cycle cannot be written; be safe)
+        if g.kind == "Stroke":
+            out = self._stroke(g)
+            self.derived[id(g)] = out
+            return out
         src = g.data["sources"][0]
         loops = self.loops_of(src)
         base = self.exact.section(loops) if loops else mf.CrossSection()
@@ -334,6 +360,72 @@ class Renderer:
             out = None
         self.derived[id(g)] = out
         return out
+
+    def stroke_path(self, g: Geometry) -> list:
+        """The exact segments of a Stroke's path in order, each piece turned to start where
+        the previous one ends."""
+        chain: list = []
+        for src in g.data["sources"]:
+            segs = self.pieces(src)
+            if not segs:
+                continue
+            if chain:
+                end = chain[-1].end
+                if _dist(segs[-1].end, end) < _dist(segs[0].start, end):
+                    segs = [reverse(sg) for sg in reversed(segs)]
+            elif len(g.data["sources"]) > 1:
+                nxt = self.pieces(g.data["sources"][1])
+                if nxt:
+                    far = min(_dist(segs[0].start, p) for p in (nxt[0].start, nxt[-1].end))
+                    near = min(_dist(segs[-1].end, p) for p in (nxt[0].start, nxt[-1].end))
+                    if far < near:
+                        segs = [reverse(sg) for sg in reversed(segs)]
+            chain += segs
+        return chain
+
+    def _stroke(self, g: Geometry) -> mf.CrossSection | None:
+        """The band of a ``Stroke``: the union of every path segment's sweep by a disc of
+        radius width/2 (:func:`~aidl_lang.geometry.offset.sweep_loops`: stadiums, arc slots);
+        with flat caps the first and last segments are swept square at the free end (a
+        rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
+        arcs; a Spline piece's band is :func:`spline_band` (within :data:`STROKE_TOL`; a
+        bend tighter than width/2 is E0108 at the call)."""
+        from ..geometry.offset import sweep_loops
+        from ..geometry.spline import SplineError
+        h = g.data["width"] / 2
+        path = self.stroke_path(g)
+        if not path:
+            return None
+        flat = g.data.get("cap") == "flat"
+        loops: list = []
+        n = len(path)
+        for i, sg in enumerate(path):
+            free = (flat and i == 0, flat and i == n - 1)
+            if isinstance(sg, Spline):
+                try:
+                    loops.append(spline_band(sg, h, free))
+                except SplineError as ex:
+                    self.shape_errors.append((g, f"`{g.label}`: {ex}",
+                                              "use a smaller width, or smooth the path "
+                                              "(points further apart)", "E0108"))
+                    return None
+                continue
+            if not any(free):
+                loops += sweep_loops(sg, h)
+                continue
+            band = _band(sg, h)
+            if band is None:
+                self.shape_errors.append((g, (
+                    f"`{g.label}`: an arc of radius {sg.radius:g} mm in the path is tighter "
+                    f"than half the width ({h:g} mm): a flat end cannot be cut square there"),
+                    'use cap="round", a smaller width or a wider arc', "E0108"))
+                return None
+            loops.append(band)
+            for k, p in ((0, sg.start), (1, sg.end)):
+                if not free[k]:
+                    loops.append(Loop([Circle(p, h)]))
+        faces = [self.exact.face(lp) for lp in loops]
+        return self.union(faces)
 
     def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
         if d == 0 or base.is_empty():
@@ -376,7 +468,8 @@ class Renderer:
             if s.kind == "drawing":
                 self.draw_lines(g, out)
                 continue
-            if g.kind in ("Line", "Arc") or (g.kind == "Spline" and not g.closed):
+            if g.kind in ("Line", "Arc") or (g.kind in ("Spline", "Polyline")
+                                             and not g.closed):
                 open_curves.append(g)
             elif g.kind == "Text":
                 self.draw_lines(g, out)
@@ -408,10 +501,10 @@ class Renderer:
         :func:`_tol` of the chain's end, found through a grid of the curves' ends (cells of
         :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
-        segs = [self.segment(g) for g in curves]
-        keep = [i for i, sg in enumerate(segs) if sg is not None]
+        segs = [self.pieces(g) for g in curves]
+        keep = [i for i, sg in enumerate(segs) if sg]
         curves, segs = [curves[i] for i in keep], [segs[i] for i in keep]
-        ends = [(sg.start, sg.end) if g.kind == "Spline" else
+        ends = [(sg[0].start, sg[-1].end) if g.kind in ("Spline", "Polyline") else
                 (self._pt(g.points["start"]), self._pt(g.points["end"]))
                 for g, sg in zip(curves, segs)]
         grid: dict = {}
@@ -438,7 +531,7 @@ class Renderer:
             self.tick()
             chain = [i]
             used[i] = True
-            run = [segs[i]]
+            run = list(segs[i])
             start, end = ends[i]
             grown = True
             while grown and _dist(end, start) > _tol(start):
@@ -447,10 +540,10 @@ class Renderer:
                     if used[j]:
                         continue
                     if _dist(ends[j][0], end) <= _tol(end):
-                        run.append(segs[j])
+                        run += segs[j]
                         end = ends[j][1]
                     elif _dist(ends[j][1], end) <= _tol(end):
-                        run.append(reverse(segs[j]))
+                        run += [reverse(sg) for sg in reversed(segs[j])]
                         end = ends[j][0]
                     else:
                         continue
@@ -459,14 +552,18 @@ class Renderer:
                     grown = True
                     break
             closed = _dist(end, start) <= _tol(start)
-            if closed and (len(chain) >= 2 or isinstance(run[0], (Arc, Spline))):
+            if closed and (len(run) >= 2 or isinstance(run[0], (Arc, Spline))):
                 loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:
                 rest += [curves[j] for j in chain]
         return loops, rest
 
     def stroke(self, g: Geometry, style: str, out: Drawing) -> None:
-        """The exact engraving stroke of a Line, Arc or Spline."""
+        """The exact engraving stroke of a Line, Arc, Spline or open Polyline."""
+        if g.kind == "Polyline":
+            for ln in self.pieces(g):
+                out.strokes.append((style, ("line", np.array(ln.start), np.array(ln.end)), g))
+            return
         seg = self.segment(g)
         if seg is None:
             return
@@ -481,13 +578,19 @@ class Renderer:
                                     seg.end_angle), g))
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
-        if g.kind in ("Line", "Arc", "Spline"):
+        if g.kind in ("Line", "Arc", "Spline") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
-            segs = text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
-                                g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
+            along = g.data.get("along")
+            if along is not None:
+                segs = self.text_along(g, along)
+                p = np.array(self.segment(along).center if along.kind == "Arc" else
+                             self._pt(along.points["center"]))
+            else:
+                segs = text_strokes(g.data["text"], g.data["size"], g.data["anchor"],
+                                    g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
             if segs:      # every stroke moved to the position in one array operation
                 ab = p + np.asarray(segs, dtype=float)          # k x 2 (ends) x 2 (x, y)
                 for pts in ab:
@@ -511,6 +614,22 @@ class Renderer:
                 pl = lp.points()
                 out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
                 out.strokes.append(("drawing", ("poly", pl, lp), g))
+
+    def text_along(self, g: Geometry, along: Geometry) -> list:
+        """The strokes of a Text along a Circle or Arc (relative to its solved center): at
+        its ``angle``, else the arc's middle (a circle's top)."""
+        from ..geometry.text import text_strokes_along
+        flip = bool(g.data.get("flip"))
+        if along.kind == "Arc":
+            arc = self.segment(along)
+            r, mid = arc.radius, arc.start_angle + arc.sweep / 2
+        else:                                    # a circle's top (flip: its bottom)
+            r, mid = float(abs(self.x[along.scalars["radius"].index])), \
+                -math.pi / 2 if flip else math.pi / 2
+        ang = g.data.get("angle")
+        return text_strokes_along(g.data["text"], g.data["size"], r,
+                                  mid if ang is None else ang, g.data["anchor"],
+                                  g.data.get("valign", "baseline"), flip)
 
     def shape(self, s: Structure, out: Drawing) -> mf.CrossSection:
         """Union of a solid or hole structure, holes subtracted for solids."""
@@ -727,6 +846,106 @@ def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
     start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
     return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
             Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
+
+
+STROKE_TOL = 1e-4     # mm: how far a Stroke's side along a Spline may be from the true offset
+
+
+def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
+    """The band ``2 h`` wide along a piece of spline, counter-clockwise: its two sides are
+    cubic splines through points of the true offset curves (the offset of a cubic is no
+    cubic), sampled until the spline between two samples is within :data:`STROKE_TOL` of the
+    true offset everywhere checked (the midpoints of the samples); the ends are half circles
+    of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
+    bends tighter than ``h`` (the inner side would fold over itself)."""
+    from ..geometry.spline import SplineError, _polish_foot, bez_at, interpolate
+    c, u0, u1 = sg.curve, sg.u0, sg.u1
+    span = u1 - u0
+
+    def true_offset(u: float, side: float):
+        (x, y), (tx, ty) = c.at(u), c.tangent(u)
+        if u1 < u0:
+            tx, ty = -tx, -ty
+        return (x - side * h * ty, y + side * h * tx)
+    # the tightest bend: curvature from the derivatives by arc length, sampled finely
+    m = max(16, 32 * int(math.ceil(abs(span))))
+    for k in range(m + 1):
+        u = u0 + span * k / m
+        (dx, dy), (ex, ey) = c.d1(u), c.d2(u)
+        v = math.hypot(dx, dy)
+        if v > 0 and abs(dx * ey - dy * ex) / v ** 3 * h >= 1.0:
+            x, y = c.at(u)
+            raise SplineError(f"the Spline bends tighter than half the Stroke's width "
+                              f"({h:g} mm) near ({x:g}, {y:g}): the band's inner side would "
+                              f"fold over itself")
+    per = 4
+    while True:
+        N = max(2, int(math.ceil(abs(span) * per)))
+        us = [u0 + span * k / N for k in range(N + 1)]
+        mids = [u0 + span * (k + 0.5) / N for k in range(N)]
+        sides, worst = [], 0.0
+        for side in (-1.0, 1.0):                       # right side, left side
+            pts = [true_offset(u, side) for u in us]
+            curve = interpolate(pts, False)
+            for k, um in enumerate(mids):              # halfway between two samples: the
+                q = true_offset(um, side)                # fit's span k, from its middle
+                b = curve.span(k)
+                f = bez_at(b, _polish_foot(b, q, 0.5))
+                worst = max(worst, math.dist(f, q))
+            sides.append(curve)
+        if worst <= STROKE_TOL or per >= 512:
+            break
+        per *= 2
+    if worst > STROKE_TOL:
+        raise SplineError(f"the Stroke along a Spline cannot be made within {STROKE_TOL:g} "
+                          f"mm of its true sides (off by {worst:.2g} mm)")
+    right, left = sides
+    R = Spline(right, 0.0, float(right.n))
+    Lf = Spline(left, float(left.n), 0.0)
+    end, start = sg.end, sg.start
+    segs: list = [R]
+    if flat[1]:
+        segs.append(Line(R.end, Lf.start))
+    else:
+        a = math.atan2(R.end[1] - end[1], R.end[0] - end[0])
+        segs.append(Arc((end[0], end[1]), h, a, math.pi))
+    segs.append(Lf)
+    if flat[0]:
+        segs.append(Line(Lf.end, R.start))
+    else:
+        a = math.atan2(Lf.end[1] - start[1], Lf.end[0] - start[0])
+        segs.append(Arc((start[0], start[1]), h, a, math.pi))
+    return Loop(segs)
+
+
+def _band(sg, h: float) -> Loop | None:
+    """The square-ended band ``2 h`` wide along one line or arc (counter-clockwise): a
+    rectangle, or the annulus segment between radii R - h and R + h; None for an arc of
+    radius R <= h."""
+    if isinstance(sg, Line):
+        (ax, ay), (bx, by) = sg.start, sg.end
+        L = math.hypot(bx - ax, by - ay)
+        nx, ny = -(by - ay) / L * h, (bx - ax) / L * h
+        return Loop([Line((ax - nx, ay - ny), (bx - nx, by - ny)),
+                     Line((bx - nx, by - ny), (bx + nx, by + ny)),
+                     Line((bx + nx, by + ny), (ax + nx, ay + ny)),
+                     Line((ax + nx, ay + ny), (ax - nx, ay - ny))])
+    a = sg if sg.sweep > 0 else reverse(sg)
+    if not a.radius > h:
+        return None
+    return Loop(sector_outline(a.center, a.radius + h, a.radius - h, a.start_angle, a.sweep))
+
+
+def sector_outline(c, R: float, r: float, a1: float, sweep: float) -> list:
+    """The exact outline of a sector: the counter-clockwise arc of radius ``R`` about ``c``
+    from angle ``a1`` sweeping ``sweep`` (0..2 pi), then a radial line to the center (``r``
+    0: a pie slice) or to the inner arc of radius ``r``, that arc back and a radial line out
+    (an annulus segment); counter-clockwise, the lines' ends the arcs' own ends."""
+    outer = Arc((c[0], c[1]), R, a1, sweep)
+    if r <= 0:
+        return [outer, Line(outer.end, (c[0], c[1])), Line((c[0], c[1]), outer.start)]
+    inner = Arc((c[0], c[1]), r, a1 + sweep, -sweep)
+    return [outer, Line(outer.end, inner.start), inner, Line(inner.end, outer.start)]
 
 
 def rounded_outline(corners, r: float) -> list:

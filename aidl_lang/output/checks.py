@@ -572,7 +572,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
            "Triangle", "Polygon",
-           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull"}
+           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull", "Stroke", "Sector"}
 
 
 def empty_faces(d: Drawing) -> list:
@@ -593,7 +593,8 @@ def empty_faces(d: Drawing) -> list:
             if f is None or f.is_empty():
                 out.setdefault(id(g), (s, g, 0.0))
         for g in s.geometry:
-            if not g.construction and g.kind in _CLOSED and id(g) not in shaped \
+            if not g.construction and (g.kind in _CLOSED or g.kind == "Polyline" and g.closed) \
+                    and id(g) not in shaped \
                     and id(g) not in errored:
                 out.setdefault(id(g), (s, g, 0.0))
     return list(out.values())

@@ -13,11 +13,13 @@ syntax keyword aidlCadOperator and not or
 syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
-syntax keyword aidlCadPrimitive Arc ArcSlot BSpline Circle ConvexHull CubicSpline Curve Ellipse
-syntax keyword aidlCadPrimitive Expand FitSpline Grow Hull Inset Interpolate InterpolatedCurve Line
-syntax keyword aidlCadPrimitive Offset Outset Point Polygon Rectangle RegularPolygon RoundedRectangle Shell
-syntax keyword aidlCadPrimitive Shrink Slot SmoothCurve Spline Star Text Trapezoid Triangle
-syntax keyword aidlCadPrimitive convex_hull
+syntax keyword aidlCadPrimitive AnnularSector AnnulusSegment Arc ArcSlot BSpline Band Chain Circle
+syntax keyword aidlCadPrimitive CircularSector ConvexHull CubicSpline Curve Ellipse Expand FitSpline Grow
+syntax keyword aidlCadPrimitive Hull Inset Interpolate InterpolatedCurve Line LineString Offset OpenPolygon
+syntax keyword aidlCadPrimitive Outset Path Pie PieSlice Point PolyLine Polygon Polyline
+syntax keyword aidlCadPrimitive Rectangle RegularPolygon RingSegment RoundedRectangle Sector Shell Shrink Slot
+syntax keyword aidlCadPrimitive SmoothCurve Spline Star Stroke Sweep Text ThickLine Thicken
+syntax keyword aidlCadPrimitive Trace Trapezoid Triangle Wedge Wire ZigZag convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
 syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
@@ -31,8 +33,8 @@ syntax keyword aidlCadConstraint Tangent ToTheLeftOf ToTheRightOf Under Undernea
 syntax keyword aidlCadConstraint Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
-syntax keyword aidlCadFunction distance floor len max min norm radians range
-syntax keyword aidlCadFunction round sin sqrt square str tan
+syntax keyword aidlCadFunction distance floor len max min mirror norm radians
+syntax keyword aidlCadFunction range round sin sqrt square str tan
 
 syntax match aidlCadNumber /\v<\d+\.?\d*([eE][-+]?\d+)?>|\.\d+>/ nextgroup=aidlCadUnit skipwhite
 syntax match aidlCadUnit /\v<(inches|inch|deg|rad|cm|ft|in|mm|m)>|°/ contained
