@@ -232,7 +232,7 @@ class Renderer:
             if seg is None:
                 return None
             from ..geometry.spline import self_crossings
-            cross = self_crossings(seg.curve)
+            cross = self_crossings(seg.curve, self.tick)
             if cross:
                 x, y = seg.curve.at(cross[0][0])
                 if not any(e[0] is g for e in self.shape_errors):
