@@ -609,7 +609,7 @@ def cmd_render(args) -> int:
                 # the nesting's own time limit comes on top of the compile's wall budget
                 from ..limits import Deadline
                 res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
-            where = plan(cut, sheet, gap, rotate, args.nest_time)
+            where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
             notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
