@@ -479,7 +479,7 @@ def _outputs(args) -> list[Path] | int:
 def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     """A symbolic link as output is refused (exit 2: someone may have planted it to make the
     render overwrite another file) unless ``--follow-symlinks``, and even then (exit 1) when
-    another user made it in a sticky world-writable folder (:func:`aidl_lang.api.planted_link`);
+    another user made it in a sticky world-writable folder (:func:`aidl_lang.output.write.planted_link`);
     an existing read-only file is refused (exit 1) unless ``--force``.  None when ``o`` may
     be written."""
     if os.path.islink(o) and not follow:
@@ -487,7 +487,7 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
                       "through it: give --follow-symlinks to write the file it points to, or "
                       "another output name")
     if os.path.islink(o):
-        from ..api import planted_link
+        from ..output.write import planted_link
         planted = planted_link(o)
         if planted:
             print(f"aidl: error: {planted.replace('when asked to follow links', 'with --follow-symlinks')}",
@@ -519,10 +519,10 @@ def _encode_all(jobs: list, opt, deadline):
 
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
-    """Write every output or none: each staged beside its target (:func:`aidl_lang.api.stage`:
+    """Write every output or none: each staged beside its target (:func:`aidl_lang.output.write.stage`:
     symlinks, modes), then all renamed over their targets (``os.replace``: never
     half-written).  Returns an error message, or None."""
-    from ..api import stage
+    from ..output.write import stage
     staged = []
     out = items[0][0] if items else ""
     try:

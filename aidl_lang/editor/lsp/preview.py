@@ -32,7 +32,7 @@ curves): they are for pointing at, never for output.
 A document that does not compile answers ``ok: false`` with the last good picture of that
 document (``stale: true``) and the diagnostics' summary, so the preview does not go blank while
 the user types.  Param definitions (name, kind, range for a slider: ``min=``/``max=``/``step=``
-from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.api.declared_params`)
+from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.serve.params.declared_params`)
 come from an interpretation of the document with its own values, made once per text.
 """
 from __future__ import annotations
@@ -160,7 +160,7 @@ def params(source: str, path: str, uri: str, values: dict, cache: Cache = CACHE)
 
 
 def _params(source: str, path: str) -> list[dict] | None:
-    from ...api import declared_params as declared
+    from ...serve.params import declared_params as declared
     found = declared(source, path)
     if found is None:
         return None
