@@ -78,7 +78,7 @@ class Interpreter(Statements, Calls, Expressions):
         The cyclic garbage collector is paused while interpreting (the previous state is
         restored): a run makes hundreds of thousands of small objects (values, expressions,
         records) that reference counting frees, and the collector's full passes over a large
-        heap were up to half the time (docs/performance.md, "The interpreter").  What a run
+        heap were up to half the time (docs/dev/performance.md, "The interpreter").  What a run
         makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
         with gc_paused():
             try:

@@ -31,7 +31,8 @@ import aidl_lang
 from aidl_lang.codes import CODES
 
 ROOT = Path(__file__).resolve().parent.parent
-DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")),
+        *sorted((ROOT / "docs" / "dev").glob("*.md"))]
 MARKER = re.compile(r"<!--\s*expect:\s*(?P<body>.*?)\s*-->")
 CODE = re.compile(r"\b[EW]\d{4}\b")
 INLINE = re.compile(r"#.*?\b(?:error|warning)\[([EW]\d{4})\]")
@@ -242,3 +243,31 @@ def test_the_tutorial_commands_are_found():
     cmds = [c[2] for c in TUTORIAL_COMMANDS]
     assert len(cmds) >= 8 and any("--layout sheet" in c for c in cmds)
     assert sum(c[3] is not None for c in TUTORIAL_COMMANDS) == 1
+
+
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+
+
+def test_every_relative_link_of_the_docs_leads_to_a_file():
+    """README.md, docs/*.md and docs/dev/*.md (the engineering notes moved there, issue 37):
+    every relative link names a file or folder that exists, and every `#anchor` into a
+    Markdown file names one of its headings."""
+    def anchors(md: Path) -> set[str]:
+        out = set()
+        for line in md.read_text(encoding="utf-8").split("\n"):
+            if line.startswith("#"):
+                title = line.lstrip("#").strip().lower()
+                out.add(re.sub(r"[^\w\- ]", "", title).replace(" ", "-"))
+        return out
+    bad = []
+    for md in DOCS:
+        for target in LINK.findall(md.read_text(encoding="utf-8")):
+            if re.match(r"[a-z]+:", target):
+                continue
+            path, _, anchor = target.partition("#")
+            f = (md.parent / path).resolve() if path else md
+            if not f.exists():
+                bad.append(f"{md.relative_to(ROOT)}: {target}")
+            elif anchor and f.suffix == ".md" and anchor not in anchors(f):
+                bad.append(f"{md.relative_to(ROOT)}: {target} (no such heading)")
+    assert bad == []

@@ -135,7 +135,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                         "`thickness`, else 3 mm)")
     r.add_argument("--kerf", default=None, metavar="LENGTH",
                    help="offset every cut by half this kerf so parts come out at their size, "
-                        "e.g. 0.15mm (default: the program's `kerf`, else none)")
+                        "e.g. 0.15mm (default: the program's `kerf`, else none); SVG, DXF "
+                        "and PNG only: STL, 3MF and STEP keep the designed size")
     r.add_argument("--layout", choices=["sheet"], default=None,
                    help="sheet: lay every solid part out flat on cutting sheets (true-shape "
                         "nesting; `layout` extra), one file per sheet when there are several")

@@ -85,7 +85,7 @@ class Drawing:
 
     # faces that close on no area: [(structure, geometry or first curve of the loop, area
     # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
-    # are made from templates, docs/performance.md)
+    # are made from templates, docs/dev/performance.md)
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
