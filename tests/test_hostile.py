@@ -136,3 +136,29 @@ def test_a_SystemError_from_an_allocation_that_failed_in_C_is_E0304(monkeypatch)
         assert pipeline.out_of_memory(e)
     monkeypatch.setattr(pipeline, "_compile", real)
     assert pipeline.compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok
+
+
+def test_many_large_strings_are_E0304_before_they_fill_the_memory():
+    """Issue 37: each of 8 000 strings of a million characters fits the size budget alone,
+    and the program took 7.9 GB.  All the strings of a compile are counted together: E0304
+    after 64 of them, at the comprehension, in well under a gigabyte."""
+    import resource
+    src = ('units mm\nx = [[f"{i:999999}" for i in range(80)] for j in range(100)]\n'
+           'solid s { body = Rectangle(center=(0, 0), width=10, height=10) }\n')
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    res = compile_source(src, "strings.aidl")
+    grown_mb = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before) / 1024
+    (d,) = [d for d in res.sink.items if d.severity == "error"]
+    assert d.code == "E0304" and d.span.line == 2
+    assert "strings of more than 64,000,000 characters in all" in d.message
+    assert grown_mb < 1024
+    # --budget scales it: a quarter of the budget stops at a quarter of the characters
+    from aidl_lang.limits import DEFAULT_BUDGET
+    small = compile_source(src.replace("999999", "200000"), "strings.aidl",
+                           budget=DEFAULT_BUDGET.scaled(0.25))
+    assert any("16,000,000 characters in all" in d.message for d in small.sink.items)
+    # a label built one character at a time is far from it
+    ok = compile_source('units mm\ns = ""\nfor i in range(3000) { s = s + "x" }\n'
+                        'solid p { body = Rectangle(center=(0, 0), width=10, height=10) }\n',
+                        "label.aidl")
+    assert ok.ok, [d.message for d in ok.sink.items]
