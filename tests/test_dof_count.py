@@ -359,3 +359,27 @@ def test_the_ancestor_rows_of_a_large_pattern_take_linear_work():
     # the count itself: every copy is placed by the pattern; the plate's body is free to move
     by = {d.structure.path: d for d in dofs}
     assert by["plate"].dof == 2 and all(d.dof == 0 for p, d in by.items() if p != "plate")
+
+
+def test_a_dof_count_too_large_for_a_dense_svd_is_not_counted_and_stops(tmp_path, capsys,
+                                                                        monkeypatch):
+    """Issue 37: `aidl check --dof` of 2,500 chained points took 80 s and 1 GB (a full SVD of
+    2 499 x 5 000, then an unbounded redundancy search).  A dense SVD past MAX_SVD_FLOPS is
+    "not counted", and --dof's redundancy search stops at the budget's wall time.  Shown
+    here on 300 points with the bound lowered."""
+    from aidl_lang.cli.main import main
+    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e6)
+    f = tmp_path / "pts.aidl"
+    f.write_text("units mm\ndrawing d {\n    pts = [Point(i * 0.1, 0) for i in range(300)]\n"
+                 "    for i in range(299) { Distance(pts[i], pts[i + 1], 0.1) }\n}\n")
+    assert main(["check", "--dof", str(f)]) == 0
+    out = capsys.readouterr().out
+    assert "degrees of freedom not counted (model too large)" in out
+    assert "d       600    ?  not counted (too large)" in out
+    assert main(["check", "--dof", "--json", str(f)]) == 0
+    import json
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": []}]
+    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e10)      # counted: 600 unknowns, 299 rows
+    assert main(["check", "--dof", str(f)]) == 0
+    assert "301 degrees of freedom left" in capsys.readouterr().out

@@ -336,14 +336,17 @@ def cmd_check(args) -> int:
                           "max_residual": res.solve.max_residual}
         if res.ok:
             if args.dof:
-                program.find_redundant(None, None)
+                # the whole search, bounded by the budget's wall time (15 s x --budget):
+                # 2 500 chained points took 20 s more, unbounded
+                program.find_redundant(_budget(args).seconds, None)
             else:
                 program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
         if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
-                             "dof": d.dof, "floating": d.floating} for d in dofs]
+                             "dof": d.dof if d.rank >= 0 else None,     # None: not counted
+                             "floating": d.floating} for d in dofs]
         if res.ok:
             from ..solver.diagnose import degrees_of_freedom, freedom_text
             dofs_all = (dofs if dofs is not None
@@ -382,6 +385,9 @@ def _print_dof(dofs) -> None:
     for d in dofs:
         fl = ", ".join(d.floating[:6]) + (f", ... ({len(d.floating)})" if len(d.floating) > 6
                                            else "")
+        if d.rank < 0:                  # too large for the dense count (MAX_SVD_FLOPS)
+            print(f"{d.structure.path:{width}}  {d.unknowns:8d}    ?  not counted (too large)")
+            continue
         print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
 
 

@@ -36,6 +36,9 @@ from .system import user_residuals
 
 DEP_TOL = 1e-7
 MAX_DENSE = 5000
+# a dense SVD of m x n costs about m n min(m, n) flops: past this (5-10 s on the test machine;
+# 2 500 chained points, 2 499 x 5 000, took 80 s and 1 GB) the count is "not counted"
+MAX_SVD_FLOPS = 1e10
 DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranked densely
 MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
 
@@ -401,16 +404,26 @@ def null_support(J) -> tuple[int, np.ndarray]:
         return n_cols, moving
     sub = C[:, U].tocsr()
     sub = sub[np.flatnonzero(np.diff(sub.indptr))]
-    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE:
+    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape):
         return -1, moving
     if sub.shape[0] == 0:
         moving[U] = True
         return n_cols - len(U), moving
-    _, sv, Vt = np.linalg.svd(sub.toarray(), full_matrices=True)
+    # the thin SVD (Vt: min(rows, columns) x columns): its first rank_u rows span the row
+    # space, and a column moves when e_c is not in it, when the rest of its unit length,
+    # 1 - |Vt[:rank_u, c]|^2, is the null space's share (the full SVD's n x n Vt, for 2 500
+    # points 5 000 x 5 000, took 80 s and 1 GB)
+    _, sv, Vt = np.linalg.svd(sub.toarray(), full_matrices=False)
     rank_u = int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)))
     if len(U) > rank_u:
-        moving[U] = np.linalg.norm(Vt[rank_u:], axis=0) > 1e-6
+        rest = 1.0 - np.einsum("ij,ij->j", Vt[:rank_u], Vt[:rank_u])
+        moving[U] = rest > 1e-12
     return n_cols - len(U) + rank_u, moving
+
+
+def _svd_too_large(m: int, n: int) -> bool:
+    """Whether a dense SVD of ``m`` x ``n`` would cost more than :data:`MAX_SVD_FLOPS`."""
+    return float(m) * float(n) * float(min(m, n)) > MAX_SVD_FLOPS
 
 
 def _ancestor_rows(solver, x: np.ndarray):
@@ -505,7 +518,7 @@ def _block_rank(J) -> int:
         r = np.flatnonzero(lab == k)
         sub = J[r]
         c = unique(sub.indices)
-        if len(r) > MAX_DENSE or len(c) > MAX_DENSE:
+        if len(r) > MAX_DENSE or len(c) > MAX_DENSE or _svd_too_large(len(r), len(c)):
             return -1
         sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
         if len(sv):
