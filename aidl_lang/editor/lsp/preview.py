@@ -252,9 +252,10 @@ _latest: dict[str, int] = {}
 _seq = 0
 
 
-async def handle(ls, params) -> dict:
+async def handle(ls, params, analyzer=None) -> dict:
     """The ``aidl/preview`` handler (:mod:`.server` registers it): validates the params,
-    compiles on a thread (one at a time; a request overtaken by a newer one for the same
+    compiles in ``analyzer``'s worker process (:meth:`.worker.Analyzer.preview`; on a thread
+    without one), one at a time; a request overtaken by a newer one for the same
     document while it waited answers ``{"superseded": true}`` at once)."""
     import asyncio
 
@@ -277,9 +278,22 @@ async def handle(ls, params) -> dict:
             return {"uri": uri, "superseded": True}
         doc = ls.workspace.get_text_document(uri)
         path = doc.path or "untitled.aidl"
-        loop = asyncio.get_running_loop()
-        return await loop.run_in_executor(None, preview, doc.source, path, uri, doc.version,
-                                          values)
+        if analyzer is None:
+            loop = asyncio.get_running_loop()
+            return await loop.run_in_executor(None, preview, doc.source, path, uri,
+                                              doc.version, values)
+        # compiled where the diagnostics are (the killable worker, within its memory limit)
+        try:
+            return await analyzer.preview(doc.source, path, uri, doc.version, values,
+                                          lambda: preview(doc.source, path, uri, doc.version,
+                                                          values))
+        except (EOFError, RuntimeError, TimeoutError, Exception) as e:   # noqa: BLE001 - a
+            # timeout (worker.AnalysisTimeout), a worker that died or ran out of memory
+            return {"uri": uri, "version": doc.version, "ok": False, "stale": False,
+                    "svg": None, "shapes": [], "values": values, "params": [],
+                    "diagnostics": {"errors": 1, "warnings": 0, "first": {
+                        "code": "E0900", "range": None,
+                        "message": f"cannot draw the preview: {e}"}}}
 
 
 __all__ = ["preview", "handle", "params", "plain", "Cache", "CACHE"]
