@@ -162,3 +162,30 @@ def test_many_large_strings_are_E0304_before_they_fill_the_memory():
                         'solid p { body = Rectangle(center=(0, 0), width=10, height=10) }\n',
                         "label.aidl")
     assert ok.ok, [d.message for d in ok.sink.items]
+
+
+def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
+    """Issue 37: Fillet on 2,000 stars ran 17-24 s against the 15 s budget: the fillets of a
+    structure (and the exact recovery before them) were one step with no look at the
+    deadline.  Now each loop's fillets are preceded by one; shown with a slowed fillet."""
+    import time as _time
+    from aidl_lang.geometry import operations
+    from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from aidl_lang.output.booleans import render_model
+    holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "
+                      "points=5, outer_radius=4, inner_radius=2) }" for i in range(100))
+    src = (f"units mm\nsolid plate {{\n    body = Rectangle(center=(0, 0), width=130, "
+           f"height=130)\n{holes}\n    Fillet(radius=0.3)\n}}\n")
+    res = compile_source(src, "stars.aidl")
+    assert res.ok, [d.message for d in res.sink.items]
+    real, calls = operations.corners, []
+
+    def slow(*a, **k):
+        calls.append(1)
+        _time.sleep(0.05)                     # 101 loops: 5 s without the deadline
+        return real(*a, **k)
+    monkeypatch.setattr(operations, "corners", slow)
+    with pytest.raises(OutOfBudget) as e:
+        render_model(res.model, Deadline(_time.monotonic() + 1.0, DEFAULT_BUDGET))
+    assert e.value.stage == "the booleans" and e.value.where.path == "plate"
+    assert 0 < len(calls) < 101

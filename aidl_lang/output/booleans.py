@@ -534,7 +534,9 @@ class Renderer:
             acc = acc - cut
         if getattr(s, "finish", None) and not acc.is_empty():
             try:
-                loops = finish(s, self.exact.loops(acc), self.x)
+                # the deadline covers the exact recovery and every loop's fillets
+                loops = finish(s, self.exact.loops_of([acc], self.deadline)[0], self.x,
+                               lambda: self.tick(s))
                 acc = self.exact.section(loops)
             except SplineCorner as ex:
                 g = self.spline_source.get(ex.curve)
