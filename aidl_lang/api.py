@@ -15,7 +15,7 @@ never an exception: it is a :class:`~aidl_lang.diagnostics.Diagnostic` in
 :attr:`Result.diagnostics` and ``ok`` is False.  Exceptions are kept for mistakes in the
 *call* (:class:`TypeError`, :class:`ValueError`), for asking a failed result for geometry
 (:class:`NotCompiled`), and for outputs that cannot be made or written
-(:class:`~aidl_lang.output.part.OutputError`, :class:`WriteError`).
+(:class:`~aidl_lang.output.part.OutputError`, :class:`~aidl_lang.output.write.WriteError`).
 
 Units: the model is solved in millimetres and radians.  :attr:`Result.parts` and
 :meth:`Result.to_svg`/``write`` are in millimetres; :attr:`Result.values` are given in the
@@ -35,19 +35,21 @@ from typing import Literal
 from .diagnostics import Diagnostic, DiagnosticSink
 from .limits import DEFAULT_BUDGET, Budget
 
-__all__ = ["compile", "Result", "Value", "PartInfo", "NotCompiled", "WriteError",
-           "check_output_path"]
+__all__ = ["compile", "Result", "Value", "PartInfo", "NotCompiled", "WriteError"]
+
+
+def __getattr__(name: str):
+    # WriteError lives with the output-file rules (aidl_lang.output.write); imported on first
+    # use, as the output package loads Manifold (0.3 s) and this facade stays quick to import
+    if name == "WriteError":
+        from .output.write import WriteError
+        return WriteError
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class NotCompiled(RuntimeError):
     """Raised when a :class:`Result` whose program has errors is asked for geometry or an
     output (``parts``, ``to_svg``, ``write``, ...); read :attr:`Result.diagnostics` instead."""
-
-
-class WriteError(OSError):
-    """An output file cannot be written where asked (the program itself, a directory, an
-    unknown extension, a folder that does not exist or is not writable); the message says
-    why."""
 
 
 @dataclass(frozen=True)
@@ -336,7 +338,8 @@ class Result:
         never a directory, a symlink refused unless ``follow_symlinks`` (then written
         through), a read-only file refused unless ``force``, written to a temporary file
         beside it and renamed, a new file gets the umask's permissions.  Returns the path.
-        Raises :class:`WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
+        Raises :class:`~aidl_lang.output.write.WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
+        from .output.write import check_output_path, write_atomic
         out = check_output_path(path, self.path, follow_symlinks, force)
         data = self.encode(out.suffix, kerf, **options)
         write_atomic(out, data, follow_symlinks)
@@ -539,233 +542,4 @@ def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
         elif isinstance(v, PV) and v.obj is None:       # a point that is not a geometry's
             px, py = evaluate(v.x, x) + origin[0], evaluate(v.y, x) + origin[1]
             out.append(Value(n, "point", (px / scale, py / scale), unit, (px, py)))
-    return out
-
-
-# ------------------------------------------------------------------ file safety
-def planted_link(out: Path) -> str | None:
-    """Why the symbolic link ``out`` must not be followed even when asked to, or None: the
-    kernel's ``fs.protected_symlinks`` rule — in a sticky world-writable folder (``/tmp``) a
-    link is followed only by its owner or the folder's owner, since another user may have
-    planted it to aim this write at a file of yours."""
-    import stat as S
-    link, folder = os.lstat(out), os.stat(out.parent)
-    if folder.st_mode & S.S_ISVTX and folder.st_mode & S.S_IWOTH \
-            and link.st_uid not in (os.geteuid(), folder.st_uid):
-        return (f"`{out}` is a symbolic link that another user (uid {link.st_uid}) made in the "
-                f"shared folder `{out.parent}`; refusing to write through it even when asked "
-                "to follow links (it may aim this write at a file of yours): write to a path of "
-                "your own")
-    return None
-
-
-def check_output_path(path: str | os.PathLike, program: str | None = None,
-                      follow_symlinks: bool = False, force: bool = False) -> Path:
-    """``path`` as an output file the way ``aidl render`` accepts it: a known extension, not a
-    directory, not the program ``program`` itself, not a symbolic link (unless
-    ``follow_symlinks``; never one that another user made in a sticky world-writable folder
-    such as /tmp, the kernel's ``fs.protected_symlinks`` rule), not a read-only file (unless
-    ``force``).  Raises :class:`WriteError`."""
-    from .output import FORMATS
-    out = Path(path)
-    if out.suffix.lower() not in FORMATS:
-        raise WriteError(f"cannot tell the format of `{out}` from its extension; use one of "
-                         + ", ".join(sorted(FORMATS)))
-    if out.is_dir():
-        raise WriteError(f"`{out}` is a directory; give a file name, e.g. {out / 'part.svg'}")
-    real = os.path.realpath(out)
-    if program and os.path.exists(program) and os.path.exists(real) \
-            and os.path.samefile(real, program):
-        raise WriteError(f"`{out}` is the program being compiled; refusing to overwrite it")
-    import stat as S
-    if os.path.islink(out):
-        if not follow_symlinks:
-            raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
-                             "(follow_symlinks=True writes the file it points to)")
-        planted = planted_link(out)
-        if planted:
-            raise WriteError(planted)
-    try:
-        st = os.stat(real if follow_symlinks else out)
-    except OSError:
-        return out
-    if S.S_ISREG(st.st_mode) and not force and (
-            not st.st_mode & S.S_IWUSR or not os.access(real, os.W_OK)):
-        raise WriteError(f"`{out}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
-                         "to replace it (force=True replaces it)")
-    return out
-
-
-def stage(out, data: bytes, follow_symlinks: bool = False) -> tuple[str, Path]:
-    """Write ``data`` to a temporary file beside ``out`` and return ``(temporary path,
-    target)``; :func:`os.replace` of the one over the other finishes the write.  With
-    ``follow_symlinks`` the target is a symlink's target (the link is kept), else the path
-    itself (a link planted after the check is never followed); a new file gets ``0666 &
-    ~umask``, an existing one keeps its mode.  Raises ``OSError`` (nothing left behind)."""
-    import tempfile
-    target = Path(os.path.realpath(out)) if follow_symlinks else Path(os.path.abspath(out))
-    try:
-        mode = os.stat(target).st_mode & 0o7777
-    except FileNotFoundError:
-        mask = os.umask(0)
-        os.umask(mask)
-        mode = 0o666 & ~mask
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=str(target.parent))
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.chmod(tmp, mode)
-    except OSError:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
-    return tmp, target
-
-
-def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
-    """Write ``data`` to ``out`` through a temporary file beside it, renamed over it
-    (:func:`stage`, then :func:`os.replace`).  Raises :class:`WriteError`."""
-    tmp = None
-    try:
-        tmp, target = stage(out, data, follow_symlinks)
-        os.replace(tmp, target)
-        tmp = None
-    except OSError as e:
-        raise WriteError(f"cannot write `{out}`: {e.strerror or e}") from None
-    finally:
-        if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-
-
-# ------------------------------------------------------------------ customizer params
-# A program's top-level ``param`` declarations as a customizer shows them (sliders), shared by
-# ``aidl serve`` (:mod:`aidl_lang.serve.session`) and the editor preview
-# (:mod:`aidl_lang.editor.lsp.preview`): :class:`Param` (name, kind, value, default, display
-# unit and the slider's ``min``/``max``/``step``: the file's ``min=``/``max=``/``step=``
-# (docs/language.md, "param and --set"), else :func:`default_span` around the value), and
-# :func:`declared_params`, the params of a source text with its own values.
-
-@dataclass
-class Param:
-    """A ``param`` as the customizer shows it.  ``kind``: length (mm), angle (deg), number,
-    bool or string; ``value``/``default``/``min``/``max``/``step`` in those display units;
-    ``declared``: the range comes from the file (``min=``/``max=``/``step=``), else a default
-    span chosen around the value."""
-
-    name: str
-    kind: str
-    value: object
-    default: object
-    unit: str = ""
-    min: float | None = None
-    max: float | None = None
-    step: float | None = None
-    declared: bool = False
-    line: int = 0
-
-    def to_json(self) -> dict:
-        return {k: v for k, v in self.__dict__.items() if k != "span"}
-
-
-def _param(name: str, v, rng: dict | None, line: int, default=None) -> Param | None:
-    """The customizer's view of a param's value ``v``; ``default``: the file's value when
-    ``v`` is a customizer value (the default span is chosen around the file's value, so the
-    slider does not rescale while it moves)."""
-    if isinstance(v, bool):
-        return Param(name, "bool", v, v if default is None else default, line=line)
-    if isinstance(v, str):
-        return Param(name, "string", v, v if default is None else default, line=line)
-    from .geometry.values import ANG, LEN, NUM, Q
-    if not isinstance(v, Q) or v.const() is None:
-        return None
-    c = v.const()
-    kind, unit, k = {LEN: ("length", "mm", 1.0), ANG: ("angle", "deg", 180 / math.pi),
-                     NUM: ("number", "", 1.0)}.get(v.dim, (None, "", 1.0))
-    if kind is None:
-        return None
-    val = round(c * k, 9)
-    dflt = val if not isinstance(default, (int, float)) or isinstance(default, bool) else default
-    p = Param(name, kind, val, dflt, unit, line=line)
-    lo = rng.get("min") if rng else None
-    hi = rng.get("max") if rng else None
-    step = rng.get("step") if rng else None
-    p.declared = rng is not None
-    p.min, p.max = (lo * k if lo is not None else None), (hi * k if hi is not None else None)
-    p.step = step * k if step is not None else None
-    dlo, dhi, dstep = default_span(kind, dflt)
-    if p.min is None:
-        p.min = min(dlo, dflt) if p.max is None else min(dlo, dflt, p.max)
-    if p.max is None:
-        p.max = max(dhi, dflt, p.min)
-    if p.step is None:
-        p.step = dstep if kind != "number" or float(dflt).is_integer() else _nice((p.max - p.min) / 200)
-    for a in ("min", "max", "step"):
-        setattr(p, a, round(getattr(p, a), 9))
-    return p
-
-
-def default_span(kind: str, v: float) -> tuple[float, float, float]:
-    """Slider span for a param without a declared range: a quarter to twice a length or number
-    (an integer keeps step 1: it may count things), a full turn for an angle."""
-    if kind == "angle":
-        return -180.0, 360.0 if v > 180 else 180.0, 1.0
-    if v == 0:
-        return (-100.0, 100.0, 0.5) if kind == "length" else (0.0, 10.0, 1.0)
-    a, b = sorted((v / 4, v * 2)) if v > 0 else sorted((v * 2, v / 4))
-    if kind == "number" and float(v).is_integer():
-        return math.floor(min(a, 0 if v > 0 else a)), math.ceil(max(b, 10 if v > 0 else b)), 1.0
-    step = _nice((b - a) / 200)
-    return math.floor(a / step) * step, math.ceil(b / step) * step, step
-
-
-def _nice(x: float) -> float:
-    """The 1-2-5 step not above ``x``."""
-    if x <= 0:
-        return 1.0
-    e = math.floor(math.log10(x))
-    for m in (5, 2, 1):
-        if m * 10 ** e <= x:
-            return m * 10 ** e
-    return 10 ** e
-
-
-def declared_params(source: str, path: str) -> list[Param] | None:
-    """The top-level params of ``source`` (named ``path``) with the file's own values, in
-    declaration order (``line``: 1-based, ``span``: the declaration's
-    :class:`~aidl_lang.diagnostics.Span`, set as an attribute); ``None`` when the program does
-    not parse, check or interpret (its diagnostics are for the compile to report)."""
-    from . import ast as A
-    from .diagnostics import DiagnosticSink
-    from .interp import Interpreter
-    from .parser import parse
-    from .pipeline import run_deep
-    from .typecheck import check
-    sink = DiagnosticSink()
-    try:
-        program = parse(source, path, sink)
-        if not sink.has_errors:
-            check(program, sink)
-        if sink.has_errors:
-            return None
-        interp = Interpreter(sink, {})
-        run_deep(lambda: interp.run(program))
-    except Exception:          # noqa: BLE001 - sliders are an extra; a bug here loses only them
-        return None
-    fctx = interp.file
-    if fctx is None:
-        return None
-    ranges = getattr(fctx, "param_ranges", {})
-    out = []
-    for st in program.stmts:
-        if isinstance(st, A.ParamDecl):
-            p = _param(st.name, fctx.params.get(st.name), ranges.get(st.name),
-                       st.span.line if st.span else 0)
-            if p is not None:
-                p.span = st.span
-                out.append(p)
     return out

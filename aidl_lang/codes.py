@@ -172,7 +172,8 @@ instance to other parts with constraints in the parent structure.
 One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
-one list, and 15 s of wall time for the whole compile. Each construct's own limit
+one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of wall time
+for the whole compile. Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out

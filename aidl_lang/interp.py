@@ -35,6 +35,11 @@ from .sources import STDLIB
 __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
 
 
+
+# the strings one compile builds: at most this many times the budget's ``size`` characters in
+# all (64 million by default: at most a few hundred MB however they are kept)
+STRING_CHARS = 64
+
 class Interpreter(Statements, Calls, Expressions):
     """Runs a checked :class:`~aidl_lang.ast.Program` into a :class:`~aidl_lang.geometry.model.Model`.
 
@@ -49,6 +54,7 @@ class Interpreter(Statements, Calls, Expressions):
         self.deadline = deadline if deadline is not None else time.monotonic() + budget.seconds
         self.steps = 0
         self.objects = 0
+        self.chars = 0                                # characters of every string built so far
         self.reported: set = set()
         self.ops = 0                                  # operators evaluated (time checks)
         self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
@@ -78,7 +84,7 @@ class Interpreter(Statements, Calls, Expressions):
         The cyclic garbage collector is paused while interpreting (the previous state is
         restored): a run makes hundreds of thousands of small objects (values, expressions,
         records) that reference counting frees, and the collector's full passes over a large
-        heap were up to half the time (docs/performance.md, "The interpreter").  What a run
+        heap were up to half the time (docs/dev/performance.md, "The interpreter").  What a run
         makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
         with gc_paused():
             try:
@@ -117,11 +123,18 @@ class Interpreter(Statements, Calls, Expressions):
             self.check_time(span)
 
     def check_size(self, n: int, span, what: str = "a string") -> None:
-        """A string or list of ``n`` characters/items must fit the budget's ``size``."""
+        """A string or list of ``n`` characters/items must fit the budget's ``size``; the
+        strings one compile builds may hold :data:`STRING_CHARS` x ``size`` characters in all
+        (each fits alone, but 8 000 of a million characters took 7.9 GB)."""
+        unit = "items" if "list" in what else "characters"
         if n > self.budget.size:
-            unit = "items" if "list" in what else "characters"
             raise BudgetExhausted(f"{what} of {n:,} {unit}, more than the {self.budget.size:,} "
                                   "allowed", span, self.frames)
+        if unit == "characters":
+            self.chars += n
+            if self.chars > STRING_CHARS * self.budget.size:
+                raise BudgetExhausted(f"strings of more than {STRING_CHARS * self.budget.size:,} "
+                                      "characters in all", span, self.frames)
 
     def budget_error(self, ex: BudgetExhausted) -> None:
         frames = [f for f in ex.frames if f[1] is not None]

@@ -3,7 +3,7 @@ the parser's AST, the interpreter's model, the solver's rows and tape.
 
 Each of them allocates hundreds of thousands of small objects that reference counting frees,
 and the collector's passes over them were a quarter to a half of those stages' time
-(docs/performance.md: the parser, "The interpreter", the solver's rows and compile).
+(docs/dev/performance.md: the parser, "The interpreter", the solver's rows and compile).
 """
 from __future__ import annotations
 

@@ -9,7 +9,7 @@ Lark is the parser generator: :func:`_tables_data` builds Lark's LALR(1) table a
 lexer and keeps them as plain data, cached as JSON (never a pickle) in the user's own cache
 folder, owner-only (issue 15), see :func:`_tables`; a run reads that and never imports Lark.
 
-Speed (issue 12, docs/performance.md): the AST node of each rule is built inside the LALR
+Speed (issue 12, docs/dev/performance.md): the AST node of each rule is built inside the LALR
 reduction (no parse tree is built and walked), its span taken from the first and last token it
 covers (what Lark's ``propagate_positions`` would give); the lexer, the post-lexer and the
 LALR loop each make one pass over a token list.  tests/test_parse_table.py checks the result

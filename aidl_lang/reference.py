@@ -547,6 +547,7 @@ least 2 mm"), and constraints (`==`, `<=` statements) for what the solver should
 `kerf LENGTH` (top level: every part; inside a structure: that structure and its children,
 the nearest one wins). `aidl render` offsets every cut by half the kerf so parts come out at
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
+Only SVG, DXF and PNG are offset: STL, 3MF and STEP keep the designed size.
 `aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
 """, ["kerf_width", "laser kerf", "cut width"]),
     "thickness": ("statement", "`thickness 3 mm`: the material thickness for STL, 3MF, STEP "

@@ -13,7 +13,6 @@ path) reaches a diagnostic.
 from __future__ import annotations
 
 import os
-import stat
 from pathlib import Path
 
 STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
@@ -98,25 +97,32 @@ def resolve_import(raw: str, importer: str) -> Path:
 
 def read_import(real: Path, raw: str) -> str:
     """Read a resolved import: a regular file of at most ``MAX_IMPORT_BYTES``, UTF-8 (a BOM
-    is dropped).  Opening never blocks (FIFOs and devices are refused before reading)."""
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0)
+    is dropped).  ``real`` has no link in it (:func:`resolve_import` took its realpath), so
+    it is opened from ``/`` one folder at a time, each relative to the previous one's
+    descriptor with ``O_NOFOLLOW | O_DIRECTORY`` (:func:`aidl_lang.files.open_beneath`): a
+    folder on the path swapped for a link after the check is refused, never followed out of
+    the project.  Opening never blocks (FIFOs and devices are refused before reading)."""
+    from .files import FileRefused, open_beneath, read_regular
+    shown = os.fspath(real)
     try:
-        fd = os.open(str(real), flags)
+        fd = open_beneath(os.sep, os.path.relpath(shown, os.sep))
+    except FileRefused as e:
+        if "symbolic link" in e.message:
+            raise ImportRefused(f"import `{raw}` passed through a symbolic link while it was "
+                                "read; refusing to follow it") from None
+        raise ImportRefused(f"cannot read `{raw}`") from None
     except OSError:
-        raise ImportRefused(f"cannot read `{raw}`")
+        raise ImportRefused(f"cannot read `{raw}`") from None
     try:
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode):
-            raise ImportRefused(f"import `{raw}` is not a .aidl file inside the project folder")
-        if st.st_size > MAX_IMPORT_BYTES:
+        data = read_regular(fd, MAX_IMPORT_BYTES, raw)
+    except FileRefused as e:
+        if "larger than" in e.message:
             raise ImportRefused(f"import `{raw}` is larger than {MAX_IMPORT_BYTES} bytes",
-                                hint="split it into smaller files")
-        data = os.read(fd, MAX_IMPORT_BYTES + 1)
+                                hint="split it into smaller files") from None
+        raise ImportRefused(f"import `{raw}` is not a .aidl file inside the project "
+                            "folder") from None
     finally:
         os.close(fd)
-    if len(data) > MAX_IMPORT_BYTES:
-        raise ImportRefused(f"import `{raw}` is larger than {MAX_IMPORT_BYTES} bytes",
-                            hint="split it into smaller files")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:

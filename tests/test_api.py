@@ -252,3 +252,21 @@ def test_check_values_unknown_name_and_errors():
     assert out.returncode == 0 and "no value matches" in out.stderr
     bad = aidl("check", ROOT / "tests" / "programs" / "nonexistent.aidl", "--values")
     assert bad.returncode == 1 and "E0004" in bad.stderr
+
+
+def test_the_facade_holds_only_the_promised_api():
+    """Issue 37, "The code": the output-file safety code lives in aidl_lang.output.write and
+    the customizer's sliders in aidl_lang.serve.params; the facade re-exports only what
+    docs/api.md promises (WriteError, loaded on first use: the output package is heavy)."""
+    import aidl_lang
+    import aidl_lang.api as api
+    from aidl_lang.output import write
+    from aidl_lang.serve import params
+    for gone in ("stage", "write_atomic", "planted_link", "check_output_path", "Param",
+                 "declared_params", "default_span"):
+        assert gone not in vars(api), gone
+    assert set(api.__all__) == {"compile", "Result", "Value", "PartInfo", "NotCompiled",
+                                "WriteError"} == set(aidl_lang.__all__)
+    assert api.WriteError is write.WriteError is aidl_lang.WriteError is WriteError
+    assert issubclass(WriteError, OSError)
+    assert callable(params.declared_params) and callable(write.check_output_path)

@@ -286,3 +286,30 @@ def test_rendered_files_are_what_aidl_render_writes(tmp_path):
                         for line in p.read_text().splitlines())
                  for p in (tmp_path / "out" / "kerfed.dxf", tmp_path / "ref.dxf"))
     assert ours == ref
+
+
+def test_ctrl_c_under_dask_prints_one_line(corpus, tmp_path):
+    """Ctrl-C in a terminal reaches the whole process group: the LocalCluster's worker
+    processes printed 63 lines of tracebacks.  Now they ignore it and the batch prints one
+    line, as with the local pool."""
+    pytest.importorskip("dask.distributed")
+    folder, _ = corpus
+    out = tmp_path / "rows.jsonl"
+    last = tmp_path / "last.jsonl"                     # still running when interrupted
+    last.write_text(json.dumps({"id": "runaway", "source": RUNAWAY, "budget": 100}) + "\n")
+    proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "batch", str(folder / "gen"),
+                             str(last), "-o", str(out), "--scheduler", "local", "--workers", "1",
+                             "--timeout", "120"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True,       # its own group, as a terminal's job
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < 90:
+        if out.exists() and out.stat().st_size > 0:     # the workers are up and running
+            break
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGINT)                   # Ctrl-C: the whole group
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode == 130, (stdout, stderr)
+    assert stderr.splitlines() == [f"aidl: interrupted; every finished row is in {out}: run "
+                                   "the same command again to go on"], stderr

@@ -31,7 +31,8 @@ import aidl_lang
 from aidl_lang.codes import CODES
 
 ROOT = Path(__file__).resolve().parent.parent
-DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")),
+        *sorted((ROOT / "docs" / "dev").glob("*.md"))]
 MARKER = re.compile(r"<!--\s*expect:\s*(?P<body>.*?)\s*-->")
 CODE = re.compile(r"\b[EW]\d{4}\b")
 INLINE = re.compile(r"#.*?\b(?:error|warning)\[([EW]\d{4})\]")
@@ -188,11 +189,11 @@ def test_the_text_example_moves_the_label_onto_the_plate_not_the_plate():
 # ------------------------------------------------------------------ the tutorial's commands
 def _tutorial_commands():
     """Each ``aidl ...`` line of a ```sh block in docs/tutorial.md, with the ```aidl block
-    above it (saved as kit.aidl) and, for ``aidl parts``, the ```text block that shows its
-    output, if any."""
+    above it (saved as kit.aidl) and the ```text block that shows its output, if any (after
+    the last command of the block: ``aidl check --values``, ``aidl parts``)."""
     path = ROOT / "docs" / "tutorial.md"
     lines = path.read_text(encoding="utf-8").split("\n")
-    out, program, i = [], None, 0
+    out, program, i, block = [], None, 0, 0
     while i < len(lines):
         fence = lines[i].strip()
         if fence.startswith("```") and fence != "```":
@@ -203,12 +204,15 @@ def _tutorial_commands():
             if fence == "```aidl":
                 program = "\n".join(body) + "\n"
             elif fence == "```sh":
+                block = len(out)
                 for k, line in enumerate(body):
                     cmd = line.split("#", 1)[0].strip()
                     if cmd.startswith("aidl "):
                         out.append((f"docs/tutorial.md:{i + 2 + k}", program, cmd))
-            elif fence == "```text":         # the output of the last `aidl parts` above
-                k = max(n for n, c in enumerate(out) if c[2].startswith("aidl parts "))
+            elif fence == "```text":         # the output of the last command above (in its
+                # block, the `aidl parts` if there is one)
+                k = max([n for n in range(block, len(out)) if out[n][2].startswith("aidl parts ")]
+                        or [len(out) - 1])
                 out[k] = (*out[k][:3], "\n".join(body) + "\n")
             i = j
         i += 1
@@ -241,4 +245,36 @@ def test_every_tutorial_command_runs_on_its_program(where, program, cmd, shown, 
 def test_the_tutorial_commands_are_found():
     cmds = [c[2] for c in TUTORIAL_COMMANDS]
     assert len(cmds) >= 8 and any("--layout sheet" in c for c in cmds)
-    assert sum(c[3] is not None for c in TUTORIAL_COMMANDS) == 1
+    assert sum(c[3] is not None for c in TUTORIAL_COMMANDS) == 2
+    # every one of the ten steps has its command (issue 37, the newcomer's first run)
+    text = (ROOT / "docs" / "tutorial.md").read_text(encoding="utf-8")
+    steps = re.split(r"\n## \d+ ", text)[1:]
+    assert len(steps) == 10 and all("```sh\naidl " in st for st in steps)
+
+
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+
+
+def test_every_relative_link_of_the_docs_leads_to_a_file():
+    """README.md, docs/*.md and docs/dev/*.md (the engineering notes moved there, issue 37):
+    every relative link names a file or folder that exists, and every `#anchor` into a
+    Markdown file names one of its headings."""
+    def anchors(md: Path) -> set[str]:
+        out = set()
+        for line in md.read_text(encoding="utf-8").split("\n"):
+            if line.startswith("#"):
+                title = line.lstrip("#").strip().lower()
+                out.add(re.sub(r"[^\w\- ]", "", title).replace(" ", "-"))
+        return out
+    bad = []
+    for md in DOCS:
+        for target in LINK.findall(md.read_text(encoding="utf-8")):
+            if re.match(r"[a-z]+:", target):
+                continue
+            path, _, anchor = target.partition("#")
+            f = (md.parent / path).resolve() if path else md
+            if not f.exists():
+                bad.append(f"{md.relative_to(ROOT)}: {target}")
+            elif anchor and f.suffix == ".md" and anchor not in anchors(f):
+                bad.append(f"{md.relative_to(ROOT)}: {target} (no such heading)")
+    assert bad == []

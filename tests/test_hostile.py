@@ -136,3 +136,56 @@ def test_a_SystemError_from_an_allocation_that_failed_in_C_is_E0304(monkeypatch)
         assert pipeline.out_of_memory(e)
     monkeypatch.setattr(pipeline, "_compile", real)
     assert pipeline.compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok
+
+
+def test_many_large_strings_are_E0304_before_they_fill_the_memory():
+    """Issue 37: each of 8 000 strings of a million characters fits the size budget alone,
+    and the program took 7.9 GB.  All the strings of a compile are counted together: E0304
+    after 64 of them, at the comprehension, in well under a gigabyte."""
+    import resource
+    src = ('units mm\nx = [[f"{i:999999}" for i in range(80)] for j in range(100)]\n'
+           'solid s { body = Rectangle(center=(0, 0), width=10, height=10) }\n')
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    res = compile_source(src, "strings.aidl")
+    grown_mb = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before) / 1024
+    (d,) = [d for d in res.sink.items if d.severity == "error"]
+    assert d.code == "E0304" and d.span.line == 2
+    assert "strings of more than 64,000,000 characters in all" in d.message
+    assert grown_mb < 1024
+    # --budget scales it: a quarter of the budget stops at a quarter of the characters
+    from aidl_lang.limits import DEFAULT_BUDGET
+    small = compile_source(src.replace("999999", "200000"), "strings.aidl",
+                           budget=DEFAULT_BUDGET.scaled(0.25))
+    assert any("16,000,000 characters in all" in d.message for d in small.sink.items)
+    # a label built one character at a time is far from it
+    ok = compile_source('units mm\ns = ""\nfor i in range(3000) { s = s + "x" }\n'
+                        'solid p { body = Rectangle(center=(0, 0), width=10, height=10) }\n',
+                        "label.aidl")
+    assert ok.ok, [d.message for d in ok.sink.items]
+
+
+def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
+    """Issue 37: Fillet on 2,000 stars ran 17-24 s against the 15 s budget: the fillets of a
+    structure (and the exact recovery before them) were one step with no look at the
+    deadline.  Now each loop's fillets are preceded by one; shown with a slowed fillet."""
+    import time as _time
+    from aidl_lang.geometry import operations
+    from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from aidl_lang.output.booleans import render_model
+    holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "
+                      "points=5, outer_radius=4, inner_radius=2) }" for i in range(100))
+    src = (f"units mm\nsolid plate {{\n    body = Rectangle(center=(0, 0), width=130, "
+           f"height=130)\n{holes}\n    Fillet(radius=0.3)\n}}\n")
+    res = compile_source(src, "stars.aidl")
+    assert res.ok, [d.message for d in res.sink.items]
+    real, calls = operations.corners, []
+
+    def slow(*a, **k):
+        calls.append(1)
+        _time.sleep(0.05)                     # 101 loops: 5 s without the deadline
+        return real(*a, **k)
+    monkeypatch.setattr(operations, "corners", slow)
+    with pytest.raises(OutOfBudget) as e:
+        render_model(res.model, Deadline(_time.monotonic() + 1.0, DEFAULT_BUDGET))
+    assert e.value.stage == "the booleans" and e.value.where.path == "plate"
+    assert 0 < len(calls) < 101

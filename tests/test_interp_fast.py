@@ -1,4 +1,4 @@
-"""The interpreter's fast paths (docs/performance.md, "The interpreter") give exactly what the
+"""The interpreter's fast paths (docs/dev/performance.md, "The interpreter") give exactly what the
 general paths give.
 
 * ``sub``, ``mul``, ``add``, ``func`` and ``contains_bbox`` against the code they replaced

@@ -492,3 +492,35 @@ def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys):
                  "--budget", "0.2", "--nest-time", "4", "-o", str(out)]) == 0, \
         capsys.readouterr().err
     assert out.read_text().count("<svg") == 1
+
+
+def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts():
+    """spyrrow cannot be stopped: 2,000 parts took 20 s past the 15 s budget and were blamed
+    on the SVG writer.  The nesting is estimated (parts²) and refused as "the layout"."""
+    import time
+    from aidl_lang.limits import DEFAULT_BUDGET, Deadline
+    from aidl_lang.output import build
+    from aidl_lang.output.layout import NEST_SECONDS_PER_PAIR, plan
+    from aidl_lang.output.part import OutputError
+    from aidl_lang.pipeline import compile_source, report_out_of_budget
+    n = 120
+    rows = "\n".join(f"    solid p{i} {{ body = Rectangle(center=({i * 30}, 0), width=20, "
+                     f"height=10) }}" for i in range(n))
+    res = compile_source(f"units mm\nassembly parts {{\n{rows}\n}}\n", "many.aidl")
+    assert res.ok
+    out = build(res.drawing, res.model.root.name)
+    soon = Deadline(time.monotonic() + 0.5 * NEST_SECONDS_PER_PAIR * n * n, DEFAULT_BUDGET)
+    t0 = time.monotonic()
+    with pytest.raises(OutputError) as e:
+        plan(out, deadline=soon)
+    assert time.monotonic() - t0 < 0.5 * NEST_SECONDS_PER_PAIR * n * n   # before spyrrow ran
+    assert e.value.budget.stage == "the layout" and e.value.budget.where.path == "parts"
+    report_out_of_budget(res.sink, e.value.budget)
+    d = res.sink.items[-1]
+    assert d.code == "E0304" and d.span.line == 2
+    assert "in the layout of `parts`" in d.message and f"{n} parts" in str(e.value)
+    # the same parts with time to spare are laid out (and the first few alone)
+    later = Deadline(time.monotonic() + 600, DEFAULT_BUDGET)
+    few = build(compile_source("units mm\nassembly parts {\n" + "\n".join(rows.split("\n")[:3])
+                               + "\n}\n", "few.aidl").drawing, "model")
+    assert sum(len(s) for s in plan(few, deadline=later)) == 3

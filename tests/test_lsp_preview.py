@@ -153,3 +153,52 @@ async def test_preview_request_assembled_carries_the_glb(client: LanguageClient)
     T_, g = sc.graph["stand.foot"]
     v = trimesh.transform_points(sc.geometry[g].vertices, T_)
     assert abs(v[:, 0].min() + 1.5) < 1e-5 and abs(v[:, 1].max() - 35) < 1e-5
+
+
+def test_the_preview_compiles_in_the_memory_limited_worker_not_the_server():
+    """Issue 37: `aidl/preview` compiled in the server's own process, with no memory limit
+    (four documents of large strings: 3.9 GB, kept after they closed).  It now runs in the
+    diagnostics' worker process, whose address space is limited and which exits (giving
+    its memory back) when it holds more than RETIRE_RSS after a job."""
+    import asyncio
+    import os
+
+    from aidl_lang.editor.lsp import job
+    from aidl_lang.editor.lsp.worker import Analyzer
+    src = "units mm\nsolid plate { body = Rectangle(center=(0, 0), width=40, height=20) }\n"
+    pv.CACHE.good.clear()
+
+    async def run():
+        a = Analyzer()
+        try:
+            calls = []
+            out = await a.preview(src, "p.aidl", "file:///p.aidl", 1, {},
+                                  lambda: calls.append(1) or {})
+            limits = open(f"/proc/{a.proc.pid}/limits").read()
+            return out, calls, a.proc.pid, limits
+        finally:
+            a.close()
+    out, calls, pid, limits = asyncio.run(run())
+    assert out["ok"] and "<svg" in out["svg"] and out["shapes"]
+    assert pid != os.getpid() and calls == []          # not drawn here, and not kept here
+    assert "file:///p.aidl" not in pv.CACHE.good
+    line = next(ln for ln in limits.splitlines() if ln.startswith("Max address space"))
+    assert str(job.MEMORY_LIMIT) in line.split()
+
+
+def test_a_worker_holding_too_much_memory_answers_then_exits():
+    """The memory goes back: past RETIRE_RSS after a job the worker says `retire` and exits
+    (the Analyzer starts a fresh one for the next job); here with the bar at 1 byte."""
+    import json
+    import subprocess
+    src = "units mm\nsolid plate { body = Rectangle(center=(0, 0), width=40, height=20) }\n"
+    jobs = "".join(json.dumps({"id": i, "kind": "preview", "text": src, "path": "p.aidl",
+                               "uri": "file:///p.aidl", "version": i, "values": {}}) + "\n"
+                   for i in (1, 2))
+    code = ("import sys; import aidl_lang.editor.lsp.job as j; j.RETIRE_RSS = 1; "
+            "sys.exit(j._serve())")
+    r = subprocess.run([sys.executable, "-c", code], input=jobs, capture_output=True,
+                       text=True, timeout=120, cwd=ROOT)
+    answers = [json.loads(ln) for ln in r.stdout.splitlines()]
+    assert r.returncode == 0 and len(answers) == 1            # the second job is not read
+    assert answers[0]["retire"] is True and answers[0]["preview"]["ok"]

@@ -154,3 +154,47 @@ def test_batch_journal_never_appends_through_a_link_swapped_in(tmp_path, suffix)
             opened += 1
     assert victim.read_text() == "victim's notes\n"
     assert opened > 0
+
+
+def test_an_import_never_passes_through_a_folder_swapped_for_a_link(tmp_path):
+    """Item 2: the import's path was checked with realpath, then opened by name with
+    O_NOFOLLOW on the last component only: `sub`, swapped for a link to a folder outside
+    between the two, let the outside file be read.  Now every folder is opened relative to
+    the previous one's descriptor without following links."""
+    from aidl_lang.pipeline import compile_source
+    root = tmp_path / "root"
+    (root / "sub").mkdir(parents=True)
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "lib.aidl").write_text("secret = ]\n")      # each says `x` closes nothing
+    (root / "sub" / "lib.aidl").write_text("mine = )\n")
+    main = root / "main.aidl"
+    src = 'import "sub/lib.aidl"\n' + GOOD
+    main.write_text(src)
+    leaked = mine = 0
+    with Swapper(root / "sub", outside, "dir"):
+        for _ in range(300):
+            res = compile_source(src, str(main))
+            text = " ".join(f"{d.message} {d.hint}" for d in res.sink.items)
+            leaked += "`]`" in text
+            mine += "`)`" in text
+    assert leaked == 0
+    assert mine > 0                       # the swaps did not stop every import
+
+
+def test_read_import_refuses_a_folder_that_became_a_link_after_the_check(tmp_path):
+    """The window made certain: resolved while `sub` is a folder, read once it is a link."""
+    from aidl_lang.sources import ImportRefused, read_import, resolve_import
+    root = tmp_path / "root"
+    (root / "sub").mkdir(parents=True)
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "lib.aidl").write_text(SECRET)
+    (root / "sub" / "lib.aidl").write_text(MINE)
+    real = resolve_import("sub/lib.aidl", str(root / "main.aidl"))
+    assert read_import(real, "sub/lib.aidl") == MINE
+    os.rename(root / "sub", root / "sub-real")
+    os.symlink(outside, root / "sub")
+    with pytest.raises(ImportRefused) as e:
+        read_import(real, "sub/lib.aidl")
+    assert "symbolic link" in str(e.value.args[0]) and "SECRET" not in str(e.value.args)

@@ -1,6 +1,6 @@
 """A re-solve with the compiled system kept (what an edit or a live preview does) gives bit for
 bit what a fresh solve gives, including when the held values change between solves (the
-substitution is remembered per tape, keyed by the held values: docs/performance.md)."""
+substitution is remembered per tape, keyed by the held values: docs/dev/performance.md)."""
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""Garbage collection around the solver's big builds (docs/performance.md): the compile leaves
+"""Garbage collection around the solver's big builds (docs/dev/performance.md): the compile leaves
 no reference cycle behind (its walk used to keep every node tuple alive until a cyclic
 collection traversed them), ``gc_paused`` restores the collector, and a process that compiles
 again and again does not pile up dead models."""

@@ -688,6 +688,34 @@ def test_a_closed_spline_that_crosses_itself_is_a_located_error(tmp_path):
     assert self_crossings(interpolate(GUITAR, True)) == []
 
 
+def test_a_spline_that_doubles_back_is_E0108_after_bounded_work(tmp_path):
+    """Points that double back make spans that lie on each other: the subdivision search
+    stopped after MAX_LEAVES small boxes per span pair (it took 28 s / 90 s before), and
+    the compile's deadline stops it too."""
+    from aidl_lang.geometry import spline as sp
+    back = [(0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (5, 5)]
+    src = f"units mm\nsolid s {{\n    body = Spline(points={back}, closed=true)\n}}\n"
+    errs = _diag(src, tmp_path)
+    assert [d.code for d in errs] == ["E0108"] and errs[0].span.line == 3
+    c = interpolate(back, True)
+    calls = []
+    cross = sp.self_crossings(c, lambda: calls.append(1))
+    assert all(_dist(c.at(u), c.at(v)) <= 1e-6 and v - u >= 1 for u, v in cross)
+    assert (0.0, 2.0) in [(round(u, 6), round(v, 6)) for u, v in cross]  # (0, 0), twice
+    pairs = int(np.triu(np.ones((c.n, c.n)), 1).sum())
+    # every span pair stops at MAX_LEAVES leaves, so at most ~(40 + 4) x MAX_LEAVES boxes
+    assert 0 < len(calls) <= pairs * 44 * sp.MAX_LEAVES // 4096
+
+    class Stop(Exception):
+        pass
+
+    def stop():
+        raise Stop
+
+    with pytest.raises(Stop):                    # the deadline's check ends the search
+        sp.self_crossings(c, stop)
+
+
 def test_an_open_spline_returning_to_its_start_is_a_face(tmp_path):
     src = ("units mm\nsolid s {\n    body = Spline(points=[(0, 0), (20, 15), (40, 0), "
            "(20, -15), (0, 0)])\n}\n")

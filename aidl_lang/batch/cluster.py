@@ -42,8 +42,19 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
     cluster = None
     if address == "local":
         import logging
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.ERROR)
+        import signal
+        import threading
+        # Ctrl-C goes to the whole foreground process group: the worker processes ignore it
+        # (a disposition their exec keeps), so only this process stops, with one line
+        # (batch/command.py), as the local pool's workers do (child.py)
+        main = threading.current_thread() is threading.main_thread()
+        before = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+        try:
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                   dashboard_address=None, silence_logs=logging.ERROR)
+        finally:
+            if main:
+                signal.signal(signal.SIGINT, before)
         client = Client(cluster)
     else:
         try:

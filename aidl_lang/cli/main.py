@@ -135,7 +135,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                         "`thickness`, else 3 mm)")
     r.add_argument("--kerf", default=None, metavar="LENGTH",
                    help="offset every cut by half this kerf so parts come out at their size, "
-                        "e.g. 0.15mm (default: the program's `kerf`, else none)")
+                        "e.g. 0.15mm (default: the program's `kerf`, else none); SVG, DXF "
+                        "and PNG only: STL, 3MF and STEP keep the designed size")
     r.add_argument("--assembled", action="store_true",
                    help="write the assembled product: every part extruded by its thickness and "
                         "placed by its `Place` (STL, 3MF, STEP, GLB: one named object per part; "
@@ -339,14 +340,17 @@ def cmd_check(args) -> int:
                           "max_residual": res.solve.max_residual}
         if res.ok:
             if args.dof:
-                program.find_redundant(None, None)
+                # the whole search, bounded by the budget's wall time (15 s x --budget):
+                # 2 500 chained points took 20 s more, unbounded
+                program.find_redundant(_budget(args).seconds, None)
             else:
                 program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
         if args.dof and res.ok:
             from ..solver.diagnose import degrees_of_freedom
             dofs = degrees_of_freedom(res.solve.solver)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
-                             "dof": d.dof, "floating": d.floating} for d in dofs]
+                             "dof": d.dof if d.rank >= 0 else None,     # None: not counted
+                             "floating": d.floating} for d in dofs]
         if res.ok:
             from ..solver.diagnose import degrees_of_freedom, freedom_text
             dofs_all = (dofs if dofs is not None
@@ -385,6 +389,9 @@ def _print_dof(dofs) -> None:
     for d in dofs:
         fl = ", ".join(d.floating[:6]) + (f", ... ({len(d.floating)})" if len(d.floating) > 6
                                            else "")
+        if d.rank < 0:                  # too large for the dense count (MAX_SVD_FLOPS)
+            print(f"{d.structure.path:{width}}  {d.unknowns:8d}    ?  not counted (too large)")
+            continue
         print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
 
 
@@ -483,7 +490,7 @@ def _outputs(args) -> list[Path] | int:
 def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     """A symbolic link as output is refused (exit 2: someone may have planted it to make the
     render overwrite another file) unless ``--follow-symlinks``, and even then (exit 1) when
-    another user made it in a sticky world-writable folder (:func:`aidl_lang.api.planted_link`);
+    another user made it in a sticky world-writable folder (:func:`aidl_lang.output.write.planted_link`);
     an existing read-only file is refused (exit 1) unless ``--force``.  None when ``o`` may
     be written."""
     if os.path.islink(o) and not follow:
@@ -491,7 +498,7 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
                       "through it: give --follow-symlinks to write the file it points to, or "
                       "another output name")
     if os.path.islink(o):
-        from ..api import planted_link
+        from ..output.write import planted_link
         planted = planted_link(o)
         if planted:
             print(f"aidl: error: {planted.replace('when asked to follow links', 'with --follow-symlinks')}",
@@ -523,10 +530,10 @@ def _encode_all(jobs: list, opt, deadline):
 
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
-    """Write every output or none: each staged beside its target (:func:`aidl_lang.api.stage`:
+    """Write every output or none: each staged beside its target (:func:`aidl_lang.output.write.stage`:
     symlinks, modes), then all renamed over their targets (``os.replace``: never
     half-written).  Returns an error message, or None."""
-    from ..api import stage
+    from ..output.write import stage
     staged = []
     out = items[0][0] if items else ""
     try:
@@ -622,7 +629,7 @@ def cmd_render(args) -> int:
                 # the nesting's own time limit comes on top of the compile's wall budget
                 from ..limits import Deadline
                 res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
-            where = plan(cut, sheet, gap, rotate, args.nest_time)
+            where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
             notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "

@@ -544,16 +544,22 @@ class SplineCorner(ValueError):
         self.hint = hint
 
 
-def finish(s: Structure, loops: list, x=None) -> list:
+def finish(s: Structure, loops: list, x=None, check=None) -> list:
     """Apply the structure's Fillet/Chamfer operations, in order, to its exact outline
     ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
-    ``x`` (the solved unknowns) places corners chosen with ``at``.  Returns the new loops."""
+    ``x`` (the solved unknowns) places corners chosen with ``at``.  ``check``: called before
+    each loop (the compile's deadline: it raises to stop).  Returns the new loops."""
     from .expr import evaluate
     for kind, r, at in getattr(s, "finish", []):
         pts = None
         if at is not None and x is not None:
             pts = [(float(evaluate(px, x)), float(evaluate(py, x))) for px, py in at]
-        loops = [corners(lp, r, kind == "Fillet", pts) for lp in loops]
+        done = []
+        for lp in loops:
+            if check is not None:
+                check()
+            done.append(corners(lp, r, kind == "Fillet", pts))
+        loops = done
     return loops
 
 

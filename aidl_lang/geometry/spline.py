@@ -465,13 +465,14 @@ class CubicSpline:
                 out.append(i + _newton1(g, dg, t))
         return _dedupe(out, self)
 
-    def cross_spline(self, other: "CubicSpline") -> list[tuple[float, float]]:
+    def cross_spline(self, other: "CubicSpline", check=None) -> list[tuple[float, float]]:
         """``(u, v)`` pairs where this curve (at ``u``) meets ``other`` (at ``v``): spans
-        whose boxes overlap are halved until small, then 2-D Newton."""
+        whose boxes overlap are halved until small (:func:`_cross_bez`, ``check`` its
+        deadline), then 2-D Newton."""
         out = []
         for i in range(self.n):
             for j in range(other.n):
-                _cross_bez(self.span(i), other.span(j), 0.0, 1.0, 0.0, 1.0, i, j, out, 0)
+                _cross_bez(self.span(i), other.span(j), i, j, out, check)
         res = []
         for u, v in out:
             u, v = newton2(self, other, u, v)
@@ -482,10 +483,13 @@ class CubicSpline:
         return res
 
 
-def self_crossings(c: CubicSpline) -> list[tuple[float, float]]:
+def self_crossings(c: CubicSpline, check=None) -> list[tuple[float, float]]:
     """``(u, v)``, ``u < v``: where curve ``c`` crosses itself (two spans that are not
     neighbours, or neighbours away from their shared point): spans whose control boxes
-    overlap, halved until small, then 2-D Newton (:func:`newton2`)."""
+    overlap, halved until small (:func:`_cross_bez`), then 2-D Newton (:func:`newton2`).
+    A stretch where the curve runs back along itself is found after at most
+    :data:`MAX_LEAVES` small boxes, whatever its length.  ``check``: a callable that raises
+    to stop (the compile's deadline), called every few thousand box pairs."""
     H = c._hulls()
     lo, hi = H.min(axis=1), H.max(axis=1)
     over = ((lo[:, None, 0] <= hi[None, :, 0]) & (lo[None, :, 0] <= hi[:, None, 0])
@@ -495,7 +499,8 @@ def self_crossings(c: CubicSpline) -> list[tuple[float, float]]:
     for i, j in zip(*np.nonzero(np.triu(over, 1))):
         i, j = int(i), int(j)
         cand_ij: list = []
-        _cross_bez(c.span(i), c.span(j), 0.0, 1.0, 0.0, 1.0, i, j, cand_ij, 0)
+        if not _cross_bez(c.span(i), c.span(j), i, j, cand_ij, check):
+            cand_ij = cand_ij[::len(cand_ij) // 8]    # on a stretch run twice: a few will do
         cand += cand_ij
     out: list = []
     scale = max(1.0, float(np.abs(H).max()))
@@ -586,22 +591,42 @@ def newton2(a: CubicSpline, b: CubicSpline, u: float, v: float, iters: int = 40)
     return u, v
 
 
-def _cross_bez(A, B, a0, a1, b0, b1, i, j, out, depth):
-    ba, bb = _hull_box(A), _hull_box(B)
-    if ba[0] > bb[2] or bb[0] > ba[2] or ba[1] > bb[3] or bb[1] > ba[3]:
-        return
-    size = max(ba[2] - ba[0], ba[3] - ba[1], bb[2] - bb[0], bb[3] - bb[1])
-    if depth >= 40 or size < 1e-3:
-        out.append((i + 0.5 * (a0 + a1), j + 0.5 * (b0 + b1)))
-        return
-    A1, A2 = split(A, 0.5)
-    B1, B2 = split(B, 0.5)
-    am, bm = 0.5 * (a0 + a1), 0.5 * (b0 + b1)
-    for X, x0, x1 in ((A1, a0, am), (A2, am, a1)):
-        for Y, y0, y1 in ((B1, b0, bm), (B2, bm, b1)):
-            _cross_bez(X, Y, x0, x1, y0, y1, i, j, out, depth + 1)
-    if len(out) > 10000:
-        del out[10000:]
+MAX_LEAVES = 2048     # small box pairs of one span pair: past it the spans run along each other
+
+
+def _cross_bez(A, B, i, j, out, check=None) -> bool:
+    """Append to ``out`` the ``(i + a, j + b)`` centres of the pairs of pieces of Bézier spans
+    ``A`` (number ``i``) and ``B`` (``j``) whose control boxes still overlap once halved to
+    1e-3 mm (or 40 times): the starting points of the crossings' Newton polish.  Two spans
+    that run along each other (a coincident stretch, as a Spline whose points double back)
+    make such a pair at every 1e-3 mm of the stretch: the search stops at
+    :data:`MAX_LEAVES` of them and returns ``False`` (the candidates so far lie on the
+    stretch).  ``check``: called every 4 096 box pairs (the compile's deadline; it raises
+    to stop)."""
+    stack = [(A, B, 0.0, 1.0, 0.0, 1.0, 0)]
+    nodes = leaves = 0
+    while stack:
+        A, B, a0, a1, b0, b1, depth = stack.pop()
+        nodes += 1
+        if check is not None and not nodes % 4096:
+            check()
+        ba, bb = _hull_box(A), _hull_box(B)
+        if ba[0] > bb[2] or bb[0] > ba[2] or ba[1] > bb[3] or bb[1] > ba[3]:
+            continue
+        size = max(ba[2] - ba[0], ba[3] - ba[1], bb[2] - bb[0], bb[3] - bb[1])
+        if depth >= 40 or size < 1e-3:
+            out.append((i + 0.5 * (a0 + a1), j + 0.5 * (b0 + b1)))
+            leaves += 1
+            if leaves >= MAX_LEAVES:
+                return False
+            continue
+        A1, A2 = split(A, 0.5)
+        B1, B2 = split(B, 0.5)
+        am, bm = 0.5 * (a0 + a1), 0.5 * (b0 + b1)
+        for X, x0, x1 in ((A2, am, a1), (A1, a0, am)):
+            for Y, y0, y1 in ((B2, bm, b1), (B1, b0, bm)):
+                stack.append((X, Y, x0, x1, y0, y1, depth + 1))
+    return True
 
 
 def _hull_box(b):

@@ -103,6 +103,10 @@ def build_server(root: str, budget: float = 1.0,
     evaluation budget) as each call's default; ``prompt``: a function that returns the
     ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
     ws = T.Workspace(root, budget)
+    # the compiling tools run in a warm worker process, killed past twice the budget's wall
+    # time (aidl_lang/mcp/worker.py): a call always ends
+    from .worker import Worker
+    work = Worker(ws.root, budget)
     from importlib.metadata import PackageNotFoundError, version
     try:
         ver = version("aidl-lang")
@@ -131,7 +135,8 @@ def build_server(root: str, budget: float = 1.0,
         column, labels, hint, suggestions, fix), solve statistics, freedom (degrees of freedom
         left) and parts (name, kind, bbox [x0, y0, x1, y1] mm, area mm2, holes)."""
         try:
-            return _json(T.check(ws, source, path, overrides, dof, budget))
+            return _json(work.call("check", source, path, overrides, dof, budget,
+                                   budget=budget))
         except T.Refused as e:
             raise refused(e) from None
 
@@ -147,8 +152,8 @@ def build_server(root: str, budget: float = 1.0,
         boxed in red.  When the program has errors there is no picture, only the
         diagnostics."""
         try:
-            doc, png = T.render(ws, source, path, output, width, overrides, budget, style,
-                                assembled)
+            doc, png = work.call("render", source, path, output, width, overrides, budget,
+                                 style, assembled, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
         return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]
@@ -163,7 +168,8 @@ def build_server(root: str, budget: float = 1.0,
         Returns JSON: ok, units, values [{name, kind, value, unit, mm}] and text (one
         `name = value unit` line each)."""
         try:
-            return _json(T.values(ws, source, path, names, overrides, budget))
+            return _json(work.call("values", source, path, names, overrides, budget,
+                                   budget=budget))
         except T.Refused as e:
             raise refused(e) from None
 
@@ -176,7 +182,8 @@ def build_server(root: str, budget: float = 1.0,
         same shape) and symmetries (mirror, n-fold rotation); mm. Returns JSON: ok,
         diagnostics, text (one line per feature) and describe (the same as data)."""
         try:
-            return _json(T.describe(ws, source, path, overrides, budget))
+            return _json(work.call("describe", source, path, overrides, budget,
+                                   budget=budget))
         except T.Refused as e:
             raise refused(e) from None
 

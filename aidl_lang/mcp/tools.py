@@ -175,7 +175,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                else r.to_png(width=width, style=style))
         if target is not None:
             prog = None if path is None else str(ws.inside(path))
-            from ..api import check_output_path
+            from ..output.write import check_output_path
             out = check_output_path(target, prog)
             data = r.encode(out.suffix, style=style, width=width, assembled=assembled)
             _write_inside(ws, target, data, prog, output)

@@ -7,7 +7,7 @@ Importing it loads the modules of the names below but no writer library: :mod:`.
 imports the DXF, PNG, mesh and STEP writers (with ``ezdxf``, ``cairosvg``, ``trimesh``, OCP)
 when that format is written, and :func:`.svg.to_svg` imports ``svgwrite`` when it is called.
 (Until issue 27 these names were resolved on first use by a PEP 562 ``__getattr__``: 1.5-3%
-of a cold ``aidl check``'s instructions, under the 5% rule's bar; docs/performance.md.)"""
+of a cold ``aidl check``'s instructions, under the 5% rule's bar; docs/dev/performance.md.)"""
 from __future__ import annotations
 
 from .booleans import Drawing, Part, area, render_model

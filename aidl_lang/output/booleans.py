@@ -85,7 +85,7 @@ class Drawing:
 
     # faces that close on no area: [(structure, geometry or first curve of the loop, area
     # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
-    # are made from templates, docs/performance.md)
+    # are made from templates, docs/dev/performance.md)
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
@@ -249,7 +249,7 @@ class Renderer:
             if seg is None:
                 return None
             from ..geometry.spline import self_crossings
-            cross = self_crossings(seg.curve)
+            cross = self_crossings(seg.curve, self.tick)
             if cross:
                 x, y = seg.curve.at(cross[0][0])
                 if not any(e[0] is g for e in self.shape_errors):
@@ -656,7 +656,9 @@ class Renderer:
             acc = acc - cut
         if getattr(s, "finish", None) and not acc.is_empty():
             try:
-                loops = finish(s, self.exact.loops(acc), self.x)
+                # the deadline covers the exact recovery and every loop's fillets
+                loops = finish(s, self.exact.loops_of([acc], self.deadline)[0], self.x,
+                               lambda: self.tick(s))
                 acc = self.exact.section(loops)
             except SplineCorner as ex:
                 g = self.spline_source.get(ex.curve)

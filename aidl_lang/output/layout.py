@@ -190,6 +190,22 @@ def _fits(pts, w: float, h: float, angles) -> bool:
     return False
 
 
+# spyrrow's first packing (no time to improve) grows as the square of the parts: 100 parts
+# 4 s, 300 parts 33 s on the shared 2-core test machine (benchmarks/layout.py --parts N);
+# a low estimate, so that only what surely cannot end in time is refused
+NEST_SECONDS_PER_PAIR = 1.5e-4
+
+
+def _assembly(output: Output, solids: list):
+    """The outermost written structure holding the first part (where a refused layout is
+    reported)."""
+    s = output.drawing.part_of.get(solids[0].name) if output.drawing is not None and solids \
+        else None
+    while s is not None and s.parent is not None and s.parent.span is not None:
+        s = s.parent
+    return s
+
+
 def _nest(shapes: dict, height: float, angles, seconds: int, seed: int):
     """spyrrow's strip packing of ``shapes`` (id -> points) in a strip ``height`` high:
     id -> (rotation in degrees, translation)."""
@@ -241,14 +257,18 @@ def place(output: Output, where: list[dict], sheet) -> tuple[list[Output], int]:
 
 
 def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
-         seconds: int = 0, seed: int = 0) -> list[dict]:
+         seconds: int = 0, seed: int = 0, deadline=None) -> list[dict]:
     """Where every solid part of ``output`` goes: one dict part name -> :class:`Motion` per
     sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
     from the sheet's edges, turned only by the angles of ``rotate`` (degrees; None: any
     angle).  A sheet holds parts of one thickness (``thickness``/``kerf`` statements: one
     material per sheet), the thinnest first.  ``seconds``: the packer's time to improve its first packing (0: the first
     packing, a fraction of a second).  Raises :class:`MissingDependency` without spyrrow and
-    :class:`LayoutError` for a part larger than the sheet."""
+    :class:`LayoutError` for a part larger than the sheet.  ``deadline`` (a
+    :class:`~aidl_lang.limits.Deadline`, or None): spyrrow cannot be stopped once started, so
+    each nesting is estimated first (:data:`NEST_SECONDS_PER_PAIR` x parts², plus
+    ``seconds``) and refused when it would end past the deadline (an :class:`OutputError`
+    whose ``budget`` names "the layout" and the assembly)."""
     try:
         import spyrrow  # noqa: F401
     except ImportError as e:
@@ -280,18 +300,34 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     groups: dict = {}
     for i, p in enumerate(solids):
         groups.setdefault(p.thickness, {})[str(i)] = shapes[str(i)]
+    def check(n: int) -> None:
+        if deadline is None:
+            return
+        from ..limits import OutOfBudget
+        try:
+            deadline.check("the layout", _assembly(output, solids),
+                           seconds + NEST_SECONDS_PER_PAIR * n * n)
+        except OutOfBudget as ex:
+            ex.hint = ("nesting grows as the square of the parts: lay out fewer parts at a "
+                       "time (one assembly per run), or raise the budget with `--budget 2`")
+            raise OutputError(f"the nesting of {n} parts would run past the budget "
+                              f"({ex.what}); lay out fewer parts at a time or raise the budget "
+                              "(`--budget 2`)", ex) from None
     for t in sorted(groups, key=lambda t: (t is None, t or 0.0)):
-        sheets += _sheets(groups[t], about, Hu, Wu, inset, rotate, seconds, seed)
+        sheets += _sheets(groups[t], about, Hu, Wu, inset, rotate, seconds, seed, check)
     return [{solids[i].name: m for i, m in placed} for placed in sheets]
 
 
 def _sheets(shapes: dict, about: dict, Hu: float, Wu: float, inset: float, rotate,
-            seconds: int, seed: int) -> list[list[tuple[int, Motion]]]:
+            seconds: int, seed: int, check=None) -> list[list[tuple[int, Motion]]]:
     """Sheets for ``shapes`` (id -> grown outline points): nest in the strip, keep what ends
-    within the sheet's usable ``Wu`` x ``Hu``, nest the rest again on the next sheet."""
+    within the sheet's usable ``Wu`` x ``Hu``, nest the rest again on the next sheet.
+    ``check(n)`` is called before each nesting of ``n`` parts (it raises to refuse it)."""
     sheets: list[list[tuple[int, Motion]]] = []
     left = dict(shapes)
     while left:
+        if check is not None:
+            check(len(left))
         placed = _nest(left, Hu, rotate, seconds, seed)
         here = []
         for k, (deg, (tx, ty)) in placed.items():

@@ -37,7 +37,7 @@ from ..solver import Solver, run
 from ..solver.system import build_rows
 from ..sources import SourceRefused, read_program
 from ..typecheck import check
-from ..api import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
+from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
 
 
 

@@ -36,6 +36,9 @@ from .system import user_residuals
 
 DEP_TOL = 1e-7
 MAX_DENSE = 5000
+# a dense SVD of m x n costs about m n min(m, n) flops: past this (5-10 s on the test machine;
+# 2 500 chained points, 2 499 x 5 000, took 80 s and 1 GB) the count is "not counted"
+MAX_SVD_FLOPS = 1e10
 DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranked densely
 MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
 
@@ -401,16 +404,26 @@ def null_support(J) -> tuple[int, np.ndarray]:
         return n_cols, moving
     sub = C[:, U].tocsr()
     sub = sub[np.flatnonzero(np.diff(sub.indptr))]
-    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE:
+    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape):
         return -1, moving
     if sub.shape[0] == 0:
         moving[U] = True
         return n_cols - len(U), moving
-    _, sv, Vt = np.linalg.svd(sub.toarray(), full_matrices=True)
+    # the thin SVD (Vt: min(rows, columns) x columns): its first rank_u rows span the row
+    # space, and a column moves when e_c is not in it, when the rest of its unit length,
+    # 1 - |Vt[:rank_u, c]|^2, is the null space's share (the full SVD's n x n Vt, for 2 500
+    # points 5 000 x 5 000, took 80 s and 1 GB)
+    _, sv, Vt = np.linalg.svd(sub.toarray(), full_matrices=False)
     rank_u = int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)))
     if len(U) > rank_u:
-        moving[U] = np.linalg.norm(Vt[rank_u:], axis=0) > 1e-6
+        rest = 1.0 - np.einsum("ij,ij->j", Vt[:rank_u], Vt[:rank_u])
+        moving[U] = rest > 1e-12
     return n_cols - len(U) + rank_u, moving
+
+
+def _svd_too_large(m: int, n: int) -> bool:
+    """Whether a dense SVD of ``m`` x ``n`` would cost more than :data:`MAX_SVD_FLOPS`."""
+    return float(m) * float(n) * float(min(m, n)) > MAX_SVD_FLOPS
 
 
 def _ancestor_rows(solver, x: np.ndarray):
@@ -440,39 +453,38 @@ def _ancestor_rows(solver, x: np.ndarray):
     n_rows = whole.n_rows
     where = np.full(len(solver.free), -1, dtype=np.int64)
     where[cols] = np.arange(len(cols))
-    anc_cache: dict = {}
-
-    def ancestors_rows(s) -> np.ndarray:
-        hit = anc_cache.get(id(s))
-        if hit is None:
-            chain = []
-            a = s.parent
-            while a is not None:
-                chain.append(a)
-                a = a.parent
-            hit = np.asarray(sorted(r for a in chain for r in solver.rows_of([a])),
-                             dtype=np.int64)
-            anc_cache[id(s)] = hit
-        return hit
+    # the structure each row belongs to (its index in model.structures), so that "is this
+    # row an ancestor's?" costs the depth of the tree, not the ancestors' rows (a sorted list
+    # of them per structure was quadratic: a 10 000-copy pattern took 31 s and 2.6 GB)
+    number = {id(a): i for i, a in enumerate(model.structures)}
+    owner = np.full(n_rows, -1, dtype=np.int64)
+    for a in model.structures:
+        if a.children:
+            owner[np.asarray(solver.rows_of([a]), dtype=np.int64)] = number[id(a)]
 
     def touching(s, rows: np.ndarray, params: list) -> np.ndarray:
-        anc = ancestors_rows(s)
-        if not len(anc):
+        chain = []
+        a = s.parent
+        while a is not None:
+            chain.append(number[id(a)])
+            a = a.parent
+        if not chain:
             return rows
         k = where[np.asarray(params, dtype=np.int64)]
         k = k[k >= 0]
         if not len(k):
             return rows
-        used = np.zeros(n_rows, dtype=bool)        # masks, not np.intersect1d/union1d:
-        for j in k:                                 # those import numpy.ma (cold start)
-            used[indices[indptr[j]:indptr[j + 1]]] = True
-        extra = anc[used[anc]]
+        # the rows that use one of the unknowns (a few per unknown), kept where an ancestor's
+        used = np.concatenate([indices[indptr[j]:indptr[j + 1]] for j in k]).astype(np.int64)
+        of = owner[used]
+        hit = np.zeros(len(used), dtype=bool)
+        for a in chain:
+            hit |= of == a
+        extra = used[hit]
         if not len(extra):
             return rows
-        keep = np.zeros(n_rows, dtype=bool)
-        keep[rows] = True
-        keep[extra] = True
-        return np.flatnonzero(keep).astype(np.int64)
+        both = np.sort(np.concatenate([np.asarray(rows, dtype=np.int64), extra]))
+        return both[np.concatenate([[True], both[1:] != both[:-1]])]
 
     return touching
 
@@ -506,7 +518,7 @@ def _block_rank(J) -> int:
         r = np.flatnonzero(lab == k)
         sub = J[r]
         c = unique(sub.indices)
-        if len(r) > MAX_DENSE or len(c) > MAX_DENSE:
+        if len(r) > MAX_DENSE or len(c) > MAX_DENSE or _svd_too_large(len(r), len(c)):
             return -1
         sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
         if len(sv):

@@ -34,7 +34,7 @@ curves): they are for pointing at, never for output.
 A document that does not compile answers ``ok: false`` with the last good picture of that
 document (``stale: true``) and the diagnostics' summary, so the preview does not go blank while
 the user types.  Param definitions (name, kind, range for a slider: ``min=``/``max=``/``step=``
-from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.api.declared_params`)
+from the file, else the span ``aidl serve`` chooses: :func:`aidl_lang.serve.params.declared_params`)
 come from an interpretation of the document with its own values, made once per text.
 
 With ``"assembled": true`` the result also carries ``glb``: the assembled product (every part
@@ -171,7 +171,7 @@ def params(source: str, path: str, uri: str, values: dict, cache: Cache = CACHE)
 
 
 def _params(source: str, path: str) -> list[dict] | None:
-    from ...api import declared_params as declared
+    from ...serve.params import declared_params as declared
     found = declared(source, path)
     if found is None:
         return None
@@ -263,9 +263,10 @@ _latest: dict[str, int] = {}
 _seq = 0
 
 
-async def handle(ls, params) -> dict:
+async def handle(ls, params, analyzer=None) -> dict:
     """The ``aidl/preview`` handler (:mod:`.server` registers it): validates the params,
-    compiles on a thread (one at a time; a request overtaken by a newer one for the same
+    compiles in ``analyzer``'s worker process (:meth:`.worker.Analyzer.preview`; on a thread
+    without one), one at a time; a request overtaken by a newer one for the same
     document while it waited answers ``{"superseded": true}`` at once)."""
     import asyncio
 
@@ -288,9 +289,24 @@ async def handle(ls, params) -> dict:
             return {"uri": uri, "superseded": True}
         doc = ls.workspace.get_text_document(uri)
         path = doc.path or "untitled.aidl"
-        loop = asyncio.get_running_loop()
-        return await loop.run_in_executor(None, preview, doc.source, path, uri, doc.version,
-                                          values, CACHE, p.get("assembled") is True)
+        assembled = p.get("assembled") is True
+        if analyzer is None:
+            loop = asyncio.get_running_loop()
+            return await loop.run_in_executor(None, preview, doc.source, path, uri,
+                                              doc.version, values, CACHE, assembled)
+        # compiled where the diagnostics are (the killable worker, within its memory limit)
+        try:
+            return await analyzer.preview(doc.source, path, uri, doc.version, values,
+                                          lambda: preview(doc.source, path, uri, doc.version,
+                                                          values, CACHE, assembled),
+                                          assembled)
+        except (EOFError, RuntimeError, TimeoutError, Exception) as e:   # noqa: BLE001 - a
+            # timeout (worker.AnalysisTimeout), a worker that died or ran out of memory
+            return {"uri": uri, "version": doc.version, "ok": False, "stale": False,
+                    "svg": None, "shapes": [], "values": values, "params": [],
+                    "diagnostics": {"errors": 1, "warnings": 0, "first": {
+                        "code": "E0900", "range": None,
+                        "message": f"cannot draw the preview: {e}"}}}
 
 
 __all__ = ["preview", "handle", "params", "plain", "Cache", "CACHE"]

@@ -389,8 +389,9 @@ features.register(server, _safe, _doc,
 @server.feature("aidl/preview")
 @_safe()
 async def aidl_preview(ls: LanguageServer, params):
-    """The editor preview's picture of a document (:mod:`.preview`)."""
-    return await preview.handle(ls, params)
+    """The editor preview's picture of a document (:mod:`.preview`), compiled by the
+    diagnostics' worker process."""
+    return await preview.handle(ls, params, _get_analyzer())
 
 
 def main(worker=None, stdin=None, stdout=None, published: dict | None = None,

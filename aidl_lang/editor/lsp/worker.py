@@ -3,7 +3,8 @@ newer version of a document can stop a stale analysis.
 
 The language server answers hover, completion and the rest on its event loop; the pipeline
 (parse, check, interpret, solve) can take long on an expensive program, and a Python thread
-cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.worker``, one
+cannot be stopped. So diagnostics are computed by ``python -m aidl_lang.editor.lsp.job``
+(:mod:`.job`: the worker's loop, its memory limit; it also draws ``aidl/preview``), one
 JSON request per line on its stdin (``{"id", "text", "path", "uri", "solve"}``) and one JSON
 answer per line on its stdout (``{"id", "diagnostics": [...], "values": {...}, "facts": {...}}``,
 LSP diagnostics (:mod:`.plain`, no lsprotocol import) and, when the document solves, its
@@ -55,37 +56,6 @@ def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = 
     return sink_json(src, path, res.sink.items, uri)
 
 
-def _serve() -> int:
-    """The worker's loop: read a job per line, answer per line, until stdin closes."""
-    import os
-
-    parent = os.getppid()
-
-    def watch():                      # end with the server, even in the middle of a job
-        while True:
-            time.sleep(2)
-            if os.getppid() != parent:
-                os._exit(0)
-    threading.Thread(target=watch, daemon=True).start()
-    out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
-    diagnostics_json("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl",
-                     values={}, extra={})
-    for line in sys.stdin:
-        try:
-            job = json.loads(line)
-            values: dict[str, str] = {}
-            extra: dict = {}
-            diags = diagnostics_json(job["text"], job["path"], job.get("solve", True),
-                                     job.get("uri"), values, extra)
-            answer = {"id": job["id"], "diagnostics": diags, "values": values, "facts": extra}
-        except Exception as e:        # answered, never a dead worker
-            answer = {"id": job.get("id") if isinstance(job, dict) else None,
-                      "error": f"{type(e).__name__}: {e}"}
-        out.write(json.dumps(answer) + "\n")
-        out.flush()
-    return 0
-
-
 class AnalysisTimeout(Exception):
     """The pipeline ran longer than :data:`Analyzer.TIMEOUT` seconds and was stopped."""
 
@@ -94,7 +64,7 @@ def spawn() -> subprocess.Popen | None:
     """Start a worker process (it warms up, importing the pipeline, while the server starts);
     None if no process can be started here."""
     try:
-        return subprocess.Popen([sys.executable, "-m", "aidl_lang.editor.lsp.worker"],
+        return subprocess.Popen([sys.executable, "-m", "aidl_lang.editor.lsp.job"],
                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE)
     except (OSError, ValueError):
         return None
@@ -195,27 +165,45 @@ class Analyzer:
         :class:`AnalysisTimeout` after TIMEOUT seconds. Jobs run one at a time; cancelling the
         awaiting task abandons its job (killed at once if it has run GRACE seconds, else the next
         job gives it the rest of GRACE to finish, see :meth:`_settle`)."""
+        def here() -> dict:
+            values: dict[str, str] = {}
+            extra: dict = {}
+            d = diagnostics_json(text, path, solve, uri, values, extra)
+            return {"diagnostics": d, "values": values, "facts": extra}
+        answer = await self._ask({"text": text, "path": path, "uri": uri, "solve": solve}, here)
+        self.values[uri] = answer.get("values") or {}
+        if answer.get("facts"):                  # a program that does not solve keeps the
+            self.facts[uri] = answer["facts"]    # last solved hints (no flicker while typing)
+        return answer["diagnostics"]
+
+    async def preview(self, text: str, path: str, uri: str, version, values, here,
+                      assembled: bool = False) -> dict:
+        """The ``aidl/preview`` result (:func:`.preview.preview`), compiled in the worker like
+        the diagnostics: within its memory limit, stopped after TIMEOUT seconds, and the
+        pictures it keeps (the last good one per document) in its memory, not the server's.
+        ``here()``: the same result computed in this process (when no worker can run)."""
+        answer = await self._ask({"kind": "preview", "text": text, "path": path, "uri": uri,
+                                  "version": version, "values": values,
+                                  "assembled": assembled},
+                                 lambda: {"preview": here()})
+        return answer["preview"]
+
+    async def _ask(self, payload: dict, here) -> dict:
+        """Send one job to the worker and wait for its answer (``here()`` computes it in a
+        thread when no worker process can run)."""
         loop = asyncio.get_running_loop()
         async with self.lock:
             await self._settle()
             self.start()
             if self.proc is None:                        # no subprocess here: a thread
-                values: dict[str, str] = {}
-                extra: dict = {}
-                d = await loop.run_in_executor(None, diagnostics_json, text, path, solve, uri,
-                                               values, extra)
-                self.values[uri] = values
-                if extra:
-                    self.facts[uri] = extra
-                return d
+                return await loop.run_in_executor(None, here)
             self.seq += 1
             job = self.seq
             fut = loop.create_future()
             self.waiting[job] = (self.proc, fut)
             started = time.monotonic()
             self.inflight = (job, started, fut)
-            data = (json.dumps({"id": job, "text": text, "path": path, "uri": uri,
-                                "solve": solve}) + "\n").encode()
+            data = (json.dumps({"id": job, **payload}) + "\n").encode()
             try:
                 await loop.run_in_executor(None, _write, self.proc, data)
                 answer = await asyncio.wait_for(asyncio.shield(fut), self.TIMEOUT)
@@ -232,14 +220,14 @@ class Analyzer:
                 self.kill()
                 raise EOFError("the analysis worker exited") from None
             self.inflight = None
+            if answer.get("retire"):                     # it gave its memory back by exiting
+                self.restarts += 1
+                self.kill()
             if self._proc0 is None and self.SPARE and self.editing:
                 self._proc0 = spawn()        # a warm spare, once the document is being edited
         if "error" in answer:
             raise RuntimeError(answer["error"])
-        self.values[uri] = answer.get("values") or {}
-        if answer.get("facts"):                  # a program that does not solve keeps the
-            self.facts[uri] = answer["facts"]    # last solved hints (no flicker while typing)
-        return answer["diagnostics"]
+        return answer
 
 
 def _write(proc: subprocess.Popen, data: bytes) -> None:
@@ -255,6 +243,3 @@ def _settle_future(fut: asyncio.Future, result, exc) -> None:
     else:
         fut.set_result(result)
 
-
-if __name__ == "__main__":
-    sys.exit(_serve())

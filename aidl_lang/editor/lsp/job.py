@@ -1,0 +1,98 @@
+"""The analysis worker process (``python -m aidl_lang.editor.lsp.job``, started by
+:func:`.worker.spawn`): one JSON job per line on stdin, one answer per line on stdout.
+
+A job is the diagnostics of a document (``{"id", "text", "path", "uri", "solve"}``,
+:func:`.worker.diagnostics_json`) or, with ``"kind": "preview"``, its ``aidl/preview``
+picture (:func:`.preview.preview`).  Both compile here, not in the language server: the
+server can stop a stale or runaway job by killing this process, the process's address space
+is limited (:data:`MEMORY_LIMIT`: a program that needs more is an error, not a server of
+gigabytes), and a worker that still holds more than :data:`RETIRE_RSS` after a job answers
+with ``"retire": true`` and exits, so the memory goes back to the system and the next job
+starts a fresh worker.
+"""
+from __future__ import annotations
+
+import json
+import sys
+import threading
+import time
+
+from .preview import preview
+from .worker import diagnostics_json
+
+# four previews of large strings took the server to 3.9 GB, kept after the documents closed
+MEMORY_LIMIT = 3 << 30
+RETIRE_RSS = 768 << 20
+
+
+def _serve() -> int:
+    """The worker's loop: read a job per line, answer per line, until stdin closes."""
+    import os
+
+    parent = os.getppid()
+
+    def watch():                      # end with the server, even in the middle of a job
+        while True:
+            time.sleep(2)
+            if os.getppid() != parent:
+                os._exit(0)
+    threading.Thread(target=watch, daemon=True).start()
+    _limit_memory()
+    out, sys.stdout = sys.stdout, sys.stderr       # nothing but answers on the real stdout
+    diagnostics_json("solid warm {\n    c = Circle(center=(0, 0), radius=1)\n}\n", "warm.aidl",
+                     values={}, extra={})
+    for line in sys.stdin:
+        job = None
+        try:
+            job = json.loads(line)
+            if job.get("kind") == "preview":       # aidl/preview: compiled here, not in the server
+                answer = {"id": job["id"], "preview": preview(
+                    job["text"], job["path"], job["uri"], job.get("version"), job.get("values"),
+                    assembled=job.get("assembled") is True)}
+            else:
+                values: dict[str, str] = {}
+                extra: dict = {}
+                diags = diagnostics_json(job["text"], job["path"], job.get("solve", True),
+                                         job.get("uri"), values, extra)
+                answer = {"id": job["id"], "diagnostics": diags, "values": values,
+                          "facts": extra}
+        except MemoryError:
+            answer = {"id": job.get("id") if isinstance(job, dict) else None,
+                      "error": "MemoryError: the program needs more memory than the editor's "
+                               f"analysis may use ({MEMORY_LIMIT >> 20} MB)"}
+        except Exception as e:        # answered, never a dead worker
+            answer = {"id": job.get("id") if isinstance(job, dict) else None,
+                      "error": f"{type(e).__name__}: {e}"}
+        retire = _rss() > RETIRE_RSS
+        if retire:                    # give the memory back: a fresh worker takes over
+            answer["retire"] = True
+        out.write(json.dumps(answer) + "\n")
+        out.flush()
+        if retire:
+            return 0
+    return 0
+
+
+def _limit_memory() -> None:
+    try:
+        import resource
+        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+        cap = MEMORY_LIMIT if hard == resource.RLIM_INFINITY else min(MEMORY_LIMIT, hard)
+        if soft == resource.RLIM_INFINITY or soft > cap:
+            resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    except (ImportError, ValueError, OSError):      # not on this platform
+        pass
+
+
+def _rss() -> int:
+    """The worker's resident memory in bytes (0 where /proc is missing)."""
+    try:
+        import os
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
+if __name__ == "__main__":
+    sys.exit(_serve())
