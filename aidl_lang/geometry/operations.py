@@ -103,7 +103,9 @@ class _Cloner:
             new.name = g.name
         self.geoms[g] = new
         new.points = {n: self.point(p, dest) for n, p in g.points.items()}
-        if g.kind == "Arc" and self.flip:      # a mirror turns counter-clockwise into clockwise
+        if g.kind in ("Arc", "ArcSlot") and self.flip:
+            # a mirror turns counter-clockwise into clockwise: the copy runs counter-clockwise
+            # from the image of the original's end to the image of its start
             new.points["start"], new.points["end"] = new.points["end"], new.points["start"]
         m = self.ctx.model
         for n, s in g.scalars.items():
@@ -114,6 +116,10 @@ class _Cloner:
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
+        if "angles" in g.data:               # ArcSlot: counter-clockwise from a1 by sweep
+            a1, sweep = g.data["angles"]
+            new.data["angles"] = ((2 * self.line_angle - a1 - sweep) if self.flip else
+                                  a1 + (self.rot or 0.0), sweep)
         if "edges" in g.data:
             new.data["edges"] = [self.geom(e, dest) for e in g.data["edges"]]
         if "sources" in g.data:              # Offset, Shell, Hull: made from the copies
@@ -362,6 +368,9 @@ def _placing_points(ctx, g) -> list:
     """The points that place shape ``g`` given its own implicit constraints: one for a shape
     whose form is held (a Circle, a Rectangle by size, a rigid Polygon, ...), the two ends
     of a bar or of a Rectangle by corners, else every point (no redundant rows)."""
+    if "sources" in g.data and not g.points:
+        # Offset, Inset, Shell, Hull: placed by the shapes they are made from
+        return [p for src in g.data["sources"] for p in _placing_points(ctx, src)]
     P = g.points
     free = ctx.model.free
     if g.kind in _HELD_SHAPES or g.data.get("rigid") or (

@@ -262,8 +262,9 @@ class Renderer:
             cs, sn = math.cos(rot), math.sin(rot)
             return _polygon(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
         if k == "ArcSlot":
-            c = self._pt(g.points["center"])
-            a1, sweep = g.data["angles"]
+            # the solved start (a copy's is turned or mirrored with it), counter-clockwise
+            c, s = self._pt(g.points["center"]), self._pt(g.points["start"])
+            a1, sweep = math.atan2(s[1] - c[1], s[0] - c[0]), g.data["angles"][1]
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
         if k == "Hull":
