@@ -342,6 +342,8 @@ class Calls:
             if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
                 return v
             raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Circle or Arc, got {type_name(v)}", span)
+        if typ == "centered":
+            return self._centered(v, span, fname, aname)
         if typ == "curve":
             if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Circle", "Arc"):
                 return v
@@ -359,6 +361,39 @@ class Calls:
                             f"geometry, got {type_name(v)}", span,
                             hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")
         return v
+
+    def _centered(self, v, span, fname: str, aname: str):
+        """An argument of type ``centered`` (Concentric): a shape with a ``center`` member or
+        a point; a structure or a shape without one is E0108 with a hint that names the
+        member to use (a template instance: its first circle, `gear.hub`)."""
+        if isinstance(v, PV):
+            return v
+        if isinstance(v, (tuple, list)):
+            return self._to_point(v, span)
+        if isinstance(v, GeomRef):
+            if v.geom.kind == "Point":
+                return geom_member(v.geom, "p", self.struct)
+            entry = lookup(v.geom.kind)
+            if entry is not None and "center" in entry.members:
+                return v
+        hint = "name a shape with a center (a Circle, an ArcSlot, ...) or a point"
+        if isinstance(v, StructRef):
+            own = [(n, x.geom) for n, x in v.struct.scope.items()
+                   if isinstance(x, GeomRef) and x.geom.owner is v.struct
+                   and "center" in getattr(lookup(x.geom.kind), "members", {})]
+            own.sort(key=lambda ng: (ng[1].kind != "Circle", ng[1].construction))
+            if own:
+                n, g = own[0]
+                hint = (f"a structure has no center of its own: name its shape, "
+                        f"`{v.struct.name}.{n}` (a {g.kind}), or the point "
+                        f"`{v.struct.name}.{n}.center`")
+            else:
+                hint = "a structure has no center of its own: name a shape in it"
+        elif isinstance(v, GeomRef):
+            hint = (f"a {v.geom.kind} has no center member; name a point "
+                    f"(`{v.geom.name or 'shape'}.bb.center`, a point of it) or a shape with a center")
+        raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a shape with a center "
+                        f"or a point, got {type_name(v)}", span, hint=hint)
 
     # ------------------------------------------------------------------ functions
     def _function(self, nm: str, node: A.Call):
