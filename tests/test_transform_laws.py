@@ -288,3 +288,132 @@ def test_rotation_argument_turns_the_shape(kind, turn):
     r1 = _compile(_program(src.replace("rotation=", f"rotation={turn} deg + "), ""))
     _same(_loops(r1, ["s"])["s"], _region(_loops(r0, ["s"])["s"], _rotation(turn, 12, 5)),
           f"{kind} rotation + {turn}")
+
+
+# ------------------------------------------------------------------ curves, marks, text
+def _curve_points(r, g) -> list:
+    """Points along an open curve's exact segment (a Point: itself), start to end."""
+    if g.kind == "Point":
+        return [cen_xy(r, g.points["p"] if "p" in g.points else next(iter(g.points.values())))]
+    seg = Renderer(r.compiled.model).segment(g)
+    if isinstance(seg, Line):
+        return [seg.start, seg.end]
+    assert isinstance(seg, Arc) and seg.sweep > 0, f"{g.name}: an Arc runs counter-clockwise"
+    n = max(4, round(seg.sweep / ARC_STEP))
+    return [seg.at(seg.start_angle + seg.sweep * i / n) for i in range(n + 1)]
+
+
+def cen_xy(r, p):
+    x = r.compiled.model.x
+    return float(x[p.ix]), float(x[p.iy])
+
+
+def _same_curve(got, ref, flip: bool, what: str):
+    """The moved curve: the same points (a mirrored arc runs from the image of the end to
+    the image of the start: counter-clockwise again), every one within 1e-9 mm."""
+    assert len(got) == len(ref), what
+    pts = [tuple(p) for p in ref]
+    if flip:
+        pts = pts[::-1]
+    for (gx, gy), (rx, ry) in zip(got, pts):
+        assert math.hypot(gx - rx, gy - ry) <= 1e-9, f"{what}: {(gx, gy)} != {(rx, ry)}"
+
+
+@pytest.mark.parametrize("kind", sorted(CURVES))
+@LAWS
+@given(line=MIRROR_LINES, turn=st.sampled_from([90, 45, -72]))
+def test_curves_and_points_are_moved_exactly(kind, line, turn):
+    ops = (_line_through(*line) + "    m = Mirrored(s, about=axis)\n"
+           f"    p = CircularPattern(s, count=2, center=(-4, 6), step={turn} deg)\n"
+           "    q = LinearPattern(s, 2, (21, 13))\n")
+    r = _compile(f"units mm\ndrawing a {{\n    {CURVES[kind]}\n{ops}}}\n")
+    G = _geoms(r)
+    orig = _curve_points(r, G["s"])
+    for name, m, flip in [("m", _reflection(*line), kind == "Arc"),
+                          ("p[1]", _rotation(turn, -4, 6), False),
+                          ("q[1]", _translation(21, 13), False)]:
+        ref = [affinity.affine_transform(Point(p), m).coords[0] for p in orig]
+        _same_curve(_curve_points(r, G[name]), ref, flip, f"{kind} {name} ({line}, {turn})")
+
+
+def _strokes(r, source: str) -> list:
+    return [[s.start for s in st.segments] + [st.segments[-1].end]
+            for st in r.output.engrave if st.source == source]
+
+
+@LAWS
+@given(turn=st.sampled_from([90, 45, -72, 150]), step=st.sampled_from([(3, 40), (-25, 9)]))
+def test_text_is_moved_exactly(turn, step):
+    """Text under CircularPattern and LinearPattern: every pen stroke moved."""
+    r = _compile(f"units mm\ndrawing d {{\n    {TEXT}\n"
+                 f"    p = CircularPattern(s, count=3, center=(-4, 6), step={turn} deg)\n"
+                 f"    q = LinearPattern(s, 2, ({step[0]}, {step[1]}))\n}}\n")
+    orig = _strokes(r, "d.s")
+    assert len(orig) >= 7
+    for name, m in [("d.p[1]", _rotation(turn, -4, 6)), ("d.p[2]", _rotation(2 * turn, -4, 6)),
+                    ("d.q[1]", _translation(*step))]:
+        got = _strokes(r, name)
+        assert len(got) == len(orig), name
+        for g, o in zip(got, orig):
+            ref = [affinity.affine_transform(Point(p), m).coords[0] for p in o]
+            _same_curve(g, ref, False, f"Text {name}")
+
+
+def test_mirrored_text_is_refused_where_it_is_written():
+    r = aidl_lang.compile(source=f"units mm\ndrawing d {{\n    {TEXT}\n"
+                          "    axis = Line(start=(0, 0), end=(0, 1), construction=true)\n"
+                          "    m = Mirrored(s, about=axis)\n}\n")
+    (d,) = r.errors
+    assert "cannot mirror Text" in d.message and d.span.line == 5
+
+
+# ------------------------------------------------------------------ structures, templates
+TEMPLATES = {
+    # a solid with a hole, made of several kinds, its outline filleted after the booleans
+    "filleted plate": ("def plate() -> solid {\n"
+                       "    body = Polygon(points=[(0, 0), (30, 0), (30, 12), (12, 20), (0, 16)])\n"
+                       "    ear = ArcSlot(center=(30, 6), radius=5, start_angle=-80 deg, "
+                       "end_angle=70 deg, width=3)\n"
+                       "    hole h { c = Slot(center=(10, 7), length=9, width=3, rotation=25 deg) }\n"
+                       "    Fillet(radius=1.5)\n}\n", "plate()"),
+    # corners chosen by point: they move with the copy
+    "chosen corners": ("def plate() -> solid {\n"
+                       "    body = Polygon(points=[(0, 0), (30, 0), (30, 12), (12, 20), (0, 16)])\n"
+                       "    Fillet(at=body.points[2], radius=4)\n"
+                       "    Chamfer(at=[body.points[0], body.points[3]], distance=2)\n}\n",
+                       "plate()"),
+    "spur gear": ("", "gears.spur_gear(teeth=9, module=2 mm, bore=4 mm, phase=7 deg, "
+                      "cx=11 mm, cy=4 mm)"),
+}
+
+
+def _parts(r) -> dict:
+    return {p.name: p.loops for p in r.output.parts}
+
+
+@pytest.mark.parametrize("what", sorted(TEMPLATES))
+@LAWS
+@given(line=MIRROR_LINES, turn=st.sampled_from([90, 33, -120]))
+def test_structure_copies_are_the_moved_part(what, line, turn):
+    """Mirrored and CircularPattern of a template instance (a solid with a hole and a
+    Fillet; the stdlib spur gear): the copy's final part, after its booleans and fillets, is
+    the original part moved."""
+    defs, call = TEMPLATES[what]
+    src = (f'units mm\nimport "std/gears.aidl" as gears\n{defs}assembly kit {{\n'
+           f"    a = {call}\n" + _line_through(*line) + "    b = Mirrored(a, about=axis)\n"
+           f"    p = CircularPattern(a, count=2, center=(-60, 50), step={turn} deg)\n}}\n")
+    P = _parts(_compile(src))
+    for name, m in [("kit.b", _reflection(*line)), ("kit.p[1]", _rotation(turn, -60, 50))]:
+        _same(P[name], _region(P["kit.a"], m), f"{what} {name} ({line}, {turn})")
+
+
+@LAWS
+@given(phase=st.sampled_from([13, 90, -47.5]))
+def test_spur_gear_at_a_phase_is_the_turned_gear(phase):
+    """A template instantiated at a rotation: spur_gear(phase=...) is the gear at phase 0
+    turned about its center."""
+    gear = "gears.spur_gear(teeth=11, module=1.5 mm, bore=5 mm, cx=20 mm, cy=-6 mm, phase={} deg)"
+    src = (f'units mm\nimport "std/gears.aidl" as gears\nassembly kit {{\n'
+           f"    a = {gear.format(0)}\n    b = {gear.format(phase)}\n}}\n")
+    P = _parts(_compile(src))
+    _same(P["kit.b"], _region(P["kit.a"], _rotation(phase, 20, -6)), f"gear phase {phase}")

@@ -142,6 +142,16 @@ class _Cloner:
         for n, ch in s.children.items():
             self.struct(ch, c, n)
         c.scope = {k: self.remap(v) for k, v in s.scope.items()}
+        if getattr(s, "finish", None):
+            # the copy's outline is filleted (chamfered) as the original's: corners chosen
+            # with `at` (absolute coordinates) move with it
+            fx, fy = self.frame.frame_offset(None)
+
+            def moved(px, py):
+                X, Y = self.xf(px - fx, py - fy)
+                return X + fx, Y + fy
+            c.finish = [(kind, r, None if at is None else [moved(px, py) for px, py in at])
+                        for kind, r, at in s.finish]
         return c
 
     def remap(self, v):
