@@ -394,6 +394,13 @@ TEMPLATES = {
                        "    Fillet(at=body.points[2], radius=4)\n"
                        "    Chamfer(at=[body.points[0], body.points[3]], distance=2)\n}\n",
                        "plate()"),
+    # an outline chained from lines, an arc and an open spline
+    "curve outline": ("def dee() -> solid {\n"
+                      "    bottom = Line(start=(0, 0), end=(20, 0))\n"
+                      "    cap = Arc(center=(20, 8), start=(20, 0), end=(20, 16))\n"
+                      "    top = Line(start=(20, 16), end=(0, 16))\n"
+                      "    side = Spline(points=[(0, 16), (-3, 10), (2, 5), (0, 0)])\n}\n",
+                      "dee()"),
     "spur gear": ("", "gears.spur_gear(teeth=9, module=2 mm, bore=4 mm, phase=7 deg, "
                       "cx=11 mm, cy=4 mm)"),
 }
@@ -429,3 +436,20 @@ def test_spur_gear_at_a_phase_is_the_turned_gear(phase):
            f"    a = {gear.format(0)}\n    b = {gear.format(phase)}\n}}\n")
     P = _parts(_compile(src))
     _same(P["kit.b"], _region(P["kit.a"], _rotation(phase, 20, -6)), f"gear phase {phase}")
+
+
+@pytest.mark.parametrize("kind", sorted(SHAPES))
+def test_mirror_about_a_solved_line(kind):
+    """The mirror line is solved (drawn nearly horizontal, made vertical by a constraint):
+    the copy is the mirror image about the solved line, and a pattern of the copy is it
+    turned (an Ellipse keeps only an angle: it must follow the line as solved)."""
+    ops = ("    axis = Line(start=(-2, 0), end=(10, 1), construction=true)\n    Vertical(axis)\n"
+           "    m = Mirrored(s, about=axis)\n"
+           "    p = CircularPattern(m, count=2, center=(-4, 6), step=50 deg)\n")
+    r = _compile(_program(SHAPES[kind], ops))
+    (sx, sy), (ex, ey) = r.value("a.axis.start").mm, r.value("a.axis.end").mm
+    assert abs(sx - ex) < 1e-9 and abs(sy - ey) > 0.5
+    L = _loops(r, ["s", "m", "p[1]"])
+    mirror = _reflection(90, sx, sy)
+    _same(L["m"], _region(L["s"], mirror), f"{kind} m about the solved line")
+    _same(L["p[1]"], _region(L["m"], _rotation(50, -4, 6)), f"{kind} p[1]")

@@ -65,8 +65,10 @@ def _reflect(a: PV, b: PV):
 
 # ------------------------------------------------------------------ cloning
 class _Cloner:
-    def __init__(self, ctx, frame: Structure, xf, rot, flip: bool, line_angle: float = 0.0):
+    def __init__(self, ctx, frame: Structure, xf, rot, flip: bool, line_angle: float = 0.0,
+                 line=None):
         self.ctx, self.frame, self.xf, self.flip = ctx, frame, xf, flip
+        self.line = line                # a mirror's line: its ends (PV), in `frame`
         self.rot = rot
         self.line_angle = line_angle
         self.points: dict = {}
@@ -116,6 +118,12 @@ class _Cloner:
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
+            if g.kind == "Ellipse" and self.flip and self.line is not None:
+                # the angle follows the mirror line as solved (bbox.held_rotation)
+                new.data["mirror"] = (self.line[0], self.line[1], r)
+            elif "mirror" in g.data:     # a turned copy of a mirrored Ellipse
+                a, b, r0 = g.data["mirror"]
+                new.data["mirror"] = (a, b, r0 - (self.rot or 0.0))
         if "angles" in g.data:               # ArcSlot: counter-clockwise from a1 by sweep
             a1, sweep = g.data["angles"]
             new.data["angles"] = ((2 * self.line_angle - a1 - sweep) if self.flip else
@@ -165,9 +173,9 @@ class _Cloner:
 
 
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
-          indexed: bool = False):
+          indexed: bool = False, line=None):
     S = ctx.struct
-    cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
+    cl = _Cloner(ctx, S, xf, rot, flip, line_angle, line)
     if isinstance(target, StructRef):
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)
@@ -251,7 +259,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         a, b = member(line, "start", S), member(line, "end", S)
         ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
         xf, rot, flip = _reflect(a, b)
-        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang)
+        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang, line=(a, b))
     if kind == "GridPattern":
         return _grid(ctx, target, args, name)
     if kind == "CornerPattern":

@@ -255,7 +255,8 @@ class Renderer:
             rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
             if rx <= 0 or ry <= 0:
                 return None
-            c, rot = self.P(g.points["center"]), g.data.get("rotation", 0.0)
+            from ..geometry.bbox import held_rotation
+            c, rot = self.P(g.points["center"]), held_rotation(g, self.x)
             n = segments_for(max(rx, ry))     # sagitta of a parameter step <= that of radius a
             t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
             u, v = rx * np.cos(t), ry * np.sin(t)
