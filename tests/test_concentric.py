@@ -67,3 +67,31 @@ def test_concentric_with_a_shape_without_center():
            "    c = Circle(center=(0, 0), radius=1)\n    Concentric(c, s)\n}\n")
     (d,) = aidl_lang.compile(source=src).errors
     assert d.code == "E0108" and d.span.line == 5 and "Spline has no center" in d.hint
+
+
+@pytest.mark.parametrize("call, col, name, kind", [
+    ("Coincident(s, (3, 4))", 5, "s", "an ArcSlot"),
+    ("Distance(c, t, 20)", 5, "t", "a Star"),
+    ("Symmetric(t, s, about=axis)", 5, "t", "a Star"),
+    ("At(s, (1, 2))", 8, "s", "an ArcSlot"),
+])
+def test_point_constraints_name_the_center_member(call, col, name, kind):
+    """The other point constraints take points: given a shape with a center, the located
+    error's hint names the member to use."""
+    src = ("units mm\nsolid a {\n"
+           "    s = ArcSlot(center=(5, 5), radius=8, start_angle=0, end_angle=90, width=2)\n"
+           "    t = Star(center=(30, 5), points=5, outer_radius=6, inner_radius=2.5)\n"
+           "    c = Circle(center=(-10, 0), radius=2)\n"
+           "    axis = Line(start=(15, -20), end=(15, 20), construction=true)\n"
+           f"    {call}\n}}\n")
+    (d,) = aidl_lang.compile(source=src).errors
+    assert d.code == "E0108" and (d.span.line, d.span.col) == (7, col)
+    assert f"`{name}` is {kind}: name its point, `{name}.center`" in d.hint
+
+
+def test_named_center_member_is_then_accepted():
+    src = ("units mm\nsolid a {\n"
+           "    s = ArcSlot(center=(5, 5), radius=8, start_angle=0, end_angle=90, width=2)\n"
+           "    Coincident(s.center, (3, 4))\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok and r.value("a.s.center").mm == pytest.approx((3, 4), abs=1e-9)

@@ -31,6 +31,20 @@ DERIVED = ("Offset", "Inset", "Shell", "Hull")
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
 
+def _center_hint(values, otherwise: str) -> str:
+    """The hint of a point or curve constraint given a shape with a center that it does not
+    take (an ArcSlot, a Star, ...): name the member to use, `s.center`; else ``otherwise``."""
+    for v in values:
+        if isinstance(v, GeomRef) and v.geom.kind not in ("Circle", "Arc", "Line", "Point"):
+            entry = lookup(v.geom.kind)
+            if entry is not None and "center" in entry.members:
+                nm = v.geom.name or "shape"
+                an = "an" if v.geom.kind[0] in "AEIOU" else "a"
+                return (f"`{nm}` is {an} {v.geom.kind}: name its point, `{nm}.center`, or another "
+                        f"point of it; {otherwise}")
+    return otherwise
+
+
 class Calls:
     def _callee(self, f):
         if type(f) is A.Name:
@@ -129,7 +143,8 @@ class Calls:
         try:
             eqs = BUILDERS[canonical(nm)](self, **conv)
         except ConstraintError as ex:
-            raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+            raise EvalError("E0108", str(ex), node.span,
+                            hint=_center_hint(conv.values(), entry.signature()))
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(canonical(nm), eqs, node.span, None, owners)
@@ -259,7 +274,8 @@ class Calls:
             x, y = self._as_length(v[0], span), self._as_length(v[1], span)
             return PV(x, y, None, owners_in(v))
         raise EvalError("E0108", f"expected a point, got {type_name(v)}", span,
-                        hint="write a point as `(x, y)` or refer to one, e.g. `rect.top_left`")
+                        hint=_center_hint([v], "write a point as `(x, y)` or refer to one, "
+                                               "e.g. `rect.top_left`"))
 
     def _as_length(self, q: Q, span):
         if q.dim == LEN:
