@@ -19,10 +19,11 @@ from angle 0 after its center was moved (comparing the exact curve's parameters)
 from __future__ import annotations
 
 import math
+import os
 
 import pytest
 import shapely
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from shapely import affinity
 from shapely.geometry import Point, Polygon
@@ -40,7 +41,8 @@ ARC_STEP = 2 * math.pi / 2048
 CIRCLE_N = 4096
 SPAN_N = 64
 
-LAWS = settings(max_examples=3, deadline=None, derandomize=True, database=None,
+# AIDL_LAW_EXAMPLES=30 for a longer search (CI: 3 each, derandomized: the same every run)
+LAWS = settings(max_examples=int(os.environ.get("AIDL_LAW_EXAMPLES", "3")), deadline=None, derandomize=True, database=None,
                 suppress_health_check=[HealthCheck.too_slow])
 
 # every closed kind: the statements that make `s` (helpers may be named `h*`), placed away
@@ -227,7 +229,8 @@ def _line_through(deg, px, py):
 
 
 MIRROR_LINES = st.sampled_from([(0, 0, 0), (90, 0, 0), (30, 0, 0), (0, 0, -7.5), (90, 31, 0),
-                                (30, 4, -3), (-60, 2.5, 20), (135, -3, 1)])
+                                (30, 4, -3), (-60, 2.5, 20), (135, -3, 1)]) | st.tuples(
+    st.integers(-179, 180), st.integers(-30, 30), st.integers(-30, 30))
 
 
 @pytest.mark.parametrize("kind", sorted(SHAPES))
@@ -259,6 +262,7 @@ def test_copies_are_the_moved_original(kind, line, turn, step):
 @pytest.mark.parametrize("kind", sorted(SHAPES))
 @LAWS
 @given(corner=st.sampled_from([(40, 30), (-35, 12)]), start=st.sampled_from([0, 35, -90]))
+@example(corner=(40, 30), start=0)        # a Hull placed at (40, 30) did not solve (E0401)
 def test_corner_pattern_and_start_angle(kind, corner, start):
     """CornerPattern (the original is moved to the first corner by a constraint, copies
     follow) and a CircularPattern with start_angle (every instance turned)."""

@@ -487,6 +487,10 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
             ox, oy = su * ux + sv * vx, su * uy + sv * vy
             pts.append(PV(p.x + inset * ox, p.y + inset * oy, None, p.owners))
     ref = None
+    if isinstance(target, GeomRef) and len(target.geom.data.get("sources", ())) > 1:
+        # a Hull of several shapes is placed as one body: its shapes move together (else
+        # placing its box's center would pull its extreme shapes apart)
+        _rigid(ctx, [target])
     if isinstance(target, GeomRef):
         from .primitives import member
         ref = member(target.geom, "center", S)
