@@ -457,3 +457,20 @@ def test_mirror_about_a_solved_line(kind):
     mirror = _reflection(90, sx, sy)
     _same(L["m"], _region(L["s"], mirror), f"{kind} m about the solved line")
     _same(L["p[1]"], _region(L["m"], _rotation(50, -4, 6)), f"{kind} p[1]")
+
+
+def test_issue_36_cup_is_symmetric():
+    """The issue's reproducer: the mirrored ArcSlot handle bulges left, so the cup is its own
+    mirror image about x = 0, with two handle openings (before the fix only the end caps
+    of the copy showed: one opening, not symmetric)."""
+    r = _compile("units mm\nsolid cup {\n"
+                 "    body = Rectangle(center=(0, 0), width=40, height=40)\n"
+                 "    axis = Line(start=(0, -30), end=(0, 30), construction=true)\n"
+                 "    grip = ArcSlot(center=(20, 0), radius=16, start_angle=-90, end_angle=90, "
+                 "width=6)\n    other = Mirrored(grip, about=axis)\n}\n")
+    (part,) = r.output.parts
+    _same(part.loops, _region(part.loops, _reflection(90, 0, 0)), "cup")
+    region, signs = _region(part.loops)
+    assert sum(a < 0 for a in signs) == 2
+    # two handles: each the ArcSlot's half outside the body (x > 20 or x < -20)
+    assert region.bounds == pytest.approx((-39, -20, 39, 20), abs=1e-6)
