@@ -272,8 +272,7 @@ _DEFS = {
     "Collinear": _c([A("a", "geometry"), A("b", "geometry"), A("c", "point", None)],
                     doc="Two lines lie on one infinite line, or three points lie on one line."),
     "Concentric": _c([A("a", "centered"), A("b", "centered")],
-                     doc="Two shapes share their center (circles, arcs, ArcSlot, Ellipse, "
-                         "RegularPolygon, Star, Slot, rectangles; or a point)."),
+                     doc="Shapes with a center (or points) share it."),
     "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
                 doc="The angle from line a to line b; the sense (cw/ccw) nearest the starting "
                     "geometry is used."),

@@ -76,16 +76,26 @@ SHAPES = {
             "width=1)\n"
             "    s = Hull(shapes=[h1, h2, h3])",
 }
+# kinds of the `shapes` branch (issue 36 section 3), covered once they are in the registry
+SHAPES.update({k: v for k, v in {
+    "Sector": "s = Sector(center=(12, 5), radius=8, start_angle=-30 deg, end_angle=100 deg, "
+              "inner_radius=3)",
+    "Stroke": "h = Polyline(points=[(8, 1), (17, 2), (15, 6), (19, 9)])\n"
+              "    s = Stroke(h, width=2)",
+}.items() if k in ENTRIES})
 # bounding boxes that are not the shape's own, in the original too: an inset's is its
 # shape's, a Hull's and a Shell's their sources' (grown), a RoundedRectangle's its corners',
 # an Ellipse's outline is chords (issue 36 section 2, branch `exact`)
-BB_APPROX = {"Inset", "Shell", "Hull", "Offset", "RoundedRectangle", "Ellipse"}
+BB_APPROX = {"Inset", "Shell", "Hull", "Offset", "RoundedRectangle", "Ellipse", "Stroke"}
 # open curves and marks: the law on their exact curve (points along it), not on an area
 CURVES = {
     "Point": "s = Point(12, 5)",
     "Line": "s = Line(start=(9, 2), end=(17, 7))",
     "Arc": "s = Arc(center=(12, 5), radius=5, start_angle=-20 deg, end_angle=130 deg)",
 }
+CURVES.update({k: v for k, v in {
+    "Polyline": "s = Polyline(points=[(8, 1), (17, 2), (15, 6), (19, 9)])",
+}.items() if k in ENTRIES})
 # engraving: text under patterns and moves; a mirror is refused (test below)
 TEXT = 's = Text("AIDL 36", position=(12, 5), size=4, rotation=10 deg)'
 
@@ -311,6 +321,9 @@ def _curve_points(r, g) -> list:
     """Points along an open curve's exact segment (a Point: itself), start to end."""
     if g.kind == "Point":
         return [cen_xy(r, g.points["p"] if "p" in g.points else next(iter(g.points.values())))]
+    if g.kind == "Polyline":
+        from aidl_lang.geometry.primitives import points_of
+        return [cen_xy(r, p) for p in points_of(g)]
     seg = Renderer(r.compiled.model).segment(g)
     if isinstance(seg, Line):
         return [seg.start, seg.end]
