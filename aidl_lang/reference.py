@@ -42,6 +42,8 @@ KIND_TEXT = {
     "string": "text in double quotes",
     "line": "a line: a Line, or a line member (`rect.top`, `slot.spine`)",
     "circular": "a Circle or an Arc",
+    "centered": "a shape with a center (Circle, Arc, ArcSlot, Ellipse, RegularPolygon, Star, "
+                "Slot, Rectangle, ...), or a point",
     "curve": "a Line, Circle or Arc",
     "geometry": "a shape, or a point or line member",
     "boxed": "a structure or a shape (anything with a `.bb`)",
@@ -107,6 +109,7 @@ def units_line(pairs) -> str:
              "angle": "angles (degrees, or e.g. `1 rad`)", "number": "plain numbers",
              "point": "points `(x, y)`", "points": "point lists", "bool": "true/false",
              "string": "text", "line": "lines", "circular": "circles or arcs",
+             "centered": "shapes with a center, or points",
              "curve": "lines, circles or arcs", "geometry": "shapes or points",
              "boxed": "structures or shapes", "any": "values"}
     out = [f"{heads.get(k, k)}: {', '.join(v)}" for k, v in groups.items()]

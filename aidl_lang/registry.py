@@ -5,7 +5,8 @@ defaults, a one-line doc, and a category.  The checker, the interpreter, ``aidl 
 docs all read this table.  Adding a synonym is one line in :data:`SYNONYMS`.
 
 Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string``, ``points``
-(list of points), ``line``, ``circular`` (Circle or Arc), ``curve`` (Line, Circle or Arc),
+(list of points), ``line``, ``circular`` (Circle or Arc), ``centered`` (a shape with a
+``center`` member, or a point), ``curve`` (Line, Circle or Arc),
 ``geometry``, ``boxed`` (anything with a bounding box: geometry or structure), ``any``.
 """
 from __future__ import annotations
@@ -295,8 +296,8 @@ _DEFS = {
                    doc="The point lies on the circle or the arc's circle."),
     "Collinear": _c([A("a", "geometry"), A("b", "geometry"), A("c", "point", None)],
                     doc="Two lines lie on one infinite line, or three points lie on one line."),
-    "Concentric": _c([A("a", "circular"), A("b", "circular")],
-                     doc="Two circles/arcs share their center."),
+    "Concentric": _c([A("a", "centered"), A("b", "centered")],
+                     doc="Shapes with a center (or points) share it."),
     "Angle": _c([A("a", "line"), A("b", "line"), A("angle", "angle")],
                 doc="The angle from line a to line b; the sense (cw/ccw) nearest the starting "
                     "geometry is used."),

@@ -260,7 +260,8 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
     if k == "Ellipse":
         cx, cy = P["center"]
         rx, ry = var(g.scalars["rx"].index), var(g.scalars["ry"].index)
-        cs, sn = math.cos(g.data.get("rotation", 0.0)), math.sin(g.data.get("rotation", 0.0))
+        rot = held_rotation(g, x)
+        cs, sn = math.cos(rot), math.sin(rot)
         ex = func("sqrt", rx * rx * (cs * cs) + ry * ry * (sn * sn))
         ey = func("sqrt", rx * rx * (sn * sn) + ry * ry * (cs * cs))
         xs += [cx - ex, cx + ex]
@@ -319,6 +320,20 @@ def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
                 (xs if axis == 0 else ys).append(Lin(terms, const))
 
 
+def held_rotation(g: Geometry, x) -> float:
+    """The held ``rotation`` (radians) of shape ``g`` at the values ``x``.  A mirrored copy of
+    an Ellipse has only its center and this angle, so its rotation follows its mirror line
+    as solved (``g.data["mirror"]``: the line's ends (points) and the angle mirrored),
+    not the line's starting direction."""
+    m = g.data.get("mirror")
+    if m is None:
+        return g.data.get("rotation", 0.0)
+    a, b, r = m
+    dx = float(evaluate(b.x, x)) - float(evaluate(a.x, x))
+    dy = float(evaluate(b.y, x)) - float(evaluate(a.y, x))
+    return 2 * math.atan2(dy, dx) - r
+
+
 def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, float, float] | None:
     """(left, right, bottom, top) at values ``x``; None if the target holds no geometry."""
     xs, ys = candidates(target, frame, x, set(exclude))
@@ -330,4 +345,4 @@ def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, fl
 
 
 __all__ = ["BBTerm", "SIDES", "contains_bbox", "collect", "expand", "exclusions",
-           "side_expr", "numeric_box"]
+           "side_expr", "numeric_box", "held_rotation"]

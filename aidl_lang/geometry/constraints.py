@@ -380,9 +380,19 @@ def collinear(ctx, a, b, c=None, **_):
                           f"got {type_name(a)} and {type_name(b)}")
 
 
+def _center_of(ctx, v, name: str) -> PV:
+    """The center of a shape with a ``center`` member (Circle, Arc, ArcSlot, Ellipse, Star,
+    RegularPolygon, Slot, rectangles, ...), or a point itself."""
+    if isinstance(v, PV):
+        return v
+    if isinstance(v, GeomRef):
+        return member(v.geom, "center", ctx.struct)
+    raise ConstraintError(f"`{name}` must be a shape with a center or a point, "
+                          f"got {type_name(v)}")
+
+
 def concentric(ctx, a, b, **_):
-    c1, _ = _circ(ctx, a, "a")
-    c2, _ = _circ(ctx, b, "b")
+    c1, c2 = _center_of(ctx, a, "a"), _center_of(ctx, b, "b")
     return [Equation(c1.x - c2.x), Equation(c1.y - c2.y)]
 
 

@@ -65,8 +65,10 @@ def _reflect(a: PV, b: PV):
 
 # ------------------------------------------------------------------ cloning
 class _Cloner:
-    def __init__(self, ctx, frame: Structure, xf, rot, flip: bool, line_angle: float = 0.0):
+    def __init__(self, ctx, frame: Structure, xf, rot, flip: bool, line_angle: float = 0.0,
+                 line=None):
         self.ctx, self.frame, self.xf, self.flip = ctx, frame, xf, flip
+        self.line = line                # a mirror's line: its ends (PV), in `frame`
         self.rot = rot
         self.line_angle = line_angle
         self.points: dict = {}
@@ -103,7 +105,9 @@ class _Cloner:
             new.name = g.name
         self.geoms[g] = new
         new.points = {n: self.point(p, dest) for n, p in g.points.items()}
-        if g.kind == "Arc" and self.flip:      # a mirror turns counter-clockwise into clockwise
+        if g.kind in ("Arc", "ArcSlot") and self.flip:
+            # a mirror turns counter-clockwise into clockwise: the copy runs counter-clockwise
+            # from the image of the original's end to the image of its start
             new.points["start"], new.points["end"] = new.points["end"], new.points["start"]
         m = self.ctx.model
         for n, s in g.scalars.items():
@@ -114,6 +118,16 @@ class _Cloner:
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
+            if g.kind == "Ellipse" and self.flip and self.line is not None:
+                # the angle follows the mirror line as solved (bbox.held_rotation)
+                new.data["mirror"] = (self.line[0], self.line[1], r)
+            elif "mirror" in g.data:     # a turned copy of a mirrored Ellipse
+                a, b, r0 = g.data["mirror"]
+                new.data["mirror"] = (a, b, r0 - (self.rot or 0.0))
+        if "angles" in g.data:               # ArcSlot: counter-clockwise from a1 by sweep
+            a1, sweep = g.data["angles"]
+            new.data["angles"] = ((2 * self.line_angle - a1 - sweep) if self.flip else
+                                  a1 + (self.rot or 0.0), sweep)
         if "edges" in g.data:
             new.data["edges"] = [self.geom(e, dest) for e in g.data["edges"]]
         if "sources" in g.data:              # Offset, Shell, Hull: made from the copies
@@ -141,6 +155,16 @@ class _Cloner:
         for n, ch in s.children.items():
             self.struct(ch, c, n)
         c.scope = {k: self.remap(v) for k, v in s.scope.items()}
+        if getattr(s, "finish", None):
+            # the copy's outline is filleted (chamfered) as the original's: corners chosen
+            # with `at` (absolute coordinates) move with it
+            fx, fy = self.frame.frame_offset(None)
+
+            def moved(px, py):
+                X, Y = self.xf(px - fx, py - fy)
+                return X + fx, Y + fy
+            c.finish = [(kind, r, None if at is None else [moved(px, py) for px, py in at])
+                        for kind, r, at in s.finish]
         return c
 
     def remap(self, v):
@@ -154,9 +178,9 @@ class _Cloner:
 
 
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
-          indexed: bool = False):
+          indexed: bool = False, line=None):
     S = ctx.struct
-    cl = _Cloner(ctx, S, xf, rot, flip, line_angle)
+    cl = _Cloner(ctx, S, xf, rot, flip, line_angle, line)
     if isinstance(target, StructRef):
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)
@@ -240,7 +264,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         a, b = member(line, "start", S), member(line, "end", S)
         ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
         xf, rot, flip = _reflect(a, b)
-        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang)
+        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang, line=(a, b))
     if kind == "GridPattern":
         return _grid(ctx, target, args, name)
     if kind == "CornerPattern":
@@ -367,6 +391,9 @@ def _placing_points(ctx, g) -> list:
     """The points that place shape ``g`` given its own implicit constraints: one for a shape
     whose form is held (a Circle, a Rectangle by size, a rigid Polygon, ...), the two ends
     of a bar or of a Rectangle by corners, else every point (no redundant rows)."""
+    if "sources" in g.data and not g.points:
+        # Offset, Inset, Shell, Hull: placed by the shapes they are made from
+        return [p for src in g.data["sources"] for p in _placing_points(ctx, src)]
     P = g.points
     free = ctx.model.free
     if g.kind in _HELD_SHAPES or g.data.get("rigid") or (
@@ -465,6 +492,10 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
             ox, oy = su * ux + sv * vx, su * uy + sv * vy
             pts.append(PV(p.x + inset * ox, p.y + inset * oy, None, p.owners))
     ref = None
+    if isinstance(target, GeomRef) and len(target.geom.data.get("sources", ())) > 1:
+        # a Hull of several shapes is placed as one body: its shapes move together (else
+        # placing its box's center would pull its extreme shapes apart)
+        _rigid(ctx, [target])
     if isinstance(target, GeomRef):
         from .primitives import member
         ref = member(target.geom, "center", S)

@@ -31,6 +31,20 @@ DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke")
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
 
+def _center_hint(values, otherwise: str) -> str:
+    """The hint of a point or curve constraint given a shape with a center that it does not
+    take (an ArcSlot, a Star, ...): name the member to use, `s.center`; else ``otherwise``."""
+    for v in values:
+        if isinstance(v, GeomRef) and v.geom.kind not in ("Circle", "Arc", "Line", "Point"):
+            entry = lookup(v.geom.kind)
+            if entry is not None and "center" in entry.members:
+                nm = v.geom.name or "shape"
+                an = "an" if v.geom.kind[0] in "AEIOU" else "a"
+                return (f"`{nm}` is {an} {v.geom.kind}: name its point, `{nm}.center`, or another "
+                        f"point of it; {otherwise}")
+    return otherwise
+
+
 class Calls:
     def _callee(self, f):
         if type(f) is A.Name:
@@ -131,7 +145,8 @@ class Calls:
         try:
             eqs = BUILDERS[canonical(nm)](self, **conv)
         except ConstraintError as ex:
-            raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+            raise EvalError("E0108", str(ex), node.span,
+                            hint=_center_hint(conv.values(), entry.signature()))
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(canonical(nm), eqs, node.span, None, owners)
@@ -331,7 +346,8 @@ class Calls:
             x, y = self._as_length(v[0], span), self._as_length(v[1], span)
             return PV(x, y, None, owners_in(v))
         raise EvalError("E0108", f"expected a point, got {type_name(v)}", span,
-                        hint="write a point as `(x, y)` or refer to one, e.g. `rect.top_left`")
+                        hint=_center_hint([v], "write a point as `(x, y)` or refer to one, "
+                                               "e.g. `rect.top_left`"))
 
     def _as_length(self, q: Q, span):
         if q.dim == LEN:
@@ -414,6 +430,8 @@ class Calls:
             if isinstance(v, GeomRef) and v.geom.kind in ("Circle", "Arc"):
                 return v
             raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a Circle or Arc, got {type_name(v)}", span)
+        if typ == "centered":
+            return self._centered(v, span, fname, aname)
         if typ == "curve":
             if isinstance(v, GeomRef) and v.geom.kind in ("Line", "Circle", "Arc"):
                 return v
@@ -431,6 +449,39 @@ class Calls:
                             f"geometry, got {type_name(v)}", span,
                             hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")
         return v
+
+    def _centered(self, v, span, fname: str, aname: str):
+        """An argument of type ``centered`` (Concentric): a shape with a ``center`` member or
+        a point; a structure or a shape without one is E0108 with a hint that names the
+        member to use (a template instance: its first circle, `gear.hub`)."""
+        if isinstance(v, PV):
+            return v
+        if isinstance(v, (tuple, list)):
+            return self._to_point(v, span)
+        if isinstance(v, GeomRef):
+            if v.geom.kind == "Point":
+                return geom_member(v.geom, "p", self.struct)
+            entry = lookup(v.geom.kind)
+            if entry is not None and "center" in entry.members:
+                return v
+        hint = "name a shape with a center (a Circle, an ArcSlot, ...) or a point"
+        if isinstance(v, StructRef):
+            own = [(n, x.geom) for n, x in v.struct.scope.items()
+                   if isinstance(x, GeomRef) and x.geom.owner is v.struct
+                   and "center" in getattr(lookup(x.geom.kind), "members", {})]
+            own.sort(key=lambda ng: (ng[1].kind != "Circle", ng[1].construction))
+            if own:
+                n, g = own[0]
+                hint = (f"a structure has no center of its own: name its shape, "
+                        f"`{v.struct.name}.{n}` (a {g.kind}), or the point "
+                        f"`{v.struct.name}.{n}.center`")
+            else:
+                hint = "a structure has no center of its own: name a shape in it"
+        elif isinstance(v, GeomRef):
+            hint = (f"a {v.geom.kind} has no center member; name a point "
+                    f"(`{v.geom.name or 'shape'}.bb.center`, a point of it) or a shape with a center")
+        raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a shape with a center "
+                        f"or a point, got {type_name(v)}", span, hint=hint)
 
     # ------------------------------------------------------------------ functions
     def _function(self, nm: str, node: A.Call):

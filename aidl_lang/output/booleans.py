@@ -272,15 +272,17 @@ class Renderer:
             rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
             if rx <= 0 or ry <= 0:
                 return None
-            c, rot = self.P(g.points["center"]), g.data.get("rotation", 0.0)
+            from ..geometry.bbox import held_rotation
+            c, rot = self.P(g.points["center"]), held_rotation(g, self.x)
             n = segments_for(max(rx, ry))     # sagitta of a parameter step <= that of radius a
             t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
             u, v = rx * np.cos(t), ry * np.sin(t)
             cs, sn = math.cos(rot), math.sin(rot)
             return _polygon(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
         if k == "ArcSlot":
-            c = self._pt(g.points["center"])
-            a1, sweep = g.data["angles"]
+            # the solved start (a copy's is turned or mirrored with it), counter-clockwise
+            c, s = self._pt(g.points["center"]), self._pt(g.points["start"])
+            a1, sweep = math.atan2(s[1] - c[1], s[0] - c[0]), g.data["angles"][1]
             d = g.data["dims"]
             return Loop(arc_slot_outline(c, d["radius"], d["width"] / 2, a1, sweep))
         if k == "Sector":
