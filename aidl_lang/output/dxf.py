@@ -3,8 +3,8 @@
 What laser, waterjet and CNC software imports: a DXF R2010 file in millimetres (header
 ``$INSUNITS`` = 4, ``$MEASUREMENT`` = 1).  Each closed outline loop is a ``CIRCLE`` when it is
 a circle and otherwise a closed ``LWPOLYLINE`` whose arcs are bulges (bulge = tan(sweep / 4);
-arcs over 180 degrees are split in two).  Engraving (drawings, text strokes, unclosed curves)
-is written so that a laser runs each stroke in one go: a closed stroke is a closed
+one bulge per arc, a half circle or 359 degrees alike, up to :data:`MAX_BULGE_SWEEP`).
+Engraving (drawings, text strokes, unclosed curves) is written so that a laser runs each stroke in one go: a closed stroke is a closed
 ``LWPOLYLINE``; an open stroke whose segments are chained (each starting where the one before
 ends, within :data:`CHAIN_TOL`) is ONE open ``LWPOLYLINE`` with bulges; a lone line, arc or
 circle is a ``LINE``, ``ARC`` or ``CIRCLE`` (a stroke with gaps is cut into its chains).
@@ -16,7 +16,7 @@ Bézier piece, control points to the last bit), each line as a ``LINE`` and each
 ``ARC``, ends meeting exactly, so CAM software joins them into one contour.
 
 The header's ``$EXTMIN`` / ``$EXTMAX`` are the drawing's exact extent
-(:func:`~.extent.extent`, z = 0).
+(:func:`~.extent.extent`, z = 0), also when a corner is at the origin (a cutting sheet).
 
 Layers: ``CUT`` (red) for the outlines of a single part, ``ENGRAVE`` (blue) for engraving; in an
 assembly with several parts, each part's outlines are on their own layer ``CUT-<part>``
@@ -33,6 +33,11 @@ from .part import Arc, Circle, Line, Output, PartOutline, Spline
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
 _BAD = '<>/\\":;?*|=`'
+# radians: the largest sweep written as one bulge.  A reader finds an arc's centre from its
+# chord and bulge; near a whole turn the chord shrinks like (2 pi - sweep) * r, and the
+# centre's error grows like 1e-16 * |coordinates| / (2 pi - sweep): 1e-3 rad short of a turn
+# keeps it below 1e-9 mm up to 10 m.  A half circle, or 359 degrees, is one arc.
+MAX_BULGE_SWEEP = 2 * math.pi - 1e-3
 
 
 def layer_of(part: PartOutline, output: Output) -> str:
@@ -57,14 +62,15 @@ def _chains(segments) -> list[list]:
 
 
 def _bulge_points(segments, closed: bool = True):
-    """(x, y, bulge) vertices of a chain of lines and arcs (bulge = tan(sweep / 4), arcs over
-    180 degrees split in two); an open chain ends with its last segment's end point."""
+    """(x, y, bulge) vertices of a chain of lines and arcs (bulge = tan(sweep / 4)): each arc
+    one vertex, up to :data:`MAX_BULGE_SWEEP`; an arc closer to a whole turn is split in two
+    halves.  An open chain ends with its last segment's end point."""
     pts = []
     for s in segments:
         if isinstance(s, Line):
             pts.append((s.start[0], s.start[1], 0.0))
         else:
-            k = 1 if abs(s.sweep) <= math.pi else 2
+            k = 1 if abs(s.sweep) <= MAX_BULGE_SWEEP else 2
             for i in range(k):
                 part = Arc(s.center, s.radius, s.start_angle + s.sweep * i / k, s.sweep / k)
                 x, y = part.start
@@ -102,7 +108,12 @@ def to_dxf_document(output: Output):
     doc.layers.add(ENGRAVE, color=5)
     msp = doc.modelspace()
     x0, y0, x1, y1 = extent(output)
-    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))   # ezdxf copies them to $EXTMIN/$EXTMAX
+    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
+    # ezdxf copies the modelspace's extents to the header only when neither corner is the
+    # point (0, 0, 0), which it takes for "unset": a drawing cornered at the origin (every
+    # cutting sheet) kept +-1e20; set them here, and ezdxf leaves them (or rewrites the same)
+    doc.header["$EXTMIN"] = (x0, y0, 0.0)
+    doc.header["$EXTMAX"] = (x1, y1, 0.0)
     for p in output.parts:
         layer = layer_of(p, output)
         if layer not in doc.layers:
