@@ -217,3 +217,193 @@ def test_dxf_an_arc_short_of_a_whole_turn_is_one_bulge(sweep, a0, r):
     tol = DXF_TOL * max(1.0, r / 10)
     assert math.dist(c, (7.0, -3.0)) <= tol and abs(rr - r) <= tol
     assert abs(sw - sweep) <= 1e-9
+
+
+# ------------------------------------------------------------------ the exact ellipse
+def _ellipses(doc):
+    """(center, major axis vector, ratio, start, end) of every ELLIPSE entity."""
+    return [(tuple(e.dxf.center)[:2], tuple(e.dxf.major_axis)[:2], e.dxf.ratio,
+             e.dxf.start_param, e.dxf.end_param) for e in doc.modelspace().query("ELLIPSE")]
+
+
+def _design(cx, cy, rx, ry, rot):
+    """The design's ellipse in DXF's canonical terms: major axis vector and ratio."""
+    if rx < ry:
+        rx, ry, rot = ry, rx, rot + math.pi / 2
+    return (cx, cy), (rx * math.cos(rot), rx * math.sin(rot)), ry / rx
+
+
+def _same_axis(a, b, tol):
+    """Major axis vectors equal up to sign (an ellipse's axis points either way)."""
+    return math.dist(a, b) <= tol or math.dist(a, (-b[0], -b[1])) <= tol
+
+
+def _on_ellipse(p, c, rx, ry, rot) -> float:
+    """The distance-like error of ``p`` from the ellipse: |implicit| * min semi-axis / 2."""
+    x, y = p[0] - c[0], p[1] - c[1]
+    u = x * math.cos(rot) + y * math.sin(rot)
+    v = -x * math.sin(rot) + y * math.cos(rot)
+    return abs((u / rx) ** 2 + (v / ry) ** 2 - 1) * min(rx, ry) / 2
+
+
+@given(cx=st.floats(-50, 50), cy=st.floats(-50, 50), rx=st.floats(1, 30), ry=st.floats(1, 30),
+       rot=st.floats(-180, 180))
+@settings(max_examples=15, deadline=None)
+def test_an_elliptical_hole_is_one_dxf_ellipse_and_svg_elliptical_arcs(cx, cy, rx, ry, rot):
+    """A plate with an elliptical hole: the DXF holds one ELLIPSE whose centre, major axis,
+    ratio and parameters are the design's to 1e-9; the SVG's elliptical arcs, re-read by
+    svgelements, lie on the design's ellipse to 3e-9 mm; the area is exact."""
+    from aidl_lang.output import build
+    from aidl_lang.pipeline import compile_source
+    if abs(rx - ry) < 1e-6:
+        ry = rx + 0.5
+    src = f"""
+solid p {{
+    body = Rectangle(center=({cx!r}, {cy!r}), width={2 * max(rx, ry) + 10!r}, height={2 * max(rx, ry) + 10!r})
+    hole h {{ e = Ellipse(center=({cx!r}, {cy!r}), rx={rx!r}, ry={ry!r}, rotation={rot!r} deg) }}
+}}
+"""
+    c = compile_source(src, "t.aidl")
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    o = build(c.drawing, "p")
+    side = 2 * max(rx, ry) + 10
+    assert o.area == pytest.approx(side * side - math.pi * rx * ry, abs=1e-9 * side * side)
+    (el,) = _ellipses(dxf_doc(o))
+    center, axis, ratio = _design(cx, cy, rx, ry, math.radians(rot))
+    assert math.dist(el[0], center) <= DXF_TOL
+    assert _same_axis(el[1], axis, DXF_TOL * max(rx, ry))
+    assert abs(el[2] - ratio) <= 1e-12
+    assert (el[3], el[4]) == pytest.approx((0, 2 * math.pi), abs=1e-12)
+    import svgelements as se
+    segs, model = svg_segments(svg_of(o))
+    arcs = [s for s in segs if isinstance(s, se.Arc) and abs(s.rx - s.ry) > 1e-6]
+    assert len(arcs) == 4
+    for a in arcs:
+        assert sorted((a.rx, a.ry)) == pytest.approx(sorted((rx, ry)), abs=SVG_TOL)
+        for t in (0.0, 0.3, 0.5, 0.9, 1.0):
+            assert _on_ellipse(model(a.point(t)), (cx, cy), rx, ry, math.radians(rot)) <= 3 * SVG_TOL
+
+
+def test_a_union_and_a_cut_keep_exact_elliptical_arcs(compile_text):
+    """A rectangle with an elliptical lobe added on its right edge and an ellipse cut out of
+    its left edge: each is one ELLIPSE piece between the exact crossings (x = +-20, y = +-5
+    where the ellipses meet the edges), the lines end there."""
+    o = output(compile_text, """
+solid p {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    lobe = Ellipse(center=(20, 0), rx=8, ry=5)
+    hole bite { e = Ellipse(center=(-20, 0), rx=5, ry=10, rotation=90 deg) }
+}
+""")
+    doc = dxf_doc(o)
+    els = sorted(_ellipses(doc))
+    assert len(els) == 2
+    bite, lobe = els
+    # the lobe: x = 20 + 8 cos t, y = 5 sin t, from t = -pi/2 to pi/2 (ccw)
+    assert math.dist(lobe[0], (20, 0)) <= DXF_TOL and _same_axis(lobe[1], (8, 0), DXF_TOL)
+    assert lobe[2] == pytest.approx(5 / 8, abs=1e-15)
+    assert (lobe[3] % (2 * math.pi), lobe[4] % (2 * math.pi)) == \
+        pytest.approx((1.5 * math.pi, 0.5 * math.pi), abs=1e-9)
+    # the bite: rx 5 along 90 deg = major axis 10 along x, ratio 0.5; half of it inside
+    assert math.dist(bite[0], (-20, 0)) <= DXF_TOL and _same_axis(bite[1], (10, 0), DXF_TOL)
+    assert bite[2] == pytest.approx(0.5, abs=1e-15)
+    assert abs((bite[4] - bite[3]) - math.pi) <= 1e-9
+    ends = set()
+    for e in doc.modelspace().query("ELLIPSE"):
+        for p in (e.start_point, e.end_point):
+            ends.add((round(p.x, 9), round(p.y, 9)))
+    assert ends == {(20.0, 5.0), (20.0, -5.0), (-20.0, 5.0), (-20.0, -5.0)}
+    assert o.area == pytest.approx(1200 + math.pi * 8 * 5 / 2 - math.pi * 10 * 5 / 2, abs=1e-9)
+
+
+def test_an_ellipse_crossing_a_circle_meets_it_on_both_curves(compile_text):
+    o = output(compile_text, """
+solid p {
+    e = Ellipse(center=(0, 0), rx=20, ry=8, rotation=25 deg)
+    c = Circle(center=(15, 9), radius=6)
+}
+""")
+    (part,) = o.parts
+    (lp,) = part.loops
+    from aidl_lang.output.part import Arc, EllipticArc
+    kinds = sorted(type(s).__name__ for s in lp.segments)
+    assert kinds == ["Arc", "EllipticArc"]
+    for s in lp.segments:
+        for p in (s.start, s.end):
+            assert _on_ellipse(p, (0, 0), 20, 8, math.radians(25)) <= 1e-12
+            assert abs(math.dist(p, (15, 9)) - 6) <= 1e-9
+    assert isinstance(lp.segments[0], (Arc, EllipticArc))
+
+
+def test_offset_hull_and_fillet_of_an_ellipse_are_located_refusals(compile_text):
+    for body, code, at, words in (
+            ("e = Ellipse(center=(0, 0), rx=20, ry=10)\n    o = Offset(e, 2)", "E0108", 4,
+             "offset of an ellipse is no ellipse"),
+            ("e = Ellipse(center=(0, 0), rx=20, ry=10)\n    h = Hull(e, Circle((40, 0), 3))",
+             "E0108", 4, "Hull of an Ellipse"),
+            ("r = Rectangle(center=(0, 0), width=40, height=20)\n"
+             "    e = Ellipse(center=(20, 0), rx=10, ry=6)\n    Fillet(2)", "E0407", 4,
+             "where an Ellipse meets")):
+        c = compile_text(f"units mm\nsolid p {{\n    {body}\n}}\n")
+        errs = [d for d in c.sink.items if d.severity == "error"] \
+            if hasattr(c.sink.items[0], "severity") else c.sink.items
+        assert [d.code for d in errs] == [code], [(d.code, d.message) for d in c.sink.items]
+        assert words in errs[0].message
+        assert errs[0].span.line == at
+
+
+def test_an_ellipse_is_an_ellipse_in_step(compile_text, tmp_path):
+    pytest.importorskip("OCP")
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GeomAbs import GeomAbs_Ellipse
+    from OCP.GProp import GProp_GProps
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    from aidl_lang.output import Options, encode
+    o = output(compile_text, """
+solid p {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    lobe = Ellipse(center=(20, 0), rx=8, ry=5)
+    hole h { e = Ellipse(center=(-5, 0), rx=6, ry=3, rotation=30 deg) }
+}
+""")
+    f = tmp_path / "p.step"
+    f.write_bytes(encode(o, ".step", Options(thickness=2.0)))
+    r = STEPControl_Reader()
+    r.ReadFile(str(f))
+    r.TransferRoots()
+    shape = r.OneShape()
+    props = GProp_GProps()
+    BRepGProp.VolumeProperties_s(shape, props)
+    area = 1200 + math.pi * 8 * 5 / 2 - math.pi * 6 * 3
+    assert props.Mass() == pytest.approx(2 * area, rel=1e-9)
+    ex = TopExp_Explorer(shape, TopAbs_EDGE)
+    radii = set()
+    while ex.More():
+        c = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
+        if c.GetType() == GeomAbs_Ellipse:
+            el = c.Ellipse()
+            radii.add((round(el.MajorRadius(), 9), round(el.MinorRadius(), 9)))
+        ex.Next()
+    assert radii == {(8.0, 5.0), (6.0, 3.0)}
+
+
+def test_a_mirrored_ellipse_is_the_reflected_curve(compile_text):
+    o = output(compile_text, """
+solid p {
+    axis = Line((0, -30), (0, 30), construction=true)
+    Fixed(axis)
+    e = Ellipse(center=(15, 5), rx=10, ry=4, rotation=30 deg)
+    m = Mirrored(e, about=axis)
+}
+""")
+    els = sorted(_ellipses(dxf_doc(o)))
+    assert len(els) == 2
+    left, right = els
+    assert math.dist(left[0], (-15, 5)) <= DXF_TOL and math.dist(right[0], (15, 5)) <= DXF_TOL
+    a = math.radians(30)
+    assert _same_axis(right[1], (10 * math.cos(a), 10 * math.sin(a)), DXF_TOL)
+    assert _same_axis(left[1], (-10 * math.cos(a), 10 * math.sin(a)), DXF_TOL)

@@ -9,8 +9,10 @@ Engraving (drawings, text strokes, unclosed curves) is written so that a laser r
 ends, within :data:`CHAIN_TOL`) is ONE open ``LWPOLYLINE`` with bulges; a lone line, arc or
 circle is a ``LINE``, ``ARC`` or ``CIRCLE`` (a stroke with gaps is cut into its chains).
 
-A loop or stroke that holds a spline cannot be one ``LWPOLYLINE`` (it has no cubic segments):
-it is written segment by segment, each spline piece as a ``SPLINE`` entity (degree 3,
+A loop or stroke that holds a spline or an ellipse cannot be one ``LWPOLYLINE`` (it has no
+cubic or elliptical segments): it is written segment by segment, each elliptical arc as an
+``ELLIPSE`` entity (centre, major axis, ratio, start and end parameter), each spline piece as
+a ``SPLINE`` entity (degree 3,
 clamped, its knots the chord-length parameters with triple interior knots: every span one
 Bézier piece, control points to the last bit), each line as a ``LINE`` and each arc as an
 ``ARC``, ends meeting exactly, so CAM software joins them into one contour.
@@ -28,7 +30,7 @@ import io
 import math
 
 from .extent import extent
-from .part import Arc, Circle, Line, Output, PartOutline, Spline
+from .part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
@@ -84,7 +86,9 @@ def _bulge_points(segments, closed: bool = True):
 def _pieces(msp, segments, att) -> None:
     """Each segment of a chain holding a spline as its own entity (see the module docstring)."""
     for s in segments:
-        if isinstance(s, Spline):
+        if isinstance(s, EllipticArc):
+            _ellipse(msp, s, att)
+        elif isinstance(s, Spline):
             deg, knots, ctrl = s.bspline()
             msp.add_open_spline([(x, y, 0.0) for x, y in ctrl], degree=deg, knots=knots,
                                 dxfattribs=att)
@@ -95,6 +99,27 @@ def _pieces(msp, segments, att) -> None:
         else:
             a, b = (s.start_angle, s.end_angle) if s.sweep > 0 else (s.end_angle, s.start_angle)
             msp.add_arc(s.center, s.radius, math.degrees(a), math.degrees(b), dxfattribs=att)
+
+
+def _ellipse(msp, s: EllipticArc, att) -> None:
+    """An ``ELLIPSE`` entity: centre, major axis (the vector to the end of the major
+    semi-axis), ratio ry / rx, and the parameters (eccentric anomaly, radians) it runs
+    counter-clockwise between; a whole ellipse 0 to 2 pi."""
+    e = s.curve
+    axis = (e.rx * math.cos(e.rotation), e.rx * math.sin(e.rotation), 0.0)
+    if s.whole:
+        a, b = 0.0, 2 * math.pi
+    else:
+        a, b = (s.start_param, s.end_param) if s.sweep > 0 else (s.end_param, s.start_param)
+        k = math.floor(a / (2 * math.pi))
+        a, b = a - 2 * math.pi * k, b - 2 * math.pi * k
+    msp.add_ellipse((e.center[0], e.center[1], 0.0), axis, e.ry / e.rx, a, b,
+                    dxfattribs=att)
+
+
+def _exploded(segs) -> bool:
+    """A chain that cannot be one ``LWPOLYLINE``: it holds a spline or an ellipse."""
+    return any(isinstance(g, (Spline, EllipticArc)) for g in segs)
 
 
 def to_dxf_document(output: Output):
@@ -123,14 +148,14 @@ def to_dxf_document(output: Output):
             if len(segs) == 1 and isinstance(segs[0], Circle):
                 msp.add_circle(segs[0].center, segs[0].radius, dxfattribs={"layer": layer})
                 continue
-            if any(isinstance(g, Spline) for g in segs):
+            if _exploded(segs):
                 _pieces(msp, segs, {"layer": layer})
                 continue
             msp.add_lwpolyline(_bulge_points(segs), format="xyb", close=True,
                                dxfattribs={"layer": layer})
     for st in output.engrave:
         att = {"layer": ENGRAVE}
-        if any(isinstance(g, Spline) for g in st.segments):
+        if _exploded(st.segments):
             _pieces(msp, st.segments, att)
             continue
         if st.closed and not (len(st.segments) == 1 and isinstance(st.segments[0], Circle)):

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from .extent import extent
-from .part import Arc, Circle, Line, Loop, Output, OutputError, Spline, build
+from .part import Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline, build
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
@@ -75,6 +75,19 @@ def _arc_cmd(a: Arc) -> str:
                    for k in range(n))
 
 
+def _ellipse_cmd(s: EllipticArc) -> str:
+    """SVG ``A rx ry rotation`` commands of an elliptical arc: equal pieces of at most a
+    quarter turn of its parameter (as :func:`_arc_cmd`), the rotation in degrees, y flipped."""
+    e = s.curve
+    rx, ry = _f(e.rx), _f(e.ry)
+    rot = _f(-math.degrees(e.rotation))
+    sweep_flag = 0 if s.sweep > 0 else 1
+    n = max(1, math.ceil(abs(s.sweep) / (math.pi / 2) - 1e-9))
+    step = s.sweep / n
+    return "".join(f"A{rx},{ry} {rot} 0 {sweep_flag} {_pt(e.at(s.start_param + (k + 1) * step))}"
+                   for k in range(n))
+
+
 def segments_d(segments, closed: bool) -> str:
     """Path data of a chain of exact segments (a Circle as four quarter arcs): one subpath per
     run of segments each starting within :data:`CHAIN_TOL` (mm) of the previous
@@ -92,7 +105,8 @@ def segments_d(segments, closed: bool) -> str:
         if isinstance(s, Spline):         # each span one cubic Bézier: the curve itself
             out += [f"C{_pt10(b[1])} {_pt10(b[2])} {_pt10(b[3])}" for b in s.spans]
         else:
-            out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
+            out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else
+                       _ellipse_cmd(s) if isinstance(s, EllipticArc) else _arc_cmd(s))
         here = s.end
     if closed and segments and not isinstance(segments[-1], Circle):
         out.append("Z")
