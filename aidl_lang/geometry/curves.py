@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
-    cross_line as _e_line, cross_spline as _e_spline
+    cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
 
 Point = tuple[float, float]
 
@@ -604,7 +604,9 @@ def spline_between(s: Spline, p: Point, q: Point) -> Spline:
 
 
 def _closest(a, b, near):
-    if a[0] in ("S", "E") or b[0] in ("S", "E"):
+    if a[0] == "E" or b[0] == "E":
+        return _approach(a, b, near)
+    if a[0] == "S" or b[0] == "S":
         return foot(a, near)
     if a[0] == "C" and b[0] == "C" and math.hypot(a[1] - b[1], a[2] - b[2]) > 1e-15:
         return foot(a, (b[1], b[2])) if math.hypot(a[1] - b[1], a[2] - b[2]) > a[3] else \
@@ -614,6 +616,24 @@ def _closest(a, b, near):
     if a[0] == "C" and b[0] == "L":
         return foot(a, foot(b, (a[1], a[2])))
     return foot(a, near)
+
+
+def _approach(a, b, near) -> Point:
+    """Where carriers ``a`` and ``b`` (one an ellipse) that do not meet come closest near
+    ``near``: the middle of the ellipse's point where the other's equation is extreme and the
+    foot of that point on the other, the same point
+    whichever is ``a``, so a sliver the chords made between two curves a hair apart closes
+    on one point (as two circles' closest approach does) and is dropped."""
+    if a[0] != "E" or (b[0] == "E" and (b[1].center, b[1].rx, b[1].ry, b[1].rotation) <
+                       (a[1].center, a[1].rx, a[1].ry, a[1].rotation)):
+        a, b = b, a                      # the same point whichever order they come in
+    if b[0] == "S":
+        p = foot(a, near)
+        q = foot(b, p)
+    else:
+        p = _e_nearest(a[1], b, near)
+        q = foot(b, p)
+    return ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
 
 
 def _line_line(a, b):

@@ -25,6 +25,7 @@ import numpy as np
 Point = tuple[float, float]
 
 TOUCH = 1e-5        # relative distance below which two crossings are one touch (curves.TANGENT)
+NEAR = 1e-10        # relative gap (the equations are scaled as distances) that still touches
 
 
 @dataclass(frozen=True)
@@ -221,8 +222,40 @@ def _roots(e: EllipseCurve, g, scale: float) -> list[Point]:
                 t -= step
                 if abs(step) < 1e-16:
                     break
+            if abs(_eval(c, t)) > NEAR * scale:      # curves apart there: no crossing
+                continue
         out.append(e.at(t))
     return out
+
+
+def _implicit(other: tuple):
+    """The equation of carrier ``other`` (``("L", ...)``, ``("C", ...)``, ``("E", curve)``),
+    scaled as a distance near the curve (as :func:`_roots` takes it)."""
+    if other[0] == "L":
+        _, px, py, ux, uy = other
+        return lambda q: ux * (q[1] - py) - uy * (q[0] - px)
+    if other[0] == "C":
+        _, cx, cy, r = other
+        return lambda q: ((q[0] - cx) ** 2 + (q[1] - cy) ** 2 - r * r) / max(r, 1e-300)
+    f = other[1]
+    return lambda q: f.implicit(q) * f.ry
+
+
+def nearest_approach(e: EllipseCurve, other: tuple, near: Point) -> Point:
+    """The point of ``e`` where the equation of carrier ``other`` (a line, circle or
+    ellipse that does not meet ``e``) is extreme along ``e`` nearest to ``near``: where the
+    two come closest there (Newton on the derivative of the trigonometric polynomial)."""
+    c = _trig(e, _implicit(other))
+    t = e.foot(near)
+    for _ in range(60):
+        d2 = _eval(c, t, 2)
+        if d2 == 0:
+            break
+        step = max(-0.1, min(0.1, _eval(c, t, 1) / d2))
+        t -= step
+        if abs(step) < 1e-15:
+            break
+    return e.at(t)
 
 
 def cross_line(e: EllipseCurve, px, py, ux, uy) -> list[Point]:

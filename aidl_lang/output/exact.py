@@ -216,23 +216,7 @@ class Provenance:
         cid = self._match(P, scale) if cid is None else cid.copy()
         runs = _runs(cid, self.carriers, scale)
         if runs is None:                    # the whole loop on one carrier
-            k = int(cid[0])
-            c = self.carriers[k] if k >= 0 else None
-            if c is not None and c[0] == "C":
-                total = _sweep_sum(P, c, 0, n - 1)
-                if abs(abs(total) - 2 * math.pi) < 1e-6:
-                    return Loop([Circle((c[1], c[2]), c[3], total > 0)])
-            if c is not None and c[0] == "E":
-                total = _sweep_sum(_unit(P, c[1]), ("C", 0.0, 0.0, 1.0), 0, n - 1)
-                if abs(abs(total) - 2 * math.pi) < 1e-6:
-                    return Loop([EllipticArc(c[1], 0.0, math.copysign(2 * math.pi, total))])
-            if c is not None and c[0] == "S":       # closed, or open with meeting ends
-                whole = Spline(c[1], 0.0, float(c[1].n))
-                if _shoelace(P) * whole.area_term < 0:
-                    whole = Spline(c[1], float(c[1].n), 0.0)
-                return Loop([whole])
-            # every edge on one line, or on part of one circle: no area in exact geometry
-            return _polyline(P) if c is None else Loop([])
+            return self._whole(P, int(cid[0]))
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
         joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
                  for j in range(len(runs))]
@@ -245,11 +229,22 @@ class Provenance:
                     if c[0] == "E" else _sweep_sum(P, c, first, last)
             return sweeps[key]
         explained = all(k >= 0 for k, _, _ in runs)
-        runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
-        if len(runs) < 2:
+        kept, kjoins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
+        if len(kept) < 2:
             # the exact curves close on nothing: a sliver the chords made (two curves that
-            # touch, cut by their chords), left out; what no chord explains stays a polyline
-            return Loop([]) if explained else _polyline(P)
+            # touch, cut by their chords), left out; or one closed curve that another one,
+            # inside it and a hair away (or touching it), crossed only in chords: that curve
+            # whole; what no chord explains stays a polyline
+            if not explained:
+                return _polyline(P)
+            if kept or runs:
+                big = max(runs, key=lambda r: r[2] - r[1])[0]
+                whole = self._whole(P, big)
+                if whole.segments and abs(whole.area - _shoelace(P)) <= \
+                        0.01 * abs(_shoelace(P)) + 1e-9:
+                    return whole
+            return Loop([])
+        runs, joins = kept, kjoins
         segs = []
         m = len(runs)
         for j, (k, first, last) in enumerate(runs):
@@ -268,6 +263,28 @@ class Provenance:
             else:
                 segs.append(_arc(c, a, b, approx(c, first, last)))
         return Loop(simplify(segs, scale))
+
+    def _whole(self, P, k: int) -> Loop:
+        """The loop of polygon ``P`` whose every edge is on carrier ``k``: the whole circle,
+        ellipse or closed spline (the polygon's way round); nothing for a line or part of a
+        circle (no area in exact geometry), a polyline for no carrier (-1)."""
+        n = len(P)
+        c = self.carriers[k] if k >= 0 else None
+        if c is not None and c[0] == "C":
+            total = _sweep_sum(P, c, 0, n - 1)
+            if abs(abs(total) - 2 * math.pi) < 1e-6:
+                return Loop([Circle((c[1], c[2]), c[3], total > 0)])
+        if c is not None and c[0] == "E":
+            total = _sweep_sum(_unit(P, c[1]), ("C", 0.0, 0.0, 1.0), 0, n - 1)
+            if abs(abs(total) - 2 * math.pi) < 1e-6:
+                return Loop([EllipticArc(c[1], 0.0, math.copysign(2 * math.pi, total))])
+        if c is not None and c[0] == "S":       # closed, or open with meeting ends
+            whole = Spline(c[1], 0.0, float(c[1].n))
+            if _shoelace(P) * whole.area_term < 0:
+                whole = Spline(c[1], float(c[1].n), 0.0)
+            return Loop([whole])
+        # every edge on one line, or on part of one circle: no area in exact geometry
+        return _polyline(P) if c is None else Loop([])
 
     def _join(self, ka: int, kb: int, v, scale: float):
         """The exact vertex where carrier ``ka``'s run ends and ``kb``'s begins, near the
