@@ -411,11 +411,11 @@ def _unreadable(name: str, e: Exception) -> Result:
 def exact_bbox(segments) -> tuple[float, float, float, float]:
     """``(x0, y0, x1, y1)`` of exact lines, arcs and circles (an arc's extreme points where
     it crosses an axis direction, not its chords); zeros when there are none."""
-    from .geometry.curves import Arc, Circle, Spline
+    from .geometry.curves import Arc, Circle, EllipticArc, Spline
     xs: list[float] = []
     ys: list[float] = []
     for s in segments:
-        if isinstance(s, Spline):
+        if isinstance(s, (Spline, EllipticArc)):
             x0, y0, x1, y1 = s.box()
             xs += (x0, x1)
             ys += (y0, y1)

@@ -253,7 +253,9 @@ spline piece that the exact outputs can write: AIDL refuses rather than write ch
 error points at the `Spline`. Choose the corners with `Fillet(r, at=[...])` away from the
 spline, or let the spline itself turn smoothly there (give it a point at the corner).
 (`Offset`, `Inset`, `Shell` and `Hull` of a Spline are refused at their call, E0108, and a
-cutting layout's kerf on a part with a spline is refused naming the Spline.)
+cutting layout's kerf on a part with a spline is refused naming the Spline.) The same holds
+at a corner on an `Ellipse`, whose offset is no ellipse: the error points at the `Ellipse`,
+and its `Offset`, `Inset`, `Shell`, `Hull` and kerf are refused likewise.
 
     solid pick {
         body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)

@@ -178,7 +178,8 @@ _DEFS = {
     "Ellipse": _p([A("center", "point"), A("rx", "length"), A("ry", "length"),
                    A("rotation", "angle", 0.0)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
-                      "rotation are held, the center is a starting guess.",
+                      "rotation are held, the center is a starting guess. Exact in every "
+                      "output; Offset, Hull and Fillet corners on it are refused.",
                   members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points"), FLEXIBLE],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "

@@ -22,9 +22,10 @@ from dataclasses import dataclass
 
 # DXF: ezdxf writes full doubles (repr), so positions survive to ~1e-15 relative
 DXF_TOL = 1e-9
-# SVG: aidl_lang/output/svg.py prints coordinates with 6 decimals (`_f`: f"{v:.6f}"), so a
-# position re-read from SVG is only good to 0.5e-6 mm; SVG checks use the printed precision
-SVG_TOL = 1e-6
+# SVG: aidl_lang/output/svg.py prints coordinates with 9 decimals (`_f`: DIGITS), so a
+# position re-read from SVG is good to 0.5e-9 mm, an arc's centre (from its rounded ends and
+# radius, pieces of at most a quarter turn) to ~1.2e-9 mm; SVG checks use a few times that
+SVG_TOL = 3e-9
 # a join turning by less than this is meant to be tangent (curves do not meet at 0.06 deg
 # corners by design); between this and the tangent tolerance it is a recovery error
 CORNER_MIN = 1e-3

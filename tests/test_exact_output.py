@@ -6,8 +6,8 @@ numbers -- slot sides at exactly width / 2 from the spine, end arcs of exactly 1
 fillets that are one arc tangent to both edges, no zero-length lines, no hairline kinks.
 The readers and the loop checker are in tests/exact_geometry.py.
 
-Tolerances: 1e-9 mm / 1e-9 rad for DXF (ezdxf writes full doubles); 1e-6 mm for SVG, which
-aidl_lang/output/svg.py prints with 6 decimals.
+Tolerances: 1e-9 mm / 1e-9 rad for DXF (ezdxf writes full doubles); 3e-9 mm for SVG, which
+aidl_lang/output/svg.py prints with 9 decimals.
 """
 from __future__ import annotations
 
@@ -400,7 +400,7 @@ def test_example_dxf_loops_are_exact(example_files, path):
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
 def test_example_svg_loops_are_closed(example_files, path):
-    """The same, re-read from SVG at its printed precision (1e-6 mm): closed, no zero-length
+    """The same, re-read from SVG at its printed precision (1e-9 mm): closed, no zero-length
     segment, no arc of a radius nobody asked for."""
     _, svg, radii = example_files[path.stem]
     problems = []

@@ -13,7 +13,9 @@ Carriers are tuples, compared and intersected without building objects:
 * ``("L", px, py, ux, uy)``: the line through ``(px, py)`` with unit direction ``(ux, uy)``;
 * ``("C", cx, cy, r)``: the circle of center ``(cx, cy)`` and radius ``r > 0``;
 * ``("S", curve)``: a whole :class:`~.spline.CubicSpline` (a :class:`Spline` segment is a piece
-  of one, between two positions on it).
+  of one, between two positions on it);
+* ``("E", curve)``: a whole :class:`~.ellipse.EllipseCurve` (an :class:`EllipticArc` is a
+  piece of one, between two values of its parameter).
 
 Where two carriers meet, :func:`intersect` gives the meeting point nearest to a guess; where
 they touch (a tangent join: a slot's side and its end, a fillet and its edges) or come within
@@ -26,6 +28,9 @@ import math
 
 from dataclasses import dataclass
 from functools import cached_property
+
+from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
+    cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
 
 Point = tuple[float, float]
 
@@ -149,6 +154,80 @@ class Spline:
         return bspline_of(ctrl, _span_steps(self))
 
 
+@dataclass(frozen=True)
+class EllipticArc:
+    """The piece of ellipse ``curve`` (:class:`~.ellipse.EllipseCurve`) from parameter
+    ``start_param`` sweeping ``sweep`` radians of it (> 0 counter-clockwise; +-2 pi: the
+    whole ellipse, a loop of its own like a :class:`Circle`)."""
+    curve: EllipseCurve
+    start_param: float
+    sweep: float
+
+    @property
+    def end_param(self) -> float:
+        return self.start_param + self.sweep
+
+    @property
+    def ccw(self) -> bool:
+        return self.sweep > 0
+
+    def at(self, t: float) -> Point:
+        return self.curve.at(t)
+
+    @property
+    def start(self) -> Point:
+        return self.curve.at(self.start_param)
+
+    @property
+    def end(self) -> Point:
+        return self.curve.at(self.end_param)
+
+    @property
+    def whole(self) -> bool:
+        return abs(abs(self.sweep) - 2 * math.pi) < 1e-12
+
+    @property
+    def length(self) -> float:
+        """Arc length (mm): Gauss-Legendre quadrature of |P'(t)|, 32 nodes per quarter turn
+        (exact to ~1e-15 relative for the ellipses a part holds)."""
+        n = max(1, math.ceil(abs(self.sweep) / (math.pi / 2) - 1e-9))
+        x, w = _gauss()
+        h = self.sweep / n
+        a, b = self.curve.rx, self.curve.ry
+        tot = 0.0
+        for k in range(n):
+            t = self.start_param + h * (k + 0.5 + 0.5 * x)
+            tot += float((w * ((a * _np().sin(t)) ** 2 + (b * _np().cos(t)) ** 2) ** 0.5).sum())
+        return tot * abs(h) / 2
+
+    @property
+    def area_term(self) -> float:
+        """``1/2 * integral of (x dy - y dx)`` along the arc (mm^2): with P = C + Q(t),
+        ``C x (Q(t1) - Q(t0)) + rx ry sweep``, halved."""
+        e = self.curve
+        (cx, cy) = e.center
+        (x0, y0), (x1, y1) = self.start, self.end
+        qx, qy = (x1 - cx) - (x0 - cx), (y1 - cy) - (y0 - cy)
+        return 0.5 * (cx * qy - cy * qx + e.rx * e.ry * self.sweep)
+
+    def box(self) -> tuple[float, float, float, float]:
+        return self.curve.box(self.start_param, self.sweep)
+
+
+def _np():
+    import numpy
+    return numpy
+
+
+_GAUSS: list = []
+
+
+def _gauss():
+    if not _GAUSS:
+        _GAUSS.append(_np().polynomial.legendre.leggauss(32))
+    return _GAUSS[0]
+
+
 def _span_steps(s: "Spline") -> list[float]:
     """The parameter step (mm) of each span of ``s.spans``."""
     c = s.curve
@@ -163,7 +242,7 @@ def _span_steps(s: "Spline") -> list[float]:
     return out if s.u1 >= s.u0 else out[::-1]
 
 
-Segment = Line | Arc | Circle | Spline
+Segment = Line | Arc | Circle | Spline | EllipticArc
 
 
 @dataclass
@@ -180,7 +259,7 @@ class Loop:
             return (1 if c.ccw else -1) * math.pi * c.radius ** 2
         a = 0.0
         for s in self.segments:
-            if isinstance(s, Spline):
+            if isinstance(s, (Spline, EllipticArc)):
                 a += s.area_term
                 continue
             (x0, y0), (x1, y1) = s.start, s.end
@@ -223,6 +302,10 @@ def sample_xy(segments, xs: list, ys: list) -> None:
             ys.append(s.start[1])
         elif isinstance(s, Spline):
             spline_xy(s, xs, ys)
+        elif isinstance(s, EllipticArc):
+            for x, y in ellipse_xy(s):
+                xs.append(x)
+                ys.append(y)
         elif isinstance(s, Arc):
             cx, cy = s.center
             r, a0, sw = s.radius, s.start_angle, s.sweep
@@ -238,6 +321,20 @@ def sample_xy(segments, xs: list, ys: list) -> None:
             angles = [sg * 2 * pi * i / n for i in range(n)]
             xs += [cx + r * cos(a) for a in angles]
             ys += [cy + r * sin(a) for a in angles]
+
+
+def ellipse_chords(s: EllipticArc) -> int:
+    """How many chords :func:`ellipse_xy` cuts ``s`` into: equal steps of the parameter, the
+    sagitta of each at most that of the circle of radius ``rx`` (the major semi-axis) over
+    the same angle, so within ``CHORD_TOL``."""
+    from .tessellate import segments_for
+    return max(1, segments_for(s.curve.rx, abs(s.sweep)))
+
+
+def ellipse_xy(s: EllipticArc) -> list[Point]:
+    """The chord starts of :class:`EllipticArc` ``s`` (:func:`ellipse_chords` of them)."""
+    n = ellipse_chords(s)
+    return [s.curve.at(s.start_param + s.sweep * i / n) for i in range(n)]
 
 
 def spline_xy(s: Spline, xs: list, ys: list) -> None:
@@ -267,6 +364,8 @@ def reverse(s: Segment) -> Segment:
         return Line(s.end, s.start)
     if isinstance(s, Spline):
         return Spline(s.curve, s.u1, s.u0)
+    if isinstance(s, EllipticArc):
+        return EllipticArc(s.curve, s.end_param, -s.sweep)
     if isinstance(s, Arc):
         return Arc(s.center, s.radius, s.start_angle + s.sweep, -s.sweep)
     return Circle(s.center, s.radius, not s.ccw)
@@ -282,6 +381,8 @@ def carrier(s: Segment) -> tuple:
         return ("L", x0, y0, (x1 - x0) / L, (y1 - y0) / L)
     if isinstance(s, Spline):
         return ("S", s.curve)
+    if isinstance(s, EllipticArc):
+        return ("E", s.curve)
     return ("C", float(s.center[0]), float(s.center[1]), float(s.radius))
 
 
@@ -294,6 +395,9 @@ def tangent_at(s: Segment, end: bool) -> Point:
     if isinstance(s, Spline):
         dx, dy = s.curve.tangent(s.u1 if end else s.u0)
         return (dx, dy) if s.u1 >= s.u0 else (-dx, -dy)
+    if isinstance(s, EllipticArc):
+        dx, dy = s.curve.tangent(s.end_param if end else s.start_param)
+        return (dx, dy) if s.sweep > 0 else (-dx, -dy)
     a = s.end_angle if end else s.start_angle
     sg = 1.0 if s.sweep > 0 else -1.0
     return (-sg * math.sin(a), sg * math.cos(a))
@@ -314,6 +418,16 @@ def with_ends(s: Segment, p: Point, q: Point) -> Segment:
         return Line(p, q)
     if isinstance(s, Spline):
         return spline_between(s, p, q)
+    if isinstance(s, EllipticArc):
+        t1, t2 = s.curve.foot(p), s.curve.foot(q)
+        sw = (t2 - t1) % (2 * math.pi)
+        if s.sweep < 0:
+            sw -= 2 * math.pi
+        if abs(sw) > abs(s.sweep) + 1e-9:
+            sw -= math.copysign(2 * math.pi, sw)
+            if abs(sw) > 1e-9:
+                sw = 0.0
+        return EllipticArc(s.curve, t1, sw)
     cx, cy = s.center
     a1 = math.atan2(p[1] - cy, p[0] - cx)
     a2 = math.atan2(q[1] - cy, q[0] - cx)
@@ -333,7 +447,7 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
     circle become a semicircle), and a chain that is one whole circle as a :class:`Circle`."""
     tol = tolerance(scale)
     segs = [s for s in segments if isinstance(s, Circle) or s.length > tol
-            or (isinstance(s, Spline) and s.whole)]
+            or (isinstance(s, (Spline, EllipticArc)) and s.whole)]
     changed = True
     while changed and len(segs) > 1:
         changed = False
@@ -342,6 +456,8 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
             if _mergeable(a, b, tol):
                 m = Line(a.start, b.end) if isinstance(a, Line) else \
                     Spline(a.curve, a.u0, a.u1 + (b.u1 - b.u0)) if isinstance(a, Spline) else \
+                    EllipticArc(a.curve, a.start_param, a.sweep + b.sweep) \
+                    if isinstance(a, EllipticArc) else \
                     Arc(a.center, a.radius, a.start_angle, a.sweep + b.sweep)
                 if i == 0:
                     segs = [m] + segs[1:-1]
@@ -363,6 +479,9 @@ def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
             (abs(a.u1 - b.u0) < 1e-12 or (a.curve.closed and abs(abs(a.u1 - b.u0) - n) < 1e-12))
     if isinstance(a, Line) and isinstance(b, Line):
         return abs(turn_between(a, b)) < 1e-12 and same_carrier(carrier(a), carrier(b), tol)
+    if isinstance(a, EllipticArc) and isinstance(b, EllipticArc):
+        return (a.sweep > 0) == (b.sweep > 0) and a.curve.same(b.curve, tol) \
+            and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9 and math.dist(a.end, b.start) <= tol
     if isinstance(a, Arc) and isinstance(b, Arc):
         return (a.sweep > 0) == (b.sweep > 0) and same_carrier(carrier(a), carrier(b), tol) \
             and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
@@ -376,6 +495,8 @@ def same_carrier(a: tuple, b: tuple, tol: float = EPS) -> bool:
         return False
     if a[0] == "S":
         return a[1] == b[1]
+    if a[0] == "E":
+        return a[1].same(b[1], tol)
     if a[0] == "C":
         return math.hypot(a[1] - b[1], a[2] - b[2]) <= tol and abs(a[3] - b[3]) <= tol
     _, px, py, ux, uy = a
@@ -387,7 +508,7 @@ def same_carrier(a: tuple, b: tuple, tol: float = EPS) -> bool:
 
 def distance_to(c: tuple, p: Point) -> float:
     """Distance (mm) from point ``p`` to carrier ``c``."""
-    if c[0] == "S":
+    if c[0] in ("S", "E"):
         return c[1].distance(p)
     if c[0] == "L":
         _, px, py, ux, uy = c
@@ -398,7 +519,7 @@ def distance_to(c: tuple, p: Point) -> float:
 
 def foot(c: tuple, p: Point) -> Point:
     """The point of carrier ``c`` nearest to ``p``."""
-    if c[0] == "S":
+    if c[0] in ("S", "E"):
         return c[1].at(c[1].foot(p))
     if c[0] == "L":
         _, px, py, ux, uy = c
@@ -416,6 +537,8 @@ def crossings(a: tuple, b: tuple) -> list[Point]:
     """Every point where carriers ``a`` and ``b`` meet: two, one (lines crossing, or a touch
     within :data:`TANGENT`) or none (parallel lines, circles apart); a spline's crossings
     are roots of its spans' polynomials, polished by Newton (:mod:`.spline`)."""
+    if a[0] == "E" or b[0] == "E":
+        return _ellipse_crossings(a, b)
     if a[0] == "S" or b[0] == "S":
         return _spline_crossings(a, b)
     if a[0] == "L" and b[0] == "L":
@@ -451,6 +574,19 @@ def _spline_crossings(a, b) -> list[Point]:
     return [c.at(u) for u, _ in c.cross_spline(b[1])]
 
 
+def _ellipse_crossings(a, b) -> list[Point]:
+    if a[0] != "E":
+        a, b = b, a
+    e = a[1]
+    if b[0] == "L":
+        return _e_line(e, *b[1:])
+    if b[0] == "C":
+        return _e_circle(e, *b[1:])
+    if b[0] == "E":
+        return _e_ellipse(e, b[1])
+    return _e_spline(e, b[1])
+
+
 def spline_between(s: Spline, p: Point, q: Point) -> Spline:
     """The piece of ``s``'s curve from its point nearest ``p`` to the one nearest ``q``, run
     in ``s``'s direction (a closed curve wraps forward or backward as ``s`` does)."""
@@ -468,6 +604,8 @@ def spline_between(s: Spline, p: Point, q: Point) -> Spline:
 
 
 def _closest(a, b, near):
+    if a[0] == "E" or b[0] == "E":
+        return _approach(a, b, near)
     if a[0] == "S" or b[0] == "S":
         return foot(a, near)
     if a[0] == "C" and b[0] == "C" and math.hypot(a[1] - b[1], a[2] - b[2]) > 1e-15:
@@ -478,6 +616,24 @@ def _closest(a, b, near):
     if a[0] == "C" and b[0] == "L":
         return foot(a, foot(b, (a[1], a[2])))
     return foot(a, near)
+
+
+def _approach(a, b, near) -> Point:
+    """Where carriers ``a`` and ``b`` (one an ellipse) that do not meet come closest near
+    ``near``: the middle of the ellipse's point where the other's equation is extreme and the
+    foot of that point on the other, the same point
+    whichever is ``a``, so a sliver the chords made between two curves a hair apart closes
+    on one point (as two circles' closest approach does) and is dropped."""
+    if a[0] != "E" or (b[0] == "E" and (b[1].center, b[1].rx, b[1].ry, b[1].rotation) <
+                       (a[1].center, a[1].rx, a[1].ry, a[1].rotation)):
+        a, b = b, a                      # the same point whichever order they come in
+    if b[0] == "S":
+        p = foot(a, near)
+        q = foot(b, p)
+    else:
+        p = _e_nearest(a[1], b, near)
+        q = foot(b, p)
+    return ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
 
 
 def _line_line(a, b):

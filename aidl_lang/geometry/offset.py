@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 
-from .curves import (Spline, Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
+from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 
 TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent join
@@ -32,7 +32,8 @@ TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent j
 
 class OffsetError(ValueError):
     """The loop cannot be offset by this distance; the message says where and why.
-    ``curve``: the :class:`~.spline.CubicSpline` that cannot be offset exactly, else None."""
+    ``curve``: the :class:`~.spline.CubicSpline` or :class:`~.ellipse.EllipseCurve` that
+    cannot be offset exactly, else None."""
     curve = None
 
 
@@ -72,6 +73,12 @@ def offset_loop(loop: Loop, d: float) -> Loop:
     an outer (counter-clockwise) loop, into the hole for a hole (see the module text).
     Raises :class:`OffsetError` where a feature is too small for the offset."""
     for g in loop.segments:
+        if isinstance(g, EllipticArc):
+            e = OffsetError(f"the ellipse through ({g.start[0]:g}, {g.start[1]:g}) cannot be "
+                            f"offset exactly (the offset of an ellipse is no ellipse, and "
+                            f"chords are not written)")
+            e.curve = g.curve
+            raise e
         if isinstance(g, Spline):
             e = OffsetError(f"the spline through ({g.start[0]:g}, {g.start[1]:g}) cannot be "
                             f"offset exactly (the offset of a cubic spline is no cubic "

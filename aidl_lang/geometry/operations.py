@@ -564,10 +564,10 @@ def _corner_points(ctx, v, S, kind: str) -> list:
 
 
 class SplineCorner(ValueError):
-    """A Fillet or Chamfer asked for a corner where a spline meets another curve: the
-    rounding arc would have to be tangent to a cubic spline, which no line, arc or spline
-    piece of the exact output model is; ``curve``: the spline's
-    :class:`~.spline.CubicSpline`, ``hint``: what to do."""
+    """A Fillet or Chamfer asked for a corner where a spline or an ellipse meets another
+    curve: the rounding arc would have to be tangent to a cubic spline or an ellipse at a
+    point no closed form gives; ``curve``: the spline's :class:`~.spline.CubicSpline` or the
+    :class:`~.ellipse.EllipseCurve`, ``hint``: what to do."""
 
     def __init__(self, message: str, curve, hint: str):
         super().__init__(message)
@@ -604,7 +604,8 @@ def corners(loop, size: float, fillet: bool, only=None):
     a segment is too short for both of its corners the fillet radius (or chamfer leg)
     shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
     exact (:mod:`.curves`)."""
-    from .curves import Arc, Circle, Line, Loop, Spline, simplify, turn_between, with_ends
+    from .curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, simplify, turn_between,
+                         with_ends)
     segs = loop.segments
     n = len(segs)
     if n < 2 or any(isinstance(g, Circle) for g in segs):
@@ -618,6 +619,16 @@ def corners(loop, size: float, fillet: bool, only=None):
                                      for qx, qy in only)
         if abs(turn) <= CORNER_TURN or not chosen or (not fillet and turn < 0):
             continue
+        el = next((g for g in (a, b) if isinstance(g, EllipticArc)), None)
+        if el is not None:
+            what = "Fillet" if fillet else "Chamfer"
+            raise SplineCorner(
+                f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where an Ellipse "
+                f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
+                f"on the ellipse at a point the exact output cannot place (the offset of an "
+                f"ellipse is no ellipse), and the result would be chords", el.curve,
+                f"choose corners away from the ellipse with `{what}(..., at=[...])`, or round "
+                f"the corner with an arc of your own (a Circle placed tangent to both)")
         sp = next((g for g in (a, b) if isinstance(g, Spline)), None)
         if sp is not None:
             what = "Fillet" if fillet else "Chamfer"

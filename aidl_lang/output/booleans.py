@@ -23,12 +23,13 @@ from dataclasses import dataclass, field
 import manifold3d as mf
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Spline, carrier, reverse, simplify
+from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
+                               simplify)
+from ..geometry.ellipse import ellipse
 from ..geometry.model import Geometry, Model, Structure
 from ..geometry.hull import hull_loop
 from ..geometry.offset import offset_pieces
 from ..geometry.operations import SplineCorner, finish
-from ..geometry.tessellate import segments_for
 from ..geometry.text import text_strokes
 from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
@@ -273,12 +274,12 @@ class Renderer:
             if rx <= 0 or ry <= 0:
                 return None
             from ..geometry.bbox import held_rotation
-            c, rot = self.P(g.points["center"]), held_rotation(g, self.x)
-            n = segments_for(max(rx, ry))     # sagitta of a parameter step <= that of radius a
-            t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-            u, v = rx * np.cos(t), ry * np.sin(t)
-            cs, sn = math.cos(rot), math.sin(rot)
-            return _polygon(np.column_stack([c[0] + u * cs - v * sn, c[1] + u * sn + v * cs]))
+            c, rot = self._pt(g.points["center"]), held_rotation(g, self.x)
+            if rx == ry:
+                return Loop([Circle(c, float(rx))])
+            curve, _ = ellipse(c, float(rx), float(ry), float(rot))
+            self.spline_source.setdefault(curve, g)       # located refusals name the Ellipse
+            return Loop([EllipticArc(curve, 0.0, 2 * math.pi)])
         if k == "ArcSlot":
             # the solved start (a copy's is turned or mirrored with it), counter-clockwise
             c, s = self._pt(g.points["center"]), self._pt(g.points["start"])

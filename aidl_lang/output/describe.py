@@ -10,7 +10,8 @@ with its string, other marks by kind) with their place, the parts of the same sh
 Kinds: ``circle`` (one exact circle: ``d``), ``slot`` (two parallel lines and two half circles:
 width ``w``, overall length ``l``, ``angle`` of its axis), ``rectangle`` (four lines at right
 angles: ``w`` x ``h``, ``angle``), ``rounded rectangle`` (four lines and four quarter arcs of
-one radius ``r``), ``polygon`` (``n`` lines), else ``outline`` (so many lines, arcs, splines).
+one radius ``r``), ``ellipse`` (one exact ellipse: axes ``w`` x ``h`` = 2 rx x 2 ry, ``angle``
+of its major axis), ``polygon`` (``n`` lines), else ``outline`` (so many lines, arcs, splines).
 
 Symmetries are tested on the part's shape (:attr:`~.part.PartOutline.shape`) about its area
 centroid: a mirror about the vertical and the horizontal line through it, and rotation by
@@ -25,7 +26,7 @@ import math
 
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, Line
+from ..geometry.curves import Arc, Circle, EllipticArc, Line
 from ..geometry.tessellate import CHORD_TOL
 from .inventory import parts_list
 from .layout import _segment_box, part_box
@@ -72,6 +73,10 @@ def loop_shape(segments) -> dict:
     if len(segments) == 1 and isinstance(segments[0], Circle):
         c = segments[0]
         return {**doc, "kind": "circle", "center": _pt(c.center), "d": _r(2 * c.radius)}
+    if len(segments) == 1 and isinstance(segments[0], EllipticArc) and segments[0].whole:
+        e = segments[0].curve
+        return {**doc, "kind": "ellipse", "center": _pt(e.center), "w": _r(2 * e.rx),
+                "h": _r(2 * e.ry), "angle": _r(math.degrees(e.rotation))}
     if len(lines) == len(segments):
         if len(lines) == 4 and _right_angles(lines):
             a, b = lines[0].length, lines[1].length
@@ -248,6 +253,8 @@ def shape_text(s: dict) -> str:
         return f"slot {_n(s['w'])} x {_n(s['l'])}{ang} at {_at(s['center'])}"
     if k == "rectangle":
         return f"rectangle {_n(s['w'])} x {_n(s['h'])}{ang} at {_at(s['center'])}"
+    if k == "ellipse":
+        return f"ellipse {_n(s['w'])} x {_n(s['h'])}{ang} at {_at(s['center'])}"
     if k == "rounded rectangle":
         return f"rounded rectangle {_n(s['w'])} x {_n(s['h'])} r={_n(s['r'])}{ang} at " \
                f"{_at(s['center'])}"

@@ -3,20 +3,22 @@
 What laser, waterjet and CNC software imports: a DXF R2010 file in millimetres (header
 ``$INSUNITS`` = 4, ``$MEASUREMENT`` = 1).  Each closed outline loop is a ``CIRCLE`` when it is
 a circle and otherwise a closed ``LWPOLYLINE`` whose arcs are bulges (bulge = tan(sweep / 4);
-arcs over 180 degrees are split in two).  Engraving (drawings, text strokes, unclosed curves)
-is written so that a laser runs each stroke in one go: a closed stroke is a closed
+one bulge per arc, a half circle or 359 degrees alike, up to :data:`MAX_BULGE_SWEEP`).
+Engraving (drawings, text strokes, unclosed curves) is written so that a laser runs each stroke in one go: a closed stroke is a closed
 ``LWPOLYLINE``; an open stroke whose segments are chained (each starting where the one before
 ends, within :data:`CHAIN_TOL`) is ONE open ``LWPOLYLINE`` with bulges; a lone line, arc or
 circle is a ``LINE``, ``ARC`` or ``CIRCLE`` (a stroke with gaps is cut into its chains).
 
-A loop or stroke that holds a spline cannot be one ``LWPOLYLINE`` (it has no cubic segments):
-it is written segment by segment, each spline piece as a ``SPLINE`` entity (degree 3,
+A loop or stroke that holds a spline or an ellipse cannot be one ``LWPOLYLINE`` (it has no
+cubic or elliptical segments): it is written segment by segment, each elliptical arc as an
+``ELLIPSE`` entity (centre, major axis, ratio, start and end parameter), each spline piece as
+a ``SPLINE`` entity (degree 3,
 clamped, its knots the chord-length parameters with triple interior knots: every span one
 Bézier piece, control points to the last bit), each line as a ``LINE`` and each arc as an
 ``ARC``, ends meeting exactly, so CAM software joins them into one contour.
 
 The header's ``$EXTMIN`` / ``$EXTMAX`` are the drawing's exact extent
-(:func:`~.extent.extent`, z = 0).
+(:func:`~.extent.extent`, z = 0), also when a corner is at the origin (a cutting sheet).
 
 Layers: ``CUT`` (red) for the outlines of a single part, ``ENGRAVE`` (blue) for engraving; in an
 assembly with several parts, each part's outlines are on their own layer ``CUT-<part>``
@@ -28,11 +30,16 @@ import io
 import math
 
 from .extent import extent
-from .part import Arc, Circle, Line, Output, PartOutline, Spline
+from .part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
 _BAD = '<>/\\":;?*|=`'
+# radians: the largest sweep written as one bulge.  A reader finds an arc's centre from its
+# chord and bulge; near a whole turn the chord shrinks like (2 pi - sweep) * r, and the
+# centre's error grows like 1e-16 * |coordinates| / (2 pi - sweep): 1e-3 rad short of a turn
+# keeps it below 1e-9 mm up to 10 m.  A half circle, or 359 degrees, is one arc.
+MAX_BULGE_SWEEP = 2 * math.pi - 1e-3
 
 
 def layer_of(part: PartOutline, output: Output) -> str:
@@ -57,14 +64,15 @@ def _chains(segments) -> list[list]:
 
 
 def _bulge_points(segments, closed: bool = True):
-    """(x, y, bulge) vertices of a chain of lines and arcs (bulge = tan(sweep / 4), arcs over
-    180 degrees split in two); an open chain ends with its last segment's end point."""
+    """(x, y, bulge) vertices of a chain of lines and arcs (bulge = tan(sweep / 4)): each arc
+    one vertex, up to :data:`MAX_BULGE_SWEEP`; an arc closer to a whole turn is split in two
+    halves.  An open chain ends with its last segment's end point."""
     pts = []
     for s in segments:
         if isinstance(s, Line):
             pts.append((s.start[0], s.start[1], 0.0))
         else:
-            k = 1 if abs(s.sweep) <= math.pi else 2
+            k = 1 if abs(s.sweep) <= MAX_BULGE_SWEEP else 2
             for i in range(k):
                 part = Arc(s.center, s.radius, s.start_angle + s.sweep * i / k, s.sweep / k)
                 x, y = part.start
@@ -78,7 +86,9 @@ def _bulge_points(segments, closed: bool = True):
 def _pieces(msp, segments, att) -> None:
     """Each segment of a chain holding a spline as its own entity (see the module docstring)."""
     for s in segments:
-        if isinstance(s, Spline):
+        if isinstance(s, EllipticArc):
+            _ellipse(msp, s, att)
+        elif isinstance(s, Spline):
             deg, knots, ctrl = s.bspline()
             msp.add_open_spline([(x, y, 0.0) for x, y in ctrl], degree=deg, knots=knots,
                                 dxfattribs=att)
@@ -89,6 +99,27 @@ def _pieces(msp, segments, att) -> None:
         else:
             a, b = (s.start_angle, s.end_angle) if s.sweep > 0 else (s.end_angle, s.start_angle)
             msp.add_arc(s.center, s.radius, math.degrees(a), math.degrees(b), dxfattribs=att)
+
+
+def _ellipse(msp, s: EllipticArc, att) -> None:
+    """An ``ELLIPSE`` entity: centre, major axis (the vector to the end of the major
+    semi-axis), ratio ry / rx, and the parameters (eccentric anomaly, radians) it runs
+    counter-clockwise between; a whole ellipse 0 to 2 pi."""
+    e = s.curve
+    axis = (e.rx * math.cos(e.rotation), e.rx * math.sin(e.rotation), 0.0)
+    if s.whole:
+        a, b = 0.0, 2 * math.pi
+    else:
+        a, b = (s.start_param, s.end_param) if s.sweep > 0 else (s.end_param, s.start_param)
+        k = math.floor(a / (2 * math.pi))
+        a, b = a - 2 * math.pi * k, b - 2 * math.pi * k
+    msp.add_ellipse((e.center[0], e.center[1], 0.0), axis, e.ry / e.rx, a, b,
+                    dxfattribs=att)
+
+
+def _exploded(segs) -> bool:
+    """A chain that cannot be one ``LWPOLYLINE``: it holds a spline or an ellipse."""
+    return any(isinstance(g, (Spline, EllipticArc)) for g in segs)
 
 
 def to_dxf_document(output: Output):
@@ -102,7 +133,12 @@ def to_dxf_document(output: Output):
     doc.layers.add(ENGRAVE, color=5)
     msp = doc.modelspace()
     x0, y0, x1, y1 = extent(output)
-    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))   # ezdxf copies them to $EXTMIN/$EXTMAX
+    msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
+    # ezdxf copies the modelspace's extents to the header only when neither corner is the
+    # point (0, 0, 0), which it takes for "unset": a drawing cornered at the origin (every
+    # cutting sheet) kept +-1e20; set them here, and ezdxf leaves them (or rewrites the same)
+    doc.header["$EXTMIN"] = (x0, y0, 0.0)
+    doc.header["$EXTMAX"] = (x1, y1, 0.0)
     for p in output.parts:
         layer = layer_of(p, output)
         if layer not in doc.layers:
@@ -112,14 +148,14 @@ def to_dxf_document(output: Output):
             if len(segs) == 1 and isinstance(segs[0], Circle):
                 msp.add_circle(segs[0].center, segs[0].radius, dxfattribs={"layer": layer})
                 continue
-            if any(isinstance(g, Spline) for g in segs):
+            if _exploded(segs):
                 _pieces(msp, segs, {"layer": layer})
                 continue
             msp.add_lwpolyline(_bulge_points(segs), format="xyb", close=True,
                                dxfattribs={"layer": layer})
     for st in output.engrave:
         att = {"layer": ENGRAVE}
-        if any(isinstance(g, Spline) for g in st.segments):
+        if _exploded(st.segments):
             _pieces(msp, st.segments, att)
             continue
         if st.closed and not (len(st.segments) == 1 and isinstance(st.segments[0], Circle)):

@@ -35,9 +35,9 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ..geometry.curves import (Arc, Circle, Line, Loop, Spline, carrier, distance_to, foot,
-                               intersect, same_carrier, simplify, spline_chords, spline_xy,
-                               tolerance)
+from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
+                               distance_to, ellipse_chords, ellipse_xy, foot, intersect,
+                               same_carrier, simplify, spline_chords, spline_xy, tolerance)
 from ..geometry.tessellate import CHORD_TOL, segments_for
 from ..limits import OutOfBudget
 
@@ -80,6 +80,10 @@ class Provenance:
             key = ("C", round(c[1], 9), round(c[2], 9), round(c[3], 9))
         elif c[0] == "S":
             key = c
+        elif c[0] == "E":
+            e = c[1]
+            key = ("E", round(e.center[0], 9), round(e.center[1], 9), round(e.rx, 9),
+                   round(e.ry, 9), round(e.rotation, 12))
         else:
             _, px, py, ux, uy = c
             if ux < 0 or (ux == 0 and uy < 0):
@@ -101,6 +105,7 @@ class Provenance:
         if self.max_vertices is not None:         # counted before anything is made
             self.vertices += sum(1 if isinstance(s, Line) else
                                  spline_chords(s) if isinstance(s, Spline) else
+                                 ellipse_chords(s) if isinstance(s, EllipticArc) else
                                  segments_for(s.radius) if isinstance(s, Circle) else
                                  max(1, segments_for(s.radius, abs(s.sweep))) for s in segs)
             if self.vertices > self.max_vertices:
@@ -117,6 +122,12 @@ class Provenance:
                 at = len(xs)
                 spline_xy(s, xs, ys)
                 ids += [k] * (len(xs) - at)
+                continue
+            if isinstance(s, EllipticArc):
+                pts = ellipse_xy(s)
+                xs += [p[0] for p in pts]
+                ys += [p[1] for p in pts]
+                ids += [k] * len(pts)
                 continue
             cx, cy = s.center
             r = s.radius
@@ -205,19 +216,7 @@ class Provenance:
         cid = self._match(P, scale) if cid is None else cid.copy()
         runs = _runs(cid, self.carriers, scale)
         if runs is None:                    # the whole loop on one carrier
-            k = int(cid[0])
-            c = self.carriers[k] if k >= 0 else None
-            if c is not None and c[0] == "C":
-                total = _sweep_sum(P, c, 0, n - 1)
-                if abs(abs(total) - 2 * math.pi) < 1e-6:
-                    return Loop([Circle((c[1], c[2]), c[3], total > 0)])
-            if c is not None and c[0] == "S":       # closed, or open with meeting ends
-                whole = Spline(c[1], 0.0, float(c[1].n))
-                if _shoelace(P) * whole.area_term < 0:
-                    whole = Spline(c[1], float(c[1].n), 0.0)
-                return Loop([whole])
-            # every edge on one line, or on part of one circle: no area in exact geometry
-            return _polyline(P) if c is None else Loop([])
+            return self._whole(P, int(cid[0]))
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
         joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
                  for j in range(len(runs))]
@@ -226,14 +225,26 @@ class Provenance:
         def approx(c, first, last):       # the polygon's sweep of a run, computed once
             key = (first, last)
             if key not in sweeps:
-                sweeps[key] = _sweep_sum(P, c, first, last)
+                sweeps[key] = _sweep_sum(_unit(P, c[1]), ("C", 0.0, 0.0, 1.0), first, last) \
+                    if c[0] == "E" else _sweep_sum(P, c, first, last)
             return sweeps[key]
         explained = all(k >= 0 for k, _, _ in runs)
-        runs, joins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
-        if len(runs) < 2:
+        kept, kjoins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
+        if len(kept) < 2:
             # the exact curves close on nothing: a sliver the chords made (two curves that
-            # touch, cut by their chords), left out; what no chord explains stays a polyline
-            return Loop([]) if explained else _polyline(P)
+            # touch, cut by their chords), left out; or one closed curve that another one,
+            # inside it and a hair away (or touching it), crossed only in chords: that curve
+            # whole; what no chord explains stays a polyline
+            if not explained:
+                return _polyline(P)
+            if kept or runs:
+                big = max(runs, key=lambda r: r[2] - r[1])[0]
+                whole = self._whole(P, big)
+                if whole.segments and abs(whole.area - _shoelace(P)) <= \
+                        0.01 * abs(_shoelace(P)) + 1e-9:
+                    return whole
+            return Loop([])
+        runs, joins = kept, kjoins
         segs = []
         m = len(runs)
         for j, (k, first, last) in enumerate(runs):
@@ -247,9 +258,33 @@ class Provenance:
                 segs.append(Line(a, b))
             elif c[0] == "S":
                 segs.append(_spline_run(c[1], a, b, P, first, last))
+            elif c[0] == "E":
+                segs.append(_ellipse_run(c[1], a, b, approx(c, first, last)))
             else:
                 segs.append(_arc(c, a, b, approx(c, first, last)))
         return Loop(simplify(segs, scale))
+
+    def _whole(self, P, k: int) -> Loop:
+        """The loop of polygon ``P`` whose every edge is on carrier ``k``: the whole circle,
+        ellipse or closed spline (the polygon's way round); nothing for a line or part of a
+        circle (no area in exact geometry), a polyline for no carrier (-1)."""
+        n = len(P)
+        c = self.carriers[k] if k >= 0 else None
+        if c is not None and c[0] == "C":
+            total = _sweep_sum(P, c, 0, n - 1)
+            if abs(abs(total) - 2 * math.pi) < 1e-6:
+                return Loop([Circle((c[1], c[2]), c[3], total > 0)])
+        if c is not None and c[0] == "E":
+            total = _sweep_sum(_unit(P, c[1]), ("C", 0.0, 0.0, 1.0), 0, n - 1)
+            if abs(abs(total) - 2 * math.pi) < 1e-6:
+                return Loop([EllipticArc(c[1], 0.0, math.copysign(2 * math.pi, total))])
+        if c is not None and c[0] == "S":       # closed, or open with meeting ends
+            whole = Spline(c[1], 0.0, float(c[1].n))
+            if _shoelace(P) * whole.area_term < 0:
+                whole = Spline(c[1], float(c[1].n), 0.0)
+            return Loop([whole])
+        # every edge on one line, or on part of one circle: no area in exact geometry
+        return _polyline(P) if c is None else Loop([])
 
     def _join(self, ka: int, kb: int, v, scale: float):
         """The exact vertex where carrier ``ka``'s run ends and ``kb``'s begins, near the
@@ -535,6 +570,23 @@ def _arc(c, a, b, approx: float) -> Arc:
     return Arc((cx, cy), r, a1, sw)
 
 
+def _unit(P, e) -> np.ndarray:
+    """Polygon ``P`` in the frame where ellipse ``e`` is the unit circle (its parameter is
+    the angle there)."""
+    c, s = math.cos(e.rotation), math.sin(e.rotation)
+    X, Y = P[:, 0] - e.center[0], P[:, 1] - e.center[1]
+    return np.column_stack([(X * c + Y * s) / e.rx, (-X * s + Y * c) / e.ry])
+
+
+def _ellipse_run(e, a, b, approx: float) -> EllipticArc:
+    """The arc of ellipse ``e`` from exact point ``a`` to ``b`` whose parameter sweep is the
+    one nearest to the polygon's, ``approx``."""
+    t1, t2 = e.param(a), e.param(b)
+    sw = t2 - t1
+    sw += 2 * math.pi * round((approx - sw) / (2 * math.pi))
+    return EllipticArc(e, t1, sw)
+
+
 def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
     """True when run ``k`` from exact point ``a`` to ``b`` is shorter than ``tol`` or runs
     against its polygon edges (an overlap the chords could not show)."""
@@ -545,6 +597,11 @@ def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
     if c[0] == "S":
         sp = _spline_run(c[1], a, b, P, first, last)
         return sp is None or sp.length <= tol
+    if c[0] == "E":
+        sw = approx(c, first, last) if approx is not None else \
+            _sweep_sum(_unit(P, c[1]), ("C", 0.0, 0.0, 1.0), first, last)
+        arc = _ellipse_run(c[1], a, b, sw)
+        return abs(arc.sweep) * c[1].ry <= tol or arc.sweep * sw <= 0
     if c[0] == "L":
         dx, dy = b[0] - a[0], b[1] - a[1]
         ex = P[(last + 1) % n] - P[first % n]

@@ -6,11 +6,11 @@ from __future__ import annotations
 
 import math
 
-from .part import Arc, Circle, Line, Output, Spline
+from .part import Arc, Circle, EllipticArc, Line, Output, Spline
 
 
 def _segment_box(s) -> tuple[float, float, float, float]:
-    if isinstance(s, Spline):
+    if isinstance(s, (Spline, EllipticArc)):
         return s.box()
     if isinstance(s, Line):
         (x0, y0), (x1, y1) = s.start, s.end

@@ -10,7 +10,7 @@ laser-cut part can be turned over, though its engraving would then be mirrored).
 """
 from __future__ import annotations
 
-from ..geometry.curves import Arc, Circle, Line
+from ..geometry.curves import Arc, Circle, EllipticArc, Line
 from .layout import part_box
 from .part import Output, PartOutline
 
@@ -27,6 +27,8 @@ def _measures(p: PartOutline) -> list[tuple]:
                 out.append((1, s.radius, s.length))
             elif isinstance(s, Circle):
                 out.append((2, s.radius, s.length))
+            elif isinstance(s, EllipticArc):
+                out.append((4, s.curve.rx, s.length))
             else:                                   # a spline piece
                 out.append((3, s.length, s.area_term))
     return sorted(out)

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Spline
+from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.offset import OffsetError, offset_loop
 from .extent import _segment_box
 from .part import MissingDependency, Output, OutputError, PartOutline, Stroke
@@ -69,6 +69,12 @@ class Motion:
             c = s.curve
             moved = CubicSpline(tuple(self.point(p) for p in c.ctrl), c.h, c.closed)
             return Spline(moved, s.u0, s.u1)
+        if isinstance(s, EllipticArc):     # the same ellipse turned: its parameter is kept
+            e = s.curve
+            from ..geometry.ellipse import ellipse
+            moved, shift = ellipse(self.point(e.center), e.rx, e.ry,
+                                   e.rotation + math.radians(self.deg))
+            return EllipticArc(moved, s.start_param - shift, s.sweep)
         if isinstance(s, Line):
             return Line(self.point(s.start), self.point(s.end))
         if isinstance(s, Circle):
@@ -131,12 +137,14 @@ def _spline_fix(output: Output, e: OffsetError) -> str:
     src = getattr(output.drawing, "spline_source", {}).get(e.curve) \
         if output.drawing is not None else None
     at = ""
+    kind = "Ellipse" if src is not None and src.kind == "Ellipse" else "Spline"
     if src is not None and src.span is not None:
         sp = src.span
-        at = f" (the Spline `{src.label}` at {sp.file}:{sp.line}:{sp.col})"
+        at = f" (the {kind} `{src.label}` at {sp.file}:{sp.line}:{sp.col})"
+    redraw = "an Ellipse with rx and ry grown" if kind == "Ellipse" else \
+        "the spline through points moved out"
     return (f"{at}; set the kerf of this part to 0 (`kerf 0 mm` in its structure) and let the "
-            f"cutter's software compensate, or draw the spline through points moved out by "
-            f"half the kerf")
+            f"cutter's software compensate, or draw {redraw} by half the kerf")
 
 
 # ------------------------------------------------------------------ nesting

@@ -7,8 +7,8 @@ geometry"): each run of edges on one carrier is one :class:`Line`, :class:`Arc` 
 :class:`Circle`, and each vertex where two curves meet is their exact intersection (or the
 touching point of a tangent join), so slots, rounded rectangles, fillets and every union or
 cut of them come out as the program meant them, to floating-point accuracy; a spline that a
-cut crosses is its exact piece (de Casteljau at the crossing positions).  Ellipses are the
-one approximation: a polygon of chords within ``CHORD_TOL``.
+cut crosses is its exact piece (de Casteljau at the crossing positions), and an ellipse's
+pieces are :class:`EllipticArc` s of it (between the parameters of their exact ends).
 
 The result, :class:`Output`, holds :class:`PartOutline` s (name, kind, loops, thickness, and
 the loops tessellated once more for meshes) and engraving strokes (text as one polyline per
@@ -22,11 +22,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Segment, Spline, sample_xy
+from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
 from ..limits import OutOfBudget
 from .booleans import Drawing
 
-__all__ = ["Arc", "Circle", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
+__all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
            "OutputError", "MissingDependency", "build"]
 
 Point = tuple[float, float]
@@ -156,7 +156,8 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
     groups: dict = {}
     for st in strokes:
         if st.closed or not st.segments or any(isinstance(g, Circle) or
-                                               (isinstance(g, Spline) and g.whole)
+                                               (isinstance(g, (Spline, EllipticArc))
+                                                and g.whole)
                                                for g in st.segments):
             out.append(st)
             continue

@@ -1,6 +1,7 @@
 """STEP writer (the optional ``step`` extra: OCP from ``cadquery-ocp``), built from the exact
 profiles of :mod:`.part`, so circles stay circles and their extrusions cylinders, and a
-spline stays a B-spline (``B_SPLINE_CURVE_WITH_KNOTS``; its extrusion a surface of it).
+spline stays a B-spline (``B_SPLINE_CURVE_WITH_KNOTS``; its extrusion a surface of it), an
+ellipse an ``ELLIPSE`` (whole, or trimmed between its parameters).
 
 Each solid part becomes one solid: its outer loops are faces (lines as straight edges, arcs
 and circles as circular edges, ``gp_Circ``), its hole loops are inner wires of the face that
@@ -13,7 +14,7 @@ from __future__ import annotations
 import os
 import tempfile
 
-from .part import Circle, Line, Loop, MissingDependency, Output, Spline
+from .part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
 
 DEFAULT_THICKNESS = 3.0
 
@@ -33,6 +34,8 @@ def _wire(loop: Loop, reverse: bool):
     for s in loop.segments:
         if isinstance(s, Spline):
             mk.Add(BRepBuilderAPI_MakeEdge(_bspline(s)).Edge())
+        elif isinstance(s, EllipticArc):
+            mk.Add(_ellipse_edge(s))
         elif isinstance(s, Line):
             a, b = gp_Pnt(*s.start, 0.0), gp_Pnt(*s.end, 0.0)
             if a.Distance(b) < 1e-9:
@@ -48,6 +51,24 @@ def _wire(loop: Loop, reverse: bool):
             mk.Add(BRepBuilderAPI_MakeEdge(arc).Edge())
     w = mk.Wire()
     return w.Reversed() if reverse else w
+
+
+def _ellipse_edge(s: EllipticArc):
+    """An OCP edge on a ``gp_Elips`` (STEP ``ELLIPSE``: centre, major axis direction, semi-
+    axes), whole or trimmed between the arc's parameters (the eccentric anomaly, as OCP's;
+    counter-clockwise: the wire orients its edges, as it does a hole's circle)."""
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    from OCP.GC import GC_MakeArcOfEllipse
+    from OCP.gp import gp_Ax2, gp_Dir, gp_Elips, gp_Pnt
+    import math
+    e = s.curve
+    ax = gp_Ax2(gp_Pnt(e.center[0], e.center[1], 0.0), gp_Dir(0, 0, 1),
+                gp_Dir(math.cos(e.rotation), math.sin(e.rotation), 0.0))
+    el = gp_Elips(ax, e.rx, e.ry)
+    if s.whole:
+        return BRepBuilderAPI_MakeEdge(el).Edge()
+    a, b = (s.start_param, s.end_param) if s.sweep > 0 else (s.end_param, s.start_param)
+    return BRepBuilderAPI_MakeEdge(GC_MakeArcOfEllipse(el, a, b, True).Value()).Edge()
 
 
 def _bspline(s):

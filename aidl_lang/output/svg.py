@@ -2,8 +2,8 @@
 
 Layers are groups with stable ids: ``cut`` holds one group per part (``part-<path>``), each
 part's outline loops as exact ``L`` / ``A`` / ``C`` path commands (``C``: a spline's cubic
-Bézier spans) (a full circle is two half arcs in
-the preview style, a ``<circle>`` in the laser style); ``engrave`` holds drawings, text and
+Bézier spans; every arc in ``A`` pieces of at most a quarter turn, a full circle four of them
+in the preview style, a ``<circle>`` in the laser style; numbers to 1e-9 mm, :data:`DIGITS`); ``engrave`` holds drawings, text and
 unclosed curves.  Debug layers appear only when asked for (``show``): ``holes`` (each hole's
 declared outline, dashed), ``bboxes`` (every structure's bounding box), ``construction``
 (construction geometry).
@@ -23,11 +23,12 @@ import math
 import numpy as np
 
 from .extent import extent
-from .part import Arc, Circle, Line, Loop, Output, OutputError, Spline, build
+from .part import Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline, build
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
 CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
+DIGITS = 9           # decimals of a mm written for lines, arcs and sizes: 1e-9 mm
 HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
 # The preview's outline colours for the parts of an assembly, in order (Okabe and Ito's
 # palette for colour-blind readers, with black moved last): each part is drawn in its colour
@@ -38,7 +39,9 @@ PART_FILL_OPACITY = 0.18
 
 
 def _f(v: float) -> str:
-    s = f"{v:.6f}".rstrip("0").rstrip(".")
+    """A coordinate or length to :data:`DIGITS` decimals of a mm (1e-9 mm), without trailing
+    zeros (``12.5``, ``0``, ``-3.000000001``)."""
+    s = f"{v:.{DIGITS}f}".rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
 
 
@@ -53,20 +56,35 @@ def _f10(v: float) -> str:
 
 def _pt10(p) -> str:
     """A spline's point, to 1e-10 mm: the curve a reader draws from the control points is
-    the program's to 1e-9 mm (lines and arcs are written to 1e-6 mm, :func:`_pt`)."""
+    the program's to 1e-9 mm (lines and arcs are written to 1e-9 mm, :func:`_pt`)."""
     return f"{_f10(p[0])},{_f10(-p[1])}"
 
 
 def _arc_cmd(a: Arc) -> str:
-    """SVG ``A`` commands of an arc: one below a half turn; from a half turn up, equal pieces
-    of at most a quarter turn, since an arc whose end points are (nearly) opposite or equal
-    does not fix its circle for a reader (a whole turn drawn as one ``A`` is nothing at
-    all: the end equals the start)."""
+    """SVG ``A`` commands of an arc: equal pieces of at most a quarter turn.  A reader finds
+    an ``A``'s centre from its end points and radius, each rounded to 5e-10 mm (:data:`DIGITS`):
+    for a piece of sweep t the centre moves by about 5e-10 * (1 + sin(t/2)) / cos(t/2) mm,
+    1.2e-9 at a quarter turn but without bound towards a half turn (end points nearly
+    opposite: a half circle 1e-6 rad short of its half turn was read 5e-7 mm off), and a
+    whole turn drawn as one ``A`` is nothing at all (the end equals the start)."""
     r = _f(a.radius)
     sweep_flag = 0 if a.sweep > 0 else 1          # y is flipped: model ccw is SVG's negative
-    n = 1 if abs(a.sweep) < math.pi - 1e-9 else math.ceil(abs(a.sweep) / (math.pi / 2) - 1e-9)
+    n = max(1, math.ceil(abs(a.sweep) / (math.pi / 2) - 1e-9))
     step = a.sweep / n
     return "".join(f"A{r},{r} 0 0 {sweep_flag} {_pt(a.at(a.start_angle + (k + 1) * step))}"
+                   for k in range(n))
+
+
+def _ellipse_cmd(s: EllipticArc) -> str:
+    """SVG ``A rx ry rotation`` commands of an elliptical arc: equal pieces of at most a
+    quarter turn of its parameter (as :func:`_arc_cmd`), the rotation in degrees, y flipped."""
+    e = s.curve
+    rx, ry = _f(e.rx), _f(e.ry)
+    rot = _f(-math.degrees(e.rotation))
+    sweep_flag = 0 if s.sweep > 0 else 1
+    n = max(1, math.ceil(abs(s.sweep) / (math.pi / 2) - 1e-9))
+    step = s.sweep / n
+    return "".join(f"A{rx},{ry} {rot} 0 {sweep_flag} {_pt(e.at(s.start_param + (k + 1) * step))}"
                    for k in range(n))
 
 
@@ -87,7 +105,8 @@ def segments_d(segments, closed: bool) -> str:
         if isinstance(s, Spline):         # each span one cubic Bézier: the curve itself
             out += [f"C{_pt10(b[1])} {_pt10(b[2])} {_pt10(b[3])}" for b in s.spans]
         else:
-            out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else _arc_cmd(s))
+            out.append(f"L{_pt(s.end)}" if isinstance(s, Line) else
+                       _ellipse_cmd(s) if isinstance(s, EllipticArc) else _arc_cmd(s))
         here = s.end
     if closed and segments and not isinstance(segments[-1], Circle):
         out.append("Z")
