@@ -22,6 +22,7 @@ if not STDLIB.exists():
 
 MAX_IMPORT_BYTES = 1_000_000     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written
+MAX_DRAWING_BYTES = 5_000_000    # size of one DXF or SVG drawing (Drawing2D, `aidl import`)
 _SANDBOX_HINT = ("import only .aidl files in this file's folder tree (a relative path without "
                  "`..` leaving it), or `std/NAME.aidl`")
 
