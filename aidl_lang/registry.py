@@ -114,6 +114,8 @@ BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate"
                 "top_left": "point", "top_right": "point", "bottom_left": "point",
                 "bottom_right": "point"}
 STRUCTURE_MEMBERS = {"bb": "bbox"}
+DRAWING_MEMBERS = {"outlines": "shapes", "circles": "circles", "paths": "curves",
+                   "origin": "point", "bb": "bbox"}
 
 
 def _p(*variants, doc, members=None):
@@ -182,6 +184,14 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
+    "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
+                     A("id", "any", None), A("units", "string", None), A("at", "point", None),
+                     A("rotation", "angle", 0.0)],
+                    doc="A DXF or SVG drawing (a path next to the program or below it) as "
+                        "exact lines, arcs, circles and splines, moved rigidly by `at` (a "
+                        "starting guess; rotation held); layer=, color=, id= select; "
+                        "units= overrides the file's unit. Inner loops are holes.",
+                    members=DRAWING_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                  doc="A smooth curve through the points; closed=true: an outline.",
                  members=SPLINE_MEMBERS),
