@@ -304,7 +304,8 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
     msp = doc.modelspace()
     if layers is not None:
         known = {ly.dxf.name.lower() for ly in doc.layers}
-        missing = sorted(layers - known)
+        missing = [ly for ly in ([layer] if isinstance(layer, str) else layer)
+                   if ly.lower() not in known]
         if missing and not any(e.dxf.layer.lower() in layers for e in msp):
             from ..diagnostics import did_you_mean
             sugg = did_you_mean(missing[0], [ly.dxf.name for ly in doc.layers])
@@ -480,16 +481,18 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
         raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
                            "save it as plain SVG") from None
     notes: list[Note] = []
-    px_mm = 25.4 / 96
+    # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
+    # user unit) and apply the exact mm per user unit from the width attribute and viewBox
+    vb = getattr(svg, "viewbox", None)
+    k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
     if unit is not None:
-        vb = getattr(svg, "viewbox", None)
-        per_px = 1.0
-        if vb is not None and svg.width:
-            per_px = vb.width / svg.width
-        scale = per_px * UNIT_MM[unit]
+        mm_per_user = UNIT_MM[unit]
     else:
-        scale = px_mm
         unit = "mm"
+        mm_per_user = _css_mm(svg.values.get("width"), vb.width if vb is not None else None)
+        if mm_per_user is None:
+            mm_per_user = k * 25.4 / 96
+    scale = mm_per_user / k
     roots = [svg]
     for sel, what in ((ident, "id"), (layer, "layer")):
         if sel is None:
@@ -569,6 +572,24 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
             _svg_path(S, S.Path(el), P, pieces, loops, skipped)
     _skip_notes(skipped, notes, name)
     return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+
+
+def _css_mm(width, vb_width) -> float | None:
+    """Millimetres per user unit from the root ``width`` (a CSS length: mm, cm, in, pt, pc,
+    px or a bare number, px) over the ``viewBox`` width (none: one user unit is one px)."""
+    import re
+    if width is None:
+        return (25.4 / 96) if vb_width is None else None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(mm|cm|in|pt|pc|px|)\s*", str(width))
+    if not m:
+        return None
+    try:
+        w = float(m.group(1))
+    except ValueError:
+        return None
+    per = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96,
+           "": 25.4 / 96}[m.group(2)]
+    return w * per / vb_width if vb_width else per
 
 
 def _svg_path(S, path, P, pieces, loops, skipped) -> None:
