@@ -261,7 +261,8 @@ def _indent(text: str, pad: str) -> str:
 _KINDS = {"primitive": "shape", "constraint": "constraint", "structural": "structural relation",
           "operation": "operation"}
 _MEMBER_KINDS = {"point": "points", "points": "point lists", "line": "lines",
-                 "lines": "line lists"}
+                 "lines": "line lists", "shapes": "shape lists", "circles": "circle lists",
+                 "curves": "curve lists"}
 
 
 def _member_text(members: dict[str, str]) -> str:
@@ -668,6 +669,11 @@ EXAMPLES: dict[str, str] = {
     "Polygon": _solid("p = Polygon([(0, 0), (30, 0), (30, 10), (10, 20)])   # rigid: keeps "
                       "its shape", "bracket"),
     "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)", "leaf"),
+    "Drawing2D": _solid("board = Drawing2D(\"std/drawings/pcb_board.dxf\", layer=\"Edge.Cuts\", "
+                        "construction=true)\nbody = Offset(board.outlines[0], 3)   # the "
+                        "outline + 3 mm\nfor c in board.circles {\n    hole h { p = Circle("
+                        "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}\n"
+                        "Fixed(board.origin)", "lid"),
     "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"

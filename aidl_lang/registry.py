@@ -187,10 +187,8 @@ _DEFS = {
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
                      A("rotation", "angle", 0.0)],
-                    doc="A DXF or SVG drawing (a path next to the program or below it) as "
-                        "exact lines, arcs, circles and splines, moved rigidly by `at` (a "
-                        "starting guess; rotation held); layer=, color=, id= select; "
-                        "units= overrides the file's unit. Inner loops are holes.",
+                    doc="A .dxf/.svg file beside the program as exact curves; inner loops "
+                        "are holes.",
                     members=DRAWING_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                  doc="A smooth curve through the points; closed=true: an outline.",

@@ -189,7 +189,8 @@ DRAWING_EXTS = (".dxf", ".svg")
 def load_drawing(raw: str, importer: str | None) -> tuple[Path, bytes]:
     """Resolve and read the drawing ``raw`` named by ``Drawing2D("raw")`` in ``importer``
     (None: a program without a file, read relative to the working folder): the same sandbox
-    as :func:`resolve_import` — a relative path inside the program's folder tree whose real
+    as :func:`resolve_import` — a relative path inside the program's folder tree (or
+    ``std/drawings/NAME``, the sample drawings bundled with the standard library) whose real
     path is a regular ``.dxf`` or ``.svg`` file of at most :data:`MAX_DRAWING_BYTES`, opened
     once, non-blocking.  Returns ``(real path, bytes)``; raises :class:`ImportRefused` with
     code ``E0130`` and a message naming only the path as written."""
@@ -199,11 +200,15 @@ def load_drawing(raw: str, importer: str | None) -> tuple[Path, bytes]:
                             f"cannot be in a path", hint=hint, code="E0130")
     if not raw.lower().endswith(DRAWING_EXTS):
         raise ImportRefused(f"`{raw}` is not a .dxf or .svg drawing", hint=hint, code="E0130")
-    base = os.path.dirname(os.path.realpath(importer)) if importer and not importer.startswith("<") \
-        else os.path.realpath(os.getcwd())
+    if raw.startswith("std/"):          # the sample drawings bundled with the library
+        base, raw_rel = str(STDLIB.resolve()), raw[4:]
+    else:
+        base = os.path.dirname(os.path.realpath(importer)) if importer and \
+            not importer.startswith("<") else os.path.realpath(os.getcwd())
+        raw_rel = raw
     if os.path.isabs(raw) or raw.startswith("~"):
         raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
-    lexical = os.path.normpath(os.path.join(base, raw))
+    lexical = os.path.normpath(os.path.join(base, raw_rel))
     if not _inside(lexical, base):
         raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
     if not os.path.lexists(lexical):

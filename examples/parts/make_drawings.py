@@ -7,7 +7,7 @@
 * ``logo.svg``: a leaf logo, 24 mm wide (``width="24mm"`` over a 240-unit ``viewBox``):
   cubic Béziers, a circular arc and a circle.  Used by ``examples/logo_plate.aidl``.
 
-Copies go to ``docs/drawings/`` for the documentation's examples.
+Copies go to ``stdlib/drawings/`` (``Drawing2D("std/drawings/...")``) for the docs and ``aidl docs``.
 ``python examples/parts/make_drawings.py``
 """
 from __future__ import annotations
@@ -18,7 +18,7 @@ from pathlib import Path
 import ezdxf
 
 HERE = Path(__file__).resolve().parent
-DOCS = HERE.parent.parent / "docs" / "drawings"
+DOCS = HERE.parent.parent / "stdlib" / "drawings"
 
 W, H, R = 64.0, 42.0, 3.0            # board size and corner radius, mm
 HOLES = [(3.5, 3.5), (W - 3.5, 3.5), (W - 3.5, H - 3.5), (3.5, H - 3.5)]
