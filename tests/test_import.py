@@ -14,6 +14,10 @@ from dxf_compare import curves, unmatched
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))
 AIDL = [sys.executable, "-m", "aidl_lang.cli"]
+# Examples whose drawing holds curves the language's own forms cannot write exactly: the
+# logo plate's SVG logo is cubic Béziers (kept exact by Drawing2D, but a Spline statement is
+# the interpolating spline through points, which a free Bézier is not)
+NOT_EXACT_IN_THE_LANGUAGE = {"logo_plate"}
 
 
 def run(*args, cwd=None):
@@ -32,14 +36,21 @@ def test_round_trip_every_example(example, tmp_path):
     assert res.ok
     first.write_text(res.to_dxf())
     text, notes = import_drawing(first.read_bytes(), "a.dxf")
-    assert not notes, notes
     again = aidl_lang.compile(text, path=tmp_path / "a.aidl")
     assert again.ok, [str(d) for d in again.errors]
     second.write_text(again.to_dxf())
     a, b = curves(first), curves(second)
     assert a, "the example drew nothing"
     left, extra = unmatched(a, b)
-    assert not left and not extra, (left[:3], extra[:3])
+    assert not extra, extra[:3]
+    if example.stem in NOT_EXACT_IN_THE_LANGUAGE:
+        # the SVG logo's cubic Béziers are no interpolating Spline: left out, said so, and
+        # nothing else differs
+        assert notes and all("not an interpolating spline" in n.message for n in notes)
+        assert left and {c[0] for c in left} == {"S"}
+        return
+    assert not notes, notes
+    assert not left, left[:3]
 
 
 def test_cli_import_writes_a_program_that_checks(tmp_path):
