@@ -104,3 +104,105 @@ def test_bulges_splines_and_units(tmp_path):
     assert isinstance(s, Spline)
     assert s.spans[0][1] == pytest.approx((6 * 25.4, 25.4), abs=1e-12)
     assert d.box() == pytest.approx((0, -0.5 * 25.4 + 0.0, 8 * 25.4, 2 * 25.4), abs=0.5 * 25.4)
+
+
+# ------------------------------------------------------------------ Drawing2D in programs
+BOARD = ROOT / "examples" / "parts" / "pcb_board.dxf"
+
+
+def test_enclosure_holes_sit_on_the_board_holes(tmp_path):
+    """examples/pcb_enclosure.aidl: every standoff hole of the lid's DXF is centred on a
+    mounting hole of the board's DXF to 1e-9 mm, and the lid is the board outline + 3 mm."""
+    import aidl_lang
+    res = aidl_lang.compile(path=ROOT / "examples" / "pcb_enclosure.aidl")
+    assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
+    out = tmp_path / "lid.dxf"
+    out.write_text(res.to_dxf())
+    board = [e for e in ezdxf.readfile(BOARD).modelspace().query("CIRCLE")]
+    lid = [e for e in ezdxf.readfile(out).modelspace().query("CIRCLE")]
+    assert len(board) == len(lid) == 4
+    for b in board:
+        d = min(abs(complex(l.dxf.center.x, l.dxf.center.y) - complex(b.dxf.center.x, b.dxf.center.y)) for l in lid)
+        assert d <= 1e-9
+    assert all(l.dxf.radius == pytest.approx(1.7, abs=1e-12) for l in lid)
+    ext = ezdxf.readfile(out).header
+    x0, y0 = list(ext["$EXTMIN"])[:2]
+    x1, y1 = list(ext["$EXTMAX"])[:2]
+    # the board is 64 x 42 mm from (0, 0); the lid 3 mm more all round, the USB notch inside
+    assert (x0, y0, x1, y1) == pytest.approx((-3, -3, 67, 45), abs=1e-9)
+
+
+def _compile(tmp_path, src):
+    import shutil
+    import aidl_lang
+    shutil.copyfile(BOARD, tmp_path / "board.dxf")
+    shutil.copyfile(ROOT / "examples" / "parts" / "logo.svg", tmp_path / "logo.svg")
+    return aidl_lang.compile(src, path=tmp_path / "main.aidl")
+
+
+def test_drawing_moves_rigidly_with_its_constraints(tmp_path):
+    res = _compile(tmp_path, """solid s {
+    d = Drawing2D("board.dxf", layer="Edge.Cuts")
+    d.bb.left == 30
+    d.bb.bottom == -10
+    assert d.bb.width == 64 mm
+    assert d.circles[0].radius == 1.6 mm
+    assert d.circles[0].center.x == 33.5 mm
+}""")
+    assert res.ok and not res.errors, [str(d) for d in res.diagnostics]
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    cs = sorted((round(c.dxf.center[0], 9), round(c.dxf.center[1], 9))
+                for c in ezdxf.readfile(out).modelspace().query("CIRCLE"))
+    assert cs == [(33.5, -6.5), (33.5, 28.5), (90.5, -6.5), (90.5, 28.5)]
+
+
+def test_drawing_as_a_hole_and_turned(tmp_path):
+    res = _compile(tmp_path, """solid s {
+    body = Rectangle(center=(0, 0), width=160, height=160)
+    Fixed(body)
+    hole cut { d = Drawing2D("board.dxf", layer="Edge.Cuts", rotation=90 deg) }
+    Fixed(cut.d.origin)
+}""")
+    assert res.ok, [str(d) for d in res.diagnostics]
+    assert {d.code for d in res.diagnostics} == {"W0504"}     # the four islands
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    from aidl_lang.drawing import read_drawing
+    d = read_drawing(out.read_bytes(), "s.dxf")
+    # the plate, and the board's outline turned 90 degrees about the origin cut out of it
+    # (the board's own holes are holes of the cut: material again, as islands)
+    assert d.box() == pytest.approx((-80, -80, 80, 80), abs=1e-9)
+    inner = d.outlines[1]
+    from aidl_lang.drawing.read import _segs_box
+    assert _segs_box(inner.segments) == pytest.approx((-42, 0, 0, 64), abs=1e-9)
+    assert sorted((round(c.center[0], 9), round(c.center[1], 9)) for c in d.circles) == \
+        [(-38.5, 3.5), (-38.5, 60.5), (-3.5, 3.5), (-3.5, 60.5)]
+
+
+def test_svg_logo_keeps_its_cubics_and_units(tmp_path):
+    """24 mm over a 240-unit viewBox: 0.1 mm per unit, y turned up; the path's C commands
+    come out as DXF SPLINE pieces with the same control points."""
+    res = _compile(tmp_path, """drawing s {
+    d = Drawing2D("logo.svg", id="leaf")
+    Fixed(d.origin)
+}""")
+    assert res.ok and not res.diagnostics, [str(x) for x in res.diagnostics]
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    ctrl = [[(round(p[0], 9), round(p[1], 9)) for p in e.control_points]
+            for e in ezdxf.readfile(out).modelspace().query("SPLINE")]
+    want = [(12.0, -2.0), (19.0, -6.0), (21.0, -15.0), (12.0, -22.0)]
+    assert any(c == want or c == want[::-1] for c in ctrl), ctrl
+
+
+def test_drawing_selects_by_colour_and_units_override(tmp_path):
+    from aidl_lang.drawing import read_drawing
+    doc = ezdxf.new("R2010")
+    msp = doc.modelspace()
+    msp.add_circle((0, 0), 1, dxfattribs={"color": 1})
+    msp.add_circle((5, 0), 2, dxfattribs={"color": 3})
+    p = tmp_path / "c.dxf"
+    doc.saveas(p)
+    d = read_drawing(p.read_bytes(), "c.dxf", color=3, unit="in")
+    assert [(c.center, c.radius) for c in d.circles] == [((127.0, 0.0), 50.8)]
