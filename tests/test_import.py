@@ -206,3 +206,35 @@ def test_drawing_selects_by_colour_and_units_override(tmp_path):
     doc.saveas(p)
     d = read_drawing(p.read_bytes(), "c.dxf", color=3, unit="in")
     assert [(c.center, c.radius) for c in d.circles] == [((127.0, 0.0), 50.8)]
+
+
+def test_cli_import_refuses_bad_input_and_writes_nothing(tmp_path):
+    r = run("import", "nope.dxf", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "error[E0130]" in r.stderr and "nope.dxf" in r.stderr
+    (tmp_path / "junk.dxf").write_bytes(b"\x00garbage")
+    r = run("import", "junk.dxf", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "not a readable DXF" in r.stderr
+    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 5_000_001)
+    r = run("import", "big.svg", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "larger than 5000000 bytes" in r.stderr
+    assert not (tmp_path / "x.aidl").exists()
+
+
+def test_too_many_entities_is_refused(tmp_path, monkeypatch):
+    from aidl_lang.drawing import DrawingError, read_drawing
+    from aidl_lang.drawing import read as R
+    doc = ezdxf.new("R2010")
+    for i in range(30):
+        doc.modelspace().add_line((i, 0), (i, 1))
+    p = tmp_path / "many.dxf"
+    doc.saveas(p)
+    monkeypatch.setattr(R, "MAX_ENTITIES", 20)
+    with pytest.raises(DrawingError) as e:
+        read_drawing(p.read_bytes(), "many.dxf")
+    assert e.value.code == "E0130" and "more than 20 entities" in e.value.message
+
+
+def test_synonyms_name_the_drawing_form(tmp_path):
+    res = _compile(tmp_path, 'solid s {\n    d = ImportDXF("board.dxf", layer="Edge.Cuts")\n'
+                             '    Fixed(d.origin)\n}')
+    assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
