@@ -66,8 +66,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "fmt", "lsp", "serve", "mcp", "batch",
-               "import", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "lsp", "serve", "mcp",
+               "batch", "prompt", "generate", "eval")
 
 
 class _Unused:
