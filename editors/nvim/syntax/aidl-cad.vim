@@ -13,11 +13,11 @@ syntax keyword aidlCadOperator and not or
 syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
-syntax keyword aidlCadPrimitive Arc ArcSlot BSpline Circle ConvexHull CubicSpline Curve Ellipse
-syntax keyword aidlCadPrimitive Expand FitSpline Grow Hull Inset Interpolate InterpolatedCurve Line
-syntax keyword aidlCadPrimitive Offset Outset Point Polygon Rectangle RegularPolygon RoundedRectangle Shell
-syntax keyword aidlCadPrimitive Shrink Slot SmoothCurve Spline Star Text Trapezoid Triangle
-syntax keyword aidlCadPrimitive convex_hull
+syntax keyword aidlCadPrimitive Arc ArcSlot BSpline Circle ConvexHull CubicSpline Curve DXF
+syntax keyword aidlCadPrimitive Drawing2D Ellipse Expand FitSpline Grow Hull ImportDXF ImportDrawing
+syntax keyword aidlCadPrimitive ImportSVG Inset Interpolate InterpolatedCurve Line Offset Outset Point
+syntax keyword aidlCadPrimitive Polygon Rectangle RegularPolygon RoundedRectangle SVG Shell Shrink Slot
+syntax keyword aidlCadPrimitive SmoothCurve Spline Star Text Trapezoid Triangle convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
 syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
