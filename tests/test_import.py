@@ -238,3 +238,26 @@ def test_synonyms_name_the_drawing_form(tmp_path):
     res = _compile(tmp_path, 'solid s {\n    d = ImportDXF("board.dxf", layer="Edge.Cuts")\n'
                              '    Fixed(d.origin)\n}')
     assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
+
+
+def test_svg_selects_by_inkscape_layer_and_colour_and_skips_elliptical_arcs(tmp_path):
+    from aidl_lang.drawing import read_drawing
+    svg = b"""<svg xmlns="http://www.w3.org/2000/svg"
+     xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     width="100mm" height="50mm" viewBox="0 0 100 50">
+  <g inkscape:label="Cut" id="layer1">
+    <rect x="10" y="10" width="20" height="10" stroke="#ff0000" fill="none"/>
+    <circle cx="50" cy="25" r="5" stroke="#0000ff" fill="none"/>
+  </g>
+  <g id="layer2"><path d="M 0 0 A 10 5 0 0 1 20 0" stroke="#ff0000" fill="none"/>
+    <text x="1" y="1">hi</text></g>
+</svg>"""
+    d = read_drawing(svg, "a.svg", layer="Cut")
+    assert len(d.outlines) == 1 and len(d.circles) == 1
+    assert d.circles[0].center == pytest.approx((50, -25), abs=1e-12)
+    assert d.outlines[0].area == pytest.approx(200, abs=1e-9)
+    d = read_drawing(svg, "a.svg", layer="Cut", color="#0000ff")
+    assert not d.outlines and len(d.circles) == 1
+    d = read_drawing(svg, "a.svg")
+    notes = sorted(n.message for n in d.notes)
+    assert "1 elliptical arc entity" in notes[0] and "1 text entity" in notes[1]
