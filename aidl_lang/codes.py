@@ -99,6 +99,30 @@ the file.
 folder tree; `import "std/NAME.aidl"` reads the standard library. Nothing else can be read.
 """),
     "E0115": ("import cycle", "Two files import each other. Move shared templates to a third file."),
+    "E0130": ("drawing cannot be read", """
+`Drawing2D("FILE")` (or `aidl import FILE`) names a DXF or SVG drawing that cannot be read:
+missing (with did-you-mean from the same folder), outside the program's folder tree, not a
+regular .dxf or .svg file, larger than 5000000 bytes, with more than 20000 entities, not a
+DXF or SVG its reader understands, or with an unknown unit. Nothing is written.
+
+    board = Drawing2D("../board.dxf")      # leaves the project folder: copy it next to the program
+"""),
+    "E0131": ("drawing chain not closed where an outline is needed", """
+A `Drawing2D` in a solid or hole must give closed outlines, but the drawing (or the layers,
+colours or ids selected) holds an open chain of lines, arcs or splines, or a loop that crosses
+itself. The message gives the gap and its two ends (or the crossing point) in the drawing's
+coordinates. Close the outline in the drawing, select only the closed outlines, or put the
+Drawing2D in a `drawing` (engraving) or give it `construction=true`.
+
+    solid plate { d = Drawing2D("sketch.dxf") }     # a chain with a 0.2 mm gap: close it
+"""),
+    "E0132": ("nothing selected in the drawing", """
+The layer, colour or id given to `Drawing2D` (or `aidl import --layer`) selects nothing that
+can be imported: no such layer or id (the message suggests the nearest ones), or only entities
+with no exact form here (text, hatches, dimensions).
+
+    board = Drawing2D("board.dxf", layer="Edge_Cuts")   # did you mean `Edge.Cuts`?
+"""),
     "E0116": ("top-level statement inside a structure", """
 `param`, `def`, `import` and `units` belong at the top level of a file.
 """),
@@ -565,6 +589,14 @@ outside it (accents, other scripts, tabs, symbols such as `☃`) cannot be drawn
 out; the warning names each one with its code point.
 
     drawing labels { t = Text("Café", (0, 0)) }    # `é` (U+00E9) is left out
+"""),
+    "W0130": ("drawing entities skipped", """
+Entities of a drawing that have no exact form here are skipped and counted, named by kind:
+TEXT and MTEXT (write text with `Text(...)`), rational or high-degree splines, elliptical arcs
+(a full ELLIPSE is an Ellipse), hatches, dimensions, images; a DXF without `$INSUNITS` is read
+as millimetres (give `units=`).
+
+    board = Drawing2D("board.dxf")     # warning: 2 TEXT entities of `board.dxf` skipped
 """),
     "W0402": ("open outline", """
 Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;

@@ -264,7 +264,8 @@ def _indent(text: str, pad: str) -> str:
 _KINDS = {"primitive": "shape", "constraint": "constraint", "structural": "structural relation",
           "operation": "operation", "placement": "3D placement"}
 _MEMBER_KINDS = {"point": "points", "points": "point lists", "line": "lines",
-                 "lines": "line lists"}
+                 "lines": "line lists", "shapes": "shape lists", "circles": "circle lists",
+                 "curves": "curve lists"}
 
 
 def _member_text(members: dict[str, str]) -> str:
@@ -770,6 +771,11 @@ EXAMPLES: dict[str, str] = {
     "Stroke": _solid("a = Arc(center=(0, 8), radius=8, start_angle=-90 deg, end_angle=90 deg)\n"
                      "b = Arc(center=(0, -8), radius=8, start_angle=90 deg, end_angle=270 deg)\n"
                      "s = Stroke([a, b], width=3)    # an S, 3 mm wide, round ends", "hook"),
+    "Drawing2D": _solid("board = Drawing2D(\"std/drawings/pcb_board.dxf\", layer=\"Edge.Cuts\", "
+                        "construction=true)\nbody = Offset(board.outlines[0], 3)   # the "
+                        "outline + 3 mm\nfor c in board.circles {\n    hole h { p = Circle("
+                        "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}\n"
+                        "Fixed(board.origin)", "lid"),
     "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"

@@ -116,6 +116,8 @@ BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate"
                 "top_left": "point", "top_right": "point", "bottom_left": "point",
                 "bottom_right": "point"}
 STRUCTURE_MEMBERS = {"bb": "bbox"}
+DRAWING_MEMBERS = {"outlines": "shapes", "circles": "circles", "paths": "curves",
+                   "origin": "point", "bb": "bbox"}
 
 
 def _p(*variants, doc, members=None):
@@ -185,6 +187,12 @@ _DEFS = {
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses.",
                   members=POLY_MEMBERS),
+    "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
+                     A("id", "any", None), A("units", "string", None), A("at", "point", None),
+                     A("rotation", "angle", 0.0)],
+                    doc="A .dxf/.svg file beside the program as exact curves; inner loops "
+                        "are holes.",
+                    members=DRAWING_MEMBERS),
     "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                    doc="Open chain of lines.",
                    members=SPLINE_MEMBERS),
@@ -420,6 +428,11 @@ SYNONYMS: dict[str, str] = {
     "Expand": "Offset",
     "Shrink": "Inset",
     "ConvexHull": "Hull",
+    "ImportDXF": "Drawing2D",
+    "ImportSVG": "Drawing2D",
+    "ImportDrawing": "Drawing2D",
+    "DXF": "Drawing2D",
+    "SVG": "Drawing2D",
     "convex_hull": "Hull",
     "RectangularPattern": "GridPattern",
     "ArrayPattern": "GridPattern",

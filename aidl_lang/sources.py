@@ -21,6 +21,7 @@ if not STDLIB.exists():
 
 MAX_IMPORT_BYTES = 1_000_000     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written
+MAX_DRAWING_BYTES = 5_000_000    # size of one DXF or SVG drawing (Drawing2D, `aidl import`)
 _SANDBOX_HINT = ("import only .aidl files in this file's folder tree (a relative path without "
                  "`..` leaving it), or `std/NAME.aidl`")
 
@@ -186,3 +187,65 @@ def decode_program(data: bytes, shown: str, keep_bom: bool = False) -> str:
         raise SourceRefused(f"cannot read `{shown}`: not UTF-8 text ({e.reason} at byte "
                             f"{e.start})") from None
     return text[1:] if text.startswith("\ufeff") and not keep_bom else text
+
+
+DRAWING_EXTS = (".dxf", ".svg")
+
+
+def load_drawing(raw: str, importer: str | None) -> tuple[Path, bytes]:
+    """Resolve and read the drawing ``raw`` named by ``Drawing2D("raw")`` in ``importer``
+    (None: a program without a file, read relative to the working folder): the same sandbox
+    as :func:`resolve_import` — a relative path inside the program's folder tree (or
+    ``std/drawings/NAME``, the sample drawings bundled with the standard library) whose real
+    path is a regular ``.dxf`` or ``.svg`` file of at most :data:`MAX_DRAWING_BYTES`, opened
+    once, non-blocking.  Returns ``(real path, bytes)``; raises :class:`ImportRefused` with
+    code ``E0130`` and a message naming only the path as written."""
+    hint = "give a .dxf or .svg file in this program's folder or below it (a relative path)"
+    if len(raw) > MAX_IMPORT_PATH or "\0" in raw or "\\" in raw:
+        raise ImportRefused(f"drawing path `{raw[:80]}` is too long or has a character that "
+                            f"cannot be in a path", hint=hint, code="E0130")
+    if not raw.lower().endswith(DRAWING_EXTS):
+        raise ImportRefused(f"`{raw}` is not a .dxf or .svg drawing", hint=hint, code="E0130")
+    if raw.startswith("std/"):          # the sample drawings bundled with the library
+        base, raw_rel = str(STDLIB.resolve()), raw[4:]
+    else:
+        base = os.path.dirname(os.path.realpath(importer)) if importer and \
+            not importer.startswith("<") else os.path.realpath(os.getcwd())
+        raw_rel = raw
+    if os.path.isabs(raw) or raw.startswith("~"):
+        raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
+    lexical = os.path.normpath(os.path.join(base, raw_rel))
+    if not _inside(lexical, base):
+        raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
+    if not os.path.lexists(lexical):
+        folder = os.path.dirname(lexical)
+        cands = []
+        if _inside(os.path.realpath(folder), base) and os.path.isdir(folder):
+            try:
+                cands = sorted(n for n in os.listdir(folder)
+                               if n.lower().endswith(DRAWING_EXTS))[:200]
+            except OSError:
+                cands = []
+        from .diagnostics import did_you_mean
+        raise ImportRefused(f"cannot find the drawing `{raw}`",
+                            hint="the path is relative to this program's folder",
+                            suggestions=did_you_mean(os.path.basename(lexical), cands),
+                            code="E0130")
+    real = os.path.realpath(lexical)
+    if not _inside(real, base) or not real.lower().endswith(DRAWING_EXTS):
+        raise ImportRefused(f"drawing `{raw}` is not a .dxf or .svg file inside the project "
+                            f"folder", hint=hint, code="E0130")
+    from .files import FileRefused, read_file
+    try:
+        data = read_file(real, MAX_DRAWING_BYTES, follow_symlinks=False)
+    except FileRefused as e:
+        msg = str(e)
+        if "larger" in msg:
+            raise ImportRefused(f"drawing `{raw}` is larger than {MAX_DRAWING_BYTES} bytes",
+                                hint="select what you need in the drawing program and save "
+                                     "that, or split the drawing", code="E0130") from None
+        raise ImportRefused(f"cannot read the drawing `{raw}`: it is not a regular file",
+                            hint=hint, code="E0130") from None
+    except OSError:
+        raise ImportRefused(f"cannot read the drawing `{raw}`", hint=hint, code="E0130") from None
+    return Path(real), data

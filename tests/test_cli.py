@@ -304,7 +304,7 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
     samples = [["render", "a.aidl", "-o", "a.svg", "-o", "a.dxf", "--set", "w=3mm", "--dpi", "200"],
                ["check", "a.aidl", "--json", "--dof", "--budget", "2"],
                ["check", "a.aidl", "--values", "plate.bore", "--json"], ["explain", "E0202"],
-               ["docs", "SpurGear"], ["docs"],
+               ["docs", "SpurGear"], ["docs"], ["import", "b.dxf", "-o", "b.aidl", "--units", "in", "--layer", "Edge.Cuts"],
                ["parts", "a.aidl", "--json", "--set", "w=3mm"],
                ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
                ["serve", "a.aidl", "--port", "0"], ["mcp", "--root", "parts", "--budget", "2"],

@@ -886,3 +886,92 @@ def test_W0107_a_plain_number_past_a_turn_in_cos_is_radians():
     c = compile_source('import "std/gears.aidl"\nsolid g { a = spur_gear(teeth=12) }\n',
                        str(Path(__file__).parent.parent / "examples" / "g.aidl"))
     assert not [d for d in c.sink.items if d.code == "W0107"]
+
+
+# ------------------------------------------------------------------ drawings (issue 39)
+def _drawing_compile(tmp_path, body, make=None, name="d.dxf"):
+    """Compile ``solid s { <body> }`` next to a DXF written by ``make(msp)``."""
+    import ezdxf
+    from aidl_lang.pipeline import compile_source
+    if make is not None:
+        doc = ezdxf.new("R2010")
+        doc.units = 4
+        make(doc, doc.modelspace())
+        doc.saveas(tmp_path / name)
+    src = "solid s {\n    " + body + "\n}\n"
+    return compile_source(src, str(tmp_path / "main.aidl"))
+
+
+def _square(doc, msp, layer="0"):
+    msp.add_lwpolyline([(0, 0), (20, 0), (20, 20), (0, 20)], close=True,
+                       dxfattribs={"layer": layer})
+
+
+def test_E0130_missing_drawing_suggests_a_neighbour(tmp_path):
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("bord.dxf")', _square, name="board.dxf")
+    d = the_error(c, "E0130")
+    assert span4(d) == (2, 19, 2, 29)
+    assert "board.dxf" in d.suggestions
+
+
+def test_E0130_drawing_outside_the_folder_is_refused(tmp_path):
+    (tmp_path / "sub").mkdir()
+    from aidl_lang.pipeline import compile_source
+    c = compile_source('solid s { d = Drawing2D("../x.dxf") }', str(tmp_path / "sub" / "m.aidl"))
+    d = the_error(c, "E0130")
+    assert "leaves the project folder" in d.message
+
+
+def test_E0130_unreadable_and_huge_drawings(tmp_path):
+    (tmp_path / "junk.dxf").write_bytes(b"\x00\x01 not a dxf at all")
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("junk.dxf")')
+    assert "not a readable DXF" in the_error(c, "E0130").message
+    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 5_000_001)
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("big.svg")')
+    assert "larger than 5000000 bytes" in the_error(c, "E0130").message
+
+
+def test_W0130_unsupported_entities_named_and_counted(tmp_path):
+    def make(doc, msp):
+        _square(doc, msp)
+        msp.add_text("R1")
+        msp.add_text("R2")
+        msp.add_ellipse((50, 50), major_axis=(10, 0), ratio=0.5, start_param=0, end_param=1)
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf")', make)
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    msgs = sorted(d.message for d in c.sink.items if d.code == "W0130")
+    assert len(msgs) == 2
+    assert "1 ELLIPSE (elliptical arc) entity" in msgs[0] and "no exact form" in msgs[0]
+    assert "2 TEXT entities" in msgs[1] and "text is not imported" in msgs[1]
+
+
+def test_E0131_open_chain_gives_its_gap_and_where(tmp_path):
+    def make(doc, msp):
+        msp.add_lwpolyline([(0, 0), (20, 0), (20, 20), (0, 20), (0, 0.25)])
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf")', make)
+    d = the_error(c, "E0131")
+    assert "gap of 0.25 mm from (0, 0.25) to (0, 0) mm" in d.message
+    c = _drawing_compile(tmp_path, 'drawing e { d = Drawing2D("d.dxf") }', None)
+    assert c.ok                         # as an engraving an open path is fine
+
+
+def test_E0131_self_crossing_loop(tmp_path):
+    def make(doc, msp):
+        msp.add_lwpolyline([(0, 0), (20, 20), (20, 0), (0, 20)], close=True)
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf")', make)
+    d = the_error(c, "E0131")
+    assert "crosses itself at (10, 10)" in d.message
+
+
+def test_E0132_empty_or_unknown_layer(tmp_path):
+    def make(doc, msp):
+        doc.layers.add("Edge.Cuts")
+        doc.layers.add("F.SilkS")
+        _square(doc, msp, "Edge.Cuts")
+        msp.add_text("U1", dxfattribs={"layer": "F.SilkS"})
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf", layer="Edge_Cuts")', make)
+    d = the_error(c, "E0132")
+    assert "no layer `Edge_Cuts`" in d.message and "Edge.Cuts" in (d.hint or "")
+    c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf", layer="F.SilkS")')
+    d = the_error(c, "E0132")
+    assert "nothing to import" in d.message

@@ -308,3 +308,26 @@ def test_a_call_past_its_time_limit_is_stopped_and_the_next_one_runs(tmp_path, m
         assert w.seconds(None) == 30.0 and w.seconds(4) == 120.0 and w.seconds(-1) == 30.0
     finally:
         w.stop()
+
+
+def test_check_and_render_read_a_drawing_beside_the_program_inside_the_root(tmp_path):
+    """Drawing2D through the MCP tools: a DXF beside the program (given as source or path)
+    is read; one reached by a link out of the root is refused with E0130, nothing read."""
+    import shutil
+    root = tmp_path / "root"
+    (root / "parts").mkdir(parents=True)
+    shutil.copyfile(ROOT / "examples" / "parts" / "pcb_board.dxf", root / "parts" / "board.dxf")
+    prog = ('solid s {\n    d = Drawing2D("parts/board.dxf", layer="Edge.Cuts")\n'
+            '    Fixed(d.origin)\n}\n')
+    ws = T.Workspace(root)
+    doc = T.check(ws, source=prog)
+    assert doc["ok"] and doc["parts"][0]["bbox"] == pytest.approx([0, 0, 64, 42], abs=1e-9)
+    (root / "lid.aidl").write_text(prog)
+    doc, png = T.render(ws, path="lid.aidl", output="lid.dxf")
+    assert doc["ok"] and png and (root / "lid.dxf").exists()
+    outside = tmp_path / "secret.dxf"
+    shutil.copyfile(root / "parts" / "board.dxf", outside)
+    os.symlink(outside, root / "parts" / "leak.dxf")
+    doc = T.check(ws, source=prog.replace("board.dxf", "leak.dxf"))
+    assert not doc["ok"] and [d["code"] for d in doc["diagnostics"]] == ["E0130"]
+    assert "secret" not in json.dumps(doc)

@@ -66,8 +66,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "fmt", "lsp", "serve", "mcp", "batch",
-               "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "lsp", "serve", "mcp",
+               "batch", "prompt", "generate", "eval")
 
 
 class _Unused:
@@ -193,6 +193,17 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "e.g. aidl docs spur_gear; alone: the list of topics")
     dc.add_argument("name", nargs="?", default=None,
                     help="a topic (any case or style: SpurGear, spur-gear); none: list them")
+    im = add("import", help="turn a DXF or SVG drawing into an editable .aidl program",
+             description="Read FILE.dxf or FILE.svg as exact lines, arcs, circles and splines "
+                         "and write a program of the language's own shapes that renders back "
+                         "to the same geometry (docs/import.md).")
+    im.add_argument("file", metavar="FILE", help="a .dxf or .svg drawing")
+    im.add_argument("-o", "--output", metavar="PART.aidl", default=None,
+                    help="the program to write (default: FILE with .aidl; - for stdout)")
+    im.add_argument("--units", choices=["mm", "cm", "m", "in", "ft", "pt", "px"], default=None,
+                    help="the drawing's unit, instead of $INSUNITS or the SVG's width/viewBox")
+    im.add_argument("--layer", default=None,
+                    help="only this DXF layer (or SVG group id / Inkscape layer)")
     f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
@@ -714,6 +725,43 @@ def cmd_docs(args) -> int:
     return 0
 
 
+def cmd_import(args) -> int:
+    """``aidl import FILE -o PART.aidl``: exit 0 written, 1 refused (a located message on
+    stderr, nothing written)."""
+    from ..drawing.program import import_drawing
+    from ..drawing.read import DrawingError
+    from ..files import FileRefused, read_file
+    from ..sources import MAX_DRAWING_BYTES
+    src = args.file
+    try:
+        data = read_file(src, MAX_DRAWING_BYTES)
+        text, notes = import_drawing(data, src, unit=args.units, layer=args.layer)
+    except (OSError, FileRefused) as ex:
+        print(f"{src}: error[E0130]: cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}",
+              file=sys.stderr)
+        return 1
+    except DrawingError as ex:
+        print(f"{src}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
+              file=sys.stderr)
+        return 1
+    for n in notes:
+        print(f"{src}: warning[{n.code}]: {n.message}" + (f"\n  = help: {n.hint}" if n.hint else ""),
+              file=sys.stderr)
+    out = args.output or os.path.splitext(src)[0] + ".aidl"
+    if out == "-":
+        sys.stdout.write(text)
+        return 0
+    from ..files import open_dir_beneath, write_in_dir
+    folder, base = os.path.split(os.path.abspath(out))
+    dfd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    try:
+        write_in_dir(dfd, base, text.encode("utf-8"), out)
+    finally:
+        os.close(dfd)
+    print(f"wrote {out}", file=sys.stderr)
+    return 0
+
+
 def cmd_fmt(args) -> int:
     from ..editor.fmt import main as fmt_main
     return fmt_main(args.files, check=args.check)
@@ -772,7 +820,7 @@ def main(argv: list[str] | None = None) -> int:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,
                "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp,
-               "batch": cmd_batch}.get(args.cmd)
+               "batch": cmd_batch, "import": cmd_import}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]

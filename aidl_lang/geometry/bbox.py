@@ -270,6 +270,15 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
     if k == "Spline":
         _spline_candidates(g, P, x, xs, ys)
         return
+    if k == "Drawing2D":
+        from .drawing2d import local_box
+        ox, oy = P["origin"]
+        bx = g.data.get("box")
+        if bx is None:
+            bx = g.data["box"] = local_box(g.data["loops"], g.data["paths"])
+        xs += [ox + bx[0], ox + bx[2]]
+        ys += [oy + bx[1], oy + bx[3]]
+        return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))

@@ -924,6 +924,52 @@ def _text_along(ctx, g, a) -> None:
     g.data["flip"] = bool(a.get("flip"))
 
 
+def _build_Drawing2D(ctx, g, a):
+    """A drawing read by the interpreter (``a["_drawing"]``: outlines, circles, ellipses and
+    paths in mm, y up) placed rigidly at ``at`` (its origin, a starting guess) and turned by
+    the held ``rotation``.  The loops are kept exact, in the drawing's own coordinates, in
+    ``g.data`` (:mod:`.drawing2d`); circles are construction Circles whose centres are held at
+    their offsets from the origin, so ``d.circles[i].center`` can be constrained."""
+    from .drawing2d import local_parts
+    d = a["_drawing"]
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    at = a.get("at")
+    o = g.points["origin"] = ctx.point(at if at is not None else PV(0.0, 0.0), "origin")
+    ox, oy = ctx.value_of(var(o.ix)), ctx.value_of(var(o.iy))
+    loops, paths, circles, outlines = local_parts(d, rot)
+    g.data.update(loops=loops, paths=paths, file=a["file"], rotation=rot)
+    g.closed = True
+    circ = []
+    eqs = []
+    for i, c in enumerate(circles):
+        (cx, cy), r = c.center, c.radius
+        p = ctx.point(PV(ox + cx, oy + cy), f"circles[{i}].center")
+        eqs += [Equation(var(p.ix) - var(o.ix) - cx), Equation(var(p.iy) - var(o.iy) - cy)]
+        cg = Geometry("Circle", ctx.struct, g.span, points={"center": p}, construction=True)
+        cg.scalars["radius"] = ctx.new_scalar(r, "radius", held=True)
+        cg.closed = True
+        cg.data["part_of"] = g
+        circ.append(cg)
+    if eqs:
+        ctx.internal(g, eqs, "Drawing2D circles (rigid)")
+    g.data["circles"] = circ
+    subs = []
+    for lp in outlines:
+        sg = Geometry("Drawing2D", ctx.struct, g.span, points={"origin": o}, construction=True)
+        sg.data.update(loops=[lp], paths=[], circles=[], file=a["file"], rotation=rot,
+                       part_of=g)
+        sg.closed = True
+        subs.append(sg)
+    g.data["outlines"] = subs
+    ps = []
+    for segs in paths:
+        sg = Geometry("Drawing2D", ctx.struct, g.span, points={"origin": o}, construction=True)
+        sg.data.update(loops=[], paths=[segs], circles=[], file=a["file"], rotation=rot,
+                       part_of=g)
+        ps.append(sg)
+    g.data["path_parts"] = ps
+
+
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}
 
 
@@ -1067,6 +1113,13 @@ def member(g: Geometry, name: str, frame):
             return _pv(pts[0], frame)
         if name == "end":
             return _pv(pts[-1 if not g.closed else 0], frame)
+    if k == "Drawing2D":
+        if name in ("outlines", "circles"):
+            return [GeomRef(e) for e in g.data.get(name, [])]
+        if name == "paths":
+            return [GeomRef(e) for e in g.data.get("path_parts", [])]
+        if name == "origin":
+            return _pv(g.points["origin"], frame)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
     if k == "Text" and name == "center":          # the middle of the strokes' box

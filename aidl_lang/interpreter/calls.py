@@ -266,6 +266,8 @@ class Calls:
         if self.objects >= self.budget.objects:      # self.count_object(node.span), inline
             self.count_object(node.span)
         self.objects += 1
+        if kind == "Drawing2D":
+            conv = dict(conv, _drawing=self._load_drawing(conv, s, node, spans))
         try:
             g = build(self, kind, conv, node.span)
         except PrimitiveError as ex:
@@ -286,6 +288,65 @@ class Calls:
         r = _new(GeomRef)              # GeomRef(g) without the class call
         r.geom = g
         return r
+
+    def _load_drawing(self, conv, s, node, spans):
+        """The :class:`~aidl_lang.drawing.Drawing` of a ``Drawing2D`` call, read once per
+        compile per (real path, selection); its notes are warnings at the call, and an open
+        or self-crossing chain where an outline is needed is E0131 (with the gap and where)."""
+        from ..drawing import DrawingError, read_drawing
+        from ..sources import ImportRefused, load_drawing
+        at = spans.get("file", node.span)
+
+        def sel(v, what):
+            if v is None or isinstance(v, str):
+                return v
+            if isinstance(v, Q) and v.const() is not None and what == "color":
+                return int(v.const())
+            if isinstance(v, (list, tuple)):
+                return [sel(x, what) for x in v]
+            raise EvalError("E0108", f"`{what}=` of Drawing2D takes a name or a list of names"
+                            + (" (DXF colours: ACI numbers; SVG: \"#rrggbb\")" if what == "color"
+                               else ""), spans.get(what, node.span))
+        layer, color, ident = sel(conv.get("layer"), "layer"), sel(conv.get("color"), "color"), \
+            sel(conv.get("id"), "id")
+        raw = conv["file"]
+        try:
+            real, data = load_drawing(raw, self.file.path)
+        except ImportRefused as ex:
+            raise EvalError(ex.code, ex.message, at, hint=ex.hint,
+                            suggestions=ex.suggestions) if ex.suggestions else \
+                EvalError(ex.code, ex.message, at, hint=ex.hint)
+        cache = self.__dict__.setdefault("_drawings", {})
+        key = (str(real), repr(layer), repr(color), repr(ident), conv.get("units"))
+        d = cache.get(key)
+        if d is None:
+            try:
+                d = read_drawing(data, raw, layer=layer, color=color, ident=ident,
+                                 unit=conv.get("units"))
+            except DrawingError as ex:
+                raise EvalError(ex.code, ex.message, at, hint=ex.hint or None)
+            cache[key] = d
+            for n in d.notes:
+                self.sink.warning(n.code, n.message, at, hint=n.hint or None)
+        if s.kind != "drawing" and not conv.get("construction") and d.paths:
+            p = d.paths[0]
+            if p.crossing is not None:
+                x, y = p.crossing
+                raise EvalError("E0131", f"a loop of `{raw}` crosses itself at ({x:.6g}, "
+                                f"{y:.6g}) mm (drawing coordinates): it cannot be an outline "
+                                f"of {s.kind} `{s.name}`", at,
+                                hint="fix the drawing, select other layers or ids, or put "
+                                     "the Drawing2D in a `drawing` (engraving)")
+            gap = math.dist(p.start, p.end)
+            raise EvalError("E0131", f"{len(d.paths)} open chain{'s' if len(d.paths) > 1 else ''}"
+                            f" in `{raw}` where {s.kind} `{s.name}` needs closed outlines: the "
+                            f"first has a gap of {gap:.6g} mm from ({p.end[0]:.6g}, "
+                            f"{p.end[1]:.6g}) to ({p.start[0]:.6g}, {p.start[1]:.6g}) mm "
+                            f"(drawing coordinates)", at,
+                            hint="close the outline in the drawing, select only closed "
+                                 "outlines with layer=/id=, or put the Drawing2D in a "
+                                 "`drawing` (engraving) or give it construction=true")
+        return d
 
     # -- used by primitives.build
     def point(self, v: PV, label: str) -> Point:

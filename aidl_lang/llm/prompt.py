@@ -139,7 +139,8 @@ def members() -> str:
     (for Coincident, At, Distance, ...), lines (Parallel, Horizontal, Length, ...) and numbers
     (lengths, coordinates, angles: for equations).  ``.bb`` is omitted per shape: the intro says
     every geometry and structure has it.  Shapes with the same members share a row."""
-    kinds = {"point": "points", "points": "point lists", "line": "lines", "lines": "line lists"}
+    kinds = {"point": "points", "points": "point lists", "line": "lines", "lines": "line lists",
+             "shapes": "lists", "circles": "lists", "curves": "lists"}
     rows, seen = [], {}
     for e in list(ENTRIES.values()) + [None]:
         table = BBOX_MEMBERS if e is None else e.members

@@ -128,7 +128,8 @@ def build_server(root: str, budget: float = 1.0,
               dof: Dof = False, budget: Budget = None) -> str:
         """Parse, check and solve an AIDL program; write nothing.
 
-        Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder).
+        Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder);
+        a Drawing2D("x.dxf") reads a drawing beside the program (source: in the folder).
         `overrides` sets params like `aidl --set` ({"width": "40 mm"}); `dof` adds degrees of
         freedom per structure; `budget` multiplies the evaluation budget (at most 4).
         Returns JSON: ok, diagnostics (code, severity, message, span with 1-based line and

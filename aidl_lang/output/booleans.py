@@ -280,6 +280,9 @@ class Renderer:
             curve, _ = ellipse(c, float(rx), float(ry), float(rot))
             self.spline_source.setdefault(curve, g)       # located refusals name the Ellipse
             return Loop([EllipticArc(curve, 0.0, 2 * math.pi)])
+        if k == "Drawing2D":
+            loops = self.drawing2d(g)[0]
+            return loops[0] if len(loops) == 1 else None
         if k == "ArcSlot":
             # the solved start (a copy's is turned or mirrored with it), counter-clockwise
             c, s = self._pt(g.points["center"]), self._pt(g.points["start"])
@@ -315,9 +318,24 @@ class Renderer:
             return _polygon(pts)
         return None
 
+    def drawing2d(self, g: Geometry) -> tuple[list[Loop], list[list]]:
+        """The exact loops (holes clockwise) and open paths of a ``Drawing2D`` at its solved
+        origin."""
+        from ..geometry.drawing2d import moved
+        ox, oy = self._pt(g.points["origin"])
+        loops = [Loop(moved(lp.segments, ox, oy)) for lp in g.data["loops"]]
+        paths = [moved(p, ox, oy) for p in g.data["paths"]]
+        for lp in loops:
+            for sg in lp.segments:
+                if isinstance(sg, Spline):
+                    self.spline_source.setdefault(sg.curve, g)
+        return loops, paths
+
     def loops_of(self, g: Geometry) -> list[Loop]:
         """The exact outline of a shape as loops: outer ones counter-clockwise, holes
         clockwise (a shape made by Offset or Shell may have several; others have one)."""
+        if g.kind == "Drawing2D":
+            return self.drawing2d(g)[0]
         if g.kind in DERIVED:
             sec = self.derived_section(g)
             return self.exact.loops(sec) if sec is not None else []
@@ -438,6 +456,9 @@ class Renderer:
         return base + band if d > 0 else base - band
 
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        if g.kind == "Drawing2D":
+            loops = self.drawing2d(g)[0]
+            return self.exact.section(loops) if loops else None
         if g.kind in DERIVED:
             return self.derived_section(g)
         lp = self.outline(g)
@@ -570,6 +591,9 @@ class Renderer:
         seg = self.segment(g)
         if seg is None:
             return
+        self._stroke_segment(seg, style, g, out)
+
+    def _stroke_segment(self, seg, style: str, g: Geometry, out: Drawing) -> None:
         if isinstance(seg, Spline):
             self.exact.carrier_id(carrier(seg))
             out.strokes.append((style, ("spline", seg), g))
@@ -581,6 +605,18 @@ class Renderer:
                                     seg.end_angle), g))
 
     def draw_lines(self, g: Geometry, out: Drawing) -> None:
+        if g.kind == "Drawing2D":
+            loops, paths = self.drawing2d(g)
+            for lp in loops:
+                for seg in lp.segments:
+                    self.exact.carrier_id(carrier(seg))
+                pl = lp.points()
+                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
+                out.strokes.append(("drawing", ("poly", pl, lp), g))
+            for segs in paths:
+                for seg in segs:
+                    self._stroke_segment(seg, "drawing", g, out)
+            return
         if g.kind in ("Line", "Arc", "Spline") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)

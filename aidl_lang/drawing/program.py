@@ -1,0 +1,271 @@
+"""``aidl import``: a drawing turned into an editable AIDL program (docs/import.md).
+
+:func:`to_program` writes one structure per DXF layer (or one for an SVG): outer outlines are
+chains of the language's own ``Line``, ``Arc`` and ``Spline`` statements sharing their end
+points (so they close into faces), outlines inside them become ``hole`` children (a circle is a
+``Circle``), outlines inside holes become solids of their own, full ellipses are ``Ellipse``
+and open paths are drawn in a ``drawing`` child (engraving).  A layer whose name starts with
+``ENGRAVE`` (as ``aidl render`` writes them) becomes a ``drawing``.  Coordinates are written
+with Python's shortest round-trip ``repr``, so the program renders back to the same curves
+(1e-9 mm).  A spline piece that is not the interpolating cubic spline through its span ends
+has no exact form in the language: its loop is left out with a note.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+from ..geometry.curves import Arc, Circle, Line, Loop, Spline
+from .read import Drawing, Note, Outline, Path
+
+
+def _num(v: float) -> str:
+    if abs(v) < 1e-12:
+        return "0"
+    s = repr(float(v))
+    if s.endswith(".0"):
+        s = s[:-2]
+    return s
+
+
+def _pt(p) -> str:
+    return f"({_num(p[0])}, {_num(p[1])})"
+
+
+def _ident(s: str, used: set) -> str:
+    s = re.sub(r"[^A-Za-z0-9_]", "_", s).strip("_").lower() or "part"
+    if s[0].isdigit():
+        s = "l_" + s
+    if s in _KEYWORDS:
+        s += "_"
+    base, i = s, 2
+    while s in used:
+        s = f"{base}_{i}"
+        i += 1
+    used.add(s)
+    return s
+
+
+_KEYWORDS = {"solid", "hole", "drawing", "assembly", "def", "for", "in", "if", "else", "import",
+             "as", "param", "units", "true", "false", "self", "and", "or", "not", "thickness",
+             "kerf", "assert", "model"}
+
+
+def _spline_points(s: Spline, closed: bool):
+    """The points a ``Spline(...)`` statement passes through to give piece ``s`` exactly, or
+    None when the piece is not an interpolating spline of its span ends."""
+    from ..geometry.spline import SplineError, interpolate
+    spans = s.spans
+    pts = [spans[0][0]] + [b[3] for b in spans]
+    if closed:
+        pts = pts[:-1]
+    try:
+        c = interpolate(pts, closed)
+    except SplineError:
+        return None
+    got = [c.span(i) for i in range(c.n)]
+    if len(got) != len(spans):
+        return None
+    for a, b in zip(got, spans):
+        for p, q in zip(a, b):
+            if math.dist(p, q) > 1e-9:
+                return None
+    return pts
+
+
+class _Writer:
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.notes: list[Note] = []
+
+    def emit(self, depth: int, text: str) -> None:
+        self.lines.append("    " * depth + text)
+
+    def chain(self, depth: int, segs: list, closed: bool, prefix: str) -> bool:
+        """Statements for a chain of segments sharing end points; False (nothing written)
+        when a spline piece has no exact form."""
+        out: list[str] = []
+        if closed and len(segs) == 1 and isinstance(segs[0], Spline):
+            pts = _spline_points(segs[0], True)
+            if pts is None:
+                return False
+            out.append(f"{prefix}0 = Spline(points=[{', '.join(_pt(p) for p in pts)}], "
+                       f"closed=true)")
+            for t in out:
+                self.emit(depth, t)
+            return True
+        first_start = None          # expression of the chain's first point
+        prev_end = None
+        n = len(segs)
+        for i, s in enumerate(segs):
+            nm = f"{prefix}{i}"
+            start = prev_end if prev_end is not None else _pt(s.start)
+            last = closed and i == n - 1
+            end = first_start if last else _pt(s.end)
+            if isinstance(s, Line):
+                out.append(f"{nm} = Line(start={start}, end={end})")
+                cs, ce = f"{nm}.start", f"{nm}.end"
+            elif isinstance(s, Arc):
+                if abs(abs(s.sweep) - 2 * math.pi) < 1e-12:
+                    return False
+                if s.sweep > 0:
+                    out.append(f"{nm} = Arc(center={_pt(s.center)}, start={start}, end={end})")
+                    cs, ce = f"{nm}.start", f"{nm}.end"
+                else:           # an Arc runs counter-clockwise: swap the ends
+                    out.append(f"{nm} = Arc(center={_pt(s.center)}, start={end}, end={start})")
+                    cs, ce = f"{nm}.end", f"{nm}.start"
+            elif isinstance(s, Spline):
+                pts = _spline_points(s, False)
+                if pts is None:
+                    return False
+                inner = ", ".join([start] + [_pt(p) for p in pts[1:-1]] + [end])
+                out.append(f"{nm} = Spline(points=[{inner}])")
+                cs, ce = f"{nm}.start", f"{nm}.end"
+            else:
+                return False
+            if first_start is None:
+                first_start = cs
+            prev_end = ce
+        for t in out:
+            self.emit(depth, t)
+        return True
+
+
+def _inside(p, loop_pts) -> bool:
+    import numpy as np
+    x, y = p
+    P = loop_pts
+    X, Y = P[:, 0], P[:, 1]
+    X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
+    cond = (Y > y) != (Y2 > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xs = X + (y - Y) * (X2 - X) / (Y2 - Y)
+    return bool(np.count_nonzero(cond & (x < xs)) % 2)
+
+
+def _probe(segs) -> tuple[float, float]:
+    s = segs[0]
+    if isinstance(s, Circle):
+        return (s.center[0] + s.radius, s.center[1])
+    if isinstance(s, Arc):
+        return s.at(s.start_angle + s.sweep / 2)
+    if isinstance(s, Spline):
+        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at(0.5)
+    return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+
+
+def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
+    loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
+    polys = [Loop(list(segs)).points() for _, segs in loops]
+    depths = []
+    for i, (_, segs) in enumerate(loops):
+        p = _probe(segs)
+        depths.append(sum(1 for j, P in enumerate(polys) if j != i and len(P) >= 3
+                          and _inside(p, P)))
+    w.emit(depth, f"{kind} {name} {{")
+    used: set = set()
+    k = 0
+    islands = []
+    for (tag, segs), dep in zip(loops, depths):
+        k += 1
+        if kind == "drawing" or dep == 0:
+            _loop(w, depth + 1, segs, f"{tag}{k}_", None)
+        elif dep % 2 == 1:
+            _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
+        else:
+            islands.append((segs, k))
+    for cx, cy, rx, ry, rot in d.ellipses:
+        k += 1
+        w.emit(depth + 1, f"e{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+    if d.paths:
+        inner = depth + 1 if kind == "drawing" else depth + 2
+        if kind != "drawing":
+            w.emit(depth + 1, "drawing paths {")
+        for i, p in enumerate(d.paths):
+            closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+            if not w.chain(inner, p.segments, closed, f"p{i + 1}_"):
+                w.notes.append(Note("W0130", f"a path of `{name}` holds a spline piece that is "
+                                             f"not an interpolating spline: left out"))
+        if kind != "drawing":
+            w.emit(depth + 1, "}")
+    w.emit(depth, "}")
+    for segs, k in islands:
+        w.emit(depth, f"solid {name}_island{k} {{")
+        _loop(w, depth + 1, segs, f"o{k}_", None)
+        w.emit(depth, "}")
+
+
+def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> None:
+    if hole is not None:
+        w.emit(depth, f"hole {hole} {{")
+        depth += 1
+        prefix = "c" if len(segs) == 1 and isinstance(segs[0], Circle) else "e"
+    if len(segs) == 1 and isinstance(segs[0], Circle):
+        c = segs[0]
+        w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={_pt(c.center)}, "
+                      f"radius={_num(c.radius)})")
+    elif not w.chain(depth, segs, True, prefix):
+        w.notes.append(Note("W0130", "an outline holds a spline piece that is not an "
+                                     "interpolating spline (no exact form here): left out"))
+    if hole is not None:
+        w.emit(depth - 1, "}")
+
+
+def to_program(layers: list[tuple[str, Drawing]], source: str) -> tuple[str, list[Note]]:
+    """The AIDL text of a drawing read layer by layer (``(layer name, Drawing)``, in order),
+    and the notes of what was left out.  ``source``: the drawing's file name, for the
+    header comment."""
+    w = _Writer()
+    w.emit(0, f"# imported from {source} by `aidl import`: edit freely")
+    w.emit(0, "units mm")
+    used: set = set()
+    multi = len(layers) > 1
+    if multi:
+        w.emit(0, "assembly drawing_import {")
+    for layer, d in layers:
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") else "solid"
+        name = _ident(layer or "part", used)
+        _structure(w, 1 if multi else 0, kind, name, d)
+    if multi:
+        w.emit(0, "}")
+    return "\n".join(w.lines) + "\n", w.notes
+
+
+def layer_names(data: bytes, name: str) -> list[str]:
+    """The DXF layers that hold entities, in the order they first appear; ``[""]`` for SVG."""
+    if not name.lower().endswith(".dxf"):
+        return [""]
+    import io
+    from ezdxf import recover
+    try:
+        doc, _ = recover.read(io.BytesIO(data))
+    except Exception:
+        return [""]
+    seen: list[str] = []
+    for e in doc.modelspace():
+        ly = e.dxf.get("layer", "0")
+        if ly not in seen:
+            seen.append(ly)
+    return seen or [""]
+
+
+def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, color=None,
+                   ident=None) -> tuple[str, list[Note]]:
+    """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
+    notes (skipped entities, left-out loops).  Raises :class:`~.read.DrawingError`."""
+    from .read import DrawingError, read_drawing
+    layers = [layer] if layer is not None else layer_names(data, name)
+    read: list[tuple[str, Drawing]] = []
+    notes: list[Note] = []
+    for ly in layers:
+        try:
+            d = read_drawing(data, name, layer=ly or None, color=color, ident=ident, unit=unit)
+        except DrawingError as ex:
+            if ex.code == "E0132" and layer is None and len(layers) > 1:
+                continue        # a layer of only skipped entities
+            raise
+        notes += d.notes
+        read.append((ly if isinstance(ly, str) else "_".join(ly), d))
+    text, more = to_program(read, name.replace("\\", "/").rsplit("/", 1)[-1])
+    return text, notes + more

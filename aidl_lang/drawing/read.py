@@ -1,0 +1,710 @@
+"""Reading a DXF (``ezdxf``) or SVG (``svgelements``) drawing as exact curves.
+
+:func:`read_drawing` turns the bytes of a drawing into a :class:`Drawing` in millimetres with
+the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.curves.Line`,
+``Arc`` and ``Spline`` pieces, counter-clockwise, largest area first), its **circles**, its
+full **ellipses** ``(cx, cy, rx, ry, rotation)`` and its open **paths**.  Nothing is
+approximated: a DXF ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are
+arcs), ``SPLINE`` (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics), full
+``ELLIPSE``; an SVG path's lines, circular arcs, cubic and quadratic Béziers, and its
+``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline`` and ``line`` elements.  What has
+no exact form here (a rational spline, an elliptical arc, hatches, dimensions, images) is
+skipped and counted in a :class:`Note` (``W0130``); text is skipped with a note too.
+
+Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
+back to its start is an outline, otherwise a path.  A loop that crosses itself, a selection
+that finds nothing and a file past :data:`MAX_ENTITIES` raise :class:`DrawingError` (its
+``code``, ``message`` and ``hint``: the caller places it at the call).
+
+Units: DXF ``$INSUNITS`` (0, unitless, is read as millimetres with a note), the SVG's
+``width``/``height`` against its ``viewBox`` (CSS units: 96 px to the inch); ``units=``
+overrides them (for SVG: one user unit of the ``viewBox`` is one ``units``).
+"""
+from __future__ import annotations
+
+import io
+import math
+from dataclasses import dataclass, field
+
+from ..geometry.curves import Arc, Circle, Line, Loop, Spline
+from ..geometry.spline import CubicSpline
+
+JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
+MAX_ENTITIES = 20_000    # entities (DXF) or shapes (SVG) read from one drawing
+MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
+GAP_NOTE = 0.5           # mm: an open chain whose ends are this close was probably meant closed
+UNIT_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "ft": 304.8,
+           "pt": 25.4 / 72, "px": 25.4 / 96}
+
+
+# DXF $INSUNITS: (name, millimetres) exactly (ezdxf's factors are off by 1e-11 for inches)
+INSUNITS_MM = {1: ("in", 25.4), 2: ("ft", 304.8), 3: ("mi", 1609344.0), 4: ("mm", 1.0),
+               5: ("cm", 10.0), 6: ("m", 1000.0), 7: ("km", 1e6), 8: ("microinch", 25.4e-6),
+               9: ("mil", 0.0254), 10: ("yd", 914.4), 11: ("angstrom", 1e-7), 12: ("nm", 1e-6),
+               13: ("um", 1e-3), 14: ("dm", 100.0)}
+
+
+class DrawingError(Exception):
+    """A drawing that gives nothing usable: ``code`` (``E0130`` cannot read, ``E0131`` a loop
+    that crosses itself, ``E0132`` nothing selected), ``message`` and ``hint``."""
+
+    def __init__(self, code: str, message: str, hint: str = "") -> None:
+        super().__init__(message)
+        self.code, self.message, self.hint = code, message, hint
+
+
+@dataclass
+class Note:
+    """A warning about the drawing (``W0130``: entities skipped, with their count)."""
+    code: str
+    message: str
+    hint: str = ""
+
+
+@dataclass
+class Outline:
+    """A closed loop (counter-clockwise) and where it came from (``source``: entity kinds)."""
+    segments: list
+    source: str = ""
+
+    @property
+    def area(self) -> float:
+        return Loop(list(self.segments)).area
+
+
+@dataclass
+class Path:
+    """An open chain of segments, start to end."""
+    segments: list
+    source: str = ""
+    crossing: tuple | None = None       # a closed chain that crosses itself there
+
+    @property
+    def start(self):
+        return self.segments[0].start
+
+    @property
+    def end(self):
+        return self.segments[-1].end
+
+
+@dataclass
+class Drawing:
+    outlines: list = field(default_factory=list)
+    circles: list = field(default_factory=list)
+    ellipses: list = field(default_factory=list)
+    paths: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
+    unit: str = "mm"
+
+    def box(self) -> tuple[float, float, float, float] | None:
+        """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
+        bs = []
+        for o in self.outlines:
+            bs.append(_segs_box(o.segments))
+        for p in self.paths:
+            bs.append(_segs_box(p.segments))
+        for c in self.circles:
+            bs.append((c.center[0] - c.radius, c.center[1] - c.radius,
+                       c.center[0] + c.radius, c.center[1] + c.radius))
+        for cx, cy, rx, ry, rot in self.ellipses:
+            cs, sn = math.cos(rot), math.sin(rot)
+            ex, ey = math.hypot(rx * cs, ry * sn), math.hypot(rx * sn, ry * cs)
+            bs.append((cx - ex, cy - ey, cx + ex, cy + ey))
+        if not bs:
+            return None
+        return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+                max(b[3] for b in bs))
+
+    @property
+    def empty(self) -> bool:
+        return not (self.outlines or self.circles or self.ellipses or self.paths)
+
+
+def _segs_box(segs) -> tuple[float, float, float, float]:
+    xs, ys = [], []
+    for s in segs:
+        if isinstance(s, Spline):
+            b = s.box()
+            xs += [b[0], b[2]]
+            ys += [b[1], b[3]]
+        elif isinstance(s, Arc):
+            xs += [s.start[0], s.end[0]]
+            ys += [s.start[1], s.end[1]]
+            a0 = min(s.start_angle, s.end_angle)
+            for k in range(math.ceil(a0 / (math.pi / 2) - 1e-12), 
+                           math.floor(max(s.start_angle, s.end_angle) / (math.pi / 2) + 1e-12) + 1):
+                x, y = s.at(k * math.pi / 2)
+                xs.append(x)
+                ys.append(y)
+        else:
+            xs += [s.start[0], s.end[0]]
+            ys += [s.start[1], s.end[1]]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+# ------------------------------------------------------------------ segments
+def bezier_spline(spans: list, steps: list | None = None) -> Spline:
+    """A :class:`Spline` piece of cubic Bézier ``spans`` (each 4 points), ``steps`` their
+    parameter steps (the knot differences; default: each span's chord)."""
+    ctrl = [tuple(spans[0][0])]
+    for b in spans:
+        ctrl += [tuple(b[1]), tuple(b[2]), tuple(b[3])]
+    if steps is None:
+        steps = [math.dist(b[0], b[3]) or 1.0 for b in spans]
+    c = CubicSpline(tuple(ctrl), tuple(float(h) for h in steps), False)
+    return Spline(c, 0.0, float(c.n))
+
+
+def _arc_from(p, q, center, sweep) -> Arc:
+    r = 0.5 * (math.dist(p, center) + math.dist(q, center))
+    a1 = math.atan2(p[1] - center[1], p[0] - center[0])
+    return Arc((float(center[0]), float(center[1])), r, a1, sweep)
+
+
+def _bulge_arc(p, q, b) -> Arc | Line:
+    """The arc from ``p`` to ``q`` of DXF bulge ``b`` (tan of a quarter of the sweep; > 0
+    counter-clockwise)."""
+    if abs(b) < 1e-15 or p == q:
+        return Line(p, q)
+    sweep = 4 * math.atan(b)
+    d = math.dist(p, q)
+    r = d / (2 * abs(math.sin(sweep / 2)))
+    mx, my = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
+    ux, uy = (q[0] - p[0]) / d, (q[1] - p[1]) / d
+    # the centre is on the left of p->q for a counter-clockwise arc under 180 degrees
+    h = math.copysign(r * math.cos(sweep / 2), sweep)
+    c = (mx - uy * h, my + ux * h)
+    return Arc(c, r, math.atan2(p[1] - c[1], p[0] - c[0]), sweep)
+
+
+# ------------------------------------------------------------------ chains
+def _chain(pieces: list) -> tuple[list, list]:
+    """Join open pieces (lists of segments) end to end: ``(closed chains, open chains)``.
+    The pieces' ends are kept in a grid of cells :data:`JOIN_TOL` wide, so each step finds its
+    neighbours in the 3 x 3 cells around an end: linear in the pieces (20 000 loose lines join
+    in well under a second), where scanning them all at every step was quadratic."""
+    from ..geometry.curves import reverse
+    pieces = [list(p) for p in pieces]
+    used = [False] * len(pieces)
+    grid: dict = {}
+
+    def cell(p):
+        return (math.floor(p[0] / JOIN_TOL), math.floor(p[1] / JOIN_TOL))
+
+    for i, p in enumerate(pieces):
+        for q in (p[0].start, p[-1].end):
+            grid.setdefault(cell(q), []).append(i)
+
+    def near(q):
+        cx, cy = cell(q)
+        out = []
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                out += [i for i in grid.get((cx + dx, cy + dy), ()) if not used[i]]
+        return sorted(set(out))
+
+    closed, paths = [], []
+    for i0 in range(len(pieces)):
+        if used[i0]:
+            continue
+        used[i0] = True
+        cur = list(pieces[i0])
+        for forward in (True, False):
+            while math.dist(cur[0].start, cur[-1].end) > JOIN_TOL:
+                end = cur[-1].end if forward else cur[0].start
+                for i in near(end):
+                    p = pieces[i]
+                    if forward and math.dist(p[0].start, end) <= JOIN_TOL:
+                        cur += p
+                    elif forward and math.dist(p[-1].end, end) <= JOIN_TOL:
+                        cur += [reverse(s) for s in reversed(p)]
+                    elif not forward and math.dist(p[-1].end, end) <= JOIN_TOL:
+                        cur = p + cur
+                    elif not forward and math.dist(p[0].start, end) <= JOIN_TOL:
+                        cur = [reverse(s) for s in reversed(p)] + cur
+                    else:
+                        continue
+                    used[i] = True
+                    break
+                else:
+                    break
+        if math.dist(cur[0].start, cur[-1].end) <= JOIN_TOL:
+            closed.append(cur)
+        else:
+            paths.append(cur)
+    return closed, paths
+
+
+def _crossing(segs) -> tuple[float, float] | None:
+    """A point where the closed loop ``segs`` crosses itself, or None (on its chords within
+    0.005 mm of the curves)."""
+    import numpy as np
+    pts = Loop(list(segs)).points()
+    P = np.asarray(pts, dtype=float)
+    n = len(P)
+    if n < 4 or n > MAX_CROSSING_CHORDS:
+        return None
+    A, B = P, np.roll(P, -1, axis=0)
+    for i in range(n - 2):
+        j0, j1 = i + 2, n if i > 0 else n - 1
+        if j0 >= j1:
+            continue
+        a, b = A[i], B[i]
+        c, d = A[j0:j1], B[j0:j1]
+        def orient(p, q, r):
+            return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
+        o1 = orient(a, b, c)
+        o2 = orient(a, b, d)
+        o3 = orient(c, d, a)
+        o4 = orient(c, d, b)
+        hit = (o1 * o2 < 0) & (o3 * o4 < 0)
+        if hit.any():
+            k = int(np.argmax(hit))
+            t = o1[k] / (o1[k] - o2[k])
+            x, y = c[k] + t * (d[k] - c[k])
+            return float(x), float(y)
+    return None
+
+
+def _finish(pieces, loops, circles, ellipses, notes, unit, name) -> Drawing:
+    closed, open_ = _chain(pieces)
+    d = Drawing(circles=circles, ellipses=ellipses, notes=notes, unit=unit)
+    for segs, src in [(c, "") for c in closed] + loops:
+        if len(segs) == 1 and isinstance(segs[0], Circle):
+            d.circles.append(segs[0])
+            continue
+        hit = _crossing(segs)
+        if hit is not None:          # kept as a stroke; an error where an outline is needed
+            d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
+            continue
+        o = Outline(list(segs), src)
+        if o.area < 0:
+            from ..geometry.curves import reverse
+            o.segments = [reverse(s) for s in reversed(o.segments)]
+        d.outlines.append(o)
+    d.outlines.sort(key=lambda o: -abs(o.area))
+    for segs in open_:
+        d.paths.append(Path(list(segs)))
+    d.circles = [Circle(c.center, c.radius) for c in d.circles]
+    d.circles.sort(key=lambda c: (-c.radius, c.center[0], c.center[1]))
+    return d
+
+
+def open_gaps(d: Drawing) -> list[tuple[float, tuple[float, float]]]:
+    """``(gap in mm, where)`` of each open path (its end to its start)."""
+    return [(math.dist(p.start, p.end), p.end) for p in d.paths]
+
+
+# ------------------------------------------------------------------ DXF
+_SKIP_QUIET = {"POINT", "VIEWPORT", "ATTDEF", "ATTRIB", "SEQEND", "VERTEX"}
+
+
+def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing:
+    import ezdxf
+    from ezdxf import recover
+    try:
+        doc = _fast_dxf(data)
+        if doc is None:              # binary, or damaged: ezdxf's recover mode (slower)
+            doc, _aud = recover.read(io.BytesIO(data))
+    except Exception as ex:          # ezdxf raises DXFStructureError and others on garbage
+        raise DrawingError("E0130", f"`{name}` is not a readable DXF file ({type(ex).__name__})",
+                           "export it again as DXF R12 or later (ASCII or binary)") from None
+    notes: list[Note] = []
+    if unit is None:
+        code = int(doc.header.get("$INSUNITS", 0) or 0)
+        if code == 0:
+            scale, unit = 1.0, "mm"
+            notes.append(Note("W0130", f"`{name}` gives no unit ($INSUNITS = 0): read as "
+                                       f"millimetres", 'give units="in" (or another unit) '
+                                                       "to read it in another unit"))
+        else:
+            if code not in INSUNITS_MM:
+                raise DrawingError("E0130", f"`{name}` has an unknown unit ($INSUNITS = {code})",
+                                   'give units="mm" (or another unit)')
+            unit, scale = INSUNITS_MM[code]
+    else:
+        scale = UNIT_MM[unit]
+    layers = None if layer is None else {s.lower() for s in
+                                         ([layer] if isinstance(layer, str) else layer)}
+    colors = None if color is None else set([color] if isinstance(color, (int, float))
+                                             else color)
+    msp = doc.modelspace()
+    if layers is not None:
+        known = {ly.dxf.name.lower() for ly in doc.layers}
+        missing = [ly for ly in ([layer] if isinstance(layer, str) else layer)
+                   if ly.lower() not in known]
+        if missing and not any(e.dxf.layer.lower() in layers for e in msp):
+            from ..diagnostics import did_you_mean
+            sugg = did_you_mean(missing[0], [ly.dxf.name for ly in doc.layers])
+            raise DrawingError("E0132", f"`{name}` has no layer `{missing[0]}`",
+                               ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
+                               if sugg else "layers: " + ", ".join(
+                                   sorted(ly.dxf.name for ly in doc.layers))[:300])
+    pieces, loops, circles, ellipses = [], [], [], []
+    skipped: dict[str, int] = {}
+    count = 0
+
+    def P(v):
+        return (float(v[0]) * scale, float(v[1]) * scale)
+
+    def aci(e) -> int:
+        c = e.dxf.get("color", 256)
+        if c == 256:
+            try:
+                c = doc.layers.get(e.dxf.layer).dxf.color
+            except Exception:
+                c = 7
+        return abs(int(c))
+
+    def walk(entities, depth: int) -> None:
+        nonlocal count
+        for e in entities:
+            count += 1
+            if count > MAX_ENTITIES:
+                raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} entities",
+                                   "select fewer with layer= or split the drawing")
+            t = e.dxftype()
+            if t == "INSERT" and depth < 8:
+                try:
+                    walk(list(e.virtual_entities()), depth + 1)
+                except Exception:
+                    skipped["INSERT"] = skipped.get("INSERT", 0) + 1
+                continue
+            if layers is not None and e.dxf.get("layer", "0").lower() not in layers:
+                continue
+            if colors is not None and aci(e) not in colors:
+                continue
+            try:
+                one(e, t)
+            except _Skip as s:
+                skipped[s.what] = skipped.get(s.what, 0) + 1
+
+    def one(e, t) -> None:
+        ext = tuple(e.dxf.get("extrusion", (0, 0, 1))) if e.dxf.hasattr("extrusion") else (0, 0, 1)
+        if abs(ext[0]) > 1e-12 or abs(ext[1]) > 1e-12:
+            raise _Skip(t + " (not in the XY plane)")
+        flip = ext[2] < 0
+        if t == "LINE":
+            pieces.append([Line(P(e.dxf.start), P(e.dxf.end))])
+        elif t == "CIRCLE":
+            c = P(e.dxf.center)
+            circles.append(Circle((-c[0], c[1]) if flip else c, float(e.dxf.radius) * scale))
+        elif t == "ARC":
+            c = P(e.dxf.center)
+            r = float(e.dxf.radius) * scale
+            a1, a2 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
+            sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+            if flip:
+                c = (-c[0], c[1])
+                pieces.append([Arc(c, r, math.pi - a1, -sweep)])
+            else:
+                pieces.append([Arc(c, r, a1, sweep)])
+        elif t in ("LWPOLYLINE", "POLYLINE"):
+            if t == "POLYLINE" and not e.is_2d_polyline:
+                raise _Skip("POLYLINE (3D or mesh)")
+            if t == "LWPOLYLINE":
+                vs = [(P((x, y)), b) for x, y, b in e.get_points("xyb")]
+                closed = e.closed
+            else:
+                vs = [(P(v.dxf.location), v.dxf.get("bulge", 0.0)) for v in e.vertices]
+                closed = e.is_closed
+            if flip:
+                vs = [((-p[0], p[1]), -b) for p, b in vs]
+            segs = []
+            n = len(vs)
+            for i in range(n if closed else n - 1):
+                (p, b), (q, _) = vs[i], vs[(i + 1) % n]
+                if math.dist(p, q) <= 1e-12:
+                    continue
+                segs.append(_bulge_arc(p, q, b))
+            if not segs:
+                return
+            if closed or math.dist(segs[0].start, segs[-1].end) <= JOIN_TOL:
+                loops.append((segs, t))
+            else:
+                pieces.append(segs)
+        elif t == "SPLINE":
+            pieces.append([_dxf_spline(e, P)])
+        elif t == "ELLIPSE":
+            s0, s1 = e.dxf.start_param, e.dxf.end_param
+            if abs(((s1 - s0) % (2 * math.pi))) > 1e-9 and abs(abs(s1 - s0) - 2 * math.pi) > 1e-9:
+                raise _Skip("ELLIPSE (elliptical arc)")
+            c = P(e.dxf.center)
+            mx, my = float(e.dxf.major_axis[0]) * scale, float(e.dxf.major_axis[1]) * scale
+            rx = math.hypot(mx, my)
+            if flip:
+                c, mx = (-c[0], c[1]), -mx
+            ellipses.append((c[0], c[1], rx, rx * float(e.dxf.ratio), math.atan2(my, mx)))
+        elif t in ("TEXT", "MTEXT"):
+            raise _Skip(t)
+        elif t in _SKIP_QUIET:
+            return
+        else:
+            raise _Skip(t)
+
+    walk(list(msp), 0)
+    _skip_notes(skipped, notes, name)
+    return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+
+
+def _fast_dxf(data: bytes):
+    """An ASCII DXF read by ezdxf's normal loader (several times faster than its recover
+    mode), or None when that fails or the file is binary."""
+    import ezdxf
+    if data.startswith(b"AutoCAD Binary DXF"):
+        return None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        text = data.decode("cp1252", errors="replace")
+    try:
+        return ezdxf.read(io.StringIO(text))
+    except Exception:
+        return None
+
+
+class _Skip(Exception):
+    def __init__(self, what: str) -> None:
+        self.what = what
+
+
+def _skip_notes(skipped: dict, notes: list, name: str) -> None:
+    for what, n in sorted(skipped.items()):
+        if what in ("TEXT", "MTEXT", "text"):
+            notes.append(Note("W0130", f"{n} {what} {'entity' if n == 1 else 'entities'} of "
+                                       f"`{name}` skipped: text is not imported",
+                              "write the text with Text(...) in a `drawing`"))
+        else:
+            notes.append(Note("W0130", f"{n} {what} {'entity' if n == 1 else 'entities'} of "
+                                       f"`{name}` skipped: no exact form here",
+                              "convert it to lines, arcs or splines in the drawing program, "
+                              "or select other layers"))
+
+
+def _dxf_spline(e, P) -> Spline:
+    bs = e.construction_tool()
+    if bs.is_rational:
+        w = list(bs.weights())
+        if max(w) - min(w) > 1e-12 * max(w):
+            raise _Skip("SPLINE (rational)")
+    deg = bs.degree
+    if deg > 3:
+        raise _Skip(f"SPLINE (degree {deg})")
+    knots = list(bs.knots())
+    spans = []
+    for ctrl in bs.bezier_decomposition():
+        pts = [P(v) for v in ctrl]
+        if deg == 1:
+            a, b = pts
+            pts = [a, _lerp(a, b, 1 / 3), _lerp(a, b, 2 / 3), b]
+        elif deg == 2:
+            a, b, c = pts
+            pts = [a, _lerp(a, b, 2 / 3), _lerp(c, b, 2 / 3), c]
+        spans.append(pts)
+    distinct = []
+    for k in knots[deg:len(knots) - deg]:
+        if not distinct or k - distinct[-1] > 1e-15 * max(1.0, abs(k)):
+            distinct.append(k)
+    steps = [b - a for a, b in zip(distinct, distinct[1:])]
+    if len(steps) != len(spans) or min(steps, default=0) <= 0:
+        steps = None
+    return bezier_spline(spans, steps)
+
+
+def _lerp(a, b, t):
+    return (a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
+
+
+# ------------------------------------------------------------------ SVG
+def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
+    import svgelements as S
+    try:
+        svg = S.SVG.parse(io.BytesIO(data), reify=True, ppi=96.0)
+    except Exception as ex:
+        raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
+                           "save it as plain SVG") from None
+    notes: list[Note] = []
+    # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
+    # user unit) and apply the exact mm per user unit from the width attribute and viewBox
+    vb = getattr(svg, "viewbox", None)
+    k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
+    if unit is not None:
+        mm_per_user = UNIT_MM[unit]
+    else:
+        unit = "mm"
+        mm_per_user = _css_mm(svg.values.get("width"), vb.width if vb is not None else None)
+        if mm_per_user is None:
+            mm_per_user = k * 25.4 / 96
+    scale = mm_per_user / k
+    roots = [svg]
+    for sel, what in ((ident, "id"), (layer, "layer")):
+        if sel is None:
+            continue
+        wanted = [sel] if isinstance(sel, str) else list(sel)
+        found = []
+        for w in wanted:
+            el = svg.get_element_by_id(w)
+            if el is None:
+                for g in svg.elements(lambda x: isinstance(x, S.Group)):
+                    if w in (g.values.get("inkscape:label"), g.values.get(
+                            "{http://www.inkscape.org/namespaces/inkscape}label"), g.id):
+                        el = g
+                        break
+            if el is None:
+                ids = sorted({x.id for x in svg.elements() if getattr(x, "id", None)})
+                from ..diagnostics import did_you_mean
+                sugg = did_you_mean(w, ids)
+                raise DrawingError("E0132", f"`{name}` has no element or group with {what} "
+                                            f"`{w}`",
+                                   ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
+                                   if sugg else "ids: " + ", ".join(ids)[:300])
+            found.append(el)
+        roots = found
+    pieces, loops, circles, ellipses = [], [], [], []
+    skipped: dict[str, int] = {}
+    count = 0
+
+    def P(p):
+        return (float(p[0]) * scale, -float(p[1]) * scale)
+
+    def colour_ok(el) -> bool:
+        if color is None:
+            return True
+        want = {c.lower() for c in ([color] if isinstance(color, str) else color)}
+        have = set()
+        for attr in ("stroke", "fill"):
+            v = getattr(el, attr, None)
+            if v is not None and getattr(v, "value", None) is not None:
+                have.add(S.Color(v).hex.lower()[:7])
+        return bool({S.Color(w).hex.lower()[:7] for w in want} & have)
+
+    seen = set()
+    for root in roots:
+        items = [root] if isinstance(root, S.Shape) or isinstance(root, S.Text) else \
+            list(root.elements()) if hasattr(root, "elements") else \
+            list(root.select()) if hasattr(root, "select") else [root]
+        for el in items:
+            if id(el) in seen:
+                continue
+            seen.add(id(el))
+            if isinstance(el, S.Text):
+                skipped["text"] = skipped.get("text", 0) + 1
+                continue
+            if not isinstance(el, S.Shape):
+                continue
+            if el.values.get("visibility") in ("hidden", "collapse") or \
+                    el.values.get("display") == "none":
+                continue
+            if not colour_ok(el):
+                continue
+            count += 1
+            if count > MAX_ENTITIES:
+                raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} shapes",
+                                   "select fewer with id= or split the drawing")
+            if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
+                c = P((el.cx, el.cy))
+                rx, ry = float(el.rx) * scale, float(el.ry) * scale
+                rot = -float(el.rotation) if el.rotation else 0.0
+                if rx <= 0 or ry <= 0:
+                    continue
+                if abs(rx - ry) <= 1e-12 * max(rx, ry):
+                    circles.append(Circle(c, rx))
+                else:
+                    ellipses.append((c[0], c[1], rx, ry, rot))
+                continue
+            _svg_path(S, S.Path(el), P, pieces, loops, skipped)
+    _skip_notes(skipped, notes, name)
+    return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+
+
+def _css_mm(width, vb_width) -> float | None:
+    """Millimetres per user unit from the root ``width`` (a CSS length: mm, cm, in, pt, pc,
+    px or a bare number, px) over the ``viewBox`` width (none: one user unit is one px)."""
+    import re
+    if width is None:
+        return (25.4 / 96) if vb_width is None else None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(mm|cm|in|pt|pc|px|)\s*", str(width))
+    if not m:
+        return None
+    try:
+        w = float(m.group(1))
+    except ValueError:
+        return None
+    per = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96,
+           "": 25.4 / 96}[m.group(2)]
+    return w * per / vb_width if vb_width else per
+
+
+def _svg_path(S, path, P, pieces, loops, skipped) -> None:
+    cur: list = []
+
+    def flush(closed: bool) -> None:
+        nonlocal cur
+        if cur:
+            if closed or math.dist(cur[0].start, cur[-1].end) <= JOIN_TOL:
+                loops.append((cur, "path"))
+            else:
+                pieces.append(cur)
+        cur = []
+
+    for seg in path:
+        if isinstance(seg, S.Move):
+            flush(False)
+            continue
+        if isinstance(seg, S.Close):
+            if cur and math.dist(cur[-1].end, cur[0].start) > JOIN_TOL:
+                cur.append(Line(cur[-1].end, cur[0].start))
+            flush(True)
+            continue
+        a, b = P(seg.start), P(seg.end)
+        if isinstance(seg, S.Line):
+            if math.dist(a, b) > 1e-12:
+                cur.append(Line(a, b))
+        elif isinstance(seg, S.CubicBezier):
+            cur.append(bezier_spline([[a, P(seg.control1), P(seg.control2), b]]))
+        elif isinstance(seg, S.QuadraticBezier):
+            c = P(seg.control)
+            cur.append(bezier_spline([[a, _lerp(a, c, 2 / 3), _lerp(b, c, 2 / 3), b]]))
+        elif isinstance(seg, S.Arc):
+            if not seg.is_circular():
+                skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
+                flush(False)
+                continue
+            c = P(seg.center)
+            sweep = -float(seg.sweep)          # the y axis turns over
+            cur.append(_arc_from(a, b, c, sweep))
+        else:
+            skipped[type(seg).__name__] = skipped.get(type(seg).__name__, 0) + 1
+    flush(False)
+
+
+# ------------------------------------------------------------------ entry
+def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
+                 unit: str | None = None) -> Drawing:
+    """The drawing in ``data`` (``name``: its path as written, for messages; ``.dxf`` or
+    ``.svg`` decides the reader).  ``layer``: DXF layer name(s) or SVG group id / Inkscape
+    layer label(s); ``color``: DXF ACI number(s) or SVG colour(s); ``ident``: SVG element or
+    group id(s); ``unit``: overrides the file's unit.  Raises :class:`DrawingError`."""
+    if unit is not None and unit not in UNIT_MM:
+        raise DrawingError("E0130", f"unknown unit `{unit}`",
+                           "units: " + ", ".join(UNIT_MM))
+    low = name.lower()
+    if low.endswith(".dxf"):
+        if ident is not None:
+            raise DrawingError("E0130", "id= selects SVG elements; a DXF selects by layer= "
+                                        "and color=", "give layer= for a DXF")
+        d = _read_dxf(data, name, layer, color, unit)
+    elif low.endswith(".svg"):
+        d = _read_svg(data, name, layer, color, ident, unit)
+    else:
+        raise DrawingError("E0130", f"`{name}` is neither a .dxf nor a .svg file",
+                           "give a DXF or SVG drawing")
+    if d.empty:
+        what = (f" on layer {layer!r}" if layer is not None else "") + \
+               (f" with id {ident!r}" if ident is not None else "") + \
+               (f" of colour {color!r}" if color is not None else "")
+        raise DrawingError("E0132", f"nothing to import from `{name}`{what}",
+                           "select a layer, colour or id that holds lines, arcs, circles or "
+                           "splines")
+    return d

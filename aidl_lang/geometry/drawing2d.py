@@ -1,0 +1,144 @@
+"""The exact curves of a ``Drawing2D`` (a DXF or SVG drawing read by :mod:`aidl_lang.drawing`)
+in its own coordinates, turned by its rotation, and moved to where the solve puts its origin.
+
+:func:`local_parts` orders the closed loops (outlines, circles, full ellipses) by nesting:
+a loop inside an odd number of others is a hole and runs clockwise, the others
+counter-clockwise, so the loops together are one face with its holes (even-odd, as laser
+software and SVG ``fill-rule: evenodd`` read a drawing).  :func:`moved` translates exact
+segments (lines, arcs, circles and spline pieces) by the solved origin.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .curves import Arc, Circle, Line, Loop, Spline, reverse
+from .spline import CubicSpline
+from .tessellate import segments_for
+
+
+def _rot_pt(p, cs, sn):
+    return (p[0] * cs - p[1] * sn, p[0] * sn + p[1] * cs)
+
+
+def _turn(s, rot: float):
+    if rot == 0.0:
+        return s
+    cs, sn = math.cos(rot), math.sin(rot)
+    if isinstance(s, Line):
+        return Line(_rot_pt(s.start, cs, sn), _rot_pt(s.end, cs, sn))
+    if isinstance(s, Arc):
+        return Arc(_rot_pt(s.center, cs, sn), s.radius, s.start_angle + rot, s.sweep)
+    if isinstance(s, Circle):
+        return Circle(_rot_pt(s.center, cs, sn), s.radius, s.ccw)
+    c = s.curve
+    return Spline(CubicSpline(tuple(_rot_pt(p, cs, sn) for p in c.ctrl), c.h, c.closed),
+                  s.u0, s.u1)
+
+
+def _shift(s, dx: float, dy: float):
+    if isinstance(s, Line):
+        return Line((s.start[0] + dx, s.start[1] + dy), (s.end[0] + dx, s.end[1] + dy))
+    if isinstance(s, Arc):
+        return Arc((s.center[0] + dx, s.center[1] + dy), s.radius, s.start_angle, s.sweep)
+    if isinstance(s, Circle):
+        return Circle((s.center[0] + dx, s.center[1] + dy), s.radius, s.ccw)
+    c = s.curve
+    return Spline(CubicSpline(tuple((p[0] + dx, p[1] + dy) for p in c.ctrl), c.h, c.closed),
+                  s.u0, s.u1)
+
+
+def _ellipse_loop(cx, cy, rx, ry, rot) -> Loop:
+    """A full ellipse as the Ellipse primitive draws it (a polygon within the chord
+    tolerance)."""
+    n = segments_for(max(rx, ry))
+    t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+    u, v = rx * np.cos(t), ry * np.sin(t)
+    cs, sn = math.cos(rot), math.sin(rot)
+    P = [(float(cx + a * cs - b * sn), float(cy + a * sn + b * cs)) for a, b in zip(u, v)]
+    return Loop([Line(P[i], P[(i + 1) % n]) for i in range(n)])
+
+
+def _inside(p, P) -> bool:
+    x, y = p
+    X, Y = P[:, 0], P[:, 1]
+    X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
+    cond = (Y > y) != (Y2 > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xs = X + (y - Y) * (X2 - X) / (Y2 - Y)
+    return bool(np.count_nonzero(cond & (x < xs)) % 2)
+
+
+def _probe(lp: Loop):
+    s = lp.segments[0]
+    if isinstance(s, Circle):
+        return (s.center[0] + s.radius, s.center[1])
+    if isinstance(s, Arc):
+        return s.at(s.start_angle + s.sweep / 2)
+    if isinstance(s, Spline):
+        return s.curve.at((s.u0 + s.u1) / 2)
+    return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+
+
+def local_parts(d, rot: float):
+    """``(loops, paths, circles, outlines)`` of drawing ``d`` turned by ``rot`` (radians):
+    every closed loop oriented by its nesting depth (holes clockwise), the open paths (lists
+    of segments), the circles, and the outlines alone (counter-clockwise, largest first)."""
+    outlines = [Loop([_turn(s, rot) for s in o.segments]) for o in d.outlines]
+    circles = [_turn(c, rot) for c in d.circles]
+    ellipses = [_ellipse_loop(*_rot_pt((cx, cy), math.cos(rot), math.sin(rot)), rx, ry, r + rot)
+                for cx, cy, rx, ry, r in d.ellipses]
+    loops = outlines + [Loop([c]) for c in circles] + ellipses
+    polys = [lp.points() for lp in loops]
+    out = []
+    for i, lp in enumerate(loops):
+        p = _probe(lp)
+        depth = sum(1 for j, P in enumerate(polys) if j != i and len(P) >= 3 and _inside(p, P))
+        ccw = lp.area > 0
+        if (depth % 2 == 0) != ccw:
+            if len(lp.segments) == 1 and isinstance(lp.segments[0], Circle):
+                c = lp.segments[0]
+                lp = Loop([Circle(c.center, c.radius, not ccw)])
+            else:
+                lp = Loop([reverse(s) for s in reversed(lp.segments)])
+        out.append(lp)
+    paths = [[_turn(s, rot) for s in p.segments] for p in d.paths]
+    return out, paths, circles, outlines
+
+
+def moved(segments, dx: float, dy: float) -> list:
+    """``segments`` translated by ``(dx, dy)`` mm."""
+    if dx == 0.0 and dy == 0.0:
+        return list(segments)
+    return [_shift(s, dx, dy) for s in segments]
+
+
+def local_box(loops, paths) -> tuple[float, float, float, float]:
+    """The exact ``(x0, y0, x1, y1)`` of the loops and paths in the drawing's coordinates."""
+    xs, ys = [], []
+    for segs in [lp.segments for lp in loops] + list(paths):
+        for s in segs:
+            if isinstance(s, Circle):
+                xs += [s.center[0] - s.radius, s.center[0] + s.radius]
+                ys += [s.center[1] - s.radius, s.center[1] + s.radius]
+            elif isinstance(s, Spline):
+                b = s.box()
+                xs += [b[0], b[2]]
+                ys += [b[1], b[3]]
+            elif isinstance(s, Arc):
+                xs += [s.start[0], s.end[0]]
+                ys += [s.start[1], s.end[1]]
+                lo, hi = sorted((s.start_angle, s.end_angle))
+                k = math.ceil(lo / (math.pi / 2))
+                while k * math.pi / 2 <= hi:
+                    x, y = s.at(k * math.pi / 2)
+                    xs.append(x)
+                    ys.append(y)
+                    k += 1
+            else:
+                xs += [s.start[0], s.end[0]]
+                ys += [s.start[1], s.end[1]]
+    if not xs:
+        return (0.0, 0.0, 0.0, 0.0)
+    return min(xs), min(ys), max(xs), max(ys)

@@ -1,0 +1,105 @@
+"""An independent reader for round-trip tests: a DXF file's curves as canonical tuples,
+read with ezdxf alone (polylines exploded into their lines and arcs), and a matcher to 1e-9 mm."""
+from __future__ import annotations
+
+import math
+
+import ezdxf
+
+TOL = 1e-9
+
+
+def _pt(v):
+    return (float(v[0]), float(v[1]))
+
+
+def _order(pts):
+    """Points in an order that a 1e-9 mm change cannot flip."""
+    return sorted(pts, key=lambda p: (round(p[0], 6), round(p[1], 6)))
+
+
+def _key(kind, pts, extra=()):
+    return (kind, tuple(pts), tuple(extra))
+
+
+def curves(path) -> list[tuple]:
+    """``(kind, points, numbers)`` of every curve of the DXF at ``path``: a LINE's two ends
+    (sorted), an ARC's centre, its two ends (sorted) and radius, a CIRCLE's centre and radius,
+    a SPLINE's control points (in the direction that sorts first); polylines are exploded."""
+    doc = ezdxf.readfile(str(path))
+    out = []
+    todo = list(doc.modelspace())
+    while todo:
+        e = todo.pop()
+        t = e.dxftype()
+        if t in ("LWPOLYLINE", "POLYLINE"):
+            todo += list(e.virtual_entities())
+        elif t == "LINE":
+            out.append(_key("L", _order([_pt(e.dxf.start), _pt(e.dxf.end)])))
+        elif t == "ARC":
+            c, r = _pt(e.dxf.center), float(e.dxf.radius)
+            ends = []
+            for a in (e.dxf.start_angle, e.dxf.end_angle):
+                a = math.radians(a)
+                ends.append((c[0] + r * math.cos(a), c[1] + r * math.sin(a)))
+            out.append(_key("A", [c] + _order(ends), [r]))
+        elif t == "CIRCLE":
+            out.append(_key("C", [_pt(e.dxf.center)], [float(e.dxf.radius)]))
+        elif t == "SPLINE":
+            cp = [_pt(p) for p in e.control_points]
+            out.append(_key("S", cp if _order([cp[0], cp[-1]])[0] == cp[0] else cp[::-1]))
+    return out
+
+
+def merge_arcs(items: list) -> list:
+    """The arcs of ``items`` on one circle that meet end to end joined into one (a writer may
+    cut an arc over 180 degrees in two at any point): ends rounded to 1e-7 mm to pair them."""
+    arcs = [x for x in items if x[0] == "A"]
+    rest = [x for x in items if x[0] != "A"]
+    changed = True
+    while changed:
+        changed = False
+        for i, a in enumerate(arcs):
+            for j, b in enumerate(arcs):
+                if i == j or math.dist(a[1][0], b[1][0]) > TOL or abs(a[2][0] - b[2][0]) > TOL:
+                    continue
+                ea, eb = list(a[1][1:]), list(b[1][1:])
+                for p in ea:
+                    for q in eb:
+                        if math.dist(p, q) <= TOL:
+                            o1 = ea[1] if p is ea[0] else ea[0]
+                            o2 = eb[1] if q is eb[0] else eb[0]
+                            if math.dist(o1, o2) <= TOL:
+                                continue          # two halves of a circle: leave them
+                            arcs[i] = ("A", tuple([a[1][0]] + _order([o1, o2])), a[2])
+                            arcs.pop(j)
+                            changed = True
+                            break
+                    if changed:
+                        break
+                if changed:
+                    break
+            if changed:
+                break
+    return rest + arcs
+
+
+def _close(a, b) -> bool:
+    if a[0] != b[0] or len(a[1]) != len(b[1]) or len(a[2]) != len(b[2]):
+        return False
+    return (all(math.dist(p, q) <= TOL for p, q in zip(a[1], b[1]))
+            and all(abs(x - y) <= TOL for x, y in zip(a[2], b[2])))
+
+
+def unmatched(a: list, b: list) -> tuple[list, list]:
+    """The curves of ``a`` with no partner in ``b`` within 1e-9 mm, and those of ``b`` left."""
+    rest = sorted(merge_arcs(b))
+    left = []
+    for x in sorted(merge_arcs(a)):
+        for i, y in enumerate(rest):
+            if _close(x, y):
+                rest.pop(i)
+                break
+        else:
+            left.append(x)
+    return left, rest

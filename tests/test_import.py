@@ -1,0 +1,263 @@
+"""Drawings brought in (issue 39): DXF and SVG read as exact curves, `aidl import` writing a
+program that renders back to the same curves (re-read with ezdxf, 1e-9 mm)."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import ezdxf
+import pytest
+
+from dxf_compare import curves, unmatched
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))
+AIDL = [sys.executable, "-m", "aidl_lang.cli"]
+# Examples whose drawing holds curves the language's own forms cannot write exactly: the
+# logo plate's SVG logo is cubic Béziers (kept exact by Drawing2D, but a Spline statement is
+# the interpolating spline through points, which a free Bézier is not)
+NOT_EXACT_IN_THE_LANGUAGE = {"logo_plate"}
+
+
+def run(*args, cwd=None):
+    return subprocess.run(AIDL + [str(a) for a in args], capture_output=True, text=True,
+                          cwd=cwd, timeout=120)
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
+def test_round_trip_every_example(example, tmp_path):
+    """render -> DXF -> import -> render: the same curves to 1e-9 mm (both DXFs re-read with
+    ezdxf alone)."""
+    import aidl_lang
+    from aidl_lang.drawing.program import import_drawing
+    first, second = tmp_path / "a.dxf", tmp_path / "b.dxf"
+    res = aidl_lang.compile(path=example)
+    assert res.ok
+    first.write_text(res.to_dxf())
+    text, notes = import_drawing(first.read_bytes(), "a.dxf")
+    again = aidl_lang.compile(text, path=tmp_path / "a.aidl")
+    assert again.ok, [str(d) for d in again.errors]
+    second.write_text(again.to_dxf())
+    a, b = curves(first), curves(second)
+    assert a, "the example drew nothing"
+    left, extra = unmatched(a, b)
+    assert not extra, extra[:3]
+    if example.stem in NOT_EXACT_IN_THE_LANGUAGE:
+        # the SVG logo's cubic Béziers are no interpolating Spline: left out, said so, and
+        # nothing else differs
+        assert notes and all("not an interpolating spline" in n.message for n in notes)
+        assert left and {c[0] for c in left} == {"S"}
+        return
+    assert not notes, notes
+    assert not left, left[:3]
+
+
+def test_cli_import_writes_a_program_that_checks(tmp_path):
+    """`aidl import FILE.dxf -o part.aidl`, then `aidl check` and `aidl render` of it."""
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0, 0), (40, 0, 0.4), (40, 20, 0), (0, 20, 0)], format="xyb",
+                       close=True)
+    msp.add_circle((10, 10), 3)
+    doc.saveas(tmp_path / "plate.dxf")
+    r = run("import", "plate.dxf", "-o", "plate.aidl", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    text = (tmp_path / "plate.aidl").read_text()
+    assert "Arc(center=" in text and "hole hole" in text and "Circle(center=(10, 10), radius=3)" in text
+    r = run("render", "plate.aidl", "-o", "back.dxf", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    left, extra = unmatched(curves(tmp_path / "plate.dxf"), curves(tmp_path / "back.dxf"))
+    assert not left and not extra
+
+
+def _doc():
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    return doc
+
+
+def test_bulges_splines_and_units(tmp_path):
+    """An LWPOLYLINE with a bulge, a SPLINE and $INSUNITS = inches come in exactly."""
+    from aidl_lang.drawing import read_drawing
+    from aidl_lang.geometry.curves import Arc, Spline
+    doc = ezdxf.new("R2010")
+    doc.units = 1                               # inches
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0, 0), (2, 0, 1), (2, 2, 0), (0, 2, 0)], format="xyb", close=True)
+    msp.add_open_spline([(5, 0), (6, 1), (7, -1), (8, 0)], degree=3)
+    msp.add_circle((1, 1), 0.25)
+    p = tmp_path / "d.dxf"
+    doc.saveas(p)
+    d = read_drawing(p.read_bytes(), "d.dxf")
+    (o,) = d.outlines
+    arcs = [s for s in o.segments if isinstance(s, Arc)]
+    assert len(arcs) == 1
+    # bulge 1 from (2, 0) to (2, 2) inches: a half circle of radius 1 in about (2, 1) in
+    assert arcs[0].radius == pytest.approx(25.4, abs=1e-12)
+    assert arcs[0].center == pytest.approx((50.8, 25.4), abs=1e-12)
+    assert abs(arcs[0].sweep) == pytest.approx(3.141592653589793, abs=1e-12)
+    (c,) = d.circles
+    assert c.center == pytest.approx((25.4, 25.4), abs=1e-12) and c.radius == pytest.approx(6.35)
+    (path,) = d.paths
+    (s,) = path.segments
+    assert isinstance(s, Spline)
+    assert s.spans[0][1] == pytest.approx((6 * 25.4, 25.4), abs=1e-12)
+    assert d.box() == pytest.approx((0, -0.5 * 25.4 + 0.0, 8 * 25.4, 2 * 25.4), abs=0.5 * 25.4)
+
+
+# ------------------------------------------------------------------ Drawing2D in programs
+BOARD = ROOT / "examples" / "parts" / "pcb_board.dxf"
+
+
+def test_enclosure_holes_sit_on_the_board_holes(tmp_path):
+    """examples/pcb_enclosure.aidl: every standoff hole of the lid's DXF is centred on a
+    mounting hole of the board's DXF to 1e-9 mm, and the lid is the board outline + 3 mm."""
+    import aidl_lang
+    res = aidl_lang.compile(path=ROOT / "examples" / "pcb_enclosure.aidl")
+    assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
+    out = tmp_path / "lid.dxf"
+    out.write_text(res.to_dxf())
+    board = [e for e in ezdxf.readfile(BOARD).modelspace().query("CIRCLE")]
+    lid = [e for e in ezdxf.readfile(out).modelspace().query("CIRCLE")]
+    assert len(board) == len(lid) == 4
+    for b in board:
+        d = min(abs(complex(l.dxf.center.x, l.dxf.center.y) - complex(b.dxf.center.x, b.dxf.center.y)) for l in lid)
+        assert d <= 1e-9
+    assert all(l.dxf.radius == pytest.approx(1.7, abs=1e-12) for l in lid)
+    ext = ezdxf.readfile(out).header
+    x0, y0 = list(ext["$EXTMIN"])[:2]
+    x1, y1 = list(ext["$EXTMAX"])[:2]
+    # the board is 64 x 42 mm from (0, 0); the lid 3 mm more all round, the USB notch inside
+    assert (x0, y0, x1, y1) == pytest.approx((-3, -3, 67, 45), abs=1e-9)
+
+
+def _compile(tmp_path, src):
+    import shutil
+    import aidl_lang
+    shutil.copyfile(BOARD, tmp_path / "board.dxf")
+    shutil.copyfile(ROOT / "examples" / "parts" / "logo.svg", tmp_path / "logo.svg")
+    return aidl_lang.compile(src, path=tmp_path / "main.aidl")
+
+
+def test_drawing_moves_rigidly_with_its_constraints(tmp_path):
+    res = _compile(tmp_path, """solid s {
+    d = Drawing2D("board.dxf", layer="Edge.Cuts")
+    d.bb.left == 30
+    d.bb.bottom == -10
+    assert d.bb.width == 64 mm
+    assert d.circles[0].radius == 1.6 mm
+    assert d.circles[0].center.x == 33.5 mm
+}""")
+    assert res.ok and not res.errors, [str(d) for d in res.diagnostics]
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    cs = sorted((round(c.dxf.center[0], 9), round(c.dxf.center[1], 9))
+                for c in ezdxf.readfile(out).modelspace().query("CIRCLE"))
+    assert cs == [(33.5, -6.5), (33.5, 28.5), (90.5, -6.5), (90.5, 28.5)]
+
+
+def test_drawing_as_a_hole_and_turned(tmp_path):
+    res = _compile(tmp_path, """solid s {
+    body = Rectangle(center=(0, 0), width=160, height=160)
+    Fixed(body)
+    hole cut { d = Drawing2D("board.dxf", layer="Edge.Cuts", rotation=90 deg) }
+    Fixed(cut.d.origin)
+}""")
+    assert res.ok, [str(d) for d in res.diagnostics]
+    assert {d.code for d in res.diagnostics} == {"W0504"}     # the four islands
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    from aidl_lang.drawing import read_drawing
+    d = read_drawing(out.read_bytes(), "s.dxf")
+    # the plate, and the board's outline turned 90 degrees about the origin cut out of it
+    # (the board's own holes are holes of the cut: material again, as islands)
+    assert d.box() == pytest.approx((-80, -80, 80, 80), abs=1e-9)
+    inner = d.outlines[1]
+    from aidl_lang.drawing.read import _segs_box
+    assert _segs_box(inner.segments) == pytest.approx((-42, 0, 0, 64), abs=1e-9)
+    assert sorted((round(c.center[0], 9), round(c.center[1], 9)) for c in d.circles) == \
+        [(-38.5, 3.5), (-38.5, 60.5), (-3.5, 3.5), (-3.5, 60.5)]
+
+
+def test_svg_logo_keeps_its_cubics_and_units(tmp_path):
+    """24 mm over a 240-unit viewBox: 0.1 mm per unit, y turned up; the path's C commands
+    come out as DXF SPLINE pieces with the same control points."""
+    res = _compile(tmp_path, """drawing s {
+    d = Drawing2D("logo.svg", id="leaf")
+    Fixed(d.origin)
+}""")
+    assert res.ok and not res.diagnostics, [str(x) for x in res.diagnostics]
+    out = tmp_path / "s.dxf"
+    out.write_text(res.to_dxf())
+    ctrl = [[(round(p[0], 9), round(p[1], 9)) for p in e.control_points]
+            for e in ezdxf.readfile(out).modelspace().query("SPLINE")]
+    want = [(12.0, -2.0), (19.0, -6.0), (21.0, -15.0), (12.0, -22.0)]
+    assert any(c == want or c == want[::-1] for c in ctrl), ctrl
+
+
+def test_drawing_selects_by_colour_and_units_override(tmp_path):
+    from aidl_lang.drawing import read_drawing
+    doc = ezdxf.new("R2010")
+    msp = doc.modelspace()
+    msp.add_circle((0, 0), 1, dxfattribs={"color": 1})
+    msp.add_circle((5, 0), 2, dxfattribs={"color": 3})
+    p = tmp_path / "c.dxf"
+    doc.saveas(p)
+    d = read_drawing(p.read_bytes(), "c.dxf", color=3, unit="in")
+    assert [(c.center, c.radius) for c in d.circles] == [((127.0, 0.0), 50.8)]
+
+
+def test_cli_import_refuses_bad_input_and_writes_nothing(tmp_path):
+    r = run("import", "nope.dxf", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "error[E0130]" in r.stderr and "nope.dxf" in r.stderr
+    (tmp_path / "junk.dxf").write_bytes(b"\x00garbage")
+    r = run("import", "junk.dxf", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "not a readable DXF" in r.stderr
+    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 5_000_001)
+    r = run("import", "big.svg", "-o", "x.aidl", cwd=tmp_path)
+    assert r.returncode == 1 and "larger than 5000000 bytes" in r.stderr
+    assert not (tmp_path / "x.aidl").exists()
+
+
+def test_too_many_entities_is_refused(tmp_path, monkeypatch):
+    from aidl_lang.drawing import DrawingError, read_drawing
+    from aidl_lang.drawing import read as R
+    doc = ezdxf.new("R2010")
+    for i in range(30):
+        doc.modelspace().add_line((i, 0), (i, 1))
+    p = tmp_path / "many.dxf"
+    doc.saveas(p)
+    monkeypatch.setattr(R, "MAX_ENTITIES", 20)
+    with pytest.raises(DrawingError) as e:
+        read_drawing(p.read_bytes(), "many.dxf")
+    assert e.value.code == "E0130" and "more than 20 entities" in e.value.message
+
+
+def test_synonyms_name_the_drawing_form(tmp_path):
+    res = _compile(tmp_path, 'solid s {\n    d = ImportDXF("board.dxf", layer="Edge.Cuts")\n'
+                             '    Fixed(d.origin)\n}')
+    assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
+
+
+def test_svg_selects_by_inkscape_layer_and_colour_and_skips_elliptical_arcs(tmp_path):
+    from aidl_lang.drawing import read_drawing
+    svg = b"""<svg xmlns="http://www.w3.org/2000/svg"
+     xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     width="100mm" height="50mm" viewBox="0 0 100 50">
+  <g inkscape:label="Cut" id="layer1">
+    <rect x="10" y="10" width="20" height="10" stroke="#ff0000" fill="none"/>
+    <circle cx="50" cy="25" r="5" stroke="#0000ff" fill="none"/>
+  </g>
+  <g id="layer2"><path d="M 0 0 A 10 5 0 0 1 20 0" stroke="#ff0000" fill="none"/>
+    <text x="1" y="1">hi</text></g>
+</svg>"""
+    d = read_drawing(svg, "a.svg", layer="Cut")
+    assert len(d.outlines) == 1 and len(d.circles) == 1
+    assert d.circles[0].center == pytest.approx((50, -25), abs=1e-12)
+    assert d.outlines[0].area == pytest.approx(200, abs=1e-9)
+    d = read_drawing(svg, "a.svg", layer="Cut", color="#0000ff")
+    assert not d.outlines and len(d.circles) == 1
+    d = read_drawing(svg, "a.svg")
+    notes = sorted(n.message for n in d.notes)
+    assert "1 elliptical arc entity" in notes[0] and "1 text entity" in notes[1]
