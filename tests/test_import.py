@@ -261,3 +261,31 @@ def test_svg_selects_by_inkscape_layer_and_colour_and_skips_elliptical_arcs(tmp_
     d = read_drawing(svg, "a.svg")
     notes = sorted(n.message for n in d.notes)
     assert "1 elliptical arc entity" in notes[0] and "1 text entity" in notes[1]
+
+
+def test_svg_ellipses_come_in_as_exact_ellipses_turned_by_their_transform(tmp_path):
+    """A plain and a turned SVG `<ellipse>` are ELLIPSE entities in the DXF with the design's
+    centre, semi-axes and turn (the turned one was read without its transform: 4 mm instead of
+    15 mm, and both were polygons before the exact Ellipse)."""
+    import math
+    (tmp_path / "el.svg").write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" '
+        'viewBox="0 0 100 60"><rect x="0" y="0" width="100" height="60" fill="none" '
+        'stroke="black"/><ellipse cx="30" cy="30" rx="20" ry="10" fill="none" stroke="black"/>'
+        '<ellipse cx="75" cy="30" rx="8" ry="15" fill="none" stroke="black" '
+        'transform="rotate(30 75 30)"/></svg>')
+    (tmp_path / "el.aidl").write_text(
+        'units mm\nsolid plate {\n    body = Drawing2D("el.svg")\n    Fixed(body.origin)\n}\n')
+    r = run("render", "el.aidl", "-o", "el.dxf", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    got = []
+    for e in ezdxf.readfile(tmp_path / "el.dxf").modelspace().query("ELLIPSE"):
+        (cx, cy, _), (mx, my, _) = e.dxf.center, e.dxf.major_axis
+        got.append((round(cx, 9), round(cy, 9), math.hypot(mx, my), e.dxf.ratio,
+                    math.degrees(math.atan2(my, mx)) % 180))
+    got.sort()
+    assert len(got) == 2
+    (x0, y0, a0, k0, t0), (x1, y1, a1, k1, t1) = got
+    assert (x0, y0) == (30, -30) and abs(a0 - 20) < 1e-9 and abs(k0 - 0.5) < 1e-12 and t0 < 1e-9
+    assert (x1, y1) == (75, -30) and abs(a1 - 15) < 1e-9 and abs(k1 - 8 / 15) < 1e-12
+    assert abs(t1 - 60) < 1e-9                      # 90 deg turned 30 deg clockwise on screen

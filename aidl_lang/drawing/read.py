@@ -603,8 +603,10 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} shapes",
                                    "select fewer with id= or split the drawing")
             if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
-                c = P((el.cx, el.cy))
-                rx, ry = float(el.rx) * scale, float(el.ry) * scale
+                # the implicit values: centre, semi-axes and turn after the element's
+                # transform (a turned ellipse keeps its own cx, cy, rx, ry and a matrix)
+                c = P(el.implicit_center)
+                rx, ry = float(el.implicit_rx) * scale, float(el.implicit_ry) * scale
                 rot = -float(el.rotation) if el.rotation else 0.0
                 if rx <= 0 or ry <= 0:
                     continue

@@ -13,9 +13,9 @@ import math
 
 import numpy as np
 
-from .curves import Arc, Circle, Line, Loop, Spline, reverse
+from .curves import Arc, Circle, EllipticArc, Line, Loop, Spline, reverse
+from .ellipse import EllipseCurve, ellipse
 from .spline import CubicSpline
-from .tessellate import segments_for
 
 
 def _rot_pt(p, cs, sn):
@@ -44,20 +44,22 @@ def _shift(s, dx: float, dy: float):
         return Arc((s.center[0] + dx, s.center[1] + dy), s.radius, s.start_angle, s.sweep)
     if isinstance(s, Circle):
         return Circle((s.center[0] + dx, s.center[1] + dy), s.radius, s.ccw)
+    if isinstance(s, EllipticArc):
+        e = s.curve
+        return EllipticArc(EllipseCurve((e.center[0] + dx, e.center[1] + dy), e.rx, e.ry,
+                                        e.rotation), s.start_param, s.sweep)
     c = s.curve
     return Spline(CubicSpline(tuple((p[0] + dx, p[1] + dy) for p in c.ctrl), c.h, c.closed),
                   s.u0, s.u1)
 
 
 def _ellipse_loop(cx, cy, rx, ry, rot) -> Loop:
-    """A full ellipse as the Ellipse primitive draws it (a polygon within the chord
-    tolerance)."""
-    n = segments_for(max(rx, ry))
-    t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-    u, v = rx * np.cos(t), ry * np.sin(t)
-    cs, sn = math.cos(rot), math.sin(rot)
-    P = [(float(cx + a * cs - b * sn), float(cy + a * sn + b * cs)) for a, b in zip(u, v)]
-    return Loop([Line(P[i], P[(i + 1) % n]) for i in range(n)])
+    """A full ellipse as the Ellipse primitive draws it: one exact elliptical arc of a whole
+    turn (a circle when ``rx == ry``)."""
+    if rx == ry:
+        return Loop([Circle((float(cx), float(cy)), float(rx))])
+    curve, _ = ellipse((float(cx), float(cy)), rx, ry, rot)
+    return Loop([EllipticArc(curve, 0.0, 2 * math.pi)])
 
 
 def _inside(p, P) -> bool:
@@ -78,6 +80,8 @@ def _probe(lp: Loop):
         return s.at(s.start_angle + s.sweep / 2)
     if isinstance(s, Spline):
         return s.curve.at((s.u0 + s.u1) / 2)
+    if isinstance(s, EllipticArc):
+        return s.curve.at(s.start_param + s.sweep / 2)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
@@ -122,7 +126,7 @@ def local_box(loops, paths) -> tuple[float, float, float, float]:
             if isinstance(s, Circle):
                 xs += [s.center[0] - s.radius, s.center[0] + s.radius]
                 ys += [s.center[1] - s.radius, s.center[1] + s.radius]
-            elif isinstance(s, Spline):
+            elif isinstance(s, (Spline, EllipticArc)):
                 b = s.box()
                 xs += [b[0], b[2]]
                 ys += [b[1], b[3]]
