@@ -9,7 +9,9 @@ solid plate {
     body = RoundedRectangle(center=(0, 0), width=100, height=34, corner_radius=4)
     Fixed(body)
     for x in [-44, 44] {
-        hole screw { c = Circle(center=(0, 0), diameter=3.4) }
+        hole screw {
+            c = Circle(center=(0, 0), diameter=3.4)
+        }
         screw.c.center == (x, 0)
     }
     drawing engrave {

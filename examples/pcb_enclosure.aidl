@@ -5,9 +5,9 @@
 units mm
 
 param margin = 3 mm
-param standoff_d = 3.4 mm        # M3 clearance through the lid
-param usb_width = 9.5 mm         # a USB-C receptacle's opening
-param usb_from_left = 16 mm      # its centre from the board's left edge
+param standoff_d = 3.4 mm    # M3 clearance through the lid
+param usb_width = 9.5 mm     # a USB-C receptacle's opening
+param usb_from_left = 16 mm  # its centre from the board's left edge
 
 solid lid {
     board = Drawing2D("parts/pcb_board.dxf", layer="Edge.Cuts", construction=true)
@@ -15,11 +15,15 @@ solid lid {
     body = Offset(board.outlines[0], margin)
 
     for c in board.circles {
-        hole standoff { h = Circle(center=(0, 0), diameter=standoff_d) }
+        hole standoff {
+            h = Circle(center=(0, 0), diameter=standoff_d)
+        }
         Concentric(standoff.h, c)
     }
 
-    hole usb { r = RoundedRectangle(center=(0, 0), width=usb_width, height=6, corner_radius=1) }
+    hole usb {
+        r = RoundedRectangle(center=(0, 0), width=usb_width, height=6, corner_radius=1)
+    }
     usb.r.center.x == board.bb.left + usb_from_left
-    usb.r.bb.bottom == board.bb.top - 2              # 2 mm over the board's edge
+    usb.r.bb.bottom == board.bb.top - 2  # 2 mm over the board's edge
 }

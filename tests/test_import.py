@@ -18,6 +18,10 @@ AIDL = [sys.executable, "-m", "aidl_lang.cli"]
 # logo plate's SVG logo is cubic Béziers (kept exact by Drawing2D, but a Spline statement is
 # the interpolating spline through points, which a free Bézier is not)
 NOT_EXACT_IN_THE_LANGUAGE = {"logo_plate"}
+# the violin's outline is a Spline with `corners=`: its runs between corners are not yet
+# recognised as one Spline statement by `aidl import`, so the outline (and the holes in it)
+# are left out with W0130 (issue 39's remaining work)
+NOT_YET = {"violin"}
 
 
 def run(*args, cwd=None):
@@ -43,6 +47,9 @@ def test_round_trip_every_example(example, tmp_path):
     assert a, "the example drew nothing"
     left, extra = unmatched(a, b)
     assert not extra, extra[:3]
+    if example.stem in NOT_YET:
+        assert notes and all("not an interpolating spline" in n.message for n in notes)
+        pytest.xfail("aidl import does not yet write a Spline with corners=")
     if example.stem in NOT_EXACT_IN_THE_LANGUAGE:
         # the SVG logo's cubic Béziers are no interpolating Spline: left out, said so, and
         # nothing else differs
@@ -289,3 +296,21 @@ def test_svg_ellipses_come_in_as_exact_ellipses_turned_by_their_transform(tmp_pa
     assert (x0, y0) == (30, -30) and abs(a0 - 20) < 1e-9 and abs(k0 - 0.5) < 1e-12 and t0 < 1e-9
     assert (x1, y1) == (75, -30) and abs(a1 - 15) < 1e-9 and abs(k1 - 8 / 15) < 1e-12
     assert abs(t1 - 60) < 1e-9                      # 90 deg turned 30 deg clockwise on screen
+
+
+@pytest.mark.parametrize("sweep_deg", [90, 180, 200, 270, 359, -90, -200, -300])
+def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
+    """DXF bulge tan(sweep / 4) > 1 is an arc over 180 degrees, whose centre lies on the
+    other side of the chord (read on the near side, the gear's bore came back as a small arc
+    about the mirrored centre once the writer kept such arcs whole)."""
+    import math
+
+    from aidl_lang.drawing.read import _bulge_arc
+    c, r = (3.0, -2.0), 7.5
+    a0 = math.radians(20)
+    sweep = math.radians(sweep_deg)
+    p = (c[0] + r * math.cos(a0), c[1] + r * math.sin(a0))
+    q = (c[0] + r * math.cos(a0 + sweep), c[1] + r * math.sin(a0 + sweep))
+    arc = _bulge_arc(p, q, math.tan(sweep / 4))
+    assert math.dist(arc.center, c) < 1e-12 and abs(arc.radius - r) < 1e-12
+    assert abs(arc.sweep - sweep) < 1e-12

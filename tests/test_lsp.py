@@ -171,7 +171,7 @@ def test_hover_primitive_constraint_template_and_member():
     h = an.hover(TELEPHONE, *pos(TELEPHONE, "Polygon("))
     assert "Polygon(points: points" in h.contents.value and "members" in h.contents.value
     h = an.hover(TELEPHONE, *pos(TELEPHONE, "Concentric("))
-    assert "Concentric(a: circular, b: circular)" in h.contents.value
+    assert "Concentric(a: centered, b: centered)" in h.contents.value
     h = an.hover(TELEPHONE, *pos(TELEPHONE, "body.center.x", 6))
     assert "center: point" in h.contents.value
     gears = (ROOT / "examples" / "parts" / "gears.aidl").read_text()

@@ -393,7 +393,7 @@ async def test_server_folding_highlight_links_symbols_explain(client: LanguageCl
     assert ex.code == "E0103" and ex.title.startswith("unknown function")
     assert ex.href.endswith("codes.md#e0103")
     with pytest.raises(Exception, match="codes near it: E0101, E0102, E0103"):
-        await client.protocol.send_request_async("aidl/explain", {"code": "E0130"})
+        await client.protocol.send_request_async("aidl/explain", {"code": "E0140"})
 
 
 @pytest.mark.asyncio(loop_scope="module")

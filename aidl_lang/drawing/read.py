@@ -172,8 +172,9 @@ def _bulge_arc(p, q, b) -> Arc | Line:
     r = d / (2 * abs(math.sin(sweep / 2)))
     mx, my = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
     ux, uy = (q[0] - p[0]) / d, (q[1] - p[1]) / d
-    # the centre is on the left of p->q for a counter-clockwise arc under 180 degrees
-    h = math.copysign(r * math.cos(sweep / 2), sweep)
+    # the centre is on the left of p->q for a counter-clockwise arc under 180 degrees, on the
+    # right over 180 (cos of half the sweep < 0); mirrored for a clockwise one
+    h = r * math.cos(sweep / 2) * (1.0 if sweep > 0 else -1.0)
     c = (mx - uy * h, my + ux * h)
     return Arc(c, r, math.atan2(p[1] - c[1], p[0] - c[0]), sweep)
 

@@ -32,9 +32,51 @@ def _turn(s, rot: float):
         return Arc(_rot_pt(s.center, cs, sn), s.radius, s.start_angle + rot, s.sweep)
     if isinstance(s, Circle):
         return Circle(_rot_pt(s.center, cs, sn), s.radius, s.ccw)
+    if isinstance(s, EllipticArc):
+        e = s.curve
+        return EllipticArc(EllipseCurve(_rot_pt(e.center, cs, sn), e.rx, e.ry, e.rotation + rot),
+                           s.start_param, s.sweep)
     c = s.curve
     return Spline(CubicSpline(tuple(_rot_pt(p, cs, sn) for p in c.ctrl), c.h, c.closed),
                   s.u0, s.u1)
+
+
+def _reflect_pt(p, c2, s2):
+    return (p[0] * c2 + p[1] * s2, p[0] * s2 - p[1] * c2)
+
+
+def _reflect(s, phi: float):
+    """Segment ``s`` reflected about the line through the origin at angle ``phi`` (radians),
+    run the same way along the image (so a loop's sense flips)."""
+    c2, s2 = math.cos(2 * phi), math.sin(2 * phi)
+    if isinstance(s, Line):
+        return Line(_reflect_pt(s.start, c2, s2), _reflect_pt(s.end, c2, s2))
+    if isinstance(s, Arc):
+        return Arc(_reflect_pt(s.center, c2, s2), s.radius, 2 * phi - s.start_angle, -s.sweep)
+    if isinstance(s, Circle):
+        return Circle(_reflect_pt(s.center, c2, s2), s.radius, not s.ccw)
+    if isinstance(s, EllipticArc):
+        # M R(rot) (rx cos t, ry sin t) = R(2 phi - rot) (rx cos -t, ry sin -t)
+        e = s.curve
+        curve, shift = ellipse(_reflect_pt(e.center, c2, s2), e.rx, e.ry, 2 * phi - e.rotation)
+        return EllipticArc(curve, -s.start_param - shift, -s.sweep)
+    c = s.curve
+    return Spline(CubicSpline(tuple(_reflect_pt(p, c2, s2) for p in c.ctrl), c.h, c.closed),
+                  s.u0, s.u1)
+
+
+def copied(loops, paths, rot: float = 0.0, mirror: float | None = None):
+    """The local ``(loops, paths)`` of a copy of a drawing: reflected about the line through
+    its origin at angle ``mirror`` (loops run the other way round again, so outer loops stay
+    counter-clockwise), or turned by ``rot`` (radians)."""
+    if mirror is not None:
+        loops = [Loop([reverse(_reflect(s, mirror)) for s in reversed(lp.segments)])
+                 for lp in loops]
+        paths = [[_reflect(s, mirror) for s in p] for p in paths]
+    elif rot:
+        loops = [Loop([_turn(s, rot) for s in lp.segments]) for lp in loops]
+        paths = [[_turn(s, rot) for s in p] for p in paths]
+    return loops, paths
 
 
 def _shift(s, dx: float, dy: float):

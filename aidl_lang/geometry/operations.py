@@ -115,6 +115,12 @@ class _Cloner:
             self.eqs.append(Equation(var(i) - var(s.index)))
             new.scalars[n] = type(s)(i, dest, s.dim, s.label)
         new.data = dict(g.data)
+        if g.kind == "Drawing2D" and (self.flip or self.rot):
+            # its curves are held in its own frame: the copy's are the mirrored or turned ones
+            from .drawing2d import copied
+            new.data["loops"], new.data["paths"] = copied(
+                g.data["loops"], g.data["paths"], self.rot or 0.0,
+                self.line_angle if self.flip else None)
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
