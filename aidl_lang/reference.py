@@ -658,6 +658,23 @@ DETAILS: dict[str, str] = {
               "points is straight), so it is C2 between corners and passes through every "
               "point. An index that is not a point's, or an open spline's first or last "
               "point, is E0108. Negative indices count from the end.",
+    "Bezier": "A chain of cubic Bézier segments from its control points, as SVG's `C` "
+              "and a drawing program's pen tool make them: points=[p0, c1, c2, p1, c3, c4, "
+              "p2, ...], 3k+1 points for k segments; segment i runs from p_i to p_i+1, "
+              "leaving p_i towards its first control point and arriving at p_i+1 from its "
+              "second (the curve passes through p0, p1, ... only). A smooth joint: put the "
+              "control points on either side of it on one line through it. closed=true: an "
+              "outline; the last point repeats the first. Exact everywhere: SVG `C`, DXF "
+              "SPLINE (clamped, knots tripled), STEP B-spline, the same curve after Mirrored, "
+              "patterns and moves (their control points move). Usable where a Spline is: a "
+              "body, a hole, an engraving, a Stroke path, a piece of an outline chained with "
+              "Lines and Arcs. Members: points (as written), start, end, bb (the curve's own "
+              "box, not the control points'). A count that is not 3k+1, a closed chain "
+              "whose last point is not its first, a segment that is one point and a closed "
+              "chain that crosses itself are E0108. Offset and Hull refuse it (no exact "
+              "offset of a cubic). `aidl import` writes a drawing's free cubics (SVG paths, "
+              "DXF splines) as Bezier. For a curve through given points use Spline. Also "
+              "written BezierCurve, CubicBezier, BezierPath, BezierChain.",
     "Sector": "The arc of `radius` about center runs counter-clockwise from start_angle to "
               "end_angle (held, rigid: the shape only moves); two radial lines close it to "
               "the center (a pie slice) or, with inner_radius=, to the inner arc (an annulus "
@@ -758,6 +775,10 @@ EXAMPLES: dict[str, str] = {
     "Spline": _solid("s = Spline([(0, 0), (20, 10), (40, 0), (20, -10)], closed=true)\n"
                      "tip = Spline([(30, 0), (50, 10), (70, 0), (50, -10)], closed=true, "
                      "corners=[0, 2])    # pointed at points 0 and 2", "leaf"),
+    "Bezier": _solid("b = Bezier(points=[(0, -20), (20, -5), (25, 15), (12, 18), (5, 20), "
+                     "(0, 15), (0, 10),\n               (0, 15), (-5, 20), (-12, 18), (-25, 15), "
+                     "(-20, -5), (0, -20)],\n               closed=true)    # 4 cubic "
+                     "segments: a heart", "heart"),
     "mirror": _solid("half = [(0, -20), (12, -15), (15, 5), (6, 18), (0, 20)]\n"
                      "p = Polygon(mirror(half, about=\"y\"))    # symmetric left and right",
                      "vase"),

@@ -202,6 +202,9 @@ _DEFS = {
                  doc="A smooth curve through the points; closed=true: an outline; "
                      "corners=[i]: sharp.",
                  members=SPLINE_MEMBERS),
+    "Bezier": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
+                 doc="Cubic Bézier chain: p0, c1, c2, p1, ... (3k+1 points).",
+                 members=SPLINE_MEMBERS),
     "RegularPolygon": _p([A("center", "point"), A("radius", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
                          [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
@@ -469,6 +472,11 @@ SYNONYMS: dict[str, str] = {
     "Curve": "Spline",
     "FitSpline": "Spline",
     "CubicSpline": "Spline",
+    "BezierCurve": "Bezier",
+    "CubicBezier": "Bezier",
+    "BezierPath": "Bezier",
+    "BezierChain": "Bezier",
+    "BezierSpline": "Bezier",
 }
 
 # Offset's and Inset's argument synonyms (Shell's too, with thickness for distance)
@@ -526,6 +534,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
                "kinks": "corners", "corner_points": "corners", "sharp_corners": "corners"},
     "Polyline": {"through": "points", "pts": "points", "vertices": "points",
                  "is_closed": "closed", "loop": "closed", "close": "closed"},
+    "Bezier": {"control_points": "points", "controls": "points", "ctrl": "points",
+               "pts": "points", "poles": "points", "is_closed": "closed", "loop": "closed",
+               "close": "closed", "cyclic": "closed", "periodic": "closed"},
     "Stroke": {"along": "path", "curve": "path", "spine": "path", "shape": "path",
                "of": "path", "paths": "path", "thickness": "width", "stroke_width": "width",
                "line_width": "width", "caps": "cap", "end": "cap", "ends": "cap",

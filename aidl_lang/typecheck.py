@@ -54,12 +54,8 @@ HALLUCINATIONS = {
     "Hexagon": "write `RegularPolygon(center=..., radius=..., sides=6)`",
     "Pentagon": "write `RegularPolygon(center=..., radius=..., sides=5)`",
     "Octagon": "write `RegularPolygon(center=..., radius=..., sides=8)`",
-    "Bezier": "there are no Bézier control points: `Spline(points=[...], closed=true)` is a "
-              "smooth curve THROUGH its points (exact cubic Béziers in SVG, SPLINE in DXF)",
-    "BezierCurve": "there are no Bézier control points: `Spline(points=[...], closed=true)` is "
-                   "a smooth curve THROUGH its points",
-    "NURBS": "write `Spline(points=[...])`: a smooth curve through its points (no weights or "
-             "control points)",
+    "NURBS": "write `Spline(points=[...])` (a smooth curve through its points) or "
+             "`Bezier(points=[p0, c1, c2, p1, ...])` (cubic control points; no weights)",
     "Ring": "a ring is `Shell(Circle(...), thickness)`, or a Circle in a solid with a smaller Circle in a `hole` child (add `Concentric`)",
     "Extrude": _TWO_D,
     "Cylinder": _TWO_D,

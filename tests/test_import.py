@@ -14,14 +14,6 @@ from dxf_compare import curves, unmatched
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))
 AIDL = [sys.executable, "-m", "aidl_lang.cli"]
-# Examples whose drawing holds curves the language's own forms cannot write exactly: the
-# logo plate's SVG logo is cubic Béziers (kept exact by Drawing2D, but a Spline statement is
-# the interpolating spline through points, which a free Bézier is not)
-NOT_EXACT_IN_THE_LANGUAGE = {"logo_plate"}
-# the violin's outline is a Spline with `corners=`: its runs between corners are not yet
-# recognised as one Spline statement by `aidl import`, so the outline (and the holes in it)
-# are left out with W0130 (issue 39's remaining work)
-NOT_YET = {"violin"}
 
 
 def run(*args, cwd=None):
@@ -32,7 +24,8 @@ def run(*args, cwd=None):
 @pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
 def test_round_trip_every_example(example, tmp_path):
     """render -> DXF -> import -> render: the same curves to 1e-9 mm (both DXFs re-read with
-    ezdxf alone)."""
+    ezdxf alone), on every example: the logo plate's SVG cubics and the violin's Spline with
+    `corners=` come back as `Bezier` chains of their control points."""
     import aidl_lang
     from aidl_lang.drawing.program import import_drawing
     first, second = tmp_path / "a.dxf", tmp_path / "b.dxf"
@@ -47,15 +40,6 @@ def test_round_trip_every_example(example, tmp_path):
     assert a, "the example drew nothing"
     left, extra = unmatched(a, b)
     assert not extra, extra[:3]
-    if example.stem in NOT_YET:
-        assert notes and all("not an interpolating spline" in n.message for n in notes)
-        pytest.xfail("aidl import does not yet write a Spline with corners=")
-    if example.stem in NOT_EXACT_IN_THE_LANGUAGE:
-        # the SVG logo's cubic Béziers are no interpolating Spline: left out, said so, and
-        # nothing else differs
-        assert notes and all("not an interpolating spline" in n.message for n in notes)
-        assert left and {c[0] for c in left} == {"S"}
-        return
     assert not notes, notes
     assert not left, left[:3]
 

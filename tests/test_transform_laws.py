@@ -58,6 +58,9 @@ SHAPES = {
     "Ellipse": "s = Ellipse(center=(12, 5), rx=6, ry=3, rotation=25 deg)",
     "Polygon": "s = Polygon(points=[(8, 1), (17, 2), (15, 6), (19, 9), (10, 8)])",
     "Spline": "s = Spline(points=[(8, 1), (17, 2), (15, 6), (19, 9), (10, 8)], closed=true)",
+    # a chain of cubic Bézier segments: a reflection or turn of the control points is exact
+    "Bezier": "s = Bezier(points=[(8, 1), (12, -1), (16, 0), (17, 2), (18, 4), (21, 7), "
+              "(19, 9), (16, 11), (12, 10), (10, 8), (8, 6), (6, 3), (8, 1)], closed=true)",
     "RegularPolygon": "s = RegularPolygon(center=(12, 5), radius=5, sides=5, rotation=10 deg)",
     "Slot": "s = Slot(center=(12, 5), length=12, width=4, rotation=30 deg)",
     "ArcSlot": "s = ArcSlot(center=(12, 5), radius=8, start_angle=-30 deg, end_angle=100 deg, "

@@ -36,6 +36,8 @@ SAMPLE = {
     "Drawing2D": "\"std/drawings/pcb_board.dxf\", layer=\"Edge.Cuts\", at=(60, 0)",
     "Spline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",
     "Polyline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",
+    "Bezier": "points=[(200, 0), (230, 0), (230, 25), (215, 25), (200, 25), (200, 0), "
+              "(200, 0)], closed=true",
     "Sector": "center=(200, 0), radius=20, start_angle=0, end_angle=90",
     "Stroke": "l1, 2",
     # operations: a sample that makes no copies (the unknowns stay comparable)

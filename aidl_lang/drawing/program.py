@@ -1,14 +1,15 @@
 """``aidl import``: a drawing turned into an editable AIDL program (docs/import.md).
 
 :func:`to_program` writes one structure per DXF layer (or one for an SVG): outer outlines are
-chains of the language's own ``Line``, ``Arc`` and ``Spline`` statements sharing their end
+chains of the language's own ``Line``, ``Arc``, ``Spline`` and ``Bezier`` statements sharing their end
 points (so they close into faces), outlines inside them become ``hole`` children (a circle is a
 ``Circle``), outlines inside holes become solids of their own, full ellipses are ``Ellipse``
 and open paths are drawn in a ``drawing`` child (engraving).  A layer whose name starts with
 ``ENGRAVE`` (as ``aidl render`` writes them) becomes a ``drawing``.  Coordinates are written
 with Python's shortest round-trip ``repr``, so the program renders back to the same curves
-(1e-9 mm).  A spline piece that is not the interpolating cubic spline through its span ends
-has no exact form in the language: its loop is left out with a note.
+(1e-9 mm).  A spline piece that is the interpolating cubic spline through its span ends is
+written as a ``Spline`` through them; any other (an SVG's or DXF's free cubics, a Spline
+with ``corners=``) as a ``Bezier`` chain of its own control points.
 """
 from __future__ import annotations
 
@@ -73,6 +74,16 @@ def _spline_points(s: Spline, closed: bool):
     return pts
 
 
+def _bezier_points(s: Spline) -> list:
+    """The ``3 k + 1`` control points of piece ``s`` (its spans, in its direction): the
+    points of a ``Bezier(...)`` statement that is ``s`` exactly."""
+    spans = s.spans
+    pts = [spans[0][0]]
+    for b in spans:
+        pts += [b[1], b[2], b[3]]
+    return pts
+
+
 class _Writer:
     def __init__(self) -> None:
         self.lines: list[str] = []
@@ -87,10 +98,13 @@ class _Writer:
         out: list[str] = []
         if closed and len(segs) == 1 and isinstance(segs[0], Spline):
             pts = _spline_points(segs[0], True)
-            if pts is None:
-                return False
-            out.append(f"{prefix}0 = Spline(points=[{', '.join(_pt(p) for p in pts)}], "
-                       f"closed=true)")
+            if pts is None:         # its own control points: a closed Bezier chain
+                ctrl = _bezier_points(segs[0])
+                out.append(f"{prefix}0 = Bezier(points=[{', '.join(_pt(p) for p in ctrl)}], "
+                           f"closed=true)")
+            else:
+                out.append(f"{prefix}0 = Spline(points=[{', '.join(_pt(p) for p in pts)}], "
+                           f"closed=true)")
             for t in out:
                 self.emit(depth, t)
             return True
@@ -116,10 +130,13 @@ class _Writer:
                     cs, ce = f"{nm}.end", f"{nm}.start"
             elif isinstance(s, Spline):
                 pts = _spline_points(s, False)
-                if pts is None:
-                    return False
-                inner = ", ".join([start] + [_pt(p) for p in pts[1:-1]] + [end])
-                out.append(f"{nm} = Spline(points=[{inner}])")
+                if pts is None:     # not through its span ends: its own control points
+                    ctrl = _bezier_points(s)
+                    inner = ", ".join([start] + [_pt(p) for p in ctrl[1:-1]] + [end])
+                    out.append(f"{nm} = Bezier(points=[{inner}])")
+                else:
+                    inner = ", ".join([start] + [_pt(p) for p in pts[1:-1]] + [end])
+                    out.append(f"{nm} = Spline(points=[{inner}])")
                 cs, ce = f"{nm}.start", f"{nm}.end"
             else:
                 return False

@@ -267,7 +267,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         xs += [cx - ex, cx + ex]
         ys += [cy - ey, cy + ey]
         return
-    if k == "Spline":
+    if k in ("Spline", "Bezier"):
         _spline_candidates(g, P, x, xs, ys)
         return
     if k == "Drawing2D":
@@ -303,16 +303,30 @@ def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
     pts = [g.points[n] for n in names]
     V = np.array([(float(x[p.ix]), float(x[p.iy])) for p in pts])
     closed = g.data.get("closed", False)
-    for n in names:
-        px, py = P[n]
-        xs.append(px)
-        ys.append(py)
-    h = _steps(V, closed)
-    if len(V) < (3 if closed else 2) or not (h > 0).all():
-        return
-    W = interpolation_matrix(h, closed, g.data.get("corners", ()))
+    if g.kind == "Bezier":
+        # the control points themselves: W picks them (closed: the last row is p0); the
+        # curve passes through every third one only
+        m = len(names)
+        W = np.eye(m + 1 if closed else m, m)
+        if closed:
+            W[m, 0] = 1.0
+        nspans = (W.shape[0] - 1) // 3
+        for n in names[::3]:
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+    else:
+        for n in names:
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+        h = _steps(V, closed)
+        if len(V) < (3 if closed else 2) or not (h > 0).all():
+            return
+        W = interpolation_matrix(h, closed, g.data.get("corners", ()))
+        nspans = len(h)
     C = W @ V
-    for i in range(len(h)):
+    for i in range(nspans):
         b = tuple(tuple(C[3 * i + k]) for k in range(4))
         for axis, ts in enumerate(bez_extremes(b)):
             for t in ts:

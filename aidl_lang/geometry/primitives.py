@@ -499,6 +499,50 @@ def _build_Spline(ctx, g, a):
     g.closed = closed
 
 
+def _build_Bezier(ctx, g, a):
+    """A chain of cubic Bézier segments: ``points`` are ``p0, c1, c2, p1, c3, c4, p2, ...``
+    (``3 k + 1`` for ``k`` segments, each ``p_i, c, c, p_i+1``, mm); ``closed``: the last point
+    is the first (held as one point) and the chain is an outline.  The curve is the control
+    points' own cubics, exactly (the carrier is :class:`~.spline.CubicSpline`)."""
+    pts_in = list(a["points"])
+    closed = bool(a.get("closed", False))
+    m = len(pts_in)
+    if m < 4 or (m - 1) % 3:
+        k = max(1, round((m - 1) / 3))
+        raise PrimitiveError(
+            f"a Bezier chain takes 3k+1 points (p0, c1, c2, p1, c3, c4, p2, ...: each cubic "
+            f"segment two control points and an end point), got {m}: give "
+            f"{3 * k + 1} points for {k} segment{'s' if k != 1 else ''}"
+            + (" (the last repeating the first when closed)" if closed else ""))
+    if m > 3 * 2000 + 1:
+        raise PrimitiveError(f"a Bezier chain takes at most {3 * 2000 + 1} points, got {m}")
+    try:
+        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
+    except (AttributeError, TypeError):
+        xy = None
+    if xy is not None:
+        scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+        if closed and math.dist(xy[0], xy[-1]) > 1e-9 * scale:
+            raise PrimitiveError(
+                f"a closed Bezier chain ends where it starts: its last point "
+                f"({xy[-1][0]:g}, {xy[-1][1]:g}) is not its first ({xy[0][0]:g}, "
+                f"{xy[0][1]:g}); repeat the first point at the end, or use closed=false")
+        for i in range(0, m - 1, 3):
+            if all(math.dist(xy[i], xy[i + j]) <= 1e-9 * scale for j in (1, 2, 3)):
+                raise PrimitiveError(
+                    f"a Bezier's segment {i // 3} (points[{i}] to points[{i + 3}]) is one "
+                    f"point ({xy[i][0]:g}, {xy[i][1]:g}): remove it")
+    keep = pts_in[:-1] if closed else pts_in
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(keep)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, keep, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    g.data["closed"] = closed
+    g.data["bezier"] = True
+    g.closed = closed
+
+
 def _spline_corners(ctx, v, m: int, closed: bool) -> tuple[int, ...]:
     """``corners=[i, ...]``: indices (0 .. m - 1) of a Spline's points where it turns sharply;
     an open spline's first and last points are ends already."""
@@ -665,8 +709,8 @@ def _source(v, what: str) -> Geometry:
         raise PrimitiveError(f"{what} takes shapes (a Circle, Rectangle, Polygon, Slot, ...), "
                              f"got {type_name(v)}")
     g = v.geom
-    if g.kind == "Spline":
-        raise PrimitiveError(f"{what} of a Spline cannot be exact: the offset (or hull) of a "
+    if g.kind in ("Spline", "Bezier"):
+        raise PrimitiveError(f"{what} of a {g.kind} cannot be exact: the offset (or hull) of a "
                              f"cubic spline is not a cubic spline, and outputs here are exact "
                              f"or refused; draw the grown outline as a second Spline through "
                              f"offset points, or offset a Polygon or arcs instead")
@@ -738,7 +782,7 @@ def _build_Hull(ctx, g, a):
     _consume(g, [_source(v, "Hull") for v in items])
 
 
-_STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline")
+_STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline", "Bezier")
 
 
 def _build_Stroke(ctx, g, a):
@@ -748,12 +792,12 @@ def _build_Stroke(ctx, g, a):
     v = a["path"]
     items = list(v) if isinstance(v, (list, tuple)) else [v]
     if not items:
-        raise PrimitiveError("a Stroke needs a path: a Line, Arc, Polyline or Spline, or a "
+        raise PrimitiveError("a Stroke needs a path: a Line, Arc, Polyline, Spline or Bezier, or a "
                              "list of them joined end to end")
     srcs = []
     for it in items:
         if not isinstance(it, GeomRef) or it.geom.kind not in _STROKE_PATHS:
-            raise PrimitiveError(f"a Stroke follows a Line, Arc, open Polyline or open Spline "
+            raise PrimitiveError(f"a Stroke follows a Line, Arc, open Polyline, Spline or Bezier "
                                  f"(or a list of them), got "
                                  f"{it.geom.kind if isinstance(it, GeomRef) else type_name(it)}"
                                  + (": for a band around a closed shape use Shell(shape, "
@@ -1007,7 +1051,7 @@ def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
     if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline",
-                                       "Polyline")
+                                       "Polyline", "Bezier")
                                  and name.startswith("p")
                                  and name[1:].isdigit()):
         return _pv(g.points[name], frame)
@@ -1105,8 +1149,10 @@ def member(g: Geometry, name: str, frame):
             return PV(sx, sy, None, own)
     if k == "Polyline" and name == "edges":
         return [GeomRef(e) for e in g.data["edges"]]
-    if k in ("Spline", "Polyline"):
+    if k in ("Spline", "Polyline", "Bezier"):
         pts = points_of(g)
+        if k == "Bezier" and g.closed:
+            pts = pts + pts[:1]             # as written: the last point repeats the first
         if name in ("points", "vertices", "through"):
             return [_pv(p, frame) for p in pts]
         if name == "start":

@@ -166,6 +166,25 @@ def interpolate(points, closed: bool, corners=()) -> "CubicSpline":
     return CubicSpline(tuple(ctrl), tuple(float(v) for v in h), closed)
 
 
+def bezier_chain(points, closed: bool = False) -> "CubicSpline":
+    """The :class:`CubicSpline` whose spans are the cubic Bézier segments of ``points``
+    (``p0, c1, c2, p1, c3, c4, p2, ...``: ``3 k + 1`` points, mm; ``closed``: the last is the
+    first), the control points exactly as given; each span's parameter step is its chord (its
+    control polygon's length for a span that returns to its start).  Raises
+    :class:`SplineError` for a count that is not ``3 k + 1``."""
+    ctrl = [(float(p[0]), float(p[1])) for p in points]
+    if len(ctrl) < 4 or (len(ctrl) - 1) % 3:
+        raise SplineError(f"a Bezier chain takes 3k+1 points, got {len(ctrl)}")
+    if closed:
+        ctrl[-1] = ctrl[0]
+    h = []
+    for i in range(0, len(ctrl) - 1, 3):
+        b = ctrl[i:i + 4]
+        h.append(math.dist(b[0], b[3]) or sum(math.dist(b[j], b[j + 1]) for j in range(3))
+                 or 1.0)
+    return CubicSpline(tuple(ctrl), tuple(h), bool(closed))
+
+
 # ------------------------------------------------------------------ Bézier spans
 def bez_at(b, t: float) -> Point:
     s = 1.0 - t

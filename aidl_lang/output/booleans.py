@@ -189,11 +189,14 @@ class Renderer:
         """The exact :class:`Spline` segment of a ``Spline`` geometry at the solved points:
         the whole curve (closed or open); None when the solved points give no spline (two
         consecutive ones moved onto each other)."""
-        from ..geometry.spline import SplineError, interpolate
+        from ..geometry.spline import SplineError, bezier_chain, interpolate
         from ..geometry.primitives import points_of
         try:
-            c = interpolate([self._pt(p) for p in points_of(g)], bool(g.data.get("closed")),
-                            g.data.get("corners", ()))
+            pts = [self._pt(p) for p in points_of(g)]
+            if g.kind == "Bezier":          # the control points as given (closed: back to p0)
+                c = bezier_chain(pts + pts[:1] if g.closed else pts, g.closed)
+            else:
+                c = interpolate(pts, bool(g.data.get("closed")), g.data.get("corners", ()))
         except SplineError as ex:
             if not any(e[0] is g for e in self.shape_errors):     # said once, at the call
                 self.shape_errors.append((g, f"`{g.label}` after the solve: {ex}",
@@ -206,7 +209,7 @@ class Renderer:
     def segment(self, g: Geometry):
         """The exact segment of an open curve (a Line, an open Spline, or an Arc
         counter-clockwise from its start to its end point on the circle through its start)."""
-        if g.kind == "Spline":
+        if g.kind in ("Spline", "Bezier"):
             return self.spline(g)
         if g.kind == "Line":
             return Line(self._pt(g.points["start"]), self._pt(g.points["end"]))
@@ -245,7 +248,7 @@ class Renderer:
     def outline(self, g: Geometry) -> Loop | None:
         """The exact closed outline of a shape (any orientation), or None when it has none."""
         k = g.kind
-        if k == "Spline":
+        if k in ("Spline", "Bezier"):
             seg = self.spline(g) if g.closed else None
             if seg is None:
                 return None
@@ -255,7 +258,7 @@ class Renderer:
                 x, y = seg.curve.at(cross[0][0])
                 if not any(e[0] is g for e in self.shape_errors):
                     self.shape_errors.append((g, (
-                        f"`{g.label}` crosses itself at ({x:g}, {y:g}) mm: a closed Spline "
+                        f"`{g.label}` crosses itself at ({x:g}, {y:g}) mm: a closed {k} "
                         f"outline must not loop over itself (its inside would be ambiguous)"),
                         "move or reorder the points so that the curve goes round once "
                         "without crossing", "E0108"))
@@ -492,7 +495,7 @@ class Renderer:
             if s.kind == "drawing":
                 self.draw_lines(g, out)
                 continue
-            if g.kind in ("Line", "Arc") or (g.kind in ("Spline", "Polyline")
+            if g.kind in ("Line", "Arc") or (g.kind in ("Spline", "Bezier", "Polyline")
                                              and not g.closed):
                 open_curves.append(g)
             elif g.kind == "Text":
@@ -528,7 +531,7 @@ class Renderer:
         segs = [self.pieces(g) for g in curves]
         keep = [i for i, sg in enumerate(segs) if sg]
         curves, segs = [curves[i] for i in keep], [segs[i] for i in keep]
-        ends = [(sg[0].start, sg[-1].end) if g.kind in ("Spline", "Polyline") else
+        ends = [(sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline") else
                 (self._pt(g.points["start"]), self._pt(g.points["end"]))
                 for g, sg in zip(curves, segs)]
         grid: dict = {}
@@ -617,7 +620,7 @@ class Renderer:
                 for seg in segs:
                     self._stroke_segment(seg, "drawing", g, out)
             return
-        if g.kind in ("Line", "Arc", "Spline") or (g.kind == "Polyline" and not g.closed):
+        if g.kind in ("Line", "Arc", "Spline", "Bezier") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":
