@@ -25,7 +25,8 @@ def _key(kind, pts, extra=()):
 def curves(path) -> list[tuple]:
     """``(kind, points, numbers)`` of every curve of the DXF at ``path``: a LINE's two ends
     (sorted), an ARC's centre, its two ends (sorted) and radius, a CIRCLE's centre and radius,
-    a SPLINE's control points (in the direction that sorts first); polylines are exploded."""
+    a SPLINE's control points (in the direction that sorts first; a chain of cubic Béziers,
+    as AIDL writes them, one item per segment); polylines are exploded."""
     doc = ezdxf.readfile(str(path))
     out = []
     todo = list(doc.modelspace())
@@ -47,8 +48,27 @@ def curves(path) -> list[tuple]:
             out.append(_key("C", [_pt(e.dxf.center)], [float(e.dxf.radius)]))
         elif t == "SPLINE":
             cp = [_pt(p) for p in e.control_points]
-            out.append(_key("S", cp if _order([cp[0], cp[-1]])[0] == cp[0] else cp[::-1]))
+            for piece in _bezier_pieces(e, cp):
+                out.append(_key("S", piece if _order([piece[0], piece[-1]])[0] == piece[0]
+                                else piece[::-1]))
     return out
+
+
+def _bezier_pieces(e, cp: list) -> list[list]:
+    """A degree-3 clamped SPLINE whose interior knots are each tripled is a chain of cubic
+    Béziers (one per knot span, control points ``cp[3 i : 3 i + 4]``): its segments, so that
+    the same curve written as one entity or as several compares equal; any other SPLINE
+    whole."""
+    knots = [float(k) for k in e.knots]
+    if int(e.dxf.degree) != 3 or len(cp) < 4 or (len(cp) - 1) % 3 or \
+            len(knots) != len(cp) + 4:
+        return [cp]
+    inner = knots[4:-4]
+    if knots[:4] != [knots[0]] * 4 or knots[-4:] != [knots[-1]] * 4 or \
+            any(inner[i] != inner[i + 1] or inner[i] != inner[i + 2]
+                for i in range(0, len(inner), 3)):
+        return [cp]
+    return [cp[i:i + 4] for i in range(0, len(cp) - 1, 3)]
 
 
 def merge_arcs(items: list) -> list:

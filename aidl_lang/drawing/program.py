@@ -84,6 +84,36 @@ def _bezier_points(s: Spline) -> list:
     return pts
 
 
+def _bezier_runs(segs: list) -> list:
+    """``segs`` with each run of consecutive spline pieces that are no interpolating spline
+    through their span ends joined into one piece (one ``Bezier`` statement): its spans are
+    the pieces' spans, end to end, each piece's start its predecessor's end bit for bit."""
+    from ..geometry.spline import CubicSpline
+    out: list = []
+    run: list = []
+
+    def flush():
+        if len(run) == 1:
+            out.append(run[0])
+        elif run:
+            spans = [b for s in run for b in s.spans]
+            ctrl = [spans[0][0]]
+            for b in spans:
+                ctrl += [b[1], b[2], b[3]]
+            h = [math.dist(b[0], b[3]) or 1.0 for b in spans]
+            c = CubicSpline(tuple(ctrl), tuple(h), False)
+            out.append(Spline(c, 0.0, float(c.n)))
+        run.clear()
+    for s in segs:
+        if isinstance(s, Spline) and _spline_points(s, False) is None:
+            run.append(s)
+        else:
+            flush()
+            out.append(s)
+    flush()
+    return out
+
+
 class _Writer:
     def __init__(self) -> None:
         self.lines: list[str] = []
@@ -96,10 +126,12 @@ class _Writer:
         """Statements for a chain of segments sharing end points; False (nothing written)
         when a spline piece has no exact form."""
         out: list[str] = []
+        segs = _bezier_runs(segs)
         if closed and len(segs) == 1 and isinstance(segs[0], Spline):
             pts = _spline_points(segs[0], True)
             if pts is None:         # its own control points: a closed Bezier chain
                 ctrl = _bezier_points(segs[0])
+                ctrl[-1] = ctrl[0]
                 out.append(f"{prefix}0 = Bezier(points=[{', '.join(_pt(p) for p in ctrl)}], "
                            f"closed=true)")
             else:
