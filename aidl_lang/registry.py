@@ -178,7 +178,11 @@ _DEFS = {
                     doc="An isosceles trapezoid; widths, height and rotation are held, the "
                         "center is a starting guess.", members=TRAP_MEMBERS),
     "Ellipse": _p([A("center", "point"), A("rx", "length"), A("ry", "length"),
-                   A("rotation", "angle", 0.0)],
+                   A("rotation", "angle", 0.0),
+                   A("start_angle", "angle", None, "with end_angle: the open arc of the "
+                     "ellipse counter-clockwise between these parameter angles",
+                     kw_only=True),
+                   A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
                       "output; Offset, Hull and Fillet corners on it are refused.",

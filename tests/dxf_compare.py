@@ -46,6 +46,19 @@ def curves(path) -> list[tuple]:
             out.append(_key("A", [c] + _order(ends), [r]))
         elif t == "CIRCLE":
             out.append(_key("C", [_pt(e.dxf.center)], [float(e.dxf.radius)]))
+        elif t == "ELLIPSE":
+            # centre, the ends of the major axis (sorted: either sign is the same ellipse),
+            # the arc's ends (sorted) and its middle (which way round), and the ratio
+            c = _pt(e.dxf.center)
+            m = _pt(e.dxf.major_axis)
+            s0, s1 = float(e.dxf.start_param), float(e.dxf.end_param)
+            span = (s1 - s0) % (2 * math.pi) or 2 * math.pi
+            ct = e.construction_tool()
+            ends = [_pt(v) for v in ct.vertices([s0, s1])]
+            mid = _pt(next(iter(ct.vertices([s0 + span / 2]))))
+            out.append(_key("E", [c] + _order([(c[0] + m[0], c[1] + m[1]),
+                                               (c[0] - m[0], c[1] - m[1])])
+                            + _order(ends) + [mid], [float(e.dxf.ratio)]))
         elif t == "SPLINE":
             cp = [_pt(p) for p in e.control_points]
             for piece in _bezier_pieces(e, cp):

@@ -2,12 +2,15 @@
 program that renders back to the same curves (re-read with ezdxf, 1e-9 mm)."""
 from __future__ import annotations
 
+import math
 import subprocess
 import sys
 from pathlib import Path
 
 import ezdxf
 import pytest
+
+import aidl_lang
 
 from dxf_compare import curves, unmatched
 
@@ -231,7 +234,7 @@ def test_synonyms_name_the_drawing_form(tmp_path):
     assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
 
 
-def test_svg_selects_by_inkscape_layer_and_colour_and_skips_elliptical_arcs(tmp_path):
+def test_svg_selects_by_inkscape_layer_and_colour(tmp_path):
     from aidl_lang.drawing import read_drawing
     svg = b"""<svg xmlns="http://www.w3.org/2000/svg"
      xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
@@ -251,7 +254,99 @@ def test_svg_selects_by_inkscape_layer_and_colour_and_skips_elliptical_arcs(tmp_
     assert not d.outlines and len(d.circles) == 1
     d = read_drawing(svg, "a.svg")
     notes = sorted(n.message for n in d.notes)
-    assert "1 elliptical arc entity" in notes[0] and "1 text entity" in notes[1]
+    assert len(notes) == 1 and "1 text entity" in notes[0]
+    (arc,) = [s for p in d.paths for s in p.segments if type(s).__name__ == "EllipticArc"]
+    # A 10 5 0 0 1 20 0 from (0, 0): half the ellipse about (10, 0) with semi-axes 10 and 5,
+    # through (10, -5) in the SVG (svgelements' point(0.5)); here y is up: through (10, 5)
+    assert arc.curve.center == pytest.approx((10, 0), abs=1e-9)
+    assert (arc.curve.rx, arc.curve.ry) == pytest.approx((10, 5), abs=1e-9)
+    assert abs(arc.sweep) == pytest.approx(math.pi, abs=1e-9)
+    assert arc.at(arc.start_param + arc.sweep / 2) == pytest.approx((10, 5), abs=1e-9)
+
+
+def _elliptic_dxf(path):
+    """A plate whose top is half an ellipse (a partial ELLIPSE closed by a line), an open
+    elliptic arc on an engraving layer, and one turned and written with its extrusion down."""
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_ellipse((20, 10), major_axis=(20, 0), ratio=0.4, start_param=0, end_param=math.pi,
+                    dxfattribs={"layer": "cut"})
+    msp.add_line((0, 10), (40, 10), dxfattribs={"layer": "cut"})
+    msp.add_ellipse((60, 5), major_axis=(6, 4), ratio=0.5, start_param=-1.0, end_param=2.0,
+                    dxfattribs={"layer": "ENGRAVE"})
+    e = msp.add_ellipse((-30, 5), major_axis=(5, -2), ratio=0.3, start_param=0.5,
+                        end_param=4.0, dxfattribs={"layer": "ENGRAVE"})
+    e.dxf.extrusion = (0, 0, -1)
+    doc.saveas(path)
+
+
+def test_dxf_elliptic_arcs_are_read_exactly_and_imported_back(tmp_path):
+    """Partial ELLIPSE entities come in as exact elliptic arcs (ends to 1e-9 mm of ezdxf's
+    own, the mirrored one too), and `aidl import` writes them as `Ellipse(..., start_angle=,
+    end_angle=)`: rendered back, the same ELLIPSE arcs (re-read with ezdxf)."""
+    from aidl_lang.drawing import read_drawing
+    from aidl_lang.drawing.program import import_drawing
+    src = tmp_path / "e.dxf"
+    _elliptic_dxf(src)
+    d = read_drawing(src.read_bytes(), "e.dxf")
+    assert not d.notes
+    arcs = [s for o in d.outlines for s in o.segments if type(s).__name__ == "EllipticArc"]
+    arcs += [s for p in d.paths for s in p.segments if type(s).__name__ == "EllipticArc"]
+    assert len(arcs) == 3
+    want = []
+    for e in ezdxf.readfile(str(src)).modelspace():
+        if e.dxftype() == "ELLIPSE":
+            ct = e.construction_tool()
+            # world coordinates (an ELLIPSE's centre and axis are not in the OCS)
+            pts = [tuple(v)[:2] for v in ct.vertices([e.dxf.start_param, e.dxf.end_param])]
+            want.append(sorted(pts))
+    got = [sorted([a.start, a.end]) for a in arcs]
+    for w in want:
+        assert any(all(math.dist(p, q) <= 1e-9 for p, q in zip(w, g)) for g in got), (w, got)
+    (o,) = d.outlines
+    assert o.area == pytest.approx(math.pi * 20 * 8 / 2, abs=1e-9)
+    text, notes = import_drawing(src.read_bytes(), "e.dxf")
+    assert not notes and text.count("start_angle=") == 3, text
+    again = aidl_lang.compile(text, path=tmp_path / "e.aidl")
+    assert again.ok, [str(x) for x in again.errors]
+    out = tmp_path / "back.dxf"
+    out.write_text(again.to_dxf())
+    b = curves(out)
+    assert sum(1 for c in b if c[0] == "E") == 3
+    # the render of the imported program against the drawing's own curves
+    left, extra = unmatched([c for c in curves(src)], b)
+    assert not left and not extra, (left, extra)
+
+
+def test_svg_elliptic_arc_round_trip(tmp_path):
+    """An SVG path with an elliptical arc (rx != ry, turned) closed by a line: imported,
+    rendered, the SVG re-read by svgelements gives the same arc (centre, radii, ends)."""
+    import svgelements as se
+    from aidl_lang.drawing.program import import_drawing
+    svg = ('<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="40mm" '
+           'viewBox="0 0 60 40"><path d="M10,30 A25,10 20 0 1 50,25 Z" fill="none" '
+           'stroke="black"/></svg>')
+    text, notes = import_drawing(svg.encode(), "a.svg")
+    assert not notes and "start_angle=" in text, text
+    r = aidl_lang.compile(text, path=tmp_path / "a.aidl")
+    assert r.ok, [str(x) for x in r.errors]
+    orig = [s for s in se.Path("M10,30 A25,10 20 0 1 50,25 Z") if isinstance(s, se.Arc)][0]
+    out = r.to_svg()
+    import re
+    (d,) = [m for m in re.findall(r'<path d="([^"]*)"', out) if "A" in m]
+    back = [s for s in se.Path(d) if isinstance(s, se.Arc)]   # the writer halves an arc
+    # the writer's y is -y_model and the reader's model y is -y_svg: the same SVG frame
+    for arc in back:
+        assert sorted([arc.rx, arc.ry]) == pytest.approx(sorted([orig.rx, orig.ry]), abs=1e-9)
+        assert (arc.center.x, arc.center.y) == pytest.approx((orig.center.x, orig.center.y),
+                                                             abs=1e-9)
+    ends = {(round(p.x, 6), round(p.y, 6)) for a in back for p in (a.start, a.end)}
+    assert (round(orig.start.x, 6), round(orig.start.y, 6)) in ends
+    assert (round(orig.end.x, 6), round(orig.end.y, 6)) in ends
+    # the way round: svgelements' middle of the original arc is on the written arcs
+    mid = orig.point(0.5)
+    assert min(math.dist((mid.x, mid.y), (q.x, q.y)) for a in back
+               for q in (a.point(i / 200) for i in range(201))) < 0.05
 
 
 def test_svg_ellipses_come_in_as_exact_ellipses_turned_by_their_transform(tmp_path):

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Spline
+from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from .read import Drawing, Note, Outline, Path
 
 
@@ -160,6 +160,18 @@ class _Writer:
                 else:           # an Arc runs counter-clockwise: swap the ends
                     out.append(f"{nm} = Arc(center={_pt(s.center)}, start={end}, end={start})")
                     cs, ce = f"{nm}.end", f"{nm}.start"
+            elif isinstance(s, EllipticArc):
+                if s.whole:
+                    return False
+                # an Ellipse's arc runs counter-clockwise from start_angle: a clockwise
+                # piece is written from its end (as an Arc)
+                t0, sw = (s.start_param, s.sweep) if s.sweep > 0 else (s.end_param, -s.sweep)
+                e = s.curve
+                out.append(f"{nm} = Ellipse(center={_pt(e.center)}, rx={_num(e.rx)}, "
+                           f"ry={_num(e.ry)}, rotation={_num(e.rotation)} rad, "
+                           f"start_angle={_num(t0)} rad, end_angle={_num(t0 + sw)} rad)")
+                cs, ce = (f"{nm}.start", f"{nm}.end") if s.sweep > 0 else \
+                    (f"{nm}.end", f"{nm}.start")
             elif isinstance(s, Spline):
                 pts = _spline_points(s, False)
                 if pts is None:     # not through its span ends: its own control points

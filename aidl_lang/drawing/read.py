@@ -5,10 +5,11 @@ the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.cur
 ``Arc`` and ``Spline`` pieces, counter-clockwise, largest area first), its **circles**, its
 full **ellipses** ``(cx, cy, rx, ry, rotation)`` and its open **paths**.  Nothing is
 approximated: a DXF ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are
-arcs), ``SPLINE`` (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics), full
-``ELLIPSE``; an SVG path's lines, circular arcs, cubic and quadratic Béziers, and its
+arcs), ``SPLINE`` (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics),
+``ELLIPSE`` (whole, or a partial one as an exact ``EllipticArc``); an SVG path's lines,
+circular and elliptical arcs, cubic and quadratic Béziers, and its
 ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline`` and ``line`` elements.  What has
-no exact form here (a rational spline, an elliptical arc, hatches, dimensions, images) is
+no exact form here (a rational spline, hatches, dimensions, images) is
 skipped and counted in a :class:`Note` (``W0130``); text is skipped with a note too.
 
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
@@ -26,7 +27,7 @@ import io
 import math
 from dataclasses import dataclass, field
 
-from ..geometry.curves import Arc, Circle, Line, Loop, Spline
+from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, elliptic_arc
 from ..geometry.spline import CubicSpline
 
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
@@ -124,7 +125,7 @@ class Drawing:
 def _segs_box(segs) -> tuple[float, float, float, float]:
     xs, ys = [], []
     for s in segs:
-        if isinstance(s, Spline):
+        if isinstance(s, (Spline, EllipticArc)):
             b = s.box()
             xs += [b[0], b[2]]
             ys += [b[1], b[3]]
@@ -428,15 +429,27 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
         elif t == "SPLINE":
             pieces.append([_dxf_spline(e, P)])
         elif t == "ELLIPSE":
-            s0, s1 = e.dxf.start_param, e.dxf.end_param
-            if abs(((s1 - s0) % (2 * math.pi))) > 1e-9 and abs(abs(s1 - s0) - 2 * math.pi) > 1e-9:
-                raise _Skip("ELLIPSE (elliptical arc)")
+            # center and major axis are in world coordinates (not the OCS of ARC and
+            # CIRCLE); the extrusion only turns the parameter: the minor axis is
+            # extrusion x major axis, so an extrusion down runs the parameter clockwise
+            s0, s1 = float(e.dxf.start_param), float(e.dxf.end_param)
             c = P(e.dxf.center)
             mx, my = float(e.dxf.major_axis[0]) * scale, float(e.dxf.major_axis[1]) * scale
             rx = math.hypot(mx, my)
-            if flip:
-                c, mx = (-c[0], c[1]), -mx
-            ellipses.append((c[0], c[1], rx, rx * float(e.dxf.ratio), math.atan2(my, mx)))
+            ratio = float(e.dxf.ratio)
+            ry = rx * ratio
+            rot = math.atan2(my, mx)
+            sweep = (s1 - s0) % (2 * math.pi)
+            if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
+                ellipses.append((c[0], c[1], rx, ry, rot))
+                return
+            nx, ny = (-my * ratio, mx * ratio) if not flip else (my * ratio, -mx * ratio)
+
+            def at(tp):
+                cs, sn = math.cos(tp), math.sin(tp)
+                return (c[0] + mx * cs + nx * sn, c[1] + my * cs + ny * sn)
+            pieces.append([elliptic_arc(c, rx, ry, rot, at(s0), at(s0 + sweep / 2),
+                                        at(s0 + sweep))])
         elif t in ("TEXT", "MTEXT"):
             raise _Skip(t)
         elif t in _SKIP_QUIET:
@@ -671,8 +684,20 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
             cur.append(bezier_spline([[a, _lerp(a, c, 2 / 3), _lerp(b, c, 2 / 3), b]]))
         elif isinstance(seg, S.Arc):
             if not seg.is_circular():
-                skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
-                flush(False)
+                # an elliptical arc: its ellipse in the drawing's frame (P maps the user
+                # units to mm and turns y over: the x axis's image gives the rotation) and
+                # the exact arc from its start through its middle to its end
+                c = P(seg.center)
+                rot = float(seg.get_rotation())
+                rx, ry = float(seg.rx), float(seg.ry)
+                ux = P((seg.center.x + rx * math.cos(rot), seg.center.y + rx * math.sin(rot)))
+                vy = P((seg.center.x - ry * math.sin(rot), seg.center.y + ry * math.cos(rot)))
+                rxm, rym = math.dist(c, ux), math.dist(c, vy)
+                if rxm <= 1e-12 or rym <= 1e-12 or math.dist(a, b) <= 1e-12:
+                    skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
+                    continue
+                cur.append(elliptic_arc(c, rxm, rym, math.atan2(ux[1] - c[1], ux[0] - c[0]),
+                                        a, P(seg.point(0.5)), b))
                 continue
             c = P(seg.center)
             sweep = -float(seg.sweep)          # the y axis turns over

@@ -267,6 +267,26 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         xs += [cx - ex, cx + ex]
         ys += [cy - ey, cy + ey]
         return
+    if k == "EllipticArc":
+        # rigid: its ends and the extremes of x and y its sweep passes, each the center
+        # plus its offset at the values (the arc of a copy, turned or mirrored, from its
+        # own points)
+        from .curves import elliptic_arc
+        pt = {n: (float(x[g.points[n].ix]), float(x[g.points[n].iy]))
+              for n in ("center", "vertex", "co_vertex", "start", "midpoint", "end")}
+        c = pt["center"]
+        arc = elliptic_arc(c, math.dist(c, pt["vertex"]), math.dist(c, pt["co_vertex"]),
+                           math.atan2(pt["vertex"][1] - c[1], pt["vertex"][0] - c[0]),
+                           pt["start"], pt["midpoint"], pt["end"])
+        cx, cy = P["center"]
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+        x0, y0, x1, y1 = arc.box()
+        xs += [cx + (x0 - c[0]), cx + (x1 - c[0])]
+        ys += [cy + (y0 - c[1]), cy + (y1 - c[1])]
+        return
     if k in ("Spline", "Bezier"):
         _spline_candidates(g, P, x, xs, ys)
         return

@@ -214,6 +214,22 @@ class EllipticArc:
         return self.curve.box(self.start_param, self.sweep)
 
 
+def elliptic_arc(center: Point, rx: float, ry: float, rotation: float, start: Point,
+                 mid: Point, end: Point) -> EllipticArc:
+    """The :class:`EllipticArc` of the ellipse ``center``, semi-axes ``rx`` (along
+    ``rotation``, radians) and ``ry`` (mm) from its point ``start`` through ``mid`` to
+    ``end`` (the way round that passes ``mid``): its canonical curve, the parameters of the
+    ends taken from the points (a mirrored arc runs clockwise)."""
+    from .ellipse import ellipse
+    curve, _ = ellipse(center, rx, ry, rotation)
+    t0, tm, t1 = curve.param(start), curve.param(mid), curve.param(end)
+    tau = 2 * math.pi
+    ccw = (t1 - t0) % tau
+    if (tm - t0) % tau <= ccw:
+        return EllipticArc(curve, t0, ccw or tau)
+    return EllipticArc(curve, t0, -((t0 - t1) % tau or tau))
+
+
 def _np():
     import numpy
     return numpy

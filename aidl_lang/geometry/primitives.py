@@ -407,11 +407,47 @@ def _build_Ellipse(ctx, g, a):
     ry = _const(ctx, a["ry"], "ry")
     if rx <= 0 or ry <= 0:
         raise PrimitiveError(f"an Ellipse needs positive rx and ry, got {rx:g} and {ry:g}")
+    if a.get("start_angle") is not None or a.get("end_angle") is not None:
+        _elliptic_arc(ctx, g, a, rx, ry)
+        return
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
     g.points["center"] = ctx.point(a["center"], "center")
     g.scalars["rx"] = ctx.new_scalar(rx, "rx", held=True)
     g.scalars["ry"] = ctx.new_scalar(ry, "ry", held=True)
     g.closed = True
+
+
+def _elliptic_arc(ctx, g, a, rx: float, ry: float) -> None:
+    """``Ellipse(..., start_angle=, end_angle=)``: the open arc of the ellipse running
+    counter-clockwise from parameter angle ``start_angle`` to ``end_angle`` (the point of
+    parameter ``t`` is ``center + R(rotation) (rx cos t, ry sin t)``, the eccentric anomaly
+    of DXF's ELLIPSE).  Its kind is ``EllipticArc``: rigid, held by its center, ends,
+    midpoint, ``vertex`` (the end of the rx semi-axis) and ``co_vertex`` (of ry), from which
+    the exact arc of a copy (turned, mirrored) is taken after the solve."""
+    if a.get("start_angle") is None or a.get("end_angle") is None:
+        raise PrimitiveError("an elliptic arc needs both start_angle and end_angle (the "
+                             "parameter angles it runs between, counter-clockwise); without "
+                             "them the Ellipse is whole")
+    a1 = _const(ctx, a["start_angle"], "Ellipse start_angle")
+    a2 = _const(ctx, a["end_angle"], "Ellipse end_angle")
+    sweep = (a2 - a1) % (2 * math.pi)
+    if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
+        raise PrimitiveError("an elliptic arc needs different start and end angles (less than "
+                             "a whole turn apart): for the whole ellipse leave both out")
+    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    cs, sn = _cos_sin(rot)
+
+    def at(t):
+        u, v = rx * math.cos(t), ry * math.sin(t)
+        return (u * cs - v * sn, u * sn + v * cs)
+    offs = {"start": at(a1), "end": at(a1 + sweep), "midpoint": at(a1 + sweep / 2),
+            "vertex": (rx * cs, rx * sn), "co_vertex": (-ry * sn, ry * cs)}
+    g.kind = "EllipticArc"
+    _rigid(ctx, g, dict(a, rotation=Q.num(0.0, ANG)), offs, "elliptic arc")
+    g.data["rotation"] = rot
+    g.data["dims"] = {"rx": rx, "ry": ry}
+    g.data["angles"] = (a1, sweep)
+    g.closed = False
 
 
 def _hold_literal_shape(ctx, g, given: list, pts: list, a: dict) -> None:

@@ -211,6 +211,8 @@ class Renderer:
         counter-clockwise from its start to its end point on the circle through its start)."""
         if g.kind in ("Spline", "Bezier"):
             return self.spline(g)
+        if g.kind == "EllipticArc":
+            return self.elliptic_arc(g)
         if g.kind == "Line":
             return Line(self._pt(g.points["start"]), self._pt(g.points["end"]))
         c, s, e = (self._pt(g.points[n]) for n in ("center", "start", "end"))
@@ -221,6 +223,18 @@ class Renderer:
         if sweep < 1e-12:
             sweep = 2 * math.pi
         return Arc(c, r, a1, sweep)
+
+    def elliptic_arc(self, g: Geometry) -> EllipticArc:
+        """The exact arc of an ``Ellipse(..., start_angle=, end_angle=)`` at its solved
+        points: the ellipse of its center, vertex and co-vertex, from its start through its
+        midpoint to its end (a mirrored copy runs clockwise)."""
+        from ..geometry.curves import elliptic_arc
+        c, v, w, s0, m, e = (self._pt(g.points[n]) for n in
+                             ("center", "vertex", "co_vertex", "start", "midpoint", "end"))
+        arc = elliptic_arc(c, math.dist(c, v), math.dist(c, w),
+                           math.atan2(v[1] - c[1], v[0] - c[0]), s0, m, e)
+        self.spline_source.setdefault(arc.curve, g)    # located refusals name the Ellipse
+        return arc
 
     def pieces(self, g: Geometry) -> list:
         """The exact segments of an open curve in order: a Polyline's lines, else the one
@@ -495,7 +509,7 @@ class Renderer:
             if s.kind == "drawing":
                 self.draw_lines(g, out)
                 continue
-            if g.kind in ("Line", "Arc") or (g.kind in ("Spline", "Bezier", "Polyline")
+            if g.kind in ("Line", "Arc", "EllipticArc") or (g.kind in ("Spline", "Bezier", "Polyline")
                                              and not g.closed):
                 open_curves.append(g)
             elif g.kind == "Text":
@@ -597,6 +611,10 @@ class Renderer:
         self._stroke_segment(seg, style, g, out)
 
     def _stroke_segment(self, seg, style: str, g: Geometry, out: Drawing) -> None:
+        if isinstance(seg, EllipticArc):
+            self.exact.carrier_id(carrier(seg))
+            out.strokes.append((style, ("ellipse_arc", seg), g))
+            return
         if isinstance(seg, Spline):
             self.exact.carrier_id(carrier(seg))
             out.strokes.append((style, ("spline", seg), g))
@@ -620,7 +638,7 @@ class Renderer:
                 for seg in segs:
                     self._stroke_segment(seg, "drawing", g, out)
             return
-        if g.kind in ("Line", "Arc", "Spline", "Bezier") or (g.kind == "Polyline" and not g.closed):
+        if g.kind in ("Line", "Arc", "Spline", "Bezier", "EllipticArc") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))
             self.stroke(g, "drawing", out)
         elif g.kind == "Text":

@@ -1254,6 +1254,9 @@ def _sample(item) -> np.ndarray:
         c, r = np.asarray(item[1], float), float(item[2])
         t = np.linspace(0, 2 * math.pi, 32, endpoint=False)
         return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+    if kind == "ellipse_arc":            # 17 points along it
+        arc = item[1]
+        return np.array([arc.at(arc.start_param + arc.sweep * i / 16) for i in range(17)])
     if kind == "spline":                 # 9 points along each span
         from ..geometry.spline import bez_at
         return np.array([bez_at(b, float(t)) for b in item[1].spans for t in _T9[:, 0]])

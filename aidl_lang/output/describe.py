@@ -204,7 +204,7 @@ def _item_points(item):
         return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
     if kind == "poly":
         return np.asarray(item[1], dtype=float).reshape(-1, 2)
-    if kind == "spline":
+    if kind in ("spline", "ellipse_arc"):
         x0, y0, x1, y1 = item[1].box()
         return np.array([(x0, y0), (x1, y1)], dtype=float)
     return None

@@ -140,7 +140,7 @@ def _stroke(item, exact, style: str, source: str) -> Stroke | None:
         return Stroke([Arc(_t(c), float(r), float(a1), float(sweep))], style, False, source)
     if kind == "circle":
         return Stroke([Circle(_t(item[1]), float(item[2]))], style, True, source)
-    if kind == "spline":
+    if kind in ("spline", "ellipse_arc"):
         return Stroke([item[1]], style, item[1].whole, source)
     lp = item[2] if len(item) > 2 else exact.recover(item[1])
     return Stroke(list(lp.segments), style, True, source) if lp.segments else None

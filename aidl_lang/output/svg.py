@@ -235,7 +235,7 @@ def _item_points(item) -> np.ndarray:
         return np.array([item[1], item[2]], dtype=float)
     if kind == "poly":
         return np.asarray(item[1], dtype=float)
-    if kind == "spline":
+    if kind in ("spline", "ellipse_arc"):
         return np.vstack([Loop([item[1]]).points(), [item[1].end]])
     if kind == "circle":
         seg = Circle(tuple(item[1]), float(item[2]))
