@@ -592,9 +592,9 @@ out; the warning names each one with its code point.
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
-TEXT and MTEXT (write text with `Text(...)`), rational or high-degree splines, elliptical arcs
-(a full ELLIPSE is an Ellipse), hatches, dimensions, images; a DXF without `$INSUNITS` is read
-as millimetres (give `units=`).
+TEXT and MTEXT (write text with `Text(...)`), rational or high-degree splines, hatches,
+dimensions, images (an ELLIPSE, whole or partial, and an SVG elliptical arc are read exactly);
+a DXF without `$INSUNITS` is read as millimetres (give `units=`).
 
     board = Drawing2D("board.dxf")     # warning: 2 TEXT entities of `board.dxf` skipped
 """),

@@ -658,6 +658,14 @@ DETAILS: dict[str, str] = {
               "points is straight), so it is C2 between corners and passes through every "
               "point. An index that is not a point's, or an open spline's first or last "
               "point, is E0108. Negative indices count from the end.",
+    "Ellipse": "With start_angle= and end_angle= (keyword only, both) it is the open arc of "
+               "the ellipse, counter-clockwise from one parameter angle to the other: the "
+               "point at t is center + R(rotation) (rx cos t, ry sin t) (the eccentric "
+               "anomaly, as a DXF ELLIPSE; not the polar angle). Rigid; it chains with Lines, "
+               "Arcs and splines sharing its ends into an outline, or is drawn in a drawing. "
+               "Members of the arc: center, start, end, midpoint, vertex, co_vertex (ends of "
+               "the rx and ry semi-axes), bb. Exact in DXF (ELLIPSE with parameters), SVG "
+               "(A rx,ry) and STEP. `aidl import` writes a drawing's elliptical arcs so.",
     "Bezier": "A chain of cubic Bézier segments from its control points, as SVG's `C` "
               "and a drawing program's pen tool make them: points=[p0, c1, c2, p1, c3, c4, "
               "p2, ...], 3k+1 points for k segments; segment i runs from p_i to p_i+1, "

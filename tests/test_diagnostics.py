@@ -936,12 +936,13 @@ def test_W0130_unsupported_entities_named_and_counted(tmp_path):
         _square(doc, msp)
         msp.add_text("R1")
         msp.add_text("R2")
-        msp.add_ellipse((50, 50), major_axis=(10, 0), ratio=0.5, start_param=0, end_param=1)
+        h = msp.add_hatch()                 # an area fill: no curve to cut
+        h.paths.add_polyline_path([(0, 0), (5, 0), (5, 5)], is_closed=True)
     c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf")', make)
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
     msgs = sorted(d.message for d in c.sink.items if d.code == "W0130")
     assert len(msgs) == 2
-    assert "1 ELLIPSE (elliptical arc) entity" in msgs[0] and "no exact form" in msgs[0]
+    assert "1 HATCH entity" in msgs[0] and "no exact form" in msgs[0]
     assert "2 TEXT entities" in msgs[1] and "text is not imported" in msgs[1]
 
 

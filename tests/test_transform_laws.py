@@ -102,6 +102,10 @@ CURVES = {
 CURVES.update({k: v for k, v in {
     "Polyline": "s = Polyline(points=[(8, 1), (17, 2), (15, 6), (19, 9)])",
 }.items() if k in ENTRIES})
+# the open arc of an Ellipse (start_angle=, end_angle=; its kind is EllipticArc, made by the
+# Ellipse entry): the law on its exact curve, like an Arc's
+ARC_FORMS = {"EllipticArc": "s = Ellipse(center=(12, 5), rx=7, ry=3, rotation=25 deg, "
+                            "start_angle=-40 deg, end_angle=200 deg)"}
 # engraving: text under patterns and moves; a mirror is refused (test below)
 TEXT = 's = Text("AIDL 36", position=(12, 5), size=4, rotation=10 deg)'
 
@@ -338,6 +342,9 @@ def _curve_points(r, g) -> list:
     seg = Renderer(r.compiled.model).segment(g)
     if isinstance(seg, Line):
         return [seg.start, seg.end]
+    if isinstance(seg, EllipticArc):     # a mirrored copy runs clockwise, start to end
+        n = max(4, round(abs(seg.sweep) / ARC_STEP))
+        return [seg.at(seg.start_param + seg.sweep * i / n) for i in range(n + 1)]
     assert isinstance(seg, Arc) and seg.sweep > 0, f"{g.name}: an Arc runs counter-clockwise"
     n = max(4, round(seg.sweep / ARC_STEP))
     return [seg.at(seg.start_angle + seg.sweep * i / n) for i in range(n + 1)]
@@ -359,14 +366,14 @@ def _same_curve(got, ref, flip: bool, what: str):
         assert math.hypot(gx - rx, gy - ry) <= 1e-9, f"{what}: {(gx, gy)} != {(rx, ry)}"
 
 
-@pytest.mark.parametrize("kind", sorted(CURVES))
+@pytest.mark.parametrize("kind", sorted(CURVES) + sorted(ARC_FORMS))
 @LAWS
 @given(line=MIRROR_LINES, turn=st.sampled_from([90, 45, -72]))
 def test_curves_and_points_are_moved_exactly(kind, line, turn):
     ops = (_line_through(*line) + "    m = Mirrored(s, about=axis)\n"
            f"    p = CircularPattern(s, count=2, center=(-4, 6), step={turn} deg)\n"
            "    q = LinearPattern(s, 2, (21, 13))\n")
-    r = _compile(f"units mm\ndrawing a {{\n    {CURVES[kind]}\n{ops}}}\n")
+    r = _compile(f"units mm\ndrawing a {{\n    {CURVES.get(kind) or ARC_FORMS[kind]}\n{ops}}}\n")
     G = _geoms(r)
     orig = _curve_points(r, G["s"])
     for name, m, flip in [("m", _reflection(*line), kind == "Arc"),

@@ -246,8 +246,9 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         for i, p in enumerate(d.paths):
             closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
             if not w.chain(inner, p.segments, closed, f"p{i + 1}_"):
-                w.notes.append(Note("W0130", f"a path of `{name}` holds a spline piece that is "
-                                             f"not an interpolating spline: left out"))
+                w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
+                                             f"writes (a whole circle or ellipse inside a "
+                                             f"chain): left out"))
         if kind != "drawing":
             w.emit(depth + 1, "}")
     w.emit(depth, "}")
@@ -267,8 +268,8 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
         w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={_pt(c.center)}, "
                       f"radius={_num(c.radius)})")
     elif not w.chain(depth, segs, True, prefix):
-        w.notes.append(Note("W0130", "an outline holds a spline piece that is not an "
-                                     "interpolating spline (no exact form here): left out"))
+        w.notes.append(Note("W0130", "an outline holds a piece no statement writes (a "
+                                     "whole circle or ellipse inside a chain): left out"))
     if hole is not None:
         w.emit(depth - 1, "}")
 
