@@ -478,9 +478,6 @@ def test_mirror_about_a_solved_line(kind):
     """The mirror line is solved (drawn nearly horizontal, made vertical by a constraint):
     the copy is the mirror image about the solved line, and a pattern of the copy is it
     turned (an Ellipse keeps only an angle: it must follow the line as solved)."""
-    if kind == "Drawing2D":
-        pytest.xfail("a Drawing2D copy is mirrored about the line as drawn, not as solved "
-                     "(its curves are held in its own frame; issue 39's remaining work)")
     ops = ("    axis = Line(start=(-2, 0), end=(10, 1), construction=true)\n    Vertical(axis)\n"
            "    m = Mirrored(s, about=axis)\n"
            "    p = CircularPattern(m, count=2, center=(-4, 6), step=50 deg)\n")

@@ -294,7 +294,11 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         from .drawing2d import local_box
         ox, oy = P["origin"]
         bx = g.data.get("box")
-        if bx is None:
+        turn = held_turn(g, x) if g.data.get("mirror_lines") else 0.0
+        if abs(turn) > 1e-15:           # a mirrored copy about a line the solve turned
+            from .drawing2d import copied
+            bx = local_box(*copied(g.data["loops"], g.data["paths"], turn, None))
+        elif bx is None:
             bx = g.data["box"] = local_box(g.data["loops"], g.data["paths"])
         xs += [ox + bx[0], ox + bx[2]]
         ys += [oy + bx[1], oy + bx[3]]
@@ -377,6 +381,22 @@ def held_rotation(g: Geometry, x) -> float:
     return 2 * math.atan2(dy, dx) - r
 
 
+def held_turn(g: Geometry, x) -> float:
+    """The angle (radians) by which a mirrored ``Drawing2D`` copy's curves, held mirrored
+    about each mirror line as drawn, must still turn about its origin at the values ``x``:
+    reflecting about a line at ``phi`` is reflecting about ``phi0`` then turning by
+    ``2 (phi - phi0)``; a later mirror reverses an earlier turn (``g.data["mirror_lines"]``:
+    ``(line start, line end, phi0, sense)``)."""
+    tot = 0.0
+    for a, b, phi0, sense in g.data.get("mirror_lines", ()):
+        dx = float(evaluate(b.x, x)) - float(evaluate(a.x, x))
+        dy = float(evaluate(b.y, x)) - float(evaluate(a.y, x))
+        if dx == 0.0 and dy == 0.0:
+            continue
+        tot += sense * 2 * (math.atan2(dy, dx) - phi0)
+    return math.remainder(tot, 2 * math.pi)
+
+
 def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, float, float] | None:
     """(left, right, bottom, top) at values ``x``; None if the target holds no geometry."""
     xs, ys = candidates(target, frame, x, set(exclude))
@@ -388,4 +408,4 @@ def numeric_box(target, frame, x, exclude=frozenset()) -> tuple[float, float, fl
 
 
 __all__ = ["BBTerm", "SIDES", "contains_bbox", "collect", "expand", "exclusions",
-           "side_expr", "numeric_box", "held_rotation"]
+           "side_expr", "numeric_box", "held_rotation", "held_turn"]

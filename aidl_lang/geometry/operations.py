@@ -121,6 +121,16 @@ class _Cloner:
             new.data["loops"], new.data["paths"] = copied(
                 g.data["loops"], g.data["paths"], self.rot or 0.0,
                 self.line_angle if self.flip else None)
+            new.data.pop("box", None)
+            # mirrored about the line as drawn; if the solve turns the line, the curves turn
+            # by twice as much (bbox.held_turn): each mirror's line, angle as drawn and sense
+            # (a later mirror reverses the earlier ones' turns)
+            held = [(a, b, phi, -sense if self.flip else sense)
+                    for a, b, phi, sense in g.data.get("mirror_lines", ())]
+            if self.flip and self.line is not None:
+                held.append((self.line[0], self.line[1], self.line_angle, 1.0))
+            if held:
+                new.data["mirror_lines"] = held
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)

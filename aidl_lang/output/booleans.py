@@ -338,10 +338,15 @@ class Renderer:
     def drawing2d(self, g: Geometry) -> tuple[list[Loop], list[list]]:
         """The exact loops (holes clockwise) and open paths of a ``Drawing2D`` at its solved
         origin."""
-        from ..geometry.drawing2d import moved
+        from ..geometry.bbox import held_turn
+        from ..geometry.drawing2d import copied, moved
         ox, oy = self._pt(g.points["origin"])
-        loops = [Loop(moved(lp.segments, ox, oy)) for lp in g.data["loops"]]
-        paths = [moved(p, ox, oy) for p in g.data["paths"]]
+        held, held_paths = g.data["loops"], g.data["paths"]
+        turn = held_turn(g, self.x) if g.data.get("mirror_lines") else 0.0
+        if abs(turn) > 1e-15:           # mirrored about a line the solve turned
+            held, held_paths = copied(held, held_paths, turn, None)
+        loops = [Loop(moved(lp.segments, ox, oy)) for lp in held]
+        paths = [moved(p, ox, oy) for p in held_paths]
         for lp in loops:
             for sg in lp.segments:
                 if isinstance(sg, Spline):
