@@ -167,3 +167,48 @@ def test_import_writes_svg_cubics_as_bezier_and_renders_them_back(tmp_path):
     want = {(5.0, -25.0), (5.0, -5.0), (35.0, -5.0), (35.0, -25.0), (30.0, -28.0),
             (10.0, -28.0)}
     assert len(sp.control_points) == 7 and cp == want
+
+
+def test_a_closed_bezier_cuts_a_hole_of_its_exact_area(tmp_path):
+    """A closed chain as a hole: the plate loses exactly the area the cubics enclose (the
+    heart's, by dense sampling of the Bernstein form: independent of the code)."""
+    r = _ok("solid plate {\n    body = Rectangle(center=(0, 0), width=80, height=60)\n"
+            f"    hole heart {{\n        b = Bezier(points={_pts(HEART)}, closed=true)\n    }}\n"
+            "    Fixed(body)\n    Coincident(heart.b.start, (0, -20))\n}\n", tmp_path)
+    n = 4000
+    pts = [_bez(HEART[i:i + 4], k / n) for i in range(0, 12, 3) for k in range(n)]
+    area = abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(pts, pts[1:] + pts[:1]))) / 2
+    (part,) = r.output.parts
+    assert part.area == pytest.approx(80 * 60 - area, rel=1e-7)
+    assert len(part.loops) == 2
+
+
+def test_step_edges_lie_on_the_chain(tmp_path):
+    """The STEP file, re-read by OCP: every point of the bottom face's edges lies on the
+    heart's cubics (their own control points, evaluated here) to 1e-9 mm."""
+    pytest.importorskip("OCP")
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    from aidl_lang.geometry.spline import bezier_chain
+    r = _ok(f"solid heart {{\n    b = Bezier(points={_pts(HEART)}, closed=true)\n}}\n", tmp_path)
+    step = tmp_path / "h.step"
+    r.write(step)
+    reader = STEPControl_Reader()
+    reader.ReadFile(str(step))
+    reader.TransferRoots()
+    ref = bezier_chain(HEART, True)
+    ex = TopExp_Explorer(reader.OneShape(), TopAbs_EDGE)
+    n, worst = 0, 0.0
+    while ex.More():
+        ad = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
+        a, b = ad.FirstParameter(), ad.LastParameter()
+        for i in range(101):
+            q = ad.Value(a + (b - a) * i / 100)
+            if abs(q.Z()) < 1e-9:
+                worst = max(worst, ref.distance((q.X(), q.Y())))
+                n += 1
+        ex.Next()
+    assert n >= 101 and worst <= 1e-9, (n, worst)
