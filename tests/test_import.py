@@ -393,3 +393,41 @@ def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
     arc = _bulge_arc(p, q, math.tan(sweep / 4))
     assert math.dist(arc.center, c) < 1e-12 and abs(arc.radius - r) < 1e-12
     assert abs(arc.sweep - sweep) < 1e-12
+
+
+def test_dxf_text_is_imported_as_text_engravings(tmp_path):
+    """TEXT and MTEXT become `Text` engravings at the entity's insertion (or alignment) point,
+    with its height as the cap height, its rotation and alignment; a layer of only text is a
+    drawing.  Drawing2D still skips text with its W0130 note."""
+    from aidl_lang.drawing import read_drawing
+    from aidl_lang.drawing.program import import_drawing
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (60, 0), (60, 30), (0, 30)], close=True)
+    msp.add_text("R1", height=4, rotation=30, dxfattribs={"insert": (10, 10)})
+    msp.add_text('say "hi"', height=3, dxfattribs={"insert": (1, 1), "halign": 1, "valign": 2,
+                                                    "align_point": (30, 20)})
+    msp.add_mtext("two\\Plines", dxfattribs={"insert": (5, 25), "char_height": 2,
+                                             "attachment_point": 1})
+    msp.add_text("LABEL", height=5, dxfattribs={"insert": (0, 40), "layer": "notes"})
+    src = tmp_path / "t.dxf"
+    doc.saveas(src)
+    text, notes = import_drawing(src.read_bytes(), "t.dxf")
+    assert not notes, notes
+    assert 'Text("say \\"hi\\"", position=(30, 20), size=3, anchor="middle", valign="middle")' \
+        in text, text
+    assert "drawing notes {" in text
+    r = aidl_lang.compile(text, path=tmp_path / "t.aidl")
+    assert r.ok, [str(d) for d in r.errors]
+    vals = {v.name: v.mm for v in r.values}
+    t1 = next(k for k in vals if k.endswith("labels.t1.position"))
+    assert vals[t1] == pytest.approx((10, 10), abs=1e-12)
+    assert "size=4, anchor=\"start\", valign=\"baseline\", rotation=30 deg)" in text
+    t4 = t1.replace("t1.position", "t4.position")          # MTEXT's second line, 5/3 h lower
+    assert vals[t4] == pytest.approx((5, 25 - 5 / 3 * 2), abs=1e-12)
+    assert any(k.endswith("notes.t1.position") and v == pytest.approx((0, 40)) for k, v in
+               vals.items())
+    # the engraving's strokes are there, turned: R1's box is not axis-aligned text's
+    assert any(st.source.endswith("labels.t1") for st in r.output.engrave)
+    d = read_drawing(src.read_bytes(), "t.dxf", layer="0")
+    assert any("TEXT" in n.message and "not imported" in n.message for n in d.notes)

@@ -29,6 +29,12 @@ def _num(v: float) -> str:
     return s
 
 
+def _string(text: str) -> str:
+    """``text`` as an AIDL string literal (one line: control characters dropped)."""
+    clean = "".join(c for c in text if c >= " " and c != "\x7f")
+    return '"' + clean.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
 def _pt(p) -> str:
     return f"({_num(p[0])}, {_num(p[1])})"
 
@@ -239,6 +245,17 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         k += 1
         w.emit(depth + 1, f"e{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+    if d.texts:
+        inner = depth + 1 if kind == "drawing" else depth + 2
+        if kind != "drawing":
+            w.emit(depth + 1, "drawing labels {")
+        for i, (text, (x, y), h, rot, anchor, valign) in enumerate(d.texts):
+            deg = round(math.degrees(rot), 9)      # the DXF's degrees (text is not exact)
+            rot_txt = f", rotation={_num(deg)} deg" if deg else ""
+            w.emit(inner, f"t{i + 1} = Text({_string(text)}, position={_pt((x, y))}, "
+                          f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+        if kind != "drawing":
+            w.emit(depth + 1, "}")
     if d.paths:
         inner = depth + 1 if kind == "drawing" else depth + 2
         if kind != "drawing":
@@ -286,7 +303,8 @@ def to_program(layers: list[tuple[str, Drawing]], source: str) -> tuple[str, lis
     if multi:
         w.emit(0, "assembly drawing_import {")
     for layer, d in layers:
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") else "solid"
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
+            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
         name = _ident(layer or "part", used)
         _structure(w, 1 if multi else 0, kind, name, d)
     if multi:
@@ -322,12 +340,14 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     notes: list[Note] = []
     for ly in layers:
         try:
-            d = read_drawing(data, name, layer=ly or None, color=color, ident=ident, unit=unit)
+            d = read_drawing(data, name, layer=ly or None, color=color, ident=ident, unit=unit,
+                             keep_text=True)
         except DrawingError as ex:
             if ex.code == "E0132" and layer is None and len(layers) > 1:
                 continue        # a layer of only skipped entities
             raise
-        notes += d.notes
+        # text is written as Text engravings here (Drawing2D skips it with this note)
+        notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)]
         read.append((ly if isinstance(ly, str) else "_".join(ly), d))
     text, more = to_program(read, name.replace("\\", "/").rsplit("/", 1)[-1])
     return text, notes + more

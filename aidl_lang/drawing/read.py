@@ -97,6 +97,9 @@ class Drawing:
     paths: list = field(default_factory=list)
     notes: list = field(default_factory=list)
     unit: str = "mm"
+    # DXF TEXT and MTEXT lines (skipped by Drawing2D with a note; `aidl import` writes them
+    # as Text engravings): (text, (x, y) mm, height mm, rotation radians, anchor, valign)
+    texts: list = field(default_factory=list)
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
@@ -451,15 +454,64 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             pieces.append([elliptic_arc(c, rx, ry, rot, at(s0), at(s0 + sweep / 2),
                                         at(s0 + sweep))])
         elif t in ("TEXT", "MTEXT"):
+            if not flip:
+                texts.extend(_dxf_text(e, t, P, scale))
             raise _Skip(t)
         elif t in _SKIP_QUIET:
             return
         else:
             raise _Skip(t)
 
+    texts: list = []
     walk(list(msp), 0)
     _skip_notes(skipped, notes, name)
-    return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    d.texts = texts
+    return d
+
+
+# TEXT halign (0 left, 1 center, 2 right; 3-5 aligned/middle/fit: centred) and valign
+# (0 baseline, 1 bottom, 2 middle, 3 top); MTEXT attachment 1-9 (top/middle/bottom x
+# left/center/right): as Text's anchor and valign
+_HALIGN = {0: "start", 1: "middle", 2: "end", 3: "middle", 4: "middle", 5: "middle"}
+_VALIGN = {0: "baseline", 1: "bottom", 2: "middle", 3: "top"}
+
+
+def _dxf_text(e, t: str, P, scale: float) -> list:
+    """The lines of a TEXT or MTEXT entity as ``(text, position, height, rotation, anchor,
+    valign)`` in mm and radians: the insertion (or alignment) point, the height as the cap
+    height, MTEXT's lines one below the other (5/3 of the height apart, times its line
+    spacing factor)."""
+    import math as m
+    if t == "TEXT":
+        text = e.dxf.get("text", "")
+        h = float(e.dxf.get("height", 2.5)) * scale
+        rot = m.radians(float(e.dxf.get("rotation", 0.0)))
+        ha, va = int(e.dxf.get("halign", 0)), int(e.dxf.get("valign", 0))
+        at = e.dxf.insert if (ha, va) == (0, 0) or not e.dxf.hasattr("align_point") \
+            else e.dxf.align_point
+        return [(text, P(at), h, rot, _HALIGN.get(ha, "start"), _VALIGN.get(va, "baseline"))] \
+            if text.strip() else []
+    try:
+        lines = e.plain_text().splitlines()
+    except Exception:
+        lines = [e.text]
+    h = float(e.dxf.get("char_height", 2.5)) * scale
+    try:
+        rot = m.radians(float(e.get_rotation()))
+    except Exception:
+        rot = m.radians(float(e.dxf.get("rotation", 0.0)))
+    ap = int(e.dxf.get("attachment_point", 1))
+    anchor = ("start", "middle", "end")[(ap - 1) % 3]
+    valign = ("top", "middle", "bottom")[(ap - 1) // 3] if len(lines) == 1 else "top"
+    step = 5 / 3 * h * float(e.dxf.get("line_spacing_factor", 1.0))
+    x0, y0 = P(e.dxf.insert)
+    out = []
+    for i, line in enumerate(lines):
+        if line.strip():
+            out.append((line, (x0 + m.sin(rot) * step * i, y0 - m.cos(rot) * step * i), h,
+                        rot, anchor, valign))
+    return out
 
 
 def _fast_dxf(data: bytes):
@@ -709,11 +761,12 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
 
 # ------------------------------------------------------------------ entry
 def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
-                 unit: str | None = None) -> Drawing:
+                 unit: str | None = None, keep_text: bool = False) -> Drawing:
     """The drawing in ``data`` (``name``: its path as written, for messages; ``.dxf`` or
     ``.svg`` decides the reader).  ``layer``: DXF layer name(s) or SVG group id / Inkscape
     layer label(s); ``color``: DXF ACI number(s) or SVG colour(s); ``ident``: SVG element or
-    group id(s); ``unit``: overrides the file's unit.  Raises :class:`DrawingError`."""
+    group id(s); ``unit``: overrides the file's unit; ``keep_text``: a selection that holds
+    only DXF text is not empty (``aidl import`` writes it).  Raises :class:`DrawingError`."""
     if unit is not None and unit not in UNIT_MM:
         raise DrawingError("E0130", f"unknown unit `{unit}`",
                            "units: " + ", ".join(UNIT_MM))
@@ -728,7 +781,7 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
     else:
         raise DrawingError("E0130", f"`{name}` is neither a .dxf nor a .svg file",
                            "give a DXF or SVG drawing")
-    if d.empty:
+    if d.empty and not (keep_text and d.texts):      # `aidl import` keeps a text layer
         what = (f" on layer {layer!r}" if layer is not None else "") + \
                (f" with id {ident!r}" if ident is not None else "") + \
                (f" of colour {color!r}" if color is not None else "")
