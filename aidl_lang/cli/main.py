@@ -194,9 +194,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     dc.add_argument("name", nargs="?", default=None,
                     help="a topic (any case or style: SpurGear, spur-gear); none: list them")
     im = add("import", help="turn a DXF or SVG drawing into an editable .aidl program",
-             description="Read FILE.dxf or FILE.svg as exact lines, arcs, circles and splines "
-                         "and write a program of the language's own shapes that renders back "
-                         "to the same geometry (docs/import.md).")
+             description="Read FILE.dxf or FILE.svg as exact lines, arcs, circles, "
+                         "elliptical arcs and splines and write a program of the language's "
+                         "own shapes (Line, Arc, Circle, Ellipse, Spline, Bezier; DXF text as "
+                         "Text) that renders back to the same geometry (docs/import.md).")
     im.add_argument("file", metavar="FILE", help="a .dxf or .svg drawing")
     im.add_argument("-o", "--output", metavar="PART.aidl", default=None,
                     help="the program to write (default: FILE with .aidl; - for stdout)")
