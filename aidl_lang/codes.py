@@ -592,11 +592,12 @@ out; the warning names each one with its code point.
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
-TEXT and MTEXT (write text with `Text(...)`), rational or high-degree splines, hatches,
-dimensions, images (an ELLIPSE, whole or partial, and an SVG elliptical arc are read exactly);
+SVG text (write text with `Text(...)`), rational or high-degree splines, hatches,
+dimensions, images (an ELLIPSE, whole or partial, and an SVG elliptical arc are read exactly;
+DXF TEXT and MTEXT are engraved);
 a DXF without `$INSUNITS` is read as millimetres (give `units=`).
 
-    board = Drawing2D("board.dxf")     # warning: 2 TEXT entities of `board.dxf` skipped
+    board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),
     "W0402": ("open outline", """
 Lines and arcs in a solid or hole form faces only when their endpoints meet in a closed loop;

@@ -934,16 +934,17 @@ def test_E0130_unreadable_and_huge_drawings(tmp_path):
 def test_W0130_unsupported_entities_named_and_counted(tmp_path):
     def make(doc, msp):
         _square(doc, msp)
-        msp.add_text("R1")
-        msp.add_text("R2")
+        msp.add_text("R1")                  # kept: engraved in the single-stroke font
         h = msp.add_hatch()                 # an area fill: no curve to cut
         h.paths.add_polyline_path([(0, 0), (5, 0), (5, 5)], is_closed=True)
+        for z in (1, 2):
+            msp.add_polyline3d([(0, 0, 0), (1, 1, z)])
     c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf")', make)
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
     msgs = sorted(d.message for d in c.sink.items if d.code == "W0130")
-    assert len(msgs) == 2
+    assert len(msgs) == 2, msgs
     assert "1 HATCH entity" in msgs[0] and "no exact form" in msgs[0]
-    assert "2 TEXT entities" in msgs[1] and "text is not imported" in msgs[1]
+    assert "2 POLYLINE (3D or mesh) entities" in msgs[1]
 
 
 def test_E0131_open_chain_gives_its_gap_and_where(tmp_path):

@@ -398,7 +398,7 @@ def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
 def test_dxf_text_is_imported_as_text_engravings(tmp_path):
     """TEXT and MTEXT become `Text` engravings at the entity's insertion (or alignment) point,
     with its height as the cap height, its rotation and alignment; a layer of only text is a
-    drawing.  Drawing2D still skips text with its W0130 note."""
+    drawing.  Drawing2D engraves the same strokes on the part."""
     from aidl_lang.drawing import read_drawing
     from aidl_lang.drawing.program import import_drawing
     doc = _doc()
@@ -429,5 +429,15 @@ def test_dxf_text_is_imported_as_text_engravings(tmp_path):
                vals.items())
     # the engraving's strokes are there, turned: R1's box is not axis-aligned text's
     assert any(st.source.endswith("labels.t1") for st in r.output.engrave)
-    d = read_drawing(src.read_bytes(), "t.dxf", layer="0")
-    assert any("TEXT" in n.message and "not imported" in n.message for n in d.notes)
+    # Drawing2D engraves the text on the part: the strokes of "R1", turned 30 degrees
+    (tmp_path / "plate.aidl").write_text('units mm\nsolid plate {\n'
+                                         '    d = Drawing2D("t.dxf", layer="0")\n}\n')
+    r = aidl_lang.compile(path=tmp_path / "plate.aidl")
+    assert r.ok and not r.diagnostics, [str(x) for x in r.diagnostics]
+    strokes = [st for st in r.output.engrave if st.source == "plate.d"]
+    from aidl_lang.geometry.text import text_strokes
+    want = {(round(10 + a[0], 9), round(10 + a[1], 9)) for a, b in
+            text_strokes("R1", 4, "start", "baseline", math.radians(30))}
+    got = {(round(s.start[0], 9), round(s.start[1], 9)) for st in strokes
+           for s in st.segments}
+    assert want <= got

@@ -454,9 +454,9 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             pieces.append([elliptic_arc(c, rx, ry, rot, at(s0), at(s0 + sweep / 2),
                                         at(s0 + sweep))])
         elif t in ("TEXT", "MTEXT"):
-            if not flip:
-                texts.extend(_dxf_text(e, t, P, scale))
-            raise _Skip(t)
+            if flip:                        # mirrored text: not read
+                raise _Skip(t + " (mirrored: extrusion down)")
+            texts.extend(_dxf_text(e, t, P, scale))
         elif t in _SKIP_QUIET:
             return
         else:

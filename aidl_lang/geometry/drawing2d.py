@@ -153,6 +153,22 @@ def local_parts(d, rot: float):
     return out, paths, circles, outlines
 
 
+def text_paths(texts, rot: float) -> list:
+    """The pen strokes of a drawing's texts (``(text, (x, y), height, rotation, anchor,
+    valign)``, :class:`~aidl_lang.drawing.read.Drawing`'s ``texts``) as open paths of
+    :class:`Line` segments in its frame, turned by ``rot`` (radians) with the drawing: each
+    text in the single-stroke font (:func:`~.text.text_strokes`), its height the cap
+    height."""
+    from .text import text_strokes
+    out = []
+    for text, (px, py), h, trot, anchor, valign in texts:
+        segs = [_turn(Line((px + a[0], py + a[1]), (px + b[0], py + b[1])), rot)
+                for a, b in text_strokes(text, h, anchor, valign, trot)]
+        if segs:
+            out.append(segs)
+    return out
+
+
 def moved(segments, dx: float, dy: float) -> list:
     """``segments`` translated by ``(dx, dy)`` mm."""
     if dx == 0.0 and dy == 0.0:

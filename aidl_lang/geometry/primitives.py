@@ -1048,6 +1048,12 @@ def _build_Drawing2D(ctx, g, a):
                        part_of=g)
         ps.append(sg)
     g.data["path_parts"] = ps
+    if getattr(d, "texts", None):
+        # DXF TEXT and MTEXT as engraving strokes (the single-stroke font) in the drawing's
+        # frame, turned with it; they move, turn and mirror as its open paths do
+        from .drawing2d import text_paths
+        g.data["paths"] = list(paths) + text_paths(d.texts, rot)
+        g.data["text_paths"] = len(g.data["paths"]) - len(paths)
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}

@@ -526,6 +526,11 @@ class Renderer:
                 if f is not None and not f.is_empty():
                     faces.append(f)
                     out.own.setdefault(s, []).append((g, f))
+                if g.kind == "Drawing2D" and g.data.get("text_paths"):
+                    # its DXF text: engraved on the part, as a Text in a solid is
+                    for segs in self.drawing2d(g)[1][-g.data["text_paths"]:]:
+                        for seg in segs:
+                            self._stroke_segment(seg, "drawing", g, out)
         if open_curves:
             loops, rest = self.loops(open_curves)
             for lp, chain in loops:
