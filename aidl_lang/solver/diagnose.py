@@ -274,6 +274,10 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 label_of[p.ix] = label_of[p.iy] = g.label
             for s in g.scalars.values():
                 label_of[s.index] = g.label
+    axis = {}                          # a point's coordinate -> 0 (x) or 1 (y)
+    for g in model.all_geometry():
+        for p in g.points.values():
+            axis[p.ix], axis[p.iy] = 0, 1
     systems = []                       # (structure, params, rows, cols)
     touching = _ancestor_rows(solver, x)
     for s in model.structures:
@@ -305,8 +309,21 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             out.append(StructureDof(s, 0, 0))
             continue
         if not len(rows):
-            free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
-            out.append(StructureDof(s, n_unknowns, 0, free))
+            gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis)
+            if not gauge:
+                free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
+                        if floating else [])
+                out.append(StructureDof(s, n_unknowns, 0, free))
+                continue
+            rows_t = np.array(gauge)          # no row: only the frame's shift to leave out
+            if not floating:
+                out.append(StructureDof(s, n_unknowns, len(gauge)))
+                continue
+            rank, moving = null_support(rows_t)
+            pos = {int(c): k for k, c in enumerate(cols)}
+            free = sorted({label_of.get(i, model.param_label[i]) for i in params
+                           if moving[pos[i]]})
+            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free))
             continue
         if not floating:
             if len(rows) * len(cols) <= DENSE_CELLS:
@@ -317,10 +334,18 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                     J = solver.tape(rows).jacobian(x, cols, dense=True)
                 rank = _dense_block_rank(J)
             else:
-                rank = _block_rank(solver.tape(rows).jacobian(x, cols))
+                J = solver.tape(rows).jacobian(x, cols)
+                rank = _block_rank(J)
+            if rank >= 0:
+                rank += len(_gauge_shifts(solver, s, J, cols, axis))
             out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
             continue
-        rank, moving = null_support(solver.tape(rows).jacobian(x, cols))
+        J = solver.tape(rows).jacobian(x, cols)
+        gauge = _gauge_shifts(solver, s, J, cols, axis)
+        if gauge:
+            import scipy.sparse as sp
+            J = sp.vstack([sp.csr_matrix(J), sp.csr_matrix(np.array(gauge))])
+        rank, moving = null_support(J)
         if rank < 0:
             out.append(StructureDof(s, n_unknowns, -1))
             continue
@@ -332,6 +357,35 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             free = sorted({label_of.get(i, model.param_label[i])
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+    return out
+
+
+def _gauge_shifts(solver, s, J, cols, axis: dict) -> list:
+    """The shifts of all of structure ``s``'s content (its own points and its children's
+    frames) along x and along y, as vectors over ``cols``, that change no row of ``J``: each
+    is the move of ``s``'s frame, which its parent counts (a frame shifted one way and its
+    contents the other change nothing drawn), so ``s``'s own count leaves it out (issue 38:
+    a part of 3 structures in an assembly of 1 counted its one placement 3 times, 6 freedoms
+    for 2).  Only for a structure whose frame is an unknown (not the root's)."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return []
+    pos = {int(c): k for k, c in enumerate(cols)}
+    out = []
+    for a in (0, 1):
+        t = np.zeros(len(cols))
+        for i in solver.own.get(id(s), ()):
+            if axis.get(i) == a and i in pos:
+                t[pos[i]] = 1.0
+        for c in s.children.values():
+            i = (c.fx, c.fy)[a]
+            if i in pos:
+                t[pos[i]] = 1.0
+        if not t.any():
+            continue
+        Jt = np.asarray(J @ t, dtype=float).ravel()
+        scale = float(abs(J).max()) if min(J.shape) else 0.0
+        if np.all(np.abs(Jt) <= 1e-9 * max(1.0, float(scale))):
+            out.append(t)
     return out
 
 
