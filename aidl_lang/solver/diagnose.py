@@ -274,7 +274,7 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 label_of[p.ix] = label_of[p.iy] = g.label
             for s in g.scalars.values():
                 label_of[s.index] = g.label
-    axis = {}                          # a point's coordinate -> 0 (x) or 1 (y)
+    axis = [-1] * len(solver.x)           # per parameter: a point's x 0, its y 1, else -1
     for g in model.all_geometry():
         for p in g.points.values():
             axis[p.ix], axis[p.iy] = 0, 1
@@ -360,32 +360,34 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     return out
 
 
-def _gauge_shifts(solver, s, J, cols, axis: dict) -> list:
+def _gauge_shifts(solver, s, J, cols, axis: list) -> list:
     """The shifts of all of structure ``s``'s content (its own points and its children's
-    frames) along x and along y, as vectors over ``cols``, that change no row of ``J``: each
-    is the move of ``s``'s frame, which its parent counts (a frame shifted one way and its
-    contents the other change nothing drawn), so ``s``'s own count leaves it out (issue 38:
-    a part of 3 structures in an assembly of 1 counted its one placement 3 times, 6 freedoms
-    for 2).  Only for a structure whose frame is an unknown (not the root's)."""
+    frames) along x and along y, as vectors over ``cols`` (sorted), that change no row of
+    ``J``: each is the move of ``s``'s frame, which its parent counts (a frame shifted one way
+    and its contents the other change nothing drawn), so ``s``'s own count leaves it out
+    (issue 38: a part of 3 structures in an assembly of 1 counted its one placement 3 times,
+    6 freedoms for 2).  Only for a structure whose frame is an unknown (not the root's).
+    ``axis``: per parameter, 0 for a point's x, 1 for its y, -1 otherwise."""
     if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
         return []
-    pos = {int(c): k for k, c in enumerate(cols)}
+    pos = {c: k for k, c in enumerate(cols.tolist())}
+    own = solver.own.get(id(s), ())
+    children = s.children.values()
+    scale = None
     out = []
     for a in (0, 1):
-        t = np.zeros(len(cols))
-        for i in solver.own.get(id(s), ()):
-            if axis.get(i) == a and i in pos:
-                t[pos[i]] = 1.0
-        for c in s.children.values():
-            i = (c.fx, c.fy)[a]
-            if i in pos:
-                t[pos[i]] = 1.0
-        if not t.any():
+        k = [pos[i] for i in own if axis[i] == a and i in pos]
+        k += [pos[i] for i in ((c.fx, c.fy)[a] for c in children) if i in pos]
+        if not k:
             continue
-        Jt = np.asarray(J @ t, dtype=float).ravel()
-        scale = float(abs(J).max()) if min(J.shape) else 0.0
-        if np.all(np.abs(Jt) <= 1e-9 * max(1.0, float(scale))):
-            out.append(t)
+        if J.shape[0]:
+            if scale is None:
+                scale = max(1.0, float(abs(J).max()))
+            if np.abs(np.asarray(J[:, k].sum(axis=1), dtype=float)).max() > 1e-9 * scale:
+                continue                # some row sees the shift: not the frame's move
+        t = np.zeros(len(cols))
+        t[k] = 1.0
+        out.append(t)
     return out
 
 
