@@ -1076,3 +1076,33 @@ assembly kit {
     Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 13))
 }""")
     assert [d.code for d in c.sink.items if d.code in ("W0517", "W0518")] == []
+
+
+def test_W0507_equal_lone_holes_are_opened_once_and_thin_walls_still_found(monkeypatch):
+    """A plate of 64 equal holes 2 mm apart (t = 1: those not at the edge alone, farther
+    than 1.5 t from any other loop) and two slots 0.3 mm apart: the opening, taken tile by
+    tile, opens one lone hole for all 49 (_thin_of_loop's cache) and still finds the 0.3 mm wall, the same pieces of at
+    least 2 t^2 as the opening of the whole plate, and the same area removed."""
+    import manifold3d as mf
+    import numpy as np
+    from aidl_lang.output import checks as C
+    t = 1.0
+    holes = [mf.CrossSection.circle(2.0, 45).translate((6.0 * i + 3, 6.0 * j + 3))
+             for i in range(8) for j in range(8)]
+    pair = [mf.CrossSection.square((10.0, 8.0)).translate((x, 56.0)) for x in (5.0, 15.3)]
+    plate = mf.CrossSection.square((70.0, 70.0)) - C._union(holes + pair)
+    loops = [np.asarray(p, dtype=float) for p in plate.to_polygons()]
+    alone = C._isolated_loops(loops, C._loop_boxes(loops), t)
+    # the first row and column lie 1 mm from the plate's edge, the pair 0.3 mm apart: not alone
+    assert alone.sum() == 49 and len(loops) == 1 + 64 + 2
+    opened = []
+    real = C._open
+    monkeypatch.setattr(C, "_open", lambda s, t: (opened.append(s.num_vert()), real(s, t))[1])
+    pieces = C._thin(plate, t, tile=400, least=2 * t * t)
+    assert len(opened) < 49 // 4                    # not one opening per hole
+    monkeypatch.setattr(C, "_open", real)
+    whole = plate - C._open(plate, t)
+    assert sum(p.area() for p in pieces) == pytest.approx(whole.area(), rel=1e-6, abs=1e-5)
+    big = sorted(p.area() for p in pieces if p.area() >= 2 * t * t)
+    want = sorted(p.area() for p in whole.decompose() if p.area() >= 2 * t * t)
+    assert len(want) == 1 and big == pytest.approx(want, rel=1e-6)

@@ -328,7 +328,10 @@ def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
                           least=0.5)
     assert sizes == [] and ticks                      # slivers only: no union at all
     ref = circles - checks._open(circles, 0.5)
-    assert abs(sum(p.area() for p in pieces) - ref.area()) < 1e-6 * max(ref.area(), 1.0)
+    # each circle lies alone, so its corner slivers are opened once and moved to the others
+    # (_thin_of_loop); Clipper rounds a sliver by its position, 1.7e-8 mm^2 per circle here
+    assert abs(sum(p.area() for p in pieces) - ref.area()) < (1e-6 * max(ref.area(), 1.0)
+                                                              + 2e-8 * 200)
     # a 0.3 mm wall 600 mm long under a slot of overlapping circles: crosses every tile, one
     # piece
     plate = mf.CrossSection.square((620.0, 20.0))

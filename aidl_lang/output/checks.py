@@ -1091,7 +1091,13 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
     Uniting every tile's part into one shape first cost one uninterruptible Manifold call over
     all of them (fuzz seeds 791 and 1542: 5,000 circles, 515,225 vertices of corner slivers,
     9-25 s).  ``loops`` is accepted for the callers' convenience (unused); ``tick(ahead)`` is
-    called before each tile and each union (the compile's deadline)."""
+    called before each tile and each union (the compile's deadline).
+
+    The tiles are cut from the shape's loops (:func:`_clip_loops`: only the loops that cross a
+    tile's edge are clipped), and a loop that lies alone (:func:`_isolated_loops`) is opened
+    by itself, once per shape of loop (:func:`_thin_of_loop`): a plate of 5,000 equal round
+    holes 2 mm apart opens one hole, its outline's edge and the holes beside it
+    (``check_drawing`` 3.65 s -> 0.82 s)."""
     n = shape.num_vert()
     if n <= tile:
         thin = shape - _open(shape, t)
@@ -1105,12 +1111,13 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
     def box(a, b, c, e):
         return mf.CrossSection.square((c - a, e - b)).translate((a, b))
 
-    def split(piece, a, b, c, e):
+    def split(loops, boxes, a, b, c, e):
         tick()
-        if piece.is_empty():
+        if not loops:
             return
         small = max(c - a, e - b) <= 8 * t          # halving no longer sheds the margin
-        if piece.num_vert() <= tile or small:
+        if sum(len(p) for p in loops) <= tile or small:
+            piece = mf.CrossSection(loops, mf.FillRule.Positive)
             part = (piece - _open(piece, t)) ^ box(a, b, c, e)
             if not part.is_empty():
                 out.append(part)
@@ -1122,10 +1129,20 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
             mid = (b + e) / 2
             halves = [(a, b, c, mid), (a, mid, c, e)]
         for h in halves:
-            split(piece ^ box(h[0] - m, h[1] - m, h[2] + m, h[3] + m), *h)
+            split(*_clip_loops(loops, boxes, h[0] - m, h[1] - m, h[2] + m, h[3] + m), *h)
 
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    boxes = _loop_boxes(loops)
+    alone = _isolated_loops(loops, boxes, t)
+    cache: dict = {}
+    for k in np.flatnonzero(alone):
+        tick()
+        part = _thin_of_loop(loops[k], t, cache)
+        if part is not None:
+            out.append(part)
+    rest = [loops[k] for k in np.flatnonzero(~alone)]
     x0, y0, x1, y1 = shape.bounds()
-    split(shape, x0, y0, max(x1, x0 + 1e-9), max(y1, y0 + 1e-9))
+    split(rest, boxes[~alone], x0, y0, max(x1, x0 + 1e-9), max(y1, y0 + 1e-9))
     if sum(_area(p) for p in out) < least:        # corner slivers only: nothing to measure
         return out
     pieces = []
@@ -1133,6 +1150,100 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
         tick(part.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
         pieces.extend((k, p) for p in part.decompose())
     return _join(pieces, least, tick)
+
+
+def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
+    """Which ``loops`` (with their ``boxes``) lie farther than ``1.5 t`` from every other loop
+    and enclose none (a boolean array; a sufficient test, by boxes: a loop said not isolated
+    may still be).  What the opening by a disc of diameter ``t`` removes lies within ``t / 2``
+    of the boundary, and whether a point there is removed depends on the shape within ``t``
+    of it, so near an isolated loop it depends on that loop alone (:func:`_thin_of_loop`),
+    and the other loops' part is the same without it.  Large loops (a plate's outline) are
+    tested by their edges' boxes, so that the holes inside them are not all near them."""
+    n = len(loops)
+    if n < 2:
+        return np.zeros(n, dtype=bool)
+    diag = np.hypot(boxes[:, 2] - boxes[:, 0], boxes[:, 3] - boxes[:, 1])
+    big = diag > max(4 * _median_of(diag), 8 * t)
+    owner = [np.flatnonzero(~big)]
+    items = [boxes[~big]]
+    for k in np.flatnonzero(big):            # a large loop: one box per edge
+        P = loops[k]
+        Q = np.roll(P, -1, axis=0)
+        items.append(np.hstack([np.minimum(P, Q), np.maximum(P, Q)]))
+        owner.append(np.full(len(P), k))
+    owner = np.concatenate(owner)
+    pairs = box_pairs(np.concatenate(items), pad=0.75 * t * (1 + 1e-6) + 1e-9)
+    near = owner[pairs]
+    near = near[near[:, 0] != near[:, 1]]
+    alone = ~big
+    alone[near.ravel()] = False
+    return alone
+
+
+def _median_of(a: np.ndarray) -> float:
+    a = np.sort(a)
+    return float(a[len(a) // 2])
+
+
+def _thin_of_loop(loop: np.ndarray, t: float, cache: dict):
+    """What the opening by a disc of diameter ``t`` removes near ``loop`` (an (n, 2) array,
+    counter-clockwise for an outline, clockwise for a hole) when no other loop lies within
+    ``1.5 t`` of it (:func:`_isolated_loops`), a CrossSection, or None when it is empty: from
+    the loop alone (a hole in a square of material ``2 t`` wider than its box).  Computed once
+    per shape: ``cache`` holds what is removed near each loop seen, by its vertices relative
+    to its box's corner (to 1e-9 mm), so a grid of 5,000 equal holes is opened once; the
+    others take its result moved (Clipper rounds to its grid where the loop lies: the slivers
+    of a moved circle differ by ~1e-8 mm^2)."""
+    lo = loop.min(axis=0)
+    key = (len(loop), np.round(loop - lo, 9).tobytes())
+    seen = cache.get(key)
+    if seen is None:              # opened where it lies (Clipper rounds to its own grid)
+        (x0, y0), (x1, y1) = lo, loop.max(axis=0)
+        own = mf.CrossSection([loop], mf.FillRule.Positive)
+        if own.is_empty():                    # clockwise: a hole in the material around it
+            own = (mf.CrossSection.square((x1 - x0 + 4 * t, y1 - y0 + 4 * t))
+                   .translate((x0 - 2 * t, y0 - 2 * t))
+                   - mf.CrossSection([loop[::-1]], mf.FillRule.Positive))
+        near = (mf.CrossSection.square((x1 - x0 + 2 * t, y1 - y0 + 2 * t))
+                .translate((x0 - t, y0 - t)))
+        seen = cache[key] = ((own - _open(own, t)) ^ near, lo)
+    thin, at = seen
+    if thin.is_empty():
+        return None
+    return thin if at is lo else thin.translate((float(lo[0] - at[0]), float(lo[1] - at[1])))
+
+
+def _loop_boxes(loops: list) -> np.ndarray:
+    """The boxes (x0, y0, x1, y1) of ``loops`` ((n, 2) arrays), an (len(loops), 4) array."""
+    if not loops:
+        return np.zeros((0, 4))
+    P = np.concatenate(loops)
+    start = np.cumsum([0] + [len(p) for p in loops[:-1]])
+    return np.hstack([np.minimum.reduceat(P, start), np.maximum.reduceat(P, start)])
+
+
+def _clip_loops(loops: list, boxes: np.ndarray, a: float, b: float, c: float, e: float):
+    """The loops of a shape (outer loops counter-clockwise, holes clockwise, as
+    ``CrossSection.to_polygons`` gives them, with their ``boxes``) clipped to the box
+    ``a <= x <= c, b <= y <= e``: (loops, boxes) with the same winding number at every point
+    of the box.  A loop whose box lies inside the box is kept whole and one whose box misses
+    it is dropped, without a boolean; only the loops whose boxes cross its edge are clipped
+    (one Clipper boolean over those alone).  Every loop that encloses a crossing loop crosses
+    too (its box contains the other's), so the crossing loops' winding numbers are 0 or 1
+    and the boolean keeps them; adding the whole loops' windings gives the shape's.  On a
+    plate of 5,000 round holes this clips a few hundred vertices per tile where clipping the
+    whole shape cost its 225,000 vertices at each of the halving's 7 levels."""
+    inside = (boxes[:, 0] > a) & (boxes[:, 1] > b) & (boxes[:, 2] < c) & (boxes[:, 3] < e)
+    meets = (boxes[:, 0] <= c) & (boxes[:, 2] >= a) & (boxes[:, 1] <= e) & (boxes[:, 3] >= b)
+    keep = [loops[k] for k in np.flatnonzero(inside)]
+    cross = np.flatnonzero(meets & ~inside)
+    if len(cross) == 0:
+        return keep, boxes[inside]
+    rect = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+    cut = mf.CrossSection([loops[k] for k in cross], mf.FillRule.Positive) ^ rect
+    cut_loops = [np.asarray(p, dtype=float) for p in cut.to_polygons()]
+    return keep + cut_loops, np.concatenate([boxes[inside], _loop_boxes(cut_loops)])
 
 
 def _join(pieces: list, least: float, tick) -> list:

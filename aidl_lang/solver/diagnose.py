@@ -274,6 +274,10 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                 label_of[p.ix] = label_of[p.iy] = g.label
             for s in g.scalars.values():
                 label_of[s.index] = g.label
+    axis = [-1] * len(solver.x)           # per parameter: a point's x 0, its y 1, else -1
+    for g in model.all_geometry():
+        for p in g.points.values():
+            axis[p.ix], axis[p.iy] = 0, 1
     systems = []                       # (structure, params, rows, cols)
     touching = _ancestor_rows(solver, x)
     for s in model.structures:
@@ -305,8 +309,21 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             out.append(StructureDof(s, 0, 0))
             continue
         if not len(rows):
-            free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
-            out.append(StructureDof(s, n_unknowns, 0, free))
+            gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis)
+            if not gauge:
+                free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
+                        if floating else [])
+                out.append(StructureDof(s, n_unknowns, 0, free))
+                continue
+            rows_t = np.array(gauge)          # no row: only the frame's shift to leave out
+            if not floating:
+                out.append(StructureDof(s, n_unknowns, len(gauge)))
+                continue
+            rank, moving = null_support(rows_t)
+            pos = {int(c): k for k, c in enumerate(cols)}
+            free = sorted({label_of.get(i, model.param_label[i]) for i in params
+                           if moving[pos[i]]})
+            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free))
             continue
         if not floating:
             if len(rows) * len(cols) <= DENSE_CELLS:
@@ -317,10 +334,18 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
                     J = solver.tape(rows).jacobian(x, cols, dense=True)
                 rank = _dense_block_rank(J)
             else:
-                rank = _block_rank(solver.tape(rows).jacobian(x, cols))
+                J = solver.tape(rows).jacobian(x, cols)
+                rank = _block_rank(J)
+            if rank >= 0:
+                rank += len(_gauge_shifts(solver, s, J, cols, axis))
             out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
             continue
-        rank, moving = null_support(solver.tape(rows).jacobian(x, cols))
+        J = solver.tape(rows).jacobian(x, cols)
+        gauge = _gauge_shifts(solver, s, J, cols, axis)
+        if gauge:
+            import scipy.sparse as sp
+            J = sp.vstack([sp.csr_matrix(J), sp.csr_matrix(np.array(gauge))])
+        rank, moving = null_support(J)
         if rank < 0:
             out.append(StructureDof(s, n_unknowns, -1))
             continue
@@ -332,6 +357,37 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
             free = sorted({label_of.get(i, model.param_label[i])
                            for i in params if moving[pos[i]]})
         out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+    return out
+
+
+def _gauge_shifts(solver, s, J, cols, axis: list) -> list:
+    """The shifts of all of structure ``s``'s content (its own points and its children's
+    frames) along x and along y, as vectors over ``cols`` (sorted), that change no row of
+    ``J``: each is the move of ``s``'s frame, which its parent counts (a frame shifted one way
+    and its contents the other change nothing drawn), so ``s``'s own count leaves it out
+    (issue 38: a part of 3 structures in an assembly of 1 counted its one placement 3 times,
+    6 freedoms for 2).  Only for a structure whose frame is an unknown (not the root's).
+    ``axis``: per parameter, 0 for a point's x, 1 for its y, -1 otherwise."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return []
+    pos = {c: k for k, c in enumerate(cols.tolist())}
+    own = solver.own.get(id(s), ())
+    children = s.children.values()
+    scale = None
+    out = []
+    for a in (0, 1):
+        k = [pos[i] for i in own if axis[i] == a and i in pos]
+        k += [pos[i] for i in ((c.fx, c.fy)[a] for c in children) if i in pos]
+        if not k:
+            continue
+        if J.shape[0]:
+            if scale is None:
+                scale = max(1.0, float(abs(J).max()))
+            if np.abs(np.asarray(J[:, k].sum(axis=1), dtype=float)).max() > 1e-9 * scale:
+                continue                # some row sees the shift: not the frame's move
+        t = np.zeros(len(cols))
+        t[k] = 1.0
+        out.append(t)
     return out
 
 
