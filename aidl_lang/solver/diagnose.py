@@ -293,46 +293,58 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     if not floating:
         whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
     held = _held_by_rigid(model)
+    pinned = solver.pinned_by
     for s, params, rows, cols in systems:
-        n_unknowns = len(params)
-        if id(s) in held:
-            # ``Rigid(s)`` (or a rigid ancestor): its shapes keep their placement to each
-            # other and to its frame, which alone moves (the parent counts it): nothing inside
-            # floats
-            out.append(StructureDof(s, n_unknowns, n_unknowns))
-            continue
-        if not len(cols):
-            out.append(StructureDof(s, 0, 0))
-            continue
-        if not len(rows):
-            free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
-            out.append(StructureDof(s, n_unknowns, 0, free))
-            continue
-        if not floating:
-            if len(rows) * len(cols) <= DENSE_CELLS:
-                if whole is not None:
-                    W, wcols = whole
-                    J = W[rows][:, np.searchsorted(wcols, cols)]
-                else:
-                    J = solver.tape(rows).jacobian(x, cols, dense=True)
-                rank = _dense_block_rank(J)
-            else:
-                rank = _block_rank(solver.tape(rows).jacobian(x, cols))
-            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
-            continue
-        rank, moving = null_support(solver.tape(rows).jacobian(x, cols))
-        if rank < 0:
-            out.append(StructureDof(s, n_unknowns, -1))
-            continue
-        # slack columns each come with a LINK row of full rank: they neither add nor remove
-        n_slack = len(cols) - n_unknowns
-        free = []
-        if moving.any():
-            pos = {int(c): k for k, c in enumerate(cols)}
-            free = sorted({label_of.get(i, model.param_label[i])
-                           for i in params if moving[pos[i]]})
-        out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+        d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating)
+        k = pinned.get(id(s), 0)
+        if k:
+            # geometry pinned in s's frame (system.pinned) is held by the solver, but it is
+            # still s's geometry: k unknowns that s's own rows fix (a square invertible block
+            # that no other row touches): k more unknowns, k more rank, nothing floats
+            d.unknowns += k
+            if d.rank >= 0:
+                d.rank += k
+        out.append(d)
     return out
+
+
+def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of,
+            floating) -> StructureDof:
+    """One structure's :class:`StructureDof` (see :func:`degrees_of_freedom`)."""
+    x = solver.x
+    n_unknowns = len(params)
+    if id(s) in held:
+        # ``Rigid(s)`` (or a rigid ancestor): its shapes keep their placement to each
+        # other and to its frame, which alone moves (the parent counts it): nothing inside
+        # floats
+        return StructureDof(s, n_unknowns, n_unknowns)
+    if not len(cols):
+        return StructureDof(s, 0, 0)
+    if not len(rows):
+        free = sorted({label_of.get(i, model.param_label[i]) for i in params}) if floating else []
+        return StructureDof(s, n_unknowns, 0, free)
+    if not floating:
+        if len(rows) * len(cols) <= DENSE_CELLS:
+            if whole is not None:
+                W, wcols = whole
+                J = W[rows][:, np.searchsorted(wcols, cols)]
+            else:
+                J = solver.tape(rows).jacobian(x, cols, dense=True)
+            rank = _dense_block_rank(J)
+        else:
+            rank = _block_rank(solver.tape(rows).jacobian(x, cols))
+        return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns))
+    rank, moving = null_support(solver.tape(rows).jacobian(x, cols))
+    if rank < 0:
+        return StructureDof(s, n_unknowns, -1)
+    # slack columns each come with a LINK row of full rank: they neither add nor remove
+    n_slack = len(cols) - n_unknowns
+    free = []
+    if moving.any():
+        pos = {int(c): k for k, c in enumerate(cols)}
+        free = sorted({label_of.get(i, model.param_label[i])
+                       for i in params if moving[pos[i]]})
+    return StructureDof(s, n_unknowns, rank - n_slack, free)
 
 
 def _held_by_rigid(model) -> set:
@@ -710,17 +722,21 @@ def redundancies(solver, deadline: float | None = None,
             rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
     out: list[Redundant] = []
     seen: set = set()
+    # a row that pins geometry (system.pinned; dropped from the solve) is one independent
+    # row of its own: it counts as the rows of a one-row block above do
+    pinned = solver.pinned_rows
     for i, c in enumerate(cons):
         k = id(c)
         if c.implicit or k in seen or k in unknown:
             continue
         seen.add(k)
         mine_rows = by_c[k]
-        if not any(live[j] for j in mine_rows):
+        p = pinned.get(k, 0)
+        if not p and not any(live[j] for j in mine_rows):
             if all(abs(F[j]) <= 1e-9 for j in mine_rows):
                 out.append(Redundant(c, []))        # follows from held values alone
             continue
-        gain, rk = contribution.get(k, 0), rank_c.get(k, 0)
+        gain, rk = contribution.get(k, 0) + p, rank_c.get(k, 0) + p
         if gain == 0:
             out.append(Redundant(c, _explicit_first(by.get(k, []))))
         elif rk > gain:
