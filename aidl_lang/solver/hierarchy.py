@@ -31,6 +31,7 @@ import numpy as np
 from .arrays import unique
 
 from ..geometry.model import Model, Structure
+from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
 from .system import LINK, SIGN, Rows, build_rows, pin_values, pinned
@@ -107,8 +108,9 @@ class Solver:
         # is held at its pinned values, its rows dropped (system.pinned): its structure's
         # frame moves it
         self.rows_built = built            # every row, pinning rows included (warm reuse)
-        self.pins = pinned(built, self.free, self.is_frame, model.param_owner) \
-            if self.pinning else []
+        with gc_paused():          # thousands of small records: no cyclic collections
+            self.pins = pinned(built, self.free, self.is_frame, model.param_owner) \
+                if self.pinning else []
         self.pinned_by: dict[int, int] = {}     # id(structure) -> its pinned parameters
         self.pinned_rows: dict[int, int] = {}   # id(constraint) -> its rows dropped so
         if self.pins:

@@ -131,22 +131,26 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
     unknowns go down to a few dozen."""
     exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
     n = rows.n_model
+    ok_var = (np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool)).tolist()
     cand: list[int] = []                   # rows that may pin
     var_rows: dict[int, list[int]] = {}
-    touched: set = set()                   # unknowns read by a row that cannot pin
+    seeds: set = set()                     # unknowns that cannot be pinned, nor their component
     other: list[int] = []                  # nonlinear rows, inequalities: walked only if needed
     for r, e in enumerate(exprs):
         if kind[r] != EQ or type(e) is not Lin:
             other.append(r)
             continue
         terms = e.terms
-        ok = bool(terms)
+        if not terms:
+            continue
+        o = cons[r].owner
+        good = True
         for i in terms:
-            if i >= n or not free[i] or is_frame[i]:
-                ok = False
+            if i >= n or not ok_var[i] or owner[i] is not o:
+                good = False
                 break
-        if not ok:
-            touched.update(terms)
+        if not good:
+            seeds.update(i for i in terms if i < n)
             continue
         cand.append(r)
         for i in terms:
@@ -158,73 +162,40 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
     if not cand:
         return []
     # propagation: a row with one unknown not yet pinned pins it
-    left = {r: len(exprs[r].terms) for r in cand}
+    left = [0] * len(exprs)
+    for r in cand:
+        left[r] = len(exprs[r].terms)
     pin_of: dict[int, int] = {}            # parameter -> the row that pins it
-    used: set = set()
-    bad_rows: set = set()                  # rows left with nothing to pin: not a tree
     order: list[tuple[int, int]] = []
     todo = [r for r in cand if left[r] == 1]
     while todo:
         r = todo.pop()
-        if r in used or left[r] != 1:
+        if left[r] != 1:
             continue
         terms = exprs[r].terms
-        v = next(i for i in terms if i not in pin_of)
-        big = max(abs(c) for c in terms.values())
-        if not abs(terms[v]) >= PIVOT * big:
-            bad_rows.add(r)
+        for v in terms:
+            if v not in pin_of:
+                break
+        c = abs(terms[v])
+        if len(terms) > 1 and not c >= PIVOT * max(map(abs, terms.values())):
+            seeds.add(v)
             continue
-        used.add(r)
+        left[r] = -1                       # used
         pin_of[v] = r
         order.append((v, r))
         for r2 in var_rows[v]:
-            if r2 != r:
+            if r2 != r and left[r2] > 0:
                 left[r2] -= 1
                 if left[r2] == 1:
                     todo.append(r2)
-                elif left[r2] == 0:
-                    bad_rows.add(r2)
     if not order:
         return []
-    # components of the candidate rows' unknowns
-    parent: dict[int, int] = {}
-
-    def find(a: int) -> int:
-        root = a
-        while parent.get(root, root) != root:
-            root = parent[root]
-        while parent.get(a, a) != root:
-            parent[a], a = root, parent[a]
-        return root
+    # a candidate row left unused (it pins nothing new: a dependent row, or one of a cycle)
+    # spoils its component, and so does an unknown not pinned
     for r in cand:
-        it = iter(exprs[r].terms)
-        a = find(next(it))
-        for i in it:
-            b = find(i)
-            if a != b:
-                parent[b] = a
-    bad: set = set()
-    for r in bad_rows:
-        bad.add(find(next(iter(exprs[r].terms))))
-    for r in cand:
-        if r not in used:
-            bad.add(find(next(iter(exprs[r].terms))))
-    for i in var_rows:
-        if i not in pin_of or i in touched:
-            bad.add(find(i))
-    home: dict[int, object] = {}           # component -> its one structure
-    for r in cand:
-        k = find(next(iter(exprs[r].terms)))
-        if k in bad:
-            continue
-        o = cons[r].owner
-        if any(owner[i] is not o for i in exprs[r].terms) or home.setdefault(k, o) is not o:
-            bad.add(k)
-    keep = {find(v) for v, _ in order} - bad
-    if not keep:
-        return []
-    # no nonlinear row, inequality or box may read a pinned unknown
-    live = {v for v, _ in order if find(v) in keep}
+        if left[r] >= 0:
+            seeds.update(exprs[r].terms)
+    # nor may a nonlinear row, an inequality or a box read a pinned unknown
     seen: set = set()
     for r in other:
         stack = [exprs[r]]
@@ -232,8 +203,8 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
             e = stack.pop()
             if type(e) is Lin:
                 for i in e.terms:
-                    if i in live:
-                        keep.discard(find(i))
+                    if i in pin_of:
+                        seeds.add(i)
                 continue
             if id(e) in seen:
                 continue
@@ -241,7 +212,21 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
             if type(e) is not Nl:
                 return []                  # not an expression the solver knows: pin nothing
             stack.extend(a for a in e.args if isinstance(a, Expr))
-    return [(v, r) for v, r in order if find(v) in keep]
+    # spoil the whole component of every seed (through the candidate rows)
+    spoilt = set(seeds)
+    stack = list(seeds)
+    done_rows: set = set()
+    while stack:
+        v = stack.pop()
+        for r in var_rows.get(v, ()):
+            if r in done_rows:
+                continue
+            done_rows.add(r)
+            for u in exprs[r].terms:
+                if u not in spoilt:
+                    spoilt.add(u)
+                    stack.append(u)
+    return [(v, r) for v, r in order if v not in spoilt]
 
 
 def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
