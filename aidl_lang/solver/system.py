@@ -230,15 +230,19 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
 
 
 def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
-    """Set each pinned parameter of :func:`pinned`'s ``pins`` so that its row holds."""
+    """Set each pinned parameter of :func:`pinned`'s ``pins`` so that its row holds
+    (``x_v = -(const + sum of the row's other terms) / coef_v``, in ``pins``' order)."""
     exprs = rows.exprs
+    xl = x.tolist()            # Python floats: the same arithmetic without NumPy scalars
     for v, r in pins:
         e = exprs[r]
         s = e.const
         for i, c in e.terms.items():
             if i != v:
-                s += c * x[i]
-        x[v] = -s / e.terms[v]
+                s += c * xl[i]
+        xl[v] = -s / e.terms[v]
+    vs = [v for v, _ in pins]
+    x[vs] = [xl[v] for v in vs]
 
 
 def _non_inversion(rows: Rows, c, target, frame, axes, x, excl, cache) -> None:
