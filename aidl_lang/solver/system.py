@@ -132,6 +132,8 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
     exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
     n = rows.n_model
     ok_var = (np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool)).tolist()
+    # each parameter's structure when it may be pinned, else None (held, a frame, a slack)
+    home = [o if ok else None for o, ok in zip(owner, ok_var)] + [None] * (rows.n_params - n)
     cand: list[int] = []                   # rows that may pin
     var_rows: dict[int, list[int]] = {}
     seeds: set = set()                     # unknowns that cannot be pinned, nor their component
@@ -144,11 +146,12 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
         if not terms:
             continue
         o = cons[r].owner
-        good = True
-        for i in terms:
-            if i >= n or not ok_var[i] or owner[i] is not o:
-                good = False
-                break
+        good = o is not None
+        if good:
+            for i in terms:
+                if home[i] is not o:
+                    good = False
+                    break
         if not good:
             seeds.update(i for i in terms if i < n)
             continue
