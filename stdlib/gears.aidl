@@ -70,15 +70,17 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     solid teeth_ring {
         for i in range(teeth) {
             rot = phase + i * 360 deg / teeth
+            cr = cos(rot)
+            sr = sin(rot)
             for k in range(n) {
                 # the two arcs of the upper flank, and their mirror images about the tooth's axis
-                up1 = Arc(center=(cx + c1x[k] * cos(rot) - c1y[k] * sin(rot), cy + c1x[k] * sin(rot) + c1y[k] * cos(rot)),
+                up1 = Arc(center=(cx + c1x[k] * cr - c1y[k] * sr, cy + c1x[k] * sr + c1y[k] * cr),
                           radius=abs(r1[k]), start_angle=rot + s1[k], end_angle=rot + e1[k])
-                up2 = Arc(center=(cx + c2x[k] * cos(rot) - c2y[k] * sin(rot), cy + c2x[k] * sin(rot) + c2y[k] * cos(rot)),
+                up2 = Arc(center=(cx + c2x[k] * cr - c2y[k] * sr, cy + c2x[k] * sr + c2y[k] * cr),
                           radius=abs(r2[k]), start_angle=rot + s2[k], end_angle=rot + e2[k])
-                lo1 = Arc(center=(cx + c1x[k] * cos(rot) + c1y[k] * sin(rot), cy + c1x[k] * sin(rot) - c1y[k] * cos(rot)),
+                lo1 = Arc(center=(cx + c1x[k] * cr + c1y[k] * sr, cy + c1x[k] * sr - c1y[k] * cr),
                           radius=abs(r1[k]), start_angle=rot - e1[k], end_angle=rot - s1[k])
-                lo2 = Arc(center=(cx + c2x[k] * cos(rot) + c2y[k] * sin(rot), cy + c2x[k] * sin(rot) - c2y[k] * cos(rot)),
+                lo2 = Arc(center=(cx + c2x[k] * cr + c2y[k] * sr, cy + c2x[k] * sr - c2y[k] * cr),
                           radius=abs(r2[k]), start_angle=rot - e2[k], end_angle=rot - s2[k])
                 Fixed(up1.center)
                 Fixed(up2.center)

@@ -274,15 +274,17 @@ class Session:
         old = self.solver
         if old is not None and old.n_model == len(x) and list(old.model.free) == list(model.free):
             rows = build_rows(model, x)
-            keys = [repr(e) for e in rows.exprs]
-            if keys == self._row_keys and rows.n_params == old.rows.n_params \
-                    and rows.kind == old.rows.kind and rows.slack == old.rows.slack:
+            built = old.rows_built          # every row, those of pinned geometry included
+            if self._row_keys is None:      # made when first compared, not on every cold move
+                self._row_keys = [repr(e) for e in built.exprs]
+            if rows.n_params == built.n_params and rows.kind == built.kind \
+                    and rows.slack == built.slack and [repr(e) for e in rows.exprs] == self._row_keys:
                 for i in range(len(x)):
                     if old.x[i] != x[i]:
                         old.set_value(i, x[i])
                 return old, True
         s = Solver(model)
-        self.solver, self._row_keys = s, [repr(e) for e in s.rows.exprs]
+        self.solver, self._row_keys = s, None
         return s, False
 
     def _dof(self, solver: Solver | None) -> None:

@@ -297,77 +297,96 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
     if not floating:
         whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
     held = _held_by_rigid(model)
+    pinned = solver.pinned_by
+    pinned_axes: dict[int, set] = {}      # id(structure) -> axes of its pinned points
+    owner = model.param_owner
+    for v, _ in solver.pins:
+        if axis[v] >= 0:
+            pinned_axes.setdefault(id(owner[v]), set()).add(axis[v])
     for s, params, rows, cols in systems:
-        n_unknowns = len(params)
-        if id(s) in held:
-            # ``Rigid(s)`` (or a rigid ancestor): its shapes keep their placement to each
-            # other and to its frame, which alone moves (the parent counts it): nothing inside
-            # floats
-            out.append(StructureDof(s, n_unknowns, n_unknowns))
-            continue
-        if not len(cols):
-            out.append(StructureDof(s, 0, 0))
-            continue
-        if not len(rows):
-            gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis)
-            if not gauge:
-                free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
-                        if floating else [])
-                out.append(StructureDof(s, n_unknowns, 0, free))
-                continue
-            rows_t = np.array(gauge)          # no row: only the frame's shift to leave out
-            if not floating:
-                out.append(StructureDof(s, n_unknowns, len(gauge)))
-                continue
-            rank, moving = null_support(rows_t)
-            pos = {int(c): k for k, c in enumerate(cols)}
-            free = sorted({label_of.get(i, model.param_label[i]) for i in params
-                           if moving[pos[i]]})
-            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free))
-            continue
-        if not floating:
-            if len(rows) * len(cols) <= DENSE_CELLS:
-                if whole is not None:
-                    W, wcols = whole
-                    J = W[rows][:, np.searchsorted(wcols, cols)]
-                else:
-                    J = solver.tape(rows).jacobian(x, cols, dense=True)
-                rank = _dense_block_rank(J)
-            else:
-                J = solver.tape(rows).jacobian(x, cols)
-                rank = _block_rank(J)
-            if rank >= 0:
-                rank += len(_gauge_shifts(solver, s, J, cols, axis))
-            out.append(StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns)))
-            continue
-        J = solver.tape(rows).jacobian(x, cols)
-        gauge = _gauge_shifts(solver, s, J, cols, axis)
-        if gauge:
-            import scipy.sparse as sp
-            J = sp.vstack([sp.csr_matrix(J), sp.csr_matrix(np.array(gauge))])
-        rank, moving = null_support(J)
-        if rank < 0:
-            out.append(StructureDof(s, n_unknowns, -1))
-            continue
-        # slack columns each come with a LINK row of full rank: they neither add nor remove
-        n_slack = len(cols) - n_unknowns
-        free = []
-        if moving.any():
-            pos = {int(c): k for k, c in enumerate(cols)}
-            free = sorted({label_of.get(i, model.param_label[i])
-                           for i in params if moving[pos[i]]})
-        out.append(StructureDof(s, n_unknowns, rank - n_slack, free))
+        d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
+                    axis, pinned_axes.get(id(s), ()))
+        k = pinned.get(id(s), 0)
+        if k:
+            # geometry pinned in s's frame (system.pinned) is held by the solver, but it is
+            # still s's geometry: k unknowns that s's own rows fix (a square invertible block
+            # that no other row touches): k more unknowns, k more rank, nothing floats
+            d.unknowns += k
+            if d.rank >= 0:
+                d.rank += k
+        out.append(d)
     return out
 
 
-def _gauge_shifts(solver, s, J, cols, axis: list) -> list:
+def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
+            axis, pinned_axes) -> StructureDof:
+    """One structure's :class:`StructureDof` (see :func:`degrees_of_freedom`); ``axis`` and
+    ``pinned_axes`` as :func:`_gauge_shifts` takes them."""
+    x = solver.x
+    n_unknowns = len(params)
+    if id(s) in held:
+        # ``Rigid(s)`` (or a rigid ancestor): its shapes keep their placement to each
+        # other and to its frame, which alone moves (the parent counts it): nothing inside
+        # floats
+        return StructureDof(s, n_unknowns, n_unknowns)
+    if not len(cols):
+        return StructureDof(s, 0, 0)
+    if not len(rows):
+        gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis, pinned_axes)
+        if not gauge:
+            free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
+                    if floating else [])
+            return StructureDof(s, n_unknowns, 0, free)
+        rows_t = np.array(gauge)          # no row: only the frame's shift to leave out
+        if not floating:
+            return StructureDof(s, n_unknowns, len(gauge))
+        rank, moving = null_support(rows_t)
+        pos = {int(c): k for k, c in enumerate(cols)}
+        free = sorted({label_of.get(i, model.param_label[i]) for i in params
+                       if moving[pos[i]]})
+        return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free)
+    if not floating:
+        if len(rows) * len(cols) <= DENSE_CELLS:
+            if whole is not None:
+                W, wcols = whole
+                J = W[rows][:, np.searchsorted(wcols, cols)]
+            else:
+                J = solver.tape(rows).jacobian(x, cols, dense=True)
+            rank = _dense_block_rank(J)
+        else:
+            J = solver.tape(rows).jacobian(x, cols)
+            rank = _block_rank(J)
+        if rank >= 0:
+            rank += len(_gauge_shifts(solver, s, J, cols, axis, pinned_axes))
+        return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns))
+    J = solver.tape(rows).jacobian(x, cols)
+    gauge = _gauge_shifts(solver, s, J, cols, axis, pinned_axes)
+    if gauge:
+        import scipy.sparse as sp
+        J = sp.vstack([sp.csr_matrix(J), sp.csr_matrix(np.array(gauge))])
+    rank, moving = null_support(J)
+    if rank < 0:
+        return StructureDof(s, n_unknowns, -1)
+    # slack columns each come with a LINK row of full rank: they neither add nor remove
+    n_slack = len(cols) - n_unknowns
+    free = []
+    if moving.any():
+        pos = {int(c): k for k, c in enumerate(cols)}
+        free = sorted({label_of.get(i, model.param_label[i])
+                       for i in params if moving[pos[i]]})
+    return StructureDof(s, n_unknowns, rank - n_slack, free)
+
+
+def _gauge_shifts(solver, s, J, cols, axis: list, pinned_axes=()) -> list:
     """The shifts of all of structure ``s``'s content (its own points and its children's
     frames) along x and along y, as vectors over ``cols`` (sorted), that change no row of
     ``J``: each is the move of ``s``'s frame, which its parent counts (a frame shifted one way
     and its contents the other change nothing drawn), so ``s``'s own count leaves it out
     (issue 38: a part of 3 structures in an assembly of 1 counted its one placement 3 times,
     6 freedoms for 2).  Only for a structure whose frame is an unknown (not the root's).
-    ``axis``: per parameter, 0 for a point's x, 1 for its y, -1 otherwise."""
+    ``axis``: per parameter, 0 for a point's x, 1 for its y, -1 otherwise.  ``pinned_axes``:
+    the axes of ``s``'s points pinned in its frame (:func:`~.system.pinned`): their dropped rows
+    fix them in the frame, so they see a shift along that axis, and it is no frame move."""
     if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
         return []
     pos = {c: k for k, c in enumerate(cols.tolist())}
@@ -376,6 +395,8 @@ def _gauge_shifts(solver, s, J, cols, axis: list) -> list:
     scale = None
     out = []
     for a in (0, 1):
+        if a in pinned_axes:
+            continue
         k = [pos[i] for i in own if axis[i] == a and i in pos]
         k += [pos[i] for i in ((c.fx, c.fy)[a] for c in children) if i in pos]
         if not k:
@@ -766,17 +787,21 @@ def redundancies(solver, deadline: float | None = None,
             rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
     out: list[Redundant] = []
     seen: set = set()
+    # a row that pins geometry (system.pinned; dropped from the solve) is one independent
+    # row of its own: it counts as the rows of a one-row block above do
+    pinned = solver.pinned_rows
     for i, c in enumerate(cons):
         k = id(c)
         if c.implicit or k in seen or k in unknown:
             continue
         seen.add(k)
         mine_rows = by_c[k]
-        if not any(live[j] for j in mine_rows):
+        p = pinned.get(k, 0)
+        if not p and not any(live[j] for j in mine_rows):
             if all(abs(F[j]) <= 1e-9 for j in mine_rows):
                 out.append(Redundant(c, []))        # follows from held values alone
             continue
-        gain, rk = contribution.get(k, 0), rank_c.get(k, 0)
+        gain, rk = contribution.get(k, 0) + p, rank_c.get(k, 0) + p
         if gain == 0:
             out.append(Redundant(c, _explicit_first(by.get(k, []))))
         elif rk > gain:

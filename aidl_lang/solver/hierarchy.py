@@ -31,9 +31,10 @@ import numpy as np
 from .arrays import unique
 
 from ..geometry.model import Model, Structure
+from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
-from .system import LINK, SIGN, Rows, build_rows
+from .system import LINK, SIGN, Rows, build_rows, pin_values, pinned
 from .reduce import reduce
 from .small import SMALL_ROWS, small_tape
 from .tape import Tape
@@ -85,12 +86,13 @@ class Solver:
     """
 
     deadline: float | None = None       # time.monotonic() after which solving stops
+    pinning = True                      # False: pinned geometry stays unknown (for tests)
 
     def __init__(self, model: Model):
         self.model = model
         x = model.xs()
-        self.rows: Rows = build_rows(model, x)
-        n = self.rows.n_params
+        built = build_rows(model, x)
+        n = built.n_params
         self.n_model = len(x)
         self.x = np.concatenate([x, np.zeros(n - len(x))])
         self.free = np.concatenate([np.asarray(model.free, dtype=bool),
@@ -102,6 +104,28 @@ class Solver:
             for i in (s.fx, s.fy):
                 if 0 <= i < len(x):
                     self.is_frame[i] = True
+        # geometry fixed in its structure's frame (rigid template geometry: a gear's teeth)
+        # is held at its pinned values, its rows dropped (system.pinned): its structure's
+        # frame moves it
+        self.rows_built = built            # every row, pinning rows included (warm reuse)
+        with gc_paused():          # thousands of small records: no cyclic collections
+            self.pins = pinned(built, self.free, self.is_frame, model.param_owner) \
+                if self.pinning else []
+        self.pinned_by: dict[int, int] = {}     # id(structure) -> its pinned parameters
+        self.pinned_rows: dict[int, int] = {}   # id(constraint) -> its rows dropped so
+        if self.pins:
+            pin_values(built, self.pins, self.x)
+            dropped = set()
+            owner = model.param_owner
+            for v, r in self.pins:
+                self.free[v] = False
+                dropped.add(r)
+                k = id(owner[v])
+                self.pinned_by[k] = self.pinned_by.get(k, 0) + 1
+                k = id(built.constraint[r])
+                self.pinned_rows[k] = self.pinned_rows.get(k, 0) + 1
+            built = built.subset([r for r in range(len(built.exprs)) if r not in dropped])
+        self.rows: Rows = built
         self.scale[self.is_frame] = FRAME_SCALE
         self.slack = np.asarray(self.rows.slack, dtype=np.int64)
         self.kind = np.asarray(self.rows.kind, dtype=np.int64)
@@ -190,8 +214,17 @@ class Solver:
         self.x[s] = np.maximum(g, 0.0)
 
     def set_value(self, index: int, value: float) -> None:
-        """Edit a parameter (typically a held dimension) before re-solving."""
+        """Edit a parameter (typically a held dimension) before re-solving.  A pinned
+        parameter (:func:`.system.pinned`) keeps the value its rows give it."""
+        if self.pins and not self.free[index] and index in self._pinned_set():
+            return
         self.x[index] = float(value)
+
+    def _pinned_set(self) -> set:
+        s = self.__dict__.get("_pinned")
+        if s is None:
+            s = self._pinned = {v for v, _ in self.pins}
+        return s
 
     def rows_of(self, structs) -> np.ndarray:
         """The rows (increasing) of the constraints owned by ``structs``, less those given up

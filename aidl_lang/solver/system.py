@@ -21,7 +21,7 @@ import numpy as np
 
 from ..memory import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
-from ..geometry.expr import Lin, add, func, mul, var
+from ..geometry.expr import Expr, Lin, Nl, add, func, mul, var
 from ..geometry.model import Constraint, Model
 
 EQ, LINK, SIGN = 0, 1, 2
@@ -61,6 +61,20 @@ class Rows:
         # choice that the branch iteration freezes and re-checks like any other
         self.add(c, func("min", mul(2.0, sv), 0.0), SIGN, s)
 
+    def subset(self, keep: list) -> "Rows":
+        """The rows ``keep`` (increasing row indices) as a new :class:`Rows`, renumbered;
+        parameters (and slacks) keep their indices."""
+        out = Rows(n_model=self.n_model, n_params=self.n_params)
+        exprs, cons, kind, slack = self.exprs, self.constraint, self.kind, self.slack
+        out.exprs = [exprs[r] for r in keep]
+        out.constraint = [cons[r] for r in keep]
+        out.kind = [kind[r] for r in keep]
+        out.slack = [slack[r] for r in keep]
+        by = out.by_owner
+        for r, c in enumerate(out.constraint):
+            by.setdefault(id(c.owner), []).append(r)
+        return out
+
 
 def build_rows(model: Model, x: np.ndarray) -> Rows:
     """The rows of every constraint of ``model`` at parameter values ``x`` (model part)."""
@@ -92,6 +106,146 @@ def _build_rows(model: Model, x: np.ndarray) -> Rows:
             else:
                 rows.add(c, eq.expr)
     return rows
+
+
+PIVOT = 1e-6      # a pinning row's coefficient on the unknown it pins, against its largest
+
+
+def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
+    """The unknowns fixed in their structure's frame by affine rows alone, and those rows:
+    ``[(parameter, row)]`` in an order where each row pins its parameter from constants and
+    parameters pinned before it (issue 38: rigid geometry adds no unknowns).
+
+    A set is taken only as a whole connected component of the rows' unknowns: every row of
+    it is an affine equation (``Fixed``, a constructor's offsets such as an ``Arc``'s ends
+    from its center, ``p.x == 5``), it reads no held value (an edit of one would move it) and
+    no frame (a frame stays an unknown: the geometry moves with it), all its unknowns and
+    rows belong to one structure, no other row (nonlinear, inequality, box) reads its
+    unknowns, and the rows pin the unknowns one at a time, each row pinning one unknown with
+    a coefficient of at least :data:`PIVOT` times its largest.  Its Jacobian is then
+    square, triangular and invertible, and no other row touches its columns: taking the
+    unknowns out as held values and dropping the rows leaves every other unknown's solve,
+    the rank deficiency (degrees of freedom), the redundancy of every other constraint and
+    every conflict as they were (``docs/solver.md`` §1).  ``spur_gear``'s teeth (each arc's
+    center ``Fixed``, its ends offsets from it) are such components: the gear pair's 6,658
+    unknowns go down to a few dozen."""
+    exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
+    n = rows.n_model
+    ok_var = (np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool)).tolist()
+    # each parameter's structure when it may be pinned, else None (held, a frame, a slack)
+    home = [o if ok else None for o, ok in zip(owner, ok_var)] + [None] * (rows.n_params - n)
+    cand: list[int] = []                   # rows that may pin
+    var_rows: dict[int, list[int]] = {}
+    seeds: set = set()                     # unknowns that cannot be pinned, nor their component
+    other: list[int] = []                  # nonlinear rows, inequalities: walked only if needed
+    for r, e in enumerate(exprs):
+        if kind[r] != EQ or type(e) is not Lin:
+            other.append(r)
+            continue
+        terms = e.terms
+        if not terms:
+            continue
+        o = cons[r].owner
+        good = o is not None
+        if good:
+            for i in terms:
+                if home[i] is not o:
+                    good = False
+                    break
+        if not good:
+            seeds.update(i for i in terms if i < n)
+            continue
+        cand.append(r)
+        for i in terms:
+            vr = var_rows.get(i)
+            if vr is None:
+                var_rows[i] = [r]
+            else:
+                vr.append(r)
+    if not cand:
+        return []
+    # propagation: a row with one unknown not yet pinned pins it
+    left = [0] * len(exprs)
+    for r in cand:
+        left[r] = len(exprs[r].terms)
+    pin_of: dict[int, int] = {}            # parameter -> the row that pins it
+    order: list[tuple[int, int]] = []
+    todo = [r for r in cand if left[r] == 1]
+    while todo:
+        r = todo.pop()
+        if left[r] != 1:
+            continue
+        terms = exprs[r].terms
+        for v in terms:
+            if v not in pin_of:
+                break
+        c = abs(terms[v])
+        if len(terms) > 1 and not c >= PIVOT * max(map(abs, terms.values())):
+            seeds.add(v)
+            continue
+        left[r] = -1                       # used
+        pin_of[v] = r
+        order.append((v, r))
+        for r2 in var_rows[v]:
+            if r2 != r and left[r2] > 0:
+                left[r2] -= 1
+                if left[r2] == 1:
+                    todo.append(r2)
+    if not order:
+        return []
+    # a candidate row left unused (it pins nothing new: a dependent row, or one of a cycle)
+    # spoils its component, and so does an unknown not pinned
+    for r in cand:
+        if left[r] >= 0:
+            seeds.update(exprs[r].terms)
+    # nor may a nonlinear row, an inequality or a box read a pinned unknown
+    seen: set = set()
+    for r in other:
+        stack = [exprs[r]]
+        while stack:
+            e = stack.pop()
+            if type(e) is Lin:
+                for i in e.terms:
+                    if i in pin_of:
+                        seeds.add(i)
+                continue
+            if id(e) in seen:
+                continue
+            seen.add(id(e))
+            if type(e) is not Nl:
+                return []                  # not an expression the solver knows: pin nothing
+            stack.extend(a for a in e.args if isinstance(a, Expr))
+    # spoil the whole component of every seed (through the candidate rows)
+    spoilt = set(seeds)
+    stack = list(seeds)
+    done_rows: set = set()
+    while stack:
+        v = stack.pop()
+        for r in var_rows.get(v, ()):
+            if r in done_rows:
+                continue
+            done_rows.add(r)
+            for u in exprs[r].terms:
+                if u not in spoilt:
+                    spoilt.add(u)
+                    stack.append(u)
+    return [(v, r) for v, r in order if v not in spoilt]
+
+
+def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
+    """Set each pinned parameter of :func:`pinned`'s ``pins`` so that its row holds
+    (``x_v = -(const + sum of the row's other terms) / coef_v``, in ``pins``' order)."""
+    exprs = rows.exprs
+    xl = x.tolist()            # Python floats: the same arithmetic without NumPy scalars
+    for v, r in pins:
+        e = exprs[r]
+        s = e.const
+        for i, c in e.terms.items():
+            if i != v:
+                s += c * xl[i]
+        xl[v] = -s / e.terms[v]
+    vs = [v for v, _ in pins]
+    x[vs] = [xl[v] for v in vs]
 
 
 def _non_inversion(rows: Rows, c, target, frame, axes, x, excl, cache) -> None:
