@@ -426,10 +426,13 @@ def null_support(J, deadline: float | None = None) -> tuple[int, np.ndarray]:
         return n_cols, moving
     sub = C[:, U].tocsr()
     sub = sub[np.flatnonzero(np.diff(sub.indptr))]
-    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape):
-        return NOT_COUNTED_SIZE, moving
-    if _svd_too_late(*sub.shape, deadline):
-        return NOT_COUNTED_TIME, moving
+    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape) \
+            or _svd_too_late(*sub.shape, deadline):
+        rank_u, moves = _sparse_null_support(sub, deadline)
+        if rank_u < 0:
+            return rank_u, moving
+        moving[U] = moves
+        return n_cols - len(U) + rank_u, moving
     if sub.shape[0] == 0:
         moving[U] = True
         return n_cols - len(U), moving
@@ -443,6 +446,66 @@ def null_support(J, deadline: float | None = None) -> tuple[int, np.ndarray]:
         rest = 1.0 - np.einsum("ij,ij->j", Vt[:rank_u], Vt[:rank_u])
         moving[U] = rest > 1e-12
     return n_cols - len(U) + rank_u, moving
+
+
+PROBES = 16        # random vectors projected on the null space by _sparse_null_support
+
+
+def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndarray]:
+    """:func:`null_support`'s ``(rank, moving)`` of a sparse ``A`` too large for one dense
+    SVD (issue 37: 2 500 chained points, a 2 499 x 5 000 SVD).
+
+    The rank: the rows independent of all others by structure are peeled off
+    (:func:`_peeled_rows`; a chain peels to nothing) and the rest, the *core*, is ranked by
+    the greedy pass (:func:`dependencies`), which also names the core's dependent rows.
+    Without those, ``B`` (``r`` x ``n``) has full row rank, and the projection of a vector
+    ``z`` on the null space is the ``v`` of the saddle-point system
+    ``[[I, B^T], [B, 0]] [v; y] = [z; 0]`` (one sparse LU, SuperLU).  A column moves when
+    the null space has a share of it, ``|P e_c|^2 > 1e-12`` as for the SVD; that share is
+    the mean of ``v_c^2`` over random Gaussian ``z`` (:data:`PROBES` of them, a fixed seed:
+    the same answer every run), which for a share 100 times the threshold falls below it
+    with a probability under ``1e-20``.  Rank -1 when the core is too large for the greedy
+    pass or the system is too ill-conditioned to trust (``B v`` not ~0), -2 past
+    ``deadline``."""
+    import scipy.sparse as sp
+    from scipy.sparse.linalg import splu
+    A = sp.csr_matrix(A, copy=True)
+    A.eliminate_zeros()
+    A = A[np.flatnonzero(np.diff(A.indptr))]        # rows of explicit zeros say nothing
+    m, n = A.shape
+    if m == 0:
+        return 0, np.ones(n, dtype=bool)
+    peeled = _peeled_rows(A)
+    keep = np.flatnonzero(peeled)
+    core = np.flatnonzero(~peeled)
+    if len(core):
+        Ac = A[core]
+        cc = unique(Ac.indices)
+        if len(core) > MAX_DENSE or len(cc) > MAX_DENSE or _svd_too_large(len(core), len(cc)):
+            return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+        Ad = Ac[:, cc].toarray()
+        dependent = {r for r, _, _ in dependencies(Ad, list(range(len(core))), deadline)}
+        if deadline is not None and time.monotonic() > deadline:
+            return NOT_COUNTED_TIME, np.zeros(n, dtype=bool)
+        norm = np.linalg.norm(Ad, axis=1)         # rows the greedy pass skips: nothing to add
+        independent = [i for i in range(len(core))
+                       if i not in dependent and norm[i] > 0 and np.isfinite(norm[i])]
+        keep = np.sort(np.concatenate([keep, core[independent]]))
+    B = A[keep]
+    r = B.shape[0]
+    if r >= n:
+        return r, np.zeros(n, dtype=bool)
+    K = sp.bmat([[sp.identity(n), B.T], [B, None]], format="csc")
+    try:
+        lu = splu(K)
+        Z = np.random.default_rng(0).standard_normal((n, PROBES))
+        V = lu.solve(np.vstack([Z, np.zeros((r, PROBES))]))[:n]
+    except RuntimeError:                             # singular: the rank was misjudged
+        return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+    scale = max(1.0, float(abs(B).max())) * max(1.0, float(np.abs(V).max(initial=0.0)))
+    if not np.all(np.isfinite(V)) or float(np.abs(B @ V).max(initial=0.0)) > 1e-8 * scale:
+        return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+    return r, (V * V).mean(axis=1) > 1e-12
 
 
 def _svd_too_large(m: int, n: int) -> bool:
