@@ -809,9 +809,13 @@ def redundancies(solver, deadline: float | None = None,
         imp = [i for i, c in enumerate(lc) if c.implicit]
         basis = None                        # made when first needed (an SVD)
         for k, idx in mine.items():
+            if deadline is not None and time.monotonic() > deadline:
+                unknown.update(id(c) for c in lc)        # a block is reported whole or not
+                break
             pos = {i: j for j, i in enumerate(idx)}
             M = []
             others: list = []
+            named = {k}                     # ids in ``others`` (and k): linear, not a scan
             for n_ in touched.get(k, ()):
                 r, support, coef = null[n_]
                 v = np.zeros(len(idx))
@@ -822,14 +826,16 @@ def redundancies(solver, deadline: float | None = None,
                         v[pos[i]] -= cf
                 M.append(v)
                 for i in [r, *support]:
-                    if id(lc[i]) != k and lc[i] not in others:
+                    if id(lc[i]) not in named:
+                        named.add(id(lc[i]))
                         others.append(lc[i])
             rM = _rank(np.array(M)) if M else 0
             gain = len(idx) - rM
             contribution[k] = contribution.get(k, 0) + gain
             if rM:
                 lst = by.setdefault(k, [])
-                lst += [o for o in others if o not in lst]
+                have = {id(o) for o in lst}
+                lst += [o for o in others if id(o) not in have]
             if rM == 0 or gain == 0 or lc[idx[0]].implicit:
                 # independent of every other row (no overlap: rank beyond the shapes = gain),
                 # or fully implied (reported as such whatever its own rank)
