@@ -128,7 +128,8 @@ class Result:
     for :meth:`diagnostics_json`), ``path`` (the file name diagnostics are located in),
     ``source`` (the program text), ``units`` and ``unit_scale`` (the file's length unit and its
     size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
-    solve, drawing)."""
+    solve, drawing), ``not_searched`` (the user constraints :meth:`find_redundant` did not
+    look at: out of time or in too large a block)."""
 
     def __init__(self, compiled, path: str, source: str | None) -> None:
         self.compiled = compiled
@@ -140,6 +141,7 @@ class Result:
         self._output = None
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
+        self.not_searched = 0          # user constraints find_redundant did not look at
 
     # ------------------------------------------------------------------ status
     @property
@@ -236,19 +238,22 @@ class Result:
                 self._sliding = sliding(solver)
         return self._sliding
 
-    def find_redundant(self, seconds: float | None = 1.0,
-                       max_rows: int | None = 1000) -> list[Diagnostic]:
+    def find_redundant(self, seconds: float | None = 1.0, max_rows: int | None = 1000,
+                       deadline: float | None = None) -> list[Diagnostic]:
         """Look for constraints that others already imply and add each as a ``W0401`` warning
         to :attr:`diagnostics` (what ``aidl check`` does; docs/solver.md §6); returns those
-        warnings.  ``seconds`` bounds the search (None: no bound, as ``--dof``), ``max_rows``
-        the blocks of rows it ranks.  Runs once per result; [] when the program did not
-        solve."""
+        warnings.  ``seconds`` bounds the search (None: no bound), and so does ``deadline``
+        (a ``time.monotonic()`` value: the end of the run's budget), ``max_rows``
+        the blocks of rows it ranks; the user constraints not looked at (out of time, or in
+        a block too large) are counted in :attr:`not_searched`.  Runs once per result; []
+        when the program did not solve."""
         if self._redundant is None:
             self._redundant = []
             if self.compiled.ok and self.compiled.solve is not None:
                 from .pipeline import report_redundancies
                 before = len(self.sink.items)
-                report_redundancies(self.sink, self.compiled.solve, seconds, max_rows)
+                self.not_searched = report_redundancies(self.sink, self.compiled.solve,
+                                                        seconds, max_rows, deadline)
                 from .pipeline import report_sliding
                 self._sliding = report_sliding(self.sink, self.compiled.solve)
                 self._redundant = list(self.sink.items[before:])

@@ -363,14 +363,21 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
 
 
 def report_redundancies(sink: DiagnosticSink, result: SolveResult,
-                        seconds: float | None = None, max_rows: int | None = None) -> None:
+                        seconds: float | None = None, max_rows: int | None = None,
+                        deadline: float | None = None) -> int:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
     measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
     (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
-    unknowns that it ranks."""
+    unknowns that it ranks; ``deadline`` (``time.monotonic()``: the run's end) bounds it
+    too.  Returns the number of user constraints not looked at (out of time, or in a block
+    too large)."""
     from .solver.diagnose import MAX_DENSE, redundancies
-    deadline = None if seconds is None else time.monotonic() + seconds
-    reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE)
+    if seconds is not None:
+        end = time.monotonic() + seconds
+        deadline = end if deadline is None else min(deadline, end)
+    skipped: list = []
+    reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
+                        skipped=skipped)
     grouped = _report_groups(sink, reds)
     for red in reds:
         c = red.constraint
@@ -394,6 +401,7 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
                                  "the same intent", labels=labels))
+    return len(skipped)
 
 
 MAX_SLIDING_UNKNOWNS = 20000    # larger models are not searched for sliding features

@@ -19,7 +19,8 @@ from aidl_lang.batch.row import TIMINGS
 from aidl_lang.batch.store import read_jsonl, read_rows
 
 ROOT = Path(__file__).resolve().parent.parent
-TIMEOUT = 4.0           # the per-program time-out of these batches (the runaway needs minutes)
+TIMEOUT = 8.0           # the per-program time-out of these batches (the runaway needs minutes;
+#                         the slowest example, gear_pair, 1.2 s at a load of 3: room for more)
 
 # within --budget 0.02's loop cap (200 items a range) but past its evaluation steps: E0304
 OVER_BUDGET = """solid s {
@@ -293,9 +294,18 @@ def test_ctrl_c_under_dask_prints_one_line(corpus, tmp_path):
     processes printed 63 lines of tracebacks.  Now they ignore it and the batch prints one
     line, as with the local pool."""
     pytest.importorskip("dask.distributed")
+    import socket
     folder, _ = corpus
     out = tmp_path / "rows.jsonl"
     last = tmp_path / "last.jsonl"                     # still running when interrupted
+    # Dask's default HTTP port taken (another cluster on the machine, a parallel test run):
+    # it printed "Port 8787 is already in use" in four more lines
+    busy = socket.socket()
+    try:
+        busy.bind(("0.0.0.0", 8787))
+        busy.listen()
+    except OSError:
+        pass                                           # taken already: the same case
     last.write_text(json.dumps({"id": "runaway", "source": RUNAWAY, "budget": 100}) + "\n")
     proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "batch", str(folder / "gen"),
                              str(last), "-o", str(out), "--scheduler", "local", "--workers", "1",
@@ -311,5 +321,6 @@ def test_ctrl_c_under_dask_prints_one_line(corpus, tmp_path):
     os.killpg(proc.pid, signal.SIGINT)                   # Ctrl-C: the whole group
     stdout, stderr = proc.communicate(timeout=60)
     assert proc.returncode == 130, (stdout, stderr)
+    busy.close()
     assert stderr.splitlines() == [f"aidl: interrupted; every finished row is in {out}: run "
                                    "the same command again to go on"], stderr

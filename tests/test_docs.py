@@ -278,3 +278,64 @@ def test_every_relative_link_of_the_docs_leads_to_a_file():
             elif anchor and f.suffix == ".md" and anchor not in anchors(f):
                 bad.append(f"{md.relative_to(ROOT)}: {target} (no such heading)")
     assert bad == []
+
+
+# ------------------------------------------------------------------ issue 37: the newcomer's first run
+def _readme() -> str:
+    return (ROOT / "README.md").read_text(encoding="utf-8")
+
+
+def test_the_readme_says_first_what_aidl_is_for_and_who_writes_it():
+    """Issue 37: the README's first lines did not say what AIDL is for or who writes it."""
+    first = _readme().split("\n\n")[1]          # the paragraph under the title
+    assert "flat parts" in first and "sheet material" in first
+    for who in ("**people**", "**language models**", "**agents**"):
+        assert who in first
+
+
+def test_the_extras_table_lists_every_extra_with_its_size():
+    """Issue 37: one table of the extras, what each adds and its installed size: every extra of
+    pyproject.toml that installs something for users (not the empty `serve`, kept for old
+    install lines, nor the benchmarks' `bench`) has its row, and every row is an extra."""
+    import tomllib
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"][
+        "optional-dependencies"]
+    table = _readme().split("### Extras", 1)[1].split("\n\n")[2]
+    rows = {m.group(1): m.group(2) for m in
+            re.finditer(r"^\| `(\w+)` \| .*? \| ([^|]+) \|$", table, re.M)}
+    assert set(rows) == set(extras) - {"serve", "bench"}
+    assert all(re.search(r"\d+ MB|—", size) for size in rows.values())
+
+
+def test_user_docs_and_engineering_notes_are_apart():
+    """Issue 37: instruction counts and issue history go under docs/dev/ or the benchmarks:
+    no user document quotes millions of instructions (callgrind) but the parse-time note of
+    editors.md and solver.md's one comparison, which say what the user waits for."""
+    quoted = {md.name for md in (ROOT / "docs").glob("*.md")
+              if re.search(r"\d+ M instructions", md.read_text(encoding="utf-8"))}
+    assert quoted == set()
+    notes = (ROOT / "docs" / "dev" / "performance.md").read_text(encoding="utf-8")
+    assert "callgrind" in notes and "instructions" in notes
+
+
+def test_the_tutorial_says_what_the_dof_count_and_the_origin_line_mean():
+    """Issue 37: the tutorial printed a DOF count and `origin` lines without saying what they
+    are; every command it shows is run by test_every_tutorial_command_runs_on_its_program."""
+    text = (ROOT / "docs" / "tutorial.md").read_text(encoding="utf-8")
+    assert "are the **degrees of freedom** (DOF) left" in text
+    assert "The **`origin` line** is where the structure's own frame sits" in text
+
+
+def test_the_docs_agree_on_what_kerf_does_to_stl_3mf_and_step():
+    """Issue 37: the docs disagreed on whether the kerf offsets STL/3MF/STEP.  Every sentence
+    of the docs that names them beside the kerf says they keep the designed size."""
+    said = []
+    for md in DOCS:
+        prose = re.sub(r"```.*?```", "", md.read_text(encoding="utf-8"), flags=re.S)
+        paragraphs = [re.sub(r"\s+", " ", p) for p in re.split(r"\n\s*\n|\n#", prose)]
+        for sentence in (s for p in paragraphs for s in re.split(r"(?<=[.;])\s", p)):
+            if "kerf" in sentence.lower() and "STL" in sentence and "STEP" in sentence \
+                    and "3MF" in sentence:
+                said.append((md.name, sentence))
+    assert len(said) >= 3
+    assert all("keep the designed size" in s for _, s in said), said

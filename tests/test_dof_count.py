@@ -7,6 +7,7 @@ hierarchy."""
 from __future__ import annotations
 
 import pathlib
+import time
 
 import numpy as np
 import pytest
@@ -413,14 +414,19 @@ def test_the_ancestor_rows_of_a_large_pattern_take_linear_work():
 def test_a_dof_count_too_large_for_a_dense_svd_is_not_counted_and_stops(tmp_path, capsys,
                                                                         monkeypatch):
     """Issue 37: `aidl check --dof` of 2,500 chained points took 80 s and 1 GB (a full SVD of
-    2 499 x 5 000, then an unbounded redundancy search).  A dense SVD past MAX_SVD_FLOPS is
-    "not counted", and --dof's redundancy search stops at the budget's wall time.  Shown
-    here on 300 points with the bound lowered."""
+    2 499 x 5 000, then an unbounded redundancy search).  Past MAX_SVD_FLOPS the count peels
+    the rows independent by structure and ranks the rest by the greedy pass: a chain is
+    counted; a ring (nothing peels) whose rest is past the bound too is "not counted".
+    Shown here on 300 points with the bound lowered."""
     from aidl_lang.cli.main import main
     monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e6)
     f = tmp_path / "pts.aidl"
-    f.write_text("units mm\ndrawing d {\n    pts = [Point(i * 0.1, 0) for i in range(300)]\n"
-                 "    for i in range(299) { Distance(pts[i], pts[i + 1], 0.1) }\n}\n")
+    f.write_text(_chain(300))
+    assert main(["check", "--dof", str(f)]) == 0
+    out = capsys.readouterr().out
+    assert "301 degrees of freedom left" in out
+    assert "d       600  301  d.pts[0], d.pts[100]" in out
+    f.write_text(_chain(300, "    Distance(pts[299], pts[0], 29.9)\n"))
     assert main(["check", "--dof", str(f)]) == 0
     out = capsys.readouterr().out
     assert "degrees of freedom not counted (model too large)" in out
@@ -428,8 +434,9 @@ def test_a_dof_count_too_large_for_a_dense_svd_is_not_counted_and_stops(tmp_path
     assert main(["check", "--dof", "--json", str(f)]) == 0
     import json
     doc = json.loads(capsys.readouterr().out)
-    assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": []}]
-    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e10)      # counted: 600 unknowns, 299 rows
+    assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": [],
+                           "not_counted": "too large"}]
+    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e10)      # counted: 600 unknowns, rank 299
     assert main(["check", "--dof", str(f)]) == 0
     assert "301 degrees of freedom left" in capsys.readouterr().out
 
@@ -458,3 +465,181 @@ def test_a_structure_moving_with_its_frame_is_counted_once(tmp_path):
     assert dof["a"] == (6, ["a.s[0] (position)", "a.s[1] (position)", "a.s[2] (position)"])
     assert all(dof[f"a.s[{i}]"] == (2, [f"a.s[{i}].h (position)", f"a.s[{i}].r"])
                and dof[f"a.s[{i}].h"] == (0, []) for i in range(3))
+
+
+# ------------------------------------------------------------------ issue 37: the whole run's budget
+def _chain(n: int, extra: str = "") -> str:
+    return (f"units mm\ndrawing d {{\n    pts = [Point(i * 0.1, 0) for i in range({n})]\n"
+            f"    for i in range({n - 1}) {{ Distance(pts[i], pts[i + 1], 0.1) }}\n{extra}}}\n")
+
+
+def _sparse_model(seed: int) -> str:
+    """~400 points (a Jacobian past DENSE_CELLS: the sparse path) in chains and small loops,
+    with repeated and implied constraints among them."""
+    import random
+    rnd = random.Random(seed)
+    n = 420
+    lines = [f"    pts = [Point(i * 1.0, (i % 7) * 1.0) for i in range({n})]"]
+    for i in range(n - 1):
+        if rnd.random() < 0.9:
+            lines.append(f"    HorizontalDistance(pts[{i}], pts[{i + 1}], 1)")
+    for _ in range(25):
+        i = rnd.randrange(n - 3)
+        k = rnd.choice([1, 2, 3])
+        lines.append(f"    HorizontalDistance(pts[{i}], pts[{i + k}], {k})")   # often implied
+    for _ in range(10):
+        i = rnd.randrange(n - 1)
+        lines.append(f"    VerticalDistance(pts[{i}], pts[{i + 1}], "
+                     f"{((i + 1) % 7) - (i % 7)})")
+        lines.append(f"    VerticalDistance(pts[{i}], pts[{i + 1}], "
+                     f"{((i + 1) % 7) - (i % 7)})")                            # repeated
+    return "units mm\ndrawing d {\n" + "\n".join(lines) + "\n}\n"
+
+
+def _said(reds) -> list:
+    return sorted((r.constraint.span.line, r.partly,
+                   tuple(sorted(b.span.line for b in r.by))) for r in reds)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_the_redundancy_search_peels_independent_rows_and_finds_the_same(seed, monkeypatch):
+    """Issue 37: the redundancy search of `aidl check --dof` decomposed the whole block of
+    rows sharing unknowns (2 500 chained points: 14 s of Gram-Schmidt).  Rows that hold the
+    only entry of some column take part in no dependency and are peeled off first; what it
+    finds is the same as without peeling, on models past the dense path's size."""
+    solver = _solved(_sparse_model(seed), "sparse.aidl")
+    assert solver.whole.n_rows * int(solver.free.sum()) > D.DENSE_CELLS
+    sizes = []
+    dependencies = D.dependencies
+
+    def counted(J, order, deadline=None):
+        sizes.append(J.shape[0])
+        return dependencies(J, order, deadline)
+    monkeypatch.setattr(D, "dependencies", counted)
+    peeled = D.redundancies(solver)
+    peeled_sizes, sizes[:] = list(sizes), []
+    monkeypatch.setattr(D, "_peeled_rows", lambda J: np.zeros(J.shape[0], dtype=bool))
+    whole = D.redundancies(solver)
+    assert _said(peeled) == _said(whole) and len(peeled) >= 10
+    assert sum(peeled_sizes) < sum(sizes) / 2          # most rows never decomposed
+
+
+def test_a_chain_of_2500_points_is_searched_for_redundancy_in_a_blink(monkeypatch):
+    """The issue's reproducer: 2 500 chained points, and one Distance said twice.  The whole
+    chain peels to the two rows of the repeated constraint."""
+    src = _chain(2500, "    Distance(pts[0], pts[1], 0.1)\n")
+    from aidl_lang.limits import DEFAULT_BUDGET
+    c = compile_source(src, "chain.aidl", budget=DEFAULT_BUDGET.scaled(5))
+    assert c.ok
+    sizes = []
+    dependencies = D.dependencies
+
+    def counted(J, order, deadline=None):
+        sizes.append(J.shape)
+        return dependencies(J, order, deadline)
+    monkeypatch.setattr(D, "dependencies", counted)
+    skipped: list = []
+    reds = D.redundancies(c.solve.solver, skipped=skipped)
+    assert skipped == [] and sizes == [(2, 2)]         # x of pts[0] and pts[1]
+    # the loop's first Distance and the repeated one: each follows from the other
+    assert sorted((r.constraint.span.line, [b.span.line for b in r.by]) for r in reds) \
+        == [(4, [5]), (5, [4])]
+
+
+def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, monkeypatch):
+    """Issue 37: `aidl check --dof` gave the redundancy search a fresh 15 s after the compile
+    (2 500 chained points: 15.9 s in all).  The freedom count and the search now end at the
+    compile's own deadline, and a search cut short says so."""
+    from aidl_lang import pipeline
+    from aidl_lang.cli.main import main
+    made, given = [], {}
+    real_deadline = pipeline.Deadline
+
+    def recorded(at, budget):
+        made.append(at)
+        return real_deadline(at, budget)
+    monkeypatch.setattr(pipeline, "Deadline", recorded)
+    redundancies, dof = D.redundancies, D.degrees_of_freedom
+
+    def red(solver, deadline=None, **kw):
+        given["redundancy"] = deadline
+        return redundancies(solver, deadline=deadline, **kw)
+
+    def counted(solver, floating=True, deadline=None):
+        given["dof"] = deadline
+        return dof(solver, floating, deadline)
+    monkeypatch.setattr(D, "redundancies", red)
+    monkeypatch.setattr(D, "degrees_of_freedom", counted)
+    f = tmp_path / "pts.aidl"
+    f.write_text(_chain(300))
+    assert main(["check", "--dof", "--budget", "0.5", str(f)]) == 0
+    (at,) = made
+    assert given["dof"] == at and given["redundancy"] == at
+    assert "not counted" not in capsys.readouterr().out
+
+
+def test_check_dof_out_of_time_says_what_was_not_counted(tmp_path, capsys, monkeypatch):
+    """When the compile has used the whole budget, --dof counts nothing more and says so: the
+    structures "not counted (out of time)", the constraints not searched for redundancy."""
+    import json
+    from aidl_lang import api
+    from aidl_lang.cli.main import main
+    real = api.compile
+
+    def spent(*a, **kw):                # the compile ends just as its budget runs out
+        program = real(*a, **kw)
+        program.compiled.deadline.at = time.monotonic()
+        return program
+    monkeypatch.setattr(api, "compile", spent)
+    f = tmp_path / "pts.aidl"
+    f.write_text(_chain(300, "    Distance(pts[0], pts[1], 0.1)\n"))
+    assert main(["check", "--dof", str(f)]) == 0
+    out = capsys.readouterr().out
+    assert "degrees of freedom not counted (out of time)" in out
+    assert "d       600    ?  not counted (out of time)" in out
+    assert ("redundant constraints (W0401): not counted: 300 constraints not searched (out "
+            "of time: the budget's 15 s of wall time; --budget K gives K times more)") in out
+    assert main(["check", "--dof", "--json", str(f)]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": [],
+                           "not_counted": "out of time"}]
+    assert doc["redundancy"] == {"not_searched": 300}
+
+
+def _dense_null_support(J: np.ndarray) -> tuple[int, np.ndarray]:
+    """The dense reference: the rank and the moving columns of one thin SVD."""
+    if J.shape[0] == 0:
+        return 0, np.ones(J.shape[1], dtype=bool)
+    _, sv, Vt = np.linalg.svd(J, full_matrices=False)
+    rank = int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
+    rest = 1.0 - np.einsum("ij,ij->j", Vt[:rank], Vt[:rank])
+    return rank, rest > 1e-12
+
+
+RING = "    Distance(pts[59], pts[0], 5.9)\n"       # closes the chain: no row peels
+
+
+@pytest.mark.parametrize("name,src", _sources() + [("sparse.aidl", _sparse_model(4)),
+                                                   ("chain.aidl", _chain(120)),
+                                                   ("ring.aidl", _chain(60, RING))],
+                         ids=lambda v: pathlib.Path(v).stem if len(v) < 200 else "")
+def test_the_sparse_null_space_counts_what_the_svd_counts(name, src):
+    """Issue 37: past the dense SVD's size, `--dof` ranks by peeling and the greedy pass, and
+    finds the moving columns by projecting random vectors on the null space (one sparse LU):
+    the same rank and the same floating columns as the thin SVD, on every structure of every
+    example, test program, generated hierarchy and a few sketches made to peel or not."""
+    solver = _solved(src, name)
+    seen = 0
+    for s in solver.model.structures:
+        _params, rows, cols = _system(solver, s)
+        if not len(rows) or not len(cols) or len(cols) > 1500:
+            continue
+        J = solver.tape(rows).jacobian(solver.x, cols)
+        J = J[np.flatnonzero(np.diff(J.tocsr().indptr))]
+        rank, moving = D._sparse_null_support(J)
+        want_rank, want_moving = _dense_null_support(J.toarray())
+        assert rank == want_rank, s.path
+        assert np.array_equal(moving, want_moving), s.path
+        seen += 1
+    assert seen
+

@@ -536,10 +536,10 @@ def test_stacked_copies_of_one_outline_are_matched_once():
     n = len(prov.polygon(one))
     sections = [prov.face(one) for _ in range(2000)]
     prov.polygon(Loop([XC((5.0, -2.0), 3.0, False)]))     # the same circle, run as a hole
-    t0 = time.perf_counter()
+    t0 = time.process_time()                   # CPU seconds: the wall clock varies with load
     union = mf.CrossSection.batch_boolean(sections, mf.OpType.Add)
     (lp,) = prov.loops(union)
-    assert time.perf_counter() - t0 < 5
+    assert time.process_time() - t0 < 5
     assert len(prov._chords().A) <= 2 * n          # one copy each way round
     (c,) = lp.segments
     assert isinstance(c, XC) and c.center == (5.0, -2.0) and c.radius == 3.0

@@ -15,7 +15,8 @@ from aidl_lang.pipeline import compile_source
 
 HERE = pathlib.Path(__file__).resolve().parent
 FILES = sorted((HERE / "programs" / "hostile").glob("*.aidl"))
-SECONDS = 20          # the budget cases take 2-3 s alone; room for a loaded CI machine
+SECONDS = 20          # CPU seconds: the budget cases take 2-4 s (the wall clock of a loaded
+#                       machine is 3x that)
 
 
 def expectation(path: pathlib.Path):
@@ -28,10 +29,10 @@ def expectation(path: pathlib.Path):
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
 def test_hostile_program(path):
     code, where = expectation(path)
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(path.read_text(), str(path))
-    elapsed = time.perf_counter() - t0
-    assert elapsed < SECONDS, f"took {elapsed:.1f} s"
+    elapsed = time.process_time() - t0
+    assert elapsed < SECONDS, f"took {elapsed:.1f} s of CPU"
     got = [(d.code, d.span and (d.span.line, d.span.col), d.message) for d in c.sink.items]
     if code == "ok":
         assert c.ok and not [g for g in got if g[0].startswith("E")], got

@@ -263,13 +263,13 @@ def test_large_document_completion_uses_a_view():
     src = head + filler + body
     assert len(src) > 10_000_000
     line = src.count("\n", 0, src.index("    body.\n"))
-    t = time.perf_counter()
+    t = time.process_time()                        # CPU seconds: the wall clock varies with load
     view = window.view(src, line)
     labels = {c.label for c in an.completions(view, line, len("    body."))}
     assert {"top_left", "width", "bb"} <= labels
     labels = {c.label for c in an.completions(view, line + 1, 0)}
     assert {"w", "peg", "plate", "v199999", "Rectangle"} <= labels
-    assert time.perf_counter() - t < 60            # (whole-document analysis: many minutes)
+    assert time.process_time() - t < 60            # (whole-document analysis: many minutes)
     assert view.count("\n") == src.count("\n")     # same lines
     names = [s.name for s in window.outline(src)]
     assert names[:3] == ["w", "peg", "v0"] and len(names) == window.MAX_OUTLINE

@@ -331,3 +331,26 @@ def test_check_and_render_read_a_drawing_beside_the_program_inside_the_root(tmp_
     doc = T.check(ws, source=prog.replace("board.dxf", "leak.dxf"))
     assert not doc["ok"] and [d["code"] for d in doc["diagnostics"]] == ["E0130"]
     assert "secret" not in json.dumps(doc)
+
+
+@pytest.mark.asyncio
+async def test_every_resource_uri_of_the_docs_is_served(tmp_path):
+    """Issue 37: docs/mcp.md gave stdlib resource URIs that did not exist.  Every concrete
+    `aidl://` URI written in docs/mcp.md (NAME placeholders aside) is one the server lists and
+    reads."""
+    import re
+    text = (ROOT / "docs" / "mcp.md").read_text(encoding="utf-8")
+    said = {u.rstrip(".,)") for u in re.findall(r"aidl://[\w./-]+", text) if "NAME" not in u}
+    assert len(said) >= 8
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    params = StdioServerParameters(command=sys.executable,
+                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
+                                   env=env, cwd=str(ROOT))
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            listed = {str(x.uri) for x in (await session.list_resources()).resources}
+            assert sorted(said - listed) == []
+            for uri in sorted(said):
+                got = await session.read_resource(uri)
+                assert got.contents[0].text.strip(), uri

@@ -37,7 +37,7 @@ def test_constraints_on_every_primitive_answer_with_diagnostics(name):
     """`Fixed(g)` of a Polygon or RegularPolygon raised AttributeError (an internal error):
     every constraint, given one or two geometries of each kind, answers with a model or a
     located diagnostic, never an exception."""
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     cases = [(a, None) for a in PRIMS] + [(a, a) for a in PRIMS]
     for a, b in cases:
         body = f" g = {PRIMS[a]}\n" + (f" h = {PRIMS[b]}\n" if b else "")
@@ -46,7 +46,7 @@ def test_constraints_on_every_primitive_answer_with_diagnostics(name):
         for d in c.sink.items:
             if d.is_error and d.code not in ("E0401", "E0402"):
                 assert d.span is not None, (src, d.code, d.message)
-    assert time.perf_counter() - t0 < 20
+    assert time.process_time() - t0 < 20
 
 
 @pytest.mark.parametrize("kind", ["Polygon", "RegularPolygon", "Rectangle", "Triangle"])
@@ -96,13 +96,13 @@ def test_outline_vertices_are_counted_before_they_are_made():
            "    hole holes {\n"
            "        for i in range(40) { c = Circle(center=(i * 10 - 200, 0), radius=4) }\n"
            "    }\n}\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(src, "v.aidl", budget=Budget(vertices=2_000))
     (e,) = _errors(c)
     assert e[0] == "E0304" and e[2] == (3, 5), e
     assert "in the booleans of `plate.holes`: outlines of more than 2,000 vertices" in e[1]
     assert compile_source(src, "v.aidl", budget=Budget(vertices=2_000).scaled(50)).ok
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
 
 
 def _circles(n, step, r=1.0, pattern=False):
@@ -126,17 +126,18 @@ def _circles(n, step, r=1.0, pattern=False):
 ], ids=["concentric", "separate", "chain"])
 def test_large_outlines_check_in_bounded_time(name, src, seconds, tmp_path):
     """`aidl check` (compile, shape checks, and the freedom count of its ok line) on outlines
-    that were quadratic somewhere; the bounds are ~5x the time on a quiet machine."""
+    that were quadratic somewhere; the bounds are ~5x the time on a quiet machine, in CPU
+    seconds (the wall clock of a loaded machine ran past them)."""
     import contextlib
     import io
     from aidl_lang.cli.main import main
     f = tmp_path / f"{name}.aidl"
     f.write_text(src)
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     out = io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
         assert main(["check", str(f)]) == 0
-    assert time.perf_counter() - t0 < seconds, out.getvalue()
+    assert time.process_time() - t0 < seconds, out.getvalue()
     assert ": ok (" in out.getvalue()
 
 
@@ -146,12 +147,14 @@ def test_freedom_count_of_a_long_pattern_peels_its_copies():
     import numpy as np
     import scipy.sparse as sp
     from aidl_lang.solver.diagnose import _block_rank, degrees_of_freedom, freedom_text
-    c = compile_source(_circles(5000, None, pattern=True), "lp.aidl")
+    from aidl_lang.limits import Budget
+    # wall time to spare: on a loaded machine the default 15 s ran out in the compile
+    c = compile_source(_circles(5000, None, pattern=True), "lp.aidl", budget=Budget(seconds=120))
     assert c.ok
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     assert freedom_text(degrees_of_freedom(c.solve.solver, floating=False)) == \
         "2 degrees of freedom left, see --dof"
-    assert time.perf_counter() - t0 < 5
+    assert time.process_time() - t0 < 5
     rng = np.random.default_rng(7)                # the same rank as a dense SVD
     for _ in range(200):
         m, n = (int(v) for v in rng.integers(1, 30, 2))
@@ -172,13 +175,13 @@ def test_the_writers_are_inside_the_budget(tmp_path, monkeypatch, capsys):
     real = O.encode
 
     def slow(output, suffix, opt=None, deadline=None):
-        time.sleep(1.3)
+        deadline.at = time.monotonic() - 1e-3     # the writers start as the budget runs out
         return real(output, suffix, opt, deadline)
     monkeypatch.setattr(O, "encode", slow)
     f = tmp_path / "p.aidl"
     f.write_text("solid plate { c = Circle(center=(0, 0), radius=5) }\n")
     a, b = tmp_path / "a.svg", tmp_path / "b.dxf"
-    assert main(["render", str(f), "-o", str(a), "-o", str(b), "--budget", "0.02"]) == 1
+    assert main(["render", str(f), "-o", str(a), "-o", str(b)]) == 1
     err = capsys.readouterr().err
     assert "p.aidl:1:1: error[E0304]" in err and "in the SVG writer of `plate`" in err, err
     assert not a.exists() and not b.exists()
@@ -202,9 +205,9 @@ def test_chaining_many_lines_into_a_loop_is_linear():
     c = compile_source("solid s {\n" + body + "}\n", "lines.aidl", do_solve=True)
     assert c.ok, _errors(c)
     r = Renderer(c.model)
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     loops, rest = r.loops(list(c.model.root.geometry))
-    assert time.perf_counter() - t0 < 3
+    assert time.process_time() - t0 < 3
     assert len(loops) == 1 and not rest and len(loops[0][1]) == n
     assert abs(loops[0][0].area) == pytest.approx(0.5 * n * 100 ** 2 * math.sin(2 * math.pi / n))
 
@@ -240,9 +243,9 @@ def test_an_import_diamond_reads_each_file_once(tmp_path, monkeypatch):
         reads.append(str(path))
         return real(path, raw)
     monkeypatch.setattr(sources, "read_import", counting)
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(main.read_text(), str(main))
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
     assert c.ok, _errors(c)
     assert len(reads) <= 2 * 33, len(reads)
     assert "b" in c.model.root.children                  # t9b(), from 10 levels down
@@ -271,9 +274,11 @@ def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path
     f = tmp_path / "stack.aidl"
     f.write_text(STACKED)
     out = tmp_path / "stack.svg"
-    t0 = time.perf_counter()
-    assert main(["render", str(f), "-o", str(out)]) == 1
-    assert time.perf_counter() - t0 < 20
+    t0 = time.process_time()
+    # --budget 4: wall time to spare (a loaded machine ran out of the default 15 s first);
+    # the pairs' bound is one no budget raises
+    assert main(["render", str(f), "-o", str(out), "--budget", "4"]) == 1
+    assert time.process_time() - t0 < 20
     cap = capsys.readouterr()
     said = cap.out + cap.err
     # a located E0304 at the part whose outlines they are, with a fix no budget gives
@@ -281,7 +286,7 @@ def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path
     assert "in the exact outlines of `top`: more than 10,000,000 (edge, chord) pairs" in said
     assert "draw each curve once" in said
     assert not out.exists()
-    assert main(["check", str(f)]) == 0
+    assert main(["check", str(f), "--budget", "4"]) == 0
 
 
 def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeypatch):
@@ -300,9 +305,9 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     src = ("solid plate {\n    body = Rectangle(center=(10, 10), width=40, height=40)\n"
            "    hole h { c = Circle(center=(0, 0), radius=5) }\n"
            "    hole g { c = Circle(center=(10.2, 0), radius=5) }\n}\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(src, "thin.aidl", budget=Budget(seconds=10))
-    assert time.perf_counter() - t0 < 5
+    assert time.process_time() - t0 < 5
     (e,) = [x for x in c.sink.items if x.code == "E0304"]
     assert "in the shape checks of `plate`" in e.message
 
@@ -351,11 +356,14 @@ def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
 def test_a_row_of_five_thousand_circles_checks_within_the_budget():
     """Fuzz seed 1542 (5,000 circles 1 mm apart in one solid): 22-34 s, 25 s of them in the
     last union of W0507's tiles; now no union and no W0507, within the 15 s budget."""
+    from aidl_lang.limits import Budget
     src = ("solid top {\n    for j in range(5000) { solid c { k = Circle(center=(j * 3, 0), "
            "radius=1) } }\n}\n")
-    t0 = time.perf_counter()
-    c = compile_source(src, "row.aidl")
-    took = time.perf_counter() - t0
+    t0 = time.process_time()
+    # the work is measured in CPU seconds against the 15 s: on a loaded machine the wall
+    # clock of the default budget ran out (E0304) at 10 s of wall time
+    c = compile_source(src, "row.aidl", budget=Budget(seconds=120))
+    took = time.process_time() - t0
     assert [d.code for d in c.sink.items] == ["W0504"]      # the circles do not touch
     assert took < 15
 
@@ -395,9 +403,9 @@ def test_a_writer_sure_to_end_past_the_deadline_is_refused_and_nothing_is_writte
     assert formats.writer_seconds(o, ".svg") == pytest.approx(
         formats.WRITER_START + 15 * 3 * formats.SECONDS_PER_ITEM[".svg"])
     monkeypatch.setitem(formats.SECONDS_PER_ITEM, ".svg", 100.0)
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     assert main(["render", str(f), "-o", str(out)]) == 1
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
     said = capsys.readouterr()
     said = said.out + said.err
     assert "fan.aidl:9:9: error[E0304]" in said, said
@@ -453,9 +461,9 @@ def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monke
     monkeypatch.setattr(booleans, "UNION_SECONDS_PER_VERTEX", 1.0)
     src = ("solid plate {\n    a = Circle(center=(0, 0), radius=5)\n"
            "    b = Circle(center=(4, 0), radius=5)\n}\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(src, "u.aidl", budget=Budget(seconds=10))
-    assert time.perf_counter() - t0 < 5
+    assert time.process_time() - t0 < 5
     (e,) = [x for x in c.sink.items if x.code == "E0304"]
     assert "in the booleans of `plate`: about" in e.message, e.message
     assert "would end past the 10 s of wall time" in e.message
@@ -480,15 +488,16 @@ def test_patterns_of_thousands_copy_in_linear_time_and_stop_at_the_deadline():
     pattern call is a single step.  Now 30,000 copies compile in a few seconds, and a 0.2 s
     budget ends 100,000 copies with a located E0304 soon after."""
     from aidl_lang.limits import Budget
-    t0 = time.perf_counter()
-    c = compile_source(PATTERN_OF_POINTS.replace("N", "3"), "pat.aidl", do_solve=False)
-    took = time.perf_counter() - t0
+    t0 = time.process_time()
+    c = compile_source(PATTERN_OF_POINTS.replace("N", "3"), "pat.aidl", do_solve=False,
+                       budget=Budget(seconds=120))      # CPU is measured, not the wall clock
+    took = time.process_time() - t0
     assert not c.sink.has_errors and took < 8, (took, [d.message for d in c.sink.items])
     assert len(c.model.root.geometry) == 30_000          # each pattern: the point + 9,999
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     c = compile_source(PATTERN_OF_POINTS.replace("N", "10"), "pat.aidl",
                        budget=Budget(seconds=0.2))      # before E0303's 50,000 copies
-    took = time.perf_counter() - t0
+    took = time.process_time() - t0
     (e,) = [d for d in c.sink.items if d.code == "E0304"]
     assert "0.2 s of wall time" in e.message and e.span.line == 2          # the loop
     assert [lb.span.line for lb in e.labels] == [5]                        # the pattern call

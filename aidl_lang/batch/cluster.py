@@ -50,8 +50,11 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
         main = threading.current_thread() is threading.main_thread()
         before = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
         try:
+            # the scheduler's HTTP server always starts; on its default port 8787, taken by
+            # any other Dask on the machine, it printed a four-line UserWarning: a free
+            # port of the loopback interface instead (no dashboard: bokeh is not a dependency)
             cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.ERROR)
+                                   dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR)
         finally:
             if main:
                 signal.signal(signal.SIGINT, before)

@@ -18,6 +18,7 @@ import argparse
 import json
 import os
 import sys
+import time
 from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
@@ -346,27 +347,31 @@ def cmd_check(args) -> int:
     res = program.compiled
     extra = {}
     dofs = None
+    # the whole run has one wall-time budget (15 s x --budget) from the start of the compile:
+    # the freedom count and the redundancy search get what the parse, solve and checks left
+    end = (res.deadline.at if res.deadline is not None
+           else time.monotonic() + _budget(args).seconds)
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "max_residual": res.solve.max_residual}
-        if res.ok:
-            if args.dof:
-                # the whole search, bounded by the budget's wall time (15 s x --budget):
-                # 2 500 chained points took 20 s more, unbounded
-                program.find_redundant(_budget(args).seconds, None)
-            else:
-                program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS)
+        from ..solver.diagnose import degrees_of_freedom, freedom_text
         if args.dof and res.ok:
-            from ..solver.diagnose import degrees_of_freedom
-            dofs = degrees_of_freedom(res.solve.solver)
+            dofs = degrees_of_freedom(res.solve.solver, deadline=end)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
                              "dof": d.dof if d.rank >= 0 else None,     # None: not counted
-                             "floating": d.floating} for d in dofs]
+                             "floating": d.floating}
+                            | ({"not_counted": d.why} if d.rank < 0 else {}) for d in dofs]
         if res.ok:
-            from ..solver.diagnose import degrees_of_freedom, freedom_text
+            if args.dof:
+                # the whole search, in what is left of the budget (2 500 chained points took
+                # 15 s more, on top of the compile, before their rows were peeled)
+                program.find_redundant(None, None, deadline=end)
+                extra["redundancy"] = {"not_searched": program.not_searched}
+            else:
+                program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS, deadline=end)
             dofs_all = (dofs if dofs is not None
-                        else degrees_of_freedom(res.solve.solver, floating=False))
+                        else degrees_of_freedom(res.solve.solver, floating=False, deadline=end))
             extra["freedom"] = freedom_text(dofs_all, program.sliding())
     values = None
     if args.values is not None and program.ok:
@@ -383,6 +388,13 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
+            if program.not_searched:
+                n = program.not_searched
+                why = (f"out of time: the budget's {_budget(args).seconds:g} s of wall time; "
+                       "--budget K gives K times more" if time.monotonic() >= end
+                       else "in a block of rows too large to rank")
+                print(f"redundant constraints (W0401): not counted: {n} constraint"
+                      f"{'s' if n != 1 else ''} not searched ({why})")
         for v in values or ():
             print(v.text())
         if "describe" in extra:
@@ -401,8 +413,8 @@ def _print_dof(dofs) -> None:
     for d in dofs:
         fl = ", ".join(d.floating[:6]) + (f", ... ({len(d.floating)})" if len(d.floating) > 6
                                            else "")
-        if d.rank < 0:                  # too large for the dense count (MAX_SVD_FLOPS)
-            print(f"{d.structure.path:{width}}  {d.unknowns:8d}    ?  not counted (too large)")
+        if d.rank < 0:                  # too large for the dense count, or out of time
+            print(f"{d.structure.path:{width}}  {d.unknowns:8d}    ?  not counted ({d.why})")
             continue
         print(f"{d.structure.path:{width}}  {d.unknowns:8d}  {d.dof:3d}  {fl or '-'}")
 

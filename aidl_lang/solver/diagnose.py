@@ -39,6 +39,9 @@ MAX_DENSE = 5000
 # a dense SVD of m x n costs about m n min(m, n) flops: past this (5-10 s on the test machine;
 # 2 500 chained points, 2 499 x 5 000, took 80 s and 1 GB) the count is "not counted"
 MAX_SVD_FLOPS = 1e10
+# what a dense SVD is assumed to cost per second (a low figure for a busy machine): one that
+# would end past the run's deadline is not started (the structure is "not counted")
+SVD_FLOPS_PER_SECOND = 1e9
 DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranked densely
 MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
 
@@ -82,7 +85,7 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None)
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
     Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (``time.monotonic()``,
-    looked at every 32 rows) it stops early."""
+    looked at before every row) it stops early."""
     m, n = J.shape
     cap = min(m, n)
     Q = np.zeros((cap, n))
@@ -90,7 +93,7 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None)
     indep: list[int] = []
     k = 0
     for step, r in enumerate(order):
-        if deadline is not None and not step % 32 and time.monotonic() > deadline:
+        if deadline is not None and time.monotonic() > deadline:
             return
         v = np.asarray(J[r], dtype=float)
         nv = float(np.linalg.norm(v))
@@ -246,18 +249,23 @@ class StructureDof:
 
     structure: object
     unknowns: int
-    rank: int
+    rank: int                                        # -1: not counted (``why`` says why)
     floating: list = field(default_factory=list)     # labels of undetermined entities
+    why: str = ""                                    # "too large" or "out of time"
 
     @property
     def dof(self) -> int:
         return self.unknowns - self.rank
 
 
-def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
+def degrees_of_freedom(solver, floating: bool = True,
+                       deadline: float | None = None) -> list[StructureDof]:
     """Per-structure degrees of freedom and floating entities, at the solver's current point
     (call after solving).  ``floating=False`` counts only (singular values, no null space:
-    what the summary line of ``aidl check`` needs).
+    what the summary line of ``aidl check`` needs).  Past ``deadline`` (``time.monotonic()``,
+    the run's end), or where a dense SVD would end past it (at
+    :data:`SVD_FLOPS_PER_SECOND`), a structure is not counted: rank -1, ``why`` "out of
+    time" (or "too large" past :data:`MAX_SVD_FLOPS`).
 
     For the count of a model whose whole Jacobian has at most :data:`DENSE_CELLS` cells, that
     Jacobian is formed once (:attr:`~.hierarchy.Solver.whole`, every row against every
@@ -304,8 +312,12 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
         if axis[v] >= 0:
             pinned_axes.setdefault(id(owner[v]), set()).add(axis[v])
     for s, params, rows, cols in systems:
-        d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-                    axis, pinned_axes.get(id(s), ()))
+        if deadline is not None and time.monotonic() > deadline and len(rows) and len(cols) \
+                and id(s) not in held:
+            d = StructureDof(s, len(params), -1, why="out of time")
+        else:
+            d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
+                        axis, pinned_axes.get(id(s), ()), deadline)
         k = pinned.get(id(s), 0)
         if k:
             # geometry pinned in s's frame (system.pinned) is held by the solver, but it is
@@ -319,9 +331,10 @@ def degrees_of_freedom(solver, floating: bool = True) -> list[StructureDof]:
 
 
 def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-            axis, pinned_axes) -> StructureDof:
+            axis, pinned_axes, deadline) -> StructureDof:
     """One structure's :class:`StructureDof` (see :func:`degrees_of_freedom`); ``axis`` and
-    ``pinned_axes`` as :func:`_gauge_shifts` takes them."""
+    ``pinned_axes`` as :func:`_gauge_shifts` takes them, ``deadline`` as
+    :func:`degrees_of_freedom`."""
     x = solver.x
     n_unknowns = len(params)
     if id(s) in held:
@@ -355,18 +368,19 @@ def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floatin
             rank = _dense_block_rank(J)
         else:
             J = solver.tape(rows).jacobian(x, cols)
-            rank = _block_rank(J)
-        if rank >= 0:
-            rank += len(_gauge_shifts(solver, s, J, cols, axis, pinned_axes))
+            rank = _block_rank(J, deadline)
+        if rank < 0:
+            return StructureDof(s, n_unknowns, -1, why=_why_not(rank))
+        rank += len(_gauge_shifts(solver, s, J, cols, axis, pinned_axes))
         return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns))
     J = solver.tape(rows).jacobian(x, cols)
     gauge = _gauge_shifts(solver, s, J, cols, axis, pinned_axes)
     if gauge:
         import scipy.sparse as sp
         J = sp.vstack([sp.csr_matrix(J), sp.csr_matrix(np.array(gauge))])
-    rank, moving = null_support(J)
+    rank, moving = null_support(J, deadline)
     if rank < 0:
-        return StructureDof(s, n_unknowns, -1)
+        return StructureDof(s, n_unknowns, -1, why=_why_not(rank))
     # slack columns each come with a LINK row of full rank: they neither add nor remove
     n_slack = len(cols) - n_unknowns
     free = []
@@ -427,11 +441,18 @@ def _held_by_rigid(model) -> set:
     return out
 
 
-def null_support(J) -> tuple[int, np.ndarray]:
+NOT_COUNTED_SIZE, NOT_COUNTED_TIME = -1, -2     # the ranks that say why a count was not made
+
+
+def _why_not(rank: int) -> str:
+    return "out of time" if rank == NOT_COUNTED_TIME else "too large"
+
+
+def null_support(J, deadline: float | None = None) -> tuple[int, np.ndarray]:
     """``(rank, moving)`` of a sparse Jacobian ``J`` (rows x columns): its numerical rank and,
     per column, whether some direction of its null space moves that unknown (the entities
     ``--dof`` lists as floating); rank -1 when what is left for the SVD is larger than
-    :data:`MAX_DENSE`.
+    :data:`MAX_DENSE` or :data:`MAX_SVD_FLOPS`, -2 when it would end past ``deadline``.
 
     First the columns every null vector leaves at 0 are found by propagation, in
     O(non-zeros): a row whose only non-negligible entry outside the already *determined*
@@ -481,8 +502,13 @@ def null_support(J) -> tuple[int, np.ndarray]:
         return n_cols, moving
     sub = C[:, U].tocsr()
     sub = sub[np.flatnonzero(np.diff(sub.indptr))]
-    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape):
-        return -1, moving
+    if sub.shape[0] > MAX_DENSE or len(U) > MAX_DENSE or _svd_too_large(*sub.shape) \
+            or _svd_too_late(*sub.shape, deadline):
+        rank_u, moves = _sparse_null_support(sub, deadline)
+        if rank_u < 0:
+            return rank_u, moving
+        moving[U] = moves
+        return n_cols - len(U) + rank_u, moving
     if sub.shape[0] == 0:
         moving[U] = True
         return n_cols - len(U), moving
@@ -498,9 +524,78 @@ def null_support(J) -> tuple[int, np.ndarray]:
     return n_cols - len(U) + rank_u, moving
 
 
+PROBES = 16        # random vectors projected on the null space by _sparse_null_support
+
+
+def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndarray]:
+    """:func:`null_support`'s ``(rank, moving)`` of a sparse ``A`` too large for one dense
+    SVD (issue 37: 2 500 chained points, a 2 499 x 5 000 SVD).
+
+    The rank: the rows independent of all others by structure are peeled off
+    (:func:`_peeled_rows`; a chain peels to nothing) and the rest, the *core*, is ranked by
+    the greedy pass (:func:`dependencies`), which also names the core's dependent rows.
+    Without those, ``B`` (``r`` x ``n``) has full row rank, and the projection of a vector
+    ``z`` on the null space is the ``v`` of the saddle-point system
+    ``[[I, B^T], [B, 0]] [v; y] = [z; 0]`` (one sparse LU, SuperLU).  A column moves when
+    the null space has a share of it, ``|P e_c|^2 > 1e-12`` as for the SVD; that share is
+    the mean of ``v_c^2`` over random Gaussian ``z`` (:data:`PROBES` of them, a fixed seed:
+    the same answer every run), which for a share 100 times the threshold falls below it
+    with a probability under ``1e-20``.  Rank -1 when the core is too large for the greedy
+    pass or the system is too ill-conditioned to trust (``B v`` not ~0), -2 past
+    ``deadline``."""
+    import scipy.sparse as sp
+    from scipy.sparse.linalg import splu
+    A = sp.csr_matrix(A, copy=True)
+    A.eliminate_zeros()
+    A = A[np.flatnonzero(np.diff(A.indptr))]        # rows of explicit zeros say nothing
+    m, n = A.shape
+    if m == 0:
+        return 0, np.ones(n, dtype=bool)
+    peeled = _peeled_rows(A)
+    keep = np.flatnonzero(peeled)
+    core = np.flatnonzero(~peeled)
+    if len(core):
+        Ac = A[core]
+        cc = unique(Ac.indices)
+        if len(core) > MAX_DENSE or len(cc) > MAX_DENSE or _svd_too_large(len(core), len(cc)):
+            return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+        Ad = Ac[:, cc].toarray()
+        dependent = {r for r, _, _ in dependencies(Ad, list(range(len(core))), deadline)}
+        if deadline is not None and time.monotonic() > deadline:
+            return NOT_COUNTED_TIME, np.zeros(n, dtype=bool)
+        norm = np.linalg.norm(Ad, axis=1)         # rows the greedy pass skips: nothing to add
+        independent = [i for i in range(len(core))
+                       if i not in dependent and norm[i] > 0 and np.isfinite(norm[i])]
+        keep = np.sort(np.concatenate([keep, core[independent]]))
+    B = A[keep]
+    r = B.shape[0]
+    if r >= n:
+        return r, np.zeros(n, dtype=bool)
+    K = sp.bmat([[sp.identity(n), B.T], [B, None]], format="csc")
+    try:
+        lu = splu(K)
+        Z = np.random.default_rng(0).standard_normal((n, PROBES))
+        V = lu.solve(np.vstack([Z, np.zeros((r, PROBES))]))[:n]
+    except RuntimeError:                             # singular: the rank was misjudged
+        return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+    scale = max(1.0, float(abs(B).max())) * max(1.0, float(np.abs(V).max(initial=0.0)))
+    if not np.all(np.isfinite(V)) or float(np.abs(B @ V).max(initial=0.0)) > 1e-8 * scale:
+        return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
+    return r, (V * V).mean(axis=1) > 1e-12
+
+
 def _svd_too_large(m: int, n: int) -> bool:
     """Whether a dense SVD of ``m`` x ``n`` would cost more than :data:`MAX_SVD_FLOPS`."""
     return float(m) * float(n) * float(min(m, n)) > MAX_SVD_FLOPS
+
+
+def _svd_too_late(m: int, n: int, deadline: float | None) -> bool:
+    """Whether a dense SVD of ``m`` x ``n`` would end past ``deadline`` (``time.monotonic()``;
+    None: never), at :data:`SVD_FLOPS_PER_SECOND`."""
+    if deadline is None:
+        return False
+    flops = float(m) * float(n) * float(min(m, n))
+    return time.monotonic() + flops / SVD_FLOPS_PER_SECOND > deadline
 
 
 def _ancestor_rows(solver, x: np.ndarray):
@@ -579,10 +674,10 @@ def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
     return whole.jacobian(x, cols, dense=True), cols
 
 
-def _block_rank(J) -> int:
+def _block_rank(J, deadline: float | None = None) -> int:
     """Numerical rank of a sparse Jacobian, block by block (rows that share no unknown are
     independent), so a large sketch of small independent pieces needs only small SVDs;
-    -1 if one block is too large for a dense SVD."""
+    -1 if one block is too large for a dense SVD, -2 if one would end past ``deadline``."""
     import scipy.sparse as sp
     J = sp.csr_matrix(J)
     if J.shape[0] == 0:
@@ -596,7 +691,9 @@ def _block_rank(J) -> int:
         sub = J[r]
         c = unique(sub.indices)
         if len(r) > MAX_DENSE or len(c) > MAX_DENSE or _svd_too_large(len(r), len(c)):
-            return -1
+            return NOT_COUNTED_SIZE
+        if _svd_too_late(len(r), len(c), deadline):
+            return NOT_COUNTED_TIME
         sv = np.linalg.svd(sub[:, c].toarray(), compute_uv=False)
         if len(sv):
             rank += int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))
@@ -605,14 +702,28 @@ def _block_rank(J) -> int:
 
 def _peel(J):
     """``(core, k)``: the rows of the sparse ``J`` (CSR) that the rank needs an SVD for, and
-    the number ``k`` of rows peeled off, each independent of all the others.  A row holding
-    the only non-zero of some column (a pattern copy's ``x_k - x_0 - k dx``, a point that
-    only one constraint places) is independent of the other rows, so
-    ``rank(J) = 1 + rank(J without it)``; peeling repeats while such columns appear, in
-    O(non-zeros).  A pattern of 5 000 copies was one 15 000-row block (an SVD of minutes);
-    peeled, nothing is left to decompose."""
+    the number ``k`` of rows peeled off, each independent of all the others
+    (:func:`_peeled_rows`).  A pattern of 5 000 copies was one 15 000-row block (an SVD of
+    minutes); peeled, nothing is left to decompose."""
     import scipy.sparse as sp
-    J = J.copy()
+    J = sp.csr_matrix(J)
+    peeled = _peeled_rows(J)
+    if not peeled.any():
+        return J, 0
+    return sp.csr_matrix(J[np.flatnonzero(~peeled)]), int(peeled.sum())
+
+
+def _peeled_rows(J) -> np.ndarray:
+    """Per row of the sparse ``J``, whether it is independent of all the other rows by
+    structure alone: a row holding the only non-zero of some column (a pattern copy's
+    ``x_k - x_0 - k dx``, a point that only one constraint places, the last link of a
+    chain) is in no combination of rows that vanishes (``y^T J = 0`` forces ``y_r = 0`` at
+    that column), so ``rank(J) = 1 + rank(J without it)``; peeling repeats while such
+    columns appear, in O(non-zeros).  A chain of 2 500 ``Distance``s peels to nothing.  A
+    pivot must be more than ``1e-9`` of its row's largest entry (entries below ``1e-12``
+    of the matrix's largest count as zero); a smaller one is left to the dense rank."""
+    import scipy.sparse as sp
+    J = sp.csr_matrix(J, copy=True)
     J.data[np.abs(J.data) <= 1e-12 * max(1.0, float(np.abs(J.data).max(initial=0.0)))] = 0.0
     J.eliminate_zeros()
     C = J.tocsc()
@@ -622,8 +733,7 @@ def _peel(J):
     row_max = np.zeros(n_rows)
     np.maximum.at(row_max, np.repeat(np.arange(n_rows), np.diff(J.indptr)), np.abs(J.data))
     todo = list(np.flatnonzero(count == 1))
-    peeled = 0
-    indptr, indices, data = J.indptr, J.indices, J.data
+    indptr, indices = J.indptr, J.indices
     cptr, crow, cval = C.indptr, C.indices, C.data
     while todo:
         c = todo.pop()
@@ -638,15 +748,11 @@ def _peel(J):
         if abs(cval[k]) <= 1e-9 * row_max[r]:
             continue                    # too small to pivot on: leave it to the SVD
         row_alive[r] = False
-        peeled += 1
         for j in indices[indptr[r]:indptr[r + 1]]:
             count[j] -= 1
             if count[j] == 1:
                 todo.append(j)
-    if not peeled:
-        return J, 0
-    keep = np.flatnonzero(row_alive)
-    return sp.csr_matrix(J[keep]), peeled
+    return ~row_alive
 
 
 def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> str:
@@ -656,7 +762,9 @@ def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> st
     can slide along x), see --dof`` or ``(free: only where the whole part sits
     (harmless))``."""
     if any(d.rank < 0 for d in dofs):
-        return "degrees of freedom not counted (model too large), see --dof"
+        why = ("model too large" if any(d.why == "too large" for d in dofs if d.rank < 0)
+               else "out of time")
+        return f"degrees of freedom not counted ({why}), see --dof"
     n = sum(max(0, d.dof) for d in dofs)
     if n == 0:
         return "fully constrained"
@@ -668,7 +776,7 @@ def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> st
 
 
 def redundancies(solver, deadline: float | None = None,
-                 max_rows: int = MAX_DENSE) -> list[Redundant]:
+                 max_rows: int = MAX_DENSE, skipped: list | None = None) -> list[Redundant]:
     """User constraints that other constraints already imply, over the whole model's
     unknowns: what W0401 reports.
 
@@ -695,7 +803,9 @@ def redundancies(solver, deadline: float | None = None,
     The flat system is split into connected components (rows sharing unknowns); each, up to
     :data:`MAX_DENSE` rows, is ranked densely.  Only consistent systems are looked at (a
     failed solve reports conflicts instead).  Past ``deadline`` (``time.monotonic()``) the
-    blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows.  NumPy only while the Jacobian has at most
+    blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows
+    (after the rows independent of all others by structure are peeled off,
+    :func:`_peeled_rows`); the user constraints so left out are appended to ``skipped``.  NumPy only while the Jacobian has at most
     :data:`DENSE_CELLS` cells, so plain ``aidl check`` does not import SciPy for it."""
     rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
     rows = rows[solver.kind[rows] == 0]
@@ -733,31 +843,57 @@ def redundancies(solver, deadline: float | None = None,
             contribution[k] = contribution.get(k, 0) + 1
             rank_c[k] = rank_c.get(k, 0) + 1
             continue
-        if len(local) > min(max_rows, MAX_DENSE):
+        lc = [cons[i] for i in local]
+        if dense:
+            Jd = J[local]
+            Jd = Jd[:, np.any(Jd != 0, axis=0)]
+            core = np.arange(len(local))
+        else:
+            # rows independent of all others by structure take no part in any dependency
+            # (a chain of 2 500 Distances peels to nothing): only the rest is decomposed
+            Js = J[local]
+            core = np.flatnonzero(~_peeled_rows(Js))
+            Jd = None
+        if len(core) > min(max_rows, MAX_DENSE):
             unknown.update(id(cons[i]) for i in local)
             continue
-        Jd = J[local] if dense else J[local].toarray()
-        Jd = Jd[:, np.any(Jd != 0, axis=0)]
-        lc = [cons[i] for i in local]
-        order = sorted(range(len(local)), key=lambda i: _order_key(lc[i], int(rows[local[i]])))
-        null = list(dependencies(Jd, order, deadline))
+        null = []
+        if len(core):
+            Jk = Jd[core] if Jd is not None else Js[core].toarray()
+            Jk = Jk[:, np.any(Jk != 0, axis=0)]
+            order = sorted(range(len(core)),
+                           key=lambda i: _order_key(lc[core[i]], int(rows[local[core[i]]])))
+            null = [(int(core[r]), [int(core[i]) for i in support], coef)
+                    for r, support, coef in dependencies(Jk, order, deadline)]
         if deadline is not None and time.monotonic() > deadline:
             unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
             continue
+        if Jd is None:
+            Js = Js[:, unique(Js.indices)]          # the block's columns
+
+        def dense_rows(ii: list[int]) -> np.ndarray:
+            return Jd[ii] if Jd is not None else Js[ii].toarray()
         mine: dict[int, list[int]] = {}
         for i, c in enumerate(lc):
             mine.setdefault(id(c), []).append(i)
+        touched: dict[int, list[int]] = {}          # constraint -> the dependencies it is in
+        for n_, (r, support, _) in enumerate(null):
+            for k in {id(lc[i]) for i in [r, *support]}:
+                touched.setdefault(k, []).append(n_)
         # the constructors' rows: what a constraint says beyond them is measured modulo
         # their span (an orthonormal basis of it), see rank_c
         imp = [i for i, c in enumerate(lc) if c.implicit]
         basis = None                        # made when first needed (an SVD)
         for k, idx in mine.items():
+            if deadline is not None and time.monotonic() > deadline:
+                unknown.update(id(c) for c in lc)        # a block is reported whole or not
+                break
             pos = {i: j for j, i in enumerate(idx)}
             M = []
             others: list = []
-            for r, support, coef in null:
-                if r not in pos and not any(i in pos for i in support):
-                    continue
+            named = {k}                     # ids in ``others`` (and k): linear, not a scan
+            for n_ in touched.get(k, ()):
+                r, support, coef = null[n_]
                 v = np.zeros(len(idx))
                 if r in pos:
                     v[pos[r]] += 1.0
@@ -766,23 +902,25 @@ def redundancies(solver, deadline: float | None = None,
                         v[pos[i]] -= cf
                 M.append(v)
                 for i in [r, *support]:
-                    if id(lc[i]) != k and lc[i] not in others:
+                    if id(lc[i]) not in named:
+                        named.add(id(lc[i]))
                         others.append(lc[i])
             rM = _rank(np.array(M)) if M else 0
             gain = len(idx) - rM
             contribution[k] = contribution.get(k, 0) + gain
             if rM:
                 lst = by.setdefault(k, [])
-                lst += [o for o in others if o not in lst]
+                have = {id(o) for o in lst}
+                lst += [o for o in others if id(o) not in have]
             if rM == 0 or gain == 0 or lc[idx[0]].implicit:
                 # independent of every other row (no overlap: rank beyond the shapes = gain),
                 # or fully implied (reported as such whatever its own rank)
                 rank_c[k] = rank_c.get(k, 0) + gain
                 continue
-            Jc = Jd[idx]
+            Jc = dense_rows(idx)
             if imp:
                 if basis is None:
-                    basis = _row_basis(Jd[imp])
+                    basis = _row_basis(dense_rows(imp))
                 Jc = Jc - (Jc @ basis.T) @ basis
             rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
     out: list[Redundant] = []
@@ -792,7 +930,12 @@ def redundancies(solver, deadline: float | None = None,
     pinned = solver.pinned_rows
     for i, c in enumerate(cons):
         k = id(c)
-        if c.implicit or k in seen or k in unknown:
+        if c.implicit or k in seen:
+            continue
+        if k in unknown:
+            seen.add(k)
+            if skipped is not None:
+                skipped.append(c)
             continue
         seen.add(k)
         mine_rows = by_c[k]
