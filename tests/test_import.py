@@ -441,3 +441,23 @@ def test_dxf_text_is_imported_as_text_engravings(tmp_path):
     got = {(round(s.start[0], 9), round(s.start[1], 9)) for st in strokes
            for s in st.segments}
     assert want <= got
+
+
+def test_import_writes_the_numbers_the_drawing_meant_not_float_noise():
+    """A reader's float noise (a hole centre read as 43.99999999999999 mm, an end as
+    25.000000000000004) is written as the decimal it stands for, within 1e-12 mm; a number
+    that really has more digits keeps them."""
+    from aidl_lang.drawing.program import _num
+    assert _num(43.99999999999999) == "44"
+    assert _num(25.000000000000004) == "25"
+    assert _num(-1.7000000000000002) == "-1.7"
+    assert _num(-3e-13) == "0"
+    assert _num(1000000.0000000001) == "1000000.0000000001"     # 1e-10 from a decimal: kept
+    assert float(_num(21.666666666666668)) == pytest.approx(21.666666666666668, abs=1e-12)
+    doc = _doc()
+    doc.modelspace().add_circle((0.1 + 0.2, 43.99999999999999), 1.7000000000000002)
+    from aidl_lang.drawing.program import import_drawing
+    buf = __import__("io").StringIO()
+    doc.write(buf)
+    text, _notes = import_drawing(buf.getvalue().encode(), "noise.dxf")
+    assert "Circle(center=(0.3, 44), radius=1.7)" in text

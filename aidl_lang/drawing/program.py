@@ -20,10 +20,25 @@ from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from .read import Drawing, Note, Outline, Path
 
 
+SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
+
+
 def _num(v: float) -> str:
+    """``v`` (mm or degrees) as the shortest decimal within :data:`SNAP` of it, so that float
+    noise from the reader (``43.99999999999999``, ``25.000000000000004``) is written as the
+    number the drawing meant (``44``, ``25``); the error stays far inside the round trip's
+    1e-9 mm."""
+    v = float(v)
     if abs(v) < 1e-12:
         return "0"
-    s = repr(float(v))
+    for digits in range(13):
+        r = round(v, digits)
+        if abs(r - v) <= SNAP:
+            v = r
+            break
+    if v == 0:
+        return "0"
+    s = repr(v)
     if s.endswith(".0"):
         s = s[:-2]
     return s
