@@ -1,9 +1,12 @@
 """`aidl check --describe`, `Result.describe()` (aidl_lang/output/describe.py): the final part
 in words and numbers, read from the exact output model."""
 import json
+from pathlib import Path
 
 import aidl_lang
 from aidl_lang.cli.main import main
+
+ROOT_EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 PLATE = """units mm
 solid plate {
@@ -81,3 +84,13 @@ def test_check_describe_text_and_json(tmp_path, capsys):
     assert main(["check", str(f), "--describe", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["describe"]["parts"][0]["openings"][0]["d"] == 6
+
+
+def test_the_openings_are_counted_in_plural_words():
+    """`12 openings (10 circles, 2 slots)`, not `10 circle, 2 slot`; one of a kind singular."""
+    r = aidl_lang.compile(path=str(ROOT_EXAMPLES / "mounting_plate.aidl"))
+    assert "12 openings (10 circles, 2 slots):" in r.describe()
+    r = aidl_lang.compile(source="""import "std/gears.aidl"
+g = spur_gear(teeth=12, module=2 mm, bore=6 mm)
+""", path="examples/x.aidl")
+    assert "1 opening (1 circle):" in r.describe()

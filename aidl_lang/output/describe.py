@@ -282,7 +282,8 @@ def describe_text(doc: dict) -> str:
             counts[o["kind"]] = counts.get(o["kind"], 0) + 1
         if p["openings"]:
             out.append(f"  {len(p['openings'])} opening{'s' if len(p['openings']) != 1 else ''}"
-                       " (" + ", ".join(f"{v} {k}" for k, v in counts.items()) + "):")
+                       " (" + ", ".join(f"{v} {k}{'s' if v != 1 else ''}" for k, v in counts.items())
+                       + "):")
         for o in p["openings"]:
             out.append(f"    {shape_text(o)}")
         for e in p["engravings"]:
