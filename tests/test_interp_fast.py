@@ -212,3 +212,55 @@ def test_constraint_text_is_the_source(path):
     written = [c for c in model.constraints if not c.implicit]
     for c in written:
         assert c.text == _src(sink, c.span) and c.describe() == (c.text or c.kind)
+
+
+# ---------------------------------------------------------------- issue 38: the slider move
+_finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e12, max_value=1e12)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_finite, _finite, st.sampled_from(["*", "/"]),
+       st.sampled_from([(0, 0), (1, 0), (0, 1)]), st.sampled_from([(0, 0), (1, 0), (0, 1)]))
+def test_two_constants_fold_as_mul_and_div_do(a, b, op, da, db):
+    """``_q_op``'s two-constant shortcut gives the bits ``mul`` / ``div`` give (``a / b`` is
+    ``a * (1 / b)`` there, not a correctly rounded quotient), its dimension and owners."""
+    from aidl_lang import ast as A
+    from aidl_lang.diagnostics import Span
+    from aidl_lang.geometry.expr import div
+    from aidl_lang.geometry.values import mul_dim
+    if op == "/" and b == 0.0:
+        b = 1.0
+    it = Interpreter(DiagnosticSink(), {})
+    sp = Span("t", 1, 1, 1, 2)
+    node = A.BinOp(op=op, left=A.Num(value=a, unit=None, span=sp),
+                   right=A.Num(value=b, unit=None, span=sp), span=sp)
+    got = it._q_op(op, Q(Lin({}, a), da), Q(Lin({}, b), db), node)
+    want = mul(Lin({}, a), Lin({}, b)) if op == "*" else div(Lin({}, a), Lin({}, b))
+    assert _key(got.expr) == _key(want)
+    assert got.dim == mul_dim(da, db, 1 if op == "*" else -1)
+    assert got.owners == frozenset()
+
+
+def test_the_circle_runs_sweeps_at_once_equal_each_runs_sweep():
+    """``exact._circle_sweeps`` (all runs of a result polygon in one array operation) gives
+    each run the very float :func:`exact._sweep_sum` gives it, on the gear pair's outlines
+    (about a thousand arcs)."""
+    from aidl_lang.output import exact as X
+    from aidl_lang.pipeline import compile_source
+    path = ROOT / "examples" / "gear_pair.aidl"
+    c = compile_source(path.read_text(), str(path))
+    prov = c.drawing.exact
+    checked = 0
+    for part in c.drawing.parts:
+        for poly in part.shape.to_polygons():
+            P = X.np.asarray(poly, dtype=float).reshape(-1, 2)
+            scale = max(1.0, float(abs(P).max()))
+            runs = X._runs(prov._match(P, scale), prov.carriers, scale)
+            if not runs:
+                continue
+            at_once = X._circle_sweeps(P, runs, prov.carriers)
+            for k, f, l in runs:
+                if k >= 0 and prov.carriers[k][0] == "C":
+                    assert at_once[(f, l)].hex() == X._sweep_sum(P, prov.carriers[k], f, l).hex()
+                    checked += 1
+    assert checked > 900
