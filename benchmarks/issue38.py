@@ -23,8 +23,13 @@ The figures (issue 38):
   of N solids (a Rectangle with a round hole each), CPU, peak RSS and the freedom count;
 * ``slider``: in one process, ``compile_source`` of ``examples/gear_pair.aidl`` plain and with
   ``--set``-style overrides (a slider move; what the CLI pays), and the server's move (the
-  defaults' topology kept, :class:`aidl_lang.serve.session.Session` when the tree has it);
-  plus the solve's unknowns and equations;
+  defaults' topology kept, :class:`aidl_lang.serve.session.Session` when the tree has it;
+  a tree without it says so, and its move is the override compile); plus the solve's unknowns
+  and equations and, unless ``--no-callgrind``, the instructions of one server move (a
+  process with three moves less one with one, halved; budget 100).  A tree that cannot
+  compile the gear pair (75922ec has no ``std/gears.aidl``) prints the first diagnostic;
+  ``slider-gear`` is the same figure for ``examples/gear.aidl`` (each tree's own copy), which
+  every tree since 75922ec reads;
 * ``holes900`` / ``holes5000``: :func:`check_drawing` of a plate with N hole structures on a
   6 mm grid (``benchmarks/checks_scaling.py``), CPU in one process after the compile;
 * ``flood``: ``aidl check`` of 3,000 calls of an unknown function (3,000 E0103): CPU and the
