@@ -238,6 +238,12 @@ class Expressions:
     def _e_Index(self, e: A.Index):
         obj = self.eval(e.obj)
         idx = self.eval(e.index)
+        if type(obj) is list and type(idx) is Q:        # `c1x[k]`: a list and a whole number
+            x = idx.expr
+            if type(x) is Lin and not x.terms:
+                i = x.const
+                if -len(obj) <= i < len(obj) and i == int(i):
+                    return obj[int(i)]
         if not isinstance(obj, (list, tuple, str)):
             raise EvalError("E0111", f"a {type_name(obj)} cannot be indexed", e.obj.span,
                             hint="only lists (loops, comprehensions, `poly.points`) are indexed")
@@ -332,7 +338,12 @@ class Expressions:
         self.ops += 1
         if not self.ops & 4095:
             self.check_time(e.span)
-        return self.finite(self._binop(e), e.span)
+        v = self._binop(e)
+        if type(v) is Q:                  # a finite constant, as `finite` finds it, inline
+            x = v.expr
+            if type(x) is Lin and not x.terms and x.const - x.const == 0.0:
+                return v
+        return self.finite(v, e.span)
 
     def _binop(self, e: A.BinOp):
         l, r = self.eval(e.left), self.eval(e.right)
