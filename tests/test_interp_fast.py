@@ -264,3 +264,20 @@ def test_the_circle_runs_sweeps_at_once_equal_each_runs_sweep():
                     assert at_once[(f, l)].hex() == X._sweep_sum(P, prov.carriers[k], f, l).hex()
                     checked += 1
     assert checked > 900
+
+
+@pytest.mark.parametrize("index, code, value", [
+    ("2", None, 30.0), ("-1", None, 30.0), ("-3", None, 10.0), ("1 + 0.5 * 2", None, 30.0),
+    ("1.5", "E0108", None), ("3", "E0110", None), ("-4", "E0110", None)])
+def test_a_list_index_fast_or_not_gives_the_same_item_or_error(compile_text, index, code, value):
+    """``_e_Index``'s shortcut (a list, a whole number in range) and the general path agree:
+    the item, or the error of a fractional index (E0108) or one out of range (E0110)."""
+    c = compile_text("xs = [10, 20, 30]\nsolid s {\n    c = Circle(center=(0, 0), "
+                     f"radius=xs[{index}])\n}}\n", do_solve=False)
+    errs = [d.code for d in c.sink.items if d.is_error]
+    if code is not None:
+        assert errs == [code]
+        return
+    assert errs == []
+    g = next(g for s in c.model.structures for g in s.geometry if g.kind == "Circle")
+    assert c.model.x[g.scalars["radius"].index] == value
