@@ -281,3 +281,15 @@ def test_a_list_index_fast_or_not_gives_the_same_item_or_error(compile_text, ind
     assert errs == []
     g = next(g for s in c.model.structures for g in s.geometry if g.kind == "Circle")
     assert c.model.x[g.scalars["radius"].index] == value
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 50), st.integers(0, 50), st.one_of(_finite, st.just(-0.0)))
+def test_an_arc_ends_offset_row_is_the_operators_row(i, j, d):
+    """``primitives._offset`` (an ``Arc``'s end from its center, built directly) is the very
+    ``Lin`` the operators make of ``var(i) - var(j) - d``: terms in order, floats by bits."""
+    from aidl_lang.geometry.expr import var
+    from aidl_lang.geometry.primitives import _offset
+    if i == j:
+        j = i + 1
+    assert _key(_offset(i, j, d)) == _key(var(i) - var(j) - d)
