@@ -23,8 +23,13 @@ The figures (issue 38):
   of N solids (a Rectangle with a round hole each), CPU, peak RSS and the freedom count;
 * ``slider``: in one process, ``compile_source`` of ``examples/gear_pair.aidl`` plain and with
   ``--set``-style overrides (a slider move; what the CLI pays), and the server's move (the
-  defaults' topology kept, :class:`aidl_lang.serve.session.Session` when the tree has it);
-  plus the solve's unknowns and equations;
+  defaults' topology kept, :class:`aidl_lang.serve.session.Session` when the tree has it;
+  a tree without it says so, and its move is the override compile); plus the solve's unknowns
+  and equations and, unless ``--no-callgrind``, the instructions of one server move (a
+  process with three moves less one with one, halved; budget 100).  A tree that cannot
+  compile the gear pair (75922ec has no ``std/gears.aidl``) prints the first diagnostic;
+  ``slider-gear`` is the same figure for ``examples/gear.aidl`` (each tree's own copy), which
+  every tree since 75922ec reads;
 * ``holes900`` / ``holes5000``: :func:`check_drawing` of a plate with N hole structures on a
   6 mm grid (``benchmarks/checks_scaling.py``), CPU in one process after the compile;
 * ``flood``: ``aidl check`` of 3,000 calls of an unknown function (3,000 E0103): CPU and the
@@ -83,33 +88,42 @@ def flood(n: int = 3000) -> str:
 SLIDER = r"""
 import json, sys, time
 from aidl_lang.pipeline import compile_source
-src = open(sys.argv[1]).read()
-ov = {"pinion_teeth": "14"}
-compile_source(src, "gear_pair.aidl")                      # imports, caches
+path, name = sys.argv[1], sys.argv[2]
+src = open(path).read()
+ov = {name: "14"}
+out = {}
+c = compile_source(src, path)                              # imports, caches
+if not c.ok:                                               # a tree that cannot read the program
+    d = c.sink.items[0]
+    out["error"] = f"{getattr(d, 'code', '')} {d.message}"[:100]
+    print(json.dumps(out))
+    sys.exit(0)
 def cpu(fn, k=3):
     best = 1e9
     for _ in range(k):
         t = time.process_time(); r = fn(); best = min(best, time.process_time() - t)
     return best, r
-plain, c = cpu(lambda: compile_source(src, "gear_pair.aidl"))
-over, _ = cpu(lambda: compile_source(src, "gear_pair.aidl", overrides=ov))
-out = {"plain_ms": 1000 * plain, "override_ms": 1000 * over,
-       "unknowns": getattr(c.solve, "n_unknowns", None), "equations": getattr(c.solve, "n_equations", None)}
+plain, c = cpu(lambda: compile_source(src, path))
+over, _ = cpu(lambda: compile_source(src, path, overrides=ov))
+out.update({"plain_ms": 1000 * plain, "override_ms": 1000 * over,
+            "unknowns": getattr(c.solve, "n_unknowns", None),
+            "equations": getattr(c.solve, "n_equations", None)})
 try:
     from aidl_lang.serve.session import Session
-    s = Session(sys.argv[1])
+except ImportError as ex:     # an older tree without the session API: the override compile is its move
+    out["server_ms"] = None
+    out["server_error"] = "no session API (aidl_lang.serve.session): its move is the override compile"
+else:
+    s = Session(path)
     s.load()
     k = [0]
     def move():          # a slider move: the picture, then its checks (W0510 included)
         k[0] += 1
-        v = s.set_params({"pinion_teeth": str(13 + k[0] % 2)})
+        v = s.set_params({name: str(13 + k[0] % 2)})
         s.update_checks()
         return v
     move()
     out["server_ms"] = 1000 * cpu(move)[0]
-except Exception as ex:       # an older tree without the Session API
-    out["server_ms"] = None
-    out["server_error"] = repr(ex)[:120]
 print(json.dumps(out))
 """
 
@@ -161,6 +175,38 @@ def instructions(argv: list[str], env: dict, cwd: str) -> float:
                        capture_output=True, text=True, env=env, cwd=cwd)
     m = re.search(r"Collected : (\d+)", r.stderr)
     return int(m.group(1)) / 1e6 if m else float("nan")
+
+
+MOVES = r"""
+import sys
+from aidl_lang.pipeline import compile_source
+path, moves = sys.argv[1], int(sys.argv[2])
+try:
+    from aidl_lang.serve.session import Session
+except ImportError:          # no session API: a move is the override compile
+    src = open(path).read()
+    for k in range(moves):
+        compile_source(src, path, overrides={"pinion_teeth": str(13 + k % 2)})
+else:
+    import aidl_lang.serve.session as S
+    from aidl_lang.limits import DEFAULT_BUDGET
+    if hasattr(S, "Interpreter"):    # a budget of 100: no deadline cuts a move short under callgrind
+        _I = S.Interpreter
+        S.Interpreter = lambda *a, **k: _I(*a, budget=DEFAULT_BUDGET.scaled(100), **k)
+    s = Session(path)
+    s.load()
+    for k in range(moves):
+        s.set_params({"pinion_teeth": str(13 + k % 2)})
+        s.update_checks()
+"""
+
+
+def _move_instructions(t, path: str, cwd: str) -> float:
+    """Instructions (millions) of one slider move: a process with three moves less one with
+    one, halved (imports, the load and the first move cancel)."""
+    one = instructions([t.python, "-c", MOVES, path, "1"], t.env, cwd)
+    three = instructions([t.python, "-c", MOVES, path, "3"], t.env, cwd)
+    return (three - one) / 2
 
 
 def paired(trees, make, rounds, cwd):
@@ -243,18 +289,32 @@ def main() -> None:
              last)
         a.no_callgrind = nc
     if want("slider"):
-        for t, tag in ((new, "new"), (old, "old")):
-            r = run([t.python, "-c", SLIDER, gear], t.env, tmp)
-            try:
-                j = json.loads(r["out"].strip().splitlines()[-1])
-            except (ValueError, IndexError):
-                print(f"slider {tag}: {r['out'][-300:]}")
-                continue
-            srv = "-" if j["server_ms"] is None else f"{j['server_ms']:.0f}"
-            print(f"slider          {tag:<5} plain {j['plain_ms']:.0f} ms, override "
-                  f"{j['override_ms']:.0f} ms ({j['override_ms'] / j['plain_ms']:.2f}x), server "
-                  f"move {srv} ms (CPU, best of 3); {j['unknowns']} unknowns, "
-                  f"{j['equations']} equations", flush=True)
+        # the gear pair (std/gears.aidl), and the older example every tree has (examples/gear.aidl,
+        # each tree's own copy) so that a tree which cannot read the gear pair still compares
+        progs = [("slider", lambda t: gear), ("slider-gear", lambda t: str(t.path / "examples" / "gear.aidl"))]
+        for fig, prog in progs:
+            for t, tag in ((new, "new"), (old, "old")):
+                argv = [t.python, "-c", SLIDER, prog(t), "pinion_teeth"]
+                r = run(argv, t.env, tmp)
+                try:
+                    j = json.loads(r["out"].strip().splitlines()[-1])
+                except (ValueError, IndexError):
+                    print(f"{fig:<16}{tag:<5} failed: {r['out'][-300:]}")
+                    continue
+                if "error" in j:
+                    print(f"{fig:<16}{tag:<5} cannot compile {Path(prog(t)).name}: {j['error']}")
+                    continue
+                if j["server_ms"] is None:
+                    srv = f"- ({j['server_error']})"
+                else:
+                    srv = f"{j['server_ms']:.0f} ms"
+                ins = ""
+                if not a.no_callgrind:     # per move: (three moves - one move) / 2, as docs/dev/performance.md
+                    ins = f"; {_move_instructions(t, prog(t), tmp):.0f} M instructions per move"
+                print(f"{fig:<16}{tag:<5} plain {j['plain_ms']:.0f} ms, override "
+                      f"{j['override_ms']:.0f} ms ({j['override_ms'] / j['plain_ms']:.2f}x), "
+                      f"server move {srv} (CPU, best of 3); {j['unknowns']} unknowns, "
+                      f"{j['equations']} equations{ins}", flush=True)
     for n in (900, 5000):
         if want(f"holes{n}"):
             for t, tag in ((new, "new"), (old, "old")):

@@ -212,3 +212,84 @@ def test_constraint_text_is_the_source(path):
     written = [c for c in model.constraints if not c.implicit]
     for c in written:
         assert c.text == _src(sink, c.span) and c.describe() == (c.text or c.kind)
+
+
+# ---------------------------------------------------------------- issue 38: the slider move
+_finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e12, max_value=1e12)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_finite, _finite, st.sampled_from(["*", "/"]),
+       st.sampled_from([(0, 0), (1, 0), (0, 1)]), st.sampled_from([(0, 0), (1, 0), (0, 1)]))
+def test_two_constants_fold_as_mul_and_div_do(a, b, op, da, db):
+    """``_q_op``'s two-constant shortcut gives the bits ``mul`` / ``div`` give (``a / b`` is
+    ``a * (1 / b)`` there, not a correctly rounded quotient), its dimension and owners."""
+    from aidl_lang import ast as A
+    from aidl_lang.diagnostics import Span
+    from aidl_lang.geometry.expr import div
+    from aidl_lang.geometry.values import mul_dim
+    if op == "/" and b == 0.0:
+        b = 1.0
+    it = Interpreter(DiagnosticSink(), {})
+    sp = Span("t", 1, 1, 1, 2)
+    node = A.BinOp(op=op, left=A.Num(value=a, unit=None, span=sp),
+                   right=A.Num(value=b, unit=None, span=sp), span=sp)
+    got = it._q_op(op, Q(Lin({}, a), da), Q(Lin({}, b), db), node)
+    want = mul(Lin({}, a), Lin({}, b)) if op == "*" else div(Lin({}, a), Lin({}, b))
+    assert _key(got.expr) == _key(want)
+    assert got.dim == mul_dim(da, db, 1 if op == "*" else -1)
+    assert got.owners == frozenset()
+
+
+def test_the_circle_runs_sweeps_at_once_equal_each_runs_sweep():
+    """``exact._circle_sweeps`` (all runs of a result polygon in one array operation) gives
+    each run the very float :func:`exact._sweep_sum` gives it, on the gear pair's outlines
+    (about a thousand arcs)."""
+    from aidl_lang.output import exact as X
+    from aidl_lang.pipeline import compile_source
+    path = ROOT / "examples" / "gear_pair.aidl"
+    c = compile_source(path.read_text(), str(path))
+    prov = c.drawing.exact
+    checked = 0
+    for part in c.drawing.parts:
+        for poly in part.shape.to_polygons():
+            P = X.np.asarray(poly, dtype=float).reshape(-1, 2)
+            scale = max(1.0, float(abs(P).max()))
+            runs = X._runs(prov._match(P, scale), prov.carriers, scale)
+            if not runs:
+                continue
+            at_once = X._circle_sweeps(P, runs, prov.carriers)
+            for k, f, l in runs:
+                if k >= 0 and prov.carriers[k][0] == "C":
+                    assert at_once[(f, l)].hex() == X._sweep_sum(P, prov.carriers[k], f, l).hex()
+                    checked += 1
+    assert checked > 900
+
+
+@pytest.mark.parametrize("index, code, value", [
+    ("2", None, 30.0), ("-1", None, 30.0), ("-3", None, 10.0), ("1 + 0.5 * 2", None, 30.0),
+    ("1.5", "E0108", None), ("3", "E0110", None), ("-4", "E0110", None)])
+def test_a_list_index_fast_or_not_gives_the_same_item_or_error(compile_text, index, code, value):
+    """``_e_Index``'s shortcut (a list, a whole number in range) and the general path agree:
+    the item, or the error of a fractional index (E0108) or one out of range (E0110)."""
+    c = compile_text("xs = [10, 20, 30]\nsolid s {\n    c = Circle(center=(0, 0), "
+                     f"radius=xs[{index}])\n}}\n", do_solve=False)
+    errs = [d.code for d in c.sink.items if d.is_error]
+    if code is not None:
+        assert errs == [code]
+        return
+    assert errs == []
+    g = next(g for s in c.model.structures for g in s.geometry if g.kind == "Circle")
+    assert c.model.x[g.scalars["radius"].index] == value
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 50), st.integers(0, 50), st.one_of(_finite, st.just(-0.0)))
+def test_an_arc_ends_offset_row_is_the_operators_row(i, j, d):
+    """``primitives._offset`` (an ``Arc``'s end from its center, built directly) is the very
+    ``Lin`` the operators make of ``var(i) - var(j) - d``: terms in order, floats by bits."""
+    from aidl_lang.geometry.expr import var
+    from aidl_lang.geometry.primitives import _offset
+    if i == j:
+        j = i + 1
+    assert _key(_offset(i, j, d)) == _key(var(i) - var(j) - d)

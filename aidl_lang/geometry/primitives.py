@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from .expr import Lin, _new, as_const, func, hypot, var
-from .model import Equation, Geometry
+from .model import Equation, Geometry, equation
 from .values import ANG, LEN, NUM, PV, GeomRef, Q, type_name
 
 
@@ -121,11 +121,15 @@ def _build_Arc(ctx, g, a):
         a1 = _const(ctx, a["start_angle"], "Arc start_angle")
         a2 = _const(ctx, a["end_angle"], "Arc end_angle")
         cx, cy = ctx.value_of(var(c.ix)), ctx.value_of(var(c.iy))
-        s = g.points["start"] = ctx.point(PV(cx + r * math.cos(a1), cy + r * math.sin(a1)), "start")
-        e = g.points["end"] = ctx.point(PV(cx + r * math.cos(a2), cy + r * math.sin(a2)), "end")
-        eqs = [var(s.ix) - var(c.ix) - r * math.cos(a1), var(s.iy) - var(c.iy) - r * math.sin(a1),
-               var(e.ix) - var(c.ix) - r * math.cos(a2), var(e.iy) - var(c.iy) - r * math.sin(a2)]
-        ctx.internal(g, [Equation(x) for x in eqs], "Arc radius and angles")
+        sx, sy, ex, ey = r * math.cos(a1), r * math.sin(a1), r * math.cos(a2), r * math.sin(a2)
+        s = g.points["start"] = ctx.point(PV(cx + sx, cy + sy), "start")
+        e = g.points["end"] = ctx.point(PV(cx + ex, cy + ey), "end")
+        # each end's offset from the center: ``var(s.ix) - var(c.ix) - r * cos(a1)``, the
+        # same Lin (terms and floats) as the operators make it, built directly
+        ci, cj = c.ix, c.iy
+        eqs = [_offset(s.ix, ci, sx), _offset(s.iy, cj, sy),
+               _offset(e.ix, ci, ex), _offset(e.iy, cj, ey)]
+        ctx.internal(g, [equation(x) for x in eqs], "Arc radius and angles")
     else:
         s = g.points["start"] = ctx.point(a["start"], "start")
         e = g.points["end"] = ctx.point(a["end"], "end")
@@ -138,6 +142,15 @@ def _build_Arc(ctx, g, a):
         rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
         re = hypot(var(e.ix) - var(c.ix), var(e.iy) - var(c.iy))
         ctx.internal(g, [Equation(rs - re)], "Arc start and end on one circle")
+
+
+def _offset(i: int, j: int, d: float) -> Lin:
+    """``var(i) - var(j) - d`` (``i != j``) as :func:`~.expr.sub` makes it: terms
+    ``{i: 1.0, j: 0.0 + 1.0 * -1.0}``, constant ``(0.0 + 0.0 * -1.0) + d * -1.0``."""
+    e = _new(Lin)
+    e.terms = {i: 1.0, j: 0.0 + 1.0 * -1.0}
+    e.const = (0.0 + 0.0 * -1.0) + d * -1.0
+    return e
 
 
 def _circumcenter(ctx, p, q, r):

@@ -106,18 +106,20 @@ class Calls:
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
         bound = {}
         spans = {}
-        arg_spans = [a.span for a in node.args]
-        npos = sum(not a.kw_only for a in variant)
-        if len(args) > npos:             # entry.varargs: the extras join the last positional
-            args = args[:npos - 1] + [args[npos - 1:]]
-            arg_spans[npos - 1:] = [arg_spans[npos - 1].cover(arg_spans[-1])]
-        for a, v, span_a in zip(variant, args, arg_spans):
-            bound[a.name] = v
-            spans[a.name] = span_a
+        if args:                         # (most geometry calls have keyword arguments only)
+            arg_spans = [a.span for a in node.args]
+            npos = sum(not a.kw_only for a in variant)
+            if len(args) > npos:         # entry.varargs: the extras join the last positional
+                args = args[:npos - 1] + [args[npos - 1:]]
+                arg_spans[npos - 1:] = [arg_spans[npos - 1].cover(arg_spans[-1])]
+            for a, v, span_a in zip(variant, args, arg_spans):
+                bound[a.name] = v
+                spans[a.name] = span_a
         for k, (v, kw) in kwargs.items():
             bound[ren[k]] = v
             spans[ren[k]] = kw.value.span
-        if canonical(nm) == "Text" and "center" in kwargs and "valign" not in bound:
+        cname = canonical(nm)
+        if cname == "Text" and "center" in kwargs and "valign" not in bound:
             bound["valign"] = "middle"        # Text(center=...) means centered on that point
             spans["valign"] = node.span
         bound, spans = canonical_args(nm, bound), canonical_args(nm, spans)
@@ -131,25 +133,25 @@ class Calls:
         for k, v in conv.items():
             self._check_magnitudes(v, spans.get(k, node.span), k)
         if entry.category == "primitive":
-            return self._primitive(canonical(nm), conv, node, spans)
+            return self._primitive(cname, conv, node, spans)
         if entry.category == "placement":
             return self._place(conv, node, spans)
         if entry.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             try:
-                return apply(self, canonical(nm), conv, name)
+                return apply(self, cname, conv, name)
             except OperationError as ex:
                 raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
         owners = owners_of(*conv.values())
         try:
-            eqs = BUILDERS[canonical(nm)](self, **conv)
+            eqs = BUILDERS[cname](self, **conv)
         except ConstraintError as ex:
             raise EvalError("E0108", str(ex), node.span,
                             hint=_center_hint(conv.values(), entry.signature()))
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(canonical(nm), eqs, node.span, None, owners)
+        self._add_constraint(cname, eqs, node.span, None, owners)
         return None
 
     def _place(self, conv, node, spans):

@@ -9,7 +9,7 @@ import math
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
-from ..geometry.expr import Lin, _new, as_const, func, lift
+from ..geometry.expr import Lin, _lin, _new, as_const, func, lift
 from ..geometry.primitives import member as geom_member, member_names
 from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
@@ -238,6 +238,12 @@ class Expressions:
     def _e_Index(self, e: A.Index):
         obj = self.eval(e.obj)
         idx = self.eval(e.index)
+        if type(obj) is list and type(idx) is Q:        # `c1x[k]`: a list and a whole number
+            x = idx.expr
+            if type(x) is Lin and not x.terms:
+                i = x.const
+                if -len(obj) <= i < len(obj) and i == int(i):
+                    return obj[int(i)]
         if not isinstance(obj, (list, tuple, str)):
             raise EvalError("E0111", f"a {type_name(obj)} cannot be indexed", e.obj.span,
                             hint="only lists (loops, comprehensions, `poly.points`) are indexed")
@@ -332,7 +338,12 @@ class Expressions:
         self.ops += 1
         if not self.ops & 4095:
             self.check_time(e.span)
-        return self.finite(self._binop(e), e.span)
+        v = self._binop(e)
+        if type(v) is Q:                  # a finite constant, as `finite` finds it, inline
+            x = v.expr
+            if type(x) is Lin and not x.terms and x.const - x.const == 0.0:
+                return v
+        return self.finite(v, e.span)
 
     def _binop(self, e: A.BinOp):
         l, r = self.eval(e.left), self.eval(e.right)
@@ -406,7 +417,16 @@ class Expressions:
 
     def _q_op(self, op: str, l: Q, r: Q, e: A.BinOp):
         """``l op r`` for two numbers (:class:`Q`): units checked, constants folded."""
-        own = l.owners | r.owners
+        lo, ro = l.owners, r.owners
+        own = ro if not lo else (lo if not ro or ro is lo else lo | ro)
+        le, re_ = l.expr, r.expr
+        if type(le) is Lin and type(re_) is Lin and not le.terms and not re_.terms:
+            # two constants (most of a template's arithmetic): the same floating-point
+            # operations as the general path below (``mul``, ``div``), without its dispatch
+            if op == "*":
+                return Q(_lin({}, re_.const * le.const), mul_dim(l.dim, r.dim), own)
+            if op == "/" and re_.const != 0.0:
+                return Q(_lin({}, (1.0 / re_.const) * le.const), mul_dim(l.dim, r.dim, -1), own)
         if op in ("+", "-"):
             a, b, d = self._unify(l, r, e.span)
             return Q(a + b if op == "+" else a - b, d, own)

@@ -132,6 +132,7 @@ class Renderer:
     def __init__(self, model: Model, deadline: Deadline | None = None):
         self.m = model
         self.x = model.xs()
+        self._xl = self.x.tolist()          # the same floats, read faster one at a time
         self.deadline = deadline
         budget = deadline.budget if deadline is not None else DEFAULT_BUDGET
         self.exact = Provenance(max_vertices=budget.vertices)
@@ -172,17 +173,20 @@ class Renderer:
         return mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
 
     def P(self, p) -> np.ndarray:
+        """Point ``p``'s solved position in the root frame (mm), as an array."""
+        return np.array(self._pt(p))
+
+    def _pt(self, p) -> tuple[float, float]:
+        """Point ``p``'s solved position in the root frame (mm): its coordinates plus the
+        frame shifts of its structure and their parents, added innermost first."""
+        x = self._xl
         ox, oy = 0.0, 0.0
         s = p.owner
         while s is not None:
-            ox += self.x[s.fx]
-            oy += self.x[s.fy]
+            ox += x[s.fx]
+            oy += x[s.fy]
             s = s.parent
-        return np.array([self.x[p.ix] + ox, self.x[p.iy] + oy])
-
-    def _pt(self, p) -> tuple[float, float]:
-        q = self.P(p)
-        return (float(q[0]), float(q[1]))
+        return (x[p.ix] + ox, x[p.iy] + oy)
 
     # -------------------------------------------------------- exact outlines
     def spline(self, g: Geometry) -> Spline | None:

@@ -220,7 +220,7 @@ class Provenance:
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
         joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
                  for j in range(len(runs))]
-        sweeps: dict = {}
+        sweeps: dict = _circle_sweeps(P, runs, self.carriers)
 
         def approx(c, first, last):       # the polygon's sweep of a run, computed once
             key = (first, last)
@@ -559,6 +559,29 @@ def _sweep_sum(P, c, first: int, last: int) -> float:
     Y = P[idx, 1] - c[2]
     a = np.arctan2(X[:-1] * Y[1:] - Y[:-1] * X[1:], X[:-1] * X[1:] + Y[:-1] * Y[1:])
     return float(a.sum())
+
+
+def _circle_sweeps(P, runs, carriers) -> dict:
+    """:func:`_sweep_sum` of every run of ``runs`` on a circle, ``{(first, last): sweep}``,
+    the edges' angles of all of them in one array operation (a gear's outline has a thousand
+    such runs): each run's angles are the same floating-point operations on the same values,
+    summed by the same ``sum`` of a slice of as many angles, so each sweep equals
+    :func:`_sweep_sum`'s."""
+    sel = [(k, f, l) for k, f, l in runs if k >= 0 and carriers[k][0] == "C"]
+    if len(sel) < 2:
+        return {}
+    n = len(P)
+    counts = [l - f + 2 for _, f, l in sel]            # vertices first..last + 1 of each run
+    idx = np.concatenate([np.arange(f, l + 2) for _, f, l in sel]) % n
+    X = P[idx, 0] - np.repeat([carriers[k][1] for k, _, _ in sel], counts)
+    Y = P[idx, 1] - np.repeat([carriers[k][2] for k, _, _ in sel], counts)
+    # the angle of each edge about its run's center (those across two runs are not read)
+    a = np.arctan2(X[:-1] * Y[1:] - Y[:-1] * X[1:], X[:-1] * X[1:] + Y[:-1] * Y[1:])
+    out, o = {}, 0
+    for (_, f, l), m in zip(sel, counts):
+        out[(f, l)] = float(a[o:o + m - 1].sum())
+        o += m
+    return out
 
 
 def _arc(c, a, b, approx: float) -> Arc:
