@@ -666,6 +666,18 @@ DETAILS: dict[str, str] = {
                "Members of the arc: center, start, end, midpoint, vertex, co_vertex (ends of "
                "the rx and ry semi-axes), bb. Exact in DXF (ELLIPSE with parameters), SVG "
                "(A rx,ry) and STEP. `aidl import` writes a drawing's elliptical arcs so.",
+    "Drawing2D": "Reads a DXF (lines, arcs, circles, LWPOLYLINE bulges, splines, ellipses and "
+                 "elliptical arcs) or an SVG (paths with their arcs and cubics, rects, "
+                 "circles, ellipses) beside the program or below it, as exact curves; units "
+                 "from $INSUNITS or the SVG's width/viewBox (units= overrides). layer=, "
+                 "color= and id= (an SVG group or element) select what is read. Closed loops "
+                 "are outlines[i] (largest first; inner loops holes), circles[i] have center "
+                 "and radius, open chains are paths[i]. A DXF's TEXT and MTEXT are engraved "
+                 "as Text in AIDL's font; other entities are skipped with W0130 (counted). "
+                 "Errors: E0130 (missing or unreadable file), E0131 (an open chain where an "
+                 "outline is needed, with its gap; a self-crossing loop), E0132 (an empty or "
+                 "unknown layer). `aidl import FILE -o part.aidl` turns a drawing into an "
+                 "editable program instead.",
     "Bezier": "A chain of cubic Bézier segments from its control points, as SVG's `C` "
               "and a drawing program's pen tool make them: points=[p0, c1, c2, p1, c3, c4, "
               "p2, ...], 3k+1 points for k segments; segment i runs from p_i to p_i+1, "
