@@ -375,3 +375,30 @@ def count(segments):
     """(number of lines, number of arcs, number of circles)."""
     return (sum(isinstance(s, L) for s in segments), sum(isinstance(s, A) for s in segments),
             sum(isinstance(s, C) for s in segments))
+
+
+def step_edge_points(path, samples: int, bsplines_only: bool = False) -> list:
+    """Points (x, y) sampled on the edges of a STEP file's bottom face (z = 0), re-read by
+    OCP (the ``step`` extra), ``samples`` + 1 per edge, ends included; ``bsplines_only``:
+    only the edges OCP reads as B-spline curves."""
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.GeomAbs import GeomAbs_BSplineCurve
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    reader = STEPControl_Reader()
+    reader.ReadFile(str(path))
+    reader.TransferRoots()
+    out = []
+    ex = TopExp_Explorer(reader.OneShape(), TopAbs_EDGE)
+    while ex.More():
+        ad = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
+        if not bsplines_only or ad.GetType() == GeomAbs_BSplineCurve:
+            a, b = ad.FirstParameter(), ad.LastParameter()
+            for i in range(samples + 1):
+                q = ad.Value(a + (b - a) * i / samples)
+                if abs(q.Z()) < 1e-12:                     # the bottom face's edge
+                    out.append((q.X(), q.Y()))
+        ex.Next()
+    return out

@@ -187,28 +187,12 @@ def test_step_edges_lie_on_the_chain(tmp_path):
     """The STEP file, re-read by OCP: every point of the bottom face's edges lies on the
     heart's cubics (their own control points, evaluated here) to 1e-9 mm."""
     pytest.importorskip("OCP")
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
-    from OCP.STEPControl import STEPControl_Reader
-    from OCP.TopAbs import TopAbs_EDGE
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
+    from exact_geometry import step_edge_points
     from aidl_lang.geometry.spline import bezier_chain
     r = _ok(f"solid heart {{\n    b = Bezier(points={_pts(HEART)}, closed=true)\n}}\n", tmp_path)
     step = tmp_path / "h.step"
     r.write(step)
-    reader = STEPControl_Reader()
-    reader.ReadFile(str(step))
-    reader.TransferRoots()
     ref = bezier_chain(HEART, True)
-    ex = TopExp_Explorer(reader.OneShape(), TopAbs_EDGE)
-    n, worst = 0, 0.0
-    while ex.More():
-        ad = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
-        a, b = ad.FirstParameter(), ad.LastParameter()
-        for i in range(101):
-            q = ad.Value(a + (b - a) * i / 100)
-            if abs(q.Z()) < 1e-9:
-                worst = max(worst, ref.distance((q.X(), q.Y())))
-                n += 1
-        ex.Next()
-    assert n >= 101 and worst <= 1e-9, (n, worst)
+    pts = step_edge_points(step, 100)
+    worst = max(ref.distance(q) for q in pts)
+    assert len(pts) >= 101 and worst <= 1e-9, (len(pts), worst)

@@ -30,6 +30,14 @@ BROKEN = """solid plate {
 """
 
 
+def _server(root) -> StdioServerParameters:
+    """`aidl mcp --root ROOT` as the SDK's stdio client starts it (AIDL_DEBUG unset)."""
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    return StdioServerParameters(command=sys.executable,
+                                 args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
+                                 env=env, cwd=str(ROOT))
+
+
 def _text(result) -> str:
     return "\n".join(c.text for c in result.content if c.type == "text")
 
@@ -42,10 +50,7 @@ async def test_mcp_server_over_stdio(tmp_path):
     outside = tmp_path / "secret.aidl"
     outside.write_text(GOOD)
     (root / "escape.aidl").symlink_to(outside)
-    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
-    params = StdioServerParameters(command=sys.executable,
-                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
-                                   env=env, cwd=str(ROOT))
+    params = _server(root)
     async with stdio_client(params) as (read, write):
         async with ClientSession(read, write) as session:
             await session.initialize()
@@ -198,10 +203,7 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
     """`tools/list` gives each argument a description, the allowed values (style) and ranges
     (width, budget), and the SDK refuses a call outside them before the tool runs (issue 37:
     the schemas had titles only)."""
-    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
-    params = StdioServerParameters(command=sys.executable,
-                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
-                                   env=env, cwd=str(ROOT))
+    params = _server(tmp_path)
     async with stdio_client(params) as (read, write):
         async with ClientSession(read, write) as session:
             await session.initialize()
@@ -255,10 +257,7 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
     root = tmp_path / "work"
     root.mkdir()
     (root / "stand.aidl").write_text((ROOT / "examples" / "phone_stand.aidl").read_text())
-    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
-    params = StdioServerParameters(command=sys.executable,
-                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
-                                   env=env, cwd=str(ROOT))
+    params = _server(root)
     async with stdio_client(params) as (read, write):
         async with ClientSession(read, write) as session:
             await session.initialize()
@@ -342,10 +341,7 @@ async def test_every_resource_uri_of_the_docs_is_served(tmp_path):
     text = (ROOT / "docs" / "mcp.md").read_text(encoding="utf-8")
     said = {u.rstrip(".,)") for u in re.findall(r"aidl://[\w./-]+", text) if "NAME" not in u}
     assert len(said) >= 8
-    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
-    params = StdioServerParameters(command=sys.executable,
-                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
-                                   env=env, cwd=str(ROOT))
+    params = _server(tmp_path)
     async with stdio_client(params) as (read, write):
         async with ClientSession(read, write) as session:
             await session.initialize()

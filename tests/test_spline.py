@@ -440,29 +440,10 @@ def test_step_holds_bspline_curves(tmp_path):
     out = _output(GUITAR_SRC, tmp_path)
     data = _write(out, ".step", tmp_path).read_text()
     assert "B_SPLINE_CURVE_WITH_KNOTS" in data
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
-    from OCP.GeomAbs import GeomAbs_BSplineCurve
-    from OCP.STEPControl import STEPControl_Reader
-    from OCP.TopAbs import TopAbs_EDGE
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-    r = STEPControl_Reader()
-    r.ReadFile(str(tmp_path / "out.step"))
-    r.TransferRoots()
+    from exact_geometry import step_edge_points
     ref = interpolate(GUITAR, True)
-    ex = TopExp_Explorer(r.OneShape(), TopAbs_EDGE)
-    n, worst = 0, 0.0
-    while ex.More():
-        ad = BRepAdaptor_Curve(TopoDS.Edge(ex.Current()))
-        if ad.GetType() == GeomAbs_BSplineCurve:
-            a, b = ad.FirstParameter(), ad.LastParameter()
-            for i in range(201):
-                q = ad.Value(a + (b - a) * i / 200)
-                if abs(q.Z()) < 1e-12:                     # the bottom face's edge
-                    worst = max(worst, ref.distance((q.X(), q.Y())))
-                    n += 1
-        ex.Next()
-    assert n >= 201 and worst <= 1e-9
+    pts = step_edge_points(tmp_path / "out.step", 200, bsplines_only=True)
+    assert len(pts) >= 201 and max(ref.distance(q) for q in pts) <= 1e-9
 
 
 def test_open_spline_closed_by_a_line_is_a_face(tmp_path):

@@ -503,12 +503,9 @@ def _build_Polyline(ctx, g, a):
     pts_in = a["points"]
     if len(pts_in) < 2:
         raise PrimitiveError(f"an open Polyline needs at least 2 points, got {len(pts_in)}")
-    try:
-        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
-    except (AttributeError, TypeError):
-        xy = None
+    xy = _start_xy(ctx, pts_in)
     if xy is not None:
-        scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+        scale = _size(xy)
         for i in range(len(xy) - 1):
             (x0, y0), (x1, y1) = xy[i], xy[i + 1]
             if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
@@ -529,10 +526,7 @@ def _build_Spline(ctx, g, a):
     from .spline import SplineError, check_points
     pts_in = a["points"]
     closed = bool(a.get("closed", False))
-    try:
-        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
-    except (AttributeError, TypeError):
-        xy = None
+    xy = _start_xy(ctx, pts_in)
     try:
         check_points(xy if xy is not None else [(0.0, float(i)) for i in range(len(pts_in))],
                      closed)
@@ -565,12 +559,9 @@ def _build_Bezier(ctx, g, a):
             + (" (the last repeating the first when closed)" if closed else ""))
     if m > 3 * 2000 + 1:
         raise PrimitiveError(f"a Bezier chain takes at most {3 * 2000 + 1} points, got {m}")
-    try:
-        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts_in]
-    except (AttributeError, TypeError):
-        xy = None
+    xy = _start_xy(ctx, pts_in)
     if xy is not None:
-        scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+        scale = _size(xy)
         if closed and math.dist(xy[0], xy[-1]) > 1e-9 * scale:
             raise PrimitiveError(
                 f"a closed Bezier chain ends where it starts: its last point "
@@ -618,15 +609,28 @@ def _spline_corners(ctx, v, m: int, closed: bool) -> tuple[int, ...]:
     return tuple(sorted(set(out)))
 
 
+def _start_xy(ctx, pts) -> list[tuple[float, float]] | None:
+    """The starting coordinates (mm) of a point list, or None when an item is not a point
+    (its own error comes where the points are made)."""
+    try:
+        return [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts]
+    except (AttributeError, TypeError):
+        return None
+
+
+def _size(xy) -> float:
+    """The scale for "the same point" tests on ``xy``: its largest coordinate, at least 1 mm."""
+    return max(1.0, max(abs(v) for pt in xy for v in pt))
+
+
 def _check_polygon_points(ctx, pts) -> None:
     """Starting points: no two consecutive ones equal (a zero-length edge), not all on one
     line (no area)."""
-    try:
-        xy = [(ctx.value_of(p.x), ctx.value_of(p.y)) for p in pts]
-    except (AttributeError, TypeError):
+    xy = _start_xy(ctx, pts)
+    if xy is None:
         return
     n = len(xy)
-    scale = max(1.0, max(abs(v) for pt in xy for v in pt))
+    scale = _size(xy)
     for i in range(n):
         (x0, y0), (x1, y1) = xy[i], xy[(i + 1) % n]
         if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
