@@ -341,7 +341,7 @@ class Expressions:
         v = self._binop(e)
         if type(v) is Q:                  # a finite constant, as `finite` finds it, inline
             x = v.expr
-            if type(x) is Lin and not x.terms and x.const - x.const == 0.0:
+            if type(x) is Lin and not x.terms and math.isfinite(x.const):
                 return v
         return self.finite(v, e.span)
 

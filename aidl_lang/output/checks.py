@@ -1164,7 +1164,7 @@ def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
     if n < 2:
         return np.zeros(n, dtype=bool)
     diag = np.hypot(boxes[:, 2] - boxes[:, 0], boxes[:, 3] - boxes[:, 1])
-    big = diag > max(4 * _median_of(diag), 8 * t)
+    big = diag > max(4 * float(np.median(diag)), 8 * t)
     owner = [np.flatnonzero(~big)]
     items = [boxes[~big]]
     for k in np.flatnonzero(big):            # a large loop: one box per edge
@@ -1179,11 +1179,6 @@ def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
     alone = ~big
     alone[near.ravel()] = False
     return alone
-
-
-def _median_of(a: np.ndarray) -> float:
-    a = np.sort(a)
-    return float(a[len(a) // 2])
 
 
 def _thin_of_loop(loop: np.ndarray, t: float, cache: dict):
