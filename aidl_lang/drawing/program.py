@@ -23,17 +23,17 @@ from .read import Drawing, Note, Outline, Path
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
 
 
-def _num(v: float) -> str:
-    """``v`` (mm or degrees) as the shortest decimal within :data:`SNAP` of it, so that float
+def _num(v: float, snap: float = SNAP) -> str:
+    """``v`` (mm or degrees) as the shortest decimal within ``snap`` of it, so that float
     noise from the reader (``43.99999999999999``, ``25.000000000000004``) is written as the
     number the drawing meant (``44``, ``25``); the error stays far inside the round trip's
-    1e-9 mm."""
+    1e-9 mm.  Angles in radians pass ``snap=0`` (exact: 1e-12 rad is 1e-9 mm at 1 m)."""
     v = float(v)
     if abs(v) < 1e-12:
         return "0"
     for digits in range(13):
         r = round(v, digits)
-        if abs(r - v) <= SNAP:
+        if abs(r - v) <= snap:
             v = r
             break
     if v == 0:
@@ -95,10 +95,9 @@ def _spline_points(s: Spline, closed: bool):
     return pts
 
 
-def _bezier_points(s: Spline) -> list:
-    """The ``3 k + 1`` control points of piece ``s`` (its spans, in its direction): the
-    points of a ``Bezier(...)`` statement that is ``s`` exactly."""
-    spans = s.spans
+def _bezier_points(spans) -> list:
+    """The ``3 k + 1`` control points of cubic ``spans`` (end to end, in their direction):
+    the points of a ``Bezier(...)`` statement that is that curve exactly."""
     pts = [spans[0][0]]
     for b in spans:
         pts += [b[1], b[2], b[3]]
@@ -118,9 +117,7 @@ def _bezier_runs(segs: list) -> list:
             out.append(run[0])
         elif run:
             spans = [b for s in run for b in s.spans]
-            ctrl = [spans[0][0]]
-            for b in spans:
-                ctrl += [b[1], b[2], b[3]]
+            ctrl = _bezier_points(spans)
             h = [math.dist(b[0], b[3]) or 1.0 for b in spans]
             c = CubicSpline(tuple(ctrl), tuple(h), False)
             out.append(Spline(c, 0.0, float(c.n)))
@@ -151,7 +148,7 @@ class _Writer:
         if closed and len(segs) == 1 and isinstance(segs[0], Spline):
             pts = _spline_points(segs[0], True)
             if pts is None:         # its own control points: a closed Bezier chain
-                ctrl = _bezier_points(segs[0])
+                ctrl = _bezier_points(segs[0].spans)
                 ctrl[-1] = ctrl[0]
                 out.append(f"{prefix}0 = Bezier(points=[{', '.join(_pt(p) for p in ctrl)}], "
                            f"closed=true)")
@@ -189,14 +186,14 @@ class _Writer:
                 t0, sw = (s.start_param, s.sweep) if s.sweep > 0 else (s.end_param, -s.sweep)
                 e = s.curve
                 out.append(f"{nm} = Ellipse(center={_pt(e.center)}, rx={_num(e.rx)}, "
-                           f"ry={_num(e.ry)}, rotation={_num(e.rotation)} rad, "
-                           f"start_angle={_num(t0)} rad, end_angle={_num(t0 + sw)} rad)")
+                           f"ry={_num(e.ry)}, rotation={_num(e.rotation, 0)} rad, "
+                           f"start_angle={_num(t0, 0)} rad, end_angle={_num(t0 + sw, 0)} rad)")
                 cs, ce = (f"{nm}.start", f"{nm}.end") if s.sweep > 0 else \
                     (f"{nm}.end", f"{nm}.start")
             elif isinstance(s, Spline):
                 pts = _spline_points(s, False)
                 if pts is None:     # not through its span ends: its own control points
-                    ctrl = _bezier_points(s)
+                    ctrl = _bezier_points(s.spans)
                     inner = ", ".join([start] + [_pt(p) for p in ctrl[1:-1]] + [end])
                     out.append(f"{nm} = Bezier(points=[{inner}])")
                 else:
