@@ -68,38 +68,40 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
         e2 = atan2(qy - c2y, qx - c2x) if r2 > 0 else atan2(pby - c2y, pbx - c2x)
     }
     solid teeth_ring {
-        for i in range(teeth) {
-            rot = phase + i * 360 deg / teeth
-            cr = cos(rot)
-            sr = sin(rot)
-            for k in range(n) {
-                # the two arcs of the upper flank, and their mirror images about the tooth's axis
-                up1 = Arc(center=(cx + c1x[k] * cr - c1y[k] * sr, cy + c1x[k] * sr + c1y[k] * cr),
-                          radius=abs(r1[k]), start_angle=rot + s1[k], end_angle=rot + e1[k])
-                up2 = Arc(center=(cx + c2x[k] * cr - c2y[k] * sr, cy + c2x[k] * sr + c2y[k] * cr),
-                          radius=abs(r2[k]), start_angle=rot + s2[k], end_angle=rot + e2[k])
-                lo1 = Arc(center=(cx + c1x[k] * cr + c1y[k] * sr, cy + c1x[k] * sr - c1y[k] * cr),
-                          radius=abs(r1[k]), start_angle=rot - e1[k], end_angle=rot - s1[k])
-                lo2 = Arc(center=(cx + c2x[k] * cr + c2y[k] * sr, cy + c2x[k] * sr - c2y[k] * cr),
-                          radius=abs(r2[k]), start_angle=rot - e2[k], end_angle=rot - s2[k])
-                Fixed(up1.center)
-                Fixed(up2.center)
-                Fixed(lo1.center)
-                Fixed(lo2.center)
+        # one tooth drawn along `phase`; each of its shapes is patterned round the gear
+        # (CircularPattern: every copy exactly the tooth turned by a multiple of 360 deg / teeth)
+        cr = cos(phase)
+        sr = sin(phase)
+        for k in range(n) {
+            # the two arcs of the upper flank, and their mirror images about the tooth's axis
+            up1 = Arc(center=(cx + c1x[k] * cr - c1y[k] * sr, cy + c1x[k] * sr + c1y[k] * cr),
+                      radius=abs(r1[k]), start_angle=phase + s1[k], end_angle=phase + e1[k])
+            up2 = Arc(center=(cx + c2x[k] * cr - c2y[k] * sr, cy + c2x[k] * sr + c2y[k] * cr),
+                      radius=abs(r2[k]), start_angle=phase + s2[k], end_angle=phase + e2[k])
+            lo1 = Arc(center=(cx + c1x[k] * cr + c1y[k] * sr, cy + c1x[k] * sr - c1y[k] * cr),
+                      radius=abs(r1[k]), start_angle=phase - e1[k], end_angle=phase - s1[k])
+            lo2 = Arc(center=(cx + c2x[k] * cr + c2y[k] * sr, cy + c2x[k] * sr - c2y[k] * cr),
+                      radius=abs(r2[k]), start_angle=phase - e2[k], end_angle=phase - s2[k])
+            for flank in [up1, up2, lo1, lo2] {
+                Fixed(flank.center)
+                CircularPattern(flank, teeth, (cx, cy))
             }
-            top = Arc(center=(cx, cy), radius=tip_r, start_angle=rot - tip_half * 1 rad, end_angle=rot + tip_half * 1 rad)
-            # close the tooth inside the root disk: two radial lines and a chord
-            s_up = (cx + start_r * cos(rot + start_half * 1 rad), cy + start_r * sin(rot + start_half * 1 rad))
-            s_lo = (cx + start_r * cos(rot - start_half * 1 rad), cy + start_r * sin(rot - start_half * 1 rad))
-            i_up = (cx + root_r / 2 * cos(rot + start_half * 1 rad), cy + root_r / 2 * sin(rot + start_half * 1 rad))
-            i_lo = (cx + root_r / 2 * cos(rot - start_half * 1 rad), cy + root_r / 2 * sin(rot - start_half * 1 rad))
-            l_up = Line(s_up, i_up)
-            chord = Line(i_up, i_lo)
-            l_lo = Line(i_lo, s_lo)
-            Fixed(top.center)
-            Fixed(l_up)
-            Fixed(chord)
-            Fixed(l_lo)
+        }
+        top = Arc(center=(cx, cy), radius=tip_r, start_angle=phase - tip_half * 1 rad, end_angle=phase + tip_half * 1 rad)
+        # close the tooth inside the root disk: two radial lines and a chord
+        s_up = (cx + start_r * cos(phase + start_half * 1 rad), cy + start_r * sin(phase + start_half * 1 rad))
+        s_lo = (cx + start_r * cos(phase - start_half * 1 rad), cy + start_r * sin(phase - start_half * 1 rad))
+        i_up = (cx + root_r / 2 * cos(phase + start_half * 1 rad), cy + root_r / 2 * sin(phase + start_half * 1 rad))
+        i_lo = (cx + root_r / 2 * cos(phase - start_half * 1 rad), cy + root_r / 2 * sin(phase - start_half * 1 rad))
+        l_up = Line(s_up, i_up)
+        chord = Line(i_up, i_lo)
+        l_lo = Line(i_lo, s_lo)
+        Fixed(top.center)
+        for line in [l_up, chord, l_lo] {
+            Fixed(line)
+        }
+        for edge in [top, l_up, chord, l_lo] {
+            CircularPattern(edge, teeth, (cx, cy))
         }
         axis = Point(cx, cy)
         Fixed(axis)

@@ -138,6 +138,27 @@ def add(a, b) -> Expr:
     return e
 
 
+def combine(pairs, c: float = 0.0) -> Expr:
+    """``sum(k * e for k, e in pairs) + c`` (``k`` floats, ``e`` expressions or numbers): one
+    :class:`Lin` built in one pass when every ``e`` is affine (a copy's point is the affine
+    image of the original's, several thousand in a patterned gear), else the sum of products."""
+    terms: dict = {}
+    get = terms.get
+    for k, e in pairs:
+        if type(e) is not Lin:
+            if isinstance(e, Expr):
+                out = lift(c)
+                for k2, e2 in pairs:
+                    out = add(out, mul(k2, e2))
+                return out
+            c += k * float(e)
+            continue
+        for i, v in e.terms.items():
+            terms[i] = get(i, 0.0) + k * v
+        c += k * e.const
+    return _lin(terms, c)
+
+
 def sub(a: Expr, b) -> Expr:
     """``a - b``: the same expression, with the same floating-point operations, as
     ``add(a, mul(-1.0, b))``, without the negated copy of ``b`` when both are affine."""

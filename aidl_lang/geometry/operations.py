@@ -29,7 +29,7 @@ import math
 
 from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
-from .expr import var
+from .expr import combine, var
 from .model import Constraint, Equation, Geometry, Point, Structure
 from .values import PV, GeomRef, Q, StructRef, type_name
 
@@ -49,8 +49,9 @@ def _translate(dx, dy):
 
 def _rotate(c: PV, th: float):
     cs, sn = math.cos(th), math.sin(th)
-    return (lambda x, y: (c.x + (x - c.x) * cs - (y - c.y) * sn,
-                          c.y + (x - c.x) * sn + (y - c.y) * cs)), th, False
+    # c + R (p - c), written as R p + (I - R) c: one affine combination per coordinate
+    return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0 - cs, c.x), (sn, c.y))),
+                          combine(((sn, x), (cs, y), (-sn, c.x), (1.0 - cs, c.y))))), th, False
 
 
 def _reflect(a: PV, b: PV):
