@@ -1030,8 +1030,8 @@ def sliding(solver) -> Sliding:
     if whole.n_rows * len(cols) <= DENSE_CELLS:
         J = whole.jacobian(x, cols, dense=True)
         scale = np.abs(J).max(axis=1) if J.shape[1] else np.zeros(J.shape[0])
-    else:
-        J = whole.jacobian(x, cols).tocsr()
+    else:       # by columns: each move and each part reads a few of them
+        J = whole.jacobian(x, cols).tocsc()
         scale = np.asarray(abs(J).max(axis=1).todense()).ravel()
     slack = solver.slack[:J.shape[0]] if len(solver.slack) >= J.shape[0] else None
     loose = np.zeros(J.shape[0], dtype=bool)
@@ -1069,8 +1069,9 @@ def sliding(solver) -> Sliding:
         v = move(t, axis)
         if v is None or not v.any():
             return False
-        r = np.abs(np.asarray(J @ v).ravel())
-        return not np.any((r > 1e-9 * np.maximum(1.0, scale)) & ~loose)
+        rows, B = _block(J, np.flatnonzero(v))       # J @ v on the rows the move touches
+        r = np.abs(B.sum(axis=1))
+        return not np.any((r > 1e-9 * np.maximum(1.0, scale[rows])) & ~loose[rows])
 
     def axes(t) -> str:
         return ", ".join(a for a, k in (("x", 0), ("y", 1)) if slides(t, k))
@@ -1085,11 +1086,8 @@ def sliding(solver) -> Sliding:
                                                    px, model)}
             out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
         for t, _ in found:
-            for f in (t.fx, t.fy):
-                col = J[:, where[f]]
-                col = col.toarray() if hasattr(col, "toarray") else col
-                if np.any(np.asarray(col) != 0):
-                    out.constrained.add(id(t))
+            if _block(J, [where[t.fx], where[t.fy]])[1].any():
+                out.constrained.add(id(t))
     asm = [t for t in model.structures if t.kind == "assembly"]
     if not out.placement and not out.features:
         for t in asm:                       # a group of parts placed only as a whole
@@ -1101,6 +1099,25 @@ def sliding(solver) -> Sliding:
 
 
 MAX_CANDIDATES = 400     # features of one part whose joint motions are searched (2 per axis)
+
+
+def _block(J, cols) -> tuple[np.ndarray, np.ndarray]:
+    """Columns ``cols`` of the Jacobian ``J`` (a dense array, or sparse by columns) on the rows
+    where any of them is non-zero: ``(rows, dense block of len(rows) x len(cols))``.  A part's
+    moves read a few columns of the whole model's Jacobian; taking only those rows keeps the
+    sliding check linear in the number of parts (1,000 parts: each product was over every row)."""
+    if isinstance(J, np.ndarray):
+        sub = J[:, cols]
+        rows = np.flatnonzero(np.any(sub != 0, axis=1))
+        return rows, sub[rows]
+    # read the compressed columns directly (SciPy's indexing costs ~0.5 ms a call)
+    spans = [slice(J.indptr[c], J.indptr[c + 1]) for c in cols]
+    rows = np.unique(np.concatenate([J.indices[s] for s in spans])) if spans else \
+        np.zeros(0, dtype=np.int64)
+    B = np.zeros((len(rows), len(spans)))
+    for j, s in enumerate(spans):
+        np.add.at(B[:, j], np.searchsorted(rows, J.indices[s]), J.data[s])
+    return rows, B
 
 
 def _features(p, J, loose, scale, where, px, model) -> list:
@@ -1121,12 +1138,11 @@ def _features(p, J, loose, scale, where, px, model) -> list:
     if not cands or len(cands) > MAX_CANDIDATES:
         return []
     n = len(cands)
-    V = np.zeros((J.shape[1], 2 * n))
-    for i, t in enumerate(cands):
-        V[where[t.fx], 2 * i] = 1.0
-        V[where[t.fy], 2 * i + 1] = 1.0
-    M = np.asarray(J @ V)[~loose]
-    M = M / np.maximum(1.0, scale[~loose])[:, None]
+    # J V (V: a unit column per candidate frame and axis) on the rows those columns touch;
+    # the other rows are zero in J V and add nothing to its Gram matrix
+    rows, M = _block(J, [where[f] for t in cands for f in (t.fx, t.fy)])
+    keep = ~loose[rows]
+    M = M[keep] / np.maximum(1.0, scale[rows][keep])[:, None]
     w, Q = np.linalg.eigh(M.T @ M)
     null = Q[:, w <= 1e-12 * max(1.0, float(w.max(initial=0.0)))]
     if not null.shape[1]:
