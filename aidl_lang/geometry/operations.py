@@ -30,7 +30,7 @@ import math
 from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
 from .expr import combine, var
-from .model import Constraint, Equation, Geometry, Point, Structure
+from .model import Constraint, Equation, Geometry, Point, Structure, equation
 from .values import PV, GeomRef, Q, StructRef, type_name
 
 
@@ -80,12 +80,12 @@ class _Cloner:
     def point(self, p: Point, dest: Structure) -> Point:
         if p in self.points:
             return self.points[p]
-        m = self.ctx.model
         X, Y = self.xf(*p.in_frame(self.frame))
-        q = Point(m.new_param(self.ctx.value_of(X), True, dest, f"{p.label}.x"),
-                  m.new_param(self.ctx.value_of(Y), True, dest, f"{p.label}.y"), dest, None, p.label)
+        value_of = self.ctx.value_of
+        ix, iy = self.ctx.model.new_pair(value_of(X), value_of(Y), True, dest, p.label)
+        q = Point(ix, iy, dest, None, p.label)
         qx, qy = q.in_frame(self.frame)
-        self.eqs += [Equation(qx - X), Equation(qy - Y)]
+        self.eqs += [equation(qx - X), equation(qy - Y)]
         self.points[p] = q
         return q
 
