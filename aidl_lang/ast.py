@@ -1,277 +1,394 @@
 """Typed AST of an AIDL file. Every node carries the :class:`Span` of its source text.
 
 Built by :mod:`aidl_lang.parser` from the Lark tree of ``grammar/aidl.lark``.
+
+The nodes are plain slotted classes, not dataclasses: ``dataclass`` writes and compiles an
+``__init__`` and a ``__repr__`` per class at import time, 45 M instructions for these 35
+classes, 5% of a cold ``aidl check`` (docs/dev/performance.md, "The cold check"). Nodes are
+compared by identity, as they were with ``eq=False``.
 """
 from __future__ import annotations
-
-from dataclasses import dataclass, field
 
 from .diagnostics import Span
 
 STRUCTURE_KINDS = ("solid", "hole", "drawing", "assembly")
 
 
-@dataclass(eq=False, slots=True)
 class Node:
     """Base of every node: ``span`` is the node's source text (file, line, column, end)."""
-    span: Span
+    __slots__ = ("span",)
+
+    def __init__(self, span: Span):
+        self.span = span
+
+    def __repr__(self) -> str:
+        """``Num(span=Span(...), value=40.0, unit='mm')``: the fields in order, as a dataclass's."""
+        names = [n for c in reversed(type(self).__mro__[:-1]) for n in c.__slots__]
+        return f"{type(self).__name__}({', '.join(f'{n}={getattr(self, n)!r}' for n in names)})"
 
 
 # ---------------------------------------------------------------- expressions
-@dataclass(eq=False, slots=True)
 class Num(Node):
     """A number with its unit as written: ``40 mm`` (value 40.0, unit ``"mm"``), ``3`` (unit None)."""
-    value: float
-    unit: str | None          # as written: "mm", "deg", ... or None for a bare number
+    __slots__ = ("value", "unit")
+
+    def __init__(self, span: Span, value: float, unit: str | None):
+        self.span = span
+        self.value = value
+        self.unit = unit  # as written: "mm", "deg", ... or None for a bare number
 
 
-@dataclass(eq=False, slots=True)
 class Str(Node):
     """A string literal ``"..."`` (escapes resolved)."""
-    value: str
+    __slots__ = ("value",)
+
+    def __init__(self, span: Span, value: str):
+        self.span = span
+        self.value = value
 
 
-@dataclass(eq=False, slots=True)
 class FStr(Node):
     """An f-string ``f"w={w}"``: literal ``str`` parts and expression nodes, in order."""
-    parts: list               # str | Node
+    __slots__ = ("parts",)
+
+    def __init__(self, span: Span, parts: list):
+        self.span = span
+        self.parts = parts  # str | Node
 
 
-@dataclass(eq=False, slots=True)
 class Name(Node):
     """A name in an expression: ``w``, ``Circle``."""
-    id: str
+    __slots__ = ("id",)
+
+    def __init__(self, span: Span, id: str):
+        self.span = span
+        self.id = id
 
 
-@dataclass(eq=False, slots=True)
 class Keyword(Node):
     """A keyword argument ``name=value`` of a call."""
-    name: str
-    value: Node
+    __slots__ = ("name", "value")
+
+    def __init__(self, span: Span, name: str, value: Node):
+        self.span = span
+        self.name = name
+        self.value = value
 
 
-@dataclass(eq=False, slots=True)
 class Call(Node):
     """A call ``func(args..., name=value...)``."""
-    func: Node
-    args: list[Node]
-    kwargs: list[Keyword]
+    __slots__ = ("func", "args", "kwargs")
+
+    def __init__(self, span: Span, func: Node, args: list[Node], kwargs: list[Keyword]):
+        self.span = span
+        self.func = func
+        self.args = args
+        self.kwargs = kwargs
 
 
-@dataclass(eq=False, slots=True)
 class Member(Node):
     """A member access ``obj.name`` (``name_span`` is the name's own span)."""
-    obj: Node
-    name: str
-    name_span: Span
+    __slots__ = ("obj", "name", "name_span")
+
+    def __init__(self, span: Span, obj: Node, name: str, name_span: Span):
+        self.span = span
+        self.obj = obj
+        self.name = name
+        self.name_span = name_span
 
 
-@dataclass(eq=False, slots=True)
 class Index(Node):
     """A subscript ``obj[index]``."""
-    obj: Node
-    index: Node
+    __slots__ = ("obj", "index")
+
+    def __init__(self, span: Span, obj: Node, index: Node):
+        self.span = span
+        self.obj = obj
+        self.index = index
 
 
-@dataclass(eq=False, slots=True)
 class BinOp(Node):
     """An arithmetic operation ``left op right``."""
-    op: str                   # + - * / // % **
-    left: Node
-    right: Node
+    __slots__ = ("op", "left", "right")
+
+    def __init__(self, span: Span, op: str, left: Node, right: Node):
+        self.span = span
+        self.op = op  # + - * / // % **
+        self.left = left
+        self.right = right
 
 
-@dataclass(eq=False, slots=True)
 class Compare(Node):
     """A comparison chain ``a < b <= c``: ``len(ops) == len(operands) - 1``."""
-    ops: list[str]            # == != <= >= < >
-    operands: list[Node]
+    __slots__ = ("ops", "operands")
+
+    def __init__(self, span: Span, ops: list[str], operands: list[Node]):
+        self.span = span
+        self.ops = ops  # == != <= >= < >
+        self.operands = operands
 
 
-@dataclass(eq=False, slots=True)
 class BoolOp(Node):
     """``left and right`` / ``left or right``."""
-    op: str                   # and | or
-    left: Node
-    right: Node
+    __slots__ = ("op", "left", "right")
+
+    def __init__(self, span: Span, op: str, left: Node, right: Node):
+        self.span = span
+        self.op = op  # and | or
+        self.left = left
+        self.right = right
 
 
-@dataclass(eq=False, slots=True)
 class Not(Node):
     """``not operand``."""
-    operand: Node
+    __slots__ = ("operand",)
+
+    def __init__(self, span: Span, operand: Node):
+        self.span = span
+        self.operand = operand
 
 
-@dataclass(eq=False, slots=True)
 class Neg(Node):
     """``-operand``."""
-    operand: Node
+    __slots__ = ("operand",)
+
+    def __init__(self, span: Span, operand: Node):
+        self.span = span
+        self.operand = operand
 
 
-@dataclass(eq=False, slots=True)
 class Ternary(Node):
     """``then if cond else orelse``."""
-    cond: Node
-    then: Node
-    orelse: Node
+    __slots__ = ("cond", "then", "orelse")
+
+    def __init__(self, span: Span, cond: Node, then: Node, orelse: Node):
+        self.span = span
+        self.cond = cond
+        self.then = then
+        self.orelse = orelse
 
 
-@dataclass(eq=False, slots=True)
 class TupleLit(Node):
     """A tuple ``(a, b)``."""
-    items: list[Node]
+    __slots__ = ("items",)
+
+    def __init__(self, span: Span, items: list[Node]):
+        self.span = span
+        self.items = items
 
 
-@dataclass(eq=False, slots=True)
 class ListLit(Node):
     """A list ``[a, b]``."""
-    items: list[Node]
+    __slots__ = ("items",)
+
+    def __init__(self, span: Span, items: list[Node]):
+        self.span = span
+        self.items = items
 
 
-@dataclass(eq=False, slots=True)
 class ListComp(Node):
     """A list comprehension ``[elt for var in iter if cond]``."""
-    elt: Node
-    var: str
-    var_span: Span
-    iter: Node
-    cond: Node | None
+    __slots__ = ("elt", "var", "var_span", "iter", "cond")
+
+    def __init__(self, span: Span, elt: Node, var: str, var_span: Span, iter: Node,
+                 cond: Node | None):
+        self.span = span
+        self.elt = elt
+        self.var = var
+        self.var_span = var_span
+        self.iter = iter
+        self.cond = cond
 
 
 # ---------------------------------------------------------------- statements
-@dataclass(eq=False, slots=True)
 class Block(Node):
     """An indented block of statements."""
-    stmts: list[Node]
+    __slots__ = ("stmts",)
+
+    def __init__(self, span: Span, stmts: list[Node]):
+        self.span = span
+        self.stmts = stmts
 
 
-@dataclass(eq=False, slots=True)
 class UnitsDecl(Node):
     """``units mm``: the file's default length unit."""
-    unit: str
-    unit_span: Span
+    __slots__ = ("unit", "unit_span")
+
+    def __init__(self, span: Span, unit: str, unit_span: Span):
+        self.span = span
+        self.unit = unit
+        self.unit_span = unit_span
 
 
-@dataclass(eq=False, slots=True)
 class ThicknessDecl(Node):
     """``thickness 3 mm``: the extrusion thickness of the file's parts (at the top level) or of
     one structure and its children (inside it); see docs/outputs.md."""
-    value: Node
+    __slots__ = ("value",)
+
+    def __init__(self, span: Span, value: Node):
+        self.span = span
+        self.value = value
 
 
-@dataclass(eq=False, slots=True)
 class KerfDecl(ThicknessDecl):
     """``kerf 0.15 mm``: the width the laser burns away, for the file's parts (top level) or
     one structure and its children; cuts are offset by half of it (docs/outputs.md, "Kerf").
     Handled wherever a :class:`ThicknessDecl` is."""
+    __slots__ = ()
 
 
-@dataclass(eq=False, slots=True)
 class Import(Node):
     """``import "path.aidl" as alias``."""
-    path: str
-    path_span: Span
-    alias: str | None
+    __slots__ = ("path", "path_span", "alias")
+
+    def __init__(self, span: Span, path: str, path_span: Span, alias: str | None):
+        self.span = span
+        self.path = path
+        self.path_span = path_span
+        self.alias = alias
 
 
-@dataclass(eq=False, slots=True)
 class ParamDecl(Node):
     """``param name = value`` (with its optional ``min=``/``max=``/``step=`` options)."""
-    name: str
-    name_span: Span
-    value: Node
-    # the optional range ``param w = 40 mm, min=10 mm, max=80 mm, step=1 mm``, in order
-    options: list["ParamOption"] = field(default_factory=list)
+    __slots__ = ("name", "name_span", "value", "options")
+
+    def __init__(self, span: Span, name: str, name_span: Span, value: Node,
+                 options: list["ParamOption"] | None = None):
+        self.span = span
+        self.name = name
+        self.name_span = name_span
+        self.value = value
+        # the optional range ``param w = 40 mm, min=10 mm, max=80 mm, step=1 mm``, in order
+        self.options = [] if options is None else options
 
 
-@dataclass(eq=False, slots=True)
 class ParamOption(Node):
     """One ``min=``/``max=``/``step=`` option of a ``param``."""
-    name: str                      # min | max | step (checked by the interpreter)
-    name_span: Span
-    value: Node
+    __slots__ = ("name", "name_span", "value")
+
+    def __init__(self, span: Span, name: str, name_span: Span, value: Node):
+        self.span = span
+        self.name = name  # min | max | step (checked by the interpreter)
+        self.name_span = name_span
+        self.value = value
 
 
-@dataclass(eq=False, slots=True)
 class TemplateParam(Node):
     """One parameter of a ``def`` template, with its default expression if any."""
-    name: str
-    default: Node | None
+    __slots__ = ("name", "default")
+
+    def __init__(self, span: Span, name: str, default: Node | None):
+        self.span = span
+        self.name = name
+        self.default = default
 
 
-@dataclass(eq=False, slots=True)
 class Def(Node):
     """``def KIND name(params):`` a structure template of kind ``kind``."""
-    name: str
-    name_span: Span
-    kind: str
-    kind_span: Span
-    params: list[TemplateParam]
-    body: Block
+    __slots__ = ("name", "name_span", "kind", "kind_span", "params", "body")
+
+    def __init__(self, span: Span, name: str, name_span: Span, kind: str, kind_span: Span,
+                 params: list[TemplateParam], body: Block):
+        self.span = span
+        self.name = name
+        self.name_span = name_span
+        self.kind = kind
+        self.kind_span = kind_span
+        self.params = params
+        self.body = body
 
 
-@dataclass(eq=False, slots=True)
 class StructDecl(Node):
     """``KIND name:`` a structure (solid, hole, drawing, assembly) and its body."""
-    kind: str
-    kind_span: Span
-    name: str
-    name_span: Span
-    body: Block
+    __slots__ = ("kind", "kind_span", "name", "name_span", "body")
+
+    def __init__(self, span: Span, kind: str, kind_span: Span, name: str, name_span: Span,
+                 body: Block):
+        self.span = span
+        self.kind = kind
+        self.kind_span = kind_span
+        self.name = name
+        self.name_span = name_span
+        self.body = body
 
 
-@dataclass(eq=False, slots=True)
 class Assign(Node):
     """``name = value``."""
-    name: str
-    name_span: Span
-    value: Node
+    __slots__ = ("name", "name_span", "value")
+
+    def __init__(self, span: Span, name: str, name_span: Span, value: Node):
+        self.span = span
+        self.name = name
+        self.name_span = name_span
+        self.value = value
 
 
-@dataclass(eq=False, slots=True)
 class KindAssign(Assign):
     """``KIND NAME = template(...)``: a template instance of structure kind ``kind``."""
-    kind: str
-    kind_span: Span
+    __slots__ = ("kind", "kind_span")
+
+    def __init__(self, span: Span, name: str, name_span: Span, value: Node, kind: str,
+                 kind_span: Span):
+        self.span = span
+        self.name = name
+        self.name_span = name_span
+        self.value = value
+        self.kind = kind
+        self.kind_span = kind_span
 
 
-@dataclass(eq=False, slots=True)
 class For(Node):
     """``for var in iter:`` body."""
-    var: str
-    var_span: Span
-    iter: Node
-    body: Block
+    __slots__ = ("var", "var_span", "iter", "body")
+
+    def __init__(self, span: Span, var: str, var_span: Span, iter: Node, body: Block):
+        self.span = span
+        self.var = var
+        self.var_span = var_span
+        self.iter = iter
+        self.body = body
 
 
-@dataclass(eq=False, slots=True)
 class If(Node):
     """``if cond:`` body, with the ``else`` (or ``elif``, nested) block if any."""
-    cond: Node
-    body: Block
-    orelse: Block | None
+    __slots__ = ("cond", "body", "orelse")
+
+    def __init__(self, span: Span, cond: Node, body: Block, orelse: Block | None):
+        self.span = span
+        self.cond = cond
+        self.body = body
+        self.orelse = orelse
 
 
-@dataclass(eq=False, slots=True)
 class ExprStmt(Node):
     """An expression used as a statement (a constraint call, a primitive)."""
-    expr: Node
+    __slots__ = ("expr",)
+
+    def __init__(self, span: Span, expr: Node):
+        self.span = span
+        self.expr = expr
 
 
-@dataclass(eq=False, slots=True)
 class Assert(Node):
     """``assert cond, "message"``: ``cond`` (comparisons joined by ``and``) must hold at the
     solved values; checked after solving, never a constraint (docs/language.md)."""
-    expr: Node
-    message: str | None = None
+    __slots__ = ("expr", "message")
+
+    def __init__(self, span: Span, expr: Node, message: str | None = None):
+        self.span = span
+        self.expr = expr
+        self.message = message
 
 
-@dataclass(eq=False, slots=True)
 class Program(Node):
     """A parsed file: its path, source text and top-level statements."""
-    path: str
-    source: str
-    stmts: list[Node] = field(default_factory=list)
+    __slots__ = ("path", "source", "stmts")
+
+    def __init__(self, span: Span, path: str, source: str, stmts: list[Node] | None = None):
+        self.span = span
+        self.path = path
+        self.source = source
+        self.stmts = [] if stmts is None else stmts
 
 
 def walk(node):

@@ -548,3 +548,30 @@ def test_nesting_limit_is_the_deepest_running_depth(opens, pieces):
         assert not e3
     else:
         assert len(e3) == 1 and e3[0].span.start == where
+
+
+def _node_classes():
+    return [c for c in vars(A).values() if isinstance(c, type) and issubclass(c, A.Node)]
+
+
+def test_every_ast_node_init_sets_each_field_in_order():
+    """The nodes are plain slotted classes (not dataclasses: their import cost, see
+    docs/dev/performance.md): each ``__init__`` takes the fields of the class and its bases in order, stores each one
+    where it belongs, and ``repr`` shows them as a dataclass would."""
+    import inspect
+    classes = _node_classes()
+    assert len(classes) == 35
+    for cls in classes:
+        fields = [n for c in reversed(cls.__mro__[:-1]) for n in c.__slots__]
+        params = list(inspect.signature(cls.__init__).parameters)[1:]
+        assert params == fields, cls.__name__
+        values = [object() for _ in fields]
+        node = cls(*values)
+        assert [getattr(node, f) for f in fields] == values, cls.__name__
+        assert not hasattr(node, "__dict__"), cls.__name__
+        shown = ", ".join(f"{f}={v!r}" for f, v in zip(fields, values))
+        assert repr(node) == f"{cls.__name__}({shown})"
+    a, b = A.ParamDecl(None, "w", None, None), A.ParamDecl(None, "h", None, None)
+    assert a.options == [] and a.options is not b.options       # a new list per node
+    assert A.Program(None, "x.aidl", "").stmts == []
+    assert A.Assert(None, None).message is None
