@@ -9,6 +9,8 @@ compared by identity, as they were with ``eq=False``.
 """
 from __future__ import annotations
 
+import functools
+
 from .diagnostics import Span
 
 STRUCTURE_KINDS = ("solid", "hole", "drawing", "assembly")
@@ -391,17 +393,23 @@ class Program(Node):
         self.stmts = [] if stmts is None else stmts
 
 
+@functools.cache
+def _fields(cls: type) -> tuple[str, ...]:
+    """The fields of node class ``cls`` in order, its bases' first (``KindAssign``: ``name``,
+    ``name_span``, ``value`` of ``Assign``, then ``kind``, ``kind_span``), without ``span``."""
+    return tuple(n for c in reversed(cls.__mro__[:-1]) for n in c.__slots__ if n != "span")
+
+
 def walk(node):
-    """Yield ``node`` and all nodes below it (pre-order)."""
+    """Yield ``node`` and all nodes below it (pre-order), through every field, inherited ones
+    included (a ``KindAssign``'s template call is its ``Assign`` part)."""
     stack = [node]
     while stack:
         n = stack.pop()
         if not isinstance(n, Node):
             continue
         yield n
-        for name in n.__slots__ if hasattr(n, "__slots__") else ():
-            if name == "span":
-                continue
+        for name in _fields(type(n)):
             v = getattr(n, name, None)
             if isinstance(v, Node):
                 stack.append(v)

@@ -575,3 +575,20 @@ def test_every_ast_node_init_sets_each_field_in_order():
     assert a.options == [] and a.options is not b.options       # a new list per node
     assert A.Program(None, "x.aidl", "").stmts == []
     assert A.Assert(None, None).message is None
+
+
+def test_walk_reaches_the_fields_a_node_inherits():
+    """``ast.walk`` goes through every field of a node, those of its base classes included:
+    the template call of ``solid t = tab(w=p)`` is a ``KindAssign``'s ``value``, a field of
+    ``Assign`` (the language server's name uses and keyword tokens are found by walking)."""
+    from aidl_lang import ast as A
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.parser import parse
+    sink = DiagnosticSink()
+    prog = parse("def tab(w=1) -> solid { r = Rectangle(center=(0, 0), width=w, height=2) }\n"
+                 "param p = 3\nassembly a {\n    solid t = tab(w=p)\n}\n", "t.aidl", sink)
+    assert not sink.items
+    names = [n.id for n in A.walk(prog) if isinstance(n, A.Name)]
+    assert names.count("p") == 1 and "tab" in names
+    kws = [n.name for n in A.walk(prog) if isinstance(n, A.Keyword)]
+    assert kws.count("w") == 1
