@@ -488,6 +488,10 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
 
 
 def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
+    if type(a) is Arc and type(b) is Arc:     # same_carrier of their circles, inline
+        (ax, ay), (bx, by) = a.center, b.center
+        return (a.sweep > 0) == (b.sweep > 0) and math.hypot(ax - bx, ay - by) <= tol \
+            and abs(a.radius - b.radius) <= tol and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
     if isinstance(a, Spline) and isinstance(b, Spline):
         n = a.curve.n
         return a.curve == b.curve and (a.u1 >= a.u0) == (b.u1 >= b.u0) and \
