@@ -74,13 +74,23 @@ class Arc:
     def at(self, a: float) -> Point:
         return (self.center[0] + self.radius * math.cos(a), self.center[1] + self.radius * math.sin(a))
 
+    # the ends, computed on first use and kept (an arc is immutable; a gear's thousand arcs
+    # are asked for their ends by the booleans, the recovery and every writer)
     @property
     def start(self) -> Point:
-        return self.at(self.start_angle)
+        d = self.__dict__
+        p = d.get("_start")
+        if p is None:
+            p = d["_start"] = self.at(self.start_angle)
+        return p
 
     @property
     def end(self) -> Point:
-        return self.at(self.end_angle)
+        d = self.__dict__
+        p = d.get("_end")
+        if p is None:
+            p = d["_end"] = self.at(self.start_angle + self.sweep)
+        return p
 
     @property
     def length(self) -> float:

@@ -102,17 +102,20 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
-        if self.max_vertices is not None:         # counted before anything is made
+        # each arc's chords, and the vertices of all (counted before anything is made)
+        chords = [0 if isinstance(s, (Line, Spline, EllipticArc, Circle)) else
+                  segments_for(s.radius, abs(s.sweep)) for s in segs]
+        if self.max_vertices is not None:
             self.vertices += sum(1 if isinstance(s, Line) else
                                  spline_chords(s) if isinstance(s, Spline) else
                                  ellipse_chords(s) if isinstance(s, EllipticArc) else
                                  segments_for(s.radius) if isinstance(s, Circle) else
-                                 max(1, segments_for(s.radius, abs(s.sweep))) for s in segs)
+                                 max(1, c) for s, c in zip(segs, chords))
             if self.vertices > self.max_vertices:
                 raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
                                   "(circles and arcs in chords of 0.005 mm)", "the booleans")
         seg_ids = [self.carrier_id(carrier(s)) for s in segs]
-        for s, k in zip(segs, seg_ids):
+        for s, k, m in zip(segs, seg_ids, chords):
             if isinstance(s, Line):
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
@@ -136,7 +139,7 @@ class Provenance:
                 sg = 1.0 if s.ccw else -1.0
                 t = [sg * 2 * math.pi * i / n for i in range(n)]
             else:
-                n = max(1, segments_for(r, abs(s.sweep)))
+                n = max(1, m)
                 t = [s.start_angle + s.sweep * i / n for i in range(n)]
             xs += [cx + r * math.cos(a) for a in t]
             ys += [cy + r * math.sin(a) for a in t]

@@ -236,11 +236,13 @@ def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
     xl = x.tolist()            # Python floats: the same arithmetic without NumPy scalars
     for v, r in pins:
         e = exprs[r]
+        terms = e.terms
         s = e.const
-        for i, c in e.terms.items():
-            if i != v:
-                s += c * xl[i]
-        xl[v] = -s / e.terms[v]
+        if len(terms) > 1:                 # (a Fixed row has its own unknown only)
+            for i, c in terms.items():
+                if i != v:
+                    s += c * xl[i]
+        xl[v] = -s / terms[v]
     vs = [v for v, _ in pins]
     x[vs] = [xl[v] for v in vs]
 
