@@ -320,9 +320,10 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     (:data:`~aidl_lang.limits.MAX_EXTENT`), else one E0305 at the structure that holds the
     first offending unknown (no NaN or absurd coordinate reaches a writer)."""
     import math
-    for i, v in enumerate(model.x):
-        if math.isfinite(v) and abs(v) <= MAX_EXTENT:
-            continue
+    x = np.asarray(model.x, dtype=float)
+    bad = np.flatnonzero(~(np.isfinite(x) & (np.abs(x) <= MAX_EXTENT)))   # NaN: not finite
+    for i in bad[:1].tolist():
+        v = model.x[i]
         owner = model.param_owner[i]
         what = "not finite" if not math.isfinite(v) else f"{v:.4g} mm"
         sink.error("E0305", f"after solving, `{model.param_label[i]}` is {what}, beyond the "

@@ -587,6 +587,30 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
         assert all(abs(got[k] - want[k]) <= 1e-9 for k in want.keys() & got.keys())
 
 
+@settings(max_examples=40, deadline=None)
+@given(st.integers(20, 400), st.floats(0.05, 3), st.floats(-30, 30), st.floats(0.5, 40))
+def test_band_pairs_through_the_grid_are_the_bands_own(n, dist, cx, r):
+    """Where the y bands hold many candidates (a round outline: each band crosses it), the
+    band's pairs are found through the grid (nearby.BAND_PER_ITEM); the arrays are the very
+    ones the bands give, pair for pair and in the same order, so that every check's result
+    stays the same."""
+    import numpy as np
+    from aidl_lang.output import nearby
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    V = np.column_stack([cx + r * np.cos(t), r * np.sin(3 * t) / 3 + r * np.sin(t)])
+    A, B = V, np.roll(V, -1, axis=0)
+    got = []
+    for limit in (0, 10 ** 9):                  # through the grid, then the bands alone
+        old, nearby.BAND_PER_ITEM = nearby.BAND_PER_ITEM, limit
+        try:
+            got.append(nearby._band_pairs(V, A, B, dist))
+        finally:
+            nearby.BAND_PER_ITEM = old
+    (s1, v1), (s2, v2) = got
+    assert len(s2) > 0
+    assert s1.tolist() == s2.tolist() and v1.tolist() == v2.tolist()
+
+
 def _seg_dist(p, a, b) -> float:
     import numpy as np
     ab, ap = b - a, p - a

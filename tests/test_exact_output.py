@@ -559,3 +559,27 @@ def test_matching_in_blocks_gives_the_same_outlines(monkeypatch):
     monkeypatch.setattr(exact, "PAIRS_PER_BLOCK", 50)
     blocks = outlines(aidl_lang.compile(source=src + "\n"))      # not the compile cache's
     assert blocks == whole and sum(len(s) for _, s in whole) > 40
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(5, 300), st.lists(st.integers(0, 10 ** 6), min_size=2, max_size=40),
+       st.lists(st.integers(-1, 3), min_size=40, max_size=40), st.integers(0, 2 ** 32 - 1))
+def test_circle_sweeps_are_each_runs_own_sweep_sum(n, cuts, kinds, seed):
+    """The recovery's sweeps of all circle runs at once (exact._circle_sweeps: the runs of one
+    length summed as the rows of one array) are, float for float, each run's own
+    _sweep_sum (the reference), for runs of every length that wrap around the polygon."""
+    import numpy as np
+    from aidl_lang.output import exact
+    P = np.random.default_rng(seed).normal(size=(n, 2)) * 10
+    cuts = sorted({c % n for c in cuts})
+    carriers = [("C", 1.0, 2.0, 3.0), ("L", 0.0, 0.0, 1.0, 0.0), ("C", -4.0, 0.5, 1.0),
+                ("C", 0.0, 0.0, 7.0)]
+    runs = [(kinds[j], c, (cuts[j + 1] if j + 1 < len(cuts) else cuts[0] + n) - 1)
+            for j, c in enumerate(cuts)]
+    got = exact._circle_sweeps(P, runs, carriers)
+    want = {(f, last): exact._sweep_sum(P, carriers[k], f, last) for k, f, last in runs
+            if k >= 0 and carriers[k][0] == "C"}
+    if len(want) < 2:
+        assert got == {}
+    else:
+        assert got == want

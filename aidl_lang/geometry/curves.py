@@ -74,13 +74,23 @@ class Arc:
     def at(self, a: float) -> Point:
         return (self.center[0] + self.radius * math.cos(a), self.center[1] + self.radius * math.sin(a))
 
+    # the ends, computed on first use and kept (an arc is immutable; a gear's thousand arcs
+    # are asked for their ends by the booleans, the recovery and every writer)
     @property
     def start(self) -> Point:
-        return self.at(self.start_angle)
+        d = self.__dict__
+        p = d.get("_start")
+        if p is None:
+            p = d["_start"] = self.at(self.start_angle)
+        return p
 
     @property
     def end(self) -> Point:
-        return self.at(self.end_angle)
+        d = self.__dict__
+        p = d.get("_end")
+        if p is None:
+            p = d["_end"] = self.at(self.start_angle + self.sweep)
+        return p
 
     @property
     def length(self) -> float:
@@ -488,6 +498,10 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
 
 
 def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
+    if type(a) is Arc and type(b) is Arc:     # same_carrier of their circles, inline
+        (ax, ay), (bx, by) = a.center, b.center
+        return (a.sweep > 0) == (b.sweep > 0) and math.hypot(ax - bx, ay - by) <= tol \
+            and abs(a.radius - b.radius) <= tol and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
     if isinstance(a, Spline) and isinstance(b, Spline):
         n = a.curve.n
         return a.curve == b.curve and (a.u1 >= a.u0) == (b.u1 >= b.u0) and \

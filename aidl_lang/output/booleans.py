@@ -133,6 +133,7 @@ class Renderer:
         self.m = model
         self.x = model.xs()
         self._xl = self.x.tolist()          # the same floats, read faster one at a time
+        self._origin: dict = {}             # id(structure) -> its frames' offset (_pt)
         self.deadline = deadline
         budget = deadline.budget if deadline is not None else DEFAULT_BUDGET
         self.exact = Provenance(max_vertices=budget.vertices)
@@ -180,13 +181,16 @@ class Renderer:
         """Point ``p``'s solved position in the root frame (mm): its coordinates plus the
         frame shifts of its structure and their parents, added innermost first."""
         x = self._xl
-        ox, oy = 0.0, 0.0
-        s = p.owner
-        while s is not None:
-            ox += x[s.fx]
-            oy += x[s.fy]
-            s = s.parent
-        return (x[p.ix] + ox, x[p.iy] + oy)
+        o = self._origin.get(id(p.owner))
+        if o is None:                       # the sums of its frames, once per structure
+            ox, oy = 0.0, 0.0
+            s = p.owner
+            while s is not None:
+                ox += x[s.fx]
+                oy += x[s.fy]
+                s = s.parent
+            o = self._origin[id(p.owner)] = (ox, oy)
+        return (x[p.ix] + o[0], x[p.iy] + o[1])
 
     # -------------------------------------------------------- exact outlines
     def spline(self, g: Geometry) -> Spline | None:
@@ -217,16 +221,10 @@ class Renderer:
             return self.spline(g)
         if g.kind == "EllipticArc":
             return self.elliptic_arc(g)
+        pts = g.points
         if g.kind == "Line":
-            return Line(self._pt(g.points["start"]), self._pt(g.points["end"]))
-        c, s, e = (self._pt(g.points[n]) for n in ("center", "start", "end"))
-        r = math.hypot(s[0] - c[0], s[1] - c[1])
-        a1 = math.atan2(s[1] - c[1], s[0] - c[0])
-        a2 = math.atan2(e[1] - c[1], e[0] - c[0])
-        sweep = (a2 - a1) % (2 * math.pi)
-        if sweep < 1e-12:
-            sweep = 2 * math.pi
-        return Arc(c, r, a1, sweep)
+            return Line(self._pt(pts["start"]), self._pt(pts["end"]))
+        return _arc_through(self._pt(pts["center"]), self._pt(pts["start"]), self._pt(pts["end"]))
 
     def elliptic_arc(self, g: Geometry) -> EllipticArc:
         """The exact arc of an ``Ellipse(..., start_angle=, end_angle=)`` at its solved
@@ -556,12 +554,24 @@ class Renderer:
         :func:`_tol` of the chain's end, found through a grid of the curves' ends (cells of
         :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
-        segs = [self.pieces(g) for g in curves]
-        keep = [i for i, sg in enumerate(segs) if sg]
-        curves, segs = [curves[i] for i in keep], [segs[i] for i in keep]
-        ends = [(sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline") else
-                (self._pt(g.points["start"]), self._pt(g.points["end"]))
-                for g, sg in zip(curves, segs)]
+        segs, ends, kept = [], [], []
+        pt = self._pt
+        for g in curves:
+            if g.kind == "Line" or g.kind == "Arc":     # the solved ends are the curve's ends
+                pts = g.points
+                a, b = pt(pts["start"]), pt(pts["end"])
+                segs.append([Line(a, b) if g.kind == "Line" else
+                             _arc_through(pt(pts["center"]), a, b)])
+            else:
+                sg = self.pieces(g)
+                if not sg:
+                    continue
+                segs.append(sg)
+                a, b = (sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline") \
+                    else (pt(g.points["start"]), pt(g.points["end"]))
+            ends.append((a, b))
+            kept.append(g)
+        curves = kept
         grid: dict = {}
         for j, (a, b) in enumerate(ends):
             for p in (a, b):
@@ -850,6 +860,18 @@ def placement_matrix(s: Structure, x) -> np.ndarray:
     to_local = np.eye(4)
     to_local[0, 3], to_local[1, 3] = -ox, -oy
     return M @ to_local
+
+
+def _arc_through(c, s, e) -> Arc:
+    """The arc about ``c`` counter-clockwise from ``s`` (its radius: the distance to ``s``)
+    to the direction of ``e`` (a whole turn when they point the same way)."""
+    r = math.hypot(s[0] - c[0], s[1] - c[1])
+    a1 = math.atan2(s[1] - c[1], s[0] - c[0])
+    a2 = math.atan2(e[1] - c[1], e[0] - c[0])
+    sweep = (a2 - a1) % (2 * math.pi)
+    if sweep < 1e-12:
+        sweep = 2 * math.pi
+    return Arc(c, r, a1, sweep)
 
 
 def _tol(p) -> float:

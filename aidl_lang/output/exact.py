@@ -102,17 +102,20 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
-        if self.max_vertices is not None:         # counted before anything is made
+        # each arc's chords, and the vertices of all (counted before anything is made)
+        chords = [0 if isinstance(s, (Line, Spline, EllipticArc, Circle)) else
+                  segments_for(s.radius, abs(s.sweep)) for s in segs]
+        if self.max_vertices is not None:
             self.vertices += sum(1 if isinstance(s, Line) else
                                  spline_chords(s) if isinstance(s, Spline) else
                                  ellipse_chords(s) if isinstance(s, EllipticArc) else
                                  segments_for(s.radius) if isinstance(s, Circle) else
-                                 max(1, segments_for(s.radius, abs(s.sweep))) for s in segs)
+                                 max(1, c) for s, c in zip(segs, chords))
             if self.vertices > self.max_vertices:
                 raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
                                   "(circles and arcs in chords of 0.005 mm)", "the booleans")
         seg_ids = [self.carrier_id(carrier(s)) for s in segs]
-        for s, k in zip(segs, seg_ids):
+        for s, k, m in zip(segs, seg_ids, chords):
             if isinstance(s, Line):
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
@@ -136,7 +139,7 @@ class Provenance:
                 sg = 1.0 if s.ccw else -1.0
                 t = [sg * 2 * math.pi * i / n for i in range(n)]
             else:
-                n = max(1, segments_for(r, abs(s.sweep)))
+                n = max(1, m)
                 t = [s.start_angle + s.sweep * i / n for i in range(n)]
             xs += [cx + r * math.cos(a) for a in t]
             ys += [cy + r * math.sin(a) for a in t]
@@ -229,7 +232,8 @@ class Provenance:
                     if c[0] == "E" else _sweep_sum(P, c, first, last)
             return sweeps[key]
         explained = all(k >= 0 for k, _, _ in runs)
-        kept, kjoins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx)
+        made: dict = {}                   # the arcs _drop_inverted made (_bad)
+        kept, kjoins = _drop_inverted(runs, joins, P, self.carriers, self, scale, approx, made)
         if len(kept) < 2:
             # the exact curves close on nothing: a sliver the chords made (two curves that
             # touch, cut by their chords), left out; or one closed curve that another one,
@@ -261,7 +265,9 @@ class Provenance:
             elif c[0] == "E":
                 segs.append(_ellipse_run(c[1], a, b, approx(c, first, last)))
             else:
-                segs.append(_arc(c, a, b, approx(c, first, last)))
+                got = made.get((k, first, last))      # the same run between the same ends
+                segs.append(got[2] if got is not None and got[0] == a and got[1] == b else
+                            _arc(c, a, b, approx(c, first, last)))
         return Loop(simplify(segs, scale))
 
     def _whole(self, P, k: int) -> Loop:
@@ -571,17 +577,21 @@ def _circle_sweeps(P, runs, carriers) -> dict:
     if len(sel) < 2:
         return {}
     n = len(P)
-    counts = [l - f + 2 for _, f, l in sel]            # vertices first..last + 1 of each run
-    idx = np.concatenate([np.arange(f, l + 2) for _, f, l in sel]) % n
+    first = np.array([f for _, f, _ in sel], dtype=np.int64)
+    counts = np.array([l for _, _, l in sel], dtype=np.int64) - first + 2   # vertices
+    at = np.cumsum(counts) - counts                    # where each run's vertices begin
+    idx = (np.arange(int(counts.sum())) + np.repeat(first - at, counts)) % n
     X = P[idx, 0] - np.repeat([carriers[k][1] for k, _, _ in sel], counts)
     Y = P[idx, 1] - np.repeat([carriers[k][2] for k, _, _ in sel], counts)
     # the angle of each edge about its run's center (those across two runs are not read)
     a = np.arctan2(X[:-1] * Y[1:] - Y[:-1] * X[1:], X[:-1] * X[1:] + Y[:-1] * Y[1:])
-    out, o = {}, 0
-    for (_, f, l), m in zip(sel, counts):
-        out[(f, l)] = float(a[o:o + m - 1].sum())
-        o += m
-    return out
+    # each run's m - 1 angles summed: the runs of one length as the rows of one array (a
+    # row's sum is the same pairwise sum as the slice's, bit for bit)
+    sums = np.empty(len(sel))
+    for m in sorted(set(counts.tolist())):
+        rows = np.flatnonzero(counts == m)
+        sums[rows] = a[at[rows, None] + np.arange(m - 1)].sum(axis=1)
+    return {(f, l): v for (_, f, l), v in zip(sel, sums.tolist())}
 
 
 def _arc(c, a, b, approx: float) -> Arc:
@@ -610,9 +620,11 @@ def _ellipse_run(e, a, b, approx: float) -> EllipticArc:
     return EllipticArc(e, t1, sw)
 
 
-def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
+def _bad(k, a, b, P, first, last, carriers, tol, approx=None, made=None) -> bool:
     """True when run ``k`` from exact point ``a`` to ``b`` is shorter than ``tol`` or runs
-    against its polygon edges (an overlap the chords could not show)."""
+    against its polygon edges (an overlap the chords could not show).  ``made``: a dict where
+    the arc of a run on a circle is kept, ``{(k, first, last): (a, b, arc)}``, so that the loop
+    built from the runs kept takes it rather than making it again."""
     n = len(P)
     if k < 0:
         return False
@@ -631,13 +643,15 @@ def _bad(k, a, b, P, first, last, carriers, tol, approx=None) -> bool:
         return math.hypot(dx, dy) <= tol or dx * ex[0] + dy * ex[1] <= 0
     sw = approx(c, first, last) if approx is not None else _sweep_sum(P, c, first, last)
     arc = _arc(c, a, b, sw)
+    if made is not None:
+        made[(k, first, last)] = (a, b, arc)
     return abs(arc.sweep) * c[3] <= tol or arc.sweep * sw <= 0
 
 
-def _drop_inverted(runs, joins, P, carriers, prov, scale, approx=None):
+def _drop_inverted(runs, joins, P, carriers, prov, scale, approx=None, made=None):
     """Drop the runs :func:`_bad` finds, joining their neighbours (one run when they are on
     one carrier, else at the neighbours' own intersection); ``([], [])`` when fewer than
-    two runs would be left."""
+    two runs would be left.  ``made``: see :func:`_bad`."""
     tol = tolerance(scale)
     n = len(P)
     changed = True
@@ -646,7 +660,8 @@ def _drop_inverted(runs, joins, P, carriers, prov, scale, approx=None):
         m = len(runs)
         for j in range(m):
             k, first, last = runs[j]
-            if not _bad(k, joins[j], joins[(j + 1) % m], P, first, last, carriers, tol, approx):
+            if not _bad(k, joins[j], joins[(j + 1) % m], P, first, last, carriers, tol, approx,
+                        made):
                 continue
             if m <= 2:
                 return [], []

@@ -24,6 +24,7 @@ import numpy as np
 
 SMALL_BOXES = 64
 SMALL_VERTS = 4000
+BAND_PER_ITEM = 16      # candidates per vertex and segment above which the grid finds them
 
 
 def _median(a) -> float:
@@ -184,7 +185,12 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
 
 def _band_pairs(V, A, B, dist):
     """Candidate (segment, vertex) pairs: the vertices within ``dist`` of each segment's box
-    (y by binary search in the vertices sorted by y, then x)."""
+    (y by binary search in the vertices sorted by y, then x), by segment, then by the
+    vertices' order in y.  When the bands hold more than :data:`BAND_PER_ITEM` vertices per
+    vertex and segment (a round part: each band crosses it from side to side; a gear's
+    2,500 vertices, 170,000 candidates), the pairs are found in :func:`_grid_pairs`'s grid
+    instead (the same pairs: both keep the vertices inside the grown box, edges included)
+    and put in this order, so that every result is the same."""
     order = np.argsort(V[:, 1], kind="stable")
     ys = V[order, 1]
     lo = np.searchsorted(ys, np.minimum(A[:, 1], B[:, 1]) - dist, side="left")
@@ -193,6 +199,12 @@ def _band_pairs(V, A, B, dist):
     total = int(cnt.sum())
     if not total:
         return np.zeros(0, np.intp), np.zeros(0, np.intp)
+    if total > BAND_PER_ITEM * (len(V) + len(A)):
+        s, v = _grid_pairs(V, A, B, dist)
+        rank = np.empty(len(V), dtype=np.intp)
+        rank[order] = np.arange(len(V))
+        k = np.lexsort((rank[v], s))
+        return s[k], v[k]
     s = np.repeat(np.arange(len(A)), cnt)
     start = np.cumsum(cnt) - cnt
     v = order[lo[s] + (np.arange(total) - start[s])]

@@ -115,16 +115,17 @@ class Solver:
         self.pinned_rows: dict[int, int] = {}   # id(constraint) -> its rows dropped so
         if self.pins:
             pin_values(built, self.pins, self.x)
-            dropped = set()
-            owner = model.param_owner
+            owner, cons = model.param_owner, built.constraint
+            by, per_row = self.pinned_by, self.pinned_rows
             for v, r in self.pins:
-                self.free[v] = False
-                dropped.add(r)
                 k = id(owner[v])
-                self.pinned_by[k] = self.pinned_by.get(k, 0) + 1
-                k = id(built.constraint[r])
-                self.pinned_rows[k] = self.pinned_rows.get(k, 0) + 1
-            built = built.subset([r for r in range(len(built.exprs)) if r not in dropped])
+                by[k] = by.get(k, 0) + 1
+                k = id(cons[r])
+                per_row[k] = per_row.get(k, 0) + 1
+            self.free[[v for v, _ in self.pins]] = False
+            keep = np.ones(len(built.exprs), dtype=bool)
+            keep[[r for _, r in self.pins]] = False
+            built = built.subset(np.flatnonzero(keep).tolist())
         self.rows: Rows = built
         self.scale[self.is_frame] = FRAME_SCALE
         self.slack = np.asarray(self.rows.slack, dtype=np.int64)
@@ -133,13 +134,14 @@ class Solver:
         self.own: dict[int, list[int]] = {}
         self.frame: dict[int, list[int]] = {}
         root = model.root
+        free, frame = self.free.tolist(), self.is_frame.tolist()
         for i, owner in enumerate(model.param_owner):
-            if not self.free[i]:
+            if not free[i]:
                 continue
             owner = owner or root
             if owner is None:
                 continue
-            (self.frame if self.is_frame[i] else self.own).setdefault(id(owner), []).append(i)
+            (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
         self._tapes: dict[bytes, Tape] = {}
         self._rows_of: dict[tuple, np.ndarray] = {}
         self.failed: set[int] = set()          # ids of constraints given up on

@@ -138,6 +138,7 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
     var_rows: dict[int, list[int]] = {}
     seeds: set = set()                     # unknowns that cannot be pinned, nor their component
     other: list[int] = []                  # nonlinear rows, inequalities: walked only if needed
+    left = [0] * len(exprs)                # a candidate's unknowns not yet pinned
     for r, e in enumerate(exprs):
         if kind[r] != EQ or type(e) is not Lin:
             other.append(r)
@@ -146,28 +147,24 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
         if not terms:
             continue
         o = cons[r].owner
-        good = o is not None
-        if good:
+        if o is not None:
             for i in terms:
                 if home[i] is not o:
-                    good = False
                     break
-        if not good:
-            seeds.update(i for i in terms if i < n)
-            continue
-        cand.append(r)
-        for i in terms:
-            vr = var_rows.get(i)
-            if vr is None:
-                var_rows[i] = [r]
-            else:
-                vr.append(r)
+            else:                          # every unknown of the row is of its structure
+                cand.append(r)
+                left[r] = len(terms)
+                for i in terms:
+                    vr = var_rows.get(i)
+                    if vr is None:
+                        var_rows[i] = [r]
+                    else:
+                        vr.append(r)
+                continue
+        seeds.update(i for i in terms if i < n)
     if not cand:
         return []
     # propagation: a row with one unknown not yet pinned pins it
-    left = [0] * len(exprs)
-    for r in cand:
-        left[r] = len(exprs[r].terms)
     pin_of: dict[int, int] = {}            # parameter -> the row that pins it
     order: list[tuple[int, int]] = []
     todo = [r for r in cand if left[r] == 1]
@@ -239,11 +236,13 @@ def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
     xl = x.tolist()            # Python floats: the same arithmetic without NumPy scalars
     for v, r in pins:
         e = exprs[r]
+        terms = e.terms
         s = e.const
-        for i, c in e.terms.items():
-            if i != v:
-                s += c * xl[i]
-        xl[v] = -s / e.terms[v]
+        if len(terms) > 1:                 # (a Fixed row has its own unknown only)
+            for i, c in terms.items():
+                if i != v:
+                    s += c * xl[i]
+        xl[v] = -s / terms[v]
     vs = [v for v, _ in pins]
     x[vs] = [xl[v] for v in vs]
 
