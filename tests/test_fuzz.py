@@ -110,6 +110,9 @@ PRELUDE = ("a = 1; b = 2 mm; c = 30 deg; n = 3; w = 5; pts = [(0, 0), (10, 0), (
            "k = Rectangle(center=(20, 0), width=8, height=4)")
 
 
+# The strategy builders are cached: `programs` calls them on every draw, and a fresh strategy
+# tree is re-derived by hypothesis each time (49 s of the module's 63 s for the same 150
+# examples; 4.5 s with one tree).
 @functools.cache
 def exprs(depth=3):
     leaf = st.one_of(
