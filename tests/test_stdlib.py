@@ -140,7 +140,9 @@ def test_gear_teeth_tip_root_and_pitch_circle(pair_90_12, which, z, phase):
     # the involute: every flank arc lies within 0.001 mm of the true involute of its flank
     rb = rp * math.cos(alpha)
     half = math.pi / (2 * z) + inv(alpha)
-    axes = [phase + 2 * math.pi * k / z for k in range(z)]
+    # the tooth axes are phase + 2 pi k / z: the angle to the nearest flank of any tooth is
+    # the remainder modulo the pitch angle 2 pi / z (min over the z axes, without the loop)
+    pitch = 2 * math.pi / z
     worst = 0.0
     for s in segs:
         if s[0] != "A" or math.dist(s[1], c) < 1e-9:
@@ -151,8 +153,8 @@ def test_gear_teeth_tip_root_and_pitch_circle(pair_90_12, which, z, phase):
                 continue
             theta = math.atan2(p[1] - c[1], p[0] - c[0])
             iv = inv(math.acos(rb / rho))
-            d = min(abs(math.remainder(theta + sgn * iv - (a + sgn * half), 2 * math.pi))
-                    for a in axes for sgn in (1, -1))
+            d = min(abs(math.remainder(theta + sgn * iv - (phase + sgn * half), pitch))
+                    for sgn in (1, -1))
             worst = max(worst, rb * d)       # normal distance to the involute
     assert worst < 1e-3
     assert worst > 1e-7                      # arcs, not the involute itself: the check can fail

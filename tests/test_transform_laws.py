@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 import os
 
+import numpy as np
 import pytest
 import shapely
 from hypothesis import HealthCheck, example, given, settings
@@ -127,6 +128,10 @@ def _bez(b, t):
                  + t * t * t * b[3][i] for i in range(2))
 
 
+_COS = np.cos(2 * np.pi * np.arange(CIRCLE_N) / CIRCLE_N)      # a circle's CIRCLE_N points
+_SIN = np.sin(2 * np.pi * np.arange(CIRCLE_N) / CIRCLE_N)      # from angle 0, counter-clockwise
+
+
 def _ring(loop) -> list:
     """A fine tessellation of an exact loop, the same for a loop and its moved image."""
     pts = []
@@ -139,9 +144,8 @@ def _ring(loop) -> list:
         elif isinstance(seg, Circle):
             sense = 1 if seg.ccw else -1
             cx, cy = seg.center
-            pts += [(cx + seg.radius * math.cos(sense * 2 * math.pi * i / CIRCLE_N),
-                     cy + seg.radius * math.sin(sense * 2 * math.pi * i / CIRCLE_N))
-                    for i in range(CIRCLE_N)]
+            pts += zip((cx + seg.radius * _COS).tolist(),
+                       (cy + seg.radius * sense * _SIN).tolist())
         elif isinstance(seg, EllipticArc):
             # equal steps of the parameter from the start: a motion or reflection maps an
             # ellipse's axes to the image's, so a whole ellipse's points map to the image's
@@ -175,10 +179,11 @@ def _region(loops, m=None):
             c = lp.segments[0]
             ctr = c.center if m is None else affinity.affine_transform(Point(c.center), m).coords[0]
             ring = _ring(type(lp)([Circle(tuple(ctr), c.radius, c.ccw)]))
-            poly = Polygon(ring)
+            poly = Polygon(np.asarray(ring))      # an array: shapely reads it without a loop
         else:
             ring = _ring(lp)
-            poly = Polygon(ring) if m is None else affinity.affine_transform(Polygon(ring), m)
+            poly = Polygon(np.asarray(ring))
+            poly = poly if m is None else affinity.affine_transform(poly, m)
         a = _signed(ring)
         signs.append(round(a, 6))
         (outer if a > 0 else holes).append(poly)
