@@ -76,21 +76,13 @@ class Arc:
 
     # the ends, computed on first use and kept (an arc is immutable; a gear's thousand arcs
     # are asked for their ends by the booleans, the recovery and every writer)
-    @property
+    @cached_property
     def start(self) -> Point:
-        d = self.__dict__
-        p = d.get("_start")
-        if p is None:
-            p = d["_start"] = self.at(self.start_angle)
-        return p
+        return self.at(self.start_angle)
 
-    @property
+    @cached_property
     def end(self) -> Point:
-        d = self.__dict__
-        p = d.get("_end")
-        if p is None:
-            p = d["_end"] = self.at(self.start_angle + self.sweep)
-        return p
+        return self.at(self.start_angle + self.sweep)
 
     @property
     def length(self) -> float:
