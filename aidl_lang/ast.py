@@ -331,10 +331,7 @@ class KindAssign(Assign):
 
     def __init__(self, span: Span, name: str, name_span: Span, value: Node, kind: str,
                  kind_span: Span):
-        self.span = span
-        self.name = name
-        self.name_span = name_span
-        self.value = value
+        super().__init__(span, name, name_span, value)
         self.kind = kind
         self.kind_span = kind_span
 

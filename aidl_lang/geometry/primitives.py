@@ -463,6 +463,18 @@ def _elliptic_arc(ctx, g, a, rx: float, ry: float) -> None:
     g.closed = False
 
 
+def _point_list(ctx, g, pts_in: list, a: dict) -> list:
+    """The points of a Polygon, Polyline, Spline or Bezier: each of ``pts_in`` a point of
+    ``g`` named ``p0``, ``p1``, ... (in ``g.data["order"]``), a literal shape held
+    (:func:`_hold_literal_shape`); returns them."""
+    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
+    for i, p in enumerate(pts):
+        g.points[f"p{i}"] = p
+    _hold_literal_shape(ctx, g, pts_in, pts, a)
+    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    return pts
+
+
 def _hold_literal_shape(ctx, g, given: list, pts: list, a: dict) -> None:
     """A shape written as literal coordinates keeps its shape: when every point was given as
     a value known before solving (numbers, params; no point of other geometry) and
@@ -485,11 +497,7 @@ def _build_Polygon(ctx, g, a):
     if len(pts_in) < 3:
         raise PrimitiveError(f"a Polygon needs at least 3 points, got {len(pts_in)}")
     _check_polygon_points(ctx, pts_in)
-    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
-    for i, p in enumerate(pts):
-        g.points[f"p{i}"] = p
-    _hold_literal_shape(ctx, g, pts_in, pts, a)
-    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    pts = _point_list(ctx, g, pts_in, a)
     g.data["edges"] = _polygon_edges(ctx, g, pts)
     g.closed = True
 
@@ -512,11 +520,7 @@ def _build_Polyline(ctx, g, a):
                 raise PrimitiveError(f"a Polyline's points[{i}] and points[{i + 1}] are the "
                                      f"same point ({x0:g}, {y0:g}): a segment of zero "
                                      f"length; remove one of them")
-    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
-    for i, p in enumerate(pts):
-        g.points[f"p{i}"] = p
-    _hold_literal_shape(ctx, g, pts_in, pts, a)
-    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    pts = _point_list(ctx, g, pts_in, a)
     g.data["closed"] = False
     g.data["edges"] = _polygon_edges(ctx, g, pts)[:-1]
     g.closed = False
@@ -532,11 +536,7 @@ def _build_Spline(ctx, g, a):
                      closed)
     except SplineError as ex:
         raise PrimitiveError(str(ex)) from None
-    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(pts_in)]
-    for i, p in enumerate(pts):
-        g.points[f"p{i}"] = p
-    _hold_literal_shape(ctx, g, pts_in, pts, a)
-    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    pts = _point_list(ctx, g, pts_in, a)
     g.data["closed"] = closed
     g.data["corners"] = _spline_corners(ctx, a.get("corners"), len(pts), closed)
     g.closed = closed
@@ -573,11 +573,7 @@ def _build_Bezier(ctx, g, a):
                     f"a Bezier's segment {i // 3} (points[{i}] to points[{i + 3}]) is one "
                     f"point ({xy[i][0]:g}, {xy[i][1]:g}): remove it")
     keep = pts_in[:-1] if closed else pts_in
-    pts = [ctx.point(p, f"points[{i}]") for i, p in enumerate(keep)]
-    for i, p in enumerate(pts):
-        g.points[f"p{i}"] = p
-    _hold_literal_shape(ctx, g, keep, pts, a)
-    g.data["order"] = [f"p{i}" for i in range(len(pts))]
+    pts = _point_list(ctx, g, keep, a)
     g.data["closed"] = closed
     g.data["bezier"] = True
     g.closed = closed
