@@ -555,21 +555,14 @@ class Renderer:
         :data:`END_CELL` mm, at least any tolerance up to the model extent): O(n) for n
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
         segs, ends, kept = [], [], []
-        pt = self._pt
         for g in curves:
-            if g.kind == "Line" or g.kind == "Arc":     # the solved ends are the curve's ends
-                pts = g.points
-                a, b = pt(pts["start"]), pt(pts["end"])
-                segs.append([Line(a, b) if g.kind == "Line" else
-                             _arc_through(pt(pts["center"]), a, b)])
-            else:
-                sg = self.pieces(g)
-                if not sg:
-                    continue
-                segs.append(sg)
-                a, b = (sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline") \
-                    else (pt(g.points["start"]), pt(g.points["end"]))
-            ends.append((a, b))
+            sg = self.pieces(g)
+            if not sg:
+                continue
+            segs.append(sg)
+            # a Line's or an Arc's ends: its solved points (an arc's own ends are cos/sin of them)
+            ends.append((sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline")
+                        else (self._pt(g.points["start"]), self._pt(g.points["end"])))
             kept.append(g)
         curves = kept
         grid: dict = {}
