@@ -293,3 +293,25 @@ def test_an_arc_ends_offset_row_is_the_operators_row(i, j, d):
     if i == j:
         j = i + 1
     assert _key(_offset(i, j, d)) == _key(var(i) - var(j) - d)
+
+
+small = st.floats(min_value=-1e3, max_value=1e3, allow_nan=False)
+small_lins = st.builds(lambda t, c: Lin(dict(t), c),
+                       st.lists(st.tuples(st.integers(0, 6), small), max_size=3), small)
+terms = st.one_of(small, small_lins,
+                  st.builds(lambda a, b: Nl("mul", (a, b)), small_lins, small_lins))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(small, terms), min_size=1, max_size=5), small,
+       st.lists(small, min_size=7, max_size=7))
+def test_combine_is_the_sum_of_its_products(pairs, c, x):
+    """``combine`` (a copy's point as one affine combination) is ``c + sum(k * e)``: one Lin
+    when every term is affine or a number, else the plain sum, each constant counted once."""
+    from aidl_lang.geometry.expr import combine, evaluate
+    got = combine(pairs, c)
+    want = c + sum(k * evaluate(e, x) for k, e in pairs)
+    assert abs(evaluate(got, x) - want) <= 1e-9 * max(1.0, sum(
+        abs(k) * (abs(evaluate(e, x)) + 1.0) for k, e in pairs) + abs(c))
+    if all(not isinstance(e, Nl) for _, e in pairs):
+        assert isinstance(got, Lin)

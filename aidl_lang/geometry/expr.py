@@ -142,15 +142,15 @@ def combine(pairs, c: float = 0.0) -> Expr:
     """``sum(k * e for k, e in pairs) + c`` (``k`` floats, ``e`` expressions or numbers): one
     :class:`Lin` built in one pass when every ``e`` is affine (a copy's point is the affine
     image of the original's, several thousand in a patterned gear), else the sum of products."""
+    if any(type(e) is not Lin and isinstance(e, Expr) for _, e in pairs):
+        out = lift(c)
+        for k, e in pairs:
+            out = add(out, mul(k, e))
+        return out
     terms: dict = {}
     get = terms.get
     for k, e in pairs:
-        if type(e) is not Lin:
-            if isinstance(e, Expr):
-                out = lift(c)
-                for k2, e2 in pairs:
-                    out = add(out, mul(k2, e2))
-                return out
+        if type(e) is not Lin:                  # a number
             c += k * float(e)
             continue
         for i, v in e.terms.items():
