@@ -315,3 +315,25 @@ def test_combine_is_the_sum_of_its_products(pairs, c, x):
         abs(k) * (abs(evaluate(e, x)) + 1.0) for k, e in pairs) + abs(c))
     if all(not isinstance(e, Nl) for _, e in pairs):
         assert isinstance(got, Lin)
+
+
+frame_lins = st.builds(lambda t: Lin(dict(t), 0.0),          # a point in a frame: no constant
+                       st.lists(st.tuples(st.integers(0, 6), small), min_size=1, max_size=3))
+
+
+@settings(max_examples=200, deadline=None)
+@given(frame_lins, frame_lins, small_lins, small_lins, st.floats(-7.0, 7.0))
+def test_a_rotated_copys_point_is_the_four_term_combination(px, py, cx, cy, th):
+    """``CircularPattern``'s transform makes ``(I - R) c`` once per copy (when no unknown is
+    in both of the center's coordinates): each point is then the very Lin of the four-term
+    ``combine``, terms in order and floats by bits, so the pinned values do not change."""
+    import math
+    from aidl_lang.geometry.expr import combine
+    from aidl_lang.geometry.operations import _rotate
+    from aidl_lang.geometry.values import PV
+    xf, rot, flip = _rotate(PV(cx, cy), th)
+    cs, sn = math.cos(th), math.sin(th)
+    X, Y = xf(px, py)
+    assert _key(X) == _key(combine(((cs, px), (-sn, py), (1.0 - cs, cx), (sn, cy))))
+    assert _key(Y) == _key(combine(((sn, px), (cs, py), (-sn, cx), (1.0 - cs, cy))))
+    assert (rot, flip) == (th, False)

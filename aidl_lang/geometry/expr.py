@@ -142,21 +142,23 @@ def combine(pairs, c: float = 0.0) -> Expr:
     """``sum(k * e for k, e in pairs) + c`` (``k`` floats, ``e`` expressions or numbers): one
     :class:`Lin` built in one pass when every ``e`` is affine (a copy's point is the affine
     image of the original's, several thousand in a patterned gear), else the sum of products."""
-    if any(type(e) is not Lin and isinstance(e, Expr) for _, e in pairs):
-        out = lift(c)
-        for k, e in pairs:
-            out = add(out, mul(k, e))
-        return out
     terms: dict = {}
     get = terms.get
+    s = c
     for k, e in pairs:
-        if type(e) is not Lin:                  # a number
-            c += k * float(e)
-            continue
-        for i, v in e.terms.items():
-            terms[i] = get(i, 0.0) + k * v
-        c += k * e.const
-    return _lin(terms, c)
+        t = type(e)
+        if t is Lin:
+            for i, v in e.terms.items():
+                terms[i] = get(i, 0.0) + k * v
+            s += k * e.const
+        elif t is Nl or isinstance(e, Expr):      # a nonlinear term: the sum of products
+            out = lift(c)
+            for k2, e2 in pairs:
+                out = add(out, mul(k2, e2))
+            return out
+        else:                                     # a number
+            s += k * float(e)
+    return _lin(terms, s)
 
 
 def sub(a: Expr, b) -> Expr:

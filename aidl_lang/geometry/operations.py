@@ -29,7 +29,7 @@ import math
 
 from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
-from .expr import combine, var
+from .expr import Lin, combine, var
 from .model import Constraint, Equation, Geometry, Point, Structure, equation
 from .values import PV, GeomRef, Q, StructRef, type_name
 
@@ -50,8 +50,16 @@ def _translate(dx, dy):
 def _rotate(c: PV, th: float):
     cs, sn = math.cos(th), math.sin(th)
     # c + R (p - c), written as R p + (I - R) c: one affine combination per coordinate
-    return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0 - cs, c.x), (sn, c.y))),
-                          combine(((sn, x), (cs, y), (-sn, c.x), (1.0 - cs, c.y))))), th, False
+    cx, cy = c.x, c.y
+    if type(cx) is Lin and type(cy) is Lin and not cx.terms.keys() & cy.terms.keys():
+        # (I - R) c is the same for every point: made once, with the same floating-point
+        # operations per term (no unknown is in both of c's coordinates)
+        kx = combine(((1.0 - cs, cx), (sn, cy)))
+        ky = combine(((-sn, cx), (1.0 - cs, cy)))
+        return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0, kx))),
+                              combine(((sn, x), (cs, y), (1.0, ky))))), th, False
+    return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0 - cs, cx), (sn, cy))),
+                          combine(((sn, x), (cs, y), (-sn, cx), (1.0 - cs, cy))))), th, False
 
 
 def _reflect(a: PV, b: PV):
