@@ -518,7 +518,7 @@ def test_the_redundancy_search_peels_independent_rows_and_finds_the_same(seed, m
     monkeypatch.setattr(D, "dependencies", counted)
     peeled = D.redundancies(solver)
     peeled_sizes, sizes[:] = list(sizes), []
-    monkeypatch.setattr(D, "_peeled_rows", lambda J: np.zeros(J.shape[0], dtype=bool))
+    monkeypatch.setattr(D, "_peeled_rows", lambda J, lab=None: np.zeros(J.shape[0], dtype=bool))
     whole = D.redundancies(solver)
     assert _said(peeled) == _said(whole) and len(peeled) >= 10
     assert sum(peeled_sizes) < sum(sizes) / 2          # most rows never decomposed
@@ -661,3 +661,27 @@ def test_sliding_by_sparse_columns_finds_what_the_dense_jacobian_finds(extra, mo
     assert names(sparse.placement) == names(dense.placement)
     assert sparse.constrained == dense.constrained and sparse.bounded == dense.bounded
     assert bool(extra) != bool(dense.features)      # the gauge slides until the extra row
+
+
+_peel_entry = st.one_of(st.just(0.0), st.floats(-3, 3), st.sampled_from([1e-13, 5e-12, 1e-9, 1e6]))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(st.integers(1, 5), st.integers(1, 5)), min_size=1, max_size=5),
+       st.data())
+def test_peeling_every_block_at_once_is_peeling_each_block(blocks, data):
+    """The redundancy search peels the rows of every block in one pass (``lab``: each row's
+    block); that is the peel of each block on its own, each entry counted as zero against
+    its own block's largest (blocks of 1e6 beside blocks of 1e-9), rows taken in any order."""
+    import scipy.sparse as sp
+    parts, lab = [], []
+    for k, (m, n) in enumerate(blocks):
+        vals = data.draw(st.lists(_peel_entry, min_size=m * n, max_size=m * n))
+        parts.append(np.array(vals).reshape(m, n))
+        lab += [k] * m
+    lab = np.array(lab)
+    J = sp.block_diag(parts, format="csr")
+    order = np.array(data.draw(st.permutations(range(J.shape[0]))))
+    together = D._peeled_rows(J[order], lab[order])[np.argsort(order)]
+    alone = np.concatenate([D._peeled_rows(sp.csr_matrix(P)) for P in parts])
+    assert (together == alone).all()

@@ -672,16 +672,22 @@ def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
     return whole.jacobian(x, cols, dense=whole.n_rows * len(cols) <= DENSE_CELLS), cols
 
 
+def _row_entries(W, rows) -> tuple[np.ndarray, np.ndarray]:
+    """The stored entries of rows ``rows`` of the CSR ``W``: each one's position in
+    ``W.data``/``W.indices``, and the index in ``rows`` of its row."""
+    rows = np.asarray(rows, dtype=np.int64)
+    starts, counts = W.indptr[rows], W.indptr[rows + 1] - W.indptr[rows]
+    at = np.repeat(starts - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
+    return at, np.repeat(np.arange(len(rows)), counts)
+
+
 def _dense_cut(W, wcols: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
     """Rows ``rows`` and columns ``cols`` (parameters, increasing, all in ``wcols``) of the
     Jacobian ``W`` (dense, or CSR over the parameters ``wcols``) as a dense array, read
     straight from the compressed rows (SciPy's indexing costs ~0.5 ms a call)."""
     if isinstance(W, np.ndarray):
         return W[rows][:, np.searchsorted(wcols, cols)]
-    rows = np.asarray(rows, dtype=np.int64)
-    starts, counts = W.indptr[rows], W.indptr[rows + 1] - W.indptr[rows]
-    at = np.repeat(starts - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
-    row = np.repeat(np.arange(len(rows)), counts)
+    at, row = _row_entries(W, rows)
     param = wcols[W.indices[at]]
     col = np.minimum(np.searchsorted(cols, param), max(len(cols) - 1, 0))
     mine = cols[col] == param if len(cols) else np.zeros(len(param), dtype=bool)
@@ -729,7 +735,7 @@ def _peel(J):
     return sp.csr_matrix(J[np.flatnonzero(~peeled)]), int(peeled.sum())
 
 
-def _peeled_rows(J) -> np.ndarray:
+def _peeled_rows(J, lab: np.ndarray | None = None) -> np.ndarray:
     """Per row of the sparse ``J``, whether it is independent of all the other rows by
     structure alone: a row holding the only non-zero of some column (a pattern copy's
     ``x_k - x_0 - k dx``, a point that only one constraint places, the last link of a
@@ -737,10 +743,21 @@ def _peeled_rows(J) -> np.ndarray:
     that column), so ``rank(J) = 1 + rank(J without it)``; peeling repeats while such
     columns appear, in O(non-zeros).  A chain of 2 500 ``Distance``s peels to nothing.  A
     pivot must be more than ``1e-9`` of its row's largest entry (entries below ``1e-12``
-    of the matrix's largest count as zero); a smaller one is left to the dense rank."""
+    of the matrix's largest count as zero); a smaller one is left to the dense rank.
+
+    ``lab``: a component label per row (rows of different components share no column): the
+    rows of every component are peeled at once, each entry compared with its own
+    component's largest, as if each component were peeled on its own."""
     import scipy.sparse as sp
     J = sp.csr_matrix(J, copy=True)
-    J.data[np.abs(J.data) <= 1e-12 * max(1.0, float(np.abs(J.data).max(initial=0.0)))] = 0.0
+    size = np.abs(J.data)
+    if lab is None:
+        J.data[size <= 1e-12 * max(1.0, float(size.max(initial=0.0)))] = 0.0
+    else:
+        of = lab[np.repeat(np.arange(J.shape[0]), np.diff(J.indptr))]
+        largest = np.zeros(int(lab.max(initial=-1)) + 1)
+        np.maximum.at(largest, of, size)
+        J.data[size <= 1e-12 * np.maximum(1.0, largest[of])] = 0.0
     J.eliminate_zeros()
     C = J.tocsc()
     n_rows, n_cols = J.shape
@@ -842,6 +859,12 @@ def redundancies(solver, deadline: float | None = None,
         norms = np.sqrt(np.asarray(J.multiply(J).sum(axis=1)).ravel())
     cons = [solver.rows.constraint[r] for r in rows]
     live = norms > 0.0                      # a row with no unknown left: held values only
+    if not dense:
+        # rows independent of all others by structure take no part in any dependency (a
+        # chain of 2 500 Distances peels to nothing): peeled once, every block at a time
+        peeled = np.zeros(len(rows), dtype=bool)
+        peeled[live] = _peeled_rows(J[live], lab[live])
+        position = np.arange(J.shape[1])        # J's columns are positions in ``cols``
     by_c: dict[int, list[int]] = {}
     for i, c in enumerate(cons):
         by_c.setdefault(id(c), []).append(i)
@@ -865,17 +888,15 @@ def redundancies(solver, deadline: float | None = None,
             Jd = Jd[:, np.any(Jd != 0, axis=0)]
             core = np.arange(len(local))
         else:
-            # rows independent of all others by structure take no part in any dependency
-            # (a chain of 2 500 Distances peels to nothing): only the rest is decomposed
-            Js = J[local]
-            core = np.flatnonzero(~_peeled_rows(Js))
+            core = np.flatnonzero(~peeled[local])     # only these are decomposed
             Jd = None
+            block = unique(J.indices[_row_entries(J, local)[0]])    # the block's columns
         if len(core) > min(max_rows, MAX_DENSE):
             unknown.update(id(cons[i]) for i in local)
             continue
         null = []
         if len(core):
-            Jk = Jd[core] if Jd is not None else Js[core].toarray()
+            Jk = Jd[core] if Jd is not None else _dense_cut(J, position, local[core], block)
             Jk = Jk[:, np.any(Jk != 0, axis=0)]
             order = sorted(range(len(core)),
                            key=lambda i: _order_key(lc[core[i]], int(rows[local[core[i]]])))
@@ -884,11 +905,8 @@ def redundancies(solver, deadline: float | None = None,
         if deadline is not None and time.monotonic() > deadline:
             unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
             continue
-        if Jd is None:
-            Js = Js[:, unique(Js.indices)]          # the block's columns
-
         def dense_rows(ii: list[int]) -> np.ndarray:
-            return Jd[ii] if Jd is not None else Js[ii].toarray()
+            return Jd[ii] if Jd is not None else _dense_cut(J, position, local[ii], block)
         mine: dict[int, list[int]] = {}
         for i, c in enumerate(lc):
             mine.setdefault(id(c), []).append(i)
