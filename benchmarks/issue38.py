@@ -32,6 +32,9 @@ The figures (issue 38):
   every tree since 75922ec reads;
 * ``holes900`` / ``holes5000``: :func:`check_drawing` of a plate with N hole structures on a
   6 mm grid (``benchmarks/checks_scaling.py``), CPU in one process after the compile;
+* ``diagnose1000``: in one process after the compile of the 1,000 plates, the CPU of the
+  first freedom count (``degrees_of_freedom(floating=False)``, as ``aidl check`` makes it),
+  the redundancy search without a time bound and the sliding analysis; one line per round;
 * ``flood``: ``aidl check`` of 3,000 calls of an unknown function (3,000 E0103): CPU and the
   number of lines printed;
 * ``nest``: ``aidl render --layout sheet`` of ``examples/laser_box.aidl`` to SVG.
@@ -124,6 +127,23 @@ else:
         return v
     move()
     out["server_ms"] = 1000 * cpu(move)[0]
+print(json.dumps(out))
+"""
+
+DIAGNOSE = r"""
+import json, sys, time
+from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.pipeline import compile_source
+import scipy.sparse                      # imported by the check anyway: not counted below
+c = compile_source(open(sys.argv[1]).read(), "s1000.aidl", budget=DEFAULT_BUDGET.scaled(100))
+assert c.ok, [d.message for d in c.sink.items]
+from aidl_lang.solver import diagnose as D
+def cpu(fn):
+    t = time.process_time(); fn(); return 1000 * (time.process_time() - t)
+out = {"dof_ms": cpu(lambda: D.degrees_of_freedom(c.solve.solver, floating=False))}
+out["redundancy_ms"] = cpu(lambda: D.redundancies(c.solve.solver))
+if hasattr(D, "sliding"):
+    out["sliding_ms"] = cpu(lambda: D.sliding(c.solve.solver))
 print(json.dumps(out))
 """
 
@@ -278,6 +298,16 @@ def main() -> None:
             cold(f"structures{n}", lambda t: t.aidl("check", "--budget", "100", f"{tmp}/s{n}.aidl"),
                  last)
             a.rounds, a.no_callgrind = a_rounds, nc
+    if want("diagnose1000"):
+        for _ in range(a.rounds):
+            for t, tag in ((new, "new"), (old, "old")):
+                r = run([t.python, "-c", DIAGNOSE, f"{tmp}/s1000.aidl"], t.env, tmp)
+                try:
+                    note = ", ".join(f"{k[:-3]} {v:.0f} ms" for k, v in
+                                     json.loads(r["out"].strip().splitlines()[-1]).items())
+                except (ValueError, IndexError):
+                    note = r["out"].strip()[-70:]
+                print(row.format("diagnose1000", tag, "", "", "", "", note), flush=True)
     if want("flood"):
         nc, a.no_callgrind = a.no_callgrind, True
         cold("flood", lambda t: t.aidl("check", f"{tmp}/flood.aidl"),
