@@ -305,21 +305,45 @@ def _row_sets(draw):
 def test_the_array_peel_pins_what_the_dict_walk_pins(case, xs):
     """Law: on random affine row sets the array peel pins exactly the (parameter, row)
     pairs of the dict walk, in a valid order (each row reads only parameters pinned at a
-    lower level), and :func:`pin_values` gives the walk's floats bit for bit."""
-    from aidl_lang.solver.system import pin_values
-    rows, free, is_frame, owner = case
+    lower level), and :func:`pin_values` gives the walk's floats bit for bit; whether a
+    level is peeled and valued in array operations or in Python (``SMALL_LEVEL``)."""
+    _check_peel(*case, xs)
+
+
+def test_the_peel_from_a_python_level_into_an_array_level():
+    """A level peeled in Python can leave a row with no unknown in the next level's list
+    (two of its unknowns pinned in that level): the array level must skip it.  Rows
+    ``a``, ``b``, ``a + b`` (dependent: it spoils the component), ``a + c``, ``b + d``."""
+    from aidl_lang.geometry.expr import Lin
+    from aidl_lang.solver.system import Rows
+    s = object()
+    rows = Rows(n_model=4, n_params=4)
+    for terms in ({0: 1.0}, {1: 1.0}, {0: 1.0, 1: 1.0}, {0: 1.0, 2: 1.0}, {1: 1.0, 3: 1.0},
+                  {}):
+        rows.add(_Owner(s), Lin(terms, 1.0))
+    _check_peel(rows, np.ones(4, dtype=bool), np.zeros(4, dtype=bool), [s] * 4, [2.0] * 4)
+
+
+def _check_peel(rows, free, is_frame, owner, xs):
+    from aidl_lang.solver import system
     free_all = np.concatenate([free, np.ones(rows.n_params - len(free), dtype=bool)])
     frame_all = np.concatenate([is_frame, np.zeros(rows.n_params - len(free), dtype=bool)])
-    got = pinned(rows, free_all, frame_all, owner)
     want = _reference_pinned(rows, free_all, frame_all, owner)
-    assert sorted(got) == sorted(want)
-    level = dict(zip(got.var.tolist(), got.level.tolist()))
-    assert list(got.level) == sorted(got.level)
-    for (v, r), lv, en in zip(got, got.level.tolist(), got.entry.tolist()):
-        assert got.cols[en] == v and got.indptr[r] <= en < got.indptr[r + 1]
-        assert all(level.get(i, 0) < lv for i in rows.exprs[r].terms if i != v)
-    x = np.asarray(xs[:rows.n_params], dtype=float)
-    x = np.concatenate([x, np.zeros(rows.n_params - len(x))])
-    want_x = _reference_values(rows, want, x)
-    pin_values(rows, got, x)
-    assert x.tobytes() == want_x.tobytes()
+    x0 = np.asarray(xs[:rows.n_params], dtype=float)
+    x0 = np.concatenate([x0, np.zeros(rows.n_params - len(x0))])
+    want_x = _reference_values(rows, want, x0)
+    small = system.SMALL_LEVEL
+    try:
+        for system.SMALL_LEVEL in (0, 2, 3, small):
+            got = pinned(rows, free_all, frame_all, owner)
+            assert sorted(got) == sorted(want)
+            level = dict(zip(got.var.tolist(), got.level.tolist()))
+            assert list(got.level) == sorted(got.level)
+            for (v, r), lv, en in zip(got, got.level.tolist(), got.entry.tolist()):
+                assert got.cols[en] == v and got.indptr[r] <= en < got.indptr[r + 1]
+                assert all(level.get(i, 0) < lv for i in rows.exprs[r].terms if i != v)
+            x = x0.copy()
+            system.pin_values(rows, got, x)
+            assert x.tobytes() == want_x.tobytes()
+    finally:
+        system.SMALL_LEVEL = small

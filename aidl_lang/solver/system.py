@@ -110,6 +110,7 @@ def _build_rows(model: Model, x: np.ndarray) -> Rows:
 
 
 PIVOT = 1e-6      # a pinning row's coefficient on the unknown it pins, against its largest
+SMALL_LEVEL = 16  # a level of fewer pins is done in Python (a NumPy level costs ~20 calls)
 
 
 @dataclass(eq=False)
@@ -214,31 +215,18 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
     front = np.flatnonzero(left == 1)
     level = 0
     while len(front):
-        level += 1
-        ent = unpinned[front]              # the one unknown left: its term
-        ok = pivot_ok[ent]
-        if not ok.all():
-            seed[cols[ent[~ok]]] = True
-            front, ent = front[ok], ent[ok]
-            if not len(front):
-                break
-        v, first = np.unique(cols[ent], return_index=True)   # two rows pinning one unknown:
-        front, ent = front[first], ent[first]                # one is left unused (it spoils)
-        left[front] = -1
+        if len(front) < SMALL_LEVEL:
+            v, rs, ent, lv, front, level = _levels_small(front, level, cols, erow, by_col,
+                                                         colptr, pivot_ok, left, unpinned, seed)
+        else:
+            level += 1
+            v, rs, ent, front = _level(front, cols, erow, by_col, colptr, pivot_ok, left,
+                                       unpinned, seed)
+            lv = np.full(len(v), level, dtype=np.int64)
         out_var.append(v)
-        out_row.append(front)
+        out_row.append(rs)
         out_entry.append(ent)
-        out_level.append(np.full(len(v), level, dtype=np.int64))
-        # every candidate row reading a pinned unknown has one unknown fewer
-        start, count = colptr[v], colptr[v + 1] - colptr[v]
-        ends = np.cumsum(count)
-        reads = by_col[np.repeat(start - ends + count, count) + np.arange(ends[-1])]
-        rr = erow[reads]
-        live = left[rr] > 0
-        reads, rr = reads[live], rr[live]
-        np.subtract.at(left, rr, 1)
-        np.subtract.at(unpinned, rr, reads)
-        front = np.unique(rr[left[rr] == 1])
+        out_level.append(lv)
     if not out_var:
         return pinned_none()
     var, row = np.concatenate(out_var), np.concatenate(out_row)
@@ -291,22 +279,103 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
     return Pins(var, row, entry, lev, indptr, cols, vals)
 
 
+def _level(front, cols, erow, by_col, colptr, pivot_ok, left, unpinned, seed):
+    """One level of :func:`pinned`'s peel in array operations: the rows ``front`` (one
+    unknown left each, ``left``) pin their unknowns; ``(unknowns, rows, terms, next
+    front)``.  Of two rows left with one unknown, the first pins it; the other is left
+    with none, unused (it spoils its component)."""
+    front = front[left[front] == 1]
+    ent = unpinned[front]                  # the one unknown left: its term
+    ok = pivot_ok[ent]
+    if not ok.all():
+        seed[cols[ent[~ok]]] = True
+        front, ent = front[ok], ent[ok]
+    v, first = np.unique(cols[ent], return_index=True)
+    front, ent = front[first], ent[first]
+    left[front] = -1
+    # every candidate row reading a pinned unknown has one unknown fewer
+    start, count = colptr[v], colptr[v + 1] - colptr[v]
+    ends = np.cumsum(count)
+    reads = by_col[np.repeat(start - ends + count, count) + np.arange(ends[-1] if len(v) else 0)]
+    rr = erow[reads]
+    live = left[rr] > 0
+    reads, rr = reads[live], rr[live]
+    np.subtract.at(left, rr, 1)
+    np.subtract.at(unpinned, rr, reads)
+    return v, front, ent, np.unique(rr[left[rr] == 1])
+
+
+def _levels_small(front, level, cols, erow, by_col, colptr, pivot_ok, left, unpinned, seed):
+    """:func:`_level` one row at a time in Python, level after level while the levels stay
+    small (a chain of offsets is a level per row); ``(unknowns, rows, terms, levels, next
+    front, last level)``."""
+    vs: list = []
+    rows: list = []
+    ents: list = []
+    levels: list = []
+    front = front.tolist()
+    cols, erow, by_col, colptr = cols.tolist(), erow.tolist(), by_col.tolist(), colptr.tolist()
+    left_a, unpinned_a = left, unpinned
+    left, unpinned, pivot_ok = left.tolist(), unpinned.tolist(), pivot_ok.tolist()
+    while front and len(front) < SMALL_LEVEL:
+        level += 1
+        nxt = []
+        for r in front:
+            if left[r] != 1:               # a second row left with the same unknown
+                continue
+            e = unpinned[r]
+            v = cols[e]
+            if not pivot_ok[e]:
+                seed[v] = True
+                continue
+            left[r] = -1
+            vs.append(v)
+            rows.append(r)
+            ents.append(e)
+            levels.append(level)
+            for e2 in by_col[colptr[v]:colptr[v + 1]]:
+                r2 = erow[e2]
+                if left[r2] > 0:
+                    left[r2] -= 1
+                    unpinned[r2] -= e2
+                    if left[r2] == 1:
+                        nxt.append(r2)
+        front = nxt
+    left_a[:] = left
+    unpinned_a[:] = unpinned
+    as_array = lambda a: np.asarray(a, dtype=np.int64)
+    return (as_array(vs), as_array(rows), as_array(ents), as_array(levels), as_array(front),
+            level)
+
+
 def pin_values(rows: Rows, pins: Pins, x: np.ndarray) -> None:
     """Set each pinned parameter of :func:`pinned`'s ``pins`` so that its row holds
-    (``x_v = -(const + sum of the row's other terms) / coef_v``), a level at a time; each
-    row's sum is taken in its terms' order, the same floats as that sum in Python."""
+    (``x_v = -(const + sum of the row's other terms) / coef_v``), a level at a time (a
+    small level in Python); each row's sum is taken in its terms' order, so the floats are
+    those of the sum written out in Python."""
     if not len(pins):
         return
     exprs = rows.exprs
-    var, ent, lev, indptr, cols, vals = (pins.var, pins.entry, pins.level, pins.indptr,
-                                         pins.cols, pins.vals)
-    row = pins.row
+    var, row, ent, lev, indptr, cols, vals = (pins.var, pins.row, pins.entry, pins.level,
+                                              pins.indptr, pins.cols, pins.vals)
     const = np.fromiter((exprs[r].const for r in row.tolist()), dtype=np.float64,
                         count=len(row))
     coef = vals[ent]
     start, stop = indptr[row], indptr[row + 1]
-    cuts = np.flatnonzero(np.diff(lev)) + 1
-    for a, b in zip([0, *cuts.tolist()], [*cuts.tolist(), len(lev)]):
+    cuts = (np.flatnonzero(np.diff(lev)) + 1).tolist()
+    lists = None
+    for a, b in zip([0, *cuts], [*cuts, len(lev)]):
+        if b - a < SMALL_LEVEL:
+            if lists is None:
+                lists = [arr.tolist() for arr in (const, ent, start, stop, vals, cols, var, coef)]
+            cn, en, st, sp, vl, cl, vr, cf = lists
+            for k in range(a, b):
+                s, e_k = cn[k], en[k]
+                for e in range(st[k], sp[k]):
+                    if e != e_k:
+                        s += vl[e] * x.item(cl[e])
+                x[vr[k]] = -s / cf[k]
+            continue
         s = const[a:b]
         st, sp, en = start[a:b], stop[a:b], ent[a:b]
         for j in range(int((sp - st).max())):
