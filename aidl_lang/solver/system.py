@@ -260,21 +260,19 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
     # spoil the whole component of every seed (through the candidate rows)
     stack = np.flatnonzero(seed & (colptr[1:] > colptr[:-1])).tolist()
     if stack:
-        spoilt = seed.tolist()
-        cp, bc, rl = colptr.tolist(), erow[by_col].tolist(), indptr.tolist()
-        cl = cols.tolist()
-        done_rows = [False] * m
+        spoilt = seed
+        done_rows = np.zeros(m, dtype=bool)
         while stack:
             v = stack.pop()
-            for r in bc[cp[v]:cp[v + 1]]:
+            for r in erow[by_col[colptr.item(v):colptr.item(v + 1)]].tolist():
                 if done_rows[r]:
                     continue
                 done_rows[r] = True
-                for u in cl[rl[r]:rl[r + 1]]:
+                for u in cols[indptr.item(r):indptr.item(r + 1)].tolist():
                     if not spoilt[u]:
                         spoilt[u] = True
                         stack.append(u)
-        keep = ~np.asarray(spoilt, dtype=bool)[var]
+        keep = ~spoilt[var]
         var, row, entry, lev = var[keep], row[keep], entry[keep], lev[keep]
     return Pins(var, row, entry, lev, indptr, cols, vals)
 
