@@ -300,7 +300,7 @@ def _row_sets(draw):
     return rows, free, is_frame, owner
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(_row_sets(), st.lists(st.floats(-1e3, 1e3), min_size=40, max_size=40))
 def test_the_array_peel_pins_what_the_dict_walk_pins(case, xs):
     """Law: on random affine row sets the array peel pins exactly the (parameter, row)
