@@ -118,9 +118,10 @@ class Pins:
     """What :func:`pinned` found: ``var[k]`` (a parameter index) is pinned by row ``row[k]``,
     through that row's term at ``entry[k]`` (an index into ``cols``/``vals``).  ``level[k]``
     (non-decreasing) orders them: a row of level ``L`` reads constants and parameters pinned
-    at levels below ``L`` only.  ``indptr``, ``cols``, ``vals`` are every row's affine terms in
-    compressed sparse rows (row ``r``'s terms at ``indptr[r]:indptr[r + 1]``, in its
-    ``terms`` dict's order).  Iterating gives the ``(parameter, row)`` pairs in order."""
+    at levels below ``L`` only.  ``indptr``, ``cols``, ``vals`` are the terms of every row
+    that is an affine equation (other rows have none) in compressed sparse rows: row ``r``'s
+    parameters and coefficients at ``indptr[r]:indptr[r + 1]``, in its ``terms`` dict's
+    order.  Iterating gives the ``(parameter, row)`` pairs in order."""
 
     var: np.ndarray
     row: np.ndarray
