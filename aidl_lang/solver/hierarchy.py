@@ -34,7 +34,7 @@ from ..geometry.model import Model, Structure
 from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
-from .system import LINK, SIGN, Rows, build_rows, pin_values, pinned
+from .system import LINK, SIGN, Rows, build_rows, pin_values, pinned, pinned_none
 from .reduce import reduce
 from .small import SMALL_ROWS, small_tape
 from .tape import Tape
@@ -110,21 +110,18 @@ class Solver:
         self.rows_built = built            # every row, pinning rows included (warm reuse)
         with gc_paused():          # thousands of small records: no cyclic collections
             self.pins = pinned(built, self.free, self.is_frame, model.param_owner) \
-                if self.pinning else []
+                if self.pinning else pinned_none()
         self.pinned_by: dict[int, int] = {}     # id(structure) -> its pinned parameters
         self.pinned_rows: dict[int, int] = {}   # id(constraint) -> its rows dropped so
         if self.pins:
-            pin_values(built, self.pins, self.x)
-            owner, cons = model.param_owner, built.constraint
-            by, per_row = self.pinned_by, self.pinned_rows
-            for v, r in self.pins:
-                k = id(owner[v])
-                by[k] = by.get(k, 0) + 1
-                k = id(cons[r])
-                per_row[k] = per_row.get(k, 0) + 1
-            self.free[[v for v, _ in self.pins]] = False
+            pins = self.pins
+            pin_values(built, pins, self.x)
+            self.pinned_by = _count(map(id, model.param_owner), len(model.param_owner),
+                                    pins.var)
+            self.pinned_rows = _count(map(id, built.constraint), len(built.exprs), pins.row)
+            self.free[pins.var] = False
             keep = np.ones(len(built.exprs), dtype=bool)
-            keep[[r for _, r in self.pins]] = False
+            keep[pins.row] = False
             built = built.subset(np.flatnonzero(keep).tolist())
         self.rows: Rows = built
         self.scale[self.is_frame] = FRAME_SCALE
@@ -134,11 +131,9 @@ class Solver:
         self.own: dict[int, list[int]] = {}
         self.frame: dict[int, list[int]] = {}
         root = model.root
-        free, frame = self.free.tolist(), self.is_frame.tolist()
-        for i, owner in enumerate(model.param_owner):
-            if not free[i]:
-                continue
-            owner = owner or root
+        frame, owners = self.is_frame.tolist(), model.param_owner
+        for i in np.flatnonzero(self.free[:len(owners)]).tolist():
+            owner = owners[i] or root
             if owner is None:
                 continue
             (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
@@ -560,6 +555,13 @@ class Solver:
             if abs(v) > CHECK_TOL:
                 self.failed.add(id(self.rows.constraint[r]))
         return False
+
+
+def _count(ids, n: int, which: np.ndarray) -> dict[int, int]:
+    """How many of ``which`` (indices into the ``n`` ids ``ids``) have each id."""
+    keys, counts = np.unique(np.fromiter(ids, dtype=np.int64, count=n)[which],
+                             return_counts=True)
+    return dict(zip(keys.tolist(), counts.tolist()))
 
 
 def _independent(t: Tape, rows: np.ndarray, cols: np.ndarray, blocks: list) -> bool:

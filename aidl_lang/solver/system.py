@@ -16,6 +16,7 @@ Parameters: the model's ``x`` (``n_model`` entries) followed by one slack per in
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import chain
 
 import numpy as np
 
@@ -109,12 +110,48 @@ def _build_rows(model: Model, x: np.ndarray) -> Rows:
 
 
 PIVOT = 1e-6      # a pinning row's coefficient on the unknown it pins, against its largest
+SMALL_LEVEL = 16  # a level of fewer pins is done in Python (a NumPy level costs ~20 calls)
 
 
-def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
-    """The unknowns fixed in their structure's frame by affine rows alone, and those rows:
-    ``[(parameter, row)]`` in an order where each row pins its parameter from constants and
-    parameters pinned before it (issue 38: rigid geometry adds no unknowns).
+@dataclass(eq=False)
+class Pins:
+    """What :func:`pinned` found: ``var[k]`` (a parameter index) is pinned by row ``row[k]``,
+    through that row's term at ``entry[k]`` (an index into ``cols``/``vals``).  ``level[k]``
+    (non-decreasing) orders them: a row of level ``L`` reads constants and parameters pinned
+    at levels below ``L`` only.  ``indptr``, ``cols``, ``vals`` are the terms of every row
+    that is an affine equation (other rows have none) in compressed sparse rows: row ``r``'s
+    parameters and coefficients at ``indptr[r]:indptr[r + 1]``, in its ``terms`` dict's
+    order.  Iterating gives the ``(parameter, row)`` pairs in order."""
+
+    var: np.ndarray
+    row: np.ndarray
+    entry: np.ndarray
+    level: np.ndarray
+    indptr: np.ndarray
+    cols: np.ndarray
+    vals: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.var)
+
+    def __iter__(self):
+        return zip(self.var.tolist(), self.row.tolist())
+
+
+_NO_TERMS: dict = {}
+
+
+def pinned_none() -> Pins:
+    """No pins (what :func:`pinned` finds in a model without pinned geometry)."""
+    z = np.zeros(0, dtype=np.int64)
+    return Pins(z, z, z, z, np.zeros(1, dtype=np.int64), z, np.zeros(0))
+
+
+def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
+    """The unknowns fixed in their structure's frame by affine rows alone, and those rows
+    (:class:`Pins`: ``(parameter, row)`` pairs in an order where each row pins its parameter
+    from constants and parameters pinned before it; issue 38: rigid geometry adds no
+    unknowns).
 
     A set is taken only as a whole connected component of the rows' unknowns: every row of
     it is an affine equation (``Fixed``, a constructor's offsets such as an ``Arc``'s ends
@@ -122,129 +159,231 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> list[tuple[int, int]]:
     no frame (a frame stays an unknown: the geometry moves with it), all its unknowns and
     rows belong to one structure, no other row (nonlinear, inequality, box) reads its
     unknowns, and the rows pin the unknowns one at a time, each row pinning one unknown with
-    a coefficient of at least :data:`PIVOT` times its largest.  Its Jacobian is then
+    a nonzero coefficient of at least :data:`PIVOT` times its largest.  Its Jacobian is then
     square, triangular and invertible, and no other row touches its columns: taking the
     unknowns out as held values and dropping the rows leaves every other unknown's solve,
     the rank deficiency (degrees of freedom), the redundancy of every other constraint and
     every conflict as they were (``docs/solver.md`` §1).  ``spur_gear``'s teeth (each arc's
-    center ``Fixed``, its ends offsets from it) are such components: the gear pair's 6,658
-    unknowns go down to a few dozen."""
-    exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
-    n = rows.n_model
-    ok_var = (np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool)).tolist()
-    # each parameter's structure when it may be pinned, else None (held, a frame, a slack)
-    home = [o if ok else None for o, ok in zip(owner, ok_var)] + [None] * (rows.n_params - n)
-    cand: list[int] = []                   # rows that may pin
-    var_rows: dict[int, list[int]] = {}
-    seeds: set = set()                     # unknowns that cannot be pinned, nor their component
-    other: list[int] = []                  # nonlinear rows, inequalities: walked only if needed
-    left = [0] * len(exprs)                # a candidate's unknowns not yet pinned
-    for r, e in enumerate(exprs):
-        if kind[r] != EQ or type(e) is not Lin:
-            other.append(r)
-            continue
-        terms = e.terms
-        if not terms:
-            continue
-        o = cons[r].owner
-        if o is not None:
-            for i in terms:
-                if home[i] is not o:
-                    break
-            else:                          # every unknown of the row is of its structure
-                cand.append(r)
-                left[r] = len(terms)
-                for i in terms:
-                    vr = var_rows.get(i)
-                    if vr is None:
-                        var_rows[i] = [r]
-                    else:
-                        vr.append(r)
-                continue
-        seeds.update(i for i in terms if i < n)
-    if not cand:
-        return []
-    # propagation: a row with one unknown not yet pinned pins it
-    pin_of: dict[int, int] = {}            # parameter -> the row that pins it
-    order: list[tuple[int, int]] = []
-    todo = [r for r in cand if left[r] == 1]
-    while todo:
-        r = todo.pop()
-        if left[r] != 1:
-            continue
-        terms = exprs[r].terms
-        for v in terms:
-            if v not in pin_of:
-                break
-        c = abs(terms[v])
-        if len(terms) > 1 and not c >= PIVOT * max(map(abs, terms.values())):
-            seeds.add(v)
-            continue
-        left[r] = -1                       # used
-        pin_of[v] = r
-        order.append((v, r))
-        for r2 in var_rows[v]:
-            if r2 != r and left[r2] > 0:
-                left[r2] -= 1
-                if left[r2] == 1:
-                    todo.append(r2)
-    if not order:
-        return []
+    center ``Fixed``, its ends offsets from it, the pattern's copies affine in those) are
+    such components: the gear pair's 6,658 unknowns go down to a few dozen.
+
+    The rows' terms are taken once into arrays (compressed sparse rows and columns); the
+    pinning peels them a level at a time: every candidate row with one unknown left pins it,
+    all of a level in one array operation, and each pinned unknown takes one off the count
+    of every row reading it (a row's last unknown is read off the sum of its unpinned
+    terms' positions).  A triangular component's pinning is unique (each row pins the one
+    unknown left to it in any order), so the pairs do not depend on the order of the peel."""
+    exprs, kind = rows.exprs, rows.kind
+    n, n_all, m = rows.n_model, rows.n_params, len(exprs)
+    # every affine equation's terms (other rows: none), as compressed sparse rows
+    aff = [e.terms if k == EQ and type(e) is Lin else _NO_TERMS for e, k in zip(exprs, kind)]
+    lens = np.fromiter(map(len, aff), dtype=np.int64, count=m)
+    nnz = int(lens.sum())
+    cols = np.fromiter(chain.from_iterable(aff), dtype=np.int64, count=nnz)
+    vals = np.fromiter(chain.from_iterable(map(dict.values, aff)), dtype=np.float64, count=nnz)
+    indptr = np.zeros(m + 1, dtype=np.int64)
+    np.cumsum(lens, out=indptr[1:])
+    erow = np.repeat(np.arange(m, dtype=np.int64), lens)        # each term's row
+    # each parameter's structure (its id) when it may be pinned, else 0 (held, a frame, a
+    # slack); each row's structure
+    home = np.zeros(n_all, dtype=np.int64)
+    home[:len(owner)] = np.fromiter(map(id, owner), dtype=np.int64, count=len(owner))
+    home[:n][~(np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool))] = 0
+    row_home = np.zeros(m, dtype=np.int64)
+    for k, rs in rows.by_owner.items():
+        row_home[rs] = k
+    # a candidate: an affine equation of a structure all of whose unknowns are of it
+    foreign = np.bincount(erow[home[cols] != row_home[erow]], minlength=m)
+    cand = (lens > 0) & (foreign == 0) & (row_home != id(None))
+    if not cand.any():
+        return pinned_none()
+    ecand = cand[erow]
+    seed = np.zeros(n_all, dtype=bool)     # unknowns that cannot be pinned, nor their component
+    seed[cols[~ecand & (cols < n)]] = True
+    absv = np.abs(vals)
+    row_max = np.zeros(m)
+    row_max[lens > 0] = np.maximum.reduceat(absv, indptr[:-1][lens > 0])
+    pivot_ok = (absv > 0) & (absv >= PIVOT * row_max[erow])
+    # the candidates' terms by unknown (compressed sparse columns)
+    ce = np.flatnonzero(ecand)
+    by_col = ce[np.argsort(cols[ce], kind="stable")]
+    colptr = np.zeros(n_all + 1, dtype=np.int64)
+    np.cumsum(np.bincount(cols[ce], minlength=n_all), out=colptr[1:])
+    left = np.where(cand, lens, -2)        # a candidate's unknowns not yet pinned (-1: used)
+    unpinned = np.bincount(erow[ce], weights=ce, minlength=m).astype(np.int64)  # their terms
+    # the peel, a level at a time
+    out_var, out_row, out_entry, out_level = [], [], [], []
+    front = np.flatnonzero(left == 1)
+    level = 0
+    while len(front):
+        if len(front) < SMALL_LEVEL:
+            v, rs, ent, lv, front, level = _levels_small(front, level, cols, erow, by_col,
+                                                         colptr, pivot_ok, left, unpinned, seed)
+        else:
+            level += 1
+            v, rs, ent, front = _level(front, cols, erow, by_col, colptr, pivot_ok, left,
+                                       unpinned, seed)
+            lv = np.full(len(v), level, dtype=np.int64)
+        out_var.append(v)
+        out_row.append(rs)
+        out_entry.append(ent)
+        out_level.append(lv)
+    if not out_var:
+        return pinned_none()
+    var, row = np.concatenate(out_var), np.concatenate(out_row)
+    entry, lev = np.concatenate(out_entry), np.concatenate(out_level)
+    is_pinned = np.zeros(n_all, dtype=bool)
+    is_pinned[var] = True
     # a candidate row left unused (it pins nothing new: a dependent row, or one of a cycle)
     # spoils its component, and so does an unknown not pinned
-    for r in cand:
-        if left[r] >= 0:
-            seeds.update(exprs[r].terms)
+    seed[cols[(left >= 0)[erow]]] = True
     # nor may a nonlinear row, an inequality or a box read a pinned unknown
+    read: list = []
     seen: set = set()
-    for r in other:
+    for r, t in enumerate(aff):
+        if t is not _NO_TERMS:
+            continue
         stack = [exprs[r]]
         while stack:
             e = stack.pop()
             if type(e) is Lin:
-                for i in e.terms:
-                    if i in pin_of:
-                        seeds.add(i)
+                read.extend(e.terms)
                 continue
             if id(e) in seen:
                 continue
             seen.add(id(e))
             if type(e) is not Nl:
-                return []                  # not an expression the solver knows: pin nothing
+                return pinned_none()          # not an expression the solver knows: pin nothing
             stack.extend(a for a in e.args if isinstance(a, Expr))
+    if read:
+        read_a = np.asarray(read, dtype=np.int64)
+        seed[read_a[is_pinned[read_a]]] = True
     # spoil the whole component of every seed (through the candidate rows)
-    spoilt = set(seeds)
-    stack = list(seeds)
-    done_rows: set = set()
-    while stack:
-        v = stack.pop()
-        for r in var_rows.get(v, ()):
-            if r in done_rows:
+    stack = np.flatnonzero(seed & (colptr[1:] > colptr[:-1])).tolist()
+    if stack:
+        spoilt = seed
+        done_rows = np.zeros(m, dtype=bool)
+        while stack:
+            v = stack.pop()
+            for r in erow[by_col[colptr.item(v):colptr.item(v + 1)]].tolist():
+                if done_rows[r]:
+                    continue
+                done_rows[r] = True
+                for u in cols[indptr.item(r):indptr.item(r + 1)].tolist():
+                    if not spoilt[u]:
+                        spoilt[u] = True
+                        stack.append(u)
+        keep = ~spoilt[var]
+        var, row, entry, lev = var[keep], row[keep], entry[keep], lev[keep]
+    return Pins(var, row, entry, lev, indptr, cols, vals)
+
+
+def _level(front, cols, erow, by_col, colptr, pivot_ok, left, unpinned, seed):
+    """One level of :func:`pinned`'s peel in array operations: the rows ``front`` (one
+    unknown left each, ``left``) pin their unknowns; ``(unknowns, rows, terms, next
+    front)``.  Of two rows left with one unknown, the first pins it; the other is left
+    with none, unused (it spoils its component)."""
+    front = front[left[front] == 1]
+    ent = unpinned[front]                  # the one unknown left: its term
+    ok = pivot_ok[ent]
+    if not ok.all():
+        seed[cols[ent[~ok]]] = True
+        front, ent = front[ok], ent[ok]
+    v, first = np.unique(cols[ent], return_index=True)
+    front, ent = front[first], ent[first]
+    left[front] = -1
+    # every candidate row reading a pinned unknown has one unknown fewer
+    start, count = colptr[v], colptr[v + 1] - colptr[v]
+    ends = np.cumsum(count)
+    reads = by_col[np.repeat(start - ends + count, count) + np.arange(ends[-1] if len(v) else 0)]
+    rr = erow[reads]
+    live = left[rr] > 0
+    reads, rr = reads[live], rr[live]
+    np.subtract.at(left, rr, 1)
+    np.subtract.at(unpinned, rr, reads)
+    return v, front, ent, np.unique(rr[left[rr] == 1])
+
+
+def _levels_small(front, level, cols, erow, by_col, colptr, pivot_ok, left, unpinned, seed):
+    """:func:`_level` one row at a time in Python, level after level while the levels stay
+    small (a chain of offsets is a level per row); ``(unknowns, rows, terms, levels, next
+    front, last level)``."""
+    vs: list = []
+    rows: list = []
+    ents: list = []
+    levels: list = []
+    front = front.tolist()
+    cols, erow, by_col, colptr = cols.tolist(), erow.tolist(), by_col.tolist(), colptr.tolist()
+    left_a, unpinned_a = left, unpinned
+    left, unpinned, pivot_ok = left.tolist(), unpinned.tolist(), pivot_ok.tolist()
+    while front and len(front) < SMALL_LEVEL:
+        level += 1
+        nxt = []
+        for r in front:
+            if left[r] != 1:               # a second row left with the same unknown
                 continue
-            done_rows.add(r)
-            for u in exprs[r].terms:
-                if u not in spoilt:
-                    spoilt.add(u)
-                    stack.append(u)
-    return [(v, r) for v, r in order if v not in spoilt]
+            e = unpinned[r]
+            v = cols[e]
+            if not pivot_ok[e]:
+                seed[v] = True
+                continue
+            left[r] = -1
+            vs.append(v)
+            rows.append(r)
+            ents.append(e)
+            levels.append(level)
+            for e2 in by_col[colptr[v]:colptr[v + 1]]:
+                r2 = erow[e2]
+                if left[r2] > 0:
+                    left[r2] -= 1
+                    unpinned[r2] -= e2
+                    if left[r2] == 1:
+                        nxt.append(r2)
+        front = nxt
+    left_a[:] = left
+    unpinned_a[:] = unpinned
+    as_array = lambda a: np.asarray(a, dtype=np.int64)
+    return (as_array(vs), as_array(rows), as_array(ents), as_array(levels), as_array(front),
+            level)
 
 
-def pin_values(rows: Rows, pins: list, x: np.ndarray) -> None:
+def pin_values(rows: Rows, pins: Pins, x: np.ndarray) -> None:
     """Set each pinned parameter of :func:`pinned`'s ``pins`` so that its row holds
-    (``x_v = -(const + sum of the row's other terms) / coef_v``, in ``pins``' order)."""
+    (``x_v = -(const + sum of the row's other terms) / coef_v``), a level at a time (a
+    small level in Python); each row's sum is taken in its terms' order, so the floats are
+    those of the sum written out in Python."""
+    if not len(pins):
+        return
     exprs = rows.exprs
-    xl = x.tolist()            # Python floats: the same arithmetic without NumPy scalars
-    for v, r in pins:
-        e = exprs[r]
-        terms = e.terms
-        s = e.const
-        if len(terms) > 1:                 # (a Fixed row has its own unknown only)
-            for i, c in terms.items():
-                if i != v:
-                    s += c * xl[i]
-        xl[v] = -s / terms[v]
-    vs = [v for v, _ in pins]
-    x[vs] = [xl[v] for v in vs]
+    var, row, ent, lev, indptr, cols, vals = (pins.var, pins.row, pins.entry, pins.level,
+                                              pins.indptr, pins.cols, pins.vals)
+    const = np.fromiter((exprs[r].const for r in row.tolist()), dtype=np.float64,
+                        count=len(row))
+    coef = vals[ent]
+    start, stop = indptr[row], indptr[row + 1]
+    cuts = (np.flatnonzero(np.diff(lev)) + 1).tolist()
+    lists = None
+    for a, b in zip([0, *cuts], [*cuts, len(lev)]):
+        if b - a < SMALL_LEVEL:
+            if lists is None:
+                lists = [arr.tolist() for arr in (const, ent, start, stop, vals, cols, var, coef)]
+            cn, en, st, sp, vl, cl, vr, cf = lists
+            for k in range(a, b):
+                s, e_k = cn[k], en[k]
+                for e in range(st[k], sp[k]):
+                    if e != e_k:
+                        s += vl[e] * x.item(cl[e])
+                x[vr[k]] = -s / cf[k]
+            continue
+        s = const[a:b]
+        st, sp, en = start[a:b], stop[a:b], ent[a:b]
+        for j in range(int((sp - st).max())):
+            k = st + j
+            use = (k < sp) & (k != en)     # the row's j-th term, unless the pinned one
+            if use.any():
+                kk = k[use]
+                s[use] = s[use] + vals[kk] * x[cols[kk]]
+        x[var[a:b]] = -s / coef[a:b]
 
 
 def _non_inversion(rows: Rows, c, target, frame, axes, x, excl, cache) -> None:
