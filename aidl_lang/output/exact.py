@@ -430,7 +430,7 @@ class _Grid:
         chords that hold them within ``tol`` (either way round), among the candidates
         ``lo``/``cnt`` of these edges."""
         qs, cs = [], []
-        for j in range(9):
+        for j in range(len(cnt)):
             c_ = cnt[j]
             tot = int(c_.sum())
             if not tot:
@@ -468,14 +468,16 @@ class _Grid:
         return q[keep], k[keep]
 
     def _cells(self, M) -> tuple[np.ndarray, np.ndarray]:
-        """``(lo, cnt)``, each 9 x len(M): the samples in the cell of point ``M[i]`` and in the
-        eight around it are ``self.chord[lo[j, i]:lo[j, i] + cnt[j, i]]``, j = 0..8."""
-        lo = np.empty((9, len(M)), dtype=np.int64)
-        cnt = np.empty((9, len(M)), dtype=np.int64)
-        for j, (dx, dy) in enumerate((dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
-            qk = self._key(M, dx, dy)
-            lo[j] = np.searchsorted(self.keys, qk, "left")
-            cnt[j] = np.searchsorted(self.keys, qk, "right") - lo[j]
+        """``(lo, cnt)``, each 3 x len(M): the samples in the cell of point ``M[i]`` and in the
+        eight around it are ``self.chord[lo[j, i]:lo[j, i] + cnt[j, i]]``, j = 0..2: one
+        column of three cells each (a cell's key is its column times a number larger than any
+        row's, plus its row, so the three rows of a column are one slice of the sorted
+        keys)."""
+        lo = np.empty((3, len(M)), dtype=np.int64)
+        cnt = np.empty((3, len(M)), dtype=np.int64)
+        for j, dx in enumerate((-1, 0, 1)):
+            lo[j] = np.searchsorted(self.keys, self._key(M, dx, -1), "left")
+            cnt[j] = np.searchsorted(self.keys, self._key(M, dx, 1), "right") - lo[j]
         return lo, cnt
 
     def match(self, P, Q, tol) -> np.ndarray:
@@ -486,8 +488,10 @@ class _Grid:
         M = (P + Q) / 2
         # each query edge's candidate chords: the samples of its midpoint's cell and the eight
         # around it (_cells); first only how many, to refuse before any work is done
-        ends = np.cumsum(np.concatenate([self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
-                                         for b in range(0, n, EDGES_PER_BLOCK)]))
+        one = self._cells(M) if n <= EDGES_PER_BLOCK else None      # one block: kept
+        ends = np.cumsum(one[1].sum(axis=0) if one is not None else np.concatenate(
+            [self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
+             for b in range(0, n, EDGES_PER_BLOCK)]))
         if ends[-1] > MAX_CANDIDATES:
             raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
                               "(thousands of curves drawn on top of each other)",
@@ -500,7 +504,8 @@ class _Grid:
             base = ends[at - 1] if at else 0
             stop = max(at + 1, int(np.searchsorted(ends, base + PAIRS_PER_BLOCK, "right")))
             stop = min(stop, at + EDGES_PER_BLOCK)
-            lo, cnt = self._cells(M[at:stop])
+            lo, cnt = one if one is not None and at == 0 and stop == n else \
+                self._cells(M[at:stop])
             q, k = self._candidates(P, Q, tol, lo, cnt, at)
             qs.append(q)
             ks.append(k)
