@@ -102,20 +102,25 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
-        # each arc's chords, and the vertices of all (counted before anything is made)
-        chords = [0 if isinstance(s, (Line, Spline, EllipticArc, Circle)) else
-                  segments_for(s.radius, abs(s.sweep)) for s in segs]
+        # the vertices of each segment (an arc's chords), all counted before anything is made
+        chords = [1 if isinstance(s, Line) else
+                  spline_chords(s) if isinstance(s, Spline) else
+                  ellipse_chords(s) if isinstance(s, EllipticArc) else
+                  segments_for(s.radius) if isinstance(s, Circle) else
+                  max(1, segments_for(s.radius, abs(s.sweep))) for s in segs]
         if self.max_vertices is not None:
-            self.vertices += sum(1 if isinstance(s, Line) else
-                                 spline_chords(s) if isinstance(s, Spline) else
-                                 ellipse_chords(s) if isinstance(s, EllipticArc) else
-                                 segments_for(s.radius) if isinstance(s, Circle) else
-                                 max(1, c) for s, c in zip(segs, chords))
+            self.vertices += sum(chords)
             if self.vertices > self.max_vertices:
                 raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
                                   "(circles and arcs in chords of 0.005 mm)", "the booleans")
         seg_ids = [self.carrier_id(carrier(s)) for s in segs]
-        for s, k, m in zip(segs, seg_ids, chords):
+        ends = len(segs) > 1              # each segment's exact start, where two meet
+        before = seg_ids[-1] if segs else -1
+        for s, k, n in zip(segs, seg_ids, chords):
+            if ends:
+                x, y = s.start
+                self._ends.append((float(x), float(y), before, k))
+                before = k
             if isinstance(s, Line):
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
@@ -135,12 +140,11 @@ class Provenance:
             cx, cy = s.center
             r = s.radius
             if isinstance(s, Circle):
-                n = segments_for(r)
                 sg = 1.0 if s.ccw else -1.0
                 t = [sg * 2 * math.pi * i / n for i in range(n)]
             else:
-                n = max(1, m)
-                t = [s.start_angle + s.sweep * i / n for i in range(n)]
+                a0, sw = s.start_angle, s.sweep
+                t = [a0 + sw * i / n for i in range(n)]
             xs += [cx + r * math.cos(a) for a in t]
             ys += [cy + r * math.sin(a) for a in t]
             ids += [k] * n
@@ -150,10 +154,6 @@ class Provenance:
         self._a.append(P)
         self._b.append(np.roll(P, -1, axis=0))
         self._c.append(np.asarray(ids, dtype=np.int64))
-        if len(segs) > 1:
-            for i, s in enumerate(segs):
-                x, y = s.start
-                self._ends.append((float(x), float(y), seg_ids[i - 1], seg_ids[i]))
         self._index = None
         return P
 
@@ -221,8 +221,8 @@ class Provenance:
         if runs is None:                    # the whole loop on one carrier
             return self._whole(P, int(cid[0]))
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
-        joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
-                 for j in range(len(runs))]
+        at = P[[r[1] % n for r in runs]].tolist()      # each run's first vertex
+        joins = [self._join(runs[j - 1][0], runs[j][0], at[j], scale) for j in range(len(runs))]
         sweeps: dict = _circle_sweeps(P, runs, self.carriers)
 
         def approx(c, first, last):       # the polygon's sweep of a run, computed once
@@ -418,7 +418,9 @@ class _Grid:
         chord = np.repeat(np.arange(first, stop), n + 1)
         start = np.cumsum(n + 1) - (n + 1)
         t = (np.arange(len(chord)) - np.repeat(start, n + 1)) / np.repeat(n, n + 1)
-        return self._key(A[chord] + D[chord] * t[:, None]), chord
+        # (rows gathered with take: indexing a 2-column array by an index array costs 15
+        # times as much in NumPy 2.4)
+        return self._key(A.take(chord, axis=0) + D.take(chord, axis=0) * t[:, None]), chord
 
     def _key(self, S, dx=0, dy=0):
         ix = np.floor(S[:, 0] / self.cell).astype(np.int64) + dx
@@ -445,12 +447,12 @@ class _Grid:
         pair = np.sort(q * len(self.A) + c)          # np.unique without importing numpy.ma
         pair = pair[np.r_[True, pair[1:] != pair[:-1]]]
         q, c = pair // len(self.A), pair % len(self.A)
-        a, b = self.A[c], self.B[c]
+        a, b = self.A.take(c, axis=0), self.B.take(c, axis=0)      # = A[c], B[c] (faster)
         d = b - a
         L = np.hypot(d[:, 0], d[:, 1])
         ok = L > 0
         u = d / np.where(ok, L, 1.0)[:, None]
-        p, e = P[q] - a, Q[q] - a
+        p, e = P.take(q, axis=0) - a, Q.take(q, axis=0) - a
         dp = np.abs(u[:, 0] * p[:, 1] - u[:, 1] * p[:, 0])
         de = np.abs(u[:, 0] * e[:, 1] - u[:, 1] * e[:, 0])
         tp = u[:, 0] * p[:, 0] + u[:, 1] * p[:, 1]
@@ -544,21 +546,20 @@ def _runs(cid: np.ndarray, carriers: list, scale: float):
     prev = np.roll(cid, 1)
     same[:] = (cid == prev) & (cid >= 0)
     tol = tolerance(scale)
-    for i in np.flatnonzero(~same & (cid >= 0) & (prev >= 0)).tolist():
-        if same_carrier(carriers[int(cid[i])], carriers[int(prev[i])], tol):
+    ask = np.flatnonzero(~same & (cid >= 0) & (prev >= 0))
+    for i, a, b in zip(ask.tolist(), cid[ask].tolist(), prev[ask].tolist()):
+        if same_carrier(carriers[a], carriers[b], tol):
             same[i] = True
-            cid[i] = prev[i]
+            cid[i] = b
     if same.all():
         return None
-    starts = np.flatnonzero(~same)
+    starts = np.flatnonzero(~same).tolist()
     runs = []
-    for j, st in enumerate(starts.tolist()):
-        end = starts[j + 1] if j + 1 < len(starts) else starts[0] + n
-        k = int(cid[st])
+    for st, end, k in zip(starts, starts[1:] + [starts[0] + n], cid[starts].tolist()):
         if k < 0:                              # unexplained edges: one run each
-            runs += [(-1, i, i) for i in range(st, int(end))]
+            runs += [(-1, i, i) for i in range(st, end)]
         else:
-            runs.append((k, st, int(end) - 1))
+            runs.append((k, st, end - 1))
     return runs
 
 
