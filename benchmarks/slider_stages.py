@@ -7,11 +7,11 @@
 A warm process loads ``examples/gear_pair.aidl`` in a :class:`~aidl_lang.serve.session.Session`
 and makes one move (``pinion_teeth`` = 13), then times each stage of that move on its own, in
 the order a move runs them: ``solver`` (the :class:`~aidl_lang.solver.Solver`'s set-up: the
-rows, the pinned geometry and its values; Newton itself is a few ms), ``render`` (the booleans, :func:`render_model`), ``chords`` (the grid of the
-booleans' chords that the exact outlines match the result's edges against, built once per
-move, on the first ``build``), ``build``
+rows, the pinned geometry and its values; Newton itself is a few ms), ``render`` (the booleans, :func:`render_model`), ``chords`` (the grids of the
+booleans' chords and of their segments' exact ends, which the exact outlines match the
+result's edges and vertices against, built once per move, on the first ``build``), ``build``
 (the exact outlines put back on the curves, :func:`aidl_lang.output.part.build`, the chord
-grid already built), ``svg`` (the
+grids already built), ``svg`` (the
 writer on that output), ``check`` (:func:`check_drawing`, what ``update_checks`` runs
 after the picture) and ``topology`` (the rest of ``update_checks``: the drawing's
 :func:`~aidl_lang.output.checks.topology` for W0510).  With ``--callgrind`` each stage also runs three times in a process under
@@ -54,7 +54,8 @@ run(Solver(model))
 drawing = render_model(model)
 out = build(drawing, "drive")
 fn = {"solver": lambda: Solver(model), "render": lambda: render_model(model),
-      "chords": lambda: (setattr(drawing.exact, "_index", None), drawing.exact._chords()),
+      "chords": lambda: (setattr(drawing.exact, "_index", None), drawing.exact._chords(),
+                         setattr(drawing.exact, "_eg", None), drawing.exact._ends_grid()),
       "build": lambda: build(drawing, "drive"), "svg": lambda: to_svg(out, title="drive"),
       "check": lambda: check_drawing(drawing, DiagnosticSink()),
       "topology": lambda: topology(drawing)}[stage]

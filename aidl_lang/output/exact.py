@@ -70,6 +70,7 @@ class Provenance:
         self._b: list = []
         self._c: list = []
         self._ends: list = []         # (x, y, carrier before, carrier after)
+        self._eg = None               # their grid (_ends_grid), with how many it holds
         self._index = None
         self.unmatched = 0
 
@@ -323,13 +324,16 @@ class Provenance:
     def _ends_grid(self):
         if not self._ends:
             return None
-        if getattr(self, "_eg", None) is not None and self._eg[0] == len(self._ends):
+        if self._eg is not None and self._eg[0] == len(self._ends):
             return self._eg[1]
         cell = 1e-3
         grid: dict = {}
         for i, (x, y, _, _) in enumerate(self._ends):
-            for gx in {math.floor((x - SNAP_TOL) / cell), math.floor((x + SNAP_TOL) / cell)}:
-                for gy in {math.floor((y - SNAP_TOL) / cell), math.floor((y + SNAP_TOL) / cell)}:
+            # the cells within SNAP_TOL of the end: one, or two or four near a cell's edge
+            x0, x1 = math.floor((x - SNAP_TOL) / cell), math.floor((x + SNAP_TOL) / cell)
+            y0, y1 = math.floor((y - SNAP_TOL) / cell), math.floor((y + SNAP_TOL) / cell)
+            for gx in (x0,) if x0 == x1 else (x0, x1):
+                for gy in (y0,) if y0 == y1 else (y0, y1):
                     grid.setdefault((gx, gy), []).append(i)
         self._eg = (len(self._ends), (cell, grid, self._ends))
         return self._eg[1]
