@@ -601,8 +601,9 @@ class Renderer:
             used[i] = True
             run = list(segs[i])
             start, end = ends[i]
+            closes = _tol(start)          # how near the start the chain's end closes it
             grown = True
-            while grown and _dist(end, start) > _tol(start):
+            while grown and _dist(end, start) > closes:
                 grown = False
                 tol = _tol(end)
                 for j in near(end, tol):
@@ -620,7 +621,7 @@ class Renderer:
                     chain.append(j)
                     grown = True
                     break
-            closed = _dist(end, start) <= _tol(start)
+            closed = _dist(end, start) <= closes
             if closed and (len(run) >= 2 or isinstance(run[0], (Arc, Spline))):
                 loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:

@@ -153,7 +153,7 @@ class Provenance:
             return np.zeros((0, 2))
         P = np.column_stack([np.asarray(xs, float), np.asarray(ys, float)])
         self._a.append(P)
-        self._b.append(np.roll(P, -1, axis=0))
+        self._b.append(np.concatenate([P[1:], P[:1]]))      # np.roll(P, -1, axis=0)
         self._c.append(np.asarray(ids, dtype=np.int64))
         self._index = None
         return P
@@ -166,12 +166,12 @@ class Provenance:
         P = self.polygon(loop)
         if len(P) < 3:
             return mf.CrossSection()
-        return mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
+        return mf.CrossSection([P], mf.FillRule.NonZero)         # the array as it is
 
     def section(self, loops: list[Loop]) -> mf.CrossSection:
         """A Manifold ``CrossSection`` of exact ``loops`` as :meth:`loops` gives them (outer
         loops counter-clockwise, holes clockwise)."""
-        polys = [P.tolist() for P in (self.polygon(lp) for lp in loops) if len(P) >= 3]
+        polys = [P for P in (self.polygon(lp) for lp in loops) if len(P) >= 3]
         return mf.CrossSection(polys, mf.FillRule.NonZero) if polys else mf.CrossSection()
 
     # ------------------------------------------------------------ back: result polygons
