@@ -1167,8 +1167,8 @@ def test_W0507_equal_lone_holes_are_opened_once_and_thin_walls_still_found(monke
 def test_W0507_a_long_loop_and_its_bore_are_opened_whole(monkeypatch):
     """A ring of one wavy loop of 2,880 vertices (more than TILE_VERTS) with a bore: two
     loops, opened whole (one opening, not one per tile: clipping a loop into tiles costs more
-    than opening it), with the very pieces of the whole opening; a third loop brings the
-    tiles back."""
+    than opening it), with the very pieces of the whole opening; a third loop, or more than
+    WHOLE_VERTS vertices, brings the tiles back."""
     import math
 
     import manifold3d as mf
@@ -1189,4 +1189,8 @@ def test_W0507_a_long_loop_and_its_bore_are_opened_whole(monkeypatch):
     opened.clear()
     three = ring - mf.CrossSection.circle(1.0, 32).translate((20.0, 0.0))
     C._thin(three, t, least=2 * t * t)
+    assert len(opened) > 1
+    opened.clear()                      # above WHOLE_VERTS: in tiles again
+    monkeypatch.setattr(C, "WHOLE_VERTS", ring.num_vert() - 1)
+    C._thin(ring, t, least=2 * t * t)
     assert len(opened) > 1
