@@ -7,10 +7,14 @@
 A warm process loads ``examples/gear_pair.aidl`` in a :class:`~aidl_lang.serve.session.Session`
 and makes one move (``pinion_teeth`` = 13), then times each stage of that move on its own, in
 the order a move runs them: ``solver`` (the :class:`~aidl_lang.solver.Solver`'s set-up: the
-rows, the pinned geometry and its values; Newton itself is a few ms), ``render`` (the booleans, :func:`render_model`), ``build``
-(the exact outlines put back on the curves, :func:`aidl_lang.output.part.build`), ``svg`` (the
-writer on that output) and ``check`` (:func:`check_drawing`, what ``update_checks`` runs
-after the picture).  With ``--callgrind`` each stage also runs three times in a process under
+rows, the pinned geometry and its values; Newton itself is a few ms), ``render`` (the booleans, :func:`render_model`), ``chords`` (the grids of the
+booleans' chords and of their segments' exact ends, which the exact outlines match the
+result's edges and vertices against, built once per move, on the first ``build``), ``build``
+(the exact outlines put back on the curves, :func:`aidl_lang.output.part.build`, the chord
+grids already built), ``svg`` (the
+writer on that output), ``check`` (:func:`check_drawing`, what ``update_checks`` runs
+after the picture) and ``topology`` (the rest of ``update_checks``: the drawing's
+:func:`~aidl_lang.output.checks.topology` for W0510).  With ``--callgrind`` each stage also runs three times in a process under
 ``valgrind --tool=callgrind --instr-atstart=no`` that switches the instrumentation on around
 those runs only (``callgrind_control -i``), so the count is the stage's alone, per run:
 the machine's load does not change it (a minute or more per stage under valgrind).
@@ -25,7 +29,7 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-STAGES = ("solver", "render", "build", "svg", "check")
+STAGES = ("solver", "render", "chords", "build", "svg", "check", "topology")
 
 CHILD = r"""
 import os, subprocess, sys, time
@@ -34,7 +38,7 @@ from aidl_lang.interp import Interpreter
 from aidl_lang.limits import DEFAULT_BUDGET
 from aidl_lang.output import to_svg
 from aidl_lang.output.booleans import render_model
-from aidl_lang.output.checks import check_drawing
+from aidl_lang.output.checks import check_drawing, topology
 from aidl_lang.output.part import build
 from aidl_lang.serve.session import Session
 from aidl_lang.solver import Solver, run
@@ -50,8 +54,11 @@ run(Solver(model))
 drawing = render_model(model)
 out = build(drawing, "drive")
 fn = {"solver": lambda: Solver(model), "render": lambda: render_model(model),
+      "chords": lambda: (setattr(drawing.exact, "_index", None), drawing.exact._chords(),
+                         setattr(drawing.exact, "_eg", None), drawing.exact._ends_grid()),
       "build": lambda: build(drawing, "drive"), "svg": lambda: to_svg(out, title="drive"),
-      "check": lambda: check_drawing(drawing, DiagnosticSink())}[stage]
+      "check": lambda: check_drawing(drawing, DiagnosticSink()),
+      "topology": lambda: topology(drawing)}[stage]
 fn()
 if mode == "cpu":
     best = min((lambda t: (fn(), time.process_time() - t)[1])(time.process_time())

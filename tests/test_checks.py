@@ -611,6 +611,38 @@ def test_band_pairs_through_the_grid_are_the_bands_own(n, dist, cx, r):
     assert s1.tolist() == s2.tolist() and v1.tolist() == v2.tolist()
 
 
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(-40, 40), st.floats(-40, 40), st.floats(0.5, 20),
+                          st.integers(3, 60)), min_size=1, max_size=5),
+       st.floats(0.05, 4))
+def test_close_pairs_of_features_apart_are_those_of_all_vertices(loops, dist):
+    """Only the vertices inside the box of the other features' (grown) segments, and the
+    segments that reach the box of the other features' vertices, are searched (a bore far
+    inside a gear: nothing of the gear's outline); the arrays are the very ones all of them
+    give, pair for pair and in the same order."""
+    import numpy as np
+    from aidl_lang.output import nearby
+    polys, feats = [], []
+    for k, (cx, cy, r, n) in enumerate(loops):
+        t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+        polys.append(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
+        feats.append(np.full(n, k))
+    V, f = np.concatenate(polys), np.concatenate(feats)
+    B = np.concatenate([np.roll(p, -1, axis=0) for p in polys])
+    got = nearby.close_pairs(V, f, V, B, f, dist)
+    real = nearby._within_others
+    try:
+        nearby._within_others = lambda V, vf, lo, hi, sf: (np.arange(len(V)), np.arange(len(lo)))
+        want = nearby.close_pairs(V, f, V, B, f, dist)
+    finally:
+        nearby._within_others = real
+    for a, b in zip(got, want):
+        assert a.tolist() == b.tolist()
+    vk, sk = real(V, f, np.minimum(V, B) - dist, np.maximum(V, B) + dist, f)
+    if len(loops) == 1:
+        assert len(vk) == len(sk) == 0           # one feature: nothing to search
+
+
 def _seg_dist(p, a, b) -> float:
     import numpy as np
     ab, ap = b - a, p - a
@@ -715,7 +747,7 @@ def test_W0507_opening_in_tiles_is_the_whole_opening(holes, t, tile):
     c = compile_source(src, "tiles.aidl", min_wall=0)
     shape = c.drawing.parts[0].shape
     whole = shape - C._open(shape, t)
-    tiled = C._thin(shape, t, tile=tile, least=2 * t * t)
+    tiled = C._thin(shape, t, tile=tile, least=2 * t * t, whole_loops=0)
     assert sum(p.area() for p in tiled) == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
     assert sum((whole ^ p).area() for p in tiled) == pytest.approx(whole.area(), rel=1e-6,
                                                                     abs=1e-6)
@@ -1130,3 +1162,35 @@ def test_W0507_equal_lone_holes_are_opened_once_and_thin_walls_still_found(monke
     big = sorted(p.area() for p in pieces if p.area() >= 2 * t * t)
     want = sorted(p.area() for p in whole.decompose() if p.area() >= 2 * t * t)
     assert len(want) == 1 and big == pytest.approx(want, rel=1e-6)
+
+
+def test_W0507_a_long_loop_and_its_bore_are_opened_whole(monkeypatch):
+    """A ring of one wavy loop of 2,880 vertices (more than TILE_VERTS) with a bore: two
+    loops, opened whole (one opening, not one per tile: clipping a loop into tiles costs more
+    than opening it), with the very pieces of the whole opening; a third loop, or more than
+    WHOLE_VERTS vertices, brings the tiles back."""
+    import math
+
+    import manifold3d as mf
+    from aidl_lang.output import checks as C
+    n, t = 2880, 0.5
+    pts = [((40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.cos(2 * math.pi * k / n),
+            (40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.sin(2 * math.pi * k / n))
+           for k in range(n)]
+    ring = mf.CrossSection([pts]) - mf.CrossSection.circle(4.0, 64)
+    assert ring.num_vert() > C.TILE_VERTS and ring.num_contour() == C.WHOLE_LOOPS == 2
+    opened = []
+    real = C._open
+    monkeypatch.setattr(C, "_open", lambda s, t: (opened.append(s.num_vert()), real(s, t))[1])
+    pieces = C._thin(ring, t, least=2 * t * t)
+    assert opened == [ring.num_vert()]
+    whole = ring - real(ring, t)
+    assert [p.area() for p in pieces] == [whole.area()]        # slivers only: as they are
+    opened.clear()
+    three = ring - mf.CrossSection.circle(1.0, 32).translate((20.0, 0.0))
+    C._thin(three, t, least=2 * t * t)
+    assert len(opened) > 1
+    opened.clear()                      # above WHOLE_VERTS: in tiles again
+    monkeypatch.setattr(C, "WHOLE_VERTS", ring.num_vert() - 1)
+    C._thin(ring, t, least=2 * t * t)
+    assert len(opened) > 1

@@ -202,6 +202,21 @@ def test_closed_chain_of_lines_and_arc_is_a_face(compile_text):
     assert d.open_curves == []
 
 
+@pytest.mark.parametrize("dx,dy", [(4e-7, 3e-7), (-4e-7, 3e-7), (4e-7, -6e-7), (-6e-7, -4e-7)])
+def test_line_ends_a_hair_apart_across_a_grid_cell_chain_into_a_face(compile_text, dx, dy):
+    """Two ends within the chaining tolerance (1e-6 mm) on either side of a line of the ends'
+    grid (cells of END_CELL = 0.25 mm: every corner here is on one) are one corner: the
+    square closes, whichever cell each end falls in."""
+    d = rendered(compile_text, f"""solid s {{
+    a = Line((0, 0), (0.25, 0))
+    b = Line(({0.25 + dx!r}, {dy!r}), (0.25, 0.25))
+    c = Line((0.25, 0.25), ({dx!r}, {0.25 + dy!r}))
+    e = Line((0, 0.25), (0, 0))
+}}""")
+    assert d.open_curves == []
+    assert area(d) == pytest.approx(0.0625, rel=1e-4)
+
+
 def test_open_curves_are_reported_not_filled(compile_text):
     d = rendered(compile_text, """solid s {
     a = Line((0, 0), (10, 0))

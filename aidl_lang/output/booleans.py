@@ -214,17 +214,20 @@ class Renderer:
         self.spline_source.setdefault(c, g)
         return Spline(c, 0.0, float(c.n))
 
-    def segment(self, g: Geometry):
+    def segment(self, g: Geometry, start=None, end=None):
         """The exact segment of an open curve (a Line, an open Spline, or an Arc
-        counter-clockwise from its start to its end point on the circle through its start)."""
+        counter-clockwise from its start to its end point on the circle through its start);
+        ``start``, ``end``: a Line's or an Arc's solved end points, when already read."""
         if g.kind in ("Spline", "Bezier"):
             return self.spline(g)
         if g.kind == "EllipticArc":
             return self.elliptic_arc(g)
         pts = g.points
+        if start is None:
+            start, end = self._pt(pts["start"]), self._pt(pts["end"])
         if g.kind == "Line":
-            return Line(self._pt(pts["start"]), self._pt(pts["end"]))
-        return _arc_through(self._pt(pts["center"]), self._pt(pts["start"]), self._pt(pts["end"]))
+            return Line(start, end)
+        return _arc_through(self._pt(pts["center"]), start, end)
 
     def elliptic_arc(self, g: Geometry) -> EllipticArc:
         """The exact arc of an ``Ellipse(..., start_angle=, end_angle=)`` at its solved
@@ -556,13 +559,18 @@ class Renderer:
         curves, where scanning every curve at every step was O(n^2) (5 000 lines, 12 s)."""
         segs, ends, kept = [], [], []
         for g in curves:
-            sg = self.pieces(g)
-            if not sg:
-                continue
+            if g.kind in ("Spline", "Bezier", "Polyline"):
+                sg = self.pieces(g)
+                if not sg:
+                    continue
+                a, b = sg[0].start, sg[-1].end
+            else:
+                # a Line's or an Arc's ends: its solved points (an arc's own ends are cos/sin
+                # of them), read once for the segment and the chaining
+                a, b = self._pt(g.points["start"]), self._pt(g.points["end"])
+                sg = [self.segment(g, a, b)]
             segs.append(sg)
-            # a Line's or an Arc's ends: its solved points (an arc's own ends are cos/sin of them)
-            ends.append((sg[0].start, sg[-1].end) if g.kind in ("Spline", "Bezier", "Polyline")
-                        else (self._pt(g.points["start"]), self._pt(g.points["end"])))
+            ends.append((a, b))
             kept.append(g)
         curves = kept
         grid: dict = {}
@@ -573,13 +581,15 @@ class Renderer:
                 if not lst or lst[-1] != j:
                     lst.append(j)
 
-        def near(p):
-            cx, cy = math.floor(p[0] / END_CELL), math.floor(p[1] / END_CELL)
-            found = []
-            for dx in (-1, 0, 1):
-                for dy in (-1, 0, 1):
-                    found += grid.get((cx + dx, cy + dy), ())
-            return sorted(set(found))
+        def near(p, tol):
+            """The curves with an end in a cell within 2 tol of ``p``, in order (one cell,
+            nearly always: its list is in order already)."""
+            x0, x1 = math.floor((p[0] - 2 * tol) / END_CELL), math.floor((p[0] + 2 * tol) / END_CELL)
+            y0, y1 = math.floor((p[1] - 2 * tol) / END_CELL), math.floor((p[1] + 2 * tol) / END_CELL)
+            if x0 == x1 and y0 == y1:
+                return grid.get((x0, y0), ())
+            return sorted({j for cx in range(x0, x1 + 1) for cy in range(y0, y1 + 1)
+                           for j in grid.get((cx, cy), ())})
 
         used = [False] * len(curves)
         loops, rest = [], []
@@ -591,16 +601,18 @@ class Renderer:
             used[i] = True
             run = list(segs[i])
             start, end = ends[i]
+            closes = _tol(start)          # how near the start the chain's end closes it
             grown = True
-            while grown and _dist(end, start) > _tol(start):
+            while grown and _dist(end, start) > closes:
                 grown = False
-                for j in near(end):
+                tol = _tol(end)
+                for j in near(end, tol):
                     if used[j]:
                         continue
-                    if _dist(ends[j][0], end) <= _tol(end):
+                    if _dist(ends[j][0], end) <= tol:
                         run += segs[j]
                         end = ends[j][1]
-                    elif _dist(ends[j][1], end) <= _tol(end):
+                    elif _dist(ends[j][1], end) <= tol:
                         run += [reverse(sg) for sg in reversed(segs[j])]
                         end = ends[j][0]
                     else:
@@ -609,7 +621,7 @@ class Renderer:
                     chain.append(j)
                     grown = True
                     break
-            closed = _dist(end, start) <= _tol(start)
+            closed = _dist(end, start) <= closes
             if closed and (len(run) >= 2 or isinstance(run[0], (Arc, Spline))):
                 loops.append((Loop(_weld(run)), [curves[j] for j in chain]))
             else:

@@ -70,6 +70,7 @@ class Provenance:
         self._b: list = []
         self._c: list = []
         self._ends: list = []         # (x, y, carrier before, carrier after)
+        self._eg = None               # their grid (_ends_grid), with how many it holds
         self._index = None
         self.unmatched = 0
 
@@ -102,20 +103,25 @@ class Provenance:
         xs: list = []
         ys: list = []
         ids: list = []
-        # each arc's chords, and the vertices of all (counted before anything is made)
-        chords = [0 if isinstance(s, (Line, Spline, EllipticArc, Circle)) else
-                  segments_for(s.radius, abs(s.sweep)) for s in segs]
+        # the vertices of each segment (an arc's chords), all counted before anything is made
+        chords = [1 if isinstance(s, Line) else
+                  spline_chords(s) if isinstance(s, Spline) else
+                  ellipse_chords(s) if isinstance(s, EllipticArc) else
+                  segments_for(s.radius) if isinstance(s, Circle) else
+                  max(1, segments_for(s.radius, abs(s.sweep))) for s in segs]
         if self.max_vertices is not None:
-            self.vertices += sum(1 if isinstance(s, Line) else
-                                 spline_chords(s) if isinstance(s, Spline) else
-                                 ellipse_chords(s) if isinstance(s, EllipticArc) else
-                                 segments_for(s.radius) if isinstance(s, Circle) else
-                                 max(1, c) for s, c in zip(segs, chords))
+            self.vertices += sum(chords)
             if self.vertices > self.max_vertices:
                 raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
                                   "(circles and arcs in chords of 0.005 mm)", "the booleans")
         seg_ids = [self.carrier_id(carrier(s)) for s in segs]
-        for s, k, m in zip(segs, seg_ids, chords):
+        ends = len(segs) > 1              # each segment's exact start, where two meet
+        before = seg_ids[-1] if segs else -1
+        for s, k, n in zip(segs, seg_ids, chords):
+            if ends:
+                x, y = s.start
+                self._ends.append((float(x), float(y), before, k))
+                before = k
             if isinstance(s, Line):
                 xs.append(float(s.start[0]))
                 ys.append(float(s.start[1]))
@@ -135,12 +141,11 @@ class Provenance:
             cx, cy = s.center
             r = s.radius
             if isinstance(s, Circle):
-                n = segments_for(r)
                 sg = 1.0 if s.ccw else -1.0
                 t = [sg * 2 * math.pi * i / n for i in range(n)]
             else:
-                n = max(1, m)
-                t = [s.start_angle + s.sweep * i / n for i in range(n)]
+                a0, sw = s.start_angle, s.sweep
+                t = [a0 + sw * i / n for i in range(n)]
             xs += [cx + r * math.cos(a) for a in t]
             ys += [cy + r * math.sin(a) for a in t]
             ids += [k] * n
@@ -148,12 +153,8 @@ class Provenance:
             return np.zeros((0, 2))
         P = np.column_stack([np.asarray(xs, float), np.asarray(ys, float)])
         self._a.append(P)
-        self._b.append(np.roll(P, -1, axis=0))
+        self._b.append(np.concatenate([P[1:], P[:1]]))      # np.roll(P, -1, axis=0)
         self._c.append(np.asarray(ids, dtype=np.int64))
-        if len(segs) > 1:
-            for i, s in enumerate(segs):
-                x, y = s.start
-                self._ends.append((float(x), float(y), seg_ids[i - 1], seg_ids[i]))
         self._index = None
         return P
 
@@ -165,12 +166,12 @@ class Provenance:
         P = self.polygon(loop)
         if len(P) < 3:
             return mf.CrossSection()
-        return mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
+        return mf.CrossSection([P], mf.FillRule.NonZero)         # the array as it is
 
     def section(self, loops: list[Loop]) -> mf.CrossSection:
         """A Manifold ``CrossSection`` of exact ``loops`` as :meth:`loops` gives them (outer
         loops counter-clockwise, holes clockwise)."""
-        polys = [P.tolist() for P in (self.polygon(lp) for lp in loops) if len(P) >= 3]
+        polys = [P for P in (self.polygon(lp) for lp in loops) if len(P) >= 3]
         return mf.CrossSection(polys, mf.FillRule.NonZero) if polys else mf.CrossSection()
 
     # ------------------------------------------------------------ back: result polygons
@@ -221,8 +222,8 @@ class Provenance:
         if runs is None:                    # the whole loop on one carrier
             return self._whole(P, int(cid[0]))
         # runs: [(carrier index or -1 for an unexplained edge, first edge, last edge)]
-        joins = [self._join(runs[j - 1][0], runs[j][0], P[runs[j][1] % n], scale)
-                 for j in range(len(runs))]
+        at = P[[r[1] % n for r in runs]].tolist()      # each run's first vertex
+        joins = [self._join(runs[j - 1][0], runs[j][0], at[j], scale) for j in range(len(runs))]
         sweeps: dict = _circle_sweeps(P, runs, self.carriers)
 
         def approx(c, first, last):       # the polygon's sweep of a run, computed once
@@ -323,13 +324,16 @@ class Provenance:
     def _ends_grid(self):
         if not self._ends:
             return None
-        if getattr(self, "_eg", None) is not None and self._eg[0] == len(self._ends):
+        if self._eg is not None and self._eg[0] == len(self._ends):
             return self._eg[1]
         cell = 1e-3
         grid: dict = {}
         for i, (x, y, _, _) in enumerate(self._ends):
-            for gx in {math.floor((x - SNAP_TOL) / cell), math.floor((x + SNAP_TOL) / cell)}:
-                for gy in {math.floor((y - SNAP_TOL) / cell), math.floor((y + SNAP_TOL) / cell)}:
+            # the cells within SNAP_TOL of the end: one, or two or four near a cell's edge
+            x0, x1 = math.floor((x - SNAP_TOL) / cell), math.floor((x + SNAP_TOL) / cell)
+            y0, y1 = math.floor((y - SNAP_TOL) / cell), math.floor((y + SNAP_TOL) / cell)
+            for gx in (x0,) if x0 == x1 else (x0, x1):
+                for gy in (y0,) if y0 == y1 else (y0, y1):
                     grid.setdefault((gx, gy), []).append(i)
         self._eg = (len(self._ends), (cell, grid, self._ends))
         return self._eg[1]
@@ -418,7 +422,9 @@ class _Grid:
         chord = np.repeat(np.arange(first, stop), n + 1)
         start = np.cumsum(n + 1) - (n + 1)
         t = (np.arange(len(chord)) - np.repeat(start, n + 1)) / np.repeat(n, n + 1)
-        return self._key(A[chord] + D[chord] * t[:, None]), chord
+        # (rows gathered with take: indexing a 2-column array by an index array costs 15
+        # times as much in NumPy 2.4)
+        return self._key(A.take(chord, axis=0) + D.take(chord, axis=0) * t[:, None]), chord
 
     def _key(self, S, dx=0, dy=0):
         ix = np.floor(S[:, 0] / self.cell).astype(np.int64) + dx
@@ -430,7 +436,7 @@ class _Grid:
         chords that hold them within ``tol`` (either way round), among the candidates
         ``lo``/``cnt`` of these edges."""
         qs, cs = [], []
-        for j in range(9):
+        for j in range(len(cnt)):
             c_ = cnt[j]
             tot = int(c_.sum())
             if not tot:
@@ -445,12 +451,12 @@ class _Grid:
         pair = np.sort(q * len(self.A) + c)          # np.unique without importing numpy.ma
         pair = pair[np.r_[True, pair[1:] != pair[:-1]]]
         q, c = pair // len(self.A), pair % len(self.A)
-        a, b = self.A[c], self.B[c]
+        a, b = self.A.take(c, axis=0), self.B.take(c, axis=0)      # = A[c], B[c] (faster)
         d = b - a
         L = np.hypot(d[:, 0], d[:, 1])
         ok = L > 0
         u = d / np.where(ok, L, 1.0)[:, None]
-        p, e = P[q] - a, Q[q] - a
+        p, e = P.take(q, axis=0) - a, Q.take(q, axis=0) - a
         dp = np.abs(u[:, 0] * p[:, 1] - u[:, 1] * p[:, 0])
         de = np.abs(u[:, 0] * e[:, 1] - u[:, 1] * e[:, 0])
         tp = u[:, 0] * p[:, 0] + u[:, 1] * p[:, 1]
@@ -468,14 +474,16 @@ class _Grid:
         return q[keep], k[keep]
 
     def _cells(self, M) -> tuple[np.ndarray, np.ndarray]:
-        """``(lo, cnt)``, each 9 x len(M): the samples in the cell of point ``M[i]`` and in the
-        eight around it are ``self.chord[lo[j, i]:lo[j, i] + cnt[j, i]]``, j = 0..8."""
-        lo = np.empty((9, len(M)), dtype=np.int64)
-        cnt = np.empty((9, len(M)), dtype=np.int64)
-        for j, (dx, dy) in enumerate((dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)):
-            qk = self._key(M, dx, dy)
-            lo[j] = np.searchsorted(self.keys, qk, "left")
-            cnt[j] = np.searchsorted(self.keys, qk, "right") - lo[j]
+        """``(lo, cnt)``, each 3 x len(M): the samples in the cell of point ``M[i]`` and in the
+        eight around it are ``self.chord[lo[j, i]:lo[j, i] + cnt[j, i]]``, j = 0..2: one
+        column of three cells each (a cell's key is its column times a number larger than any
+        row's, plus its row, so the three rows of a column are one slice of the sorted
+        keys)."""
+        lo = np.empty((3, len(M)), dtype=np.int64)
+        cnt = np.empty((3, len(M)), dtype=np.int64)
+        for j, dx in enumerate((-1, 0, 1)):
+            lo[j] = np.searchsorted(self.keys, self._key(M, dx, -1), "left")
+            cnt[j] = np.searchsorted(self.keys, self._key(M, dx, 1), "right") - lo[j]
         return lo, cnt
 
     def match(self, P, Q, tol) -> np.ndarray:
@@ -486,8 +494,10 @@ class _Grid:
         M = (P + Q) / 2
         # each query edge's candidate chords: the samples of its midpoint's cell and the eight
         # around it (_cells); first only how many, to refuse before any work is done
-        ends = np.cumsum(np.concatenate([self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
-                                         for b in range(0, n, EDGES_PER_BLOCK)]))
+        one = self._cells(M) if n <= EDGES_PER_BLOCK else None      # one block: kept
+        ends = np.cumsum(one[1].sum(axis=0) if one is not None else np.concatenate(
+            [self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
+             for b in range(0, n, EDGES_PER_BLOCK)]))
         if ends[-1] > MAX_CANDIDATES:
             raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
                               "(thousands of curves drawn on top of each other)",
@@ -500,7 +510,8 @@ class _Grid:
             base = ends[at - 1] if at else 0
             stop = max(at + 1, int(np.searchsorted(ends, base + PAIRS_PER_BLOCK, "right")))
             stop = min(stop, at + EDGES_PER_BLOCK)
-            lo, cnt = self._cells(M[at:stop])
+            lo, cnt = one if one is not None and at == 0 and stop == n else \
+                self._cells(M[at:stop])
             q, k = self._candidates(P, Q, tol, lo, cnt, at)
             qs.append(q)
             ks.append(k)
@@ -539,21 +550,20 @@ def _runs(cid: np.ndarray, carriers: list, scale: float):
     prev = np.roll(cid, 1)
     same[:] = (cid == prev) & (cid >= 0)
     tol = tolerance(scale)
-    for i in np.flatnonzero(~same & (cid >= 0) & (prev >= 0)).tolist():
-        if same_carrier(carriers[int(cid[i])], carriers[int(prev[i])], tol):
+    ask = np.flatnonzero(~same & (cid >= 0) & (prev >= 0))
+    for i, a, b in zip(ask.tolist(), cid[ask].tolist(), prev[ask].tolist()):
+        if same_carrier(carriers[a], carriers[b], tol):
             same[i] = True
-            cid[i] = prev[i]
+            cid[i] = b
     if same.all():
         return None
-    starts = np.flatnonzero(~same)
+    starts = np.flatnonzero(~same).tolist()
     runs = []
-    for j, st in enumerate(starts.tolist()):
-        end = starts[j + 1] if j + 1 < len(starts) else starts[0] + n
-        k = int(cid[st])
+    for st, end, k in zip(starts, starts[1:] + [starts[0] + n], cid[starts].tolist()):
         if k < 0:                              # unexplained edges: one run each
-            runs += [(-1, i, i) for i in range(st, int(end))]
+            runs += [(-1, i, i) for i in range(st, end)]
         else:
-            runs.append((k, st, int(end) - 1))
+            runs.append((k, st, end - 1))
     return runs
 
 

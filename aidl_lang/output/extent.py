@@ -10,11 +10,11 @@ from .part import Arc, Circle, EllipticArc, Line, Output, Spline
 
 
 def _segment_box(s) -> tuple[float, float, float, float]:
-    if isinstance(s, (Spline, EllipticArc)):
-        return s.box()
     if isinstance(s, Line):
         (x0, y0), (x1, y1) = s.start, s.end
         return min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)
+    if isinstance(s, (Spline, EllipticArc)):
+        return s.box()
     cx, cy = s.center
     r = s.radius
     if isinstance(s, Circle) or abs(s.sweep) >= 2 * math.pi:
@@ -22,8 +22,10 @@ def _segment_box(s) -> tuple[float, float, float, float]:
     (sx, sy), (ex, ey) = s.start, s.end
     x0, x1 = min(sx, ex), max(sx, ex)
     y0, y1 = min(sy, ey), max(sy, ey)
-    lo = min(s.start_angle, s.end_angle)
-    hi = max(s.start_angle, s.end_angle)
+    lo = s.start_angle
+    hi = lo + s.sweep                            # its end angle
+    if hi < lo:
+        lo, hi = hi, lo
     k = math.ceil(lo / (math.pi / 2))
     while k * math.pi / 2 <= hi:                 # each multiple of 90 degrees the arc passes
         q = k % 4
@@ -45,13 +47,9 @@ def extent(output: Output) -> tuple[float, float, float, float]:
     output with a fixed :attr:`~.part.Output.page` (a cutting layout's sheet) gives the page."""
     if output.page is not None:
         return tuple(float(v) for v in output.page)
-    x0 = y0 = math.inf
-    x1 = y1 = -math.inf
-    for segs in [lp.segments for p in output.parts for lp in p.loops] + \
-            [st.segments for st in output.engrave]:
-        for s in segs:
-            a, b, c, d = _segment_box(s)
-            x0, y0, x1, y1 = min(x0, a), min(y0, b), max(x1, c), max(y1, d)
-    if x0 == math.inf:
+    boxes = [_segment_box(s) for segs in [lp.segments for p in output.parts for lp in p.loops]
+             + [st.segments for st in output.engrave] for s in segs]
+    if not boxes:
         return (0.0, 0.0, 1.0, 1.0)
-    return (x0, y0, x1, y1)
+    x0, y0, x1, y1 = zip(*boxes)
+    return (min(x0), min(y0), max(x1), max(y1))

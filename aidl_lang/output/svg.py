@@ -38,10 +38,13 @@ PALETTE = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#b
 PART_FILL_OPACITY = 0.18
 
 
+_FMT = f"%.{DIGITS}f"
+
+
 def _f(v: float) -> str:
     """A coordinate or length to :data:`DIGITS` decimals of a mm (1e-9 mm), without trailing
     zeros (``12.5``, ``0``, ``-3.000000001``)."""
-    s = f"{v:.{DIGITS}f}".rstrip("0").rstrip(".")
+    s = (_FMT % v).rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
 
 
@@ -70,6 +73,8 @@ def _arc_cmd(a: Arc) -> str:
     r = _f(a.radius)
     sweep_flag = 0 if a.sweep > 0 else 1          # y is flipped: model ccw is SVG's negative
     n = max(1, math.ceil(abs(a.sweep) / (math.pi / 2) - 1e-9))
+    if n == 1:                                    # its end, as a.at(start + 1 * sweep) is
+        return f"A{r},{r} 0 0 {sweep_flag} {_pt(a.end)}"
     step = a.sweep / n
     return "".join(f"A{r},{r} 0 0 {sweep_flag} {_pt(a.at(a.start_angle + (k + 1) * step))}"
                    for k in range(n))
