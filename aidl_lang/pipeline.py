@@ -322,17 +322,18 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     import math
     x = np.asarray(model.x, dtype=float)
     bad = np.flatnonzero(~(np.isfinite(x) & (np.abs(x) <= MAX_EXTENT)))   # NaN: not finite
-    for i in bad[:1].tolist():
-        v = model.x[i]
-        owner = model.param_owner[i]
-        what = "not finite" if not math.isfinite(v) else f"{v:.4g} mm"
-        sink.error("E0305", f"after solving, `{model.param_label[i]}` is {what}, beyond the "
-                   f"model extent of {MAX_EXTENT:.0e} mm",
-                   owner.span if owner is not None else None,
-                   hint="the constraints push the geometry very far away: check the values "
-                        "and units of the dimensions")
-        return False
-    return True
+    if not len(bad):
+        return True
+    i = int(bad[0])
+    v = model.x[i]
+    owner = model.param_owner[i]
+    what = "not finite" if not math.isfinite(v) else f"{v:.4g} mm"
+    sink.error("E0305", f"after solving, `{model.param_label[i]}` is {what}, beyond the "
+               f"model extent of {MAX_EXTENT:.0e} mm",
+               owner.span if owner is not None else None,
+               hint="the constraints push the geometry very far away: check the values "
+                    "and units of the dimensions")
+    return False
 
 
 def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False) -> None:

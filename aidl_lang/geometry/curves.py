@@ -490,7 +490,7 @@ def simplify(segments: list[Segment], scale: float = 1.0) -> list[Segment]:
 
 
 def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
-    if type(a) is Arc and type(b) is Arc:     # same_carrier of their circles, inline
+    if type(a) is Arc and type(b) is Arc:     # same_carrier(carrier(a), carrier(b)), inline
         (ax, ay), (bx, by) = a.center, b.center
         return (a.sweep > 0) == (b.sweep > 0) and math.hypot(ax - bx, ay - by) <= tol \
             and abs(a.radius - b.radius) <= tol and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
@@ -504,9 +504,6 @@ def _mergeable(a: Segment, b: Segment, tol: float) -> bool:
     if isinstance(a, EllipticArc) and isinstance(b, EllipticArc):
         return (a.sweep > 0) == (b.sweep > 0) and a.curve.same(b.curve, tol) \
             and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9 and math.dist(a.end, b.start) <= tol
-    if isinstance(a, Arc) and isinstance(b, Arc):
-        return (a.sweep > 0) == (b.sweep > 0) and same_carrier(carrier(a), carrier(b), tol) \
-            and abs(a.sweep + b.sweep) <= 2 * math.pi + 1e-9
     return False
 
 

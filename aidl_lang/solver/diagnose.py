@@ -905,6 +905,7 @@ def redundancies(solver, deadline: float | None = None,
         if deadline is not None and time.monotonic() > deadline:
             unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
             continue
+
         def dense_rows(ii: list[int]) -> np.ndarray:
             return Jd[ii] if Jd is not None else _dense_cut(J, position, local[ii], block)
         mine: dict[int, list[int]] = {}
