@@ -25,7 +25,7 @@ class Node:
 
     def __repr__(self) -> str:
         """``Num(span=Span(...), value=40.0, unit='mm')``: the fields in order, as a dataclass's."""
-        names = [n for c in reversed(type(self).__mro__[:-1]) for n in c.__slots__]
+        names = ("span",) + _fields(type(self))
         return f"{type(self).__name__}({', '.join(f'{n}={getattr(self, n)!r}' for n in names)})"
 
 
