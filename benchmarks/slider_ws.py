@@ -1,0 +1,126 @@
+"""The live preview's slider, end to end: the time from a customizer message sent over the
+WebSocket to the picture's frame received, through the real ``aidl serve`` (uvicorn,
+Starlette, the warm session) and a real client (``websockets``).
+
+    python benchmarks/slider_ws.py [OLD_TREE ...] [--file examples/gear_pair.aidl]
+                                   [--param pinion_teeth --values 13,14] [--moves 20]
+                                   [--rest 0.6] [--rounds 2]
+
+Each tree (this checkout first, then every OLD_TREE, e.g. a ``git archive`` of an older
+commit) serves the file in its own process (``PYTHONPATH=TREE``, run from a temporary
+directory, bytecode compiled first); the trees take turns for ``--rounds`` rounds.  A round
+waits for the first picture, makes two moves that are not counted, then ``--moves`` moves: each
+sends ``{"type": "set", "id": k, "values": {param: value}}`` and waits for the frame answering
+``id`` k (the picture; the shape checks follow it ``CHECKS_DELAY`` later, after the slider
+rests).  After each picture the client rests ``--rest`` seconds, so every move starts at a quiet
+moment, as a user lets go of a slider and looks.  Prints, per tree, the median, the 90th
+percentile and the worst move in milliseconds (wall clock: what the user waits) and the server
+process's CPU per move.
+
+Issue 38's target: the ``gear_pair`` slider at most 150 ms in the server at a quiet moment.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "PYTHONPATH")}
+
+
+def cpu_of(pid: int) -> float:
+    """The process's user + system CPU in seconds (Linux ``/proc/PID/stat``)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def one_round(tree: Path, file: Path, param: str, values: list[str], moves: int,
+              rest: float) -> tuple[list[float], float]:
+    """Serve ``file`` from ``tree`` and make the moves: (wall ms per move, CPU ms per move)."""
+    from websockets.sync.client import connect
+    env = dict(ENV, PYTHONPATH=str(tree))
+    with tempfile.TemporaryDirectory() as cwd:
+        proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "serve", str(file),
+                                 "--port", "0"], cwd=cwd, env=env, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True)
+        try:
+            line = proc.stdout.readline()
+            if "http://" not in line:
+                raise SystemExit(f"{tree}: aidl serve did not start: {line}{proc.stderr.read()}")
+            url = line.split("http://", 1)[1].split("/", 1)[0]
+            walls = []
+            with connect(f"ws://{url}/ws", max_size=None, open_timeout=120) as ws:
+                first = json.loads(ws.recv(timeout=300))
+                if first.get("type") != "view":
+                    raise SystemExit(f"{tree}: the first frame is not a view: {first}")
+                time.sleep(rest)
+                cpu0 = None
+                for k in range(moves + 2):
+                    if k == 2:
+                        cpu0 = cpu_of(proc.pid)
+                    value = values[k % len(values)]
+                    t = time.perf_counter()
+                    ws.send(json.dumps({"type": "set", "id": k, "values": {param: value}}))
+                    while True:
+                        msg = json.loads(ws.recv(timeout=300))
+                        if msg.get("type") == "view" and msg.get("id") == k:
+                            break
+                        if msg.get("type") == "error":
+                            raise SystemExit(f"{tree}: {msg}")
+                    wall = time.perf_counter() - t
+                    if not msg.get("ok", True) or msg.get("svg") is None:
+                        raise SystemExit(f"{tree}: the move to {param}={value} failed: "
+                                         f"{str(msg.get('diagnostics'))[:400]}")
+                    if k >= 2:
+                        walls.append(wall * 1000)
+                    time.sleep(rest)
+                # the CPU of the moves, their checks included (they run during the rests)
+                cpu = (cpu_of(proc.pid) - cpu0) * 1000 / moves
+            return walls, cpu
+        finally:
+            proc.terminate()
+            try:
+                proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("trees", nargs="*", type=Path, help="older trees to compare with")
+    ap.add_argument("--file", type=Path, default=ROOT / "examples" / "gear_pair.aidl")
+    ap.add_argument("--param", default="pinion_teeth")
+    ap.add_argument("--values", default="13,14", help="the values the moves take in turn")
+    ap.add_argument("--moves", type=int, default=20)
+    ap.add_argument("--rest", type=float, default=0.6, help="seconds between moves")
+    ap.add_argument("--rounds", type=int, default=2)
+    ap.add_argument("--verbose", action="store_true", help="print every move")
+    a = ap.parse_args()
+    trees = [ROOT] + [t.resolve() for t in a.trees]
+    for t in trees:
+        subprocess.run([sys.executable, "-m", "compileall", "-q", str(t / "aidl_lang")],
+                       env=ENV, check=True, stdout=subprocess.DEVNULL)
+    file = a.file.resolve()
+    values = [v.strip() for v in a.values.split(",")]
+    print(f"{file.name}: {a.moves} moves of {a.param} over {values}, {a.rest} s apart, "
+          f"{a.rounds} rounds; wall ms from the message sent to the picture received")
+    print(f"{'tree':40} {'median':>8} {'p90':>8} {'worst':>8} {'CPU/move':>9}")
+    for r in range(a.rounds):
+        for t in trees:
+            walls, cpu = one_round(t, file, a.param, values, a.moves, a.rest)
+            q = statistics.quantiles(walls, n=10)
+            if a.verbose:
+                print("  ", " ".join(f"{w:.0f}" for w in walls))
+            print(f"{str(t)[-40:]:40} {statistics.median(walls):8.1f} {q[-1]:8.1f} "
+                  f"{max(walls):8.1f} {cpu:9.1f}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
