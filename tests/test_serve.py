@@ -550,3 +550,109 @@ def test_serve_reload_of_a_file_swapped_for_a_fifo_is_E0004_not_a_hang(tmp_path)
                        text=True, cwd=ROOT, timeout=60)
     assert r.returncode == 0, r.stderr
     assert json.loads(r.stdout) == [["E0004", f"`{f}` is not a regular file"]]
+
+
+# ------------------------------------------------------------------ the collector in idle time
+@pytest.fixture
+def gc_log():
+    """Every cyclic collection while the test runs: (generation, start time)."""
+    import gc
+    log = []
+
+    def seen(phase, info):
+        if phase == "start":
+            log.append((info["generation"], time.perf_counter()))
+    gc.callbacks.append(seen)
+    yield log
+    gc.callbacks.remove(seen)
+
+
+def test_the_collector_runs_after_a_slider_move_not_inside_it(ranged_ws, gc_log):
+    """While the server serves, no automatic collection runs inside a compile (each used to
+    cost a slider move ~20 %, and a full one 130-280 ms every ~6 moves of the gear pair); one
+    full collection follows a move once the server has been idle IDLE_DELAY s.  The
+    collector is on again when the server stops (the fixture's teardown is checked in
+    test_the_collector_is_restored_when_the_server_stops)."""
+    import gc
+    from aidl_lang.serve import app as app_mod
+    ws, session = ranged_ws
+    assert not gc.isenabled()
+    for i in range(1, 4):
+        gc_log.clear()
+        t0 = time.perf_counter()
+        _set_ok(ws, i, f"{50 + i}mm")
+        t1 = time.perf_counter()
+        assert [g for g, t in gc_log if t0 <= t <= t1] == []     # none inside the move
+        deadline = t1 + 20
+        while not any(t > t1 for _, t in gc_log) and time.perf_counter() < deadline:
+            time.sleep(0.02)
+        after = [(g, t - t1) for g, t in gc_log if t > t1]
+        assert after and after[0][0] == 2, after                  # then one full collection
+        assert after[0][1] >= app_mod.IDLE_DELAY * 0.9, after
+
+
+def test_a_long_drag_is_collected_every_max_uncollected_compiles(tmp_path, monkeypatch, gc_log):
+    """A slider dragged without a rest never leaves the server idle: a collection still runs
+    after every MAX_UNCOLLECTED compiles, so the garbage of a drag stays bounded."""
+    from starlette.testclient import TestClient
+    from aidl_lang.serve import app as app_mod
+    monkeypatch.setattr(app_mod, "IDLE_DELAY", 30.0)          # never idle during the test
+    f = tmp_path / "ranged.aidl"
+    f.write_text(RANGED)
+    app = app_mod.create_app(f, PORT, watch=False)
+    hub = app.state.hub
+    with TestClient(app, base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
+                                                      "origin": BASE}) as ws:
+            _recv(ws)
+            gc_log.clear()                   # collections before the server disabled them
+            moves = 3 * app_mod.MAX_UNCOLLECTED
+            for i in range(1, moves + 1):
+                _set_ok(ws, i, f"{40 + i % 7}mm")
+            deadline = time.perf_counter() + 20
+            while hub.collections < 3 and time.perf_counter() < deadline:
+                time.sleep(0.02)
+            # the load and the moves: 1 + 24 compiles, a collection after the 8th, 16th, 24th
+            # (the load's own waits IDLE_DELAY)
+            assert hub.collections == 3, (hub.collections, hub.uncollected)
+            assert hub.uncollected == 1
+            assert [g for g, _ in gc_log] == [2, 2, 2]
+
+
+def test_the_collector_is_restored_when_the_server_stops(tmp_path):
+    import gc
+    from starlette.testclient import TestClient
+    from aidl_lang.serve.app import create_app
+    f = tmp_path / "ranged.aidl"
+    f.write_text(RANGED)
+    assert gc.isenabled()
+    with TestClient(create_app(f, PORT, watch=False), base_url=BASE):
+        assert not gc.isenabled()
+    assert gc.isenabled()
+
+
+def test_a_drag_is_collected_once_when_it_rests(tmp_path, monkeypatch, gc_log):
+    """Moves closer together than IDLE_DELAY are not collected one by one: only the last
+    compile's collection runs, once the slider rests."""
+    from starlette.testclient import TestClient
+    from aidl_lang.serve import app as app_mod
+    monkeypatch.setattr(app_mod, "IDLE_DELAY", 1.0)
+    f = tmp_path / "ranged.aidl"
+    f.write_text(RANGED)
+    app = app_mod.create_app(f, PORT, watch=False)
+    hub = app.state.hub
+    with TestClient(app, base_url=BASE) as client:
+        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
+                                                      "origin": BASE}) as ws:
+            _recv(ws)
+            deadline = time.perf_counter() + 20
+            while hub.collections < 1 and time.perf_counter() < deadline:
+                time.sleep(0.02)                 # the load's own collection
+            before = hub.collections
+            t0 = time.perf_counter()
+            for i in range(1, 7):            # 6 moves, each well within 1 s of the last
+                _set_ok(ws, i, f"{40 + i}mm")
+                time.sleep(0.05)
+            drag = time.perf_counter() - t0
+            time.sleep(1.6)
+            assert hub.collections == before + 1, (hub.collections, before, drag)

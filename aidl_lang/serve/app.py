@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import gc
 import json
 from importlib import resources
 from pathlib import Path
@@ -37,6 +38,8 @@ from .. import output
 from .session import Session
 
 CHECKS_DELAY = 0.05     # s a slider must rest before its picture's geometry checks run
+IDLE_DELAY = 0.2        # s without a compile before the cyclic garbage collector runs
+MAX_UNCOLLECTED = 8     # compiles at most between two collections (a long drag of a slider)
 MAX_MESSAGE = 65_536    # characters of one WebSocket message
 MAX_DEPTH = 8           # nesting of arrays and objects in one message ({"values": {...}} is 2)
 MAX_VALUES = 256        # entries of one message's "values"
@@ -179,13 +182,51 @@ class LocalOnly:
 
 
 class Hub:
-    """The session plus the connected pages; one compile at a time."""
+    """The session plus the connected pages; one compile at a time.
+
+    The cyclic garbage collector runs in the server's idle time, not inside a compile: the
+    app disables its automatic runs while it serves (:func:`create_app`'s lifespan) and
+    :meth:`compiled` schedules :meth:`collect` once no compile has come for
+    :data:`IDLE_DELAY` s, or at once after :data:`MAX_UNCOLLECTED` compiles (a slider
+    dragged for long), so each compile's garbage (a model's structures point at their
+    parents: reference cycles) is freed without a collection stalling a slider's picture.
+    Automatic collections used to run inside the moves: about 20 % of a ``gear_pair`` move,
+    plus a full collection of 130-280 ms every ~6 moves (docs/dev/performance.md)."""
 
     def __init__(self, session: Session):
         self.session = session
         self.lock = asyncio.Lock()
         self.clients: set[WebSocket] = set()
         self.tasks: set[asyncio.Task] = set()      # pending shape checks (kept referenced)
+        self.count = 0              # compiles so far
+        self.uncollected = 0        # compiles since the last collection
+        self.collections = 0        # collections run (read by the tests)
+
+    def spawn(self, coro) -> None:
+        task = asyncio.create_task(coro)
+        self.tasks.add(task)
+        task.add_done_callback(self.tasks.discard)
+
+    def compiled(self) -> None:
+        """Call after a compile's picture was sent: schedules the collection."""
+        self.count += 1
+        self.uncollected += 1
+        self.spawn(self.collect(self.count, now=self.uncollected >= MAX_UNCOLLECTED))
+
+    async def collect(self, mark: int, now: bool = False) -> None:
+        """The cyclic collection, under the lock (never during a compile): ``now``, or once
+        :data:`IDLE_DELAY` s have passed with the compile that counted ``mark`` still the
+        latest one."""
+        if not now:
+            await asyncio.sleep(IDLE_DELAY)
+            if self.count != mark:
+                return                              # a newer compile schedules its own
+        async with self.lock:
+            if not self.uncollected or (not now and self.count != mark):
+                return
+            self.uncollected = 0
+            await run_in_threadpool(gc.collect)
+            self.collections += 1
 
     async def reload(self) -> dict:
         async with self.lock:
@@ -196,6 +237,7 @@ class Hub:
         if dof_view is not None:
             await self.broadcast(dof_view)
             view = dof_view
+        self.compiled()
         return view
 
     async def set_params(self, values: dict) -> dict:
@@ -259,16 +301,19 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                 return PlainTextResponse(f"`set` expects NAME=VALUE, got `{item}`", status_code=400)
             k, v = item.split("=", 1)
             values[k.strip()] = v.strip()
-        async with hub.lock:
-            drawing, extra = await run_in_threadpool(hub.session.drawing, values)
-            if drawing is None:
-                return JSONResponse({"ok": False, "diagnostics": extra}, status_code=422)
-            try:
-                body = await run_in_threadpool(table[fmt], drawing, extra)
-            except output.MissingDependency as e:
-                return PlainTextResponse(str(e), status_code=501)
-            except output.OutputError as e:
-                return PlainTextResponse(str(e), status_code=422)
+        try:
+            async with hub.lock:
+                drawing, extra = await run_in_threadpool(hub.session.drawing, values)
+                if drawing is None:
+                    return JSONResponse({"ok": False, "diagnostics": extra}, status_code=422)
+                try:
+                    body = await run_in_threadpool(table[fmt], drawing, extra)
+                except output.MissingDependency as e:
+                    return PlainTextResponse(str(e), status_code=501)
+                except output.OutputError as e:
+                    return PlainTextResponse(str(e), status_code=422)
+        finally:
+            hub.compiled()
         if isinstance(body, str):
             body = body.encode("utf-8")
         stem = Path(hub.session.name).stem or "part"
@@ -298,9 +343,8 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                 view = await hub.set_params(msg["values"])
                 await ws.send_text(json.dumps({"type": "view", "id": msg["id"], **view}))
                 await hub.broadcast(view, skip=ws)
-                checks = asyncio.create_task(hub.shape_checks())
-                hub.tasks.add(checks)
-                checks.add_done_callback(hub.tasks.discard)
+                hub.spawn(hub.shape_checks())
+                hub.compiled()
 
         task = asyncio.create_task(worker())
         try:
@@ -338,13 +382,19 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
 
     @contextlib.asynccontextmanager
     async def lifespan(app):
-        await hub.reload()
-        task = asyncio.create_task(watcher()) if watch else None
+        was = gc.isenabled()
+        gc.disable()                # collections run in the idle time (Hub.collect)
+        task = None
         try:
+            await hub.reload()
+            if watch:
+                task = asyncio.create_task(watcher())
             yield
         finally:
             if task is not None:
                 task.cancel()
+            if was:
+                gc.enable()
 
     app = Starlette(routes=[
         Route("/", index), Route("/static/{name}", static), Route("/api/state", state),
