@@ -1235,6 +1235,30 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         return _parse(source, path, sink)
 
 
+IMPORTS_KEPT = 16          # imported files whose parse is remembered (parse_import)
+_IMPORTED: dict = {}       # (path, source) -> Program, oldest first
+
+
+def parse_import(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    """:func:`parse` for an imported file, remembered by its path and text: a file read again
+    with the same text (``std/gears.aidl`` on every slider move of the live preview) gives
+    the same :class:`Program` without a parse.  Only a parse without diagnostics is kept (a
+    hit adds nothing to ``sink`` but the source); the last :data:`IMPORTS_KEPT` are kept.
+    The interpreter only reads the tree, as it reads the main file's again on each move."""
+    key = (path, source)
+    prog = _IMPORTED.get(key)
+    if prog is not None:
+        sink.sources[path] = source
+        return prog
+    first = len(sink.items)
+    prog = parse(source, path, sink)
+    if len(sink.items) == first:
+        if len(_IMPORTED) >= IMPORTS_KEPT:
+            _IMPORTED.pop(next(iter(_IMPORTED), None), None)
+        _IMPORTED[key] = prog
+    return prog
+
+
 def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     first = len(sink.items)
     program, text = _parse_text(source, path, sink)
