@@ -620,3 +620,27 @@ def test_an_imported_file_is_parsed_once_per_text(tmp_path, monkeypatch):
     for n in (3, 4):
         assert compile_source(main, str(tmp_path / "m.aidl")).sink.has_errors
         assert parses == [str(lib)] * n
+
+
+def test_the_imports_kept_are_bounded(tmp_path, monkeypatch):
+    """``parse_import`` keeps at most ``IMPORTS_KEPT`` files and ``IMPORTS_KEPT_CHARS``
+    characters of source, dropping the oldest first; a file larger than the whole bound is
+    parsed and not kept."""
+    from aidl_lang import parser
+    monkeypatch.setattr(parser, "_IMPORTED", {})
+    monkeypatch.setattr(parser, "IMPORTS_KEPT", 3)
+    monkeypatch.setattr(parser, "IMPORTS_KEPT_CHARS", 100)
+    texts = [f"def f{i}() -> solid {{ c = Circle((0, 0), {i + 1}) }}\n" for i in range(5)]
+    for i, t in enumerate(texts):
+        parser.parse_import(t, f"f{i}.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f3.aidl", "f4.aidl"]     # 43 chars each
+    big = "# " + "x" * 120 + "\n" + texts[0]
+    prog = parser.parse_import(big, "big.aidl", DiagnosticSink())
+    assert [st.name for st in prog.stmts] == ["f0"]
+    assert [p for p, _t in parser._IMPORTED] == ["f3.aidl", "f4.aidl"]
+    parser.parse_import(texts[0], "f0.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f4.aidl", "f0.aidl"]
+    monkeypatch.setattr(parser, "IMPORTS_KEPT_CHARS", 1000)
+    for i in (1, 2, 3):
+        parser.parse_import(texts[i], f"f{i}.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f1.aidl", "f2.aidl", "f3.aidl"]
