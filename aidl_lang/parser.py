@@ -1235,6 +1235,36 @@ def parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
         return _parse(source, path, sink)
 
 
+IMPORTS_KEPT = 16          # imported files whose parse is remembered (parse_import) ...
+IMPORTS_KEPT_CHARS = 1_000_000     # ... and their source characters in all (~40 MB of trees)
+_IMPORTED: dict = {}       # (path, source) -> Program, oldest first
+_IMPORTED_LOCK = threading.Lock()       # the server compiles on more than one thread
+
+
+def parse_import(source: str, path: str, sink: DiagnosticSink) -> A.Program:
+    """:func:`parse` for an imported file, remembered by its path and text: a file read again
+    with the same text (``std/gears.aidl`` on every slider move of the live preview) gives
+    the same :class:`Program` without a parse.  Only a parse without diagnostics is kept (a
+    hit adds nothing to ``sink`` but the source); the last :data:`IMPORTS_KEPT` files, at
+    most :data:`IMPORTS_KEPT_CHARS` characters of source in all (a tree takes some 35-60
+    bytes a character), are kept.  The interpreter only reads the tree, as it reads the main
+    file's again on each move."""
+    key = (path, source)
+    prog = _IMPORTED.get(key)
+    if prog is not None:
+        sink.sources[path] = source
+        return prog
+    first = len(sink.items)
+    prog = parse(source, path, sink)
+    if len(sink.items) == first and len(source) <= IMPORTS_KEPT_CHARS:
+        with _IMPORTED_LOCK:
+            _IMPORTED[key] = prog
+            while len(_IMPORTED) > IMPORTS_KEPT or sum(
+                    len(text) for _p, text in _IMPORTED) > IMPORTS_KEPT_CHARS:
+                del _IMPORTED[next(iter(_IMPORTED))]
+    return prog
+
+
 def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
     first = len(sink.items)
     program, text = _parse_text(source, path, sink)

@@ -386,7 +386,7 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
     times, 82 s).  ``defs`` (name -> :class:`~aidl_lang.ast.Def`), when given, receives the
     templates read, for the hints that list a template's parameters."""
     from .sources import read_import, resolve_import
-    from .parser import parse
+    from .parser import parse_import
     real = resolve_import(target, path)
     key = str(real)
     if key in seen or len(seen) > MAX_IMPORT_DEPTH:
@@ -394,7 +394,7 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
     if memo is not None and key in memo:
         return memo[key]
     text = read_import(real, target)
-    prog = parse(text, key, DiagnosticSink())
+    prog = parse_import(text, key, DiagnosticSink())
     out = set()
     for st in prog.stmts:
         if isinstance(st, (A.Def, A.ParamDecl, A.Assign)):

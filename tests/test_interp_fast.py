@@ -337,3 +337,49 @@ def test_a_rotated_copys_point_is_the_four_term_combination(px, py, cx, cy, th):
     assert _key(X) == _key(combine(((cs, px), (-sn, py), (1.0 - cs, cx), (sn, cy))))
     assert _key(Y) == _key(combine(((sn, px), (cs, py), (-sn, cx), (1.0 - cs, cy))))
     assert (rot, flip) == (th, False)
+
+
+def _copy_point_reference(turn, model, p, dest, eqs):
+    """A copied point as ``_Cloner.point`` made it before ``_Turn.copy_point``: the image's
+    expressions, their values, a new point and its two rows by the operators."""
+    from aidl_lang.geometry.expr import evaluate
+    from aidl_lang.geometry.model import Point
+    X, Y = turn(*p.in_frame(dest))
+    ix, iy = model.new_pair(evaluate(X, model.x), evaluate(Y, model.x), True, dest, p.label)
+    q = Point(ix, iy, dest, None, p.label)
+    qx, qy = q.in_frame(dest)
+    eqs += [equation(qx - X), equation(qy - Y)]
+    return q
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(0, 6), st.integers(0, 6), small_lins, small_lins, st.floats(-7.0, 7.0),
+       st.lists(small, min_size=7, max_size=7))
+def test_a_turned_copys_rows_are_the_operators_rows(ix, iy, cx, cy, th, xs):
+    """``CircularPattern``'s copied point (``_Turn.copy_point``: its two rows and its start
+    value made directly) is the point the image's expressions and the operators make: the
+    same new unknowns, start values by bits, rows with their terms in order and floats by
+    bits, including a center sharing an unknown with the point (then the general path)."""
+    from aidl_lang.geometry.model import Model, Point, Structure
+    from aidl_lang.geometry.operations import _Turn
+    from aidl_lang.geometry.values import PV
+    if ix == iy:
+        iy = (ix + 1) % 7
+    made = []
+    for make in ("fast", "reference"):
+        m = Model()
+        S = Structure("s", "solid", None, None)
+        for v in xs:
+            m.new_param(v, True, S, "u")
+        turn, eqs = _Turn(PV(cx, cy), th), []
+        p = Point(ix, iy, S, None, "p")
+        q = turn.copy_point(m, p, S, eqs) if make == "fast" else None
+        if make == "fast":
+            shared = q is None
+        if q is None:
+            q = _copy_point_reference(turn, m, p, S, eqs)
+        made.append(((q.ix, q.iy, q.label, q.owner is S), [v.hex() for v in m.x],
+                     [(_key(e.expr), e.ineq, e.branch) for e in eqs]))
+    assert made[0] == made[1]
+    both = set(cx.terms) | set(cy.terms)
+    assert shared == bool(set(cx.terms) & set(cy.terms) or {ix, iy} & both)

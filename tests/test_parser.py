@@ -592,3 +592,55 @@ def test_walk_reaches_the_fields_a_node_inherits():
     assert names.count("p") == 1 and "tab" in names
     kws = [n.name for n in A.walk(prog) if isinstance(n, A.Keyword)]
     assert kws.count("w") == 1
+
+
+def test_an_imported_file_is_parsed_once_per_text(tmp_path, monkeypatch):
+    """``parse_import``: an imported file read again with the same text is not parsed again
+    (the checker's look at its names and the interpreter share one parse; the live
+    preview's slider compiles `std/gears.aidl` on every move); an edit is read anew, and a
+    file with a syntax error is parsed again on every compile (never remembered)."""
+    from aidl_lang import parser
+    from aidl_lang.pipeline import compile_source
+    parses = []
+    real = parser.parse
+    monkeypatch.setattr(parser, "parse", lambda *a: parses.append(a[1]) or real(*a))
+    lib = tmp_path / "lib.aidl"
+    main = 'import "lib.aidl"\nsolid s { c = disk() }\n'
+
+    def radius(c):
+        g = next(g for g in c.model.all_geometry() if g.kind == "Circle")
+        return c.model.x[g.scalars["radius"].index]
+    lib.write_text("def disk() -> solid { k = Circle(center=(0, 0), radius=3) }\n")
+    first, again = (compile_source(main, str(tmp_path / "m.aidl")) for _ in range(2))
+    assert parses == [str(lib)] and radius(first) == radius(again) == 3.0
+    lib.write_text("def disk() -> solid { k = Circle(center=(0, 0), radius=4) }\n")
+    assert radius(compile_source(main, str(tmp_path / "m.aidl"))) == 4.0
+    assert parses == [str(lib)] * 2
+    lib.write_text("def disk() -> solid { k = Circle(center=(0, 0), radius=) }\n")
+    for n in (3, 4):
+        assert compile_source(main, str(tmp_path / "m.aidl")).sink.has_errors
+        assert parses == [str(lib)] * n
+
+
+def test_the_imports_kept_are_bounded(tmp_path, monkeypatch):
+    """``parse_import`` keeps at most ``IMPORTS_KEPT`` files and ``IMPORTS_KEPT_CHARS``
+    characters of source, dropping the oldest first; a file larger than the whole bound is
+    parsed and not kept."""
+    from aidl_lang import parser
+    monkeypatch.setattr(parser, "_IMPORTED", {})
+    monkeypatch.setattr(parser, "IMPORTS_KEPT", 3)
+    monkeypatch.setattr(parser, "IMPORTS_KEPT_CHARS", 100)
+    texts = [f"def f{i}() -> solid {{ c = Circle((0, 0), {i + 1}) }}\n" for i in range(5)]
+    for i, t in enumerate(texts):
+        parser.parse_import(t, f"f{i}.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f3.aidl", "f4.aidl"]     # 43 chars each
+    big = "# " + "x" * 120 + "\n" + texts[0]
+    prog = parser.parse_import(big, "big.aidl", DiagnosticSink())
+    assert [st.name for st in prog.stmts] == ["f0"]
+    assert [p for p, _t in parser._IMPORTED] == ["f3.aidl", "f4.aidl"]
+    parser.parse_import(texts[0], "f0.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f4.aidl", "f0.aidl"]
+    monkeypatch.setattr(parser, "IMPORTS_KEPT_CHARS", 1000)
+    for i in (1, 2, 3):
+        parser.parse_import(texts[i], f"f{i}.aidl", DiagnosticSink())
+    assert [p for p, _t in parser._IMPORTED] == ["f1.aidl", "f2.aidl", "f3.aidl"]

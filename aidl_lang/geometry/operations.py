@@ -29,7 +29,7 @@ import math
 
 from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
-from .expr import Lin, combine, var
+from .expr import Lin, _lin, combine, var
 from .model import Constraint, Equation, Geometry, Point, Structure, equation
 from .values import PV, GeomRef, Q, StructRef, type_name
 
@@ -48,18 +48,94 @@ def _translate(dx, dy):
 
 
 def _rotate(c: PV, th: float):
-    cs, sn = math.cos(th), math.sin(th)
-    # c + R (p - c), written as R p + (I - R) c: one affine combination per coordinate
-    cx, cy = c.x, c.y
-    if type(cx) is Lin and type(cy) is Lin and not cx.terms.keys() & cy.terms.keys():
-        # (I - R) c is the same for every point: made once, with the same floating-point
-        # operations per term (no unknown is in both of c's coordinates)
-        kx = combine(((1.0 - cs, cx), (sn, cy)))
-        ky = combine(((-sn, cx), (1.0 - cs, cy)))
-        return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0, kx))),
-                              combine(((sn, x), (cs, y), (1.0, ky))))), th, False
-    return (lambda x, y: (combine(((cs, x), (-sn, y), (1.0 - cs, cx), (sn, cy))),
-                          combine(((sn, x), (cs, y), (-sn, cx), (1.0 - cs, cy))))), th, False
+    return _Turn(c, th), th, False
+
+
+class _Turn:
+    """The turn by ``th`` (radians, counter-clockwise) about ``c`` (a :class:`PV`): called on a
+    point's coordinates ``(x, y)`` (expressions), the image ``c + R (p - c)``, written as
+    ``R p + (I - R) c``, one affine combination per coordinate (:func:`.expr.combine`).
+
+    :meth:`copy_point` makes a copied point's two rows directly, without the image's
+    expressions, when the point has no frame offset and no unknown of the center is one of
+    the point's (a patterned gear copies some 3,300 points a move)."""
+
+    __slots__ = ("cs", "sn", "cx", "cy", "kx", "ky", "rx", "ry")
+
+    def __init__(self, c: PV, th: float):
+        cs, sn = math.cos(th), math.sin(th)
+        self.cs, self.sn, self.cx, self.cy = cs, sn, c.x, c.y
+        self.kx = self.ky = self.rx = self.ry = None
+        cx, cy = c.x, c.y
+        if type(cx) is Lin and type(cy) is Lin and not cx.terms.keys() & cy.terms.keys():
+            # (I - R) c is the same for every point: made once, with the same floating-point
+            # operations per term (no unknown is in both of c's coordinates)
+            kx = self.kx = combine(((1.0 - cs, cx), (sn, cy)))
+            ky = self.ky = combine(((-sn, cx), (1.0 - cs, cy)))
+            self.rx = _turn_row(cs, -sn, kx)
+            self.ry = _turn_row(sn, cs, ky)
+
+    def __call__(self, x, y):
+        cs, sn, kx, ky = self.cs, self.sn, self.kx, self.ky
+        if kx is not None:
+            return (combine(((cs, x), (-sn, y), (1.0, kx))),
+                    combine(((sn, x), (cs, y), (1.0, ky))))
+        cx, cy = self.cx, self.cy
+        return (combine(((cs, x), (-sn, y), (1.0 - cs, cx), (sn, cy))),
+                combine(((sn, x), (cs, y), (-sn, cx), (1.0 - cs, cy))))
+
+    def copy_point(self, model, p: Point, dest: Structure, eqs: list) -> Point | None:
+        """The copy of ``p`` (a point of the frame, copied into it): a new point of ``dest``
+        started at the image's value, and its two rows ``q.x - X``, ``q.y - Y`` appended to
+        ``eqs``: the very Lins :meth:`__call__` and :func:`.expr.sub` make (terms in the same
+        order, floats by bits; ``tests/test_interp_fast.py``).  None when the center's terms
+        meet the point's unknowns (or share one): the general path then."""
+        rx = self.rx
+        if rx is None:
+            return None
+        ix, iy = p.ix, p.iy
+        ax, bx, kxr, vx, cx0, rcx = rx
+        ay, by, kyr, vy, cy0, rcy = self.ry
+        if kxr or kyr:
+            if any(i == ix or i == iy for i, _v, _w in kxr + kyr):
+                return None
+        xs = model.x
+        px, py = xs[ix], xs[iy]
+        # the image's value, summed as value_of sums the image's terms: its constant first
+        X = cx0 + vx[0] * px + vx[1] * py
+        Y = cy0 + vy[0] * px + vy[1] * py
+        for i, w, _v in kxr:
+            X += w * xs[i]
+        for i, w, _v in kyr:
+            Y += w * xs[i]
+        qx, qy = model.new_pair(X, Y, True, dest, p.label)
+        tx = {qx: 1.0, ix: ax, iy: bx}
+        for i, _w, v in kxr:
+            tx[i] = v
+        ty = {qy: 1.0, ix: ay, iy: by}
+        for i, _w, v in kyr:
+            ty[i] = v
+        eqs.append(equation(_lin(tx, rcx)))
+        eqs.append(equation(_lin(ty, rcy)))
+        return Point(qx, qy, dest, None, p.label)
+
+
+def _turn_row(a: float, b: float, k: Lin) -> tuple:
+    """What a turned point's coordinate ``combine(((a, x), (b, y), (1.0, k)))`` (``x``, ``y``
+    a point's own unknowns ``{i: 1.0}``, ``k`` the center's part) and its row ``q - X``
+    (:func:`.expr.sub`) are made of, for :meth:`_Turn.copy_point`: ``(row's coefficient of
+    x, of y, [(unknown of k, image's coefficient, row's coefficient)], (image's
+    coefficients of x and y), image's constant, row's constant)``: each float the very
+    operation those functions do."""
+    ix_coef = 0.0 + a * 1.0                 # combine: get(i, 0.0) + k * v
+    iy_coef = 0.0 + b * 1.0
+    const = 0.0 + a * 0.0                   # combine: s = c; s += k * e.const
+    const += b * 0.0
+    const += 1.0 * k.const
+    ks = [(i, 0.0 + 1.0 * v) for i, v in k.terms.items()]
+    return (0.0 + ix_coef * -1.0, 0.0 + iy_coef * -1.0,     # sub: get(k, 0.0) + v * -1.0
+            [(i, w, 0.0 + w * -1.0) for i, w in ks], (ix_coef, iy_coef), const,
+            0.0 + const * -1.0)
 
 
 def _reflect(a: PV, b: PV):
@@ -79,6 +155,7 @@ class _Cloner:
         self.ctx, self.frame, self.xf, self.flip = ctx, frame, xf, flip
         self.line = line                # a mirror's line: its ends (PV), in `frame`
         self.rot = rot
+        self.turn = xf if type(xf) is _Turn else None      # its rows made directly
         self.line_angle = line_angle
         self.points: dict = {}
         self.geoms: dict = {}
@@ -86,8 +163,14 @@ class _Cloner:
         self.eqs: list = []
 
     def point(self, p: Point, dest: Structure) -> Point:
-        if p in self.points:
-            return self.points[p]
+        q = self.points.get(p)
+        if q is not None:
+            return q
+        if self.turn is not None and p.owner is self.frame and dest is self.frame:
+            q = self.turn.copy_point(self.ctx.model, p, dest, self.eqs)
+            if q is not None:
+                self.points[p] = q
+                return q
         X, Y = self.xf(*p.in_frame(self.frame))
         value_of = self.ctx.value_of
         ix, iy = self.ctx.model.new_pair(value_of(X), value_of(Y), True, dest, p.label)

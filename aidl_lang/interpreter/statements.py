@@ -251,7 +251,7 @@ class Statements:
         return val
 
     def _import(self, st: A.Import, fctx: FileCtx) -> None:
-        from ..parser import parse
+        from ..parser import parse_import
         raw = st.path
         try:
             target = resolve_import(raw, fctx.path)
@@ -267,7 +267,7 @@ class Statements:
                 text = read_import(target, raw)
             except ImportRefused as ex:
                 raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint)
-            prog = parse(text, key, self.sink)
+            prog = parse_import(text, key, self.sink)
             self.loading.append(key)
             saved = (self.scope, self.file)
             try:
