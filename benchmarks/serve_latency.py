@@ -6,7 +6,11 @@ and report the time from the slider's ``input`` event to the new picture painted
 queued from the animation frame after the SVG was put in the page), median and p95; then save the file (a
 comment appended) and report the time from the write to the new picture.
 
-    .venv/bin/python -m benchmarks.serve_latency [--moves 20] [EXAMPLE.aidl ...]
+    .venv/bin/python -m benchmarks.serve_latency [--moves 20] [--param NAME] [--rest S] [EXAMPLE.aidl ...]
+
+``--param`` moves only the named params; ``--rest`` lets each slider rest that many seconds
+after its picture (a user who lets go and looks; the shape checks and the server's idle-time
+collection run then), where the default moves it again at once (a drag).
 
 The helpers :func:`served` and :func:`chromium` are shared with ``tests/test_serve_browser.py``.
 """
@@ -105,7 +109,8 @@ def p95(xs):
     return xs[min(len(xs) - 1, int(round(0.95 * (len(xs) - 1))))]
 
 
-def measure(example: Path, ctx, moves: int) -> dict:
+def measure(example: Path, ctx, moves: int, only: list[str] | None = None,
+            rest: float = 0.0) -> dict:
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d) / example.name
         shutil.copy(example, tmp)
@@ -114,7 +119,8 @@ def measure(example: Path, ctx, moves: int) -> dict:
         with served(tmp) as url:
             page = open_page(ctx, url)
             params = [p for p in page.evaluate("window.aidl.state.params")
-                      if p["kind"] in ("length", "angle", "number")]
+                      if p["kind"] in ("length", "angle", "number")
+                      and (not only or p["name"] in only)]
             lat = []
             for p in params:
                 lo, hi = p["value"], p["max"] if p["max"] > p["value"] else p["min"]
@@ -122,6 +128,7 @@ def measure(example: Path, ctx, moves: int) -> dict:
                     v = lo + (hi - lo) * 0.3 * k / moves
                     v = round(round(v / p["step"]) * p["step"], 9)
                     lat.append(move_slider(page, p["name"], v))
+                    time.sleep(rest)
                 move_slider(page, p["name"], p["value"])
             saves = [save_latency(page, tmp, tmp.read_text() + f"\n# saved {i}\n") for i in range(5)]
             warm = page.evaluate("window.aidl.state.view.timing.warm")
@@ -140,6 +147,9 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("examples", nargs="*")
     ap.add_argument("--moves", type=int, default=10, help="slider positions per param")
+    ap.add_argument("--param", action="append", help="move only this param (repeatable)")
+    ap.add_argument("--rest", type=float, default=0.0,
+                    help="seconds the slider rests after each picture (0: a drag)")
     a = ap.parse_args(argv)
     files = [Path(e) for e in a.examples] or sorted((ROOT / "examples").glob("*.aidl"))
     print(f"{'example':22} {'params':>6} {'moves':>5} {'slider median ms':>16} {'p95 ms':>7} "
@@ -147,7 +157,7 @@ def main(argv=None) -> int:
     rows = []
     with chromium() as ctx:
         for f in files:
-            r = measure(f, ctx, a.moves)
+            r = measure(f, ctx, a.moves, a.param, a.rest)
             rows.append(r)
             med = f"{r['median']:.1f}" if r["median"] is not None else "-"
             p = f"{r['p95']:.1f}" if r["p95"] is not None else "-"
