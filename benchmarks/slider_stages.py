@@ -13,8 +13,10 @@ result's edges and vertices against, built once per move, on the first ``build``
 (the exact outlines put back on the curves, :func:`aidl_lang.output.part.build`, the chord
 grids already built), ``svg`` (the
 writer on that output), ``check`` (:func:`check_drawing`, what ``update_checks`` runs
-after the picture) and ``topology`` (the rest of ``update_checks``: the drawing's
-:func:`~aidl_lang.output.checks.topology` for W0510).  With ``--callgrind`` each stage also runs three times in a process under
+after the picture), ``topology`` (the rest of ``update_checks``: the drawing's
+:func:`~aidl_lang.output.checks.topology` for W0510) and ``picture`` (what a move does after
+the solve, as one: :func:`~aidl_lang.pipeline.after_solve` with the compile's deadline, as
+``Session.set_params`` calls it, then the SVG of its drawing, every arc made afresh).  With ``--callgrind`` each stage also runs three times in a process under
 ``valgrind --tool=callgrind --instr-atstart=no`` that switches the instrumentation on around
 those runs only (``callgrind_control -i``), so the count is the stage's alone, per run:
 the machine's load does not change it (a minute or more per stage under valgrind).
@@ -29,7 +31,7 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-STAGES = ("solver", "render", "chords", "build", "svg", "check", "topology")
+STAGES = ("solver", "render", "chords", "build", "svg", "check", "topology", "picture")
 
 CHILD = r"""
 import os, subprocess, sys, time
@@ -40,6 +42,8 @@ from aidl_lang.output import to_svg
 from aidl_lang.output.booleans import render_model
 from aidl_lang.output.checks import check_drawing, topology
 from aidl_lang.output.part import build
+from aidl_lang.limits import Deadline
+from aidl_lang.pipeline import after_solve
 from aidl_lang.serve.session import Session
 from aidl_lang.solver import Solver, run
 path, stage, runs, mode = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
@@ -58,7 +62,11 @@ fn = {"solver": lambda: Solver(model), "render": lambda: render_model(model),
                          setattr(drawing.exact, "_eg", None), drawing.exact._ends_grid()),
       "build": lambda: build(drawing, "drive"), "svg": lambda: to_svg(out, title="drive"),
       "check": lambda: check_drawing(drawing, DiagnosticSink()),
-      "topology": lambda: topology(drawing)}[stage]
+      "topology": lambda: topology(drawing),
+      "picture": lambda: to_svg(after_solve(DiagnosticSink(), model, shape_checks=False,
+                                            deadline=Deadline(time.monotonic() + 600,
+                                                              DEFAULT_BUDGET.scaled(100))),
+                                title="drive")}[stage]
 fn()
 if mode == "cpu":
     best = min((lambda t: (fn(), time.process_time() - t)[1])(time.process_time())
