@@ -2,6 +2,7 @@
 session's warm re-solve, and the server's routes and guards (Starlette's TestClient)."""
 from __future__ import annotations
 
+import contextlib
 import json
 import re
 import time
@@ -416,9 +417,10 @@ def test_internal_errors_in_sliders_and_downloads_are_diagnostics(tmp_path, monk
     assert s.set_params({"w": "50mm"})["ok"]
 
 
-@pytest.fixture
-def ranged_ws(tmp_path):
-    """A websocket to a server of RANGED (params w, turns), its first view read."""
+@contextlib.contextmanager
+def _ranged_server(tmp_path):
+    """A server of RANGED (params w, turns) and a websocket to it, its first view read:
+    ``(ws, hub)``."""
     from starlette.testclient import TestClient
     from aidl_lang.serve.app import create_app
     f = tmp_path / "r.aidl"
@@ -428,7 +430,14 @@ def ranged_ws(tmp_path):
         with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
                                                       "origin": BASE}) as ws:
             assert _recv(ws)["ok"]
-            yield ws, app.state.hub.session
+            yield ws, app.state.hub
+
+
+@pytest.fixture
+def ranged_ws(tmp_path):
+    """A websocket to a server of RANGED (params w, turns), its first view read."""
+    with _ranged_server(tmp_path) as (ws, hub):
+        yield ws, hub.session
 
 
 def _set_ok(ws, i, w="50mm"):
@@ -594,29 +603,21 @@ def test_the_collector_runs_after_a_slider_move_not_inside_it(ranged_ws, gc_log)
 def test_a_long_drag_is_collected_every_max_uncollected_compiles(tmp_path, monkeypatch, gc_log):
     """A slider dragged without a rest never leaves the server idle: a collection still runs
     after every MAX_UNCOLLECTED compiles, so the garbage of a drag stays bounded."""
-    from starlette.testclient import TestClient
     from aidl_lang.serve import app as app_mod
     monkeypatch.setattr(app_mod, "IDLE_DELAY", 30.0)          # never idle during the test
-    f = tmp_path / "ranged.aidl"
-    f.write_text(RANGED)
-    app = app_mod.create_app(f, PORT, watch=False)
-    hub = app.state.hub
-    with TestClient(app, base_url=BASE) as client:
-        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
-                                                      "origin": BASE}) as ws:
-            _recv(ws)
-            gc_log.clear()                   # collections before the server disabled them
-            moves = 3 * app_mod.MAX_UNCOLLECTED
-            for i in range(1, moves + 1):
-                _set_ok(ws, i, f"{40 + i % 7}mm")
-            deadline = time.perf_counter() + 20
-            while hub.collections < 3 and time.perf_counter() < deadline:
-                time.sleep(0.02)
-            # the load and the moves: 1 + 24 compiles, a collection after the 8th, 16th, 24th
-            # (the load's own waits IDLE_DELAY)
-            assert hub.collections == 3, (hub.collections, hub.uncollected)
-            assert hub.uncollected == 1
-            assert [g for g, _ in gc_log] == [2, 2, 2]
+    with _ranged_server(tmp_path) as (ws, hub):
+        gc_log.clear()                   # collections before the server disabled them
+        moves = 3 * app_mod.MAX_UNCOLLECTED
+        for i in range(1, moves + 1):
+            _set_ok(ws, i, f"{40 + i % 7}mm")
+        deadline = time.perf_counter() + 20
+        while hub.collections < 3 and time.perf_counter() < deadline:
+            time.sleep(0.02)
+        # the load and the moves: 1 + 24 compiles, a collection after the 8th, 16th, 24th
+        # (the load's own waits IDLE_DELAY)
+        assert hub.collections == 3, (hub.collections, hub.uncollected)
+        assert hub.uncollected == 1
+        assert [g for g, _ in gc_log] == [2, 2, 2]
 
 
 def test_the_collector_is_restored_when_the_server_stops(tmp_path):
@@ -634,25 +635,17 @@ def test_the_collector_is_restored_when_the_server_stops(tmp_path):
 def test_a_drag_is_collected_once_when_it_rests(tmp_path, monkeypatch, gc_log):
     """Moves closer together than IDLE_DELAY are not collected one by one: only the last
     compile's collection runs, once the slider rests."""
-    from starlette.testclient import TestClient
     from aidl_lang.serve import app as app_mod
     monkeypatch.setattr(app_mod, "IDLE_DELAY", 1.0)
-    f = tmp_path / "ranged.aidl"
-    f.write_text(RANGED)
-    app = app_mod.create_app(f, PORT, watch=False)
-    hub = app.state.hub
-    with TestClient(app, base_url=BASE) as client:
-        with client.websocket_connect("/ws", headers={"host": f"127.0.0.1:{PORT}",
-                                                      "origin": BASE}) as ws:
-            _recv(ws)
-            deadline = time.perf_counter() + 20
-            while hub.collections < 1 and time.perf_counter() < deadline:
-                time.sleep(0.02)                 # the load's own collection
-            before = hub.collections
-            t0 = time.perf_counter()
-            for i in range(1, 7):            # 6 moves, each well within 1 s of the last
-                _set_ok(ws, i, f"{40 + i}mm")
-                time.sleep(0.05)
-            drag = time.perf_counter() - t0
-            time.sleep(1.6)
-            assert hub.collections == before + 1, (hub.collections, before, drag)
+    with _ranged_server(tmp_path) as (ws, hub):
+        deadline = time.perf_counter() + 20
+        while hub.collections < 1 and time.perf_counter() < deadline:
+            time.sleep(0.02)                 # the load's own collection
+        before = hub.collections
+        t0 = time.perf_counter()
+        for i in range(1, 7):            # 6 moves, each well within 1 s of the last
+            _set_ok(ws, i, f"{40 + i}mm")
+            time.sleep(0.05)
+        drag = time.perf_counter() - t0
+        time.sleep(1.6)
+        assert hub.collections == before + 1, (hub.collections, before, drag)
