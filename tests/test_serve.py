@@ -649,3 +649,22 @@ def test_a_drag_is_collected_once_when_it_rests(tmp_path, monkeypatch, gc_log):
         drag = time.perf_counter() - t0
         time.sleep(1.6)
         assert hub.collections == before + 1, (hub.collections, before, drag)
+
+
+def test_a_large_model_is_collected_after_each_compile(tmp_path, monkeypatch, gc_log):
+    """A compile that leaves MAX_PENDING tracked objects or more is collected at once, without
+    waiting for a rest or for MAX_UNCOLLECTED compiles (a large model's garbage would
+    otherwise pile up over a drag)."""
+    from aidl_lang.serve import app as app_mod
+    monkeypatch.setattr(app_mod, "IDLE_DELAY", 30.0)          # never idle during the test
+    monkeypatch.setattr(app_mod, "MAX_PENDING", 1)            # any compile leaves more
+    with _ranged_server(tmp_path) as (ws, hub):
+        deadline = time.perf_counter() + 20
+        while hub.collections < 1 and time.perf_counter() < deadline:
+            time.sleep(0.02)                 # the load's own, at once too
+        for i in range(1, 4):
+            _set_ok(ws, i, f"{40 + i}mm")
+            deadline = time.perf_counter() + 20
+            while hub.collections < 1 + i and time.perf_counter() < deadline:
+                time.sleep(0.02)
+        assert hub.collections == 4 and hub.uncollected == 0, (hub.collections, hub.uncollected)

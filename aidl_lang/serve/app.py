@@ -40,6 +40,8 @@ from .session import Session
 CHECKS_DELAY = 0.05     # s a slider must rest before its picture's geometry checks run
 IDLE_DELAY = 0.2        # s without a compile before the cyclic garbage collector runs
 MAX_UNCOLLECTED = 8     # compiles at most between two collections (a long drag of a slider)
+MAX_PENDING = 1_000_000     # tracked objects made (less those freed) since the last collection
+                            # that start one at once (a gear pair's move leaves ~35,000)
 MAX_MESSAGE = 65_536    # characters of one WebSocket message
 MAX_DEPTH = 8           # nesting of arrays and objects in one message ({"values": {...}} is 2)
 MAX_VALUES = 256        # entries of one message's "values"
@@ -188,7 +190,9 @@ class Hub:
     app disables its automatic runs while it serves (:func:`create_app`'s lifespan) and
     :meth:`compiled` schedules :meth:`collect` once no compile has come for
     :data:`IDLE_DELAY` s, or at once after :data:`MAX_UNCOLLECTED` compiles (a slider
-    dragged for long), so each compile's garbage (a model's structures point at their
+    dragged for long) or once :data:`MAX_PENDING` more objects the collector tracks were made
+    than freed since the last collection (``gc.get_count()[0]``: a large model, whose garbage
+    should not wait for a rest), so each compile's garbage (a model's structures point at their
     parents: reference cycles) is freed without a collection stalling a slider's picture.
     Automatic collections used to run inside the moves: about 20 % of a ``gear_pair`` move,
     plus a full collection of 130-280 ms every ~6 moves (docs/dev/performance.md)."""
@@ -211,7 +215,8 @@ class Hub:
         """Call after a compile's picture was sent: schedules the collection."""
         self.count += 1
         self.uncollected += 1
-        self.spawn(self.collect(self.count, now=self.uncollected >= MAX_UNCOLLECTED))
+        now = self.uncollected >= MAX_UNCOLLECTED or gc.get_count()[0] >= MAX_PENDING
+        self.spawn(self.collect(self.count, now=now))
 
     async def collect(self, mark: int, now: bool = False) -> None:
         """The cyclic collection, under the lock (never during a compile): ``now``, or once
