@@ -668,3 +668,28 @@ def test_a_large_model_is_collected_after_each_compile(tmp_path, monkeypatch, gc
             while hub.collections < 1 + i and time.perf_counter() < deadline:
                 time.sleep(0.02)
         assert hub.collections == 4 and hub.uncollected == 0, (hub.collections, hub.uncollected)
+
+
+def test_no_collection_between_a_moves_compile_and_its_picture(tmp_path, monkeypatch, gc_log):
+    """A move that starts while the previous move's idle collection waits (within
+    IDLE_DELAY of it): that collection is dropped, not run between the new move's compile
+    and the sending of its picture (where it would delay the picture by a full collection)."""
+    from aidl_lang.serve import app as app_mod
+    monkeypatch.setattr(app_mod, "IDLE_DELAY", 0.1)
+    with _ranged_server(tmp_path) as (ws, hub):
+        real = hub.session.set_params
+
+        def slow(values):                    # the compile outlasts IDLE_DELAY
+            time.sleep(0.3)
+            return real(values)
+        monkeypatch.setattr(hub.session, "set_params", slow)
+        _set_ok(ws, 1, "41mm")
+        gc_log.clear()
+        t0 = time.perf_counter()
+        _set_ok(ws, 2, "42mm")               # sent at once: move 1's collection is pending
+        t1 = time.perf_counter()
+        assert [round(t - t0, 3) for _, t in gc_log if t0 <= t <= t1] == []
+        deadline = t1 + 20
+        while not gc_log and time.perf_counter() < deadline:
+            time.sleep(0.02)
+        assert gc_log and gc_log[0][1] - t1 >= app_mod.IDLE_DELAY * 0.9  # move 2's, later

@@ -193,7 +193,10 @@ class Hub:
     dragged for long) or once :data:`MAX_PENDING` more objects the collector tracks were made
     than freed since the last collection (``gc.get_count()[0]``: a large model, whose garbage
     should not wait for a rest), so each compile's garbage (a model's structures point at their
-    parents: reference cycles) is freed without a collection stalling a slider's picture.
+    parents: reference cycles) is freed without a collection stalling a slider's picture.  A
+    compile holds :attr:`lock` until its result is sent, and a collection takes the lock, so
+    none runs between the two; an idle collection waiting when a newer compile starts is
+    dropped (the newer one schedules its own).
     Automatic collections used to run inside the moves: about 20 % of a ``gear_pair`` move,
     plus a full collection of 130-280 ms every ~6 moves (docs/dev/performance.md)."""
 
@@ -201,8 +204,8 @@ class Hub:
         self.session = session
         self.lock = asyncio.Lock()
         self.clients: set[WebSocket] = set()
-        self.tasks: set[asyncio.Task] = set()      # pending shape checks (kept referenced)
-        self.count = 0              # compiles so far
+        self.tasks: set[asyncio.Task] = set()      # pending checks, collections (referenced)
+        self.started = 0            # compiles started (counted under the lock)
         self.uncollected = 0        # compiles since the last collection
         self.collections = 0        # collections run (read by the tests)
 
@@ -212,22 +215,22 @@ class Hub:
         task.add_done_callback(self.tasks.discard)
 
     def compiled(self) -> None:
-        """Call after a compile's picture was sent: schedules the collection."""
-        self.count += 1
+        """Call after a compile's result was sent (outside the lock): schedules the
+        collection."""
         self.uncollected += 1
         now = self.uncollected >= MAX_UNCOLLECTED or gc.get_count()[0] >= MAX_PENDING
-        self.spawn(self.collect(self.count, now=now))
+        self.spawn(self.collect(self.started, now=now))
 
     async def collect(self, mark: int, now: bool = False) -> None:
-        """The cyclic collection, under the lock (never during a compile): ``now``, or once
-        :data:`IDLE_DELAY` s have passed with the compile that counted ``mark`` still the
-        latest one."""
+        """The cyclic collection, under the lock, which a compile holds until its result is
+        sent (so never between the two): ``now``, or once :data:`IDLE_DELAY` s have passed
+        with no compile started after the one that counted ``mark``."""
         if not now:
             await asyncio.sleep(IDLE_DELAY)
-            if self.count != mark:
+            if self.started != mark:
                 return                              # a newer compile schedules its own
         async with self.lock:
-            if not self.uncollected or (not now and self.count != mark):
+            if not self.uncollected or (not now and self.started != mark):
                 return
             self.uncollected = 0
             await run_in_threadpool(gc.collect)
@@ -235,8 +238,9 @@ class Hub:
 
     async def reload(self) -> dict:
         async with self.lock:
+            self.started += 1
             view = await run_in_threadpool(self.session.load)
-        await self.broadcast(view)
+            await self.broadcast(view)
         async with self.lock:                       # then the DOF summary (SVDs), same version
             dof_view = await run_in_threadpool(self.session.update_dof)
         if dof_view is not None:
@@ -245,9 +249,17 @@ class Hub:
         self.compiled()
         return view
 
-    async def set_params(self, values: dict) -> dict:
+    async def move(self, ws: WebSocket, msg: dict) -> None:
+        """A customizer message ``msg`` from page ``ws``: compile it, answer ``ws`` with the
+        view (``id`` echoed), show it to the other pages; then its shape checks and the
+        collection are scheduled."""
         async with self.lock:
-            return await run_in_threadpool(self.session.set_params, values)
+            self.started += 1
+            view = await run_in_threadpool(self.session.set_params, msg["values"])
+            await ws.send_text(json.dumps({"type": "view", "id": msg["id"], **view}))
+            await self.broadcast(view, skip=ws)
+        self.spawn(self.shape_checks())
+        self.compiled()
 
     async def shape_checks(self) -> None:
         """After a slider's picture was sent: its geometry checks, once the slider has rested
@@ -308,6 +320,7 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
             values[k.strip()] = v.strip()
         try:
             async with hub.lock:
+                hub.started += 1
                 drawing, extra = await run_in_threadpool(hub.session.drawing, values)
                 if drawing is None:
                     return JSONResponse({"ok": False, "diagnostics": extra}, status_code=422)
@@ -345,11 +358,7 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                 msg, slot["msg"] = slot["msg"], None
                 if msg is None:
                     continue
-                view = await hub.set_params(msg["values"])
-                await ws.send_text(json.dumps({"type": "view", "id": msg["id"], **view}))
-                await hub.broadcast(view, skip=ws)
-                hub.spawn(hub.shape_checks())
-                hub.compiled()
+                await hub.move(ws, msg)
 
         task = asyncio.create_task(worker())
         try:
