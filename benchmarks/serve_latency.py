@@ -12,7 +12,8 @@ comment appended) and report the time from the write to the new picture.
 after its picture (a user who lets go and looks; the shape checks and the server's idle-time
 collection run then), where the default moves it again at once (a drag).
 
-The helpers :func:`served` and :func:`chromium` are shared with ``tests/test_serve_browser.py``.
+The helpers :func:`served` and :func:`chromium` are shared with ``tests/test_serve_browser.py``,
+:func:`serving` with ``benchmarks/slider_ws.py``.
 """
 from __future__ import annotations
 
@@ -35,12 +36,12 @@ CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic"
 
 
 @contextlib.contextmanager
-def served(path: Path, timeout: float = 30.0):
-    """Run ``aidl serve PATH --port 0`` in a subprocess; yield its URL; stop it after."""
-    exe = Path(sys.executable).with_name("aidl")
-    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "aidl_lang.cli"]
+def serving(cmd: list[str], path: Path, cwd: Path, env: dict | None = None,
+            timeout: float = 30.0):
+    """Run ``CMD serve PATH --port 0`` in a subprocess (``cwd``, ``env``); yield its URL and
+    the process; stop it after."""
     proc = subprocess.Popen(cmd + ["serve", str(path), "--port", "0"], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True, cwd=str(path.parent))
+                            stderr=subprocess.STDOUT, text=True, cwd=str(cwd), env=env)
     try:
         deadline = time.monotonic() + timeout
         url = None
@@ -54,7 +55,7 @@ def served(path: Path, timeout: float = 30.0):
                 break
         if url is None:
             raise RuntimeError(f"aidl serve did not start: {proc.stdout.read() if proc.poll() is not None else ''}")
-        yield url
+        yield url, proc
     finally:
         proc.terminate()
         try:
@@ -62,6 +63,16 @@ def served(path: Path, timeout: float = 30.0):
         except subprocess.TimeoutExpired:
             proc.kill()
             proc.wait()
+
+
+@contextlib.contextmanager
+def served(path: Path, timeout: float = 30.0):
+    """Run ``aidl serve PATH --port 0`` (this environment's) in a subprocess; yield its URL;
+    stop it after."""
+    exe = Path(sys.executable).with_name("aidl")
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "aidl_lang.cli"]
+    with serving(cmd, path, path.parent, timeout=timeout) as (url, _proc):
+        yield url
 
 
 @contextlib.contextmanager

@@ -34,6 +34,9 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+from benchmarks.serve_latency import serving  # noqa: E402  (the server's start and stop)
+
 ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "PYTHONPATH")}
 
 
@@ -56,52 +59,41 @@ def one_round(tree: Path, file: Path, param: str, values: list[str], moves: int,
     CPU ms during each move, the server's CPU ms per move with the rests)."""
     from websockets.sync.client import connect
     env = dict(ENV, PYTHONPATH=str(tree))
-    with tempfile.TemporaryDirectory() as cwd:
-        proc = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "serve", str(file),
-                                 "--port", "0"], cwd=cwd, env=env, stdout=subprocess.PIPE,
-                                stderr=subprocess.PIPE, text=True)
-        try:
-            line = proc.stdout.readline()
-            if "http://" not in line:
-                raise SystemExit(f"{tree}: aidl serve did not start: {line}{proc.stderr.read()}")
-            url = line.split("http://", 1)[1].split("/", 1)[0]
-            walls, cpus = [], []
-            with connect(f"ws://{url}/ws", max_size=None, open_timeout=120) as ws:
-                first = json.loads(ws.recv(timeout=300))
-                if first.get("type") != "view":
-                    raise SystemExit(f"{tree}: the first frame is not a view: {first}")
+    with tempfile.TemporaryDirectory() as cwd, \
+            serving([sys.executable, "-m", "aidl_lang.cli"], file, Path(cwd), env,
+                    timeout=300) as (url, proc):
+        walls, cpus = [], []
+        with connect(url.replace("http://", "ws://") + "ws", max_size=None,
+                     open_timeout=120) as ws:
+            first = json.loads(ws.recv(timeout=300))
+            if first.get("type") != "view":
+                raise SystemExit(f"{tree}: the first frame is not a view: {first}")
+            time.sleep(rest)
+            cpu0 = None
+            for k in range(moves + 2):
+                if k == 2:
+                    cpu0 = cpu_of(proc.pid)
+                value = values[k % len(values)]
+                t, c = time.perf_counter(), cpu_of(proc.pid)
+                ws.send(json.dumps({"type": "set", "id": k, "values": {param: value}}))
+                while True:
+                    msg = json.loads(ws.recv(timeout=300))
+                    if msg.get("type") == "view" and msg.get("id") == k:
+                        break
+                    if msg.get("type") == "error":
+                        raise SystemExit(f"{tree}: {msg}")
+                wall = time.perf_counter() - t
+                cpu_move = cpu_of(proc.pid) - c
+                if not msg.get("ok", True) or msg.get("svg") is None:
+                    raise SystemExit(f"{tree}: the move to {param}={value} failed: "
+                                     f"{str(msg.get('diagnostics'))[:400]}")
+                if k >= 2:
+                    walls.append(wall * 1000)
+                    cpus.append(cpu_move * 1000)
                 time.sleep(rest)
-                cpu0 = None
-                for k in range(moves + 2):
-                    if k == 2:
-                        cpu0 = cpu_of(proc.pid)
-                    value = values[k % len(values)]
-                    t, c = time.perf_counter(), cpu_of(proc.pid)
-                    ws.send(json.dumps({"type": "set", "id": k, "values": {param: value}}))
-                    while True:
-                        msg = json.loads(ws.recv(timeout=300))
-                        if msg.get("type") == "view" and msg.get("id") == k:
-                            break
-                        if msg.get("type") == "error":
-                            raise SystemExit(f"{tree}: {msg}")
-                    wall = time.perf_counter() - t
-                    cpu_move = cpu_of(proc.pid) - c
-                    if not msg.get("ok", True) or msg.get("svg") is None:
-                        raise SystemExit(f"{tree}: the move to {param}={value} failed: "
-                                         f"{str(msg.get('diagnostics'))[:400]}")
-                    if k >= 2:
-                        walls.append(wall * 1000)
-                        cpus.append(cpu_move * 1000)
-                    time.sleep(rest)
-                # the CPU of the moves, their checks included (they run during the rests)
-                cpu = (cpu_of(proc.pid) - cpu0) * 1000 / moves
-            return walls, cpus, cpu
-        finally:
-            proc.terminate()
-            try:
-                proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                proc.kill()
+            # the CPU of the moves, their checks included (they run during the rests)
+            cpu = (cpu_of(proc.pid) - cpu0) * 1000 / moves
+        return walls, cpus, cpu
 
 
 def main() -> None:
@@ -128,7 +120,7 @@ def main() -> None:
     for r in range(a.rounds):
         for t in trees:
             walls, cpus, cpu = one_round(t, file, a.param, values, a.moves, a.rest)
-            q = statistics.quantiles(walls, n=10)
+            q = statistics.quantiles(walls, n=10, method="inclusive")
             if a.verbose:
                 print("   wall", " ".join(f"{w:.0f}" for w in walls))
                 print("   CPU ", " ".join(f"{w:.0f}" for w in cpus))
