@@ -129,7 +129,8 @@ class Result:
     ``source`` (the program text), ``units`` and ``unit_scale`` (the file's length unit and its
     size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
     solve, drawing), ``not_searched`` (the user constraints :meth:`find_redundant` did not
-    look at: out of time or in too large a block)."""
+    look at) and ``not_searched_why`` (why: ``"out of time"``, ``"too large"`` or both, joined
+    by " and "; "" when all were searched)."""
 
     def __init__(self, compiled, path: str, source: str | None) -> None:
         self.compiled = compiled
@@ -142,6 +143,7 @@ class Result:
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
         self.not_searched = 0          # user constraints find_redundant did not look at
+        self.not_searched_why = ""     # why ("out of time", "too large")
 
     # ------------------------------------------------------------------ status
     @property
@@ -252,8 +254,10 @@ class Result:
             if self.compiled.ok and self.compiled.solve is not None:
                 from .pipeline import report_redundancies
                 before = len(self.sink.items)
+                why: set = set()
                 self.not_searched = report_redundancies(self.sink, self.compiled.solve,
-                                                        seconds, max_rows, deadline)
+                                                        seconds, max_rows, deadline, why)
+                self.not_searched_why = " and ".join(sorted(why))
                 from .pipeline import report_sliding
                 self._sliding = report_sliding(self.sink, self.compiled.solve)
                 self._redundant = list(self.sink.items[before:])

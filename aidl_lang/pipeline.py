@@ -366,7 +366,7 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
 
 def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                         seconds: float | None = None, max_rows: int | None = None,
-                        deadline: float | None = None) -> int:
+                        deadline: float | None = None, why: set | None = None) -> int:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
     measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
     (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
@@ -379,7 +379,7 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         deadline = end if deadline is None else min(deadline, end)
     skipped: list = []
     reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
-                        skipped=skipped)
+                        skipped=skipped, why=why)
     grouped = _report_groups(sink, reds)
     for red in reds:
         c = red.constraint

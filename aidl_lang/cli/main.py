@@ -367,9 +367,12 @@ def cmd_check(args) -> int:
                 # the whole search, in what is left of the budget (2 500 chained points took
                 # 15 s more, on top of the compile, before their rows were peeled)
                 program.find_redundant(None, None, deadline=end)
-                extra["redundancy"] = {"not_searched": program.not_searched}
             else:
                 program.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS, deadline=end)
+            if args.dof or program.not_searched:
+                extra["redundancy"] = {"not_searched": program.not_searched}
+                if program.not_searched:
+                    extra["redundancy"]["why"] = program.not_searched_why
             dofs_all = (dofs if dofs is not None
                         else degrees_of_freedom(res.solve.solver, floating=False, deadline=end))
             extra["freedom"] = freedom_text(dofs_all, program.sliding())
@@ -388,13 +391,18 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
-            if program.not_searched:
-                n = program.not_searched
-                why = (f"out of time: the budget's {_budget(args).seconds:g} s of wall time; "
-                       "--budget K gives K times more" if time.monotonic() >= end
-                       else "in a block of rows too large to rank")
-                print(f"redundant constraints (W0401): not counted: {n} constraint"
-                      f"{'s' if n != 1 else ''} not searched ({why})")
+        if program.not_searched:
+            n = program.not_searched
+            why = program.not_searched_why
+            if why == "out of time":
+                why += (f": the budget's {_budget(args).seconds:g} s of wall time; --budget K "
+                        "gives K times more" if args.dof else
+                        f": the search's {REDUNDANCY_SECONDS:g} s; `--dof` searches in the "
+                        "whole budget")
+            elif why == "too large" and not args.dof:
+                why += f": blocks past {REDUNDANCY_ROWS} rows; `--dof` ranks larger ones"
+            print(f"redundant constraints (W0401): not counted: {n} constraint"
+                  f"{'s' if n != 1 else ''} not searched ({why})")
         for v in values or ():
             print(v.text())
         if "describe" in extra:

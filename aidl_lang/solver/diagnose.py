@@ -72,7 +72,8 @@ def _order_key(c: Constraint, r: int):
     return (0 if c.implicit else 1, pos, r)
 
 
-def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None):
+def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None,
+                 basis: dict | None = None):
     """Greedy rank-revealing pass over the rows of dense ``J`` in ``order``.
 
     Yields ``(row, support, coef)`` for each row that is a combination of earlier independent
@@ -85,12 +86,21 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None)
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
     Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (``time.monotonic()``,
-    looked at before every row) it stops early."""
+    looked at before every row) it stops early: one row costs at most ``3 rank n`` flops, so
+    the pass needs no estimate before it starts.
+
+    ``basis``: a dict that receives ``"Q"`` (the orthonormal basis, one row per independent
+    row, growing) and ``"indep"`` (those rows, in ``order``): after the pass,
+    ``Q[:len(indep)]`` spans the rows taken, and its first ``j`` rows span the first ``j``
+    independent rows of ``order`` (what :func:`redundancies` measures the constructors'
+    span with)."""
     m, n = J.shape
     cap = min(m, n)
     Q = np.zeros((cap, n))
     L = np.zeros((cap, cap))
     indep: list[int] = []
+    if basis is not None:
+        basis["Q"], basis["indep"] = Q, indep
     k = 0
     for step, r in enumerate(order):
         if deadline is not None and time.monotonic() > deadline:
@@ -196,28 +206,117 @@ def _dense_block_rank(J: np.ndarray) -> int:
     return rank
 
 
+def _pin_closure(solver, rows: np.ndarray, x: np.ndarray):
+    """The pinning rows that ``rows`` (solver rows) reach: ``(vars, pin_rows)``, the pinned
+    parameters the rows read and every pinned parameter those are computed from (increasing),
+    and, per parameter, the row of :attr:`~.hierarchy.Solver.rows_built` that pins it.
+
+    Pinned geometry (:func:`~.system.pinned`) is held at values its own rows fix, and those
+    rows are dropped from the solve; other rows may still read it (a bounding box of a gear,
+    a ``Distance`` to a fixed point).  With ``P`` the pinning rows (square and triangular on
+    the pinned columns, zero elsewhere) and ``O`` the solve's rows, every dependency
+    ``y^T J = 0`` of the whole system is one of ``O``'s over the free columns (``y_O``) with
+    ``y_P^T = -y_O^T O_P P^-1``: its pinning rows are those of the parameters ``O`` reads and
+    of the parameters these are computed from, no others.  So a conflict or a dependency found
+    on ``rows`` plus this closure is the one the unpinned system has, with every constraint
+    it involves named.  Empty arrays when nothing pinned is read."""
+    pins = solver.pins
+    none = np.zeros(0, dtype=np.int64)
+    if not len(pins) or not len(rows):
+        return none, none
+    pv = pins.var
+    order = np.argsort(pv)
+    pv_sorted = pv[order]
+    if len(rows) * len(pv) <= DENSE_CELLS:          # numpy only (no SciPy on a cold check)
+        Jr = solver.tape(rows).jacobian(x, pv_sorted, dense=True)
+        read = np.flatnonzero(np.any(Jr != 0, axis=0))
+    else:
+        Jr = solver.tape(rows).jacobian(x, pv_sorted).tocoo()
+        read = unique(np.asarray(Jr.col[Jr.data != 0], dtype=np.int64))
+    if not len(read):
+        return none, none
+    row_of = {int(v): int(r) for v, r in zip(pv_sorted, pins.row[order])}
+    todo = pv_sorted[read].tolist()
+    seen = set(todo)
+    while todo:
+        v = todo.pop()
+        r = row_of[v]
+        for u in pins.cols[pins.indptr[r]:pins.indptr[r + 1]].tolist():
+            if u != v and u in row_of and u not in seen:
+                seen.add(u)
+                todo.append(u)
+    vs = np.array(sorted(seen), dtype=np.int64)
+    return vs, np.array([row_of[v] for v in vs.tolist()], dtype=np.int64)
+
+
+def _with_pins(solver, t, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
+               dense: bool | None = None):
+    """``(J, cols_all, pin_rows)``: the Jacobian of the solver rows ``rows`` (tape ``t``)
+    over ``cols`` and the pinned parameters they reach, with the pinning rows that reach
+    them (:func:`_pin_closure`, rows of :attr:`~.hierarchy.Solver.rows_built`) appended
+    below, over ``cols_all`` (increasing).  Dense (NumPy only) when ``dense``, or when
+    ``dense`` is None and it has at most :data:`DENSE_CELLS` cells; else CSR."""
+    pvars, prows = _pin_closure(solver, rows, x)
+    cols_all = unique(np.concatenate([np.asarray(cols, dtype=np.int64), pvars])) \
+        if len(pvars) else np.asarray(cols, dtype=np.int64)
+    m = len(rows) + len(prows)
+    if dense is None:
+        dense = m * len(cols_all) <= DENSE_CELLS
+    if dense and not len(cols_all):
+        return np.zeros((m, 0)), cols_all, prows
+    J = t.jacobian(x, cols_all, dense=dense)
+    if not len(prows):
+        return J, cols_all, prows
+    pins = solver.pins
+    lo, hi = pins.indptr[prows], pins.indptr[prows + 1]
+    n = hi - lo
+    at = np.repeat(lo - np.cumsum(n) + n, n) + np.arange(int(n.sum()))
+    r = np.repeat(np.arange(len(prows)), n)
+    c = np.searchsorted(cols_all, pins.cols[at])
+    if dense:
+        P = np.zeros((len(prows), len(cols_all)))
+        np.add.at(P, (r, c), pins.vals[at])
+        return np.vstack([J, P]), cols_all, prows
+    import scipy.sparse as sp
+    P = sp.csr_matrix((pins.vals[at], (r, c)), shape=(len(prows), len(cols_all)))
+    return sp.vstack([J, P]).tocsr(), cols_all, prows
+
+
 def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
               tol: float = 1e-6) -> list[Conflict]:
-    """The conflicting constraint sets of the system ``rows`` x ``cols`` at ``x``."""
+    """The conflicting constraint sets of the system ``rows`` x ``cols`` at ``x``, together
+    with the pinning rows it reaches (:func:`_pin_closure`): a ``Distance`` between two
+    ``Fixed`` points conflicts with both ``Fixed``, pinned or not."""
     t = solver.tape(rows)
     F = t.evaluate(x)
     user = user_residuals(solver, rows, F, x)
     bad = np.abs(F) > tol
     if not bad.any():
         return []
-    J = t.jacobian(x, cols)
+    J, _, prows = _with_pins(solver, t, rows, cols, x, dense=False)
+    cons = [solver.rows.constraint[r] for r in rows]
+    keys = rows.tolist()
+    if len(prows):
+        F = np.concatenate([F, np.zeros(len(prows))])       # a pinned value holds its row
+        user = np.concatenate([user, np.zeros(len(prows))])
+        bad = np.concatenate([bad, np.zeros(len(prows), dtype=bool)])
+        built = solver.rows_built.constraint
+        cons += [built[r] for r in prows.tolist()]
+        keys += (len(solver.rows.exprs) + prows).tolist()
     lab = _components(J)
     local = np.flatnonzero(np.isin(lab, unique(lab[bad])))
     if len(local) > MAX_DENSE:
         return []
     Jd = J[local].toarray()
-    cons = [solver.rows.constraint[r] for r in rows[local]]
-    order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], int(rows[local[i]])))
+    Jd = Jd[:, np.any(Jd != 0, axis=0)]
+    cons = [cons[i] for i in local]
+    order = sorted(range(len(local)), key=lambda i: _order_key(cons[i], keys[local[i]]))
     out: list[Conflict] = []
     seen: set = set()
     Fl = F[local]
     deadline = getattr(solver, "deadline", None)
-    for r, support, coef in dependencies(Jd, order):
+    # the greedy pass looks at the deadline before every row: no estimate needed
+    for r, support, coef in dependencies(Jd, order, deadline):
         if len(out) >= MAX_CONFLICTS or (deadline is not None and time.monotonic() > deadline):
             break                        # the best sets found so far
         members = [r] + support
@@ -583,6 +682,20 @@ def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndar
     return r, (V * V).mean(axis=1) > 1e-12
 
 
+def _dense_refused(m: int, n: int, deadline: float | None, k: int = 0) -> str:
+    """Why a dense factorisation of an ``m`` x ``n`` matrix (after a projection on ``k``
+    basis rows, ``2 m n k`` flops more) must not start: ``"too large"`` past
+    :data:`MAX_SVD_FLOPS`, ``"out of time"`` when it would end past ``deadline`` at
+    :data:`SVD_FLOPS_PER_SECOND`; ``""`` when it may.  LAPACK cannot be interrupted, so every
+    SVD of the diagnostics asks first (issue 48)."""
+    flops = float(m) * float(n) * float(min(m, n)) + 2.0 * m * n * k
+    if flops > MAX_SVD_FLOPS:
+        return "too large"
+    if deadline is not None and time.monotonic() + flops / SVD_FLOPS_PER_SECOND > deadline:
+        return "out of time"
+    return ""
+
+
 def _svd_too_large(m: int, n: int) -> bool:
     """Whether a dense SVD of ``m`` x ``n`` would cost more than :data:`MAX_SVD_FLOPS`."""
     return float(m) * float(n) * float(min(m, n)) > MAX_SVD_FLOPS
@@ -809,7 +922,8 @@ def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> st
 
 
 def redundancies(solver, deadline: float | None = None,
-                 max_rows: int = MAX_DENSE, skipped: list | None = None) -> list[Redundant]:
+                 max_rows: int = MAX_DENSE, skipped: list | None = None,
+                 why: set | None = None) -> list[Redundant]:
     """User constraints that other constraints already imply, over the whole model's
     unknowns: what W0401 reports.
 
@@ -838,8 +952,16 @@ def redundancies(solver, deadline: float | None = None,
     failed solve reports conflicts instead).  Past ``deadline`` (``time.monotonic()``) the
     blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows
     (after the rows independent of all others by structure are peeled off,
-    :func:`_peeled_rows`); the user constraints so left out are appended to ``skipped``.  NumPy only while the Jacobian has at most
-    :data:`DENSE_CELLS` cells, so plain ``aidl check`` does not import SciPy for it."""
+    :func:`_peeled_rows`); the user constraints so left out are appended to ``skipped``, and
+    the reasons (``"out of time"``, ``"too large"``) added to ``why``.  No dense
+    factorisation is started without its cost estimated first (:func:`_dense_refused`): one
+    that would pass :data:`MAX_SVD_FLOPS` or end past ``deadline`` leaves its constraint out
+    ("too large" / "out of time") instead of running past the budget (issue 48: a gear pair
+    under a ``Below`` spent 99 s in one SVD of 6,264 columns).  The constructors' span that
+    "partly redundant" is measured against is the greedy pass's own basis (its first rows:
+    the constructors' rows come first in its order), not a separate SVD.  NumPy only while the
+    Jacobian has at most :data:`DENSE_CELLS` cells, so plain ``aidl check`` does not import
+    SciPy for it."""
     rows = np.arange(len(solver.rows.exprs), dtype=np.int64)
     rows = rows[solver.kind[rows] == 0]
     if not len(rows):
@@ -848,16 +970,28 @@ def redundancies(solver, deadline: float | None = None,
     t = solver.tape(rows)
     x = solver.x
     F = t.evaluate(x)
-    dense = len(rows) * len(cols) <= DENSE_CELLS
+    # the pinning rows the solve's rows reach take part (see _pin_closure): a dependency
+    # through pinned geometry names its pinning constraints, as without pinning
+    J, cols, prows = _with_pins(solver, t, rows, cols, x)
+    cons = [solver.rows.constraint[r] for r in rows]
+    keys = rows
+    in_closure: dict[int, int] = {}         # id(constraint) -> its pinning rows taken here
+    if len(prows):
+        built = solver.rows_built.constraint
+        extra = [built[r] for r in prows.tolist()]
+        for c in extra:
+            in_closure[id(c)] = in_closure.get(id(c), 0) + 1
+        cons += extra
+        keys = np.concatenate([rows, len(solver.rows.exprs) + prows])
+        F = np.concatenate([F, np.zeros(len(prows))])       # a pinned value holds its row
+        rows = np.arange(len(keys), dtype=np.int64)         # positions in J from here on
+    dense = isinstance(J, np.ndarray)
     if dense:
-        J = t.jacobian(x, cols, dense=True) if len(cols) else np.zeros((len(rows), 0))
-        lab = _dense_components(J) if len(cols) else np.arange(len(rows))
+        lab = _dense_components(J) if J.shape[1] else np.arange(J.shape[0])
         norms = np.sqrt((J * J).sum(axis=1))
     else:
-        J = t.jacobian(x, cols).tocsr()
         lab = _components(J)
         norms = np.sqrt(np.asarray(J.multiply(J).sum(axis=1)).ravel())
-    cons = [solver.rows.constraint[r] for r in rows]
     live = norms > 0.0                      # a row with no unknown left: held values only
     if not dense:
         # rows independent of all others by structure take no part in any dependency (a
@@ -871,11 +1005,15 @@ def redundancies(solver, deadline: float | None = None,
     contribution: dict[int, int] = {}       # rank(J) - rank(J without C), summed over blocks
     rank_c: dict[int, int] = {}             # rank(J_C)
     by: dict[int, list] = {}
-    unknown: set = set()                    # in a block too large to rank
+    unknown: dict = {}                      # id(constraint) -> why it was not searched
+
+    def leave_out(ids, reason: str) -> None:
+        for k_ in ids:
+            unknown.setdefault(k_, reason)
     for comp in unique(lab[live]):
         local = np.flatnonzero((lab == comp) & live)
         if deadline is not None and time.monotonic() > deadline:
-            unknown.update(id(cons[i]) for i in local)
+            leave_out((id(cons[i]) for i in local), "out of time")
             continue
         if len(local) == 1:                 # one row, independent of all others
             k = id(cons[local[0]])
@@ -892,19 +1030,32 @@ def redundancies(solver, deadline: float | None = None,
             Jd = None
             block = unique(J.indices[_row_entries(J, local)[0]])    # the block's columns
         if len(core) > min(max_rows, MAX_DENSE):
-            unknown.update(id(cons[i]) for i in local)
+            leave_out((id(cons[i]) for i in local), "too large")
             continue
         null = []
+        gs: dict = {}                       # the greedy pass's basis
+        colmask = None
         if len(core):
             Jk = Jd[core] if Jd is not None else _dense_cut(J, position, local[core], block)
-            Jk = Jk[:, np.any(Jk != 0, axis=0)]
+            colmask = np.any(Jk != 0, axis=0)
+            Jk = Jk[:, colmask]
             order = sorted(range(len(core)),
-                           key=lambda i: _order_key(lc[core[i]], int(rows[local[core[i]]])))
+                           key=lambda i: _order_key(lc[core[i]], int(keys[local[core[i]]])))
             null = [(int(core[r]), [int(core[i]) for i in support], coef)
-                    for r, support, coef in dependencies(Jk, order, deadline)]
+                    for r, support, coef in dependencies(Jk, order, deadline, gs)]
         if deadline is not None and time.monotonic() > deadline:
-            unknown.update(id(cons[i]) for i in local)     # the basis may be incomplete
+            leave_out((id(cons[i]) for i in local), "out of time")  # the basis may be incomplete
             continue
+        # the constructors' rows lead the greedy order, so the first basis rows span them (the
+        # peeled ones are independent of every other row and change no rank: left out)
+        in_core = np.zeros(len(local), dtype=bool)
+        in_core[core] = True
+        n_imp = 0
+        for i in gs.get("indep", ()):
+            if not lc[core[i]].implicit:
+                break
+            n_imp += 1
+        Qi = gs["Q"][:n_imp] if n_imp else None
 
         def dense_rows(ii: list[int]) -> np.ndarray:
             return Jd[ii] if Jd is not None else _dense_cut(J, position, local[ii], block)
@@ -916,12 +1067,10 @@ def redundancies(solver, deadline: float | None = None,
             for k in {id(lc[i]) for i in [r, *support]}:
                 touched.setdefault(k, []).append(n_)
         # the constructors' rows: what a constraint says beyond them is measured modulo
-        # their span (an orthonormal basis of it), see rank_c
-        imp = [i for i, c in enumerate(lc) if c.implicit]
-        basis = None                        # made when first needed (an SVD)
+        # their span (the greedy pass's first basis rows ``Qi``), see rank_c
         for k, idx in mine.items():
             if deadline is not None and time.monotonic() > deadline:
-                unknown.update(id(c) for c in lc)        # a block is reported whole or not
+                leave_out((id(c) for c in lc), "out of time")  # a block is reported whole or not
                 break
             pos = {i: j for j, i in enumerate(idx)}
             M = []
@@ -940,6 +1089,11 @@ def redundancies(solver, deadline: float | None = None,
                     if id(lc[i]) not in named:
                         named.add(id(lc[i]))
                         others.append(lc[i])
+            if M:
+                refused = _dense_refused(len(M), len(idx), deadline)
+                if refused:
+                    leave_out([k], refused)
+                    continue
             rM = _rank(np.array(M)) if M else 0
             gain = len(idx) - rM
             contribution[k] = contribution.get(k, 0) + gain
@@ -952,12 +1106,23 @@ def redundancies(solver, deadline: float | None = None,
                 # or fully implied (reported as such whatever its own rank)
                 rank_c[k] = rank_c.get(k, 0) + gain
                 continue
-            Jc = dense_rows(idx)
-            if imp:
-                if basis is None:
-                    basis = _row_basis(dense_rows(imp))
-                Jc = Jc - (Jc @ basis.T) @ basis
-            rank_c[k] = rank_c.get(k, 0) + _rank(Jc)
+            # rank of C's rows modulo the constructors' span: each peeled row is independent
+            # of every other row (1 each); the core rows, projected off ``Qi``
+            mine_core = [i for i in idx if in_core[i]]
+            peeled_c = len(idx) - len(mine_core)
+            r_core = 0
+            if mine_core:
+                n_cols = int(colmask.sum())
+                refused = _dense_refused(len(mine_core), n_cols, deadline, n_imp)
+                if refused:
+                    leave_out([k], refused)
+                    continue
+                Jc = dense_rows(mine_core)[:, colmask]
+                if Qi is not None:
+                    for _ in range(2):          # twice, as the greedy pass does
+                        Jc = Jc - (Jc @ Qi.T) @ Qi
+                r_core = _rank(Jc)
+            rank_c[k] = rank_c.get(k, 0) + peeled_c + r_core
     out: list[Redundant] = []
     seen: set = set()
     # a row that pins geometry (system.pinned; dropped from the solve) is one independent
@@ -971,10 +1136,12 @@ def redundancies(solver, deadline: float | None = None,
             seen.add(k)
             if skipped is not None:
                 skipped.append(c)
+            if why is not None:
+                why.add(unknown[k])
             continue
         seen.add(k)
         mine_rows = by_c[k]
-        p = pinned.get(k, 0)
+        p = pinned.get(k, 0) - in_closure.get(k, 0)
         if not p and not any(live[j] for j in mine_rows):
             if all(abs(F[j]) <= 1e-9 for j in mine_rows):
                 out.append(Redundant(c, []))        # follows from held values alone
@@ -985,14 +1152,6 @@ def redundancies(solver, deadline: float | None = None,
         elif rk > gain:
             out.append(Redundant(c, _explicit_first(by.get(k, [])), partly=True))
     return out
-
-
-def _row_basis(A: np.ndarray) -> np.ndarray:
-    """An orthonormal basis (rows) of the row space of ``A``."""
-    if A.size == 0:
-        return np.zeros((0, A.shape[1]))
-    _, sv, Vt = np.linalg.svd(A, full_matrices=False)
-    return Vt[:int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]))))]
 
 
 def _explicit_first(cs: list) -> list:

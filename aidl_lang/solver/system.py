@@ -199,7 +199,6 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
         return pinned_none()
     ecand = cand[erow]
     seed = np.zeros(n_all, dtype=bool)     # unknowns that cannot be pinned, nor their component
-    seed[cols[~ecand & (cols < n)]] = True
     absv = np.abs(vals)
     row_max = np.zeros(m)
     row_max[lens > 0] = np.maximum.reduceat(absv, indptr[:-1][lens > 0])
@@ -237,27 +236,6 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
     # a candidate row left unused (it pins nothing new: a dependent row, or one of a cycle)
     # spoils its component, and so does an unknown not pinned
     seed[cols[(left >= 0)[erow]]] = True
-    # nor may a nonlinear row, an inequality or a box read a pinned unknown
-    read: list = []
-    seen: set = set()
-    for r, t in enumerate(aff):
-        if t is not _NO_TERMS:
-            continue
-        stack = [exprs[r]]
-        while stack:
-            e = stack.pop()
-            if type(e) is Lin:
-                read.extend(e.terms)
-                continue
-            if id(e) in seen:
-                continue
-            seen.add(id(e))
-            if type(e) is not Nl:
-                return pinned_none()          # not an expression the solver knows: pin nothing
-            stack.extend(a for a in e.args if isinstance(a, Expr))
-    if read:
-        read_a = np.asarray(read, dtype=np.int64)
-        seed[read_a[is_pinned[read_a]]] = True
     # spoil the whole component of every seed (through the candidate rows)
     stack = np.flatnonzero(seed & (colptr[1:] > colptr[:-1])).tolist()
     if stack:
