@@ -247,7 +247,7 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
         result = solve(model, deadline=deadline)
         took = time.perf_counter() - t0
     if not result.converged:
-        report_failure(sink, result)
+        report_failure(sink, result, path)
         check_assertions(sink, model, held_only=True)
         return Compiled(sink, model, result, solve_seconds=took, params=params)
     end = Deadline(deadline, budget)
@@ -564,9 +564,11 @@ def _against_held(sink: DiagnosticSink, model: Model, c) -> bool:
     return True
 
 
-def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
+def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None = None) -> None:
     """E0401 for each conflict set found (else for the unsatisfied constraints); E0402 when
-    the iteration budget ran out."""
+    the iteration budget ran out.  The error sits on the last-written user constraint of a
+    set, one of the program ``path``'s own when it has any (not a line of an imported
+    template the user did not write)."""
     if result.out_of_time:
         sink.add(Diagnostic(
             "E0304", "the program ran out of its evaluation budget while solving: more than "
@@ -584,7 +586,8 @@ def report_failure(sink: DiagnosticSink, result: SolveResult) -> None:
         items = k.items
         # primary: the last-written user constraint of the set
         user = [(c, r) for c, r in items if not c.implicit and c.span is not None] or items
-        first, r0 = user[-1]
+        own = [(c, r) for c, r in user if c.span is not None and c.span.file == path]
+        first, r0 = (own or user)[-1]
         labels = [Label(c.span, f"conflicts with this: {_where(c)}"
                         + (f", residual {r:.3g}" if r > 1e-6 else ""), primary=False)
                   for c, r in items if c is not first and c.span is not None]

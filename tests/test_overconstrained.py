@@ -72,6 +72,22 @@ def test_the_issue_program_checks_in_well_under_a_second():
     assert abs(r.value("gearset.plate.axle2.c.center").mm[0] - gx) < 1e-6
 
 
+def test_a_conflict_through_pinned_teeth_is_named_at_the_users_line():
+    """The plate placed by `Below` under the gears and also at y = 0: the conflict runs
+    through the gears' pinned teeth (the box reads them), and names the user's two
+    constraints with the stdlib's; the error sits on the user's own line, not on a line of
+    std/gears.aidl (without pinning no conflict set was found at all)."""
+    src = GEAR_PLATE.read_text().replace(
+        "    Below(plate, pair, gap=10)\n",
+        "    Below(plate, pair, gap=10)\n    plate.body.center.y == 0\n")
+    r, wall, _ = _check(str(GEAR_PLATE), src, budget=DEFAULT_BUDGET)
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert e.code == "E0401" and e.span.file == str(GEAR_PLATE)
+    assert src.splitlines()[e.span.line - 1].strip() == "plate.body.center.y == 0"
+    assert "`Below(plate, pair, gap=10)`" in e.hint and "Fixed(hub.center)" in e.hint
+    assert wall < 5.0, wall
+
+
 def test_the_unpinned_issue_program_is_searched_without_a_dense_svd(monkeypatch):
     """The same model with pinning off (6,264 unknowns, one block of ~6,000 rows): the
     redundancy search ends in about a second, and no SVD larger than the estimate allows
