@@ -22,7 +22,7 @@ import numpy as np
 
 from ..memory import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
-from ..geometry.expr import Expr, Lin, Nl, add, func, mul, var
+from ..geometry.expr import Lin, add, func, mul, var
 from ..geometry.model import Constraint, Model
 
 EQ, LINK, SIGN = 0, 1, 2
@@ -157,13 +157,16 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
     it is an affine equation (``Fixed``, a constructor's offsets such as an ``Arc``'s ends
     from its center, ``p.x == 5``), it reads no held value (an edit of one would move it) and
     no frame (a frame stays an unknown: the geometry moves with it), all its unknowns and
-    rows belong to one structure, no other row (nonlinear, inequality, box) reads its
-    unknowns, and the rows pin the unknowns one at a time, each row pinning one unknown with
-    a nonzero coefficient of at least :data:`PIVOT` times its largest.  Its Jacobian is then
-    square, triangular and invertible, and no other row touches its columns: taking the
-    unknowns out as held values and dropping the rows leaves every other unknown's solve,
-    the rank deficiency (degrees of freedom), the redundancy of every other constraint and
-    every conflict as they were (``docs/solver.md`` §1).  ``spur_gear``'s teeth (each arc's
+    rows belong to one structure, and the rows pin the unknowns one at a time, each row
+    pinning one unknown with a nonzero coefficient of at least :data:`PIVOT` times its
+    largest.  Its Jacobian block is then square, triangular and invertible and zero outside
+    its columns: taking the unknowns out as held values and dropping the rows leaves every
+    other unknown's solve, the rank deficiency (degrees of freedom) and the redundancy of
+    every other constraint as they were, whatever other rows read the pinned unknowns (a
+    box, a ``Distance``: issue 48; before, any such reader spoilt the component, and a
+    ``Below`` over a gear kept its 6,264 unknowns).  A conflict or a dependency through
+    pinned geometry involves exactly the pinning rows its rows reach, which the diagnostics
+    take back (:func:`~.diagnose._pin_closure`; ``docs/solver.md`` §1).  ``spur_gear``'s teeth (each arc's
     center ``Fixed``, its ends offsets from it, the pattern's copies affine in those) are
     such components: the gear pair's 6,658 unknowns go down to a few dozen.
 
@@ -231,8 +234,6 @@ def pinned(rows: Rows, free, is_frame, owner: list) -> Pins:
         return pinned_none()
     var, row = np.concatenate(out_var), np.concatenate(out_row)
     entry, lev = np.concatenate(out_entry), np.concatenate(out_level)
-    is_pinned = np.zeros(n_all, dtype=bool)
-    is_pinned[var] = True
     # a candidate row left unused (it pins nothing new: a dependent row, or one of a cycle)
     # spoils its component, and so does an unknown not pinned
     seed[cols[(left >= 0)[erow]]] = True
