@@ -42,9 +42,10 @@ print(json.dumps({"cpu": best, "rss_mb": resource.getrusage(resource.RUSAGE_SELF
 
 
 def run(tree: str, path: str, repeat: int, timeout: float) -> str:
+    path = str(pathlib.Path(path).resolve())
     env = dict(os.environ, PYTHONPATH=str(pathlib.Path(tree).resolve()))
     try:
-        p = subprocess.run([sys.executable, "-c", CHILD, path, str(repeat)], env=env,
+        p = subprocess.run([sys.executable, "-c", CHILD, path, str(repeat)], env=env, cwd=tree,
                            capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         return f"> {timeout:g} s"
