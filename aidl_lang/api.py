@@ -209,21 +209,31 @@ class Result:
         near = did_you_mean(name, [v.name for v in self.values])
         raise KeyError(f"no value `{name}`" + (f"; did you mean {', '.join(near)}?" if near else ""))
 
-    def freedom(self, detail: bool = False) -> dict:
+    def freedom(self, detail: bool = False, deadline: float | None = None) -> dict:
         """Degrees of freedom left after solving: ``{"dof": N or None (not counted: too
-        large), "text": "fully constrained" | "N degrees of freedom left, ..."}``; with
-        ``detail``, ``"structures"``: per structure ``{"structure", "unknowns", "dof",
-        "floating"}`` (entities still free to move; costs a null-space computation).  Raises
+        large, or out of time), "text": "fully constrained" | "N degrees of freedom left,
+        ..."}``; with ``detail``, ``"structures"``: per structure ``{"structure", "unknowns",
+        "dof", "floating"}`` (entities still free to move; costs a null-space computation;
+        ``dof`` None and ``"not_counted"`` the reason for a structure not counted).
+        ``deadline`` (``time.monotonic()``) bounds the count; by default the program's
+        wall-time budget from now (15 s), so no call runs unbounded (issue 48).  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
+        import time
         from .solver.diagnose import degrees_of_freedom, freedom_text
-        dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail)
+        if deadline is None:
+            budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
+            deadline = time.monotonic() + budget.seconds
+        dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail, deadline=deadline)
         counted = all(d.rank >= 0 for d in dofs)
         doc: dict = {"dof": sum(max(0, d.dof) for d in dofs) if counted else None,
                      "text": freedom_text(dofs, self.sliding())}
         if detail:
             doc["structures"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
-                                  "dof": d.dof, "floating": list(d.floating)} for d in dofs]
+                                  "dof": d.dof if d.rank >= 0 else None,
+                                  "floating": list(d.floating)}
+                                 | ({"not_counted": d.why} if d.rank < 0 else {})
+                                 for d in dofs]
         return doc
 
     def sliding(self):

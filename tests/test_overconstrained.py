@@ -283,3 +283,16 @@ def test_generated_over_constrained_assemblies(src, added):
         for c in consistent:
             assert f"`{c.split(' ==')[0]}" in warned or c.split(" ==")[0] in warned, \
                 (c, warned)
+
+
+def test_the_api_freedom_count_is_bounded():
+    """``Result.freedom`` runs in a deadline (by default the program's budget from now):
+    past it, a structure is not counted and says why, instead of counting unbounded."""
+    r = aidl_lang.compile(path=str(ROOT / "examples" / "telephone.aidl"))
+    assert r.ok
+    doc = r.freedom(detail=True)
+    assert doc["dof"] is not None and all(s["dof"] is not None for s in doc["structures"])
+    late = r.freedom(detail=True, deadline=time.monotonic() - 1.0)
+    assert late["dof"] is None and "not counted (out of time)" in late["text"]
+    assert any(s.get("not_counted") == "out of time" and s["dof"] is None
+               for s in late["structures"])

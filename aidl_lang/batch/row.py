@@ -71,7 +71,9 @@ def run_one(task: dict, cfg: dict) -> dict:
                     solve_s=res.solve_seconds if res.solve is not None else None)
     if res.ok and res.solve is not None:
         from ..solver.diagnose import degrees_of_freedom
-        dofs = degrees_of_freedom(res.solve.solver, floating=False)
+        # in what the compile left of the program's budget, as `aidl check` counts (issue 48)
+        end = res.deadline.at if res.deadline is not None else None
+        dofs = degrees_of_freedom(res.solve.solver, floating=False, deadline=end)
         row["dof"] = (None if any(d.rank < 0 for d in dofs)
                       else sum(max(0, d.dof) for d in dofs))
     output = None

@@ -291,10 +291,14 @@ class Session:
         self.dof = []
         if solver is None:
             return
+        import time
+        from ..limits import DEFAULT_BUDGET
         from ..solver.diagnose import degrees_of_freedom
-        try:
-            self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns, "dof": d.dof,
-                         "floating": d.floating[:12]} for d in degrees_of_freedom(solver)]
+        try:            # bounded as a compile is (issue 48): a structure past it is not counted
+            end = time.monotonic() + DEFAULT_BUDGET.seconds
+            self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,
+                         "dof": d.dof if d.rank >= 0 else None, "floating": d.floating[:12]}
+                        for d in degrees_of_freedom(solver, deadline=end)]
         except Exception:          # the summary is an extra; never lose the picture over it
             self.dof = []
 

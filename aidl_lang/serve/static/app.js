@@ -348,16 +348,19 @@ function highlightLine(n) {
 
 function showDof(dof) {
   const tb = $("dof").querySelector("tbody"); tb.innerHTML = "";
-  let total = 0;
+  let total = 0, unknown = 0;
   for (const d of dof) {
-    total += d.dof;
+    // dof null: not counted within the budget (too large, or out of time)
+    if (d.dof === null) unknown++; else total += d.dof;
     const tr = document.createElement("tr");
-    for (const c of [d.structure, d.unknowns, d.dof, d.floating.join(", ") || "-"]) {
+    for (const c of [d.structure, d.unknowns, d.dof ?? "?", d.floating.join(", ") || "-"]) {
       const td = document.createElement("td"); td.textContent = c; tr.appendChild(td);
     }
     tb.appendChild(tr);
   }
-  $("dof-summary").textContent = dof.length ? `${total} degrees of freedom left in ${dof.length} structures` : "";
+  $("dof-summary").textContent = !dof.length ? "" : unknown
+    ? `degrees of freedom not counted in ${unknown} of ${dof.length} structures (too large)`
+    : `${total} degrees of freedom left in ${dof.length} structures`;
 }
 
 connect();
