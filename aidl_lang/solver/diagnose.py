@@ -669,6 +669,8 @@ def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndar
     r = B.shape[0]
     if r >= n:
         return r, np.zeros(n, dtype=bool)
+    if deadline is not None and time.monotonic() > deadline:
+        return NOT_COUNTED_TIME, np.zeros(n, dtype=bool)
     K = sp.bmat([[sp.identity(n), B.T], [B, None]], format="csc")
     try:
         lu = splu(K)
