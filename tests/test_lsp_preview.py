@@ -202,3 +202,37 @@ def test_a_worker_holding_too_much_memory_answers_then_exits():
     answers = [json.loads(ln) for ln in r.stdout.splitlines()]
     assert r.returncode == 0 and len(answers) == 1            # the second job is not read
     assert answers[0]["retire"] is True and answers[0]["preview"]["ok"]
+
+
+def test_a_replaced_worker_keeps_the_last_good_picture():
+    """The last good picture lived only in the worker: a worker killed for a newer edit (or
+    retired for its memory) took it along, and the next broken version came back with no
+    picture and ``stale: false`` (the VS Code extension's test failed so under CI load).
+    The server now keeps its own copy."""
+    import asyncio
+    from types import SimpleNamespace
+
+    from aidl_lang.editor.lsp.worker import Analyzer
+    good = "units mm\nsolid plate { body = Rectangle(center=(0, 0), width=40, height=20) }\n"
+    broken = good.replace("Rectangle(", "Rectangel(")
+    uri = "file:///replaced.aidl"
+    docs = {}
+    ls = SimpleNamespace(workspace=SimpleNamespace(get_text_document=lambda u: docs[u]))
+
+    async def run():
+        a = Analyzer()
+        try:
+            docs[uri] = SimpleNamespace(source=good, path="replaced.aidl", version=1)
+            first = await pv.handle(ls, {"uri": uri}, a)
+            a.kill()                                     # a newer edit stopped this worker
+            docs[uri] = SimpleNamespace(source=broken, path="replaced.aidl", version=2)
+            second = await pv.handle(ls, {"uri": uri}, a)
+            return first, second
+        finally:
+            a.close()
+            pv.SERVER_GOOD.forget(uri)
+    first, second = asyncio.run(run())
+    assert first["ok"] and not first["stale"] and "<svg" in first["svg"]
+    assert second["ok"] is False and second["diagnostics"]["first"]["code"] == "E0103"
+    assert second["stale"] is True and second["svg"] == first["svg"]
+    assert second["drawn_version"] == 1

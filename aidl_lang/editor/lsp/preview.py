@@ -78,6 +78,9 @@ class Cache:
 
 
 CACHE = Cache()
+SERVER_GOOD = Cache()      # the server's copy of each document's last good picture: a worker
+                           # that is replaced (killed for a newer edit, retired for its memory)
+                           # takes its own pictures with it
 
 
 def plain(obj):
@@ -90,6 +93,19 @@ def plain(obj):
     if isinstance(obj, (list, tuple)):
         return [plain(v) for v in obj]
     return obj
+
+
+def keep_last_good(out: dict, uri: str, cache: Cache) -> dict:
+    """Remember ``out`` (a preview result) as ``uri``'s last good picture when it has a fresh
+    SVG; when it has none, give it the last good one (``stale: true``, ``drawn_version``,
+    ``drawn_values``).  Returns ``out``."""
+    if out.get("svg") is not None and not out.get("stale"):
+        cache.good[uri] = {k: out.get(k) for k in ("svg", "shapes", "values", "version")}
+    elif out.get("svg") is None and uri in cache.good:
+        good = cache.good[uri]
+        out.update(svg=good["svg"], shapes=good["shapes"], stale=True,
+                   drawn_version=good["version"], drawn_values=good["values"])
+    return out
 
 
 def preview(source: str, path: str, uri: str, version: int | None = None,
@@ -110,7 +126,6 @@ def preview(source: str, path: str, uri: str, version: int | None = None,
             overlay, shapes = _overlay(r.compiled.drawing, source, path)
             out["svg"] = svg.replace("</svg>", overlay + "</svg>") if overlay else svg
             out["shapes"] = shapes
-            cache.good[uri] = {k: out[k] for k in ("svg", "shapes", "values", "version")}
             if assembled:
                 import base64
                 out["glb"] = base64.b64encode(r.encode("glb", assembled=True)).decode("ascii")
@@ -119,10 +134,7 @@ def preview(source: str, path: str, uri: str, version: int | None = None,
             out["diagnostics"]["errors"] += 1
             out["diagnostics"]["first"] = {"code": "E0900", "range": None,
                                            "message": f"cannot draw the preview: {e}"}
-    if out["svg"] is None and uri in cache.good:
-        good = cache.good[uri]
-        out.update(svg=good["svg"], shapes=good["shapes"], stale=True,
-                   drawn_version=good["version"], drawn_values=good["values"])
+    keep_last_good(out, uri, cache)
     out["params"] = params(source, path, uri, values, cache)
     cache.touch(uri)
     out["ms"] = round((time.perf_counter() - t0) * 1000, 1)
@@ -296,17 +308,23 @@ async def handle(ls, params, analyzer=None) -> dict:
                                               doc.version, values, CACHE, assembled)
         # compiled where the diagnostics are (the killable worker, within its memory limit)
         try:
-            return await analyzer.preview(doc.source, path, uri, doc.version, values,
-                                          lambda: preview(doc.source, path, uri, doc.version,
-                                                          values, CACHE, assembled),
-                                          assembled)
+            out = await analyzer.preview(doc.source, path, uri, doc.version, values,
+                                         lambda: preview(doc.source, path, uri, doc.version,
+                                                         values, CACHE, assembled),
+                                         assembled)
         except (EOFError, RuntimeError, TimeoutError, Exception) as e:   # noqa: BLE001 - a
             # timeout (worker.AnalysisTimeout), a worker that died or ran out of memory
-            return {"uri": uri, "version": doc.version, "ok": False, "stale": False,
-                    "svg": None, "shapes": [], "values": values, "params": [],
-                    "diagnostics": {"errors": 1, "warnings": 0, "first": {
-                        "code": "E0900", "range": None,
-                        "message": f"cannot draw the preview: {e}"}}}
+            out = {"uri": uri, "version": doc.version, "ok": False, "stale": False,
+                   "svg": None, "shapes": [], "values": values, "params": [],
+                   "diagnostics": {"errors": 1, "warnings": 0, "first": {
+                       "code": "E0900", "range": None,
+                       "message": f"cannot draw the preview: {e}"}}}
+        # the worker keeps the last good pictures, but a replaced worker (killed for a newer
+        # edit, retired for its memory) starts without them: the server keeps its own copy
+        keep_last_good(out, uri, SERVER_GOOD)
+        SERVER_GOOD.touch(uri)
+        return out
 
 
-__all__ = ["preview", "handle", "params", "plain", "Cache", "CACHE"]
+__all__ = ["preview", "handle", "params", "plain", "keep_last_good", "Cache", "CACHE",
+           "SERVER_GOOD"]

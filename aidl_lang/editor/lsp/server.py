@@ -239,6 +239,7 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
         old.cancel()
     _published.pop(params.text_document.uri, None)
     features.forget(params.text_document.uri)
+    preview.SERVER_GOOD.forget(params.text_document.uri)
     if _analyzer is not None:
         _analyzer.facts.pop(params.text_document.uri, None)
     ls.text_document_publish_diagnostics(

@@ -60,10 +60,12 @@ test('clientOptions: the declared aidl.inlayHints/codeLens settings go to the se
   assert.equal(clientOptions().initializationOptions, undefined);
 });
 
-test('vscode-languageclient starts `aidl lsp`, opens an example and receives diagnostics', async () => {
+test('vscode-languageclient starts `aidl lsp`, opens an example and receives diagnostics', async (t) => {
   const { command, tried } = findServer({ folders: [ROOT] });
   assert.ok(command, notFoundMessage(tried));
   const client = new LanguageClient('aidl', 'AIDL language server', serverOptions(command), clientOptions());
+  // stopped also when an assertion fails (a running server would keep `npm test` waiting)
+  t.after(() => (client.isRunning() ? client.stop() : undefined));
   const t0 = Date.now();
   await client.start();
   assert.equal(client.initializeResult.serverInfo.name, 'aidl');

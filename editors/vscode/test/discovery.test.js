@@ -75,6 +75,7 @@ test('a server installed after activation is picked up without a reload', async 
     assert.ok(api.getClient().isRunning());
     await extension.deactivate();
   } finally {
+    await extension.deactivate();
     Object.entries(saved).forEach(([k, v]) => { if (v === undefined) delete process.env[k]; else process.env[k] = v; });
   }
 });

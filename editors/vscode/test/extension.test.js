@@ -21,7 +21,10 @@ function viewWidth(svg) {
   return Number(/viewBox="[^"]*?[ ,]([-\d.]+)[ ,]([-\d.]+)"/.exec(svg)[1]);
 }
 
-test('the extension previews telephone.aidl and follows edits, sliders and the cursor', async () => {
+test('the extension previews telephone.aidl and follows edits, sliders and the cursor', async (t) => {
+  // a failed assertion must not leave the server running: its child process would keep this
+  // test file (and `npm test`, and CI) waiting forever
+  t.after(() => extension.deactivate());
   const { events, panels, statusItems, commands, channels, textDocument, setFolders, setSaveDialog } = vscode._shim;
   setFolders([ROOT]);
   const context = { subscriptions: [], extensionPath: path.join(__dirname, '..') };
