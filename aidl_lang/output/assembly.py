@@ -47,14 +47,19 @@ def solids(output: Output, thickness: float | None = None) -> list[tuple[str, ob
                    placements(output), thickness)
 
 
-def extrude(parts, where: dict, thickness: float | None = None) -> list[tuple[str, object]]:
+def extrude(parts, where: dict, thickness: float | None = None, deadline=None
+            ) -> list[tuple[str, object]]:
     """(name, ``manifold3d.Manifold``) of each solid of ``parts`` = [(name, kind,
-    CrossSection, thickness mm or None)], extruded and moved by ``where[name]`` (4x4)."""
+    CrossSection, thickness mm or None)], extruded and moved by ``where[name]`` (4x4).
+    ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked before each part (raises
+    :class:`~aidl_lang.limits.OutOfBudget`)."""
     import manifold3d as mf
     out = []
     for name, kind, shape, t in parts:
         if kind != "solid" or shape is None or shape.is_empty():
             continue
+        if deadline is not None:
+            deadline.check("the fit check", None)
         m = mf.Manifold.extrude(shape, float(thickness or t or DEFAULT_THICKNESS))
         M = where.get(name)
         if M is not None:
@@ -118,54 +123,85 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     with two parts or more, every part that comes no nearer than :data:`GAP_TOL` to any
     other (a tab that does not reach its slot).  ``bodies``: (name, ``Manifold``) placed
     (:func:`solids`, :func:`extrude`); ``normals``: part name -> the unit normal of its sheet
-    (the placement's z axis; +z when missing), for the depth (:func:`_depth`).  Pairs are
-    taken from the solids' boxes."""
-    boxes = [np.asarray(_box(m), dtype=float) for _, m in bodies]
+    (the placement's z axis; +z when missing), for the depth (:func:`_depth`).
+
+    Only the pairs whose bounding boxes overlap (:func:`box_pairs`, a sort and sweep) are
+    intersected; a part's nearest neighbour is sought in the order of the boxes' distances,
+    stopping at the first box farther than the best gap found.  ``deadline``: a
+    :class:`~aidl_lang.limits.Deadline` checked before every boolean and every distance
+    (raises :class:`~aidl_lang.limits.OutOfBudget`), so the check ends within the compile's
+    budget plus one Manifold call."""
+    def tick():
+        if deadline is not None:
+            deadline.check("the fit check", None)
+    boxes = np.array([_box(m) for _, m in bodies], dtype=float).reshape(-1, 6)
     normals = normals or {}
     hits: list[Collision] = []
     touching = set()
     n = len(bodies)
-    for i in range(n):
-        for j in range(i + 1, n):
-            bi, bj = boxes[i], boxes[j]
-            if np.any(bi[:3] > bj[3:] + GAP_TOL) or np.any(bj[:3] > bi[3:] + GAP_TOL):
+    for i, j in box_pairs(boxes, GAP_TOL):
+        tick()
+        (na, ma), (nb, mb) = bodies[i], bodies[j]
+        common = ma ^ mb
+        vol = float(common.volume()) if not common.is_empty() else 0.0
+        if vol > VOLUME_TOL:
+            # the connected pieces with volume (Manifold leaves zero-volume sheets where
+            # faces touch)
+            pieces = np.array([_box(m) for m in common.decompose()
+                               if m.volume() > VOLUME_TOL] or [_box(common)], dtype=float)
+            box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
+                                                          pieces[:, 3:].max(axis=0)]))
+            depth = _depth(common, normals.get(na), normals.get(nb), box)
+            if depth > DEPTH_TOL:
+                hits.append(Collision(na, nb, vol, box, depth))
+                touching.update((i, j))
                 continue
-            if deadline is not None:
-                deadline.check("the fit check", None)
-            (na, ma), (nb, mb) = bodies[i], bodies[j]
-            common = ma ^ mb
-            vol = float(common.volume()) if not common.is_empty() else 0.0
-            if vol > VOLUME_TOL:
-                # the connected pieces with volume (Manifold leaves zero-volume sheets where
-                # faces touch)
-                pieces = np.array([_box(m) for m in common.decompose()
-                                   if m.volume() > VOLUME_TOL] or [_box(common)], dtype=float)
-                box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
-                                                              pieces[:, 3:].max(axis=0)]))
-                depth = _depth(common, normals.get(na), normals.get(nb), box)
-                if depth > DEPTH_TOL:
-                    hits.append(Collision(na, nb, vol, box, depth))
-                    touching.update((i, j))
-                    continue
-            if i not in touching or j not in touching:
-                # faces in contact leave a common part of no volume; else ask how far apart
-                if not common.is_empty() or ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
-                    touching.update((i, j))
+        if i not in touching or j not in touching:
+            # faces in contact leave a common part of no volume; else ask how far apart
+            if not common.is_empty() or ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
+                touching.update((i, j))
     gaps = []
     if n >= 2:
         for i in range(n):
             if i in touching:
                 continue
+            d = np.sqrt(np.sum(_box_gaps(boxes[i], boxes) ** 2, axis=1))
+            d[i] = np.inf
             best = None
-            for j in range(n):
-                if j != i:
-                    g = _distance(boxes[i], boxes[j])
-                    g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
-                    if best is None or g < best[0]:
-                        best = (g, bodies[j][0])
+            for j in np.argsort(d, kind="stable"):
+                if best is not None and d[j] >= best[0]:
+                    break            # no nearer part can be in a box this far
+                tick()
+                g = float(d[j])
+                g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
+                if best is None or g < best[0]:
+                    best = (g, bodies[j][0])
             if not any(g.part == best[1] and g.nearest == bodies[i][0] for g in gaps):
                 gaps.append(Gap(bodies[i][0], best[1], best[0]))    # a pair is said once
     return hits, gaps
+
+
+def box_pairs(boxes: np.ndarray, pad: float = 0.0) -> list[tuple[int, int]]:
+    """The pairs ``(i, j)``, ``i < j``, of ``boxes`` (n x 6: x0, y0, z0, x1, y1, z1, mm) that
+    overlap once each is grown by ``pad`` on every side, sorted: the boxes are swept in the
+    order of x0, each meeting only those that start before it ends (sort and sweep)."""
+    b = np.asarray(boxes, dtype=float).reshape(-1, 6)
+    lo, hi = b[:, :3] - pad, b[:, 3:] + pad
+    order = np.argsort(lo[:, 0], kind="stable")
+    ends = np.searchsorted(lo[order, 0], hi[order, 0], side="right")
+    pairs = []
+    for k, i in enumerate(order):
+        js = order[k + 1:ends[k]]
+        if len(js):
+            ok = np.all((lo[js, 1:] <= hi[i, 1:]) & (lo[i, 1:] <= hi[js, 1:]), axis=1)
+            pairs.extend((min(i, j), max(i, j)) for j in js[ok].tolist())
+    return sorted(pairs)
+
+
+def _box_gaps(a: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """Per box of ``boxes`` (n x 6), how far it is from box ``a`` along x, y and z (0 where
+    they overlap); n x 3."""
+    return np.maximum(0.0, np.maximum(a[:3] - boxes[:, 3:], boxes[:, :3] - a[3:]))
 
 
 def normals_of(where: dict) -> dict:
@@ -213,11 +249,6 @@ def _depth(common, na, nb, box) -> float:
 def _box(m) -> tuple:
     b = m.bounding_box()
     return tuple(b)
-
-
-def _distance(a: np.ndarray, b: np.ndarray) -> float:
-    d = np.maximum(0.0, np.maximum(a[:3] - b[3:], b[:3] - a[3:]))
-    return float(np.sqrt((d * d).sum()))
 
 
 # ------------------------------------------------------------------ picture

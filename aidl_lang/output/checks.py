@@ -173,7 +173,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
     tick(None)
-    _check_interpenetration(d, roots, sink)
+    _check_interpenetration(d, roots, sink, deadline)
     _check_text_overlap(d, sink)
     if getattr(d, "placement", None):
         tick(None)
@@ -506,13 +506,15 @@ def _allowed(a: Structure, b: Structure) -> bool:
 STACKED = 0.25          # of the smaller part's area: a larger overlap is parts laid on each other
 
 
-def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
+def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=None) -> None:
     """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
     by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
     place (two gears placed closer than their centre distance: their teeth interpenetrate).
     Parts whose overlap covers more than :data:`STACKED` of the smaller one are taken as laid
     one on the other in the assembly view (a gear on its mounting plate, a clock's hands on
-    each other) and not warned: parts meant to mesh or touch collide at their rims.  Candidate pairs come from the parts' boxes (:func:`.nearby.box_pairs`)."""
+    each other) and not warned: parts meant to mesh or touch collide at their rims.  Candidate
+    pairs come from the parts' boxes (:func:`.nearby.box_pairs`); ``deadline`` is checked
+    before each pair's boolean."""
     parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
     if len(parts) < 2:
         return
@@ -521,6 +523,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink) -> None:
         (a, sa), (b, sb) = parts[i], parts[j]
         if a.is_within(b) or b.is_within(a):
             continue              # a part drawn inside another's drawing: shown on it
+        if deadline is not None:
+            deadline.check("the shape checks", None)
         common = sa ^ sb
         area = _area(common)
         if area <= MIN_AREA or _allowed(a, b):
@@ -546,7 +550,8 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     touches no other (a tab short of its slot: the gap)."""
     from .assembly import extrude, fit, normals_of
     parts = [(p.name, p.kind, p.shape, d.thickness.get(p.name)) for p in d.parts]
-    hits, gaps = fit(extrude(parts, d.placement), deadline, normals_of(d.placement))
+    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline), deadline,
+                     normals_of(d.placement))
 
     def at(name):
         s = d.part_of.get(name)
