@@ -762,7 +762,8 @@ def cmd_import(args) -> int:
               file=sys.stderr)
         return 1
     except DrawingError as ex:
-        print(f"{src}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
+        at = f"{src}:{ex.line}" if ex.line else src        # a DXF entity's line
+        print(f"{at}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
               file=sys.stderr)
         return 1
     for n in notes:
