@@ -355,7 +355,9 @@ class Result:
         """Write the output to ``path``, the format by its extension, with the rules of
         ``aidl render`` (docs/outputs.md, "Writing files"): never over the program itself,
         never a directory, a symlink refused unless ``follow_symlinks`` (then written
-        through), a read-only file refused unless ``force``, written to a temporary file
+        through), a read-only file refused unless ``force``, a FIFO, device, socket or
+        directory always refused and left as it is
+        (:class:`~aidl_lang.output.write.NotRegularFile`), written to a temporary file
         beside it and renamed, a new file gets the umask's permissions.  Returns the path.
         Raises :class:`~aidl_lang.output.write.WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
         from .output.write import check_output_path, write_atomic

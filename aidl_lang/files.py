@@ -14,9 +14,9 @@ close it by opening once and checking what was opened:
 * :func:`read_regular` reads from a descriptor only when ``fstat`` says it is a regular file
   of at most ``limit`` bytes; :func:`read_file` opens a path non-blocking first (a FIFO or a
   device never hangs the reader, ``/dev/zero`` is refused before a byte is read).
-* :func:`write_in_dir` writes a file in a folder given by its descriptor: a temporary file
-  made there with ``O_EXCL | O_NOFOLLOW`` and renamed over the name (``os.replace`` with
-  ``dir_fd``): a link planted at the name is replaced, never written through.
+* writing a file in a folder given by its descriptor (a temporary file renamed over the
+  name, never over a link, a FIFO or a device) is
+  :func:`aidl_lang.output.write.write_in_dir`, with every other write.
 * :func:`open_append` opens a journal for appending, refusing a link and anything but a
   regular file.
 
@@ -144,44 +144,6 @@ def read_file(path: str | os.PathLike, limit: int, follow_symlinks: bool = True)
         return read_regular(fd, limit, os.fspath(path))
     finally:
         os.close(fd)
-
-
-def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None) -> None:
-    """Write ``data`` as the file ``name`` of the folder ``dfd``: a temporary file made there
-    (``O_CREAT | O_EXCL | O_NOFOLLOW``), then renamed over ``name``.  A new file gets ``0666 &
-    ~umask``, an existing regular file keeps its mode; a link at ``name`` is refused (checked
-    without following it), and one planted after the check is replaced by the rename, never
-    written through.  Raises :class:`FileRefused` or ``OSError`` (nothing left behind)."""
-    import secrets
-    shown = shown or name
-    if os.sep in name or name in ("", ".", ".."):
-        raise FileRefused(f"`{shown}` is not a file name")
-    try:
-        st = os.stat(name, dir_fd=dfd, follow_symlinks=False)
-    except FileNotFoundError:
-        mask = os.umask(0)
-        os.umask(mask)
-        mode = 0o666 & ~mask
-    else:
-        if stat.S_ISLNK(st.st_mode):
-            raise FileRefused(f"`{shown}` is a symbolic link; refusing to write through it")
-        if stat.S_ISDIR(st.st_mode):
-            raise FileRefused(f"`{shown}` is a directory")
-        mode = stat.S_IMODE(st.st_mode)
-    tmp = f".{name[:200]}.{secrets.token_hex(6)}.tmp"
-    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | NOFOLLOW | CLOEXEC, 0o600,
-                 dir_fd=dfd)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-            os.fchmod(f.fileno(), mode)
-        os.replace(tmp, name, src_dir_fd=dfd, dst_dir_fd=dfd)
-    except BaseException:
-        try:
-            os.unlink(tmp, dir_fd=dfd)
-        except OSError:
-            pass
-        raise
 
 
 def open_append(path: str | os.PathLike):

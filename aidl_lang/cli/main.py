@@ -9,8 +9,10 @@ An output file is written only when the whole pipeline succeeded and every reque
 produced (each written to a temporary file beside it, then renamed), so a good drawing is never
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
 directory as output, refuses a symlink as output unless ``--follow-symlinks`` (then it writes
-through it; the link stays) and a read-only file unless ``--force``, and creates files with the
-user's umask (an existing file keeps its mode); docs/outputs.md has the details.
+through it; the link stays) and a read-only file unless ``--force``, never replaces a FIFO, a
+device, a socket or a directory (:mod:`aidl_lang.output.write`; ``-o -`` writes to standard
+output, ``--format``), and creates files with the user's umask (an existing file keeps its
+mode); docs/outputs.md has the details.
 """
 from __future__ import annotations
 
@@ -119,7 +121,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
                    help="output file, format by extension; repeat for several "
-                        "(default: FILE with .svg)")
+                        "(default: FILE with .svg); - writes to standard output (--format)")
+    r.add_argument("--format", default=None, metavar="FMT",
+                   help="the format of -o - (standard output): svg (default), dxf, step; png, "
+                        "stl, 3mf, glb only when standard output is not a terminal")
     r.add_argument("--show", default="", metavar="LAYERS",
                    help="debug layers in SVG/PNG, comma-separated: construction,holes,bboxes")
     r.add_argument("--svg-style", choices=["preview", "laser"], default="preview",
@@ -480,9 +485,47 @@ def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
     return [[o.with_name(f"{o.stem}-{k + 1}{o.suffix}") for k in range(n)] for o in outs]
 
 
+STDOUT = Path("-")           # `-o -`: standard output (no file name: it has no extension)
+# what `-o -` writes to a terminal too; the other formats are binary (--format png)
+TEXT_FORMATS = (".svg", ".dxf", ".step", ".stp")
+NOT_REGULAR_HINT = "choose another path, or `-o -` to write to standard output"
+
+
+def _stdout_format(args, outs: list[Path]) -> int | None:
+    """Check ``-o -`` and ``--format`` (usage errors exit 2) and set ``args.stdout_suffix``
+    (``.svg``, ...; None without ``-o -``)."""
+    from ..output import FORMATS
+    fmt = getattr(args, "format", None)
+    args.stdout_suffix = None
+    if STDOUT not in outs:
+        if fmt is not None:
+            return _usage("--format is the format of `-o -` (standard output); a file's format "
+                          "follows its extension")
+        return None
+    suffix = "." + (fmt or "svg").lower().lstrip(".")
+    if suffix not in FORMATS:
+        return _usage(f"--format takes one of {', '.join(sorted(f[1:] for f in FORMATS))}; "
+                      f"got `{fmt}`")
+    if args.json:
+        return _usage("--json prints to standard output, so -o - cannot: write the output to "
+                      "a file (-o OUT.svg)")
+    if suffix not in TEXT_FORMATS and sys.stdout.isatty():
+        return _usage(f"refusing to write binary {suffix[1:].upper()} to a terminal: redirect "
+                      f"standard output (`> out{suffix}`) or give a file name")
+    args.stdout_suffix = suffix
+    return None
+
+
+def _suffix(o: Path, args) -> str:
+    """The format of the output ``o``: its extension, or ``--format`` for ``-o -``."""
+    return args.stdout_suffix if o == STDOUT else o.suffix.lower()
+
+
 def _outputs(args) -> list[Path] | int:
     """The output paths, checked before compiling (usage errors exit 2): known extensions,
-    not the program itself, not a directory; a default only for a regular input file."""
+    not the program itself, not a directory, not a FIFO, device or socket (never replaced:
+    :func:`aidl_lang.output.write.not_regular`); ``-`` is standard output (``--format``); a
+    default only for a regular input file."""
     from ..output import FORMATS
     if args.output:
         outs = [Path(o) for o in args.output]
@@ -500,6 +543,11 @@ def _outputs(args) -> list[Path] | int:
         outs = [src.with_suffix(".svg")]
     seen = set()
     for o in outs:
+        if o == STDOUT:
+            if "-" in seen:
+                return _usage("`-o -` is given twice")
+            seen.add("-")
+            continue
         real = os.path.realpath(o)
         if args.file != "-" and os.path.exists(args.file) and os.path.exists(real) \
                 and os.path.samefile(real, args.file):
@@ -516,15 +564,17 @@ def _outputs(args) -> list[Path] | int:
                                   getattr(args, "force", False))
         if refused is not None:
             return refused
-    return outs
+    bad = _stdout_format(args, outs)
+    return outs if bad is None else bad
 
 
 def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     """A symbolic link as output is refused (exit 2: someone may have planted it to make the
     render overwrite another file) unless ``--follow-symlinks``, and even then (exit 1) when
     another user made it in a sticky world-writable folder (:func:`aidl_lang.output.write.planted_link`);
-    an existing read-only file is refused (exit 1) unless ``--force``.  None when ``o`` may
-    be written."""
+    a FIFO, device or socket (or, with ``--follow-symlinks``, a link to one) is refused (exit
+    2: never replaced); an existing read-only file is refused (exit 1) unless ``--force``.
+    None when ``o`` may be written."""
     if os.path.islink(o) and not follow:
         return _usage(f"`{o}` is a symbolic link (to `{os.readlink(o)}`); refusing to write "
                       "through it: give --follow-symlinks to write the file it points to, or "
@@ -541,6 +591,12 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
         st = os.stat(target)
     except OSError:
         return None
+    from ..output.write import kind_of, refusal
+    kind = kind_of(st.st_mode)
+    if kind is not None:
+        if os.path.islink(o):
+            kind = f"a symbolic link to {kind} (`{target}`)"
+        return _usage(refusal(o, kind, NOT_REGULAR_HINT))
     import stat as S
     # read-only: no write bit for its owner (so also for root, whom os.access lets through),
     # or not writable by this user
@@ -563,22 +619,33 @@ def _encode_all(jobs: list, opt, deadline):
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
     """Write every output or none: each staged beside its target (:func:`aidl_lang.output.write.stage`:
-    symlinks, modes), then all renamed over their targets (``os.replace``: never
-    half-written).  Returns an error message, or None."""
-    from ..output.write import stage
+    symlinks, modes), then ``-`` written to standard output, then all renamed over their
+    targets (:func:`aidl_lang.output.write.replace`: never half-written, never over a FIFO,
+    device, socket or directory).  Returns an error message, or None."""
+    from ..output.write import NotRegularFile, replace, stage
     staged = []
     out = items[0][0] if items else ""
     try:
         for out, data in items:
-            staged.append(stage(out, data, follow))
-        for tmp, target in staged:
-            os.replace(tmp, target)
+            if out != STDOUT:
+                staged.append((*stage(out, data, follow, NOT_REGULAR_HINT), out))
+        for out, data in items:
+            if out == STDOUT:
+                sys.stdout.flush()
+                sys.stdout.buffer.write(data)
+                sys.stdout.buffer.flush()
+        for tmp, target, out in staged:
+            replace(tmp, target, out, hint=NOT_REGULAR_HINT)
         staged = []
         return None
+    except NotRegularFile as e:
+        return str(e)
+    except BrokenPipeError:
+        raise
     except OSError as e:
         return f"cannot write `{out}`: {e.strerror or e}"
     finally:
-        for tmp, _ in staged:
+        for tmp, _, _ in staged:
             try:
                 os.unlink(tmp)
             except OSError:
@@ -627,7 +694,7 @@ def cmd_render(args) -> int:
         return _usage(f"--nest-time expects seconds from 0 to 3600, got `{args.nest_time}`")
     if args.assembled:
         from ..output.formats import ASSEMBLED_FORMATS
-        flat_only = [str(o) for o in outs if o.suffix.lower() not in ASSEMBLED_FORMATS]
+        flat_only = [str(o) for o in outs if _suffix(o, args) not in ASSEMBLED_FORMATS]
         if flat_only:
             return _usage(f"--assembled writes STL, 3MF, STEP, GLB or PNG, not "
                           f"`{flat_only[0]}` (SVG and DXF are the flat parts)")
@@ -670,11 +737,16 @@ def cmd_render(args) -> int:
             if dropped:
                 notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
                              "outside every part left out of the layout")
-        names = _sheet_names(outs, len(flat))
+        if len(flat) > 1 and STDOUT in outs:
+            print(f"aidl: error: the layout has {len(flat)} sheets and standard output takes "
+                  "one: write them to files (-o cut.svg writes cut-1.svg, cut-2.svg, ...)",
+                  file=sys.stderr)
+            return 1
+        names = _sheet_names(outs, len(flat)) if len(flat) > 1 else [[o] for o in outs]
         outs = [n for per in names for n in per]
         cutting = () if args.assembled else CUT_FORMATS      # an assembled PNG: designed
-        jobs = [(n, s, o.suffix) for o, per in zip([p[0] for p in names], names)
-                for n, s in zip(per, flat if o.suffix.lower() in cutting else solid)]
+        jobs = [(n, s, _suffix(o, args)) for o, per in zip([p[0] for p in names], names)
+                for n, s in zip(per, flat if _suffix(o, args) in cutting else solid)]
         if args.assembled and not getattr(res.drawing, "placement", None):
             notes.append("note: no part is placed (`Place`): the assembled product is the "
                          "parts as on the sheet")
@@ -695,10 +767,12 @@ def cmd_render(args) -> int:
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
     if not args.json:
+        info = sys.stderr if STDOUT in outs else sys.stdout    # stdout holds the drawing
         for line in notes:
-            print(line)
+            print(line, file=info)
         for o in outs:
-            print(f"wrote {o}")
+            if o != STDOUT:
+                print(f"wrote {o}", file=info)
     return 0
 
 
@@ -762,7 +836,8 @@ def cmd_import(args) -> int:
               file=sys.stderr)
         return 1
     except DrawingError as ex:
-        print(f"{src}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
+        at = f"{src}:{ex.line}" if ex.line else src        # a DXF entity's line
+        print(f"{at}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
               file=sys.stderr)
         return 1
     for n in notes:
@@ -772,13 +847,20 @@ def cmd_import(args) -> int:
     if out == "-":
         sys.stdout.write(text)
         return 0
-    from ..files import open_dir_beneath, write_in_dir
+    from ..output.write import write_in_dir
     folder, base = os.path.split(os.path.abspath(out))
-    dfd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
     try:
-        write_in_dir(dfd, base, text.encode("utf-8"), out)
-    finally:
-        os.close(dfd)
+        dfd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        try:
+            # never over a link, a FIFO or a device such as /dev/null (NotRegularFile)
+            write_in_dir(dfd, base, text.encode("utf-8"), out, NOT_REGULAR_HINT)
+        finally:
+            os.close(dfd)
+    except OSError as ex:            # FileRefused, NotRegularFile: their message says it all
+        why = str(ex) if isinstance(ex, FileRefused) or not ex.strerror else \
+            f"cannot write `{out}`: {ex.strerror}"
+        print(f"aidl: error: {why}", file=sys.stderr)
+        return 1
     print(f"wrote {out}", file=sys.stderr)
     return 0
 

@@ -17,6 +17,12 @@ back to its start is an outline, otherwise a path.  A loop that crosses itself, 
 that finds nothing and a file past :data:`MAX_ENTITIES` raise :class:`DrawingError` (its
 ``code``, ``message`` and ``hint``: the caller places it at the call).
 
+Every number read is checked before it is used: a coordinate, radius, semi-axis or text
+height (in mm, after the unit) that is not finite (``inf``, ``nan``) or beyond
+:data:`~aidl_lang.limits.MAX_EXTENT` (1e6 mm, the model extent of a program), and a number
+derived from them (the centre and radius of a DXF bulge, a spline's steps), is ``E0130``
+naming the entity (DXF: its kind, handle and line; SVG: the element and its id).
+
 Units: DXF ``$INSUNITS`` (0, unitless, is read as millimetres with a note), the SVG's
 ``width``/``height`` against its ``viewBox`` (CSS units: 96 px to the inch); ``units=``
 overrides them (for SVG: one user unit of the ``viewBox`` is one ``units``).
@@ -29,6 +35,7 @@ from dataclasses import dataclass, field
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, elliptic_arc
 from ..geometry.spline import CubicSpline
+from ..limits import MAX_EXTENT
 
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
 MAX_ENTITIES = 20_000    # entities (DXF) or shapes (SVG) read from one drawing
@@ -46,12 +53,99 @@ INSUNITS_MM = {1: ("in", 25.4), 2: ("ft", 304.8), 3: ("mi", 1609344.0), 4: ("mm"
 
 
 class DrawingError(Exception):
-    """A drawing that gives nothing usable: ``code`` (``E0130`` cannot read, ``E0131`` a loop
-    that crosses itself, ``E0132`` nothing selected), ``message`` and ``hint``."""
+    """A drawing that gives nothing usable: ``code`` (``E0130`` cannot read, or a number not
+    finite or beyond the extent; ``E0131`` a loop that crosses itself, ``E0132`` nothing
+    selected), ``message`` and ``hint``; ``line``: the line of the drawing's text it is about
+    (1-based; a DXF entity's), or None."""
 
-    def __init__(self, code: str, message: str, hint: str = "") -> None:
+    def __init__(self, code: str, message: str, hint: str = "", line: int | None = None) -> None:
         super().__init__(message)
-        self.code, self.message, self.hint = code, message, hint
+        self.code, self.message, self.hint, self.line = code, message, hint, line
+
+
+class _OutOfRange(Exception):
+    """A number of the entity being read that is not finite or beyond :data:`MAX_EXTENT`:
+    ``what`` it is (``a coordinate``, ``a radius``) and its ``value`` (mm)."""
+
+    def __init__(self, what: str, value: float) -> None:
+        super().__init__(what)
+        self.what, self.value = what, value
+
+
+def _mm(v, what: str = "a coordinate") -> float:
+    """``v`` as a float when it is finite and within :data:`MAX_EXTENT` (mm); else raises
+    :class:`_OutOfRange`."""
+    x = float(v)
+    if not abs(x) <= MAX_EXTENT:                  # NaN fails too
+        raise _OutOfRange(what, x)
+    return x
+
+
+def _finite(v, what: str) -> float:
+    """``v`` as a float when it is finite (an angle, a ratio, a parameter step)."""
+    x = float(v)
+    if not math.isfinite(x):
+        raise _OutOfRange(what, x)
+    return x
+
+
+def _check_made(objs) -> None:
+    """Check the numbers of what an entity made (segments, circles, ``(cx, cy, rx, ry,
+    rotation)`` ellipses, text tuples), derived ones included (a bulge's centre and radius):
+    raises :class:`_OutOfRange`."""
+    for o in objs:
+        if isinstance(o, list):
+            _check_made(o)
+        elif isinstance(o, Line):
+            for v in (*o.start, *o.end):
+                _mm(v)
+        elif isinstance(o, (Arc, Circle)):
+            _mm(o.center[0]), _mm(o.center[1]), _mm(o.radius, "a radius")
+            if isinstance(o, Arc):
+                _finite(o.start_angle, "an angle"), _finite(o.sweep, "an angle")
+        elif isinstance(o, Spline):
+            for pt in o.curve.ctrl:
+                _mm(pt[0], "a control point"), _mm(pt[1], "a control point")
+            for h in o.curve.h:
+                _finite(h, "a knot step")
+        elif isinstance(o, EllipticArc):
+            c = o.curve
+            _mm(c.center[0]), _mm(c.center[1])
+            _mm(c.rx, "a semi-axis"), _mm(c.ry, "a semi-axis")
+            for v in (c.rotation, o.start_param, o.sweep):
+                _finite(v, "an angle")
+        elif isinstance(o, tuple) and o and isinstance(o[0], str):     # text
+            _mm(o[1][0]), _mm(o[1][1]), _mm(o[2], "a text height"), _finite(o[3], "an angle")
+        elif isinstance(o, tuple):                                      # an ellipse
+            _mm(o[0]), _mm(o[1]), _mm(o[2], "a semi-axis"), _mm(o[3], "a semi-axis")
+            _finite(o[4], "an angle")
+
+
+def _range_error(ex: _OutOfRange, entity: str, name: str, line: int | None = None) -> DrawingError:
+    """The ``E0130`` of :class:`_OutOfRange` ``ex`` in ``entity`` (``LINE (handle 2F, line
+    30)``, ``<path id="a">``) of the drawing ``name``."""
+    v = ex.value
+    how = (f"that is not a number ({v})" if v != v else f"that is infinite ({v})"
+           if math.isinf(v) else f"of {v:g} mm, beyond the limit of {MAX_EXTENT:g} mm (1 km)")
+    return DrawingError("E0130", f"{entity} of `{name}` has {ex.what} {how}",
+                        f"coordinates, radii and sizes in a drawing must be finite and within "
+                        f"{MAX_EXTENT:g} mm of the origin, as in a program: fix the entity in "
+                        "the drawing, or select other layers or ids", line)
+
+
+def _dxf_line(data: bytes, handle: str | None) -> int | None:
+    """The 1-based line of the ASCII DXF ``data`` where the entity of ``handle`` starts (its
+    type name; the handle's own line when the type is not just before it), or None."""
+    import re
+    if not handle or data.startswith(b"AutoCAD Binary DXF"):
+        return None
+    m = re.search(rb"(?m)^[ \t]*5[ \t]*\r?\n[ \t]*" + re.escape(handle.encode("ascii", "replace"))
+                  + rb"[ \t]*\r?$", data)
+    if m is None:
+        return None
+    line = data.count(b"\n", 0, m.start()) + 1
+    before = data[:m.start()].splitlines()[-2:]
+    return line - 1 if len(before) == 2 and before[0].strip() == b"0" else line
 
 
 @dataclass
@@ -351,7 +445,7 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
     count = 0
 
     def P(v):
-        return (float(v[0]) * scale, float(v[1]) * scale)
+        return (_mm(float(v[0]) * scale), _mm(float(v[1]) * scale))
 
     def aci(e) -> int:
         c = e.dxf.get("color", 256)
@@ -362,7 +456,7 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                 c = 7
         return abs(int(c))
 
-    def walk(entities, depth: int) -> None:
+    def walk(entities, depth: int, insert=None) -> None:
         nonlocal count
         for e in entities:
             count += 1
@@ -372,7 +466,9 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             t = e.dxftype()
             if t == "INSERT" and depth < 8:
                 try:
-                    walk(list(e.virtual_entities()), depth + 1)
+                    walk(list(e.virtual_entities()), depth + 1, insert or e)
+                except DrawingError:         # a number out of range in the block: not skipped
+                    raise
                 except Exception:
                     skipped["INSERT"] = skipped.get("INSERT", 0) + 1
                 continue
@@ -380,10 +476,22 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                 continue
             if colors is not None and aci(e) not in colors:
                 continue
+            made = (len(pieces), len(loops), len(circles), len(ellipses), len(texts))
             try:
                 one(e, t)
+                _check_made(pieces[made[0]:] + [seg for seg, _ in loops[made[1]:]]
+                            + circles[made[2]:] + ellipses[made[3]:] + texts[made[4]:])
             except _Skip as s:
                 skipped[s.what] = skipped.get(s.what, 0) + 1
+            except _OutOfRange as ex:
+                top = insert or e
+                handle = top.dxf.get("handle", None)
+                line = _dxf_line(data, handle)
+                where = ", ".join(x for x in (f"handle {handle}" if handle else "",
+                                              f"line {line}" if line else "") if x)
+                label = t + (f" (in the block of INSERT {where})" if insert is not None and where
+                             else f" ({where})" if where else "")
+                raise _range_error(ex, label, name, line) from None
 
     def one(e, t) -> None:
         ext = tuple(e.dxf.get("extrusion", (0, 0, 1))) if e.dxf.hasattr("extrusion") else (0, 0, 1)
@@ -394,11 +502,13 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             pieces.append([Line(P(e.dxf.start), P(e.dxf.end))])
         elif t == "CIRCLE":
             c = P(e.dxf.center)
-            circles.append(Circle((-c[0], c[1]) if flip else c, float(e.dxf.radius) * scale))
+            circles.append(Circle((-c[0], c[1]) if flip else c,
+                                  _mm(float(e.dxf.radius) * scale, "a radius")))
         elif t == "ARC":
             c = P(e.dxf.center)
-            r = float(e.dxf.radius) * scale
-            a1, a2 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
+            r = _mm(float(e.dxf.radius) * scale, "a radius")
+            a1 = math.radians(_finite(e.dxf.start_angle, "an angle"))
+            a2 = math.radians(_finite(e.dxf.end_angle, "an angle"))
             sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
             if flip:
                 c = (-c[0], c[1])
@@ -409,10 +519,11 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             if t == "POLYLINE" and not e.is_2d_polyline:
                 raise _Skip("POLYLINE (3D or mesh)")
             if t == "LWPOLYLINE":
-                vs = [(P((x, y)), b) for x, y, b in e.get_points("xyb")]
+                vs = [(P((x, y)), _finite(b, "a bulge")) for x, y, b in e.get_points("xyb")]
                 closed = e.closed
             else:
-                vs = [(P(v.dxf.location), v.dxf.get("bulge", 0.0)) for v in e.vertices]
+                vs = [(P(v.dxf.location), _finite(v.dxf.get("bulge", 0.0), "a bulge"))
+                      for v in e.vertices]
                 closed = e.is_closed
             if flip:
                 vs = [((-p[0], p[1]), -b) for p, b in vs]
@@ -430,17 +541,23 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             else:
                 pieces.append(segs)
         elif t == "SPLINE":
+            for v in e.control_points:       # before ezdxf's tools compute with them
+                P(v)
+            for k in (*e.knots, *e.weights):
+                _finite(k, "a knot or weight")
             pieces.append([_dxf_spline(e, P)])
         elif t == "ELLIPSE":
             # center and major axis are in world coordinates (not the OCS of ARC and
             # CIRCLE); the extrusion only turns the parameter: the minor axis is
             # extrusion x major axis, so an extrusion down runs the parameter clockwise
-            s0, s1 = float(e.dxf.start_param), float(e.dxf.end_param)
+            s0 = _finite(e.dxf.start_param, "an angle")
+            s1 = _finite(e.dxf.end_param, "an angle")
             c = P(e.dxf.center)
-            mx, my = float(e.dxf.major_axis[0]) * scale, float(e.dxf.major_axis[1]) * scale
-            rx = math.hypot(mx, my)
-            ratio = float(e.dxf.ratio)
-            ry = rx * ratio
+            mx = _mm(float(e.dxf.major_axis[0]) * scale, "a semi-axis")
+            my = _mm(float(e.dxf.major_axis[1]) * scale, "a semi-axis")
+            rx = _mm(math.hypot(mx, my), "a semi-axis")
+            ratio = _finite(e.dxf.ratio, "an axis ratio")
+            ry = _mm(rx * ratio, "a semi-axis")
             rot = math.atan2(my, mx)
             sweep = (s1 - s0) % (2 * math.pi)
             if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
@@ -632,7 +749,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
     count = 0
 
     def P(p):
-        return (float(p[0]) * scale, -float(p[1]) * scale)
+        return (_mm(float(p[0]) * scale), _mm(-float(p[1]) * scale))
 
     def colour_ok(el) -> bool:
         if color is None:
@@ -668,22 +785,38 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
             if count > MAX_ENTITIES:
                 raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} shapes",
                                    "select fewer with id= or split the drawing")
-            if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
-                # the implicit values: centre, semi-axes and turn after the element's
-                # transform (a turned ellipse keeps its own cx, cy, rx, ry and a matrix)
-                c = P(el.implicit_center)
-                rx, ry = float(el.implicit_rx) * scale, float(el.implicit_ry) * scale
-                rot = -float(el.rotation) if el.rotation else 0.0
-                if rx <= 0 or ry <= 0:
-                    continue
-                if abs(rx - ry) <= 1e-12 * max(rx, ry):
-                    circles.append(Circle(c, rx))
-                else:
-                    ellipses.append((c[0], c[1], rx, ry, rot))
-                continue
-            _svg_path(S, S.Path(el), P, pieces, loops, skipped)
+            try:
+                _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped)
+            except _OutOfRange as ex:
+                tag = type(el).__name__.lower()
+                ident_ = getattr(el, "id", None)
+                raise _range_error(ex, f"<{tag}>" + (f" (id `{ident_}`)" if ident_ else ""),
+                                   name) from None
     _skip_notes(skipped, notes, name)
     return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+
+
+def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> None:
+    """Read the shape ``el`` into the lists; its numbers checked (:func:`_check_made`: raises
+    :class:`_OutOfRange`)."""
+    made = (len(pieces), len(loops), len(circles), len(ellipses))
+    if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
+        # the implicit values: centre, semi-axes and turn after the element's
+        # transform (a turned ellipse keeps its own cx, cy, rx, ry and a matrix)
+        c = P(el.implicit_center)
+        rx = _mm(float(el.implicit_rx) * scale, "a radius")
+        ry = _mm(float(el.implicit_ry) * scale, "a radius")
+        rot = -_finite(el.rotation, "an angle") if el.rotation else 0.0
+        if rx <= 0 or ry <= 0:
+            return
+        if abs(rx - ry) <= 1e-12 * max(rx, ry):
+            circles.append(Circle(c, rx))
+        else:
+            ellipses.append((c[0], c[1], rx, ry, rot))
+    else:
+        _svg_path(S, S.Path(el), P, pieces, loops, skipped)
+    _check_made(pieces[made[0]:] + [seg for seg, _ in loops[made[1]:]] + circles[made[2]:]
+                + ellipses[made[3]:])
 
 
 def _css_mm(width, vb_width) -> float | None:

@@ -300,15 +300,15 @@ def main(files: list[str], check: bool = False) -> int:
     Returns the exit status: 0 all formatted (or, with ``check``, nothing would change), 1 a
     file has syntax errors (printed; the file is not touched) or, with ``check``, would change;
     3 the formatter found it would change a program's meaning (a bug; nothing written).
-    Files are rewritten atomically (a temporary file beside it, then renamed) and only if their
-    text changes.
+    Files are rewritten atomically (a temporary file beside it, then renamed:
+    :func:`aidl_lang.output.write.write_atomic`, never over a FIFO or a device) and only if
+    their text changes.
     """
-    import os
     import sys
-    import tempfile
     from pathlib import Path
 
     from ..diagnostics import render_text
+    from ..output.write import WriteError, write_atomic
     from ..sources import SourceRefused, read_program
 
     status = 0
@@ -365,18 +365,12 @@ def main(files: list[str], check: bool = False) -> int:
             print(f"would reformat {f}")
             status = max(status, 1)
             continue
-        p = Path(os.path.realpath(f))       # a symlink stays a link: its target is rewritten
+        # a symlink stays a link: its target is rewritten; the mode is kept; only a regular
+        # file is replaced (one swapped for a FIFO or a device since it was read is left)
         try:
-            fd, tmp = tempfile.mkstemp(suffix=".aidl", dir=str(p.parent))
-            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-                fh.write(out)
-            try:
-                os.chmod(tmp, p.stat().st_mode & 0o7777)
-            except OSError:
-                pass
-            os.replace(tmp, p)
-        except OSError as e:
-            print(f"aidl: error: cannot write `{f}`: {e.strerror or e}", file=sys.stderr)
+            write_atomic(Path(f), out.encode("utf-8"), follow_symlinks=True)
+        except WriteError as e:
+            print(f"aidl: error: {e}", file=sys.stderr)
             status = max(status, 1)
             continue
         print(f"formatted {f}")

@@ -19,10 +19,8 @@ from __future__ import annotations
 
 import base64
 import json
-import os
 import re
 import struct
-import tempfile
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -385,18 +383,11 @@ def transcript_markdown(res: Result) -> str:
 
 
 def write_atomic(path: Path, text: str | bytes) -> None:
-    """Write ``text`` (or bytes) to a temporary file beside ``path``, then rename it over
-    ``path``."""
-    fd, tmp = tempfile.mkstemp(suffix=path.suffix, dir=str(path.parent.resolve()))
-    try:
-        with (os.fdopen(fd, "wb") if isinstance(text, bytes)
-              else os.fdopen(fd, "w", encoding="utf-8")) as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    """Write ``text`` (UTF-8) or bytes to a temporary file beside ``path``, then rename it over
+    ``path`` (:func:`aidl_lang.output.write.write_atomic`: never over a FIFO, device or
+    directory).  Raises :class:`~aidl_lang.output.write.WriteError`."""
+    from ..output.write import write_atomic as write
+    write(Path(path), text if isinstance(text, bytes) else text.encode("utf-8"))
 
 
 def transcript_paths(out: Path) -> tuple[Path, Path]:

@@ -11,7 +11,8 @@ from pathlib import Path
 
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
 from ..sources import SourceRefused, decode_program
-from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular, write_in_dir
+from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
+from ..output.write import write_in_dir
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
 MAX_SOURCE = 1_000_000    # characters of program text per call

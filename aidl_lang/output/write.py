@@ -1,25 +1,101 @@
 """Writing output files safely: the rules of ``aidl render``'s ``-o`` (docs/outputs.md,
-"Writing files") shared by the API's ``Result.write``, the command line, the MCP server and
-batch.
+"Writing files") shared by the API's ``Result.write``, the command line (``render``,
+``import``, ``fmt``), the MCP server, batch and ``aidl generate``: every file AIDL writes
+goes through :func:`stage` and :func:`replace` (or :func:`write_in_dir`), here.
 
 * :func:`check_output_path`: an output path as ``aidl render`` accepts it (a known
   extension, not a folder, not the program, not a link unless asked, never a link another
-  user planted in ``/tmp``, not a read-only file unless forced); raises :class:`WriteError`.
-* :func:`stage` / :func:`write_atomic`: the data written to a temporary file beside the
-  target, then renamed over it (a link planted after the check is replaced, never followed).
+  user planted in ``/tmp``, not a read-only file unless forced, not a FIFO, device or
+  socket); raises :class:`WriteError`.
+* :func:`stage` / :func:`replace` / :func:`write_atomic`: the data written to a temporary
+  file beside the target, then renamed over it (a link planted after the check is replaced,
+  never followed).
+* :func:`write_in_dir`: the same in a folder given by its descriptor (``aidl import``, the
+  MCP server).
+* :func:`not_regular` / :class:`NotRegularFile`: **only a regular file is ever replaced**.
+  An existing target that is a FIFO, a character or block device (``/dev/null``), a socket
+  or a directory is refused, never renamed over (issue 48: ``aidl import x.dxf -o
+  /dev/null`` run as root replaced the system's ``/dev/null`` with a regular file).
 * :func:`planted_link`: the kernel's ``fs.protected_symlinks`` rule for a link in a sticky
   world-writable folder.
+
+What the check guarantees: the kind of the target is read with ``lstat`` (the node itself,
+never opened: a FIFO is never waited on, a device never touched, a link never followed) when
+the data is staged and again just before ``rename(2)``, by the same name in the same folder
+(``dir_fd`` when the folder was opened).  A node that is not a regular file at either moment
+is left as it is.  POSIX has no "rename only over a regular file", so one window remains:
+the single system call between the last ``lstat`` and the rename, in which a process that
+may write the folder could put a FIFO or device node at the name; such a process could as
+well remove or replace that node itself, so nothing it could not already destroy is lost.
+A directory is never replaced in any case (``rename(2)`` of a file over one fails).
 """
 from __future__ import annotations
 
 import os
+import stat as S
 from pathlib import Path
 
 
 class WriteError(OSError):
     """An output file cannot be written where asked (the program itself, a directory, an
-    unknown extension, a folder that does not exist or is not writable); the message says
-    why."""
+    unknown extension, a folder that does not exist or is not writable, a FIFO or device);
+    the message says why."""
+
+
+class NotRegularFile(WriteError):
+    """The existing target is not a regular file (``kind``: ``a FIFO``, ``a character
+    device``, ``a block device``, ``a socket``, ``a directory``): refused, left as it is.
+    ``path``: the path as the user gave it."""
+
+    def __init__(self, path: str | os.PathLike, kind: str, hint: str | None = None) -> None:
+        self.path, self.kind = os.fspath(path), kind
+        super().__init__(refusal(path, kind, hint))
+
+    def __str__(self) -> str:
+        return self.args[0]
+
+
+_KINDS = ((S.S_ISFIFO, "a FIFO"), (S.S_ISCHR, "a character device"),
+          (S.S_ISBLK, "a block device"), (S.S_ISSOCK, "a socket"), (S.S_ISDIR, "a directory"))
+
+
+def kind_of(mode: int) -> str | None:
+    """What a file of ``st_mode`` ``mode`` is when it must not be replaced (``a FIFO``, ``a
+    character device``, ...), or None for a regular file or a symbolic link (a link is
+    replaced itself, never followed, by a rename)."""
+    for test, kind in _KINDS:
+        if test(mode):
+            return kind
+    return None
+
+
+def not_regular(path: str | os.PathLike, dir_fd: int | None = None) -> str | None:
+    """What the existing ``path`` (relative to the folder ``dir_fd`` when given) is when a
+    write must not replace it (``a FIFO``, ``a character device``, ``a block device``, ``a
+    socket``, ``a directory``), else None (a regular file, a symbolic link, nothing there).
+    ``lstat`` only: nothing is opened or followed."""
+    try:
+        st = os.stat(path, dir_fd=dir_fd, follow_symlinks=False)
+    except (FileNotFoundError, NotADirectoryError):
+        return None
+    return kind_of(st.st_mode)
+
+
+def refusal(path: str | os.PathLike, kind: str, hint: str | None = None) -> str:
+    """The message refusing to replace ``path``, which is ``kind``: which path, what it is,
+    what to do (``hint``; default: choose another path)."""
+    return (f"`{os.fspath(path)}` is {kind}, not a regular file; outputs are written by "
+            f"replacing a regular file, so it is left as it is: "
+            f"{hint or 'choose another path'}")
+
+
+def check_replaceable(path: str | os.PathLike, shown: str | os.PathLike | None = None,
+                      dir_fd: int | None = None, hint: str | None = None) -> None:
+    """Raise :class:`NotRegularFile` (naming ``shown``, default ``path``) when ``path``
+    exists and is not a regular file or a link (:func:`not_regular`)."""
+    kind = not_regular(path, dir_fd)
+    if kind is not None:
+        raise NotRegularFile(shown if shown is not None else path, kind, hint)
 
 
 def planted_link(out: Path) -> str | None:
@@ -27,7 +103,6 @@ def planted_link(out: Path) -> str | None:
     kernel's ``fs.protected_symlinks`` rule — in a sticky world-writable folder (``/tmp``) a
     link is followed only by its owner or the folder's owner, since another user may have
     planted it to aim this write at a file of yours."""
-    import stat as S
     link, folder = os.lstat(out), os.stat(out.parent)
     if folder.st_mode & S.S_ISVTX and folder.st_mode & S.S_IWOTH \
             and link.st_uid not in (os.geteuid(), folder.st_uid):
@@ -44,7 +119,8 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     directory, not the program ``program`` itself, not a symbolic link (unless
     ``follow_symlinks``; never one that another user made in a sticky world-writable folder
     such as /tmp, the kernel's ``fs.protected_symlinks`` rule), not a read-only file (unless
-    ``force``).  Raises :class:`WriteError`."""
+    ``force``), not a FIFO, device or socket (nor a link to one: :class:`NotRegularFile`).
+    Raises :class:`WriteError`."""
     from .formats import FORMATS
     out = Path(path)
     if out.suffix.lower() not in FORMATS:
@@ -52,11 +128,11 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
                          + ", ".join(sorted(FORMATS)))
     if out.is_dir():
         raise WriteError(f"`{out}` is a directory; give a file name, e.g. {out / 'part.svg'}")
+    check_replaceable(out)
     real = os.path.realpath(out)
     if program and os.path.exists(program) and os.path.exists(real) \
             and os.path.samefile(real, program):
         raise WriteError(f"`{out}` is the program being compiled; refusing to overwrite it")
-    import stat as S
     if os.path.islink(out):
         if not follow_symlinks:
             raise WriteError(f"`{out}` is a symbolic link; refusing to write through it "
@@ -68,6 +144,8 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
         st = os.stat(real if follow_symlinks else out)
     except OSError:
         return out
+    if follow_symlinks and kind_of(st.st_mode):
+        raise NotRegularFile(out, f"a symbolic link to {kind_of(st.st_mode)} (`{real}`)")
     if S.S_ISREG(st.st_mode) and not force and (
             not st.st_mode & S.S_IWUSR or not os.access(real, os.W_OK)):
         raise WriteError(f"`{out}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
@@ -75,14 +153,18 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     return out
 
 
-def stage(out, data: bytes, follow_symlinks: bool = False) -> tuple[str, Path]:
+def stage(out, data: bytes, follow_symlinks: bool = False,
+          hint: str | None = None) -> tuple[str, Path]:
     """Write ``data`` to a temporary file beside ``out`` and return ``(temporary path,
-    target)``; :func:`os.replace` of the one over the other finishes the write.  With
+    target)``; :func:`replace` of the one over the other finishes the write.  With
     ``follow_symlinks`` the target is a symlink's target (the link is kept), else the path
     itself (a link planted after the check is never followed); a new file gets ``0666 &
-    ~umask``, an existing one keeps its mode.  Raises ``OSError`` (nothing left behind)."""
+    ~umask``, an existing one keeps its mode.  A target that is not a regular file is
+    refused before anything is written (:class:`NotRegularFile`, ``hint``: what to do).
+    Raises ``OSError`` (nothing left behind)."""
     import tempfile
     target = Path(os.path.realpath(out)) if follow_symlinks else Path(os.path.abspath(out))
+    check_replaceable(target, out, hint=hint)
     try:
         mode = os.stat(target).st_mode & 0o7777
     except FileNotFoundError:
@@ -103,14 +185,33 @@ def stage(out, data: bytes, follow_symlinks: bool = False) -> tuple[str, Path]:
     return tmp, target
 
 
-def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
+def replace(tmp: str | os.PathLike, target: str | os.PathLike,
+            shown: str | os.PathLike | None = None, dir_fd: int | None = None,
+            hint: str | None = None) -> None:
+    """Rename the staged ``tmp`` over ``target`` (both relative to the folder ``dir_fd`` when
+    given): the last step of every write.  The target's kind is read again just before the
+    rename; one that is not a regular file is refused (:class:`NotRegularFile` naming
+    ``shown``) and left as it is, ``tmp`` too (the caller removes it).  See the module text
+    for what this guarantees.  Raises ``OSError``."""
+    check_replaceable(target, shown if shown is not None else target, dir_fd, hint)
+    if dir_fd is None:
+        os.replace(tmp, target)
+    else:
+        os.replace(tmp, target, src_dir_fd=dir_fd, dst_dir_fd=dir_fd)
+
+
+def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False,
+                 hint: str | None = None) -> None:
     """Write ``data`` to ``out`` through a temporary file beside it, renamed over it
-    (:func:`stage`, then :func:`os.replace`).  Raises :class:`WriteError`."""
+    (:func:`stage`, then :func:`replace`): never over a FIFO, device, socket or directory.
+    Raises :class:`WriteError` (:class:`NotRegularFile` for those)."""
     tmp = None
     try:
-        tmp, target = stage(out, data, follow_symlinks)
-        os.replace(tmp, target)
+        tmp, target = stage(out, data, follow_symlinks, hint)
+        replace(tmp, target, out, hint=hint)
         tmp = None
+    except NotRegularFile:
+        raise
     except OSError as e:
         raise WriteError(f"cannot write `{out}`: {e.strerror or e}") from None
     finally:
@@ -119,3 +220,47 @@ def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False) -> None:
                 os.unlink(tmp)
             except OSError:
                 pass
+
+
+def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
+                 hint: str | None = None) -> None:
+    """Write ``data`` as the file ``name`` of the folder ``dfd``: a temporary file made there
+    (``O_CREAT | O_EXCL | O_NOFOLLOW``), then renamed over ``name`` (:func:`replace`).  A new
+    file gets ``0666 & ~umask``, an existing regular file keeps its mode; a link at ``name``
+    is refused (checked without following it), and one planted after the check is replaced
+    by the rename, never written through; a FIFO, device, socket or directory is refused
+    (:class:`NotRegularFile`, before anything is written and again before the rename).
+    ``shown``: the path as the user gave it, for messages.  Raises :class:`WriteError`,
+    :class:`aidl_lang.files.FileRefused` or ``OSError`` (nothing left behind)."""
+    import secrets
+
+    from ..files import CLOEXEC, NOFOLLOW, FileRefused
+    shown = shown or name
+    if os.sep in name or name in ("", ".", ".."):
+        raise FileRefused(f"`{shown}` is not a file name")
+    try:
+        st = os.stat(name, dir_fd=dfd, follow_symlinks=False)
+    except FileNotFoundError:
+        mask = os.umask(0)
+        os.umask(mask)
+        mode = 0o666 & ~mask
+    else:
+        if S.S_ISLNK(st.st_mode):
+            raise FileRefused(f"`{shown}` is a symbolic link; refusing to write through it")
+        if kind_of(st.st_mode):
+            raise NotRegularFile(shown, kind_of(st.st_mode), hint)
+        mode = S.S_IMODE(st.st_mode)
+    tmp = f".{name[:200]}.{secrets.token_hex(6)}.tmp"
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | NOFOLLOW | CLOEXEC, 0o600,
+                 dir_fd=dfd)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+            os.fchmod(f.fileno(), mode)
+        replace(tmp, name, shown, dfd, hint)
+    except BaseException:
+        try:
+            os.unlink(tmp, dir_fd=dfd)
+        except OSError:
+            pass
+        raise

@@ -1,0 +1,140 @@
+"""Numbers a drawing may hold (issue 48, finding 3): a DXF or SVG coordinate, radius or size
+that is not finite or beyond the model extent (``limits.MAX_EXTENT``, 1e6 mm) is one located
+``E0130`` naming the entity and the limit, in ``aidl import`` and in ``Drawing2D(...)``,
+never an internal error.  The drawings are written by ezdxf (an independent writer)."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import ezdxf
+import pytest
+
+from aidl_lang.limits import MAX_EXTENT
+
+AIDL = [sys.executable, "-m", "aidl_lang.cli"]
+INF, NAN = float("inf"), float("nan")
+
+
+def run(*args, cwd):
+    return subprocess.run(AIDL + [str(a) for a in args], capture_output=True, text=True,
+                          cwd=cwd, timeout=120)
+
+
+def _line(m):
+    m.add_line((0, 0), (1e300, 0))
+
+
+def _circle(m):
+    m.add_circle((0, 0), 1e300)
+
+
+def _lwpolyline(m):
+    m.add_lwpolyline([(0, 0), (NAN, 1), (2, 2)], close=True)
+
+
+def _arc(m):
+    m.add_arc((INF, 0), 5, 0, 90)
+
+
+DXFS = {"LINE": (_line, "1e+300 mm"), "CIRCLE": (_circle, "radius of 1e+300 mm"),
+        "LWPOLYLINE": (_lwpolyline, "not a number (nan)"), "ARC": (_arc, "infinite (inf)")}
+SVG = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+       'viewBox="0 0 100 100">{}</svg>')
+SVGS = {"path": ('<path id="edge" d="M 0 0 L 1e300 0 L 5 5 Z"/>', "1e+300 mm"),
+        "path-inf": ('<path d="M 0 0 L 1e400 0 L 5 5 Z"/>', "infinite (inf)"),
+        "circle": ('<circle cx="1" cy="1" r="1e300"/>', "radius of 1e+300 mm")}
+
+
+def _dxf(tmp_path, kind) -> str:
+    doc = ezdxf.new("R2010")
+    doc.units = 4                                   # mm: the numbers as written
+    DXFS[kind][0](doc.modelspace())
+    doc.saveas(tmp_path / "bad.dxf")
+    return "bad.dxf"
+
+
+def _svg(tmp_path, kind) -> str:
+    (tmp_path / "bad.svg").write_text(SVG.format(SVGS[kind][0]))
+    return "bad.svg"
+
+
+def _clean(text: str) -> None:
+    assert "internal error" not in text and "Traceback" not in text, text
+
+
+CASES = [("dxf", k) for k in DXFS] + [("svg", k) for k in SVGS]
+
+
+def _make(tmp_path, fmt, kind):
+    if fmt == "dxf":
+        return _dxf(tmp_path, kind), kind, DXFS[kind][1]
+    tag = kind.split("-")[0]
+    return _svg(tmp_path, kind), f"<{tag}>", SVGS[kind][1]
+
+
+@pytest.mark.parametrize("fmt,kind", CASES)
+def test_aidl_import_refuses_numbers_out_of_range(tmp_path, fmt, kind):
+    name, entity, said = _make(tmp_path, fmt, kind)
+    r = run("import", name, "-o", "part.aidl", cwd=tmp_path)
+    _clean(r.stdout + r.stderr)
+    assert r.returncode == 1, r.stderr
+    assert "error[E0130]" in r.stderr and entity in r.stderr and said in r.stderr, r.stderr
+    assert f"{MAX_EXTENT:g} mm" in r.stderr, r.stderr
+    assert not (tmp_path / "part.aidl").exists()
+    if fmt == "dxf":                                 # located at the entity: handle and line
+        first = r.stderr.splitlines()[0]
+        assert first.startswith(f"{name}:") and "handle" in first, first
+        line = int(first.split(":")[1])
+        text = (tmp_path / name).read_text().splitlines()
+        assert text[line - 1].strip() == kind, text[line - 3:line + 2]
+
+
+@pytest.mark.parametrize("fmt,kind", CASES)
+def test_drawing2d_refuses_numbers_out_of_range_at_the_call(tmp_path, fmt, kind):
+    name, entity, said = _make(tmp_path, fmt, kind)
+    (tmp_path / "p.aidl").write_text(f'units mm\nsolid plate {{\n    d = Drawing2D("{name}")\n'
+                                     f'    Fixed(d.origin)\n}}\n')
+    r = run("check", "p.aidl", cwd=tmp_path)
+    _clean(r.stdout + r.stderr)
+    assert r.returncode == 1, r.stderr
+    first = r.stderr.splitlines()[0]
+    assert first.startswith("p.aidl:3:19: error[E0130]"), r.stderr
+    assert entity in first and said in first and name in first, first
+    assert f"{MAX_EXTENT:g} mm" in r.stderr, r.stderr
+
+
+def test_the_api_gives_the_same_diagnostic(tmp_path):
+    import aidl_lang
+    name = _dxf(tmp_path, "CIRCLE")
+    res = aidl_lang.compile('units mm\nsolid plate {\n    d = Drawing2D("bad.dxf")\n}\n',
+                            path=tmp_path / "p.aidl")
+    assert not res.ok
+    (d,) = [d for d in res.diagnostics if d.code == "E0130"]
+    assert "CIRCLE" in d.message and name in d.message
+
+
+def test_numbers_at_the_limit_are_read(tmp_path):
+    """1e6 mm exactly is inside the extent (as in a program)."""
+    from aidl_lang.drawing import read_drawing
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    doc.modelspace().add_line((0, 0), (MAX_EXTENT, 0))
+    doc.modelspace().add_circle((0, 0), MAX_EXTENT)
+    doc.saveas(tmp_path / "ok.dxf")
+    d = read_drawing((tmp_path / "ok.dxf").read_bytes(), "ok.dxf")
+    assert d.circles[0].radius == MAX_EXTENT and d.paths[0].end == (MAX_EXTENT, 0.0)
+
+
+def test_a_block_reference_names_its_insert(tmp_path):
+    """An entity inside a block (INSERT) is named by the INSERT's handle, never skipped as a
+    block that could not be exploded."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    blk = doc.blocks.new("B")
+    blk.add_circle((0, 0), 2e6)
+    doc.modelspace().add_blockref("B", (0, 0))
+    doc.saveas(tmp_path / "blk.dxf")
+    r = run("import", "blk.dxf", "-o", "-", cwd=tmp_path)
+    _clean(r.stderr)
+    assert r.returncode == 1 and "CIRCLE (in the block of INSERT handle" in r.stderr, r.stderr
