@@ -253,3 +253,101 @@ def test_binary_output_is_not_written_to_a_terminal(tmp_path):
         os.close(slave)
         os.close(master)
     assert r.returncode == 2 and b"refusing to write binary PNG to a terminal" in r.stderr
+
+
+def test_a_fifo_put_there_after_the_last_check_is_swapped_back(tmp_path, monkeypatch):
+    """The window a check leaves: a FIFO made after every check, just before the rename.
+    The rename is an atomic exchange (renameat2 RENAME_EXCHANGE) and the node it took out is
+    looked at: the FIFO goes back, the same node (inode), and the write is refused."""
+    from aidl_lang.output import write as W
+    if W._libc_renameat2() is None:
+        pytest.skip("no renameat2 here")
+    p = tmp_path / "n.svg"
+    p.write_text("old")
+    check = W.check_replaceable
+    made = {}
+
+    def check_then_swap(path, *a, **k):
+        check(path, *a, **k)
+        if not made:
+            os.unlink(p)
+            os.mkfifo(p)
+            made["ino"] = os.lstat(p).st_ino
+    monkeypatch.setattr(W, "check_replaceable", check_then_swap)
+    with pytest.raises(W.NotRegularFile) as e:
+        W.write_atomic(p, b"new")
+    assert "is a FIFO" in str(e.value)
+    st = os.lstat(p)
+    assert stat.S_ISFIFO(st.st_mode) and st.st_ino == made["ino"]
+    assert [q.name for q in tmp_path.iterdir()] == ["n.svg"]       # the staged file removed
+
+
+def test_without_renameat2_the_check_comes_just_before_the_rename(tmp_path, monkeypatch):
+    """Another kernel or libc: a plain rename after a second check (both paths tested)."""
+    from aidl_lang.output import write as W
+    monkeypatch.setattr(W, "_libc_renameat2", lambda: None)
+    p = tmp_path / "n.svg"
+    p.write_text("old")
+    W.write_atomic(p, b"new")
+    assert p.read_bytes() == b"new"
+    os.unlink(p)
+    os.mkfifo(p)
+    with pytest.raises(W.NotRegularFile):
+        W.write_atomic(p, b"new")
+    assert stat.S_ISFIFO(os.lstat(p).st_mode)
+
+
+_RACER = r"""
+import os, sys, time
+p = sys.argv[1]
+lost = 0
+end = time.monotonic() + float(sys.argv[2])
+while time.monotonic() < end:
+    try:
+        os.unlink(p)
+    except FileNotFoundError:
+        pass
+    try:
+        os.mkfifo(p)
+    except FileExistsError:
+        continue
+    fd = os.open(p, os.O_RDONLY | os.O_NONBLOCK)   # holds the node: its link count tells
+    try:
+        if not os.path.samestat(os.fstat(fd), os.lstat(p)):
+            continue                               # the writer's file came first
+        time.sleep(0.0005)
+        if os.fstat(fd).st_nlink == 0:             # renamed over: the FIFO has no name left
+            lost += 1
+    except FileNotFoundError:
+        pass
+    finally:
+        os.close(fd)
+print(lost)
+"""
+
+
+def test_two_processes_race_and_no_fifo_is_ever_renamed_over(tmp_path):
+    """A second process keeps putting a FIFO at the output path while this one writes it
+    again and again: every FIFO keeps its name (link count never 0), each write either
+    lands or is refused."""
+    import subprocess
+    import sys
+    import time
+    from aidl_lang.output import write as W
+    if W._libc_renameat2() is None:
+        pytest.skip("no renameat2 here")
+    p = tmp_path / "n.svg"
+    racer = subprocess.Popen([sys.executable, "-c", _RACER, str(p), "2"],
+                             stdout=subprocess.PIPE, text=True)
+    wrote = refused = 0
+    end = time.monotonic() + 2
+    while time.monotonic() < end:
+        try:
+            W.write_atomic(p, b"new")
+            wrote += 1
+        except W.WriteError:
+            refused += 1
+    out, _ = racer.communicate(timeout=30)
+    assert racer.returncode == 0 and int(out) == 0, out
+    assert wrote and refused, (wrote, refused)
+    assert not [q for q in tmp_path.iterdir() if q.name.endswith(".tmp")]

@@ -622,7 +622,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
     symlinks, modes), then ``-`` written to standard output, then all renamed over their
     targets (:func:`aidl_lang.output.write.replace`: never half-written, never over a FIFO,
     device, socket or directory).  Returns an error message, or None."""
-    from ..output.write import NotRegularFile, replace, stage
+    from ..output.write import NotRegularFile, discard, replace, stage
     staged = []
     out = items[0][0] if items else ""
     try:
@@ -646,10 +646,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
         return f"cannot write `{out}`: {e.strerror or e}"
     finally:
         for tmp, _, _ in staged:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
+            discard(tmp)
 
 
 def cmd_render(args) -> int:

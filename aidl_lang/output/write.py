@@ -21,18 +21,25 @@ goes through :func:`stage` and :func:`replace` (or :func:`write_in_dir`), here.
 
 What the check guarantees: the kind of the target is read with ``lstat`` (the node itself,
 never opened: a FIFO is never waited on, a device never touched, a link never followed) when
-the data is staged and again just before ``rename(2)``, by the same name in the same folder
-(``dir_fd`` when the folder was opened).  A node that is not a regular file at either moment
-is left as it is.  POSIX has no "rename only over a regular file", so one window remains:
-the single system call between the last ``lstat`` and the rename, in which a process that
-may write the folder could put a FIFO or device node at the name; such a process could as
-well remove or replace that node itself, so nothing it could not already destroy is lost.
-A directory is never replaced in any case (``rename(2)`` of a file over one fails).
+the data is staged, for a clear error before anything moves.  The rename itself is
+``renameat2(2)`` with ``RENAME_EXCHANGE`` (Linux 3.15+, glibc 2.28+): the staged file and
+the target swap names in one step, and the node now under the temporary name, the old
+target as it was at that instant, is looked at; a regular file (or a link) is removed, any
+other node is swapped back, unchanged, and refused.  So no FIFO, device, socket or directory
+is ever replaced, even one put there after every check (by the same name in the same folder,
+``dir_fd`` when the folder was opened); at worst it spends a moment under the temporary
+name.  A new name is taken with ``RENAME_NOREPLACE``.  Where the system has no
+``renameat2`` (another kernel or libc, a filesystem without the flags) the check is repeated
+just before a plain ``rename(2)``, leaving the one system call between them open.
 """
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
+import errno
 import os
 import stat as S
+from functools import lru_cache
 from pathlib import Path
 
 
@@ -189,15 +196,90 @@ def replace(tmp: str | os.PathLike, target: str | os.PathLike,
             shown: str | os.PathLike | None = None, dir_fd: int | None = None,
             hint: str | None = None) -> None:
     """Rename the staged ``tmp`` over ``target`` (both relative to the folder ``dir_fd`` when
-    given): the last step of every write.  The target's kind is read again just before the
-    rename; one that is not a regular file is refused (:class:`NotRegularFile` naming
-    ``shown``) and left as it is, ``tmp`` too (the caller removes it).  See the module text
-    for what this guarantees.  Raises ``OSError``."""
-    check_replaceable(target, shown if shown is not None else target, dir_fd, hint)
+    given): the last step of every write.  A target that is not a regular file (or a link) is
+    refused (:class:`NotRegularFile` naming ``shown``) and left as it is, ``tmp`` too (the
+    caller removes it): checked first, and again on the node the atomic exchange took out
+    (see the module text).  Raises ``OSError``."""
+    shown = shown if shown is not None else target
+    check_replaceable(target, shown, dir_fd, hint)
+    for _ in range(3):
+        try:
+            if not _renameat2(tmp, target, dir_fd, _RENAME_EXCHANGE):
+                break                                   # no renameat2 here: plain rename
+        except FileNotFoundError:                       # nothing at the target: take the name
+            try:
+                if _renameat2(tmp, target, dir_fd, _RENAME_NOREPLACE):
+                    return
+                break
+            except FileExistsError:                     # something came meanwhile: again
+                continue
+        # the old target now has the temporary name: only a regular file (or link) may go
+        kind = not_regular(tmp, dir_fd)
+        if kind is not None:
+            _put_back(tmp, target, dir_fd)
+            raise NotRegularFile(shown, kind, hint)
+        discard(tmp, dir_fd)
+        return
+    check_replaceable(target, shown, dir_fd, hint)
     if dir_fd is None:
         os.replace(tmp, target)
     else:
         os.replace(tmp, target, src_dir_fd=dir_fd, dst_dir_fd=dir_fd)
+
+
+def _put_back(tmp, target, dir_fd: int | None) -> None:
+    """The node an exchange took out (now at ``tmp``) goes back to ``target``, unchanged:
+    swapped with the staged file, or renamed back if the target's name is gone meanwhile."""
+    try:
+        _renameat2(tmp, target, dir_fd, _RENAME_EXCHANGE)
+    except FileNotFoundError:
+        try:
+            _renameat2(tmp, target, dir_fd, _RENAME_NOREPLACE)
+        except OSError:
+            pass                    # something else took the name: the node stays at tmp
+
+
+def discard(tmp, dir_fd: int | None = None) -> None:
+    """Remove the staged file ``tmp`` after a failed write: only a regular file (a node that
+    an exchange could not put back is left where it is); errors are ignored."""
+    try:
+        if not_regular(tmp, dir_fd) is None:
+            os.unlink(tmp, dir_fd=dir_fd)
+    except OSError:
+        pass
+
+
+_AT_FDCWD = -100
+_RENAME_NOREPLACE, _RENAME_EXCHANGE = 1, 2
+
+
+@lru_cache(maxsize=1)
+def _libc_renameat2():
+    """libc's ``renameat2`` (glibc 2.28+), or None."""
+    try:
+        fn = ctypes.CDLL(ctypes.util.find_library("c") or None, use_errno=True).renameat2
+    except (OSError, AttributeError):
+        return None
+    fn.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p,
+                   ctypes.c_uint]
+    fn.restype = ctypes.c_int
+    return fn
+
+
+def _renameat2(src, dst, dir_fd: int | None, flags: int) -> bool:
+    """``renameat2(src, dst, flags)`` in the folder ``dir_fd`` (else the working folder);
+    True when done, False when this system cannot (no such call, or flags the filesystem
+    does not take); raises ``OSError`` (``FileNotFoundError``, ``FileExistsError``, ...)."""
+    fn = _libc_renameat2()
+    if fn is None:
+        return False
+    d = _AT_FDCWD if dir_fd is None else dir_fd
+    if fn(d, os.fsencode(src), d, os.fsencode(dst), flags) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.EOPNOTSUPP):
+        return False
+    raise OSError(err, os.strerror(err), os.fspath(dst))
 
 
 def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False,
@@ -216,10 +298,7 @@ def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False,
         raise WriteError(f"cannot write `{out}`: {e.strerror or e}") from None
     finally:
         if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
+            discard(tmp)
 
 
 def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
@@ -259,8 +338,5 @@ def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
             os.fchmod(f.fileno(), mode)
         replace(tmp, name, shown, dfd, hint)
     except BaseException:
-        try:
-            os.unlink(tmp, dir_fd=dfd)
-        except OSError:
-            pass
+        discard(tmp, dfd)
         raise
