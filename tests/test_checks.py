@@ -1,4 +1,4 @@
-"""Geometry checks on the final shape (aidl_lang/output/checks.py): one program per check,
+"""Geometry checks on the final shape (aidl_lang/output/checks/): one program per check,
 asserting the code, the span and the structures named; the bundled examples are clean."""
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -1141,7 +1141,7 @@ def test_W0507_equal_lone_holes_are_opened_once_and_thin_walls_still_found(monke
     least 2 t^2 as the opening of the whole plate, and the same area removed."""
     import manifold3d as mf
     import numpy as np
-    from aidl_lang.output import checks as C
+    from aidl_lang.output.checks import walls as C     # patched where _thin looks it up
     t = 1.0
     holes = [mf.CrossSection.circle(2.0, 45).translate((6.0 * i + 3, 6.0 * j + 3))
              for i in range(8) for j in range(8)]
@@ -1172,7 +1172,7 @@ def test_W0507_a_long_loop_and_its_bore_are_opened_whole(monkeypatch):
     import math
 
     import manifold3d as mf
-    from aidl_lang.output import checks as C
+    from aidl_lang.output.checks import walls as C     # patched where _thin looks it up
     n, t = 2880, 0.5
     pts = [((40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.cos(2 * math.pi * k / n),
             (40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.sin(2 * math.pi * k / n))

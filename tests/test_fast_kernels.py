@@ -1,4 +1,4 @@
-"""The fast kernels of the shape checks and writers (output/checks.py, output/part.py) against their
+"""The fast kernels of the shape checks and writers (output/checks/, output/part.py) against their
 reference versions: same booleans, same sample points, bit for bit (hypothesis)."""
 import numpy as np
 from hypothesis import example, given, settings, strategies as st

@@ -52,6 +52,8 @@ def test_the_wheel_carries_the_grammar_the_stdlib_and_the_static_files(dist):
     wheel, _ = dist
     names = set(zipfile.ZipFile(wheel).namelist())
     need = {"aidl_lang/grammar/aidl.lark", "aidl_lang/serve/static/index.html",
+            *(f"aidl_lang/{p.relative_to(ROOT / 'aidl_lang')}"      # three.js, vendored
+              for p in (ROOT / "aidl_lang/serve/static/vendor").rglob("*") if p.is_file()),
             *(f"aidl_lang/stdlib/{p.relative_to(ROOT / 'stdlib')}"
               for p in (ROOT / "stdlib").rglob("*.aidl"))}
     assert need <= names, need - names

@@ -177,6 +177,34 @@ def test_page_and_static_files(client):
     assert client.get("/static/nosuch.js").status_code == 404
 
 
+def test_the_vendored_three_js_is_served_from_its_folder(client):
+    """three.js lives in static/vendor/three/ (npm's paths, unchanged): the import map's
+    `three`, the modules view3d.js imports and the one GLTFLoader.js imports by a relative
+    path are all served, as JavaScript; the version and licence are there beside them."""
+    page = client.get("/").text
+    imports = json.loads(re.search(r'<script type="importmap">(.*?)</script>', page, re.S)
+                         .group(1))["imports"]
+    assert imports == {"three": "/static/vendor/three/build/three.module.min.js"}
+    view3d = client.get("/static/view3d.js").text
+    used = re.findall(r'from "(/static/[^"]+)"', view3d)
+    assert used == ["/static/vendor/three/examples/jsm/loaders/GLTFLoader.js",
+                    "/static/vendor/three/examples/jsm/controls/OrbitControls.js"]
+    loader = client.get(used[0]).text
+    assert "from '../utils/BufferGeometryUtils.js'" in loader
+    utils = "/static/vendor/three/examples/jsm/utils/BufferGeometryUtils.js"
+    for url in [imports["three"], *used, utils]:
+        r = client.get(url)
+        assert r.status_code == 200 and r.headers["content-type"].startswith("text/javascript"), url
+    three = client.get(imports["three"]).text
+    assert 'const t="170"' in three[:400]                  # REVISION, as README.md says
+    readme = client.get("/static/vendor/three/README.md").text
+    assert "0.170.0" in readme and "MIT" in readme
+    assert "MIT License" in client.get("/static/vendor/three/LICENSE").text
+    for gone in ("three.module.min.js", "GLTFLoader.js", "OrbitControls.js",
+                 "BufferGeometryUtils.js", "three-LICENSE.txt"):
+        assert client.get(f"/static/{gone}").status_code == 404
+
+
 def test_state_and_formats(client):
     v = client.get("/api/state").json()
     assert v["ok"] and v["file"].endswith("telephone.aidl")
@@ -218,6 +246,8 @@ def test_download_dxf_is_the_cli_part(client):
     "/static/../secret.txt", "/static/..%2Fsecret.txt", "/static/%2e%2e/%2e%2e/pyproject.toml",
     "/static//etc/passwd", "/static/..%5c..%5cpyproject.toml", "/../secret.txt",
     "/secret.txt", "/telephone.aidl", "/download/..%2Fsecret.txt", "/static/__init__.py",
+    "/static/vendor/three/../../../secret.txt", "/static/vendor/..%2F..%2F..%2Fpyproject.toml",
+    "/static/vendor/three/%2e%2e/%2e%2e/%2e%2e/%2e%2e/pyproject.toml", "/static/vendor/three",
 ])
 def test_no_path_traversal(client, path):
     r = client.get(path)

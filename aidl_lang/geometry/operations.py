@@ -411,7 +411,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
 def _allow_overlap(a, b) -> None:
     """``AllowOverlap(a, b)``: the hole among ``a`` and ``b`` (a hole structure, or a shape
     in one) may be refilled by the other (a solid structure or a shape): W0501 is not
-    reported for that pair (:func:`aidl_lang.output.checks._intended`)."""
+    reported for that pair (:func:`aidl_lang.output.checks.openings._intended`)."""
     def hole_of(v):
         if isinstance(v, StructRef) and v.struct.kind == "hole":
             return v.struct

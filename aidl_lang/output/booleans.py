@@ -38,7 +38,7 @@ CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
 # the least time per input vertex of one batch_boolean union (fuzz seed 791: 4 faces of
 # 480,000 vertices in 3.5 s, 7.3 us; half of it, so that only a union sure to end past the
-# deadline is refused before it starts, as the shape checks' estimates in checks.py)
+# deadline is refused before it starts, as the shape checks' estimates in checks/walls.py)
 UNION_SECONDS_PER_VERTEX = 3.5e-6
 DERIVED = ("Offset", "Shell", "Stroke")   # shapes whose outline is a boolean of pieces
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)

@@ -2,14 +2,15 @@
 
 Routes (all GET, plus one WebSocket):
 
-* ``/`` and ``/static/NAME``: the page, from the package's ``static/`` folder.  Names are
-  looked up in a fixed table read at start-up, never joined onto a filesystem path, so no
-  request can reach another file (path traversal).
+* ``/`` and ``/static/NAME``: the page, from the package's ``static/`` folder (``NAME`` may
+  name a file in a subfolder: ``vendor/three/build/three.module.min.js``).  Names are looked
+  up in a fixed table read at start-up, never joined onto a filesystem path, so no request
+  can reach another file (path traversal).
 * ``/api/state``: the current view (SVG, diagnostics, params, degrees of freedom) as JSON.
 * ``/download/FORMAT?set=NAME=VALUE...``: the watched file rendered with those values, in a
   format the output package writes (see :func:`writers`); a fresh compile, like ``aidl render``.
   ``/download/glb`` is the assembled product, which the page's 3D view (``static/view3d.js``,
-  three.js vendored beside it) loads on every new picture while it is shown.
+  three.js vendored in ``static/vendor/three/``) loads on every new picture while it is shown.
 * ``/ws``: a WebSocket.  The server pushes ``{"type": "view", ...}`` after every recompile (a
   save of the file, from any editor, seen by ``watchfiles``); the page sends
   ``{"type": "set", "id": N, "values": {NAME: "172.5mm"}}`` for the customizer and gets the
@@ -54,9 +55,18 @@ TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf
 
 
 def static_files() -> dict[str, bytes]:
-    """The page's files (name -> bytes), read once from the package data ``serve/static``."""
-    root = resources.files(__package__) / "static"
-    return {f.name: f.read_bytes() for f in root.iterdir() if f.is_file()}
+    """The page's files (name -> bytes), read once from the package data ``serve/static``; a
+    file in a subfolder is named by its path below it (``vendor/three/LICENSE``)."""
+    files: dict[str, bytes] = {}
+
+    def walk(folder, prefix: str) -> None:
+        for f in folder.iterdir():
+            if f.is_file():
+                files[prefix + f.name] = f.read_bytes()
+            elif f.is_dir() and f.name != "__pycache__":
+                walk(f, prefix + f.name + "/")
+    walk(resources.files(__package__) / "static", "")
+    return files
 
 
 def writers() -> dict[str, object]:
@@ -411,7 +421,7 @@ def create_app(path: str | Path, port: int = 0, watch: bool = True) -> Starlette
                 gc.enable()
 
     app = Starlette(routes=[
-        Route("/", index), Route("/static/{name}", static), Route("/api/state", state),
+        Route("/", index), Route("/static/{name:path}", static), Route("/api/state", state),
         Route("/api/formats", formats), Route("/download/{fmt}", download),
         WebSocketRoute("/ws", ws_endpoint),
     ], lifespan=lifespan)

@@ -1,11 +1,11 @@
-// aidl serve: the assembled product in 3D (three.js, vendored beside this file; MIT, see
-// three-LICENSE.txt). The server's GLB (/download/glb: every part extruded by its thickness,
-// placed by its `Place`, one named node per part in the flat view's colours) is loaded into a
-// scene with orbit (drag), zoom (wheel) and pan (right-drag); app.js calls load() on every new
-// picture while the 3D view is shown, and the camera stays where the user left it.
+// aidl serve: the assembled product in 3D (three.js 0.170.0, vendored in vendor/three/; MIT,
+// see its LICENSE and README.md). The server's GLB (/download/glb: every part extruded by its
+// thickness, placed by its `Place`, one named node per part in the flat view's colours) is
+// loaded into a scene with orbit (drag), zoom (wheel) and pan (right-drag); app.js calls load()
+// on every new picture while the 3D view is shown, and the camera stays where the user left it.
 import * as THREE from "three";
-import { GLTFLoader } from "/static/GLTFLoader.js";
-import { OrbitControls } from "/static/OrbitControls.js";
+import { GLTFLoader } from "/static/vendor/three/examples/jsm/loaders/GLTFLoader.js";
+import { OrbitControls } from "/static/vendor/three/examples/jsm/controls/OrbitControls.js";
 
 const host = document.getElementById("viewer3d");
 const state = { renderer: null, scene: null, camera: null, controls: null, root: null,

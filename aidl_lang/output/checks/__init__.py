@@ -1,0 +1,139 @@
+"""Geometry checks on the final shape: warnings about parts that solve but come out wrong.
+
+The booleans (:mod:`..booleans`) record each structure's shape and what each hole cut; these
+checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.codes`).
+:func:`check_drawing` is the one entry point (run by :mod:`aidl_lang.pipeline` and the live
+preview); :func:`check_topology` (W0510) is run beside it when param values are overridden.
+One module per family:
+
+* :mod:`.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
+  ``W0503`` a hole that removes all of its solid, ``W0507`` a wall between two holes (or a
+  hole and the outline) thinner than the minimum, ``W0508`` two holes that cut one opening,
+  ``W0512`` a statement's repeated faces that merge, ``W0514`` a hole flush with the outer
+  edge, ``W0515`` a void no hole cut;
+* :mod:`.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
+  0.5 mm), by a morphological opening of the part;
+* :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
+  adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate;
+* :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
+* :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
+* :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
+  touches no other;
+* :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';
+* :mod:`.common`: the tolerances and helpers they share.
+
+:func:`check_drawing` itself writes ``W0509`` (from :func:`.parts.empty_faces`, and for a
+solid part that comes out empty unexplained) and ``W0402`` (an open outline, drawn as
+engraving).
+
+Areas are compared with a tolerance that ignores the chord slivers of tessellated curves:
+:data:`MIN_FRACTION` of the feature and at least :data:`MIN_AREA` mm^2.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...diagnostics import DiagnosticSink
+from ..booleans import Drawing
+from .assembly import _check_fit
+from .changes import Topology, check_topology, topology, topology_changes
+from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _edges, _inside, _inside_loops,
+                     _part_of, _part_roots, _signed, _union)
+from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_samples, _sample,
+                         _samples, _within)
+from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_repeated_faces,
+                       _check_voids, _intended, _Near, _report_openings)
+from .parts import _check_interpenetration, _check_invisible, _check_pieces, empty_faces
+from .text import _check_text_overlap
+from .walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+                    _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
+
+# the names other modules, the tests and the benchmarks import from here (patching one of the
+# others' helpers, e.g. walls._open, means patching it in the module that uses it)
+__all__ = ["check_drawing", "check_topology", "topology", "topology_changes", "Topology",
+           "empty_faces", "MIN_WALL", "MIN_AREA", "MIN_FRACTION", "ENGRAVE_TOL", "TOUCH",
+           "_SURELY_GROWN", "THIN_SECONDS_PER_VERTEX", "TILE_VERTS", "UNION_GROUP",
+           "WHOLE_LOOPS", "WHOLE_VERTS", "_analyse", "_check_fit", "_check_hole",
+           "_check_invisible", "_check_walls", "_edges", "_inside", "_inside_loops",
+           "_intended", "_isolated_loops", "_loop_boxes", "_n_samples", "_Near", "_open",
+           "_part_of", "_part_roots", "_point_of", "_report_openings", "_sample", "_samples",
+           "_signed", "_thin", "_union", "_within"]
+
+def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
+                  deadline=None) -> None:
+    """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
+    (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on).
+    ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
+    structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
+    def tick(s, ahead: float = 0.0):
+        if deadline is not None:
+            deadline.check("the shape checks", s, ahead)
+    roots = _part_roots(d)
+    loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+             for s, shape in roots.items() if s.kind == "solid"}
+    near = _Near(roots, loops, d.cuts)
+    explained: set = set()          # parts whose emptiness a warning already explains
+    owner_areas: dict = {}          # a solid's final area, taken once for all its holes
+    for cut in d.cuts:
+        tick(cut.hole)
+        if _check_hole(d, cut, roots, sink, near.local, owner_areas) == "W0503":
+            explained.add(_part_of(cut.owner, roots))
+    for s, shape in roots.items():
+        if s.kind == "solid":
+            tick(s)
+            _check_pieces(d, s, shape, sink, loops[s])
+    for s in list(d.shapes):
+        if s.kind == "solid":
+            tick(s)
+            _check_invisible(d, s, sink)
+    tick(None)
+    _check_engraving(d, roots, sink, loops)
+    by_part: dict = {}
+    for c in d.cuts:
+        by_part.setdefault(_part_of(c.owner, roots), []).append(c)
+    for s, shape in roots.items():
+        if s.kind == "solid":
+            tick(s)
+            a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
+            covered = _report_openings(a, s, min_wall, sink)
+            _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
+            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
+            tick(s)
+            if min_wall > 0:
+                _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
+                             loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
+    tick(None)
+    _check_interpenetration(d, roots, sink, deadline)
+    _check_text_overlap(d, sink)
+    if getattr(d, "placement", None):
+        tick(None)
+        _check_fit(d, sink, deadline)
+    for s in list(d.shapes):
+        if s.kind == "hole":
+            _check_repeated_faces(d, s, sink)
+    for g, *_ in getattr(d, "shape_errors", None) or ():
+        explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
+    for s, g, area in empty_faces(d):
+        part = _part_of(s, roots)
+        explained.add(part)
+        what = "cuts" if s.kind == "hole" else "adds"
+        sink.warning("W0509", f"`{g.label}` closes a loop of zero area ({abs(area):.2g} mm^2) "
+                     f"in {s.kind} `{s.path}`: it encloses nothing, so it {what} nothing",
+                     g.span,
+                     hint="a face needs an inside: give it a non-zero width, height or radius, "
+                          "or points that are not all on one line (a line and its own mirror "
+                          "image close a loop with nothing inside); delete it if it is not "
+                          "needed")
+    for g in d.open_curves:
+        explained.add(_part_of(g.owner, roots))
+        sink.warning("W0402", f"`{g.label}` is not part of a closed outline, so it is drawn as a "
+                     "line (engraved), not filled", g.span,
+                     hint="share endpoints between lines and arcs so they form a loop, or put "
+                          "the curve in a `drawing` structure")
+    for s, shape in roots.items():
+        if s.kind == "solid" and shape.is_empty() and s not in explained and any(
+                not g.construction for n in s.subtree() for g in n.geometry):
+            sink.warning("W0509", f"solid `{s.path}` comes out empty: none of its geometry "
+                         "encloses any area", s.span,
+                         hint="give the part a closed shape with an inside (a Rectangle, a "
+                              "Circle, lines and arcs that close a loop around some area)")

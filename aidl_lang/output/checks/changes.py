@@ -1,0 +1,126 @@
+"""``W0510``: a part whose topology changes under ``--set`` (or the live preview's sliders):
+its pieces, openings, merged holes, holes that reach the outline and overlapping faces,
+compared with the program's defaults (:func:`check_topology`, run by the pipeline and the
+live preview when param values are overridden; :func:`topology` is taken once for the
+defaults)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...diagnostics import DiagnosticSink
+from ..booleans import Drawing
+from ..nearby import box_pairs
+from .common import _area, _part_of, _part_roots, _signed
+from .openings import _analyse
+
+# ------------------------------------------------------------ topology under `--set` (W0510)
+@dataclass
+class Topology:
+    """What W0510 compares of one solid part between the program's defaults and a `--set`."""
+    span: object
+    pieces: int
+    openings: int
+    merges: set          # frozensets of two hole names that cut one opening
+    notches: set         # hole names that reach the outline
+    contacts: set        # frozensets of two face names (different solids) that overlap
+    holes: set           # every hole name
+    faces: set           # every solid face name
+
+
+def topology(d: Drawing) -> dict:
+    """The :class:`Topology` of every solid part of ``d``, by part path: its pieces and
+    openings (counter-clockwise and clockwise loops of its final shape), the holes that merge
+    (:func:`_analyse` at the touching distance) or reach the outline, and the faces of
+    different solid structures that overlap (candidates from :func:`.nearby.box_pairs`)."""
+    roots = _part_roots(d)
+    by_part: dict = {}
+    for c in d.cuts:
+        by_part.setdefault(_part_of(c.owner, roots), []).append(c)
+    faces_of: dict = {}
+    for st, own in d.own.items():
+        if st.kind != "solid":
+            continue
+        part = _part_of(st, roots)
+        if part is not None and part.kind == "solid":
+            faces_of.setdefault(part, []).extend(
+                (f"`{g.label}`", st, f) for g, f in own if f is not None and not f.is_empty())
+    out = {}
+    for s, shape in roots.items():
+        if s.kind != "solid":
+            continue
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+        pos = sum(_signed(p) > 0 for p in loops)
+        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops)
+        faces = faces_of.get(s, [])
+        contacts = set()
+        if len(faces) > 1:
+            boxes = [f.bounds() for _, _, f in faces]
+            for i, j in box_pairs(boxes):
+                (ni, si, fi), (nj, sj, fj) = faces[i], faces[j]
+                if si is not sj and _area(fi ^ fj) > 1e-6:
+                    contacts.add(frozenset((ni, nj)))
+        out[s.path] = Topology(s.span, pos, len(loops) - pos,
+                               {frozenset((a.names[i], a.names[j])) for i, j, _, _ in a.merges},
+                               {a.names[j] for j in a.notches}, contacts, set(a.names[1:]),
+                               {n for n, _, _ in faces})
+    return out
+
+
+def _count(n: int, what: str) -> str:
+    return f"{n} {what}" + ("" if n == 1 else "s")
+
+
+def topology_changes(base: Topology, new: Topology) -> list[str]:
+    """What changed from ``base`` (the defaults) to ``new``, in words, most telling first."""
+    out = []
+    if new.pieces != base.pieces:
+        out.append(f"{_count(new.pieces, 'piece')} instead of {base.pieces}")
+    if new.openings != base.openings:
+        out.append(f"{_count(new.openings, 'opening')} instead of {base.openings}")
+    for m in sorted(new.merges - base.merges, key=sorted):
+        a, b = sorted(m)
+        out.append(f"{a} merges with {b}")
+    for m in sorted(base.merges - new.merges, key=sorted):
+        if m <= new.holes:
+            a, b = sorted(m)
+            out.append(f"{a} and {b} no longer merge")
+    for h in sorted(new.notches - base.notches):
+        out.append(f"{h} now breaks through the outline")
+    for h in sorted(base.notches - new.notches):
+        if h in new.holes:
+            out.append(f"{h} no longer reaches the outline")
+    for c in sorted(new.contacts - base.contacts, key=sorted):
+        if c <= base.faces:
+            a, b = sorted(c)
+            out.append(f"{a} now overlaps {b}")
+    for c in sorted(base.contacts - new.contacts, key=sorted):
+        if c <= new.faces:
+            a, b = sorted(c)
+            out.append(f"{a} no longer overlaps {b}")
+    return out
+
+
+def check_topology(base: Drawing | dict, d: Drawing, values: dict, sink: DiagnosticSink) -> None:
+    """W0510 for each solid part of ``d`` (compiled with the param ``values``) whose
+    topology differs from ``base`` (the same program with its defaults: a Drawing, or its
+    :func:`topology` already taken)."""
+    if not values:
+        return
+    before = base if isinstance(base, dict) else topology(base)
+    now = topology(d)
+    with_ = ", ".join(f"{k}={v}" for k, v in values.items())
+    for path, t in now.items():
+        b = before.get(path)
+        if b is None:
+            continue
+        what = topology_changes(b, t)
+        if not what:
+            continue
+        sink.warning("W0510", f"with {with_}, part `{path}` changes: " + "; ".join(what[:4])
+                     + ("; ..." if len(what) > 4 else "") + " (not so with the defaults)",
+                     t.span,
+                     hint="such a change is rarely what the param is for: choose another "
+                          "value, derive the spacing from the param so that the design follows "
+                          "it, or declare the param's `min=`/`max=` to keep values that fit")

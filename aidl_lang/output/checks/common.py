@@ -1,0 +1,153 @@
+"""What the shape checks share (no warnings of their own): the area tolerances
+(:data:`MIN_FRACTION` of a feature and at least :data:`MIN_AREA` mm^2, which ignore the chord
+slivers of tessellated curves), W0507's default :data:`MIN_WALL`, areas and unions of
+Manifold cross-sections, a structure's part and what a solid unites, the overlap depth of two
+regions, and the point-in-polygon kernels (:func:`_inside`, :func:`_edges`, the signed area
+:func:`_signed`) that the opening, engraving and topology checks test points with."""
+from __future__ import annotations
+
+import manifold3d as mf
+import numpy as np
+
+from ...geometry.model import Structure
+from ..booleans import Drawing
+
+MIN_FRACTION = 0.02      # of a hole's or child's area
+MIN_AREA = 0.05          # mm^2
+MIN_WALL = 0.5           # mm: W0507's default minimum wall
+
+
+def _area(cs) -> float:
+    return 0.0 if cs is None or cs.is_empty() else float(cs.area())
+
+
+def _union(shapes) -> mf.CrossSection:
+    shapes = [s for s in shapes if s is not None and not s.is_empty()]
+    return mf.CrossSection.batch_boolean(shapes, mf.OpType.Add) if shapes else mf.CrossSection()
+
+
+def _significant(a: float, whole: float) -> bool:
+    return a > MIN_AREA and a > MIN_FRACTION * whole
+
+
+def _pct(a: float, whole: float) -> str:
+    return f"{100.0 * a / whole:.0f}%" if whole > 0 else "0%"
+
+
+def _part_roots(d: Drawing) -> dict[Structure, mf.CrossSection]:
+    shapes = {}
+    for p in d.parts:
+        s = d.part_of.get(p.name)
+        if s is not None:
+            shapes[s] = p.shape
+    return shapes
+
+
+def _part_of(s: Structure, roots) -> Structure | None:
+    node = s
+    while node is not None:
+        if node in roots:
+            return node
+        node = node.parent
+    return None
+
+
+def _contributors(d: Drawing, a: Structure, skip: Structure | None = None,
+                  objects: bool = False):
+    """What a solid ``a`` unites: (name, span, shape) of its own faces and solid children
+    (``objects``: (name, span, shape, the Geometry or Structure))."""
+    out = []
+    for g, f in d.own.get(a, []):
+        out.append((f"`{g.label}`", g.span, f, g) if objects else (f"`{g.label}`", g.span, f))
+    for c in a.children.values():
+        if c is skip or c.kind not in ("solid", "hole") or c.kind == "hole":
+            continue
+        if c in d.shapes:
+            item = (f"solid `{c.path}`", c.span, d.shapes[c])
+            out.append(item + (c,) if objects else item)
+    return out
+
+
+def _depth(common, bi, bj) -> float:
+    """How far two overlapping regions reach into each other: the extent of their common
+    part along the line between their boxes' centres (for two circles exactly
+    ``r1 + r2 - distance``), or its narrower side when the centres coincide."""
+    P = np.concatenate([np.asarray(p, dtype=float) for p in common.to_polygons()])
+    u = (np.asarray(bj[:2]) + bj[2:]) / 2 - (np.asarray(bi[:2]) + bi[2:]) / 2
+    n = float(np.hypot(*u))
+    if n < 1e-9:
+        return float(min(np.ptp(P[:, 0]), np.ptp(P[:, 1])))
+    proj = P @ (u / n)
+    return float(proj.max() - proj.min())
+
+
+def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
+    """The reference even-odd test: every point against every edge of each loop in turn
+    (O(points x edges) memory and time).  Kept for the property test of :func:`_inside`."""
+    res = np.zeros(len(pts), dtype=bool)
+    x, y = pts[:, 0], pts[:, 1]
+    for lp in loops:
+        P = np.asarray(lp, dtype=float)
+        Q = np.roll(P, -1, axis=0)
+        x1, y1, x2, y2 = P[:, 0][None], P[:, 1][None], Q[:, 0][None], Q[:, 1][None]
+        yy = y[:, None]
+        cond = (y1 > yy) != (y2 > yy)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            xi = x1 + (yy - y1) * (x2 - x1) / (y2 - y1)
+        res ^= (np.sum(cond & (x[:, None] < xi), axis=1) % 2).astype(bool)
+    return res
+
+
+def _inside(pts: np.ndarray, loops) -> np.ndarray:
+    """Even-odd point-in-polygon of ``pts`` (N x 2, mm) against the union of closed ``loops``
+    (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to -x crosses the loops' edges an odd
+    number of times (the crossing-number test, as in W. R. Franklin's ``pnpoly``).
+
+    The edges of all loops are taken together (the parity of the total equals the XOR of the
+    per-loop parities) and each edge is tested only against the points whose y lies in its
+    half-open y range ``[min(y1, y2), max(y1, y2))``, found by binary search in the points
+    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E).  The
+    crossing abscissa is computed with the same floating-point expression as the reference
+    :func:`_inside_loops`, so the result is identical to it."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 2)
+    n = len(pts)
+    x1, y1, x2, y2 = loops if isinstance(loops, tuple) else _edges(loops)
+    if not n or not len(x1):
+        return np.zeros(n, dtype=bool)
+    x, y = pts[:, 0], pts[:, 1]
+    order = np.argsort(y, kind="stable")
+    ys = y[order]
+    lo = np.searchsorted(ys, np.minimum(y1, y2), side="left")
+    hi = np.searchsorted(ys, np.maximum(y1, y2), side="left")
+    cnt = np.maximum(hi - lo, 0)
+    total = int(cnt.sum())
+    if not total:
+        return np.zeros(n, dtype=bool)
+    edge = np.repeat(np.arange(len(x1)), cnt)
+    start = np.cumsum(cnt) - cnt
+    pt = order[lo[edge] + (np.arange(total) - start[edge])]
+    yy, ex1, ey1, ex2, ey2 = y[pt], x1[edge], y1[edge], x2[edge], y2[edge]
+    cond = (ey1 > yy) != (ey2 > yy)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        xi = ex1 + (yy - ey1) * (ex2 - ex1) / (ey2 - ey1)
+    hit = cond & (x[pt] < xi)
+    return (np.bincount(pt[hit], minlength=n) % 2).astype(bool)
+
+
+def _edges(loops) -> tuple:
+    """The edges of closed ``loops`` as four arrays (x1, y1, x2, y2): each vertex to the next,
+    the last back to the first; what :func:`_inside` takes (prepared once per part)."""
+    polys = [np.asarray(lp, dtype=float).reshape(-1, 2) for lp in loops]
+    polys = [P for P in polys if len(P)]
+    if not polys:
+        return (np.zeros(0),) * 4
+    P = np.concatenate(polys)
+    Q = np.concatenate([np.concatenate([p[1:], p[:1]]) for p in polys])   # np.roll(p, -1)
+    return P[:, 0], P[:, 1], Q[:, 0], Q[:, 1]
+
+
+def _signed(poly) -> float:
+    P = np.asarray(poly, dtype=float)
+    x, y = P[:, 0], P[:, 1]
+    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
+                       - np.dot(y, np.concatenate([x[1:], x[:1]])))

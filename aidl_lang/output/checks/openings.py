@@ -1,0 +1,455 @@
+"""The holes of a part and the openings they cut:
+
+* ``W0501`` a hole partly or wholly refilled by a sibling or ancestor solid (a hole cuts only
+  the solid it is declared in; a solid united later fills it again), unless ``AllowOverlap``
+  says so (:func:`_intended`);
+* ``W0502`` a hole that cuts nothing (it lies outside its solid);
+* ``W0503`` a hole that removes all of its solid;
+* ``W0507`` (between features) a wall thinner than the minimum between two holes, or a hole and
+  the outline, measured as the least distance between their boundaries, whatever the area
+  (:func:`_analyse`, :func:`_report_openings`; the opening test of the rest is in
+  :mod:`.walls`);
+* ``W0508`` two separately declared holes that overlap or touch: one opening;
+* ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch;
+* ``W0514`` a hole inside its solid that only touches the outer edge (a wall of zero width);
+* ``W0515`` a tiny opening that no hole cut: a void left between shapes that nearly meet.
+
+Pairs of holes are found with a spatial index (:mod:`..nearby`), so the checks grow as
+n log n in the number of holes; :func:`_analyse` also gives :mod:`.changes` the holes that
+merge or reach the outline."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import manifold3d as mf
+import numpy as np
+
+from ...diagnostics import DiagnosticSink, Label
+from ...geometry.model import Structure
+from ...geometry.tessellate import CHORD_TOL
+from ..booleans import Drawing
+from ..nearby import boundary, box_pairs, close_pairs
+from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edges, _inside,
+                     _part_of, _pct, _signed, _significant, _union)
+
+def _intended(hole: Structure, owner: Structure, obj) -> bool:
+    """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
+    the solid it cuts) with ``x`` the refilling ``obj`` (a shape or a solid), a structure
+    around it, or a shape inside it."""
+    allowed: set = set()
+    s = hole
+    while s is not None:
+        allowed |= getattr(s, "overlap_ok", set())
+        if s is owner:
+            break
+        s = s.parent
+    if not allowed:
+        return False
+    t = obj if isinstance(obj, Structure) else obj.owner
+    if obj in allowed:
+        return True
+    if isinstance(obj, Structure) and any(not isinstance(a, Structure) and a.owner.is_within(obj)
+                                          for a in allowed):
+        return True                  # a shape named in AllowOverlap, inside this solid
+    while t is not None:
+        if t in allowed:
+            return True
+        t = t.parent
+    return False
+
+
+def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> None:
+    """W0512 for hole ``h``: the faces one statement draws several times (in a loop) that
+    overlap or touch, so they cut fewer openings than the statement draws (a drill gauge of
+    ten holes with nine openings).  Faces of different statements (a keyhole's circle and
+    slot) are one opening by design and are not compared."""
+    by_stmt: dict = {}
+    for g, f in d.own.get(h, []):
+        if g.span is not None and f is not None and not f.is_empty():
+            by_stmt.setdefault(g.span, []).append((g, f))
+    for span, faces in by_stmt.items():
+        if len(faces) < 2:
+            continue
+        shapes = [f for _, f in faces]
+        boxes = np.array([f.bounds() for f in shapes], dtype=float)
+        merges = []
+        for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+            common = shapes[i] ^ shapes[j]
+            a = _area(common)
+            if a > 1e-9:
+                merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
+            elif (shapes[i] + shapes[j]).num_contour() < 2:
+                merges.append((i, j, 0.0, 0.0))        # they touch: one contour
+        if not merges:
+            continue
+        openings = _union(shapes).num_contour()
+        i, j, depth, a = merges[0]
+        g = faces[0][0]
+        how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
+               if a > 0 else f"copies {i + 1} and {j + 1} touch")
+        more = f" ({len(merges)} such pairs)" if len(merges) > 1 else ""
+        sink.warning("W0512", f"`{g.label}` of hole `{h.path}` is drawn {len(faces)} times but "
+                     f"cuts {openings} opening{'s' if openings != 1 else ''}: {how}{more}",
+                     span,
+                     hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
+                          "(or make them smaller) so that material is left between them; if one "
+                          "opening is meant, draw it as one shape (a Slot, a Polygon)")
+
+
+def _perimeter(cs) -> float:
+    return float(sum(np.hypot(*(np.roll(P, -1, axis=0) - P).T).sum()
+                     for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())))
+
+
+def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: float,
+                 sink) -> None:
+    """W0514 for each hole of part ``s`` that lies wholly inside its solid (no part of it
+    outside: not drawn as a notch) and yet only touches the outer edge (:func:`_analyse`'s
+    notches): at a point, or along less than ``min_wall`` mm (at least :data:`MIN_WALL`), a
+    wall of zero width that pinches the hole open onto the edge (a round hole tangent to the
+    edge, a window's corner on the roof line).  A hole flush with the edge along more than
+    that is a notch, as asked for a connector cut-out or a cross-halving slot, and is left
+    alone.  The figure is the length of the contact, ``(P(filled) + P(hole) - P(filled -
+    hole)) / 2`` over perimeters."""
+    if not a.notches:
+        return
+    feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
+             and _area(c.region) > 1e-9]
+    for j in sorted(a.notches):
+        c = feats[j - 1]
+        whole = _area(d.shapes.get(c.hole))
+        if whole - _area(c.region) > max(MIN_AREA, 1e-6 * whole):
+            continue                       # it overhangs the edge: a notch by design
+        filled = shape + c.region
+        contact = max(0.0, (_perimeter(filled) + _perimeter(c.region)
+                            - _perimeter(filled - c.region)) / 2)
+        if contact >= max(min_wall, MIN_WALL):
+            continue                       # flush along a side: a notch
+        x0, y0, x1, y1 = c.region.bounds()
+        where = "at a point" if contact < 2 * TOUCH else f"along only {contact:.2f} mm"
+        sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
+                     f"outer edge {where} (a wall of zero width), so it opens onto the edge "
+                     f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
+                     hint=f"move `{c.hole.name}` inward (by at least the minimum wall) to "
+                          "leave material around it; if a notch is meant, let the hole run "
+                          "past the edge (e.g. by 1 mm) so that the intent is explicit")
+
+
+def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
+    """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
+    of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
+    shapes (two solids that nearly meet around a gap)."""
+    inner = [P for P in loops if _signed(P) < 0]
+    if not inner:
+        return
+    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
+                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    limit = max(2 * t * t, 1.0)
+    for P in inner:
+        area = -_signed(P)
+        if area >= limit:
+            continue
+        x0, y0 = P.min(axis=0)
+        x1, y1 = P.max(axis=0)
+        if len(hb) and ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
+                        & (hb[:, 3] >= y0)).any():
+            continue
+        width = area / max(1e-12, max(x1 - x0, y1 - y0))
+        sink.warning("W0515", f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
+                     f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
+                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
+                     "shapes around it do not quite meet", s.span,
+                     hint="make the shapes around it overlap (e.g. `gap=-1 mm`, or a larger "
+                          "size) so that no gap is left; if an opening is meant, cut it with "
+                          "a hole")
+
+
+class _Near:
+    """The final shape of a part near a region, for W0501: a part's loops whose bounding
+    boxes meet the region's (found for every cut at once with :func:`.nearby.box_pairs`)
+    filled even-odd give the part's shape exactly inside the region's box, so each hole is
+    intersected with its neighbourhood, not with the whole part (which made W0501 quadratic
+    in the number of holes)."""
+
+    def __init__(self, roots, loops, cuts):
+        self.roots, self.loops = roots, loops
+        self.near: dict = {}                  # id(region) -> indices of the part's loops
+        by_part: dict = {}
+        for c in cuts:
+            part = _part_of(c.owner, roots)
+            if part in loops and c.region is not None and not c.region.is_empty():
+                by_part.setdefault(part, []).append(c.region)
+        for part, regions in by_part.items():
+            lp = loops[part]
+            if len(lp) <= 8:
+                continue                      # small part: intersect with the whole
+            boxes = [(p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()) for p in lp]
+            boxes += [r.bounds() for r in regions]
+            pairs = box_pairs(boxes)
+            n = len(lp)
+            hit = pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]
+            found: dict = {i: [] for i in range(len(regions))}
+            for i, j in hit:
+                found[int(j) - n].append(int(i))
+            for k, r in enumerate(regions):
+                self.near[id(r)] = found[k]
+
+    def local(self, part, region) -> mf.CrossSection:
+        idx = self.near.get(id(region))
+        if idx is None:
+            return self.roots[part]
+        lp = self.loops[part]
+        return mf.CrossSection([lp[i].tolist() for i in idx], mf.FillRule.EvenOdd) if idx \
+            else mf.CrossSection()
+
+
+# ------------------------------------------------------------ webs and merged holes
+# mm: boundaries closer than this touch.  Curves are tessellated into inscribed polygons that
+# deviate from them by up to CHORD_TOL each, so two circles that touch can come out up to
+# 2 CHORD_TOL apart: below that, the gap is the tessellation's, not the design's.
+TOUCH = 2 * CHORD_TOL
+
+
+@dataclass
+class _Openings:
+    """What :func:`_analyse` finds between the holes of one part and its outline."""
+    names: list                     # feature names: 0 the outline, 1.. the holes
+    spans: list
+    merges: list = field(default_factory=list)   # (i, j, depth mm, common area mm^2 | None)
+    webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
+    notches: set = field(default_factory=set)    # holes that reach the outline
+    areas: list = field(default_factory=list)    # of the features' regions, mm^2
+
+
+def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Openings:
+    """The holes of part ``s`` (its ``cuts``) that overlap or touch each other (W0508) and the
+    walls narrower than ``t`` between two holes or a hole and the outline (W0507), measured
+    as the least distance between their boundaries (:func:`.nearby.close_pairs`; the hole's
+    region is what it cut).  Candidate hole pairs come from :func:`.nearby.box_pairs`, so the
+    work grows as n log n in the number of holes."""
+    feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
+             and _area(c.region) > 1e-9]
+    res = _Openings([f"the outer edge of `{s.path}`"] + [f"hole `{c.hole.path}`" for c in feats],
+                    [s.span] + [c.hole.span for c in feats])
+    if not feats or shape.is_empty():
+        return res
+    regions = [c.region for c in feats]
+    res.areas = [0.0] + [_area(r) for r in regions] + [0.0]
+    polys = [[np.asarray(p, dtype=float) for p in r.to_polygons()] for r in regions]
+    boxes = np.array([r.bounds() for r in regions], dtype=float)
+    reach = max(t, TOUCH)
+    # 1. holes whose regions overlap: one opening
+    merged = set()
+    for i, j in box_pairs(boxes, pad=reach / 2):
+        common = regions[i] ^ regions[j]
+        a = _area(common)
+        if a > 1e-9:
+            merged.add((i, j))
+            res.merges.append((i + 1, j + 1, _depth(common, boxes[i], boxes[j]), a))
+    # 2. the least distance between every two boundaries closer than `reach`
+    # the outline: the part with its holes filled; its outer loops are feature 0, the loops
+    # of openings no hole cut (between solids, or left by a fillet) the last feature
+    filled = [np.asarray(p, dtype=float) for p in _union([shape] + regions).to_polygons()]
+    inner = len(feats) + 1
+    res.names.append(f"an inner edge of `{s.path}`")
+    res.spans.append(s.span)
+    parts = [boundary([p for p in filled if _signed(p) > 0], 0)]
+    parts += [boundary(polys[k], k + 1) for k in range(len(feats))]
+    parts.append(boundary([p for p in filled if _signed(p) <= 0], inner))
+    V, vf, A, B, sf = (np.concatenate([p[k] for p in parts]) for k in range(5))
+    # (sf runs 0, 1, ..., inner in order: each feature's segments are one slice of A, B)
+    v, sg, dist, foot = close_pairs(V, vf, A, B, sf, reach)
+    if not len(v):
+        return res
+    fa, fb = vf[v], sf[sg]
+    lo, hi = np.minimum(fa, fb), np.maximum(fa, fb)
+    mid = (V[v] + foot) / 2
+    key = lo * (inner + 1) + hi
+    order = np.lexsort((dist, key))
+    key, dist, mid, lo, hi = key[order], dist[order], mid[order], lo[order], hi[order]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    ends = np.r_[starts[1:], len(key)]
+    edges = _edges(loops if loops is not None else
+                   [np.asarray(p, dtype=float) for p in shape.to_polygons()])
+    in_material = _inside(mid[starts], edges)
+    for k, (a0, a1) in enumerate(zip(starts, ends)):
+        i, j, w = int(lo[a0]), int(hi[a0]), float(dist[a0])
+        if i > 0 and j < inner and (i - 1, j - 1) in merged:
+            continue
+        if w <= TOUCH:
+            if i == 0 and j < inner:
+                res.notches.add(j)
+            elif i > 0 and j < inner:
+                merged.add((i - 1, j - 1))
+                res.merges.append((i, j, 0.0, None))
+            continue
+        if w >= t or not in_material[k]:
+            continue
+        m = mid[a0:a1]
+        x0, y0 = m.min(axis=0)
+        x1, y1 = m.max(axis=0)
+        # located at the middle of a narrowest span (within 0.01 mm of the least width), the
+        # one nearest to the close points' box centre: that centre alone can fall between two
+        # stretches of one pair of features (two windows of one hole under the roof line: the
+        # pillar between them, where nothing is thin)
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        si, sj = slice(*np.searchsorted(sf, (i, i + 1))), slice(*np.searchsorted(sf, (j, j + 1)))
+        if _seg_distance(c, A[si], B[si]) + _seg_distance(c, A[sj], B[sj]) > w + 2 * TOUCH:              # the centre is not in the wall: its nearest narrowest
+            narrow = m[dist[a0:a1] <= w + TOUCH]                          # span's middle is
+            c = narrow[int(np.argmin(np.hypot(*(narrow - c).T)))]
+        res.webs.append((i, j, w, max(x1 - x0, y1 - y0), (float(c[0]), float(c[1]))))
+    res.merges.sort(key=lambda m: (m[1], m[0]))      # in the order of the located hole
+    res.webs.sort(key=lambda w: (w[1], w[0]))
+    return res
+
+
+def _seg_distance(p, A, B) -> float:
+    """The least distance (mm) from point ``p`` to the segments ``A[k]``-``B[k]``."""
+    if not len(A):
+        return math.inf
+    d = B - A
+    L2 = np.einsum("ij,ij->i", d, d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, d) / L2, 0.0), 0.0, 1.0)
+    e = A + t[:, None] * d - p
+    return float(np.sqrt(np.einsum("ij,ij->i", e, e).min()))
+
+
+def _inner(a: _Openings, i: int, j: int, common) -> int | None:
+    """Which of holes ``i`` and ``j`` lies wholly inside the other (their common area is
+    all of its area), if one does."""
+    if common is None:
+        return None
+    for k in (j, i):
+        if common >= (1 - 1e-6) * a.areas[k] - 1e-9:
+            return k
+    return None
+
+
+def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink) -> set:
+    """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
+    the name pairs reported (the opening test of :func:`_check_walls` skips them)."""
+    covered = set()
+    for i, j, depth, common in a.merges:
+        first, second = a.names[i], a.names[j]
+        covered.add(frozenset((first, second)))
+        inner = _inner(a, i, j, common)
+        if inner is not None:
+            outer = a.names[i + j - inner]
+            labels = [Label(a.spans[i + j - inner], f"{outer} is here", primary=False)] \
+                if a.spans[i + j - inner] else []
+            sink.warning("W0508", f"{a.names[inner]} lies wholly inside {outer} of `{s.path}`: "
+                         f"the two cut one opening, and {a.names[inner]} cuts nothing of its "
+                         f"own ({common:.2f} mm^2)", a.spans[inner], labels=labels,
+                         hint=f"move {a.names[inner]} clear of {outer} (its size or position may "
+                              "be in another unit or frame than meant), or delete it")
+            continue
+        if common is None:
+            how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
+        else:
+            how = f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)"
+            far = f"{depth + t:.2f} mm" if t > 0 else f"{depth:.2f} mm"
+        labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
+        sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
+                     "opening, not two", a.spans[j], labels=labels,
+                     hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
+                          "material is left between them; if one opening is meant, draw both "
+                          "shapes in one hole structure (the faces of one hole may overlap)")
+    inner = len(a.names) - 1
+    for i, j, w, length, (x, y) in a.webs:
+        covered.add(frozenset((a.names[i], a.names[j])))
+        if i == 0 or j == inner:          # a hole and an edge of the outline
+            hole, edge = (j, i) if i == 0 else (i, j)
+            pair, away, labels = f"{a.names[hole]} and {a.names[edge]}", \
+                a.names[edge].split(" of ")[0], []
+        else:                             # two holes, located at the later one
+            hole, pair, away = j, f"{a.names[i]} and {a.names[j]}", a.names[i]
+            labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
+                if a.spans[i] else []
+        sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
+                     f"{w:.2f} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
+                     f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
+                     hint=f"move {a.names[hole]} {t - w:.2f} mm further from {away} (or shrink "
+                          f"it) so that at least {t:g} mm of material is left (a laser or "
+                          "router cannot hold a thinner wall); the minimum is set with "
+                          "--min-wall")
+    return covered
+
+
+def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
+                owner_areas: dict | None = None) -> str | None:
+    """W0501-W0503 for one cut; ``local(part, region)``: the part's final shape near
+    ``region`` (:class:`_Near`), else the whole final shape is intersected;
+    ``owner_areas``: the owners' final areas by structure, filled as they are taken (a plate's
+    area is O(its vertices): once per hole, it made 5,000 holes quadratic, issue 38)."""
+    h, s = cut.hole, cut.owner
+    hole_shape = d.shapes.get(h)
+    whole = _area(hole_shape)
+    cut_area = _area(cut.region)
+    before = _area(cut.before)
+    if whole <= 0:
+        return
+    if cut_area <= max(1e-9, 1e-6 * whole):
+        sink.warning("W0502", f"hole `{h.path}` cuts nothing: it lies outside solid `{s.path}`",
+                     h.span, hint=f"move the hole inside `{s.path}` (for example "
+                                  f"`CenterInside({h.name}, self)`), or declare it in the solid "
+                                  "it should cut")
+        return
+    if owner_areas is None:
+        owner_areas = {}
+    if before > 0 and s not in owner_areas:
+        owner_areas[s] = _area(d.shapes.get(s))
+    if before > 0 and owner_areas[s] <= max(1e-9, 1e-6 * before):
+        sink.warning("W0503", f"hole `{h.path}` removes all of solid `{s.path}`", h.span,
+                     hint=f"make the hole smaller than `{s.path}` or move it so that material "
+                          "is left around it")
+        return "W0503"
+    part = _part_of(s, roots)
+    if part is None:
+        return
+    final = local(part, cut.region) if local is not None else roots[part]
+    refilled = _area(cut.region ^ final)
+    if not _significant(refilled, cut_area):
+        return
+    # who refills it: the other contributors of each ancestor between the owner and the part
+    culprits, node, intended = [], s, 0
+    while node is not part and node.parent is not None:
+        a = node.parent
+        for name, span, shp, obj in _contributors(d, a, skip=node, objects=True):
+            if _significant(_area(cut.region ^ shp), cut_area):
+                if _intended(h, s, obj):        # AllowOverlap(hole, this): not reported
+                    intended += 1
+                    continue
+                culprits.append((name, span, a, obj))
+        if node.parent is part:
+            break
+        node = a
+    if intended and not culprits:
+        return
+    survives = max(0.0, cut_area - refilled)
+    who = ", ".join(c[0] for c in culprits[:3]) or "a solid united later"
+    common = culprits[0][2] if culprits else part
+    labels = [Label(span, "refills the hole", primary=False)
+              for _, span, _, _ in culprits[:3] if span is not None]
+    sink.warning(
+        "W0501",
+        f"hole `{h.path}` is refilled by {who}: only {_pct(survives, cut_area)} of it still "
+        f"cuts through",
+        h.span, labels=labels,
+        hint=(f"a hole cuts only the solid it is declared in (`{s.path}`); declare the hole in "
+              f"`{common.path}`, the common parent, so that it cuts everything united there, "
+              "or move it clear of the solid that covers it; if the overlap is intended, "
+              f"write `AllowOverlap({_rel(h, common)}, "
+              f"{_rel(culprits[0][3], common) if culprits else 'solid'})` in `{common.path}`"))
+
+
+def _rel(obj, base: Structure) -> str:
+    """How structure ``base``'s body names ``obj`` (a structure or a named shape below it)."""
+    if isinstance(obj, Structure):
+        path, own = obj.path, None
+    else:
+        path, own = obj.owner.path, obj.name or obj.kind
+    rel = path[len(base.path) + 1:] if path.startswith(base.path + ".") else \
+        ("" if path == base.path else path)
+    return ".".join(p for p in (rel, own) if p)

@@ -1,0 +1,188 @@
+"""The solid parts as a whole:
+
+* ``W0504`` a solid part whose final shape falls apart into separate pieces (assembly parts
+  are separate by design and are not checked against each other);
+* ``W0506`` a child solid that adds nothing: it lies wholly inside the rest of its parent
+  (for example pattern copies that land inside a filled solid), or a hole of the same
+  structure cuts it away;
+* ``W0509`` a face of zero area (:func:`empty_faces`; the warnings themselves, and the one for
+  a part that comes out empty unexplained, are written by ``check_drawing``);
+* ``W0511`` two separate parts of an assembly whose final shapes interpenetrate in the
+  flat view (not parts laid one on the other, nor those ``AllowOverlap`` names)."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...diagnostics import DiagnosticSink, Label
+from ...geometry.model import Structure
+from ..booleans import Drawing
+from ..nearby import box_pairs
+from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
+
+MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
+
+
+def _allowed(a: Structure, b: Structure) -> bool:
+    """``AllowOverlap(a, b)`` (or one naming a structure around either) was written."""
+    for x, y in ((a, b), (b, a)):
+        node = x
+        while node is not None:
+            ok = getattr(node, "overlap_ok", set())
+            if any(isinstance(o, Structure) and (y is o or y.is_within(o)) for o in ok):
+                return True
+            node = node.parent
+    return False
+
+
+STACKED = 0.25          # of the smaller part's area: a larger overlap is parts laid on each other
+
+
+def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=None) -> None:
+    """W0511 for two solid parts (separate parts of an assembly) whose final shapes overlap
+    by more than :data:`MIN_AREA` mm^2: parts cut apart from one sheet cannot occupy the same
+    place (two gears placed closer than their centre distance: their teeth interpenetrate).
+    Parts whose overlap covers more than :data:`STACKED` of the smaller one are taken as laid
+    one on the other in the assembly view (a gear on its mounting plate, a clock's hands on
+    each other) and not warned: parts meant to mesh or touch collide at their rims.  Candidate
+    pairs come from the parts' boxes (:func:`..nearby.box_pairs`); ``deadline`` is checked
+    before each pair's boolean."""
+    parts = [(s, shp) for s, shp in roots.items() if s.kind == "solid" and not shp.is_empty()]
+    if len(parts) < 2:
+        return
+    boxes = np.array([shp.bounds() for _, shp in parts], dtype=float)
+    for i, j in sorted(map(tuple, box_pairs(boxes))):
+        (a, sa), (b, sb) = parts[i], parts[j]
+        if a.is_within(b) or b.is_within(a):
+            continue              # a part drawn inside another's drawing: shown on it
+        if deadline is not None:
+            deadline.check("the shape checks", None)
+        common = sa ^ sb
+        area = _area(common)
+        if area <= MIN_AREA or _allowed(a, b):
+            continue
+        if area > STACKED * min(_area(sa), _area(sb)):
+            continue              # laid one on the other (a gear on its plate, clock hands)
+        depth = _depth(common, boxes[i], boxes[j])
+        labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
+        sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
+                     f"by {area:.2f} mm^2, {depth:.2f} mm deep (separate parts cannot occupy "
+                     "the same place)", b.span or a.span, labels=labels,
+                     hint=f"move `{b.path}` at least {depth:.2f} mm further from `{a.path}` "
+                          "(meshing gears sit at the centre distance module * (teeth1 + "
+                          "teeth2) / 2: `gear_pair` in std/gears.aidl places them), or shrink "
+                          "one; if the overlap is meant (a picture of parts stacked), write "
+                          f"`AllowOverlap({a.name}, {b.name})` in their assembly")
+
+
+_CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
+           "Triangle", "Polygon",
+           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull", "Stroke", "Sector"}
+
+
+def empty_faces(d: Drawing) -> list:
+    """The faces that close but enclose no area, as ``(structure, geometry, area)``: the
+    booleans' ``Drawing.empty_faces`` when it has that field, and in any case what the model
+    shows (a solid or hole whose own closed geometry gave no shape, or a chain of lines and
+    arcs that closed into an empty loop), each geometry once, in model order."""
+    out: dict = {}
+    errored = {id(g) for g, *_ in getattr(d, "shape_errors", None) or ()}   # E0406 said
+    for s, g, a in getattr(d, "empty_faces", None) or []:
+        out.setdefault(id(g), (s, g, float(a)))
+    for s in d.shapes:
+        if s.kind not in ("solid", "hole"):
+            continue
+        own = d.own.get(s, [])
+        shaped = {id(g) for g, f in own if f is not None and not f.is_empty()}
+        for g, f in own:
+            if f is None or f.is_empty():
+                out.setdefault(id(g), (s, g, 0.0))
+        for g in s.geometry:
+            if not g.construction and (g.kind in _CLOSED or g.kind == "Polyline" and g.closed) \
+                    and id(g) not in shaped \
+                    and id(g) not in errored:
+                out.setdefault(id(g), (s, g, 0.0))
+    return list(out.values())
+
+
+def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
+                  loops: list | None = None) -> None:
+    """W0504 for part ``s``.  A shape has one piece per outline loop that runs
+    counter-clockwise (an outer boundary; holes run clockwise), so a shape with at most one
+    such loop (``loops``: its polygons, when already at hand) is not split into pieces."""
+    if shape.is_empty():
+        return
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    if sum(_signed(p) > 0 for p in loops) < 2:
+        return
+    total = _area(shape)
+    pieces = [p for p in shape.decompose() if _area(p) > max(1e-9, 1e-6 * total)]
+    if len(pieces) < 2:
+        return
+    items = _contributors(d, s)
+    # the message names the first 6 pieces and up to 4 contributors of each (and "..." for
+    # a fifth): only those are measured, and only contributors whose box meets the piece's
+    # (every piece against every contributor was 25 M intersections for 5 000 circles)
+    boxes = np.array([shp.bounds() for _, _, shp in items], dtype=float).reshape(-1, 4)
+    groups = []
+    for p in pieces[:6]:
+        b = p.bounds()
+        near = np.flatnonzero((boxes[:, 0] <= b[2]) & (boxes[:, 2] >= b[0])
+                              & (boxes[:, 1] <= b[3]) & (boxes[:, 3] >= b[1]))
+        names = []
+        for k in near:
+            n, _, shp = items[k]
+            if _area(p ^ shp) > max(1e-9, 1e-6 * _area(shp)):
+                names.append(n)
+                if len(names) > 4:
+                    break
+        groups.append("{" + ", ".join(names[:4]) + (", ..." if len(names) > 4 else "") + "}")
+    sink.warning(
+        "W0504",
+        f"solid `{s.path}` falls apart into {len(pieces)} separate pieces: "
+        + "; ".join(groups) + ("; ..." if len(pieces) > 6 else ""),
+        s.span,
+        hint="make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
+             "(touching at a point is not enough), or, if they are separate parts, make the "
+             "structure an `assembly`")
+
+
+def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool = True) -> None:
+    """W0506 for the solid children of ``s`` that add nothing to it.  ``quick=False``
+    measures every child (the reference for the area bound's test)."""
+    items = _contributors(d, s)
+    if len(items) < 2 or len(items) > MAX_CHILDREN:
+        return
+    areas = [_area(shp) for _, _, shp in items]
+    total = sum(areas)
+    for i, (name, span, shp) in enumerate(items):
+        if not name.startswith("solid "):
+            continue
+        a = areas[i]
+        if a <= MIN_AREA:
+            continue
+        # The others cover at most the sum of their areas, so at least `a - rest` of this
+        # child shows; when that is far above the threshold (1e-6 of the areas: orders of
+        # magnitude above Manifold's rounding) it is not measured.
+        rest = total - a
+        if quick and a - rest > max(1e-9, 1e-4 * a) + 1e-6 * (a + rest) + 1e-6:
+            continue
+        others = _union([o for j, (_, _, o) in enumerate(items) if j != i])
+        if _area(shp - others) <= max(1e-9, 1e-4 * a):
+            cut = [h for h in s.children.values() if h.kind == "hole" and h in d.shapes
+                   and _area(shp ^ d.shapes[h]) > max(1e-9, 1e-4 * a)]
+            if cut:                 # cut away by a hole of the same structure: say so
+                share = _area(shp ^ _union([d.shapes[h] for h in cut])) / a
+                how = ("all of it" if share >= 0.9995 else
+                       f"{share:.0%} of it, and the rest lies inside the rest of `{s.path}`")
+                sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
+                             f"`{cut[0].path}` of the same structure cuts away {how}", span,
+                             hint=f"a hole cuts every solid of the structure it is declared in, "
+                                  f"children included; to keep this solid over the hole, "
+                                  f"declare it beside `{s.name}` (a sibling structure's "
+                                  f"material survives the hole), else delete it")
+                continue
+            sink.warning("W0506", f"{name} adds nothing to `{s.path}`: it lies wholly inside "
+                         "the rest of it", span,
+                         hint="move it where it shows (it is probably mispositioned), make it a "
+                              "`hole` if it should cut, or delete it")

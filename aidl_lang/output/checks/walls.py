@@ -1,0 +1,321 @@
+"""``W0507``: a wall thinner than ``min_wall`` (default :data:`.common.MIN_WALL`, 0.5 mm):
+what a morphological opening of the part by a disc of that diameter removes (the erosion by
+``min_wall / 2`` then the dilation back, Manifold offsets with round joins), in pieces of at
+least ``2 min_wall^2`` (so that sharp corners, which every opening rounds, do not count); the
+warning names the holes and the outer edge the wall lies between.  Walls between two
+features already measured by :mod:`.openings` are not reported twice.  The opening of a
+large part is taken tile by tile (:func:`_thin`), and the steps the deadline cannot
+interrupt are refused when their vertex counts say they would end past it."""
+from __future__ import annotations
+
+import manifold3d as mf
+import numpy as np
+
+from ...diagnostics import DiagnosticSink
+from ...geometry.model import Structure
+from ..booleans import Drawing
+from ..nearby import box_pairs
+from .common import _area, _union
+
+def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
+                 quick: bool = True, covered: set = frozenset(), loops=None,
+                 tick=lambda ahead=0.0: None) -> None:
+    """W0507 for part ``s`` (its final ``shape``, its ``cuts``) at minimum wall ``t`` mm: one
+    warning per piece of at least ``2 t^2`` that the opening removes.  ``quick=False`` skips
+    the whole-area bound below (the reference for its test); ``covered``: name pairs already
+    reported with their measured width (:func:`_report_openings`), whose pieces are skipped;
+    ``tick(ahead)`` is called before each step (the compile's deadline; ``ahead``: the
+    seconds a step that cannot be interrupted is expected to take, from its vertex count)."""
+    if shape.is_empty():
+        return
+    segs = 16
+    tick(shape.num_vert() * THIN_SECONDS_PER_VERTEX)
+    pieces = _thin(shape, t, loops, tick=tick, least=2 * t * t)
+    # The pieces partition what the opening removes, so none reaches 2 t^2 when the whole does
+    # not (the same polygon areas summed in another order: the margin is far above the
+    # rounding).  On a part without thin walls the opening removes only corner slivers (the
+    # telephone: 391 of them, 0.1 mm^2 in all against 0.5 mm^2), which are then not measured.
+    areas = [_area(p) for p in pieces]
+    if not pieces or quick and sum(areas) < 2 * t * t * (1 - 1e-9):
+        return
+    holes = [c for c in cuts if c.hole in d.shapes and not d.shapes[c.hole].is_empty()]
+    hb = np.array([d.shapes[c.hole].bounds() for c in holes], dtype=float).reshape(-1, 4)
+    filled = None
+    for piece, a in zip(pieces, areas):
+        tick()
+        if a < 2 * t * t:
+            continue
+        if filled is None:
+            filled = _union([shape] + [d.shapes[c.hole] for c in holes])
+        near = piece.offset(t, mf.JoinType.Round, 2.0, segs)
+        nx0, ny0, nx1, ny1 = near.bounds()
+        close = np.flatnonzero((hb[:, 0] <= nx1) & (hb[:, 2] >= nx0) & (hb[:, 1] <= ny1)
+                               & (hb[:, 3] >= ny0))
+        names = [f"hole `{holes[k].hole.path}`" for k in close
+                 if _area(near ^ d.shapes[holes[k].hole]) > 1e-9]
+        if _area(near - filled) > 1e-9:
+            names.append(f"the outer edge of `{s.path}`")
+        names = list(dict.fromkeys(names))
+        if names and any(set(names) <= c for c in covered):
+            continue
+        x0, y0, x1, y1 = piece.bounds()
+        length = max(x1 - x0, y1 - y0, 1e-9)
+        width = min(t, a / length)
+        between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
+            f" beside {names[0]}" if names else "")
+        span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
+        px, py = _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
+        sink.warning("W0507", f"a wall of `{s.path}`{between} is thinner than {t:g} mm "
+                     f"(about {width:.2f} mm over {length:.1f} mm, near "
+                     f"({px:.1f}, {py:.1f}))", span,
+                     hint=f"move or shrink the feature so that at least {t:g} mm of material is "
+                          "left (a laser or router cannot hold a thinner wall); the minimum is "
+                          "set with --min-wall")
+
+
+def _point_of(piece, near) -> tuple[float, float]:
+    """The vertex of ``piece`` (what the opening removed: a thin wall) nearest to ``near``
+    (its box's centre): a point on the wall itself, where the box's centre of a curved or
+    L-shaped wall lies off it."""
+    P = np.concatenate([np.asarray(p, dtype=float) for p in piece.to_polygons()])
+    k = int(np.argmin(np.hypot(P[:, 0] - near[0], P[:, 1] - near[1])))
+    return float(P[k, 0]), float(P[k, 1])
+
+
+UNION_GROUP = 16       # tile pieces united in one uninterruptible call by _join
+TILE_VERTS = 2000      # W0507's opening is taken tile by tile above this many vertices ...
+WHOLE_LOOPS = 2        # ... and loops: an outline and one hole (a gear and its bore) are opened
+WHOLE_VERTS = 10_000   # whole up to this many vertices, since clipping a loop into tiles costs
+                       # more than opening it (not beyond: what the opening removes is split
+                       # into its pieces at once, and Manifold's decompose crashes on 70,000)
+# the least time per vertex of the steps the deadline cannot interrupt (measured on the 2-core
+# machine: the opening ~60 us, decomposing what it removes ~24 us, uniting the tiles' parts
+# ~18 us per vertex; half of that, so that only steps sure to overrun are refused before they
+# start)
+THIN_SECONDS_PER_VERTEX = 30e-6
+DECOMPOSE_SECONDS_PER_VERTEX = 12e-6
+UNION_SECONDS_PER_VERTEX = 9e-6     # seed 791: the tiles' last union, 515,225 vertices, 9.3 s
+
+
+def _open(shape, t: float):
+    segs = 16
+    return shape.offset(-t / 2, mf.JoinType.Round, 2.0, segs).offset(t / 2, mf.JoinType.Round,
+                                                                     2.0, segs)
+
+
+def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead=0.0: None,
+          least: float = 0.0, whole_loops: int = WHOLE_LOOPS) -> list:
+    """The connected pieces of what the opening of ``shape`` by a disc of diameter ``t``
+    removes (a list of CrossSections; pieces of area below ``least`` mm^2 may come in bits).
+
+    Clipper2's offset runs a sweep whose cost grows faster than the vertex count (on a grid of
+    holes about as n^1.5: 12 ms at 100 holes, 256 ms at 900), so a shape of more than ``tile``
+    vertices is cut into tiles: whether a point survives the opening depends only on the shape
+    within ``t`` of it, so each tile is opened with a margin of ``2 t`` around it (the shape
+    clipped to the grown tile) and what the opening removes inside the tile itself is kept.
+    The tiles come from halving the box along its longer side while the clipped shape has more
+    than ``tile`` vertices (each half clipped from its parent's piece): O(n log n) whatever the
+    shape.  A grid of tiles over the bounding box cost tiles x vertices for one long loop (a
+    diagonal chain of 10 000 circles: 81 tiles, each clipping the whole 150 000-vertex loop,
+    20 s).  A shape of at most ``whole_loops`` loops and :data:`WHOLE_VERTS` vertices is
+    opened whole: each tile clips the loops that cross it, and for one long loop that costs
+    more than the opening itself (one wavy loop of 2,520 vertices: 11.6 ms in tiles, 7.0 ms
+    whole; of 42,000: 883 and 193 ms; a diagonal chain of 1,000 circles, one loop of 16,000
+    vertices: 591 and 149 ms), up to a size where what the opening removes could come in
+    more pieces than Manifold's ``decompose`` survives (the chain of 10,000 circles, one loop
+    of 160,000 vertices: 3.5 s in tiles; whole, the opening takes 1.0 s and decomposing its
+    140,000 slivers crashes the process, as 70,000 do; 35,000 do not).
+
+    When all of it weighs less than ``least``, the tiles' parts are returned as they are;
+    else each is split into its pieces, and only the pieces that meet across a tile's edge
+    (their boxes touch) and weigh at least ``least`` together are united (:func:`_join`).
+    Uniting every tile's part into one shape first cost one uninterruptible Manifold call over
+    all of them (fuzz seeds 791 and 1542: 5,000 circles, 515,225 vertices of corner slivers,
+    9-25 s).  ``loops`` is accepted for the callers' convenience (unused); ``tick(ahead)`` is
+    called before each tile and each union (the compile's deadline).
+
+    The tiles are cut from the shape's loops (:func:`_clip_loops`: only the loops that cross a
+    tile's edge are clipped), and a loop that lies alone (:func:`_isolated_loops`) is opened
+    by itself, once per shape of loop (:func:`_thin_of_loop`): a plate of 5,000 equal round
+    holes 2 mm apart opens one hole, its outline's edge and the holes beside it
+    (``check_drawing`` 3.65 s -> 0.82 s)."""
+    n = shape.num_vert()
+    if n <= tile or n <= WHOLE_VERTS and shape.num_contour() <= whole_loops:
+        thin = shape - _open(shape, t)
+        if _area(thin) < least:
+            return [thin]
+        tick(thin.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
+        return thin.decompose()
+    m = 2 * t
+    out: list = []           # what the opening removes in each tile
+
+    def box(a, b, c, e):
+        return mf.CrossSection.square((c - a, e - b)).translate((a, b))
+
+    def split(loops, boxes, a, b, c, e):
+        tick()
+        if not loops:
+            return
+        small = max(c - a, e - b) <= 8 * t          # halving no longer sheds the margin
+        if sum(len(p) for p in loops) <= tile or small:
+            piece = mf.CrossSection(loops, mf.FillRule.Positive)
+            part = (piece - _open(piece, t)) ^ box(a, b, c, e)
+            if not part.is_empty():
+                out.append(part)
+            return
+        if c - a >= e - b:
+            mid = (a + c) / 2
+            halves = [(a, b, mid, e), (mid, b, c, e)]
+        else:
+            mid = (b + e) / 2
+            halves = [(a, b, c, mid), (a, mid, c, e)]
+        for h in halves:
+            split(*_clip_loops(loops, boxes, h[0] - m, h[1] - m, h[2] + m, h[3] + m), *h)
+
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    boxes = _loop_boxes(loops)
+    alone = _isolated_loops(loops, boxes, t)
+    cache: dict = {}
+    for k in np.flatnonzero(alone):
+        tick()
+        part = _thin_of_loop(loops[k], t, cache)
+        if part is not None:
+            out.append(part)
+    rest = [loops[k] for k in np.flatnonzero(~alone)]
+    x0, y0, x1, y1 = shape.bounds()
+    split(rest, boxes[~alone], x0, y0, max(x1, x0 + 1e-9), max(y1, y0 + 1e-9))
+    if sum(_area(p) for p in out) < least:        # corner slivers only: nothing to measure
+        return out
+    pieces = []
+    for k, part in enumerate(out):
+        tick(part.num_vert() * DECOMPOSE_SECONDS_PER_VERTEX)
+        pieces.extend((k, p) for p in part.decompose())
+    return _join(pieces, least, tick)
+
+
+def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
+    """Which ``loops`` (with their ``boxes``) lie farther than ``1.5 t`` from every other loop
+    and enclose none (a boolean array; a sufficient test, by boxes: a loop said not isolated
+    may still be).  What the opening by a disc of diameter ``t`` removes lies within ``t / 2``
+    of the boundary, and whether a point there is removed depends on the shape within ``t``
+    of it, so near an isolated loop it depends on that loop alone (:func:`_thin_of_loop`),
+    and the other loops' part is the same without it.  Large loops (a plate's outline) are
+    tested by their edges' boxes, so that the holes inside them are not all near them."""
+    n = len(loops)
+    if n < 2:
+        return np.zeros(n, dtype=bool)
+    diag = np.hypot(boxes[:, 2] - boxes[:, 0], boxes[:, 3] - boxes[:, 1])
+    big = diag > max(4 * float(np.median(diag)), 8 * t)
+    owner = [np.flatnonzero(~big)]
+    items = [boxes[~big]]
+    for k in np.flatnonzero(big):            # a large loop: one box per edge
+        P = loops[k]
+        Q = np.roll(P, -1, axis=0)
+        items.append(np.hstack([np.minimum(P, Q), np.maximum(P, Q)]))
+        owner.append(np.full(len(P), k))
+    owner = np.concatenate(owner)
+    pairs = box_pairs(np.concatenate(items), pad=0.75 * t * (1 + 1e-6) + 1e-9)
+    near = owner[pairs]
+    near = near[near[:, 0] != near[:, 1]]
+    alone = ~big
+    alone[near.ravel()] = False
+    return alone
+
+
+def _thin_of_loop(loop: np.ndarray, t: float, cache: dict):
+    """What the opening by a disc of diameter ``t`` removes near ``loop`` (an (n, 2) array,
+    counter-clockwise for an outline, clockwise for a hole) when no other loop lies within
+    ``1.5 t`` of it (:func:`_isolated_loops`), a CrossSection, or None when it is empty: from
+    the loop alone (a hole in a square of material ``2 t`` wider than its box).  Computed once
+    per shape: ``cache`` holds what is removed near each loop seen, by its vertices relative
+    to its box's corner (to 1e-9 mm), so a grid of 5,000 equal holes is opened once; the
+    others take its result moved (Clipper rounds to its grid where the loop lies: the slivers
+    of a moved circle differ by ~1e-8 mm^2)."""
+    lo = loop.min(axis=0)
+    key = (len(loop), np.round(loop - lo, 9).tobytes())
+    seen = cache.get(key)
+    if seen is None:              # opened where it lies (Clipper rounds to its own grid)
+        (x0, y0), (x1, y1) = lo, loop.max(axis=0)
+        own = mf.CrossSection([loop], mf.FillRule.Positive)
+        if own.is_empty():                    # clockwise: a hole in the material around it
+            own = (mf.CrossSection.square((x1 - x0 + 4 * t, y1 - y0 + 4 * t))
+                   .translate((x0 - 2 * t, y0 - 2 * t))
+                   - mf.CrossSection([loop[::-1]], mf.FillRule.Positive))
+        near = (mf.CrossSection.square((x1 - x0 + 2 * t, y1 - y0 + 2 * t))
+                .translate((x0 - t, y0 - t)))
+        seen = cache[key] = ((own - _open(own, t)) ^ near, lo)
+    thin, at = seen
+    if thin.is_empty():
+        return None
+    return thin if at is lo else thin.translate((float(lo[0] - at[0]), float(lo[1] - at[1])))
+
+
+def _loop_boxes(loops: list) -> np.ndarray:
+    """The boxes (x0, y0, x1, y1) of ``loops`` ((n, 2) arrays), an (len(loops), 4) array."""
+    if not loops:
+        return np.zeros((0, 4))
+    P = np.concatenate(loops)
+    start = np.cumsum([0] + [len(p) for p in loops[:-1]])
+    return np.hstack([np.minimum.reduceat(P, start), np.maximum.reduceat(P, start)])
+
+
+def _clip_loops(loops: list, boxes: np.ndarray, a: float, b: float, c: float, e: float):
+    """The loops of a shape (outer loops counter-clockwise, holes clockwise, as
+    ``CrossSection.to_polygons`` gives them, with their ``boxes``) clipped to the box
+    ``a <= x <= c, b <= y <= e``: (loops, boxes) with the same winding number at every point
+    of the box.  A loop whose box lies inside the box is kept whole and one whose box misses
+    it is dropped, without a boolean; only the loops whose boxes cross its edge are clipped
+    (one Clipper boolean over those alone).  Every loop that encloses a crossing loop crosses
+    too (its box contains the other's), so the crossing loops' winding numbers are 0 or 1
+    and the boolean keeps them; adding the whole loops' windings gives the shape's.  On a
+    plate of 5,000 round holes this clips a few hundred vertices per tile where clipping the
+    whole shape cost its 225,000 vertices at each of the halving's 7 levels."""
+    inside = (boxes[:, 0] > a) & (boxes[:, 1] > b) & (boxes[:, 2] < c) & (boxes[:, 3] < e)
+    meets = (boxes[:, 0] <= c) & (boxes[:, 2] >= a) & (boxes[:, 1] <= e) & (boxes[:, 3] >= b)
+    keep = [loops[k] for k in np.flatnonzero(inside)]
+    cross = np.flatnonzero(meets & ~inside)
+    if len(cross) == 0:
+        return keep, boxes[inside]
+    rect = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+    cut = mf.CrossSection([loops[k] for k in cross], mf.FillRule.Positive) ^ rect
+    cut_loops = [np.asarray(p, dtype=float) for p in cut.to_polygons()]
+    return keep + cut_loops, np.concatenate([boxes[inside], _loop_boxes(cut_loops)])
+
+
+def _join(pieces: list, least: float, tick) -> list:
+    """The connected pieces made of ``pieces`` ((tile number, CrossSection) pairs; pieces of
+    one tile are disjoint, pieces of different tiles meet at most along the tiles' edges):
+    pieces of different tiles whose boxes touch are grouped (connected components of the
+    touching pairs), and a group of at least ``least`` mm^2 is united :data:`UNION_GROUP`
+    parts at a time, the deadline's ``tick(ahead)`` before each union, then split again
+    (touching boxes do not make the shapes touch)."""
+    if not pieces:
+        return []
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    tiles = np.array([k for k, _ in pieces])
+    shapes = [p for _, p in pieces]
+    boxes = np.array([p.bounds() for p in shapes], dtype=float).reshape(-1, 4)
+    span = float(np.max(np.abs(boxes))) if len(boxes) else 1.0
+    pairs = box_pairs(boxes, pad=1e-9 * max(span, 1.0))
+    pairs = pairs[tiles[pairs[:, 0]] != tiles[pairs[:, 1]]]
+    n = len(shapes)
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _count, label = connected_components(graph, directed=False)
+    groups: dict = {}
+    for i, g in enumerate(label):
+        groups.setdefault(g, []).append(shapes[i])
+    result = []
+    for group in groups.values():
+        if len(group) == 1 or sum(_area(p) for p in group) < least:
+            result.extend(group)
+            continue
+        while len(group) > 1:
+            nxt = []
+            for i in range(0, len(group), UNION_GROUP):
+                part = group[i:i + UNION_GROUP]
+                tick(sum(p.num_vert() for p in part) * UNION_SECONDS_PER_VERTEX)
+                nxt.append(_union(part))
+            group = nxt
+        result.extend(group[0].decompose())
+    return result
