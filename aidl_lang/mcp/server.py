@@ -103,10 +103,11 @@ def build_server(root: str, budget: float = 1.0,
     evaluation budget) as each call's default; ``prompt``: a function that returns the
     ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
     ws = T.Workspace(root, budget)
-    # the compiling tools run in a warm worker process, killed past twice the budget's wall
-    # time (aidl_lang/mcp/worker.py): a call always ends
-    from .worker import Worker
-    work = Worker(ws.root, budget)
+    # the compiling tools run side by side in a pool of warm worker processes, each call
+    # killed past twice the budget's wall time (aidl_lang/mcp/worker.py): a call always ends,
+    # and a slow one delays only itself
+    from .worker import Pool
+    work = Pool(str(ws.root), budget)
     from importlib.metadata import PackageNotFoundError, version
     try:
         ver = version("aidl-lang")
