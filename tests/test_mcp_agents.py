@@ -50,3 +50,36 @@ async def test_a_slow_call_delays_only_itself(tmp_path):
         else:
             doc = json.loads(_text(r))
             assert not doc["ok"] and "E0304" in [d["code"] for d in doc["diagnostics"]]
+
+
+@pytest.mark.asyncio
+async def test_results_are_structured_content_matching_the_output_schemas(tmp_path):
+    """check, render, values and describe declare an output schema; a call's result carries
+    structuredContent that matches it (good and broken programs alike), with the same JSON
+    as a text block for older clients (render: after its image)."""
+    import jsonschema
+    (tmp_path / "plate.aidl").write_text(GOOD)
+    async with _session(tmp_path) as session:
+        tools = {t.name: t for t in (await session.list_tools()).tools}
+        calls = {"check": {"dof": True}, "render": {"width": 64}, "values": {},
+                 "describe": {}}
+        for name, extra in calls.items():
+            schema = tools[name].output_schema
+            assert schema and schema["type"] == "object", name
+            assert {"ok", "units"} <= set(schema["properties"]), name
+            for source in (GOOD, "solid p { c = Circel(center=(0, 0), radius=1) }"):
+                r = await session.call_tool(name, {"source": source, **extra})
+                assert not r.is_error, _text(r)
+                jsonschema.validate(r.structured_content, schema)
+                assert json.loads(_text(r)) == r.structured_content
+                assert r.structured_content["ok"] is (source == GOOD)
+        r = await session.call_tool("values", {"path": "plate.aidl", "names": ["bore.c"]})
+        assert [v["name"] for v in r.structured_content["values"]] == [
+            "plate.bore.c.center", "plate.bore.c.radius"]
+        assert r.structured_content["values"][0]["value"] == [10, 0]
+        r = await session.call_tool("render", {"path": "plate.aidl", "width": 64})
+        assert [c.type for c in r.content] == ["image", "text"]
+        assert r.structured_content["image"] == {"format": "png", "width": 64, "view": "flat"}
+        assert r.structured_content["parts"][0]["holes"] == 1
+        props = tools["check"].output_schema["properties"]
+        assert {"diagnostics", "solve", "freedom", "parts", "summary"} <= set(props)

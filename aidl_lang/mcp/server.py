@@ -18,10 +18,11 @@ from typing import Annotated, Literal
 
 from mcp.server.mcpserver import Image, MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
-from mcp_types import ToolAnnotations
+from mcp_types import CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
 from . import tools as T
+from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
 # JSON Schema of `tools/list`, and checks calls against it before a tool runs.
@@ -124,68 +125,70 @@ def build_server(root: str, budget: float = 1.0,
     writes = ToolAnnotations(read_only_hint=False, destructive_hint=True, idempotent_hint=True,
                              open_world_hint=False)
 
-    @server.tool(structured_output=False, annotations=reads)
+    @server.tool(annotations=reads)
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-              dof: Dof = False, budget: Budget = None) -> str:
+              dof: Dof = False, budget: Budget = None) -> CheckResult:
         """Parse, check and solve an AIDL program; write nothing.
 
         Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder);
         a Drawing2D("x.dxf") reads a drawing beside the program (source: in the folder).
         `overrides` sets params like `aidl --set` ({"width": "40 mm"}); `dof` adds degrees of
         freedom per structure; `budget` multiplies the evaluation budget (at most 4).
-        Returns JSON: ok, diagnostics (code, severity, message, span with 1-based line and
-        column, labels, hint, suggestions, fix), solve statistics, freedom (degrees of freedom
-        left) and parts (name, kind, bbox [x0, y0, x1, y1] mm, area mm2, holes)."""
+        Returns (structured content, and the same JSON as text): ok, diagnostics (code,
+        severity, message, span with 1-based line and column, labels, hint, suggestions, fix),
+        solve statistics, freedom (degrees of freedom left) and parts (name, kind, bbox [x0,
+        y0, x1, y1] mm, area mm2, holes)."""
         try:
-            return _json(work.call("check", source, path, overrides, dof, budget,
-                                   budget=budget))
+            return work.call("check", source, path, overrides, dof, budget, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False, annotations=writes)
+    @server.tool(annotations=writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                width: Width = 800, overrides: Overrides = None, style: Style = "preview",
-               budget: Budget = None, assembled: Assembled = False) -> list:
+               budget: Budget = None, assembled: Assembled = False
+               ) -> Annotated[CallToolResult, RenderResult]:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
         .png, .stl, .3mf, .step, .glb).  `style`: preview (filled) or laser (hairlines).
         `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
         boxed in red.  When the program has errors there is no picture, only the
-        diagnostics."""
+        diagnostics.  The summary is structured content (and the same JSON as text)."""
         try:
             doc, png = work.call("render", source, path, output, width, overrides, budget,
                                  style, assembled, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
-        return ([Image(data=png, format="png")] if png is not None else []) + [_json(doc)]
+        picture = [Image(data=png, format="png").to_image_content()] if png is not None else []
+        return CallToolResult(content=picture + [TextContent(type="text", text=_json(doc))],
+                              structured_content=doc)
 
-    @server.tool(structured_output=False, annotations=reads)
+    @server.tool(annotations=reads)
     def values(source: Source = None, path: ProgramPath = None, names: Names = None,
-               overrides: Overrides = None, budget: Budget = None) -> str:
+               overrides: Overrides = None, budget: Budget = None) -> ValuesResult:
         """The solved values of named entities, in the file's units: each structure's frame
         origin and bounding box, each named geometry's points (center, start, end, corners)
         and sizes (radius, width, height), a pattern's copies' too (corners[1].c.center).  `names` filters by dotted prefix (e.g.
         ["plate.bore", "plate.body.width"]); the root structure's name may be left out.
-        Returns JSON: ok, units, values [{name, kind, value, unit, mm}] and text (one
-        `name = value unit` line each)."""
+        Returns (structured content, and the same JSON as text): ok, units, values [{name,
+        kind, value, unit, mm}] and text (one `name = value unit` line each)."""
         try:
-            return _json(work.call("values", source, path, names, overrides, budget,
-                                   budget=budget))
+            return work.call("values", source, path, names, overrides, budget, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False, annotations=reads)
+    @server.tool(annotations=reads)
     def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-                 budget: Budget = None) -> str:
+                 budget: Budget = None) -> DescribeResult:
         """What the final part is, for checking it without a picture: for each part its
         outline (kind, size, box), each opening with its kind (circle d=..., slot w x l,
         rectangle, n-gon), centre and size, engravings (text and place), copies (parts of the
-        same shape) and symmetries (mirror, n-fold rotation); mm. Returns JSON: ok,
-        diagnostics, text (one line per feature) and describe (the same as data)."""
+        same shape) and symmetries (mirror, n-fold rotation); mm. Returns (structured
+        content, and the same JSON as text): ok, diagnostics, text (one line per feature) and
+        describe (the same as data)."""
         try:
-            return _json(work.call("describe", source, path, overrides, budget,
-                                   budget=budget))
+            return work.call("describe", source, path, overrides, budget, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
 
