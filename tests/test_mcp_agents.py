@@ -83,3 +83,41 @@ async def test_results_are_structured_content_matching_the_output_schemas(tmp_pa
         assert r.structured_content["parts"][0]["holes"] == 1
         props = tools["check"].output_schema["properties"]
         assert {"diagnostics", "solve", "freedom", "parts", "summary"} <= set(props)
+
+
+@pytest.mark.asyncio
+async def test_the_input_schema_states_source_or_path_and_refuses_unknown_arguments(tmp_path):
+    """The choice of `source` or `path` is in each compiling tool's input schema (`oneOf`,
+    each with its `required`), no tool takes arguments beyond its properties
+    (`additionalProperties: false`); a call with both, neither or an unknown argument is a
+    tool error saying so (the unknown one named, with the nearest and the accepted names)."""
+    import jsonschema
+    (tmp_path / "plate.aidl").write_text(GOOD)
+    async with _session(tmp_path) as session:
+        tools = {t.name: t for t in (await session.list_tools()).tools}
+        for t in tools.values():
+            assert t.input_schema["additionalProperties"] is False, t.name
+        for name in ("check", "render", "values", "describe"):
+            schema = tools[name].input_schema
+            assert [b["required"] for b in schema["oneOf"]] == [["source"], ["path"]]
+            jsonschema.validate({"source": GOOD}, schema)
+            jsonschema.validate({"path": "plate.aidl", "source": None}, schema)
+            for bad in ({}, {"source": GOOD, "path": "plate.aidl"}, {"sourse": GOOD}):
+                with pytest.raises(jsonschema.ValidationError):
+                    jsonschema.validate(bad, schema)
+            for bad in ({}, {"source": GOOD, "path": "plate.aidl"}):
+                r = await session.call_tool(name, bad)
+                assert r.is_error and "give exactly one of `source`" in _text(r), (name, bad)
+
+        r = await session.call_tool("check", {"sourse": GOOD})
+        assert r.is_error
+        assert "unknown argument `sourse`" in _text(r) and "did you mean `source`?" in _text(r)
+        assert "source, path, overrides, dof, budget" in _text(r)
+        r = await session.call_tool("render", {"path": "plate.aidl", "widht": 64})
+        assert r.is_error and "unknown argument `widht`" in _text(r)
+        assert "did you mean `width`?" in _text(r)
+        assert not (tmp_path / "plate.svg").exists()
+        r = await session.call_tool("docs", {"topic": "Circle"})
+        assert r.is_error and "unknown argument `topic`" in _text(r) and "name" in _text(r)
+        r = await session.call_tool("check", {"path": "plate.aidl", "dof": True})
+        assert not r.is_error and r.structured_content["ok"]

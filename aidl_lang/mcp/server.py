@@ -18,6 +18,7 @@ from typing import Annotated, Literal
 
 from mcp.server.mcpserver import Image, MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
+from mcp.server.mcpserver.tools import Tool
 from mcp_types import CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
@@ -98,6 +99,43 @@ def _json(doc: dict) -> str:
     return json.dumps(doc, indent=1)
 
 
+# a tool that compiles takes its program as `source` or `path`, exactly one of them (a null
+# one is not given)
+PROGRAM_CHOICE = [{"required": ["source"], "properties": {"source": {"type": "string"}}},
+                  {"required": ["path"], "properties": {"path": {"type": "string"}}}]
+
+
+def _tool(fn: Callable, annotations: ToolAnnotations, structured: bool) -> Tool:
+    """``fn`` as a tool (the SDK makes its input schema from its signature and, when
+    ``structured``, its output schema from its return type; else it returns text) whose input
+    schema allows only its own arguments (``additionalProperties: false``) and, for a tool
+    that compiles, exactly one of ``source`` and ``path`` (``oneOf``)."""
+    tool = Tool.from_function(fn, annotations=annotations, structured_output=structured)
+    tool.parameters["additionalProperties"] = False
+    if "source" in tool.parameters["properties"]:
+        tool.parameters["oneOf"] = PROGRAM_CHOICE
+    return tool
+
+
+class _Server(MCPServer):
+    """The SDK's server, holding each tool call to its input schema's names, which the SDK
+    leaves to the tools (it drops an unknown argument silently): an unknown argument, and both
+    or neither of ``source`` and ``path``, are tool errors saying so
+    (:func:`.tools.check_arguments`)."""
+
+    def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
+        super().__init__(*args, tools=tools, **kwargs)
+        self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
+
+    async def call_tool(self, name: str, arguments: dict, context=None):
+        if name in self.accepted:
+            try:
+                T.check_arguments(name, arguments, self.accepted[name])
+            except T.Refused as e:
+                raise ToolError(str(e)) from None
+        return await super().call_tool(name, arguments, context)
+
+
 def build_server(root: str, budget: float = 1.0,
                  prompt: Callable[[], str] | None = None) -> MCPServer:
     """The server for the allowed folder ``root`` with ``budget`` (a factor of the default
@@ -114,7 +152,13 @@ def build_server(root: str, budget: float = 1.0,
         ver = version("aidl-lang")
     except PackageNotFoundError:         # a source tree that is not installed
         ver = "0+unknown"
-    server = MCPServer("aidl", instructions=INSTRUCTIONS, version=ver)
+    tools: list[Tool] = []
+
+    def tool(annotations: ToolAnnotations, structured: bool = True):
+        def register(fn: Callable) -> Callable:
+            tools.append(_tool(fn, annotations, structured))
+            return fn
+        return register
 
     def refused(e: Exception) -> ToolError:
         return ToolError(str(e))
@@ -125,7 +169,7 @@ def build_server(root: str, budget: float = 1.0,
     writes = ToolAnnotations(read_only_hint=False, destructive_hint=True, idempotent_hint=True,
                              open_world_hint=False)
 
-    @server.tool(annotations=reads)
+    @tool(reads)
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
               dof: Dof = False, budget: Budget = None) -> CheckResult:
         """Parse, check and solve an AIDL program; write nothing.
@@ -143,7 +187,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(annotations=writes)
+    @tool(writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                width: Width = 800, overrides: Overrides = None, style: Style = "preview",
                budget: Budget = None, assembled: Assembled = False
@@ -164,7 +208,7 @@ def build_server(root: str, budget: float = 1.0,
         return CallToolResult(content=picture + [TextContent(type="text", text=_json(doc))],
                               structured_content=doc)
 
-    @server.tool(annotations=reads)
+    @tool(reads)
     def values(source: Source = None, path: ProgramPath = None, names: Names = None,
                overrides: Overrides = None, budget: Budget = None) -> ValuesResult:
         """The solved values of named entities, in the file's units: each structure's frame
@@ -178,7 +222,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(annotations=reads)
+    @tool(reads)
     def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None) -> DescribeResult:
         """What the final part is, for checking it without a picture: for each part its
@@ -192,7 +236,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False, annotations=reads)
+    @tool(reads, structured=False)
     def explain(code: Code) -> str:
         """What a diagnostic code (E0103, W0402, ...) means, with an example."""
         try:
@@ -200,7 +244,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
-    @server.tool(structured_output=False, annotations=reads)
+    @tool(reads, structured=False)
     def docs(name: TopicName = None) -> str:
         """The reference of a shape, constraint, statement or standard-library template (as
         `aidl docs NAME`): signature, the unit of every parameter, members and an example
@@ -211,6 +255,7 @@ def build_server(root: str, budget: float = 1.0,
         except T.Refused as e:
             raise refused(e) from None
 
+    server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
     from ..reference import index_text, topics
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "

@@ -23,6 +23,31 @@ class Refused(Exception):
     error)."""
 
 
+def one_program(source: str | None, path: str | None) -> None:
+    """Refuse both or neither of ``source`` and ``path`` (None: not given).  Raises
+    :class:`Refused`."""
+    if (source is None) == (path is None):
+        raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
+                      "inside the allowed folder)")
+
+
+def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
+    """Refuse the arguments of a call to ``tool`` that it does not take (``accepted``: the
+    names it does), naming them with the nearest accepted name and all of them, and for a
+    tool that compiles, both or neither of ``source`` and ``path`` (:func:`one_program`).
+    Raises :class:`Refused`."""
+    unknown = [a for a in arguments if a not in accepted]
+    if unknown:
+        from ..diagnostics import did_you_mean
+        near = did_you_mean(unknown[0], accepted, 1)
+        said = ", ".join(f"`{a}`" for a in unknown)
+        raise Refused(f"unknown argument{'s' if len(unknown) > 1 else ''} {said} for `{tool}`"
+                      + (f"; did you mean `{near[0]}`?" if near else ";")
+                      + f" `{tool}` takes: {', '.join(accepted)}")
+    if "source" in accepted and "path" in accepted:
+        one_program(arguments.get("source"), arguments.get("path"))
+
+
 class Workspace:
     """The one folder a server may read and write: ``root`` (resolved, real path).
     :meth:`inside` resolves a path given by the agent (relative to the root) and refuses
@@ -64,9 +89,7 @@ class Workspace:
         """Compile ``source`` (named by ``path`` if given, else ``untitled.aidl`` in the root:
         imports resolve from there, in the sandbox of the importing file's folder) or the file
         ``path``.  Raises :class:`Refused`."""
-        if (source is None) == (path is None):
-            raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
-                          "inside the allowed folder)")
+        one_program(source, path)
         k = self.budget if budget is None else budget
         if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
             raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
