@@ -121,3 +121,22 @@ async def test_the_input_schema_states_source_or_path_and_refuses_unknown_argume
         assert r.is_error and "unknown argument `topic`" in _text(r) and "name" in _text(r)
         r = await session.call_tool("check", {"path": "plate.aidl", "dof": True})
         assert not r.is_error and r.structured_content["ok"]
+
+
+@pytest.mark.asyncio
+async def test_overrides_take_bare_numbers_in_the_files_units(tmp_path):
+    """`overrides` takes a bare number as its description says (in the file's units, like
+    the string "3"), a string with a unit, and true/false."""
+    src = ("units in\nparam width = 2\nparam slot = true\n"
+           "solid plate { body = Rectangle(center=(0, 0), width=width, height=1) }\n")
+    async with _session(tmp_path) as session:
+        for given, inches in ((3, 3.0), (2.5, 2.5), ("3", 3.0), ("25.4 mm", 1.0)):
+            r = await session.call_tool("values", {"source": src, "names": ["body.width"],
+                                                   "overrides": {"width": given}})
+            assert not r.is_error, _text(r)
+            [v] = r.structured_content["values"]
+            assert v["unit"] == "in" and v["value"] == pytest.approx(inches), given
+        r = await session.call_tool("check", {"source": src, "overrides": {"slot": False}})
+        assert not r.is_error and r.structured_content["ok"], _text(r)
+        r = await session.call_tool("check", {"source": src, "overrides": {"width": [1]}})
+        assert r.is_error and "overrides" in _text(r)

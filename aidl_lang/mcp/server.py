@@ -33,9 +33,10 @@ Source = Annotated[str | None, Field(
 ProgramPath = Annotated[str | None, Field(
     description="A .aidl file, relative to the server's allowed folder (nothing outside it "
                 "is read). Give this or `source`, not both.")]
-Overrides = Annotated[dict[str, str] | None, Field(
-    description="Param values, as `aidl --set` takes them: param name -> value, e.g. "
-                "{\"width\": \"40 mm\"} (a bare number is in the file's units).")]
+Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
+    description="Param values: param name -> value, e.g. {\"width\": \"40 mm\"} (a string, "
+                "read as the program reads a value), {\"width\": 40} (a bare number, in the "
+                "file's units, as the string \"40\") or {\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
     description=f"A factor of the default evaluation budget (steps, objects, sizes, 15 s of "
                 f"wall time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
