@@ -140,3 +140,26 @@ async def test_overrides_take_bare_numbers_in_the_files_units(tmp_path):
         assert not r.is_error and r.structured_content["ok"], _text(r)
         r = await session.call_tool("check", {"source": src, "overrides": {"width": [1]}})
         assert r.is_error and "overrides" in _text(r)
+
+
+@pytest.mark.asyncio
+async def test_render_never_writes_through_a_link_inside_the_root(tmp_path):
+    """An output path with a symbolic link in any component below the root is refused, also
+    a link that points inside the root: to another folder of it, or to a file of it (the
+    tool's description says "never through a symbolic link")."""
+    import os
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "real.svg").write_text("keep")
+    os.symlink(tmp_path / "sub", tmp_path / "alias")
+    os.symlink(tmp_path / "sub" / "real.svg", tmp_path / "file.svg")
+    async with _session(tmp_path) as session:
+        for output in ("alias/x.svg", "alias/../x.svg", "file.svg", "alias/real.svg",
+                       str(tmp_path / "alias" / "x.dxf")):
+            r = await session.call_tool("render", {"source": GOOD, "output": output})
+            assert r.is_error and "symbolic link" in _text(r), (output, _text(r))
+        assert sorted(os.listdir(tmp_path / "sub")) == ["real.svg"]
+        assert (tmp_path / "sub" / "real.svg").read_text() == "keep"
+        assert not (tmp_path / "x.svg").exists()
+        r = await session.call_tool("render", {"source": GOOD, "output": "sub/y.svg"})
+        assert not r.is_error and r.structured_content["written"] == "sub/y.svg", _text(r)
+        assert (tmp_path / "sub" / "y.svg").read_text().lstrip().startswith("<")

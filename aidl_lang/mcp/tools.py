@@ -78,6 +78,39 @@ class Workspace:
             raise Refused(f"`{path}` is not a file in {self.root}")
         return real
 
+    def output(self, path: str) -> Path:
+        """The output file ``path`` (relative to the root, or absolute inside it) as a path
+        below the root, ``..`` taken as written, with no symbolic link in any of its
+        components: a link is refused wherever it points, inside the root too (outputs are
+        never written through a link).  The file and its folders need not exist.  Raises
+        :class:`Refused`."""
+        if not isinstance(path, str) or not path or "\x00" in path:
+            raise Refused("give a path as a non-empty string")
+        p = Path(path)
+        outside = Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
+                          "--root); only files inside it can be read or written")
+        if p.is_absolute():
+            try:
+                p = p.relative_to(self.root)
+            except ValueError:
+                raise outside from None
+        parts: list[str] = []
+        for part in p.parts:
+            if part == "..":
+                if not parts:
+                    raise outside
+                parts.pop()
+            elif part not in ("", "."):
+                parts.append(part)
+                if os.path.islink(self.root.joinpath(*parts)):
+                    raise Refused(f"`{path}` goes through the symbolic link "
+                                  f"`{'/'.join(parts)}`; outputs are never written through a "
+                                  "link, even one inside the allowed folder: give a path of "
+                                  "real folders")
+        if not parts:
+            raise Refused(f"`{path}` is the allowed folder itself; give a file name")
+        return self.root.joinpath(*parts)
+
     def relative(self, p: Path | str) -> str:
         try:
             return str(Path(p).relative_to(self.root))
@@ -182,7 +215,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
         raise Refused("style is `preview` or `laser`")
-    target = ws.inside(output) if output is not None else None
+    target = ws.output(output) if output is not None else None
     if assembled and target is not None:
         from ..output.formats import ASSEMBLED_FORMATS
         if target.suffix.lower() not in ASSEMBLED_FORMATS:
@@ -241,11 +274,13 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
 
 def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
                   shown: str) -> None:
-    """Write ``data`` to ``target`` (a real path inside the root, checked when the call came
-    in) through the folder opened from the root without following links
-    (:func:`aidl_lang.files.open_dir_beneath`), so a folder swapped for a link to somewhere
-    else while the program compiled is refused, never written through; never over the
-    program file ``program``.  Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    """Write ``data`` to ``target`` (a path below the root with no link in it, checked when
+    the call came in: :meth:`Workspace.output`) through the folder opened from the root
+    without following links (:func:`aidl_lang.files.open_dir_beneath`, ``O_NOFOLLOW`` at
+    each step), so a folder swapped for a link while the program compiled is refused, never
+    written through, and a link at the file itself is refused
+    (:func:`aidl_lang.files.write_in_dir`); never over the program file ``program``.  Raises
+    ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent)
     try:
