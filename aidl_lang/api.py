@@ -35,7 +35,7 @@ from typing import Literal
 from .diagnostics import Diagnostic, DiagnosticSink
 from .limits import DEFAULT_BUDGET, Budget
 
-__all__ = ["compile", "Result", "Value", "PartInfo", "NotCompiled", "WriteError"]
+__all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError"]
 
 
 def __getattr__(name: str):
@@ -102,6 +102,46 @@ class PartInfo:
     def to_json(self) -> dict:
         return {"name": self.name, "kind": self.kind, "bbox": list(self.bbox),
                 "area": self.area, "holes": self.holes, "loops": self.loops}
+
+
+class Layout:
+    """A cutting layout (:meth:`Result.layout`, ``aidl render --layout sheet``): every solid
+    part placed once, flat, without overlap, on sheets of ``size`` = (width, height) mm, one
+    material thickness per sheet.
+
+    ``sheets``: the number of sheets; ``parts``: the number of parts placed; ``dropped``: the
+    engraving strokes outside every part, left out; ``text``: ``laid out 6 parts on 2 sheets
+    of 200 x 150 mm``.  :meth:`encode` gives each sheet's file."""
+
+    def __init__(self, cut: list, solid: list, size: tuple[float, float], dropped: int) -> None:
+        self._cut, self._solid = cut, solid
+        self.size = (float(size[0]), float(size[1]))
+        self.sheets = len(cut)
+        self.parts = sum(len(s.parts) for s in cut)
+        self.dropped = dropped
+
+    @property
+    def text(self) -> str:
+        return (f"laid out {self.parts} parts on {self.sheets} "
+                f"sheet{'s' if self.sheets != 1 else ''} of {self.size[0]:g} x {self.size[1]:g} mm")
+
+    def encode(self, fmt: str, **options) -> list[bytes]:
+        """Every sheet in format ``fmt`` (as :meth:`Result.encode`), one item per sheet: SVG,
+        DXF and PNG the cuts as laid out (offset by half the kerf the layout was made with),
+        STL, 3MF, STEP and GLB the designed parts placed as on the sheet.  ``options``: those
+        of :meth:`Result.encode` but ``assembled``.  Raises :class:`ValueError` for an unknown
+        format, :class:`~aidl_lang.output.part.MissingDependency` and
+        :class:`~aidl_lang.output.part.OutputError`."""
+        from .output import CUT_FORMATS, FORMATS, Options, encode
+        suffix = "." + fmt.lower().lstrip(".")
+        if suffix not in FORMATS:
+            raise ValueError(f"unknown output format `{fmt}`; use one of "
+                             + ", ".join(sorted(f[1:] for f in FORMATS)))
+        sheets = self._cut if suffix in CUT_FORMATS else self._solid
+        return [encode(s, suffix, Options(**options)) for s in sheets]
+
+    def __repr__(self) -> str:
+        return f"<aidl Layout {self.text}>"
 
 
 _UNITS = re.compile(r"^[ \t]*units[ \t]+([A-Za-z]+)", re.M)
@@ -335,6 +375,31 @@ class Result:
         cutting = suffix in CUT_FORMATS and not options.get("assembled")
         out = for_cutting(self.output, kerf) if cutting else self.output
         return encode(out, suffix, Options(**options))
+
+    def layout(self, sheet: tuple[float, float] = (600.0, 400.0), gap: float = 3.0,
+               rotate: tuple[float, ...] | None = (0.0, 90.0), kerf: float | None = None,
+               nest_time: int = 0) -> Layout:
+        """The cutting layout of the parts (``aidl render --layout sheet``): every solid part
+        placed once, flat, without overlap, on sheets of ``sheet`` = (width, height) mm, at
+        least ``gap`` mm from each other and from the edges, turned only by the angles of
+        ``rotate`` (degrees; None: any angle), by true-shape nesting (the ``layout`` extra);
+        the cuts offset by half the kerf (``kerf`` mm as for :meth:`encode`: None for the
+        program's own).  ``nest_time``: seconds the nesting may spend improving its first
+        packing, added to the program's wall-time budget, which bounds the nesting.  Raises
+        :class:`NotCompiled`, :class:`~aidl_lang.output.part.MissingDependency` (no
+        ``spyrrow``) and :class:`~aidl_lang.output.part.OutputError` (a part larger than the
+        sheet, a kerf larger than a feature, a nesting that would end past the budget)."""
+        from .output import for_cutting
+        from .output.layout import place, plan
+        deadline = self.compiled.deadline
+        if deadline is not None and nest_time:
+            from .limits import Deadline
+            deadline = Deadline(deadline.at + nest_time, deadline.budget)
+        cut = for_cutting(self.output, kerf, deadline)
+        where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
+        flat, dropped = place(cut, where, sheet)
+        solid, _ = place(self.output, where, sheet)
+        return Layout(flat, solid, sheet, dropped)
 
     def to_svg(self, kerf: float | None = None, **options) -> str:
         """The SVG text (mm page; ``kerf`` and ``options`` as for :meth:`encode`)."""

@@ -183,7 +183,7 @@ def test_check_reports_redundant_constraints_as_aidl_check_does(tmp_path):
 
 def test_render_writes_the_file_at_the_asked_width(tmp_path):
     """`width` is the written PNG's width too, not only the returned image's."""
-    doc, png = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
+    doc, [png] = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
     assert doc["written"] == "x.png"
     data = (tmp_path / "x.png").read_bytes()
     assert int.from_bytes(data[16:20], "big") == 300 == int.from_bytes(png[16:20], "big")

@@ -163,3 +163,65 @@ async def test_render_never_writes_through_a_link_inside_the_root(tmp_path):
         r = await session.call_tool("render", {"source": GOOD, "output": "sub/y.svg"})
         assert not r.is_error and r.structured_content["written"] == "sub/y.svg", _text(r)
         assert (tmp_path / "sub" / "y.svg").read_text().lstrip().startswith("<")
+
+
+MIXED = """units mm
+assembly kit {
+    solid plate {
+        thickness 3 mm
+        body = Rectangle(center=(0, 0), width=60, height=40)
+    }
+    solid spacer {
+        thickness 6 mm
+        body = Rectangle(center=(80, 0), width=20, height=20)
+    }
+}
+"""
+
+
+@pytest.mark.asyncio
+async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
+    """`render` has `aidl render`'s cutting-layout options (`layout: "sheet"`, `sheet`, `gap`,
+    `rotate`), `kerf` and `thickness`, with the CLI's meanings (a bare number is mm), and
+    makes a missing output folder inside the root: a kit of 3 mm and 6 mm stock is laid out
+    on two sheets, one file and one picture each."""
+    import re
+
+    import trimesh
+    async with _session(tmp_path) as session:
+        r = await session.call_tool("render", {
+            "source": MIXED, "layout": "sheet", "sheet": "200x150mm", "gap": 2,
+            "rotate": "0", "width": 100, "output": "sheets/cut.svg"})
+        assert not r.is_error, _text(r)
+        lay = r.structured_content["layout"]
+        assert lay["sheets"] == 2 and lay["size"] == [200, 150]
+        assert lay["files"] == ["sheets/cut-1.svg", "sheets/cut-2.svg"]
+        assert lay["text"] == "laid out 2 parts on 2 sheets of 200 x 150 mm"
+        assert r.structured_content["written"] == "sheets/cut-1.svg"
+        assert [c.type for c in r.content] == ["image", "image", "text"]
+        ids = [re.findall(r'id="(part-[^"]+)"', (tmp_path / f).read_text())
+               for f in lay["files"]]
+        assert ids == [["part-kit_plate"], ["part-kit_spacer"]]
+        assert 'width="200mm"' in (tmp_path / "sheets" / "cut-1.svg").read_text()
+
+        # kerf (mm, or a length with its unit): the bore of radius 4 is cut 0.1 mm smaller
+        for kerf in (0.2, "0.2mm", "0.02 cm"):
+            r = await session.call_tool("render", {"source": GOOD, "kerf": kerf,
+                                                   "output": "deep/er/k.dxf"})
+            assert not r.is_error, _text(r)
+            assert "\n 40\n3.9\n" in (tmp_path / "deep" / "er" / "k.dxf").read_text()
+        # thickness: the STL extruded 6 mm instead of the default 3
+        r = await session.call_tool("render", {"source": GOOD, "thickness": "6mm",
+                                               "output": "t.stl"})
+        assert not r.is_error, _text(r)
+        assert trimesh.load(tmp_path / "t.stl").extents[2] == pytest.approx(6)
+
+        for args, said in (({"sheet": "100x100mm"}, "layout"),
+                           ({"layout": "sheet", "assembled": True}, "assembled"),
+                           ({"layout": "sheet", "sheet": "big"}, "sheet"),
+                           ({"kerf": "wide"}, "kerf"), ({"kerf": 11}, "kerf"),
+                           ({"thickness": -1}, "thickness"),
+                           ({"layout": "sheet", "rotate": "sideways"}, "rotate"),
+                           ({"layout": "sheet", "sheet": "20x20mm"}, "does not fit")):
+            r = await session.call_tool("render", {"source": MIXED, "width": 64, **args})
+            assert r.is_error and said in _text(r), (args, _text(r))

@@ -124,8 +124,18 @@ class ImageInfo(TypedDict):
     view: Literal["flat", "assembled"]
 
 
+class LayoutInfo(TypedDict):
+    """The cutting layout (``layout: "sheet"``)."""
+    sheets: Annotated[int, Field(description="the number of sheets (one picture each)")]
+    size: Annotated[list[float], Field(description="[width, height] of a sheet, mm")]
+    files: Annotated[list[str], Field(description="the files written, one per sheet")]
+    text: Annotated[str, Field(description="e.g. laid out 6 parts on 2 sheets of 600 x 400 mm")]
+
+
 class RenderResult(_Compiled):
     parts: NotRequired[list[Part]]
     image: NotRequired[ImageInfo]
     written: NotRequired[Annotated[str, Field(
-        description="the file written, relative to the allowed folder")]]
+        description="the file written (the first sheet's with a layout), relative to the "
+                    "allowed folder")]]
+    layout: NotRequired[LayoutInfo]

@@ -47,8 +47,9 @@ Dof = Annotated[bool, Field(
                 "still free to move.")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file, relative to the allowed folder (never "
-                "outside it, never over the program or through a symbolic link); the format "
-                "by extension: .svg, .dxf (laser cutters), .png, .stl, .3mf, .step, .glb.")]
+                "outside it, never over the program or through a symbolic link; a missing "
+                "folder is made); the format by extension: .svg, .dxf (laser cutters), .png, "
+                ".stl, .3mf, .step, .glb.")]
 Width = Annotated[int, Field(
     description="The PNG's width in pixels (the returned image's and a written .png's).",
     ge=16, le=T.MAX_PNG_WIDTH)]
@@ -59,6 +60,29 @@ Assembled = Annotated[bool, Field(
     description="Picture the assembled product instead of the flat parts: every part "
                 "extruded by its thickness and placed by its `Place`, collisions boxed in red "
                 "(a written .stl/.3mf/.step/.glb/.png is assembled too).")]
+LayoutKind = Annotated[Literal["sheet"] | None, Field(
+    description="\"sheet\": lay every solid part out flat on cutting sheets, as `aidl render "
+                "--layout sheet` (true-shape nesting; the `layout` extra): one picture and one "
+                "output file per sheet (cut-1.svg, cut-2.svg, ... when there are several; one "
+                "material thickness per sheet).")]
+Sheet = Annotated[str | None, Field(
+    description="With layout: the sheet size WIDTHxHEIGHT with a unit, e.g. \"600x400mm\" "
+                "(the default) or \"24x12in\".", max_length=100)]
+Gap = Annotated[str | float | None, Field(
+    description="With layout: the space between parts and to the sheet's edge, a number of "
+                "mm or a string with its unit (\"3mm\", the default).")]
+Rotate = Annotated[str | float | None, Field(
+    description="With layout: the angles in degrees parts may be turned by, e.g. \"0,90\" "
+                "(the default), \"0\" or \"any\".", max_length=200)]
+Kerf = Annotated[str | float | None, Field(
+    description="Offset every cut of SVG, DXF and PNG by half this kerf so parts come out at "
+                "their size: a number of mm or a string with its unit (\"0.15mm\"), above 0 "
+                "and up to 10 mm; default: the program's `kerf`, else none. STL, 3MF, STEP and "
+                "GLB keep the designed size.")]
+Thickness = Annotated[str | float | None, Field(
+    description="The extrusion thickness of STL, 3MF, STEP, GLB and the assembled picture: a "
+                "number of mm or a string with its unit (\"3mm\"); default: the program's "
+                "`thickness`, else 3 mm.")]
 Names = Annotated[list[str] | None, Field(
     description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
                 "root structure's name may be left out); default: every value.")]
@@ -191,22 +215,27 @@ def build_server(root: str, budget: float = 1.0,
     @tool(writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                width: Width = 800, overrides: Overrides = None, style: Style = "preview",
-               budget: Budget = None, assembled: Assembled = False
-               ) -> Annotated[CallToolResult, RenderResult]:
+               budget: Budget = None, assembled: Assembled = False, layout: LayoutKind = None,
+               sheet: Sheet = None, gap: Gap = None, rotate: Rotate = None, kerf: Kerf = None,
+               thickness: Thickness = None) -> Annotated[CallToolResult, RenderResult]:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
         .png, .stl, .3mf, .step, .glb).  `style`: preview (filled) or laser (hairlines).
         `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
-        boxed in red.  When the program has errors there is no picture, only the
-        diagnostics.  The summary is structured content (and the same JSON as text)."""
+        boxed in red.  `layout`: "sheet" lays the parts out on cutting sheets (`sheet`
+        size, `gap`, `rotate`), a picture and a file per sheet; `kerf` offsets the cuts,
+        `thickness` sets the extrusion of 3D outputs (as `aidl render`'s options).  When the
+        program has errors there is no picture, only the diagnostics.  The summary is
+        structured content (and the same JSON as text)."""
         try:
-            doc, png = work.call("render", source, path, output, width, overrides, budget,
-                                 style, assembled, budget=budget)
+            doc, pngs = work.call("render", source, path, output, width, overrides, budget,
+                                  style, assembled, layout, sheet, gap, rotate, kerf,
+                                  thickness, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
-        picture = [Image(data=png, format="png").to_image_content()] if png is not None else []
-        return CallToolResult(content=picture + [TextContent(type="text", text=_json(doc))],
+        pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
+        return CallToolResult(content=pictures + [TextContent(type="text", text=_json(doc))],
                               structured_content=doc)
 
     @tool(reads)

@@ -201,20 +201,73 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
             f"no value matches {' '.join(names or [])}"}
 
 
+def _mm(value, name: str, example: str, zero: bool = False, most: float | None = None
+        ) -> float | None:
+    """A length argument in mm, as ``aidl render`` reads it: a number (mm) or a string with
+    its unit (``"0.15mm"``, ``"0.25 in"``); None when not given.  Raises :class:`Refused`."""
+    if value is None:
+        return None
+    from ..output.layout import parse_length
+    ok = isinstance(value, (str, int, float)) and not isinstance(value, bool)
+    v = parse_length(str(value), zero=zero) if ok else None
+    if v is None or most is not None and v > most:
+        size = "of 0 or more" if zero else "above 0" + (f" up to {most:g} mm" if most else "")
+        raise Refused(f"{name} is a length {size}: a number of mm or a string with its unit, "
+                      f"such as {example}; got {value!r}")
+    return v
+
+
+def _sheet_names(target: Path, n: int) -> list[Path]:
+    """The files of ``n`` sheets, as ``aidl render --layout sheet`` names them: ``cut.svg``
+    for one sheet, else ``cut-1.svg``, ``cut-2.svg``, ..."""
+    if n == 1:
+        return [target]
+    return [target.with_name(f"{target.stem}-{k + 1}{target.suffix}") for k in range(n)]
+
+
 def render(ws: Workspace, source: str | None = None, path: str | None = None,
            output: str | None = None, width: int = 800, overrides: dict | None = None,
-           budget: float | None = None, style: str = "preview",
-           assembled: bool = False) -> tuple[dict, bytes | None]:
-    """Compile and draw: ``(summary, png)``; ``png`` is ``width`` pixels wide (None when the
-    program has errors).  ``output``: also write the drawing there (``.svg``, ``.dxf``,
-    ``.png``, ...; inside the allowed folder, with ``aidl render``'s file safety).
+           budget: float | None = None, style: str = "preview", assembled: bool = False,
+           layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
+           kerf=None, thickness=None) -> tuple[dict, list[bytes]]:
+    """Compile and draw: ``(summary, pictures)``, PNGs ``width`` pixels wide: one of the
+    parts, or one per sheet with a layout; none when the program has errors.  ``output``:
+    also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
+    folder, made if missing, never through a link, never over the program).
     ``assembled``: the picture (and a 3D or PNG ``output``) is the assembled product, every
     part placed by its ``Place``, collisions boxed in red; an SVG or DXF ``output`` is
-    refused."""
+    refused.  The options of ``aidl render``, with its meanings: ``layout="sheet"``: the
+    cutting sheets (:meth:`aidl_lang.api.Result.layout`) of ``sheet`` (``"600x400mm"``),
+    ``gap`` (mm, default 3) and ``rotate`` (``"0,90"``, ``"any"``), one file per sheet
+    (``cut-1.svg``, ... when there are several); ``kerf`` (mm: every cut of SVG, DXF and PNG
+    offset by half of it; default the program's own); ``thickness`` (mm: the extrusion of
+    STL, 3MF, STEP, GLB; default the program's, else 3).  Lengths are numbers of mm or
+    strings with a unit."""
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
         raise Refused("style is `preview` or `laser`")
+    from ..output.layout import parse_rotate, parse_sheet
+    if layout not in (None, "sheet"):
+        raise Refused(f"layout is \"sheet\" (the cutting sheets) or not given; got {layout!r}")
+    if layout is None and (sheet, gap, rotate) != (None, None, None):
+        raise Refused("`sheet`, `gap` and `rotate` are for a cutting layout: add "
+                      "layout=\"sheet\"")
+    if layout and assembled:
+        raise Refused("`assembled` and `layout` do not go together: the assembled product is "
+                      "in 3D, a layout is flat")
+    sheet_mm = parse_sheet(sheet) if isinstance(sheet, str) else (600.0, 400.0)
+    if sheet is not None and (not isinstance(sheet, str) or sheet_mm is None):
+        raise Refused(f"sheet is WIDTHxHEIGHT with a unit, such as \"600x400mm\" or "
+                      f"\"24x12in\"; got {sheet!r}")
+    gap_mm = _mm(gap, "gap", "3 or \"3mm\"", zero=True)
+    try:
+        turns = parse_rotate("0,90" if rotate is None else str(rotate))
+    except ValueError:
+        raise Refused(f"rotate is the angles in degrees parts may be turned by, such as "
+                      f"\"0,90\" or \"0\", or \"any\"; got {rotate!r}") from None
+    kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
+    thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
     if assembled and target is not None:
         from ..output.formats import ASSEMBLED_FORMATS
@@ -224,24 +277,38 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     r = ws.compile(source, path, overrides, budget)
     doc = _summary(ws, r)
     if not r.ok:
-        return doc, None
+        return doc, []
     from ..output import MissingDependency, OutputError
+    from ..output.write import check_output_path
+    prog = None if path is None else str(ws.inside(path))
+    drawn = {"style": style, "width": width, "thickness": thick_mm}
     try:
-        png = (r.encode("png", width=width, assembled=True) if assembled
-               else r.to_png(width=width, style=style))
-        if target is not None:
-            prog = None if path is None else str(ws.inside(path))
-            from ..output.write import check_output_path
-            out = check_output_path(target, prog)
-            data = r.encode(out.suffix, style=style, width=width, assembled=assembled)
-            _write_inside(ws, target, data, prog, output)
-            doc["written"] = ws.relative(out)
+        if layout:
+            sheets = r.layout(sheet_mm, 3.0 if gap_mm is None else gap_mm, turns, kerf_mm)
+            pngs = sheets.encode("png", **drawn)
+            if target is not None:
+                files = _sheet_names(target, sheets.sheets)
+                for f in files:
+                    check_output_path(f, prog)
+                for f, data in zip(files, sheets.encode(target.suffix, **drawn)):
+                    _write_inside(ws, f, data, prog, ws.relative(f))
+                doc["written"] = ws.relative(files[0])
+            doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
+                             "files": [ws.relative(f) for f in files] if target else [],
+                             "text": sheets.text}
+        else:
+            pngs = [r.encode("png", kerf_mm, assembled=assembled, **drawn)]
+            if target is not None:
+                out = check_output_path(target, prog)
+                data = r.encode(out.suffix, kerf_mm, assembled=assembled, **drawn)
+                _write_inside(ws, target, data, prog, output)
+                doc["written"] = ws.relative(out)
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e)) from None
     doc["parts"] = [p.to_json() for p in r.parts]
     doc["image"] = {"format": "png", "width": width,
                     "view": "assembled" if assembled else "flat"}
-    return doc, png
+    return doc, pngs
 
 
 def docs(name: str | None = None) -> str:
@@ -282,7 +349,7 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
     (:func:`aidl_lang.files.write_in_dir`); never over the program file ``program``.  Raises
     ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
     rel = target.relative_to(ws.root)
-    dfd = open_dir_beneath(ws.root, rel.parent)
+    dfd = open_dir_beneath(ws.root, rel.parent, create=True)
     try:
         if program is not None:
             try:
