@@ -124,7 +124,8 @@ async def test_mcp_server_over_stdio(tmp_path):
             r = await session.call_tool("docs", {"name": "SpurGear"})
             assert not r.is_error and _text(r) == find("spur_gear").render()
             assert "bore_hole" in _text(r) and "phase = 0 deg: angle" in _text(r)
-            assert _text(await session.call_tool("docs", {})) == index_text()
+            from aidl_lang.mcp.wording import for_agents
+            assert _text(await session.call_tool("docs", {})) == for_agents(index_text())
             r = await session.call_tool("docs", {"name": "spur_gaer"})
             assert r.is_error and "did you mean `spur_gear`" in _text(r)
             assert {f"aidl://docs/topic/{n}" for n in topics()} | {"aidl://docs/topics"} <= uris

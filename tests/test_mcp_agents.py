@@ -225,3 +225,53 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
                            ({"layout": "sheet", "sheet": "20x20mm"}, "does not fit")):
             r = await session.call_tool("render", {"source": MIXED, "width": 64, **args})
             assert r.is_error and said in _text(r), (args, _text(r))
+
+
+def _said(doc) -> list[str]:
+    """Every message, hint and label of a result's diagnostics, its summary and its freedom
+    text: what an agent reads (the rendered text repeats them, with source lines)."""
+    out = [doc.get("summary", ""), doc.get("freedom", {}).get("text", "")]
+    for d in doc.get("diagnostics", []):
+        out += [d["message"], d["hint"] or "", d["rendered"]]
+        out += [lab["message"] for lab in d["labels"]]
+    return [s for s in out if s]
+
+
+@pytest.mark.asyncio
+async def test_messages_name_tools_and_arguments_not_command_line_flags(tmp_path):
+    """Through MCP, hints say which tool and argument to use (`overrides={...}`, `docs` with
+    name=..., dof=true, `budget`, `sheet`) instead of `--set`, `aidl docs NAME`, `--dof`,
+    `--budget`, `--sheet`; the command line's and the API's wording is unchanged."""
+    import aidl_lang
+    width = "param width = 4\nsolid p { body = Rectangle(center=(0, 0), width=width, height=2) }\n"
+    cases = [  # (arguments, a phrase the MCP wording must hold)
+        ({"source": "solid p { g = spur_gear(teeth=10) }"},
+         'call `docs` with name="spur_gear" for its parameters'),
+        ({"source": "solid p { g = Qzxqzx(1) }"}, "call `docs` with no name for the list of"),
+        ({"source": width, "overrides": {"nope": 1}}, '`overrides={"nope": ...}`'),
+        ({"source": width, "overrides": {"width": "abc"}}, 'write e.g. `overrides={"width": "4"}`'),
+        ({"source": "solid p { for i in range(100000) { c = Circle(center=(0, 0), radius=1) } }"},
+         "raise `budget`"),
+        ({"source": width.replace("height=2)", "height=2)\n  l = Line((0, 0), (1, 1))")},
+         "call `check` with dof=true"),
+    ]
+    async with _session(tmp_path) as session:
+        for args, phrase in cases:
+            r = await session.call_tool("check", args)
+            assert not r.is_error, _text(r)
+            said = _said(r.structured_content)
+            assert any(phrase in s for s in said), (phrase, said)
+            for s in said:
+                assert "--" not in s and "aidl docs" not in s, s
+        r = await session.call_tool("docs", {"name": "spur_gaer"})
+        assert r.is_error and "Call `docs` with no name for the list of every topic" in _text(r)
+        r = await session.call_tool("docs", {})
+        assert _text(r).startswith('Call `docs` with name="NAME" for a topic:')
+        r = await session.call_tool("render", {"source": MIXED, "layout": "sheet",
+                                               "sheet": "30x30mm"})
+        assert r.is_error and "use a larger `sheet`" in _text(r) and "--" not in _text(r)
+    # the command line's (and the API's) own wording
+    r = aidl_lang.compile(source=width, overrides={"nope": 1})
+    assert r.errors[0].message == "`--set nope=...`: the model has no param `nope`"
+    from aidl_lang.reference import lookup_text
+    assert "`aidl docs` lists every topic." in lookup_text("spur_gaer")[0]

@@ -24,6 +24,7 @@ from pydantic import Field
 
 from . import tools as T
 from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
+from .wording import for_agents
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
 # JSON Schema of `tools/list`, and checks calls against it before a tool runs.
@@ -186,7 +187,7 @@ def build_server(root: str, budget: float = 1.0,
         return register
 
     def refused(e: Exception) -> ToolError:
-        return ToolError(str(e))
+        return ToolError(for_agents(str(e)))
 
     # hints for hosts: check, values and explain only read; render writes only when given
     # `output` (never outside the root); nothing reaches the network

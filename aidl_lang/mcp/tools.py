@@ -12,6 +12,7 @@ from pathlib import Path
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular, write_in_dir
+from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
 MAX_SOURCE = 1_000_000    # characters of program text per call
@@ -159,6 +160,9 @@ class Workspace:
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
+    """``{"ok", "diagnostics", "units", "solve"?, "summary"?}`` of ``r``, the diagnostics
+    worded for agents (:mod:`.wording`: tools and arguments, not command-line flags)."""
+    reword_diagnostics(r.diagnostics)
     doc: dict = {"ok": r.ok, "diagnostics": r.diagnostics_json(), "units": r.units}
     s = r.compiled.solve
     if s is not None:
@@ -183,6 +187,7 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     doc = _summary(ws, r)
     if r.ok:
         doc["freedom"] = r.freedom(detail=bool(dof))
+        doc["freedom"]["text"] = for_agents(doc["freedom"]["text"])
         doc["parts"] = [p.to_json() for p in r.parts]
     return doc
 
@@ -317,10 +322,10 @@ def docs(name: str | None = None) -> str:
     unknown name, with the nearest topics."""
     from ..reference import index_text, lookup_text
     if not (name or "").strip():
-        return index_text()
+        return for_agents(index_text())
     text, found = lookup_text(name)
     if not found:
-        raise Refused(text.strip())
+        raise Refused(for_agents(text.strip()))
     return text
 
 
