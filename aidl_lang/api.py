@@ -536,6 +536,7 @@ def _below(name: str, prefix: str) -> bool:
 # ------------------------------------------------------------------ solved values
 def _values(model, scale: float, unit: str) -> list[Value]:
     from .geometry.bbox import numeric_box
+    from .geometry.expr import evaluate
     x = model.x
     xs = model.xs()
     root = model.root
@@ -553,23 +554,46 @@ def _values(model, scale: float, unit: str) -> list[Value]:
     def point(n, px, py):
         return Value(n, "point", (px / scale, py / scale), unit, (px, py))
 
-    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
-    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
-    for s in model.structures:
+    def geometry(g, name: str, ox: float, oy: float) -> list[Value]:
+        """The points and sizes of geometry ``g`` (of a structure whose frame is at ``(ox,
+        oy)``), named ``name.center``, ``name.radius``, ..."""
+        vals = []
+        pts = {pn: (x[p.ix] + ox, x[p.iy] + oy) for pn, p in g.points.items()}
+        if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
+            a, c = pts["bottom_left"], pts["top_right"]
+            pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
+        for pn, (px, py) in pts.items():
+            vals.append(point(f"{name}.{pn}", px, py))
+        for sn, sc in g.scalars.items():
+            v = x[sc.index]
+            if sc.dim == "length":
+                vals.append(length(f"{name}.{sn}", v))
+            elif sc.dim == "angle":
+                vals.append(Value(f"{name}.{sn}", "angle", math.degrees(v), "deg", v))
+            else:
+                vals.append(Value(f"{name}.{sn}", "number", v, "", v))
+        return vals
+
+    def structure(s, base: str) -> list[Value]:
+        """The values of structure ``s`` named from ``base`` (its path, or the name it also
+        has in a pattern's list: ``holes[0]``): origin, bbox, named geometry, scope."""
+        vals = []
         ox = oy = 0.0
         t = s
         while t is not None:
             ox += x[t.fx]
             oy += x[t.fy]
             t = t.parent
-        base = name_of(s)
         prefix = base + "." if base else ""
-        out.append(point(prefix + "origin", ox, oy))
+        # a copy's frame is held on its parent's: its origin is where the original's went
+        origin = (ox, oy) if s.copy_origin is None else \
+            tuple(evaluate(e, x) for e in s.copy_origin)
+        vals.append(point(prefix + "origin", *origin))
         box = numeric_box(s, None, xs)
         if box is not None:
             l, r, b, tp = (float(v) for v in box)
-            out.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
-                             unit, (l, b, r, tp)))
+            vals.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
+                              unit, (l, b, r, tp)))
         counts: dict[str, int] = {}
         for g in s.geometry:
             if g.name:
@@ -582,24 +606,30 @@ def _values(model, scale: float, unit: str) -> list[Value]:
             if counts[g.name] > 1:
                 gname = f"{g.name}[{seen.get(g.name, 0)}]"
                 seen[g.name] = seen.get(g.name, 0) + 1
-            gp = prefix + gname
-            pts = {}
-            for pn, p in g.points.items():
-                pts[pn] = (x[p.ix] + ox, x[p.iy] + oy)
-            if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
-                a, c = pts["bottom_left"], pts["top_right"]
-                pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
-            for pn, (px, py) in pts.items():
-                out.append(point(f"{gp}.{pn}", px, py))
-            for sn, sc in g.scalars.items():
-                v = x[sc.index]
-                if sc.dim == "length":
-                    out.append(length(f"{gp}.{sn}", v))
-                elif sc.dim == "angle":
-                    out.append(Value(f"{gp}.{sn}", "angle", math.degrees(v), "deg", v))
-                else:
-                    out.append(Value(f"{gp}.{sn}", "number", v, "", v))
-        out.extend(_named_quantities(s.scope, prefix, x, (ox, oy), scale, unit))
+            if g.pattern_original is not None and gname.endswith("[1]"):
+                # `dots = LinearPattern(c, ...)`: `dots[0]` is the original `c`
+                vals += geometry(g.pattern_original, prefix + gname[:-3] + "[0]", ox, oy)
+            vals += geometry(g, prefix + gname, ox, oy)
+        vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
+        return vals
+
+    def subtree(s):
+        yield s
+        for ch in s.children.values():
+            yield from subtree(ch)
+
+    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
+    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
+    for s in model.structures:
+        base = name_of(s)
+        first = s.pattern_original
+        if first is not None and base.endswith("[1]"):
+            # `holes = LinearPattern(bolt, ...)`: `holes[0]` is the original `bolt`, listed
+            # before the copies under that name too (its children with it)
+            alias, own = base[:-3] + "[0]", name_of(first)
+            for t in subtree(first):
+                out += structure(t, alias + name_of(t)[len(own):])
+        out += structure(s, base)
     return out
 
 

@@ -238,7 +238,7 @@ def test_check_values_of_pattern_copies(tmp_path):
         if m:
             got[m.group(1)] = (float(m.group(2)), float(m.group(3)))
     assert got == dict(zip(["corner", "corners[1]", "corners[2]", "corners[3]"],
-                           CORNER_CENTRES))
+                           CORNER_CENTRES)) | {"corners[0]": CORNER_CENTRES[0]}
     assert "plate.corners[3].c.radius = 3.000 mm" in out.stdout.splitlines()
     js = json.loads(aidl("check", f, "--json", "--values", "corners").stdout)
     vals = {v["name"]: v["mm"] for v in js["values"]}

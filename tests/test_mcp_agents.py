@@ -275,3 +275,44 @@ async def test_messages_name_tools_and_arguments_not_command_line_flags(tmp_path
     assert r.errors[0].message == "`--set nope=...`: the model has no param `nope`"
     from aidl_lang.reference import lookup_text
     assert "`aidl docs` lists every topic." in lookup_text("spur_gaer")[0]
+
+
+@pytest.mark.asyncio
+async def test_values_list_every_copy_of_a_pattern_at_its_real_origin(tmp_path):
+    """examples/bracket.aidl: `holes = LinearPattern(bolt, 4, (pitch, 0))` lists holes[0]
+    (the original, `bolt`) to holes[3], and the unnamed `CircularPattern(first, 8, ...)`
+    first_pattern[0] to [7]; each copy's `origin` is where the original's origin went
+    (moved by k x 20 mm, turned by k x 45 degrees about the plate's centre), not (0, 0); a
+    shape's pattern (`dots = LinearPattern(c, 3, ...)`) lists dots[0] too."""
+    import math
+
+    from conftest import ROOT
+    (tmp_path / "bracket.aidl").write_text((ROOT / "examples" / "bracket.aidl").read_text())
+    async with _session(tmp_path) as session:
+        async def values(*names, source=None):
+            where = {"source": source} if source else {"path": "bracket.aidl"}
+            r = await session.call_tool("values", {**where, "names": list(names)})
+            assert not r.is_error and r.structured_content["ok"], _text(r)
+            return {v["name"]: v["value"] for v in r.structured_content["values"]}
+
+        got = await values("holes", "bolt", "first", "first_pattern", "plate.center")
+        bolt = got["bracket.bolt.origin"]
+        for k in range(4):
+            assert got[f"bracket.holes[{k}].c.center"] == pytest.approx([-36 + 20 * k, 12])
+            assert got[f"bracket.holes[{k}].origin"] == pytest.approx([bolt[0] + 20 * k, bolt[1]])
+        assert got["bracket.holes[0].c.radius"] == got["bracket.bolt.c.radius"] == 3
+        cx, cy = got["bracket.plate.center"]
+        fx, fy = got["bracket.first.origin"]
+        for k in range(8):
+            a = math.radians(45 * k)
+            turned = [cx + (fx - cx) * math.cos(a) - (fy - cy) * math.sin(a),
+                      cy + (fx - cx) * math.sin(a) + (fy - cy) * math.cos(a)]
+            assert got[f"bracket.first_pattern[{k}].origin"] == pytest.approx(turned, abs=1e-9)
+        assert got["bracket.first_pattern[0].v.center"] == got["bracket.first.v.center"]
+
+        dots = await values("holes", source=(
+            "units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=80, height=20)\n"
+            "    hole holes {\n        c = Circle(center=(-20, 0), radius=2)\n"
+            "        dots = LinearPattern(c, 3, (10, 0))\n    }\n}\n"))
+        assert [dots[f"plate.holes.dots[{k}].center"] for k in range(3)] == [
+            [-20, 0], [-10, 0], [0, 0]]

@@ -244,8 +244,10 @@ def build_server(root: str, budget: float = 1.0,
                overrides: Overrides = None, budget: Budget = None) -> ValuesResult:
         """The solved values of named entities, in the file's units: each structure's frame
         origin and bounding box, each named geometry's points (center, start, end, corners)
-        and sizes (radius, width, height), a pattern's copies' too (corners[1].c.center).  `names` filters by dotted prefix (e.g.
-        ["plate.bore", "plate.body.width"]); the root structure's name may be left out.
+        and sizes (radius, width, height), every copy of a pattern too, from the original
+        (corners[0], corners[1].c.center, each at its real origin).  `names` filters by
+        dotted prefix (e.g. ["plate.bore", "plate.body.width"]); the root structure's name
+        may be left out.
         Returns (structured content, and the same JSON as text): ok, units, values [{name,
         kind, value, unit, mm}] and text (one `name = value unit` line each)."""
         try:
