@@ -316,3 +316,22 @@ async def test_values_list_every_copy_of_a_pattern_at_its_real_origin(tmp_path):
             "        dots = LinearPattern(c, 3, (10, 0))\n    }\n}\n"))
         assert [dots[f"plate.holes.dots[{k}].center"] for k in range(3)] == [
             [-20, 0], [-10, 0], [0, 0]]
+
+
+@pytest.mark.asyncio
+async def test_a_path_that_is_not_an_aidl_file_is_refused_in_one_clear_error(tmp_path):
+    """`path` takes a program: a DXF is refused once, saying a program imports it with
+    Drawing2D, instead of being parsed as AIDL (some 20 E0002 errors)."""
+    import shutil
+
+    from conftest import ROOT
+    shutil.copyfile(ROOT / "examples" / "parts" / "pcb_board.dxf", tmp_path / "board.dxf")
+    (tmp_path / "notes.txt").write_text("solid p {}\n")
+    async with _session(tmp_path) as session:
+        for tool in ("check", "render", "values", "describe"):
+            r = await session.call_tool(tool, {"path": "board.dxf"})
+            assert r.is_error, (tool, _text(r))
+            assert "`board.dxf` is not an .aidl file" in _text(r)
+            assert 'Drawing2D("board.dxf")' in _text(r) and "E0002" not in _text(r)
+        r = await session.call_tool("check", {"path": "notes.txt"})
+        assert r.is_error and "`notes.txt` is not an .aidl file" in _text(r)

@@ -33,7 +33,8 @@ Source = Annotated[str | None, Field(
     max_length=T.MAX_SOURCE)]
 ProgramPath = Annotated[str | None, Field(
     description="A .aidl file, relative to the server's allowed folder (nothing outside it "
-                "is read). Give this or `source`, not both.")]
+                "is read; another kind of file is refused: a program imports a DXF or SVG "
+                "drawing with Drawing2D). Give this or `source`, not both.")]
 Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
     description="Param values: param name -> value, e.g. {\"width\": \"40 mm\"} (a string, "
                 "read as the program reads a value), {\"width\": 40} (a bare number, in the "

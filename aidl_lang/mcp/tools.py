@@ -143,8 +143,16 @@ class Workspace:
         inside the root, then opened once from the root's folder without following any link
         (:func:`aidl_lang.files.open_beneath`: a file or folder swapped for a link after the
         check is refused, never read), a regular file of at most :data:`MAX_SOURCE` bytes of
-        UTF-8 text.  Raises :class:`Refused`."""
+        UTF-8 text, named ``.aidl`` (a drawing or any other file is refused, not parsed as
+        AIDL).  Raises :class:`Refused`."""
         real = self.inside(path, must_exist=True)
+        suffix = Path(path).suffix.lower()
+        if suffix != ".aidl":
+            why = f"`{path}` is not an .aidl file: `path` takes an AIDL program"
+            if suffix in (".dxf", ".svg"):
+                why += (f"; a program imports a drawing with Drawing2D(\"{path}\") "
+                        "(DXF and SVG, docs/import.md)")
+            raise Refused(why)
         try:
             fd = open_beneath(self.root, real.relative_to(self.root))
             try:
