@@ -335,3 +335,33 @@ async def test_a_path_that_is_not_an_aidl_file_is_refused_in_one_clear_error(tmp
             assert 'Drawing2D("board.dxf")' in _text(r) and "E0002" not in _text(r)
         r = await session.call_tool("check", {"path": "notes.txt"})
         assert r.is_error and "`notes.txt` is not an .aidl file" in _text(r)
+
+
+@pytest.mark.asyncio
+async def test_the_prompt_argument_is_described_and_a_bad_one_is_a_clean_error(tmp_path):
+    """The `aidl` prompt's `request` has a description; an unknown argument is an MCP error
+    (invalid params) naming it and the accepted one, with no traceback on the server's
+    stderr; a good call still works after it."""
+    import tempfile
+
+    from mcp.shared.exceptions import MCPError
+    with tempfile.TemporaryFile("w+") as err:
+        async with stdio_client(_server(tmp_path), errlog=err) as (read, write):
+            async with ClientSession(read, write) as session:
+                await session.initialize()
+                [prompt] = (await session.list_prompts()).prompts
+                [arg] = prompt.arguments
+                assert arg.name == "request" and not arg.required
+                assert "part to design" in arg.description
+                for bad in ({"req": "a washer"}, {"request": "a washer", "style": "x"}):
+                    with pytest.raises(MCPError) as e:
+                        await session.get_prompt("aidl", bad)
+                    assert e.value.code == -32602, e.value
+                    unknown = next(k for k in bad if k != "request")
+                    assert f"unknown argument `{unknown}`" in e.value.message
+                    assert "takes: request" in e.value.message
+                got = await session.get_prompt("aidl", {"request": "a washer"})
+                assert got.messages[0].content.text.endswith("Design this part: a washer\n")
+        err.seek(0)
+        logged = err.read()
+    assert "Traceback" not in logged and "Error rendering prompt" not in logged, logged

@@ -19,7 +19,8 @@ from typing import Annotated, Literal
 from mcp.server.mcpserver import Image, MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
 from mcp.server.mcpserver.tools import Tool
-from mcp_types import CallToolResult, TextContent, ToolAnnotations
+from mcp.shared.exceptions import MCPError
+from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
 from . import tools as T
@@ -96,6 +97,11 @@ TopicName = Annotated[str | None, Field(
                 "or style (Circle, SpurGear, spur-gear, assert); none: the list of topics.",
     max_length=200)]
 
+Request = Annotated[str | None, Field(
+    description="The part to design, in words (e.g. \"a 40 mm washer with a 10 mm hole\"); "
+                "appended to the system prompt as `Design this part: ...`. Optional.")]
+MAX_REQUEST = 10_000      # characters of a prompt's request
+
 INSTRUCTIONS = """AIDL is a text language for 2D CAD parts (laser cutting, CNC): named \
 structures (solid, hole, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
 constraints that a solver satisfies. Read aidl://prompt (also offered as the prompt `aidl`) \
@@ -148,7 +154,9 @@ class _Server(MCPServer):
     """The SDK's server, holding each tool call to its input schema's names, which the SDK
     leaves to the tools (it drops an unknown argument silently): an unknown argument, and both
     or neither of ``source`` and ``path``, are tool errors saying so
-    (:func:`.tools.check_arguments`)."""
+    (:func:`.tools.check_arguments`).  A prompt's arguments likewise: an unknown one, or one
+    that is not text, is an invalid-params error saying so (the SDK's own failure there is a
+    bare "Error rendering prompt" with a traceback on stderr)."""
 
     def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
         super().__init__(*args, tools=tools, **kwargs)
@@ -161,6 +169,20 @@ class _Server(MCPServer):
             except T.Refused as e:
                 raise ToolError(str(e)) from None
         return await super().call_tool(name, arguments, context)
+
+    async def get_prompt(self, name: str, arguments: dict | None = None, context=None):
+        prompts = {p.name: p for p in await self.list_prompts()}
+        if name in prompts:
+            accepted = [a.name for a in prompts[name].arguments or []]
+            try:
+                T.check_arguments(name, arguments or {}, accepted)
+            except T.Refused as e:
+                raise MCPError(INVALID_PARAMS, str(e)) from None
+            for k, v in (arguments or {}).items():
+                if not isinstance(v, str) or len(v) > MAX_REQUEST:
+                    raise MCPError(INVALID_PARAMS, f"`{k}` is text of at most {MAX_REQUEST} "
+                                                   "characters")
+        return await super().get_prompt(name, arguments, context)
 
 
 def build_server(root: str, budget: float = 1.0,
@@ -313,7 +335,7 @@ def build_server(root: str, budget: float = 1.0,
                        description="The AIDL system prompt (`aidl prompt`): the language, its "
                                    "vocabulary with signatures, the standard library and example "
                                    "programs; `request`: a part to design, appended")
-        def aidl_prompt(request: str | None = None) -> str:
+        def aidl_prompt(request: Request = None) -> str:
             text = prompt()
             if request and request.strip():
                 text += f"\nDesign this part: {request.strip()}\n"
