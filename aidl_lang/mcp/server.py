@@ -2,7 +2,10 @@
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
-``values``, ``describe`` (the final part in words), ``explain``, ``docs``.  Resources:
+``values``, ``describe`` (the final part in words), ``explain``, ``docs``.  The compiling four
+run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
+of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
+and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  Resources:
 ``aidl://docs/language`` (the language reference), ``aidl://docs/api``, ``aidl://docs/topics``
 and ``aidl://docs/topic/NAME`` (the topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl
 prompt`` text, when the caller provides it), ``aidl://stdlib/NAME.aidl`` and

@@ -2,7 +2,8 @@
 that the server (:mod:`.server`) exposes.  Each takes a :class:`Workspace` (the allowed
 folder) and returns JSON-ready dicts, or raises :class:`Refused` for a request the server must
 turn down (a path outside the folder, both or neither of ``source``/``path``, a budget out of
-range).  A mistake in the *program* is never an exception: it is in ``diagnostics``.
+range, a file that is not a program, an output through a link).  A mistake in the *program*
+is never an exception: it is in ``diagnostics``, worded for agents (:mod:`.wording`).
 """
 from __future__ import annotations
 
