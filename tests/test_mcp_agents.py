@@ -191,7 +191,7 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
     async with _session(tmp_path) as session:
         r = await session.call_tool("render", {
             "source": MIXED, "layout": "sheet", "sheet": "200x150mm", "gap": 2,
-            "rotate": "0", "width": 100, "output": "sheets/cut.svg"})
+            "rotate": 0, "width": 100, "output": "sheets/cut.svg"})
         assert not r.is_error, _text(r)
         lay = r.structured_content["layout"]
         assert lay["sheets"] == 2 and lay["size"] == [200, 150]

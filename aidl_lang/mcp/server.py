@@ -77,9 +77,9 @@ Sheet = Annotated[str | None, Field(
 Gap = Annotated[str | float | None, Field(
     description="With layout: the space between parts and to the sheet's edge, a number of "
                 "mm or a string with its unit (\"3mm\", the default).")]
-Rotate = Annotated[str | float | None, Field(
+Rotate = Annotated[Annotated[str, Field(max_length=200)] | float | None, Field(
     description="With layout: the angles in degrees parts may be turned by, e.g. \"0,90\" "
-                "(the default), \"0\" or \"any\".", max_length=200)]
+                "(the default), 0 or \"any\".")]
 Kerf = Annotated[str | float | None, Field(
     description="Offset every cut of SVG, DXF and PNG by half this kerf so parts come out at "
                 "their size: a number of mm or a string with its unit (\"0.15mm\"), above 0 "
