@@ -35,7 +35,7 @@ from typing import Literal
 from .diagnostics import Diagnostic, DiagnosticSink
 from .limits import DEFAULT_BUDGET, Budget
 
-__all__ = ["compile", "Result", "Value", "PartInfo", "NotCompiled", "WriteError"]
+__all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError"]
 
 
 def __getattr__(name: str):
@@ -102,6 +102,46 @@ class PartInfo:
     def to_json(self) -> dict:
         return {"name": self.name, "kind": self.kind, "bbox": list(self.bbox),
                 "area": self.area, "holes": self.holes, "loops": self.loops}
+
+
+class Layout:
+    """A cutting layout (:meth:`Result.layout`, ``aidl render --layout sheet``): every solid
+    part placed once, flat, without overlap, on sheets of ``size`` = (width, height) mm, one
+    material thickness per sheet.
+
+    ``sheets``: the number of sheets; ``parts``: the number of parts placed; ``dropped``: the
+    engraving strokes outside every part, left out; ``text``: ``laid out 6 parts on 2 sheets
+    of 200 x 150 mm``.  :meth:`encode` gives each sheet's file."""
+
+    def __init__(self, cut: list, solid: list, size: tuple[float, float], dropped: int) -> None:
+        self._cut, self._solid = cut, solid
+        self.size = (float(size[0]), float(size[1]))
+        self.sheets = len(cut)
+        self.parts = sum(len(s.parts) for s in cut)
+        self.dropped = dropped
+
+    @property
+    def text(self) -> str:
+        return (f"laid out {self.parts} parts on {self.sheets} "
+                f"sheet{'s' if self.sheets != 1 else ''} of {self.size[0]:g} x {self.size[1]:g} mm")
+
+    def encode(self, fmt: str, **options) -> list[bytes]:
+        """Every sheet in format ``fmt`` (as :meth:`Result.encode`), one item per sheet: SVG,
+        DXF and PNG the cuts as laid out (offset by half the kerf the layout was made with),
+        STL, 3MF, STEP and GLB the designed parts placed as on the sheet.  ``options``: those
+        of :meth:`Result.encode` but ``assembled``.  Raises :class:`ValueError` for an unknown
+        format, :class:`~aidl_lang.output.part.MissingDependency` and
+        :class:`~aidl_lang.output.part.OutputError`."""
+        from .output import CUT_FORMATS, FORMATS, Options, encode
+        suffix = "." + fmt.lower().lstrip(".")
+        if suffix not in FORMATS:
+            raise ValueError(f"unknown output format `{fmt}`; use one of "
+                             + ", ".join(sorted(f[1:] for f in FORMATS)))
+        sheets = self._cut if suffix in CUT_FORMATS else self._solid
+        return [encode(s, suffix, Options(**options)) for s in sheets]
+
+    def __repr__(self) -> str:
+        return f"<aidl Layout {self.text}>"
 
 
 _UNITS = re.compile(r"^[ \t]*units[ \t]+([A-Za-z]+)", re.M)
@@ -336,6 +376,31 @@ class Result:
         out = for_cutting(self.output, kerf) if cutting else self.output
         return encode(out, suffix, Options(**options))
 
+    def layout(self, sheet: tuple[float, float] = (600.0, 400.0), gap: float = 3.0,
+               rotate: tuple[float, ...] | None = (0.0, 90.0), kerf: float | None = None,
+               nest_time: int = 0) -> Layout:
+        """The cutting layout of the parts (``aidl render --layout sheet``): every solid part
+        placed once, flat, without overlap, on sheets of ``sheet`` = (width, height) mm, at
+        least ``gap`` mm from each other and from the edges, turned only by the angles of
+        ``rotate`` (degrees; None: any angle), by true-shape nesting (the ``layout`` extra);
+        the cuts offset by half the kerf (``kerf`` mm as for :meth:`encode`: None for the
+        program's own).  ``nest_time``: seconds the nesting may spend improving its first
+        packing, added to the program's wall-time budget, which bounds the nesting.  Raises
+        :class:`NotCompiled`, :class:`~aidl_lang.output.part.MissingDependency` (no
+        ``spyrrow``) and :class:`~aidl_lang.output.part.OutputError` (a part larger than the
+        sheet, a kerf larger than a feature, a nesting that would end past the budget)."""
+        from .output import for_cutting
+        from .output.layout import place, plan
+        deadline = self.compiled.deadline
+        if deadline is not None and nest_time:
+            from .limits import Deadline
+            deadline = Deadline(deadline.at + nest_time, deadline.budget)
+        cut = for_cutting(self.output, kerf, deadline)
+        where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
+        flat, dropped = place(cut, where, sheet)
+        solid, _ = place(self.output, where, sheet)
+        return Layout(flat, solid, sheet, dropped)
+
     def to_svg(self, kerf: float | None = None, **options) -> str:
         """The SVG text (mm page; ``kerf`` and ``options`` as for :meth:`encode`)."""
         return self.encode("svg", kerf, **options).decode()
@@ -473,6 +538,7 @@ def _below(name: str, prefix: str) -> bool:
 # ------------------------------------------------------------------ solved values
 def _values(model, scale: float, unit: str) -> list[Value]:
     from .geometry.bbox import numeric_box
+    from .geometry.expr import evaluate
     x = model.x
     xs = model.xs()
     root = model.root
@@ -490,23 +556,46 @@ def _values(model, scale: float, unit: str) -> list[Value]:
     def point(n, px, py):
         return Value(n, "point", (px / scale, py / scale), unit, (px, py))
 
-    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
-    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
-    for s in model.structures:
+    def geometry(g, name: str, ox: float, oy: float) -> list[Value]:
+        """The points and sizes of geometry ``g`` (of a structure whose frame is at ``(ox,
+        oy)``), named ``name.center``, ``name.radius``, ..."""
+        vals = []
+        pts = {pn: (x[p.ix] + ox, x[p.iy] + oy) for pn, p in g.points.items()}
+        if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
+            a, c = pts["bottom_left"], pts["top_right"]
+            pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
+        for pn, (px, py) in pts.items():
+            vals.append(point(f"{name}.{pn}", px, py))
+        for sn, sc in g.scalars.items():
+            v = x[sc.index]
+            if sc.dim == "length":
+                vals.append(length(f"{name}.{sn}", v))
+            elif sc.dim == "angle":
+                vals.append(Value(f"{name}.{sn}", "angle", math.degrees(v), "deg", v))
+            else:
+                vals.append(Value(f"{name}.{sn}", "number", v, "", v))
+        return vals
+
+    def structure(s, base: str) -> list[Value]:
+        """The values of structure ``s`` named from ``base`` (its path, or the name it also
+        has in a pattern's list: ``holes[0]``): origin, bbox, named geometry, scope."""
+        vals = []
         ox = oy = 0.0
         t = s
         while t is not None:
             ox += x[t.fx]
             oy += x[t.fy]
             t = t.parent
-        base = name_of(s)
         prefix = base + "." if base else ""
-        out.append(point(prefix + "origin", ox, oy))
+        # a copy's frame is held on its parent's: its origin is where the original's went
+        origin = (ox, oy) if s.copy_origin is None else \
+            tuple(evaluate(e, x) for e in s.copy_origin)
+        vals.append(point(prefix + "origin", *origin))
         box = numeric_box(s, None, xs)
         if box is not None:
             l, r, b, tp = (float(v) for v in box)
-            out.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
-                             unit, (l, b, r, tp)))
+            vals.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
+                              unit, (l, b, r, tp)))
         counts: dict[str, int] = {}
         for g in s.geometry:
             if g.name:
@@ -519,24 +608,30 @@ def _values(model, scale: float, unit: str) -> list[Value]:
             if counts[g.name] > 1:
                 gname = f"{g.name}[{seen.get(g.name, 0)}]"
                 seen[g.name] = seen.get(g.name, 0) + 1
-            gp = prefix + gname
-            pts = {}
-            for pn, p in g.points.items():
-                pts[pn] = (x[p.ix] + ox, x[p.iy] + oy)
-            if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
-                a, c = pts["bottom_left"], pts["top_right"]
-                pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
-            for pn, (px, py) in pts.items():
-                out.append(point(f"{gp}.{pn}", px, py))
-            for sn, sc in g.scalars.items():
-                v = x[sc.index]
-                if sc.dim == "length":
-                    out.append(length(f"{gp}.{sn}", v))
-                elif sc.dim == "angle":
-                    out.append(Value(f"{gp}.{sn}", "angle", math.degrees(v), "deg", v))
-                else:
-                    out.append(Value(f"{gp}.{sn}", "number", v, "", v))
-        out.extend(_named_quantities(s.scope, prefix, x, (ox, oy), scale, unit))
+            if g.pattern_original is not None and gname.endswith("[1]"):
+                # `dots = LinearPattern(c, ...)`: `dots[0]` is the original `c`
+                vals += geometry(g.pattern_original, prefix + gname[:-3] + "[0]", ox, oy)
+            vals += geometry(g, prefix + gname, ox, oy)
+        vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
+        return vals
+
+    def subtree(s):
+        yield s
+        for ch in s.children.values():
+            yield from subtree(ch)
+
+    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
+    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
+    for s in model.structures:
+        base = name_of(s)
+        first = s.pattern_original
+        if first is not None and base.endswith("[1]"):
+            # `holes = LinearPattern(bolt, ...)`: `holes[0]` is the original `bolt`, listed
+            # before the copies under that name too (its children with it)
+            alias, own = base[:-3] + "[0]", name_of(first)
+            for t in subtree(first):
+                out += structure(t, alias + name_of(t)[len(own):])
+        out += structure(s, base)
     return out
 
 

@@ -9,7 +9,8 @@ close it by opening once and checking what was opened:
 * :func:`open_dir_beneath` walks a relative path from a trusted folder one component at a
   time, each opened relative to the previous folder's descriptor with ``O_NOFOLLOW |
   O_DIRECTORY``: a component that is (or has just become) a link, or is not a folder, fails;
-  nothing outside the folder is ever reached.
+  nothing outside the folder is ever reached (asked to, it makes the missing folders the
+  same way).
 * :func:`open_beneath` does the same and opens the last component with ``O_NOFOLLOW``.
 * :func:`read_regular` reads from a descriptor only when ``fstat`` says it is a regular file
   of at most ``limit`` bytes; :func:`read_file` opens a path non-blocking first (a FIFO or a
@@ -70,15 +71,22 @@ def _why(e: OSError, shown: str, dfd: int | None = None, name: str = "") -> File
     return FileRefused(f"cannot open `{shown}`: {e.strerror or e}")
 
 
-def open_dir_beneath(root: str | os.PathLike, rel: str | os.PathLike = "") -> int:
+def open_dir_beneath(root: str | os.PathLike, rel: str | os.PathLike = "",
+                     create: bool = False) -> int:
     """A descriptor of the folder ``root/rel``, reached from ``root`` (trusted, followed as
-    given) one component of ``rel`` at a time without following a link.  The caller closes
-    it.  Raises :class:`FileRefused` (a link, not a folder, missing, ``..``)."""
+    given) one component of ``rel`` at a time without following a link; with ``create``, a
+    missing folder is made (in the folder reached so far, ``0777 & ~umask``).  The caller
+    closes it.  Raises :class:`FileRefused` (a link, not a folder, missing, ``..``)."""
     parts = _parts(rel)
     fd = os.open(os.fspath(root), os.O_RDONLY | DIRECTORY | CLOEXEC)
     try:
         for i, part in enumerate(parts):
             try:
+                if create:
+                    try:
+                        os.mkdir(part, 0o777, dir_fd=fd)
+                    except FileExistsError:
+                        pass
                 nxt = os.open(part, os.O_RDONLY | DIRECTORY | NOFOLLOW | CLOEXEC, dir_fd=fd)
             except OSError as e:
                 raise _why(e, os.path.join(*parts[:i + 1]), fd, part) from None

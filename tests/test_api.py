@@ -238,7 +238,7 @@ def test_check_values_of_pattern_copies(tmp_path):
         if m:
             got[m.group(1)] = (float(m.group(2)), float(m.group(3)))
     assert got == dict(zip(["corner", "corners[1]", "corners[2]", "corners[3]"],
-                           CORNER_CENTRES))
+                           CORNER_CENTRES)) | {"corners[0]": CORNER_CENTRES[0]}
     assert "plate.corners[3].c.radius = 3.000 mm" in out.stdout.splitlines()
     js = json.loads(aidl("check", f, "--json", "--values", "corners").stdout)
     vals = {v["name"]: v["mm"] for v in js["values"]}
@@ -265,8 +265,8 @@ def test_the_facade_holds_only_the_promised_api():
     for gone in ("stage", "write_atomic", "planted_link", "check_output_path", "Param",
                  "declared_params", "default_span"):
         assert gone not in vars(api), gone
-    assert set(api.__all__) == {"compile", "Result", "Value", "PartInfo", "NotCompiled",
-                                "WriteError"} == set(aidl_lang.__all__)
+    assert set(api.__all__) == {"compile", "Result", "Value", "PartInfo", "Layout",
+                                "NotCompiled", "WriteError"} == set(aidl_lang.__all__)
     assert api.WriteError is write.WriteError is aidl_lang.WriteError is WriteError
     assert issubclass(WriteError, OSError)
     assert callable(params.declared_params) and callable(write.check_output_path)

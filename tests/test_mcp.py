@@ -124,7 +124,8 @@ async def test_mcp_server_over_stdio(tmp_path):
             r = await session.call_tool("docs", {"name": "SpurGear"})
             assert not r.is_error and _text(r) == find("spur_gear").render()
             assert "bore_hole" in _text(r) and "phase = 0 deg: angle" in _text(r)
-            assert _text(await session.call_tool("docs", {})) == index_text()
+            from aidl_lang.mcp.wording import for_agents
+            assert _text(await session.call_tool("docs", {})) == for_agents(index_text())
             r = await session.call_tool("docs", {"name": "spur_gaer"})
             assert r.is_error and "did you mean `spur_gear`" in _text(r)
             assert {f"aidl://docs/topic/{n}" for n in topics()} | {"aidl://docs/topics"} <= uris
@@ -183,7 +184,7 @@ def test_check_reports_redundant_constraints_as_aidl_check_does(tmp_path):
 
 def test_render_writes_the_file_at_the_asked_width(tmp_path):
     """`width` is the written PNG's width too, not only the returned image's."""
-    doc, png = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
+    doc, [png] = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
     assert doc["written"] == "x.png"
     data = (tmp_path / "x.png").read_bytes()
     assert int.from_bytes(data[16:20], "big") == 300 == int.from_bytes(png[16:20], "big")

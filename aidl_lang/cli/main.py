@@ -437,19 +437,6 @@ def _usage(msg: str) -> int:
     return 2
 
 
-def _length_mm(text: str, zero: bool = False) -> float | None:
-    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm; None when it is not a positive length (or
-    0 with ``zero``) up to the model extent (1e6 mm)."""
-    import re
-    m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
-    if not m:
-        return None
-    v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
-        (m.group(2) or "mm").lower()]
-    from ..limits import MAX_EXTENT
-    return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
-
-
 def _materials(sheets) -> str:
     """`` (3 mm: sheets 1-2; 6 mm: sheet 3)`` when the sheets hold more than one material
     thickness (each sheet holds one, :func:`aidl_lang.output.layout.plan`), else ``""``."""
@@ -464,17 +451,6 @@ def _materials(sheets) -> str:
         which = f"sheet {js[0]}" if len(js) == 1 else f"sheets {js[0]}-{js[-1]}"
         said.append(f"{'no thickness' if t is None else f'{t:g} mm'}: {which}")
     return " (" + "; ".join(said) + ")"
-
-
-def _sheet_mm(text: str) -> tuple[float, float] | None:
-    """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
-    import re
-    m = re.fullmatch(r"\s*([0-9.e+-]+)\s*[x×*]\s*([0-9.e+-]+)\s*(mm|cm|m|in)?\s*", text, re.I)
-    if not m:
-        return None
-    unit = m.group(3) or "mm"
-    w, h = _length_mm(m.group(1) + unit), _length_mm(m.group(2) + unit)
-    return None if w is None or h is None else (w, h)
 
 
 def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
@@ -652,6 +628,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 def cmd_render(args) -> int:
     from ..pipeline import compile_source, report_out_of_budget
     from ..output import MissingDependency, Options, OutputError, build, encode
+    from ..output.layout import parse_length, parse_rotate, parse_sheet
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -661,7 +638,7 @@ def cmd_render(args) -> int:
         return _usage(f"--show takes {', '.join(SHOW)}; got `{args.show}`")
     thickness = None
     if args.thickness is not None:
-        thickness = _length_mm(args.thickness)
+        thickness = parse_length(args.thickness)
         if thickness is None:
             return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
                           f"`{args.thickness}`")
@@ -670,18 +647,17 @@ def cmd_render(args) -> int:
         return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
     kerf = None
     if args.kerf is not None:
-        kerf = _length_mm(args.kerf)
+        kerf = parse_length(args.kerf)
         if kerf is None or kerf > 10:
             return _usage(f"--kerf expects a positive length up to 10 mm, such as 0.15mm, got "
                           f"`{args.kerf}`")
-    sheet = _sheet_mm(args.sheet)
+    sheet = parse_sheet(args.sheet)
     if sheet is None:
         return _usage(f"--sheet expects WIDTHxHEIGHT with a unit, such as 600x400mm, got "
                       f"`{args.sheet}`")
-    gap = _length_mm(args.gap, zero=True)
+    gap = parse_length(args.gap, zero=True)
     if gap is None:
         return _usage(f"--gap expects a length of 0 or more, such as 3mm, got `{args.gap}`")
-    from ..output.layout import parse_rotate
     try:
         rotate = parse_rotate(args.rotate)
     except ValueError:

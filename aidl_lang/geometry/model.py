@@ -70,6 +70,12 @@ class Structure:
     constraints: list["Constraint"] = field(default_factory=list)
     scope: dict = field(default_factory=dict)     # names visible as members (s.NAME)
     template: str | None = None
+    # a copy made by an operation (Mirrored, a pattern) is held on its parent's frame: where
+    # the original's origin went, (x, y) expressions in the model frame (Result.values)
+    copy_origin: tuple | None = None
+    # the first copy of a pattern whose list starts with its original (`holes[1]` of
+    # `holes = LinearPattern(bolt, ...)`): that original, which is also `holes[0]`
+    pattern_original: "Structure | None" = None
 
     @property
     def path(self) -> str:
@@ -178,6 +184,9 @@ class Geometry:
     construction: bool = False
     closed: bool = False
     listed: bool = False           # in its owner's ``geometry`` (else a part: an edge, a spine)
+    # the first copy of a pattern whose list starts with its original (`dots[1]` of
+    # `dots = LinearPattern(c, ...)`): that original, which is also `dots[0]`
+    pattern_original: "Geometry | None" = None
 
     @property
     def label(self) -> str:

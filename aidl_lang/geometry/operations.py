@@ -257,6 +257,11 @@ class _Cloner:
         ctx = self.ctx
         c = ctx._new_structure(name, s.kind, parent, s.span, template=s.template)
         ctx.model.free[c.fx] = ctx.model.free[c.fy] = False      # held on the parent's frame
+        # where the original's origin goes (its own, or, for a copy, the one it stands for)
+        fx, fy = self.frame.frame_offset(None)
+        ox, oy = s.copy_origin or s.frame_offset(None)
+        X, Y = self.xf(ox - fx, oy - fy)
+        c.copy_origin = (X + fx, Y + fy)
         self.structs[s] = c
         for g in s.geometry:
             self.geom(g, c)
@@ -266,8 +271,6 @@ class _Cloner:
         if getattr(s, "finish", None):
             # the copy's outline is filleted (chamfered) as the original's: corners chosen
             # with `at` (absolute coordinates) move with it
-            fx, fy = self.frame.frame_offset(None)
-
             def moved(px, py):
                 X, Y = self.xf(px - fx, py - fy)
                 return X + fx, Y + fy
@@ -306,6 +309,12 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
             g.listed = True
             home.geometry.append(g)
         out = GeomRef(g)
+    if k == 1 and not indexed:
+        # the pattern's list starts with the original: it is the copies' `NAME[0]`
+        if isinstance(out, StructRef):
+            out.struct.pattern_original = target.struct
+        else:
+            out.geom.pattern_original = target.geom
     c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=f"{what} copy", implicit=True)
     S.constraints.append(c)
     ctx.model.constraints.append(c)

@@ -2,7 +2,8 @@
 that the server (:mod:`.server`) exposes.  Each takes a :class:`Workspace` (the allowed
 folder) and returns JSON-ready dicts, or raises :class:`Refused` for a request the server must
 turn down (a path outside the folder, both or neither of ``source``/``path``, a budget out of
-range).  A mistake in the *program* is never an exception: it is in ``diagnostics``.
+range, a file that is not a program, an output through a link).  A mistake in the *program*
+is never an exception: it is in ``diagnostics``, worded for agents (:mod:`.wording`).
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from ..api import NotCompiled, Result, WriteError, compile as compile_program
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
 from ..output.write import write_in_dir
+from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
 MAX_SOURCE = 1_000_000    # characters of program text per call
@@ -22,6 +24,31 @@ MAX_PNG_WIDTH = 4096      # pixels
 class Refused(Exception):
     """The request is turned down; the message says why (shown to the agent as a tool
     error)."""
+
+
+def one_program(source: str | None, path: str | None) -> None:
+    """Refuse both or neither of ``source`` and ``path`` (None: not given).  Raises
+    :class:`Refused`."""
+    if (source is None) == (path is None):
+        raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
+                      "inside the allowed folder)")
+
+
+def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
+    """Refuse the arguments of a call to ``tool`` that it does not take (``accepted``: the
+    names it does), naming them with the nearest accepted name and all of them, and for a
+    tool that compiles, both or neither of ``source`` and ``path`` (:func:`one_program`).
+    Raises :class:`Refused`."""
+    unknown = [a for a in arguments if a not in accepted]
+    if unknown:
+        from ..diagnostics import did_you_mean
+        near = did_you_mean(unknown[0], accepted, 1)
+        said = ", ".join(f"`{a}`" for a in unknown)
+        raise Refused(f"unknown argument{'s' if len(unknown) > 1 else ''} {said} for `{tool}`"
+                      + (f"; did you mean `{near[0]}`?" if near else ";")
+                      + f" `{tool}` takes: {', '.join(accepted)}")
+    if "source" in accepted and "path" in accepted:
+        one_program(arguments.get("source"), arguments.get("path"))
 
 
 class Workspace:
@@ -54,6 +81,39 @@ class Workspace:
             raise Refused(f"`{path}` is not a file in {self.root}")
         return real
 
+    def output(self, path: str) -> Path:
+        """The output file ``path`` (relative to the root, or absolute inside it) as a path
+        below the root, ``..`` taken as written, with no symbolic link in any of its
+        components: a link is refused wherever it points, inside the root too (outputs are
+        never written through a link).  The file and its folders need not exist.  Raises
+        :class:`Refused`."""
+        if not isinstance(path, str) or not path or "\x00" in path:
+            raise Refused("give a path as a non-empty string")
+        p = Path(path)
+        outside = Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
+                          "--root); only files inside it can be read or written")
+        if p.is_absolute():
+            try:
+                p = p.relative_to(self.root)
+            except ValueError:
+                raise outside from None
+        parts: list[str] = []
+        for part in p.parts:
+            if part == "..":
+                if not parts:
+                    raise outside
+                parts.pop()
+            elif part not in ("", "."):
+                parts.append(part)
+                if os.path.islink(self.root.joinpath(*parts)):
+                    raise Refused(f"`{path}` goes through the symbolic link "
+                                  f"`{'/'.join(parts)}`; outputs are never written through a "
+                                  "link, even one inside the allowed folder: give a path of "
+                                  "real folders")
+        if not parts:
+            raise Refused(f"`{path}` is the allowed folder itself; give a file name")
+        return self.root.joinpath(*parts)
+
     def relative(self, p: Path | str) -> str:
         try:
             return str(Path(p).relative_to(self.root))
@@ -65,9 +125,7 @@ class Workspace:
         """Compile ``source`` (named by ``path`` if given, else ``untitled.aidl`` in the root:
         imports resolve from there, in the sandbox of the importing file's folder) or the file
         ``path``.  Raises :class:`Refused`."""
-        if (source is None) == (path is None):
-            raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
-                          "inside the allowed folder)")
+        one_program(source, path)
         k = self.budget if budget is None else budget
         if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
             raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
@@ -87,8 +145,16 @@ class Workspace:
         inside the root, then opened once from the root's folder without following any link
         (:func:`aidl_lang.files.open_beneath`: a file or folder swapped for a link after the
         check is refused, never read), a regular file of at most :data:`MAX_SOURCE` bytes of
-        UTF-8 text.  Raises :class:`Refused`."""
+        UTF-8 text, named ``.aidl`` (a drawing or any other file is refused, not parsed as
+        AIDL).  Raises :class:`Refused`."""
         real = self.inside(path, must_exist=True)
+        suffix = Path(path).suffix.lower()
+        if suffix != ".aidl":
+            why = f"`{path}` is not an .aidl file: `path` takes an AIDL program"
+            if suffix in (".dxf", ".svg"):
+                why += (f"; a program imports a drawing with Drawing2D(\"{path}\") "
+                        "(DXF and SVG, docs/import.md)")
+            raise Refused(why)
         try:
             fd = open_beneath(self.root, real.relative_to(self.root))
             try:
@@ -104,6 +170,9 @@ class Workspace:
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
+    """``{"ok", "diagnostics", "units", "solve"?, "summary"?}`` of ``r``, the diagnostics
+    worded for agents (:mod:`.wording`: tools and arguments, not command-line flags)."""
+    reword_diagnostics(r.diagnostics)
     doc: dict = {"ok": r.ok, "diagnostics": r.diagnostics_json(), "units": r.units}
     s = r.compiled.solve
     if s is not None:
@@ -128,6 +197,7 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     doc = _summary(ws, r)
     if r.ok:
         doc["freedom"] = r.freedom(detail=bool(dof))
+        doc["freedom"]["text"] = for_agents(doc["freedom"]["text"])
         doc["parts"] = [p.to_json() for p in r.parts]
     return doc
 
@@ -146,21 +216,74 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
             f"no value matches {' '.join(names or [])}"}
 
 
+def _mm(value, name: str, example: str, zero: bool = False, most: float | None = None
+        ) -> float | None:
+    """A length argument in mm, as ``aidl render`` reads it: a number (mm) or a string with
+    its unit (``"0.15mm"``, ``"0.25 in"``); None when not given.  Raises :class:`Refused`."""
+    if value is None:
+        return None
+    from ..output.layout import parse_length
+    ok = isinstance(value, (str, int, float)) and not isinstance(value, bool)
+    v = parse_length(str(value), zero=zero) if ok else None
+    if v is None or most is not None and v > most:
+        size = "of 0 or more" if zero else "above 0" + (f" up to {most:g} mm" if most else "")
+        raise Refused(f"{name} is a length {size}: a number of mm or a string with its unit, "
+                      f"such as {example}; got {value!r}")
+    return v
+
+
+def _sheet_names(target: Path, n: int) -> list[Path]:
+    """The files of ``n`` sheets, as ``aidl render --layout sheet`` names them: ``cut.svg``
+    for one sheet, else ``cut-1.svg``, ``cut-2.svg``, ..."""
+    if n == 1:
+        return [target]
+    return [target.with_name(f"{target.stem}-{k + 1}{target.suffix}") for k in range(n)]
+
+
 def render(ws: Workspace, source: str | None = None, path: str | None = None,
            output: str | None = None, width: int = 800, overrides: dict | None = None,
-           budget: float | None = None, style: str = "preview",
-           assembled: bool = False) -> tuple[dict, bytes | None]:
-    """Compile and draw: ``(summary, png)``; ``png`` is ``width`` pixels wide (None when the
-    program has errors).  ``output``: also write the drawing there (``.svg``, ``.dxf``,
-    ``.png``, ...; inside the allowed folder, with ``aidl render``'s file safety).
+           budget: float | None = None, style: str = "preview", assembled: bool = False,
+           layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
+           kerf=None, thickness=None) -> tuple[dict, list[bytes]]:
+    """Compile and draw: ``(summary, pictures)``, PNGs ``width`` pixels wide: one of the
+    parts, or one per sheet with a layout; none when the program has errors.  ``output``:
+    also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
+    folder, made if missing, never through a link, never over the program).
     ``assembled``: the picture (and a 3D or PNG ``output``) is the assembled product, every
     part placed by its ``Place``, collisions boxed in red; an SVG or DXF ``output`` is
-    refused."""
+    refused.  The options of ``aidl render``, with its meanings: ``layout="sheet"``: the
+    cutting sheets (:meth:`aidl_lang.api.Result.layout`) of ``sheet`` (``"600x400mm"``),
+    ``gap`` (mm, default 3) and ``rotate`` (``"0,90"``, ``"any"``), one file per sheet
+    (``cut-1.svg``, ... when there are several); ``kerf`` (mm: every cut of SVG, DXF and PNG
+    offset by half of it; default the program's own); ``thickness`` (mm: the extrusion of
+    STL, 3MF, STEP, GLB; default the program's, else 3).  Lengths are numbers of mm or
+    strings with a unit."""
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
         raise Refused("style is `preview` or `laser`")
-    target = ws.inside(output) if output is not None else None
+    from ..output.layout import parse_rotate, parse_sheet
+    if layout not in (None, "sheet"):
+        raise Refused(f"layout is \"sheet\" (the cutting sheets) or not given; got {layout!r}")
+    if layout is None and (sheet, gap, rotate) != (None, None, None):
+        raise Refused("`sheet`, `gap` and `rotate` are for a cutting layout: add "
+                      "layout=\"sheet\"")
+    if layout and assembled:
+        raise Refused("`assembled` and `layout` do not go together: the assembled product is "
+                      "in 3D, a layout is flat")
+    sheet_mm = parse_sheet(sheet) if isinstance(sheet, str) else (600.0, 400.0)
+    if sheet is not None and (not isinstance(sheet, str) or sheet_mm is None):
+        raise Refused(f"sheet is WIDTHxHEIGHT with a unit, such as \"600x400mm\" or "
+                      f"\"24x12in\"; got {sheet!r}")
+    gap_mm = _mm(gap, "gap", "3 or \"3mm\"", zero=True)
+    try:
+        turns = parse_rotate("0,90" if rotate is None else str(rotate))
+    except ValueError:
+        raise Refused(f"rotate is the angles in degrees parts may be turned by, such as "
+                      f"\"0,90\" or \"0\", or \"any\"; got {rotate!r}") from None
+    kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
+    thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
+    target = ws.output(output) if output is not None else None
     if assembled and target is not None:
         from ..output.formats import ASSEMBLED_FORMATS
         if target.suffix.lower() not in ASSEMBLED_FORMATS:
@@ -169,24 +292,38 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     r = ws.compile(source, path, overrides, budget)
     doc = _summary(ws, r)
     if not r.ok:
-        return doc, None
+        return doc, []
     from ..output import MissingDependency, OutputError
+    from ..output.write import check_output_path
+    prog = None if path is None else str(ws.inside(path))
+    drawn = {"style": style, "width": width, "thickness": thick_mm}
     try:
-        png = (r.encode("png", width=width, assembled=True) if assembled
-               else r.to_png(width=width, style=style))
-        if target is not None:
-            prog = None if path is None else str(ws.inside(path))
-            from ..output.write import check_output_path
-            out = check_output_path(target, prog)
-            data = r.encode(out.suffix, style=style, width=width, assembled=assembled)
-            _write_inside(ws, target, data, prog, output)
-            doc["written"] = ws.relative(out)
+        if layout:
+            sheets = r.layout(sheet_mm, 3.0 if gap_mm is None else gap_mm, turns, kerf_mm)
+            pngs = sheets.encode("png", **drawn)
+            if target is not None:
+                files = _sheet_names(target, sheets.sheets)
+                for f in files:
+                    check_output_path(f, prog)
+                for f, data in zip(files, sheets.encode(target.suffix, **drawn)):
+                    _write_inside(ws, f, data, prog, ws.relative(f))
+                doc["written"] = ws.relative(files[0])
+            doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
+                             "files": [ws.relative(f) for f in files] if target else [],
+                             "text": sheets.text}
+        else:
+            pngs = [r.encode("png", kerf_mm, assembled=assembled, **drawn)]
+            if target is not None:
+                out = check_output_path(target, prog)
+                data = r.encode(out.suffix, kerf_mm, assembled=assembled, **drawn)
+                _write_inside(ws, target, data, prog, output)
+                doc["written"] = ws.relative(out)
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e)) from None
     doc["parts"] = [p.to_json() for p in r.parts]
     doc["image"] = {"format": "png", "width": width,
                     "view": "assembled" if assembled else "flat"}
-    return doc, png
+    return doc, pngs
 
 
 def docs(name: str | None = None) -> str:
@@ -195,10 +332,10 @@ def docs(name: str | None = None) -> str:
     unknown name, with the nearest topics."""
     from ..reference import index_text, lookup_text
     if not (name or "").strip():
-        return index_text()
+        return for_agents(index_text())
     text, found = lookup_text(name)
     if not found:
-        raise Refused(text.strip())
+        raise Refused(for_agents(text.strip()))
     return text
 
 
@@ -219,13 +356,15 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
 
 def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
                   shown: str) -> None:
-    """Write ``data`` to ``target`` (a real path inside the root, checked when the call came
-    in) through the folder opened from the root without following links
-    (:func:`aidl_lang.files.open_dir_beneath`), so a folder swapped for a link to somewhere
-    else while the program compiled is refused, never written through; never over the
-    program file ``program``.  Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    """Write ``data`` to ``target`` (a path below the root with no link in it, checked when
+    the call came in: :meth:`Workspace.output`) through the folder opened from the root
+    without following links (:func:`aidl_lang.files.open_dir_beneath`, ``O_NOFOLLOW`` at
+    each step), so a folder swapped for a link while the program compiled is refused, never
+    written through, and a link at the file itself is refused
+    (:func:`aidl_lang.output.write.write_in_dir`); never over the program file ``program``.  Raises
+    ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
     rel = target.relative_to(ws.root)
-    dfd = open_dir_beneath(ws.root, rel.parent)
+    dfd = open_dir_beneath(ws.root, rel.parent, create=True)
     try:
         if program is not None:
             try:

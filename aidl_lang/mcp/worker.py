@@ -1,5 +1,5 @@
-"""The compiling tools of ``aidl mcp`` (check, render, values, describe) run in a warm worker
-process, so that every call ends within its time limit whatever the program does: a thread
+"""The compiling tools of ``aidl mcp`` (check, render, values, describe) run in warm worker
+processes, so that every call ends within its time limit whatever the program does: a thread
 cannot be stopped, a process can (issue 37; ``aidl batch`` does the same with its workers).
 
 :class:`Worker` keeps one process (``multiprocessing``, spawn) with its own
@@ -9,16 +9,22 @@ wall time (15 s x the call's ``budget``, so 30 s by default) kills the process a
 with a message saying so; the next call starts a fresh process.  The compile's own deadline
 normally ends it first, with a located ``E0304``: this is the last resort for what the
 deadline cannot interrupt (one long call into a C library).
+
+:class:`Pool` runs calls side by side in up to :data:`POOL_SIZE` workers (issue 48: one slow
+compile made every other call wait): a call takes an idle worker (a warm one first; a
+process is started on a worker's first call), and waits for one when all are busy.
 """
 from __future__ import annotations
 
 import multiprocessing
+import queue
 import threading
 
 from . import tools as T
 
 READY_SECONDS = 120.0       # a new worker imports the compiler (about a second on a quiet machine)
 WALL_FACTOR = 2.0           # a call may run this many times the budget's wall time
+POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
 
 
 def _main(conn, root: str, budget: float) -> None:
@@ -113,3 +119,29 @@ class Worker:
         if ok:
             return value
         raise value
+
+
+class Pool:
+    """Up to ``size`` workers (:class:`Worker`) for the server of ``root`` (default budget factor
+    ``budget``), so that calls run at the same time: a slow call delays only itself.
+    :meth:`call` takes an idle worker, the one used last first (its process is warm; a
+    worker starts its process on its first call), and waits while all ``size`` are busy."""
+
+    def __init__(self, root: str, budget: float = 1.0, size: int = POOL_SIZE) -> None:
+        self.workers = [Worker(root, budget) for _ in range(max(1, size))]
+        self.idle: queue.LifoQueue = queue.LifoQueue()
+        for w in reversed(self.workers):
+            self.idle.put(w)
+
+    def call(self, name: str, *args, budget: float | None = None):
+        """:meth:`Worker.call` in an idle worker (waiting for one when all are busy)."""
+        w = self.idle.get()
+        try:
+            return w.call(name, *args, budget=budget)
+        finally:
+            self.idle.put(w)
+
+    def stop(self) -> None:
+        """End every worker's process."""
+        for w in self.workers:
+            w.stop()

@@ -148,6 +148,30 @@ def _spline_fix(output: Output, e: OffsetError) -> str:
 
 
 # ------------------------------------------------------------------ nesting
+def parse_length(text: str, zero: bool = False) -> float | None:
+    """``3``, ``3mm``, ``0.25 in``, ``1 cm`` -> mm (a bare number is mm); None when it is not
+    a positive length (or 0 with ``zero``) up to the model extent (1e6 mm)."""
+    import re
+    m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:e[-+]?[0-9]+)?)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
+        (m.group(2) or "mm").lower()]
+    from ..limits import MAX_EXTENT
+    return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
+
+
+def parse_sheet(text: str) -> tuple[float, float] | None:
+    """``600x400mm``, ``600 x 400``, ``24x12in`` -> (width, height) in mm; None if not that."""
+    import re
+    m = re.fullmatch(r"\s*([0-9.e+-]+)\s*[x×*]\s*([0-9.e+-]+)\s*(mm|cm|m|in)?\s*", text, re.I)
+    if not m:
+        return None
+    unit = m.group(3) or "mm"
+    w, h = parse_length(m.group(1) + unit), parse_length(m.group(2) + unit)
+    return None if w is None or h is None else (w, h)
+
+
 def parse_rotate(text: str):
     """``0,90`` -> (0.0, 90.0); ``any`` -> None (free rotation).  Raises ValueError."""
     t = text.strip().lower()

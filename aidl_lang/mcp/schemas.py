@@ -1,0 +1,141 @@
+"""The shapes of the compiling tools' results (``check``, ``render``, ``values``,
+``describe``), as typed dicts: the SDK turns each into the tool's ``outputSchema`` and checks
+every result against it before sending it as ``structuredContent`` (docs/mcp.md).  Lengths are
+in mm unless a field says otherwise (``values``: the file's units)."""
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import Field
+from typing_extensions import NotRequired, TypedDict
+
+
+class Span(TypedDict):
+    """Where in a file: 1-based ``line``/``column`` (and their ends), 0-based character
+    offsets ``start``/``end``."""
+    file: str
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    start: int
+    end: int
+
+
+class Label(TypedDict):
+    span: Span
+    message: str
+    primary: bool
+
+
+class Fix(TypedDict):
+    """Replace the text at ``span`` with ``replacement``."""
+    span: Span
+    replacement: str
+
+
+class Diagnostic(TypedDict):
+    """One located problem of the program, as ``aidl check --json`` gives it."""
+    code: Annotated[str, Field(description="E0103, W0401, ...: `explain` says more")]
+    severity: Literal["error", "warning", "note"]
+    message: str
+    span: Span | None
+    labels: list[Label]
+    hint: str | None
+    suggestions: list[str]
+    fix: Fix | None
+    rendered: Annotated[str, Field(description="the diagnostic as text, with the source line")]
+
+
+class Solve(TypedDict):
+    converged: bool
+    iterations: int
+    unknowns: int
+    equations: int
+    max_residual: float
+
+
+class StructureFreedom(TypedDict):
+    structure: str
+    unknowns: int
+    dof: int | None
+    floating: Annotated[list[str], Field(description="entities still free to move")]
+    not_counted: NotRequired[str]
+
+
+class Freedom(TypedDict):
+    dof: Annotated[int | None, Field(description="degrees of freedom left; null: not counted")]
+    text: str
+    structures: NotRequired[Annotated[list[StructureFreedom], Field(
+        description="per structure, with `dof: true`")]]
+
+
+class Part(TypedDict):
+    """One part of the final shape, in mm."""
+    name: str
+    kind: str
+    bbox: Annotated[list[float], Field(description="[x0, y0, x1, y1] mm")]
+    area: Annotated[float, Field(description="mm², holes subtracted")]
+    holes: int
+    loops: int
+
+
+class _Compiled(TypedDict):
+    """What every compiling tool returns: ``ok``, the diagnostics, the file's length unit,
+    the solve's statistics and, with errors, a one-line summary of them."""
+    ok: Annotated[bool, Field(description="no errors, and the program solved")]
+    diagnostics: NotRequired[list[Diagnostic]]
+    units: Annotated[str, Field(description="the file's length unit (mm when it names none)")]
+    solve: NotRequired[Solve]
+    summary: NotRequired[Annotated[str, Field(description="with errors: one line per error")]]
+
+
+class CheckResult(_Compiled):
+    freedom: NotRequired[Freedom]
+    parts: NotRequired[list[Part]]
+
+
+class Value(TypedDict):
+    """One solved value of a named entity."""
+    name: Annotated[str, Field(description="dotted path, e.g. plate.bore.c.center")]
+    kind: Literal["point", "length", "angle", "number", "box"]
+    value: Annotated[float | list[float], Field(
+        description="in the file's units (angles in degrees); a point [x, y], a box "
+                    "[left, bottom, right, top]")]
+    unit: str
+    mm: Annotated[float | list[float], Field(description="the same in mm (angles: radians)")]
+
+
+class ValuesResult(_Compiled):
+    values: NotRequired[list[Value]]
+    text: NotRequired[Annotated[str, Field(description="one `name = value unit` line each")]]
+
+
+class DescribeResult(_Compiled):
+    text: NotRequired[Annotated[str, Field(description="one line per feature")]]
+    describe: NotRequired[Annotated[dict[str, Any], Field(
+        description="each part's outline, openings, engravings, copies and symmetries (mm; "
+                    "docs/outputs.md, Describing the part)")]]
+
+
+class ImageInfo(TypedDict):
+    format: Literal["png"]
+    width: Annotated[int, Field(description="pixels")]
+    view: Literal["flat", "assembled"]
+
+
+class LayoutInfo(TypedDict):
+    """The cutting layout (``layout: "sheet"``)."""
+    sheets: Annotated[int, Field(description="the number of sheets (one picture each)")]
+    size: Annotated[list[float], Field(description="[width, height] of a sheet, mm")]
+    files: Annotated[list[str], Field(description="the files written, one per sheet")]
+    text: Annotated[str, Field(description="e.g. laid out 6 parts on 2 sheets of 600 x 400 mm")]
+
+
+class RenderResult(_Compiled):
+    parts: NotRequired[list[Part]]
+    image: NotRequired[ImageInfo]
+    written: NotRequired[Annotated[str, Field(
+        description="the file written (the first sheet's with a layout), relative to the "
+                    "allowed folder")]]
+    layout: NotRequired[LayoutInfo]
