@@ -361,8 +361,8 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
     without following links (:func:`aidl_lang.files.open_dir_beneath`, ``O_NOFOLLOW`` at
     each step), so a folder swapped for a link while the program compiled is refused, never
     written through, and a link at the file itself is refused
-    (:func:`aidl_lang.output.write.write_in_dir`); never over the program file ``program``.  Raises
-    ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    (:func:`aidl_lang.output.write.write_in_dir`); never over the program file ``program``.
+    Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent, create=True)
     try:
