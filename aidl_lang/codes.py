@@ -401,7 +401,11 @@ common area). Move one of them away (by the overlap plus the minimum wall), or s
 single opening made of several shapes (a keyhole: a circle and a slot) is drawn as the faces
 of ONE hole structure, whose faces may overlap without a warning.
 A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is
-often in another unit or frame than meant).
+often in another unit or frame than meant). Unless it cuts a solid that the other hole does not
+cut and that refills that hole's opening (a crescent: a moon inside a frame's window, bitten by
+its own hole): then the warning names the refilling solid and the area the inner hole cuts from
+it, and `AllowOverlap(window, moon)` in the structure holding both solids marks the refill as
+intended (it silences this warning and W0501 for the pair).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)

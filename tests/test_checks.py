@@ -775,6 +775,49 @@ def test_W0508_a_hole_wholly_inside_another(compile_text):
                          "(0.20 mm^2)")
 
 
+MOON = """solid badge {
+    solid frame {
+        plate = RoundedRectangle(center=(0, 0), width=100, height=100, corner_radius=8)
+        hole window { w = Circle(center=(0, 0), radius=40) }
+    }
+    solid moon {
+        disc = Circle(center=(0, 0), radius=30)
+        hole bite { c = Circle(center=(14, 8), radius=26) }
+    }
+    bar = Rectangle(center=(0, -35), width=6, height=12)
+    ALLOW
+}"""
+
+
+def test_W0508_a_bite_inside_an_opening_that_a_solid_refills(compile_text):
+    """A crescent: the moon refills the frame's window and its bite cuts the moon, so the
+    bite is not \"nothing of its own\": the warning names the refilling solid and its area,
+    never advises deleting the bite, and its AllowOverlap hint compiles and silences it (and
+    W0501 for the same pair)."""
+    import math
+    c = compile_text(MOON.replace("ALLOW", ""))
+    assert c.ok
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert (w.span.line, w.span.col) == (8, 9)
+    # the bite's cut: the r=30 disc and the r=26 circle 16.12 mm apart, their lens
+    r1, r2, dd = 30.0, 26.0, math.hypot(14, 8)
+    lens = (r1 * r1 * math.acos((dd * dd + r1 * r1 - r2 * r2) / (2 * dd * r1))
+            + r2 * r2 * math.acos((dd * dd + r2 * r2 - r1 * r1) / (2 * dd * r2))
+            - 0.5 * math.sqrt((-dd + r1 + r2) * (dd + r1 - r2) * (dd - r1 + r2) * (dd + r1 + r2)))
+    head = ("hole `badge.moon.bite` lies wholly inside hole `badge.frame.window` of `badge`, "
+            "which solid `badge.moon` refills: hole `badge.moon.bite` cuts ")
+    assert w.message.startswith(head) and w.message.endswith(
+        " mm^2 of `badge.moon` inside the opening, not the opening itself")
+    # measured on the chords of the circles (CHORD_TOL): within 0.1% of the exact lens
+    assert float(w.message[len(head):].split()[0]) == pytest.approx(lens, rel=1e-3)
+    assert "delete" not in w.hint and "cuts nothing" not in w.message
+    assert "`AllowOverlap(frame.window, moon)` in `badge`" in w.hint
+    assert sorted(lab.span.line for lab in w.labels) == [4, 6]
+    fixed = compile_text(MOON.replace("ALLOW", "AllowOverlap(frame.window, moon)"))
+    assert fixed.ok
+    assert not [d for d in fixed.sink.items if d.code in ("W0508", "W0501")]
+
+
 CAR = """units mm
 solid car {
     body = RoundedRectangle(center=(0, 15), width=120, height=30, radius=8)

@@ -9,7 +9,8 @@
   the outline, measured as the least distance between their boundaries, whatever the area
   (:func:`_analyse`, :func:`_report_openings`; the opening test of the rest is in
   :mod:`.walls`);
-* ``W0508`` two separately declared holes that overlap or touch: one opening;
+* ``W0508`` two separately declared holes that overlap or touch: one opening (a hole inside
+  another that cuts a solid refilling it is said as a refill, :func:`_refiller`);
 * ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch;
 * ``W0514`` a hole inside its solid that only touches the outer edge (a wall of zero width);
 * ``W0515`` a tiny opening that no hole cut: a void left between shapes that nearly meet.
@@ -220,6 +221,7 @@ class _Openings:
     webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
     notches: set = field(default_factory=set)    # holes that reach the outline
     areas: list = field(default_factory=list)    # of the features' regions, mm^2
+    cuts: list = field(default_factory=list)     # the holes' cuts: cuts[k - 1] is feature k
 
 
 def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Openings:
@@ -231,7 +233,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None) -> _Op
     feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
              and _area(c.region) > 1e-9]
     res = _Openings([f"the outer edge of `{s.path}`"] + [f"hole `{c.hole.path}`" for c in feats],
-                    [s.span] + [c.hole.span for c in feats])
+                    [s.span] + [c.hole.span for c in feats], cuts=feats)
     if not feats or shape.is_empty():
         return res
     regions = [c.region for c in feats]
@@ -335,6 +337,12 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
         inner = _inner(a, i, j, common)
+        if inner is not None and a.cuts:
+            refill = _refiller(a.cuts[i + j - inner - 1], a.cuts[inner - 1])
+            if refill is not None:
+                if refill[0] is not None:
+                    _report_refilled(a, inner, i + j - inner, common, refill, s, sink)
+                continue
         if inner is not None:
             outer = a.names[i + j - inner]
             labels = [Label(a.spans[i + j - inner], f"{outer} is here", primary=False)] \
@@ -375,6 +383,51 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
                           "router cannot hold a thinner wall); the minimum is set with "
                           "--min-wall")
     return covered
+
+
+def _refiller(outer, inner):
+    """When hole cut ``inner`` lies wholly inside hole cut ``outer`` but cuts a solid that
+    ``outer`` does not (its solid is not ``outer``'s solid or inside it: a moon inside a
+    frame's window, bitten by its own hole), that solid refills ``outer`` there and ``inner``
+    cuts it: ``(refiller, common)``, the structure below the two solids' common ancestor
+    ``common`` that holds ``inner``'s solid; ``(None, None)`` when ``AllowOverlap(outer's
+    hole, refiller)`` says the refill is intended; None when ``outer`` cuts ``inner``'s solid
+    too (``inner`` then cuts nothing of its own)."""
+    if inner.owner.is_within(outer.owner):
+        return None
+    common = outer.owner
+    while common is not None and not inner.owner.is_within(common):
+        common = common.parent
+    if common is None:
+        return None
+    refill = inner.owner
+    while refill.parent is not common:
+        refill = refill.parent
+    if _intended(outer.hole, outer.owner, refill):
+        return None, None
+    return refill, common
+
+
+def _report_refilled(a: _Openings, inner: int, outer: int, area: float, refill, s: Structure,
+                     sink: DiagnosticSink) -> None:
+    """W0508 for hole ``inner`` wholly inside hole ``outer`` where a solid refills ``outer``
+    and ``inner`` cuts that solid (:func:`_refiller`): said as a refill, with the way to mark
+    it intended (``AllowOverlap``, which also silences W0501 for the pair)."""
+    solid, parent = refill
+    hole = a.cuts[outer - 1].hole
+    labels = [Label(a.spans[outer], f"{a.names[outer]} is here", primary=False)] \
+        if a.spans[outer] else []
+    if solid.span is not None:
+        labels.append(Label(solid.span, "refills it", primary=False))
+    sink.warning("W0508", f"{a.names[inner]} lies wholly inside {a.names[outer]} of "
+                 f"`{s.path}`, which solid `{solid.path}` refills: {a.names[inner]} cuts "
+                 f"{area:.2f} mm^2 of `{solid.path}` inside the opening, not the opening "
+                 "itself", a.spans[inner], labels=labels,
+                 hint=f"if `{solid.path}` is meant to fill {a.names[outer]} and "
+                      f"{a.names[inner]} to cut it (keep both), write "
+                      f"`AllowOverlap({_rel(hole, parent)}, {_rel(solid, parent)})` in "
+                      f"`{parent.path}`; else move {a.names[inner]} clear of "
+                      f"{a.names[outer]} or `{solid.path}` out of it")
 
 
 def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
