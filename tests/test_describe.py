@@ -34,7 +34,7 @@ def test_a_plate_with_a_hole_and_a_slot_is_described_as_exactly_that():
     assert not p["copies"]
     assert not p["symmetry"]["mirror_x"] and p["symmetry"]["rotation"] == 1
     text = r.describe()
-    assert "circle d=6 at (10, 5)" in text and "slot 4 x 14 at (-10, -5)" in text
+    assert "circle d=6 at (10, 5)" in text and "slot 14 long, 4 wide at (-10, -5)" in text
     assert "part `plate`: 40 x 20 mm, from (-20, -10) to (20, 10)" in text
     assert 'text "AB"' in text
 
@@ -94,3 +94,57 @@ def test_the_openings_are_counted_in_plural_words():
 g = spur_gear(teeth=12, module=2 mm, bore=6 mm)
 """, path="examples/x.aidl")
     assert "1 opening (1 circle):" in r.describe()
+
+
+KINDS = """units mm
+assembly kit {
+    solid star { s = Star(center=(0, 0), points=6, outer_radius=30, inner_radius=15) }
+    solid turned { s = Star(center=(0, -80), points=5, outer_radius=20, inner_radius=8,
+                            rotation=10 deg) }
+    solid slot { s = Slot(start=(50, 0), end=(80, 0), width=8) }
+    solid rr { r = RoundedRectangle(center=(0, 50), width=40, height=20, corner_radius=3) }
+    solid el { e = Ellipse(center=(60, 50), rx=15, ry=8) }
+    solid ci { c = Circle(center=(100, 50), diameter=12) }
+    solid arc { a = ArcSlot(center=(0, 100), radius=20, width=6, start_angle=0 deg,
+                            end_angle=90 deg) }
+    solid tag {
+        b = Rectangle(center=(100, 100), width=60, height=40)
+        hole cut { s = Star(center=(110, 105), points=5, outer_radius=8, inner_radius=3) }
+        drawing d { t = Text("OK", position=(85, 90), size=5) }
+    }
+}
+"""
+
+
+def test_shapes_are_named_after_the_primitive_that_drew_them():
+    """A star is its points and radii, not a "12-gon 51.962 x 60"; a slot its length and
+    width; a rounded rectangle its corner radius; an ellipse its axes; an arc slot its
+    centre line; a text its string and height (issue 51)."""
+    r = aidl_lang.compile(source=KINDS)
+    parts = {p["name"]: p for p in r.description["parts"]}
+    (star,) = parts["kit.star"]["outline"]
+    assert {k: star[k] for k in ("kind", "points", "outer_radius", "inner_radius", "angle",
+                                 "center")} == {"kind": "star", "points": 6, "outer_radius": 30,
+                                                "inner_radius": 15, "angle": 0,
+                                                "center": [0, 0]}
+    (arc,) = parts["kit.arc"]["outline"]
+    assert {k: arc[k] for k in ("kind", "radius", "width", "start_angle", "sweep", "center")} \
+        == {"kind": "arc slot", "radius": 20, "width": 6, "start_angle": 0, "sweep": 90,
+            "center": [0, 100]}
+    (hole,) = parts["kit.tag"]["openings"]
+    assert hole["kind"] == "star" and hole["points"] == 5 and hole["center"] == [110, 105]
+    (t,) = parts["kit.tag"]["engravings"]
+    assert t["text"] == "OK" and t["height"] == 5
+    text = r.describe()
+    for line in ("outline: 6-point star, outer radius 30, inner 15 at (0, 0)",
+                 "outline: 5-point star, outer radius 20, inner 8, turned 10 deg at (0, -80)",
+                 "outline: slot 38 long, 8 wide at (65, 0)",
+                 "outline: rounded rectangle 40 x 20, corner radius 3 at (0, 50)",
+                 "outline: ellipse with axes 30 x 16 at (60, 50)",
+                 "outline: circle d=12 at (100, 50)",
+                 "outline: arc slot radius 20, 6 wide, from 0 to 90 deg about (0, 100)",
+                 "1 opening (1 star):",
+                 "    5-point star, outer radius 8, inner 3 at (110, 105)",
+                 'engraving: text "OK" 5 high at '):
+        assert line in text, (line, text)
+    assert "-gon" not in text

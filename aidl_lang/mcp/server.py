@@ -285,9 +285,9 @@ def build_server(root: str, budget: float = 1.0,
     def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None) -> DescribeResult:
         """What the final part is, for checking it without a picture: for each part its
-        outline (kind, size, box), each opening with its kind (circle d=..., slot w x l,
-        rectangle, n-gon), centre and size, engravings (text and place), copies (parts of the
-        same shape) and symmetries (mirror, n-fold rotation); mm. Returns (structured
+        outline (kind, size, box), each opening with its kind (circle d=..., slot l long, w
+        wide, rectangle, star, arc slot, n-gon), centre and size, engravings (text, height and
+        place), copies (parts of the same shape) and symmetries (mirror, n-fold rotation); mm. Returns (structured
         content, and the same JSON as text): ok, diagnostics, text (one line per feature) and
         describe (the same as data)."""
         try:

@@ -11,7 +11,13 @@ Kinds: ``circle`` (one exact circle: ``d``), ``slot`` (two parallel lines and tw
 width ``w``, overall length ``l``, ``angle`` of its axis), ``rectangle`` (four lines at right
 angles: ``w`` x ``h``, ``angle``), ``rounded rectangle`` (four lines and four quarter arcs of
 one radius ``r``), ``ellipse`` (one exact ellipse: axes ``w`` x ``h`` = 2 rx x 2 ry, ``angle``
-of its major axis), ``polygon`` (``n`` lines), else ``outline`` (so many lines, arcs, splines).
+of its major axis), ``star`` (a ``Star``'s loop: ``points``, ``outer_radius``, ``inner_radius``,
+``angle`` of its first tip from +y), ``arc slot`` (an ``ArcSlot``'s loop: centre-line
+``radius``, ``width``, ``start_angle`` and ``sweep``), ``polygon`` (``n`` lines), else
+``outline`` (so many lines, arcs, splines).  A star and an arc slot are named after the
+primitive that drew the loop (:func:`_primitive`: a shape of that kind whose face has the loop's
+box and whose parameters the loop's segments match); the others by their segments.  Texts
+carry their string and ``height`` (the ``size`` they were written at).
 
 Symmetries are tested on the part's shape (:attr:`~.part.PartOutline.shape`) about its area
 centroid: a mirror about the vertical and the horizontal line through it, and rotation by
@@ -104,6 +110,72 @@ def loop_shape(segments) -> dict:
     return {**doc, "lines": len(lines), "arcs": len(arcs), "curves": n_other}
 
 
+def _own_shapes(output: Output) -> list:
+    """The Stars and ArcSlots drawn as faces of some structure, with their faces' boxes:
+    ``[(geometry, (x0, y0, x1, y1))]`` (mm)."""
+    d = output.drawing
+    if d is None:
+        return []
+    return [(g, f.bounds()) for faces in d.own.values() for g, f in faces
+            if g.kind in ("Star", "ArcSlot")]
+
+
+def _primitive(doc: dict, segments, shapes: list) -> dict:
+    """``doc`` (:func:`loop_shape` of ``segments``) named after the primitive that drew the
+    loop, when one of ``shapes`` (:func:`_own_shapes`) did: a face with the loop's box (to
+    twice the chord tolerance: its polygon's vertices lie on the loop) whose kind and solved
+    parameters the segments match exactly (a Star: 2 n lines whose ends alternate at the
+    outer and inner radius about their mean; an ArcSlot: four arcs of radii R + w/2, w/2,
+    R - w/2, w/2).  Else ``doc`` unchanged."""
+    if not shapes:
+        return doc
+    x0, y0, x1, y1 = _box(segments)
+    tol = 2 * CHORD_TOL + 1e-6 * max(1.0, abs(x0), abs(y0), abs(x1), abs(y1))
+    for g, (a, b, c, e) in shapes:
+        if max(abs(a - x0), abs(b - y0), abs(c - x1), abs(e - y1)) > tol:
+            continue
+        got = _star(segments, g) if g.kind == "Star" else _arc_slot(segments, g)
+        if got is not None:
+            return {**doc, **got}
+    return doc
+
+
+def _star(segments, g) -> dict | None:
+    n = len(g.data["order"]) // 2
+    dims = g.data["dims"]
+    ro, ri = dims["outer_radius"], dims["inner_radius"]
+    if len(segments) != 2 * n or not all(isinstance(s, Line) for s in segments):
+        return None
+    P = np.array([s.start for s in segments], dtype=float)
+    c = P.mean(axis=0)
+    r = np.hypot(*(P - c).T)
+    tips = np.flatnonzero(np.abs(r - ro) <= 1e-6 * ro)
+    if len(tips) != n or np.count_nonzero(np.abs(r - ri) <= 1e-6 * ro) != n:
+        return None
+    t = P[tips[0]] - c
+    step = 360.0 / n
+    ang = (math.degrees(math.atan2(t[1], t[0])) - 90.0) % step
+    ang = 0.0 if min(ang, step - ang) < 1e-6 else ang
+    return {"kind": "star", "center": _pt(c), "points": n, "outer_radius": _r(ro),
+            "inner_radius": _r(ri), "angle": _r(ang)}
+
+
+def _arc_slot(segments, g) -> dict | None:
+    dims = g.data["dims"]
+    R, h = dims["radius"], dims["width"] / 2
+    if len(segments) != 4 or not all(isinstance(s, Arc) for s in segments):
+        return None
+    radii = sorted(s.radius for s in segments)
+    if max(abs(u - v) for u, v in zip(radii, sorted([R + h, h, R - h, h]))) > 1e-6 * R:
+        return None
+    outer = max(segments, key=lambda s: s.radius)
+    sweep = abs(outer.sweep)
+    a1 = outer.start_angle if outer.sweep > 0 else outer.start_angle + outer.sweep
+    return {"kind": "arc slot", "center": _pt(outer.center), "radius": _r(R),
+            "width": _r(2 * h), "start_angle": _r(math.degrees(a1) % 360.0),
+            "sweep": _r(math.degrees(sweep))}
+
+
 def _right_angles(lines, parallel_pairs: bool = False) -> bool:
     """Four lines, each at right angles to the next."""
     def d(l):
@@ -186,6 +258,8 @@ def _text_items(output: Output) -> list[dict]:
                "size": [_r(x1 - x0), _r(y1 - y0)]}
         if g.kind == "Text":
             doc["text"] = g.data.get("text", "")
+            if "size" in g.data:
+                doc["height"] = _r(g.data["size"])
         out.append(doc)
     return out
 
@@ -219,11 +293,14 @@ def describe(output: Output) -> dict:
     (:func:`symmetries`)."""
     rows = parts_list(output)
     texts = _text_items(output)
+    shapes = _own_shapes(output)
     parts = []
     for p, row in zip(output.parts, rows):
         x0, y0, x1, y1 = part_box(p)
-        outer = [loop_shape(lp.segments) for lp in p.loops if not lp.is_hole]
-        openings = [loop_shape(lp.segments) for lp in p.loops if lp.is_hole]
+        outer = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
+                 for lp in p.loops if not lp.is_hole]
+        openings = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
+                    for lp in p.loops if lp.is_hole]
         openings.sort(key=lambda o: (-o["center"][1], o["center"][0]))
         copies = [r["path"] for r in rows if r["shape"] == row["shape"] and r is not row]
         parts.append({"name": p.name, "kind": p.kind, "size": [_r(x1 - x0), _r(y1 - y0)],
@@ -244,20 +321,30 @@ def _at(c) -> str:
 
 
 def shape_text(s: dict) -> str:
-    """One loop of :func:`loop_shape` in words: ``circle d=6 at (10, 5)``."""
+    """One loop of :func:`loop_shape` in words, the way a person names it: ``circle d=6 at
+    (10, 5)`` (its diameter), ``slot 14 long, 4 wide``, ``rounded rectangle 40 x 20, corner radius
+    3``, ``ellipse with axes 30 x 16``, ``6-point star, outer radius 30, inner 15``, ``arc
+    slot radius 20, 6 wide, from 0 to 90 deg`` (lengths in mm)."""
     k = s["kind"]
     ang = f", turned {_n(s['angle'])} deg" if s.get("angle") else ""
     if k == "circle":
         return f"circle d={_n(s['d'])} at {_at(s['center'])}"
     if k == "slot":
-        return f"slot {_n(s['w'])} x {_n(s['l'])}{ang} at {_at(s['center'])}"
+        return f"slot {_n(s['l'])} long, {_n(s['w'])} wide{ang} at {_at(s['center'])}"
     if k == "rectangle":
         return f"rectangle {_n(s['w'])} x {_n(s['h'])}{ang} at {_at(s['center'])}"
     if k == "ellipse":
-        return f"ellipse {_n(s['w'])} x {_n(s['h'])}{ang} at {_at(s['center'])}"
+        return f"ellipse with axes {_n(s['w'])} x {_n(s['h'])}{ang} at {_at(s['center'])}"
     if k == "rounded rectangle":
-        return f"rounded rectangle {_n(s['w'])} x {_n(s['h'])} r={_n(s['r'])}{ang} at " \
-               f"{_at(s['center'])}"
+        return f"rounded rectangle {_n(s['w'])} x {_n(s['h'])}, corner radius {_n(s['r'])}" \
+               f"{ang} at {_at(s['center'])}"
+    if k == "star":
+        return f"{s['points']}-point star, outer radius {_n(s['outer_radius'])}, inner " \
+               f"{_n(s['inner_radius'])}{ang} at {_at(s['center'])}"
+    if k == "arc slot":
+        a1 = s["start_angle"]
+        return f"arc slot radius {_n(s['radius'])}, {_n(s['width'])} wide, from {_n(a1)} to " \
+               f"{_n(a1 + s['sweep'])} deg about {_at(s['center'])}"
     size = f"{_n(s['size'][0])} x {_n(s['size'][1])}"
     if k == "polygon":
         return f"{s['n']}-gon {size} at {_at(s['center'])}"
@@ -301,7 +388,8 @@ def describe_text(doc: dict) -> str:
 def _engraving(e: dict) -> str:
     size = f"{_n(e['size'][0])} x {_n(e['size'][1])}"
     if e["kind"] == "text":
-        return f"text \"{e['text']}\" at {_at(e['center'])}, {size} mm"
+        high = f" {_n(e['height'])} high" if e.get("height") else ""
+        return f"text \"{e['text']}\"{high} at {_at(e['center'])}, {size} mm"
     return f"{e['kind']} `{e['name']}` at {_at(e['center'])}, {size} mm"
 
 
