@@ -385,7 +385,11 @@ burns through or breaks such a wall. Between two holes, or a hole and the outlin
 is the measured least distance between their boundaries (to 0.01 mm); other thin walls are
 found by an opening of the part and their width is estimated. The warning names the holes and
 the outer edge that the wall lies between, its width and length and where it is. Move or
-shrink the hole so that enough material is left.
+shrink the hole so that enough material is left. A thin wall of the outline alone is located
+at the shape that makes it (the face covering most of it, in the solid or one of its solid
+children); when a corner of that shape sharper than 60 degrees lies in it (an outline that
+tapers to a point: a needle-thin Triangle, a spike), the hint says to blunt the tip to at
+least the minimum wall, else to widen the shape.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)

@@ -190,6 +190,33 @@ def test_W0507_thin_wall_names_the_hole_and_the_edge(compile_text):
     assert [d.code for d in c.sink.items] == ["W0507"]
 
 
+NOTE = """solid note {
+    head = Circle(center=(0, 0), radius=6)
+    solid stem {
+        s = Triangle(a=(3, 0), b=(6, 0), c=(5, 40))
+    }
+}"""
+
+
+def test_W0507_a_tip_that_tapers_to_a_point_names_its_shape_and_the_figure(compile_text):
+    """A note's stem drawn as a needle-thin Triangle: the warning points at the child's
+    shape (not only the top structure) and says to blunt the tip to the minimum wall."""
+    (w,) = warnings(compile_text, NOTE, "W0507")
+    assert (w.span.line, w.span.col) == (4, 13)
+    assert w.message.startswith("a wall of `note` at the tip of Triangle `note.stem.s` beside "
+                                "the outer edge of `note` is thinner than 0.5 mm (about ")
+    assert w.hint.startswith("blunt the tip of Triangle `note.stem.s` to at least 0.5 mm")
+    c = compile_text(NOTE, min_wall=0.8)
+    (w,) = [d for d in c.sink.items if d.code == "W0507"]
+    assert "blunt the tip of Triangle `note.stem.s` to at least 0.8 mm" in w.hint
+    # a thin bar of even width is no tip: the shape is named, and widened
+    (w,) = warnings(compile_text, NOTE.replace("Triangle(a=(3, 0), b=(6, 0), c=(5, 40))",
+                                               "Rectangle(center=(4, 20), width=0.3, height=30)"),
+                    "W0507")
+    assert "made by Rectangle `note.stem.s`" in w.message and w.span.line == 4
+    assert w.hint.startswith("widen Rectangle `note.stem.s`")
+
+
 def test_W0507_between_two_holes(compile_text):
     (w,) = warnings(compile_text, """solid plate {
     body = Rectangle(center=(0, 0), width=40, height=20)

@@ -2,7 +2,9 @@
 what a morphological opening of the part by a disc of that diameter removes (the erosion by
 ``min_wall / 2`` then the dilation back, Manifold offsets with round joins), in pieces of at
 least ``2 min_wall^2`` (so that sharp corners, which every opening rounds, do not count); the
-warning names the holes and the outer edge the wall lies between.  Walls between two
+warning names the holes and the outer edge the wall lies between, and, for a wall of the
+outline alone, the shape that makes it (:func:`_maker`; "blunt the tip" when it tapers to a
+point there).  Walls between two
 features already measured by :mod:`.openings` are not reported twice.  The opening of a
 large part is taken tile by tile (:func:`_thin`), and the steps the deadline cannot
 interrupt are refused when their vertex counts say they would end past it."""
@@ -65,12 +67,58 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
             f" beside {names[0]}" if names else "")
         span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
         px, py = _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
-        sink.warning("W0507", f"a wall of `{s.path}`{between} is thinner than {t:g} mm "
+        maker = None if any(n.startswith("hole ") for n in names) else _maker(d, s, piece)
+        made, fix = "", f"move or shrink the feature so that at least {t:g} mm of material is left"
+        if maker is not None:
+            g, tip = maker
+            what = f"{g.kind} `{g.label}`" if g.name else g.label
+            made = f" at the tip of {what}" if tip else f" made by {what}"
+            span = g.span or g.owner.span or span
+            fix = (f"blunt the tip of {what} to at least {t:g} mm: end it in a flat or a round "
+                   f"{t:g} mm across instead of a point" if tip else
+                   f"widen {what} (or move it) so that at least {t:g} mm of material is left")
+        sink.warning("W0507", f"a wall of `{s.path}`{made}{between} is thinner than {t:g} mm "
                      f"(about {width:.2f} mm over {length:.1f} mm, near "
                      f"({px:.1f}, {py:.1f}))", span,
-                     hint=f"move or shrink the feature so that at least {t:g} mm of material is "
-                          "left (a laser or router cannot hold a thinner wall); the minimum is "
+                     hint=f"{fix} (a laser or router cannot hold a thinner wall); the minimum is "
                           "set with --min-wall")
+
+
+SHARP = 60.0      # degrees: a corner of a face sharper than this, in a thin piece, is a tip
+
+
+def _maker(d: Drawing, s: Structure, piece):
+    """The shape of solid ``s`` (its own or a solid descendant's, :attr:`Drawing.own`) that
+    makes the thin ``piece``: the face covering most of it, as ``(geometry, tip)``; ``tip``
+    when a corner of that face sharper than :data:`SHARP` degrees lies in the piece (an
+    outline that tapers to a point).  None when no face covers any of it."""
+    best, most = None, 1e-9
+    x0, y0, x1, y1 = piece.bounds()
+    for t, faces in d.own.items():
+        if not t.is_within(s) or t.kind != "solid":
+            continue
+        for g, f in faces:
+            a, b, c, e = f.bounds()
+            if a > x1 or c < x0 or b > y1 or e < y0:
+                continue
+            got = _area(piece ^ f)
+            if got > most:
+                best, most = (g, f), got
+    if best is None:
+        return None
+    g, f = best
+    near = piece.offset(1e-3, mf.JoinType.Miter, 2.0, 16)
+    for P in f.to_polygons():
+        P = np.asarray(P, dtype=float)
+        u, w = np.roll(P, 1, axis=0) - P, np.roll(P, -1, axis=0) - P
+        cos = np.einsum("ij,ij->i", u, w) / np.maximum(
+            np.hypot(*u.T) * np.hypot(*w.T), 1e-300)
+        convex = u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0] < 0       # counter-clockwise loops
+        for k in np.flatnonzero(convex & (cos > np.cos(np.radians(SHARP)))):
+            q = mf.CrossSection.square((2e-3, 2e-3)).translate((P[k, 0] - 1e-3, P[k, 1] - 1e-3))
+            if _area(near ^ q) > 0:
+                return g, True
+    return g, False
 
 
 def _point_of(piece, near) -> tuple[float, float]:
