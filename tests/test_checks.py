@@ -506,6 +506,30 @@ def test_W0508_pattern_copies_that_merge_with_a_vent(compile_text):
     assert "`bracket.first_pattern[" in ws[0].message and "overlap by 2.00 mm" in ws[0].message
 
 
+def test_an_axle_hole_of_the_parent_inside_a_childs_opening_is_no_crash(compile_text):
+    """A wheel: the rim (a child) cuts its inside, the wheel's own hub refills it and the
+    wheel's axle hole lies wholly inside the rim's opening. The axle is declared in the
+    structure holding the rim, so it cuts the hub as meant: no W0508, and no internal error
+    (a model's program of issue 51 crashed with "'NoneType' object has no attribute
+    'parent'" in the refill search)."""
+    c = compile_text("""solid wheel {
+    solid rim {
+        outer = Circle(center=(0, 0), diameter=100)
+        hole inside { c = Circle(center=(0, 0), radius=42) }
+    }
+    hub = Circle(center=(0, 0), diameter=20)
+    hole axle { c = Circle(center=(0, 0), diameter=5) }
+}""")
+    assert c.ok
+    assert not [d for d in c.sink.items if d.code in ("W0508", "W0502")]
+    part = c.drawing.parts[0].shape
+    # the rim's ring and the hub less its axle: two pieces, the hub's bore cut
+    import math
+    ring = math.pi * (50 ** 2 - 42 ** 2)
+    hub = math.pi * (10 ** 2 - 2.5 ** 2)
+    assert abs(part.area() - (ring + hub)) < 0.01 * (ring + hub)
+
+
 # ------------------------------------------------------------ faces of zero area (W0509)
 def test_W0509_a_loop_of_zero_area(compile_text):
     (w,) = warnings(compile_text, """solid s {

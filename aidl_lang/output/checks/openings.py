@@ -391,8 +391,10 @@ def _refiller(outer, inner):
     frame's window, bitten by its own hole), that solid refills ``outer`` there and ``inner``
     cuts it: ``(refiller, common)``, the structure below the two solids' common ancestor
     ``common`` that holds ``inner``'s solid; ``(None, None)`` when ``AllowOverlap(outer's
-    hole, refiller)`` says the refill is intended; None when ``outer`` cuts ``inner``'s solid
-    too (``inner`` then cuts nothing of its own)."""
+    hole, refiller)`` says the refill is intended, or when ``inner`` is declared in that
+    ancestor itself (a wheel's axle hole inside its rim's opening, which the wheel's own hub
+    refills: a hole cuts every solid of its structure, the refill included, as meant); None
+    when ``outer`` cuts ``inner``'s solid too (``inner`` then cuts nothing of its own)."""
     if inner.owner.is_within(outer.owner):
         return None
     common = outer.owner
@@ -400,6 +402,8 @@ def _refiller(outer, inner):
         common = common.parent
     if common is None:
         return None
+    if inner.owner is common:
+        return None, None
     refill = inner.owner
     while refill.parent is not common:
         refill = refill.parent
