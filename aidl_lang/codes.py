@@ -336,8 +336,10 @@ is harmless and not reported; `aidl check` says it as "free: only where the whol
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
 (or its parent's own geometry) that covers the hole, the hole is filled again and does not cut
-the final part. The warning names the solid that refills it and how much of the hole still
-cuts. Declare the hole in the common parent, so that it cuts everything united there:
+the final part. The warning names every solid or shape that refills it at once (the copies one
+loop statement makes count as one, with their number), the share of the hole each covers, and how
+much of the hole still cuts. Declare the hole in the common parent, so that it cuts everything
+united there:
 
     solid lock {
         solid body { b = Rectangle(center=(0, 0), width=40, height=30)
@@ -347,7 +349,9 @@ cuts. Declare the hole in the common parent, so that it cuts everything united t
     # fix: move `hole key { ... }` out of `body` into `lock`
 
 When the refill is intended (a boss over a relief cut, say), silence it for that pair only
-with `AllowOverlap(body.key, shackle)` written in `lock` (`aidl docs AllowOverlap`).
+with `AllowOverlap(body.key, shackle)` written in `lock` (`aidl docs AllowOverlap`). It takes
+any number of refillers and lists: `AllowOverlap(rim.inner, spoke, frame)`, where `spoke` is
+the list a `for` loop made, allows all the spokes and the frame; the hint writes that call.
 """),
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
@@ -450,8 +454,8 @@ occupy the same place, so the drawing shows them wrongly placed (two gears close
 centre distance, whose teeth run into each other). The warning names both parts, the overlap's
 area and its depth along the line between them. Move one part away (meshing spur gears sit at
 the centre distance module * (teeth1 + teeth2) / 2, which `gear_pair` in std/gears.aidl keeps),
-or shrink it; if the overlap is meant (a picture of parts stacked), say so with
-`AllowOverlap(a, b)` in the assembly. Parts overlapping by more than a quarter of the smaller
+or shrink it; if the overlap is meant (a picture of parts stacked, a clock's hand over its
+face), say so with `AllowOverlap(a, b)` (the two parts) in the assembly. Parts overlapping by more than a quarter of the smaller
 one are taken as laid on each other in the assembly view (a gear drawn on its mounting plate, a
 clock's hands) and not warned: parts meant to mesh or touch collide at their rims.
 

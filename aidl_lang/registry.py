@@ -386,8 +386,11 @@ _DEFS = {
                 cat="operation", varargs=True,
                 doc="any number of shapes, structures (drawings too) or lists of them keep "
                     "their placement to each other; a structure moves, never bends."),
-    "AllowOverlap": _c([A("a", "boxed"), A("b", "boxed")], cat="operation",
-                       doc="hole a may be refilled by b (no W0501)."),
+    "AllowOverlap": _c([A("a", "any"), A("b", "any", doc="and every further argument, as "
+                         "a list")], cat="operation", varargs=True,
+                       doc="the shapes, structures or lists named may overlap: a hole among "
+                           "them may be refilled by the others (no W0501/W0508), solid parts "
+                           "of an assembly may interpenetrate (no W0511)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -549,6 +552,11 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",
                          "radius": "corner_radius", "r": "corner_radius",
+                         "fillet": "corner_radius", "fillet_radius": "corner_radius",
+                         "rounding": "corner_radius", "round": "corner_radius",
+                         "rounded": "corner_radius", "corner_r": "corner_radius",
+                         "corner_rounding": "corner_radius", "corner_fillet": "corner_radius",
+                         "round_radius": "corner_radius", "rounding_radius": "corner_radius",
                          "position": "center", "at": "center"},
     "CircularPattern": {"number": "count", "copies": "count", "around": "center",
                         "origin": "center", "span": "angle", "total_angle": "angle",

@@ -86,6 +86,17 @@ HALLUCINATIONS = {
 }
 
 
+# constructors whose arguments models give to a sibling: an argument of the sibling (that
+# fits one of its forms with the rest of the call) on the first is redirected to it, with why
+SIBLINGS = {
+    "Rectangle": {"RoundedRectangle": "a Rectangle has sharp corners; RoundedRectangle "
+                                      "rounds them"},
+    "Circle": {"Ellipse": "a Circle has one radius; an Ellipse has two semi-axes"},
+    "Ellipse": {"Circle": "an Ellipse takes semi-axes rx, ry; a Circle takes a radius"},
+    "Arc": {"ArcSlot": "an Arc is a curve without width; an ArcSlot is the slot along it"},
+}
+
+
 class _Scope:
     def __init__(self, parent: "_Scope | None", names=()):
         self.parent = parent
@@ -328,6 +339,8 @@ class Checker:
             return
         all_names = accepted_args(entry)
         bad = next((k for k in e.kwargs if k.name not in all_names), None)
+        if bad is not None and self.sibling(e, entry, bad):
+            return
         if bad is not None:
             from .reference import entry_units_hint
             sugg = did_you_mean(bad.name, all_names)
@@ -344,6 +357,52 @@ class Checker:
             hint = ("to copy a shape or structure about a line write `Mirrored(target, "
                     "about=line)`; " + hint)
         self.sink.error(code, f"`{n}` {reason}", e.span, hint=hint)
+
+    def sibling(self, e: A.Call, entry, bad) -> bool:
+        """E0105 for keyword ``bad`` of call ``e`` to ``entry`` when it is an argument of a
+        sibling constructor (:data:`SIBLINGS`: `Rectangle(..., corner_radius=3)` means
+        `RoundedRectangle`) and the same arguments fit one of the sibling's forms: the message
+        names the sibling, the hint and the fix give the call rewritten (the constructor's name
+        and the keyword's canonical name replaced, the rest as written).  False when no
+        sibling fits (the ordinary E0105 follows)."""
+        from .diagnostics import Fix
+        from .registry import arg_synonyms
+        kwnames = [k.name for k in e.kwargs]
+        for sib in SIBLINGS.get(entry.name, ()):
+            s_entry = lookup(sib)
+            if bad.name not in accepted_args(s_entry):
+                continue
+            variant, _ = choose_variant(s_entry, len(e.args), kwnames)
+            if variant is None:
+                continue
+            canon = {a.name for a in variant}
+            new = next((c for c in (bad.name,) + arg_synonyms(sib).get(bad.name, ())
+                        if c in canon), bad.name)
+            text = self._rewrite(e, sib, bad, new)
+            call = f"`{text}`" if text else f"`{sib}(..., {new}=...)`"
+            d = self.sink.error(
+                "E0105", f"`{entry.name}` has no argument `{bad.name}`: `{new}` is an argument "
+                f"of `{sib}`", bad.span,
+                hint=f"write {call} ({SIBLINGS[entry.name][sib]}; `aidl docs {sib}` gives "
+                "its forms)")
+            if text:
+                d.fix = Fix(e.span, text)
+            return True
+        return False
+
+    def _rewrite(self, e: A.Call, name: str, bad, new: str) -> str | None:
+        """The source of call ``e`` with the function renamed ``name`` and keyword ``bad``
+        renamed ``new``; None when the source text is not at hand."""
+        src = self.sink.sources.get(e.span.file)
+        f = e.func
+        if isinstance(bad.value, A.Name) and bad.value.id in ("true", "false"):
+            return None                 # `rounded=true`: the sibling wants a size
+        if not src or not (0 <= f.span.start < f.span.end <= bad.span.start < e.span.end
+                           <= len(src)) or src[f.span.start:f.span.end] != f.id \
+                or not src.startswith(bad.name, bad.span.start):
+            return None
+        k = bad.span.start
+        return (name + src[f.span.end:k] + new + src[k + len(bad.name):e.span.end])
 
     def template_call(self, e: A.Call, d: A.Def) -> None:
         params = [p.name for p in d.params]

@@ -371,7 +371,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
     if kind == "AllowOverlap":
-        return _allow_overlap(args["a"], args["b"])
+        return _allow_overlap([args["a"], args["b"]])
     if kind == "Rigid":
         return _rigid(ctx, _flat([args[k] for k in "ab" if args.get(k) is not None]))
     target = _target(ctx, args["target"], kind)
@@ -417,28 +417,50 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     return out
 
 
-def _allow_overlap(a, b) -> None:
-    """``AllowOverlap(a, b)``: the hole among ``a`` and ``b`` (a hole structure, or a shape
-    in one) may be refilled by the other (a solid structure or a shape): W0501 is not
-    reported for that pair (:func:`aidl_lang.output.checks.openings._intended`)."""
-    def hole_of(v):
-        if isinstance(v, StructRef) and v.struct.kind == "hole":
-            return v.struct
-        if isinstance(v, GeomRef) and v.geom.owner.kind == "hole":
-            return v.geom.owner
-        return None
+def _allow_overlap(items: list) -> None:
+    """``AllowOverlap(a, b, ...)``: the shapes and structures named (lists, such as the
+    copies a loop makes, are spread out) may overlap.  Each hole among them (a hole structure,
+    or a shape in one) may be refilled by every other (W0501, W0508:
+    :func:`aidl_lang.output.checks.openings._intended`); every two solid structures among them
+    (parts of an assembly) may interpenetrate (W0511:
+    :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
+    ``overlap_ok`` sets.  Raises :class:`OperationError` for an argument that is no shape or
+    structure, or when nothing is named that the two rules concern (no hole, fewer than two
+    solid structures)."""
+    objs = []
+    for v in _flat(items):
+        if isinstance(v, StructRef):
+            objs.append(v.struct)
+        elif isinstance(v, GeomRef):
+            objs.append(v.geom)
+        else:
+            raise OperationError(f"AllowOverlap takes shapes, structures and lists of them; "
+                                 f"got {_what(v)}")
 
-    def obj(v):
-        return v.struct if isinstance(v, StructRef) else v.geom if isinstance(v, GeomRef) else None
-    h, other = hole_of(a), b
-    if h is None:
-        h, other = hole_of(b), a
-    if h is None or obj(other) is None:
-        raise OperationError(f"AllowOverlap names a hole and what covers it (a solid or a "
-                             f"shape); got {_what(a)} and {_what(b)}")
-    if not hasattr(h, "overlap_ok"):
-        h.overlap_ok = set()
-    h.overlap_ok.add(obj(other))
+    def hole_of(o):
+        owner = o if isinstance(o, Structure) else o.owner
+        return owner if owner.kind == "hole" else None
+    done = False
+    for k, o in enumerate(objs):
+        h = hole_of(o)
+        others = [x for m, x in enumerate(objs) if m != k and x is not h]
+        if h is not None and others:
+            if not hasattr(h, "overlap_ok"):
+                h.overlap_ok = set()
+            h.overlap_ok.update(others)
+            done = True
+    solids = [o for o in objs if isinstance(o, Structure) and o.kind == "solid"]
+    if len({id(o) for o in solids}) > 1:
+        for o in solids:
+            if not hasattr(o, "overlap_ok"):
+                o.overlap_ok = set()
+            o.overlap_ok.update(x for x in solids if x is not o)
+        done = True
+    if not done:
+        raise OperationError("AllowOverlap names a hole and what may refill it, or two solid "
+                             "parts (of an assembly) that may overlap; got "
+                             + " and ".join(_what(StructRef(o) if isinstance(o, Structure)
+                                                  else GeomRef(o)) for o in objs))
     return None
 
 

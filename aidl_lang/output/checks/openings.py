@@ -469,36 +469,72 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     refilled = _area(cut.region ^ final)
     if not _significant(refilled, cut_area):
         return
-    # who refills it: the other contributors of each ancestor between the owner and the part
-    culprits, node, intended = [], s, 0
+    # who refills it: the other contributors of each ancestor between the owner and the part,
+    # grouped by the statement that made them (the copies of a loop are one refiller)
+    groups: dict = {}                   # (statement span, kind) -> [obj, span, level, shapes]
+    allowed: dict = {}
+    node = s
     while node is not part and node.parent is not None:
         a = node.parent
         for name, span, shp, obj in _contributors(d, a, skip=node, objects=True):
             if _significant(_area(cut.region ^ shp), cut_area):
-                if _intended(h, s, obj):        # AllowOverlap(hole, this): not reported
-                    intended += 1
-                    continue
-                culprits.append((name, span, a, obj))
+                into = allowed if _intended(h, s, obj) else groups   # AllowOverlap(hole, this)
+                key = (span, isinstance(obj, Structure)) if span is not None else id(obj)
+                into.setdefault(key, [obj, span, a, []])[3].append(shp)
         if node.parent is part:
             break
         node = a
-    if intended and not culprits:
+    if allowed and not groups:
         return
     survives = max(0.0, cut_area - refilled)
-    who = ", ".join(c[0] for c in culprits[:3]) or "a solid united later"
-    common = culprits[0][2] if culprits else part
+    # the outermost structure holding a refiller: the common parent of the hole and all of them
+    outer = max((g[2] for g in groups.values()), key=lambda x: -len(x.path.split(".")),
+                default=part)
+    hole_ref = _rel(h, outer)
+
+    def said(gs):
+        out = []
+        for obj, span, _, shapes in gs:
+            share = _area(cut.region ^ (shapes[0] if len(shapes) == 1 else _union(shapes)))
+            what = f"solid `{obj.path}`" if isinstance(obj, Structure) else f"`{obj.label}`"
+            many = f"{len(shapes)} copies, " if len(shapes) > 1 else ""
+            out.append(f"{what} ({many}{_pct(share, cut_area)} of the hole)")
+        return out
+    who = said(groups.values())
+    who = ", ".join(who[:-1]) + " and " + who[-1] if len(who) > 1 else who[0]
+    also = ""
+    if allowed:
+        also = "; AllowOverlap already allows " + ", ".join(said(allowed.values()))
+    refs = []
+    for obj, _, _, shapes in groups.values():
+        r = _ref(obj, outer)
+        if r not in refs:
+            refs.append(r)
     labels = [Label(span, "refills the hole", primary=False)
-              for _, span, _, _ in culprits[:3] if span is not None]
+              for _, span, _, _ in groups.values() if span is not None]
     sink.warning(
         "W0501",
         f"hole `{h.path}` is refilled by {who}: only {_pct(survives, cut_area)} of it still "
-        f"cuts through",
+        f"cuts through{also}",
         h.span, labels=labels,
         hint=(f"a hole cuts only the solid it is declared in (`{s.path}`); declare the hole in "
-              f"`{common.path}`, the common parent, so that it cuts everything united there, "
-              "or move it clear of the solid that covers it; if the overlap is intended, "
-              f"write `AllowOverlap({_rel(h, common)}, "
-              f"{_rel(culprits[0][3], common) if culprits else 'solid'})` in `{common.path}`"))
+              f"`{outer.path}`, the common parent, so that it cuts everything united there, "
+              "or move it clear of the solids that cover it; if the overlap is intended, "
+              f"write `AllowOverlap({hole_ref}, {', '.join(refs)})` in `{outer.path}`"))
+
+
+def _ref(obj, base: Structure) -> str:
+    """An expression, in structure ``base``'s body, for refiller ``obj`` (a structure or a
+    shape below ``base``) that ``AllowOverlap`` takes: its name, or for a copy of a loop or a
+    pattern (named ``NAME[k]``) the list ``NAME`` (all the copies); a shape without a name
+    is named by its structure (``self`` when that is ``base``)."""
+    if not isinstance(obj, Structure) and not obj.name:
+        obj = obj.owner
+    if obj is base:
+        return "self"
+    r = _rel(obj, base)
+    head, sep, _ = r.rpartition("[")
+    return head if sep and r.endswith("]") and "[" not in head else r
 
 
 def _rel(obj, base: Structure) -> str:

@@ -63,6 +63,10 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
         if area > STACKED * min(_area(sa), _area(sb)):
             continue              # laid one on the other (a gear on its plate, clock hands)
         depth = _depth(common, boxes[i], boxes[j])
+        home = a.parent
+        while home is not None and not b.is_within(home):
+            home = home.parent
+        ra, rb = (x.path[len(home.path) + 1:] if home is not None else x.name for x in (a, b))
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
         sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
                      f"by {area:.2f} mm^2, {depth:.2f} mm deep (separate parts cannot occupy "
@@ -71,7 +75,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
                           "(meshing gears sit at the centre distance module * (teeth1 + "
                           "teeth2) / 2: `gear_pair` in std/gears.aidl places them), or shrink "
                           "one; if the overlap is meant (a picture of parts stacked), write "
-                          f"`AllowOverlap({a.name}, {b.name})` in their assembly")
+                          f"`AllowOverlap({ra}, {rb})` in "
+                          + (f"`{home.path}`" if home is not None else "their assembly"))
 
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
