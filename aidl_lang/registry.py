@@ -388,9 +388,8 @@ _DEFS = {
                     "their placement to each other; a structure moves, never bends."),
     "AllowOverlap": _c([A("a", "any"), A("b", "any", doc="and every further argument, as "
                          "a list")], cat="operation", varargs=True,
-                       doc="the shapes, structures or lists named may overlap: a hole among "
-                           "them may be refilled by the others (no W0501/W0508), solid parts "
-                           "of an assembly may interpenetrate (no W0511)."),
+                       doc="these (or lists) may overlap: refilled hole (W0501), assembly "
+                           "parts (W0511)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",

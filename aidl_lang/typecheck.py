@@ -97,6 +97,13 @@ SIBLINGS = {
 }
 
 
+# placement keywords models give to their own templates (as to the standard library's):
+# keyword -> the member of the instance's box it places
+PLACEMENT = {"cx": "center_x", "cy": "center_y", "center_x": "center_x",
+             "center_y": "center_y", "center": "center", "position": "center", "at": "center",
+             "pos": "center", "origin": "center"}
+
+
 class _Scope:
     def __init__(self, parent: "_Scope | None", names=()):
         self.parent = parent
@@ -126,6 +133,7 @@ class Checker:
         self.templates: dict[str, A.Def] = {}
         self.imported: dict[str, A.Def] = {}    # templates imported without `as`, by name
         self.bound: set = set()        # (name, arguments, keyword names) of registry calls that bind
+        self.assign: A.Assign | None = None     # the assignment being checked
 
     # ------------------------------------------------------------------ scopes
     def block_names(self, stmts) -> set:
@@ -202,7 +210,9 @@ class Checker:
             inner = _Scope(scope, self.block_names(st.body.stmts) | {st.name})
             self.stmts(st.body.stmts, inner)
         elif isinstance(st, A.Assign):
+            self.assign = st                # a template call's placement hint names it
             self.expr(st.value, scope)
+            self.assign = None
         elif isinstance(st, (A.ExprStmt, A.Assert)):
             self.expr(st.expr, scope)
         elif isinstance(st, A.ThicknessDecl):
@@ -404,6 +414,51 @@ class Checker:
         k = bad.span.start
         return (name + src[f.span.end:k] + new + src[k + len(bad.name):e.span.end])
 
+    def placement(self, e: A.Call, d: A.Def, placing: list) -> None:
+        """One E0105 for the placement keywords (``cx``, ``cy``, ``center``, ...) given to a
+        template of this file that has no such parameter (models expect every template to
+        take the standard library's ``cx, cy``).  The hint says how to place the instance:
+        a constraint on its box after the assignment, written out (the fix replaces the
+        statement with the call without those keywords and the constraint), or placement
+        parameters added to the ``def``."""
+        from .diagnostics import Fix
+        names = ", ".join(f"`{k.name}`" for k in placing)
+        span = placing[0].span.cover(placing[-1].span)
+        src = self.sink.sources.get(e.span.file) or ""
+        st = self.assign if self.assign is not None and self.assign.value is e else None
+
+        def text(n):
+            return src[n.span.start:n.span.end] if 0 <= n.span.start < n.span.end <= len(src) \
+                else None
+        vals = {PLACEMENT[k.name]: text(k.value) for k in placing}
+        target = st.name if st is not None else "NAME"
+        if "center" in vals:
+            eq = f"{target}.bb.center == {vals['center']}"
+        elif "center_x" in vals and "center_y" in vals:
+            eq = f"{target}.bb.center == ({vals['center_x']}, {vals['center_y']})"
+        else:
+            k, v = next(iter(vals.items()))
+            eq = f"{target}.bb.{k} == {v}"
+        kept = [text(a) for a in e.args] + [text(k) for k in e.kwargs if k not in placing]
+        call = f"{d.name}({', '.join(x for x in kept if x)})"
+        fix = None
+        if st is not None and None not in vals.values() and None not in kept \
+                and src[st.span.start:st.span.end].startswith(st.name):
+            indent = " " * (st.span.col - 1)
+            fix = f"{st.name} = {call}\n{indent}{eq}"
+            how = (f"replace the statement with `{st.name} = {call}` followed by the "
+                   f"constraint `{eq}`")
+        else:
+            how = f"assign the instance (`NAME = {call}`) and constrain it: `{eq}`"
+        d_ = self.sink.error(
+            "E0105", f"`{d.name}` has no parameter{'s' if len(placing) > 1 else ''} "
+            f"{names}: only the standard library's "
+            "templates take `cx`, `cy`; a template you define takes only its own parameters",
+            span, hint=f"place the instance with a constraint: {how}; or give `def {d.name}` "
+            "parameters `cx=0, cy=0` and add them to the positions in its body")
+        if fix is not None:
+            d_.fix = Fix(st.span, fix)
+
     def template_call(self, e: A.Call, d: A.Def) -> None:
         params = [p.name for p in d.params]
         if len(e.args) > len(params):
@@ -411,8 +466,14 @@ class Checker:
                             e.span, hint=f"`{d.name}({', '.join(params)})`")
             return
         given = set(params[:len(e.args)])
+        placing = [kw for kw in e.kwargs if kw.name in PLACEMENT
+                   and template_param(kw.name, params) is None]
+        if placing:
+            self.placement(e, d, placing)
         for kw in e.kwargs:
             name = template_param(kw.name, params)
+            if name is None and kw in placing:
+                continue
             if name is None:
                 from .reference import template_params_hint
                 sugg = did_you_mean(kw.name, params)

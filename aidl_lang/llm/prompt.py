@@ -38,10 +38,11 @@ live inside structures. Top of file: `units mm` (default; also `units in`), `par
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
-`for i in range(n) { ... }` (names defined in a loop become lists: `knob[0]`),
+`for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
+`knob[0]`),
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
-(`//` after an operand is floor division). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
+(not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
 radians: write `cos(i * 10 deg)`).
 
@@ -84,7 +85,7 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
-Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts get W0511 unless
+Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` lays them out flat for cutting).
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
@@ -93,7 +94,7 @@ with `fully constrained` or `N degrees of freedom left`: some shapes could still
 turn; the program is valid, but pin what matters with constraints.
 `aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
-meant (e.g. a shape moved far from its guess): fix it like an error. When fixing errors, keep
+meant: fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
 delete it.
 """
@@ -181,7 +182,8 @@ def example_programs(names: list[str] | None = None) -> list[tuple[str, str]]:
 def stdlib() -> str:
     """The standard library's templates, one line each, from their doc comments."""
     return ("Standard library: templates to instantiate, never to rewrite by hand (each also "
-            "takes `cx, cy`: where its center starts; `aidl docs NAME` gives every unit, "
+            "takes `cx, cy`: where its center starts; yours do not: `part.bb.center == (x, y)` "
+            "places them; `aidl docs NAME` gives every unit, "
             "member and an example):\n" + stdlib_lines())
 
 
