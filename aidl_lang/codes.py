@@ -48,6 +48,14 @@ forms. The hint lists the accepted forms.
 A keyword argument that the primitive, constraint or template does not have.
 
     Circle(center=(0, 0), radius=5, width=3)     # a circle has no `width`: its size is `radius`
+
+When the argument belongs to a sibling constructor the message names it and the fix is the same
+call under the sibling's name: `Rectangle(..., corner_radius=3)` (or `fillet=`, `radius=`,
+`rounded=`) becomes `RoundedRectangle(..., corner_radius=3)`; `Circle(..., rx=, ry=)` an
+`Ellipse`, `Ellipse(..., radius=)` a `Circle`, `Arc(..., width=)` an `ArcSlot`. Only the standard
+library's templates take `cx`, `cy`: given to a template of your file (with no such parameter)
+they are one error whose fix places the instance by a constraint instead
+(`k = knob(r=4, cx=10, cy=5)` becomes `k = knob(r=4)` and `k.bb.center == (10, 5)`).
 """),
     "E0106": ("missing argument", """
 A required argument is missing. Dimensions (width, height, radius) are required because they

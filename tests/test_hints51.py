@@ -1,0 +1,202 @@
+"""Issue 51, "messages that misled": hints whose code compiles when pasted as given.
+
+AllowOverlap takes a loop's list and any number of refillers (W0501 names them all at once),
+silences W0511 for two parts of an assembly; E0105 redirects an argument of a sibling
+constructor (`Rectangle(..., corner_radius=3)`: RoundedRectangle) and placement keywords on
+a template of the file (`cx`, `cy`) to a constraint; the prompt says so.  The law at the end
+applies every fix and every "write `STMT` in `PATH`" hint to the program it came from."""
+import re
+
+import pytest
+
+from conftest import EXAMPLES, ROOT
+
+WHEEL = """solid wheel {
+    solid rim {
+        outer = Circle(center=(0, 0), radius=40)
+        hole inner { c = Circle(center=(0, 0), radius=34) }
+    }
+    solid frame {
+        hub = Circle(center=(0, 0), radius=12)
+    }
+    for i in range(6) {
+        spoke = Rectangle(center=(20 * cos(i * 60 deg), 20 * sin(i * 60 deg)), width=30, height=4, rotation=i * 60 deg)
+    }
+%s}
+"""
+
+CLOCK = """assembly clock {
+    solid face { disc = Circle(center=(0, 0), radius=50) }
+    solid hour_hand { arm = Rectangle(center=(0, 60), width=6, height=30) }
+%s}
+"""
+
+MOON = """solid panel {
+    solid frame {
+        body = Rectangle(center=(0, 0), width=80, height=80)
+        hole opening { c = Circle(center=(0, 0), radius=30) }
+    }
+    solid moon {
+        disc = Circle(center=(0, 0), radius=20)
+        hole bite { b = Circle(center=(8, 4), radius=14) }
+    }
+}
+"""
+
+KNOB = """def knob(r=5) -> solid {
+    c = Circle(center=(0, 0), radius=r)
+}
+solid panel {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    Fixed(body)
+    k = knob(r=4, cx=30, cy=12)
+    assert k.bb.center_x > 29 and k.bb.center_x < 31 and k.bb.center_y > 11, "placed"
+}
+"""
+
+RECT = """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=20, %s=3)
+}
+"""
+
+PATTERN = """solid plate {
+    solid base {
+        body = Rectangle(center=(0, 0), width=80, height=30)
+        hole slot { s = Rectangle(center=(0, 0), width=60, height=10) }
+    }
+    solid ribs {
+        r = Rectangle(center=(-20, 0), width=3, height=20)
+        copies = LinearPattern(r, 3, (20, 0))
+    }
+    for i in range(2) {
+        solid post { p = Circle(center=(-25 + 50 * i, 0), radius=3) }
+    }
+    Circle(center=(5, 0), radius=2)
+}
+"""
+
+FIXTURES = {"pattern": PATTERN, "wheel": WHEEL % "", "clock": CLOCK % "", "moon": MOON, "knob": KNOB,
+            "rect": RECT % "corner_radius", "fillet": RECT % "fillet",
+            "ellipse": "solid s {\n    e = Circle(center=(0, 0), rx=5, ry=3)\n}\n"}
+
+
+def codes(c, code):
+    return [d for d in c.sink.items if d.code == code]
+
+
+def test_W0501_names_every_refiller_with_its_share_and_one_hint_for_all(compile_text):
+    c = compile_text(WHEEL % "")
+    (w,) = codes(c, "W0501")
+    assert "`wheel.spoke` (6 copies, 19% of the hole)" in w.message
+    assert "solid `wheel.frame` (12% of the hole)" in w.message
+    assert "only 73% of it still cuts through" in w.message
+    assert len(w.labels) == 2
+    assert "write `AllowOverlap(rim.inner, spoke, frame)` in `wheel`" in w.hint
+    done = compile_text(WHEEL % "    AllowOverlap(rim.inner, spoke, frame)\n")
+    assert done.ok and not codes(done, "W0501") and not done.sink.errors()
+
+
+def test_AllowOverlap_takes_a_loops_list_and_the_next_W0501_says_what_is_left(compile_text):
+    c = compile_text(WHEEL % "    AllowOverlap(rim.inner, spoke)\n")
+    assert c.ok, [(d.code, d.message) for d in c.sink.items]
+    (w,) = codes(c, "W0501")
+    assert "refilled by solid `wheel.frame` (12% of the hole)" in w.message
+    assert "AllowOverlap already allows `wheel.spoke` (6 copies, 19% of the hole)" in w.message
+    assert "`AllowOverlap(rim.inner, frame)`" in w.hint
+
+
+def test_AllowOverlap_of_two_assembly_parts_silences_W0511(compile_text):
+    (w,) = codes(compile_text(CLOCK % ""), "W0511")
+    assert "`AllowOverlap(face, hour_hand)` in `clock`" in w.hint
+    c = compile_text(CLOCK % "    AllowOverlap(face, hour_hand)\n")
+    assert c.ok and not codes(c, "W0511") and not codes(c, "E0108")
+
+
+def test_AllowOverlap_of_no_hole_and_one_solid_is_still_E0108(compile_text):
+    c = compile_text("solid s {\n    a = Circle(center=(0, 0), radius=5)\n"
+                     "    b = Circle(center=(3, 0), radius=5)\n    AllowOverlap(a, b)\n}\n")
+    (e,) = codes(c, "E0108")
+    assert "two solid parts" in e.message and "a Circle and a Circle" in e.message
+
+
+@pytest.mark.parametrize("kw", ["corner_radius", "fillet", "radius", "rounded", "r"])
+def test_E0105_on_Rectangle_redirects_to_RoundedRectangle_with_the_call(compile_text, kw):
+    c = compile_text(RECT % kw)
+    (e,) = codes(c, "E0105")
+    assert e.message.startswith(f"`Rectangle` has no argument `{kw}`: `corner_radius` is an "
+                                "argument of `RoundedRectangle`")
+    call = "RoundedRectangle(center=(0, 0), width=40, height=20, corner_radius=3)"
+    assert f"write `{call}`" in e.hint and "did you mean" not in e.hint
+    assert e.fix.replacement == call and (e.span.line, e.span.col) == (2, 58)
+
+
+def test_E0105_on_a_template_of_the_file_for_cx_cy_places_by_a_constraint(compile_text):
+    c = compile_text(KNOB)
+    (e,) = codes(c, "E0105")
+    assert "has no parameters `cx`, `cy`: only the standard library's templates" in e.message
+    assert "`k = knob(r=4)` followed by the constraint `k.bb.center == (30, 12)`" in e.hint
+    assert "`cx=0, cy=0`" in e.hint
+
+
+def test_the_prompt_says_what_AllowOverlap_templates_and_loop_names_do():
+    from aidl_lang.llm.prompt import system_prompt, word_count
+    text = system_prompt()
+    assert "AllowOverlap(a, b, ...)" in text and "assembly parts (W0511)" in text
+    assert "yours do not: `part.bb.center == (x, y)` places them" in text
+    assert "the current copy inside, the list after" in text
+    assert word_count(text) <= 3440
+
+
+# ------------------------------------------------------------------ the law of hints
+STMT = re.compile(r"write `([A-Za-z_]\w*\([^`]*\))` in `([\w.\[\]]+)`")
+
+
+def _apply(src, d, model):
+    """The program with diagnostic ``d``'s proposed code applied, or None when it proposes
+    none: its fix replaces its span; a "write `STMT` in `PATH`" hint inserts the statement at
+    the end of that structure's block."""
+    if d.fix is not None:
+        sp = d.fix.span
+        return src[:sp.start] + d.fix.replacement + src[sp.end:]
+    m = STMT.search(d.hint or "")
+    if m is None:
+        return None
+    stmt, path = m.groups()
+    s = next(x for x in model.structures if x.path == path)
+    end = s.span.end
+    assert src[end - 1] == "}", (path, src[s.span.start:end])
+    return src[:end - 1] + f"    {stmt}\n" + src[end - 1:]
+
+
+def _programs():
+    out = [(name, src) for name, src in FIXTURES.items()]
+    for p in EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl")) \
+            + sorted((ROOT / "benchmarks" / "model_runs").glob("*/*/*.aidl")):
+        out.append((p.name, p.read_text()))
+    return out
+
+
+@pytest.mark.parametrize("name,src", _programs(), ids=[n for n, _ in _programs()])
+def test_every_proposed_code_compiles_and_removes_its_diagnostic(compile_text, name, src):
+    c = compile_text(src, name if name.endswith(".aidl") else name + ".aidl")
+    model = getattr(c, "model", None)
+    tried = 0
+    for d in list(c.sink.items):
+        if d.code == "E0101":
+            continue            # a misspelt name's fix is the nearest name: not always meant
+        new = _apply(src, d, model)
+        if new is None:
+            continue
+        tried += 1
+        after = compile_text(new, "fixed_" + (name if name.endswith(".aidl") else name + ".aidl"))
+        before_errors = {x.code for x in c.sink.items if x.severity == "error"}
+        errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"
+                and x.code not in before_errors]
+        assert not errs, (d.code, d.message, errs)
+        same = [x for x in after.sink.items if x.code == d.code
+                and x.message.split(":")[0] == d.message.split(":")[0]]
+        assert len(same) < len([x for x in c.sink.items if x.code == d.code
+                                and x.message.split(":")[0] == d.message.split(":")[0]]), \
+            (d.code, d.message, [x.message for x in same])
+    if name in FIXTURES:
+        assert tried, "each issue fixture proposes code"
