@@ -360,6 +360,9 @@ When the refill is intended (a boss over a relief cut, say), silence it for that
 with `AllowOverlap(body.key, shackle)` written in `lock` (`aidl docs AllowOverlap`). It takes
 any number of refillers and lists: `AllowOverlap(rim.inner, spoke, frame)`, where `spoke` is
 the list a `for` loop made, allows all the spokes and the frame; the hint writes that call.
+A shape drawn inside the opening (at least half of its area lies in the hole: a wheel's hub
+and spokes in its rim's opening, a moon in a window) is put there on purpose and not
+reported; only what covers the hole from outside it is.
 """),
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
@@ -418,10 +421,12 @@ single opening made of several shapes (a keyhole: a circle and a slot) is drawn 
 of ONE hole structure, whose faces may overlap without a warning.
 A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is
 often in another unit or frame than meant). Unless it cuts a solid that the other hole does not
-cut and that refills that hole's opening (a crescent: a moon inside a frame's window, bitten by
-its own hole): then the warning names the refilling solid and the area the inner hole cuts from
-it, and `AllowOverlap(window, moon)` in the structure holding both solids marks the refill as
-intended (it silences this warning and W0501 for the pair).
+cut and that refills that hole's opening: a solid drawn inside the opening (at least half of it
+there: a moon in a frame's window bitten by its own hole into a crescent, a hub with its axle
+hole in a rim's opening) is the design and not warned; one that covers the opening from outside
+it (a tab reaching over a window, with a hole inside the window) is named with the area the
+inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holding both solids
+marks the refill as intended (it silences this warning and W0501 for the pair).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)

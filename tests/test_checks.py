@@ -840,31 +840,56 @@ MOON = """solid badge {
 }"""
 
 
-def test_W0508_a_bite_inside_an_opening_that_a_solid_refills(compile_text):
-    """A crescent: the moon refills the frame's window and its bite cuts the moon, so the
-    bite is not \"nothing of its own\": the warning names the refilling solid and its area,
-    never advises deleting the bite, and its AllowOverlap hint compiles and silences it (and
-    W0501 for the same pair)."""
-    import math
+TAB = """solid badge {
+    solid frame {
+        plate = RoundedRectangle(center=(0, 0), width=100, height=100, corner_radius=8)
+        hole window { w = Circle(center=(0, 0), radius=40) }
+    }
+    solid tab {
+        t = Rectangle(center=(0, -45), width=30, height=30)
+        hole pin { c = Circle(center=(0, -37), radius=2) }
+    }
+    ALLOW
+}"""
+
+
+def test_W0508_a_moon_drawn_in_the_window_and_bitten_is_silent(compile_text):
+    """A crescent: the moon lies inside the frame's window and its bite cuts the moon. The
+    moon is drawn in the opening on purpose and the bite makes the crescent: the picture is
+    right, so neither W0508 (it said "delete it", then "refills") nor W0501 fires."""
     c = compile_text(MOON.replace("ALLOW", ""))
     assert c.ok
-    (w,) = [d for d in c.sink.items if d.code == "W0508"]
-    assert (w.span.line, w.span.col) == (8, 9)
-    # the bite's cut: the r=30 disc and the r=26 circle 16.12 mm apart, their lens
+    assert not [d for d in c.sink.items if d.code in ("W0508", "W0501")]
+    # the bite is cut: the moon's area is its disc less the lens it shares with the bite
+    import math
     r1, r2, dd = 30.0, 26.0, math.hypot(14, 8)
     lens = (r1 * r1 * math.acos((dd * dd + r1 * r1 - r2 * r2) / (2 * dd * r1))
             + r2 * r2 * math.acos((dd * dd + r2 * r2 - r1 * r1) / (2 * dd * r2))
             - 0.5 * math.sqrt((-dd + r1 + r2) * (dd + r1 - r2) * (dd - r1 + r2) * (dd + r1 + r2)))
-    head = ("hole `badge.moon.bite` lies wholly inside hole `badge.frame.window` of `badge`, "
-            "which solid `badge.moon` refills: hole `badge.moon.bite` cuts ")
+    moon = next(x for x in c.model.structures if x.path == "badge.moon")
+    assert c.drawing.shapes[moon].area() == pytest.approx(math.pi * 900 - lens, rel=1e-3)
+
+
+def test_W0508_a_hole_inside_an_opening_in_a_solid_that_covers_it_from_outside(compile_text):
+    """A tab below the frame reaches over the window's bottom (most of it lies outside the
+    window) and its pin hole lies inside the window: the pin is said as cutting the refill
+    (the tab's area, never "delete it"), and the AllowOverlap hint compiles and silences it
+    (and W0501 for the same pair)."""
+    import math
+    c = compile_text(TAB.replace("ALLOW", ""))
+    assert c.ok
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert (w.span.line, w.span.col) == (8, 9)
+    head = ("hole `badge.tab.pin` lies wholly inside hole `badge.frame.window` of `badge`, "
+            "which solid `badge.tab` refills: hole `badge.tab.pin` cuts ")
     assert w.message.startswith(head) and w.message.endswith(
-        " mm^2 of `badge.moon` inside the opening, not the opening itself")
-    # measured on the chords of the circles (CHORD_TOL): within 0.1% of the exact lens
-    assert float(w.message[len(head):].split()[0]) == pytest.approx(lens, rel=1e-3)
+        " mm^2 of `badge.tab` inside the opening, not the opening itself")
+    # measured on the r = 2 mm circle's chords (CHORD_TOL): within 0.5% of the exact 4 pi
+    assert float(w.message[len(head):].split()[0]) == pytest.approx(4 * math.pi, rel=5e-3)
     assert "delete" not in w.hint and "cuts nothing" not in w.message
-    assert "`AllowOverlap(frame.window, moon)` in `badge`" in w.hint
+    assert "`AllowOverlap(frame.window, tab)` in `badge`" in w.hint
     assert sorted(lab.span.line for lab in w.labels) == [4, 6]
-    fixed = compile_text(MOON.replace("ALLOW", "AllowOverlap(frame.window, moon)"))
+    fixed = compile_text(TAB.replace("ALLOW", "AllowOverlap(frame.window, tab)"))
     assert fixed.ok
     assert not [d for d in fixed.sink.items if d.code in ("W0508", "W0501")]
 

@@ -25,6 +25,18 @@ WHEEL = """solid wheel {
 %s}
 """
 
+GRILLE = """solid grille {
+    solid base {
+        body = Rectangle(center=(0, 0), width=80, height=40)
+        hole slot { s = Rectangle(center=(0, 0), width=60, height=10) }
+    }
+    solid bar { b = Rectangle(center=(-30, 0), width=6, height=40) }
+    for i in range(3) {
+        rib = Rectangle(center=(-10 + 10 * i, 0), width=2, height=30)
+    }
+%s}
+"""
+
 CLOCK = """assembly clock {
     solid face { disc = Circle(center=(0, 0), radius=50) }
     solid hour_hand { arm = Rectangle(center=(0, 60), width=6, height=30) }
@@ -65,17 +77,17 @@ PATTERN = """solid plate {
         hole slot { s = Rectangle(center=(0, 0), width=60, height=10) }
     }
     solid ribs {
-        r = Rectangle(center=(-20, 0), width=3, height=20)
+        r = Rectangle(center=(-20, 0), width=3, height=30)
         copies = LinearPattern(r, 3, (20, 0))
     }
     for i in range(2) {
-        solid post { p = Circle(center=(-25 + 50 * i, 0), radius=3) }
+        solid post { p = Rectangle(center=(-25 + 50 * i, 8), width=8, height=10) }
     }
-    Circle(center=(5, 0), radius=2)
+    Rectangle(center=(5, 8), width=8, height=10)
 }
 """
 
-FIXTURES = {"pattern": PATTERN, "wheel": WHEEL % "", "clock": CLOCK % "", "moon": MOON, "knob": KNOB,
+FIXTURES = {"pattern": PATTERN, "wheel": WHEEL % "", "grille": GRILLE % "", "clock": CLOCK % "", "moon": MOON, "knob": KNOB,
             "rect": RECT % "corner_radius", "fillet": RECT % "fillet",
             "ellipse": "solid s {\n    e = Circle(center=(0, 0), rx=5, ry=3)\n}\n"}
 
@@ -85,24 +97,42 @@ def codes(c, code):
 
 
 def test_W0501_names_every_refiller_with_its_share_and_one_hint_for_all(compile_text):
-    c = compile_text(WHEEL % "")
+    """A slot cut in `base`, covered from outside it by a bar (6 x 40 mm over its left 3 mm:
+    30 mm^2, 5% of 600) and three ribs of a loop (2 x 30 mm, each 20 mm^2 over the slot: 60
+    mm^2, 10%): one warning names both, 85% still cuts, one AllowOverlap for all."""
+    c = compile_text(GRILLE % "")
     (w,) = codes(c, "W0501")
-    assert "`wheel.spoke` (6 copies, 19% of the hole)" in w.message
-    assert "solid `wheel.frame` (12% of the hole)" in w.message
-    assert "only 73% of it still cuts through" in w.message
+    assert "`grille.rib` (3 copies, 10% of the hole)" in w.message
+    assert "solid `grille.bar` (5% of the hole)" in w.message
+    assert "only 85% of it still cuts through" in w.message
     assert len(w.labels) == 2
-    assert "write `AllowOverlap(rim.inner, spoke, frame)` in `wheel`" in w.hint
-    done = compile_text(WHEEL % "    AllowOverlap(rim.inner, spoke, frame)\n")
+    assert "write `AllowOverlap(base.slot, rib, bar)` in `grille`" in w.hint
+    done = compile_text(GRILLE % "    AllowOverlap(base.slot, rib, bar)\n")
     assert done.ok and not codes(done, "W0501") and not done.sink.errors()
 
 
 def test_AllowOverlap_takes_a_loops_list_and_the_next_W0501_says_what_is_left(compile_text):
-    c = compile_text(WHEEL % "    AllowOverlap(rim.inner, spoke)\n")
+    c = compile_text(GRILLE % "    AllowOverlap(base.slot, rib)\n")
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
     (w,) = codes(c, "W0501")
-    assert "refilled by solid `wheel.frame` (12% of the hole)" in w.message
-    assert "AllowOverlap already allows `wheel.spoke` (6 copies, 19% of the hole)" in w.message
-    assert "`AllowOverlap(rim.inner, frame)`" in w.hint
+    assert "refilled by solid `grille.bar` (5% of the hole)" in w.message
+    assert "AllowOverlap already allows `grille.rib` (3 copies, 10% of the hole)" in w.message
+    assert "`AllowOverlap(base.slot, bar)`" in w.hint
+
+
+def test_W0501_is_silent_for_a_hub_and_spokes_drawn_in_the_rims_opening(compile_text):
+    """The wheel of issue 51's model runs: the hub and the six spokes lie inside the rim's
+    opening (the spokes 29 of their 30 mm), drawn there on purpose: the picture is right, so
+    no W0501 (it fired, and was counted a false alarm). A shape that mostly lies outside the
+    hole it covers (the grille's bar and ribs) is still reported."""
+    c = compile_text(WHEEL % "")
+    assert c.ok and not codes(c, "W0501")
+    # ribs of 2 x 19.9 mm: just over half of each lies in the 10 mm slot, so drawn in
+    c2 = compile_text(GRILLE.replace("height=30)", "height=19.9)") % "")
+    (w,) = codes(c2, "W0501")
+    assert "`grille.rib`" not in w.message.split(";")[0]
+    assert "drawn inside the opening, so meant: `grille.rib` (3 copies, 10% of the hole)" \
+        in w.message
 
 
 def test_AllowOverlap_of_two_assembly_parts_silences_W0511(compile_text):
@@ -198,5 +228,5 @@ def test_every_proposed_code_compiles_and_removes_its_diagnostic(compile_text, n
         assert len(same) < len([x for x in c.sink.items if x.code == d.code
                                 and x.message.split(":")[0] == d.message.split(":")[0]]), \
             (d.code, d.message, [x.message for x in same])
-    if name in FIXTURES:
+    if name in FIXTURES and name not in ("wheel", "moon"):   # drawn in the opening: silent
         assert tried, "each issue fixture proposes code"

@@ -95,7 +95,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
         if s.kind == "solid":
             tick(s)
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
-            covered = _report_openings(a, s, min_wall, sink)
+            covered = _report_openings(a, s, min_wall, sink, d.shapes)
             _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
             _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
             tick(s)

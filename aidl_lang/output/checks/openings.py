@@ -2,7 +2,8 @@
 
 * ``W0501`` a hole partly or wholly refilled by a sibling or ancestor solid (a hole cuts only
   the solid it is declared in; a solid united later fills it again), unless ``AllowOverlap``
-  says so (:func:`_intended`);
+  says so (:func:`_intended`) or the refilling shapes are drawn inside the opening (at least
+  :data:`DRAWN_IN` of their area: a wheel's hub and spokes, a moon in a window);
 * ``W0502`` a hole that cuts nothing (it lies outside its solid);
 * ``W0503`` a hole that removes all of its solid;
 * ``W0507`` (between features) a wall thinner than the minimum between two holes, or a hole and
@@ -210,6 +211,7 @@ class _Near:
 # deviate from them by up to CHORD_TOL each, so two circles that touch can come out up to
 # 2 CHORD_TOL apart: below that, the gap is the tessellation's, not the design's.
 TOUCH = 2 * CHORD_TOL
+DRAWN_IN = 0.5      # of a refiller's area inside the hole it refills: drawn into the opening
 
 
 @dataclass
@@ -329,16 +331,19 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
     return None
 
 
-def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink) -> set:
+def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
+                     shapes: dict | None = None) -> set:
     """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
-    the name pairs reported (the opening test of :func:`_check_walls` skips them)."""
+    the name pairs reported (the opening test of :func:`_check_walls` skips them).
+    ``shapes``: the booleans' shape of each structure (``Drawing.shapes``), which tells a
+    solid drawn inside another hole's opening (:func:`_refiller`)."""
     covered = set()
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
         inner = _inner(a, i, j, common)
         if inner is not None and a.cuts:
-            refill = _refiller(a.cuts[i + j - inner - 1], a.cuts[inner - 1])
+            refill = _refiller(a.cuts[i + j - inner - 1], a.cuts[inner - 1], shapes)
             if refill is not None:
                 if refill[0] is not None:
                     _report_refilled(a, inner, i + j - inner, common, refill, s, sink)
@@ -385,15 +390,18 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink)
     return covered
 
 
-def _refiller(outer, inner):
+def _refiller(outer, inner, shapes: dict | None = None):
     """When hole cut ``inner`` lies wholly inside hole cut ``outer`` but cuts a solid that
     ``outer`` does not (its solid is not ``outer``'s solid or inside it: a moon inside a
     frame's window, bitten by its own hole), that solid refills ``outer`` there and ``inner``
     cuts it: ``(refiller, common)``, the structure below the two solids' common ancestor
     ``common`` that holds ``inner``'s solid; ``(None, None)`` when ``AllowOverlap(outer's
-    hole, refiller)`` says the refill is intended, or when ``inner`` is declared in that
-    ancestor itself (a wheel's axle hole inside its rim's opening, which the wheel's own hub
-    refills: a hole cuts every solid of its structure, the refill included, as meant); None
+    hole, refiller)`` says the refill is intended, when the refiller is drawn inside the
+    opening (at least :data:`DRAWN_IN` of its shape in ``shapes`` lies in ``outer``'s hole: a
+    hub with its axle hole in a rim's opening, a moon bitten by its own hole in a window), or
+    when ``inner`` is declared in that ancestor itself (a wheel's axle hole inside its rim's
+    opening, which the wheel's own hub refills: a hole cuts every solid of its structure, the
+    refill included, as meant); None
     when ``outer`` cuts ``inner``'s solid too (``inner`` then cuts nothing of its own)."""
     if inner.owner.is_within(outer.owner):
         return None
@@ -409,6 +417,11 @@ def _refiller(outer, inner):
         refill = refill.parent
     if _intended(outer.hole, outer.owner, refill):
         return None, None
+    if shapes is not None:
+        shp, opening = shapes.get(refill), shapes.get(outer.hole)
+        if opening is not None and _area(shp) > 0 \
+                and _area(shp ^ opening) >= DRAWN_IN * _area(shp):
+            return None, None
     return refill, common
 
 
@@ -484,7 +497,14 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
         if node.parent is part:
             break
         node = a
-    if allowed and not groups:
+    # shapes drawn inside the opening (a hub and spokes in a rim's opening, a moon in a
+    # window) are put there on purpose: only what covers the hole from outside it is reported
+    drawn_in = {}
+    for key, (obj, span, a, shapes) in list(groups.items()):
+        shp = shapes[0] if len(shapes) == 1 else _union(shapes)
+        if _area(shp ^ hole_shape) >= DRAWN_IN * _area(shp):
+            drawn_in[key] = groups.pop(key)
+    if not groups:
         return
     survives = max(0.0, cut_area - refilled)
     # the outermost structure holding a refiller: the common parent of the hole and all of them
@@ -505,6 +525,8 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     also = ""
     if allowed:
         also = "; AllowOverlap already allows " + ", ".join(said(allowed.values()))
+    if drawn_in:
+        also += "; drawn inside the opening, so meant: " + ", ".join(said(drawn_in.values()))
     refs = []
     for obj, _, _, shapes in groups.values():
         r = _ref(obj, outer)
