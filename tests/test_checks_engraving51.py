@@ -242,3 +242,26 @@ def test_the_explained_examples_show_the_new_warnings(compile_text):
     assert any("`plate.marks.arrow` ends on the cut edge of `plate` (the outline) at "
                "(30.00, 10.00)" in m for m in msgs)
     assert any("`plate.marks.edge` runs along the cut edge" in m for m in msgs)
+
+
+def test_W0516_a_ring_round_a_hole_and_odd_marks(compile_text):
+    """A ring engraved 0.2 mm outside a 3 mm hole comes within a hair of the hole's edge (the
+    hole a 32-gon: 0.18 mm from its chords): named with the edge and where, the hint the
+    distance to add; a zero-length line and an empty text in the drawing give no error."""
+    src = """units mm
+solid p {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h { c = Circle(center=(10, 0), radius=3) }
+    drawing d {
+        z = Line((0, 0), (0, 0))
+        t = Text("", (0, 0), size=3)
+        ring = Circle(center=(10, 0), radius=%s)
+    }
+}"""
+    (w,) = warnings(compile_text, src % "3.2", "W0516")
+    gap = float(re.search(r"comes (\S+) mm from the cut edge of `p` \(a hole's edge\)",
+                          w.message).group(1))
+    assert w.span.line == 8 and "`p.d.ring`" in w.message
+    assert 0.18 <= gap <= 0.2
+    assert f"keep `p.d.ring` {math.ceil((0.5 - gap) * 100) / 100:.2f} mm further" in w.hint
+    assert not warnings(compile_text, src % "3.6", "W0516")

@@ -363,13 +363,18 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
                    f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
                    "edge")
             if len(group) > 1:
-                fix = (f"end each copy of `{g.label}` at least "
-                       f"{max(_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0] or t for f in group):.2f}"
-                       f" mm further inside (shorten it), so that it stops {CUT_CLEAR} mm short "
-                       "of the edge")
+                ts = [_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0]
+                      if f[7] and f[6] is not None else None for f in group]
+                if all(x is not None for x in ts):
+                    fix = (f"end each copy of `{g.label}` at least {max(ts):.2f} mm further "
+                           f"inside (shorten it), so that it stops {CUT_CLEAR} mm short of the "
+                           "edge")
+                else:
+                    fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
+                           "inside the edge")
         else:
-            fix = (f"move `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
-                   "further inside, away from the edge (or make it smaller)")
+            fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
+                   "further from the edge (move it, or change its size)")
         more = ""
         if len(group) > 1:
             rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
