@@ -493,21 +493,31 @@ meant, draw it as one shape.
         }
     }
 """),
-    "W0513": ("text drawn over text or over a mark", """
-Engraved text is drawn over other text, or over an engraved mark (a line, arc or circle), so
-it cannot be read: two protractor labels placed on each other, a number on its tick mark.
-Text counts by the box of its pen strokes (in its own frame, turned with it): two texts whose
-boxes overlap by more than 10% of the smaller one, or a mark running through a text's box
-(less a margin of a tenth of its size) over more than a quarter of its size. Two labels whose
-boxes come closer than half the text size (about a word space) run into each other and read as
-one string ("140130120" along a protractor's arc; single letters, as `text_on_arc` lays out, are not compared): one warning per statement, with the gap and
-the number of such pairs. The warning names both, with the overlap's area, the gap, or the
-length of the mark inside the text. Move the text clear
-(beside the tick, further out), or make it smaller.
+    "W0513": ("text drawn over or too close to text or a mark", """
+Engraved text is drawn over other text, or over an engraved mark (a line, arc, circle or
+outline), or so close to a mark that the two read as touching: two protractor labels placed on
+each other, a number on its tick mark, a clock's 12 o'clock tick running in between the "1" and
+the "2", a frame whose edge grazes the letters. Text counts by the box of its pen strokes (in
+its own frame, turned with it): two texts whose boxes overlap by more than 10% of the smaller
+one, or a mark running through a text's box (less a margin of a tenth of its size) over more
+than a quarter of its size. Two labels whose boxes come closer than half the text size (about a
+word space) run into each other and read as one string ("140130120" along a protractor's arc;
+single letters, as `text_on_arc` lays out, are not compared). A mark too close: it comes nearer
+the text's strokes than the text's clearance, a quarter of its size and at least 0.3 mm (the
+letters of a word stand 0.24 to 0.45 of the size apart, so a closer mark reads as one of its
+strokes; 0.3 mm is about an engraved line's width), or it enters the text's box by more than
+0.1 mm (between its letters). Close labels and close marks give one warning per pair of
+statements (the closest pair, copies made in a loop named by index: `ticks[0]`), with the
+number of such pairs. The warning names both, with the overlap's area, the gap, or the length
+of the mark inside the text, and how much to shorten the mark or move the text. Move the text
+clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
+smaller.
 
     drawing scale {
         tick = Line(start=(40, 0), end=(48, 0))
         zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
+        frame = Rectangle(center=(0, 20), width=22, height=10)
+        name = Text("SCALE", (0, 20), size=5, valign="middle")     # 0.29 mm from the frame
     }
 """),
     "W0514": ("hole only touches the outer edge", """
@@ -537,16 +547,24 @@ out as a sliver. The warning gives its area, width, length and place. Make the s
         bottom = Rectangle(center=(0, -6), width=30, height=2)
     }
 """),
-    "W0516": ("engraving along the cut edge", """
-An engraved mark lies along the part's outline (within 0.05 mm) over more than a third of it:
-the laser engraves exactly where it cuts, so the mark is lost in the cut (a protractor's 0 and
-180 degree ticks drawn on its straight edge, a border drawn on the outline). The warning names
-the mark, the part and how much of the mark lies on the outline. Move the mark inside, or leave
-it out: the cut already draws the edge.
+    "W0516": ("engraving meets the cut edge", """
+An engraved mark meets the part's cut edge (its outline or a hole's edge), so the laser engraves
+where it cuts. Along the edge: the mark lies on the outline (within 0.05 mm) over more than a
+third of it and is lost in the cut (a protractor's 0 and 180 degree ticks drawn on its straight
+edge, a border drawn on the outline); the warning says how much of the mark lies on it. Against
+the edge: the mark (not text) ends on the edge or comes within 0.5 mm of it (a knight's mouth
+line drawn to the outline, a line ending a hair short of it: the sliver left between engraving
+and cut chars or breaks off); the warning gives the gap in mm, which edge and where (x, y), and
+how far inside to end or move the mark. Straight ticks that end on the edge and meet it square,
+three or more on one part, are a scale hanging from the edge (a ruler, a protractor) and are
+not warned. Move the mark inside, or leave it out: the cut already draws the edge.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=40)
-        drawing marks { edge = Line((-30, -20), (30, -20)) }   # on the bottom edge
+        drawing marks {
+            edge = Line((-30, -20), (30, -20))   # on the bottom edge
+            arrow = Line((0, 0), (30, 10))       # ends on the right edge
+        }
     }
 """),
     "W0517": ("parts collide when assembled", """

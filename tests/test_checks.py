@@ -1122,7 +1122,8 @@ solid board {
 def test_W0516_a_tick_drawn_on_the_cut_edge(compile_text):
     """A half-disc protractor whose 0 deg tick lies on its straight (cut) edge: 100% of the
     tick on the outline; the 90 deg tick, perpendicular to the rim, touches it at one end only
-    (1 of 9 samples) and is silent."""
+    (1 of 9 samples): not along the edge, but a lone mark that ends on it (fewer than three
+    such ticks are not a scale), so it meets the cut (tests/test_checks_engraving51.py)."""
     src = """units mm
 solid protractor {
     disc = Circle(center=(0, 0), radius=80)
@@ -1132,9 +1133,10 @@ solid protractor {
         tick90 = Line((0, 80), (0, 72))
     }
 }"""
-    (w,) = warnings(compile_text, src, "W0516")
+    w, end = warnings(compile_text, src, "W0516")
     assert "`protractor.scale.tick0`" in w.message and "100% of it" in w.message
     assert w.span.line == 6
+    assert end.span.line == 7 and "`protractor.scale.tick90` ends on the cut edge" in end.message
 
 
 VOIDS = """units mm

@@ -3,7 +3,8 @@
 * ``W0505`` engraving outside the material or across a hole (the part grown by
   :data:`ENGRAVE_TOL`);
 * ``W0516`` an engraved mark that runs along the cut edge (the laser engraves over the cut,
-  so it is not seen).
+  so it is not seen), or that comes within :data:`CUT_CLEAR` of it (ends on it, or a hair
+  short of it: the engraving meets the cut).
 
 Also the sample points of engraving items (:func:`_sample`, :func:`_samples`), which the text
 check (:mod:`.text`) measures marks with."""
@@ -172,10 +173,11 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             continue
         by_part.setdefault(part, []).append((g, items))
     verdicts: dict = {}
+    warned: set = set()             # the geometries a W0505 or W0516 already reports
     for part, geoms in by_part.items():
         shp = roots[part]
         pts = _samples([it for _, items in geoms for it in items])
-        _check_on_cut(part, shp, geoms, pts, (loops or {}).get(part), sink)
+        warned |= _check_on_cut(part, shp, geoms, pts, (loops or {}).get(part), sink)
         if _all_on_material(shp, pts, (loops or {}).get(part)):
             continue
         grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
@@ -198,27 +200,32 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         in_outline = _inside(pts[~inside], outer_of[part])
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
+        warned.add(g)
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({_pct(float((~inside).sum()), float(len(pts)))} of it is off the material)",
                      g.span,
                      hint="move or shrink the drawing so that it lies on the material (constrain "
                           "it, e.g. `Inside(label, body)`), or clear the hole it crosses")
+    for part, geoms in by_part.items():
+        _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
+                         (loops or {}).get(part), sink)
 
 
 ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
 
 
-def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> None:
+def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
     """W0516 for each engraved geometry of ``part`` of which more than :data:`ON_CUT` of the
     sample points (at least 3) lie within :data:`ENGRAVE_TOL` of the part's outline: a mark
     drawn along the cut edge (a protractor's 0 and 180 deg ticks on its straight edge), which
     the laser engraves over the cut, so it is not seen.  ``pts``: the samples of ``geoms`` in
-    order (:func:`_samples`)."""
+    order (:func:`_samples`).  Returns the geometries warned."""
     if loops is None:
         loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     on = _within(pts, _edges(loops), ENGRAVE_TOL)
+    said: set = set()
     if not on.any():
-        return
+        return said
     at = 0
     for g, items in geoms:
         n = sum(_n_samples(it) for it in items)
@@ -226,8 +233,325 @@ def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> None:
         at += n
         if k < 3 or k <= ON_CUT * n:
             continue
+        said.add(g)
         sink.warning("W0516", f"engraving `{g.label}` runs along the cut edge of `{part.path}` "
                      f"({_pct(float(k), float(n))} of it lies on the outline): the laser "
                      "engraves over the cut, so the mark is not seen", g.span,
                      hint="move the mark inside the outline (start it at least its line "
                           "width from the edge) or leave it out; the cut already draws the edge")
+    return said
+
+
+CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
+SQUARE = math.radians(15)   # a straight mark ending on the edge this near square is a tick
+SCALE = 3                # ticks ending square on the edges of one part: a scale (a ruler)
+
+
+def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
+    """W0516 for an engraved mark (not text) of ``part`` that comes within :data:`CUT_CLEAR`
+    of the part's cut edge (its outline or a hole's edge) without running along it (that is
+    :func:`_check_on_cut`) or off the material (W0505): a knight's mouth line drawn to the
+    outline, a line ending a hair short of it.  The laser's engraving meets the cut, and a
+    sliver under half a millimetre between them chars or breaks off.  Straight marks that
+    end on the edge (within :data:`ENGRAVE_TOL`) and meet it square (within :data:`SQUARE`),
+    :data:`SCALE` or more on one part, are a scale's ticks hanging from the edge (a ruler, a
+    protractor) and are not warned; nor is a mark whose ends all lie at the edge (a band or a
+    seam drawn across the part, a cord wrapped round a grip), nor any copy of a loop statement
+    of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
+    (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
+    items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
+    from ..nearby import box_pairs
+    geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
+    if not geoms:
+        return
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    loops = [lp for lp in loops if len(lp) >= 2]
+    if not loops:
+        return
+    E0 = np.concatenate(loops)
+    E1 = np.concatenate([np.roll(lp, -1, axis=0) for lp in loops])
+    hole = np.concatenate([np.full(len(lp), _signed(lp) < 0) for lp in loops])
+    segs = [_mark_segments(items) for _, items in geoms]
+    S0 = np.concatenate([sg[0] for sg in segs])
+    S1 = np.concatenate([sg[1] for sg in segs])
+    owner = np.repeat(np.arange(len(segs)), [len(sg[0]) for sg in segs])
+    boxes = np.vstack([np.column_stack([np.minimum(S0, S1), np.maximum(S0, S1)]),
+                       np.column_stack([np.minimum(E0, E1), np.maximum(E0, E1)])])
+    ns = len(S0)
+    pairs = box_pairs(boxes, CUT_CLEAR / 2)
+    pairs = pairs[(pairs[:, 0] < ns) & (pairs[:, 1] >= ns)]
+    if not len(pairs):
+        return
+    si, ej_all = pairs[:, 0], pairs[:, 1] - ns
+    d, pa, _ = _pair_gap(S0[si], S1[si], E0[ej_all], E1[ej_all])
+    mk = owner[si]
+    order = np.lexsort((d, mk))
+    mk, d, pa, ej_all = mk[order], d[order], pa[order], ej_all[order]
+    starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
+    stops = np.r_[starts[1:], len(mk)]
+    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR]
+    # each close mark's open ends against the edges near it, all in one array operation
+    ends = [_open_ends(*segs[k]) for k, _, _ in close]
+    qi, qe, qo, near_edges = [], [], [], []
+    for c, ((k, a, z), q) in enumerate(zip(close, ends)):
+        e = np.unique(ej_all[a:z])
+        near_edges.append(e)
+        for t in range(len(q)):
+            qi.append(np.full(len(e), len(qo)))
+            qe.append(e)
+            qo.append((c, t))
+    de_of: dict = {}
+    if qo:
+        qi, qe = np.concatenate(qi), np.concatenate(qe)
+        Q = np.array([ends[c][t] for c, t in qo])
+        dq, _, _ = _pair_gap(Q[qi], Q[qi], E0[qe], E1[qe])
+        o = np.lexsort((dq, qi))
+        qi, dq, qe = qi[o], dq[o], qe[o]
+        first = np.r_[0, np.flatnonzero(qi[1:] != qi[:-1]) + 1]
+        for f in first:
+            de_of[qo[int(qi[f])]] = (float(dq[f]), int(qe[f]))
+    found = []
+    bands: dict = {}                 # statement span -> its copies that run edge to edge
+    for c, (k, a, _) in enumerate(close):
+        g, items = geoms[k]
+        gap, pm, ej = float(d[a]), pa[a], int(ej_all[a])
+        q = ends[c]
+        de = np.array([de_of.get((c, t), (math.inf, -1))[0] for t in range(len(q))])
+        if len(q) >= 2 and (de < CUT_CLEAR).all():
+            bands[g.span] = bands.get(g.span, 0) + 1
+            continue                         # edge to edge: a band, a seam across the part
+        end = None
+        if len(q) and de.min() < CUT_CLEAR and de.min() - gap <= max(ENGRAVE_TOL, 1e-6):
+            t = int(np.argmin(de))
+            end, pm = q[t], q[t]
+            gap, ej = de_of[(c, t)]
+        tick = False
+        line = len(items) == 1 and items[0][0] == "line"
+        if line and end is not None and gap <= ENGRAVE_TOL:
+            u, w = np.asarray(items[0][2], float) - items[0][1], E1[ej] - E0[ej]
+            nu, nw = float(np.hypot(*u)), float(np.hypot(*w))
+            tick = nu > 0 and nw > 0 and abs(float(u @ w)) / (nu * nw) <= math.sin(SQUARE)
+        found.append((g, items, near_edges[c], gap, ej, pm, end, line, tick))
+    scale = sum(f[-1] for f in found) >= SCALE
+    copies: dict = {}
+    for g, _ in geoms:
+        copies[g.span] = copies.get(g.span, 0) + 1
+    by_statement: dict = {}
+    for f in found:
+        if f[-1] and scale:                  # a scale's ticks hanging from the edge: not warned
+            continue
+        if f[0].span is not None and 2 * bands.get(f[0].span, 0) >= copies[f[0].span]:
+            continue                         # one of a loop of bands (its last one ends inside)
+        by_statement.setdefault(f[0].span or f[0], []).append(f)
+    for group in by_statement.values():
+        group.sort(key=lambda f: f[3])
+        g, items, e, gap, ej, pm, end, line, _ = group[0]
+        which = "a hole's edge" if hole[ej] else "the outline"
+        t = r = None
+        if line and end is not None:
+            p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+            if np.hypot(*(end - p)) < np.hypot(*(end - q)):
+                p, q = q, p                              # q: the end at the edge
+            t, r = _shorten_clear(p, q, E0[e], E1[e])
+        if end is not None:
+            how = "ends on" if gap <= ENGRAVE_TOL else f"ends {gap:.2f} mm from"
+        else:
+            how = "touches" if gap <= ENGRAVE_TOL else f"comes {gap:.2f} mm from"
+        if t is not None:
+            fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({r[0]:.2f}, {r[1]:.2f}) "
+                   f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
+                   "edge")
+            if len(group) > 1:
+                ts = [_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0]
+                      if f[7] and f[6] is not None else None for f in group]
+                if all(x is not None for x in ts):
+                    fix = (f"end each copy of `{g.label}` at least {max(ts):.2f} mm further "
+                           f"inside (shorten it), so that it stops {CUT_CLEAR} mm short of the "
+                           "edge")
+                else:
+                    fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
+                           "inside the edge")
+        else:
+            fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
+                   "further from the edge (move it, or change its size)")
+        more = ""
+        if len(group) > 1:
+            rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
+                             f"({f[5][0]:.2f}, {f[5][1]:.2f}))" for f in group[1:4])
+            more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
+                    f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
+        sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
+                     f"`{part.path}` ({which}) at ({pm[0]:.2f}, {pm[1]:.2f}): the engraving "
+                     f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
+                     f"runs into the edge{more}", g.span,
+                     hint=fix + "; the cut already draws the edge")
+
+
+def _far_near(f) -> tuple:
+    """A found straight mark's ends as (far, near): near is its end at the edge."""
+    items, end = f[1], f[6]
+    p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+    return (q, p) if np.hypot(*(end - p)) < np.hypot(*(end - q)) else (p, q)
+
+
+def _open_ends(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The open ends (k x 2) of a mark's segments (starts ``a``, ends ``b``): the points that
+    end one segment only (a line's two ends; none for a circle or a closed outline)."""
+    P = np.vstack([a, b])
+    if len(a) == 1:
+        return P if float(np.hypot(*(a[0] - b[0]))) > 1e-9 else P[:0]
+    key = [tuple(np.round(x, 9)) for x in P]
+    count: dict = {}
+    for k in key:
+        count[k] = count.get(k, 0) + 1
+    keep = [i for i, k in enumerate(key) if count[k] == 1]
+    return P[keep]
+
+
+def _shorten_clear(p, q, E0, E1) -> tuple:
+    """How much (mm, to 0.01) to shorten the line ``p``-``q`` at ``q`` so that it stays
+    :data:`CUT_CLEAR` from the edges ``E0``-``E1``, and its new end (rounded to 0.01 mm, the
+    figures a hint prints, checked to clear): ``(t, end)``, or ``(None, None)``."""
+    length = float(np.hypot(*(q - p)))
+    if length <= 0:
+        return None, None
+    u = (q - p) / length
+
+    def clear(t):
+        r = q - t * u
+        return _seg_gap(p[None], r[None], E0, E1)[0] >= CUT_CLEAR
+    top = length * (1 - 1e-9)
+    if not clear(top):
+        return None, None
+    lo, hi = 0.0, top
+    while hi - lo > 1e-3:
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if clear(mid) else (mid, hi)
+    t = math.ceil(hi * 100 - 1e-9) / 100
+    for _ in range(5):                  # the figures as printed must clear the edge
+        r = np.round(q - t * u, 2)
+        if _seg_gap(p[None], r[None], E0, E1)[0] >= CUT_CLEAR:
+            return t, r
+        t += 0.01
+    return None, None
+
+
+def _copy_label(g, short: bool = False) -> str:
+    """``g``'s label (``short``: its name alone), with ``[k]`` when ``g`` is the k-th copy of
+    a statement run in a loop (the geometries of its structure with its name and its
+    statement's span, in the order made): ``clock.dial.ticks[0]``.  Copies made by nested
+    loops are counted as one run."""
+    owner = getattr(g, "owner", None)
+    name = g.name if short and g.name else g.label
+    if not getattr(g, "name", None) or owner is None or g.span is None:
+        return name
+    same = [h for h in owner.geometry if h.name == g.name and h.span == g.span]
+    if len(same) < 2 or g not in same:
+        return name
+    return f"{name}[{same.index(g)}]"
+
+
+def _pair_gap(a0, a1, b0, b1) -> tuple:
+    """The distance (mm) between each segment ``a0[k]``-``a1[k]`` and ``b0[k]``-``b1[k]``
+    (k x 2 arrays each, paired row by row): ``(d, pa, pb)``, the k distances and the nearest
+    points on each (0 and the crossing point where two cross)."""
+    da, db = a1 - a0, b1 - b0
+
+    def foot(p, s0, dd):
+        l2 = np.einsum("ij,ij->i", dd, dd)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(l2 > 0, np.einsum("ij,ij->i", p - s0, dd) / l2, 0.0), 0, 1)
+        return s0 + t[:, None] * dd
+    cand = [(a0, foot(a0, b0, db)), (a1, foot(a1, b0, db)),
+            (foot(b0, a0, da), b0), (foot(b1, a0, da), b1)]
+    dist = np.array([np.hypot(*(p - q).T) for p, q in cand])       # 4 x k
+    best = np.argmin(dist, axis=0)
+    r = np.arange(len(a0))
+    pa = np.stack([c[0] for c in cand])[best, r]
+    pb = np.stack([c[1] for c in cand])[best, r]
+    d = dist[best, r]
+
+    def cross(u, v):
+        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
+    if hit.any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = s3[hit] / (s3[hit] - s4[hit])
+        x = a0[hit] + t[:, None] * da[hit]
+        d = np.where(hit, 0.0, d)
+        pa[hit] = x
+        pb[hit] = x
+    return d, pa, pb
+
+
+def _seg_gap(A0, A1, B0, B1) -> tuple:
+    """The least distance (mm) between the segments ``A0[i]``-``A1[i]`` (n x 2 each) and
+    ``B0[j]``-``B1[j]`` (m x 2): ``(d, i, j, pa, pb)`` with the nearest points ``pa`` on
+    segment ``i`` of A and ``pb`` on segment ``j`` of B (0 and the crossing point when two
+    segments cross).  All n x m pairs in one array operation: for the small sets of one mark
+    and one text, or one mark and the edges near it.  ``(inf, -1, -1, None, None)`` when
+    either set is empty."""
+    A0, A1 = np.asarray(A0, float).reshape(-1, 2), np.asarray(A1, float).reshape(-1, 2)
+    B0, B1 = np.asarray(B0, float).reshape(-1, 2), np.asarray(B1, float).reshape(-1, 2)
+    if not len(A0) or not len(B0):
+        return math.inf, -1, -1, None, None
+    a0, a1 = A0[:, None, :], A1[:, None, :]
+    b0, b1 = B0[None, :, :], B1[None, :, :]
+    da, db = a1 - a0, b1 - b0
+
+    def foot(p, s0, d):             # the nearest point to p on the segments s0 + t d
+        l2 = (d * d).sum(-1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(l2 > 0, ((p - s0) * d).sum(-1) / l2, 0.0), 0.0, 1.0)
+        return s0 + t[..., None] * d
+    cands = []                      # (distance n x m, point on A, point on B)
+    for p, on_b in ((a0, True), (a1, True), (b0, False), (b1, False)):
+        if on_b:
+            q = foot(p, b0, db)
+            pa, pb = np.broadcast_to(p, q.shape), q
+        else:
+            q = foot(p, a0, da)
+            pa, pb = q, np.broadcast_to(p, q.shape)
+        cands.append((np.hypot(*(pa - pb).transpose(2, 0, 1)), pa, pb))
+    d = np.minimum.reduce([c[0] for c in cands])
+    # proper crossings: the ends of each segment on opposite sides of the other
+    def cross(u, v):
+        return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
+    d = np.where(hit, 0.0, d)
+    i, j = np.unravel_index(int(np.argmin(d)), d.shape)
+    if hit[i, j]:
+        t = s3[i, j] / (s3[i, j] - s4[i, j])
+        p = A0[i] + t * (A1[i] - A0[i])
+        return 0.0, int(i), int(j), p, p.copy()
+    best = min(cands, key=lambda c: c[0][i, j])
+    return float(best[0][i, j]), int(i), int(j), np.array(best[1][i, j]), np.array(best[2][i, j])
+
+
+def _mark_segments(items) -> tuple:
+    """The segments of an engraved mark's ``items`` as (starts, ends), k x 2 each: lines
+    exact, curves as the polylines of their W0505 samples."""
+    a, b = [], []
+    for it in items:
+        P = _polyline(it)
+        a.append(P[:-1])
+        b.append(P[1:])
+    return np.concatenate(a), np.concatenate(b)
+
+
+def _polyline(item) -> np.ndarray:
+    """An engraving item as a polyline (lines exact, curves sampled as in W0505)."""
+    if item[0] == "line":
+        return np.array([item[1], item[2]], dtype=float)
+    if item[0] == "poly":
+        P = np.asarray(item[1], dtype=float)
+        return np.vstack([P, P[:1]])
+    if item[0] == "circle":
+        P = _sample(item)
+        return np.vstack([P, P[:1]])
+    return _sample(item)

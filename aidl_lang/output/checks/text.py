@@ -1,7 +1,10 @@
 """``W0513``: engraved text drawn over other text (their boxes overlap), run into another
-label (closer than half the text size: they read as one string) or over an engraved mark (a
-line, arc or circle that runs through the text's box): two protractor labels on each other, a
-label on its tick mark."""
+label (closer than half the text size: they read as one string), over an engraved mark (a
+line, arc or circle that runs through the text's box), or with a mark too close to it (its
+end nearer the strokes than :data:`TEXT_CLEAR` of the text size, any of it nearer than
+:data:`SIDE_CLEAR`, or into the text's box): two protractor labels on each other, a label on
+its tick mark, a clock's 12 o'clock tick between the "1" and the "2", a frame grazing a
+label's letters."""
 from __future__ import annotations
 
 import math
@@ -13,11 +16,19 @@ from ...diagnostics import DiagnosticSink, Label
 from ..booleans import Drawing
 from ..nearby import box_pairs
 from .common import MIN_AREA, _area, _depth, _pct
-from .engravings import _sample, _samples
+from .engravings import (_copy_label, _mark_segments, _open_ends, _polyline, _samples,
+                         _seg_gap)
 
 TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
 TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
 TEXT_GAP = 0.5          # of the smaller text's size (about a word space): closer labels read as one
+# A mark closer to a text's strokes than the letters of a word stand to each other (0.24 to
+# 0.45 of the cap height in the futural font) reads as a stroke of the text: the clearance is a
+# quarter of the text size, and at least MIN_CLEAR, about an engraved line's width with its burn
+TEXT_CLEAR = 0.25       # of a text's size: a mark that ends (points) at the text
+SIDE_CLEAR = 0.125      # of a text's size: a mark that runs past it (a frame, a circle)
+MIN_CLEAR = 0.3         # mm
+IN_BOX = 0.1            # mm of a mark inside a text's box: it enters the text (between letters)
 
 
 def _text_box(g, items) -> tuple:
@@ -52,17 +63,6 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
         t0 = np.where(~par & (p_ < 0), np.maximum(t0, r), t0)
         t1 = np.where(~par & (p_ > 0), np.minimum(t1, r), t1)
     return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
-
-
-def _mark_segments(items) -> tuple:
-    """The segments of an engraved mark's ``items`` as (starts, ends), k x 2 each: lines
-    exact, curves as the polylines of their W0505 samples."""
-    a, b = [], []
-    for it in items:
-        P = _polyline(it)
-        a.append(P[:-1])
-        b.append(P[1:])
-    return np.concatenate(a), np.concatenate(b)
 
 
 def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
@@ -127,6 +127,12 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
                           "further apart (a larger radius or step), or make them smaller")
     if not marks:
         return
+    _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink)
+
+
+def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink) -> None:
+    """W0513 for engraved marks against texts: a mark that runs through a text (below), then
+    the marks that come too close (:func:`_check_clearance`)."""
     mg = list(marks)
     mpts = [_samples(marks[g]) for g in mg]
     mb = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in mpts],
@@ -156,6 +162,159 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
                      g.span, labels=labels,
                      hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
                           "it: e.g. further out along the same direction), or shorten the mark")
+    _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink)
+
+
+def _clear_of(tseg, mseg, rot, box, c: float, shift=(0.0, 0.0)) -> bool:
+    """True when the mark's segments ``mseg`` (starts, ends), moved by ``-shift`` (the text
+    moved by ``shift``), stay ``c`` mm from the text's strokes ``tseg`` and do not enter its
+    box (``rot``, ``box`` as :func:`_text_box` gives; ``box`` None: not measured)."""
+    a, b = mseg[0] - shift, mseg[1] - shift
+    if _seg_gap(tseg[0], tseg[1], a, b)[0] < c:
+        return False
+    return box is None or _length_inside((a, b), rot, box) <= IN_BOX
+
+
+def _least(ok, top: float) -> float | None:
+    """The least ``x`` in [0, ``top``] (to 0.001 mm, rounded up to 0.01 mm) with ``ok(x)``,
+    by bisection (the measures grow with ``x``: the reported figure is one that works); None
+    when ``ok(top)`` fails."""
+    if not ok(top):
+        return None
+    lo, hi = 0.0, top
+    while hi - lo > 1e-3:
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if ok(mid) else (mid, hi)
+    x = math.ceil(hi * 100 - 1e-9) / 100
+    return x if ok(x) else hi
+
+
+def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink) -> None:
+    """W0513 for an engraved mark that comes closer to a text's strokes than the text's
+    clearance (:data:`TEXT_CLEAR` of its size, at least :data:`MIN_CLEAR`) or enters the
+    text's box by more than :data:`IN_BOX` (between its letters: a clock's 12 o'clock tick
+    into the "12"), without running through it: the two read as touching.  One warning per
+    pair of statements (a loop of ticks against a loop of numerals), for the closest pair,
+    naming the copies (``ticks[0]``), with the gap in mm, the other pairs, and the fix: how
+    much shorter the mark (a straight line ending at the text) or how far the text must
+    move.  Texts along a curve are measured by their strokes only (their box is not the
+    text's)."""
+    n = len(tg)
+    clear = [max(TEXT_CLEAR * s, MIN_CLEAR) for s in sizes]
+    tsegs: dict = {}
+    found: dict = {}
+    for i, j in sorted(map(tuple, box_pairs(np.vstack([bb, mb]), max(clear)))):
+        if not (i < n <= j) or tg[i] in said:
+            continue
+        g, m = tg[i], mg[j - n]
+        c = clear[i]
+        if (bb[i, 0] - mb[j - n, 2] > c or mb[j - n, 0] - bb[i, 2] > c
+                or bb[i, 1] - mb[j - n, 3] > c or mb[j - n, 1] - bb[i, 3] > c):
+            continue
+        if g not in tsegs:
+            L = np.array([(it[1], it[2]) for it in texts[g]], dtype=float)
+            tsegs[g] = (L[:, 0], L[:, 1])
+        if m not in segs:
+            segs[m] = _mark_segments(marks[m])
+        box = None if g.data.get("along") is not None else boxes[i][2]
+        gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
+        if gap >= c and box is None:
+            continue
+        inside = 0.0 if box is None else _length_inside(segs[m], boxes[i][1], box)
+        if gap >= c and inside <= IN_BOX:
+            continue
+        ends = _open_ends(*segs[m])
+        head = min((_seg_gap(*tsegs[g], q[None], q[None])[0] for q in ends), default=math.inf)
+        side = max(SIDE_CLEAR * sizes[i], MIN_CLEAR)
+        if head >= c and gap >= side and inside <= IN_BOX:
+            continue
+        cc = c if head < c or inside > IN_BOX else side
+        found.setdefault((g.span, m.span), []).append((gap, -inside, i, g, m, k, pt, pm, cc))
+    for pairs in found.values():
+        pairs.sort(key=lambda f: (f[0], f[1], f[2]))
+        gap, inside, i, g, m, k, pt, pm, c = pairs[0]
+        side = max(SIDE_CLEAR * sizes[i], MIN_CLEAR)
+        fix = [_fix(tsegs[f[3]], segs[f[4]], marks[f[4]], boxes[f[2]], f[3], f[5], f[6], f[7],
+                    f[8], f[0]) for f in pairs]
+        what = f"`{_copy_label(m)}`"
+        text = f"text `{_copy_label(g)}` (\"{g.data.get('text', '')}\")"
+        end = fix[0][0]
+        if gap >= 0.005:
+            how = f"{'ends' if end else 'comes'} {gap:.2f} mm from its strokes"
+        elif end and _seg_gap(*tsegs[g], fix[0][3][None], fix[0][3][None])[0] < 0.005:
+            how = "ends on its strokes"
+        else:
+            how = "crosses its strokes"
+        into = f" and enters its box by {-inside:.2f} mm" if -inside > IN_BOX else ""
+        more = ""
+        if len(pairs) > 1:
+            rest = ", ".join(f"`{_copy_label(f[4], short=True)}` and \"{f[3].data.get('text', '')}\" "
+                             f"({f[0]:.2f} mm)" for f in pairs[1:4])
+            more = (f"; {len(pairs) - 1} more pair{'s' if len(pairs) > 2 else ''} of these "
+                    f"statements as close: {rest}{', ...' if len(pairs) > 4 else ''}")
+        labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
+        shorten = [f[1] for f in fix]
+        move = [f[2] for f in fix]
+        ways = []
+        if all(x is not None for x in shorten) and all(f[0] for f in fix):
+            ways.append(f"shorten {'each' if len(pairs) > 1 else 'the'} mark to end "
+                        f"{max(shorten):.2f} mm further from the text")
+        if all(x is not None for x in move):
+            along = "along the mark" if all(f[0] for f in fix) else "away from the mark"
+            ways.append(f"move the text {max(move):.2f} mm further {along}")
+        frame = [f[4] for f in fix]
+        if all(x is not None for x in frame):
+            ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
+        ways.append("make the text smaller")
+        sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
+                     f"{into} (the clearance is {c:.2f} mm, {'a quarter' if c > side else 'an eighth'}"
+                     f" of the text size{' for a mark beside it' if c <= side else ''}), so "
+                     f"they read as touching{more}", g.span, labels=labels,
+                     hint=f"leave {c:.2f} mm between the text and `{m.label}`: "
+                          + ", or ".join(ways))
+
+
+def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
+    """How to clear a text of a mark: ``(ends, shorten, move, end, frame)``.  ``ends``: the mark is one
+    straight line whose end is its point nearest the text; ``shorten``: by how much (mm) that
+    end must come back along the line (None when no shortening clears it, or not a line);
+    ``move``: how far (mm) the text must move, along the line past that end (a line) or
+    straight away from the mark's nearest point ``pm`` (else), None when no move within
+    three text boxes clears it; ``end``: the line's end nearest the text (else ``pm``);
+    ``frame``: when the mark is a closed outline around the text (a frame), by how much (mm)
+    to grow it on each side (the clearance less the ``gap``), else None."""
+    rot, box = box3[1], (None if g.data.get("along") is not None else box3[2])
+    ends, u, shorten, q = False, None, None, np.asarray(pm, float)
+    if len(items) == 1 and items[0][0] == "line":
+        p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+        if _seg_gap(*tseg, p[None], p[None])[0] < _seg_gap(*tseg, q[None], q[None])[0]:
+            p, q = q, p                                  # q: the end nearest the text
+        length = float(np.hypot(*(q - p)))
+        if length > 0:
+            u = (q - p) / length
+            ends = float(np.hypot(*(pm - q))) < 1e-6 or float(np.hypot(*(pt - pm))) < 1e-9
+
+            def short(t):
+                e = q - t * u
+                return _clear_of(tseg, (p[None], e[None]), rot, box, c)
+            shorten = _least(short, length * (1 - 1e-9))
+            if not ends:
+                u = None
+    if u is None:
+        v = np.asarray(pt, float) - np.asarray(pm, float)
+        nv = float(np.hypot(*v))
+        if nv < 1e-9:
+            return ends, shorten, None, q, None
+        u = v / nv
+    size = float(g.data.get("size", 0.0) or 0.0) or 1.0
+    move = _least(lambda s: _clear_of(tseg, mseg, rot, box, c, s * u), 3 * size + c)
+    frame = None
+    if len(items) == 1 and items[0][0] in ("poly", "circle"):       # a frame around the text
+        from .common import _edges, _inside
+        ring = _polyline(items[0])
+        if bool(_inside(np.vstack([tseg[0], tseg[1]]), _edges([ring[:-1]])).all()):
+            frame = math.ceil((c - gap) * 100 - 1e-9) / 100
+    return ends, shorten, move, q, frame
 
 
 def _quad_gap(p, q) -> float:
@@ -176,16 +335,3 @@ def _quad_gap(p, q) -> float:
             t = np.clip(((pt - s0) * d).sum(1) / (d * d).sum(1), 0.0, 1.0)
             best = min(best, float(np.hypot(*(s0 + t[:, None] * d - pt).T).min()))
     return best
-
-
-def _polyline(item) -> np.ndarray:
-    """An engraving item as a polyline (lines exact, curves sampled as in W0505)."""
-    if item[0] == "line":
-        return np.array([item[1], item[2]], dtype=float)
-    if item[0] == "poly":
-        P = np.asarray(item[1], dtype=float)
-        return np.vstack([P, P[:1]])
-    if item[0] == "circle":
-        P = _sample(item)
-        return np.vstack([P, P[:1]])
-    return _sample(item)
