@@ -87,7 +87,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             tick(s)
             _check_invisible(d, s, sink)
     tick(None)
-    _check_engraving(d, roots, sink, loops)
+    _check_engraving(d, roots, sink, loops, tick)
     by_part: dict = {}
     for c in d.cuts:
         by_part.setdefault(_part_of(c.owner, roots), []).append(c)
@@ -104,7 +104,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
     tick(None)
     _check_interpenetration(d, roots, sink, deadline)
-    _check_text_overlap(d, sink)
+    _check_text_overlap(d, sink, lambda: tick(None))
     if getattr(d, "placement", None):
         tick(None)
         _check_fit(d, sink, deadline)

@@ -157,9 +157,12 @@ def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_0
     return res
 
 
-def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None) -> None:
+def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None,
+                     tick=None) -> None:
     """W0505 for each engraved geometry with sample points off its part's material (the part
-    grown by :data:`ENGRAVE_TOL`).  The points of all the geometries of one part are tested
+    grown by :data:`ENGRAVE_TOL`); W0516 (:func:`_check_on_cut`, :func:`_check_meets_cut`).
+    ``tick(part)``: called before each part's work (the compile's deadline, which raises
+    :class:`~aidl_lang.limits.OutOfBudget`).  The points of all the geometries of one part are tested
     in one :func:`_inside` call (a point's verdict does not depend on the other points), and
     a part whose points are all certainly on it (:func:`_all_on_material`) is not grown."""
     by_geom: dict = {}
@@ -175,6 +178,8 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
     verdicts: dict = {}
     warned: set = set()             # the geometries a W0505 or W0516 already reports
     for part, geoms in by_part.items():
+        if tick is not None:
+            tick(part)
         shp = roots[part]
         pts = _samples([it for _, items in geoms for it in items])
         warned |= _check_on_cut(part, shp, geoms, pts, (loops or {}).get(part), sink)
@@ -207,6 +212,8 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                      hint="move or shrink the drawing so that it lies on the material (constrain "
                           "it, e.g. `Inside(label, body)`), or clear the hole it crosses")
     for part, geoms in by_part.items():
+        if tick is not None:
+            tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
 

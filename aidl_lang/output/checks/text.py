@@ -65,14 +65,16 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
     return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
 
 
-def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
+def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     """W0513 for engraved text drawn over other text (their boxes, in each text's own frame,
     overlap by more than :data:`TEXT_OVERLAP` of the smaller) or over an engraved mark (a
     line, arc or circle that runs through the text's box, shrunk by :data:`TEXT_MARGIN` of the
     text's size, over more than a quarter of that size): two protractor labels on each other,
     a label on its tick mark.  Labels of two characters or more whose boxes come closer than
     :data:`TEXT_GAP` of their size run into each other (single letters are a word's letters
-    laid out one by one, as ``text_on_arc`` does)."""
+    laid out one by one, as ``text_on_arc`` does).  ``tick()``: called before each text's
+    pairs are measured (the compile's deadline, which raises
+    :class:`~aidl_lang.limits.OutOfBudget`)."""
     texts: dict = {}
     marks: dict = {}
     for style, item, g in d.strokes:
@@ -95,6 +97,8 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
              for g, b in zip(tg, boxes)]
     pad = TEXT_GAP * max(sizes) / 2
     for i, j in sorted(map(tuple, box_pairs(bb, pad))):
+        if tick is not None:
+            tick()
         common = _area(shapes[i] ^ shapes[j])
         small = min(_area(shapes[i]), _area(shapes[j]))
         a, b = tg[i], tg[j]
@@ -127,10 +131,10 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink) -> None:
                           "further apart (a larger radius or step), or make them smaller")
     if not marks:
         return
-    _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink)
+    _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick)
 
 
-def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink) -> None:
+def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> None:
     """W0513 for engraved marks against texts: a mark that runs through a text (below), then
     the marks that come too close (:func:`_check_clearance`)."""
     mg = list(marks)
@@ -143,6 +147,8 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink) -> None:
     for i, j in sorted(map(tuple, pairs)):
         if not (i < n <= j) or tg[i] in said:
             continue
+        if tick is not None:
+            tick()
         g, m = tg[i], mg[j - n]
         size = float(g.data.get("size", 0.0) or 0.0) or (boxes[i][2][3] - boxes[i][2][1])
         u0, v0, u1, v1 = boxes[i][2]
@@ -162,7 +168,7 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink) -> None:
                      g.span, labels=labels,
                      hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
                           "it: e.g. further out along the same direction), or shorten the mark")
-    _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink)
+    _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink, tick)
 
 
 def _clear_of(tseg, mseg, rot, box, c: float, shift=(0.0, 0.0)) -> bool:
@@ -189,7 +195,8 @@ def _least(ok, top: float) -> float | None:
     return x if ok(x) else hi
 
 
-def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink) -> None:
+def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink,
+                     tick=None) -> None:
     """W0513 for an engraved mark that comes closer to a text's strokes than the text's
     clearance (:data:`TEXT_CLEAR` of its size, at least :data:`MIN_CLEAR`) or enters the
     text's box by more than :data:`IN_BOX` (between its letters: a clock's 12 o'clock tick
@@ -206,6 +213,8 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
     for i, j in sorted(map(tuple, box_pairs(np.vstack([bb, mb]), max(clear)))):
         if not (i < n <= j) or tg[i] in said:
             continue
+        if tick is not None:
+            tick()
         g, m = tg[i], mg[j - n]
         c = clear[i]
         if (bb[i, 0] - mb[j - n, 2] > c or mb[j - n, 0] - bb[i, 2] > c
