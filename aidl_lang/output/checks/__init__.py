@@ -41,11 +41,12 @@ from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _edges, _inside, _inside_
                      _part_of, _part_roots, _signed, _union)
 from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_samples, _sample,
                          _samples, _within)
-from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_repeated_faces,
+from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
+                       _check_repeated_faces,
                        _check_voids, _intended, _Near, _report_openings)
-from .parts import _check_interpenetration, _check_invisible, _check_pieces, empty_faces
+from .parts import _check_interpenetration, _check_steps, _check_invisible, _check_pieces, empty_faces
 from .text import _check_text_overlap
-from .walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
@@ -102,6 +103,10 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
+                _check_slits(d, s, loops[s], by_part.get(s, []), min_wall, sink,
+                             tick=lambda ahead=0.0: tick(s, ahead))
+                _check_steps(d, s, loops[s], by_part.get(s, []), min_wall, sink,
+                             tick=lambda: tick(s))
     tick(None)
     _check_interpenetration(d, roots, sink, deadline)
     _check_text_overlap(d, sink)
@@ -111,6 +116,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     for s in list(d.shapes):
         if s.kind == "hole":
             _check_repeated_faces(d, s, sink)
+            _check_overlapping_circles(d, s, sink, min_wall if min_wall > 0 else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):
