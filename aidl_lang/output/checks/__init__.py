@@ -9,12 +9,15 @@ One module per family:
 * :mod:`.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
   ``W0503`` a hole that removes all of its solid, ``W0507`` a wall between two holes (or a
   hole and the outline) thinner than the minimum, ``W0508`` two holes that cut one opening,
-  ``W0512`` a statement's repeated faces that merge, ``W0514`` a hole flush with the outer
-  edge, ``W0515`` a void no hole cut;
+  ``W0512`` a statement's repeated faces (or two circles of one hole) that merge, ``W0514`` a
+  hole flush with the outer edge, ``W0515`` an opening no hole cuts (a void, or a window the
+  faces of one solid merge around);
 * :mod:`.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
-  0.5 mm), by a morphological opening of the part;
+  0.5 mm), by a morphological opening of the part; ``W0519`` a slit of empty space narrower
+  than ``min_wall`` between two shapes of one outline;
 * :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
-  adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate;
+  adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate,
+  ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
 * :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that

@@ -11,9 +11,11 @@
   :mod:`.walls`);
 * ``W0508`` two separately declared holes that overlap or touch: one opening (a hole inside
   another that cuts a solid refilling it is said as a refill, :func:`_refiller`);
-* ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch;
+* ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch,
+  and two circles of one hole written apart that overlap (:func:`_check_overlapping_circles`);
 * ``W0514`` a hole inside its solid that only touches the outer edge (a wall of zero width);
-* ``W0515`` a tiny opening that no hole cut: a void left between shapes that nearly meet.
+* ``W0515`` an opening that no hole cut: a tiny void left between shapes that nearly meet, or
+  a window the overlapping faces of one solid enclose (:func:`_check_enclosed`).
 
 Pairs of holes are found with a spatial index (:mod:`..nearby`), so the checks grow as
 n log n in the number of holes; :func:`_analyse` also gives :mod:`.changes` the holes that

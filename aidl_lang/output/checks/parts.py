@@ -8,7 +8,9 @@
 * ``W0509`` a face of zero area (:func:`empty_faces`; the warnings themselves, and the one for
   a part that comes out empty unexplained, are written by ``check_drawing``);
 * ``W0511`` two separate parts of an assembly whose final shapes interpenetrate in the
-  flat view (not parts laid one on the other, nor those ``AllowOverlap`` names)."""
+  flat view (not parts laid one on the other, nor those ``AllowOverlap`` names);
+* ``W0520`` a ledge in the outline where one shape pokes past another's edge by less than
+  the minimum wall (:func:`_check_steps`)."""
 from __future__ import annotations
 
 import numpy as np

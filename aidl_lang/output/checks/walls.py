@@ -7,7 +7,10 @@ outline alone, the shape that makes it (:func:`_maker`; "blunt the tip" when it 
 point there).  Walls between two
 features already measured by :mod:`.openings` are not reported twice.  The opening of a
 large part is taken tile by tile (:func:`_thin`), and the steps the deadline cannot
-interrupt are refused when their vertex counts say they would end past it."""
+interrupt are refused when their vertex counts say they would end past it.
+
+``W0519``, the dual for empty space: a slit narrower than ``min_wall`` between two shapes of
+one outline, by a gap search between its edges (:func:`_check_slits`)."""
 from __future__ import annotations
 
 import manifold3d as mf
