@@ -485,7 +485,11 @@ gauge asked for ten holes comes out with nine. (Shapes of one hole structure may
 design, a keyhole's circle and slot; only copies made by one statement are compared.) The
 warning says how many times the shape is drawn, how many openings it cuts, and which copies
 overlap by how much. Space the copies further apart or make them smaller; if one opening is
-meant, draw it as one shape.
+meant, draw it as one shape. Two CIRCLES of one hole written as separate statements (a drill
+gauge's holes written out one by one) that overlap partly (neither inside the other) are
+reported the same way, with the depth of the overlap, the common area and how far to move
+one; other shapes of one hole (a keyhole's circle and slot, a cross of two rectangles) may
+overlap by design, and a figure-eight of two circles is drawn as one Slot when it is meant.
 
     hole drills {
         for i in range(10) {
@@ -534,17 +538,32 @@ than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and
         hole bolt { c = Circle(center=(-20, 10), radius=10) }   # tangent to two edges
     }
 """),
-    "W0515": ("tiny void between merged shapes", """
-A small opening (less than 1 mm^2, or twice the minimum wall squared) is left inside a solid
-part where no hole cuts: the shapes around it nearly meet but leave a gap, which a laser cuts
-out as a sliver. The warning gives its area, width, length and place. Make the shapes overlap
-(a negative gap, a larger size); if an opening is meant, cut it with a hole.
+    "W0515": ("opening no hole cuts", """
+An opening is left inside a solid part where no hole cuts: the shapes around it merge around a
+window the program never declares. A small one (less than 1 mm^2, or twice the minimum wall
+squared) is a void where the shapes nearly meet but leave a gap, which a laser cuts out as a
+sliver: the warning gives its area, width, length and place; make the shapes overlap (a
+negative gap, a larger size). A larger one enclosed by the faces of ONE solid structure,
+some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
+meant: the warning names the faces around it, its size (width x height of its box, area) and
+centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
+over it, as the hint writes (a Rectangle of its box, which squares off a round opening; a
+hole lying inside an opening that the solids enclose is not W0502). Not warned: an opening framed by several solid structures (a
+telephone's cradle between its base and handset), or by faces that only abut edge to edge (a
+frame of bars), or one that a hole cuts or covers.
 
     solid frame {
         left = Rectangle(center=(-5, 0), width=10, height=10)
         right = Rectangle(center=(5.05, 0), width=10, height=10)   # 0.05 mm from `left`
         top = Rectangle(center=(0, 6), width=30, height=2)
         bottom = Rectangle(center=(0, -6), width=30, height=2)
+    }
+
+    solid dino {
+        belly = Rectangle(center=(0, 0), width=60, height=20)
+        front_leg = Rectangle(center=(-8, -20), width=8, height=24)
+        back_leg = Rectangle(center=(8, -20), width=8, height=24)
+        feet = Rectangle(center=(0, -31), width=30, height=4)   # an 8 x 19 mm window
     }
 """),
     "W0516": ("engraving meets the cut edge", """
@@ -592,6 +611,40 @@ by the gap with its `Place`, or lengthen the tab.
         solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
         solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
         Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 14))   # 1 mm above the base
+    }
+"""),
+    "W0519": ("slit narrower than the minimum", """
+Two parts of one outline almost meet and leave a slit of EMPTY space narrower than the minimum
+wall (0.5 mm unless `--min-wall`; 0 turns it off) reaching into the part: narrower than a
+laser or router cuts, so it comes out as a ragged notch or not at all (a dog-bone tag whose
+two end lobes nearly touch beyond the bar). Found between the non-adjacent edges of one loop
+of the outline that face each other (opposite within 30 degrees) across empty space, over at
+least the minimum's length; the openings that holes cut are not searched (a narrow hole is
+declared so). The warning gives the least width, the length, the place and the shapes on its
+two sides. Make them overlap, or open the gap to at least the minimum.
+
+    solid tag {
+        bar = Rectangle(center=(0, 0), width=30, height=12)
+        top = Circle(center=(15, 6.1), radius=6)
+        bottom = Circle(center=(15, -6.1), radius=6)   # 0.2 mm from `top`
+    }
+"""),
+    "W0520": ("ledge where two edges almost align", """
+One shape of a solid pokes past another's edge by less than the minimum wall (0.5 mm unless
+`--min-wall`), so the outline has a tiny ledge where the two edges were meant to align: a
+music note's stem 0.2 mm past its head's side, a heart's round lobes bulging a hair past the
+triangle's straight sides. Found in the final outline as two corners of opposite turns (over
+30 degrees each) at most twice the minimum apart between stretches that keep their
+direction, offset sideways by 0.01 mm to the minimum; or as a shallow crossing (2 to 30
+degrees) after a straight side where the other shape strays out past that side's line by
+0.01 mm to the minimum and comes back across it. Only corners where two different shapes
+meet count (a step drawn in one polygon is meant). The warning names both shapes and the
+ledge's size and place. Align the edges (a constraint, or the number that is off), or make
+the offset clear if a ledge is meant.
+
+    solid note {
+        head = Ellipse(center=(0, 0), rx=8, ry=6)
+        stem = Rectangle(center=(6.7, 25), width=3, height=50)   # 0.2 mm past the head
     }
 """),
     "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),

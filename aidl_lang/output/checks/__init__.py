@@ -9,12 +9,15 @@ One module per family:
 * :mod:`.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
   ``W0503`` a hole that removes all of its solid, ``W0507`` a wall between two holes (or a
   hole and the outline) thinner than the minimum, ``W0508`` two holes that cut one opening,
-  ``W0512`` a statement's repeated faces that merge, ``W0514`` a hole flush with the outer
-  edge, ``W0515`` a void no hole cut;
+  ``W0512`` a statement's repeated faces (or two circles of one hole) that merge, ``W0514`` a
+  hole flush with the outer edge, ``W0515`` an opening no hole cuts (a void, or a window the
+  faces of one solid merge around);
 * :mod:`.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
-  0.5 mm), by a morphological opening of the part;
+  0.5 mm), by a morphological opening of the part; ``W0519`` a slit of empty space narrower
+  than ``min_wall`` between two shapes of one outline;
 * :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
-  adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate;
+  adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate,
+  ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
 * :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
@@ -41,11 +44,12 @@ from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _edges, _inside, _inside_
                      _part_of, _part_roots, _signed, _union)
 from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_samples, _sample,
                          _samples, _within)
-from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_repeated_faces,
+from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
+                       _check_repeated_faces,
                        _check_voids, _intended, _Near, _report_openings)
-from .parts import _check_interpenetration, _check_invisible, _check_pieces, empty_faces
+from .parts import _check_interpenetration, _check_steps, _check_invisible, _check_pieces, empty_faces
 from .text import _check_text_overlap
-from .walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
@@ -102,6 +106,10 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
                              loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
+                _check_slits(d, s, loops[s], by_part.get(s, []), min_wall, sink,
+                             tick=lambda ahead=0.0: tick(s, ahead))
+                _check_steps(d, s, loops[s], by_part.get(s, []), min_wall, sink,
+                             tick=lambda: tick(s))
     tick(None)
     _check_interpenetration(d, roots, sink, deadline)
     _check_text_overlap(d, sink, lambda: tick(None))
@@ -111,6 +119,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     for s in list(d.shapes):
         if s.kind == "hole":
             _check_repeated_faces(d, s, sink)
+            _check_overlapping_circles(d, s, sink, min_wall if min_wall > 0 else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):

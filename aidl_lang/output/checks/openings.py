@@ -12,9 +12,11 @@
   :mod:`.walls`);
 * ``W0508`` two separately declared holes that overlap or touch: one opening (a hole inside
   another that cuts a solid refilling it is said as a refill, :func:`_refiller`);
-* ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch;
+* ``W0512`` the faces one statement draws several times (in a loop) that overlap or touch,
+  and two circles of one hole written apart that overlap (:func:`_check_overlapping_circles`);
 * ``W0514`` a hole inside its solid that only touches the outer edge (a wall of zero width);
-* ``W0515`` a tiny opening that no hole cut: a void left between shapes that nearly meet.
+* ``W0515`` an opening that no hole cut: a tiny void left between shapes that nearly meet, or
+  a window the overlapping faces of one solid enclose (:func:`_check_enclosed`).
 
 Pairs of holes are found with a spatial index (:mod:`..nearby`), so the checks grow as
 n log n in the number of holes; :func:`_analyse` also gives :mod:`.changes` the holes that
@@ -99,6 +101,49 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> Non
                           "opening is meant, draw it as one shape (a Slot, a Polygon)")
 
 
+def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
+                               t: float = MIN_WALL) -> None:
+    """W0512 for hole ``h``: two circles drawn by DIFFERENT statements of the hole that
+    overlap partly (neither inside the other), so the hole cuts one opening where the program
+    draws two round holes (a drill gauge whose circles are written one by one, two of them
+    too close).  Only circles are compared: other faces of one hole overlap by design (a
+    keyhole's circle and slot, a cross of two rectangles), and a figure-eight of two circles
+    is drawn as a Slot when it is meant.  The copies of one statement are
+    :func:`_check_repeated_faces`'s.  The pairs come from :func:`.nearby.box_pairs`."""
+    faces = [(g, f) for g, f in d.own.get(h, [])
+             if g.kind == "Circle" and f is not None and not f.is_empty()]
+    if len(faces) < 2:
+        return
+    shapes = [f for _, f in faces]
+    boxes = np.array([f.bounds() for f in shapes], dtype=float)
+    areas = [_area(f) for f in shapes]
+    merges = []
+    for i, j in sorted(map(tuple, box_pairs(boxes))):
+        if faces[i][0].span == faces[j][0].span:
+            continue                                   # copies of one statement: W0512 above
+        common = shapes[i] ^ shapes[j]
+        a = _area(common)
+        if a <= MIN_AREA or a >= (1 - 1e-6) * min(areas[i], areas[j]):
+            continue                                   # apart, or one inside the other
+        merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
+    if not merges:
+        return
+    i, j, depth, a = merges[0]
+    (gi, _), (gj, _) = faces[i], faces[j]
+    openings = _union(shapes).num_contour()
+    more = f"; {len(merges) - 1} more such pair{'s' if len(merges) > 2 else ''}" \
+        if len(merges) > 1 else ""
+    labels = [Label(gi.span, f"`{gi.label}` is here", primary=False)] if gi.span else []
+    sink.warning("W0512", f"circles `{gj.label}` and `{gi.label}` of hole `{h.path}` overlap "
+                 f"by {depth:.2f} mm ({a:.2f} mm^2 in common), so they cut one opening: the "
+                 f"hole draws {len(faces)} circles but cuts {openings} "
+                 f"opening{'s' if openings != 1 else ''}{more}", gj.span or h.span,
+                 labels=labels,
+                 hint=f"move `{gj.label}` {depth + t:.2f} mm further from `{gi.label}` (or make "
+                      "one smaller) so that material is left between them; if one opening is "
+                      "meant, draw it as one shape (a Slot)")
+
+
 def _perimeter(cs) -> float:
     return float(sum(np.hypot(*(np.roll(P, -1, axis=0) - P).T).sum()
                      for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())))
@@ -148,6 +193,7 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
     hb = np.array([c.region.bounds() for c in cuts if c.region is not None
                    and not c.region.is_empty()], dtype=float).reshape(-1, 4)
     limit = max(2 * t * t, 1.0)
+    _check_enclosed(d, s, [P for P in inner if -_signed(P) >= limit], cuts, sink)
     for P in inner:
         area = -_signed(P)
         if area >= limit:
@@ -165,6 +211,96 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
                      hint="make the shapes around it overlap (e.g. `gap=-1 mm`, or a larger "
                           "size) so that no gap is left; if an opening is meant, cut it with "
                           "a hole")
+
+
+def _solid_faces(d: Drawing, s: Structure, near) -> list:
+    """The faces of part ``s``'s solids (its own and its solid descendants', :attr:`Drawing.own`)
+    that meet the region ``near`` (a CrossSection): ``[(structure, geometry, face)]``, in the
+    order of :attr:`Drawing.own`."""
+    x0, y0, x1, y1 = near.bounds()
+    out = []
+    for t, faces in d.own.items():
+        if t.kind != "solid" or not t.is_within(s):
+            continue
+        for g, f in faces:
+            if f is None or f.is_empty():
+                continue
+            a, b, c, e = f.bounds()
+            if a > x1 or c < x0 or b > y1 or e < y0:
+                continue
+            if _area(near ^ f) > 1e-9:
+                out.append((t, g, f))
+    return out
+
+
+def _free_name(s: Structure, base: str) -> str:
+    """``base``, or ``base2``, ``base3``... : a name that no child or shape of ``s`` has."""
+    used = set(s.children) | {g.name for g in s.geometry if g.name}
+    k, name = 1, base
+    while name in used:
+        k += 1
+        name = f"{base}{k}"
+    return name
+
+
+def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink) -> None:
+    """W0515 for each opening of part ``s`` (``openings``: clockwise loops of its final shape,
+    each of at least :func:`_check_voids`' limit) that no hole cuts or covers (no hole shape
+    of the part meets it; candidates by :func:`.nearby.box_pairs`, so a plate of 5,000 holes
+    costs n log n) and that the faces of ONE solid structure enclose: shapes merged around a
+    window the program never declares (a dinosaur's legs and belly).  Left alone: an
+    opening framed by faces of several solid structures (a telephone's cradle between its
+    base and handset, each placed by a constraint), or by faces that only abut, none
+    overlapping another (a frame of bars laid edge to edge): built to enclose it."""
+    if not openings:
+        return
+    holes = [d.shapes[c.hole] for c in cuts
+             if d.shapes.get(c.hole) is not None and not d.shapes[c.hole].is_empty()]
+    boxes = [(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()) for P in openings]
+    near: dict = {}
+    if holes:
+        n = len(openings)
+        pairs = box_pairs(np.array(boxes + [h.bounds() for h in holes], dtype=float))
+        for i, j in pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]:
+            near.setdefault(int(i), []).append(holes[int(j) - n])
+    for k, P in enumerate(openings):
+        region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
+        if region.is_empty() or any(_area(h ^ region) > MIN_AREA for h in near.get(k, ())):
+            continue                          # a hole cuts it, or is declared over it
+        _report_enclosed(d, s, P, -_signed(P), region, sink)
+
+
+def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> None:
+    """The W0515 of :func:`_check_enclosed` for the opening ``P`` (its ``region``), when the
+    faces around it are of one solid structure."""
+    near = region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region
+    faces = _solid_faces(d, s, near)
+    owners = list(dict.fromkeys(t for t, _, _ in faces))
+    if len(owners) != 1:
+        return
+    shapes = [f for _, _, f in faces]
+    if not any(_area(shapes[i] ^ shapes[j]) > MIN_AREA
+               for i, j in box_pairs(np.array([f.bounds() for f in shapes], dtype=float))):
+        return                  # edge to edge (a frame of bars that abut): built to enclose it
+    x0, y0 = P.min(axis=0)
+    x1, y1 = P.max(axis=0)
+    w, h = x1 - x0, y1 - y0
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    names = list(dict.fromkeys(f"`{g.label}`" for _, g, _ in faces))
+    who = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4 else "")
+    g0 = faces[0][1]
+    labels = [Label(g.span, "bounds it", primary=False) for _, g, _ in faces[1:4]
+              if g.span is not None and g.span != g0.span]
+    owner = owners[0]
+    name = _free_name(owner, "window")
+    sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
+                 f"({cx:.1f}, {cy:.1f}) is enclosed by {who} in `{owner.path}`: no hole cuts "
+                 "it, the shapes merge around it", g0.span or owner.span, labels=labels,
+                 hint="if it is not meant, make the shapes around it overlap to fill it (or "
+                      "move them apart so that it opens onto the edge); if it is meant, "
+                      f"declare it in `{owner.path}`: `hole {name} {{ r = Rectangle("
+                      f"center=({cx:.2f}, {cy:.2f}), width={w:.2f}, height={h:.2f}); "
+                      "Fixed(r) }`")
 
 
 class _Near:
@@ -461,6 +597,8 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     if whole <= 0:
         return
     if cut_area <= max(1e-9, 1e-6 * whole):
+        if _over_opening(d, hole_shape, whole, _part_of(s, roots), roots):
+            return                       # it declares an opening the solids enclose (W0515)
         sink.warning("W0502", f"hole `{h.path}` cuts nothing: it lies outside solid `{s.path}`",
                      h.span, hint=f"move the hole inside `{s.path}` (for example "
                                   f"`CenterInside({h.name}, self)`), or declare it in the solid "
@@ -557,6 +695,28 @@ def _ref(obj, base: Structure) -> str:
     r = _rel(obj, base)
     head, sep, _ = r.rpartition("[")
     return head if sep and r.endswith("]") and "[" not in head else r
+
+
+def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:
+    """Whether a hole that cuts nothing (``hole_shape``, of area ``whole`` mm^2) lies inside
+    an opening of ``part`` that its solids enclose (within the part's outer loops, meeting no
+    other hole's cut): it declares that opening, as W0515's hint proposes, and is not
+    "outside" the solid."""
+    if part is None or part not in roots:
+        return False
+    x0, y0, x1, y1 = hole_shape.bounds()
+    for c in d.cuts:
+        r = c.region
+        if r is None or r.is_empty() or _part_of(c.owner, roots) is not part:
+            continue
+        a, b, cc, e = r.bounds()
+        if a <= x1 and cc >= x0 and b <= y1 and e >= y0 and _area(r ^ hole_shape) > 1e-9:
+            return False                 # in an opening another hole cuts
+    outer = [p for p in roots[part].to_polygons() if _signed(np.asarray(p, dtype=float)) > 0]
+    if not outer:
+        return False
+    filled = mf.CrossSection(outer, mf.FillRule.Positive)
+    return _area(hole_shape - filled) <= max(1e-9, 1e-6 * whole)
 
 
 def _rel(obj, base: Structure) -> str:

@@ -8,7 +8,9 @@
 * ``W0509`` a face of zero area (:func:`empty_faces`; the warnings themselves, and the one for
   a part that comes out empty unexplained, are written by ``check_drawing``);
 * ``W0511`` two separate parts of an assembly whose final shapes interpenetrate in the
-  flat view (not parts laid one on the other, nor those ``AllowOverlap`` names)."""
+  flat view (not parts laid one on the other, nor those ``AllowOverlap`` names);
+* ``W0520`` a ledge in the outline where one shape pokes past another's edge by less than
+  the minimum wall (:func:`_check_steps`)."""
 from __future__ import annotations
 
 import numpy as np
@@ -191,3 +193,145 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+# --------------------------------------------------------------------------- steps (W0520)
+CORNER = 30.0        # degrees: a turn of the outline sharper than this is a corner
+PARALLEL = 15.0      # degrees: the stretches before and after a step keep their direction
+
+
+def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: DiagnosticSink,
+                 tick=lambda: None) -> None:
+    """W0520 for part ``s`` (its final shape's ``loops``) at minimum wall ``t`` mm: a step of
+    the outline where one shape pokes past another by less than ``t`` (a music note's stem
+    0.2 mm past its head's side): two corners of opposite turns (each sharper than
+    :data:`CORNER` degrees) at most ``2 t`` apart along the outline, between two stretches
+    that keep their direction (the turns cancel within :data:`PARALLEL` degrees) and are
+    offset sideways by more than 0.01 mm (twice the tessellation's chord error) and less than
+    ``t``: two faces that almost but not quite align.  ``2 t`` bounds the step's own length:
+    a longer link between two edges less than ``t`` apart is a gentle taper, not a ledge.
+    The step is reported when the shapes at its two corners differ (:func:`.walls._face_at`;
+    a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
+    in the outline's vertices, plus a face search per step found."""
+    from .walls import _face_at
+    if t <= 0 or not loops:
+        return
+    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
+                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    found = []
+    for P in loops:
+        P = np.asarray(P, dtype=float)
+        if _signed(P) < 0 and len(hb):
+            x0, y0 = P.min(axis=0)
+            x1, y1 = P.max(axis=0)
+            if ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
+                    & (hb[:, 3] >= y0)).any():
+                continue                         # an opening a hole cuts
+        e = np.roll(P, -1, axis=0) - P
+        L = np.hypot(*e.T)
+        keep = L > 1e-9
+        P, e, L = P[keep], e[keep], L[keep]
+        n = len(P)
+        if n < 4:
+            continue
+        ep = np.roll(e, 1, axis=0)                           # the edge into each vertex
+        turn = np.degrees(np.arctan2(ep[:, 0] * e[:, 1] - ep[:, 1] * e[:, 0],
+                                     np.einsum("ij,ij->i", ep, e)))
+        c = np.flatnonzero(np.abs(turn) > CORNER)
+        if len(c) < 2:
+            continue
+        pos = np.concatenate([[0.0], np.cumsum(L)])          # arc length at each vertex
+        total = pos[-1]
+        cum = np.concatenate([[0.0], np.cumsum(turn)])       # turning before each vertex
+        a, b = c, np.roll(c, -1)
+        gap = (pos[b] - pos[a]) % total
+        prev_gap = np.roll(gap, 1)
+        next_gap = np.roll(gap, -1)
+        net = np.where(b > a, cum[b + 1] - cum[a], cum[n] - cum[a] + cum[b + 1])
+        cand = (gap <= 2 * t) & (np.sign(turn[a]) != np.sign(turn[b])) \
+            & (np.abs(net) < PARALLEL) & (prev_gap >= gap) & (next_gap >= gap)
+        for k in np.flatnonzero(cand):
+            i, j = int(a[k]), int(b[k])
+            u = ep[i] / np.hypot(*ep[i])
+            off = P[j] - P[i]
+            side = float(u[0] * off[1] - u[1] * off[0])
+            if not 2 * 0.005 < abs(side) < t - 2 * 0.005:
+                continue
+            found.append((P[i], P[j], abs(side), float(gap[k]), u, turn[i]))
+        _bumps(P, e, ep, turn, pos, t, found)
+    for pi, pj, side, gap, u, ti in found:
+        tick()
+        fi, fj = _face_at(d, s, pi), _face_at(d, s, pj)
+        if fi is None or fj is None or fi is fj:
+            continue
+        # the corner that turns outward (convex, left on a counter-clockwise outline) is the
+        # poking shape's own corner; the other is where it meets the shape it passes
+        poke, other = (fj, fi) if ti < 0 else (fi, fj)
+        at = pj if ti < 0 else pi
+        labels = [Label(other.span, "the edge it almost meets", primary=False)] \
+            if other.span is not None else []
+        sink.warning("W0520", f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
+                     f"`{s.path}`, a ledge of {side:.2f} mm in the outline near "
+                     f"({at[0]:.1f}, {at[1]:.1f}): the two edges almost align but not quite",
+                     poke.span or s.span, labels=labels,
+                     hint=f"align the edges (move or resize `{poke.label}` by {side:.2f} mm, or "
+                          "tie them with a constraint) or make the offset clear (at least "
+                          f"{t:g} mm) if a ledge is meant")
+
+
+BUMP = 2.0           # degrees: a concave turn this sharp is where two faces' edges cross
+BUMP_LENGTH = 40     # of the minimum wall: the farthest a bump is followed (20 mm at 0.5 mm)
+
+
+def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
+    """The hair-thin overshoots of one counter-clockwise loop ``P`` (its edges ``e``, the
+    edges into each vertex ``ep``, the turns in degrees, the arc length ``pos`` at each
+    vertex): at a shallow concave turn (right turn of :data:`BUMP` to :data:`CORNER` degrees,
+    where the edge of one shape crosses a straight side of another at a small angle), the
+    outline beyond it strays outward from the line of that side (the straight edge before
+    the turn, extended; and the same backward, for the turn's mirror image) by more than
+    0.01 mm and less than ``t`` before it comes back across the line or turns away from it
+    by 90 degrees (within ``BUMP_LENGTH t`` mm): a heart's lobe that pokes past the
+    triangle's side by a hair.  Appended to ``found`` as ``(the turn, the farthest vertex,
+    height, length followed, direction, -1)``."""
+    n = len(P)
+    cand = np.flatnonzero((turn < -BUMP) & (turn > -CORNER))
+    if not len(cand):
+        return
+    total = pos[-1]
+    reach = min(BUMP_LENGTH * t, total)
+    pos2 = np.concatenate([pos[:n], pos[:n] + total])      # twice round, to search windows
+    for a in cand:
+        a = int(a)
+        for step, u in ((1, ep[a]), (-1, -e[a])):
+            if float(np.hypot(*u)) < 2 * t:
+                continue                 # not a straight side: a curve's chord
+            u = u / np.hypot(*u)
+            # the vertices after the turn (before it, walking backward), up to `reach` mm
+            if step == 1:
+                hi = int(np.searchsorted(pos2, pos[a] + reach, side="right"))
+                idx = np.arange(a + 1, min(hi, a + n)) % n
+                along = (pos[idx] - pos[a]) % total
+            else:
+                lo = int(np.searchsorted(pos2, pos[a] + total - reach, side="left"))
+                idx = np.arange(a + n - 1, max(lo, a) - 1, -1) % n
+                along = (pos[a] - pos[idx]) % total
+            if not len(idx):
+                continue
+            rel = P[idx] - P[a]
+            side = u[0] * rel[:, 1] - u[1] * rel[:, 0]
+            if step == -1:
+                side = -side            # walking backward the material is on the right
+            out = -side                 # outward, away from the material
+            d = P[idx] - P[np.r_[a, idx[:-1]]]
+            ahead = d @ u                # moving on along the line's direction
+            stop = np.flatnonzero((out <= 0) | (ahead < -1e-12))
+            if not len(stop) or out[stop[0]] > 0 or stop[0] == 0:
+                continue                 # it turns away from the line: a wider shape's edge
+            k = int(stop[0])
+            h = float(out[:k].max())
+            if not 2 * 0.005 < h < t - 2 * 0.005:
+                continue
+            far = P[idx[int(np.argmax(out[:k]))]]
+            found.append((P[a], far, h, float(along[:k].max() if len(along) else 0.0), u,
+                          -1.0))

@@ -7,13 +7,16 @@ outline alone, the shape that makes it (:func:`_maker`; "blunt the tip" when it 
 point there).  Walls between two
 features already measured by :mod:`.openings` are not reported twice.  The opening of a
 large part is taken tile by tile (:func:`_thin`), and the steps the deadline cannot
-interrupt are refused when their vertex counts say they would end past it."""
+interrupt are refused when their vertex counts say they would end past it.
+
+``W0519``, the dual for empty space: a slit narrower than ``min_wall`` between two shapes of
+one outline, by a gap search between its edges (:func:`_check_slits`)."""
 from __future__ import annotations
 
 import manifold3d as mf
 import numpy as np
 
-from ...diagnostics import DiagnosticSink
+from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ..booleans import Drawing
 from ..nearby import box_pairs
@@ -367,3 +370,166 @@ def _join(pieces: list, least: float, tick) -> list:
             group = nxt
         result.extend(group[0].decompose())
     return result
+
+
+# --------------------------------------------------------------------------- slits (W0519)
+FACING = 0.866     # cos 30 deg: two stretches of the outline face each other across a slit
+                   # when their directions are opposite within 30 degrees (a V-notch sharper
+                   # than 30 degrees; a square inner corner's sides are at 90 and do not count)
+
+
+def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: DiagnosticSink,
+                 tick=lambda ahead=0.0: None) -> None:
+    """W0519 for part ``s`` (its final shape's ``loops``, counter-clockwise outside,
+    clockwise around openings) at minimum width ``t`` mm: a slit of EMPTY space narrower than
+    ``t`` that reaches into the part, the dual of W0507's thin wall (two lobes of one outline
+    that almost meet: a dog-bone tag whose end circles nearly touch beyond the bar).
+
+    Found as a gap search between the non-adjacent edges of one loop
+    (:func:`.nearby.close_pairs`, every vertex against the segments within ``t``, O(n log n)):
+    a pair counts when the two stretches face each other (the vertex's tangent and the
+    segment's direction are opposite within 30 degrees, :data:`FACING`) and the middle of the
+    gap lies outside the material.  The loops of holes' openings are left out (a hole drawn
+    narrow is declared so).  Close pairs are grouped by place; a group whose span along the
+    slit is at least ``t`` and whose sides are edges of two different shapes (a cusp drawn in
+    one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
+    length, its place and the two shapes (:func:`_face_at`, at the slit's mouth)."""
+    from ..nearby import close_pairs
+    from .common import _edges, _inside, _signed
+    if t <= 0 or not loops:
+        return
+    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
+                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    keep = []
+    for P in loops:
+        if len(P) < 3:
+            continue
+        if _signed(P) < 0 and len(hb):
+            x0, y0 = P.min(axis=0)
+            x1, y1 = P.max(axis=0)
+            if ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
+                    & (hb[:, 3] >= y0)).any():
+                continue                         # an opening a hole cuts
+        keep.append(np.asarray(P, dtype=float))
+    if not keep:
+        return
+    tick()
+    V = np.concatenate(keep)
+    n = len(V)
+    sizes = np.array([len(P) for P in keep])
+    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+    size = np.repeat(sizes, sizes)
+    idx = np.arange(n)
+    nxt = start + (idx - start + 1) % size
+    prv = start + (idx - start - 1) % size
+    B = V[nxt]
+    v, sg, dist, foot = close_pairs(V, idx, V, B, idx, t)
+    if not len(v):
+        return
+    ok = (v != nxt[sg]) & (dist > 1e-6)
+    seg = B[sg] - V[sg]
+    facing = np.zeros(len(v), dtype=bool)
+    for tan in (V[nxt[v]] - V[v], V[v] - V[prv[v]]):      # either edge at the vertex
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cos = np.einsum("ij,ij->i", tan, seg) / np.maximum(
+                np.hypot(*tan.T) * np.hypot(*seg.T), 1e-300)
+        facing |= cos < -FACING
+    ok &= facing
+    v, sg, dist, foot = v[ok], sg[ok], dist[ok], foot[ok]
+    if not len(v):
+        return
+    mid = (V[v] + foot) / 2
+    # the middle of the gap, and 1 um to either side across it (a slit's floor can be an
+    # edge of the outline that the gap runs along: its middle lies on the outline itself)
+    across = (foot - V[v])[:, ::-1] * np.array([1.0, -1.0])
+    across *= 1e-3 / np.maximum(np.hypot(*across.T), 1e-300)[:, None]
+    edges = _edges(loops)
+    empty = ~(_inside(mid, edges) & _inside(mid + across, edges) & _inside(mid - across, edges))
+    v, sg, dist, foot, mid = v[empty], sg[empty], dist[empty], foot[empty], mid[empty]
+    if not len(v):
+        return
+    tick()
+    label = _clusters(mid, t)
+    for g in np.unique(label):
+        k = np.flatnonzero(label == g)
+        x0, y0 = mid[k].min(axis=0)
+        x1, y1 = mid[k].max(axis=0)
+        length = float(max(x1 - x0, y1 - y0))
+        if length < t:
+            continue
+        b = k[int(np.argmin(dist[k]))]
+        w = float(dist[b])
+        p, q = V[v[b]], foot[b]
+        # the sides are named at the slit's mouth (its widest pair), clear of a floor that
+        # another shape may make
+        o = k[int(np.argmax(dist[k]))]
+        fp, fq = _face_at(d, s, V[v[o]]), _face_at(d, s, foot[o])
+        if fp is None or fq is None or fp is fq:
+            continue            # a notch drawn in one shape (a heart's cusp) is meant
+        names = [f"`{f.label}`" for f in (fp, fq) if f is not None]
+        names = list(dict.fromkeys(names))
+        later = max((f for f in (fp, fq) if f is not None and f.span is not None),
+                    key=lambda f: (f.span.line, f.span.col), default=None)
+        other = next((f for f in (fp, fq) if f is not None and f is not later
+                      and f.span is not None), None)
+        labels = [Label(other.span, "the other side of the slit", primary=False)] \
+            if other is not None else []
+        between = " and ".join(names)
+        cx, cy = (p + q) / 2
+        fix = (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
+               f"towards the other) or open the gap to at least {t:g} mm (move one "
+               f"{t - w:.2f} mm away)")
+        sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
+                     f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
+                     f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
+                     "out as a ragged notch or not at all", later.span if later is not None else s.span,
+                     labels=labels,
+                     hint=f"{fix}; the minimum is set with --min-wall")
+
+
+def _face_at(d: Drawing, s: Structure, p):
+    """The geometry of part ``s``'s solids (:attr:`Drawing.own`) whose outline passes
+    nearest to point ``p`` (on the part's outline, so on some face's edge), or None."""
+    best, least = None, np.inf
+    x, y = float(p[0]), float(p[1])
+    for st, faces in d.own.items():
+        if st.kind != "solid" or not st.is_within(s):
+            continue
+        for g, f in faces:
+            if f is None or f.is_empty():
+                continue
+            a, b, c, e = f.bounds()
+            if a - least > x or c + least < x or b - least > y or e + least < y:
+                continue
+            for P in f.to_polygons():
+                P = np.asarray(P, dtype=float)
+                A, Bq = P, np.roll(P, -1, axis=0)
+                dd = Bq - A
+                L2 = np.einsum("ij,ij->i", dd, dd)
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    u = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, dd) / L2, 0.0),
+                                0.0, 1.0)
+                e2 = A + u[:, None] * dd - p
+                dm = float(np.sqrt(np.einsum("ij,ij->i", e2, e2).min()))
+                if dm < least:
+                    best, least = g, dm
+    return best
+
+
+def _clusters(points: np.ndarray, r: float) -> np.ndarray:
+    """A label per point (n x 2, mm): points less than ``r`` apart (their boxes grown by
+    ``r / 2`` overlap, :func:`.nearby.box_pairs`) share one, transitively (union-find; no
+    SciPy, whose import a cold ``aidl check`` avoids)."""
+    n = len(points)
+    parent = np.arange(n)
+
+    def root(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+    for i, j in box_pairs(np.hstack([points, points]), pad=r / 2):
+        a, b = root(int(i)), root(int(j))
+        if a != b:
+            parent[max(a, b)] = min(a, b)
+    return np.array([root(i) for i in range(n)])
