@@ -7,7 +7,7 @@ from conftest import EXAMPLES
 
 SHAPE_CODES = {"W0501", "W0502", "W0503", "W0504", "W0505", "W0506", "W0507", "W0508",
                "W0509", "W0510", "W0511", "W0512", "W0513", "W0514", "W0515", "W0516",
-               "W0517", "W0518", "W0402"}
+               "W0517", "W0518", "W0519", "W0520", "W0402"}
 
 
 def warnings(compile_text, src, code):
