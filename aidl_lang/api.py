@@ -360,7 +360,7 @@ class Result:
         ``glb``; a leading dot is allowed) as bytes, as ``aidl render`` writes it: the cutting formats
         (SVG, DXF, PNG) with every cut offset by half the kerf — ``kerf`` in mm, ``None`` for
         the program's own ``kerf`` statements, 0 for none; STL, 3MF and STEP are the designed
-        solid.  ``options``: those of :class:`~aidl_lang.output.formats.Options` (``show``,
+        solid.  ``options``: those of :class:`~aidl_lang.output.writers.Options` (``show``,
         ``style``, ``dpi``, ``width``, ``thickness`` mm, ``margin`` mm, ``assembled``: the
         3D formats with every part placed by its ``Place``, PNG a picture of that).  Raises
         :class:`ValueError` for an unknown format, :class:`NotCompiled`,

@@ -1,5 +1,5 @@
 """What each output writer costs (issue 26: the writers inside the budget), and how far
-:func:`aidl_lang.output.formats.writer_seconds` — the estimate `aidl render` uses to refuse a
+:func:`aidl_lang.output.writers.writer_seconds` — the estimate `aidl render` uses to refuse a
 writer sure to end past the deadline — is above it:
 
     python benchmarks/writer_cost.py                  # N = 500, 2000; every format
@@ -10,7 +10,7 @@ Two programs per N: ``parts`` (an assembly of N one-circle parts: the per-part c
 (``budget=100``, so a busy machine does not end it), its exact output built, and each format
 encoded once in this process; printed: the writer's wall time, seconds per item (part, loop
 or segment) or per vertex (STL, 3MF), and ``estimate / measured`` (the estimate must stay
-above 1: the constants in ``aidl_lang/output/formats.py`` are these figures rounded up about
+above 1: the constants in ``aidl_lang/output/writers/__init__.py (each Format's per_item, per_vertex)`` are these figures rounded up about
 twice).  A format whose library is missing is skipped; STEP is slow (about 2 ms a loop), so
 it runs on the N = 500 programs only unless named with ``--formats``."""
 from __future__ import annotations
@@ -41,7 +41,7 @@ def main() -> None:
     args = ap.parse_args()
     from aidl_lang.limits import DEFAULT_BUDGET
     from aidl_lang.output import MissingDependency, Options, OutputError, build, encode
-    from aidl_lang.output.formats import SECONDS_PER_VERTEX, writer_seconds
+    from aidl_lang.output.writers import FORMATS, writer_seconds
     from aidl_lang.pipeline import compile_source
     print(f"{'program':>12} {'format':>6} {'items':>7} {'vertices':>9} {'seconds':>8} "
           f"{'us/unit':>8} {'estimate/measured':>18}")
@@ -63,7 +63,7 @@ def main() -> None:
                     print(f"{kind + str(n):>12} {suffix:>6}  skipped: {str(e)[:60]}")
                     continue
                 dt = time.perf_counter() - t0
-                unit = verts if suffix in SECONDS_PER_VERTEX else items
+                unit = verts if FORMATS[suffix].per_vertex else items
                 print(f"{kind + str(n):>12} {suffix:>6} {items:>7} {verts:>9} {dt:>8.3f} "
                       f"{dt / unit * 1e6:>8.1f} {writer_seconds(out, suffix) / dt:>18.2f}",
                       flush=True)

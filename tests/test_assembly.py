@@ -139,7 +139,7 @@ def test_3mf_one_named_object_per_panel_on_the_design_numbers(box):
 
 def test_glb_named_nodes_in_the_flat_views_colours(box):
     import trimesh
-    from aidl_lang.output.svg import PALETTE
+    from aidl_lang.output.part import PALETTE
     sc = trimesh.load(io.BytesIO(box.encode("glb", assembled=True)), file_type="glb")
     named = {}
     for node in sc.graph.nodes_geometry:

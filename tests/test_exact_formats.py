@@ -28,7 +28,7 @@ def output(compile_text, src):
 
 
 def svg_of(o, **kw) -> str:
-    from aidl_lang.output.svg import to_svg
+    from aidl_lang.output.writers.svg import to_svg
     return to_svg(o, **kw)
 
 

@@ -424,7 +424,8 @@ def test_kerf_larger_than_a_feature_is_a_clear_error(tmp_path, capsys):
 
 # ------------------------------------------------------------------ assembly view
 def test_assembly_view_colours_each_part_and_names_it(tmp_path):
-    from aidl_lang.output.svg import PALETTE, to_svg
+    from aidl_lang.output.part import PALETTE
+    from aidl_lang.output.writers.svg import to_svg
     svg = to_svg(output_of(BOX, tmp_path))
     groups = re.findall(r'<g class="solid" fill="([^"]+)" fill-opacity="([^"]+)" '
                         r'id="part-([^"]+)" stroke="([^"]+)"><title>([^<]+)</title>', svg)

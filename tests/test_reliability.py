@@ -387,11 +387,11 @@ def test_a_writer_sure_to_end_past_the_deadline_is_refused_and_nothing_is_writte
     """The writers after the compile ran outside every budget (fuzz seed 11681: 32,767
     one-circle parts; compile 7.7 s, exact outlines 6.5 s, SVG 3.8 s: 19 s at a 15 s budget).
     Each writer is now refused before it starts when its cost estimate
-    (:func:`aidl_lang.output.formats.writer_seconds`) would end past the compile's deadline:
+    (:func:`aidl_lang.output.writers.writer_seconds`) would end past the compile's deadline:
     a located E0304 naming the writer and the part, exit 1, the old file kept.  Here the SVG
     cost per item is set absurdly high so that a small fan is refused at once."""
     from aidl_lang.cli.main import main
-    from aidl_lang.output import formats
+    from aidl_lang.output import writers as formats
     f = tmp_path / "fan.aidl"
     f.write_text(FAN.replace("FANS", "3"))
     out = tmp_path / "fan.svg"
@@ -402,8 +402,10 @@ def test_a_writer_sure_to_end_past_the_deadline_is_refused_and_nothing_is_writte
     o = build(c.drawing, "fan")
     assert len(o.parts) == 15
     assert formats.writer_seconds(o, ".svg") == pytest.approx(
-        formats.WRITER_START + 15 * 3 * formats.SECONDS_PER_ITEM[".svg"])
-    monkeypatch.setitem(formats.SECONDS_PER_ITEM, ".svg", 100.0)
+        formats.WRITER_START + 15 * 3 * formats.FORMATS[".svg"].per_item)
+    import dataclasses
+    monkeypatch.setitem(formats.FORMATS, ".svg",
+                        dataclasses.replace(formats.FORMATS[".svg"], per_item=100.0))
     t0 = time.process_time()
     assert main(["render", str(f), "-o", str(out)]) == 1
     assert time.process_time() - t0 < 10

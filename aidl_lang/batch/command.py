@@ -18,7 +18,6 @@ from pathlib import Path
 
 from .row import TIMINGS
 
-FORMAT_NAMES = ("svg", "dxf", "png", "stl", "3mf", "step")
 
 
 def default_workers() -> int:
@@ -60,7 +59,7 @@ def add_arguments(p) -> None:
                         "rows with the same id, source hash and options are not redone)")
     p.add_argument("--render", default="", metavar="FORMATS",
                    help="write each good program in these formats, comma-separated: "
-                        + ",".join(FORMAT_NAMES) + " (needs --out-dir)")
+                        "any extension aidl render writes, e.g. svg,dxf (needs --out-dir)")
     p.add_argument("--out-dir", default=None, metavar="DIR",
                    help="the folder for --render's files (DIR/NAME.svg, ...)")
     p.add_argument("--workers", type=_positive(int), default=None, metavar="N",
@@ -86,10 +85,12 @@ class UsageError(ValueError):
 
 
 def _formats(text: str) -> list[str]:
+    from ..output import FORMATS          # the writers' registry (imports the outputs)
     names = [x.strip().lower().lstrip(".") for x in text.split(",") if x.strip()]
-    bad = [n for n in names if n not in FORMAT_NAMES]
+    known = [k.lstrip(".") for k in FORMATS]
+    bad = [n for n in names if n not in known]
     if bad:
-        raise UsageError(f"--render takes {','.join(FORMAT_NAMES)}; got `{bad[0]}`")
+        raise UsageError(f"--render takes {','.join(known)}; got `{bad[0]}`")
     return list(dict.fromkeys("." + n for n in names))
 
 

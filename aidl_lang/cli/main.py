@@ -116,7 +116,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
         return sub.add_parser(name, **kwargs) if only is None or only == name else _Unused()
     r = add("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
             description="Compile FILE and write each -o output; the format follows "
-                        "the extension (.svg .dxf .png .stl .3mf .step). Nothing is written "
+                        "the extension (.svg .dxf .png .stl .3mf .step .glb). Nothing is written "
                         "unless the whole pipeline succeeded.")
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
@@ -462,15 +462,13 @@ def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
 
 
 STDOUT = Path("-")           # `-o -`: standard output (no file name: it has no extension)
-# what `-o -` writes to a terminal too; the other formats are binary (--format png)
-TEXT_FORMATS = (".svg", ".dxf", ".step", ".stp")
 NOT_REGULAR_HINT = "choose another path, or `-o -` to write to standard output"
 
 
 def _stdout_format(args, outs: list[Path]) -> int | None:
     """Check ``-o -`` and ``--format`` (usage errors exit 2) and set ``args.stdout_suffix``
     (``.svg``, ...; None without ``-o -``)."""
-    from ..output import FORMATS
+    from ..output import FORMATS, TEXT_FORMATS   # TEXT_FORMATS: `-o -` to a terminal too
     fmt = getattr(args, "format", None)
     args.stdout_suffix = None
     if STDOUT not in outs:
@@ -633,7 +631,7 @@ def cmd_render(args) -> int:
     if isinstance(outs, int):
         return outs
     show = tuple(x.strip() for x in args.show.split(",") if x.strip())
-    from ..output.svg import SHOW
+    from ..output.writers.svg import SHOW
     if set(show) - set(SHOW):
         return _usage(f"--show takes {', '.join(SHOW)}; got `{args.show}`")
     thickness = None
@@ -666,7 +664,7 @@ def cmd_render(args) -> int:
     if args.nest_time < 0 or args.nest_time > 3600:
         return _usage(f"--nest-time expects seconds from 0 to 3600, got `{args.nest_time}`")
     if args.assembled:
-        from ..output.formats import ASSEMBLED_FORMATS
+        from ..output import ASSEMBLED_FORMATS
         flat_only = [str(o) for o in outs if _suffix(o, args) not in ASSEMBLED_FORMATS]
         if flat_only:
             return _usage(f"--assembled writes STL, 3MF, STEP, GLB or PNG, not "

@@ -26,6 +26,7 @@ from mcp.shared.exceptions import MCPError
 from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
+from ..output.writers import FORMATS
 from . import tools as T
 from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
 from .wording import for_agents
@@ -54,8 +55,9 @@ Dof = Annotated[bool, Field(
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file, relative to the allowed folder (never "
                 "outside it, never over the program or through a symbolic link; a missing "
-                "folder is made); the format by extension: .svg, .dxf (laser cutters), .png, "
-                ".stl, .3mf, .step, .glb.")]
+                "folder is made); the format by extension: "
+                + ", ".join(f"{k} ({f.about})" for k, f in FORMATS.items() if k != ".stp")
+                + ".")]
 Width = Annotated[int, Field(
     description="The PNG's width in pixels (the returned image's and a written .png's).",
     ge=16, le=T.MAX_PNG_WIDTH)]

@@ -285,7 +285,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
     if assembled and target is not None:
-        from ..output.formats import ASSEMBLED_FORMATS
+        from ..output import ASSEMBLED_FORMATS
         if target.suffix.lower() not in ASSEMBLED_FORMATS:
             raise Refused(f"assembled, the output is .stl, .3mf, .step, .glb or .png, not "
                           f"`{target.suffix}` (SVG and DXF are the flat parts)")

@@ -34,8 +34,8 @@ def placements(output: Output) -> dict[str, np.ndarray]:
 
 def colours(output: Output) -> dict[str, str]:
     """Part name -> ``#rrggbb``: the flat assembly view's colour of each solid part (the SVG
-    preview's :data:`~.svg.PALETTE`, in the parts' order)."""
-    from .svg import PALETTE
+    preview's :data:`~.part.PALETTE`, in the parts' order)."""
+    from .part import PALETTE
     solids = [p for p in output.parts if p.kind == "solid"]
     return {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)}
 
@@ -70,29 +70,6 @@ def extrude(parts, where: dict, thickness: float | None = None, deadline=None
 
 def _rgba(colour: str) -> list[int]:
     return [int(colour[i:i + 2], 16) for i in (1, 3, 5)] + [255]
-
-
-def scene(output: Output, thickness: float | None = None, assembled: bool = True):
-    """A ``trimesh.Scene`` of the assembled product (``assembled=False``: the parts as on the
-    sheet): one node per part, named after it, its mesh coloured like the part in the flat
-    view."""
-    from .mesh import _trimesh, bodies
-    trimesh = _trimesh()
-    colour = colours(output)
-    sc = trimesh.Scene()
-    for name, m in bodies(output, thickness, assembled):
-        c = colour.get(name)
-        if c is not None:
-            m.visual = trimesh.visual.ColorVisuals(m, face_colors=_rgba(c))
-        sc.add_geometry(m, geom_name=name, node_name=name)
-    return sc
-
-
-def to_glb(output: Output, thickness: float | None = None, assembled: bool = True) -> bytes:
-    """Binary glTF (GLB) of the assembled product (``assembled=False``: as on the sheet):
-    one named node per part, its mesh in the part's colour (mm; glTF's y is up, so a viewer
-    turns the product's z up itself)."""
-    return scene(output, thickness, assembled).export(file_type="glb")
 
 
 # ------------------------------------------------------------------ fit check
@@ -249,115 +226,3 @@ def _depth(common, na, nb, box) -> float:
 def _box(m) -> tuple:
     b = m.bounding_box()
     return tuple(b)
-
-
-# ------------------------------------------------------------------ picture
-VIEW = (-35.0, 25.0)        # degrees: the picture's azimuth (about z) and elevation
-
-
-def to_png(output: Output, thickness: float | None = None, width: int = 800,
-           highlight=None) -> bytes:
-    """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
-    each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
-    a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
-    at twice the size and scaled down (antialiasing).  ``highlight``: :class:`Collision` s
-    drawn over it as red boxes (None: those the fit check finds).  ``width`` in pixels (16 to
-    4096).  Raises :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
-    import math
-
-    if not 16 <= width <= 4096:
-        from .part import OutputError
-        raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
-    colour = colours(output)
-    bodies = solids(output, thickness)
-    if highlight is None:
-        highlight = fit(bodies, normals=normals_of(placements(output)))[0]
-    az, el = (math.radians(v) for v in VIEW)
-    # camera axes: right, up, towards the viewer
-    fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
-    right = np.array([math.cos(az), math.sin(az), 0.0])
-    up = np.cross(fwd, right)
-    light = fwd * 0.6 + up * 0.6 + right * 0.2
-    light /= np.linalg.norm(light)
-    tris = []
-    from trimesh.remesh import subdivide_to_size
-    size = max((max(np.subtract(_box(m)[3:], _box(m)[:3])) for _, m in bodies), default=1.0)
-    for name, m in bodies:
-        mesh = m.to_mesh()
-        v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
-        f = np.asarray(mesh.tri_verts, dtype=np.int64)
-        if not len(f):
-            continue
-        # small triangles, so that sorting them by their centres draws them in depth order
-        v, f = subdivide_to_size(v, f, max_edge=size / 24, max_iter=12)
-        P = v[f]                                         # (n, 3, 3)
-        nrm = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
-        ln = np.linalg.norm(nrm, axis=1)
-        keep = ln > 1e-12
-        P, nrm = P[keep], nrm[keep] / ln[keep, None]
-        facing = nrm @ fwd > 0                           # back faces are hidden by the front
-        P, nrm = P[facing], nrm[facing]
-        shade = 0.45 + 0.55 * np.clip(nrm @ light, 0.0, 1.0)
-        depth = (P.mean(axis=1) @ fwd)
-        base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
-        tris.append((depth, P, shade[:, None] * base[None, :]))
-    boxes = []
-    for c in highlight:
-        x0, y0, z0, x1, y1, z1 = c.box
-        boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
-    pts = [t[1] for t in tris if len(t[1])] + boxes
-    if not pts:
-        Image, _ = _pil()
-        import io
-        buf = io.BytesIO()
-        Image.new("RGB", (width, width // 2), "white").save(buf, format="PNG")
-        return buf.getvalue()
-    allp = np.concatenate([p.reshape(-1, 3) for p in pts])
-    X, Y = allp @ right, allp @ up
-    x0, x1, y0, y1 = X.min(), X.max(), Y.min(), Y.max()
-    span = max(x1 - x0, y1 - y0, 1e-9)
-    margin = 0.05 * span
-    scale = (width - 2) / (x1 - x0 + 2 * margin or 1.0)
-    height = max(1, int(round((y1 - y0 + 2 * margin) * scale)))
-
-    Image, ImageDraw = _pil()
-    k = 2                                           # drawn twice as large, then scaled down
-    img = Image.new("RGB", (width * k, height * k), "white")
-    draw = ImageDraw.Draw(img)
-
-    def xy(P):
-        P = np.atleast_2d(P)
-        u = ((P @ right) - x0 + margin) * scale * k
-        v = (y1 + margin - (P @ up)) * scale * k
-        return [(float(a), float(b)) for a, b in zip(u, v)]
-    depth = np.concatenate([t[0] for t in tris]) if tris else np.zeros(0)
-    if len(depth):
-        P = np.concatenate([t[1] for t in tris])
-        rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8)
-        order = np.argsort(depth, kind="stable")                 # farthest first
-        uv = np.stack([((P @ right) - x0 + margin) * scale * k,
-                       (y1 + margin - (P @ up)) * scale * k], axis=-1)[order]
-        for flat, fill in zip(uv.reshape(len(uv), 6).tolist(), map(tuple, rgb[order].tolist())):
-            draw.polygon(flat, fill=fill, outline=fill)
-    edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
-             (5, 7), (6, 7))
-    for B in boxes:
-        for i, j in edges:
-            draw.line(xy(np.array([B[i], B[j]])), fill=(255, 0, 0), width=3 * k)
-    img = img.resize((width, height), Image.LANCZOS)
-    import io
-    buf = io.BytesIO()
-    img.save(buf, format="PNG")
-    return buf.getvalue()
-
-
-def _pil():
-    """Pillow (installed with the ``png`` extra, which cairosvg needs), or
-    :class:`~.part.MissingDependency` naming the install line."""
-    try:
-        from PIL import Image, ImageDraw
-    except ImportError:
-        from .part import MissingDependency
-        raise MissingDependency("an assembled PNG needs Pillow: pip install 'aidl-lang[png]'"
-                                ) from None
-    return Image, ImageDraw

@@ -105,6 +105,26 @@ def part_box(p: PartOutline) -> tuple[float, float, float, float]:
 
 
 # ------------------------------------------------------------------ kerf
+def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None) -> Output:
+    """``output`` as a cutter reads it: every cut of a solid part offset by half the kerf
+    (:func:`compensate`).  ``kerf``: mm, or a dict part name -> mm; ``None`` takes
+    the program's ``kerf`` statements (``output.drawing.kerf``); 0 or no kerf anywhere returns
+    ``output`` itself.  Raises :class:`LayoutError` (an :class:`~.part.OutputError`)
+    naming the part where a feature is smaller than the offset, and an
+    :class:`~.part.OutputError` with its ``budget`` when the compile's ``deadline`` (or None)
+    passes before every part is offset."""
+    if kerf is None and output.drawing is not None:
+        kerf = output.drawing.kerf
+    if not kerf:
+        return output
+    from ..limits import OutOfBudget
+    try:
+        return compensate(output, kerf, deadline)
+    except OutOfBudget as ex:
+        raise OutputError(f"the kerf offset ran past the budget ({ex.what}); build less or "
+                          "raise the budget (`--budget 2`)", ex) from None
+
+
 def compensate(output: Output, kerf, deadline=None) -> Output:
     """``output`` with every cut of its solid parts offset by half the kerf: outer loops
     outward, holes inward, so the parts come out at their designed size.  ``kerf``: mm for

@@ -30,6 +30,10 @@ __all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", 
            "OutputError", "MissingDependency", "build"]
 
 Point = tuple[float, float]
+# The parts' colours, in order, in every view (the SVG preview, the assembled GLB, STEP and
+# picture): Okabe and Ito's palette for colour-blind readers, with black moved last.
+PALETTE = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#b8a200",
+           "#000000")
 
 
 class OutputError(RuntimeError):

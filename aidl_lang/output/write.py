@@ -128,7 +128,7 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     such as /tmp, the kernel's ``fs.protected_symlinks`` rule), not a read-only file (unless
     ``force``), not a FIFO, device or socket (nor a link to one: :class:`NotRegularFile`).
     Raises :class:`WriteError`."""
-    from .formats import FORMATS
+    from .writers import FORMATS
     out = Path(path)
     if out.suffix.lower() not in FORMATS:
         raise WriteError(f"cannot tell the format of `{out}` from its extension; use one of "

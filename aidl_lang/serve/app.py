@@ -47,11 +47,11 @@ MAX_MESSAGE = 65_536    # characters of one WebSocket message
 MAX_DEPTH = 8           # nesting of arrays and objects in one message ({"values": {...}} is 2)
 MAX_VALUES = 256        # entries of one message's "values"
 MAX_VALUE = 256         # characters of one value
+# the page's own files, and every output format's (from the writers' registry)
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
-         "css": "text/css; charset=utf-8", "svg": "image/svg+xml", "png": "image/png",
-         "dxf": "application/dxf", "stl": "model/stl", "json": "application/json",
-         "3mf": "model/3mf", "step": "model/step", "stp": "model/step", "glb": "model/gltf-binary",
-         "txt": "text/plain; charset=utf-8"}
+         "css": "text/css; charset=utf-8", "json": "application/json",
+         "txt": "text/plain; charset=utf-8",
+         **{suffix.lstrip("."): f.media for suffix, f in output.FORMATS.items()}}
 
 
 def static_files() -> dict[str, bytes]:

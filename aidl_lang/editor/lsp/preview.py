@@ -214,7 +214,7 @@ def _poly_d(polys, close: bool = True) -> str:
 
 
 def _item_d(item) -> str:
-    from ...output.svg import _item_points
+    from ...output.writers.svg import _item_points
     kind = item[0]
     return _poly_d([_item_points(item)], close=kind in ("circle", "poly"))
 

@@ -22,19 +22,17 @@ import math
 
 import numpy as np
 
-from .extent import extent
-from .part import Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline, build
+from ..extent import extent
+from ..part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
+                    build)
 
 SHOW = ("holes", "bboxes", "construction")
 STYLES = ("preview", "laser")
 CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
 DIGITS = 9           # decimals of a mm written for lines, arcs and sizes: 1e-9 mm
 HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
-# The preview's outline colours for the parts of an assembly, in order (Okabe and Ito's
-# palette for colour-blind readers, with black moved last): each part is drawn in its colour
-# over a fill of the same colour at PART_FILL_OPACITY, so overlapping parts stay visible.
-PALETTE = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#b8a200",
-           "#000000")
+# each part of an assembly is drawn in its colour (:data:`~..part.PALETTE`) over a fill of
+# the same colour at PART_FILL_OPACITY, so overlapping parts stay visible
 PART_FILL_OPACITY = 0.18
 
 
@@ -259,3 +257,10 @@ def _poly_d(pl: np.ndarray, close: bool) -> str:
 
 def _id(name: str) -> str:
     return "part-" + "".join(c if c.isalnum() or c in "-_" else "_" for c in name)
+
+
+def write(output: Output, options) -> bytes:
+    """The registry's entry (:data:`~.FORMATS`): :func:`to_svg` with the
+    :class:`~.Options` ``show``, ``style`` and ``margin``, UTF-8."""
+    return to_svg(output, show=options.show, style=options.style,
+                  margin=options.margin).encode()

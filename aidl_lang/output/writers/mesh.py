@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .part import MissingDependency, Output
+from ..part import MissingDependency, Output
 
 DEFAULT_THICKNESS = 3.0
 
@@ -92,3 +92,15 @@ def to_3mf(output: Output, thickness: float | None = None, assembled: bool = Fal
     for name, m in bodies(output, thickness, assembled):
         scene.add_geometry(m, geom_name=name, node_name=name)
     return scene.export(file_type="3mf")
+
+
+def write_stl(output: Output, options) -> bytes:
+    """The registry's ``.stl`` (:data:`~.FORMATS`): :func:`to_stl` with the
+    :class:`~.Options` ``thickness`` and ``assembled``."""
+    return to_stl(output, options.thickness, options.assembled)
+
+
+def write_3mf(output: Output, options) -> bytes:
+    """The registry's ``.3mf`` (:data:`~.FORMATS`): :func:`to_3mf` with the
+    :class:`~.Options` ``thickness`` and ``assembled``."""
+    return to_3mf(output, options.thickness, options.assembled)

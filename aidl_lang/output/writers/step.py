@@ -14,7 +14,7 @@ from __future__ import annotations
 import os
 import tempfile
 
-from .part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
+from ..part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
 
 DEFAULT_THICKNESS = 3.0
 
@@ -174,7 +174,7 @@ def to_step(output: Output, thickness: float | None = None, assembled: bool = Fa
     from OCP.TDataStd import TDataStd_Name
     from OCP.TDocStd import TDocStd_Document
     from OCP.XCAFDoc import XCAFDoc_ColorType, XCAFDoc_DocumentTool
-    from .svg import PALETTE
+    from ..part import PALETTE
     doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
     shapes = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
     colours = XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
@@ -215,3 +215,8 @@ class _quiet:
         os.dup2(self.saved, 1)
         os.close(self.saved)
 
+
+def write(output: Output, options) -> bytes:
+    """The registry's ``.step`` / ``.stp`` (:data:`~.FORMATS`): :func:`to_step` with the
+    :class:`~.Options` ``thickness`` and ``assembled``."""
+    return to_step(output, options.thickness, options.assembled)

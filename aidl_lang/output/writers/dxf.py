@@ -29,8 +29,8 @@ from __future__ import annotations
 import io
 import math
 
-from .extent import extent
-from .part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
+from ..extent import extent
+from ..part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
@@ -184,3 +184,8 @@ def to_dxf(output: Output) -> str:
     buf = io.StringIO()
     to_dxf_document(output).write(buf)
     return buf.getvalue()
+
+
+def write(output: Output, options) -> bytes:
+    """The registry's entry (:data:`~.FORMATS`): :func:`to_dxf`, UTF-8."""
+    return to_dxf(output).encode()

@@ -1,0 +1,149 @@
+"""The writers, one module per format, behind one registry: :data:`FORMATS` maps each file
+extension to its :class:`Format` (the module and function that turn an
+:class:`~..part.Output` into bytes, its media type, whether a cutter reads it, whether
+``--assembled`` writes it, its cost), and :func:`encode` writes one.  Every front end (the CLI's
+``-o``, ``aidl serve``'s downloads, the MCP render tool, ``aidl batch``, the Python API) takes
+its list of formats from here, so adding a format is one module here and one :class:`Format`
+line below.  A writer's library is imported only when its format is written."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..part import Output, OutputError
+
+
+@dataclass
+class Options:
+    """Writer options: ``show`` debug layers (SVG/PNG), SVG ``style`` (preview | laser), PNG
+    ``dpi`` / ``width`` (pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
+    ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
+    least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
+    STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
+    product)."""
+    show: tuple = ()
+    style: str = "preview"
+    dpi: float = 96.0
+    width: int | None = None
+    thickness: float | None = None
+    margin: float | None = None
+    assembled: bool = False
+
+
+@dataclass(frozen=True)
+class Format:
+    """One output format: ``module`` (in this package) and its ``function(output, options)
+    -> bytes``; ``media`` (MIME type); ``text`` (readable on a terminal, ``-o -``); ``cut``
+    (what a cutter reads: written with the kerf offset); ``assembled`` (``--assembled``
+    writes the product in 3D, or its picture); the cost :func:`writer_seconds` estimates:
+    ``per_item`` s per part, loop and segment, or ``per_vertex`` s per vertex of the parts'
+    shapes; ``about``: what it is for, in a few words (help texts, docs)."""
+    module: str
+    function: str
+    media: str
+    about: str
+    text: bool = False
+    cut: bool = False
+    assembled: bool = False
+    per_item: float = 0.0
+    per_vertex: float = 0.0
+
+    def write(self, output: Output, options: "Options") -> bytes:
+        """The bytes of ``output`` in this format (imports the writer module on first use)."""
+        import importlib
+        module = importlib.import_module(f"{__name__}.{self.module}")
+        return getattr(module, self.function)(output, options)
+
+
+# What one writer costs (per_item, per_vertex), measured by benchmarks/writer_cost.py on the
+# reference machine (2 cores, busy) and rounded up about twice: seconds per item of the output,
+# an item being a part, a loop or a segment (engraving strokes' segments included); STL, 3MF
+# and GLB per vertex of the drawing's shapes (their triangles follow the tessellation); PNG adds
+# its pixels (SECONDS_PER_PIXEL), every writer its start (WRITER_START: its library's import).
+FORMATS: dict[str, Format] = {
+    ".svg": Format("svg", "write", "image/svg+xml", "vector drawing: laser software, browsers",
+                   text=True, cut=True, per_item=100e-6),
+    ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
+                   text=True, cut=True, per_item=150e-6),
+    ".png": Format("png", "write", "image/png", "picture of the drawing (or the product)",
+                   cut=True, assembled=True, per_item=100e-6),
+    ".stl": Format("mesh", "write_stl", "model/stl", "3D mesh of the parts (printers)",
+                   assembled=True, per_vertex=50e-6),
+    ".3mf": Format("mesh", "write_3mf", "model/3mf", "3D parts, one object each (printers)",
+                   assembled=True, per_vertex=60e-6),
+    ".step": Format("step", "write", "model/step", "exact 3D solids for CAD",
+                    text=True, assembled=True, per_item=5e-3),
+    ".stp": Format("step", "write", "model/step", "exact 3D solids for CAD (.step)",
+                   text=True, assembled=True, per_item=5e-3),
+    ".glb": Format("glb", "write", "model/gltf-binary", "the assembled product for 3D viewers",
+                   assembled=True, per_vertex=60e-6),
+}
+# the formats a cutter reads (and their preview): written with the kerf offset applied; STL,
+# 3MF, STEP and GLB are the designed solid and never offset
+CUT_FORMATS = tuple(k for k, f in FORMATS.items() if f.cut)
+# the formats `--assembled` writes (the product in 3D, or its picture)
+ASSEMBLED_FORMATS = tuple(k for k, f in FORMATS.items() if f.assembled)
+# what `-o -` writes to a terminal too; the other formats are binary
+TEXT_FORMATS = tuple(k for k, f in FORMATS.items() if f.text)
+
+WRITER_START = 0.5
+SECONDS_PER_PIXEL = 1e-7
+
+
+def writer_seconds(output: Output, suffix: str, options: Options | None = None) -> float:
+    """An upper estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
+    (:data:`WRITER_START`, each :class:`Format`'s ``per_item`` or ``per_vertex``,
+    :data:`SECONDS_PER_PIXEL`), so that a writer sure to end past the deadline is refused
+    before it starts.  A PNG over :data:`~.png.MAX_SIDE` or :data:`~.png.MAX_AREA` costs only
+    the start: :func:`~.png.to_png` refuses it before drawing."""
+    suffix = suffix.lower()
+    fmt = FORMATS.get(suffix)
+    if fmt is not None and fmt.per_vertex:
+        d = output.drawing
+        verts = sum(p.shape.num_vert() for p in d.parts) if d is not None else 0
+        return WRITER_START + fmt.per_vertex * verts
+    items = sum(1 + len(p.loops) + sum(len(lp.segments) for lp in p.loops)
+                for p in output.parts) + sum(len(st.segments) for st in output.engrave)
+    seconds = WRITER_START + (fmt.per_item if fmt is not None else 0.0) * items
+    if suffix == ".png" and (output.parts or output.engrave):
+        from .png import MAX_AREA, MAX_SIDE
+        opt = options or Options()
+        x0, y0, x1, y1 = output.bounds()
+        w, h = x1 - x0, y1 - y0
+        m = opt.margin if opt.margin is not None else max(1.0, 0.05 * max(w, h))
+        w, h = w + 2 * m, h + 2 * m
+        px = opt.width / w if opt.width else opt.dpi / 25.4          # pixels per mm
+        w_px, h_px = w * px, h * px
+        if max(w_px, h_px) <= MAX_SIDE and w_px * h_px <= MAX_AREA:   # else refused at once
+            seconds += SECONDS_PER_PIXEL * w_px * h_px
+    return seconds
+
+
+def encode(output: Output, suffix: str, options: Options | None = None,
+           deadline=None) -> bytes:
+    """The bytes of ``output`` in the format named by ``suffix`` (``.svg``, ...).  Raises
+    ``KeyError`` for an unknown suffix and :class:`~.part.MissingDependency` when the format's
+    library is not installed.  ``deadline``: the compile's
+    :class:`~aidl_lang.limits.Deadline` (``aidl render``, ``aidl batch``), or None: a writer
+    whose :func:`writer_seconds` would end past it is refused before it starts, with an
+    :class:`~.part.OutputError` whose ``budget`` names the part with the most segments."""
+    fmt = FORMATS[suffix.lower()]
+    if deadline is not None:
+        from ...limits import OutOfBudget
+        try:
+            deadline.check(f"the {suffix.lstrip('.').upper()} writer",
+                           ahead=writer_seconds(output, suffix, options))
+        except OutOfBudget as ex:
+            ex.where = _biggest_part(output)
+            ex.what += "; nothing was written"
+            raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
+                              f"budget ({ex.what}); build less or raise the budget "
+                              "(`--budget 2`)", ex) from None
+    return fmt.write(output, options or Options())
+
+
+def _biggest_part(output: Output):
+    """The structure of the part with the most segments (None without a drawing)."""
+    if output.drawing is None or not output.parts:
+        return None
+    p = max(output.parts, key=lambda p: sum(len(lp.segments) for lp in p.loops))
+    return output.drawing.part_of.get(p.name)

@@ -1,0 +1,174 @@
+"""PNG writer: the flat drawing (:func:`to_png`: the SVG of :mod:`.svg` rasterised with
+``cairosvg``, the ``png`` extra: ``pip install 'aidl-lang[png]'``, on a white background) or a
+picture of the assembled product (:func:`to_assembled_png`, painted with Pillow).
+
+``dpi`` sets the resolution: the SVG is sized in millimetres, so 96 dpi draws 1 mm as 3.78
+pixels; ``width`` (pixels) overrides it.
+"""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from ..part import MissingDependency, Output, OutputError
+from .svg import to_svg
+
+
+MAX_SIDE = 32_767            # cairo's largest image side (pixels)
+MAX_AREA = 100_000_000       # 400 MB of RGBA at most
+
+
+def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
+           style: str = "preview", margin: float | None = None) -> bytes:
+    """PNG bytes of ``output`` (the page of :func:`~.svg.to_svg` with ``show``, ``style`` and
+    ``margin``, mm).  Raises :class:`MissingDependency` without ``cairosvg`` and
+    :class:`OutputError` for a non-positive size or an image over :data:`MAX_SIDE` a side or
+    :data:`MAX_AREA` pixels."""
+    try:
+        import cairosvg
+    except (ImportError, OSError) as e:      # OSError: the cairo C library is missing
+        raise MissingDependency(
+            "PNG output needs cairosvg and the cairo library: pip install 'aidl-lang[png]' "
+            f"(and apt-get install libcairo2 on Debian/Ubuntu) ({e})") from None
+    svg = to_svg(output, show=show, style=style, margin=margin).encode()
+    if width is not None and width < 1 or width is None and not dpi > 0:
+        raise OutputError(f"a PNG needs a positive {'--png-width' if width is not None else '--dpi'}")
+    w_mm = re.search(rb' width="([0-9.]+)mm"', svg)
+    h_mm = re.search(rb' height="([0-9.]+)mm"', svg)
+    if w_mm and h_mm:
+        w_mm, h_mm = float(w_mm[1]), float(h_mm[1])
+        px = width / w_mm if width else dpi / 25.4          # pixels per mm
+        w_px, h_px = w_mm * px, h_mm * px
+        if max(w_px, h_px) > MAX_SIDE or w_px * h_px > MAX_AREA:
+            raise OutputError(
+                f"the PNG would be {w_px:.0f} x {h_px:.0f} pixels, more than {MAX_SIDE} a side "
+                f"or {MAX_AREA // 1_000_000} megapixels; use a lower --dpi or --png-width")
+        if style == "laser":
+            # the laser style's 0.01 mm hairline is a fraction of a pixel: antialiased to
+            # nearly white.  A raster draws it one pixel wide (the SVG and DXF keep 0.01 mm).
+            svg = to_svg(output, show=show, style=style, margin=margin,
+                         hairline=1.0 / px).encode()
+    kw = {"output_width": int(width)} if width else {"dpi": float(dpi)}
+    return cairosvg.svg2png(bytestring=svg, background_color="white", **kw)
+
+
+# ------------------------------------------------------------------ the assembled product
+VIEW = (-35.0, 25.0)        # degrees: the picture's azimuth (about z) and elevation
+
+
+def to_assembled_png(output: Output, thickness: float | None = None, width: int = 800,
+                     highlight=None) -> bytes:
+    """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
+    each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
+    a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
+    at twice the size and scaled down (antialiasing).  ``highlight``: :class:`Collision` s
+    drawn over it as red boxes (None: those the fit check finds, :func:`~..assembly.fit`).  ``width`` in pixels (16 to
+    4096).  Raises :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
+    import math
+
+    if not 16 <= width <= 4096:
+        raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
+    from ..assembly import _box, _rgba, colours, fit, normals_of, placements, solids
+    colour = colours(output)
+    bodies = solids(output, thickness)
+    if highlight is None:
+        highlight = fit(bodies, normals=normals_of(placements(output)))[0]
+    az, el = (math.radians(v) for v in VIEW)
+    # camera axes: right, up, towards the viewer
+    fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
+    right = np.array([math.cos(az), math.sin(az), 0.0])
+    up = np.cross(fwd, right)
+    light = fwd * 0.6 + up * 0.6 + right * 0.2
+    light /= np.linalg.norm(light)
+    tris = []
+    from trimesh.remesh import subdivide_to_size
+    size = max((max(np.subtract(_box(m)[3:], _box(m)[:3])) for _, m in bodies), default=1.0)
+    for name, m in bodies:
+        mesh = m.to_mesh()
+        v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
+        f = np.asarray(mesh.tri_verts, dtype=np.int64)
+        if not len(f):
+            continue
+        # small triangles, so that sorting them by their centres draws them in depth order
+        v, f = subdivide_to_size(v, f, max_edge=size / 24, max_iter=12)
+        P = v[f]                                         # (n, 3, 3)
+        nrm = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+        ln = np.linalg.norm(nrm, axis=1)
+        keep = ln > 1e-12
+        P, nrm = P[keep], nrm[keep] / ln[keep, None]
+        facing = nrm @ fwd > 0                           # back faces are hidden by the front
+        P, nrm = P[facing], nrm[facing]
+        shade = 0.45 + 0.55 * np.clip(nrm @ light, 0.0, 1.0)
+        depth = (P.mean(axis=1) @ fwd)
+        base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
+        tris.append((depth, P, shade[:, None] * base[None, :]))
+    boxes = []
+    for c in highlight:
+        x0, y0, z0, x1, y1, z1 = c.box
+        boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
+    pts = [t[1] for t in tris if len(t[1])] + boxes
+    if not pts:
+        Image, _ = _pil()
+        import io
+        buf = io.BytesIO()
+        Image.new("RGB", (width, width // 2), "white").save(buf, format="PNG")
+        return buf.getvalue()
+    allp = np.concatenate([p.reshape(-1, 3) for p in pts])
+    X, Y = allp @ right, allp @ up
+    x0, x1, y0, y1 = X.min(), X.max(), Y.min(), Y.max()
+    span = max(x1 - x0, y1 - y0, 1e-9)
+    margin = 0.05 * span
+    scale = (width - 2) / (x1 - x0 + 2 * margin or 1.0)
+    height = max(1, int(round((y1 - y0 + 2 * margin) * scale)))
+
+    Image, ImageDraw = _pil()
+    k = 2                                           # drawn twice as large, then scaled down
+    img = Image.new("RGB", (width * k, height * k), "white")
+    draw = ImageDraw.Draw(img)
+
+    def xy(P):
+        P = np.atleast_2d(P)
+        u = ((P @ right) - x0 + margin) * scale * k
+        v = (y1 + margin - (P @ up)) * scale * k
+        return [(float(a), float(b)) for a, b in zip(u, v)]
+    depth = np.concatenate([t[0] for t in tris]) if tris else np.zeros(0)
+    if len(depth):
+        P = np.concatenate([t[1] for t in tris])
+        rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8)
+        order = np.argsort(depth, kind="stable")                 # farthest first
+        uv = np.stack([((P @ right) - x0 + margin) * scale * k,
+                       (y1 + margin - (P @ up)) * scale * k], axis=-1)[order]
+        for flat, fill in zip(uv.reshape(len(uv), 6).tolist(), map(tuple, rgb[order].tolist())):
+            draw.polygon(flat, fill=fill, outline=fill)
+    edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
+             (5, 7), (6, 7))
+    for B in boxes:
+        for i, j in edges:
+            draw.line(xy(np.array([B[i], B[j]])), fill=(255, 0, 0), width=3 * k)
+    img = img.resize((width, height), Image.LANCZOS)
+    import io
+    buf = io.BytesIO()
+    img.save(buf, format="PNG")
+    return buf.getvalue()
+
+
+def _pil():
+    """Pillow (installed with the ``png`` extra, which cairosvg needs), or
+    :class:`~.part.MissingDependency` naming the install line."""
+    try:
+        from PIL import Image, ImageDraw
+    except ImportError:
+        raise MissingDependency("an assembled PNG needs Pillow: pip install 'aidl-lang[png]'"
+                                ) from None
+    return Image, ImageDraw
+
+
+def write(output: Output, options) -> bytes:
+    """The registry's entry (:data:`~.FORMATS`): the assembled product's picture when
+    ``options.assembled`` (``width`` or 800 pixels), else :func:`to_png` with the
+    :class:`~.Options` ``dpi``, ``width``, ``show``, ``style`` and ``margin``."""
+    if options.assembled:
+        return to_assembled_png(output, options.thickness, width=options.width or 800)
+    return to_png(output, dpi=options.dpi, width=options.width, show=options.show,
+                  style=options.style, margin=options.margin)
