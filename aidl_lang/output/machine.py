@@ -1,0 +1,204 @@
+"""Machine profiles: what a laser, a router or a plotter/vinyl cutter needs to run a drawing
+that the drawing itself does not say (docs/machines.md, "Machine profiles").
+
+A profile is a small TOML file (``aidl render --machine FILE``), every key optional::
+
+    kind = "laser"            # laser | router | plotter
+    units = "mm"              # mm | inch: the units the machine file is written in
+    max_power = 1000          # laser: the S value of full power (GRBL's $30)
+    laser_mode = "M4"         # laser: M4 (dynamic power, GRBL's laser mode) or M3 (constant)
+    travel_speed = 6000       # mm/min: rapid moves (G0), for the job-time estimate
+    tool_diameter = 3.175     # router: the cutter's diameter (mm); the path is offset by half
+    safe_height = 5           # router / plotter: z (mm) of travel moves above the top
+    tabs = 0                  # holding tabs per outer cut (0: none)
+    tab_width = 3             # mm along the cut
+    tab_height = 1            # mm of material left standing (router); a laser skips the tab
+    lead_in = 0               # mm: start each cut this far off the loop (0: on it)
+
+    [engrave]                 # text and drawings
+    power = 20                # percent of max_power (laser)
+    speed = 3000              # mm/min: the feed (F)
+    passes = 1
+    [score]                   # open outlines (W0402: lines that close no loop)
+    [cut_inner]               # the loops that cut holes out of a part
+    [cut_outer]               # the outline that frees a part
+    depth_per_pass = 1.5      # router: mm of depth per pass (the passes follow from thickness)
+    plunge = 300              # router: mm/min going down
+    spindle = 18000           # router: rpm (S)
+
+An operation's keys not given take the defaults of :data:`DEFAULTS` for the profile's kind.
+The program's own ``kerf`` and ``thickness`` keep their meaning; a profile that states them
+too (``kerf = ...``, ``thickness = ...``) is compared and a difference is reported by the
+writer as a warning. All lengths are millimetres (``units`` is only how the file is written),
+speeds mm/min, power percent.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+from .part import OutputError
+
+KINDS = ("laser", "router", "plotter")
+OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer")
+
+
+class MachineError(OutputError):
+    """A profile that cannot be read or holds a value out of range; the message names the
+    file, the key and what is allowed."""
+
+
+@dataclass(frozen=True)
+class Operation:
+    """One operation's settings: ``power`` (percent of the profile's ``max_power``; lasers),
+    ``speed`` (mm/min, the feed), ``passes`` (a laser or plotter repeats the path; a router's
+    passes follow from ``depth_per_pass``), ``depth_per_pass`` (mm, routers), ``plunge``
+    (mm/min down, routers), ``spindle`` (rpm, routers)."""
+    power: float = 100.0
+    speed: float = 600.0
+    passes: int = 1
+    depth_per_pass: float = 1.0
+    plunge: float = 300.0
+    spindle: float = 18000.0
+
+
+@dataclass(frozen=True)
+class Machine:
+    """A machine profile (see the module's docstring for each key); ``source``: the file it
+    was read from ("" for a built-in default)."""
+    kind: str = "laser"
+    units: str = "mm"
+    max_power: float = 1000.0
+    laser_mode: str = "M4"
+    travel_speed: float = 6000.0
+    tool_diameter: float = 3.175
+    safe_height: float = 5.0
+    tabs: int = 0
+    tab_width: float = 3.0
+    tab_height: float = 1.0
+    lead_in: float = 0.0
+    kerf: float | None = None
+    thickness: float | None = None
+    operations: dict = field(default_factory=dict)
+    source: str = ""
+
+    def operation(self, name: str) -> Operation:
+        """The settings of operation ``name`` (one of :data:`OPERATIONS`)."""
+        return self.operations.get(name) or DEFAULTS[self.kind].operations[name]
+
+
+def _ops(**ops) -> dict:
+    return {name: ops.get(name, Operation()) for name in OPERATIONS}
+
+
+# the built-in profiles, one per kind: a 5-10 W diode or 40 W CO2 laser on 3 mm plywood at
+# middling settings, a hobby router with a 1/8" end mill, a vinyl cutter or pen plotter
+DEFAULTS: dict[str, Machine] = {
+    "laser": Machine("laser", operations=_ops(
+        engrave=Operation(power=20, speed=3000),
+        score=Operation(power=40, speed=2000),
+        cut_inner=Operation(power=100, speed=400, passes=2),
+        cut_outer=Operation(power=100, speed=400, passes=2))),
+    "router": Machine("router", tool_diameter=3.175, safe_height=5.0, operations=_ops(
+        engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+        score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+        cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
+        cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
+    "plotter": Machine("plotter", travel_speed=12000, operations=_ops(
+        engrave=Operation(speed=3000), score=Operation(speed=3000),
+        cut_inner=Operation(speed=1500), cut_outer=Operation(speed=1500))),
+}
+
+_NUMBER = ("max_power", "travel_speed", "tool_diameter", "safe_height", "tab_width",
+           "tab_height", "lead_in", "kerf", "thickness")
+_OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle")
+INCH = 25.4
+
+
+def default(kind: str = "laser") -> Machine:
+    """The built-in profile of ``kind`` (:data:`KINDS`)."""
+    if kind not in DEFAULTS:
+        raise MachineError(f"no machine kind `{kind}`: one of {', '.join(KINDS)}")
+    return DEFAULTS[kind]
+
+
+def load(path) -> Machine:
+    """The profile in TOML file ``path`` (str or Path), over the built-in defaults of its
+    ``kind``.  Raises :class:`MachineError` for a file that cannot be read, bad TOML (with
+    the line and column), an unknown key or kind, or a value out of range."""
+    import tomllib
+    from pathlib import Path
+    p = Path(path)
+    try:
+        text = p.read_bytes().decode("utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise MachineError(f"cannot read the machine profile `{p}`: {e}") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise MachineError(f"the machine profile `{p}` is not TOML: {e}") from None
+    return from_dict(data, str(p))
+
+
+def from_dict(data: dict, source: str = "") -> Machine:
+    """A :class:`Machine` from a profile's table ``data`` (as :func:`load` reads it); errors
+    as :func:`load`'s."""
+    where = f"machine profile `{source}`" if source else "machine profile"
+
+    def bad(key, why):
+        return MachineError(f"{where}: `{key}` {why}")
+    kind = data.get("kind", "laser")
+    if kind not in KINDS:
+        raise bad("kind", f"is `{kind}`, not one of {', '.join(KINDS)}")
+    base = DEFAULTS[kind]
+    units = data.get("units", "mm")
+    if units not in ("mm", "inch"):
+        raise bad("units", f"is `{units}`, not `mm` or `inch`")
+    scale = INCH if units == "inch" else 1.0
+    known = {"kind", "units", "laser_mode", "tabs", *_NUMBER, *OPERATIONS}
+    for key in data:
+        if key not in known:
+            near = [k for k in sorted(known) if k.split("_")[0] == str(key).split("_")[0]]
+            raise bad(key, "is not a profile key" + (f" (did you mean `{near[0]}`?)" if near
+                                                      else f"; the keys: {', '.join(sorted(known))}"))
+    values = {}
+    for key in _NUMBER:
+        if key in data:
+            v = data[key]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or v != v \
+                    or v == float("inf") or v < 0:
+                raise bad(key, f"must be a number >= 0, not {v!r}")
+            values[key] = float(v) * (1.0 if key == "max_power" else scale)   # in or in/min
+    if "max_power" in values and values["max_power"] <= 0:
+        raise bad("max_power", "must be more than 0")
+    if "laser_mode" in data:
+        if data["laser_mode"] not in ("M3", "M4"):
+            raise bad("laser_mode", f"is {data['laser_mode']!r}, not \"M3\" or \"M4\"")
+        values["laser_mode"] = data["laser_mode"]
+    if "tabs" in data:
+        t = data["tabs"]
+        if isinstance(t, bool) or not isinstance(t, int) or not 0 <= t <= 16:
+            raise bad("tabs", f"must be a whole number from 0 to 16, not {t!r}")
+        values["tabs"] = t
+    ops = {}
+    for name in OPERATIONS:
+        got = data.get(name, {})
+        if not isinstance(got, dict):
+            raise bad(name, "must be a table ([" + name + "] with power, speed, passes, ...)")
+        op = base.operation(name)
+        for key, v in got.items():
+            if key not in _OP_KEYS:
+                raise bad(f"{name}.{key}", f"is not an operation key; the keys: {', '.join(_OP_KEYS)}")
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or v != v \
+                    or v == float("inf") or v < 0:
+                raise bad(f"{name}.{key}", f"must be a number >= 0, not {v!r}")
+            if key == "passes" and (not isinstance(v, int) or not 1 <= v <= 100):
+                raise bad(f"{name}.passes", f"must be a whole number from 1 to 100, not {v!r}")
+            if key == "power" and v > 100:
+                raise bad(f"{name}.power", f"is a percent of max_power: 0 to 100, not {v!r}")
+            if key in ("speed", "plunge", "depth_per_pass") and v <= 0:
+                raise bad(f"{name}.{key}", "must be more than 0")
+            if key in ("speed", "plunge", "depth_per_pass"):
+                v = float(v) * scale
+            op = replace(op, **{key: v})
+        ops[name] = op
+    return replace(base, units=units, operations=ops, source=source, **values)
