@@ -92,7 +92,7 @@ def test_examples_holes_before_outlines_and_shorter_travel(path):
             assert x.part not in seen_outer, (path.stem, x.part)
     # the tour travels at most 1.5 times the drawing's own order (parts and loops as written,
     # which ignores the holes-first rule); measured: 0.08-1.35 of it, median 0.61, over the
-    # examples (the three above 1 run a grip's bands or a key's marks out and back)
+    # examples (above 1: toy_sword, key, bottle_opener; greedy, no 2-opt)
     from aidl_lang.output.toolpath import Cut
     plain = [Cut("engrave", s.part, list(s.segments), s.closed) for s in out.engrave] + \
         [Cut("cut", p.name, list(lp.segments), True) for p in out.parts for lp in p.loops]
