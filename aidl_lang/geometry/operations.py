@@ -449,7 +449,10 @@ def _allow_overlap(items: list) -> None:
                 h.overlap_ok = set()
             h.overlap_ok.update(others)
             done = True
-    solids = [o for o in objs if isinstance(o, Structure) and o.kind == "solid"]
+    # parts: solids inside no other solid (in an assembly, or at the top); two solids of one
+    # solid merge by design, so allowing them to overlap would mean nothing
+    solids = [o for o in objs if isinstance(o, Structure) and o.kind == "solid"
+              and not any(a.kind == "solid" for a in o.ancestors())]
     if len({id(o) for o in solids}) > 1:
         for o in solids:
             if not hasattr(o, "overlap_ok"):
