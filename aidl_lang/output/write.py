@@ -202,7 +202,7 @@ def replace(tmp: str | os.PathLike, target: str | os.PathLike,
     (see the module text).  Raises ``OSError``."""
     shown = shown if shown is not None else target
     check_replaceable(target, shown, dir_fd, hint)
-    for _ in range(3):
+    for _ in range(RETRIES):
         try:
             if not _renameat2(tmp, target, dir_fd, _RENAME_EXCHANGE):
                 break                                   # no renameat2 here: plain rename
@@ -220,6 +220,11 @@ def replace(tmp: str | os.PathLike, target: str | os.PathLike,
             raise NotRegularFile(shown, kind, hint)
         discard(tmp, dir_fd)
         return
+    else:
+        # the name came and went RETRIES times between two calls: never fall back to a plain
+        # rename here (it could go over whatever came last: a FIFO, a device)
+        raise OSError(errno.EAGAIN, "the output path keeps being replaced by another process "
+                      "while it is written; nothing was written", os.fspath(shown))
     check_replaceable(target, shown, dir_fd, hint)
     if dir_fd is None:
         os.replace(tmp, target)
@@ -229,7 +234,10 @@ def replace(tmp: str | os.PathLike, target: str | os.PathLike,
 
 def _put_back(tmp, target, dir_fd: int | None) -> None:
     """The node an exchange took out (now at ``tmp``) goes back to ``target``, unchanged:
-    swapped with the staged file, or renamed back if the target's name is gone meanwhile."""
+    swapped with the staged file, or renamed back if the target's name is gone meanwhile.
+    When another process removed the staged file from ``target`` and put its own node there
+    meanwhile, the swap moves that node to ``tmp``: it is left there, moved but never
+    removed (only one node can have the name, and neither is ours to delete)."""
     try:
         _renameat2(tmp, target, dir_fd, _RENAME_EXCHANGE)
     except FileNotFoundError:
@@ -250,6 +258,7 @@ def discard(tmp, dir_fd: int | None = None) -> None:
 
 
 _AT_FDCWD = -100
+RETRIES = 16        # exchanges tried while another process makes and removes the target
 _RENAME_NOREPLACE, _RENAME_EXCHANGE = 1, 2
 
 
