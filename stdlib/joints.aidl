@@ -81,7 +81,7 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
     bottom = finger_panel(width=length, height=depth, thickness=thickness, finger=finger,
                           bottom="slots", right="fingers", top="slots", left="fingers", cx=cx, cy=cy)
     front = finger_panel(width=length, height=height, thickness=thickness, finger=finger,
-                         bottom="fingers" if closed else "flat", cx=cx, cy=cy - (depth + height) / 2 - gap)
+                         top="fingers" if closed else "flat", cx=cx, cy=cy - (depth + height) / 2 - gap)
     back = finger_panel(width=length, height=height, thickness=thickness, finger=finger,
                         top="fingers" if closed else "flat", cx=cx, cy=cy + (depth + height) / 2 + gap)
     left = finger_panel(width=height, height=depth, thickness=thickness, finger=finger,

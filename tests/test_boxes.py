@@ -1,0 +1,212 @@
+"""std/boxes.aidl (issue 52, "Boxes"): lid_box, sliding_lid_box, divider_tray.
+
+Each generator goes through the real pipeline; its stated sizes (outside and inside, for
+`outside=true` and `false`) are re-read from the DXF `aidl render -o x.dxf` writes, with ezdxf
+(an independent reader), to 1e-9 mm; assembled, the fit check finds no collision (W0517) and no
+loose part (W0518) at kerf 0 and 0.15 mm, and material thicker than `thickness` collides (W0517).
+"""
+import contextlib
+import io
+from pathlib import Path
+
+import ezdxf
+import pytest
+
+import aidl_lang
+from aidl_lang.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+T, C = 3.0, 0.3
+CODES = ("W0517", "W0518")
+
+
+def compile_src(tmp_path, src):
+    p = tmp_path / "t.aidl"
+    p.write_text(src)
+    r = aidl_lang.compile(source=src, path=p)
+    assert r.ok, [f"{d.code} {d.message}" for d in r.errors]
+    return r
+
+
+def program(call, material=3, kerf=0.0):
+    return (f'import "std/boxes.aidl"\nthickness {material} mm\n'
+            + (f"kerf {kerf} mm\n" if kerf else "") + f"assembly kit {{ b = {call} }}\n")
+
+
+def cut_dxf(r):
+    """The cut DXF re-read by ezdxf: layer (the part's path after `kit.b.`) -> its polylines'
+    point lists."""
+    doc = ezdxf.read(io.StringIO(r.to_dxf()))
+    out: dict[str, list] = {}
+    for e in doc.modelspace():
+        if e.dxftype() == "LWPOLYLINE":
+            out.setdefault(e.dxf.layer.removeprefix("CUT-kit.b."), []).append(
+                [(x, y) for x, y, *_ in e.get_points("xy")])
+    return out
+
+
+def size(polys):
+    """Width and height of a part's outline (its largest polyline)."""
+    pts = max(polys, key=lambda p: (max(x for x, _ in p) - min(x for x, _ in p)))
+    xs, ys = [x for x, _ in pts], [y for _, y in pts]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def fit_codes(r):
+    return [d.code for d in r.sink.items if d.code in CODES]
+
+
+LID = "lid_box(length={L} mm, width={W} mm, height={H} mm, thickness=3 mm, clearance=0.3 mm, outside={o})"
+SLIDE = ("sliding_lid_box(length={L} mm, width={W} mm, height={H} mm, thickness=3 mm, "
+         "clearance=0.3 mm, outside={o})")
+TRAY = ("divider_tray(length={L} mm, width={W} mm, height={H} mm, rows=3, cols=4, thickness=3 mm, "
+        "clearance=0.3 mm, outside={o})")
+GENERATORS = {"lid_box": LID, "sliding_lid_box": SLIDE, "divider_tray": TRAY}
+
+
+# ------------------------------------------------------------------------------ sizes
+
+@pytest.mark.parametrize("outside", ["true", "false"])
+@pytest.mark.parametrize("kerf", [0.0, 0.15])
+def test_lid_box_sizes_outside_and_inside(tmp_path, outside, kerf):
+    L, W, H = 110.0, 70.0, 45.0
+    r = compile_src(tmp_path, program(LID.format(L=L, W=W, H=H, o=outside), kerf=kerf))
+    parts = cut_dxf(r)
+    assert set(parts) == {"body.bottom", "body.front", "body.back", "body.left", "body.right", "lid", "lip"}
+    lo, wo, ho = (L, W, H) if outside == "true" else (L + 2 * T, W + 2 * T, H + 2 * T)
+    k = kerf
+    assert size(parts["body.bottom"]) == pytest.approx((lo + k, wo + k), abs=1e-9)
+    assert size(parts["lid"]) == pytest.approx((lo + k, wo + k), abs=1e-9)
+    # the walls plus the lid are the outer height; inside: outer less two walls / two plates
+    assert size(parts["body.front"])[1] + T == pytest.approx(ho + k, abs=1e-9)
+    bl, bw = size(parts["body.bottom"])
+    assert (bl - 2 * T, bw - 2 * T) == pytest.approx((lo - 2 * T + k, wo - 2 * T + k), abs=1e-9)
+    if outside == "false":
+        assert (bl - 2 * T - k, bw - 2 * T - k, size(parts["body.front"])[1] - 2 * T + T - k) == \
+            pytest.approx((L, W, H), abs=1e-9)
+    # the lip: the inside less the clearance all round
+    assert size(parts["lip"]) == pytest.approx((lo - 2 * T - 2 * C + k, wo - 2 * T - 2 * C + k), abs=1e-9)
+
+
+@pytest.mark.parametrize("outside", ["true", "false"])
+def test_sliding_lid_box_sizes_and_the_groove(tmp_path, outside):
+    L, W, H = 120.0, 80.0, 50.0
+    r = compile_src(tmp_path, program(SLIDE.format(L=L, W=W, H=H, o=outside)))
+    parts = cut_dxf(r)
+    assert set(parts) == {"bottom", "front", "back", "left", "right", "lid", "liner[0]", "liner[1]",
+                          "rail[0]", "rail[1]"}
+    lo, wo, ho = (L, W, H) if outside == "true" else (L + 4 * T, W + 2 * T, H + 4 * T + C)
+    assert size(parts["bottom"]) == pytest.approx((lo, wo), abs=1e-9)
+    assert size(parts["back"]) == pytest.approx((lo, ho), abs=1e-9)
+    assert size(parts["left"]) == pytest.approx((ho, wo), abs=1e-9)
+    fl, hf = size(parts["front"])
+    assert fl == pytest.approx(lo - 2 * T, abs=1e-9)          # between the side walls
+    for k in range(2):
+        assert size(parts[f"liner[{k}]"]) == pytest.approx((wo - 2 * T, hf), abs=1e-9)
+        assert size(parts[f"rail[{k}]"]) == pytest.approx((wo - T, 2 * T), abs=1e-9)
+    # the lid: `clearance` from either side wall and from the back wall; it overlaps each
+    # liner and rail by the thickness less the clearance
+    lid_l, lid_w = size(parts["lid"])
+    assert (lid_l, lid_w) == pytest.approx((lo - 2 * T - 2 * C, wo - T - C), abs=1e-9)
+    assert (lid_l - (lo - 4 * T)) / 2 == pytest.approx(T - C, abs=1e-9)
+    # the groove: the back wall's height less the floor, the front (the liners), the lid and
+    # the rail leaves the clearance over the lid
+    assert ho - T - hf - T - 2 * T == pytest.approx(C, abs=1e-9)
+    # inside: under the lid, between the liners and between the front and the back
+    assert (lo - 4 * T, wo - 2 * T, hf) == pytest.approx(
+        (L, W, H) if outside == "false" else (L - 4 * T, W - 2 * T, H - 4 * T - C), abs=1e-9)
+    # the lid's pull: one slot hole
+    assert len(parts["lid"]) == 2
+
+
+@pytest.mark.parametrize("outside", ["true", "false"])
+def test_divider_tray_sizes_and_halving_slots(tmp_path, outside):
+    L, W, H = 130.0, 90.0, 35.0
+    r = compile_src(tmp_path, program(TRAY.format(L=L, W=W, H=H, o=outside)))
+    parts = cut_dxf(r)
+    lo, wo, ho = (L, W, H) if outside == "true" else (L + 2 * T, W + 2 * T, H + T)
+    li, wi, hd = lo - 2 * T, wo - 2 * T, ho - T
+    assert size(parts["body.bottom"]) == pytest.approx((lo, wo), abs=1e-9)
+    assert size(parts["body.front"]) == pytest.approx((lo, ho), abs=1e-9)
+    assert (li, wi, hd) == pytest.approx((L, W, H) if outside == "false" else (L - 2 * T, W - 2 * T, H - T),
+                                         abs=1e-9)
+    rows, cols = 3, 4
+    assert sorted(p for p in parts if "divider" in p) == sorted(
+        [f"row_divider[{j}]" for j in range(rows - 1)] + [f"col_divider[{i}]" for i in range(cols - 1)])
+    cw = (li - (cols - 1) * T) / cols
+    rw = (wi - (rows - 1) * T) / rows
+    for name, length, n, pitch, top in [("row_divider", li, cols, cw, True),
+                                        ("col_divider", wi, rows, rw, False)]:
+        for k in range((rows if name == "row_divider" else cols) - 1):
+            (pts,) = parts[f"{name}[{k}]"]
+            xs, ys = [x for x, _ in pts], [y for _, y in pts]
+            x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+            assert (x1 - x0, y1 - y0) == pytest.approx((length - 2 * C, hd), abs=1e-9)
+            # the slots' sides: the vertices off the plate's ends, in pairs `t + c` apart,
+            # each slot half the height deep from the top (row) or the bottom (col)
+            sides = sorted({round(x, 9) for x in xs if abs(x - x0) > 1e-6 and abs(x - x1) > 1e-6})
+            assert len(sides) == 2 * (n - 1)
+            mid = (x0 + x1) / 2
+            for s in range(n - 1):
+                a, b = sides[2 * s], sides[2 * s + 1]
+                assert b - a == pytest.approx(T + C, abs=1e-9)
+                # equal compartments: the slot's center where the divider crossing it stands
+                assert (a + b) / 2 - mid == pytest.approx(-length / 2 + (s + 1) * pitch + s * T + T / 2,
+                                                          abs=1e-9)
+            inner = [y for x, y in pts if abs(x - x0) > 1e-6 and abs(x - x1) > 1e-6
+                     and abs(y - (y1 if top else y0)) > 1e-6]
+            assert inner and all(y == pytest.approx((y0 + y1) / 2, abs=1e-9) for y in inner)
+
+
+# ------------------------------------------------------------------------------ the fit check
+
+@pytest.mark.parametrize("name", list(GENERATORS))
+@pytest.mark.parametrize("kerf", [0.0, 0.15])
+@pytest.mark.parametrize("outside", ["true", "false"])
+def test_assembles_without_a_collision_or_a_gap(tmp_path, name, kerf, outside):
+    call = GENERATORS[name].format(L=100, W=70, H=40, o=outside)
+    r = compile_src(tmp_path, program(call, kerf=kerf))
+    assert fit_codes(r) == []
+    assert [d.code for d in r.sink.items if d.code.startswith("W05")] == []
+
+
+@pytest.mark.parametrize("name", list(GENERATORS))
+def test_material_thicker_than_the_thickness_collides(tmp_path, name):
+    r = compile_src(tmp_path, program(GENERATORS[name].format(L=100, W=70, H=40, o="true"), material=4))
+    ws = [d for d in r.sink.items if d.code == "W0517"]
+    # the fingers in their slots, 1 mm too thick for them
+    assert ws and any(", 1 mm deep," in w.message for w in ws)
+
+
+def test_open_finger_box_has_its_flat_edge_at_the_top(tmp_path):
+    """finger_box(closed=false): the front's flat edge is at the open top, its fingers in the
+    bottom's slots (it used to be upside down: a collision with the bottom)."""
+    src = ('import "std/joints.aidl"\nthickness 3 mm\n'
+           "assembly kit { box = finger_box(length=120 mm, depth=80 mm, height=50 mm, closed=false) }\n")
+    assert fit_codes(compile_src(tmp_path, src)) == []
+
+
+# ------------------------------------------------------------------------------ demos and docs
+
+def run_cli(*args):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = main([str(a) for a in args])
+    return rc, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("name", list(GENERATORS))
+def test_demo_program_compiles_clean(name):
+    p = ROOT / "examples" / "generators" / f"{name}.aidl"
+    src = p.read_text()
+    assert src.startswith("# ") and f"{name}(" in src
+    r = aidl_lang.compile(source=src, path=p)
+    assert r.ok and [d.code for d in r.sink.items] == [], [d.message for d in r.sink.items]
+
+
+@pytest.mark.parametrize("name", list(GENERATORS))
+def test_docs_and_prompt_line(name):
+    rc, out, _ = run_cli("docs", name)
+    assert rc == 0 and out.startswith(f"{name} (assembly template, std/boxes.aidl)")
+    rc, out, _ = run_cli("prompt")
+    assert rc == 0 and any(ln.startswith(f"- {name}(") for ln in out.splitlines())
