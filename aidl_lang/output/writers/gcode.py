@@ -221,9 +221,14 @@ def _fit(f, d, t0, t1, p0, p1, depth=0) -> list:
     got = _biarc(p0, d(t0), p1, d(t1)) if math.dist(p0, p1) > 0 else None
     if got is not None:
         arcs, _ = got
-        # 15 samples of the curve; the tolerance halved for what falls between them
-        ok = all(min(_dist_to(s, f(t0 + (t1 - t0) * k / 16)) for s in arcs) <= CURVE_TOL / 2
-                 for k in range(1, 16))
+        # 15 samples of the curve within half the tolerance of the arcs (the other half for
+        # what falls between them); no arc of more than a quarter turn and the arcs no longer
+        # than the samples' polyline allows (an arc the wrong way round is never kept)
+        pts = [p0] + [f(t0 + (t1 - t0) * k / 16) for k in range(1, 16)] + [p1]
+        chord = sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+        ok = all(min(_dist_to(s, q) for s in arcs) <= CURVE_TOL / 2 for q in pts[1:-1]) \
+            and all(isinstance(s, Line) or abs(s.sweep) <= math.pi / 2 for s in arcs) \
+            and sum(s.length for s in arcs) <= chord + CURVE_TOL
         if ok or depth >= _MAX_DEPTH:
             return arcs
     elif depth >= _MAX_DEPTH:
@@ -438,10 +443,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     m = machine or M.default("laser")
     warnings = _warnings(output, m)
     if m.kind == "router":
-        from ..layout import compensate
-        tooled = compensate(output, m.tool_diameter)   # solid parts: half a diameter out/in
-        output = Output(tooled.parts, tooled.engrave, output.title, output.drawing,
-                        output.page)
+        output = tool_path(output, m.tool_diameter)
     cuts = plan(output)
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
@@ -449,6 +451,32 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     body = _body(w, cuts, m, thick, output)
     head = _header(output, m, w)
     return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings)
+
+
+def tool_path(output: Output, diameter: float) -> Output:
+    """``output`` offset by a router's tool radius (:func:`~..layout.compensate` with a kerf
+    of ``diameter``: outlines outward, holes inward, exact lines and arcs); ellipse and
+    spline pieces are first made arcs (:func:`as_arcs`, within :data:`CURVE_TOL`), whose
+    offset is exact.  Raises :class:`~..part.OutputError` naming the part where the tool is
+    too large for a feature."""
+    from ...geometry.curves import Loop
+    from ..layout import LayoutError, compensate
+    from ..part import PartOutline
+    parts = []
+    for p in output.parts:
+        if any(isinstance(g, (EllipticArc, Spline)) for lp in p.loops for g in lp.segments):
+            p = PartOutline(p.name, p.kind, [Loop([g for s in lp.segments for g in as_arcs(s)])
+                                              for lp in p.loops], p.thickness)
+        parts.append(p)
+    try:
+        tooled = compensate(Output(parts, output.engrave, output.title, output.drawing,
+                                   output.page), diameter)
+    except LayoutError as e:
+        msg = str(e).replace(f"kerf {diameter:g} mm on part", "the router's tool "
+                             f"({diameter:g} mm across) does not fit part", 1)
+        raise OutputError(f"{msg}; use a smaller tool (the profile's `tool_diameter`)") \
+            from None
+    return tooled
 
 
 def _warnings(output: Output, m) -> list[str]:
