@@ -540,3 +540,19 @@ def test_api_encode_with_machine(tmp_path):
     with pytest.raises(Exception) as e:
         r.encode("gcode", machine={"kind": "drill"})
     assert "`kind` is `drill`" in str(e.value)
+
+
+def test_mcp_render_writes_gcode_with_a_machine(tmp_path):
+    pytest.importorskip("mcp")
+    from aidl_lang.mcp import tools as T
+    src = PLATE
+    doc, _ = T.render(T.Workspace(tmp_path), source=src, output="p.gcode", width=64,
+                      machine="router")
+    text = (tmp_path / "p.gcode").read_text()
+    assert doc["written"] == "p.gcode" and "M3 S18000" in text
+    (tmp_path / "m.toml").write_text("tabz = 1\n")
+    with pytest.raises(T.Refused) as e:
+        T.render(T.Workspace(tmp_path), source=src, output="q.gcode", width=64,
+                 machine="m.toml")
+    assert "`tabz` is not a profile key" in str(e.value)
+    assert not (tmp_path / "q.gcode").exists()
