@@ -556,3 +556,16 @@ def test_mcp_render_writes_gcode_with_a_machine(tmp_path):
                  machine="m.toml")
     assert "`tabz` is not a profile key" in str(e.value)
     assert not (tmp_path / "q.gcode").exists()
+
+
+def test_router_paths_are_the_tool_offset_loops_holes_first_where_offsets_overlap():
+    """examples/mounting_plate.aidl's washers lie closer than the tool: their offset outlines
+    overlap their neighbours', and each washer's hole must still come before its outline.
+    Each depth's path is exactly the loop offset by the tool radius (output/layout.py's
+    exact offset), 2 depths for 3 mm at 1.5 mm per pass."""
+    out = _output(ROOT / "examples" / "mounting_plate.aidl")
+    m = DEFAULTS["router"]
+    text = gcode.job(out, m).text
+    tooled = gcode.tool_path(out, m.tool_diameter)
+    check_exact(text, tooled, passes=2, kind="router")
+    check_holes_first(text, tooled, kind="router")
