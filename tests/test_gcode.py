@@ -569,3 +569,20 @@ def test_router_paths_are_the_tool_offset_loops_holes_first_where_offsets_overla
     tooled = gcode.tool_path(out, m.tool_diameter)
     check_exact(text, tooled, passes=2, kind="router")
     check_holes_first(text, tooled, kind="router")
+
+
+def test_router_tabs_rise_to_tab_height_on_the_deep_passes():
+    out = _output(PLATE)                                 # 6 mm thick: depths 1.5 ... 6
+    m = from_dict({"kind": "router", "tabs": 2, "tab_width": 4, "tab_height": 1})
+    moves = replay(gcode.job(out, m).text, "router")
+    r = m.tool_diameter / 2
+    # along the outline (x beyond the holes), moves at z = -5 over the tabs: 2 tabs x 4 mm on
+    # the only depth below -5 (-6); everything else on the outline at its depth
+    over = [mv for mv in moves if mv.g != 0 and mv.p != mv.q and mv.z == -5]
+    assert sum(mv.length for mv in over) == pytest.approx(2 * 4, abs=1e-6)
+    outer_len = 2 * (100 + 60 - 4 * 8) + 2 * math.pi * (8 + r)
+    def outside(p):                                      # of the holes: on the outline
+        return max(abs(p[0]) / 50, abs(p[1]) / 30) > 0.95
+    deepest = [mv for mv in moves if mv.g != 0 and mv.p != mv.q and mv.z == -6
+               and outside(mv.p) and outside(mv.q)]
+    assert sum(mv.length for mv in deepest) == pytest.approx(outer_len - 8, abs=1e-6)

@@ -422,6 +422,9 @@ class _Writer:
                 return
             self.out(f"G1 X{num(ex)} Y{num(ey)}")
         else:
+            if (ex, ey) == (self.x, self.y):
+                # an arc too short for 1e-10 mm: G2/G3 to its own start is a whole circle
+                return
             i, j = _round(s.center[0] - self.x), _round(s.center[1] - self.y)
             L = s.length
             self.out(f"{'G3' if s.sweep > 0 else 'G2'} X{num(ex)} Y{num(ey)} "
