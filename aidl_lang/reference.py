@@ -551,16 +551,33 @@ least 2 mm"), and constraints (`==`, `<=` statements) for what the solver should
 `kerf LENGTH` (top level: every part; inside a structure: that structure and its children,
 the nearest one wins). `aidl render` offsets every cut by half the kerf so parts come out at
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
-Only SVG, DXF and PNG are offset: STL, 3MF and STEP keep the designed size.
+Only SVG, DXF, PNG and G-code are offset: STL, 3MF and STEP keep the designed size.
 `aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
 """, ["kerf_width", "laser kerf", "cut width"]),
     "thickness": ("statement", "`thickness 3 mm`: the material thickness for STL, 3MF, STEP "
                   "and the parts list.", """
 `thickness LENGTH` (top level: every part; inside a structure: that structure and its
 children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP; default
-3 mm) and the thickness of `aidl parts`. No effect on 2D outputs. `aidl render --thickness`
-overrides it. A positive length known before solving.
+3 mm), the thickness of `aidl parts` and the depth a router's G-code cuts to (see
+`machine`). No other effect on 2D outputs. `aidl render --thickness` overrides it. A
+positive length known before solving.
 """, ["material thickness", "extrude", "extrusion", "depth"]),
+    "machine": ("statement", "`aidl render FILE -o x.gcode --machine m.toml`: G-code (GRBL) "
+                "for a laser, router or plotter.", """
+`aidl render FILE -o part.gcode` (or .nc) writes GRBL G-code in mm: engraving first, then
+each part's holes before its outline, parts in a short travel order; lines G1, arcs and
+circles G2/G3 with I/J (exact), ellipses and splines as arcs within 0.001 mm. It prints the
+cut and travel length and the job time. `--machine FILE` takes a TOML profile (every key
+optional; `--machine router` or `plotter`: the built-in ones; default the built-in laser):
+`kind` (laser | router | plotter), `max_power` (S of 100 %), `laser_mode` (M4 | M3),
+`travel_speed`, `tool_diameter`, `safe_height`, `tabs`, `tab_width`, `tab_height`,
+`lead_in`, `units`, and tables `[engrave]`, `[score]`, `[cut_inner]`, `[cut_outer]` with
+`power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`. A router's
+path is offset by the tool radius, down `depth_per_pass` at a time to the program's
+`thickness`. The program's `kerf` and `thickness` are used; a profile stating others is
+warned about. `--layout sheet -o cut.gcode` writes one program per sheet.
+""", ["gcode", "g-code", "grbl", "--machine", "machine profile", "cnc", "router", "toolpath",
+      "nc"]),
     "assembled": ("statement", "The assembled product: parts placed in 3D with `Place`, "
                   "written by `aidl render --assembled`, checked for fit.", """
 `Place(part, position=(x, y, z), rotation=(rx, ry, rz))` in the assembly that holds the part
@@ -953,6 +970,10 @@ EXAMPLES: dict[str, str] = {
         "body = Rectangle(center=(0, 0), width=width, height=100)\nhole bore { c = "
         "Circle(center=(0, 0), radius=4) }\nCenterInside(bore, body)\n"
         "assert body.width <= 300 mm, \"fits the laser bed\"", "plate"),
+    "machine": "# aidl render plate.aidl -o plate.gcode --machine router.toml\n"
+               "kerf 0.15 mm\nthickness 6 mm\n\n" + _solid(
+                   "r = Rectangle(center=(0, 0), width=60, height=40)\n"
+                   "hole bore { c = Circle(center=(0, 0), radius=5) }", "plate"),
     "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
                                         "plate"),
     "thickness": "thickness 3 mm\n\nassembly kit {\n    solid plate { r = Rectangle(center=(0, "

@@ -91,6 +91,10 @@ EXAMPLE_FIGURES = [
     ("laser_box_sheet", "laser_box", ("--layout", "sheet", "--sheet", "300x200mm",
                                       "--kerf", "0.15mm")),
     ("stdlib_gear_pair", "gear_pair", ("--png-width", "520")),
+    # G-code toolpaths (docs/machines.md): `--toolpath KIND` writes the example's G-code
+    # with that built-in machine profile and draws it back (docs/toolpath_picture.py)
+    ("gcode_laser", "mounting_plate", ("--toolpath", "laser")),
+    ("gcode_router", "mounting_plate", ("--toolpath", "router")),
 ]
 RENDER_LINE = re.compile(r"^#\s*render:(.*)$", re.M)
 SCREENSHOTS = "vscode-*.png"     # taken by editors/vscode/test/code_server_screenshots.py
@@ -155,6 +159,8 @@ def render(pic: Picture) -> bytes:
             prog.write_text(pic.source, encoding="utf-8")
         out = Path(tmp) / f"{pic.name}.png"
         err = io.StringIO()
+        if pic.options[:1] == ("--toolpath",):
+            return _toolpath(prog, pic.options[1], Path(tmp), err)
         with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
             width = () if "--png-width" in pic.options else ("--png-width", str(WIDTH))
             rc = main(["render", str(prog), "-o", str(out), *width, *pic.options])
@@ -163,6 +169,19 @@ def render(pic: Picture) -> bytes:
                      else str(pic.path.relative_to(ROOT)))
             raise RuntimeError(f"{where}: `aidl render` failed (exit {rc}):\n{err.getvalue()}")
         return out.read_bytes()
+
+
+def _toolpath(prog: Path, kind: str, tmp: Path, err) -> bytes:
+    """The toolpath picture of ``prog``'s G-code on the built-in ``kind`` profile."""
+    from aidl_lang.cli.main import main
+    sys.path.insert(0, str(DOCS))
+    from toolpath_picture import draw
+    out = tmp / "job.gcode"
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        rc = main(["render", str(prog), "-o", str(out), "--machine", kind])
+    if rc != 0:
+        raise RuntimeError(f"{prog}: `aidl render --machine {kind}` failed:\n{err.getvalue()}")
+    return draw(out.read_text(), kind, 560)
 
 
 def difference(png: bytes, reference: Path) -> str | None:

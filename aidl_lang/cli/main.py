@@ -137,12 +137,16 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
     r.add_argument("--thickness", default=None, metavar="LENGTH",
-                   help="extrusion thickness for STL/3MF/STEP, e.g. 3mm (default: the program's "
-                        "`thickness`, else 3 mm)")
+                   help="extrusion thickness for STL/3MF/STEP and a router's G-code depth, "
+                        "e.g. 3mm (default: the program's `thickness`, else 3 mm)")
     r.add_argument("--kerf", default=None, metavar="LENGTH",
                    help="offset every cut by half this kerf so parts come out at their size, "
-                        "e.g. 0.15mm (default: the program's `kerf`, else none); SVG, DXF "
-                        "and PNG only: STL, 3MF and STEP keep the designed size")
+                        "e.g. 0.15mm (default: the program's `kerf`, else none); SVG, DXF, "
+                        "PNG and G-code only: STL, 3MF and STEP keep the designed size")
+    r.add_argument("--machine", default=None, metavar="FILE",
+                   help="machine profile (TOML) for G-code: laser, router or plotter, power, "
+                        "speeds, passes, tool, tabs (`aidl docs machine`); or laser, router, "
+                        "plotter for a built-in profile (default: laser)")
     r.add_argument("--assembled", action="store_true",
                    help="write the assembled product: every part extruded by its thickness and "
                         "placed by its `Place` (STL, 3MF, STEP, GLB: one named object per part; "
@@ -674,6 +678,14 @@ def cmd_render(args) -> int:
                           "is in 3D, a layout is flat")
     if args.layout is None and (args.sheet, args.gap, args.rotate) != ("600x400mm", "3mm", "0,90"):
         return _usage("--sheet, --gap and --rotate are for a cutting layout: add --layout sheet")
+    machine = None
+    if args.machine is not None:
+        from ..output.machine import KINDS, MachineError, default, load
+        try:
+            machine = default(args.machine) if args.machine in KINDS and \
+                not os.path.exists(args.machine) else load(args.machine)
+        except MachineError as e:
+            return _usage(str(e))
     if args.file == "-":
         src = sys.stdin.read()
     else:
@@ -686,7 +698,8 @@ def cmd_render(args) -> int:
         _emit(res.sink, args.json, False)
         return 1
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
-                  thickness=thickness, margin=args.margin, assembled=args.assembled)
+                  thickness=thickness, margin=args.margin, assembled=args.assembled,
+                  machine=machine)
     notes = []
     try:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
@@ -737,6 +750,17 @@ def cmd_render(args) -> int:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
+    from ..output.writers.gcode import GCODE_FORMATS, read_summary
+    said = set()
+    for o, data in items:                    # G-code: the estimates, the profile's warnings
+        if _suffix(o, args) in GCODE_FORMATS:
+            estimate, warnings = read_summary(data)
+            for w in warnings:
+                if w not in said:
+                    said.add(w)
+                    print(f"aidl: warning: {w}", file=sys.stderr)
+            if estimate and not args.json:
+                notes.append(f"{'standard output' if o == STDOUT else o}: {estimate}")
     if not args.json:
         info = sys.stderr if STDOUT in outs else sys.stdout    # stdout holds the drawing
         for line in notes:

@@ -79,8 +79,9 @@ structures as one body.
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
-the parts list) and `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it so
-parts come out at size) stand at the top or inside a structure (for it and its children).
+the parts list) and `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
+stand at the top or inside a structure (for it and its children); `-o x.gcode`: G-code
+(`aidl docs machine`).
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length

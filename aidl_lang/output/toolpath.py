@@ -86,6 +86,12 @@ def plan(output: Output, origin: Point = (0.0, 0.0)) -> list[Cut]:
     by_part: dict = {}
     for (i, lp), d in zip(loops, depth):
         by_part.setdefault(i, []).append((d, lp))
+    # within a part, the order follows the part's own loops only: another part's outline
+    # around this one's (parts that overlap, e.g. a router's paths offset by the tool radius
+    # on parts closer than the tool) must not put an outline before its own holes
+    for i, got in by_part.items():
+        own = _depths([lp for _, lp in got])
+        by_part[i] = [(d, lp) for d, (_, lp) in zip(own, got)]
     remaining = sorted(by_part, key=lambda i: -part_depth.get(i, 0))
     while remaining:
         deepest = part_depth.get(remaining[0], 0)

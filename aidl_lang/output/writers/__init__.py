@@ -19,7 +19,8 @@ class Options:
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
     least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
     STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
-    product)."""
+    product), ``machine`` (G-code: a :class:`~..machine.Machine`, a kind's name, a TOML
+    profile's path or a dict of its keys; None: the built-in laser profile)."""
     show: tuple = ()
     style: str = "preview"
     dpi: float = 96.0
@@ -27,6 +28,7 @@ class Options:
     thickness: float | None = None
     margin: float | None = None
     assembled: bool = False
+    machine: object = None
 
 
 @dataclass(frozen=True)
@@ -76,6 +78,11 @@ FORMATS: dict[str, Format] = {
                    text=True, assembled=True, per_item=5e-3),
     ".glb": Format("glb", "write", "model/gltf-binary", "the assembled product for 3D viewers",
                    assembled=True, per_vertex=60e-6),
+    ".gcode": Format("gcode", "write", "text/x.gcode",
+                     "G-code (GRBL) for a laser, router or plotter (--machine)",
+                     text=True, cut=True, per_item=300e-6),
+    ".nc": Format("gcode", "write", "text/x.gcode", "G-code (GRBL), as .gcode",
+                  text=True, cut=True, per_item=300e-6),
 }
 # the formats a cutter reads (and their preview): written with the kerf offset applied; STL,
 # 3MF, STEP and GLB are the designed solid and never offset

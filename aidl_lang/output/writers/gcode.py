@@ -1,0 +1,625 @@
+"""G-code writer (GRBL dialect) for lasers, routers and pen plotters (docs/machines.md, "GRBL
+laser", "CNC router").
+
+The program runs the cuts of :func:`~..toolpath.plan` in its order (engraving first, then part
+by part every loop inside another before the loop around it, a nearest-neighbour tour) with
+the settings of a machine profile (:mod:`~..machine`; ``Options.machine``, ``aidl render
+--machine FILE``; the built-in laser profile when none is given).  What it writes:
+
+* ``G21 G90 G17``: millimetres, absolute coordinates, the XY plane; a header of ``;``
+  comments with the program, the profile and the estimates (cut and travel length, job time).
+* every line as ``G1``, every arc as ``G2`` (clockwise) or ``G3`` (counter-clockwise) to its
+  end with ``I`` / ``J`` the centre relative to the start; an arc of more than half a turn is
+  written as two halves, a whole circle as two half-circles from its point of angle 0 (a
+  full-circle ``G2`` whose end is its start is legal, but two halves leave no doubt about the
+  end point).  Numbers have :data:`DECIMALS` decimals (trailing zeros dropped), no exponent:
+  the file holds the exact output to 1e-10 mm; I / J are taken from the start as written,
+  so the centre a reader finds is the exact centre to 1e-10 mm.  GRBL reads any number of
+  digits and keeps 8 significant ones (``read_float``), in single precision: a controller
+  lands within about 1e-5 mm of the file, far below a step.  A move line stays under GRBL's
+  80-character line buffer for coordinates under 10 m (``F`` and ``S`` are on lines of their
+  own: ``G1 F400 S1000`` sets them without moving);
+* ellipse pieces and spline pieces as arcs: each piece is cut into biarcs (two tangent arcs
+  from each end's position and direction, equal tangent lengths), split in half until every
+  sample of the curve lies within :data:`CURVE_TOL` mm of them; the ends are the exact ends.
+
+Laser (``kind = "laser"``): ``M4`` (dynamic power, GRBL's laser mode ``$32=1``; or ``M3``
+per the profile's ``laser_mode``) once, then for each cut ``G0`` to its start with ``S0``,
+``G1 F<speed> S<power % x max_power>``, the path, repeated ``passes`` times (a closed loop
+ends where it starts; an open path is reached again by ``G0 ... S0``).  In laser mode GRBL
+turns the beam off on every ``G0`` anyway; the ``S0`` on the travel lines keeps the beam off
+also on a controller with laser mode off (``$32=0``), where ``G0`` would keep it on.  Holding
+tabs (profile ``tabs``, ``tab_width``) on the outer cuts are gaps run with ``S0``.  The job
+ends ``M5``, ``G0 X0 Y0``, ``M2``.
+
+Router (``kind = "router"``): the paths are the cuts offset by the tool radius (outside the
+outlines, inside the holes: :func:`~..layout.compensate` with a kerf of ``tool_diameter``,
+exact lines and arcs), run in the loops' own direction (outlines counter-clockwise, holes
+clockwise: conventional milling with a clockwise spindle).  ``M3 S<spindle>``, travel at
+``safe_height`` (``G0 Z``), then down ``depth_per_pass`` at a time (``G1 Z.. F<plunge>``) to
+the part's thickness (``Options.thickness``, else the program's ``thickness``, else 3 mm),
+each depth one run of the path; over a tab the tool rises to ``tab_height`` above the bottom.
+Engraving runs at its operation's ``depth_per_pass`` (one pass).
+
+Plotter (``kind = "plotter"``): the pen is Z: up at ``safe_height`` (``G0 Z``), down at
+``Z0`` (``G1 Z0``); paths as the laser's, ``passes`` times.
+
+Lead-in (profile ``lead_in`` mm, lasers and routers): each closed cut starts that far off its
+start point on the scrap side (to the right of the direction of travel: outside an outline,
+inside a hole), a straight ``G1`` onto the loop; left out where that point is not on the
+scrap side (a hole narrower than the lead-in).
+
+:func:`job` gives the program with its numbers (:class:`Job`: cut and travel lengths, the
+time at the profile's speeds, warnings); :func:`write` is the registry's entry.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
+
+GCODE_FORMATS = (".gcode", ".nc")
+DECIMALS = 10          # digits after the point: 1e-10 mm
+CURVE_TOL = 1e-3       # mm: the largest distance of an ellipse or spline piece from its arcs
+DEFAULT_THICKNESS = 3.0
+_MAX_DEPTH = 24        # halvings of one curve piece at most (2^24 arcs: never reached)
+
+
+class Move:
+    """One motion: ``g`` (0 travel, 1 line, 2 clockwise arc, 3 counter-clockwise arc) to
+    ``(x, y)`` (None: unchanged) and ``z`` (None: unchanged); ``center`` for arcs; ``cut``:
+    the tool cuts (laser on, tool or pen down)."""
+    __slots__ = ("g", "x", "y", "z", "center", "cut")
+
+    def __init__(self, g, x=None, y=None, z=None, center=None, cut=False):
+        self.g, self.x, self.y, self.z, self.center, self.cut = g, x, y, z, center, cut
+
+
+@dataclass
+class Job:
+    """A G-code program and its numbers: ``text``; ``cut`` (mm run cutting, every pass and
+    depth), ``travel`` (mm of ``G0`` in XY), ``seconds`` (the job's time at the profile's
+    feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
+    ``thickness`` unlike the program's)."""
+    text: str
+    cut: float
+    travel: float
+    seconds: float
+    warnings: list = field(default_factory=list)
+
+    def summary(self, name: str) -> str:
+        """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
+        speeds``."""
+        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds)}"
+
+
+def estimate_text(cut: float, travel: float, seconds: float) -> str:
+    s = int(round(seconds))
+    t = f"{s // 3600} h {s % 3600 // 60} min" if s >= 3600 else \
+        f"{s // 60} min {s % 60} s" if s >= 60 else f"{s} s"
+    return f"cut {cut:.1f} mm, travel {travel:.1f} mm, about {t} at the profile's speeds"
+
+
+def read_summary(data: bytes) -> tuple[str, list[str]]:
+    """The estimate line and the warnings of a program :func:`write` wrote (its header),
+    for ``aidl render`` to print."""
+    estimate, warnings = "", []
+    for line in data.decode("ascii", "replace").splitlines()[:12]:
+        if line.startswith("; cut "):
+            estimate = line[2:]
+        elif line.startswith("; warning: "):
+            warnings.append(line[len("; warning: "):])
+    return estimate, warnings
+
+
+def machine_of(options):
+    """The :class:`~..machine.Machine` of ``options.machine``: None (the built-in laser), a
+    Machine, a kind's name (``laser``, ``router``, ``plotter``: its built-in profile), a path
+    of a TOML profile, or a dict as a profile's table.  Raises
+    :class:`~..machine.MachineError`."""
+    from .. import machine as M
+    m = getattr(options, "machine", None)
+    if m is None:
+        return M.default("laser")
+    if isinstance(m, M.Machine):
+        return m
+    if isinstance(m, dict):
+        return M.from_dict(m)
+    if isinstance(m, str) and m in M.KINDS:
+        return M.default(m)
+    return M.load(m)
+
+
+# ------------------------------------------------------------------ numbers
+def num(v: float) -> str:
+    """``v`` with :data:`DECIMALS` decimals, trailing zeros and a bare point dropped."""
+    t = f"{v:.{DECIMALS}f}".rstrip("0").rstrip(".")
+    return "0" if t in ("-0", "") else t
+
+
+def _round(v: float) -> float:
+    return float(num(v))
+
+
+# ------------------------------------------------------------------ curves to lines and arcs
+def _arc_through(p, t, q):
+    """The arc from ``p`` leaving in unit direction ``t`` to ``q``: (center, radius,
+    start_angle, sweep), or None when it is straight."""
+    n = (-t[1], t[0])
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    den = 2 * (n[0] * dx + n[1] * dy)
+    d2 = dx * dx + dy * dy
+    if d2 == 0.0 or abs(den) <= 1e-12 * math.sqrt(d2):
+        return None
+    s = d2 / den
+    c = (p[0] + s * n[0], p[1] + s * n[1])
+    a0 = math.atan2(p[1] - c[1], p[0] - c[0])
+    a1 = math.atan2(q[1] - c[1], q[0] - c[0])
+    sw = (a1 - a0) % (2 * math.pi)
+    if s < 0:                         # centre on the right: clockwise
+        sw = sw - 2 * math.pi if sw > 0 else 0.0
+    return c, abs(s), a0, sw
+
+
+def _biarc(p0, t0, p1, t1):
+    """Two tangent arcs (or lines) from ``p0`` leaving along ``t0`` to ``p1`` arriving
+    along ``t1`` (unit vectors), equal tangent lengths; None when degenerate."""
+    vx, vy = p1[0] - p0[0], p1[1] - p0[1]
+    tx, ty = t0[0] + t1[0], t0[1] + t1[1]
+    vt = vx * tx + vy * ty
+    vv = vx * vx + vy * vy
+    den = 2 * (1 - (t0[0] * t1[0] + t0[1] * t1[1]))
+    if vv == 0.0:
+        return None
+    if abs(den) < 1e-12:
+        v2 = vx * t1[0] + vy * t1[1]
+        if abs(v2) < 1e-12 * math.sqrt(vv):
+            return None
+        d = vv / (4 * v2)
+    else:
+        disc = vt * vt + den * vv
+        d = (-vt + math.sqrt(max(disc, 0.0))) / den
+    if not d > 0:
+        return None
+    q0 = (p0[0] + d * t0[0], p0[1] + d * t0[1])
+    q1 = (p1[0] - d * t1[0], p1[1] - d * t1[1])
+    m = ((q0[0] + q1[0]) / 2, (q0[1] + q1[1]) / 2)
+    out = []
+    a = _arc_through(p0, t0, m)
+    out.append(Line(p0, m) if a is None else Arc(*a))
+    b = _arc_through(p1, (-t1[0], -t1[1]), m)
+    if b is None:
+        out.append(Line(m, p1))
+    else:
+        c, r, a0, sw = b
+        out.append(Arc(c, r, a0 + sw, -sw))
+    return out, m
+
+
+def _dist_to(seg, p) -> float:
+    """Distance from ``p`` to a line or arc segment."""
+    if isinstance(seg, Line):
+        (x0, y0), (x1, y1) = seg.start, seg.end
+        dx, dy = x1 - x0, y1 - y0
+        L2 = dx * dx + dy * dy
+        u = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / L2))
+        return math.hypot(p[0] - x0 - u * dx, p[1] - y0 - u * dy)
+    c = seg.center
+    a = math.atan2(p[1] - c[1], p[0] - c[0])
+    rel = (a - seg.start_angle) % (2 * math.pi) if seg.sweep > 0 else \
+        (seg.start_angle - a) % (2 * math.pi)
+    if rel <= abs(seg.sweep):
+        return abs(math.hypot(p[0] - c[0], p[1] - c[1]) - seg.radius)
+    return min(math.dist(p, seg.start), math.dist(p, seg.end))
+
+
+def _fit(f, d, t0, t1, p0, p1, depth=0) -> list:
+    """Biarcs within :data:`CURVE_TOL` of the curve ``f`` (parameter -> point; ``d``:
+    parameter -> unit direction) from ``t0`` to ``t1``, whose ends ``p0``, ``p1`` are
+    kept exactly."""
+    got = _biarc(p0, d(t0), p1, d(t1)) if math.dist(p0, p1) > 0 else None
+    if got is not None:
+        arcs, _ = got
+        # 15 samples of the curve within half the tolerance of the arcs (the other half for
+        # what falls between them); no arc of more than a quarter turn and the arcs no longer
+        # than the samples' polyline allows (an arc the wrong way round is never kept)
+        pts = [p0] + [f(t0 + (t1 - t0) * k / 16) for k in range(1, 16)] + [p1]
+        chord = sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+        ok = all(min(_dist_to(s, q) for s in arcs) <= CURVE_TOL / 2 for q in pts[1:-1]) \
+            and all(isinstance(s, Line) or abs(s.sweep) <= math.pi / 2 for s in arcs) \
+            and sum(s.length for s in arcs) <= chord + CURVE_TOL
+        if ok or depth >= _MAX_DEPTH:
+            return arcs
+    elif depth >= _MAX_DEPTH:
+        return [Line(p0, p1)] if math.dist(p0, p1) > 0 else []
+    tm = (t0 + t1) / 2
+    pm = f(tm)
+    return _fit(f, d, t0, tm, p0, pm, depth + 1) + _fit(f, d, tm, t1, pm, p1, depth + 1)
+
+
+def _unit(v):
+    L = math.hypot(v[0], v[1])
+    return (v[0] / L, v[1] / L) if L > 0 else None
+
+
+def as_arcs(s) -> list:
+    """Segment ``s`` as G-code's lines and arcs: a line or an arc of at most half a turn
+    itself, a longer arc in two halves, a circle as two half-circles from its point of angle
+    0, an ellipse or spline piece as biarcs within :data:`CURVE_TOL`."""
+    if isinstance(s, Line):
+        return [s] if s.start != s.end else []
+    if isinstance(s, Circle):
+        sw = math.pi if s.ccw else -math.pi
+        return [Arc(s.center, s.radius, 0.0, sw), Arc(s.center, s.radius, math.pi, sw)]
+    if isinstance(s, Arc):
+        if abs(s.sweep) <= math.pi:
+            return [s]
+        h = s.sweep / 2
+        return [Arc(s.center, s.radius, s.start_angle, h),
+                Arc(s.center, s.radius, s.start_angle + h, h)]
+    if isinstance(s, EllipticArc):
+        e, a, sw = s.curve, s.start_param, s.sweep
+        sg = 1.0 if sw > 0 else -1.0
+
+        def f(t):
+            return e.at(a + sw * t)
+
+        def d(t):
+            x, y = e.tangent(a + sw * t)
+            return (sg * x, sg * y)
+        # quarter turns at most per piece to start with
+        n = max(1, math.ceil(abs(sw) / (math.pi / 2) - 1e-9))
+        pts = [s.start] + [f(k / n) for k in range(1, n)] + [s.end]
+        return [g for k in range(n) for g in _fit(f, d, k / n, (k + 1) / n, pts[k], pts[k + 1])]
+    if isinstance(s, Spline):
+        from ...geometry.spline import bez_at, bez_d1, bez_d2
+        out = []
+        for b in s.spans:
+            def f(t, b=b):
+                return bez_at(b, t)
+
+            def d(t, b=b):
+                u = _unit(bez_d1(b, t))
+                if u is None:               # a cusp of the control polygon
+                    u = _unit(bez_d2(b, t)) or _unit((b[3][0] - b[0][0], b[3][1] - b[0][1])) \
+                        or (1.0, 0.0)
+                    if t > 0.5:         # d2 points backwards at an end cusp
+                        u = (-u[0], -u[1])
+                return u
+            out += _fit(f, d, 0.0, 1.0, b[0], b[3])
+        return out
+    raise OutputError(f"cannot write a {type(s).__name__} as G-code")
+
+
+# ------------------------------------------------------------------ tabs and lead-ins
+def _split_at(seg, u: float):
+    """``seg`` (a line or an arc) cut at length ``u`` from its start: (before, after)."""
+    L = seg.length
+    if isinstance(seg, Line):
+        k = u / L
+        m = (seg.start[0] + (seg.end[0] - seg.start[0]) * k,
+             seg.start[1] + (seg.end[1] - seg.start[1]) * k)
+        return Line(seg.start, m), Line(m, seg.end)
+    k = u / L
+    a = seg.sweep * k
+    return (Arc(seg.center, seg.radius, seg.start_angle, a),
+            Arc(seg.center, seg.radius, seg.start_angle + a, seg.sweep - a))
+
+
+def with_tabs(path: list, n: int, width: float) -> list[tuple]:
+    """``path`` (lines and arcs of a closed cut) as ``(segment, on_tab)`` pieces with ``n``
+    tabs of ``width`` mm, their middles evenly spaced along it, the first half a spacing from
+    the start (none when the path is shorter than twice the tabs)."""
+    total = sum(s.length for s in path)
+    if n <= 0 or width <= 0 or total <= 2 * n * width:
+        return [(s, False) for s in path]
+    step = total / n
+    marks = []
+    for k in range(n):
+        mid = step * (k + 0.5)
+        marks += [(mid - width / 2, True), (mid + width / 2, False)]
+    out, at, i = [], 0.0, 0
+    on = False
+    for s in path:
+        L = s.length
+        rest, base = s, at
+        while i < len(marks) and marks[i][0] < base + rest.length - 1e-12:
+            u = marks[i][0] - base
+            if u > 1e-12:
+                a, rest = _split_at(rest, u)
+                out.append((a, on))
+                base += a.length
+            on = marks[i][1]
+            i += 1
+        out.append((rest, on))
+        at += L
+    return out
+
+
+def _lead_point(cut, path, lead: float, loop_poly):
+    """Where a closed cut's lead-in starts: ``lead`` mm to the right of the path's start
+    (the scrap side), or None when that point is not on the scrap side of the loop."""
+    from ...geometry.curves import tangent_at
+    from ..toolpath import _inside
+    if lead <= 0 or not cut.closed or not path:
+        return None
+    tx, ty = tangent_at(path[0], False)
+    p0 = path[0].start
+    q = (p0[0] + lead * ty, p0[1] - lead * tx)
+    inside = _inside(q, loop_poly)
+    if (cut.operation == "cut_inner") != inside:
+        return None
+    return q
+
+
+# ------------------------------------------------------------------ the program
+class _Writer:
+    def __init__(self, machine):
+        self.m = machine
+        self.lines: list[str] = []
+        self.x = self.y = 0.0
+        self.z = None
+        self.cut = self.travel = self.seconds = 0.0
+        self.feed = None
+        self.power = None
+
+    def out(self, line: str) -> None:
+        self.lines.append(line)
+
+    def setting(self, feed: float, power: float | None = None) -> None:
+        """``G1 F.. S..`` (no motion) when the feed or power changes."""
+        words = []
+        if feed != self.feed:
+            words.append(f"F{num(feed)}")
+            self.feed = feed
+        if power is not None and power != self.power:
+            words.append(f"S{num(power)}")
+            self.power = power
+        if words:
+            self.out("G1 " + " ".join(words))
+
+    def rapid(self, x=None, y=None, z=None, off: bool = False) -> None:
+        w = ["G0"]
+        d = 0.0
+        if x is not None:
+            x, y = _round(x), _round(y)
+            if (x, y) == (self.x, self.y) and z is None:
+                return
+            w += [f"X{num(x)}", f"Y{num(y)}"]
+            d = math.hypot(x - self.x, y - self.y)
+            self.travel += d
+            self.x, self.y = x, y
+        if z is not None:
+            z = _round(z)
+            if z == self.z and x is None:
+                return
+            w.append(f"Z{num(z)}")
+            d = math.hypot(d, z - (self.z if self.z is not None else z))
+            self.z = z
+        if off:
+            w.append("S0")
+            self.power = 0.0
+        self.seconds += d / self.m.travel_speed * 60.0
+        self.out(" ".join(w))
+
+    def plunge(self, z: float, feed: float) -> None:
+        z = _round(z)
+        if z == self.z:
+            return
+        self.setting(feed)
+        d = abs(z - (self.z if self.z is not None else z))
+        self.z = z
+        self.seconds += d / feed * 60.0
+        self.out(f"G1 Z{num(z)}")
+
+    def segment(self, s, cutting: bool = True) -> None:
+        """A line or an arc (of at most half a turn) from the current point."""
+        ex, ey = _round(s.end[0]), _round(s.end[1])
+        if isinstance(s, Line):
+            L = math.hypot(ex - self.x, ey - self.y)
+            if L == 0.0:
+                return
+            self.out(f"G1 X{num(ex)} Y{num(ey)}")
+        else:
+            if (ex, ey) == (self.x, self.y):
+                # an arc too short for 1e-10 mm: G2/G3 to its own start is a whole circle
+                return
+            i, j = _round(s.center[0] - self.x), _round(s.center[1] - self.y)
+            L = s.length
+            self.out(f"{'G3' if s.sweep > 0 else 'G2'} X{num(ex)} Y{num(ey)} "
+                     f"I{num(i)} J{num(j)}")
+        if cutting:
+            self.cut += L
+        self.seconds += L / self.feed * 60.0
+        self.x, self.y = ex, ey
+
+
+def job(output: Output, machine=None, thickness: float | None = None) -> Job:
+    """The G-code :class:`Job` of ``output`` (as a cutter reads it: the program's kerf
+    already applied) on ``machine`` (a :class:`~..machine.Machine`; None: the built-in
+    laser).  ``thickness``: mm a router cuts down to (None: each part's, else
+    :data:`DEFAULT_THICKNESS`).  Raises :class:`~..part.OutputError` (a tool too large for a
+    feature, naming the part)."""
+    from .. import machine as M
+    from ..toolpath import plan
+    m = machine or M.default("laser")
+    warnings = _warnings(output, m)
+    if m.kind == "router":
+        output = tool_path(output, m.tool_diameter)
+    cuts = plan(output)
+    thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
+    w = _Writer(m)
+    w.warnings = warnings
+    body = _body(w, cuts, m, thick, output)
+    head = _header(output, m, w)
+    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings)
+
+
+def tool_path(output: Output, diameter: float) -> Output:
+    """``output`` offset by a router's tool radius (:func:`~..layout.compensate` with a kerf
+    of ``diameter``: outlines outward, holes inward, exact lines and arcs); ellipse and
+    spline pieces are first made arcs (:func:`as_arcs`, within :data:`CURVE_TOL`), whose
+    offset is exact.  Raises :class:`~..part.OutputError` naming the part where the tool is
+    too large for a feature."""
+    from ...geometry.curves import Loop
+    from ..layout import LayoutError, compensate
+    from ..part import PartOutline
+    parts = []
+    for p in output.parts:
+        if any(isinstance(g, (EllipticArc, Spline)) for lp in p.loops for g in lp.segments):
+            p = PartOutline(p.name, p.kind, [Loop([g for s in lp.segments for g in as_arcs(s)])
+                                              for lp in p.loops], p.thickness)
+        parts.append(p)
+    try:
+        tooled = compensate(Output(parts, output.engrave, output.title, output.drawing,
+                                   output.page), diameter)
+    except LayoutError as e:
+        msg = str(e).replace(f"kerf {diameter:g} mm on part", "the router's tool "
+                             f"({diameter:g} mm across) does not fit part", 1)
+        raise OutputError(f"{msg}; use a smaller tool (the profile's `tool_diameter`)") \
+            from None
+    return tooled
+
+
+def _warnings(output: Output, m) -> list[str]:
+    """A profile's ``kerf`` / ``thickness`` unlike the program's: one line each."""
+    out = []
+    d = output.drawing
+    src = f"the machine profile `{m.source}`" if m.source else "the machine profile"
+    if m.kerf is not None:
+        prog = d.kerf if d is not None else None
+        vals = set(prog.values()) if isinstance(prog, dict) else {prog or 0.0}
+        vals = vals or {0.0}
+        if any(abs(v - m.kerf) > 1e-9 for v in vals):
+            shown = ", ".join(f"{v:g}" for v in sorted(vals))
+            out.append(f"{src} says `kerf = {m.kerf:g}` mm but the program's kerf is {shown} mm; "
+                       "the program's is used (set `kerf` in the program, or --kerf)")
+    if m.thickness is not None:
+        vals = {p.thickness for p in output.parts if p.thickness is not None}
+        if any(abs(v - m.thickness) > 1e-9 for v in vals):
+            shown = ", ".join(f"{v:g}" for v in sorted(vals))
+            out.append(f"{src} says `thickness = {m.thickness:g}` mm but the program's "
+                       f"thickness is {shown} mm; the program's is used (set `thickness` in "
+                       "the program, or --thickness)")
+    return out
+
+
+def _header(output: Output, m, w: _Writer) -> list[str]:
+    src = m.source or f"built-in {m.kind} profile"
+    h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
+         f"; machine: {m.kind} ({src})",
+         f"; {estimate_text(w.cut, w.travel, w.seconds)}",
+         *[f"; warning: {x}" for x in w.warnings],
+         "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
+         "G21 G90 G17"]
+    for name in ("engrave", "score", "cut_inner", "cut_outer"):
+        op = m.operation(name)
+        if m.kind == "laser":
+            h.insert(-1, f"; {name}: {op.power:g} % power, F{op.speed:g}, {op.passes} pass"
+                     + ("es" if op.passes != 1 else ""))
+        elif m.kind == "router":
+            h.insert(-1, f"; {name}: F{op.speed:g}, plunge F{op.plunge:g}, "
+                     f"{op.depth_per_pass:g} mm per pass, S{op.spindle:g} rpm")
+        else:
+            h.insert(-1, f"; {name}: F{op.speed:g}, {op.passes} pass"
+                     + ("es" if op.passes != 1 else ""))
+    return h
+
+
+def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
+    from ...geometry.curves import Loop
+    import numpy as np
+    if m.kind == "laser":
+        w.out(f"{m.laser_mode} S0")
+        w.power = 0.0
+    elif m.kind == "router":
+        op0 = m.operation("cut_outer")
+        w.out(f"M3 S{num(op0.spindle)}")
+        w.rapid(z=m.safe_height)
+    else:
+        w.rapid(z=m.safe_height)
+    spindle = m.operation("cut_outer").spindle if m.kind == "router" else None
+    for cut in cuts:
+        op = m.operation(cut.operation)
+        path = [g for s in cut.segments for g in as_arcs(s)]
+        if not path:
+            continue
+        lead = None
+        if cut.closed and m.lead_in > 0 and cut.operation.startswith("cut"):
+            poly = np.asarray(Loop(cut.segments).points())
+            lead = _lead_point(cut, path, m.lead_in, poly)
+        tabs = m.tabs if cut.operation == "cut_outer" else 0
+        pieces = with_tabs(path, tabs, m.tab_width) if tabs else [(s, False) for s in path]
+        start = lead or path[0].start
+        if m.kind == "laser":
+            power = op.power / 100.0 * m.max_power
+            for k in range(max(1, op.passes)):
+                if k == 0 or not cut.closed or lead:
+                    w.rapid(*start, off=True)
+                if lead:
+                    w.setting(op.speed, power)
+                    w.segment(Line(lead, path[0].start))
+                for s, on_tab in pieces:
+                    w.setting(op.speed, 0.0 if on_tab else power)
+                    w.segment(s, not on_tab)
+        elif m.kind == "plotter":
+            for k in range(max(1, op.passes)):
+                if k == 0 or not cut.closed:
+                    w.rapid(z=m.safe_height)
+                    w.rapid(*start)
+                    w.plunge(0.0, op.speed)
+                if lead:
+                    w.setting(op.speed)
+                    w.segment(Line(lead, path[0].start))
+                w.setting(op.speed)
+                for s, _ in pieces:
+                    w.segment(s)
+            w.rapid(z=m.safe_height)
+        else:
+            if op.spindle != spindle:
+                spindle = op.spindle
+                w.out(f"M3 S{num(spindle)}")
+            if cut.operation in ("engrave", "score"):
+                depths = [op.depth_per_pass]
+            else:
+                t = thick.get(cut.part) or DEFAULT_THICKNESS
+                n = max(1, math.ceil(t / op.depth_per_pass - 1e-9))
+                depths = [t * (k + 1) / n for k in range(n)]
+            t_part = thick.get(cut.part) or DEFAULT_THICKNESS
+            for k, dz in enumerate(depths):
+                if k == 0 or not cut.closed or lead:
+                    w.rapid(z=m.safe_height)
+                    w.rapid(*start)
+                w.plunge(-dz, op.plunge)
+                if lead:
+                    w.setting(op.speed)
+                    w.segment(Line(lead, path[0].start))
+                w.setting(op.speed)
+                tab_z = -(t_part - m.tab_height)
+                for s, on_tab in pieces:
+                    if on_tab and -dz < tab_z:
+                        w.plunge(tab_z, op.plunge)
+                        w.setting(op.speed)
+                        w.segment(s, False)
+                        w.plunge(-dz, op.plunge)
+                        w.setting(op.speed)
+                    else:
+                        w.segment(s)
+            w.rapid(z=m.safe_height)
+    if m.kind == "laser":
+        w.out("M5")
+        w.rapid(0.0, 0.0, off=True)
+    else:
+        w.rapid(z=m.safe_height)
+        if m.kind == "router":
+            w.out("M5")
+        w.rapid(0.0, 0.0)
+    w.out("M2")
+    return w.lines
+
+
+def write(output: Output, options) -> bytes:
+    """The registry's entry (:data:`~.FORMATS`): :func:`job` on ``options.machine``
+    (:func:`machine_of`) and ``options.thickness``, ASCII."""
+    return job(output, machine_of(options), options.thickness).text.encode("ascii")
