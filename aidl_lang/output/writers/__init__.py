@@ -19,7 +19,9 @@ class Options:
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
     least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
     STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
-    product)."""
+    product), ``page`` (PDF: a paper size such as ``A4`` or ``A4-landscape`` the drawing is
+    tiled over, :data:`.pdf.PAGES`; None: one page the size of the drawing; the PDF's
+    ``margin`` defaults to 10 mm)."""
     show: tuple = ()
     style: str = "preview"
     dpi: float = 96.0
@@ -27,6 +29,7 @@ class Options:
     thickness: float | None = None
     margin: float | None = None
     assembled: bool = False
+    page: str | None = None
 
 
 @dataclass(frozen=True)
@@ -64,6 +67,8 @@ FORMATS: dict[str, Format] = {
                    text=True, cut=True, per_item=100e-6),
     ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
                    text=True, cut=True, per_item=150e-6),
+    ".pdf": Format("pdf", "write", "application/pdf",
+                   "1:1 printed template (scroll saw, hand cutting)", cut=True, per_item=100e-6),
     ".png": Format("png", "write", "image/png", "picture of the drawing (or the product)",
                    cut=True, assembled=True, per_item=100e-6),
     ".stl": Format("mesh", "write_stl", "model/stl", "3D mesh of the parts (printers)",
