@@ -116,8 +116,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
         return sub.add_parser(name, **kwargs) if only is None or only == name else _Unused()
     r = add("render", help="compile a .aidl file to SVG, DXF, PDF, PNG, STL, 3MF or STEP",
             description="Compile FILE and write each -o output; the format follows "
-                        "the extension (.svg .dxf .pdf .png .stl .3mf .step .glb). Nothing is written "
-                        "unless the whole pipeline succeeded.")
+                        "the extension (.svg .dxf .pdf .png .stl .3mf .step .glb). Nothing is "
+                        "written unless the whole pipeline succeeded.")
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
                    help="output file, format by extension; repeat for several "
@@ -132,7 +132,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                         "engrave hairlines, one element per loop")
     r.add_argument("--margin", type=float, default=None, metavar="MM",
                    help="space around the drawing on the SVG/PNG page, in mm (default 5%% of "
-                        "the larger side, at least 1 mm; 0: the page is the bounding box)")
+                        "the larger side, at least 1 mm; 0: the page is the bounding box); "
+                        "the PDF's margin (default 10 mm)")
     r.add_argument("--page", default=None, metavar="PAPER",
                    help="PDF: tile the 1:1 template over pages of this paper size, with 10 mm "
                         "overlaps and alignment marks: A4, A3, Letter, Legal, each also "
