@@ -68,7 +68,7 @@ FORMATS: dict[str, Format] = {
     ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
                    text=True, cut=True, per_item=150e-6),
     ".pdf": Format("pdf", "write", "application/pdf",
-                   "1:1 printed template (scroll saw, hand cutting)", cut=True, per_item=100e-6),
+                   "1:1 printed template (scroll saw, hand cutting)", cut=True, per_item=300e-6),
     ".png": Format("png", "write", "image/png", "picture of the drawing (or the product)",
                    cut=True, assembled=True, per_item=100e-6),
     ".stl": Format("mesh", "write_stl", "model/stl", "3D mesh of the parts (printers)",

@@ -208,11 +208,12 @@ def _rgb(c) -> str:
 
 
 # ------------------------------------------------------------------ labels
-def label_point(part) -> tuple[tuple[float, float], float]:
+def label_point(part, strokes=()) -> tuple[tuple[float, float], float]:
     """Where to print a part's name: ``(point, clearance)`` mm, the point of a 24 x 24 grid
-    over the part's box inside its material (even-odd over its loops' chords) farthest from
-    every loop, and that distance; the box's centre (clearance 0) when no grid point is
-    inside."""
+    over the part's box inside its material (even-odd over its loops' chords) farthest
+    from every loop and every engraving stroke of ``strokes`` (:class:`~.part.Stroke`), and
+    that distance; the box's centre (clearance 0) when no grid point is inside."""
+    from ..part import sample_xy
     pts = [lp.points() for lp in part.loops]
     pts = [p for p in pts if len(p) >= 3]
     if not pts:
@@ -224,20 +225,36 @@ def label_point(part) -> tuple[tuple[float, float], float]:
     q = np.column_stack([gx.ravel(), gy.ravel()])
     inside = np.zeros(len(q), dtype=bool)
     dist = np.full(len(q), np.inf)
-    for p in pts:
-        a, b = p, np.roll(p, -1, axis=0)
-        # even-odd: edges crossing the horizontal ray to the right of each grid point
-        ay, by = a[:, 1][None, :], b[:, 1][None, :]
-        qy, qx = q[:, 1][:, None], q[:, 0][:, None]
-        crosses = (ay > qy) != (by > qy)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            xc = a[:, 0][None, :] + (qy - ay) * (b[:, 0] - a[:, 0])[None, :] / (by - ay)
-        inside ^= (crosses & (xc > qx)).sum(axis=1) % 2 == 1
-        d = b - a
-        ll = np.maximum((d ** 2).sum(axis=1), 1e-30)
-        t = np.clip(((q[:, None, :] - a[None]) * d[None]).sum(axis=2) / ll, 0, 1)
-        near = a[None] + t[..., None] * d[None]
-        dist = np.minimum(dist, np.sqrt(((q[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1))
+    qx, qy = q[:, 0][:, None], q[:, 1][:, None]
+    marks = []                                  # engraving: kept clear of, never "inside"
+    for st in strokes:
+        xs: list = []
+        ys: list = []
+        sample_xy(st.segments, xs, ys)
+        if not isinstance(st.segments[-1], Circle):
+            xs.append(st.segments[-1].end[0])
+            ys.append(st.segments[-1].end[1])
+        e = np.column_stack([xs, ys]) if xs else np.zeros((0, 2))
+        if len(e) and e[:, 0].max() >= x0 and e[:, 0].min() <= x1 and \
+                e[:, 1].max() >= y0 and e[:, 1].min() <= y1:
+            marks.append(e)
+    for p, loop in [(p, True) for p in pts] + [(e, False) for e in marks]:
+        nxt = np.roll(p, -1, axis=0) if loop else np.vstack([p[1:], p[-1:]])
+        for i in range(0, len(p), 512):        # edges in blocks: bounded memory
+            a = p[i:i + 512]
+            b = nxt[i:i + 512]
+            # even-odd: edges crossing the horizontal ray to the right of each grid point
+            ay, by = a[:, 1][None, :], b[:, 1][None, :]
+            crosses = (ay > qy) != (by > qy)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                xc = a[:, 0][None, :] + (qy - ay) * (b[:, 0] - a[:, 0])[None, :] / (by - ay)
+            if loop:
+                inside ^= (crosses & (xc > qx)).sum(axis=1) % 2 == 1
+            d = b - a
+            ll = np.maximum((d ** 2).sum(axis=1), 1e-30)
+            t = np.clip(((qx - a[:, 0]) * d[:, 0] + (qy - a[:, 1]) * d[:, 1]) / ll, 0, 1)
+            nx, ny = a[:, 0] + t * d[:, 0], a[:, 1] + t * d[:, 1]
+            dist = np.minimum(dist, np.hypot(qx - nx, qy - ny).min(axis=1))
     if not inside.any():
         return (float((x0 + x1) / 2), float((y0 + y1) / 2)), 0.0
     dist[~inside] = -1
@@ -316,10 +333,12 @@ def to_pdf(output: Output, page: str | None = None, margin: float | None = None,
         kept = {k: w for k, w in windows.items() if any(_overlaps(b, w) for b in boxes)}
         windows = kept or windows
     grid = (rows, cols, len(windows), rows * cols - len(windows))
+    labels = {id(p): label_point(p, [st for st in output.engrave if st.segments])
+              for p in output.parts if p.kind == "solid" and p.loops}
     for n, ((r, col), win) in enumerate(windows.items()):
         # the drawing point at the page's bottom-left corner
         pen = _Pen(win[0] - margin, win[1] - margin - FOOTER)
-        _page(c, output, pen, win, tiled)
+        _page(c, output, pen, win, tiled, labels)
         tile = (r, col, n, grid, set(windows)) if tiled else None
         _marks(c, pen, win, tile)
         _footer(c, title, pw, margin, tile, page)
@@ -354,7 +373,7 @@ def _overlaps(bb, win) -> bool:
     return bb[0] <= win[2] and bb[2] >= win[0] and bb[1] <= win[3] and bb[3] >= win[1]
 
 
-def _page(c, output: Output, pen: _Pen, win, tiled: bool) -> None:
+def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
     """The drawing on one page: the window's clip (tiles), the sheet's edge, the cuts, the
     engraving, the part names."""
     from ..extent import _segment_box
@@ -392,7 +411,7 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool) -> None:
     c.addLiteral("\n".join(ops))
     c.setFillColorRGB(0.25, 0.25, 0.25)
     for p in labels:
-        (lx, ly), room = label_point(p)
+        (lx, ly), room = where[id(p)]
         if not (win[0] <= lx <= win[2] and win[1] <= ly <= win[3]):
             continue
         size = 6.0 if room <= 0 else max(3.0, min(6.0, room * PT_PER_MM * 0.9))
@@ -479,8 +498,9 @@ def _footer(c, title: str, pw: float, margin: float, tile, page) -> None:
     c.drawRightString(right, (margin + 9.0) * k, _label(r, col))
     c.setFont("Helvetica", 6.5)
     c.drawRightString(right, (margin + 4.0) * k,
-                      f"page {n + 1} of {pages}: {page}, rows A-{_label(rows - 1, 0)[:-1]} x "
-                      f"columns 1-{cols}" + (f" ({empty} empty left out)" if empty else ""))
+                      f"page {n + 1} of {pages}: {page}, "
+                      + (f"rows A-{_label(rows - 1, 0)[:-1]}" if rows > 1 else "row A")
+                      + (f" x columns 1-{cols}" if cols > 1 else " x column 1") + (f" ({empty} empty left out)" if empty else ""))
     c.drawRightString(right, (margin + 1.5) * k,
                       f"overlap {OVERLAP:g} mm: lay the pages so the + marks meet")
 
