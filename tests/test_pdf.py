@@ -348,7 +348,8 @@ def tile_offsets(output, pages, overlap=10.0):
         assert min(xs) < lx and max(ys) > ty                 # crop marks outside it
         ww, wh = (rx - lx) / K, (ty - by) / K
         label = page["label"]
-        row = sum((ord(ch) - 64) * 26 ** i for i, ch in enumerate(reversed(label.rstrip("0123456789")))) - 1
+        letters = label.rstrip("0123456789")
+        row = sum((ord(ch) - 64) * 26 ** i for i, ch in enumerate(reversed(letters))) - 1
         col = int(label.lstrip("ABCDEFGHIJKLMNOPQRSTUVWXYZ")) - 1
         rule = (x0 + col * (ww - overlap) - lx / K, y1 - row * (wh - overlap) - ty / K)
         pts = np.array([mm(p, (0, 0)) for key, qs in page["pieces"].items()

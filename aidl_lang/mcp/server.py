@@ -256,8 +256,8 @@ def build_server(root: str, budget: float = 1.0,
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
-        .pdf a 1:1 printed template, tiled over `page` paper, .png, .stl, .3mf, .step, .glb).  `style`: preview (filled) or laser (hairlines).
-        `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
+        .pdf a 1:1 printed template, tiled over `page` paper, .png, .stl, .3mf, .step, .glb).
+        `style`: preview (filled) or laser (hairlines).  `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
         boxed in red.  `layout`: "sheet" lays the parts out on cutting sheets (`sheet`
         size, `gap`, `rotate`), a picture and a file per sheet; `kerf` offsets the cuts,
         `thickness` sets the extrusion of 3D outputs (as `aidl render`'s options).  When the

@@ -16,7 +16,8 @@ shows the drawing from ``x = x0 + c (window width - OVERLAP)`` and down from ``y
 label large (``B2``), its neighbours' labels beside its edges, crop marks at the window's
 corners and registration marks (a circle and a cross) on the middle lines of the overlaps:
 the same mark is on both pages, so one page laid over the other with the marks on each other
-is in place.  Every page prints at 100 % ("actual size", never "fit to page").
+is in place.  A tile whose window holds no part and no engraving is left out (the footer
+says how many).  Every page prints at 100 % ("actual size", never "fit to page").
 
 Geometry.  Every part's outline loops (the cuts) are black, :data:`CUT_WIDTH` pt, and exact:
 lines are ``m``/``l`` with their end points; spline spans are their own cubic Béziers; PDF has
@@ -500,7 +501,8 @@ def _footer(c, title: str, pw: float, margin: float, tile, page) -> None:
     c.drawRightString(right, (margin + 4.0) * k,
                       f"page {n + 1} of {pages}: {page}, "
                       + (f"rows A-{_label(rows - 1, 0)[:-1]}" if rows > 1 else "row A")
-                      + (f" x columns 1-{cols}" if cols > 1 else " x column 1") + (f" ({empty} empty left out)" if empty else ""))
+                      + (f" x columns 1-{cols}" if cols > 1 else " x column 1")
+                      + (f" ({empty} empty left out)" if empty else ""))
     c.drawRightString(right, (margin + 1.5) * k,
                       f"overlap {OVERLAP:g} mm: lay the pages so the + marks meet")
 
