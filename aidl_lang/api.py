@@ -356,13 +356,14 @@ class Result:
         return out
 
     def encode(self, fmt: str, kerf: float | None = None, **options) -> bytes:
-        """The output in format ``fmt`` (``svg``, ``dxf``, ``png``, ``stl``, ``3mf``, ``step``,
-        ``glb``; a leading dot is allowed) as bytes, as ``aidl render`` writes it: the cutting formats
-        (SVG, DXF, PNG) with every cut offset by half the kerf — ``kerf`` in mm, ``None`` for
+        """The output in format ``fmt`` (``svg``, ``dxf``, ``pdf``, ``png``, ``stl``, ``3mf``,
+        ``step``, ``glb``; a leading dot is allowed) as bytes, as ``aidl render`` writes it: the
+        cutting formats (SVG, DXF, PDF, PNG) with every cut offset by half the kerf — ``kerf`` in mm, ``None`` for
         the program's own ``kerf`` statements, 0 for none; STL, 3MF and STEP are the designed
         solid.  ``options``: those of :class:`~aidl_lang.output.writers.Options` (``show``,
         ``style``, ``dpi``, ``width``, ``thickness`` mm, ``margin`` mm, ``assembled``: the
-        3D formats with every part placed by its ``Place``, PNG a picture of that).  Raises
+        3D formats with every part placed by its ``Place``, PNG a picture of that; ``page``:
+        the PDF tiled over paper, ``"A4"``, ``"Letter-landscape"``, ...).  Raises
         :class:`ValueError` for an unknown format, :class:`NotCompiled`,
         :class:`~aidl_lang.output.part.MissingDependency` (a format's library is not
         installed) and :class:`~aidl_lang.output.part.OutputError` (also a kerf larger than a

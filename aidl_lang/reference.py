@@ -592,6 +592,17 @@ the figure) and W0518 when a part touches no other (a tab short of its slot, wit
 cross-halving joint.
 """, ["assembly 3d", "3d", "place", "placement", "assemble", "fit check", "collision", "W0517",
       "W0518"]),
+    "outputs": ("statement", "`aidl render FILE -o x.svg` (.dxf, .pdf, .png, .stl, .3mf, "
+                ".step, .glb): the format follows the extension.", """
+`aidl render FILE -o OUT` writes each output, the format by its extension: `.svg` and `.dxf`
+(exact outlines for laser cutters and CNC), `.pdf` (a 1:1 printed template for a scroll saw or
+hand cutting: exact lines, arcs as Béziers within 0.001 mm, part names, a 100 mm scale bar to
+check before cutting), `.png` (a picture), `.stl`, `.3mf`, `.step`, `.glb` (3D). A PDF is one
+page the drawing's size; `--page A4` (A3, Letter, Legal, each also `-landscape`, e.g.
+`--page A4-landscape`) tiles it over paper with 10 mm overlaps, alignment marks and page
+labels (A1, A2 / B1); print at 100 %. `--layout sheet` writes one file per cutting sheet.
+""", ["output", "formats", "format", "pdf", "page", "print", "printed template", "scroll saw",
+      "render"]),
     "solid": ("statement", "`solid NAME { ... }`: filled material, minus its hole children.", """
 `solid NAME { ... }`: the union of its own shapes and its solid children (touching or
 overlapping shapes merge into one outline), minus its `hole` children. A hole cuts the solid
@@ -974,6 +985,8 @@ EXAMPLES: dict[str, str] = {
                "kerf 0.15 mm\nthickness 6 mm\n\n" + _solid(
                    "r = Rectangle(center=(0, 0), width=60, height=40)\n"
                    "hole bore { c = Circle(center=(0, 0), radius=5) }", "plate"),
+    "outputs": "# aidl render plate.aidl -o plate.pdf --page A4\n\n"
+               + _solid("r = Rectangle(center=(0, 0), width=60, height=40)", "plate"),
     "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
                                         "plate"),
     "thickness": "thickness 3 mm\n\nassembly kit {\n    solid plate { r = Rectangle(center=(0, "

@@ -186,11 +186,11 @@ def _read_back(path: Path) -> None:
         assert m.is_watertight and m.volume == pytest.approx((1200 - math.pi * 121) * 3, rel=1e-3)
 
 
-EXTRA = {".png": "png", ".3mf": "mesh", ".step": "step"}
+EXTRA = {".png": "png", ".3mf": "mesh", ".step": "step", ".pdf": "pdf"}
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("ext", [".svg", ".dxf", ".stl", ".png", ".3mf", ".step"])
+@pytest.mark.parametrize("ext", [".svg", ".dxf", ".stl", ".png", ".3mf", ".step", ".pdf"])
 def test_every_format_on_a_plain_install_writes_or_names_its_extra(plain_install, ext):
     """On ``pip install aidl_lang-*.whl`` without extras SVG, DXF and STL are written and an
     independent reader accepts them; PNG, 3MF and STEP exit 2 with the

@@ -49,7 +49,7 @@ def test_several_outputs_by_extension(good, tmp_path, capsys):
 def test_unknown_extension_is_a_usage_error_and_writes_nothing(good, tmp_path, capsys):
     before = listing(tmp_path)
     assert main(["render", str(good), "-o", str(tmp_path / "a.svg"),
-                 "-o", str(tmp_path / "b.pdf")]) == 2
+                 "-o", str(tmp_path / "b.ps")]) == 2
     assert "cannot tell the format of" in capsys.readouterr().err
     assert listing(tmp_path) == before
 

@@ -235,7 +235,7 @@ def test_render_to_standard_output_from_standard_input(tmp_path):
 def test_standard_output_usage_errors(tmp_path):
     for args, said in [(["-o", "-", "--json"], "--json"),
                        (["-o", "x.svg", "--format", "dxf"], "--format is the format of `-o -`"),
-                       (["-o", "-", "--format", "pdf"], "--format takes one of"),
+                       (["-o", "-", "--format", "ps"], "--format takes one of"),
                        (["-o", "-", "-o", "-"], "given twice")]:
         r = run("render", EXAMPLE, *args, cwd=tmp_path)
         assert r.returncode == 2 and said in r.stderr.decode(), (args, r.stderr)

@@ -114,10 +114,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
 
     def add(name: str, **kwargs):
         return sub.add_parser(name, **kwargs) if only is None or only == name else _Unused()
-    r = add("render", help="compile a .aidl file to SVG, DXF, PNG, STL, 3MF or STEP",
+    r = add("render", help="compile a .aidl file to SVG, DXF, PDF, PNG, STL, 3MF or STEP",
             description="Compile FILE and write each -o output; the format follows "
-                        "the extension (.svg .dxf .png .stl .3mf .step .glb). Nothing is written "
-                        "unless the whole pipeline succeeded.")
+                        "the extension (.svg .dxf .pdf .png .stl .3mf .step .glb). Nothing is "
+                        "written unless the whole pipeline succeeded.")
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
                    help="output file, format by extension; repeat for several "
@@ -132,7 +132,12 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                         "engrave hairlines, one element per loop")
     r.add_argument("--margin", type=float, default=None, metavar="MM",
                    help="space around the drawing on the SVG/PNG page, in mm (default 5%% of "
-                        "the larger side, at least 1 mm; 0: the page is the bounding box)")
+                        "the larger side, at least 1 mm; 0: the page is the bounding box); "
+                        "the PDF's margin (default 10 mm)")
+    r.add_argument("--page", default=None, metavar="PAPER",
+                   help="PDF: tile the 1:1 template over pages of this paper size, with 10 mm "
+                        "overlaps and alignment marks: A4, A3, Letter, Legal, each also "
+                        "-landscape (e.g. A4-landscape); default: one page the drawing's size")
     r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
@@ -647,6 +652,14 @@ def cmd_render(args) -> int:
     from ..limits import MAX_EXTENT
     if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
         return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
+    if args.page is not None:
+        from ..output.writers.pdf import page_names, page_size
+        if not any(_suffix(o, args) == ".pdf" for o in outs):
+            return _usage("--page is the paper size of a PDF template: add -o NAME.pdf")
+        try:
+            page_size(args.page)
+        except OutputError:
+            return _usage(f"--page takes {', '.join(page_names())}; got `{args.page}`")
     kerf = None
     if args.kerf is not None:
         kerf = parse_length(args.kerf)
@@ -699,7 +712,7 @@ def cmd_render(args) -> int:
         return 1
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin, assembled=args.assembled,
-                  machine=machine)
+                  machine=machine, page=args.page)
     notes = []
     try:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)

@@ -25,8 +25,8 @@ PROMPT_EXAMPLES = ["bottle_opener.aidl", "bracket.aidl", "toy_sword.aidl", "name
 DEFAULT_EXAMPLES = 2
 
 INTRO = """\
-You write AIDL, a text language for 2D CAD parts (output: an SVG outline). Reply with one
-complete program in a ```aidl code block.
+You write AIDL, a text language for 2D CAD parts (output: SVG, DXF; PDF `-o x.pdf --page A4`).
+Reply with one complete program in a ```aidl code block.
 
 A program is a tree of named structures: `solid NAME { ... }` (filled; unions its children),
 `hole NAME { ... }` (cut out of the enclosing solid), `drawing NAME { ... }` (engraved lines
@@ -92,7 +92,7 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
-turn; the program is valid, but pin what matters with constraints.
+turn (valid; pin what matters with constraints).
 `aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant: fix it like an error. When fixing errors, keep

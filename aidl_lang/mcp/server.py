@@ -95,6 +95,11 @@ Machine = Annotated[str | None, Field(
     description="For a .gcode output: the machine profile, `laser`, `router` or `plotter` "
                 "(built-in profiles) or a TOML profile file inside the allowed folder (`aidl "
                 "docs machine`); default: the built-in laser.")]
+Page = Annotated[str | None, Field(
+    description="With a .pdf output: tile the 1:1 template over pages of this paper size "
+                "(\"A4\", \"A3\", \"Letter\", \"Legal\", each also \"-landscape\"), 10 mm "
+                "overlaps with alignment marks; default: one page the drawing's size.",
+    max_length=40)]
 Names = Annotated[list[str] | None, Field(
     description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
                 "root structure's name may be left out); default: every value.")]
@@ -250,13 +255,14 @@ def build_server(root: str, budget: float = 1.0,
                width: Width = 800, overrides: Overrides = None, style: Style = "preview",
                budget: Budget = None, assembled: Assembled = False, layout: LayoutKind = None,
                sheet: Sheet = None, gap: Gap = None, rotate: Rotate = None, kerf: Kerf = None,
-               thickness: Thickness = None,
-               machine: Machine = None) -> Annotated[CallToolResult, RenderResult]:
+               thickness: Thickness = None, machine: Machine = None,
+               page: Page = None) -> Annotated[CallToolResult, RenderResult]:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
         JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
-        .gcode for a GRBL laser, router or plotter per `machine`, .png, .stl, .3mf, .step,
-        .glb).  `style`: preview (filled) or laser (hairlines).
+        .gcode for a GRBL laser, router or plotter per `machine`, .pdf a 1:1 printed template,
+        tiled over `page` paper, .png, .stl, .3mf, .step, .glb).
+        `style`: preview (filled) or laser (hairlines).
         `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
         boxed in red.  `layout`: "sheet" lays the parts out on cutting sheets (`sheet`
         size, `gap`, `rotate`), a picture and a file per sheet; `kerf` offsets the cuts,
@@ -266,7 +272,7 @@ def build_server(root: str, budget: float = 1.0,
         try:
             doc, pngs = work.call("render", source, path, output, width, overrides, budget,
                                   style, assembled, layout, sheet, gap, rotate, kerf,
-                                  thickness, machine, budget=budget)
+                                  thickness, machine, page, budget=budget)
         except T.Refused as e:
             raise refused(e) from None
         pictures = [Image(data=png, format="png").to_image_content() for png in pngs]

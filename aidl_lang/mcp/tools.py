@@ -244,7 +244,8 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            output: str | None = None, width: int = 800, overrides: dict | None = None,
            budget: float | None = None, style: str = "preview", assembled: bool = False,
            layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
-           kerf=None, thickness=None, machine=None) -> tuple[dict, list[bytes]]:
+           kerf=None, thickness=None, machine=None,
+           page: str | None = None) -> tuple[dict, list[bytes]]:
     """Compile and draw: ``(summary, pictures)``, PNGs ``width`` pixels wide: one of the
     parts, or one per sheet with a layout; none when the program has errors.  ``output``:
     also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
@@ -256,9 +257,10 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     ``gap`` (mm, default 3) and ``rotate`` (``"0,90"``, ``"any"``), one file per sheet
     (``cut-1.svg``, ... when there are several); ``kerf`` (mm: every cut of SVG, DXF and PNG
     offset by half of it; default the program's own); ``thickness`` (mm: the extrusion of
-    STL, 3MF, STEP, GLB; default the program's, else 3).  Lengths are numbers of mm or
-    strings with a unit.  ``machine``: G-code's machine profile, ``laser``, ``router``,
-    ``plotter`` or a TOML file inside the allowed folder."""
+    STL, 3MF, STEP, GLB; default the program's, else 3); ``page`` (a ``.pdf`` output tiled
+    over paper of this size, ``"A4"``, ``"A4-landscape"``, ...; default one page the drawing's
+    size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
+    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder."""
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
@@ -291,6 +293,16 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
             load(ws.inside(machine, must_exist=True))
     except MachineError as e:
         raise Refused(str(e)) from None
+    if page is not None:
+        from ..output import OutputError
+        from ..output.writers.pdf import page_size
+        if target is None or target.suffix.lower() != ".pdf":
+            raise Refused("page is the paper size of a PDF template: give an output "
+                          "ending in .pdf")
+        try:
+            page_size(str(page))
+        except OutputError as e:
+            raise Refused(str(e)) from None
     if assembled and target is not None:
         from ..output import ASSEMBLED_FORMATS
         if target.suffix.lower() not in ASSEMBLED_FORMATS:
@@ -312,7 +324,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                 files = _sheet_names(target, sheets.sheets)
                 for f in files:
                     check_output_path(f, prog)
-                for f, data in zip(files, sheets.encode(target.suffix, machine=prof,
+                for f, data in zip(files, sheets.encode(target.suffix, machine=prof, page=page,
                                                         **drawn)):
                     _write_inside(ws, f, data, prog, ws.relative(f))
                 doc["written"] = ws.relative(files[0])
@@ -324,7 +336,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
             if target is not None:
                 out = check_output_path(target, prog)
                 data = r.encode(out.suffix, kerf_mm, assembled=assembled, machine=prof,
-                                **drawn)
+                                page=page, **drawn)
                 _write_inside(ws, target, data, prog, output)
                 doc["written"] = ws.relative(out)
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:

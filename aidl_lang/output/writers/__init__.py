@@ -20,7 +20,10 @@ class Options:
     least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
     STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
     product), ``machine`` (G-code: a :class:`~..machine.Machine`, a kind's name, a TOML
-    profile's path or a dict of its keys; None: the built-in laser profile)."""
+    profile's path or a dict of its keys; None: the built-in laser profile), ``page`` (PDF: a
+    paper size such as ``A4`` or ``A4-landscape`` the drawing is tiled over,
+    :data:`.pdf.PAGES`; None: one page the size of the drawing; the PDF's ``margin`` defaults
+    to 10 mm)."""
     show: tuple = ()
     style: str = "preview"
     dpi: float = 96.0
@@ -29,6 +32,7 @@ class Options:
     margin: float | None = None
     assembled: bool = False
     machine: object = None
+    page: str | None = None
 
 
 @dataclass(frozen=True)
@@ -66,6 +70,8 @@ FORMATS: dict[str, Format] = {
                    text=True, cut=True, per_item=100e-6),
     ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
                    text=True, cut=True, per_item=150e-6),
+    ".pdf": Format("pdf", "write", "application/pdf",
+                   "1:1 printed template (scroll saw, hand cutting)", cut=True, per_item=300e-6),
     ".png": Format("png", "write", "image/png", "picture of the drawing (or the product)",
                    cut=True, assembled=True, per_item=100e-6),
     ".stl": Format("mesh", "write_stl", "model/stl", "3D mesh of the parts (printers)",
