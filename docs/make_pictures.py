@@ -10,7 +10,9 @@ HTML comment on the same line adds render options, e.g.
 ``<!-- render: --layout sheet --sheet 180x120mm -->``.
 
 *Gallery.*  Every ``examples/*.aidl`` is rendered to ``docs/images/gallery-NAME.png`` and
-listed in docs/gallery.md with the first sentence of its leading comment.
+listed in docs/gallery.md with the first sentence of its leading comment; every stdlib
+generator's demo ``examples/generators/*.aidl`` to ``gen-NAME.png`` (flat) and
+``gen-NAME-3d.png`` (``--assembled``), listed below them.
 
 *Figures.*  Every other picture of the docs comes from a program: ``docs/figures/NAME.aidl``
 is rendered to ``docs/images/NAME.png`` (its ``# render: OPTIONS`` line, if any, adds
@@ -112,7 +114,22 @@ def figure_pictures() -> list[Picture]:
 
 
 def all_pictures() -> list[Picture]:
-    return tutorial_pictures() + gallery_pictures() + figure_pictures()
+    return tutorial_pictures() + gallery_pictures() + generator_pictures() + figure_pictures()
+
+
+def generators() -> list[Path]:
+    """The stdlib generators' demo programs (examples/generators/*.aidl)."""
+    return sorted((ROOT / "examples" / "generators").glob("*.aidl"))
+
+
+def generator_pictures() -> list[Picture]:
+    """Each generator's flat sheet (``gen-NAME.png``) and assembled product
+    (``gen-NAME-3d.png``, ``--assembled``)."""
+    out = []
+    for p in generators():
+        out.append(Picture(f"gen-{p.stem}", None, p, ()))
+        out.append(Picture(f"gen-{p.stem}-3d", None, p, ("--assembled",)))
+    return out
 
 
 def examples() -> list[Path]:
@@ -146,6 +163,20 @@ def gallery_markdown() -> str:
         rows += [f"## {p.stem.replace('_', ' ')}", "",
                  f"[`examples/{p.name}`](../examples/{p.name}) — {summary(p)}", "",
                  f"![{p.stem.replace('_', ' ')}](images/gallery-{p.stem}.png)", ""]
+    if generators():
+        rows += ["# Generators", "",
+                 "The standard library's generators (boxes, trays, joints, stands, enclosures, "
+                 "gear trains), each", "called by a short program in "
+                 "[`examples/generators/`](../examples/generators): the flat parts as cut, "
+                 "and the", "product assembled (`aidl render FILE --assembled -o FILE.png`).  "
+                 "[docs/generators.md](generators.md) compares", "them with the best-known "
+                 "laser-box generator's catalogue.", ""]
+    for p in generators():
+        rows += [f"## {p.stem.replace('_', ' ')}", "",
+                 f"[`examples/generators/{p.name}`](../examples/generators/{p.name}) — "
+                 f"{summary(p)}", "",
+                 f"![{p.stem.replace('_', ' ')}, flat](images/gen-{p.stem}.png) "
+                 f"![{p.stem.replace('_', ' ')}, assembled](images/gen-{p.stem}-3d.png)", ""]
     return "\n".join(rows)
 
 
