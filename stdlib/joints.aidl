@@ -122,7 +122,7 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
 
 import "std/fasteners.aidl"
 
-# A cross-halving slot: two panels slotted halfway into each other at right angles.
+# A cross-halving slot: panels slotted halfway into each other crosswise.
 # From the mouth at (cx, cy) on the edge it runs `depth` mm into the panel,
 # `thickness` + `clearance` wide; cut one into each panel, the two depths
 # adding up to the overlap. Member: `cut`.
@@ -136,12 +136,12 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
     Fixed(self)
 }
 
-# A finger joint along one edge of any panel, starting with a "tab" or a "gap".
+# A finger joint along any panel edge, starting with a "tab" or "gap".
 # The edge, `length` long and centred on (cx, cy), is cut into the largest odd
 # number of equal segments at least `finger` wide (at least 3 while they stay
 # `thickness` wide); every second one, from the first when `start` is "gap",
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
-# length at a corner. Member: `gap` (the cuts).
+# length at a corner. Member: `gap`.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     assert (1 if start == "tab" or start == "gap" else 0) == 1, "start is \"tab\" or \"gap\""
@@ -167,13 +167,14 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
     Fixed(self)
 }
 
-# A screwed tab-and-slot joint with captive nuts (the T-slot joint).
+# A screwed tab-and-slot joint with captive nuts (T-slots).
 # `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
 # (`thickness` long, spread evenly over `length`) with a `t_slot` for an M`screw`
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long.
+# Members: `gap`, `nut`, `slot`, `bolt`.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
@@ -215,7 +216,7 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
     Fixed(self)
 }
 
-# A flat sliding dovetail: two panels in one sheet locked edge to edge.
+# A flat sliding dovetail locking two panels edge to edge.
 # Over a band `depth` deep along the edge (from the line through (cx, cy) to
 # `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
 # widen at `angle` toward their tips (the tail panel reaches across the band);
