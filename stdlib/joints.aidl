@@ -173,7 +173,8 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
-# tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long.
+# tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
+# `screw=0` leaves them out (a glued or pressed joint).
 # Members: `gap`, `nut`, `slot`, `bolt`.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
@@ -194,7 +195,7 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
                             height=t + 1 mm, rotation=rotation)
             Fixed(gap)
         }
-        for k in range(1, tabs) {
+        for k in range(1, tabs if screw > 0 else 1) {
             u = -length / 2 + k * p
             nut = t_slot(size=screw, length=4 * size, nut_depth=2 * size, rotation=rotation,
                          cx=cx + u * c + t * s, cy=cy + u * s - t * c)
@@ -207,7 +208,7 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
                              height=t + clearance, rotation=rotation)
             Fixed(slot)
         }
-        for k in range(1, tabs) {
+        for k in range(1, tabs if screw > 0 else 1) {
             u = -length / 2 + k * p
             bolt = clearance_hole(size=screw, fit="medium", cx=cx + u * c, cy=cy + u * s)
             Fixed(bolt)
