@@ -8,7 +8,8 @@
 
 import "std/joints.aidl"
 
-# A phone or tablet stand: two side supports leaning back at `angle`, crossed by a foot.
+# A phone or tablet stand: two leaning supports crossed by a foot.
+# The supports lean back at `angle`.
 # Each support is a profile `height` tall with a ledge 6 mm up and a `lip`
 # in front that holds the device (a channel 14 mm deep); its depth follows
 # from the angle. The foot, `width` long and 40 mm tall, crosses both
@@ -50,7 +51,8 @@ def tablet_stand(width=120 mm, height=120 mm, angle=70 deg, lip=12 mm, thickness
     Place(foot, rotation=(90 deg, 0, 0), position=(-cx, t / 2, f + gap - cy))
 }
 
-# A book or laptop stand: two side supports sloping at `angle`, joined by two cross bars.
+# A laptop or book stand: two sloping sides joined by cross bars.
+# The sides slope at `angle`.
 # The sides are `depth` deep, `height` tall at the front (with a 10 mm lip
 # that stops the laptop sliding) and rise at `angle` toward the back; the
 # bars, `width` long and `height` tall, cross them in cross-halving slots
@@ -95,12 +97,13 @@ def laptop_stand(width=260 mm, depth=220 mm, height=30 mm, angle=15 deg, thickne
     }
 }
 
-# A pen or tool holder: a finger-jointed box whose top plate has a grid of holes.
+# A pen or tool holder: a finger-jointed box with a drilled top plate.
 # `rows` x `cols` holes of `hole` diameter, spread evenly over the top
 # plate inside its joints. The box is `length` x `depth` x `height`, outside
 # (`outside=true`) or inside (`outside=false`), from material `thickness`,
-# its panels as `finger_box`'s (the net around `bottom` at (cx, cy), placed in
-# 3D standing on z = 0). Members: `bottom`, `front`, `back`, `left`, `right`, `top`.
+# its panels as `finger_box`'s (`front`, `back`, `left`, `right`; the net
+# around `bottom` at (cx, cy), placed in 3D standing on z = 0). Members:
+# `bottom`, `top`.
 def tool_holder(length=100 mm, depth=70 mm, height=90 mm, thickness=3 mm, finger=10 mm,
                 rows=2, cols=3, hole=16 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -152,7 +155,7 @@ def tool_holder(length=100 mm, depth=70 mm, height=90 mm, thickness=3 mm, finger
     Place(right, rotation=(0, -90 deg, 0), position=(L / 2, -cy, H / 2 - (cx + (L + H) / 2 + gap)))
 }
 
-# A wall shelf: a shelf board on two cross-halving brackets, a back plate screwed to the wall.
+# A wall shelf: a board on two cross-halved brackets and a back plate.
 # The board is `length` x `depth`; the brackets, `height` tall against the
 # back plate (as long and tall), reach `depth` in front of it and rise 30 mm
 # above the board as book ends. Each bracket crosses the board in

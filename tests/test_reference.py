@@ -20,7 +20,8 @@ STDLIB_NAMES = {"spur_gear", "gear_pair", "washer", "bolt_circle", "rounded_tab"
                 "hex_pocket", "finger_panel", "finger_box", "clearance_hole", "nut_trap",
                 "t_slot", "rounded_plate", "chamfered_plate", "mounting_plate", "keyhole",
                 "slot", "living_hinge", "text_on_arc"}
-STDLIB_NAMES |= {"tab_and_slot", "dovetail", "cross_halving", "finger_edge"}   # issue 52: joints
+STDLIB_NAMES |= {"tab_and_slot", "dovetail", "cross_halving", "finger_edge",    # issue 52: joints,
+                 "tablet_stand", "laptop_stand", "tool_holder", "wall_shelf"}   # stands, holders
 
 
 def run_cli(*args):

@@ -201,3 +201,133 @@ def test_joint_docs_and_prompt(name):
                          capture_output=True, text=True)
     assert out.returncode == 0 and f"{name}(" in out.stdout
     assert f"- {name}(" in stdlib_lines()
+
+
+# ---------------------------------------------------------------------------------------------
+# Stands and holders (std/stands.aidl)
+
+STANDS = {"tablet_stand": 3, "laptop_stand": 4, "tool_holder": 6, "wall_shelf": 4}   # parts
+
+
+@pytest.mark.parametrize("name", list(STANDS))
+@pytest.mark.parametrize("kerf", ["", "kerf 0.15 mm\n"])
+def test_stand_compiles_clean_places_every_part_and_fits(tmp_path, name, kerf):
+    r = compile_src(tmp_path, kerf + demo(name))
+    assert r.ok, [f"{d.code} {d.message}" for d in r.errors]
+    assert codes(r) == [] and codes(r, "W04") == []        # no shape warning, no W0517/W0518
+    assert len(r.compiled.drawing.placement) == STANDS[name] == len(r.parts)
+
+
+@pytest.mark.parametrize("name,joints", [("tablet_stand", 2), ("laptop_stand", 4),
+                                         ("tool_holder", 10), ("wall_shelf", 4)])
+def test_stand_material_thicker_than_drawn_collides(tmp_path, name, joints):
+    r = compile_src(tmp_path, demo(name, "thickness 3 mm", "thickness 4 mm"))
+    ws = [d for d in r.sink.items if d.code == "W0517"]
+    assert len(ws) >= joints and all(", 1 mm deep," in w.message for w in ws)
+
+
+def slot_width(poly, y, near):
+    """The width of the slot crossing height y next to x = near (its two sides)."""
+    xs = [x for x in xs_at(poly, y) if abs(x - near) < 5]
+    assert len(xs) == 2, xs
+    return xs[1] - xs[0], (xs[0] + xs[1]) / 2
+
+
+@pytest.mark.parametrize("clearance", [0.0, 0.25])
+def test_tablet_stand_dimensions(tmp_path, clearance):
+    r = compile_src(tmp_path, demo("tablet_stand", "thickness=3 mm)", f"thickness=3 mm, clearance={clearance} mm)"))
+    assert r.ok and codes(r) == []
+    H, a = 130, math.radians(70)
+    D = (H - 6) / math.tan(a) + 60
+    for i in range(2):
+        (s,), _ = loops(r, f"stand.s.support[{i}]")
+        assert size(s) == pytest.approx((D, H), abs=A)
+        ox = (2 * i - 1) * (D + 5) / 2
+        w, c = slot_width(s, 10, ox)                 # from the bottom edge, 20 deep
+        assert (w, c) == pytest.approx((3 + clearance, ox), abs=A)
+        assert max(y for x, y in s.exterior.coords if abs(x - ox) < 2) == pytest.approx(20, abs=A)
+        ys = sorted({round(y, 9) for x, y in s.exterior.coords if abs(x - (ox + D / 2)) < A})
+        assert ys == pytest.approx([0, 18], abs=A)   # the front: the 6 mm ledge + the 12 mm lip
+    (f,), _ = loops(r, "stand.s.foot")
+    assert size(f) == pytest.approx((140, 40), abs=A)
+    for sx in (-55, 55):
+        assert slot_width(f, -15, sx) == pytest.approx((3 + clearance, sx), abs=A)
+
+
+@pytest.mark.parametrize("clearance", [0.0, 0.25])
+def test_laptop_stand_dimensions(tmp_path, clearance):
+    r = compile_src(tmp_path, demo("laptop_stand", "thickness=3 mm)", f"thickness=3 mm, clearance={clearance} mm)"))
+    assert r.ok and codes(r) == []
+    D, h = 220, 30
+    back = h + D * math.tan(math.radians(15))
+    for i in range(2):
+        (s,), _ = loops(r, f"stand.s.side[{i}]")
+        assert size(s) == pytest.approx((D, back), abs=A)
+        ox = (2 * i - 1) * (D + 5) / 2
+        ys = sorted({round(y, 9) for x, y in s.exterior.coords if abs(x - (ox + D / 2)) < A})
+        assert ys == pytest.approx([0, h + 10], abs=A)      # the front with its 10 mm lip
+        for k in (-1, 1):
+            assert slot_width(s, 5, ox + k * (D / 2 - 30)) == pytest.approx((3 + clearance, ox + k * (D / 2 - 30)), abs=A)
+    for k in range(2):
+        (b,), _ = loops(r, f"stand.s.bar[{k}]")
+        assert size(b) == pytest.approx((260, h), abs=A)
+        top = b.bounds[3]
+        assert slot_width(b, top - 5, -110) == pytest.approx((3 + clearance, -110), abs=A)
+
+
+@pytest.mark.parametrize("outside", [True, False])
+def test_tool_holder_outside_and_inside_sizes_and_holes(tmp_path, outside):
+    r = compile_src(tmp_path, demo("tool_holder", "hole=16 mm)", f"hole=16 mm, outside={str(outside).lower()})"))
+    assert r.ok and codes(r) == []
+    L, D, H = (100, 70, 90) if outside else (106, 76, 96)     # inside + 2 x 3 mm
+    sizes = {"bottom": (L, D), "top": (L, D), "front": (L, H), "back": (L, H), "left": (H, D), "right": (H, D)}
+    for name, wh in sizes.items():
+        polys, _ = loops(r, f"desk.pens.{name}")
+        assert size(polys[0]) == pytest.approx(wh, abs=A), name
+    (top,), holes = loops(r, "desk.pens.top")
+    assert len(holes) == 6 and all(rad == pytest.approx(8, abs=A) for _, rad in holes)
+    (cx, cy), (x0, y0, x1, y1) = top.centroid.coords[0], top.bounds
+    px, py = (L - 6) / 3, (D - 6) / 2                         # spread over the plate inside the joints
+    want = sorted(((x0 + x1) / 2 + (c - 1) * px, (y0 + y1) / 2 + (k - 0.5) * py) for k in range(2) for c in range(3))
+    got = sorted(c for c, _ in holes)
+    assert [v for p in got for v in p] == pytest.approx([v for p in want for v in p], abs=A)
+
+
+def test_tool_holder_checks_that_the_holes_fit(tmp_path):
+    r = compile_src(tmp_path, demo("tool_holder", "hole=16 mm", "hole=30 mm"))
+    assert [e.code for e in r.errors] == ["E0405"] and "4 mm apart" in r.errors[0].message
+
+
+@pytest.mark.parametrize("clearance", [0.0, 0.25])
+def test_wall_shelf_dimensions(tmp_path, clearance):
+    r = compile_src(tmp_path, demo("wall_shelf", "screw=4)", f"screw=4, clearance={clearance} mm)"))
+    assert r.ok and codes(r) == []
+    back, holes = loops(r, "shelf.s.back")
+    assert size(back[0]) == pytest.approx((300, 150), abs=A)
+    slots = sorted(back[1:], key=lambda p: (p.bounds[0], p.bounds[1]))
+    assert len(slots) == 4
+    assert [v for s in slots for v in size(s)] == pytest.approx([3 + clearance, 20 + clearance] * 4, abs=A)
+    assert sorted(round(s.centroid.x, 9) for s in slots) == pytest.approx([-110, -110, 110, 110], abs=A)
+    assert sorted(round(s.centroid.y, 9) for s in slots) == pytest.approx([-37.5, -37.5, 37.5, 37.5], abs=A)
+    assert [round(2 * rad, 9) for _, rad in holes] == [4.5, 4.5]          # M4 medium, ISO 273
+    assert sorted((x, y) for (x, y), _ in holes) == [pytest.approx((-55, 60), abs=A), pytest.approx((55, 60), abs=A)]
+    (shelf,), _ = loops(r, "shelf.s.shelf")
+    assert size(shelf) == pytest.approx((300, 120), abs=A)
+    top = shelf.bounds[3]
+    for sx in (-110, 110):
+        assert slot_width(shelf, top - 30, sx) == pytest.approx((3 + clearance, sx), abs=A)
+        assert min(y for x, y in shelf.exterior.coords if abs(x - sx) < 2) == pytest.approx(top - 60, abs=A)
+    for i in range(2):
+        (b,), _ = loops(r, f"shelf.s.bracket[{i}]")
+        # depth + the tabs through the plate; 150 tall at its back edge, where the shoulder below
+        # the lower tab cuts the pointed foot back by the thickness (the diagonal falls 100 in 123)
+        assert size(b) == pytest.approx((123, 150 - 3 * 100 / 123), abs=A)
+
+
+@pytest.mark.parametrize("name", list(STANDS))
+def test_stand_docs_and_prompt(name):
+    from aidl_lang.reference import stdlib_lines
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "docs", name], cwd=ROOT,
+                         capture_output=True, text=True)
+    assert out.returncode == 0 and f"{name}(" in out.stdout and "std/stands.aidl" in out.stdout
+    assert f"- {name}(" in stdlib_lines()
