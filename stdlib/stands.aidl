@@ -36,9 +36,9 @@ def tablet_stand(width=120 mm, height=120 mm, angle=70 deg, lip=12 mm, thickness
             slot = cross_halving(depth=f / 2, thickness=t, clearance=clearance, rotation=180 deg,
                                  cx=ox, cy=cy)
         }
-        # stood up across x, its front toward +y, crossing the foot at y = 0
-        Place(support, rotation=(90 deg, 0, 90 deg),
-              position=((2 * i - 1) * (width / 2 - 15 mm) - t / 2, -ox, -cy))
+        # stood up across x, its front toward -y, crossing the foot at y = 0
+        Place(support, rotation=(90 deg, 0, -90 deg),
+              position=((2 * i - 1) * (width / 2 - 15 mm) + t / 2, ox, -cy))
     }
     solid foot {
         body = Rectangle(center=(cx, cy - gap - f / 2), width=width, height=f)
@@ -78,8 +78,9 @@ def laptop_stand(width=260 mm, depth=220 mm, height=30 mm, angle=15 deg, thickne
                                      rotation=180 deg, cx=ox + (2 * k - 1) * (depth / 2 - 30 mm), cy=cy)
             }
         }
-        Place(side, rotation=(90 deg, 0, 90 deg),
-              position=((2 * i - 1) * (width / 2 - 20 mm) - t / 2, -ox, -cy))
+        # its front (the lip) toward -y
+        Place(side, rotation=(90 deg, 0, -90 deg),
+              position=((2 * i - 1) * (width / 2 - 20 mm) + t / 2, ox, -cy))
     }
     for k in range(2) {
         by = cy - gap - height / 2 - k * (height + gap)
@@ -202,10 +203,10 @@ def wall_shelf(length=300 mm, depth=120 mm, height=150 mm, thickness=3 mm, screw
             slot = cross_halving(depth=depth / 2, thickness=t, clearance=clearance, rotation=-90 deg,
                                  cx=bx + depth + t, cy=by + zs + t / 2)
         }
-        # its tabs through the back plate to the wall (y = 0), across the board
-        Place(bracket, rotation=(90 deg, 0, 90 deg), position=((2 * i - 1) * X - t / 2, -bx, -by))
+        # its tabs through the back plate to the wall (y = 0; the shelf toward -y), across the board
+        Place(bracket, rotation=(90 deg, 0, -90 deg), position=((1 - 2 * i) * X + t / 2, bx, -by))
     }
-    # the back plate on the wall (y 0 .. t), the board on the brackets, its back edge on the plate
-    Place(back, rotation=(90 deg, 0, 0), position=(-cx, t, height / 2 - cy))
-    Place(shelf, rotation=(180 deg, 0, 0), position=(-cx, t + sy, zs + t))
+    # the back plate on the wall (y -t .. 0), the board on the brackets, its back edge on the plate
+    Place(back, rotation=(90 deg, 0, 180 deg), position=(cx, -t, height / 2 - cy))
+    Place(shelf, rotation=(180 deg, 0, 180 deg), position=(cx, -t - sy, zs + t))
 }
