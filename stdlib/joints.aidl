@@ -113,3 +113,150 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
     Place(right, rotation=(0, -90 deg, 0),
           position=(length / 2, -cy, height / 2 - (cx + (length + height) / 2 + gap)))
 }
+
+# ---------------------------------------------------------------------------
+# Joints between any two panels. Each is a `hole` cut into a panel, placed by
+# (cx, cy) on the panel's edge and `rotation`: at rotation 0 the edge runs
+# along x through (cx, cy) and the panel lies below it (toward -y), as for
+# `t_slot`. A cut that opens an edge runs 1 mm past it, so it opens cleanly.
+
+import "std/fasteners.aidl"
+
+# A cross-halving slot: panels slotted halfway into each other crosswise.
+# From the mouth at (cx, cy) on the edge it runs `depth` mm into the panel,
+# `thickness` + `clearance` wide; cut one into each panel, the two depths
+# adding up to the overlap. Member: `cut`.
+def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
+                  cx=0 mm, cy=0 mm) -> hole {
+    assert depth > 0 mm and thickness + clearance > 0 mm, "the slot needs a depth and a width"
+    v = (1 mm - depth) / 2
+    cut = Rectangle(center=(cx - v * sin(rotation), cy + v * cos(rotation)),
+                    width=thickness + clearance, height=depth + 1 mm, rotation=rotation)
+    Fixed(cut)
+    Fixed(self)
+}
+
+# A finger joint along any panel edge, starting with a "tab" or "gap".
+# The edge, `length` long and centred on (cx, cy), is cut into the largest odd
+# number of equal segments at least `finger` wide (at least 3 while they stay
+# `thickness` wide); every second one, from the first when `start` is "gap",
+# is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
+# length at a corner. Member: `gap`.
+def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
+                cx=0 mm, cy=0 mm) -> hole {
+    assert (1 if start == "tab" or start == "gap" else 0) == 1, "start is \"tab\" or \"gap\""
+    assert length > thickness, "the edge must be longer than the thickness"
+    t = thickness
+    q = floor(length / finger)
+    odd = q if q % 2 == 1 else q - 1
+    n = odd if odd >= 3 else (3 if length >= 3 * t else 1)
+    w = length / n
+    c = cos(rotation)
+    s = sin(rotation)
+    for i in range(n) {
+        if (start == "gap") == (i % 2 == 0) {
+            lo = -length / 2 + i * w - (1 mm if i == 0 else 0 mm)
+            hi = -length / 2 + (i + 1) * w + (1 mm if i == n - 1 else 0 mm)
+            u = (lo + hi) / 2
+            v = (1 mm - t) / 2
+            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                            height=t + 1 mm, rotation=rotation)
+            Fixed(gap)
+        }
+    }
+    Fixed(self)
+}
+
+# A screwed tab-and-slot joint with captive nuts (T-slots).
+# `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
+# (`thickness` long, spread evenly over `length`) with a `t_slot` for an M`screw`
+# screw and its nut between each two; "slot" cuts the mate: a slot
+# `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
+# clearance hole for each screw, centred on the line through (cx, cy) where the
+# tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
+# `screw=0` leaves them out (a glued or pressed joint).
+# Members: `gap`, `nut`, `slot`, `bolt`.
+def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
+                 clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
+    assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
+    assert tabs >= 2 and tab < length / tabs, "at least 2 tabs, each narrower than length / tabs"
+    t = thickness
+    p = length / tabs
+    c = cos(rotation)
+    s = sin(rotation)
+    size = screw * 1 mm
+    if part == "tab" {
+        for i in range(tabs + 1) {
+            lo = -length / 2 - 1 mm if i == 0 else -length / 2 + (i - 0.5) * p + tab / 2
+            hi = length / 2 + 1 mm if i == tabs else -length / 2 + (i + 0.5) * p - tab / 2
+            u = (lo + hi) / 2
+            v = (1 mm - t) / 2
+            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                            height=t + 1 mm, rotation=rotation)
+            Fixed(gap)
+        }
+        for k in range(1, tabs if screw > 0 else 1) {
+            u = -length / 2 + k * p
+            nut = t_slot(size=screw, length=4 * size, nut_depth=2 * size, rotation=rotation,
+                         cx=cx + u * c + t * s, cy=cy + u * s - t * c)
+            Fixed(nut)
+        }
+    } else {
+        for i in range(tabs) {
+            u = -length / 2 + (i + 0.5) * p
+            slot = Rectangle(center=(cx + u * c, cy + u * s), width=tab + clearance,
+                             height=t + clearance, rotation=rotation)
+            Fixed(slot)
+        }
+        for k in range(1, tabs if screw > 0 else 1) {
+            u = -length / 2 + k * p
+            bolt = clearance_hole(size=screw, fit="medium", cx=cx + u * c, cy=cy + u * s)
+            Fixed(bolt)
+        }
+    }
+    Fixed(self)
+}
+
+# A flat sliding dovetail locking two panels edge to edge.
+# Over a band `depth` deep along the edge (from the line through (cx, cy) to
+# `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
+# widen at `angle` toward their tips (the tail panel reaches across the band);
+# "socket" cuts those tails, `clearance` wider, out of the mate (which starts
+# at the line). Member: `cut`.
+def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
+             rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
+    assert (1 if part == "tail" or part == "socket" else 0) == 1, "part is \"tail\" or \"socket\""
+    assert tails >= 1 and depth > 0 mm, "at least 1 tail and some depth"
+    p = length / tails
+    d = depth
+    k = tan(angle)
+    assert p / 4 - (d / 2 + 1 mm) * k > 0 mm and p / 4 - d / 2 * k > 0 mm, "the tails are too steep for their pitch"
+    c = cos(rotation)
+    s = sin(rotation)
+    if part == "tail" {
+        # the sockets between the tails (half ones at both ends), open past the edge
+        for i in range(tails + 1) {
+            m = -length / 2 + i * p
+            a0 = p / 4 + d / 2 * k          # half width at the line (v = 0)
+            a1 = p / 4 - d / 2 * k          # half width at the tips (v = d)
+            l0 = -length / 2 - 1 mm if i == 0 else m - a0
+            l1 = -length / 2 - 1 mm if i == 0 else m - a1
+            r0 = length / 2 + 1 mm if i == tails else m + a0
+            r1 = length / 2 + 1 mm if i == tails else m + a1
+            uv = [(l0, 0 mm), (r0, 0 mm), (r1, d), (r1, d + 1 mm), (l1, d + 1 mm), (l1, d)]
+            cut = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv])
+            Fixed(cut)
+        }
+    } else {
+        # the tails, `clearance` wider, open past the mate's edge at the line
+        for i in range(tails) {
+            m = -length / 2 + (i + 0.5) * p
+            b0 = p / 4 - d / 2 * k + clearance / 2
+            b1 = p / 4 + d / 2 * k + clearance / 2
+            uv = [(m - b0, -1 mm), (m + b0, -1 mm), (m + b0, 0 mm), (m + b1, d), (m - b1, d), (m - b0, 0 mm)]
+            cut = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv])
+            Fixed(cut)
+        }
+    }
+    Fixed(self)
+}

@@ -19,8 +19,10 @@ from aidl_lang.registry import ENTRIES, SYNONYMS
 STDLIB_NAMES = {"spur_gear", "gear_pair", "washer", "bolt_circle", "rounded_tab", "slot_hole",
                 "hex_pocket", "finger_panel", "finger_box", "clearance_hole", "nut_trap",
                 "t_slot", "rounded_plate", "chamfered_plate", "mounting_plate", "keyhole",
-                "slot", "living_hinge", "text_on_arc", "lid_box", "sliding_lid_box",
-                "divider_tray"}
+                "slot", "living_hinge", "text_on_arc"}
+STDLIB_NAMES |= {"lid_box", "sliding_lid_box", "divider_tray"}                  # issue 52: boxes
+STDLIB_NAMES |= {"tab_and_slot", "dovetail", "cross_halving", "finger_edge",    # issue 52: joints,
+                 "tablet_stand", "laptop_stand", "tool_holder", "wall_shelf"}   # stands, holders
 
 
 def run_cli(*args):
