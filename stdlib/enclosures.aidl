@@ -7,7 +7,7 @@
 
 import "std/joints.aidl"
 
-# A finger-jointed box around a circuit board, with standoff holes, ports and a vented lid.
+# A finger-jointed box for a circuit board: standoff holes, ports, vented lid.
 # The board is `width` x `height` (mm, its outline), `clearance` from every
 # wall; the box's inside is `depth` deep (floor to lid) from material
 # `thickness`, so its outer size is (width + 2 clearance + 2 thickness) x
@@ -19,16 +19,16 @@ import "std/joints.aidl"
 # that edge in board coordinates (y for left/right, x for front/back), its
 # bottom edge level with the board's top face (standoff + 1.6 mm above the
 # floor). `vent` is "slots", "hex" (a hex grid of round holes) or "none", over
-# the board's area in the lid. Members: `bottom`, `front`, `back`, `left`,
-# `right`, `lid` (each a solid holding a finger_panel `panel`), `length`,
+# the board's area in the lid. Each part holds a finger_panel, panel.
+# Members: `bottom`, `front`, `back`, `left`, `right`, `lid`, `length`,
 # `wide`, `tall` (the outer size along x, y and z).
 def board_enclosure(width=85 mm, height=56 mm, depth=25 mm, thickness=3 mm,
                     clearance=2 mm, holes=[[3.5, 3.5], [61.5, 3.5], [3.5, 52.5], [61.5, 52.5]],
                     hole_d=3.2 mm, standoff=5 mm,
                     ports=[["front", 20, 10, 4], ["right", 28, 14, 8]],
-                    vent="slots", finger=10 mm,
-                    gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
+                    vent="slots", finger=10 mm, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
+    gap = 5 mm
     assert (1 if vent == "slots" or vent == "hex" or vent == "none" else 0) == 1, "vent is \"slots\", \"hex\" or \"none\""
     assert clearance >= 0 mm and depth > standoff + 1.6 mm, "the box must be deeper than the standoffs and the board"
     # the outer size: length along x, wide along y, tall along z

@@ -140,16 +140,19 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
     gear2.hub.center == gear1.hub.center + (center_distance * cos(angle), center_distance * sin(angle))
 }
 
-# Spur gears meshing in a row on a plate, with an axle hole under each.
+# Spur gears meshing in a row on a plate with axle holes.
 # `teeth` lists the gears' tooth counts from left to right (2 to 8 gears, each
 # meshing the next), all of `module`; the axles lie on one line at the centre
-# distances module * (z1 + z2) / 2, in a plate `margin` larger than the gears'
+# distances module * (z1 + z2) / 2, in a plate 5 mm larger than the gears'
 # tips, each gear bored for its axle (`axle` diameter). Flat, the plate is at
 # (cx, cy) and the gears in mesh above it; assembled, the plate lies on z = 0
-# and each gear on it on its axle. Members: `plate` (its `body`, `axle_hole[i]`),
-# `gear[i]` (spur_gear instances), `x` (the axles' x offsets from the first).
+# and each gear on it on its axle (the plate's holes are axle_hole[i]).
+# Members: `plate`, `gear[i]` (spur_gear instances), `x` (the axles' x offsets
+# from the first).
 def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
-               margin=5 mm, thickness=3 mm, gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
+               thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    margin = 5 mm
+    gap = 5 mm
     n = len(teeth)
     assert n >= 2 and n <= 8, "a gear train has 2 to 8 gears"
     z = teeth + [0, 0, 0, 0, 0, 0, 0, 0]
@@ -187,7 +190,7 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
     Place(plate, position=(-cx, -cy, 0 mm))
 }
 
-# A rack and a pinion meshing it, on a base plate with the pinion's axle hole.
+# A rack and a pinion in mesh, on a base plate.
 # The rack has `rack_teeth` straight teeth of `module` (pitch pi * module,
 # flanks at the pressure angle 20 deg, addendum 1 module, dedendum 1.25
 # module) on a bar `height` below the roots; the pinion (`teeth`, bored for
@@ -195,9 +198,10 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 # over the rack's middle tooth. `backlash` thins the rack's teeth and the
 # pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
 # above it; assembled, both lie on the plate. Members: `rack`, `pinion`
-# (a spur_gear), `base` (its `axle_hole`), `pitch` (the rack's pitch).
+# (a spur_gear), `base`, `pitch` (the rack's pitch).
 def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm,
-                    backlash=0.05 mm, thickness=3 mm, gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
+                    backlash=0.05 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    gap = 5 mm
     assert rack_teeth >= 2 and rack_teeth == round(rack_teeth), "a rack has a whole number of teeth, at least 2"
     pitch = pi * module
     length = rack_teeth * pitch
@@ -248,18 +252,20 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
     Place(pinion, position=(-cx, shift - cy, thickness))
 }
 
-# A planetary gear set: a sun, `planets` planets and a ring gear, on a carrier.
+# A planetary gear set: sun, planets and ring gear, on a carrier.
 # All of `module`: the `sun` gear at (cx, cy), `planets` gears of `planet`
 # teeth evenly round it at the centre distance module * (sun + planet) / 2, and
 # a ring of `ring` internal teeth (an annular plate `rim` wider than the tooth
 # spaces). It assembles only if ring = sun + 2 planet and (ring + sun) divides
 # by planets (an assertion says which rule fails and the count to use). The
 # carrier, a disc with the sun's and the planets' axle holes (`axle`), is laid
-# beside the set flat and under it assembled. Members: `sun`, `planet_gear[i]`
-# (spur_gear instances), `ring_gear` (its hole `cut`: `teeth`, `tips`), `carrier`,
-# `center_distance`.
+# beside the set flat and under it assembled. The ring's cut-out is its hole
+# cut (cut.teeth, a spur_gear with the backlash negative, and cut.tips).
+# Members: `sun_gear`, `planet_gear[i]` (spur_gear instances), `ring_gear`,
+# `carrier`, `center_distance`.
 def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
-              backlash=0.05 mm, rim=6 mm, thickness=3 mm, gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
+              backlash=0.05 mm, rim=6 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    gap = 5 mm
     assert planets >= 2 and planets == round(planets), "a planetary set has at least 2 planets"
     # the ring rule: the right side is the ring count to use
     assert ring == sun + 2 * planet, "ring = sun + 2 * planet: give ring the right side's count"

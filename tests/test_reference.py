@@ -19,7 +19,8 @@ from aidl_lang.registry import ENTRIES, SYNONYMS
 STDLIB_NAMES = {"spur_gear", "gear_pair", "washer", "bolt_circle", "rounded_tab", "slot_hole",
                 "hex_pocket", "finger_panel", "finger_box", "clearance_hole", "nut_trap",
                 "t_slot", "rounded_plate", "chamfered_plate", "mounting_plate", "keyhole",
-                "slot", "living_hinge", "text_on_arc"}
+                "slot", "living_hinge", "text_on_arc", "board_enclosure", "gear_train",
+                "rack_and_pinion", "planetary"}
 
 
 def run_cli(*args):
