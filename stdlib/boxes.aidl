@@ -62,8 +62,8 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
     lo = length if outside else length + 4 * t
     wo = width if outside else width + 2 * t
     ho = height if outside else height + 4 * t + c
-    z1 = ho - 3 * t - c          # the top of the liners and the front wall: the lid's seat
-    hf = z1 - t                  # the height of the liners and the front wall
+    z1 = ho - 3 * t - c  # the top of the liners and the front wall: the lid's seat
+    hf = z1 - t          # the height of the liners and the front wall
     assert hf > t, "the box must be taller than five thicknesses"
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
     assert lo > 6 * t and wo > 4 * t, "the box must be longer than six and wider than four thicknesses"
@@ -139,10 +139,10 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     ho = height if outside else height + t
     li = lo - 2 * t
     wi = wo - 2 * t
-    hd = ho - t                          # the dividers' height: floor to the walls' top
+    hd = ho - t  # the dividers' height: floor to the walls' top
     assert rows >= 1 and cols >= 1, "a tray has at least one row and one column"
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
-    cw = (li - (cols - 1) * t) / cols    # a compartment's length and width
+    cw = (li - (cols - 1) * t) / cols  # a compartment's length and width
     rw = (wi - (rows - 1) * t) / rows
     assert cw > t and rw > t and hd > 2 * t, "the compartments must be larger than the thickness"
     body = finger_box(length=lo, depth=wo, height=ho, thickness=t, finger=finger, closed=false,

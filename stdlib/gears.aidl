@@ -139,3 +139,188 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
                       cx=cx + center_distance * cos(angle), cy=cy + center_distance * sin(angle))
     gear2.hub.center == gear1.hub.center + (center_distance * cos(angle), center_distance * sin(angle))
 }
+
+# Spur gears meshing in a row on a plate with axle holes.
+# `teeth` lists the gears' tooth counts from left to right (2 to 8 gears, each
+# meshing the next), all of `module`; the axles lie on one line at the centre
+# distances module * (z1 + z2) / 2, in a plate 5 mm larger than the gears'
+# tips, each gear bored for its axle (`axle` diameter). Flat, the plate is at
+# (cx, cy) and the gears in mesh above it; assembled, the plate lies on z = 0
+# and each gear on it on its axle (the plate's holes are axle_hole[i]).
+# Members: `plate`, `gear[i]` (spur_gear instances), `x` (the axles' x offsets
+# from the first).
+def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
+               thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    margin = 5 mm
+    gap = 5 mm
+    n = len(teeth)
+    assert n >= 2 and n <= 8, "a gear train has 2 to 8 gears"
+    z = teeth + [0, 0, 0, 0, 0, 0, 0, 0]
+    # s[k]: the teeth of gears 0..k; the axle of gear k is module * (2 s[k] - z0 - zk) / 2
+    s = [z[0], z[0] + z[1], z[0] + z[1] + z[2], z[0] + z[1] + z[2] + z[3],
+         z[0] + z[1] + z[2] + z[3] + z[4], z[0] + z[1] + z[2] + z[3] + z[4] + z[5],
+         z[0] + z[1] + z[2] + z[3] + z[4] + z[5] + z[6],
+         z[0] + z[1] + z[2] + z[3] + z[4] + z[5] + z[6] + z[7]]
+    x = [module * (2 * s[k] - z[0] - z[k]) / 2 for k in range(n)]
+    tip = max([module * (z[k] + 2) / 2 for k in range(n)])
+    span = x[n - 1] + module * (z[0] + z[n - 1] + 4) / 2 + 2 * margin
+    left = cx - span / 2 + margin + module * (z[0] + 2) / 2
+    deep = 2 * (tip + margin)
+    above = cy + deep / 2 + gap + tip
+    solid plate {
+        body = Rectangle(center=(cx, cy), width=span, height=deep)
+        Fixed(body.center)
+        for k in range(n) {
+            hole axle_hole {
+                c = Circle(center=(left + x[k], cy), diameter=axle)
+                Fixed(c.center)
+            }
+            axle_hole.c.center == (left + x[k], cy)
+        }
+    }
+    for k in range(n) {
+        # a tooth of gear k-1 points at gear k, so gear k turns a gap to it: half a pitch
+        # more for each even count among gears 1..k
+        half = len([1 for j in range(1, k + 1) if z[j] % 2 == 0]) % 2
+        gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash,
+                         phase=half * 180 deg / z[k], cx=left + x[k], cy=above)
+        gear.hub.center == (left + x[k], above)
+        Place(gear, position=(-cx, -above, thickness))
+    }
+    Place(plate, position=(-cx, -cy, 0 mm))
+}
+
+# A rack and a pinion in mesh, on a base plate.
+# The rack has `rack_teeth` straight teeth of `module` (pitch pi * module,
+# flanks at the pressure angle 20 deg, addendum 1 module, dedendum 1.25
+# module) on a bar `height` below the roots; the pinion (`teeth`, bored for
+# `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
+# over the rack's middle tooth. `backlash` thins the rack's teeth and the
+# pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
+# above it; assembled, both lie on the plate. Members: `rack`, `pinion`
+# (a spur_gear), `base`, `pitch` (the rack's pitch).
+def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm,
+                    backlash=0.05 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    gap = 5 mm
+    assert rack_teeth >= 2 and rack_teeth == round(rack_teeth), "a rack has a whole number of teeth, at least 2"
+    pitch = pi * module
+    length = rack_teeth * pitch
+    r = module * teeth / 2
+    # the flat view: the base plate at (cx, cy), the rack's pitch line `line` above it
+    base_h = height + 2.25 * module + r + module + 2 * gap
+    line = cy + base_h / 2 + gap + height + 1.25 * module
+    solid rack {
+        bar = Rectangle(center=(cx, line - 1.25 * module - height / 2), width=length, height=height)
+        Fixed(bar.center)
+        # one tooth over each pitch: a trapezoid from the root line to the tip line (and a
+        # foot down into the bar),
+        # pitch / 2 - backlash wide at the pitch line, its flanks at 20 deg
+        ta = tan(20 deg)
+        w = (pitch / 2 - backlash) / 2
+        for i in range(rack_teeth) {
+            xc = cx + (i - (rack_teeth - 1) / 2) * pitch
+            wr = w + 1.25 * module * ta
+            tooth = Polygon([(xc - wr, line - 1.25 * module - height / 2),
+                             (xc + wr, line - 1.25 * module - height / 2),
+                             (xc + wr, line - 1.25 * module),
+                             (xc + w - module * ta, line + module),
+                             (xc - w + module * ta, line + module),
+                             (xc - wr, line - 1.25 * module)])
+            Fixed(tooth.points[0])
+        }
+    }
+    # the middle of the rack: a tooth (odd count) or a gap (even); the pinion turns a
+    # gap (tooth) down to it
+    down = -90 deg + (180 deg / teeth if rack_teeth % 2 == 1 else 0 deg)
+    pinion = spur_gear(teeth=teeth, module=module, bore=axle, backlash=backlash, phase=down,
+                       cx=cx, cy=line + r)
+    pinion.hub.center == (cx, line + r)
+    solid base {
+        body = Rectangle(center=(cx, cy), width=length, height=base_h)
+        Fixed(body.center)
+        hole axle_hole {
+            c = Circle(center=(cx, cy - base_h / 2 + gap + height + 1.25 * module + r), diameter=axle)
+            Fixed(c.center)
+        }
+        axle_hole.c.center == (cx, cy - base_h / 2 + gap + height + 1.25 * module + r)
+    }
+    # assembled: the base on z = 0, the rack and the pinion on it, the rack's bar along its
+    # lower edge less `gap`
+    shift = cy - base_h / 2 + gap + height + 1.25 * module - line
+    Place(base, position=(-cx, -cy, 0 mm))
+    Place(rack, position=(-cx, shift - cy, thickness))
+    Place(pinion, position=(-cx, shift - cy, thickness))
+}
+
+# A planetary gear set: sun, planets and ring gear, on a carrier.
+# All of `module`: the `sun` gear at (cx, cy), `planets` gears of `planet`
+# teeth evenly round it at the centre distance module * (sun + planet) / 2, and
+# a ring of `ring` internal teeth (an annular plate `rim` wider than the tooth
+# spaces). It assembles only if ring = sun + 2 planet and (ring + sun) divides
+# by planets (an assertion says which rule fails and the count to use). The
+# carrier, a disc with the sun's and the planets' axle holes (`axle`), is laid
+# beside the set flat and under it assembled. The ring's cut-out is its hole
+# cut (cut.teeth, a spur_gear with the backlash negative, and cut.tips).
+# Members: `sun_gear`, `planet_gear[i]` (spur_gear instances), `ring_gear`,
+# `carrier`, `center_distance`.
+def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
+              backlash=0.05 mm, rim=6 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+    gap = 5 mm
+    assert planets >= 2 and planets == round(planets), "a planetary set has at least 2 planets"
+    # the ring rule: the right side is the ring count to use
+    assert ring == sun + 2 * planet, "ring = sun + 2 * planet: give ring the right side's count"
+    # the spacing rule: the right side is the nearest sun count that satisfies it (then
+    # ring = that + 2 * planet)
+    fits = [sun + d for d in range(-planets, planets + 1) if sun + d >= 3 and (2 * (sun + d) + 2 * planet) % planets == 0]
+    near = min([abs(f - sun) for f in fits])
+    sun_ok = [f for f in fits if abs(f - sun) == near][0]
+    assert sun == sun_ok, "(ring + sun) must divide by planets for the planets to sit evenly: use the right side's sun count and ring = sun + 2 * planet"
+    center_distance = module * (sun + planet) / 2
+    rr = module * ring / 2
+    sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy)
+    sun_gear.hub.center == (cx, cy)
+    for k in range(planets) {
+        a = k * 360 deg / planets
+        # the sun's tooth offset seen from planet k, in pitches: -k sun / planets; the planet
+        # puts a gap there
+        planet_gear = spur_gear(teeth=planet, module=module, bore=axle, backlash=backlash,
+                                phase=a + 180 deg + (k * sun / planets - 0.5) * 360 deg / planet,
+                                cx=cx + center_distance * cos(a), cy=cy + center_distance * sin(a))
+        planet_gear.hub.center == (cx + center_distance * cos(a), cy + center_distance * sin(a))
+    }
+    solid ring_gear {
+        body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
+        Fixed(body.center)
+        # the tooth spaces are an external gear's teeth (its backlash negative: the spaces
+        # widen), the ring's teeth cut back to the addendum circle rr - module
+        hole cut {
+            teeth = spur_gear(teeth=ring, module=module, backlash=-backlash,
+                              phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy)
+            tips = Circle(center=(cx, cy), radius=rr - module)
+            Fixed(tips.center)
+            teeth.hub.center == tips.center
+        }
+        cut.tips.center == (cx, cy)
+    }
+    # the carrier: flat, beside the ring; assembled, under the set
+    ox = cx + 2 * (rr + 1.25 * module + rim) + gap
+    solid carrier {
+        body = Circle(center=(ox, cy), radius=rr + module)
+        Fixed(body.center)
+        hole centre_hole {
+            c = Circle(center=(ox, cy), diameter=axle)
+            Fixed(c.center)
+        }
+        centre_hole.c.center == (ox, cy)
+        for k in range(planets) {
+            hole axle_hole {
+                c = Circle(center=(ox + center_distance * cos(k * 360 deg / planets),
+                                   cy + center_distance * sin(k * 360 deg / planets)), diameter=axle)
+                Fixed(c.center)
+            }
+            axle_hole.c.center == (ox + center_distance * cos(k * 360 deg / planets),
+                                   cy + center_distance * sin(k * 360 deg / planets))
+        }
+    }
+    Place(carrier, position=(cx - ox, 0 mm, -thickness))
+}

@@ -237,8 +237,8 @@ def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clea
         # the sockets between the tails (half ones at both ends), open past the edge
         for i in range(tails + 1) {
             m = -length / 2 + i * p
-            a0 = p / 4 + d / 2 * k          # half width at the line (v = 0)
-            a1 = p / 4 - d / 2 * k          # half width at the tips (v = d)
+            a0 = p / 4 + d / 2 * k  # half width at the line (v = 0)
+            a1 = p / 4 - d / 2 * k  # half width at the tips (v = d)
             l0 = -length / 2 - 1 mm if i == 0 else m - a0
             l1 = -length / 2 - 1 mm if i == 0 else m - a1
             r0 = length / 2 + 1 mm if i == tails else m + a0

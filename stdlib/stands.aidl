@@ -20,8 +20,8 @@ def tablet_stand(width=120 mm, height=120 mm, angle=70 deg, lip=12 mm, thickness
     assert angle > 30 deg and angle < 85 deg, "the back leans at 30 to 85 degrees"
     assert width >= 60 mm and height >= 60 mm, "the stand is at least 60 mm wide and tall"
     t = thickness
-    e = 6 mm                                   # the ledge the device stands on
-    f = 40 mm                                  # the foot's height
+    e = 6 mm   # the ledge the device stands on
+    f = 40 mm  # the foot's height
     gap = 5 mm
     depth = (height - e) / tan(angle) + 60 mm  # the supports' footprint
     x5 = depth / 2 - 24 mm                     # the back's front face meets the ledge
@@ -168,12 +168,12 @@ def wall_shelf(length=300 mm, depth=120 mm, height=150 mm, thickness=3 mm, screw
     assert length >= 150 mm and depth >= 60 mm and height >= 80 mm, "at least 150 mm long, 60 mm deep, 80 mm tall"
     t = thickness
     gap = 5 mm
-    zs = height - 30 mm                        # the board's underside
-    inset = 40 mm                              # the brackets from the ends
+    zs = height - 30 mm  # the board's underside
+    inset = 40 mm        # the brackets from the ends
     X = length / 2 - inset
     tab = 20 mm
     by = cy - height / 2
-    sy = by - gap                              # the board's back edge on the sheet
+    sy = by - gap  # the board's back edge on the sheet
     solid back {
         body = Rectangle(center=(cx, cy), width=length, height=height)
         Fixed(body)

@@ -134,9 +134,11 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     # table; issue 35 allows 15% over its 2,992 words (3,440) for the standard library,
     # statements and the booleans' example, and moved two of the four examples behind
     # `--examples N`; issues 36, 39 and 40 (Polyline, Sector, Stroke, mirror, Drawing2D, Place:
-    # about 110 words) stay within the 3,440 and move the rules without examples to 3,000
-    assert word_count(text) <= 3440
-    assert word_count(system_prompt(examples=False)) <= 3000
+    # about 110 words) stay within the 3,440 and move the rules without examples to 3,000;
+    # issue 52's 18 generators (boxes, joints, stands, an enclosure, gear mechanisms) add one
+    # signature line each, 471 words (+13.7%): 3,950 and 3,480 without examples
+    assert word_count(text) <= 3950
+    assert word_count(system_prompt(examples=False)) <= 3480
 
 
 def test_prompt_members_table_gives_each_member_its_kind():

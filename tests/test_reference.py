@@ -23,6 +23,8 @@ STDLIB_NAMES = {"spur_gear", "gear_pair", "washer", "bolt_circle", "rounded_tab"
 STDLIB_NAMES |= {"lid_box", "sliding_lid_box", "divider_tray"}                  # issue 52: boxes
 STDLIB_NAMES |= {"tab_and_slot", "dovetail", "cross_halving", "finger_edge",    # issue 52: joints,
                  "tablet_stand", "laptop_stand", "tool_holder", "wall_shelf"}   # stands, holders
+STDLIB_NAMES |= {"board_enclosure", "gear_train", "rack_and_pinion",         # issue 52: enclosures,
+                 "planetary"}                                                    # mechanisms
 
 
 def run_cli(*args):
