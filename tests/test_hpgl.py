@@ -134,6 +134,12 @@ def check_hpgl(out, data: bytes, passes: int = 1) -> dict:
             assert all(v >= 0 and float(v).is_integer() for v in c.args[:2]), c.raw
     plot, paths = _read(data)
     assert len(paths) == len(cuts) * passes
+    # the extent: the units are 40 a mm (a wrong scale moves the far side by 1.6 %)
+    import dataclasses
+    b = plot.pages[0].bounds
+    X0, Y0, X1, Y1 = extent(dataclasses.replace(out, page=None))      # the drawing's own box
+    assert (b.min.x, b.min.y, b.max.x, b.max.y) == pytest.approx(
+        (X0 - x0, Y0 - y0, X1 - x0, Y1 - y0), abs=TOL)
     stats = {"arcs": 0, "centres_rounded": 0}
     design_arcs = [(s, c) for c in cuts for s in c.segments if isinstance(s, (Arc, Circle))]
     read_arcs = [op for ops in paths[::passes] for op in ops if op.source.command == "AA"]
@@ -166,12 +172,6 @@ def check_hpgl(out, data: bytes, passes: int = 1) -> dict:
             design = np.vstack([_dense(s) for s in cut.segments])
             d2 = _to_polyline_distance(design, drawn)
             assert d2.max() <= TOL + 1e-9, (cut.part, cut.operation, d2.max())
-    # the extent: the units are 40 a mm (a wrong scale moves the far side by 1.6 %)
-    import dataclasses
-    b = plot.pages[0].bounds
-    X0, Y0, X1, Y1 = extent(dataclasses.replace(out, page=None))      # the drawing's own box
-    assert (b.min.x, b.min.y, b.max.x, b.max.y) == pytest.approx(
-        (X0 - x0, Y0 - y0, X1 - x0, Y1 - y0), abs=TOL)
     # the order: engraving first (its speed), and no closed path after one around it
     from aidl_lang.output.machine import DEFAULTS
     speeds = [c.args[0] for c in raw.commands if c.name == "VS"]

@@ -63,6 +63,7 @@ LAYERS = {
     "cut_inner": (5, "cut inner", 2),    # C05 orange
     "cut_outer": (2, "cut outer", 3),    # C02 red
 }
+SPEED_DIVISOR = 60.0       # the profile's mm/min over LightBurn's mm/s
 MAX_PIECES = 4096          # Bézier pieces of one arc at most (a 40 m radius full circle)
 
 
@@ -266,7 +267,7 @@ def to_lbrn2(output: Output, options=None) -> str:
         doc.add(2, f"<name Value={quoteattr(name)}/>")
         doc.add(2, f'<maxPower Value="{_f(o.power)}"/>')
         doc.add(2, f'<maxPower2 Value="{_f(o.power)}"/>')
-        doc.add(2, f'<speed Value="{_f(o.speed / 60.0)}"/>')          # mm/min -> mm/s
+        doc.add(2, f'<speed Value="{_f(o.speed / SPEED_DIVISOR)}"/>')   # mm/min -> mm/s
         doc.add(2, f'<numPasses Value="{max(1, int(o.passes))}"/>')
         doc.add(2, f'<priority Value="{priority}"/>')
         doc.add(1, "</CutSetting>")
