@@ -339,3 +339,22 @@ def test_an_empty_drawing_is_a_clear_error():
     from aidl_lang.output.part import Output, OutputError
     with pytest.raises(OutputError, match="nothing to write"):
         encode(Output(), ".plt")
+
+
+ELLIPSES = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=50)
+    hole a { e = Ellipse(center=(-20, 0), rx=12, ry=6, rotation=30) }
+    hole b { e = Ellipse(center=(25, 20), rx=15, ry=8) }
+}
+"""
+
+
+def test_ellipses_whole_and_cut(tmp_path):
+    """A whole rotated ellipse (a hole) and elliptical arcs (one cut by the plate's edge)."""
+    import aidl_lang
+    prog = tmp_path / "ell.aidl"
+    prog.write_text(ELLIPSES)
+    out = aidl_lang.compile(path=str(prog)).output
+    kinds = [type(s).__name__ for p in out.parts for lp in p.loops for s in lp.segments]
+    assert kinds.count("EllipticArc") == 2
+    check_hpgl(out, encode(out, ".plt"))
