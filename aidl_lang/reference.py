@@ -551,9 +551,25 @@ least 2 mm"), and constraints (`==`, `<=` statements) for what the solver should
 `kerf LENGTH` (top level: every part; inside a structure: that structure and its children,
 the nearest one wins). `aidl render` offsets every cut by half the kerf so parts come out at
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
-Only SVG, DXF, PNG and G-code are offset: STL, 3MF and STEP keep the designed size.
+Only the cutting formats (SVG, DXF, PDF, PNG, G-code, LightBurn `.lbrn2`, HPGL `.plt`) are
+offset: STL, 3MF and STEP keep the designed size.
 `aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
 """, ["kerf_width", "laser kerf", "cut width"]),
+    "lbrn2": ("statement", "`aidl render FILE -o x.lbrn2`: a LightBurn project, a layer per "
+              "operation.", """
+`aidl render FILE -o x.lbrn2` writes a LightBurn project: one layer (CutSetting) per operation
+(engrave, score, cut inner, cut outer) with the machine profile's power, speed (mm/s in the
+file) and passes; a group per part; shapes in the cut order (engraving first, holes before
+outlines). Circles are exact Ellipse shapes, lines and spline pieces exact, arcs cubic Béziers
+within 1e-4 mm. Cuts are offset by half the kerf.
+""", ["lightburn", "LightBurn", ".lbrn2", "lbrn"]),
+    "hpgl": ("statement", "`aidl render FILE -o x.plt`: HPGL for vinyl cutters and pen "
+             "plotters.", """
+`aidl render FILE -o x.plt` (or `.hpgl`) writes HPGL: `IN;SP1;`, PU/PD moves and AA arcs in
+plotter units (40 a mm, whole numbers, origin at the drawing's lower-left so nothing is
+negative, y up), one pen or knife, engraving first and holes before outlines; every drawn point
+within 0.025 mm of the design.
+""", ["plt", ".plt", ".hpgl", "vinyl cutter", "plotter", "pen plotter", "HPGL"]),
     "thickness": ("statement", "`thickness 3 mm`: the material thickness for STL, 3MF, STEP "
                   "and the parts list.", """
 `thickness LENGTH` (top level: every part; inside a structure: that structure and its
@@ -989,6 +1005,11 @@ EXAMPLES: dict[str, str] = {
                + _solid("r = Rectangle(center=(0, 0), width=60, height=40)", "plate"),
     "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
                                         "plate"),
+    "lbrn2": "# aidl render plate.aidl -o plate.lbrn2\nkerf 0.15 mm\n\n" + _solid(
+        "r = Rectangle(center=(0, 0), width=60, height=40)\nhole bore { c = Circle(center=(0, "
+        "0), radius=5) }", "plate"),
+    "hpgl": "# aidl render sticker.aidl -o sticker.plt\n\n" + _solid(
+        "s = Star(center=(0, 0), points=5, outer_radius=30, inner_radius=12)", "sticker"),
     "thickness": "thickness 3 mm\n\nassembly kit {\n    solid plate { r = Rectangle(center=(0, "
                  "0), width=60, height=40) }\n    solid spacer {\n        thickness 6 mm\n"
                  "        c = Circle(center=(50, 0), radius=8)\n    }\n}\n",

@@ -25,8 +25,8 @@ PROMPT_EXAMPLES = ["bottle_opener.aidl", "bracket.aidl", "toy_sword.aidl", "name
 DEFAULT_EXAMPLES = 2
 
 INTRO = """\
-You write AIDL, a text language for 2D CAD parts (output: SVG, DXF; PDF `-o x.pdf --page A4`).
-Reply with one complete program in a ```aidl code block.
+You write AIDL, a text language for 2D CAD parts (output: SVG, DXF, PDF, G-code, LightBurn
+`.lbrn2`, HPGL `.plt`). Reply with one complete program in a ```aidl code block.
 
 A program is a tree of named structures: `solid NAME { ... }` (filled; unions its children),
 `hole NAME { ... }` (cut out of the enclosing solid), `drawing NAME { ... }` (engraved lines
@@ -87,7 +87,7 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts: W0511 unless
-`AllowOverlap(a, b)`; `aidl render --layout sheet` lays them out flat for cutting).
+`AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
 `aidl check` ends

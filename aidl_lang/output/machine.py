@@ -202,3 +202,19 @@ def from_dict(data: dict, source: str = "") -> Machine:
             op = replace(op, **{key: v})
         ops[name] = op
     return replace(base, units=units, operations=ops, source=source, **values)
+
+
+def resolve(value, kind: str = "laser") -> Machine:
+    """The :class:`Machine` a writer's ``options.machine`` names: None (the built-in profile
+    of ``kind``, the writer's own default), a Machine, a kind's name (``laser``, ``router``,
+    ``plotter``: its built-in profile), a path of a TOML profile, or a dict as a profile's
+    table.  Raises :class:`MachineError`."""
+    if value is None:
+        return default(kind)
+    if isinstance(value, Machine):
+        return value
+    if isinstance(value, dict):
+        return from_dict(value)
+    if isinstance(value, str) and value in KINDS:
+        return default(value)
+    return load(value)

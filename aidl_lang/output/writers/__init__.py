@@ -89,6 +89,15 @@ FORMATS: dict[str, Format] = {
                      text=True, cut=True, per_item=300e-6),
     ".nc": Format("gcode", "write", "text/x.gcode", "G-code (GRBL), as .gcode",
                   text=True, cut=True, per_item=300e-6),
+    ".lbrn2": Format("lightburn", "write", "application/x-lightburn",
+                     "LightBurn project: a layer per operation", text=True, cut=True,
+                     per_item=200e-6),
+    ".plt": Format("hpgl", "write", "application/vnd.hp-hpgl",
+                   "HPGL for vinyl cutters and pen plotters", text=True, cut=True,
+                   per_item=600e-6),
+    ".hpgl": Format("hpgl", "write", "application/vnd.hp-hpgl",
+                    "HPGL for vinyl cutters and pen plotters (.plt)", text=True, cut=True,
+                    per_item=600e-6),
 }
 # the formats a cutter reads (and their preview): written with the kerf offset applied; STL,
 # 3MF, STEP and GLB are the designed solid and never offset

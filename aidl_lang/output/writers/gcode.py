@@ -114,21 +114,10 @@ def read_summary(data: bytes) -> tuple[str, list[str]]:
 
 
 def machine_of(options):
-    """The :class:`~..machine.Machine` of ``options.machine``: None (the built-in laser), a
-    Machine, a kind's name (``laser``, ``router``, ``plotter``: its built-in profile), a path
-    of a TOML profile, or a dict as a profile's table.  Raises
-    :class:`~..machine.MachineError`."""
-    from .. import machine as M
-    m = getattr(options, "machine", None)
-    if m is None:
-        return M.default("laser")
-    if isinstance(m, M.Machine):
-        return m
-    if isinstance(m, dict):
-        return M.from_dict(m)
-    if isinstance(m, str) and m in M.KINDS:
-        return M.default(m)
-    return M.load(m)
+    """The :class:`~..machine.Machine` of ``options.machine`` (:func:`~..machine.resolve`;
+    None: the built-in laser).  Raises :class:`~..machine.MachineError`."""
+    from ..machine import resolve
+    return resolve(getattr(options, "machine", None), "laser")
 
 
 # ------------------------------------------------------------------ numbers
