@@ -169,12 +169,11 @@ def test_E0105_on_a_template_of_the_file_for_cx_cy_places_by_a_constraint(compil
 
 
 def test_the_prompt_says_what_AllowOverlap_templates_and_loop_names_do():
-    from aidl_lang.llm.prompt import system_prompt, word_count
+    from aidl_lang.llm.prompt import system_prompt
     text = system_prompt()
     assert "AllowOverlap(a, b, ...)" in text and "assembly parts (W0511)" in text
     assert "yours do not: `part.bb.center == (x, y)` places them" in text
-    assert "the current copy inside, the list after" in text
-    assert word_count(text) <= 3440
+    assert "the current copy inside, the list after" in text    # its length: test_llm.py
 
 
 # ------------------------------------------------------------------ the law of hints
