@@ -182,7 +182,7 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     }
 }
 
-# A finger-jointed box with a lid on a pin hinge cut from the material.
+# A finger-jointed box whose lid turns on pins cut from the sheet.
 # Two cheeks glued under the lid's back corners hang outside the side walls;
 # a pin, a strip `pin` wide (0: the thickness) and as long as a wall and a
 # cheek, sits tight in a hole through each side wall near its back top corner
@@ -299,13 +299,13 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
     }
 }
 
-# A finger-jointed drawer in its carcass, a box open at the front.
+# A finger-jointed drawer in an open-front carcass.
 # The drawer, an open finger-jointed box with a round finger pull in its front,
 # stands on the carcass floor flush with the carcass front, `clearance` from
 # the sides, the top and the back. `length` x `depth` x `height` (mm) is the
 # carcass's outer size when `outside=true`, else the space inside it.
-# Members: `carcass` and `box`, each with `bottom`, `back`, `left`, `right`;
-# `carcass.top`, `box.front`.
+# Members: `carcass` (bottom, top, back, left, right) and `box` (bottom,
+# front, back, left, right).
 def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
            clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -383,7 +383,7 @@ def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 
 
 import "std/plates.aidl"
 
-# A rounded box whose wall is one strip bent round a base by living hinges.
+# A rounded box whose wall bends round on living hinges.
 # The base and the lid are plates with corners of `radius`, each with a
 # `lip` glued on (under the lid) that fits inside the wall with `clearance`
 # all round. The wall stands on the base between them: a strip as long as

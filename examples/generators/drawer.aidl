@@ -1,4 +1,4 @@
-# A drawer with its carcass: the space inside the carcass given (outside=false).
+# A drawer in its carcass, sized by the space inside the carcass (outside=false).
 import "std/boxes.aidl"
 thickness 3 mm
 kerf 0.15 mm
