@@ -181,3 +181,267 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
         Place(col_divider, rotation=(90 deg, 0, 90 deg), position=(xs[i] - t / 2, -cx, t + hd / 2 - ny))
     }
 }
+
+# A finger-jointed box whose lid turns on pins cut from the sheet.
+# Two cheeks glued under the lid's back corners hang outside the side walls;
+# a pin, a strip `pin` wide (0: the thickness) and as long as a wall and a
+# cheek, sits tight in a hole through each side wall near its back top corner
+# and turns in a round hole in the cheek (the pin's diagonal plus
+# `clearance`). The lid overhangs the side walls by the cheeks. Opening, the
+# lid's back edge swings down behind the pivot: the back wall and the side
+# walls behind the pivot are lowered by that swing plus `clearance`.
+# `length` x `width` x `height` (mm) is the outer size (the lid's length,
+# the lid included) when `outside=true`, else the space inside. Members:
+# `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`.
+def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm, pin=0 mm,
+               clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
+    t = thickness
+    c = clearance
+    gap = 5 mm
+    p = pin if pin > 0 mm else t
+    lo = length - 2 * t - 2 * c if outside else length + 2 * t  # the body, between the cheeks
+    wo = width if outside else width + 2 * t
+    hb = height - t if outside else height + t                   # the walls, under the lid
+    ll = lo + 2 * t + 2 * c                                      # the lid, over the cheeks
+    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    rh = (sqrt(p * p + t * t) + c) / 2  # the cheek's hole: round about the pin's corners
+    r = rh + t / 3                      # the cheek's lobe about the pivot
+    b = 2 * r                           # the pivot below the lid, `r` in from the back
+    g = b - sqrt(b * b - r * r) + c     # the walls lowered behind the pivot
+    run = hb - 2 * t                    # the side walls' back finger joint (finger_panel's)
+    q = floor(run / finger)
+    odd = q if q % 2 == 1 else q - 1
+    n = odd if odd >= 3 else (3 if run >= 3 * t else 1)
+    assert (b if n == 1 else run / n) >= b, "the box is too low for its hinge (or the fingers too narrow)"
+    assert lo > 4 * t and wo > 2 * r + 2 * t, "the box is too small for its hinge"
+    yp = wo / 2 - r  # the pivot
+    zp = hb - b
+    bottom = finger_panel(width=lo, height=wo, thickness=t, finger=finger, bottom="slots", right="fingers",
+                          top="fingers", left="fingers", cx=cx, cy=cy)
+    fy = cy - (wo + hb) / 2 - gap
+    by = cy + (wo + hb) / 2 + gap
+    lx = cx - (lo + hb) / 2 - gap
+    rx = cx + (lo + hb) / 2 + gap
+    front = finger_panel(width=lo, height=hb, thickness=t, finger=finger, top="flat", cx=cx, cy=fy)
+    solid back {
+        panel = finger_panel(width=lo, height=hb, thickness=t, finger=finger, bottom="slots", right="slots",
+                             top="flat", left="slots", cx=cx, cy=by)
+        panel.outline.center == (cx, by)
+        hole swing {
+            s = Rectangle(center=(cx, by + hb / 2 + (1 mm - g) / 2), width=lo + 2 mm, height=g + 1 mm)
+        }
+        swing.s.center == (cx, by + hb / 2 + (1 mm - g) / 2)
+    }
+    # the side walls (the net's x is the product's height), their pin holes and swing notches
+    solid left {
+        panel = finger_panel(width=hb, height=wo, thickness=t, finger=finger, bottom="slots", right="slots",
+                             top="fingers", left="flat", cx=lx, cy=cy)
+        panel.outline.center == (lx, cy)
+        hole axle {
+            s = Rectangle(center=(lx + hb / 2 - zp, cy + yp), width=t, height=p)
+        }
+        axle.s.center == (lx + hb / 2 - zp, cy + yp)
+        hole swing {
+            s = Rectangle(center=(lx - hb / 2 + (g - 1 mm) / 2, cy + yp + (r + 1 mm) / 2), width=g + 1 mm,
+                          height=r + 1 mm)
+        }
+        swing.s.center == (lx - hb / 2 + (g - 1 mm) / 2, cy + yp + (r + 1 mm) / 2)
+    }
+    solid right {
+        panel = finger_panel(width=hb, height=wo, thickness=t, finger=finger, bottom="slots", right="flat",
+                             top="fingers", left="slots", cx=rx, cy=cy)
+        panel.outline.center == (rx, cy)
+        hole axle {
+            s = Rectangle(center=(rx - hb / 2 + zp, cy + yp), width=t, height=p)
+        }
+        axle.s.center == (rx - hb / 2 + zp, cy + yp)
+        hole swing {
+            s = Rectangle(center=(rx + hb / 2 + (1 mm - g) / 2, cy + yp + (r + 1 mm) / 2), width=g + 1 mm,
+                          height=r + 1 mm)
+        }
+        swing.s.center == (rx + hb / 2 + (1 mm - g) / 2, cy + yp + (r + 1 mm) / 2)
+    }
+    ly = by + hb / 2 + gap + wo / 2
+    solid lid {
+        plate = Rectangle(center=(cx, ly), width=ll, height=wo)
+    }
+    bottom.outline.center == (cx, cy)
+    front.outline.center == (cx, fy)
+    lid.plate.center == (cx, ly)
+    Place(bottom, position=(-cx, -cy, 0 mm))
+    Place(front, rotation=(90 deg, 0, 0), position=(-cx, t - wo / 2, hb / 2 - fy))
+    Place(back, rotation=(90 deg, 0, 0), position=(-cx, wo / 2, hb / 2 - by))
+    Place(left, rotation=(0, 90 deg, 0), position=(-lo / 2, -cy, lx + hb / 2))
+    Place(right, rotation=(0, -90 deg, 0), position=(lo / 2, -cy, hb / 2 - rx))
+    Place(lid, position=(-cx, -ly, hb))
+    # the cheeks (left, right) and pins beside the lid; the left cheek is the right one mirrored
+    for k in range(2) {
+        s = -1 if k == 0 else 1
+        hx = cx + ll / 2 + gap + b + k * (2 * r + gap)
+        solid cheek {
+            web = Rectangle(center=(hx + s * b / 2, ly), width=b, height=2 * r)
+            lobe = Circle(center=(hx, ly), radius=r)
+            hole bore {
+                h = Circle(center=(hx, ly), radius=rh)
+            }
+            bore.h.center == (hx, ly)
+        }
+        cheek.web.center == (hx + s * b / 2, ly)
+        cheek.lobe.center == (hx, ly)
+        px = cx + ll / 2 + gap + t + c / 2
+        py = ly - r - gap - p / 2 - k * (p + gap)
+        solid pin {
+            bar = Rectangle(center=(px, py), width=2 * t + c, height=p)
+        }
+        pin.bar.center == (px, py)
+        Place(cheek, rotation=(0, -s * 90 deg, 0), position=(s * (lo / 2 + c + t), yp - ly, zp - s * hx))
+        Place(pin, position=(s * (lo / 2 + c / 2) - px, yp - py, zp - t / 2))
+    }
+}
+
+# A finger-jointed drawer in an open-front carcass.
+# The drawer, an open finger-jointed box with a round finger pull in its front,
+# stands on the carcass floor flush with the carcass front, `clearance` from
+# the sides, the top and the back. `length` x `depth` x `height` (mm) is the
+# carcass's outer size when `outside=true`, else the space inside it.
+# Members: `carcass` (bottom, top, back, left, right) and `box` (bottom,
+# front, back, left, right).
+def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
+           clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
+    t = thickness
+    c = clearance
+    gap = 5 mm
+    lo = length if outside else length + 2 * t
+    do = depth if outside else depth + t
+    ho = height if outside else height + 2 * t
+    ld = lo - 2 * t - 2 * c  # the drawer's outer size
+    dd = do - t - c
+    hd = ho - 2 * t - c
+    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert ld > 4 * t and dd > 4 * t and hd > 4 * t, "the carcass must be larger than six thicknesses"
+    dp = min(20 mm, hd / 2)  # the finger pull's diameter
+    by = cy + (do + ho) / 2 + gap
+    ty = cy + do + ho + 2 * gap
+    lx = cx - (lo + ho) / 2 - gap
+    rx = cx + (lo + ho) / 2 + gap
+    assembly carcass {
+        bottom = finger_panel(width=lo, height=do, thickness=t, finger=finger, bottom="flat", right="fingers",
+                              top="slots", left="fingers", cx=cx, cy=cy)
+        top = finger_panel(width=lo, height=do, thickness=t, finger=finger, bottom="flat", right="fingers",
+                           top="slots", left="fingers", cx=cx, cy=ty)
+        back = finger_panel(width=lo, height=ho, thickness=t, finger=finger, cx=cx, cy=by)
+        left = finger_panel(width=ho, height=do, thickness=t, finger=finger, bottom="flat", right="slots",
+                            top="slots", left="slots", cx=lx, cy=cy)
+        right = finger_panel(width=ho, height=do, thickness=t, finger=finger, bottom="flat", right="slots",
+                             top="slots", left="slots", cx=rx, cy=cy)
+        bottom.outline.center == (cx, cy)
+        top.outline.center == (cx, ty)
+        back.outline.center == (cx, by)
+        left.outline.center == (lx, cy)
+        right.outline.center == (rx, cy)
+    }
+    # the drawer's net below the carcass's: its bottom, the front below it, the back above it
+    dy = cy - do / 2 - gap - hd - gap - dd / 2
+    fy = dy - (dd + hd) / 2 - gap
+    ky = dy + (dd + hd) / 2 + gap
+    dlx = cx - (ld + hd) / 2 - gap
+    drx = cx + (ld + hd) / 2 + gap
+    assembly box {
+        bottom = finger_panel(width=ld, height=dd, thickness=t, finger=finger, bottom="slots", right="fingers",
+                              top="slots", left="fingers", cx=cx, cy=dy)
+        solid front {
+            panel = finger_panel(width=ld, height=hd, thickness=t, finger=finger, top="flat", cx=cx, cy=fy)
+            panel.outline.center == (cx, fy)
+            hole pull {
+                p = Circle(center=(cx, fy), diameter=dp)
+            }
+            pull.p.center == (cx, fy)
+        }
+        back = finger_panel(width=ld, height=hd, thickness=t, finger=finger, top="flat", cx=cx, cy=ky)
+        left = finger_panel(width=hd, height=dd, thickness=t, finger=finger, bottom="slots", right="slots",
+                            top="slots", left="flat", cx=dlx, cy=dy)
+        right = finger_panel(width=hd, height=dd, thickness=t, finger=finger, bottom="slots", right="flat",
+                             top="slots", left="slots", cx=drx, cy=dy)
+        bottom.outline.center == (cx, dy)
+        back.outline.center == (cx, ky)
+        left.outline.center == (dlx, dy)
+        right.outline.center == (drx, dy)
+    }
+    # assembled: the carcass on z = 0, centered on x = y = 0, the drawer shut on its floor
+    Place(carcass.bottom, position=(-cx, -cy, 0 mm))
+    Place(carcass.top, position=(-cx, -ty, ho - t))
+    Place(carcass.back, rotation=(90 deg, 0, 0), position=(-cx, do / 2, ho / 2 - by))
+    Place(carcass.left, rotation=(0, 90 deg, 0), position=(-lo / 2, -cy, lx + ho / 2))
+    Place(carcass.right, rotation=(0, -90 deg, 0), position=(lo / 2, -cy, ho / 2 - rx))
+    y0 = dd / 2 - do / 2  # the drawer's middle
+    Place(box.bottom, position=(-cx, y0 - dy, t))
+    Place(box.front, rotation=(90 deg, 0, 0), position=(-cx, t - do / 2, t + hd / 2 - fy))
+    Place(box.back, rotation=(90 deg, 0, 0), position=(-cx, dd - do / 2, t + hd / 2 - ky))
+    Place(box.left, rotation=(0, 90 deg, 0), position=(-ld / 2, y0 - dy, t + dlx + hd / 2))
+    Place(box.right, rotation=(0, -90 deg, 0), position=(ld / 2, y0 - dy, t + hd / 2 - drx))
+}
+
+import "std/plates.aidl"
+
+# A rounded box whose wall bends round on living hinges.
+# The base and the lid are plates with corners of `radius`, each with a
+# `lip` glued on (under the lid) that fits inside the wall with `clearance`
+# all round. The wall stands on the base between them: a strip as long as
+# the wall's middle line (the straight sides and four quarter arcs), its ends
+# meeting mid-front, with a `living_hinge` over each arc. `length` x `width`
+# x `height` (mm) and `radius` are outer sizes when `outside=true`, else
+# inner. Assembled, the wall is shown unbent, standing along the back.
+# Members: `base`, `lid`, `lip` (base's, lid's), `wall`.
+def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3 mm, clearance=0.3 mm,
+             outside=true, cx=0 mm, cy=0 mm) -> assembly {
+    t = thickness
+    c = clearance
+    gap = 5 mm
+    lo = length if outside else length + 2 * t
+    wo = width if outside else width + 2 * t
+    ho = height if outside else height + 2 * t
+    ro = radius if outside else radius + t
+    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert ro >= 2 * t + c, "the radius must be at least twice the thickness"
+    assert 2 * ro <= wo and 2 * ro <= lo, "the radius is at most half the width and the length"
+    hw = ho - 2 * t                         # the wall, between the base and the lid
+    assert hw > 2 * t, "the box must be taller than four thicknesses"
+    rn = ro - t / 2                         # the wall's middle line at the corners
+    arc = pi * rn / 2
+    ls = lo - 2 * ro                        # the straight sides
+    ws = wo - 2 * ro
+    run = 2 * ls + 2 * ws + 4 * arc         # the wall's length
+    solid base {
+        plate = RoundedRectangle(center=(cx, cy), width=lo, height=wo, corner_radius=ro)
+    }
+    solid lid {
+        plate = RoundedRectangle(center=(cx + lo + gap, cy), width=lo, height=wo, corner_radius=ro)
+    }
+    base.plate.center == (cx, cy)
+    lid.plate.center == (cx + lo + gap, cy)
+    for k in range(2) {
+        ky = cy + wo / 2 + gap + (wo - 2 * t - 2 * c) / 2
+        kx = cx + k * (lo + gap)
+        solid lip {
+            plate = RoundedRectangle(center=(kx, ky), width=lo - 2 * t - 2 * c, height=wo - 2 * t - 2 * c,
+                                     corner_radius=ro - t - c)
+        }
+        lip.plate.center == (kx, ky)
+        Place(lip, position=(-kx, -ky, t if k == 0 else ho - 2 * t))
+    }
+    # the wall from mid-front round (front, right, back, left): the back's middle is the strip's
+    wx = cx - lo / 2 + run / 2
+    wy = cy - wo / 2 - gap - hw / 2
+    us = [ls / 2 + arc / 2, ls / 2 + arc + ws + arc / 2, run - ls / 2 - arc - ws - arc / 2, run - ls / 2 - arc / 2]
+    solid wall {
+        strip = Rectangle(center=(wx, wy), width=run, height=hw)
+        for u in us {
+            flex = living_hinge(width=arc, height=hw, cx=cx - lo / 2 + u, cy=wy)
+            Fixed(flex)
+        }
+    }
+    wall.strip.center == (wx, wy)
+    Place(base, position=(-cx, -cy, 0 mm))
+    Place(lid, position=(-cx - lo - gap, -cy, ho - t))
+    Place(wall, rotation=(90 deg, 0, 0), position=(-wx, wo / 2, t + hw / 2 - wy))
+}
