@@ -201,8 +201,8 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
     p = pin if pin > 0 mm else t
     lo = length - 2 * t - 2 * c if outside else length + 2 * t  # the body, between the cheeks
     wo = width if outside else width + 2 * t
-    hb = height - t if outside else height + t                   # the walls, under the lid
-    ll = lo + 2 * t + 2 * c                                      # the lid, over the cheeks
+    hb = height - t if outside else height + t  # the walls, under the lid
+    ll = lo + 2 * t + 2 * c                     # the lid, over the cheeks
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
     rh = (sqrt(p * p + t * t) + c) / 2  # the cheek's hole: round about the pin's corners
     r = rh + t / 3                      # the cheek's lobe about the pivot
@@ -404,13 +404,13 @@ def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
     assert ro >= 2 * t + c, "the radius must be at least twice the thickness"
     assert 2 * ro <= wo and 2 * ro <= lo, "the radius is at most half the width and the length"
-    hw = ho - 2 * t                         # the wall, between the base and the lid
+    hw = ho - 2 * t  # the wall, between the base and the lid
     assert hw > 2 * t, "the box must be taller than four thicknesses"
-    rn = ro - t / 2                         # the wall's middle line at the corners
+    rn = ro - t / 2  # the wall's middle line at the corners
     arc = pi * rn / 2
-    ls = lo - 2 * ro                        # the straight sides
+    ls = lo - 2 * ro  # the straight sides
     ws = wo - 2 * ro
-    run = 2 * ls + 2 * ws + 4 * arc         # the wall's length
+    run = 2 * ls + 2 * ws + 4 * arc  # the wall's length
     solid base {
         plate = RoundedRectangle(center=(cx, cy), width=lo, height=wo, corner_radius=ro)
     }
