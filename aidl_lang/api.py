@@ -407,7 +407,8 @@ class Result:
         return self.encode("svg", kerf, **options).decode()
 
     def to_png(self, kerf: float | None = None, **options) -> bytes:
-        """PNG bytes (``dpi`` default 96, or ``width`` in pixels; needs the ``png`` extra;
+        """PNG bytes (``dpi``, or ``width`` in pixels; neither: 96 dpi, the longer side at
+        most 2000 pixels; needs the ``png`` extra;
         ``kerf`` as for :meth:`encode`)."""
         return self.encode("png", kerf, **options)
 

@@ -716,7 +716,10 @@ DETAILS: dict[str, str] = {
                  "from $INSUNITS or the SVG's width/viewBox (units= overrides). layer=, "
                  "color= and id= (an SVG group or element) select what is read. Closed loops "
                  "are outlines[i] (largest first; inner loops holes), circles[i] have center "
-                 "and radius, open chains are paths[i]. A DXF's TEXT and MTEXT are engraved "
+                 "and radius, open chains are paths[i]. The drawing is one rigid body "
+                 "where its file puts it: at=(x, y) moves it by exactly that, rotation= "
+                 "turns it about the file's origin, and a constraint on it (d.bb.left == "
+                 "30, Fixed(d.origin)) moves it along what it says only. A DXF's TEXT and MTEXT are engraved "
                  "as Text in AIDL's font; other entities are skipped with W0130 (counted). "
                  "Errors: E0130 (missing or unreadable file), E0131 (an open chain where an "
                  "outline is needed, with its gap; a self-crossing loop), E0132 (an empty or "
@@ -859,8 +862,7 @@ EXAMPLES: dict[str, str] = {
     "Drawing2D": _solid("board = Drawing2D(\"std/drawings/pcb_board.dxf\", layer=\"Edge.Cuts\", "
                         "construction=true)\nbody = Offset(board.outlines[0], 3)   # the "
                         "outline + 3 mm\nfor c in board.circles {\n    hole h { p = Circle("
-                        "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}\n"
-                        "Fixed(board.origin)", "lid"),
+                        "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}", "lid"),
     "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"

@@ -194,8 +194,8 @@ _DEFS = {
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
                      A("rotation", "angle", 0.0)],
-                    doc="A .dxf/.svg file beside the program as exact curves; inner loops "
-                        "are holes.",
+                    doc="A .dxf/.svg file beside the program as exact curves, where the "
+                        "file puts it (at= moves it); inner loops are holes.",
                     members=DRAWING_MEMBERS),
     "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                    doc="Open chain of lines.",

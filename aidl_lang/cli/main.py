@@ -138,7 +138,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="PDF: tile the 1:1 template over pages of this paper size, with 10 mm "
                         "overlaps and alignment marks: A4, A3, Letter, Legal, each also "
                         "-landscape (e.g. A4-landscape); default: one page the drawing's size")
-    r.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
+    r.add_argument("--dpi", type=float, default=None,
+                   help="PNG resolution (default 96, scaled down so that the longer side is "
+                        "at most 2000 pixels; an explicit --dpi is kept as given)")
     r.add_argument("--png-width", type=int, default=None, metavar="PX",
                    help="PNG width in pixels (overrides --dpi)")
     r.add_argument("--thickness", default=None, metavar="LENGTH",

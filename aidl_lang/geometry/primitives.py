@@ -1019,16 +1019,36 @@ def _text_along(ctx, g, a) -> None:
 
 def _build_Drawing2D(ctx, g, a):
     """A drawing read by the interpreter (``a["_drawing"]``: outlines, circles, ellipses and
-    paths in mm, y up) placed rigidly at ``at`` (its origin, a starting guess) and turned by
-    the held ``rotation``.  The loops are kept exact, in the drawing's own coordinates, in
-    ``g.data`` (:mod:`.drawing2d`); circles are construction Circles whose centres are held at
-    their offsets from the origin, so ``d.circles[i].center`` can be constrained."""
+    paths in mm, y up) placed rigidly at ``at`` (its origin; default (0, 0): where its file
+    puts it) and turned by the held ``rotation``.  The loops are kept exact, in the drawing's
+    own coordinates, in ``g.data`` (:mod:`.drawing2d`); circles are construction Circles
+    whose centres are held at their offsets from the origin, so ``d.circles[i].center`` can
+    be constrained.
+
+    The origin is *held* at a constant ``at`` (a :attr:`~.model.Constraint.hold`, issue 49):
+    along every direction the program's constraints leave free it stays there, so a drawing
+    nothing places sits exactly where its file (or ``at``) puts it, pinned as one rigid body
+    (:func:`~aidl_lang.solver.system.pinned`), instead of floating with 2 freedoms that a
+    solve may shift; a constraint that places it (``d.bb.left == 30``,
+    ``Fixed(d.origin)``) takes that direction over.  A derived ``at`` (another shape's
+    point) is an equation, as for any shape."""
     from .drawing2d import local_parts
+    from .model import Constraint
     d = a["_drawing"]
     rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
     at = a.get("at")
-    o = g.points["origin"] = ctx.point(at if at is not None else PV(0.0, 0.0), "origin")
+    at_pv = at if at is not None else PV(0.0, 0.0)
+    o = g.points["origin"] = ctx.point(at_pv, "origin")
     ox, oy = ctx.value_of(var(o.ix)), ctx.value_of(var(o.iy))
+    if at_pv.obj is None and as_const(at_pv.x) is not None and as_const(at_pv.y) is not None:
+        where = "where `at` puts it" if at is not None else "where its file puts it"
+        for ax, i, v in (("x", o.ix, ox), ("y", o.iy, oy)):      # one hold per axis
+            c = Constraint("internal", ctx.struct, g.span, [Equation(var(i) - v)],
+                           text=f"Drawing2D held at {ax} = {v:g} mm, {where}", implicit=True,
+                           hold=True)
+            ctx.struct.constraints.append(c)
+            ctx.model.constraints.append(c)
+            ctx.model.holds += 1
     loops, paths, circles, outlines = local_parts(d, rot)
     g.data.update(loops=loops, paths=paths, file=a["file"], rotation=rot)
     g.closed = True

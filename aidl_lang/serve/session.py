@@ -239,6 +239,11 @@ class Session:
         solver, warm = self._solver_for(model) if keep_warm else (Solver(model), False)
         solver.deadline = interp.deadline                # the compile's one time budget
         solved = run(solver)
+        if solved.solver is not None and solved.solver is not solver:
+            # solved again with a drawing's hold released (solver.run): that solver is the one
+            solver = solved.solver
+            if keep_warm:
+                self.solver, self._row_keys = solver, None
         if solver.model is not model:                   # warm: the solver writes its own model
             model.x = list(solver.model.x)
         t["solve_ms"] = _ms(t1)

@@ -61,7 +61,28 @@ def solve(model: Model, flat: bool = False, diagnose: bool = True,
 
 
 def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResult:
-    """(Re-)run a compiled :class:`Solver` from its current point and report."""
+    """(Re-)run a compiled :class:`Solver` from its current point and report.
+
+    A failed solve of a model whose drawings are held where their files put them, next to an
+    inequality (:attr:`.system.Rows.bounded_holds`), is run once more from the start with
+    those holds released: a bound the held drawing breaks moves it, as it did before holds
+    (``Inside(logo, body)`` over a logo drawn off the plate).  The result is then the new
+    solver's (``SolveResult.solver``)."""
+    x_start = list(solver.model.x)
+    res = _run(solver, flat, diagnose)
+    bounded = solver.rows_built.bounded_holds
+    if res.converged or not bounded or res.budget_exceeded or res.out_of_time:
+        return res
+    model = solver.model
+    for c in bounded:
+        c.released = True
+    model.x = x_start
+    again = Solver(model)
+    again.deadline = solver.deadline
+    return _run(again, flat, diagnose)
+
+
+def _run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResult:
     model = solver.model
     solver.failed.clear()
     solver.trace.__init__()

@@ -381,8 +381,15 @@ def degrees_of_freedom(solver, floating: bool = True,
                 label_of[p.ix] = label_of[p.iy] = g.label
             for s in g.scalars.values():
                 label_of[s.index] = g.label
+            # a drawing's circles are the drawing (one rigid body, issue 49): named as it
+            for c in _drawing_circles(g):
+                for p in c.points.values():
+                    label_of[p.ix] = label_of[p.iy] = g.label
     axis = [-1] * len(solver.x)           # per parameter: a point's x 0, its y 1, else -1
     for g in model.all_geometry():
+        for c in _drawing_circles(g):
+            for p in c.points.values():
+                axis[p.ix], axis[p.iy] = 0, 1
         for p in g.points.values():
             axis[p.ix], axis[p.iy] = 0, 1
     systems = []                       # (structure, params, rows, cols)
@@ -427,6 +434,12 @@ def degrees_of_freedom(solver, floating: bool = True,
                 d.rank += k
         out.append(d)
     return out
+
+
+def _drawing_circles(g) -> list:
+    """The construction Circles of a ``Drawing2D`` (its ``circles[i]``; not in its
+    structure's geometry list), else none."""
+    return g.data.get("circles", ()) if g.kind == "Drawing2D" else ()
 
 
 def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,

@@ -15,7 +15,7 @@ from ..part import Output, OutputError
 @dataclass
 class Options:
     """Writer options: ``show`` debug layers (SVG/PNG), SVG ``style`` (preview | laser), PNG
-    ``dpi`` / ``width`` (pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
+    ``dpi`` / ``width`` (pixels; neither: 96 dpi, the longer side at most 2000 pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
     least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
     STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
@@ -26,7 +26,7 @@ class Options:
     to 10 mm)."""
     show: tuple = ()
     style: str = "preview"
-    dpi: float = 96.0
+    dpi: float | None = None        # None: 96 dpi, the longer side at most 2000 pixels
     width: int | None = None
     thickness: float | None = None
     margin: float | None = None
@@ -127,13 +127,13 @@ def writer_seconds(output: Output, suffix: str, options: Options | None = None) 
                 for p in output.parts) + sum(len(st.segments) for st in output.engrave)
     seconds = WRITER_START + (fmt.per_item if fmt is not None else 0.0) * items
     if suffix == ".png" and (output.parts or output.engrave):
-        from .png import MAX_AREA, MAX_SIDE
+        from .png import MAX_AREA, MAX_SIDE, pixels_per_mm
         opt = options or Options()
         x0, y0, x1, y1 = output.bounds()
         w, h = x1 - x0, y1 - y0
         m = opt.margin if opt.margin is not None else max(1.0, 0.05 * max(w, h))
         w, h = w + 2 * m, h + 2 * m
-        px = opt.width / w if opt.width else opt.dpi / 25.4          # pixels per mm
+        px = pixels_per_mm(w, h, opt.dpi, opt.width)                 # pixels per mm
         w_px, h_px = w * px, h * px
         if max(w_px, h_px) <= MAX_SIDE and w_px * h_px <= MAX_AREA:   # else refused at once
             seconds += SECONDS_PER_PIXEL * w_px * h_px

@@ -3,7 +3,12 @@
 picture of the assembled product (:func:`to_assembled_png`, painted with Pillow).
 
 ``dpi`` sets the resolution: the SVG is sized in millimetres, so 96 dpi draws 1 mm as 3.78
-pixels; ``width`` (pixels) overrides it.
+pixels; ``width`` (pixels) overrides it.  With neither, the page is drawn at
+:data:`DEFAULT_DPI` unless its longer side would pass :data:`DEFAULT_SIDE` pixels, and then
+scaled down to that side (issue 49: a drawing in metres asked for a million pixels a side):
+parts up to about half a metre keep their 96 dpi picture, a whole cutting sheet or a building
+plan fits a screen.  An explicit ``dpi`` is honoured as given (and refused past
+:data:`MAX_SIDE` / :data:`MAX_AREA`).
 """
 from __future__ import annotations
 
@@ -17,12 +22,28 @@ from .svg import to_svg
 
 MAX_SIDE = 32_767            # cairo's largest image side (pixels)
 MAX_AREA = 100_000_000       # 400 MB of RGBA at most
+DEFAULT_DPI = 96.0           # with no dpi and no width: a screen's 96 dpi ...
+DEFAULT_SIDE = 2000          # ... the longer side at most this many pixels
 
 
-def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
+def pixels_per_mm(w_mm: float, h_mm: float, dpi: float | None = None,
+                  width: int | None = None) -> float:
+    """The PNG's scale for a page of ``w_mm`` x ``h_mm``: ``width`` pixels across, else
+    ``dpi``, else :data:`DEFAULT_DPI` with the longer side held to :data:`DEFAULT_SIDE`."""
+    if width:
+        return width / w_mm
+    if dpi is not None:
+        return dpi / 25.4
+    px = DEFAULT_DPI / 25.4
+    longer = max(w_mm, h_mm)
+    return px if longer * px <= DEFAULT_SIDE else DEFAULT_SIDE / longer
+
+
+def to_png(output: Output, dpi: float | None = None, width: int | None = None, show=(),
            style: str = "preview", margin: float | None = None) -> bytes:
     """PNG bytes of ``output`` (the page of :func:`~.svg.to_svg` with ``show``, ``style`` and
-    ``margin``, mm).  Raises :class:`MissingDependency` without ``cairosvg`` and
+    ``margin``, mm) at ``dpi`` or ``width`` pixels across (neither: :func:`pixels_per_mm`'s
+    default).  Raises :class:`MissingDependency` without ``cairosvg`` and
     :class:`OutputError` for a non-positive size or an image over :data:`MAX_SIDE` a side or
     :data:`MAX_AREA` pixels."""
     try:
@@ -32,13 +53,15 @@ def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
             "PNG output needs cairosvg and the cairo library: pip install 'aidl-lang[png]' "
             f"(and apt-get install libcairo2 on Debian/Ubuntu) ({e})") from None
     svg = to_svg(output, show=show, style=style, margin=margin).encode()
-    if width is not None and width < 1 or width is None and not dpi > 0:
+    if width is not None and width < 1 or width is None and dpi is not None and not dpi > 0:
         raise OutputError(f"a PNG needs a positive {'--png-width' if width is not None else '--dpi'}")
     w_mm = re.search(rb' width="([0-9.]+)mm"', svg)
     h_mm = re.search(rb' height="([0-9.]+)mm"', svg)
     if w_mm and h_mm:
         w_mm, h_mm = float(w_mm[1]), float(h_mm[1])
-        px = width / w_mm if width else dpi / 25.4          # pixels per mm
+        px = pixels_per_mm(w_mm, h_mm, dpi, width)          # pixels per mm
+        if not width and dpi is None:
+            dpi = px * 25.4
         w_px, h_px = w_mm * px, h_mm * px
         if max(w_px, h_px) > MAX_SIDE or w_px * h_px > MAX_AREA:
             raise OutputError(
@@ -49,7 +72,7 @@ def to_png(output: Output, dpi: float = 96.0, width: int | None = None, show=(),
             # nearly white.  A raster draws it one pixel wide (the SVG and DXF keep 0.01 mm).
             svg = to_svg(output, show=show, style=style, margin=margin,
                          hairline=1.0 / px).encode()
-    kw = {"output_width": int(width)} if width else {"dpi": float(dpi)}
+    kw = {"output_width": int(width)} if width else {"dpi": float(dpi or DEFAULT_DPI)}
     return cairosvg.svg2png(bytestring=svg, background_color="white", **kw)
 
 
