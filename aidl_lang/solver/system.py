@@ -206,7 +206,9 @@ def _needed_holds(exprs, n_params, x, comp_rows, cols, hold_cols) -> list:
         J = np.zeros((0, n))
     if isinstance(J, np.ndarray):
         if J.shape[0]:
-            _, sv, Vt = np.linalg.svd(J, full_matrices=True)
+            # Vt whole (n x n) either way; U only as wide as needed (a tall J of thousands
+            # of rows would make a full U of millions of cells)
+            _, sv, Vt = np.linalg.svd(J, full_matrices=J.shape[0] < J.shape[1])
             rank = int(np.sum(sv > 1e-9 * max(1.0, float(sv[0]) if len(sv) else 1.0)))
             N = Vt[rank:].T                      # the null space's basis, n x k
         else:
