@@ -28,7 +28,7 @@ class Model:
         self.file_units: dict[str, str] = {}      # file -> its `units` (when not mm), for messages
         self.assertions: list[Assertion] = []     # `assert` statements left for after solving
         self.constants: dict = {}     # the main file's top-level names (params, constants)
-        self.holds = 0                # constraints with ``hold`` (solver.system.settle_holds)
+        self.holds = 0                # constraints with ``hold`` (solver.holds.settle_holds)
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))
@@ -227,7 +227,7 @@ class Constraint:
     text: str = ""
     implicit: bool = False         # created by a constructor, not written by the user
     # a hold (a Drawing2D's placement at its `at`): its rows are kept only along what the
-    # other constraints leave free (aidl_lang.solver.system.settle_holds)
+    # other constraints leave free (aidl_lang.solver.holds.settle_holds)
     hold: bool = False
     released: bool = False         # a hold given up after a failed solve (settle_holds)
 

@@ -34,7 +34,7 @@ from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
-from ..solver.system import build_rows
+from ..solver.holds import build_rows
 from ..sources import SourceRefused, read_program
 from ..typecheck import check
 from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params

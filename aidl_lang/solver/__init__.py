@@ -22,7 +22,8 @@ import numpy as np
 
 from ..geometry.model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
-from .system import LINK, SIGN, build_rows, user_residuals
+from .holds import build_rows
+from .system import LINK, SIGN, user_residuals
 from .tape import Tape
 
 

@@ -34,7 +34,8 @@ from ..geometry.model import Model, Structure
 from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
-from .system import LINK, SIGN, Rows, build_rows, pin_values, pinned, pinned_none
+from .holds import build_rows
+from .system import LINK, SIGN, Rows, pin_values, pinned, pinned_none
 from .reduce import reduce
 from .small import SMALL_ROWS, small_tape
 from .tape import Tape
