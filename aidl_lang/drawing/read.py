@@ -6,11 +6,15 @@ the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.cur
 full **ellipses** ``(cx, cy, rx, ry, rotation)`` and its open **paths**.  Nothing is
 approximated: a DXF ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are
 arcs), ``SPLINE`` (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics),
-``ELLIPSE`` (whole, or a partial one as an exact ``EllipticArc``); an SVG path's lines,
+``ELLIPSE`` (whole, or a partial one as an exact ``EllipticArc``), ``HATCH`` boundary paths
+(closed loops), ``INSERT``/``MINSERT`` blocks placed (every copy, under the entity budget:
+``E0304``), ASCII or binary; an SVG path's lines,
 circular and elliptical arcs, cubic and quadratic Béziers, and its
 ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline`` and ``line`` elements.  What has
-no exact form here (a rational spline, hatches, dimensions, images) is
-skipped and counted in a :class:`Note` (``W0130``); text is skipped with a note too.
+no exact form here (a rational spline, dimensions, images), a DXF entity not in the XY plane
+(extrusion neither +Z nor -Z, or points at different z) and one whose numbers give no shape
+(radius <= 0, zero length, inf, nan, beyond 1e15 mm) is skipped and counted in a
+:class:`Note` (``W0130``, DXF: by type and layer); text is skipped with a note too.
 
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
 back to its start is an outline, otherwise a path.  A loop that crosses itself, a selection
