@@ -235,12 +235,20 @@ def _probe(segs) -> tuple[float, float]:
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
     loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
-    polys = [Loop(list(segs)).points() for _, segs in loops]
+    import numpy as np
+    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops]
+    # each loop's box first: a probe is tested only against the loops whose box holds it
+    # (a MINSERT of 19 000 holes: seconds, where testing every pair took hours)
+    boxes = np.array([[P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()]
+                      if len(P) else [np.inf, np.inf, -np.inf, -np.inf] for P in polys]) \
+        if polys else np.zeros((0, 4))
     depths = []
     for i, (_, segs) in enumerate(loops):
         p = _probe(segs)
-        depths.append(sum(1 for j, P in enumerate(polys) if j != i and len(P) >= 3
-                          and _inside(p, P)))
+        cand = np.nonzero((boxes[:, 0] <= p[0]) & (p[0] <= boxes[:, 2]) &
+                          (boxes[:, 1] <= p[1]) & (p[1] <= boxes[:, 3]))[0]
+        depths.append(sum(1 for j in cand if j != i and len(polys[j]) >= 3
+                          and _inside(p, polys[j])))
     w.emit(depth, f"{kind} {name} {{")
     used: set = set()
     k = 0

@@ -577,7 +577,7 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
         if blk is not None:
             for x in blk:
                 if x.dxftype() == "INSERT":
-                    n += _copies(x) * (1 + block_size(x.dxf.name, stack + (bname,)))
+                    n += _copies(x) * max(1, block_size(x.dxf.name, stack + (bname,)))
                 else:
                     n += 1
         sizes[bname] = n
@@ -594,7 +594,7 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
                 f"INSERT{at}, through its {kind} of block `{e.dxf.name}`,")
         try:
             size = block_size(e.dxf.name, ())
-            n = _copies(e) * (1 + size)              # each copy counts, even an empty one
+            n = _copies(e) * max(1, size)            # each copy counts, even an empty one
         except _Deep as ex:
             chain = " > ".join(f"`{b}`" for b in ex.chain[:MAX_BLOCK_DEPTH + 1])
             cyc = ex.chain[-1] in ex.chain[:-1]
@@ -612,7 +612,7 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
             grid = f"an array of {rows} x {cols} copies of block `{e.dxf.name}`{each}" if arr \
                 else f"block `{e.dxf.name}`"
             raise DrawingError("E0304", f"{head} of `{name}` is {grid}: "
-                                        f"{_copies(e) * max(size, 1):,} entities in all, "
+                                        f"{n:,} entities in all, "
                                         f"more than the {MAX_ENTITIES:,} entities one drawing "
                                         f"may give",
                                "draw one copy and repeat it with a `for` loop in the program, "
