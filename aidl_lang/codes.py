@@ -130,7 +130,9 @@ Drawing2D in a `drawing` (engraving) or give it `construction=true`.
     "E0132": ("nothing selected in the drawing", """
 The layer, colour or id given to `Drawing2D` (or `aidl import --layer`) selects nothing that
 can be imported: no such layer or id (the message suggests the nearest ones), or only entities
-with no exact form here (text, hatches, dimensions).
+that were left out. For a DXF the message lists what the file (or the selection) holds, counted
+by type and layer, and why each kind was left out (not in the drawing plane, no exact form
+here, numbers that give no shape), in `Drawing2D` and `aidl import` alike.
 
     board = Drawing2D("board.dxf", layer="Edge_Cuts")   # did you mean `Edge.Cuts`?
 """),

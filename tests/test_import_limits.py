@@ -21,24 +21,27 @@ def run(*args, cwd):
                           cwd=cwd, timeout=120)
 
 
+# DXF: a number beyond the extent that a drawing can mean (a unit mix-up) is E0130; inf, nan
+# and numbers past 1e15 mm are noise, skipped and counted in a W0130 since issue 49
+# (tests/test_import_dxf.py)
 def _line(m):
-    m.add_line((0, 0), (1e300, 0))
+    m.add_line((0, 0), (5e7, 0))
 
 
 def _circle(m):
-    m.add_circle((0, 0), 1e300)
+    m.add_circle((0, 0), 3e6)
 
 
 def _lwpolyline(m):
-    m.add_lwpolyline([(0, 0), (NAN, 1), (2, 2)], close=True)
+    m.add_lwpolyline([(0, 0), (2e6, 1), (2, 2)], close=True)
 
 
 def _arc(m):
-    m.add_arc((INF, 0), 5, 0, 90)
+    m.add_arc((-4e6, 0), 5, 0, 90)
 
 
-DXFS = {"LINE": (_line, "1e+300 mm"), "CIRCLE": (_circle, "radius of 1e+300 mm"),
-        "LWPOLYLINE": (_lwpolyline, "not a number (nan)"), "ARC": (_arc, "infinite (inf)")}
+DXFS = {"LINE": (_line, "5e+07 mm"), "CIRCLE": (_circle, "radius of 3e+06 mm"),
+        "LWPOLYLINE": (_lwpolyline, "2e+06 mm"), "ARC": (_arc, "-4e+06 mm")}
 SVG = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
        'viewBox="0 0 100 100">{}</svg>')
 SVGS = {"path": ('<path id="edge" d="M 0 0 L 1e300 0 L 5 5 Z"/>', "1e+300 mm"),

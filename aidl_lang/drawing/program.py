@@ -235,12 +235,20 @@ def _probe(segs) -> tuple[float, float]:
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
     loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
-    polys = [Loop(list(segs)).points() for _, segs in loops]
+    import numpy as np
+    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops]
+    # each loop's box first: a probe is tested only against the loops whose box holds it
+    # (a MINSERT of 19 000 holes: seconds, where testing every pair took hours)
+    boxes = np.array([[P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()]
+                      if len(P) else [np.inf, np.inf, -np.inf, -np.inf] for P in polys]) \
+        if polys else np.zeros((0, 4))
     depths = []
     for i, (_, segs) in enumerate(loops):
         p = _probe(segs)
-        depths.append(sum(1 for j, P in enumerate(polys) if j != i and len(P) >= 3
-                          and _inside(p, P)))
+        cand = np.nonzero((boxes[:, 0] <= p[0]) & (p[0] <= boxes[:, 2]) &
+                          (boxes[:, 1] <= p[1]) & (p[1] <= boxes[:, 3]))[0]
+        depths.append(sum(1 for j in cand if j != i and len(polys[j]) >= 3
+                          and _inside(p, polys[j])))
     w.emit(depth, f"{kind} {name} {{")
     used: set = set()
     k = 0
@@ -255,8 +263,15 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             islands.append((segs, k))
     for cx, cy, rx, ry, rot in d.ellipses:
         k += 1
-        w.emit(depth + 1, f"e{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
-                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+        shape = (f"Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, ry={_num(ry)}, "
+                 f"rotation={_num(math.degrees(rot))} deg)")
+        inside = sum(1 for P in polys if len(P) >= 3 and _inside((cx, cy), P))
+        if kind != "drawing" and inside % 2 == 1:      # an island in an outline: a hole
+            w.emit(depth + 1, f"hole {_ident(f'hole{k}', used)} {{")
+            w.emit(depth + 2, f"e = {shape}")
+            w.emit(depth + 1, "}")
+        else:
+            w.emit(depth + 1, f"e{k} = {shape}")
     if d.texts:
         inner = depth + 1 if kind == "drawing" else depth + 2
         if kind != "drawing":
@@ -325,20 +340,35 @@ def to_program(layers: list[tuple[str, Drawing]], source: str) -> tuple[str, lis
 
 
 def layer_names(data: bytes, name: str) -> list[str]:
-    """The DXF layers that hold entities, in the order they first appear; ``[""]`` for SVG."""
+    """The DXF layers that hold entities, in the order they first appear (an entity in a
+    block on layer ``0`` is on its INSERT's layer, as CAD programs draw it); ``[""]`` for
+    SVG."""
     if not name.lower().endswith(".dxf"):
         return [""]
-    import io
-    from ezdxf import recover
+    from .read import DrawingError, MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf
     try:
-        doc, _ = recover.read(io.BytesIO(data))
-    except Exception:
+        with _EzdxfLog():            # its log lines: a note of the read, not the terminal
+            doc = _open_dxf(data, name)
+    except DrawingError:
         return [""]
     seen: list[str] = []
-    for e in doc.modelspace():
-        ly = e.dxf.get("layer", "0")
-        if ly not in seen:
-            seen.append(ly)
+    done: set = set()
+
+    def walk(entities, inherited, depth) -> None:
+        for e in entities:
+            ly = e.dxf.get("layer", "0")
+            if ly == "0" and inherited is not None:
+                ly = inherited
+            if e.dxftype() == "INSERT":
+                key = (e.dxf.name, ly)
+                blk = doc.blocks.get(e.dxf.name)
+                if blk is not None and key not in done and depth < MAX_BLOCK_DEPTH:
+                    done.add(key)
+                    walk(blk, ly, depth + 1)
+                continue
+            if ly not in seen:
+                seen.append(ly)
+    walk(doc.modelspace(), None, 0)
     return seen or [""]
 
 
@@ -355,11 +385,14 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
             d = read_drawing(data, name, layer=ly or None, color=color, ident=ident, unit=unit,
                              keep_text=True)
         except DrawingError as ex:
-            if ex.code == "E0132" and layer is None and len(layers) > 1:
-                continue        # a layer of only skipped entities
+            if ex.code == "E0132" and layer is None:
+                continue        # a layer of only skipped entities (none at all: below)
             raise
         # text is written as Text engravings here (Drawing2D skips it with this note)
-        notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)]
+        notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)
+                  and all(n.message != m.message for m in notes)]     # once, not per layer
         read.append((ly if isinstance(ly, str) else "_".join(ly), d))
+    if not read:        # every layer empty: the whole drawing's E0132, as Drawing2D gives it
+        read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True)
     text, more = to_program(read, name.replace("\\", "/").rsplit("/", 1)[-1])
     return text, notes + more

@@ -6,11 +6,15 @@ the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.cur
 full **ellipses** ``(cx, cy, rx, ry, rotation)`` and its open **paths**.  Nothing is
 approximated: a DXF ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are
 arcs), ``SPLINE`` (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics),
-``ELLIPSE`` (whole, or a partial one as an exact ``EllipticArc``); an SVG path's lines,
+``ELLIPSE`` (whole, or a partial one as an exact ``EllipticArc``), ``HATCH`` boundary paths
+(closed loops), ``INSERT``/``MINSERT`` blocks placed (every copy, under the entity budget:
+``E0304``), ASCII or binary; an SVG path's lines,
 circular and elliptical arcs, cubic and quadratic Béziers, and its
 ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline`` and ``line`` elements.  What has
-no exact form here (a rational spline, hatches, dimensions, images) is
-skipped and counted in a :class:`Note` (``W0130``); text is skipped with a note too.
+no exact form here (a rational spline, dimensions, images), a DXF entity not in the XY plane
+(extrusion neither +Z nor -Z, or points at different z) and one whose numbers give no shape
+(radius <= 0, zero length, inf, nan, beyond 1e15 mm) is skipped and counted in a
+:class:`Note` (``W0130``, DXF: by type and layer); text is skipped with a note too.
 
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
 back to its start is an outline, otherwise a path.  A loop that crosses itself, a selection
@@ -194,6 +198,9 @@ class Drawing:
     # DXF TEXT and MTEXT lines (skipped by Drawing2D with a note; `aidl import` writes them
     # as Text engravings): (text, (x, y) mm, height mm, rotation radians, anchor, valign)
     texts: list = field(default_factory=list)
+    # DXF: what the file holds (counts by type and layer) and why each kind was left out,
+    # for the message of an import that gives nothing
+    seen: str = ""
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
@@ -399,16 +406,97 @@ def open_gaps(d: Drawing) -> list[tuple[float, tuple[float, float]]]:
 _SKIP_QUIET = {"POINT", "VIEWPORT", "ATTDEF", "ATTRIB", "SEQEND", "VERTEX"}
 
 
-def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing:
-    import ezdxf
-    from ezdxf import recover
+MAX_BLOCK_DEPTH = 16     # blocks inside blocks (INSERT in a block definition), as templates
+GARBAGE = 1e15           # mm: a number past this (or inf, nan) is noise: the entity is skipped
+FLAT_TOL = 1e-9          # mm: z values this close lie in one plane parallel to XY
+
+
+class _EzdxfLog:
+    """ezdxf's own log lines (``Found non-unique entity handle #C, ...``) while a drawing is
+    read: kept in ``lines`` for a ``W0130`` note instead of reaching the terminal."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+
+    def __enter__(self):
+        import logging
+
+        class H(logging.Handler):
+            def emit(h, record) -> None:
+                try:
+                    msg = record.getMessage()
+                except Exception:
+                    msg = str(record.msg)
+                if len(self.lines) < 1000:
+                    self.lines.append(msg)
+        self.log = logging.getLogger("ezdxf")
+        self.handler = H(logging.WARNING)         # its INFO lines were never shown
+        self.saved = self.log.propagate
+        self.log.addHandler(self.handler)
+        self.log.propagate = False
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.log.removeHandler(self.handler)
+        self.log.propagate = self.saved
+
+
+def _open_dxf(data: bytes, name: str):
+    """The ezdxf document of the DXF ``data`` (ASCII or binary, read from these bytes: the
+    file is opened once): ezdxf's normal loader, its recover mode when that fails.  Raises
+    :class:`DrawingError` ``E0130``."""
+    doc = _fast_dxf(data)
+    if doc is not None:
+        return doc
     try:
-        doc = _fast_dxf(data)
-        if doc is None:              # binary, or damaged: ezdxf's recover mode (slower)
-            doc, _aud = recover.read(io.BytesIO(data))
+        if data.startswith(b"AutoCAD Binary DXF"):
+            from ezdxf.document import Drawing as _Doc
+            from ezdxf.lldxf.tagger import binary_tags_loader
+            return _Doc.load(binary_tags_loader(data, errors="surrogateescape"))
+        from ezdxf import recover
+        return recover.read(io.BytesIO(data))[0]      # damaged: recover mode (slower)
     except Exception as ex:          # ezdxf raises DXFStructureError and others on garbage
         raise DrawingError("E0130", f"`{name}` is not a readable DXF file ({type(ex).__name__})",
                            "export it again as DXF R12 or later (ASCII or binary)") from None
+
+
+def _plural(n: int, word: str) -> str:
+    """``1 entity``, ``2 entities``, ``3 HATCH boundaries``."""
+    if n == 1:
+        return f"{n} {word}"
+    return f"{n} {word[:-1]}ies" if word.endswith("y") else f"{n} {word}s"
+
+
+def _layers_text(by_layer: dict) -> str:
+    """``layer `0``` or ``layers `A` (20), `B` (10)``."""
+    items = sorted(by_layer.items(), key=lambda kv: (-kv[1], kv[0]))
+    if len(items) == 1:
+        return f"layer `{items[0][0]}`"
+    shown = ", ".join(f"`{ly}` ({n})" for ly, n in items[:6])
+    return f"layers {shown}" + (f" and {len(items) - 6} more" if len(items) > 6 else "")
+
+
+_REASON_HINT = {
+    "plane": "turn the drawing into the XY plane (the world UCS) in the drawing program, "
+             "or select other layers",
+    "number": "fix the entity in the drawing program (it has no size or a broken number)",
+    "width": "widths are not cut: draw a wide line as an outline if it is one",
+    "text": "write the text with Text(...) in a `drawing`",
+    "z": "the drawing is read in the XY plane: z only places it in 3D",
+    "exact": "convert it to lines, arcs or splines in the drawing program, or select other "
+             "layers",
+    "hatch": "",
+}
+
+
+def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing:
+    with _EzdxfLog() as log:
+        d = _read_dxf_doc(data, name, layer, color, unit, log)
+    return d
+
+
+def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -> Drawing:
+    doc = _open_dxf(data, name)
     notes: list[Note] = []
     if unit is None:
         code = int(doc.header.get("$INSUNITS", 0) or 0)
@@ -440,15 +528,27 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                                ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
                                if sugg else "layers: " + ", ".join(
                                    sorted(ly.dxf.name for ly in doc.layers))[:300])
-    pieces, loops, circles, ellipses = [], [], [], []
-    skipped: dict[str, int] = {}
+    pieces, loops, circles, ellipses, texts = [], [], [], [], []
+    hatch_circles: list = []
+    # (kind, reason, reason class) -> {layer: count}; what was seen: (type, layer) -> count
+    skipped: dict = {}
+    seen: dict = {}
+    widths: dict = {}
+    zs: dict = {}                    # entity type -> [z, ...] of entities read at z != 0
     count = 0
+    cur_layer = ["0"]
+
+    def skip(kind: str, reason: str, cls: str) -> None:
+        by = skipped.setdefault((kind, reason, cls), {})
+        by[cur_layer[0]] = by.get(cur_layer[0], 0) + 1
 
     def P(v):
         return (_mm(float(v[0]) * scale), _mm(float(v[1]) * scale))
 
-    def aci(e) -> int:
+    def aci(e, inherited) -> int:
         c = e.dxf.get("color", 256)
+        if c == 0 and inherited is not None:          # BYBLOCK: the insert's colour
+            return inherited
         if c == 256:
             try:
                 c = doc.layers.get(e.dxf.layer).dxf.color
@@ -456,7 +556,88 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                 c = 7
         return abs(int(c))
 
-    def walk(entities, depth: int, insert=None) -> None:
+    def where(e) -> tuple[str, int | None]:
+        handle = e.dxf.get("handle", None)
+        line = _dxf_line(data, handle)
+        return ", ".join(x for x in (f"handle {handle}" if handle else "",
+                                     f"line {line}" if line else "") if x), line
+
+    sizes: dict = {}
+
+    def block_size(bname: str, stack: tuple) -> int:
+        """The entities block ``bname`` expands to, its nested blocks and arrays included
+        (each copy counted); a block that inserts itself or nests past MAX_BLOCK_DEPTH
+        raises _Deep."""
+        if bname in sizes:
+            return sizes[bname]
+        if bname in stack or len(stack) >= MAX_BLOCK_DEPTH:
+            raise _Deep(stack + (bname,))
+        blk = doc.blocks.get(bname)
+        n = 0
+        if blk is not None:
+            for x in blk:
+                if x.dxftype() == "INSERT":
+                    n += _copies(x) * max(1, block_size(x.dxf.name, stack + (bname,)))
+                else:
+                    n += 1
+        sizes[bname] = n
+        return n
+
+    def expand(e, depth: int, top, eff_layer: str, eff_color) -> None:
+        nonlocal count
+        rows, cols = int(e.dxf.get("row_count", 1) or 1), int(e.dxf.get("column_count", 1) or 1)
+        arr = rows * cols > 1
+        label_top, line = where(top)
+        kind = "MINSERT" if arr else "INSERT"
+        at = f" ({label_top})" if label_top else ""
+        head = (f"{kind}{at}" if top is e else
+                f"INSERT{at}, through its {kind} of block `{e.dxf.name}`,")
+        try:
+            size = block_size(e.dxf.name, ())
+            n = _copies(e) * max(1, size)            # each copy counts, even an empty one
+        except _Deep as ex:
+            chain = " > ".join(f"`{b}`" for b in ex.chain[:MAX_BLOCK_DEPTH + 1])
+            cyc = ex.chain[-1] in ex.chain[:-1]
+            raise DrawingError("E0304", f"{head} of `{name}` " + (
+                f"places block `{ex.chain[-1]}`, which inserts itself ({chain}): it never ends"
+                if cyc else f"nests blocks more than {MAX_BLOCK_DEPTH} deep ({chain})"),
+                "remove the INSERT of the block from its own definition" if cyc else
+                "explode some of the blocks in the drawing program", line) from None
+        if depth + 1 > MAX_BLOCK_DEPTH:
+            raise DrawingError("E0304", f"{head} of `{name}` nests blocks more than "
+                                        f"{MAX_BLOCK_DEPTH} deep", "explode some of the blocks "
+                                                                   "in the drawing program", line)
+        if count + n > MAX_ENTITIES:
+            each = f" ({_plural(size, 'entity')} each)"
+            grid = f"an array of {rows} x {cols} copies of block `{e.dxf.name}`{each}" if arr \
+                else f"block `{e.dxf.name}`"
+            raise DrawingError("E0304", f"{head} of `{name}` is {grid}: "
+                                        f"{n:,} entities in all, "
+                                        f"more than the {MAX_ENTITIES:,} entities one drawing "
+                                        f"may give",
+                               "draw one copy and repeat it with a `for` loop in the program, "
+                               "or select other layers", line)
+        if rows * cols > 1:
+            inserts = list(e.multi_insert())
+            count += rows * cols - len(inserts)          # copies at one place: counted
+        else:
+            inserts = [e]
+
+        def cb(x, reason) -> None:
+            skip(x.dxftype(), f"cannot be placed by its INSERT ({reason})", "exact")
+        for ins in inserts:
+            try:
+                ents = list(ins.virtual_entities(skipped_entity_callback=cb))
+            except DrawingError:
+                raise
+            except Exception as ex:
+                cur_layer[0] = eff_layer
+                skip(kind, f"its block `{e.dxf.name}` cannot be placed ({type(ex).__name__})",
+                     "exact")
+                continue
+            walk(ents, depth + 1, top, eff_layer, eff_color)
+
+    def walk(entities, depth: int, top=None, inh_layer=None, inh_color=None) -> None:
         nonlocal count
         for e in entities:
             count += 1
@@ -464,83 +645,136 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                 raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} entities",
                                    "select fewer with layer= or split the drawing")
             t = e.dxftype()
-            if t == "INSERT" and depth < 8:
-                try:
-                    walk(list(e.virtual_entities()), depth + 1, insert or e)
-                except DrawingError:         # a number out of range in the block: not skipped
-                    raise
-                except Exception:
-                    skipped["INSERT"] = skipped.get("INSERT", 0) + 1
+            ly = e.dxf.get("layer", "0")
+            if ly == "0" and inh_layer is not None:         # layer 0 in a block: the insert's
+                ly = inh_layer
+            if t == "INSERT":
+                expand(e, depth, top or e, ly, aci(e, inh_color))
                 continue
-            if layers is not None and e.dxf.get("layer", "0").lower() not in layers:
+            if layers is not None and ly.lower() not in layers:
                 continue
-            if colors is not None and aci(e) not in colors:
+            if colors is not None and aci(e, inh_color) not in colors:
                 continue
-            made = (len(pieces), len(loops), len(circles), len(ellipses), len(texts))
+            if t in _SKIP_QUIET:
+                continue
+            cur_layer[0] = ly
+            seen[(t, ly)] = seen.get((t, ly), 0) + 1
+            made = (len(pieces), len(loops), len(circles), len(ellipses), len(texts),
+                    len(hatch_circles))
             try:
                 one(e, t)
                 _check_made(pieces[made[0]:] + [seg for seg, _ in loops[made[1]:]]
-                            + circles[made[2]:] + ellipses[made[3]:] + texts[made[4]:])
+                            + circles[made[2]:] + ellipses[made[3]:] + texts[made[4]:]
+                            + hatch_circles[made[5]:])
             except _Skip as s:
-                skipped[s.what] = skipped.get(s.what, 0) + 1
+                skip(s.kind or t, s.what, s.cls)
             except _OutOfRange as ex:
-                top = insert or e
-                handle = top.dxf.get("handle", None)
-                line = _dxf_line(data, handle)
-                where = ", ".join(x for x in (f"handle {handle}" if handle else "",
-                                              f"line {line}" if line else "") if x)
-                label = t + (f" (in the block of INSERT {where})" if insert is not None and where
-                             else f" ({where})" if where else "")
+                del pieces[made[0]:], loops[made[1]:], circles[made[2]:]
+                del ellipses[made[3]:], texts[made[4]:], hatch_circles[made[5]:]
+                v = ex.value
+                if not math.isfinite(v) or abs(v) > GARBAGE:
+                    skip(t, f"{ex.what} that is " + ("not a number" if v != v else "infinite"
+                                                      if math.isinf(v) else
+                                                      f"beyond {GARBAGE:g} mm"), "number")
+                    continue
+                w, line = where(top or e)
+                label = t + (f" (in the block of INSERT {w})" if top is not None and w
+                             else f" ({w})" if w else "")
                 raise _range_error(ex, label, name, line) from None
 
+    def ocs_z(e, t: str) -> bool:
+        """Whether the OCS entity ``e`` lies in the drawing plane (extrusion +Z or -Z), True
+        for -Z (its OCS x axis is the world's -x: ezdxf's arbitrary axis algorithm); else
+        raises _Skip."""
+        ext = tuple(float(v) for v in e.dxf.get("extrusion", (0, 0, 1))) \
+            if e.dxf.hasattr("extrusion") else (0.0, 0.0, 1.0)
+        if not all(math.isfinite(v) for v in ext):
+            raise _Skip("an extrusion that is not a number", cls="number")
+        n = math.sqrt(sum(v * v for v in ext))
+        if n == 0 or abs(ext[0]) > 1e-12 * n or abs(ext[1]) > 1e-12 * n:
+            raise _Skip("not in the drawing plane: the extrusion (normal) is not +Z or -Z "
+                        "(drawn in a tilted UCS)", cls="plane")
+        return ext[2] < 0
+
+    def at_z(t: str, z: float, flip: bool = False) -> None:
+        z = float(z) * scale * (-1.0 if flip else 1.0)
+        if not math.isfinite(z) or abs(z) > GARBAGE:
+            raise _OutOfRange("a z coordinate", z)
+        if abs(z) > FLAT_TOL:
+            zs.setdefault(t, []).append(z)
+
+    def flat(t: str, vs) -> None:
+        """WCS points ``vs`` must share one z (a plane parallel to XY)."""
+        z = [float(v[2]) * scale for v in vs]
+        if not z:
+            return
+        for v in z:
+            if not math.isfinite(v) or abs(v) > GARBAGE:
+                raise _OutOfRange("a z coordinate", v)
+        if max(z) - min(z) > FLAT_TOL:
+            raise _Skip("not in the drawing plane: its points lie at different z",
+                        cls="plane")
+        at_z(t, z[0] / scale)
+
+    def polyline(t, vs, closed) -> list | None:
+        """The segments of ``vs`` ((x, y) mm, bulge), or None (all at one point)."""
+        segs = []
+        n = len(vs)
+        for i in range(n if closed else n - 1):
+            (p, b), (q, _) = vs[i], vs[(i + 1) % n]
+            if math.dist(p, q) <= 1e-12:
+                continue
+            segs.append(_bulge_arc(p, q, b))
+        return segs or None
+
     def one(e, t) -> None:
-        ext = tuple(e.dxf.get("extrusion", (0, 0, 1))) if e.dxf.hasattr("extrusion") else (0, 0, 1)
-        if abs(ext[0]) > 1e-12 or abs(ext[1]) > 1e-12:
-            raise _Skip(t + " (not in the XY plane)")
-        flip = ext[2] < 0
         if t == "LINE":
-            pieces.append([Line(P(e.dxf.start), P(e.dxf.end))])
-        elif t == "CIRCLE":
+            flat(t, (e.dxf.start, e.dxf.end))
+            a, b = P(e.dxf.start), P(e.dxf.end)
+            if math.dist(a, b) <= 1e-12:
+                raise _Skip("zero length", cls="number")
+            pieces.append([Line(a, b)])
+        elif t in ("CIRCLE", "ARC"):
+            flip = ocs_z(e, t)
             c = P(e.dxf.center)
-            circles.append(Circle((-c[0], c[1]) if flip else c,
-                                  _mm(float(e.dxf.radius) * scale, "a radius")))
-        elif t == "ARC":
-            c = P(e.dxf.center)
+            at_z(t, e.dxf.center[2], flip)
             r = _mm(float(e.dxf.radius) * scale, "a radius")
+            if r <= 0:
+                raise _Skip("a radius not above 0", cls="number")
+            if flip:
+                c = (-c[0], c[1])
+            if t == "CIRCLE":
+                circles.append(Circle(c, r))
+                return
             a1 = math.radians(_finite(e.dxf.start_angle, "an angle"))
             a2 = math.radians(_finite(e.dxf.end_angle, "an angle"))
             sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
-            if flip:
-                c = (-c[0], c[1])
-                pieces.append([Arc(c, r, math.pi - a1, -sweep)])
+            pieces.append([Arc(c, r, math.pi - a1, -sweep) if flip else Arc(c, r, a1, sweep)])
+        elif t == "LWPOLYLINE":
+            flip = ocs_z(e, t)
+            at_z(t, e.dxf.get("elevation", 0.0), flip)
+            vs = [(P((x, y)), _finite(b, "a bulge")) for x, y, b in e.get_points("xyb")]
+            if e.has_width:
+                widths[(t, cur_layer[0])] = widths.get((t, cur_layer[0]), 0) + 1
+            add_poly(t, vs, e.closed, flip)
+        elif t == "POLYLINE":
+            if e.is_polygon_mesh or e.is_poly_face_mesh:
+                raise _Skip("a mesh (3D faces): no outline here", cls="exact")
+            if e.is_3d_polyline:         # world coordinates, no bulges
+                locs = [v.dxf.location for v in e.vertices]
+                flat(t, locs)
+                vs = [(P(v), 0.0) for v in locs]
+                flip = False
             else:
-                pieces.append([Arc(c, r, a1, sweep)])
-        elif t in ("LWPOLYLINE", "POLYLINE"):
-            if t == "POLYLINE" and not e.is_2d_polyline:
-                raise _Skip("POLYLINE (3D or mesh)")
-            if t == "LWPOLYLINE":
-                vs = [(P((x, y)), _finite(b, "a bulge")) for x, y, b in e.get_points("xyb")]
-                closed = e.closed
-            else:
+                flip = ocs_z(e, t)
+                at_z(t, e.dxf.get("elevation", (0, 0, 0))[2], flip)
                 vs = [(P(v.dxf.location), _finite(v.dxf.get("bulge", 0.0), "a bulge"))
                       for v in e.vertices]
-                closed = e.is_closed
-            if flip:
-                vs = [((-p[0], p[1]), -b) for p, b in vs]
-            segs = []
-            n = len(vs)
-            for i in range(n if closed else n - 1):
-                (p, b), (q, _) = vs[i], vs[(i + 1) % n]
-                if math.dist(p, q) <= 1e-12:
-                    continue
-                segs.append(_bulge_arc(p, q, b))
-            if not segs:
-                return
-            if closed or math.dist(segs[0].start, segs[-1].end) <= JOIN_TOL:
-                loops.append((segs, t))
-            else:
-                pieces.append(segs)
+                if e.has_width:
+                    widths[(t, cur_layer[0])] = widths.get((t, cur_layer[0]), 0) + 1
+            add_poly(t, vs, e.is_closed, flip)
         elif t == "SPLINE":
+            flat(t, list(e.control_points) or list(e.fit_points))
             for v in e.control_points:       # before ezdxf's tools compute with them
                 P(v)
             for k in (*e.knots, *e.weights):
@@ -550,6 +784,11 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             # center and major axis are in world coordinates (not the OCS of ARC and
             # CIRCLE); the extrusion only turns the parameter: the minor axis is
             # extrusion x major axis, so an extrusion down runs the parameter clockwise
+            flip = ocs_z(e, t)
+            if abs(float(e.dxf.major_axis[2]) * scale) > FLAT_TOL:
+                raise _Skip("not in the drawing plane: its major axis leaves the XY plane",
+                            cls="plane")
+            at_z(t, e.dxf.center[2])
             s0 = _finite(e.dxf.start_param, "an angle")
             s1 = _finite(e.dxf.end_param, "an angle")
             c = P(e.dxf.center)
@@ -558,6 +797,8 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
             rx = _mm(math.hypot(mx, my), "a semi-axis")
             ratio = _finite(e.dxf.ratio, "an axis ratio")
             ry = _mm(rx * ratio, "a semi-axis")
+            if rx <= 0 or ry <= 0:
+                raise _Skip("a semi-axis not above 0", cls="number")
             rot = math.atan2(my, mx)
             sweep = (s1 - s0) % (2 * math.pi)
             if sweep < 1e-9 or sweep > 2 * math.pi - 1e-9:
@@ -570,20 +811,196 @@ def _read_dxf(data: bytes, name: str, layer, color, unit: str | None) -> Drawing
                 return (c[0] + mx * cs + nx * sn, c[1] + my * cs + ny * sn)
             pieces.append([elliptic_arc(c, rx, ry, rot, at(s0), at(s0 + sweep / 2),
                                         at(s0 + sweep))])
+        elif t == "HATCH":
+            hatch(e)
         elif t in ("TEXT", "MTEXT"):
-            if flip:                        # mirrored text: not read
-                raise _Skip(t + " (mirrored: extrusion down)")
+            if t == "TEXT" or e.dxf.hasattr("extrusion"):
+                if ocs_z(e, t):                  # mirrored text: not read
+                    raise _Skip("mirrored (extrusion down): not read", cls="text")
             texts.extend(_dxf_text(e, t, P, scale))
-        elif t in _SKIP_QUIET:
-            return
         else:
-            raise _Skip(t)
+            raise _Skip("no exact form here", cls="exact")
 
-    texts: list = []
+    def add_poly(t, vs, closed, flip) -> None:
+        if flip:
+            vs = [((-p[0], p[1]), -b) for p, b in vs]
+        segs = polyline(t, vs, closed)
+        if segs is None:
+            raise _Skip("zero length (all its vertices at one point)", cls="number")
+        if closed or math.dist(segs[0].start, segs[-1].end) <= JOIN_TOL:
+            loops.append((segs, t))
+        else:
+            pieces.append(segs)
+
+    def hatch(e) -> None:
+        """A HATCH's boundary paths (polyline paths with bulges; edge paths of lines, arcs,
+        ellipses and splines), each a closed loop: an island is a loop inside another, so it
+        becomes a hole as any inner loop does."""
+        ocs_z(e, "HATCH")
+        l0 = len(loops)
+        for path in _hatch_paths(e):
+            n0 = len(pieces)
+            for x in path:
+                xt = x.dxftype()
+                if xt == "ARC" and len(path) == 1 and \
+                        (float(x.dxf.end_angle) - float(x.dxf.start_angle)) % 360.0 == 0.0:
+                    flip = ocs_z(x, xt)                  # a full-circle edge: a circle
+                    c = P(x.dxf.center)
+                    r = _mm(float(x.dxf.radius) * scale, "a radius")
+                    if r <= 0:
+                        raise _Skip("a boundary radius not above 0", cls="number")
+                    hatch_circles.append(Circle((-c[0], c[1]) if flip else c, r))
+                    continue
+                try:
+                    one(x, xt)
+                except _Skip as s:
+                    raise _Skip(f"a boundary {xt}: {s.what}", cls=s.cls) from None
+            mine = pieces[n0:]
+            del pieces[n0:]
+            closed, open_ = _chain(mine)
+            loops.extend((c, "HATCH") for c in closed)
+            pieces.extend(open_)
+        loops[l0:] = [(segs, "HATCH") for segs, _ in loops[l0:]]
+
+    texts_ref = texts
     walk(list(msp), 0)
-    _skip_notes(skipped, notes, name)
+    return _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts_ref, notes,
+                       skipped, seen, widths, zs, log, unit, name)
+
+
+def _hatch_paths(e) -> list:
+    """The boundary paths of HATCH ``e`` as virtual entities, one list a path: a polyline
+    path an LWPOLYLINE (with its bulges), an edge path its LINE, ARC, ELLIPSE and SPLINE
+    edges, in the hatch's plane (ezdxf's ``virtual_boundary_path_entities``, whose polyline
+    paths fail in ezdxf 1.4)."""
+    from ezdxf.entities import LWPolyline
+    from ezdxf.entities.boundary_paths import EdgePath, PolylinePath
+    from ezdxf.explode import _virtual_edge_path
+    attribs = {"layer": e.dxf.get("layer", "0")}
+    elevation = float(e.dxf.elevation.z)
+    ocs = e.ocs()
+    out = []
+    for path in e.paths:
+        if isinstance(path, PolylinePath):
+            p = LWPolyline.new(dxfattribs=dict(attribs))
+            p.append_points(path.vertices, format="xyb")
+            p.dxf.extrusion = ocs.uz
+            p.dxf.elevation = elevation
+            p.closed = path.is_closed
+            out.append([p])
+        elif isinstance(path, EdgePath):
+            out.append(_virtual_edge_path(path, dict(attribs), ocs, elevation))
+    return out
+
+
+class _Deep(Exception):
+    def __init__(self, chain: tuple) -> None:
+        self.chain = chain
+
+
+def _copies(e) -> int:
+    """The copies an INSERT places: rows x columns of a MINSERT, else 1."""
+    try:
+        return max(1, int(e.dxf.get("row_count", 1) or 1)) * \
+            max(1, int(e.dxf.get("column_count", 1) or 1))
+    except (TypeError, ValueError):
+        return 1
+
+
+def _loop_key(segs) -> tuple:
+    """A loop's segments as a set of rounded starts and kinds (the same loop whatever its
+    direction and first segment)."""
+    from ..geometry.curves import reverse
+    a = sorted((type(s).__name__, round(s.start[0], 6), round(s.start[1], 6),
+                round(s.end[0], 6), round(s.end[1], 6)) for s in segs)
+    b = sorted((type(s).__name__, round(r.start[0], 6), round(r.start[1], 6),
+                round(r.end[0], 6), round(r.end[1], 6)) for s in segs for r in [reverse(s)])
+    return tuple(min(a, b))
+
+
+def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, skipped, seen,
+                widths, zs, log, unit, name) -> Drawing:
+    """The drawing of what was read, a HATCH boundary that repeats an outline drawn by other
+    entities read once, and the notes: skipped entities by kind, reason and layer (numbers
+    that are no size in one note), widths ignored, z left out, ezdxf's own log lines."""
     d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    drawn = {_loop_key(o.segments) for o in d.outlines if o.source != "HATCH"}
+    keep, dup = [], 0
+    for o in d.outlines:
+        if o.source == "HATCH":
+            k = _loop_key(o.segments)
+            if k in drawn:
+                dup += 1
+                continue
+            drawn.add(k)
+        keep.append(o)
+    d.outlines = keep
+    have = {(round(c.center[0], 6), round(c.center[1], 6), round(c.radius, 6)) for c in d.circles}
+    for c in hatch_circles:
+        k = (round(c.center[0], 6), round(c.center[1], 6), round(c.radius, 6))
+        if k in have:
+            dup += 1
+            continue
+        have.add(k)
+        d.circles.append(Circle(c.center, c.radius))
+    d.circles.sort(key=lambda c: (-c.radius, c.center[0], c.center[1]))
     d.texts = texts
+    if dup:
+        notes.append(Note("W0130", f"{_plural(dup, 'HATCH boundary')} of `{name}` "
+                                   f"repeat{'s' if dup == 1 else ''} an outline drawn by other "
+                                   "entities: read once", ""))
+    bad = []
+    for (kind, reason, cls), by in sorted(skipped.items()):
+        n = sum(by.values())
+        if cls == "number":
+            bad.append((n, kind, reason, by))
+            continue
+        word = "entity" if n == 1 else "entities"
+        notes.append(Note("W0130", f"{n} {kind} {word} of `{name}` skipped ({_layers_text(by)})"
+                                   f": {reason}", _REASON_HINT.get(cls, "")))
+    if bad:
+        total = sum(b[0] for b in bad)
+        parts = "; ".join(f"{n} {kind} with {reason} ({_layers_text(by)})"
+                          if not reason.startswith(("zero", "a boundary")) else
+                          f"{n} {kind} of {reason} ({_layers_text(by)})"
+                          for n, kind, reason, by in bad)
+        notes.append(Note("W0130", f"{total} {'entity' if total == 1 else 'entities'} of "
+                                   f"`{name}` skipped for numbers that give no shape: {parts}",
+                          _REASON_HINT["number"]))
+    if widths:
+        n = sum(widths.values())
+        by: dict = {}
+        kinds = sorted({k for k, _ in widths})
+        for (k, ly), m in widths.items():
+            by[ly] = by.get(ly, 0) + m
+        notes.append(Note("W0130", f"{n} {'/'.join(kinds)} {'entity' if n == 1 else 'entities'}"
+                                   f" of `{name}` ({_layers_text(by)}) {'has' if n == 1 else 'have'} widths: read as "
+                                   "their centre lines, the widths ignored",
+                          _REASON_HINT["width"]))
+    if zs:
+        allz = [z for v in zs.values() for z in v]
+        rng = f"z = {allz[0]:g}" if max(allz) - min(allz) <= FLAT_TOL else \
+            f"z from {min(allz):g} to {max(allz):g}"
+        kinds = ", ".join(f"{len(v)} {k}" for k, v in sorted(zs.items()))
+        notes.append(Note("W0130", f"{len(allz)} {'entity' if len(allz) == 1 else 'entities'}"
+                                   f" of `{name}` ({kinds}) {'lies' if len(allz) == 1 else 'lie'} off the XY plane ({rng} mm): "
+                                   "read in the XY plane", _REASON_HINT["z"]))
+    if log.lines:
+        first = log.lines[0].strip()
+        more = f" (and {len(log.lines) - 1} more)" if len(log.lines) > 1 else ""
+        notes.append(Note("W0130", f"ezdxf, reading `{name}`, said: \"{first}\"{more}",
+                          "the file was read as ezdxf repaired it: check the import, or save "
+                          "the drawing again from its program"))
+    # what was seen and why each kind was left out: the message of an empty import
+    kinds: dict = {}
+    for (t, ly), n in seen.items():
+        kinds.setdefault(t, {})[ly] = n
+    held = ", ".join(f"{sum(by.values())} {t} ({_layers_text(by)})"
+                     for t, by in sorted(kinds.items()))
+    why = "; ".join(f"{sum(by.values())} {kind}: {reason}"
+                    for (kind, reason, _c), by in sorted(skipped.items()))
+    d.seen = (f"it holds {held}" if held else "it holds no drawable entities") + \
+        (f", left out: {why}" if why else "")
     return d
 
 
@@ -648,8 +1065,12 @@ def _fast_dxf(data: bytes):
 
 
 class _Skip(Exception):
-    def __init__(self, what: str) -> None:
-        self.what = what
+    """An entity left out: ``what`` (SVG: its kind; DXF: the reason), ``kind`` (DXF: the
+    entity type when not the entity's own) and ``cls``, the class of the reason (``plane``,
+    ``number``, ``exact``, ``text``: DXF notes are grouped and given a fix by it)."""
+
+    def __init__(self, what: str, kind: str | None = None, cls: str = "exact") -> None:
+        self.what, self.kind, self.cls = what, kind, cls
 
 
 def _skip_notes(skipped: dict, notes: list, name: str) -> None:
@@ -670,10 +1091,10 @@ def _dxf_spline(e, P) -> Spline:
     if bs.is_rational:
         w = list(bs.weights())
         if max(w) - min(w) > 1e-12 * max(w):
-            raise _Skip("SPLINE (rational)")
+            raise _Skip("rational: no exact form here")
     deg = bs.degree
     if deg > 3:
-        raise _Skip(f"SPLINE (degree {deg})")
+        raise _Skip(f"degree {deg}: no exact form here")
     knots = list(bs.knots())
     spans = []
     for ctrl in bs.bezier_decomposition():
@@ -918,7 +1339,9 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
         what = (f" on layer {layer!r}" if layer is not None else "") + \
                (f" with id {ident!r}" if ident is not None else "") + \
                (f" of colour {color!r}" if color is not None else "")
-        raise DrawingError("E0132", f"nothing to import from `{name}`{what}",
+        raise DrawingError("E0132", f"nothing to import from `{name}`{what}"
+                           + (f": {d.seen}" if d.seen else ""),
                            "select a layer, colour or id that holds lines, arcs, circles or "
-                           "splines")
+                           "splines" + ("; or fix what was left out in the drawing program"
+                                        if d.seen and "left out" in d.seen else ""))
     return d
