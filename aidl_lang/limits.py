@@ -55,6 +55,8 @@ class Budget:
 
 
 DEFAULT_BUDGET = Budget()
+# bytes of one program file or imported file (E0004); `aidl import` refuses to write more
+MAX_SOURCE_BYTES = 1_000_000
 
 
 class OutOfBudget(Exception):

@@ -193,7 +193,15 @@ _DEFS = {
                   members=POLY_MEMBERS),
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
-                     A("rotation", "angle", 0.0)],
+                     A("rotation", "angle", 0.0),
+                     A("close_tolerance", "length", None, "chains whose ends meet within "
+                       "this are closed (default 0.05 mm)", kw_only=True),
+                     A("cut", "any", None, "layers or colours cut (outlines, holes)",
+                       kw_only=True),
+                     A("engrave", "any", None, "layers or colours engraved", kw_only=True),
+                     A("ignore", "any", None, "layers or colours left out", kw_only=True),
+                     A("roles", "string", None, "\"laser\": black and blue cut, green "
+                       "engraved, red left out (Boxes.py)", kw_only=True)],
                     doc="A .dxf/.svg file beside the program as exact curves, where the "
                         "file puts it (at= moves it); inner loops are holes.",
                     members=DRAWING_MEMBERS),

@@ -15,11 +15,13 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from .limits import MAX_SOURCE_BYTES
+
 STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
 if not STDLIB.exists():
     STDLIB = Path(__file__).resolve().parent / "stdlib"
 
-MAX_IMPORT_BYTES = 1_000_000     # size of one imported file
+MAX_IMPORT_BYTES = MAX_SOURCE_BYTES     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written
 MAX_DRAWING_BYTES = 5_000_000    # size of one DXF or SVG drawing (Drawing2D, `aidl import`)
 _SANDBOX_HINT = ("import only .aidl files in this file's folder tree (a relative path without "

@@ -222,6 +222,21 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                     help="the drawing's unit, instead of $INSUNITS or the SVG's width/viewBox")
     im.add_argument("--layer", default=None,
                     help="only this DXF layer (or SVG group id / Inkscape layer)")
+    im.add_argument("--parts", action="store_true",
+                    help="a sheet of parts: one solid per outer loop (its holes and "
+                         "engravings with it) in an assembly, to re-nest with --layout sheet")
+    im.add_argument("--close-tolerance", type=float, default=None, metavar="MM",
+                    help="close chains whose ends meet within MM (default 0.05; 0: only "
+                         "ends that meet)")
+    for role, what in (("cut", "cut (outlines and holes)"), ("engrave", "engraved"),
+                       ("ignore", "left out")):
+        im.add_argument(f"--{role}", action="append", default=None, metavar="LAYER|COLOUR",
+                        help=f"what is {what}: a layer name, a colour (red, #0000ff) or a DXF "
+                             "ACI number; repeat for more")
+    im.add_argument("--roles", default=None, choices=["laser"],
+                    help="a preset of roles by colour: laser = Boxes.py's colours (black and "
+                         "blue cut, green engraved, red annotations left out)")
+    _budget_arg(im)
     f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
@@ -840,7 +855,13 @@ def cmd_import(args) -> int:
     src = args.file
     try:
         data = read_file(src, MAX_DRAWING_BYTES)
-        text, notes = import_drawing(data, src, unit=args.units, layer=args.layer)
+        def sel(v):
+            return None if v is None else [int(x) if x.strip().isdigit() else x for x in v]
+        text, notes = import_drawing(data, src, unit=args.units, layer=args.layer,
+                                     parts=args.parts, close_tolerance=args.close_tolerance,
+                                     cut=sel(args.cut), engrave=sel(args.engrave),
+                                     ignore=sel(args.ignore), roles=args.roles,
+                                     budget=_budget(args))
     except (OSError, FileRefused) as ex:
         print(f"{src}: error[E0130]: cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}",
               file=sys.stderr)

@@ -29,6 +29,11 @@ def _num(v: float, snap: float = SNAP) -> str:
     number the drawing meant (``44``, ``25``); the error stays far inside the round trip's
     1e-9 mm.  Angles in radians pass ``snap=0`` (exact: 1e-12 rad is 1e-9 mm at 1 m)."""
     v = float(v)
+    if not math.isfinite(v) or abs(v) > 1e15:     # never written into a program
+        from .read import DrawingError
+        raise DrawingError("E0130", f"the drawing has a number {v!r} that is not finite or "
+                                    f"beyond the model extent: not written",
+                           "fix the entity in the drawing")
     if abs(v) < 1e-12:
         return "0"
     for digits in range(13):
@@ -133,9 +138,10 @@ def _bezier_runs(segs: list) -> list:
 
 
 class _Writer:
-    def __init__(self) -> None:
+    def __init__(self, deadline=None) -> None:
         self.lines: list[str] = []
         self.notes: list[Note] = []
+        self.deadline = deadline
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -233,22 +239,33 @@ def _probe(segs) -> tuple[float, float]:
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
+def _containers(loops: list, deadline=None) -> list[list[int]]:
+    """For each loop (a list of segments) the indices of the other loops it lies inside (its
+    probe point inside their polygon): each probe is tested only against the loops whose box
+    holds it, so a sheet of 10 000 separate shapes takes a moment, not the hour that testing
+    every pair took."""
+    import numpy as np
+    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
+    boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+                      if len(P) else (np.inf, np.inf, -np.inf, -np.inf) for P in polys])
+    out = []
+    for i, segs in enumerate(loops):
+        if deadline is not None and i % 256 == 0:
+            deadline.check("finding the holes of the drawing")
+        x, y = _probe(segs)
+        if not len(boxes):
+            out.append([])
+            continue
+        cand = np.flatnonzero((boxes[:, 0] <= x) & (x <= boxes[:, 2]) & (boxes[:, 1] <= y)
+                              & (y <= boxes[:, 3]))
+        out.append([int(j) for j in cand if j != i and len(polys[j]) >= 3
+                    and _inside((x, y), polys[j])])
+    return out
+
+
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
     loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
-    import numpy as np
-    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops]
-    # each loop's box first: a probe is tested only against the loops whose box holds it
-    # (a MINSERT of 19 000 holes: seconds, where testing every pair took hours)
-    boxes = np.array([[P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()]
-                      if len(P) else [np.inf, np.inf, -np.inf, -np.inf] for P in polys]) \
-        if polys else np.zeros((0, 4))
-    depths = []
-    for i, (_, segs) in enumerate(loops):
-        p = _probe(segs)
-        cand = np.nonzero((boxes[:, 0] <= p[0]) & (p[0] <= boxes[:, 2]) &
-                          (boxes[:, 1] <= p[1]) & (p[1] <= boxes[:, 3]))[0]
-        depths.append(sum(1 for j in cand if j != i and len(polys[j]) >= 3
-                          and _inside(p, polys[j])))
+    depths = [len(c) for c in _containers([segs for _, segs in loops], w.deadline)]
     w.emit(depth, f"{kind} {name} {{")
     used: set = set()
     k = 0
@@ -261,6 +278,10 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
         else:
             islands.append((segs, k))
+    # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
+    import numpy as np
+    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
+        if d.ellipses and kind != "drawing" else []
     for cx, cy, rx, ry, rot in d.ellipses:
         k += 1
         shape = (f"Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, ry={_num(ry)}, "
@@ -295,11 +316,100 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
                                              f"chain): left out"))
         if kind != "drawing":
             w.emit(depth + 1, "}")
+    e = getattr(d, "engrave", None)
+    if e is not None and not e.empty:         # the shapes whose role is `engrave`
+        if kind == "drawing":
+            _structure_body(w, depth + 1, e, "g")
+        else:
+            w.emit(depth + 1, "drawing engrave {")
+            _structure_body(w, depth + 2, e, "g")
+            w.emit(depth + 1, "}")
     w.emit(depth, "}")
     for segs, k in islands:
         w.emit(depth, f"solid {name}_island{k} {{")
         _loop(w, depth + 1, segs, f"o{k}_", None)
         w.emit(depth, "}")
+
+
+def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
+    """The statements of an engraving (every loop and path a stroke) at ``depth``."""
+    k = 0
+    for segs in [o.segments for o in d.outlines] + [[c] for c in d.circles]:
+        k += 1
+        _loop(w, depth, segs, f"{prefix}{k}_", None)
+    # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
+    import numpy as np
+    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
+        if d.ellipses and kind != "drawing" else []
+    for cx, cy, rx, ry, rot in d.ellipses:
+        k += 1
+        w.emit(depth, f"{prefix}{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                      f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+    for p in d.paths:
+        k += 1
+        closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+        if not w.chain(depth, p.segments, closed, f"{prefix}{k}_"):
+            w.notes.append(Note("W0130", "an engraved path holds a piece no statement writes "
+                                         "(a whole circle or ellipse inside a chain): left out"))
+
+
+def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | None]:
+    """The separate parts of a sheet: one :class:`Drawing` per outer loop (a loop inside an
+    even number of others, islands included) with its holes (the loops just inside it) and
+    the paths, ellipses, texts and engravings that lie in it; and what lies in no part (a
+    Drawing, or None)."""
+    loops = [o for o in d.outlines] + list(d.circles)
+    segs = [o.segments if isinstance(o, Outline) else [o] for o in loops]
+    inside = _containers(segs, deadline)
+    depth = [len(c) for c in inside]
+    roots = [i for i in range(len(loops)) if depth[i] % 2 == 0]
+    parts = {i: Drawing(unit=d.unit) for i in roots}
+
+    def put(part: Drawing, loop) -> None:
+        (part.outlines if isinstance(loop, Outline) else part.circles).append(loop)
+    for i in roots:
+        put(parts[i], loops[i])
+    for i in range(len(loops)):
+        if depth[i] % 2 == 1:
+            owner = [j for j in inside[i] if depth[j] == depth[i] - 1]
+            if owner:
+                put(parts[owner[0]], loops[i])
+    import numpy as np
+    polys = {i: np.asarray(Loop(list(segs[i])).points(), dtype=float) for i in roots}
+    loose = Drawing(unit=d.unit)
+
+    def owner_of(pt):
+        best = None
+        for i in roots:
+            if len(polys[i]) >= 3 and _inside(pt, polys[i]) and \
+                    (best is None or depth[i] > depth[best]):
+                best = i
+        return parts[best] if best is not None else loose
+    for p in d.paths:
+        owner_of(_probe(p.segments)).paths.append(p)
+    for el in d.ellipses:
+        owner_of((el[0], el[1])).ellipses.append(el)
+    for t in d.texts:
+        owner_of(t[1]).texts.append(t)
+    e = getattr(d, "engrave", None)
+    if e is not None:
+        for o in e.outlines:
+            _engrave_of(owner_of(_probe(o.segments))).outlines.append(o)
+        for c in e.circles:
+            _engrave_of(owner_of(c.center)).circles.append(c)
+        for p in e.paths:
+            _engrave_of(owner_of(_probe(p.segments))).paths.append(p)
+        for el in e.ellipses:
+            _engrave_of(owner_of((el[0], el[1]))).ellipses.append(el)
+    out = [parts[i] for i in roots]
+    left = None if loose.empty and not loose.texts and loose.engrave is None else loose
+    return out, left
+
+
+def _engrave_of(d: Drawing) -> Drawing:
+    if d.engrave is None:
+        d.engrave = Drawing(unit=d.unit)
+    return d.engrave
 
 
 def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> None:
@@ -318,21 +428,40 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
         w.emit(depth - 1, "}")
 
 
-def to_program(layers: list[tuple[str, Drawing]], source: str) -> tuple[str, list[Note]]:
+def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
+               deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer (``(layer name, Drawing)``, in order),
     and the notes of what was left out.  ``source``: the drawing's file name, for the
-    header comment."""
-    w = _Writer()
+    header comment.  ``parts``: a sheet of parts, one ``solid`` per outer loop (its holes,
+    paths, texts and engravings with it) in one ``assembly`` (:func:`_split_parts`)."""
+    w = _Writer(deadline)
     w.emit(0, f"# imported from {source} by `aidl import`: edit freely")
     w.emit(0, "units mm")
     used: set = set()
-    multi = len(layers) > 1
-    if multi:
-        w.emit(0, "assembly drawing_import {")
+    items = []
     for layer, d in layers:
         kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
-        name = _ident(layer or "part", used)
+        if parts and kind == "solid":
+            pieces, loose = _split_parts(d, deadline)
+            base = _ident(layer, set()) if layer else "part"
+            for k, pd in enumerate(pieces):
+                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
+            if loose is not None:
+                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
+                n = len(loose.paths) + len(loose.ellipses) + len(loose.texts)
+                w.notes.append(Note("W0130", f"{n} path{'s' if n != 1 else ''} or label"
+                                             f"{'s' if n != 1 else ''} of `{source}` lie in no "
+                                             f"part: written as the engraving "
+                                             f"`{items[-1][1]}`",
+                                    "move them into a part, or delete the drawing if they "
+                                    "are notes"))
+        else:
+            items.append((kind, _ident(layer or "part", used), d))
+    multi = len(items) > 1
+    if multi:
+        w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
+    for kind, name, d in items:
         _structure(w, 1 if multi else 0, kind, name, d)
     if multi:
         w.emit(0, "}")
@@ -372,27 +501,70 @@ def layer_names(data: bytes, name: str) -> list[str]:
     return seen or [""]
 
 
+def _count_segments(d: Drawing) -> int:
+    n = sum(len(o.segments) for o in d.outlines) + len(d.circles) + len(d.ellipses) + \
+        sum(len(p.segments) for p in d.paths) + len(d.texts)
+    return n + (_count_segments(d.engrave) if d.engrave is not None else 0)
+
+
 def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, color=None,
-                   ident=None) -> tuple[str, list[Note]]:
+                   ident=None, parts: bool = False, close_tolerance: float | None = None,
+                   cut=None, engrave=None, ignore=None, roles=None,
+                   budget=None) -> tuple[str, list[Note]]:
     """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
-    notes (skipped entities, left-out loops).  Raises :class:`~.read.DrawingError`."""
-    from .read import DrawingError, read_drawing
-    layers = [layer] if layer is not None else layer_names(data, name)
-    read: list[tuple[str, Drawing]] = []
-    notes: list[Note] = []
-    for ly in layers:
-        try:
-            d = read_drawing(data, name, layer=ly or None, color=color, ident=ident, unit=unit,
-                             keep_text=True)
-        except DrawingError as ex:
-            if ex.code == "E0132" and layer is None:
-                continue        # a layer of only skipped entities (none at all: below)
-            raise
-        # text is written as Text engravings here (Drawing2D skips it with this note)
-        notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)
-                  and all(n.message != m.message for m in notes)]     # once, not per layer
-        read.append((ly if isinstance(ly, str) else "_".join(ly), d))
-    if not read:        # every layer empty: the whole drawing's E0132, as Drawing2D gives it
-        read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True)
-    text, more = to_program(read, name.replace("\\", "/").rsplit("/", 1)[-1])
+    notes (skipped entities, left-out loops).  ``budget`` (a
+    :class:`~aidl_lang.limits.Budget`, default the compile's): the wall time of the whole
+    import, the shapes read (its ``geometry`` figure) and the program's size; a program
+    the compiler would refuse (more than :data:`~aidl_lang.limits.MAX_SOURCE_BYTES` or
+    ``budget.geometry`` statements) is ``E0304``, naming ``Drawing2D`` (nothing is
+    written).  Raises :class:`~.read.DrawingError`."""
+    import time
+    from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from ..limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
+    from .read import MAX_ENTITIES, DrawingError, read_drawing
+    budget = budget or DEFAULT_BUDGET
+    deadline = Deadline(time.monotonic() + budget.seconds, budget)
+    limit = max(1, int(MAX_ENTITIES * budget.geometry / DEFAULT_BUDGET.geometry))
+    base = name.replace("\\", "/").rsplit("/", 1)[-1]
+    too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "
+               "in a solid (`aidl docs Drawing2D`), or import a part of it with --layer")
+    try:
+        layers = [layer] if layer is not None else layer_names(data, name)
+        read: list[tuple[str, Drawing]] = []
+        notes: list[Note] = []
+        total = 0
+        for ly in layers:
+            try:
+                d = read_drawing(data, name, layer=ly or None, color=color, ident=ident,
+                                 unit=unit, keep_text=True, close_tolerance=close_tolerance,
+                                 cut=cut, engrave=engrave, ignore=ignore, roles=roles,
+                                 deadline=deadline, max_shapes=limit)
+            except DrawingError as ex:
+                if ex.code == "E0132" and layer is None:
+                    continue        # a layer of only skipped entities (none at all: below)
+                raise
+            # text is written as Text engravings here (Drawing2D skips it with this note)
+            notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)
+                      and all(n.message != m.message for m in notes)]     # once, not per layer
+            read.append((ly if isinstance(ly, str) else "_".join(ly), d))
+            total += _count_segments(d)
+            if total > budget.geometry:
+                raise DrawingError("E0304", f"`{base}` holds {total} or more lines, arcs and "
+                                            f"curves: the program would have more than the "
+                                            f"{budget.geometry} geometry objects a program may "
+                                            f"build", too_big)
+        if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
+            read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
+                         close_tolerance=close_tolerance, cut=cut, engrave=engrave,
+                         ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
+        text, more = to_program(read, base, parts=parts, deadline=deadline)
+    except OutOfBudget as ex:
+        raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
+                           "import a part of it with --layer, keep it as one `Drawing2D`, "
+                           "or raise --budget") from None
+    size = len(text.encode("utf-8"))
+    if size > MAX_IMPORT_BYTES:
+        raise DrawingError("E0304", f"the program of `{base}` would be {size} bytes, more than "
+                                    f"the {MAX_IMPORT_BYTES} bytes a program may have: not "
+                                    f"written", too_big)
     return text, notes + more

@@ -33,6 +33,7 @@ overrides them (for SVG: one user unit of the ``viewBox`` is one ``units``).
 """
 from __future__ import annotations
 
+import contextvars
 import io
 import math
 from dataclasses import dataclass, field
@@ -44,6 +45,7 @@ from ..limits import MAX_EXTENT
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
 MAX_ENTITIES = 20_000    # entities (DXF) or shapes (SVG) read from one drawing
 MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
+CLOSE_TOL = 0.05         # mm: the default closing tolerance (close_tolerance=, --close-tolerance)
 GAP_NOTE = 0.5           # mm: an open chain whose ends are this close was probably meant closed
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "ft": 304.8,
            "pt": 25.4 / 72, "px": 25.4 / 96}
@@ -201,6 +203,10 @@ class Drawing:
     # DXF: what the file holds (counts by type and layer) and why each kind was left out,
     # for the message of an import that gives nothing
     seen: str = ""
+    # what has the role `engrave` (engrave=, roles="laser"), read as a drawing of its own:
+    # engraved strokes on the part (Drawing2D: drawn with the texts; `aidl import`: a
+    # `drawing engrave` child)
+    engrave: "Drawing | None" = None
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
@@ -285,18 +291,93 @@ def _bulge_arc(p, q, b) -> Arc | Line:
 
 
 # ------------------------------------------------------------------ chains
-def _chain(pieces: list) -> tuple[list, list]:
+def _meet(a, b) -> tuple[list, list]:
+    """``a`` and ``b`` (segments, ``a.end`` near ``b.start``) made to meet exactly: the end
+    of ``a`` (else the start of ``b``) is moved onto the other when it is a Line over ten
+    times longer than the gap (its direction turns by less than 0.1 rad), else a tiny Line
+    bridges the gap; an arc's
+    or a curve's own numbers are never changed (their exactness is kept)."""
+    g = math.dist(a.end, b.start)
+    if g == 0.0:
+        return [a], [b]
+    if isinstance(a, Line) and math.dist(a.start, a.end) > 10 * g:
+        return [Line(a.start, b.start)], [b]
+    if isinstance(b, Line) and math.dist(b.start, b.end) > 10 * g:
+        return [a], [Line(a.end, b.end)]
+    return [a, Line(a.end, b.start)], [b]
+
+
+def _seg_key(s, q: float = 1e-6):
+    """A key equal for two segments that are the same curve, run either way (ends rounded
+    to ``q`` mm): lines, arcs and spline pieces; None for others."""
+    def r(p):
+        return (round(p[0] / q), round(p[1] / q))
+    if isinstance(s, Line):
+        return ("L", frozenset((r(s.start), r(s.end))))
+    if isinstance(s, Arc):
+        return ("A", r(s.center), round(s.radius / q), frozenset((r(s.start), r(s.end))),
+                r(s.at(s.start_angle + s.sweep / 2)))
+    if isinstance(s, Spline):
+        pts = tuple(r(p) for b in s.spans for p in b)
+        return ("S", min(pts, pts[::-1]))
+    return None
+
+
+def _dedupe(pieces: list, loops: list) -> tuple[list, list, int]:
+    """``pieces`` and ``loops`` without the duplicates a drawing program leaves (the same
+    line drawn twice, a path drawn over another): a piece or loop every segment of which is
+    already drawn is left out.  Returns them and the count of segments removed."""
+    seen: set = set()
+    removed = 0
+
+    def dup(segs) -> bool:
+        keys = [_seg_key(x) for x in segs]
+        if keys and all(k is not None and k in seen for k in keys):
+            return True
+        seen.update(k for k in keys if k is not None)
+        return False
+    out_loops = []
+    for segs, src in loops:
+        if dup(segs):
+            removed += len(segs)
+        else:
+            out_loops.append((segs, src))
+    out_pieces = []
+    for p in pieces:
+        if dup(p):
+            removed += len(p)
+        else:
+            out_pieces.append(p)
+    return out_pieces, out_loops, removed
+
+
+def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
+           deadline=None) -> tuple[list, list]:
     """Join open pieces (lists of segments) end to end: ``(closed chains, open chains)``.
-    The pieces' ends are kept in a grid of cells :data:`JOIN_TOL` wide, so each step finds its
+    The pieces' ends are kept in a grid of cells ``tol`` wide, so each step finds its
     neighbours in the 3 x 3 cells around an end: linear in the pieces (20 000 loose lines join
-    in well under a second), where scanning them all at every step was quadratic."""
+    in well under a second), where scanning them all at every step was quadratic.
+
+    ``tol`` above :data:`JOIN_TOL` (the closing tolerance): ends that far apart are made to
+    meet exactly (:func:`_meet`) and each gap so closed is appended to ``gaps`` as ``(gap mm,
+    where)``.  ``deadline``: a :class:`~aidl_lang.limits.Deadline`, checked as it goes."""
     from ..geometry.curves import reverse
     pieces = [list(p) for p in pieces]
     used = [False] * len(pieces)
     grid: dict = {}
 
     def cell(p):
-        return (math.floor(p[0] / JOIN_TOL), math.floor(p[1] / JOIN_TOL))
+        return (math.floor(p[0] / tol), math.floor(p[1] / tol))
+
+    def join(left: list, right: list) -> list:
+        """``left + right``, their meeting ends made exact (the gap noted) when apart."""
+        g = math.dist(left[-1].end, right[0].start)
+        if g == 0.0 or tol <= JOIN_TOL or g <= JOIN_TOL:
+            return left + right
+        if gaps is not None:
+            gaps.append((g, left[-1].end))
+        a, b = _meet(left[-1], right[0])
+        return left[:-1] + a + b + right[1:]
 
     for i, p in enumerate(pieces):
         for q in (p[0].start, p[-1].end):
@@ -314,28 +395,39 @@ def _chain(pieces: list) -> tuple[list, list]:
     for i0 in range(len(pieces)):
         if used[i0]:
             continue
+        if deadline is not None and i0 % 256 == 0:
+            deadline.check("joining the drawing's pieces")
         used[i0] = True
         cur = list(pieces[i0])
         for forward in (True, False):
-            while math.dist(cur[0].start, cur[-1].end) > JOIN_TOL:
+            while math.dist(cur[0].start, cur[-1].end) > tol:
                 end = cur[-1].end if forward else cur[0].start
                 for i in near(end):
                     p = pieces[i]
-                    if forward and math.dist(p[0].start, end) <= JOIN_TOL:
-                        cur += p
-                    elif forward and math.dist(p[-1].end, end) <= JOIN_TOL:
-                        cur += [reverse(s) for s in reversed(p)]
-                    elif not forward and math.dist(p[-1].end, end) <= JOIN_TOL:
-                        cur = p + cur
-                    elif not forward and math.dist(p[0].start, end) <= JOIN_TOL:
-                        cur = [reverse(s) for s in reversed(p)] + cur
+                    if forward and math.dist(p[0].start, end) <= tol:
+                        cur = join(cur, p)
+                    elif forward and math.dist(p[-1].end, end) <= tol:
+                        cur = join(cur, [reverse(s) for s in reversed(p)])
+                    elif not forward and math.dist(p[-1].end, end) <= tol:
+                        cur = join(p, cur)
+                    elif not forward and math.dist(p[0].start, end) <= tol:
+                        cur = join([reverse(s) for s in reversed(p)], cur)
                     else:
                         continue
                     used[i] = True
                     break
                 else:
                     break
-        if math.dist(cur[0].start, cur[-1].end) <= JOIN_TOL:
+        g = math.dist(cur[0].start, cur[-1].end)
+        if g <= tol:
+            if g > JOIN_TOL:            # closed across the gap: its ends made one point
+                if gaps is not None:
+                    gaps.append((g, cur[-1].end))
+                if len(cur) == 1:
+                    cur = cur + [Line(cur[-1].end, cur[0].start)]
+                else:
+                    a, b = _meet(cur[-1], cur[0])
+                    cur = b + cur[1:-1] + a
             closed.append(cur)
         else:
             paths.append(cur)
@@ -373,8 +465,41 @@ def _crossing(segs) -> tuple[float, float] | None:
     return None
 
 
+@dataclass
+class _Options:
+    """What :func:`read_drawing` asks of the readers beyond the selection: the closing
+    tolerance (mm), the wall-time :class:`~aidl_lang.limits.Deadline` (or None), the role
+    filter ``keep(layer, rgb, aci)`` (or None: everything) and the shape budget."""
+    close_tol: float = CLOSE_TOL
+    deadline: object = None
+    keep: object = None
+    max_shapes: int = MAX_ENTITIES
+
+
+_OPTS: "contextvars.ContextVar[_Options]" = contextvars.ContextVar("aidl_drawing_opts",
+                                                                  default=_Options())
+
+
 def _finish(pieces, loops, circles, ellipses, notes, unit, name) -> Drawing:
-    closed, open_ = _chain(pieces)
+    opts = _OPTS.get()
+    pieces, loops, dups = _dedupe(pieces, loops)
+    if dups:
+        notes.append(Note("W0130", f"{dups} duplicate segment{'s' if dups > 1 else ''} of "
+                                   f"`{name}` removed (drawn twice, over one another)",
+                          "delete the duplicates in the drawing program to silence this"))
+    closed, open_ = _chain(pieces, deadline=opts.deadline)
+    if open_ and opts.close_tol > JOIN_TOL:
+        gaps: list = []
+        more, open_ = _chain(open_, opts.close_tol, gaps, opts.deadline)
+        closed += more
+        if gaps:
+            g, at = max(gaps)
+            notes.append(Note("W0130", f"{len(gaps)} gap{'s' if len(gaps) > 1 else ''} of "
+                                       f"`{name}` closed (the largest {g:.3g} mm, at "
+                                       f"({at[0]:.6g}, {at[1]:.6g}) mm): ends within the "
+                                       f"closing tolerance of {opts.close_tol:g} mm made one "
+                                       f"point", "give close_tolerance=0 (`aidl import "
+                                                 "--close-tolerance 0`) to keep them open"))
     d = Drawing(circles=circles, ellipses=ellipses, notes=notes, unit=unit)
     for segs, src in [(c, "") for c in closed] + loops:
         if len(segs) == 1 and isinstance(segs[0], Circle):
@@ -659,6 +784,10 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
                 continue
             cur_layer[0] = ly
             seen[(t, ly)] = seen.get((t, ly), 0) + 1
+            if _OPTS.get().keep is not None and not _OPTS.get().keep(
+                    [ly], _dxf_rgb(e, aci(e, inh_color)), aci(e, inh_color)):
+                continue            # roles (cut=, engrave=, ignore=): another role's entity
+                                    # (in a block: the insert's layer and colour, as above)
             made = (len(pieces), len(loops), len(circles), len(ellipses), len(texts),
                     len(hatch_circles))
             try:
@@ -1004,6 +1133,21 @@ def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, s
     return d
 
 
+def _dxf_rgb(e, aci: int) -> tuple | None:
+    """The RGB colour of DXF entity ``e``: its true colour (group 420), else that of its ACI
+    ``aci`` (7, white on a dark screen, black on paper: black)."""
+    try:
+        tc = e.dxf.get("true_color", None)
+        if tc is not None:
+            return ((tc >> 16) & 255, (tc >> 8) & 255, tc & 255)
+        if aci in (0, 7, 256):
+            return (0, 0, 0)
+        from ezdxf.colors import aci2rgb
+        return tuple(aci2rgb(aci))
+    except Exception:
+        return None
+
+
 # TEXT halign (0 left, 1 center, 2 right; 3-5 aligned/middle/fit: centred) and valign
 # (0 baseline, 1 bottom, 2 middle, 3 top); MTEXT attachment 1-9 (top/middle/bottom x
 # left/center/right): as Text's anchor and valign
@@ -1183,15 +1327,37 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 have.add(S.Color(v).hex.lower()[:7])
         return bool({S.Color(w).hex.lower()[:7] for w in want} & have)
 
+    opts = _OPTS.get()
+
+    def names_of(g) -> list:
+        return [v for v in (getattr(g, "id", None), g.values.get("inkscape:label"), g.values.get(
+            "{http://www.inkscape.org/namespaces/inkscape}label")) if v]
+
+    def walk(node, names):
+        """The shapes under ``node`` with the names (ids, Inkscape labels) of the groups
+        they are in."""
+        yield node, names
+        if isinstance(node, (S.Group, S.Use)):
+            inner = names + names_of(node)
+            for ch in node:
+                yield from walk(ch, inner)
+
     seen = set()
     for root in roots:
-        items = [root] if isinstance(root, S.Shape) or isinstance(root, S.Text) else \
-            list(root.elements()) if hasattr(root, "elements") else \
-            list(root.select()) if hasattr(root, "select") else [root]
-        for el in items:
+        for el, names in walk(root, []):
             if id(el) in seen:
                 continue
             seen.add(id(el))
+            if opts.deadline is not None and len(seen) % 512 == 0:
+                opts.deadline.check("reading the drawing")
+            if opts.keep is not None and isinstance(el, (S.Shape, S.Text)):
+                c = getattr(el, "stroke", None)
+                if c is None or getattr(c, "value", None) is None:
+                    c = getattr(el, "fill", None)
+                rgb = (c.red, c.green, c.blue) if c is not None and \
+                    getattr(c, "value", None) is not None else None
+                if not opts.keep(names + names_of(el), rgb, None):
+                    continue
             if isinstance(el, S.Text):
                 skipped["text"] = skipped.get("text", 0) + 1
                 continue
@@ -1203,8 +1369,8 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
             if not colour_ok(el):
                 continue
             count += 1
-            if count > MAX_ENTITIES:
-                raise DrawingError("E0130", f"`{name}` has more than {MAX_ENTITIES} shapes",
+            if count > opts.max_shapes:
+                raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
                                    "select fewer with id= or split the drawing")
             try:
                 _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped)
@@ -1215,6 +1381,111 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                                    name) from None
     _skip_notes(skipped, notes, name)
     return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+
+
+def _svg_prescan(data: bytes, name: str, limit: int) -> None:
+    """Count what the SVG ``data`` draws before svgelements reads it, with the standard
+    library's expat parser (no entity expansion, no network): a file that declares XML
+    entities (``<!ENTITY``: the "billion laughs") is refused, and each ``<use>`` counts as
+    the elements it copies, nested ``<use>`` multiplied out, so a few kilobytes of nested
+    references that would expand to millions of shapes are refused (``E0304``, at the
+    ``<use>`` that copies the most) before they are expanded; more than ``limit`` elements
+    drawn is ``E0130``.  A file expat cannot parse is left to svgelements (its message)."""
+    import xml.parsers.expat as X
+    tags: list = []         # per element: local tag, id, href, line
+    kids: list = []
+    stack: list = []
+    ids: dict = {}
+
+    class _Refused(Exception):
+        pass
+
+    def start(tag, attrs):
+        local = tag.rsplit("}", 1)[-1].rsplit(":", 1)[-1]
+        href = attrs.get("href") or attrs.get("http://www.w3.org/1999/xlink}href") or \
+            attrs.get("xlink:href")
+        i = len(tags)
+        tags.append((local, attrs.get("id"), href, p.CurrentLineNumber))
+        kids.append([])
+        if stack:
+            kids[stack[-1]].append(i)
+        if attrs.get("id") is not None:
+            ids.setdefault(attrs["id"], i)
+        stack.append(i)
+        if len(stack) > 500:
+            raise DrawingError("E0130", f"`{name}` nests its elements more than 500 deep",
+                               "save it again as plain SVG with fewer nested groups",
+                               p.CurrentLineNumber)
+        if len(tags) > 50 * limit + 1000:
+            raise _Refused()
+
+    def end(tag):
+        stack.pop()
+
+    def entity(*a):
+        raise DrawingError("E0130", f"`{name}` declares XML entities (<!ENTITY ...>): not read",
+                           "save it again as plain SVG (Inkscape: Save As, Plain SVG)",
+                           p.CurrentLineNumber)
+    p = X.ParserCreate(namespace_separator="}")
+    p.StartElementHandler, p.EndElementHandler = start, end
+    p.EntityDeclHandler = entity
+    try:
+        p.Parse(data, True)
+    except DrawingError:
+        raise
+    except _Refused:
+        raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
+                           "select fewer with id= or split the drawing") from None
+    except Exception:
+        return                  # not XML: svgelements says so
+    cap = 10 * limit + 1
+    weight: dict = {}
+    busy: set = set()
+
+    def w(i: int) -> int:
+        if i in weight:
+            return weight[i]
+        if i in busy:
+            local, ident, _href, line = tags[i]
+            raise DrawingError("E0130", f"<{local}>" + (f" (id `{ident}`)" if ident else "")
+                               + f" of `{name}` refers to itself through <use>",
+                               "remove the circular <use> reference", line)
+        busy.add(i)
+        local, _ident, href, _line = tags[i]
+        n = 1 if local in ("path", "rect", "circle", "ellipse", "line", "polyline",
+                           "polygon", "text") else 0
+        for k in kids[i]:
+            n = min(cap, n + w(k))
+        if local == "use" and href and href.startswith("#") and href[1:] in ids:
+            n = min(cap, n + w(ids[href[1:]]))
+        busy.discard(i)
+        weight[i] = n
+        return n
+    import sys
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, 20000))
+    try:
+        total = w(0) if tags else 0
+    except RecursionError:
+        raise DrawingError("E0130", f"`{name}` nests its elements too deeply",
+                           "save it again as plain SVG with fewer nested groups") from None
+    finally:
+        sys.setrecursionlimit(old)
+    if total > limit:
+        uses = [i for i, t in enumerate(tags) if t[0] == "use"]
+        if uses:
+            i = max(uses, key=lambda i: (weight.get(i, 0), -i))
+            local, ident, href, line = tags[i]
+            more = "more than " if weight[i] >= cap else ""
+            raise DrawingError("E0304", f"<use>" + (f" (id `{ident}`)" if ident else "")
+                               + f" of `{name}` copies `{href}` into {more}{weight[i]} shapes "
+                                 f"(nested <use> references): the drawing would hold more than "
+                                 f"the {limit} shapes an import may read",
+                               "replace the nested <use> copies by the shapes they copy "
+                               "(Inkscape: Edit > Clone > Unlink Clone), or draw fewer",
+                               line)
+        raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
+                           "select fewer with id= or split the drawing")
 
 
 def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> None:
@@ -1313,17 +1584,163 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
     flush(False)
 
 
+# ------------------------------------------------------------------ roles
+# roles="laser": the colours Boxes.py (boxes/Color.py: OUTER_CUT black, INNER_CUT blue,
+# ANNOTATIONS red, ETCHING green) and the laser programs that read its SVGs use
+ROLE_PRESETS = {"laser": {"cut": ["#000000", "#0000ff"], "engrave": ["#00ff00"],
+                          "ignore": ["#ff0000"]}}
+ROLES = ("cut", "engrave", "ignore")
+
+
+def _colour(v):
+    """``v`` (a CSS colour name, ``#rgb``/``#rrggbb``, ``rgb(...)``; or an ACI number) as
+    ``("rgb", (r, g, b))`` or ``("aci", n)``; None when ``v`` is no colour (a layer name)."""
+    if isinstance(v, bool):
+        return None
+    if isinstance(v, (int, float)) and float(v).is_integer():
+        return ("aci", int(v))
+    if not isinstance(v, str):
+        return None
+    import re
+    import svgelements as S
+    t = v.strip().lower()
+    if re.fullmatch(r"#[0-9a-f]{3}|#[0-9a-f]{6}", t) or re.fullmatch(r"rgb\(.*\)", t) or \
+            t == "black" or S.Color.parse_color_lookup(t) != 255:
+        c = S.Color(t)
+        return ("rgb", (c.red, c.green, c.blue))
+    return None
+
+
+def _role_of(cut, engrave, ignore, roles, where: str = ""):
+    """The role of a shape from ``cut=``, ``engrave=``, ``ignore=`` (each a layer name, a
+    colour or an ACI number, or a list of them) and the preset ``roles=``: a function
+    ``(layer names, rgb, aci) -> "cut" | "engrave" | "ignore"``, or None when none is
+    given (everything is cut, as before).  A shape no role names is cut when ``cut=`` is not
+    given, else ignored.  Raises :class:`DrawingError` (``E0130``) for an unknown preset."""
+    given = {"cut": cut, "engrave": engrave, "ignore": ignore}
+    if roles is not None:
+        if not isinstance(roles, str) or roles.lower() not in ROLE_PRESETS:
+            raise DrawingError("E0130", f"unknown roles preset {roles!r}",
+                               "roles=\"laser\" (Boxes.py's colours: black and blue cut, "
+                               "green engrave, red annotations ignored), or give cut=, "
+                               "engrave= and ignore= by layer or colour")
+        for k, v in ROLE_PRESETS[roles.lower()].items():
+            if given[k] is None:
+                given[k] = v
+    if all(v is None for v in given.values()):
+        return None
+    sel = {}
+    for k, v in given.items():
+        vs = [] if v is None else [v] if isinstance(v, (str, int, float)) else list(v)
+        sel[k] = [(str(x).lower(), _colour(x)) for x in vs]
+
+    def close(a, b) -> bool:
+        return a is not None and b is not None and all(abs(x - y) <= 2 for x, y in zip(a, b))
+
+    def role(layers, rgb, aci) -> str:
+        low = [n.lower() for n in layers]
+        for k in ("ignore", "engrave", "cut"):
+            for text, col in sel[k]:
+                if text in low:
+                    return k
+                if col is not None and col[0] == "aci" and aci is not None and col[1] == aci:
+                    return k
+                if col is not None and col[0] == "rgb" and close(col[1], rgb):
+                    return k
+                if col is not None and col[0] == "aci" and aci is None and rgb is not None:
+                    from ezdxf.colors import aci2rgb
+                    if close(tuple(aci2rgb(col[1])) if col[1] not in (0, 7) else (0, 0, 0),
+                             rgb):
+                        return k
+        return "cut" if given["cut"] is None else "ignore"
+    return role
+
+
+def _colour_name(rgb) -> str:
+    if rgb is None:
+        return "no colour"
+    names = {(0, 0, 0): "black", (255, 0, 0): "red", (0, 0, 255): "blue", (0, 255, 0): "green",
+             (255, 255, 255): "white"}
+    return names.get(tuple(rgb), "#%02x%02x%02x" % tuple(rgb))
+
+
 # ------------------------------------------------------------------ entry
 def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
-                 unit: str | None = None, keep_text: bool = False) -> Drawing:
+                 unit: str | None = None, keep_text: bool = False,
+                 close_tolerance: float | None = None, cut=None, engrave=None, ignore=None,
+                 roles=None, deadline=None, max_shapes: int | None = None) -> Drawing:
     """The drawing in ``data`` (``name``: its path as written, for messages; ``.dxf`` or
     ``.svg`` decides the reader).  ``layer``: DXF layer name(s) or SVG group id / Inkscape
     layer label(s); ``color``: DXF ACI number(s) or SVG colour(s); ``ident``: SVG element or
     group id(s); ``unit``: overrides the file's unit; ``keep_text``: a selection that holds
-    only DXF text is not empty (``aidl import`` writes it).  Raises :class:`DrawingError`."""
+    only DXF text is not empty (``aidl import`` writes it).  ``close_tolerance``: chains
+    whose ends meet within it (mm; default :data:`CLOSE_TOL`) are closed exactly.
+    ``cut``/``engrave``/``ignore``/``roles``: the role of each shape by layer or colour
+    (:func:`_role_of`): what is cut is the drawing, what is engraved its ``engrave``
+    drawing, the rest left out (counted in a note).  ``deadline``: a
+    :class:`~aidl_lang.limits.Deadline` the reading is held to (``E0304``, raised as
+    :class:`~aidl_lang.limits.OutOfBudget`); ``max_shapes``: the shape limit (default
+    :data:`MAX_ENTITIES`).  Raises :class:`DrawingError`."""
     if unit is not None and unit not in UNIT_MM:
         raise DrawingError("E0130", f"unknown unit `{unit}`",
                            "units: " + ", ".join(UNIT_MM))
+    tol = CLOSE_TOL if close_tolerance is None else close_tolerance
+    try:
+        tol = float(tol)
+    except (TypeError, ValueError):
+        tol = float("nan")
+    if not 0 <= tol <= 10:
+        raise DrawingError("E0130", f"close_tolerance must be between 0 and 10 mm, not "
+                                    f"{close_tolerance!r}",
+                           f"the default is {CLOSE_TOL:g} mm; 0 closes only what meets")
+    if name.lower().endswith(".svg"):
+        _svg_prescan(data, name, max_shapes or MAX_ENTITIES)
+    role = _role_of(cut, engrave, ignore, roles)
+    base = _Options(tol, deadline, None, max_shapes or MAX_ENTITIES)
+    if role is None:
+        token = _OPTS.set(base)
+        try:
+            return _read_one(data, name, layer, color, ident, unit, keep_text)
+        finally:
+            _OPTS.reset(token)
+    ignored: dict = {}
+
+    def keep_for(want):
+        def keep(layers, rgb, aci) -> bool:
+            r = role(layers, rgb, aci)
+            if want == "cut" and r == "ignore":
+                what = (f"layer `{layers[0]}`" if layers and name.lower().endswith(".dxf")
+                        else _colour_name(rgb))
+                ignored[what] = ignored.get(what, 0) + 1
+            return r == want
+        return keep
+    out = []
+    for want in ("cut", "engrave"):
+        token = _OPTS.set(_Options(tol, deadline, keep_for(want), base.max_shapes))
+        try:
+            out.append(_read_one(data, name, layer, color, ident, unit, keep_text,
+                                 allow_empty=True))
+        finally:
+            _OPTS.reset(token)
+    d, e = out
+    if not e.empty or e.texts:
+        d.engrave = e
+        d.notes += [n for n in e.notes if n.message not in {m.message for m in d.notes}]
+    if ignored:
+        n = sum(ignored.values())
+        d.notes.append(Note("W0130", f"{n} shape{'s' if n > 1 else ''} of `{name}` left out by "
+                                     f"their role: " + ", ".join(
+                                         f"{k} ({v})" for k, v in sorted(ignored.items())),
+                            "give cut=, engrave= or ignore= (by layer or colour) to choose"))
+    if d.empty and d.engrave is None and not (keep_text and d.texts):
+        raise DrawingError("E0132", f"nothing to cut or engrave in `{name}` with these roles",
+                           "name the layers or colours that hold the parts with cut= (or "
+                           "roles=\"laser\": black and blue cut, green engraved)")
+    return d
+
+
+def _read_one(data: bytes, name: str, layer, color, ident, unit, keep_text,
+              allow_empty: bool = False) -> Drawing:
     low = name.lower()
     if low.endswith(".dxf"):
         if ident is not None:
@@ -1335,6 +1752,8 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
     else:
         raise DrawingError("E0130", f"`{name}` is neither a .dxf nor a .svg file",
                            "give a DXF or SVG drawing")
+    if allow_empty:
+        return d
     if d.empty and not (keep_text and d.texts):      # `aidl import` keeps a text layer
         what = (f" on layer {layer!r}" if layer is not None else "") + \
                (f" with id {ident!r}" if ident is not None else "") + \

@@ -1081,6 +1081,18 @@ def _build_Drawing2D(ctx, g, a):
                        part_of=g)
         ps.append(sg)
     g.data["path_parts"] = ps
+    e = getattr(d, "engrave", None)
+    if e is not None and not e.empty:
+        # the shapes of the role `engrave` (engrave=, roles="laser"): strokes on the part,
+        # as the texts below (issue 49)
+        from .curves import Arc
+        from .drawing2d import _turn
+        strokes = [[_turn(s, rot) for s in o.segments] for o in e.outlines] + \
+            [[_turn(s, rot) for s in p.segments] for p in e.paths] + \
+            [[_turn(Arc(c.center, c.radius, 0.0, math.pi), rot),
+              _turn(Arc(c.center, c.radius, math.pi, math.pi), rot)] for c in e.circles]
+        g.data["paths"] = list(g.data["paths"]) + strokes
+        paths = g.data["paths"]
     if getattr(d, "texts", None):
         # DXF TEXT and MTEXT as engraving strokes (the single-stroke font) in the drawing's
         # frame, turned with it; they move, turn and mirror as its open paths do

@@ -311,6 +311,14 @@ class Calls:
                                else ""), spans.get(what, node.span))
         layer, color, ident = sel(conv.get("layer"), "layer"), sel(conv.get("color"), "color"), \
             sel(conv.get("id"), "id")
+        roles = {k: sel(conv.get(k), "color") for k in ("cut", "engrave", "ignore")}
+        roles["roles"] = conv.get("roles")
+        tol = conv.get("close_tolerance")
+        if tol is not None:
+            tol = tol.const() if isinstance(tol, Q) else tol
+            if tol is None:
+                raise EvalError("E0108", "close_tolerance= of Drawing2D takes a number (mm)",
+                                spans.get("close_tolerance", node.span))
         raw = conv["file"]
         try:
             real, data = load_drawing(raw, self.file.path)
@@ -319,12 +327,13 @@ class Calls:
                             suggestions=ex.suggestions) if ex.suggestions else \
                 EvalError(ex.code, ex.message, at, hint=ex.hint)
         cache = self.__dict__.setdefault("_drawings", {})
-        key = (str(real), repr(layer), repr(color), repr(ident), conv.get("units"))
+        key = (str(real), repr(layer), repr(color), repr(ident), conv.get("units"), tol,
+               repr(roles))
         d = cache.get(key)
         if d is None:
             try:
                 d = read_drawing(data, raw, layer=layer, color=color, ident=ident,
-                                 unit=conv.get("units"))
+                                 unit=conv.get("units"), close_tolerance=tol, **roles)
             except DrawingError as ex:
                 raise EvalError(ex.code, ex.message, at, hint=ex.hint or None)
             cache[key] = d
@@ -345,9 +354,11 @@ class Calls:
                             f"first has a gap of {gap:.6g} mm from ({p.end[0]:.6g}, "
                             f"{p.end[1]:.6g}) to ({p.start[0]:.6g}, {p.start[1]:.6g}) mm "
                             f"(drawing coordinates)", at,
-                            hint="close the outline in the drawing, select only closed "
-                                 "outlines with layer=/id=, or put the Drawing2D in a "
-                                 "`drawing` (engraving) or give it construction=true")
+                            hint="close the outline in the drawing, raise close_tolerance= "
+                                 f"above {gap:.3g} mm if the gap is a slip, select only closed "
+                                 "outlines with layer=/id= (or engrave= them), or put the "
+                                 "Drawing2D in a `drawing` (engraving) or give it "
+                                 "construction=true")
         return d
 
     # -- used by primitives.build
