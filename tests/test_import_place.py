@@ -266,3 +266,33 @@ def test_png_default_scale():
     assert pixels_per_mm(400, 1000) == pytest.approx(2.0)
     assert pixels_per_mm(1000, 400, dpi=96) == pytest.approx(96 / 25.4)
     assert pixels_per_mm(1000, 400, width=500) == pytest.approx(0.5)
+
+
+def test_a_drawing_of_19000_holes_is_checked_within_the_budget(tmp_path):
+    """A 100 x 190 array of holes in one outline as a Drawing2D (issue 49: `aidl check` ran
+    past 300 s): the drawing's loops are nested by their boxes, and the openings check takes
+    a face's own holes as its own (no W0515 for each); the check ends within the budget,
+    ok or with a located E0304, never hung."""
+    import subprocess
+    import sys
+    import time
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.units = 4                                   # mm
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (1000, 0), (1000, 1900), (0, 1900)], close=True)
+    for i in range(100):
+        for j in range(190):
+            msp.add_circle((5 + 10 * i, 5 + 10 * j), 2)
+    doc.saveas(tmp_path / "big.dxf")
+    (tmp_path / "p.aidl").write_text('solid p {\n    d = Drawing2D("big.dxf")\n}\n')
+    t0 = time.monotonic()
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "p.aidl"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    wall = time.monotonic() - t0
+    assert wall < 15 * 1.25 + 10, wall             # the 15 s budget, and the start-up
+    assert r.returncode in (0, 1) and "internal error" not in r.stderr
+    said = r.stdout + r.stderr
+    assert "W0515" not in said
+    if r.returncode == 1:
+        assert "p.aidl:1:1: error[E0304]" in said, said

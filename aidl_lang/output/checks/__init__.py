@@ -101,7 +101,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
             covered = _report_openings(a, s, min_wall, sink, d.shapes)
             _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
-            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink)
+            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink,
+                         tick=lambda ahead=0.0: tick(s, ahead))
             tick(s)
             if min_wall > 0:
                 _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,

@@ -183,17 +183,19 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                           "past the edge (e.g. by 1 mm) so that the intent is explicit")
 
 
-def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink) -> None:
+def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
+                 tick=lambda ahead=0.0: None) -> None:
     """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
     of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
-    shapes (two solids that nearly meet around a gap)."""
+    shapes (two solids that nearly meet around a gap).  ``tick()``: the compile's deadline,
+    looked at as the openings are searched."""
     inner = [P for P in loops if _signed(P) < 0]
     if not inner:
         return
     hb = np.array([c.region.bounds() for c in cuts if c.region is not None
                    and not c.region.is_empty()], dtype=float).reshape(-1, 4)
     limit = max(2 * t * t, 1.0)
-    _check_enclosed(d, s, [P for P in inner if -_signed(P) >= limit], cuts, sink)
+    _check_enclosed(d, s, [P for P in inner if -_signed(P) >= limit], cuts, sink, tick)
     for P in inner:
         area = -_signed(P)
         if area >= limit:
@@ -243,7 +245,8 @@ def _free_name(s: Structure, base: str) -> str:
     return name
 
 
-def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink) -> None:
+def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink,
+                    tick=lambda ahead=0.0: None) -> None:
     """W0515 for each opening of part ``s`` (``openings``: clockwise loops of its final shape,
     each of at least :func:`_check_voids`' limit) that no hole cuts or covers (no hole shape
     of the part meets it; candidates by :func:`.nearby.box_pairs`, so a plate of 5,000 holes
@@ -251,9 +254,12 @@ def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink) -> None:
     window the program never declares (a dinosaur's legs and belly).  Left alone: an
     opening framed by faces of several solid structures (a telephone's cradle between its
     base and handset, each placed by a constraint), or by faces that only abut, none
-    overlapping another (a frame of bars laid edge to edge): built to enclose it."""
+    overlapping another (a frame of bars laid edge to edge): built to enclose it; and an
+    opening inside one face's own outer loop, which is that face's own hole (a ``Drawing2D``
+    of 19,000 holes, a polygon drawn with a hole), found by boxes and one point test each."""
     if not openings:
         return
+    own = _own_outlines(d, s)
     holes = [d.shapes[c.hole] for c in cuts
              if d.shapes.get(c.hole) is not None and not d.shapes[c.hole].is_empty()]
     boxes = [(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()) for P in openings]
@@ -264,10 +270,56 @@ def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink) -> None:
         for i, j in pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]:
             near.setdefault(int(i), []).append(holes[int(j) - n])
     for k, P in enumerate(openings):
+        if k % 64 == 0:
+            tick()
+        if _inside_one_face(P, own):
+            continue                          # a face's own hole (a drawing's inner loop)
         region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
         if region.is_empty() or any(_area(h ^ region) > MIN_AREA for h in near.get(k, ())):
             continue                          # a hole cuts it, or is declared over it
         _report_enclosed(d, s, P, -_signed(P), region, sink)
+
+
+def _own_outlines(d: Drawing, s: Structure) -> tuple:
+    """The outer loops (counter-clockwise polylines) of every face of part ``s``'s solids and
+    their boxes (k x 4): ``(loops, boxes)``."""
+    outer = []
+    for t, faces in d.own.items():
+        if t.kind != "solid" or not t.is_within(s):
+            continue
+        for _, f in faces:
+            if f is None or f.is_empty():
+                continue
+            outer += [P for P in (np.asarray(q, dtype=float) for q in f.to_polygons())
+                      if len(P) >= 3 and _signed(P) > 0]
+    boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+                      for P in outer], dtype=float).reshape(-1, 4)
+    return outer, boxes
+
+
+def _inside_one_face(P, own) -> bool:
+    """Opening ``P`` (a clockwise polyline) lies inside the outer loop of one face (its mean
+    vertex within that loop, the loop's box around its own): the face's own hole, since the
+    face would otherwise cover it."""
+    outer, boxes = own
+    if not len(boxes):
+        return False
+    x0, y0 = P.min(axis=0)
+    x1, y1 = P.max(axis=0)
+    p = P.mean(axis=0)
+    cand = np.flatnonzero((boxes[:, 0] <= x0) & (boxes[:, 1] <= y0) & (boxes[:, 2] >= x1)
+                          & (boxes[:, 3] >= y1))
+    return any(_inside_loop(p, outer[j]) for j in cand)
+
+
+def _inside_loop(p, P) -> bool:
+    """Point ``p`` inside the closed polyline ``P`` (k x 2), by the even-odd rule."""
+    X, Y = P[:, 0], P[:, 1]
+    X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
+    cond = (Y > p[1]) != (Y2 > p[1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xs = X + (p[1] - Y) * (X2 - X) / (Y2 - Y)
+    return bool(np.count_nonzero(cond & (p[0] < xs)) % 2)
 
 
 def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> None:
