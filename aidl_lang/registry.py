@@ -203,7 +203,8 @@ _DEFS = {
                      A("roles", "string", None, "\"laser\": black and blue cut, green "
                        "engraved, red left out (Boxes.py)", kw_only=True)],
                     doc="A .dxf/.svg file beside the program as exact curves, where the "
-                        "file puts it (at= moves it); inner loops are holes.",
+                        "file puts it (at= moves it); inner loops are holes; cut=, engrave=, "
+                        "ignore= (layers or colours), roles=\"laser\", close_tolerance=.",
                     members=DRAWING_MEMBERS),
     "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                    doc="Open chain of lines.",
