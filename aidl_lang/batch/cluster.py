@@ -79,9 +79,20 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
                 on_row(row)
                 fut.release()
         except BaseException:
+            _quiet_shutdown()
             client.cancel(futures)
             raise
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+def _quiet_shutdown() -> None:
+    """Mute Dask's and Tornado's loggers for an interrupted run's shutdown: cancelling
+    mid-flight makes distributed's own callbacks log tracebacks at ERROR (a NameError in
+    ``distributed.utils.sync``'s cancel, seen on a fresh clone), which reached the user
+    beside the one line an interrupt prints (batch/command.py)."""
+    import logging
+    for name in ("distributed", "tornado", "asyncio"):
+        logging.getLogger(name).setLevel(logging.CRITICAL + 1)
