@@ -69,7 +69,7 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "lsp", "serve", "mcp",
+SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "lsp", "serve", "studio", "mcp",
                "batch", "prompt", "generate", "eval")
 
 
@@ -253,6 +253,25 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                           "(http://127.0.0.1:PORT/)")
     v.add_argument("file")
     v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    so = add("studio", help="the studio in the browser: gallery, forms, code, 3D, downloads, "
+                            "for many users (http://HOST:PORT/)",
+             description="Serve AIDL's studio: a gallery of every example and generator with its "
+                         "parameters as a form, a code pane with diagnostics, the flat sheet and "
+                         "the assembled 3D view, downloads for every machine format, share links "
+                         "and embeds. Every compile runs in a memory- and time-limited worker; "
+                         "no program reads a file of this machine. docs/studio.md")
+    so.add_argument("--host", default="127.0.0.1",
+                    help="address to listen on (0.0.0.0: every interface, to serve others)")
+    so.add_argument("--port", type=_port, default=8780, help="port (0: any free one)")
+    so.add_argument("--processes", type=int, default=1, metavar="N",
+                    help="server processes behind the one port (uvicorn workers)")
+    so.add_argument("--compilers", type=int, default=2, metavar="N",
+                    help="compile worker processes per server process")
+    so.add_argument("--rate", default=None, metavar="N/PERIOD",
+                    help="requests per client, such as 300/minute (the default)")
+    so.add_argument("--memory", type=int, default=None, metavar="MB",
+                    help="memory cap of one compile worker (default 1500)")
+    _budget_arg(so)
     m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
             description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
                         "(language reference, prompt, stdlib, examples) to an MCP host over "
@@ -921,6 +940,21 @@ def cmd_serve(args) -> int:
     return serve(args.file, args.port)
 
 
+def cmd_studio(args) -> int:
+    from ..studio import studio
+    if not 1 <= args.processes <= 64 or not 1 <= args.compilers <= 64:
+        return _usage("--processes and --compilers take 1 to 64")
+    if args.rate is not None:
+        from limits import parse
+        try:
+            parse(args.rate)
+        except ValueError:
+            return _usage(f"--rate expects a count per period such as 300/minute, got "
+                          f"`{args.rate}`")
+    return studio(args.host, args.port, args.processes, args.compilers, rate=args.rate,
+                  memory_mb=args.memory, budget=getattr(args, "budget", None))
+
+
 def cmd_batch(args) -> int:
     from ..batch.command import main as batch_main
     return batch_main(args)
@@ -953,7 +987,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "mcp": cmd_mcp,
+               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "studio": cmd_studio, "mcp": cmd_mcp,
                "batch": cmd_batch, "import": cmd_import}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS

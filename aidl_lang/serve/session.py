@@ -83,26 +83,28 @@ class Session:
         self.last: dict = {}                      # timings and warm/cold of the last compile
 
     # ------------------------------------------------------------------ public
-    def load(self) -> dict:
-        """Re-read and recompile the file; keep customizer values whose param still exists
-        and whose default did not change.  Never raises: an internal error (a bug in aidl)
+    def load(self, source: str | None = None) -> dict:
+        """Re-read and recompile the file (or compile ``source``, the program's text given by
+        the caller, ``aidl studio``'s code pane: the file is then only its name and where its
+        imports and drawings are resolved from); keep customizer values whose param still
+        exists and whose default did not change.  Never raises: an internal error (a bug in aidl)
         becomes an ``E0900`` diagnostic beside the last good picture, is logged, and the next
         save is compiled as usual."""
         t0 = time.perf_counter()
         try:
-            return self._load(t0)
+            return self._load(t0, source)
         except Exception as e:          # noqa: BLE001 - a bug must not stop the live reload
             self.program = None
             self.solver = self._row_keys = None
             self._dof_pending = self._checks_pending = None
             return self._publish(Result(_internal(e, "compiling the file")), t0)
 
-    def _load(self, t0: float) -> dict:
+    def _load(self, t0: float, source: str | None = None) -> dict:
         sink = DiagnosticSink()
         try:
             # as `aidl check` reads it: a regular file only (a FIFO swapped in is refused, not
             # waited on with the lock held), non-blocking, at most 1000000 bytes, UTF-8
-            src = read_program(self.path)
+            src = read_program(self.path) if source is None else source
         except SourceRefused as e:
             sink.add(e.diagnostic(self.name))
             self.program = None

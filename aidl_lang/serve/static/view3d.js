@@ -2,7 +2,8 @@
 // see its LICENSE and README.md). The server's GLB (/download/glb: every part extruded by its
 // thickness, placed by its `Place`, one named node per part in the flat view's colours) is
 // loaded into a scene with orbit (drag), zoom (wheel) and pan (right-drag); app.js calls load()
-// on every new picture while the 3D view is shown, and the camera stays where the user left it.
+// on every new picture while the 3D view is shown, and the camera stays where the user left it
+// (aidl studio loads a GLB blob the same way, with `reframe` when another design is opened).
 import * as THREE from "three";
 import { GLTFLoader } from "/static/vendor/three/examples/jsm/loaders/GLTFLoader.js";
 import { OrbitControls } from "/static/vendor/three/examples/jsm/controls/OrbitControls.js";
@@ -56,9 +57,10 @@ function frame() {    // look at the whole product from above its front-left cor
   state.controls.update();
 }
 
-async function load(url) {
+async function load(url, opts = {}) {   // opts.reframe: a new design, look at all of it again
   if (!state.renderer) init();
   const seq = ++state.seq;
+  if (opts.reframe) state.framed = false;
   try {
     const gltf = await new GLTFLoader().loadAsync(url);
     if (seq !== state.seq) return;               // a newer picture was asked for meanwhile

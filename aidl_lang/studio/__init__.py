@@ -1,0 +1,85 @@
+"""``aidl studio``: AIDL in the browser for people who write no code, served to many at once
+(issue 53; docs/studio.md).
+
+A gallery of every example and standard-library generator (:mod:`.gallery`), each opened with
+its parameters as a form; a code pane (CodeMirror 6, vendored) with diagnostics as you type and
+``aidl docs`` on hover; the flat sheet and the assembled 3D view side by side; material and
+machine settings and a download of every output format, the cutting sheet included; "Describe
+the part" (the model loop, :mod:`.describe`, when the operator configures an endpoint); share
+links and embeds that carry the program in the URL.
+
+* :mod:`.app`: the Starlette routes, rate limits and the busy answer.
+* :mod:`.compiler`: what a compile worker does (preview, download, thumbnail).
+* :mod:`.sessions`: a tab's upload folder, the only files its program can read.
+* ``static/``: the page (HTML, JS, CSS; CodeMirror under ``static/vendor/``).
+
+A separate command from ``aidl serve``: ``serve FILE`` previews one file of this machine for its
+owner (bound to 127.0.0.1, reading and watching that file); the studio reads no file of the
+machine, keeps each visitor's work in their page, and is built to face strangers.
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import socket
+import sys
+import tempfile
+
+HOST = "127.0.0.1"
+
+
+def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: int = 2,
+           quiet: bool = False, **settings) -> int:
+    """Serve the studio on http://HOST:PORT/ until interrupted: ``processes`` server processes
+    (uvicorn workers) behind the one port, each with ``compilers`` compile worker processes;
+    ``settings``: the other fields of :class:`.app.Settings` (``rate``, ``wait``, ``budget``,
+    ``memory_mb``, ...).  ``port=0`` picks a free port.  Returns the exit status (2: the port
+    is taken or a setting is wrong)."""
+    try:
+        import uvicorn
+        from uvicorn.supervisors import Multiprocess
+        import limits  # noqa: F401 - the rate limiter (a core dependency)
+    except ImportError as e:
+        print(f"aidl: error: `aidl studio` cannot import {e.name}, one of aidl's dependencies: "
+              "reinstall aidl (pip install -e /path/to/aidl)", file=sys.stderr)
+        return 2
+    from .app import Settings
+    s = Settings.from_env()
+    s.compilers = compilers
+    for k, v in settings.items():
+        if v is not None:
+            setattr(s, k, v)
+    made = not s.data
+    if made:
+        s.data = tempfile.mkdtemp(prefix="aidl-studio-")
+    os.environ.update(s.to_env())           # every server process reads its settings from here
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((host, port))
+    except OSError as e:
+        print(f"aidl: error: cannot listen on {host}:{port}: {e.strerror or e}; "
+              "choose another with --port", file=sys.stderr)
+        return 2
+    sock.listen(1024)
+    port = sock.getsockname()[1]
+    config = uvicorn.Config("aidl_lang.studio.app:create_app", factory=True,
+                            log_level="warning", timeout_graceful_shutdown=2, lifespan="on",
+                            workers=max(1, processes), proxy_headers=True)
+    server = uvicorn.Server(config)
+    shown = f"[{host}]" if ":" in host else host
+    print(f"aidl studio: http://{shown}:{port}/  ({max(1, processes)} process"
+          f"{'es' if processes > 1 else ''} x {compilers} compilers; Ctrl-C stops)", flush=True)
+    try:
+        if processes > 1:
+            Multiprocess(config, target=server.run, sockets=[sock]).run()
+        else:
+            server.run(sockets=[sock])
+    finally:
+        if made:
+            shutil.rmtree(s.data, ignore_errors=True)
+    return 0
+
+
+__all__ = ["studio", "HOST"]

@@ -1,0 +1,477 @@
+"""The studio's web server: Starlette routes over a pool of compile workers (issue 53).
+
+Every route but the page's files answers JSON (or a file); the server keeps no program: the
+page sends the program text with each request, so any process behind the port can answer any
+request (several ``uvicorn`` workers, several machines).
+
+Routes:
+
+* ``GET /``, ``GET /embed``: the page (the embed shows one design's picture and sliders, for an
+  ``<iframe>`` on another site).  ``GET /static/NAME``: its files, from a table read at start-up
+  (no path is joined onto the filesystem).
+* ``GET /api/config``: formats, machines, limits, whether "Describe the part" is on.
+* ``GET /api/gallery``, ``GET /api/gallery/ID``, ``GET /api/thumb/ID.svg``: the gallery.
+* ``GET /api/docs?name=NAME``: ``aidl docs NAME`` (the code pane's hover).
+* ``POST /api/session``, ``POST /api/close``: a tab's session (its upload folder).
+* ``POST /api/upload?sid=..&name=..`` (the file as the body), ``GET /api/files?sid=..``,
+  ``POST /api/delete``: a session's drawings and imports.
+* ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
+  params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
+* ``POST /api/describe``: ``{"sid", "description"}`` -> the model loop's rounds as
+  newline-delimited JSON (only when the operator set ``AIDL_STUDIO_MODEL_URL``).
+
+Many users: each compile runs in a worker process (:mod:`aidl_lang.workers`) with the
+compile's budget, a wall-time limit and a memory cap; a request waits at most
+``wait`` seconds for a worker and at most ``queue`` requests wait, past that the answer is
+``503`` with ``Retry-After`` and a message the page shows.  Each client (its address; behind
+a proxy, uvicorn's ``--forwarded-allow-ips``) has a rate limit (``limits``' moving window):
+past it, ``429`` with ``Retry-After``.  No request reads or writes a file outside its
+session's folder (:mod:`.sessions`); programs import only from there and the standard library.
+"""
+from __future__ import annotations
+
+import base64
+import contextlib
+import hashlib
+import json
+import os
+import re
+from dataclasses import dataclass, field
+from importlib import resources
+
+from starlette.applications import Starlette
+from starlette.concurrency import run_in_threadpool
+from starlette.requests import Request
+from starlette.responses import JSONResponse, PlainTextResponse, Response, StreamingResponse
+from starlette.routing import Route
+
+from .. import workers as W
+from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES
+from . import compiler
+from .sessions import Folders, Refused, new_id
+
+TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
+         "css": "text/css; charset=utf-8", "json": "application/json",
+         "txt": "text/plain; charset=utf-8", "md": "text/plain; charset=utf-8",
+         "svg": "image/svg+xml", "png": "image/png"}
+MAX_VALUES = 256            # customizer values in one request
+MAX_VALUE = 256             # characters of one value (and of a name)
+MAX_BODY = MAX_SOURCE_BYTES + 65_536
+
+
+@dataclass
+class Settings:
+    """The operator's settings (``aidl studio`` options, passed to every server process as
+    ``AIDL_STUDIO_*`` environment variables, see :meth:`from_env`)."""
+
+    data: str = ""                  # the sessions' folders live here
+    compilers: int = 2              # compile worker processes per server process
+    memory_mb: int = 1500           # address-space cap of one compile worker
+    budget: float = 1.0             # factor of the default evaluation budget
+    wall_factor: float = 2.0        # a compile is killed past this many times the budget's wall
+    wait: float = 10.0              # s a request waits for a free worker before "busy"
+    queue: int = 16                 # requests that may wait at once before "busy" at once
+    rate: str = "300/minute"        # per client (``limits`` notation)
+    describes: int = 2              # model loops that may run at once
+    model: dict | None = field(default=None, repr=False)   # describe.model_config()
+
+    ENV = {"data": "AIDL_STUDIO_DATA", "compilers": "AIDL_STUDIO_COMPILERS",
+           "memory_mb": "AIDL_STUDIO_MEMORY_MB", "budget": "AIDL_STUDIO_BUDGET",
+           "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
+           "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES"}
+
+    @classmethod
+    def from_env(cls, env=os.environ) -> "Settings":
+        s = cls()
+        for key, var in cls.ENV.items():
+            if env.get(var):
+                setattr(s, key, type(getattr(s, key))(env[var]))
+        from .describe import model_config
+        s.model = model_config(env)
+        return s
+
+    def to_env(self) -> dict[str, str]:
+        return {var: str(getattr(self, key)) for key, var in self.ENV.items()}
+
+    @property
+    def seconds(self) -> float:
+        """The wall-time limit of one compile request."""
+        return self.wall_factor * DEFAULT_BUDGET.seconds * self.budget
+
+
+def static_files() -> dict[str, bytes]:
+    """The page's files: the studio's ``static/`` folder, and from ``aidl serve``'s the 3D view
+    (``view3d.js``) and three.js (``vendor/three/...``)."""
+    files: dict[str, bytes] = {}
+
+    def walk(folder, prefix: str, keep) -> None:
+        for f in folder.iterdir():
+            name = prefix + f.name
+            if f.is_file() and keep(name):
+                files[name] = f.read_bytes()
+            elif f.is_dir() and f.name != "__pycache__":
+                walk(f, name + "/", keep)
+    walk(resources.files("aidl_lang.serve") / "static", "",
+         lambda n: n == "view3d.js" or n.startswith("vendor/three/"))
+    walk(resources.files(__package__) / "static", "", lambda n: True)
+    return files
+
+
+def _csp(page: bytes, embed: bool) -> str:
+    """The page's Content-Security-Policy: scripts only from this server (and the page's own
+    inline scripts by hash), pictures from here, data: and blob: (the preview is an SVG blob);
+    the embed may be framed by any site, the studio only by itself."""
+    hashes = " ".join(
+        "'sha256-" + base64.b64encode(hashlib.sha256(m.group(1)).digest()).decode() + "'"
+        for m in re.finditer(rb"<script[^>]*>(.*?)</script>", page, re.S) if m.group(1).strip())
+    return ("default-src 'self'; script-src 'self' " + hashes + "; "
+            "style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; "
+            "connect-src 'self' blob: data:; worker-src 'self' blob:; object-src 'none'; "
+            "base-uri 'none'; form-action 'self'; "
+            + ("frame-ancestors *" if embed else "frame-ancestors 'self'"))
+
+
+class Limited(Exception):
+    """A request refused for the server's sake: ``status`` 429 or 503, ``retry`` seconds."""
+
+    def __init__(self, status: int, message: str, retry: int) -> None:
+        super().__init__(message)
+        self.status, self.message, self.retry = status, message, retry
+
+
+def refusal(status: int, message: str, retry: int | None = None, **extra) -> JSONResponse:
+    headers = {"Retry-After": str(retry)} if retry is not None else None
+    return JSONResponse({"error": message, **extra}, status_code=status, headers=headers)
+
+
+async def read_json(request: Request) -> dict:
+    """The request's JSON object, at most :data:`MAX_BODY` bytes.  Raises :class:`Refused`."""
+    size = request.headers.get("content-length")
+    if size is not None and (not size.isdigit() or int(size) > MAX_BODY):
+        raise Refused(f"a request has at most {MAX_BODY:,} bytes")
+    body = bytearray()
+    async for chunk in request.stream():
+        body += chunk
+        if len(body) > MAX_BODY:
+            raise Refused(f"a request has at most {MAX_BODY:,} bytes")
+    try:
+        doc = json.loads(body)
+    except ValueError:
+        raise Refused("the request is not JSON") from None
+    if not isinstance(doc, dict):
+        raise Refused("the request is not a JSON object")
+    return doc
+
+
+def program_of(doc: dict) -> tuple[str, dict]:
+    """``(source, values)`` of a view or download request, checked.  Raises :class:`Refused`."""
+    source = doc.get("source")
+    if not isinstance(source, str):
+        raise Refused("give the program as `source` (text)")
+    if len(source.encode("utf-8", "surrogatepass")) > MAX_SOURCE_BYTES:
+        raise Refused(f"a program has at most {MAX_SOURCE_BYTES:,} bytes")
+    values = doc.get("values") or {}
+    if not isinstance(values, dict) or len(values) > MAX_VALUES:
+        raise Refused(f"`values` is an object of at most {MAX_VALUES} param values")
+    out = {}
+    for k, v in values.items():
+        if isinstance(v, bool) or not isinstance(v, (str, int, float)) \
+                or len(k) > MAX_VALUE or len(str(v)) > MAX_VALUE:
+            raise Refused(f"the value of `{str(k)[:40]}` is not a short text or number")
+        out[k] = str(v)
+    return source, out
+
+
+class Studio:
+    """The server's state: settings, compile workers, session folders, rate limiter, the
+    gallery's thumbnails."""
+
+    def __init__(self, settings: Settings) -> None:
+        from limits import parse
+        from limits.storage import MemoryStorage
+        from limits.strategies import MovingWindowRateLimiter
+        self.settings = settings
+        self.folders = Folders(settings.data)
+        memory = settings.memory_mb << 20 if settings.memory_mb > 0 else None
+        self.pool = W.Pool([W.Worker(compiler.handler, (), memory)
+                            for _ in range(max(1, settings.compilers))])
+        self.limiter = MovingWindowRateLimiter(MemoryStorage())
+        self.rate = parse(settings.rate)
+        self.affinity: dict[str, W.Worker] = {}
+        self.thumbs: dict[str, str] = {}
+        self.describing = 0
+        self.static = static_files()
+        self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0}
+
+    def check_rate(self, request: Request, cost: int = 1) -> None:
+        """Raises :class:`Limited` (429) when the client is past its rate."""
+        who = request.client.host if request.client else "?"
+        if not self.limiter.hit(self.rate, who, cost=cost):
+            self.served["limited"] += 1
+            reset, _ = self.limiter.get_window_stats(self.rate, who)
+            retry = max(1, int(reset - __import__("time").time()) + 1)
+            raise Limited(429, f"too many requests from your address: at most {self.rate} "
+                               f"(this studio's limit); try again in {retry} s", retry)
+
+    async def compile(self, request_data: tuple, sid: str | None = None):
+        """Run one request in a compile worker; raises :class:`Limited` (503) when every
+        worker stays busy, and returns ``{"error": ...}`` for a compile stopped past its
+        time or memory."""
+        s = self.settings
+        if self.pool.waiting >= s.queue:
+            self.served["busy"] += 1
+            raise Limited(503, f"the studio is busy: {self.pool.waiting} changes are waiting "
+                               "for a compiler. Your design is kept here; it is compiled "
+                               "again in a few seconds.", 5)
+        prefer = self.affinity.get(sid) if sid else None
+        try:
+            answer, w = await run_in_threadpool(self.pool.request, request_data, s.seconds,
+                                                s.wait, prefer)
+        except W.Busy:
+            self.served["busy"] += 1
+            raise Limited(503, "the studio is busy: every compiler stayed busy for "
+                               f"{s.wait:g} s. Your design is kept here; it is compiled again "
+                               "in a few seconds.", 5) from None
+        except W.TimedOut:
+            self.served["timeouts"] += 1
+            return {"error": f"the compile took longer than {s.seconds:g} s and was stopped: "
+                             "build less (fewer copies, holes or constraints)"}
+        except W.Died:
+            return {"error": "the compile ran out of memory and was stopped: build less "
+                             "(fewer copies, holes or constraints)"}
+        except W.NotReady as e:
+            raise Limited(503, f"{e}; try again in a few seconds", 5) from None
+        self.served["compiles"] += 1
+        if sid:
+            if len(self.affinity) > 10_000:
+                self.affinity.clear()
+            self.affinity[sid] = w
+        if isinstance(answer, dict) and answer.pop("retire", False):
+            await run_in_threadpool(self._retire, w)
+        return answer
+
+    def _retire(self, w: W.Worker) -> None:
+        taken = self.pool.take()
+        try:
+            if taken is w:
+                w.stop()
+        finally:
+            self.pool.give(taken)
+
+    def stop(self) -> None:
+        self.pool.stop()
+
+
+def create_app(settings: Settings | None = None) -> Starlette:
+    """The studio app (``settings`` None: from the environment, as each ``uvicorn`` worker
+    process builds it)."""
+    if settings is None:
+        settings = Settings.from_env()
+    if not settings.data:
+        import tempfile
+        settings.data = tempfile.mkdtemp(prefix="aidl-studio-")
+    st = Studio(settings)
+    page = st.static["index.html"]
+    csp = {False: _csp(page, False), True: _csp(page, True)}
+
+    def guarded(handler, cost: int = 1):
+        async def endpoint(request: Request):
+            try:
+                st.check_rate(request, cost)
+                st.folders.sweep()
+                return await handler(request)
+            except Limited as e:
+                return refusal(e.status, e.message, e.retry, busy=e.status == 503)
+            except Refused as e:
+                return refusal(400, str(e))
+        return endpoint
+
+    def page_response(embed: bool) -> Response:
+        return Response(page, media_type=TYPES["html"],
+                        headers={"Content-Security-Policy": csp[embed],
+                                 "Cache-Control": "no-cache",
+                                 "X-Content-Type-Options": "nosniff",
+                                 "Referrer-Policy": "no-referrer"})
+
+    async def index(request):
+        return page_response(False)
+
+    async def embed(request):
+        return page_response(True)
+
+    async def static(request):
+        name = request.path_params["name"]
+        data = st.static.get(name)
+        if data is None:
+            return PlainTextResponse("not found", status_code=404)
+        kind = TYPES.get(name.rsplit(".", 1)[-1], "application/octet-stream")
+        return Response(data, media_type=kind, headers={"Cache-Control": "public, max-age=3600",
+                                                        "X-Content-Type-Options": "nosniff"})
+
+    async def config(request):
+        from ..output import FORMATS
+        return JSONResponse({
+            "formats": [{"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
+                         "assembled": f.assembled} for k, f in FORMATS.items()],
+            "machines": list(compiler.MACHINES),
+            "model": {"model": settings.model.get("model")} if settings.model else None,
+            "limits": {"source_bytes": MAX_SOURCE_BYTES, "rate": settings.rate,
+                       "seconds": settings.seconds,
+                       "upload_bytes": __import__("aidl_lang.studio.sessions",
+                                                  fromlist=["MAX_UPLOAD"]).MAX_UPLOAD}})
+
+    async def gallery_list(request):
+        from . import gallery
+        return JSONResponse([gallery.to_json(e, with_source=False) for e in gallery.entries()])
+
+    async def gallery_entry(request):
+        from . import gallery
+        e = gallery.entry(request.path_params["id"])
+        if e is None:
+            return refusal(404, "no such design in the gallery")
+        return JSONResponse(gallery.to_json(e, with_source=True))
+
+    async def thumb(request):
+        from . import gallery
+        eid = request.path_params["id"]
+        if gallery.entry(eid) is None:
+            return refusal(404, "no such design in the gallery")
+        svg = st.thumbs.get(eid)
+        if svg is None:
+            svg = await st.compile(("thumb", eid))
+            if not isinstance(svg, str):
+                svg = ""
+            st.thumbs[eid] = svg
+        if not svg:
+            return refusal(404, "this design has no picture")
+        return Response(svg, media_type=TYPES["svg"],
+                        headers={"Cache-Control": "public, max-age=3600",
+                                 "Content-Security-Policy": "default-src 'none'; style-src 'unsafe-inline'"})
+
+    async def docs(request):
+        from ..reference import lookup_text
+        name = request.query_params.get("name", "")
+        if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]{0,63}", name):
+            return JSONResponse({"text": None})
+        text, found = lookup_text(name)
+        return JSONResponse({"text": text if found else None})
+
+    async def session(request):
+        sid = new_id()
+        st.folders.folder(sid)
+        return JSONResponse({"sid": sid})
+
+    async def close(request):
+        doc = await read_json(request)
+        with contextlib.suppress(Refused):
+            st.folders.close(doc.get("sid"))
+        st.affinity.pop(doc.get("sid"), None)
+        return JSONResponse({"closed": True})
+
+    async def files(request):
+        return JSONResponse({"files": st.folders.files(request.query_params.get("sid", ""))})
+
+    async def upload(request):
+        from .sessions import MAX_UPLOAD
+        sid = request.query_params.get("sid", "")
+        name = request.query_params.get("name", "")
+        size = request.headers.get("content-length")
+        if size is not None and size.isdigit() and int(size) > MAX_UPLOAD:
+            raise Refused(f"`{name[:64]}` has {int(size):,} bytes; an upload has at most "
+                          f"{MAX_UPLOAD:,}")
+        body = bytearray()
+        async for chunk in request.stream():
+            body += chunk
+            if len(body) > MAX_UPLOAD:
+                raise Refused(f"an upload has at most {MAX_UPLOAD:,} bytes")
+        return JSONResponse(st.folders.upload(sid, name, bytes(body)))
+
+    async def delete(request):
+        doc = await read_json(request)
+        st.folders.delete(doc.get("sid", ""), doc.get("name", ""))
+        return JSONResponse({"files": st.folders.files(doc.get("sid", ""))})
+
+    async def view(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, values = program_of(doc)
+        answer = await st.compile(("view", sid, folder, source, values), sid)
+        if "error" in answer and "svg" not in answer:
+            return JSONResponse({"ok": False, "svg": None, "params": None, "diagnostics": [],
+                                 "error": answer["error"]})
+        return JSONResponse(answer)
+
+    async def download(request):
+        doc = await read_json(request)
+        folder = st.folders.folder(doc.get("sid", ""))
+        source, values = program_of(doc)
+        fmt = request.path_params["fmt"]
+        answer = await st.compile(("download", folder, source, values, fmt,
+                                   doc.get("settings") or {}), doc.get("sid"))
+        if isinstance(answer, dict):
+            return JSONResponse(answer, status_code=422)
+        data, name, media = answer
+        return Response(data, media_type=media,
+                        headers={"Content-Disposition": f'attachment; filename="{name}"',
+                                 "X-Content-Type-Options": "nosniff"})
+
+    async def describe(request):
+        if not settings.model:
+            return refusal(404, "this studio has no model endpoint (the operator sets "
+                                "AIDL_STUDIO_MODEL_URL)")
+        doc = await read_json(request)
+        folder = st.folders.folder(doc.get("sid", ""))
+        text = doc.get("description")
+        if st.describing >= settings.describes:
+            raise Limited(503, "the studio is busy: every model conversation slot is taken; "
+                               "try again in a minute", 30)
+        from .describing import stream
+        st.describing += 1
+
+        async def events():
+            try:
+                async for event in stream(text, settings.model, folder):
+                    yield (json.dumps(event) + "\n").encode()
+            finally:
+                st.describing -= 1
+        return StreamingResponse(events(), media_type="application/x-ndjson",
+                                 headers={"Cache-Control": "no-store"})
+
+    async def stats(request):
+        # for the operator and the load test: answered to this machine only
+        if not request.client or request.client.host not in ("127.0.0.1", "::1"):
+            return PlainTextResponse("not found", status_code=404)
+        return JSONResponse({**st.served, "waiting": st.pool.waiting,
+                             "workers": [{"pid": w.proc.pid if w.proc else None,
+                                          "rss": w.rss(), "requests": w.requests,
+                                          "restarts": w.restarts} for w in st.pool.workers]})
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        try:
+            yield
+        finally:
+            await run_in_threadpool(st.stop)
+
+    routes = [
+        Route("/", index), Route("/embed", embed),
+        Route("/static/{name:path}", static),
+        Route("/api/config", config),
+        Route("/api/gallery", guarded(gallery_list)),
+        Route("/api/gallery/{id:path}", guarded(gallery_entry)),
+        Route("/api/thumb/{id:path}.svg", guarded(thumb)),
+        Route("/api/docs", guarded(docs)),
+        Route("/api/session", guarded(session), methods=["POST"]),
+        Route("/api/close", guarded(close), methods=["POST"]),
+        Route("/api/files", guarded(files)),
+        Route("/api/upload", guarded(upload, 4), methods=["POST"]),
+        Route("/api/delete", guarded(delete), methods=["POST"]),
+        Route("/api/view", guarded(view), methods=["POST"]),
+        Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
+        Route("/api/describe", guarded(describe, 20), methods=["POST"]),
+        Route("/api/stats", stats),
+    ]
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.state.studio = st
+    return app

@@ -1,0 +1,489 @@
+// aidl studio: the page. The server keeps no program: every request carries the program text,
+// the customizer's values and the material settings (aidl_lang/studio/app.py).
+import { createEditor } from "/static/vendor/codemirror/aidl-editor.js";
+import "/static/view3d.js";
+
+const $ = (id) => document.getElementById(id);
+const EMBED = location.pathname === "/embed";
+const state = {
+  sid: null, source: "", values: {}, params: [], paramKey: "", entry: null,
+  seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
+  config: null, svgUrl: null, view: null,
+};
+// read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
+window.studio = { ready: false, views: 0, glbs: 0, view: null, state, errors: [] };
+
+// ------------------------------------------------------------------ requests
+async function post(path, body, raw = false) {
+  const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
+                                body: JSON.stringify(body) });
+  if (r.status === 429 || r.status === 503) {
+    const doc = await r.json().catch(() => ({}));
+    const wait = Number(r.headers.get("Retry-After")) || 5;
+    showBusy(doc.error || "the studio is busy", wait);
+    const e = new Error(doc.error || "busy"); e.retry = wait; throw e;
+  }
+  hideBusy();
+  if (raw) return r;
+  return r.json();
+}
+
+function showBusy(message, wait) {
+  const b = $("busy");
+  b.textContent = `${message} (trying again in ${wait} s)`;
+  b.hidden = false;
+}
+function hideBusy() { $("busy").hidden = true; }
+function status(text) { $("status").textContent = text; }
+
+// ------------------------------------------------------------------ the program
+function settings() {
+  const num = (id) => { const v = $(id).value; return v === "" ? null : Number(v); };
+  return { thickness: num("thickness"), kerf: num("kerf"), machine: $("machine").value || "laser",
+           layout: $("layout").checked, sheet: [num("sheet-w") || 600, num("sheet-h") || 400] };
+}
+
+function chosen() {            // the customizer's values that differ from the program's
+  const out = {};
+  for (const p of state.params) {
+    const v = state.values[p.name];
+    if (v !== undefined && v !== p.default) out[p.name] = setText(p, v);
+  }
+  return out;
+}
+
+function fmt(x) { return x == null ? "" : String(Math.round(x * 1e6) / 1e6); }
+function setText(p, v) {       // the value as `aidl render --set` takes it
+  if (p.kind === "length") return `${fmt(v)}mm`;
+  if (p.kind === "angle") return `${fmt(v)}deg`;
+  if (p.kind === "bool") return v ? "true" : "false";
+  if (p.kind === "string") return JSON.stringify(String(v));
+  return fmt(v);
+}
+
+function schedule(delay = 200) {
+  clearTimeout(state.timer);
+  state.timer = setTimeout(compile, delay);
+}
+
+async function compile() {
+  if (state.inflight) { state.again = true; return; }
+  state.inflight = true;
+  const seq = ++state.seq;
+  status("compiling…");
+  const t0 = performance.now();
+  try {
+    const values = chosen();
+    const view = await post("/api/view", { sid: state.sid, source: state.source, values });
+    if (seq === state.seq) {
+      show(view, performance.now() - t0);
+      // a shared link's values are known by name before the params' kinds: send them again
+      if (JSON.stringify(chosen()) !== JSON.stringify(values)) state.again = true;
+    }
+  } catch (e) {
+    window.studio.errors.push(String(e.message || e));
+    if (e.retry) { state.again = false; setTimeout(compile, e.retry * 1000); }
+    else status("the server did not answer: " + (e.message || e));
+  } finally {
+    state.inflight = false;
+    if (state.again) { state.again = false; compile(); }
+  }
+}
+
+function show(view, ms) {
+  state.view = view;
+  window.studio.view = view;
+  const diags = view.diagnostics || [];
+  const errors = diags.filter((d) => d.severity === "error").length;
+  if (view.error) status(view.error);
+  else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
+                      : `${errors} error${errors === 1 ? "" : "s"}: showing the last good picture`);
+  $("flat").classList.toggle("stale", !view.ok);
+  if (view.svg && view.svg !== state.lastSvg) {
+    state.lastSvg = view.svg;
+    if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
+    state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
+    $("flat-img").src = state.svgUrl;
+  } else if (!view.svg && !state.lastSvg) {
+    $("flat-img").removeAttribute("src");
+  }
+  showDiagnostics(diags, view.error);
+  if (view.params) showParams(view.params);
+  window.studio.views += 1;
+  if (view.ok) load3d();
+}
+
+function showDiagnostics(diags, error) {
+  const ul = $("diagnostics");
+  ul.innerHTML = "";
+  if (error) diags = [{ severity: "error", code: "", message: error }];
+  if (!diags.length) {
+    const li = document.createElement("li"); li.className = "ok";
+    li.textContent = "No messages: the program checks.";
+    ul.appendChild(li);
+  }
+  for (const d of diags) {
+    const li = document.createElement("li");
+    li.className = d.severity;
+    const where = d.span ? `${d.span.line}:${d.span.column} ` : "";
+    li.textContent = `${where}${d.severity}${d.code ? "[" + d.code + "]" : ""}: ${d.message}`;
+    if (d.hint) {
+      const h = document.createElement("div"); h.className = "hint";
+      h.textContent = "help: " + d.hint; li.appendChild(h);
+    }
+    if (d.span && editor) li.onclick = () => editor.goto(d.span.line, d.span.column);
+    ul.appendChild(li);
+  }
+  if (editor) editor.setDiagnostics(diags.filter((d) => d.span && (!d.span.file || d.span.file.endsWith("main.aidl")))
+    .map((d) => ({ from: d.span.line, col: d.span.column, to_line: d.span.end_line,
+                   to_col: d.span.end_column, severity: d.severity === "note" ? "info" : d.severity,
+                   message: d.message + (d.hint ? "\nhelp: " + d.hint : ""), code: d.code })));
+}
+
+// ------------------------------------------------------------------ the customizer
+function showParams(params) {
+  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.min, p.max, p.step, p.default]));
+  state.params = params;
+  const form = $("params");
+  if (key !== state.paramKey) {
+    state.paramKey = key;
+    form.innerHTML = "";
+    if (!params.length) form.textContent = "This program declares no `param`.";
+    for (const p of params) form.appendChild(control(p));
+  }
+  for (const p of params) {
+    if (state.values[p.name] === undefined) state.values[p.name] = p.value;
+    const row = form.querySelector(`[data-name="${CSS.escape(p.name)}"]`);
+    if (!row) continue;
+    setControl(row, p, state.values[p.name]);
+    row.classList.toggle("changed", state.values[p.name] !== p.default);
+  }
+}
+
+function control(p) {
+  const row = document.createElement("div");
+  row.className = "param"; row.dataset.name = p.name;
+  const name = document.createElement("span"); name.className = "name"; name.textContent = p.name;
+  row.appendChild(name);
+  const line = document.createElement("div"); line.className = "line";
+  row.appendChild(line);
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", v !== p.default); schedule(30); };
+  if (p.kind === "bool") {
+    const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name;
+    cb.onchange = () => change(cb.checked);
+    line.appendChild(cb);
+  } else if (p.kind === "string") {
+    const t = document.createElement("input"); t.type = "text"; t.name = p.name;
+    t.oninput = () => change(t.value);
+    line.appendChild(t);
+  } else {
+    const r = document.createElement("input");
+    Object.assign(r, { type: "range", name: p.name, min: p.min, max: p.max, step: p.step });
+    r.setAttribute("aria-label", p.name);
+    const n = document.createElement("input");
+    Object.assign(n, { type: "number", name: p.name + "-value", step: p.step });
+    r.oninput = () => { n.value = r.value; change(Number(r.value)); };
+    n.onchange = () => { const v = Number(n.value); if (Number.isFinite(v)) { r.value = v; change(v); } };
+    const u = document.createElement("span"); u.className = "unit";
+    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+    line.append(r, n, u);
+  }
+  return row;
+}
+
+function setControl(row, p, v) {
+  const inputs = row.querySelectorAll("input");
+  if (p.kind === "bool") inputs[0].checked = !!v;
+  else if (p.kind === "string") inputs[0].value = v;
+  else if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
+    inputs[0].value = v; inputs[1].value = v;
+  }
+}
+
+$("reset").onclick = () => { state.values = {}; state.paramKey = ""; schedule(0); };
+
+// ------------------------------------------------------------------ 3D and downloads
+async function fetchFile(ext, extra = {}) {
+  const r = await post(`/api/download/${ext}`, { sid: state.sid, source: state.source,
+                                                 values: chosen(), settings: { ...settings(), ...extra } }, true);
+  if (!r.ok) {
+    const doc = await r.json().catch(() => ({}));
+    const msg = (doc.error || `HTTP ${r.status}`) + (doc.diagnostics && doc.diagnostics.length ? ": " + doc.diagnostics[0].message : "");
+    throw new Error(msg);
+  }
+  const name = /filename="([^"]+)"/.exec(r.headers.get("Content-Disposition") || "");
+  return { blob: await r.blob(), name: name ? name[1] : `part.${ext}` };
+}
+
+async function load3d() {
+  const seq = ++state.glbSeq;
+  try {
+    const { blob } = await fetchFile("glb", { assembled: true, layout: false });
+    if (seq !== state.glbSeq || !window.aidl3d) return;
+    const url = URL.createObjectURL(blob);
+    await window.aidl3d.load(url, { reframe: state.reframe });
+    state.reframe = false;
+    URL.revokeObjectURL(url);
+    window.studio.glbs += 1;
+  } catch (e) {
+    window.studio.errors.push("3D: " + (e.message || e));
+  }
+}
+
+function showDownloads() {
+  const box = $("downloads");
+  const order = ["dxf", "svg", "pdf", "gcode", "lbrn2", "plt", "png", "stl", "3mf", "step", "glb"];
+  const formats = [...state.config.formats].sort((a, b) => {
+    const ia = order.indexOf(a.ext), ib = order.indexOf(b.ext);
+    return (ia < 0 ? 99 : ia) - (ib < 0 ? 99 : ib);
+  });
+  for (const f of formats) {
+    const b = document.createElement("button");
+    b.type = "button"; b.textContent = f.ext.toUpperCase(); b.title = f.about;
+    b.dataset.ext = f.ext;
+    if (f.ext === "dxf") b.className = "main";
+    b.onclick = () => download(f);
+    box.appendChild(b);
+  }
+  for (const m of state.config.machines) {
+    const o = document.createElement("option"); o.value = m; o.textContent = m;
+    $("machine").appendChild(o);
+  }
+}
+
+async function download(f) {
+  $("download-status").textContent = `making ${f.ext.toUpperCase()}…`;
+  try {
+    const extra = f.cut ? {} : { layout: false, assembled: f.assembled };
+    const { blob, name } = await fetchFile(f.ext, extra);
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(blob); a.download = name;
+    document.body.appendChild(a); a.click(); a.remove();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+    $("download-status").textContent = `${name}: ${blob.size.toLocaleString()} bytes`;
+  } catch (e) {
+    $("download-status").textContent = `${f.ext.toUpperCase()}: ${e.message || e}`;
+  }
+}
+$("thickness").addEventListener("change", () => load3d());     // the 3D panels' thickness
+
+// ------------------------------------------------------------------ the gallery
+async function openGallery() {
+  const dlg = $("gallery");
+  if (!state.gallery) {
+    state.gallery = await fetch("/api/gallery").then((r) => r.json());
+    const cards = $("cards");
+    for (const e of state.gallery) {
+      const c = document.createElement("button");
+      c.type = "button"; c.className = "card"; c.dataset.id = e.id;
+      c.dataset.text = `${e.title} ${e.purpose} ${(e.tags || []).join(" ")} ${e.kind}`.toLowerCase();
+      const img = document.createElement("img");
+      img.loading = "lazy"; img.alt = e.title; img.src = `/api/thumb/${e.id}.svg`;
+      const kind = document.createElement("div"); kind.className = "kind"; kind.textContent = e.kind;
+      const t = document.createElement("strong"); t.textContent = e.title;
+      const p = document.createElement("p"); p.textContent = e.purpose;
+      c.append(img, kind, t, p);
+      c.onclick = () => { dlg.close(); openEntry(e.id); };
+      cards.appendChild(c);
+    }
+  }
+  dlg.showModal();
+}
+$("open-gallery").onclick = openGallery;
+$("gallery-search").oninput = () => {
+  const q = $("gallery-search").value.trim().toLowerCase();
+  for (const c of $("cards").children) c.hidden = q && !c.dataset.text.includes(q);
+};
+
+async function openEntry(id) {
+  const e = await fetch(`/api/gallery/${id}`).then((r) => r.json());
+  state.entry = id;
+  $("title").textContent = e.title;
+  setProgram(e.source, {});
+}
+
+function setProgram(source, values) {
+  state.source = source;
+  state.values = { ...values };
+  state.paramKey = "";
+  state.lastSvg = null;
+  state.reframe = true;
+  if (editor) editor.setText(source);
+  schedule(0);
+}
+
+// ------------------------------------------------------------------ share links and embeds
+function b64url(bytes) {
+  let s = ""; for (const b of bytes) s += String.fromCharCode(b);
+  return btoa(s).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+}
+function unb64url(text) {
+  const s = atob(text.replace(/-/g, "+").replace(/_/g, "/"));
+  return Uint8Array.from(s, (c) => c.charCodeAt(0));
+}
+async function pack(doc) {
+  const stream = new Blob([JSON.stringify(doc)]).stream().pipeThrough(new CompressionStream("deflate-raw"));
+  return b64url(new Uint8Array(await new Response(stream).arrayBuffer()));
+}
+async function unpack(text) {
+  const stream = new Blob([unb64url(text)]).stream().pipeThrough(new DecompressionStream("deflate-raw"));
+  return JSON.parse(await new Response(stream).text());
+}
+async function link(path) {
+  const values = {};
+  for (const p of state.params) if (state.values[p.name] !== undefined && state.values[p.name] !== p.default) values[p.name] = state.values[p.name];
+  const packed = await pack({ v: 1, source: state.source, values, settings: settings(), title: $("title").textContent });
+  return `${location.origin}${path}#p=${packed}`;
+}
+async function share(kind) {
+  const url = await link(kind === "embed" ? "/embed" : "/");
+  $("share-what").textContent = kind === "embed"
+    ? "Paste this on your page: it shows this design with its sliders."
+    : "This link opens this design with these values (it is all in the link; nothing is stored).";
+  $("share-text").value = kind === "embed"
+    ? `<iframe src="${url}" width="900" height="520" style="border:1px solid #ccc" title="AIDL design"></iframe>`
+    : url;
+  $("share-dialog").showModal();
+  $("share-text").select();
+  window.studio.shared = $("share-text").value;
+}
+$("share").onclick = () => share("link");
+$("embed").onclick = () => share("embed");
+$("copy").onclick = () => navigator.clipboard && navigator.clipboard.writeText($("share-text").value);
+
+// ------------------------------------------------------------------ describe the part
+async function describe() {
+  const text = $("describe-text").value.trim();
+  if (!text) return;
+  const list = $("rounds");
+  list.innerHTML = "";
+  $("describe-go").disabled = true;
+  $("describe-status").textContent = "asking the model…";
+  try {
+    const r = await post("/api/describe", { sid: state.sid, description: text }, true);
+    if (!r.ok) throw new Error((await r.json().catch(() => ({}))).error || `HTTP ${r.status}`);
+    const reader = r.body.pipeThrough(new TextDecoderStream()).getReader();
+    let buf = "";
+    for (;;) {
+      const { value, done } = await reader.read();
+      if (done) break;
+      buf += value;
+      let i;
+      while ((i = buf.indexOf("\n")) >= 0) {
+        const line = buf.slice(0, i); buf = buf.slice(i + 1);
+        if (line.trim()) onEvent(JSON.parse(line), list);
+      }
+    }
+  } catch (e) {
+    $("describe-status").textContent = String(e.message || e);
+  } finally {
+    $("describe-go").disabled = false;
+  }
+}
+
+function onEvent(ev, list) {
+  if (ev.type === "round") {
+    const li = document.createElement("li");
+    const head = document.createElement("div");
+    const errs = (ev.diagnostics || []).filter((d) => d.severity === "error").length;
+    head.textContent = `round ${ev.n}: ` + (ev.ok ? "checks" : `${errs} error${errs === 1 ? "" : "s"}`);
+    li.appendChild(head);
+    for (const d of (ev.diagnostics || []).slice(0, 4)) {
+      const m = document.createElement("div"); m.className = "muted";
+      m.textContent = `${d.line ? d.line + ":" + d.col + " " : ""}${d.code}: ${d.message}`;
+      li.appendChild(m);
+    }
+    if (ev.svg) {
+      const img = document.createElement("img");
+      img.src = URL.createObjectURL(new Blob([ev.svg], { type: "image/svg+xml" }));
+      img.alt = `round ${ev.n}`;
+      li.appendChild(img);
+    }
+    const pre = document.createElement("pre"); pre.textContent = ev.code || "";
+    li.appendChild(pre);
+    list.appendChild(li);
+    $("describe-status").textContent = `round ${ev.n}…`;
+  } else if (ev.type === "done") {
+    $("describe-status").textContent = ev.message || (ev.ok ? "done" : "no program checked");
+    if (ev.code) { $("title").textContent = "Described part"; state.entry = null; setProgram(ev.code, {}); }
+  } else if (ev.type === "error") {
+    $("describe-status").textContent = ev.message;
+  }
+}
+$("describe-go").onclick = describe;
+
+// ------------------------------------------------------------------ uploads
+async function refreshFiles() {
+  const doc = await fetch(`/api/files?sid=${state.sid}`).then((r) => r.json());
+  const ul = $("files"); ul.innerHTML = "";
+  for (const f of doc.files || []) {
+    const li = document.createElement("li");
+    li.textContent = `${f.name} (${f.bytes.toLocaleString()} bytes) `;
+    const del = document.createElement("button"); del.type = "button"; del.textContent = "delete";
+    del.onclick = async () => { await post("/api/delete", { sid: state.sid, name: f.name }); refreshFiles(); schedule(0); };
+    li.appendChild(del); ul.appendChild(li);
+  }
+}
+$("upload").onchange = async () => {
+  const f = $("upload").files[0];
+  if (!f) return;
+  const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(f.name)}`, { method: "POST", body: f });
+  const doc = await r.json().catch(() => ({}));
+  if (!r.ok) alert(doc.error || `upload failed (HTTP ${r.status})`);
+  $("upload").value = "";
+  refreshFiles(); schedule(0);
+};
+
+// ------------------------------------------------------------------ start
+let editor = null;
+async function hover(text, pos) {
+  let a = pos, b = pos;
+  while (a > 0 && /[\w.]/.test(text[a - 1])) a--;
+  while (b < text.length && /\w/.test(text[b])) b++;
+  const word = text.slice(a, b).replace(/^.*\./, "");
+  if (!/^[A-Za-z_]\w*$/.test(word)) return null;
+  const doc = await fetch(`/api/docs?name=${encodeURIComponent(word)}`).then((r) => r.json()).catch(() => ({}));
+  return doc.text || null;
+}
+
+async function start() {
+  if (EMBED) document.body.classList.add("embed");
+  state.config = await fetch("/api/config").then((r) => r.json());
+  state.sid = (await post("/api/session", {})).sid;
+  window.addEventListener("pagehide", () =>
+    navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
+  if (!EMBED) {
+    editor = createEditor($("code"), { doc: "", hover,
+      onChange: (text) => { state.source = text; schedule(250); } });
+    editor.goto = (line, col) => {
+      const doc = editor.view.state.doc;
+      const l = doc.line(Math.max(1, Math.min(line, doc.lines)));
+      editor.view.dispatch({ selection: { anchor: Math.min(l.from + Math.max(0, col - 1), l.to) }, scrollIntoView: true });
+      editor.view.focus();
+    };
+    window.studio.editor = editor;
+    $("describe").hidden = !state.config.model;
+  }
+  showDownloads();
+  const m = /#p=([A-Za-z0-9_-]+)/.exec(location.hash);
+  if (m) {
+    try {
+      const doc = await unpack(m[1]);
+      $("title").textContent = doc.title || "Shared design";
+      const s = doc.settings || {};
+      if (s.thickness != null) $("thickness").value = s.thickness;
+      if (s.kerf != null) $("kerf").value = s.kerf;
+      if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
+      if (s.machine) $("machine").value = s.machine;
+      if (s.layout != null) $("layout").checked = !!s.layout;
+      setProgram(String(doc.source || ""), doc.values || {});
+    } catch (e) {
+      status("this link is damaged: it does not hold a design");
+    }
+  } else if (!EMBED) {
+    await openEntry("generator/divider_tray").catch(() => {});
+    openGallery();
+  }
+  window.studio.ready = true;
+}
+start();
