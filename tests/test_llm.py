@@ -281,3 +281,63 @@ def test_eval_counts_programs_with_warnings_apart_from_clean_ones(tmp_path):
     assert s["valid_within_rounds"] == 2 and s["valid_clean"] == 1 and s["valid_with_warnings"] == 1
     assert s["warning_codes"] == {"W0101": 1}
     assert "valid with warnings: 1" in (tmp_path / "report.md").read_text()
+
+
+# ------------------------------------------------------------------ on_round (aidl studio)
+def test_generate_calls_on_round_once_per_round_in_order():
+    from aidl_lang.llm.generate import generate
+    seen = []
+
+    def on_round(r):
+        # what the round says when it is handed over: compiled, with its verdict and feedback
+        seen.append((r, r.number, r.ok, list(r.error_codes), list(r.warning_codes),
+                     r.feedback is not None))
+
+    c = Scripted([BROKEN, WARNED, CLEAN])
+    res = generate("a plate", c, max_rounds=3, warning_rounds=1, on_round=on_round)
+    assert res.ok and len(res.rounds) == 3
+    assert [s[0] for s in seen] == res.rounds                  # the same objects, in order
+    assert [s[0] is r for s, r in zip(seen, res.rounds)] == [True] * 3
+    assert [s[1:] for s in seen] == [(1, False, ["E0103"], [], True),
+                                     (2, True, [], ["W0101"], True),
+                                     (3, True, [], [], False)]
+    # each call came before the next request: the callback saw round n while n requests
+    # had been made
+    calls = []
+    c = Scripted([BROKEN, FIXED])
+    generate("a plate", c, max_rounds=5, on_round=lambda r: calls.append((r.number, len(c.sent))))
+    assert calls == [(1, 1), (2, 2)]
+    # a reply without code is a round too; rounds that run out still each get one call
+    calls = []
+    res = generate("a plate", Scripted(["no code", BROKEN]), max_rounds=2,
+                   on_round=lambda r: calls.append((r.number, r.ok, r.error_codes)))
+    assert not res.ok and calls == [(1, False, ["E0000"]), (2, False, ["E0103"])]
+    # without on_round nothing changes
+    res = generate("a plate", Scripted([BROKEN, FIXED]), max_rounds=5)
+    assert res.ok and len(res.rounds) == 2
+
+
+def test_on_round_raising_stops_the_loop():
+    from aidl_lang.llm.generate import generate
+
+    class Stop(Exception):
+        pass
+
+    def stop(r):
+        raise Stop
+
+    c = Scripted([BROKEN, FIXED])
+    with pytest.raises(Stop):
+        generate("a plate", c, max_rounds=5, on_round=stop)
+    assert len(c.sent) == 1                                    # no second request was made
+
+
+def test_on_round_in_visual_rounds_gets_the_round_with_its_picture():
+    pytest.importorskip("cairosvg")
+    from aidl_lang.llm.generate import generate
+    calls = []
+    res = generate("a plate", Scripted([CLEAN, "LOOKS RIGHT"]), max_rounds=2, visual_rounds=1,
+                   path="plate.aidl",
+                   on_round=lambda r: calls.append((r.number, r.kind, r.picture, r.verdict)))
+    assert res.ok and res.looks_right and len(res.rounds) == 2
+    assert calls == [(1, "program", "plate.round1.png", None), (2, "visual", None, "looks right")]

@@ -227,7 +227,8 @@ def request_messages(messages: list[dict], pictures: dict[str, bytes]) -> list[d
 def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "generated.aidl",
              progress: Callable[[str], None] | None = None,
              system: str | None = None, warning_rounds: int = 1,
-             visual_rounds: int = 0) -> Result:
+             visual_rounds: int = 0,
+             on_round: Callable[[Round], None] | None = None) -> Result:
     """Run the loop for ``prompt``; ``path`` names the program in diagnostics and resolves its
     relative imports.  Errors are fed back for at most ``max_rounds`` rounds; a program that
     compiles with warnings is sent back for up to ``warning_rounds`` extra rounds (each may
@@ -241,6 +242,11 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
     compile gets the error rounds left, and at least one, and never replaces the earlier
     valid program.  Pictures are kept in ``Result.pictures`` by path
     (:func:`picture_path`), older ones are left out of later requests.
+
+    ``on_round``: called with each :class:`Round` once it is compiled and complete (its code,
+    diagnostics, ``ok``, feedback, and the picture sent after it), in order, in the thread
+    running the loop, before the next request; what it raises ends the loop and propagates
+    (a caller streaming rounds may raise to stop early).
 
     Raises :class:`aidl_lang.llm.LLMError` if the endpoint fails, except once a picture was
     sent and a program checks: then the loop stops with it (``Result.visual_error``)."""
@@ -279,6 +285,8 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
             rounds.append(Round(n, reply, code, True, kind=kind, verdict="looks right"))
             looks_right = True
             say(f"round {n}: LOOKS RIGHT")
+            if on_round is not None:
+                on_round(rounds[-1])
             break
         if code is None:
             rnd = Round(n, reply, None, False, [{"code": "E0000", "severity": "error",
@@ -309,10 +317,11 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
             if rnd.feedback is None:
                 say(f"round {n}: valid" + (f", {len(rnd.warning_codes)} warning(s)"
                                             if rnd.warning_codes else ""))
-                if visual_used >= visual_rounds:
-                    break
-                picture = _picture(best, compiled if best is rnd else None, path, say)
+                picture = (_picture(best, compiled if best is rnd else None, path, say)
+                           if visual_used < visual_rounds else None)
                 if picture is None:
+                    if on_round is not None:
+                        on_round(rnd)
                     break
                 visual_used += 1
                 rnd.picture = picture_path(path, n)
@@ -332,6 +341,8 @@ def generate(prompt: str, client: ChatClient, max_rounds: int = 5, path: str = "
         else:
             say(f"round {n}: {len(rnd.error_codes)} error(s): "
                 f"{', '.join(sorted(set(rnd.error_codes)))}")
+        if on_round is not None:
+            on_round(rnd)
         if n < limit:
             messages.append({"role": "user", "content": content})
     if best is None:
