@@ -1,0 +1,177 @@
+"""`aidl studio`'s server with real compile workers (Starlette's test client, no browser):
+the import sandbox per session, uploads and their limits, a planted link, the per-client rate
+limit, the busy answer, a compile stopped past its time, downloads re-read by their readers,
+and the page's security headers."""
+from __future__ import annotations
+
+import io
+import os
+import shutil
+import threading
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("starlette")
+pytest.importorskip("limits")
+from starlette.testclient import TestClient  # noqa: E402
+
+from aidl_lang.studio.app import Settings, create_app  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+BRACKET = (ROOT / "examples" / "bracket.aidl").read_text()
+BOARD = (ROOT / "examples" / "parts" / "pcb_board.dxf").read_bytes()
+USES_BOARD = ('units mm\nsolid s {\n    d = Drawing2D("board.dxf", layer="Edge.Cuts")\n'
+              '    Fixed(d.origin)\n}\n')
+SLOW = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+        "    for i in range(3000) { hole h { c = Circle(center=(i * 0.001, 0), radius=1) } }\n}\n")
+
+
+@pytest.fixture
+def client(tmp_path):
+    app = create_app(Settings(data=str(tmp_path / "data"), compilers=1))
+    with TestClient(app) as c:
+        yield c
+
+
+def session(c) -> str:
+    return c.post("/api/session").json()["sid"]
+
+
+def view(c, sid, source, values=None):
+    r = c.post("/api/view", json={"sid": sid, "source": source, "values": values or {}})
+    assert r.status_code == 200, r.text
+    return r.json()
+
+
+def test_a_view_then_a_warm_slider_move_and_a_dxf_read_back(client):
+    import ezdxf
+    sid = session(client)
+    v = view(client, sid, BRACKET)
+    assert v["ok"] and "<svg" in v["svg"] and {p["name"] for p in v["params"]} >= {"pitch"}
+    pitch = next(p for p in v["params"] if p["name"] == "pitch")
+    moved = view(client, sid, BRACKET, {"pitch": f"{pitch['value'] + 4}mm"})
+    assert moved["ok"] and moved["svg"] != v["svg"]
+    # the same worker's session took the move: the program was not parsed and checked again
+    assert moved["version"] == v["version"] + 1
+    r = client.post("/api/download/dxf", json={"sid": sid, "source": BRACKET, "values": {},
+                                               "settings": {"layout": False, "kerf": 0}})
+    assert r.status_code == 200 and r.headers["content-disposition"].endswith('.dxf"')
+    doc = ezdxf.read(io.StringIO(r.content.decode()))
+    from aidl_lang import api
+    res = api.compile(source=BRACKET)
+    x0, y0, x1, y1 = res.parts[0].bbox
+    from ezdxf import bbox
+    box = bbox.extents(e for e in doc.modelspace() if e.dxf.layer.upper() == "CUT")
+    assert box.size.x == pytest.approx(x1 - x0, abs=1e-6)
+    assert box.size.y == pytest.approx(y1 - y0, abs=1e-6)
+
+
+def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
+    a, b = session(client), session(client)
+    r = client.post(f"/api/upload?sid={a}&name=board.dxf", content=BOARD)
+    assert r.status_code == 200 and r.json() == {"name": "board.dxf", "bytes": len(BOARD)}
+    assert view(client, a, USES_BOARD)["ok"]
+    other = view(client, b, USES_BOARD)                 # another tab cannot see it
+    assert not other["ok"] and other["diagnostics"][0]["code"] == "E0130"
+    for src in ['solid s {\n    d = Drawing2D("../' + a + '/board.dxf")\n}\n',
+                'solid s {\n    d = Drawing2D("/etc/passwd.dxf")\n}\n',
+                'import "../../x.aidl"\nsolid s {}\n']:
+        v = view(client, b, src)
+        assert not v["ok"] and v["diagnostics"][0]["code"] in ("E0130", "E0114"), v["diagnostics"]
+        assert "leaves the project folder" in v["diagnostics"][0]["message"]
+    # an .aidl upload is importable
+    client.post(f"/api/upload?sid={b}&name=knob.aidl",
+                content=b"def knob(r=4 mm) -> solid {\n    c = Circle(center=(0, 0), radius=r)\n}\n")
+    assert view(client, b, 'units mm\nimport "knob.aidl"\nk = knob(r=5 mm)\n')["ok"]
+    assert [f["name"] for f in client.get(f"/api/files?sid={b}").json()["files"]] == ["knob.aidl"]
+    # closing the tab removes its folder
+    folder = tmp_path / "data" / a
+    assert folder.is_dir()
+    client.post("/api/close", json={"sid": a})
+    assert not folder.exists()
+
+
+def test_uploads_are_checked_and_never_written_through_a_link(client, tmp_path):
+    from aidl_lang.studio import sessions
+    sid = session(client)
+    for name, body, words in [("../x.dxf", b"0", "letters, digits"),
+                              ("main.aidl", b"x", "program's own name"),
+                              ("notes.txt", b"x", ".dxf or .svg"),
+                              ("big.dxf", b"0" * (sessions.MAX_UPLOAD + 1), "at most")]:
+        r = client.post(f"/api/upload?sid={sid}&name={name}", content=body)
+        assert r.status_code == 400 and words in r.json()["error"], (name, r.text)
+    r = client.post("/api/upload?sid=../../etc&name=a.dxf", content=b"0")
+    assert r.status_code == 400 and "reload the page" in r.json()["error"]
+    # a link planted where an upload goes is replaced, its target untouched
+    target = tmp_path / "precious.dxf"
+    target.write_bytes(b"keep me")
+    os.symlink(target, tmp_path / "data" / sid / "board.dxf")
+    assert client.post(f"/api/upload?sid={sid}&name=board.dxf", content=BOARD).status_code == 200
+    assert target.read_bytes() == b"keep me"
+    assert not os.path.islink(tmp_path / "data" / sid / "board.dxf")
+
+
+def test_a_client_past_its_rate_gets_429_with_retry_after(tmp_path):
+    app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, rate="5/minute"))
+    with TestClient(app) as c:
+        codes = [c.get("/api/docs?name=Circle").status_code for _ in range(7)]
+        assert codes[:5] == [200] * 5 and codes[5:] == [429, 429]
+        r = c.get("/api/docs?name=Circle")
+        assert int(r.headers["retry-after"]) >= 1 and "too many requests" in r.json()["error"]
+
+
+def test_a_full_studio_answers_busy_and_a_long_compile_is_stopped(tmp_path):
+    app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, wait=0.3,
+                              wall_factor=0.2))           # a compile may run 3 s here
+    with TestClient(app) as c:
+        sid = session(c)
+        view(c, sid, BRACKET)                              # the worker is warm
+        slow: dict = {}
+        t = threading.Thread(target=lambda: slow.update(
+            r=c.post("/api/view", json={"sid": sid, "source": SLOW, "values": {}})))
+        t.start()
+        import time
+        time.sleep(0.5)
+        r = c.post("/api/view", json={"sid": session(c), "source": BRACKET, "values": {}})
+        assert r.status_code == 503 and r.headers["retry-after"] == "5"
+        assert r.json()["busy"] and "busy" in r.json()["error"]
+        t.join(60)
+        doc = slow["r"].json()
+        assert slow["r"].status_code == 200 and not doc["ok"]
+        # the compile's own deadline or the worker's kill: either way a clear message
+        text = doc.get("error") or " ".join(d["message"] for d in doc["diagnostics"])
+        assert "longer than" in text or "budget" in text or "time" in text, text
+        assert view(c, sid, BRACKET)["ok"]                 # and the next one runs
+
+
+def test_the_page_and_the_embed_and_their_headers(client):
+    r = client.get("/")
+    assert r.status_code == 200 and "AIDL Studio" in r.text
+    csp = r.headers["content-security-policy"]
+    assert "frame-ancestors 'self'" in csp and "script-src 'self' 'sha256-" in csp
+    e = client.get("/embed")
+    assert "frame-ancestors *" in e.headers["content-security-policy"]
+    assert client.get("/static/vendor/three/build/three.module.min.js").status_code == 200
+    assert client.get("/static/view3d.js").status_code == 200
+    assert client.get("/static/../app.py").status_code == 404
+    cfg = client.get("/api/config").json()
+    assert {"dxf", "svg", "gcode", "glb"} <= {f["ext"] for f in cfg["formats"]}
+    assert cfg["model"] is None or set(cfg["model"]) == {"model"}      # never the key
+
+
+def test_requests_that_are_not_programs_are_refused_clearly(client):
+    sid = session(client)
+    for body, words in [({"sid": sid}, "give the program"),
+                        ({"sid": sid, "source": "x" * 1_000_001}, "at most"),
+                        ({"sid": sid, "source": "", "values": {"a": [1]}}, "short text"),
+                        ({"sid": "nope", "source": ""}, "reload the page")]:
+        r = client.post("/api/view", json=body)
+        assert r.status_code == 400 and words in r.json()["error"], (body.keys(), r.text)
+    r = client.post("/api/view", content=b"{not json", headers={"content-type": "application/json"})
+    assert r.status_code == 400 and "not JSON" in r.json()["error"]
+    r = client.post("/api/download/doc", json={"sid": sid, "source": BRACKET})
+    assert r.status_code == 422 and "unknown format" in r.json()["error"]
+    r = client.post("/api/download/dxf", json={"sid": sid, "source": BRACKET,
+                                               "settings": {"kerf": 50}})
+    assert r.status_code == 422 and "kerf" in r.json()["error"]

@@ -1,0 +1,187 @@
+"""`aidl studio` in a real browser, as a person uses it: Debian's Chromium driven by Playwright.
+
+The studio runs as a real subprocess (`aidl studio --port 0`).  The test picks the divider tray
+from the gallery, moves its sliders to 3 x 4 compartments and the thickness to 3 mm, edits the
+code (an error appears under the code and in the editor, then goes away), downloads the cutting
+sheet's DXF and re-reads it with ezdxf, checks the 3D view loaded the assembled tray, opens
+the share link in a new page and gets the same part, and runs "Describe the part" against a
+local test double that replays recorded model answers.  Screenshots: out/studio-*.png.
+"""
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT = ROOT / "out"
+pytest.importorskip("playwright")
+if not Path("/usr/bin/chromium").exists():
+    pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
+                allow_module_level=True)
+
+from benchmarks.serve_latency import chromium  # noqa: E402
+from benchmarks.studio_server import studio  # noqa: E402
+
+
+def ready(page, views: int = 1, timeout: float = 60_000) -> None:
+    page.wait_for_function(f"window.studio && window.studio.ready && window.studio.views >= {views} "
+                           "&& window.studio.view && window.studio.view.ok", timeout=timeout)
+
+
+def views(page) -> int:
+    return page.evaluate("window.studio.views")
+
+
+def set_slider(page, name: str, value) -> None:
+    """Move the slider ``name`` to ``value`` as a drag ends (an input event), wait for the
+    picture drawn with it."""
+    n = views(page)
+    page.locator(f'input[type=range][name="{name}"]').fill(str(value))
+    page.wait_for_function(f"window.studio.views > {n} && window.studio.view.values "
+                           f"&& String(window.studio.view.values['{name}']).startsWith('{value}')",
+                           timeout=60_000)
+
+
+def cut_loops(path: Path) -> list:
+    """The closed outlines of a DXF as ezdxf reads them: (layer, bounding-box width, height)."""
+    import ezdxf
+    from ezdxf import bbox
+    doc = ezdxf.readfile(str(path))
+    out = []
+    for e in doc.modelspace():
+        if e.dxftype() in ("LWPOLYLINE", "POLYLINE", "CIRCLE"):
+            b = bbox.extents([e])
+            out.append((e.dxf.layer, round(b.size.x, 6), round(b.size.y, 6)))
+    return out
+
+
+def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
+    OUT.mkdir(exist_ok=True)
+    with studio() as (url, _proc), chromium() as ctx:
+        page = ctx.new_page()
+        page.goto(url)
+        ready(page)
+        # the gallery opens at the start: every card has a picture and a purpose
+        page.wait_for_selector("#gallery[open] .card")
+        cards = page.locator("#cards .card")
+        assert cards.count() >= 30
+        page.fill("#gallery-search", "tray")
+        tray = page.locator('#cards .card[data-id="generator/divider_tray"]')
+        assert tray.is_visible()
+        page.wait_for_function("document.querySelector('#cards .card[data-id=\"generator/divider_tray\"] img').naturalWidth > 0",
+                               timeout=60_000)
+        page.screenshot(path=str(OUT / "studio-gallery.png"))
+        n = views(page)
+        tray.click()
+        page.wait_for_function(f"window.studio.views > {n} && window.studio.view.ok", timeout=60_000)
+        assert page.inner_text("#title") == "Divider tray"
+        names = page.eval_on_selector_all("#params input[type=range]", "els => els.map(e => e.name)")
+        assert {"rows", "cols", "thickness"} <= set(names), names
+        set_slider(page, "rows", 3)
+        set_slider(page, "cols", 4)
+        set_slider(page, "thickness", 3)
+        page.wait_for_function("window.aidl3d && window.aidl3d.loaded >= 1 && window.aidl3d.parts.length > 0",
+                               timeout=60_000)
+        parts3d = page.evaluate("window.aidl3d.parts")
+        # 3 x 4 compartments: 2 row dividers and 3 column dividers besides the box's panels
+        assert sum("row_divider" in p for p in parts3d) == 2, parts3d
+        assert sum("col_divider" in p for p in parts3d) == 3, parts3d
+        page.screenshot(path=str(OUT / "studio-tray.png"))
+
+        # the cutting sheet: every part nested on 600 x 400 mm, as DXF, re-read by ezdxf
+        with page.expect_download() as got:
+            page.click('#downloads button[data-ext="dxf"]')
+        dxf = tmp_path / got.value.suggested_filename
+        got.value.save_as(dxf)
+        assert dxf.name.endswith("-sheet.dxf")
+        loops = cut_loops(dxf)
+        outlines = [l for l in loops if l[0].upper() == "CUT"]
+        # the same parts compiled here through the public API, nested the same way
+        from aidl_lang import api
+        src = page.evaluate("window.studio.state.source")
+        res = api.compile(source=src, overrides={"rows": "3", "cols": "4", "thickness": "3mm"})
+        assert res.ok
+        assert len(res.parts) == 5 + 2 + 3          # 5 box panels, 2 + 3 dividers
+        assert all(w <= 600 and h <= 400 for _, w, h in outlines)
+        sizes = sorted((round(p.bbox[2] - p.bbox[0], 3), round(p.bbox[3] - p.bbox[1], 3))
+                       for p in res.parts)
+        assert len(outlines) >= len(sizes)
+
+        # edit the code: a misspelt call gives a located error under the code and in the editor
+        page.evaluate("""() => { const v = window.studio.editor.view;
+            const at = v.state.doc.toString().indexOf('divider_tray(');
+            v.dispatch({changes: {from: at, to: at + 'divider_tray'.length, insert: 'divider_trey'}}); }""")
+        page.wait_for_function("window.studio.view && !window.studio.view.ok", timeout=60_000)
+        page.wait_for_selector("#diagnostics li.error")
+        text = page.inner_text("#diagnostics li.error")
+        assert "divider_trey" in text and "divider_tray" in text, text    # did you mean
+        page.wait_for_selector(".cm-lintRange-error")
+        page.screenshot(path=str(OUT / "studio-error.png"))
+        page.evaluate("""() => { const v = window.studio.editor.view;
+            const at = v.state.doc.toString().indexOf('divider_trey(');
+            v.dispatch({changes: {from: at, to: at + 'divider_trey'.length, insert: 'divider_tray'}}); }""")
+        page.wait_for_function("window.studio.view && window.studio.view.ok", timeout=60_000)
+        svg = page.evaluate("window.studio.view.svg")
+
+        # the share link carries the program and the values: a new page draws the same part
+        page.click("#share")
+        link = page.evaluate("window.studio.shared")
+        assert "#p=" in link and len(link) < 8000
+        other = ctx.new_page()
+        other.goto(link)
+        ready(other)
+        other.wait_for_function("window.studio.view.values && window.studio.view.values.rows", timeout=60_000)
+        assert other.evaluate("window.studio.view.values") == page.evaluate("window.studio.view.values")
+        assert other.evaluate("window.studio.view.svg") == svg
+        # the embed shows the same part with its sliders and no code pane
+        page.click("#embed")
+        iframe = page.evaluate("window.studio.shared")
+        assert iframe.startswith("<iframe src=\"") and "/embed#p=" in iframe
+        embed_url = iframe.split('"')[1]
+        emb = ctx.new_page()
+        emb.goto(embed_url)
+        ready(emb)
+        assert emb.evaluate("window.studio.view.svg") == svg
+        assert not emb.locator("#code").is_visible()
+        assert emb.locator('#params input[type=range][name="rows"]').is_visible()
+        emb.screenshot(path=str(OUT / "studio-embed.png"))
+
+
+def test_describe_the_part_with_a_replayed_model(tmp_path):
+    """The "Describe the part" box against a TEST DOUBLE of a model endpoint: a local server
+    that replays two recorded answers (the first with a mistake the loop sends back)."""
+    from tests.model_double import replaying
+    answers = json.loads((ROOT / "tests" / "data" / "studio_model_replay.json").read_text())
+    answers = answers["answers"] if isinstance(answers, dict) else answers
+    with replaying(answers) as (base, requests):
+        env = {"AIDL_STUDIO_MODEL_URL": base, "AIDL_STUDIO_MODEL": "replay"}
+        with studio(env=env) as (url, _proc), chromium() as ctx:
+            page = ctx.new_page()
+            page.goto(url)
+            ready(page)
+            page.keyboard.press("Escape")               # close the gallery
+            assert page.locator("#describe").is_visible()
+            page.fill("#describe-text", "a tray with 3 x 4 compartments, 3 mm plywood")
+            n = views(page)
+            page.click("#describe-go")
+            page.wait_for_function(f"window.studio.views > {n} && window.studio.view.ok "
+                                   "&& document.querySelectorAll('#rounds li').length >= 2",
+                                   timeout=120_000)
+            rounds = page.locator("#rounds li")
+            assert "error" in rounds.nth(0).inner_text()
+            assert "checks" in rounds.nth(1).inner_text()
+            assert "divider_tray" in page.evaluate("window.studio.state.source")
+            page.screenshot(path=str(OUT / "studio-describe.png"))
+        assert len(requests) == 2
+
+
+def test_without_a_model_endpoint_the_box_is_hidden():
+    env = {"AIDL_STUDIO_MODEL_URL": ""}
+    with studio(env=env) as (url, _proc), chromium() as ctx:
+        page = ctx.new_page()
+        page.goto(url)
+        ready(page)
+        assert page.locator("#describe").is_hidden()
