@@ -50,7 +50,7 @@ class Busy(WorkerError):
     """Every worker of the pool stayed busy for the request's whole ``wait``."""
 
 
-def _limit_memory(limit: int) -> None:
+def limit_memory(limit: int) -> None:
     """Cap this process's address space at ``limit`` bytes (Linux ``RLIMIT_AS``): a program
     that needs more gets a ``MemoryError`` or ends its worker, never the machine's memory."""
     try:
@@ -63,10 +63,21 @@ def _limit_memory(limit: int) -> None:
         pass
 
 
+def rss(pid: int | str = "self") -> int:
+    """The resident memory of process ``pid`` (default: this one) in bytes (0 where /proc is
+    missing)."""
+    try:
+        import os
+        with open(f"/proc/{pid}/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
 def _main(conn, target, args: tuple, memory: int | None) -> None:
     """The worker process: build the handler, then answer requests until the pipe closes."""
     if memory:
-        _limit_memory(memory)
+        limit_memory(memory)
     handle = target(*args)
     conn.send("ready")
     while True:
@@ -141,17 +152,9 @@ class Worker:
                 raise Died("the worker process ended while compiling (out of memory?)") from None
 
     def rss(self) -> int:
-        """The process's resident memory in bytes (0 when it is not running or /proc is
-        missing)."""
+        """The process's resident memory in bytes (0 when it is not running)."""
         proc = self.proc
-        if proc is None or proc.pid is None:
-            return 0
-        try:
-            import os
-            with open(f"/proc/{proc.pid}/statm") as f:
-                return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
-        except (OSError, ValueError, IndexError):
-            return 0
+        return rss(proc.pid) if proc is not None and proc.pid is not None else 0
 
 
 class Pool:

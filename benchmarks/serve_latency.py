@@ -36,12 +36,12 @@ CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic"
 
 
 @contextlib.contextmanager
-def serving(cmd: list[str], path: Path, cwd: Path, env: dict | None = None,
-            timeout: float = 30.0):
-    """Run ``CMD serve PATH --port 0`` in a subprocess (``cwd``, ``env``); yield its URL and
-    the process; stop it after."""
-    proc = subprocess.Popen(cmd + ["serve", str(path), "--port", "0"], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True, cwd=str(cwd), env=env)
+def launched(argv: list[str], cwd: Path | None = None, env: dict | None = None,
+             timeout: float = 30.0):
+    """Run ``argv`` (an ``aidl serve`` or ``aidl studio`` command) in a subprocess (``cwd``,
+    ``env``); yield the URL it prints and the process; stop it after (SIGTERM, then SIGKILL)."""
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            cwd=str(cwd) if cwd is not None else None, env=env)
     try:
         deadline = time.monotonic() + timeout
         url = None
@@ -49,20 +49,30 @@ def serving(cmd: list[str], path: Path, cwd: Path, env: dict | None = None,
             line = proc.stdout.readline()
             if not line:
                 break
-            m = re.search(r"(http://127\.0\.0\.1:\d+/)", line)
+            m = re.search(r"(http://[^/\s]+/)", line)
             if m:
                 url = m.group(1)
                 break
         if url is None:
-            raise RuntimeError(f"aidl serve did not start: {proc.stdout.read() if proc.poll() is not None else ''}")
+            raise RuntimeError(f"{' '.join(argv[-4:])} did not start: "
+                               f"{proc.stdout.read() if proc.poll() is not None else ''}")
         yield url, proc
     finally:
         proc.terminate()
         try:
-            proc.wait(timeout=10)
+            proc.wait(timeout=15)
         except subprocess.TimeoutExpired:
             proc.kill()
             proc.wait()
+
+
+@contextlib.contextmanager
+def serving(cmd: list[str], path: Path, cwd: Path, env: dict | None = None,
+            timeout: float = 30.0):
+    """Run ``CMD serve PATH --port 0`` in a subprocess (``cwd``, ``env``); yield its URL and
+    the process; stop it after."""
+    with launched(cmd + ["serve", str(path), "--port", "0"], cwd, env, timeout) as got:
+        yield got
 
 
 @contextlib.contextmanager

@@ -26,6 +26,8 @@ import os
 import zipfile
 from collections import OrderedDict
 
+from ..workers import rss
+
 MAX_SESSIONS = 24               # warm sessions one worker keeps
 RETIRE_RSS = 900 << 20          # bytes: a worker past this answers, then is replaced
 MACHINES = ("laser", "router", "plotter")
@@ -53,7 +55,7 @@ def handler():
                                "build less (fewer copies, fewer holes)", "retire": True}
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
             answer = {"error": f"internal error: {type(e).__name__}: {e}"}
-        if _rss() > RETIRE_RSS and isinstance(answer, dict):
+        if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
     return handle
@@ -164,11 +166,3 @@ def thumbnail(entry_id: str) -> str:
         return gallery.thumbnail(e)
     except Exception:               # noqa: BLE001 - a missing picture, not a broken gallery
         return ""
-
-
-def _rss() -> int:
-    try:
-        with open("/proc/self/statm") as f:
-            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
-    except (OSError, ValueError, IndexError):
-        return 0

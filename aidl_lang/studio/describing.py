@@ -21,7 +21,7 @@ MEMORY = 1500 << 20         # bytes: the loop process's address-space cap
 
 
 def _main(conn, description, config, folder, deadline) -> None:
-    W._limit_memory(MEMORY)
+    W.limit_memory(MEMORY)
     from .describe import describe
     try:
         for event in describe(description, config, folder, deadline_s=deadline):

@@ -19,6 +19,7 @@ import time
 
 from .preview import preview
 from .worker import diagnostics_json
+from ...workers import limit_memory, rss
 
 # four previews of large strings took the server to 3.9 GB, kept after the documents closed
 MEMORY_LIMIT = 3 << 30
@@ -63,7 +64,7 @@ def _serve() -> int:
         except Exception as e:        # answered, never a dead worker
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
                       "error": f"{type(e).__name__}: {e}"}
-        retire = _rss() > RETIRE_RSS
+        retire = rss() > RETIRE_RSS
         if retire:                    # give the memory back: a fresh worker takes over
             answer["retire"] = True
         out.write(json.dumps(answer) + "\n")
@@ -74,24 +75,7 @@ def _serve() -> int:
 
 
 def _limit_memory() -> None:
-    try:
-        import resource
-        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-        cap = MEMORY_LIMIT if hard == resource.RLIM_INFINITY else min(MEMORY_LIMIT, hard)
-        if soft == resource.RLIM_INFINITY or soft > cap:
-            resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
-    except (ImportError, ValueError, OSError):      # not on this platform
-        pass
-
-
-def _rss() -> int:
-    """The worker's resident memory in bytes (0 where /proc is missing)."""
-    try:
-        import os
-        with open("/proc/self/statm") as f:
-            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
-    except (OSError, ValueError, IndexError):
-        return 0
+    limit_memory(MEMORY_LIMIT)
 
 
 if __name__ == "__main__":
