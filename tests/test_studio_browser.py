@@ -27,8 +27,8 @@ from benchmarks.studio_server import studio  # noqa: E402
 
 
 def ready(page, views: int = 1, timeout: float = 60_000) -> None:
-    page.wait_for_function(f"window.studio && window.studio.ready && window.studio.views >= {views} "
-                           "&& window.studio.view && window.studio.view.ok", timeout=timeout)
+    page.wait_for_function(f"() => (window.studio && window.studio.ready && window.studio.views >= {views} "
+                           "&& window.studio.view && window.studio.view.ok)", timeout=timeout)
 
 
 def views(page) -> int:
@@ -37,12 +37,11 @@ def views(page) -> int:
 
 def set_slider(page, name: str, value) -> None:
     """Move the slider ``name`` to ``value`` as a drag ends (an input event), wait for the
-    picture drawn with it."""
+    picture drawn with it and its 3D view."""
     n = views(page)
     page.locator(f'input[type=range][name="{name}"]').fill(str(value))
-    page.wait_for_function(f"window.studio.views > {n} && window.studio.view.values "
-                           f"&& String(window.studio.view.values['{name}']).startsWith('{value}')",
-                           timeout=60_000)
+    page.wait_for_function(f"() => (window.studio.views > {n} && window.studio.idle "
+                           "&& window.studio.glbView === window.studio.views)", timeout=60_000)
 
 
 def cut_loops(path: Path) -> list:
@@ -71,20 +70,26 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         page.fill("#gallery-search", "tray")
         tray = page.locator('#cards .card[data-id="generator/divider_tray"]')
         assert tray.is_visible()
-        page.wait_for_function("document.querySelector('#cards .card[data-id=\"generator/divider_tray\"] img').naturalWidth > 0",
+        page.wait_for_function("() => (document.querySelector('#cards .card[data-id=\"generator/divider_tray\"] img').naturalWidth > 0)",
                                timeout=60_000)
         page.screenshot(path=str(OUT / "studio-gallery.png"))
         n = views(page)
         tray.click()
-        page.wait_for_function(f"window.studio.views > {n} && window.studio.view.ok", timeout=60_000)
+        page.wait_for_function(f"() => (window.studio.views > {n} && window.studio.view.ok)", timeout=60_000)
         assert page.inner_text("#title") == "Divider tray"
         names = page.eval_on_selector_all("#params input[type=range]", "els => els.map(e => e.name)")
         assert {"rows", "cols", "thickness"} <= set(names), names
+        # the gallery's tray is 3 x 4 already: try 2 x 5, then back to what was asked for
+        set_slider(page, "rows", 2)
+        set_slider(page, "cols", 5)
+        parts3d = page.evaluate("window.aidl3d.parts")
+        assert sum("row_divider" in p for p in parts3d) == 1, parts3d
+        assert sum("col_divider" in p for p in parts3d) == 4, parts3d
         set_slider(page, "rows", 3)
         set_slider(page, "cols", 4)
+        set_slider(page, "thickness", 4)
         set_slider(page, "thickness", 3)
-        page.wait_for_function("window.aidl3d && window.aidl3d.loaded >= 1 && window.aidl3d.parts.length > 0",
-                               timeout=60_000)
+        assert page.evaluate("window.studio.view.values") == {}     # the program's own values
         parts3d = page.evaluate("window.aidl3d.parts")
         # 3 x 4 compartments: 2 row dividers and 3 column dividers besides the box's panels
         assert sum("row_divider" in p for p in parts3d) == 2, parts3d
@@ -97,24 +102,26 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         dxf = tmp_path / got.value.suggested_filename
         got.value.save_as(dxf)
         assert dxf.name.endswith("-sheet.dxf")
-        loops = cut_loops(dxf)
-        outlines = [l for l in loops if l[0].upper() == "CUT"]
-        # the same parts compiled here through the public API, nested the same way
+        outlines = [l for l in cut_loops(dxf) if l[0].upper().startswith("CUT")]
+        # the same parts compiled here through the public API: each outline on the sheet is a
+        # part's, grown by the program's kerf (0.15 mm), turned by 0 or 90 degrees
         from aidl_lang import api
         src = page.evaluate("window.studio.state.source")
-        res = api.compile(source=src, overrides={"rows": "3", "cols": "4", "thickness": "3mm"})
-        assert res.ok
-        assert len(res.parts) == 5 + 2 + 3          # 5 box panels, 2 + 3 dividers
-        assert all(w <= 600 and h <= 400 for _, w, h in outlines)
-        sizes = sorted((round(p.bbox[2] - p.bbox[0], 3), round(p.bbox[3] - p.bbox[1], 3))
-                       for p in res.parts)
-        assert len(outlines) >= len(sizes)
+        res = api.compile(source=src)
+        assert res.ok and len(res.parts) == 5 + 2 + 3       # 5 box panels, 2 + 3 dividers
+        want = sorted(sorted((p.bbox[2] - p.bbox[0] + 0.15, p.bbox[3] - p.bbox[1] + 0.15))
+                      for p in res.parts)
+        got_sizes = sorted(sorted((w, h)) for _, w, h in outlines)
+        assert len(got_sizes) == len(want)
+        for g, w in zip(got_sizes, want):
+            assert g == pytest.approx(w, abs=1e-6)
+        assert {l[0] for l in outlines} >= {"CUT-kit.tray.row_divider[1]", "CUT-kit.tray.col_divider[2]"}
 
         # edit the code: a misspelt call gives a located error under the code and in the editor
         page.evaluate("""() => { const v = window.studio.editor.view;
             const at = v.state.doc.toString().indexOf('divider_tray(');
             v.dispatch({changes: {from: at, to: at + 'divider_tray'.length, insert: 'divider_trey'}}); }""")
-        page.wait_for_function("window.studio.view && !window.studio.view.ok", timeout=60_000)
+        page.wait_for_function("() => (window.studio.view && !window.studio.view.ok)", timeout=60_000)
         page.wait_for_selector("#diagnostics li.error")
         text = page.inner_text("#diagnostics li.error")
         assert "divider_trey" in text and "divider_tray" in text, text    # did you mean
@@ -123,21 +130,26 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         page.evaluate("""() => { const v = window.studio.editor.view;
             const at = v.state.doc.toString().indexOf('divider_trey(');
             v.dispatch({changes: {from: at, to: at + 'divider_trey'.length, insert: 'divider_tray'}}); }""")
-        page.wait_for_function("window.studio.view && window.studio.view.ok", timeout=60_000)
+        page.wait_for_function("() => (window.studio.view && window.studio.view.ok)", timeout=60_000)
         svg = page.evaluate("window.studio.view.svg")
 
         # the share link carries the program and the values: a new page draws the same part
+        page.evaluate("window.studio.shared = null")
         page.click("#share")
+        page.wait_for_function("() => window.studio.shared")
         link = page.evaluate("window.studio.shared")
         assert "#p=" in link and len(link) < 8000
         other = ctx.new_page()
         other.goto(link)
         ready(other)
-        other.wait_for_function("window.studio.view.values && window.studio.view.values.rows", timeout=60_000)
+        other.wait_for_function("() => (window.studio.idle)", timeout=60_000)
         assert other.evaluate("window.studio.view.values") == page.evaluate("window.studio.view.values")
         assert other.evaluate("window.studio.view.svg") == svg
         # the embed shows the same part with its sliders and no code pane
+        page.keyboard.press("Escape")                   # close the share dialog
+        page.evaluate("window.studio.shared = null")
         page.click("#embed")
+        page.wait_for_function("() => window.studio.shared")
         iframe = page.evaluate("window.studio.shared")
         assert iframe.startswith("<iframe src=\"") and "/embed#p=" in iframe
         embed_url = iframe.split('"')[1]
@@ -153,9 +165,8 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
 def test_describe_the_part_with_a_replayed_model(tmp_path):
     """The "Describe the part" box against a TEST DOUBLE of a model endpoint: a local server
     that replays two recorded answers (the first with a mistake the loop sends back)."""
-    from tests.model_double import replaying
-    answers = json.loads((ROOT / "tests" / "data" / "studio_model_replay.json").read_text())
-    answers = answers["answers"] if isinstance(answers, dict) else answers
+    from model_double import recorded, replaying
+    answers = recorded("tray_3x4")["answers"]
     with replaying(answers) as (base, requests):
         env = {"AIDL_STUDIO_MODEL_URL": base, "AIDL_STUDIO_MODEL": "replay"}
         with studio(env=env) as (url, _proc), chromium() as ctx:
@@ -167,8 +178,8 @@ def test_describe_the_part_with_a_replayed_model(tmp_path):
             page.fill("#describe-text", "a tray with 3 x 4 compartments, 3 mm plywood")
             n = views(page)
             page.click("#describe-go")
-            page.wait_for_function(f"window.studio.views > {n} && window.studio.view.ok "
-                                   "&& document.querySelectorAll('#rounds li').length >= 2",
+            page.wait_for_function(f"() => (window.studio.views > {n} && window.studio.view.ok "
+                                   "&& document.querySelectorAll('#rounds li').length >= 2)",
                                    timeout=120_000)
             rounds = page.locator("#rounds li")
             assert "error" in rounds.nth(0).inner_text()

@@ -310,9 +310,14 @@ def create_app(settings: Settings | None = None) -> Starlette:
 
     async def config(request):
         from ..output import FORMATS
+        formats, seen = [], set()
+        for k, f in FORMATS.items():        # one button per writer (.stp is .step, .nc .gcode)
+            if (f.module, f.function) not in seen:
+                seen.add((f.module, f.function))
+                formats.append({"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
+                                "assembled": f.assembled})
         return JSONResponse({
-            "formats": [{"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
-                         "assembled": f.assembled} for k, f in FORMATS.items()],
+            "formats": formats,
             "machines": list(compiler.MACHINES),
             "model": {"model": settings.model.get("model")} if settings.model else None,
             "limits": {"source_bytes": MAX_SOURCE_BYTES, "rate": settings.rate,

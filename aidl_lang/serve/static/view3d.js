@@ -49,7 +49,9 @@ function frame() {    // look at the whole product from above its front-left cor
   const box = new THREE.Box3().setFromObject(state.root);
   const c = box.getCenter(new THREE.Vector3());
   const r = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
-  const d = r / Math.sin((state.camera.fov * Math.PI) / 360) * 1.1;
+  // the narrower of the two angles of view: a tall, narrow pane sees less across than up
+  const half = Math.atan(Math.tan((state.camera.fov * Math.PI) / 360) * Math.min(1, state.camera.aspect));
+  const d = r / Math.sin(half) * 1.1;
   state.camera.position.copy(c).add(new THREE.Vector3(-0.55, -0.75, 0.45).normalize().multiplyScalar(d));
   state.camera.near = d / 1000; state.camera.far = d * 100;
   state.camera.updateProjectionMatrix();

@@ -11,7 +11,7 @@ const state = {
   config: null, svgUrl: null, view: null,
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, views: 0, glbs: 0, view: null, state, errors: [] };
+window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [] };
 
 // ------------------------------------------------------------------ requests
 async function post(path, body, raw = false) {
@@ -63,7 +63,8 @@ function setText(p, v) {       // the value as `aidl render --set` takes it
 
 function schedule(delay = 200) {
   clearTimeout(state.timer);
-  state.timer = setTimeout(compile, delay);
+  window.studio.idle = false;
+  state.timer = setTimeout(() => { state.timer = null; compile(); }, delay);
 }
 
 async function compile() {
@@ -87,6 +88,7 @@ async function compile() {
   } finally {
     state.inflight = false;
     if (state.again) { state.again = false; compile(); }
+    else if (!state.timer) window.studio.idle = true;     // read by the tests: nothing pending
   }
 }
 
@@ -217,6 +219,7 @@ async function fetchFile(ext, extra = {}) {
 
 async function load3d() {
   const seq = ++state.glbSeq;
+  const shown = window.studio.views;
   try {
     const { blob } = await fetchFile("glb", { assembled: true, layout: false });
     if (seq !== state.glbSeq || !window.aidl3d) return;
@@ -225,6 +228,7 @@ async function load3d() {
     state.reframe = false;
     URL.revokeObjectURL(url);
     window.studio.glbs += 1;
+    window.studio.glbView = shown;          // the view whose 3D is on the screen
   } catch (e) {
     window.studio.errors.push("3D: " + (e.message || e));
   }
