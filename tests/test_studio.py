@@ -175,3 +175,27 @@ def test_requests_that_are_not_programs_are_refused_clearly(client):
     r = client.post("/api/download/dxf", json={"sid": sid, "source": BRACKET,
                                                "settings": {"kerf": 50}})
     assert r.status_code == 422 and "kerf" in r.json()["error"]
+
+
+def test_two_server_processes_behind_one_port_share_the_uploads(tmp_path):
+    """`aidl studio --processes 2`: uvicorn workers behind one port; a request carries its
+    program, so either process answers; an upload made through one is read by the other."""
+    import json
+    import urllib.request
+    from benchmarks.studio_server import studio
+
+    def call(url, path, body=None, raw=None):
+        data = raw if raw is not None else (json.dumps(body).encode() if body is not None else None)
+        req = urllib.request.Request(url + path, data=data, method="POST" if data is not None else "GET",
+                                     headers={"Content-Type": "application/json"})
+        with urllib.request.urlopen(req, timeout=60) as r:
+            return json.loads(r.read())
+
+    with studio("--processes", "2", "--compilers", "1") as (url, _proc):
+        sid = call(url, "api/session", {})["sid"]
+        call(url, f"api/upload?sid={sid}&name=board.dxf", raw=BOARD)
+        oks = [call(url, "api/view", {"sid": sid, "source": USES_BOARD, "values": {}})["ok"]
+               for _ in range(6)]
+        assert all(oks)
+        doc = call(url, "api/docs?name=divider_tray")
+        assert "compartments" in doc["text"]
