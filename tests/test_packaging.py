@@ -1,8 +1,9 @@
 """The release: ``python -m build`` makes a wheel and an sdist that pass ``twine check``, under
 the Apache-2.0 licence (PEP 639 metadata); the wheel installs on its own into a fresh venv (no
 system site-packages, no extras) and has what the compiler reads at run time: the grammar,
-the standard library and the preview's static files travel inside it (`aidl_lang/grammar` and
-`aidl_lang/stdlib` are links to the top-level folders); ``aidl --version`` names it, the core
+the standard library, the preview's static files and the studio's examples travel inside it
+(`aidl_lang/grammar`, `aidl_lang/stdlib` and `aidl_lang/studio/examples` are links to the
+top-level folders); ``aidl --version`` names it, the core
 formats are written and the extras' formats name the extra to install.
 
 The module builds once and installs once (measured with
@@ -11,6 +12,7 @@ pip's local cache); it is marked ``slow``, so ``pytest -m "not slow"`` leaves it
 import email
 import json
 import math
+import os
 import shutil
 import subprocess
 import sys
@@ -35,7 +37,7 @@ def dist(tmp_path_factory):
     src.mkdir()
     for name in ("pyproject.toml", "README.md", "LICENSE"):
         shutil.copy(ROOT / name, src / name)
-    for name in ("grammar", "stdlib"):
+    for name in ("grammar", "stdlib", "examples"):
         shutil.copytree(ROOT / name, src / name)
     shutil.copytree(ROOT / "aidl_lang", src / "aidl_lang", symlinks=True,
                     ignore=shutil.ignore_patterns("__pycache__"))
@@ -59,6 +61,28 @@ def test_the_wheel_carries_the_grammar_the_stdlib_and_the_static_files(dist):
     assert need <= names, need - names
     grammar = zipfile.ZipFile(wheel).read("aidl_lang/grammar/aidl.lark").decode()
     assert grammar == (ROOT / "grammar" / "aidl.lark").read_text()
+
+
+@pytest.mark.slow
+def test_the_wheel_carries_the_studio_s_examples(dist):
+    """``aidl_lang/studio/examples`` (a link to ``examples/``) ships every example, every
+    generator example and the files they read, but not the script that made those files."""
+    wheel, sdist = dist
+    names = set(zipfile.ZipFile(wheel).namelist())
+    base = "aidl_lang/studio/examples"
+    assert {f"{base}/telephone.aidl", f"{base}/generators/divider_tray.aidl",
+            f"{base}/parts/gears.aidl", f"{base}/parts/logo.svg",
+            f"{base}/parts/pcb_board.dxf", "aidl_lang/studio/gallery.py"} <= names
+    shipped = {n[len(base) + 1:] for n in names if n.startswith(base + "/")}
+    want = {p.relative_to(ROOT / "examples").as_posix()
+            for p in (ROOT / "examples").rglob("*") if p.is_file() and p.suffix != ".py"
+            and p.suffix in (".aidl", ".svg", ".dxf")}
+    assert shipped == want, shipped ^ want
+    assert not any(n.endswith("make_drawings.py") for n in names)
+    assert zipfile.ZipFile(wheel).read(f"{base}/generators/divider_tray.aidl").decode() == \
+        (ROOT / "examples" / "generators" / "divider_tray.aidl").read_text()
+    with tarfile.open(sdist) as tar:
+        assert f"aidl_lang-{VERSION}/{base}/generators/divider_tray.aidl" in tar.getnames()
 
 
 @pytest.mark.slow
@@ -140,6 +164,27 @@ def test_the_installed_wheel_knows_its_version_and_is_not_this_checkout(plain_in
                         "import aidl_lang; print(aidl_lang.__file__)"],
                        capture_output=True, text=True, timeout=60, cwd=venv)
     assert Path(r.stdout.strip()).is_relative_to(venv), r.stdout + r.stderr
+
+
+@pytest.mark.slow
+def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
+    """The gallery reads the examples shipped inside the wheel: the same entries as in this
+    checkout, and a generator's program compiles and draws its thumbnail there."""
+    venv, _ = plain_install
+    probe = ("import json\nfrom aidl_lang.studio import gallery as g\n"
+             "e = g.entry('generator/divider_tray')\n"
+             "print(json.dumps({'ids': [x.id for x in g.entries()], 'where': str(g.EXAMPLES),"
+             " 'ok': g.compile_entry(e).ok, 'svg': '<path' in g.thumbnail(e),"
+             " 'rows': [p['name'] for p in e.params]}))")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}   # the wheel's, not ours
+    r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
+                       text=True, timeout=300, cwd=tmp_path, env=env)
+    assert r.returncode == 0, r.stderr[-3000:]
+    got = json.loads(r.stdout)
+    from aidl_lang.studio import gallery
+    assert got["ids"] == [e.id for e in gallery.entries()]
+    assert Path(got["where"]).is_relative_to(venv)
+    assert got["ok"] and got["svg"] and {"rows", "cols", "thickness"} <= set(got["rows"])
 
 
 @pytest.mark.slow
