@@ -49,7 +49,9 @@ def test_range_errors_are_located(compile_text, src, code, col):
 
 
 @pytest.mark.parametrize("value, ok", [("80mm", True), ("20mm", True), ("3in", True),
-                                       ("81mm", False), ("19.9mm", False), ("4in", False)])
+                                       ("81mm", False), ("19.9mm", False), ("4in", False),
+                                       # a bare number is in the file's units (mm here)
+                                       ("80", True), ("20", True), ("81", False)])
 def test_set_is_checked_against_the_range(compile_text, value, ok):
     c = compile_text(RANGED, overrides={"w": value})
     assert c.ok == ok

@@ -170,6 +170,10 @@ class Statements:
             if isinstance(q, Q) and q.dim != val.dim and q.const() is not None \
                     and q.dim == (0, 0) and val.dim == (1, 0):
                 q = Q.num(q.const() * self.file.unit_scale, val.dim)     # a bare number: file units
+            if overridden and isinstance(q, Q) and q.dim == (1, 0) and val.dim == (0, 0):
+                # `--set length=120` for a length param: a bare number in the file's units,
+                # as it would be written in the file (was E0124 "must be a number")
+                val = Q.num(val.const() * self.file.unit_scale, q.dim)
             if not isinstance(q, Q) or q.const() is None or q.dim != val.dim:
                 want = dim_name(val.dim)
                 raise EvalError("E0124", f"`{o.name}` of param `{st.name}` must be a {want} like "
