@@ -46,17 +46,22 @@ def main() -> int:
     args = ap.parse_args()
     with studio("--processes", str(args.processes), "--compilers", str(args.compilers),
                 "--rate", "1000000/minute") as (url, _proc):
-        # warm: the gallery's designs compiled once, so the first users see warm workers
-        before = stats(url)
         with tempfile.TemporaryDirectory() as tmp:
             prefix = Path(tmp) / "load"
             t0 = time.monotonic()
-            run = subprocess.run(
+            run = subprocess.Popen(
                 [sys.executable, "-m", "locust", "-f", str(HERE / "studio_locust.py"),
                  "--headless", "-u", str(args.users), "-r", str(args.spawn_rate),
                  "-t", f"{int(args.minutes * 60)}s", "--host", url.rstrip("/"),
                  "--csv", str(prefix), "--only-summary", "--loglevel", "WARNING"],
-                capture_output=True, text=True)
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            memory = []             # (s, [MB per worker]) every 30 s: growth shows here
+            while run.poll() is None:
+                time.sleep(1)
+                if time.monotonic() - t0 >= 30 * (len(memory) + 1):
+                    memory.append((round(time.monotonic() - t0),
+                                   [round(w["rss"] / 2**20) for w in stats(url)["workers"]]))
+            _, err = run.communicate()
             seconds = time.monotonic() - t0
             after = stats(url)
             rows = list(csv.DictReader(open(f"{prefix}_stats.csv")))
@@ -71,11 +76,11 @@ def main() -> int:
         print(f"failure: {f['Method']} {f['Name']}: {f['Error'][:160]} x{f['Occurrences']}")
     print("server:", json.dumps({k: after[k] for k in ("compiles", "busy", "limited",
                                                        "timeouts")}))
-    mb = lambda d: [round(w["rss"] / 2**20) for w in d["workers"]]   # noqa: E731
-    print(f"worker memory MB: start {mb(before)}  end {mb(after)}  "
+    print("worker memory MB every 30 s: " + "  ".join(f"{t}s {m}" for t, m in memory)
+          + f"  end {[round(w['rss'] / 2**20) for w in after['workers']]}; "
           f"restarts {[w['restarts'] for w in after['workers']]}")
     if run.returncode not in (0, 1):
-        print(run.stderr[-2000:], file=sys.stderr)
+        print(err[-2000:], file=sys.stderr)
     return 0
 
 

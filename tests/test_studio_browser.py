@@ -67,12 +67,14 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         page.wait_for_selector("#gallery[open] .card")
         cards = page.locator("#cards .card")
         assert cards.count() >= 30
+        page.wait_for_function("() => [...document.querySelectorAll('#cards .card img')].slice(0, 8)"
+                               ".every(i => i.complete && i.naturalWidth > 0)", timeout=120_000)
+        page.screenshot(path=str(OUT / "studio-gallery.png"))
         page.fill("#gallery-search", "tray")
         tray = page.locator('#cards .card[data-id="generator/divider_tray"]')
         assert tray.is_visible()
         page.wait_for_function("() => (document.querySelector('#cards .card[data-id=\"generator/divider_tray\"] img').naturalWidth > 0)",
                                timeout=60_000)
-        page.screenshot(path=str(OUT / "studio-gallery.png"))
         n = views(page)
         tray.click()
         page.wait_for_function(f"() => (window.studio.views > {n} && window.studio.view.ok)", timeout=60_000)
@@ -159,6 +161,7 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         assert emb.evaluate("window.studio.view.svg") == svg
         assert not emb.locator("#code").is_visible()
         assert emb.locator('#params input[type=range][name="rows"]').is_visible()
+        emb.wait_for_function("() => window.studio.glbView === window.studio.views", timeout=60_000)
         emb.screenshot(path=str(OUT / "studio-embed.png"))
 
 
