@@ -265,3 +265,16 @@ solid p {
     assert 0.18 <= gap <= 0.2
     assert f"keep `p.d.ring` {math.ceil((0.5 - gap) * 100) / 100:.2f} mm further" in w.hint
     assert not warnings(compile_text, src % "3.6", "W0516")
+
+
+def test_the_gap_to_a_glyph_box_squeezed_to_a_line_is_measured_without_a_division_by_zero():
+    """A glyph box of zero width (text on an arc at a wide angle) has a zero-length edge:
+    the gap is measured to its end points, with no NumPy warning (it printed one)."""
+    import warnings
+    import numpy as np
+    from aidl_lang.output.checks.text import _quad_gap
+    p = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    line = np.array([[3, 0], [3, 0], [3, 1], [3, 1]], float)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert _quad_gap(p, line) == 2.0 and _quad_gap(line, p) == 2.0

@@ -341,6 +341,7 @@ def _quad_gap(p, q) -> float:
         s0, s1 = b, np.roll(b, -1, axis=0)
         d = s1 - s0
         for pt in a:
-            t = np.clip(((pt - s0) * d).sum(1) / (d * d).sum(1), 0.0, 1.0)
+            # a zero-length edge (a glyph box squeezed to a line) is its end point: t = 0
+            t = np.clip(((pt - s0) * d).sum(1) / np.maximum((d * d).sum(1), 1e-300), 0.0, 1.0)
             best = min(best, float(np.hypot(*(s0 + t[:, None] * d - pt).T).min()))
     return best
