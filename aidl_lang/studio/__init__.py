@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import signal
 import socket
 import sys
 import tempfile
@@ -68,12 +69,21 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
                             log_level="warning", timeout_graceful_shutdown=2, lifespan="on",
                             workers=max(1, processes), proxy_headers=True)
     server = uvicorn.Server(config)
+    supervisor = None
+    if processes > 1:
+        try:            # uvicorn's supervisor runs the server itself in each worker process
+            supervisor = Multiprocess(config, sockets=[sock])
+        except TypeError:                       # older uvicorn: it is given the server's run
+            supervisor = Multiprocess(config, target=server.run, sockets=[sock])
     shown = f"[{host}]" if ":" in host else host
     print(f"aidl studio: http://{shown}:{port}/  ({max(1, processes)} process"
           f"{'es' if processes > 1 else ''} x {compilers} compilers; Ctrl-C stops)", flush=True)
+    # uvicorn raises a SIGTERM again after its graceful shutdown: end through `finally` then,
+    # so the sessions' folder is removed (the default action would skip it)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
     try:
-        if processes > 1:
-            Multiprocess(config, target=server.run, sockets=[sock]).run()
+        if supervisor is not None:
+            supervisor.run()
         else:
             server.run(sockets=[sock])
     finally:
