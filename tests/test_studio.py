@@ -199,3 +199,18 @@ def test_two_server_processes_behind_one_port_share_the_uploads(tmp_path):
         assert all(oks)
         doc = call(url, "api/docs?name=divider_tray")
         assert "compartments" in doc["text"]
+
+
+def test_the_operators_budget_bounds_every_compile(tmp_path):
+    """`aidl studio --budget K`: each compile gets K times the default evaluation budget; at
+    0.1 a loop of 3,000 holes is refused with the budget's located error (the default takes
+    it, and runs past its time in the shape checks)."""
+    app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, budget=0.1))
+    with TestClient(app) as c:
+        v = view(c, session(c), SLOW)
+        assert not v["ok"], v
+        d = v["diagnostics"][0]
+        assert d["code"] == "E0301" and "limit of 1000" in d["message"], d
+        assert d["span"]["line"] == 4
+        r = c.post("/api/download/dxf", json={"sid": session(c), "source": SLOW})
+        assert r.status_code == 422 and r.json()["diagnostics"][0]["code"] == "E0301"

@@ -81,6 +81,8 @@ class Session:
         self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
         self._base: object = None                 # the defaults' Drawing, then its topology
         self.last: dict = {}                      # timings and warm/cold of the last compile
+        from ..limits import DEFAULT_BUDGET
+        self.budget = DEFAULT_BUDGET              # each compile's evaluation budget
 
     # ------------------------------------------------------------------ public
     def load(self, source: str | None = None) -> dict:
@@ -230,7 +232,7 @@ class Session:
         t0 = time.perf_counter()
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
-        interp = Interpreter(sink, values)
+        interp = Interpreter(sink, values, self.budget)
         model = interp.run(self.program)
         res = Result(sink, fctx=interp.file)
         t["interpret_ms"] = _ms(t0)

@@ -193,7 +193,7 @@ class Studio:
         self.settings = settings
         self.folders = Folders(settings.data)
         memory = settings.memory_mb << 20 if settings.memory_mb > 0 else None
-        self.pool = W.Pool([W.Worker(compiler.handler, (), memory)
+        self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
                             for _ in range(max(1, settings.compilers))])
         self.limiter = MovingWindowRateLimiter(MemoryStorage())
         self.rate = parse(settings.rate)

@@ -34,17 +34,20 @@ MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
 
 
-def handler():
-    """The worker's request handler (run once in the new process)."""
+def handler(budget: float = 1.0):
+    """The worker's request handler (run once in the new process); ``budget``: the factor of
+    the default evaluation budget every compile gets (``aidl studio --budget``)."""
+    from ..limits import DEFAULT_BUDGET
     sessions: OrderedDict = OrderedDict()
+    scaled = DEFAULT_BUDGET.scaled(budget)
 
     def handle(request):
         kind = request[0]
         try:
             if kind == "view":
-                answer = view(sessions, *request[1:])
+                answer = view(sessions, *request[1:], budget=scaled)
             elif kind == "download":
-                answer = download(*request[1:])
+                answer = download(*request[1:], budget=scaled)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
             else:
@@ -61,12 +64,16 @@ def handler():
     return handle
 
 
-def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict) -> dict:
-    """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"})."""
+def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
+         budget=None) -> dict:
+    """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"});
+    ``budget``: a :class:`~aidl_lang.limits.Budget` (None: the default)."""
     from ..serve.session import Session
     s = sessions.pop(sid, None)
     if s is None:
         s = Session(os.path.join(folder, "main.aidl"))
+        if budget is not None:
+            s.budget = budget
     sessions[sid] = s
     while len(sessions) > MAX_SESSIONS:
         sessions.popitem(last=False)
@@ -98,7 +105,7 @@ def _number(settings: dict, key: str, lo: float, hi: float) -> float | None:
     return x
 
 
-def download(folder: str, source: str, values: dict, fmt: str, settings: dict):
+def download(folder: str, source: str, values: dict, fmt: str, settings: dict, budget=None):
     """The program in format ``fmt`` (``svg``, ``dxf``, ``pdf``, ``gcode``, ...; see
     :data:`aidl_lang.output.FORMATS`): ``(bytes, file name, media type)``, or
     ``{"error", "diagnostics"}``.
@@ -132,7 +139,8 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict):
     except ValueError as e:
         return {"error": str(e)}
     res = api.compile(source=source, path=os.path.join(folder, "main.aidl"),
-                      overrides={str(k): str(v) for k, v in (values or {}).items()})
+                      overrides={str(k): str(v) for k, v in (values or {}).items()},
+                      budget=budget)
     if not res.ok:
         return {"error": "the program does not compile with these values",
                 "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
