@@ -81,8 +81,19 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         assert page.inner_text("#title") == "Divider tray"
         names = page.eval_on_selector_all("#params input[type=range]", "els => els.map(e => e.name)")
         assert {"rows", "cols", "thickness"} <= set(names), names
+        # turn the 3D view by dragging it: the camera stays where it was left on the next picture
+        page.wait_for_function("() => window.studio.glbView === window.studio.views", timeout=60_000)
+        box = page.locator("#viewer3d canvas").bounding_box()
+        before = page.evaluate("window.aidl3d.camera()")
+        page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+        page.mouse.down()
+        page.mouse.move(box["x"] + box["width"] / 2 + 120, box["y"] + box["height"] / 2 - 40, steps=8)
+        page.mouse.up()
+        turned = page.evaluate("window.aidl3d.camera()")
+        assert max(abs(a - b) for a, b in zip(turned, before)) > 1.0, (before, turned)
         # the gallery's tray is 3 x 4 already: try 2 x 5, then back to what was asked for
         set_slider(page, "rows", 2)
+        assert page.evaluate("window.aidl3d.camera()") == pytest.approx(turned, abs=1e-9)
         set_slider(page, "cols", 5)
         parts3d = page.evaluate("window.aidl3d.parts")
         assert sum("row_divider" in p for p in parts3d) == 1, parts3d
@@ -118,6 +129,15 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         for g, w in zip(got_sizes, want):
             assert g == pytest.approx(w, abs=1e-6)
         assert {l[0] for l in outlines} >= {"CUT-kit.tray.row_divider[1]", "CUT-kit.tray.col_divider[2]"}
+
+        # hover: `aidl docs` for the name under the mouse
+        at = page.evaluate("""() => { const v = window.studio.editor.view;
+            const i = v.state.doc.toString().indexOf('divider_tray(') + 3;
+            const c = v.coordsAtPos(i); return [c.left + 2, (c.top + c.bottom) / 2]; }""")
+        page.mouse.move(at[0], at[1])
+        page.wait_for_selector(".cm-tooltip", timeout=20_000)
+        assert "compartments" in page.inner_text(".cm-tooltip")
+        page.mouse.move(5, 5)
 
         # edit the code: a misspelt call gives a located error under the code and in the editor
         page.evaluate("""() => { const v = window.studio.editor.view;

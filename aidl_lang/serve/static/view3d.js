@@ -12,7 +12,8 @@ const host = document.getElementById("viewer3d");
 const state = { renderer: null, scene: null, camera: null, controls: null, root: null,
                 framed: false, seq: 0 };
 // read by the browser test: loads finished, the part names and their colours, the last error
-window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame };
+window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame,
+                 camera: () => state.camera ? state.camera.position.toArray() : null };
 
 function init() {
   const r = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
