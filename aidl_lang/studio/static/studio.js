@@ -457,7 +457,7 @@ async function start() {
   window.addEventListener("pagehide", () =>
     navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
   if (!EMBED) {
-    editor = createEditor($("code"), { doc: "", hover,
+    editor = createEditor($("code"), { doc: "", hover, wrap: true,
       onChange: (text) => { state.source = text; schedule(250); } });
     editor.goto = (line, col) => {
       const doc = editor.view.state.doc;

@@ -2,7 +2,7 @@
 // aidl_lang/studio/static/vendor/codemirror/aidl-editor.js (one ES module, no network).
 //
 //   import { createEditor } from "./vendor/codemirror/aidl-editor.js";
-//   const ed = createEditor(parent, { doc, onChange, hover, readOnly });
+//   const ed = createEditor(parent, { doc, onChange, hover, readOnly, wrap });
 //   ed.getText(); ed.setText(text); ed.setDiagnostics(list); ed.view; ed.destroy();
 //
 // Positions that cross this API count characters as Python does (Unicode code points): the
@@ -157,10 +157,12 @@ function hoverExtension(hover) {
 /**
  * Make an AIDL editor in `parent` (an element with a CSS height; the editor fills it).
  * `onChange(text)` is called with the whole text after each user edit (not after setText);
- * `hover(text, pos)` resolves to null or plain text shown in a tooltip.
+ * `hover(text, pos)` resolves to null or plain text shown in a tooltip; `wrap`: long lines
+ * wrap instead of scrolling sideways.
  */
 export function createEditor(parent, {
   doc = "", onChange = (text) => {}, hover = async (text, pos) => null, readOnly = false,
+  wrap = false,
 } = {}) {
   const extensions = [
     lineNumbers(),
@@ -200,6 +202,7 @@ export function createEditor(parent, {
     }),
   ];
   if (hover) extensions.push(hoverExtension(hover));
+  if (wrap) extensions.push(EditorView.lineWrapping);   // long lines wrap in a narrow pane
   const view = new EditorView({
     parent,
     state: EditorState.create({ doc: String(doc ?? ""), extensions }),
