@@ -69,9 +69,10 @@ def test_a_view_then_a_warm_slider_move_and_a_dxf_read_back(client):
 
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
     a, b = session(client), session(client)
+    assert not view(client, a, USES_BOARD)["ok"]       # not uploaded yet
     r = client.post(f"/api/upload?sid={a}&name=board.dxf", content=BOARD)
     assert r.status_code == 200 and r.json() == {"name": "board.dxf", "bytes": len(BOARD)}
-    assert view(client, a, USES_BOARD)["ok"]
+    assert view(client, a, USES_BOARD)["ok"]            # the same program, compiled again
     other = view(client, b, USES_BOARD)                 # another tab cannot see it
     assert not other["ok"] and other["diagnostics"][0]["code"] == "E0130"
     for src in ['solid s {\n    d = Drawing2D("../' + a + '/board.dxf")\n}\n',

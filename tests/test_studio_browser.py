@@ -219,3 +219,30 @@ def test_without_a_model_endpoint_the_box_is_hidden():
         page.goto(url)
         ready(page)
         assert page.locator("#describe").is_hidden()
+
+
+def test_a_drawing_uploaded_in_the_page_is_read_by_the_program(tmp_path):
+    """"Your drawings": a program naming a DXF that is not there gets E0130 under the code;
+    uploading the file through the page's file field compiles it, and the file is listed."""
+    board = tmp_path / "board.dxf"
+    board.write_bytes((ROOT / "examples" / "parts" / "pcb_board.dxf").read_bytes())
+    prog = ('units mm\nsolid lid {\n    d = Drawing2D("board.dxf", layer="Edge.Cuts")\n'
+            '    Fixed(d.origin)\n}\n')
+    with studio() as (url, _proc), chromium() as ctx:
+        page = ctx.new_page()
+        page.goto(url)
+        ready(page)
+        page.keyboard.press("Escape")
+        page.evaluate("""(text) => { const v = window.studio.editor.view;
+            v.dispatch({changes: {from: 0, to: v.state.doc.length, insert: text}}); }""", prog)
+        page.wait_for_function("() => window.studio.view && !window.studio.view.ok "
+                               "&& window.studio.idle", timeout=60_000)
+        assert "E0130" in page.inner_text("#diagnostics li.error")
+        n = views(page)
+        page.click("#uploads summary")
+        page.set_input_files("#upload", str(board))
+        page.wait_for_function(f"() => window.studio.views > {n} && window.studio.view.ok",
+                               timeout=60_000)
+        page.wait_for_selector("#files li")
+        assert "board.dxf" in page.inner_text("#files")
+        assert "<path" in page.evaluate("window.studio.view.svg")

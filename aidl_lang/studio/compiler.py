@@ -78,7 +78,9 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     while len(sessions) > MAX_SESSIONS:
         sessions.popitem(last=False)
     values = {str(k): str(v) for k, v in (values or {}).items()}
-    if s.source != source or s.program is None:
+    files = _listing(folder)        # an upload changes what the same program draws
+    if s.source != source or s.program is None or files != getattr(s, "files", None):
+        s.files = files
         s.values = values
         doc = s.load(source)
     elif values != s.values:
@@ -90,6 +92,16 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
+
+
+def _listing(folder: str) -> tuple:
+    """The session folder's files as ``(name, size, mtime_ns)``, sorted."""
+    try:
+        with os.scandir(folder) as it:
+            return tuple(sorted((e.name, e.stat(follow_symlinks=False).st_size,
+                                 e.stat(follow_symlinks=False).st_mtime_ns) for e in it))
+    except OSError:
+        return ()
 
 
 def _number(settings: dict, key: str, lo: float, hi: float) -> float | None:
