@@ -5,7 +5,6 @@ Each generator goes through the real pipeline; its stated sizes (outside and ins
 (an independent reader), to 1e-9 mm; assembled, the fit check finds no collision (W0517) and no
 loose part (W0518) at kerf 0 and 0.15 mm, and material thicker than `thickness` collides (W0517).
 """
-import contextlib
 import io
 from pathlib import Path
 
@@ -13,7 +12,6 @@ import ezdxf
 import pytest
 
 import aidl_lang
-from aidl_lang.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 T, C = 3.0, 0.3
@@ -184,29 +182,3 @@ def test_open_finger_box_has_its_flat_edge_at_the_top(tmp_path):
     src = ('import "std/joints.aidl"\nthickness 3 mm\n'
            "assembly kit { box = finger_box(length=120 mm, depth=80 mm, height=50 mm, closed=false) }\n")
     assert fit_codes(compile_src(tmp_path, src)) == []
-
-
-# ------------------------------------------------------------------------------ demos and docs
-
-def run_cli(*args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = main([str(a) for a in args])
-    return rc, out.getvalue(), err.getvalue()
-
-
-@pytest.mark.parametrize("name", list(GENERATORS))
-def test_demo_program_compiles_clean(name):
-    p = ROOT / "examples" / "generators" / f"{name}.aidl"
-    src = p.read_text()
-    assert src.startswith("# ") and f"{name}(" in src
-    r = aidl_lang.compile(source=src, path=p)
-    assert r.ok and [d.code for d in r.sink.items] == [], [d.message for d in r.sink.items]
-
-
-@pytest.mark.parametrize("name", list(GENERATORS))
-def test_docs_and_prompt_line(name):
-    rc, out, _ = run_cli("docs", name)
-    assert rc == 0 and out.startswith(f"{name} (assembly template, std/boxes.aidl)")
-    rc, out, _ = run_cli("prompt")
-    assert rc == 0 and any(ln.startswith(f"- {name}(") for ln in out.splitlines())

@@ -9,7 +9,6 @@ touching a wall (the lid and cheeks turned about the pin in Manifold), the drawe
 all round is measured on the assembled solids, and the flex box's wall is as long as the base's
 perimeter at the wall's middle line, from the base's outline and corner arcs in the DXF.
 """
-import contextlib
 import io
 import math
 from pathlib import Path
@@ -20,7 +19,6 @@ import numpy as np
 import pytest
 
 import aidl_lang
-from aidl_lang.cli import main
 from aidl_lang.output import assembly
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -316,29 +314,3 @@ def test_material_thicker_than_the_thickness_collides(tmp_path, name):
 def test_defaults_compile_clean(tmp_path, name):
     r = compile_src(tmp_path, program(f"{name}()"))
     assert [d.code for d in r.sink.items] == [], [d.message for d in r.sink.items]
-
-
-# ------------------------------------------------------------------------------ demos and docs
-
-def run_cli(*args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = main([str(a) for a in args])
-    return rc, out.getvalue(), err.getvalue()
-
-
-@pytest.mark.parametrize("name", list(GENERATORS))
-def test_demo_program_compiles_clean(name):
-    p = ROOT / "examples" / "generators" / f"{name}.aidl"
-    src = p.read_text()
-    assert src.startswith("# ") and f"{name}(" in src
-    r = aidl_lang.compile(source=src, path=p)
-    assert r.ok and [d.code for d in r.sink.items] == [], [d.message for d in r.sink.items]
-
-
-@pytest.mark.parametrize("name", list(GENERATORS))
-def test_docs_and_prompt_line(name):
-    rc, out, _ = run_cli("docs", name)
-    assert rc == 0 and out.startswith(f"{name} (assembly template, std/boxes.aidl)")
-    rc, out, _ = run_cli("prompt")
-    assert rc == 0 and any(ln.startswith(f"- {name}(") for ln in out.splitlines())

@@ -23,6 +23,21 @@ def test_there_are_the_generators_of_issue_52():
 
 
 @pytest.mark.parametrize("path", DEMOS, ids=lambda p: p.stem)
+def test_a_demo_compiles_clean_and_its_generator_is_in_the_docs_and_the_prompt(path):
+    """The demo says what it is and compiles with no message at all; `aidl docs NAME` finds
+    the generator in its stdlib module and `aidl prompt` has its line (the model is a user)."""
+    from aidl_lang.llm.prompt import system_prompt
+    from aidl_lang.reference import lookup_text
+    name, src = path.stem, path.read_text()
+    assert src.startswith("# ") and f"{name}(" in src
+    r = aidl_lang.compile(source=src, path=path)
+    assert r.ok and [d.code for d in r.sink.items] == [], [d.message for d in r.sink.items]
+    text, found = lookup_text(name)
+    assert found and text.startswith(f"{name} (") and "template, std/" in text.splitlines()[0]
+    assert any(ln.startswith(f"- {name}(") for ln in system_prompt().splitlines())
+
+
+@pytest.mark.parametrize("path", DEMOS, ids=lambda p: p.stem)
 def test_a_demo_nests_on_a_cutting_sheet(path):
     import ezdxf
     import manifold3d as mf

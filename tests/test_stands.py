@@ -8,8 +8,6 @@ it compiles without a shape warning, its stated dimensions are re-read from the 
 than the generator's `thickness` collides (W0517)."""
 import io
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import ezdxf
@@ -194,15 +192,6 @@ def test_joint_arguments_are_checked(tmp_path, src, msg):
     assert [e.code for e in r.errors] == ["E0405"] and msg in r.errors[0].message
 
 
-@pytest.mark.parametrize("name", ["tab_and_slot", "dovetail", "cross_halving", "finger_edge"])
-def test_joint_docs_and_prompt(name):
-    from aidl_lang.reference import stdlib_lines
-    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "docs", name], cwd=ROOT,
-                         capture_output=True, text=True)
-    assert out.returncode == 0 and f"{name}(" in out.stdout
-    assert f"- {name}(" in stdlib_lines()
-
-
 # ---------------------------------------------------------------------------------------------
 # Stands and holders (std/stands.aidl)
 
@@ -322,12 +311,3 @@ def test_wall_shelf_dimensions(tmp_path, clearance):
         # depth + the tabs through the plate; 150 tall at its back edge, where the shoulder below
         # the lower tab cuts the pointed foot back by the thickness (the diagonal falls 100 in 123)
         assert size(b) == pytest.approx((123, 150 - 3 * 100 / 123), abs=A)
-
-
-@pytest.mark.parametrize("name", list(STANDS))
-def test_stand_docs_and_prompt(name):
-    from aidl_lang.reference import stdlib_lines
-    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "docs", name], cwd=ROOT,
-                         capture_output=True, text=True)
-    assert out.returncode == 0 and f"{name}(" in out.stdout and "std/stands.aidl" in out.stdout
-    assert f"- {name}(" in stdlib_lines()
