@@ -335,12 +335,6 @@ def test_rounding_bound_holds_off_the_grid():
             assert min(max(abs(x - dx), abs(y - dy)) for dx, dy in design) <= 0.5
 
 
-def test_an_empty_drawing_is_a_clear_error():
-    from aidl_lang.output.part import Output, OutputError
-    with pytest.raises(OutputError, match="nothing to write"):
-        encode(Output(), ".plt")
-
-
 ELLIPSES = """solid plate {
     body = Rectangle(center=(0, 0), width=80, height=50)
     hole a { e = Ellipse(center=(-20, 0), rx=12, ry=6, rotation=30) }

@@ -385,12 +385,6 @@ def test_outlines_before_holes_are_caught(monkeypatch):
         check_lbrn2(out, bad)
 
 
-def test_an_empty_drawing_is_a_clear_error():
-    from aidl_lang.output.part import Output, OutputError
-    with pytest.raises(OutputError, match="nothing to write"):
-        encode(Output(), ".lbrn2")
-
-
 ELLIPSES = """solid plate {
     body = Rectangle(center=(0, 0), width=80, height=50)
     hole a { e = Ellipse(center=(-20, 0), rx=12, ry=6, rotation=30) }

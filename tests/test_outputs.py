@@ -608,3 +608,26 @@ def test_a_laser_png_shows_its_cuts_one_pixel_wide():
         # the pixel grid is half red on two pixels, so not every pixel counts
         assert red.sum() >= 0.4 * 145 * px, (kw, int(red.sum()), px)
     assert 'stroke-width="0.01"' in r.to_svg(style="laser")      # the SVG keeps its hairline
+
+
+@pytest.mark.parametrize("suffix", sorted(__import__("aidl_lang.output", fromlist=["FORMATS"]).FORMATS))
+def test_a_program_that_draws_nothing_is_a_clear_error_for_machines_and_3d(tmp_path, suffix):
+    """A program with no shape: SVG, DXF, PDF and PNG are a blank page; every machine and 3D
+    format refuses with one message saying what is missing (GLB and 3MF were an internal
+    error, trimesh's "Can't export empty scenes!"; G-code an empty job)."""
+    import subprocess
+    import sys
+    from aidl_lang.output import FORMATS
+    if suffix in (".step", ".stp"):
+        pytest.importorskip("OCP")
+    prog = tmp_path / "empty.aidl"
+    prog.write_text("units mm\nparam width = 40 mm\n")
+    out = tmp_path / f"empty{suffix}"
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", str(prog), "-o", str(out)],
+                       capture_output=True, text=True)
+    if FORMATS[suffix].empty:
+        assert r.returncode == 0 and out.exists(), r.stderr
+    else:
+        assert r.returncode == 1 and not out.exists()
+        assert f"error: nothing to write to {suffix[1:].upper()}: the drawing has no" in r.stderr
+        assert "internal error" not in r.stderr and "Traceback" not in r.stderr

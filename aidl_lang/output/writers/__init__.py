@@ -40,7 +40,8 @@ class Format:
     """One output format: ``module`` (in this package) and its ``function(output, options)
     -> bytes``; ``media`` (MIME type); ``text`` (readable on a terminal, ``-o -``); ``cut``
     (what a cutter reads: written with the kerf offset); ``assembled`` (``--assembled``
-    writes the product in 3D, or its picture); the cost :func:`writer_seconds` estimates:
+    writes the product in 3D, or its picture); ``empty``: a drawing with nothing in it is
+    still a file of this format (a blank page); the cost :func:`writer_seconds` estimates:
     ``per_item`` s per part, loop and segment, or ``per_vertex`` s per vertex of the parts'
     shapes; ``about``: what it is for, in a few words (help texts, docs)."""
     module: str
@@ -50,6 +51,7 @@ class Format:
     text: bool = False
     cut: bool = False
     assembled: bool = False
+    empty: bool = False
     per_item: float = 0.0
     per_vertex: float = 0.0
 
@@ -67,13 +69,14 @@ class Format:
 # its pixels (SECONDS_PER_PIXEL), every writer its start (WRITER_START: its library's import).
 FORMATS: dict[str, Format] = {
     ".svg": Format("svg", "write", "image/svg+xml", "vector drawing: laser software, browsers",
-                   text=True, cut=True, per_item=100e-6),
+                   text=True, cut=True, empty=True, per_item=100e-6),
     ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
-                   text=True, cut=True, per_item=150e-6),
+                   text=True, cut=True, empty=True, per_item=150e-6),
     ".pdf": Format("pdf", "write", "application/pdf",
-                   "1:1 printed template (scroll saw, hand cutting)", cut=True, per_item=300e-6),
+                   "1:1 printed template (scroll saw, hand cutting)", cut=True, empty=True,
+                   per_item=300e-6),
     ".png": Format("png", "write", "image/png", "picture of the drawing (or the product)",
-                   cut=True, assembled=True, per_item=100e-6),
+                   cut=True, assembled=True, empty=True, per_item=100e-6),
     ".stl": Format("mesh", "write_stl", "model/stl", "3D mesh of the parts (printers)",
                    assembled=True, per_vertex=50e-6),
     ".3mf": Format("mesh", "write_3mf", "model/3mf", "3D parts, one object each (printers)",
@@ -149,6 +152,8 @@ def encode(output: Output, suffix: str, options: Options | None = None,
     whose :func:`writer_seconds` would end past it is refused before it starts, with an
     :class:`~.part.OutputError` whose ``budget`` names the part with the most segments."""
     fmt = FORMATS[suffix.lower()]
+    if not fmt.empty:
+        _refuse_empty(output, suffix, fmt)
     if deadline is not None:
         from ...limits import OutOfBudget
         try:
@@ -161,6 +166,19 @@ def encode(output: Output, suffix: str, options: Options | None = None,
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None
     return fmt.write(output, options or Options())
+
+
+def _refuse_empty(output: Output, suffix: str, fmt: Format) -> None:
+    """An :class:`~.part.OutputError` for a drawing with nothing a machine or a 3D format can
+    take: no part outline (and, for the cutting formats, no engraving either)."""
+    name = suffix.lstrip(".").upper()
+    outlines = any(p.loops for p in output.parts)
+    if fmt.cut and not outlines and not any(st.segments for st in output.engrave):
+        raise OutputError(f"nothing to write to {name}: the drawing has no part outline and "
+                          "no engraving; draw a shape first")
+    if not fmt.cut and not outlines:
+        raise OutputError(f"nothing to write to {name}: the drawing has no solid part to "
+                          "extrude (engravings and holes alone have no body); draw a solid first")
 
 
 def _biggest_part(output: Output):

@@ -222,12 +222,9 @@ def _spline_points(s: Spline, tol: float) -> list:
 def to_hpgl(output: Output, options=None) -> str:
     """The HPGL text of ``output`` (see the module docstring); speeds and passes from
     ``options.machine`` (a :class:`~..machine.Machine`) or the built-in plotter profile.
-    Raises :class:`~..part.OutputError` for an empty drawing or one too large for a
+    Raises :class:`~..part.OutputError` for a drawing too large for a
     plotter's coordinates."""
     from ..toolpath import plan
-    if not any(p.loops for p in output.parts) and not any(st.segments for st in output.engrave):
-        raise OutputError("nothing to write to HPGL: the drawing has no part outline and no "
-                          "engraving; draw a shape first")
     m = _machine(options)
     x0, y0, x1, y1 = extent(output)
     if max(x1 - x0, y1 - y0) * UNITS_PER_MM > MAX_UNITS:

@@ -50,7 +50,7 @@ import math
 from xml.sax.saxutils import escape, quoteattr
 
 from .. import machine as machine_mod
-from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
+from ..part import Arc, Circle, EllipticArc, Line, Output, Spline
 
 APP_VERSION = "1.7.00"
 FORMAT_VERSION = "1"
@@ -236,11 +236,8 @@ def _machine(options):
 def to_lbrn2(output: Output, options=None) -> str:
     """The ``.lbrn2`` text of ``output`` (see the module docstring); the layers' settings
     from ``options.machine`` (a :class:`~..machine.Machine`) or the built-in laser profile.
-    Raises :class:`~..part.OutputError` when there is nothing to cut or engrave."""
+    (An empty drawing is refused before, by :func:`~aidl_lang.output.writers.encode`.)"""
     from ..toolpath import plan
-    if not any(p.loops for p in output.parts) and not any(st.segments for st in output.engrave):
-        raise OutputError("nothing to write to the LightBurn project: the drawing has no "
-                          "part outline and no engraving; draw a shape first")
     m = _machine(options)
     cuts = plan(output)
     doc = _Doc()
