@@ -151,3 +151,20 @@ def _signed(poly) -> float:
     x, y = P[:, 0], P[:, 1]
     return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
                        - np.dot(y, np.concatenate([x[1:], x[:1]])))
+
+
+def _cut_boxes(cuts) -> np.ndarray:
+    """The bounding boxes of the holes' cut regions: n x 4 (x0, y0, x1, y1), mm."""
+    return np.array([c.region.bounds() for c in cuts if c.region is not None
+                     and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+
+
+def _meets_a_cut(P: np.ndarray, boxes: np.ndarray) -> bool:
+    """Whether the box of loop ``P`` (k x 2) meets one of ``boxes`` (:func:`_cut_boxes`): an
+    inner loop that does is taken as the opening a hole cuts, which the checks leave out."""
+    if not len(boxes):
+        return False
+    x0, y0 = P.min(axis=0)
+    x1, y1 = P.max(axis=0)
+    return bool(((boxes[:, 0] <= x1) & (boxes[:, 2] >= x0) & (boxes[:, 1] <= y1)
+                 & (boxes[:, 3] >= y0)).any())

@@ -34,8 +34,8 @@ from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
 from ..booleans import Drawing
 from ..nearby import boundary, box_pairs, close_pairs
-from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edges, _inside,
-                     _part_of, _pct, _signed, _significant, _union)
+from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_boxes, _depth, _edges,
+                     _inside, _meets_a_cut, _part_of, _pct, _signed, _significant, _union)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -192,19 +192,17 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
     inner = [P for P in loops if _signed(P) < 0]
     if not inner:
         return
-    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
-                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    hb = _cut_boxes(cuts)
     limit = max(2 * t * t, 1.0)
     _check_enclosed(d, s, [P for P in inner if -_signed(P) >= limit], cuts, sink, tick)
     for P in inner:
         area = -_signed(P)
         if area >= limit:
             continue
+        if _meets_a_cut(P, hb):
+            continue
         x0, y0 = P.min(axis=0)
         x1, y1 = P.max(axis=0)
-        if len(hb) and ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
-                        & (hb[:, 3] >= y0)).any():
-            continue
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
         sink.warning("W0515", f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "

@@ -213,20 +213,16 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     The step is reported when the shapes at its two corners differ (:func:`.walls._face_at`;
     a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
     in the outline's vertices, plus a face search per step found."""
+    from .common import _cut_boxes, _meets_a_cut
     from .walls import _face_at
     if t <= 0 or not loops:
         return
-    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
-                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    hb = _cut_boxes(cuts)
     found = []
     for P in loops:
         P = np.asarray(P, dtype=float)
-        if _signed(P) < 0 and len(hb):
-            x0, y0 = P.min(axis=0)
-            x1, y1 = P.max(axis=0)
-            if ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
-                    & (hb[:, 3] >= y0)).any():
-                continue                         # an opening a hole cuts
+        if _signed(P) < 0 and _meets_a_cut(P, hb):
+            continue                             # an opening a hole cuts
         e = np.roll(P, -1, axis=0) - P
         L = np.hypot(*e.T)
         keep = L > 1e-9

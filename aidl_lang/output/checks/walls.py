@@ -395,22 +395,18 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
     length, its place and the two shapes (:func:`_face_at`, at the slit's mouth)."""
     from ..nearby import close_pairs
-    from .common import _edges, _inside, _signed
+    from .common import _cut_boxes, _edges, _inside, _meets_a_cut, _signed
     if t <= 0 or not loops:
         return
-    hb = np.array([c.region.bounds() for c in cuts if c.region is not None
-                   and not c.region.is_empty()], dtype=float).reshape(-1, 4)
+    hb = _cut_boxes(cuts)
     keep = []
     for P in loops:
         if len(P) < 3:
             continue
-        if _signed(P) < 0 and len(hb):
-            x0, y0 = P.min(axis=0)
-            x1, y1 = P.max(axis=0)
-            if ((hb[:, 0] <= x1) & (hb[:, 2] >= x0) & (hb[:, 1] <= y1)
-                    & (hb[:, 3] >= y0)).any():
-                continue                         # an opening a hole cuts
-        keep.append(np.asarray(P, dtype=float))
+        P = np.asarray(P, dtype=float)
+        if _signed(P) < 0 and _meets_a_cut(P, hb):
+            continue                             # an opening a hole cuts
+        keep.append(P)
     if not keep:
         return
     tick()
