@@ -17,6 +17,23 @@ import sys
 HOST = "127.0.0.1"      # never another interface: the preview is for this machine only
 
 
+def listening(host: str, port: int, backlog: int) -> socket.socket | None:
+    """A TCP socket bound to ``host``:``port`` (IPv6 when ``host`` has a ``:``; ``port`` 0: a
+    free one) and listening; None after printing why it cannot be (the port is taken)."""
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((host, port))
+    except OSError as e:
+        sock.close()
+        print(f"aidl: error: cannot listen on {host}:{port}: {e.strerror or e}; "
+              "choose another with --port", file=sys.stderr)
+        return None
+    sock.listen(backlog)
+    return sock
+
+
 def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
     """Serve the live preview of ``path`` on http://127.0.0.1:PORT/ until interrupted.
     ``port=0`` picks a free port.  Returns the exit status (2: the extra is not installed or
@@ -35,15 +52,10 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
     except SourceRefused as e:
         print(f"aidl: error[E0004]: {e.message}", file=sys.stderr)
         return 2
-    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-    try:
-        sock.bind((HOST, port))
-    except OSError as e:
-        print(f"aidl: error: cannot listen on {HOST}:{port}: {e.strerror or e}; "
-              "choose another with --port", file=sys.stderr)
+    # connections wait in the backlog until the first compile is done
+    sock = listening(HOST, port, 128)
+    if sock is None:
         return 2
-    sock.listen(128)            # connections wait in the backlog until the first compile is done
     port = sock.getsockname()[1]
     app = create_app(path, port)
     config = uvicorn.Config(app, log_level="warning", ws="websockets-sansio",
@@ -54,4 +66,4 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
     return 0
 
 
-__all__ = ["serve", "HOST"]
+__all__ = ["serve", "listening", "HOST"]

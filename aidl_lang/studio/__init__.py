@@ -22,7 +22,6 @@ from __future__ import annotations
 import os
 import shutil
 import signal
-import socket
 import sys
 import tempfile
 
@@ -50,21 +49,15 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
     for k, v in settings.items():
         if v is not None:
             setattr(s, k, v)
+    from ..serve import listening
+    sock = listening(host, port, 1024)
+    if sock is None:
+        return 2
+    port = sock.getsockname()[1]
     made = not s.data
     if made:
         s.data = tempfile.mkdtemp(prefix="aidl-studio-")
     os.environ.update(s.to_env())           # every server process reads its settings from here
-    family = socket.AF_INET6 if ":" in host else socket.AF_INET
-    sock = socket.socket(family, socket.SOCK_STREAM)
-    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-    try:
-        sock.bind((host, port))
-    except OSError as e:
-        print(f"aidl: error: cannot listen on {host}:{port}: {e.strerror or e}; "
-              "choose another with --port", file=sys.stderr)
-        return 2
-    sock.listen(1024)
-    port = sock.getsockname()[1]
     config = uvicorn.Config("aidl_lang.studio.app:create_app", factory=True,
                             log_level="warning", timeout_graceful_shutdown=2, lifespan="on",
                             workers=max(1, processes), proxy_headers=True)
