@@ -19,7 +19,6 @@ turn them into their own refusals.
 from __future__ import annotations
 
 import multiprocessing
-import queue
 import threading
 import time
 

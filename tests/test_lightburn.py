@@ -19,7 +19,7 @@ from aidl_lang.geometry.spline import bez_at
 from aidl_lang.output import encode, for_cutting
 from aidl_lang.output.machine import DEFAULTS, from_dict
 from aidl_lang.output.toolpath import plan
-from aidl_lang.output.writers import Options, lightburn
+from aidl_lang.output.writers import Options, beziers, lightburn
 
 from conftest import ROOT
 
@@ -289,7 +289,7 @@ def test_arc_beziers_meet_the_stated_bound_for_any_radius_and_sweep():
     for r in (0.05, 1.0, 12.5, 300.0, 5000.0):
         for sweep in (0.01, 1.0, math.pi / 2, math.pi, -4.0, 2 * math.pi):
             a = Arc((3.0, -7.0), r, 0.3, sweep)
-            bs = lightburn.arc_beziers(a)
+            bs = beziers.arc_beziers(a, BEZ)
             assert math.dist(bs[0][0], a.start) == 0 and math.dist(bs[-1][3], a.end) == 0
             worst = 0.0
             for b in bs:
@@ -297,7 +297,7 @@ def test_arc_beziers_meet_the_stated_bound_for_any_radius_and_sweep():
                 worst = max(worst, np.abs(np.hypot(*(p - a.center).T) - r).max())
             assert worst <= BEZ
             phi = sweep / len(bs)
-            assert worst <= lightburn.arc_error(r, phi) + 1e-12 * max(1.0, r)   # rounding
+            assert worst <= beziers.arc_error(r, phi) + 1e-12 * max(1.0, r)   # rounding
 
 
 def test_the_sheet_layout():
@@ -354,14 +354,14 @@ def test_the_machine_profile_sets_the_layers():
 # ------------------------------------------------------------------ broken writers
 def test_a_bezier_control_point_off_is_caught(monkeypatch):
     out = for_cutting(_compile("gear").output, None)
-    real = lightburn.unit_arc_beziers
+    real = beziers.unit_arc_beziers
 
     def off(start, sweep, n):
         bs = real(start, sweep, n)
         b = bs[len(bs) // 2]
         bs[len(bs) // 2] = (b[0], (b[1][0] * 1.002, b[1][1] * 1.002), b[2], b[3])
         return bs
-    monkeypatch.setattr(lightburn, "unit_arc_beziers", off)
+    monkeypatch.setattr(beziers, "unit_arc_beziers", off)
     with pytest.raises(AssertionError):
         check_lbrn2(out, encode(out, ".lbrn2"))
 

@@ -24,6 +24,7 @@ from aidl_lang.output.extent import extent                           # noqa: E40
 from aidl_lang.output.part import (Arc, Circle, EllipticArc, Line,   # noqa: E402
                                    MissingDependency, OutputError, Spline)
 from aidl_lang.output.writers import pdf as W                        # noqa: E402
+from aidl_lang.output.writers import beziers as B                     # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 EX = ROOT / "examples"
@@ -239,22 +240,23 @@ def test_engraving_is_blue_and_exact_on_the_name_tag():
 
 
 def test_bezier_bound_as_stated():
-    # a quarter turn strays QUARTER_ERROR x radius; pieces are added to stay under ARC_TOL
+    # each piece's radial error bound (beziers.arc_error) is kept under ARC_TOL; sampled here
     for r in (0.5, 3.0, 3.7, 50.0, 1000.0, 1e5):
         for sweep in (0.1, math.pi / 2, math.pi, 2 * math.pi, -3.0):
-            n = W.arc_pieces(r, sweep)
+            n = B.arc_pieces(r, sweep, W.ARC_TOL)
             assert abs(sweep) / n <= math.pi / 2 + 1e-12
             a = Arc((1.0, 2.0), r, 0.3, sweep)
-            bs = W.arc_beziers(a)
-            assert len(bs) == n
+            bs = B.arc_beziers(a, W.ARC_TOL)
+            assert len(bs) == n and bs[0][0] == a.start
             here, worst = a.start, 0.0
             for b in bs:
-                pts = np.array([bez((here,) + b, t) for t in np.linspace(0, 1, 201)])
+                assert math.dist(b[0], here) <= 1e-9          # the joints meet
+                pts = np.array([bez(b, t) for t in np.linspace(0, 1, 201)])
                 worst = max(worst, np.abs(np.hypot(*(pts - a.center).T) - r).max())
-                here = b[2]
+                here = b[3]
             assert worst <= W.ARC_TOL * 1.001, (r, sweep, worst)
             assert here == a.end
-    assert W.arc_pieces(100.0, math.pi / 2) > 1            # 2.7e-2 mm as one piece: split
+    assert B.arc_pieces(100.0, math.pi / 2, W.ARC_TOL) > 1     # 2.7e-2 mm as one piece: split
 
 
 def test_spline_spans_are_exact_on_the_violin():
@@ -288,8 +290,8 @@ def test_a_wrong_scale_is_caught(monkeypatch):
 
 def test_half_turn_beziers_are_caught(monkeypatch):
     r = compiled("gear")
-    monkeypatch.setattr(W, "arc_pieces",
-                        lambda radius, sweep: max(1, math.ceil(abs(sweep) / math.pi - 1e-9)))
+    monkeypatch.setattr(B, "arc_pieces",
+                        lambda radius, sweep, tol: max(1, math.ceil(abs(sweep) / math.pi - 1e-9)))
     (page,) = read(r.encode("pdf"))
     with pytest.raises(AssertionError, match="strays|quarter turn"):
         check_geometry(r.output, page, page_origin(r.output), BLACK, W.CUT_WIDTH)
@@ -298,16 +300,12 @@ def test_half_turn_beziers_are_caught(monkeypatch):
 def test_beziers_bulging_the_wrong_way_are_caught(monkeypatch):
     r = compiled("laser_box")
 
-    def inward(t0, sweep, n):                   # the handles turned inwards: -4/3 tan(t/4)
-        step = sweep / n
-        k = -4.0 / 3.0 * math.tan(step / 4)
-        out = []
-        for i in range(n):
-            a, b = t0 + i * step, t0 + (i + 1) * step
-            ca, sa, cb, sb = math.cos(a), math.sin(a), math.cos(b), math.sin(b)
-            out.append(((ca - k * sa, sa + k * ca), (cb + k * sb, sb - k * cb), (cb, sb)))
-        return out
-    monkeypatch.setattr(W, "_unit_beziers", inward)
+    real = B.unit_arc_beziers
+
+    def inward(t0, sweep, n):                   # each handle mirrored through its end point
+        return [(p0, (2 * p0[0] - p1[0], 2 * p0[1] - p1[1]),
+                 (2 * p3[0] - p2[0], 2 * p3[1] - p2[1]), p3) for p0, p1, p2, p3 in real(t0, sweep, n)]
+    monkeypatch.setattr(B, "unit_arc_beziers", inward)
     (page,) = read(r.encode("pdf"))
     with pytest.raises(AssertionError, match="strays"):
         check_geometry(r.output, page, page_origin(r.output), BLACK, W.CUT_WIDTH)
@@ -315,14 +313,14 @@ def test_beziers_bulging_the_wrong_way_are_caught(monkeypatch):
 
 def test_arcs_run_the_other_way_round_are_caught(monkeypatch):
     r = compiled("laser_box")
-    real = W.arc_beziers
+    real = B.arc_beziers
 
-    def other_way(a):                           # the same ends, the complementary arc
+    def other_way(a, tol):                      # the same ends, the complementary arc
         if isinstance(a, Arc) and abs(a.sweep) < 2 * math.pi - 1e-9:
             a = Arc(a.center, a.radius, a.start_angle,
                     a.sweep - math.copysign(2 * math.pi, a.sweep))
-        return real(a)
-    monkeypatch.setattr(W, "arc_beziers", other_way)
+        return real(a, tol)
+    monkeypatch.setattr(B, "arc_beziers", other_way)
     (page,) = read(r.encode("pdf"))
     with pytest.raises(AssertionError, match="wrong way|no Bézier"):
         check_geometry(r.output, page, page_origin(r.output), BLACK, W.CUT_WIDTH)

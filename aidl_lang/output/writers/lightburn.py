@@ -37,7 +37,8 @@ priority order and inner shapes first, which is the plan's order.  Each path is
   every piece is within :data:`BEZIER_TOL` = 1e-4 mm of the arc (the radial error of a piece
   of sweep phi is below ``r * 4/27 sin^6(phi/4) / cos^2(phi/4)``); elliptical arcs are the
   same Béziers of the unit circle mapped by the ellipse's affine map, their pieces counted
-  for the major semi-axis, so within BEZIER_TOL of the ellipse too.
+  for the major semi-axis, so within BEZIER_TOL of the ellipse too (:mod:`.beziers`, shared
+  with the PDF writer).
 
 Coordinates are millimetres, y up (LightBurn's workspace y points up, as ours), written to
 :data:`DIGITS` decimals (1e-9 mm).  A cutting layout (``--layout sheet``) keeps the sheet's
@@ -51,6 +52,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 from .. import machine as machine_mod
 from ..part import Arc, Circle, EllipticArc, Line, Output, Spline
+from . import beziers
 
 APP_VERSION = "1.7.00"
 FORMAT_VERSION = "1"
@@ -64,75 +66,12 @@ LAYERS = {
     "cut_outer": (2, "cut outer", 3),    # C02 red
 }
 SPEED_DIVISOR = 60.0       # the profile's mm/min over LightBurn's mm/s
-MAX_PIECES = 4096          # Bézier pieces of one arc at most (a 40 m radius full circle)
 
 
 def _f(v: float) -> str:
     """A number to :data:`DIGITS` decimals without trailing zeros (``12.5``, ``0``)."""
     s = f"{v:.{DIGITS}f}".rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
-
-
-def arc_error(radius: float, phi: float) -> float:
-    """The bound (mm) of the radial error of the standard cubic Bézier of an arc of
-    ``radius`` and sweep ``phi`` (radians, at most a half turn): ``r 4/27 sin^6(phi/4) /
-    cos^2(phi/4)`` (twice the true maximum, which is 2/27 ...)."""
-    q = abs(phi) / 4
-    return radius * 4 / 27 * math.sin(q) ** 6 / math.cos(q) ** 2
-
-
-def arc_pieces(radius: float, sweep: float, tol: float = BEZIER_TOL) -> int:
-    """How many equal pieces of an arc of ``radius`` (mm) and ``sweep`` (radians) keep each
-    piece's Bézier within ``tol`` mm of the arc (at least one per quarter turn)."""
-    n = max(1, math.ceil(abs(sweep) / (math.pi / 2) - 1e-12))
-    while n < MAX_PIECES and arc_error(radius, sweep / n) > tol:
-        n = max(n + 1, int(n * 1.25))
-    return n
-
-
-def unit_arc_beziers(start: float, sweep: float, n: int) -> list:
-    """The ``n`` cubic Béziers ((x, y) x 4) of the unit-circle arc from angle ``start``
-    sweeping ``sweep`` radians, in equal pieces."""
-    out = []
-    phi = sweep / n
-    k = 4.0 / 3.0 * math.tan(phi / 4)
-    for i in range(n):
-        a0 = start + phi * i
-        a1 = a0 + phi
-        c0, s0, c1, s1 = math.cos(a0), math.sin(a0), math.cos(a1), math.sin(a1)
-        out.append(((c0, s0), (c0 - k * s0, s0 + k * c0), (c1 + k * s1, s1 - k * c1), (c1, s1)))
-    return out
-
-
-def arc_beziers(a: Arc, tol: float = BEZIER_TOL) -> list:
-    """Cubic Béziers of arc ``a`` within ``tol`` mm of it (the ends exactly its ends)."""
-    cx, cy = a.center
-    r = a.radius
-    bs = unit_arc_beziers(a.start_angle, a.sweep, arc_pieces(r, a.sweep, tol))
-    out = [tuple((cx + r * x, cy + r * y) for x, y in b) for b in bs]
-    # the ends exactly the arc's own (the chain's joints meet)
-    out[0] = (a.start,) + out[0][1:]
-    out[-1] = out[-1][:3] + (a.end,)
-    return out
-
-
-def ellipse_beziers(s: EllipticArc, tol: float = BEZIER_TOL) -> list:
-    """Cubic Béziers of elliptical arc ``s``: the unit circle's arc over its parameters
-    mapped by the ellipse's affine map (centre, axes, rotation); a point of the Bézier is off
-    the ellipse by at most the major semi-axis times the unit error, kept within ``tol``."""
-    e = s.curve
-    rmax = max(e.rx, e.ry)
-    bs = unit_arc_beziers(s.start_param, s.sweep, arc_pieces(rmax, s.sweep, tol))
-    cr, sr = math.cos(e.rotation), math.sin(e.rotation)
-    cx, cy = e.center
-
-    def m(p):
-        x, y = e.rx * p[0], e.ry * p[1]
-        return (cx + cr * x - sr * y, cy + sr * x + cr * y)
-    out = [tuple(m(p) for p in b) for b in bs]
-    out[0] = (s.start,) + out[0][1:]
-    out[-1] = out[-1][:3] + (s.end,)
-    return out
 
 
 def pieces(segments) -> list:
@@ -146,12 +85,12 @@ def pieces(segments) -> list:
         if isinstance(s, Spline):
             bs = [tuple(tuple(map(float, p)) for p in b) for b in s.spans]
         elif isinstance(s, EllipticArc):
-            bs = ellipse_beziers(s)
+            bs = beziers.ellipse_beziers(s, BEZIER_TOL)
         elif isinstance(s, Circle):
             sweep = 2 * math.pi if s.ccw else -2 * math.pi
-            bs = arc_beziers(Arc(s.center, s.radius, 0.0, sweep))
+            bs = beziers.arc_beziers(Arc(s.center, s.radius, 0.0, sweep), BEZIER_TOL)
         else:
-            bs = arc_beziers(s)
+            bs = beziers.arc_beziers(s, BEZIER_TOL)
         out += [("B",) + tuple(b) for b in bs]
     return out
 

@@ -25,9 +25,8 @@ no arcs, so every arc, circle and elliptical arc is cut into equal pieces of at 
 quarter turn, each a cubic Bézier through the piece's exact end points with the tangent
 handles ``4/3 tan(sweep / 4)`` (the Bézier's middle is on the circle), and into more pieces
 when needed so that the Bézier leaves the circle (or ellipse) by at most :data:`ARC_TOL` =
-1e-3 mm: a quarter turn strays 2.7253e-4 x radius at most, a piece of sweep ``t`` by
-2.7253e-4 x radius x (t / 90 degrees)^6 (:func:`arc_pieces`; an ellipse by its larger
-semi-axis).  Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt.  Each solid part's name is
+1e-3 mm (:mod:`.beziers`, shared with the LightBurn writer: the bound of a piece of sweep
+``t`` is ``r 4/27 sin^6(t/4) / cos^2(t/4)``; an ellipse by its larger semi-axis).  Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt.  Each solid part's name is
 printed small inside it, at the point of its material farthest from every cut line found on a
 grid (:func:`label_point`).  Coordinates are written to 1e-6 pt (3.5e-7 mm; :data:`DIGITS`)
 — ReportLab's own drawing keeps 7 significant digits (2834.123 pt: 3.5e-4 mm off), so the
@@ -54,13 +53,12 @@ import math
 import numpy as np
 
 from ..extent import extent
-from ..part import (Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError,
-                    Spline)
+from ..part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
+from . import beziers
 
 PT_PER_MM = 72.0 / 25.4
 DIGITS = 6                 # decimals of a pt written for paths: 1e-6 pt = 3.5e-7 mm
 ARC_TOL = 1e-3             # mm: the most a Bézier piece of an arc strays from the circle
-QUARTER_ERROR = 2.7253e-4  # the radial error of a quarter circle's Bézier, x its radius
 MARGIN = 10.0              # mm: blank border of every page (printers do not print to the edge)
 FOOTER = 22.0              # mm: the scale bar, its words, the title (and the page label)
 OVERLAP = 10.0             # mm: what neighbouring tiles share
@@ -102,62 +100,6 @@ def page_size(name: str) -> tuple[float, float]:
                       "page: one page the size of the drawing)")
 
 
-# ------------------------------------------------------------------ Béziers of arcs
-def arc_pieces(radius: float, sweep: float) -> int:
-    """How many equal Bézier pieces an arc of ``radius`` mm and ``sweep`` radians is cut
-    into: each at most a quarter turn, and enough that each strays at most :data:`ARC_TOL`
-    from the circle (a piece of sweep t strays at most QUARTER_ERROR * radius * (t / (pi /
-    2))^6: the error over t^6 grows with t, measured)."""
-    quarters = abs(sweep) / (math.pi / 2)
-    n = max(1, math.ceil(quarters - 1e-9))
-    if radius * QUARTER_ERROR > ARC_TOL:
-        n = max(n, math.ceil(quarters * (radius * QUARTER_ERROR / ARC_TOL) ** (1 / 6) - 1e-9))
-    return n
-
-
-def _unit_beziers(t0: float, sweep: float, n: int):
-    """The control points (cos, sin pairs) of ``n`` equal Bézier pieces of the unit circle
-    from angle ``t0`` sweeping ``sweep``: per piece (p1, p2, p3) with p3 exactly at the
-    piece's end angle."""
-    step = sweep / n
-    k = 4.0 / 3.0 * math.tan(step / 4)
-    out = []
-    for i in range(n):
-        a, b = t0 + i * step, t0 + (i + 1) * step
-        ca, sa, cb, sb = math.cos(a), math.sin(a), math.cos(b), math.sin(b)
-        out.append(((ca - k * sa, sa + k * ca), (cb + k * sb, sb - k * cb), (cb, sb)))
-    return out
-
-
-def arc_beziers(a: Arc) -> list:
-    """The cubic Béziers ``(p1, p2, p3)`` (mm) of an arc, starting at ``a.start``; the last
-    piece ends at ``a.end`` exactly (as computed by the arc)."""
-    n = arc_pieces(a.radius, a.sweep)
-    (cx, cy), r = a.center, a.radius
-    out = [((cx + r * p1[0], cy + r * p1[1]), (cx + r * p2[0], cy + r * p2[1]),
-            (cx + r * p3[0], cy + r * p3[1])) for p1, p2, p3 in
-           _unit_beziers(a.start_angle, a.sweep, n)]
-    out[-1] = (out[-1][0], out[-1][1], a.end)
-    return out
-
-
-def ellipse_beziers(s: EllipticArc) -> list:
-    """The cubic Béziers of an elliptical arc: the circle's pieces in its parameter mapped
-    by the ellipse's affine map (an affine image of a Bézier is the Bézier of the images;
-    the error scales by the larger semi-axis at most)."""
-    e = s.curve
-    n = arc_pieces(max(e.rx, e.ry), s.sweep)
-    (cx, cy) = e.center
-    co, si = math.cos(e.rotation), math.sin(e.rotation)
-
-    def m(p):
-        x, y = e.rx * p[0], e.ry * p[1]
-        return (cx + co * x - si * y, cy + si * x + co * y)
-    out = [(m(p1), m(p2), m(p3)) for p1, p2, p3 in _unit_beziers(s.start_param, s.sweep, n)]
-    out[-1] = (out[-1][0], out[-1][1], s.end)
-    return out
-
-
 # ------------------------------------------------------------------ path operators
 def _n(v: float) -> str:
     s = f"{v:.{DIGITS}f}".rstrip("0").rstrip(".")
@@ -184,8 +126,8 @@ class _Pen:
             if isinstance(s, Circle):
                 whole = Arc(s.center, s.radius, 0.0, 2 * math.pi if s.ccw else -2 * math.pi)
                 out.append(f"{self.p(whole.start)} m")
-                out += [f"{self.p(b[0])} {self.p(b[1])} {self.p(b[2])} c"
-                        for b in arc_beziers(whole)]
+                out += [f"{self.p(b[1])} {self.p(b[2])} {self.p(b[3])} c"
+                        for b in beziers.arc_beziers(whole, ARC_TOL)]
                 out.append("h")
                 here = None
                 continue
@@ -194,10 +136,10 @@ class _Pen:
             if isinstance(s, Line):
                 out.append(f"{self.p(s.end)} l")
             else:
-                bs = (arc_beziers(s) if isinstance(s, Arc) else
-                      ellipse_beziers(s) if isinstance(s, EllipticArc) else
-                      [b[1:] for b in s.spans])
-                out += [f"{self.p(b[0])} {self.p(b[1])} {self.p(b[2])} c" for b in bs]
+                bs = (beziers.arc_beziers(s, ARC_TOL) if isinstance(s, Arc) else
+                      beziers.ellipse_beziers(s, ARC_TOL) if isinstance(s, EllipticArc) else
+                      s.spans)
+                out += [f"{self.p(b[1])} {self.p(b[2])} {self.p(b[3])} c" for b in bs]
             here = s.end
         if closed and segments and not isinstance(segments[-1], Circle):
             out.append("h")
