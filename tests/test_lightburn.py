@@ -15,7 +15,6 @@ import numpy as np
 import pytest
 
 from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
-from aidl_lang.geometry.spline import bez_at
 from aidl_lang.output import encode, for_cutting
 from aidl_lang.output.machine import DEFAULTS, from_dict
 from aidl_lang.output.toolpath import plan

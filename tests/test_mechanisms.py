@@ -7,7 +7,6 @@ fit-checked at kerf 0 and 0.15 mm (no W0517, no W0518), and material thicker tha
 generator's `thickness` collides (W0517).  The demo programs in examples/generators/ compile
 without a shape warning.
 """
-import io
 import math
 import subprocess
 import sys

@@ -9,8 +9,6 @@ local test double that replays recorded model answers.  Screenshots: out/studio-
 """
 from __future__ import annotations
 
-import json
-import os
 from pathlib import Path
 
 import pytest
@@ -116,14 +114,13 @@ def test_from_the_gallery_to_a_cutting_sheet(tmp_path):
         got.value.save_as(dxf)
         assert dxf.name.endswith("-sheet.dxf")
         outlines = [l for l in cut_loops(dxf) if l[0].upper().startswith("CUT")]
-        # the same parts compiled here through the public API: each outline on the sheet is a
-        # part's, grown by the program's kerf (0.15 mm), turned by 0 or 90 degrees
-        from aidl_lang import api
-        src = page.evaluate("window.studio.state.source")
-        res = api.compile(source=src)
-        assert res.ok and len(res.parts) == 5 + 2 + 3       # 5 box panels, 2 + 3 dividers
-        want = sorted(sorted((p.bbox[2] - p.bbox[0] + 0.15, p.bbox[3] - p.bbox[1] + 0.15))
-                      for p in res.parts)
+        # the design's numbers: a 160 x 110 x 40 mm tray (outside) of 3 mm sheet, dividers
+        # 2 x 0.3 mm clearance short of the inside (154 - 0.6, 104 - 0.6) and 3 mm lower than
+        # the walls; each outline grown by the program's kerf (0.15 mm), turned 0 or 90 degrees
+        k = 0.15
+        design = [(160, 110), (160, 40), (160, 40), (40, 110), (40, 110),
+                  (153.4, 37), (153.4, 37), (103.4, 37), (103.4, 37), (103.4, 37)]
+        want = sorted(sorted((w + k, h + k)) for w, h in design)
         got_sizes = sorted(sorted((w, h)) for _, w, h in outlines)
         assert len(got_sizes) == len(want)
         for g, w in zip(got_sizes, want):
