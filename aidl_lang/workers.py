@@ -98,6 +98,7 @@ class Worker:
         self.lock = threading.Lock()
         self.restarts = 0           # processes killed or lost (timeouts, deaths)
         self.requests = 0
+        self.retiring = False       # set: the next request starts a fresh process
 
     def _start(self) -> None:
         ctx = multiprocessing.get_context("spawn")
@@ -131,6 +132,9 @@ class Worker:
         """Send ``request`` and return the handler's answer; raises :class:`TimedOut` past
         ``seconds`` (the process is killed), :class:`Died` or :class:`NotReady`."""
         with self.lock:
+            if self.retiring:
+                self.retiring = False
+                self.stop()
             if self.proc is None or not self.proc.is_alive():
                 self._start()
             self.requests += 1

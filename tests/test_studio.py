@@ -214,3 +214,20 @@ def test_the_operators_budget_bounds_every_compile(tmp_path):
         assert d["span"]["line"] == 4
         r = c.post("/api/download/dxf", json={"sid": session(c), "source": SLOW})
         assert r.status_code == 422 and r.json()["diagnostics"][0]["code"] == "E0301"
+
+
+def test_a_worker_marked_retiring_answers_its_next_request_from_a_fresh_process():
+    """A compile worker whose memory grew past compiler.RETIRE_RSS says so with its answer;
+    the server marks it, and its next request starts a new process (the memory goes back)."""
+    from aidl_lang import workers as W
+    from aidl_lang.studio import compiler
+    w = W.Worker(compiler.handler, (1.0,))
+    try:
+        assert w.request(("thumb", "no/such"), 60) == ""
+        first = w.proc.pid
+        assert w.request(("thumb", "no/such"), 60) == "" and w.proc.pid == first   # warm
+        w.retiring = True
+        assert w.request(("thumb", "no/such"), 60) == ""
+        assert w.proc.pid != first and not w.retiring and w.restarts == 0
+    finally:
+        w.stop()

@@ -36,6 +36,7 @@ import hashlib
 import json
 import os
 import re
+import time
 from dataclasses import dataclass, field
 from importlib import resources
 
@@ -48,7 +49,7 @@ from starlette.routing import Route
 from .. import workers as W
 from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES
 from . import compiler
-from .sessions import Folders, Refused, new_id
+from .sessions import MAX_UPLOAD, Folders, Refused, new_id
 
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "json": "application/json",
@@ -209,7 +210,7 @@ class Studio:
         if not self.limiter.hit(self.rate, who, cost=cost):
             self.served["limited"] += 1
             reset, _ = self.limiter.get_window_stats(self.rate, who)
-            retry = max(1, int(reset - __import__("time").time()) + 1)
+            retry = max(1, int(reset - time.time()) + 1)
             raise Limited(429, f"too many requests from your address: at most {self.rate} "
                                f"(this studio's limit); try again in {retry} s", retry)
 
@@ -247,16 +248,8 @@ class Studio:
                 self.affinity.clear()
             self.affinity[sid] = w
         if isinstance(answer, dict) and answer.pop("retire", False):
-            await run_in_threadpool(self._retire, w)
+            w.retiring = True           # its memory grew: a fresh process for its next request
         return answer
-
-    def _retire(self, w: W.Worker) -> None:
-        taken = self.pool.take()
-        try:
-            if taken is w:
-                w.stop()
-        finally:
-            self.pool.give(taken)
 
     def stop(self) -> None:
         self.pool.stop()
@@ -322,8 +315,7 @@ def create_app(settings: Settings | None = None) -> Starlette:
             "model": {"model": settings.model.get("model")} if settings.model else None,
             "limits": {"source_bytes": MAX_SOURCE_BYTES, "rate": settings.rate,
                        "seconds": settings.seconds,
-                       "upload_bytes": __import__("aidl_lang.studio.sessions",
-                                                  fromlist=["MAX_UPLOAD"]).MAX_UPLOAD}})
+                       "upload_bytes": MAX_UPLOAD}})
 
     async def gallery_list(request):
         from . import gallery
@@ -377,7 +369,6 @@ def create_app(settings: Settings | None = None) -> Starlette:
         return JSONResponse({"files": st.folders.files(request.query_params.get("sid", ""))})
 
     async def upload(request):
-        from .sessions import MAX_UPLOAD
         sid = request.query_params.get("sid", "")
         name = request.query_params.get("name", "")
         size = request.headers.get("content-length")
