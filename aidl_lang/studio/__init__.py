@@ -44,7 +44,12 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
               "reinstall aidl (pip install -e /path/to/aidl)", file=sys.stderr)
         return 2
     from .app import Settings
-    s = Settings.from_env()
+    try:
+        s = Settings.from_env()
+    except ValueError as e:
+        print(f"aidl: error: {e}; see docs/studio.md for the AIDL_STUDIO_* settings",
+              file=sys.stderr)
+        return 2
     s.compilers = compilers
     for k, v in settings.items():
         if v is not None:

@@ -86,7 +86,12 @@ class Settings:
         s = cls()
         for key, var in cls.ENV.items():
             if env.get(var):
-                setattr(s, key, type(getattr(s, key))(env[var]))
+                kind = type(getattr(s, key))
+                try:
+                    setattr(s, key, kind(env[var]))
+                except ValueError:
+                    what = {int: "an integer", float: "a number"}.get(kind, "a text")
+                    raise ValueError(f"{var}={env[var]!r} is not {what}") from None
         from .describe import model_config
         s.model = model_config(env)
         return s
