@@ -47,7 +47,7 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
     try:
         s = Settings.from_env()
     except ValueError as e:
-        print(f"aidl: error: {e}; see docs/studio.md for the AIDL_STUDIO_* settings",
+        print(f"aidl: error: {e}; correct it or unset it (the default is used then)",
               file=sys.stderr)
         return 2
     s.compilers = compilers
