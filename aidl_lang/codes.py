@@ -313,7 +313,11 @@ The constraint holds already because other constraints (or a constructor's held 
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
 over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
 (two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
-for the group, whose hint says which to keep (the first written) and which to drop.
+for the group, whose hint says which to keep (the first written) and which to drop. A
+standard-library template's own constraints are never the ones to drop (its user cannot edit
+them): beside one (`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the
+hint names the user's line and where the template holds it (`std/joints.aidl line 136`), and a
+redundancy wholly inside a template is not reported.
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)
@@ -335,7 +339,8 @@ constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, 
 `Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
 the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)".
+(harmless)". A structure declared inside a standard-library template is the template's affair
+and is not reported to its user.
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)

@@ -349,9 +349,29 @@ _TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
                   "mounting_plate": "width=80 mm, height=50 mm, screw=3"}
 
 
+# the joints hold themselves where (cx, cy) and `rotation` put them, on a panel's edge: their
+# examples place them so, never by constraints (which would repeat the template's `Fixed(self)`)
+_TEMPLATE_EXAMPLES = {
+    "cross_halving": ("solid panel {\n    body = Rectangle(center=(0, 0), width=120, height=60)\n"
+                      "    # from the middle of the top edge (y = 30), 30 mm down into the panel\n"
+                      "    h = cross_halving(depth=30 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "finger_edge": ("solid panel {\n    body = Rectangle(center=(0, 0), width=100, height=60)\n"
+                    "    # the top edge (y = 30) cut into fingers; the panel lies below it\n"
+                    "    f = finger_edge(length=100 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "tab_and_slot": ("solid panel {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                     "    # two tabs and a captive-nut T-slot on the top edge (y = 20)\n"
+                     "    t = tab_and_slot(part=\"tab\", length=60 mm, cx=0 mm, cy=20 mm)\n}\n"),
+    "dovetail": ("solid panel {\n    body = Rectangle(center=(0, -10), width=60, height=40)\n"
+                 "    # tails over the band y = 0 .. 10 at the top of the panel\n"
+                 "    d = dovetail(part=\"tail\", length=60 mm, depth=10 mm, cx=0 mm, cy=0 mm)\n}\n"),
+}
+
+
 def _template_example(t: StdTemplate) -> str:
     call = f"{t.name}({_TEMPLATE_ARGS.get(t.name, '')})"
     imp = f'import "std/{t.module}.aidl"\n\n'
+    if t.name in _TEMPLATE_EXAMPLES:
+        return imp + _TEMPLATE_EXAMPLES[t.name]
     if t.node.kind == "hole":
         return (imp + "solid plate {\n    body = Rectangle(center=(0, 0), width=120, "
                 f"height=120)\n    h = {call}\n    Fixed(body)\n    CenterInside(h, body)\n}}\n")
@@ -901,15 +921,20 @@ EXAMPLES: dict[str, str] = {
     "Coincident": _solid("a = Rectangle(center=(0, 0), width=20, height=10)\n"
                          "b = Rectangle(center=(25, 5), width=10, height=10)\n"
                          "Fixed(a)\nCoincident(b.bottom_left, a.bottom_right)", "step"),
-    "Horizontal": _PLATE2.format(line="Horizontal(left.c.center, right.c.center)"),
-    "Vertical": _PLATE2.format(line="Vertical(left.c.center, body.center)"),
+    "Horizontal": _PLATE2.format(line="Fixed(left)\n    Horizontal(left.c.center, right.c.center)    "
+                                 "# right moves to y = 0\n    Distance(left.c.center, right.c.center, 30)"),
+    "Vertical": _PLATE2.format(line="Fixed(right)\n    Vertical(left.c.center, right.c.center)    "
+                               "# left moves to x = 15\n    Distance(left.c.center, right.c.center, 10)"),
     "Fixed": _PLATE2.format(line="Fixed(left)    # holds a point, shape or structure"),
-    "Distance": _PLATE2.format(line="Distance(left.c.center, right.c.center, 36)"),
+    "Distance": _PLATE2.format(line="Fixed(left)\n    Distance(left.c.center, right.c.center, 36)\n"
+                               "    Horizontal(left.c.center, right.c.center)"),
     "HorizontalDistance": _PLATE2.format(
-        line="HorizontalDistance(left.c.center, right.c.center, 30)"),
+        line="Fixed(left)\n    HorizontalDistance(left.c.center, right.c.center, 30)\n"
+             "    VerticalDistance(left.c.center, right.c.center, 5)"),
     "VerticalDistance": _PLATE2.format(
-        line="VerticalDistance(left.c.center, right.c.center, 0)"),
-    "At": _PLATE2.format(line="At(right.c.center, left.c.center, dx=30, dy=0)"),
+        line="Fixed(left)\n    VerticalDistance(left.c.center, right.c.center, 5)    # "
+             "right 5 mm higher\n    HorizontalDistance(left.c.center, right.c.center, 30)"),
+    "At": _PLATE2.format(line="Fixed(left)\n    At(right.c.center, left.c.center, dx=30, dy=0)"),
     "Length": _QUAD.format(line="Length(a, 50)"),
     "Radius": _solid("a = Arc(center=(0, 0), start=(20, 0), end=(0, 20))\n"
                      "l1 = Line(start=a.center, end=a.start)\nl2 = Line(start=a.end, "
@@ -925,12 +950,16 @@ EXAMPLES: dict[str, str] = {
                       "Fixed(c)\nTangent(r.bottom, c)    # r's bottom edge touches the circle's "
                       "bottom\nAlignCenterX(r, c)", "cam"),
     "Symmetric": _PLATE2.format(line="axis = Line((0, -15), (0, 15), construction=true)\n"
-                                "    Symmetric(left.c.center, right.c.center, axis)"),
+                                "    Fixed(left)\n    Symmetric(left.c.center, right.c.center, "
+                                "axis)    # right moves to (15, 0)"),
     "Midpoint": _HOLES.format(line="Midpoint(h.c.center, body.bottom)    # a notch"),
-    "OnLine": _HOLES.format(line="OnLine(h.c.center, axis)"),
+    "OnLine": _HOLES.format(line="OnLine(h.c.center, axis)    # h moves to x = 0\n"
+                           "    h.c.center.y == -10"),
     "OnCircle": _HOLES.format(line="pitch = Circle(center=(0, 0), radius=12, "
-                              "construction=true)\n    OnCircle(h.c.center, pitch)"),
-    "Collinear": _PLATE2.format(line="Collinear(left.c.center, right.c.center, body.center)"),
+                              "construction=true)\n    OnCircle(h.c.center, pitch)\n"
+                              "    h.c.center.y == -10"),
+    "Collinear": _PLATE2.format(line="Fixed(left)\n    Collinear(left.c.center, right.c.center, "
+                                "body.center)\n    HorizontalDistance(left.c.center, right.c.center, 30)"),
     "Concentric": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
                          "hole bore { c = Circle(center=(3, 2), diameter=20) }\n"
                          "Concentric(bore.c, disc)", "flange"),
@@ -938,15 +967,18 @@ EXAMPLES: dict[str, str] = {
     # structural relations
     "Above": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
     "Below": _SIGN.format(line="Below(post, board)\n    AlignCenterX(board, post)"),
-    "LeftOf": _SIGN.format(line="LeftOf(board, post, gap=-5)   # overlapping by 5 mm"),
-    "RightOf": _SIGN.format(line="RightOf(board, post, gap=-5)"),
+    "LeftOf": _SIGN.format(line="LeftOf(board, post, gap=-5)   # overlapping by 5 mm\n"
+                           "    AlignTop(board, post)"),
+    "RightOf": _SIGN.format(line="RightOf(board, post, gap=-5)\n    AlignTop(board, post)"),
     "Gap": "assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=20, height=20) }\n"
            "    solid b { r = Rectangle(center=(30, 0), width=20, height=20) }\n"
            "    Fixed(a)\n    Gap(a, b, 5)    # 5 mm of space along x\n    AlignCenterY(a, b)\n}\n",
     "Inside": _HOLES.format(line="Inside(h, body, margin=5)"),
     "CenterInside": _HOLES.format(line="CenterInside(h, body)"),
-    "Taller": _SIGN.format(line="Above(board, post)\n    Taller(post, board)"),
-    "Wider": _SIGN.format(line="Above(board, post)\n    Wider(board, post)"),
+    "Taller": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)\n    "
+                           "Taller(post, board)"),
+    "Wider": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)\n    "
+                          "Wider(board, post)"),
     "AlignCenterX": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
     "AlignCenterY": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
                                  "AlignCenterY(board, post)"),

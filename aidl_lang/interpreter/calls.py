@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import EvalError, did_you_mean
+from ..diagnostics import EvalError, did_you_mean, shown_path
 from ..geometry.constraints import BUILDERS, ConstraintError
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
@@ -179,7 +179,9 @@ class Calls:
                                  "turn a shape within its part, draw it turned")
         prev = getattr(target, "placement", None)
         if prev is not None:
-            line = f", on line {prev[2].line}" if prev[2] is not None else ""
+            sp = prev[2]
+            line = (f", on line {sp.line}" if sp is None or sp.file == node.span.file else
+                    f", in {shown_path(sp.file)} line {sp.line}") if sp is not None else ""
             raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
                             hint="a part has one placement: keep one `Place`")
         pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
