@@ -369,7 +369,9 @@ _DEFS = {
     # ------------------------------------------------------------ operations
     "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
                    doc="A copy of geometry or a structure mirrored about a line; it follows the "
-                       "original. `Mirror(a, b, about)` is the Symmetric constraint."),
+                       "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
+                       "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
+                       "constraint."),
     "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
                         cat="operation",
                         doc="count instances in all, each moved by step (a vector) from the last; "

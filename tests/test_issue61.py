@@ -112,3 +112,40 @@ assembly kit {
     r = aidl_compile(src, path="/tmp/aidl-issue61-place.aidl")
     e = next(d for d in r.sink.items if d.code == "E0108")
     assert "already placed, in std/gears.aidl line" in e.message, e.message
+
+
+# ------------------------------------------------------------ Mirrored of a list
+def test_mirrored_of_a_list_is_the_list_of_the_mirror_images():
+    """`Mirrored(legs, axis)` (a list a loop made, or written) was E0108 "got list"; now each
+    item is mirrored, and the result is their images in order (`m[1]` is item 1's)."""
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    axis = Line((0, -20), (0, 20), construction=true)
+    Fixed(body)
+    hole h {
+        a = Circle(center=(-30, 10), radius=2)
+        b = Circle(center=(-20, -10), radius=3)
+        Fixed(a)
+        Fixed(b)
+    }
+    Fixed(h)
+    for i in range(2) {
+        hole k { c = Circle(center=(-10 + 3 * i, 0), radius=1) }
+        Fixed(k)
+    }
+    m = Mirrored([h.a, h.b], axis)
+    n = Mirrored(k, axis)
+    assert m[1].center == (20, -10) and m[0].radius == 2
+    assert n[1].c.center == (7, 0)
+}
+"""
+    r = checked(src)
+    assert r.ok and not r.sink.items, [d.message for d in r.sink.items]
+    got = sorted((o["center"][0], o["center"][1], o["d"])
+                 for o in r.description["parts"][0]["openings"])
+    assert got == sorted([(-30, 10, 4), (30, 10, 4), (-20, -10, 6), (20, -10, 6),
+                          (-10, 0, 2), (10, 0, 2), (-7, 0, 2), (7, 0, 2)])
+    bad = aidl_compile(src.replace("Mirrored(k, axis)", "Mirrored([h, 3], axis)"),
+                       path="/tmp/aidl-issue61-m.aidl")
+    (e,) = [d for d in bad.sink.items if d.is_error][:1]
+    assert e.code == "E0108" and "list holds a number" in e.message, e.message

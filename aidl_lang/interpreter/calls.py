@@ -521,6 +521,15 @@ class Calls:
         if typ == "boxed":
             if isinstance(v, (GeomRef, StructRef, BBoxRef)):
                 return v
+            if isinstance(v, (list, tuple)) and v and canonical(fname) == "Mirrored":
+                # Mirrored(legs, axis): each item mirrored, a list back (issue 61)
+                bad = next((x for x in v if not isinstance(x, (GeomRef, StructRef))), None)
+                if bad is None:
+                    return list(v)
+                raise EvalError("E0108", f"`Mirrored` of a list mirrors structures and shapes, "
+                                f"but the list holds {_a(type_name(bad))}", span,
+                                hint="mirror a list of structures or shapes (`Mirrored(legs, "
+                                     "axis)`), or each item by itself")
             raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a structure or "
                             f"geometry, got {type_name(v)}", span,
                             hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")
