@@ -284,7 +284,8 @@ _DEFS = {
                    "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
-                     doc="Two points are the same point (a point and a line/circle: on it)."),
+                     doc="Two points are the same point (a point and a line, circle, arc or "
+                         "ellipse: on it)."),
     "Horizontal": _c([A("a", "geometry"), A("b", "point", None)],
                      doc="A line, or the two points a and b, are horizontal."),
     "Vertical": _c([A("a", "geometry"), A("b", "point", None)],

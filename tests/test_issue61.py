@@ -149,3 +149,89 @@ def test_mirrored_of_a_list_is_the_list_of_the_mirror_images():
                        path="/tmp/aidl-issue61-m.aidl")
     (e,) = [d for d in bad.sink.items if d.is_error][:1]
     assert e.code == "E0108" and "list holds a number" in e.message, e.message
+
+
+# ------------------------------------------------------------ a point on an ellipse
+def _on_ellipse(p, c, rx, ry, rot) -> float:
+    """The implicit ellipse law (u / rx)^2 + (v / ry)^2 - 1 of point ``p`` (an independent
+    statement of what `Coincident(point, ellipse)` must make true)."""
+    import math
+    dx, dy = p[0] - c[0], p[1] - c[1]
+    u = dx * math.cos(rot) + dy * math.sin(rot)
+    v = -dx * math.sin(rot) + dy * math.cos(rot)
+    return (u / rx) ** 2 + (v / ry) ** 2 - 1
+
+
+ELLIPSES = """solid egg {
+    body = Rectangle(center=(0, 0), width=260, height=200)
+    Fixed(body)
+    drawing d {
+        e = Ellipse(center=(10, 5), rx=20, ry=10, rotation=30 deg)
+        a = Ellipse(center=(-40, 0), rx=15, ry=6, rotation=-20 deg, start_angle=0 deg,
+                    end_angle=180 deg)
+        Fixed(e)
+        Fixed(a)
+        axis = Line((50, -50), (60, 50), construction=true)
+        Fixed(axis.start)
+        axis.end.x == 70
+        m = Mirrored(e, axis)
+    }
+    Fixed(d)
+    hole h { c = Circle(center=(15, 10), radius=2) }
+    hole k { c = Circle(center=(-40, 6), radius=1) }
+    hole q { c = Circle(center=(100, 10), radius=1) }
+    Coincident(h.c.center, d.e)
+    h.c.center.x == 5
+    Coincident(d.a, k.c.center)
+    k.c.center.x == -35
+    Coincident(q.c.center, d.m)
+    q.c.center.y == -5
+}
+"""
+
+
+def test_a_point_on_an_ellipse_an_elliptic_arc_and_a_mirrored_ellipse():
+    """`Coincident(point, Ellipse)` was E0108; now the point lies on the ellipse exactly
+    (1e-9 of the implicit law), on a whole ellipse, an elliptic arc's ellipse and a copy
+    mirrored about a line the solve turns (its axes follow the line as solved)."""
+    import math
+    r = aidl_compile(ELLIPSES, path="/tmp/aidl-issue61-ellipse.aidl")
+    assert r.ok, [d.message for d in r.sink.items]
+    v = {x.name: x.value for x in r.values}
+    h, k, q = v["egg.h.c.center"], v["egg.k.c.center"], v["egg.q.c.center"]
+    assert abs(h[0] - 5) < 1e-9 and abs(k[0] + 35) < 1e-9 and abs(q[1] + 5) < 1e-9
+    assert abs(_on_ellipse(h, v["egg.d.e.center"], 20, 10, math.radians(30))) < 1e-9
+    assert abs(_on_ellipse(k, v["egg.d.a.center"], 15, 6, math.radians(-20))) < 1e-9
+    s, e = v["egg.d.axis.start"], v["egg.d.axis.end"]
+    phi = math.atan2(e[1] - s[1], e[0] - s[0])
+    assert abs(phi - math.atan2(100, 10)) > 0.05          # the solve turned the line
+    assert abs(_on_ellipse(q, v["egg.d.m.center"], 20, 10, 2 * phi - math.radians(30))) < 1e-9
+    # the mirrored copy as drawn: its center is the image of the original's
+    c0, cm = v["egg.d.e.center"], v["egg.d.m.center"]
+    assert abs((cm[0] - s[0]) * math.sin(phi) - (cm[1] - s[1]) * math.cos(phi)
+               + (c0[0] - s[0]) * math.sin(phi) - (c0[1] - s[1]) * math.cos(phi)) < 1e-9
+
+
+def test_the_ellipse_residual_law():
+    """For any ellipse (semi-axes, rotation) and any height through it, the solved point
+    satisfies the implicit law; for rx == ry the constraint is the circle's."""
+    from hypothesis import given, settings, strategies as st
+    import math
+
+    @settings(max_examples=25, deadline=None)
+    @given(rx=st.floats(2, 60), ry=st.floats(2, 60), rot=st.floats(-180, 180),
+           frac=st.floats(-0.9, 0.9))
+    def law(rx, ry, rot, frac):
+        # a height inside the ellipse's vertical extent: the horizontal line meets it twice
+        half = math.sqrt((rx * math.sin(math.radians(rot))) ** 2
+                         + (ry * math.cos(math.radians(rot))) ** 2)
+        y = frac * half
+        src = (f"solid s {{\n    e = Ellipse(center=(0, 0), rx={rx!r}, ry={ry!r}, "
+               f"rotation={rot!r} deg)\n    Fixed(e)\n    p = Point({rx + ry!r}, {y!r})\n"
+               f"    Coincident(p, e)\n    p.y == {y!r}\n}}\n")
+        r = aidl_compile(src, path="/tmp/aidl-issue61-law.aidl")
+        assert r.ok, [d.message for d in r.sink.items]
+        p = {x.name: x.value for x in r.values}["s.p.p"]
+        assert abs(p[1] - y) < 1e-9 * max(1.0, half)
+        assert abs(_on_ellipse(p, (0, 0), rx, ry, math.radians(rot))) < 1e-9
+    law()

@@ -108,11 +108,16 @@ def coincident(ctx, a, b, **_):
         return on_circle(ctx, a, b)
     if kb == "point" and ka == "circular":
         return on_circle(ctx, b, a)
+    if ka == "point" and kb in ("Ellipse", "EllipticArc"):
+        return on_ellipse(ctx, a, b)
+    if kb == "point" and ka in ("Ellipse", "EllipticArc"):
+        return on_ellipse(ctx, b, a)
     if ka == kb == "line":
         (s1, e1), (s2, e2) = _line(ctx, a, "a"), _line(ctx, b, "b")
         return [Equation(s1.x - s2.x), Equation(s1.y - s2.y),
                 Equation(e1.x - e2.x), Equation(e1.y - e2.y)]
-    raise ConstraintError(f"Coincident takes two points (or a point and a line/circle), "
+    raise ConstraintError(f"Coincident takes two points (or a point and a line, circle, arc "
+                          f"or ellipse), "
                           f"got {type_name(a)} and {type_name(b)}")
 
 
@@ -364,6 +369,45 @@ def on_circle(ctx, point, circle, **_):
     p = _pt(point, "point", ctx)
     c, r = _circ(ctx, circle, "circle")
     return [Equation(hypot(p.x - c.x, p.y - c.y) - r)]
+
+
+def on_ellipse(ctx, point, ellipse, **_):
+    """``point`` on the ellipse (or elliptic arc's whole ellipse) ``ellipse``, exactly: with
+    ``(u, v)`` the point's offset from the center along the two semi-axes (``u`` along
+    ``rx``), the residual ``rx (hypot(u / rx, v / ry) - 1)`` is zero exactly on the ellipse
+    ``(u / rx)^2 + (v / ry)^2 = 1`` and, for ``rx == ry``, the circle's ``|p - c| - r``; a
+    length, with the Jacobian of its expression (exact).  The axes are the held rotation's
+    (a mirrored copy's: its mirror line's as solved, ``2 phi - r``; an elliptic arc's: its
+    ``vertex`` and ``co_vertex`` points)."""
+    p = _pt(point, "point", ctx)
+    g = ellipse.geom
+    S = ctx.struct
+    c = member(g, "center", S)
+    dx, dy = p.x - c.x, p.y - c.y
+    if g.kind == "EllipticArc":
+        rx, ry = g.data["dims"]["rx"], g.data["dims"]["ry"]
+        V, W = member(g, "vertex", S), member(g, "co_vertex", S)
+        u = (dx * (V.x - c.x) + dy * (V.y - c.y)) * (1.0 / (rx * rx))
+        v = (dx * (W.x - c.x) + dy * (W.y - c.y)) * (1.0 / (ry * ry))
+        return [Equation((hypot(u, v) - 1.0) * rx)]
+    rx = member(g, "rx", S).expr
+    ry = member(g, "ry", S).expr
+    m = g.data.get("mirror")
+    if m is None:
+        r = g.data.get("rotation", 0.0)
+        cs, sn = math.cos(r), math.sin(r)
+        u = dx * cs + dy * sn
+        v = dy * cs - dx * sn
+    else:       # rotation 2 phi - r0, phi the mirror line's direction as solved
+        a, b, r0 = m
+        lx, ly = b.x - a.x, b.y - a.y
+        L2 = lx * lx + ly * ly
+        c2, s2 = (lx * lx - ly * ly) / L2, (lx * ly * 2.0) / L2
+        cs = c2 * math.cos(r0) + s2 * math.sin(r0)
+        sn = s2 * math.cos(r0) - c2 * math.sin(r0)
+        u = dx * cs + dy * sn
+        v = dy * cs - dx * sn
+    return [Equation((hypot(u / rx, v / ry) - 1.0) * rx)]
 
 
 def collinear(ctx, a, b, c=None, **_):
