@@ -684,6 +684,18 @@ round the circle. Write the unit: `cos(i * 10 deg)`. Warned once per call.
 
     x = 40 * cos(i * 10)       # radians: write cos(i * 10 deg)
 """),
+    "W0108": ("a setting written as a constant that nothing reads", """
+A top-level name that nothing reads and that means a setting. `thickness = 4 mm` and `kerf =
+0.2 mm` make ordinary constants: the material thickness (3D outputs, the parts list, the fit
+check) stays 3 mm and the cuts get no kerf; the settings are the statements `thickness 4 mm`
+and `kerf 0.2 mm` (no `=`), which the fix writes (`param thickness = 4 mm`: the fix adds
+`thickness thickness` below it, so the slider sets it). Likewise a top-level name that a
+template call of the program leaves at its default (`module = 2 mm` beside
+`spur_gear(teeth=20)`): a template sees the file's names only as arguments, so the fix passes
+it (`spur_gear(teeth=20, module=module)`).
+
+    thickness = 4 mm        # warning: write `thickness 4 mm`
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

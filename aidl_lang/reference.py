@@ -573,7 +573,8 @@ the nearest one wins). `aidl render` offsets every cut by half the kerf so parts
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
 Only the cutting formats (SVG, DXF, PDF, PNG, G-code, LightBurn `.lbrn2`, HPGL `.plt`) are
 offset: STL, 3MF and STEP keep the designed size.
-`aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
+`aidl render --kerf 0.2mm` overrides it. A positive length known before solving. A
+statement, with no `=`: `kerf = 0.2 mm` is an ordinary constant (warning W0108).
 """, ["kerf_width", "laser kerf", "cut width"]),
     "lbrn2": ("statement", "`aidl render FILE -o x.lbrn2`: a LightBurn project, a layer per "
               "operation.", """
@@ -596,7 +597,9 @@ within 0.025 mm of the design.
 children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP; default
 3 mm), the thickness of `aidl parts` and the depth a router's G-code cuts to (see
 `machine`). No other effect on 2D outputs. `aidl render --thickness` overrides it. A
-positive length known before solving.
+positive length known before solving. A statement, with no `=`: `thickness = 4 mm` is an
+ordinary constant (warning W0108, whose fix writes the statement); `param t = 4 mm` then
+`thickness t` gives it a slider.
 """, ["material thickness", "extrude", "extrusion", "depth"]),
     "machine": ("statement", "`aidl render FILE -o x.gcode --machine m.toml`: G-code (GRBL) "
                 "for a laser, router or plotter.", """

@@ -982,3 +982,14 @@ def test_E0132_empty_or_unknown_layer(tmp_path):
     c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf", layer="F.SilkS")')
     d = the_error(c, "E0132")
     assert "nothing to import" in d.message
+
+
+def test_W0108_a_setting_written_as_a_constant(tmp_path, capsys):
+    """`kerf = 0.2 mm` that nothing reads: a warning whose --json fix is the statement
+    (issue 61; tests/test_issue61.py applies the fixes and measures the parts)."""
+    f = tmp_path / "k.aidl"
+    f.write_text("kerf = 0.2 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n")
+    rc, doc = _cli_json(capsys, "check", str(f), "--json")
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0108"]
+    assert rc == 0 and w["severity"] == "warning" and w["span"]["line"] == 1
+    assert w["fix"]["replacement"] == "kerf 0.2 mm"

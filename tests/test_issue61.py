@@ -235,3 +235,66 @@ def test_the_ellipse_residual_law():
         assert abs(p[1] - y) < 1e-9 * max(1.0, half)
         assert abs(_on_ellipse(p, (0, 0), rx, ry, math.radians(rot))) < 1e-9
     law()
+
+
+# ------------------------------------------------------------ settings written as constants
+def _apply(src: str, fix: dict) -> str:
+    sp = fix["span"]
+    return src[:sp["start"]] + fix["replacement"] + src[sp["end"]:]
+
+
+STAND = """import "std/gears.aidl"
+
+thickness = 4 mm
+kerf = 0.2 mm
+param module = 1.5 mm
+
+assembly stand {
+    solid back { r = Rectangle(center=(0, 0), width=120, height=90) }
+    solid foot { r = Rectangle(center=(0, -80), width=120, height=50) }
+    Below(foot, back, gap=5)
+    AlignCenterX(foot, back)
+    Fixed(back)
+    g = spur_gear(teeth=20)
+    RightOf(g, back, gap=5)
+    AlignCenterY(g, back)
+}
+"""
+
+
+def test_thickness_and_kerf_written_with_equals_are_named_and_fixed():
+    """The maker's tablet stand wrote `thickness = 4 mm` and `kerf = 0.2 mm` as constants:
+    3 mm parts and no kerf, silently.  Now W0108 on each, whose --json fix is the statement;
+    applied, the parts are 4 mm thick and the cuts get the kerf.  `module`, which the gear's
+    call leaves at its default, gets a fix that passes it."""
+    r = checked(STAND)
+    ws = [d for d in r.diagnostics_json() if d["code"] == "W0108"]
+    assert [w["fix"]["replacement"] for w in ws] == [
+        "thickness 4 mm", "kerf 0.2 mm", "spur_gear(teeth=20, module=module)"]
+    assert all(w["severity"] == "warning" for w in ws)
+    assert {p.thickness for p in r.output.parts} == {None}       # the constant did nothing (3 mm)
+    assert r.output.drawing.kerf in (None, 0, 0.0, {})
+    fixed = STAND
+    for w in sorted(ws, key=lambda w: -w["fix"]["span"]["start"]):
+        fixed = _apply(fixed, w["fix"])
+    r2 = checked(fixed)
+    assert r2.ok and not [d for d in r2.sink.items if d.code == "W0108"], \
+        [d.message for d in r2.sink.items]
+    assert {p.thickness for p in r2.output.parts} == {4.0}
+    k = r2.output.drawing.kerf
+    assert (k == 0.2) if isinstance(k, float) else set(k.values()) == {0.2}
+    teeth = r2.value("stand.g.pitch.radius").mm
+    assert abs(teeth - 1.5 * 20 / 2) < 1e-9                     # module 1.5 reached the gear
+
+
+def test_a_param_thickness_gets_the_statement_below_it_and_read_names_are_quiet():
+    src = "param thickness = 4 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n"
+    (w,) = [d for d in checked(src).diagnostics_json() if d["code"] == "W0108"]
+    fixed = _apply(src, w["fix"])
+    assert fixed.startswith("param thickness = 4 mm\nthickness thickness\n")
+    r = checked(fixed)
+    assert not r.sink.items and {p.thickness for p in r.output.parts} == {4.0}
+    # a name that something reads is an ordinary constant: no warning
+    quiet = ("thickness = 4 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, "
+             "height=thickness * 5) }\n")
+    assert not checked(quiet).sink.items
