@@ -279,7 +279,8 @@ _DEFS = {
                   "point goes (default: the arc's middle, a circle's top)", kw_only=True),
                 A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
                   "toward the center (text under a circle, readable)", kw_only=True)],
-               doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
+               doc="Single-stroke text in a drawing (one built-in font, no `font=`); size is "
+                   "the cap height; anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
@@ -714,6 +715,24 @@ def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
                     break
         out.setdefault(k, k)
     return out
+
+
+# argument names a model guesses for something the language does not have: the E0105 hint
+# says so instead of a did-you-mean on the spelling (`font` is not `on`); issue 61
+ARG_NOTES: dict[tuple[str, str], str] = {
+    ("Text", n): "text is engraved in the one built-in single-stroke font (Hershey \"futural\", "
+                 "a line font for lasers and plotters); there is no font choice: leave "
+                 f"`{n}=` out"
+    for n in ("font", "font_family", "family", "typeface", "fontname", "font_name", "face",
+              "weight", "bold", "italic", "style")}
+
+
+def near_args(name: str, names: list[str]) -> list[str]:
+    """Accepted argument names near ``name`` in spelling, for did-you-mean: none shorter than
+    3 letters unless ``name`` is that short too (`font` is not `on`, though difflib says
+    0.67)."""
+    from .diagnostics import did_you_mean
+    return [c for c in did_you_mean(name, names) if len(c) >= 3 or len(name) <= 3]
 
 
 def accepted_args(entry: Entry) -> list[str]:

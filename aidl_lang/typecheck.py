@@ -16,8 +16,9 @@ from __future__ import annotations
 
 from . import ast as A
 from .diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
-from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
-                       UNITS_ANGLE, UNITS_LENGTH, lookup, template_param)
+from .registry import (ARG_NOTES, CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
+                       choose_variant, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
+                       template_param)
 from .sources import ImportRefused
 
 
@@ -413,9 +414,11 @@ class Checker:
             return
         if bad is not None:
             from .reference import entry_units_hint
-            sugg = did_you_mean(bad.name, all_names)
+            note = ARG_NOTES.get((entry.name, bad.name))
+            sugg = [] if note else near_args(bad.name, all_names)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
-                            hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + "forms: "
+                            hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
+                            + (f"{note}; " if note else "") + "forms: "
                             + "; ".join(entry.signature(v) for v in entry.variants)
                             + f"; accepted names: {', '.join(all_names)}; units: "
                             + entry_units_hint(entry),

@@ -298,3 +298,41 @@ def test_a_param_thickness_gets_the_statement_below_it_and_read_names_are_quiet(
     quiet = ("thickness = 4 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, "
              "height=thickness * 5) }\n")
     assert not checked(quiet).sink.items
+
+
+# ------------------------------------------------------------ no cascades; suggestions in meaning
+def test_a_failed_definition_is_reported_once_not_again_through_a_member():
+    """`t = Text("HELLO", size=5)` (no position) is one error; `label.t.center`,
+    `label.t.bb.width` and `label.t` in a list index were each a second error, "a object has no
+    member `center`"."""
+    src = """solid tag {
+    body = Rectangle(center=(0, 0), width=60, height=20)
+    drawing label {
+        t = Text("HELLO", size=5)
+        for i in range(2) { u = Text("X", size=3) }
+    }
+    Coincident(label.t.center, body.center)
+    x = label.t.bb.width
+    label.t.center == (0, 0)
+    y = label.u[1].center
+}
+"""
+    r = aidl_compile(src, path="/tmp/aidl-issue61-text.aidl")
+    errs = [(d.code, d.span.line) for d in r.sink.items if d.is_error]
+    assert errs == [("E0108", 4), ("E0108", 5)], [d.message for d in r.sink.items]
+    assert not any("a object" in d.message for d in r.sink.items)
+
+
+def test_a_font_argument_says_there_is_one_font_not_did_you_mean_on():
+    src = ('solid tag {\n    body = Rectangle(center=(0, 0), width=60, height=20)\n'
+           '    drawing label {\n        t = Text("HI", position=(0, 0), size=5, font="Arial")\n'
+           '    }\n}\n')
+    r = aidl_compile(src, path="/tmp/aidl-issue61-font.aidl")
+    (e,) = [d for d in r.sink.items if d.is_error]
+    assert e.code == "E0105" and "`font`" in e.message
+    assert "single-stroke font" in e.hint and "did you mean" not in e.hint
+    assert e.suggestions == [] and e.fix is None
+    # a real misspelling still gets its suggestion
+    r = aidl_compile(src.replace('font="Arial"', 'valgin="middle"'), path="/tmp/aidl-issue61-f2.aidl")
+    (e,) = [d for d in r.sink.items if d.is_error]
+    assert e.suggestions[:1] == ["valign"]

@@ -84,7 +84,7 @@ class Calls:
                                 node.span, hint=f"write `part = {callee.node.name}(...)`")
             return self._instantiate(callee, node, name)
         if not isinstance(callee, Builtin):
-            raise EvalError("E0111", f"a {type_name(callee)} cannot be called", node.func.span)
+            raise EvalError("E0111", f"{_a(type_name(callee))} cannot be called", node.func.span)
         nm = callee.name
         if nm in FUNCTIONS:
             return self.finite(self._function(nm, node), node.span)
@@ -98,10 +98,13 @@ class Calls:
             bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
                 from ..reference import entry_units_hint
+                from ..registry import ARG_NOTES, near_args
+                note = ARG_NOTES.get((entry.name, bad_kw.name))
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
-                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}"
+                                hint=(f"{note}\n" if note else "") +
+                                     f"{entry.signature()}\naccepted names: {', '.join(ok)}"
                                      f"\nunits: {entry_units_hint(entry)}",
-                                suggestions=did_you_mean(bad_kw.name, ok))
+                                suggestions=[] if note else near_args(bad_kw.name, ok))
             code = "E0106" if reason and reason.startswith("missing") else "E0104"
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
         bound = {}
