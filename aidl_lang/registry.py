@@ -81,6 +81,11 @@ CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not 
 FLEXIBLE = Arg("flexible", "bool", False, "points given by literal coordinates are starting "
                "guesses only (the shape may bend), not a rigid shape", kw_only=True)
 
+MIRROR = Arg("mirror", "any", None, "\"y\" (x -> -x), \"x\" (y -> -y) or a Line: the points "
+             "are one half, followed by their mirror images in reverse order, exactly as "
+             "`mirror(points, about)` (a point on the axis at either end is not repeated)",
+             kw_only=True)
+
 POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
 LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
                 "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
@@ -93,10 +98,11 @@ RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point
                 "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
                 "left": "line", "right": "line", "width": "length", "height": "length",
                 "bb": "bbox"}
-POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "bbox"}
+POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centroid": "point",
+                "bb": "bbox"}
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
-               "bb": "bbox"}
+               "centroid": "point", "bb": "bbox"}
 TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
     "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
@@ -185,11 +191,12 @@ _DEFS = {
                    A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
-                      "output; Offset, Hull and Fillet corners on it are refused.",
+                      "output; Offset, Shell, Hull and Fillet corners on it are refused.",
                   members=ELLIPSE_MEMBERS),
-    "Polygon": _p([A("points", "points"), FLEXIBLE],
+    "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
-                      "its shape) unless flexible=true; other points are starting guesses.",
+                      "its shape) unless flexible=true; other points are starting guesses; "
+                      "mirror=\"y\": the points are the left or right half.",
                   members=POLY_MEMBERS),
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
@@ -206,8 +213,8 @@ _DEFS = {
                         "file puts it (at= moves it); inner loops are holes; cut=, engrave=, "
                         "ignore= (layers or colours), roles=\"laser\", close_tolerance=.",
                     members=DRAWING_MEMBERS),
-    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                   doc="Open chain of lines.",
+    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE, MIRROR],
+                   doc="Open chain of lines (mirror=\"y\": written by one half).",
                    members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
                   A("corners", "any", None, "indices of points where the curve turns "
@@ -394,7 +401,9 @@ _DEFS = {
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "length", 0.0)],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
-                            "or on each point of at."),
+                            "or on each point of at: the original goes to the bottom-left "
+                            "corner (at[0]), copies to the others; what is Fixed stays put "
+                            "(fix the plate, not the original, or the plate moves to it)."),
     "Rigid": _c([A("a", "any"), A("b", "any", None, "and every further argument, as a list")],
                 cat="operation", varargs=True,
                 doc="any number of shapes, structures (drawings too) or lists of them keep "

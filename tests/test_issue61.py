@@ -336,3 +336,68 @@ def test_a_font_argument_says_there_is_one_font_not_did_you_mean_on():
     r = aidl_compile(src.replace('font="Arial"', 'valgin="middle"'), path="/tmp/aidl-issue61-f2.aidl")
     (e,) = [d for d in r.sink.items if d.is_error]
     assert e.suggestions[:1] == ["valign"]
+
+
+# ------------------------------------------------------------ half outlines, centroids, corners
+def test_a_polygon_and_a_polyline_written_by_one_half():
+    """`Polygon(half, mirror="y")`: the half, then its mirror images (an end on the axis not
+    repeated), exact; the outline is symmetric and the shape stays rigid (literal points)."""
+    src = """solid leaf {
+    p = Polygon([(0, -20), (12, -15), (15, 5), (6, 18), (0, 30)], mirror="y")
+    drawing vein { v = Polyline([(-10, 0), (0, 8)], mirror="y") }
+    vein.bb.center == p.bb.center
+    p.bb.left == 100
+}
+"""
+    r = checked(src)
+    assert r.ok and not r.sink.items, [d.message for d in r.sink.items]
+    v = {x.name: x.value for x in r.values}
+    pts = [v[f"leaf.p.p{i}"] for i in range(8)]
+    assert f"leaf.p.p8" not in v
+    want = [(0, -20), (12, -15), (15, 5), (6, 18), (0, 30), (-6, 18), (-15, 5), (-12, -15)]
+    assert abs(pts[0][0] - 115) < 1e-9                  # moved whole by `p.bb.left == 100`
+    assert np.allclose([(q[0] - pts[0][0], q[1] - pts[0][1]) for q in pts],
+                       [(w[0], w[1] + 20) for w in want], atol=1e-12), pts
+    vein = [v[f"leaf.vein.v.p{i}"] for i in range(3)]
+    assert np.allclose([(q[0] - vein[1][0], q[1] - vein[1][1]) for q in vein],
+                       [(-10, -8), (0, 0), (10, -8)], atol=1e-12)
+
+
+def test_centroid_of_a_triangle_and_a_polygon():
+    src = """solid plate {
+    t = Triangle(center=(0, 0), base=30, height=20)
+    Fixed(t)
+    p = Polygon([(40, 0), (70, 0), (70, 10), (50, 30)])
+    hole a { c = Circle(center=(1, 1), radius=1) }
+    hole b { c = Circle(center=(50, 10), radius=1) }
+    Coincident(a.c.center, t.centroid)
+    Coincident(b.c.center, p.centroid)
+}
+"""
+    r = aidl_compile(src, path="/tmp/aidl-issue61-centroid.aidl")
+    assert r.ok, [d.message for d in r.sink.items]
+    v = {x.name: x.value for x in r.values}
+    P = [v[f"plate.p.p{i}"] for i in range(4)]
+    # the area centroid by the shoelace formula on the solved vertices (numpy, independent)
+    x, y = np.array([q[0] for q in P]), np.array([q[1] for q in P])
+    x2, y2 = np.roll(x, -1), np.roll(y, -1)
+    cr = x * y2 - x2 * y
+    A = cr.sum() / 2
+    cx, cy = ((x + x2) * cr).sum() / (6 * A), ((y + y2) * cr).sum() / (6 * A)
+    assert np.allclose(v["plate.b.c.center"], (cx, cy), atol=1e-9)
+    T = [v[f"plate.t.{n}"] for n in "abc"]
+    assert np.allclose(v["plate.a.c.center"], np.mean(T, axis=0), atol=1e-12)
+    assert abs(v["plate.a.c.center"][1] - (-10 / 3)) < 1e-12     # not the box's center (0)
+
+
+def test_the_prompt_says_what_corner_pattern_keeps_and_that_shell_refuses_an_ellipse():
+    from aidl_lang.llm.prompt import system_prompt
+    text = system_prompt(examples=False)
+    corner = next(ln for ln in text.splitlines() if ln.startswith("- CornerPattern("))
+    assert "bottom-left" in corner and "Fixed stays put" in corner
+    ellipse = next(ln for ln in text.splitlines() if ln.startswith("- Ellipse("))
+    assert "Offset, Shell, Hull and Fillet" in ellipse
+    assert 'mirror="y"' in next(ln for ln in text.splitlines() if ln.startswith("- Polygon("))
+    members = [ln for ln in text.splitlines() if ln.startswith("- ") and " | points:" in ln]
+    assert "centroid" in next(ln for ln in members if "Triangle" in ln.split("|")[0])
+    assert "centroid" in next(ln for ln in members if "Polygon" in ln.split("|")[0])

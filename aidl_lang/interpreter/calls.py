@@ -136,6 +136,10 @@ class Calls:
         for k, v in conv.items():
             self._check_magnitudes(v, spans.get(k, node.span), k)
         if entry.category == "primitive":
+            if conv.get("mirror") is not None and "points" in conv:
+                # Polygon(half, mirror="y"): the half, then its mirror images (issue 61)
+                conv["points"] = self._mirror(conv["points"], conv["mirror"], node)
+            conv.pop("mirror", None)
             return self._primitive(cname, conv, node, spans)
         if entry.category == "placement":
             return self._place(conv, node, spans)
