@@ -696,6 +696,21 @@ it (`spur_gear(teeth=20, module=module)`).
 
     thickness = 4 mm        # warning: write `thickness 4 mm`
 """),
+    "W0109": ("hole declared in an assembly cuts nothing", """
+A hole cuts only the solid it is declared in. One declared in an assembly (beside a template
+instance, meant for its lid) is a part of its own: the lid comes out whole. The warning names
+the solid part the hole lies over, and its fix writes `CutInto(HOLE, PART)` in the assembly,
+which cuts that part (a part of a template instance cannot be cut any other way: its body is
+the template's). `CutInto` is written where both are, so it keeps the subtree rules; place the
+hole with constraints as usual.
+
+    assembly kit {
+        box = finger_box(length=80 mm, depth=80 mm, height=50 mm)
+        hole lid_hole { c = Circle(center=(0, 0), diameter=20) }   # warning: cuts nothing
+        CenterInside(lid_hole, box.lid)
+        CutInto(lid_hole, box.lid)                                 # the fix: a hole in the lid
+    }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

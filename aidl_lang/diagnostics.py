@@ -234,5 +234,9 @@ def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> 
     if d.suggestions and (not d.hint or "did you mean" not in d.hint):
         out.append("  = did you mean: " + ", ".join(f"`{s}`" for s in d.suggestions) + "?")
     if d.fix:
-        out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")
+        if d.fix.span.start == d.fix.span.end and d.fix.replacement.strip():
+            out.append(f"  = suggested fix: insert `{d.fix.replacement.strip()}` at "
+                       f"{d.fix.span.line}:{d.fix.span.col}")
+        else:
+            out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")
     return "\n".join(out)

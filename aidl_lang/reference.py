@@ -336,6 +336,12 @@ def _template_topic(t: StdTemplate) -> Topic:
                   + ", ".join(t.members)]
     lines += ["", "Use it by assignment inside a structure: `NAME = "
               f"{t.name}(...)` (an instance of kind {t.node.kind}; place it with constraints)."]
+    if t.node.kind == "assembly":
+        part = "lid" if "lid" in t.members else (t.members[0] if t.members else "PART")
+        lines += ["", _wrap("Cut into one of its parts (a hole in a panel): declare `hole h { "
+                            "... }` beside the instance, place it with constraints (`CenterInside"
+                            f"(h, NAME.{part})`) and write `CutInto(h, NAME.{part})` there; a hole "
+                            "left in the assembly cuts nothing (W0109).", "")]
     return Topic(t.name, f"{t.node.kind} template, std/{t.module}.aidl", t.summary,
                  "\n".join(lines), _template_example(t))
 
@@ -352,6 +358,17 @@ _TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
 # the joints hold themselves where (cx, cy) and `rotation` put them, on a panel's edge: their
 # examples place them so, never by constraints (which would repeat the template's `Fixed(self)`)
 _TEMPLATE_EXAMPLES = {
+    # the boxes: a hole of the user's own cut into the lid (CutInto; issue 61)
+    "finger_box": ("thickness 3 mm\n\nassembly kit {\n"
+                   "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
+                   "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
+                   "    CenterInside(lid_hole, box.lid)\n"
+                   "    CutInto(lid_hole, box.lid)    # a 20 mm hole in the middle of the lid\n}\n"),
+    "lid_box": ("thickness 3 mm\n\nassembly kit {\n"
+                "    box = lid_box(length=100 mm, width=70 mm, height=40 mm)\n"
+                "    hole knob { c = Circle(center=(0, 0), diameter=6) }\n"
+                "    CenterInside(knob, box.lid)\n"
+                "    CutInto(knob, box.lid)    # a hole for a knob's screw in the lid\n}\n"),
     "cross_halving": ("solid panel {\n    body = Rectangle(center=(0, 0), width=120, height=60)\n"
                       "    # from the middle of the top edge (y = 30), 30 mm down into the panel\n"
                       "    h = cross_halving(depth=30 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
@@ -999,6 +1016,11 @@ EXAMPLES: dict[str, str] = {
              "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"
              "    Place(wall, rotation=(90 deg, 0, 0), position=(0, 20, 3))\n}\n",
     "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
+    "CutInto": "import \"std/joints.aidl\"\n\nthickness 3 mm\n\nassembly kit {\n"
+               "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
+               "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
+               "    CenterInside(lid_hole, box.lid)\n"
+               "    CutInto(lid_hole, box.lid)    # the lid comes out with the hole\n}\n",
     "LinearPattern": _HOLES.format(line="row = LinearPattern(h, 5, (10, 0))"),
     "CircularPattern": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
                               "hole bolt { c = Circle(center=(20, 0), diameter=5) }\n"

@@ -404,6 +404,10 @@ _DEFS = {
                             "or on each point of at: the original goes to the bottom-left "
                             "corner (at[0]), copies to the others; what is Fixed stays put "
                             "(fix the plate, not the original, or the plate moves to it)."),
+    "CutInto": _c([A("hole", "boxed"), A("part", "boxed")], cat="operation",
+                  doc="A hole declared in an assembly cuts a solid of it, e.g. a part of a "
+                      "template instance (`CutInto(lid_hole, box.lid)`: a hole in "
+                      "finger_box's lid); written where both are, place the hole as usual."),
     "Rigid": _c([A("a", "any"), A("b", "any", None, "and every further argument, as a list")],
                 cat="operation", varargs=True,
                 doc="any number of shapes, structures (drawings too) or lists of them keep "

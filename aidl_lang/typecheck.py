@@ -45,7 +45,9 @@ HALLUCINATIONS = {
     "Merge": _BOOL,
     "Difference": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
     "Subtract": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
-    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child "
+           "(into a part of a template instance: declare the hole beside it and write "
+           "`CutInto(NAME, box.lid)`)",
     "Intersection": "there is no intersection boolean: " + _BOOL,
     "Intersect": "there is no intersection boolean: " + _BOOL,
     "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",

@@ -146,6 +146,8 @@ class Calls:
         if entry.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            if cname == "CutInto":
+                return self._cut_into(conv, node, spans)
             try:
                 return apply(self, cname, conv, name)
             except OperationError as ex:
@@ -159,6 +161,40 @@ class Calls:
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(cname, eqs, node.span, None, owners)
+        return None
+
+    def _cut_into(self, conv, node, spans):
+        """``CutInto(hole, part)`` (issue 61): the hole ``hole``, declared in an assembly,
+        cuts the solid ``part`` instead of being a part of its own.  Both are in the
+        subtree of the structure the statement is written in (validity rule 2, checked by
+        the caller); nothing moves in the structure tree, so every constraint keeps its
+        frames: the booleans subtract the hole from the part (output/booleans.py)."""
+        h, part = conv["hole"], conv["part"]
+        hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
+        if not isinstance(h, StructRef) or h.struct.kind != "hole":
+            raise EvalError("E0108", f"`CutInto` cuts with a hole structure, got "
+                            f"{_a(type_name(h))}", hspan,
+                            hint="declare `hole NAME { ... }` beside the part's instance and "
+                                 "write `CutInto(NAME, box.lid)`")
+        if not isinstance(part, StructRef) or part.struct.kind != "solid":
+            raise EvalError("E0108", f"`CutInto` cuts into a solid, got {_a(type_name(part))}",
+                            pspan, hint="name a solid part, e.g. `box.lid` of "
+                                        "`box = finger_box(...)` (`aidl docs finger_box` "
+                                        "lists its parts)")
+        hs, ps = h.struct, part.struct
+        if hs.parent is None or hs.parent.kind != "assembly":
+            where = hs.parent.path if hs.parent is not None else hs.path
+            raise EvalError("E0108", f"`{hs.path}` already cuts `{where}`, the solid it is "
+                            "declared in: `CutInto` is for a hole declared in an assembly",
+                            hspan, hint="declare the hole in the assembly that holds the "
+                                        "part's instance, beside it")
+        if ps.is_within(hs):
+            raise EvalError("E0108", f"`{ps.path}` is inside the hole `{hs.path}`", pspan)
+        if hs.cuts_into is not None:
+            raise EvalError("E0108", f"`{hs.path}` already cuts `{hs.cuts_into.path}`", node.span,
+                            hint="a hole cuts one solid: declare another hole for the other")
+        hs.cuts_into = ps
+        ps.cut_by.append(hs)
         return None
 
     def _place(self, conv, node, spans):
@@ -189,8 +225,16 @@ class Calls:
             sp = prev[2]
             line = (f", on line {sp.line}" if sp is None or sp.file == node.span.file else
                     f", in {shown_path(sp.file)} line {sp.line}") if sp is not None else ""
+            hint = "a part has one placement: keep one `Place`"
+            tmpl = next((a.template for a in target.ancestors()
+                         if a.template and sp is not None and sp.file != node.span.file), None)
+            if tmpl:
+                lift = ("; `lift=` raises what stands on the base" if tmpl in
+                        ("gear_train", "rack_and_pinion", "planetary") else "")
+                hint = (f"`{tmpl}` places its parts itself: its arguments say where (`aidl docs "
+                        f"{tmpl}`{lift})")
             raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
-                            hint="a part has one placement: keep one `Place`")
+                            hint=hint)
         pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
         rot = self._triple(conv.get("rotation"), "rotation", ANG, spans.get("rotation"), node)
         target.placement = (pos, rot, node.span)
