@@ -399,6 +399,10 @@ wrong position. Move it where it shows, make it a `hole` if it should cut, or de
 hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
 in, children included), the warning names that hole and the share it cuts: to keep the solid
 over the hole, declare it beside that structure (a sibling's material survives the hole).
+When one filled shape of the parent covers it whole (`frame = Circle(...)` meant as a ring,
+over a spider and its threads), the warning names that shape and counts the other shapes it
+hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or
+`construction=true`.
 """),
     "W0507": ("wall thinner than the minimum", """
 Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with

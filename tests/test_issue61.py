@@ -509,3 +509,29 @@ assembly kit {
                                    "position=(0, 0, 10))"), path="/tmp/aidl-issue61-l2.aidl")
     (e,) = [d for d in bad.sink.items if d.is_error]
     assert "in std/gears.aidl line" in e.message and "lift=" in e.hint
+
+
+def test_a_filled_shape_that_swallows_the_design_is_named_with_the_likely_intent():
+    """The spider-web model's `frame = Circle(...)` (meant as a ring) covered the threads and
+    the spider; W0506 said only that the spider "lies wholly inside the rest".  Now it names
+    the covering shape, counts the shapes it hides too, and offers a ring or construction."""
+    src = """solid web {
+    frame = Circle(center=(0, 0), radius=50)
+    for i in range(4) {
+        thread = Rectangle(center=(0, 0), width=96, height=1, rotation=i * 45 deg)
+    }
+    solid spider { body = Circle(center=(10, 10), radius=6) }
+    Fixed(spider)
+}
+"""
+    r = aidl_compile(src, path="/tmp/aidl-issue61-web.aidl")
+    (w,) = [d for d in r.sink.items if d.code == "W0506"]
+    assert "the filled shape `web.frame` covers it whole" in w.message
+    assert "4 other shapes of `web` (`web.thread`)" in w.message
+    assert "`Shell(frame, 3)`" in w.hint and "construction=true" in w.hint
+    # the ring the hint offers: the spider and the threads show, no W0506
+    ring = aidl_compile(src.replace("frame = Circle(center=(0, 0), radius=50)",
+                                    "rim = Circle(center=(0, 0), radius=47, construction=true)\n"
+                                    "    frame = Shell(rim, 3)"), path="/tmp/aidl-issue61-w2.aidl")
+    assert not [d for d in ring.sink.items if d.code == "W0506"], \
+        [d.message for d in ring.sink.items]

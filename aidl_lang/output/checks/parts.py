@@ -189,10 +189,40 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                                   f"declare it beside `{s.name}` (a sibling structure's "
                                   f"material survives the hole), else delete it")
                 continue
+            cover = _covering_shape(items, i, a)
+            if cover is not None:           # one filled shape of s hides it (issue 61)
+                cname, hidden = cover
+                names = list(dict.fromkeys(hidden))
+                more = (f", and {len(hidden)} other shape{'s' if len(hidden) > 1 else ''} "
+                        f"of `{s.path}` ({', '.join(names[:3])}{', ...' if len(names) > 3 else ''})"
+                        if hidden else "")
+                short = cname.strip("`").rsplit(".", 1)[-1]
+                sink.warning("W0506", f"{name} adds nothing to `{s.path}`: the filled shape "
+                             f"{cname} covers it whole{more}", span,
+                             hint=f"{cname} is filled: if it is meant as a rim or an outline, "
+                                  f"draw a ring (`Shell({short}, 3)`, or a `hole` "
+                                  f"inside it) or make it `construction=true`; else move {name} "
+                                  "where it shows")
+                continue
             sink.warning("W0506", f"{name} adds nothing to `{s.path}`: it lies wholly inside "
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+def _covering_shape(items, i: int, a: float):
+    """(name, names of the other shapes it hides too) of one own shape of the structure
+    (not a solid child) that covers item ``i`` (area ``a``) whole by itself, or None."""
+    shp = items[i][2]
+    for j, (cname, _, cshp) in enumerate(items):
+        if j == i or cname.startswith("solid "):
+            continue
+        if _area(shp - cshp) <= max(1e-9, 1e-4 * a):
+            hidden = [n for k, (n, _, o) in enumerate(items)
+                      if k not in (i, j) and not n.startswith("solid ") and n != cname
+                      and _area(o - cshp) <= max(1e-9, 1e-4 * _area(o))]
+            return cname, hidden
+    return None
 
 
 # --------------------------------------------------------------------------- steps (W0520)
