@@ -148,8 +148,8 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
 # (cx, cy) and the gears in mesh above it; assembled, the plate lies on z = 0
 # and each gear on it on its axle (the plate's holes are axle_hole[i]);
 # `lift` raises the gears that much more above the plate (a demonstrator's
-# gears 10 mm up on their axles: lift=10 mm). Members: `plate`, `gear[i]` (spur_gear instances), `x` (the axles' x offsets
-# from the first).
+# gears 10 mm up on their axles: lift=10 mm). Members: `plate`, `gear[i]`
+# (spur_gear instances), `x` (the axles' x offsets from the first).
 def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
                thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     assert lift >= 0 mm, "lift is a height above the plate: 0 or more"
