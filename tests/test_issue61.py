@@ -535,3 +535,10 @@ def test_a_filled_shape_that_swallows_the_design_is_named_with_the_likely_intent
                                     "    frame = Shell(rim, 3)"), path="/tmp/aidl-issue61-w2.aidl")
     assert not [d for d in ring.sink.items if d.code == "W0506"], \
         [d.message for d in ring.sink.items]
+
+
+def test_units_written_with_equals_says_the_statement():
+    r = aidl_compile('units = in\nsolid a { r = Rectangle(center=(0, 0), width=4, height=2) }\n',
+                     path="/tmp/aidl-issue61-units.aidl")
+    (e,) = [d for d in r.sink.items if d.is_error]
+    assert e.code == "E0001" and "`units mm`" in e.hint and "==" not in e.hint
