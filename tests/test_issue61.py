@@ -529,6 +529,13 @@ def test_a_filled_shape_that_swallows_the_design_is_named_with_the_likely_intent
     assert "the filled shape `web.frame` covers it whole" in w.message
     assert "4 other shapes of `web` (`web.thread`)" in w.message
     assert "`Shell(frame, 3)`" in w.hint and "construction=true" in w.hint
+    # the spider's eyes, holes of `web`, take a little of it: the frame is still the cause
+    eyes = aidl_compile(src.replace("    Fixed(spider)\n", "    Fixed(spider)\n    hole eyes { "
+                                    "e = Circle(center=(8, 13), radius=1) }\n"),
+                        path="/tmp/aidl-issue61-w3.aidl")
+    (w,) = [d for d in eyes.sink.items if d.code == "W0506"]
+    assert "(the filled shape `web.frame` covers it whole)" in w.message, w.message
+    assert "`Shell(frame, 3)`" in w.hint
     # the ring the hint offers: the spider and the threads show, no W0506
     ring = aidl_compile(src.replace("frame = Circle(center=(0, 0), radius=50)",
                                     "rim = Circle(center=(0, 0), radius=47, construction=true)\n"

@@ -182,12 +182,20 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                 share = _area(shp ^ _union([d.shapes[h] for h in cut])) / a
                 how = ("all of it" if share >= 0.9995 else
                        f"{share:.0%} of it, and the rest lies inside the rest of `{s.path}`")
+                cover = _covering_shape(items, i, a) if share < 0.5 else None
+                also, ring = "", ""
+                if cover is not None:       # mostly hidden by one filled shape (issue 61)
+                    also = f" (the filled shape {cover[0]} covers it whole)"
+                    ring = (f"; if {cover[0]} is meant as a rim or an outline, draw a ring "
+                            f"(`Shell({cover[0].strip('`').rsplit('.', 1)[-1]}, 3)`) or make "
+                            "it `construction=true`")
                 sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
-                             f"`{cut[0].path}` of the same structure cuts away {how}", span,
+                             f"`{cut[0].path}` of the same structure cuts away {how}{also}",
+                             span,
                              hint=f"a hole cuts every solid of the structure it is declared in, "
                                   f"children included; to keep this solid over the hole, "
                                   f"declare it beside `{s.name}` (a sibling structure's "
-                                  f"material survives the hole), else delete it")
+                                  f"material survives the hole), else delete it{ring}")
                 continue
             cover = _covering_shape(items, i, a)
             if cover is not None:           # one filled shape of s hides it (issue 61)
