@@ -313,7 +313,11 @@ The constraint holds already because other constraints (or a constructor's held 
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
 over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
 (two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
-for the group, whose hint says which to keep (the first written) and which to drop.
+for the group, whose hint says which to keep (the first written) and which to drop. A
+standard-library template's own constraints are never the ones to drop (its user cannot edit
+them): beside one (`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the
+hint names the user's line and where the template holds it (`std/joints.aidl line 136`), and a
+redundancy wholly inside a template is not reported.
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)
@@ -335,7 +339,8 @@ constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, 
 `Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
 the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)".
+(harmless)". A structure declared inside a standard-library template is the template's affair
+and is not reported to its user.
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)
@@ -394,6 +399,10 @@ wrong position. Move it where it shows, make it a `hole` if it should cut, or de
 hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
 in, children included), the warning names that hole and the share it cuts: to keep the solid
 over the hole, declare it beside that structure (a sibling's material survives the hole).
+When one filled shape of the parent covers it whole (`frame = Circle(...)` meant as a ring,
+over a spider and its threads), the warning names that shape and counts the other shapes it
+hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or
+`construction=true`.
 """),
     "W0507": ("wall thinner than the minimum", """
 Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
@@ -678,6 +687,33 @@ meant as degrees: labels every 10 degrees written `cos(i * 10)` land at 10 rad =
 round the circle. Write the unit: `cos(i * 10 deg)`. Warned once per call.
 
     x = 40 * cos(i * 10)       # radians: write cos(i * 10 deg)
+"""),
+    "W0108": ("a setting written as a constant that nothing reads", """
+A top-level name that nothing reads and that means a setting. `thickness = 4 mm` and `kerf =
+0.2 mm` make ordinary constants: the material thickness (3D outputs, the parts list, the fit
+check) stays 3 mm and the cuts get no kerf; the settings are the statements `thickness 4 mm`
+and `kerf 0.2 mm` (no `=`), which the fix writes (`param thickness = 4 mm`: the fix adds
+`thickness thickness` below it, so the slider sets it). Likewise a top-level name that a
+template call of the program leaves at its default (`module = 2 mm` beside
+`spur_gear(teeth=20)`): a template sees the file's names only as arguments, so the fix passes
+it (`spur_gear(teeth=20, module=module)`).
+
+    thickness = 4 mm        # warning: write `thickness 4 mm`
+"""),
+    "W0109": ("hole declared in an assembly cuts nothing", """
+A hole cuts only the solid it is declared in. One declared in an assembly (beside a template
+instance, meant for its lid) is a part of its own: the lid comes out whole. The warning names
+the solid part the hole lies over, and its fix writes `CutInto(HOLE, PART)` in the assembly,
+which cuts that part (a part of a template instance cannot be cut any other way: its body is
+the template's). `CutInto` is written where both are, so it keeps the subtree rules; place the
+hole with constraints as usual.
+
+    assembly kit {
+        box = finger_box(length=80 mm, depth=80 mm, height=50 mm)
+        hole lid_hole { c = Circle(center=(0, 0), diameter=20) }   # warning: cuts nothing
+        CenterInside(lid_hole, box.lid)
+        CutInto(lid_hole, box.lid)                                 # the fix: a hole in the lid
+    }
 """),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the

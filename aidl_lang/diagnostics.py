@@ -8,9 +8,37 @@ cannot go on raises :class:`Abort` after recording why.
 from __future__ import annotations
 
 import functools
+import os
 from dataclasses import dataclass, field
 from collections import namedtuple
 from collections.abc import Iterable
+from pathlib import Path
+
+# the bundled standard library (``import "std/NAME.aidl"``): beside the package in a source
+# checkout, inside it in an installed wheel (aidl_lang.sources reads it from here)
+STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
+if not STDLIB.exists():
+    STDLIB = Path(__file__).resolve().parent / "stdlib"
+
+
+@functools.cache
+def _stdlib_roots() -> tuple[str, ...]:
+    roots = {str(STDLIB), str(STDLIB.resolve())}
+    return tuple(r.rstrip(os.sep) + os.sep for r in roots)
+
+
+def in_stdlib(file: str | None) -> bool:
+    """True when ``file`` (a span's file) is a file of the bundled standard library."""
+    return bool(file) and any(file.startswith(r) for r in _stdlib_roots())
+
+
+def shown_path(file: str) -> str:
+    """``file`` as a message shows it: a standard-library file as the program imports it,
+    ``std/joints.aidl`` (never the install's absolute path: issue 61), any other unchanged."""
+    for r in _stdlib_roots():
+        if file.startswith(r):
+            return "std/" + file[len(r):].replace(os.sep, "/")
+    return file
 
 
 class Span(namedtuple("Span", "file line col end_line end_col start end", defaults=(0, 0))):
@@ -178,17 +206,18 @@ def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> 
         return f"\x1b[{code}m{s}\x1b[0m" if color else s
 
     sev_color = {"error": "1;31", "warning": "1;33", "note": "1;36"}.get(d.severity, "1")
-    where = f"{d.span.file}:{d.span.line}:{d.span.col}: " if d.span else ""
+    where = f"{shown_path(d.span.file)}:{d.span.line}:{d.span.col}: " if d.span else ""
     out = [f"{where}{c(sev_color, f'{d.severity}[{d.code}]')}: {c('1', d.message)}"]
     spans = ([Label(d.span, "", True)] if d.span else []) + list(d.labels)
     for lab in spans:
         src = sources.get(lab.span.file)
         if src is None:
             if lab.message:
-                out.append(f"  --> {lab.span.file}:{lab.span.line}:{lab.span.col}: {lab.message}")
+                out.append(f"  --> {shown_path(lab.span.file)}:{lab.span.line}:{lab.span.col}: "
+                           f"{lab.message}")
             continue
         if lab is not spans[0]:
-            out.append(f"  --> {lab.span.file}:{lab.span.line}:{lab.span.col}")
+            out.append(f"  --> {shown_path(lab.span.file)}:{lab.span.line}:{lab.span.col}")
         text = _line_text(src, lab.span.line).replace("\t", " ")
         num = str(lab.span.line)
         pad = " " * len(num)
@@ -205,5 +234,9 @@ def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> 
     if d.suggestions and (not d.hint or "did you mean" not in d.hint):
         out.append("  = did you mean: " + ", ".join(f"`{s}`" for s in d.suggestions) + "?")
     if d.fix:
-        out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")
+        if d.fix.span.start == d.fix.span.end and d.fix.replacement.strip():
+            out.append(f"  = suggested fix: insert `{d.fix.replacement.strip()}` at "
+                       f"{d.fix.span.line}:{d.fix.span.col}")
+        else:
+            out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")
     return "\n".join(out)

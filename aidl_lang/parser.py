@@ -1395,6 +1395,8 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
     if tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
             and _open_paren(text, pos):
         hint = f"a `,` is probably missing before `{tok}`"
+    elif str(tok) == "=" and re.match(r"\s*units\s*$", head):
+        hint = "`units` is a statement without `=`: `units mm` (or `in`, `cm`, ...)"
     elif str(tok) == "=" :
         hint = "use `==` for an equation constraint, `=` only to name a value"
     elif str(tok) == "{" :

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .diagnostics import Diagnostic, DiagnosticSink, Label
+from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_path
 from .interp import Interpreter
 from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget, Deadline, OutOfBudget
 from .geometry.expr import Lin, Nl
@@ -282,12 +282,62 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
         for g, message, hint, *code in drawing.shape_errors:
             sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
                                 hint=hint))
+        check_stray_holes(sink, drawing)
         if shape_checks:
             check_drawing(drawing, sink, min_wall, deadline)
     except OutOfBudget as ex:
         report_out_of_budget(sink, ex)
         return None
     return drawing
+
+
+def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
+    """W0109 for a hole declared in an assembly (a part of its own, so it cuts nothing; issue
+    61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
+    (the most overlap, one whose name the hole's names first) and carrying the fix that
+    cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly."""
+    from .diagnostics import Fix, Span
+    holes = [p for p in drawing.parts if p.kind == "hole"]
+    if not holes:
+        return
+    solids = [p for p in drawing.parts if p.kind == "solid"]
+    for hp in holes:
+        h = drawing.part_of.get(hp.name)
+        if h is None or h.parent is None or h.parent.kind != "assembly" or h.span is None:
+            continue
+        home = h.parent
+        best, best_key = None, None
+        for sp in solids:
+            t = drawing.part_of.get(sp.name)
+            if t is None or not t.is_within(home):
+                continue
+            try:
+                area = (hp.shape ^ sp.shape).area()
+            except Exception:           # a degenerate shape: no overlap to speak of
+                continue
+            if area <= 1e-9:
+                continue
+            key = (t.name.split("[")[0] in h.name, area)
+            if best_key is None or key > best_key:
+                best, best_key = t, key
+        msg = (f"hole `{h.path}` is declared in assembly `{home.path}`, so it cuts nothing: a "
+               "hole cuts only the solid it is declared in")
+        fix = None
+        if best is not None:
+            rel = best.path[len(home.path) + 1:]
+            call = f"CutInto({h.name}, {rel})"
+            hint = (f"it lies over `{best.path}`: `{call}` in `{home.path}` cuts it there "
+                    "(the fix); a part of a template instance is cut only this way")
+            sp_ = h.span
+            if not in_stdlib(sp_.file) and "[" not in call:
+                at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
+                fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+            msg += f"; it lies over `{best.path}`"
+        else:
+            hint = (f"declare it inside the solid it should cut, or write `CutInto({h.name}, "
+                    f"PART)` in `{home.path}` to cut a solid part of it (a part of a template "
+                    "instance: `box.lid`)")
+        sink.add(Diagnostic("W0109", msg, h.span, "warning", hint=hint, fix=fix))
 
 
 def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:
@@ -383,8 +433,8 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     grouped = _report_groups(sink, reds)
     for red in reds:
         c = red.constraint
-        if id(c) in grouped:
-            continue
+        if id(c) in grouped or _in_template(c):
+            continue            # reported with its group; or a template's own (issue 61)
         by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
         labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
@@ -426,6 +476,9 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
         if id(t) not in sl.constrained or id(t) in sl.bounded:
             continue            # placed by its coordinates alone, as AIDL allows, or free
             #                     only within the room an inequality leaves: not warned
+        if t.span is not None and in_stdlib(t.span.file):
+            continue            # a structure inside a standard-library template: the
+            #                     template's own affair, not its user's (issue 61)
         part = t.parent
         while part is not None and part.parent is not None and part.parent.kind != "assembly":
             part = part.parent
@@ -470,26 +523,53 @@ def _report_groups(sink: DiagnosticSink, reds: list) -> set:
     for members in groups.values():
         if len(members) < 2:
             continue
-        members.sort(key=pos)
-        keep, drop = members[0], members[1:]
         done.update(id(c) for c in members)
+        # a standard-library template's own constraints are kept and never blamed: its user
+        # cannot edit them (issue 61: `CenterInside(h, body)` beside the joint's `Fixed(self)`)
+        members.sort(key=lambda c: (not _in_template(c), pos(c)))
+        if _in_template(members[-1]):
+            continue                        # all the template's: its own affair
+        keep, drop = members[0], [c for c in members[1:] if not _in_template(c)]
+        if _in_template(keep):
+            drop = drop[-1:]    # beside a template's own: the last one written goes, which
+            #                     always follows from the others
         names = ", ".join(f"`{c.describe()}`" for c in members[:-1]) + \
             f" and `{members[-1].describe()}`"
         others = [b for b in full[id(keep)].by if id(b) not in done]
         also = (" (with " + ", ".join(f"`{b.describe()}`" for b in others[:3]) + ")"
                 if others else "")
-        lines = ", ".join(f"`{c.describe()}` (line {c.span.line})" if c.span is not None
-                          else f"`{c.describe()}`" for c in drop)
-        labels = [Label(c.span, "says the same" if c is not keep else "keep this one",
+        lines = ", ".join(f"`{c.describe()}` ({_line_of(c)})" for c in drop)
+        held = [c for c in members if _in_template(c)]
+        labels = [Label(c.span, "the template holds it here" if _in_template(c) else
+                        "says the same" if c is not keep else "keep this one",
                         primary=False) for c in members if c is not drop[0] and c.span]
+        if held:
+            hint = (f"drop {lines}: the template holds it already ("
+                    + ", ".join(f"`{c.describe()}`, {_line_of(c)}" for c in held[:2])
+                    + "); place a template that holds itself by its arguments (`cx=`, `cy=`, "
+                      "`rotation=`)")
+        else:
+            hint = (f"keep `{keep.describe()}` ({_line_of(keep)}) and drop {lines}: the model "
+                    "stays exactly as constrained")
         sink.add(Diagnostic(
             "W0401", f"{names} say the same thing: each follows from the "
                      f"{'other' if len(members) == 2 else 'others'}{also}, so "
                      f"{len(drop)} of the {len(members)} can go", drop[0].span, "warning",
-            hint=f"keep `{keep.describe()}` (line {keep.span.line if keep.span else '?'}) and "
-                 f"drop {lines}: the model stays exactly as constrained",
-            labels=labels))
+            hint=hint, labels=labels))
     return done
+
+
+def _in_template(c) -> bool:
+    """True for a constraint written in a standard-library template (its user cannot edit it)."""
+    return c.span is not None and in_stdlib(c.span.file)
+
+
+def _line_of(c) -> str:
+    """``line 12`` (the program's), ``std/joints.aidl line 136`` (a template's), ``no line``."""
+    if c.span is None:
+        return "no line"
+    return f"{shown_path(c.span.file)} line {c.span.line}" if in_stdlib(c.span.file) else \
+        f"line {c.span.line}"
 
 
 def _where(c) -> str:

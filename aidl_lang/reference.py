@@ -336,6 +336,12 @@ def _template_topic(t: StdTemplate) -> Topic:
                   + ", ".join(t.members)]
     lines += ["", "Use it by assignment inside a structure: `NAME = "
               f"{t.name}(...)` (an instance of kind {t.node.kind}; place it with constraints)."]
+    if t.node.kind == "assembly":
+        part = "lid" if "lid" in t.members else (t.members[0] if t.members else "PART")
+        lines += ["", _wrap("Cut into one of its parts (a hole in a panel): declare `hole h { "
+                            "... }` beside the instance, place it with constraints (`CenterInside"
+                            f"(h, NAME.{part})`) and write `CutInto(h, NAME.{part})` there; a hole "
+                            "left in the assembly cuts nothing (W0109).", "")]
     return Topic(t.name, f"{t.node.kind} template, std/{t.module}.aidl", t.summary,
                  "\n".join(lines), _template_example(t))
 
@@ -349,9 +355,40 @@ _TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
                   "mounting_plate": "width=80 mm, height=50 mm, screw=3"}
 
 
+# the joints hold themselves where (cx, cy) and `rotation` put them, on a panel's edge: their
+# examples place them so, never by constraints (which would repeat the template's `Fixed(self)`)
+_TEMPLATE_EXAMPLES = {
+    # the boxes: a hole of the user's own cut into the lid (CutInto; issue 61)
+    "finger_box": ("thickness 3 mm\n\nassembly kit {\n"
+                   "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
+                   "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
+                   "    CenterInside(lid_hole, box.lid)\n"
+                   "    CutInto(lid_hole, box.lid)    # a 20 mm hole in the middle of the lid\n}\n"),
+    "lid_box": ("thickness 3 mm\n\nassembly kit {\n"
+                "    box = lid_box(length=100 mm, width=70 mm, height=40 mm)\n"
+                "    hole knob { c = Circle(center=(0, 0), diameter=6) }\n"
+                "    CenterInside(knob, box.lid)\n"
+                "    CutInto(knob, box.lid)    # a hole for a knob's screw in the lid\n}\n"),
+    "cross_halving": ("solid panel {\n    body = Rectangle(center=(0, 0), width=120, height=60)\n"
+                      "    # from the middle of the top edge (y = 30), 30 mm down into the panel\n"
+                      "    h = cross_halving(depth=30 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "finger_edge": ("solid panel {\n    body = Rectangle(center=(0, 0), width=100, height=60)\n"
+                    "    # the top edge (y = 30) cut into fingers; the panel lies below it\n"
+                    "    f = finger_edge(length=100 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "tab_and_slot": ("solid panel {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                     "    # two tabs and a captive-nut T-slot on the top edge (y = 20)\n"
+                     "    t = tab_and_slot(part=\"tab\", length=60 mm, cx=0 mm, cy=20 mm)\n}\n"),
+    "dovetail": ("solid panel {\n    body = Rectangle(center=(0, -10), width=60, height=40)\n"
+                 "    # tails over the band y = 0 .. 10 at the top of the panel\n"
+                 "    d = dovetail(part=\"tail\", length=60 mm, depth=10 mm, cx=0 mm, cy=0 mm)\n}\n"),
+}
+
+
 def _template_example(t: StdTemplate) -> str:
     call = f"{t.name}({_TEMPLATE_ARGS.get(t.name, '')})"
     imp = f'import "std/{t.module}.aidl"\n\n'
+    if t.name in _TEMPLATE_EXAMPLES:
+        return imp + _TEMPLATE_EXAMPLES[t.name]
     if t.node.kind == "hole":
         return (imp + "solid plate {\n    body = Rectangle(center=(0, 0), width=120, "
                 f"height=120)\n    h = {call}\n    Fixed(body)\n    CenterInside(h, body)\n}}\n")
@@ -553,7 +590,8 @@ the nearest one wins). `aidl render` offsets every cut by half the kerf so parts
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
 Only the cutting formats (SVG, DXF, PDF, PNG, G-code, LightBurn `.lbrn2`, HPGL `.plt`) are
 offset: STL, 3MF and STEP keep the designed size.
-`aidl render --kerf 0.2mm` overrides it. A positive length known before solving.
+`aidl render --kerf 0.2mm` overrides it. A positive length known before solving. A
+statement, with no `=`: `kerf = 0.2 mm` is an ordinary constant (warning W0108).
 """, ["kerf_width", "laser kerf", "cut width"]),
     "lbrn2": ("statement", "`aidl render FILE -o x.lbrn2`: a LightBurn project, a layer per "
               "operation.", """
@@ -576,7 +614,9 @@ within 0.025 mm of the design.
 children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP; default
 3 mm), the thickness of `aidl parts` and the depth a router's G-code cuts to (see
 `machine`). No other effect on 2D outputs. `aidl render --thickness` overrides it. A
-positive length known before solving.
+positive length known before solving. A statement, with no `=`: `thickness = 4 mm` is an
+ordinary constant (warning W0108, whose fix writes the statement); `param t = 4 mm` then
+`thickness t` gives it a slider.
 """, ["material thickness", "extrude", "extrusion", "depth"]),
     "machine": ("statement", "`aidl render FILE -o x.gcode --machine m.toml`: G-code (GRBL) "
                 "for a laser, router or plotter.", """
@@ -901,15 +941,20 @@ EXAMPLES: dict[str, str] = {
     "Coincident": _solid("a = Rectangle(center=(0, 0), width=20, height=10)\n"
                          "b = Rectangle(center=(25, 5), width=10, height=10)\n"
                          "Fixed(a)\nCoincident(b.bottom_left, a.bottom_right)", "step"),
-    "Horizontal": _PLATE2.format(line="Horizontal(left.c.center, right.c.center)"),
-    "Vertical": _PLATE2.format(line="Vertical(left.c.center, body.center)"),
+    "Horizontal": _PLATE2.format(line="Fixed(left)\n    Horizontal(left.c.center, right.c.center)    "
+                                 "# right moves to y = 0\n    Distance(left.c.center, right.c.center, 30)"),
+    "Vertical": _PLATE2.format(line="Fixed(right)\n    Vertical(left.c.center, right.c.center)    "
+                               "# left moves to x = 15\n    Distance(left.c.center, right.c.center, 10)"),
     "Fixed": _PLATE2.format(line="Fixed(left)    # holds a point, shape or structure"),
-    "Distance": _PLATE2.format(line="Distance(left.c.center, right.c.center, 36)"),
+    "Distance": _PLATE2.format(line="Fixed(left)\n    Distance(left.c.center, right.c.center, 36)\n"
+                               "    Horizontal(left.c.center, right.c.center)"),
     "HorizontalDistance": _PLATE2.format(
-        line="HorizontalDistance(left.c.center, right.c.center, 30)"),
+        line="Fixed(left)\n    HorizontalDistance(left.c.center, right.c.center, 30)\n"
+             "    VerticalDistance(left.c.center, right.c.center, 5)"),
     "VerticalDistance": _PLATE2.format(
-        line="VerticalDistance(left.c.center, right.c.center, 0)"),
-    "At": _PLATE2.format(line="At(right.c.center, left.c.center, dx=30, dy=0)"),
+        line="Fixed(left)\n    VerticalDistance(left.c.center, right.c.center, 5)    # "
+             "right 5 mm higher\n    HorizontalDistance(left.c.center, right.c.center, 30)"),
+    "At": _PLATE2.format(line="Fixed(left)\n    At(right.c.center, left.c.center, dx=30, dy=0)"),
     "Length": _QUAD.format(line="Length(a, 50)"),
     "Radius": _solid("a = Arc(center=(0, 0), start=(20, 0), end=(0, 20))\n"
                      "l1 = Line(start=a.center, end=a.start)\nl2 = Line(start=a.end, "
@@ -925,12 +970,16 @@ EXAMPLES: dict[str, str] = {
                       "Fixed(c)\nTangent(r.bottom, c)    # r's bottom edge touches the circle's "
                       "bottom\nAlignCenterX(r, c)", "cam"),
     "Symmetric": _PLATE2.format(line="axis = Line((0, -15), (0, 15), construction=true)\n"
-                                "    Symmetric(left.c.center, right.c.center, axis)"),
+                                "    Fixed(left)\n    Symmetric(left.c.center, right.c.center, "
+                                "axis)    # right moves to (15, 0)"),
     "Midpoint": _HOLES.format(line="Midpoint(h.c.center, body.bottom)    # a notch"),
-    "OnLine": _HOLES.format(line="OnLine(h.c.center, axis)"),
+    "OnLine": _HOLES.format(line="OnLine(h.c.center, axis)    # h moves to x = 0\n"
+                           "    h.c.center.y == -10"),
     "OnCircle": _HOLES.format(line="pitch = Circle(center=(0, 0), radius=12, "
-                              "construction=true)\n    OnCircle(h.c.center, pitch)"),
-    "Collinear": _PLATE2.format(line="Collinear(left.c.center, right.c.center, body.center)"),
+                              "construction=true)\n    OnCircle(h.c.center, pitch)\n"
+                              "    h.c.center.y == -10"),
+    "Collinear": _PLATE2.format(line="Fixed(left)\n    Collinear(left.c.center, right.c.center, "
+                                "body.center)\n    HorizontalDistance(left.c.center, right.c.center, 30)"),
     "Concentric": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
                          "hole bore { c = Circle(center=(3, 2), diameter=20) }\n"
                          "Concentric(bore.c, disc)", "flange"),
@@ -938,15 +987,18 @@ EXAMPLES: dict[str, str] = {
     # structural relations
     "Above": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
     "Below": _SIGN.format(line="Below(post, board)\n    AlignCenterX(board, post)"),
-    "LeftOf": _SIGN.format(line="LeftOf(board, post, gap=-5)   # overlapping by 5 mm"),
-    "RightOf": _SIGN.format(line="RightOf(board, post, gap=-5)"),
+    "LeftOf": _SIGN.format(line="LeftOf(board, post, gap=-5)   # overlapping by 5 mm\n"
+                           "    AlignTop(board, post)"),
+    "RightOf": _SIGN.format(line="RightOf(board, post, gap=-5)\n    AlignTop(board, post)"),
     "Gap": "assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=20, height=20) }\n"
            "    solid b { r = Rectangle(center=(30, 0), width=20, height=20) }\n"
            "    Fixed(a)\n    Gap(a, b, 5)    # 5 mm of space along x\n    AlignCenterY(a, b)\n}\n",
     "Inside": _HOLES.format(line="Inside(h, body, margin=5)"),
     "CenterInside": _HOLES.format(line="CenterInside(h, body)"),
-    "Taller": _SIGN.format(line="Above(board, post)\n    Taller(post, board)"),
-    "Wider": _SIGN.format(line="Above(board, post)\n    Wider(board, post)"),
+    "Taller": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)\n    "
+                           "Taller(post, board)"),
+    "Wider": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)\n    "
+                          "Wider(board, post)"),
     "AlignCenterX": _SIGN.format(line="Above(board, post)\n    AlignCenterX(board, post)"),
     "AlignCenterY": _SIGN.format(line="RightOf(board, post, gap=-3)\n    "
                                  "AlignCenterY(board, post)"),
@@ -964,6 +1016,11 @@ EXAMPLES: dict[str, str] = {
              "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"
              "    Place(wall, rotation=(90 deg, 0, 0), position=(0, 20, 3))\n}\n",
     "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
+    "CutInto": "import \"std/joints.aidl\"\n\nthickness 3 mm\n\nassembly kit {\n"
+               "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
+               "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
+               "    CenterInside(lid_hole, box.lid)\n"
+               "    CutInto(lid_hole, box.lid)    # the lid comes out with the hole\n}\n",
     "LinearPattern": _HOLES.format(line="row = LinearPattern(h, 5, (10, 0))"),
     "CircularPattern": _solid("disc = Circle(center=(0, 0), diameter=60)\n"
                               "hole bolt { c = Circle(center=(20, 0), diameter=5) }\n"

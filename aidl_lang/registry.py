@@ -81,6 +81,11 @@ CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not 
 FLEXIBLE = Arg("flexible", "bool", False, "points given by literal coordinates are starting "
                "guesses only (the shape may bend), not a rigid shape", kw_only=True)
 
+MIRROR = Arg("mirror", "any", None, "\"y\" (x -> -x), \"x\" (y -> -y) or a Line: the points "
+             "are one half, followed by their mirror images in reverse order, exactly as "
+             "`mirror(points, about)` (a point on the axis at either end is not repeated)",
+             kw_only=True)
+
 POINT_MEMBERS = {"x": "coordinate", "y": "coordinate"}
 LINE_MEMBERS = {"start": "point", "end": "point", "midpoint": "point", "length": "length",
                 "dx": "length", "dy": "length", "angle": "angle", "bb": "bbox"}
@@ -93,10 +98,11 @@ RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point
                 "bottom_right": "point", "center": "point", "top": "line", "bottom": "line",
                 "left": "line", "right": "line", "width": "length", "height": "length",
                 "bb": "bbox"}
-POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "bb": "bbox"}
+POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centroid": "point",
+                "bb": "bbox"}
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
-               "bb": "bbox"}
+               "centroid": "point", "bb": "bbox"}
 TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
     "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
@@ -185,11 +191,12 @@ _DEFS = {
                    A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
-                      "output; Offset, Hull and Fillet corners on it are refused.",
+                      "output; Offset, Shell, Hull and Fillet corners on it are refused.",
                   members=ELLIPSE_MEMBERS),
-    "Polygon": _p([A("points", "points"), FLEXIBLE],
+    "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
-                      "its shape) unless flexible=true; other points are starting guesses.",
+                      "its shape) unless flexible=true; other points are starting guesses; "
+                      "mirror=\"y\": the points are the left or right half.",
                   members=POLY_MEMBERS),
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
@@ -206,8 +213,8 @@ _DEFS = {
                         "file puts it (at= moves it); inner loops are holes; cut=, engrave=, "
                         "ignore= (layers or colours), roles=\"laser\", close_tolerance=.",
                     members=DRAWING_MEMBERS),
-    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
-                   doc="Open chain of lines.",
+    "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE, MIRROR],
+                   doc="Open chain of lines (mirror=\"y\": written by one half).",
                    members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
                   A("corners", "any", None, "indices of points where the curve turns "
@@ -279,12 +286,14 @@ _DEFS = {
                   "point goes (default: the arc's middle, a circle's top)", kw_only=True),
                 A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
                   "toward the center (text under a circle, readable)", kw_only=True)],
-               doc="Single-stroke text in a drawing; size is the cap height; anchor: start, "
+               doc="Single-stroke text in a drawing (one built-in font, no `font=`); size is "
+                   "the cap height; anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
-                     doc="Two points are the same point (a point and a line/circle: on it)."),
+                     doc="Two points are the same point (a point and a line, circle, arc or "
+                         "ellipse: on it)."),
     "Horizontal": _c([A("a", "geometry"), A("b", "point", None)],
                      doc="A line, or the two points a and b, are horizontal."),
     "Vertical": _c([A("a", "geometry"), A("b", "point", None)],
@@ -369,7 +378,9 @@ _DEFS = {
     # ------------------------------------------------------------ operations
     "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
                    doc="A copy of geometry or a structure mirrored about a line; it follows the "
-                       "original. `Mirror(a, b, about)` is the Symmetric constraint."),
+                       "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
+                       "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
+                       "constraint."),
     "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
                         cat="operation",
                         doc="count instances in all, each moved by step (a vector) from the last; "
@@ -390,7 +401,13 @@ _DEFS = {
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "length", 0.0)],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of Rectangle rect (inset inward), "
-                            "or on each point of at."),
+                            "or on each point of at: the original goes to the bottom-left "
+                            "corner (at[0]), copies to the others; what is Fixed stays put "
+                            "(fix the plate, not the original, or the plate moves to it)."),
+    "CutInto": _c([A("hole", "boxed"), A("part", "boxed")], cat="operation",
+                  doc="A hole declared in an assembly cuts a solid of it, e.g. a part of a "
+                      "template instance (`CutInto(lid_hole, box.lid)`: a hole in "
+                      "finger_box's lid); written where both are, place the hole as usual."),
     "Rigid": _c([A("a", "any"), A("b", "any", None, "and every further argument, as a list")],
                 cat="operation", varargs=True,
                 doc="any number of shapes, structures (drawings too) or lists of them keep "
@@ -711,6 +728,24 @@ def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
                     break
         out.setdefault(k, k)
     return out
+
+
+# argument names a model guesses for something the language does not have: the E0105 hint
+# says so instead of a did-you-mean on the spelling (`font` is not `on`); issue 61
+ARG_NOTES: dict[tuple[str, str], str] = {
+    ("Text", n): "text is engraved in the one built-in single-stroke font (Hershey \"futural\", "
+                 "a line font for lasers and plotters); there is no font choice: leave "
+                 f"`{n}=` out"
+    for n in ("font", "font_family", "family", "typeface", "fontname", "font_name", "face",
+              "weight", "bold", "italic", "style")}
+
+
+def near_args(name: str, names: list[str]) -> list[str]:
+    """Accepted argument names near ``name`` in spelling, for did-you-mean: none shorter than
+    3 letters unless ``name`` is that short too (`font` is not `on`, though difflib says
+    0.67)."""
+    from .diagnostics import did_you_mean
+    return [c for c in did_you_mean(name, names) if len(c) >= 3 or len(name) <= 3]
 
 
 def accepted_args(entry: Entry) -> list[str]:

@@ -15,11 +15,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from .diagnostics import STDLIB
 from .limits import MAX_SOURCE_BYTES
-
-STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
-if not STDLIB.exists():
-    STDLIB = Path(__file__).resolve().parent / "stdlib"
 
 MAX_IMPORT_BYTES = MAX_SOURCE_BYTES     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written

@@ -15,9 +15,10 @@ from __future__ import annotations
 
 
 from . import ast as A
-from .diagnostics import DiagnosticSink, did_you_mean
-from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args, choose_variant,
-                       UNITS_ANGLE, UNITS_LENGTH, lookup, template_param)
+from .diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
+from .registry import (ARG_NOTES, CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
+                       choose_variant, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
+                       template_param)
 from .sources import ImportRefused
 
 
@@ -44,7 +45,9 @@ HALLUCINATIONS = {
     "Merge": _BOOL,
     "Difference": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
     "Subtract": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
-    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child",
+    "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child "
+           "(into a part of a template instance: declare the hole beside it and write "
+           "`CutInto(NAME, box.lid)`)",
     "Intersection": "there is no intersection boolean: " + _BOOL,
     "Intersect": "there is no intersection boolean: " + _BOOL,
     "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",
@@ -134,6 +137,7 @@ class Checker:
         self.imported: dict[str, A.Def] = {}    # templates imported without `as`, by name
         self.bound: set = set()        # (name, arguments, keyword names) of registry calls that bind
         self.assign: A.Assign | None = None     # the assignment being checked
+        self.template_calls: list = []  # (call, its template's Def): W0108's template arguments
 
     # ------------------------------------------------------------------ scopes
     def block_names(self, stmts) -> set:
@@ -198,6 +202,62 @@ class Checker:
                 tscope = _Scope(fscope, names | self.block_names(st.body.stmts) | {st.name})
                 self.stmts(st.body.stmts, tscope)
         self.stmts(top, _Scope(fscope, set(struct_names) | {"model"}))
+        self.unread_settings(program)
+
+    def unread_settings(self, program: A.Program) -> None:
+        """W0108 for a top-level name that nothing reads and that means a setting: `thickness
+        = 4 mm` or `kerf = 0.2 mm` (an ordinary constant: the parts stay 3 mm thick, the cuts
+        uncompensated; the fix is the statement `thickness 4 mm`), or a name a template call
+        of the program leaves at its default (`module = 2 mm` beside `spur_gear(teeth=20)`:
+        the fix passes it, `module=module`).  Issue 61."""
+        reads = {n.id for n in A.walk(program) if type(n) is A.Name}
+        src = program.source or ""
+
+        def text(node) -> str:
+            return src[node.span.start:node.span.end]
+        for st in program.stmts:
+            if not isinstance(st, (A.Assign, A.ParamDecl)) or isinstance(st, A.KindAssign) \
+                    or st.name in reads or st.span is None or st.span.file != self.path:
+                continue
+            n, is_param = st.name, isinstance(st, A.ParamDecl)
+            if n in ("thickness", "kerf"):
+                what = ("the material's thickness (3D outputs, the parts list, the fit check; "
+                        "3 mm when not set)" if n == "thickness" else
+                        "the laser's cut width (cuts offset by half of it; none when not set)")
+                if is_param:
+                    new = f"{text(st)}\n{n} {n}"
+                    said = f"`param {n}` is an ordinary value that nothing reads"
+                    how = f"add the statement `{n} {n}` below it (the slider then sets it)"
+                else:
+                    new = f"{n} {text(st.value)}"
+                    said = f"`{n} = ...` makes an ordinary constant that nothing reads"
+                    how = f"write the statement without `=`: `{new}`"
+                self.sink.add(Diagnostic(
+                    "W0108", f"{said}: {what} is set by the statement `{n} VALUE`",
+                    st.span, "warning", hint=how, fix=Fix(st.span, new)))
+                continue
+            for call, d in self.template_calls:
+                params = [p.name for p in d.params]
+                given = set(params[:len(call.args)]) | {template_param(k.name, params) or k.name
+                                                       for k in call.kwargs}
+                if n not in params or n in given or call.span is None \
+                        or call.span.file != self.path:
+                    continue
+                body = text(call).rstrip()
+                if not body.endswith(")"):
+                    continue
+                inner = body[:-1].rstrip()
+                sep = "" if inner.endswith("(") else ", "
+                new = f"{inner}{sep}{n}={n})"
+                self.sink.add(Diagnostic(
+                    "W0108", f"`{n}` is set at the top but nothing reads it, and `{d.name}(...)` "
+                             f"on line {call.span.line} leaves its argument `{n}` at the default",
+                    st.span, "warning",
+                    hint=f"pass it: `{d.name}(..., {n}={n})`; a top-level name reaches a "
+                         "template only as an argument",
+                    labels=[Label(call.span, f"`{n}` not given here", primary=False)],
+                    fix=Fix(call.span, new)))
+                break
 
     def stmts(self, stmts, scope: _Scope) -> None:
         for st in stmts:
@@ -299,8 +359,11 @@ class Checker:
             return
         n = f.id
         if n in self.templates:
+            self.template_calls.append((e, self.templates[n]))
             self.template_call(e, self.templates[n])
             return
+        if n in self.imported and scope.has(n):
+            self.template_calls.append((e, self.imported[n]))
         if scope.has(n):
             return            # a user value (imported template, alias...): checked when run
         if n in FUNCTIONS:
@@ -353,9 +416,11 @@ class Checker:
             return
         if bad is not None:
             from .reference import entry_units_hint
-            sugg = did_you_mean(bad.name, all_names)
+            note = ARG_NOTES.get((entry.name, bad.name))
+            sugg = [] if note else near_args(bad.name, all_names)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
-                            hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + "forms: "
+                            hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
+                            + (f"{note}; " if note else "") + "forms: "
                             + "; ".join(entry.signature(v) for v in entry.variants)
                             + f"; accepted names: {', '.join(all_names)}; units: "
                             + entry_units_hint(entry),

@@ -146,11 +146,13 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
 # distances module * (z1 + z2) / 2, in a plate 5 mm larger than the gears'
 # tips, each gear bored for its axle (`axle` diameter). Flat, the plate is at
 # (cx, cy) and the gears in mesh above it; assembled, the plate lies on z = 0
-# and each gear on it on its axle (the plate's holes are axle_hole[i]).
-# Members: `plate`, `gear[i]` (spur_gear instances), `x` (the axles' x offsets
-# from the first).
+# and each gear on it on its axle (the plate's holes are axle_hole[i]);
+# `lift` raises the gears that much more above the plate (a demonstrator's
+# gears 10 mm up on their axles: lift=10 mm). Members: `plate`, `gear[i]`
+# (spur_gear instances), `x` (the axles' x offsets from the first).
 def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
-               thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+               thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {
+    assert lift >= 0 mm, "lift is a height above the plate: 0 or more"
     margin = 5 mm
     gap = 5 mm
     n = len(teeth)
@@ -185,7 +187,7 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
         gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash,
                          phase=half * 180 deg / z[k], cx=left + x[k], cy=above)
         gear.hub.center == (left + x[k], above)
-        Place(gear, position=(-cx, -above, thickness))
+        Place(gear, position=(-cx, -above, thickness + lift))
     }
     Place(plate, position=(-cx, -cy, 0 mm))
 }
@@ -197,11 +199,13 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 # `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
 # over the rack's middle tooth. `backlash` thins the rack's teeth and the
 # pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
-# above it; assembled, both lie on the plate. Members: `rack`, `pinion`
+# above it; assembled, both lie on the plate (`lift` higher: a gap under
+# them, for spacers). Members: `rack`, `pinion`
 # (a spur_gear), `base`, `pitch` (the rack's pitch).
 def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm,
-                    backlash=0.05 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+                    backlash=0.05 mm, thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     gap = 5 mm
+    assert lift >= 0 mm, "lift is a height above the base: 0 or more"
     assert rack_teeth >= 2 and rack_teeth == round(rack_teeth), "a rack has a whole number of teeth, at least 2"
     pitch = pi * module
     length = rack_teeth * pitch
@@ -248,8 +252,8 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
     # lower edge less `gap`
     shift = cy - base_h / 2 + gap + height + 1.25 * module - line
     Place(base, position=(-cx, -cy, 0 mm))
-    Place(rack, position=(-cx, shift - cy, thickness))
-    Place(pinion, position=(-cx, shift - cy, thickness))
+    Place(rack, position=(-cx, shift - cy, thickness + lift))
+    Place(pinion, position=(-cx, shift - cy, thickness + lift))
 }
 
 # A planetary gear set: sun, planets and ring gear, on a carrier.
@@ -259,13 +263,16 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
 # spaces). It assembles only if ring = sun + 2 planet and (ring + sun) divides
 # by planets (an assertion says which rule fails and the count to use). The
 # carrier, a disc with the sun's and the planets' axle holes (`axle`), is laid
-# beside the set flat and under it assembled. The ring's cut-out is its hole
+# beside the set flat and under it assembled (`lift` lower: a gap between
+# the carrier and the set). The ring's cut-out is its hole
 # cut (cut.teeth, a spur_gear with the backlash negative, and cut.tips).
 # Members: `sun_gear`, `planet_gear[i]` (spur_gear instances), `ring_gear`,
 # `carrier`, `center_distance`.
 def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
-              backlash=0.05 mm, rim=6 mm, thickness=3 mm, cx=0 mm, cy=0 mm) -> assembly {
+              backlash=0.05 mm, rim=6 mm, thickness=3 mm, lift=0 mm, cx=0 mm,
+              cy=0 mm) -> assembly {
     gap = 5 mm
+    assert lift >= 0 mm, "lift is the gap between the carrier and the set: 0 or more"
     assert planets >= 2 and planets == round(planets), "a planetary set has at least 2 planets"
     # the ring rule: the right side is the ring count to use
     assert ring == sun + 2 * planet, "ring = sun + 2 * planet: give ring the right side's count"
@@ -322,5 +329,5 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
                                    cy + center_distance * sin(k * 360 deg / planets))
         }
     }
-    Place(carrier, position=(cx - ox, 0 mm, -thickness))
+    Place(carrier, position=(cx - ox, 0 mm, -thickness - lift))
 }

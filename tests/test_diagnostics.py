@@ -982,3 +982,27 @@ def test_E0132_empty_or_unknown_layer(tmp_path):
     c = _drawing_compile(tmp_path, 'd = Drawing2D("d.dxf", layer="F.SilkS")')
     d = the_error(c, "E0132")
     assert "nothing to import" in d.message
+
+
+def test_W0108_a_setting_written_as_a_constant(tmp_path, capsys):
+    """`kerf = 0.2 mm` that nothing reads: a warning whose --json fix is the statement
+    (issue 61; tests/test_issue61.py applies the fixes and measures the parts)."""
+    f = tmp_path / "k.aidl"
+    f.write_text("kerf = 0.2 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n")
+    rc, doc = _cli_json(capsys, "check", str(f), "--json")
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0108"]
+    assert rc == 0 and w["severity"] == "warning" and w["span"]["line"] == 1
+    assert w["fix"]["replacement"] == "kerf 0.2 mm"
+
+
+def test_W0109_a_hole_in_an_assembly_cuts_nothing(tmp_path, capsys):
+    """A hole beside two parts of an assembly: named, with the part it lies over and a fix
+    that cuts it there (issue 61; tests/test_issue61.py applies it to a finger_box's lid)."""
+    f = tmp_path / "h.aidl"
+    f.write_text("assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n"
+                 "    solid b { r = Rectangle(center=(60, 0), width=40, height=20) }\n"
+                 "    hole b_hole { c = Circle(center=(60, 0), radius=3) }\n}\n")
+    rc, doc = _cli_json(capsys, "check", str(f), "--json")
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0109"]
+    assert rc == 0 and "`kit.b`" in w["message"] and w["span"]["line"] == 4
+    assert w["fix"]["replacement"] == "CutInto(b_hole, b)\n    "

@@ -84,7 +84,10 @@ def test_a_conflict_through_pinned_teeth_is_named_at_the_users_line():
     (e,) = [d for d in r.diagnostics if d.is_error]
     assert e.code == "E0401" and e.span.file == str(GEAR_PLATE)
     assert src.splitlines()[e.span.line - 1].strip() == "plate.body.center.y == 0"
-    assert "`Below(plate, pair, gap=10)`" in e.hint and "Fixed(hub.center)" in e.hint
+    # through the teeth ring's axis on its hub (issue 61: that row now reads the ring's own
+    # frame, so the set runs on to the pair's placement and the user's `Fixed`)
+    assert "`Below(plate, pair, gap=10)`" in e.hint and "Fixed(pair.gear1.hub.center)" in e.hint
+    assert "Coincident(teeth_ring.axis, hub.center)" in e.hint
     assert wall < 5.0, wall
 
 

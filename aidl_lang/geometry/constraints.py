@@ -21,11 +21,15 @@ class ConstraintError(Exception):
     pass
 
 
-def _pt(v, name: str) -> PV:
+def _pt(v, name: str, ctx=None) -> PV:
+    """``v`` as a point value: a point value as it is, a ``Point`` shape's point seen from the
+    constraint's structure (``ctx.struct``, the frame every other point of its equations is
+    seen from; a ``Point`` seen from the model frame beside a point in a structure's own frame
+    tied the wrong unknowns: issue 61, `spur_gear`'s `Coincident(teeth_ring.axis, hub.center)`)."""
     if isinstance(v, PV):
         return v
     if isinstance(v, GeomRef) and v.geom.kind == "Point":
-        return member(v.geom, "p", None)
+        return member(v.geom, "p", ctx.struct if ctx is not None else None)
     raise ConstraintError(f"`{name}` must be a point, got {type_name(v)}")
 
 
@@ -94,7 +98,7 @@ def _sign_nearest(ctx, e: Expr, target: float) -> float:
 def coincident(ctx, a, b, **_):
     ka, kb = _kind(a), _kind(b)
     if ka == "point" and kb == "point":
-        p, q = _pt(a, "a"), _pt(b, "b")
+        p, q = _pt(a, "a", ctx), _pt(b, "b", ctx)
         return [Equation(p.x - q.x), Equation(p.y - q.y)]
     if ka == "point" and kb == "line":
         return on_line(ctx, a, b)
@@ -104,11 +108,16 @@ def coincident(ctx, a, b, **_):
         return on_circle(ctx, a, b)
     if kb == "point" and ka == "circular":
         return on_circle(ctx, b, a)
+    if ka == "point" and kb in ("Ellipse", "EllipticArc"):
+        return on_ellipse(ctx, a, b)
+    if kb == "point" and ka in ("Ellipse", "EllipticArc"):
+        return on_ellipse(ctx, b, a)
     if ka == kb == "line":
         (s1, e1), (s2, e2) = _line(ctx, a, "a"), _line(ctx, b, "b")
         return [Equation(s1.x - s2.x), Equation(s1.y - s2.y),
                 Equation(e1.x - e2.x), Equation(e1.y - e2.y)]
-    raise ConstraintError(f"Coincident takes two points (or a point and a line/circle), "
+    raise ConstraintError(f"Coincident takes two points (or a point and a line, circle, arc "
+                          f"or ellipse), "
                           f"got {type_name(a)} and {type_name(b)}")
 
 
@@ -124,7 +133,7 @@ def _hv(ctx, a, b, axis: str, name: str):
     if b is None:
         s, e = _line(ctx, a, "a")
     else:
-        s, e = _pt(a, "a"), _pt(b, "b")
+        s, e = _pt(a, "a", ctx), _pt(b, "b", ctx)
     return [Equation(s.y - e.y if axis == "h" else s.x - e.x)]
 
 
@@ -161,18 +170,18 @@ def distance(ctx, a, b, distance, **_):
     d = distance.expr
     ka, kb = _kind(a), _kind(b)
     if ka == "point" and kb == "point":
-        p, q = _pt(a, "a"), _pt(b, "b")
+        p, q = _pt(a, "a", ctx), _pt(b, "b", ctx)
         return [Equation(hypot(p.x - q.x, p.y - q.y) - d)]
     if ka == "line" and kb == "point":
         a, b, ka, kb = b, a, kb, ka
     if ka == "point" and kb == "line":
-        p = _pt(a, "a")
+        p = _pt(a, "a", ctx)
         s, e = _directed_line(ctx, b, "b")
         sd = _cross(e.x - s.x, e.y - s.y, p.x - s.x, p.y - s.y) / hypot(e.x - s.x, e.y - s.y)
         sign = _sign_nearest(ctx, sd, _val(ctx, d))
         return [Equation(sd - d * sign)]
     if ka == "point" and kb == "circular":
-        p = _pt(a, "a")
+        p = _pt(a, "a", ctx)
         c, r = _circ(ctx, b, "b")
         return [Equation(hypot(p.x - c.x, p.y - c.y) - r - d)]
     if ka == "line" and kb == "line":
@@ -187,16 +196,16 @@ def distance(ctx, a, b, distance, **_):
 
 
 def horizontal_distance(ctx, a, b, distance, **_):
-    return [Equation(_pt(b, "b").x - _pt(a, "a").x - distance.expr)]
+    return [Equation(_pt(b, "b", ctx).x - _pt(a, "a", ctx).x - distance.expr)]
 
 
 def vertical_distance(ctx, a, b, distance, **_):
-    return [Equation(_pt(b, "b").y - _pt(a, "a").y - distance.expr)]
+    return [Equation(_pt(b, "b", ctx).y - _pt(a, "a", ctx).y - distance.expr)]
 
 
 def at(ctx, a, b, dx, dy, **_):
     """``a == b + (dx, dy)``: two linear equations (points in the writing structure's frame)."""
-    pa, pb = _pt(a, "a"), _pt(b, "b")
+    pa, pb = _pt(a, "a", ctx), _pt(b, "b", ctx)
     return [Equation(pa.x - pb.x - dx.expr), Equation(pa.y - pb.y - dy.expr)]
 
 
@@ -332,7 +341,7 @@ def symmetric(ctx, a, b, about, **_):
     s, e = _directed_line(ctx, about, "about")
     ka, kb = _kind(a), _kind(b)
     if ka == kb == "point":
-        return _sym_points(s, e, _pt(a, "a"), _pt(b, "b"))
+        return _sym_points(s, e, _pt(a, "a", ctx), _pt(b, "b", ctx))
     if ka == kb == "circular":
         c1, r1 = _circ(ctx, a, "a")
         c2, r2 = _circ(ctx, b, "b")
@@ -345,27 +354,66 @@ def symmetric(ctx, a, b, about, **_):
 
 
 def midpoint(ctx, point, line, **_):
-    p = _pt(point, "point")
+    p = _pt(point, "point", ctx)
     s, e = _line(ctx, line, "line")
     return [Equation(p.x - (s.x + e.x) * 0.5), Equation(p.y - (s.y + e.y) * 0.5)]
 
 
 def on_line(ctx, point, line, **_):
-    p = _pt(point, "point")
+    p = _pt(point, "point", ctx)
     s, e = _directed_line(ctx, line, "line")
     return [Equation(_cross(e.x - s.x, e.y - s.y, p.x - s.x, p.y - s.y) / hypot(e.x - s.x, e.y - s.y))]
 
 
 def on_circle(ctx, point, circle, **_):
-    p = _pt(point, "point")
+    p = _pt(point, "point", ctx)
     c, r = _circ(ctx, circle, "circle")
     return [Equation(hypot(p.x - c.x, p.y - c.y) - r)]
+
+
+def on_ellipse(ctx, point, ellipse, **_):
+    """``point`` on the ellipse (or elliptic arc's whole ellipse) ``ellipse``, exactly: with
+    ``(u, v)`` the point's offset from the center along the two semi-axes (``u`` along
+    ``rx``), the residual ``rx (hypot(u / rx, v / ry) - 1)`` is zero exactly on the ellipse
+    ``(u / rx)^2 + (v / ry)^2 = 1`` and, for ``rx == ry``, the circle's ``|p - c| - r``; a
+    length, with the Jacobian of its expression (exact).  The axes are the held rotation's
+    (a mirrored copy's: its mirror line's as solved, ``2 phi - r``; an elliptic arc's: its
+    ``vertex`` and ``co_vertex`` points)."""
+    p = _pt(point, "point", ctx)
+    g = ellipse.geom
+    S = ctx.struct
+    c = member(g, "center", S)
+    dx, dy = p.x - c.x, p.y - c.y
+    if g.kind == "EllipticArc":
+        rx, ry = g.data["dims"]["rx"], g.data["dims"]["ry"]
+        V, W = member(g, "vertex", S), member(g, "co_vertex", S)
+        u = (dx * (V.x - c.x) + dy * (V.y - c.y)) * (1.0 / (rx * rx))
+        v = (dx * (W.x - c.x) + dy * (W.y - c.y)) * (1.0 / (ry * ry))
+        return [Equation((hypot(u, v) - 1.0) * rx)]
+    rx = member(g, "rx", S).expr
+    ry = member(g, "ry", S).expr
+    m = g.data.get("mirror")
+    if m is None:
+        r = g.data.get("rotation", 0.0)
+        cs, sn = math.cos(r), math.sin(r)
+        u = dx * cs + dy * sn
+        v = dy * cs - dx * sn
+    else:       # rotation 2 phi - r0, phi the mirror line's direction as solved
+        a, b, r0 = m
+        lx, ly = b.x - a.x, b.y - a.y
+        L2 = lx * lx + ly * ly
+        c2, s2 = (lx * lx - ly * ly) / L2, (lx * ly * 2.0) / L2
+        cs = c2 * math.cos(r0) + s2 * math.sin(r0)
+        sn = s2 * math.cos(r0) - c2 * math.sin(r0)
+        u = dx * cs + dy * sn
+        v = dy * cs - dx * sn
+    return [Equation((hypot(u / rx, v / ry) - 1.0) * rx)]
 
 
 def collinear(ctx, a, b, c=None, **_):
     ka, kb = _kind(a), _kind(b)
     if c is not None:
-        p, q, r = _pt(a, "a"), _pt(b, "b"), _pt(c, "c")
+        p, q, r = _pt(a, "a", ctx), _pt(b, "b", ctx), _pt(c, "c", ctx)
         # distance of b from the line through a and c
         # distance of b from the line through a and c (scaled by the starting |c - a|)
         n = max(_val(ctx, hypot(r.x - p.x, r.y - p.y)), 1e-9)

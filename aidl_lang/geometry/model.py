@@ -77,6 +77,10 @@ class Structure:
     # the first copy of a pattern whose list starts with its original (`holes[1]` of
     # `holes = LinearPattern(bolt, ...)`): that original, which is also `holes[0]`
     pattern_original: "Structure | None" = None
+    # `CutInto(hole, part)`: a hole declared in an assembly cuts the solid `part` (of a
+    # template instance, typically) instead of being a part of its own; `cut_by` on the solid
+    cuts_into: "Structure | None" = None
+    cut_by: list = field(default_factory=list)
 
     @property
     def path(self) -> str:

@@ -374,14 +374,14 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         return _allow_overlap([args["a"], args["b"]])
     if kind == "Rigid":
         return _rigid(ctx, _flat([args[k] for k in "ab" if args.get(k) is not None]))
+    if kind == "Mirrored" and isinstance(args["target"], list):
+        # a list of structures or shapes: a list of their mirror images, in order (`NAME[i]`
+        # the image of item i), each beside its original as a single Mirrored puts it
+        items = [_target(ctx, t, kind) for t in args["target"]]
+        return [_mirror(ctx, S, t, args["about"], name, i, True) for i, t in enumerate(items)]
     target = _target(ctx, args["target"], kind)
     if kind == "Mirrored":
-        from .primitives import member
-        line = args["about"].geom
-        a, b = member(line, "start", S), member(line, "end", S)
-        ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
-        xf, rot, flip = _reflect(a, b)
-        return _copy(ctx, target, xf, rot, flip, name, 0, "mirror", ang, line=(a, b))
+        return _mirror(ctx, S, target, args["about"], name, 0, False)
     if kind == "GridPattern":
         return _grid(ctx, target, args, name)
     if kind == "CornerPattern":
@@ -415,6 +415,18 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if hide:
         _as_construction(target)
     return out
+
+
+def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
+    """The mirror image of ``target`` about the line ``about`` (its copy ``name``, or
+    ``name[k]`` for the k-th item of a mirrored list)."""
+    from .primitives import member
+    line = about.geom
+    a, b = member(line, "start", S), member(line, "end", S)
+    ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
+    xf, rot, flip = _reflect(a, b)
+    return _copy(ctx, target, xf, rot, flip, name, k, "mirror", ang, indexed=indexed,
+                 line=(a, b))
 
 
 def _allow_overlap(items: list) -> None:

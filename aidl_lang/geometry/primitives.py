@@ -1234,6 +1234,8 @@ def member(g: Geometry, name: str, frame):
             sx = sum((p.x for p in pvs[1:]), pvs[0].x) * (1.0 / n)
             sy = sum((p.y for p in pvs[1:]), pvs[0].y) * (1.0 / n)
             return PV(sx, sy, None, own)
+        if name == "centroid":
+            return _centroid([_pv(p, frame) for p in pts], own)
     if k == "Polyline" and name == "edges":
         return [GeomRef(e) for e in g.data["edges"]]
     if k in ("Spline", "Polyline", "Bezier"):
@@ -1260,6 +1262,26 @@ def member(g: Geometry, name: str, frame):
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
         return PV(p.x + (x0 + x1) / 2, p.y + (y0 + y1) / 2, None, own)
     return None
+
+
+def _centroid(pvs: list, own) -> PV:
+    """The area centroid of the closed polygon through ``pvs`` (point values), exactly: the
+    shoelace sums relative to the first vertex, ``c = p0 + sum((q_i + q_i+1) x_i) / (6 A)``
+    with ``x_i = q_i x q_i+1`` and ``A = sum(x_i) / 2`` (``q_i = p_i - p0``); for a triangle
+    the mean of its vertices.  Expressions of the vertices, so it follows a solved shape."""
+    if len(pvs) == 3:
+        a, b, c = pvs
+        return PV((a.x + b.x + c.x) * (1.0 / 3.0), (a.y + b.y + c.y) * (1.0 / 3.0), None, own)
+    p0 = pvs[0]
+    q = [(p.x - p0.x, p.y - p0.y) for p in pvs[1:]]
+    area2 = sx = sy = None
+    for (x1, y1), (x2, y2) in zip(q, q[1:]):
+        cr = x1 * y2 - x2 * y1
+        area2 = cr if area2 is None else area2 + cr
+        tx, ty = (x1 + x2) * cr, (y1 + y2) * cr
+        sx = tx if sx is None else sx + tx
+        sy = ty if sy is None else sy + ty
+    return PV(p0.x + sx / (area2 * 3.0), p0.y + sy / (area2 * 3.0), None, own)
 
 
 def member_names(g: Geometry) -> list[str]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import EvalError, did_you_mean
+from ..diagnostics import EvalError, did_you_mean, shown_path
 from ..geometry.constraints import BUILDERS, ConstraintError
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.model import Constraint, Equation, Point, Scalar
@@ -84,7 +84,7 @@ class Calls:
                                 node.span, hint=f"write `part = {callee.node.name}(...)`")
             return self._instantiate(callee, node, name)
         if not isinstance(callee, Builtin):
-            raise EvalError("E0111", f"a {type_name(callee)} cannot be called", node.func.span)
+            raise EvalError("E0111", f"{_a(type_name(callee))} cannot be called", node.func.span)
         nm = callee.name
         if nm in FUNCTIONS:
             return self.finite(self._function(nm, node), node.span)
@@ -98,10 +98,13 @@ class Calls:
             bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
                 from ..reference import entry_units_hint
+                from ..registry import ARG_NOTES, near_args
+                note = ARG_NOTES.get((entry.name, bad_kw.name))
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
-                                hint=f"{entry.signature()}\naccepted names: {', '.join(ok)}"
+                                hint=(f"{note}\n" if note else "") +
+                                     f"{entry.signature()}\naccepted names: {', '.join(ok)}"
                                      f"\nunits: {entry_units_hint(entry)}",
-                                suggestions=did_you_mean(bad_kw.name, ok))
+                                suggestions=[] if note else near_args(bad_kw.name, ok))
             code = "E0106" if reason and reason.startswith("missing") else "E0104"
             raise EvalError(code, f"`{nm}` {reason}", span, hint=entry.signature())
         bound = {}
@@ -133,12 +136,18 @@ class Calls:
         for k, v in conv.items():
             self._check_magnitudes(v, spans.get(k, node.span), k)
         if entry.category == "primitive":
+            if conv.get("mirror") is not None and "points" in conv:
+                # Polygon(half, mirror="y"): the half, then its mirror images (issue 61)
+                conv["points"] = self._mirror(conv["points"], conv["mirror"], node)
+            conv.pop("mirror", None)
             return self._primitive(cname, conv, node, spans)
         if entry.category == "placement":
             return self._place(conv, node, spans)
         if entry.category == "operation":
             from ..geometry.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
+            if cname == "CutInto":
+                return self._cut_into(conv, node, spans)
             try:
                 return apply(self, cname, conv, name)
             except OperationError as ex:
@@ -152,6 +161,40 @@ class Calls:
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         self._add_constraint(cname, eqs, node.span, None, owners)
+        return None
+
+    def _cut_into(self, conv, node, spans):
+        """``CutInto(hole, part)`` (issue 61): the hole ``hole``, declared in an assembly,
+        cuts the solid ``part`` instead of being a part of its own.  Both are in the
+        subtree of the structure the statement is written in (validity rule 2, checked by
+        the caller); nothing moves in the structure tree, so every constraint keeps its
+        frames: the booleans subtract the hole from the part (output/booleans.py)."""
+        h, part = conv["hole"], conv["part"]
+        hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
+        if not isinstance(h, StructRef) or h.struct.kind != "hole":
+            raise EvalError("E0108", f"`CutInto` cuts with a hole structure, got "
+                            f"{_a(type_name(h))}", hspan,
+                            hint="declare `hole NAME { ... }` beside the part's instance and "
+                                 "write `CutInto(NAME, box.lid)`")
+        if not isinstance(part, StructRef) or part.struct.kind != "solid":
+            raise EvalError("E0108", f"`CutInto` cuts into a solid, got {_a(type_name(part))}",
+                            pspan, hint="name a solid part, e.g. `box.lid` of "
+                                        "`box = finger_box(...)` (`aidl docs finger_box` "
+                                        "lists its parts)")
+        hs, ps = h.struct, part.struct
+        if hs.parent is None or hs.parent.kind != "assembly":
+            where = hs.parent.path if hs.parent is not None else hs.path
+            raise EvalError("E0108", f"`{hs.path}` already cuts `{where}`, the solid it is "
+                            "declared in: `CutInto` is for a hole declared in an assembly",
+                            hspan, hint="declare the hole in the assembly that holds the "
+                                        "part's instance, beside it")
+        if ps.is_within(hs):
+            raise EvalError("E0108", f"`{ps.path}` is inside the hole `{hs.path}`", pspan)
+        if hs.cuts_into is not None:
+            raise EvalError("E0108", f"`{hs.path}` already cuts `{hs.cuts_into.path}`", node.span,
+                            hint="a hole cuts one solid: declare another hole for the other")
+        hs.cuts_into = ps
+        ps.cut_by.append(hs)
         return None
 
     def _place(self, conv, node, spans):
@@ -179,9 +222,19 @@ class Calls:
                                  "turn a shape within its part, draw it turned")
         prev = getattr(target, "placement", None)
         if prev is not None:
-            line = f", on line {prev[2].line}" if prev[2] is not None else ""
+            sp = prev[2]
+            line = (f", on line {sp.line}" if sp is None or sp.file == node.span.file else
+                    f", in {shown_path(sp.file)} line {sp.line}") if sp is not None else ""
+            hint = "a part has one placement: keep one `Place`"
+            tmpl = next((a.template for a in target.ancestors()
+                         if a.template and sp is not None and sp.file != node.span.file), None)
+            if tmpl:
+                lift = ("; `lift=` raises what stands on the base" if tmpl in
+                        ("gear_train", "rack_and_pinion", "planetary") else "")
+                hint = (f"`{tmpl}` places its parts itself: its arguments say where (`aidl docs "
+                        f"{tmpl}`{lift})")
             raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
-                            hint="a part has one placement: keep one `Place`")
+                            hint=hint)
         pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
         rot = self._triple(conv.get("rotation"), "rotation", ANG, spans.get("rotation"), node)
         target.placement = (pos, rot, node.span)
@@ -519,6 +572,15 @@ class Calls:
         if typ == "boxed":
             if isinstance(v, (GeomRef, StructRef, BBoxRef)):
                 return v
+            if isinstance(v, (list, tuple)) and v and canonical(fname) == "Mirrored":
+                # Mirrored(legs, axis): each item mirrored, a list back (issue 61)
+                bad = next((x for x in v if not isinstance(x, (GeomRef, StructRef))), None)
+                if bad is None:
+                    return list(v)
+                raise EvalError("E0108", f"`Mirrored` of a list mirrors structures and shapes, "
+                                f"but the list holds {_a(type_name(bad))}", span,
+                                hint="mirror a list of structures or shapes (`Mirrored(legs, "
+                                     "axis)`), or each item by itself")
             raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a structure or "
                             f"geometry, got {type_name(v)}", span,
                             hint="name a structure (`self`, `lid`) or a shape (`lid.body`)")

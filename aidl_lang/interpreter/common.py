@@ -137,7 +137,7 @@ def show(v, unit_scale: float = 1.0, depth: int = 0) -> str:
     if isinstance(v, Q):
         c = v.const()
         if c is None:
-            return f"a {type_name(v)} known after solving"
+            return f"{_a(type_name(v))} known after solving"
         if v.dim == LEN:
             c /= unit_scale
         elif v.dim == ANG:

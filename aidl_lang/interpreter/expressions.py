@@ -14,7 +14,7 @@ from ..geometry.primitives import member as geom_member, member_names
 from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
-from .common import (DEG, POISON, Scope, _Silent, _fmt_num, show)
+from .common import (DEG, POISON, Scope, _Silent, _a, _fmt_num, show)
 
 
 _HANDLERS: dict = {}      # (interpreter class, AST node class) -> the _e_<Node> function
@@ -164,10 +164,15 @@ class Expressions:
 
     def _e_Member(self, e: A.Member):
         obj = self.eval(e.obj)
-        return self.member(obj, e.name, e.name_span, e.obj.span)
+        v = self.member(obj, e.name, e.name_span, e.obj.span)
+        if v is POISON:             # `label.t` whose definition failed: reported once there,
+            raise _Silent()         # never again as "no member" (issue 61)
+        return v
 
     def member(self, obj, name: str, span, obj_span=None):
         S = self.struct
+        if obj is POISON:
+            raise _Silent()
         if isinstance(obj, Namespace):
             if name in obj.scope.vars:
                 return obj.scope.vars[name]
@@ -233,7 +238,7 @@ class Expressions:
         if isinstance(obj, (tuple, list)) and len(obj) == 2 and name in ("x", "y") and all(isinstance(c, Q) for c in obj):
             p = self._to_point(obj, span)
             return Q(p.x if name == "x" else p.y, LEN, p.owners)
-        raise EvalError("E0102", f"a {type_name(obj)} has no member `{name}`", span)
+        raise EvalError("E0102", f"{_a(type_name(obj))} has no member `{name}`", span)
 
     def _e_Index(self, e: A.Index):
         obj = self.eval(e.obj)
@@ -243,9 +248,14 @@ class Expressions:
             if type(x) is Lin and not x.terms:
                 i = x.const
                 if -len(obj) <= i < len(obj) and i == int(i):
-                    return obj[int(i)]
+                    v = obj[int(i)]
+                    if v is POISON:
+                        raise _Silent()
+                    return v
+        if obj is POISON or idx is POISON:
+            raise _Silent()
         if not isinstance(obj, (list, tuple, str)):
-            raise EvalError("E0111", f"a {type_name(obj)} cannot be indexed", e.obj.span,
+            raise EvalError("E0111", f"{_a(type_name(obj))} cannot be indexed", e.obj.span,
                             hint="only lists (loops, comprehensions, `poly.points`) are indexed")
         i = self._q(idx, e.index.span).const()
         if i is None or abs(i - round(i)) > 1e-9:
@@ -255,6 +265,8 @@ class Expressions:
         if not -n <= i < n:
             raise EvalError("E0110", f"index {i} is out of range: the list has {n} item{'s' if n != 1 else ''}",
                             e.index.span, hint=f"valid indices are 0 to {n - 1}" if n else "the list is empty")
+        if obj[i] is POISON:
+            raise _Silent()
         return obj[i]
 
     def _e_TupleLit(self, e):

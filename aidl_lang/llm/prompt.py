@@ -80,6 +80,7 @@ structures as one body.
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
 the parts list) and `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
+are statements without `=` (`thickness = 3 mm` is a mere constant) that
 stand at the top or inside a structure (for it and its children); `-o x.gcode`: G-code
 (`aidl docs machine`).
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation

@@ -733,6 +733,9 @@ class Renderer:
                 holes.append((c, self.shape(c, out)))
             else:
                 faces.append(self.shape(c, out))
+        if s.kind == "solid":
+            for c in s.cut_by:              # `CutInto(c, s)`: a hole of an assembly cuts s
+                holes.append((c, self.shape(c, out)))
         self.current = s
         acc = self.union(faces, s)
         if holes:
@@ -763,8 +766,11 @@ class Renderer:
         del out.strokes[mark[0]:], out.lines[mark[1]:]
 
     def children(self, s: Structure, out: Drawing) -> None:
-        """The children of a drawing or an assembly: each drawn, or a separate part."""
+        """The children of a drawing or an assembly: each drawn, or a separate part (a hole
+        that ``CutInto`` gives to a solid is drawn with it: :meth:`shape`)."""
         for c in s.children.values():
+            if c.cuts_into is not None:
+                continue
             if c.kind == "drawing":
                 self.drawing(c, out)
             elif c.kind == "assembly":

@@ -160,7 +160,8 @@ def _spline_fix(output: Output, e: OffsetError) -> str:
     kind = "Ellipse" if src is not None and src.kind == "Ellipse" else "Spline"
     if src is not None and src.span is not None:
         sp = src.span
-        at = f" (the {kind} `{src.label}` at {sp.file}:{sp.line}:{sp.col})"
+        from ..diagnostics import shown_path
+        at = f" (the {kind} `{src.label}` at {shown_path(sp.file)}:{sp.line}:{sp.col})"
     redraw = "an Ellipse with rx and ry grown" if kind == "Ellipse" else \
         "the spline through points moved out"
     return (f"{at}; set the kerf of this part to 0 (`kerf 0 mm` in its structure) and let the "

@@ -19,7 +19,7 @@ import os
 import re
 from pathlib import Path
 
-from ...diagnostics import Span
+from ...diagnostics import Span, shown_path
 
 _SEVERITY = {"error": 1, "warning": 2, "note": 3}
 
@@ -86,7 +86,7 @@ def diagnostic_json(src: str, path: str, d, uri: str | None = None,
         msg += f"\nhint: {d.hint}"
     if d.span is None or d.span.file != path:
         if d.span is not None:
-            msg = f"{d.span.file}:{d.span.line}:{d.span.col}: {msg}"
+            msg = f"{shown_path(d.span.file)}:{d.span.line}:{d.span.col}: {msg}"
         r = rng(pos(0, 0), pos(0, 1))
     else:
         r = span_range(src, d.span, lines)

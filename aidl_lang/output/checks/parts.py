@@ -182,17 +182,55 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                 share = _area(shp ^ _union([d.shapes[h] for h in cut])) / a
                 how = ("all of it" if share >= 0.9995 else
                        f"{share:.0%} of it, and the rest lies inside the rest of `{s.path}`")
+                cover = _covering_shape(items, i, a) if share < 0.5 else None
+                also, ring = "", ""
+                if cover is not None:       # mostly hidden by one filled shape (issue 61)
+                    also = f" (the filled shape {cover[0]} covers it whole)"
+                    ring = (f"; if {cover[0]} is meant as a rim or an outline, draw a ring "
+                            f"(`Shell({cover[0].strip('`').rsplit('.', 1)[-1]}, 3)`) or make "
+                            "it `construction=true`")
                 sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
-                             f"`{cut[0].path}` of the same structure cuts away {how}", span,
+                             f"`{cut[0].path}` of the same structure cuts away {how}{also}",
+                             span,
                              hint=f"a hole cuts every solid of the structure it is declared in, "
                                   f"children included; to keep this solid over the hole, "
                                   f"declare it beside `{s.name}` (a sibling structure's "
-                                  f"material survives the hole), else delete it")
+                                  f"material survives the hole), else delete it{ring}")
+                continue
+            cover = _covering_shape(items, i, a)
+            if cover is not None:           # one filled shape of s hides it (issue 61)
+                cname, hidden = cover
+                names = list(dict.fromkeys(hidden))
+                more = (f", and {len(hidden)} other shape{'s' if len(hidden) > 1 else ''} "
+                        f"of `{s.path}` ({', '.join(names[:3])}{', ...' if len(names) > 3 else ''})"
+                        if hidden else "")
+                short = cname.strip("`").rsplit(".", 1)[-1]
+                sink.warning("W0506", f"{name} adds nothing to `{s.path}`: the filled shape "
+                             f"{cname} covers it whole{more}", span,
+                             hint=f"{cname} is filled: if it is meant as a rim or an outline, "
+                                  f"draw a ring (`Shell({short}, 3)`, or a `hole` "
+                                  f"inside it) or make it `construction=true`; else move {name} "
+                                  "where it shows")
                 continue
             sink.warning("W0506", f"{name} adds nothing to `{s.path}`: it lies wholly inside "
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+def _covering_shape(items, i: int, a: float):
+    """(name, names of the other shapes it hides too) of one own shape of the structure
+    (not a solid child) that covers item ``i`` (area ``a``) whole by itself, or None."""
+    shp = items[i][2]
+    for j, (cname, _, cshp) in enumerate(items):
+        if j == i or cname.startswith("solid "):
+            continue
+        if _area(shp - cshp) <= max(1e-9, 1e-4 * a):
+            hidden = [n for k, (n, _, o) in enumerate(items)
+                      if k not in (i, j) and not n.startswith("solid ") and n != cname
+                      and _area(o - cshp) <= max(1e-9, 1e-4 * _area(o))]
+            return cname, hidden
+    return None
 
 
 # --------------------------------------------------------------------------- steps (W0520)

@@ -25,14 +25,14 @@ syntax keyword aidlCadPrimitive Wire ZigZag convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
 syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
-syntax keyword aidlCadConstraint CornerPattern Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius
-syntax keyword aidlCadConstraint Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance HorizontallyCentered
-syntax keyword aidlCadConstraint Inside IntendedOverlap Join LeftOf Length LinearPattern Lock Midpoint
-syntax keyword aidlCadConstraint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine OnTopOf
-syntax keyword aidlCadConstraint Orthogonal Over OverlapOK Parallel Perpendicular Place PlaceAt PointOnLine
-syntax keyword aidlCadConstraint Radius RectangularPattern RightOf Rigid RigidGroup Same Symmetric Taller
-syntax keyword aidlCadConstraint Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance VerticallyCentered
-syntax keyword aidlCadConstraint Wider Within
+syntax keyword aidlCadConstraint CornerPattern CutInto Diameter Distance DistanceX DistanceY Equal EqualLength
+syntax keyword aidlCadConstraint EqualRadius Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance
+syntax keyword aidlCadConstraint HorizontallyCentered Inside IntendedOverlap Join LeftOf Length LinearPattern Lock
+syntax keyword aidlCadConstraint Midpoint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine
+syntax keyword aidlCadConstraint OnTopOf Orthogonal Over OverlapOK Parallel Perpendicular Place PlaceAt
+syntax keyword aidlCadConstraint PointOnLine Radius RectangularPattern RightOf Rigid RigidGroup Same Symmetric
+syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
+syntax keyword aidlCadConstraint VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min mirror norm radians
