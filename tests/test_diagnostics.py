@@ -986,7 +986,7 @@ def test_E0132_empty_or_unknown_layer(tmp_path):
 
 def test_W0108_a_setting_written_as_a_constant(tmp_path, capsys):
     """`kerf = 0.2 mm` that nothing reads: a warning whose --json fix is the statement
-    (issue 61; tests/test_issue61.py applies the fixes and measures the parts)."""
+    (issue 61; tests/test_model_requests.py applies the fixes and measures the parts)."""
     f = tmp_path / "k.aidl"
     f.write_text("kerf = 0.2 mm\nsolid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n")
     rc, doc = _cli_json(capsys, "check", str(f), "--json")
@@ -997,7 +997,7 @@ def test_W0108_a_setting_written_as_a_constant(tmp_path, capsys):
 
 def test_W0109_a_hole_in_an_assembly_cuts_nothing(tmp_path, capsys):
     """A hole beside two parts of an assembly: named, with the part it lies over and a fix
-    that cuts it there (issue 61; tests/test_issue61.py applies it to a finger_box's lid)."""
+    that cuts it there (issue 61; tests/test_model_requests.py applies it to a finger_box's lid)."""
     f = tmp_path / "h.aidl"
     f.write_text("assembly kit {\n    solid a { r = Rectangle(center=(0, 0), width=40, height=20) }\n"
                  "    solid b { r = Rectangle(center=(60, 0), width=40, height=20) }\n"
