@@ -913,7 +913,8 @@ EXAMPLES: dict[str, str] = {
                         "construction=true)\nbody = Offset(board.outlines[0], 3)   # the "
                         "outline + 3 mm\nfor c in board.circles {\n    hole h { p = Circle("
                         "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}", "lid"),
-    "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
+    "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)\n"
+                             "# or by its edge: RegularPolygon(center=(0, 0), side=7.5, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
                    "hole slot { s = Slot(center=(0, 0), length=30, width=6) }", "plate"),

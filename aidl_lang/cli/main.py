@@ -24,6 +24,7 @@ import time
 from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
+from ..solver import solve_text
 
 
 _COLUMNS: int | None = None
@@ -404,6 +405,7 @@ def cmd_check(args) -> int:
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
+                          "settled": res.solve.n_settled,
                           "max_residual": res.solve.max_residual}
         from ..solver.diagnose import degrees_of_freedom, freedom_text
         if args.dof and res.ok:
@@ -436,8 +438,7 @@ def cmd_check(args) -> int:
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
-        print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
-              f"{s.n_equations} equations, solved in {s.iterations} Newton steps; "
+        print(f"{args.file}: ok ({len(res.model.structures)} structures, {solve_text(s)}; "
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)

@@ -34,7 +34,8 @@ and text, not filled), `assembly NAME { ... }` (separate parts). Inside a struct
 (`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
-live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE`,
+live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE` (a
+param may be computed from params above it, `param h = w / 2`, and follows `--set w=60`),
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
@@ -47,7 +48,10 @@ number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan
 radians: write `cos(i * 10 deg)`).
 
 Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
-starting guesses that the solver moves to satisfy the constraints. Relate parts with
+starting guesses that the solver moves to satisfy the constraints; what no constraint pulls
+on stays exactly where it is written (no `Fixed` just in case). A point at a radius and angle
+from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
+also fit its mirror image). Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates
 (`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
 may only use names defined above it; constraint statements may name geometry defined later.
