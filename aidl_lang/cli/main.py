@@ -175,8 +175,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
-                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    r.add_argument("--min-wall", type=float, default=None, metavar="MM",
+                   help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
     _budget_arg(r)
     r.add_argument("--follow-symlinks", action="store_true",
                    help="write through an output that is a symbolic link (default: refuse it)")
@@ -188,8 +189,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("file", nargs="?")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
-                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    c.add_argument("--min-wall", type=float, default=None, metavar="MM",
+                   help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
