@@ -200,3 +200,50 @@ def test_the_prompt_answers_what_models_asked():
     assert "stays exactly where it is written" in text
     assert "RegularPolygon(center, side, sides" in text
     assert "(dx, dy)" in text
+
+
+# ------------------------------------------------------------------ the description
+NOTCHED = """units mm
+thickness 4 mm
+kerf 0.2 mm
+assembly kit {
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        hole a { c = Circle(center=(-15, 15), radius=4) }
+        hole b { c = Circle(center=(10, 5), radius=3) }
+        hole slot { r = Rectangle(center=(30, -5), width=10, height=6) }
+        Fixed(body)
+        Fixed(a)
+        Fixed(b)
+        Fixed(slot)
+    }
+    solid spacer {
+        thickness 6 mm
+        c = Circle(center=(100, 0), radius=8)
+    }
+}
+"""
+
+
+def test_the_description_states_thickness_kerf_and_the_notches_holes_cut():
+    c = aidl_compile(NOTCHED)
+    assert c.ok, _codes(c)
+    parts = {p["name"]: p for p in c.description["parts"]}
+    plate, spacer = parts["kit.plate"], parts["kit.spacer"]
+    assert (plate["thickness"], plate["thickness_set"], plate["kerf"]) == (4.0, True, 0.2)
+    assert spacer["thickness"] == 6.0
+    assert [o["kind"] for o in plate["openings"]] == ["circle"]       # b only
+    got = {n["hole"]: (n["edge"], n["width"], n["depth"], n["center"]) for n in plate["notches"]}
+    assert got == {"kit.plate.a": ("top", 8.0, 4.0, [-15.0, 13.0]),
+                   "kit.plate.slot": ("right", 6.0, 5.0, [27.5, -5.0])}
+    text = c.describe()
+    assert "material: 4 mm thick, kerf 0.2 mm" in text
+    assert "material: 6 mm thick" in text
+    assert "notch in the top edge: 8 wide, 4 deep, at (-15, 13), cut by hole `kit.plate.a`" in text
+
+
+def test_the_description_says_when_the_thickness_is_only_the_default():
+    c = aidl_compile("solid p { body = Rectangle(center=(0, 0), width=10, height=5) }")
+    (p,) = c.description["parts"]
+    assert (p["thickness"], p["thickness_set"], p["kerf"], p["notches"]) == (3.0, False, None, [])
+    assert "3 mm thick (no `thickness` stated: the default), no kerf" in c.describe()

@@ -100,7 +100,8 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
 turn (valid; pin what matters with constraints).
-`aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).
+`aidl check --describe` prints the final part in words (sizes, thickness, kerf, openings,
+notches a hole cuts into the outline, texts, symmetries).
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant: fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
