@@ -449,7 +449,7 @@ class Result:
 
 def compile(source: str | None = None, path: str | os.PathLike | None = None,
             overrides: Mapping[str, str | float] | None = None,
-            budget: float | Budget | None = None, min_wall: float = 0.5) -> Result:
+            budget: float | Budget | None = None, min_wall: float | None = None) -> Result:
     """Compile an AIDL program: parse, check, interpret, solve, booleans and the shape checks.
 
     Give ``source`` (the program text; ``path`` then only names it in diagnostics and is where
@@ -457,7 +457,8 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
     ``overrides``: param values as ``aidl render --set`` takes them (``{"width": "40 mm"}``,
     numbers are in the file's units).  ``budget``: a factor of the default evaluation budget
     (``aidl --budget K``) or a :class:`~aidl_lang.limits.Budget`.  ``min_wall``: the W0507 wall
-    thickness in mm (0: off).
+    thickness in mm (0: off), overriding the program's ``min_wall`` statements (None: theirs,
+    else 0.5 mm).
 
     Never raises for a mistake in the program or an unreadable file (``E0004``): those are
     diagnostics and ``ok`` is False.  Raises :class:`TypeError` when neither ``source`` nor

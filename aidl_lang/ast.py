@@ -239,6 +239,14 @@ class KerfDecl(ThicknessDecl):
     __slots__ = ()
 
 
+class MinWallDecl(ThicknessDecl):
+    """``min_wall 0.3 mm``: the thinnest wall (and narrowest slit) the final-part checks accept
+    (W0507, W0519, W0520) for the file's parts (top level) or one structure and its children;
+    ``min_wall 0`` turns those checks off (a part not cut by a laser or router).  The command
+    line's ``--min-wall`` overrides it.  Handled wherever a :class:`ThicknessDecl` is."""
+    __slots__ = ()
+
+
 class Import(Node):
     """``import "path.aidl" as alias``."""
     __slots__ = ("path", "path_span", "alias")

@@ -405,8 +405,10 @@ hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or
 `construction=true`.
 """),
     "W0507": ("wall thinner than the minimum", """
-Some material of the final part is narrower than the minimum wall (0.5 mm by default, set with
-`aidl check --min-wall MM` or `aidl render --min-wall MM`; 0 turns it off): a laser or router
+Some material of the final part is narrower than the minimum wall (0.5 mm by default; the
+program's `min_wall LENGTH` statement sets it for the file or a structure, `aidl docs
+min_wall`, and `aidl check --min-wall MM` or `aidl render --min-wall MM` overrides both; 0 turns it
+off): a laser or router
 burns through or breaks such a wall. Between two holes, or a hole and the outline, the width
 is the measured least distance between their boundaries (to 0.01 mm); other thin walls are
 found by an opening of the part and their width is estimated. The warning names the holes and

@@ -54,7 +54,7 @@ TOKEN_NAMES = {
 _STATEMENT_START = frozenset(("_NL", "SEMICOLON", "LBRACE", "RBRACE"))
 _THICKNESS_NEXT = frozenset(("NUMBER", "NAME", "ADD_OP"))
 # the words that start a `WORD LENGTH` statement (retyped by the post-lexer) and their terminals
-_DECL_WORDS = {"thickness": "THICKNESS", "kerf": "KERF"}
+_DECL_WORDS = {"thickness": "THICKNESS", "kerf": "KERF", "min_wall": "MIN_WALL"}
 _BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
 _OPEN = frozenset(("LPAR", "LSQB"))
 _CLOSE = frozenset(("RPAR", "RSQB"))
@@ -69,7 +69,7 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
 
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
-      ``kerf`` likewise (KERF, the ``kerf 0.15 mm`` statement);
+      ``kerf`` and ``min_wall`` likewise (KERF, MIN_WALL: ``kerf 0.15 mm``, ``min_wall 0.3 mm``);
     - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
     - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
       ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
@@ -1627,6 +1627,9 @@ class _Builder:
 
     def kerf_decl(self, meta, items):
         return A.KerfDecl(meta, items[1])
+
+    def min_wall_decl(self, meta, items):
+        return A.MinWallDecl(meta, items[1])
 
     def import_decl(self, meta, items):
         tok, alias = items[0], items[1]

@@ -21,7 +21,7 @@ from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
-from .output.checks import MIN_WALL, check_drawing, check_topology, topology
+from .output.checks import check_drawing, check_topology, topology
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -44,7 +44,7 @@ class Compiled:
 
 
 def compile_source(source: str, path: str, overrides: dict[str, str] | None = None,
-                   do_solve: bool = True, min_wall: float = MIN_WALL,
+                   do_solve: bool = True, min_wall: float | None = None,
                    budget: Budget = DEFAULT_BUDGET) -> Compiled:
     """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics).
 
@@ -110,7 +110,7 @@ DEFAULTS_KEPT = 8     # sources whose defaults' topology a process keeps (serve,
 _defaults: dict = {}  # (path, source, min_wall, budget) -> (imported files' texts, topology)
 
 
-def defaults_topology(source: str, path: str, min_wall: float = MIN_WALL,
+def defaults_topology(source: str, path: str, min_wall: float | None = None,
                       budget: Budget = DEFAULT_BUDGET) -> dict | None:
     """The :func:`~aidl_lang.output.checks.topology` of ``source`` compiled with its own
     defaults (what W0510 compares a ``--set`` compile with), or None when that compile
@@ -221,7 +221,7 @@ _deep_lock = threading.Lock()
 _deep_state = threading.local()
 
 
-def _compile(sink, source, path, overrides, do_solve, min_wall=MIN_WALL,
+def _compile(sink, source, path, overrides, do_solve, min_wall=None,
              budget: Budget = DEFAULT_BUDGET, shape_checks: bool = True) -> Compiled:
     deadline = time.monotonic() + budget.seconds
     program = parse(source, path, sink)
@@ -262,7 +262,7 @@ def _only_requirements(sink: DiagnosticSink) -> bool:
     return all(d.code == "E0405" for d in sink.items if d.is_error)
 
 
-def after_solve(sink: DiagnosticSink, model: Model, min_wall: float = MIN_WALL,
+def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = None,
                 shape_checks: bool = True, deadline: Deadline | None = None) -> Drawing | None:
     """The stages after a converged solve, shared by :func:`compile_source` and the live
     preview: the extent check (E0305), branch flips (W0403), the booleans (an Offset or

@@ -593,6 +593,18 @@ offset: STL, 3MF and STEP keep the designed size.
 `aidl render --kerf 0.2mm` overrides it. A positive length known before solving. A
 statement, with no `=`: `kerf = 0.2 mm` is an ordinary constant (warning W0108).
 """, ["kerf_width", "laser kerf", "cut width"]),
+    "min_wall": ("statement", "`min_wall 0.3 mm`: the thinnest wall the checks accept (W0507, "
+                 "W0519, W0520); `min_wall 0`: off.", """
+`min_wall LENGTH` (top level: every part; inside a structure: that structure and its
+children, the nearest one wins) is the thinnest wall of material, and the narrowest slit, that
+the final-part checks accept: W0507 (thin wall), W0519 (thin slit), W0520 (thin ledge). Without
+it the minimum is 0.5 mm, what a laser or router holds. State it when a thin wall or a sharp
+tip is what the request asks for (a 0.34 mm leg, an 18-degree corner): the checks then hold the
+part to it, and no requested size has to change. `min_wall 0` turns those checks off (a part
+not cut by a laser or router). A length known before solving, positive or 0 (else E0109);
+`aidl check --min-wall MM` overrides it. A statement, with no `=`: `min_wall = 0.3 mm` is an
+ordinary constant (warning W0108).
+""", ["minimum wall", "min wall", "thin wall", "W0507", "minimum_wall", "wall_min"]),
     "lbrn2": ("statement", "`aidl render FILE -o x.lbrn2`: a LightBurn project, a layer per "
               "operation.", """
 `aidl render FILE -o x.lbrn2` writes a LightBurn project: one layer (CutSetting) per operation
@@ -913,7 +925,8 @@ EXAMPLES: dict[str, str] = {
                         "construction=true)\nbody = Offset(board.outlines[0], 3)   # the "
                         "outline + 3 mm\nfor c in board.circles {\n    hole h { p = Circle("
                         "center=(0, 0), radius=1.7) }\n    Concentric(h.p, c)\n}", "lid"),
-    "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)",
+    "RegularPolygon": _solid("nut = RegularPolygon(center=(0, 0), across_flats=13, sides=6)\n"
+                             "# or by its edge: RegularPolygon(center=(0, 0), side=7.5, sides=6)",
                              "hexagon"),
     "Slot": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
                    "hole slot { s = Slot(center=(0, 0), length=30, width=6) }", "plate"),
@@ -1074,6 +1087,8 @@ EXAMPLES: dict[str, str] = {
                + _solid("r = Rectangle(center=(0, 0), width=60, height=40)", "plate"),
     "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
                                         "plate"),
+    "min_wall": "min_wall 0.3 mm    # the tip below is meant sharp\n\n" + _solid(
+        "body = Triangle((0, 0), (95.149, 0), (40, 15.482))", "wedge"),
     "lbrn2": "# aidl render plate.aidl -o plate.lbrn2\nkerf 0.15 mm\n\n" + _solid(
         "r = Rectangle(center=(0, 0), width=60, height=40)\nhole bore { c = Circle(center=(0, "
         "0), radius=5) }", "plate"),

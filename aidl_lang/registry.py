@@ -229,9 +229,11 @@ _DEFS = {
                           A("rotation", "angle", 0.0)],
                          [A("center", "point"), A("across_flats", "length"), A("sides", "number"),
                           A("rotation", "angle", 0.0)],
-                         doc="A rigid regular polygon; radius (center to vertex) or across_flats "
-                             "(between opposite sides), sides and rotation are held; first "
-                             "vertex at +x.", members=POLY_MEMBERS),
+                         [A("center", "point"), A("side", "length"), A("sides", "number"),
+                          A("rotation", "angle", 0.0)],
+                         doc="A rigid regular polygon; radius (center to vertex), across_flats "
+                             "(between opposite sides) or side (one edge's length), sides and "
+                             "rotation are held; first vertex at +x.", members=POLY_MEMBERS),
     "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
                [A("start", "point"), A("end", "point"), A("width", "length")],
                [A("center", "point"), A("length", "length"), A("width", "length"),
@@ -398,9 +400,11 @@ _DEFS = {
                       [A("target", "boxed"), A("rows", "number"), A("cols", "number"),
                        A("col_spacing", "length"), A("row_spacing", "length")], cat="operation",
                       doc="copy (r, c) moved by (c*dx, r*dy); spacing (dx, dy) or a length."),
-    "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "length", 0.0)],
+    "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "any", 0.0,
+                                                                     "a length, or (dx, dy)")],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
-                        doc="target centered on each corner of Rectangle rect (inset inward), "
+                        doc="target centered on each corner of Rectangle rect (inset inward: a "
+                            "length, or (dx, dy) along its width and height), "
                             "or on each point of at: the original goes to the bottom-left "
                             "corner (at[0]), copies to the others; what is Fixed stays put "
                             "(fix the plate, not the original, or the plate moves to it)."),
@@ -534,7 +538,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height",
                   "angle": "rotation", "p1": "start", "p2": "end", "thickness": "width"},
     "RegularPolygon": {"n_sides": "sides", "num_sides": "sides", "af": "across_flats",
-                       "flat_to_flat": "across_flats"},
+                       "flat_to_flat": "across_flats", "side_length": "side",
+                       "edge_length": "side", "edge": "side", "length": "side"},
     "Slot": {"p1": "start", "p2": "end", "a": "start", "b": "end", "angle": "rotation",
              "direction": "angle", "heading": "angle"},
     "Line": {"p1": "start", "p2": "end", "from": "start", "to": "end", "direction": "angle",
@@ -632,6 +637,9 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "radians": (1, 1, "a bare number of degrees as an angle"),
     "degrees": (1, 1, "an angle as a bare number of degrees"),
     "distance": (2, 2, "distance between two points (a length expression)"),
+    "polar": (3, 3, "polar(center, radius, angle): the point `radius` from `center` at `angle` "
+                    "counter-clockwise from +x (exact, follows the center when it moves; no "
+                    "mirror image solves it, unlike Distance + an angle)"),
     "mirror": (1, 2, "mirror(points, about=\"y\"): the points, then their mirror images in "
                      "reverse order (a symmetric outline written once); about: \"y\" (the "
                      "y axis: x -> -x), \"x\" (y -> -y) or a Line (as it starts); a point on "

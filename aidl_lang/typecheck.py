@@ -220,10 +220,13 @@ class Checker:
                     or st.name in reads or st.span is None or st.span.file != self.path:
                 continue
             n, is_param = st.name, isinstance(st, A.ParamDecl)
-            if n in ("thickness", "kerf"):
+            if n in ("thickness", "kerf", "min_wall"):
                 what = ("the material's thickness (3D outputs, the parts list, the fit check; "
                         "3 mm when not set)" if n == "thickness" else
-                        "the laser's cut width (cuts offset by half of it; none when not set)")
+                        "the laser's cut width (cuts offset by half of it; none when not set)"
+                        if n == "kerf" else
+                        "the thinnest wall the checks accept (W0507, W0519, W0520; 0.5 mm "
+                        "when not set)")
                 if is_param:
                     new = f"{text(st)}\n{n} {n}"
                     said = f"`param {n}` is an ordinary value that nothing reads"

@@ -75,8 +75,9 @@ def add_arguments(p) -> None:
                         "`timeout` (default: twice the budget's wall time, 120 s x K)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a param in every program")
-    p.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
-                   help="warn (W0507) about walls thinner than this, in mm (default 0.5)")
+    p.add_argument("--min-wall", type=float, default=None, metavar="MM",
+                   help="warn (W0507) about walls thinner than this, in mm (default: the "
+                        "program's `min_wall`, else 0.5)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
 
 
@@ -111,7 +112,7 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
               out_dir: str | None = None, workers: int | None = None,
               scheduler: str | None = None, budget: float = 1.0,
               overrides: dict | None = None, timeout: float | None = None,
-              min_wall: float = 0.5, progress: bool = False, console=None,
+              min_wall: float | None = None, progress: bool = False, console=None,
               on_row=None) -> dict:
     """Run a batch (``on_row``, if given, is called with each row as it is written); returns ``{"rows": [...] (one per input, in input order), "ran": N,
     "skipped": N, "seconds": wall time, "out": path}``.  Raises :class:`UsageError` (and

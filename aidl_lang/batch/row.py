@@ -32,7 +32,7 @@ def options_key(overrides: dict, budget: float, cfg: dict) -> str:
     these changed): the ``--set`` values, the budget factor, the renders and their folder, the
     minimum wall."""
     return json.dumps({"set": overrides, "budget": budget, "render": cfg.get("render", []),
-                       "out_dir": cfg.get("out_dir"), "min_wall": cfg.get("min_wall", 0.5)},
+                       "out_dir": cfg.get("out_dir"), "min_wall": cfg.get("min_wall")},
                       sort_keys=True, separators=(",", ":"))
 
 
@@ -63,7 +63,7 @@ def run_one(task: dict, cfg: dict) -> dict:
                                                   "message": task["read_error"]}])
     t0 = time.perf_counter()
     res = compile_source(task["source"], task.get("path") or task["id"], task["overrides"],
-                         min_wall=cfg.get("min_wall", 0.5),
+                         min_wall=cfg.get("min_wall"),
                          budget=DEFAULT_BUDGET.scaled(task["budget"]))
     row = blank_row(task, "ok" if res.ok else "error",
                     errors=[_diag(d) for d in res.sink.items if d.is_error],

@@ -24,6 +24,7 @@ import time
 from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
+from ..solver import solve_text
 
 
 _COLUMNS: int | None = None
@@ -174,8 +175,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    r.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
-                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    r.add_argument("--min-wall", type=float, default=None, metavar="MM",
+                   help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
     _budget_arg(r)
     r.add_argument("--follow-symlinks", action="store_true",
                    help="write through an output that is a symbolic link (default: refuse it)")
@@ -187,8 +189,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     c.add_argument("file", nargs="?")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    c.add_argument("--min-wall", type=float, default=0.5, metavar="MM",
-                   help="warn (W0507) about walls thinner than this, in mm (default 0.5; 0: off)")
+    c.add_argument("--min-wall", type=float, default=None, metavar="MM",
+                   help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
@@ -404,6 +407,7 @@ def cmd_check(args) -> int:
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
+                          "settled": res.solve.n_settled,
                           "max_residual": res.solve.max_residual}
         from ..solver.diagnose import degrees_of_freedom, freedom_text
         if args.dof and res.ok:
@@ -436,8 +440,7 @@ def cmd_check(args) -> int:
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
-        print(f"{args.file}: ok ({len(res.model.structures)} structures, {s.n_unknowns} unknowns, "
-              f"{s.n_equations} equations, solved in {s.iterations} Newton steps; "
+        print(f"{args.file}: ok ({len(res.model.structures)} structures, {solve_text(s)}; "
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)

@@ -628,7 +628,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
             raise OperationError(f"CornerPattern needs a Rectangle (e.g. `body`), got "
                                  f"{_what(rect)}; for other points write `at=[p1, p2, ...]`")
         g = rect.geom
-        inset = args.get("inset", Q.num(0.0)).expr
+        inset_x, inset_y = _inset(ctx, args.get("inset", 0.0))
         if "start" in g.points:      # a bar: its direction follows its ends
             from .expr import hypot
             bl, br, tl = (_pv(g.points[n], S) for n in ("bottom_left", "bottom_right", "top_left"))
@@ -643,8 +643,8 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         for nm, (su, sv) in (("bottom_left", (1, 1)), ("bottom_right", (-1, 1)),
                              ("top_right", (-1, -1)), ("top_left", (1, -1))):
             p = _pv(g.points[nm], S)
-            ox, oy = su * ux + sv * vx, su * uy + sv * vy
-            pts.append(PV(p.x + inset * ox, p.y + inset * oy, None, p.owners))
+            pts.append(PV(p.x + inset_x * su * ux + inset_y * sv * vx,
+                          p.y + inset_x * su * uy + inset_y * sv * vy, None, p.owners))
     ref = None
     if isinstance(target, GeomRef) and len(target.geom.data.get("sources", ())) > 1:
         # a Hull of several shapes is placed as one body: its shapes move together (else
@@ -663,6 +663,23 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         xf, rot, flip = _translate(p.x - p0.x, p.y - p0.y)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
     return out
+
+
+def _inset(ctx, v):
+    """CornerPattern's ``inset``: one length (the same along both sides) or ``(dx, dy)``, dx
+    along the rectangle's width and dy along its height (its own sides, turned with it);
+    mm expressions."""
+    span = ctx.cur_span
+    if isinstance(v, (int, float)):
+        return float(v), float(v)
+    if isinstance(v, Q):
+        d = ctx._coerce(v, "length", span, "CornerPattern", "inset").expr
+        return d, d
+    if isinstance(v, (tuple, list, PV)):
+        p = ctx._coerce(v, "point", span, "CornerPattern", "inset")
+        return p.x, p.y
+    raise OperationError(f"CornerPattern inset is a length (the same along both sides) or "
+                         f"(dx, dy) along the rectangle's width and height, got {type_name(v)}")
 
 
 def _what(v) -> str:

@@ -647,6 +647,9 @@ def _build_RegularPolygon(ctx, g, a):
     if "across_flats" in a:      # distance between opposite sides = 2 * apothem
         _positive(a["across_flats"], "across_flats", "RegularPolygon")
         r = _const(ctx, a["across_flats"], "across_flats") / 2 / math.cos(math.pi / n)
+    elif "side" in a:            # one edge's length = 2 r sin(pi / n)
+        _positive(a["side"], "side", "RegularPolygon")
+        r = _const(ctx, a["side"], "side") / 2 / math.sin(math.pi / n)
     else:
         _positive(a["radius"], "radius", "RegularPolygon")
         r = _const(ctx, a["radius"], "radius")

@@ -673,6 +673,13 @@ class Calls:
             p, q = self._to_point(args[0], sp), self._to_point(args[1], sp)
             return Q(func("sqrt", (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)), LEN,
                      p.owners | q.owners)
+        if nm == "polar":
+            c = self._to_point(args[0], sp)
+            r = self._coerce(args[1], "length", sp, "polar", "radius")
+            a = self._coerce(args[2], "angle", sp, "polar", "angle")
+            ca, sa = func("cos", a.expr), func("sin", a.expr)
+            return PV(c.x + r.expr * ca, c.y + r.expr * sa, None,
+                      c.owners | r.owners | a.owners)
         q = [self._q(a, sp) for a in args]
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):

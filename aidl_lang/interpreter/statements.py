@@ -393,19 +393,23 @@ class Statements:
                             hint=f"move the `{what}` line to the top of the file")
 
     def _thickness(self, st) -> None:
-        """``thickness LENGTH`` (and ``kerf LENGTH``): the model's default (top level) or a
-        structure's own, in mm."""
+        """``thickness LENGTH`` (and ``kerf LENGTH``, ``min_wall LENGTH``): the model's default
+        (top level) or a structure's own, in mm; ``min_wall`` may be 0 (its checks off)."""
         word, eg = ("kerf", "kerf 0.15 mm") if isinstance(st, A.KerfDecl) else \
+            ("min_wall", "min_wall 0.3 mm") if isinstance(st, A.MinWallDecl) else \
             ("thickness", "thickness 3 mm")
         v = self.eval(st.value)
         if not isinstance(v, Q) or v.dim not in (LEN, NUM):
             raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
                             hint=f"write it with a unit: `{eg}`")
         val = Q(self._as_length(v, st.value.span), LEN).const()
-        if val is None or not val > 0:
-            raise EvalError("E0109", f"`{word}` must be a positive length known before "
-                            "solving", st.value.span,
-                            hint=f"use a number or a param: `{eg}`")
+        if word == "min_wall" and val is not None and val == 0:
+            pass                                 # `min_wall 0`: the wall checks off
+        elif val is None or not val > 0:
+            raise EvalError("E0109", f"`{word}` must be a " + (
+                "positive length (or 0: no minimum)" if word == "min_wall" else
+                "positive length") + " known before solving", st.value.span,
+                hint=f"use a number or a param: `{eg}`")
         setattr(self.model if self.struct is None else self.struct, word, val)
 
     def _need_struct(self, span) -> Structure:

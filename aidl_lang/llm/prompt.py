@@ -34,7 +34,8 @@ and text, not filled), `assembly NAME { ... }` (separate parts). Inside a struct
 (`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
-live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE`,
+live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE` (a
+param may be computed from params above it, `param h = w / 2`, and follows `--set w=60`),
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
@@ -47,7 +48,10 @@ number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan
 radians: write `cos(i * 10 deg)`).
 
 Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
-starting guesses that the solver moves to satisfy the constraints. Relate parts with
+starting guesses that the solver moves to satisfy the constraints; what no constraint pulls
+on stays exactly where it is written (no `Fixed` just in case). A point at a radius and angle
+from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
+also fit its mirror image). Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates
 (`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
 may only use names defined above it; constraint statements may name geometry defined later.
@@ -79,8 +83,10 @@ structures as one body.
 `assert cond, "why"` (in a structure or at the top) is a requirement checked after solving,
 never solved for (false: error E0405): write limits ("fits the bed") as asserts and what the
 solver should make true as constraints. `thickness 3 mm` (the material, for 3D outputs and
-the parts list) and `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
-are statements without `=` (`thickness = 3 mm` is a mere constant) that
+the parts list), `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
+and `min_wall 0.3 mm` (W0507 warns of walls thinner than 0.5 mm, which a laser burns through;
+a thin wall or sharp tip the request asks for is meant: state `min_wall`, never change a
+requested size; `min_wall 0`: not laser-cut) are statements without `=` (`thickness = 3 mm` is a mere constant) that
 stand at the top or inside a structure (for it and its children); `-o x.gcode`: G-code
 (`aidl docs machine`).
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
@@ -94,7 +100,8 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
 turn (valid; pin what matters with constraints).
-`aidl check --describe` prints the final part in words (sizes, openings, texts, symmetries).
+`aidl check --describe` prints the final part in words (sizes, thickness, kerf, openings,
+notches a hole cuts into the outline, texts, symmetries).
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant: fix it like an error. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than

@@ -178,7 +178,7 @@ def _summary(ws: Workspace, r: Result) -> dict:
     if s is not None:
         doc["solve"] = {"converged": s.converged, "iterations": s.iterations,
                         "unknowns": s.n_unknowns, "equations": s.n_equations,
-                        "max_residual": s.max_residual}
+                        "settled": s.n_settled, "max_residual": s.max_residual}
     if not r.ok:
         n = len(r.errors)
         doc["summary"] = f"{n} error{'s' if n != 1 else ''}: " + "; ".join(

@@ -90,6 +90,9 @@ class Drawing:
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
+    # Part name -> minimum wall in mm (`min_wall 0.3 mm`, found like the thickness; 0: the
+    # wall checks off); parts without one are checked at the compile's default
+    min_wall = None
     # [(geometry, message, hint[, code])]: an Offset or Shell that leaves nothing (E0406), a
     # Fillet or Chamfer at a spline's corner (E0407)
     shape_errors = ()
@@ -820,8 +823,9 @@ class Renderer:
         out.empty_faces = self.empty_faces
         out.shape_errors = self.shape_errors
         out.spline_source = self.spline_source
-        out.kerf = {}
-        for word, into in (("thickness", out.thickness), ("kerf", out.kerf)):
+        out.kerf, out.min_wall = {}, {}
+        for word, into in (("thickness", out.thickness), ("kerf", out.kerf),
+                           ("min_wall", out.min_wall)):
             default = getattr(self.m, word, None)
             for name, s in out.part_of.items():
                 t = next((getattr(a, word) for a in [s, *s.ancestors()]

@@ -19,6 +19,14 @@ primitive that drew the loop (:func:`_primitive`: a shape of that kind whose fac
 box and whose parameters the loop's segments match); the others by their segments.  Texts
 carry their string and ``height`` (the ``size`` they were written at).
 
+Each part states its material: ``thickness`` (mm; the program's ``thickness`` statement, else
+the 3D outputs' 3 mm, with ``thickness_set`` saying which) and ``kerf`` (mm, or None).  A hole
+that breaks through the part's outline leaves no opening (no inner loop) but a **notch** in
+the outline: each is listed with the hole that made it, the edge it opens onto (the side of
+the part's box nearest the removed material: ``top``, ``bottom``, ``left``, ``right``), its
+``width`` along that edge and ``depth`` into the part (the removed region's box, mm), and its
+centre (:func:`notches`).
+
 Symmetries are tested on the part's shape (:attr:`~.part.PartOutline.shape`) about its area
 centroid: a mirror about the vertical and the horizontal line through it, and rotation by
 360/n degrees for n from 2 to 12 and the divisors up to 120 of its loops' segment counts (a
@@ -284,17 +292,61 @@ def _item_points(item):
     return None
 
 
+DEFAULT_THICKNESS = 3.0     # mm: what the 3D outputs use when no `thickness` is stated
+NOTCH_AREA = 1e-6          # mm^2: a hole reaching this far past its solid's material notches it
+
+
+def _inside_box(box, outer) -> bool:
+    return box[0] >= outer[0] and box[1] >= outer[1] and box[2] <= outer[2] and box[3] <= outer[3]
+
+
+def notches(output: Output, part) -> list[dict]:
+    """The notches that holes cut into part ``part``'s outline (a :class:`~.part.PartOutline`):
+    ``[{"hole", "edge", "width", "depth", "center", "box"}]`` (mm), for every hole of the part
+    whose region reaches past the material it cuts (``hole - before`` has area), so that it
+    opens the outline instead of making an opening.  Empty without the booleans' result."""
+    d = output.drawing
+    s = getattr(d, "part_of", {}).get(part.name) if d is not None else None
+    if s is None:
+        return []
+    x0, y0, x1, y1 = part_box(part)
+    out = []
+    for c in d.cuts:
+        if not (c.owner is s or c.owner.is_within(s)) or c.region.is_empty():
+            continue
+        shape = d.shapes.get(c.hole)
+        if shape is None or (shape - c.before).area() <= NOTCH_AREA:
+            continue                            # inside the material: an opening, listed above
+        a, b, e, f = c.region.bounds()
+        # the exact box: the part's own outline pieces inside the (polygonal) region's box
+        pad = max(0.01, 1e-3 * max(e - a, f - b))
+        inner = [g for lp in part.loops for g in lp.segments
+                 if _inside_box(_segment_box(g), (a - pad, b - pad, e + pad, f + pad))]
+        if inner:
+            a, b, e, f = _box(inner)
+        gaps = {"top": y1 - f, "bottom": b - y0, "left": a - x0, "right": x1 - e}
+        edge = min(gaps, key=gaps.get)
+        width, depth = (e - a, f - b) if edge in ("top", "bottom") else (f - b, e - a)
+        out.append({"hole": c.hole.path, "edge": edge, "width": _r(width), "depth": _r(depth),
+                    "center": [_r((a + e) / 2), _r((b + f) / 2)],
+                    "box": [_r(a), _r(b), _r(e), _r(f)]})
+    out.sort(key=lambda n: (-n["center"][1], n["center"][0]))
+    return out
+
+
 def describe(output: Output) -> dict:
     """The description of ``output`` as JSON-ready data: ``{"units": "mm", "parts": [...],
     "engravings": [...]}`` (engravings outside every part).  Each part: ``name``, ``kind``,
     ``size`` [w, h], ``box`` [x0, y0, x1, y1], ``area`` mm^2, ``outline`` (its outer loops'
     kinds, :func:`loop_shape`), ``openings`` (each inner loop's kind, centre and size),
-    ``engravings``, ``copies`` (the other parts of the same shape) and ``symmetry``
-    (:func:`symmetries`)."""
+    ``engravings``, ``copies`` (the other parts of the same shape), ``symmetry``
+    (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None) and
+    ``notches`` (:func:`notches`)."""
     rows = parts_list(output)
     texts = _text_items(output)
     shapes = _own_shapes(output)
     parts = []
+    kerfs = getattr(output.drawing, "kerf", None) or {}
     for p, row in zip(output.parts, rows):
         x0, y0, x1, y1 = part_box(p)
         outer = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
@@ -307,7 +359,12 @@ def describe(output: Output) -> dict:
                       "box": [_r(x0), _r(y0), _r(x1), _r(y1)], "area": _r(abs(p.area)),
                       "outline": outer, "openings": openings,
                       "engravings": [t for t in texts if t["part"] == p.name],
-                      "copies": copies, "symmetry": symmetries(p)})
+                      "copies": copies, "symmetry": symmetries(p),
+                      "thickness": _r(p.thickness if p.thickness is not None
+                                      else DEFAULT_THICKNESS),
+                      "thickness_set": p.thickness is not None,
+                      "kerf": _r(kerfs[p.name]) if p.name in kerfs else None,
+                      "notches": notches(output, p)})
     return {"units": "mm", "parts": parts,
             "engravings": [t for t in texts if t["part"] == ""]}
 
@@ -362,6 +419,10 @@ def describe_text(doc: dict) -> str:
         out.append(f"part `{p['name']}`" + (" (hole)" if p["kind"] == "hole" else "")
                    + f": {_n(w)} x {_n(h)} mm, from ({_n(x0)}, {_n(y0)}) to ({_n(x1)}, {_n(y1)}),"
                    f" area {_n(round(p['area'], 2))} mm^2")
+        if "thickness" in p:
+            out.append(f"  material: {_n(p['thickness'])} mm thick"
+                       + ("" if p["thickness_set"] else " (no `thickness` stated: the default)")
+                       + (f", kerf {_n(p['kerf'])} mm" if p.get("kerf") else ", no kerf"))
         for o in p["outline"]:
             out.append(f"  outline: {shape_text(o)}")
         counts: dict = {}
@@ -373,6 +434,10 @@ def describe_text(doc: dict) -> str:
                        + "):")
         for o in p["openings"]:
             out.append(f"    {shape_text(o)}")
+        for nt in p.get("notches", ()):
+            out.append(f"  notch in the {nt['edge']} edge: {_n(nt['width'])} wide, "
+                       f"{_n(nt['depth'])} deep, at {_at(nt['center'])}, cut by hole "
+                       f"`{nt['hole']}` (it breaks through the outline: not an opening)")
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
         if p["copies"]:

@@ -63,15 +63,29 @@ __all__ = ["check_drawing", "check_topology", "topology", "topology_changes", "T
            "_part_of", "_part_roots", "_point_of", "_report_openings", "_sample", "_samples",
            "_signed", "_thin", "_union", "_within"]
 
-def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
+def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
+    """The minimum wall (mm) the checks hold part ``part`` to: ``given`` (the command line's
+    ``--min-wall``) when set, else the program's ``min_wall`` statement for it (its own, an
+    ancestor's or the top level's: :attr:`Drawing.min_wall`), else :data:`MIN_WALL`."""
+    if given is not None:
+        return given
+    own = getattr(d, "min_wall", None) or {}
+    name = getattr(part, "path", None)
+    return own.get(name, MIN_WALL) if name is not None else MIN_WALL
+
+
+def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = None,
                   deadline=None) -> None:
     """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
-    (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on).
+    (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on),
+    overriding the program's ``min_wall`` statements (:func:`part_min_wall`); None: theirs,
+    else :data:`MIN_WALL`.
     ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
     structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
     def tick(s, ahead: float = 0.0):
         if deadline is not None:
             deadline.check("the shape checks", s, ahead)
+    given = min_wall
     roots = _part_roots(d)
     loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
              for s, shape in roots.items() if s.kind == "solid"}
@@ -98,6 +112,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     for s, shape in roots.items():
         if s.kind == "solid":
             tick(s)
+            min_wall = part_min_wall(d, s, given)
             a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
             covered = _report_openings(a, s, min_wall, sink, d.shapes)
             _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
@@ -120,7 +135,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     for s in list(d.shapes):
         if s.kind == "hole":
             _check_repeated_faces(d, s, sink)
-            _check_overlapping_circles(d, s, sink, min_wall if min_wall > 0 else MIN_WALL)
+            t = part_min_wall(d, _part_of(s, roots), given)
+            _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):

@@ -35,8 +35,8 @@ syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under U
 syntax keyword aidlCadConstraint VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
-syntax keyword aidlCadFunction distance floor len max min mirror norm radians
-syntax keyword aidlCadFunction range round sin sqrt square str tan
+syntax keyword aidlCadFunction distance floor len max min mirror norm polar
+syntax keyword aidlCadFunction radians range round sin sqrt square str tan
 
 syntax match aidlCadNumber /\v<\d+\.?\d*([eE][-+]?\d+)?>|\.\d+>/ nextgroup=aidlCadUnit skipwhite
 syntax match aidlCadUnit /\v<(inches|inch|deg|rad|cm|ft|in|mm|m)>|°/ contained

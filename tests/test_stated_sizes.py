@@ -1,0 +1,249 @@
+"""A warning never makes a right design wrong, and what models reach for exists: the program's
+own `min_wall`, `RegularPolygon(side=)`, `CornerPattern(inset=(dx, dy))`, `polar()`, and a
+check line that says what was settled before Newton (docs/language.md 2.1c, 5; docs/codes.md
+W0507)."""
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+
+from aidl_lang.api import compile as aidl_compile
+
+
+def _codes(c):
+    return [d.code for d in c.sink.items]
+
+
+def _point(c, path):
+    """The solved coordinates (mm) of the point named by the dotted ``path``."""
+    (v,) = [v for v in c.values_matching([path]) if v.name == path]
+    return tuple(v.value)
+
+
+TRIANGLE = """units mm
+{statement}
+solid tri {{
+    body = Triangle((0, 0), (95.149, 0), (40, 15.482))
+}}
+"""
+
+
+# ------------------------------------------------------------------ min_wall
+def test_a_requested_sharp_triangle_warns_without_min_wall_and_not_with_it():
+    assert "W0507" in _codes(aidl_compile(TRIANGLE.format(statement="")))
+    for st in ("min_wall 0", "min_wall 0.005 mm"):
+        c = aidl_compile(TRIANGLE.format(statement=st))
+        assert c.ok and "W0507" not in _codes(c), (st, _codes(c))
+
+
+def test_min_wall_in_a_structure_covers_that_part_only():
+    src = """units mm
+assembly kit {
+    solid a {
+        min_wall 0
+        body = Triangle((0, 0), (95.149, 0), (40, 15.482))
+    }
+    solid b {
+        body = Triangle((0, 40), (95.149, 40), (40, 55.482))
+    }
+}
+"""
+    c = aidl_compile(src)
+    walls = [d for d in c.sink.items if d.code == "W0507"]
+    assert len(walls) == 1 and "kit.b" in walls[0].message, [d.message for d in walls]
+
+
+def test_the_command_line_min_wall_overrides_the_statement():
+    src = TRIANGLE.format(statement="min_wall 0")
+    assert "W0507" not in _codes(aidl_compile(src))
+    assert "W0507" in _codes(aidl_compile(src, min_wall=0.5))
+    assert "W0507" not in _codes(aidl_compile(TRIANGLE.format(statement=""), min_wall=0))
+
+
+def test_min_wall_must_be_a_length_not_negative():
+    c = aidl_compile(TRIANGLE.format(statement="min_wall -1"))
+    assert not c.ok and _codes(c)[0] == "E0109"
+    assert "or 0" in c.sink.items[0].message
+
+
+def test_min_wall_written_as_a_constant_is_w0108_with_the_statement_as_fix():
+    c = aidl_compile(TRIANGLE.format(statement="min_wall = 0.3 mm"))
+    (d,) = [d for d in c.sink.items if d.code == "W0108"]
+    assert d.fix is not None and d.fix.replacement == "min_wall 0.3 mm"
+    fixed = TRIANGLE.format(statement=d.fix.replacement)
+    assert "W0507" not in _codes(aidl_compile(fixed)) and "W0108" not in _codes(aidl_compile(fixed))
+
+
+def test_min_wall_stays_an_ordinary_name_elsewhere():
+    c = aidl_compile("""units mm
+param min_wall = 2
+solid p { body = Rectangle(center=(0, 0), width=10 * min_wall, height=min_wall * 5) }
+""")
+    assert c.ok, _codes(c)
+
+
+# ------------------------------------------------------------------ what models reach for
+def test_regular_polygon_by_its_side_length():
+    c = aidl_compile("""units mm
+solid nut { body = RegularPolygon(center=(3, 4), side=1.5, sides=6, rotation=10 deg) }
+""")
+    assert c.ok, _codes(c)
+    pts = [_point(c, f"nut.body.p{k}") for k in range(6)]
+    for k in range(6):
+        assert math.dist(pts[k], pts[(k + 1) % 6]) == pytest.approx(1.5, abs=1e-9)
+    c7 = aidl_compile("solid s { body = RegularPolygon(center=(0, 0), side_length=10, sides=7) }")
+    p0, p1 = _point(c7, "s.body.p0"), _point(c7, "s.body.p1")
+    assert math.dist(p0, p1) == pytest.approx(10, abs=1e-9)
+    assert math.hypot(*p0) == pytest.approx(10 / 2 / math.sin(math.pi / 7), abs=1e-9)
+
+
+@pytest.mark.parametrize("rotation", [0, 30])
+def test_corner_pattern_with_an_inset_per_axis(rotation):
+    c = aidl_compile(f"""units mm
+solid plate {{
+    body = Rectangle(center=(0, 0), width=60, height=40, rotation={rotation} deg)
+    hole h {{ c = Circle(center=(0, 0), radius=2) }}
+    Fixed(body)
+    corners = CornerPattern(h, body, inset=(5, 8))
+}}
+""")
+    assert c.ok, _codes(c)
+    a = math.radians(rotation)
+    u, v = (math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a))
+    want = (-25 * u[0] - 12 * v[0], -25 * u[1] - 12 * v[1])    # the bottom-left corner, inset
+    got = _point(c, "plate.h.c.center")
+    assert got == pytest.approx(want, abs=1e-9)
+
+
+def test_corner_pattern_inset_of_the_wrong_kind_is_a_clear_error():
+    c = aidl_compile("""solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h { c = Circle(center=(0, 0), radius=2) }
+    corners = CornerPattern(h, body, inset="a lot")
+}
+""")
+    assert not c.ok
+    assert any("inset" in d.message for d in c.sink.items if d.severity == "error"), \
+        [d.message for d in c.sink.items]
+
+
+@pytest.mark.parametrize("start", [(10, 10), (10, -10)])
+def test_polar_places_a_point_at_a_radius_and_angle_with_no_mirror_image(start):
+    """Started at the mirror image of where it belongs (below the x axis), the point still
+    ends at +30 degrees: polar() is one point, not a distance and an angle."""
+    c = aidl_compile(f"""units mm
+solid flange {{
+    disc = Circle(center=(0, 0), radius=30)
+    hole bolt {{ c = Circle(center={start}, radius=2) }}
+    disc.center == (5, 5)
+    Coincident(bolt.c.center, polar(disc.center, 20, 30 deg))
+    p = Point(at=polar(disc.center, 10, 120))
+}}
+""")
+    assert c.ok, _codes(c)
+    assert _point(c, "flange.bolt.c.center") == pytest.approx(
+        (5 + 20 * math.cos(math.pi / 6), 5 + 20 * math.sin(math.pi / 6)), abs=1e-9)
+    assert _point(c, "flange.p.p") == pytest.approx(
+        (5 + 10 * math.cos(2 * math.pi / 3), 5 + 10 * math.sin(2 * math.pi / 3)), abs=1e-9)
+
+
+def test_polar_needs_a_point_a_length_and_an_angle():
+    c = aidl_compile("solid s { p = Point(at=polar((0, 0), 5)) }")
+    assert not c.ok and _codes(c)[0] == "E0104"
+
+
+# ------------------------------------------------------------------ the check line
+HULL = """units mm
+solid plate {
+    a = Circle(center=(0, 0), radius=5, construction=true)
+    b = Circle(center=(30, 0), radius=5, construction=true)
+    body = Hull(a, b)
+    Fixed(a)
+    HorizontalDistance(a.center, b.center, 30)
+    Horizontal(a.center, b.center)
+}
+"""
+
+
+def test_the_check_line_says_what_was_settled_before_newton(tmp_path):
+    f = tmp_path / "hull.aidl"
+    f.write_text(HULL)
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f)],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert "4 unknowns, all 4 settled directly by their constraints" in out.stdout, out.stdout
+    assert "0 unknowns" not in out.stdout
+    js = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--json", str(f)],
+                        capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    doc = json.loads(js.stdout)
+    assert doc["solve"]["settled"] == 4 and doc["solve"]["unknowns"] == 0
+
+
+def test_solve_text_without_anything_settled_is_the_old_line():
+    from aidl_lang.solver import SolveResult, solve_text
+    r = SolveResult(True, 2, 1, n_unknowns=20, n_equations=20)
+    assert solve_text(r) == "20 unknowns, 20 equations, solved in 2 Newton steps"
+    r = SolveResult(True, 3, 1, n_unknowns=26, n_equations=26, n_settled=4)
+    assert solve_text(r) == ("30 unknowns: 4 settled directly by their constraints, 26 solved "
+                             "by Newton from 26 equations in 3 steps")
+
+
+# ------------------------------------------------------------------ the model is told
+def test_the_prompt_answers_what_models_asked():
+    from aidl_lang.llm.prompt import system_prompt
+    text = " ".join(system_prompt(examples=False).split())
+    assert "min_wall 0.3 mm" in text and "never change a requested size" in text
+    assert "polar(c.center, 20, 30 deg)" in text
+    assert "param h = w / 2" in text
+    assert "stays exactly where it is written" in text
+    assert "RegularPolygon(center, side, sides" in text
+    assert "(dx, dy)" in text
+
+
+# ------------------------------------------------------------------ the description
+NOTCHED = """units mm
+thickness 4 mm
+kerf 0.2 mm
+assembly kit {
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        hole a { c = Circle(center=(-15, 15), radius=4) }
+        hole b { c = Circle(center=(10, 5), radius=3) }
+        hole slot { r = Rectangle(center=(30, -5), width=10, height=6) }
+        Fixed(body)
+        Fixed(a)
+        Fixed(b)
+        Fixed(slot)
+    }
+    solid spacer {
+        thickness 6 mm
+        c = Circle(center=(100, 0), radius=8)
+    }
+}
+"""
+
+
+def test_the_description_states_thickness_kerf_and_the_notches_holes_cut():
+    c = aidl_compile(NOTCHED)
+    assert c.ok, _codes(c)
+    parts = {p["name"]: p for p in c.description["parts"]}
+    plate, spacer = parts["kit.plate"], parts["kit.spacer"]
+    assert (plate["thickness"], plate["thickness_set"], plate["kerf"]) == (4.0, True, 0.2)
+    assert spacer["thickness"] == 6.0
+    assert [o["kind"] for o in plate["openings"]] == ["circle"]       # b only
+    got = {n["hole"]: (n["edge"], n["width"], n["depth"], n["center"]) for n in plate["notches"]}
+    assert got == {"kit.plate.a": ("top", 8.0, 4.0, [-15.0, 13.0]),
+                   "kit.plate.slot": ("right", 6.0, 5.0, [27.5, -5.0])}
+    text = c.describe()
+    assert "material: 4 mm thick, kerf 0.2 mm" in text
+    assert "material: 6 mm thick" in text
+    assert "notch in the top edge: 8 wide, 4 deep, at (-15, 13), cut by hole `kit.plate.a`" in text
+
+
+def test_the_description_says_when_the_thickness_is_only_the_default():
+    c = aidl_compile("solid p { body = Rectangle(center=(0, 0), width=10, height=5) }")
+    (p,) = c.description["parts"]
+    assert (p["thickness"], p["thickness_set"], p["kerf"], p["notches"]) == (3.0, False, None, [])
+    assert "3 mm thick (no `thickness` stated: the default), no kerf" in c.describe()
