@@ -27,6 +27,7 @@ from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotatio
 from pydantic import Field
 
 from ..output.writers import FORMATS
+from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from . import tools as T
 from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
 from .wording import for_agents
@@ -129,7 +130,6 @@ relative to the server's allowed folder; nothing outside it can be read or writt
 
 _PKG = Path(__file__).resolve().parent.parent
 _DOCS = _PKG.parent / "docs"
-_EXAMPLES = _PKG.parent / "examples"
 
 
 def _text_of(path: Path, what: str) -> Callable[[], str]:
