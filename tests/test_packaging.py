@@ -43,6 +43,9 @@ def dist(tmp_path_factory):
         shutil.copy(ROOT / name, src / name)
     for name in ("grammar", "stdlib", "examples"):
         shutil.copytree(ROOT / name, src / name)
+    (src / "docs").mkdir()
+    for name in ("language.md", "api.md"):            # aidl_lang/docs links to these two
+        shutil.copy(ROOT / "docs" / name, src / "docs" / name)
     shutil.copytree(ROOT / "aidl_lang", src / "aidl_lang", symlinks=True,
                     ignore=shutil.ignore_patterns("__pycache__"))
     r = subprocess.run([sys.executable, "-m", "build", "-o", str(tmp / "dist"), str(src)],
@@ -65,6 +68,10 @@ def test_the_wheel_carries_the_grammar_the_stdlib_and_the_static_files(dist):
     assert need <= names, need - names
     grammar = zipfile.ZipFile(wheel).read("aidl_lang/grammar/aidl.lark").decode()
     assert grammar == (ROOT / "grammar" / "aidl.lark").read_text()
+    for name in ("language.md", "api.md"):          # the MCP server's two references
+        assert zipfile.ZipFile(wheel).read(f"aidl_lang/docs/{name}").decode() == \
+            (ROOT / "docs" / name).read_text()
+    assert not [n for n in names if n.startswith("aidl_lang/docs/") and n.endswith(".py")]
 
 
 @pytest.mark.slow
@@ -392,7 +399,8 @@ async def test_from_the_wheel_the_mcp_server_gives_its_prompt_and_examples(plain
                                                                            mcp_path, empty):
     """``aidl mcp`` of the wheel, driven by the MCP client SDK over stdio from an empty
     folder: ``prompts/get aidl`` returns the system prompt with the shipped examples (and the
-    request appended), and ``aidl://examples/bottle_opener.aidl`` is the example's text."""
+    request appended), ``aidl://examples/bottle_opener.aidl`` is the example's text and
+    ``aidl://docs/language`` the language reference."""
     from mcp.client.session import ClientSession
     from mcp.client.stdio import StdioServerParameters, stdio_client
     venv, _ = plain_install
@@ -409,6 +417,8 @@ async def test_from_the_wheel_the_mcp_server_gives_its_prompt_and_examples(plain
             assert "bottle_opener" in text or "opener" in text
             res = await session.read_resource("aidl://examples/bottle_opener.aidl")
             assert res.contents[0].text == (ROOT / "examples" / "bottle_opener.aidl").read_text()
+            res = await session.read_resource("aidl://docs/language")
+            assert res.contents[0].text == (ROOT / "docs" / "language.md").read_text()
 
 
 @pytest.mark.slow

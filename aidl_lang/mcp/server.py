@@ -129,7 +129,9 @@ with centres and sizes, texts, symmetries) and `values` to read exact positions 
 relative to the server's allowed folder; nothing outside it can be read or written."""
 
 _PKG = Path(__file__).resolve().parent.parent
-_DOCS = _PKG.parent / "docs"
+# the two references the server offers as resources, inside the package (links to docs/ in a
+# checkout, the files themselves in the wheel)
+_DOCS = _PKG / "docs"
 
 
 def _text_of(path: Path, what: str) -> Callable[[], str]:
