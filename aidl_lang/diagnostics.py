@@ -16,9 +16,9 @@ from pathlib import Path
 
 # the bundled standard library (``import "std/NAME.aidl"``): beside the package in a source
 # checkout, inside it in an installed wheel (aidl_lang.sources reads it from here)
-STDLIB = Path(__file__).resolve().parent.parent / "stdlib"
-if not STDLIB.exists():
-    STDLIB = Path(__file__).resolve().parent / "stdlib"
+# The package's own folder (a link to the repository's ``stdlib/`` in a checkout, the files in
+# a wheel), resolved: never ``site-packages/stdlib``, which would be another package's
+STDLIB = (Path(__file__).resolve().parent / "stdlib").resolve()
 
 
 @functools.cache

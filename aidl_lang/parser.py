@@ -31,9 +31,9 @@ from .memory import gc_paused
 # a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
 _new_span = partial(tuple.__new__, Span)
 
-GRAMMAR = Path(__file__).resolve().parent.parent / "grammar" / "aidl.lark"
-if not GRAMMAR.exists():  # installed as a wheel: grammar shipped inside the package
-    GRAMMAR = Path(__file__).resolve().parent / "grammar" / "aidl.lark"
+# the package's own grammar (a link to the repository's ``grammar/`` in a checkout), never a
+# ``grammar`` folder beside the installed package
+GRAMMAR = (Path(__file__).resolve().parent / "grammar" / "aidl.lark").resolve()
 
 MAX_ERRORS = 20
 MAX_NESTING = 64           # brackets nested deeper than this are refused (E0003)

@@ -18,6 +18,13 @@ from pathlib import Path
 from .diagnostics import STDLIB
 from .limits import MAX_SOURCE_BYTES
 
+# The example programs (``examples/*.aidl``, ``examples/generators``, ``examples/parts``):
+# read by ``aidl prompt``, the MCP server (``aidl://examples/``) and the studio's gallery.
+# Always the folder inside the package: a link to the repository's ``examples/`` in a
+# checkout, the files themselves in the sdist and the wheel (never ``site-packages/examples``,
+# which belongs to nobody).
+EXAMPLES = Path(__file__).resolve().parent / "examples"
+
 MAX_IMPORT_BYTES = MAX_SOURCE_BYTES     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written
 MAX_DRAWING_BYTES = 5_000_000    # size of one DXF or SVG drawing (Drawing2D, `aidl import`)

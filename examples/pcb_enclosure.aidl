@@ -1,6 +1,6 @@
 # A laser-cut lid for a small board, made from the board's own drawing: the outline and the
 # mounting holes come from KiCad's Edge.Cuts layer (examples/parts/pcb_board.dxf, written by
-# examples/parts/make_drawings.py).  The lid is the board outline grown by a 3 mm margin,
+# docs/dev/make_drawings.py).  The lid is the board outline grown by a 3 mm margin,
 # with standoff holes on the board's holes and a USB cut-out placed from the board's edge.
 units mm
 

@@ -21,3 +21,122 @@ def compile_text(tmp_path):
         p.write_text(src)
         return compile_source(src, str(p), **kw)
     return run
+
+
+# ------------------------------------------------------------------ no process left behind
+# A test that starts workers, servers or pools stops them (in its fixture's `finally`).  At
+# the end of the session every child process of this pytest process must have ended (after a
+# short grace period): one still running fails the run, naming it and the first test after
+# which it was seen.  Orphans count too: this process is made the *child subreaper* of its
+# descendants (Linux prctl PR_SET_CHILD_SUBREAPER), so a worker whose parent (a server the
+# test started) died without stopping it is re-parented here instead of to init, and is seen.
+# Children are read from /proc/self/task/*/children (or the ppid in /proc/*/stat): Linux only;
+# elsewhere the check is off.
+# seconds for children to finish exiting at the session's end
+_LEFT_GRACE = float(os.environ.get("AIDL_TEST_LEFT_GRACE", "5"))
+# multiprocessing's own helpers live as long as the process that started them, by design, and
+# end when it does (their pipe closes): not a test's leftovers
+_HELPERS = ("multiprocessing.resource_tracker", "multiprocessing.forkserver")
+_first_seen: dict[int, str] = {}        # pid -> the test after which it was first seen
+_left: list[str] = []
+
+
+def _proc_text(pid: int, name: str) -> str:
+    try:
+        with open(f"/proc/{pid}/{name}", "rb") as f:
+            return f.read().decode(errors="replace")
+    except OSError:
+        return ""
+
+
+def _state(pid: int) -> str:
+    """One letter of /proc/PID/stat (R, S, D, Z, ...); '' when the process is gone."""
+    stat = _proc_text(pid, "stat")
+    return stat[stat.rfind(")") + 2:][:1] if stat else ""
+
+
+def _children() -> set[int]:
+    """The live (not zombie) child processes of this one, helpers excluded."""
+    me = os.getpid()
+    pids: set[int] = set()
+    tasks = pathlib.Path(f"/proc/{me}/task")
+    files = list(tasks.glob("*/children")) if tasks.is_dir() else []
+    if files:
+        for f in files:
+            try:
+                pids.update(int(p) for p in f.read_text().split())
+            except OSError:
+                pass
+    else:
+        for d in pathlib.Path("/proc").iterdir():
+            if d.name.isdigit():
+                stat = _proc_text(int(d.name), "stat")
+                if stat and int(stat[stat.rfind(")") + 2:].split()[1]) == me:
+                    pids.add(int(d.name))
+    return {p for p in pids if _state(p) not in ("", "Z")
+            and not any(h in _proc_text(p, "cmdline") for h in _HELPERS)}
+
+
+def _reap() -> None:
+    """Collect the exit status of orphans re-parented here (zombies), so they vanish."""
+    for p in _children_any_state():
+        if _state(p) == "Z":
+            try:
+                os.waitpid(p, os.WNOHANG)
+            except ChildProcessError:
+                pass
+
+
+def _children_any_state() -> set[int]:
+    out: set[int] = set()
+    for f in pathlib.Path(f"/proc/{os.getpid()}/task").glob("*/children"):
+        try:
+            out.update(int(p) for p in f.read_text().split())
+        except OSError:
+            pass
+    return out
+
+
+_CHECK = pathlib.Path("/proc/self/stat").exists()
+
+
+def pytest_configure(config):
+    if _CHECK:
+        try:
+            import ctypes
+            ctypes.CDLL(None, use_errno=True).prctl(36, 1, 0, 0, 0)   # PR_SET_CHILD_SUBREAPER
+        except (OSError, AttributeError):
+            pass
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_runtest_logfinish(nodeid, location):
+    if _CHECK:
+        for p in _children():
+            _first_seen.setdefault(p, nodeid)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    if not _CHECK:
+        return
+    import time
+    deadline = time.monotonic() + _LEFT_GRACE
+    while (left := _children()) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    _reap()
+    for p in sorted(left):
+        cmd = _proc_text(p, "cmdline").replace("\0", " ").strip()[:200]
+        _left.append(f"pid {p} ({cmd or _proc_text(p, 'comm').strip()}), first seen after "
+                     f"{_first_seen.get(p, 'the last test')}")
+    if _left and session.exitstatus == 0:
+        session.exitstatus = pytest.ExitCode.TESTS_FAILED
+
+
+def pytest_terminal_summary(terminalreporter):
+    if _left:
+        terminalreporter.section("processes left running", sep="=", red=True, bold=True)
+        terminalreporter.line(f"{len(_left)} child process(es) of the test run still running "
+                              f"{_LEFT_GRACE:g} s after the last test (a test or fixture must "
+                              "stop what it starts):", red=True)
+        for line in _left:
+            terminalreporter.line("  " + line)

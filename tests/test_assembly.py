@@ -151,6 +151,7 @@ def test_glb_named_nodes_in_the_flat_views_colours(box):
     _check_box(named, 2e-5)            # glTF stores float32
 
 
+@pytest.mark.step
 def test_step_one_named_solid_per_panel_on_the_design_numbers(box):
     pytest.importorskip("OCP")
     import tempfile

@@ -183,6 +183,7 @@ def test_a_closed_bezier_cuts_a_hole_of_its_exact_area(tmp_path):
     assert len(part.loops) == 2
 
 
+@pytest.mark.step
 def test_step_edges_lie_on_the_chain(tmp_path):
     """The STEP file, re-read by OCP: every point of the bottom face's edges lies on the
     heart's cubics (their own control points, evaluated here) to 1e-9 mm."""

@@ -352,6 +352,7 @@ def test_offset_hull_and_fillet_of_an_ellipse_are_located_refusals(compile_text)
         assert errs[0].span.line == at
 
 
+@pytest.mark.step
 def test_an_ellipse_is_an_ellipse_in_step(compile_text, tmp_path):
     pytest.importorskip("OCP")
     from OCP.BRepAdaptor import BRepAdaptor_Curve

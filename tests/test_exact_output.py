@@ -485,6 +485,7 @@ def step_faces(path):
     return kinds.count(GeomAbs_Cylinder), kinds.count(GeomAbs_Plane), len(kinds), g.Mass()
 
 
+@pytest.mark.step
 def test_step_slot_has_exactly_two_cylinders(outdir):
     pytest.importorskip("OCP")
     src = "solid s { a = Slot(center=(0, 0), length=24, width=5.5, rotation=0 deg) }"
@@ -494,6 +495,7 @@ def test_step_slot_has_exactly_two_cylinders(outdir):
         f"{cyl} cylinders, {planes} planes, {faces} faces, volume {vol!r} (exact {exact!r})"
 
 
+@pytest.mark.step
 def test_step_filleted_rectangle_has_four_cylinders(outdir):
     pytest.importorskip("OCP")
     src = "solid s {\n    a = Rectangle(center=(0, 0), width=40, height=20)\n    Fillet(radius=5)\n}"

@@ -181,15 +181,24 @@ def check_hpgl(out, data: bytes, passes: int = 1) -> dict:
         if not want or want[-1] != v:
             want.append(v)
     assert speeds == want
-    from matplotlib.path import Path as MPath
     closed = [(_points(paths[k * passes]), cut) for k, cut in enumerate(cuts)
               if cut.operation.startswith("cut")]
     for i, (pi, ci) in enumerate(closed):
         for pj, cj in closed[:i]:
             if len(pj) > 2:
-                assert not MPath(pj).contains_point(tuple(pi[len(pi) // 2])), \
+                assert not _inside(pj, pi[len(pi) // 2]), \
                     f"{ci.part} {ci.operation} cut after {cj.part} {cj.operation} around it"
     return stats
+
+
+def _inside(polyline, point) -> bool:
+    """Whether ``point`` lies inside the closed polyline ``polyline`` (shapely: the ring's
+    interior, the boundary excluded; a self-touching ring is first made valid)."""
+    import shapely
+    poly = shapely.Polygon(polyline)
+    if not poly.is_valid:
+        poly = shapely.make_valid(poly)
+    return bool(poly.contains(shapely.Point(point)))
 
 
 # ------------------------------------------------------------------ the examples

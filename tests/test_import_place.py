@@ -5,7 +5,7 @@ no constraint of the program places: before, its origin was a free unknown that 
 shift (a cover plate's holds moved the board by 0.0014 mm) and `--dof` listed its circles'
 coordinates as free.  Every position is re-read from the written DXF with ezdxf, to 1e-9 mm.
 
-The board: stdlib/drawings/pcb_board.dxf (written by ezdxf, examples/parts/make_drawings.py):
+The board: stdlib/drawings/pcb_board.dxf (written by ezdxf, docs/dev/make_drawings.py):
 on `Edge.Cuts` one closed outline 64 x 42 mm from (0, 0) with rounded corners, and 4 CIRCLEs
 of radius 1.6 at (3.5, 3.5), (60.5, 3.5), (60.5, 38.5), (3.5, 38.5).
 """

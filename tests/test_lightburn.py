@@ -264,9 +264,14 @@ def _outline(prims) -> np.ndarray:
 
 
 def _encloses(outer, inner) -> bool:
-    from matplotlib.path import Path as MPath
+    import shapely
     poly = _outline(outer)
-    return len(poly) > 2 and MPath(poly).contains_point(tuple(_outline(inner)[0]))
+    if len(poly) <= 2:
+        return False
+    ring = shapely.Polygon(poly)
+    if not ring.is_valid:                  # a self-touching outline: its valid equivalent
+        ring = shapely.make_valid(ring)
+    return bool(ring.contains(shapely.Point(_outline(inner)[0])))
 
 
 # ------------------------------------------------------------------ the examples

@@ -541,6 +541,7 @@ def test_thickness_formats_and_round_trips():
 
 
 # ------------------------------------------------------------------ STEP (the `step` extra)
+@pytest.mark.step
 def test_step_keeps_circles_as_cylinders_and_the_exact_volume(compile_text, tmp_path):
     pytest.importorskip("OCP")
     from OCP.BRepAdaptor import BRepAdaptor_Surface
@@ -610,6 +611,7 @@ def test_a_laser_png_shows_its_cuts_one_pixel_wide():
     assert 'stroke-width="0.01"' in r.to_svg(style="laser")      # the SVG keeps its hairline
 
 
+@pytest.mark.step
 @pytest.mark.parametrize("suffix", sorted(__import__("aidl_lang.output", fromlist=["FORMATS"]).FORMATS))
 def test_a_program_that_draws_nothing_is_a_clear_error_for_machines_and_3d(tmp_path, suffix):
     """A program with no shape: SVG, DXF, PDF and PNG are a blank page; every machine and 3D

@@ -1,10 +1,14 @@
 """The release: ``python -m build`` makes a wheel and an sdist that pass ``twine check``, under
 the Apache-2.0 licence (PEP 639 metadata); the wheel installs on its own into a fresh venv (no
 system site-packages, no extras) and has what the compiler reads at run time: the grammar,
-the standard library, the preview's static files and the studio's examples travel inside it
-(`aidl_lang/grammar`, `aidl_lang/stdlib` and `aidl_lang/studio/examples` are links to the
-top-level folders); ``aidl --version`` names it, the core
-formats are written and the extras' formats name the extra to install.
+the standard library, the preview's static files and the example programs travel inside it
+(`aidl_lang/grammar`, `aidl_lang/stdlib` and `aidl_lang/examples` are links to the top-level
+folders in a checkout; the sdist and the wheel hold the files); ``aidl --version`` names it,
+the core formats are written and the extras' formats name the extra to install.  From an
+empty folder outside the checkout every subcommand answers (the smoke tests at the end:
+``prompt``, ``generate``, ``docs``, ``explain``, ``render``, ``import``, ``check``, the MCP
+server's ``prompts/get`` through the MCP client SDK, the studio's gallery over HTTP, ``lsp``
+through an LSP client).
 
 The module builds once and installs once (measured with
 ``pytest --durations=3 tests/test_packaging.py``: about 10 s to build, 25 s to install from
@@ -39,6 +43,9 @@ def dist(tmp_path_factory):
         shutil.copy(ROOT / name, src / name)
     for name in ("grammar", "stdlib", "examples"):
         shutil.copytree(ROOT / name, src / name)
+    (src / "docs").mkdir()
+    for name in ("language.md", "api.md"):            # aidl_lang/docs links to these two
+        shutil.copy(ROOT / "docs" / name, src / "docs" / name)
     shutil.copytree(ROOT / "aidl_lang", src / "aidl_lang", symlinks=True,
                     ignore=shutil.ignore_patterns("__pycache__"))
     r = subprocess.run([sys.executable, "-m", "build", "-o", str(tmp / "dist"), str(src)],
@@ -61,16 +68,22 @@ def test_the_wheel_carries_the_grammar_the_stdlib_and_the_static_files(dist):
     assert need <= names, need - names
     grammar = zipfile.ZipFile(wheel).read("aidl_lang/grammar/aidl.lark").decode()
     assert grammar == (ROOT / "grammar" / "aidl.lark").read_text()
+    for name in ("language.md", "api.md"):          # the MCP server's two references
+        assert zipfile.ZipFile(wheel).read(f"aidl_lang/docs/{name}").decode() == \
+            (ROOT / "docs" / name).read_text()
+    assert not [n for n in names if n.startswith("aidl_lang/docs/") and n.endswith(".py")]
 
 
 @pytest.mark.slow
-def test_the_wheel_carries_the_studio_s_examples(dist):
-    """``aidl_lang/studio/examples`` (a link to ``examples/``) ships every example, every
-    generator example and the files they read, but not the script that made those files."""
+def test_the_wheel_carries_the_examples(dist):
+    """``aidl_lang/examples`` (a link to ``examples/`` in a checkout) ships every example,
+    every generator example and the files they read, and no Python module; the sdist holds
+    them as regular files (no link), so a wheel built from it has them too."""
     wheel, sdist = dist
     names = set(zipfile.ZipFile(wheel).namelist())
-    base = "aidl_lang/studio/examples"
-    assert {f"{base}/telephone.aidl", f"{base}/generators/divider_tray.aidl",
+    base = "aidl_lang/examples"
+    assert {f"{base}/telephone.aidl", f"{base}/bottle_opener.aidl",
+            f"{base}/generators/divider_tray.aidl",
             f"{base}/parts/gears.aidl", f"{base}/parts/logo.svg",
             f"{base}/parts/pcb_board.dxf", "aidl_lang/studio/gallery.py"} <= names
     shipped = {n[len(base) + 1:] for n in names if n.startswith(base + "/")}
@@ -78,11 +91,14 @@ def test_the_wheel_carries_the_studio_s_examples(dist):
             for p in (ROOT / "examples").rglob("*") if p.is_file() and p.suffix != ".py"
             and p.suffix in (".aidl", ".svg", ".dxf")}
     assert shipped == want, shipped ^ want
-    assert not any(n.endswith("make_drawings.py") for n in names)
+    assert not any(n.startswith(base) and n.endswith(".py") for n in names)
+    assert not any(n.startswith("aidl_lang/studio/examples") for n in names)
     assert zipfile.ZipFile(wheel).read(f"{base}/generators/divider_tray.aidl").decode() == \
         (ROOT / "examples" / "generators" / "divider_tray.aidl").read_text()
     with tarfile.open(sdist) as tar:
-        assert f"aidl_lang-{VERSION}/{base}/generators/divider_tray.aidl" in tar.getnames()
+        members = {m.name: m for m in tar.getmembers()}
+        assert members[f"aidl_lang-{VERSION}/{base}/generators/divider_tray.aidl"].isfile()
+        assert not [m for m in members.values() if m.issym() or m.islnk()]
 
 
 @pytest.mark.slow
@@ -277,3 +293,187 @@ def test_version_option_prints_the_installed_version(capsys):
         main(["--version"])
     assert e.value.code == 0
     assert capsys.readouterr().out == f"aidl {VERSION}\n"
+
+
+# ------------------------------------------------------------------ every subcommand, from the wheel
+def _aidl(venv: Path, *args: str, cwd: Path, timeout: float = 120,
+          env: dict | None = None) -> subprocess.CompletedProcess:
+    """``venv/bin/aidl ARGS`` in ``cwd`` (an empty folder outside the checkout), without this
+    checkout on PYTHONPATH."""
+    base = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    return subprocess.run([str(venv / "bin" / "aidl"), *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=cwd, env={**base, **(env or {})})
+
+
+def _clean(r: subprocess.CompletedProcess) -> None:
+    assert "Traceback" not in r.stderr and "internal error" not in r.stderr, r.stderr[-3000:]
+
+
+@pytest.fixture
+def empty(tmp_path):
+    """An empty folder outside the checkout (the current folder of every smoke test)."""
+    d = tmp_path / "empty"
+    d.mkdir()
+    return d
+
+
+@pytest.mark.slow
+def test_from_the_wheel_prompt_and_generate_read_the_shipped_examples(plain_install, empty):
+    """``aidl prompt`` carries the example programs shipped in the wheel (the same text as this
+    checkout's prompt), every one of them with ``--examples 4``; ``aidl generate`` builds its
+    prompt and then says it cannot reach the model's server (exit 1, nothing written): never
+    a FileNotFoundError."""
+    from aidl_lang.llm.prompt import PROMPT_EXAMPLES, system_prompt
+    venv, _ = plain_install
+    r = _aidl(venv, "prompt", cwd=empty)
+    _clean(r)
+    assert r.returncode == 0 and r.stdout.strip() == system_prompt().strip()
+    assert "opener" in r.stdout                      # examples/bottle_opener.aidl
+    r = _aidl(venv, "prompt", "--examples", str(len(PROMPT_EXAMPLES)), cwd=empty)
+    _clean(r)
+    assert r.returncode == 0
+    assert r.stdout.strip() == system_prompt(len(PROMPT_EXAMPLES)).strip()
+    r = _aidl(venv, "generate", "a plate", "-o", "out.aidl", "--rounds", "1", "--api-key", "x",
+              "--base-url", "http://127.0.0.1:9/v1", cwd=empty)
+    _clean(r)
+    assert r.returncode == 1 and "cannot reach http://127.0.0.1:9/v1" in r.stderr, r.stderr
+    assert list(empty.iterdir()) == []
+
+
+@pytest.mark.slow
+def test_from_the_wheel_docs_explain_check_render_and_import(plain_install, empty):
+    """``docs``, ``explain``, ``check``, ``render`` and ``import`` from an empty folder: the
+    import of the board drawing (a DXF of KiCad's layers) writes a program that checks, and
+    the rendered DXF is re-read by ezdxf with its four mounting holes."""
+    venv, prog = plain_install
+    r = _aidl(venv, "docs", "Circle", cwd=empty)
+    _clean(r)
+    assert r.returncode == 0 and "diameter" in r.stdout
+    r = _aidl(venv, "docs", "spur_gear", cwd=empty)            # a stdlib template
+    assert r.returncode == 0 and "teeth" in r.stdout, r.stdout + r.stderr
+    r = _aidl(venv, "explain", "E0103", cwd=empty)
+    _clean(r)
+    assert r.returncode == 0 and "E0103" in r.stdout
+    r = _aidl(venv, "check", str(prog), cwd=empty)
+    _clean(r)
+    assert r.returncode == 0, r.stdout + r.stderr
+    shutil.copy(ROOT / "examples" / "parts" / "pcb_board.dxf", empty / "board.dxf")
+    r = _aidl(venv, "import", "board.dxf", "-o", "board.aidl", "--layer", "Edge.Cuts",
+              cwd=empty)
+    _clean(r)
+    assert r.returncode == 0 and (empty / "board.aidl").is_file(), r.stderr
+    r = _aidl(venv, "check", "board.aidl", cwd=empty)
+    _clean(r)
+    assert r.returncode == 0, r.stdout + r.stderr
+    r = _aidl(venv, "render", "board.aidl", "-o", "out.dxf", cwd=empty)
+    _clean(r)
+    assert r.returncode == 0, r.stderr
+    import ezdxf
+    circles = ezdxf.readfile(str(empty / "out.dxf")).modelspace().query("CIRCLE")
+    assert sorted(round(c.dxf.radius, 6) for c in circles) == [1.6] * 4   # M3 holes
+
+
+@pytest.fixture(scope="module")
+def mcp_path(plain_install, tmp_path_factory):
+    """The ``mcp`` extra's SDK for the wheel's venv, installed beside it (``pip install
+    --target``, on PYTHONPATH for the server only), so the plain venv stays without extras.
+    The requirement is read from the wheel's own metadata."""
+    venv, _ = plain_install
+    r = subprocess.run([str(venv / "bin" / "python"), "-c",
+                        "from importlib.metadata import requires\n"
+                        "print(next(r.split(';')[0] for r in requires('aidl-lang')"
+                        " if 'extra == \"mcp\"' in r))"],
+                       capture_output=True, text=True, timeout=60, cwd=venv)
+    assert r.returncode == 0 and r.stdout.strip().startswith("mcp"), r.stderr
+    target = tmp_path_factory.mktemp("mcp")
+    p = subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q",
+                        "--disable-pip-version-check", "--no-compile", "--target", str(target),
+                        r.stdout.strip()], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr[-3000:]
+    return target
+
+
+@pytest.mark.slow
+@pytest.mark.asyncio
+async def test_from_the_wheel_the_mcp_server_gives_its_prompt_and_examples(plain_install,
+                                                                           mcp_path, empty):
+    """``aidl mcp`` of the wheel, driven by the MCP client SDK over stdio from an empty
+    folder: ``prompts/get aidl`` returns the system prompt with the shipped examples (and the
+    request appended), ``aidl://examples/bottle_opener.aidl`` is the example's text and
+    ``aidl://docs/language`` the language reference."""
+    from mcp.client.session import ClientSession
+    from mcp.client.stdio import StdioServerParameters, stdio_client
+    venv, _ = plain_install
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    params = StdioServerParameters(command=str(venv / "bin" / "aidl"),
+                                   args=["mcp", "--root", str(empty)], cwd=str(empty),
+                                   env={**env, "PYTHONPATH": str(mcp_path)})
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            got = await session.get_prompt("aidl", {"request": "a plate with two holes"})
+            text = "\n".join(m.content.text for m in got.messages)
+            assert "```aidl" in text and "Design this part: a plate with two holes" in text
+            assert "bottle_opener" in text or "opener" in text
+            res = await session.read_resource("aidl://examples/bottle_opener.aidl")
+            assert res.contents[0].text == (ROOT / "examples" / "bottle_opener.aidl").read_text()
+            res = await session.read_resource("aidl://docs/language")
+            assert res.contents[0].text == (ROOT / "docs" / "language.md").read_text()
+
+
+@pytest.mark.slow
+def test_from_the_wheel_the_studio_serves_its_gallery(plain_install, empty):
+    """``aidl studio --port 0`` of the wheel, started in an empty folder: the page and the
+    gallery's list (the same entries as this checkout's) and one thumbnail are served; the
+    studio stops on SIGTERM."""
+    import json
+    import urllib.request
+
+    from aidl_lang.studio import gallery
+    from benchmarks.serve_latency import launched
+    venv, _ = plain_install
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    with launched([str(venv / "bin" / "aidl"), "studio", "--port", "0", "--compilers", "1"],
+                  cwd=empty, env=env, timeout=120) as (url, proc):
+        with urllib.request.urlopen(url, timeout=60) as r:
+            assert r.status == 200 and b"<html" in r.read().lower()
+        with urllib.request.urlopen(url + "api/gallery", timeout=120) as r:
+            doc = json.loads(r.read())
+        items = doc["entries"] if isinstance(doc, dict) else doc
+        assert sorted(e["id"] for e in items) == sorted(e.id for e in gallery.entries())
+        with urllib.request.urlopen(url + "api/thumb/example/bottle_opener.svg",
+                                    timeout=120) as r:
+            assert b"<path" in r.read()
+    assert proc.wait(timeout=30) is not None
+
+
+@pytest.mark.slow
+@pytest.mark.asyncio
+async def test_from_the_wheel_the_language_server_initializes_and_diagnoses(plain_install,
+                                                                           empty):
+    """``aidl lsp`` of the wheel with an LSP client (pytest-lsp's, over stdio): ``initialize``
+    answers with the server's name, a document with an unknown shape gets its E0103
+    diagnostic, and ``shutdown`` + ``exit`` end the server."""
+    from lsprotocol import types as T
+    from pytest_lsp import client_capabilities, make_test_lsp_client
+    venv, _ = plain_install
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    client = make_test_lsp_client()
+    await client.start_io(str(venv / "bin" / "aidl"), "lsp", cwd=str(empty), env=env)
+    try:
+        init = await client.initialize_session(T.InitializeParams(
+            capabilities=client_capabilities("visual-studio-code"),
+            root_uri=empty.as_uri()))
+        assert init.server_info is not None and init.server_info.name
+        uri = (empty / "t.aidl").as_uri()
+        client.text_document_did_open(T.DidOpenTextDocumentParams(T.TextDocumentItem(
+            uri=uri, language_id="aidl", version=1,
+            text="solid s {\n    c = Circel(center=(0, 0), radius=5)\n}\n")))
+        for _ in range(20):
+            await client.wait_for_notification("textDocument/publishDiagnostics")
+            if client.diagnostics.get(uri):
+                break
+        assert "E0103" in {d.code for d in client.diagnostics[uri]}, client.diagnostics
+        await client.shutdown_session()
+    finally:
+        await client.stop()

@@ -433,6 +433,7 @@ def test_cut_spline_comes_out_as_exact_pieces_in_every_writer(tmp_path):
         assert match
 
 
+@pytest.mark.step
 def test_step_holds_bspline_curves(tmp_path):
     """The STEP file, re-read by OCP: the body's edges are B-spline curves whose every
     point lies on the program's spline (5e-12 mm seen)."""

@@ -231,3 +231,42 @@ def test_a_worker_marked_retiring_answers_its_next_request_from_a_fresh_process(
         assert w.proc.pid != first and not w.retiring and w.restarts == 0
     finally:
         w.stop()
+
+
+def test_sigterm_stops_a_studio_of_several_processes_and_its_workers():
+    """`aidl studio --processes 2` ends on SIGTERM within seconds and its uvicorn workers with
+    it (the supervisor's own SIGTERM handler; replaced by a plain exit, the studio waited on
+    its workers for ever and, once killed, left them running)."""
+    import signal
+    import subprocess
+    import time
+    from benchmarks.studio_server import studio
+
+    def children(pid):
+        out = set()
+        for f in Path(f"/proc/{pid}/task").glob("*/children"):
+            out.update(int(p) for p in f.read_text().split())
+        return out
+
+    if not Path("/proc/self/task").is_dir():
+        pytest.skip("reads /proc (Linux)")
+    with studio("--processes", "2", "--compilers", "1") as (_url, proc):
+        deadline = time.monotonic() + 30                 # the two servers start after the URL
+        while len(workers := {p for p in children(proc.pid) if b"spawn_main" in
+                              Path(f"/proc/{p}/cmdline").read_bytes()}) < 2 \
+                and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert len(workers) == 2, workers
+        proc.send_signal(signal.SIGTERM)
+        try:
+            proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            pytest.fail("aidl studio --processes 2 did not end within 20 s of SIGTERM")
+        deadline = time.monotonic() + 10
+        while any(Path(f"/proc/{p}").exists() and "Z" not in
+                  Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[-1][:3]
+                  for p in workers) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        left = [p for p in workers if Path(f"/proc/{p}").exists()
+                and "Z" not in Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[-1][:3]]
+        assert not left, f"workers still running after the studio ended: {left}"

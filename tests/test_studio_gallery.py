@@ -28,8 +28,14 @@ WRITTEN = [e for e in ENTRIES if e.synthesized or "# the arguments of " in e.sou
 
 
 def test_the_examples_folder_is_the_repository_s():
+    """One examples folder for the gallery, `aidl prompt` and the MCP server: the package's
+    aidl_lang/examples, a link to the repository's examples/ (the wheel holds the files)."""
+    from aidl_lang.llm.prompt import EXAMPLES_DIR
+    from aidl_lang.mcp.server import _EXAMPLES
     assert g.EXAMPLES.resolve() == (ROOT / "examples").resolve()
-    assert (ROOT / "aidl_lang" / "studio" / "examples").is_symlink()
+    assert g.EXAMPLES == EXAMPLES_DIR == _EXAMPLES == ROOT / "aidl_lang" / "examples"
+    assert (ROOT / "aidl_lang" / "examples").is_symlink()
+    assert not (ROOT / "aidl_lang" / "studio" / "examples").exists()
 
 
 def test_every_example_and_generator_example_file_appears_once():

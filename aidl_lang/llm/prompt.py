@@ -11,13 +11,11 @@ call: :func:`word_count` measures it (about 0.75 words per token for English and
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 from ..reference import stdlib_lines
 from ..registry import (BBOX_MEMBERS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE,
                         UNITS_LENGTH)
-
-EXAMPLES_DIR = Path(__file__).resolve().parent.parent.parent / "examples"
+from ..sources import EXAMPLES as EXAMPLES_DIR    # inside the package: shipped in the wheel
 # short and varied, most useful first: holes, loops and bounding-box equations; templates,
 # fillets and patterns; hierarchy + stacking relations; drawings, text and params.
 # `aidl prompt` gives the first DEFAULT_EXAMPLES; `--examples N` the first N.

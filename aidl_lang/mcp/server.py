@@ -27,6 +27,7 @@ from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotatio
 from pydantic import Field
 
 from ..output.writers import FORMATS
+from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from . import tools as T
 from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
 from .wording import for_agents
@@ -128,8 +129,9 @@ with centres and sizes, texts, symmetries) and `values` to read exact positions 
 relative to the server's allowed folder; nothing outside it can be read or written."""
 
 _PKG = Path(__file__).resolve().parent.parent
-_DOCS = _PKG.parent / "docs"
-_EXAMPLES = _PKG.parent / "examples"
+# the two references the server offers as resources, inside the package (links to docs/ in a
+# checkout, the files themselves in the wheel)
+_DOCS = _PKG / "docs"
 
 
 def _text_of(path: Path, what: str) -> Callable[[], str]:

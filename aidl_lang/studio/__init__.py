@@ -76,9 +76,13 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
     shown = f"[{host}]" if ":" in host else host
     print(f"aidl studio: http://{shown}:{port}/  ({max(1, processes)} process"
           f"{'es' if processes > 1 else ''} x {compilers} compilers; Ctrl-C stops)", flush=True)
-    # uvicorn raises a SIGTERM again after its graceful shutdown: end through `finally` then,
-    # so the sessions' folder is removed (the default action would skip it)
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
+    if supervisor is None:
+        # uvicorn raises a SIGTERM again after its graceful shutdown: end through `finally`
+        # then, so the sessions' folder is removed (the default action would skip it).  Not
+        # with several processes: the supervisor's own SIGTERM handler stops and joins its
+        # workers; replacing it left them running, and the interpreter's exit waiting on them
+        # (the studio never ended; killed, its workers were orphaned)
+        signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
     try:
         if supervisor is not None:
             supervisor.run()

@@ -30,8 +30,8 @@ Units: ``params`` are in display units, as :mod:`aidl_lang.serve.params` gives t
 in mm, angles in degrees, numbers plain.  :func:`thumbnail` returns an SVG whose user units
 are millimetres, sized in pixels.
 
-The examples are read from ``aidl_lang/studio/examples`` (a link to the repository's
-``examples/`` folder in a checkout, a copy inside the wheel) and the generators from the
+The examples are read from ``aidl_lang/examples`` (:data:`aidl_lang.sources.EXAMPLES`: a
+link to the repository's ``examples/`` folder in a checkout, a copy inside the wheel) and the generators from the
 bundled standard library.  Not part of the stable API.
 """
 from __future__ import annotations
@@ -46,8 +46,8 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from .. import ast as A
+from ..sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
 
-EXAMPLES = Path(__file__).resolve().parent / "examples"
 KINDS = ("example", "generator")
 RENDERABLE = ("solid", "assembly", "drawing")
 

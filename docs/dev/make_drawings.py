@@ -1,4 +1,6 @@
-"""Writes the drawings the examples import (run it again after changing it):
+"""Writes the drawings the examples import, into ``examples/parts/`` (run it again after
+changing it; it lives here, not beside them, because ``examples/`` ships inside the wheel as
+data and a ``.py`` there would ship as a module):
 
 * ``pcb_board.dxf``: a small board in KiCad's convention: its outline on layer ``Edge.Cuts``
   as LINE and ARC entities (rounded corners of 3 mm), four M3 mounting holes as CIRCLEs
@@ -8,7 +10,7 @@
   cubic Béziers, a circular arc and a circle.  Used by ``examples/logo_plate.aidl``.
 
 Copies go to ``stdlib/drawings/`` (``Drawing2D("std/drawings/...")``) for the docs and ``aidl docs``.
-``python examples/parts/make_drawings.py``
+``python docs/dev/make_drawings.py``
 """
 from __future__ import annotations
 
@@ -17,8 +19,9 @@ from pathlib import Path
 
 import ezdxf
 
-HERE = Path(__file__).resolve().parent
-DOCS = HERE.parent.parent / "stdlib" / "drawings"
+ROOT = Path(__file__).resolve().parent.parent.parent
+HERE = ROOT / "examples" / "parts"
+DOCS = ROOT / "stdlib" / "drawings"
 
 W, H, R = 64.0, 42.0, 3.0            # board size and corner radius, mm
 HOLES = [(3.5, 3.5), (W - 3.5, 3.5), (W - 3.5, H - 3.5), (3.5, H - 3.5)]
