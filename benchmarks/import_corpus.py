@@ -10,8 +10,8 @@ program it writes is compiled by the real compiler (:func:`aidl_lang.pipeline.co
 A program of more than N segments (default 2000) is compiled without the final-part geometry
 checks (warnings only, W05xx; ``pipeline._compile(shape_checks=False)``): those were
 quadratic in the segments when this was written (issue 58) and are measured elsewhere
-(benchmarks/checks_scaling.py).  Pass ``--full-checks-below 0`` to... the opposite:
-``--full-checks-below 1e9`` checks everything.
+(benchmarks/checks_scaling.py); ``--full-checks-below 1e9`` checks everything.  A folder may
+be given both plain and after ``--laser`` (Boxes.py's SVGs both ways).
 
 Prints one row per folder and a total: files, imported (a program written), compiled with no
 error, refused cleanly (a :class:`~aidl_lang.drawing.read.DrawingError`, by code), tracebacks
@@ -124,18 +124,18 @@ def main(argv=None) -> int:
     ap.add_argument("--full-checks-below", type=float, default=2000)
     ap.add_argument("-v", "--verbose", action="store_true")
     a = ap.parse_args(argv)
-    rows = [(f, run(f, False, a.full_checks_below, a.verbose)) for f in a.folders] + \
-           [(f, run(f, True, a.full_checks_below, a.verbose)) for f in a.laser]
+    rows = [(f, False, run(f, False, a.full_checks_below, a.verbose)) for f in a.folders] + \
+           [(f, True, run(f, True, a.full_checks_below, a.verbose)) for f in a.laser]
     head = (f"{'corpus':<28} {'files':>5} {'imported':>8} {'compiled':>8} {'failed':>6} "
             f"{'refused (codes)':<22} {'tracebacks':>10} {'import s':>8} {'compile s':>9}  "
             f"slowest import")
-    print(head)
+    print(head, flush=True)
     total = collections.Counter()
     codes = collections.Counter()
-    for f, r in rows:
+    for f, laser, r in rows:
         c = ", ".join(f"{k} {v}" for k, v in sorted(r["codes"].items())) or "-"
         tb = r["tracebacks"] + r["compile tracebacks"]
-        print(f"{f.name + (' (laser)' if f in a.laser else ''):<28} {r['files']:>5} "
+        print(f"{f.name + (' (--roles laser)' if laser else ''):<28} {r['files']:>5} "
               f"{r['imported']:>8} {r['compiled']:>8} {r['failed']:>6} "
               f"{str(r['refused']) + ' (' + c + ')':<22} {tb:>10} {r['import_s']:>8.1f} "
               f"{r['compile_s']:>9.1f}  {r['slowest'][1]} {r['slowest'][0]:.2f} s")

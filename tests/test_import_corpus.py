@@ -183,3 +183,20 @@ def test_no_layouts_dxf_drops_its_zero_spans_and_compiles():
     # the outline and its one hole, each cut at its corners into open Bezier statements
     assert "closed=true" not in text
     assert text.count("hole ") == 1
+
+
+def test_the_bound_grows_with_the_drawing_so_a_kept_piece_is_never_refused():
+    """Far from the origin (a georeferenced sheet, 400 m out) the compiler's "one point" is
+    1e-9 x 400 000 mm = 4e-4 mm: a cubic 2e-4 mm long is refused there (E0108), though it is
+    longer than the 1e-6 mm the chaining calls one point.  The bound, 1e-8 x the largest
+    coordinate (4e-3 mm here), drops it; a 0.01 mm cubic beside it is kept."""
+    svg = b"""<svg xmlns="http://www.w3.org/2000/svg" width="1000000mm" height="100mm"
+ viewBox="0 0 1000000 100"><path stroke="#000000" fill="none" d="M 400000 10 L 400010 10
+ C 400010 10.0002 400010.0001 10.0002 400010.0002 10 L 400010.0002 20
+ C 400010.0002 20.01 400010.01 20.01 400010 20.01 L 400000 20 Z"/></svg>"""
+    text, notes = import_drawing(svg, "far.svg")
+    dropped = [n.message for n in notes if "dropped" in n.message]
+    assert len(dropped) == 1 and "1 piece of `far.svg` dropped" in dropped[0], dropped
+    assert "within 0.004 mm" in dropped[0]
+    assert len(re.findall(r"= Bezier\(", text)) == 1           # the 0.01 mm one
+    assert errors(compile_source(text, "far.aidl")) == []
