@@ -480,8 +480,117 @@ _OPTS: "contextvars.ContextVar[_Options]" = contextvars.ContextVar("aidl_drawing
                                                                   default=_Options())
 
 
-def _finish(pieces, loops, circles, ellipses, notes, unit, name) -> Drawing:
+DEGENERATE_ABS = JOIN_TOL    # mm: a piece all of whose points lie this close to its start
+DEGENERATE_REL = 1e-8       # ... or this share of the drawing's largest coordinate is dropped
+
+
+def degenerate_tol(pieces, loops, circles, ellipses) -> float:
+    """The size (mm) at or below which a piece of the drawing is one point and is dropped
+    (:func:`_drop_degenerate`): ``max(DEGENERATE_ABS, DEGENERATE_REL * c)``, ``c`` the largest
+    absolute coordinate of the pieces' ends, circles' and ellipses' centres.  The compiler
+    calls two points one when they are within ``1e-9 * max(1 mm, the largest coordinate of
+    the statement)`` (``Bezier`` and ``Spline``: E0108 "is one point",
+    :func:`aidl_lang.geometry.spline.check_points`), so a piece kept here stays ten times
+    past what it refuses, after the writer's shortest-decimal rounding (1e-12 mm); and
+    :data:`JOIN_TOL` is where two ends are one point for the chaining."""
+    c = 0.0
+    for segs in list(pieces) + [segs for segs, _src in loops]:
+        for s in segs:
+            for p in (s.start, s.end):
+                c = max(c, abs(p[0]), abs(p[1]))
+    for x in circles:
+        c = max(c, abs(x.center[0]), abs(x.center[1]))
+    for e in ellipses:
+        c = max(c, abs(e[0]), abs(e[1]))
+    return max(DEGENERATE_ABS, DEGENERATE_REL * c)
+
+
+def _reach(s) -> float:
+    """An upper bound (mm) of how far segment ``s`` gets from its start."""
+    if isinstance(s, Line):
+        return math.dist(s.start, s.end)
+    if isinstance(s, Arc):
+        return s.radius * min(2.0, abs(s.sweep))
+    if isinstance(s, Circle):
+        return 2 * s.radius
+    b = s.box()                                  # Spline, EllipticArc: the exact box
+    return math.hypot(b[2] - b[0], b[3] - b[1])
+
+
+def _span_reach(b) -> float:
+    return max(math.dist(b[0], q) for q in b[1:])
+
+
+def _drop_in(segs: list, tol: float, dropped: dict) -> list:
+    """``segs`` without the pieces that are one point (within ``tol``), each counted in
+    ``dropped`` by kind; a spline piece loses only its spans that are one point (the next span
+    starts where the previous ends: the Bezier chain the writer writes shares them)."""
+    out = []
+    for s in segs:
+        if isinstance(s, Spline):
+            spans = s.spans
+            keep = [i for i, b in enumerate(spans) if _span_reach(b) > tol]
+            if len(keep) < len(spans):
+                dropped["Bézier piece"] = dropped.get("Bézier piece", 0) + len(spans) - len(keep)
+                if not keep:
+                    continue
+                from ..geometry.curves import _span_steps
+                h = _span_steps(s)
+                kept = [list(spans[i]) for i in keep]
+                for j in range(1, len(kept)):        # each span starts where the last ended
+                    kept[j][0] = kept[j - 1][3]
+                s = bezier_spline(kept, [h[i] for i in keep] if len(h) == len(spans) else None)
+            out.append(s)
+        elif _reach(s) <= tol:
+            kind = {Line: "line", Arc: "arc", EllipticArc: "elliptical arc",
+                    Circle: "circle"}.get(type(s), "piece")
+            dropped[kind] = dropped.get(kind, 0) + 1
+        else:
+            out.append(s)
+    return out
+
+
+def _drop_degenerate(pieces, loops, circles, ellipses, notes, name, hatch_circles=()):
+    """The pieces, loops, circles and ellipses of a drawing without what is one point: a
+    line, arc, Bézier span or elliptical arc all of whose points lie within
+    :func:`degenerate_tol` of its start, a circle or ellipse of a radius or semi-axis within
+    it (a Boxes.py ``C x,y x,y x,y``, a DXF spline's repeated knot, a LINE from a point to
+    itself).  The compiler refuses some of them (``Bezier``: E0108 "is one point") and the
+    others draw nothing; one ``W0130`` note counts them by kind."""
+    tol = degenerate_tol(pieces, loops, list(circles) + list(hatch_circles), ellipses)
+    dropped: dict = {}
+    pieces = [q for q in (_drop_in(p, tol, dropped) for p in pieces) if q]
+    loops = [(q, src) for q, src in ((_drop_in(p, tol, dropped), src) for p, src in loops) if q]
+    keep_c = [c for c in circles if c.radius > tol]
+    keep_h = [c for c in hatch_circles if c.radius > tol]
+    if len(keep_c) + len(keep_h) < len(circles) + len(hatch_circles):
+        dropped["circle"] = dropped.get("circle", 0) + len(circles) + len(hatch_circles) \
+            - len(keep_c) - len(keep_h)
+    keep_e = [e for e in ellipses if min(e[2], e[3]) > tol]
+    if len(keep_e) < len(ellipses):
+        dropped["ellipse"] = len(ellipses) - len(keep_e)
+    if dropped:
+        n = sum(dropped.values())
+        what = ", ".join(_plural(v, w) for w, v in sorted(dropped.items()))
+        notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of `{name}` dropped: "
+                                   f"zero length, all {'its' if n == 1 else 'their'} points "
+                                   f"within {tol:.3g} mm of one point ({what})",
+                          "nothing is lost: they draw nothing; delete them in the drawing "
+                          "program to silence this"))
+    return pieces, loops, keep_c, keep_e, keep_h
+
+
+def _finish(pieces, loops, circles, ellipses, notes, unit, name,
+            hatch_circles: list | None = None) -> Drawing:
+    """The :class:`Drawing` of the pieces read: pieces that are one point dropped
+    (:func:`_drop_degenerate`; ``hatch_circles``, a DXF's, are filtered in place), duplicates
+    removed, chained, gaps within the closing tolerance closed, loops sorted into outlines and
+    paths."""
     opts = _OPTS.get()
+    pieces, loops, circles, ellipses, kept = _drop_degenerate(
+        pieces, loops, circles, ellipses, notes, name, hatch_circles or ())
+    if hatch_circles:
+        hatch_circles[:] = kept
     pieces, loops, dups = _dedupe(pieces, loops)
     if dups:
         notes.append(Note("W0130", f"{dups} duplicate segment{'s' if dups > 1 else ''} of "
@@ -1052,7 +1161,7 @@ def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, s
     """The drawing of what was read, a HATCH boundary that repeats an outline drawn by other
     entities read once, and the notes: skipped entities by kind, reason and layer (numbers
     that are no size in one note), widths ignored, z left out, ezdxf's own log lines."""
-    d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    d = _finish(pieces, loops, circles, ellipses, notes, unit, name, hatch_circles)
     drawn = {_loop_key(o.segments) for o in d.outlines if o.source != "HATCH"}
     keep, dup = [], 0
     for o in d.outlines:
@@ -1552,8 +1661,7 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
             continue
         a, b = P(seg.start), P(seg.end)
         if isinstance(seg, S.Line):
-            if math.dist(a, b) > 1e-12:
-                cur.append(Line(a, b))
+            cur.append(Line(a, b))          # one of zero length: dropped and counted later
         elif isinstance(seg, S.CubicBezier):
             cur.append(bezier_spline([[a, P(seg.control1), P(seg.control2), b]]))
         elif isinstance(seg, S.QuadraticBezier):
