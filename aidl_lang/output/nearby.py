@@ -23,6 +23,20 @@ from __future__ import annotations
 import numpy as np
 
 SMALL_BOXES = 64
+MAX_PAIRS = 3_000_000   # pairs (or candidates) one query may list: ~250 MB while they are
+                        # measured; past it :class:`TooManyPairs` (the check says it did not
+                        # look, W0521) instead of a quadratic list of a dense cluster
+CHUNK = 500_000         # candidates measured at once by :func:`close_pairs`
+
+
+class TooManyPairs(Exception):
+    """More than ``limit`` pairs (or candidate pairs) lie within the distance asked: a
+    dense cluster (a drawing of thousands of edges all within the distance of one another),
+    refused before they are listed.  ``count``: how many candidates there were."""
+
+    def __init__(self, count: int, limit: int):
+        super().__init__(f"{count:,} pairs, more than {limit:,}")
+        self.count, self.limit = count, limit
 SMALL_VERTS = 4000
 BAND_PER_ITEM = 16      # candidates per vertex and segment above which the grid finds them
 
@@ -52,9 +66,11 @@ class _Grid:
         self.order = np.argsort(key, kind="stable")
         self.keys = key[self.order]
 
-    def in_boxes(self, qlo, qhi) -> tuple[np.ndarray, np.ndarray]:
+    def in_boxes(self, qlo, qhi, limit: int | None = None) -> tuple[np.ndarray, np.ndarray]:
         """``(q, p)``: every point ``p`` inside box ``q`` (``qlo[q]`` to ``qhi[q]``, edges
-        included), in the order of the queries."""
+        included), in the order of the queries; :class:`TooManyPairs` when the cells searched
+        hold more than ``limit`` (default :data:`MAX_PAIRS`) points in all."""
+        limit = MAX_PAIRS if limit is None else limit
         qlo = np.asarray(qlo, dtype=float).reshape(-1, 2)
         qhi = np.asarray(qhi, dtype=float).reshape(-1, 2)
         with np.errstate(invalid="ignore", over="ignore"):
@@ -77,6 +93,8 @@ class _Grid:
         n = int(cnt.sum())
         if not n:
             return none
+        if n > limit:
+            raise TooManyPairs(n, limit)
         q = qs[np.repeat(k, cnt)]
         p = self.order[np.repeat(first, cnt) + (np.arange(n) - np.repeat(np.cumsum(cnt) - cnt, cnt))]
         x, y = self.P[p, 0], self.P[p, 1]
@@ -143,6 +161,8 @@ def _candidates(c, R, idx) -> np.ndarray:
             if len(q):
                 out.append(np.column_stack([big[q], small[p]]))
         if len(big) == len(idx):          # all alike in size but spread: no smaller set
+            if len(big) * (len(big) - 1) // 2 > MAX_PAIRS:
+                raise TooManyPairs(len(big) * (len(big) - 1) // 2, MAX_PAIRS)
             ii, jj = np.triu_indices(len(big), 1)
             out.append(np.column_stack([big[ii], big[jj]]))
         else:
@@ -156,7 +176,9 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
 
     ``vertices`` (N x 2) with their feature ids ``vfeat``; segments from ``seg_a`` to
     ``seg_b`` (M x 2 each) with ``sfeat``.  Returns ``(v, s, d, foot)``: vertex indices,
-    segment indices, the exact distances and the nearest points on the segments (K x 2)."""
+    segment indices, the exact distances and the nearest points on the segments (K x 2).
+    :class:`TooManyPairs` past :data:`MAX_PAIRS` pairs (the candidates of a large input are
+    measured :data:`CHUNK` at a time, so memory stays bounded)."""
     V = np.asarray(vertices, dtype=float).reshape(-1, 2)
     A = np.asarray(seg_a, dtype=float).reshape(-1, 2)
     B = np.asarray(seg_b, dtype=float).reshape(-1, 2)
@@ -170,10 +192,36 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
         s, v = _band_pairs(V.take(vk, axis=0), A.take(sk, axis=0), B.take(sk, axis=0),
                            dist)                       # in the same order as all of them
         s, v = sk[s], vk[v]
-    else:
-        s, v = _grid_pairs(V, A, B, dist)
-    if not len(s):
+        return _measure(V, A, B, vfeat, sfeat, v, s, dist) if len(s) else empty
+    # large: the segments in runs whose candidates number at most CHUNK (a run is halved
+    # while it has more), each run measured before the next is listed, the kept pairs at
+    # most MAX_PAIRS in all; the same pairs, in the same order, as one query
+    L = np.hypot(*(B - A).T)
+    grid = _Grid(V, max(_median(L), dist, 1e-9))
+    lo, hi = np.minimum(A, B) - dist, np.maximum(A, B) + dist
+    out, kept, todo = [], 0, [(0, len(A))]
+    while todo:
+        i, j = todo.pop()
+        try:
+            q, p = grid.in_boxes(lo[i:j], hi[i:j], limit=CHUNK if j - i > 1 else MAX_PAIRS)
+        except TooManyPairs:
+            m = (i + j) // 2
+            todo += [(m, j), (i, m)]
+            continue
+        if len(q):
+            got = _measure(V, A, B, vfeat, sfeat, p, q + i, dist)
+            kept += len(got[0])
+            if kept > MAX_PAIRS:
+                raise TooManyPairs(kept, MAX_PAIRS)
+            out.append(got)
+    if not out:
         return empty
+    return tuple(np.concatenate([o[k] for o in out]) for k in range(4))
+
+
+def _measure(V, A, B, vfeat, sfeat, v, s, dist):
+    """The candidate pairs (vertex ``v``, segment ``s``) of different features whose exact
+    distance is below ``dist``: ``(v, s, d, foot)`` as :func:`close_pairs` returns them."""
     keep = vfeat[v] != sfeat[s]
     s, v = s[keep], v[keep]
     # (rows gathered with take: indexing a 2-column array by an index array costs 15 times as

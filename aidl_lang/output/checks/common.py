@@ -98,6 +98,9 @@ def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
     return res
 
 
+INSIDE_CHUNK = 1_000_000     # (edge, point) candidates :func:`_inside` holds at once (~50 MB)
+
+
 def _inside(pts: np.ndarray, loops) -> np.ndarray:
     """Even-odd point-in-polygon of ``pts`` (N x 2, mm) against the union of closed ``loops``
     (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to -x crosses the loops' edges an odd
@@ -106,7 +109,8 @@ def _inside(pts: np.ndarray, loops) -> np.ndarray:
     The edges of all loops are taken together (the parity of the total equals the XOR of the
     per-loop parities) and each edge is tested only against the points whose y lies in its
     half-open y range ``[min(y1, y2), max(y1, y2))``, found by binary search in the points
-    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E).  The
+    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E), and the
+    memory at most :data:`INSIDE_CHUNK` candidates (the points halved in y order).  The
     crossing abscissa is computed with the same floating-point expression as the reference
     :func:`_inside_loops`, so the result is identical to it."""
     pts = np.asarray(pts, dtype=float).reshape(-1, 2)
@@ -123,6 +127,13 @@ def _inside(pts: np.ndarray, loops) -> np.ndarray:
     total = int(cnt.sum())
     if not total:
         return np.zeros(n, dtype=bool)
+    if total > INSIDE_CHUNK and n > 1:
+        # many edges across the points' y (a comb's teeth): the two halves of the points in
+        # y order apart, so that at most about INSIDE_CHUNK (edge, point) pairs are held
+        res = np.empty(n, dtype=bool)
+        for part in (order[:n // 2], order[n // 2:]):
+            res[part] = _inside(pts[part], (x1, y1, x2, y2))
+        return res
     edge = np.repeat(np.arange(len(x1)), cnt)
     start = np.cumsum(cnt) - cnt
     pt = order[lo[edge] + (np.arange(total) - start[edge])]
