@@ -23,6 +23,8 @@ from __future__ import annotations
 import numpy as np
 
 SMALL_BOXES = 64
+SMALL_PAIRS = 20_000    # box_pairs tests every pair at once up to this many (n <= 200):
+                        # cheaper than the grid's sorts (the telephone's 9 calls: 5.3 -> ? ms)
 MAX_PAIRS = 3_000_000   # pairs (or candidates) one query may list: ~250 MB while they are
                         # measured; past it :class:`TooManyPairs` (the check says it did not
                         # look, W0521) instead of a quadratic list of a dense cluster
@@ -120,7 +122,7 @@ def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
         return np.zeros((0, 2), dtype=np.intp)
     c = (b[:, :2] + b[:, 2:]) / 2
     h = np.abs(b[:, 2:] - b[:, :2]) / 2 + pad
-    if n <= SMALL_BOXES:
+    if n <= SMALL_BOXES or n * (n - 1) // 2 <= SMALL_PAIRS:
         ii, jj = np.triu_indices(n, 1)
         cand = np.column_stack([ii, jj]).astype(np.intp)
     else:
@@ -128,7 +130,7 @@ def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
         cand = _candidates(c, np.hypot(h[:, 0], h[:, 1]) * (1 + 1e-6) + 1e-9, np.arange(n))
     if not len(cand):
         return np.zeros((0, 2), dtype=np.intp)
-    if n > SMALL_BOXES:                   # the grid's pairs, each once, in order
+    if n > SMALL_BOXES and n * (n - 1) // 2 > SMALL_PAIRS:   # the grid's, once each, in order
         cand = np.sort(cand, axis=1)
         key = np.sort(cand[:, 0] * n + cand[:, 1])
         key = key[np.r_[True, key[1:] != key[:-1]]]
@@ -137,6 +139,28 @@ def box_pairs(boxes, pad: float = 0.0) -> np.ndarray:
     lo, hi = np.minimum(b[:, :2], b[:, 2:]) - pad, np.maximum(b[:, :2], b[:, 2:]) + pad
     ok = np.all((lo[i] <= hi[j]) & (lo[j] <= hi[i]), axis=1)
     return cand[ok]
+
+
+def box_pairs_between(a, b, pad: float = 0.0) -> np.ndarray:
+    """The pairs ``(i, j)`` of a box ``a[i]`` and a box ``b[j]`` (n x 4 and m x 4: x0, y0,
+    x1, y1) that overlap or touch once each is grown by ``pad``: what :func:`box_pairs` of
+    both sets gives between them, rows sorted, without the pairs within one set (a part's
+    outline: every edge meets the next).  Up to :data:`SMALL_PAIRS` ``n x m`` every pair at
+    once; else :func:`box_pairs` of both, the pairs within a set dropped."""
+    A = np.asarray(a, dtype=float).reshape(-1, 4)
+    B = np.asarray(b, dtype=float).reshape(-1, 4)
+    if not len(A) or not len(B):
+        return np.zeros((0, 2), dtype=np.intp)
+    if len(A) * len(B) > 10 * SMALL_PAIRS:
+        pairs = box_pairs(np.vstack([A, B]), pad)
+        pairs = pairs[(pairs[:, 0] < len(A)) & (pairs[:, 1] >= len(A))]
+        return np.column_stack([pairs[:, 0], pairs[:, 1] - len(A)]).astype(np.intp)
+    alo, ahi = np.minimum(A[:, :2], A[:, 2:]) - pad, np.maximum(A[:, :2], A[:, 2:]) + pad
+    blo, bhi = np.minimum(B[:, :2], B[:, 2:]) - pad, np.maximum(B[:, :2], B[:, 2:]) + pad
+    ok = ((alo[:, None, 0] <= bhi[None, :, 0]) & (blo[None, :, 0] <= ahi[:, None, 0])
+          & (alo[:, None, 1] <= bhi[None, :, 1]) & (blo[None, :, 1] <= ahi[:, None, 1]))
+    i, j = np.nonzero(ok)
+    return np.column_stack([i, j]).astype(np.intp)
 
 
 def _candidates(c, R, idx) -> np.ndarray:

@@ -267,7 +267,7 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
     (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
     items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
-    from ..nearby import box_pairs
+    from ..nearby import box_pairs_between
     geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
     if not geoms:
         return
@@ -283,14 +283,12 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     S0 = np.concatenate([sg[0] for sg in segs])
     S1 = np.concatenate([sg[1] for sg in segs])
     owner = np.repeat(np.arange(len(segs)), [len(sg[0]) for sg in segs])
-    boxes = np.vstack([np.column_stack([np.minimum(S0, S1), np.maximum(S0, S1)]),
-                       np.column_stack([np.minimum(E0, E1), np.maximum(E0, E1)])])
-    ns = len(S0)
-    pairs = box_pairs(boxes, CUT_CLEAR / 2)
-    pairs = pairs[(pairs[:, 0] < ns) & (pairs[:, 1] >= ns)]
+    pairs = box_pairs_between(np.column_stack([np.minimum(S0, S1), np.maximum(S0, S1)]),
+                              np.column_stack([np.minimum(E0, E1), np.maximum(E0, E1)]),
+                              CUT_CLEAR / 2)       # marks against edges, not edge pairs
     if not len(pairs):
         return
-    si, ej_all = pairs[:, 0], pairs[:, 1] - ns
+    si, ej_all = pairs[:, 0], pairs[:, 1]
     d, pa, _ = _pair_gap(S0[si], S1[si], E0[ej_all], E1[ej_all])
     mk = owner[si]
     order = np.lexsort((d, mk))

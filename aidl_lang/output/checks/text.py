@@ -156,6 +156,9 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> N
         inner = (u0 + e, v0 + e, u1 - e, v1 - e)
         if inner[0] >= inner[2] or inner[1] >= inner[3]:
             continue
+        if boxes[i][1] == 0.0 and (inner[0] > mb[j - n, 2] or mb[j - n, 0] > inner[2]
+                                   or inner[1] > mb[j - n, 3] or mb[j - n, 1] > inner[3]):
+            continue                  # the mark's box misses the (unturned) inner box
         if m not in segs:
             segs[m] = _mark_segments(marks[m])
         length = _length_inside(segs[m], boxes[i][1], inner)
@@ -195,6 +198,17 @@ def _least(ok, top: float) -> float | None:
     return x if ok(x) else hi
 
 
+def _gap_below(tseg, lo, hi, q, c: float) -> float:
+    """The distance from point ``q`` to the strokes ``tseg`` (starts, ends; their boxes
+    ``lo``-``hi``) when it is below ``c``, else a figure of at least ``c`` (only the strokes
+    whose boxes come within ``c`` of it are measured)."""
+    near = np.flatnonzero((lo[:, 0] - c <= q[0]) & (hi[:, 0] + c >= q[0])
+                          & (lo[:, 1] - c <= q[1]) & (hi[:, 1] + c >= q[1]))
+    if not len(near):
+        return math.inf
+    return _seg_gap(tseg[0][near], tseg[1][near], q[None], q[None])[0]
+
+
 def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink,
                      tick=None) -> None:
     """W0513 for an engraved mark that comes closer to a text's strokes than the text's
@@ -226,14 +240,35 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
         if m not in segs:
             segs[m] = _mark_segments(marks[m])
         box = None if g.data.get("along") is not None else boxes[i][2]
-        gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
-        if gap >= c and box is None:
+        # box tests first: the boxes' gap is at most the strokes' gap, and a mark whose box
+        # misses the text's box has no length inside it
+        far = math.hypot(max(bb[i, 0] - mb[j - n, 2], mb[j - n, 0] - bb[i, 2], 0.0),
+                         max(bb[i, 1] - mb[j - n, 3], mb[j - n, 1] - bb[i, 3], 0.0)) > c + 1e-9
+        if far and box is None:
             continue
-        inside = 0.0 if box is None else _length_inside(segs[m], boxes[i][1], box)
-        if gap >= c and inside <= IN_BOX:
+        apart = (bb[i, 0] > mb[j - n, 2] or mb[j - n, 0] > bb[i, 2]
+                 or bb[i, 1] > mb[j - n, 3] or mb[j - n, 1] > bb[i, 3])
+        inside = 0.0 if box is None or apart else _length_inside(segs[m], boxes[i][1], box)
+        if far and inside <= IN_BOX:
             continue
+        # the strokes and the mark's segments whose boxes come within c of one another: the
+        # other pairs are farther apart than c
+        lo, hi = np.minimum(*tsegs[g]), np.maximum(*tsegs[g])
+        mlo, mhi = np.minimum(*segs[m]), np.maximum(*segs[m])
+        near = ((lo[:, None, 0] - c <= mhi[None, :, 0]) & (hi[:, None, 0] + c >= mlo[None, :, 0])
+                & (lo[:, None, 1] - c <= mhi[None, :, 1]) & (hi[:, None, 1] + c >= mlo[None, :, 1]))
+        rows, cols = np.flatnonzero(near.any(axis=1)), np.flatnonzero(near.any(axis=0))
+        if len(rows):
+            gap, _, k, pt, pm = _seg_gap(tsegs[g][0][rows], tsegs[g][1][rows],
+                                         segs[m][0][cols], segs[m][1][cols])
+        if (not len(rows) or gap >= c) and (box is None or inside <= IN_BOX):
+            continue
+        if len(rows) and gap < c:           # the same pair as among all of them
+            k = int(cols[k])
+        else:
+            gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
         ends = _open_ends(*segs[m])
-        head = min((_seg_gap(*tsegs[g], q[None], q[None])[0] for q in ends), default=math.inf)
+        head = min((_gap_below(tsegs[g], lo, hi, q, c) for q in ends), default=math.inf)
         side = max(SIDE_CLEAR * sizes[i], MIN_CLEAR)
         if head >= c and gap >= side and inside <= IN_BOX:
             continue
