@@ -162,6 +162,19 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float = MIN_WALL,
     structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`); each family of
     checks holds :data:`CHECK_SHARE` of it and past that stops with a ``W0521`` note
     (:class:`_Shares`)."""
+    from . import common
+    with common._LOCK:
+        common._SHARING[0] += 1
+    try:
+        _check_drawing(d, sink, min_wall, deadline)
+    finally:
+        with common._LOCK:
+            common._SHARING[0] -= 1
+            if not common._SHARING[0]:
+                common._SIGNED.clear()
+
+
+def _check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float, deadline) -> None:
     shares = _Shares(deadline)
     tick = shares.tick
     run = shares.run

@@ -6,6 +6,8 @@ regions, and the point-in-polygon kernels (:func:`_inside`, :func:`_edges`, the 
 :func:`_signed`) that the opening, engraving and topology checks test points with."""
 from __future__ import annotations
 
+import threading
+
 import manifold3d as mf
 import numpy as np
 
@@ -157,11 +159,27 @@ def _edges(loops) -> tuple:
     return P[:, 0], P[:, 1], Q[:, 0], Q[:, 1]
 
 
+# the signed areas of the loops the checks of one drawing share (a part's loops are looked at
+# by W0504, W0515, W0519 and W0520 alike): id -> (the array, its area), filled while
+# check_drawing runs (the arrays are held, so an id is not reused) and emptied after it
+_SIGNED: dict = {}
+_SHARING = [0]              # check_drawing calls running (threads of a server)
+_LOCK = threading.Lock()
+
+
 def _signed(poly) -> float:
+    """The signed area (mm^2) of the closed polygon ``poly`` (k x 2): positive when it runs
+    counter-clockwise (the shoelace formula)."""
+    hit = _SIGNED.get(id(poly))
+    if hit is not None and hit[0] is poly:
+        return hit[1]
     P = np.asarray(poly, dtype=float)
     x, y = P[:, 0], P[:, 1]
-    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
-                       - np.dot(y, np.concatenate([x[1:], x[:1]])))
+    a = 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
+                    - np.dot(y, np.concatenate([x[1:], x[:1]])))
+    if _SHARING[0] and isinstance(poly, np.ndarray):
+        _SIGNED[id(poly)] = (poly, a)
+    return a
 
 
 def _cut_boxes(cuts) -> np.ndarray:

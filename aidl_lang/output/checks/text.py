@@ -52,8 +52,12 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
     a, b = seg
     c, s_ = math.cos(rot), math.sin(rot)
     x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
-    dx, dy = b[:, 0] * c + b[:, 1] * s_ - x, -b[:, 0] * s_ + b[:, 1] * c - y
+    bx, by = b[:, 0] * c + b[:, 1] * s_, -b[:, 0] * s_ + b[:, 1] * c
     u0, v0, u1, v1 = box
+    if not ((np.maximum(x, bx) >= u0) & (np.minimum(x, bx) <= u1) & (np.maximum(y, by) >= v0)
+            & (np.minimum(y, by) <= v1)).any():
+        return 0.0              # no segment's box meets the box: nothing inside (box test first)
+    dx, dy = bx - x, by - y
     t0, t1 = np.zeros(len(x)), np.ones(len(x))
     for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -88,7 +92,12 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
         return
     tg = list(texts)
     boxes = [_text_box(g, texts[g]) for g in tg]
-    shapes = [mf.CrossSection([b[0].tolist()]) for b in boxes]
+    made: dict = {}
+
+    def shape(k):             # a text's box as a CrossSection, made when a pair needs it
+        if k not in made:
+            made[k] = mf.CrossSection([boxes[k][0].tolist()])
+        return made[k]
     bb = np.array([[b[0][:, 0].min(), b[0][:, 1].min(), b[0][:, 0].max(), b[0][:, 1].max()]
                    for b in boxes], dtype=float)
     said = set()
@@ -99,8 +108,8 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     for i, j in sorted(map(tuple, box_pairs(bb, pad))):
         if tick is not None:
             tick()
-        common = _area(shapes[i] ^ shapes[j])
-        small = min(_area(shapes[i]), _area(shapes[j]))
+        common = _area(shape(i) ^ shape(j))
+        small = min(_area(shape(i)), _area(shape(j)))
         a, b = tg[i], tg[j]
         if common <= max(MIN_AREA, TEXT_OVERLAP * small):
             gap = _quad_gap(boxes[i][0], boxes[j][0])
@@ -111,7 +120,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                 close.setdefault((a.span, b.span), []).append((gap, near, a, b))
             continue
         said.add(b)
-        depth = _depth(shapes[i] ^ shapes[j], bb[i], bb[j])
+        depth = _depth(shape(i) ^ shape(j), bb[i], bb[j])
         labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
         sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") is drawn over "
                      f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes overlap by "
