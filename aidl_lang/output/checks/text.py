@@ -14,7 +14,7 @@ import numpy as np
 
 from ...diagnostics import DiagnosticSink, Label
 from ..booleans import Drawing
-from ..nearby import box_pairs
+from ..nearby import box_pairs, box_pairs_between
 from .common import MIN_AREA, _area, _depth, _pct
 from .engravings import (_copy_label, _mark_segments, _open_ends, _polyline, _samples,
                          _seg_gap)
@@ -152,9 +152,9 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> N
                   dtype=float)
     n = len(tg)
     segs: dict = {}
-    pairs = box_pairs(np.vstack([bb, mb]))
-    for i, j in sorted(map(tuple, pairs)):
-        if not (i < n <= j) or tg[i] in said:
+    pairs = box_pairs_between(bb, mb) + (0, n)        # (text, n + mark), in order
+    for i, j in pairs.tolist():
+        if tg[i] in said:
             continue
         if tick is not None:
             tick()
@@ -233,8 +233,8 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
     clear = [max(TEXT_CLEAR * s, MIN_CLEAR) for s in sizes]
     tsegs: dict = {}
     found: dict = {}
-    for i, j in sorted(map(tuple, box_pairs(np.vstack([bb, mb]), max(clear)))):
-        if not (i < n <= j) or tg[i] in said:
+    for i, j in (box_pairs_between(bb, mb, max(clear)) + (0, n)).tolist():
+        if tg[i] in said:
             continue
         if tick is not None:
             tick()
