@@ -19,7 +19,7 @@ import numpy as np
 from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ..booleans import Drawing
-from ..nearby import box_pairs
+from ..nearby import _median, box_pairs
 from .common import _area, _union
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
@@ -256,7 +256,7 @@ def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
     if n < 2:
         return np.zeros(n, dtype=bool)
     diag = np.hypot(boxes[:, 2] - boxes[:, 0], boxes[:, 3] - boxes[:, 1])
-    big = diag > max(4 * float(np.median(diag)), 8 * t)
+    big = diag > max(4 * _median(diag), 8 * t)
     owner = [np.flatnonzero(~big)]
     items = [boxes[~big]]
     for k in np.flatnonzero(big):            # a large loop: one box per edge
@@ -602,7 +602,7 @@ def _clusters(points: np.ndarray, r: float) -> np.ndarray:
     lo = np.minimum.reduceat(Ps, start)
     hi = np.maximum.reduceat(Ps, start)
     # a cell's key: the rank of its column among the occupied ones, then its row
-    cols = np.unique(C[:, 0])
+    cols = C[np.r_[True, C[1:, 0] != C[:-1, 0]], 0]    # sorted: np.unique imports numpy.ma
     rows = int(C[:, 1].max()) + 5
     key = np.searchsorted(cols, C[:, 0]) * rows + (C[:, 1] + 2)
 
