@@ -133,3 +133,34 @@ def test_close_pairs_in_runs_are_the_pairs_of_one_query(monkeypatch):
     assert len(whole[0]) > 10_000
     for a, b in zip(whole, runs):
         assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("example", ["telephone", "violin", "bottle_opener"])
+def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
+    """W0519 and W0520 name the shapes on a slit's or ledge's sides by one search of the
+    faces' edges (walls._faces_at); it gives the face the per-point reference loop over
+    every face (walls._face_at) gives, for the outline's own vertices and for points near
+    and far from it."""
+    from pathlib import Path
+
+    from aidl_lang.output.checks.common import _part_roots
+    from aidl_lang.output.checks.walls import _face_at, _faces_at
+    f = Path(__file__).resolve().parents[1] / "examples" / f"{example}.aidl"
+    if not f.exists():
+        pytest.skip(f"no examples/{example}.aidl")
+    c = compile_source(f.read_text(), str(f))
+    assert c.drawing is not None
+    rng = np.random.default_rng(7)
+    for s, shape in _part_roots(c.drawing).items():
+        if s.kind != "solid" or shape.is_empty():
+            continue
+        V = np.concatenate([np.asarray(p, dtype=float) for p in shape.to_polygons()])
+        x0, y0, x1, y1 = shape.bounds()
+        pts = np.concatenate([V[rng.choice(len(V), min(len(V), 40), replace=False)],
+                              V[:20] + rng.normal(0, 0.3, (min(20, len(V)), 2)),
+                              rng.random((10, 2)) * [x1 - x0 + 20, y1 - y0 + 20]
+                              + [x0 - 10, y0 - 10]])
+        got = _faces_at(c.drawing, s, pts)
+        want = [_face_at(c.drawing, s, p) for p in pts]
+        assert [id(g) for g in got] == [id(g) for g in want]
+        assert sum(g is not None for g in got) >= 40
