@@ -74,7 +74,8 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
             "voids": ("openings no hole cuts", "W0515"), "walls": ("thin walls", "W0507"),
             "slits": ("slits", "W0519"), "steps": ("ledges", "W0520"),
             "text": ("text over text or marks", "W0513"),
-            "repeats": ("copies that merge", "W0512")}
+            "repeats": ("copies that merge", "W0512"),
+            "interpenetration": ("parts that interpenetrate", "W0511")}
 
 
 class _OutOfShare(Exception):
@@ -126,6 +127,16 @@ class _Shares:
         finally:
             self.spent[family] = self.spent.get(family, 0.0) + self.clock() - self.since
             self.family = None
+        return None
+
+    def guard(self, family: str, part, fn):
+        """``fn()`` with no share of its own (it runs on the compile's deadline alone), only
+        the pair limit: a family that must end with E0304 rather than stop early."""
+        from ..nearby import TooManyPairs
+        try:
+            return fn()
+        except TooManyPairs as ex:
+            self.skipped[family] = [ex, [part]]
         return None
 
     def notes(self, sink: DiagnosticSink, min_wall: float) -> None:
@@ -227,7 +238,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float, deadline) 
                 run("steps", s, lambda: _check_steps(d, s, loops[s], cuts, min_wall, sink,
                                                      tick=lambda: tick(s)))
     tick(None)
-    _check_interpenetration(d, roots, sink, deadline)
+    shares.guard("interpenetration", None,
+                 lambda: _check_interpenetration(d, roots, sink, deadline))
     run("text", None, lambda: _check_text_overlap(d, sink, lambda: tick(None)))
     if getattr(d, "placement", None):
         tick(None)
