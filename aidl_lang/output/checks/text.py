@@ -232,6 +232,7 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
     n = len(tg)
     clear = [max(TEXT_CLEAR * s, MIN_CLEAR) for s in sizes]
     tsegs: dict = {}
+    ends_of: dict = {}          # a mark's open ends, taken once for all the texts near it
     found: dict = {}
     for i, j in (box_pairs_between(bb, mb, max(clear)) + (0, n)).tolist():
         if tg[i] in said:
@@ -276,7 +277,9 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
             k = int(cols[k])
         else:
             gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
-        ends = _open_ends(*segs[m])
+        if m not in ends_of:
+            ends_of[m] = _open_ends(*segs[m])
+        ends = ends_of[m]
         head = min((_gap_below(tsegs[g], lo, hi, q, c) for q in ends), default=math.inf)
         side = max(SIDE_CLEAR * sizes[i], MIN_CLEAR)
         if head >= c and gap >= side and inside <= IN_BOX:
