@@ -195,12 +195,14 @@ def _candidates(c, R, idx) -> np.ndarray:
     return np.concatenate(out).astype(np.intp) if out else np.zeros((0, 2), dtype=np.intp)
 
 
-def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
+def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool = True):
     """The (vertex, segment) pairs of different features closer than ``dist``.
 
     ``vertices`` (N x 2) with their feature ids ``vfeat``; segments from ``seg_a`` to
     ``seg_b`` (M x 2 each) with ``sfeat``.  Returns ``(v, s, d, foot)``: vertex indices,
     segment indices, the exact distances and the nearest points on the segments (K x 2).
+    ``others=False`` skips the first cut of small inputs (each feature's vertices against
+    the box of the other features' segments), which only pays when features are few.
     :class:`TooManyPairs` past :data:`MAX_PAIRS` pairs (the candidates of a large input are
     measured :data:`CHUNK` at a time, so memory stays bounded)."""
     V = np.asarray(vertices, dtype=float).reshape(-1, 2)
@@ -211,8 +213,11 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float):
         return empty
     vfeat, sfeat = np.asarray(vfeat), np.asarray(sfeat)
     if len(V) <= SMALL_VERTS and len(A) <= SMALL_VERTS:
-        vk, sk = _within_others(V, vfeat, np.minimum(A, B) - dist, np.maximum(A, B) + dist,
-                                sfeat)
+        if others:
+            vk, sk = _within_others(V, vfeat, np.minimum(A, B) - dist,
+                                    np.maximum(A, B) + dist, sfeat)
+        else:                   # a feature per vertex (W0519): no other feature's box to cut
+            vk, sk = np.arange(len(V)), np.arange(len(A))
         s, v = _band_pairs(V.take(vk, axis=0), A.take(sk, axis=0), B.take(sk, axis=0),
                            dist)                       # in the same order as all of them
         s, v = sk[s], vk[v]

@@ -415,7 +415,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     nxt = start + (idx - start + 1) % size
     prv = start + (idx - start - 1) % size
     B = V[nxt]
-    v, sg, dist, foot = close_pairs(V, idx, V, B, idx, t)
+    v, sg, dist, foot = close_pairs(V, idx, V, B, idx, t, others=False)
     if not len(v):
         return
     ok = (v != nxt[sg]) & (dist > 1e-6)
