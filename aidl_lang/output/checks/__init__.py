@@ -74,6 +74,108 @@ def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
     return own.get(name, MIN_WALL) if name is not None else MIN_WALL
 
 
+CHECK_SHARE = 0.2     # of the budget's wall time (3 s of the default 15 s): what each family
+                      # of checks below may take over all the parts before it stops (W0521)
+
+# the families of checks that hold a share, in the order they run: (name, codes)
+FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
+            "invisible": ("shapes that add nothing", "W0506"),
+            "engraving": ("engravings", "W0505, W0516"),
+            "openings": ("walls between features", "W0507, W0508, W0514"),
+            "voids": ("openings no hole cuts", "W0515"), "walls": ("thin walls", "W0507"),
+            "slits": ("slits", "W0519"), "steps": ("ledges", "W0520"),
+            "text": ("text over text or marks", "W0513"),
+            "repeats": ("copies that merge", "W0512"),
+            "interpenetration": ("parts that interpenetrate", "W0511")}
+
+
+class _OutOfShare(Exception):
+    """A family of checks has used its :data:`CHECK_SHARE` of the wall time."""
+
+
+class _Shares:
+    """Each family of checks (:data:`FAMILIES`) with its share of the compile's wall time
+    (:data:`CHECK_SHARE` of the budget's seconds, summed over the parts it looks at): a
+    family past its share, or refused by :class:`..nearby.TooManyPairs` (a cluster too dense
+    to list its pairs), stops where it is, is not run on the parts after, and one ``W0521``
+    note per family says which parts it did not check and why.  The compile's own deadline
+    still ends everything with ``E0304`` (:meth:`tick` checks it first); without one
+    (a test, the live preview's own call) there are no shares, only the pair limit."""
+
+    def __init__(self, deadline):
+        import time
+        self.clock = time.monotonic
+        self.deadline = deadline
+        self.seconds = (deadline.budget.seconds * CHECK_SHARE if deadline is not None
+                        else float("inf"))
+        self.spent: dict = {}
+        self.skipped: dict = {}      # family -> [reason, parts]
+        self.family, self.since = None, 0.0
+
+    def tick(self, s, ahead: float = 0.0) -> None:
+        if self.deadline is not None:
+            self.deadline.check("the shape checks", s, ahead)
+        if self.family is not None and (self.spent.get(self.family, 0.0) + self.clock()
+                                        - self.since + ahead > self.seconds):
+            raise _OutOfShare()
+
+    def run(self, family: str, part, fn):
+        """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
+        None when it was stopped or not run."""
+        from ..nearby import TooManyPairs
+        if family in self.skipped:
+            self.skipped[family][1].append(part)
+            return None
+        self.family, self.since = family, self.clock()
+        try:
+            if part is not None:
+                self.tick(part)
+            return fn()
+        except _OutOfShare:
+            self.skipped[family] = ["time", [part]]
+        except TooManyPairs as ex:
+            self.skipped[family] = [ex, [part]]
+        finally:
+            self.spent[family] = self.spent.get(family, 0.0) + self.clock() - self.since
+            self.family = None
+        return None
+
+    def guard(self, family: str, part, fn):
+        """``fn()`` with no share of its own (it runs on the compile's deadline alone), only
+        the pair limit: a family that must end with E0304 rather than stop early."""
+        from ..nearby import TooManyPairs
+        try:
+            return fn()
+        except TooManyPairs as ex:
+            self.skipped[family] = [ex, [part]]
+        return None
+
+    def notes(self, sink: DiagnosticSink, min_wall: float) -> None:
+        """One ``W0521`` note per family that did not check everything."""
+        from ...diagnostics import Diagnostic
+        for family, (why, parts) in self.skipped.items():
+            what, codes = FAMILIES[family]
+            named = list(dict.fromkeys(f"`{p.path}`" for p in parts if p is not None))
+            where = (" in " + ", ".join(named[:3]) + (f" and {len(named) - 3} more"
+                                                      if len(named) > 3 else "")) if named else ""
+            if why == "time":
+                total = self.deadline.budget.seconds
+                reason = (f"out of its share of the time ({self.seconds:.3g} s of the "
+                          f"{total:g} s budget)")
+                hint = "`--budget 2` (or more) gives every check twice the time"
+            else:
+                reason = (f"{why.count:,} pairs of edges or shapes within reach of one "
+                          f"another, more than the {why.limit:,} it measures (a dense "
+                          "cluster: thousands of edges all within the distance)")
+                hint = ("scale the drawing to its real size (an imported map a few mm wide "
+                        f"puts every edge within {min_wall:g} mm of hundreds of others), or "
+                        "set a smaller minimum with --min-wall")
+            first = next((p for p in parts if p is not None and p.span is not None), None)
+            sink.add(Diagnostic("W0521", f"not checked: {what} ({codes}){where}: {reason}",
+                                first.span if first is not None else None, "note",
+                                hint=hint))
+
+
 def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = None,
                   deadline=None) -> None:
     """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
@@ -81,62 +183,88 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = Non
     overriding the program's ``min_wall`` statements (:func:`part_min_wall`); None: theirs,
     else :data:`MIN_WALL`.
     ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
-    structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
-    def tick(s, ahead: float = 0.0):
-        if deadline is not None:
-            deadline.check("the shape checks", s, ahead)
-    given = min_wall
+    structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`); each family of
+    checks holds :data:`CHECK_SHARE` of it and past that stops with a ``W0521`` note
+    (:class:`_Shares`)."""
+    from . import common
+    with common._LOCK:
+        common._SHARING[0] += 1
+    try:
+        _check_drawing(d, sink, min_wall, deadline)
+    finally:
+        with common._LOCK:
+            common._SHARING[0] -= 1
+            if not common._SHARING[0]:
+                common._SIGNED.clear()
+
+
+def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadline) -> None:
+    shares = _Shares(deadline)
+    tick = shares.tick
+    run = shares.run
     roots = _part_roots(d)
     loops = {s: [np.asarray(p, dtype=float) for p in shape.to_polygons()]
              for s, shape in roots.items() if s.kind == "solid"}
-    near = _Near(roots, loops, d.cuts)
+    near = run("holes", None, lambda: _Near(roots, loops, d.cuts))
     explained: set = set()          # parts whose emptiness a warning already explains
     owner_areas: dict = {}          # a solid's final area, taken once for all its holes
     for cut in d.cuts:
         tick(cut.hole)
-        if _check_hole(d, cut, roots, sink, near.local, owner_areas) == "W0503":
+        if near is None:
+            run("holes", cut.hole, lambda: None)
+        elif run("holes", cut.hole, lambda: _check_hole(d, cut, roots, sink, near.local,
+                                                         owner_areas)) == "W0503":
             explained.add(_part_of(cut.owner, roots))
     for s, shape in roots.items():
         if s.kind == "solid":
             tick(s)
-            _check_pieces(d, s, shape, sink, loops[s])
+            run("pieces", s, lambda: _check_pieces(d, s, shape, sink, loops[s]))
     for s in list(d.shapes):
         if s.kind == "solid":
             tick(s)
-            _check_invisible(d, s, sink)
+            run("invisible", s, lambda: _check_invisible(d, s, sink))
     tick(None)
-    _check_engraving(d, roots, sink, loops, tick)
+    run("engraving", None, lambda: _check_engraving(d, roots, sink, loops, tick))
     by_part: dict = {}
     for c in d.cuts:
         by_part.setdefault(_part_of(c.owner, roots), []).append(c)
     for s, shape in roots.items():
         if s.kind == "solid":
             tick(s)
+            cuts = by_part.get(s, [])
             min_wall = part_min_wall(d, s, given)
-            a = _analyse(d, s, shape, by_part.get(s, []), min_wall, loops[s])
-            covered = _report_openings(a, s, min_wall, sink, d.shapes)
-            _check_flush(d, s, shape, a, by_part.get(s, []), min_wall, sink)
-            _check_voids(d, s, loops[s], by_part.get(s, []), min_wall, sink,
-                         tick=lambda ahead=0.0: tick(s, ahead))
+
+            def openings():
+                a = _analyse(d, s, shape, cuts, min_wall, loops[s])
+                covered = _report_openings(a, s, min_wall, sink, d.shapes)
+                _check_flush(d, s, shape, a, cuts, min_wall, sink)
+                return covered
+            covered = run("openings", s, openings)
+            run("voids", s, lambda: _check_voids(d, s, loops[s], cuts, min_wall, sink,
+                                                 tick=lambda ahead=0.0: tick(s, ahead)))
             tick(s)
             if min_wall > 0:
-                _check_walls(d, s, shape, min_wall, by_part.get(s, []), sink, covered=covered,
-                             loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead))
-                _check_slits(d, s, loops[s], by_part.get(s, []), min_wall, sink,
-                             tick=lambda ahead=0.0: tick(s, ahead))
-                _check_steps(d, s, loops[s], by_part.get(s, []), min_wall, sink,
-                             tick=lambda: tick(s))
+                run("walls", s, lambda: _check_walls(
+                    d, s, shape, min_wall, cuts, sink, covered=covered or set(),
+                    loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead)))
+                run("slits", s, lambda: _check_slits(d, s, loops[s], cuts, min_wall, sink,
+                                                     tick=lambda ahead=0.0: tick(s, ahead)))
+                run("steps", s, lambda: _check_steps(d, s, loops[s], cuts, min_wall, sink,
+                                                     tick=lambda: tick(s)))
     tick(None)
-    _check_interpenetration(d, roots, sink, deadline)
-    _check_text_overlap(d, sink, lambda: tick(None))
+    shares.guard("interpenetration", None,
+                 lambda: _check_interpenetration(d, roots, sink, deadline))
+    run("text", None, lambda: _check_text_overlap(d, sink, lambda: tick(None)))
     if getattr(d, "placement", None):
         tick(None)
         _check_fit(d, sink, deadline)
     for s in list(d.shapes):
         if s.kind == "hole":
-            _check_repeated_faces(d, s, sink)
             t = part_min_wall(d, _part_of(s, roots), given)
-            _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL)
+            run("repeats", s, lambda: (
+                _check_repeated_faces(d, s, sink),
+                _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL)))
+    shares.notes(sink, given if given is not None else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
     for s, g, area in empty_faces(d):

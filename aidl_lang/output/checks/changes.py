@@ -30,6 +30,17 @@ class Topology:
 
 
 def topology(d: Drawing) -> dict:
+    """What W0510 compares, per solid part of ``d`` (:func:`_topology`); empty when the part
+    is too dense to compare (more pairs than :data:`..nearby.MAX_PAIRS`: no W0510 then,
+    never an unbounded list)."""
+    from ..nearby import TooManyPairs
+    try:
+        return _topology(d)
+    except TooManyPairs:
+        return {}
+
+
+def _topology(d: Drawing) -> dict:
     """The :class:`Topology` of every solid part of ``d``, by part path: its pieces and
     openings (counter-clockwise and clockwise loops of its final shape), the holes that merge
     (:func:`_analyse` at the touching distance) or reach the outline, and the faces of

@@ -6,6 +6,8 @@ regions, and the point-in-polygon kernels (:func:`_inside`, :func:`_edges`, the 
 :func:`_signed`) that the opening, engraving and topology checks test points with."""
 from __future__ import annotations
 
+import threading
+
 import manifold3d as mf
 import numpy as np
 
@@ -98,6 +100,9 @@ def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
     return res
 
 
+INSIDE_CHUNK = 1_000_000     # (edge, point) candidates :func:`_inside` holds at once (~50 MB)
+
+
 def _inside(pts: np.ndarray, loops) -> np.ndarray:
     """Even-odd point-in-polygon of ``pts`` (N x 2, mm) against the union of closed ``loops``
     (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to -x crosses the loops' edges an odd
@@ -106,7 +111,8 @@ def _inside(pts: np.ndarray, loops) -> np.ndarray:
     The edges of all loops are taken together (the parity of the total equals the XOR of the
     per-loop parities) and each edge is tested only against the points whose y lies in its
     half-open y range ``[min(y1, y2), max(y1, y2))``, found by binary search in the points
-    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E).  The
+    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E), and the
+    memory at most :data:`INSIDE_CHUNK` candidates (the points halved in y order).  The
     crossing abscissa is computed with the same floating-point expression as the reference
     :func:`_inside_loops`, so the result is identical to it."""
     pts = np.asarray(pts, dtype=float).reshape(-1, 2)
@@ -123,6 +129,13 @@ def _inside(pts: np.ndarray, loops) -> np.ndarray:
     total = int(cnt.sum())
     if not total:
         return np.zeros(n, dtype=bool)
+    if total > INSIDE_CHUNK and n > 1:
+        # many edges across the points' y (a comb's teeth): the two halves of the points in
+        # y order apart, so that at most about INSIDE_CHUNK (edge, point) pairs are held
+        res = np.empty(n, dtype=bool)
+        for part in (order[:n // 2], order[n // 2:]):
+            res[part] = _inside(pts[part], (x1, y1, x2, y2))
+        return res
     edge = np.repeat(np.arange(len(x1)), cnt)
     start = np.cumsum(cnt) - cnt
     pt = order[lo[edge] + (np.arange(total) - start[edge])]
@@ -146,11 +159,27 @@ def _edges(loops) -> tuple:
     return P[:, 0], P[:, 1], Q[:, 0], Q[:, 1]
 
 
+# the signed areas of the loops the checks of one drawing share (a part's loops are looked at
+# by W0504, W0515, W0519 and W0520 alike): id -> (the array, its area), filled while
+# check_drawing runs (the arrays are held, so an id is not reused) and emptied after it
+_SIGNED: dict = {}
+_SHARING = [0]              # check_drawing calls running (threads of a server)
+_LOCK = threading.Lock()
+
+
 def _signed(poly) -> float:
+    """The signed area (mm^2) of the closed polygon ``poly`` (k x 2): positive when it runs
+    counter-clockwise (the shoelace formula)."""
+    hit = _SIGNED.get(id(poly))
+    if hit is not None and hit[0] is poly:
+        return hit[1]
     P = np.asarray(poly, dtype=float)
     x, y = P[:, 0], P[:, 1]
-    return 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
-                       - np.dot(y, np.concatenate([x[1:], x[:1]])))
+    a = 0.5 * float(np.dot(x, np.concatenate([y[1:], y[:1]]))       # np.roll(y, -1)
+                    - np.dot(y, np.concatenate([x[1:], x[:1]])))
+    if _SHARING[0] and isinstance(poly, np.ndarray):
+        _SIGNED[id(poly)] = (poly, a)
+    return a
 
 
 def _cut_boxes(cuts) -> np.ndarray:

@@ -248,11 +248,11 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     offset sideways by more than 0.01 mm (twice the tessellation's chord error) and less than
     ``t``: two faces that almost but not quite align.  ``2 t`` bounds the step's own length:
     a longer link between two edges less than ``t`` apart is a gentle taper, not a ledge.
-    The step is reported when the shapes at its two corners differ (:func:`.walls._face_at`;
+    The step is reported when the shapes at its two corners differ (:func:`.walls._faces_at`;
     a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
     in the outline's vertices, plus a face search per step found."""
     from .common import _cut_boxes, _meets_a_cut
-    from .walls import _face_at
+    from .walls import _faces_at
     if t <= 0 or not loops:
         return
     hb = _cut_boxes(cuts)
@@ -293,9 +293,12 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                 continue
             found.append((P[i], P[j], abs(side), float(gap[k]), u, turn[i]))
         _bumps(P, e, ep, turn, pos, t, found)
-    for pi, pj, side, gap, u, ti in found:
+    # the faces at every step's two corners by one search of the faces' edges
+    faces = _faces_at(d, s, np.array([f[0] for f in found] + [f[1] for f in found],
+                                     dtype=float).reshape(-1, 2), tick) if found else []
+    for k, (pi, pj, side, gap, u, ti) in enumerate(found):
         tick()
-        fi, fj = _face_at(d, s, pi), _face_at(d, s, pj)
+        fi, fj = faces[k], faces[len(found) + k]
         if fi is None or fj is None or fi is fj:
             continue
         # the corner that turns outward (convex, left on a counter-clockwise outline) is the

@@ -14,7 +14,7 @@ import numpy as np
 
 from ...diagnostics import DiagnosticSink, Label
 from ..booleans import Drawing
-from ..nearby import box_pairs
+from ..nearby import box_pairs, box_pairs_between
 from .common import MIN_AREA, _area, _depth, _pct
 from .engravings import (_copy_label, _mark_segments, _open_ends, _polyline, _samples,
                          _seg_gap)
@@ -52,8 +52,12 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
     a, b = seg
     c, s_ = math.cos(rot), math.sin(rot)
     x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
-    dx, dy = b[:, 0] * c + b[:, 1] * s_ - x, -b[:, 0] * s_ + b[:, 1] * c - y
+    bx, by = b[:, 0] * c + b[:, 1] * s_, -b[:, 0] * s_ + b[:, 1] * c
     u0, v0, u1, v1 = box
+    if not ((np.maximum(x, bx) >= u0) & (np.minimum(x, bx) <= u1) & (np.maximum(y, by) >= v0)
+            & (np.minimum(y, by) <= v1)).any():
+        return 0.0              # no segment's box meets the box: nothing inside (box test first)
+    dx, dy = bx - x, by - y
     t0, t1 = np.zeros(len(x)), np.ones(len(x))
     for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -88,7 +92,12 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
         return
     tg = list(texts)
     boxes = [_text_box(g, texts[g]) for g in tg]
-    shapes = [mf.CrossSection([b[0].tolist()]) for b in boxes]
+    made: dict = {}
+
+    def shape(k):             # a text's box as a CrossSection, made when a pair needs it
+        if k not in made:
+            made[k] = mf.CrossSection([boxes[k][0].tolist()])
+        return made[k]
     bb = np.array([[b[0][:, 0].min(), b[0][:, 1].min(), b[0][:, 0].max(), b[0][:, 1].max()]
                    for b in boxes], dtype=float)
     said = set()
@@ -99,8 +108,8 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     for i, j in sorted(map(tuple, box_pairs(bb, pad))):
         if tick is not None:
             tick()
-        common = _area(shapes[i] ^ shapes[j])
-        small = min(_area(shapes[i]), _area(shapes[j]))
+        common = _area(shape(i) ^ shape(j))
+        small = min(_area(shape(i)), _area(shape(j)))
         a, b = tg[i], tg[j]
         if common <= max(MIN_AREA, TEXT_OVERLAP * small):
             gap = _quad_gap(boxes[i][0], boxes[j][0])
@@ -111,7 +120,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                 close.setdefault((a.span, b.span), []).append((gap, near, a, b))
             continue
         said.add(b)
-        depth = _depth(shapes[i] ^ shapes[j], bb[i], bb[j])
+        depth = _depth(shape(i) ^ shape(j), bb[i], bb[j])
         labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
         sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") is drawn over "
                      f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes overlap by "
@@ -143,9 +152,9 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> N
                   dtype=float)
     n = len(tg)
     segs: dict = {}
-    pairs = box_pairs(np.vstack([bb, mb]))
-    for i, j in sorted(map(tuple, pairs)):
-        if not (i < n <= j) or tg[i] in said:
+    pairs = box_pairs_between(bb, mb) + (0, n)        # (text, n + mark), in order
+    for i, j in pairs.tolist():
+        if tg[i] in said:
             continue
         if tick is not None:
             tick()
@@ -156,6 +165,9 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> N
         inner = (u0 + e, v0 + e, u1 - e, v1 - e)
         if inner[0] >= inner[2] or inner[1] >= inner[3]:
             continue
+        if boxes[i][1] == 0.0 and (inner[0] > mb[j - n, 2] or mb[j - n, 0] > inner[2]
+                                   or inner[1] > mb[j - n, 3] or mb[j - n, 1] > inner[3]):
+            continue                  # the mark's box misses the (unturned) inner box
         if m not in segs:
             segs[m] = _mark_segments(marks[m])
         length = _length_inside(segs[m], boxes[i][1], inner)
@@ -195,6 +207,17 @@ def _least(ok, top: float) -> float | None:
     return x if ok(x) else hi
 
 
+def _gap_below(tseg, lo, hi, q, c: float) -> float:
+    """The distance from point ``q`` to the strokes ``tseg`` (starts, ends; their boxes
+    ``lo``-``hi``) when it is below ``c``, else a figure of at least ``c`` (only the strokes
+    whose boxes come within ``c`` of it are measured)."""
+    near = np.flatnonzero((lo[:, 0] - c <= q[0]) & (hi[:, 0] + c >= q[0])
+                          & (lo[:, 1] - c <= q[1]) & (hi[:, 1] + c >= q[1]))
+    if not len(near):
+        return math.inf
+    return _seg_gap(tseg[0][near], tseg[1][near], q[None], q[None])[0]
+
+
 def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink,
                      tick=None) -> None:
     """W0513 for an engraved mark that comes closer to a text's strokes than the text's
@@ -209,9 +232,10 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
     n = len(tg)
     clear = [max(TEXT_CLEAR * s, MIN_CLEAR) for s in sizes]
     tsegs: dict = {}
+    ends_of: dict = {}          # a mark's open ends, taken once for all the texts near it
     found: dict = {}
-    for i, j in sorted(map(tuple, box_pairs(np.vstack([bb, mb]), max(clear)))):
-        if not (i < n <= j) or tg[i] in said:
+    for i, j in (box_pairs_between(bb, mb, max(clear)) + (0, n)).tolist():
+        if tg[i] in said:
             continue
         if tick is not None:
             tick()
@@ -226,14 +250,37 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
         if m not in segs:
             segs[m] = _mark_segments(marks[m])
         box = None if g.data.get("along") is not None else boxes[i][2]
-        gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
-        if gap >= c and box is None:
+        # box tests first: the boxes' gap is at most the strokes' gap, and a mark whose box
+        # misses the text's box has no length inside it
+        far = math.hypot(max(bb[i, 0] - mb[j - n, 2], mb[j - n, 0] - bb[i, 2], 0.0),
+                         max(bb[i, 1] - mb[j - n, 3], mb[j - n, 1] - bb[i, 3], 0.0)) > c + 1e-9
+        if far and box is None:
             continue
-        inside = 0.0 if box is None else _length_inside(segs[m], boxes[i][1], box)
-        if gap >= c and inside <= IN_BOX:
+        apart = (bb[i, 0] > mb[j - n, 2] or mb[j - n, 0] > bb[i, 2]
+                 or bb[i, 1] > mb[j - n, 3] or mb[j - n, 1] > bb[i, 3])
+        inside = 0.0 if box is None or apart else _length_inside(segs[m], boxes[i][1], box)
+        if far and inside <= IN_BOX:
             continue
-        ends = _open_ends(*segs[m])
-        head = min((_seg_gap(*tsegs[g], q[None], q[None])[0] for q in ends), default=math.inf)
+        # the strokes and the mark's segments whose boxes come within c of one another: the
+        # other pairs are farther apart than c
+        lo, hi = np.minimum(*tsegs[g]), np.maximum(*tsegs[g])
+        mlo, mhi = np.minimum(*segs[m]), np.maximum(*segs[m])
+        near = ((lo[:, None, 0] - c <= mhi[None, :, 0]) & (hi[:, None, 0] + c >= mlo[None, :, 0])
+                & (lo[:, None, 1] - c <= mhi[None, :, 1]) & (hi[:, None, 1] + c >= mlo[None, :, 1]))
+        rows, cols = np.flatnonzero(near.any(axis=1)), np.flatnonzero(near.any(axis=0))
+        if len(rows):
+            gap, _, k, pt, pm = _seg_gap(tsegs[g][0][rows], tsegs[g][1][rows],
+                                         segs[m][0][cols], segs[m][1][cols])
+        if (not len(rows) or gap >= c) and (box is None or inside <= IN_BOX):
+            continue
+        if len(rows) and gap < c:           # the same pair as among all of them
+            k = int(cols[k])
+        else:
+            gap, _, k, pt, pm = _seg_gap(*tsegs[g], *segs[m])
+        if m not in ends_of:
+            ends_of[m] = _open_ends(*segs[m])
+        ends = ends_of[m]
+        head = min((_gap_below(tsegs[g], lo, hi, q, c) for q in ends), default=math.inf)
         side = max(SIDE_CLEAR * sizes[i], MIN_CLEAR)
         if head >= c and gap >= side and inside <= IN_BOX:
             continue

@@ -1,0 +1,166 @@
+"""The shape checks stay bounded on dense drawings (issue 58): W0519's grouping of gap
+middles by cells (no list of pairs), the pair limit of output/nearby.py, and each family's
+share of the wall time, past which a ``"W0521"`` note says what was not checked."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from aidl_lang.pipeline import compile_source
+
+# 1,000 teeth 0.004 mm apart on a bar: every tooth's edges within 0.5 mm of 200 others, so the
+# gap middles of W0519 are 400,000 points within 0.5 mm of tens of thousands of others
+TEETH = """solid comb {{
+    bar = Rectangle(center=(0.5, {h}), width=1, height={H})
+    for i in range({n}) {{
+        tooth = Rectangle(center=(1.5, i * 0.01 + 0.003), width=2, height=0.006)
+    }}
+}}
+"""
+
+TAG = """solid tag {
+    bar = Rectangle(center=(0, 0), width=30, height=12)
+    top = Circle(center=(15, 6.1), radius=6)
+    bottom = Circle(center=(15, -6.1), radius=6)
+}
+"""
+
+_CHILD = r"""
+import json, resource, sys, time
+resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))   # the old grouping took > 6 GB
+from aidl_lang.pipeline import compile_source
+t = time.process_time()
+c = compile_source(sys.stdin.read(), "comb.aidl")
+print(json.dumps({"codes": [d.code for d in c.sink.items],
+                  "cpu": time.process_time() - t,
+                  "rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}))
+"""
+
+
+def test_thousands_of_close_facing_edges_check_in_bounded_time_and_memory():
+    """Before, W0519 listed every pair of gap middles within the minimum (a quadratic list:
+    this comb ran out of a 6 GB address space, the imported USA map took 17 GB); now the
+    whole compile with every check takes a few seconds and a few hundred MB, and the slit
+    is reported, nothing left unchecked."""
+    src = TEETH.format(n=1000, h=1000 * 0.005, H=1000 * 0.01 + 0.01)
+    r = subprocess.run([sys.executable, "-c", _CHILD], input=src, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    got = json.loads(r.stdout.strip().splitlines()[-1])
+    assert "E0304" not in got["codes"] and "W0521" not in got["codes"], got["codes"]
+    assert "W0519" in got["codes"]
+    assert got["rss_mb"] < 800, got
+    assert got["cpu"] < 8, got
+
+
+def _pairwise_groups(P, r):
+    """The reference: points at most r apart in x and y joined, transitively (O(n^2))."""
+    n = len(P)
+    label = np.arange(n)
+    near = (np.abs(P[:, None, 0] - P[None, :, 0]) <= r) & (np.abs(P[:, None, 1] - P[None, :, 1]) <= r)
+    changed = True
+    while changed:                        # the least label of each point's neighbours
+        new = np.where(near, label[None, :], n).min(axis=1)
+        changed = bool((new != label).any())
+        label = new
+    return label
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_cell_grouping_is_the_pairwise_grouping(seed):
+    """W0519's groups by cells of half the minimum (walls._clusters) are the groups of the
+    pairwise test, labelled by their least point, on clouds dense and sparse, round and
+    along a line."""
+    from aidl_lang.output.checks.walls import _clusters
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(2, 400))
+    r = float(rng.choice([0.1, 0.37, 0.5, 1.0]))
+    P = rng.random((n, 2)) * float(rng.choice([0.5, 3, 20, 100])) + rng.random() * 50
+    if seed % 4 == 0:
+        P[:, 1] = 0.3 * P[:, 0]
+    assert np.array_equal(_clusters(P, r), _pairwise_groups(P, r))
+
+
+def test_a_family_past_its_share_of_the_time_says_what_it_did_not_check(monkeypatch):
+    """With a share of no time at all, every family stops at once: one W0521 note each,
+    naming the part and the reason; the compile is still ok and says no W0519."""
+    from aidl_lang.output import checks
+    assert "W0519" in [d.code for d in compile_source(TAG, "tag.aidl").sink.items]
+    monkeypatch.setattr(checks, "CHECK_SHARE", 0.0)
+    c = compile_source(TAG, "tag.aidl")
+    assert not c.sink.has_errors
+    notes = [d for d in c.sink.items if d.code == "W0521"]
+    assert all(d.severity == "note" for d in notes)
+    assert "W0519" not in [d.code for d in c.sink.items]
+    slits = [d for d in notes if "(W0519)" in d.message]
+    assert len(slits) == 1 and slits[0].message == (
+        "not checked: slits (W0519) in `tag`: out of its share of the time "
+        "(0 s of the 15 s budget)"), slits
+    assert (slits[0].span.line, slits[0].span.col) == (1, 1)
+    assert "--budget 2" in slits[0].hint
+    assert len(notes) == len({d.message.split(" in ")[0] for d in notes}) >= 5
+
+
+def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
+    """Past the pair limit the search stops before listing them (output/nearby.py's
+    TooManyPairs) and W0519 says so instead of a warning."""
+    from aidl_lang.output import nearby
+    monkeypatch.setattr(nearby, "MAX_PAIRS", 50)
+    monkeypatch.setattr(nearby, "CHUNK", 20)
+    monkeypatch.setattr(nearby, "SMALL_VERTS", 10)      # the chunked grid path
+    c = compile_source(TAG, "tag.aidl")
+    assert not c.sink.has_errors
+    (note,) = [d for d in c.sink.items if d.code == "W0521" and "(W0519)" in d.message]
+    assert "more than the 50 it measures" in note.message
+    assert "W0519" not in [d.code for d in c.sink.items]
+
+
+def test_close_pairs_in_runs_are_the_pairs_of_one_query(monkeypatch):
+    """close_pairs on a large input lists its candidates a run of segments at a time: the
+    same pairs, distances and feet, in the same order, as with no run limit."""
+    from aidl_lang.output import nearby
+    rng = np.random.default_rng(3)
+    V = rng.random((6000, 2)) * 40
+    A, B = V, np.roll(V, -1, axis=0)
+    f = np.arange(6000) // 7
+    whole = nearby.close_pairs(V, f, A, B, f, 0.8)
+    monkeypatch.setattr(nearby, "CHUNK", 997)
+    runs = nearby.close_pairs(V, f, A, B, f, 0.8)
+    assert len(whole[0]) > 10_000
+    for a, b in zip(whole, runs):
+        assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("example", ["telephone", "violin", "bottle_opener"])
+def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
+    """W0519 and W0520 name the shapes on a slit's or ledge's sides by one search of the
+    faces' edges (walls._faces_at); it gives the face the per-point reference loop over
+    every face (walls._face_at) gives, for the outline's own vertices and for points near
+    and far from it."""
+    from pathlib import Path
+
+    from aidl_lang.output.checks.common import _part_roots
+    from aidl_lang.output.checks.walls import _face_at, _faces_at
+    f = Path(__file__).resolve().parents[1] / "examples" / f"{example}.aidl"
+    if not f.exists():
+        pytest.skip(f"no examples/{example}.aidl")
+    c = compile_source(f.read_text(), str(f))
+    assert c.drawing is not None
+    rng = np.random.default_rng(7)
+    for s, shape in _part_roots(c.drawing).items():
+        if s.kind != "solid" or shape.is_empty():
+            continue
+        V = np.concatenate([np.asarray(p, dtype=float) for p in shape.to_polygons()])
+        x0, y0, x1, y1 = shape.bounds()
+        pts = np.concatenate([V[rng.choice(len(V), min(len(V), 40), replace=False)],
+                              V[:20] + rng.normal(0, 0.3, (min(20, len(V)), 2)),
+                              rng.random((10, 2)) * [x1 - x0 + 20, y1 - y0 + 20]
+                              + [x0 - 10, y0 - 10]])
+        got = _faces_at(c.drawing, s, pts)
+        want = [_face_at(c.drawing, s, p) for p in pts]
+        assert [id(g) for g in got] == [id(g) for g in want]
+        assert sum(g is not None for g in got) >= 40
