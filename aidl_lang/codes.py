@@ -411,13 +411,21 @@ min_wall`, and `aidl check --min-wall MM` or `aidl render --min-wall MM` overrid
 off): a laser or router
 burns through or breaks such a wall. Between two holes, or a hole and the outline, the width
 is the measured least distance between their boundaries (to 0.01 mm); other thin walls are
-found by an opening of the part and their width is estimated. The warning names the holes and
-the outer edge that the wall lies between, its width and length and where it is. Move or
-shrink the hole so that enough material is left. A thin wall of the outline alone is located
-at the shape that makes it (the face covering most of it, in the solid or one of its solid
-children); when a corner of that shape sharper than 60 degrees lies in it (an outline that
-tapers to a point: a needle-thin Triangle, a spike), the hint says to blunt the tip to at
-least the minimum wall, else to widen the shape.
+found by an opening of the part (what a disc of the minimum's diameter cannot reach, in pieces
+of at least 2 x minimum^2, so that ordinary corners do not count) and measured across: the
+least distance between the two sides of the wall that face each other, over the length of
+its centre line, at a place inside it. The warning names the holes and the outer edge that
+the wall lies between, its width and length and where it is. Move or shrink the hole so that
+enough material is left. A thin wall of the outline alone is located at the shape that makes
+it (the face covering most of it, in the solid or one of its solid children). When it is a
+corner sharper than 60 degrees (an outline that tapers to a point: a needle-thin Triangle, a
+spike) the warning names the corner by its vertex and angle and says over how much of its
+length it is narrower than the minimum; a corner of about 11 degrees or more is never
+reported (what burns is its very point), a sharper one at any minimum, so the hint says to
+blunt the tip, or `min_wall 0` in the part when the tip is asked for. For a wall of one
+shape as the program states it (a 0.34 mm angle leg), the `--json` fix is the statement
+`min_wall W` (W just under the measured width) before the part: a wall this thin, asked for,
+is then accepted; otherwise widen the shape.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)

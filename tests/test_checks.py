@@ -203,8 +203,11 @@ def test_W0507_a_tip_that_tapers_to_a_point_names_its_shape_and_the_figure(compi
     shape (not only the top structure) and says to blunt the tip to the minimum wall."""
     (w,) = warnings(compile_text, NOTE, "W0507")
     assert (w.span.line, w.span.col) == (4, 13)
-    assert w.message.startswith("a wall of `note` at the tip of Triangle `note.stem.s` beside "
-                                "the outer edge of `note` is thinner than 0.5 mm (about ")
+    # the tip named by its vertex and angle, and the stretch under the minimum: the last
+    # 0.25 / tan(4.295 deg / 2) = 6.67 mm (issue 65: not "about 0.01 mm over 40 mm")
+    assert w.message == ("a wall of `note` at the tip of Triangle `note.stem.s` beside the outer "
+                         "edge of `note`: its corner at (5.00, 40.00) is 4.3 degrees, narrower "
+                         "than 0.5 mm over its last 6.67 mm (the laser burns the point away)")
     assert w.hint.startswith("blunt the tip of Triangle `note.stem.s` to at least 0.5 mm")
     c = compile_text(NOTE, min_wall=0.8)
     (w,) = [d for d in c.sink.items if d.code == "W0507"]

@@ -30,12 +30,16 @@ solid tri {{
 """
 
 
+NEEDLE = TRIANGLE.replace("(40, 15.482)", "(90, 4)")        # a 2.5-degree corner at (0, 0)
+
+
 # ------------------------------------------------------------------ min_wall
 def test_a_requested_sharp_triangle_warns_without_min_wall_and_not_with_it():
-    assert "W0507" in _codes(aidl_compile(TRIANGLE.format(statement="")))
-    for st in ("min_wall 0", "min_wall 0.005 mm"):
-        c = aidl_compile(TRIANGLE.format(statement=st))
-        assert c.ok and "W0507" not in _codes(c), (st, _codes(c))
+    assert "W0507" in _codes(aidl_compile(NEEDLE.format(statement="")))
+    c = aidl_compile(NEEDLE.format(statement="min_wall 0"))
+    assert c.ok and "W0507" not in _codes(c), _codes(c)
+    # a corner sharper than about 11 degrees burns at any minimum (the sliver scales with it)
+    assert "W0507" in _codes(aidl_compile(NEEDLE.format(statement="min_wall 0.005 mm")))
 
 
 def test_min_wall_in_a_structure_covers_that_part_only():
@@ -43,10 +47,10 @@ def test_min_wall_in_a_structure_covers_that_part_only():
 assembly kit {
     solid a {
         min_wall 0
-        body = Triangle((0, 0), (95.149, 0), (40, 15.482))
+        body = Triangle((0, 0), (95.149, 0), (90, 4))
     }
     solid b {
-        body = Triangle((0, 40), (95.149, 40), (40, 55.482))
+        body = Triangle((0, 40), (95.149, 40), (90, 44))
     }
 }
 """
@@ -56,10 +60,10 @@ assembly kit {
 
 
 def test_the_command_line_min_wall_overrides_the_statement():
-    src = TRIANGLE.format(statement="min_wall 0")
+    src = NEEDLE.format(statement="min_wall 0")
     assert "W0507" not in _codes(aidl_compile(src))
     assert "W0507" in _codes(aidl_compile(src, min_wall=0.5))
-    assert "W0507" not in _codes(aidl_compile(TRIANGLE.format(statement=""), min_wall=0))
+    assert "W0507" not in _codes(aidl_compile(NEEDLE.format(statement=""), min_wall=0))
 
 
 def test_min_wall_must_be_a_length_not_negative():
@@ -247,3 +251,53 @@ def test_the_description_says_when_the_thickness_is_only_the_default():
     (p,) = c.description["parts"]
     assert (p["thickness"], p["thickness_set"], p["kerf"], p["notches"]) == (3.0, False, None, [])
     assert "3 mm thick (no `thickness` stated: the default), no kerf" in c.describe()
+
+
+# ------------------------------------------------------------------ W0507 says what it measured
+def test_w0507_states_the_measured_width_and_length_of_a_thin_leg_and_its_fix_clears_it():
+    """An angle profile with 0.34 mm legs (as requested): the width measured across the leg
+    (not the 0.5 mm threshold), over the legs' centre line; the offered fix states the wall."""
+    src = """solid angle {
+    body = Polygon([(0, 0), (40, 0), (40, 0.34), (0.34, 0.34), (0.34, 25.4), (0, 25.4)])
+}
+"""
+    c = aidl_compile(src)
+    (w,) = [d for d in c.sink.items if d.code == "W0507"]
+    assert "is 0.34 mm wide, thinner than 0.5 mm (over 65.1 mm" in w.message, w.message
+    assert w.fix is not None and w.fix.replacement.startswith("min_wall 0.33 mm")
+    fixed = src[:w.fix.span.start] + w.fix.replacement + src[w.fix.span.end:]
+    c2 = aidl_compile(fixed)
+    assert c2.ok and "W0507" not in _codes(c2), [d.message for d in c2.sink.items]
+    # the measured width follows the drawing: 0.21 mm legs read 0.21
+    c3 = aidl_compile(src.replace("0.34", "0.21"))
+    (w3,) = [d for d in c3.sink.items if d.code == "W0507"]
+    assert "is 0.21 mm wide" in w3.message
+
+
+def test_w0507_is_quiet_on_a_requested_obtuse_triangle():
+    """Base 95.149, height 15.482: corners of 18 and 16 degrees, each cut clean (the old
+    message joined the three corners' slivers over the whole base and blamed the 144-degree
+    apex); a triangle sharp enough to burn names the corner and its angle."""
+    assert "W0507" not in _codes(aidl_compile(TRIANGLE.format(statement="")))
+    c = aidl_compile("solid needle { body = Triangle((0, 0), (95.149, 0), (90, 4)) }")
+    (w,) = [d for d in c.sink.items if d.code == "W0507"]
+    import re
+    m = re.search(r"its corner at \(([-\d.]+), ([-\d.]+)\) is ([\d.]+) degrees", w.message)
+    assert m, w.message
+    x, y, angle = map(float, m.groups())
+    assert (x, y) == (0.0, 0.0)
+    assert angle == pytest.approx(math.degrees(math.atan2(4, 90)), abs=0.05)
+
+
+def test_w0507_of_a_long_spike_says_how_much_of_it_is_thin():
+    c = aidl_compile("""solid spike {
+    body = Rectangle(center=(0, 0), width=20, height=10)
+    solid s { t = Triangle(a=(10, -3), b=(10, 3), c=(160, 0)) }
+}
+""")
+    (w,) = [d for d in c.sink.items if d.code == "W0507"]
+    angle = 2 * math.degrees(math.atan2(3, 150))
+    last = 0.25 / math.tan(math.radians(angle) / 2)
+    assert f"is {angle:.1f} degrees, narrower than 0.5 mm over its last {last:.2f} mm" \
+        in w.message, w.message
+    assert "over 150" not in w.message

@@ -16,7 +16,7 @@ from __future__ import annotations
 import manifold3d as mf
 import numpy as np
 
-from ...diagnostics import DiagnosticSink, Label
+from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
 from ...geometry.model import Structure
 from ..booleans import Drawing
 from ..nearby import _median, box_pairs
@@ -46,10 +46,8 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     holes = [c for c in cuts if c.hole in d.shapes and not d.shapes[c.hole].is_empty()]
     hb = np.array([d.shapes[c.hole].bounds() for c in holes], dtype=float).reshape(-1, 4)
     filled = None
-    for piece, a in zip(pieces, areas):
+    for piece, a in _separate(pieces, areas, t):
         tick()
-        if a < 2 * t * t:
-            continue
         if filled is None:
             filled = _union([shape] + [d.shapes[c.hole] for c in holes])
         near = piece.offset(t, mf.JoinType.Round, 2.0, segs)
@@ -64,27 +62,139 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         if names and any(set(names) <= c for c in covered):
             continue
         x0, y0, x1, y1 = piece.bounds()
-        length = max(x1 - x0, y1 - y0, 1e-9)
-        width = min(t, a / length)
         between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
             f" beside {names[0]}" if names else "")
         span = next((c.hole.span for c in holes if f"hole `{c.hole.path}`" in names), s.span)
-        px, py = _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
         maker = None if any(n.startswith("hole ") for n in names) else _maker(d, s, piece)
+        width, length, (px, py) = _measure(piece, a, t, loops if loops is not None else
+                                           [np.asarray(P, dtype=float)
+                                            for P in shape.to_polygons()])
         made, fix = "", f"move or shrink the feature so that at least {t:g} mm of material is left"
+        meant = ("; if the request asks for this thin wall, say so: `min_wall 0` in "
+                 f"`{s.path}` (not cut by a laser or router) or a smaller `min_wall` at the top")
+        edit = None
         if maker is not None:
             g, tip = maker
             what = f"{g.kind} `{g.label}`" if g.name else g.label
-            made = f" at the tip of {what}" if tip else f" made by {what}"
             span = g.span or g.owner.span or span
-            fix = (f"blunt the tip of {what} to at least {t:g} mm: end it in a flat or a round "
-                   f"{t:g} mm across instead of a point" if tip else
-                   f"widen {what} (or move it) so that at least {t:g} mm of material is left")
-        sink.warning("W0507", f"a wall of `{s.path}`{made}{between} is thinner than {t:g} mm "
-                     f"(about {width:.2f} mm over {length:.1f} mm, near "
-                     f"({px:.1f}, {py:.1f}))", span,
-                     hint=f"{fix} (a laser or router cannot hold a thinner wall); the minimum is "
-                          "set with --min-wall")
+            if tip is not None:
+                (vx, vy), angle = tip
+                last = t / 2 / np.tan(np.radians(angle) / 2)
+                sink.warning(
+                    "W0507", f"a wall of `{s.path}` at the tip of {what}{between}: its corner "
+                    f"at ({vx:.2f}, {vy:.2f}) is {angle:.1f} degrees, narrower than {t:g} mm "
+                    f"over its last {last:.2f} mm (the laser burns the point away)", span,
+                    hint=f"blunt the tip of {what} to at least {t:g} mm: end it in a flat or a "
+                         f"round {t:g} mm across instead of a point (a corner of "
+                         f"{_CLEAN_ANGLE:g} degrees or more passes); if the request asks "
+                         f"for this sharp tip, say so: `min_wall 0` in `{s.name}` (no wall "
+                         "check for this part)")
+                continue
+            made = f" made by {what}"
+            fix = f"widen {what} (or move it) so that at least {t:g} mm of material is left"
+            stated = np.floor((width - 1e-3) * 100) / 100
+            if stated > 0 and (g.span is not None or s.span is not None):
+                # the wall is one shape as the program states it: accepting it is one statement
+                at = s.span
+                edit = Fix(Span(at.file, at.line, at.col, at.line, at.col, at.start, at.start),
+                           f"min_wall {stated:g} mm\n{' ' * (at.col - 1)}")
+                meant = (f"; if the request asks for a wall this thin, state it: `min_wall "
+                         f"{stated:g} mm` before `{s.name}` (the fix)")
+        sink.add(Diagnostic(
+            "W0507", f"a wall of `{s.path}`{made}{between} is {width:.2f} mm wide, thinner "
+            f"than {t:g} mm (over {length:.1f} mm, near ({px:.1f}, {py:.1f}))", span, "warning",
+            hint=f"{fix} (a laser or router cannot hold a thinner wall){meant}; the minimum is "
+                 "set by `min_wall` or --min-wall", fix=edit))
+
+
+# the angle (degrees) above which a corner's sliver stays under W0507's 2 t^2 at any minimum:
+# the opening by a disc of radius r removes r^2 (cot(a/2) - (pi - a)/2) at a corner of angle
+# a, which reaches 8 r^2 = 2 t^2 at about 11 degrees
+_CLEAN_ANGLE = 12
+
+
+def _separate(pieces: list, areas: list, t: float):
+    """``(piece, area)`` of every piece of at least ``2 t^2``, each split where it hangs
+    together only by hairlines (the opening leaves seams of ~1e-9 mm along straight edges that
+    join the slivers of a triangle's three corners into one "piece" over its whole base): a
+    sliver of ``1e-4 t`` is shaved off and the rest decomposed, and only parts that still
+    weigh ``2 t^2`` are measured (a requested 18-degree corner is then no wall)."""
+    least = 2 * t * t
+    eps = 1e-4 * t
+    for piece, a in zip(pieces, areas):
+        if a < least:
+            continue
+        shaved = piece.offset(-eps, mf.JoinType.Miter, 2.0, 16).offset(eps, mf.JoinType.Miter,
+                                                                       2.0, 16)
+        parts = shaved.decompose()
+        if len(parts) <= 1:
+            yield piece, a
+            continue
+        for p in parts:
+            pa = _area(p)
+            if pa >= least:
+                yield p, pa
+
+
+def _measure(piece, a: float, t: float, loops: list):
+    """What a thin ``piece`` (area ``a``) of the part whose outline is ``loops`` measures:
+    ``(width, length, place)`` in mm.  The width is the least distance across the material
+    between two stretches of the outline that face each other (a vertex and a segment whose
+    directions differ by more than 120 degrees: the two sides of a wall, not two neighbours of
+    one curve), over the vertices in the piece's box (:func:`.nearby.close_pairs`); the length
+    is the piece's area over that width (its centre line), the place the middle of the
+    thinnest pair.  With no facing pair (a wall that bends away), the piece's area over its
+    longest side, never above ``t``, at the vertex of the piece nearest its box's centre."""
+    from ..nearby import close_pairs
+    x0, y0, x1, y1 = piece.bounds()
+    pad = 1e-3 + 1e-6 * max(abs(x0), abs(y0), abs(x1), abs(y1))
+    V, B, idx_ok = [], [], []
+    for P in loops:
+        if len(P) < 2:
+            continue
+        lo, hi = P.min(axis=0), P.max(axis=0)
+        if lo[0] > x1 + t or hi[0] < x0 - t or lo[1] > y1 + t or hi[1] < y0 - t:
+            continue
+        Q = np.roll(P, -1, axis=0)
+        V.append(P)
+        B.append(Q)
+        idx_ok.append((P[:, 0] >= x0 - pad) & (P[:, 0] <= x1 + pad) & (P[:, 1] >= y0 - pad)
+                      & (P[:, 1] <= y1 + pad))
+    best = None
+    if V:
+        Vs, Bs, inside = np.concatenate(V), np.concatenate(B), np.concatenate(idx_ok)
+        n = len(Vs)
+        sizes = np.array([len(P) for P in V])
+        start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+        size = np.repeat(sizes, sizes)
+        idx = np.arange(n)
+        nxt = start + (idx - start + 1) % size
+        prv = start + (idx - start - 1) % size
+        near = (np.minimum(Vs, Bs) <= (x1 + t, y1 + t)).all(axis=1) & \
+            (np.maximum(Vs, Bs) >= (x0 - t, y0 - t)).all(axis=1)
+        segs = np.flatnonzero(near)
+        verts = np.flatnonzero(inside)
+        if len(segs) and len(verts):
+            v, sg, dist, foot = close_pairs(Vs[verts], verts, Vs[segs], Bs[segs], segs, t)
+            if len(v):
+                v, sg = verts[v], segs[sg]
+                ok = (v != nxt[sg]) & (dist > 1e-9)
+                seg = Bs[sg] - Vs[sg]
+                facing = np.zeros(len(v), dtype=bool)
+                for tan in (Vs[nxt[v]] - Vs[v], Vs[v] - Vs[prv[v]]):
+                    with np.errstate(divide="ignore", invalid="ignore"):
+                        cos = np.einsum("ij,ij->i", tan, seg) / np.maximum(
+                            np.hypot(*tan.T) * np.hypot(*seg.T), 1e-300)
+                    facing |= cos < -0.5
+                ok &= facing
+                if ok.any():
+                    k = np.flatnonzero(ok)[int(np.argmin(np.where(ok, dist, np.inf)[ok]))]
+                    best = (float(dist[k]), (Vs[v[k]] + foot[k]) / 2)
+    if best is not None:
+        width, mid = best
+        return width, max(a / max(width, 1e-9), width), (float(mid[0]), float(mid[1]))
+    length = max(x1 - x0, y1 - y0, 1e-9)
+    return min(t, a / length), length, _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
 
 
 SHARP = 60.0      # degrees: a corner of a face sharper than this, in a thin piece, is a tip
@@ -92,9 +202,10 @@ SHARP = 60.0      # degrees: a corner of a face sharper than this, in a thin pie
 
 def _maker(d: Drawing, s: Structure, piece):
     """The shape of solid ``s`` (its own or a solid descendant's, :attr:`Drawing.own`) that
-    makes the thin ``piece``: the face covering most of it, as ``(geometry, tip)``; ``tip``
-    when a corner of that face sharper than :data:`SHARP` degrees lies in the piece (an
-    outline that tapers to a point).  None when no face covers any of it."""
+    makes the thin ``piece``: the face covering most of it, as ``(geometry, tip)``; ``tip`` is
+    ``((x, y), angle)`` (mm, degrees) of the sharpest corner of that face sharper than
+    :data:`SHARP` degrees that lies in the piece (an outline that tapers to a point), else
+    None.  None when no face covers any of it."""
     best, most = None, 1e-9
     x0, y0, x1, y1 = piece.bounds()
     for t, faces in d.own.items():
@@ -111,6 +222,7 @@ def _maker(d: Drawing, s: Structure, piece):
         return None
     g, f = best
     near = piece.offset(1e-3, mf.JoinType.Miter, 2.0, 16)
+    sharpest = None
     for P in f.to_polygons():
         P = np.asarray(P, dtype=float)
         u, w = np.roll(P, 1, axis=0) - P, np.roll(P, -1, axis=0) - P
@@ -120,8 +232,10 @@ def _maker(d: Drawing, s: Structure, piece):
         for k in np.flatnonzero(convex & (cos > np.cos(np.radians(SHARP)))):
             q = mf.CrossSection.square((2e-3, 2e-3)).translate((P[k, 0] - 1e-3, P[k, 1] - 1e-3))
             if _area(near ^ q) > 0:
-                return g, True
-    return g, False
+                angle = float(np.degrees(np.arccos(np.clip(cos[k], -1.0, 1.0))))
+                if sharpest is None or angle < sharpest[1]:
+                    sharpest = ((float(P[k, 0]), float(P[k, 1])), angle)
+    return g, sharpest
 
 
 def _point_of(piece, near) -> tuple[float, float]:
