@@ -223,9 +223,16 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`). A program that runs out of the machine's memory
-before any figure of the budget is also `E0304` ("ran out of memory while compiling"), shown
-at its first structure. One bound no `--budget` raises: `aidl render` matches the edges of the
+(e.g. `aidl render model.aidl --budget 4`). A program that runs out of memory
+before any figure of the budget is also `E0304`, wherever it happens (interpreting, solving,
+the booleans, the shape checks, the exact outlines, a writer) and in every front end (the
+CLI, the Python API, `aidl serve`, `aidl studio`, MCP, the editor, `aidl batch`): "the program
+ran out of memory while compiling" (or "in the booleans of `plate`", "in the SVG writer of
+`kit.plate`"), "it needs more memory than this compile may use (12 GB)", shown at the
+structure being worked on, else at the first structure. `aidl check`, `render`, `parts` and
+`import` cap their own memory (address space) so that this is said before the machine runs
+out: by default half the machine's memory (or of the cgroup's limit when that is lower), at
+least 3 GB; `--memory 16G` raises the cap, `--memory none` removes it. One bound no `--budget` raises: `aidl render` matches the edges of the
 final outlines back to the exact curves in at most 10 000 000 (edge, curve) pairs, so
 thousands of copies of one curve at one place (a template or pattern repeated without moving
 it) are `E0304` "in the exact outlines" of the part, with the fix: draw each curve once.

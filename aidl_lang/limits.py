@@ -72,6 +72,64 @@ class OutOfBudget(Exception):
         self.what, self.stage, self.where, self.hint = what, stage, where, hint
 
 
+class OutOfMemory(OutOfBudget):
+    """A ``MemoryError`` (or the ``SystemError`` C code raises for a failed allocation) in a
+    stage after the solve: the booleans, the shape checks, the exact outlines, a writer.
+    Raised by the code that caught it, once the failed stage's frames are gone (so their
+    arrays are freed), and reported like any :class:`OutOfBudget`: one located ``E0304``
+    (:func:`aidl_lang.pipeline.report_out_of_budget`) at ``where``, the structure being
+    worked on."""
+
+    def __init__(self, stage: str, where=None):
+        super().__init__(memory_text(), stage, where, hint=MEMORY_HINT + memory_fix())
+
+
+MEMORY_HINT = ("build less (fewer loop iterations, template instances, copies or circles), or "
+               "look for a template that instantiates itself more than once per level")
+
+
+def is_out_of_memory(ex: BaseException) -> bool:
+    """True when ``ex`` is running out of memory: a :class:`MemoryError`, or the
+    :class:`SystemError` that C code raises when an allocation failed and the MemoryError got
+    lost (``error return without exception set``, or one with a MemoryError as its cause or
+    context; issue 37)."""
+    seen = 0
+    e: BaseException | None = ex
+    while e is not None and seen < 20:
+        if isinstance(e, MemoryError):
+            return True
+        if isinstance(e, SystemError) and "without exception set" in str(e):
+            return True
+        e = e.__cause__ or e.__context__
+        seen += 1
+    return False
+
+
+def memory_text() -> str:
+    """What ran out, for ``E0304``: the process's address-space cap when it has one
+    (``aidl check --memory``, a server's worker), else the machine's memory."""
+    from .memory import memory_cap
+    cap, _ = memory_cap()
+    if cap:
+        return f"it needs more memory than this compile may use ({size_text(cap)})"
+    return "it needs more memory than this machine can hold"
+
+
+def memory_fix() -> str:
+    """``; or raise the memory cap ... with `--memory 16G``` when the cap was set by a command
+    whose user can raise it (:func:`aidl_lang.memory.limit_memory`'s ``raise_with``)."""
+    from .memory import memory_cap
+    cap, how = memory_cap()
+    return f"; or raise the memory cap ({size_text(cap)}) with `{how}`" if cap and how else ""
+
+
+def size_text(n: int) -> str:
+    """Bytes as ``12.5 GB`` / ``600 MB`` (powers of 1024)."""
+    if n >= 1 << 30:
+        return f"{n / (1 << 30):.3g} GB"
+    return f"{n / (1 << 20):.0f} MB"
+
+
 class Deadline:
     """The wall-time end of one compile (``time.monotonic()`` seconds) and the budget it
     comes from; :meth:`check` raises :class:`OutOfBudget` once it has passed."""

@@ -16,7 +16,8 @@ import numpy as np
 
 from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_path
 from .interp import Interpreter
-from .limits import DEFAULT_BUDGET, MAX_EXTENT, Budget, Deadline, OutOfBudget
+from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
+                     OutOfMemory, is_out_of_memory, memory_fix, memory_text)
 from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
@@ -78,32 +79,32 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     # Out of memory: what the failed compile built is garbage now, much of it in reference
     # cycles (structures and their parents), which only the cycle collector frees — and it
     # would not run before the next allocations fail.  Free it, then report.
+    return Compiled(out_of_memory_sink(path, source))
+
+
+out_of_memory = is_out_of_memory      # the test every front end applies to an exception
+
+
+def out_of_memory_sink(path: str, source: str | None, stage: str | None = None,
+                       where=None) -> DiagnosticSink:
+    """A sink holding the one located ``E0304`` of a compile that ran out of memory (a
+    ``MemoryError`` anywhere: NumPy, Manifold, the checks, a writer), for every front end's
+    last resort: at ``where`` (a structure, with ``path`` and ``span``) when known, else at the
+    program's first structure.  Frees what the failed compile left in reference cycles
+    first (:func:`gc.collect`), so the process goes on; call it once the exception is gone."""
     import gc
-    sink = DiagnosticSink()
     gc.collect()
-    sink.sources[path] = source
-    sink.error("E0304", "the program ran out of memory while compiling: it builds more than "
-               "this machine can hold", _structure_span(path, source),
-               hint="build less (fewer loop iterations, template instances or circles), or "
-                    "look for a template that instantiates itself more than once per level")
-    return Compiled(sink)
-
-
-def out_of_memory(ex: BaseException) -> bool:
-    """True when ``ex`` is running out of memory: a :class:`MemoryError`, or the
-    :class:`SystemError` that C code raises when an allocation failed and the MemoryError got
-    lost (``error return without exception set``, or one with a MemoryError as its cause or
-    context; issue 37)."""
-    seen = 0
-    e: BaseException | None = ex
-    while e is not None and seen < 20:
-        if isinstance(e, MemoryError):
-            return True
-        if isinstance(e, SystemError) and "without exception set" in str(e):
-            return True
-        e = e.__cause__ or e.__context__
-        seen += 1
-    return False
+    sink = DiagnosticSink()
+    if source is not None:
+        sink.sources[path] = source
+    at = f" in {stage}" if stage else " while compiling"
+    of = f" of `{where.path}`" if getattr(where, "path", None) else ""
+    span = getattr(where, "span", None)
+    if span is None and source is not None:
+        span = _structure_span(path, source)
+    sink.error("E0304", f"the program ran out of memory{at}{of}: {memory_text()}", span,
+               hint=MEMORY_HINT + memory_fix())
+    return sink
 
 
 DEFAULTS_KEPT = 8     # sources whose defaults' topology a process keeps (serve, LSP, MCP)
@@ -275,20 +276,40 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
         return None
     check_assertions(sink, model)
     check_branches(sink, model)
+    stage = "the booleans"
     try:
-        with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no numpy noise
-            drawing = render_model(model, deadline)
-        for g, message, hint, *code in drawing.shape_errors:
-            sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
-                                hint=hint))
-        check_stray_holes(sink, drawing)
-        if shape_checks:
-            check_drawing(drawing, sink, min_wall, deadline)
+        try:
+            with warnings.catch_warnings(), np.errstate(all="ignore"):
+                warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: no noise
+                drawing = render_model(model, deadline)
+            for g, message, hint, *code in drawing.shape_errors:
+                sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
+                                    hint=hint))
+            check_stray_holes(sink, drawing)
+            if shape_checks:
+                stage = "the shape checks"
+                check_drawing(drawing, sink, min_wall, deadline)
+            return drawing
+        except (MemoryError, SystemError) as ex:
+            if not is_out_of_memory(ex):
+                raise
+        # out of memory: raised again once the failed stage's frames (its arrays) are gone
+        import gc
+        drawing = None
+        gc.collect()
+        raise OutOfMemory(stage, _first_structure(model))
     except OutOfBudget as ex:
         report_out_of_budget(sink, ex)
         return None
-    return drawing
+
+
+def _first_structure(model: Model):
+    """The model's first structure with a place in the source (where a whole-model error is
+    shown), or None."""
+    for s in getattr(model, "structures", ()):
+        if getattr(s, "span", None) is not None:
+            return s
+    return None
 
 
 def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
@@ -345,8 +366,9 @@ def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:
     on (the booleans, the shape checks, a writer)."""
     s = ex.where
     at = f" of `{s.path}`" if s is not None else ""
+    what = "memory" if isinstance(ex, OutOfMemory) else "its evaluation budget"
     sink.add(Diagnostic(
-        "E0304", f"the program ran out of its evaluation budget in {ex.stage}{at}: {ex.what}",
+        "E0304", f"the program ran out of {what} in {ex.stage}{at}: {ex.what}",
         getattr(s, "span", None), "error",
         hint=ex.hint or "build less (fewer or smaller shapes: every circle and arc becomes "
                         "chords of 0.005 mm), or raise the budget with `--budget 2` (or more)"))

@@ -49,17 +49,12 @@ class Busy(WorkerError):
     """Every worker of the pool stayed busy for the request's whole ``wait``."""
 
 
-def limit_memory(limit: int) -> None:
-    """Cap this process's address space at ``limit`` bytes (Linux ``RLIMIT_AS``): a program
-    that needs more gets a ``MemoryError`` or ends its worker, never the machine's memory."""
-    try:
-        import resource
-        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-        cap = limit if hard == resource.RLIM_INFINITY else min(limit, hard)
-        if soft == resource.RLIM_INFINITY or soft > cap:
-            resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
-    except (ImportError, ValueError, OSError):      # not on this platform
-        pass
+def limit_memory(limit: int | None, raise_with: str | None = None) -> None:
+    """Cap this process's address space at ``limit`` bytes (:func:`aidl_lang.memory.limit_memory`,
+    Linux ``RLIMIT_AS``): a program that needs more gets a ``MemoryError`` or ends its
+    worker, never the machine's memory."""
+    from .memory import limit_memory as cap
+    cap(limit, raise_with)
 
 
 def rss(pid: int | str = "self") -> int:

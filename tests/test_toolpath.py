@@ -119,8 +119,8 @@ def test_profiles_read_and_refuse_clearly(tmp_path):
     assert m.operation("cut_outer").depth_per_pass == pytest.approx(1.5875)
     assert m.operation("engrave") == DEFAULTS["router"].operation("engrave")
     for text, said in [('kind = "lazer"', "`kind` is `lazer`"),
-                       ('tool_diameter = -1', "`tool_diameter` must be a number >= 0"),
-                       ('[cut_outer]\npower = 150', "`cut_outer.power` is a percent"),
+                       ('tool_diameter = -1', "`tool_diameter` must be a number from 0 to 50 mm"),
+                       ('[cut_outer]\npower = 150', "`cut_outer.power` must be a number from 0 to 100 %"),
                        ('[engrave]\npasses = 0', "`engrave.passes` must be a whole number"),
                        ('tabz = 2', "`tabz` is not a profile key"),
                        ('kind = "laser', "is not TOML")]:

@@ -201,11 +201,30 @@ def main(argv: list[str]) -> int:
         if msg is None:
             return 0
         task, cfg = msg
+        oom = False
         try:
             row = rows.run_one(task, cfg)
         except Exception as e:              # a bug in aidl: this row says so, the batch goes on
-            row = blank_row(task, "crashed", f"internal error: {type(e).__name__}: {e}")
+            from ..limits import is_out_of_memory
+            oom = is_out_of_memory(e)
+            if not oom:
+                row = blank_row(task, "crashed", f"internal error: {type(e).__name__}: {e}")
+        if oom:                             # out of memory anywhere: the program's E0304
+            row = out_of_memory_row(task)
         tx.send(row)
+
+
+def out_of_memory_row(task: dict) -> dict:
+    """The row of a task that ran out of memory outside the compile's own handler (the
+    freedom count, the exact outlines, a writer): an ``error`` row with the program's located
+    ``E0304`` (:func:`aidl_lang.pipeline.out_of_memory_sink`), as any program error."""
+    from ..pipeline import out_of_memory_sink
+    sink = out_of_memory_sink(task.get("path") or task["id"], task.get("source"))
+    d = sink.items[0]
+    return blank_row(task, "error", errors=[{"code": d.code,
+                                             "line": d.span.line if d.span else None,
+                                             "column": d.span.col if d.span else None,
+                                             "message": d.message}])
 
 
 if __name__ == "__main__":

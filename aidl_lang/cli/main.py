@@ -179,6 +179,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
                         "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
     _budget_arg(r)
+    _memory_arg(r)
     r.add_argument("--follow-symlinks", action="store_true",
                    help="write through an output that is a symbolic link (default: refuse it)")
     r.add_argument("--force", action="store_true",
@@ -202,11 +203,13 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="describe the final part: outline, openings (kind, centre, size), "
                         "engravings, copies, symmetries (JSON with --json)")
     _budget_arg(c)
+    _memory_arg(c)
     pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
     pl.add_argument("file")
     pl.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     pl.add_argument("--json", action="store_true", help="the list as JSON on stdout")
     _budget_arg(pl)
+    _memory_arg(pl)
     e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
     e.add_argument("code")
     dc = add("docs", help="the reference of a shape, constraint, statement or stdlib template, "
@@ -240,6 +243,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                     help="a preset of roles by colour: laser = Boxes.py's colours (black and "
                          "blue cut, green engraved, red annotations left out)")
     _budget_arg(im)
+    _memory_arg(im)
     f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
@@ -312,6 +316,35 @@ def _budget_arg(p) -> None:
     p.add_argument("--budget", type=_budget_factor, default=1.0, metavar="K",
                    help="multiply the evaluation budget (steps, objects, sizes, time; "
                         "docs/language.md §8.1) by K, e.g. --budget 4")
+
+
+def _memory_size(text: str):
+    from ..memory import parse_size
+    try:
+        size = parse_size(text)
+    except ValueError as e:
+        raise argparse.ArgumentTypeError(str(e)) from None
+    if size is not None and size < 256 << 20:
+        raise argparse.ArgumentTypeError(f"`{text}` is less than 256M, too little "
+                                         "for the compiler itself")
+    return 0 if size is None else size          # 0: no cap
+
+
+def _memory_arg(p) -> None:
+    p.add_argument("--memory", type=_memory_size, default=None, metavar="SIZE",
+                   help="cap this command's memory (address space) at SIZE, e.g. 4G or 1500M; "
+                        "none: no cap (default: half the machine's memory, at least 3G); "
+                        "a program past it is E0304")
+
+
+def _cap_memory(args) -> None:
+    """``aidl check/render/parts/import``: cap the address space (``--memory``; by default
+    :func:`aidl_lang.memory.default_cap`), so running out is a located E0304."""
+    from ..memory import default_cap, limit_memory
+    size = args.memory
+    if size is None:
+        size = default_cap()
+    limit_memory(size, raise_with="--memory SIZE")
 
 
 def _budget(args):
@@ -397,6 +430,8 @@ def cmd_check(args) -> int:
     from ..api import compile as compile_program
     program = compile_program(path=args.file, overrides=_overrides(args.set),
                               budget=_budget(args), min_wall=args.min_wall)
+    global _program
+    _program = (args.file, program.source) if program.source is not None else None
     res = program.compiled
     extra = {}
     dofs = None
@@ -744,6 +779,8 @@ def cmd_render(args) -> int:
         src = _read(args.file, args.json)
         if src is None:
             return 1
+    global _program
+    _program = (args.file, src)
     res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
                          budget=_budget(args))
     if not res.ok:
@@ -977,8 +1014,12 @@ def cmd_mcp(args) -> int:
     return mcp_main(args.root, min(args.budget, 4.0), system_prompt)
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Run one ``aidl`` command; returns the exit status (see the module text)."""
+def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
+    """Run one ``aidl`` command; returns the exit status (see the module text).
+    ``cap_memory``: cap this process's address space for ``check``, ``render``, ``parts``
+    and ``import`` (``--memory``; the ``aidl`` command does, :func:`entry`): a cap cannot be
+    lifted again, so a caller that goes on in the same process (tests, a script) is left
+    without one unless it asks."""
     global _command
     argv = sys.argv[1:] if argv is None else list(argv)
     first = argv[0] if argv else None
@@ -987,6 +1028,9 @@ def main(argv: list[str] | None = None) -> int:
     _command = args.cmd
     if args.cmd == "check":
         _check_file(args, parser)
+    if cap_memory and args.cmd in ("check", "render", "parts", "import"):
+        _cap_memory(args)
+    oom = False
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,
@@ -1007,13 +1051,52 @@ def main(argv: list[str] | None = None) -> int:
     except RecursionError:
         print("aidl: error[E0302]: the program is nested too deeply to compile", file=sys.stderr)
         return 1
+    except (MemoryError, SystemError) as e:
+        from ..limits import is_out_of_memory
+        if not is_out_of_memory(e):
+            return _internal(e)
+        oom = True                 # said below, once the failed frames are freed
     except Exception as e:  # an internal error: report it as such, never a raw traceback
-        print(f"aidl: internal error: {type(e).__name__}: {e}\n"
-              "This is a bug in aidl, not in your program. Please report it with the input file.",
-              file=sys.stderr)
-        if os.environ.get("AIDL_DEBUG"):
-            raise
-        return 3
+        return _internal(e)
+    if oom:
+        return _out_of_memory(args)
+    return 3
+
+
+def _internal(e: BaseException) -> int:
+    """An internal error (a bug): one line, exit 3 (the traceback with ``AIDL_DEBUG=1``)."""
+    print(f"aidl: internal error: {type(e).__name__}: {e}\n"
+          "This is a bug in aidl, not in your program. Please report it with the input file.",
+          file=sys.stderr)
+    if os.environ.get("AIDL_DEBUG"):
+        raise e
+    return 3
+
+
+_program: tuple[str, str] | None = None   # (path, source) of the program being compiled
+
+
+def _out_of_memory(args) -> int:
+    """A ``MemoryError`` outside the compile's own handler (the freedom count, the redundancy
+    search, the exact outlines, a writer, an import): one located ``E0304``, exit 1, nothing
+    written."""
+    from ..pipeline import out_of_memory_sink
+    from ..limits import memory_text
+    if args.cmd == "import":
+        print(f"{args.file}: error[E0304]: importing `{args.file}` ran out of memory: "
+              f"{memory_text()}\n  = help: import a smaller drawing, or one layer at a time "
+              "(--layer)", file=sys.stderr)
+        return 1
+    path, source = _program if _program is not None else (getattr(args, "file", "-"), None)
+    if source is None and path not in (None, "-"):
+        from ..sources import SourceRefused, read_program
+        try:
+            source = read_program(path)
+        except SourceRefused:
+            source = None
+    sink = out_of_memory_sink(path, source)
+    _emit(sink, getattr(args, "json", False), False)
+    return 1
 
 
 _command: str | None = None
@@ -1028,7 +1111,7 @@ def entry() -> None:
     process ends with ``os._exit`` once stdout and stderr are flushed, as mypy does: tearing
     the interpreter down (freeing every object of NumPy, Manifold, the model and the modules)
     cost 20-35 ms of a ~0.25 s cold ``aidl check`` and has no effect a user could see."""
-    rc = main()
+    rc = main(cap_memory=True)
     if _command in _QUICK_EXIT:
         for stream in (sys.stdout, sys.stderr):
             try:

@@ -32,13 +32,37 @@ def _handler(root: str, budget: float):
         name, args = request
         if name not in ("check", "render", "values", "describe"):
             return False, T.Refused(f"unknown tool `{name}`")
+        oom = False
         try:
             return True, getattr(T, name)(ws, *args)
         except T.Refused as e:
             return False, T.Refused(str(e))
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
-            return False, T.Refused(f"internal error: {type(e).__name__}: {e}")
+            from ..limits import is_out_of_memory
+            oom = is_out_of_memory(e)
+            if not oom:
+                return False, T.Refused(f"internal error: {type(e).__name__}: {e}")
+        return False, out_of_memory(ws, args)       # once the failed frames are gone
     return handle
+
+
+def out_of_memory(ws, args: tuple):
+    """The refusal of a call whose compile ran out of memory anywhere (the checks, the exact
+    outlines, a writer): the program's located ``E0304`` (``args``: the tool's ``source``,
+    ``path``, ...), as the summary of a failed ``check`` words it."""
+    from ..pipeline import out_of_memory_sink
+    source = args[0] if args and isinstance(args[0], str) else None
+    path = args[1] if len(args) > 1 and isinstance(args[1], str) else None
+    name = path or "<source>"
+    if source is None and path is not None:
+        try:
+            real, source = ws.read(path)
+        except T.Refused:
+            source = None
+    sink = out_of_memory_sink(name, source)
+    d = sink.items[0]
+    return T.Refused(f"{d.code} line {d.span.line if d.span else '-'}: {d.message}; "
+                     f"{d.hint}")
 
 
 class Worker(W.Worker):

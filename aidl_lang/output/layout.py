@@ -117,9 +117,17 @@ def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None)
         kerf = output.drawing.kerf
     if not kerf:
         return output
-    from ..limits import OutOfBudget
+    from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
     try:
-        return compensate(output, kerf, deadline)
+        try:
+            return compensate(output, kerf, deadline)
+        except (MemoryError, SystemError) as ex:
+            if not is_out_of_memory(ex):
+                raise
+        where = output.drawing.part_of if output.drawing is not None else {}
+        big = max(output.parts, key=lambda p: sum(len(lp.segments) for lp in p.loops),
+                  default=None)
+        raise OutOfMemory("the kerf offset", where.get(big.name) if big else None)
     except OutOfBudget as ex:
         raise OutputError(f"the kerf offset ran past the budget ({ex.what}); build less or "
                           "raise the budget (`--budget 2`)", ex) from None

@@ -30,7 +30,8 @@ An operation's keys not given take the defaults of :data:`DEFAULTS` for the prof
 The program's own ``kerf`` and ``thickness`` keep their meaning; a profile that states them
 too (``kerf = ...``, ``thickness = ...``) is compared and a difference is reported by the
 writer as a warning. All lengths are millimetres (``units`` is only how the file is written),
-speeds mm/min, power percent.
+speeds mm/min, power percent.  Every number has a range (:data:`RANGES`, :data:`OP_RANGES`):
+past it the profile is refused (:class:`MachineError` naming the key and the range).
 """
 from __future__ import annotations
 
@@ -111,6 +112,51 @@ DEFAULTS: dict[str, Machine] = {
 _NUMBER = ("max_power", "travel_speed", "tool_diameter", "safe_height", "tab_width",
            "tab_height", "lead_in", "kerf", "thickness")
 _OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle")
+# The range of every number a profile may give, ``key: (low, high, unit)``, the ends included;
+# lengths in mm and speeds in mm/min (an inch profile's values are converted first).  They
+# bound the work a job may ask for: a laser or plotter runs each path ``passes`` times, a
+# router ``thickness / depth_per_pass`` times (a depth of 1e-12 mm asked for 1e12 passes and
+# ended in MemoryError; 1e-6 mm wrote millions of passes for minutes), each tab splits a cut,
+# a lead-in or tab far off the loop writes coordinates far off the sheet, a speed near 0 an
+# estimate of centuries.  Past a range: one MachineError naming the key and the range
+# (docs/machines.md, "Ranges"), and nothing is written.
+RANGES: dict[str, tuple[float, float, str]] = {
+    "max_power": (1.0, 100_000.0, ""),
+    "travel_speed": (1.0, 100_000.0, "mm/min"),
+    "tool_diameter": (0.0, 50.0, "mm"),
+    "safe_height": (0.0, 500.0, "mm"),
+    "tabs": (0, 16, ""),
+    "tab_width": (0.0, 100.0, "mm"),
+    "tab_height": (0.0, 100.0, "mm"),
+    "lead_in": (0.0, 100.0, "mm"),
+    "kerf": (0.0, 10.0, "mm"),
+    "thickness": (0.0, 1000.0, "mm"),
+}
+OP_RANGES: dict[str, tuple[float, float, str]] = {
+    "power": (0.0, 100.0, "%"),
+    "speed": (1.0, 100_000.0, "mm/min"),
+    "passes": (1, 100, ""),
+    "depth_per_pass": (0.01, 100.0, "mm"),
+    "plunge": (1.0, 100_000.0, "mm/min"),
+    "spindle": (0.0, 100_000.0, "rpm"),
+}
+_WHOLE = ("tabs", "passes")          # whole numbers
+_PLAIN = ("max_power", "power", "spindle", "tabs", "passes")   # not lengths: never scaled
+# router passes of one cut (thickness / depth_per_pass, rounded up): past it the G-code writer
+# refuses the job naming the part (a 1 km thick part at 0.01 mm a pass)
+MAX_DEPTH_PASSES = 1000
+# moves of one machine program (G-code lines, HPGL segments): the profile's passes or depths
+# times the drawing's segments may not go past it (about 30 MB of G-code, 3-5 s to
+# write); past it the writer refuses the job and nothing is written
+MAX_JOB_MOVES = 1_000_000
+
+
+def too_long(what: str) -> OutputError:
+    """The error of a job past :data:`MAX_JOB_MOVES` (``what``: ``G-code lines``...)."""
+    return OutputError(f"the job would have more than {MAX_JOB_MOVES:,} {what}: the profile's "
+                       "`passes` (or a router's thickness / `depth_per_pass`) times the "
+                       "drawing's segments; use fewer passes or a larger depth_per_pass, or "
+                       "cut the drawing in parts; nothing was written")
 INCH = 25.4
 
 
@@ -160,25 +206,34 @@ def from_dict(data: dict, source: str = "") -> Machine:
             near = [k for k in sorted(known) if k.split("_")[0] == str(key).split("_")[0]]
             raise bad(key, "is not a profile key" + (f" (did you mean `{near[0]}`?)" if near
                                                       else f"; the keys: {', '.join(sorted(known))}"))
+    def number(key: str, v, low, high, unit: str):
+        """``v`` checked against its range (``low``..``high`` in mm, mm/min, ...); an inch
+        profile's lengths and speeds are converted to mm first."""
+        name = key.rsplit(".", 1)[-1]
+        whole = name in _WHOLE
+        k = 1.0 if name in _PLAIN else scale
+        shown = f"{low:g} to {high:g}" + (f" {unit}" if unit else "")
+        if k != 1.0:
+            shown += f" ({low / k:.3g} to {high / k:.3g} {unit.replace('mm', 'in')})"
+        what = "a whole number" if whole else "a number"
+        ok_type = isinstance(v, int) if whole else isinstance(v, (int, float))
+        if isinstance(v, bool) or not ok_type or v != v:
+            raise bad(key, f"must be {what} from {shown}, not {v!r}")
+        x = float(v) * k
+        if not low - 1e-12 * max(1.0, abs(low)) <= x <= high * (1 + 1e-12):
+            raise bad(key, f"must be {what} from {shown}, not {v!r}")
+        return int(v) if whole else x
+
     values = {}
     for key in _NUMBER:
         if key in data:
-            v = data[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or v != v \
-                    or v == float("inf") or v < 0:
-                raise bad(key, f"must be a number >= 0, not {v!r}")
-            values[key] = float(v) * (1.0 if key == "max_power" else scale)   # in or in/min
-    if "max_power" in values and values["max_power"] <= 0:
-        raise bad("max_power", "must be more than 0")
+            values[key] = number(key, data[key], *RANGES[key])
     if "laser_mode" in data:
         if data["laser_mode"] not in ("M3", "M4"):
             raise bad("laser_mode", f"is {data['laser_mode']!r}, not \"M3\" or \"M4\"")
         values["laser_mode"] = data["laser_mode"]
     if "tabs" in data:
-        t = data["tabs"]
-        if isinstance(t, bool) or not isinstance(t, int) or not 0 <= t <= 16:
-            raise bad("tabs", f"must be a whole number from 0 to 16, not {t!r}")
-        values["tabs"] = t
+        values["tabs"] = number("tabs", data["tabs"], *RANGES["tabs"])
     ops = {}
     for name in OPERATIONS:
         got = data.get(name, {})
@@ -188,17 +243,7 @@ def from_dict(data: dict, source: str = "") -> Machine:
         for key, v in got.items():
             if key not in _OP_KEYS:
                 raise bad(f"{name}.{key}", f"is not an operation key; the keys: {', '.join(_OP_KEYS)}")
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or v != v \
-                    or v == float("inf") or v < 0:
-                raise bad(f"{name}.{key}", f"must be a number >= 0, not {v!r}")
-            if key == "passes" and (not isinstance(v, int) or not 1 <= v <= 100):
-                raise bad(f"{name}.passes", f"must be a whole number from 1 to 100, not {v!r}")
-            if key == "power" and v > 100:
-                raise bad(f"{name}.power", f"is a percent of max_power: 0 to 100, not {v!r}")
-            if key in ("speed", "plunge", "depth_per_pass") and v <= 0:
-                raise bad(f"{name}.{key}", "must be more than 0")
-            if key in ("speed", "plunge", "depth_per_pass"):
-                v = float(v) * scale
+            v = number(f"{name}.{key}", v, *OP_RANGES[key])
             op = replace(op, **{key: v})
         ops[name] = op
     return replace(base, units=units, operations=ops, source=source, **values)

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
-from ..limits import OutOfBudget
+from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
 from .booleans import Drawing
 
 __all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
@@ -236,12 +236,20 @@ def build(drawing: Drawing, title: str = "", thickness=None, deadline=None) -> O
         thickness = drawing.thickness
     parts = [p for p in drawing.parts if not p.shape.is_empty()]
     try:
-        part_loops = exact.loops_of([p.shape for p in parts], deadline)
+        try:
+            part_loops = exact.loops_of([p.shape for p in parts], deadline)
+        except (MemoryError, SystemError) as ex:
+            if not is_out_of_memory(ex):
+                raise
+            part_loops = None
+        if part_loops is None:          # raised here, once the failed frames are gone
+            raise OutOfMemory("the exact outlines")
     except OutOfBudget as ex:
         # the part with the most result vertices: where the curves lie on top of each other
         biggest = max(parts, key=lambda p: p.shape.num_vert())
         ex.where = drawing.part_of.get(biggest.name)
-        fix = ("draw fewer curves on top of each other" if ex.hint else
+        fix = ("build less" if isinstance(ex, OutOfMemory) else
+               "draw fewer curves on top of each other" if ex.hint else
                "build less or raise the budget (`--budget 2`)")
         raise OutputError(f"cannot recover the exact outlines: {ex.what}; {fix}", ex) from None
     for p, loops in zip(parts, part_loops):

@@ -99,7 +99,7 @@ class Session:
             self.program = None
             self.solver = self._row_keys = None
             self._dof_pending = self._checks_pending = None
-            return self._publish(Result(_internal(e, "compiling the file")), t0)
+            return self._publish(Result(self._failed(e, "compiling the file")), t0)
 
     def _load(self, t0: float, source: str | None = None) -> dict:
         sink = DiagnosticSink()
@@ -161,7 +161,7 @@ class Session:
         except Exception as e:          # noqa: BLE001 - keep the last picture, say so
             self.solver = self._row_keys = None
             self._checks_pending = None
-            return self._publish(Result(_internal(e, "applying the customizer values")), t0)
+            return self._publish(Result(self._failed(e, "applying the customizer values")), t0)
         if res.fctx is not None:
             self.params = self._params(res.fctx, self.values)
         view = self._publish(res, t0)
@@ -182,7 +182,7 @@ class Session:
             check_drawing(pending[1], sink)
             self._topology_checks(pending[1], sink)
         except Exception as e:          # noqa: BLE001 - warnings only: log, keep the picture
-            sink = _internal(e, "checking the shape")
+            sink = self._failed(e, "checking the shape")
         if not sink.items:
             return None
         self.diagnostics = self.diagnostics + [_diag_json(d, self.sources) for d in sink.items]
@@ -206,7 +206,7 @@ class Session:
         try:        # on the deep-stack thread, as `aidl check --set`: a deep value compiles
             res = run_deep(lambda: self._compile(values, keep_warm=False, drawing=True))
         except Exception as e:          # noqa: BLE001 - a 422 with the diagnostic, not a 500
-            res = Result(_internal(e, "compiling a download"))
+            res = Result(self._failed(e, "compiling a download"))
         if not res.ok:
             return None, [_diag_json(d, self.sources) for d in res.sink.items]
         return res.drawing, res.title
@@ -320,6 +320,15 @@ class Session:
             self.svg_values = dict(self.values)
         self.last = dict(res.timings, total_ms=_ms(t0), warm=res.warm)
         return self.view()
+
+    def _failed(self, e: BaseException, stage: str) -> DiagnosticSink:
+        """The sink of a compile that raised ``e``: out of memory (a ``MemoryError``
+        anywhere: NumPy, Manifold, the checks) is the program's located ``E0304``; anything
+        else is a bug, ``E0900`` (:func:`_internal`)."""
+        from ..pipeline import out_of_memory, out_of_memory_sink
+        if out_of_memory(e):
+            return out_of_memory_sink(self.name, self.source or None)
+        return _internal(e, stage)
 
     # ------------------------------------------------------------------ params
     def _params(self, fctx, values: dict[str, str]) -> list[Param]:

@@ -34,6 +34,36 @@ MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
 
 
+SESSION = "SESSION"              # what a visitor sees of the session's folder
+
+
+def hide_paths(obj, folder: str):
+    """``obj`` (an answer: dicts, lists, tuples of strings and numbers) with the session's
+    ``folder`` written ``SESSION`` in every string (spans' ``file``, labels, messages, hints,
+    rendered texts, the SVG) and the studio's data folder above it ``SESSION/..``: no server
+    path reaches a visitor (docs/studio.md).  Bytes (a download) are left as they are."""
+    folder = os.path.normpath(str(folder))
+    pairs = []
+    for f in dict.fromkeys((folder, os.path.realpath(folder))):
+        pairs.append((f, SESSION))
+        pairs.append((os.path.dirname(f), SESSION + "/.."))
+
+    def fix(v):
+        if isinstance(v, str):
+            for a, b in pairs:
+                if a and a != "/" and a in v:
+                    v = v.replace(a, b)
+            return v
+        if isinstance(v, dict):
+            return {fix(k): fix(x) for k, x in v.items()}
+        if isinstance(v, list):
+            return [fix(x) for x in v]
+        if isinstance(v, tuple):
+            return tuple(fix(x) for x in v)
+        return v
+    return fix(obj)
+
+
 def handler(budget: float = 1.0):
     """The worker's request handler (run once in the new process); ``budget``: the factor of
     the default evaluation budget every compile gets (``aidl studio --budget``)."""
@@ -43,6 +73,7 @@ def handler(budget: float = 1.0):
 
     def handle(request):
         kind = request[0]
+        oom = False
         try:
             if kind == "view":
                 answer = view(sessions, *request[1:], budget=scaled)
@@ -52,16 +83,38 @@ def handler(budget: float = 1.0):
                 answer = thumbnail(*request[1:])
             else:
                 answer = {"error": f"unknown request `{kind}`"}
-        except MemoryError:
-            sessions.clear()
-            answer = {"error": "the program needs more memory than a studio compile may use; "
-                               "build less (fewer copies, fewer holes)", "retire": True}
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
-            answer = {"error": f"internal error: {type(e).__name__}: {e}"}
+            from ..limits import is_out_of_memory
+            oom = is_out_of_memory(e)
+            if not oom:
+                answer = {"error": f"internal error: {type(e).__name__}: {e}"}
+        if oom:                         # said once the failed frames are gone
+            sessions.clear()
+            answer = out_of_memory_answer(request)
+        if kind in ("view", "download") and len(request) > 2:
+            answer = hide_paths(answer, request[2] if kind == "view" else request[1])
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
     return handle
+
+
+def out_of_memory_answer(request) -> dict:
+    """The answer to a ``view`` or ``download`` whose compile ran out of memory: the
+    program's located ``E0304`` (:func:`aidl_lang.pipeline.out_of_memory_sink`), and the
+    worker retired (a fresh process gives the memory back)."""
+    from ..pipeline import out_of_memory_sink
+    kind = request[0]
+    folder, source = (request[2], request[3]) if kind == "view" else (request[1], request[2])
+    path = os.path.join(folder, "main.aidl")
+    sink = out_of_memory_sink(path, source if isinstance(source, str) else None)
+    diags = [{k: d.to_json(sink.sources)[k] for k in
+              ("code", "severity", "message", "span", "hint", "rendered")} for d in sink.items]
+    msg = diags[0]["message"]
+    if kind == "view":
+        return {"ok": False, "svg": None, "params": None, "diagnostics": diags, "error": msg,
+                "retire": True}
+    return {"error": msg, "diagnostics": diags, "retire": True}
 
 
 def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
@@ -173,6 +226,12 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             return buf.getvalue(), f"{name}-sheets.zip", "application/zip"
         return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
     except (MissingDependency, OutputError, ValueError) as e:
+        if getattr(e, "budget", None) is not None:      # bounded work or memory: E0304
+            from ..pipeline import report_out_of_budget
+            report_out_of_budget(res.sink, e.budget)
+            return {"error": str(e),
+                    "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
+                                    for d in res.diagnostics_json() if d["severity"] == "error"]}
         return {"error": str(e)}
 
 

@@ -22,15 +22,17 @@ MEMORY = 1500 << 20         # bytes: the loop process's address-space cap
 
 def _main(conn, description, config, folder, deadline) -> None:
     W.limit_memory(MEMORY)
+    from .compiler import hide_paths
     from .describe import describe
     try:
         for event in describe(description, config, folder, deadline_s=deadline):
-            conn.send(event)
+            conn.send(hide_paths(event, folder))        # no server path reaches a visitor
     except MemoryError:
         conn.send({"type": "error", "message": "the model's program needs more memory than "
-                                              "the studio gives a compile"})
+                                              "the studio gives a compile (E0304)"})
     except Exception as e:          # noqa: BLE001 - an event, never a silent end
-        conn.send({"type": "error", "message": f"internal error: {type(e).__name__}: {e}"})
+        conn.send(hide_paths({"type": "error",
+                              "message": f"internal error: {type(e).__name__}: {e}"}, folder))
     conn.close()
 
 

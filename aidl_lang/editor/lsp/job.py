@@ -57,13 +57,12 @@ def _serve() -> int:
                                          job.get("uri"), values, extra)
                 answer = {"id": job["id"], "diagnostics": diags, "values": values,
                           "facts": extra}
-        except MemoryError:
-            answer = {"id": job.get("id") if isinstance(job, dict) else None,
-                      "error": "MemoryError: the program needs more memory than the editor's "
-                               f"analysis may use ({MEMORY_LIMIT >> 20} MB)"}
         except Exception as e:        # answered, never a dead worker
+            from ...limits import is_out_of_memory
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
-                      "error": f"{type(e).__name__}: {e}"}
+                      "oom" if is_out_of_memory(e) else "error": f"{type(e).__name__}: {e}"}
+        if "oom" in answer:           # once the failed frames are gone: the located E0304
+            answer = out_of_memory(job, answer["id"])
         retire = rss() > RETIRE_RSS
         if retire:                    # give the memory back: a fresh worker takes over
             answer["retire"] = True
@@ -72,6 +71,24 @@ def _serve() -> int:
         if retire:
             return 0
     return 0
+
+
+def out_of_memory(job, job_id) -> dict:
+    """The answer to a job that ran out of memory anywhere (values, hints, the preview): the
+    document's diagnostics are its located ``E0304`` (:func:`aidl_lang.pipeline.out_of_memory_sink`),
+    the preview a message naming it."""
+    from ...pipeline import out_of_memory_sink
+    from .plain import sink_json
+    ok = isinstance(job, dict) and isinstance(job.get("text"), str)
+    text = job["text"] if ok else None
+    path = job.get("path") or "untitled.aidl" if ok else "untitled.aidl"
+    sink = out_of_memory_sink(path, text)
+    if ok and job.get("kind") == "preview":
+        d = sink.items[0]
+        return {"id": job_id, "error": f"{d.code}: {d.message}"}
+    return {"id": job_id, "diagnostics": sink_json(text or "", path, sink.items,
+                                                     job.get("uri") if ok else None),
+            "values": {}, "facts": {}, "retire": True}
 
 
 def _limit_memory() -> None:

@@ -83,6 +83,7 @@ _pending: dict[str, asyncio.Task] = {}
 _published: dict[str, list[T.Diagnostic]] = {}      # uri -> the diagnostics last published
 _settings = {"debounce": DEBOUNCE}
 _analyzer: Analyzer | None = None
+_closing = False          # set by shutdown: pending analyses end quietly
 _early: dict = {}          # uri -> (version, text, worker answer) from :mod:`.boot`
 
 
@@ -175,7 +176,10 @@ def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
         except asyncio.CancelledError:
             pass
         except Exception:
-            _report(ls, "diagnostics")
+            if not _closing:        # after shutdown, a job whose worker was stopped: quiet
+                _report(ls, "diagnostics")
+    if _closing:
+        return
     _pending[uri] = asyncio.ensure_future(run())
 
 
@@ -197,6 +201,13 @@ def initialize(ls: LanguageServer, params: T.InitializeParams):
 @server.feature(T.SHUTDOWN)
 @_safe()
 async def shutdown(ls: LanguageServer, params):
+    """Cancel every pending analysis quietly (a large document's diagnostics may still be
+    running: its worker is stopped, and that is no error to show), then stop the workers."""
+    global _closing
+    _closing = True
+    for task in list(_pending.values()):
+        task.cancel()
+    _pending.clear()
     if _analyzer is not None:
         _analyzer.close()
 

@@ -150,7 +150,9 @@ def encode(output: Output, suffix: str, options: Options | None = None,
     library is not installed.  ``deadline``: the compile's
     :class:`~aidl_lang.limits.Deadline` (``aidl render``, ``aidl batch``), or None: a writer
     whose :func:`writer_seconds` would end past it is refused before it starts, with an
-    :class:`~.part.OutputError` whose ``budget`` names the part with the most segments."""
+    :class:`~.part.OutputError` whose ``budget`` names the part with the most segments; a
+    writer that runs out of memory raises the same, its ``budget`` an
+    :class:`~aidl_lang.limits.OutOfMemory`."""
     fmt = FORMATS[suffix.lower()]
     if not fmt.empty:
         _refuse_empty(output, suffix, fmt)
@@ -165,7 +167,17 @@ def encode(output: Output, suffix: str, options: Options | None = None,
             raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None
-    return fmt.write(output, options or Options())
+    from ...limits import OutOfMemory, is_out_of_memory
+    try:
+        return fmt.write(output, options or Options())
+    except (MemoryError, SystemError) as ex:
+        if not is_out_of_memory(ex):
+            raise
+    # out of memory: said once the writer's frames (and what they held) are gone
+    name = suffix.lstrip(".").upper()
+    ex = OutOfMemory(f"the {name} writer", _biggest_part(output))
+    raise OutputError(f"the {name} writer ran out of memory ({ex.what}); nothing was written",
+                      ex)
 
 
 def _refuse_empty(output: Output, suffix: str, fmt: Format) -> None:

@@ -58,6 +58,7 @@ import math
 from dataclasses import dataclass, field
 
 from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
+from ..machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
 
 GCODE_FORMATS = (".gcode", ".nc")
 DECIMALS = 10          # digits after the point: 1e-10 mm
@@ -354,6 +355,8 @@ class _Writer:
         self.power = None
 
     def out(self, line: str) -> None:
+        if len(self.lines) >= MAX_JOB_MOVES:
+            raise too_long("G-code lines")
         self.lines.append(line)
 
     def setting(self, feed: float, power: float | None = None) -> None:
@@ -574,6 +577,12 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
             else:
                 t = thick.get(cut.part) or DEFAULT_THICKNESS
                 n = max(1, math.ceil(t / op.depth_per_pass - 1e-9))
+                if n > MAX_DEPTH_PASSES:
+                    raise OutputError(
+                        f"the router would cut part `{cut.part}` ({t:g} mm thick) in {n:,} "
+                        f"passes of {op.depth_per_pass:g} mm (`{cut.operation}.depth_per_pass`"
+                        f"); at most {MAX_DEPTH_PASSES:,}: raise depth_per_pass or cut "
+                        "thinner material (--thickness); nothing was written")
                 depths = [t * (k + 1) / n for k in range(n)]
             t_part = thick.get(cut.part) or DEFAULT_THICKNESS
             for k, dz in enumerate(depths):

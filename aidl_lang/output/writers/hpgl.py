@@ -231,10 +231,14 @@ def to_hpgl(output: Output, options=None) -> str:
         raise OutputError(f"the drawing is {x1 - x0:.0f} x {y1 - y0:.0f} mm, too large for "
                           f"HPGL's coordinates ({MAX_UNITS / UNITS_PER_MM / 1000:.0f} m at "
                           "most); make it smaller")
+    cuts = plan(output)
+    if sum(len(c.segments) * max(1, int(m.operation(c.operation).passes))
+           for c in cuts) > machine_mod.MAX_JOB_MOVES:
+        raise machine_mod.too_long("HPGL segments")
     w = _Writer(x0, y0)
     w.out += ["IN;", "SP1;"]
     speed = None
-    for c in plan(output):
+    for c in cuts:
         op = m.operation(c.operation)
         vs = _num(max(0.1, op.speed / 600.0), 1)        # mm/min -> cm/s
         if vs != speed:
