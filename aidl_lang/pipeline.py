@@ -107,6 +107,27 @@ def out_of_memory_sink(path: str, source: str | None, stage: str | None = None,
     return sink
 
 
+def output_error_sink(path: str, source: str | None, error) -> DiagnosticSink:
+    """A sink holding the one located ``E0304`` of an exact-outline recovery or a writer that
+    refused its input (:class:`~aidl_lang.output.part.OutputError`: bounded work ran out,
+    thousands of curves drawn on top of each other), for a front end that reads the output
+    after the compile (``aidl parts``, ``--describe``, the MCP tools): at the structure the
+    error names when it has one, else at the program's first structure."""
+    sink = DiagnosticSink()
+    if source is not None:
+        sink.sources[path] = source
+    budget = getattr(error, "budget", None)
+    if budget is not None:
+        report_out_of_budget(sink, budget)
+        return sink
+    span = _structure_span(path, source) if source is not None else None
+    sink.error("E0304", f"the final part's outlines could not be made within bounded work: "
+               f"{error}", span,
+               hint="draw fewer curves on top of each other (a loop that stacks thousands of "
+                    "shapes in one place), or check without --describe")
+    return sink
+
+
 DEFAULTS_KEPT = 8     # sources whose defaults' topology a process keeps (serve, LSP, MCP)
 _defaults: dict = {}  # (path, source, min_wall, budget) -> (imported files' texts, topology)
 

@@ -164,3 +164,41 @@ def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
         want = [_face_at(c.drawing, s, p) for p in pts]
         assert [id(g) for g in got] == [id(g) for g in want]
         assert sum(g is not None for g in got) >= 40
+
+
+def test_holes_stacked_on_each_other_stop_at_the_share_not_at_the_deadline():
+    """1,200 circles drawn at one place pair all with all in the walls-between-features
+    analysis (W0507/W0508/W0514): it ran 12 s with no look at its share and the check ended
+    in E0304; now it stops at its share with a W0521 note (a budget of 0.3: 4.5 s of wall
+    time, a share of 0.9 s)."""
+    import time
+    from aidl_lang.api import compile as aidl_compile
+    src = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    for i in range(1200) { hole h { c = Circle(center=(i * 0.001, 0), radius=1) } }"
+           "\n}\n")
+    t0 = time.monotonic()
+    c = aidl_compile(src, budget=0.3)
+    wall = time.monotonic() - t0
+    codes = [d.code for d in c.sink.items]
+    assert "E0304" not in codes and c.ok, [d.message for d in c.sink.items]
+    assert any(d.code == "W0521" and "walls between features" in d.message
+               for d in c.sink.items), [d.message for d in c.sink.items]
+    assert wall < 4.5 + 5, wall
+
+
+@pytest.mark.parametrize("args", [["parts"], ["check", "--describe", "--json"]])
+def test_outlines_past_their_bounded_work_are_a_located_e0304_not_an_internal_error(
+        tmp_path, args):
+    """3,000 circles stacked at one place: the exact outlines refuse past 10,000,000 pairs
+    (OutputError), which `aidl parts` and `check --describe` reported as 'internal error'."""
+    import subprocess
+    import sys
+    f = tmp_path / "stacked.aidl"
+    f.write_text("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, "
+                 "height=20)\n    for i in range(3000) { hole h { c = Circle(center=(i * 0.001, "
+                 "0), radius=1) } }\n}\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", *args, str(f), "--budget", "0.3"],
+                       capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    both = r.stdout + r.stderr
+    assert r.returncode == 1 and "internal error" not in both, both
+    assert "E0304" in both and "exact outlines of `plate`" in both

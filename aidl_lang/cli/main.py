@@ -1057,6 +1057,9 @@ def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
             return _internal(e)
         oom = True                 # said below, once the failed frames are freed
     except Exception as e:  # an internal error: report it as such, never a raw traceback
+        from ..output.part import OutputError
+        if isinstance(e, OutputError):      # bounded work ran out after the compile
+            return _output_error(args, e)
         return _internal(e)
     if oom:
         return _out_of_memory(args)
@@ -1096,6 +1099,21 @@ def _out_of_memory(args) -> int:
             source = None
     sink = out_of_memory_sink(path, source)
     _emit(sink, getattr(args, "json", False), False)
+    return 1
+
+
+def _output_error(args, e) -> int:
+    """An :class:`~aidl_lang.output.part.OutputError` after the compile (``aidl parts``,
+    ``check --describe``): one located ``E0304``, exit 1, nothing written."""
+    from ..pipeline import output_error_sink
+    path, source = _program if _program is not None else (getattr(args, "file", "-"), None)
+    if source is None and path not in (None, "-"):
+        from ..sources import SourceRefused, read_program
+        try:
+            source = read_program(path)
+        except SourceRefused:
+            source = None
+    _emit(output_error_sink(path, source, e), getattr(args, "json", False), False)
     return 1
 
 

@@ -50,8 +50,10 @@ class Diagnostic(TypedDict):
 class Solve(TypedDict):
     converged: bool
     iterations: int
-    unknowns: int
+    unknowns: Annotated[int, Field(description="what Newton solved for")]
     equations: int
+    settled: Annotated[int, Field(description="unknowns settled directly by their constraints "
+                                              "before Newton (a Fixed point, a held size)")]
     max_residual: float
 
 

@@ -194,12 +194,30 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     last two when the program solved; ``freedom`` per structure with ``dof``)."""
     r = ws.compile(source, path, overrides, budget)
     r.find_redundant()                    # W0401, as `aidl check` reports them
+    parts = _after_compile(r, lambda: [p.to_json() for p in r.parts])
     doc = _summary(ws, r)
     if r.ok:
         doc["freedom"] = r.freedom(detail=bool(dof))
         doc["freedom"]["text"] = for_agents(doc["freedom"]["text"])
-        doc["parts"] = [p.to_json() for p in r.parts]
+        doc["parts"] = parts
     return doc
+
+
+def _after_compile(r: Result, fn):
+    """``fn()`` (reading the exact output of ``r``, a compiled program) or, when that output
+    cannot be made within bounded work (:class:`~aidl_lang.output.part.OutputError`:
+    thousands of curves on top of each other), None with the located ``E0304`` added to
+    ``r``'s diagnostics, which makes ``r`` not ok: an answer, never an internal error."""
+    if not r.ok:
+        return None
+    from ..output.part import OutputError
+    try:
+        return fn()
+    except OutputError as e:
+        from ..pipeline import output_error_sink
+        for d in output_error_sink(r.path, r.source, e).items:
+            r.sink.add(d)
+        return None
 
 
 def values(ws: Workspace, source: str | None = None, path: str | None = None,
@@ -367,11 +385,12 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
     openings with kind, centre and size, engravings, copies, symmetries; mm); the
     diagnostics alone when the program did not solve."""
     r = ws.compile(source, path, overrides, budget)
+    described = _after_compile(r, lambda: r.description)
     doc = _summary(ws, r)
     if r.ok:
         from ..output.describe import describe_text
-        doc["describe"] = r.description
-        doc["text"] = describe_text(doc["describe"])
+        doc["describe"] = described
+        doc["text"] = describe_text(described)
     return doc
 
 

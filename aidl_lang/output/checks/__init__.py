@@ -235,7 +235,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
             min_wall = part_min_wall(d, s, given)
 
             def openings():
-                a = _analyse(d, s, shape, cuts, min_wall, loops[s])
+                a = _analyse(d, s, shape, cuts, min_wall, loops[s], tick=lambda: tick(s))
                 covered = _report_openings(a, s, min_wall, sink, d.shapes)
                 _check_flush(d, s, shape, a, cuts, min_wall, sink)
                 return covered
