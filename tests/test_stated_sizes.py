@@ -301,3 +301,25 @@ def test_w0507_of_a_long_spike_says_how_much_of_it_is_thin():
     assert f"is {angle:.1f} degrees, narrower than 0.5 mm over its last {last:.2f} mm" \
         in w.message, w.message
     assert "over 150" not in w.message
+
+
+def test_bolt_circle_holes_sit_at_their_angles_and_cannot_slide_round():
+    """std bolt_circle placed its holes by OnCircle alone: each could slide round the pitch
+    circle (6 free degrees no Fixed removed, a model run found); now by polar() at its angle."""
+    c = aidl_compile("""import "std/shapes.aidl"
+solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    bolts = bolt_circle(count=6, pcd=40, hole_d=4.5, start=15 deg)
+    Concentric(bolts.pitch, body)
+    body.center == (3, 2)
+}
+""")
+    assert c.ok and not c.sink.items, [d.message for d in c.sink.items]
+    from aidl_lang.solver.diagnose import degrees_of_freedom
+    dofs = degrees_of_freedom(c.compiled.solve.solver, floating=False)
+    assert all(d.dof == 0 for d in dofs if d.structure.path.startswith("plate.bolts")), \
+        [(d.structure.path, d.dof) for d in dofs]
+    for i in range(6):
+        a = math.radians(15 + 60 * i)
+        assert _point(c, f"plate.bolts.bolt[{i}].center") == pytest.approx(
+            (3 + 20 * math.cos(a), 2 + 20 * math.sin(a)), abs=1e-9)
