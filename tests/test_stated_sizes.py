@@ -323,3 +323,18 @@ solid plate {
         a = math.radians(15 + 60 * i)
         assert _point(c, f"plate.bolts.bolt[{i}].center") == pytest.approx(
             (3 + 20 * math.cos(a), 2 + 20 * math.sin(a)), abs=1e-9)
+
+
+def test_parts_meant_to_share_material_when_assembled_say_so_with_allow_overlap():
+    src = """thickness 3 mm
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+    solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 12))
+}
+"""
+    (w,) = [d for d in aidl_compile(src).sink.items if d.code == "W0517"]
+    assert "`AllowOverlap(base, wall)`" in w.hint
+    meant = src.replace("    Place(wall", "    AllowOverlap(base, wall)\n    Place(wall")
+    c = aidl_compile(meant)
+    assert c.ok and "W0517" not in _codes(c), _codes(c)
