@@ -338,3 +338,28 @@ assembly kit {
     meant = src.replace("    Place(wall", "    AllowOverlap(base, wall)\n    Place(wall")
     c = aidl_compile(meant)
     assert c.ok and "W0517" not in _codes(c), _codes(c)
+
+
+def test_the_thin_wall_and_the_notch_through_the_command_line(tmp_path):
+    """`aidl check --json` carries W0507's measured width and its fix, `--describe --json` the
+    thickness, kerf and notches: what a model reads."""
+    angle = tmp_path / "angle.aidl"
+    angle.write_text("""solid angle {
+    body = Polygon([(0, 0), (40, 0), (40, 0.34), (0.34, 0.34), (0.34, 25.4), (0, 25.4)])
+}
+""")
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--json", str(angle)],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    (w,) = [d for d in json.loads(out.stdout)["diagnostics"] if d["code"] == "W0507"]
+    assert "0.34 mm wide" in w["message"] and w["fix"]["replacement"].startswith("min_wall 0.33")
+    plate = tmp_path / "notched.aidl"
+    plate.write_text(NOTCHED)
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--describe", "--json",
+                          str(plate)], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    parts = {p["name"]: p for p in json.loads(out.stdout)["describe"]["parts"]}
+    assert parts["kit.plate"]["thickness"] == 4.0 and parts["kit.plate"]["kerf"] == 0.2
+    assert [(n["edge"], n["width"], n["depth"]) for n in parts["kit.plate"]["notches"]] == \
+        [("top", 8.0, 4.0), ("right", 6.0, 5.0)]
+    text = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--describe",
+                           str(plate)], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "notch in the top edge: 8 wide, 4 deep" in text.stdout
