@@ -621,7 +621,9 @@ there. Most often a slot (or the gap between two fingers) is narrower than the t
 part that goes in it, or the material is thicker than the joint was drawn for. The warning
 names both parts, the common volume, its depth (the smallest side of its box: by how much the
 slot is too narrow) and the box where it lies. Widen the slot to the partner's thickness, use
-the material the joint was drawn for, or move the part with its `Place`. The check reads the
+the material the joint was drawn for, or move the part with its `Place`. Two parts meant to
+share material (a press fit drawn to size, an inlay) are named in `AllowOverlap(a, b)` in
+their assembly, which this check then leaves alone, as W0511 does. The check reads the
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.
 
     import "std/joints.aidl"
@@ -629,10 +631,13 @@ designed parts: a `kerf` is compensated in the cut files, so the parts come out 
     assembly kit { box = finger_box(thickness=3 mm) }
 """),
     "W0518": ("part touches no other part when assembled", """
-The program places its parts in 3D (`Place`), and one part comes no nearer than 0.000001 mm to
-any other: assembled, it floats free, as when a tab does not reach its slot or a placement is
-off by a figure. The warning names the part, the nearest other part and the gap. Move the part
-by the gap with its `Place`, or lengthen the tab.
+The program places its parts in 3D (`Place`), and one part comes no nearer than 0.1 mm to any
+other: assembled, it floats free, as when a tab does not reach its slot or a placement is off
+by a figure. Nearer is contact: the clearance of a fit (meshing gears' backlash, a slot cut a
+little wider than its tab) is not a gap. The warning names the part, the nearest other part
+and the gap. Move the part by the gap with its `Place`, or lengthen the tab. A gap between two
+parts that one standard-library template places (the gears `gear_train(lift=...)` stands
+above its plate) is the template's design and not reported.
 
     thickness 3 mm
     assembly kit {

@@ -549,3 +549,35 @@ def test_units_written_with_equals_says_the_statement():
                      path="/tmp/aidl-issue61-units.aidl")
     (e,) = [d for d in r.sink.items if d.is_error]
     assert e.code == "E0001" and "`units mm`" in e.hint and "==" not in e.hint
+
+
+# ------------------------------------------------------------------ W0518: contact within a fit
+def _w0518(src):
+    from aidl_lang.api import compile as aidl_compile
+    return [d for d in aidl_compile(src).sink.items if d.code == "W0518"]
+
+
+WALL_ABOVE = """thickness 3 mm
+assembly kit {{
+    solid base {{ r = Rectangle(center=(0, 0), width=40, height=40) }}
+    solid wall {{ r = Rectangle(center=(0, 0), width=40, height=20) }}
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, {z}))
+}}
+"""
+
+
+def test_w0518_counts_a_fit_clearance_as_contact_and_a_real_gap_as_floating():
+    """Parts within 0.1 mm touch (meshing gears 0.047 mm apart were 'touching no other
+    part'); 0.5 mm above the base is still a wall that floats."""
+    assert not _w0518(WALL_ABOVE.format(z=13.05))                 # 0.05 mm: a clearance
+    (w,) = _w0518(WALL_ABOVE.format(z=13.5))
+    assert "0.5 mm away" in w.message
+
+
+def test_a_gear_train_lifted_by_its_own_argument_is_not_a_floating_part():
+    assert not _w0518("""import "std/gears.aidl"
+thickness 3 mm
+assembly demo {
+    train = gear_train(teeth=[20, 30, 15], module=2 mm, axle=4 mm, lift=10 mm)
+}
+""")

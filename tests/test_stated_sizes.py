@@ -301,3 +301,65 @@ def test_w0507_of_a_long_spike_says_how_much_of_it_is_thin():
     assert f"is {angle:.1f} degrees, narrower than 0.5 mm over its last {last:.2f} mm" \
         in w.message, w.message
     assert "over 150" not in w.message
+
+
+def test_bolt_circle_holes_sit_at_their_angles_and_cannot_slide_round():
+    """std bolt_circle placed its holes by OnCircle alone: each could slide round the pitch
+    circle (6 free degrees no Fixed removed, a model run found); now by polar() at its angle."""
+    c = aidl_compile("""import "std/shapes.aidl"
+solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    bolts = bolt_circle(count=6, pcd=40, hole_d=4.5, start=15 deg)
+    Concentric(bolts.pitch, body)
+    body.center == (3, 2)
+}
+""")
+    assert c.ok and not c.sink.items, [d.message for d in c.sink.items]
+    from aidl_lang.solver.diagnose import degrees_of_freedom
+    dofs = degrees_of_freedom(c.compiled.solve.solver, floating=False)
+    assert all(d.dof == 0 for d in dofs if d.structure.path.startswith("plate.bolts")), \
+        [(d.structure.path, d.dof) for d in dofs]
+    for i in range(6):
+        a = math.radians(15 + 60 * i)
+        assert _point(c, f"plate.bolts.bolt[{i}].center") == pytest.approx(
+            (3 + 20 * math.cos(a), 2 + 20 * math.sin(a)), abs=1e-9)
+
+
+def test_parts_meant_to_share_material_when_assembled_say_so_with_allow_overlap():
+    src = """thickness 3 mm
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+    solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 12))
+}
+"""
+    (w,) = [d for d in aidl_compile(src).sink.items if d.code == "W0517"]
+    assert "`AllowOverlap(base, wall)`" in w.hint
+    meant = src.replace("    Place(wall", "    AllowOverlap(base, wall)\n    Place(wall")
+    c = aidl_compile(meant)
+    assert c.ok and "W0517" not in _codes(c), _codes(c)
+
+
+def test_the_thin_wall_and_the_notch_through_the_command_line(tmp_path):
+    """`aidl check --json` carries W0507's measured width and its fix, `--describe --json` the
+    thickness, kerf and notches: what a model reads."""
+    angle = tmp_path / "angle.aidl"
+    angle.write_text("""solid angle {
+    body = Polygon([(0, 0), (40, 0), (40, 0.34), (0.34, 0.34), (0.34, 25.4), (0, 25.4)])
+}
+""")
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--json", str(angle)],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    (w,) = [d for d in json.loads(out.stdout)["diagnostics"] if d["code"] == "W0507"]
+    assert "0.34 mm wide" in w["message"] and w["fix"]["replacement"].startswith("min_wall 0.33")
+    plate = tmp_path / "notched.aidl"
+    plate.write_text(NOTCHED)
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--describe", "--json",
+                          str(plate)], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    parts = {p["name"]: p for p in json.loads(out.stdout)["describe"]["parts"]}
+    assert parts["kit.plate"]["thickness"] == 4.0 and parts["kit.plate"]["kerf"] == 0.2
+    assert [(n["edge"], n["width"], n["depth"]) for n in parts["kit.plate"]["notches"]] == \
+        [("top", 8.0, 4.0), ("right", 6.0, 5.0)]
+    text = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--describe",
+                           str(plate)], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "notch in the top edge: 8 wide, 4 deep" in text.stdout

@@ -20,8 +20,10 @@ DEFAULT_THICKNESS = 3.0
 # mm^3 and mm: a smaller common volume, or one thinner than this, is parts touching (faces flush)
 VOLUME_TOL = 1e-3
 DEPTH_TOL = 1e-6
-# mm: a part farther than this from every other part reaches none (a tab short of its slot)
-GAP_TOL = 1e-6
+# mm: a part farther than this from every other part reaches none (a tab short of its slot);
+# nearer, it touches: the clearance of a fit (meshing gears' backlash, 0.05 mm in
+# std/gears.aidl; a slot cut 0.1 mm wider than its tab) is contact, not a part floating free
+GAP_TOL = 0.1
 
 
 def placements(output: Output) -> dict[str, np.ndarray]:

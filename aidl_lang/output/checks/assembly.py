@@ -2,7 +2,7 @@
 ``Place`` (:func:`..assembly.fit` on the parts extruded by their thickness):
 
 * ``W0517`` two parts whose solids collide (a slot narrower than its partner's thickness: the
-  depth is by how much);
+  depth is by how much), unless ``AllowOverlap`` names them;
 * ``W0518`` a part that touches no other (a tab short of its slot: the gap)."""
 from __future__ import annotations
 
@@ -23,7 +23,11 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         s = d.part_of.get(name)
         pl = getattr(s, "placement", None)
         return (pl[2] if pl is not None and pl[2] is not None else getattr(s, "span", None))
+    from .parts import _allowed
     for c in hits:
+        sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
+        if sa_ is not None and sb_ is not None and _allowed(sa_, sb_):
+            continue                     # AllowOverlap(a, b): meant (a press fit, an inlay)
         x0, y0, z0, x1, y1, z1 = c.box
         sa = at(c.a)
         labels = [Label(sa, f"`{c.a}` is placed here", primary=False)] if sa else []
@@ -33,8 +37,18 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      labels=labels,
                      hint=f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
                           "goes in it: widen it to the partner's thickness (or make the "
-                          "material thinner), or move the part with its `Place`")
+                          "material thinner), or move the part with its `Place`; if they are "
+                          f"meant to share material (a press fit, an inlay), "
+                          f"`AllowOverlap({c.a.split('.')[-1]}, {c.b.split('.')[-1]})` in their "
+                          "assembly says so")
+    from ...diagnostics import in_stdlib
+
+    def templates(name) -> bool:
+        sp = at(name)
+        return sp is not None and in_stdlib(sp.file)
     for g in gaps:
+        if templates(g.part) and templates(g.nearest):
+            continue            # a gap a stdlib template places by design (gear_train's lift=)
         sink.warning("W0518", f"assembled, part `{g.part}` touches no other part: the nearest, "
                      f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
                      hint=f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "

@@ -1,0 +1,8 @@
+# A right-triangle plate with legs of 95.149 mm and 15.482 mm, 3.175 mm thick.
+thickness 3.175 mm
+# the request asks for this exact triangle, sharp 9.2 degree tip included
+min_wall 0
+
+solid plate {
+    tri = Polygon([(0, 0), (95.149, 0), (0, 15.482)])
+}

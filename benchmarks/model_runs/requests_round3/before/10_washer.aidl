@@ -1,0 +1,8 @@
+# A flat washer: outer diameter 32.456 mm, inner diameter 17.272 mm, 1.524 mm thick.
+import "std/shapes.aidl"
+
+thickness 1.524 mm
+
+assembly parts {
+    w = washer(outer=32.456 mm, inner=17.272 mm)
+}
