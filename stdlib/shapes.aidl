@@ -22,7 +22,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
     for i in range(count) {
         a = start + i * 360 deg / count
         bolt = Circle(center=(cx + pcd / 2 * cos(a), cy + pcd / 2 * sin(a)), diameter=hole_d)
-        Coincident(bolt.center, polar(pitch.center, pcd / 2, a))     # exact: no sliding round
+        Coincident(bolt.center, polar(pitch.center, pcd / 2, a))  # exact: no sliding round
     }
 }
 
