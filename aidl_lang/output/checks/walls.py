@@ -148,53 +148,56 @@ def _measure(piece, a: float, t: float, loops: list):
     from ..nearby import close_pairs
     x0, y0, x1, y1 = piece.bounds()
     pad = 1e-3 + 1e-6 * max(abs(x0), abs(y0), abs(x1), abs(y1))
-    V, B, idx_ok = [], [], []
-    for P in loops:
-        if len(P) < 2:
-            continue
-        lo, hi = P.min(axis=0), P.max(axis=0)
-        if lo[0] > x1 + t or hi[0] < x0 - t or lo[1] > y1 + t or hi[1] < y0 - t:
-            continue
-        Q = np.roll(P, -1, axis=0)
-        V.append(P)
-        B.append(Q)
-        idx_ok.append((P[:, 0] >= x0 - pad) & (P[:, 0] <= x1 + pad) & (P[:, 1] >= y0 - pad)
-                      & (P[:, 1] <= y1 + pad))
+    near_loops = [P for P in loops if len(P) >= 2
+                  and not (P[:, 0].min() > x1 + t or P[:, 0].max() < x0 - t
+                           or P[:, 1].min() > y1 + t or P[:, 1].max() < y0 - t)]
     best = None
-    if V:
-        Vs, Bs, inside = np.concatenate(V), np.concatenate(B), np.concatenate(idx_ok)
-        n = len(Vs)
-        sizes = np.array([len(P) for P in V])
-        start = np.repeat(np.cumsum(sizes) - sizes, sizes)
-        size = np.repeat(sizes, sizes)
-        idx = np.arange(n)
-        nxt = start + (idx - start + 1) % size
-        prv = start + (idx - start - 1) % size
-        near = (np.minimum(Vs, Bs) <= (x1 + t, y1 + t)).all(axis=1) & \
-            (np.maximum(Vs, Bs) >= (x0 - t, y0 - t)).all(axis=1)
-        segs = np.flatnonzero(near)
-        verts = np.flatnonzero(inside)
+    if near_loops:
+        V, nxt, prv = _ring(near_loops)
+        B = V[nxt]
+        near = (np.minimum(V, B) <= (x1 + t, y1 + t)).all(axis=1) & \
+            (np.maximum(V, B) >= (x0 - t, y0 - t)).all(axis=1)
+        inside = ((V >= (x0 - pad, y0 - pad)) & (V <= (x1 + pad, y1 + pad))).all(axis=1)
+        segs, verts = np.flatnonzero(near), np.flatnonzero(inside)
         if len(segs) and len(verts):
-            v, sg, dist, foot = close_pairs(Vs[verts], verts, Vs[segs], Bs[segs], segs, t)
-            if len(v):
-                v, sg = verts[v], segs[sg]
-                ok = (v != nxt[sg]) & (dist > 1e-9)
-                seg = Bs[sg] - Vs[sg]
-                facing = np.zeros(len(v), dtype=bool)
-                for tan in (Vs[nxt[v]] - Vs[v], Vs[v] - Vs[prv[v]]):
-                    with np.errstate(divide="ignore", invalid="ignore"):
-                        cos = np.einsum("ij,ij->i", tan, seg) / np.maximum(
-                            np.hypot(*tan.T) * np.hypot(*seg.T), 1e-300)
-                    facing |= cos < -0.5
-                ok &= facing
-                if ok.any():
-                    k = np.flatnonzero(ok)[int(np.argmin(np.where(ok, dist, np.inf)[ok]))]
-                    best = (float(dist[k]), (Vs[v[k]] + foot[k]) / 2)
+            v, sg, dist, foot = close_pairs(V[verts], verts, V[segs], B[segs], segs, t)
+            v, sg = verts[v], segs[sg]
+            ok = (v != nxt[sg]) & (dist > 1e-9) & _facing(V, nxt, prv, v, sg, 0.5)
+            if ok.any():
+                k = np.flatnonzero(ok)[int(np.argmin(dist[ok]))]
+                best = (float(dist[k]), (V[v[k]] + foot[k]) / 2)
     if best is not None:
         width, mid = best
         return width, max(a / max(width, 1e-9), width), (float(mid[0]), float(mid[1]))
     length = max(x1 - x0, y1 - y0, 1e-9)
     return min(t, a / length), length, _point_of(piece, ((x0 + x1) / 2, (y0 + y1) / 2))
+
+
+def _ring(loops: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The vertices of ``loops`` (each k x 2, mm) in one array, and for each the index of the
+    next and of the previous vertex of its own loop (vertex ``i``'s edge runs to
+    ``V[nxt[i]]``)."""
+    V = np.concatenate(loops)
+    sizes = np.array([len(P) for P in loops])
+    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+    size = np.repeat(sizes, sizes)
+    idx = np.arange(len(V))
+    return V, start + (idx - start + 1) % size, start + (idx - start - 1) % size
+
+
+def _facing(V, nxt, prv, v, sg, cos_max: float) -> np.ndarray:
+    """Which pairs of vertex ``v[k]`` and edge ``sg[k]`` (from ``V[sg]`` to ``V[nxt[sg]]``) of
+    :func:`_ring`'s loops face each other across the material or a gap: the edge runs against
+    either edge at the vertex, the cosine of their angle below ``-cos_max`` (the two sides of
+    a wall or a slit, not two neighbours of one curve)."""
+    seg = V[nxt[sg]] - V[sg]
+    facing = np.zeros(len(v), dtype=bool)
+    for tan in (V[nxt[v]] - V[v], V[v] - V[prv[v]]):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cos = np.einsum("ij,ij->i", tan, seg) / np.maximum(
+                np.hypot(*tan.T) * np.hypot(*seg.T), 1e-300)
+        facing |= cos < -cos_max
+    return facing
 
 
 SHARP = 60.0      # degrees: a corner of a face sharper than this, in a thin piece, is a tip
@@ -520,27 +523,13 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     if not keep:
         return
     tick()
-    V = np.concatenate(keep)
-    n = len(V)
-    sizes = np.array([len(P) for P in keep])
-    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
-    size = np.repeat(sizes, sizes)
-    idx = np.arange(n)
-    nxt = start + (idx - start + 1) % size
-    prv = start + (idx - start - 1) % size
+    V, nxt, prv = _ring(keep)
+    idx = np.arange(len(V))
     B = V[nxt]
     v, sg, dist, foot = close_pairs(V, idx, V, B, idx, t, others=False)
     if not len(v):
         return
-    ok = (v != nxt[sg]) & (dist > 1e-6)
-    seg = B[sg] - V[sg]
-    facing = np.zeros(len(v), dtype=bool)
-    for tan in (V[nxt[v]] - V[v], V[v] - V[prv[v]]):      # either edge at the vertex
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cos = np.einsum("ij,ij->i", tan, seg) / np.maximum(
-                np.hypot(*tan.T) * np.hypot(*seg.T), 1e-300)
-        facing |= cos < -FACING
-    ok &= facing
+    ok = (v != nxt[sg]) & (dist > 1e-6) & _facing(V, nxt, prv, v, sg, FACING)
     v, sg, dist, foot = v[ok], sg[ok], dist[ok], foot[ok]
     if not len(v):
         return
