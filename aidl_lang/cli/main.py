@@ -867,6 +867,8 @@ def cmd_parts(args) -> int:
     src = _read(args.file, args.json)
     if src is None:
         return 1
+    global _program
+    _program = (args.file, src)          # what a last-resort diagnostic is located in
     res = compile_source(src, args.file, _overrides(args.set), budget=_budget(args))
     if not res.ok:
         _emit(res.sink, args.json, False)
@@ -1079,6 +1081,14 @@ def _internal(e: BaseException) -> int:
 _program: tuple[str, str] | None = None   # (path, source) of the program being compiled
 
 
+def _program_text(args) -> tuple[str, str | None]:
+    """``(path, source)`` of the program the failed command compiled (what it read, kept in
+    :data:`_program`), to locate a last-resort diagnostic; the source None when unknown."""
+    if _program is not None:
+        return _program
+    return getattr(args, "file", "-"), None
+
+
 def _out_of_memory(args) -> int:
     """A ``MemoryError`` outside the compile's own handler (the freedom count, the redundancy
     search, the exact outlines, a writer, an import): one located ``E0304``, exit 1, nothing
@@ -1090,14 +1100,7 @@ def _out_of_memory(args) -> int:
               f"{memory_text()}\n  = help: import a smaller drawing, or one layer at a time "
               "(--layer)", file=sys.stderr)
         return 1
-    path, source = _program if _program is not None else (getattr(args, "file", "-"), None)
-    if source is None and path not in (None, "-"):
-        from ..sources import SourceRefused, read_program
-        try:
-            source = read_program(path)
-        except SourceRefused:
-            source = None
-    sink = out_of_memory_sink(path, source)
+    sink = out_of_memory_sink(*_program_text(args))
     _emit(sink, getattr(args, "json", False), False)
     return 1
 
@@ -1106,14 +1109,7 @@ def _output_error(args, e) -> int:
     """An :class:`~aidl_lang.output.part.OutputError` after the compile (``aidl parts``,
     ``check --describe``): one located ``E0304``, exit 1, nothing written."""
     from ..pipeline import output_error_sink
-    path, source = _program if _program is not None else (getattr(args, "file", "-"), None)
-    if source is None and path not in (None, "-"):
-        from ..sources import SourceRefused, read_program
-        try:
-            source = read_program(path)
-        except SourceRefused:
-            source = None
-    _emit(output_error_sink(path, source, e), getattr(args, "json", False), False)
+    _emit(output_error_sink(*_program_text(args), e), getattr(args, "json", False), False)
     return 1
 
 
