@@ -22,7 +22,7 @@ from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
 from .output.booleans import Drawing, render_model
-from .output.checks import check_drawing, check_topology, topology
+from .output.checks import check_drawing, check_stray_holes, check_topology, topology
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -72,7 +72,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     except MemoryError:
         pass                         # handled below, once the exception (and its frames) is gone
     except SystemError as ex:
-        if not out_of_memory(ex):
+        if not is_out_of_memory(ex):
             raise
         # an allocation failed inside C code (numpy, Manifold, the interpreter's own C
         # helpers) that lost the MemoryError on its way out: the same out of memory
@@ -80,9 +80,6 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     # cycles (structures and their parents), which only the cycle collector frees — and it
     # would not run before the next allocations fail.  Free it, then report.
     return Compiled(out_of_memory_sink(path, source))
-
-
-out_of_memory = is_out_of_memory      # the test every front end applies to an exception
 
 
 def out_of_memory_sink(path: str, source: str | None, stage: str | None = None,
@@ -331,55 +328,6 @@ def _first_structure(model: Model):
         if getattr(s, "span", None) is not None:
             return s
     return None
-
-
-def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
-    """W0109 for a hole declared in an assembly (a part of its own, so it cuts nothing; issue
-    61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
-    (the most overlap, one whose name the hole's names first) and carrying the fix that
-    cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly."""
-    from .diagnostics import Fix, Span
-    holes = [p for p in drawing.parts if p.kind == "hole"]
-    if not holes:
-        return
-    solids = [p for p in drawing.parts if p.kind == "solid"]
-    for hp in holes:
-        h = drawing.part_of.get(hp.name)
-        if h is None or h.parent is None or h.parent.kind != "assembly" or h.span is None:
-            continue
-        home = h.parent
-        best, best_key = None, None
-        for sp in solids:
-            t = drawing.part_of.get(sp.name)
-            if t is None or not t.is_within(home):
-                continue
-            try:
-                area = (hp.shape ^ sp.shape).area()
-            except Exception:           # a degenerate shape: no overlap to speak of
-                continue
-            if area <= 1e-9:
-                continue
-            key = (t.name.split("[")[0] in h.name, area)
-            if best_key is None or key > best_key:
-                best, best_key = t, key
-        msg = (f"hole `{h.path}` is declared in assembly `{home.path}`, so it cuts nothing: a "
-               "hole cuts only the solid it is declared in")
-        fix = None
-        if best is not None:
-            rel = best.path[len(home.path) + 1:]
-            call = f"CutInto({h.name}, {rel})"
-            hint = (f"it lies over `{best.path}`: `{call}` in `{home.path}` cuts it there "
-                    "(the fix); a part of a template instance is cut only this way")
-            sp_ = h.span
-            if not in_stdlib(sp_.file) and "[" not in call:
-                at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
-                fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
-            msg += f"; it lies over `{best.path}`"
-        else:
-            hint = (f"declare it inside the solid it should cut, or write `CutInto({h.name}, "
-                    f"PART)` in `{home.path}` to cut a solid part of it (a part of a template "
-                    "instance: `box.lid`)")
-        sink.add(Diagnostic("W0109", msg, h.span, "warning", hint=hint, fix=fix))
 
 
 def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:

@@ -325,8 +325,9 @@ class Session:
         """The sink of a compile that raised ``e``: out of memory (a ``MemoryError``
         anywhere: NumPy, Manifold, the checks) is the program's located ``E0304``; anything
         else is a bug, ``E0900`` (:func:`_internal`)."""
-        from ..pipeline import out_of_memory, out_of_memory_sink
-        if out_of_memory(e):
+        from ..limits import is_out_of_memory
+        from ..pipeline import out_of_memory_sink
+        if is_out_of_memory(e):
             return out_of_memory_sink(self.name, self.source or None)
         return _internal(e, stage)
 

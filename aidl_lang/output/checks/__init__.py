@@ -47,14 +47,15 @@ from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_sample
 from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
                        _check_repeated_faces,
                        _check_voids, _intended, _Near, _report_openings)
-from .parts import _check_interpenetration, _check_steps, _check_invisible, _check_pieces, empty_faces
+from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
+                    check_stray_holes, empty_faces)
 from .text import _check_text_overlap
 from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
 # others' helpers, e.g. walls._open, means patching it in the module that uses it)
-__all__ = ["check_drawing", "check_topology", "topology", "topology_changes", "Topology",
+__all__ = ["check_drawing", "check_stray_holes", "check_topology", "topology", "topology_changes", "Topology",
            "empty_faces", "MIN_WALL", "MIN_AREA", "MIN_FRACTION", "ENGRAVE_TOL", "TOUCH",
            "_SURELY_GROWN", "THIN_SECONDS_PER_VERTEX", "TILE_VERTS", "UNION_GROUP",
            "WHOLE_LOOPS", "WHOLE_VERTS", "_analyse", "_check_fit", "_check_hole",

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...diagnostics import DiagnosticSink, Label
+from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
 from ...geometry.model import Structure
 from ..booleans import Drawing
 from ..nearby import box_pairs
@@ -372,3 +372,55 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
             far = P[idx[int(np.argmax(out[:k]))]]
             found.append((P[a], far, h, float(along[:k].max() if len(along) else 0.0), u,
                           -1.0))
+
+
+def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
+    """W0109 for a hole declared in an assembly (a part of its own, so it cuts nothing; issue
+    61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
+    (the most overlap, one whose name the hole's names first) and carrying the fix that
+    cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly."""
+    holes = [p for p in drawing.parts if p.kind == "hole"]
+    if not holes:
+        return
+    solids = [p for p in drawing.parts if p.kind == "solid"]
+    for hp in holes:
+        h = drawing.part_of.get(hp.name)
+        if h is None or h.parent is None or h.parent.kind != "assembly" or h.span is None:
+            continue
+        home = h.parent
+        best, best_key = None, None
+        hx0, hy0, hx1, hy1 = hp.shape.bounds()
+        for sp in solids:
+            t = drawing.part_of.get(sp.name)
+            if t is None or not t.is_within(home):
+                continue
+            sx0, sy0, sx1, sy1 = sp.shape.bounds()
+            if sx0 > hx1 or sx1 < hx0 or sy0 > hy1 or sy1 < hy0:
+                continue                # boxes apart: no overlap (no boolean for it)
+            try:
+                area = (hp.shape ^ sp.shape).area()
+            except Exception:           # a degenerate shape: no overlap to speak of
+                continue
+            if area <= 1e-9:
+                continue
+            key = (t.name.split("[")[0] in h.name, area)
+            if best_key is None or key > best_key:
+                best, best_key = t, key
+        msg = (f"hole `{h.path}` is declared in assembly `{home.path}`, so it cuts nothing: a "
+               "hole cuts only the solid it is declared in")
+        fix = None
+        if best is not None:
+            rel = best.path[len(home.path) + 1:]
+            call = f"CutInto({h.name}, {rel})"
+            hint = (f"it lies over `{best.path}`: `{call}` in `{home.path}` cuts it there "
+                    "(the fix); a part of a template instance is cut only this way")
+            sp_ = h.span
+            if not in_stdlib(sp_.file) and "[" not in call:
+                at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
+                fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+            msg += f"; it lies over `{best.path}`"
+        else:
+            hint = (f"declare it inside the solid it should cut, or write `CutInto({h.name}, "
+                    f"PART)` in `{home.path}` to cut a solid part of it (a part of a template "
+                    "instance: `box.lid`)")
+        sink.add(Diagnostic("W0109", msg, h.span, "warning", hint=hint, fix=fix))
