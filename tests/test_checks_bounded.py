@@ -144,7 +144,7 @@ def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
     from pathlib import Path
 
     from aidl_lang.output.checks.common import _part_roots
-    from aidl_lang.output.checks.walls import _face_at, _faces_at
+    from aidl_lang.output.checks.walls import _faces_at
     f = Path(__file__).resolve().parents[1] / "examples" / f"{example}.aidl"
     if not f.exists():
         pytest.skip(f"no examples/{example}.aidl")
@@ -202,3 +202,33 @@ def test_outlines_past_their_bounded_work_are_a_located_e0304_not_an_internal_er
     both = r.stdout + r.stderr
     assert r.returncode == 1 and "internal error" not in both, both
     assert "E0304" in both and "exact outlines of `plate`" in both
+
+
+# the reference: the per-face loop W0519 and W0520 used before _faces_at (one search)
+def _face_at(d, s, p):
+    """The geometry of part ``s``'s solids (:attr:`Drawing.own`) whose outline passes
+    nearest to point ``p`` (on the part's outline, so on some face's edge), or None."""
+    best, least = None, np.inf
+    x, y = float(p[0]), float(p[1])
+    for st, faces in d.own.items():
+        if st.kind != "solid" or not st.is_within(s):
+            continue
+        for g, f in faces:
+            if f is None or f.is_empty():
+                continue
+            a, b, c, e = f.bounds()
+            if a - least > x or c + least < x or b - least > y or e + least < y:
+                continue
+            for P in f.to_polygons():
+                P = np.asarray(P, dtype=float)
+                A, Bq = P, np.roll(P, -1, axis=0)
+                dd = Bq - A
+                L2 = np.einsum("ij,ij->i", dd, dd)
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    u = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, dd) / L2, 0.0),
+                                0.0, 1.0)
+                e2 = A + u[:, None] * dd - p
+                dm = float(np.sqrt(np.einsum("ij,ij->i", e2, e2).min()))
+                if dm < least:
+                    best, least = g, dm
+    return best

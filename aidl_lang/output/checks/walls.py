@@ -506,7 +506,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     narrow is declared so).  Close pairs are grouped by place; a group whose span along the
     slit is at least ``t`` and whose sides are edges of two different shapes (a cusp drawn in
     one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
-    length, its place and the two shapes (:func:`_face_at`, at the slit's mouth)."""
+    length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth)."""
     from ..nearby import close_pairs
     from .common import _cut_boxes, _edges, _inside, _meets_a_cut, _signed
     if t <= 0 or not loops:
@@ -590,11 +590,13 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
 
 
 def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
-    """For each of ``points`` (n x 2, mm), what :func:`_face_at` gives, by one search of the
+    """For each of ``points`` (n x 2, mm), the geometry of part ``s``'s solids
+    (:attr:`Drawing.own`) whose outline passes nearest to it (a point on the part's outline
+    lies on some face's edge), or None; by one search of the
     faces' edges near the points (:func:`.nearby.close_pairs`, O((n + edges) log)): within a
     radius that doubles from 1 nm until every point has an edge, or has none within the
-    part's box.  The edge's distance is computed as :func:`_face_at` computes it, and the
-    least distance wins, the first face in its order on a tie, so the answer is the same."""
+    part's box; the least distance wins, the first face in :attr:`Drawing.own`'s order on a tie
+    (tests/test_checks_bounded.py holds the per-face loop it replaced, as its reference)."""
     from ..nearby import close_pairs
     points = np.asarray(points, dtype=float).reshape(-1, 2)
     A, Bq, poly, names = [], [], [], []     # the edges, their face (its number in order)
@@ -643,35 +645,6 @@ def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
             break
         radius *= 8
     return out
-
-
-def _face_at(d: Drawing, s: Structure, p):
-    """The geometry of part ``s``'s solids (:attr:`Drawing.own`) whose outline passes
-    nearest to point ``p`` (on the part's outline, so on some face's edge), or None."""
-    best, least = None, np.inf
-    x, y = float(p[0]), float(p[1])
-    for st, faces in d.own.items():
-        if st.kind != "solid" or not st.is_within(s):
-            continue
-        for g, f in faces:
-            if f is None or f.is_empty():
-                continue
-            a, b, c, e = f.bounds()
-            if a - least > x or c + least < x or b - least > y or e + least < y:
-                continue
-            for P in f.to_polygons():
-                P = np.asarray(P, dtype=float)
-                A, Bq = P, np.roll(P, -1, axis=0)
-                dd = Bq - A
-                L2 = np.einsum("ij,ij->i", dd, dd)
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    u = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, dd) / L2, 0.0),
-                                0.0, 1.0)
-                e2 = A + u[:, None] * dd - p
-                dm = float(np.sqrt(np.einsum("ij,ij->i", e2, e2).min()))
-                if dm < least:
-                    best, least = g, dm
-    return best
 
 
 def _clusters(points: np.ndarray, r: float) -> np.ndarray:
