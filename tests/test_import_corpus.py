@@ -170,7 +170,8 @@ def test_no_layouts_dxf_drops_its_zero_spans_and_compiles():
     """ezdxf's integration_tests/data/no_layouts.dxf: two closed cubic splines through
     repeated control points (the letter outline and its hole).  Before: E0108 "a Bezier's
     segment 2 (points[6] to points[9]) is one point", twice; then, with those dropped, E0108
-    "crosses itself" at the corners, where a handle of zero length stops the curve."""
+    "crosses itself" at the corners, where a handle of zero length stops the curve (the
+    compiler now tells a cusp from a crossing: tests/test_spline.py)."""
     name = "integration_tests_data_no_layouts.dxf"
     data = gzip.decompress((DATA / (name + ".gz")).read_bytes())
     text, notes = import_drawing(data, name)
@@ -180,8 +181,8 @@ def test_no_layouts_dxf_drops_its_zero_spans_and_compiles():
     assert "(9 Bézier pieces)" in dropped[0]
     c = compile_source(text, "no_layouts.aidl")
     assert errors(c) == []
-    # the outline and its one hole, each cut at its corners into open Bezier statements
-    assert "closed=true" not in text
+    # the outline and its one hole, each one closed Bezier through its cusps, as drawn
+    assert text.count("closed=true") == 2
     assert text.count("hole ") == 1
 
 

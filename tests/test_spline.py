@@ -707,3 +707,22 @@ def test_an_open_spline_returning_to_its_start_is_a_face(tmp_path):
     c = interpolate([(0, 0), (20, 15), (40, 0), (20, -15), (0, 0)], False)
     assert isinstance(s, Spline) and s.curve == c and lp.area > 0
     assert abs(lp.area - abs(Loop([Spline(c, 0, c.n)]).area)) <= 1e-9
+
+
+
+def test_a_closed_bezier_through_cusps_is_no_crossing():
+    """ezdxf's no_layouts.dxf draws polylines as cubics with zero-length handles at every
+    corner: the curve stops there and turns. The self-crossing search took each such corner for
+    a crossing (E0108 "crosses itself" on both outlines), and the importer cut the chains in
+    pieces to get past it; a crossing leaves the point and comes back, a cusp does not."""
+    from pathlib import Path
+    from aidl_lang.pipeline import compile_source
+    f = Path(__file__).parent / "data" / "cusped_bezier.aidl"
+    c = compile_source(f.read_text(), str(f))
+    assert c.ok and not [d for d in c.sink.items if d.code == "E0108"], \
+        [d.message for d in c.sink.items]
+    eight = ("solid s {\n    b = Bezier(points=[(0, 0), (10, 10), (10, -10), (0, 0), (-10, 10), "
+             "(-10, -10), (0, 0)], closed=true)\n}\n")
+    c = compile_source(eight, "eight.aidl")
+    assert [d.code for d in c.sink.items if d.is_error] == ["E0108"]
+    assert "crosses itself at (0, 0)" in c.sink.items[0].message

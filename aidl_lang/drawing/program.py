@@ -109,66 +109,13 @@ def _bezier_points(spans) -> list:
     return pts
 
 
-def _still(p, q) -> bool:
-    """Whether control point ``q`` is on its end point ``p``: a handle of zero length (within
-    1e-9 of the larger coordinate, at least 1 mm), where the curve stops and turns (a cusp)."""
-    return math.dist(p, q) <= 1e-9 * max(1.0, abs(p[0]), abs(p[1]))
-
-
-def _cusp(a, b) -> bool:
-    """Whether span ``b`` follows span ``a`` at a cusp: a handle of zero length on either side
-    of their shared point."""
-    return _still(a[3], a[2]) or _still(b[0], b[1])
-
-
-def _halves(b) -> tuple:
-    """Cubic span ``b`` cut in two at t = 1/2 (de Casteljau), exactly the same curve."""
-    def mid(p, q):
-        return ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
-    p01, p12, p23 = mid(b[0], b[1]), mid(b[1], b[2]), mid(b[2], b[3])
-    p012, p123 = mid(p01, p12), mid(p12, p23)
-    m = mid(p012, p123)
-    return (b[0], p01, p012, m), (m, p123, p23, b[3])
-
-
-def _at_cusps(s: Spline, closed: bool = False) -> list:
-    """Spline piece ``s`` (no interpolating spline: a ``Bezier``) cut into pieces at its
-    cusps, so that no ``Bezier`` statement runs through one: the compiler's search for a
-    closed ``Bezier`` crossing itself (:func:`aidl_lang.geometry.spline.self_crossings`)
-    cannot tell a cusp (a handle of zero length, as a DXF spline through a repeated control
-    point or a polyline drawn as a cubic has at each corner) from a crossing, and refuses the
-    outline (E0108 "crosses itself").  ``closed``: ``s`` is a whole loop, and the join of its
-    end to its start is a cusp too; such a loop is cut in two pieces (its one span in halves)
-    so that it is written as open statements.  The curve is unchanged."""
-    from .read import bezier_spline
-    spans = [tuple(b) for b in s.spans]
-    runs, cur = [], [spans[0]]
-    for b in spans[1:]:
-        if _cusp(cur[-1], b):
-            runs.append(cur)
-            cur = [b]
-        else:
-            cur.append(b)
-    runs.append(cur)
-    if closed and len(runs) == 1 and _cusp(spans[-1], spans[0]):
-        runs = [[b] for b in spans] if len(spans) > 1 else [[h] for h in _halves(spans[0])]
-        runs = [runs[0], [b for r in runs[1:] for b in r]]
-    if len(runs) == 1:
-        return [s]
-    return [bezier_spline(r) for r in runs]
-
-
-def _bezier_runs(segs: list, closed: bool = False) -> list:
+def _bezier_runs(segs: list) -> list:
     """``segs`` with each run of consecutive spline pieces that are no interpolating spline
     through their span ends joined into one piece (one ``Bezier`` statement): its spans are
-    the pieces' spans, end to end, each piece's start its predecessor's end bit for bit.  A
-    run is cut at a cusp (:func:`_at_cusps`); ``closed``: ``segs`` is a loop."""
+    the pieces' spans, end to end, each piece's start its predecessor's end bit for bit."""
     from ..geometry.spline import CubicSpline
     out: list = []
     run: list = []
-    if closed and len(segs) == 1 and isinstance(segs[0], Spline) and \
-            _spline_points(segs[0], True) is None:
-        return _at_cusps(segs[0], True)
 
     def flush():
         if len(run) == 1:
@@ -182,17 +129,11 @@ def _bezier_runs(segs: list, closed: bool = False) -> list:
         run.clear()
     for s in segs:
         if isinstance(s, Spline) and _spline_points(s, False) is None:
-            for piece in _at_cusps(s):
-                if run and _cusp(run[-1].spans[-1], piece.spans[0]):
-                    flush()
-                run.append(piece)
+            run.append(s)
         else:
             flush()
             out.append(s)
     flush()
-    if closed and len(out) == 1 and isinstance(out[0], Spline) and \
-            _spline_points(out[0], True) is None:
-        return _at_cusps(out[0], True)
     return out
 
 
@@ -209,7 +150,7 @@ class _Writer:
         """Statements for a chain of segments sharing end points; False (nothing written)
         when a spline piece has no exact form."""
         out: list[str] = []
-        segs = _bezier_runs(segs, closed)
+        segs = _bezier_runs(segs)
         if closed and len(segs) == 1 and isinstance(segs[0], Spline):
             pts = _spline_points(segs[0], True)
             if pts is None:         # its own control points: a closed Bezier chain

@@ -532,9 +532,27 @@ def self_crossings(c: CubicSpline, check=None) -> list[tuple[float, float]]:
         p, q = c.at(u), c.at(v)
         if gap < 1e-6 or math.hypot(p[0] - q[0], p[1] - q[1]) > 1e-7 * scale:
             continue                 # the shared point of neighbours, or no crossing
+        if _stays_at(c, u, v, p, 1e-6 * scale):
+            continue                 # a cusp: the curve stops there and turns (a zero handle)
         if not any(abs(u - a) < 1e-7 and abs(v - b) < 1e-7 for a, b in out):
             out.append((u, v))
     return out
+
+
+def _stays_at(c: CubicSpline, u: float, v: float, p, tol: float) -> bool:
+    """Whether curve ``c`` stays within ``tol`` of point ``p`` all the way from parameter
+    ``u`` to ``v`` (the shorter way round a closed curve): two parameters at one point with
+    nothing between them but that point are a cusp, where a span ends with a handle of zero
+    length and the curve stops before it turns (a polyline written as a cubic, a DXF spline's
+    repeated control point), not a crossing; a crossing leaves the point and comes back."""
+    a, b = u, v
+    if c.closed and v - u > c.n / 2:
+        a, b = v, u + c.n
+    for k in range(1, 16):
+        x, y = c.at((a + (b - a) * k / 16) % c.n if c.closed else a + (b - a) * k / 16)
+        if math.hypot(x - p[0], y - p[1]) > tol:
+            return False
+    return True
 
 
 def bspline_of(ctrl: list, h: list) -> tuple[int, list[float], list[Point]]:
