@@ -120,7 +120,7 @@ _skipped: list[str] = []
 
 
 def pytest_runtest_logreport(report):
-    if report.skipped and report.nodeid not in _skipped:
+    if report.skipped and not hasattr(report, "wasxfail") and report.nodeid not in _skipped:
         _skipped.append(report.nodeid)
 
 
