@@ -225,6 +225,8 @@ def test_a_slit_from_edge_to_edge_frees_the_corner_and_a_closed_chain_cuts_a_hol
     lines = [e for e in msp if e.dxftype() == "LINE"]
     assert [(_key(e.dxf.start), _key(e.dxf.end)) for e in lines] == [(_key((-20, 0)),
                                                                       _key((20, 0)))]
+    # `aidl check --describe` says what is cut along
+    assert "through-cut: Line `panel.slits.a` from (-20, 0) to (20, 0), 40 mm" in res.describe()
 
 
 def test_a_through_cut_is_exact_in_the_dxf(tmp_path):
@@ -306,6 +308,11 @@ def test_a_through_cut_off_the_material_is_w0522(tmp_path):
     assert len(ws) == 1 and "`panel.slits.b`" in ws[0].message and ws[0].span.line == 6, \
         [d.message for d in res.diagnostics]
     assert [d.code for d in res.diagnostics] == ["W0522"]
+    # a closed curve of a cut off the material: the hole's W0502, naming the cut
+    closed = _compile(PANEL.replace("b = Line(start=(20, 15), end=(30, 5))",
+                                    "b = Circle(center=(50, 0), radius=3)"), tmp_path, "c.aidl")
+    assert [d.message for d in closed.diagnostics] == [
+        "cut `panel.slits` cuts nothing: it lies outside solid `panel`"]
 
 
 def test_a_web_thinner_than_the_minimum_between_cuts_is_w0507(tmp_path):
