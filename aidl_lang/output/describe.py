@@ -246,7 +246,9 @@ def _text_items(output: Output) -> list[dict]:
     d = output.drawing
     if d is None:
         return []
-    owner = {s: name for name, s in d.part_of.items()}
+    owner: dict = {}
+    for name, s in d.part_of.items():          # a split part: its own name, not a piece's
+        owner.setdefault(s, name)
     from .part import _part_of
     groups: dict = {}
     for style, item, g in d.strokes:
