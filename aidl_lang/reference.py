@@ -560,7 +560,7 @@ Use it like a constant.
 """, ["parameter", "set", "--set"]),
     "def": ("statement", "`def NAME(p=default) -> solid { ... }`: a template.", """
 `def NAME(p1, p2=default, ...) -> KIND { body }` (or `KIND NAME(p1, ...) { body }`), top level;
-KIND is solid, hole, drawing or assembly. Instantiate it by assignment inside a structure:
+KIND is solid, hole, cut, drawing or assembly. Instantiate it by assignment inside a structure:
 `part = NAME(p1=...)` makes a child structure named `part` (reach inside: `part.rim.center`);
 `hole cut = NAME(...)` changes the instance's kind. Arguments are values (numbers, lengths,
 angles, strings, lists), not geometry; place the instance with constraints in the parent.
