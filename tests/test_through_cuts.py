@@ -282,6 +282,14 @@ def test_a_cut_where_it_cuts_nothing_is_e0125(tmp_path, src, where):
     assert where in errs[0].message and errs[0].hint and errs[0].span is not None
 
 
+def test_text_in_a_cut_is_e0120_with_the_fix(tmp_path):
+    res = _compile("solid p {\n    r = Rectangle(center=(0, 0), width=40, height=20)\n"
+                   "    cut c { t = Text(\"A\", position=(0, 0), size=5) }\n}\n", tmp_path)
+    (err,) = [d for d in res.diagnostics if d.severity == "error"]
+    assert err.code == "E0120" and "not in cut `c`" in err.message
+    assert "solid around the cut" in err.hint
+
+
 def test_cut_stays_an_ordinary_name(tmp_path):
     src = """
 def hinge(cut = 15 mm) -> cut { l = Line(start=(0, 0), end=(cut, 0)) }
@@ -308,6 +316,11 @@ def test_a_through_cut_off_the_material_is_w0522(tmp_path):
     assert len(ws) == 1 and "`panel.slits.b`" in ws[0].message and ws[0].span.line == 6, \
         [d.message for d in res.diagnostics]
     assert [d.code for d in res.diagnostics] == ["W0522"]
+    # one of no length
+    nil = _compile(PANEL.replace("b = Line(start=(20, 15), end=(30, 5))",
+                                 "b = Line(start=(5, 5), end=(5, 5))"), tmp_path, "n.aidl")
+    assert [d.message for d in nil.diagnostics] == [
+        "through-cut `panel.slits.b` has no length: it cuts nothing"]
     # a closed curve of a cut off the material: the hole's W0502, naming the cut
     closed = _compile(PANEL.replace("b = Line(start=(20, 15), end=(30, 5))",
                                     "b = Circle(center=(50, 0), radius=3)"), tmp_path, "c.aidl")
