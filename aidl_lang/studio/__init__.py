@@ -54,6 +54,10 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
     for k, v in settings.items():
         if v is not None:
             setattr(s, k, v)
+    problem = _reachable(s)
+    if problem:
+        print(f"aidl: error: {problem}", file=sys.stderr)
+        return 2
     from ..serve import listening
     sock = listening(host, port, 1024)
     if sock is None:
@@ -92,6 +96,31 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
         if made:
             shutil.rmtree(s.data, ignore_errors=True)
     return 0
+
+
+def _reachable(s) -> str:
+    """Why the settings' store or cluster cannot be used ('' when they can): its client is
+    missing, or Redis does not answer (checked once at start; later outages are ``503``s
+    and ``/healthz`` says so)."""
+    if s.scheduler:
+        try:
+            import dask.distributed  # noqa: F401
+        except ImportError as e:
+            return (f"--scheduler needs Dask ({e.name} is missing): "
+                    "pip install 'aidl-lang[studio]'")
+    if not s.store:
+        return ""
+    try:
+        import redis
+    except ImportError:
+        return "--store needs the redis client: pip install 'aidl-lang[studio]'"
+    from .store import TIMEOUT
+    try:
+        redis.Redis.from_url(s.store, socket_timeout=TIMEOUT,
+                             socket_connect_timeout=TIMEOUT).ping()
+    except (redis.exceptions.RedisError, OSError, ValueError) as e:
+        return f"cannot reach the store at {s.store}: {e}; start Redis or correct --store"
+    return ""
 
 
 __all__ = ["studio", "HOST"]

@@ -1,0 +1,214 @@
+"""Compiles on a Dask cluster: ``aidl studio --scheduler tcp://HOST:PORT`` (issue 62;
+docs/studio.md, "Compiles on Dask").
+
+:class:`Remote` stands where the local :class:`~aidl_lang.workers.Pool` stands (the same
+``request(request, seconds, wait, prefer) -> (answer, worker)``, ``waiting``, ``workers``,
+``stop``), so :meth:`.app.Studio.compile` treats both alike.  Each request becomes one task,
+:func:`run_remote`, on a ``dask.distributed`` worker, which hands it to a warm compile process
+of its own (:class:`~aidl_lang.workers.Worker`, one per worker thread) with the same budget,
+wall-time limit (``seconds``, then the process is killed) and memory cap (``RLIMIT_AS``) as
+the local workers, and the same no-file-access rule: the program is compiled from memory
+under the name ``SESSION/main.aidl`` in a folder of the Dask worker's machine that holds
+exactly the session's uploads, sent with the task (:func:`.store.write_files`).
+
+Saturation is answered, never waited out: the cluster's load (tasks running and queued on the
+scheduler, against its worker threads) is read at most once a second; past ``threads + queue``
+the request is refused at once (``503`` with ``Retry-After``, :class:`~aidl_lang.workers.Busy`),
+and a task without an answer within ``wait + seconds`` is cancelled and refused the same way.
+An unreachable scheduler is :class:`~aidl_lang.workers.NotReady` (``503``).
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+import threading
+import time
+
+from .. import workers as W
+from .compiler import handler
+from .store import read_files, write_files
+
+PROBE_EVERY = 1.0               # s between two reads of the cluster's load
+CONNECT_TIMEOUT = 5.0           # s to reach the scheduler
+
+_local = threading.local()      # on a Dask worker: this thread's compile processes
+
+
+def run_remote(request: tuple, files: dict, budget: float, seconds: float,
+               memory: int | None) -> tuple:
+    """On a Dask worker: ``request`` (:mod:`.compiler`'s tuples) answered by this thread's
+    warm compile process; ``files``: the session's uploads ({name: bytes}).  Returns
+    ``("ok", answer)``, ``("timeout", seconds)``, ``("died", message)`` or
+    ``("notready", message)``."""
+    import multiprocessing
+    me = multiprocessing.current_process()
+    if me.daemon:
+        # A Dask nanny starts its worker as a daemonic process, and multiprocessing refuses
+        # children to those (they would be orphaned when it is killed).  The compile process
+        # reads its requests from a pipe and exits when the pipe closes, so it cannot outlive
+        # this one by more than the compile in flight (at most ``seconds``); the same
+        # reasoning as distributed's own `distributed.worker.daemon: False` setting.
+        me._config["daemon"] = False
+    pool = getattr(_local, "workers", None)
+    if pool is None:
+        pool = _local.workers = {}
+    w = pool.get((budget, memory))
+    if w is None:
+        w = pool[(budget, memory)] = W.Worker(handler, (budget,), memory)
+    kind = request[0]
+    if kind in ("view", "download"):
+        at = 2 if kind == "view" else 1
+        folder = _mirror(os.path.basename(str(request[at])), files)
+        request = request[:at] + (folder,) + request[at + 1:]
+    try:
+        answer = w.request(request, seconds)
+    except W.TimedOut as e:
+        return ("timeout", e.seconds)
+    except W.Died as e:
+        return ("died", str(e))
+    except W.NotReady as e:
+        return ("notready", str(e))
+    if isinstance(answer, dict) and answer.pop("retire", False):
+        w.retiring = True
+    return ("ok", answer)
+
+
+def _mirror(sid: str, files: dict) -> str:
+    """A folder of this machine (mode 0700) holding exactly ``files``, for session ``sid``."""
+    from .sessions import _ID
+    if not _ID.fullmatch(sid):
+        sid = "x" * 24
+    base = os.path.join(tempfile.gettempdir(), f"aidl-studio-dask-{os.getuid()}")
+    os.makedirs(base, mode=0o700, exist_ok=True)
+    path = os.path.join(base, sid)
+    os.makedirs(path, mode=0o700, exist_ok=True)
+    if os.path.islink(path) or not os.path.isdir(path):
+        raise OSError(f"{path} is not a folder")
+    write_files(path, files)
+    return path
+
+
+def _load(dask_scheduler=None) -> tuple[int, int]:
+    """On the scheduler: ``(worker threads, tasks running or waiting)``."""
+    s = dask_scheduler
+    threads = sum(ws.nthreads for ws in s.workers.values())
+    tasks = sum(len(ws.processing) for ws in s.workers.values())
+    tasks += len(getattr(s, "queued", ())) + len(getattr(s, "unrunnable", ()))
+    return threads, tasks
+
+
+class Remote:
+    """Compiles sent to the Dask scheduler at ``address`` with ``budget`` (factor of the
+    default evaluation budget) and ``memory`` (bytes, each compile process's cap)."""
+
+    def __init__(self, address: str, budget: float = 1.0, memory: int | None = None,
+                 queue: int = 16) -> None:
+        self.address, self.budget, self.memory, self.queue = address, budget, memory, queue
+        self.client = None
+        self.lock = threading.Lock()
+        self.inflight = 0
+        self.probed = (0.0, 0, 0)          # (when, threads, tasks)
+        self.workers: list = []            # no local compile processes
+        self.restarts = 0                  # compile processes killed on the cluster
+
+    def connect(self):
+        """The Dask client (connected on first use); raises :class:`W.NotReady`."""
+        with self.lock:
+            if self.client is None:
+                try:
+                    from dask.distributed import Client
+                except ImportError as e:
+                    raise W.NotReady(f"--scheduler needs Dask ({e.name} is missing: pip "
+                                     "install 'aidl-lang[studio]')") from None
+                try:
+                    self.client = Client(self.address, timeout=f"{CONNECT_TIMEOUT:g}s",
+                                         set_as_default=False)
+                except (OSError, TimeoutError) as e:
+                    raise W.NotReady(f"the compile cluster ({self.address}) cannot be reached: "
+                                     f"{e}") from None
+            return self.client
+
+    def load(self) -> tuple[int, int]:
+        """``(worker threads, tasks running or waiting)`` of the cluster, at most
+        :data:`PROBE_EVERY` s old."""
+        when, threads, tasks = self.probed
+        if time.monotonic() - when > PROBE_EVERY:
+            client = self.connect()
+            try:
+                threads, tasks = client.run_on_scheduler(_load)
+            except Exception as e:  # noqa: BLE001 - the scheduler went away
+                raise W.NotReady(f"the compile cluster ({self.address}) does not answer: "
+                                 f"{type(e).__name__}") from None
+            self.probed = (time.monotonic(), threads, tasks)
+        return threads, tasks
+
+    @property
+    def waiting(self) -> int:
+        """Tasks of the cluster waiting for a thread (0 when it cannot be read)."""
+        try:
+            threads, tasks = self.load()
+        except W.NotReady:
+            return 0
+        return max(0, tasks - threads)
+
+    def ready(self) -> tuple[bool, str]:
+        """Whether the cluster takes compiles: ``(ok, why not)``."""
+        try:
+            threads, _ = self.load()
+        except W.NotReady as e:
+            return False, str(e)
+        return (threads > 0, "" if threads else "the compile cluster has no workers")
+
+    def request(self, request: tuple, seconds: float, wait: float | None = None,
+                prefer=None):
+        """``(answer, None)`` of ``request`` compiled on the cluster; raises
+        :class:`W.Busy`, :class:`W.TimedOut`, :class:`W.Died` or :class:`W.NotReady`."""
+        wait = 10.0 if wait is None else wait
+        client = self.connect()
+        threads, tasks = self.load()
+        if max(tasks, self.inflight) >= threads + self.queue:
+            raise W.Busy(f"every compiler of the cluster is busy ({tasks} compiles)")
+        files = {}
+        if request[0] in ("view", "download"):
+            folder = request[2 if request[0] == "view" else 1]
+            files = read_files(folder) if os.path.isdir(folder) else {}
+        with self.lock:
+            self.inflight += 1
+        fut = None
+        try:
+            fut = client.submit(run_remote, request, files, self.budget, seconds, self.memory,
+                                pure=False)
+            try:
+                said = fut.result(timeout=wait + seconds)
+            except TimeoutError:
+                fut.cancel()
+                raise W.Busy(f"no compiler of the cluster answered within {wait + seconds:g} s")
+            except (OSError, ConnectionError) as e:
+                raise W.NotReady(f"the compile cluster ({self.address}) does not answer: "
+                                 f"{e}") from None
+            except W.WorkerError:
+                raise
+            except Exception as e:  # noqa: BLE001 - KilledWorker, a task lost twice
+                self.restarts += 1
+                raise W.Died(f"the cluster lost the compile: {type(e).__name__}") from None
+        finally:
+            with self.lock:
+                self.inflight -= 1
+            if fut is not None:
+                fut.release()
+        status, value = said
+        if status == "timeout":
+            self.restarts += 1
+            raise W.TimedOut(value)
+        if status == "died":
+            self.restarts += 1
+            raise W.Died(value)
+        if status == "notready":
+            raise W.NotReady(value)
+        return value, None
+
+    def stop(self) -> None:
+        with self.lock:
+            client, self.client = self.client, None
+        if client is not None:
+            client.close(timeout=5)
