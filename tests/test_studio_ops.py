@@ -226,3 +226,43 @@ def test_compiles_on_a_dask_cluster_with_the_same_limits(tmp_path):
             assert m[("aidl_studio_busy_total", ())] == 1 + waited_out
             assert m[("aidl_studio_compile_timeouts_total", ())] == 1
             assert m[("aidl_studio_worker_restarts_total", ())] == 1
+
+
+def test_the_containerfile_copies_what_exists_runs_as_a_user_on_one_port():
+    """The image is not built here (no registry for its base image: docs/studio.md); what it
+    says is checked against the tree: every COPY source exists, the entry point is the
+    script the nginx test starts, a non-root user, one port."""
+    import re
+    text = (ROOT / "deploy" / "studio" / "Containerfile").read_text()
+    lines = [ln.strip() for ln in re.sub(r"\\\n", " ", text).splitlines()
+             if ln.strip() and not ln.lstrip().startswith("#")]
+    copies = [ln.split()[1:] for ln in lines if ln.startswith("COPY ")]
+    assert copies
+    for args in copies:
+        for src in [a for a in args if not a.startswith("--")][:-1]:
+            assert (ROOT / src).exists(), src
+    users = [ln.split()[1] for ln in lines if ln.startswith("USER ")]
+    assert users and users[-1] not in ("0", "root")
+    assert [ln for ln in lines if ln.startswith("EXPOSE ")] == ["EXPOSE 8780"]
+    entry = [ln for ln in lines if ln.startswith("ENTRYPOINT ")]
+    assert entry == ['ENTRYPOINT ["/usr/local/bin/aidl-studio-entrypoint"]']
+    assert "COPY --chmod=0555 deploy/studio/entrypoint.sh /usr/local/bin/aidl-studio-entrypoint" \
+        in lines
+    assert any("/healthz" in ln for ln in lines if ln.startswith("HEALTHCHECK"))
+
+
+@pytest.mark.parametrize("env, message", [
+    ({"PORT": "80a"}, "PORT must be a port number, got '80a'"),
+    ({"PORT": "8780", "AIDL_STUDIO_COMPILERS": "two"},
+     "AIDL_STUDIO_COMPILERS must be a number, got 'two'"),
+    ({"PORT": "0", "AIDL_STUDIO_STORE": "redis://127.0.0.1:1/0"},
+     "cannot reach the store at redis://127.0.0.1:1/0: ")])
+def test_the_entry_script_refuses_a_bad_setting_in_one_line(env, message):
+    import subprocess
+    import sys
+    path = os.pathsep.join((str(Path(sys.executable).parent), "/usr/bin", "/bin"))
+    r = subprocess.run(["/bin/sh", str(ROOT / "deploy" / "studio" / "entrypoint.sh")],
+                       env={"PATH": path, **env}, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert r.stderr.startswith(("aidl-studio: " if "STORE" not in str(env) else "aidl: error: ")
+                               + message), r.stderr

@@ -119,7 +119,8 @@ def _reachable(s) -> str:
         redis.Redis.from_url(s.store, socket_timeout=TIMEOUT,
                              socket_connect_timeout=TIMEOUT).ping()
     except (redis.exceptions.RedisError, OSError, ValueError) as e:
-        return f"cannot reach the store at {s.store}: {e}; start Redis or correct --store"
+        return (f"cannot reach the store at {s.store}: {str(e).rstrip('.')}; start Redis "
+                "or correct --store")
     return ""
 
 
