@@ -11,6 +11,9 @@ links and embeds that carry the program in the URL.
 * :mod:`.app`: the Starlette routes, rate limits and the busy answer.
 * :mod:`.compiler`: what a compile worker does (preview, download, thumbnail).
 * :mod:`.sessions`: a tab's upload folder, the only files its program can read.
+* :mod:`.store`: the uploads and rate counters in Redis (``--store``), mirrored into folders.
+* :mod:`.remote`: compiles on a Dask cluster (``--scheduler``).
+* :mod:`.metrics`: ``/healthz`` and ``/metrics`` (Prometheus) for the operator.
 * ``static/``: the page (HTML, JS, CSS; CodeMirror under ``static/vendor/``).
 
 A separate command from ``aidl serve``: ``serve FILE`` previews one file of this machine for its

@@ -476,7 +476,7 @@ def create_app(settings: Settings | None = None) -> Starlette:
         return await run_in_threadpool(st.metrics.health, live)
 
     async def metrics(request):
-        return st.metrics.response()
+        return await run_in_threadpool(st.metrics.response)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):

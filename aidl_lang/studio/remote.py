@@ -74,18 +74,26 @@ def run_remote(request: tuple, files: dict, budget: float, seconds: float,
 
 
 def _mirror(sid: str, files: dict) -> str:
-    """A folder of this machine (mode 0700) holding exactly ``files``, for session ``sid``."""
-    from .sessions import _ID
+    """A folder of this machine (mode 0700) holding exactly ``files``, for session ``sid``;
+    the folders of sessions idle for :data:`.store.MIRROR_IDLE` s are removed."""
+    from .sessions import _ID, Folders
+    from .store import MIRROR_IDLE
     if not _ID.fullmatch(sid):
         sid = "x" * 24
-    base = os.path.join(tempfile.gettempdir(), f"aidl-studio-dask-{os.getuid()}")
-    os.makedirs(base, mode=0o700, exist_ok=True)
-    path = os.path.join(base, sid)
-    os.makedirs(path, mode=0o700, exist_ok=True)
-    if os.path.islink(path) or not os.path.isdir(path):
-        raise OSError(f"{path} is not a folder")
+    with _mirrors_lock:
+        global _mirrors
+        if _mirrors is None:
+            _mirrors = Folders(os.path.join(tempfile.gettempdir(),
+                                            f"aidl-studio-dask-{os.getuid()}"))
+            _mirrors.idle = MIRROR_IDLE
+        _mirrors.sweep()
+    path = _mirrors.folder(sid)
     write_files(path, files)
     return path
+
+
+_mirrors = None                 # on a Dask worker: the sessions' folders (sessions.Folders)
+_mirrors_lock = threading.Lock()
 
 
 def _load(dask_scheduler=None) -> tuple[int, int]:
@@ -144,12 +152,10 @@ class Remote:
 
     @property
     def waiting(self) -> int:
-        """Tasks of the cluster waiting for a thread (0 when it cannot be read)."""
-        try:
-            threads, tasks = self.load()
-        except W.NotReady:
-            return 0
-        return max(0, tasks - threads)
+        """Compiles waiting for a thread of the cluster, from the last reading of its load
+        (no call to the scheduler: this is asked on the server's event loop)."""
+        _, threads, tasks = self.probed
+        return max(0, max(tasks, self.inflight) - threads) if threads else 0
 
     def ready(self) -> tuple[bool, str]:
         """Whether the cluster takes compiles: ``(ok, why not)``."""

@@ -176,26 +176,29 @@ class RedisFolders(Folders):
         path = super().folder(sid, create)
         if not create:
             return path
-        want = self._manifest(sid)
-        try:
-            with open(os.path.join(path, _MANIFEST)) as f:
-                have = json.load(f)
-        except (OSError, ValueError):
-            have = {}
-        if want != have or sorted(want) != sorted(
-                n for n in os.listdir(path) if not n.startswith(".")):
+        for _ in range(3):              # again when an upload changed it between two calls
+            want = self._manifest(sid)
+            try:
+                with open(os.path.join(path, _MANIFEST)) as f:
+                    have = json.load(f)
+            except (OSError, ValueError):
+                have = {}
+            if want == have and sorted(want) == sorted(
+                    n for n in os.listdir(path) if not n.startswith(".")):
+                return path
             stale = [n for n in want if have.get(n) != want[n]
                      or not os.path.isfile(os.path.join(path, n))]
-            data = dict(zip(stale, self._call(self.redis.hmget, self._keys(sid)[1], stale))) \
-                if stale else {}
-            if any(v is None for v in data.values()):       # changed between the two calls
-                return self.folder(sid, create)
+            got = self._call(self.redis.hmget, self._keys(sid)[1], stale) if stale else []
+            data = dict(zip(stale, got))
+            if any(v is None or digest(v) != want[n] for n, v in data.items()):
+                continue
             write_files(path, data, keep={n: want[n] for n in want if n not in data})
             tmp = os.path.join(path, f".{secrets.token_hex(6)}")
             with open(tmp, "w") as f:
                 json.dump(want, f)
             os.replace(tmp, os.path.join(path, _MANIFEST))
-        return path
+            return path
+        raise StoreDown("the session's files keep changing; try again in a few seconds")
 
     def files(self, sid: str) -> list[dict]:
         super().folder(sid, create=False)           # the id's check
