@@ -35,14 +35,6 @@ needs_redis = pytest.mark.skipif(redis_server_path() is None,
                                  reason="needs Debian's redis-server (apt-get install redis-server)")
 
 
-@pytest.fixture(scope="module")
-def redis_url():
-    if redis_server_path() is None:
-        pytest.skip("needs Debian's redis-server (apt-get install redis-server)")
-    with redis_server() as (url, _proc):
-        yield url
-
-
 def metrics(c) -> dict:
     """``{(name, labels as a sorted tuple): value}`` of a /metrics answer."""
     r = c.get("/metrics")
@@ -55,12 +47,19 @@ def metrics(c) -> dict:
 
 
 @needs_redis
-def test_two_studios_share_uploads_limits_and_rate_in_one_redis(redis_url, tmp_path):
-    a_app = create_app(Settings(data=str(tmp_path / "a"), compilers=1, store=redis_url,
-                                rate="1000/minute"))
-    b_app = create_app(Settings(data=str(tmp_path / "b"), compilers=1, store=redis_url,
-                                rate="1000/minute"))
-    with TestClient(a_app) as a, TestClient(b_app) as b:
+def test_two_studios_share_one_redis_and_report_health_and_metrics(tmp_path):
+    with redis_server() as (url, redis_proc):
+        _two_studios_one_redis(url, redis_proc, tmp_path)
+
+
+def _two_studios_one_redis(url, redis_proc, tmp_path):
+    apps = [create_app(Settings(data=str(tmp_path / n), compilers=1, store=url,
+                                rate="1000/minute")) for n in "ab"]
+    with TestClient(apps[0]) as a, TestClient(apps[1]) as b:
+        assert b.get("/healthz?probe=live").json() == {"live": True}
+        first = b.get("/healthz")          # no compile worker yet: this probe starts one
+        assert first.status_code == 503 and first.json()["checks"] == {
+            "store": "ok", "compilers": "starting"}
         sid = a.post("/api/session").json()["sid"]
         assert a.post(f"/api/upload?sid={sid}&name=board.dxf", content=BOARD).status_code == 200
         # the other process sees it, and its compile reads it from its own mirror
@@ -68,6 +67,12 @@ def test_two_studios_share_uploads_limits_and_rate_in_one_redis(redis_url, tmp_p
             "files": [{"name": "board.dxf", "bytes": len(BOARD)}]}
         mirror = tmp_path / "b" / sid / "board.dxf"
         assert not mirror.exists()
+        deadline = time.monotonic() + 60
+        while (h := b.get("/healthz")).status_code != 200:
+            assert time.monotonic() < deadline, h.json()
+            time.sleep(0.1)
+        assert h.json() == {"live": True, "ready": True,
+                            "checks": {"store": "ok", "compilers": "ok"}}
         v = b.post("/api/view", json={"sid": sid, "source": USES_BOARD, "values": {}}).json()
         assert v["ok"], v
         assert mirror.read_bytes() == BOARD
@@ -86,81 +91,78 @@ def test_two_studios_share_uploads_limits_and_rate_in_one_redis(redis_url, tmp_p
         assert not mirror.exists()
         a.post("/api/close", json={"sid": sid})
         assert b.get(f"/api/files?sid={sid}").json() == {"files": []}
+        # what b's /metrics says of the two compiles
+        m = metrics(b)
+        view = ("aidl_studio_requests_total", (("method", "POST"), ("route", "/api/view"),
+                                               ("status", "200")))
+        assert m[view] == 2
+        assert m[("aidl_studio_request_seconds_count", (("route", "/api/view"),))] == 2
+        assert m[("aidl_studio_compile_seconds_count", (("kind", "view"),))] == 2
+        assert m[("aidl_studio_compile_seconds_sum", (("kind", "view"),))] > 0
+        assert m[("aidl_studio_queue_length", ())] == 0
+        assert m[("aidl_studio_worker_restarts_total", ())] == 0
+        assert m[("aidl_studio_worker_resident_bytes", (("worker", "0"),))] > 20e6
+        assert m[("process_resident_memory_bytes", ())] > 20e6
 
-    # one rate for both: 5 a minute, 3 through one process and 2 through the other
-    url1 = redis_url.rsplit("/", 1)[0] + "/1"
-    apps = [create_app(Settings(data=str(tmp_path / n), compilers=1, store=url1,
-                                rate="5/minute")) for n in "cd"]
-    with TestClient(apps[0]) as c, TestClient(apps[1]) as d:
-        codes = [x.get("/api/docs?name=Circle").status_code for x in (c, d, c, d, c)]
-        assert codes == [200] * 5
-        r = d.get("/api/docs?name=Circle")
-        assert r.status_code == 429 and int(r.headers["Retry-After"]) >= 1
-        m = metrics(d)
-        assert m[("aidl_studio_rate_limited_total", ())] == 1
-        assert m[("aidl_studio_requests_total", (("method", "GET"), ("route", "/api/docs"),
-                                                 ("status", "429")))] == 1
-        assert m[("aidl_studio_requests_total", (("method", "GET"), ("route", "/api/docs"),
-                                                 ("status", "200")))] == 2
+        # one rate for both: 5 a minute, 3 through one process and 2 through the other
+        url1 = url.rsplit("/", 1)[0] + "/1"
+        apps = [create_app(Settings(data=str(tmp_path / n), compilers=1, store=url1,
+                                    rate="5/minute")) for n in "cd"]
+        with TestClient(apps[0]) as c, TestClient(apps[1]) as d:
+            codes = [x.get("/api/docs?name=Circle").status_code for x in (c, d, c, d, c)]
+            assert codes == [200] * 5
+            r = d.get("/api/docs?name=Circle")
+            assert r.status_code == 429 and int(r.headers["Retry-After"]) >= 1
+            m = metrics(d)
+            assert m[("aidl_studio_rate_limited_total", ())] == 1
+            for status, n in (("429", 1), ("200", 2)):
+                assert m[("aidl_studio_requests_total", (
+                    ("method", "GET"), ("route", "/api/docs"), ("status", status)))] == n
+
+        # Redis gone: not ready, and a request is a 503 to retry, not a traceback
+        redis_proc.kill()
+        redis_proc.wait()
+        h = b.get("/healthz")
+        assert h.status_code == 503 and h.json()["checks"]["compilers"] == "ok"
+        assert "Redis" in h.json()["checks"]["store"]
+        t0 = time.monotonic()
+        r = b.post("/api/view", json={"sid": sid, "source": BRACKET})
+        assert r.status_code == 503 and r.headers["Retry-After"] == "5"
+        assert "try again" in r.json()["error"] and time.monotonic() - t0 < 10
 
 
-@needs_redis
-def test_healthz_and_metrics_follow_the_compilers_and_the_store(tmp_path):
-    with redis_server() as (url, proc):
-        app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, store=url))
-        with TestClient(app) as c:
-            assert c.get("/healthz?probe=live").json() == {"live": True}
-            first = c.get("/healthz")          # no compile worker yet: it starts one
-            assert first.status_code == 503 and first.json()["checks"] == {
-                "store": "ok", "compilers": "starting"}
-            deadline = time.monotonic() + 60
-            while (h := c.get("/healthz")).status_code != 200:
-                assert time.monotonic() < deadline, h.json()
-                time.sleep(0.1)
-            assert h.json() == {"live": True, "ready": True,
-                                "checks": {"store": "ok", "compilers": "ok"}}
-            sid = c.post("/api/session").json()["sid"]
-            for _ in range(2):
-                assert c.post("/api/view", json={"sid": sid, "source": BRACKET}).status_code == 200
-            m = metrics(c)
-            view = ("aidl_studio_requests_total", (("method", "POST"), ("route", "/api/view"),
-                                                   ("status", "200")))
-            assert m[view] == 2
-            assert m[("aidl_studio_request_seconds_count", (("route", "/api/view"),))] == 2
-            assert m[("aidl_studio_compile_seconds_count", (("kind", "view"),))] == 2
-            assert m[("aidl_studio_compile_seconds_sum", (("kind", "view"),))] > 0
-            assert m[("aidl_studio_queue_length", ())] == 0
-            assert m[("aidl_studio_worker_restarts_total", ())] == 0
-            assert m[("aidl_studio_worker_resident_bytes", (("worker", "0"),))] > 20e6
-            assert m[("process_resident_memory_bytes", ())] > 20e6
-            # Redis gone: not ready, and a request is a 503 to retry, not a traceback
-            proc.kill()
-            proc.wait()
-            h = c.get("/healthz")
-            assert h.status_code == 503 and h.json()["checks"]["compilers"] == "ok"
-            assert "Redis" in h.json()["checks"]["store"]
-            t0 = time.monotonic()
-            r = c.post("/api/view", json={"sid": sid, "source": BRACKET})
-            assert r.status_code == 503 and r.headers["Retry-After"] == "5"
-            assert "try again" in r.json()["error"] and time.monotonic() - t0 < 10
+@pytest.fixture(scope="module")
+def cluster():
+    """A Dask cluster of one single-threaded worker process (its compile process is warm
+    after the first test that compiles on it)."""
+    distributed = pytest.importorskip("distributed")
+    import logging
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                                  dashboard_address="127.0.0.1:0",
+                                  silence_logs=logging.ERROR) as c:
+        yield c.scheduler_address
 
 
 @needs_redis
 @pytest.mark.skipif(nginx_path() is None, reason="needs Debian's nginx (apt-get install nginx)")
-def test_two_studio_processes_behind_nginx_one_killed_no_design_lost():
+def test_two_studio_processes_behind_nginx_one_redis_one_dask_one_killed(cluster):
+    """The deployment of docs/studio.md: nginx, two studio processes (the image's entry
+    script) sharing one Redis and compiling on one Dask cluster; one process is killed and
+    every later request is answered, the upload still there."""
     ports = [free_port(), free_port()]
     with redis_server() as (url, _redis), \
             studio_processes(ports, {"AIDL_STUDIO_STORE": url,
-                                     "AIDL_STUDIO_COMPILERS": "1"}) as (one, _two), \
+                                     "AIDL_STUDIO_SCHEDULER": cluster}) as (one, _two), \
             nginx(free_port(), ports) as front:
         direct = [f"http://127.0.0.1:{p}/" for p in ports]
         status, doc = post(front + "api/session")
         assert status == 200
         sid = doc["sid"]
-        # uploaded to one process, compiled by the other
+        # uploaded to one process, compiled for the other (on the cluster, the file sent along)
         assert post(direct[0] + f"api/upload?sid={sid}&name=board.dxf", data=BOARD)[0] == 200
         status, v = post(direct[1] + "api/view", {"sid": sid, "source": USES_BOARD})
         assert status == 200 and v["ok"], v
+        assert "aidl-studio" not in str(v)                  # no server's folder in the answer
         assert get(front + "metrics")[0] == 404             # the proxy hides it
         # through nginx, round robin over both; then one process is killed
         for _ in range(2):
@@ -175,57 +177,43 @@ def test_two_studio_processes_behind_nginx_one_killed_no_design_lost():
             b'{"files":[{"name":"board.dxf","bytes":%d}]}' % len(BOARD))
 
 
-def test_compiles_on_a_dask_cluster_with_the_same_limits(tmp_path):
-    distributed = pytest.importorskip("distributed")
-    import logging
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
-                                  dashboard_address="127.0.0.1:0",
-                                  silence_logs=logging.ERROR) as cluster:
-        address = cluster.scheduler_address
-        with TestClient(create_app(Settings(data=str(tmp_path / "d"), scheduler=address))) as c:
-            h = c.get("/healthz").json()
-            assert h["checks"]["compilers"] == "ok", h
-            sid = c.post("/api/session").json()["sid"]
-            assert c.post(f"/api/upload?sid={sid}&name=board.dxf", content=BOARD).status_code == 200
-            v = c.post("/api/view", json={"sid": sid, "source": USES_BOARD}).json()
-            assert v.get("ok"), v                            # the upload went with the task
-            assert str(tmp_path) not in str(v) and "aidl-studio-dask" not in str(v)
-            assert c.post("/api/view", json={"sid": sid, "source": BRACKET}).json()["ok"]
-        # the Dask worker's compile process is warm now; here a compile may run 0.1 x 15 s
-        # = 1.5 s (SLOW takes ~9 s), and one may wait
-        app = create_app(Settings(data=str(tmp_path / "e"), scheduler=address, wall_factor=0.1,
-                                  wait=0.5, queue=1))
-        with TestClient(app) as c:
-            sid = c.post("/api/session").json()["sid"]
-            answers = {}
+def test_compiles_on_dask_keep_the_wall_limit_and_refuse_when_full(cluster, tmp_path):
+    # a compile may run 0.1 x 15 s = 1.5 s here (SLOW takes ~9 s), and one may wait
+    app = create_app(Settings(data=str(tmp_path / "e"), scheduler=cluster, wall_factor=0.1,
+                              wait=0.5, queue=1))
+    with TestClient(app) as c:
+        assert c.get("/healthz").json()["checks"]["compilers"] == "ok"
+        sid = c.post("/api/session").json()["sid"]
+        assert c.post("/api/view", json={"sid": sid, "source": BRACKET}).json()["ok"]  # warm
+        answers = {}
 
-            def ask(name, source):
-                t0 = time.monotonic()
-                answers[name] = (c.post("/api/view", json={"sid": sid, "source": source}),
-                                 time.monotonic() - t0)
-            # one compile runs past its time, one waits for the cluster's only thread, a
-            # third finds the queue full
-            runs = [threading.Thread(target=ask, args=("slow", SLOW)),
-                    threading.Thread(target=ask, args=("waits", BRACKET))]
-            for t in runs:
-                t.start()
-                time.sleep(0.15)
-            ask("refused", BRACKET)
-            for t in runs:
-                t.join(60)
-            r, took = answers["refused"]
-            assert r.status_code == 503 and r.headers["Retry-After"] == "5" and took < 1.0
-            r, took = answers["waits"]      # compiled once the slow one was stopped, or given
-            assert took < 0.5 + 1.5 + 1.5   # up past wait + wall: never a hang
-            assert (r.status_code, r.json().get("ok")) == (200, True) or \
-                (r.status_code == 503 and "busy" in r.json()["error"])
-            waited_out = r.status_code == 503
-            r, _ = answers["slow"]
-            assert "longer than 1.5 s" in r.json()["error"]  # the wall limit, on the cluster
-            m = metrics(c)
-            assert m[("aidl_studio_busy_total", ())] == 1 + waited_out
-            assert m[("aidl_studio_compile_timeouts_total", ())] == 1
-            assert m[("aidl_studio_worker_restarts_total", ())] == 1
+        def ask(name, source):
+            t0 = time.monotonic()
+            answers[name] = (c.post("/api/view", json={"sid": sid, "source": source}),
+                             time.monotonic() - t0)
+        # one compile runs past its time, one waits for the cluster's only thread, a third
+        # finds the queue full
+        runs = [threading.Thread(target=ask, args=("slow", SLOW)),
+                threading.Thread(target=ask, args=("waits", BRACKET))]
+        for t in runs:
+            t.start()
+            time.sleep(0.15)
+        ask("refused", BRACKET)
+        for t in runs:
+            t.join(60)
+        r, took = answers["refused"]
+        assert r.status_code == 503 and r.headers["Retry-After"] == "5" and took < 1.0
+        r, took = answers["waits"]          # compiled once the slow one was stopped, or given
+        assert took < 0.5 + 1.5 + 1.5       # up past wait + wall: never a hang
+        assert (r.status_code, r.json().get("ok")) == (200, True) or \
+            (r.status_code == 503 and "busy" in r.json()["error"])
+        waited_out = r.status_code == 503
+        r, _ = answers["slow"]
+        assert "longer than 1.5 s" in r.json()["error"]      # the wall limit, on the cluster
+        m = metrics(c)
+        assert m[("aidl_studio_busy_total", ())] == 1 + waited_out
+        assert m[("aidl_studio_compile_timeouts_total", ())] == 1
+        assert m[("aidl_studio_worker_restarts_total", ())] == 1
 
 
 def test_the_containerfile_copies_what_exists_runs_as_a_user_on_one_port():
@@ -254,15 +242,18 @@ def test_the_containerfile_copies_what_exists_runs_as_a_user_on_one_port():
 @pytest.mark.parametrize("env, message", [
     ({"PORT": "80a"}, "PORT must be a port number, got '80a'"),
     ({"PORT": "8780", "AIDL_STUDIO_COMPILERS": "two"},
-     "AIDL_STUDIO_COMPILERS must be a number, got 'two'"),
-    ({"PORT": "0", "AIDL_STUDIO_STORE": "redis://127.0.0.1:1/0"},
-     "cannot reach the store at redis://127.0.0.1:1/0: ")])
+     "AIDL_STUDIO_COMPILERS must be a number, got 'two'")])
 def test_the_entry_script_refuses_a_bad_setting_in_one_line(env, message):
     import subprocess
-    import sys
-    path = os.pathsep.join((str(Path(sys.executable).parent), "/usr/bin", "/bin"))
     r = subprocess.run(["/bin/sh", str(ROOT / "deploy" / "studio" / "entrypoint.sh")],
-                       env={"PATH": path, **env}, capture_output=True, text=True, timeout=60)
-    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr
-    assert r.stderr.startswith(("aidl-studio: " if "STORE" not in str(env) else "aidl: error: ")
-                               + message), r.stderr
+                       env={"PATH": "/usr/bin:/bin", **env}, capture_output=True, text=True,
+                       timeout=10)
+    assert r.returncode == 2 and r.stderr.strip() == f"aidl-studio: {message}"
+
+
+def test_a_store_that_does_not_answer_stops_the_start_with_one_line(capsys):
+    from aidl_lang.studio import studio
+    assert studio(port=0, store="redis://127.0.0.1:1/0") == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("aidl: error: cannot reach the store at redis://127.0.0.1:1/0: ")
+    assert err.endswith("; start Redis or correct --store") and len(err.splitlines()) == 1
