@@ -194,9 +194,11 @@ class Remote:
                                  f"{e}") from None
             except W.WorkerError:
                 raise
-            except Exception as e:  # noqa: BLE001 - KilledWorker, a task lost twice
-                self.restarts += 1
-                raise W.Died(f"the cluster lost the compile: {type(e).__name__}") from None
+            except Exception as e:  # noqa: BLE001 - KilledWorker, a cancelled or lost task
+                # not the program's doing (it runs in a process of its own there): a 503 to
+                # try again, not "out of memory"
+                raise W.NotReady(f"the compile cluster ({self.address}) lost the compile "
+                                 f"({type(e).__name__})") from None
         finally:
             with self.lock:
                 self.inflight -= 1
