@@ -55,9 +55,8 @@ def run_remote(request: tuple, files: dict, budget: float, seconds: float,
     w = pool.get((budget, memory))
     if w is None:
         w = pool[(budget, memory)] = W.Worker(handler, (budget,), memory)
-    kind = request[0]
-    if kind in ("view", "download"):
-        at = 2 if kind == "view" else 1
+    at = folder_at(request)
+    if at is not None:
         folder = _mirror(os.path.basename(str(request[at])), files)
         request = request[:at] + (folder,) + request[at + 1:]
     try:
@@ -71,6 +70,14 @@ def run_remote(request: tuple, files: dict, budget: float, seconds: float,
     if isinstance(answer, dict) and answer.pop("retire", False):
         w.retiring = True
     return ("ok", answer)
+
+
+def folder_at(request: tuple) -> int | None:
+    """Where a :mod:`.compiler` request holds its session's folder: item 1 of a
+    ``download``, item 2 of the others that have one (``view``, ...), none in a ``thumb``."""
+    if request[0] == "thumb" or len(request) <= 2:
+        return None
+    return 1 if request[0] == "download" else 2
 
 
 def _mirror(sid: str, files: dict) -> str:
@@ -175,9 +182,9 @@ class Remote:
         if max(tasks, self.inflight) >= threads + self.queue:
             raise W.Busy(f"every compiler of the cluster is busy ({tasks} compiles)")
         files = {}
-        if request[0] in ("view", "download"):
-            folder = request[2 if request[0] == "view" else 1]
-            files = read_files(folder) if os.path.isdir(folder) else {}
+        at = folder_at(request)
+        if at is not None and os.path.isdir(str(request[at])):
+            files = read_files(request[at])
         with self.lock:
             self.inflight += 1
         fut = None
