@@ -17,8 +17,10 @@ rate-limit counters (issue 62; docs/studio.md, "More machines").
 The limits (:data:`~.sessions.MAX_UPLOAD`, :data:`~.sessions.MAX_FILES`,
 :data:`~.sessions.MAX_TOTAL`) are checked in Redis in one Lua script, so two processes
 uploading to one session at once cannot pass them together.  Every Redis call has a 2 s
-socket timeout: a store that does not answer is :class:`StoreDown` (the studio answers
-``503`` with ``Retry-After``), never a hung request.
+answer timeout (0.5 s to connect): a store that does not answer is :class:`StoreDown` (the
+studio answers ``503`` with ``Retry-After``), never a hung request.  The calls are
+synchronous (well under a millisecond on a LAN), made on the server's event loop like the
+local folders' file calls.
 
 Errors: :class:`~.sessions.Refused` (the visitor's mistake), :class:`StoreDown`.
 """
@@ -34,7 +36,8 @@ from urllib.parse import urlsplit
 from .sessions import IDLE_SECONDS, MAX_FILES, MAX_TOTAL, MAX_UPLOAD, Folders, Refused, upload_name
 
 MIRROR_IDLE = 600               # s: a process's copy of a session idle this long is removed
-TIMEOUT = 2.0                   # s: every Redis connect and answer
+TIMEOUT = 2.0                   # s: every Redis answer
+CONNECT_TIMEOUT = 0.5           # s: a connection to Redis (a LAN's take well under 1 ms)
 SCHEMES = ("redis", "rediss", "unix")
 _MANIFEST = ".manifest.json"    # a mirror's digests (a dot file: not an upload, not listed)
 
@@ -136,7 +139,7 @@ class RedisFolders(Folders):
         super().__init__(base)
         self.url = check_url(url)
         self.redis = redis.Redis.from_url(url, socket_timeout=TIMEOUT,
-                                          socket_connect_timeout=TIMEOUT)
+                                          socket_connect_timeout=CONNECT_TIMEOUT)
         self._upload = self.redis.register_script(_UPLOAD)
 
     def _keys(self, sid: str) -> tuple[str, str]:
@@ -159,7 +162,7 @@ class RedisFolders(Folders):
         """``limits``' Redis storage on the same server (the rate-limit counters)."""
         from limits.storage import storage_from_string
         return storage_from_string(self.url, socket_timeout=TIMEOUT,
-                                   socket_connect_timeout=TIMEOUT)
+                                   socket_connect_timeout=CONNECT_TIMEOUT)
 
     def _manifest(self, sid: str) -> dict[str, str]:
         m, d = self._keys(sid)
