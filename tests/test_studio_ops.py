@@ -132,15 +132,21 @@ def _two_studios_one_redis(url, redis_proc, tmp_path):
 
 
 @pytest.fixture(scope="module")
-def cluster():
+def cluster(tmp_path_factory):
     """A Dask cluster of one single-threaded worker process (its compile process is warm
-    after the first test that compiles on it)."""
+    after the first test that compiles on it; its sessions' folders in a temporary folder)."""
     distributed = pytest.importorskip("distributed")
     import logging
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
-                                  dashboard_address="127.0.0.1:0",
-                                  silence_logs=logging.ERROR) as c:
-        yield c.scheduler_address
+    mp = pytest.MonkeyPatch()
+    mp.setenv("TMPDIR", str(tmp_path_factory.mktemp("dask")))    # read by the new worker
+    try:
+        with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                                      dashboard_address="127.0.0.1:0",
+                                      silence_logs=logging.ERROR) as c:
+            mp.undo()
+            yield c.scheduler_address
+    finally:
+        mp.undo()
 
 
 @needs_redis
