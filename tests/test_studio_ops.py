@@ -208,7 +208,7 @@ def test_compiles_on_dask_keep_the_wall_limit_and_refuse_when_full(cluster, tmp_
         for t in runs:
             t.join(60)
         r, took = answers["refused"]
-        assert r.status_code == 503 and r.headers["Retry-After"] == "5" and took < 1.0
+        assert r.status_code == 503 and r.headers["Retry-After"] == "5" and took < 1.5  # at once
         r, took = answers["waits"]          # compiled once the slow one was stopped, or given
         assert took < 0.5 + 1.5 + 1.5       # up past wait + wall: never a hang
         assert (r.status_code, r.json().get("ok")) == (200, True) or \
