@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import functools
 import os
-from .records import Compared
 from collections import namedtuple
 from collections.abc import Iterable
 from pathlib import Path
+
+from .records import Compared
 
 # the bundled standard library (``import "std/NAME.aidl"``): beside the package in a source
 # checkout, inside it in an installed wheel (aidl_lang.sources reads it from here)

@@ -10,10 +10,10 @@ import math
 import threading
 import time
 import warnings
-from .records import Compared
 
 import numpy as np
 
+from .records import Compared
 from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_path
 from .interp import Interpreter
 from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,

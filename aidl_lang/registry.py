@@ -12,6 +12,7 @@ Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string
 from __future__ import annotations
 
 import math
+
 from .records import Frozen, Record
 
 REQUIRED = object()

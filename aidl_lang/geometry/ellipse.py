@@ -18,9 +18,10 @@ from __future__ import annotations
 
 import cmath
 import math
-from ..records import Frozen
 
 import numpy as np
+
+from ..records import Frozen
 
 Point = tuple[float, float]
 

@@ -7,10 +7,9 @@ structure has a translation frame (two parameters) relative to its parent; the r
 """
 from __future__ import annotations
 
-from ..records import Record
-
 import numpy as np
 
+from ..records import Record
 from ..diagnostics import Span
 from .expr import Expr, Lin, _new, var
 

@@ -18,11 +18,11 @@ that close on no area.
 from __future__ import annotations
 
 import math
-from ..records import Compared
 
 import manifold3d as mf
 import numpy as np
 
+from ..records import Compared
 from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
                                simplify)
 from ..geometry.ellipse import ellipse

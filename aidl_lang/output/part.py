@@ -18,10 +18,10 @@ millimetres, angles in radians, y up.
 from __future__ import annotations
 
 import math
-from ..records import Compared
 
 import numpy as np
 
+from ..records import Compared
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
 from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
 from .booleans import Drawing

@@ -16,10 +16,9 @@ conflict sets found, with their structure and source span.
 """
 from __future__ import annotations
 
-from ..records import Compared
-
 import numpy as np
 
+from ..records import Compared
 from ..geometry.model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
 from .holds import build_rows

@@ -22,10 +22,9 @@ on its own (``tests/test_solver_batch.py``).  Only dense-sized blocks are batche
 """
 from __future__ import annotations
 
-from ..records import Record
-
 import numpy as np
 
+from ..records import Record
 from .arrays import unique
 from .tape import Tape
 

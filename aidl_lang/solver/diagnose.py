@@ -25,10 +25,10 @@ check does not pay SciPy's import.
 from __future__ import annotations
 
 import time
-from ..records import Compared
 
 import numpy as np
 
+from ..records import Compared
 from .arrays import unique
 
 from ..geometry.model import Constraint

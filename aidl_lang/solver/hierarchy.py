@@ -24,10 +24,10 @@ of a held value (:meth:`Solver.set_value`) only reruns Newton.
 from __future__ import annotations
 
 import time
-from ..records import Compared, Record
 
 import numpy as np
 
+from ..records import Compared, Record
 from .arrays import unique
 
 from ..geometry.model import Model, Structure

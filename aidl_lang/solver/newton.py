@@ -16,10 +16,9 @@ from __future__ import annotations
 
 import math
 
-from ..records import Record
-
 import numpy as np
 
+from ..records import Record
 from .tape import Tape
 
 TOL = 1e-10

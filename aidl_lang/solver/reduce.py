@@ -15,10 +15,9 @@ minimum-norm step meaningful: a class of ``k`` unknowns weighs like its members 
 """
 from __future__ import annotations
 
-from ..records import Compared
-
 import numpy as np
 
+from ..records import Compared
 from .tape import Tape
 
 

@@ -15,11 +15,11 @@ Parameters: the model's ``x`` (``n_model`` entries) followed by one slack per in
 """
 from __future__ import annotations
 
-from ..records import Compared, Record
 from itertools import chain
 
 import numpy as np
 
+from ..records import Compared, Record
 from ..memory import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
 from ..geometry.expr import Lin, add, func, mul, var

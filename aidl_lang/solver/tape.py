@@ -24,11 +24,11 @@ stays valid when a held dimension is edited: re-solving after an edit only rerun
 """
 from __future__ import annotations
 
-from ..records import Record
 from itertools import chain
 
 import numpy as np
 
+from ..records import Record
 from ..memory import gc_paused
 from .arrays import unique
 

@@ -5,10 +5,9 @@ live preview when param values are overridden; :func:`topology` is taken once fo
 defaults)."""
 from __future__ import annotations
 
-from ...records import Compared
-
 import numpy as np
 
+from ...records import Compared
 from ...diagnostics import DiagnosticSink
 from ..booleans import Drawing
 from ..nearby import box_pairs

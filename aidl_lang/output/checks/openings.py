@@ -24,11 +24,11 @@ merge or reach the outline."""
 from __future__ import annotations
 
 import math
-from ...records import Compared
 
 import manifold3d as mf
 import numpy as np
 
+from ...records import Compared
 from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
