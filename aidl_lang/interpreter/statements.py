@@ -680,7 +680,7 @@ class Statements:
                 c._src = self.sink.sources.get(span.file, "")
         else:
             c._text = text
-        c.implicit = False
+        c.implicit = c.hold = c.released = False
         s.constraints.append(c)
         self.model.constraints.append(c)
 
