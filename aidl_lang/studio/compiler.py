@@ -14,6 +14,10 @@ Requests (tuples, the first item names the kind):
   uploads) and the standard library (:mod:`aidl_lang.sources`, the import sandbox).
 * ``("download", folder, source, values, fmt, settings)``: ``(bytes, file name, media type)``
   or ``{"error": message, "diagnostics": [...]}``; ``settings`` as :func:`download` takes.
+* ``("glb", sid, folder, source, values, settings)``: the 3D view's GLB
+  (:func:`aidl_lang.output.writers.glb.to_view_glb`: fewer triangles, shared meshes) as
+  ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
+  ``view`` of this program and these values drew (no second compile), else compiled.
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
 
 Answers are dicts or tuples; a mistake in the program is a diagnostic, a bug an ``E0900``,
@@ -68,6 +72,11 @@ def handler(budget: float = 1.0):
     """The worker's request handler (run once in the new process); ``budget``: the factor of
     the default evaluation budget every compile gets (``aidl studio --budget``)."""
     from ..limits import DEFAULT_BUDGET
+    # trimesh (1.5 s to import on a busy machine) and Manifold now, in the new process, not
+    # on its first 3D view
+    from ..output.writers.mesh import _trimesh
+    _trimesh().exchange.gltf  # noqa: B018
+    import manifold3d  # noqa: F401
     sessions: OrderedDict = OrderedDict()
     scaled = DEFAULT_BUDGET.scaled(budget)
 
@@ -79,6 +88,8 @@ def handler(budget: float = 1.0):
                 answer = view(sessions, *request[1:], budget=scaled)
             elif kind == "download":
                 answer = download(*request[1:], budget=scaled)
+            elif kind == "glb":
+                answer = view_glb(sessions, *request[1:], budget=scaled)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
             else:
@@ -91,8 +102,8 @@ def handler(budget: float = 1.0):
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
-        if kind in ("view", "download") and len(request) > 2:
-            answer = hide_paths(answer, request[2] if kind == "view" else request[1])
+        if kind in ("view", "download", "glb") and len(request) > 2:
+            answer = hide_paths(answer, request[1] if kind == "download" else request[2])
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
@@ -105,7 +116,7 @@ def out_of_memory_answer(request) -> dict:
     worker retired (a fresh process gives the memory back)."""
     from ..pipeline import out_of_memory_sink
     kind = request[0]
-    folder, source = (request[2], request[3]) if kind == "view" else (request[1], request[2])
+    folder, source = (request[1], request[2]) if kind == "download" else (request[2], request[3])
     path = os.path.join(folder, "main.aidl")
     sink = out_of_memory_sink(path, source if isinstance(source, str) else None)
     diags = [{k: d.to_json(sink.sources)[k] for k in
@@ -145,6 +156,42 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
+
+
+def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
+             settings: dict, budget=None):
+    """The 3D view of ``source`` with ``values``: ``(GLB bytes, "view.glb", media type)`` or
+    ``{"error": message}``.  ``settings``: ``thickness`` (mm, 0.1-100; empty: the parts' own).
+    Made from the drawing session ``sid``'s last view drew when it drew this program with
+    these values (the page asks for the 3D right after its picture: no second compile), else
+    from a fresh compile (another worker drew the picture)."""
+    from ..output.part import OutputError
+    from ..output.writers.glb import to_view_glb
+    values = {str(k): str(v) for k, v in (values or {}).items()}
+    try:
+        thickness = _number(settings if isinstance(settings, dict) else {}, "thickness",
+                            0.1, 100.0)
+    except ValueError as e:
+        return {"error": str(e)}
+    s = sessions.get(sid)
+    shown = getattr(s, "shown", None) if s is not None else None
+    if s is not None and shown is not None and s.source == source and s.ok \
+            and s.svg_values == values and shown[1] is not None:
+        output = shown[1]
+    else:
+        from .. import api
+        res = api.compile(source=source, path=os.path.join(folder, "main.aidl"),
+                          overrides=values, budget=budget)
+        if not res.ok:
+            return {"error": "the program does not compile with these values"}
+        try:
+            output = res.output
+        except OutputError as e:
+            return {"error": str(e)}
+    try:
+        return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
+    except (OutputError, ValueError) as e:
+        return {"error": str(e)}
 
 
 def _listing(folder: str) -> tuple:

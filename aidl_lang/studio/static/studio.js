@@ -11,7 +11,8 @@ const state = {
   config: null, svgUrl: null, view: null,
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [] };
+window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [],
+                  shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
 
 // ------------------------------------------------------------------ requests
 async function post(path, body, raw = false) {
@@ -110,9 +111,22 @@ function show(view, ms) {
     $("flat-img").removeAttribute("src");
   }
   showDiagnostics(diags, view.error);
-  if (view.params) showParams(view.params);
+  if (view.params) showParams(view.params, view.clamped);
   window.studio.views += 1;
-  if (view.ok) load3d();
+  window.studio.shownAt[window.studio.views] = performance.now();
+  if (view.ok) { building(true); load3d(); }
+  else if ($("viewer3d").classList.contains("building")) $("building3d").textContent = "the 3D waits for a program that checks";
+}
+
+// the 3D pane says "building…" from the moment its model is not the picture's (a new design:
+// the old model is taken away; a changed one: dimmed) until the picture's own model is there
+function building(on, fresh = false) {
+  const pane = $("viewer3d");
+  pane.classList.toggle("building", on);
+  $("building3d").hidden = !on;
+  $("building3d").textContent = "building…";
+  if (fresh && window.aidl3d) window.aidl3d.clear();
+  pane.classList.toggle("empty", fresh || (pane.classList.contains("empty") && on));
 }
 
 function showDiagnostics(diags, error) {
@@ -218,19 +232,39 @@ async function fetchFile(ext, extra = {}) {
 }
 
 async function load3d() {
+  // the 3D view's GLB (/api/glb: made from the drawing the picture came from, fewer triangles
+  // than the download); a newer picture's request makes this one's answer stale: dropped
   const seq = ++state.glbSeq;
   const shown = window.studio.views;
+  const reframe = state.reframe;
   try {
-    const { blob } = await fetchFile("glb", { assembled: true, layout: false });
+    const r = await post("/api/glb", { sid: state.sid, source: state.source, values: chosen(),
+                                       settings: { thickness: settings().thickness } }, true);
+    if (!r.ok) {
+      const why = (await r.json().catch(() => ({}))).error || `HTTP ${r.status}`;
+      if (r.status === 422 && seq === state.glbSeq) {      // nothing to show: say why, show nothing
+        building(true, true);
+        $("building3d").textContent = why;
+        window.studio.glbView = shown;
+      }
+      throw new Error(why);
+    }
+    const blob = await r.blob();
     if (seq !== state.glbSeq || !window.aidl3d) return;
     const url = URL.createObjectURL(blob);
-    await window.aidl3d.load(url, { reframe: state.reframe });
-    state.reframe = false;
+    const before = window.aidl3d.loaded;
+    await window.aidl3d.load(url, { reframe });
     URL.revokeObjectURL(url);
+    if (seq !== state.glbSeq || window.aidl3d.loaded === before) return;
+    if (reframe) state.reframe = false;
     window.studio.glbs += 1;
     window.studio.glbView = shown;          // the view whose 3D is on the screen
+    window.studio.builtAt[shown] = performance.now();
+    building(false);
+    $("viewer3d").classList.remove("empty");
   } catch (e) {
     window.studio.errors.push("3D: " + (e.message || e));
+    if (e.retry && seq === state.glbSeq) setTimeout(() => { if (seq === state.glbSeq) load3d(); }, e.retry * 1000);
   }
 }
 
@@ -269,7 +303,7 @@ async function download(f) {
     $("download-status").textContent = `${f.ext.toUpperCase()}: ${e.message || e}`;
   }
 }
-$("thickness").addEventListener("change", () => load3d());     // the 3D panels' thickness
+$("thickness").addEventListener("change", () => { building(true); load3d(); });     // the 3D panels' thickness
 
 // ------------------------------------------------------------------ the gallery
 async function openGallery() {
@@ -312,6 +346,8 @@ function setProgram(source, values) {
   state.paramKey = "";
   state.lastSvg = null;
   state.reframe = true;
+  state.glbSeq += 1;                        // a 3D still on its way is the old design's
+  building(true, true);
   if (editor) editor.setText(source);
   schedule(0);
 }
