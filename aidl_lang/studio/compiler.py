@@ -33,6 +33,7 @@ from collections import OrderedDict
 from ..workers import rss
 
 MAX_SESSIONS = 24               # warm sessions one worker keeps
+MAX_CLAMPS = 4                  # compiles that move values back into dependent ranges
 RETIRE_RSS = 900 << 20          # bytes: a worker past this answers, then is replaced
 MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
@@ -152,7 +153,16 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         doc = s.update_checks() or doc
     else:
         doc = s.view()
+    clamped: dict = {}
+    if not doc.get("ok"):
+        settled, clamped = settle(s.set_params, s.values, doc)
+        if clamped:
+            doc = s.update_checks() or settled
+        elif settled is not doc:
+            s.set_params(values)        # no better: the visitor's values, and their error
     doc = dict(doc)
+    if clamped:
+        doc["clamped"] = clamped
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
@@ -192,6 +202,55 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
         return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
     except (OutputError, ValueError) as e:
         return {"error": str(e)}
+
+
+def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:
+    """Compile again, at most :data:`MAX_CLAMPS` times, with the values of the failed
+    ``doc`` (``run(values)``'s answer: ``ok``, ``params`` as the view's JSON rows) that left
+    a range depending on other params moved back into it (:func:`into_range`).  Returns
+    ``(answer, {name: number moved to})``: the first answer that compiles and what was
+    moved, or the last answer tried and ``{}`` when none compiles."""
+    clamped: dict = {}
+    values = dict(values)
+    for _ in range(MAX_CLAMPS):
+        # values out of their ranges first; then those between their sliders' steps too (a
+        # step that depends on other params: the planetary's sun steps by its planets)
+        fixed = into_range(doc.get("params") or []) or \
+            into_range(doc.get("params") or [], grid=True)
+        if not fixed:
+            break
+        values.update({k: t for k, (t, _) in fixed.items()})
+        clamped.update({k: x for k, (_, x) in fixed.items()})
+        doc = run(dict(values))
+        if doc.get("ok"):
+            return doc, clamped
+    return doc, {}
+
+
+def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, float]]:
+    """The values of a failed compile's ``params`` (the view's JSON rows) that left their
+    declared range moved into it, onto its slider's steps (``grid``: also the values inside
+    it that lie between steps): ``{name: (--set text, number)}`` (display units).  A range may depend on other params (``param depth = 70 mm,
+    min = rows * (hole + 4 mm)``, docs/language.md): moving ``rows`` moves it, and the form's
+    ``depth`` follows instead of the compile failing (docs/studio.md, "Forms")."""
+    out = {}
+    for p in params:
+        lo, hi, step, v = p.get("min"), p.get("max"), p.get("step"), p.get("value")
+        if p.get("kind") not in ("length", "angle", "number") or not p.get("declared") \
+                or not isinstance(v, (int, float)) or lo is None or hi is None or lo > hi:
+            continue
+        if not grid and lo - 1e-9 <= v <= hi + 1e-9:
+            continue
+        w = min(max(v, lo), hi)
+        if step and step > 0:           # onto the slider's grid, inside the range
+            w = lo + round((w - lo) / step) * step
+            if w > hi + 1e-9:
+                w -= step
+            w = max(w, lo)
+        w = round(w, 9)
+        if abs(w - v) > 1e-9 * max(1.0, abs(v)):
+            out[p["name"]] = (f"{w:.12g} {p.get('unit') or ''}".strip(), w)
+    return out
 
 
 def _listing(folder: str) -> tuple:

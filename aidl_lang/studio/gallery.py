@@ -277,6 +277,62 @@ def assert_bounds(template) -> dict[str, tuple[float | None, float | None]]:
     return {k: (v[0], v[1]) for k, v in out.items()}
 
 
+def assert_relations(template) -> dict[str, dict[str, list[tuple[str, bool]]]]:
+    """How a generator's top-level ``assert``\\ s tie one argument to others
+    (``assert length > width / 2``, ``radius <= min(width, length) / 2``): ``{name: {"min":
+    [(expression text, strict)], "max": [...]}}``, the expression as written in the
+    generator's file, over its other arguments only (no locals, no calls but ``min``,
+    ``max``, ``abs``, ``sqrt``).  :func:`synthesize` and :func:`lift_params` make them the
+    params' ``min=``/``max=`` (a range that follows the other params), declared after the
+    params they use."""
+    from ..sources import STDLIB
+    try:
+        text = (Path(STDLIB) / f"{template.module}.aidl").read_text(encoding="utf-8")
+    except OSError:
+        return {}
+    names = {p.name for p in template.node.params}
+    calls = {"min", "max", "abs", "sqrt"}
+    out: dict[str, dict[str, list]] = {}
+
+    def comparisons(e):
+        if isinstance(e, A.BoolOp) and e.op == "and":
+            yield from comparisons(e.left)
+            yield from comparisons(e.right)
+        elif isinstance(e, A.Compare) and len(e.ops) == 1:
+            yield e
+
+    def over_arguments(e, own: str) -> bool:
+        used = False
+        for n in A.walk(e):
+            if isinstance(n, A.Call):
+                if not (isinstance(n.func, A.Name) and n.func.id in calls):
+                    return False
+            elif isinstance(n, A.Name):
+                if n.id == own or (n.id not in names and n.id not in calls):
+                    return False
+                used = used or n.id in names
+            elif not isinstance(n, (A.Num, A.BinOp, A.Neg, A.Ternary, A.Compare, A.BoolOp,
+                                    A.Keyword)):
+                return False
+        return used
+
+    flip = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
+    for st in template.node.body.stmts:
+        if not isinstance(st, A.Assert):
+            continue
+        for c in comparisons(st.expr):
+            a, b, op = c.operands[0], c.operands[1], c.ops[0]
+            if isinstance(b, A.Name) and b.id in names and not isinstance(a, A.Name):
+                a, b, op = b, a, flip.get(op, op)
+            if not (isinstance(a, A.Name) and a.id in names and op in flip
+                    and over_arguments(b, a.id)):
+                continue
+            side = "min" if op in (">", ">=") else "max"
+            out.setdefault(a.id, {"min": [], "max": []})[side].append(
+                (text[b.span.start:b.span.end], op in ("<", ">")))
+    return out
+
+
 def slider_range(name: str, kind: str, value: float,
                  bounds: tuple[float | None, float | None] = (None, None)
                  ) -> tuple[float, float, float]:
@@ -340,16 +396,59 @@ def _num(v: float) -> str:
 _UNIT = {"length": "mm", "angle": "deg"}
 
 
-def _param_decl(name: str, kind: str, text: str, value, bounds=(None, None)) -> str:
+def _param_decl(name: str, kind: str, text: str, value, bounds=(None, None),
+                relations=None) -> str:
     """``param NAME = TEXT, min=.., max=.., step=..`` (the range for lengths, angles and
     numbers; ``value``: the default's number in display units; ``bounds``: as for
-    :func:`slider_range`)."""
+    :func:`slider_range`; ``relations``: ``{"min": [(text, strict)], "max": [...]}`` of
+    :func:`assert_relations`, each a bound over other params that the range follows,
+    ``min=max(20 mm, width / 2 + 0.2 mm)``, a strict one a step inside)."""
     if kind not in ("length", "angle", "number") or value is None:
         return f"param {name} = {text}"
     lo, hi, step = slider_range(name, kind, value, bounds)
     u = f" {_UNIT[kind]}" if kind in _UNIT else ""
-    return (f"param {name} = {text}, min={_num(lo)}{u}, max={_num(hi)}{u}, "
-            f"step={_num(step)}{u}")
+    lo_t, hi_t = f"{_num(lo)}{u}", f"{_num(hi)}{u}"
+    rel = relations or {}
+    if rel.get("min"):
+        terms = [f"{t} + {_num(step)}{u}" if strict else t for t, strict in rel["min"]]
+        lo_t = f"max({', '.join([lo_t] + terms)})"
+    if rel.get("max"):
+        terms = [f"{t} - {_num(step)}{u}" if strict else t for t, strict in rel["max"]]
+        hi_t = f"min({', '.join([hi_t] + terms)})"
+    return f"param {name} = {text}, min={lo_t}, max={hi_t}, step={_num(step)}{u}"
+
+
+def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
+    """The ``(name, declaration, names it uses)`` in their order, each after the params its
+    range uses (a param's range may use only those declared before it)."""
+    done: set = set()
+    out, rest = [], list(decls)
+    known = {n for n, _, _ in decls}
+    while rest:
+        for i, (n, d, uses) in enumerate(rest):
+            if not (uses & known) - done:
+                out.append(d)
+                done.add(n)
+                del rest[i]
+                break
+        else:                           # a cycle: as written
+            out += [d for _, d, _ in rest]
+            break
+    return out
+
+
+def _relations_for(name: str, relations: dict, params: set) -> tuple[dict, set]:
+    """``relations[name]`` without the bounds that use a name that is not a param here,
+    and the params they use."""
+    got, uses = {"min": [], "max": []}, set()
+    for side in ("min", "max"):
+        for t, strict in relations.get(name, {}).get(side, []):
+            used = set(re.findall(r"[A-Za-z_]\w*", t)) - {"min", "max", "abs", "sqrt", "mm",
+                                                           "deg", "cm", "m", "in", "rad"}
+            if used <= params:
+                got[side].append((t, strict))
+                uses |= used
+    return got, uses
 
 
 def _literal(node) -> tuple[str, float | None] | None:
@@ -577,7 +676,8 @@ def lift_params(source: str, path: str, template) -> str | None:
     if call.args:
         return None
     decls, args, lifted = [], [], {}
-    bounds = assert_bounds(template)
+    bounds, relations = assert_bounds(template), assert_relations(template)
+    found = []
     for p in template.node.params:
         kw = given.get(p.name)
         node = kw.value if kw is not None else p.default
@@ -589,9 +689,15 @@ def lift_params(source: str, path: str, template) -> str | None:
         kind, value = lit
         text = source[node.span.start:node.span.end] if kw is not None else \
             _default_source(node)
-        decls.append(_param_decl(p.name, kind, text, value, bounds.get(p.name, (None, None))))
+        found.append((p.name, kind, text, value))
         args.append(f"{p.name}={p.name}")
         lifted[p.name] = value
+    params = {f[0] for f in found}
+    for name, kind, text, value in found:
+        rel, uses = _relations_for(name, relations, params)
+        decls.append((name, _param_decl(name, kind, text, value, bounds.get(name, (None, None)),
+                                        rel), uses))
+    decls = _in_dependency_order(decls)
     edits = [(call.span.start, call.span.end, _call_text(template.name, args, call.span.col - 1))]
     # the material thickness of the 3D view follows a lifted `thickness` of the same value
     for st in prog.stmts:
@@ -684,7 +790,7 @@ def synthesize(t) -> str:
     lines.append(f"# (the studio's program for `{t.name}` of std/{t.module}.aidl: its arguments "
                  "are the params)")
     lines += ["units mm", f'import "std/{t.module}.aidl"', ""]
-    args, bounds = [], assert_bounds(t)
+    args, bounds, relations, found = [], assert_bounds(t), assert_relations(t), []
     for p in t.node.params:
         if p.default is None or p.name in PLACEMENT_ARGS:
             continue
@@ -692,9 +798,14 @@ def synthesize(t) -> str:
         if lit is None:
             continue
         kind, value = lit
-        lines.append(_param_decl(p.name, kind, _default_source(p.default), value,
-                                 bounds.get(p.name, (None, None))))
+        found.append((p.name, kind, _default_source(p.default), value))
         args.append(f"{p.name}={p.name}")
+    params, decls = {f[0] for f in found}, []
+    for name, kind, text, value in found:
+        rel, uses = _relations_for(name, relations, params)
+        decls.append((name, _param_decl(name, kind, text, value, bounds.get(name, (None, None)),
+                                        rel), uses))
+    lines += _in_dependency_order(decls)
     if any(a.startswith("thickness=") for a in args):
         lines += ["", "thickness thickness"]
     lines += ["", f"{t.node.kind} {t.name} {{",

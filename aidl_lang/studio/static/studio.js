@@ -157,9 +157,12 @@ function showDiagnostics(diags, error) {
 }
 
 // ------------------------------------------------------------------ the customizer
-function showParams(params) {
-  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.min, p.max, p.step, p.default]));
+function showParams(params, clamped) {
+  // the form is built again only for other params; a range that follows other params (its
+  // min or max depends on them) is updated in place, so a slider being dragged stays in hand
+  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default]));
   state.params = params;
+  for (const [name, v] of Object.entries(clamped || {})) state.values[name] = v;   // moved into its range by the server
   const form = $("params");
   if (key !== state.paramKey) {
     state.paramKey = key;
@@ -211,8 +214,16 @@ function setControl(row, p, v) {
   const inputs = row.querySelectorAll("input");
   if (p.kind === "bool") inputs[0].checked = !!v;
   else if (p.kind === "string") inputs[0].value = v;
-  else if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
-    inputs[0].value = v; inputs[1].value = v;
+  else {
+    if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max) || String(inputs[0].step) !== String(p.step)) {
+      Object.assign(inputs[0], { min: p.min, max: p.max, step: p.step });
+      inputs[1].step = p.step;
+      const u = row.querySelector(".unit");
+      if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+    }
+    if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
+      inputs[0].value = v; inputs[1].value = v;
+    }
   }
 }
 
