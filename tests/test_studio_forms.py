@@ -120,3 +120,17 @@ def test_the_gallery_derives_a_range_from_an_assert_over_arguments():
     assert src.index("param width") < src.index("param length")
     rel = gallery.assert_relations(gallery.renderable_generators()["rounded_tab"])
     assert rel == {"length": {"min": [("width / 2", True)], "max": []}}
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in gallery.FORMS.glob("*.aidl")))
+def test_a_form_draws_what_its_example_draws(name, tmp_path):
+    """A form (aidl_lang/studio/forms/) is its examples/generators file with params: at its
+    defaults, the same parts of the same outlines."""
+    from aidl_lang import api
+    from aidl_lang.sources import EXAMPLES
+    e = gallery.entry(f"generator/{name}")
+    assert e.source == (gallery.FORMS / f"{name}.aidl").read_text()
+    mine = api.compile(source=e.source, path=str(tmp_path / "main.aidl"))
+    file = api.compile(path=str(EXAMPLES / "generators" / f"{name}.aidl"))
+    assert mine.ok and file.ok
+    assert mine.to_svg(kerf=0) == file.to_svg(kerf=0)

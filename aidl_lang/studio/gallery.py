@@ -20,6 +20,10 @@ touched):
 * ``import "parts/x.aidl"`` (a file beside the example) is replaced by that file's text;
 * ``Drawing2D("parts/x.svg")`` reads the byte-identical sample that ships with the standard
   library, ``std/drawings/x.svg``;
+* an ``examples/generators`` file with a form of the same name in ``studio/forms/`` is
+  shown as that form: the same call, its arguments as params whose ranges depend on each
+  other (the planetary's ring is sun + 2 x planet; a tool holder is as deep as its rows of
+  holes need), written by hand where the generator's checks tie several arguments together;
 * an ``examples/generators`` file that declares no ``param`` and calls one stdlib generator
   has that call's literal arguments lifted into ``param`` declarations (the example's values
   as defaults, the generator's own defaults for the arguments it leaves out), so its form has
@@ -49,6 +53,11 @@ from .. import ast as A
 from ..sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
 
 KINDS = ("example", "generator")
+# the gallery's own programs of some examples/generators files (same name): their arguments
+# as params whose ranges follow each other (``min = rows * (hole + 4 mm) + ...``), where the
+# generator's checks tie several arguments together and a lifted form would offer values
+# that fail
+FORMS = Path(__file__).resolve().parent / "forms"
 RENDERABLE = ("solid", "assembly", "drawing")
 
 # the tag of a generator's stdlib module
@@ -766,7 +775,10 @@ def _generator_example_entry(p: Path) -> Entry:
     raw, src = _own_source(p)
     gens = renderable_generators()
     t = stdlib_templates().get(p.stem)
-    if t is not None:
+    form = FORMS / p.name
+    if form.is_file():              # a form that states how the arguments depend on each other
+        src = form.read_text(encoding="utf-8")
+    elif t is not None:
         try:
             src = lift_params(src, str(p), t) or src
         except ValueError:

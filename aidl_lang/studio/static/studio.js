@@ -106,7 +106,7 @@ function show(view, ms) {
     state.lastSvg = view.svg;
     if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
     state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
-    $("flat-img").src = state.svgUrl;
+    $("flat-img").src = state.svgUrl;         // an <img>: the SVG runs no script, loads nothing
   } else if (!view.svg && !state.lastSvg) {
     $("flat-img").removeAttribute("src");
   }
@@ -155,6 +155,81 @@ function showDiagnostics(diags, error) {
                    to_col: d.span.end_column, severity: d.severity === "note" ? "info" : d.severity,
                    message: d.message + (d.hint ? "\nhelp: " + d.hint : ""), code: d.code })));
 }
+
+// ------------------------------------------------------------------ the flat view: zoom and pan
+// The picture stays an <img> of the SVG (inert); zooming sets its layout size (the browser draws
+// the SVG again at that size: sharp at any zoom) and panning its place in the pane. Wheel: zoom
+// about the mouse; drag: pan; two fingers: pinch-zoom about their middle and pan; Fit (or a
+// double-click): the whole picture. The view stays through slider moves, fits a new design.
+const flat = { s: 1, x: 0, y: 0, fitW: 0, fitH: 0, pointers: new Map(), pinch: null };
+window.studio.flat = flat;
+const FLAT_MIN = 0.2, FLAT_MAX = 400;
+
+function flatFit() { flat.s = 1; flat.x = 0; flat.y = 0; flatLayout(); }
+function flatLayout() {
+  const pane = $("flat"), img = $("flat-img");
+  const pw = pane.clientWidth, ph = pane.clientHeight;
+  const nw = img.naturalWidth || 1, nh = img.naturalHeight || 1;
+  const k = Math.min(pw * 0.96 / nw, ph * 0.96 / nh);
+  flat.fitW = nw * k; flat.fitH = nh * k;
+  const w = flat.fitW * flat.s, h = flat.fitH * flat.s;
+  img.style.width = `${w}px`; img.style.height = `${h}px`;
+  img.style.left = `${(pw - w) / 2 + flat.x}px`; img.style.top = `${(ph - h) / 2 + flat.y}px`;
+}
+function flatZoom(f, cx, cy) {        // by f about the pane point (cx, cy)
+  const pane = $("flat");
+  const s = Math.min(FLAT_MAX, Math.max(FLAT_MIN, flat.s * f));
+  const g = s / flat.s;
+  const ox = cx - pane.clientWidth / 2, oy = cy - pane.clientHeight / 2;
+  flat.x = ox - (ox - flat.x) * g; flat.y = oy - (oy - flat.y) * g;
+  flat.s = s;
+  flatLayout();
+}
+function panePoint(e) { const r = $("flat").getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; }
+$("flat").addEventListener("wheel", (e) => {
+  e.preventDefault();
+  const unit = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1;
+  flatZoom(Math.exp(-e.deltaY * unit * 0.0015), ...panePoint(e));
+}, { passive: false });
+$("flat").addEventListener("pointerdown", (e) => {
+  if (e.target.closest(".pane-tools") || (e.pointerType === "mouse" && e.button !== 0)) return;
+  try { $("flat").setPointerCapture(e.pointerId); } catch (_) { /* a synthetic pointer */ }
+  flat.pointers.set(e.pointerId, panePoint(e));
+  flat.pinch = null;
+  $("flat").classList.add("dragging");
+});
+$("flat").addEventListener("pointermove", (e) => {
+  const last = flat.pointers.get(e.pointerId);
+  if (!last) return;
+  const now = panePoint(e);
+  if (flat.pointers.size >= 2) {              // pinch: the two first fingers
+    flat.pointers.set(e.pointerId, now);
+    const [a, b] = [...flat.pointers.values()];
+    const d = Math.hypot(a[0] - b[0], a[1] - b[1]), m = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+    if (flat.pinch && flat.pinch.d > 0) {
+      flat.x += m[0] - flat.pinch.m[0]; flat.y += m[1] - flat.pinch.m[1];
+      flatZoom(d / flat.pinch.d, m[0], m[1]);
+    }
+    flat.pinch = { d, m };
+    return;
+  }
+  flat.x += now[0] - last[0]; flat.y += now[1] - last[1];
+  flat.pointers.set(e.pointerId, now);
+  flatLayout();
+});
+function flatUp(e) {
+  flat.pointers.delete(e.pointerId);
+  flat.pinch = null;
+  if (!flat.pointers.size) $("flat").classList.remove("dragging");
+}
+$("flat").addEventListener("pointerup", flatUp);
+$("flat").addEventListener("pointercancel", flatUp);
+$("flat").addEventListener("dblclick", (e) => { if (!e.target.closest(".pane-tools")) flatFit(); });
+$("flat-fit").onclick = flatFit;
+$("flat-zoom-in").onclick = () => flatZoom(1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
+$("flat-zoom-out").onclick = () => flatZoom(1 / 1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
+$("flat-img").addEventListener("load", () => { if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout(); });
+new ResizeObserver(() => flatLayout()).observe($("flat"));
 
 // ------------------------------------------------------------------ the customizer
 function showParams(params, clamped) {
@@ -358,6 +433,7 @@ function setProgram(source, values) {
   state.lastSvg = null;
   state.reframe = true;
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
+  state.fitNext = true;                     // the flat view shows all of the new design
   building(true, true);
   if (editor) editor.setText(source);
   schedule(0);
