@@ -230,9 +230,10 @@ def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:
 def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, float]]:
     """The values of a failed compile's ``params`` (the view's JSON rows) that left their
     declared range moved into it, onto its slider's steps (``grid``: also the values inside
-    it that lie between steps): ``{name: (--set text, number)}`` (display units).  A range may depend on other params (``param depth = 70 mm,
-    min = rows * (hole + 4 mm)``, docs/language.md): moving ``rows`` moves it, and the form's
-    ``depth`` follows instead of the compile failing (docs/studio.md, "Forms")."""
+    it that lie between steps): ``{name: (--set text, number)}`` (display units).  A range
+    may depend on other params (``param depth = 70 mm, min = rows * (hole + 4 mm)``,
+    docs/language.md): moving ``rows`` moves it, and the form's ``depth`` follows instead of
+    the compile failing (docs/studio.md, "Forms that cannot fail")."""
     out = {}
     for p in params:
         lo, hi, step, v = p.get("min"), p.get("max"), p.get("step"), p.get("value")
