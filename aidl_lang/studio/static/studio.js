@@ -115,7 +115,10 @@ function show(view, ms) {
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
   if (view.ok) { building(true); load3d(); }
-  else if ($("viewer3d").classList.contains("building")) $("building3d").textContent = "the 3D waits for a program that checks";
+  else if ($("viewer3d").classList.contains("building")) {
+    $("building3d").textContent = "the 3D waits for a program that checks";
+    $("building3d").hidden = false;
+  }
 }
 
 // the 3D pane says "building…" from the moment its model is not the picture's (a new design:
@@ -123,10 +126,15 @@ function show(view, ms) {
 function building(on, fresh = false) {
   const pane = $("viewer3d");
   pane.classList.toggle("building", on);
-  $("building3d").hidden = !on;
-  $("building3d").textContent = "building…";
   if (fresh && window.aidl3d) window.aidl3d.clear();
-  pane.classList.toggle("empty", fresh || (pane.classList.contains("empty") && on));
+  const empty = fresh || (pane.classList.contains("empty") && on);
+  pane.classList.toggle("empty", empty);
+  // an empty pane (a new design) says so at once; a slider move dims the model at once and
+  // says so when its new model takes longer than a blink (no flicker on every move)
+  clearTimeout(state.buildingTimer);
+  $("building3d").hidden = !(on && empty);
+  if (on && !empty) state.buildingTimer = setTimeout(() => { $("building3d").hidden = false; }, 250);
+  $("building3d").textContent = "building…";
 }
 
 function showDiagnostics(diags, error) {
