@@ -134,3 +134,12 @@ def test_a_form_draws_what_its_example_draws(name, tmp_path):
     file = api.compile(path=str(EXAMPLES / "generators" / f"{name}.aidl"))
     assert mine.ok and file.ok
     assert mine.to_svg(kerf=0) == file.to_svg(kerf=0)
+
+
+def test_a_session_new_to_a_worker_draws_the_page_s_values(tmp_path):
+    """The tab's compile may land on a worker that has no session for it yet (the other one
+    drew its last picture): the page's values are drawn, not the program's defaults."""
+    e = gallery.entry("generator/tool_holder")
+    view = compiler.view(OrderedDict(), "new", str(tmp_path), e.source, {"rows": "3"})
+    assert view["ok"] and view["values"] == {"rows": "3"}
+    assert next(p for p in view["params"] if p["name"] == "rows")["value"] == 3

@@ -148,6 +148,11 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         s.files = files
         s.values = values
         doc = s.load(source)
+        if values and doc.get("ok") and s.values != values:
+            # a session new to this worker (the tab's other worker drew the last picture, or
+            # this one dropped it) keeps no values through load: the page's values apply
+            doc = s.set_params(values)
+            doc = s.update_checks() or doc
     elif values != s.values:
         doc = s.set_params(values)
         doc = s.update_checks() or doc
