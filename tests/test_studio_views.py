@@ -185,3 +185,12 @@ def test_the_3d_keeps_up_and_the_flat_view_zooms_and_pans():
         assert not page.is_visible("#building3d")
         assert sorted(page.evaluate("window.aidl3d.parts")) == sorted(tray)
         assert page.evaluate("window.staleFrames") == 0 and page.evaluate("window.framesWatched") > 10
+
+        # a program with an error: the last good model stays dimmed, and the pane says why
+        n = page.evaluate("window.studio.views")
+        page.evaluate("""() => { const v = window.studio.editor.view;
+            const at = v.state.doc.toString().indexOf('divider_tray(');
+            v.dispatch({changes: {from: at, to: at + 'divider_tray'.length, insert: 'divider_trey'}}); }""")
+        page.wait_for_function(f"() => window.studio.views > {n} && !window.studio.view.ok", timeout=60_000)
+        assert "building" in page.evaluate("document.getElementById('viewer3d').className")
+        assert page.inner_text("#building3d") == "the 3D waits for a program that checks"

@@ -115,7 +115,10 @@ function show(view, ms) {
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
   if (view.ok) { building(true); load3d(); }
-  else if ($("viewer3d").classList.contains("building")) {
+  else {          // the last good model, dimmed like the last good picture, and why
+    state.glbSeq += 1;
+    building(true);
+    clearTimeout(state.buildingTimer);
     $("building3d").textContent = "the 3D waits for a program that checks";
     $("building3d").hidden = false;
   }
