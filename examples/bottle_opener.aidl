@@ -6,7 +6,7 @@
 param length = 110 mm  # from the head's center to the end of the handle
 param head_d = 48 mm
 param handle_w = 26 mm
-param grips = 4, min = 1, max = 10, step = 1
+param grips = 4
 
 solid opener {
     solid head {

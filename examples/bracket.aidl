@@ -3,7 +3,7 @@
 # a ring of vent holes made by a circular pattern, and filleted corners.
 # Try: --set bolts=5  --set pitch=16  --set fillet=1
 
-param bolts = 4, min = 1, max = 10, step = 1
+param bolts = 4
 param pitch = 20 mm
 param fillet = 3 mm
 

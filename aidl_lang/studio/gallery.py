@@ -20,6 +20,8 @@ touched):
 * ``import "parts/x.aidl"`` (a file beside the example) is replaced by that file's text;
 * ``Drawing2D("parts/x.svg")`` reads the byte-identical sample that ships with the standard
   library, ``std/drawings/x.svg``;
+* a top-level ``param`` of an example that counts things (a whole number of at least 1,
+  no range declared) gets ``min = 1``: its slider does not offer 0 (:func:`counts_from_one`);
 * an ``examples/generators`` file with a form of the same name in ``studio/forms/`` is
   shown as that form: the same call, its arguments as params whose ranges depend on each
   other (the planetary's ring is sun + 2 x planet; a tool holder is as deep as its rows of
@@ -756,9 +758,28 @@ def _own_source(p: Path) -> tuple[str, str]:
         return raw, raw
 
 
+def counts_from_one(source: str, path: str = "main.aidl") -> str:
+    """``source`` with ``, min = 1`` after each top-level ``param`` whose value is a whole
+    number of at least 1 and that declares no range: a count (bolts, grips), whose slider
+    would otherwise start at 0 (:func:`aidl_lang.serve.params.default_span`), a value the
+    program was never written for (a LinearPattern of 0, a loop of no grips)."""
+    prog = _parse_or_none(source, path)
+    if prog is None:
+        return source
+    edits = []
+    for st in prog.stmts:
+        if isinstance(st, A.ParamDecl) and not st.options and isinstance(st.value, A.Num) \
+                and not st.value.unit and float(st.value.value).is_integer() \
+                and st.value.value >= 1:
+            edits.append((st.value.span.end, st.value.span.end, ", min = 1"))
+    return _replace(source, edits)
+
+
 def _example_entry(p: Path) -> Entry:
-    """``example/NAME`` of a top-level example file (its own params)."""
+    """``example/NAME`` of a top-level example file (its own params; counts from 1,
+    :func:`counts_from_one`)."""
     raw, src = _own_source(p)
+    src = counts_from_one(src, str(p))
     prog = _parse_or_none(src, str(p))
     gens = renderable_generators()
     shown = p.stem if p.stem in gens and prog and _calls(prog, {p.stem}) else ""
