@@ -2,6 +2,8 @@
 picture's own drawing), the 3D that keeps up with the 2D and never shows a stale design as
 the current one, and the flat view's zoom and pan, in Debian's Chromium driven by Playwright.
 
+The machine: 2 cores shared with five other sessions (load average 4-8); there the planetary
+set's 3D shows 74-99 ms after its 2D (1 s is the bound asserted; before this change, 2.9-4.1 s).
 Screenshots: out/studio-flat-zoomed.png, out/studio-3d-building.png.
 """
 from __future__ import annotations
