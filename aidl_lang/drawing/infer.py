@@ -1,0 +1,724 @@
+"""``aidl import --infer``: a drawing turned into the program a person would have written
+(issue 60; docs/import.md, "Inferring the design").
+
+Where :func:`~.program.to_program` writes every piece of the drawing as its own ``Line`` or
+``Arc``, :func:`to_program_inferred` writes, for each part (a DXF layer, or with ``--parts``
+each outer loop):
+
+* its outline as the primitive it is (:func:`~.infer_shapes.recognise`: ``RoundedRectangle``,
+  ``Slot``, ``RegularPolygon``, ...), or a recognised rectangle with *attachments* (a tab
+  standing out of one side: the pieces off the rectangle's side, closed inside it), else the
+  exact chain;
+* its openings as ``hole`` children named by what they are, repeated ones as loops:
+  four at the corners of a rectangular body (``corner_holes``, by the body's size and one
+  inset), a bolt circle (``bolt_circle``: equal circles evenly round a centre, its diameter a
+  ``param``), a bore (a circle on the bolt circle's or the body's centre), rows and grids
+  (``for`` over equal steps); equal sizes are one ``param``;
+* its engravings (open paths, text, engraved shapes) as one ``drawing``;
+* ``Fixed`` on every recognised shape, so ``aidl check --dof`` has nothing to report: each
+  shape is held where its expression puts it, and ``--set`` of a param moves and resizes
+  what is written with it.
+
+Parameters are named for the part (``plate_width``) when there are several parts, and
+written with the shortest decimal within :data:`~.infer_shapes.ROUND_TOL` (1e-9 mm) of the
+drawing's number; two sizes or steps are equal within :data:`~.infer_shapes.EQUAL_TOL`
+(1e-7 mm).  The notes say what was recognised (pieces -> shapes) and these tolerances.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+from ..geometry.curves import Arc, Circle, Line
+from .infer_shapes import EQUAL_TOL, ROUND_TOL, Shape, recognise, rrect_pieces
+from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
+from .read import Drawing, Note
+
+
+def _r(v: float) -> str:
+    """A parameter's value: the shortest decimal within ROUND_TOL."""
+    return _num(v, ROUND_TOL)
+
+
+def _deg(a: float) -> str:
+    return _num(math.degrees(a), 1e-10) + " deg"
+
+
+class _Params:
+    """The program's ``param`` lines, named once (``prefix`` the part's name when several)."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.used: set = set()
+
+    def add(self, name: str, value: float, comment: str = "", unit: str = "mm") -> str:
+        nm = _ident(name, self.used)
+        u = f" {unit}" if unit else ""
+        self.lines.append(f"param {nm} = {_r(value)}{u}" + (f"  # {comment}" if comment else ""))
+        return nm
+
+
+def _plus(base: float, term: str) -> str:
+    """``base + term`` as text (``term`` alone when base is 0)."""
+    if abs(base) <= ROUND_TOL:
+        return term
+    b = _r(base)
+    if term.startswith("-"):
+        return f"{b} - {term[1:]}"
+    return f"{b} + {term}"
+
+
+def _center(c) -> str:
+    return f"({_r(c[0])}, {_r(c[1])})"
+
+
+def _size_args(sh: Shape, sizes: dict | None = None) -> str:
+    """The keyword arguments of ``sh`` after its centre; ``sizes`` maps an argument to the
+    param written for it."""
+    sizes = sizes or {}
+    a = sh.args
+    out = []
+    if sh.kind == "Circle":
+        out.append(f"diameter={sizes['diameter']}" if "diameter" in sizes
+                   else f"radius={_r(a['radius'])}")
+    elif sh.kind == "Polygon":
+        return ""
+    else:
+        for k, v in a.items():
+            if k == "rotation":
+                if abs(v) > 1e-15:
+                    out.append(f"rotation={_deg(v)}")
+            elif k in ("start_angle", "end_angle"):
+                out.append(f"{k}={_deg(v)}")
+            elif k == "sides":
+                out.append(f"sides={v}")
+            elif k == "corner_radii":
+                out.append("corner_radii=[" + ", ".join(_r(x) for x in v) + "]")
+            else:
+                out.append(f"{k}={sizes.get(k, _r(v))}")
+    return ", ".join(out)
+
+
+def _ctor(sh: Shape, center: str, sizes: dict | None = None) -> str:
+    if sh.kind == "Polygon":
+        return "Polygon([" + ", ".join(_pt(p) for p in sh.args["points"]) + "])"
+    rest = _size_args(sh, sizes)
+    return f"{sh.kind}(center={center}" + (f", {rest}" if rest else "") + ")"
+
+
+_HOLE_NAMES = {"Circle": "hole", "Slot": "slot", "Rectangle": "window",
+               "RoundedRectangle": "window", "Polygon": "cutout", "Sector": "sector",
+               "Ellipse": "oval"}
+
+
+def _hole_name(sh: Shape) -> str:
+    if sh.kind == "RegularPolygon":
+        return "hex" if sh.args["sides"] == 6 else "polygon"
+    return _HOLE_NAMES.get(sh.kind, "cutout")
+
+
+# ------------------------------------------------------------------ patterns
+def _steps(vals: list) -> float | None:
+    """The common step of sorted ``vals`` (None when the steps differ)."""
+    d = [b - a for a, b in zip(vals, vals[1:])]
+    if not d or any(abs(x - d[0]) > EQUAL_TOL for x in d):
+        return None
+    return d[0]
+
+
+def _distinct(vals: list) -> list:
+    out: list = []
+    for v in sorted(vals):
+        if not out or v - out[-1] > EQUAL_TOL:
+            out.append(v)
+    return out
+
+
+def _polar(centers: list):
+    """``(centre, radius, first angle, n)`` when ``centers`` are evenly round a circle (a
+    whole turn), else None."""
+    n = len(centers)
+    if n < 3:
+        return None
+    cx = sum(p[0] for p in centers) / n
+    cy = sum(p[1] for p in centers) / n
+    rad = [math.dist((cx, cy), p) for p in centers]
+    R = sum(rad) / n
+    if R <= EQUAL_TOL or max(rad) - min(rad) > EQUAL_TOL:
+        return None
+    step = 2 * math.pi / n
+    angs = sorted(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers)
+    a0 = angs[0] % step
+    from .infer_shapes import _snap_angle
+    a0 = _snap_angle(a0, R)
+    want = sorted((a0 + k * step) % (2 * math.pi) for k in range(n))
+    got = list(centers)
+    for k in range(n):
+        a = a0 + k * step
+        q = (cx + R * math.cos(a), cy + R * math.sin(a))
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    del want
+    return (cx, cy), R, a0, n
+
+
+def _grid(centers: list):
+    """``(x0, y0, dx, dy, cols, rows)`` when ``centers`` are an axis-aligned lattice (a row,
+    a column or a grid, equal steps), else None."""
+    xs = _distinct([p[0] for p in centers])
+    ys = _distinct([p[1] for p in centers])
+    if len(xs) * len(ys) != len(centers):
+        return None
+    dx = _steps(xs) if len(xs) > 1 else 0.0
+    dy = _steps(ys) if len(ys) > 1 else 0.0
+    if dx is None or dy is None:
+        return None
+    for x in xs:
+        for y in ys:
+            if not any(abs(p[0] - x) <= EQUAL_TOL and abs(p[1] - y) <= EQUAL_TOL
+                       for p in centers):
+                return None
+    return xs[0], ys[0], dx, dy, len(xs), len(ys)
+
+
+def _line(centers: list):
+    """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
+    n = len(centers)
+    if n < 2:
+        return None
+    a, b = min(centers), max(centers)
+    d = ((b[0] - a[0]) / (n - 1), (b[1] - a[1]) / (n - 1))
+    got = list(centers)
+    for k in range(n):
+        q = (a[0] + k * d[0], a[1] + k * d[1])
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    return a, d, n
+
+
+# ------------------------------------------------------------------ attachments
+def _attachments(segs: list):
+    """A loop that is a rectangle (rounded or not) with tabs standing out of its sides:
+    ``(rectangle Shape, [closed chains])``, each chain the tab's pieces off the rectangle
+    closed by lines reaching into it; or None.  The rectangle is found from four equal
+    corner arcs (or, with none, the loop's longest lines), checked as every one of its own
+    pieces lying on the loop's pieces."""
+    arcs = [s for s in segs if isinstance(s, Arc)]
+    if not any(isinstance(s, Line) for s in segs):
+        return None
+    by_r: dict = {}
+    for a in arcs:
+        by_r.setdefault(round(a.radius, 6), []).append(a)
+    cands = []
+    for r, group in by_r.items():
+        if not 4 <= len(group) <= 8:     # four corners (and a tab's arcs of their radius)
+            continue
+        for i in range(len(group)):
+            for j in range(i + 1, len(group)):
+                # two opposite corners' centres give the rectangle (axis-aligned frame)
+                p, q = group[i].center, group[j].center
+                if abs(p[0] - q[0]) <= EQUAL_TOL or abs(p[1] - q[1]) <= EQUAL_TOL:
+                    continue
+                R = group[i].radius
+                cx, cy = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
+                w, h = abs(p[0] - q[0]) + 2 * R, abs(p[1] - q[1]) + 2 * R
+                cands.append(((cx, cy), w, h, R))
+    for center, w, h, R in sorted(cands, key=lambda c: -c[1] * c[2]):
+        got = _split_rect(segs, center, w, h, R)
+        if got is not None:
+            return got
+    return None
+
+
+def _on_piece(m, s) -> bool:
+    """Piece ``m`` of the rectangle lies on piece ``s`` of the loop, or ``s`` on ``m``
+    (a side of the rectangle interrupted by a tab is two shorter lines)."""
+    from .infer_shapes import _same
+    if isinstance(m, Arc) or isinstance(s, Arc):
+        return isinstance(m, Arc) and isinstance(s, Arc) and _same(m, s)
+    ux, uy = m.end[0] - m.start[0], m.end[1] - m.start[1]
+    L = math.hypot(ux, uy)
+    ux, uy = ux / L, uy / L
+    for p in (s.start, s.end):
+        vx, vy = p[0] - m.start[0], p[1] - m.start[1]
+        if abs(vx * uy - vy * ux) > EQUAL_TOL:
+            return False
+        t = vx * ux + vy * uy
+        if t < -EQUAL_TOL or t > L + EQUAL_TOL:
+            return False
+    return True
+
+
+def _split_rect(segs, center, w, h, R):
+    made = rrect_pieces(center, w, h, 0.0, [R] * 4)
+    # the rectangle's arcs must be the loop's; its lines covered (in part) by the loop's
+    rest = []
+    for s in segs:
+        if not any(_on_piece(m, s) for m in made):
+            rest.append(s)
+    if not rest or len(rest) == len(segs):
+        return None
+    for m in made:
+        if isinstance(m, Arc) and not any(isinstance(s, Arc) and _on_piece(m, s) for s in segs):
+            return None
+    # the pieces off the rectangle, in the loop's order, as runs between two side points
+    n = len(segs)
+    idx = [i for i, s in enumerate(segs) if s in rest]
+    runs: list[list] = []
+    start = next((i for i in range(n) if i in idx and (i - 1) % n not in idx), None)
+    if start is None:
+        return None
+    i = start
+    seen = 0
+    while seen < n:
+        if i in idx and (i - 1) % n not in idx:
+            run = []
+            while i in idx and len(run) < n:
+                run.append(segs[i])
+                i = (i + 1) % n
+                seen += 1
+            runs.append(run)
+        else:
+            i = (i + 1) % n
+            seen += 1
+    hw, hh = w / 2, h / 2
+    x0, x1, y0, y1 = center[0] - hw, center[0] + hw, center[1] - hh, center[1] + hh
+    depth = min(w, h) / 4
+    chains = []
+    for run in runs:
+        a, b = run[0].start, run[-1].end
+        # both ends on one straight side: the outward normal
+        side = None
+        for nrm, on in (((0, 1), lambda p: abs(p[1] - y1) <= EQUAL_TOL),
+                        ((0, -1), lambda p: abs(p[1] - y0) <= EQUAL_TOL),
+                        ((1, 0), lambda p: abs(p[0] - x1) <= EQUAL_TOL),
+                        ((-1, 0), lambda p: abs(p[0] - x0) <= EQUAL_TOL)):
+            if on(a) and on(b):
+                side = nrm
+        if side is None:
+            return None
+        # the run must stand out of the rectangle (its pieces' middles outside)
+        for s in run:
+            mid = s.at(s.start_angle + s.sweep / 2) if isinstance(s, Arc) else \
+                ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+            if x0 + EQUAL_TOL < mid[0] < x1 - EQUAL_TOL and y0 + EQUAL_TOL < mid[1] < y1 - EQUAL_TOL:
+                return None
+        # the ends within the side's straight part, clear of the corner arcs
+        along = 0 if side[1] else 1
+        lo = (x0 if along == 0 else y0) + R
+        hi = (x1 if along == 0 else y1) - R
+        if not all(lo - EQUAL_TOL <= p[along] <= hi + EQUAL_TOL for p in (a, b)):
+            return None
+        a2 = (a[0] - side[0] * depth, a[1] - side[1] * depth)
+        b2 = (b[0] - side[0] * depth, b[1] - side[1] * depth)
+        chain = list(run)
+        # close inside the rectangle: b -> b2 -> a2 -> a, merged with a collinear end line
+        tail = [Line(b, b2), Line(b2, a2), Line(a2, a)]
+        if isinstance(chain[-1], Line) and _collinear(chain[-1], tail[0]):
+            tail[0] = Line(chain[-1].start, b2)
+            chain.pop()
+        if isinstance(chain[0], Line) and _collinear(chain[0], tail[-1]) and chain:
+            tail[-1] = Line(a2, chain[0].end)
+            chain.pop(0)
+            chain = chain + tail[:-1]
+            chain = [tail[-1]] + chain
+        else:
+            chain = chain + tail
+        chains.append(chain)
+    if abs(R) <= EQUAL_TOL:
+        rect = Shape("Rectangle", center, {"width": w, "height": h}, ("Rectangle", w, h), 0)
+    else:
+        rect = Shape("RoundedRectangle", center, {"width": w, "height": h, "corner_radius": R},
+                     ("RoundedRectangle", w, h, R), 0)
+    rect.pieces = len(segs) - len(rest)
+    return rect, chains
+
+
+def _collinear(p: Line, q: Line) -> bool:
+    ux, uy = p.end[0] - p.start[0], p.end[1] - p.start[1]
+    vx, vy = q.end[0] - q.start[0], q.end[1] - q.start[1]
+    lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)
+    if lu <= EQUAL_TOL or lv <= EQUAL_TOL:
+        return False
+    return abs(ux * vy - uy * vx) / lu <= EQUAL_TOL and ux * vx + uy * vy > 0
+
+
+# ------------------------------------------------------------------ the writer
+class _Stats:
+    def __init__(self) -> None:
+        self.pieces = 0             # pieces of the drawing's outlines and holes
+        self.in_shapes = 0          # of them, in recognised shapes
+        self.kinds: Counter = Counter()
+        self.patterns: Counter = Counter()
+
+
+class _Part:
+    """One part's statements, written into ``w`` at ``depth``."""
+
+    def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
+        self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
+        self.used: set = set()
+
+    def p(self, name: str, value: float, comment: str = "", unit: str = "mm") -> str:
+        return self.params.add(self.prefix + name, value, comment, unit)
+
+    def name(self, base: str) -> str:
+        return _ident(base, self.used)
+
+    def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
+        self.w.emit(depth, f"{nm} = {_ctor(sh, center, sizes)}")
+
+    # the body ---------------------------------------------------------------
+    def body(self, depth: int, segs: list, first: bool) -> tuple | None:
+        """Write an outer loop; returns the body's (Shape, param names) when it is a
+        rectangle-like shape the holes may be placed by."""
+        st = self.stats
+        st.pieces += len(segs)
+        sh = recognise(segs)
+        tabs = None
+        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
+            got = _attachments(segs)
+            if got is not None:
+                sh, tabs = got
+        nm = self.name("body" if first else "outline")
+        if sh is None:
+            self.w.chain(depth, segs, True, nm + "_")
+            return None
+        st.kinds[sh.kind] += 1
+        st.in_shapes += sh.pieces
+        sizes: dict = {}
+        if first and sh.kind in ("Rectangle", "RoundedRectangle"):
+            sizes["width"] = self.p("width", sh.args["width"])
+            sizes["height"] = self.p("height", sh.args["height"])
+            if "corner_radius" in sh.args:
+                sizes["corner_radius"] = self.p("corner_radius", sh.args["corner_radius"])
+        elif first and sh.kind == "Circle":
+            sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
+        self.shape_line(depth, nm, sh, _center(sh.center), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
+        for chain in tabs or []:
+            st.in_shapes += 0
+            tn = self.name("tab")
+            t = recognise(chain)
+            if t is not None and t.kind != "Polygon":
+                st.kinds[t.kind] += 1
+                self.shape_line(depth, tn, t, _center(t.center))
+                self.w.emit(depth, f"Fixed({tn})")
+            elif t is not None:
+                self.shape_line(depth, tn, t, "")
+                self.w.emit(depth, f"Fixed({tn})")
+            else:
+                self.w.chain(depth, chain, True, tn + "_")
+            st.in_shapes += sum(1 for s in chain if any(s is x for x in segs))
+        if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
+                abs(sh.args.get("rotation", 0.0)) <= 1e-15:
+            return sh, sizes, nm
+        return None
+
+    # the holes --------------------------------------------------------------
+    def holes(self, depth: int, loops: list, body) -> None:
+        shapes = []
+        for segs in loops:
+            self.stats.pieces += len(segs)
+            sh = recognise(segs)
+            if sh is None:
+                hn = self.name("cutout")
+                self.w.emit(depth, f"hole {hn} {{")
+                self.w.chain(depth + 1, segs, True, "e")
+                self.w.emit(depth, "}")
+                continue
+            self.stats.kinds[sh.kind] += 1
+            self.stats.in_shapes += sh.pieces
+            shapes.append(sh)
+        groups: dict = {}
+        for sh in shapes:
+            key = (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
+                                     for x in sh.size)
+            groups.setdefault(key, []).append(sh)
+        singles = []
+        centres = []          # bolt circle centres, for naming a bore
+        for key, g in groups.items():
+            if len(g) == 1 or g[0].kind == "Polygon":
+                singles += g
+                continue
+            done = self.pattern(depth, g, body, centres)
+            if not done:
+                singles += g
+        for sh in singles:
+            self.single(depth, sh, body, centres)
+
+    def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
+                   loop: bool = False) -> None:
+        var = "h"
+        self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
+        self.w.emit(depth, f"Fixed({hn}.{var})")
+
+    def size_params(self, base: str, sh: Shape, many: bool) -> dict:
+        """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
+        if not many:
+            return {}
+        a = sh.args
+        if sh.kind == "Circle":
+            return {"diameter": self.p(base + "_d", 2 * a["radius"])}
+        if sh.kind == "Slot":
+            return {"length": self.p(base + "_length", a["length"]),
+                    "width": self.p(base + "_width", a["width"])}
+        if sh.kind in ("Rectangle", "RoundedRectangle"):
+            return {"width": self.p(base + "_width", a["width"]),
+                    "height": self.p(base + "_height", a["height"])}
+        if sh.kind == "RegularPolygon":
+            return {"radius": self.p(base + "_radius", a["radius"])}
+        return {}
+
+    def pattern(self, depth: int, g: list, body, centres: list) -> bool:
+        w = self.w
+        cs = [sh.center for sh in g]
+        sh = g[0]
+        base = _hole_name(sh)
+        # four at the corners of the body, centred on it
+        if len(g) == 4 and body is not None and body[0].kind != "Circle":
+            bsh, bsizes, bname = body
+            gr = _grid(cs)
+            if gr is not None and gr[4] == 2 and gr[5] == 2:
+                x0, y0, dx, dy = gr[:4]
+                mid = (x0 + dx / 2, y0 + dy / 2)
+                if math.dist(mid, bsh.center) <= EQUAL_TOL:
+                    W, H = bsh.args["width"], bsh.args["height"]
+                    ix, iy = (W - dx) / 2, (H - dy) / 2
+                    sizes = self.size_params("corner_" + base, sh, True)
+                    if abs(ix - iy) <= ROUND_TOL:
+                        inx = iny = self.p("corner_inset", ix, "from the edges")
+                    else:
+                        inx = self.p("corner_inset_x", ix, "from the left and right edges")
+                        iny = self.p("corner_inset_y", iy, "from the top and bottom edges")
+                    hn = self.name(f"corner_{base}s")
+                    wx, hy = bsizes.get("width"), bsizes.get("height")
+                    ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
+                    ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
+                    c = f"({_plus(mid[0], ex)}, {_plus(mid[1], ey)})"
+                    w.emit(depth, f"for sx in [-1, 1] {{")
+                    w.emit(depth + 1, f"for sy in [-1, 1] {{")
+                    self.hole_block(depth + 2, hn, sh, c, sizes)
+                    w.emit(depth + 1, "}")
+                    w.emit(depth, "}")
+                    self.stats.patterns["corner"] += 1
+                    return True
+        # a bolt circle: circles evenly round a centre
+        if sh.kind == "Circle":
+            pol = _polar(cs)
+            if pol is not None:
+                (cx, cy), R, a0, n = pol
+                hn = self.name("bolt_circle")
+                pcd = self.p(f"{hn}_d", 2 * R, "pitch circle diameter")
+                sizes = self.size_params(f"{hn}_hole", sh, True)
+                ang = f"{_deg(a0)} + i * {_num(360 / n, 1e-10)} deg" if abs(a0) > 1e-15 \
+                    else f"i * {_num(360 / n, 1e-10)} deg"
+                c = f"({_plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
+                    f"{_plus(cy, f'{pcd} / 2 * sin({ang})')})"
+                w.emit(depth, f"for i in range({n}) {{")
+                self.hole_block(depth + 1, hn, sh, c, sizes)
+                w.emit(depth, "}")
+                centres.append((cx, cy))
+                self.stats.patterns["bolt circle"] += 1
+                return True
+        # a row, a column or a grid
+        gr = _grid(cs)
+        if gr is not None:
+            x0, y0, dx, dy, nx, ny = gr
+            hn = self.name(base + "s")
+            sizes = self.size_params(hn, sh, True)
+            ex = _plus(x0, f"i * {self.p(hn + '_pitch_x' if ny > 1 else hn + '_pitch', dx)}") \
+                if nx > 1 else _r(x0)
+            ey = _plus(y0, f"j * {self.p(hn + '_pitch_y' if nx > 1 else hn + '_pitch', dy)}") \
+                if ny > 1 else _r(y0)
+            c = f"({ex}, {ey})"
+            d = depth
+            if nx > 1:
+                w.emit(d, f"for i in range({nx}) {{")
+                d += 1
+            if ny > 1:
+                w.emit(d, f"for j in range({ny}) {{")
+                d += 1
+            self.hole_block(d, hn, sh, c, sizes)
+            for _ in range(d - depth):
+                d -= 1
+                w.emit(d, "}")
+            self.stats.patterns["grid" if nx > 1 and ny > 1 else "row"] += 1
+            return True
+        ln = _line(cs)
+        if ln is not None:
+            p0, (dx, dy), n = ln
+            hn = self.name(base + "s")
+            sizes = self.size_params(hn, sh, True)
+            c = f"({_plus(p0[0], f'i * {_r(dx)}')}, {_plus(p0[1], f'i * {_r(dy)}')})"
+            w.emit(depth, f"for i in range({n}) {{")
+            self.hole_block(depth + 1, hn, sh, c, sizes)
+            w.emit(depth, "}")
+            self.stats.patterns["row"] += 1
+            return True
+        # no pattern: one size param for them all
+        sizes = self.size_params(base, sh, True)
+        for s in g:
+            self.hole_block(depth, self.name(base), s, _center(s.center), sizes)
+        self.stats.patterns["equal sizes"] += 1
+        return True
+
+    def single(self, depth: int, sh: Shape, body, centres: list) -> None:
+        base = _hole_name(sh)
+        sizes: dict = {}
+        if sh.kind == "Circle":
+            on_axis = any(math.dist(sh.center, c) <= EQUAL_TOL for c in centres) or \
+                (body is not None and math.dist(sh.center, body[0].center) <= EQUAL_TOL)
+            if on_axis:
+                base = "bore"
+                sizes = {"diameter": self.p(self.name("bore") + "_d", 2 * sh.args["radius"])}
+                self.used.discard("bore")
+        hn = self.name(base)
+        if sh.kind == "Polygon":
+            self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
+            self.w.emit(depth, f"Fixed({hn}.h)")
+            return
+        self.hole_block(depth, hn, sh, _center(sh.center), sizes)
+
+
+# ------------------------------------------------------------------ drawings (engravings)
+def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
+    """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
+    recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
+    k = 0
+    parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
+    for dd in parts:
+        for segs in [o.segments for o in dd.outlines] + [[c] for c in dd.circles]:
+            k += 1
+            sh = recognise(segs)
+            if sh is not None:
+                stats.kinds[sh.kind] += 1
+                w.emit(depth, f"g{k} = {_ctor(sh, _center(sh.center))}")
+            else:
+                w.chain(depth, segs, True, f"g{k}_")
+        for cx, cy, rx, ry, rot in dd.ellipses:
+            k += 1
+            w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+        for p in dd.paths:
+            k += 1
+            closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+            if all(isinstance(s, Line) for s in p.segments) and not closed:
+                pts = [p.segments[0].start] + [s.end for s in p.segments]
+                w.emit(depth, f"g{k} = Polyline([{', '.join(_pt(q) for q in pts)}])")
+            elif not w.chain(depth, p.segments, closed, f"g{k}_"):
+                w.notes.append(Note("W0130", "an engraved path holds a piece no statement "
+                                             "writes: left out"))
+        for i, (text, (x, y), h, rot, anchor, valign) in enumerate(dd.texts):
+            deg = round(math.degrees(rot), 9)
+            rot_txt = f", rotation={_num(deg)} deg" if deg else ""
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
+                          f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+
+
+def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
+           prefix: str) -> None:
+    part = _Part(w, params, stats, prefix)
+    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    from ..geometry.curves import Loop   # noqa: F401  (program._containers uses it)
+    dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
+    outer = [segs for segs, k in zip(loops, dep) if k == 0]
+    holes = [segs for segs, k in zip(loops, dep) if k % 2 == 1]
+    islands = [segs for segs, k in zip(loops, dep) if k and k % 2 == 0]
+    # whole ellipses: holes when inside an outline
+    import numpy as np
+    from ..geometry.curves import Loop
+    polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops]
+    ell_holes, ell_body = [], []
+    for el in d.ellipses:
+        inside = sum(1 for P in polys if len(P) >= 3 and _inside((el[0], el[1]), P))
+        (ell_holes if inside % 2 else ell_body).append(el)
+    w.emit(depth, f"solid {name} {{")
+    body = None
+    outer.sort(key=lambda s: -abs(Loop(list(s)).area))
+    for i, segs in enumerate(outer):
+        got = part.body(depth + 1, segs, i == 0)
+        if i == 0:
+            body = got
+    for cx, cy, rx, ry, rot in ell_body:
+        w.emit(depth + 1, f"{part.name('oval')} = Ellipse(center={_pt((cx, cy))}, "
+                          f"rx={_num(rx)}, ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+    part.holes(depth + 1, holes, body)
+    for cx, cy, rx, ry, rot in ell_holes:
+        hn = part.name("oval")
+        w.emit(depth + 1, f"hole {hn} {{ e = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg) }}")
+    eng = Drawing(paths=list(d.paths), texts=list(d.texts), engrave=d.engrave)
+    if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
+        w.emit(depth + 1, "drawing engraving {")
+        _engraving(w, depth + 2, eng, stats)
+        w.emit(depth + 1, "}")
+    w.emit(depth, "}")
+    for k, segs in enumerate(islands):
+        w.emit(depth, f"solid {name}_island{k + 1} {{")
+        _Part(w, params, stats, prefix).body(depth + 1, segs, False)
+        w.emit(depth, "}")
+
+
+def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
+                        deadline=None) -> tuple[str, list[Note]]:
+    """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
+    it, written as recognised shapes, patterns and parameters (module doc), and the notes:
+    what was left out, and one ``W0131`` saying what was recognised."""
+    w = _Writer(deadline)
+    params = _Params()
+    stats = _Stats()
+    used: set = set()
+    items = []
+    for layer, d in layers:
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
+            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        if parts and kind == "solid":
+            pieces, loose = _split_parts(d, deadline)
+            base = _ident(layer, set()) if layer else "part"
+            for k, pd in enumerate(pieces):
+                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
+            if loose is not None:
+                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
+        else:
+            items.append((kind, _ident(layer or "part", used), d))
+    solids = sum(1 for k, _, _ in items if k == "solid")
+    multi = len(items) > 1
+    depth = 1 if multi else 0
+    if multi:
+        w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
+    for kind, name, d in items:
+        if kind == "drawing":
+            w.emit(depth, f"drawing {name} {{")
+            _engraving(w, depth + 1, d, stats)
+            w.emit(depth, "}")
+        else:
+            _solid(w, params, stats, depth, name, d, name + "_" if solids > 1 else "")
+    if multi:
+        w.emit(0, "}")
+    head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
+    head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
+    text = "\n".join(head + params.lines + w.lines) + "\n"
+    return text, w.notes
+
+
+def _summary(st: _Stats) -> list[str]:
+    """The header lines saying what was recognised and the tolerances."""
+    shapes = ", ".join(f"{n} {k}" for k, n in sorted(st.kinds.items(), key=lambda x: -x[1]))
+    pats = ", ".join(f"{n} {k}" for k, n in st.patterns.items())
+    out = [f"recognised: {st.in_shapes} of {st.pieces} pieces of outlines and holes in "
+           f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
+    if pats:
+        out.append(f"patterns: {pats}")
+    out.append(f"equal within {EQUAL_TOL:g} mm, numbers rounded within {ROUND_TOL:g} mm; "
+               f"the rest stays exact Line/Arc chains")
+    return out
