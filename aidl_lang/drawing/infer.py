@@ -317,6 +317,10 @@ def _split_rect(segs, center, w, h, R):
         hi = (x1 if along == 0 else y1) - R
         if not all(lo - EQUAL_TOL <= p[along] <= hi + EQUAL_TOL for p in (a, b)):
             return None
+        slot = _tab_slot(run, side, min(w, h))
+        if slot is not None:
+            chains.append(slot)
+            continue
         a2 = (a[0] - side[0] * depth, a[1] - side[1] * depth)
         b2 = (b[0] - side[0] * depth, b[1] - side[1] * depth)
         chain = list(run)
@@ -340,6 +344,31 @@ def _split_rect(segs, center, w, h, R):
                      ("RoundedRectangle", w, h, R), 0)
     rect.pieces = len(segs) - len(rest)
     return rect, chains
+
+
+def _tab_slot(run: list, side, room: float):
+    """A tab that is a line, a half circle and a line back (a rounded tab): the ``Slot`` from
+    the half circle's centre into the rectangle, its inner end a radius deep, or None."""
+    if len(run) != 3 or not isinstance(run[1], Arc) or not isinstance(run[0], Line) or \
+            not isinstance(run[2], Line):
+        return None
+    arc = run[1]
+    r = arc.radius
+    if abs(abs(arc.sweep) - math.pi) > 1e-9 or 3 * r >= room:
+        return None
+    a = run[0].start
+    # how far the arc's centre stands out of the side
+    out = (arc.center[0] - a[0]) * side[0] + (arc.center[1] - a[1]) * side[1]
+    if out <= EQUAL_TOL:
+        return None
+    end = (arc.center[0] - side[0] * (out + r), arc.center[1] - side[1] * (out + r))
+    from .infer_shapes import _as_slot
+    made = _as_slot([run[1], Line(run[2].start, (run[2].end[0] - side[0] * r,
+                                                 run[2].end[1] - side[1] * r)),
+                     Arc(end, r, arc.start_angle + math.pi, arc.sweep),
+                     Line((run[0].start[0] - side[0] * r, run[0].start[1] - side[1] * r),
+                          run[0].end)])
+    return made
 
 
 def _collinear(p: Line, q: Line) -> bool:
@@ -366,12 +395,31 @@ class _Part:
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
         self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
         self.used: set = set()
+        self.shift: tuple | None = None     # (x term, y term) added to every position
+
+    def plus(self, v: float, term: str, axis: int = 0) -> str:
+        if self.shift is not None and self.shift[axis]:
+            return _plus(v, f"{self.shift[axis]} + {term}")
+        return _plus(v, term)
+
+    def center(self, c) -> str:
+        if self.shift is None:
+            return _center(c)
+        return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
+                               for i in (0, 1)) + ")"
 
     def p(self, name: str, value: float, comment: str = "", unit: str = "mm") -> str:
         return self.params.add(self.prefix + name, value, comment, unit)
 
     def name(self, base: str) -> str:
         return _ident(base, self.used)
+
+    def numbered(self, base: str) -> str:
+        k = 1
+        while f"{base}{k}" in self.used:
+            k += 1
+        self.used.add(f"{base}{k}")
+        return f"{base}{k}"
 
     def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
         self.w.emit(depth, f"{nm} = {_ctor(sh, center, sizes)}")
@@ -402,15 +450,20 @@ class _Part:
                 sizes["corner_radius"] = self.p("corner_radius", sh.args["corner_radius"])
         elif first and sh.kind == "Circle":
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
-        self.shape_line(depth, nm, sh, _center(sh.center), sizes)
+        self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
         self.w.emit(depth, f"Fixed({nm})")
         for chain in tabs or []:
-            st.in_shapes += 0
             tn = self.name("tab")
+            if isinstance(chain, Shape):
+                st.kinds[chain.kind] += 1
+                st.in_shapes += 3
+                self.shape_line(depth, tn, chain, self.center(chain.center))
+                self.w.emit(depth, f"Fixed({tn})")
+                continue
             t = recognise(chain)
             if t is not None and t.kind != "Polygon":
                 st.kinds[t.kind] += 1
-                self.shape_line(depth, tn, t, _center(t.center))
+                self.shape_line(depth, tn, t, self.center(t.center))
                 self.w.emit(depth, f"Fixed({tn})")
             elif t is not None:
                 self.shape_line(depth, tn, t, "")
@@ -503,7 +556,7 @@ class _Part:
                     wx, hy = bsizes.get("width"), bsizes.get("height")
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
-                    c = f"({_plus(mid[0], ex)}, {_plus(mid[1], ey)})"
+                    c = f"({self.plus(mid[0], ex)}, {self.plus(mid[1], ey, 1)})"
                     w.emit(depth, f"for sx in [-1, 1] {{")
                     w.emit(depth + 1, f"for sy in [-1, 1] {{")
                     self.hole_block(depth + 2, hn, sh, c, sizes)
@@ -521,8 +574,8 @@ class _Part:
                 sizes = self.size_params(f"{hn}_hole", sh, True)
                 ang = f"{_deg(a0)} + i * {_num(360 / n, 1e-10)} deg" if abs(a0) > 1e-15 \
                     else f"i * {_num(360 / n, 1e-10)} deg"
-                c = f"({_plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
-                    f"{_plus(cy, f'{pcd} / 2 * sin({ang})')})"
+                c = f"({self.plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
+                    f"{self.plus(cy, f'{pcd} / 2 * sin({ang})', 1)})"
                 w.emit(depth, f"for i in range({n}) {{")
                 self.hole_block(depth + 1, hn, sh, c, sizes)
                 w.emit(depth, "}")
@@ -535,10 +588,10 @@ class _Part:
             x0, y0, dx, dy, nx, ny = gr
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            ex = _plus(x0, f"i * {self.p(hn + '_pitch_x' if ny > 1 else hn + '_pitch', dx)}") \
-                if nx > 1 else _r(x0)
-            ey = _plus(y0, f"j * {self.p(hn + '_pitch_y' if nx > 1 else hn + '_pitch', dy)}") \
-                if ny > 1 else _r(y0)
+            ex = self.plus(x0, f"i * {self.p(hn + '_pitch_x' if ny > 1 else hn + '_pitch', dx)}") \
+                if nx > 1 else self.center((x0, y0))[1:-1].split(", ")[0]
+            ey = self.plus(y0, f"j * {self.p(hn + '_pitch_y' if nx > 1 else hn + '_pitch', dy)}", 1) \
+                if ny > 1 else self.center((x0, y0))[1:-1].split(", ")[1]
             c = f"({ex}, {ey})"
             d = depth
             if nx > 1:
@@ -558,7 +611,7 @@ class _Part:
             p0, (dx, dy), n = ln
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            c = f"({_plus(p0[0], f'i * {_r(dx)}')}, {_plus(p0[1], f'i * {_r(dy)}')})"
+            c = f"({self.plus(p0[0], f'i * {_r(dx)}')}, {self.plus(p0[1], f'i * {_r(dy)}', 1)})"
             w.emit(depth, f"for i in range({n}) {{")
             self.hole_block(depth + 1, hn, sh, c, sizes)
             w.emit(depth, "}")
@@ -567,7 +620,8 @@ class _Part:
         # no pattern: one size param for them all
         sizes = self.size_params(base, sh, True)
         for s in g:
-            self.hole_block(depth, self.name(base), s, _center(s.center), sizes)
+            self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
+                            s, self.center(s.center), sizes)
         self.stats.patterns["equal sizes"] += 1
         return True
 
@@ -581,12 +635,12 @@ class _Part:
                 base = "bore"
                 sizes = {"diameter": self.p(self.name("bore") + "_d", 2 * sh.args["radius"])}
                 self.used.discard("bore")
-        hn = self.name(base)
+        hn = self.numbered(base) if base == "hole" else self.name(base)
         if sh.kind == "Polygon":
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
             return
-        self.hole_block(depth, hn, sh, _center(sh.center), sizes)
+        self.hole_block(depth, hn, sh, self.center(sh.center), sizes)
 
 
 # ------------------------------------------------------------------ drawings (engravings)
@@ -594,6 +648,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
     k = 0
+    held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
     for dd in parts:
         for segs in [o.segments for o in dd.outlines] + [[c] for c in dd.circles]:
@@ -602,18 +657,21 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             if sh is not None:
                 stats.kinds[sh.kind] += 1
                 w.emit(depth, f"g{k} = {_ctor(sh, _center(sh.center))}")
+                held.append(f"g{k}")
             else:
                 w.chain(depth, segs, True, f"g{k}_")
         for cx, cy, rx, ry, rot in dd.ellipses:
             k += 1
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+            held.append(f"g{k}")
         for p in dd.paths:
             k += 1
             closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
             if all(isinstance(s, Line) for s in p.segments) and not closed:
                 pts = [p.segments[0].start] + [s.end for s in p.segments]
                 w.emit(depth, f"g{k} = Polyline([{', '.join(_pt(q) for q in pts)}])")
+                held.append(f"g{k}")
             elif not w.chain(depth, p.segments, closed, f"g{k}_"):
                 w.notes.append(Note("W0130", "an engraved path holds a piece no statement "
                                              "writes: left out"))
@@ -623,11 +681,56 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             k += 1
             w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+    if held:
+        w.emit(depth, f"for g in [{', '.join(held)}] {{ Fixed(g) }}")
+
+
+def _signature(d: Drawing):
+    """``(numbers, body centre)`` of a simple part (one recognised outline, recognised holes,
+    nothing else), its numbers the same for two parts that are copies of each other moved;
+    None for any other part."""
+    if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty):
+        return None
+    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    dep = [len(c) for c in _containers(loops)] if loops else []
+    if sum(1 for k in dep if k == 0) != 1 or any(k > 1 for k in dep):
+        return None
+    body = recognise(loops[dep.index(0)])
+    if body is None or body.kind == "Polygon":
+        return None
+    holes = []
+    for segs, k in zip(loops, dep):
+        if k == 1:
+            h = recognise(segs)
+            if h is None or h.kind == "Polygon":
+                return None
+            holes.append((h.kind, h.size, h.center[0] - body.center[0],
+                          h.center[1] - body.center[1]))
+    holes.sort(key=lambda t: (t[0], round(t[2], 6), round(t[3], 6)))
+    return (body.kind, body.size, holes), body.center
+
+
+def _same_sig(a, b) -> bool:
+    def flat(x):
+        if isinstance(x, (list, tuple)):
+            return [v for y in x for v in flat(y)]
+        return [x]
+    fa, fb = flat(a), flat(b)
+    if len(fa) != len(fb):
+        return False
+    for x, y in zip(fa, fb):
+        if isinstance(x, str) or isinstance(y, str):
+            if x != y:
+                return False
+        elif abs(x - y) > EQUAL_TOL:
+            return False
+    return True
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str) -> None:
+           prefix: str, shift=None) -> None:
     part = _Part(w, params, stats, prefix)
+    part.shift = shift
     loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
     from ..geometry.curves import Loop   # noqa: F401  (program._containers uses it)
     dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
@@ -662,10 +765,13 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth + 1, "drawing engraving {")
         _engraving(w, depth + 2, eng, stats)
         w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(engraving)")
     w.emit(depth, "}")
     for k, segs in enumerate(islands):
         w.emit(depth, f"solid {name}_island{k + 1} {{")
-        _Part(w, params, stats, prefix).body(depth + 1, segs, False)
+        isl = _Part(w, params, stats, prefix)
+        isl.shift = shift
+        isl.body(depth + 1, segs, False)
         w.emit(depth, "}")
 
 
@@ -691,24 +797,91 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                 items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
         else:
             items.append((kind, _ident(layer or "part", used), d))
-    solids = sum(1 for k, _, _ in items if k == "solid")
+    items = _copies(items, deadline)
+    solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1
     depth = 1 if multi else 0
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
-    for kind, name, d in items:
+    short = _short_names([it[1] for it in items])
+    names = []
+    for kind, name, d, *rep in items:
         if kind == "drawing":
             w.emit(depth, f"drawing {name} {{")
             _engraving(w, depth + 1, d, stats)
             w.emit(depth, "}")
+        elif rep:
+            (x0, y0), (dx, dy), n = rep[0]
+            pre = short[name] + "_"
+            sx = f"k * {params.add(pre + 'pitch_x' if abs(dy) > ROUND_TOL else pre + 'pitch', dx)}" \
+                if abs(dx) > ROUND_TOL else None
+            sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy)}" \
+                if abs(dy) > ROUND_TOL else None
+            w.emit(depth, f"for k in range({n}) {{")
+            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
+            if multi:
+                w.emit(depth + 1, f"Fixed({name})")
+            w.emit(depth, "}")
+            stats.patterns["row of parts"] += 1
+            continue
         else:
-            _solid(w, params, stats, depth, name, d, name + "_" if solids > 1 else "")
+            _solid(w, params, stats, depth, name, d, short[name] + "_" if solids > 1 else "")
+        names.append(name)
+    if multi and len(names) > 1:
+        w.emit(depth, f"for p in [{', '.join(names)}] {{ Fixed(p) }}")
+    elif multi and names:
+        w.emit(depth, f"Fixed({names[0]})")
     if multi:
         w.emit(0, "}")
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
     head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
+
+
+def _short_names(names: list) -> dict:
+    """Each part's name for its params: the last word of its name (``cut_kit_plate``:
+    ``plate``) when no other part's ends so, else the whole name."""
+    last = {n: (n.rsplit("_", 1)[-1] if "_" in n else n) for n in names}
+    count = Counter(last.values())
+    return {n: (v if count[v] == 1 and not v[0].isdigit() else n) for n, v in last.items()}
+
+
+def _copies(items: list, deadline=None) -> list:
+    """``items`` with each run of parts that are copies of one part moved evenly along a line
+    (the washers laid out under a plate) as one item ``(kind, name, first part, (start,
+    step, count))``."""
+    sigs = [(_signature(d) if kind == "solid" else None) for kind, _, d in items]
+    names = {name for _, name, _ in items}
+    out = []
+    taken: set = set()
+    for i, (kind, name, d) in enumerate(items):
+        if i in taken:
+            continue
+        if sigs[i] is None:
+            out.append((kind, name, d))
+            continue
+        group = [j for j in range(i, len(items)) if j not in taken and sigs[j] is not None
+                 and _same_sig(sigs[i][0], sigs[j][0])]
+        ln = _line([sigs[j][1] for j in group]) if len(group) >= 2 else None
+        if ln is None:
+            out.append((kind, name, d))
+            continue
+        p0, step, n = ln
+        first = min(group, key=lambda j: sigs[j][1])
+        taken.update(group)
+        base = _common_name([items[j][1] for j in group])
+        if base in names:
+            base = _ident(base, names)
+        names.add(base)
+        out.append(("solid", base, items[first][2], (p0, step, n)))
+    return out
+
+
+def _common_name(names: list) -> str:
+    import os
+    pre = os.path.commonprefix(names).rstrip("_0123456789")
+    return pre or "part"
 
 
 def _summary(st: _Stats) -> list[str]:

@@ -212,7 +212,12 @@ def _as_slot(segs):
     if abs(a.radius - b.radius) > EQUAL_TOL or math.dist(a.center, b.center) <= EQUAL_TOL:
         return None
     dx, dy = b.center[0] - a.center[0], b.center[1] - a.center[1]
-    rot = _snap_angle(math.atan2(dy, dx), math.hypot(dx, dy) + 2 * r)
+    rot = math.atan2(dy, dx)
+    if rot <= -math.pi / 2 + 1e-12:       # a slot turned half a turn is the same slot
+        rot += math.pi
+    elif rot > math.pi / 2 + 1e-12:
+        rot -= math.pi
+    rot = _snap_angle(rot, math.hypot(dx, dy) + 2 * r)
     span = math.hypot(dx, dy)
     c, s = math.cos(rot), math.sin(rot)
     mid = ((a.center[0] + b.center[0]) / 2, (a.center[1] + b.center[1]) / 2)
