@@ -30,7 +30,8 @@ import math
 from collections import Counter
 
 from ..geometry.curves import Arc, Circle, Line
-from .infer_shapes import EQUAL_TOL, ROUND_TOL, Shape, recognise, rrect_pieces
+from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, recognise,
+                           rrect_pieces)
 from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
 from .read import Drawing, Note
 
@@ -371,6 +372,89 @@ def _tab_slot(run: list, side, room: float):
     return made
 
 
+def _circle_attachments(segs: list):
+    """A loop that is a circle with teeth standing out of it (a gear's root circle and its
+    teeth, a bore and its keyway): ``(Circle Shape, [tooth vertices])``, each tooth the
+    polygon of a run of lines off the circle, its first and last lines carried on into the
+    circle so that their crossing with it stays where it was; or None."""
+    arcs = [s for s in segs if isinstance(s, Arc)]
+    if not arcs or not any(isinstance(s, Line) for s in segs):
+        return None
+    groups: dict = {}
+    for a in arcs:
+        key = (round(a.center[0], 6), round(a.center[1], 6), round(a.radius, 6))
+        groups.setdefault(key, []).append(a)
+    base = max(groups.values(), key=lambda g: sum(abs(a.sweep) for a in g))
+    C, R = base[0].center, base[0].radius
+
+    def on_base(s) -> bool:
+        return isinstance(s, Arc) and _close(s.center, C) and abs(s.radius - R) <= EQUAL_TOL
+    n = len(segs)
+    if not any(on_base(s) for s in segs) or all(on_base(s) for s in segs):
+        return None
+    start = next(i for i in range(n) if on_base(segs[i - 1]) and not on_base(segs[i]))
+    runs: list[list] = []
+    i, seen = start, 0
+    while seen < n:
+        if not on_base(segs[i]):
+            run = []
+            while not on_base(segs[i]) and seen < n:
+                run.append(segs[i])
+                i = (i + 1) % n
+                seen += 1
+            runs.append(run)
+        else:
+            i = (i + 1) % n
+            seen += 1
+    teeth = []
+    for run in runs:
+        if not all(isinstance(s, Line) for s in run):
+            return None
+        a, b = run[0].start, run[-1].end
+        if abs(math.dist(a, C) - R) > EQUAL_TOL or abs(math.dist(b, C) - R) > EQUAL_TOL:
+            return None
+        pts = [s.end for s in run[:-1]]
+        if any(math.dist(p, C) <= R + EQUAL_TOL for p in pts):
+            return None             # a notch into the circle, not a tooth
+        # carry the first and last lines on into the circle, a tenth of its radius deep
+        p1 = run[0].end
+        q1 = run[-1].start
+        ua = ((a[0] - p1[0]) / run[0].length, (a[1] - p1[1]) / run[0].length)
+        ub = ((b[0] - q1[0]) / run[-1].length, (b[1] - q1[1]) / run[-1].length)
+        d = 0.1 * R
+        a2 = (a[0] + ua[0] * d, a[1] + ua[1] * d)
+        b2 = (b[0] + ub[0] * d, b[1] + ub[1] * d)
+        if math.dist(a2, C) >= R - EQUAL_TOL or math.dist(b2, C) >= R - EQUAL_TOL:
+            return None
+        teeth.append([a2] + pts + [b2])
+    circle = Shape("Circle", C, {"radius": R}, ("Circle", R), 0)
+    circle.pieces = n
+    return circle, teeth
+
+
+def _polar_polys(teeth: list, C):
+    """``(n, first angle, [(radius, angle) of each vertex of the first])`` when the polygons
+    ``teeth`` are one polygon turned evenly round ``C`` (a whole turn), else None."""
+    n = len(teeth)
+    if n < 2 or any(len(t) != len(teeth[0]) for t in teeth):
+        return None
+
+    def ang(t):
+        cx = sum(p[0] for p in t) / len(t) - C[0]
+        cy = sum(p[1] for p in t) / len(t) - C[1]
+        return math.atan2(cy, cx)
+    order = sorted(teeth, key=lambda t: ang(t) % (2 * math.pi))
+    first = order[0]
+    step = 2 * math.pi / n
+    polar = [(math.dist(p, C), math.atan2(p[1] - C[1], p[0] - C[0])) for p in first]
+    for k, t in enumerate(order):
+        for (r, a), p in zip(polar, t):
+            q = (C[0] + r * math.cos(a + k * step), C[1] + r * math.sin(a + k * step))
+            if math.dist(p, q) > EQUAL_TOL:
+                return None
+    return n, polar
+
+
 def _collinear(p: Line, q: Line) -> bool:
     ux, uy = p.end[0] - p.start[0], p.end[1] - p.start[1]
     vx, vy = q.end[0] - q.start[0], q.end[1] - q.start[1]
@@ -432,10 +516,15 @@ class _Part:
         st.pieces += len(segs)
         sh = recognise(segs)
         tabs = None
+        teeth = None
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
                 sh, tabs = got
+            elif sh is None:
+                got = _circle_attachments(segs)
+                if got is not None:
+                    sh, teeth = got
         nm = self.name("body" if first else "outline")
         if sh is None:
             self.w.chain(depth, segs, True, nm + "_")
@@ -452,6 +541,8 @@ class _Part:
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
         self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
         self.w.emit(depth, f"Fixed({nm})")
+        if teeth:
+            self.teeth(depth, sh, teeth, "tooth")
         for chain in tabs or []:
             tn = self.name("tab")
             if isinstance(chain, Shape):
@@ -476,6 +567,32 @@ class _Part:
             return sh, sizes, nm
         return None
 
+    def teeth(self, depth: int, base: Shape, teeth: list, word: str) -> None:
+        """The polygons standing out of a circle: one loop when they are one polygon turned
+        evenly round it (a gear's teeth), else each on its own."""
+        C = base.center
+        pol = _polar_polys(teeth, C)
+        c = self.center(C)
+        if pol is not None:
+            n, verts = pol
+            step = _num(360 / n, 1e-10)
+            pts = ", ".join(f"polar({c}, {_num(r)}, {_deg(_snap_angle(a, r))} + "
+                            f"i * {step} deg)" for r, a in verts)
+            self.w.emit(depth, f"for i in range({n}) {{")
+            self.w.emit(depth + 1, f"{word} = Polygon([{pts}])")
+            self.w.emit(depth + 1, f"Fixed({word})")
+            self.w.emit(depth, "}")
+            self.stats.patterns[f"{'teeth' if word == 'tooth' else word + 'es'} round a "
+                                f"circle"] += 1
+            self.stats.kinds["Polygon"] += n
+            return
+        for t in teeth:
+            tn = self.name(word)
+            pts = ", ".join(self.center(p) for p in t)
+            self.w.emit(depth, f"{tn} = Polygon([{pts}])")
+            self.w.emit(depth, f"Fixed({tn})")
+            self.stats.kinds["Polygon"] += 1
+
     # the holes --------------------------------------------------------------
     def holes(self, depth: int, loops: list, body) -> None:
         shapes = []
@@ -483,10 +600,7 @@ class _Part:
             self.stats.pieces += len(segs)
             sh = recognise(segs)
             if sh is None:
-                hn = self.name("cutout")
-                self.w.emit(depth, f"hole {hn} {{")
-                self.w.chain(depth + 1, segs, True, "e")
-                self.w.emit(depth, "}")
+                self.compound_hole(depth, segs, body)
                 continue
             self.stats.kinds[sh.kind] += 1
             self.stats.in_shapes += sh.pieces
@@ -507,6 +621,61 @@ class _Part:
                 singles += g
         for sh in singles:
             self.single(depth, sh, body, centres)
+
+    def compound_hole(self, depth: int, segs: list, body) -> None:
+        """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
+        a tab, both written in one ``hole``; else the exact chain."""
+        w = self.w
+        got = _attachments(segs)
+        if got is not None:
+            rect, tabs = got
+            hn = self.name("window")
+            w.emit(depth, f"hole {hn} {{")
+            w.emit(depth + 1, f"h = {_ctor(rect, self.center(rect.center))}")
+            fixed = ["h"]
+            for k, t in enumerate(tabs):
+                nm = f"tab{k + 1}"
+                if isinstance(t, Shape):
+                    w.emit(depth + 1, f"{nm} = {_ctor(t, self.center(t.center))}")
+                else:
+                    tt = recognise(t)
+                    if tt is None:
+                        w.chain(depth + 1, t, True, nm + "_")
+                        continue
+                    w.emit(depth + 1, f"{nm} = {_ctor(tt, self.center(tt.center))}")
+                fixed.append(nm)
+            w.emit(depth, "}")
+            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in fixed)}] {{ Fixed(x) }}")
+            self.stats.kinds[rect.kind] += 1
+            self.stats.in_shapes += len(segs)
+            return
+        got = _circle_attachments(segs)
+        if got is not None:
+            circle, teeth = got
+            concentric = body is not None and _close(circle.center, body[0].center)
+            hn = self.name("bore" if concentric else "round_hole")
+            w.emit(depth, f"hole {hn} {{")
+            w.emit(depth + 1, f"h = {_ctor(circle, self.center(circle.center))}")
+            names = ["h"]
+            sub = _Part(w, self.params, self.stats, self.prefix)
+            sub.shift = self.shift
+            word = "key" if len(teeth) == 1 else "notch"
+            if len(teeth) == 1:
+                pts = ", ".join(self.center(p) for p in teeth[0])
+                w.emit(depth + 1, f"key = Polygon([{pts}])")
+                names.append("key")
+                self.stats.kinds["Polygon"] += 1
+            else:
+                sub.teeth(depth + 1, circle, teeth, word)
+            w.emit(depth, "}")
+            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in names)}] {{ Fixed(x) }}")
+            self.stats.kinds["Circle"] += 1
+            self.stats.in_shapes += len(segs)
+            return
+        hn = self.name("cutout")
+        w.emit(depth, f"hole {hn} {{")
+        w.chain(depth + 1, segs, True, "e")
+        w.emit(depth, "}")
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
                    loop: bool = False) -> None:
