@@ -150,6 +150,31 @@ def test_turned_and_partly_rounded_shapes_are_recognised_exactly(tmp_path):
     assert again.freedom()["dof"] == 0
 
 
+TICKS = """\
+units mm
+solid bar {
+    body = Rectangle(center=(50, 10), width=120, height=20)
+    drawing scale {
+        for i in range(21) { t = Line((i * 5, 20), (i * 5, 20 - (6 if i % 2 == 0 else 3))) }
+        for i in range(7) { r = Line(polar((50, 0), 9, i * 15 deg), polar((50, 0), 6, i * 15 deg)) }
+    }
+}
+"""
+
+
+def test_engraved_ticks_come_back_as_loops(tmp_path):
+    """A row of ticks (lengths alternating) and a fan of radial ticks: one loop each, the
+    lengths as their repeating list."""
+    text, first, again, second = _round_trip(tmp_path, TICKS, "ticks")
+    assert "for i in range(21) {" in text and "L = [6, 3][i % 2]" in text
+    assert "for i in range(7) {" in text and "a = i * 15 deg" in text
+    assert "Line(polar((50, 0), 9, a), polar((50, 0), 9 - L, a))" in text
+    assert "Polyline(" not in text
+    left, extra = _same(first, second)
+    assert not left and not extra, (left[:3], extra[:3])
+    assert again.freedom()["dof"] == 0
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")

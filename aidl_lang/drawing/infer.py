@@ -813,6 +813,188 @@ class _Part:
 
 
 # ------------------------------------------------------------------ drawings (engravings)
+def _periodic(vals: list) -> list:
+    """The shortest list ``P`` with ``vals[i] == P[i % len(P)]`` (within EQUAL_TOL)."""
+    n = len(vals)
+    for p in range(1, n + 1):
+        if all(abs(vals[i] - vals[i % p]) <= EQUAL_TOL for i in range(n)):
+            return vals[:p]
+    return vals
+
+
+def _runs(idx_pos: list, step: float) -> list[list]:
+    """Maximal runs of consecutive members (positions ``step`` apart) of sorted
+    ``(position, item)`` pairs."""
+    runs: list[list] = []
+    for pos, it in idx_pos:
+        if runs and abs(pos - runs[-1][-1][0] - step) <= EQUAL_TOL:
+            runs[-1].append((pos, it))
+        else:
+            runs.append([(pos, it)])
+    return runs
+
+
+MIN_FAMILY = 5      # strokes in a row (ticks) written as one loop
+
+
+def _tick_families(lines: list) -> tuple[list, list]:
+    """Single strokes (``(a, b)`` point pairs) that are one family: ticks along a line
+    (starts evenly spaced on a line, one direction, lengths repeating) or round a centre
+    (radial, evenly turned, one radius at their anchored end).  Returns ``([family], the
+    indices of the strokes in them)``,
+    a family ``("row", p0, step, u, lengths)`` or ``("polar", C, R, a0, step, sign,
+    lengths)``."""
+    fams = []
+    left = list(range(len(lines)))
+    # ticks along a line: group by direction
+    by_dir: dict = {}
+    for i in left:
+        a, b = lines[i]
+        L = math.dist(a, b)
+        u = ((b[0] - a[0]) / L, (b[1] - a[1]) / L)
+        by_dir.setdefault((round(u[0], 7), round(u[1], 7)), []).append(i)
+    used: set = set()
+    for u, idx in by_dir.items():
+        if len(idx) < MIN_FAMILY:
+            continue
+        # starts on one line across u: group by the start's coordinate along u
+        along: dict = {}
+        for i in idx:
+            a = lines[i][0]
+            along.setdefault(round(a[0] * u[0] + a[1] * u[1], 6), []).append(i)
+        for key, grp in along.items():
+            if len(grp) < MIN_FAMILY:
+                continue
+            v = (-u[1], u[0])
+            pos = sorted(((lines[i][0][0] * v[0] + lines[i][0][1] * v[1]), i) for i in grp)
+            gaps = [b[0] - a[0] for a, b in zip(pos, pos[1:])]
+            step = min(gaps) if gaps else 0
+            if step <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                items = [i for _, i in run]
+                p0 = lines[items[0]][0]
+                d = (lines[items[1]][0][0] - p0[0], lines[items[1]][0][1] - p0[1])
+                ok = all(math.dist(lines[i][0], (p0[0] + k * d[0], p0[1] + k * d[1]))
+                         <= EQUAL_TOL for k, i in enumerate(items))
+                if not ok:
+                    continue
+                lens = [math.dist(*lines[i]) for i in items]
+                fams.append(("row", p0, d, (u[0], u[1]), lens))
+                used.update(items)
+    rest = [i for i in left if i not in used]
+    # ticks round a centre: the centre from two strokes' carriers
+    tries = 0
+    while len(rest) >= MIN_FAMILY and tries < 4:
+        tries += 1
+        C = None
+        a0, b0 = lines[rest[0]]
+        for j in rest[1:]:
+            a1, b1 = lines[j]
+            d0 = (b0[0] - a0[0], b0[1] - a0[1])
+            d1 = (b1[0] - a1[0], b1[1] - a1[1])
+            den = d0[0] * d1[1] - d0[1] * d1[0]
+            if abs(den) > 1e-9 * math.hypot(*d0) * math.hypot(*d1):
+                t = ((a1[0] - a0[0]) * d1[1] - (a1[1] - a0[1]) * d1[0]) / den
+                C = (a0[0] + t * d0[0], a0[1] + t * d0[1])
+                break
+        if C is None:
+            break
+        radial = []
+        for i in rest:
+            a, b = lines[i]
+            ra, rb = math.dist(a, C), math.dist(b, C)
+            if min(ra, rb) <= EQUAL_TOL:
+                continue
+            aa = math.atan2(a[1] - C[1], a[0] - C[0])
+            ab = math.atan2(b[1] - C[1], b[0] - C[0])
+            if abs(math.remainder(aa - ab, 2 * math.pi)) * max(ra, rb) <= EQUAL_TOL:
+                radial.append(i)
+        if len(radial) < MIN_FAMILY:
+            rest = rest[1:]
+            continue
+        # the anchored end: the outer ends on one radius, else the inner ends
+        found = False
+        for outer in (True, False):
+            ends = {}
+            for i in radial:
+                a, b = lines[i]
+                ra, rb = math.dist(a, C), math.dist(b, C)
+                anchor, free = (a, b) if (ra >= rb) == outer else (b, a)
+                ends.setdefault(round(math.dist(anchor, C), 6), []).append((i, anchor, free))
+            R_key, grp = max(ends.items(), key=lambda kv: len(kv[1]))
+            if len(grp) < MIN_FAMILY:
+                continue
+            R = sum(math.dist(an, C) for _, an, _ in grp) / len(grp)
+            def turn(p):
+                t = math.atan2(p[1] - C[1], p[0] - C[0]) % (2 * math.pi)
+                return 0.0 if t > 2 * math.pi - 1e-12 else t
+            pos = sorted((turn(an), (i, an, fr)) for i, an, fr in grp)
+            step = min(b[0] - a[0] for a, b in zip(pos, pos[1:]))
+            if step * R <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                a0 = _snap_angle(run[0][0], R)
+                st = _snap_angle(step, R * len(run))
+                good = all(math.dist(an, (C[0] + R * math.cos(a0 + k * st),
+                                          C[1] + R * math.sin(a0 + k * st))) <= EQUAL_TOL
+                           for k, (_, (i, an, fr)) in enumerate(run))
+                if not good:
+                    continue
+                lens = [math.dist(an, fr) for _, (i, an, fr) in run]
+                fams.append(("polar", C, R, a0, st, -1 if outer else 1, lens))
+                used.update(i for _, (i, _, _) in run)
+                found = True
+            if found:
+                break
+        rest = [i for i in rest if i not in used]
+        if not found:
+            break
+    return fams, used
+
+
+def _write_family(w: _Writer, depth: int, f, k: int) -> str:
+    """One family of ticks as a loop; returns the stroke's name."""
+    nm = f"tick{k}"
+    lens = f[-1]
+    per = _periodic(lens)
+    n = len(lens)
+    L = _r(per[0]) if len(per) == 1 else \
+        "[" + ", ".join(_r(x) for x in per) + f"][i % {len(per)}]"
+    w.emit(depth, f"for i in range({n}) {{")
+    w.emit(depth + 1, f"L = {L}")
+    if f[0] == "row":
+        _, p0, d, u, _ = f
+        x = _plus(p0[0], f"i * {_r(d[0])}") if abs(d[0]) > ROUND_TOL else _r(p0[0])
+        y = _plus(p0[1], f"i * {_r(d[1])}") if abs(d[1]) > ROUND_TOL else _r(p0[1])
+        w.emit(depth + 1, f"x = {x}")
+        w.emit(depth + 1, f"y = {y}")
+
+        def off(c, uc):
+            if abs(uc) <= 1e-15:
+                return c
+            if abs(uc - 1) <= 1e-15:
+                return f"{c} + L"
+            if abs(uc + 1) <= 1e-15:
+                return f"{c} - L"
+            return f"{c} + {_num(uc, 0)} * L"
+        w.emit(depth + 1, f"{nm} = Line((x, y), ({off('x', u[0])}, {off('y', u[1])}))")
+    else:
+        _, C, R, a0, st, sign, _ = f
+        c = _center(C)
+        turn = f"i * {_num(math.degrees(st), 1e-10)} deg"
+        w.emit(depth + 1, f"a = {_deg(a0)} + {turn}" if abs(a0) > 1e-15 else f"a = {turn}")
+        w.emit(depth + 1, f"{nm} = Line(polar({c}, {_r(R)}, a), polar({c}, "
+                          f"{_r(R)} {'-' if sign < 0 else '+'} L, a))")
+    w.emit(depth + 1, f"Fixed({nm})")
+    w.emit(depth, "}")
+    return nm
+
+
 def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
@@ -834,10 +1016,21 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
             held.append(f"g{k}")
+        strokes = [p for p in dd.paths if len(p.segments) == 1 and
+                   isinstance(p.segments[0], Line)]
+        fams, used = _tick_families([(p.segments[0].start, p.segments[0].end)
+                                     for p in strokes])
+        done = {id(strokes[i]) for i in used}
+        for f in fams:
+            k += 1
+            _write_family(w, depth, f, k)
+            stats.patterns["ticks in a row" if f[0] == "row" else "ticks round a centre"] += 1
         for p in dd.paths:
+            if id(p) in done:
+                continue
             k += 1
             closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
-            if all(isinstance(s, Line) for s in p.segments) and not closed:
+            if all(isinstance(s, Line) for s in p.segments):
                 pts = [p.segments[0].start] + [s.end for s in p.segments]
                 w.emit(depth, f"g{k} = Polyline([{', '.join(_pt(q) for q in pts)}])")
                 held.append(f"g{k}")
