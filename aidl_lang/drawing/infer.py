@@ -527,7 +527,7 @@ class _Part:
                     sh, teeth = got
         nm = self.name("body" if first else "outline")
         if sh is None:
-            self.w.chain(depth, segs, True, nm + "_")
+            self.w.chain(depth, segs, True, nm + "_s")
             return None
         st.kinds[sh.kind] += 1
         st.in_shapes += sh.pieces
@@ -560,7 +560,7 @@ class _Part:
                 self.shape_line(depth, tn, t, "")
                 self.w.emit(depth, f"Fixed({tn})")
             else:
-                self.w.chain(depth, chain, True, tn + "_")
+                self.w.chain(depth, chain, True, tn + "_s")
             st.in_shapes += sum(1 for s in chain if any(s is x for x in segs))
         if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
                 abs(sh.args.get("rotation", 0.0)) <= 1e-15:

@@ -257,6 +257,10 @@ def _as_lines(segs):
         if same_pieces(made_l, segs):
             return Shape("RegularPolygon", (cx, cy), {"radius": R, "sides": n, "rotation": a0},
                          ("RegularPolygon", R, n, a0), n)
+    area = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(pts, pts[1:] + pts[:1])) / 2
+    span = max(math.dist(pts[0], p) for p in pts)
+    if abs(area) <= EQUAL_TOL * max(span, 1.0):
+        return None                 # no area: the compiler refuses such a Polygon
     return Shape("Polygon", (cx, cy), {"points": pts}, ("Polygon",), n)
 
 
