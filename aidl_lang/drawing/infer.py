@@ -464,6 +464,35 @@ def _collinear(p: Line, q: Line) -> bool:
     return abs(ux * vy - uy * vx) / lu <= EQUAL_TOL and ux * vx + uy * vy > 0
 
 
+def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
+    """What to hold (``Fixed``) so that a chain written by :meth:`~.program._Writer.chain`
+    with ``prefix`` stays where the file put it, and nothing twice: every arc (its centre,
+    radius and angles; a neighbour's end is then held through it), and each join of two
+    lines (a point).  Only chains of lines and arcs with no two arcs joined (a spline piece's
+    chain, or two arcs meeting: none, the chain stays free as ``aidl import`` writes it)."""
+    if not all(isinstance(g, (Line, Arc)) for g in segs):
+        return []
+    n = len(segs)
+    if any(isinstance(segs[i], Arc) and isinstance(segs[i - 1], Arc)
+           for i in range(0 if closed else 1, n)):
+        return []       # two arcs held at one join say it twice (W0401): left free
+    out = [f"{prefix}{i}" for i, g in enumerate(segs) if isinstance(g, Arc)]
+    for i, g in enumerate(segs):
+        before = segs[i - 1] if (closed or i > 0) else None
+        if isinstance(g, Line) and not isinstance(before, Arc):
+            out.append(f"{prefix}{i}.start")
+    if not closed and isinstance(segs[-1], Line):
+        out.append(f"{prefix}{n - 1}.end")
+    return out
+
+
+def _emit_holds(w: _Writer, depth: int, holds: list[str]) -> None:
+    if len(holds) == 1:
+        w.emit(depth, f"Fixed({holds[0]})")
+    elif holds:
+        w.emit(depth, f"for x in [{', '.join(holds)}] {{ Fixed(x) }}")
+
+
 # ------------------------------------------------------------------ the writer
 class _Stats:
     def __init__(self) -> None:
@@ -527,7 +556,8 @@ class _Part:
                     sh, teeth = got
         nm = self.name("body" if first else "outline")
         if sh is None:
-            self.w.chain(depth, segs, True, nm + "_s")
+            if self.w.chain(depth, segs, True, nm + "_s"):
+                _emit_holds(self.w, depth, _holds(segs, nm + "_s"))
             return None
         st.kinds[sh.kind] += 1
         st.in_shapes += sh.pieces
@@ -559,8 +589,8 @@ class _Part:
             elif t is not None:
                 self.shape_line(depth, tn, t, "")
                 self.w.emit(depth, f"Fixed({tn})")
-            else:
-                self.w.chain(depth, chain, True, tn + "_s")
+            elif self.w.chain(depth, chain, True, tn + "_s"):
+                _emit_holds(self.w, depth, _holds(chain, tn + "_s"))
             st.in_shapes += sum(1 for s in chain if any(s is x for x in segs))
         if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
                 abs(sh.args.get("rotation", 0.0)) <= 1e-15:
@@ -640,7 +670,8 @@ class _Part:
                 else:
                     tt = recognise(t)
                     if tt is None:
-                        w.chain(depth + 1, t, True, nm + "_")
+                        if w.chain(depth + 1, t, True, nm + "_"):
+                            fixed += _holds(t, nm + "_")
                         continue
                     w.emit(depth + 1, f"{nm} = {_ctor(tt, self.center(tt.center))}")
                 fixed.append(nm)
@@ -674,8 +705,10 @@ class _Part:
             return
         hn = self.name("cutout")
         w.emit(depth, f"hole {hn} {{")
-        w.chain(depth + 1, segs, True, "e")
+        ok = w.chain(depth + 1, segs, True, "e")
         w.emit(depth, "}")
+        if ok:
+            _emit_holds(w, depth, [f"{hn}.{x}" for x in _holds(segs, "e")])
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
                    loop: bool = False) -> None:
@@ -1009,8 +1042,8 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                 stats.kinds[sh.kind] += 1
                 w.emit(depth, f"g{k} = {_ctor(sh, _center(sh.center))}")
                 held.append(f"g{k}")
-            else:
-                w.chain(depth, segs, True, f"g{k}_")
+            elif w.chain(depth, segs, True, f"g{k}_"):
+                held += _holds(segs, f"g{k}_")
         for cx, cy, rx, ry, rot in dd.ellipses:
             k += 1
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
@@ -1034,7 +1067,9 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                 pts = [p.segments[0].start] + [s.end for s in p.segments]
                 w.emit(depth, f"g{k} = Polyline([{', '.join(_pt(q) for q in pts)}])")
                 held.append(f"g{k}")
-            elif not w.chain(depth, p.segments, closed, f"g{k}_"):
+            elif w.chain(depth, p.segments, closed, f"g{k}_"):
+                held += _holds(p.segments, f"g{k}_", closed)
+            else:
                 w.notes.append(Note("W0130", "an engraved path holds a piece no statement "
                                              "writes: left out"))
         for i, (text, (x, y), h, rot, anchor, valign) in enumerate(dd.texts):
