@@ -3,6 +3,7 @@ have written -- recognised shapes, loops for patterns, named params, held where 
 it -- and renders to the same geometry to 1e-6 mm (both DXFs re-read with ezdxf alone)."""
 from __future__ import annotations
 
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -173,6 +174,36 @@ def test_engraved_ticks_come_back_as_loops(tmp_path):
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
     assert again.freedom()["dof"] == 0
+
+
+def test_a_sheet_of_copies_with_parts_is_one_loop_of_solids(tmp_path):
+    """`--parts` on one layer holding three copies of a rounded plate with four corner holes
+    (drawn with ezdxf, an LWPOLYLINE with bulges): one solid in a `for k` loop, exact."""
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    msp = doc.modelspace()
+    b = math.tan(math.pi / 8)          # a quarter arc's bulge
+    for k in range(3):
+        x = k * 50
+        msp.add_lwpolyline([(x + 3, 0, 0), (x + 37, 0, b), (x + 40, 3, 0), (x + 40, 22, b),
+                            (x + 37, 25, 0), (x + 3, 25, b), (x, 22, 0), (x, 3, b)],
+                           format="xyb", close=True)
+        for sx in (4, 36):
+            for sy in (4, 21):
+                msp.add_circle((x + sx, sy), 1.5)
+    doc.saveas(tmp_path / "sheet.dxf")
+    text, notes = import_drawing((tmp_path / "sheet.dxf").read_bytes(), "sheet.dxf",
+                                 parts=True, infer=True)
+    assert "for k in range(3) {" in text and text.count("solid ") == 1, text
+    assert "RoundedRectangle(center=(20 + k * part_pitch, 12.5)" in text
+    assert "param part_pitch = 50 mm" in text and "hole corner_holes" in text
+    res = aidl_lang.compile(text, path=tmp_path / "sheet.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    (tmp_path / "back.dxf").write_text(res.to_dxf())
+    left, extra = _same(tmp_path / "sheet.dxf", tmp_path / "back.dxf")
+    assert not left and not extra, (left[:3], extra[:3])
+    assert res.freedom()["dof"] == 0
 
 
 @pytest.fixture(scope="module")

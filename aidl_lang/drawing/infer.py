@@ -819,12 +819,41 @@ class _Part:
             w.emit(depth, "}")
             self.stats.patterns["row"] += 1
             return True
-        # no pattern: one size param for them all
+        # no pattern for them all: rows and columns of three or more among them, the rest
+        # one by one, one size param for all
         sizes = self.size_params(base, sh, True)
-        for s in g:
+        rest = list(g)
+        for axis in (1, 0):             # equal y: a row along x; equal x: a column
+            lines: dict = {}
+            for m in rest:
+                lines.setdefault(round(m.center[axis], 6), []).append(m)
+            for members in lines.values():
+                if len(members) < 3:
+                    continue
+                pos = sorted(((m.center[1 - axis], m) for m in members), key=lambda t: t[0])
+                step = min(b[0] - a[0] for a, b in zip(pos, pos[1:]))
+                if step <= EQUAL_TOL:
+                    continue
+                for run in _runs(pos, step):
+                    if len(run) < 3:
+                        continue
+                    hn = self.name(base + "s")
+                    pitch = self.p(hn + "_pitch", step)
+                    first = run[0][1].center
+                    c = [None, None]
+                    c[1 - axis] = self.plus(first[1 - axis], f"i * {pitch}", 1 - axis)
+                    c[axis] = self.center(first)[1:-1].split(", ")[axis]
+                    w.emit(depth, f"for i in range({len(run)}) {{")
+                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
+                    w.emit(depth, "}")
+                    self.stats.patterns["row"] += 1
+                    for _, m in run:
+                        rest.remove(m)
+        for s in rest:
             self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
                             s, self.center(s.center), sizes)
-        self.stats.patterns["equal sizes"] += 1
+        if rest:
+            self.stats.patterns["equal sizes"] += 1
         return True
 
     def single(self, depth: int, sh: Shape, body, centres: list) -> None:
@@ -1196,7 +1225,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             items.append((kind, _ident(layer or "part", used), d))
     items = _copies(items, deadline)
     solids = sum(1 for it in items if it[0] == "solid")
-    multi = len(items) > 1
+    multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -1278,7 +1307,9 @@ def _copies(items: list, deadline=None) -> list:
 def _common_name(names: list) -> str:
     import os
     pre = os.path.commonprefix(names).rstrip("_0123456789")
-    return pre or "part"
+    if pre.startswith("l_") or len(pre) < 2:     # layer `0`'s parts (`l_01`, ...)
+        return "part"
+    return pre
 
 
 def _summary(st: _Stats) -> list[str]:
