@@ -206,6 +206,26 @@ def test_a_sheet_of_copies_with_parts_is_one_loop_of_solids(tmp_path):
     assert res.freedom()["dof"] == 0
 
 
+SVG = """<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" viewBox="0 0 100 60">
+  <rect x="0" y="0" width="100" height="60" rx="5" ry="5" fill="none" stroke="black"/>
+""" + "".join(f'  <circle cx="{20 + 20 * i}" cy="30" r="4" fill="none" stroke="black"/>\n'
+              for i in range(4)) + "</svg>\n"
+
+
+def test_svg_rounded_rect_and_a_row_of_holes(tmp_path):
+    """An SVG `rect` with `rx` (its corners read as elliptical arcs of equal radii) is a
+    RoundedRectangle; four equal circles a row on one pitch; the y axis turned up."""
+    (tmp_path / "p.svg").write_text(SVG)
+    text, notes = import_drawing(SVG.encode(), "p.svg", infer=True)
+    assert "body = RoundedRectangle(center=(50, -30), width=width, height=height, " \
+           "corner_radius=corner_radius)" in text and "param corner_radius = 5 mm" in text
+    assert "hole holes { h = Circle(center=(20 + i * holes_pitch, -30), diameter=holes_d) }" \
+        in text and "for i in range(4) {" in text and "param holes_pitch = 20 mm" in text
+    res = aidl_lang.compile(text, path=tmp_path / "p.aidl")
+    assert res.ok and res.freedom()["dof"] == 0
+    assert res.parts[0].bbox == pytest.approx((0, -60, 100, 0), abs=1e-9)
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")

@@ -30,8 +30,8 @@ import math
 from collections import Counter
 
 from ..geometry.curves import Arc, Circle, Line
-from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, recognise,
-                           rrect_pieces)
+from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
+                           recognise, rrect_pieces)
 from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
 from .read import Drawing, Note
 
@@ -1064,7 +1064,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
     for dd in parts:
-        for segs in [o.segments for o in dd.outlines] + [[c] for c in dd.circles]:
+        for segs in [circular(o.segments) for o in dd.outlines] + [[c] for c in dd.circles]:
             k += 1
             sh = recognise(segs)
             if sh is not None:
@@ -1117,7 +1117,7 @@ def _signature(d: Drawing):
     None for any other part."""
     if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty):
         return None
-    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     dep = [len(c) for c in _containers(loops)] if loops else []
     if sum(1 for k in dep if k == 0) != 1 or any(k > 1 for k in dep):
         return None
@@ -1157,7 +1157,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
            prefix: str, shift=None) -> None:
     part = _Part(w, params, stats, prefix)
     part.shift = shift
-    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     from ..geometry.curves import Loop   # noqa: F401  (program._containers uses it)
     dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
     outer = [segs for segs, k in zip(loops, dep) if k == 0]

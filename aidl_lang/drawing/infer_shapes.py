@@ -299,6 +299,21 @@ def _as_sector(segs):
                  len(segs))
 
 
+def circular(segs: list) -> list:
+    """``segs`` with each elliptical arc whose two radii are equal (an SVG ``A`` or ``rect``
+    corner) as the circular :class:`Arc` it is: the same points (its parameter is its angle
+    less the rotation)."""
+    from ..geometry.curves import EllipticArc
+    out = []
+    for g in segs:
+        if isinstance(g, EllipticArc) and not g.whole and \
+                abs(g.curve.rx - g.curve.ry) <= EQUAL_TOL:
+            e = g.curve
+            g = Arc(tuple(e.center), e.rx, g.start_param + e.rotation, g.sweep)
+        out.append(g)
+    return out
+
+
 def recognise(segs) -> Shape | None:
     """The primitive that loop ``segs`` is (counter-clockwise or not), or None (module doc)."""
     if len(segs) == 1 and isinstance(segs[0], Circle):
