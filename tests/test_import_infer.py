@@ -12,7 +12,7 @@ import pytest
 
 import aidl_lang
 import dxf_compare
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.infer import import_drawing
 
 ROOT = Path(__file__).resolve().parent.parent
 TOL = 1e-6          # mm: the "exact"

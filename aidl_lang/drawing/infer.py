@@ -1323,3 +1323,12 @@ def _summary(st: _Stats) -> list[str]:
     out.append(f"equal within {EQUAL_TOL:g} mm, numbers rounded within {ROUND_TOL:g} mm; "
                f"the rest stays exact Line/Arc chains")
     return out
+
+
+def import_drawing(data: bytes, name: str, infer: bool = False, **options):
+    """``aidl import [--infer]``: :func:`~.program.import_drawing` of ``data`` (``name``: its
+    file name, ``options`` its keywords: ``unit``, ``layer``, ``parts``, ``budget``, ...),
+    the program written by :func:`to_program_inferred` when ``infer``, else piece by piece.
+    Returns ``(program text, notes)``; raises :class:`~.read.DrawingError`."""
+    from .program import import_drawing as _import
+    return _import(data, name, writer=to_program_inferred if infer else None, **options)

@@ -107,7 +107,7 @@ def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
     """The upload ``name`` (a ``.dxf`` or ``.svg`` of the session's ``folder``, read without
     following a link) as an AIDL program: ``{"program", "notes"}``, its notes as ``aidl
     import`` prints them; ``{"error"}`` for a drawing the importer refuses (docs/import.md)."""
-    from ..drawing.program import import_drawing
+    from ..drawing.infer import import_drawing
     from ..drawing.read import DrawingError
     from ..files import open_beneath, read_regular
     from ..sources import MAX_DRAWING_BYTES
