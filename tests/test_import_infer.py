@@ -226,6 +226,34 @@ def test_svg_rounded_rect_and_a_row_of_holes(tmp_path):
     assert res.parts[0].bbox == pytest.approx((0, -60, 100, 0), abs=1e-9)
 
 
+PAIRS = """\
+units mm
+solid p {
+    body = Rectangle(center=(10, 5), width=80, height=40)
+    hole a { s = Slot(center=(-15, 5), length=12, width=4, rotation=90 deg) }
+    hole b { s = Slot(center=(35, 5), length=12, width=4, rotation=90 deg) }
+    hole c { c = Circle(center=(0, -5), radius=2) }
+    hole d { c = Circle(center=(20, 15), radius=2) }
+}
+"""
+
+
+def test_mirrored_pairs_are_one_loop_and_stay_symmetric(tmp_path):
+    """Two slots mirrored about the body's axis and two holes through its centre: `for s in
+    [-1, 1]`, and a new spacing keeps them symmetric."""
+    text, first, again, second = _round_trip(tmp_path, PAIRS, "pairs")
+    assert "Slot(center=(10 + s * slots_spacing / 2, 5)" in text
+    assert "param slots_spacing = 50 mm" in text
+    assert "Circle(center=(10 + s * holes_spacing / 2, 5 + s * holes_spacing_y / 2)" in text
+    left, extra = _same(first, second)
+    assert not left and not extra, (left[:3], extra[:3])
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"slots_spacing": "60"})
+    assert res.ok
+    (tmp_path / "e.dxf").write_text(res.to_dxf())
+    arcs = [k for k in dxf_compare.curves(tmp_path / "e.dxf") if k[0] == "A"]
+    assert sorted({round(k[1][0][0], 9) for k in arcs}) == [-20.0, 40.0]
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")

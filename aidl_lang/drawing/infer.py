@@ -784,6 +784,31 @@ class _Part:
                 centres.append((cx, cy))
                 self.stats.patterns["bolt circle"] += 1
                 return True
+        # a pair placed symmetrically about the body's centre (mirrored about its axis)
+        if len(g) == 2 and body is not None:
+            B = body[0].center
+            (x1, y1), (x2, y2) = sorted(cs)
+            sym_x = abs(x1 + x2 - 2 * B[0]) <= EQUAL_TOL and x2 - x1 > EQUAL_TOL
+            sym_y = abs(y1 + y2 - 2 * B[1]) <= EQUAL_TOL and abs(y2 - y1) > EQUAL_TOL
+            same_y, same_x = abs(y1 - y2) <= EQUAL_TOL, abs(x1 - x2) <= EQUAL_TOL
+            if (sym_x and (same_y or sym_y)) or (sym_y and same_x):
+                hn = self.name(base + "s")
+                sizes = self.size_params(hn, sh, True)
+                ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2") if sym_x \
+                    else self.center((x1, y1))[1:-1].split(", ")[0]
+                # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
+                if sym_y:
+                    dy = y2 - y1 if sym_x else abs(y2 - y1)
+                    sign = "s" if (not sym_x or y2 > y1) else "-s"
+                    name = hn + ("_spacing_y" if sym_x else "_spacing")
+                    ey = self.plus(B[1], f"{sign} * {self.p(name, abs(dy))} / 2", 1)
+                else:
+                    ey = self.center((x1, y1))[1:-1].split(", ")[1]
+                w.emit(depth, "for s in [-1, 1] {")
+                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
+                w.emit(depth, "}")
+                self.stats.patterns["mirrored pair"] += 1
+                return True
         # a row, a column or a grid
         gr = _grid(cs)
         if gr is not None:
