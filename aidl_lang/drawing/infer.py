@@ -432,6 +432,53 @@ def _circle_attachments(segs: list):
     return circle, teeth
 
 
+def _rotated(g, C, a: float):
+    """Piece ``g`` turned by ``a`` about ``C``."""
+    c, s = math.cos(a), math.sin(a)
+
+    def R(p):
+        x, y = p[0] - C[0], p[1] - C[1]
+        return (C[0] + x * c - y * s, C[1] + x * s + y * c)
+    if isinstance(g, Line):
+        return Line(R(g.start), R(g.end))
+    return Arc(R(g.center), g.radius, g.start_angle + a, g.sweep)
+
+
+def _polar_chain(segs: list):
+    """``(centre, n, the pieces of one turn)`` when the loop ``segs`` (lines and arcs) is
+    one run of pieces turned ``n`` times evenly round a centre (a gear's outline, a star),
+    each copy checked piece by piece to EQUAL_TOL; else None."""
+    if len(segs) < 6 or not all(isinstance(g, (Line, Arc)) for g in segs):
+        return None
+    n_all = len(segs)
+    pts = [g.start for g in segs]
+    C = (sum(p[0] for p in pts) / n_all, sum(p[1] for p in pts) / n_all)
+    C = (float(_r(C[0])), float(_r(C[1])))
+
+    def sig(g):
+        m = g.at(g.start_angle + g.sweep / 2) if isinstance(g, Arc) else \
+            ((g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2)
+        return (isinstance(g, Arc), round(g.length, 6), round(math.dist(m, C), 6))
+    sigs = [sig(g) for g in segs]
+    from .infer_shapes import _same
+    for n in range(n_all // 2, 2, -1):
+        if n_all % n:
+            continue
+        p = n_all // n
+        if not all(sigs[i] == sigs[(i + p) % n_all] for i in range(n_all)):
+            continue
+        step = 2 * math.pi / n
+        # the copy k of piece i is piece i + k p, turned either way round
+        for sign in (1, -1):
+            if all(_same(_rotated(segs[i], C, sign * k * step), segs[(i + k * p) % n_all])
+                   for k in range(1, n) for i in range(p)):
+                period = segs[:p] if sign > 0 else segs[:p]
+                if sign < 0:        # the loop runs clockwise: the pattern turns the other way
+                    return None
+                return C, n, period
+    return None
+
+
 def _polar_polys(teeth: list, C):
     """``(n, first angle, [(radius, angle) of each vertex of the first])`` when the polygons
     ``teeth`` are one polygon turned evenly round ``C`` (a whole turn), else None."""
@@ -556,6 +603,19 @@ class _Part:
                     sh, teeth = got
         nm = self.name("body" if first else "outline")
         if sh is None:
+            pc = _polar_chain(segs)
+            if pc is not None:
+                C, n, period = pc
+                self.stats.patterns["outline turned round a centre"] += 1
+                self.stats.in_shapes += len(segs)
+                pre = nm + "_s"
+                if self.w.chain(depth, period, False, pre):
+                    names = [f"{pre}{i}" for i in range(len(period))]
+                    _emit_holds(self.w, depth, _holds(period, pre, False))
+                    self.w.emit(depth, f"for e in [{', '.join(names)}] {{ "
+                                       f"CircularPattern(e, {n}, {self.center(C)}) }}")
+                    # its centre names a bore (no pieces to place holes by)
+                    return Shape("Circle", C, {"radius": 0.0}, (), 0), {}, nm
             if self.w.chain(depth, segs, True, nm + "_s"):
                 _emit_holds(self.w, depth, _holds(segs, nm + "_s"))
             return None
