@@ -254,6 +254,26 @@ def test_mirrored_pairs_are_one_loop_and_stay_symmetric(tmp_path):
     assert sorted({round(k[1][0][0], 9) for k in arcs}) == [-20.0, 40.0]
 
 
+COG = """\
+units mm
+solid cog {
+    body = Circle(center=(5, 5), radius=10)
+    for i in range(8) { b = Circle(center=(5 + 10 * cos(i * 45 deg), 5 + 10 * sin(i * 45 deg)), radius=3) }
+    hole bore { c = Circle(center=(5, 5), radius=2) }
+}
+"""
+
+
+def test_an_outline_turned_round_a_centre_is_one_turn_and_a_pattern(tmp_path):
+    """A disc with eight round lobes (arcs only: no primitive): one lobe's two arcs and a
+    CircularPattern of each, the hole on its centre a bore; exact."""
+    text, first, again, second = _round_trip(tmp_path, COG, "cog")
+    assert "for e in [body_s0, body_s1] { CircularPattern(e, 8, (5, 5)) }" in text, text
+    assert "hole bore { h = Circle(center=(5, 5), diameter=bore_d) }" in text
+    left, extra = _same(first, second)
+    assert not left and not extra, (left[:3], extra[:3])
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")
