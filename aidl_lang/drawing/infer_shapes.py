@@ -246,15 +246,15 @@ def _as_lines(segs):
     cy = sum(p[1] for p in pts) / n
     rad = [math.dist((cx, cy), p) for p in pts]
     R = sum(rad) / n
-    if n >= 3 and max(rad) - min(rad) <= EQUAL_TOL and R > EQUAL_TOL:
+    if 3 <= n <= 1000 and max(rad) - min(rad) <= EQUAL_TOL and R > EQUAL_TOL:
         a0 = math.atan2(pts[0][1] - cy, pts[0][0] - cx)
         step = 2 * math.pi / n
-        a0 = a0 - step * math.floor(a0 / step + 1e-12)
-        a0 = _snap_angle(a0, R)
+        k0 = math.floor(a0 / step + 1e-12)
+        a0 = _snap_angle(a0 - step * k0, R)
+        # vertex i of the loop is vertex k0 + i (or k0 - i) of the polygon: checked in order
         made = [(cx + R * math.cos(a0 + k * step), cy + R * math.sin(a0 + k * step))
                 for k in range(n)]
-        made_l = [Line(made[k], made[(k + 1) % n]) for k in range(n)]
-        if same_pieces(made_l, segs):
+        if any(all(_close(pts[i], made[(k0 + d * i) % n]) for i in range(n)) for d in (1, -1)):
             return Shape("RegularPolygon", (cx, cy), {"radius": R, "sides": n, "rotation": a0},
                          ("RegularPolygon", R, n, a0), n)
     area = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(pts, pts[1:] + pts[:1])) / 2
