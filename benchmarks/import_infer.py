@@ -19,7 +19,8 @@ example:
 * ``exact``: the inferred program renders to the same curves (1e-6 mm);
 * ``ms``: the inferred import's time;
 * ``edits``: the edit test: each size param of a repeated feature (a ``param`` ending
-  ``_d``, ``_width``, ``_height``, ``_length``, ``_radius`` used inside a ``for``) is set 10 % larger (``--set``); ``ok/n`` counts those whose change moved
+  ``_d``, ``_width``, ``_height``, ``_length``, ``_radius`` used inside a ``for``) is set
+  10 % larger (``--set``); ``ok/n`` counts those whose change moved
   exactly the feature's instances (count x pieces per instance curves changed, nothing else).
 
 ``--corpus FOLDER``: every ``.dxf``/``.dxf.gz`` of the folder (at most ``--max-bytes``,

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from ..geometry.curves import Arc, Circle, Line
+from ..geometry.curves import Arc, Line, Loop
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise, rrect_pieces)
 from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
@@ -52,10 +52,14 @@ class _Params:
         self.lines: list[str] = []
         self.used: set = set()
 
-    def add(self, name: str, value: float, comment: str = "", unit: str = "mm") -> str:
+    def add(self, name: str, value: float, comment: str = "", unit: str = "mm",
+            times: int = 1) -> str:
+        """A param of ``value``, rounded within ROUND_TOL / ``times`` (a pitch taken ``times``
+        over moves its last copy by at most ROUND_TOL)."""
         nm = _ident(name, self.used)
         u = f" {unit}" if unit else ""
-        self.lines.append(f"param {nm} = {_r(value)}{u}" + (f"  # {comment}" if comment else ""))
+        v = _num(value, ROUND_TOL / max(times, 1))
+        self.lines.append(f"param {nm} = {v}{u}" + (f"  # {comment}" if comment else ""))
         return nm
 
 
@@ -310,7 +314,8 @@ def _split_rect(segs, center, w, h, R):
         for s in run:
             mid = s.at(s.start_angle + s.sweep / 2) if isinstance(s, Arc) else \
                 ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
-            if x0 + EQUAL_TOL < mid[0] < x1 - EQUAL_TOL and y0 + EQUAL_TOL < mid[1] < y1 - EQUAL_TOL:
+            if x0 + EQUAL_TOL < mid[0] < x1 - EQUAL_TOL and \
+                    y0 + EQUAL_TOL < mid[1] < y1 - EQUAL_TOL:
                 return None
         # the ends within the side's straight part, clear of the corner arcs
         along = 0 if side[1] else 1
@@ -568,8 +573,9 @@ class _Part:
         return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
                                for i in (0, 1)) + ")"
 
-    def p(self, name: str, value: float, comment: str = "", unit: str = "mm") -> str:
-        return self.params.add(self.prefix + name, value, comment, unit)
+    def p(self, name: str, value: float, comment: str = "", unit: str = "mm",
+          times: int = 1) -> str:
+        return self.params.add(self.prefix + name, value, comment, unit, times)
 
     def name(self, base: str) -> str:
         return _ident(base, self.used)
@@ -875,10 +881,14 @@ class _Part:
             x0, y0, dx, dy, nx, ny = gr
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            ex = self.plus(x0, f"i * {self.p(hn + '_pitch_x' if ny > 1 else hn + '_pitch', dx)}") \
-                if nx > 1 else self.center((x0, y0))[1:-1].split(", ")[0]
-            ey = self.plus(y0, f"j * {self.p(hn + '_pitch_y' if nx > 1 else hn + '_pitch', dy)}", 1) \
-                if ny > 1 else self.center((x0, y0))[1:-1].split(", ")[1]
+            here = self.center((x0, y0))[1:-1].split(", ")
+            ex, ey = here
+            if nx > 1:
+                px = self.p(hn + "_pitch_x" if ny > 1 else hn + "_pitch", dx, times=nx)
+                ex = self.plus(x0, f"i * {px}")
+            if ny > 1:
+                py = self.p(hn + "_pitch_y" if nx > 1 else hn + "_pitch", dy, times=ny)
+                ey = self.plus(y0, f"j * {py}", 1)
             c = f"({ex}, {ey})"
             d = depth
             if nx > 1:
@@ -898,7 +908,8 @@ class _Part:
             p0, (dx, dy), n = ln
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            c = f"({self.plus(p0[0], f'i * {_r(dx)}')}, {self.plus(p0[1], f'i * {_r(dy)}', 1)})"
+            c = f"({self.plus(p0[0], f'i * {_num(dx, ROUND_TOL / n)}')}, " \
+                f"{self.plus(p0[1], f'i * {_num(dy, ROUND_TOL / n)}', 1)})"
             w.emit(depth, f"for i in range({n}) {{")
             self.hole_block(depth + 1, hn, sh, c, sizes)
             w.emit(depth, "}")
@@ -923,7 +934,7 @@ class _Part:
                     if len(run) < 3:
                         continue
                     hn = self.name(base + "s")
-                    pitch = self.p(hn + "_pitch", step)
+                    pitch = self.p(hn + "_pitch", step, times=len(run))
                     first = run[0][1].center
                     c = [None, None]
                     c[1 - axis] = self.plus(first[1 - axis], f"i * {pitch}", 1 - axis)
@@ -1116,8 +1127,10 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
     w.emit(depth + 1, f"L = {L}")
     if f[0] == "row":
         _, p0, d, u, _ = f
-        x = _plus(p0[0], f"i * {_r(d[0])}") if abs(d[0]) > ROUND_TOL else _r(p0[0])
-        y = _plus(p0[1], f"i * {_r(d[1])}") if abs(d[1]) > ROUND_TOL else _r(p0[1])
+        x = _plus(p0[0], f"i * {_num(d[0], ROUND_TOL / n)}") if abs(d[0]) > ROUND_TOL \
+            else _r(p0[0])
+        y = _plus(p0[1], f"i * {_num(d[1], ROUND_TOL / n)}") if abs(d[1]) > ROUND_TOL \
+            else _r(p0[1])
         w.emit(depth + 1, f"x = {x}")
         w.emit(depth + 1, f"y = {y}")
 
@@ -1243,15 +1256,14 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
-    from ..geometry.curves import Loop   # noqa: F401  (program._containers uses it)
     dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
     outer = [segs for segs, k in zip(loops, dep) if k == 0]
     holes = [segs for segs, k in zip(loops, dep) if k % 2 == 1]
     islands = [segs for segs, k in zip(loops, dep) if k and k % 2 == 0]
     # whole ellipses: holes when inside an outline
     import numpy as np
-    from ..geometry.curves import Loop
-    polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops]
+    polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops] \
+        if d.ellipses else []
     ell_holes, ell_body = [], []
     for el in d.ellipses:
         inside = sum(1 for P in polys if len(P) >= 3 and _inside((el[0], el[1]), P))
@@ -1324,9 +1336,10 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         elif rep:
             (x0, y0), (dx, dy), n = rep[0]
             pre = short[name] + "_"
-            sx = f"k * {params.add(pre + 'pitch_x' if abs(dy) > ROUND_TOL else pre + 'pitch', dx)}" \
+            nm_x = pre + "pitch_x" if abs(dy) > ROUND_TOL else pre + "pitch"
+            sx = f"k * {params.add(nm_x, dx, times=n)}" \
                 if abs(dx) > ROUND_TOL else None
-            sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy)}" \
+            sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
                 if abs(dy) > ROUND_TOL else None
             w.emit(depth, f"for k in range({n}) {{")
             _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
