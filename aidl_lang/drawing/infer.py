@@ -517,32 +517,57 @@ def _collinear(p: Line, q: Line) -> bool:
 
 
 def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
-    """What to hold (``Fixed``) so that a chain written by :meth:`~.program._Writer.chain`
-    with ``prefix`` stays where the file put it, and nothing twice: every arc (its centre,
-    radius and angles; a neighbour's end is then held through it), and each join of two
-    lines (a point).  Only chains of lines and arcs with no two arcs joined (a spline piece's
-    chain, or two arcs meeting: none, the chain stays free as ``aidl import`` writes it)."""
+    """What to hold so that a chain written by :meth:`~.program._Writer.chain` with
+    ``prefix`` stays where the file put it, and nothing twice (no ``W0401``): an arc between
+    two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
+    (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
+    centre is then the one point at that distance from both held ends).  Returns the things
+    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
+    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
+    import`` writes it."""
     if not all(isinstance(g, (Line, Arc)) for g in segs):
+        from ..geometry.curves import Spline
+        from .program import _bezier_runs
+        one = _bezier_runs(list(segs))
+        if closed and len(one) == 1 and isinstance(one[0], Spline):
+            return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
         return []
     n = len(segs)
-    if any(isinstance(segs[i], Arc) and isinstance(segs[i - 1], Arc)
-           for i in range(0 if closed else 1, n)):
-        return []       # two arcs held at one join say it twice (W0401): left free
-    out = [f"{prefix}{i}" for i, g in enumerate(segs) if isinstance(g, Arc)]
-    for i, g in enumerate(segs):
-        before = segs[i - 1] if (closed or i > 0) else None
-        if isinstance(g, Line) and not isinstance(before, Arc):
-            out.append(f"{prefix}{i}.start")
-    if not closed and isinstance(segs[-1], Line):
-        out.append(f"{prefix}{n - 1}.end")
+
+    def piece(i):
+        return segs[i % n] if closed or 0 <= i < n else None
+
+    def arc_alone(i):
+        return isinstance(piece(i), Arc) and not isinstance(piece(i - 1), Arc) and \
+            not isinstance(piece(i + 1), Arc)
+
+    def start(i):       # the expression of piece i's start as written
+        g = segs[i]
+        return f"{prefix}{i}.end" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.start"
+
+    def end(i):
+        g = segs[i]
+        return f"{prefix}{i}.start" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.end"
+    out = [f"{prefix}{i}" for i in range(n) if arc_alone(i)]
+    for i in range(n):                      # the join at the start of piece i
+        if not (arc_alone(i) or (piece(i - 1) is not None and arc_alone(i - 1))):
+            out.append(start(i))
+    if not closed and not arc_alone(n - 1):
+        out.append(end(n - 1))
+    out += [f"{prefix}{i}.radius == {_num(g.radius)}" for i, g in enumerate(segs)
+            if isinstance(g, Arc) and not arc_alone(i)]
     return out
 
 
-def _emit_holds(w: _Writer, depth: int, holds: list[str]) -> None:
-    if len(holds) == 1:
-        w.emit(depth, f"Fixed({holds[0]})")
-    elif holds:
-        w.emit(depth, f"for x in [{', '.join(holds)}] {{ Fixed(x) }}")
+def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> None:
+    fixed = [h for h in holds if " == " not in h]
+    if len(fixed) == 1:
+        w.emit(depth, f"Fixed({fixed[0]})")
+    elif fixed:
+        w.emit(depth, f"for {var} in [{', '.join(fixed)}] {{ Fixed({var}) }}")
+    for h in holds:
+        if " == " in h:
+            w.emit(depth, h)
 
 
 # ------------------------------------------------------------------ the writer
@@ -742,7 +767,7 @@ class _Part:
                     w.emit(depth + 1, f"{nm} = {_ctor(tt, self.center(tt.center))}")
                 fixed.append(nm)
             w.emit(depth, "}")
-            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in fixed)}] {{ Fixed(x) }}")
+            _emit_holds(w, depth, [f"{hn}.{f}" for f in fixed])
             self.stats.kinds[rect.kind] += 1
             self.stats.in_shapes += len(segs)
             return
@@ -774,7 +799,7 @@ class _Part:
         ok = w.chain(depth + 1, segs, True, "e")
         w.emit(depth, "}")
         if ok:
-            _emit_holds(w, depth, [f"{hn}.{x}" for x in _holds(segs, "e")])
+            _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
                    loop: bool = False) -> None:
@@ -1205,8 +1230,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             k += 1
             w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
-    if held:
-        w.emit(depth, f"for g in [{', '.join(held)}] {{ Fixed(g) }}")
+    _emit_holds(w, depth, held, "g")
 
 
 def _signature(d: Drawing):
