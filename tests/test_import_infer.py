@@ -303,10 +303,14 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))
 @pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
 def test_every_example_round_trips_exactly(example, tmp_path):
     """What is recognised is exact and what is not stays an exact chain: every example
-    rendered to DXF, inferred and rendered again gives the same curves to 1e-6 mm."""
+    rendered to DXF, inferred and rendered again gives the same curves to 1e-6 mm, held
+    where the file put it (no degree of freedom left) with no warning."""
     text, first, again, second = _round_trip(tmp_path, None, example.stem, path=example)
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
+    warned = [d for d in again.diagnostics if d.severity == "warning"]
+    assert not warned, [str(d) for d in warned][:2]
+    assert again.freedom()["dof"] == 0, again.freedom()["text"]
     assert "# recognised: " in text
 
 
