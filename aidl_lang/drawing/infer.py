@@ -1258,6 +1258,12 @@ def _signature(d: Drawing):
     return (body.kind, body.size, holes), body.center
 
 
+def _rounded(x):
+    if isinstance(x, (list, tuple)):
+        return tuple(_rounded(y) for y in x)
+    return round(x, 5) + 0.0 if isinstance(x, float) else x
+
+
 def _same_sig(a, b) -> bool:
     def flat(x):
         if isinstance(x, (list, tuple)):
@@ -1399,8 +1405,17 @@ def _copies(items: list, deadline=None) -> list:
     """``items`` with each run of parts that are copies of one part moved evenly along a line
     (the washers laid out under a plate) as one item ``(kind, name, first part, (start,
     step, count))``."""
-    sigs = [(_signature(d) if kind == "solid" else None) for kind, _, d in items]
+    sigs = []
+    for k, (kind, _, d) in enumerate(items):
+        if deadline is not None and k % 64 == 0:
+            deadline.check("finding the copies of a part")
+        sigs.append(_signature(d) if kind == "solid" else None)
     names = {name for _, name, _ in items}
+    # parts whose numbers round alike, then each checked against the first to EQUAL_TOL
+    buckets: dict = {}
+    for j, sg in enumerate(sigs):
+        if sg is not None:
+            buckets.setdefault(repr(_rounded(sg[0])), []).append(j)
     out = []
     taken: set = set()
     for i, (kind, name, d) in enumerate(items):
@@ -1409,11 +1424,14 @@ def _copies(items: list, deadline=None) -> list:
         if sigs[i] is None:
             out.append((kind, name, d))
             continue
-        group = [j for j in range(i, len(items)) if j not in taken and sigs[j] is not None
+        group = [j for j in buckets[repr(_rounded(sigs[i][0]))] if j >= i and j not in taken
                  and _same_sig(sigs[i][0], sigs[j][0])]
         ln = _line([sigs[j][1] for j in group]) if len(group) >= 2 else None
         if ln is None:
             out.append((kind, name, d))
+            sigs_done = set(group)      # no row: each on its own, never grouped again
+            for j in sigs_done:
+                sigs[j] = None if j != i else sigs[j]
             continue
         p0, step, n = ln
         first = min(group, key=lambda j: sigs[j][1])
