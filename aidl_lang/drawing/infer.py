@@ -717,7 +717,9 @@ class _Part:
     # the holes --------------------------------------------------------------
     def holes(self, depth: int, loops: list, body) -> None:
         shapes = []
-        for segs in loops:
+        for k, segs in enumerate(loops):
+            if self.w.deadline is not None and k % 128 == 0:
+                self.w.deadline.check("recognising the holes of the drawing")
             self.stats.pieces += len(segs)
             sh = recognise(segs)
             if sh is None:
@@ -1302,6 +1304,8 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     body = None
     outer.sort(key=lambda s: -abs(Loop(list(s)).area))
     for i, segs in enumerate(outer):
+        if w.deadline is not None and i % 128 == 0:
+            w.deadline.check("recognising the outlines of the drawing")
         got = part.body(depth + 1, segs, i == 0)
         if i == 0:
             body = got
