@@ -169,6 +169,19 @@ The value, and any `--set width=...`, must lie between `min` and `max` (both opt
 `min`, `max` and `step` have the param's unit (a bare number means the file's unit), `min` is
 not larger than `max`, and `step` is positive.  Choose a value inside the range or widen it.
 """),
+    "E0125": ("a `cut` where it cuts nothing", """
+A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
+through the solid the cut sits in. So a cut belongs inside a `solid` (or inside another `cut`),
+and holds only curves and other cuts. At the top level, in an `assembly`, a `drawing` (whose
+lines are engraved) or a `hole` (removed whole already) it has no material to cut:
+
+    drawing marks { cut slits { l = Line(start=(0, 0), end=(10, 0)) } }   # error
+
+    solid panel {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        cut slits { l = Line(start=(-20, 0), end=(20, 0)) }                 # cut through
+    }
+"""),
     "E0201": ("geometry refers to another structure (validity rule 1)", """
 Geometry may only be built from geometry of its own structure. This keeps each structure
 solvable on its own. Give the geometry its own starting value and relate it to the other
@@ -762,6 +775,19 @@ real size (or a smaller `--min-wall`) has fewer edges within reach.
 
     aidl check usa.aidl
     # note[W0521]: not checked: slits (W0519) in `borders`: out of its share of the time (3 s of the 15 s budget)
+"""),
+    "W0522": ("through-cut off the material", """
+A curve of a `cut` structure is a through-cut: the laser cuts along it through the part. This
+one has no stretch on the material of its part (it is drawn beside the part, or inside a hole),
+or no length (its ends on each other), so it cuts nothing. Move it onto the part, or delete it; a line meant to be engraved belongs in
+a `drawing`. A through-cut that separates material makes the piece it cuts off a part of its
+own (or a hole, when the piece is enclosed); one that leaves a web thinner than the minimum
+wall between two cuts, or a cut and the outline, is W0507.
+
+    solid panel {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        cut slits { a = Line(start=(40, 0), end=(50, 0)) }   # beside the panel: cuts nothing
+    }
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:

@@ -21,6 +21,11 @@ Routes:
   params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
 * ``POST /api/describe``: ``{"sid", "description"}`` -> the model loop's rounds as
   newline-delimited JSON (only when the operator set ``AIDL_STUDIO_MODEL_URL``).
+* ``GET /healthz``, ``GET /metrics``: readiness and Prometheus metrics (:mod:`.metrics`).
+
+Shared state (``--store redis://...``: uploads and rate counters in Redis, :mod:`.store`) and
+compiles on a Dask cluster (``--scheduler``, :mod:`.remote`) let any process of any machine
+answer any request.
 
 Many users: each compile runs in a worker process (:mod:`aidl_lang.workers`) with the
 compile's budget, a wall-time limit and a memory cap; a request waits at most
@@ -44,6 +49,7 @@ from importlib import resources
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
+from starlette.middleware import Middleware
 from starlette.requests import Request
 from starlette.responses import JSONResponse, PlainTextResponse, Response, StreamingResponse
 from starlette.routing import Route
@@ -51,7 +57,9 @@ from starlette.routing import Route
 from .. import workers as W
 from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES
 from . import compiler
-from .sessions import MAX_UPLOAD, Folders, Refused, new_id
+from .metrics import Metrics, RequestMetrics
+from .sessions import MAX_UPLOAD, Refused, new_id
+from .store import StoreDown, down, limiter_storage, open_store
 
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "json": "application/json",
@@ -76,12 +84,15 @@ class Settings:
     queue: int = 16                 # requests that may wait at once before "busy" at once
     rate: str = "300/minute"        # per client (``limits`` notation)
     describes: int = 2              # model loops that may run at once
+    store: str = ""                 # redis://HOST:PORT/DB: uploads and rate counters there
+    scheduler: str = ""             # tcp://HOST:PORT: compiles on this Dask cluster
     model: dict | None = field(default=None, repr=False)   # describe.model_config()
 
     ENV = {"data": "AIDL_STUDIO_DATA", "compilers": "AIDL_STUDIO_COMPILERS",
            "memory_mb": "AIDL_STUDIO_MEMORY_MB", "budget": "AIDL_STUDIO_BUDGET",
            "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
-           "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES"}
+           "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES",
+           "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER"}
 
     @classmethod
     def from_env(cls, env=os.environ) -> "Settings":
@@ -196,20 +207,24 @@ class Studio:
 
     def __init__(self, settings: Settings) -> None:
         from limits import parse
-        from limits.storage import MemoryStorage
         from limits.strategies import MovingWindowRateLimiter
         self.settings = settings
-        self.folders = Folders(settings.data)
+        self.folders = open_store(settings.data, settings.store)
         memory = settings.memory_mb << 20 if settings.memory_mb > 0 else None
-        self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
-                            for _ in range(max(1, settings.compilers))])
-        self.limiter = MovingWindowRateLimiter(MemoryStorage())
+        if settings.scheduler:
+            from .remote import Remote
+            self.pool = Remote(settings.scheduler, settings.budget, memory, settings.queue)
+        else:
+            self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
+                                for _ in range(max(1, settings.compilers))])
+        self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
         self.affinity: dict[str, W.Worker] = {}
         self.thumbs: dict[str, str] = {}
         self.describing = 0
         self.static = static_files()
         self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0}
+        self.metrics = Metrics(self)
 
     def check_rate(self, request: Request, cost: int = 1) -> None:
         """Raises :class:`Limited` (429) when the client is past its rate."""
@@ -232,9 +247,11 @@ class Studio:
                                "for a compiler. Your design is kept here; it is compiled "
                                "again in a few seconds.", 5)
         prefer = self.affinity.get(sid) if sid else None
+        t0 = time.perf_counter()
         try:
             answer, w = await run_in_threadpool(self.pool.request, request_data, s.seconds,
                                                 s.wait, prefer)
+            self.metrics.compiled(request_data[0], time.perf_counter() - t0)
         except W.Busy:
             self.served["busy"] += 1
             raise Limited(503, "the studio is busy: every compiler stayed busy for "
@@ -284,6 +301,12 @@ def create_app(settings: Settings | None = None) -> Starlette:
                 return refusal(e.status, e.message, e.retry, busy=e.status == 503)
             except Refused as e:
                 return refusal(400, str(e))
+            except Exception as e:
+                if not down(e):
+                    raise
+                return refusal(503, str(e) if isinstance(e, StoreDown) else
+                               "the studio's store (Redis) does not answer; your design is "
+                               "kept in this page, try again in a few seconds", 5, busy=True)
         return endpoint
 
     def page_response(embed: bool) -> Response:
@@ -459,6 +482,13 @@ def create_app(settings: Settings | None = None) -> Starlette:
                                           "rss": w.rss(), "requests": w.requests,
                                           "restarts": w.restarts} for w in st.pool.workers]})
 
+    async def healthz(request):
+        live = request.query_params.get("probe") == "live"
+        return await run_in_threadpool(st.metrics.health, live)
+
+    async def metrics(request):
+        return await run_in_threadpool(st.metrics.response)
+
     @contextlib.asynccontextmanager
     async def lifespan(app):
         try:
@@ -483,7 +513,9 @@ def create_app(settings: Settings | None = None) -> Starlette:
         Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
         Route("/api/describe", guarded(describe, 20), methods=["POST"]),
         Route("/api/stats", stats),
+        Route("/healthz", healthz), Route("/metrics", metrics),
     ]
-    app = Starlette(routes=routes, lifespan=lifespan)
+    app = Starlette(routes=routes, lifespan=lifespan,
+                    middleware=[Middleware(RequestMetrics, metrics=st.metrics, routes=routes)])
     app.state.studio = st
     return app

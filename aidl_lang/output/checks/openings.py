@@ -24,11 +24,11 @@ merge or reach the outline."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import manifold3d as mf
 import numpy as np
 
+from ...records import Compared
 from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
@@ -400,16 +400,20 @@ TOUCH = 2 * CHORD_TOL
 DRAWN_IN = 0.5      # of a refiller's area inside the hole it refills: drawn into the opening
 
 
-@dataclass
-class _Openings:
+class _Openings(Compared):
     """What :func:`_analyse` finds between the holes of one part and its outline."""
-    names: list                     # feature names: 0 the outline, 1.. the holes
-    spans: list
-    merges: list = field(default_factory=list)   # (i, j, depth mm, common area mm^2 | None)
-    webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
-    notches: set = field(default_factory=set)    # holes that reach the outline
-    areas: list = field(default_factory=list)    # of the features' regions, mm^2
-    cuts: list = field(default_factory=list)     # the holes' cuts: cuts[k - 1] is feature k
+    __slots__ = ("names", "spans", "merges", "webs", "notches", "areas", "cuts")
+
+    def __init__(self, names: list, spans: list, merges: list | None = None,
+                 webs: list | None = None, notches: set | None = None, areas: list | None = None,
+                 cuts: list | None = None):
+        self.names = names  # feature names: 0 the outline, 1.. the holes
+        self.spans = spans
+        self.merges = [] if merges is None else merges  # (i, j, depth mm, common area mm^2 | None)
+        self.webs = [] if webs is None else webs  # (i, j, width, length, (x, y))
+        self.notches = set() if notches is None else notches  # holes that reach the outline
+        self.areas = [] if areas is None else areas  # of the features' regions, mm^2
+        self.cuts = [] if cuts is None else cuts  # the holes' cuts: cuts[k - 1] is feature k
 
 
 def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,
@@ -654,8 +658,9 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     if cut_area <= max(1e-9, 1e-6 * whole):
         if _over_opening(d, hole_shape, whole, _part_of(s, roots), roots):
             return                       # it declares an opening the solids enclose (W0515)
-        sink.warning("W0502", f"hole `{h.path}` cuts nothing: it lies outside solid `{s.path}`",
-                     h.span, hint=f"move the hole inside `{s.path}` (for example "
+        sink.warning("W0502", f"{h.kind} `{h.path}` cuts nothing: it lies outside solid "
+                     f"`{s.path}`",
+                     h.span, hint=f"move the {h.kind} inside `{s.path}` (for example "
                                   f"`CenterInside({h.name}, self)`), or declare it in the solid "
                                   "it should cut")
         return

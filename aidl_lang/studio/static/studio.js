@@ -15,8 +15,17 @@ window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view
 
 // ------------------------------------------------------------------ requests
 async function post(path, body, raw = false) {
-  const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
-                                body: JSON.stringify(body) });
+  let r;
+  try {
+    r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
+                            body: JSON.stringify(body) });
+  } catch (err) { r = null; }          // the network, or a proxy that dropped the connection
+  // 502/504 or no answer: the proxy lost its studio process (docs/studio.md); another answers
+  if (!r || r.status === 502 || r.status === 504) {
+    const message = "the studio cannot be reached; your design is kept here";
+    showBusy(message, 3);
+    const e = new Error(message); e.retry = 3; throw e;
+  }
   if (r.status === 429 || r.status === 503) {
     const doc = await r.json().catch(() => ({}));
     const wait = Number(r.headers.get("Retry-After")) || 5;
