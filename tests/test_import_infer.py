@@ -274,6 +274,25 @@ def test_an_outline_turned_round_a_centre_is_one_turn_and_a_pattern(tmp_path):
     assert not left and not extra, (left[:3], extra[:3])
 
 
+def test_a_part_holding_what_infer_does_not_know_is_written_piece_by_piece(plate):
+    """A field the reader may gain (say, open cut paths) that the inferred writer does not
+    write: that part goes to `aidl import`'s own writer whole, so nothing is dropped."""
+    from dataclasses import dataclass, field, fields
+    from aidl_lang.drawing.infer import to_program_inferred
+    from aidl_lang.drawing.read import Drawing, read_drawing
+    _, first, _, _ = plate
+    d = read_drawing(first.read_bytes(), "plate.dxf", keep_text=True)
+
+    @dataclass
+    class Later(Drawing):
+        cuts: list = field(default_factory=list)
+    later = Later(**{f.name: getattr(d, f.name) for f in fields(Drawing)}, cuts=["a slit"])
+    text, _ = to_program_inferred([("", later)], "plate.dxf")
+    assert "RoundedRectangle" not in text and "Arc(center=" in text and "hole hole" in text
+    text, _ = to_program_inferred([("", d)], "plate.dxf")
+    assert "RoundedRectangle" in text
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")

@@ -1239,7 +1239,8 @@ def _signature(d: Drawing):
     """``(numbers, body centre)`` of a simple part (one recognised outline, recognised holes,
     nothing else), its numbers the same for two parts that are copies of each other moved;
     None for any other part."""
-    if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty):
+    if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty) \
+            or _unknown(d):
         return None
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     dep = [len(c) for c in _containers(loops)] if loops else []
@@ -1283,8 +1284,23 @@ def _same_sig(a, b) -> bool:
     return True
 
 
+# what a Drawing holds that the inferred writer writes (a field it does not know, added to
+# the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
+_KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
+          "engrave"}
+
+
+def _unknown(d: Drawing) -> bool:
+    from dataclasses import fields
+    return any(getattr(d, f.name) for f in fields(d) if f.name not in _KNOWN)
+
+
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
            prefix: str, shift=None) -> None:
+    if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
+        from .program import _structure
+        _structure(w, depth, "solid", name, d)
+        return
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
