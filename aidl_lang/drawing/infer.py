@@ -7,22 +7,28 @@ each outer loop):
 
 * its outline as the primitive it is (:func:`~.infer_shapes.recognise`: ``RoundedRectangle``,
   ``Slot``, ``RegularPolygon``, ...), or a recognised rectangle with *attachments* (a tab
-  standing out of one side: the pieces off the rectangle's side, closed inside it), else the
-  exact chain;
+  standing out of one side: the pieces off the rectangle's side, closed inside it), or a
+  circle with teeth (a loop of turned ``Polygon``s), or one run of pieces turned ``n`` times
+  round a centre (``CircularPattern`` of each), else the exact chain;
 * its openings as ``hole`` children named by what they are, repeated ones as loops:
   four at the corners of a rectangular body (``corner_holes``, by the body's size and one
   inset), a bolt circle (``bolt_circle``: equal circles evenly round a centre, its diameter a
   ``param``), a bore (a circle on the bolt circle's or the body's centre), rows and grids
-  (``for`` over equal steps); equal sizes are one ``param``;
-* its engravings (open paths, text, engraved shapes) as one ``drawing``;
-* ``Fixed`` on every recognised shape, so ``aidl check --dof`` has nothing to report: each
-  shape is held where its expression puts it, and ``--set`` of a param moves and resizes
-  what is written with it.
+  (``for`` over equal steps), mirrored pairs (``for s in [-1, 1]``); equal sizes are one
+  ``param``; copies of a whole part in a row are one ``solid`` in a ``for``;
+* its engravings (open paths, text, engraved shapes) as one ``drawing``, ticks in a row or
+  round a centre as one loop;
+* ``Fixed`` on every recognised shape and the holds of every chain that stays
+  (:func:`_holds`), so ``aidl check --dof`` has nothing to report: each shape is held where
+  its expression puts it, and ``--set`` of a param moves and resizes what is written with
+  it.
 
 Parameters are named for the part (``plate_width``) when there are several parts, and
 written with the shortest decimal within :data:`~.infer_shapes.ROUND_TOL` (1e-9 mm) of the
 drawing's number; two sizes or steps are equal within :data:`~.infer_shapes.EQUAL_TOL`
-(1e-7 mm).  The notes say what was recognised (pieces -> shapes) and these tolerances.
+(1e-7 mm).  The program's head says what was recognised (pieces -> shapes) and these
+tolerances.  A part holding what this writer does not know is written by
+:func:`~.program.to_program`'s own code, whole.
 """
 from __future__ import annotations
 
@@ -1351,8 +1357,11 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
                         deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
-    it, written as recognised shapes, patterns and parameters (module doc), and the notes:
-    what was left out, and one ``W0131`` saying what was recognised."""
+    it (``parts``: a sheet, one solid per outer loop; ``deadline``: the import's), written as
+    recognised shapes, patterns and parameters (module doc), its head comment saying what
+    was recognised (pieces -> shapes, patterns) and the tolerances; and the notes of what was
+    left out.  Lengths in mm.  Raises :class:`~aidl_lang.limits.OutOfBudget` past the
+    deadline (:func:`~.program.import_drawing` words it as ``E0304``)."""
     w = _Writer(deadline)
     params = _Params()
     stats = _Stats()
