@@ -223,7 +223,7 @@ def _attachments(segs: list):
     corner arcs (or, with none, the loop's longest lines), checked as every one of its own
     pieces lying on the loop's pieces."""
     arcs = [s for s in segs if isinstance(s, Arc)]
-    if not any(isinstance(s, Line) for s in segs):
+    if not any(isinstance(s, Line) for s in segs) or len(segs) > 64:
         return None
     by_r: dict = {}
     for a in arcs:
@@ -242,6 +242,23 @@ def _attachments(segs: list):
                 cx, cy = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
                 w, h = abs(p[0] - q[0]) + 2 * R, abs(p[1] - q[1]) + 2 * R
                 cands.append(((cx, cy), w, h, R))
+    if not cands:
+        # a sharp-cornered rectangle: its sides from the loop's horizontal and vertical lines
+        hs = [g for g in segs if isinstance(g, Line) and abs(g.start[1] - g.end[1]) <= EQUAL_TOL]
+        vs = [g for g in segs if isinstance(g, Line) and abs(g.start[0] - g.end[0]) <= EQUAL_TOL]
+        if hs and vs:
+            xs = [g.start[0] for g in vs]
+            ys = [g.start[1] for g in hs]
+            ys_v = [p[1] for g in vs for p in (g.start, g.end)]
+            x0, x1 = min(xs), max(xs)
+            y0, y1 = min(ys), max(ys)
+            if y1 - y0 <= EQUAL_TOL:            # one side only: the other from the verticals
+                y0, y1 = min(ys + ys_v), max(ys + ys_v)
+            xs_h = [p[0] for g in hs for p in (g.start, g.end)]
+            if x1 - x0 <= EQUAL_TOL:
+                x0, x1 = min(xs + xs_h), max(xs + xs_h)
+            if x1 - x0 > EQUAL_TOL and y1 - y0 > EQUAL_TOL:
+                cands.append((((x0 + x1) / 2, (y0 + y1) / 2), x1 - x0, y1 - y0, 0.0))
     for center, w, h, R in sorted(cands, key=lambda c: -c[1] * c[2]):
         got = _split_rect(segs, center, w, h, R)
         if got is not None:
@@ -630,14 +647,14 @@ class _Part:
         sh = recognise(segs)
         tabs = None
         teeth = None
+        if sh is None:          # a circle with teeth, before a rectangle with tabs
+            got = _circle_attachments(segs)
+            if got is not None:
+                sh, teeth = got
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
                 sh, tabs = got
-            elif sh is None:
-                got = _circle_attachments(segs)
-                if got is not None:
-                    sh, teeth = got
         nm = self.name("body" if first else "outline")
         if sh is None:
             pc = _polar_chain(segs)
@@ -755,6 +772,29 @@ class _Part:
         """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
         a tab, both written in one ``hole``; else the exact chain."""
         w = self.w
+        got = _circle_attachments(segs)
+        if got is not None:
+            circle, teeth = got
+            concentric = body is not None and _close(circle.center, body[0].center)
+            hn = self.name("bore" if concentric else "round_hole")
+            w.emit(depth, f"hole {hn} {{")
+            w.emit(depth + 1, f"h = {_ctor(circle, self.center(circle.center))}")
+            names = ["h"]
+            sub = _Part(w, self.params, self.stats, self.prefix)
+            sub.shift = self.shift
+            word = "key" if len(teeth) == 1 else "notch"
+            if len(teeth) == 1:
+                pts = ", ".join(self.center(p) for p in teeth[0])
+                w.emit(depth + 1, f"key = Polygon([{pts}])")
+                names.append("key")
+                self.stats.kinds["Polygon"] += 1
+            else:
+                sub.teeth(depth + 1, circle, teeth, word)
+            w.emit(depth, "}")
+            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in names)}] {{ Fixed(x) }}")
+            self.stats.kinds["Circle"] += 1
+            self.stats.in_shapes += len(segs)
+            return
         got = _attachments(segs)
         if got is not None:
             rect, tabs = got
@@ -777,29 +817,6 @@ class _Part:
             w.emit(depth, "}")
             _emit_holds(w, depth, [f"{hn}.{f}" for f in fixed])
             self.stats.kinds[rect.kind] += 1
-            self.stats.in_shapes += len(segs)
-            return
-        got = _circle_attachments(segs)
-        if got is not None:
-            circle, teeth = got
-            concentric = body is not None and _close(circle.center, body[0].center)
-            hn = self.name("bore" if concentric else "round_hole")
-            w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"h = {_ctor(circle, self.center(circle.center))}")
-            names = ["h"]
-            sub = _Part(w, self.params, self.stats, self.prefix)
-            sub.shift = self.shift
-            word = "key" if len(teeth) == 1 else "notch"
-            if len(teeth) == 1:
-                pts = ", ".join(self.center(p) for p in teeth[0])
-                w.emit(depth + 1, f"key = Polygon([{pts}])")
-                names.append("key")
-                self.stats.kinds["Polygon"] += 1
-            else:
-                sub.teeth(depth + 1, circle, teeth, word)
-            w.emit(depth, "}")
-            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in names)}] {{ Fixed(x) }}")
-            self.stats.kinds["Circle"] += 1
             self.stats.in_shapes += len(segs)
             return
         hn = self.name("cutout")
