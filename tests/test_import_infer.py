@@ -293,6 +293,24 @@ def test_a_part_holding_what_infer_does_not_know_is_written_piece_by_piece(plate
     assert "RoundedRectangle" in text
 
 
+def test_a_real_drawing_renders_as_the_plain_import(tmp_path):
+    """ezdxf's hatches_2.dxf (an outline with an elliptical arc whose ends lie on a straight
+    side, which once passed for a rectangle with a tab): the inferred program renders as
+    `aidl import`'s own to 1e-6 mm (benchmarks/import_infer.py --corpus does all 69)."""
+    import gzip
+    data = gzip.decompress((ROOT / "tests/data/ezdxf/examples_dxf_hatches_2.dxf.gz")
+                           .read_bytes())
+    out = []
+    for infer in (False, True):
+        text, _ = import_drawing(data, "hatches_2.dxf", infer=infer)
+        res = aidl_lang.compile(text, path=tmp_path / f"h{infer}.aidl")
+        assert res.ok, [str(d) for d in res.errors]
+        out.append(tmp_path / f"h{infer}.dxf")
+        out[-1].write_text(res.to_dxf())
+    left, extra = _same(*out)
+    assert not left and not extra, (left[:3], extra[:3])
+
+
 @pytest.fixture(scope="module")
 def mounting(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("mounting")

@@ -223,7 +223,8 @@ def _attachments(segs: list):
     corner arcs (or, with none, the loop's longest lines), checked as every one of its own
     pieces lying on the loop's pieces."""
     arcs = [s for s in segs if isinstance(s, Arc)]
-    if not any(isinstance(s, Line) for s in segs) or len(segs) > 64:
+    if not any(isinstance(s, Line) for s in segs) or len(segs) > 64 or \
+            not all(isinstance(s, (Line, Arc)) for s in segs):
         return None
     by_r: dict = {}
     for a in arcs:
@@ -270,6 +271,8 @@ def _on_piece(m, s) -> bool:
     """Piece ``m`` of the rectangle lies on piece ``s`` of the loop, or ``s`` on ``m``
     (a side of the rectangle interrupted by a tab is two shorter lines)."""
     from .infer_shapes import _same
+    if not isinstance(s, (Line, Arc)):
+        return False            # a curve is never a piece of a side (its ends may be)
     if isinstance(m, Arc) or isinstance(s, Arc):
         return isinstance(m, Arc) and isinstance(s, Arc) and _same(m, s)
     ux, uy = m.end[0] - m.start[0], m.end[1] - m.start[1]
