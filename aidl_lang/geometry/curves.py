@@ -308,11 +308,13 @@ class Loop(Compared):
         return self.area < 0
 
     def points(self, tol: float | None = None):
-        """A polyline of the loop (N x 2 array, closed implicitly), arcs sampled by
-        :func:`~aidl_lang.geometry.tessellate.segments_for` chords."""
+        """A polyline of the loop (N x 2 array, mm, closed implicitly), arcs and circles sampled
+        by :func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` (mm; None:
+        ``CHORD_TOL``; splines and ellipses always within ``CHORD_TOL``), every vertex on the
+        exact curve."""
         import numpy as np
         xs, ys = [], []
-        sample_xy(self.segments, xs, ys)
+        sample_xy(self.segments, xs, ys, tol)
         return np.column_stack([np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)]) \
             if xs else np.zeros((0,), dtype=float)
 
@@ -320,11 +322,13 @@ class Loop(Compared):
         return Loop([reverse(s) for s in reversed(self.segments)])
 
 
-def sample_xy(segments, xs: list, ys: list) -> None:
+def sample_xy(segments, xs: list, ys: list, tol: float | None = None) -> None:
     """Append the vertices of :meth:`Loop.points` of ``segments`` to ``xs`` and ``ys``: each
     line's start, each arc's start and its interior chord ends, each circle's chord ends
-    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords, mm)."""
-    from .tessellate import segments_for
+    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` mm, None:
+    ``CHORD_TOL``)."""
+    from .tessellate import CHORD_TOL, segments_for
+    tol = CHORD_TOL if tol is None else max(float(tol), CHORD_TOL)
     cos, sin, pi = math.cos, math.sin, math.pi
     for s in segments:
         if isinstance(s, Line):
@@ -339,14 +343,15 @@ def sample_xy(segments, xs: list, ys: list) -> None:
         elif isinstance(s, Arc):
             cx, cy = s.center
             r, a0, sw = s.radius, s.start_angle, s.sweep
-            n = max(1, segments_for(r, abs(sw)))
+            # a coarse view's arc may be one chord; the exact writers' keep at least 3
+            n = max(1, segments_for(r, abs(sw), tol, 3 if tol == CHORD_TOL else 1))
             angles = [a0 + sw * i / n for i in range(n)]
             xs += [cx + r * cos(a) for a in angles]
             ys += [cy + r * sin(a) for a in angles]
         else:
             cx, cy = s.center
             r = s.radius
-            n = segments_for(r)
+            n = segments_for(r, 2 * pi, tol)
             sg = 1 if s.ccw else -1
             angles = [sg * 2 * pi * i / n for i in range(n)]
             xs += [cx + r * cos(a) for a in angles]

@@ -17,6 +17,9 @@ Routes:
   ``POST /api/delete``: a session's drawings and imports.
 * ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
   params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
+* ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
+  smaller mesh than the download, made from the preview's drawing; gzip when the browser
+  takes it).
 * ``POST /api/describe``: ``{"sid", "description"}`` -> the model loop's rounds as
   newline-delimited JSON (only when the operator set ``AIDL_STUDIO_MODEL_URL``).
 * ``GET /healthz``, ``GET /metrics``: readiness and Prometheus metrics (:mod:`.metrics`).
@@ -440,6 +443,23 @@ def create_app(settings: Settings | None = None) -> Starlette:
                         headers={"Content-Disposition": f'attachment; filename="{name}"',
                                  "X-Content-Type-Options": "nosniff"})
 
+    async def glb(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, values = program_of(doc)
+        answer = await st.compile(("glb", sid, folder, source, values,
+                                   doc.get("settings") or {}), sid)
+        if isinstance(answer, dict):
+            return JSONResponse(answer, status_code=422)
+        data, headers = answer[0], {"Cache-Control": "no-store", "X-Content-Type-Options": "nosniff",
+                                    "Vary": "Accept-Encoding"}
+        if "gzip" in request.headers.get("accept-encoding", ""):
+            import gzip
+            data = await run_in_threadpool(gzip.compress, data, 6)
+            headers["Content-Encoding"] = "gzip"
+        return Response(data, media_type=answer[2], headers=headers)
+
     async def describe(request):
         if not settings.model:
             return refusal(404, "this studio has no model endpoint (the operator sets "
@@ -500,6 +520,7 @@ def create_app(settings: Settings | None = None) -> Starlette:
         Route("/api/delete", guarded(delete), methods=["POST"]),
         Route("/api/view", guarded(view), methods=["POST"]),
         Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
+        Route("/api/glb", guarded(glb), methods=["POST"]),
         Route("/api/describe", guarded(describe, 20), methods=["POST"]),
         Route("/api/stats", stats),
         Route("/healthz", healthz), Route("/metrics", metrics),
