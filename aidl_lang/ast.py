@@ -13,7 +13,7 @@ import functools
 
 from .diagnostics import Span
 
-STRUCTURE_KINDS = ("solid", "hole", "drawing", "assembly")
+STRUCTURE_KINDS = ("solid", "hole", "cut", "drawing", "assembly")
 
 
 class Node:

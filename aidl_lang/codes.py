@@ -169,6 +169,19 @@ The value, and any `--set width=...`, must lie between `min` and `max` (both opt
 `min`, `max` and `step` have the param's unit (a bare number means the file's unit), `min` is
 not larger than `max`, and `step` is positive.  Choose a value inside the range or widen it.
 """),
+    "E0125": ("a `cut` where it cuts nothing", """
+A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
+through the solid the cut sits in. So a cut belongs inside a `solid` (or inside another `cut`),
+and holds only curves and other cuts. At the top level, in an `assembly`, a `drawing` (whose
+lines are engraved) or a `hole` (removed whole already) it has no material to cut:
+
+    drawing marks { cut slits { l = Line(start=(0, 0), end=(10, 0)) } }   # error
+
+    solid panel {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        cut slits { l = Line(start=(-20, 0), end=(20, 0)) }                 # cut through
+    }
+"""),
     "E0201": ("geometry refers to another structure (validity rule 1)", """
 Geometry may only be built from geometry of its own structure. This keeps each structure
 solvable on its own. Give the geometry its own starting value and relate it to the other

@@ -651,7 +651,7 @@ CONSTANTS = {"pi": "number", "true": "bool", "false": "bool", "True": "bool", "F
 
 KEYWORDS = ["units", "import", "as", "param", "def", "for", "in", "if", "else", "elif", "assert",
             "and", "or", "not", "self", "true", "false"]
-STRUCTURE_KINDS = ["solid", "hole", "drawing", "assembly"]
+STRUCTURE_KINDS = ["solid", "hole", "cut", "drawing", "assembly"]
 
 UNITS_LENGTH = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "inches": 25.4,
                 "ft": 304.8}

@@ -5,7 +5,7 @@
   an unknown name is ``E0101`` with the nearest known names;
 * every call names a primitive, constraint, function or template (``E0103``), with arguments
   that fit one of its forms: count (``E0104``), keywords (``E0105``), required ones (``E0106``);
-* structure kinds are solid, hole, drawing or assembly (``E0108``).
+* structure kinds are solid, hole, cut, drawing or assembly (``E0108``).
 
 Checks that need values — types and units of arguments, list indices, members of geometry and
 structures, and the paper's two validity rules on the exact objects referenced — are made by
@@ -26,7 +26,7 @@ def _real(path: str) -> str:
     import os
     return os.path.realpath(path)
 
-KINDS = ("solid", "hole", "drawing", "assembly")
+KINDS = ("solid", "hole", "cut", "drawing", "assembly")
 
 # names models invent, and what to write instead (short, specific; never "delete it")
 _BOOL = "booleans come from structure kinds: a `solid` unions its children, `hole NAME { ... }` children cut"
@@ -294,7 +294,7 @@ class Checker:
     def _kind_error(self, kind: str, span) -> None:
         sugg = did_you_mean(kind, KINDS)
         self.sink.error("E0108", f"unknown structure kind `{kind}`", span,
-                        hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
+                        hint="a structure is `solid`, `hole`, `cut`, `drawing` or `assembly` NAME { ... }",
                         suggestions=sugg)
 
     # ------------------------------------------------------------------ expressions

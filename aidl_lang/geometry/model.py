@@ -61,7 +61,7 @@ class Model:
 class Structure:
     """A structure of the model: kind, parent, frame translation parameters, children, geometry."""
     name: str
-    kind: str                      # solid | hole | drawing | assembly
+    kind: str                      # solid | hole | cut | drawing | assembly
     parent: "Structure | None"
     span: Span | None
     fx: int = -1                   # frame translation parameters

@@ -48,7 +48,11 @@ class Statements:
             for s in consts:
                 self._exec_stmt(s)
             st = structs[0]
-            root = self._new_structure(st.name, st.kind, None, st.span)
+            try:
+                root = self._new_structure(st.name, st.kind, None, st.span)
+            except EvalError as e:       # a `cut` at the top (E0125): said, run as a solid
+                self.error(e)
+                root = self._new_structure(st.name, "solid", None, st.span)
             self._run_body(root, st.body, Scope(fctx.scope, root, fctx))
             if asserts:                 # after the structure, which they may name
                 outer = Scope(fctx.scope, root, fctx)
@@ -81,6 +85,8 @@ class Statements:
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:
         self.count_object(span)
+        if kind == "cut" or (parent is not None and parent.kind == "cut"):
+            _check_cut_place(name, kind, parent, span, template)
         s = Structure(name, kind, parent, span, template=template)
         s.fx, s.fy = self.model.new_pair(0.0, 0.0, parent is not None, s, f"{name}.frame")
         if parent is not None:
@@ -113,10 +119,10 @@ class Statements:
                 if isinstance(st, A.Import):
                     self._import(st, fctx)
                 elif isinstance(st, A.Def):
-                    if st.kind not in ("solid", "hole", "drawing", "assembly"):
+                    if st.kind not in A.STRUCTURE_KINDS:
                         raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
-                                        hint="a template returns solid, hole, drawing or assembly",
-                                        suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+                                        hint="a template returns solid, hole, cut, drawing or assembly",
+                                        suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
                     fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
@@ -420,10 +426,10 @@ class Statements:
 
     def _struct_decl(self, st: A.StructDecl, name: str | None = None):
         parent = self._need_struct(st.span)
-        if st.kind not in ("solid", "hole", "drawing", "assembly"):
+        if st.kind not in A.STRUCTURE_KINDS:
             raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
-                            hint="a structure is `solid`, `hole`, `drawing` or `assembly` NAME { ... }",
-                            suggestions=did_you_mean(st.kind, ["solid", "hole", "drawing", "assembly"]))
+                            hint="a structure is `solid`, `hole`, `cut`, `drawing` or `assembly` NAME { ... }",
+                            suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
         name = name or st.name + self._loop_suffix()
         self._check_new_name(st.name, st.name_span, parent)
         child = self._new_structure(name, st.kind, parent, st.span)
@@ -497,7 +503,7 @@ class Statements:
             return None
         if st.kind not in A.STRUCTURE_KINDS:
             raise EvalError("E0108", f"unknown structure kind `{st.kind}`", st.kind_span,
-                            hint="an instance's kind is `solid`, `hole`, `drawing` or "
+                            hint="an instance's kind is `solid`, `hole`, `cut`, `drawing` or "
                                  "`assembly`: `hole h = outline(...)`",
                             suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
         return st.kind
@@ -836,3 +842,30 @@ def _fmt_q(v: float, dim) -> str:
     if dim == (0, 1):
         return f"{math.degrees(v):.6g} deg"
     return f"{v:.6g}"
+
+
+def _check_cut_place(name: str, kind: str, parent, span, template) -> None:
+    """E0125 for a ``cut`` where it cuts nothing: a cut's curves are through-cuts of the solid
+    it sits in (directly or in another cut), so a cut at the top, in an assembly, a drawing
+    or a hole, and anything but a cut inside a cut, is refused with the fix."""
+    what = f"`{name} = {template}(...)`" if template else f"`{kind} {name}`"
+    if kind == "cut":
+        if parent is None:
+            raise EvalError("E0125", f"{what}: a `cut` at the top level has no material to "
+                            "cut through", span,
+                            hint="put it inside the solid it cuts: `solid plate { body = "
+                                 "Rectangle(...)  cut slits { ... } }`")
+        if parent.kind in ("solid", "cut"):
+            return
+        fix = {"drawing": "a drawing's lines are engraved, not cut: move the cut into the "
+                          "solid it cuts through",
+               "hole": "a hole is removed whole already: draw the curve in the hole's "
+                       "solid, in a `cut` beside the hole",
+               "assembly": "an assembly has no material of its own: move the cut into the "
+                           "solid (part) it cuts through"}.get(parent.kind, "")
+        raise EvalError("E0125", f"{what} is inside {parent.kind} `{parent.name}`: a `cut` "
+                        "cuts through the solid it sits in", span, hint=fix)
+    raise EvalError("E0125", f"{what}: a `cut` holds only curves (through-cuts) and other "
+                    f"`cut`s, not a {kind}", span,
+                    hint=f"move `{name}` out of cut `{parent.name}` into the solid around it")
+

@@ -51,6 +51,8 @@ KEYWORD_DOCS = {
 KIND_DOCS = {
     "solid": "`solid NAME { ... }` — filled material; children are unioned, `hole` children cut.",
     "hole": "`hole NAME { ... }` — a cut-out: subtracted from the enclosing solid.",
+    "cut": "`cut NAME { ... }` — through-cuts inside a solid: the laser cuts along each curve "
+           "as written (open curves too, zero width); a closed curve cuts a hole.",
     "drawing": "`drawing NAME { ... }` — engraved lines and text: drawn, not filled.",
     "assembly": "`assembly NAME { ... }` — a group of parts laid out side by side.",
 }

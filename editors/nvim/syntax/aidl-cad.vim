@@ -6,7 +6,7 @@ if exists('b:current_syntax')
 endif
 
 syntax case match
-syntax keyword aidlCadStructure solid hole drawing assembly
+syntax keyword aidlCadStructure solid hole cut drawing assembly
 syntax keyword aidlCadConditional elif else if
 syntax keyword aidlCadRepeat for in
 syntax keyword aidlCadOperator and not or
