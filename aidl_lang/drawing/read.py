@@ -14,10 +14,14 @@ circular and elliptical arcs, cubic and quadratic Béziers, and its
 no exact form here (a rational spline, dimensions, images), a DXF entity not in the XY plane
 (extrusion neither +Z nor -Z, or points at different z) and one whose numbers give no shape
 (radius <= 0, zero length, inf, nan, beyond 1e15 mm) is skipped and counted in a
-:class:`Note` (``W0130``, DXF: by type and layer); text is skipped with a note too.
+:class:`Note` (``W0130``, DXF: by type and layer).  Text (DXF ``TEXT``/``MTEXT``, SVG
+``<text>``) is read into the drawing's ``texts``; an SVG path whose data holds a word that is
+no number (``inf``, ``nan``) is read up to it and counted with its place.
 
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
-back to its start is an outline, otherwise a path.  A loop that crosses itself, a selection
+back to its start is an outline, otherwise a path; a chain whose end runs past its start,
+crossing it, is closed at the crossing (:func:`_overshoot`), and a loop's small loops where it
+crosses itself are cut off (:func:`_trim_small_loops`).  A loop that crosses itself, a selection
 that finds nothing and a file past :data:`MAX_ENTITIES` raise :class:`DrawingError` (its
 ``code``, ``message`` and ``hint``: the caller places it at the call).
 
@@ -207,6 +211,9 @@ class Drawing:
     # engraved strokes on the part (Drawing2D: drawn with the texts; `aidl import`: a
     # `drawing engrave` child)
     engrave: "Drawing | None" = None
+    # the open paths have the role `cut` (cut=, roles="laser" named it): `aidl import`
+    # writes them as through-cuts (a `cut` structure), not engravings
+    paths_cut: bool = False
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
@@ -1977,8 +1984,9 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
 
 # ------------------------------------------------------------------ roles
 # roles="laser": the colours Boxes.py (boxes/Color.py: OUTER_CUT black, INNER_CUT blue,
-# ANNOTATIONS red, ETCHING green) and the laser programs that read its SVGs use
-ROLE_PRESETS = {"laser": {"cut": ["#000000", "#0000ff"], "engrave": ["#00ff00"],
+# ANNOTATIONS red, ETCHING green, ETCHING_DEEP cyan) and the laser programs that read its
+# SVGs use (docs/import.md)
+ROLE_PRESETS = {"laser": {"cut": ["#000000", "#0000ff"], "engrave": ["#00ff00", "#00ffff"],
                           "ignore": ["#ff0000"]}}
 ROLES = ("cut", "engrave", "ignore")
 
@@ -2118,6 +2126,7 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
         finally:
             _OPTS.reset(token)
     d, e = out
+    d.paths_cut = True
     if not e.empty or e.texts:
         d.engrave = e
         d.notes += [n for n in e.notes if n.message not in {m.message for m in d.notes}]
