@@ -776,6 +776,19 @@ real size (or a smaller `--min-wall`) has fewer edges within reach.
     aidl check usa.aidl
     # note[W0521]: not checked: slits (W0519) in `borders`: out of its share of the time (3 s of the 15 s budget)
 """),
+    "W0522": ("through-cut off the material", """
+A curve of a `cut` structure is a through-cut: the laser cuts along it through the part. This
+one has no stretch on the material of its part (it is drawn beside the part, or inside a hole),
+so it cuts nothing. Move it onto the part, or delete it; a line meant to be engraved belongs in
+a `drawing`. A through-cut that separates material makes the piece it cuts off a part of its
+own (or a hole, when the piece is enclosed); one that leaves a web thinner than the minimum
+wall between two cuts, or a cut and the outline, is W0507.
+
+    solid panel {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        cut slits { a = Line(start=(40, 0), end=(50, 0)) }   # beside the panel: cuts nothing
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 SVG text (write text with `Text(...)`), rational or high-degree splines, hatches,

@@ -64,17 +64,20 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 
 # A living hinge: staggered cuts that let stiff sheet bend. The band is
 # `width` x `height` (centered at (cx, cy)) and bends about its long axis (y). Columns of cuts `pitch` apart; each cut is `cut`
-# long and `kerf_width` wide with `bridge` of material between cuts of a
-# column; every second column is shifted by half a period, and its end cuts
+# long, ONE line the laser cuts once (a through-cut: the slit is one kerf
+# wide), with `bridge` of material between cuts of a column; `kerf_width` > 0
+# cuts each as a slot that wide instead (a router's or a thick sheet's). Every
+# second column is shifted by half a period, and its end cuts
 # run `overrun` past the band's top and bottom (so a band as tall as the
 # plate opens at its edges, as the hinge needs). Members: `cut_a` (the
 # full-length cuts, per column), `cut_b` (the end cuts).
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
-                 kerf_width=0.5 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> hole {
+                 kerf_width=0 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> cut {
     period = cut + bridge
     rows = max(1, floor((height - bridge) / period))
     cols = max(1, floor(width / pitch) + 1)
     x0 = cx - (cols - 1) * pitch / 2
+    slot = kerf_width > 0 mm
     for i in range(cols) {
         x = x0 + i * pitch
         shifted = i % 2 == 1
@@ -82,16 +85,24 @@ def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
         n = rows - 1 if shifted else rows
         for k in range(n) {
             y = cy + (k - (n - 1) / 2) * period
-            cut_a = Rectangle(center=(x, y), width=kerf_width, height=cut)
-            Fixed(cut_a.center)
+            if slot {
+                cut_a = Rectangle(center=(x, y), width=kerf_width, height=cut)
+            } else {
+                cut_a = Line(start=(x, y - cut / 2), end=(x, y + cut / 2))
+            }
+            Fixed(cut_a)
         }
         # a shifted column ends in two cuts through the band's edges
         if shifted {
             inner = rows / 2 * period - cut / 2
             for s in [-1, 1] {
                 top = cy + s * (height / 2 + overrun)
-                cut_b = Rectangle(center=(x, (top + cy + s * inner) / 2), width=kerf_width, height=abs(top - cy - s * inner))
-                Fixed(cut_b.center)
+                if slot {
+                    cut_b = Rectangle(center=(x, (top + cy + s * inner) / 2), width=kerf_width, height=abs(top - cy - s * inner))
+                } else {
+                    cut_b = Line(start=(x, cy + s * inner), end=(x, top))
+                }
+                Fixed(cut_b)
             }
         }
     }

@@ -41,13 +41,13 @@ def program(call, material=3, kerf=0.0):
 
 def read_dxf(r):
     """The cut DXF re-read by ezdxf: layer (the part's path after `kit.b.`) -> its
-    LWPOLYLINE entities, and -> its CIRCLE entities."""
+    LWPOLYLINE and LINE entities (a through-cut), and -> its CIRCLE entities."""
     doc = ezdxf.read(io.StringIO(r.to_dxf()))
     polys: dict[str, list] = {}
     circles: dict[str, list] = {}
     for e in doc.modelspace():
         name = e.dxf.layer.removeprefix("CUT-kit.b.")
-        if e.dxftype() == "LWPOLYLINE":
+        if e.dxftype() in ("LWPOLYLINE", "LINE"):
             polys.setdefault(name, []).append(e)
         elif e.dxftype() == "CIRCLE":
             circles.setdefault(name, []).append(e)
@@ -263,6 +263,8 @@ def test_flex_box_wall_is_as_long_as_the_base_perimeter(tmp_path, outside, dims)
     outline = max(polys["wall"], key=lambda e: box(e)[2] - box(e)[0])
     x0 = box(outline)[0]
     cuts = sorted((box(e)[0] + box(e)[2]) / 2 - x0 for e in polys["wall"] if e is not outline)
+    # each slit one LINE on the wall's cut layer (a through-cut, cut once), not a rectangle
+    assert {e.dxftype() for e in polys["wall"] if e is not outline} == {"LINE"}
     groups = [[cuts[0]]]
     for x in cuts[1:]:
         if x - groups[-1][-1] < 5:

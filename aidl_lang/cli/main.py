@@ -795,6 +795,10 @@ def cmd_render(args) -> int:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         from ..output import CUT_FORMATS, for_cutting
         cut = for_cutting(output, kerf, res.deadline)   # --kerf, else the program's `kerf`
+        from ..output.layout import through_cut_note
+        said = through_cut_note(output, cut)
+        if said:
+            notes.append(said)
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan

@@ -42,6 +42,11 @@ UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
 UNION_SECONDS_PER_VERTEX = 3.5e-6
 DERIVED = ("Offset", "Shell", "Stroke")   # shapes whose outline is a boolean of pieces
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
+# mm: half the width of the band a through-cut (a `cut` structure's open curve) takes out of
+# its part where the part is analysed (what it separates, the webs it leaves): far below every
+# tolerance of the output (MATCH_TOL, 1e-6 mm, puts the band's sides back on the curve), far
+# above Manifold's grid (1e-8 mm)
+SLIT_HALF = 2.5e-7
 
 
 @dataclass
@@ -60,6 +65,20 @@ class Cut:
     owner: Structure
     before: mf.CrossSection       # the owner's shape before its holes
     region: mf.CrossSection       # before ∩ hole
+
+
+@dataclass
+class Through:
+    """A through-cut: an open curve ``geometry`` of a ``cut`` structure, cut along as written
+    (zero width) through ``part`` (the part's structure): its exact ``segments`` (mm) and
+    ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
+    zero-width cut); ``inside``: the band's area inside the part before any through-cut
+    (0: the cut is off the material)."""
+    geometry: Geometry
+    part: Structure
+    segments: list
+    band: mf.CrossSection
+    inside: float = 0.0
 
 
 @dataclass
@@ -90,6 +109,13 @@ class Drawing:
     empty_faces = ()
     # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
     kerf = None
+    # the through-cuts (:class:`Through`) of every part, and Part name -> (the part's shape
+    # before its through-cuts, the same with every through-cut's band taken out: the webs the
+    # wall check measures); the names of parts a through-cut split (their loops hold the cut
+    # where it separates)
+    through = ()
+    slit_shapes = {}
+    split = frozenset()
     # Part name -> minimum wall in mm (`min_wall 0.3 mm`, found like the thickness; 0: the
     # wall checks off); parts without one are checked at the compile's default
     min_wall = None
@@ -148,6 +174,10 @@ class Renderer:
         # (E0406) and operations that cannot stay exact on a spline (E0407)
         self.shape_errors: list = []
         self.spline_source: dict = {}        # CubicSpline -> the Spline geometry drawn as it
+        self.through_paths: list = []        # (geometry, exact segments) of through-cuts
+        self.through: list = []
+        self.slit_shapes: dict = {}
+        self.split: set = set()
 
     def tick(self, s: Structure | None = None, faces=()) -> None:
         """Look at the deadline before a step; ``faces``: the Manifold shapes one
@@ -734,6 +764,11 @@ class Renderer:
                 self.assembly(c, out)
             elif c.kind == "hole" and s.kind == "solid":
                 holes.append((c, self.shape(c, out)))
+            elif c.kind == "cut":           # closed curves: holes; open: through-cuts (part)
+                cf = self.cut_faces(c, out)
+                out.shapes[c] = self.union(cf, c)
+                if cf and s.kind == "solid":
+                    holes.append((c, out.shapes[c]))
             else:
                 faces.append(self.shape(c, out))
         if s.kind == "solid":
@@ -796,9 +831,99 @@ class Renderer:
             out.part_of[s.path] = s
         self.children(s, out)
 
+    def cut_faces(self, c: Structure, out: Drawing) -> list:
+        """The faces of the closed curves of ``cut`` structure ``c`` and its cut children
+        (each cuts a hole); its open curves (Line, Arc, an open Spline, Bezier or Polyline)
+        go to :attr:`through_paths` as their exact segments, cut through the part by
+        :meth:`part` (:meth:`slit`), and are drawn as ``cut`` strokes."""
+        faces = []
+        self.current = c
+        for g in c.geometry:
+            self.tick(c)
+            if g.construction:
+                self.construct(g, out)
+                continue
+            if g.kind == "Point":
+                continue
+            if g.kind in ("Line", "Arc", "EllipticArc") or (
+                    g.kind in ("Spline", "Bezier", "Polyline") and not g.closed):
+                segs = self.pieces(g)
+                if segs:
+                    self.through_paths.append((g, segs))
+                continue
+            f = self.face(g, c)
+            if f is not None and not f.is_empty():
+                faces.append(f)
+                out.own.setdefault(c, []).append((g, f))
+        for k in c.children.values():        # only cuts (E0125)
+            faces += self.cut_faces(k, out)
+            self.current = c
+        return faces
+
+    def slit(self, s: Structure, shp: mf.CrossSection, paths: list, out: Drawing):
+        """Part ``s`` (its final shape ``shp``) cut along its through-cuts ``paths``
+        (geometry, exact segments): each is drawn as ``cut`` strokes and recorded as a
+        :class:`Through` whose band (:data:`SLIT_HALF` either side) stands for it.  Where the
+        bands separate material (a cut from edge to edge, one that closes a loop with the
+        outline, itself or another), ``shp`` less the bands falls into pieces, as under the
+        laser: in each piece of the part as it was, the largest stays the part, a piece
+        enclosed by another falls out (a hole) and any other is a part of its own.  Returns
+        ``(the part's shape, [the shapes of the pieces cut off])``; the part's shape is
+        ``shp`` itself when nothing is separated (the cuts take no area)."""
+        bands = []
+        for g, segs in paths:
+            self.tick(s)
+            for seg in segs:
+                self._stroke_segment(seg, "cut", g, out)
+            # the chords registered (there and back): the band's sides match the curve
+            self.exact.polygon(Loop(list(segs) + [reverse(x) for x in reversed(segs)]))
+            pts = _chain_points(segs)
+            out.lines.append(("cut", pts))
+            band = self.union([_quad(pts[i], pts[i + 1], SLIT_HALF)
+                               for i in range(len(pts) - 1)], s)
+            inside = (band ^ shp).area() if not shp.is_empty() else 0.0
+            self.through.append(Through(g, s, segs, band, inside))
+            bands.append(band)
+        if shp.is_empty():
+            return shp, []
+        cut = shp - self.union(bands, s)
+        self.slit_shapes[s.path] = (shp, cut)
+        before = shp.decompose()
+        after = cut.decompose()
+        if len(after) <= len(before):
+            return shp, []
+        groups: dict = {}
+        for comp in after:
+            k = max(range(len(before)), key=lambda i: (comp ^ before[i]).area())
+            groups.setdefault(k, []).append(comp)
+        removed, pieces = [], []
+        for comps in groups.values():
+            comps.sort(key=lambda c: -c.area())
+            filled = [_filled(c) for c in comps]
+            for i, comp in enumerate(comps[1:], 1):
+                removed.append(comp)
+                around = self.union([f for j, f in enumerate(filled) if j != i], s)
+                if (comp - around).area() <= 1e-9 * max(1.0, comp.area()):
+                    continue                 # enclosed: falls out with the scrap (a hole)
+                pieces.append(comp)
+        self.split.add(s.path)
+        # the part less what was cut off (the bands' other stretches stay: no area)
+        return shp - self.union(removed, s), pieces
+
     def part(self, s: Structure, out: Drawing) -> None:
         at = len(out.parts)             # a part is drawn under the parts of its drawings
+        mark = len(self.through_paths)
         shp = self.shape(s, out)
+        paths = self.through_paths[mark:]
+        del self.through_paths[mark:]
+        pieces = []
+        if paths:
+            shp, pieces = self.slit(s, shp, paths, out)
+            for k, piece in enumerate(pieces, 1):
+                name = f"{s.path}.piece{k}"
+                out.parts.insert(at, Part(name, s.kind, piece))
+                out.part_of[name] = s
+                self.split.add(name)
         out.parts.insert(at, Part(s.path, s.kind, shp))
         out.part_of[s.path] = s
         if s.kind == "hole":
@@ -821,6 +946,8 @@ class Renderer:
             raise
         out.exact = self.exact
         out.empty_faces = self.empty_faces
+        out.through, out.slit_shapes = self.through, self.slit_shapes
+        out.split = frozenset(self.split)
         out.shape_errors = self.shape_errors
         out.spline_source = self.spline_source
         out.kerf, out.min_wall = {}, {}
@@ -887,6 +1014,39 @@ def _arc_through(c, s, e) -> Arc:
     if sweep < 1e-12:
         sweep = 2 * math.pi
     return Arc(c, r, a1, sweep)
+
+
+def _chain_points(segs: list) -> np.ndarray:
+    """The polyline (N x 2, mm) of a chain of exact open segments, from the first start to
+    the last end (arcs and curves in chords within CHORD_TOL)."""
+    pts = []
+    for seg in segs:
+        if isinstance(seg, Line):
+            pts.append(np.asarray([seg.start], dtype=float))
+        else:
+            pts.append(np.asarray(Loop([seg]).points(), dtype=float).reshape(-1, 2))
+    pts.append(np.asarray([segs[-1].end], dtype=float))
+    return np.vstack(pts)
+
+
+def _quad(p, q, h: float) -> mf.CrossSection:
+    """The rectangle ``2 h`` wide along the chord ``p`` -> ``q``, ``h`` longer at each end
+    (consecutive chords' rectangles overlap at their joint; a cut ending on an edge crosses
+    it)."""
+    d = np.asarray(q, dtype=float) - np.asarray(p, dtype=float)
+    L = float(np.hypot(*d))
+    if L == 0:
+        return mf.CrossSection()
+    u = d / L * h
+    n = np.array([-u[1], u[0]])
+    a, b = np.asarray(p, dtype=float) - u, np.asarray(q, dtype=float) + u
+    return mf.CrossSection([[tuple(a - n), tuple(b - n), tuple(b + n), tuple(a + n)]])
+
+
+def _filled(c: mf.CrossSection) -> mf.CrossSection:
+    """``c`` with its holes filled: the region inside its outer contours."""
+    outer = [P for P in c.to_polygons() if _shoelace(np.asarray(P)) > 0]
+    return mf.CrossSection(outer, mf.FillRule.NonZero) if outer else mf.CrossSection()
 
 
 def _tol(p) -> float:

@@ -133,11 +133,26 @@ def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None)
                           "raise the budget (`--budget 2`)", ex) from None
 
 
+def through_cut_note(output: Output, cut: Output) -> str:
+    """The note the kerf offset gives when ``output`` has through-cuts (a ``cut``
+    structure's curves) and ``cut`` (:func:`for_cutting` of it) is offset: they stay where
+    they are drawn (a line has no side to offset: the beam runs on it, and the slit is one
+    kerf wide); "" when there is nothing to say."""
+    if cut is output:
+        return ""
+    n = len(output.cuts)
+    if not n:
+        return ""
+    return (f"note: the kerf offset leaves the {n} through-cut{'s' if n != 1 else ''} where "
+            f"{'they are' if n != 1 else 'it is'} drawn: a cut along a line has no side to "
+            "offset (its slit is one kerf wide)")
+
+
 def compensate(output: Output, kerf, deadline=None) -> Output:
     """``output`` with every cut of its solid parts offset by half the kerf: outer loops
     outward, holes inward, so the parts come out at their designed size.  ``kerf``: mm for
     every part, or a dict part name -> mm (parts missing from it are not offset).  Engraving
-    is not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
+    and through-cuts (:func:`through_cut_note`) are not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
     than the offset; ``deadline`` (a :class:`~aidl_lang.limits.Deadline`, or None) is looked
     at before each part (:class:`~aidl_lang.limits.OutOfBudget` naming the part's structure)."""
     parts = []

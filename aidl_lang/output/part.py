@@ -82,8 +82,10 @@ class PartOutline:
 
 @dataclass
 class Stroke:
-    """Engraving: an open or closed chain of segments (``style`` drawing | open), each
-    segment ending where the next starts (a laser runs it without lifting).  ``part``: the
+    """Engraving, or a through-cut: an open or closed chain of segments (``style`` drawing |
+    open: engraved or scored; ``cut``: a ``cut`` structure's curve, cut through the part
+    along the line as written, zero width), each segment ending where the next starts (a
+    laser runs it without lifting).  ``part``: the
     name of the part whose structure (or an ancestor of it) holds the engraving, "" for one
     at assembly level outside every part (a cutting layout moves it with that part)."""
     segments: list[Segment]
@@ -95,7 +97,8 @@ class Stroke:
 
 @dataclass
 class Output:
-    """What the writers get: exact part outlines and engraving strokes (mm)."""
+    """What the writers get: exact part outlines and engraving strokes (mm); the strokes of
+    style ``cut`` are through-cuts (:attr:`cuts`), cut through the material, not engraved."""
 
     parts: list[PartOutline] = field(default_factory=list)
     engrave: list[Stroke] = field(default_factory=list)
@@ -103,6 +106,11 @@ class Output:
     drawing: Drawing | None = None     # the booleans' result (debug layers, checks)
     # (x0, y0, x1, y1) mm: a fixed page (a cutting layout's sheet) instead of the extent
     page: tuple | None = None
+
+    @property
+    def cuts(self) -> list:
+        """The through-cuts: the strokes of style ``cut`` (exact open or closed paths)."""
+        return [st for st in self.engrave if st.style == "cut"]
 
     @property
     def area(self) -> float:
@@ -258,13 +266,63 @@ def build(drawing: Drawing, title: str = "", thickness=None, deadline=None) -> O
         t = thickness.get(p.name) if isinstance(thickness, dict) else thickness
         out.parts.append(PartOutline(p.name, p.kind, loops, t))
     strokes = []
-    owner = {s: name for name, s in drawing.part_of.items()}
+    owner: dict = {}
+    for name, s in drawing.part_of.items():     # a split part's pieces: its own name
+        if name == s.path or s not in owner:
+            owner[s] = name
     for style, item, g in drawing.strokes:
         st = _stroke(item, exact, style, g.label if g is not None else "")
         if st is not None:
             st.part = _part_of(g, owner)
             strokes.append(st)
+    split = getattr(drawing, "split", ())
+    if split:
+        strokes = _off_outlines(strokes, [p for p in out.parts if p.name in split])
     out.engrave = _join(strokes)
+    return out
+
+
+ON_OUTLINE = 0.02     # mm: a through-cut this near a split part's outline is that outline
+
+
+def _off_outlines(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
+    """``strokes`` less the through-cut (``cut``) segments that run along the outline of a
+    part they split (a piece cut off: the laser cuts that stretch once, as the outlines of
+    the two pieces): every chord midpoint of the segment within :data:`ON_OUTLINE` of a loop
+    of ``parts``."""
+    from .booleans import _chain_points
+    edges = []
+    for p in parts:
+        for lp in p.loops:
+            P = np.asarray(lp.points(), dtype=float).reshape(-1, 2)
+            if len(P):
+                edges.append((P, np.roll(P, -1, axis=0)))
+    if not edges:
+        return strokes
+    A = np.vstack([a for a, _ in edges])
+    B = np.vstack([b for _, b in edges])
+    D = B - A
+    L2 = np.maximum((D * D).sum(axis=1), 1e-300)
+    out = []
+    for st in strokes:
+        if st.style != "cut":
+            out.append(st)
+            continue
+        kept = []
+        for seg in st.segments:
+            pts = _chain_points([seg])
+            mids = (pts[1:] + pts[:-1]) / 2
+            on = True
+            for m in mids:
+                t = np.clip(((m - A) * D).sum(axis=1) / L2, 0.0, 1.0)
+                d = np.hypot(*(A + t[:, None] * D - m).T).min()
+                if d > ON_OUTLINE:
+                    on = False
+                    break
+            if not on:
+                kept.append(seg)
+        if kept:
+            out.append(Stroke(kept, st.style, st.closed, st.source, st.part))
     return out
 
 

@@ -12,7 +12,9 @@ operation:
    out with the scrap); within a part, the loops inside others before the loops around them
    (deepest first: a hole before the outline it is cut from, an island in a window before the
    window), so ``cut_inner`` (holes, clockwise loops) comes before ``cut_outer`` (the outline
-   that frees the part).
+   that frees the part).  A part's through-cuts (a ``cut`` structure's curves: the output's
+   strokes of style ``cut``, open or closed) come first of all its cuts, as ``cut_inner``
+   (the inner cut's power, speed and passes), each one path along the curve as written.
 
 Within each group the next path is the nearest to where the last one ended (a greedy
 nearest-neighbour tour, from the origin), an open path may be run backwards and a closed loop
@@ -63,19 +65,36 @@ def _start(s: Segment) -> Point:
     return tuple(s.start)
 
 
-def plan(output: Output, origin: Point = (0.0, 0.0)) -> list[Cut]:
+def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
     """The :class:`Cut` s of ``output`` in cut order (the module's docstring), starting from
-    ``origin`` (mm)."""
+    ``origin`` (mm).  ``back``: the operations whose open paths the machine runs there and
+    back (an even number of passes, :mod:`.writers.gcode`): the tour goes on from where such
+    a path started."""
+    back = tuple(back)
+
+    def after(c: Cut) -> Point:
+        """Where the tool is once cut ``c`` is done."""
+        return c.start if not c.closed and c.operation in back else c.end
     at = origin
     out: list[Cut] = []
     strokes = [Cut("score" if st.style == "open" else "engrave", st.part, list(st.segments),
-                   st.closed) for st in output.engrave if st.segments]
+                   st.closed) for st in output.engrave if st.segments and st.style != "cut"]
+    through: dict = {}           # part name -> its through-cuts (cut_inner, first in the part)
+    for st in output.cuts:
+        if st.segments:
+            through.setdefault(st.part, []).append(Cut("cut_inner", st.part, list(st.segments),
+                                                       st.closed))
     for op in ("engrave", "score"):
         todo = [c for c in strokes if c.operation == op]
-        for c in _tour(todo, at):
+        for c in _tour(todo, at, after):
             out.append(c)
-            at = c.end
+            at = after(c)
     parts = [p for p in output.parts if p.loops]
+    names = {p.name for p in parts}
+    loose = [c for name, cs in through.items() if name not in names for c in cs]
+    for c in _tour(loose, at, after):   # through-cuts of no part left (they cut nothing)
+        out.append(c)
+        at = after(c)
     loops = [(i, lp) for i, p in enumerate(parts) for lp in p.loops]
     depth = _depths([lp for _, lp in loops])
     # a part's depth: how deep its outline lies (an island in another part's window is deeper)
@@ -103,12 +122,15 @@ def plan(output: Output, origin: Point = (0.0, 0.0)) -> list[Cut]:
             level.remove(i)
             remaining.remove(i)
             name = parts[i].name
+            for c in _tour(through.get(name, []), at, after):
+                out.append(c)
+                at = after(c)
             for d in sorted({d for d, _ in by_part[i]}, reverse=True):
                 cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name,
                             list(lp.segments), True) for dd, lp in by_part[i] if dd == d]
-                for c in _tour(cuts, at):
+                for c in _tour(cuts, at, after):
                     out.append(c)
-                    at = c.end
+                    at = after(c)
     return out
 
 
@@ -126,7 +148,7 @@ def _dist(a: Point, b: Point) -> float:
     return math.hypot(a[0] - b[0], a[1] - b[1])
 
 
-def _tour(cuts: list[Cut], at: Point) -> list[Cut]:
+def _tour(cuts: list[Cut], at: Point, after=lambda c: c.end) -> list[Cut]:
     """``cuts`` in a greedy nearest-neighbour order from ``at``: each next cut is the one with
     an entry (an open path's either end, a closed loop's segment ends) nearest to where the
     last ended; an open path is turned round, a loop rotated to start there.  Each step is
@@ -147,7 +169,7 @@ def _tour(cuts: list[Cut], at: Point) -> list[Cut]:
         alive[owner == k] = False
         c = _enter(cuts[k], int(index[best]))
         out.append(c)
-        at = c.end
+        at = after(c)
     return out
 
 

@@ -20,6 +20,8 @@ One module per family:
   ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
 * :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
+* :mod:`.through`: ``W0522`` a through-cut off the material, ``W0507`` a web thinner than the
+  minimum between through-cuts (or a through-cut and the outline);
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;
 * :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';
@@ -50,6 +52,7 @@ from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overla
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_stray_holes, empty_faces)
 from .text import _check_text_overlap
+from .through import check_through
 from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
@@ -87,6 +90,7 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
             "slits": ("slits", "W0519"), "steps": ("ledges", "W0520"),
             "text": ("text over text or marks", "W0513"),
             "repeats": ("copies that merge", "W0512"),
+            "through": ("through-cuts", "W0507, W0522"),
             "interpenetration": ("parts that interpenetrate", "W0511")}
 
 
@@ -252,6 +256,11 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                                                      tick=lambda ahead=0.0: tick(s, ahead)))
                 run("steps", s, lambda: _check_steps(d, s, loops[s], cuts, min_wall, sink,
                                                      tick=lambda: tick(s)))
+    if getattr(d, "through", ()):
+        tick(None)
+        run("through", None, lambda: check_through(
+            d, roots, sink, lambda s: part_min_wall(d, s, given),
+            tick=lambda ahead=0.0: tick(None, ahead)))
     tick(None)
     shares.guard("interpenetration", None,
                  lambda: _check_interpenetration(d, roots, sink, deadline))

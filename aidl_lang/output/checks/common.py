@@ -41,7 +41,7 @@ def _part_roots(d: Drawing) -> dict[Structure, mf.CrossSection]:
     for p in d.parts:
         s = d.part_of.get(p.name)
         if s is not None:
-            shapes[s] = p.shape
+            shapes.setdefault(s, p.shape)     # a split part: its own piece, not those cut off
     return shapes
 
 

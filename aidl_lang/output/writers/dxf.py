@@ -22,7 +22,9 @@ The header's ``$EXTMIN`` / ``$EXTMAX`` are the drawing's exact extent
 
 Layers: ``CUT`` (red) for the outlines of a single part, ``ENGRAVE`` (blue) for engraving; in an
 assembly with several parts, each part's outlines are on their own layer ``CUT-<part>``
-(see :func:`layer_of`), so each part can be selected, nested or hidden on its own.
+(see :func:`layer_of`), so each part can be selected, nested or hidden on its own.  A
+through-cut (a ``cut`` structure's curve) is written as engraving is (one entity or polyline
+per path, exact) on its part's cut layer.
 """
 from __future__ import annotations
 
@@ -153,8 +155,10 @@ def to_dxf_document(output: Output):
                 continue
             msp.add_lwpolyline(_bulge_points(segs), format="xyb", close=True,
                                dxfattribs={"layer": layer})
+    layers = {p.name: layer_of(p, output) for p in output.parts}
     for st in output.engrave:
-        att = {"layer": ENGRAVE}
+        # a through-cut on its part's cut layer (CUT when it cuts no part)
+        att = {"layer": layers.get(st.part, CUT) if st.style == "cut" else ENGRAVE}
         if _exploded(st.segments):
             _pieces(msp, st.segments, att)
             continue

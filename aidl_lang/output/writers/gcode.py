@@ -26,7 +26,8 @@ the settings of a machine profile (:mod:`~..machine`; ``Options.machine``, ``aid
 Laser (``kind = "laser"``): ``M4`` (dynamic power, GRBL's laser mode ``$32=1``; or ``M3``
 per the profile's ``laser_mode``) once, then for each cut ``G0`` to its start with ``S0``,
 ``G1 F<speed> S<power % x max_power>``, the path, repeated ``passes`` times (a closed loop
-ends where it starts; an open path is reached again by ``G0 ... S0``).  In laser mode GRBL
+ends where it starts; an open path, a through-cut's slit, runs back from its end on every
+second pass: no travel between passes).  In laser mode GRBL
 turns the beam off on every ``G0`` anyway; the ``S0`` on the travel lines keeps the beam off
 also on a controller with laser mode off (``$32=0``), where ``G0`` would keep it on.  Holding
 tabs (profile ``tabs``, ``tab_width``) on the outer cuts are gaps run with ``S0``.  The job
@@ -57,6 +58,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from ...geometry.curves import reverse
 from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
 from ..machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
 
@@ -439,7 +441,11 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     warnings = _warnings(output, m)
     if m.kind == "router":
         output = tool_path(output, m.tool_diameter)
-    cuts = plan(output)
+    # a laser runs an open path there and back (_body): an even number of passes ends it
+    # where it started, and the tour goes on from there
+    back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
+                 if m.kind == "laser" and m.operation(op).passes % 2 == 0)
+    cuts = plan(output, back=back)
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
     w.warnings = warnings
@@ -546,13 +552,14 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
         start = lead or path[0].start
         if m.kind == "laser":
             power = op.power / 100.0 * m.max_power
+            back = [] if cut.closed else [(reverse(s), tab) for s, tab in reversed(pieces)]
             for k in range(max(1, op.passes)):
-                if k == 0 or not cut.closed or lead:
+                if k == 0 or lead:
                     w.rapid(*start, off=True)
                 if lead:
                     w.setting(op.speed, power)
                     w.segment(Line(lead, path[0].start))
-                for s, on_tab in pieces:
+                for s, on_tab in (back if back and k % 2 else pieces):
                     w.setting(op.speed, 0.0 if on_tab else power)
                     w.segment(s, not on_tab)
         elif m.kind == "plotter":

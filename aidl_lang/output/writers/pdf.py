@@ -26,7 +26,9 @@ quarter turn, each a cubic Bézier through the piece's exact end points with the
 handles ``4/3 tan(sweep / 4)`` (the Bézier's middle is on the circle), and into more pieces
 when needed so that the Bézier leaves the circle (or ellipse) by at most :data:`ARC_TOL` =
 1e-3 mm (:mod:`.beziers`, shared with the LightBurn writer: the bound of a piece of sweep
-``t`` is ``r 4/27 sin^6(t/4) / cos^2(t/4)``; an ellipse by its larger semi-axis).  Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt.  Each solid part's name is
+``t`` is ``r 4/27 sin^6(t/4) / cos^2(t/4)``; an ellipse by its larger semi-axis).  Through-cuts
+(a ``cut`` structure's curves, open paths too) are cuts: black, :data:`CUT_WIDTH` pt.
+Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt.  Each solid part's name is
 printed small inside it, at the point of its material farthest from every cut line found on a
 grid (:func:`label_point`).  Coordinates are written to 1e-6 pt (3.5e-7 mm; :data:`DIGITS`)
 — ReportLab's own drawing keeps 7 significant digits (2834.123 pt: 3.5e-4 mm off), so the
@@ -345,7 +347,12 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
         ops.append("S")
         if p.kind == "solid":
             labels.append(p)
-    strokes = [st for st in output.engrave if st.segments]
+    cuts = [st for st in output.cuts if st.segments]
+    if cuts:                        # through-cuts: black, at the cut width, as they run
+        for st in cuts:
+            ops += pen.path(st.segments, st.closed)
+        ops.append("S")
+    strokes = [st for st in output.engrave if st.segments and st.style != "cut"]
     if strokes:
         ops += [_rgb(ENGRAVE_RGB), f"{ENGRAVE_WIDTH:g} w"]
         for st in strokes:

@@ -189,11 +189,17 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
         else:
             g.add(d.path(d=" ".join(segments_d(lp.segments, True) for lp in p.loops)))
         cut.add(g)
+    for st in output.cuts:          # through-cuts: cut as the outlines are, zero width
+        e = _element(d, st.segments, st.closed)
+        e.update({"fill": "none", "class_": "through-cut"})
+        cut.add(e)
     d.add(cut)
     eng = d.g(id="engrave", fill="none", stroke="#0000ff" if laser else "#1565c0",
               stroke_width=_f(hairline if laser else sw), stroke_linecap="round",
               stroke_linejoin="round")
     for st in output.engrave:
+        if st.style == "cut":
+            continue
         e = _element(d, st.segments, st.closed)
         if st.style == "open" and not laser:
             e.update({"stroke": "#ef6c00"})
