@@ -70,6 +70,17 @@ def test_open_cut_paths_are_written_as_through_cuts(flex):
     assert f"({total:g} mm)" in note
 
 
+def test_a_sheet_of_parts_keeps_each_parts_through_cuts():
+    body = [f'<path d="M 0 0 H 40 V 60 H 0 Z" stroke="{BLACK}" />',
+            f'<path d="M 50 0 H 100 V 60 H 50 Z" stroke="{BLACK}" />',
+            f'<path d="M 20 10 V 50" stroke="{BLUE}" />',
+            f'<path d="M 70 10 V 50" stroke="{BLUE}" />']
+    text, _ = import_drawing(_svg(body), "sheet.svg", roles="laser", parts=True)
+    assert text.count("cut cuts {") == 2 and "drawing" not in text
+    res = aidl_lang.compile(source=text, path="sheet.aidl")
+    assert res.ok and len(res.output.parts) == 2
+
+
 def test_without_a_role_open_paths_stay_engravings():
     text, _ = import_drawing(flex_svg(), "flex.svg")
     assert "cut cuts" not in text and "drawing paths {" in text
@@ -104,23 +115,23 @@ def _gcode_runs(gcode: str):
     return out
 
 
-@pytest.mark.xfail(strict=True, reason="the `cut` structure's outputs come with branch h-cut "
-                                       "(the language half of issue 59)")
 def test_gcode_cuts_each_slit_in_one_pass_along_one_line(flex):
     _text, _notes, res = flex
-    runs = _gcode_runs(res.encode("gcode").decode())
+    gcode = res.encode("gcode").decode()
+    passes = int(re.search(r"; cut_inner: .* (\d+) pass", gcode).group(1))
+    runs = _gcode_runs(gcode)
     top = max(s for s, _a, _b in runs)                       # the cut power
     for x, y0, y1 in SLITS:
+        # the line itself, at cut power, once per pass of the profile's cut_inner
         along = [r for r in runs if {r[1], r[2]} == {(x, -y0), (x, -y1)}]
-        assert along and all(s == top for s, _a, _b in along), (x, y0, y1, along)
+        assert len(along) == passes and all(s == top for s, _a, _b in along), \
+            (x, y0, y1, along)
         # never beside the line (a slit drawn as a rectangle has two sides)
         beside = [r for r in runs if r[1][0] == r[2][0] and 0 < abs(r[1][0] - x) < 1
                   and min(r[1][1], r[2][1]) >= -y1 - 1e-9 and max(r[1][1], r[2][1]) <= -y0 + 1e-9]
         assert not beside
 
 
-@pytest.mark.xfail(strict=True, reason="the `cut` structure's outputs come with branch h-cut "
-                                       "(the language half of issue 59)")
 def test_lightburn_cut_layer_holds_each_slit_as_one_line(flex):
     etree = pytest.importorskip("lxml.etree")
     _text, _notes, res = flex
@@ -218,12 +229,15 @@ def test_svg_text_comes_in_as_text_engravings():
 def test_unreadable_numbers_in_path_data_are_counted_with_their_place():
     svg = _svg([f'<path d="M 0 0 H 100 V 60 H 0 Z" stroke="{BLACK}" />',
                 f'<path id="bad" d="M 10 10 L 20 10 L nan 5 L 30 30" stroke="{BLACK}" />',
-                f'<path d="M 10 50 L 20 50 L 30 inf" stroke="{BLACK}" />'])
+                f'<path d="M 10 50 L 20 50 L 30 inf" stroke="{BLACK}" />',
+                f'<polyline points="0,0 10,0 nan,5 20,20" stroke="{BLACK}" />'])
     d = read_drawing(svg, "n.svg")
     note = next(n.message for n in d.notes if "cannot be read" in n.message)
-    assert note == ("2 paths of `n.svg` hold a number that cannot be read: the rest of each "
-                    "data is left out: <path> (id `bad`) at line 5, character 19: `nan` (13 "
+    assert note == ("3 paths of `n.svg` hold a number that cannot be read: a path's data is "
+                    "read up to it: <path> (id `bad`) at line 5, character 19: `nan` (13 "
                     "characters left out); <path> at line 6, character 22: `inf` (3 "
-                    "characters left out)")
-    # what comes before the word is read (svgelements stops there)
+                    "characters left out); <polyline> at line 7, character 10: `nan` (the "
+                    "whole shape left out)")
+    # what comes before the word is read (svgelements stops there); the polyline, whose
+    # numbers svgelements would pair up wrongly after the word, is left out
     assert sorted(round(p.segments[0].end[0], 9) for p in d.paths) == [20, 20]

@@ -1661,6 +1661,10 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 continue
             if not colour_ok(el):
                 continue
+            if isinstance(el, (S.Polyline, S.Polygon)) and isinstance(
+                    el.values.get("points"), str) and _path_data_error(
+                    el.values["points"].replace("M", "?").replace("m", "?")) is not None:
+                continue        # svgelements would pair the numbers after it wrongly: noted
             count += 1
             if count > opts.max_shapes:
                 raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
@@ -1765,9 +1769,10 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> list:
     ``<use>`` that copies the most) before they are expanded; more than ``limit`` elements
     drawn is ``E0130``.  A file expat cannot parse is left to svgelements (its message).
 
-    Returns the paths whose data holds a word that is no number or command
-    (:func:`_path_data_error`: ``inf``, ``nan``): ``(id or None, line, offset, word,
-    characters left out)`` each, for the ``W0130`` note of :func:`read_drawing`."""
+    Returns the paths (``d``) and polylines or polygons (``points``) whose data holds a word
+    that is no number or command (:func:`_path_data_error`: ``inf``, ``nan``): ``(tag, id or
+    None, line, offset, word, characters left out)`` each, for the ``W0130`` note of
+    :func:`read_drawing`."""
     import xml.parsers.expat as X
     tags: list = []         # per element: local tag, id, href, line
     kids: list = []
@@ -1789,11 +1794,15 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> list:
             kids[stack[-1]].append(i)
         if attrs.get("id") is not None:
             ids.setdefault(attrs["id"], i)
-        if local == "path" and attrs.get("d"):
-            err = _path_data_error(attrs["d"])
+        data_attr = "d" if local == "path" else "points" if local in ("polyline", "polygon") \
+            else None
+        if data_attr is not None and attrs.get(data_attr):
+            text = attrs[data_attr]
+            err = _path_data_error(text if data_attr == "d" else
+                                   text.replace("M", "?").replace("m", "?"))
             if err is not None:
-                bad_data.append((attrs.get("id"), p.CurrentLineNumber, err[0], err[1],
-                                 len(attrs["d"]) - err[0]))
+                bad_data.append((local, attrs.get("id"), p.CurrentLineNumber, err[0], err[1],
+                                 len(text) - err[0]))
         stack.append(i)
         if len(stack) > 500:
             raise DrawingError("E0130", f"`{name}` nests its elements more than 500 deep",
@@ -1875,14 +1884,16 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> list:
 def _bad_data_note(bad: list, name: str) -> Note:
     """The ``W0130`` note of the paths whose data stops at a word that is no number
     (:func:`_svg_prescan`), each with its place."""
-    where = "; ".join(f"<path>" + (f" (id `{i}`)" if i else "") + f" at line {ln}, character "
-                      f"{off + 1}: `{w}` ({left} characters left out)"
-                      for i, ln, off, w, left in bad[:5])
+    where = "; ".join(f"<{tag}>" + (f" (id `{i}`)" if i else "") + f" at line {ln}, "
+                      f"character {off + 1}: `{w}` (" + (f"{left} characters left out"
+                                                         if tag == "path" else
+                                                         "the whole shape left out") + ")"
+                      for tag, i, ln, off, w, left in bad[:5])
     more = f"; and {len(bad) - 5} more" if len(bad) > 5 else ""
     n = len(bad)
     return Note("W0130", f"{n} path{'s' if n != 1 else ''} of `{name}` "
-                         f"{'holds' if n == 1 else 'hold'} a number that cannot be read: the "
-                         f"rest of {'its' if n == 1 else 'each'} data is left out: {where}{more}",
+                         f"{'holds' if n == 1 else 'hold'} a number that cannot be read: a "
+                         f"path's data is read up to it: {where}{more}",
                 "write a finite number there (inf and nan are no coordinates), or save the "
                 "drawing again from its program")
 
