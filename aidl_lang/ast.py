@@ -309,7 +309,7 @@ class Def(Node):
 
 
 class StructDecl(Node):
-    """``KIND name:`` a structure (solid, hole, drawing, assembly) and its body."""
+    """``KIND name:`` a structure (solid, hole, cut, drawing, assembly) and its body."""
     __slots__ = ("kind", "kind_span", "name", "name_span", "body")
 
     def __init__(self, span: Span, kind: str, kind_span: Span, name: str, name_span: Span,

@@ -779,7 +779,7 @@ real size (or a smaller `--min-wall`) has fewer edges within reach.
     "W0522": ("through-cut off the material", """
 A curve of a `cut` structure is a through-cut: the laser cuts along it through the part. This
 one has no stretch on the material of its part (it is drawn beside the part, or inside a hole),
-so it cuts nothing. Move it onto the part, or delete it; a line meant to be engraved belongs in
+or no length (its ends on each other), so it cuts nothing. Move it onto the part, or delete it; a line meant to be engraved belongs in
 a `drawing`. A through-cut that separates material makes the piece it cuts off a part of its
 own (or a hole, when the piece is enclosed); one that leaves a web thinner than the minimum
 wall between two cuts, or a cut and the outline, is W0507.

@@ -392,6 +392,9 @@ def _template_example(t: StdTemplate) -> str:
     if t.node.kind == "hole":
         return (imp + "solid plate {\n    body = Rectangle(center=(0, 0), width=120, "
                 f"height=120)\n    h = {call}\n    Fixed(body)\n    CenterInside(h, body)\n}}\n")
+    if t.node.kind == "cut":
+        return (imp + "solid panel {\n    body = Rectangle(center=(0, 0), width=60, "
+                f"height=60)\n    c = {call}\n    Fixed(body)\n}}\n")
     if t.node.kind == "drawing":
         return (imp + "solid disc {\n    body = Circle(center=(0, 0), radius=45)\n"
                 f"    label = {call}\n    Fixed(body)\n    CenterInside(label, body)\n}}\n")
@@ -557,7 +560,7 @@ Use it like a constant.
 """, ["parameter", "set", "--set"]),
     "def": ("statement", "`def NAME(p=default) -> solid { ... }`: a template.", """
 `def NAME(p1, p2=default, ...) -> KIND { body }` (or `KIND NAME(p1, ...) { body }`), top level;
-KIND is solid, hole, drawing or assembly. Instantiate it by assignment inside a structure:
+KIND is solid, hole, cut, drawing or assembly. Instantiate it by assignment inside a structure:
 `part = NAME(p1=...)` makes a child structure named `part` (reach inside: `part.rim.center`);
 `hole cut = NAME(...)` changes the instance's kind. Arguments are values (numbers, lengths,
 angles, strings, lists), not geometry; place the instance with constraints in the parent.
@@ -687,6 +690,19 @@ not cut: it can cover the opening (warning W0501; `AllowOverlap` when meant). A 
 top level or directly in an assembly is drawn as a dashed outline. The hole's shapes count
 in the enclosing structure's `.bb`.
 """, ["cutout", "cut-out", "opening", "pocket"]),
+    "cut": ("statement", "`cut NAME { ... }`: through-cuts along curves, open or closed.", """
+`cut NAME { ... }` inside a solid: the laser cuts along each of its curves exactly as written
+(Line, Arc, Bezier, Spline, Polyline; open or closed), through the part. An open curve takes
+no area (zero width: a slit, a living hinge's cut, a relief cut), so the part's outline and
+its 3D view are unchanged, unless the cut separates material: one that runs from edge to edge,
+or closes a loop with the outline, itself or another cut, frees the piece, which becomes a
+part of its own (or falls out as a hole when enclosed). A closed curve cuts a hole. Outputs
+cut it on the part's cut layer, before the part's holes and outline, once along the line;
+`--kerf` leaves it where it is (a line has no side). A cut belongs in a solid (E0125);
+`cut` stays usable as an ordinary name. W0522: a cut off the material; W0507: a web thinner
+than the minimum wall between cuts. Templates may return it: `def f(...) -> cut`,
+`cut c = f(...)`.
+""", ["slit", "through-cut", "through cut", "cut line", "kerf cut", "relief cut"]),
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes, on the `engrave` layer; nothing is filled or cut. Text is only allowed in a
@@ -1106,6 +1122,10 @@ EXAMPLES: dict[str, str] = {
     "hole": "solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
             "    hole bore { c = Circle(center=(0, 0), radius=5) }\n"
             "    CenterInside(bore, self)\n}\n",
+    "cut": _solid("body = Rectangle(center=(0, 0), width=60, height=30)\n"
+                  "cut slits {\n    a = Line((-20, 0), (20, 0))   # a slit, cut once\n"
+                  "    b = Line((20, 15), (30, 5))   # edge to edge: the corner is a part\n}\n"
+                  "Fixed(body)", "panel"),
     "drawing": _solid("body = Rectangle(center=(0, 0), width=50, height=20)\n"
                       "drawing mark {\n    t = Text(\"A-1\", position=(0, 0), size=6, "
                       "valign=\"middle\")\n    l = Line((-20, -7), (20, -7))\n}\nFixed(body)",

@@ -67,9 +67,9 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # long, ONE line the laser cuts once (a through-cut: the slit is one kerf
 # wide), with `bridge` of material between cuts of a column; `kerf_width` > 0
 # cuts each as a slot that wide instead (a router's or a thick sheet's). Every
-# second column is shifted by half a period, and its end cuts
-# run `overrun` past the band's top and bottom (so a band as tall as the
-# plate opens at its edges, as the hinge needs). Members: `cut_a` (the
+# second column is shifted by half a period, and its end cuts reach the
+# band's top and bottom (a slot runs `overrun` past them), so a band as tall
+# as the plate opens at its edges, as the hinge needs. Members: `cut_a` (the
 # full-length cuts, per column), `cut_b` (the end cuts).
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
                  kerf_width=0 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> cut {
@@ -96,7 +96,7 @@ def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
         if shifted {
             inner = rows / 2 * period - cut / 2
             for s in [-1, 1] {
-                top = cy + s * (height / 2 + overrun)
+                top = cy + s * (height / 2 + (overrun if slot else 0 mm))
                 if slot {
                     cut_b = Rectangle(center=(x, (top + cy + s * inner) / 2), width=kerf_width, height=abs(top - cy - s * inner))
                 } else {

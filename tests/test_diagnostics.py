@@ -671,9 +671,11 @@ def test_constraint_on_constructor_held_sizes_names_them(compile_text):
 def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)
-    # this file, and test_checks*.py for the geometry checks on the final shape (W05xx)
+    # this file, test_checks*.py for the geometry checks on the final shape (W05xx) and
+    # test_through_cuts.py for the `cut` kind's (E0125, W0522)
     text = here.read_text() + "".join(p.read_text()
-                                      for p in sorted(here.parent.glob("test_checks*.py")))
+                                      for p in sorted(here.parent.glob("test_checks*.py"))) \
+        + (here.parent / "test_through_cuts.py").read_text()
     missing = [code for code in CODES if f'"{code}"' not in text]
     assert missing == []
 

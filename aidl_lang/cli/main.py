@@ -796,9 +796,9 @@ def cmd_render(args) -> int:
         from ..output import CUT_FORMATS, for_cutting
         cut = for_cutting(output, kerf, res.deadline)   # --kerf, else the program's `kerf`
         from ..output.layout import through_cut_note
-        said = through_cut_note(output, cut)
-        if said:
-            notes.append(said)
+        kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
+        if kept:
+            notes.append(kept)
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.layout import place, plan

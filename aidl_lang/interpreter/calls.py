@@ -313,7 +313,9 @@ class Calls:
                                 f"another structure", spans.get(k, node.span), hint=hint)
         if kind == "Text" and s.kind != "drawing":
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
-                            node.span, hint="put it in `drawing labels { ... }` inside this structure")
+                            node.span, hint="put it in `drawing labels { ... }` inside this structure"
+                            if s.kind != "cut" else "a cut holds curves to cut along: engrave "
+                            "the text in `drawing labels { ... }` in the solid around the cut")
         self.n_geometry += 1
         if self.n_geometry > self.budget.geometry:
             raise EvalError("E0303", f"more than {self.budget.geometry} geometry objects", node.span,

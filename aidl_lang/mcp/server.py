@@ -118,7 +118,7 @@ Request = Annotated[str | None, Field(
 MAX_REQUEST = 10_000      # characters of a prompt's request
 
 INSTRUCTIONS = """AIDL is a text language for 2D CAD parts (laser cutting, CNC): named \
-structures (solid, hole, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
+structures (solid, hole, cut, drawing, assembly) hold geometry (Rectangle, Circle, Slot, ...) and \
 constraints that a solver satisfies. Read aidl://prompt (also offered as the prompt `aidl`) \
 for the vocabulary, standard library and examples; call `docs` with a name (Circle, \
 spur_gear, assert, ...) for its units, members and an example, or read aidl://docs/language \

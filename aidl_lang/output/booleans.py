@@ -919,13 +919,13 @@ class Renderer:
         pieces = []
         if paths:
             shp, pieces = self.slit(s, shp, paths, out)
-            for k, piece in enumerate(pieces, 1):
-                name = f"{s.path}.piece{k}"
-                out.parts.insert(at, Part(name, s.kind, piece))
-                out.part_of[name] = s
-                self.split.add(name)
         out.parts.insert(at, Part(s.path, s.kind, shp))
         out.part_of[s.path] = s
+        for k, piece in enumerate(pieces, 1):      # what its through-cuts freed: parts
+            name = f"{s.path}.piece{k}"
+            out.parts.insert(at + k, Part(name, s.kind, piece))
+            out.part_of[name] = s
+            self.split.add(name)
         if s.kind == "hole":
             for poly in shp.to_polygons():
                 out.hole_outlines.append(np.asarray(poly))

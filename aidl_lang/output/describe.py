@@ -246,11 +246,13 @@ def _text_items(output: Output) -> list[dict]:
     d = output.drawing
     if d is None:
         return []
-    owner = {s: name for name, s in d.part_of.items()}
+    owner: dict = {}
+    for name, s in d.part_of.items():          # a split part: its own name, not a piece's
+        owner.setdefault(s, name)
     from .part import _part_of
     groups: dict = {}
     for style, item, g in d.strokes:
-        if g is None:
+        if g is None or style == "cut":         # a through-cut is cut, not engraved
             continue
         pts = _item_points(item)
         if pts is None or not len(pts):
@@ -341,7 +343,8 @@ def describe(output: Output) -> dict:
     kinds, :func:`loop_shape`), ``openings`` (each inner loop's kind, centre and size),
     ``engravings``, ``copies`` (the other parts of the same shape), ``symmetry``
     (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None) and
-    ``notches`` (:func:`notches`)."""
+    ``notches`` (:func:`notches`) and ``through_cuts`` (each cut along a curve of a ``cut``
+    structure: ``{"name", "kind", "from", "to", "length"}``, mm)."""
     rows = parts_list(output)
     texts = _text_items(output)
     shapes = _own_shapes(output)
@@ -364,9 +367,34 @@ def describe(output: Output) -> dict:
                                       else DEFAULT_THICKNESS),
                       "thickness_set": p.thickness is not None,
                       "kerf": _r(kerfs[p.name]) if p.name in kerfs else None,
-                      "notches": notches(output, p)})
+                      "notches": notches(output, p),
+                      "through_cuts": _through(output, p.name)})
     return {"units": "mm", "parts": parts,
             "engravings": [t for t in texts if t["part"] == ""]}
+
+
+def _through(output: Output, part: str) -> list[dict]:
+    """The through-cuts of part ``part``: each stroke of style ``cut`` (its name, the kind
+    of its first segment, its ends and length in mm)."""
+    out = []
+    for st in output.cuts:
+        if st.part != part or not st.segments:
+            continue
+        a = st.segments[0]
+        b = st.segments[-1]
+        start = getattr(a, "start", None)
+        end = getattr(b, "end", None)
+        if start is None or end is None:              # a whole circle
+            start = end = _segment_point(a)
+        out.append({"name": st.source, "kind": type(a).__name__, "from": _pt(start),
+                    "to": _pt(end), "length": _r(sum(s.length for s in st.segments))})
+    return out
+
+
+def _segment_point(s):
+    c = s.center if hasattr(s, "center") else (0.0, 0.0)
+    r = getattr(s, "radius", 0.0)
+    return (c[0] + r, c[1])
 
 
 def _n(v: float) -> str:
@@ -438,6 +466,9 @@ def describe_text(doc: dict) -> str:
             out.append(f"  notch in the {nt['edge']} edge: {_n(nt['width'])} wide, "
                        f"{_n(nt['depth'])} deep, at {_at(nt['center'])}, cut by hole "
                        f"`{nt['hole']}` (it breaks through the outline: not an opening)")
+        for c in p.get("through_cuts", ()):
+            out.append(f"  through-cut: {c['kind']} `{c['name']}` from {_at(c['from'])} to "
+                       f"{_at(c['to'])}, {_n(c['length'])} mm (cut along, no width)")
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
         if p["copies"]:

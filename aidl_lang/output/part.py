@@ -288,8 +288,9 @@ ON_OUTLINE = 0.02     # mm: a through-cut this near a split part's outline is th
 def _off_outlines(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
     """``strokes`` less the through-cut (``cut``) segments that run along the outline of a
     part they split (a piece cut off: the laser cuts that stretch once, as the outlines of
-    the two pieces): every chord midpoint of the segment within :data:`ON_OUTLINE` of a loop
-    of ``parts``."""
+    the two pieces): five points of every chord of the segment (2 %, 25 %, 50 %, 75 %, 98 %)
+    within :data:`ON_OUTLINE` of a loop of ``parts``.  A segment only partly on an outline
+    stays whole (that stretch is cut twice)."""
     from .booleans import _chain_points
     edges = []
     for p in parts:
@@ -311,7 +312,8 @@ def _off_outlines(strokes: list[Stroke], parts: list[PartOutline]) -> list[Strok
         kept = []
         for seg in st.segments:
             pts = _chain_points([seg])
-            mids = (pts[1:] + pts[:-1]) / 2
+            a, b = pts[:-1], pts[1:]
+            mids = np.vstack([a + f * (b - a) for f in (0.02, 0.25, 0.5, 0.75, 0.98)])
             on = True
             for m in mids:
                 t = np.clip(((m - A) * D).sum(axis=1) / L2, 0.0, 1.0)

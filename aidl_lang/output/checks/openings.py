@@ -654,8 +654,9 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     if cut_area <= max(1e-9, 1e-6 * whole):
         if _over_opening(d, hole_shape, whole, _part_of(s, roots), roots):
             return                       # it declares an opening the solids enclose (W0515)
-        sink.warning("W0502", f"hole `{h.path}` cuts nothing: it lies outside solid `{s.path}`",
-                     h.span, hint=f"move the hole inside `{s.path}` (for example "
+        sink.warning("W0502", f"{h.kind} `{h.path}` cuts nothing: it lies outside solid "
+                     f"`{s.path}`",
+                     h.span, hint=f"move the {h.kind} inside `{s.path}` (for example "
                                   f"`CenterInside({h.name}, self)`), or declare it in the solid "
                                   "it should cut")
         return

@@ -82,7 +82,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     texts: dict = {}
     marks: dict = {}
     for style, item, g in d.strokes:
-        if g is None:
+        if g is None or style == "cut":         # a through-cut is cut, not engraved
             continue
         if g.kind == "Text":
             texts.setdefault(g, []).append(item)

@@ -1,7 +1,7 @@
 """Checks of through-cuts (a ``cut`` structure's open curves, :class:`~..booleans.Through`):
 
 * ``W0522`` a through-cut that cuts nothing: no stretch of it lies on the material of its
-  part (it is drawn off the part, or in a hole);
+  part (it is drawn off the part, or in a hole), or it has no length;
 * ``W0507`` a web thinner than the minimum wall that the through-cuts leave: the morphological
   opening (:func:`.walls._thin`) of the part with every through-cut's band taken out
   (:attr:`~..booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
@@ -28,8 +28,12 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
     for th in getattr(d, "through", ()):
         tick()
         band = th.band.area()
-        if band > 0 and th.inside <= OFF * band:
-            g = th.geometry
+        g = th.geometry
+        if band <= 0:
+            sink.warning("W0522", f"through-cut `{g.label}` has no length: it cuts nothing",
+                         g.span or th.part.span,
+                         hint="give it two different ends, or delete it")
+        elif th.inside <= OFF * band:
             sink.warning("W0522", f"through-cut `{g.label}` cuts nothing: it lies off the "
                          f"material of `{th.part.path}`", g.span or th.part.span,
                          hint=f"move it onto `{th.part.path}` (a cut that frees a piece runs "
