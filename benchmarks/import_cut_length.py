@@ -12,8 +12,9 @@ For each ``.svg``/``.dxf`` (``.gz`` too) of the folders (those after ``--laser``
   fill) is a cut colour (``--laser``: black ``#000000`` or blue ``#0000ff``; otherwise every
   shape), open paths included, at the file's mm per user unit; for a DXF, ezdxf's
   ``ezdxf.path.make_path`` of every LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE and
-  SPLINE in model space, flattened to 0.001 mm.  Its texts: SVG ``<text>`` with words, not
-  red (Boxes.py's annotations); DXF TEXT and MTEXT (ezdxf's query).
+  SPLINE of model space with its blocks placed (``ezdxf.disassemble.recursive_decompose``),
+  flattened to 0.001 mm, in mm by ``$INSUNITS``.  Its texts: SVG ``<text>`` with words, not
+  red (Boxes.py's annotations); DXF TEXT, and MTEXT's lines.
 - **program**: the file imported (:func:`aidl_lang.drawing.program.import_drawing`), the program
   compiled by the real compiler, built into the output model and written as DXF
   (:func:`aidl_lang.output.writers.dxf.to_dxf`), that DXF re-read by ezdxf: the length on its
@@ -101,10 +102,10 @@ def svg_file_figures(data: bytes, laser: bool) -> tuple[float, int]:
     return length, texts
 
 
-def _dxf_length(doc, layer=None) -> float:
+def _dxf_length(doc, layer=None, entities=None) -> float:
     from ezdxf import path as P
     total = 0.0
-    for e in doc.modelspace():
+    for e in (doc.modelspace() if entities is None else entities):
         if e.dxftype() not in ("LINE", "ARC", "CIRCLE", "ELLIPSE", "LWPOLYLINE", "POLYLINE",
                                "SPLINE"):
             continue
@@ -120,14 +121,27 @@ def _dxf_length(doc, layer=None) -> float:
 
 def dxf_file_figures(data: bytes) -> tuple[float, int]:
     """(length mm, texts) of a DXF's model space, by ezdxf (in the file's units)."""
+    import tempfile
     import ezdxf
     from ezdxf import recover
-    try:
-        doc = ezdxf.read(io.StringIO(data.decode("utf-8", "replace")))
-    except Exception:                                       # noqa: BLE001
-        doc, _ = recover.read(io.BytesIO(data))
-    texts = len(doc.modelspace().query("TEXT MTEXT"))
-    return _dxf_length(doc), texts
+    with tempfile.TemporaryDirectory() as tmp:             # readfile: ASCII or binary
+        path = pathlib.Path(tmp) / "f.dxf"
+        path.write_bytes(data)
+        try:
+            doc = ezdxf.readfile(path)
+        except Exception:                                   # noqa: BLE001
+            doc, _ = recover.readfile(path)
+    from ezdxf.disassemble import recursive_decompose
+    from aidl_lang.drawing.read import INSUNITS_MM
+    flat = list(recursive_decompose(doc.modelspace()))     # blocks placed, every copy
+    texts = 0
+    for e in flat:
+        if e.dxftype() == "TEXT" and e.dxf.get("text", "").strip():
+            texts += 1
+        elif e.dxftype() == "MTEXT":                        # one Text per line
+            texts += sum(1 for ln in e.plain_text().splitlines() if ln.strip())
+    mm = INSUNITS_MM.get(doc.header.get("$INSUNITS", 0), ("mm", 1.0))[1]
+    return _dxf_length(doc, entities=flat) * mm, texts
 
 
 def program_figures(text: str, name: str) -> tuple[bool, float, float, int]:

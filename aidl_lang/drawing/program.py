@@ -149,6 +149,7 @@ class _Writer:
         self.deadline = deadline
         self.cut_paths = 0          # open paths written as through-cuts, and their length
         self.cut_length = 0.0
+        self.crossed = 0            # loops on a cut role that cross themselves: engraved
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -307,21 +308,23 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         _texts(w, inner, d.texts, "t")
         if kind != "drawing":
             w.emit(depth + 1, "}")
-    if d.paths:
-        inner = depth + 1 if kind == "drawing" else depth + 2
-        cuts = kind != "drawing" and d.paths_cut
-        if cuts:                # a cut role's open paths: through-cuts, never engraved
-            w.emit(depth + 1, "cut cuts {")
-            w.cut_paths += len(d.paths)
-            w.cut_length += sum(_length(p.segments) for p in d.paths)
-        elif kind != "drawing":
+    # a cut role's open paths: through-cuts, never engraved; a loop that crosses itself (a
+    # closed curve in a `cut` is a hole's edge, which must not) stays an engraving, counted
+    cut_paths = [p for p in d.paths if p.crossing is None] \
+        if kind != "drawing" and d.paths_cut else []
+    drawn = [p for p in d.paths if not any(p is q for q in cut_paths)]
+    if cut_paths:
+        w.emit(depth + 1, "cut cuts {")
+        w.cut_paths += len(cut_paths)
+        w.cut_length += sum(_length(p.segments) for p in cut_paths)
+        _paths(w, depth + 2, cut_paths, name)
+        w.emit(depth + 1, "}")
+    if d.paths_cut and kind != "drawing":
+        w.crossed += len(drawn)
+    if drawn:
+        if kind != "drawing":
             w.emit(depth + 1, "drawing paths {")
-        for i, p in enumerate(d.paths):
-            closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
-            if not w.chain(inner, p.segments, closed, f"p{i + 1}_"):
-                w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
-                                             f"writes (a whole circle or ellipse inside a "
-                                             f"chain): left out"))
+        _paths(w, depth + 1 if kind == "drawing" else depth + 2, drawn, name)
         if kind != "drawing":
             w.emit(depth + 1, "}")
     e = getattr(d, "engrave", None)
@@ -337,6 +340,16 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         w.emit(depth, f"solid {name}_island{k} {{")
         _loop(w, depth + 1, segs, f"o{k}_", None)
         w.emit(depth, "}")
+
+
+def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
+    """The statements of open paths (and loops that cross themselves), ``p1_0 = ...``."""
+    for i, p in enumerate(paths):
+        closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+        if not w.chain(depth, p.segments, closed, f"p{i + 1}_"):
+            w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
+                                         f"writes (a whole circle or ellipse inside a "
+                                         f"chain): left out"))
 
 
 def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
@@ -489,6 +502,13 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
                                      f"part): the laser cuts along {'it' if n == 1 else 'them'}, "
                                      f"one pass each", "give engrave= (by layer or colour) for "
                                      "paths that are to be engraved instead"))
+    if w.crossed:
+        n = w.crossed
+        w.notes.append(Note("W0130", f"{n} loop{'s' if n != 1 else ''} of `{source}` on a cut "
+                                     f"role cross{'es' if n == 1 else ''} {'itself' if n == 1 else 'themselves'}: "
+                                     f"engraved (`drawing paths`), neither a hole nor a "
+                                     f"through-cut", "redraw the loop without the crossing in "
+                                     "the drawing program, then import again"))
     return "\n".join(w.lines) + "\n", w.notes
 
 
