@@ -241,3 +241,19 @@ def test_unreadable_numbers_in_path_data_are_counted_with_their_place():
     # what comes before the word is read (svgelements stops there); the polyline, whose
     # numbers svgelements would pair up wrongly after the word, is left out
     assert sorted(round(p.segments[0].end[0], 9) for p in d.paths) == [20, 20]
+
+
+def test_a_cut_loop_that_crosses_itself_stays_an_engraving():
+    """A bow tie on a cut role (it crosses itself at (20, 20), far from a small loop): a
+    closed curve in a `cut` is a hole's edge, which must not cross itself, so it stays the
+    `drawing paths` engraving it was, counted; the open slit beside it is a through-cut."""
+    body = [f'<path d="M 0 0 H 100 V 60 H 0 Z" stroke="{BLACK}" />',
+            f'<path d="M 10 10 L 30 30 L 30 10 L 10 30 Z" stroke="{BLUE}" />',
+            f'<path d="M 60 10 V 50" stroke="{BLUE}" />']
+    text, notes = import_drawing(_svg(body), "bow.svg", roles="laser")
+    cut = text.split("cut cuts {", 1)[1].split("}", 1)[0]
+    assert cut.strip() == "p1_0 = Line(start=(60, -10), end=(60, -50))"
+    assert "drawing paths {" in text.split("cut cuts {", 1)[1]
+    assert any(n.message == "1 loop of `bow.svg` on a cut role crosses itself: engraved "
+                            "(`drawing paths`), neither a hole nor a through-cut" for n in notes)
+    assert aidl_lang.compile(source=text, path="bow.aidl").ok
