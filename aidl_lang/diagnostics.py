@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import functools
 import os
-from dataclasses import dataclass, field
 from collections import namedtuple
 from collections.abc import Iterable
 from pathlib import Path
+
+from .records import Compared
 
 # the bundled standard library (``import "std/NAME.aidl"``): beside the package in a source
 # checkout, inside it in an installed wheel (aidl_lang.sources reads it from here)
@@ -64,36 +65,43 @@ class Span(namedtuple("Span", "file line col end_line end_col start end", defaul
         return Span(self.file, a.line, a.col, e.end_line, e.end_col, a.start, e.end)
 
 
-@dataclass(slots=True)
-class Label:
+class Label(Compared):
     """A secondary span with a message, shown under the primary caret (rustc's labels)."""
-    span: Span
-    message: str = ""
-    primary: bool = True
+    __slots__ = ("span", "message", "primary")
+
+    def __init__(self, span: Span, message: str = "", primary: bool = True):
+        self.span = span
+        self.message = message
+        self.primary = primary
 
 
-@dataclass(slots=True)
-class Fix:
+class Fix(Compared):
     """A suggested edit: replace the text at ``span`` with ``replacement``."""
+    __slots__ = ("span", "replacement")
 
-    span: Span
-    replacement: str
+    def __init__(self, span: Span, replacement: str):
+        self.span = span
+        self.replacement = replacement
 
     def to_json(self) -> dict:
         return {"span": self.span.to_json(), "replacement": self.replacement}
 
 
-@dataclass(slots=True)
-class Diagnostic:
+class Diagnostic(Compared):
     """One located problem: code (aidl_lang.codes), message, span, severity, hint, labels, suggestions, fix."""
-    code: str
-    message: str
-    span: Span | None = None
-    severity: str = "error"          # "error" | "warning" | "note"
-    hint: str | None = None
-    labels: list[Label] = field(default_factory=list)
-    suggestions: list[str] = field(default_factory=list)
-    fix: Fix | None = None
+    __slots__ = ("code", "message", "span", "severity", "hint", "labels", "suggestions", "fix")
+
+    def __init__(self, code: str, message: str, span: Span | None = None, severity: str = "error",
+                 hint: str | None = None, labels: list[Label] | None = None,
+                 suggestions: list[str] | None = None, fix: Fix | None = None):
+        self.code = code
+        self.message = message
+        self.span = span
+        self.severity = severity  # "error" | "warning" | "note"
+        self.hint = hint
+        self.labels = [] if labels is None else labels
+        self.suggestions = [] if suggestions is None else suggestions
+        self.fix = fix
 
     @property
     def is_error(self) -> bool:

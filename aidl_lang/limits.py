@@ -13,7 +13,7 @@ every budget figure by ``K``.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from .records import Frozen
 
 MAX_ITER = 10_000            # iterations of one loop or comprehension (Budget.items)
 MAX_GEOMETRY = 50_000        # geometry objects in one model (Budget.geometry)
@@ -21,8 +21,7 @@ MAX_TEMPLATE_DEPTH = 16      # nested template instances
 MAX_EXTENT = 1e6             # |coordinate|, size or length in mm a model may reach (1 km)
 
 
-@dataclass(frozen=True)
-class Budget:
+class Budget(Frozen):
     """The evaluation budget of one compile.  Defaults (docs/language.md §8.1):
 
     - ``steps``: 250 000 loop iterations, comprehension elements, calls and template
@@ -38,14 +37,18 @@ class Budget:
       (``E0301``);
     - ``geometry``: :data:`MAX_GEOMETRY` (50 000) geometry objects in one model (``E0303``).
     """
+    __slots__ = ("steps", "objects", "size", "seconds", "vertices", "items", "geometry")
 
-    steps: int = 250_000
-    objects: int = 120_000
-    size: int = 1_000_000
-    seconds: float = 15.0
-    vertices: int = 2_000_000
-    items: int = MAX_ITER
-    geometry: int = MAX_GEOMETRY
+    def __init__(self, steps: int = 250_000, objects: int = 120_000, size: int = 1_000_000,
+                 seconds: float = 15.0, vertices: int = 2_000_000, items: int = MAX_ITER,
+                 geometry: int = MAX_GEOMETRY):
+        object.__setattr__(self, "steps", steps)
+        object.__setattr__(self, "objects", objects)
+        object.__setattr__(self, "size", size)
+        object.__setattr__(self, "seconds", seconds)
+        object.__setattr__(self, "vertices", vertices)
+        object.__setattr__(self, "items", items)
+        object.__setattr__(self, "geometry", geometry)
 
     def scaled(self, k: float) -> "Budget":
         """Every figure multiplied by ``k`` (``--budget K``); ``k`` > 0."""

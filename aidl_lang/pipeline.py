@@ -10,10 +10,10 @@ import math
 import threading
 import time
 import warnings
-from dataclasses import dataclass
 
 import numpy as np
 
+from .records import Compared
 from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_path
 from .interp import Interpreter
 from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
@@ -27,17 +27,21 @@ from .solver import SolveResult, solve
 from .typecheck import check
 
 
-@dataclass
-class Compiled:
+class Compiled(Compared):
     """What :func:`compile_source` made: the diagnostics, and each stage's result it reached."""
+    __slots__ = ("sink", "model", "solve", "drawing", "solve_seconds", "params", "deadline")
 
-    sink: DiagnosticSink
-    model: Model | None = None
-    solve: SolveResult | None = None
-    drawing: Drawing | None = None      # the booleans' result, when the solve converged
-    solve_seconds: float = 0.0          # wall time of the solve alone (``aidl batch`` rows)
-    params: dict | None = None          # the main file's params: name -> value (Q, bool, str)
-    deadline: Deadline | None = None    # the compile's wall-time end, for the writers after it
+    def __init__(self, sink: DiagnosticSink, model: Model | None = None,
+                 solve: SolveResult | None = None, drawing: Drawing | None = None,
+                 solve_seconds: float = 0.0, params: dict | None = None,
+                 deadline: Deadline | None = None):
+        self.sink = sink
+        self.model = model
+        self.solve = solve
+        self.drawing = drawing  # the booleans' result, when the solve converged
+        self.solve_seconds = solve_seconds  # wall time of the solve alone (``aidl batch`` rows)
+        self.params = params  # the main file's params: name -> value (Q, bool, str)
+        self.deadline = deadline  # the compile's wall-time end, for the writers after it
 
     @property
     def ok(self) -> bool:

@@ -12,19 +12,24 @@ Argument types: ``point``, ``length``, ``angle``, ``number``, ``bool``, ``string
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+
+from .records import Frozen, Record
 
 REQUIRED = object()
 
 
-@dataclass(frozen=True)
-class Arg:
+class Arg(Frozen):
     """One argument of a registry entry's variant: name, AIDL type, default (REQUIRED if none), doc."""
-    name: str
-    type: str
-    default: object = REQUIRED
-    doc: str = ""
-    kw_only: bool = False            # may only be given by keyword (e.g. ``construction=``)
+    __slots__ = ("name", "type", "default", "doc", "kw_only")
+
+    def __init__(self, name: str, type: str, default: object = REQUIRED, doc: str = "",
+                 kw_only: bool = False):
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "type", type)
+        object.__setattr__(self, "default", default)
+        object.__setattr__(self, "doc", doc)
+        # may only be given by keyword (e.g. ``construction=``)
+        object.__setattr__(self, "kw_only", kw_only)
 
     @property
     def required(self) -> bool:
@@ -45,17 +50,20 @@ class Arg:
         return f"{d:g}" if isinstance(d, float) else str(d)
 
 
-@dataclass(eq=False)
-class Entry:
+class Entry(Record):
     """A builtin (primitive, constraint, structural or function): its call variants, doc and members."""
-    name: str
-    category: str                    # primitive | constraint | structural | function
-    variants: list[tuple[Arg, ...]]
-    doc: str
-    members: dict[str, str] = field(default_factory=dict)   # member -> type (primitives)
-    # more positional arguments than the variant has join its last positional one, as a list:
-    # ``Rigid(a, b, c, d)`` binds b = [b, c, d]
-    varargs: bool = False
+    __slots__ = ("name", "category", "variants", "doc", "members", "varargs")
+
+    def __init__(self, name: str, category: str, variants: list[tuple[Arg, ...]], doc: str,
+                 members: dict[str, str] | None = None, varargs: bool = False):
+        self.name = name
+        self.category = category  # primitive | constraint | structural | function
+        self.variants = variants
+        self.doc = doc
+        self.members = {} if members is None else members  # member -> type (primitives)
+        # more positional arguments than the variant has join its last positional one, as a list:
+        # ``Rigid(a, b, c, d)`` binds b = [b, c, d]
+        self.varargs = varargs
 
     def signature(self, variant: tuple[Arg, ...] | None = None) -> str:
         vs = [variant] if variant is not None else self.variants

@@ -4,10 +4,10 @@
 # Try: --set waist=22  --set lower_bout=48  --set hole_radius=14
 
 units mm
-param waist = 26       # half width at the waist
-param lower_bout = 44  # half width of the lower bout
-param upper_bout = 32  # half width of the upper bout
-param hole_radius = 12
+param waist = 26, min = 10, max = 52, step = 1       # half width at the waist
+param lower_bout = 44, min = 20, max = 88, step = 1  # half width of the lower bout
+param upper_bout = 32, min = 16, max = 64, step = 1  # half width of the upper bout
+param hole_radius = 12, min = 4, max = 24, step = 1
 thickness 3 mm
 
 solid body {

@@ -6,7 +6,7 @@
 param name = "ADA LOVELACE"
 param title = "Analytical Engine Programmer"
 param width = 90 mm
-param height = 55 mm
+param height = 55 mm, min = 25 mm
 
 name_size = min(8 mm, (width - 20 mm) / len(name))  # shrink long names to fit
 

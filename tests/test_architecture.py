@@ -48,7 +48,7 @@ def test_flat_package_is_gone():
     public API (`api`)."""
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
     assert top == ["api", "ast", "cache", "codes", "diagnostics", "files", "interp", "limits",
-                   "memory", "parser", "pipeline", "reference", "registry", "sources",
+                   "memory", "parser", "pipeline", "records", "reference", "registry", "sources",
                    "typecheck", "workers"]
 
 

@@ -135,9 +135,11 @@ def check_hpgl(out, data: bytes, passes: int = 1) -> dict:
     plot, paths = _read(data)
     assert len(paths) == len(cuts) * passes
     # the extent: the units are 40 a mm (a wrong scale moves the far side by 1.6 %)
-    import dataclasses
+    import copy
     b = plot.pages[0].bounds
-    X0, Y0, X1, Y1 = extent(dataclasses.replace(out, page=None))      # the drawing's own box
+    own = copy.copy(out)
+    own.page = None
+    X0, Y0, X1, Y1 = extent(own)                                      # the drawing's own box
     assert (b.min.x, b.min.y, b.max.x, b.max.y) == pytest.approx(
         (X0 - x0, Y0 - y0, X1 - x0, Y1 - y0), abs=TOL)
     stats = {"arcs": 0, "centres_rounded": 0}

@@ -191,7 +191,8 @@ def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
              "e = g.entry('generator/divider_tray')\n"
              "print(json.dumps({'ids': [x.id for x in g.entries()], 'where': str(g.EXAMPLES),"
              " 'ok': g.compile_entry(e).ok, 'svg': '<path' in g.thumbnail(e),"
-             " 'rows': [p['name'] for p in e.params]}))")
+             " 'rows': [p['name'] for p in e.params],"
+             " 'form': 'ring=sun + 2 * planet' in g.entry('generator/planetary').source}))")
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}   # the wheel's, not ours
     r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
                        text=True, timeout=300, cwd=tmp_path, env=env)
@@ -201,6 +202,7 @@ def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
     assert got["ids"] == [e.id for e in gallery.entries()]
     assert Path(got["where"]).is_relative_to(venv)
     assert got["ok"] and got["svg"] and {"rows", "cols", "thickness"} <= set(got["rows"])
+    assert got["form"]                  # aidl_lang/studio/forms/ is in the wheel
 
 
 @pytest.mark.slow

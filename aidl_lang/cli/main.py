@@ -279,6 +279,11 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                     help="requests per client, such as 300/minute (the default)")
     so.add_argument("--memory", type=int, default=None, metavar="MB",
                     help="memory cap of one compile worker (default 1500)")
+    so.add_argument("--store", default=None, metavar="redis://HOST:PORT/DB",
+                    help="keep uploads and rate counters in this Redis: any process of any "
+                         "machine answers any request (default: a local folder)")
+    so.add_argument("--scheduler", default=None, metavar="tcp://HOST:PORT",
+                    help="compile on this Dask cluster instead of local workers")
     _budget_arg(so)
     m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
             description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
@@ -998,8 +1003,20 @@ def cmd_studio(args) -> int:
         except ValueError:
             return _usage(f"--rate expects a count per period such as 300/minute, got "
                           f"`{args.rate}`")
+    if args.store is not None:
+        from ..studio.store import check_url
+        try:
+            check_url(args.store)
+        except ValueError as e:
+            return _usage(str(e))
+    import re
+    if args.scheduler is not None and not re.fullmatch(r"(tcp|tls|inproc|ucx)://\S+",
+                                                        args.scheduler):
+        return _usage(f"--scheduler expects a Dask scheduler address such as "
+                      f"tcp://HOST:8786, got `{args.scheduler}`")
     return studio(args.host, args.port, args.processes, args.compilers, rate=args.rate,
-                  memory_mb=args.memory, budget=getattr(args, "budget", None))
+                  memory_mb=args.memory, budget=getattr(args, "budget", None),
+                  store=args.store, scheduler=args.scheduler)
 
 
 def cmd_batch(args) -> int:

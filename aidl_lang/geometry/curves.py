@@ -26,11 +26,11 @@ from __future__ import annotations
 
 import math
 
-from dataclasses import dataclass
 from functools import cached_property
 
 from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
     cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
+from ..records import Compared, Frozen
 
 Point = tuple[float, float]
 
@@ -44,24 +44,28 @@ def tolerance(scale: float) -> float:
     return EPS * max(1.0, scale * 1e-3)
 
 
-@dataclass(frozen=True)
-class Line:
+class Line(Frozen):
     """The straight segment from ``start`` to ``end`` (mm)."""
-    start: Point
-    end: Point
+    __slots__ = ("start", "end")
+
+    def __init__(self, start: Point, end: Point):
+        object.__setattr__(self, "start", start)
+        object.__setattr__(self, "end", end)
 
     @property
     def length(self) -> float:
         return math.dist(self.start, self.end)
 
 
-@dataclass(frozen=True)
-class Arc:
+class Arc(Frozen):
     """Circular arc from ``start_angle`` sweeping ``sweep`` radians (> 0 counter-clockwise)."""
-    center: Point
-    radius: float
-    start_angle: float
-    sweep: float
+    __slots__ = ("center", "radius", "start_angle", "sweep")
+
+    def __init__(self, center: Point, radius: float, start_angle: float, sweep: float):
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "radius", radius)
+        object.__setattr__(self, "start_angle", start_angle)
+        object.__setattr__(self, "sweep", sweep)
 
     @property
     def end_angle(self) -> float:
@@ -89,27 +93,31 @@ class Arc:
         return self.radius * abs(self.sweep)
 
 
-@dataclass(frozen=True)
-class Circle:
+class Circle(Frozen):
     """A full circle; ``ccw`` False when it is a hole (clockwise) of its part."""
-    center: Point
-    radius: float
-    ccw: bool = True
+    __slots__ = ("center", "radius", "ccw")
+
+    def __init__(self, center: Point, radius: float, ccw: bool = True):
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "radius", radius)
+        object.__setattr__(self, "ccw", ccw)
 
     @property
     def length(self) -> float:
         return 2 * math.pi * self.radius
 
 
-@dataclass(frozen=True)
-class Spline:
+class Spline(Frozen):
     """The piece of an interpolating cubic spline ``curve`` (:class:`~.spline.CubicSpline`)
     from position ``u0`` to ``u1`` (``u1 < u0``: run backwards; a closed curve wraps, so
     ``|u1 - u0|`` may be its whole ``n``).  Its exact form is :attr:`spans`: cubic Béziers
     cut from the curve's spans by de Casteljau at ``u0`` and ``u1``."""
-    curve: object
-    u0: float
-    u1: float
+    __slots__ = ("curve", "u0", "u1")
+
+    def __init__(self, curve, u0: float, u1: float):
+        object.__setattr__(self, "curve", curve)
+        object.__setattr__(self, "u0", u0)
+        object.__setattr__(self, "u1", u1)
 
     @cached_property
     def spans(self) -> list:
@@ -156,14 +164,16 @@ class Spline:
         return bspline_of(ctrl, _span_steps(self))
 
 
-@dataclass(frozen=True)
-class EllipticArc:
+class EllipticArc(Frozen):
     """The piece of ellipse ``curve`` (:class:`~.ellipse.EllipseCurve`) from parameter
     ``start_param`` sweeping ``sweep`` radians of it (> 0 counter-clockwise; +-2 pi: the
     whole ellipse, a loop of its own like a :class:`Circle`)."""
-    curve: EllipseCurve
-    start_param: float
-    sweep: float
+    __slots__ = ("curve", "start_param", "sweep")
+
+    def __init__(self, curve: EllipseCurve, start_param: float, sweep: float):
+        object.__setattr__(self, "curve", curve)
+        object.__setattr__(self, "start_param", start_param)
+        object.__setattr__(self, "sweep", sweep)
 
     @property
     def end_param(self) -> float:
@@ -263,11 +273,13 @@ def _span_steps(s: "Spline") -> list[float]:
 Segment = Line | Arc | Circle | Spline | EllipticArc
 
 
-@dataclass
-class Loop:
+class Loop(Compared):
     """A closed outline: consecutive segments, each ending where the next starts.  A loop
     that runs clockwise (negative :attr:`area`) is a hole of its part."""
-    segments: list[Segment]
+    __slots__ = ("segments",)
+
+    def __init__(self, segments: list[Segment]):
+        self.segments = segments
 
     @property
     def area(self) -> float:
@@ -296,11 +308,13 @@ class Loop:
         return self.area < 0
 
     def points(self, tol: float | None = None):
-        """A polyline of the loop (N x 2 array, closed implicitly), arcs sampled by
-        :func:`~aidl_lang.geometry.tessellate.segments_for` chords."""
+        """A polyline of the loop (N x 2 array, mm, closed implicitly), arcs and circles sampled
+        by :func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` (mm; None:
+        ``CHORD_TOL``; splines and ellipses always within ``CHORD_TOL``), every vertex on the
+        exact curve."""
         import numpy as np
         xs, ys = [], []
-        sample_xy(self.segments, xs, ys)
+        sample_xy(self.segments, xs, ys, tol)
         return np.column_stack([np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)]) \
             if xs else np.zeros((0,), dtype=float)
 
@@ -308,11 +322,13 @@ class Loop:
         return Loop([reverse(s) for s in reversed(self.segments)])
 
 
-def sample_xy(segments, xs: list, ys: list) -> None:
+def sample_xy(segments, xs: list, ys: list, tol: float | None = None) -> None:
     """Append the vertices of :meth:`Loop.points` of ``segments`` to ``xs`` and ``ys``: each
     line's start, each arc's start and its interior chord ends, each circle's chord ends
-    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords, mm)."""
-    from .tessellate import segments_for
+    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` mm, None:
+    ``CHORD_TOL``)."""
+    from .tessellate import CHORD_TOL, segments_for
+    tol = CHORD_TOL if tol is None else max(float(tol), CHORD_TOL)
     cos, sin, pi = math.cos, math.sin, math.pi
     for s in segments:
         if isinstance(s, Line):
@@ -327,14 +343,15 @@ def sample_xy(segments, xs: list, ys: list) -> None:
         elif isinstance(s, Arc):
             cx, cy = s.center
             r, a0, sw = s.radius, s.start_angle, s.sweep
-            n = max(1, segments_for(r, abs(sw)))
+            # a coarse view's arc may be one chord; the exact writers' keep at least 3
+            n = max(1, segments_for(r, abs(sw), tol, 3 if tol == CHORD_TOL else 1))
             angles = [a0 + sw * i / n for i in range(n)]
             xs += [cx + r * cos(a) for a in angles]
             ys += [cy + r * sin(a) for a in angles]
         else:
             cx, cy = s.center
             r = s.radius
-            n = segments_for(r)
+            n = segments_for(r, 2 * pi, tol)
             sg = 1 if s.ccw else -1
             angles = [sg * 2 * pi * i / n for i in range(n)]
             xs += [cx + r * cos(a) for a in angles]

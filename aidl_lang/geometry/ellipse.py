@@ -18,9 +18,10 @@ from __future__ import annotations
 
 import cmath
 import math
-from dataclasses import dataclass
 
 import numpy as np
+
+from ..records import Frozen
 
 Point = tuple[float, float]
 
@@ -28,13 +29,15 @@ TOUCH = 1e-5        # relative distance below which two crossings are one touch 
 NEAR = 1e-10        # relative gap (the equations are scaled as distances) that still touches
 
 
-@dataclass(frozen=True)
-class EllipseCurve:
+class EllipseCurve(Frozen):
     """The whole ellipse (see the module text); build it with :func:`ellipse`."""
-    center: Point
-    rx: float
-    ry: float
-    rotation: float
+    __slots__ = ("center", "rx", "ry", "rotation")
+
+    def __init__(self, center: Point, rx: float, ry: float, rotation: float):
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "rx", rx)
+        object.__setattr__(self, "ry", ry)
+        object.__setattr__(self, "rotation", rotation)
 
     # ---------------------------------------------------------- points
     def at(self, t: float) -> Point:

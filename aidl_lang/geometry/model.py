@@ -7,10 +7,9 @@ structure has a translation frame (two parameters) relative to its parent; the r
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
+from ..records import Record
 from ..diagnostics import Span
 from .expr import Expr, Lin, _new, var
 
@@ -57,30 +56,40 @@ class Model:
             yield from s.geometry
 
 
-@dataclass(eq=False)
-class Structure:
+class Structure(Record):
     """A structure of the model: kind, parent, frame translation parameters, children, geometry."""
-    name: str
-    kind: str                      # solid | hole | cut | drawing | assembly
-    parent: "Structure | None"
-    span: Span | None
-    fx: int = -1                   # frame translation parameters
-    fy: int = -1
-    children: dict[str, "Structure"] = field(default_factory=dict)
-    geometry: list["Geometry"] = field(default_factory=list)
-    constraints: list["Constraint"] = field(default_factory=list)
-    scope: dict = field(default_factory=dict)     # names visible as members (s.NAME)
-    template: str | None = None
-    # a copy made by an operation (Mirrored, a pattern) is held on its parent's frame: where
-    # the original's origin went, (x, y) expressions in the model frame (Result.values)
-    copy_origin: tuple | None = None
-    # the first copy of a pattern whose list starts with its original (`holes[1]` of
-    # `holes = LinearPattern(bolt, ...)`): that original, which is also `holes[0]`
-    pattern_original: "Structure | None" = None
-    # `CutInto(hole, part)`: a hole declared in an assembly cuts the solid `part` (of a
-    # template instance, typically) instead of being a part of its own; `cut_by` on the solid
-    cuts_into: "Structure | None" = None
-    cut_by: list = field(default_factory=list)
+    __slots__ = ("name", "kind", "parent", "span", "fx", "fy", "children", "geometry",
+                 "constraints", "scope", "template", "copy_origin", "pattern_original",
+                 "cuts_into", "cut_by")
+
+    def __init__(self, name: str, kind: str, parent: "Structure | None", span: Span | None,
+                 fx: int = -1, fy: int = -1, children: dict[str, "Structure"] | None = None,
+                 geometry: list["Geometry"] | None = None,
+                 constraints: list["Constraint"] | None = None, scope: dict | None = None,
+                 template: str | None = None, copy_origin: tuple | None = None,
+                 pattern_original: "Structure | None" = None, cuts_into: "Structure | None" = None,
+                 cut_by: list | None = None):
+        self.name = name
+        self.kind = kind  # solid | hole | cut | drawing | assembly
+        self.parent = parent
+        self.span = span
+        self.fx = fx  # frame translation parameters
+        self.fy = fy
+        self.children = {} if children is None else children
+        self.geometry = [] if geometry is None else geometry
+        self.constraints = [] if constraints is None else constraints
+        self.scope = {} if scope is None else scope  # names visible as members (s.NAME)
+        self.template = template
+        # a copy made by an operation (Mirrored, a pattern) is held on its parent's frame: where
+        # the original's origin went, (x, y) expressions in the model frame (Result.values)
+        self.copy_origin = copy_origin
+        # the first copy of a pattern whose list starts with its original (`holes[1]` of
+        # `holes = LinearPattern(bolt, ...)`): that original, which is also `holes[0]`
+        self.pattern_original = pattern_original
+        # `CutInto(hole, part)`: a hole declared in an assembly cuts the solid `part` (of a
+        # template instance, typically) instead of being a part of its own; `cut_by` on the solid
+        self.cuts_into = cuts_into
+        self.cut_by = [] if cut_by is None else cut_by
 
     @property
     def path(self) -> str:
@@ -142,14 +151,16 @@ class Structure:
         return f"<{self.kind} {self.path}>"
 
 
-@dataclass(eq=False)
-class Point:
+class Point(Record):
     """A point: the indices of its x and y parameters in the model's parameter vector."""
-    ix: int
-    iy: int
-    owner: Structure
-    span: Span | None
-    label: str = ""
+    __slots__ = ("ix", "iy", "owner", "span", "label")
+
+    def __init__(self, ix: int, iy: int, owner: Structure, span: Span | None, label: str = ""):
+        self.ix = ix
+        self.iy = iy
+        self.owner = owner
+        self.span = span
+        self.label = label
 
     def local(self) -> tuple[Expr, Expr]:
         return var(self.ix), var(self.iy)
@@ -165,48 +176,57 @@ class Point:
         return ox, oy
 
 
-@dataclass(eq=False)
-class Scalar:
+class Scalar(Record):
     """A named scalar parameter of a geometry (radius, width, ...): an index, held or free."""
+    __slots__ = ("index", "owner", "dim", "label")
 
-    index: int
-    owner: Structure
-    dim: str = "length"            # length | angle | number
-    label: str = ""
+    def __init__(self, index: int, owner: Structure, dim: str = "length", label: str = ""):
+        self.index = index
+        self.owner = owner
+        self.dim = dim  # length | angle | number
+        self.label = label
 
 
-@dataclass(eq=False)
-class Geometry:
+class Geometry(Record):
     """A primitive (line, circle, ...): its named points and scalar parameters."""
-    kind: str                      # Point | Line | Circle | Arc | Rectangle | ...
-    owner: Structure
-    span: Span | None
-    name: str = ""
-    points: dict[str, Point] = field(default_factory=dict)
-    scalars: dict[str, Scalar] = field(default_factory=dict)
-    data: dict = field(default_factory=dict)      # kind-specific: corner radius, text, ...
-    parts: dict = field(default_factory=dict)      # sub-geometry (rectangle edges, ...)
-    construction: bool = False
-    closed: bool = False
-    listed: bool = False           # in its owner's ``geometry`` (else a part: an edge, a spine)
-    # the first copy of a pattern whose list starts with its original (`dots[1]` of
-    # `dots = LinearPattern(c, ...)`): that original, which is also `dots[0]`
-    pattern_original: "Geometry | None" = None
+    __slots__ = ("kind", "owner", "span", "name", "points", "scalars", "data", "parts",
+                 "construction", "closed", "listed", "pattern_original")
+
+    def __init__(self, kind: str, owner: Structure, span: Span | None, name: str = "",
+                 points: dict[str, Point] | None = None, scalars: dict[str, Scalar] | None = None,
+                 data: dict | None = None, parts: dict | None = None, construction: bool = False,
+                 closed: bool = False, listed: bool = False,
+                 pattern_original: "Geometry | None" = None):
+        self.kind = kind  # Point | Line | Circle | Arc | Rectangle | ...
+        self.owner = owner
+        self.span = span
+        self.name = name
+        self.points = {} if points is None else points
+        self.scalars = {} if scalars is None else scalars
+        self.data = {} if data is None else data  # kind-specific: corner radius, text, ...
+        self.parts = {} if parts is None else parts  # sub-geometry (rectangle edges, ...)
+        self.construction = construction
+        self.closed = closed
+        self.listed = listed  # in its owner's ``geometry`` (else a part: an edge, a spine)
+        # the first copy of a pattern whose list starts with its original (`dots[1]` of
+        # `dots = LinearPattern(c, ...)`): that original, which is also `dots[0]`
+        self.pattern_original = pattern_original
 
     @property
     def label(self) -> str:
         return f"{self.owner.path}.{self.name}" if self.name else f"{self.kind} in {self.owner.path}"
 
 
-@dataclass(eq=False)
-class Equation:
+class Equation(Record):
     """``expr == 0`` (``ineq=False``) or ``expr >= 0`` (``ineq=True``)."""
+    __slots__ = ("expr", "ineq", "branch")
 
-    expr: Expr
-    ineq: bool = False
-    # convention-dependent constraints: an expression that is > 0 on the branch chosen at the
-    # start; the solve warns (W0403) when it ends <= 0 (the part flipped to another branch)
-    branch: Expr | None = None
+    def __init__(self, expr: Expr, ineq: bool = False, branch: Expr | None = None):
+        self.expr = expr
+        self.ineq = ineq
+        # convention-dependent constraints: an expression that is > 0 on the branch chosen at the
+        # start; the solve warns (W0403) when it ends <= 0 (the part flipped to another branch)
+        self.branch = branch
 
 
 def equation(expr: Expr, ineq: bool = False, branch: Expr | None = None) -> Equation:
@@ -219,21 +239,28 @@ def equation(expr: Expr, ineq: bool = False, branch: Expr | None = None) -> Equa
     return e
 
 
-@dataclass(eq=False)
-class Constraint:
+class Constraint(Record):
     """A constraint as written in the source and the equations it adds."""
-    kind: str                      # canonical constraint name or "equation" / "internal"
-    owner: Structure
-    span: Span | None
-    equations: list[Equation] = field(default_factory=list)
-    # equations holding bounding-box terms, expanded just before solving (aidl_lang.bbox)
-    deferred: list[Equation] | None = None
-    text: str = ""
-    implicit: bool = False         # created by a constructor, not written by the user
-    # a hold (a Drawing2D's placement at its `at`): its rows are kept only along what the
-    # other constraints leave free (aidl_lang.solver.holds.settle_holds)
-    hold: bool = False
-    released: bool = False         # a hold given up after a failed solve (settle_holds)
+    # ``text`` is a property (below): a written constraint's text is cut from ``_src``
+    __slots__ = ("kind", "owner", "span", "equations", "deferred", "text", "implicit", "hold",
+                 "released")
+
+    def __init__(self, kind: str, owner: Structure, span: Span | None,
+                 equations: list[Equation] | None = None, deferred: list[Equation] | None = None,
+                 text: str = "", implicit: bool = False, hold: bool = False,
+                 released: bool = False):
+        self.kind = kind  # canonical constraint name or "equation" / "internal"
+        self.owner = owner
+        self.span = span
+        self.equations = [] if equations is None else equations
+        # equations holding bounding-box terms, expanded just before solving (aidl_lang.bbox)
+        self.deferred = deferred
+        self.text = text
+        self.implicit = implicit  # created by a constructor, not written by the user
+        # a hold (a Drawing2D's placement at its `at`): its rows are kept only along what the
+        # other constraints leave free (aidl_lang.solver.holds.settle_holds)
+        self.hold = hold
+        self.released = released  # a hold given up after a failed solve (settle_holds)
 
     def describe(self) -> str:
         return self.text or self.kind
@@ -257,18 +284,20 @@ def _set_constraint_text(c: Constraint, value: str) -> None:
 Constraint.text = property(_constraint_text, _set_constraint_text)
 
 
-@dataclass(eq=False)
-class Assertion:
+class Assertion(Record):
     """An ``assert`` statement whose condition depends on solved values: each of ``sides`` is
     ``(op, left, right, dim)`` (``op`` one of ``==`` ``<=`` ``<`` ``>=`` ``>``; ``left``,
     ``right`` expressions in mm or radians, box terms allowed; ``dim`` the values' dimension),
     all of which must hold at the solution.  ``text``: the condition as written; ``message``:
     the user's reason, or None; ``unit``/``scale``: the file's length unit for messages."""
+    __slots__ = ("span", "text", "message", "owner", "sides", "unit", "scale")
 
-    span: Span | None
-    text: str
-    message: str | None
-    owner: Structure
-    sides: list = field(default_factory=list)
-    unit: str = "mm"
-    scale: float = 1.0
+    def __init__(self, span: Span | None, text: str, message: str | None, owner: Structure,
+                 sides: list | None = None, unit: str = "mm", scale: float = 1.0):
+        self.span = span
+        self.text = text
+        self.message = message
+        self.owner = owner
+        self.sides = [] if sides is None else sides
+        self.unit = unit
+        self.scale = scale

@@ -35,6 +35,7 @@ def build(ctx, kind: str, args: dict, span) -> Geometry:
     g.construction = bool(args.get("construction", False))
     g.closed = False
     g.listed = True
+    g.pattern_original = None
     fn = _BUILD.get(kind) or globals()["_build_" + kind]
     fn(ctx, g, args)
     ctx.struct.geometry.append(g)

@@ -11,12 +11,15 @@ import math
 CHORD_TOL = 0.005
 
 
-def segments_for(radius: float, sweep: float = 2 * math.pi) -> int:
-    """Chords for an arc of ``radius`` (mm) over ``sweep`` (radians): at least 3, at most 20000."""
+def segments_for(radius: float, sweep: float = 2 * math.pi, tol: float = CHORD_TOL,
+                 least: int = 3) -> int:
+    """Chords for an arc of ``radius`` (mm) over ``sweep`` (radians) whose sagitta stays below
+    ``tol`` (mm; :data:`CHORD_TOL` unless a coarser view asks for fewer): at least ``least``
+    (3: a circle stays a polygon), at most 20000."""
     r = abs(radius)
-    if r <= CHORD_TOL:
-        return max(3, int(8 * sweep / (2 * math.pi)))
-    step = 2 * math.acos(max(-1.0, 1 - CHORD_TOL / r)) if r < 1e9 else 0.0
+    if r <= tol:
+        return max(least, int(8 * sweep / (2 * math.pi)))
+    step = 2 * math.acos(max(-1.0, 1 - tol / r)) if r < 1e9 else 0.0
     if step <= 0.0 or not math.isfinite(step):
-        step = 2 * math.sqrt(2 * CHORD_TOL / r) if math.isfinite(r) else 2 * math.pi / 20000
-    return max(3, min(20000, int(math.ceil(sweep / step))))
+        step = 2 * math.sqrt(2 * tol / r) if math.isfinite(r) else 2 * math.pi / 20000
+    return max(least, min(20000, int(math.ceil(sweep / step))))

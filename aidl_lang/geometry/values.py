@@ -9,8 +9,7 @@ validity rules can be checked where the value is used.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from ..records import Record
 from .expr import Expr, _lin, as_const, lift
 from .model import Geometry, Point, Structure
 
@@ -25,12 +24,14 @@ class UnitError(Exception):
     pass
 
 
-@dataclass(eq=False, slots=True)
-class Q:
+class Q(Record):
     """A quantity: an expression with its dimension (length, angle, number) and the structures it reads."""
-    expr: Expr
-    dim: tuple = NUM
-    owners: frozenset = _EMPTY
+    __slots__ = ("expr", "dim", "owners")
+
+    def __init__(self, expr: Expr, dim: tuple = NUM, owners: frozenset = _EMPTY):
+        self.expr = expr
+        self.dim = dim
+        self.owners = owners
 
     @staticmethod
     def num(v: float, dim=NUM) -> "Q":
@@ -40,40 +41,47 @@ class Q:
         return as_const(self.expr)
 
 
-@dataclass(eq=False, slots=True)
-class PV:
+class PV(Record):
     """A point value: coordinates in the current structure's frame; ``obj`` if it is a point."""
+    __slots__ = ("x", "y", "obj", "owners")
 
-    x: Expr
-    y: Expr
-    obj: Point | None = None
-    owners: frozenset = _EMPTY
+    def __init__(self, x: Expr, y: Expr, obj: Point | None = None, owners: frozenset = _EMPTY):
+        self.x = x
+        self.y = y
+        self.obj = obj
+        self.owners = owners
 
 
-@dataclass(eq=False, slots=True)
-class GeomRef:
+class GeomRef(Record):
     """A value naming a primitive."""
-    geom: Geometry
+    __slots__ = ("geom",)
+
+    def __init__(self, geom: Geometry):
+        self.geom = geom
 
     @property
     def owners(self):
         return self.geom.owner.owner_set()
 
 
-@dataclass(eq=False, slots=True)
-class StructRef:
+class StructRef(Record):
     """A value naming a structure."""
-    struct: Structure
+    __slots__ = ("struct",)
+
+    def __init__(self, struct: Structure):
+        self.struct = struct
 
     @property
     def owners(self):
         return self.struct.owner_set()
 
 
-@dataclass(eq=False, slots=True)
-class BBoxRef:
+class BBoxRef(Record):
     """``x.bbox``: the bounding box of a structure or primitive, its terms expanded before solving."""
-    target: object                 # Structure | Geometry
+    __slots__ = ("target",)
+
+    def __init__(self, target: object):
+        self.target = target  # Structure | Geometry
 
     @property
     def owners(self):
@@ -81,25 +89,31 @@ class BBoxRef:
         return (t if isinstance(t, Structure) else t.owner).owner_set()
 
 
-@dataclass(eq=False, slots=True)
-class Template:
+class Template(Record):
     """A ``def`` template with the scope it was defined in."""
-    node: object                   # ast.Def
-    scope: object                  # the defining file's scope
-    file_units: float = 1.0
+    __slots__ = ("node", "scope", "file_units")
+
+    def __init__(self, node: object, scope: object, file_units: float = 1.0):
+        self.node = node  # ast.Def
+        self.scope = scope  # the defining file's scope
+        self.file_units = file_units
 
 
-@dataclass(eq=False, slots=True)
-class Builtin:
+class Builtin(Record):
     """A registry builtin (primitive, constraint, function) used as a value."""
-    name: str                      # registry entry or function name
+    __slots__ = ("name",)
+
+    def __init__(self, name: str):
+        self.name = name  # registry entry or function name
 
 
-@dataclass(eq=False, slots=True)
-class Namespace:
+class Namespace(Record):
     """An imported file's scope, named by its ``as`` alias."""
-    name: str
-    scope: object
+    __slots__ = ("name", "scope")
+
+    def __init__(self, name: str, scope: object):
+        self.name = name
+        self.scope = scope
 
 
 def dim_name(d: tuple) -> str:

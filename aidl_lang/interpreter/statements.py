@@ -139,7 +139,7 @@ class Statements:
                             overridden = False
                     if st.options:
                         try:
-                            fctx.param_ranges[st.name] = self._param_range(st, val, overridden)
+                            self._param_range(st, val, overridden, fctx.param_ranges)
                         except EvalError as e:
                             self.error(e)
                     fctx.scope.vars[st.name] = val
@@ -156,11 +156,15 @@ class Statements:
         self.file = prev if not is_main else fctx
         return fctx
 
-    def _param_range(self, st: A.ParamDecl, val, overridden: bool) -> dict:
+    def _param_range(self, st: A.ParamDecl, val, overridden: bool,
+                     into: dict | None = None) -> dict:
         """Check ``param NAME = V, min=A, max=B, step=S`` (docs/language.md, *Params*): the
         options have the param's dimension, ``min <= max``, ``step > 0``, and the value (the
         default, or the ``--set`` override) lies in ``[min, max]`` (E0124).  Returns
-        ``{"min": float|None, "max": ..., "step": ...}`` in internal units (mm, rad)."""
+        ``{"min": float|None, "max": ..., "step": ...}`` in internal units (mm, rad), also
+        written to ``into[NAME]`` once the range itself is sound, before the value is checked
+        against it (a form moves a value that left its range, one that depends on other
+        params, back into it: aidl studio)."""
         from ..geometry.values import dim_name
         if not isinstance(val, Q) or val.const() is None:
             raise EvalError("E0124", f"param `{st.name}` has a range but is not a number, length "
@@ -192,6 +196,8 @@ class Statements:
                             hint="swap them")
         if step is not None and step <= 0:
             raise EvalError("E0124", f"param `{st.name}`: step must be positive", opt["step"].span)
+        if into is not None:
+            into[st.name] = out
         v = val.const()
         bad = "min" if lo is not None and v < lo - 1e-9 else \
               "max" if hi is not None and v > hi + 1e-9 else None
@@ -680,7 +686,7 @@ class Statements:
                 c._src = self.sink.sources.get(span.file, "")
         else:
             c._text = text
-        c.implicit = False
+        c.implicit = c.hold = c.released = False
         s.constraints.append(c)
         self.model.constraints.append(c)
 

@@ -18,11 +18,11 @@ that close on no area.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import manifold3d as mf
 import numpy as np
 
+from ..records import Compared
 from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
                                simplify)
 from ..geometry.ellipse import ellipse
@@ -49,59 +49,76 @@ END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (
 SLIT_HALF = 2.5e-7
 
 
-@dataclass
-class Part:
+class Part(Compared):
     """One part of the booleans' result: its structure's final shape (mm)."""
+    __slots__ = ("name", "kind", "shape")
 
-    name: str
-    kind: str                     # solid | hole (a hole with no solid to cut)
-    shape: mf.CrossSection
+    def __init__(self, name: str, kind: str, shape: mf.CrossSection):
+        self.name = name
+        self.kind = kind  # solid | hole (a hole with no solid to cut)
+        self.shape = shape
 
 
-@dataclass
-class Cut:
+class Cut(Compared):
     """A hole child ``hole`` of the solid ``owner``: ``region`` is what it removed (mm)."""
-    hole: Structure
-    owner: Structure
-    before: mf.CrossSection       # the owner's shape before its holes
-    region: mf.CrossSection       # before ∩ hole
+    __slots__ = ("hole", "owner", "before", "region")
+
+    def __init__(self, hole: Structure, owner: Structure, before: mf.CrossSection,
+                 region: mf.CrossSection):
+        self.hole = hole
+        self.owner = owner
+        self.before = before  # the owner's shape before its holes
+        self.region = region  # before ∩ hole
 
 
-@dataclass
-class Through:
+class Through(Compared):
     """A through-cut: an open curve ``geometry`` of a ``cut`` structure, cut along as written
     (zero width) through ``part`` (the part's structure): its exact ``segments`` (mm) and
     ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
     zero-width cut); ``inside``: the band's area inside the part before any through-cut
     (0: the cut is off the material)."""
-    geometry: Geometry
-    part: Structure
-    segments: list
-    band: mf.CrossSection
-    inside: float = 0.0
+    __slots__ = ("geometry", "part", "segments", "band", "inside")
+
+    def __init__(self, geometry: Geometry, part: Structure, segments: list,
+                 band: mf.CrossSection, inside: float = 0.0):
+        self.geometry = geometry
+        self.part = part
+        self.segments = segments
+        self.band = band
+        self.inside = inside
 
 
-@dataclass
-class Drawing:
+class Drawing(Compared):
     """The booleans' result of a model: its parts, lines, cuts and each structure's own shape."""
+    __slots__ = ("parts", "lines", "hole_outlines", "open_curves", "exact", "strokes", "shapes",
+                 "own", "cuts", "construction", "part_of", "thickness")
 
-    parts: list[Part] = field(default_factory=list)
-    lines: list[tuple[str, np.ndarray]] = field(default_factory=list)    # (style, Nx2 polyline)
-    hole_outlines: list[np.ndarray] = field(default_factory=list)
-    open_curves: list[Geometry] = field(default_factory=list)
-    # the exact curves behind every polygon handed to Manifold (:mod:`.exact`)
-    exact: Provenance | None = None
-    # engraving in exact form: ("line", p, q) | ("arc", c, r, a1, a2) | ("circle", c, r) |
-    # ("poly", Nx2 closed polyline); with its style and source geometry
-    strokes: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
-    shapes: dict = field(default_factory=dict)       # Structure -> its final CrossSection
-    own: dict = field(default_factory=dict)          # Structure -> [(Geometry, CrossSection)]
-    cuts: list[Cut] = field(default_factory=list)
-    construction: list[tuple[str, tuple, Geometry | None]] = field(default_factory=list)
-    part_of: dict = field(default_factory=dict)      # Part name -> its Structure
-    # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
-    # the file's); parts without one are missing
-    thickness: dict = field(default_factory=dict)
+    def __init__(self, parts: list[Part] | None = None,
+                 lines: list[tuple[str, np.ndarray]] | None = None,
+                 hole_outlines: list[np.ndarray] | None = None,
+                 open_curves: list[Geometry] | None = None, exact: Provenance | None = None,
+                 strokes: list[tuple[str, tuple, Geometry | None]] | None = None,
+                 shapes: dict | None = None, own: dict | None = None,
+                 cuts: list[Cut] | None = None,
+                 construction: list[tuple[str, tuple, Geometry | None]] | None = None,
+                 part_of: dict | None = None, thickness: dict | None = None):
+        self.parts = [] if parts is None else parts
+        self.lines = [] if lines is None else lines  # (style, Nx2 polyline)
+        self.hole_outlines = [] if hole_outlines is None else hole_outlines
+        self.open_curves = [] if open_curves is None else open_curves
+        # the exact curves behind every polygon handed to Manifold (:mod:`.exact`)
+        self.exact = exact
+        # engraving in exact form: ("line", p, q) | ("arc", c, r, a1, a2) | ("circle", c, r) |
+        # ("poly", Nx2 closed polyline); with its style and source geometry
+        self.strokes = [] if strokes is None else strokes
+        self.shapes = {} if shapes is None else shapes  # Structure -> its final CrossSection
+        self.own = {} if own is None else own  # Structure -> [(Geometry, CrossSection)]
+        self.cuts = [] if cuts is None else cuts
+        self.construction = [] if construction is None else construction
+        self.part_of = {} if part_of is None else part_of  # Part name -> its Structure
+        # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
+        # the file's); parts without one are missing
+        self.thickness = {} if thickness is None else thickness
 
     # faces that close on no area: [(structure, geometry or first curve of the loop, area
     # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields

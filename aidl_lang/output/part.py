@@ -18,10 +18,10 @@ millimetres, angles in radians, y up.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..records import Compared
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
 from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
 from .booleans import Drawing
@@ -52,15 +52,17 @@ class MissingDependency(OutputError):
     """An optional output library is not installed; the message says how to install it."""
 
 
-@dataclass
-class PartOutline:
+class PartOutline(Compared):
     """One part: its name (structure path), kind (``solid``, or ``hole`` for a hole with no
     solid to cut), outline loops (outer ones counter-clockwise, holes clockwise) and thickness
     (mm, for 3D outputs)."""
-    name: str
-    kind: str
-    loops: list[Loop]
-    thickness: float | None = None
+    __slots__ = ("name", "kind", "loops", "thickness")
+
+    def __init__(self, name: str, kind: str, loops: list[Loop], thickness: float | None = None):
+        self.name = name
+        self.kind = kind
+        self.loops = loops
+        self.thickness = thickness
 
     @property
     def shape(self):
@@ -80,32 +82,37 @@ class PartOutline:
         return sum(lp.perimeter for lp in self.loops)
 
 
-@dataclass
-class Stroke:
+class Stroke(Compared):
     """Engraving, or a through-cut: an open or closed chain of segments (``style`` drawing |
     open: engraved or scored; ``cut``: a ``cut`` structure's curve, cut through the part
     along the line as written, zero width), each segment ending where the next starts (a
     laser runs it without lifting).  ``part``: the
     name of the part whose structure (or an ancestor of it) holds the engraving, "" for one
     at assembly level outside every part (a cutting layout moves it with that part)."""
-    segments: list[Segment]
-    style: str = "drawing"
-    closed: bool = False
-    source: str = ""
-    part: str = ""
+    __slots__ = ("segments", "style", "closed", "source", "part")
+
+    def __init__(self, segments: list[Segment], style: str = "drawing", closed: bool = False,
+                 source: str = "", part: str = ""):
+        self.segments = segments
+        self.style = style
+        self.closed = closed
+        self.source = source
+        self.part = part
 
 
-@dataclass
-class Output:
+class Output(Compared):
     """What the writers get: exact part outlines and engraving strokes (mm); the strokes of
     style ``cut`` are through-cuts (:attr:`cuts`), cut through the material, not engraved."""
+    __slots__ = ("parts", "engrave", "title", "drawing", "page")
 
-    parts: list[PartOutline] = field(default_factory=list)
-    engrave: list[Stroke] = field(default_factory=list)
-    title: str = ""
-    drawing: Drawing | None = None     # the booleans' result (debug layers, checks)
-    # (x0, y0, x1, y1) mm: a fixed page (a cutting layout's sheet) instead of the extent
-    page: tuple | None = None
+    def __init__(self, parts: list[PartOutline] | None = None, engrave: list[Stroke] | None = None,
+                 title: str = "", drawing: Drawing | None = None, page: tuple | None = None):
+        self.parts = [] if parts is None else parts
+        self.engrave = [] if engrave is None else engrave
+        self.title = title
+        self.drawing = drawing  # the booleans' result (debug layers, checks)
+        # (x0, y0, x1, y1) mm: a fixed page (a cutting layout's sheet) instead of the extent
+        self.page = page
 
     @property
     def cuts(self) -> list:

@@ -29,7 +29,7 @@ from .. import ast as A
 from ..diagnostics import Diagnostic, DiagnosticSink
 from ..interp import Interpreter
 from ..limits import Deadline
-from ..output import to_svg
+from ..output import build, to_svg
 from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
@@ -53,6 +53,7 @@ class Result:
     fctx: object = None
     warm: bool = False
     drawing: object = None
+    output: object = None       # the exact Output the SVG was written from
     title: str = ""
     timings: dict = field(default_factory=dict)
 
@@ -77,6 +78,7 @@ class Session:
         self.solver: Solver | None = None         # warm: tapes compiled for the last model
         self._row_keys: list[str] | None = None
         self.version = 0                          # bumps on every load / set_params
+        self.shown: tuple | None = None           # (version, Output) of the svg
         self._dof_pending: Solver | None = None
         self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
         self._base: object = None                 # the defaults' Drawing, then its topology
@@ -270,7 +272,8 @@ class Session:
             res.ok = not sink.has_errors
             return res
         t3 = time.perf_counter()
-        res.svg = to_svg(d, title=model.root.name)
+        res.output = build(d, model.root.name)      # once: the SVG's, and the studio's 3D
+        res.svg = to_svg(res.output, title=model.root.name)
         t["svg_ms"] = _ms(t3)
         res.ok = not sink.has_errors
         res.timings = t
@@ -318,6 +321,8 @@ class Session:
         if res.ok:
             self.svg = res.svg
             self.svg_values = dict(self.values)
+            # the picture's exact Output (aidl studio's 3D view is made from it)
+            self.shown = (self.version, res.output)
         self.last = dict(res.timings, total_ms=_ms(t0), warm=res.warm)
         return self.view()
 

@@ -16,10 +16,9 @@ conflict sets found, with their structure and source span.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
+from ..records import Compared
 from ..geometry.model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
 from .holds import build_rows
@@ -27,8 +26,7 @@ from .system import LINK, SIGN, user_residuals
 from .tape import Tape
 
 
-@dataclass
-class SolveResult:
+class SolveResult(Compared):
     """Outcome of :func:`solve`.
 
     ``n_unknowns``/``n_equations``: what Newton solved for (the free unknowns, the rows);
@@ -37,20 +35,28 @@ class SolveResult:
     ``n_unknowns``.  ``unsatisfied``: ``[(Constraint, residual)]`` worst first; ``conflicts``: list of
     :class:`~.diagnose.Conflict`; ``budget_exceeded``: the iteration budget ran out.
     """
+    __slots__ = ("converged", "iterations", "rounds", "unsatisfied", "max_residual", "n_unknowns",
+                 "n_equations", "n_settled", "conflicts", "budget_exceeded", "out_of_time",
+                 "attempts", "solver")
 
-    converged: bool
-    iterations: int
-    rounds: int
-    unsatisfied: list = field(default_factory=list)
-    max_residual: float = 0.0
-    n_unknowns: int = 0
-    n_equations: int = 0
-    n_settled: int = 0
-    conflicts: list = field(default_factory=list)
-    budget_exceeded: bool = False
-    out_of_time: bool = False
-    attempts: int = 0
-    solver: Solver | None = None
+    def __init__(self, converged: bool, iterations: int, rounds: int,
+                 unsatisfied: list | None = None, max_residual: float = 0.0, n_unknowns: int = 0,
+                 n_equations: int = 0, n_settled: int = 0, conflicts: list | None = None,
+                 budget_exceeded: bool = False, out_of_time: bool = False, attempts: int = 0,
+                 solver: Solver | None = None):
+        self.converged = converged
+        self.iterations = iterations
+        self.rounds = rounds
+        self.unsatisfied = [] if unsatisfied is None else unsatisfied
+        self.max_residual = max_residual
+        self.n_unknowns = n_unknowns
+        self.n_equations = n_equations
+        self.n_settled = n_settled
+        self.conflicts = [] if conflicts is None else conflicts
+        self.budget_exceeded = budget_exceeded
+        self.out_of_time = out_of_time
+        self.attempts = attempts
+        self.solver = solver
 
 
 def solve_text(res: SolveResult) -> str:

@@ -22,20 +22,21 @@ on its own (``tests/test_solver_batch.py``).  Only dense-sized blocks are batche
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..records import Record
 from .arrays import unique
 from .tape import Tape
 
 
-@dataclass(eq=False)
-class BlockResult:
+class BlockResult(Record):
     """One block's Newton outcome in a batched solve."""
-    converged: bool
-    iterations: int
-    residual: float          # max |F| of the block's (kept) rows at its end point
+    __slots__ = ("converged", "iterations", "residual")
+
+    def __init__(self, converged: bool, iterations: int, residual: float):
+        self.converged = converged
+        self.iterations = iterations
+        self.residual = residual  # max |F| of the block's (kept) rows at its end point
 
 
 def _norms(Fk: np.ndarray) -> np.ndarray:

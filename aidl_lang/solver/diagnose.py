@@ -25,10 +25,10 @@ check does not pay SciPy's import.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..records import Compared
 from .arrays import unique
 
 from ..geometry.model import Constraint
@@ -46,24 +46,26 @@ DENSE_CELLS = 250_000    # a structure's Jacobian up to this many cells is ranke
 MAX_CONFLICTS = 10       # conflict sets collected per failed system (the report shows 3)
 
 
-@dataclass
-class Conflict:
+class Conflict(Compared):
     """Constraints that cannot all hold together: ``[(Constraint, residual)]``."""
+    __slots__ = ("items",)
 
-    items: list = field(default_factory=list)
+    def __init__(self, items: list | None = None):
+        self.items = [] if items is None else items
 
     @property
     def constraints(self) -> list[Constraint]:
         return [c for c, _ in self.items]
 
 
-@dataclass
-class Redundant:
+class Redundant(Compared):
     """``constraint`` is implied by ``by`` (consistent: a warning, not an error)."""
+    __slots__ = ("constraint", "by", "partly")
 
-    constraint: Constraint
-    by: list
-    partly: bool = False         # only some of the constraint's equations are implied
+    def __init__(self, constraint: Constraint, by: list, partly: bool = False):
+        self.constraint = constraint
+        self.by = by
+        self.partly = partly  # only some of the constraint's equations are implied
 
 
 def _order_key(c: Constraint, r: int):
@@ -342,15 +344,17 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
     return out
 
 
-@dataclass
-class StructureDof:
+class StructureDof(Compared):
     """Remaining freedom of one structure's own sketch (its unknowns and children's frames)."""
+    __slots__ = ("structure", "unknowns", "rank", "floating", "why")
 
-    structure: object
-    unknowns: int
-    rank: int                                        # -1: not counted (``why`` says why)
-    floating: list = field(default_factory=list)     # labels of undetermined entities
-    why: str = ""                                    # "too large" or "out of time"
+    def __init__(self, structure: object, unknowns: int, rank: int, floating: list | None = None,
+                 why: str = ""):
+        self.structure = structure
+        self.unknowns = unknowns
+        self.rank = rank  # -1: not counted (``why`` says why)
+        self.floating = [] if floating is None else floating  # labels of undetermined entities
+        self.why = why  # "too large" or "out of time"
 
     @property
     def dof(self) -> int:
@@ -1182,17 +1186,20 @@ def _rank(A: np.ndarray) -> int:
     return int(np.sum(sv > 1e-7 * max(1.0, float(sv[0]))))
 
 
-@dataclass
-class Sliding:
+class Sliding(Compared):
     """What the freedom left means (issue 35): ``placement`` the parts whose whole body can
     still move (``[(part, "x"|"y"|"x, y")]``: where the part sits, harmless), ``features``
     the structures inside a part that can move relative to it (``[(structure, axes)]``)."""
+    __slots__ = ("placement", "features", "constrained", "bounded")
 
-    placement: list = field(default_factory=list)
-    features: list = field(default_factory=list)
-    constrained: set = field(default_factory=set)   # ids of features some row places
-    bounded: set = field(default_factory=set)       # ids of features that slide only within
-    #                                                 inequalities not reached (Inside, ...)
+    def __init__(self, placement: list | None = None, features: list | None = None,
+                 constrained: set | None = None, bounded: set | None = None):
+        self.placement = [] if placement is None else placement
+        self.features = [] if features is None else features
+        # ids of features some row places; ids of features that slide only within
+        self.constrained = set() if constrained is None else constrained
+        self.bounded = set() if bounded is None else bounded
+        #                                                 inequalities not reached (Inside, ...)
 
 
 def _parts(model) -> list:

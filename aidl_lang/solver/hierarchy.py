@@ -24,10 +24,10 @@ of a held value (:meth:`Solver.set_value`) only reruns Newton.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..records import Compared, Record
 from .arrays import unique
 
 from ..geometry.model import Model, Structure
@@ -48,36 +48,44 @@ FRAME_SCALE = 100.0       # frames move 1e4x cheaper (in the squared step norm) 
 SLACK_SCALE = 100.0       # an inactive inequality barely resists motion
 
 
-@dataclass
-class Attempt:
+class Attempt(Compared):
     """One Newton solve of a row set for a set of unknowns."""
+    __slots__ = ("stage", "depth", "rows", "cols", "ok", "iterations", "rounds", "order", "x_end")
 
-    stage: str                 # "local", "translate", "deform" or "flat"
-    depth: int
-    rows: np.ndarray
-    cols: np.ndarray
-    ok: bool = False
-    iterations: int = 0
-    rounds: int = 0
-    order: int = 0             # post-order position of its structure (trace order)
-    x_end: np.ndarray | None = None     # x[cols] where it ended (a failure restores it)
+    def __init__(self, stage: str, depth: int, rows: np.ndarray, cols: np.ndarray,
+                 ok: bool = False, iterations: int = 0, rounds: int = 0, order: int = 0,
+                 x_end: np.ndarray | None = None):
+        self.stage = stage  # "local", "translate", "deform" or "flat"
+        self.depth = depth
+        self.rows = rows
+        self.cols = cols
+        self.ok = ok
+        self.iterations = iterations
+        self.rounds = rounds
+        self.order = order  # post-order position of its structure (trace order)
+        self.x_end = x_end  # x[cols] where it ended (a failure restores it)
 
 
-@dataclass(eq=False)
-class Failure:
+class Failure(Record):
     """A structure whose solve failed, with the attempt that failed."""
-    structure: Structure
-    attempt: Attempt
+    __slots__ = ("structure", "attempt")
+
+    def __init__(self, structure: Structure, attempt: Attempt):
+        self.structure = structure
+        self.attempt = attempt
 
 
-@dataclass(eq=False)
-class Trace:
+class Trace(Record):
     """What the hierarchical solve did: its attempts, failures, iterations and limits hit."""
-    attempts: list = field(default_factory=list)
-    failures: list = field(default_factory=list)
-    iterations: int = 0
-    budget_exceeded: bool = False
-    out_of_time: bool = False
+    __slots__ = ("attempts", "failures", "iterations", "budget_exceeded", "out_of_time")
+
+    def __init__(self, attempts: list | None = None, failures: list | None = None,
+                 iterations: int = 0, budget_exceeded: bool = False, out_of_time: bool = False):
+        self.attempts = [] if attempts is None else attempts
+        self.failures = [] if failures is None else failures
+        self.iterations = iterations
+        self.budget_exceeded = budget_exceeded
+        self.out_of_time = out_of_time
 
 
 class Solver:

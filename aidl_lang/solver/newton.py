@@ -16,10 +16,9 @@ from __future__ import annotations
 
 import math
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..records import Record
 from .tape import Tape
 
 TOL = 1e-10
@@ -74,13 +73,15 @@ def solve_dense(M: np.ndarray, b: np.ndarray) -> np.ndarray:
         return _umath_linalg.solve1(M, b, signature="dd->d")
 
 
-@dataclass(eq=False)
-class NewtonResult:
+class NewtonResult(Record):
     """A Newton solve's end point, whether it converged, its iterations and residual."""
-    x: np.ndarray
-    converged: bool
-    iterations: int
-    residual: float          # max |F| at x
+    __slots__ = ("x", "converged", "iterations", "residual")
+
+    def __init__(self, x: np.ndarray, converged: bool, iterations: int, residual: float):
+        self.x = x
+        self.converged = converged
+        self.iterations = iterations
+        self.residual = residual  # max |F| at x
 
 
 class _Step:

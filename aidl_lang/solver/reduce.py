@@ -15,28 +15,29 @@ minimum-norm step meaningful: a class of ``k`` unknowns weighs like its members 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..records import Compared
 from .tape import Tape
 
 
-@dataclass
-class Reduction:
+class Reduction(Compared):
     """``x[cols] = S @ z + t``; ``keep``: positions (in the tape) of rows still to solve.
 
     ``S`` (len(cols), n_z) has one 1 per row of an unknown left to solve, in column ``zc[i]``
     (``-1``: the unknown is fixed, its row of ``S`` is empty).  :meth:`expand` applies it with
     array indexing; the SciPy matrix :attr:`S` is made only when a sparse solve asks for it.
     """
+    __slots__ = ("zc", "t", "keep", "z0", "scale", "rows")
 
-    zc: np.ndarray             # (len(cols),) class column of each unknown, -1 if fixed
-    t: np.ndarray              # (len(cols),)
-    keep: np.ndarray
-    z0: np.ndarray             # starting unknowns (class means)
-    scale: np.ndarray          # (n_z,)
-    rows: np.ndarray | None = None   # the unknowns in a class (zc >= 0), if known
+    def __init__(self, zc: np.ndarray, t: np.ndarray, keep: np.ndarray, z0: np.ndarray,
+                 scale: np.ndarray, rows: np.ndarray | None = None):
+        self.zc = zc  # (len(cols),) class column of each unknown, -1 if fixed
+        self.t = t  # (len(cols),)
+        self.keep = keep
+        self.z0 = z0  # starting unknowns (class means)
+        self.scale = scale  # (n_z,)
+        self.rows = rows  # the unknowns in a class (zc >= 0), if known
 
     def expand(self, z: np.ndarray) -> np.ndarray:
         """``S @ z`` (bit for bit the sparse product: ``0.0 + z[zc[i]]``, 0 where fixed)."""

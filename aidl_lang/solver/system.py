@@ -15,11 +15,11 @@ Parameters: the model's ``x`` (``n_model`` entries) followed by one slack per in
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from itertools import chain
 
 import numpy as np
 
+from ..records import Compared, Record
 from ..memory import gc_paused
 from ..geometry.bbox import collect, exclusions, expand, side_expr
 from ..geometry.expr import Lin, add, func, mul, var
@@ -28,25 +28,30 @@ from ..geometry.model import Constraint, Model
 EQ, LINK, SIGN = 0, 1, 2
 
 
-@dataclass
-class Rows:
+class Rows(Compared):
     """All residual rows of a model (see module doc).
 
     ``exprs[r]``: residual expression over the extended parameter vector; ``constraint[r]``:
     the constraint it comes from; ``kind[r]``: EQ, LINK (``g - s``) or SIGN (``s - |s|``);
     ``slack[r]``: the slack's parameter index for LINK/SIGN rows, else -1.
     """
+    __slots__ = ("exprs", "constraint", "kind", "slack", "n_model", "n_params", "by_owner",
+                 "bounded_holds")
 
-    exprs: list = field(default_factory=list)
-    constraint: list = field(default_factory=list)
-    kind: list = field(default_factory=list)
-    slack: list = field(default_factory=list)
-    n_model: int = 0
-    n_params: int = 0
-    by_owner: dict = field(default_factory=dict)      # id(Structure) -> [row]
-    # holds kept (holds.settle_holds) whose rows share unknowns with an inequality: released and
-    # solved again when the solve fails (an inequality may need to move the drawing)
-    bounded_holds: list = field(default_factory=list)
+    def __init__(self, exprs: list | None = None, constraint: list | None = None,
+                 kind: list | None = None, slack: list | None = None, n_model: int = 0,
+                 n_params: int = 0, by_owner: dict | None = None,
+                 bounded_holds: list | None = None):
+        self.exprs = [] if exprs is None else exprs
+        self.constraint = [] if constraint is None else constraint
+        self.kind = [] if kind is None else kind
+        self.slack = [] if slack is None else slack
+        self.n_model = n_model
+        self.n_params = n_params
+        self.by_owner = {} if by_owner is None else by_owner  # id(Structure) -> [row]
+        # holds kept (holds.settle_holds) whose rows share unknowns with an inequality: released and
+        # solved again when the solve fails (an inequality may need to move the drawing)
+        self.bounded_holds = [] if bounded_holds is None else bounded_holds
 
     def add(self, c: Constraint, e, kind=EQ, slack=-1) -> None:
         r = len(self.exprs)
@@ -117,8 +122,7 @@ PIVOT = 1e-6      # a pinning row's coefficient on the unknown it pins, against 
 SMALL_LEVEL = 16  # a level of fewer pins is done in Python (a NumPy level costs ~20 calls)
 
 
-@dataclass(eq=False)
-class Pins:
+class Pins(Record):
     """What :func:`pinned` found: ``var[k]`` (a parameter index) is pinned by row ``row[k]``,
     through that row's term at ``entry[k]`` (an index into ``cols``/``vals``).  ``level[k]``
     (non-decreasing) orders them: a row of level ``L`` reads constants and parameters pinned
@@ -126,14 +130,17 @@ class Pins:
     that is an affine equation (other rows have none) in compressed sparse rows: row ``r``'s
     parameters and coefficients at ``indptr[r]:indptr[r + 1]``, in its ``terms`` dict's
     order.  Iterating gives the ``(parameter, row)`` pairs in order."""
+    __slots__ = ("var", "row", "entry", "level", "indptr", "cols", "vals")
 
-    var: np.ndarray
-    row: np.ndarray
-    entry: np.ndarray
-    level: np.ndarray
-    indptr: np.ndarray
-    cols: np.ndarray
-    vals: np.ndarray
+    def __init__(self, var: np.ndarray, row: np.ndarray, entry: np.ndarray, level: np.ndarray,
+                 indptr: np.ndarray, cols: np.ndarray, vals: np.ndarray):
+        self.var = var
+        self.row = row
+        self.entry = entry
+        self.level = level
+        self.indptr = indptr
+        self.cols = cols
+        self.vals = vals
 
     def __len__(self) -> int:
         return len(self.var)

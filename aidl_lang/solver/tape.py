@@ -24,11 +24,11 @@ stays valid when a held dimension is edited: re-solving after an edit only rerun
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from itertools import chain
 
 import numpy as np
 
+from ..records import Record
 from ..memory import gc_paused
 from .arrays import unique
 
@@ -116,19 +116,23 @@ class TapeError(ValueError):
     """An expression the tape cannot compile (an unknown operator or an unexpanded term)."""
 
 
-@dataclass(eq=False)
-class _Group:
+class _Group(Record):
     """The nodes of one operation, evaluated together by fancy indexing."""
-    op: int
-    idx: np.ndarray       # node indices computed by this group
-    a0: np.ndarray        # first argument node of each (MIN/MAX: start of its run of marg)
-    a1: np.ndarray        # second argument node (== a0 for unary ops; MIN/MAX: arity)
-    uniq0: bool           # a0 has no repeated node (plain fancy-index accumulation is exact)
-    uniq1: bool
-    sel: np.ndarray | None = None   # for MIN/MAX: position of each node in the choices array
-    args: np.ndarray | None = None  # for MIN/MAX: argument nodes of all its nodes, flattened
-    starts: np.ndarray | None = None  # for MIN/MAX: where each node's arguments start in args
-    seg: np.ndarray | None = None   # for MIN/MAX: the node (0..len(idx)) of each argument
+    __slots__ = ("op", "idx", "a0", "a1", "uniq0", "uniq1", "sel", "args", "starts", "seg")
+
+    def __init__(self, op: int, idx: np.ndarray, a0: np.ndarray, a1: np.ndarray, uniq0: bool,
+                 uniq1: bool, sel: np.ndarray | None = None, args: np.ndarray | None = None,
+                 starts: np.ndarray | None = None, seg: np.ndarray | None = None):
+        self.op = op
+        self.idx = idx  # node indices computed by this group
+        self.a0 = a0  # first argument node of each (MIN/MAX: start of its run of marg)
+        self.a1 = a1  # second argument node (== a0 for unary ops; MIN/MAX: arity)
+        self.uniq0 = uniq0  # a0 has no repeated node (plain fancy-index accumulation is exact)
+        self.uniq1 = uniq1
+        self.sel = sel  # for MIN/MAX: position of each node in the choices array
+        self.args = args  # for MIN/MAX: argument nodes of all its nodes, flattened
+        self.starts = starts  # for MIN/MAX: where each node's arguments start in args
+        self.seg = seg  # for MIN/MAX: the node (0..len(idx)) of each argument
 
 
 def _pick(g: _Group, vals: np.ndarray) -> np.ndarray:

@@ -11,6 +11,9 @@ links and embeds that carry the program in the URL.
 * :mod:`.app`: the Starlette routes, rate limits and the busy answer.
 * :mod:`.compiler`: what a compile worker does (preview, download, thumbnail).
 * :mod:`.sessions`: a tab's upload folder, the only files its program can read.
+* :mod:`.store`: the uploads and rate counters in Redis (``--store``), mirrored into folders.
+* :mod:`.remote`: compiles on a Dask cluster (``--scheduler``).
+* :mod:`.metrics`: ``/healthz`` and ``/metrics`` (Prometheus) for the operator.
 * ``static/``: the page (HTML, JS, CSS; CodeMirror under ``static/vendor/``).
 
 A separate command from ``aidl serve``: ``serve FILE`` previews one file of this machine for its
@@ -54,6 +57,10 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
     for k, v in settings.items():
         if v is not None:
             setattr(s, k, v)
+    problem = _reachable(s)
+    if problem:
+        print(f"aidl: error: {problem}", file=sys.stderr)
+        return 2
     from ..serve import listening
     sock = listening(host, port, 1024)
     if sock is None:
@@ -92,6 +99,32 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
         if made:
             shutil.rmtree(s.data, ignore_errors=True)
     return 0
+
+
+def _reachable(s) -> str:
+    """Why the settings' store or cluster cannot be used ('' when they can): its client is
+    missing, or Redis does not answer (checked once at start; later outages are ``503``s
+    and ``/healthz`` says so)."""
+    if s.scheduler:
+        try:
+            import dask.distributed  # noqa: F401
+        except ImportError as e:
+            return (f"--scheduler needs Dask ({e.name} is missing): "
+                    "pip install 'aidl-lang[studio]'")
+    if not s.store:
+        return ""
+    try:
+        import redis
+    except ImportError:
+        return "--store needs the redis client: pip install 'aidl-lang[studio]'"
+    from .store import TIMEOUT
+    try:
+        redis.Redis.from_url(s.store, socket_timeout=TIMEOUT,
+                             socket_connect_timeout=TIMEOUT).ping()
+    except (redis.exceptions.RedisError, OSError, ValueError) as e:
+        return (f"cannot reach the store at {s.store}: {str(e).rstrip('.')}; start Redis "
+                "or correct --store")
+    return ""
 
 
 __all__ = ["studio", "HOST"]

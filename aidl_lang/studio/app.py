@@ -17,8 +17,16 @@ Routes:
   ``POST /api/delete``: a session's drawings and imports.
 * ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
   params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
+* ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
+  smaller mesh than the download, made from the preview's drawing; gzip when the browser
+  takes it).
 * ``POST /api/describe``: ``{"sid", "description"}`` -> the model loop's rounds as
   newline-delimited JSON (only when the operator set ``AIDL_STUDIO_MODEL_URL``).
+* ``GET /healthz``, ``GET /metrics``: readiness and Prometheus metrics (:mod:`.metrics`).
+
+Shared state (``--store redis://...``: uploads and rate counters in Redis, :mod:`.store`) and
+compiles on a Dask cluster (``--scheduler``, :mod:`.remote`) let any process of any machine
+answer any request.
 
 Many users: each compile runs in a worker process (:mod:`aidl_lang.workers`) with the
 compile's budget, a wall-time limit and a memory cap; a request waits at most
@@ -42,6 +50,7 @@ from importlib import resources
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
+from starlette.middleware import Middleware
 from starlette.requests import Request
 from starlette.responses import JSONResponse, PlainTextResponse, Response, StreamingResponse
 from starlette.routing import Route
@@ -49,7 +58,9 @@ from starlette.routing import Route
 from .. import workers as W
 from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES
 from . import compiler
-from .sessions import MAX_UPLOAD, Folders, Refused, new_id
+from .metrics import Metrics, RequestMetrics
+from .sessions import MAX_UPLOAD, Refused, new_id
+from .store import StoreDown, down, limiter_storage, open_store
 
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "json": "application/json",
@@ -74,12 +85,15 @@ class Settings:
     queue: int = 16                 # requests that may wait at once before "busy" at once
     rate: str = "300/minute"        # per client (``limits`` notation)
     describes: int = 2              # model loops that may run at once
+    store: str = ""                 # redis://HOST:PORT/DB: uploads and rate counters there
+    scheduler: str = ""             # tcp://HOST:PORT: compiles on this Dask cluster
     model: dict | None = field(default=None, repr=False)   # describe.model_config()
 
     ENV = {"data": "AIDL_STUDIO_DATA", "compilers": "AIDL_STUDIO_COMPILERS",
            "memory_mb": "AIDL_STUDIO_MEMORY_MB", "budget": "AIDL_STUDIO_BUDGET",
            "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
-           "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES"}
+           "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES",
+           "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER"}
 
     @classmethod
     def from_env(cls, env=os.environ) -> "Settings":
@@ -194,20 +208,24 @@ class Studio:
 
     def __init__(self, settings: Settings) -> None:
         from limits import parse
-        from limits.storage import MemoryStorage
         from limits.strategies import MovingWindowRateLimiter
         self.settings = settings
-        self.folders = Folders(settings.data)
+        self.folders = open_store(settings.data, settings.store)
         memory = settings.memory_mb << 20 if settings.memory_mb > 0 else None
-        self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
-                            for _ in range(max(1, settings.compilers))])
-        self.limiter = MovingWindowRateLimiter(MemoryStorage())
+        if settings.scheduler:
+            from .remote import Remote
+            self.pool = Remote(settings.scheduler, settings.budget, memory, settings.queue)
+        else:
+            self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
+                                for _ in range(max(1, settings.compilers))])
+        self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
         self.affinity: dict[str, W.Worker] = {}
         self.thumbs: dict[str, str] = {}
         self.describing = 0
         self.static = static_files()
         self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0}
+        self.metrics = Metrics(self)
 
     def check_rate(self, request: Request, cost: int = 1) -> None:
         """Raises :class:`Limited` (429) when the client is past its rate."""
@@ -230,9 +248,11 @@ class Studio:
                                "for a compiler. Your design is kept here; it is compiled "
                                "again in a few seconds.", 5)
         prefer = self.affinity.get(sid) if sid else None
+        t0 = time.perf_counter()
         try:
             answer, w = await run_in_threadpool(self.pool.request, request_data, s.seconds,
                                                 s.wait, prefer)
+            self.metrics.compiled(request_data[0], time.perf_counter() - t0)
         except W.Busy:
             self.served["busy"] += 1
             raise Limited(503, "the studio is busy: every compiler stayed busy for "
@@ -282,6 +302,12 @@ def create_app(settings: Settings | None = None) -> Starlette:
                 return refusal(e.status, e.message, e.retry, busy=e.status == 503)
             except Refused as e:
                 return refusal(400, str(e))
+            except Exception as e:
+                if not down(e):
+                    raise
+                return refusal(503, str(e) if isinstance(e, StoreDown) else
+                               "the studio's store (Redis) does not answer; your design is "
+                               "kept in this page, try again in a few seconds", 5, busy=True)
         return endpoint
 
     def page_response(embed: bool) -> Response:
@@ -417,6 +443,23 @@ def create_app(settings: Settings | None = None) -> Starlette:
                         headers={"Content-Disposition": f'attachment; filename="{name}"',
                                  "X-Content-Type-Options": "nosniff"})
 
+    async def glb(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, values = program_of(doc)
+        answer = await st.compile(("glb", sid, folder, source, values,
+                                   doc.get("settings") or {}), sid)
+        if isinstance(answer, dict):
+            return JSONResponse(answer, status_code=422)
+        data, headers = answer[0], {"Cache-Control": "no-store", "X-Content-Type-Options": "nosniff",
+                                    "Vary": "Accept-Encoding"}
+        if "gzip" in request.headers.get("accept-encoding", ""):
+            import gzip
+            data = await run_in_threadpool(gzip.compress, data, 6)
+            headers["Content-Encoding"] = "gzip"
+        return Response(data, media_type=answer[2], headers=headers)
+
     async def describe(request):
         if not settings.model:
             return refusal(404, "this studio has no model endpoint (the operator sets "
@@ -448,6 +491,13 @@ def create_app(settings: Settings | None = None) -> Starlette:
                                           "rss": w.rss(), "requests": w.requests,
                                           "restarts": w.restarts} for w in st.pool.workers]})
 
+    async def healthz(request):
+        live = request.query_params.get("probe") == "live"
+        return await run_in_threadpool(st.metrics.health, live)
+
+    async def metrics(request):
+        return await run_in_threadpool(st.metrics.response)
+
     @contextlib.asynccontextmanager
     async def lifespan(app):
         try:
@@ -470,9 +520,12 @@ def create_app(settings: Settings | None = None) -> Starlette:
         Route("/api/delete", guarded(delete), methods=["POST"]),
         Route("/api/view", guarded(view), methods=["POST"]),
         Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
+        Route("/api/glb", guarded(glb), methods=["POST"]),
         Route("/api/describe", guarded(describe, 20), methods=["POST"]),
         Route("/api/stats", stats),
+        Route("/healthz", healthz), Route("/metrics", metrics),
     ]
-    app = Starlette(routes=routes, lifespan=lifespan)
+    app = Starlette(routes=routes, lifespan=lifespan,
+                    middleware=[Middleware(RequestMetrics, metrics=st.metrics, routes=routes)])
     app.state.studio = st
     return app

@@ -14,6 +14,10 @@ Requests (tuples, the first item names the kind):
   uploads) and the standard library (:mod:`aidl_lang.sources`, the import sandbox).
 * ``("download", folder, source, values, fmt, settings)``: ``(bytes, file name, media type)``
   or ``{"error": message, "diagnostics": [...]}``; ``settings`` as :func:`download` takes.
+* ``("glb", sid, folder, source, values, settings)``: the 3D view's GLB
+  (:func:`aidl_lang.output.writers.glb.to_view_glb`: fewer triangles, shared meshes) as
+  ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
+  ``view`` of this program and these values drew (no second compile), else compiled.
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
 
 Answers are dicts or tuples; a mistake in the program is a diagnostic, a bug an ``E0900``,
@@ -29,6 +33,7 @@ from collections import OrderedDict
 from ..workers import rss
 
 MAX_SESSIONS = 24               # warm sessions one worker keeps
+MAX_CLAMPS = 4                  # compiles that move values back into dependent ranges
 RETIRE_RSS = 900 << 20          # bytes: a worker past this answers, then is replaced
 MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
@@ -68,6 +73,11 @@ def handler(budget: float = 1.0):
     """The worker's request handler (run once in the new process); ``budget``: the factor of
     the default evaluation budget every compile gets (``aidl studio --budget``)."""
     from ..limits import DEFAULT_BUDGET
+    # trimesh (1.5 s to import on a busy machine) and Manifold now, in the new process, not
+    # on its first 3D view
+    from ..output.writers.mesh import _trimesh
+    _trimesh().exchange.gltf  # noqa: B018
+    import manifold3d  # noqa: F401
     sessions: OrderedDict = OrderedDict()
     scaled = DEFAULT_BUDGET.scaled(budget)
 
@@ -79,6 +89,8 @@ def handler(budget: float = 1.0):
                 answer = view(sessions, *request[1:], budget=scaled)
             elif kind == "download":
                 answer = download(*request[1:], budget=scaled)
+            elif kind == "glb":
+                answer = view_glb(sessions, *request[1:], budget=scaled)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
             else:
@@ -91,8 +103,8 @@ def handler(budget: float = 1.0):
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
-        if kind in ("view", "download") and len(request) > 2:
-            answer = hide_paths(answer, request[2] if kind == "view" else request[1])
+        if kind in ("view", "download", "glb") and len(request) > 2:
+            answer = hide_paths(answer, request[1] if kind == "download" else request[2])
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
@@ -105,7 +117,7 @@ def out_of_memory_answer(request) -> dict:
     worker retired (a fresh process gives the memory back)."""
     from ..pipeline import out_of_memory_sink
     kind = request[0]
-    folder, source = (request[2], request[3]) if kind == "view" else (request[1], request[2])
+    folder, source = (request[1], request[2]) if kind == "download" else (request[2], request[3])
     path = os.path.join(folder, "main.aidl")
     sink = out_of_memory_sink(path, source if isinstance(source, str) else None)
     diags = [{k: d.to_json(sink.sources)[k] for k in
@@ -136,15 +148,115 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         s.files = files
         s.values = values
         doc = s.load(source)
+        if values and doc.get("ok") and s.values != values:
+            # a session new to this worker (the tab's other worker drew the last picture, or
+            # this one dropped it) keeps no values through load: the page's values apply
+            doc = s.set_params(values)
+            doc = s.update_checks() or doc
     elif values != s.values:
         doc = s.set_params(values)
         doc = s.update_checks() or doc
     else:
         doc = s.view()
+    clamped: dict = {}
+    if not doc.get("ok"):
+        settled, clamped = settle(s.set_params, s.values, doc)
+        if clamped:
+            doc = s.update_checks() or settled
+        elif settled is not doc:
+            s.set_params(values)        # no better: the visitor's values, and their error
     doc = dict(doc)
+    if clamped:
+        doc["clamped"] = clamped
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
+
+
+def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
+             settings: dict, budget=None):
+    """The 3D view of ``source`` with ``values``: ``(GLB bytes, "view.glb", media type)`` or
+    ``{"error": message}``.  ``settings``: ``thickness`` (mm, 0.1-100; empty: the parts' own).
+    Made from the drawing session ``sid``'s last view drew when it drew this program with
+    these values (the page asks for the 3D right after its picture: no second compile), else
+    from a fresh compile (another worker drew the picture)."""
+    from ..output.part import OutputError
+    from ..output.writers.glb import to_view_glb
+    values = {str(k): str(v) for k, v in (values or {}).items()}
+    try:
+        thickness = _number(settings if isinstance(settings, dict) else {}, "thickness",
+                            0.1, 100.0)
+    except ValueError as e:
+        return {"error": str(e)}
+    s = sessions.get(sid)
+    shown = getattr(s, "shown", None) if s is not None else None
+    if s is not None and shown is not None and s.source == source and s.ok \
+            and s.svg_values == values and shown[1] is not None:
+        output = shown[1]
+    else:
+        from .. import api
+        res = api.compile(source=source, path=os.path.join(folder, "main.aidl"),
+                          overrides=values, budget=budget)
+        if not res.ok:
+            return {"error": "the program does not compile with these values"}
+        try:
+            output = res.output
+        except OutputError as e:
+            return {"error": str(e)}
+    try:
+        return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
+    except (OutputError, ValueError) as e:
+        return {"error": str(e)}
+
+
+def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:
+    """Compile again, at most :data:`MAX_CLAMPS` times, with the values of the failed
+    ``doc`` (``run(values)``'s answer: ``ok``, ``params`` as the view's JSON rows) that left
+    a range depending on other params moved back into it (:func:`into_range`).  Returns
+    ``(answer, {name: number moved to})``: the first answer that compiles and what was
+    moved, or the last answer tried and ``{}`` when none compiles."""
+    clamped: dict = {}
+    values = dict(values)
+    for _ in range(MAX_CLAMPS):
+        # values out of their ranges first; then those between their sliders' steps too (a
+        # step that depends on other params: the planetary's sun steps by its planets)
+        fixed = into_range(doc.get("params") or []) or \
+            into_range(doc.get("params") or [], grid=True)
+        if not fixed:
+            break
+        values.update({k: t for k, (t, _) in fixed.items()})
+        clamped.update({k: x for k, (_, x) in fixed.items()})
+        doc = run(dict(values))
+        if doc.get("ok"):
+            return doc, clamped
+    return doc, {}
+
+
+def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, float]]:
+    """The values of a failed compile's ``params`` (the view's JSON rows) that left their
+    declared range moved into it, onto its slider's steps (``grid``: also the values inside
+    it that lie between steps): ``{name: (--set text, number)}`` (display units).  A range
+    may depend on other params (``param depth = 70 mm, min = rows * (hole + 4 mm)``,
+    docs/language.md): moving ``rows`` moves it, and the form's ``depth`` follows instead of
+    the compile failing (docs/studio.md, "Forms that cannot fail")."""
+    out = {}
+    for p in params:
+        lo, hi, step, v = p.get("min"), p.get("max"), p.get("step"), p.get("value")
+        if p.get("kind") not in ("length", "angle", "number") or not p.get("declared") \
+                or not isinstance(v, (int, float)) or lo is None or hi is None or lo > hi:
+            continue
+        if not grid and lo - 1e-9 <= v <= hi + 1e-9:
+            continue
+        w = min(max(v, lo), hi)
+        if step and step > 0:           # onto the slider's grid, inside the range
+            w = lo + round((w - lo) / step) * step
+            if w > hi + 1e-9:
+                w -= step
+            w = max(w, lo)
+        w = round(w, 9)
+        if abs(w - v) > 1e-9 * max(1.0, abs(v)):
+            out[p["name"]] = (f"{w:.12g} {p.get('unit') or ''}".strip(), w)
+    return out
 
 
 def _listing(folder: str) -> tuple:

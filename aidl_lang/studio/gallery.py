@@ -20,6 +20,12 @@ touched):
 * ``import "parts/x.aidl"`` (a file beside the example) is replaced by that file's text;
 * ``Drawing2D("parts/x.svg")`` reads the byte-identical sample that ships with the standard
   library, ``std/drawings/x.svg``;
+* a top-level ``param`` of an example that counts things (a whole number of at least 1,
+  no range declared) gets ``min = 1``: its slider does not offer 0 (:func:`counts_from_one`);
+* an ``examples/generators`` file with a form of the same name in ``studio/forms/`` is
+  shown as that form: the same call, its arguments as params whose ranges depend on each
+  other (the planetary's ring is sun + 2 x planet; a tool holder is as deep as its rows of
+  holes need), written by hand where the generator's checks tie several arguments together;
 * an ``examples/generators`` file that declares no ``param`` and calls one stdlib generator
   has that call's literal arguments lifted into ``param`` declarations (the example's values
   as defaults, the generator's own defaults for the arguments it leaves out), so its form has
@@ -49,6 +55,11 @@ from .. import ast as A
 from ..sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
 
 KINDS = ("example", "generator")
+# the gallery's own programs of some examples/generators files (same name): their arguments
+# as params whose ranges follow each other (``min = rows * (hole + 4 mm) + ...``), where the
+# generator's checks tie several arguments together and a lifted form would offer values
+# that fail
+FORMS = Path(__file__).resolve().parent / "forms"
 RENDERABLE = ("solid", "assembly", "drawing")
 
 # the tag of a generator's stdlib module
@@ -277,6 +288,62 @@ def assert_bounds(template) -> dict[str, tuple[float | None, float | None]]:
     return {k: (v[0], v[1]) for k, v in out.items()}
 
 
+def assert_relations(template) -> dict[str, dict[str, list[tuple[str, bool]]]]:
+    """How a generator's top-level ``assert``\\ s tie one argument to others
+    (``assert length > width / 2``, ``radius <= min(width, length) / 2``): ``{name: {"min":
+    [(expression text, strict)], "max": [...]}}``, the expression as written in the
+    generator's file, over its other arguments only (no locals, no calls but ``min``,
+    ``max``, ``abs``, ``sqrt``).  :func:`synthesize` and :func:`lift_params` make them the
+    params' ``min=``/``max=`` (a range that follows the other params), declared after the
+    params they use."""
+    from ..sources import STDLIB
+    try:
+        text = (Path(STDLIB) / f"{template.module}.aidl").read_text(encoding="utf-8")
+    except OSError:
+        return {}
+    names = {p.name for p in template.node.params}
+    calls = {"min", "max", "abs", "sqrt"}
+    out: dict[str, dict[str, list]] = {}
+
+    def comparisons(e):
+        if isinstance(e, A.BoolOp) and e.op == "and":
+            yield from comparisons(e.left)
+            yield from comparisons(e.right)
+        elif isinstance(e, A.Compare) and len(e.ops) == 1:
+            yield e
+
+    def over_arguments(e, own: str) -> bool:
+        used = False
+        for n in A.walk(e):
+            if isinstance(n, A.Call):
+                if not (isinstance(n.func, A.Name) and n.func.id in calls):
+                    return False
+            elif isinstance(n, A.Name):
+                if n.id == own or (n.id not in names and n.id not in calls):
+                    return False
+                used = used or n.id in names
+            elif not isinstance(n, (A.Num, A.BinOp, A.Neg, A.Ternary, A.Compare, A.BoolOp,
+                                    A.Keyword)):
+                return False
+        return used
+
+    flip = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
+    for st in template.node.body.stmts:
+        if not isinstance(st, A.Assert):
+            continue
+        for c in comparisons(st.expr):
+            a, b, op = c.operands[0], c.operands[1], c.ops[0]
+            if isinstance(b, A.Name) and b.id in names and not isinstance(a, A.Name):
+                a, b, op = b, a, flip.get(op, op)
+            if not (isinstance(a, A.Name) and a.id in names and op in flip
+                    and over_arguments(b, a.id)):
+                continue
+            side = "min" if op in (">", ">=") else "max"
+            out.setdefault(a.id, {"min": [], "max": []})[side].append(
+                (text[b.span.start:b.span.end], op in ("<", ">")))
+    return out
+
+
 def slider_range(name: str, kind: str, value: float,
                  bounds: tuple[float | None, float | None] = (None, None)
                  ) -> tuple[float, float, float]:
@@ -340,16 +407,59 @@ def _num(v: float) -> str:
 _UNIT = {"length": "mm", "angle": "deg"}
 
 
-def _param_decl(name: str, kind: str, text: str, value, bounds=(None, None)) -> str:
+def _param_decl(name: str, kind: str, text: str, value, bounds=(None, None),
+                relations=None) -> str:
     """``param NAME = TEXT, min=.., max=.., step=..`` (the range for lengths, angles and
     numbers; ``value``: the default's number in display units; ``bounds``: as for
-    :func:`slider_range`)."""
+    :func:`slider_range`; ``relations``: ``{"min": [(text, strict)], "max": [...]}`` of
+    :func:`assert_relations`, each a bound over other params that the range follows,
+    ``min=max(20 mm, width / 2 + 0.2 mm)``, a strict one a step inside)."""
     if kind not in ("length", "angle", "number") or value is None:
         return f"param {name} = {text}"
     lo, hi, step = slider_range(name, kind, value, bounds)
     u = f" {_UNIT[kind]}" if kind in _UNIT else ""
-    return (f"param {name} = {text}, min={_num(lo)}{u}, max={_num(hi)}{u}, "
-            f"step={_num(step)}{u}")
+    lo_t, hi_t = f"{_num(lo)}{u}", f"{_num(hi)}{u}"
+    rel = relations or {}
+    if rel.get("min"):
+        terms = [f"{t} + {_num(step)}{u}" if strict else t for t, strict in rel["min"]]
+        lo_t = f"max({', '.join([lo_t] + terms)})"
+    if rel.get("max"):
+        terms = [f"{t} - {_num(step)}{u}" if strict else t for t, strict in rel["max"]]
+        hi_t = f"min({', '.join([hi_t] + terms)})"
+    return f"param {name} = {text}, min={lo_t}, max={hi_t}, step={_num(step)}{u}"
+
+
+def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
+    """The ``(name, declaration, names it uses)`` in their order, each after the params its
+    range uses (a param's range may use only those declared before it)."""
+    done: set = set()
+    out, rest = [], list(decls)
+    known = {n for n, _, _ in decls}
+    while rest:
+        for i, (n, d, uses) in enumerate(rest):
+            if not (uses & known) - done:
+                out.append(d)
+                done.add(n)
+                del rest[i]
+                break
+        else:                           # a cycle: as written
+            out += [d for _, d, _ in rest]
+            break
+    return out
+
+
+def _relations_for(name: str, relations: dict, params: set) -> tuple[dict, set]:
+    """``relations[name]`` without the bounds that use a name that is not a param here,
+    and the params they use."""
+    got, uses = {"min": [], "max": []}, set()
+    for side in ("min", "max"):
+        for t, strict in relations.get(name, {}).get(side, []):
+            used = set(re.findall(r"[A-Za-z_]\w*", t)) - {"min", "max", "abs", "sqrt", "mm",
+                                                           "deg", "cm", "m", "in", "rad"}
+            if used <= params:
+                got[side].append((t, strict))
+                uses |= used
+    return got, uses
 
 
 def _literal(node) -> tuple[str, float | None] | None:
@@ -577,7 +687,8 @@ def lift_params(source: str, path: str, template) -> str | None:
     if call.args:
         return None
     decls, args, lifted = [], [], {}
-    bounds = assert_bounds(template)
+    bounds, relations = assert_bounds(template), assert_relations(template)
+    found = []
     for p in template.node.params:
         kw = given.get(p.name)
         node = kw.value if kw is not None else p.default
@@ -589,9 +700,15 @@ def lift_params(source: str, path: str, template) -> str | None:
         kind, value = lit
         text = source[node.span.start:node.span.end] if kw is not None else \
             _default_source(node)
-        decls.append(_param_decl(p.name, kind, text, value, bounds.get(p.name, (None, None))))
+        found.append((p.name, kind, text, value))
         args.append(f"{p.name}={p.name}")
         lifted[p.name] = value
+    params = {f[0] for f in found}
+    for name, kind, text, value in found:
+        rel, uses = _relations_for(name, relations, params)
+        decls.append((name, _param_decl(name, kind, text, value, bounds.get(name, (None, None)),
+                                        rel), uses))
+    decls = _in_dependency_order(decls)
     edits = [(call.span.start, call.span.end, _call_text(template.name, args, call.span.col - 1))]
     # the material thickness of the 3D view follows a lifted `thickness` of the same value
     for st in prog.stmts:
@@ -641,9 +758,28 @@ def _own_source(p: Path) -> tuple[str, str]:
         return raw, raw
 
 
+def counts_from_one(source: str, path: str = "main.aidl") -> str:
+    """``source`` with ``, min = 1`` after each top-level ``param`` whose value is a whole
+    number of at least 1 and that declares no range: a count (bolts, grips), whose slider
+    would otherwise start at 0 (:func:`aidl_lang.serve.params.default_span`), a value the
+    program was never written for (a LinearPattern of 0, a loop of no grips)."""
+    prog = _parse_or_none(source, path)
+    if prog is None:
+        return source
+    edits = []
+    for st in prog.stmts:
+        if isinstance(st, A.ParamDecl) and not st.options and isinstance(st.value, A.Num) \
+                and not st.value.unit and float(st.value.value).is_integer() \
+                and st.value.value >= 1:
+            edits.append((st.value.span.end, st.value.span.end, ", min = 1"))
+    return _replace(source, edits)
+
+
 def _example_entry(p: Path) -> Entry:
-    """``example/NAME`` of a top-level example file (its own params)."""
+    """``example/NAME`` of a top-level example file (its own params; counts from 1,
+    :func:`counts_from_one`)."""
     raw, src = _own_source(p)
+    src = counts_from_one(src, str(p))
     prog = _parse_or_none(src, str(p))
     gens = renderable_generators()
     shown = p.stem if p.stem in gens and prog and _calls(prog, {p.stem}) else ""
@@ -660,7 +796,10 @@ def _generator_example_entry(p: Path) -> Entry:
     raw, src = _own_source(p)
     gens = renderable_generators()
     t = stdlib_templates().get(p.stem)
-    if t is not None:
+    form = FORMS / p.name
+    if form.is_file():              # a form that states how the arguments depend on each other
+        src = form.read_text(encoding="utf-8")
+    elif t is not None:
         try:
             src = lift_params(src, str(p), t) or src
         except ValueError:
@@ -684,7 +823,7 @@ def synthesize(t) -> str:
     lines.append(f"# (the studio's program for `{t.name}` of std/{t.module}.aidl: its arguments "
                  "are the params)")
     lines += ["units mm", f'import "std/{t.module}.aidl"', ""]
-    args, bounds = [], assert_bounds(t)
+    args, bounds, relations, found = [], assert_bounds(t), assert_relations(t), []
     for p in t.node.params:
         if p.default is None or p.name in PLACEMENT_ARGS:
             continue
@@ -692,9 +831,14 @@ def synthesize(t) -> str:
         if lit is None:
             continue
         kind, value = lit
-        lines.append(_param_decl(p.name, kind, _default_source(p.default), value,
-                                 bounds.get(p.name, (None, None))))
+        found.append((p.name, kind, _default_source(p.default), value))
         args.append(f"{p.name}={p.name}")
+    params, decls = {f[0] for f in found}, []
+    for name, kind, text, value in found:
+        rel, uses = _relations_for(name, relations, params)
+        decls.append((name, _param_decl(name, kind, text, value, bounds.get(name, (None, None)),
+                                        rel), uses))
+    lines += _in_dependency_order(decls)
     if any(a.startswith("thickness=") for a in args):
         lines += ["", "thickness thickness"]
     lines += ["", f"{t.node.kind} {t.name} {{",

@@ -57,6 +57,8 @@ def upload_name(name: str) -> str:
 class Folders:
     """The session folders under ``base`` (created, mode 0700)."""
 
+    idle = IDLE_SECONDS             # s: :meth:`sweep` removes a folder idle this long
+
     def __init__(self, base: str | os.PathLike) -> None:
         self.base = os.path.realpath(base)
         os.makedirs(self.base, mode=0o700, exist_ok=True)
@@ -136,8 +138,11 @@ class Folders:
         path = self.folder(sid, create=False)
         shutil.rmtree(path, ignore_errors=True)
 
+    def ping(self) -> None:
+        """Nothing to reach: a local folder (:class:`.store.RedisFolders` checks Redis)."""
+
     def sweep(self, now: float | None = None, every: float = 60.0) -> int:
-        """Remove the folders of sessions idle for :data:`IDLE_SECONDS` (at most once per
+        """Remove the folders of sessions idle for :attr:`idle` seconds (at most once per
         ``every`` seconds); returns how many."""
         now = time.time() if now is None else now
         if now - self.last_sweep < every:
@@ -148,7 +153,7 @@ class Folders:
             for e in it:
                 try:
                     if e.is_dir(follow_symlinks=False) and \
-                            now - e.stat(follow_symlinks=False).st_mtime > IDLE_SECONDS:
+                            now - e.stat(follow_symlinks=False).st_mtime > self.idle:
                         shutil.rmtree(e.path, ignore_errors=True)
                         gone += 1
                 except OSError:

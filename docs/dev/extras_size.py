@@ -12,7 +12,7 @@ from importlib import metadata as md
 
 from packaging.requirements import Requirement
 
-EXTRAS = ["pdf", "png", "mesh", "step", "layout", "mcp", "batch", "dask"]
+EXTRAS = ["pdf", "png", "mesh", "step", "layout", "mcp", "batch", "dask", "studio"]
 
 
 def key(n: str) -> str:

@@ -5,10 +5,9 @@ live preview when param values are overridden; :func:`topology` is taken once fo
 defaults)."""
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ...records import Compared
 from ...diagnostics import DiagnosticSink
 from ..booleans import Drawing
 from ..nearby import box_pairs
@@ -16,17 +15,20 @@ from .common import _area, _part_of, _part_roots, _signed
 from .openings import _analyse
 
 # ------------------------------------------------------------ topology under `--set` (W0510)
-@dataclass
-class Topology:
+class Topology(Compared):
     """What W0510 compares of one solid part between the program's defaults and a `--set`."""
-    span: object
-    pieces: int
-    openings: int
-    merges: set          # frozensets of two hole names that cut one opening
-    notches: set         # hole names that reach the outline
-    contacts: set        # frozensets of two face names (different solids) that overlap
-    holes: set           # every hole name
-    faces: set           # every solid face name
+    __slots__ = ("span", "pieces", "openings", "merges", "notches", "contacts", "holes", "faces")
+
+    def __init__(self, span: object, pieces: int, openings: int, merges: set, notches: set,
+                 contacts: set, holes: set, faces: set):
+        self.span = span
+        self.pieces = pieces
+        self.openings = openings
+        self.merges = merges  # frozensets of two hole names that cut one opening
+        self.notches = notches  # hole names that reach the outline
+        self.contacts = contacts  # frozensets of two face names (different solids) that overlap
+        self.holes = holes  # every hole name
+        self.faces = faces  # every solid face name
 
 
 def topology(d: Drawing) -> dict:

@@ -24,11 +24,11 @@ merge or reach the outline."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import manifold3d as mf
 import numpy as np
 
+from ...records import Compared
 from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
@@ -400,16 +400,20 @@ TOUCH = 2 * CHORD_TOL
 DRAWN_IN = 0.5      # of a refiller's area inside the hole it refills: drawn into the opening
 
 
-@dataclass
-class _Openings:
+class _Openings(Compared):
     """What :func:`_analyse` finds between the holes of one part and its outline."""
-    names: list                     # feature names: 0 the outline, 1.. the holes
-    spans: list
-    merges: list = field(default_factory=list)   # (i, j, depth mm, common area mm^2 | None)
-    webs: list = field(default_factory=list)     # (i, j, width, length, (x, y))
-    notches: set = field(default_factory=set)    # holes that reach the outline
-    areas: list = field(default_factory=list)    # of the features' regions, mm^2
-    cuts: list = field(default_factory=list)     # the holes' cuts: cuts[k - 1] is feature k
+    __slots__ = ("names", "spans", "merges", "webs", "notches", "areas", "cuts")
+
+    def __init__(self, names: list, spans: list, merges: list | None = None,
+                 webs: list | None = None, notches: set | None = None, areas: list | None = None,
+                 cuts: list | None = None):
+        self.names = names  # feature names: 0 the outline, 1.. the holes
+        self.spans = spans
+        self.merges = [] if merges is None else merges  # (i, j, depth mm, common area mm^2 | None)
+        self.webs = [] if webs is None else webs  # (i, j, width, length, (x, y))
+        self.notches = set() if notches is None else notches  # holes that reach the outline
+        self.areas = [] if areas is None else areas  # of the features' regions, mm^2
+        self.cuts = [] if cuts is None else cuts  # the holes' cuts: cuts[k - 1] is feature k
 
 
 def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,

@@ -9,11 +9,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ...records import Compared
 from ..part import Output, OutputError
 
 
-@dataclass
-class Options:
+class Options(Compared):
     """Writer options: ``show`` debug layers (SVG/PNG), SVG ``style`` (preview | laser), PNG
     ``dpi`` / ``width`` (pixels; neither: 96 dpi, the longer side at most 2000 pixels), ``thickness`` (mm, STL/3MF/STEP; overrides the program's),
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
@@ -24,15 +24,22 @@ class Options:
     paper size such as ``A4`` or ``A4-landscape`` the drawing is tiled over,
     :data:`.pdf.PAGES`; None: one page the size of the drawing; the PDF's ``margin`` defaults
     to 10 mm)."""
-    show: tuple = ()
-    style: str = "preview"
-    dpi: float | None = None        # None: 96 dpi, the longer side at most 2000 pixels
-    width: int | None = None
-    thickness: float | None = None
-    margin: float | None = None
-    assembled: bool = False
-    machine: object = None
-    page: str | None = None
+    __slots__ = ("show", "style", "dpi", "width", "thickness", "margin", "assembled", "machine",
+                 "page")
+
+    def __init__(self, show: tuple = (), style: str = "preview", dpi: float | None = None,
+                 width: int | None = None, thickness: float | None = None,
+                 margin: float | None = None, assembled: bool = False, machine: object = None,
+                 page: str | None = None):
+        self.show = show
+        self.style = style
+        self.dpi = dpi  # None: 96 dpi, the longer side at most 2000 pixels
+        self.width = width
+        self.thickness = thickness
+        self.margin = margin
+        self.assembled = assembled
+        self.machine = machine
+        self.page = page
 
 
 @dataclass(frozen=True)

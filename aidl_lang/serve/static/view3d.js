@@ -12,7 +12,7 @@ const host = document.getElementById("viewer3d");
 const state = { renderer: null, scene: null, camera: null, controls: null, root: null,
                 framed: false, seq: 0 };
 // read by the browser test: loads finished, the part names and their colours, the last error
-window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame,
+window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame, clear,
                  camera: () => state.camera ? state.camera.position.toArray() : null };
 
 function init() {
@@ -60,6 +60,16 @@ function frame() {    // look at the whole product from above its front-left cor
   state.controls.update();
 }
 
+function clear() {    // no model on the screen (aidl studio: another design is being built)
+  state.seq += 1;                                // a load still under way is dropped
+  if (state.root) {
+    state.scene.remove(state.root);
+    state.root.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+    state.root = null;
+  }
+  Object.assign(window.aidl3d, { parts: [], colours: {} });
+}
+
 async function load(url, opts = {}) {   // opts.reframe: a new design, look at all of it again
   if (!state.renderer) init();
   const seq = ++state.seq;
@@ -81,9 +91,12 @@ async function load(url, opts = {}) {   // opts.reframe: a new design, look at a
       const name = (nodes[at.nodes] && nodes[at.nodes].name) || o.name;
       // each part is one colour (its vertex colours, sRGB bytes): a matte material of it,
       // flat-shaded, so the faces of a panel read as in the flat view's colours
+      // (aidl studio's view GLB gives it as the material's colour instead: shared meshes)
       const col = o.geometry.getAttribute("color");
       const colour = new THREE.Color(0x607d8b);
       if (col) colour.setRGB(col.getX(0), col.getY(0), col.getZ(0), THREE.SRGBColorSpace);
+      else if (o.material && o.material.color) colour.copy(o.material.color);
+      if (o.material && o.material.dispose) o.material.dispose();
       o.material = new THREE.MeshStandardMaterial({ color: colour, roughness: 0.9, metalness: 0,
                                                     flatShading: true, side: THREE.DoubleSide });
       o.name = name;

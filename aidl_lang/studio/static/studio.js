@@ -11,12 +11,22 @@ const state = {
   config: null, svgUrl: null, view: null,
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [] };
+window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [],
+                  shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
 
 // ------------------------------------------------------------------ requests
 async function post(path, body, raw = false) {
-  const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
-                                body: JSON.stringify(body) });
+  let r;
+  try {
+    r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
+                            body: JSON.stringify(body) });
+  } catch (err) { r = null; }          // the network, or a proxy that dropped the connection
+  // 502/504 or no answer: the proxy lost its studio process (docs/studio.md); another answers
+  if (!r || r.status === 502 || r.status === 504) {
+    const message = "the studio cannot be reached; your design is kept here";
+    showBusy(message, 3);
+    const e = new Error(message); e.retry = 3; throw e;
+  }
   if (r.status === 429 || r.status === 503) {
     const doc = await r.json().catch(() => ({}));
     const wait = Number(r.headers.get("Retry-After")) || 5;
@@ -105,14 +115,38 @@ function show(view, ms) {
     state.lastSvg = view.svg;
     if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
     state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
-    $("flat-img").src = state.svgUrl;
+    $("flat-img").src = state.svgUrl;         // an <img>: the SVG runs no script, loads nothing
   } else if (!view.svg && !state.lastSvg) {
     $("flat-img").removeAttribute("src");
   }
   showDiagnostics(diags, view.error);
-  if (view.params) showParams(view.params);
+  if (view.params) showParams(view.params, view.clamped);
   window.studio.views += 1;
-  if (view.ok) load3d();
+  window.studio.shownAt[window.studio.views] = performance.now();
+  if (view.ok) { building(true); load3d(); }
+  else {          // the last good model, dimmed like the last good picture, and why
+    state.glbSeq += 1;
+    building(true);
+    clearTimeout(state.buildingTimer);
+    $("building3d").textContent = "the 3D waits for a program that checks";
+    $("building3d").hidden = false;
+  }
+}
+
+// the 3D pane says "building…" from the moment its model is not the picture's (a new design:
+// the old model is taken away; a changed one: dimmed) until the picture's own model is there
+function building(on, fresh = false) {
+  const pane = $("viewer3d");
+  pane.classList.toggle("building", on);
+  if (fresh && window.aidl3d) window.aidl3d.clear();
+  const empty = fresh || (pane.classList.contains("empty") && on);
+  pane.classList.toggle("empty", empty);
+  // an empty pane (a new design) says so at once; a slider move dims the model at once and
+  // says so when its new model takes longer than a blink (no flicker on every move)
+  clearTimeout(state.buildingTimer);
+  $("building3d").hidden = !(on && empty);
+  if (on && !empty) state.buildingTimer = setTimeout(() => { $("building3d").hidden = false; }, 250);
+  $("building3d").textContent = "building…";
 }
 
 function showDiagnostics(diags, error) {
@@ -142,10 +176,88 @@ function showDiagnostics(diags, error) {
                    message: d.message + (d.hint ? "\nhelp: " + d.hint : ""), code: d.code })));
 }
 
+// ------------------------------------------------------------------ the flat view: zoom and pan
+// The picture stays an <img> of the SVG (inert); zooming sets its layout size (the browser draws
+// the SVG again at that size: sharp at any zoom) and panning its place in the pane. Wheel: zoom
+// about the mouse; drag: pan; two fingers: pinch-zoom about their middle and pan; Fit (or a
+// double-click): the whole picture. The view stays through slider moves, fits a new design.
+const flat = { s: 1, x: 0, y: 0, fitW: 0, fitH: 0, pointers: new Map(), pinch: null };
+window.studio.flat = flat;
+const FLAT_MIN = 0.2, FLAT_MAX = 400;
+
+function flatFit() { flat.s = 1; flat.x = 0; flat.y = 0; flatLayout(); }
+function flatLayout() {
+  const pane = $("flat"), img = $("flat-img");
+  const pw = pane.clientWidth, ph = pane.clientHeight;
+  const nw = img.naturalWidth || 1, nh = img.naturalHeight || 1;
+  const k = Math.min(pw * 0.96 / nw, ph * 0.96 / nh);
+  flat.fitW = nw * k; flat.fitH = nh * k;
+  const w = flat.fitW * flat.s, h = flat.fitH * flat.s;
+  img.style.width = `${w}px`; img.style.height = `${h}px`;
+  img.style.left = `${(pw - w) / 2 + flat.x}px`; img.style.top = `${(ph - h) / 2 + flat.y}px`;
+}
+function flatZoom(f, cx, cy) {        // by f about the pane point (cx, cy)
+  const pane = $("flat");
+  const s = Math.min(FLAT_MAX, Math.max(FLAT_MIN, flat.s * f));
+  const g = s / flat.s;
+  const ox = cx - pane.clientWidth / 2, oy = cy - pane.clientHeight / 2;
+  flat.x = ox - (ox - flat.x) * g; flat.y = oy - (oy - flat.y) * g;
+  flat.s = s;
+  flatLayout();
+}
+function panePoint(e) { const r = $("flat").getBoundingClientRect(); return [e.clientX - r.left, e.clientY - r.top]; }
+$("flat").addEventListener("wheel", (e) => {
+  e.preventDefault();
+  const unit = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1;
+  flatZoom(Math.exp(-e.deltaY * unit * 0.0015), ...panePoint(e));
+}, { passive: false });
+$("flat").addEventListener("pointerdown", (e) => {
+  if (e.target.closest(".pane-tools") || (e.pointerType === "mouse" && e.button !== 0)) return;
+  try { $("flat").setPointerCapture(e.pointerId); } catch (_) { /* a synthetic pointer */ }
+  flat.pointers.set(e.pointerId, panePoint(e));
+  flat.pinch = null;
+  $("flat").classList.add("dragging");
+});
+$("flat").addEventListener("pointermove", (e) => {
+  const last = flat.pointers.get(e.pointerId);
+  if (!last) return;
+  const now = panePoint(e);
+  if (flat.pointers.size >= 2) {              // pinch: the two first fingers
+    flat.pointers.set(e.pointerId, now);
+    const [a, b] = [...flat.pointers.values()];
+    const d = Math.hypot(a[0] - b[0], a[1] - b[1]), m = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+    if (flat.pinch && flat.pinch.d > 0) {
+      flat.x += m[0] - flat.pinch.m[0]; flat.y += m[1] - flat.pinch.m[1];
+      flatZoom(d / flat.pinch.d, m[0], m[1]);
+    }
+    flat.pinch = { d, m };
+    return;
+  }
+  flat.x += now[0] - last[0]; flat.y += now[1] - last[1];
+  flat.pointers.set(e.pointerId, now);
+  flatLayout();
+});
+function flatUp(e) {
+  flat.pointers.delete(e.pointerId);
+  flat.pinch = null;
+  if (!flat.pointers.size) $("flat").classList.remove("dragging");
+}
+$("flat").addEventListener("pointerup", flatUp);
+$("flat").addEventListener("pointercancel", flatUp);
+$("flat").addEventListener("dblclick", (e) => { if (!e.target.closest(".pane-tools")) flatFit(); });
+$("flat-fit").onclick = flatFit;
+$("flat-zoom-in").onclick = () => flatZoom(1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
+$("flat-zoom-out").onclick = () => flatZoom(1 / 1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
+$("flat-img").addEventListener("load", () => { if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout(); });
+new ResizeObserver(() => flatLayout()).observe($("flat"));
+
 // ------------------------------------------------------------------ the customizer
-function showParams(params) {
-  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.min, p.max, p.step, p.default]));
+function showParams(params, clamped) {
+  // the form is built again only for other params; a range that follows other params (its
+  // min or max depends on them) is updated in place, so a slider being dragged stays in hand
+  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default]));
   state.params = params;
+  for (const [name, v] of Object.entries(clamped || {})) state.values[name] = v;   // moved into its range by the server
   const form = $("params");
   if (key !== state.paramKey) {
     state.paramKey = key;
@@ -197,8 +309,16 @@ function setControl(row, p, v) {
   const inputs = row.querySelectorAll("input");
   if (p.kind === "bool") inputs[0].checked = !!v;
   else if (p.kind === "string") inputs[0].value = v;
-  else if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
-    inputs[0].value = v; inputs[1].value = v;
+  else {
+    if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max) || String(inputs[0].step) !== String(p.step)) {
+      Object.assign(inputs[0], { min: p.min, max: p.max, step: p.step });
+      inputs[1].step = p.step;
+      const u = row.querySelector(".unit");
+      if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+    }
+    if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
+      inputs[0].value = v; inputs[1].value = v;
+    }
   }
 }
 
@@ -218,19 +338,39 @@ async function fetchFile(ext, extra = {}) {
 }
 
 async function load3d() {
+  // the 3D view's GLB (/api/glb: made from the drawing the picture came from, fewer triangles
+  // than the download); a newer picture's request makes this one's answer stale: dropped
   const seq = ++state.glbSeq;
   const shown = window.studio.views;
+  const reframe = state.reframe;
   try {
-    const { blob } = await fetchFile("glb", { assembled: true, layout: false });
+    const r = await post("/api/glb", { sid: state.sid, source: state.source, values: chosen(),
+                                       settings: { thickness: settings().thickness } }, true);
+    if (!r.ok) {
+      const why = (await r.json().catch(() => ({}))).error || `HTTP ${r.status}`;
+      if (r.status === 422 && seq === state.glbSeq) {      // nothing to show: say why, show nothing
+        building(true, true);
+        $("building3d").textContent = why;
+        window.studio.glbView = shown;
+      }
+      throw new Error(why);
+    }
+    const blob = await r.blob();
     if (seq !== state.glbSeq || !window.aidl3d) return;
     const url = URL.createObjectURL(blob);
-    await window.aidl3d.load(url, { reframe: state.reframe });
-    state.reframe = false;
+    const before = window.aidl3d.loaded;
+    await window.aidl3d.load(url, { reframe });
     URL.revokeObjectURL(url);
+    if (seq !== state.glbSeq || window.aidl3d.loaded === before) return;
+    if (reframe) state.reframe = false;
     window.studio.glbs += 1;
     window.studio.glbView = shown;          // the view whose 3D is on the screen
+    window.studio.builtAt[shown] = performance.now();
+    building(false);
+    $("viewer3d").classList.remove("empty");
   } catch (e) {
     window.studio.errors.push("3D: " + (e.message || e));
+    if (e.retry && seq === state.glbSeq) setTimeout(() => { if (seq === state.glbSeq) load3d(); }, e.retry * 1000);
   }
 }
 
@@ -269,7 +409,7 @@ async function download(f) {
     $("download-status").textContent = `${f.ext.toUpperCase()}: ${e.message || e}`;
   }
 }
-$("thickness").addEventListener("change", () => load3d());     // the 3D panels' thickness
+$("thickness").addEventListener("change", () => { building(true); load3d(); });     // the 3D panels' thickness
 
 // ------------------------------------------------------------------ the gallery
 async function openGallery() {
@@ -312,6 +452,9 @@ function setProgram(source, values) {
   state.paramKey = "";
   state.lastSvg = null;
   state.reframe = true;
+  state.glbSeq += 1;                        // a 3D still on its way is the old design's
+  state.fitNext = true;                     // the flat view shows all of the new design
+  building(true, true);
   if (editor) editor.setText(source);
   schedule(0);
 }

@@ -1,0 +1,145 @@
+"""aidl studio's forms offer only values that compile (issue 62, "Forms that cannot fail").
+
+A generator's program states how its arguments depend on each other as ranges over other
+params (``param depth = 70 mm, min = rows * (hole + 4 mm) + ...``, examples/generators/), or
+the gallery derives them from the generator's asserts over its arguments
+(:func:`aidl_lang.studio.gallery.assert_relations`); the studio's compile worker moves a
+value that left such a range back into it (:func:`aidl_lang.studio.compiler.settle`).
+Every slider extreme of every gallery entry then compiles: one process, one warm
+:class:`~aidl_lang.serve.session.Session` per entry, each extreme interpreted, solved and
+cut by the booleans (no picture, no warnings: the view adds those).
+"""
+from __future__ import annotations
+
+import math
+from collections import OrderedDict
+
+import pytest
+
+from aidl_lang.serve.session import Session
+from aidl_lang.studio import compiler, gallery
+
+NUMERIC = ("length", "angle", "number")
+
+
+def _text(p: dict, x: float) -> str:
+    return f"{x:.12g} {p['unit']}".strip()
+
+
+def _lean(session: Session):
+    """``values -> {"ok", "params"}``: the session's compile without the SVG and warnings."""
+    def run(values: dict) -> dict:
+        res = session._compile(values, drawing=True, shape_checks=False)
+        params = [p.to_json() for p in session._params(res.fctx, values)] \
+            if res.fctx is not None else []
+        return {"ok": res.ok, "params": params}
+    return run
+
+
+def test_every_slider_extreme_of_every_gallery_entry_compiles(tmp_path):
+    failed, moved, count = [], [], 0
+    for e in gallery.entries():
+        s = Session(str(tmp_path / "main.aidl"))
+        doc = s.load(e.source)
+        assert doc["ok"], e.id
+        run = _lean(s)
+        for p in doc["params"]:
+            if p["kind"] not in NUMERIC:
+                continue
+            # the slider's ends: its max is the last of its steps from its min
+            top = p["min"] + math.floor((p["max"] - p["min"]) / p["step"] + 1e-9) * p["step"]
+            for end, x in (("min", p["min"]), ("max", top)):
+                count += 1
+                values = {p["name"]: _text(p, x)}
+                got = run(values)
+                if not got["ok"]:
+                    got, clamped = compiler.settle(run, values, got)
+                    assert p["name"] not in clamped, (e.id, p["name"], end)   # the slider stays
+                    if clamped:
+                        moved.append((e.id, p["name"], end, clamped))
+                if not got["ok"]:
+                    failed.append((e.id, p["name"], end, p[end]))
+    assert not failed, failed
+    assert count >= 370
+    # the dependencies did their work: these extremes compile only with another value moved
+    where = {(m[0], m[1], m[2]) for m in moved}
+    assert {("generator/tool_holder", "rows", "max"), ("generator/planetary", "planet", "min"),
+            ("generator/flex_box", "thickness", "max"), ("generator/rounded_tab", "width", "max"),
+            ("generator/board_enclosure", "standoff", "max")} <= where, sorted(where)
+
+
+@pytest.fixture(scope="module")
+def sessions():
+    return OrderedDict()
+
+
+def test_a_value_follows_the_range_that_depends_on_another(sessions, tmp_path):
+    """12 rows of 16 mm holes, 4 mm apart, need a box 12 x 20 + 2 x 3 + 0.5 mm deep: the
+    form's depth (70 mm) moves there and the design compiles, instead of an E0405."""
+    e = gallery.entry("generator/tool_holder")
+    folder = str(tmp_path)
+    assert compiler.view(sessions, "t", folder, e.source, {})["ok"]       # the form opens
+    view = compiler.view(sessions, "t", folder, e.source, {"rows": "12"})
+    assert view["ok"], view["diagnostics"]
+    assert view["clamped"] == {"depth": pytest.approx(246.5)}
+    depth = next(p for p in view["params"] if p["name"] == "depth")
+    assert (depth["value"], depth["min"]) == (pytest.approx(246.5), pytest.approx(246.5))
+    # without the move, the generator's own assert fails: the range is what makes it compile
+    from aidl_lang import api
+    bare = api.compile(source=e.source.replace("min = rows * (hole + 4 mm)", "min = 1 mm * rows"),
+                       overrides={"rows": "12"})
+    assert not bare.ok and {d.code for d in bare.errors} == {"E0405"}
+
+
+def test_the_sun_steps_onto_a_count_where_the_planets_sit_evenly(sessions, tmp_path):
+    e = gallery.entry("generator/planetary")
+    assert compiler.view(sessions, "p", str(tmp_path), e.source, {})["ok"]
+    view = compiler.view(sessions, "p", str(tmp_path), e.source, {"planet": "8"})
+    assert view["ok"], view["diagnostics"]
+    # 2 x (sun + planet) divides by 3 planets: the sun moves from 12 to 13 (10, 13, 16, ...)
+    assert view["clamped"] == {"sun": 13}
+    sun = next(p for p in view["params"] if p["name"] == "sun")
+    assert (sun["min"], sun["step"], sun["max"]) == (10, 3, 46)
+    assert "ring=sun + 2 * planet" in e.source.replace("\n", " ").replace("  ", "")
+
+
+def test_a_failure_no_range_explains_is_left_as_the_visitor_made_it(sessions, tmp_path):
+    """A value the ranges do not cover (a typed name of a missing generator) is not moved:
+    the error is the visitor's, with their values."""
+    e = gallery.entry("generator/tool_holder")
+    src = e.source.replace("tool_holder(", "tool_holdr(", 1)
+    compiler.view(sessions, "x", str(tmp_path), src, {})
+    view = compiler.view(sessions, "x", str(tmp_path), src, {"rows": "3"})
+    assert not view["ok"] and "clamped" not in view
+
+
+def test_the_gallery_derives_a_range_from_an_assert_over_arguments():
+    # std/shapes.aidl: `assert length > width / 2` -> length's min follows width, a step above
+    src = gallery.entry("generator/rounded_tab").source
+    assert "param length = 20 mm, min=max(5 mm, width / 2 + 0.2 mm), max=80 mm" in src
+    assert src.index("param width") < src.index("param length")
+    rel = gallery.assert_relations(gallery.renderable_generators()["rounded_tab"])
+    assert rel == {"length": {"min": [("width / 2", True)], "max": []}}
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in gallery.FORMS.glob("*.aidl")))
+def test_a_form_draws_what_its_example_draws(name, tmp_path):
+    """A form (aidl_lang/studio/forms/) is its examples/generators file with params: at its
+    defaults, the same parts of the same outlines."""
+    from aidl_lang import api
+    from aidl_lang.sources import EXAMPLES
+    e = gallery.entry(f"generator/{name}")
+    assert e.source == (gallery.FORMS / f"{name}.aidl").read_text()
+    mine = api.compile(source=e.source, path=str(tmp_path / "main.aidl"))
+    file = api.compile(path=str(EXAMPLES / "generators" / f"{name}.aidl"))
+    assert mine.ok and file.ok
+    assert mine.to_svg(kerf=0) == file.to_svg(kerf=0)
+
+
+def test_a_session_new_to_a_worker_draws_the_page_s_values(tmp_path):
+    """The tab's compile may land on a worker that has no session for it yet (the other one
+    drew its last picture): the page's values are drawn, not the program's defaults."""
+    e = gallery.entry("generator/tool_holder")
+    view = compiler.view(OrderedDict(), "new", str(tmp_path), e.source, {"rows": "3"})
+    assert view["ok"] and view["values"] == {"rows": "3"}
+    assert next(p for p in view["params"] if p["name"] == "rows")["value"] == 3
