@@ -124,24 +124,42 @@ def pytest_runtest_logreport(report):
         _skipped.append(report.nodeid)
 
 
+def _worker(config) -> bool:
+    """True in a pytest-xdist worker (the suite runs on ``-n auto`` workers, pyproject.toml)."""
+    return hasattr(config, "workerinput")
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    # a worker's leftover processes, reported in the controller (pytest-xdist hook)
+    _left.extend(getattr(node, "workeroutput", {}).get("aidl_left", ()))
+
+
 def pytest_sessionfinish(session, exitstatus):
     # the tests that skipped (most for want of a program from outside Python: Chromium,
     # Neovim, Inkscape, cairo): .ci/run runs them again once it has installed those, after
-    # the README's command ran as written (pytest's cache: .pytest_cache/v/aidl/skipped)
+    # the README's command ran as written (pytest's cache: .pytest_cache/v/aidl/skipped).
+    # Under pytest-xdist the controller sees every worker's reports and writes the list.
     cache = getattr(session.config, "cache", None)
-    if cache is not None:
+    if cache is not None and not _worker(session.config):
         cache.set("aidl/skipped", _skipped)
     if not _CHECK:
         return
     import time
     deadline = time.monotonic() + _LEFT_GRACE
-    while (left := _children()) and time.monotonic() < deadline:
-        time.sleep(0.1)
-    _reap()
-    for p in sorted(left):
-        cmd = _proc_text(p, "cmdline").replace("\0", " ").strip()[:200]
-        _left.append(f"pid {p} ({cmd or _proc_text(p, 'comm').strip()}), first seen after "
-                     f"{_first_seen.get(p, 'the last test')}")
+    # in the controller of an xdist run the children are the workers, which end after this
+    # hook: each worker checks its own children and hands what it found to the controller
+    controller = session.config.pluginmanager.hasplugin("dsession")
+    if not controller:
+        while (left := _children()) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        _reap()
+        for p in sorted(left):
+            cmd = _proc_text(p, "cmdline").replace("\0", " ").strip()[:200]
+            _left.append(f"pid {p} ({cmd or _proc_text(p, 'comm').strip()}), first seen after "
+                         f"{_first_seen.get(p, 'the last test')}")
+    if _worker(session.config):
+        session.config.workeroutput["aidl_left"] = list(_left)
     if _left and session.exitstatus == 0:
         session.exitstatus = pytest.ExitCode.TESTS_FAILED
 

@@ -55,7 +55,8 @@ async def test_mcp_server_over_stdio(tmp_path):
         async with ClientSession(read, write) as session:
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
-            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs"}
+            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
+                                  "import_drawing"}
             assert "source" in tools["check"].input_schema["properties"]
             assert tools["check"].annotations.read_only_hint
             assert not tools["render"].annotations.read_only_hint
@@ -106,6 +107,15 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert r.is_error and not (tmp_path / "x.svg").exists()
             r = await session.call_tool("render", {"path": "plate.aidl", "output": "plate.aidl"})
             assert r.is_error and (root / "plate.aidl").read_text() == GOOD
+
+            # import_drawing: the DXF just written comes back as its design, and is written
+            doc = json.loads(_text(await session.call_tool(
+                "import_drawing", {"path": "plate.dxf", "output": "back.aidl"})))
+            assert doc["ok"] and doc["output"] == "back.aidl", doc
+            assert "hole hole1 { h = Circle(center=(10, 0), radius=4) }" in doc["program"]
+            assert (root / "back.aidl").read_text() == doc["program"]
+            r = await session.call_tool("import_drawing", {"path": "plate.aidl"})
+            assert r.is_error and "not a .dxf or .svg" in _text(r)
 
             assert (await session.call_tool("explain", {"code": "e0103"})).content[0].text \
                 .startswith("E0103:")
@@ -209,7 +219,8 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
         async with ClientSession(read, write) as session:
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
-            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs"}
+            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
+                                  "import_drawing"}
             for t in tools.values():
                 props = t.input_schema["properties"]
                 assert props, t.name

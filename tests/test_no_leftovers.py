@@ -30,18 +30,24 @@ def test_starts_and_stops_a_child():
 """
 
 
-def _run(tmp_path: Path, body: str) -> subprocess.CompletedProcess:
+def _run(tmp_path: Path, body: str, *args: str) -> subprocess.CompletedProcess:
     shutil.copy(ROOT / "tests" / "conftest.py", tmp_path / "conftest.py")
     (tmp_path / "test_it.py").write_text(body)
     env = {**os.environ, "AIDL_TEST_LEFT_GRACE": "0.5",
            "PYTEST_DISABLE_PLUGIN_AUTOLOAD": "1"}          # a plain pytest starts in 0.3 s
     return subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
-                           "test_it.py"], cwd=tmp_path, capture_output=True, text=True,
+                           *args, "test_it.py"], cwd=tmp_path, capture_output=True, text=True,
                           timeout=120, env=env)
 
 
-def test_a_child_left_running_fails_the_run_and_is_named(tmp_path):
-    r = _run(tmp_path, LEAKY)
+# the suite runs on pytest-xdist workers (``-n auto``, pyproject.toml): there a worker checks
+# its own children and hands what it found to the controller, which names it and fails
+XDIST = ("-p", "xdist.plugin", "-n", "1")
+
+
+@pytest.mark.parametrize("args", [(), XDIST], ids=["in-process", "xdist-worker"])
+def test_a_child_left_running_fails_the_run_and_is_named(tmp_path, args):
+    r = _run(tmp_path, LEAKY, *args)
     pids = [int(p) for p in re.findall(r"pid (\d+) \(sleep 60\)", r.stdout)]
     try:
         assert r.returncode == 1, r.stdout + r.stderr
@@ -57,6 +63,8 @@ def test_a_child_left_running_fails_the_run_and_is_named(tmp_path):
                 pass
 
 
-def test_a_run_that_stops_its_children_passes(tmp_path):
-    r = _run(tmp_path, TIDY)
+@pytest.mark.parametrize("args", [(), XDIST], ids=["in-process", "xdist-worker"])
+def test_a_run_that_stops_its_children_passes(tmp_path, args):
+    r = _run(tmp_path, TIDY, *args)
     assert r.returncode == 0 and "processes left running" not in r.stdout, r.stdout + r.stderr
+

@@ -85,6 +85,14 @@ def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
                 content=b"def knob(r=4 mm) -> solid {\n    c = Circle(center=(0, 0), radius=r)\n}\n")
     assert view(client, b, 'units mm\nimport "knob.aidl"\nk = knob(r=5 mm)\n')["ok"]
     assert [f["name"] for f in client.get(f"/api/files?sid={b}").json()["files"]] == ["knob.aidl"]
+    # an upload may come back as a program to edit (aidl import --infer), which compiles
+    r = client.post(f"/api/upload?sid={a}&name=board2.dxf&import=infer", content=BOARD)
+    doc = r.json()
+    assert r.status_code == 200 and doc["name"] == "board2.dxf", doc
+    assert doc["program"].startswith("# imported from board2.dxf by `aidl import --infer`")
+    assert view(client, a, doc["program"])["ok"]
+    r = client.post(f"/api/upload?sid={a}&name=bad.svg&import=infer", content=b"<svg")
+    assert "error[E0130]" in r.json()["import_error"]
     # closing the tab removes its folder
     folder = tmp_path / "data" / a
     assert folder.is_dir()

@@ -231,6 +231,9 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     im.add_argument("--parts", action="store_true",
                     help="a sheet of parts: one solid per outer loop (its holes and "
                          "engravings with it) in an assembly, to re-nest with --layout sheet")
+    im.add_argument("--infer", action="store_true",
+                    help="write the design, not the pieces: recognised shapes (Slot, "
+                         "RoundedRectangle, ...), loops for patterns, named params")
     im.add_argument("--close-tolerance", type=float, default=None, metavar="MM",
                     help="close chains whose ends meet within MM (default 0.05; 0: only "
                          "ends that meet)")
@@ -919,7 +922,7 @@ def cmd_docs(args) -> int:
 def cmd_import(args) -> int:
     """``aidl import FILE -o PART.aidl``: exit 0 written, 1 refused (a located message on
     stderr, nothing written)."""
-    from ..drawing.program import import_drawing
+    from ..drawing.infer import import_drawing
     from ..drawing.read import DrawingError
     from ..files import FileRefused, read_file
     from ..sources import MAX_DRAWING_BYTES
@@ -932,7 +935,7 @@ def cmd_import(args) -> int:
                                      parts=args.parts, close_tolerance=args.close_tolerance,
                                      cut=sel(args.cut), engrave=sel(args.engrave),
                                      ignore=sel(args.ignore), roles=args.roles,
-                                     budget=_budget(args))
+                                     budget=_budget(args), infer=args.infer)
     except (OSError, FileRefused) as ex:
         print(f"{src}: error[E0130]: cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}",
               file=sys.stderr)

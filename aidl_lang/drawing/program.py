@@ -554,14 +554,17 @@ def _count_segments(d: Drawing) -> int:
 def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, color=None,
                    ident=None, parts: bool = False, close_tolerance: float | None = None,
                    cut=None, engrave=None, ignore=None, roles=None,
-                   budget=None) -> tuple[str, list[Note]]:
+                   budget=None, writer=None) -> tuple[str, list[Note]]:
     """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
     notes (skipped entities, left-out loops).  ``budget`` (a
     :class:`~aidl_lang.limits.Budget`, default the compile's): the wall time of the whole
     import, the shapes read (its ``geometry`` figure) and the program's size; a program
     the compiler would refuse (more than :data:`~aidl_lang.limits.MAX_SOURCE_BYTES` or
     ``budget.geometry`` statements) is ``E0304``, naming ``Drawing2D`` (nothing is
-    written).  Raises :class:`~.read.DrawingError`."""
+    written).  ``writer``: the function that writes the program from the layers read
+    (default :func:`to_program`; ``aidl import --infer`` passes
+    :func:`~.infer.to_program_inferred` through :func:`~.infer.import_drawing`).  Raises
+    :class:`~.read.DrawingError`."""
     import time
     from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
     from ..limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
@@ -601,7 +604,7 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
             read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
                          close_tolerance=close_tolerance, cut=cut, engrave=engrave,
                          ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
-        text, more = to_program(read, base, parts=parts, deadline=deadline)
+        text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
     except OutOfBudget as ex:
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "

@@ -100,11 +100,12 @@ A warning on a design exactly as requested is accepted in the program, never by 
 requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
 W0517), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
 `aidl check` ends
-with `fully constrained` or `N degrees of freedom left`: some shapes could still slide or
-turn (valid; pin what matters with constraints).
-`aidl check --describe` prints the final part in words.
+with `fully constrained` or `N degrees of freedom left`: shapes could still move (valid; pin
+what matters).
+`aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
+drawing as a program.
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
-meant: fix it like an error. When fixing errors, keep
+meant: fix it. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
 delete it.
 """

@@ -141,3 +141,25 @@ class RenderResult(_Compiled):
         description="the file written (the first sheet's with a layout), relative to the "
                     "allowed folder")]]
     layout: NotRequired[LayoutInfo]
+
+
+class ImportNote(TypedDict):
+    code: str
+    message: str
+    hint: str
+
+
+class ImportProblem(TypedDict):
+    code: Annotated[str, Field(description="E0130, E0131, E0132, E0304: `explain` says more")]
+    message: str
+    hint: str
+    line: Annotated[int | None, Field(description="the DXF line of the entity, when known")]
+
+
+class ImportResult(TypedDict):
+    """``import_drawing``: the program written from a drawing (docs/import.md)."""
+    ok: bool
+    program: NotRequired[Annotated[str, Field(description="the AIDL program's text")]]
+    notes: NotRequired[list[ImportNote]]
+    output: NotRequired[Annotated[str, Field(description="the .aidl file written")]]
+    diagnostics: NotRequired[list[ImportProblem]]

@@ -2,7 +2,8 @@
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
-``values``, ``describe`` (the final part in words), ``explain``, ``docs``.  The compiling four
+``values``, ``describe`` (the final part in words), ``import_drawing`` (``aidl import
+[--infer]`` of a DXF or SVG in the root), ``explain``, ``docs``.  The compiling four
 run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
 of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
 and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  Resources:
@@ -29,7 +30,7 @@ from pydantic import Field
 from ..output.writers import FORMATS
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from . import tools as T
-from .schemas import CheckResult, DescribeResult, RenderResult, ValuesResult
+from .schemas import CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult
 from .wording import for_agents
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
@@ -101,6 +102,17 @@ Page = Annotated[str | None, Field(
                 "(\"A4\", \"A3\", \"Letter\", \"Legal\", each also \"-landscape\"), 10 mm "
                 "overlaps with alignment marks; default: one page the drawing's size.",
     max_length=40)]
+DrawingPath = Annotated[str, Field(
+    description="A .dxf or .svg drawing, relative to the server's allowed folder.")]
+Infer = Annotated[bool, Field(
+    description="Write the design (recognised shapes such as RoundedRectangle and Slot, loops "
+                "for hole patterns, named params, held in place), not the drawing's pieces.")]
+Parts = Annotated[bool, Field(
+    description="A sheet of parts: one solid per outer outline, in an assembly.")]
+Units = Annotated[Literal["mm", "cm", "m", "in", "ft", "pt", "px"] | None, Field(
+    description="The drawing's unit, instead of the DXF's $INSUNITS or the SVG's size.")]
+ProgramOutput = Annotated[str | None, Field(
+    description="Also write the program to this .aidl file, relative to the allowed folder.")]
 Names = Annotated[list[str] | None, Field(
     description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
                 "root structure's name may be left out); default: every value.")]
@@ -308,6 +320,23 @@ def build_server(root: str, budget: float = 1.0,
         describe (the same as data)."""
         try:
             return work.call("describe", source, path, overrides, budget, budget=budget)
+        except T.Refused as e:
+            raise refused(e) from None
+
+    @tool(writes)
+    def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
+                       units: Units = None, output: ProgramOutput = None,
+                       budget: Budget = None) -> ImportResult:
+        """Turn a DXF or SVG drawing into an AIDL program to edit (`aidl import`).  With
+        `infer` (the default) the program is the design a person would write: the outline as
+        RoundedRectangle, Slot, RegularPolygon..., holes named by what they are
+        (corner_holes, bolt_circle, bore, slot) with loops for patterns, one param per
+        repeated size, every shape held where the drawing has it; exact to 1e-6 mm.  Returns
+        (structured content, and the same JSON as text): ok, program (the text), notes (what
+        was skipped), output (the file written); or ok false and diagnostics."""
+        try:
+            return work.call("import_drawing", path, infer, parts, units, output, budget,
+                             budget=budget)
         except T.Refused as e:
             raise refused(e) from None
 

@@ -421,6 +421,56 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
         os.close(dfd)
 
 
+def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = False,
+                   units: str | None = None, output: str | None = None,
+                   budget: float | None = None) -> dict:
+    """``aidl import [--infer] [--parts] [--units U] FILE [-o OUTPUT]`` for the drawing
+    ``path`` (a ``.dxf`` or ``.svg`` inside the root): ``{ok, program, notes, output}``, or
+    ``{ok: false, diagnostics}`` for a drawing the importer refuses (its ``E013x``/``E0304``,
+    docs/import.md).  ``infer``: the design (recognised shapes, loops, params: docs/import.md,
+    "Inferring the design"), else the pieces.  ``output``: also write the program there
+    (``.aidl``, inside the root, never through a link).  Raises :class:`Refused`."""
+    from ..drawing.infer import import_drawing as _import
+    from ..drawing.read import DrawingError
+    from ..limits import DEFAULT_BUDGET
+    from ..sources import MAX_DRAWING_BYTES
+    real = ws.inside(path, must_exist=True)
+    if Path(path).suffix.lower() not in (".dxf", ".svg"):
+        raise Refused(f"`{path}` is not a .dxf or .svg drawing")
+    if units is not None and units not in ("mm", "cm", "m", "in", "ft", "pt", "px"):
+        raise Refused(f"units is one of mm, cm, m, in, ft, pt, px; got {units!r}")
+    target = ws.output(output) if output is not None else None
+    if target is not None and target.suffix.lower() != ".aidl":
+        raise Refused(f"`{output}` is not an .aidl file: the import writes a program")
+    k = ws.budget if budget is None else budget
+    if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
+        raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
+                      f"{MAX_BUDGET:g}; got {budget!r}")
+    try:
+        fd = open_beneath(ws.root, real.relative_to(ws.root))
+        try:
+            data = read_regular(fd, MAX_DRAWING_BYTES, path)
+        finally:
+            os.close(fd)
+    except OSError as e:
+        raise Refused(f"cannot read `{path}`: {e}") from None
+    try:
+        text, notes = _import(data, path, unit=units, parts=parts, infer=infer,
+                              budget=DEFAULT_BUDGET.scaled(k))
+    except DrawingError as e:
+        return {"ok": False, "diagnostics": [{"code": e.code, "message": e.message,
+                                              "hint": e.hint, "line": e.line}]}
+    doc = {"ok": True, "program": text,
+           "notes": [{"code": n.code, "message": n.message, "hint": n.hint} for n in notes]}
+    if target is not None:
+        try:
+            _write_inside(ws, target, text.encode("utf-8"), None, output)
+        except OSError as e:
+            raise Refused(str(e)) from None
+        doc["output"] = ws.relative(target)
+    return doc
+
+
 def explain(code: str) -> str:
     """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
     an unknown code, naming the known ones."""

@@ -30,7 +30,7 @@ def _handler(root: str, budget: float):
 
     def handle(request):
         name, args = request
-        if name not in ("check", "render", "values", "describe"):
+        if name not in ("check", "render", "values", "describe", "import_drawing"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
         try:

@@ -14,7 +14,9 @@ Routes:
 * ``GET /api/docs?name=NAME``: ``aidl docs NAME`` (the code pane's hover).
 * ``POST /api/session``, ``POST /api/close``: a tab's session (its upload folder).
 * ``POST /api/upload?sid=..&name=..`` (the file as the body), ``GET /api/files?sid=..``,
-  ``POST /api/delete``: a session's drawings and imports.
+  ``POST /api/delete``: a session's drawings and imports.  ``&import=infer`` (or
+  ``pieces``) on the upload of a ``.dxf``/``.svg`` also answers the drawing as a program to
+  edit (``aidl import [--infer]``): ``program`` and ``notes``, or ``import_error``.
 * ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
   params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
@@ -411,7 +413,16 @@ def create_app(settings: Settings | None = None) -> Starlette:
             body += chunk
             if len(body) > MAX_UPLOAD:
                 raise Refused(f"an upload has at most {MAX_UPLOAD:,} bytes")
-        return JSONResponse(st.folders.upload(sid, name, bytes(body)))
+        doc = st.folders.upload(sid, name, bytes(body))
+        how = request.query_params.get("import")
+        if how in ("infer", "pieces"):
+            got = await st.compile(("import", st.folders.folder(sid), doc["name"],
+                                    how == "infer"), sid)
+            if "program" in got:
+                doc.update(program=got["program"], notes=got["notes"])
+            else:
+                doc["import_error"] = got.get("error", "the import failed")
+        return JSONResponse(doc)
 
     async def delete(request):
         doc = await read_json(request)

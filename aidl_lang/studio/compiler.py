@@ -19,6 +19,8 @@ Requests (tuples, the first item names the kind):
   ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
   ``view`` of this program and these values drew (no second compile), else compiled.
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
+* ``("import", folder, name, infer)``: the uploaded drawing ``name`` of the session's folder
+  as a program (``aidl import [--infer]``): ``{"program", "notes"}`` or ``{"error"}``.
 
 Answers are dicts or tuples; a mistake in the program is a diagnostic, a bug an ``E0900``,
 never an exception through the pipe.
@@ -93,6 +95,8 @@ def handler(budget: float = 1.0):
                 answer = view_glb(sessions, *request[1:], budget=scaled)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
+            elif kind == "import":
+                answer = import_upload(*request[1:], budget=scaled)
             else:
                 answer = {"error": f"unknown request `{kind}`"}
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
@@ -109,6 +113,33 @@ def handler(budget: float = 1.0):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
     return handle
+
+
+def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
+    """The upload ``name`` (a ``.dxf`` or ``.svg`` of the session's ``folder``, read without
+    following a link) as an AIDL program: ``{"program", "notes"}``, its notes as ``aidl
+    import`` prints them; ``{"error"}`` for a drawing the importer refuses (docs/import.md)."""
+    from ..drawing.infer import import_drawing
+    from ..drawing.read import DrawingError
+    from ..files import open_beneath, read_regular
+    from ..sources import MAX_DRAWING_BYTES
+    if not name.lower().endswith((".dxf", ".svg")):
+        return {"error": f"`{name}` is not a .dxf or .svg drawing"}
+    try:
+        fd = open_beneath(folder, name)
+        try:
+            data = read_regular(fd, MAX_DRAWING_BYTES, name)
+        finally:
+            os.close(fd)
+    except OSError as e:
+        return {"error": f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}"}
+    try:
+        text, notes = import_drawing(data, name, infer=infer, budget=budget)
+    except DrawingError as e:
+        return {"error": f"{name}: error[{e.code}]: {e.message}"
+                         + (f" (help: {e.hint})" if e.hint else "")}
+    return {"program": text,
+            "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in notes]}
 
 
 def out_of_memory_answer(request) -> dict:

@@ -1,0 +1,1523 @@
+"""``aidl import --infer``: a drawing turned into the program a person would have written
+(issue 60; docs/import.md, "Inferring the design").
+
+Where :func:`~.program.to_program` writes every piece of the drawing as its own ``Line`` or
+``Arc``, :func:`to_program_inferred` writes, for each part (a DXF layer, or with ``--parts``
+each outer loop):
+
+* its outline as the primitive it is (:func:`~.infer_shapes.recognise`: ``RoundedRectangle``,
+  ``Slot``, ``RegularPolygon``, ...), or a recognised rectangle with *attachments* (a tab
+  standing out of one side: the pieces off the rectangle's side, closed inside it), or a
+  circle with teeth (a loop of turned ``Polygon``s), or one run of pieces turned ``n`` times
+  round a centre (``CircularPattern`` of each), else the exact chain;
+* its openings as ``hole`` children named by what they are, repeated ones as loops:
+  four at the corners of a rectangular body (``corner_holes``, by the body's size and one
+  inset), a bolt circle (``bolt_circle``: equal circles evenly round a centre, its diameter a
+  ``param``), a bore (a circle on the bolt circle's or the body's centre), rows and grids
+  (``for`` over equal steps), mirrored pairs (``for s in [-1, 1]``); equal sizes are one
+  ``param``; copies of a whole part in a row are one ``solid`` in a ``for``;
+* its engravings (open paths, text, engraved shapes) as one ``drawing``, ticks in a row or
+  round a centre as one loop;
+* ``Fixed`` on every recognised shape and the holds of every chain that stays
+  (:func:`_holds`), so ``aidl check --dof`` has nothing to report: each shape is held where
+  its expression puts it, and ``--set`` of a param moves and resizes what is written with
+  it.
+
+Parameters are named for the part (``plate_width``) when there are several parts, and
+written with the shortest decimal within :data:`~.infer_shapes.ROUND_TOL` (1e-9 mm) of the
+drawing's number; two sizes or steps are equal within :data:`~.infer_shapes.EQUAL_TOL`
+(1e-7 mm).  The program's head says what was recognised (pieces -> shapes) and these
+tolerances.  A part holding what this writer does not know is written by
+:func:`~.program.to_program`'s own code, whole.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+from ..geometry.curves import Arc, Line, Loop
+from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
+                           recognise, rrect_pieces)
+from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
+from .read import Drawing, Note
+
+
+def _r(v: float) -> str:
+    """A parameter's value: the shortest decimal within ROUND_TOL."""
+    return _num(v, ROUND_TOL)
+
+
+def _deg(a: float) -> str:
+    return _num(math.degrees(a), 1e-10) + " deg"
+
+
+class _Params:
+    """The program's ``param`` lines, named once (``prefix`` the part's name when several)."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.used: set = set()
+
+    def add(self, name: str, value: float, comment: str = "", unit: str = "mm",
+            times: int = 1) -> str:
+        """A param of ``value``, rounded within ROUND_TOL / ``times`` (a pitch taken ``times``
+        over moves its last copy by at most ROUND_TOL)."""
+        nm = _ident(name, self.used)
+        u = f" {unit}" if unit else ""
+        v = _num(value, ROUND_TOL / max(times, 1))
+        self.lines.append(f"param {nm} = {v}{u}" + (f"  # {comment}" if comment else ""))
+        return nm
+
+
+def _plus(base: float, term: str) -> str:
+    """``base + term`` as text (``term`` alone when base is 0)."""
+    if abs(base) <= ROUND_TOL:
+        return term
+    b = _r(base)
+    if term.startswith("-"):
+        return f"{b} - {term[1:]}"
+    return f"{b} + {term}"
+
+
+def _center(c) -> str:
+    return f"({_r(c[0])}, {_r(c[1])})"
+
+
+def _size_args(sh: Shape, sizes: dict | None = None) -> str:
+    """The keyword arguments of ``sh`` after its centre; ``sizes`` maps an argument to the
+    param written for it."""
+    sizes = sizes or {}
+    a = sh.args
+    out = []
+    if sh.kind == "Circle":
+        out.append(f"diameter={sizes['diameter']}" if "diameter" in sizes
+                   else f"radius={_r(a['radius'])}")
+    elif sh.kind == "Polygon":
+        return ""
+    else:
+        for k, v in a.items():
+            if k == "rotation":
+                if abs(v) > 1e-15:
+                    out.append(f"rotation={_deg(v)}")
+            elif k in ("start_angle", "end_angle"):
+                out.append(f"{k}={_deg(v)}")
+            elif k == "sides":
+                out.append(f"sides={v}")
+            elif k == "corner_radii":
+                out.append("corner_radii=[" + ", ".join(_r(x) for x in v) + "]")
+            else:
+                out.append(f"{k}={sizes.get(k, _r(v))}")
+    return ", ".join(out)
+
+
+def _ctor(sh: Shape, center: str, sizes: dict | None = None) -> str:
+    if sh.kind == "Polygon":
+        return "Polygon([" + ", ".join(_pt(p) for p in sh.args["points"]) + "])"
+    rest = _size_args(sh, sizes)
+    return f"{sh.kind}(center={center}" + (f", {rest}" if rest else "") + ")"
+
+
+_HOLE_NAMES = {"Circle": "hole", "Slot": "slot", "Rectangle": "window",
+               "RoundedRectangle": "window", "Polygon": "cutout", "Sector": "sector",
+               "Ellipse": "oval"}
+
+
+def _hole_name(sh: Shape) -> str:
+    if sh.kind == "RegularPolygon":
+        return "hex" if sh.args["sides"] == 6 else "polygon"
+    return _HOLE_NAMES.get(sh.kind, "cutout")
+
+
+# ------------------------------------------------------------------ patterns
+def _steps(vals: list) -> float | None:
+    """The common step of sorted ``vals`` (None when the steps differ)."""
+    d = [b - a for a, b in zip(vals, vals[1:])]
+    if not d or any(abs(x - d[0]) > EQUAL_TOL for x in d):
+        return None
+    return d[0]
+
+
+def _distinct(vals: list) -> list:
+    out: list = []
+    for v in sorted(vals):
+        if not out or v - out[-1] > EQUAL_TOL:
+            out.append(v)
+    return out
+
+
+def _polar(centers: list):
+    """``(centre, radius, first angle, n)`` when ``centers`` are evenly round a circle (a
+    whole turn), else None."""
+    n = len(centers)
+    if n < 3:
+        return None
+    cx = sum(p[0] for p in centers) / n
+    cy = sum(p[1] for p in centers) / n
+    rad = [math.dist((cx, cy), p) for p in centers]
+    R = sum(rad) / n
+    if R <= EQUAL_TOL or max(rad) - min(rad) > EQUAL_TOL:
+        return None
+    step = 2 * math.pi / n
+    angs = sorted(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers)
+    a0 = angs[0] % step
+    from .infer_shapes import _snap_angle
+    a0 = _snap_angle(a0, R)
+    want = sorted((a0 + k * step) % (2 * math.pi) for k in range(n))
+    got = list(centers)
+    for k in range(n):
+        a = a0 + k * step
+        q = (cx + R * math.cos(a), cy + R * math.sin(a))
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    del want
+    return (cx, cy), R, a0, n
+
+
+def _grid(centers: list):
+    """``(x0, y0, dx, dy, cols, rows)`` when ``centers`` are an axis-aligned lattice (a row,
+    a column or a grid, equal steps), else None."""
+    xs = _distinct([p[0] for p in centers])
+    ys = _distinct([p[1] for p in centers])
+    if len(xs) * len(ys) != len(centers):
+        return None
+    dx = _steps(xs) if len(xs) > 1 else 0.0
+    dy = _steps(ys) if len(ys) > 1 else 0.0
+    if dx is None or dy is None:
+        return None
+    for x in xs:
+        for y in ys:
+            if not any(abs(p[0] - x) <= EQUAL_TOL and abs(p[1] - y) <= EQUAL_TOL
+                       for p in centers):
+                return None
+    return xs[0], ys[0], dx, dy, len(xs), len(ys)
+
+
+def _line(centers: list):
+    """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
+    n = len(centers)
+    if n < 2:
+        return None
+    a, b = min(centers), max(centers)
+    d = ((b[0] - a[0]) / (n - 1), (b[1] - a[1]) / (n - 1))
+    got = list(centers)
+    for k in range(n):
+        q = (a[0] + k * d[0], a[1] + k * d[1])
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    return a, d, n
+
+
+# ------------------------------------------------------------------ attachments
+def _attachments(segs: list):
+    """A loop that is a rectangle (rounded or not) with tabs standing out of its sides:
+    ``(rectangle Shape, [closed chains])``, each chain the tab's pieces off the rectangle
+    closed by lines reaching into it; or None.  The rectangle is found from four equal
+    corner arcs (or, with none, the loop's longest lines), checked as every one of its own
+    pieces lying on the loop's pieces."""
+    arcs = [s for s in segs if isinstance(s, Arc)]
+    if not any(isinstance(s, Line) for s in segs) or len(segs) > 64 or \
+            not all(isinstance(s, (Line, Arc)) for s in segs):
+        return None
+    by_r: dict = {}
+    for a in arcs:
+        by_r.setdefault(round(a.radius, 6), []).append(a)
+    cands = []
+    for r, group in by_r.items():
+        if not 4 <= len(group) <= 8:     # four corners (and a tab's arcs of their radius)
+            continue
+        for i in range(len(group)):
+            for j in range(i + 1, len(group)):
+                # two opposite corners' centres give the rectangle (axis-aligned frame)
+                p, q = group[i].center, group[j].center
+                if abs(p[0] - q[0]) <= EQUAL_TOL or abs(p[1] - q[1]) <= EQUAL_TOL:
+                    continue
+                R = group[i].radius
+                cx, cy = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
+                w, h = abs(p[0] - q[0]) + 2 * R, abs(p[1] - q[1]) + 2 * R
+                cands.append(((cx, cy), w, h, R))
+    if not cands:
+        # a sharp-cornered rectangle: its sides from the loop's horizontal and vertical lines
+        hs = [g for g in segs if isinstance(g, Line) and abs(g.start[1] - g.end[1]) <= EQUAL_TOL]
+        vs = [g for g in segs if isinstance(g, Line) and abs(g.start[0] - g.end[0]) <= EQUAL_TOL]
+        if hs and vs:
+            xs = [g.start[0] for g in vs]
+            ys = [g.start[1] for g in hs]
+            ys_v = [p[1] for g in vs for p in (g.start, g.end)]
+            x0, x1 = min(xs), max(xs)
+            y0, y1 = min(ys), max(ys)
+            if y1 - y0 <= EQUAL_TOL:            # one side only: the other from the verticals
+                y0, y1 = min(ys + ys_v), max(ys + ys_v)
+            xs_h = [p[0] for g in hs for p in (g.start, g.end)]
+            if x1 - x0 <= EQUAL_TOL:
+                x0, x1 = min(xs + xs_h), max(xs + xs_h)
+            if x1 - x0 > EQUAL_TOL and y1 - y0 > EQUAL_TOL:
+                cands.append((((x0 + x1) / 2, (y0 + y1) / 2), x1 - x0, y1 - y0, 0.0))
+    for center, w, h, R in sorted(cands, key=lambda c: -c[1] * c[2]):
+        got = _split_rect(segs, center, w, h, R)
+        if got is not None:
+            return got
+    return None
+
+
+def _on_piece(m, s) -> bool:
+    """Piece ``m`` of the rectangle lies on piece ``s`` of the loop, or ``s`` on ``m``
+    (a side of the rectangle interrupted by a tab is two shorter lines)."""
+    from .infer_shapes import _same
+    if not isinstance(s, (Line, Arc)):
+        return False            # a curve is never a piece of a side (its ends may be)
+    if isinstance(m, Arc) or isinstance(s, Arc):
+        return isinstance(m, Arc) and isinstance(s, Arc) and _same(m, s)
+    ux, uy = m.end[0] - m.start[0], m.end[1] - m.start[1]
+    L = math.hypot(ux, uy)
+    ux, uy = ux / L, uy / L
+    for p in (s.start, s.end):
+        vx, vy = p[0] - m.start[0], p[1] - m.start[1]
+        if abs(vx * uy - vy * ux) > EQUAL_TOL:
+            return False
+        t = vx * ux + vy * uy
+        if t < -EQUAL_TOL or t > L + EQUAL_TOL:
+            return False
+    return True
+
+
+def _split_rect(segs, center, w, h, R):
+    made = rrect_pieces(center, w, h, 0.0, [R] * 4)
+    # the rectangle's arcs must be the loop's; its lines covered (in part) by the loop's
+    rest = []
+    for s in segs:
+        if not any(_on_piece(m, s) for m in made):
+            rest.append(s)
+    if not rest or len(rest) == len(segs):
+        return None
+    for m in made:
+        if isinstance(m, Arc) and not any(isinstance(s, Arc) and _on_piece(m, s) for s in segs):
+            return None
+    # the pieces off the rectangle, in the loop's order, as runs between two side points
+    n = len(segs)
+    idx = [i for i, s in enumerate(segs) if s in rest]
+    runs: list[list] = []
+    start = next((i for i in range(n) if i in idx and (i - 1) % n not in idx), None)
+    if start is None:
+        return None
+    i = start
+    seen = 0
+    while seen < n:
+        if i in idx and (i - 1) % n not in idx:
+            run = []
+            while i in idx and len(run) < n:
+                run.append(segs[i])
+                i = (i + 1) % n
+                seen += 1
+            runs.append(run)
+        else:
+            i = (i + 1) % n
+            seen += 1
+    hw, hh = w / 2, h / 2
+    x0, x1, y0, y1 = center[0] - hw, center[0] + hw, center[1] - hh, center[1] + hh
+    depth = min(w, h) / 4
+    chains = []
+    for run in runs:
+        a, b = run[0].start, run[-1].end
+        # both ends on one straight side: the outward normal
+        side = None
+        for nrm, on in (((0, 1), lambda p: abs(p[1] - y1) <= EQUAL_TOL),
+                        ((0, -1), lambda p: abs(p[1] - y0) <= EQUAL_TOL),
+                        ((1, 0), lambda p: abs(p[0] - x1) <= EQUAL_TOL),
+                        ((-1, 0), lambda p: abs(p[0] - x0) <= EQUAL_TOL)):
+            if on(a) and on(b):
+                side = nrm
+        if side is None:
+            return None
+        # the run must stand out of the rectangle (its pieces' middles outside)
+        for s in run:
+            mid = s.at(s.start_angle + s.sweep / 2) if isinstance(s, Arc) else \
+                ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+            if x0 + EQUAL_TOL < mid[0] < x1 - EQUAL_TOL and \
+                    y0 + EQUAL_TOL < mid[1] < y1 - EQUAL_TOL:
+                return None
+        # the ends within the side's straight part, clear of the corner arcs
+        along = 0 if side[1] else 1
+        lo = (x0 if along == 0 else y0) + R
+        hi = (x1 if along == 0 else y1) - R
+        if not all(lo - EQUAL_TOL <= p[along] <= hi + EQUAL_TOL for p in (a, b)):
+            return None
+        slot = _tab_slot(run, side, min(w, h))
+        if slot is not None:
+            chains.append(slot)
+            continue
+        a2 = (a[0] - side[0] * depth, a[1] - side[1] * depth)
+        b2 = (b[0] - side[0] * depth, b[1] - side[1] * depth)
+        chain = list(run)
+        # close inside the rectangle: b -> b2 -> a2 -> a, merged with a collinear end line
+        tail = [Line(b, b2), Line(b2, a2), Line(a2, a)]
+        if isinstance(chain[-1], Line) and _collinear(chain[-1], tail[0]):
+            tail[0] = Line(chain[-1].start, b2)
+            chain.pop()
+        if isinstance(chain[0], Line) and _collinear(chain[0], tail[-1]) and chain:
+            tail[-1] = Line(a2, chain[0].end)
+            chain.pop(0)
+            chain = chain + tail[:-1]
+            chain = [tail[-1]] + chain
+        else:
+            chain = chain + tail
+        chains.append(chain)
+    if abs(R) <= EQUAL_TOL:
+        rect = Shape("Rectangle", center, {"width": w, "height": h}, ("Rectangle", w, h), 0)
+    else:
+        rect = Shape("RoundedRectangle", center, {"width": w, "height": h, "corner_radius": R},
+                     ("RoundedRectangle", w, h, R), 0)
+    rect.pieces = len(segs) - len(rest)
+    return rect, chains
+
+
+def _tab_slot(run: list, side, room: float):
+    """A tab that is a line, a half circle and a line back (a rounded tab): the ``Slot`` from
+    the half circle's centre into the rectangle, its inner end a radius deep, or None."""
+    if len(run) != 3 or not isinstance(run[1], Arc) or not isinstance(run[0], Line) or \
+            not isinstance(run[2], Line):
+        return None
+    arc = run[1]
+    r = arc.radius
+    if abs(abs(arc.sweep) - math.pi) > 1e-9 or 3 * r >= room:
+        return None
+    a = run[0].start
+    # how far the arc's centre stands out of the side
+    out = (arc.center[0] - a[0]) * side[0] + (arc.center[1] - a[1]) * side[1]
+    if out <= EQUAL_TOL:
+        return None
+    end = (arc.center[0] - side[0] * (out + r), arc.center[1] - side[1] * (out + r))
+    from .infer_shapes import _as_slot
+    made = _as_slot([run[1], Line(run[2].start, (run[2].end[0] - side[0] * r,
+                                                 run[2].end[1] - side[1] * r)),
+                     Arc(end, r, arc.start_angle + math.pi, arc.sweep),
+                     Line((run[0].start[0] - side[0] * r, run[0].start[1] - side[1] * r),
+                          run[0].end)])
+    return made
+
+
+def _circle_attachments(segs: list):
+    """A loop that is a circle with teeth standing out of it (a gear's root circle and its
+    teeth, a bore and its keyway): ``(Circle Shape, [tooth vertices])``, each tooth the
+    polygon of a run of lines off the circle, its first and last lines carried on into the
+    circle so that their crossing with it stays where it was; or None."""
+    arcs = [s for s in segs if isinstance(s, Arc)]
+    if not arcs or not any(isinstance(s, Line) for s in segs):
+        return None
+    groups: dict = {}
+    for a in arcs:
+        key = (round(a.center[0], 6), round(a.center[1], 6), round(a.radius, 6))
+        groups.setdefault(key, []).append(a)
+    base = max(groups.values(), key=lambda g: sum(abs(a.sweep) for a in g))
+    C, R = base[0].center, base[0].radius
+
+    def on_base(s) -> bool:
+        return isinstance(s, Arc) and _close(s.center, C) and abs(s.radius - R) <= EQUAL_TOL
+    n = len(segs)
+    if not any(on_base(s) for s in segs) or all(on_base(s) for s in segs):
+        return None
+    start = next(i for i in range(n) if on_base(segs[i - 1]) and not on_base(segs[i]))
+    runs: list[list] = []
+    i, seen = start, 0
+    while seen < n:
+        if not on_base(segs[i]):
+            run = []
+            while not on_base(segs[i]) and seen < n:
+                run.append(segs[i])
+                i = (i + 1) % n
+                seen += 1
+            runs.append(run)
+        else:
+            i = (i + 1) % n
+            seen += 1
+    teeth = []
+    for run in runs:
+        if not all(isinstance(s, Line) for s in run):
+            return None
+        a, b = run[0].start, run[-1].end
+        if abs(math.dist(a, C) - R) > EQUAL_TOL or abs(math.dist(b, C) - R) > EQUAL_TOL:
+            return None
+        pts = [s.end for s in run[:-1]]
+        if any(math.dist(p, C) <= R + EQUAL_TOL for p in pts):
+            return None             # a notch into the circle, not a tooth
+        # carry the first and last lines on into the circle, a tenth of its radius deep
+        p1 = run[0].end
+        q1 = run[-1].start
+        ua = ((a[0] - p1[0]) / run[0].length, (a[1] - p1[1]) / run[0].length)
+        ub = ((b[0] - q1[0]) / run[-1].length, (b[1] - q1[1]) / run[-1].length)
+        d = 0.1 * R
+        a2 = (a[0] + ua[0] * d, a[1] + ua[1] * d)
+        b2 = (b[0] + ub[0] * d, b[1] + ub[1] * d)
+        if math.dist(a2, C) >= R - EQUAL_TOL or math.dist(b2, C) >= R - EQUAL_TOL:
+            return None
+        teeth.append([a2] + pts + [b2])
+    circle = Shape("Circle", C, {"radius": R}, ("Circle", R), 0)
+    circle.pieces = n
+    return circle, teeth
+
+
+def _rotated(g, C, a: float):
+    """Piece ``g`` turned by ``a`` about ``C``."""
+    c, s = math.cos(a), math.sin(a)
+
+    def R(p):
+        x, y = p[0] - C[0], p[1] - C[1]
+        return (C[0] + x * c - y * s, C[1] + x * s + y * c)
+    if isinstance(g, Line):
+        return Line(R(g.start), R(g.end))
+    return Arc(R(g.center), g.radius, g.start_angle + a, g.sweep)
+
+
+def _polar_chain(segs: list):
+    """``(centre, n, the pieces of one turn)`` when the loop ``segs`` (lines and arcs) is
+    one run of pieces turned ``n`` times evenly round a centre (a gear's outline, a star),
+    each copy checked piece by piece to EQUAL_TOL; else None."""
+    if len(segs) < 6 or not all(isinstance(g, (Line, Arc)) for g in segs):
+        return None
+    n_all = len(segs)
+    pts = [g.start for g in segs]
+    C = (sum(p[0] for p in pts) / n_all, sum(p[1] for p in pts) / n_all)
+    C = (float(_r(C[0])), float(_r(C[1])))
+
+    def sig(g):
+        m = g.at(g.start_angle + g.sweep / 2) if isinstance(g, Arc) else \
+            ((g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2)
+        return (isinstance(g, Arc), round(g.length, 6), round(math.dist(m, C), 6))
+    sigs = [sig(g) for g in segs]
+    from .infer_shapes import _same
+    for n in range(n_all // 2, 2, -1):
+        if n_all % n:
+            continue
+        p = n_all // n
+        if not all(sigs[i] == sigs[(i + p) % n_all] for i in range(n_all)):
+            continue
+        step = 2 * math.pi / n
+        # the copy k of piece i is piece i + k p, turned either way round
+        for sign in (1, -1):
+            if all(_same(_rotated(segs[i], C, sign * k * step), segs[(i + k * p) % n_all])
+                   for k in range(1, n) for i in range(p)):
+                period = segs[:p] if sign > 0 else segs[:p]
+                if sign < 0:        # the loop runs clockwise: the pattern turns the other way
+                    return None
+                return C, n, period
+    return None
+
+
+def _polar_polys(teeth: list, C):
+    """``(n, first angle, [(radius, angle) of each vertex of the first])`` when the polygons
+    ``teeth`` are one polygon turned evenly round ``C`` (a whole turn), else None."""
+    n = len(teeth)
+    if n < 2 or any(len(t) != len(teeth[0]) for t in teeth):
+        return None
+
+    def ang(t):
+        cx = sum(p[0] for p in t) / len(t) - C[0]
+        cy = sum(p[1] for p in t) / len(t) - C[1]
+        return math.atan2(cy, cx)
+    order = sorted(teeth, key=lambda t: ang(t) % (2 * math.pi))
+    first = order[0]
+    step = 2 * math.pi / n
+    polar = [(math.dist(p, C), math.atan2(p[1] - C[1], p[0] - C[0])) for p in first]
+    for k, t in enumerate(order):
+        for (r, a), p in zip(polar, t):
+            q = (C[0] + r * math.cos(a + k * step), C[1] + r * math.sin(a + k * step))
+            if math.dist(p, q) > EQUAL_TOL:
+                return None
+    return n, polar
+
+
+def _collinear(p: Line, q: Line) -> bool:
+    ux, uy = p.end[0] - p.start[0], p.end[1] - p.start[1]
+    vx, vy = q.end[0] - q.start[0], q.end[1] - q.start[1]
+    lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)
+    if lu <= EQUAL_TOL or lv <= EQUAL_TOL:
+        return False
+    return abs(ux * vy - uy * vx) / lu <= EQUAL_TOL and ux * vx + uy * vy > 0
+
+
+def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
+    """What to hold so that a chain written by :meth:`~.program._Writer.chain` with
+    ``prefix`` stays where the file put it, and nothing twice (no ``W0401``): an arc between
+    two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
+    (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
+    centre is then the one point at that distance from both held ends).  Returns the things
+    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
+    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
+    import`` writes it."""
+    if not all(isinstance(g, (Line, Arc)) for g in segs):
+        from ..geometry.curves import Spline
+        from .program import _bezier_runs
+        one = _bezier_runs(list(segs))
+        if closed and len(one) == 1 and isinstance(one[0], Spline):
+            return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
+        return []
+    n = len(segs)
+
+    def piece(i):
+        return segs[i % n] if closed or 0 <= i < n else None
+
+    def arc_alone(i):
+        return isinstance(piece(i), Arc) and not isinstance(piece(i - 1), Arc) and \
+            not isinstance(piece(i + 1), Arc)
+
+    def start(i):       # the expression of piece i's start as written
+        g = segs[i]
+        return f"{prefix}{i}.end" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.start"
+
+    def end(i):
+        g = segs[i]
+        return f"{prefix}{i}.start" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.end"
+    out = [f"{prefix}{i}" for i in range(n) if arc_alone(i)]
+    for i in range(n):                      # the join at the start of piece i
+        if not (arc_alone(i) or (piece(i - 1) is not None and arc_alone(i - 1))):
+            out.append(start(i))
+    if not closed and not arc_alone(n - 1):
+        out.append(end(n - 1))
+    out += [f"{prefix}{i}.radius == {_num(g.radius)}" for i, g in enumerate(segs)
+            if isinstance(g, Arc) and not arc_alone(i)]
+    return out
+
+
+def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> None:
+    fixed = [h for h in holds if " == " not in h]
+    if len(fixed) == 1:
+        w.emit(depth, f"Fixed({fixed[0]})")
+    elif fixed:
+        w.emit(depth, f"for {var} in [{', '.join(fixed)}] {{ Fixed({var}) }}")
+    for h in holds:
+        if " == " in h:
+            w.emit(depth, h)
+
+
+# ------------------------------------------------------------------ the writer
+class _Stats:
+    def __init__(self) -> None:
+        self.pieces = 0             # pieces of the drawing's outlines and holes
+        self.in_shapes = 0          # of them, in recognised shapes
+        self.kinds: Counter = Counter()
+        self.patterns: Counter = Counter()
+
+
+class _Part:
+    """One part's statements, written into ``w`` at ``depth``."""
+
+    def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
+        self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
+        self.used: set = set()
+        self.shift: tuple | None = None     # (x term, y term) added to every position
+
+    def plus(self, v: float, term: str, axis: int = 0) -> str:
+        if self.shift is not None and self.shift[axis]:
+            return _plus(v, f"{self.shift[axis]} + {term}")
+        return _plus(v, term)
+
+    def center(self, c) -> str:
+        if self.shift is None:
+            return _center(c)
+        return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
+                               for i in (0, 1)) + ")"
+
+    def p(self, name: str, value: float, comment: str = "", unit: str = "mm",
+          times: int = 1) -> str:
+        return self.params.add(self.prefix + name, value, comment, unit, times)
+
+    def name(self, base: str) -> str:
+        return _ident(base, self.used)
+
+    def numbered(self, base: str) -> str:
+        k = 1
+        while f"{base}{k}" in self.used:
+            k += 1
+        self.used.add(f"{base}{k}")
+        return f"{base}{k}"
+
+    def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
+        self.w.emit(depth, f"{nm} = {_ctor(sh, center, sizes)}")
+
+    # the body ---------------------------------------------------------------
+    def body(self, depth: int, segs: list, first: bool) -> tuple | None:
+        """Write an outer loop; returns the body's (Shape, param names) when it is a
+        rectangle-like shape the holes may be placed by."""
+        st = self.stats
+        st.pieces += len(segs)
+        sh = recognise(segs)
+        tabs = None
+        teeth = None
+        if sh is None:          # a circle with teeth, before a rectangle with tabs
+            got = _circle_attachments(segs)
+            if got is not None:
+                sh, teeth = got
+        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
+            got = _attachments(segs)
+            if got is not None:
+                sh, tabs = got
+        nm = self.name("body" if first else "outline")
+        if sh is None:
+            pc = _polar_chain(segs)
+            if pc is not None:
+                C, n, period = pc
+                self.stats.patterns["outline turned round a centre"] += 1
+                self.stats.in_shapes += len(segs)
+                pre = nm + "_s"
+                if self.w.chain(depth, period, False, pre):
+                    names = [f"{pre}{i}" for i in range(len(period))]
+                    _emit_holds(self.w, depth, _holds(period, pre, False))
+                    self.w.emit(depth, f"for e in [{', '.join(names)}] {{ "
+                                       f"CircularPattern(e, {n}, {self.center(C)}) }}")
+                    # its centre names a bore (no pieces to place holes by)
+                    return Shape("Circle", C, {"radius": 0.0}, (), 0), {}, nm
+            if self.w.chain(depth, segs, True, nm + "_s"):
+                _emit_holds(self.w, depth, _holds(segs, nm + "_s"))
+            return None
+        st.kinds[sh.kind] += 1
+        st.in_shapes += sh.pieces
+        sizes: dict = {}
+        if first and sh.kind in ("Rectangle", "RoundedRectangle"):
+            sizes["width"] = self.p("width", sh.args["width"])
+            sizes["height"] = self.p("height", sh.args["height"])
+            if "corner_radius" in sh.args:
+                sizes["corner_radius"] = self.p("corner_radius", sh.args["corner_radius"])
+        elif first and sh.kind == "Circle":
+            sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
+        self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
+        if teeth:
+            self.teeth(depth, sh, teeth, "tooth")
+        for chain in tabs or []:
+            tn = self.name("tab")
+            if isinstance(chain, Shape):
+                st.kinds[chain.kind] += 1
+                st.in_shapes += 3
+                self.shape_line(depth, tn, chain, self.center(chain.center))
+                self.w.emit(depth, f"Fixed({tn})")
+                continue
+            t = recognise(chain)
+            if t is not None and t.kind != "Polygon":
+                st.kinds[t.kind] += 1
+                self.shape_line(depth, tn, t, self.center(t.center))
+                self.w.emit(depth, f"Fixed({tn})")
+            elif t is not None:
+                self.shape_line(depth, tn, t, "")
+                self.w.emit(depth, f"Fixed({tn})")
+            elif self.w.chain(depth, chain, True, tn + "_s"):
+                _emit_holds(self.w, depth, _holds(chain, tn + "_s"))
+            st.in_shapes += sum(1 for s in chain if any(s is x for x in segs))
+        if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
+                abs(sh.args.get("rotation", 0.0)) <= 1e-15:
+            return sh, sizes, nm
+        return None
+
+    def teeth(self, depth: int, base: Shape, teeth: list, word: str) -> None:
+        """The polygons standing out of a circle: one loop when they are one polygon turned
+        evenly round it (a gear's teeth), else each on its own."""
+        C = base.center
+        pol = _polar_polys(teeth, C)
+        c = self.center(C)
+        if pol is not None:
+            n, verts = pol
+            step = _num(360 / n, 1e-10)
+            pts = ", ".join(f"polar({c}, {_num(r)}, {_deg(_snap_angle(a, r))} + "
+                            f"i * {step} deg)" for r, a in verts)
+            self.w.emit(depth, f"for i in range({n}) {{")
+            self.w.emit(depth + 1, f"{word} = Polygon([{pts}])")
+            self.w.emit(depth + 1, f"Fixed({word})")
+            self.w.emit(depth, "}")
+            self.stats.patterns[f"{'teeth' if word == 'tooth' else word + 'es'} round a "
+                                f"circle"] += 1
+            self.stats.kinds["Polygon"] += n
+            return
+        for t in teeth:
+            tn = self.name(word)
+            pts = ", ".join(self.center(p) for p in t)
+            self.w.emit(depth, f"{tn} = Polygon([{pts}])")
+            self.w.emit(depth, f"Fixed({tn})")
+            self.stats.kinds["Polygon"] += 1
+
+    # the holes --------------------------------------------------------------
+    def holes(self, depth: int, loops: list, body) -> None:
+        shapes = []
+        for k, segs in enumerate(loops):
+            if self.w.deadline is not None and k % 128 == 0:
+                self.w.deadline.check("recognising the holes of the drawing")
+            self.stats.pieces += len(segs)
+            sh = recognise(segs)
+            if sh is None:
+                self.compound_hole(depth, segs, body)
+                continue
+            self.stats.kinds[sh.kind] += 1
+            self.stats.in_shapes += sh.pieces
+            shapes.append(sh)
+        groups: dict = {}
+        for sh in shapes:
+            key = (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
+                                     for x in sh.size)
+            groups.setdefault(key, []).append(sh)
+        singles = []
+        centres = []          # bolt circle centres, for naming a bore
+        for key, g in groups.items():
+            if len(g) == 1 or g[0].kind == "Polygon":
+                singles += g
+                continue
+            done = self.pattern(depth, g, body, centres)
+            if not done:
+                singles += g
+        for sh in singles:
+            self.single(depth, sh, body, centres)
+
+    def compound_hole(self, depth: int, segs: list, body) -> None:
+        """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
+        a tab, both written in one ``hole``; else the exact chain."""
+        w = self.w
+        got = _circle_attachments(segs)
+        if got is not None:
+            circle, teeth = got
+            concentric = body is not None and _close(circle.center, body[0].center)
+            hn = self.name("bore" if concentric else "round_hole")
+            w.emit(depth, f"hole {hn} {{")
+            w.emit(depth + 1, f"h = {_ctor(circle, self.center(circle.center))}")
+            names = ["h"]
+            sub = _Part(w, self.params, self.stats, self.prefix)
+            sub.shift = self.shift
+            word = "key" if len(teeth) == 1 else "notch"
+            if len(teeth) == 1:
+                pts = ", ".join(self.center(p) for p in teeth[0])
+                w.emit(depth + 1, f"key = Polygon([{pts}])")
+                names.append("key")
+                self.stats.kinds["Polygon"] += 1
+            else:
+                sub.teeth(depth + 1, circle, teeth, word)
+            w.emit(depth, "}")
+            w.emit(depth, f"for x in [{', '.join(f'{hn}.{f}' for f in names)}] {{ Fixed(x) }}")
+            self.stats.kinds["Circle"] += 1
+            self.stats.in_shapes += len(segs)
+            return
+        got = _attachments(segs)
+        if got is not None:
+            rect, tabs = got
+            hn = self.name("window")
+            w.emit(depth, f"hole {hn} {{")
+            w.emit(depth + 1, f"h = {_ctor(rect, self.center(rect.center))}")
+            fixed = ["h"]
+            for k, t in enumerate(tabs):
+                nm = f"tab{k + 1}"
+                if isinstance(t, Shape):
+                    w.emit(depth + 1, f"{nm} = {_ctor(t, self.center(t.center))}")
+                else:
+                    tt = recognise(t)
+                    if tt is None:
+                        if w.chain(depth + 1, t, True, nm + "_"):
+                            fixed += _holds(t, nm + "_")
+                        continue
+                    w.emit(depth + 1, f"{nm} = {_ctor(tt, self.center(tt.center))}")
+                fixed.append(nm)
+            w.emit(depth, "}")
+            _emit_holds(w, depth, [f"{hn}.{f}" for f in fixed])
+            self.stats.kinds[rect.kind] += 1
+            self.stats.in_shapes += len(segs)
+            return
+        hn = self.name("cutout")
+        w.emit(depth, f"hole {hn} {{")
+        ok = w.chain(depth + 1, segs, True, "e")
+        w.emit(depth, "}")
+        if ok:
+            _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
+
+    def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
+                   loop: bool = False) -> None:
+        var = "h"
+        self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
+        self.w.emit(depth, f"Fixed({hn}.{var})")
+
+    def size_params(self, base: str, sh: Shape, many: bool) -> dict:
+        """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
+        if not many:
+            return {}
+        a = sh.args
+        if sh.kind == "Circle":
+            return {"diameter": self.p(base + "_d", 2 * a["radius"])}
+        if sh.kind == "Slot":
+            return {"length": self.p(base + "_length", a["length"]),
+                    "width": self.p(base + "_width", a["width"])}
+        if sh.kind in ("Rectangle", "RoundedRectangle"):
+            return {"width": self.p(base + "_width", a["width"]),
+                    "height": self.p(base + "_height", a["height"])}
+        if sh.kind == "RegularPolygon":
+            return {"radius": self.p(base + "_radius", a["radius"])}
+        return {}
+
+    def pattern(self, depth: int, g: list, body, centres: list) -> bool:
+        w = self.w
+        cs = [sh.center for sh in g]
+        sh = g[0]
+        base = _hole_name(sh)
+        # four at the corners of the body, centred on it
+        if len(g) == 4 and body is not None and body[0].kind != "Circle":
+            bsh, bsizes, bname = body
+            gr = _grid(cs)
+            if gr is not None and gr[4] == 2 and gr[5] == 2:
+                x0, y0, dx, dy = gr[:4]
+                mid = (x0 + dx / 2, y0 + dy / 2)
+                if math.dist(mid, bsh.center) <= EQUAL_TOL:
+                    W, H = bsh.args["width"], bsh.args["height"]
+                    ix, iy = (W - dx) / 2, (H - dy) / 2
+                    sizes = self.size_params("corner_" + base, sh, True)
+                    if abs(ix - iy) <= ROUND_TOL:
+                        inx = iny = self.p("corner_inset", ix, "from the edges")
+                    else:
+                        inx = self.p("corner_inset_x", ix, "from the left and right edges")
+                        iny = self.p("corner_inset_y", iy, "from the top and bottom edges")
+                    hn = self.name(f"corner_{base}s")
+                    wx, hy = bsizes.get("width"), bsizes.get("height")
+                    ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
+                    ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
+                    c = f"({self.plus(mid[0], ex)}, {self.plus(mid[1], ey, 1)})"
+                    w.emit(depth, f"for sx in [-1, 1] {{")
+                    w.emit(depth + 1, f"for sy in [-1, 1] {{")
+                    self.hole_block(depth + 2, hn, sh, c, sizes)
+                    w.emit(depth + 1, "}")
+                    w.emit(depth, "}")
+                    self.stats.patterns["corner"] += 1
+                    return True
+        # a bolt circle: circles evenly round a centre
+        if sh.kind == "Circle":
+            pol = _polar(cs)
+            if pol is not None:
+                (cx, cy), R, a0, n = pol
+                hn = self.name("bolt_circle")
+                pcd = self.p(f"{hn}_d", 2 * R, "pitch circle diameter")
+                sizes = self.size_params(f"{hn}_hole", sh, True)
+                ang = f"{_deg(a0)} + i * {_num(360 / n, 1e-10)} deg" if abs(a0) > 1e-15 \
+                    else f"i * {_num(360 / n, 1e-10)} deg"
+                c = f"({self.plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
+                    f"{self.plus(cy, f'{pcd} / 2 * sin({ang})', 1)})"
+                w.emit(depth, f"for i in range({n}) {{")
+                self.hole_block(depth + 1, hn, sh, c, sizes)
+                w.emit(depth, "}")
+                centres.append((cx, cy))
+                self.stats.patterns["bolt circle"] += 1
+                return True
+        # a pair placed symmetrically about the body's centre (mirrored about its axis)
+        if len(g) == 2 and body is not None:
+            B = body[0].center
+            (x1, y1), (x2, y2) = sorted(cs)
+            sym_x = abs(x1 + x2 - 2 * B[0]) <= EQUAL_TOL and x2 - x1 > EQUAL_TOL
+            sym_y = abs(y1 + y2 - 2 * B[1]) <= EQUAL_TOL and abs(y2 - y1) > EQUAL_TOL
+            same_y, same_x = abs(y1 - y2) <= EQUAL_TOL, abs(x1 - x2) <= EQUAL_TOL
+            if (sym_x and (same_y or sym_y)) or (sym_y and same_x):
+                hn = self.name(base + "s")
+                sizes = self.size_params(hn, sh, True)
+                ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2") if sym_x \
+                    else self.center((x1, y1))[1:-1].split(", ")[0]
+                # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
+                if sym_y:
+                    dy = y2 - y1 if sym_x else abs(y2 - y1)
+                    sign = "s" if (not sym_x or y2 > y1) else "-s"
+                    name = hn + ("_spacing_y" if sym_x else "_spacing")
+                    ey = self.plus(B[1], f"{sign} * {self.p(name, abs(dy))} / 2", 1)
+                else:
+                    ey = self.center((x1, y1))[1:-1].split(", ")[1]
+                w.emit(depth, "for s in [-1, 1] {")
+                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
+                w.emit(depth, "}")
+                self.stats.patterns["mirrored pair"] += 1
+                return True
+        # a row, a column or a grid
+        gr = _grid(cs)
+        if gr is not None:
+            x0, y0, dx, dy, nx, ny = gr
+            hn = self.name(base + "s")
+            sizes = self.size_params(hn, sh, True)
+            here = self.center((x0, y0))[1:-1].split(", ")
+            ex, ey = here
+            if nx > 1:
+                px = self.p(hn + "_pitch_x" if ny > 1 else hn + "_pitch", dx, times=nx)
+                ex = self.plus(x0, f"i * {px}")
+            if ny > 1:
+                py = self.p(hn + "_pitch_y" if nx > 1 else hn + "_pitch", dy, times=ny)
+                ey = self.plus(y0, f"j * {py}", 1)
+            c = f"({ex}, {ey})"
+            d = depth
+            if nx > 1:
+                w.emit(d, f"for i in range({nx}) {{")
+                d += 1
+            if ny > 1:
+                w.emit(d, f"for j in range({ny}) {{")
+                d += 1
+            self.hole_block(d, hn, sh, c, sizes)
+            for _ in range(d - depth):
+                d -= 1
+                w.emit(d, "}")
+            self.stats.patterns["grid" if nx > 1 and ny > 1 else "row"] += 1
+            return True
+        ln = _line(cs)
+        if ln is not None:
+            p0, (dx, dy), n = ln
+            hn = self.name(base + "s")
+            sizes = self.size_params(hn, sh, True)
+            c = f"({self.plus(p0[0], f'i * {_num(dx, ROUND_TOL / n)}')}, " \
+                f"{self.plus(p0[1], f'i * {_num(dy, ROUND_TOL / n)}', 1)})"
+            w.emit(depth, f"for i in range({n}) {{")
+            self.hole_block(depth + 1, hn, sh, c, sizes)
+            w.emit(depth, "}")
+            self.stats.patterns["row"] += 1
+            return True
+        # no pattern for them all: rows and columns of three or more among them, the rest
+        # one by one, one size param for all
+        sizes = self.size_params(base, sh, True)
+        rest = list(g)
+        for axis in (1, 0):             # equal y: a row along x; equal x: a column
+            lines: dict = {}
+            for m in rest:
+                lines.setdefault(round(m.center[axis], 6), []).append(m)
+            for members in lines.values():
+                if len(members) < 3:
+                    continue
+                pos = sorted(((m.center[1 - axis], m) for m in members), key=lambda t: t[0])
+                step = min(b[0] - a[0] for a, b in zip(pos, pos[1:]))
+                if step <= EQUAL_TOL:
+                    continue
+                for run in _runs(pos, step):
+                    if len(run) < 3:
+                        continue
+                    hn = self.name(base + "s")
+                    pitch = self.p(hn + "_pitch", step, times=len(run))
+                    first = run[0][1].center
+                    c = [None, None]
+                    c[1 - axis] = self.plus(first[1 - axis], f"i * {pitch}", 1 - axis)
+                    c[axis] = self.center(first)[1:-1].split(", ")[axis]
+                    w.emit(depth, f"for i in range({len(run)}) {{")
+                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
+                    w.emit(depth, "}")
+                    self.stats.patterns["row"] += 1
+                    for _, m in run:
+                        rest.remove(m)
+        for s in rest:
+            self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
+                            s, self.center(s.center), sizes)
+        if rest:
+            self.stats.patterns["equal sizes"] += 1
+        return True
+
+    def single(self, depth: int, sh: Shape, body, centres: list) -> None:
+        base = _hole_name(sh)
+        sizes: dict = {}
+        if sh.kind == "Circle":
+            on_axis = any(math.dist(sh.center, c) <= EQUAL_TOL for c in centres) or \
+                (body is not None and math.dist(sh.center, body[0].center) <= EQUAL_TOL)
+            if on_axis:
+                base = "bore"
+                sizes = {"diameter": self.p(self.name("bore") + "_d", 2 * sh.args["radius"])}
+                self.used.discard("bore")
+        hn = self.numbered(base) if base == "hole" else self.name(base)
+        if sh.kind == "Polygon":
+            self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
+            self.w.emit(depth, f"Fixed({hn}.h)")
+            return
+        self.hole_block(depth, hn, sh, self.center(sh.center), sizes)
+
+
+# ------------------------------------------------------------------ drawings (engravings)
+def _periodic(vals: list) -> list:
+    """The shortest list ``P`` with ``vals[i] == P[i % len(P)]`` (within EQUAL_TOL)."""
+    n = len(vals)
+    for p in range(1, n + 1):
+        if all(abs(vals[i] - vals[i % p]) <= EQUAL_TOL for i in range(n)):
+            return vals[:p]
+    return vals
+
+
+def _runs(idx_pos: list, step: float) -> list[list]:
+    """Maximal runs of consecutive members (positions ``step`` apart) of sorted
+    ``(position, item)`` pairs."""
+    runs: list[list] = []
+    for pos, it in idx_pos:
+        if runs and abs(pos - runs[-1][-1][0] - step) <= EQUAL_TOL:
+            runs[-1].append((pos, it))
+        else:
+            runs.append([(pos, it)])
+    return runs
+
+
+MIN_FAMILY = 5      # strokes in a row (ticks) written as one loop
+
+
+def _tick_families(lines: list) -> tuple[list, list]:
+    """Single strokes (``(a, b)`` point pairs) that are one family: ticks along a line
+    (starts evenly spaced on a line, one direction, lengths repeating) or round a centre
+    (radial, evenly turned, one radius at their anchored end).  Returns ``([family], the
+    indices of the strokes in them)``,
+    a family ``("row", p0, step, u, lengths)`` or ``("polar", C, R, a0, step, sign,
+    lengths)``."""
+    fams = []
+    left = list(range(len(lines)))
+    # ticks along a line: group by direction
+    by_dir: dict = {}
+    for i in left:
+        a, b = lines[i]
+        L = math.dist(a, b)
+        u = ((b[0] - a[0]) / L, (b[1] - a[1]) / L)
+        by_dir.setdefault((round(u[0], 7), round(u[1], 7)), []).append(i)
+    used: set = set()
+    for u, idx in by_dir.items():
+        if len(idx) < MIN_FAMILY:
+            continue
+        # starts on one line across u: group by the start's coordinate along u
+        along: dict = {}
+        for i in idx:
+            a = lines[i][0]
+            along.setdefault(round(a[0] * u[0] + a[1] * u[1], 6), []).append(i)
+        for key, grp in along.items():
+            if len(grp) < MIN_FAMILY:
+                continue
+            v = (-u[1], u[0])
+            pos = sorted(((lines[i][0][0] * v[0] + lines[i][0][1] * v[1]), i) for i in grp)
+            gaps = [b[0] - a[0] for a, b in zip(pos, pos[1:])]
+            step = min(gaps) if gaps else 0
+            if step <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                items = [i for _, i in run]
+                p0 = lines[items[0]][0]
+                d = (lines[items[1]][0][0] - p0[0], lines[items[1]][0][1] - p0[1])
+                ok = all(math.dist(lines[i][0], (p0[0] + k * d[0], p0[1] + k * d[1]))
+                         <= EQUAL_TOL for k, i in enumerate(items))
+                if not ok:
+                    continue
+                lens = [math.dist(*lines[i]) for i in items]
+                fams.append(("row", p0, d, (u[0], u[1]), lens))
+                used.update(items)
+    rest = [i for i in left if i not in used]
+    # ticks round a centre: the centre from two strokes' carriers
+    tries = 0
+    while len(rest) >= MIN_FAMILY and tries < 4:
+        tries += 1
+        C = None
+        a0, b0 = lines[rest[0]]
+        for j in rest[1:]:
+            a1, b1 = lines[j]
+            d0 = (b0[0] - a0[0], b0[1] - a0[1])
+            d1 = (b1[0] - a1[0], b1[1] - a1[1])
+            den = d0[0] * d1[1] - d0[1] * d1[0]
+            if abs(den) > 1e-9 * math.hypot(*d0) * math.hypot(*d1):
+                t = ((a1[0] - a0[0]) * d1[1] - (a1[1] - a0[1]) * d1[0]) / den
+                C = (a0[0] + t * d0[0], a0[1] + t * d0[1])
+                break
+        if C is None:
+            break
+        radial = []
+        for i in rest:
+            a, b = lines[i]
+            ra, rb = math.dist(a, C), math.dist(b, C)
+            if min(ra, rb) <= EQUAL_TOL:
+                continue
+            aa = math.atan2(a[1] - C[1], a[0] - C[0])
+            ab = math.atan2(b[1] - C[1], b[0] - C[0])
+            if abs(math.remainder(aa - ab, 2 * math.pi)) * max(ra, rb) <= EQUAL_TOL:
+                radial.append(i)
+        if len(radial) < MIN_FAMILY:
+            rest = rest[1:]
+            continue
+        # the anchored end: the outer ends on one radius, else the inner ends
+        found = False
+        for outer in (True, False):
+            ends = {}
+            for i in radial:
+                a, b = lines[i]
+                ra, rb = math.dist(a, C), math.dist(b, C)
+                anchor, free = (a, b) if (ra >= rb) == outer else (b, a)
+                ends.setdefault(round(math.dist(anchor, C), 6), []).append((i, anchor, free))
+            R_key, grp = max(ends.items(), key=lambda kv: len(kv[1]))
+            if len(grp) < MIN_FAMILY:
+                continue
+            R = sum(math.dist(an, C) for _, an, _ in grp) / len(grp)
+            def turn(p):
+                t = math.atan2(p[1] - C[1], p[0] - C[0]) % (2 * math.pi)
+                return 0.0 if t > 2 * math.pi - 1e-12 else t
+            pos = sorted((turn(an), (i, an, fr)) for i, an, fr in grp)
+            step = min(b[0] - a[0] for a, b in zip(pos, pos[1:]))
+            if step * R <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                a0 = _snap_angle(run[0][0], R)
+                st = _snap_angle(step, R * len(run))
+                good = all(math.dist(an, (C[0] + R * math.cos(a0 + k * st),
+                                          C[1] + R * math.sin(a0 + k * st))) <= EQUAL_TOL
+                           for k, (_, (i, an, fr)) in enumerate(run))
+                if not good:
+                    continue
+                lens = [math.dist(an, fr) for _, (i, an, fr) in run]
+                fams.append(("polar", C, R, a0, st, -1 if outer else 1, lens))
+                used.update(i for _, (i, _, _) in run)
+                found = True
+            if found:
+                break
+        rest = [i for i in rest if i not in used]
+        if not found:
+            break
+    return fams, used
+
+
+def _write_family(w: _Writer, depth: int, f, k: int) -> str:
+    """One family of ticks as a loop; returns the stroke's name."""
+    nm = f"tick{k}"
+    lens = f[-1]
+    per = _periodic(lens)
+    n = len(lens)
+    L = _r(per[0]) if len(per) == 1 else \
+        "[" + ", ".join(_r(x) for x in per) + f"][i % {len(per)}]"
+    w.emit(depth, f"for i in range({n}) {{")
+    w.emit(depth + 1, f"L = {L}")
+    if f[0] == "row":
+        _, p0, d, u, _ = f
+        x = _plus(p0[0], f"i * {_num(d[0], ROUND_TOL / n)}") if abs(d[0]) > ROUND_TOL \
+            else _r(p0[0])
+        y = _plus(p0[1], f"i * {_num(d[1], ROUND_TOL / n)}") if abs(d[1]) > ROUND_TOL \
+            else _r(p0[1])
+        w.emit(depth + 1, f"x = {x}")
+        w.emit(depth + 1, f"y = {y}")
+
+        def off(c, uc):
+            if abs(uc) <= 1e-15:
+                return c
+            if abs(uc - 1) <= 1e-15:
+                return f"{c} + L"
+            if abs(uc + 1) <= 1e-15:
+                return f"{c} - L"
+            return f"{c} + {_num(uc, 0)} * L"
+        w.emit(depth + 1, f"{nm} = Line((x, y), ({off('x', u[0])}, {off('y', u[1])}))")
+    else:
+        _, C, R, a0, st, sign, _ = f
+        c = _center(C)
+        turn = f"i * {_num(math.degrees(st), 1e-10)} deg"
+        w.emit(depth + 1, f"a = {_deg(a0)} + {turn}" if abs(a0) > 1e-15 else f"a = {turn}")
+        w.emit(depth + 1, f"{nm} = Line(polar({c}, {_r(R)}, a), polar({c}, "
+                          f"{_r(R)} {'-' if sign < 0 else '+'} L, a))")
+    w.emit(depth + 1, f"Fixed({nm})")
+    w.emit(depth, "}")
+    return nm
+
+
+def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
+    """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
+    recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
+    k = 0
+    held: list[str] = []        # rigid shapes, held where the file put them
+    parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
+    for dd in parts:
+        for segs in [circular(o.segments) for o in dd.outlines] + [[c] for c in dd.circles]:
+            k += 1
+            sh = recognise(segs)
+            if sh is not None:
+                stats.kinds[sh.kind] += 1
+                w.emit(depth, f"g{k} = {_ctor(sh, _center(sh.center))}")
+                held.append(f"g{k}")
+            elif w.chain(depth, segs, True, f"g{k}_"):
+                held += _holds(segs, f"g{k}_")
+        for cx, cy, rx, ry, rot in dd.ellipses:
+            k += 1
+            w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+            held.append(f"g{k}")
+        strokes = [p for p in dd.paths if len(p.segments) == 1 and
+                   isinstance(p.segments[0], Line)]
+        fams, used = _tick_families([(p.segments[0].start, p.segments[0].end)
+                                     for p in strokes])
+        done = {id(strokes[i]) for i in used}
+        for f in fams:
+            k += 1
+            _write_family(w, depth, f, k)
+            stats.patterns["ticks in a row" if f[0] == "row" else "ticks round a centre"] += 1
+        for p in dd.paths:
+            if id(p) in done:
+                continue
+            k += 1
+            closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+            if all(isinstance(s, Line) for s in p.segments):
+                pts = [p.segments[0].start] + [s.end for s in p.segments]
+                w.emit(depth, f"g{k} = Polyline([{', '.join(_pt(q) for q in pts)}])")
+                held.append(f"g{k}")
+            elif w.chain(depth, p.segments, closed, f"g{k}_"):
+                held += _holds(p.segments, f"g{k}_", closed)
+            else:
+                w.notes.append(Note("W0130", "an engraved path holds a piece no statement "
+                                             "writes: left out"))
+        for i, (text, (x, y), h, rot, anchor, valign) in enumerate(dd.texts):
+            deg = round(math.degrees(rot), 9)
+            rot_txt = f", rotation={_num(deg)} deg" if deg else ""
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
+                          f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+    _emit_holds(w, depth, held, "g")
+
+
+def _signature(d: Drawing):
+    """``(numbers, body centre)`` of a simple part (one recognised outline, recognised holes,
+    nothing else), its numbers the same for two parts that are copies of each other moved;
+    None for any other part."""
+    if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty) \
+            or _unknown(d):
+        return None
+    loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+    dep = [len(c) for c in _containers(loops)] if loops else []
+    if sum(1 for k in dep if k == 0) != 1 or any(k > 1 for k in dep):
+        return None
+    body = recognise(loops[dep.index(0)])
+    if body is None or body.kind == "Polygon":
+        return None
+    holes = []
+    for segs, k in zip(loops, dep):
+        if k == 1:
+            h = recognise(segs)
+            if h is None or h.kind == "Polygon":
+                return None
+            holes.append((h.kind, h.size, h.center[0] - body.center[0],
+                          h.center[1] - body.center[1]))
+    holes.sort(key=lambda t: (t[0], round(t[2], 6), round(t[3], 6)))
+    return (body.kind, body.size, holes), body.center
+
+
+def _rounded(x):
+    if isinstance(x, (list, tuple)):
+        return tuple(_rounded(y) for y in x)
+    return round(x, 5) + 0.0 if isinstance(x, float) else x
+
+
+def _same_sig(a, b) -> bool:
+    def flat(x):
+        if isinstance(x, (list, tuple)):
+            return [v for y in x for v in flat(y)]
+        return [x]
+    fa, fb = flat(a), flat(b)
+    if len(fa) != len(fb):
+        return False
+    for x, y in zip(fa, fb):
+        if isinstance(x, str) or isinstance(y, str):
+            if x != y:
+                return False
+        elif abs(x - y) > EQUAL_TOL:
+            return False
+    return True
+
+
+# what a Drawing holds that the inferred writer writes (a field it does not know, added to
+# the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
+_KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
+          "engrave"}
+
+
+def _unknown(d: Drawing) -> bool:
+    from dataclasses import fields
+    return any(getattr(d, f.name) for f in fields(d) if f.name not in _KNOWN)
+
+
+def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
+           prefix: str, shift=None) -> None:
+    if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
+        from .program import _structure
+        _structure(w, depth, "solid", name, d)
+        return
+    part = _Part(w, params, stats, prefix)
+    part.shift = shift
+    loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+    dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
+    outer = [segs for segs, k in zip(loops, dep) if k == 0]
+    holes = [segs for segs, k in zip(loops, dep) if k % 2 == 1]
+    islands = [segs for segs, k in zip(loops, dep) if k and k % 2 == 0]
+    # whole ellipses: holes when inside an outline
+    import numpy as np
+    polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops] \
+        if d.ellipses else []
+    ell_holes, ell_body = [], []
+    for el in d.ellipses:
+        inside = sum(1 for P in polys if len(P) >= 3 and _inside((el[0], el[1]), P))
+        (ell_holes if inside % 2 else ell_body).append(el)
+    w.emit(depth, f"solid {name} {{")
+    body = None
+    outer.sort(key=lambda s: -abs(Loop(list(s)).area))
+    for i, segs in enumerate(outer):
+        if w.deadline is not None and i % 128 == 0:
+            w.deadline.check("recognising the outlines of the drawing")
+        got = part.body(depth + 1, segs, i == 0)
+        if i == 0:
+            body = got
+    for cx, cy, rx, ry, rot in ell_body:
+        w.emit(depth + 1, f"{part.name('oval')} = Ellipse(center={_pt((cx, cy))}, "
+                          f"rx={_num(rx)}, ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+    part.holes(depth + 1, holes, body)
+    for cx, cy, rx, ry, rot in ell_holes:
+        hn = part.name("oval")
+        w.emit(depth + 1, f"hole {hn} {{ e = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg) }}")
+    eng = Drawing(paths=list(d.paths), texts=list(d.texts), engrave=d.engrave)
+    if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
+        w.emit(depth + 1, "drawing engraving {")
+        _engraving(w, depth + 2, eng, stats)
+        w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(engraving)")
+    w.emit(depth, "}")
+    for k, segs in enumerate(islands):
+        w.emit(depth, f"solid {name}_island{k + 1} {{")
+        isl = _Part(w, params, stats, prefix)
+        isl.shift = shift
+        isl.body(depth + 1, segs, False)
+        w.emit(depth, "}")
+
+
+def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
+                        deadline=None) -> tuple[str, list[Note]]:
+    """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
+    it (``parts``: a sheet, one solid per outer loop; ``deadline``: the import's), written as
+    recognised shapes, patterns and parameters (module doc), its head comment saying what
+    was recognised (pieces -> shapes, patterns) and the tolerances; and the notes of what was
+    left out.  Lengths in mm.  Raises :class:`~aidl_lang.limits.OutOfBudget` past the
+    deadline (:func:`~.program.import_drawing` words it as ``E0304``)."""
+    w = _Writer(deadline)
+    params = _Params()
+    stats = _Stats()
+    used: set = set()
+    items = []
+    for layer, d in layers:
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
+            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        if parts and kind == "solid":
+            pieces, loose = _split_parts(d, deadline)
+            base = _ident(layer, set()) if layer else "part"
+            for k, pd in enumerate(pieces):
+                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
+            if loose is not None:
+                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
+        else:
+            items.append((kind, _ident(layer or "part", used), d))
+    items = _copies(items, deadline)
+    solids = sum(1 for it in items if it[0] == "solid")
+    multi = len(items) > 1 or any(len(it) > 3 for it in items)
+    depth = 1 if multi else 0
+    if multi:
+        w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
+    short = _short_names([it[1] for it in items])
+    names = []
+    for kind, name, d, *rep in items:
+        if kind == "drawing":
+            w.emit(depth, f"drawing {name} {{")
+            _engraving(w, depth + 1, d, stats)
+            w.emit(depth, "}")
+        elif rep:
+            (x0, y0), (dx, dy), n = rep[0]
+            pre = short[name] + "_"
+            nm_x = pre + "pitch_x" if abs(dy) > ROUND_TOL else pre + "pitch"
+            sx = f"k * {params.add(nm_x, dx, times=n)}" \
+                if abs(dx) > ROUND_TOL else None
+            sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
+                if abs(dy) > ROUND_TOL else None
+            w.emit(depth, f"for k in range({n}) {{")
+            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
+            if multi:
+                w.emit(depth + 1, f"Fixed({name})")
+            w.emit(depth, "}")
+            stats.patterns["row of parts"] += 1
+            continue
+        else:
+            _solid(w, params, stats, depth, name, d, short[name] + "_" if solids > 1 else "")
+        names.append(name)
+    if multi and len(names) > 1:
+        w.emit(depth, f"for p in [{', '.join(names)}] {{ Fixed(p) }}")
+    elif multi and names:
+        w.emit(depth, f"Fixed({names[0]})")
+    if multi:
+        w.emit(0, "}")
+    head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
+    head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
+    text = "\n".join(head + params.lines + w.lines) + "\n"
+    return text, w.notes
+
+
+def _short_names(names: list) -> dict:
+    """Each part's name for its params: the last word of its name (``cut_kit_plate``:
+    ``plate``) when no other part's ends so, else the whole name."""
+    last = {n: (n.rsplit("_", 1)[-1] if "_" in n else n) for n in names}
+    count = Counter(last.values())
+    return {n: (v if count[v] == 1 and not v[0].isdigit() else n) for n, v in last.items()}
+
+
+def _copies(items: list, deadline=None) -> list:
+    """``items`` with each run of parts that are copies of one part moved evenly along a line
+    (the washers laid out under a plate) as one item ``(kind, name, first part, (start,
+    step, count))``."""
+    sigs = []
+    for k, (kind, _, d) in enumerate(items):
+        if deadline is not None and k % 64 == 0:
+            deadline.check("finding the copies of a part")
+        sigs.append(_signature(d) if kind == "solid" else None)
+    names = {name for _, name, _ in items}
+    # parts whose numbers round alike, then each checked against the first to EQUAL_TOL
+    buckets: dict = {}
+    for j, sg in enumerate(sigs):
+        if sg is not None:
+            buckets.setdefault(repr(_rounded(sg[0])), []).append(j)
+    out = []
+    taken: set = set()
+    for i, (kind, name, d) in enumerate(items):
+        if i in taken:
+            continue
+        if sigs[i] is None:
+            out.append((kind, name, d))
+            continue
+        group = [j for j in buckets[repr(_rounded(sigs[i][0]))] if j >= i and j not in taken
+                 and _same_sig(sigs[i][0], sigs[j][0])]
+        ln = _line([sigs[j][1] for j in group]) if len(group) >= 2 else None
+        if ln is None:
+            out.append((kind, name, d))
+            sigs_done = set(group)      # no row: each on its own, never grouped again
+            for j in sigs_done:
+                sigs[j] = None if j != i else sigs[j]
+            continue
+        p0, step, n = ln
+        first = min(group, key=lambda j: sigs[j][1])
+        taken.update(group)
+        base = _common_name([items[j][1] for j in group])
+        if base in names:
+            base = _ident(base, names)
+        names.add(base)
+        out.append(("solid", base, items[first][2], (p0, step, n)))
+    return out
+
+
+def _common_name(names: list) -> str:
+    import os
+    pre = os.path.commonprefix(names).rstrip("_0123456789")
+    if pre.startswith("l_") or len(pre) < 2:     # layer `0`'s parts (`l_01`, ...)
+        return "part"
+    return pre
+
+
+def _summary(st: _Stats) -> list[str]:
+    """The header lines saying what was recognised and the tolerances."""
+    shapes = ", ".join(f"{n} {k}" for k, n in sorted(st.kinds.items(), key=lambda x: -x[1]))
+    pats = ", ".join(f"{n} {k}" for k, n in st.patterns.items())
+    out = [f"recognised: {st.in_shapes} of {st.pieces} pieces of outlines and holes in "
+           f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
+    if pats:
+        out.append(f"patterns: {pats}")
+    out.append(f"equal within {EQUAL_TOL:g} mm, numbers rounded within {ROUND_TOL:g} mm; "
+               f"the rest stays exact Line/Arc chains")
+    return out
+
+
+def import_drawing(data: bytes, name: str, infer: bool = False, **options):
+    """``aidl import [--infer]``: :func:`~.program.import_drawing` of ``data`` (``name``: its
+    file name, ``options`` its keywords: ``unit``, ``layer``, ``parts``, ``budget``, ...),
+    the program written by :func:`to_program_inferred` when ``infer``, else piece by piece.
+    Returns ``(program text, notes)``; raises :class:`~.read.DrawingError`."""
+    from .program import import_drawing as _import
+    return _import(data, name, writer=to_program_inferred if infer else None, **options)
