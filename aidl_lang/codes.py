@@ -791,10 +791,13 @@ wall between two cuts, or a cut and the outline, is W0507.
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
-SVG text (write text with `Text(...)`), rational or high-degree splines, hatches,
-dimensions, images (an ELLIPSE, whole or partial, and an SVG elliptical arc are read exactly;
-DXF TEXT and MTEXT are engraved);
-a DXF without `$INSUNITS` is read as millimetres (give `units=`).
+rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text
+(an ELLIPSE, whole or partial, and an SVG elliptical arc are read exactly; DXF TEXT and MTEXT
+and SVG text are engraved); a DXF without `$INSUNITS` is read as millimetres (give `units=`).
+What the import changed is counted too: gaps closed, paths closed where their end crosses
+their start (the overshoot trimmed), small self-crossing loops cut off, open paths on a cut
+role written as through-cuts (`cut`), and an SVG path's data that stops at a number that
+cannot be read (`inf`, `nan`), with its place.
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

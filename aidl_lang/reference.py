@@ -798,7 +798,7 @@ DETAILS: dict[str, str] = {
                  "name or colour (\"red\", \"#0000ff\", a DXF ACI number; lists too): "
                  "engraved shapes are strokes on the part, ignored ones left out; "
                  "roles=\"laser\" is Boxes.py's convention (black and blue cut, green "
-                 "#00ff00 engraved, red annotations ignored). "
+                 "#00ff00 and cyan engraved, red annotations ignored). "
                  "Errors: E0130 (missing or unreadable file), E0131 (an open chain where an "
                  "outline is needed, with its gap; a self-crossing loop), E0132 (an unknown "
                  "layer, or nothing to import: it names what the file holds and why each "

@@ -244,7 +244,8 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                              "ACI number; repeat for more")
     im.add_argument("--roles", default=None, choices=["laser"],
                     help="a preset of roles by colour: laser = Boxes.py's colours (black and "
-                         "blue cut, green engraved, red annotations left out)")
+                         "blue cut, open paths too; green and cyan engraved, red annotations "
+                         "left out)")
     _budget_arg(im)
     _memory_arg(im)
     f = add("fmt", help="format .aidl files in place (canonical layout)")

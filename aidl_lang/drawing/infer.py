@@ -1447,7 +1447,9 @@ def _short_names(names: list) -> dict:
     ``plate``) when no other part's ends so, else the whole name."""
     last = {n: (n.rsplit("_", 1)[-1] if "_" in n else n) for n in names}
     count = Counter(last.values())
-    return {n: (v if count[v] == 1 and not v[0].isdigit() else n) for n, v in last.items()}
+    # (a name that ends in "_", a keyword made a name such as `cut_`, keeps its whole name)
+    return {n: (v if v and count[v] == 1 and not v[0].isdigit() else n)
+            for n, v in last.items()}
 
 
 def _copies(items: list, deadline=None) -> list:

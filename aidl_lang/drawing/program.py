@@ -73,7 +73,7 @@ def _ident(s: str, used: set) -> str:
     return s
 
 
-_KEYWORDS = {"solid", "hole", "drawing", "assembly", "def", "for", "in", "if", "else", "import",
+_KEYWORDS = {"solid", "hole", "cut", "drawing", "assembly", "def", "for", "in", "if", "else", "import",
              "as", "param", "units", "true", "false", "self", "and", "or", "not", "thickness",
              "kerf", "assert", "model"}
 
@@ -137,11 +137,19 @@ def _bezier_runs(segs: list) -> list:
     return out
 
 
+def _length(segs) -> float:
+    """The length (mm) of a chain of segments."""
+    return sum(2 * math.pi * s.radius if isinstance(s, Circle) else s.length for s in segs)
+
+
 class _Writer:
     def __init__(self, deadline=None) -> None:
         self.lines: list[str] = []
         self.notes: list[Note] = []
         self.deadline = deadline
+        self.cut_paths = 0          # open paths written as through-cuts, and their length
+        self.cut_length = 0.0
+        self.crossed = 0            # loops on a cut role that cross themselves: engraved
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -297,27 +305,30 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         inner = depth + 1 if kind == "drawing" else depth + 2
         if kind != "drawing":
             w.emit(depth + 1, "drawing labels {")
-        for i, (text, (x, y), h, rot, anchor, valign) in enumerate(d.texts):
-            deg = round(math.degrees(rot), 9)      # the DXF's degrees (text is not exact)
-            rot_txt = f", rotation={_num(deg)} deg" if deg else ""
-            w.emit(inner, f"t{i + 1} = Text({_string(text)}, position={_pt((x, y))}, "
-                          f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+        _texts(w, inner, d.texts, "t")
         if kind != "drawing":
             w.emit(depth + 1, "}")
-    if d.paths:
-        inner = depth + 1 if kind == "drawing" else depth + 2
+    # a cut role's open paths: through-cuts, never engraved; a loop that crosses itself (a
+    # closed curve in a `cut` is a hole's edge, which must not) stays an engraving, counted
+    cut_paths = [p for p in d.paths if p.crossing is None] \
+        if kind != "drawing" and d.paths_cut else []
+    drawn = [p for p in d.paths if not any(p is q for q in cut_paths)]
+    if cut_paths:
+        w.emit(depth + 1, "cut cuts {")
+        w.cut_paths += len(cut_paths)
+        w.cut_length += sum(_length(p.segments) for p in cut_paths)
+        _paths(w, depth + 2, cut_paths, name)
+        w.emit(depth + 1, "}")
+    if d.paths_cut and kind != "drawing":
+        w.crossed += len(drawn)
+    if drawn:
         if kind != "drawing":
             w.emit(depth + 1, "drawing paths {")
-        for i, p in enumerate(d.paths):
-            closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
-            if not w.chain(inner, p.segments, closed, f"p{i + 1}_"):
-                w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
-                                             f"writes (a whole circle or ellipse inside a "
-                                             f"chain): left out"))
+        _paths(w, depth + 1 if kind == "drawing" else depth + 2, drawn, name)
         if kind != "drawing":
             w.emit(depth + 1, "}")
     e = getattr(d, "engrave", None)
-    if e is not None and not e.empty:         # the shapes whose role is `engrave`
+    if e is not None and (not e.empty or e.texts):     # the shapes whose role is `engrave`
         if kind == "drawing":
             _structure_body(w, depth + 1, e, "g")
         else:
@@ -331,16 +342,31 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         w.emit(depth, "}")
 
 
+def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
+    """The statements of open paths (and loops that cross themselves), ``p1_0 = ...``."""
+    for i, p in enumerate(paths):
+        closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
+        if not w.chain(depth, p.segments, closed, f"p{i + 1}_"):
+            w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
+                                         f"writes (a whole circle or ellipse inside a "
+                                         f"chain): left out"))
+
+
+def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
+    """``Text(...)`` statements of a drawing's texts (:class:`~.read.Drawing`'s ``texts``)."""
+    for i, (text, (x, y), h, rot, anchor, valign) in enumerate(texts):
+        deg = round(math.degrees(rot), 9)      # the file's degrees (text is not exact)
+        rot_txt = f", rotation={_num(deg)} deg" if deg else ""
+        w.emit(depth, f"{prefix}{i + 1} = Text({_string(text)}, position={_pt((x, y))}, "
+                      f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+
+
 def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
     """The statements of an engraving (every loop and path a stroke) at ``depth``."""
     k = 0
     for segs in [o.segments for o in d.outlines] + [[c] for c in d.circles]:
         k += 1
         _loop(w, depth, segs, f"{prefix}{k}_", None)
-    # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
-    import numpy as np
-    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
-        if d.ellipses and kind != "drawing" else []
     for cx, cy, rx, ry, rot in d.ellipses:
         k += 1
         w.emit(depth, f"{prefix}{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
@@ -351,6 +377,7 @@ def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
         if not w.chain(depth, p.segments, closed, f"{prefix}{k}_"):
             w.notes.append(Note("W0130", "an engraved path holds a piece no statement writes "
                                          "(a whole circle or ellipse inside a chain): left out"))
+    _texts(w, depth, d.texts, f"{prefix}t")
 
 
 def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | None]:
@@ -363,7 +390,7 @@ def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | No
     inside = _containers(segs, deadline)
     depth = [len(c) for c in inside]
     roots = [i for i in range(len(loops)) if depth[i] % 2 == 0]
-    parts = {i: Drawing(unit=d.unit) for i in roots}
+    parts = {i: Drawing(unit=d.unit, paths_cut=d.paths_cut) for i in roots}
 
     def put(part: Drawing, loop) -> None:
         (part.outlines if isinstance(loop, Outline) else part.circles).append(loop)
@@ -401,6 +428,8 @@ def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | No
             _engrave_of(owner_of(_probe(p.segments))).paths.append(p)
         for el in e.ellipses:
             _engrave_of(owner_of((el[0], el[1]))).ellipses.append(el)
+        for t in e.texts:
+            _engrave_of(owner_of(t[1])).texts.append(t)
     out = [parts[i] for i in roots]
     left = None if loose.empty and not loose.texts and loose.engrave is None else loose
     return out, left
@@ -465,6 +494,21 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
         _structure(w, 1 if multi else 0, kind, name, d)
     if multi:
         w.emit(0, "}")
+    if w.cut_paths:
+        n = w.cut_paths
+        w.notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` "
+                                     f"({w.cut_length:.6g} mm) on a cut role written as "
+                                     f"through-cuts (`cut cuts {{ ... }}` in {'its' if n == 1 else 'their'} "
+                                     f"part): the laser cuts along {'it' if n == 1 else 'them'}, "
+                                     f"one pass each", "give engrave= (by layer or colour) for "
+                                     "paths that are to be engraved instead"))
+    if w.crossed:
+        n = w.crossed
+        w.notes.append(Note("W0130", f"{n} loop{'s' if n != 1 else ''} of `{source}` on a cut "
+                                     f"role cross{'es' if n == 1 else ''} {'itself' if n == 1 else 'themselves'}: "
+                                     f"engraved (`drawing paths`), neither a hole nor a "
+                                     f"through-cut", "redraw the loop without the crossing in "
+                                     "the drawing program, then import again"))
     return "\n".join(w.lines) + "\n", w.notes
 
 

@@ -14,10 +14,14 @@ circular and elliptical arcs, cubic and quadratic Béziers, and its
 no exact form here (a rational spline, dimensions, images), a DXF entity not in the XY plane
 (extrusion neither +Z nor -Z, or points at different z) and one whose numbers give no shape
 (radius <= 0, zero length, inf, nan, beyond 1e15 mm) is skipped and counted in a
-:class:`Note` (``W0130``, DXF: by type and layer); text is skipped with a note too.
+:class:`Note` (``W0130``, DXF: by type and layer).  Text (DXF ``TEXT``/``MTEXT``, SVG
+``<text>``) is read into the drawing's ``texts``; an SVG path whose data holds a word that is
+no number (``inf``, ``nan``) is read up to it and counted with its place.
 
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
-back to its start is an outline, otherwise a path.  A loop that crosses itself, a selection
+back to its start is an outline, otherwise a path; a chain whose end runs past its start,
+crossing it, is closed at the crossing (:func:`_overshoot`), and a loop's small loops where it
+crosses itself are cut off (:func:`_trim_small_loops`).  A loop that crosses itself, a selection
 that finds nothing and a file past :data:`MAX_ENTITIES` raise :class:`DrawingError` (its
 ``code``, ``message`` and ``hint``: the caller places it at the call).
 
@@ -207,6 +211,9 @@ class Drawing:
     # engraved strokes on the part (Drawing2D: drawn with the texts; `aidl import`: a
     # `drawing engrave` child)
     engrave: "Drawing | None" = None
+    # the open paths have the role `cut` (cut=, roles="laser" named it): `aidl import`
+    # writes them as through-cuts (a `cut` structure), not engravings
+    paths_cut: bool = False
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""
@@ -465,6 +472,137 @@ def _crossing(segs) -> tuple[float, float] | None:
     return None
 
 
+OVERSHOOT = 0.5          # mm: a path whose end runs this far past its start is closed there
+
+
+def _piece_length(s) -> float:
+    return s.length if not isinstance(s, Circle) else 2 * math.pi * s.radius
+
+
+def _split_at(s, x) -> tuple | None:
+    """Segment ``s`` cut at its point ``x``: ``(s from its start to x, s from x to its
+    end)``, each on ``s``'s own carrier (:func:`~aidl_lang.geometry.curves.with_ends`:
+    exact, a line stays a line, an arc an arc, a curve the same curve); None when ``x`` is
+    not on ``s`` between its ends (their lengths do not add up to its own)."""
+    from ..geometry.curves import with_ends
+    try:
+        a, b = with_ends(s, s.start, x), with_ends(s, x, s.end)
+        la, lb, l0 = _piece_length(a), _piece_length(b), _piece_length(s)
+    except Exception:
+        return None
+    if abs(la + lb - l0) > 1e-9 * max(1.0, l0):
+        return None
+    return a, b
+
+
+def _overshoot(segs: list, bound: float):
+    """The closed loop of the open chain ``segs`` whose end crosses its own start (a path
+    drawn past its start so that the beam closes it, as Boxes.py's D-bores end 0.1 mm past
+    theirs): ``(loop, overshoot mm, crossing)``, the loop running from the crossing to the
+    crossing with the bits before and after it trimmed, or None.  The trimmed bits each run
+    at most ``bound`` mm along the chain; the crossing is exact on both pieces' carriers
+    (:func:`~aidl_lang.geometry.curves.crossings`)."""
+    from ..geometry.curves import carrier, crossings
+    if bound <= 0 or len(segs) < 2 or math.dist(segs[0].start, segs[-1].end) > 2 * bound:
+        return None
+    heads, run = [], 0.0            # the pieces whose start lies within bound of the start
+    for i, sg in enumerate(segs):
+        if run > bound:
+            break
+        heads.append((i, run))
+        run += _piece_length(sg)
+    tails, run = [], 0.0
+    for j in range(len(segs) - 1, -1, -1):
+        if run > bound:
+            break
+        tails.append((j, run))
+        run += _piece_length(segs[j])
+    best = None
+    for i, before in heads:
+        for j, after in tails:
+            if j <= i:
+                continue
+            a, b = segs[i], segs[j]
+            try:
+                pts = crossings(carrier(a), carrier(b))
+            except Exception:
+                continue
+            for x in pts:
+                sa, sb = _split_at(a, x), _split_at(b, x)
+                if sa is None or sb is None:
+                    continue
+                cut_head = before + _piece_length(sa[0])
+                cut_tail = after + _piece_length(sb[1])
+                if cut_head > bound or cut_tail > bound or _piece_length(sa[1]) <= JOIN_TOL \
+                        or _piece_length(sb[0]) <= JOIN_TOL:
+                    continue
+                if best is None or cut_head + cut_tail < best[0]:
+                    loop = [sa[1]] + segs[i + 1:j] + [sb[0]]
+                    if j == i + 1 and len(loop) == 2 and _piece_length(loop[0]) + \
+                            _piece_length(loop[1]) <= 4 * JOIN_TOL:
+                        continue
+                    best = (cut_head + cut_tail, loop, cut_tail, x)
+    if best is None:
+        return None
+    return best[1], best[2], best[3]
+
+
+def _box_of(s) -> tuple:
+    if isinstance(s, Line):
+        return (min(s.start[0], s.end[0]), min(s.start[1], s.end[1]),
+                max(s.start[0], s.end[0]), max(s.start[1], s.end[1]))
+    return _segs_box([s])
+
+
+def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int]:
+    """``segs`` (a chain; ``closed``: a loop) without the small loops it makes where it
+    crosses itself and comes back within ``bound`` mm along itself: the pieces between the
+    crossing and its return are cut out, the two crossing pieces cut at the crossing on
+    their own carriers (exact).  A laser cuts such a loop off as a crumb, so the part's edge
+    is the chain without it: Boxes.py draws one at each inner corner with its default
+    ``inner_corners="loop"`` and a burn (kerf) correction, and its D-bores' flat crosses
+    their arc so.  Returns the chain and the number of loops cut out."""
+    from ..geometry.curves import carrier, crossings
+    n_cut = 0
+    out = list(segs)
+    i = 0
+    while i < len(out) - 2:
+        a = out[i]
+        ba = _box_of(a)
+        run = 0.0
+        hit = None
+        for j in range(i + 2, len(out) - (1 if closed and i == 0 else 0)):
+            run += _piece_length(out[j - 1])
+            if run > bound:
+                break
+            b = out[j]
+            bb = _box_of(b)
+            if bb[0] > ba[2] + 1e-9 or ba[0] > bb[2] + 1e-9 or bb[1] > ba[3] + 1e-9 or \
+                    ba[1] > bb[3] + 1e-9:
+                continue
+            try:
+                pts = crossings(carrier(a), carrier(b))
+            except Exception:
+                continue
+            for x in pts:
+                sa, sb = _split_at(a, x), _split_at(b, x)
+                if sa is None or sb is None or _piece_length(sa[0]) <= JOIN_TOL or \
+                        _piece_length(sb[1]) <= JOIN_TOL:
+                    continue
+                if run + _piece_length(sa[1]) + _piece_length(sb[0]) <= bound:
+                    hit = (j, sa[0], sb[1])
+                    break
+            if hit is not None:
+                break
+        if hit is None:
+            i += 1
+            continue
+        j, head, tail = hit
+        out = out[:i] + [head, tail] + out[j + 1:]
+        n_cut += 1
+    return out, n_cut
+
+
 @dataclass
 class _Options:
     """What :func:`read_drawing` asks of the readers beyond the selection: the closing
@@ -597,6 +735,28 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                                    f"`{name}` removed (drawn twice, over one another)",
                           "delete the duplicates in the drawing program to silence this"))
     closed, open_ = _chain(pieces, deadline=opts.deadline)
+    if open_ and opts.close_tol > 0:
+        # a path whose end runs past its start, crossing it: closed at the crossing (before
+        # the gaps below, which would close it across the overshoot into a loop that
+        # crosses itself)
+        shot, keep_open = [], []
+        for segs in open_:
+            o = _overshoot(segs, max(opts.close_tol, OVERSHOOT))
+            if o is None:
+                keep_open.append(segs)
+            else:
+                closed.append(o[0])
+                shot.append((o[1], o[2]))
+        open_ = keep_open
+        if shot:
+            g, at = max(shot)
+            notes.append(Note("W0130", f"{len(shot)} path{'s' if len(shot) > 1 else ''} of "
+                                       f"`{name}` closed where {'its' if len(shot) == 1 else 'their'} "
+                                       f"end crosses {'its' if len(shot) == 1 else 'their'} start "
+                                       f"(the overshoot trimmed: the largest {g:.3g} mm, at "
+                                       f"({at[0]:.6g}, {at[1]:.6g}) mm)",
+                              "give close_tolerance=0 (`aidl import --close-tolerance 0`) to "
+                              "keep them as drawn"))
     if open_ and opts.close_tol > JOIN_TOL:
         gaps: list = []
         more, open_ = _chain(open_, opts.close_tol, gaps, opts.deadline)
@@ -610,11 +770,18 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                                        f"point", "give close_tolerance=0 (`aidl import "
                                                  "--close-tolerance 0`) to keep them open"))
     d = Drawing(circles=circles, ellipses=ellipses, notes=notes, unit=unit)
+    crumbs = 0
     for segs, src in [(c, "") for c in closed] + loops:
         if len(segs) == 1 and isinstance(segs[0], Circle):
             d.circles.append(segs[0])
             continue
         hit = _crossing(segs)
+        if hit is not None and opts.close_tol > 0:
+            # small loops where it crosses itself (a kerf-corrected inner corner) cut off
+            trimmed, k = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)
+            if k and _crossing(trimmed) is None:
+                segs, hit = trimmed, None
+                crumbs += k
         if hit is not None:          # kept as a stroke; an error where an outline is needed
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue
@@ -624,6 +791,14 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             o.segments = [reverse(s) for s in reversed(o.segments)]
         d.outlines.append(o)
     d.outlines.sort(key=lambda o: -abs(o.area))
+    if crumbs:
+        notes.append(Note("W0130", f"{crumbs} small loop{'s' if crumbs > 1 else ''} of `{name}` "
+                                   f"cut off where an outline crosses itself and comes back "
+                                   f"within {max(opts.close_tol, OVERSHOOT):g} mm (a kerf-"
+                                   f"corrected inner corner drawn as a loop): the outline "
+                                   f"runs through the crossing",
+                          "give close_tolerance=0 (`aidl import --close-tolerance 0`) to "
+                          "keep them as drawn"))
     for segs in open_:
         d.paths.append(Path(list(segs)))
     d.circles = [Circle(c.center, c.radius) for c in d.circles]
@@ -1419,6 +1594,8 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
             found.append(el)
         roots = found
     pieces, loops, circles, ellipses = [], [], [], []
+    texts: list = []
+    lost_text: list = []            # "`the words` (why)", each a text not written
     skipped: dict[str, int] = {}
     count = 0
 
@@ -1468,7 +1645,14 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 if not opts.keep(names + names_of(el), rgb, None):
                     continue
             if isinstance(el, S.Text):
-                skipped["text"] = skipped.get("text", 0) + 1
+                if el.values.get("visibility") in ("hidden", "collapse") or \
+                        el.values.get("display") == "none" or not colour_ok(el):
+                    continue
+                got = _svg_text(el, P, scale)
+                if isinstance(got, str):
+                    lost_text.append(got)
+                elif got is not None:
+                    texts.append(got)
                 continue
             if not isinstance(el, S.Shape):
                 continue
@@ -1477,6 +1661,10 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 continue
             if not colour_ok(el):
                 continue
+            if isinstance(el, (S.Polyline, S.Polygon)) and isinstance(
+                    el.values.get("points"), str) and _path_data_error(
+                    el.values["points"].replace("M", "?").replace("m", "?")) is not None:
+                continue        # svgelements would pair the numbers after it wrongly: noted
             count += 1
             if count > opts.max_shapes:
                 raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
@@ -1489,22 +1677,108 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 raise _range_error(ex, f"<{tag}>" + (f" (id `{ident_}`)" if ident_ else ""),
                                    name) from None
     _skip_notes(skipped, notes, name)
-    return _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    if lost_text:
+        n = len(lost_text)
+        notes.append(Note("W0130", f"{n} text{'s' if n != 1 else ''} of `{name}` not "
+                                   f"imported: " + "; ".join(lost_text[:8])
+                                   + (f"; and {n - 8} more" if n > 8 else ""),
+                          "write them with Text(...) in a `drawing` of the part"))
+    d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    d.texts = texts
+    return d
 
 
-def _svg_prescan(data: bytes, name: str, limit: int) -> None:
+# SVG text-anchor and dominant-baseline as Text's anchor and valign (Boxes.py writes
+# text-anchor="left", which CSS does not know, for the start)
+_SVG_ANCHOR = {"start": "start", "left": "start", "middle": "middle", "center": "middle",
+               "end": "end", "right": "end"}
+_SVG_BASELINE = {"hanging": "top", "text-before-edge": "top", "middle": "middle",
+                 "central": "middle", "text-after-edge": "bottom", "ideographic": "bottom",
+                 "alphabetic": "baseline", "auto": "baseline", "baseline": "baseline"}
+CAP_HEIGHT_EM = 0.7      # the cap height of a sans-serif font in em (Helvetica, Arial 0.72)
+
+
+def _svg_text(el, P, scale: float):
+    """An SVG ``<text>`` as ``(text, position mm, cap height mm, rotation rad, anchor,
+    valign)`` (:class:`Drawing`'s ``texts``), a string saying why it is not written (a
+    mirrored or skewed transform, no size), or None when it has no words.  Its size is
+    its ``font-size`` times :data:`CAP_HEIGHT_EM` (Text's size is the cap height: the
+    single-stroke font stands in for the file's font, so the words and where they stand
+    come through, not the letter shapes); ``text-anchor`` and ``dominant-baseline`` give
+    ``anchor`` and ``valign`` (:data:`_SVG_ANCHOR`, :data:`_SVG_BASELINE`)."""
+    words = " ".join((el.text or "").split())
+    if not words:
+        return None
+    shown = words if len(words) <= 40 else words[:37] + "..."
+    m = el.transform
+    a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
+    det = a * d - b * c
+    if not all(math.isfinite(v) for v in (a, b, c, d)) or abs(det) < 1e-12:
+        return f"`{shown}` (its transform has no size)"
+    if det < 0:
+        return f"`{shown}` (mirrored)"
+    sx, sy = math.hypot(a, b), math.hypot(c, d)
+    if abs(a * c + b * d) > 1e-9 * sx * sy or abs(sx - sy) > 1e-9 * max(sx, sy):
+        return f"`{shown}` (skewed or stretched)"
+    try:
+        fs = float(el.font_size)
+    except (TypeError, ValueError):
+        fs = float("nan")
+    if not math.isfinite(fs) or fs <= 0:
+        return f"`{shown}` (no font size)"
+    x, y = float(el.x or 0.0), float(el.y or 0.0)
+    at = P(m.point_in_matrix_space((x, y)))
+    size = _mm(fs * sx * scale * CAP_HEIGHT_EM, "a text height")
+    rot = -math.atan2(b, a)          # the SVG's y axis points down
+    anchor = _SVG_ANCHOR.get(str(el.values.get("text-anchor", "start")).strip().lower(),
+                             "start")
+    valign = _SVG_BASELINE.get(str(el.values.get("dominant-baseline", "auto")).strip().lower(),
+                               "baseline")
+    return (words, at, size, rot, anchor, valign)
+
+
+_PATH_TOKEN = None
+
+
+def _path_data_error(d: str) -> tuple[int, str] | None:
+    """Where the SVG path data ``d`` stops being readable (SVG 1.1 section 8.3.9: command
+    letters, numbers, whitespace and commas): ``(character offset, the word there)``, or
+    None.  svgelements stops reading a path at such a word (``inf``, ``nan``, ``1,5e``) and
+    drops the rest of it without a word; the caller counts it (``W0130``)."""
+    import re
+    global _PATH_TOKEN
+    if _PATH_TOKEN is None:
+        _PATH_TOKEN = re.compile(r"[\s,]+|[MmZzLlHhVvCcSsQqTtAa]|"
+                                 r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+    i, n = 0, len(d)
+    while i < n:
+        m = _PATH_TOKEN.match(d, i)
+        if m is None or m.end() == i:
+            word = re.match(r"[^\s,]{1,20}", d[i:])
+            return i, word.group(0) if word else d[i:i + 1]
+        i = m.end()
+    return None
+
+
+def _svg_prescan(data: bytes, name: str, limit: int) -> list:
     """Count what the SVG ``data`` draws before svgelements reads it, with the standard
     library's expat parser (no entity expansion, no network): a file that declares XML
     entities (``<!ENTITY``: the "billion laughs") is refused, and each ``<use>`` counts as
     the elements it copies, nested ``<use>`` multiplied out, so a few kilobytes of nested
     references that would expand to millions of shapes are refused (``E0304``, at the
     ``<use>`` that copies the most) before they are expanded; more than ``limit`` elements
-    drawn is ``E0130``.  A file expat cannot parse is left to svgelements (its message)."""
+    drawn is ``E0130``.  A file expat cannot parse is left to svgelements (its message).
+
+    Returns the paths (``d``) and polylines or polygons (``points``) whose data holds a word
+    that is no number or command (:func:`_path_data_error`: ``inf``, ``nan``): ``(tag, id or
+    None, line, offset, word, characters left out)`` each, for the ``W0130`` note of
+    :func:`read_drawing`."""
     import xml.parsers.expat as X
     tags: list = []         # per element: local tag, id, href, line
     kids: list = []
     stack: list = []
     ids: dict = {}
+    bad_data: list = []
 
     class _Refused(Exception):
         pass
@@ -1520,6 +1794,15 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> None:
             kids[stack[-1]].append(i)
         if attrs.get("id") is not None:
             ids.setdefault(attrs["id"], i)
+        data_attr = "d" if local == "path" else "points" if local in ("polyline", "polygon") \
+            else None
+        if data_attr is not None and attrs.get(data_attr):
+            text = attrs[data_attr]
+            err = _path_data_error(text if data_attr == "d" else
+                                   text.replace("M", "?").replace("m", "?"))
+            if err is not None:
+                bad_data.append((local, attrs.get("id"), p.CurrentLineNumber, err[0], err[1],
+                                 len(text) - err[0]))
         stack.append(i)
         if len(stack) > 500:
             raise DrawingError("E0130", f"`{name}` nests its elements more than 500 deep",
@@ -1546,7 +1829,7 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> None:
         raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
                            "select fewer with id= or split the drawing") from None
     except Exception:
-        return                  # not XML: svgelements says so
+        return []               # not XML: svgelements says so
     cap = 10 * limit + 1
     weight: dict = {}
     busy: set = set()
@@ -1595,6 +1878,24 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> None:
                                line)
         raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
                            "select fewer with id= or split the drawing")
+    return bad_data
+
+
+def _bad_data_note(bad: list, name: str) -> Note:
+    """The ``W0130`` note of the paths whose data stops at a word that is no number
+    (:func:`_svg_prescan`), each with its place."""
+    where = "; ".join(f"<{tag}>" + (f" (id `{i}`)" if i else "") + f" at line {ln}, "
+                      f"character {off + 1}: `{w}` (" + (f"{left} characters left out"
+                                                         if tag == "path" else
+                                                         "the whole shape left out") + ")"
+                      for tag, i, ln, off, w, left in bad[:5])
+    more = f"; and {len(bad) - 5} more" if len(bad) > 5 else ""
+    n = len(bad)
+    return Note("W0130", f"{n} path{'s' if n != 1 else ''} of `{name}` "
+                         f"{'holds' if n == 1 else 'hold'} a number that cannot be read: a "
+                         f"path's data is read up to it: {where}{more}",
+                "write a finite number there (inf and nan are no coordinates), or save the "
+                "drawing again from its program")
 
 
 def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> None:
@@ -1694,8 +1995,9 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
 
 # ------------------------------------------------------------------ roles
 # roles="laser": the colours Boxes.py (boxes/Color.py: OUTER_CUT black, INNER_CUT blue,
-# ANNOTATIONS red, ETCHING green) and the laser programs that read its SVGs use
-ROLE_PRESETS = {"laser": {"cut": ["#000000", "#0000ff"], "engrave": ["#00ff00"],
+# ANNOTATIONS red, ETCHING green, ETCHING_DEEP cyan) and the laser programs that read its
+# SVGs use (docs/import.md)
+ROLE_PRESETS = {"laser": {"cut": ["#000000", "#0000ff"], "engrave": ["#00ff00", "#00ffff"],
                           "ignore": ["#ff0000"]}}
 ROLES = ("cut", "engrave", "ignore")
 
@@ -1801,16 +2103,20 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
         raise DrawingError("E0130", f"close_tolerance must be between 0 and 10 mm, not "
                                     f"{close_tolerance!r}",
                            f"the default is {CLOSE_TOL:g} mm; 0 closes only what meets")
+    bad_data = []
     if name.lower().endswith(".svg"):
-        _svg_prescan(data, name, max_shapes or MAX_ENTITIES)
+        bad_data = _svg_prescan(data, name, max_shapes or MAX_ENTITIES)
     role = _role_of(cut, engrave, ignore, roles)
     base = _Options(tol, deadline, None, max_shapes or MAX_ENTITIES)
     if role is None:
         token = _OPTS.set(base)
         try:
-            return _read_one(data, name, layer, color, ident, unit, keep_text)
+            d = _read_one(data, name, layer, color, ident, unit, keep_text)
         finally:
             _OPTS.reset(token)
+        if bad_data:
+            d.notes.append(_bad_data_note(bad_data, name))
+        return d
     ignored: dict = {}
 
     def keep_for(want):
@@ -1831,9 +2137,12 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
         finally:
             _OPTS.reset(token)
     d, e = out
+    d.paths_cut = True
     if not e.empty or e.texts:
         d.engrave = e
         d.notes += [n for n in e.notes if n.message not in {m.message for m in d.notes}]
+    if bad_data:
+        d.notes.append(_bad_data_note(bad_data, name))
     if ignored:
         n = sum(ignored.values())
         d.notes.append(Note("W0130", f"{n} shape{'s' if n > 1 else ''} of `{name}` left out by "
