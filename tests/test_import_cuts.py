@@ -257,3 +257,42 @@ def test_a_cut_loop_that_crosses_itself_stays_an_engraving():
     assert any(n.message == "1 loop of `bow.svg` on a cut role crosses itself: engraved "
                             "(`drawing paths`), neither a hole nor a through-cut" for n in notes)
     assert aidl_lang.compile(source=text, path="bow.aidl").ok
+
+
+# ------------------------------------------------------------------ Drawing2D in a program
+DRAWN = """units mm
+solid panel {
+    outline = Drawing2D("flex.svg", cut="rgb(0,0,0)", engrave="rgb(0,255,0)",
+                        ignore=["rgb(0,0,255)", "rgb(255,0,0)"])
+    cut slits {
+        d = Drawing2D("flex.svg", cut="rgb(0,0,255)", ignore=["rgb(0,0,0)", "rgb(0,255,0)",
+                      "rgb(255,0,0)"])
+    }
+}
+"""
+
+
+def test_a_drawing2d_in_a_cut_cuts_its_open_paths_and_the_engrave_role_is_engraved(tmp_path):
+    """``Drawing2D`` reads the same file as ``aidl import``: inside a ``cut`` its open paths
+    are through-cuts (each slit one cut stroke, exactly where the file has it, drawing y
+    down); beside it in the solid the engrave role's shapes are engraved on the part (before,
+    they were dropped without a word); in the solid itself an open chain stays E0131, whose
+    hint names the `cut`."""
+    svg = flex_svg().replace(b"</g>", f'<path d="M 30 3 H 70" stroke="{GREEN}" />\n</g>'.encode())
+    (tmp_path / "flex.svg").write_bytes(svg)
+    res = aidl_lang.compile(source=DRAWN, path=str(tmp_path / "panel.aidl"))
+    assert res.ok, [d.message for d in res.diagnostics if d.severity == "error"]
+    out = res.output
+    cuts = sorted((round(s.segments[0].start[0], 9), round(-s.segments[0].start[1], 9),
+                   round(-s.segments[0].end[1], 9)) for s in out.engrave if s.style == "cut")
+    assert cuts == sorted((x, y0, y1) for x, y0, y1 in SLITS)
+    assert all(len(s.segments) == 1 for s in out.engrave if s.style == "cut")
+    marks = [s for s in out.engrave if s.style == "drawing"]
+    assert len(marks) == 1 and marks[0].segments[0].start == pytest.approx((30.0, -3.0))
+    assert [round(p.area, 6) for p in out.parts] == [6000.0]
+    (tmp_path / "open.aidl").write_text('units mm\nsolid panel {\n    d = Drawing2D("flex.svg", '
+                                        'roles="laser")\n}\n')
+    bad = aidl_lang.compile(source=(tmp_path / "open.aidl").read_text(),
+                            path=str(tmp_path / "open.aidl"))
+    err = [d for d in bad.diagnostics if d.severity == "error"]
+    assert [d.code for d in err] == ["E0131"] and "inside a `cut`" in err[0].hint

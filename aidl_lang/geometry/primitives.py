@@ -1055,6 +1055,9 @@ def _build_Drawing2D(ctx, g, a):
             ctx.model.holds += 1
     loops, paths, circles, outlines = local_parts(d, rot)
     g.data.update(loops=loops, paths=paths, file=a["file"], rotation=rot)
+    if ctx.struct.kind == "cut":
+        # its open paths are cut through the part (issue 59)
+        g.data["through_paths"] = len(paths)
     g.closed = True
     circ = []
     eqs = []
@@ -1085,6 +1088,7 @@ def _build_Drawing2D(ctx, g, a):
                        part_of=g)
         ps.append(sg)
     g.data["path_parts"] = ps
+    n_file_paths = len(paths)
     e = getattr(d, "engrave", None)
     if e is not None and not e.empty:
         # the shapes of the role `engrave` (engrave=, roles="laser"): strokes on the part,
@@ -1102,7 +1106,8 @@ def _build_Drawing2D(ctx, g, a):
         # frame, turned with it; they move, turn and mirror as its open paths do
         from .drawing2d import text_paths
         g.data["paths"] = list(paths) + text_paths(d.texts, rot)
-        g.data["text_paths"] = len(g.data["paths"]) - len(paths)
+    # the paths from here on (the engrave role's shapes, the texts) are engraved on a part
+    g.data["engraved_from"] = n_file_paths
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}

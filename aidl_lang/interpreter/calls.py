@@ -395,7 +395,14 @@ class Calls:
             for n in d.notes:
                 self.sink.warning(n.code, n.message, at, hint=n.hint or None)
         if s.kind != "drawing" and not conv.get("construction") and d.paths:
-            p = d.paths[0]
+            # the open chains of a Drawing2D in a `cut` are through-cuts (issue 59); a loop
+            # that crosses itself is not.  In a solid an open chain stays E0131: a gap in an
+            # outline (a slip) must not become a cut silently
+            through = s.kind == "cut"
+            p = next((q for q in d.paths if q.crossing is not None), None) if through \
+                else d.paths[0]
+            if p is None:
+                return d
             if p.crossing is not None:
                 x, y = p.crossing
                 raise EvalError("E0131", f"a loop of `{raw}` crosses itself at ({x:.6g}, "
@@ -411,9 +418,10 @@ class Calls:
                             f"(drawing coordinates)", at,
                             hint="close the outline in the drawing, raise close_tolerance= "
                                  f"above {gap:.3g} mm if the gap is a slip, select only closed "
-                                 "outlines with layer=/id= (or engrave= them), or put the "
+                                 "outlines with layer=/id= (or engrave= them), put the "
                                  "Drawing2D in a `drawing` (engraving) or give it "
-                                 "construction=true")
+                                 "construction=true, or, for slits the laser cuts along, read "
+                                 "them with a second Drawing2D inside a `cut` of the solid")
         return d
 
     # -- used by primitives.build

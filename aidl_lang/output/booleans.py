@@ -581,9 +581,12 @@ class Renderer:
                 if f is not None and not f.is_empty():
                     faces.append(f)
                     out.own.setdefault(s, []).append((g, f))
-                if g.kind == "Drawing2D" and g.data.get("text_paths"):
-                    # its DXF text: engraved on the part, as a Text in a solid is
-                    for segs in self.drawing2d(g)[1][-g.data["text_paths"]:]:
+                if g.kind == "Drawing2D" and g.data.get("through_paths"):
+                    self._through_of_drawing(g)
+                if g.kind == "Drawing2D" and len(g.data["paths"]) > g.data["engraved_from"]:
+                    # its engrave role's shapes and its text: engraved on the part, as a Text
+                    # in a solid is
+                    for segs in self.drawing2d(g)[1][g.data["engraved_from"]:]:
                         for seg in segs:
                             self._stroke_segment(seg, "drawing", g, out)
         if open_curves:
@@ -868,6 +871,8 @@ class Renderer:
                 if segs:
                     self.through_paths.append((g, segs))
                 continue
+            if g.kind == "Drawing2D" and g.data.get("through_paths"):
+                self._through_of_drawing(g)
             f = self.face(g, c)
             if f is not None and not f.is_empty():
                 faces.append(f)
@@ -876,6 +881,13 @@ class Renderer:
             faces += self.cut_faces(k, out)
             self.current = c
         return faces
+
+    def _through_of_drawing(self, g: Geometry) -> None:
+        """The open paths of ``Drawing2D`` ``g`` that are through-cuts (its file's open chains
+        on the cut role in a solid, every open chain in a ``cut``) to :attr:`through_paths`."""
+        for segs in self.drawing2d(g)[1][:g.data["through_paths"]]:
+            if segs:
+                self.through_paths.append((g, segs))
 
     def slit(self, s: Structure, shp: mf.CrossSection, paths: list, out: Drawing):
         """Part ``s`` (its final shape ``shp``) cut along its through-cuts ``paths``
