@@ -290,6 +290,14 @@ def test_a_drawing2d_in_a_cut_cuts_its_open_paths_and_the_engrave_role_is_engrav
     marks = [s for s in out.engrave if s.style == "drawing"]
     assert len(marks) == 1 and marks[0].segments[0].start == pytest.approx((30.0, -3.0))
     assert [round(p.area, 6) for p in out.parts] == [6000.0]
+    # what ignore= names is left out as asked: no W0130 about it (a warning on a design as
+    # meant); a preset's ignored colour is still counted
+    assert not [d for d in res.diagnostics if d.code == "W0130"], \
+        [d.message for d in res.diagnostics]
+    preset = read_drawing(flex_svg(), "flex.svg", roles="laser")
+    assert any("left out by their role: red (1)" in n.message for n in preset.notes)
+    asked = read_drawing(flex_svg(), "flex.svg", roles="laser", ignore="rgb(255,0,0)")
+    assert not any("left out by their role" in n.message for n in asked.notes)
     (tmp_path / "open.aidl").write_text('units mm\nsolid panel {\n    d = Drawing2D("flex.svg", '
                                         'roles="laser")\n}\n')
     bad = aidl_lang.compile(source=(tmp_path / "open.aidl").read_text(),

@@ -2118,11 +2118,15 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
             d.notes.append(_bad_data_note(bad_data, name))
         return d
     ignored: dict = {}
+    # what `ignore=` itself names is left out as asked, unsaid (a warning on a design exactly
+    # as meant is noise a model obeys); what a preset or an unnamed colour leaves out is counted
+    named = _role_of(None, None, ignore, None) if ignore is not None else None
 
     def keep_for(want):
         def keep(layers, rgb, aci) -> bool:
             r = role(layers, rgb, aci)
-            if want == "cut" and r == "ignore":
+            if want == "cut" and r == "ignore" and (
+                    named is None or named(layers, rgb, aci) != "ignore"):
                 what = (f"layer `{layers[0]}`" if layers and name.lower().endswith(".dxf")
                         else _colour_name(rgb))
                 ignored[what] = ignored.get(what, 0) + 1
