@@ -11,7 +11,7 @@ parse; the name check; the interpretation; the solve; the extent, assertion and 
 and the booleans (``after_solve`` without the shape checks); the shape checks; and the whole
 ``aidl check`` command (the freedom count, the redundancy search, the argument parsing and
 the printing).  ``PYTHONHASHSEED=0``, one BLAS thread, bytecode compiled first, run from an
-empty folder, as ``benchmarks/issue38.py``; the counts repeat to 0.1 M.  The issue-38 note in
+empty folder, as ``benchmarks/compare_trees.py``; the counts repeat to 0.1 M.  The issue-38 note in
 docs/dev/performance.md quotes them.
 """
 from __future__ import annotations

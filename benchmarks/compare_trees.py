@@ -1,8 +1,8 @@
-"""Issue 38's figures, side by side with an older tree (paired runs, CPU time and callgrind):
+"""A compile's figures side by side with an older tree (issue 38; paired runs, CPU time and callgrind):
 
-    .venv/bin/python benchmarks/issue38.py /work/old-75922ec           # every figure
-    .venv/bin/python benchmarks/issue38.py OLD --only plate400,telephone --rounds 7
-    .venv/bin/python benchmarks/issue38.py OLD --big                   # + 10,000 structures
+    .venv/bin/python benchmarks/compare_trees.py /work/old-75922ec           # every figure
+    .venv/bin/python benchmarks/compare_trees.py OLD --only plate400,telephone --rounds 7
+    .venv/bin/python benchmarks/compare_trees.py OLD --big                   # + 10,000 structures
 
 Each tree runs its own interpreter: ``TREE/.venv/bin/python`` when there is one (an editable
 install of that tree), else this interpreter with ``PYTHONPATH=TREE``.  Runs alternate between
@@ -254,7 +254,7 @@ def main() -> None:
     trees = (new, old)
     only = set(a.only.split(",")) if a.only else None
     want = lambda name: only is None or name in only  # noqa: E731
-    tmp = tempfile.mkdtemp(prefix="issue38-")
+    tmp = tempfile.mkdtemp(prefix="compare-trees-")
     files = {"plate400": one_hole_plate(400), "s1000": structures(1000),
              "s10000": structures(10000), "flood": flood(), "holes900": plate(900),
              "holes5000": plate(5000)}

@@ -1,7 +1,7 @@
-"""Issue 26's reproducers, timed through ``aidl check`` (a fresh process each):
+"""Large inputs (issue 26's reproducers), timed through ``aidl check`` (a fresh process each):
 
-    python benchmarks/issue26.py                  # this checkout
-    PYTHONPATH=/path/to/other/checkout python benchmarks/issue26.py   # another one (before)
+    python benchmarks/large_inputs.py                  # this checkout
+    PYTHONPATH=/path/to/other/checkout python benchmarks/large_inputs.py   # another one (before)
 
 1 000 concentric circles in one solid; 5 000 separate circles in one 250 kB file; a
 LinearPattern of 5 000 and 10 000 overlapping circles (a diagonal chain); 5 000 lines in

@@ -200,7 +200,7 @@ def _apply(src, d, model):
 def _programs():
     out = [(name, src) for name, src in FIXTURES.items()]
     for p in EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl")) \
-            + sorted((ROOT / "benchmarks" / "model_runs").glob("*/*/*.aidl")):
+            + sorted((ROOT / "data" / "model_runs").glob("*/*/*.aidl")):
         out.append((p.name, p.read_text()))
     return out
 
