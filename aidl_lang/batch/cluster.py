@@ -38,17 +38,17 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
     except ImportError as e:
         raise MissingDask(f"--scheduler needs Dask ({e.name} is missing): "
                           "pip install 'aidl-lang[dask]'") from None
+    import signal
+    import threading
     tasks = list(tasks)
     cluster = None
+    on_main = threading.current_thread() is threading.main_thread()
     if address == "local":
         import logging
-        import signal
-        import threading
         # Ctrl-C goes to the whole foreground process group: the worker processes ignore it
         # (a disposition their exec keeps), so only this process stops, with one line
         # (batch/command.py), as the local pool's workers do (child.py)
-        main = threading.current_thread() is threading.main_thread()
-        before = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+        before = signal.signal(signal.SIGINT, signal.SIG_IGN) if on_main else None
         try:
             # the scheduler's HTTP server always starts; on its default port 8787, taken by
             # any other Dask on the machine, it printed a four-line UserWarning: a free
@@ -56,7 +56,7 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
             cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                    dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR)
         finally:
-            if main:
+            if on_main:
                 signal.signal(signal.SIGINT, before)
         client = Client(cluster)
     else:
@@ -64,6 +64,15 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
             client = Client(address, timeout="20s")
         except OSError as e:
             raise OSError(f"cannot reach the Dask scheduler at {address}: {e}") from None
+    if on_main:
+        # Ctrl-C mutes Dask's loggers before the KeyboardInterrupt is raised: it is raised
+        # inside distributed's `sync`, whose cancel callback runs on the event loop's thread
+        # at once and could log its traceback before the handler below muted them (seen
+        # under load)
+        def interrupted(signum, frame):
+            _quiet_shutdown()
+            raise KeyboardInterrupt
+        before_int = signal.signal(signal.SIGINT, interrupted)
     try:
         futures = [client.submit(run_task, t, cfg, timeout, pure=False,
                                  key=f"aidl-{i}-{t['sha256'][:12]}")
@@ -83,6 +92,8 @@ def run_dask(tasks: Iterable[dict], cfg: dict, address: str, workers: int, timeo
             client.cancel(futures)
             raise
     finally:
+        if on_main:
+            signal.signal(signal.SIGINT, before_int)
         client.close()
         if cluster is not None:
             cluster.close()
