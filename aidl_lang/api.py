@@ -15,7 +15,7 @@ never an exception: it is a :class:`~aidl_lang.diagnostics.Diagnostic` in
 :attr:`Result.diagnostics` and ``ok`` is False.  Exceptions are kept for mistakes in the
 *call* (:class:`TypeError`, :class:`ValueError`), for asking a failed result for geometry
 (:class:`NotCompiled`), and for outputs that cannot be made or written
-(:class:`~aidl_lang.output.part.OutputError`, :class:`~aidl_lang.output.write.WriteError`).
+(:class:`~aidl_lang.output.part.part.OutputError`, :class:`~aidl_lang.output.writers.write.WriteError`).
 
 Units: the model is solved in millimetres and radians.  :attr:`Result.parts` and
 :meth:`Result.to_svg`/``write`` are in millimetres; :attr:`Result.values` are given in the
@@ -39,10 +39,10 @@ __all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "W
 
 
 def __getattr__(name: str):
-    # WriteError lives with the output-file rules (aidl_lang.output.write); imported on first
+    # WriteError lives with the output-file rules (aidl_lang.output.writers.write); imported on first
     # use, as the output package loads Manifold (0.3 s) and this facade stays quick to import
     if name == "WriteError":
-        from .output.write import WriteError
+        from .output.writers.write import WriteError
         return WriteError
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -130,8 +130,8 @@ class Layout:
         DXF and PNG the cuts as laid out (offset by half the kerf the layout was made with),
         STL, 3MF, STEP and GLB the designed parts placed as on the sheet.  ``options``: those
         of :meth:`Result.encode` but ``assembled``.  Raises :class:`ValueError` for an unknown
-        format, :class:`~aidl_lang.output.part.MissingDependency` and
-        :class:`~aidl_lang.output.part.OutputError`."""
+        format, :class:`~aidl_lang.output.part.part.MissingDependency` and
+        :class:`~aidl_lang.output.part.part.OutputError`."""
         from .output import CUT_FORMATS, FORMATS, Options, encode
         suffix = "." + fmt.lower().lstrip(".")
         if suffix not in FORMATS:
@@ -316,9 +316,9 @@ class Result:
     # ------------------------------------------------------------------ outputs
     @property
     def output(self):
-        """The exact output model (:class:`~aidl_lang.output.part.Output`: lines, arcs and
+        """The exact output model (:class:`~aidl_lang.output.part.part.Output`: lines, arcs and
         circles per part, mm) every writer reads.  Raises :class:`NotCompiled`, and
-        :class:`~aidl_lang.output.part.OutputError` when the outlines cannot be recovered
+        :class:`~aidl_lang.output.part.part.OutputError` when the outlines cannot be recovered
         within bounded work (thousands of curves on top of each other)."""
         self._need("output")
         if self.compiled.drawing is None:
@@ -334,14 +334,14 @@ class Result:
         each part its outline's kind, size and box, each opening's kind (circle ``d``, slot
         ``w`` x ``l``, rectangle, polygon ``n``, outline), centre and size, its engravings
         (text with its string) and place, its copies and symmetries; mm and degrees
-        (:func:`aidl_lang.output.describe.describe`).  Raises :class:`NotCompiled`."""
-        from .output.describe import describe
+        (:func:`aidl_lang.output.checks.describe.describe`).  Raises :class:`NotCompiled`."""
+        from .output.checks.describe import describe
         return describe(self.output)
 
     def describe(self) -> str:
         """:attr:`description` as compact text, one line per feature, e.g. ``circle d=6 at
         (10, 5)`` (``aidl check --describe``).  Raises :class:`NotCompiled`."""
-        from .output.describe import describe_text
+        from .output.checks.describe import describe_text
         return describe_text(self.description)
 
     @property
@@ -365,8 +365,8 @@ class Result:
         3D formats with every part placed by its ``Place``, PNG a picture of that; ``page``:
         the PDF tiled over paper, ``"A4"``, ``"Letter-landscape"``, ...).  Raises
         :class:`ValueError` for an unknown format, :class:`NotCompiled`,
-        :class:`~aidl_lang.output.part.MissingDependency` (a format's library is not
-        installed) and :class:`~aidl_lang.output.part.OutputError` (also a kerf larger than a
+        :class:`~aidl_lang.output.part.part.MissingDependency` (a format's library is not
+        installed) and :class:`~aidl_lang.output.part.part.OutputError` (also a kerf larger than a
         feature, naming the part)."""
         from .output import CUT_FORMATS, FORMATS, Options, encode, for_cutting
         suffix = "." + fmt.lower().lstrip(".")
@@ -387,11 +387,11 @@ class Result:
         the cuts offset by half the kerf (``kerf`` mm as for :meth:`encode`: None for the
         program's own).  ``nest_time``: seconds the nesting may spend improving its first
         packing, added to the program's wall-time budget, which bounds the nesting.  Raises
-        :class:`NotCompiled`, :class:`~aidl_lang.output.part.MissingDependency` (no
-        ``spyrrow``) and :class:`~aidl_lang.output.part.OutputError` (a part larger than the
+        :class:`NotCompiled`, :class:`~aidl_lang.output.part.part.MissingDependency` (no
+        ``spyrrow``) and :class:`~aidl_lang.output.part.part.OutputError` (a part larger than the
         sheet, a kerf larger than a feature, a nesting that would end past the budget)."""
         from .output import for_cutting
-        from .output.layout import place, plan
+        from .output.fabrication.layout import place, plan
         deadline = self.compiled.deadline
         if deadline is not None and nest_time:
             from .limits import Deadline
@@ -424,10 +424,10 @@ class Result:
         never a directory, a symlink refused unless ``follow_symlinks`` (then written
         through), a read-only file refused unless ``force``, a FIFO, device, socket or
         directory always refused and left as it is
-        (:class:`~aidl_lang.output.write.NotRegularFile`), written to a temporary file
+        (:class:`~aidl_lang.output.writers.write.NotRegularFile`), written to a temporary file
         beside it and renamed, a new file gets the umask's permissions.  Returns the path.
-        Raises :class:`~aidl_lang.output.write.WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
-        from .output.write import check_output_path, write_atomic
+        Raises :class:`~aidl_lang.output.writers.write.WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
+        from .output.writers.write import check_output_path, write_atomic
         out = check_output_path(path, self.path, follow_symlinks, force)
         data = self.encode(out.suffix, kerf, **options)
         write_atomic(out, data, follow_symlinks)

@@ -17,7 +17,7 @@ close it by opening once and checking what was opened:
   device never hangs the reader, ``/dev/zero`` is refused before a byte is read).
 * writing a file in a folder given by its descriptor (a temporary file renamed over the
   name, never over a link, a FIFO or a device) is
-  :func:`aidl_lang.output.write.write_in_dir`, with every other write.
+  :func:`aidl_lang.output.writers.write.write_in_dir`, with every other write.
 * :func:`open_append` opens a journal for appending, refusing a link and anything but a
   regular file.
 

@@ -21,7 +21,7 @@ from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, 
 from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
-from .output.booleans import Drawing, render_model
+from .output.part.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
 from .solver import SolveResult, solve
 from .typecheck import check
@@ -110,7 +110,7 @@ def out_of_memory_sink(path: str, source: str | None, stage: str | None = None,
 
 def output_error_sink(path: str, source: str | None, error) -> DiagnosticSink:
     """A sink holding the one located ``E0304`` of an exact-outline recovery or a writer that
-    refused its input (:class:`~aidl_lang.output.part.OutputError`: bounded work ran out,
+    refused its input (:class:`~aidl_lang.output.part.part.OutputError`: bounded work ran out,
     thousands of curves drawn on top of each other), for a front end that reads the output
     after the compile (``aidl parts``, ``--describe``, the MCP tools): at the structure the
     error names when it has one, else at the program's first structure."""

@@ -6,7 +6,7 @@ cross-halved at their 400 crossings, each slat placed with ``Place``):
     python benchmarks/assembly.py --runs 5 --slats 10
 
 Printed per model: the compile without the fit check (parse, solve, booleans, the 2D checks),
-the fit check alone (:func:`aidl_lang.output.assembly.fit`: the placed solids, every pair
+the fit check alone (:func:`aidl_lang.output.fabrication.assembly.fit`: the placed solids, every pair
 whose boxes meet intersected with Manifold), the assembled 3MF and GLB writers, and the
 warnings found (none for both: the box's fingers and the crate's slots fit).  Wall-clock
 seconds on a shared machine: compare side by side, not across days.
@@ -55,7 +55,7 @@ def egg_crate(n: int = 20, pitch: float = 20.0, t: float = 3.0, h: float = 30.0)
 def measure(name: str, src: str, runs: int) -> None:
     import aidl_lang
     from aidl_lang.output import Options, build, encode
-    from aidl_lang.output.assembly import extrude, fit, normals_of
+    from aidl_lang.output.fabrication.assembly import extrude, fit, normals_of
     from aidl_lang.output import checks
     t_compile, t_fit, t_3mf, t_glb = [], [], [], []
     saved = checks._check_fit

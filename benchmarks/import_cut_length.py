@@ -148,7 +148,7 @@ def program_figures(text: str, name: str) -> tuple[bool, float, float, int]:
     """(compiled, cut mm, engraved mm, Text statements) of an imported program: compiled,
     built, written as DXF and that DXF re-read with ezdxf."""
     import ezdxf
-    from aidl_lang.output.part import build
+    from aidl_lang.output.part.part import build
     from aidl_lang.output.writers.dxf import to_dxf
     n_text = len(re.findall(r"= Text\(", text))
     c = compile_source(text, name)

@@ -20,7 +20,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from aidl_lang.output import build  # noqa: E402
-from aidl_lang.output.layout import compensate, place, plan  # noqa: E402
+from aidl_lang.output.fabrication.layout import compensate, place, plan  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 
 SHAPES = [

@@ -10,7 +10,7 @@ the order a move runs them: ``solver`` (the :class:`~aidl_lang.solver.Solver`'s 
 rows, the pinned geometry and its values; Newton itself is a few ms), ``render`` (the booleans, :func:`render_model`), ``chords`` (the grids of the
 booleans' chords and of their segments' exact ends, which the exact outlines match the
 result's edges and vertices against, built once per move, on the first ``build``), ``build``
-(the exact outlines put back on the curves, :func:`aidl_lang.output.part.build`, the chord
+(the exact outlines put back on the curves, :func:`aidl_lang.output.part.part.build`, the chord
 grids already built), ``svg`` (the
 writer on that output), ``check`` (:func:`check_drawing`, what ``update_checks`` runs
 after the picture), ``topology`` (the rest of ``update_checks``: the drawing's
@@ -39,9 +39,9 @@ from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.interp import Interpreter
 from aidl_lang.limits import DEFAULT_BUDGET
 from aidl_lang.output import to_svg
-from aidl_lang.output.booleans import render_model
+from aidl_lang.output.part.booleans import render_model
 from aidl_lang.output.checks import check_drawing, topology
-from aidl_lang.output.part import build
+from aidl_lang.output.part.part import build
 from aidl_lang.limits import Deadline
 from aidl_lang.pipeline import after_solve
 from aidl_lang.serve.session import Session

@@ -255,12 +255,12 @@ def test_check_values_unknown_name_and_errors():
 
 
 def test_the_facade_holds_only_the_promised_api():
-    """Issue 37, "The code": the output-file safety code lives in aidl_lang.output.write and
+    """Issue 37, "The code": the output-file safety code lives in aidl_lang.output.writers.write and
     the customizer's sliders in aidl_lang.serve.params; the facade re-exports only what
     docs/api.md promises (WriteError, loaded on first use: the output package is heavy)."""
     import aidl_lang
     import aidl_lang.api as api
-    from aidl_lang.output import write
+    from aidl_lang.output.writers import write
     from aidl_lang.serve import params
     for gone in ("stage", "write_atomic", "planted_link", "check_output_path", "Param",
                  "declared_params", "default_span"):

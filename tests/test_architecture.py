@@ -19,7 +19,7 @@ def test_import_contract_is_kept():
     r = subprocess.run([str(exe)], cwd=ROOT, capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr
     assert "0 broken" in r.stdout
-    assert r.stdout.count(" KEPT") >= 4
+    assert r.stdout.count(" KEPT") >= 5          # the output stages have their own contract
 
 
 def _modules():

@@ -117,7 +117,7 @@ assembly kit {
     assert np.allclose(M @ [20, 20, 0, 1], [80, 20, 10, 1], atol=1e-12, rtol=0)
     assert np.allclose(M @ [0, 0, 2, 1], [100, 0, 12, 1], atol=1e-12, rtol=0)
     out = build(c.drawing)
-    from aidl_lang.output.assembly import solids
+    from aidl_lang.output.fabrication.assembly import solids
     ((name, m),) = solids(out)
     assert name == "kit.pair.a" and np.allclose(m.bounding_box(), (80, 0, 10, 100, 20, 12),
                                                 atol=1e-9, rtol=0)
@@ -139,7 +139,7 @@ def test_3mf_one_named_object_per_panel_on_the_design_numbers(box):
 
 def test_glb_named_nodes_in_the_flat_views_colours(box):
     import trimesh
-    from aidl_lang.output.part import PALETTE
+    from aidl_lang.output.part.part import PALETTE
     sc = trimesh.load(io.BytesIO(box.encode("glb", assembled=True)), file_type="glb")
     named = {}
     for node in sc.graph.nodes_geometry:

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import aidl_lang
-from aidl_lang.output import assembly
+from aidl_lang.output.fabrication import assembly
 
 ROOT = Path(__file__).resolve().parent.parent
 T, C = 3.0, 0.3

@@ -586,12 +586,12 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
     """box_pairs (a grid over the centres, large boxes apart; or, for few boxes, all
     pairs) gives exactly the pairs that the all-pairs reference gives."""
     import numpy as np
-    from aidl_lang.output.nearby import box_pairs
+    from aidl_lang.output.part.nearby import box_pairs
     B = np.array([(x, y, x + w, y + h) for x, y, w, h in boxes]).reshape(-1, 4)
     want = {(i, j) for i in range(len(B)) for j in range(i + 1, len(B))
             if B[i, 0] - pad <= B[j, 2] + pad and B[j, 0] - pad <= B[i, 2] + pad
             and B[i, 1] - pad <= B[j, 3] + pad and B[j, 1] - pad <= B[i, 3] + pad}
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the grid
         old, nearby.SMALL_BOXES = nearby.SMALL_BOXES, small
         try:
@@ -609,11 +609,11 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
     (vertex, segment) pair of different features closer than `dist`, with the exact
     distance, as measuring all pairs does."""
     import numpy as np
-    from aidl_lang.output.nearby import close_pairs
+    from aidl_lang.output.part.nearby import close_pairs
     V = np.array(points, dtype=float)
     f = np.array(feats[:len(V)])
     A, B = V, np.roll(V, -1, axis=0)
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     gots = []
     for small in (nearby.SMALL_VERTS, 0):       # the y band, then the grid
         old, nearby.SMALL_VERTS = nearby.SMALL_VERTS, small
@@ -649,7 +649,7 @@ def test_band_pairs_through_the_grid_are_the_bands_own(n, dist, cx, r):
     ones the bands give, pair for pair and in the same order, so that every check's result
     stays the same."""
     import numpy as np
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     t = np.linspace(0, 2 * np.pi, n, endpoint=False)
     V = np.column_stack([cx + r * np.cos(t), r * np.sin(3 * t) / 3 + r * np.sin(t)])
     A, B = V, np.roll(V, -1, axis=0)
@@ -675,7 +675,7 @@ def test_close_pairs_of_features_apart_are_those_of_all_vertices(loops, dist):
     inside a gear: nothing of the gear's outline); the arrays are the very ones all of them
     give, pair for pair and in the same order."""
     import numpy as np
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     polys, feats = [], []
     for k, (cx, cy, r, n) in enumerate(loops):
         t = np.linspace(0, 2 * np.pi, n, endpoint=False)

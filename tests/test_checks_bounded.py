@@ -1,5 +1,5 @@
 """The shape checks stay bounded on dense drawings (issue 58): W0519's grouping of gap
-middles by cells (no list of pairs), the pair limit of output/nearby.py, and each family's
+middles by cells (no list of pairs), the pair limit of output/part/nearby.py, and each family's
 share of the wall time, past which a ``"W0521"`` note says what was not checked."""
 from __future__ import annotations
 
@@ -110,9 +110,9 @@ def test_a_family_past_its_share_of_the_time_says_what_it_did_not_check(monkeypa
 
 
 def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
-    """Past the pair limit the search stops before listing them (output/nearby.py's
+    """Past the pair limit the search stops before listing them (output/part/nearby.py's
     TooManyPairs) and W0519 says so instead of a warning."""
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     monkeypatch.setattr(nearby, "MAX_PAIRS", 50)
     monkeypatch.setattr(nearby, "CHUNK", 20)
     monkeypatch.setattr(nearby, "SMALL_VERTS", 10)      # the chunked grid path
@@ -126,7 +126,7 @@ def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
 def test_close_pairs_in_runs_are_the_pairs_of_one_query(monkeypatch):
     """close_pairs on a large input lists its candidates a run of segments at a time: the
     same pairs, distances and feet, in the same order, as with no run limit."""
-    from aidl_lang.output import nearby
+    from aidl_lang.output.part import nearby
     rng = np.random.default_rng(3)
     V = rng.random((6000, 2)) * 40
     A, B = V, np.roll(V, -1, axis=0)

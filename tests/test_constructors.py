@@ -77,7 +77,7 @@ def test_ellipse_needs_positive_axes(compile_text):
 
 # ---------------------------------------------------------------- ArcSlot and Star (issue 23)
 def _exact(src):
-    from aidl_lang.output.part import build
+    from aidl_lang.output.part.part import build
     from aidl_lang.pipeline import compile_source
     c = compile_source(src, "t.aidl")
     assert c.ok and not [d for d in c.sink.items if d.severity == "warning"], \

@@ -1,4 +1,4 @@
-"""Exact curves (aidl_lang/geometry/curves.py) and provenance (aidl_lang/output/exact.py):
+"""Exact curves (aidl_lang/geometry/curves.py) and provenance (aidl_lang/output/part/exact.py):
 carriers meet where both say, and a boolean's result goes back onto the exact curves.
 
 The laws: an intersection lies on both carriers; every output loop of a union or cut of
@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.geometry.curves import (Arc, Circle, Line, carrier, distance_to, intersect,
                                        tangent_at, turn_between)
-from aidl_lang.output.part import build
+from aidl_lang.output.part.part import build
 from aidl_lang.pipeline import compile_source
 
 coord = st.floats(-100, 100, allow_nan=False)

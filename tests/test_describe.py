@@ -1,4 +1,4 @@
-"""`aidl check --describe`, `Result.describe()` (aidl_lang/output/describe.py): the final part
+"""`aidl check --describe`, `Result.describe()` (aidl_lang/output/checks/describe.py): the final part
 in words and numbers, read from the exact output model."""
 import json
 from pathlib import Path

@@ -119,7 +119,7 @@ solid p {
 @settings(max_examples=40, deadline=None)
 def test_svg_arcs_are_pieces_of_at_most_a_quarter(sweep, a0, r):
     import svgelements as se
-    from aidl_lang.output.part import Arc, Output, Stroke
+    from aidl_lang.output.part.part import Arc, Output, Stroke
     arc = Arc((3.0, -2.0), r, a0, sweep)
     svg = svg_of(Output(engrave=[Stroke([arc])]))
     segs, model = svg_segments(svg)
@@ -208,7 +208,7 @@ solid p {
 def test_dxf_an_arc_short_of_a_whole_turn_is_one_bulge(sweep, a0, r):
     """A closed chain of an arc and the chord back: two vertices, one bulge; the arc re-read
     has the design's centre and radius."""
-    from aidl_lang.output.part import Arc, Line, Output, Stroke
+    from aidl_lang.output.part.part import Arc, Line, Output, Stroke
     arc = Arc((7.0, -3.0), r, a0, sweep)
     o = Output(engrave=[Stroke([arc, Line(arc.end, arc.start)], closed=True)])
     (e,) = dxf_doc(o).modelspace().query("LWPOLYLINE")
@@ -325,7 +325,7 @@ solid p {
 """)
     (part,) = o.parts
     (lp,) = part.loops
-    from aidl_lang.output.part import Arc, EllipticArc
+    from aidl_lang.output.part.part import Arc, EllipticArc
     kinds = sorted(type(s).__name__ for s in lp.segments)
     assert kinds == ["Arc", "EllipticArc"]
     for s in lp.segments:
@@ -420,7 +420,7 @@ def test_a_rectangle_and_an_ellipse_come_out_on_their_curves(ex, ey, rx, ry, rot
     sampled design within the chords' error."""
     import shapely
     from aidl_lang.output import build
-    from aidl_lang.output.part import EllipticArc, Line
+    from aidl_lang.output.part.part import EllipticArc, Line
     from aidl_lang.pipeline import compile_source
     if abs(rx - ry) < 1e-3:
         ry = rx + 0.5

@@ -1,4 +1,4 @@
-"""The fast kernels of the shape checks and writers (output/checks/, output/part.py) against their
+"""The fast kernels of the shape checks and writers (output/checks/, output/part/part.py) against their
 reference versions: same booleans, same sample points, bit for bit (hypothesis)."""
 import numpy as np
 from hypothesis import example, given, settings, strategies as st
@@ -53,7 +53,7 @@ def _points_reference(segments):
     """Loop.points as it was written before (one tuple per vertex, through Arc.at)."""
     import math
     from aidl_lang.geometry.tessellate import segments_for
-    from aidl_lang.output.part import Arc, Line
+    from aidl_lang.output.part.part import Arc, Line
     out = []
     for s in segments:
         if isinstance(s, Line):
@@ -71,7 +71,7 @@ def _points_reference(segments):
 
 
 def _segment():
-    from aidl_lang.output.part import Arc, Circle, Line
+    from aidl_lang.output.part.part import Arc, Circle, Line
     p = st.tuples(st.floats(-50, 50), st.floats(-50, 50))
     r = st.floats(0.001, 40)
     return st.one_of(st.builds(Line, p, p),
@@ -83,7 +83,7 @@ def _segment():
 @given(st.lists(st.lists(_segment(), min_size=1, max_size=5), min_size=0, max_size=4),
        st.lists(st.lists(_segment(), min_size=1, max_size=3), min_size=0, max_size=3))
 def test_points_and_bounds_equal_the_reference(loops, strokes):
-    from aidl_lang.output.part import Circle, Loop, Output, PartOutline, Stroke
+    from aidl_lang.output.part.part import Circle, Loop, Output, PartOutline, Stroke
     for segs in loops:
         got, ref = Loop(segs).points(), _points_reference(segs)
         assert got.shape == ref.shape and np.array_equal(got, ref)

@@ -1,4 +1,4 @@
-"""The fit check (W0517/W0518, output/assembly.py) and the flat interpenetration check (W0511)
+"""The fit check (W0517/W0518, output/fabrication/assembly.py) and the flat interpenetration check (W0511)
 within the compile's budget (issue 48, finding 4: 3,000 overlapping placed parts ended in E0304
 after 31.8 s against a 15 s budget).  The pairs come from a sort and sweep of the parts' boxes
 (checked against every pair here), a part's nearest neighbour from the boxes' distances
@@ -12,7 +12,7 @@ from hypothesis import given, settings, strategies as st
 
 import aidl_lang
 from aidl_lang.limits import Budget
-from aidl_lang.output import assembly
+from aidl_lang.output.fabrication import assembly
 
 from conftest import ROOT
 

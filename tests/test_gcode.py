@@ -15,7 +15,7 @@ import pytest
 gcodeparser = pytest.importorskip("gcodeparser")
 
 from aidl_lang.output import build, for_cutting  # noqa: E402
-from aidl_lang.output.machine import DEFAULTS, from_dict  # noqa: E402
+from aidl_lang.output.fabrication.machine import DEFAULTS, from_dict  # noqa: E402
 from aidl_lang.output.writers import gcode  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 
@@ -127,7 +127,7 @@ def _on_line(p, a, b) -> float:
 
 def _matches(m: Move, seg) -> bool:
     """Move ``m`` lies on the model segment ``seg`` (exact: 1e-9 mm), in its direction."""
-    from aidl_lang.output.part import Arc, Circle, Line
+    from aidl_lang.output.part.part import Arc, Circle, Line
     if m.g == 1:
         if not isinstance(seg, Line):
             return False
@@ -291,7 +291,7 @@ def test_examples_exact_and_in_order(name):
 def test_travel_and_header_numbers(path):
     """The file's G0 travel (the replay's) is the header's, and the tour's travel is at most
     1.5 x the drawing's own order (measured 0.08-1.35, as tests/test_toolpath.py)."""
-    from aidl_lang.output.toolpath import Cut, travel
+    from aidl_lang.output.fabrication.toolpath import Cut, travel
     out = _output(path)
     j = gcode.job(out)
     moves = replay(j.text)
@@ -329,7 +329,7 @@ def test_ellipse_and_spline_within_curve_tol():
     def dense(lp, n=4000):
         """The loop's curves sampled here from their own definitions (n points a piece)."""
         from aidl_lang.geometry.spline import bez_at
-        from aidl_lang.output.part import EllipticArc, Spline
+        from aidl_lang.output.part.part import EllipticArc, Spline
         pts = []
         for g in lp.segments:
             if isinstance(g, EllipticArc):
@@ -410,7 +410,7 @@ def test_router_curves_as_biarcs_offset():
 
 
 def test_tabs_leave_gaps_and_lead_in_starts_on_the_scrap_side():
-    from aidl_lang.output.toolpath import _inside
+    from aidl_lang.output.fabrication.toolpath import _inside
     out = _output(PLATE)
     m = from_dict({"tabs": 4, "tab_width": 3, "lead_in": 2})
     text = gcode.job(out, m).text
@@ -455,7 +455,7 @@ def test_swapped_g2_g3_is_caught(monkeypatch):
 
 
 def test_outlines_before_holes_is_caught(monkeypatch):
-    from aidl_lang.output import toolpath
+    from aidl_lang.output.fabrication import toolpath
     out = _output(PLATE)
     real = toolpath.plan
 
@@ -561,7 +561,7 @@ def test_mcp_render_writes_gcode_with_a_machine(tmp_path):
 def test_router_paths_are_the_tool_offset_loops_holes_first_where_offsets_overlap():
     """examples/mounting_plate.aidl's washers lie closer than the tool: their offset outlines
     overlap their neighbours', and each washer's hole must still come before its outline.
-    Each depth's path is exactly the loop offset by the tool radius (output/layout.py's
+    Each depth's path is exactly the loop offset by the tool radius (output/fabrication/layout.py's
     exact offset), 2 depths for 3 mm at 1.5 mm per pass."""
     out = _output(ROOT / "examples" / "mounting_plate.aidl")
     m = DEFAULTS["router"]

@@ -174,7 +174,7 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
     import time as _time
     from aidl_lang.geometry import operations
     from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
-    from aidl_lang.output.booleans import render_model
+    from aidl_lang.output.part.booleans import render_model
     holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "
                       "points=5, outer_radius=4, inner_radius=2) }" for i in range(100))
     src = (f"units mm\nsolid plate {{\n    body = Rectangle(center=(0, 0), width=130, "

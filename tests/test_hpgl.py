@@ -15,8 +15,8 @@ import pytest
 from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
 from aidl_lang.geometry.spline import bez_at
 from aidl_lang.output import encode, for_cutting
-from aidl_lang.output.extent import extent
-from aidl_lang.output.toolpath import plan
+from aidl_lang.output.part.extent import extent
+from aidl_lang.output.fabrication.toolpath import plan
 from aidl_lang.output.writers import hpgl
 
 from conftest import ROOT
@@ -175,7 +175,7 @@ def check_hpgl(out, data: bytes, passes: int = 1) -> dict:
             d2 = _to_polyline_distance(design, drawn)
             assert d2.max() <= TOL + 1e-9, (cut.part, cut.operation, d2.max())
     # the order: engraving first (its speed), and no closed path after one around it
-    from aidl_lang.output.machine import DEFAULTS
+    from aidl_lang.output.fabrication.machine import DEFAULTS
     speeds = [c.args[0] for c in raw.commands if c.name == "VS"]
     want = []
     for c in cuts:
@@ -264,7 +264,7 @@ def test_serve_downloads_and_the_mcp_render_tool_write_it(tmp_path):
 
 
 def test_the_machine_profile_sets_speeds_and_passes():
-    from aidl_lang.output.machine import from_dict
+    from aidl_lang.output.fabrication.machine import from_dict
     from aidl_lang.output.writers import Options
     out = for_cutting(_compile("name_tag").output, None)
     o = Options()
@@ -308,7 +308,7 @@ def test_wrong_units_per_mm_are_caught(monkeypatch):
 
 def test_a_cut_order_with_outlines_first_is_caught(monkeypatch):
     out = for_cutting(_compile("laser_box").output, None)
-    from aidl_lang.output import toolpath
+    from aidl_lang.output.fabrication import toolpath
     real = toolpath.plan
 
     def outlines_first(o, *a):
@@ -325,7 +325,7 @@ def test_a_cut_order_with_outlines_first_is_caught(monkeypatch):
 def test_rounding_bound_holds_off_the_grid():
     """A drawing whose every point lies between plotter units: every written point within
     half a unit in x and y of the design, every drawn point within one unit."""
-    from aidl_lang.output.part import Output, PartOutline
+    from aidl_lang.output.part.part import Output, PartOutline
     from aidl_lang.geometry.curves import Loop
     segs = [Line((0.013, 0.0071), (30.0123, 0.0071)),
             Arc((30.0123, 10.0071), 10.0, -math.pi / 2, math.pi),

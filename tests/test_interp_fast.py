@@ -245,7 +245,7 @@ def test_the_circle_runs_sweeps_at_once_equal_each_runs_sweep():
     """``exact._circle_sweeps`` (all runs of a result polygon in one array operation) gives
     each run the very float :func:`exact._sweep_sum` gives it, on the gear pair's outlines
     (about a thousand arcs)."""
-    from aidl_lang.output import exact as X
+    from aidl_lang.output.part import exact as X
     from aidl_lang.pipeline import compile_source
     path = ROOT / "examples" / "gear_pair.aidl"
     c = compile_source(path.read_text(), str(path))

@@ -141,8 +141,8 @@ def dxf_parts(path) -> dict:
 def check_sheets(sheets, view, W, H, gap):
     """No overlap, inside the sheet (and ``gap`` from its edge), each part once and the same
     shape as in the assembly view."""
-    from aidl_lang.output.inventory import same_shape
-    from aidl_lang.output.layout import part_box
+    from aidl_lang.output.checks.inventory import same_shape
+    from aidl_lang.output.fabrication.layout import part_box
     solids = {p.name: p for p in view.parts if p.kind == "solid"}
     seen = []
     for sh in sheets:
@@ -170,7 +170,7 @@ def check_sheets(sheets, view, W, H, gap):
 # ------------------------------------------------------------------ layout
 @pytest.mark.parametrize("src,n", [(BOX, 6), (CLOCK, 3)], ids=["box", "clock"])
 def test_layout_places_every_part_once_without_overlap(src, n, tmp_path):
-    from aidl_lang.output.layout import lay_out
+    from aidl_lang.output.fabrication.layout import lay_out
     view = output_of(src, tmp_path)
     assert len(view.parts) == n
     sheets, dropped = lay_out(view, (300.0, 200.0), 3.0, (0.0, 90.0))
@@ -219,7 +219,7 @@ def test_parts_that_do_not_fit_go_on_more_sheets(tmp_path, capsys):
                                                 f.read_text())]
     assert sorted(ids) == sorted("part-box_" + n for n in
                                  ("bottom", "lid", "front", "back", "left", "right"))
-    from aidl_lang.output.layout import lay_out
+    from aidl_lang.output.fabrication.layout import lay_out
     view = output_of(BOX, tmp_path)
     sheets, _ = lay_out(view, (100.0, 100.0), 1.0, (0.0, 90.0))
     check_sheets(sheets, view, 100.0, 100.0, 1.0)
@@ -258,7 +258,7 @@ def test_each_sheet_holds_one_material_thickness(tmp_path, capsys):
     assert sorted(ids[0]) == ["part-kit_plate", "part-kit_plate2"] and ids[1] == ["part-kit_spacer"]
     assert "<title>kit (sheet 1 of 2), 3 mm material</title>" in one
     assert "<title>kit (sheet 2 of 2), 6 mm material</title>" in two
-    from aidl_lang.output.layout import lay_out
+    from aidl_lang.output.fabrication.layout import lay_out
     view = output_of(MIXED, tmp_path)
     sheets, _ = lay_out(view, (200.0, 150.0), 3.0, (0.0, 90.0))
     check_sheets(sheets, view, 200.0, 150.0, 3.0)
@@ -275,7 +275,7 @@ def test_a_part_larger_than_the_sheet_is_an_error_naming_it(tmp_path, capsys):
 
 
 def test_free_rotation_and_rigid_motions_are_exact(tmp_path):
-    from aidl_lang.output.layout import Motion, lay_out
+    from aidl_lang.output.fabrication.layout import Motion, lay_out
     view = output_of(CLOCK, tmp_path)
     sheets, _ = lay_out(view, (200.0, 200.0), 0.0, None)
     check_sheets(sheets, view, 200.0, 200.0, 0.0)
@@ -384,7 +384,7 @@ def test_kerf_offsets_cuts_exactly_dxf_and_svg(how, tmp_path):
 def test_kerf_on_arcs_and_concave_corners(tmp_path):
     """Arcs stay arcs with the radius changed by half the kerf; a concave corner is joined
     where the offset lines cross; the offset outline lies kerf/2 from the design (shapely)."""
-    from aidl_lang.output.layout import compensate
+    from aidl_lang.output.fabrication.layout import compensate
     src = """
 units mm
 solid ell {
@@ -424,7 +424,7 @@ def test_kerf_larger_than_a_feature_is_a_clear_error(tmp_path, capsys):
 
 # ------------------------------------------------------------------ assembly view
 def test_assembly_view_colours_each_part_and_names_it(tmp_path):
-    from aidl_lang.output.part import PALETTE
+    from aidl_lang.output.part.part import PALETTE
     from aidl_lang.output.writers.svg import to_svg
     svg = to_svg(output_of(BOX, tmp_path))
     groups = re.findall(r'<g class="solid" fill="([^"]+)" fill-opacity="([^"]+)" '
@@ -462,7 +462,7 @@ def test_parts_lists_paths_sizes_holes_and_copies(tmp_path, capsys):
 
 def test_the_laser_box_example_checks_clean_and_lays_out(tmp_path):
     from conftest import EXAMPLES
-    from aidl_lang.output.layout import lay_out
+    from aidl_lang.output.fabrication.layout import lay_out
     path = next(p for p in EXAMPLES if p.stem == "laser_box")
     view = output_of(path.read_text(), tmp_path, "laser_box")      # no warnings
     assert len(view.parts) == 6
@@ -478,7 +478,7 @@ def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys):
     the deadline moved that much nearer, as a clock would have) does not leave the writers
     after it out of budget (E0304).  (A real wait of 4 s against a 3 s budget raced the
     compile on a loaded machine.)"""
-    from aidl_lang.output import layout
+    from aidl_lang.output.fabrication import layout
     real = layout.plan
 
     def full_time(output, sheet, gap, rotate, seconds, *a, deadline=None, **k):
@@ -500,8 +500,8 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     import time
     from aidl_lang.limits import DEFAULT_BUDGET, Deadline
     from aidl_lang.output import build
-    from aidl_lang.output.layout import NEST_SECONDS_PER_PAIR, plan
-    from aidl_lang.output.part import OutputError
+    from aidl_lang.output.fabrication.layout import NEST_SECONDS_PER_PAIR, plan
+    from aidl_lang.output.part.part import OutputError
     from aidl_lang.pipeline import compile_source, report_out_of_budget
     n = 120
     rows = "\n".join(f"    solid p{i} {{ body = Rectangle(center=({i * 30}, 0), width=20, "
@@ -509,7 +509,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     res = compile_source(f"units mm\nassembly parts {{\n{rows}\n}}\n", "many.aidl")
     assert res.ok
     out = build(res.drawing, res.model.root.name)
-    from aidl_lang.output import layout
+    from aidl_lang.output.fabrication import layout
     nested = []
     real_nest = layout._nest
 

@@ -16,8 +16,8 @@ import pytest
 
 from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
 from aidl_lang.output import encode, for_cutting
-from aidl_lang.output.machine import DEFAULTS, from_dict
-from aidl_lang.output.toolpath import plan
+from aidl_lang.output.fabrication.machine import DEFAULTS, from_dict
+from aidl_lang.output.fabrication.toolpath import plan
 from aidl_lang.output.writers import Options, beziers, lightburn
 
 from conftest import ROOT
@@ -379,7 +379,7 @@ def test_speeds_in_mm_per_minute_are_caught(monkeypatch):
 
 def test_outlines_before_holes_are_caught(monkeypatch):
     out = for_cutting(_compile("laser_box").output, None)
-    from aidl_lang.output import toolpath
+    from aidl_lang.output.fabrication import toolpath
     real = toolpath.plan
     monkeypatch.setattr(toolpath, "plan",
                         lambda o, *a: sorted(real(o, *a), key=lambda c: c.operation != "cut_outer"))

@@ -1,6 +1,6 @@
 """Machine profiles cannot ask for a job without end (issue 58): every number that multiplies
 the work (passes, a router's depth per pass, tabs, lead-in, speeds, ...) has a range
-(aidl_lang/output/machine.py RANGES / OP_RANGES, docs/machines.md "Ranges"); past it the
+(aidl_lang/output/fabrication/machine.py RANGES / OP_RANGES, docs/machines.md "Ranges"); past it the
 profile is one error line naming the key and the range, and nothing is written.  A router
 whose thickness / depth_per_pass is past MAX_DEPTH_PASSES, or a job past MAX_JOB_MOVES
 moves, is refused by the writer, naming what to change."""
@@ -12,9 +12,9 @@ import sys
 import pytest
 
 from aidl_lang.output import build, for_cutting
-from aidl_lang.output.machine import (MAX_DEPTH_PASSES, OP_RANGES, RANGES, MachineError,
+from aidl_lang.output.fabrication.machine import (MAX_DEPTH_PASSES, OP_RANGES, RANGES, MachineError,
                                       from_dict, load)
-from aidl_lang.output.part import OutputError
+from aidl_lang.output.part.part import OutputError
 from aidl_lang.output.writers import gcode, hpgl
 from aidl_lang.pipeline import compile_source
 
@@ -127,7 +127,7 @@ def test_a_job_past_its_moves_is_refused_before_anything_is_written(monkeypatch)
     p = from_dict({"kind": "plotter", "cut_inner": {"passes": 100}, "cut_outer": {"passes": 100}})
     opts = type("O", (), {"machine": p})()
     assert hpgl.to_hpgl(out, opts).count("VS") >= 1           # within the bound: written
-    import aidl_lang.output.machine as M
+    import aidl_lang.output.fabrication.machine as M
     monkeypatch.setattr(M, "MAX_JOB_MOVES", n // 2)
     monkeypatch.setattr(gcode, "MAX_JOB_MOVES", n // 2)
     with pytest.raises(OutputError) as e:

@@ -11,7 +11,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES
 from aidl_lang.geometry.tessellate import CHORD_TOL
 from aidl_lang.output import Options, build, encode
-from aidl_lang.output.part import Arc, Circle, Line
+from aidl_lang.output.part.part import Arc, Circle, Line
 
 PLATE = """
 units mm
@@ -156,7 +156,7 @@ def test_dxf_header_extents_are_the_drawings():
 
 
 def _strokes_output(*strokes):
-    from aidl_lang.output.part import Output, Stroke
+    from aidl_lang.output.part.part import Output, Stroke
     return Output(engrave=[Stroke(list(s)) for s in strokes])
 
 
@@ -365,7 +365,7 @@ def _hand_built():
     """A 40 x 20 plate whose right side is an arc through 0 degrees (x = 25 exactly, which no
     chord vertex need reach), a circular hole, and two engraving strokes: a chain of a line
     and an arc, and a single line."""
-    from aidl_lang.output.part import Loop, Output, PartOutline, Stroke
+    from aidl_lang.output.part.part import Loop, Output, PartOutline, Stroke
     a = math.asin(10 / 25)                               # the arc meets y = +-10 at x = 25 cos a
     xr = 25 * math.cos(a)
     outer = Loop([Line((-20, -10), (xr, -10)), Arc((0, 0), 25, -a, 2 * a),
@@ -399,7 +399,7 @@ def test_svg_draws_a_chained_stroke_as_one_path():
 
 def test_margin_zero_makes_the_page_the_exact_bounding_box():
     import svgelements as se
-    from aidl_lang.output.extent import extent
+    from aidl_lang.output.part.extent import extent
     o = _hand_built()
     assert extent(o) == pytest.approx((-20, -10, 25, 10), abs=1e-12)
     assert o.bounds()[2] < 25 - 1e-6                 # the sampled extent falls short of the arc
@@ -418,7 +418,7 @@ def test_margin_zero_makes_the_page_the_exact_bounding_box():
 
 @pytest.mark.parametrize("margin", [-1.0, math.inf, math.nan])
 def test_a_bad_margin_is_an_output_error(margin):
-    from aidl_lang.output.part import OutputError
+    from aidl_lang.output.part.part import OutputError
     with pytest.raises(OutputError, match="margin"):
         encode(_hand_built(), ".svg", Options(margin=margin))
 
@@ -429,8 +429,8 @@ def test_a_bad_margin_is_an_output_error(margin):
 def test_an_arcs_extent_is_the_box_of_its_points(cx, cy, r, a0, sweep):
     """The exact extent of an arc holds all its points and is no larger than they reach
     (densely sampled: a sample misses an extreme by at most r (1 - cos(pi / 4000)))."""
-    from aidl_lang.output.extent import extent
-    from aidl_lang.output.part import Output, Stroke
+    from aidl_lang.output.part.extent import extent
+    from aidl_lang.output.part.part import Output, Stroke
     arc = Arc((cx, cy), r, a0, sweep)
     t = a0 + sweep * np.linspace(0, 1, 4001)
     xs, ys = cx + r * np.cos(t), cy + r * np.sin(t)

@@ -20,8 +20,8 @@ pytest.importorskip("reportlab")
 from aidl_lang import api                                            # noqa: E402
 from aidl_lang.cli.main import main                                  # noqa: E402
 from aidl_lang.output import for_cutting                             # noqa: E402
-from aidl_lang.output.extent import extent                           # noqa: E402
-from aidl_lang.output.part import (Arc, Circle, EllipticArc, Line,   # noqa: E402
+from aidl_lang.output.part.extent import extent                           # noqa: E402
+from aidl_lang.output.part.part import (Arc, Circle, EllipticArc, Line,   # noqa: E402
                                    MissingDependency, OutputError, Spline)
 from aidl_lang.output.writers import pdf as W                        # noqa: E402
 from aidl_lang.output.writers import beziers as B                     # noqa: E402
@@ -408,7 +408,7 @@ def check_tiles(output, data, paper):
 
 
 def on_page(s, window):
-    from aidl_lang.output.extent import _segment_box
+    from aidl_lang.output.part.extent import _segment_box
     b = _segment_box(s)
     return b[0] <= window[2] and b[2] >= window[0] and b[1] <= window[3] and b[3] >= window[1]
 

@@ -69,7 +69,7 @@ def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
     from aidl_lang.diagnostics import DiagnosticSink
     from aidl_lang.limits import Deadline
     from aidl_lang.output import checks
-    from aidl_lang.output.booleans import render_model
+    from aidl_lang.output.part.booleans import render_model
     from aidl_lang.pipeline import after_solve
     src = "solid plate {\n    body = Circle(center=(0, 0), radius=9)\n" \
           "    hole bore { c = Circle(center=(0, 0), radius=2) }\n}\n"
@@ -195,7 +195,7 @@ def test_chaining_many_lines_into_a_loop_is_linear():
     curve at every step (O(n^2), 12 s); through a grid of their ends, well under a second."""
     import math
     import random
-    from aidl_lang.output.booleans import Renderer
+    from aidl_lang.output.part.booleans import Renderer
     n = 5000
     pts = [(round(100 * math.cos(2 * math.pi * i / n), 9), round(100 * math.sin(2 * math.pi * i / n), 9))
            for i in range(n)]
@@ -460,7 +460,7 @@ def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monke
     count says it would end past the deadline.  Here the cost per vertex is set absurdly
     high: E0304 in the booleans at once."""
     from aidl_lang.limits import Budget
-    from aidl_lang.output import booleans
+    from aidl_lang.output.part import booleans
     monkeypatch.setattr(booleans, "UNION_SECONDS_PER_VERTEX", 1.0)
     src = ("solid plate {\n    a = Circle(center=(0, 0), radius=5)\n"
            "    b = Circle(center=(4, 0), radius=5)\n}\n")

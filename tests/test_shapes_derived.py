@@ -54,7 +54,7 @@ def box(segs):
 
 def exact_area(c) -> float:
     """The area of the compiled part from its exact output loops (no chords)."""
-    from aidl_lang.output.part import build
+    from aidl_lang.output.part.part import build
     return sum(lp.area for p in build(c.drawing).parts for lp in p.loops)
 
 
@@ -368,7 +368,7 @@ def test_offset_matches_shapely_buffer(tmp_path_factory, polar, d):
         return
     assert c.ok, [(x.code, x.message) for x in c.sink.items]
     assert exact_area(c) == pytest.approx(ref.area, rel=2e-5, abs=1e-6)
-    from aidl_lang.output.part import build
+    from aidl_lang.output.part.part import build
     ours = shapely.unary_union([shapely.Polygon(lp.points()) if lp.area > 0 else None
                                 for p in build(c.drawing).parts for lp in p.loops
                                 if lp.area > 0])

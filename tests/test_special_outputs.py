@@ -150,7 +150,7 @@ def test_fmt_leaves_a_file_swapped_for_a_fifo_after_it_was_read(tmp_path, monkey
 @pytest.mark.parametrize("kind", ["fifo", "chardev", "socket"])
 def test_write_atomic_and_the_api_refuse(tmp_path, make_node, kind):
     import aidl_lang
-    from aidl_lang.output.write import NotRegularFile, WriteError, write_atomic
+    from aidl_lang.output.writers.write import NotRegularFile, WriteError, write_atomic
     before = make_node(kind, "n.svg")
     with pytest.raises(NotRegularFile) as e:
         write_atomic(tmp_path / "n.svg", b"<svg/>")
@@ -164,7 +164,7 @@ def test_write_atomic_and_the_api_refuse(tmp_path, make_node, kind):
 def test_a_fifo_put_there_after_staging_is_not_renamed_over(tmp_path, monkeypatch):
     """The race: the target is a regular file when the data is staged and a FIFO when the
     rename comes; the kind is read again just before the rename."""
-    from aidl_lang.output import write as W
+    from aidl_lang.output.writers import write as W
     p = tmp_path / "n.svg"
     p.write_text("old")
     stage = W.stage
@@ -183,7 +183,7 @@ def test_a_fifo_put_there_after_staging_is_not_renamed_over(tmp_path, monkeypatc
 
 
 def test_write_in_dir_refuses_a_device(tmp_path, make_node):
-    from aidl_lang.output.write import NotRegularFile, write_in_dir
+    from aidl_lang.output.writers.write import NotRegularFile, write_in_dir
     before = make_node("chardev", "null")
     dfd = os.open(tmp_path, os.O_RDONLY)
     try:
@@ -259,7 +259,7 @@ def test_a_fifo_put_there_after_the_last_check_is_swapped_back(tmp_path, monkeyp
     """The window a check leaves: a FIFO made after every check, just before the rename.
     The rename is an atomic exchange (renameat2 RENAME_EXCHANGE) and the node it took out is
     looked at: the FIFO goes back, the same node (inode), and the write is refused."""
-    from aidl_lang.output import write as W
+    from aidl_lang.output.writers import write as W
     if W._libc_renameat2() is None:
         pytest.skip("no renameat2 here")
     p = tmp_path / "n.svg"
@@ -284,7 +284,7 @@ def test_a_fifo_put_there_after_the_last_check_is_swapped_back(tmp_path, monkeyp
 
 def test_without_renameat2_the_check_comes_just_before_the_rename(tmp_path, monkeypatch):
     """Another kernel or libc: a plain rename after a second check (both paths tested)."""
-    from aidl_lang.output import write as W
+    from aidl_lang.output.writers import write as W
     monkeypatch.setattr(W, "_libc_renameat2", lambda: None)
     p = tmp_path / "n.svg"
     p.write_text("old")
@@ -335,7 +335,7 @@ def test_a_target_that_keeps_coming_and_going_is_never_renamed_over(tmp_path, mo
     loaded machine, after 3 tries)."""
     import errno
     import os
-    from aidl_lang.output import write as W
+    from aidl_lang.output.writers import write as W
     if W._libc_renameat2() is None:
         pytest.skip("no renameat2 here")
     p = tmp_path / "n.svg"
@@ -369,7 +369,7 @@ def test_two_processes_race_and_no_fifo_is_ever_renamed_over(tmp_path):
     import subprocess
     import sys
     import time
-    from aidl_lang.output import write as W
+    from aidl_lang.output.writers import write as W
     if W._libc_renameat2() is None:
         pytest.skip("no renameat2 here")
     p = tmp_path / "n.svg"

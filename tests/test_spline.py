@@ -15,7 +15,7 @@ from hypothesis import given, settings, strategies as st
 from aidl_lang.geometry.curves import Circle, Line, Loop, Spline, reverse, simplify
 from aidl_lang.geometry.spline import (SplineError, bez_at, bez_box, bez_pieces, interpolate,
                                        split)
-from aidl_lang.output.exact import Provenance
+from aidl_lang.output.part.exact import Provenance
 
 GUITAR = [(0, -60), (38, -52), (44, -20), (26, 2), (32, 30), (18, 52), (0, 56), (-18, 52),
           (-32, 30), (-26, 2), (-44, -20), (-38, -52)]
@@ -535,7 +535,7 @@ solid pick {
 
 def test_kerf_on_a_spline_part_is_refused_naming_the_spline(tmp_path):
     from aidl_lang.output import build
-    from aidl_lang.output.layout import LayoutError, compensate
+    from aidl_lang.output.fabrication.layout import LayoutError, compensate
     src = ("units mm\nsolid pick {\n    body = Spline(points=[(0, -30), (20, 0), (0, 20), "
            "(-20, 0)], closed=true)\n}\n")
     c = _compile(src, tmp_path)

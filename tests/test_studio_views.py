@@ -38,7 +38,7 @@ def _gltf(data: bytes) -> dict:
 
 def test_the_view_glb_is_small_and_shares_the_planets_mesh(planetary):
     trimesh = pytest.importorskip("trimesh")
-    from aidl_lang.output.part import PALETTE
+    from aidl_lang.output.part.part import PALETTE
     from aidl_lang.output.writers.glb import to_glb, to_view_glb, view_tolerance
     out = planetary.output
     view, exact = to_view_glb(out), to_glb(out)

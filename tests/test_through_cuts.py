@@ -23,7 +23,7 @@ import pytest
 
 import aidl_lang
 from aidl_lang.output import encode, for_cutting
-from aidl_lang.output.machine import from_dict
+from aidl_lang.output.fabrication.machine import from_dict
 
 from conftest import ROOT
 
@@ -147,7 +147,7 @@ def test_the_flex_box_dxf_hpgl_pdf_and_svg_carry_the_slits(flex):
     assert {e.dxf.layer for e in doc.modelspace() if e.dxftype() == "LINE"} == {f"CUT-{WALL}"}
     # HP-GL: one pen-down line per slit (ezhpgl, 40 units a mm, from the drawing's corner)
     ezhpgl = pytest.importorskip("ezhpgl")
-    from aidl_lang.output.extent import extent
+    from aidl_lang.output.part.extent import extent
     x0, y0, _, _ = extent(cut)
     plot = ezhpgl.parse(encode(cut, ".plt"))
     paths: dict = {}

@@ -1,4 +1,4 @@
-"""The cut order (aidl_lang/output/toolpath.py) and machine profiles (output/machine.py):
+"""The cut order (aidl_lang/output/fabrication/toolpath.py) and machine profiles (output/fabrication/machine.py):
 engravings first, every loop inside another cut before it (holes before their outline, a part
 in another part's window before the window), exact paths that chain, and profiles read with
 clear errors (issue 50)."""
@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.output import build
-from aidl_lang.output.machine import DEFAULTS, MachineError, from_dict, load
-from aidl_lang.output.toolpath import _inside, job_seconds, plan, travel
+from aidl_lang.output.fabrication.machine import DEFAULTS, MachineError, from_dict, load
+from aidl_lang.output.fabrication.toolpath import _inside, job_seconds, plan, travel
 from aidl_lang.pipeline import compile_source
 
 from conftest import EXAMPLES
@@ -93,7 +93,7 @@ def test_examples_holes_before_outlines_and_shorter_travel(path):
     # the tour travels at most 1.5 times the drawing's own order (parts and loops as written,
     # which ignores the holes-first rule); measured: 0.08-1.35 of it, median 0.61, over the
     # examples (above 1: toy_sword, key, bottle_opener; greedy, no 2-opt)
-    from aidl_lang.output.toolpath import Cut
+    from aidl_lang.output.fabrication.toolpath import Cut
     plain = [Cut("engrave", s.part, list(s.segments), s.closed) for s in out.engrave] + \
         [Cut("cut", p.name, list(lp.segments), True) for p in out.parts for lp in p.loops]
     assert travel(cuts) <= 1.5 * travel(plain) + 1e-9

@@ -125,7 +125,7 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
         raise UsageError(f"-o `{out}`: the output must end in .parquet or .jsonl")
     if out.is_dir():
         raise UsageError(f"-o `{out}` is a directory; give a file name such as {out / 'rows.jsonl'}")
-    from ..output.write import not_regular, refusal
+    from ..output.writers.write import not_regular, refusal
     kind = not_regular(out)         # a FIFO, a device: never replaced (the end's write_atomic)
     if kind is not None:
         raise UsageError("-o " + refusal(out, kind))

@@ -103,10 +103,10 @@ def run_one(task: dict, cfg: dict) -> dict:
 
 
 def _render(output, suffixes: list[str], out_dir: Path, stem: str, deadline=None) -> list[str]:
-    """Write each format as ``OUT_DIR/STEM.EXT`` (:func:`aidl_lang.output.write.write_atomic`, as
+    """Write each format as ``OUT_DIR/STEM.EXT`` (:func:`aidl_lang.output.writers.write.write_atomic`, as
     ``aidl render``: a reader never sees half a file; a writer that would end past the
     compile's ``deadline`` is refused, and nothing is written); returns the paths written."""
-    from ..output.write import write_atomic
+    from ..output.writers.write import write_atomic
     from ..output import CUT_FORMATS, encode, for_cutting
     # what a cutter reads has the program's `kerf` applied, as `aidl render` writes it
     cut = (for_cutting(output, deadline=deadline) if any(s in CUT_FORMATS for s in suffixes)

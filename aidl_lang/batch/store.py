@@ -21,7 +21,7 @@ import json
 import os
 from pathlib import Path
 
-from ..output.write import write_atomic
+from ..output.writers.write import write_atomic
 from ..files import NOFOLLOW, NONBLOCK, FileRefused, open_append
 from .row import FIELDS
 

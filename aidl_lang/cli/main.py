@@ -10,7 +10,7 @@ produced (each written to a temporary file beside it, then renamed), so a good d
 replaced by a broken one.  ``render`` never writes over the program it reads, refuses a
 directory as output, refuses a symlink as output unless ``--follow-symlinks`` (then it writes
 through it; the link stays) and a read-only file unless ``--force``, never replaces a FIFO, a
-device, a socket or a directory (:mod:`aidl_lang.output.write`; ``-o -`` writes to standard
+device, a socket or a directory (:mod:`aidl_lang.output.writers.write`; ``-o -`` writes to standard
 output, ``--format``), and creates files with the user's umask (an existing file keeps its
 mode); docs/outputs.md has the details.
 """
@@ -503,7 +503,7 @@ def cmd_check(args) -> int:
         for v in values or ():
             print(v.text())
         if "describe" in extra:
-            from ..output.describe import describe_text
+            from ..output.checks.describe import describe_text
             print(describe_text(extra["describe"]))
         if values is not None and not values:
             print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
@@ -531,7 +531,7 @@ def _usage(msg: str) -> int:
 
 def _materials(sheets) -> str:
     """`` (3 mm: sheets 1-2; 6 mm: sheet 3)`` when the sheets hold more than one material
-    thickness (each sheet holds one, :func:`aidl_lang.output.layout.plan`), else ``""``."""
+    thickness (each sheet holds one, :func:`aidl_lang.output.fabrication.layout.plan`), else ``""``."""
     by: dict = {}
     for j, s in enumerate(sheets, 1):
         t = {p.thickness for p in s.parts}
@@ -590,7 +590,7 @@ def _suffix(o: Path, args) -> str:
 def _outputs(args) -> list[Path] | int:
     """The output paths, checked before compiling (usage errors exit 2): known extensions,
     not the program itself, not a directory, not a FIFO, device or socket (never replaced:
-    :func:`aidl_lang.output.write.not_regular`); ``-`` is standard output (``--format``); a
+    :func:`aidl_lang.output.writers.write.not_regular`); ``-`` is standard output (``--format``); a
     default only for a regular input file."""
     from ..output import FORMATS
     if args.output:
@@ -637,7 +637,7 @@ def _outputs(args) -> list[Path] | int:
 def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
     """A symbolic link as output is refused (exit 2: someone may have planted it to make the
     render overwrite another file) unless ``--follow-symlinks``, and even then (exit 1) when
-    another user made it in a sticky world-writable folder (:func:`aidl_lang.output.write.planted_link`);
+    another user made it in a sticky world-writable folder (:func:`aidl_lang.output.writers.write.planted_link`);
     a FIFO, device or socket (or, with ``--follow-symlinks``, a link to one) is refused (exit
     2: never replaced); an existing read-only file is refused (exit 1) unless ``--force``.
     None when ``o`` may be written."""
@@ -646,7 +646,7 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
                       "through it: give --follow-symlinks to write the file it points to, or "
                       "another output name")
     if os.path.islink(o):
-        from ..output.write import planted_link
+        from ..output.writers.write import planted_link
         planted = planted_link(o)
         if planted:
             print(f"aidl: error: {planted.replace('when asked to follow links', 'with --follow-symlinks')}",
@@ -657,7 +657,7 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
         st = os.stat(target)
     except OSError:
         return None
-    from ..output.write import kind_of, refusal
+    from ..output.writers.write import kind_of, refusal
     kind = kind_of(st.st_mode)
     if kind is not None:
         if os.path.islink(o):
@@ -684,11 +684,11 @@ def _encode_all(jobs: list, opt, deadline):
 
 
 def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | None:
-    """Write every output or none: each staged beside its target (:func:`aidl_lang.output.write.stage`:
+    """Write every output or none: each staged beside its target (:func:`aidl_lang.output.writers.write.stage`:
     symlinks, modes), then ``-`` written to standard output, then all renamed over their
-    targets (:func:`aidl_lang.output.write.replace`: never half-written, never over a FIFO,
+    targets (:func:`aidl_lang.output.writers.write.replace`: never half-written, never over a FIFO,
     device, socket or directory).  Returns an error message, or None."""
-    from ..output.write import NotRegularFile, discard, replace, stage
+    from ..output.writers.write import NotRegularFile, discard, replace, stage
     staged = []
     out = items[0][0] if items else ""
     try:
@@ -718,7 +718,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 def cmd_render(args) -> int:
     from ..pipeline import compile_source, report_out_of_budget
     from ..output import MissingDependency, Options, OutputError, build, encode
-    from ..output.layout import parse_length, parse_rotate, parse_sheet
+    from ..output.fabrication.layout import parse_length, parse_rotate, parse_sheet
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -776,7 +776,7 @@ def cmd_render(args) -> int:
         return _usage("--sheet, --gap and --rotate are for a cutting layout: add --layout sheet")
     machine = None
     if args.machine is not None:
-        from ..output.machine import KINDS, MachineError, default, load
+        from ..output.fabrication.machine import KINDS, MachineError, default, load
         try:
             machine = default(args.machine) if args.machine in KINDS and \
                 not os.path.exists(args.machine) else load(args.machine)
@@ -803,13 +803,13 @@ def cmd_render(args) -> int:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         from ..output import CUT_FORMATS, for_cutting
         cut = for_cutting(output, kerf, res.deadline)   # --kerf, else the program's `kerf`
-        from ..output.layout import through_cut_note
+        from ..output.fabrication.layout import through_cut_note
         kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
         if kept:
             notes.append(kept)
         flat, solid = [cut], [output]
         if args.layout:
-            from ..output.layout import place, plan
+            from ..output.fabrication.layout import place, plan
             if args.nest_time and res.deadline is not None:
                 # the nesting's own time limit comes on top of the compile's wall budget
                 from ..limits import Deadline
@@ -876,7 +876,7 @@ def cmd_render(args) -> int:
 def cmd_parts(args) -> int:
     from ..pipeline import compile_source
     from ..output import build
-    from ..output.inventory import parts_list, parts_text
+    from ..output.checks.inventory import parts_list, parts_text
     src = _read(args.file, args.json)
     if src is None:
         return 1
@@ -952,7 +952,7 @@ def cmd_import(args) -> int:
     if out == "-":
         sys.stdout.write(text)
         return 0
-    from ..output.write import write_in_dir
+    from ..output.writers.write import write_in_dir
     folder, base = os.path.split(os.path.abspath(out))
     try:
         dfd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
@@ -1084,7 +1084,7 @@ def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
             return _internal(e)
         oom = True                 # said below, once the failed frames are freed
     except Exception as e:  # an internal error: report it as such, never a raw traceback
-        from ..output.part import OutputError
+        from ..output.part.part import OutputError
         if isinstance(e, OutputError):      # bounded work ran out after the compile
             return _output_error(args, e)
         return _internal(e)
@@ -1131,7 +1131,7 @@ def _out_of_memory(args) -> int:
 
 
 def _output_error(args, e) -> int:
-    """An :class:`~aidl_lang.output.part.OutputError` after the compile (``aidl parts``,
+    """An :class:`~aidl_lang.output.part.part.OutputError` after the compile (``aidl parts``,
     ``check --describe``): one located ``E0304``, exit 1, nothing written."""
     from ..pipeline import output_error_sink
     _emit(output_error_sink(*_program_text(args), e), getattr(args, "json", False), False)

@@ -301,14 +301,14 @@ def main(files: list[str], check: bool = False) -> int:
     file has syntax errors (printed; the file is not touched) or, with ``check``, would change;
     3 the formatter found it would change a program's meaning (a bug; nothing written).
     Files are rewritten atomically (a temporary file beside it, then renamed:
-    :func:`aidl_lang.output.write.write_atomic`, never over a FIFO or a device) and only if
+    :func:`aidl_lang.output.writers.write.write_atomic`, never over a FIFO or a device) and only if
     their text changes.
     """
     import sys
     from pathlib import Path
 
     from ..diagnostics import render_text
-    from ..output.write import WriteError, write_atomic
+    from ..output.writers.write import WriteError, write_atomic
     from ..sources import SourceRefused, read_program
 
     status = 0

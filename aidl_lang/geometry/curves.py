@@ -2,8 +2,8 @@
 computations on their *carriers* (the infinite line or the full circle a segment lies on).
 
 These are the output's geometry (issue "Exact by construction"): every shape of a program has
-an exact outline made of these segments (:mod:`aidl_lang.output.booleans` builds them from the
-solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.exact`),
+an exact outline made of these segments (:mod:`aidl_lang.output.part.booleans` builds them from the
+solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.part.exact`),
 fillets and chamfers are cut on them (:mod:`aidl_lang.geometry.operations`), and every writer
 reads them.  All lengths are in millimetres, angles in radians, counter-clockwise positive,
 y up.

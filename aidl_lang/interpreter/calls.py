@@ -168,7 +168,7 @@ class Calls:
         cuts the solid ``part`` instead of being a part of its own.  Both are in the
         subtree of the structure the statement is written in (validity rule 2, checked by
         the caller); nothing moves in the structure tree, so every constraint keeps its
-        frames: the booleans subtract the hole from the part (output/booleans.py)."""
+        frames: the booleans subtract the hole from the part (output/part/booleans.py)."""
         h, part = conv["hole"], conv["part"]
         hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
         if not isinstance(h, StructRef) or h.struct.kind != "hole":

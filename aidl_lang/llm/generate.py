@@ -395,9 +395,9 @@ def transcript_markdown(res: Result) -> str:
 
 def write_atomic(path: Path, text: str | bytes) -> None:
     """Write ``text`` (UTF-8) or bytes to a temporary file beside ``path``, then rename it over
-    ``path`` (:func:`aidl_lang.output.write.write_atomic`: never over a FIFO, device or
-    directory).  Raises :class:`~aidl_lang.output.write.WriteError`."""
-    from ..output.write import write_atomic as write
+    ``path`` (:func:`aidl_lang.output.writers.write.write_atomic`: never over a FIFO, device or
+    directory).  Raises :class:`~aidl_lang.output.writers.write.WriteError`."""
+    from ..output.writers.write import write_atomic as write
     write(Path(path), text if isinstance(text, bytes) else text.encode("utf-8"))
 
 

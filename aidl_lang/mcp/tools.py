@@ -13,7 +13,7 @@ from pathlib import Path
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
-from ..output.write import write_in_dir
+from ..output.writers.write import write_in_dir
 from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
@@ -205,12 +205,12 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
 
 def _after_compile(r: Result, fn):
     """``fn()`` (reading the exact output of ``r``, a compiled program) or, when that output
-    cannot be made within bounded work (:class:`~aidl_lang.output.part.OutputError`:
+    cannot be made within bounded work (:class:`~aidl_lang.output.part.part.OutputError`:
     thousands of curves on top of each other), None with the located ``E0304`` added to
     ``r``'s diagnostics, which makes ``r`` not ok: an answer, never an internal error."""
     if not r.ok:
         return None
-    from ..output.part import OutputError
+    from ..output.part.part import OutputError
     try:
         return fn()
     except OutputError as e:
@@ -240,7 +240,7 @@ def _mm(value, name: str, example: str, zero: bool = False, most: float | None =
     its unit (``"0.15mm"``, ``"0.25 in"``); None when not given.  Raises :class:`Refused`."""
     if value is None:
         return None
-    from ..output.layout import parse_length
+    from ..output.fabrication.layout import parse_length
     ok = isinstance(value, (str, int, float)) and not isinstance(value, bool)
     v = parse_length(str(value), zero=zero) if ok else None
     if v is None or most is not None and v > most:
@@ -283,7 +283,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
     if style not in ("preview", "laser"):
         raise Refused("style is `preview` or `laser`")
-    from ..output.layout import parse_rotate, parse_sheet
+    from ..output.fabrication.layout import parse_rotate, parse_sheet
     if layout not in (None, "sheet"):
         raise Refused(f"layout is \"sheet\" (the cutting sheets) or not given; got {layout!r}")
     if layout is None and (sheet, gap, rotate) != (None, None, None):
@@ -305,7 +305,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
     thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
-    from ..output.machine import KINDS, MachineError, default, load
+    from ..output.fabrication.machine import KINDS, MachineError, default, load
     try:
         prof = None if machine is None else default(machine) if machine in KINDS else \
             load(ws.inside(machine, must_exist=True))
@@ -331,7 +331,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     if not r.ok:
         return doc, []
     from ..output import MissingDependency, OutputError
-    from ..output.write import check_output_path
+    from ..output.writers.write import check_output_path
     prog = None if path is None else str(ws.inside(path))
     drawn = {"style": style, "width": width, "thickness": thick_mm}
     try:
@@ -388,7 +388,7 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
     described = _after_compile(r, lambda: r.description)
     doc = _summary(ws, r)
     if r.ok:
-        from ..output.describe import describe_text
+        from ..output.checks.describe import describe_text
         doc["describe"] = described
         doc["text"] = describe_text(described)
     return doc
@@ -401,7 +401,7 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
     without following links (:func:`aidl_lang.files.open_dir_beneath`, ``O_NOFOLLOW`` at
     each step), so a folder swapped for a link while the program compiled is refused, never
     written through, and a link at the file itself is refused
-    (:func:`aidl_lang.output.write.write_in_dir`); never over the program file ``program``.
+    (:func:`aidl_lang.output.writers.write.write_in_dir`); never over the program file ``program``.
     Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent, create=True)

@@ -211,7 +211,7 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
     Made from the drawing session ``sid``'s last view drew when it drew this program with
     these values (the page asks for the 3D right after its picture: no second compile), else
     from a fresh compile (another worker drew the picture)."""
-    from ..output.part import OutputError
+    from ..output.part.part import OutputError
     from ..output.writers.glb import to_view_glb
     values = {str(k): str(v) for k, v in (values or {}).items()}
     try:
@@ -325,7 +325,7 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     nested on sheets of that size; several sheets come as a ZIP of one file per sheet)."""
     from .. import api
     from ..output import ASSEMBLED_FORMATS, FORMATS
-    from ..output.part import MissingDependency, OutputError
+    from ..output.part.part import MissingDependency, OutputError
     suffix = "." + str(fmt).lower().lstrip(".")
     if suffix not in FORMATS:
         return {"error": f"unknown format `{fmt}`; use one of "

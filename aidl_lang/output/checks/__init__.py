@@ -1,6 +1,11 @@
 """Geometry checks on the final shape: warnings about parts that solve but come out wrong.
 
-The booleans (:mod:`..booleans`) record each structure's shape and what each hole cut; these
+In: the booleans' :class:`~aidl_lang.output.part.booleans.Drawing`, the exact output model and
+(for the fit check) the assembled product.  Out: W05xx diagnostics on the sink, and what the
+final part is as data and text (:mod:`.describe`, ``aidl check --describe``) and its parts list
+(:mod:`.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
+
+The booleans (:mod:`aidl_lang.output.part.booleans`) record each structure's shape and what each hole cut; these
 checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.codes`).
 :func:`check_drawing` is the one entry point (run by :mod:`aidl_lang.pipeline` and the live
 preview); :func:`check_topology` (W0510) is run beside it when param values are overridden.
@@ -39,7 +44,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...diagnostics import DiagnosticSink
-from ..booleans import Drawing
+from ..part.booleans import Drawing
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _edges, _inside, _inside_loops,
@@ -127,7 +132,7 @@ class _Shares:
     def run(self, family: str, part, fn):
         """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
         None when it was stopped or not run."""
-        from ..nearby import TooManyPairs
+        from ..part.nearby import TooManyPairs
         if family in self.skipped:
             self.skipped[family][1].append(part)
             return None
@@ -148,7 +153,7 @@ class _Shares:
     def guard(self, family: str, part, fn):
         """``fn()`` with no share of its own (it runs on the compile's deadline alone), only
         the pair limit: a family that must end with E0304 rather than stop early."""
-        from ..nearby import TooManyPairs
+        from ..part.nearby import TooManyPairs
         try:
             return fn()
         except TooManyPairs as ex:

@@ -7,14 +7,14 @@
 from __future__ import annotations
 
 from ...diagnostics import DiagnosticSink, Label
-from ..booleans import Drawing
+from ..part.booleans import Drawing
 
 def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     """The fit check of the assembled product (:func:`.assembly.fit`, for a program that
     places its parts with ``Place``): W0517 for two parts whose solids collide (a slot
     narrower than its partner's thickness: the depth is by how much), W0518 for a part that
     touches no other (a tab short of its slot: the gap)."""
-    from ..assembly import extrude, fit, normals_of
+    from ..fabrication.assembly import extrude, fit, normals_of
     parts = [(p.name, p.kind, p.shape, d.thickness.get(p.name)) for p in d.parts]
     hits, gaps = fit(extrude(parts, d.placement, deadline=deadline), deadline,
                      normals_of(d.placement))

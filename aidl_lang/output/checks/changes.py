@@ -9,8 +9,8 @@ import numpy as np
 
 from ...records import Compared
 from ...diagnostics import DiagnosticSink
-from ..booleans import Drawing
-from ..nearby import box_pairs
+from ..part.booleans import Drawing
+from ..part.nearby import box_pairs
 from .common import _area, _part_of, _part_roots, _signed
 from .openings import _analyse
 
@@ -35,7 +35,7 @@ def topology(d: Drawing) -> dict:
     """What W0510 compares, per solid part of ``d`` (:func:`_topology`); empty when the part
     is too dense to compare (more pairs than :data:`..nearby.MAX_PAIRS`: no W0510 then,
     never an unbounded list)."""
-    from ..nearby import TooManyPairs
+    from ..part.nearby import TooManyPairs
     try:
         return _topology(d)
     except TooManyPairs:

@@ -12,7 +12,7 @@ import manifold3d as mf
 import numpy as np
 
 from ...geometry.model import Structure
-from ..booleans import Drawing
+from ..part.booleans import Drawing
 
 MIN_FRACTION = 0.02      # of a hole's or child's area
 MIN_AREA = 0.05          # mm^2

@@ -16,7 +16,7 @@ import manifold3d as mf
 import numpy as np
 
 from ...diagnostics import DiagnosticSink
-from ..booleans import Drawing
+from ..part.booleans import Drawing
 from .common import _edges, _inside, _part_of, _pct, _signed
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
@@ -131,7 +131,7 @@ def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_0
     res = np.zeros(n, dtype=bool)
     if not n or not len(x1):
         return res
-    from ..nearby import TooManyPairs, _Grid, _median
+    from ..part.nearby import TooManyPairs, _Grid, _median
     x, y = pts[:, 0], pts[:, 1]
     lo = np.column_stack([np.minimum(x1, x2), np.minimum(y1, y2)])
     hi = np.column_stack([np.maximum(x1, x2), np.maximum(y1, y2)])
@@ -268,7 +268,7 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
     (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
     items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
-    from ..nearby import box_pairs_between
+    from ..part.nearby import box_pairs_between
     geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
     if not geoms:
         return

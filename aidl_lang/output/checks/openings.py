@@ -32,8 +32,8 @@ from ...records import Compared
 from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
-from ..booleans import Drawing
-from ..nearby import boundary, box_pairs, close_pairs
+from ..part.booleans import Drawing
+from ..part.nearby import boundary, box_pairs, close_pairs
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_boxes, _depth, _edges,
                      _inside, _meets_a_cut, _part_of, _pct, _signed, _significant, _union)
 

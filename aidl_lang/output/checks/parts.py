@@ -17,8 +17,8 @@ import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
 from ...geometry.model import Structure
-from ..booleans import Drawing
-from ..nearby import box_pairs
+from ..part.booleans import Drawing
+from ..part.nearby import box_pairs
 from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others

@@ -13,8 +13,8 @@ import manifold3d as mf
 import numpy as np
 
 from ...diagnostics import DiagnosticSink, Label
-from ..booleans import Drawing
-from ..nearby import box_pairs, box_pairs_between
+from ..part.booleans import Drawing
+from ..part.nearby import box_pairs, box_pairs_between
 from .common import MIN_AREA, _area, _depth, _pct
 from .engravings import (_copy_label, _mark_segments, _open_ends, _polyline, _samples,
                          _seg_gap)

@@ -1,10 +1,10 @@
-"""Checks of through-cuts (a ``cut`` structure's open curves, :class:`~..booleans.Through`):
+"""Checks of through-cuts (a ``cut`` structure's open curves, :class:`~..part.booleans.Through`):
 
 * ``W0522`` a through-cut that cuts nothing: no stretch of it lies on the material of its
   part (it is drawn off the part, or in a hole), or it has no length;
 * ``W0507`` a web thinner than the minimum wall that the through-cuts leave: the morphological
   opening (:func:`.walls._thin`) of the part with every through-cut's band taken out
-  (:attr:`~..booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
+  (:attr:`~..part.booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
   each extra piece of at least ``2 t^2`` mm^2 (the wall check's least) is one warning naming
   the cuts beside it.  The bands are 5e-7 mm wide, so a web's width is measured as between
   the cut lines themselves.
@@ -14,7 +14,7 @@ from __future__ import annotations
 import manifold3d as mf
 
 from ...diagnostics import DiagnosticSink
-from ..booleans import SLIT_HALF, Drawing
+from ..part.booleans import SLIT_HALF, Drawing
 from .walls import _thin
 
 OFF = 1e-3      # of the band's own area: a through-cut with less of it inside cuts nothing

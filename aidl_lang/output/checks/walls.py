@@ -18,8 +18,8 @@ import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
 from ...geometry.model import Structure
-from ..booleans import Drawing
-from ..nearby import _median, box_pairs
+from ..part.booleans import Drawing
+from ..part.nearby import _median, box_pairs
 from .common import _area, _union
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
@@ -145,7 +145,7 @@ def _measure(piece, a: float, t: float, loops: list):
     is the piece's area over that width (its centre line), the place the middle of the
     thinnest pair.  With no facing pair (a wall that bends away), the piece's area over its
     longest side, never above ``t``, at the vertex of the piece nearest its box's centre."""
-    from ..nearby import close_pairs
+    from ..part.nearby import close_pairs
     x0, y0, x1, y1 = piece.bounds()
     pad = 1e-3 + 1e-6 * max(abs(x0), abs(y0), abs(x1), abs(y1))
     near_loops = [P for P in loops if len(P) >= 2
@@ -507,7 +507,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     slit is at least ``t`` and whose sides are edges of two different shapes (a cusp drawn in
     one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
     length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth)."""
-    from ..nearby import close_pairs
+    from ..part.nearby import close_pairs
     from .common import _cut_boxes, _edges, _inside, _meets_a_cut, _signed
     if t <= 0 or not loops:
         return
@@ -597,7 +597,7 @@ def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
     radius that doubles from 1 nm until every point has an edge, or has none within the
     part's box; the least distance wins, the first face in :attr:`Drawing.own`'s order on a tie
     (tests/test_checks_bounded.py holds the per-face loop it replaced, as its reference)."""
-    from ..nearby import close_pairs
+    from ..part.nearby import close_pairs
     points = np.asarray(points, dtype=float).reshape(-1, 2)
     A, Bq, poly, names = [], [], [], []     # the edges, their face (its number in order)
     for st, fs in d.own.items():

@@ -1,6 +1,11 @@
-"""The writers, one module per format, behind one registry: :data:`FORMATS` maps each file
+"""The writers: the exact output model (and the fabrication stage's layout, cut order,
+machine profile, assembly) in, bytes and files out.  The top stage of ``aidl_lang.output``:
+nothing below imports it.  :mod:`.write` holds the output-file rules (staged, never over a
+good file, a FIFO or the program) every front end writes through.
+
+One module per format, behind one registry: :data:`FORMATS` maps each file
 extension to its :class:`Format` (the module and function that turn an
-:class:`~..part.Output` into bytes, its media type, whether a cutter reads it, whether
+:class:`~..part.part.Output` into bytes, its media type, whether a cutter reads it, whether
 ``--assembled`` writes it, its cost), and :func:`encode` writes one.  Every front end (the CLI's
 ``-o``, ``aidl serve``'s downloads, the MCP render tool, ``aidl batch``, the Python API) takes
 its list of formats from here, so adding a format is one module here and one :class:`Format`
@@ -10,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...records import Compared
-from ..part import Output, OutputError
+from ..part.part import Output, OutputError
 
 
 class Options(Compared):
@@ -19,7 +24,7 @@ class Options(Compared):
     ``margin`` (mm around the drawing on the SVG/PNG page; None: 5 % of the larger side, at
     least 1 mm; 0: the page is exactly the drawing's bounding box), ``assembled`` (STL, 3MF,
     STEP, GLB with every part placed by its ``Place``; PNG: a picture of the assembled
-    product), ``machine`` (G-code: a :class:`~..machine.Machine`, a kind's name, a TOML
+    product), ``machine`` (G-code: a :class:`~..fabrication.machine.Machine`, a kind's name, a TOML
     profile's path or a dict of its keys; None: the built-in laser profile), ``page`` (PDF: a
     paper size such as ``A4`` or ``A4-landscape`` the drawing is tiled over,
     :data:`.pdf.PAGES`; None: one page the size of the drawing; the PDF's ``margin`` defaults

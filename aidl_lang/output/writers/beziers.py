@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ..part import Arc, EllipticArc
+from ..part.part import Arc, EllipticArc
 
 MAX_PIECES = 4096          # Bézier pieces of one arc at most (a 40 m radius full circle)
 

@@ -31,8 +31,8 @@ from __future__ import annotations
 import io
 import math
 
-from ..extent import extent
-from ..part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
+from ..part.extent import extent
+from ..part.part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end

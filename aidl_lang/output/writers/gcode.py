@@ -1,9 +1,9 @@
 """G-code writer (GRBL dialect) for lasers, routers and pen plotters (docs/machines.md, "GRBL
 laser", "CNC router").
 
-The program runs the cuts of :func:`~..toolpath.plan` in its order (engraving first, then part
+The program runs the cuts of :func:`~..fabrication.toolpath.plan` in its order (engraving first, then part
 by part every loop inside another before the loop around it, a nearest-neighbour tour) with
-the settings of a machine profile (:mod:`~..machine`; ``Options.machine``, ``aidl render
+the settings of a machine profile (:mod:`~..fabrication.machine`; ``Options.machine``, ``aidl render
 --machine FILE``; the built-in laser profile when none is given).  What it writes:
 
 * ``G21 G90 G17``: millimetres, absolute coordinates, the XY plane; a header of ``;``
@@ -34,7 +34,7 @@ tabs (profile ``tabs``, ``tab_width``) on the outer cuts are gaps run with ``S0`
 ends ``M5``, ``G0 X0 Y0``, ``M2``.
 
 Router (``kind = "router"``): the paths are the cuts offset by the tool radius (outside the
-outlines, inside the holes: :func:`~..layout.compensate` with a kerf of ``tool_diameter``,
+outlines, inside the holes: :func:`~..fabrication.layout.compensate` with a kerf of ``tool_diameter``,
 exact lines and arcs), run in the loops' own direction (outlines counter-clockwise, holes
 clockwise: conventional milling with a clockwise spindle).  ``M3 S<spindle>``, travel at
 ``safe_height`` (``G0 Z``), then down ``depth_per_pass`` at a time (``G1 Z.. F<plunge>``) to
@@ -59,8 +59,8 @@ import math
 from dataclasses import dataclass, field
 
 from ...geometry.curves import reverse
-from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
-from ..machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
+from ..part.part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
+from ..fabrication.machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
 
 GCODE_FORMATS = (".gcode", ".nc")
 DECIMALS = 10          # digits after the point: 1e-10 mm
@@ -117,9 +117,9 @@ def read_summary(data: bytes) -> tuple[str, list[str]]:
 
 
 def machine_of(options):
-    """The :class:`~..machine.Machine` of ``options.machine`` (:func:`~..machine.resolve`;
-    None: the built-in laser).  Raises :class:`~..machine.MachineError`."""
-    from ..machine import resolve
+    """The :class:`~..fabrication.machine.Machine` of ``options.machine`` (:func:`~..fabrication.machine.resolve`;
+    None: the built-in laser).  Raises :class:`~..fabrication.machine.MachineError`."""
+    from ..fabrication.machine import resolve
     return resolve(getattr(options, "machine", None), "laser")
 
 
@@ -333,7 +333,7 @@ def _lead_point(cut, path, lead: float, loop_poly):
     """Where a closed cut's lead-in starts: ``lead`` mm to the right of the path's start
     (the scrap side), or None when that point is not on the scrap side of the loop."""
     from ...geometry.curves import tangent_at
-    from ..toolpath import _inside
+    from ..fabrication.toolpath import _inside
     if lead <= 0 or not cut.closed or not path:
         return None
     tx, ty = tangent_at(path[0], False)
@@ -431,12 +431,12 @@ class _Writer:
 
 def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     """The G-code :class:`Job` of ``output`` (as a cutter reads it: the program's kerf
-    already applied) on ``machine`` (a :class:`~..machine.Machine`; None: the built-in
+    already applied) on ``machine`` (a :class:`~..fabrication.machine.Machine`; None: the built-in
     laser).  ``thickness``: mm a router cuts down to (None: each part's, else
-    :data:`DEFAULT_THICKNESS`).  Raises :class:`~..part.OutputError` (a tool too large for a
+    :data:`DEFAULT_THICKNESS`).  Raises :class:`~..part.part.OutputError` (a tool too large for a
     feature, naming the part)."""
-    from .. import machine as M
-    from ..toolpath import plan
+    from ..fabrication import machine as M
+    from ..fabrication.toolpath import plan
     m = machine or M.default("laser")
     warnings = _warnings(output, m)
     if m.kind == "router":
@@ -455,14 +455,14 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
 
 
 def tool_path(output: Output, diameter: float) -> Output:
-    """``output`` offset by a router's tool radius (:func:`~..layout.compensate` with a kerf
+    """``output`` offset by a router's tool radius (:func:`~..fabrication.layout.compensate` with a kerf
     of ``diameter``: outlines outward, holes inward, exact lines and arcs); ellipse and
     spline pieces are first made arcs (:func:`as_arcs`, within :data:`CURVE_TOL`), whose
-    offset is exact.  Raises :class:`~..part.OutputError` naming the part where the tool is
+    offset is exact.  Raises :class:`~..part.part.OutputError` naming the part where the tool is
     too large for a feature."""
     from ...geometry.curves import Loop
-    from ..layout import LayoutError, compensate
-    from ..part import PartOutline
+    from ..fabrication.layout import LayoutError, compensate
+    from ..part.part import PartOutline
     parts = []
     for p in output.parts:
         if any(isinstance(g, (EllipticArc, Spline)) for lp in p.loops for g in lp.segments):

@@ -3,8 +3,8 @@ part, its mesh (``trimesh``, from :func:`.mesh.bodies`) in the part's colour of 
 view (mm; glTF's y is up, so a viewer turns the product's z up itself)."""
 from __future__ import annotations
 
-from ..assembly import _rgba, colours
-from ..part import Output, OutputError
+from ..fabrication.assembly import _rgba, colours
+from ..part.part import Output, OutputError
 from .mesh import _trimesh, bodies
 
 
@@ -60,13 +60,13 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
     (``baseColorFactor``, linear) instead of a colour per vertex.  One named node per solid
     part, as :func:`to_glb` (mm; glTF's y is up, the viewer turns the product's z up).
     Not a download: the files stay exact (:func:`to_glb`).  Raises
-    :class:`~..part.OutputError` when there is no solid part (a drawing of lines only)."""
+    :class:`~..part.part.OutputError` when there is no solid part (a drawing of lines only)."""
     import hashlib
 
     import manifold3d as mf
     import numpy as np
 
-    from ..assembly import placements
+    from ..fabrication.assembly import placements
     from .mesh import DEFAULT_THICKNESS
     trimesh = _trimesh()
     tol = view_tolerance(output) if tol is None else tol

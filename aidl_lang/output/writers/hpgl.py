@@ -1,5 +1,5 @@
 """HPGL writer (``.plt`` / ``.hpgl``) for vinyl cutters and pen plotters, from the exact output
-model (:class:`~..part.Output`) in the cut order of :func:`~..toolpath.plan`
+model (:class:`~..part.part.Output`) in the cut order of :func:`~..fabrication.toolpath.plan`
 (docs/machines.md, "Vinyl cutter and pen plotter").
 
 What it writes, one command a line (HP-GL/1, which cutters and plotters read alike)::
@@ -33,7 +33,7 @@ What it writes, one command a line (HP-GL/1, which cutters and plotters read ali
   :data:`POLY_SAGITTA` of the curve.
 * The bound: every point the cutter or plotter draws is within :data:`TOLERANCE` = 1 unit
   (0.025 mm) of the design (rounding plus chords).
-* **Order**: :func:`~..toolpath.plan`: engraving and scoring first, then part by part each
+* **Order**: :func:`~..fabrication.toolpath.plan`: engraving and scoring first, then part by part each
   part's inner loops before its outline.  One pen for everything: a vinyl cutter has one knife,
   and a pen plotter user who wants two pens changes the pen after the engraving (it all comes
   first).  ``VS`` sets each operation's speed from the machine profile (``--machine FILE``, the
@@ -46,9 +46,9 @@ from __future__ import annotations
 
 import math
 
-from .. import machine as machine_mod
-from ..extent import extent
-from ..part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
+from ..fabrication import machine as machine_mod
+from ..part.extent import extent
+from ..part.part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
 
 UNITS_PER_MM = 40.0          # plotter units per mm (1016 per inch)
 TOLERANCE = 1.0              # units: the most any drawn point is off the design (0.025 mm)
@@ -61,7 +61,7 @@ MAX_UNITS = 2 ** 23          # 8388608 units = 210 m: past it a plotter's intege
 
 
 def _machine(options):
-    """The machine profile of ``options.machine`` (:func:`~..machine.resolve`: a profile, a
+    """The machine profile of ``options.machine`` (:func:`~..fabrication.machine.resolve`: a profile, a
     kind, a TOML path or a table; None: the built-in plotter profile)."""
     return machine_mod.resolve(getattr(options, "machine", None), "plotter")
 
@@ -221,10 +221,10 @@ def _spline_points(s: Spline, tol: float) -> list:
 
 def to_hpgl(output: Output, options=None) -> str:
     """The HPGL text of ``output`` (see the module docstring); speeds and passes from
-    ``options.machine`` (a :class:`~..machine.Machine`) or the built-in plotter profile.
-    Raises :class:`~..part.OutputError` for a drawing too large for a
+    ``options.machine`` (a :class:`~..fabrication.machine.Machine`) or the built-in plotter profile.
+    Raises :class:`~..part.part.OutputError` for a drawing too large for a
     plotter's coordinates."""
-    from ..toolpath import plan
+    from ..fabrication.toolpath import plan
     m = _machine(options)
     x0, y0, x1, y1 = extent(output)
     if max(x1 - x0, y1 - y0) * UNITS_PER_MM > MAX_UNITS:

@@ -1,5 +1,5 @@
 """LightBurn project writer (``.lbrn2``, LightBurn 1.x and later) for the exact output model
-(:class:`~..part.Output`): a file LightBurn opens with its layers set up (docs/machines.md,
+(:class:`~..part.part.Output`): a file LightBurn opens with its layers set up (docs/machines.md,
 "LightBurn").
 
 The file is XML, as LightBurn writes it: the root ``<LightBurnProject AppVersion=...
@@ -12,9 +12,9 @@ layers are its 30 palette colours, index 0-29), each with ``<index>``, ``<name>`
 mm/s whatever unit its window shows; the machine profile's mm/min / 60), ``<numPasses>`` and
 ``<priority>`` (0-3 in the order above, so that "order by priority" runs engraving first and
 inner cuts before outer ones), all from the machine profile
-(:mod:`~..machine`, ``--machine FILE``; the built-in laser profile without one).
+(:mod:`~..fabrication.machine`, ``--machine FILE``; the built-in laser profile without one).
 
-Then the shapes, in the cut order of :func:`~..toolpath.plan` (engraving first, each part's
+Then the shapes, in the cut order of :func:`~..fabrication.toolpath.plan` (engraving first, each part's
 inner loops before its outline): engraving outside every part first, at the top level, then
 one ``<Shape Type="Group">`` per part (in the order of the parts' first cuts) holding that
 part's shapes in plan order (its engraving, its inner loops, its outline); a comment
@@ -50,8 +50,8 @@ from __future__ import annotations
 import math
 from xml.sax.saxutils import escape, quoteattr
 
-from .. import machine as machine_mod
-from ..part import Arc, Circle, EllipticArc, Line, Output, Spline
+from ..fabrication import machine as machine_mod
+from ..part.part import Arc, Circle, EllipticArc, Line, Output, Spline
 from . import beziers
 
 APP_VERSION = "1.7.00"
@@ -144,7 +144,7 @@ def _path(doc: _Doc, depth: int, index: int, segments, closed: bool) -> None:
 
 
 def _shape(doc: _Doc, depth: int, cut) -> None:
-    """One cut (:class:`~..toolpath.Cut`) as its LightBurn shape."""
+    """One cut (:class:`~..fabrication.toolpath.Cut`) as its LightBurn shape."""
     index = LAYERS[cut.operation][0]
     segs = cut.segments
     if len(segs) == 1 and isinstance(segs[0], Circle):
@@ -167,16 +167,16 @@ def _shape(doc: _Doc, depth: int, cut) -> None:
 
 
 def _machine(options):
-    """The machine profile of ``options.machine`` (:func:`~..machine.resolve`: a profile, a
+    """The machine profile of ``options.machine`` (:func:`~..fabrication.machine.resolve`: a profile, a
     kind, a TOML path or a table; None: the built-in laser profile)."""
     return machine_mod.resolve(getattr(options, "machine", None), "laser")
 
 
 def to_lbrn2(output: Output, options=None) -> str:
     """The ``.lbrn2`` text of ``output`` (see the module docstring); the layers' settings
-    from ``options.machine`` (a :class:`~..machine.Machine`) or the built-in laser profile.
+    from ``options.machine`` (a :class:`~..fabrication.machine.Machine`) or the built-in laser profile.
     (An empty drawing is refused before, by :func:`~aidl_lang.output.writers.encode`.)"""
-    from ..toolpath import plan
+    from ..fabrication.toolpath import plan
     m = _machine(options)
     cuts = plan(output)
     doc = _Doc()

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..part import MissingDependency, Output
+from ..part.part import MissingDependency, Output
 
 DEFAULT_THICKNESS = 3.0
 

@@ -54,8 +54,8 @@ import math
 
 import numpy as np
 
-from ..extent import extent
-from ..part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
+from ..part.extent import extent
+from ..part.part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
 from . import beziers
 
 PT_PER_MM = 72.0 / 25.4
@@ -158,7 +158,7 @@ def label_point(part, strokes=()) -> tuple[tuple[float, float], float]:
     over the part's box inside its material (even-odd over its loops' chords) farthest
     from every loop and every engraving stroke of ``strokes`` (:class:`~.part.Stroke`), and
     that distance; the box's centre (clearance 0) when no grid point is inside."""
-    from ..part import sample_xy
+    from ..part.part import sample_xy
     pts = [lp.points() for lp in part.loops]
     pts = [p for p in pts if len(p) >= 3]
     if not pts:
@@ -303,7 +303,7 @@ def _label(r: int, col: int) -> str:
 
 def _boxes(output: Output) -> list:
     """The exact box of every part and engraving stroke."""
-    from ..extent import _segment_box
+    from ..part.extent import _segment_box
     out = []
     for segs in [[s for lp in p.loops for s in lp.segments] for p in output.parts] + \
             [st.segments for st in output.engrave]:
@@ -321,7 +321,7 @@ def _overlaps(bb, win) -> bool:
 def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
     """The drawing on one page: the window's clip (tiles), the sheet's edge, the cuts, the
     engraving, the part names."""
-    from ..extent import _segment_box
+    from ..part.extent import _segment_box
     ops = ["q", "1 j 1 J"]
     if tiled:          # draw only inside the window: the overlap is the only shared strip
         a, b = pen.p((win[0], win[1])), pen.p((win[2], win[3]))

@@ -16,7 +16,7 @@ import re
 
 import numpy as np
 
-from ..part import MissingDependency, Output, OutputError
+from ..part.part import MissingDependency, Output, OutputError
 from .svg import to_svg
 
 
@@ -86,13 +86,13 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
     each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
     a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
     at twice the size and scaled down (antialiasing).  ``highlight``: :class:`Collision` s
-    drawn over it as red boxes (None: those the fit check finds, :func:`~..assembly.fit`).  ``width`` in pixels (16 to
+    drawn over it as red boxes (None: those the fit check finds, :func:`~..fabrication.assembly.fit`).  ``width`` in pixels (16 to
     4096).  Raises :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
     import math
 
     if not 16 <= width <= 4096:
         raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
-    from ..assembly import _box, _rgba, colours, fit, normals_of, placements, solids
+    from ..fabrication.assembly import _box, _rgba, colours, fit, normals_of, placements, solids
     colour = colours(output)
     bodies = solids(output, thickness)
     if highlight is None:

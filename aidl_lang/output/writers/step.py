@@ -14,7 +14,7 @@ from __future__ import annotations
 import os
 import tempfile
 
-from ..part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
+from ..part.part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
 
 DEFAULT_THICKNESS = 3.0
 
@@ -174,7 +174,7 @@ def to_step(output: Output, thickness: float | None = None, assembled: bool = Fa
     from OCP.TDataStd import TDataStd_Name
     from OCP.TDocStd import TDocStd_Document
     from OCP.XCAFDoc import XCAFDoc_ColorType, XCAFDoc_DocumentTool
-    from ..part import PALETTE
+    from ..part.part import PALETTE
     doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
     shapes = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
     colours = XCAFDoc_DocumentTool.ColorTool_s(doc.Main())

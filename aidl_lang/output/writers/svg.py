@@ -22,8 +22,8 @@ import math
 
 import numpy as np
 
-from ..extent import extent
-from ..part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
+from ..part.extent import extent
+from ..part.part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
                     build)
 
 SHOW = ("holes", "bboxes", "construction")
@@ -31,7 +31,7 @@ STYLES = ("preview", "laser")
 CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
 DIGITS = 9           # decimals of a mm written for lines, arcs and sizes: 1e-9 mm
 HAIRLINE = 0.01      # mm: the laser style's stroke width, in user units (the viewBox is in mm)
-# each part of an assembly is drawn in its colour (:data:`~..part.PALETTE`) over a fill of
+# each part of an assembly is drawn in its colour (:data:`~..part.part.PALETTE`) over a fill of
 # the same colour at PART_FILL_OPACITY, so overlapping parts stay visible
 PART_FILL_OPACITY = 0.18
 

@@ -27,8 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry.curves import Circle, Loop, Segment, reverse
-from .part import Output
+from ...geometry.curves import Circle, Loop, Segment, reverse
+from ..part.part import Output
 
 Point = tuple[float, float]
 

@@ -22,16 +22,16 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ..records import Compared
-from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
+from ...records import Compared
+from ...geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
                                simplify)
-from ..geometry.ellipse import ellipse
-from ..geometry.model import Geometry, Model, Structure
-from ..geometry.hull import hull_loop
-from ..geometry.offset import offset_pieces
-from ..geometry.operations import SplineCorner, finish
-from ..geometry.text import text_strokes
-from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+from ...geometry.ellipse import ellipse
+from ...geometry.model import Geometry, Model, Structure
+from ...geometry.hull import hull_loop
+from ...geometry.offset import offset_pieces
+from ...geometry.operations import SplineCorner, finish
+from ...geometry.text import text_strokes
+from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
 
 CLOSE_TOL = 1e-6
@@ -247,8 +247,8 @@ class Renderer:
         """The exact :class:`Spline` segment of a ``Spline`` geometry at the solved points:
         the whole curve (closed or open); None when the solved points give no spline (two
         consecutive ones moved onto each other)."""
-        from ..geometry.spline import SplineError, bezier_chain, interpolate
-        from ..geometry.primitives import points_of
+        from ...geometry.spline import SplineError, bezier_chain, interpolate
+        from ...geometry.primitives import points_of
         try:
             pts = [self._pt(p) for p in points_of(g)]
             if g.kind == "Bezier":          # the control points as given (closed: back to p0)
@@ -283,7 +283,7 @@ class Renderer:
         """The exact arc of an ``Ellipse(..., start_angle=, end_angle=)`` at its solved
         points: the ellipse of its center, vertex and co-vertex, from its start through its
         midpoint to its end (a mirrored copy runs clockwise)."""
-        from ..geometry.curves import elliptic_arc
+        from ...geometry.curves import elliptic_arc
         c, v, w, s0, m, e = (self._pt(g.points[n]) for n in
                              ("center", "vertex", "co_vertex", "start", "midpoint", "end"))
         arc = elliptic_arc(c, math.dist(c, v), math.dist(c, w),
@@ -295,7 +295,7 @@ class Renderer:
         """The exact segments of an open curve in order: a Polyline's lines, else the one
         :meth:`segment` (none when it has none)."""
         if g.kind == "Polyline":
-            from ..geometry.primitives import points_of
+            from ...geometry.primitives import points_of
             P = [self._pt(p) for p in points_of(g)]
             return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
         seg = self.segment(g)
@@ -304,7 +304,7 @@ class Renderer:
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
         if g.kind == "Polyline":
-            from ..geometry.primitives import points_of
+            from ...geometry.primitives import points_of
             return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
@@ -321,7 +321,7 @@ class Renderer:
             seg = self.spline(g) if g.closed else None
             if seg is None:
                 return None
-            from ..geometry.spline import self_crossings
+            from ...geometry.spline import self_crossings
             cross = self_crossings(seg.curve, self.tick)
             if cross:
                 x, y = seg.curve.at(cross[0][0])
@@ -345,7 +345,7 @@ class Renderer:
             rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
             if rx <= 0 or ry <= 0:
                 return None
-            from ..geometry.bbox import held_rotation
+            from ...geometry.bbox import held_rotation
             c, rot = self._pt(g.points["center"]), held_rotation(g, self.x)
             if rx == ry:
                 return Loop([Circle(c, float(rx))])
@@ -375,12 +375,12 @@ class Renderer:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
         if k == "RoundedRectangle" and g.data.get("corner_radii"):
-            from ..geometry.primitives import points_of
+            from ...geometry.primitives import points_of
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid", "Star") or (k == "Polyline" and g.closed):
-            from ..geometry.primitives import points_of
+            from ...geometry.primitives import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
             if k == "RoundedRectangle":
@@ -393,8 +393,8 @@ class Renderer:
     def drawing2d(self, g: Geometry) -> tuple[list[Loop], list[list]]:
         """The exact loops (holes clockwise) and open paths of a ``Drawing2D`` at its solved
         origin."""
-        from ..geometry.bbox import held_turn
-        from ..geometry.drawing2d import copied, moved
+        from ...geometry.bbox import held_turn
+        from ...geometry.drawing2d import copied, moved
         ox, oy = self._pt(g.points["origin"])
         held, held_paths = g.data["loops"], g.data["paths"]
         turn = held_turn(g, self.x) if g.data.get("mirror_lines") else 0.0
@@ -488,8 +488,8 @@ class Renderer:
         rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
         arcs; a Spline piece's band is :func:`spline_band` (within :data:`STROKE_TOL`; a
         bend tighter than width/2 is E0108 at the call)."""
-        from ..geometry.offset import sweep_loops
-        from ..geometry.spline import SplineError
+        from ...geometry.offset import sweep_loops
+        from ...geometry.spline import SplineError
         h = g.data["width"] / 2
         path = self.stroke_path(g)
         if not path:
@@ -760,7 +760,7 @@ class Renderer:
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
         its ``angle``, else the arc's middle (a circle's top)."""
-        from ..geometry.text import text_strokes_along
+        from ...geometry.text import text_strokes_along
         flip = bool(g.data.get("flip"))
         if along.kind == "Arc":
             arc = self.segment(along)
@@ -1160,7 +1160,7 @@ def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
     true offset everywhere checked (the midpoints of the samples); the ends are half circles
     of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
     bends tighter than ``h`` (the inner side would fold over itself)."""
-    from ..geometry.spline import SplineError, _polish_foot, bez_at, interpolate
+    from ...geometry.spline import SplineError, _polish_foot, bez_at, interpolate
     c, u0, u1 = sg.curve, sg.u0, sg.u1
     span = u1 - u0
 

@@ -21,9 +21,9 @@ import math
 
 import numpy as np
 
-from ..records import Compared
-from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
-from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
+from ...records import Compared
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
+from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
 from .booleans import Drawing
 
 __all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
@@ -170,7 +170,7 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
     runs: wherever exactly two open ends meet, the two strokes become one (one is turned
     round when needed), so a laser runs each run without lifting; a run that comes back to
     its start is a closed stroke.  Strokes of other sources, closed ones and circles stay."""
-    from ..geometry.curves import reverse
+    from ...geometry.curves import reverse
     out: list[Stroke] = []
     groups: dict = {}
     for st in strokes:

@@ -40,11 +40,11 @@ import math
 
 import numpy as np
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line
-from ..geometry.tessellate import CHORD_TOL
+from ...geometry.curves import Arc, Circle, EllipticArc, Line
+from ...geometry.tessellate import CHORD_TOL
 from .inventory import parts_list
-from .layout import _segment_box, part_box
-from .part import Output, PartOutline
+from ..fabrication.layout import _segment_box, part_box
+from ..part.part import Output, PartOutline
 
 __all__ = ["describe", "describe_text"]
 
@@ -249,7 +249,7 @@ def _text_items(output: Output) -> list[dict]:
     owner: dict = {}
     for name, s in d.part_of.items():          # a split part: its own name, not a piece's
         owner.setdefault(s, name)
-    from .part import _part_of
+    from ..part.part import _part_of
     groups: dict = {}
     for style, item, g in d.strokes:
         if g is None or style == "cut":         # a through-cut is cut, not engraved

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .part import Output
+from ..part.part import Output
 
 DEFAULT_THICKNESS = 3.0
 # mm^3 and mm: a smaller common volume, or one thinner than this, is parts touching (faces flush)
@@ -37,7 +37,7 @@ def placements(output: Output) -> dict[str, np.ndarray]:
 def colours(output: Output) -> dict[str, str]:
     """Part name -> ``#rrggbb``: the flat assembly view's colour of each solid part (the SVG
     preview's :data:`~.part.PALETTE`, in the parts' order)."""
-    from .part import PALETTE
+    from ..part.part import PALETTE
     solids = [p for p in output.parts if p.kind == "solid"]
     return {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)}
 

@@ -25,10 +25,10 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from ..geometry.offset import OffsetError, offset_loop
-from .extent import _segment_box
-from .part import MissingDependency, Output, OutputError, PartOutline, Stroke
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.offset import OffsetError, offset_loop
+from ..part.extent import _segment_box
+from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
 
 SAFETY = 0.01        # mm added to the gap around each part: chords, the packer's f32 positions
 INSTALL = "pip install 'aidl-lang[layout]'"
@@ -65,13 +65,13 @@ class Motion:
 
     def segment(self, s):
         if isinstance(s, Spline):          # a rigid motion of the control points is exact
-            from ..geometry.spline import CubicSpline
+            from ...geometry.spline import CubicSpline
             c = s.curve
             moved = CubicSpline(tuple(self.point(p) for p in c.ctrl), c.h, c.closed)
             return Spline(moved, s.u0, s.u1)
         if isinstance(s, EllipticArc):     # the same ellipse turned: its parameter is kept
             e = s.curve
-            from ..geometry.ellipse import ellipse
+            from ...geometry.ellipse import ellipse
             moved, shift = ellipse(self.point(e.center), e.rx, e.ry,
                                    e.rotation + math.radians(self.deg))
             return EllipticArc(moved, s.start_param - shift, s.sweep)
@@ -117,7 +117,7 @@ def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None)
         kerf = output.drawing.kerf
     if not kerf:
         return output
-    from ..limits import OutOfBudget, OutOfMemory, is_out_of_memory
+    from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
     try:
         try:
             return compensate(output, kerf, deadline)
@@ -183,7 +183,7 @@ def _spline_fix(output: Output, e: OffsetError) -> str:
     kind = "Ellipse" if src is not None and src.kind == "Ellipse" else "Spline"
     if src is not None and src.span is not None:
         sp = src.span
-        from ..diagnostics import shown_path
+        from ...diagnostics import shown_path
         at = f" (the {kind} `{src.label}` at {shown_path(sp.file)}:{sp.line}:{sp.col})"
     redraw = "an Ellipse with rx and ry grown" if kind == "Ellipse" else \
         "the spline through points moved out"
@@ -201,7 +201,7 @@ def parse_length(text: str, zero: bool = False) -> float | None:
         return None
     v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
         (m.group(2) or "mm").lower()]
-    from ..limits import MAX_EXTENT
+    from ...limits import MAX_EXTENT
     return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
 
 
@@ -379,7 +379,7 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     def check(n: int) -> None:
         if deadline is None:
             return
-        from ..limits import OutOfBudget
+        from ...limits import OutOfBudget
         try:
             deadline.check("the layout", _assembly(output, solids),
                            seconds + NEST_SECONDS_PER_PAIR * n * n)

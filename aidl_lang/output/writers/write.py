@@ -128,7 +128,7 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
     such as /tmp, the kernel's ``fs.protected_symlinks`` rule), not a read-only file (unless
     ``force``), not a FIFO, device or socket (nor a link to one: :class:`NotRegularFile`).
     Raises :class:`WriteError`."""
-    from .writers import FORMATS
+    from ..writers import FORMATS
     out = Path(path)
     if out.suffix.lower() not in FORMATS:
         raise WriteError(f"cannot tell the format of `{out}` from its extension; use one of "
@@ -322,7 +322,7 @@ def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
     :class:`aidl_lang.files.FileRefused` or ``OSError`` (nothing left behind)."""
     import secrets
 
-    from ..files import CLOEXEC, NOFOLLOW, FileRefused
+    from ...files import CLOEXEC, NOFOLLOW, FileRefused
     shown = shown or name
     if os.sep in name or name in ("", ".", ".."):
         raise FileRefused(f"`{shown}` is not a file name")

@@ -35,11 +35,11 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ..geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
+from ...geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
                                distance_to, ellipse_chords, ellipse_xy, foot, intersect,
                                same_carrier, simplify, spline_chords, spline_xy, tolerance)
-from ..geometry.tessellate import CHORD_TOL, segments_for
-from ..limits import OutOfBudget
+from ...geometry.tessellate import CHORD_TOL, segments_for
+from ...limits import OutOfBudget
 
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end

@@ -10,9 +10,9 @@ laser-cut part can be turned over, though its engraving would then be mirrored).
 """
 from __future__ import annotations
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line
-from .layout import part_box
-from .part import Output, PartOutline
+from ...geometry.curves import Arc, Circle, EllipticArc, Line
+from ..fabrication.layout import part_box
+from ..part.part import Output, PartOutline
 
 SAME = 1e-6
 

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from .part import OutputError
+from ..part.part import OutputError
 
 KINDS = ("laser", "router", "plotter")
 OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer")
