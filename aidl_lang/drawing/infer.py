@@ -38,7 +38,8 @@ from collections import Counter
 from ..geometry.curves import Arc, Line, Loop
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise, rrect_pieces)
-from .program import (_Writer, _containers, _ident, _inside, _num, _pt, _split_parts, _string)
+from .program import (_Writer, _containers, _ident, _inside, _layer_items, _num, _pt,
+                      _string)
 from .read import Drawing, Note
 
 
@@ -288,6 +289,26 @@ def _on_piece(m, s) -> bool:
     return True
 
 
+def _cyclic_runs(segs, start: int, inside) -> list[list]:
+    """The maximal runs of consecutive pieces of the closed loop ``segs`` whose index passes
+    ``inside``, in order, read once round from ``start`` (the first piece of a run)."""
+    n = len(segs)
+    runs: list[list] = []
+    i, seen = start, 0
+    while seen < n:
+        if inside(i):
+            run = []
+            while inside(i) and seen < n:
+                run.append(segs[i])
+                i = (i + 1) % n
+                seen += 1
+            runs.append(run)
+        else:
+            i = (i + 1) % n
+            seen += 1
+    return runs
+
+
 def _split_rect(segs, center, w, h, R):
     made = rrect_pieces(center, w, h, 0.0, [R] * 4)
     # the rectangle's arcs must be the loop's; its lines covered (in part) by the loop's
@@ -302,24 +323,11 @@ def _split_rect(segs, center, w, h, R):
             return None
     # the pieces off the rectangle, in the loop's order, as runs between two side points
     n = len(segs)
-    idx = [i for i, s in enumerate(segs) if s in rest]
-    runs: list[list] = []
+    idx = {i for i, s in enumerate(segs) if s in rest}
     start = next((i for i in range(n) if i in idx and (i - 1) % n not in idx), None)
     if start is None:
         return None
-    i = start
-    seen = 0
-    while seen < n:
-        if i in idx and (i - 1) % n not in idx:
-            run = []
-            while i in idx and len(run) < n:
-                run.append(segs[i])
-                i = (i + 1) % n
-                seen += 1
-            runs.append(run)
-        else:
-            i = (i + 1) % n
-            seen += 1
+    runs = _cyclic_runs(segs, start, lambda i: i in idx)
     hw, hh = w / 2, h / 2
     x0, x1, y0, y1 = center[0] - hw, center[0] + hw, center[1] - hh, center[1] + hh
     depth = min(w, h) / 4
@@ -424,19 +432,7 @@ def _circle_attachments(segs: list):
     if not any(on_base(s) for s in segs) or all(on_base(s) for s in segs):
         return None
     start = next(i for i in range(n) if on_base(segs[i - 1]) and not on_base(segs[i]))
-    runs: list[list] = []
-    i, seen = start, 0
-    while seen < n:
-        if not on_base(segs[i]):
-            run = []
-            while not on_base(segs[i]) and seen < n:
-                run.append(segs[i])
-                i = (i + 1) % n
-                seen += 1
-            runs.append(run)
-        else:
-            i = (i + 1) % n
-            seen += 1
+    runs = _cyclic_runs(segs, start, lambda i: not on_base(segs[i]))
     teeth = []
     for run in runs:
         if not all(isinstance(s, Line) for s in run):
@@ -1385,20 +1381,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     w = _Writer(deadline)
     params = _Params()
     stats = _Stats()
-    used: set = set()
-    items = []
-    for layer, d in layers:
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
-            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
-        if parts and kind == "solid":
-            pieces, loose = _split_parts(d, deadline)
-            base = _ident(layer, set()) if layer else "part"
-            for k, pd in enumerate(pieces):
-                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
-            if loose is not None:
-                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
-        else:
-            items.append((kind, _ident(layer or "part", used), d))
+    items = _layer_items(layers, parts, deadline, source, w.notes)
     items = _copies(items, deadline)
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)

@@ -466,27 +466,7 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
     w = _Writer(deadline)
     w.emit(0, f"# imported from {source} by `aidl import`: edit freely")
     w.emit(0, "units mm")
-    used: set = set()
-    items = []
-    for layer, d in layers:
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
-            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
-        if parts and kind == "solid":
-            pieces, loose = _split_parts(d, deadline)
-            base = _ident(layer, set()) if layer else "part"
-            for k, pd in enumerate(pieces):
-                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
-            if loose is not None:
-                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
-                n = len(loose.paths) + len(loose.ellipses) + len(loose.texts)
-                w.notes.append(Note("W0130", f"{n} path{'s' if n != 1 else ''} or label"
-                                             f"{'s' if n != 1 else ''} of `{source}` lie in no "
-                                             f"part: written as the engraving "
-                                             f"`{items[-1][1]}`",
-                                    "move them into a part, or delete the drawing if they "
-                                    "are notes"))
-        else:
-            items.append((kind, _ident(layer or "part", used), d))
+    items = _layer_items(layers, parts, deadline, source, w.notes)
     multi = len(items) > 1
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -615,3 +595,32 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                                     f"the {MAX_IMPORT_BYTES} bytes a program may have: not "
                                     f"written", too_big)
     return text, notes + more
+
+
+def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> list:
+    """``[(kind, name, drawing)]``: each layer's drawing as the structure it is written as
+    (``drawing`` for an ENGRAVE layer or text alone, else ``solid``), with unique names; with
+    ``parts``, a solid layer's outer loops each a solid of its own (:func:`_split_parts`) and
+    what lies in none an engraving, counted in a ``W0130`` appended to ``notes``."""
+    used: set = set()
+    items = []
+    for layer, d in layers:
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
+            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        if parts and kind == "solid":
+            pieces, loose = _split_parts(d, deadline)
+            base = _ident(layer, set()) if layer else "part"
+            for k, pd in enumerate(pieces):
+                items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
+            if loose is not None:
+                items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
+                n = len(loose.paths) + len(loose.ellipses) + len(loose.texts)
+                notes.append(Note("W0130", f"{n} path{'s' if n != 1 else ''} or label"
+                                             f"{'s' if n != 1 else ''} of `{source}` lie in no "
+                                             f"part: written as the engraving "
+                                             f"`{items[-1][1]}`",
+                                    "move them into a part, or delete the drawing if they "
+                                    "are notes"))
+        else:
+            items.append((kind, _ident(layer or "part", used), d))
+    return items

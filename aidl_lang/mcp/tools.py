@@ -155,18 +155,24 @@ class Workspace:
                 why += (f"; a program imports a drawing with Drawing2D(\"{path}\") "
                         "(DXF and SVG, docs/import.md)")
             raise Refused(why)
-        try:
-            fd = open_beneath(self.root, real.relative_to(self.root))
-            try:
-                data = read_regular(fd, MAX_SOURCE, path)
-            finally:
-                os.close(fd)
-        except OSError as e:
-            raise Refused(f"cannot read `{path}`: {e}") from None
+        data = self.read_bytes(real, MAX_SOURCE, path)
         try:
             return real, decode_program(data, path)
         except SourceRefused as e:
             raise Refused(e.message) from None
+
+    def read_bytes(self, real: Path, limit: int, path: str) -> bytes:
+        """The bytes of ``real`` (a real path :meth:`inside` gave), opened once from the root's
+        folder without following any link, a regular file of at most ``limit`` bytes
+        (``path``: as the agent wrote it, for messages).  Raises :class:`Refused`."""
+        try:
+            fd = open_beneath(self.root, real.relative_to(self.root))
+            try:
+                return read_regular(fd, limit, path)
+            finally:
+                os.close(fd)
+        except OSError as e:
+            raise Refused(f"cannot read `{path}`: {e}") from None
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
@@ -446,14 +452,7 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
         raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
                       f"{MAX_BUDGET:g}; got {budget!r}")
-    try:
-        fd = open_beneath(ws.root, real.relative_to(ws.root))
-        try:
-            data = read_regular(fd, MAX_DRAWING_BYTES, path)
-        finally:
-            os.close(fd)
-    except OSError as e:
-        raise Refused(f"cannot read `{path}`: {e}") from None
+    data = ws.read_bytes(real, MAX_DRAWING_BYTES, path)
     try:
         text, notes = _import(data, path, unit=units, parts=parts, infer=infer,
                               budget=DEFAULT_BUDGET.scaled(k))
