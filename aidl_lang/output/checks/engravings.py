@@ -408,12 +408,13 @@ def _open_ends(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     P = np.vstack([a, b])
     if len(a) == 1:
         return P if float(np.hypot(*(a[0] - b[0]))) > 1e-9 else P[:0]
-    key = [tuple(np.round(x, 9)) for x in P]
-    count: dict = {}
-    for k in key:
-        count[k] = count.get(k, 0) + 1
-    keep = [i for i, k in enumerate(key) if count[k] == 1]
-    return P[keep]
+    key = (np.round(P, 9) + 0.0).view(np.complex128).ravel()     # x + iy; + 0.0: -0.0 is 0.0
+    order = np.argsort(key)             # equal points side by side (np.unique imports numpy.ma)
+    k = key[order]
+    run = np.cumsum(np.r_[True, k[1:] != k[:-1]]) - 1
+    once = np.empty(len(k), dtype=bool)
+    once[order] = np.bincount(run)[run] == 1
+    return P[once]
 
 
 def _shorten_clear(p, q, E0, E1) -> tuple:

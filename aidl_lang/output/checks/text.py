@@ -16,8 +16,8 @@ from ...diagnostics import DiagnosticSink, Label
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs, box_pairs_between
 from .common import MIN_AREA, _area, _depth, _pct
-from .engravings import (_copy_label, _mark_segments, _open_ends, _polyline, _samples,
-                         _seg_gap)
+from .engravings import (_COS32, _SIN32, _copy_label, _mark_segments, _open_ends, _pair_gap,
+                         _polyline, _seg_gap)
 
 TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
 TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
@@ -31,10 +31,11 @@ MIN_CLEAR = 0.3         # mm
 IN_BOX = 0.1            # mm of a mark inside a text's box: it enters the text (between letters)
 
 
-def _text_box(g, items) -> tuple:
-    """The box of a text's pen strokes in the text's own frame (turned by its rotation):
-    ``(polygon 4 x 2 in the model frame, rotation, (u0, v0, u1, v1))``."""
-    P = np.concatenate([np.array([it[1], it[2]], dtype=float) for it in items])
+def _text_box(g, L) -> tuple:
+    """The box of a text's pen strokes ``L`` (k x 2 x 2: each stroke's two ends) in the text's
+    own frame (turned by its rotation): ``(polygon 4 x 2 in the model frame, rotation,
+    (u0, v0, u1, v1))``."""
+    P = L.reshape(-1, 2)
     rot = float(g.data.get("rotation", 0.0) or 0.0)
     c, s_ = math.cos(rot), math.sin(rot)
     u, v = P[:, 0] * c + P[:, 1] * s_, -P[:, 0] * s_ + P[:, 1] * c
@@ -47,8 +48,8 @@ def _text_box(g, items) -> tuple:
 
 def _length_inside(seg: tuple, rot: float, box) -> float:
     """The length (mm) of the segments ``seg`` (starts, ends: k x 2 each) inside ``box``
-    (u0, v0, u1, v1) of the frame turned by ``rot``: each clipped exactly (Liang-Barsky), all
-    in one array operation."""
+    (u0, v0, u1, v1) of the frame turned by ``rot``: :func:`_clipped` summed, after a box
+    test (no segment's box meets the box: 0)."""
     a, b = seg
     c, s_ = math.cos(rot), math.sin(rot)
     x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
@@ -57,6 +58,12 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
     if not ((np.maximum(x, bx) >= u0) & (np.minimum(x, bx) <= u1) & (np.maximum(y, by) >= v0)
             & (np.minimum(y, by) <= v1)).any():
         return 0.0              # no segment's box meets the box: nothing inside (box test first)
+    return float(_clipped(x, y, bx, by, u0, v0, u1, v1).sum())
+
+
+def _clipped(x, y, bx, by, u0, v0, u1, v1) -> np.ndarray:
+    """The length of each segment (x, y)-(bx, by) inside the box u0..u1 x v0..v1 (all in the
+    box's frame; the bounds one for all or one per segment): Liang-Barsky clipping."""
     dx, dy = bx - x, by - y
     t0, t1 = np.zeros(len(x)), np.ones(len(x))
     for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
@@ -66,7 +73,19 @@ def _length_inside(seg: tuple, rot: float, box) -> float:
         t1 = np.where(par & (q_ < 0), 0.0, t1)           # parallel and outside
         t0 = np.where(~par & (p_ < 0), np.maximum(t0, r), t0)
         t1 = np.where(~par & (p_ > 0), np.minimum(t1, r), t1)
-    return float((np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)).sum())
+    return np.clip(t1 - t0, 0.0, None) * np.hypot(dx, dy)
+
+
+def _combos(pairs, a_off, a_len, b_off, b_len) -> tuple:
+    """Every (row of A, row of B) of each pair ``(i, j)`` of ``pairs``, where set ``i`` of A
+    holds rows ``a_off[i]`` to ``a_off[i] + a_len[i]`` (likewise B): ``(pair, row of A, row
+    of B)``, three arrays of the sum over the pairs of ``a_len[i] * b_len[j]``."""
+    i, j = pairs[:, 0], pairs[:, 1]
+    na, nb = a_len[i], b_len[j]
+    n = na * nb
+    pair = np.repeat(np.arange(len(pairs)), n)
+    local = np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n, n)
+    return pair, a_off[i][pair] + local // nb[pair], b_off[j][pair] + local % nb[pair]
 
 
 def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
@@ -91,7 +110,9 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     if not texts:
         return
     tg = list(texts)
-    boxes = [_text_box(g, texts[g]) for g in tg]
+    strokes = [np.array([(it[1], it[2]) for it in texts[g]], dtype=float).reshape(-1, 2, 2)
+               for g in tg]              # each text's strokes: k x 2 x 2
+    boxes = [_text_box(g, L) for g, L in zip(tg, strokes)]
     made: dict = {}
 
     def shape(k):             # a text's box as a CrossSection, made when a pair needs it
@@ -140,37 +161,108 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                           "further apart (a larger radius or step), or make them smaller")
     if not marks:
         return
-    _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick)
+    _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick)
 
 
-def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> None:
+class _Segments:
+    """Sets of segments in one array: ``a``, ``b`` (k x 2: each segment's ends), ``lo``,
+    ``hi`` (k x 2: its box), and set ``i`` as rows ``off[i]`` to ``off[i] + n[i]``."""
+
+    def __init__(self, sets):
+        self.n = np.array([len(a) for a, _ in sets], dtype=np.intp)
+        self.off = np.cumsum(self.n) - self.n
+        self.a = np.concatenate([a for a, _ in sets]).reshape(-1, 2)
+        self.b = np.concatenate([b for _, b in sets]).reshape(-1, 2)
+        self.lo, self.hi = np.minimum(self.a, self.b), np.maximum(self.a, self.b)
+
+    def boxes(self) -> np.ndarray:
+        """Each set's box (x0, y0, x1, y1); a set of no segments gets an empty (inverted) box."""
+        out = np.tile([np.inf, np.inf, -np.inf, -np.inf], (len(self.n), 1))
+        has = self.n > 0
+        if has.any():
+            out[has, :2] = np.minimum.reduceat(self.lo, self.off[has], axis=0)
+            out[has, 2:] = np.maximum.reduceat(self.hi, self.off[has], axis=0)
+        return out
+
+
+CHUNK = 1 << 20     # rows measured at once by the array passes below (about 100 MB at most)
+
+
+def _chunks(pairs, rows, tick=None):
+    """``pairs`` cut into runs of about :data:`CHUNK` ``rows`` (one figure per pair) each:
+    ``(start, run)``; ``tick()`` before each run after the first."""
+    ends = np.cumsum(rows)
+    start = 0
+    while start < len(pairs):
+        stop = max(int(np.searchsorted(ends, (ends[start - 1] if start else 0) + CHUNK,
+                                       side="right")), start + 1)
+        if start and tick is not None:
+            tick()
+        yield start, pairs[start:stop]
+        start = stop
+
+
+def _inside_by_pair(pairs, rot, boxes, M: _Segments, tick=None) -> list:
+    """For each pair ``(text i, mark j)`` and each of ``boxes`` (n x 4 each: u0, v0, u1, v1
+    of each text in the frame turned by ``rot[i]``): the length (mm) of mark ``j``'s segments
+    inside text ``i``'s box, all pairs in a few array operations (:func:`_clipped`)."""
+    out = [np.zeros(len(pairs)) for _ in boxes]
+    one = np.ones(len(rot), dtype=np.intp)
+    for start, run in _chunks(pairs, M.n[pairs[:, 1]], tick):
+        pair, _, row = _combos(run, np.arange(len(rot)), one, M.off, M.n)
+        i = run[pair, 0]
+        a, b = M.a[row], M.b[row]
+        c, s_ = np.cos(rot[i]), np.sin(rot[i])
+        x, y = a[:, 0] * c + a[:, 1] * s_, -a[:, 0] * s_ + a[:, 1] * c
+        bx, by = b[:, 0] * c + b[:, 1] * s_, -b[:, 0] * s_ + b[:, 1] * c
+        for k, box in enumerate(boxes):
+            length = _clipped(x, y, bx, by, *box[i].T)
+            out[k][start:start + len(run)] = np.bincount(pair, weights=length,
+                                                         minlength=len(run))
+    return out
+
+
+def _segment_sets(marks, mg) -> dict:
+    """:func:`~.engravings._mark_segments` of each mark of ``mg``: the marks that are one
+    circle (rings, holes' outlines) taken together in one array operation (the same
+    floating-point operations per point as :func:`~.engravings._sample`)."""
+    out = {}
+    circles = [m for m in mg if len(marks[m]) == 1 and marks[m][0][0] == "circle"]
+    if circles:
+        C = np.array([marks[m][0][1] for m in circles], dtype=float)
+        R = np.array([float(marks[m][0][2]) for m in circles])[:, None]
+        P = np.stack([C[:, :1] + R * _COS32, C[:, 1:] + R * _SIN32], axis=-1)   # n x 32 x 2
+        Q = np.roll(P, -1, axis=1)
+        out = {m: (P[k], Q[k]) for k, m in enumerate(circles)}
+    return {m: out[m] if m in out else _mark_segments(marks[m]) for m in mg}
+
+
+def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> None:
     """W0513 for engraved marks against texts: a mark that runs through a text (below), then
-    the marks that come too close (:func:`_check_clearance`)."""
+    the marks that come too close (:func:`_check_clearance`).  Every text and mark whose
+    boxes meet is measured in one array pass (:func:`_inside_by_pair`); only the pairs found
+    are reported one by one."""
     mg = list(marks)
-    mpts = [_samples(marks[g]) for g in mg]
-    mb = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in mpts],
-                  dtype=float)
+    segs = _segment_sets(marks, mg)
+    M = _Segments(list(segs.values()))
+    mb = M.boxes()
     n = len(tg)
-    segs: dict = {}
-    pairs = box_pairs_between(bb, mb) + (0, n)        # (text, n + mark), in order
-    for i, j in pairs.tolist():
+    pairs = box_pairs_between(bb, mb)                   # (text, mark), in order
+    rot = np.array([b[1] for b in boxes], dtype=float)
+    full = np.array([b[2] for b in boxes], dtype=float)
+    e = TEXT_MARGIN * np.array(sizes, dtype=float)
+    inner = full + np.column_stack([e, e, -e, -e])
+    through, inside = _inside_by_pair(pairs, rot, (inner, full), M, tick)
+    for k, (i, j) in enumerate(pairs.tolist()):
         if tg[i] in said:
             continue
         if tick is not None:
             tick()
-        g, m = tg[i], mg[j - n]
-        size = float(g.data.get("size", 0.0) or 0.0) or (boxes[i][2][3] - boxes[i][2][1])
-        u0, v0, u1, v1 = boxes[i][2]
-        e = TEXT_MARGIN * size
-        inner = (u0 + e, v0 + e, u1 - e, v1 - e)
-        if inner[0] >= inner[2] or inner[1] >= inner[3]:
+        g, m = tg[i], mg[j]
+        size = sizes[i]
+        if inner[i, 0] >= inner[i, 2] or inner[i, 1] >= inner[i, 3]:
             continue
-        if boxes[i][1] == 0.0 and (inner[0] > mb[j - n, 2] or mb[j - n, 0] > inner[2]
-                                   or inner[1] > mb[j - n, 3] or mb[j - n, 1] > inner[3]):
-            continue                  # the mark's box misses the (unturned) inner box
-        if m not in segs:
-            segs[m] = _mark_segments(marks[m])
-        length = _length_inside(segs[m], boxes[i][1], inner)
+        length = float(through[k])
         if length <= max(0.2, 0.25 * size):
             continue
         said.add(g)
@@ -180,7 +272,10 @@ def _check_marks(texts, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> N
                      g.span, labels=labels,
                      hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
                           "it: e.g. further out along the same direction), or shorten the mark")
-    _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink, tick)
+    entering = {(i, j) for (i, j), x in zip(pairs.tolist(), inside)
+                if x > IN_BOX - 1e-9 and tg[i].data.get("along") is None}
+    _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs,
+                     M, entering, sink, tick)
 
 
 def _clear_of(tseg, mseg, rot, box, c: float, shift=(0.0, 0.0)) -> bool:
@@ -218,8 +313,35 @@ def _gap_below(tseg, lo, hi, q, c: float) -> float:
     return _seg_gap(tseg[0][near], tseg[1][near], q[None], q[None])[0]
 
 
-def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sink,
-                     tick=None) -> None:
+def _near_pairs(strokes, pairs, bb, mb, clear, M: _Segments, tick=None) -> set:
+    """The pairs ``(text i, mark j)`` of ``pairs`` with a stroke of text ``i`` (``strokes[i]``,
+    k x 2 x 2) and a segment of mark ``j`` nearer than the text's clearance ``clear[i]`` (mm,
+    to 1e-9): every stroke and segment whose boxes come that near, measured in one array pass
+    (:func:`~.engravings._pair_gap`); the other pairs are farther apart."""
+    if not len(pairs):
+        return set()
+    c = np.asarray(clear, dtype=float)
+    i, j = pairs[:, 0], pairs[:, 1]
+    ci = c[i]
+    pairs = pairs[(bb[i, 0] - mb[j, 2] <= ci) & (mb[j, 0] - bb[i, 2] <= ci)
+                  & (bb[i, 1] - mb[j, 3] <= ci) & (mb[j, 1] - bb[i, 3] <= ci)]
+    T = _Segments([(L[:, 0], L[:, 1]) for L in strokes])
+    near: set = set()
+    for _, run in _chunks(pairs, T.n[pairs[:, 0]] * M.n[pairs[:, 1]], tick):
+        pair, a, b = _combos(run, T.off, T.n, M.off, M.n)
+        cp = c[run[pair, 0]]
+        ok = ((T.lo[a, 0] - cp <= M.hi[b, 0]) & (T.hi[a, 0] + cp >= M.lo[b, 0])
+              & (T.lo[a, 1] - cp <= M.hi[b, 1]) & (T.hi[a, 1] + cp >= M.lo[b, 1]))
+        if not ok.any():
+            continue
+        pair, a, b, cp = pair[ok], a[ok], b[ok], cp[ok]
+        d = _pair_gap(T.a[a], T.b[a], M.a[b], M.b[b])[0]
+        near.update(map(tuple, run[pair[d < cp + 1e-9]].tolist()))
+    return near
+
+
+def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M, entering,
+                     sink, tick=None) -> None:
     """W0513 for an engraved mark that comes closer to a text's strokes than the text's
     clearance (:data:`TEXT_CLEAR` of its size, at least :data:`MIN_CLEAR`) or enters the
     text's box by more than :data:`IN_BOX` (between its letters: a clock's 12 o'clock tick
@@ -228,36 +350,36 @@ def _check_clearance(texts, marks, tg, mg, boxes, bb, mb, sizes, said, segs, sin
     naming the copies (``ticks[0]``), with the gap in mm, the other pairs, and the fix: how
     much shorter the mark (a straight line ending at the text) or how far the text must
     move.  Texts along a curve are measured by their strokes only (their box is not the
-    text's)."""
-    n = len(tg)
+    text's).  Only the pairs that may be too close are measured one by one: those with a
+    stroke and a segment nearer than the clearance (:func:`_near_pairs`) and ``entering``,
+    the pairs whose mark is inside the text's box by more than :data:`IN_BOX`."""
     clear = [max(TEXT_CLEAR * s, MIN_CLEAR) for s in sizes]
+    pairs = box_pairs_between(bb, mb, max(clear))
+    maybe = entering | _near_pairs(strokes, pairs, bb, mb, clear, M, tick)
     tsegs: dict = {}
     ends_of: dict = {}          # a mark's open ends, taken once for all the texts near it
     found: dict = {}
-    for i, j in (box_pairs_between(bb, mb, max(clear)) + (0, n)).tolist():
-        if tg[i] in said:
+    for i, j in pairs.tolist():
+        if tg[i] in said or (i, j) not in maybe:
             continue
         if tick is not None:
             tick()
-        g, m = tg[i], mg[j - n]
+        g, m = tg[i], mg[j]
         c = clear[i]
-        if (bb[i, 0] - mb[j - n, 2] > c or mb[j - n, 0] - bb[i, 2] > c
-                or bb[i, 1] - mb[j - n, 3] > c or mb[j - n, 1] - bb[i, 3] > c):
+        if (bb[i, 0] - mb[j, 2] > c or mb[j, 0] - bb[i, 2] > c
+                or bb[i, 1] - mb[j, 3] > c or mb[j, 1] - bb[i, 3] > c):
             continue
         if g not in tsegs:
-            L = np.array([(it[1], it[2]) for it in texts[g]], dtype=float)
-            tsegs[g] = (L[:, 0], L[:, 1])
-        if m not in segs:
-            segs[m] = _mark_segments(marks[m])
+            tsegs[g] = (strokes[i][:, 0], strokes[i][:, 1])
         box = None if g.data.get("along") is not None else boxes[i][2]
         # box tests first: the boxes' gap is at most the strokes' gap, and a mark whose box
         # misses the text's box has no length inside it
-        far = math.hypot(max(bb[i, 0] - mb[j - n, 2], mb[j - n, 0] - bb[i, 2], 0.0),
-                         max(bb[i, 1] - mb[j - n, 3], mb[j - n, 1] - bb[i, 3], 0.0)) > c + 1e-9
+        far = math.hypot(max(bb[i, 0] - mb[j, 2], mb[j, 0] - bb[i, 2], 0.0),
+                         max(bb[i, 1] - mb[j, 3], mb[j, 1] - bb[i, 3], 0.0)) > c + 1e-9
         if far and box is None:
             continue
-        apart = (bb[i, 0] > mb[j - n, 2] or mb[j - n, 0] > bb[i, 2]
-                 or bb[i, 1] > mb[j - n, 3] or mb[j - n, 1] > bb[i, 3])
+        apart = (bb[i, 0] > mb[j, 2] or mb[j, 0] > bb[i, 2]
+                 or bb[i, 1] > mb[j, 3] or mb[j, 1] > bb[i, 3])
         inside = 0.0 if box is None or apart else _length_inside(segs[m], boxes[i][1], box)
         if far and inside <= IN_BOX:
             continue
