@@ -248,7 +248,7 @@ class Renderer:
         the whole curve (closed or open); None when the solved points give no spline (two
         consecutive ones moved onto each other)."""
         from ...geometry.spline import SplineError, bezier_chain, interpolate
-        from ...geometry.primitives import points_of
+        from ...geometry.members import points_of
         try:
             pts = [self._pt(p) for p in points_of(g)]
             if g.kind == "Bezier":          # the control points as given (closed: back to p0)
@@ -295,7 +295,7 @@ class Renderer:
         """The exact segments of an open curve in order: a Polyline's lines, else the one
         :meth:`segment` (none when it has none)."""
         if g.kind == "Polyline":
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             P = [self._pt(p) for p in points_of(g)]
             return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
         seg = self.segment(g)
@@ -304,7 +304,7 @@ class Renderer:
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
         if g.kind == "Polyline":
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
@@ -375,12 +375,12 @@ class Renderer:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
         if k == "RoundedRectangle" and g.data.get("corner_radii"):
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid", "Star") or (k == "Polyline" and g.closed):
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
             if k == "RoundedRectangle":
