@@ -342,7 +342,7 @@ def _curve_points(r, g) -> list:
     if g.kind == "Point":
         return [cen_xy(r, g.points["p"] if "p" in g.points else next(iter(g.points.values())))]
     if g.kind == "Polyline":
-        from aidl_lang.geometry.primitives import points_of
+        from aidl_lang.geometry.members import points_of
         return [cen_xy(r, p) for p in points_of(g)]
     seg = Renderer(r.compiled.model).segment(g)
     if isinstance(seg, Line):

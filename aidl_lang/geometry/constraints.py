@@ -13,7 +13,7 @@ import math
 from .bbox import BBTerm
 from .expr import Expr, Lin, _new, add, evaluate, func, hypot, mul, sub, var
 from .model import Equation, equation
-from .primitives import _pv, member
+from .members import _pv, member
 from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
 
 

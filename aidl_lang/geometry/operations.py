@@ -420,7 +420,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
 def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
     """The mirror image of ``target`` about the line ``about`` (its copy ``name``, or
     ``name[k]`` for the k-th item of a mirrored list)."""
-    from .primitives import member
+    from .members import member
     line = about.geom
     a, b = member(line, "start", S), member(line, "end", S)
     ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
@@ -613,7 +613,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
     placed on the first point, a copy moved onto each other point; the points are a
     Rectangle's corners (bottom_left, bottom_right, top_right, top_left), each ``inset``
     toward the center along the rectangle's own sides, or the list ``at``."""
-    from .primitives import _pv
+    from .members import _pv
     S = ctx.struct
     span = ctx.cur_span
     if "at" in args:
@@ -651,7 +651,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         # placing its box's center would pull its extreme shapes apart)
         _rigid(ctx, [target])
     if isinstance(target, GeomRef):
-        from .primitives import member
+        from .members import member
         ref = member(target.geom, "center", S)
     if not isinstance(ref, PV):
         ref = ctx.member(ctx.member(target, "bb", span), "center", span)
@@ -702,7 +702,7 @@ def _corner_points(ctx, v, S, kind: str) -> list:
     point; two lines (the corner where they meet); a line (both ends); a shape (its outline
     corners); or a list of these."""
     from .constraints import _kind
-    from .primitives import member, points_of
+    from .members import member, points_of
     if isinstance(v, PV):
         return [v]
     if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
@@ -728,7 +728,7 @@ def _corner_points(ctx, v, S, kind: str) -> list:
             return [member(g, "start", S), member(g, "end", S)]
         pts = points_of(g) if g.closed else []
         if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
-            from .primitives import _pv
+            from .members import _pv
             return [_pv(p, S) for p in pts]
     raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
                          f"a polygonal shape, or a list of these; got {_kind(v)}")

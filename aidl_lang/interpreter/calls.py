@@ -10,8 +10,9 @@ from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean, shown_path
 from ..geometry.constraints import BUILDERS, ConstraintError
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
+from ..geometry.members import member as geom_member
 from ..geometry.model import Constraint, Equation, Point, Scalar
-from ..geometry.primitives import PrimitiveError, build, member as geom_member
+from ..geometry.primitives import PrimitiveError, build
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
 from ..limits import MAX_EXTENT

@@ -10,7 +10,7 @@ from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift
-from ..geometry.primitives import member as geom_member, member_names
+from ..geometry.members import member as geom_member, member_names
 from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                dim_name, mul_dim, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)

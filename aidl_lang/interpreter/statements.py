@@ -11,7 +11,7 @@ from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
-from ..geometry.primitives import member as geom_member
+from ..geometry.members import member as geom_member
 from ..geometry.expr import Lin, _new
 from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_TEMPLATE_DEPTH

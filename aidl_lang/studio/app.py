@@ -291,9 +291,27 @@ def create_app(settings: Settings | None = None) -> Starlette:
         import tempfile
         settings.data = tempfile.mkdtemp(prefix="aidl-studio-")
     st = Studio(settings)
-    page = st.static["index.html"]
-    csp = {False: _csp(page, False), True: _csp(page, True)}
+    guarded = _guard(st)
+    routes = (_page_routes(st) + _reference_routes(st, guarded) + _session_routes(st, guarded)
+              + _compile_routes(st, guarded) + _operator_routes(st))
 
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        try:
+            yield
+        finally:
+            await run_in_threadpool(st.stop)
+
+    app = Starlette(routes=routes, lifespan=lifespan,
+                    middleware=[Middleware(RequestMetrics, metrics=st.metrics, routes=routes)])
+    app.state.studio = st
+    return app
+
+
+def _guard(st: Studio):
+    """``guarded(handler, cost)``: the handler behind the client's rate (``cost`` hits) and the
+    sessions' sweep, its refusals (:class:`Limited`, :class:`Refused`, the store down) as JSON
+    answers."""
     def guarded(handler, cost: int = 1):
         async def endpoint(request: Request):
             try:
@@ -311,6 +329,13 @@ def create_app(settings: Settings | None = None) -> Starlette:
                                "the studio's store (Redis) does not answer; your design is "
                                "kept in this page, try again in a few seconds", 5, busy=True)
         return endpoint
+    return guarded
+
+
+def _page_routes(st: Studio) -> list[Route]:
+    """``/``, ``/embed`` (the page, with its Content-Security-Policy) and ``/static/NAME``."""
+    page = st.static["index.html"]
+    csp = {False: _csp(page, False), True: _csp(page, True)}
 
     def page_response(embed: bool) -> Response:
         return Response(page, media_type=TYPES["html"],
@@ -333,6 +358,14 @@ def create_app(settings: Settings | None = None) -> Starlette:
         kind = TYPES.get(name.rsplit(".", 1)[-1], "application/octet-stream")
         return Response(data, media_type=kind, headers={"Cache-Control": "public, max-age=3600",
                                                         "X-Content-Type-Options": "nosniff"})
+
+    return [Route("/", index), Route("/embed", embed), Route("/static/{name:path}", static)]
+
+
+def _reference_routes(st: Studio, guarded) -> list[Route]:
+    """What the page reads and no session holds: ``/api/config``, the gallery
+    (``/api/gallery``, ``/api/gallery/ID``, ``/api/thumb/ID.svg``) and ``/api/docs``."""
+    settings = st.settings
 
     async def config(request):
         from ..output import FORMATS
@@ -386,6 +419,16 @@ def create_app(settings: Settings | None = None) -> Starlette:
         text, found = lookup_text(name)
         return JSONResponse({"text": text if found else None})
 
+    return [Route("/api/config", config),
+            Route("/api/gallery", guarded(gallery_list)),
+            Route("/api/gallery/{id:path}", guarded(gallery_entry)),
+            Route("/api/thumb/{id:path}.svg", guarded(thumb)),
+            Route("/api/docs", guarded(docs))]
+
+
+def _session_routes(st: Studio, guarded) -> list[Route]:
+    """A tab's session and its files: ``/api/session``, ``/api/close``, ``/api/files``,
+    ``/api/upload`` (with ``&import=`` the drawing as a program) and ``/api/delete``."""
     async def session(request):
         sid = new_id()
         st.folders.folder(sid)
@@ -428,6 +471,18 @@ def create_app(settings: Settings | None = None) -> Starlette:
         doc = await read_json(request)
         st.folders.delete(doc.get("sid", ""), doc.get("name", ""))
         return JSONResponse({"files": st.folders.files(doc.get("sid", ""))})
+
+    return [Route("/api/session", guarded(session), methods=["POST"]),
+            Route("/api/close", guarded(close), methods=["POST"]),
+            Route("/api/files", guarded(files)),
+            Route("/api/upload", guarded(upload, 4), methods=["POST"]),
+            Route("/api/delete", guarded(delete), methods=["POST"])]
+
+
+def _compile_routes(st: Studio, guarded) -> list[Route]:
+    """What a compile worker answers: ``/api/view``, ``/api/download/FORMAT``, ``/api/glb``,
+    and the model loop ``/api/describe``."""
+    settings = st.settings
 
     async def view(request):
         doc = await read_json(request)
@@ -493,6 +548,14 @@ def create_app(settings: Settings | None = None) -> Starlette:
         return StreamingResponse(events(), media_type="application/x-ndjson",
                                  headers={"Cache-Control": "no-store"})
 
+    return [Route("/api/view", guarded(view), methods=["POST"]),
+            Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
+            Route("/api/glb", guarded(glb), methods=["POST"]),
+            Route("/api/describe", guarded(describe, 20), methods=["POST"])]
+
+
+def _operator_routes(st: Studio) -> list[Route]:
+    """For the operator: ``/api/stats`` (this machine only), ``/healthz`` and ``/metrics``."""
     async def stats(request):
         # for the operator and the load test: answered to this machine only
         if not request.client or request.client.host not in ("127.0.0.1", "::1"):
@@ -509,34 +572,4 @@ def create_app(settings: Settings | None = None) -> Starlette:
     async def metrics(request):
         return await run_in_threadpool(st.metrics.response)
 
-    @contextlib.asynccontextmanager
-    async def lifespan(app):
-        try:
-            yield
-        finally:
-            await run_in_threadpool(st.stop)
-
-    routes = [
-        Route("/", index), Route("/embed", embed),
-        Route("/static/{name:path}", static),
-        Route("/api/config", config),
-        Route("/api/gallery", guarded(gallery_list)),
-        Route("/api/gallery/{id:path}", guarded(gallery_entry)),
-        Route("/api/thumb/{id:path}.svg", guarded(thumb)),
-        Route("/api/docs", guarded(docs)),
-        Route("/api/session", guarded(session), methods=["POST"]),
-        Route("/api/close", guarded(close), methods=["POST"]),
-        Route("/api/files", guarded(files)),
-        Route("/api/upload", guarded(upload, 4), methods=["POST"]),
-        Route("/api/delete", guarded(delete), methods=["POST"]),
-        Route("/api/view", guarded(view), methods=["POST"]),
-        Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
-        Route("/api/glb", guarded(glb), methods=["POST"]),
-        Route("/api/describe", guarded(describe, 20), methods=["POST"]),
-        Route("/api/stats", stats),
-        Route("/healthz", healthz), Route("/metrics", metrics),
-    ]
-    app = Starlette(routes=routes, lifespan=lifespan,
-                    middleware=[Middleware(RequestMetrics, metrics=st.metrics, routes=routes)])
-    app.state.studio = st
-    return app
+    return [Route("/api/stats", stats), Route("/healthz", healthz), Route("/metrics", metrics)]

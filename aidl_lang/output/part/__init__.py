@@ -6,6 +6,9 @@ what each hole cut, which the checks read) and :class:`~.part.Output` (lines, ar
 splines per part, engraving strokes; mm, y up), which fabrication and every writer read.
 
 * :mod:`.booleans`: the structures through Manifold's booleans (unions, cuts, engraving);
+* :mod:`.outlines`: the exact outline of each shape kind (slots, sectors, rounded
+  rectangles, a Stroke's band along a spline) that the booleans are made from;
+* :mod:`.placement`: the 4x4 matrices of ``Place`` (the sheet to the assembled product);
 * :mod:`.exact`: the provenance of each polygon edge, its exact curve;
 * :mod:`.part`: the exact curves put back on the booleans' result (:func:`~.part.build`);
 * :mod:`.extent`: exact extents of an output;

@@ -1,9 +1,9 @@
 """From solved model to 2D shapes (Manifold booleans), keeping the exact curves.
 
-Every closed shape has an exact outline (:mod:`aidl_lang.geometry.curves`: a slot is two lines
-and two half circles meeting at their tangent points, a rounded rectangle four lines and four
-quarter arcs, a full round one two lines and two half circles; lines and arcs whose endpoints
-meet in a cycle become one loop).  A solid is the union of its faces and solid children minus
+Every closed shape has an exact outline (:mod:`aidl_lang.geometry.curves`, made by
+:mod:`.outlines`: a slot is two lines and two half circles meeting at their tangent points, a
+rounded rectangle four lines and four quarter arcs, a full round one two lines and two half
+circles; lines and arcs whose endpoints meet in a cycle become one loop).  A solid is the union of its faces and solid children minus
 its hole children; a hole is the union of its faces; assembly children stay separate parts;
 drawing geometry is drawn as lines.  Booleans use ``manifold3d.CrossSection`` on the outlines
 tessellated within ``CHORD_TOL`` (0.005 mm); :class:`~.exact.Provenance` records which exact
@@ -23,8 +23,7 @@ import manifold3d as mf
 import numpy as np
 
 from ...records import Compared
-from ...geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse,
-                               simplify)
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse
 from ...geometry.ellipse import ellipse
 from ...geometry.model import Geometry, Model, Structure
 from ...geometry.hull import hull_loop
@@ -33,6 +32,10 @@ from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
+from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot_outline,
+                       rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
+                       spline_band)
+from .placement import placement_matrix
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
@@ -248,7 +251,7 @@ class Renderer:
         the whole curve (closed or open); None when the solved points give no spline (two
         consecutive ones moved onto each other)."""
         from ...geometry.spline import SplineError, bezier_chain, interpolate
-        from ...geometry.primitives import points_of
+        from ...geometry.members import points_of
         try:
             pts = [self._pt(p) for p in points_of(g)]
             if g.kind == "Bezier":          # the control points as given (closed: back to p0)
@@ -295,7 +298,7 @@ class Renderer:
         """The exact segments of an open curve in order: a Polyline's lines, else the one
         :meth:`segment` (none when it has none)."""
         if g.kind == "Polyline":
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             P = [self._pt(p) for p in points_of(g)]
             return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
         seg = self.segment(g)
@@ -304,7 +307,7 @@ class Renderer:
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
         if g.kind == "Polyline":
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
@@ -375,12 +378,12 @@ class Renderer:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
         if k == "RoundedRectangle" and g.data.get("corner_radii"):
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid", "Star") or (k == "Polyline" and g.closed):
-            from ...geometry.primitives import points_of
+            from ...geometry.members import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
             if k == "RoundedRectangle":
@@ -486,8 +489,8 @@ class Renderer:
         radius width/2 (:func:`~aidl_lang.geometry.offset.sweep_loops`: stadiums, arc slots);
         with flat caps the first and last segments are swept square at the free end (a
         rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
-        arcs; a Spline piece's band is :func:`spline_band` (within :data:`STROKE_TOL`; a
-        bend tighter than width/2 is E0108 at the call)."""
+        arcs; a Spline piece's band is :func:`.outlines.spline_band` (within
+        :data:`.outlines.STROKE_TOL`; a bend tighter than width/2 is E0108 at the call)."""
         from ...geometry.offset import sweep_loops
         from ...geometry.spline import SplineError
         h = g.data["width"] / 2
@@ -993,58 +996,6 @@ class Renderer:
         return out
 
 
-def rotation_matrix(rx: float, ry: float, rz: float) -> np.ndarray:
-    """The 3x3 rotation turning about x by ``rx``, then about y by ``ry``, then about z by
-    ``rz`` (radians, fixed axes: ``Rz @ Ry @ Rx``); quarter turns are exact (cos 90 deg is 0,
-    not 6e-17), so a box's panels land on the design's numbers to the last bit."""
-    def cs(a):
-        q = a / (math.pi / 2)
-        if abs(q - round(q)) < 1e-12:
-            return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(round(q)) % 4]
-        return math.cos(a), math.sin(a)
-    (cx, sx), (cy, sy), (cz, sz) = cs(rx), cs(ry), cs(rz)
-    Rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]], dtype=float)
-    Ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]], dtype=float)
-    Rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]], dtype=float)
-    return Rz @ Ry @ Rx
-
-
-def placement_matrix(s: Structure, x) -> np.ndarray:
-    """The 4x4 matrix taking a point of part ``s`` on the flat sheet (absolute x, y in mm; z
-    from 0 up through its thickness) to the assembled product.  Each structure's local frame
-    (its points less the sum of its and its ancestors' frame offsets, ``x`` the solved values)
-    goes into its parent's by its ``Place`` (rotation, then position) or, unplaced, by its
-    frame offset as on the sheet, so a program with no ``Place`` is the sheet itself."""
-    chain = [s, *s.ancestors()]
-    M = np.eye(4)
-    for a in reversed(chain):                  # root first: M maps a's local frame to world
-        step = np.eye(4)
-        pl = getattr(a, "placement", None)
-        if pl is not None:
-            step[:3, :3] = rotation_matrix(*pl[1])
-            step[:3, 3] = pl[0]
-        else:
-            step[0, 3], step[1, 3] = x[a.fx], x[a.fy]
-        M = M @ step
-    ox = sum(float(x[a.fx]) for a in chain)
-    oy = sum(float(x[a.fy]) for a in chain)
-    to_local = np.eye(4)
-    to_local[0, 3], to_local[1, 3] = -ox, -oy
-    return M @ to_local
-
-
-def _arc_through(c, s, e) -> Arc:
-    """The arc about ``c`` counter-clockwise from ``s`` (its radius: the distance to ``s``)
-    to the direction of ``e`` (a whole turn when they point the same way)."""
-    r = math.hypot(s[0] - c[0], s[1] - c[1])
-    a1 = math.atan2(s[1] - c[1], s[0] - c[0])
-    a2 = math.atan2(e[1] - c[1], e[0] - c[0])
-    sweep = (a2 - a1) % (2 * math.pi)
-    if sweep < 1e-12:
-        sweep = 2 * math.pi
-    return Arc(c, r, a1, sweep)
-
-
 def _chain_points(segs: list) -> np.ndarray:
     """The polyline (N x 2, mm) of a chain of exact open segments, from the first start to
     the last end (arcs and curves in chords within CHORD_TOL)."""
@@ -1094,229 +1045,6 @@ def _ends(seg):
         x0, y0, x1, y1 = seg.curve.box()
         return ((x0, y0), (x1, y1))
     return (seg.start, seg.end)
-
-
-def _weld(run: list) -> list:
-    """A closed chain with each line's ends moved onto its neighbours' exact ends (an arc's
-    ends are where its angles put them); consecutive lines share their solved points."""
-    n = len(run)
-    out = list(run)
-    for i in range(n):
-        a, b = out[i - 1], out[i]
-        if isinstance(b, Line):
-            out[i] = Line(a.end, b.end) if not isinstance(a, Line) or a.end != b.start else b
-        elif isinstance(a, Line):
-            out[i - 1] = Line(a.start, b.start)
-    return simplify(out)
-
-
-def _polygon(pts) -> Loop | None:
-    """The exact loop of a polygon's vertices (N x 2), repeated vertices dropped."""
-    P = [(float(x), float(y)) for x, y in np.asarray(pts, dtype=float)]
-    segs = [Line(P[i], P[(i + 1) % len(P)]) for i in range(len(P))]
-    segs = simplify(segs, max((abs(v) for p in P for v in p), default=1.0))
-    return Loop(segs) if len(segs) >= 3 else Loop([])
-
-
-def slot_outline(a, b, r: float) -> list:
-    """The exact outline of a slot whose end circles (radius ``r`` mm) are centred on ``a``
-    and ``b``: two lines and two half circles, counter-clockwise, the lines meeting the
-    arcs at their tangent points; a circle when ``a`` and ``b`` coincide."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    L = math.hypot(dx, dy)
-    if L <= 1e-12 * max(1.0, abs(a[0]), abs(a[1])):
-        return [Circle((a[0], a[1]), r)]
-    ux, uy = dx / L, dy / L
-    nx, ny = -uy, ux                        # left of a -> b
-    right = math.atan2(-ny, -nx)            # the angle of -n
-    p1 = (a[0] - r * nx, a[1] - r * ny)
-    p2 = (b[0] - r * nx, b[1] - r * ny)
-    p3 = (b[0] + r * nx, b[1] + r * ny)
-    p4 = (a[0] + r * nx, a[1] + r * ny)
-    return [Line(p1, p2), Arc((b[0], b[1]), r, right, math.pi), Line(p3, p4),
-            Arc((a[0], a[1]), r, right + math.pi, math.pi)]
-
-
-def arc_slot_outline(c, R: float, h: float, a1: float, sweep: float) -> list:
-    """The exact outline of an arc slot: the center line is the counter-clockwise arc of
-    radius ``R`` about ``c`` from angle ``a1`` sweeping ``sweep`` (0..2 pi); the slot is
-    ``2 h`` wide: the outer arc (R + h), a half circle around the end, the inner arc (R - h)
-    back, a half circle around the start; counter-clockwise, every join tangent."""
-    a2 = a1 + sweep
-    cx, cy = c
-    end = (cx + R * math.cos(a2), cy + R * math.sin(a2))
-    start = (cx + R * math.cos(a1), cy + R * math.sin(a1))
-    return [Arc((cx, cy), R + h, a1, sweep), Arc(end, h, a2, math.pi),
-            Arc((cx, cy), R - h, a2, -sweep), Arc(start, h, a1 + math.pi, math.pi)]
-
-
-STROKE_TOL = 1e-4     # mm: how far a Stroke's side along a Spline may be from the true offset
-
-
-def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
-    """The band ``2 h`` wide along a piece of spline, counter-clockwise: its two sides are
-    cubic splines through points of the true offset curves (the offset of a cubic is no
-    cubic), sampled until the spline between two samples is within :data:`STROKE_TOL` of the
-    true offset everywhere checked (the midpoints of the samples); the ends are half circles
-    of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
-    bends tighter than ``h`` (the inner side would fold over itself)."""
-    from ...geometry.spline import SplineError, _polish_foot, bez_at, interpolate
-    c, u0, u1 = sg.curve, sg.u0, sg.u1
-    span = u1 - u0
-
-    def true_offset(u: float, side: float):
-        (x, y), (tx, ty) = c.at(u), c.tangent(u)
-        if u1 < u0:
-            tx, ty = -tx, -ty
-        return (x - side * h * ty, y + side * h * tx)
-    # the tightest bend: curvature from the derivatives by arc length, sampled finely
-    m = max(16, 32 * int(math.ceil(abs(span))))
-    for k in range(m + 1):
-        u = u0 + span * k / m
-        (dx, dy), (ex, ey) = c.d1(u), c.d2(u)
-        v = math.hypot(dx, dy)
-        if v > 0 and abs(dx * ey - dy * ex) / v ** 3 * h >= 1.0:
-            x, y = c.at(u)
-            raise SplineError(f"the Spline bends tighter than half the Stroke's width "
-                              f"({h:g} mm) near ({x:g}, {y:g}): the band's inner side would "
-                              f"fold over itself")
-    per = 4
-    while True:
-        N = max(2, int(math.ceil(abs(span) * per)))
-        us = [u0 + span * k / N for k in range(N + 1)]
-        mids = [u0 + span * (k + 0.5) / N for k in range(N)]
-        sides, worst = [], 0.0
-        for side in (-1.0, 1.0):                       # right side, left side
-            pts = [true_offset(u, side) for u in us]
-            curve = interpolate(pts, False)
-            for k, um in enumerate(mids):              # halfway between two samples: the
-                q = true_offset(um, side)                # fit's span k, from its middle
-                b = curve.span(k)
-                f = bez_at(b, _polish_foot(b, q, 0.5))
-                worst = max(worst, math.dist(f, q))
-            sides.append(curve)
-        if worst <= STROKE_TOL or per >= 512:
-            break
-        per *= 2
-    if worst > STROKE_TOL:
-        raise SplineError(f"the Stroke along a Spline cannot be made within {STROKE_TOL:g} "
-                          f"mm of its true sides (off by {worst:.2g} mm)")
-    right, left = sides
-    R = Spline(right, 0.0, float(right.n))
-    Lf = Spline(left, float(left.n), 0.0)
-    end, start = sg.end, sg.start
-    segs: list = [R]
-    if flat[1]:
-        segs.append(Line(R.end, Lf.start))
-    else:
-        a = math.atan2(R.end[1] - end[1], R.end[0] - end[0])
-        segs.append(Arc((end[0], end[1]), h, a, math.pi))
-    segs.append(Lf)
-    if flat[0]:
-        segs.append(Line(Lf.end, R.start))
-    else:
-        a = math.atan2(Lf.end[1] - start[1], Lf.end[0] - start[0])
-        segs.append(Arc((start[0], start[1]), h, a, math.pi))
-    return Loop(segs)
-
-
-def _band(sg, h: float) -> Loop | None:
-    """The square-ended band ``2 h`` wide along one line or arc (counter-clockwise): a
-    rectangle, or the annulus segment between radii R - h and R + h; None for an arc of
-    radius R <= h."""
-    if isinstance(sg, Line):
-        (ax, ay), (bx, by) = sg.start, sg.end
-        L = math.hypot(bx - ax, by - ay)
-        nx, ny = -(by - ay) / L * h, (bx - ax) / L * h
-        return Loop([Line((ax - nx, ay - ny), (bx - nx, by - ny)),
-                     Line((bx - nx, by - ny), (bx + nx, by + ny)),
-                     Line((bx + nx, by + ny), (ax + nx, ay + ny)),
-                     Line((ax + nx, ay + ny), (ax - nx, ay - ny))])
-    a = sg if sg.sweep > 0 else reverse(sg)
-    if not a.radius > h:
-        return None
-    return Loop(sector_outline(a.center, a.radius + h, a.radius - h, a.start_angle, a.sweep))
-
-
-def sector_outline(c, R: float, r: float, a1: float, sweep: float) -> list:
-    """The exact outline of a sector: the counter-clockwise arc of radius ``R`` about ``c``
-    from angle ``a1`` sweeping ``sweep`` (0..2 pi), then a radial line to the center (``r``
-    0: a pie slice) or to the inner arc of radius ``r``, that arc back and a radial line out
-    (an annulus segment); counter-clockwise, the lines' ends the arcs' own ends."""
-    outer = Arc((c[0], c[1]), R, a1, sweep)
-    if r <= 0:
-        return [outer, Line(outer.end, (c[0], c[1])), Line((c[0], c[1]), outer.start)]
-    inner = Arc((c[0], c[1]), r, a1 + sweep, -sweep)
-    return [outer, Line(outer.end, inner.start), inner, Line(inner.end, outer.start)]
-
-
-def rounded_outline(corners, r: float) -> list:
-    """The exact outline of a rectangle (four corners in order, N x 2, mm) with corners of
-    radius ``r``, clamped to half the shorter side: four lines and four quarter arcs,
-    counter-clockwise; at half the shorter side the short lines vanish and their arcs merge
-    into half circles, a square at half its side is a circle."""
-    P = [np.asarray(p, dtype=float) for p in corners]
-    if _shoelace(P) < 0:
-        P = P[::-1]
-    edges = [P[(i + 1) % 4] - P[i] for i in range(4)]
-    lengths = [float(np.hypot(*e)) for e in edges]
-    r = min(r, min(lengths) / 2)
-    u = [e / L for e, L in zip(edges, lengths)]
-    segs = []
-    for i in range(4):
-        j = (i + 1) % 4
-        a = P[i] + r * u[i]
-        b = P[j] - r * u[i]
-        segs.append(Line(_t(a), _t(b)))
-        c = P[j] - r * u[i] + r * u[j]                  # the corner arc's center
-        a0 = math.atan2(-u[j][1], -u[j][0])             # from the edge's end, inward normal
-        segs.append(Arc(_t(c), r, a0, math.pi / 2))
-    # each line starts where the previous arc ends (exactly, through the same angles)
-    fixed = []
-    for i in range(0, 8, 2):
-        prev_arc = segs[i - 1]
-        fixed += [Line(prev_arc.end, segs[i + 1].start), segs[i + 1]]
-    return simplify(fixed, max(abs(float(v)) for p in P for v in p))
-
-
-def rounded_outline_radii(corners, radii) -> list:
-    """The exact outline of a rectangle (four corners in order, mm) whose corner ``k`` is
-    rounded by ``radii[k]`` (mm; 0: a sharp corner): lines and quarter arcs,
-    counter-clockwise.  The radii fit their sides (the primitive checks that two radii on a
-    side add up to at most its length)."""
-    P = [np.asarray(p, dtype=float) for p in corners]
-    R = [float(r) for r in radii]
-    if _shoelace(P) < 0:
-        P, R = P[::-1], R[::-1]
-    u = []
-    for i in range(4):
-        e = P[(i + 1) % 4] - P[i]
-        u.append(e / float(np.hypot(*e)))
-    arcs = []                            # corner k: (arc or None, its start, its end)
-    for k in range(4):
-        r, a, b = R[k], u[k - 1], u[k]      # the edge into corner k, and out of it
-        if r <= 0:
-            p = _t(P[k])
-            arcs.append((None, p, p))
-            continue
-        c = P[k] - r * a + r * b
-        arc = Arc(_t(c), r, math.atan2(-b[1], -b[0]), math.pi / 2)
-        arcs.append((arc, arc.start, arc.end))
-    segs = []
-    for k in range(4):
-        if arcs[k][0] is not None:
-            segs.append(arcs[k][0])
-        segs.append(Line(arcs[k][2], arcs[(k + 1) % 4][1]))
-    return simplify(segs, max(abs(float(v)) for p in P for v in p))
-
-
-def _shoelace(P) -> float:
-    n = len(P)
-    return 0.5 * sum(P[i][0] * P[(i + 1) % n][1] - P[(i + 1) % n][0] * P[i][1] for i in range(n))
-
-
-def _t(p):
-    return (float(p[0]), float(p[1]))
 
 
 def render_model(model: Model, deadline: Deadline | None = None) -> Drawing:
