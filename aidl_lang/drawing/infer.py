@@ -29,6 +29,12 @@ drawing's number; two sizes or steps are equal within :data:`~.infer_shapes.EQUA
 (1e-7 mm).  The program's head says what was recognised (pieces -> shapes) and these
 tolerances.  A part holding what this writer does not know is written by
 :func:`~.program.to_program`'s own code, whole.
+
+This module writes the program (:class:`_Part`: a part's body, holes and their patterns;
+:func:`_engraving`; :func:`to_program_inferred`) from what its neighbours find:
+:mod:`.infer_shapes` (the primitives), :mod:`.infer_attachments` (a rectangle with tabs, a
+circle with teeth), :mod:`.infer_patterns` (bolt circles, rows, grids, turned outlines,
+ticks, copies of a part) and :mod:`.infer_params` (numbers, params and constructors as text).
 """
 from __future__ import annotations
 
