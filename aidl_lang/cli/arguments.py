@@ -108,6 +108,70 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
             description="Compile FILE and write each -o output; the format follows "
                         "the extension (.svg .dxf .pdf .png .stl .3mf .step .glb). Nothing is "
                         "written unless the whole pipeline succeeded.")
+    _render_arguments(r)
+    c = add("check", help="parse, check and solve; write nothing")
+    _check_arguments(c)
+    pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
+    pl.add_argument("file")
+    pl.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    pl.add_argument("--json", action="store_true", help="the list as JSON on stdout")
+    _budget_arg(pl)
+    _memory_arg(pl)
+    e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
+    e.add_argument("code")
+    dc = add("docs", help="the reference of a shape, constraint, statement or stdlib template, "
+                          "e.g. aidl docs spur_gear; alone: the list of topics")
+    dc.add_argument("name", nargs="?", default=None,
+                    help="a topic (any case or style: SpurGear, spur-gear); none: list them")
+    im = add("import", help="turn a DXF or SVG drawing into an editable .aidl program",
+             description="Read FILE.dxf or FILE.svg as exact lines, arcs, circles, "
+                         "elliptical arcs and splines and write a program of the language's "
+                         "own shapes (Line, Arc, Circle, Ellipse, Spline, Bezier; DXF text as "
+                         "Text) that renders back to the same geometry (docs/import.md).")
+    _import_arguments(im)
+    f = add("fmt", help="format .aidl files in place (canonical layout)")
+    f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
+    f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
+    lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")
+    # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
+    # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin/stdout (the default)")
+    lsp.add_argument("--clientProcessId", "--client-process-id", type=int, metavar="PID",
+                     help="the editor's process id (accepted; the server exits when stdin closes)")
+    lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
+    lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
+    lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
+    v = add("serve", help="live preview in the browser with parameter sliders "
+                          "(http://127.0.0.1:PORT/)")
+    v.add_argument("file")
+    v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
+    so = add("studio", help="the studio in the browser: gallery, forms, code, 3D, downloads, "
+                            "for many users (http://HOST:PORT/)",
+             description="Serve AIDL's studio: a gallery of every example and generator with its "
+                         "parameters as a form, a code pane with diagnostics, the flat sheet and "
+                         "the assembled 3D view, downloads for every machine format, share links "
+                         "and embeds. Every compile runs in a memory- and time-limited worker; "
+                         "no program reads a file of this machine. docs/studio.md")
+    _studio_arguments(so)
+    m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
+            description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
+                        "(language reference, prompt, stdlib, examples) to an MCP host over "
+                        "stdio. Only files inside --root can be read or written.")
+    m.add_argument("--root", default=".", metavar="DIR",
+                   help="the folder the server may read and write (default: the current one)")
+    _budget_arg(m)
+    if only is None or only == "batch":
+        from ..batch.command import add_arguments as add_batch
+        add_batch(add("batch", help="compile many programs (files, folders, JSONL) into "
+                                    "one row each, locally or on Dask (docs/batch.md)"))
+    if only is None or only in ("prompt", "generate", "eval"):
+        from .llm import add_commands
+        add_commands(add)              # prompt, generate, eval
+    return p
+
+
+def _render_arguments(r) -> None:
+    """``aidl render``: the program, its outputs and how they are made."""
     r.add_argument("file", help="the .aidl program (- for stdin, then -o is required)")
     r.add_argument("-o", "--output", action="append", default=[], metavar="OUT",
                    help="output file, format by extension; repeat for several "
@@ -173,7 +237,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                    help="write through an output that is a symbolic link (default: refuse it)")
     r.add_argument("--force", action="store_true",
                    help="replace an output file that is read-only (default: refuse it)")
-    c = add("check", help="parse, check and solve; write nothing")
+
+
+def _check_arguments(c) -> None:
+    """``aidl check``: what to check and report."""
     # optional here only so that `aidl check --values FILE` parses (`--values` takes any
     # number of names and would swallow it): _check_file takes the file back from the names
     c.add_argument("file", nargs="?")
@@ -193,23 +260,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                         "engravings, copies, symmetries (JSON with --json)")
     _budget_arg(c)
     _memory_arg(c)
-    pl = add("parts", help="list the parts: path, size, area, thickness, holes, copies")
-    pl.add_argument("file")
-    pl.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
-    pl.add_argument("--json", action="store_true", help="the list as JSON on stdout")
-    _budget_arg(pl)
-    _memory_arg(pl)
-    e = add("explain", help="explain a diagnostic code, e.g. aidl explain E0202")
-    e.add_argument("code")
-    dc = add("docs", help="the reference of a shape, constraint, statement or stdlib template, "
-                          "e.g. aidl docs spur_gear; alone: the list of topics")
-    dc.add_argument("name", nargs="?", default=None,
-                    help="a topic (any case or style: SpurGear, spur-gear); none: list them")
-    im = add("import", help="turn a DXF or SVG drawing into an editable .aidl program",
-             description="Read FILE.dxf or FILE.svg as exact lines, arcs, circles, "
-                         "elliptical arcs and splines and write a program of the language's "
-                         "own shapes (Line, Arc, Circle, Ellipse, Spline, Bezier; DXF text as "
-                         "Text) that renders back to the same geometry (docs/import.md).")
+
+
+def _import_arguments(im) -> None:
+    """``aidl import``: the drawing, its unit, layer, roles and how it is written."""
     im.add_argument("file", metavar="FILE", help="a .dxf or .svg drawing")
     im.add_argument("-o", "--output", metavar="PART.aidl", default=None,
                     help="the program to write (default: FILE with .aidl; - for stdout)")
@@ -237,29 +291,10 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                          "left out)")
     _budget_arg(im)
     _memory_arg(im)
-    f = add("fmt", help="format .aidl files in place (canonical layout)")
-    f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
-    f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
-    lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")
-    # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
-    # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).
-    lsp.add_argument("--stdio", action="store_true", help="talk over stdin/stdout (the default)")
-    lsp.add_argument("--clientProcessId", "--client-process-id", type=int, metavar="PID",
-                     help="the editor's process id (accepted; the server exits when stdin closes)")
-    lsp.add_argument("--node-ipc", action="store_true", help=argparse.SUPPRESS)
-    lsp.add_argument("--pipe", metavar="NAME", help=argparse.SUPPRESS)
-    lsp.add_argument("--socket", "--port", type=int, metavar="PORT", help=argparse.SUPPRESS)
-    v = add("serve", help="live preview in the browser with parameter sliders "
-                          "(http://127.0.0.1:PORT/)")
-    v.add_argument("file")
-    v.add_argument("--port", type=_port, default=8765, help="port on 127.0.0.1 (0: any free one)")
-    so = add("studio", help="the studio in the browser: gallery, forms, code, 3D, downloads, "
-                            "for many users (http://HOST:PORT/)",
-             description="Serve AIDL's studio: a gallery of every example and generator with its "
-                         "parameters as a form, a code pane with diagnostics, the flat sheet and "
-                         "the assembled 3D view, downloads for every machine format, share links "
-                         "and embeds. Every compile runs in a memory- and time-limited worker; "
-                         "no program reads a file of this machine. docs/studio.md")
+
+
+def _studio_arguments(so) -> None:
+    """``aidl studio``: where it listens, its processes, limits and stores."""
     so.add_argument("--host", default="127.0.0.1",
                     help="address to listen on (0.0.0.0: every interface, to serve others)")
     so.add_argument("--port", type=_port, default=8780, help="port (0: any free one)")
@@ -277,21 +312,6 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     so.add_argument("--scheduler", default=None, metavar="tcp://HOST:PORT",
                     help="compile on this Dask cluster instead of local workers")
     _budget_arg(so)
-    m = add("mcp", help="run the Model Context Protocol server on stdin/stdout (for agents)",
-            description="Serve AIDL's tools (check, render, values, explain, docs) and resources "
-                        "(language reference, prompt, stdlib, examples) to an MCP host over "
-                        "stdio. Only files inside --root can be read or written.")
-    m.add_argument("--root", default=".", metavar="DIR",
-                   help="the folder the server may read and write (default: the current one)")
-    _budget_arg(m)
-    if only is None or only == "batch":
-        from ..batch.command import add_arguments as add_batch
-        add_batch(add("batch", help="compile many programs (files, folders, JSONL) into "
-                                    "one row each, locally or on Dask (docs/batch.md)"))
-    if only is None or only in ("prompt", "generate", "eval"):
-        from .llm import add_commands
-        add_commands(add)              # prompt, generate, eval
-    return p
 
 
 def _port(text: str) -> int:
