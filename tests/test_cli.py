@@ -297,7 +297,7 @@ def test_closed_stdout_is_not_an_internal_error():
 def test_parser_for_one_subcommand_parses_as_the_full_parser():
     """`aidl CMD ...` builds only CMD's arguments (cold start); the result is the same as with
     every subcommand's, and SUBCOMMANDS names every subcommand the full parser has."""
-    from aidl_lang.cli.main import SUBCOMMANDS, _parser
+    from aidl_lang.cli.arguments import SUBCOMMANDS, _parser
     full = _parser()
     choices = next(a for a in full._actions if a.dest == "cmd").choices
     assert sorted(SUBCOMMANDS) == sorted(choices)
@@ -322,7 +322,7 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
 def test_only_the_given_subcommand_is_built_and_usage_is_unchanged(capsys):
     """`aidl check ...` builds only the check parser; the top-level usage line still lists
     every subcommand, as when all are built."""
-    mod = sys.modules["aidl_lang.cli.main"]
+    mod = sys.modules["aidl_lang.cli.arguments"]
     full, one = mod._parser(None), mod._parser("check")
     assert full.format_usage() == one.format_usage()
     sub = [a for a in one._actions if a.dest == "cmd"][0]

@@ -140,7 +140,7 @@ def test_the_command_table_lists_every_subcommand_and_only_real_options():
     CLI parser), and every ``--option`` a row writes is one that subcommand's parser has."""
     import argparse
 
-    from aidl_lang.cli.main import SUBCOMMANDS, _parser
+    from aidl_lang.cli.arguments import SUBCOMMANDS, _parser
     table = _section("10.1 Commands")
     rows = {}
     for line in table.splitlines():

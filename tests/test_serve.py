@@ -292,7 +292,7 @@ def test_websocket_sets_params_and_refuses_other_origins(client):
 def test_serve_binds_loopback_only():
     import aidl_lang.serve as S
     assert S.HOST == "127.0.0.1"
-    from aidl_lang.cli.main import _parser
+    from aidl_lang.cli.arguments import _parser
     assert "--host" not in _parser().format_help()
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 def add_commands(add) -> None:
     """Register the subcommands: ``add(name, **kwargs)`` is the ``aidl`` subparsers'
-    ``add_parser`` (or stands in for it: :func:`aidl_lang.cli.main._parser`)."""
+    ``add_parser`` (or stands in for it: :func:`aidl_lang.cli.arguments._parser`)."""
     p = add("prompt", help="print the system prompt for an LLM that writes AIDL")
     p.add_argument("--examples", type=int, default=None, metavar="N",
                    help="include the first N example programs (default 2, at most 4; 0: none)")

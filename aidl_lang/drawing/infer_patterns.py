@@ -1,0 +1,443 @@
+"""``aidl import --infer``: the patterns found in what a drawing repeats (issue 60;
+docs/import.md, "Inferring the design"; used by :mod:`.infer`, which writes them as loops).
+
+In: points, pieces and parts in mm (angles in radians); out: the pattern's numbers, or None
+when there is none.  Every pattern is checked member by member to
+:data:`~.infer_shapes.EQUAL_TOL` (1e-7 mm), so writing it moves nothing:
+
+* points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
+  circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
+  (:func:`_line`), runs of equal steps (:func:`_runs`);
+* an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
+  a gear or a star) and polygons turned evenly round a centre (:func:`_polar_polys`, teeth);
+* single strokes that are a family of ticks, along a line or round a centre
+  (:func:`_tick_families`; their lengths' period, :func:`_periodic`);
+* parts that are copies of one part moved evenly along a line (:func:`_copies`, by each
+  simple part's :func:`_signature`; :func:`_unknown`: a drawing holding what the inferred
+  writer does not write).
+"""
+from __future__ import annotations
+
+import math
+
+from ..geometry.curves import Arc, Line
+from .infer_params import _r
+from .infer_shapes import EQUAL_TOL, _snap_angle, circular, recognise
+from .program import _containers, _ident
+from .read import Drawing
+
+
+# ------------------------------------------------------------------ points
+def _steps(vals: list) -> float | None:
+    """The common step of sorted ``vals`` (None when the steps differ)."""
+    d = [b - a for a, b in zip(vals, vals[1:])]
+    if not d or any(abs(x - d[0]) > EQUAL_TOL for x in d):
+        return None
+    return d[0]
+
+
+def _distinct(vals: list) -> list:
+    out: list = []
+    for v in sorted(vals):
+        if not out or v - out[-1] > EQUAL_TOL:
+            out.append(v)
+    return out
+
+
+def _polar(centers: list):
+    """``(centre, radius, first angle, n)`` when ``centers`` are evenly round a circle (a
+    whole turn), else None."""
+    n = len(centers)
+    if n < 3:
+        return None
+    cx = sum(p[0] for p in centers) / n
+    cy = sum(p[1] for p in centers) / n
+    rad = [math.dist((cx, cy), p) for p in centers]
+    R = sum(rad) / n
+    if R <= EQUAL_TOL or max(rad) - min(rad) > EQUAL_TOL:
+        return None
+    step = 2 * math.pi / n
+    angs = sorted(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers)
+    a0 = angs[0] % step
+    from .infer_shapes import _snap_angle
+    a0 = _snap_angle(a0, R)
+    want = sorted((a0 + k * step) % (2 * math.pi) for k in range(n))
+    got = list(centers)
+    for k in range(n):
+        a = a0 + k * step
+        q = (cx + R * math.cos(a), cy + R * math.sin(a))
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    del want
+    return (cx, cy), R, a0, n
+
+
+def _grid(centers: list):
+    """``(x0, y0, dx, dy, cols, rows)`` when ``centers`` are an axis-aligned lattice (a row,
+    a column or a grid, equal steps), else None."""
+    xs = _distinct([p[0] for p in centers])
+    ys = _distinct([p[1] for p in centers])
+    if len(xs) * len(ys) != len(centers):
+        return None
+    dx = _steps(xs) if len(xs) > 1 else 0.0
+    dy = _steps(ys) if len(ys) > 1 else 0.0
+    if dx is None or dy is None:
+        return None
+    for x in xs:
+        for y in ys:
+            if not any(abs(p[0] - x) <= EQUAL_TOL and abs(p[1] - y) <= EQUAL_TOL
+                       for p in centers):
+                return None
+    return xs[0], ys[0], dx, dy, len(xs), len(ys)
+
+
+def _line(centers: list):
+    """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
+    n = len(centers)
+    if n < 2:
+        return None
+    a, b = min(centers), max(centers)
+    d = ((b[0] - a[0]) / (n - 1), (b[1] - a[1]) / (n - 1))
+    got = list(centers)
+    for k in range(n):
+        q = (a[0] + k * d[0], a[1] + k * d[1])
+        for i, p in enumerate(got):
+            if math.dist(p, q) <= EQUAL_TOL:
+                del got[i]
+                break
+        else:
+            return None
+    return a, d, n
+
+
+# ------------------------------------------------------------------ turned round a centre
+def _rotated(g, C, a: float):
+    """Piece ``g`` turned by ``a`` about ``C``."""
+    c, s = math.cos(a), math.sin(a)
+
+    def R(p):
+        x, y = p[0] - C[0], p[1] - C[1]
+        return (C[0] + x * c - y * s, C[1] + x * s + y * c)
+    if isinstance(g, Line):
+        return Line(R(g.start), R(g.end))
+    return Arc(R(g.center), g.radius, g.start_angle + a, g.sweep)
+
+
+def _polar_chain(segs: list):
+    """``(centre, n, the pieces of one turn)`` when the loop ``segs`` (lines and arcs) is
+    one run of pieces turned ``n`` times evenly round a centre (a gear's outline, a star),
+    each copy checked piece by piece to EQUAL_TOL; else None."""
+    if len(segs) < 6 or not all(isinstance(g, (Line, Arc)) for g in segs):
+        return None
+    n_all = len(segs)
+    pts = [g.start for g in segs]
+    C = (sum(p[0] for p in pts) / n_all, sum(p[1] for p in pts) / n_all)
+    C = (float(_r(C[0])), float(_r(C[1])))
+
+    def sig(g):
+        m = g.at(g.start_angle + g.sweep / 2) if isinstance(g, Arc) else \
+            ((g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2)
+        return (isinstance(g, Arc), round(g.length, 6), round(math.dist(m, C), 6))
+    sigs = [sig(g) for g in segs]
+    from .infer_shapes import _same
+    for n in range(n_all // 2, 2, -1):
+        if n_all % n:
+            continue
+        p = n_all // n
+        if not all(sigs[i] == sigs[(i + p) % n_all] for i in range(n_all)):
+            continue
+        step = 2 * math.pi / n
+        # the copy k of piece i is piece i + k p, turned either way round
+        for sign in (1, -1):
+            if all(_same(_rotated(segs[i], C, sign * k * step), segs[(i + k * p) % n_all])
+                   for k in range(1, n) for i in range(p)):
+                period = segs[:p] if sign > 0 else segs[:p]
+                if sign < 0:        # the loop runs clockwise: the pattern turns the other way
+                    return None
+                return C, n, period
+    return None
+
+
+def _polar_polys(teeth: list, C):
+    """``(n, first angle, [(radius, angle) of each vertex of the first])`` when the polygons
+    ``teeth`` are one polygon turned evenly round ``C`` (a whole turn), else None."""
+    n = len(teeth)
+    if n < 2 or any(len(t) != len(teeth[0]) for t in teeth):
+        return None
+
+    def ang(t):
+        cx = sum(p[0] for p in t) / len(t) - C[0]
+        cy = sum(p[1] for p in t) / len(t) - C[1]
+        return math.atan2(cy, cx)
+    order = sorted(teeth, key=lambda t: ang(t) % (2 * math.pi))
+    first = order[0]
+    step = 2 * math.pi / n
+    polar = [(math.dist(p, C), math.atan2(p[1] - C[1], p[0] - C[0])) for p in first]
+    for k, t in enumerate(order):
+        for (r, a), p in zip(polar, t):
+            q = (C[0] + r * math.cos(a + k * step), C[1] + r * math.sin(a + k * step))
+            if math.dist(p, q) > EQUAL_TOL:
+                return None
+    return n, polar
+
+
+# ------------------------------------------------------------------ ticks
+def _periodic(vals: list) -> list:
+    """The shortest list ``P`` with ``vals[i] == P[i % len(P)]`` (within EQUAL_TOL)."""
+    n = len(vals)
+    for p in range(1, n + 1):
+        if all(abs(vals[i] - vals[i % p]) <= EQUAL_TOL for i in range(n)):
+            return vals[:p]
+    return vals
+
+
+def _runs(idx_pos: list, step: float) -> list[list]:
+    """Maximal runs of consecutive members (positions ``step`` apart) of sorted
+    ``(position, item)`` pairs."""
+    runs: list[list] = []
+    for pos, it in idx_pos:
+        if runs and abs(pos - runs[-1][-1][0] - step) <= EQUAL_TOL:
+            runs[-1].append((pos, it))
+        else:
+            runs.append([(pos, it)])
+    return runs
+
+
+MIN_FAMILY = 5      # strokes in a row (ticks) written as one loop
+
+
+def _tick_families(lines: list) -> tuple[list, list]:
+    """Single strokes (``(a, b)`` point pairs) that are one family: ticks along a line
+    (starts evenly spaced on a line, one direction, lengths repeating) or round a centre
+    (radial, evenly turned, one radius at their anchored end).  Returns ``([family], the
+    indices of the strokes in them)``,
+    a family ``("row", p0, step, u, lengths)`` or ``("polar", C, R, a0, step, sign,
+    lengths)``."""
+    fams = []
+    left = list(range(len(lines)))
+    # ticks along a line: group by direction
+    by_dir: dict = {}
+    for i in left:
+        a, b = lines[i]
+        L = math.dist(a, b)
+        u = ((b[0] - a[0]) / L, (b[1] - a[1]) / L)
+        by_dir.setdefault((round(u[0], 7), round(u[1], 7)), []).append(i)
+    used: set = set()
+    for u, idx in by_dir.items():
+        if len(idx) < MIN_FAMILY:
+            continue
+        # starts on one line across u: group by the start's coordinate along u
+        along: dict = {}
+        for i in idx:
+            a = lines[i][0]
+            along.setdefault(round(a[0] * u[0] + a[1] * u[1], 6), []).append(i)
+        for key, grp in along.items():
+            if len(grp) < MIN_FAMILY:
+                continue
+            v = (-u[1], u[0])
+            pos = sorted(((lines[i][0][0] * v[0] + lines[i][0][1] * v[1]), i) for i in grp)
+            gaps = [b[0] - a[0] for a, b in zip(pos, pos[1:])]
+            step = min(gaps) if gaps else 0
+            if step <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                items = [i for _, i in run]
+                p0 = lines[items[0]][0]
+                d = (lines[items[1]][0][0] - p0[0], lines[items[1]][0][1] - p0[1])
+                ok = all(math.dist(lines[i][0], (p0[0] + k * d[0], p0[1] + k * d[1]))
+                         <= EQUAL_TOL for k, i in enumerate(items))
+                if not ok:
+                    continue
+                lens = [math.dist(*lines[i]) for i in items]
+                fams.append(("row", p0, d, (u[0], u[1]), lens))
+                used.update(items)
+    rest = [i for i in left if i not in used]
+    # ticks round a centre: the centre from two strokes' carriers
+    tries = 0
+    while len(rest) >= MIN_FAMILY and tries < 4:
+        tries += 1
+        C = None
+        a0, b0 = lines[rest[0]]
+        for j in rest[1:]:
+            a1, b1 = lines[j]
+            d0 = (b0[0] - a0[0], b0[1] - a0[1])
+            d1 = (b1[0] - a1[0], b1[1] - a1[1])
+            den = d0[0] * d1[1] - d0[1] * d1[0]
+            if abs(den) > 1e-9 * math.hypot(*d0) * math.hypot(*d1):
+                t = ((a1[0] - a0[0]) * d1[1] - (a1[1] - a0[1]) * d1[0]) / den
+                C = (a0[0] + t * d0[0], a0[1] + t * d0[1])
+                break
+        if C is None:
+            break
+        radial = []
+        for i in rest:
+            a, b = lines[i]
+            ra, rb = math.dist(a, C), math.dist(b, C)
+            if min(ra, rb) <= EQUAL_TOL:
+                continue
+            aa = math.atan2(a[1] - C[1], a[0] - C[0])
+            ab = math.atan2(b[1] - C[1], b[0] - C[0])
+            if abs(math.remainder(aa - ab, 2 * math.pi)) * max(ra, rb) <= EQUAL_TOL:
+                radial.append(i)
+        if len(radial) < MIN_FAMILY:
+            rest = rest[1:]
+            continue
+        # the anchored end: the outer ends on one radius, else the inner ends
+        found = False
+        for outer in (True, False):
+            ends = {}
+            for i in radial:
+                a, b = lines[i]
+                ra, rb = math.dist(a, C), math.dist(b, C)
+                anchor, free = (a, b) if (ra >= rb) == outer else (b, a)
+                ends.setdefault(round(math.dist(anchor, C), 6), []).append((i, anchor, free))
+            R_key, grp = max(ends.items(), key=lambda kv: len(kv[1]))
+            if len(grp) < MIN_FAMILY:
+                continue
+            R = sum(math.dist(an, C) for _, an, _ in grp) / len(grp)
+            def turn(p):
+                t = math.atan2(p[1] - C[1], p[0] - C[0]) % (2 * math.pi)
+                return 0.0 if t > 2 * math.pi - 1e-12 else t
+            pos = sorted((turn(an), (i, an, fr)) for i, an, fr in grp)
+            step = min(b[0] - a[0] for a, b in zip(pos, pos[1:]))
+            if step * R <= EQUAL_TOL:
+                continue
+            for run in _runs(pos, step):
+                if len(run) < MIN_FAMILY:
+                    continue
+                a0 = _snap_angle(run[0][0], R)
+                st = _snap_angle(step, R * len(run))
+                good = all(math.dist(an, (C[0] + R * math.cos(a0 + k * st),
+                                          C[1] + R * math.sin(a0 + k * st))) <= EQUAL_TOL
+                           for k, (_, (i, an, fr)) in enumerate(run))
+                if not good:
+                    continue
+                lens = [math.dist(an, fr) for _, (i, an, fr) in run]
+                fams.append(("polar", C, R, a0, st, -1 if outer else 1, lens))
+                used.update(i for _, (i, _, _) in run)
+                found = True
+            if found:
+                break
+        rest = [i for i in rest if i not in used]
+        if not found:
+            break
+    return fams, used
+
+
+# ------------------------------------------------------------------ copies of a whole part
+def _signature(d: Drawing):
+    """``(numbers, body centre)`` of a simple part (one recognised outline, recognised holes,
+    nothing else), its numbers the same for two parts that are copies of each other moved;
+    None for any other part."""
+    if d.paths or d.texts or d.ellipses or (d.engrave is not None and not d.engrave.empty) \
+            or _unknown(d):
+        return None
+    loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+    dep = [len(c) for c in _containers(loops)] if loops else []
+    if sum(1 for k in dep if k == 0) != 1 or any(k > 1 for k in dep):
+        return None
+    body = recognise(loops[dep.index(0)])
+    if body is None or body.kind == "Polygon":
+        return None
+    holes = []
+    for segs, k in zip(loops, dep):
+        if k == 1:
+            h = recognise(segs)
+            if h is None or h.kind == "Polygon":
+                return None
+            holes.append((h.kind, h.size, h.center[0] - body.center[0],
+                          h.center[1] - body.center[1]))
+    holes.sort(key=lambda t: (t[0], round(t[2], 6), round(t[3], 6)))
+    return (body.kind, body.size, holes), body.center
+
+
+def _rounded(x):
+    if isinstance(x, (list, tuple)):
+        return tuple(_rounded(y) for y in x)
+    return round(x, 5) + 0.0 if isinstance(x, float) else x
+
+
+def _same_sig(a, b) -> bool:
+    def flat(x):
+        if isinstance(x, (list, tuple)):
+            return [v for y in x for v in flat(y)]
+        return [x]
+    fa, fb = flat(a), flat(b)
+    if len(fa) != len(fb):
+        return False
+    for x, y in zip(fa, fb):
+        if isinstance(x, str) or isinstance(y, str):
+            if x != y:
+                return False
+        elif abs(x - y) > EQUAL_TOL:
+            return False
+    return True
+
+
+# what a Drawing holds that the inferred writer writes (a field it does not know, added to
+# the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
+_KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
+          "engrave"}
+
+
+def _unknown(d: Drawing) -> bool:
+    from dataclasses import fields
+    return any(getattr(d, f.name) for f in fields(d) if f.name not in _KNOWN)
+
+
+def _copies(items: list, deadline=None) -> list:
+    """``items`` with each run of parts that are copies of one part moved evenly along a line
+    (the washers laid out under a plate) as one item ``(kind, name, first part, (start,
+    step, count))``."""
+    sigs = []
+    for k, (kind, _, d) in enumerate(items):
+        if deadline is not None and k % 64 == 0:
+            deadline.check("finding the copies of a part")
+        sigs.append(_signature(d) if kind == "solid" else None)
+    names = {name for _, name, _ in items}
+    # parts whose numbers round alike, then each checked against the first to EQUAL_TOL
+    buckets: dict = {}
+    for j, sg in enumerate(sigs):
+        if sg is not None:
+            buckets.setdefault(repr(_rounded(sg[0])), []).append(j)
+    out = []
+    taken: set = set()
+    for i, (kind, name, d) in enumerate(items):
+        if i in taken:
+            continue
+        if sigs[i] is None:
+            out.append((kind, name, d))
+            continue
+        group = [j for j in buckets[repr(_rounded(sigs[i][0]))] if j >= i and j not in taken
+                 and _same_sig(sigs[i][0], sigs[j][0])]
+        ln = _line([sigs[j][1] for j in group]) if len(group) >= 2 else None
+        if ln is None:
+            out.append((kind, name, d))
+            sigs_done = set(group)      # no row: each on its own, never grouped again
+            for j in sigs_done:
+                sigs[j] = None if j != i else sigs[j]
+            continue
+        p0, step, n = ln
+        first = min(group, key=lambda j: sigs[j][1])
+        taken.update(group)
+        base = _common_name([items[j][1] for j in group])
+        if base in names:
+            base = _ident(base, names)
+        names.add(base)
+        out.append(("solid", base, items[first][2], (p0, step, n)))
+    return out
+
+
+def _common_name(names: list) -> str:
+    import os
+    pre = os.path.commonprefix(names).rstrip("_0123456789")
+    if pre.startswith("l_") or len(pre) < 2:     # layer `0`'s parts (`l_01`, ...)
+        return "part"
+    return pre
+
