@@ -47,8 +47,8 @@ from ...diagnostics import DiagnosticSink
 from ..part.booleans import Drawing
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
-from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _edges, _inside, _inside_loops,
-                     _part_of, _part_roots, _signed, _union)
+from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
+                     _inside_loops, _part_of, _part_roots, _signed, _union)
 from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_samples, _sample,
                          _samples, _within)
 from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
@@ -250,17 +250,24 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 _check_flush(d, s, shape, a, cuts, min_wall, sink)
                 return covered
             covered = run("openings", s, openings)
-            run("voids", s, lambda: _check_voids(d, s, loops[s], cuts, min_wall, sink,
-                                                 tick=lambda ahead=0.0: tick(s, ahead)))
+            shared: dict = {}       # which loops are holes' openings, found once per part
+
+            def voids():
+                shared["cut_open"] = _cut_openings(loops[s], cuts)
+                _check_voids(d, s, loops[s], cuts, min_wall, sink,
+                             tick=lambda ahead=0.0: tick(s, ahead), cut_open=shared["cut_open"])
+            run("voids", s, voids)
             tick(s)
             if min_wall > 0:
                 run("walls", s, lambda: _check_walls(
                     d, s, shape, min_wall, cuts, sink, covered=covered or set(),
                     loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead)))
                 run("slits", s, lambda: _check_slits(d, s, loops[s], cuts, min_wall, sink,
-                                                     tick=lambda ahead=0.0: tick(s, ahead)))
+                                                     tick=lambda ahead=0.0: tick(s, ahead),
+                                                     cut_open=shared.get("cut_open")))
                 run("steps", s, lambda: _check_steps(d, s, loops[s], cuts, min_wall, sink,
-                                                     tick=lambda: tick(s)))
+                                                     tick=lambda: tick(s),
+                                                     cut_open=shared.get("cut_open")))
     if getattr(d, "through", ()):
         tick(None)
         run("through", None, lambda: check_through(

@@ -188,12 +188,28 @@ def _cut_boxes(cuts) -> np.ndarray:
                      and not c.region.is_empty()], dtype=float).reshape(-1, 4)
 
 
-def _meets_a_cut(P: np.ndarray, boxes: np.ndarray) -> bool:
-    """Whether the box of loop ``P`` (k x 2) meets one of ``boxes`` (:func:`_cut_boxes`): an
-    inner loop that does is taken as the opening a hole cuts, which the checks leave out."""
-    if not len(boxes):
-        return False
-    x0, y0 = P.min(axis=0)
-    x1, y1 = P.max(axis=0)
-    return bool(((boxes[:, 0] <= x1) & (boxes[:, 2] >= x0) & (boxes[:, 1] <= y1)
-                 & (boxes[:, 3] >= y0)).any())
+def _loop_boxes(loops: list) -> np.ndarray:
+    """The boxes (x0, y0, x1, y1) of ``loops`` ((n, 2) arrays, n >= 1), an (len(loops), 4)
+    array."""
+    if not loops:
+        return np.zeros((0, 4))
+    P = np.concatenate(loops)
+    start = np.cumsum([0] + [len(p) for p in loops[:-1]])
+    return np.hstack([np.minimum.reduceat(P, start), np.maximum.reduceat(P, start)])
+
+
+def _cut_openings(loops: list, cuts) -> np.ndarray:
+    """Which of a part's final ``loops`` are openings a hole cuts (clockwise, the loop's box
+    meeting the box of a hole's cut region, :func:`_cut_boxes`): a bool per loop,
+    all loops in one box pass (:func:`..part.nearby.box_pairs_between`).  Taken once per part
+    and shared by W0515, W0519 and W0520, which leave these loops out."""
+    from ..part.nearby import box_pairs_between
+    out = np.zeros(len(loops), dtype=bool)
+    hb = _cut_boxes(cuts)
+    inner = [k for k, P in enumerate(loops) if len(P) and _signed(P) < 0]
+    if not len(hb) or not inner:
+        return out
+    pairs = box_pairs_between(_loop_boxes([np.asarray(loops[k], dtype=float) for k in inner]),
+                              hb)
+    out[np.asarray(inner, dtype=np.intp)[pairs[:, 0]]] = True
+    return out

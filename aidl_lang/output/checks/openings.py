@@ -33,9 +33,9 @@ from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
-from ..part.nearby import boundary, box_pairs, close_pairs
-from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_boxes, _depth, _edges,
-                     _inside, _meets_a_cut, _part_of, _pct, _signed, _significant, _union)
+from ..part.nearby import boundary, box_pairs, box_pairs_between, close_pairs
+from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
+                     _inside, _part_of, _pct, _signed, _significant, _union)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -184,22 +184,24 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
 
 
 def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
-                 tick=lambda ahead=0.0: None) -> None:
+                 tick=lambda ahead=0.0: None, cut_open=None) -> None:
     """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
     of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
     shapes (two solids that nearly meet around a gap).  ``tick()``: the compile's deadline,
-    looked at as the openings are searched."""
-    inner = [P for P in loops if _signed(P) < 0]
+    looked at as the openings are searched.  ``cut_open``: :func:`.common._cut_openings` of
+    ``loops``, when the caller has it."""
+    inner = [k for k, P in enumerate(loops) if _signed(P) < 0]
     if not inner:
         return
-    hb = _cut_boxes(cuts)
+    if cut_open is None:
+        cut_open = _cut_openings(loops, cuts)
     limit = max(2 * t * t, 1.0)
-    _check_enclosed(d, s, [P for P in inner if -_signed(P) >= limit], cuts, sink, tick)
-    for P in inner:
+    _check_enclosed(d, s, [loops[k] for k in inner if -_signed(loops[k]) >= limit], cuts, sink,
+                    tick)
+    for k in inner:
+        P = loops[k]
         area = -_signed(P)
-        if area >= limit:
-            continue
-        if _meets_a_cut(P, hb):
+        if area >= limit or cut_open[k]:
             continue
         x0, y0 = P.min(axis=0)
         x1, y1 = P.max(axis=0)
@@ -267,10 +269,11 @@ def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink,
         pairs = box_pairs(np.array(boxes + [h.bounds() for h in holes], dtype=float))
         for i, j in pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]:
             near.setdefault(int(i), []).append(holes[int(j) - n])
+    framed = _inside_one_face(openings, boxes, own)
     for k, P in enumerate(openings):
         if k % 64 == 0:
             tick()
-        if _inside_one_face(P, own):
+        if framed[k]:
             continue                          # a face's own hole (a drawing's inner loop)
         region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
         if region.is_empty() or any(_area(h ^ region) > MIN_AREA for h in near.get(k, ())):
@@ -295,29 +298,42 @@ def _own_outlines(d: Drawing, s: Structure) -> tuple:
     return outer, boxes
 
 
-def _inside_one_face(P, own) -> bool:
-    """Opening ``P`` (a clockwise polyline) lies inside the outer loop of one face (its mean
-    vertex within that loop, the loop's box around its own): the face's own hole, since the
-    face would otherwise cover it."""
-    outer, boxes = own
-    if not len(boxes):
-        return False
-    x0, y0 = P.min(axis=0)
-    x1, y1 = P.max(axis=0)
-    p = P.mean(axis=0)
-    cand = np.flatnonzero((boxes[:, 0] <= x0) & (boxes[:, 1] <= y0) & (boxes[:, 2] >= x1)
-                          & (boxes[:, 3] >= y1))
-    return any(_inside_loop(p, outer[j]) for j in cand)
+def _inside_one_face(openings, boxes, own) -> np.ndarray:
+    """For each opening of ``openings`` (clockwise polylines; ``boxes``: theirs): whether it
+    lies inside the outer loop of one face of ``own`` (:func:`_own_outlines`: its mean vertex
+    within that loop, the loop's box around its own), the face's own hole, since the face
+    would otherwise cover it.  Candidates by box (:func:`.nearby.box_pairs_between`), then one
+    even-odd test (:func:`.common._inside`) per face loop for all the openings it may hold."""
+    outer, oboxes = own
+    res = np.zeros(len(openings), dtype=bool)
+    if not len(oboxes) or not len(openings):
+        return res
+    ob = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    pairs = box_pairs_between(ob, oboxes)
+    i, j = pairs[:, 0], pairs[:, 1]
+    holds = ((oboxes[j, 0] <= ob[i, 0]) & (oboxes[j, 1] <= ob[i, 1]) & (oboxes[j, 2] >= ob[i, 2])
+             & (oboxes[j, 3] >= ob[i, 3]))
+    i, j = i[holds], j[holds]
+    order = np.argsort(j, kind="stable")
+    i, j = i[order], j[order]
+    mean = {}
+    for a, z in zip(*_runs(j)):
+        idx = [k for k in i[a:z].tolist() if not res[k]]
+        if not idx:
+            continue
+        for k in idx:
+            if k not in mean:
+                mean[k] = openings[k].mean(axis=0)
+        res[idx] |= _inside(np.array([mean[k] for k in idx]), [outer[int(j[a])]])
+    return res
 
 
-def _inside_loop(p, P) -> bool:
-    """Point ``p`` inside the closed polyline ``P`` (k x 2), by the even-odd rule."""
-    X, Y = P[:, 0], P[:, 1]
-    X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
-    cond = (Y > p[1]) != (Y2 > p[1])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        xs = X + (p[1] - Y) * (X2 - X) / (Y2 - Y)
-    return bool(np.count_nonzero(cond & (p[0] < xs)) % 2)
+def _runs(keys) -> tuple:
+    """The runs of equal values of the sorted array ``keys``: (starts, stops)."""
+    if not len(keys):
+        return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
+    starts = np.flatnonzero(np.r_[True, keys[1:] != keys[:-1]])
+    return starts, np.r_[starts[1:], len(keys)]
 
 
 def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> None:

@@ -239,7 +239,7 @@ PARALLEL = 15.0      # degrees: the stretches before and after a step keep their
 
 
 def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: DiagnosticSink,
-                 tick=lambda: None) -> None:
+                 tick=lambda: None, cut_open=None) -> None:
     """W0520 for part ``s`` (its final shape's ``loops``) at minimum wall ``t`` mm: a step of
     the outline where one shape pokes past another by less than ``t`` (a music note's stem
     0.2 mm past its head's side): two corners of opposite turns (each sharper than
@@ -250,17 +250,19 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     a longer link between two edges less than ``t`` apart is a gentle taper, not a ledge.
     The step is reported when the shapes at its two corners differ (:func:`.walls._faces_at`;
     a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
-    in the outline's vertices, plus a face search per step found."""
-    from .common import _cut_boxes, _meets_a_cut
+    in the outline's vertices, plus a face search per step found.  ``cut_open``:
+    :func:`.common._cut_openings` of ``loops``, when the caller has it."""
+    from .common import _cut_openings
     from .walls import _faces_at
     if t <= 0 or not loops:
         return
-    hb = _cut_boxes(cuts)
+    if cut_open is None:
+        cut_open = _cut_openings(loops, cuts)
     found = []
-    for P in loops:
-        P = np.asarray(P, dtype=float)
-        if _signed(P) < 0 and _meets_a_cut(P, hb):
+    for P, opening in zip(loops, cut_open):
+        if opening:
             continue                             # an opening a hole cuts
+        P = np.asarray(P, dtype=float)
         e = np.roll(P, -1, axis=0) - P
         L = np.hypot(*e.T)
         keep = L > 1e-9

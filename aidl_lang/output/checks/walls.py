@@ -20,7 +20,7 @@ from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
 from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
-from .common import _area, _union
+from .common import _area, _cut_openings, _loop_boxes, _union
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -418,15 +418,6 @@ def _thin_of_loop(loop: np.ndarray, t: float, cache: dict):
     return thin if at is lo else thin.translate((float(lo[0] - at[0]), float(lo[1] - at[1])))
 
 
-def _loop_boxes(loops: list) -> np.ndarray:
-    """The boxes (x0, y0, x1, y1) of ``loops`` ((n, 2) arrays), an (len(loops), 4) array."""
-    if not loops:
-        return np.zeros((0, 4))
-    P = np.concatenate(loops)
-    start = np.cumsum([0] + [len(p) for p in loops[:-1]])
-    return np.hstack([np.minimum.reduceat(P, start), np.maximum.reduceat(P, start)])
-
-
 def _clip_loops(loops: list, boxes: np.ndarray, a: float, b: float, c: float, e: float):
     """The loops of a shape (outer loops counter-clockwise, holes clockwise, as
     ``CrossSection.to_polygons`` gives them, with their ``boxes``) clipped to the box
@@ -492,7 +483,7 @@ FACING = 0.866     # cos 30 deg: two stretches of the outline face each other ac
 
 
 def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: DiagnosticSink,
-                 tick=lambda ahead=0.0: None) -> None:
+                 tick=lambda ahead=0.0: None, cut_open=None) -> None:
     """W0519 for part ``s`` (its final shape's ``loops``, counter-clockwise outside,
     clockwise around openings) at minimum width ``t`` mm: a slit of EMPTY space narrower than
     ``t`` that reaches into the part, the dual of W0507's thin wall (two lobes of one outline
@@ -506,20 +497,16 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     narrow is declared so).  Close pairs are grouped by place; a group whose span along the
     slit is at least ``t`` and whose sides are edges of two different shapes (a cusp drawn in
     one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
-    length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth)."""
+    length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth).
+    ``cut_open``: :func:`.common._cut_openings` of ``loops``, when the caller has it."""
     from ..part.nearby import close_pairs
-    from .common import _cut_boxes, _edges, _inside, _meets_a_cut, _signed
+    from .common import _edges, _inside
     if t <= 0 or not loops:
         return
-    hb = _cut_boxes(cuts)
-    keep = []
-    for P in loops:
-        if len(P) < 3:
-            continue
-        P = np.asarray(P, dtype=float)
-        if _signed(P) < 0 and _meets_a_cut(P, hb):
-            continue                             # an opening a hole cuts
-        keep.append(P)
+    if cut_open is None:
+        cut_open = _cut_openings(loops, cuts)
+    keep = [np.asarray(P, dtype=float) for P, opening in zip(loops, cut_open)
+            if len(P) >= 3 and not opening]      # not an opening a hole cuts
     if not keep:
         return
     tick()
