@@ -130,11 +130,11 @@ class _Layout:
         rowblock = -np.ones(n_rows, dtype=np.int64)
         rowlocal = np.zeros(n_rows, dtype=np.int64)
         zlocal = np.zeros(nz, dtype=np.int64)
-        u = np.zeros(nz)                      # every block's unknowns (its classes, or its columns)
-        dz = np.ones(nz)                      # their scaling
+        u = np.zeros(nz)                  # every block's unknowns (its classes, or its columns)
+        dz = np.ones(nz)                  # their scaling
         frs, zbs = [], []
         reduced = np.zeros(nb, dtype=bool)
-        px, pz, pt, pb = [], [], [], []       # placement: x column, z source, offset, block
+        px, pz, pt, pb = [], [], [], []   # placement: x column, z source, offset, block
         for k, (rows, cp) in enumerate(blocks):
             if red is not None and not bool(kept[rows].all()):
                 reduced[k] = True

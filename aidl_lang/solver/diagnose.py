@@ -88,8 +88,8 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None,
     ``basis``: a dict that receives ``"Q"`` (the orthonormal basis, one row per independent
     row, growing) and ``"indep"`` (those rows, in ``order``): after the pass,
     ``Q[:len(indep)]`` spans the rows taken, and its first ``j`` rows span the first ``j``
-    independent rows of ``order`` (what :func:`redundancies` measures the constructors'
-    span with)."""
+    independent rows of ``order`` (what :func:`~.redundancy.redundancies` measures the
+    constructors' span with)."""
     m, n = J.shape
     cap = min(m, n)
     Q = np.zeros((cap, n))

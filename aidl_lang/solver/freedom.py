@@ -50,8 +50,8 @@ def degrees_of_freedom(solver, floating: bool = True,
     (call after solving).  ``floating=False`` counts only (singular values, no null space:
     what the summary line of ``aidl check`` needs).  Past ``deadline`` (``time.monotonic()``,
     the run's end), or where a dense SVD would end past it (at
-    :data:`SVD_FLOPS_PER_SECOND`), a structure is not counted: rank -1, ``why`` "out of
-    time" (or "too large" past :data:`MAX_SVD_FLOPS`).
+    :data:`~.diagnose.SVD_FLOPS_PER_SECOND`), a structure is not counted: rank -1, ``why``
+    "out of time" (or "too large" past :data:`~.diagnose.MAX_SVD_FLOPS`).
 
     For the count, the model's whole Jacobian is formed once (:attr:`~.hierarchy.Solver.whole`,
     every row against every structure's columns; dense up to :data:`DENSE_CELLS` cells, else
@@ -321,8 +321,8 @@ def _whole_jacobian(solver, x: np.ndarray, col_sets: list):
 def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> str:
     """``fully constrained`` or ``N degrees of freedom left, see --dof`` for a whole model
     (structures too large for the dense rank count are reported as unknown); with ``slide``
-    (:func:`sliding`) it says what is free: ``N degrees of freedom left (free: hole `bore`
-    can slide along x), see --dof`` or ``(free: only where the whole part sits
+    (:func:`~.sliding.sliding`) it says what is free: ``N degrees of freedom left (free: hole
+    `bore` can slide along x), see --dof`` or ``(free: only where the whole part sits
     (harmless))``."""
     if any(d.rank < 0 for d in dofs):
         why = ("model too large" if any(d.why == "too large" for d in dofs if d.rank < 0)
