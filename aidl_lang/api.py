@@ -260,7 +260,7 @@ class Result:
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
         import time
-        from .solver.diagnose import degrees_of_freedom, freedom_text
+        from .solver.freedom import degrees_of_freedom, freedom_text
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
             deadline = time.monotonic() + budget.seconds
@@ -277,14 +277,14 @@ class Result:
         return doc
 
     def sliding(self):
-        """What the freedom left means (:class:`~aidl_lang.solver.diagnose.Sliding`: the parts
+        """What the freedom left means (:class:`~aidl_lang.solver.sliding.Sliding`: the parts
         whose whole body may move, harmless, and the features that can slide relative to
         their part, ``W0404``), or None for a model too large to search.  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
         if self._sliding is None:
             from .pipeline import MAX_SLIDING_UNKNOWNS
-            from .solver.diagnose import sliding
+            from .solver.sliding import sliding
             solver = self.compiled.solve.solver
             if int(solver.free.sum()) <= MAX_SLIDING_UNKNOWNS:
                 self._sliding = sliding(solver)

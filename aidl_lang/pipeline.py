@@ -413,12 +413,13 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                         seconds: float | None = None, max_rows: int | None = None,
                         deadline: float | None = None, why: set | None = None) -> int:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
-    measures: :func:`aidl_lang.solver.diagnose.redundancies`).  ``seconds`` bounds the search
+    measures: :func:`aidl_lang.solver.redundancy.redundancies`).  ``seconds`` bounds the search
     (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
     unknowns that it ranks; ``deadline`` (``time.monotonic()``: the run's end) bounds it
     too.  Returns the number of user constraints not looked at (out of time, or in a block
     too large)."""
-    from .solver.diagnose import MAX_DENSE, redundancies
+    from .solver.diagnose import MAX_DENSE
+    from .solver.redundancy import redundancies
     if seconds is not None:
         end = time.monotonic() + seconds
         deadline = end if deadline is None else min(deadline, end)
@@ -458,11 +459,11 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
     """W0404 for each feature (a structure inside a part) that can move relative to its part
     although a constraint places it (in the other direction, typically: `AlignCenterX(bits,
     plate)` and nothing for y), so only its starting guess holds it there
-    (:func:`aidl_lang.solver.diagnose.sliding`); a feature placed by its coordinates alone is
+    (:func:`aidl_lang.solver.sliding.sliding`); a feature placed by its coordinates alone is
     listed on the ok line, not warned.
     Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
-    :class:`~aidl_lang.solver.diagnose.Sliding` found (None for a model too large)."""
-    from .solver.diagnose import sliding
+    :class:`~aidl_lang.solver.sliding.Sliding` found (None for a model too large)."""
+    from .solver.sliding import sliding
     solver = result.solver
     if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
         return None

@@ -1,5 +1,5 @@
 """What W0401's search costs on a plain ``aidl check`` (issue 23): the redundancy search
-(``pipeline.report_redundancies``: :func:`aidl_lang.solver.diagnose.redundancies`) next to the
+(``pipeline.report_redundancies``: :func:`aidl_lang.solver.redundancy.redundancies`) next to the
 whole compile of the same file, CPU milliseconds, best of 10 (the compile: mean of 3), and
 whether SciPy was imported (it is not below 250 000 Jacobian cells).
 

@@ -36,6 +36,7 @@ if S == 0:
     import numpy, manifold3d, argparse, json, dataclasses, threading, gettext, copy, zlib
     os._exit(0)
 import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnose
+import aidl_lang.solver.freedom, aidl_lang.solver.redundancy, aidl_lang.solver.sliding
 import aidl_lang.output.checks
 if S == 8:
     from aidl_lang.cli.main import main

@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import diagnose as D
+from aidl_lang.solver import diagnose as D, freedom, redundancy, sliding
 from aidl_lang.solver.arrays import unique
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -131,7 +131,7 @@ def _sources():
 @pytest.mark.parametrize("name,src", _sources(), ids=lambda v: pathlib.Path(v).stem if len(v) < 200 else "")
 def test_count_equals_per_structure_tapes(name, src):
     solver = _solved(src, name)
-    got = [(d.structure.path, d.unknowns, d.rank) for d in D.degrees_of_freedom(solver, floating=False)]
+    got = [(d.structure.path, d.unknowns, d.rank) for d in freedom.degrees_of_freedom(solver, floating=False)]
     # the reference keeps pinned geometry (a gear's teeth, system.pinned) as unknowns held
     # by their rows, as every solve did before issue 38: the counts are the same
     assert got == _reference(_unpinned(solver))
@@ -141,7 +141,7 @@ def test_count_equals_per_structure_tapes(name, src):
         _params, rows, cols = _system(solver, s)
         if len(rows) and len(cols):
             systems.append((rows, cols))
-    whole = D._whole_jacobian(solver, solver.x, [c for _, c in systems])
+    whole = freedom._whole_jacobian(solver, solver.x, [c for _, c in systems])
     if whole is None:       # no structure has rows
         return
     W, wcols = whole        # dense, or CSR for a large model (the protractor)
@@ -280,7 +280,7 @@ def test_floating_entities_equal_a_full_svd_on_every_program():
     for name, src in _sources():
         solver = _solved(src, name)
         plain = _unpinned(solver)       # the reference: pinned geometry as unknowns again
-        for d in D.degrees_of_freedom(solver, floating=True):
+        for d in freedom.degrees_of_freedom(solver, floating=True):
             params, rows, cols = _system(plain, d.structure)
             if not len(rows) or not len(cols) or len(cols) > 600:     # the SVD's seconds
                 continue
@@ -402,7 +402,7 @@ def test_the_ancestor_rows_of_a_large_pattern_take_linear_work():
         calls.append(len(structs))
         return rows_of(structs)
     solver.rows_of = counted
-    dofs = D.degrees_of_freedom(solver)
+    dofs = freedom.degrees_of_freedom(solver)
     n = len(solver.model.structures)
     parents = sum(1 for s in solver.model.structures if s.children)
     assert n == 401 and len(calls) <= n + parents
@@ -515,11 +515,11 @@ def test_the_redundancy_search_peels_independent_rows_and_finds_the_same(seed, m
     def counted(J, order, deadline=None, basis=None):
         sizes.append(J.shape[0])
         return dependencies(J, order, deadline, basis)
-    monkeypatch.setattr(D, "dependencies", counted)
-    peeled = D.redundancies(solver)
+    monkeypatch.setattr(redundancy, "dependencies", counted)
+    peeled = redundancy.redundancies(solver)
     peeled_sizes, sizes[:] = list(sizes), []
-    monkeypatch.setattr(D, "_peeled_rows", lambda J, lab=None: np.zeros(J.shape[0], dtype=bool))
-    whole = D.redundancies(solver)
+    monkeypatch.setattr(redundancy, "_peeled_rows", lambda J, lab=None: np.zeros(J.shape[0], dtype=bool))
+    whole = redundancy.redundancies(solver)
     assert _said(peeled) == _said(whole) and len(peeled) >= 10
     assert sum(peeled_sizes) < sum(sizes) / 2          # most rows never decomposed
 
@@ -537,9 +537,9 @@ def test_a_chain_of_2500_points_is_searched_for_redundancy_in_a_blink(monkeypatc
     def counted(J, order, deadline=None, basis=None):
         sizes.append(J.shape)
         return dependencies(J, order, deadline, basis)
-    monkeypatch.setattr(D, "dependencies", counted)
+    monkeypatch.setattr(redundancy, "dependencies", counted)
     skipped: list = []
-    reds = D.redundancies(c.solve.solver, skipped=skipped)
+    reds = redundancy.redundancies(c.solve.solver, skipped=skipped)
     assert skipped == [] and sizes == [(2, 2)]         # x of pts[0] and pts[1]
     # the loop's first Distance and the repeated one: each follows from the other
     assert sorted((r.constraint.span.line, [b.span.line for b in r.by]) for r in reds) \
@@ -559,7 +559,7 @@ def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, m
         made.append(at)
         return real_deadline(at, budget)
     monkeypatch.setattr(pipeline, "Deadline", recorded)
-    redundancies, dof = D.redundancies, D.degrees_of_freedom
+    redundancies, dof = redundancy.redundancies, freedom.degrees_of_freedom
 
     def red(solver, deadline=None, **kw):
         given["redundancy"] = deadline
@@ -568,8 +568,8 @@ def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, m
     def counted(solver, floating=True, deadline=None):
         given["dof"] = deadline
         return dof(solver, floating, deadline)
-    monkeypatch.setattr(D, "redundancies", red)
-    monkeypatch.setattr(D, "degrees_of_freedom", counted)
+    monkeypatch.setattr(redundancy, "redundancies", red)
+    monkeypatch.setattr(freedom, "degrees_of_freedom", counted)
     f = tmp_path / "pts.aidl"
     f.write_text(_chain(300))
     assert main(["check", "--dof", "--budget", "0.5", str(f)]) == 0
@@ -653,9 +653,9 @@ def test_sliding_by_sparse_columns_finds_what_the_dense_jacobian_finds(extra, mo
     features as the dense Jacobian does."""
     c = compile_source(GAUGE.replace("EXTRA", extra), "gauge.aidl")
     assert c.ok
-    dense = D.sliding(c.solve.solver)
-    monkeypatch.setattr(D, "DENSE_CELLS", 0)
-    sparse = D.sliding(c.solve.solver)
+    dense = sliding.sliding(c.solve.solver)
+    monkeypatch.setattr(sliding, "DENSE_CELLS", 0)
+    sparse = sliding.sliding(c.solve.solver)
     names = lambda pairs: [(t.path, a) for t, a in pairs]    # noqa: E731
     assert names(sparse.features) == names(dense.features)
     assert names(sparse.placement) == names(dense.placement)

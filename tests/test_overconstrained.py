@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 import aidl_lang
 from aidl_lang.limits import DEFAULT_BUDGET
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, diagnose as D
+from aidl_lang.solver import Solver, diagnose as D, freedom, redundancy
 
 from conftest import EXAMPLES, ROOT
 
@@ -45,8 +45,8 @@ def _check(path: str, source: str | None = None, budget=BUDGET):
     if r.ok:
         end = r.compiled.deadline.at
         r.find_redundant(REDUNDANCY_SECONDS, REDUNDANCY_ROWS, deadline=end)
-        dofs = D.degrees_of_freedom(r.compiled.solve.solver, floating=False, deadline=end)
-        text = D.freedom_text(dofs, r.sliding())
+        dofs = freedom.degrees_of_freedom(r.compiled.solve.solver, floating=False, deadline=end)
+        text = freedom.freedom_text(dofs, r.sliding())
     return r, time.monotonic() - t0, text
 
 
@@ -107,7 +107,7 @@ def test_the_unpinned_issue_program_is_searched_without_a_dense_svd(monkeypatch)
     monkeypatch.setattr(np.linalg, "svd", watched)
     skipped, why = [], set()
     t0 = time.monotonic()
-    reds = D.redundancies(c.solve.solver, deadline=time.monotonic() + 5.0, skipped=skipped,
+    reds = redundancy.redundancies(c.solve.solver, deadline=time.monotonic() + 5.0, skipped=skipped,
                           why=why)
     assert time.monotonic() - t0 < 6.0
     assert big == []
@@ -136,7 +136,7 @@ def test_no_svd_starts_past_its_estimate(monkeypatch):
         raise AssertionError("an SVD started past its estimate")
     monkeypatch.setattr(np.linalg, "svd", refused)
     skipped, why = [], set()
-    D.redundancies(c.solve.solver, skipped=skipped, why=why)
+    redundancy.redundancies(c.solve.solver, skipped=skipped, why=why)
     assert skipped and why == {"too large"}
 
 

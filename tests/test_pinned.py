@@ -12,7 +12,7 @@ import numpy as np
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, diagnose as D
+from aidl_lang.solver import Solver, freedom, redundancy, sliding
 from aidl_lang.solver.system import pinned
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -35,13 +35,13 @@ def _facts(c) -> dict:
     sv = c.solve.solver
     out["x"] = np.asarray(c.model.x)
     out["dof"] = [(d.structure.path, d.unknowns, d.rank, d.floating)
-                  for d in D.degrees_of_freedom(sv)]
+                  for d in freedom.degrees_of_freedom(sv)]
     out["count"] = [(d.structure.path, d.unknowns, d.rank)
-                    for d in D.degrees_of_freedom(sv, floating=False)]
+                    for d in freedom.degrees_of_freedom(sv, floating=False)]
     out["redundant"] = sorted((r.constraint.describe(), r.partly,
                                sorted(b.describe() for b in r.by))
-                              for r in D.redundancies(sv))
-    sl = D.sliding(sv)
+                              for r in redundancy.redundancies(sv))
+    sl = sliding.sliding(sv)
     out["sliding"] = ([(t.path, a) for t, a in sl.placement], [(t.path, a) for t, a in sl.features])
     return out
 

@@ -102,6 +102,7 @@ def spy(name, *a, **k):
     return made(name, *a, **k)
 dataclasses._create_fn = spy
 import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnose
+import aidl_lang.solver.freedom, aidl_lang.solver.redundancy, aidl_lang.solver.sliding
 import aidl_lang.output.checks
 print(sorted(count.items()))
 """

@@ -14,7 +14,7 @@ import pytest
 
 from conftest import EXAMPLES, ROOT
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import diagnose as D
+from aidl_lang.solver import redundancy
 
 
 def _rank(A: np.ndarray) -> int:
@@ -95,7 +95,7 @@ def test_W0401_is_what_removing_the_constraint_does_to_the_rank(name, src):
     if int(solver.free.sum()) > 1000:
         # one dense SVD per constraint: gear_pair's 6,658 unknowns would take hours
         pytest.skip("too large for the brute-force rank (the bounded search is what runs)")
-    found = {id(r.constraint): r for r in D.redundancies(solver)}
+    found = {id(r.constraint): r for r in redundancy.redundancies(solver)}
     for k, (con, gain, beyond) in _brute(solver).items():
         r = found.get(k)
         if gain == 0:

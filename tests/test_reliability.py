@@ -53,7 +53,7 @@ def test_constraints_on_every_primitive_answer_with_diagnostics(name):
 def test_fixed_polygon_holds_every_vertex(kind):
     c = compile_source(f"solid p {{\n g = {PRIMS[kind]}\n Fixed(g)\n}}\n", "p.aidl")
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
-    from aidl_lang.solver.diagnose import degrees_of_freedom
+    from aidl_lang.solver.freedom import degrees_of_freedom
     assert sum(d.dof for d in degrees_of_freedom(c.solve.solver, floating=False)) == 0
 
 
@@ -147,7 +147,8 @@ def test_freedom_count_of_a_long_pattern_peels_its_copies():
     minutes); rows that alone hold some unknown are peeled off first, in O(non-zeros)."""
     import numpy as np
     import scipy.sparse as sp
-    from aidl_lang.solver.diagnose import _block_rank, degrees_of_freedom, freedom_text
+    from aidl_lang.solver.diagnose import _block_rank
+    from aidl_lang.solver.freedom import degrees_of_freedom, freedom_text
     from aidl_lang.limits import Budget
     # wall time to spare: on a loaded machine the default 15 s ran out in the compile
     c = compile_source(_circles(5000, None, pattern=True), "lp.aidl", budget=Budget(seconds=120))

@@ -70,7 +70,7 @@ def run_one(task: dict, cfg: dict) -> dict:
                     warnings=[_diag(d) for d in res.sink.items if d.severity == "warning"],
                     solve_s=res.solve_seconds if res.solve is not None else None)
     if res.ok and res.solve is not None:
-        from ..solver.diagnose import degrees_of_freedom
+        from ..solver.freedom import degrees_of_freedom
         # in what the compile left of the program's budget, as `aidl check` counts (issue 48)
         end = res.deadline.at if res.deadline is not None else None
         dofs = degrees_of_freedom(res.solve.solver, floating=False, deadline=end)

@@ -134,7 +134,7 @@ def cmd_check(args) -> int:
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "settled": res.solve.n_settled,
                           "max_residual": res.solve.max_residual}
-        from ..solver.diagnose import degrees_of_freedom, freedom_text
+        from ..solver.freedom import degrees_of_freedom, freedom_text
         if args.dof and res.ok:
             dofs = degrees_of_freedom(res.solve.solver, deadline=end)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,

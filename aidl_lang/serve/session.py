@@ -305,7 +305,7 @@ class Session:
             return
         import time
         from ..limits import DEFAULT_BUDGET
-        from ..solver.diagnose import degrees_of_freedom
+        from ..solver.freedom import degrees_of_freedom
         try:            # bounded as a compile is (issue 48): a structure past it is not counted
             end = time.monotonic() + DEFAULT_BUDGET.seconds
             self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,

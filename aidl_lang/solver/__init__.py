@@ -9,7 +9,8 @@ Pipeline of this package, one module per step:
 * :mod:`.hierarchy`: the post-order recursive solve with iterative deepening and min/max
   branch iteration;
 * :mod:`.diagnose`: after a failure, the smallest conflicting constraint sets (rank-revealing
-  QR of the Jacobian); on demand, degrees of freedom per structure and redundant constraints.
+  QR of the Jacobian); on demand, :mod:`.freedom` (degrees of freedom per structure),
+  :mod:`.redundancy` (redundant constraints) and :mod:`.sliding` (what can still move).
 
 :func:`solve` is the entry point; a failure lists the constraints still unsatisfied and the
 conflict sets found, with their structure and source span.
