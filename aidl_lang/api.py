@@ -264,7 +264,20 @@ class Result:
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
             deadline = time.monotonic() + budget.seconds
-        dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail, deadline=deadline)
+        from .limits import is_out_of_memory, memory_text
+        try:
+            dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail,
+                                      deadline=deadline)
+        except (MemoryError, SystemError) as ex:
+            if not is_out_of_memory(ex):
+                raise
+            dofs = None
+        if dofs is None:          # said once the count's frames (and what they held) are gone
+            import gc
+            gc.collect()
+            why = f"the count ran out of memory: {memory_text()}"
+            return {"dof": None, "text": f"degrees of freedom not counted ({why})"} | (
+                {"structures": [], "not_counted": why} if detail else {})
         counted = all(d.rank >= 0 for d in dofs)
         doc: dict = {"dof": sum(max(0, d.dof) for d in dofs) if counted else None,
                      "text": freedom_text(dofs, self.sliding())}
@@ -298,18 +311,30 @@ class Result:
         (a ``time.monotonic()`` value: the end of the run's budget), ``max_rows``
         the blocks of rows it ranks; the user constraints not looked at (out of time, or in
         a block too large) are counted in :attr:`not_searched`.  Runs once per result; []
-        when the program did not solve."""
+        when the program did not solve.  A search that runs out of memory adds one located
+        ``E0304`` instead (and returns it)."""
         if self._redundant is None:
             self._redundant = []
             if self.compiled.ok and self.compiled.solve is not None:
-                from .pipeline import report_redundancies
+                from .limits import is_out_of_memory
+                from .pipeline import out_of_memory_sink, report_redundancies, report_sliding
                 before = len(self.sink.items)
                 why: set = set()
-                self.not_searched = report_redundancies(self.sink, self.compiled.solve,
-                                                        seconds, max_rows, deadline, why)
-                self.not_searched_why = " and ".join(sorted(why))
-                from .pipeline import report_sliding
-                self._sliding = report_sliding(self.sink, self.compiled.solve)
+                try:
+                    self.not_searched = report_redundancies(self.sink, self.compiled.solve,
+                                                            seconds, max_rows, deadline, why)
+                    self.not_searched_why = " and ".join(sorted(why))
+                    self._sliding = report_sliding(self.sink, self.compiled.solve)
+                    failed = False
+                except (MemoryError, SystemError) as ex:
+                    if not is_out_of_memory(ex):
+                        raise
+                    failed = True
+                if failed:        # said once the search's frames (and what they held) are gone
+                    self.not_searched_why = "out of memory"
+                    for d in out_of_memory_sink(self.path, self.source,
+                                                "the redundancy search").items:
+                        self.sink.add(d)
                 self._redundant = list(self.sink.items[before:])
         return list(self._redundant)
 

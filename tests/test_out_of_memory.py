@@ -109,6 +109,28 @@ def test_booleans_and_checks_out_of_memory_in_the_pipeline_and_the_api(monkeypat
     assert "ran out of memory" in str(ex.value)
 
 
+def test_api_freedom_and_redundancy_search_out_of_memory(monkeypatch):
+    """The API's analyses after the compile: a freedom count that runs out of memory is
+    "not counted" with the reason, and the redundancy search's is one located E0304 among
+    the result's diagnostics (the MCP `check` tool and the studio call both), never a raw
+    MemoryError."""
+    import aidl_lang
+    from aidl_lang import pipeline
+    from aidl_lang.solver import freedom
+    r = aidl_lang.compile(path=str(PLATE))
+    assert r.ok
+    monkeypatch.setattr(freedom, "degrees_of_freedom", _boom)
+    doc = r.freedom(detail=True)
+    assert doc["dof"] is None and "ran out of memory" in doc["not_counted"], doc
+    assert doc["text"].startswith("degrees of freedom not counted (the count ran out of memory")
+    monkeypatch.setattr(pipeline, "report_redundancies", _boom)
+    found = r.find_redundant()
+    assert [d.code for d in found] == ["E0304"], found
+    assert "in the redundancy search" in found[0].message and found[0].span is not None
+    assert r.not_searched_why == "out of memory" and not r.ok
+    assert r.find_redundant() == found               # once per result
+
+
 def test_serve_session_out_of_memory_is_E0304_not_E0900(monkeypatch, tmp_path):
     from aidl_lang.serve import session as S
     f = tmp_path / "p.aidl"
