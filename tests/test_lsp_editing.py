@@ -174,6 +174,15 @@ async def test_rename_across_imports(client: LanguageClient, tmp_path):
         await client.text_document_rename_async(T.RenameParams(
             text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
             position=pos(src, "peg(r=2)", 1), new_name="2peg"))
+    # a structure kind is an ordinary name too (`cut = 2` compiles); a keyword is not
+    edit = await client.text_document_rename_async(T.RenameParams(
+        text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
+        position=pos(src, "peg_count", 1), new_name="cut"))
+    assert apply(src, edit.changes[main.as_uri()]) == src.replace("peg_count", "cut")
+    with pytest.raises(JsonRpcException, match="`if` is a keyword"):
+        await client.text_document_rename_async(T.RenameParams(
+            text_document=T.TextDocumentIdentifier(uri=main.as_uri()),
+            position=pos(src, "peg_count", 1), new_name="if"))
 
 
 @pytest.mark.asyncio(loop_scope="module")

@@ -103,7 +103,7 @@ def rename(src: str, line: int, character: int, new_name: str, uri: str, path: s
     """
     if not _IDENT.match(new_name or ""):
         raise RenameError(f"`{new_name}` is not a name (letters, digits, `_`; not starting with a digit)")
-    if new_name in R.KEYWORDS or new_name in R.STRUCTURE_KINDS or new_name in R.CONSTANTS:
+    if new_name in R.KEYWORDS or new_name in R.CONSTANTS:      # `solid`, `cut`: ordinary names
         raise RenameError(f"`{new_name}` is a keyword")
     ix, sym, _ = _renamable(src, line, character, path)
     key, name = _key(sym), sym.name
