@@ -99,6 +99,34 @@ def test_session_params_and_default_spans():
     assert s.update_dof() is None
 
 
+def test_values_set_before_the_first_load_are_kept(tmp_path):
+    """A session given values before its first load (the studio's page, a worker new to the
+    tab) draws with them in that one compile; a later edit that changes a param's default
+    drops that param's value, and a value for a param the file no longer has is dropped."""
+    from aidl_lang.serve.session import Session
+    s = Session(TEL)
+    s.values = {"dial_r": "36mm", "nope": "1mm"}
+    v = s.load()
+    assert v["ok"] and s.values == {"dial_r": "36mm"}
+    assert {q["name"]: q["value"] for q in v["params"]}["dial_r"] == 36.0
+    assert v["svg"] == compile_and_svg({"dial_r": "36mm"})
+    f = tmp_path / "t.aidl"
+    f.write_text(TEL.read_text())
+    s = Session(f)
+    s.values = {"dial_r": "36mm"}
+    s.load()
+    assert s.values == {"dial_r": "36mm"}
+    f.write_text(re.sub(r"param dial_r = [^\n]*", "param dial_r = 30 mm", TEL.read_text()))
+    s.load()
+    assert s.values == {}
+
+
+def compile_and_svg(values):
+    from aidl_lang.output import render_model, to_svg
+    c = compile_source(TEL.read_text(), str(TEL), values)
+    return to_svg(render_model(c.model), title=c.model.root.name)
+
+
 def test_slider_moves_reuse_the_warm_solver_and_match_the_cli():
     from aidl_lang.output import render_model, to_svg
     from aidl_lang.serve.session import Session

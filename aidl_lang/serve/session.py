@@ -129,8 +129,10 @@ class Session:
         self._base = base.drawing if base.ok else None    # W0510's baseline: the defaults
         params = self._params(base.fctx, {}) if base.fctx is not None else []
         defaults = {p.name: p.default for p in params}
+        # kept: a value whose param is still there with the same default (or is new: the
+        # first load keeps the values a caller set before it)
         self.values = {k: v for k, v in self.values.items()
-                       if k in defaults and old_defaults.get(k) == defaults[k]}
+                       if k in defaults and old_defaults.get(k, defaults[k]) == defaults[k]}
         res = base
         if self.values and base.ok:
             res = self._compile(self.values)

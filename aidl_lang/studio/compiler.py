@@ -180,8 +180,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         s.values = values
         doc = s.load(source)
         if values and doc.get("ok") and s.values != values:
-            # a session new to this worker (the tab's other worker drew the last picture, or
-            # this one dropped it) keeps no values through load: the page's values apply
+            # load drops the value of a param whose default the edit changed: the page's
+            # values (what its sliders show) apply
             doc = s.set_params(values)
             doc = s.update_checks() or doc
     elif values != s.values:
