@@ -14,7 +14,7 @@ quadratic in the segments when this was written (issue 58) and are measured else
 be given both plain and after ``--laser`` (Boxes.py's SVGs both ways).
 
 Prints one row per folder and a total: files, imported (a program written), compiled with no
-error, refused cleanly (a :class:`~aidl_lang.drawing.read.DrawingError`, by code), tracebacks
+error, refused cleanly (a :class:`~aidl_lang.drawing.model.DrawingError`, by code), tracebacks
 (any other exception: must be 0), import seconds (total, and the slowest file), compile
 seconds.  ``-v`` prints each file that failed to compile with its first errors, and each
 traceback.  Exits 1 when a program failed to compile or an import raised.
@@ -39,7 +39,7 @@ sys.path.insert(0, str(ROOT))
 
 from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.drawing.program import import_drawing  # noqa: E402
-from aidl_lang.drawing.read import DrawingError  # noqa: E402
+from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.pipeline import _compile, compile_source, run_deep  # noqa: E402
 
 SEGMENT = re.compile(r"= (?:Line|Arc|Circle|Spline|Bezier|Ellipse|Text)\(")

@@ -144,7 +144,7 @@ def one(example: pathlib.Path, tmp: pathlib.Path, verbose: bool) -> dict:
 
 def corpus(folder: pathlib.Path, max_bytes: int, verbose: bool) -> int:
     import gzip
-    from aidl_lang.drawing.read import DrawingError
+    from aidl_lang.drawing.model import DrawingError
     n = exact = compiled = la = lb = 0
     secs = 0.0
     bad = []

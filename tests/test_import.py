@@ -168,7 +168,7 @@ def test_drawing_as_a_hole_and_turned(tmp_path):
     # (the board's own holes are holes of the cut: material again, as islands)
     assert d.box() == pytest.approx((-80, -80, 80, 80), abs=1e-9)
     inner = d.outlines[1]
-    from aidl_lang.drawing.read import _segs_box
+    from aidl_lang.drawing.model import _segs_box
     assert _segs_box(inner.segments) == pytest.approx((-42, 0, 0, 64), abs=1e-9)
     assert sorted((round(c.center[0], 9), round(c.center[1], 9)) for c in d.circles) == \
         [(-38.5, 3.5), (-38.5, 60.5), (-3.5, 3.5), (-3.5, 60.5)]
@@ -216,7 +216,7 @@ def test_cli_import_refuses_bad_input_and_writes_nothing(tmp_path):
 
 def test_too_many_entities_is_refused(tmp_path, monkeypatch):
     from aidl_lang.drawing import DrawingError, read_drawing
-    from aidl_lang.drawing import read as R
+    from aidl_lang.drawing import dxf as R
     doc = ezdxf.new("R2010")
     for i in range(30):
         doc.modelspace().add_line((i, 0), (i, 1))
@@ -384,7 +384,7 @@ def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
     about the mirrored centre once the writer kept such arcs whole)."""
     import math
 
-    from aidl_lang.drawing.read import _bulge_arc
+    from aidl_lang.drawing.dxf import _bulge_arc
     c, r = (3.0, -2.0), 7.5
     a0 = math.radians(20)
     sweep = math.radians(sweep_deg)

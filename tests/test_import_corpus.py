@@ -3,7 +3,7 @@
 Every sample DXF of the ezdxf project (tests/data/ezdxf/, gzip-compressed, MIT: see its
 README.md) is imported as ``aidl import FILE`` imports it and the program is compiled by the
 real compiler: no error diagnostic.  A file that cannot be imported is a clean
-:class:`~aidl_lang.drawing.read.DrawingError` (the files of :data:`REFUSED`, each with its
+:class:`~aidl_lang.drawing.model.DrawingError` (the files of :data:`REFUSED`, each with its
 code), never another exception.
 
 Before issue 58: ``integration_tests/data/no_layouts.dxf`` imported to

@@ -279,7 +279,8 @@ def test_a_part_holding_what_infer_does_not_know_is_written_piece_by_piece(plate
     write: that part goes to `aidl import`'s own writer whole, so nothing is dropped."""
     from dataclasses import dataclass, field, fields
     from aidl_lang.drawing.infer import to_program_inferred
-    from aidl_lang.drawing.read import Drawing, read_drawing
+    from aidl_lang.drawing.model import Drawing
+    from aidl_lang.drawing.read import read_drawing
     _, first, _, _ = plate
     d = read_drawing(first.read_bytes(), "plate.dxf", keep_text=True)
 

@@ -21,7 +21,8 @@ import ezdxf
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing.read import CLOSE_TOL, read_drawing
+from aidl_lang.drawing.model import CLOSE_TOL
+from aidl_lang.drawing.read import read_drawing
 
 AIDL = [sys.executable, "-m", "aidl_lang.cli"]
 ROOT = Path(__file__).resolve().parent.parent

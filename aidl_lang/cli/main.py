@@ -604,7 +604,7 @@ def cmd_import(args) -> int:
     """``aidl import FILE -o PART.aidl``: exit 0 written, 1 refused (a located message on
     stderr, nothing written)."""
     from ..drawing.infer import import_drawing
-    from ..drawing.read import DrawingError
+    from ..drawing.model import DrawingError
     from ..files import FileRefused, read_file
     from ..sources import MAX_DRAWING_BYTES
     src = args.file

@@ -17,7 +17,7 @@ import math
 import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from .read import Drawing, Note, Outline, Path
+from .model import Drawing, Note, Outline, Path
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -30,7 +30,7 @@ def _num(v: float, snap: float = SNAP) -> str:
     1e-9 mm.  Angles in radians pass ``snap=0`` (exact: 1e-12 rad is 1e-9 mm at 1 m)."""
     v = float(v)
     if not math.isfinite(v) or abs(v) > 1e15:     # never written into a program
-        from .read import DrawingError
+        from .model import DrawingError
         raise DrawingError("E0130", f"the drawing has a number {v!r} that is not finite or "
                                     f"beyond the model extent: not written",
                            "fix the entity in the drawing")
@@ -498,7 +498,8 @@ def layer_names(data: bytes, name: str) -> list[str]:
     SVG."""
     if not name.lower().endswith(".dxf"):
         return [""]
-    from .read import DrawingError, MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf
+    from .dxf import MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf
+    from .model import DrawingError
     try:
         with _EzdxfLog():            # its log lines: a note of the read, not the terminal
             doc = _open_dxf(data, name)

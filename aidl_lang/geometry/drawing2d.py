@@ -162,7 +162,7 @@ def local_parts(d, rot: float):
 
 def text_paths(texts, rot: float) -> list:
     """The pen strokes of a drawing's texts (``(text, (x, y), height, rotation, anchor,
-    valign)``, :class:`~aidl_lang.drawing.read.Drawing`'s ``texts``) as open paths of
+    valign)``, :class:`~aidl_lang.drawing.model.Drawing`'s ``texts``) as open paths of
     :class:`Line` segments in its frame, turned by ``rot`` (radians) with the drawing: each
     text in the single-stroke font (:func:`~.text.text_strokes`), its height the cap
     height."""

@@ -437,7 +437,7 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     "Inferring the design"), else the pieces.  ``output``: also write the program there
     (``.aidl``, inside the root, never through a link).  Raises :class:`Refused`."""
     from ..drawing.infer import import_drawing as _import
-    from ..drawing.read import DrawingError
+    from ..drawing.model import DrawingError
     from ..limits import DEFAULT_BUDGET
     from ..sources import MAX_DRAWING_BYTES
     real = ws.inside(path, must_exist=True)

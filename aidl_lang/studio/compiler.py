@@ -120,7 +120,7 @@ def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
     following a link) as an AIDL program: ``{"program", "notes"}``, its notes as ``aidl
     import`` prints them; ``{"error"}`` for a drawing the importer refuses (docs/import.md)."""
     from ..drawing.infer import import_drawing
-    from ..drawing.read import DrawingError
+    from ..drawing.model import DrawingError
     from ..files import open_beneath, read_regular
     from ..sources import MAX_DRAWING_BYTES
     if not name.lower().endswith((".dxf", ".svg")):

@@ -1,0 +1,516 @@
+"""Loose pieces joined into a drawing: the segments a reader made (open pieces, closed loops,
+circles, ellipses; mm) in, a :class:`~.model.Drawing` of outlines and open paths out
+(:func:`_finish`).  On the way: pieces that are one point dropped (:func:`_drop_degenerate`),
+duplicates removed (:func:`_dedupe`), pieces chained end to end on a grid of their ends
+(:func:`_chain`), a path whose end runs past its start closed at the crossing
+(:func:`_overshoot`), gaps within the closing tolerance closed (:func:`_meet`), a loop's small
+loops where it crosses itself cut off (:func:`_trim_small_loops`), a loop that still crosses
+itself (:func:`_crossing`) kept as a path.  Crossings are exact on the pieces' own carriers
+(:func:`~aidl_lang.geometry.curves.crossings`)."""
+from __future__ import annotations
+
+import math
+
+from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from .model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _segs_box,
+                    bezier_spline)
+
+MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
+
+
+def _meet(a, b) -> tuple[list, list]:
+    """``a`` and ``b`` (segments, ``a.end`` near ``b.start``) made to meet exactly: the end
+    of ``a`` (else the start of ``b``) is moved onto the other when it is a Line over ten
+    times longer than the gap (its direction turns by less than 0.1 rad), else a tiny Line
+    bridges the gap; an arc's
+    or a curve's own numbers are never changed (their exactness is kept)."""
+    g = math.dist(a.end, b.start)
+    if g == 0.0:
+        return [a], [b]
+    if isinstance(a, Line) and math.dist(a.start, a.end) > 10 * g:
+        return [Line(a.start, b.start)], [b]
+    if isinstance(b, Line) and math.dist(b.start, b.end) > 10 * g:
+        return [a], [Line(a.end, b.end)]
+    return [a, Line(a.end, b.start)], [b]
+
+
+def _seg_key(s, q: float = 1e-6):
+    """A key equal for two segments that are the same curve, run either way (ends rounded
+    to ``q`` mm): lines, arcs and spline pieces; None for others."""
+    def r(p):
+        return (round(p[0] / q), round(p[1] / q))
+    if isinstance(s, Line):
+        return ("L", frozenset((r(s.start), r(s.end))))
+    if isinstance(s, Arc):
+        return ("A", r(s.center), round(s.radius / q), frozenset((r(s.start), r(s.end))),
+                r(s.at(s.start_angle + s.sweep / 2)))
+    if isinstance(s, Spline):
+        pts = tuple(r(p) for b in s.spans for p in b)
+        return ("S", min(pts, pts[::-1]))
+    return None
+
+
+def _dedupe(pieces: list, loops: list) -> tuple[list, list, int]:
+    """``pieces`` and ``loops`` without the duplicates a drawing program leaves (the same
+    line drawn twice, a path drawn over another): a piece or loop every segment of which is
+    already drawn is left out.  Returns them and the count of segments removed."""
+    seen: set = set()
+    removed = 0
+
+    def dup(segs) -> bool:
+        keys = [_seg_key(x) for x in segs]
+        if keys and all(k is not None and k in seen for k in keys):
+            return True
+        seen.update(k for k in keys if k is not None)
+        return False
+    out_loops = []
+    for segs, src in loops:
+        if dup(segs):
+            removed += len(segs)
+        else:
+            out_loops.append((segs, src))
+    out_pieces = []
+    for p in pieces:
+        if dup(p):
+            removed += len(p)
+        else:
+            out_pieces.append(p)
+    return out_pieces, out_loops, removed
+
+
+def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
+           deadline=None) -> tuple[list, list]:
+    """Join open pieces (lists of segments) end to end: ``(closed chains, open chains)``.
+    The pieces' ends are kept in a grid of cells ``tol`` wide, so each step finds its
+    neighbours in the 3 x 3 cells around an end: linear in the pieces (20 000 loose lines join
+    in well under a second), where scanning them all at every step was quadratic.
+
+    ``tol`` above :data:`JOIN_TOL` (the closing tolerance): ends that far apart are made to
+    meet exactly (:func:`_meet`) and each gap so closed is appended to ``gaps`` as ``(gap mm,
+    where)``.  ``deadline``: a :class:`~aidl_lang.limits.Deadline`, checked as it goes."""
+    from ..geometry.curves import reverse
+    pieces = [list(p) for p in pieces]
+    used = [False] * len(pieces)
+    grid: dict = {}
+
+    def cell(p):
+        return (math.floor(p[0] / tol), math.floor(p[1] / tol))
+
+    def join(left: list, right: list) -> list:
+        """``left + right``, their meeting ends made exact (the gap noted) when apart."""
+        g = math.dist(left[-1].end, right[0].start)
+        if g == 0.0 or tol <= JOIN_TOL or g <= JOIN_TOL:
+            return left + right
+        if gaps is not None:
+            gaps.append((g, left[-1].end))
+        a, b = _meet(left[-1], right[0])
+        return left[:-1] + a + b + right[1:]
+
+    for i, p in enumerate(pieces):
+        for q in (p[0].start, p[-1].end):
+            grid.setdefault(cell(q), []).append(i)
+
+    def near(q):
+        cx, cy = cell(q)
+        out = []
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                out += [i for i in grid.get((cx + dx, cy + dy), ()) if not used[i]]
+        return sorted(set(out))
+
+    closed, paths = [], []
+    for i0 in range(len(pieces)):
+        if used[i0]:
+            continue
+        if deadline is not None and i0 % 256 == 0:
+            deadline.check("joining the drawing's pieces")
+        used[i0] = True
+        cur = list(pieces[i0])
+        for forward in (True, False):
+            while math.dist(cur[0].start, cur[-1].end) > tol:
+                end = cur[-1].end if forward else cur[0].start
+                for i in near(end):
+                    p = pieces[i]
+                    if forward and math.dist(p[0].start, end) <= tol:
+                        cur = join(cur, p)
+                    elif forward and math.dist(p[-1].end, end) <= tol:
+                        cur = join(cur, [reverse(s) for s in reversed(p)])
+                    elif not forward and math.dist(p[-1].end, end) <= tol:
+                        cur = join(p, cur)
+                    elif not forward and math.dist(p[0].start, end) <= tol:
+                        cur = join([reverse(s) for s in reversed(p)], cur)
+                    else:
+                        continue
+                    used[i] = True
+                    break
+                else:
+                    break
+        g = math.dist(cur[0].start, cur[-1].end)
+        if g <= tol:
+            if g > JOIN_TOL:            # closed across the gap: its ends made one point
+                if gaps is not None:
+                    gaps.append((g, cur[-1].end))
+                if len(cur) == 1:
+                    cur = cur + [Line(cur[-1].end, cur[0].start)]
+                else:
+                    a, b = _meet(cur[-1], cur[0])
+                    cur = b + cur[1:-1] + a
+            closed.append(cur)
+        else:
+            paths.append(cur)
+    return closed, paths
+
+
+def _crossing(segs) -> tuple[float, float] | None:
+    """A point where the closed loop ``segs`` crosses itself, or None (on its chords within
+    0.005 mm of the curves)."""
+    import numpy as np
+    pts = Loop(list(segs)).points()
+    P = np.asarray(pts, dtype=float)
+    n = len(P)
+    if n < 4 or n > MAX_CROSSING_CHORDS:
+        return None
+    A, B = P, np.roll(P, -1, axis=0)
+    for i in range(n - 2):
+        j0, j1 = i + 2, n if i > 0 else n - 1
+        if j0 >= j1:
+            continue
+        a, b = A[i], B[i]
+        c, d = A[j0:j1], B[j0:j1]
+        def orient(p, q, r):
+            return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
+        o1 = orient(a, b, c)
+        o2 = orient(a, b, d)
+        o3 = orient(c, d, a)
+        o4 = orient(c, d, b)
+        hit = (o1 * o2 < 0) & (o3 * o4 < 0)
+        if hit.any():
+            k = int(np.argmax(hit))
+            t = o1[k] / (o1[k] - o2[k])
+            x, y = c[k] + t * (d[k] - c[k])
+            return float(x), float(y)
+    return None
+
+
+OVERSHOOT = 0.5          # mm: a path whose end runs this far past its start is closed there
+
+
+def _piece_length(s) -> float:
+    return s.length if not isinstance(s, Circle) else 2 * math.pi * s.radius
+
+
+def _split_at(s, x) -> tuple | None:
+    """Segment ``s`` cut at its point ``x``: ``(s from its start to x, s from x to its
+    end)``, each on ``s``'s own carrier (:func:`~aidl_lang.geometry.curves.with_ends`:
+    exact, a line stays a line, an arc an arc, a curve the same curve); None when ``x`` is
+    not on ``s`` between its ends (their lengths do not add up to its own)."""
+    from ..geometry.curves import with_ends
+    try:
+        a, b = with_ends(s, s.start, x), with_ends(s, x, s.end)
+        la, lb, l0 = _piece_length(a), _piece_length(b), _piece_length(s)
+    except Exception:
+        return None
+    if abs(la + lb - l0) > 1e-9 * max(1.0, l0):
+        return None
+    return a, b
+
+
+def _overshoot(segs: list, bound: float):
+    """The closed loop of the open chain ``segs`` whose end crosses its own start (a path
+    drawn past its start so that the beam closes it, as Boxes.py's D-bores end 0.1 mm past
+    theirs): ``(loop, overshoot mm, crossing)``, the loop running from the crossing to the
+    crossing with the bits before and after it trimmed, or None.  The trimmed bits each run
+    at most ``bound`` mm along the chain; the crossing is exact on both pieces' carriers
+    (:func:`~aidl_lang.geometry.curves.crossings`)."""
+    from ..geometry.curves import carrier, crossings
+    if bound <= 0 or len(segs) < 2 or math.dist(segs[0].start, segs[-1].end) > 2 * bound:
+        return None
+    heads, run = [], 0.0            # the pieces whose start lies within bound of the start
+    for i, sg in enumerate(segs):
+        if run > bound:
+            break
+        heads.append((i, run))
+        run += _piece_length(sg)
+    tails, run = [], 0.0
+    for j in range(len(segs) - 1, -1, -1):
+        if run > bound:
+            break
+        tails.append((j, run))
+        run += _piece_length(segs[j])
+    best = None
+    for i, before in heads:
+        for j, after in tails:
+            if j <= i:
+                continue
+            a, b = segs[i], segs[j]
+            try:
+                pts = crossings(carrier(a), carrier(b))
+            except Exception:
+                continue
+            for x in pts:
+                sa, sb = _split_at(a, x), _split_at(b, x)
+                if sa is None or sb is None:
+                    continue
+                cut_head = before + _piece_length(sa[0])
+                cut_tail = after + _piece_length(sb[1])
+                if cut_head > bound or cut_tail > bound or _piece_length(sa[1]) <= JOIN_TOL \
+                        or _piece_length(sb[0]) <= JOIN_TOL:
+                    continue
+                if best is None or cut_head + cut_tail < best[0]:
+                    loop = [sa[1]] + segs[i + 1:j] + [sb[0]]
+                    if j == i + 1 and len(loop) == 2 and _piece_length(loop[0]) + \
+                            _piece_length(loop[1]) <= 4 * JOIN_TOL:
+                        continue
+                    best = (cut_head + cut_tail, loop, cut_tail, x)
+    if best is None:
+        return None
+    return best[1], best[2], best[3]
+
+
+def _box_of(s) -> tuple:
+    if isinstance(s, Line):
+        return (min(s.start[0], s.end[0]), min(s.start[1], s.end[1]),
+                max(s.start[0], s.end[0]), max(s.start[1], s.end[1]))
+    return _segs_box([s])
+
+
+def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int]:
+    """``segs`` (a chain; ``closed``: a loop) without the small loops it makes where it
+    crosses itself and comes back within ``bound`` mm along itself: the pieces between the
+    crossing and its return are cut out, the two crossing pieces cut at the crossing on
+    their own carriers (exact).  A laser cuts such a loop off as a crumb, so the part's edge
+    is the chain without it: Boxes.py draws one at each inner corner with its default
+    ``inner_corners="loop"`` and a burn (kerf) correction, and its D-bores' flat crosses
+    their arc so.  Returns the chain and the number of loops cut out."""
+    from ..geometry.curves import carrier, crossings
+    n_cut = 0
+    out = list(segs)
+    i = 0
+    while i < len(out) - 2:
+        a = out[i]
+        ba = _box_of(a)
+        run = 0.0
+        hit = None
+        for j in range(i + 2, len(out) - (1 if closed and i == 0 else 0)):
+            run += _piece_length(out[j - 1])
+            if run > bound:
+                break
+            b = out[j]
+            bb = _box_of(b)
+            if bb[0] > ba[2] + 1e-9 or ba[0] > bb[2] + 1e-9 or bb[1] > ba[3] + 1e-9 or \
+                    ba[1] > bb[3] + 1e-9:
+                continue
+            try:
+                pts = crossings(carrier(a), carrier(b))
+            except Exception:
+                continue
+            for x in pts:
+                sa, sb = _split_at(a, x), _split_at(b, x)
+                if sa is None or sb is None or _piece_length(sa[0]) <= JOIN_TOL or \
+                        _piece_length(sb[1]) <= JOIN_TOL:
+                    continue
+                if run + _piece_length(sa[1]) + _piece_length(sb[0]) <= bound:
+                    hit = (j, sa[0], sb[1])
+                    break
+            if hit is not None:
+                break
+        if hit is None:
+            i += 1
+            continue
+        j, head, tail = hit
+        out = out[:i] + [head, tail] + out[j + 1:]
+        n_cut += 1
+    return out, n_cut
+
+
+DEGENERATE_ABS = JOIN_TOL    # mm: a piece all of whose points lie this close to its start
+DEGENERATE_REL = 1e-8       # ... or this share of the drawing's largest coordinate is dropped
+
+
+def degenerate_tol(pieces, loops, circles, ellipses) -> float:
+    """The size (mm) at or below which a piece of the drawing is one point and is dropped
+    (:func:`_drop_degenerate`): ``max(DEGENERATE_ABS, DEGENERATE_REL * c)``, ``c`` the largest
+    absolute coordinate of the pieces' ends, circles' and ellipses' centres.  The compiler
+    calls two points one when they are within ``1e-9 * max(1 mm, the largest coordinate of
+    the statement)`` (``Bezier`` and ``Spline``: E0108 "is one point",
+    :func:`aidl_lang.geometry.spline.check_points`), so a piece kept here stays ten times
+    past what it refuses, after the writer's shortest-decimal rounding (1e-12 mm); and
+    :data:`JOIN_TOL` is where two ends are one point for the chaining."""
+    c = 0.0
+    for segs in list(pieces) + [segs for segs, _src in loops]:
+        for s in segs:
+            for p in (s.start, s.end):
+                c = max(c, abs(p[0]), abs(p[1]))
+    for x in circles:
+        c = max(c, abs(x.center[0]), abs(x.center[1]))
+    for e in ellipses:
+        c = max(c, abs(e[0]), abs(e[1]))
+    return max(DEGENERATE_ABS, DEGENERATE_REL * c)
+
+
+def _reach(s) -> float:
+    """An upper bound (mm) of how far segment ``s`` gets from its start."""
+    if isinstance(s, Line):
+        return math.dist(s.start, s.end)
+    if isinstance(s, Arc):
+        return s.radius * min(2.0, abs(s.sweep))
+    if isinstance(s, Circle):
+        return 2 * s.radius
+    b = s.box()                                  # Spline, EllipticArc: the exact box
+    return math.hypot(b[2] - b[0], b[3] - b[1])
+
+
+def _span_reach(b) -> float:
+    return max(math.dist(b[0], q) for q in b[1:])
+
+
+def _drop_in(segs: list, tol: float, dropped: dict) -> list:
+    """``segs`` without the pieces that are one point (within ``tol``), each counted in
+    ``dropped`` by kind; a spline piece loses only its spans that are one point (the next span
+    starts where the previous ends: the Bezier chain the writer writes shares them)."""
+    out = []
+    for s in segs:
+        if isinstance(s, Spline):
+            spans = s.spans
+            keep = [i for i, b in enumerate(spans) if _span_reach(b) > tol]
+            if len(keep) < len(spans):
+                dropped["Bézier piece"] = dropped.get("Bézier piece", 0) + len(spans) - len(keep)
+                if not keep:
+                    continue
+                from ..geometry.curves import _span_steps
+                h = _span_steps(s)
+                kept = [list(spans[i]) for i in keep]
+                for j in range(1, len(kept)):        # each span starts where the last ended
+                    kept[j][0] = kept[j - 1][3]
+                s = bezier_spline(kept, [h[i] for i in keep] if len(h) == len(spans) else None)
+            out.append(s)
+        elif _reach(s) <= tol:
+            kind = {Line: "line", Arc: "arc", EllipticArc: "elliptical arc",
+                    Circle: "circle"}.get(type(s), "piece")
+            dropped[kind] = dropped.get(kind, 0) + 1
+        else:
+            out.append(s)
+    return out
+
+
+def _drop_degenerate(pieces, loops, circles, ellipses, notes, name, hatch_circles=()):
+    """The pieces, loops, circles and ellipses of a drawing without what is one point: a
+    line, arc, Bézier span or elliptical arc all of whose points lie within
+    :func:`degenerate_tol` of its start, a circle or ellipse of a radius or semi-axis within
+    it (a Boxes.py ``C x,y x,y x,y``, a DXF spline's repeated knot, a LINE from a point to
+    itself).  The compiler refuses some of them (``Bezier``: E0108 "is one point") and the
+    others draw nothing; one ``W0130`` note counts them by kind."""
+    tol = degenerate_tol(pieces, loops, list(circles) + list(hatch_circles), ellipses)
+    dropped: dict = {}
+    pieces = [q for q in (_drop_in(p, tol, dropped) for p in pieces) if q]
+    loops = [(q, src) for q, src in ((_drop_in(p, tol, dropped), src) for p, src in loops) if q]
+    keep_c = [c for c in circles if c.radius > tol]
+    keep_h = [c for c in hatch_circles if c.radius > tol]
+    if len(keep_c) + len(keep_h) < len(circles) + len(hatch_circles):
+        dropped["circle"] = dropped.get("circle", 0) + len(circles) + len(hatch_circles) \
+            - len(keep_c) - len(keep_h)
+    keep_e = [e for e in ellipses if min(e[2], e[3]) > tol]
+    if len(keep_e) < len(ellipses):
+        dropped["ellipse"] = len(ellipses) - len(keep_e)
+    if dropped:
+        n = sum(dropped.values())
+        what = ", ".join(_plural(v, w) for w, v in sorted(dropped.items()))
+        notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of `{name}` dropped: "
+                                   f"zero length, all {'its' if n == 1 else 'their'} points "
+                                   f"within {tol:.3g} mm of one point ({what})",
+                          "nothing is lost: they draw nothing; delete them in the drawing "
+                          "program to silence this"))
+    return pieces, loops, keep_c, keep_e, keep_h
+
+
+def _finish(pieces, loops, circles, ellipses, notes, unit, name,
+            hatch_circles: list | None = None) -> Drawing:
+    """The :class:`Drawing` of the pieces read: pieces that are one point dropped
+    (:func:`_drop_degenerate`; ``hatch_circles``, a DXF's, are filtered in place), duplicates
+    removed, chained, gaps within the closing tolerance closed, loops sorted into outlines and
+    paths."""
+    opts = _OPTS.get()
+    pieces, loops, circles, ellipses, kept = _drop_degenerate(
+        pieces, loops, circles, ellipses, notes, name, hatch_circles or ())
+    if hatch_circles:
+        hatch_circles[:] = kept
+    pieces, loops, dups = _dedupe(pieces, loops)
+    if dups:
+        notes.append(Note("W0130", f"{dups} duplicate segment{'s' if dups > 1 else ''} of "
+                                   f"`{name}` removed (drawn twice, over one another)",
+                          "delete the duplicates in the drawing program to silence this"))
+    closed, open_ = _chain(pieces, deadline=opts.deadline)
+    if open_ and opts.close_tol > 0:
+        # a path whose end runs past its start, crossing it: closed at the crossing (before
+        # the gaps below, which would close it across the overshoot into a loop that
+        # crosses itself)
+        shot, keep_open = [], []
+        for segs in open_:
+            o = _overshoot(segs, max(opts.close_tol, OVERSHOOT))
+            if o is None:
+                keep_open.append(segs)
+            else:
+                closed.append(o[0])
+                shot.append((o[1], o[2]))
+        open_ = keep_open
+        if shot:
+            g, at = max(shot)
+            notes.append(Note("W0130", f"{len(shot)} path{'s' if len(shot) > 1 else ''} of "
+                                       f"`{name}` closed where {'its' if len(shot) == 1 else 'their'} "
+                                       f"end crosses {'its' if len(shot) == 1 else 'their'} start "
+                                       f"(the overshoot trimmed: the largest {g:.3g} mm, at "
+                                       f"({at[0]:.6g}, {at[1]:.6g}) mm)",
+                              "give close_tolerance=0 (`aidl import --close-tolerance 0`) to "
+                              "keep them as drawn"))
+    if open_ and opts.close_tol > JOIN_TOL:
+        gaps: list = []
+        more, open_ = _chain(open_, opts.close_tol, gaps, opts.deadline)
+        closed += more
+        if gaps:
+            g, at = max(gaps)
+            notes.append(Note("W0130", f"{len(gaps)} gap{'s' if len(gaps) > 1 else ''} of "
+                                       f"`{name}` closed (the largest {g:.3g} mm, at "
+                                       f"({at[0]:.6g}, {at[1]:.6g}) mm): ends within the "
+                                       f"closing tolerance of {opts.close_tol:g} mm made one "
+                                       f"point", "give close_tolerance=0 (`aidl import "
+                                                 "--close-tolerance 0`) to keep them open"))
+    d = Drawing(circles=circles, ellipses=ellipses, notes=notes, unit=unit)
+    crumbs = 0
+    for segs, src in [(c, "") for c in closed] + loops:
+        if len(segs) == 1 and isinstance(segs[0], Circle):
+            d.circles.append(segs[0])
+            continue
+        hit = _crossing(segs)
+        if hit is not None and opts.close_tol > 0:
+            # small loops where it crosses itself (a kerf-corrected inner corner) cut off
+            trimmed, k = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)
+            if k and _crossing(trimmed) is None:
+                segs, hit = trimmed, None
+                crumbs += k
+        if hit is not None:          # kept as a stroke; an error where an outline is needed
+            d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
+            continue
+        o = Outline(list(segs), src)
+        if o.area < 0:
+            from ..geometry.curves import reverse
+            o.segments = [reverse(s) for s in reversed(o.segments)]
+        d.outlines.append(o)
+    d.outlines.sort(key=lambda o: -abs(o.area))
+    if crumbs:
+        notes.append(Note("W0130", f"{crumbs} small loop{'s' if crumbs > 1 else ''} of `{name}` "
+                                   f"cut off where an outline crosses itself and comes back "
+                                   f"within {max(opts.close_tol, OVERSHOOT):g} mm (a kerf-"
+                                   f"corrected inner corner drawn as a loop): the outline "
+                                   f"runs through the crossing",
+                          "give close_tolerance=0 (`aidl import --close-tolerance 0`) to "
+                          "keep them as drawn"))
+    for segs in open_:
+        d.paths.append(Path(list(segs)))
+    d.circles = [Circle(c.center, c.radius) for c in d.circles]
+    d.circles.sort(key=lambda c: (-c.radius, c.center[0], c.center[1]))
+    return d
+
+
+def open_gaps(d: Drawing) -> list[tuple[float, tuple[float, float]]]:
+    """``(gap in mm, where)`` of each open path (its end to its start)."""
+    return [(math.dist(p.start, p.end), p.end) for p in d.paths]

@@ -1,0 +1,482 @@
+"""The SVG reader (svgelements): the bytes of an SVG in, a :class:`~.model.Drawing` out
+(:func:`_read_svg`).  A path's lines, circular and elliptical arcs, cubic and quadratic
+Béziers (:func:`_svg_path`), the ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline``
+and ``line`` elements (:func:`_svg_element`) and ``<text>`` (:func:`_svg_text`), in millimetres
+with the y axis up: the root's ``width`` against its ``viewBox`` (CSS units, 96 px to the
+inch: :func:`_css_mm`), or ``units=``; selected by element id, group id or Inkscape layer
+label, and by colour.  Before svgelements reads the file, :func:`_svg_prescan` counts what it
+draws with expat (XML entities refused, nested ``<use>`` multiplied out: ``E0304``) and finds
+path data holding a word that is no number (:func:`_path_data_error`, SVG 1.1 section
+8.3.9)."""
+from __future__ import annotations
+
+import io
+import math
+
+from ..geometry.curves import Arc, Circle, Line, elliptic_arc
+from .chain import _finish
+from .model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,
+                    _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
+
+
+def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
+    import svgelements as S
+    try:
+        svg = S.SVG.parse(io.BytesIO(data), reify=True, ppi=96.0)
+    except Exception as ex:
+        raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
+                           "save it as plain SVG") from None
+    notes: list[Note] = []
+    # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
+    # user unit) and apply the exact mm per user unit from the width attribute and viewBox
+    vb = getattr(svg, "viewbox", None)
+    k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
+    if unit is not None:
+        mm_per_user = UNIT_MM[unit]
+    else:
+        unit = "mm"
+        mm_per_user = _css_mm(svg.values.get("width"), vb.width if vb is not None else None)
+        if mm_per_user is None:
+            mm_per_user = k * 25.4 / 96
+    scale = mm_per_user / k
+    roots = [svg]
+    for sel, what in ((ident, "id"), (layer, "layer")):
+        if sel is None:
+            continue
+        wanted = [sel] if isinstance(sel, str) else list(sel)
+        found = []
+        for w in wanted:
+            el = svg.get_element_by_id(w)
+            if el is None:
+                for g in svg.elements(lambda x: isinstance(x, S.Group)):
+                    if w in (g.values.get("inkscape:label"), g.values.get(
+                            "{http://www.inkscape.org/namespaces/inkscape}label"), g.id):
+                        el = g
+                        break
+            if el is None:
+                ids = sorted({x.id for x in svg.elements() if getattr(x, "id", None)})
+                from ..diagnostics import did_you_mean
+                sugg = did_you_mean(w, ids)
+                raise DrawingError("E0132", f"`{name}` has no element or group with {what} "
+                                            f"`{w}`",
+                                   ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
+                                   if sugg else "ids: " + ", ".join(ids)[:300])
+            found.append(el)
+        roots = found
+    pieces, loops, circles, ellipses = [], [], [], []
+    texts: list = []
+    lost_text: list = []            # "`the words` (why)", each a text not written
+    skipped: dict[str, int] = {}
+    count = 0
+
+    def P(p):
+        return (_mm(float(p[0]) * scale), _mm(-float(p[1]) * scale))
+
+    def colour_ok(el) -> bool:
+        if color is None:
+            return True
+        want = {c.lower() for c in ([color] if isinstance(color, str) else color)}
+        have = set()
+        for attr in ("stroke", "fill"):
+            v = getattr(el, attr, None)
+            if v is not None and getattr(v, "value", None) is not None:
+                have.add(S.Color(v).hex.lower()[:7])
+        return bool({S.Color(w).hex.lower()[:7] for w in want} & have)
+
+    opts = _OPTS.get()
+
+    def names_of(g) -> list:
+        return [v for v in (getattr(g, "id", None), g.values.get("inkscape:label"), g.values.get(
+            "{http://www.inkscape.org/namespaces/inkscape}label")) if v]
+
+    def walk(node, names):
+        """The shapes under ``node`` with the names (ids, Inkscape labels) of the groups
+        they are in."""
+        yield node, names
+        if isinstance(node, (S.Group, S.Use)):
+            inner = names + names_of(node)
+            for ch in node:
+                yield from walk(ch, inner)
+
+    seen = set()
+    for root in roots:
+        for el, names in walk(root, []):
+            if id(el) in seen:
+                continue
+            seen.add(id(el))
+            if opts.deadline is not None and len(seen) % 512 == 0:
+                opts.deadline.check("reading the drawing")
+            if opts.keep is not None and isinstance(el, (S.Shape, S.Text)):
+                c = getattr(el, "stroke", None)
+                if c is None or getattr(c, "value", None) is None:
+                    c = getattr(el, "fill", None)
+                rgb = (c.red, c.green, c.blue) if c is not None and \
+                    getattr(c, "value", None) is not None else None
+                if not opts.keep(names + names_of(el), rgb, None):
+                    continue
+            if isinstance(el, S.Text):
+                if el.values.get("visibility") in ("hidden", "collapse") or \
+                        el.values.get("display") == "none" or not colour_ok(el):
+                    continue
+                got = _svg_text(el, P, scale)
+                if isinstance(got, str):
+                    lost_text.append(got)
+                elif got is not None:
+                    texts.append(got)
+                continue
+            if not isinstance(el, S.Shape):
+                continue
+            if el.values.get("visibility") in ("hidden", "collapse") or \
+                    el.values.get("display") == "none":
+                continue
+            if not colour_ok(el):
+                continue
+            if isinstance(el, (S.Polyline, S.Polygon)) and isinstance(
+                    el.values.get("points"), str) and _path_data_error(
+                    el.values["points"].replace("M", "?").replace("m", "?")) is not None:
+                continue        # svgelements would pair the numbers after it wrongly: noted
+            count += 1
+            if count > opts.max_shapes:
+                raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
+                                   "select fewer with id= or split the drawing")
+            try:
+                _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped)
+            except _OutOfRange as ex:
+                tag = type(el).__name__.lower()
+                ident_ = getattr(el, "id", None)
+                raise _range_error(ex, f"<{tag}>" + (f" (id `{ident_}`)" if ident_ else ""),
+                                   name) from None
+    _skip_notes(skipped, notes, name)
+    if lost_text:
+        n = len(lost_text)
+        notes.append(Note("W0130", f"{n} text{'s' if n != 1 else ''} of `{name}` not "
+                                   f"imported: " + "; ".join(lost_text[:8])
+                                   + (f"; and {n - 8} more" if n > 8 else ""),
+                          "write them with Text(...) in a `drawing` of the part"))
+    d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
+    d.texts = texts
+    return d
+
+
+# SVG text-anchor and dominant-baseline as Text's anchor and valign (Boxes.py writes
+# text-anchor="left", which CSS does not know, for the start)
+_SVG_ANCHOR = {"start": "start", "left": "start", "middle": "middle", "center": "middle",
+               "end": "end", "right": "end"}
+_SVG_BASELINE = {"hanging": "top", "text-before-edge": "top", "middle": "middle",
+                 "central": "middle", "text-after-edge": "bottom", "ideographic": "bottom",
+                 "alphabetic": "baseline", "auto": "baseline", "baseline": "baseline"}
+CAP_HEIGHT_EM = 0.7      # the cap height of a sans-serif font in em (Helvetica, Arial 0.72)
+
+
+def _svg_text(el, P, scale: float):
+    """An SVG ``<text>`` as ``(text, position mm, cap height mm, rotation rad, anchor,
+    valign)`` (:class:`Drawing`'s ``texts``), a string saying why it is not written (a
+    mirrored or skewed transform, no size), or None when it has no words.  Its size is
+    its ``font-size`` times :data:`CAP_HEIGHT_EM` (Text's size is the cap height: the
+    single-stroke font stands in for the file's font, so the words and where they stand
+    come through, not the letter shapes); ``text-anchor`` and ``dominant-baseline`` give
+    ``anchor`` and ``valign`` (:data:`_SVG_ANCHOR`, :data:`_SVG_BASELINE`)."""
+    words = " ".join((el.text or "").split())
+    if not words:
+        return None
+    shown = words if len(words) <= 40 else words[:37] + "..."
+    m = el.transform
+    a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
+    det = a * d - b * c
+    if not all(math.isfinite(v) for v in (a, b, c, d)) or abs(det) < 1e-12:
+        return f"`{shown}` (its transform has no size)"
+    if det < 0:
+        return f"`{shown}` (mirrored)"
+    sx, sy = math.hypot(a, b), math.hypot(c, d)
+    if abs(a * c + b * d) > 1e-9 * sx * sy or abs(sx - sy) > 1e-9 * max(sx, sy):
+        return f"`{shown}` (skewed or stretched)"
+    try:
+        fs = float(el.font_size)
+    except (TypeError, ValueError):
+        fs = float("nan")
+    if not math.isfinite(fs) or fs <= 0:
+        return f"`{shown}` (no font size)"
+    x, y = float(el.x or 0.0), float(el.y or 0.0)
+    at = P(m.point_in_matrix_space((x, y)))
+    size = _mm(fs * sx * scale * CAP_HEIGHT_EM, "a text height")
+    rot = -math.atan2(b, a)          # the SVG's y axis points down
+    anchor = _SVG_ANCHOR.get(str(el.values.get("text-anchor", "start")).strip().lower(),
+                             "start")
+    valign = _SVG_BASELINE.get(str(el.values.get("dominant-baseline", "auto")).strip().lower(),
+                               "baseline")
+    return (words, at, size, rot, anchor, valign)
+
+
+_PATH_TOKEN = None
+
+
+def _path_data_error(d: str) -> tuple[int, str] | None:
+    """Where the SVG path data ``d`` stops being readable (SVG 1.1 section 8.3.9: command
+    letters, numbers, whitespace and commas): ``(character offset, the word there)``, or
+    None.  svgelements stops reading a path at such a word (``inf``, ``nan``, ``1,5e``) and
+    drops the rest of it without a word; the caller counts it (``W0130``)."""
+    import re
+    global _PATH_TOKEN
+    if _PATH_TOKEN is None:
+        _PATH_TOKEN = re.compile(r"[\s,]+|[MmZzLlHhVvCcSsQqTtAa]|"
+                                 r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+    i, n = 0, len(d)
+    while i < n:
+        m = _PATH_TOKEN.match(d, i)
+        if m is None or m.end() == i:
+            word = re.match(r"[^\s,]{1,20}", d[i:])
+            return i, word.group(0) if word else d[i:i + 1]
+        i = m.end()
+    return None
+
+
+def _svg_prescan(data: bytes, name: str, limit: int) -> list:
+    """Count what the SVG ``data`` draws before svgelements reads it, with the standard
+    library's expat parser (no entity expansion, no network): a file that declares XML
+    entities (``<!ENTITY``: the "billion laughs") is refused, and each ``<use>`` counts as
+    the elements it copies, nested ``<use>`` multiplied out, so a few kilobytes of nested
+    references that would expand to millions of shapes are refused (``E0304``, at the
+    ``<use>`` that copies the most) before they are expanded; more than ``limit`` elements
+    drawn is ``E0130``.  A file expat cannot parse is left to svgelements (its message).
+
+    Returns the paths (``d``) and polylines or polygons (``points``) whose data holds a word
+    that is no number or command (:func:`_path_data_error`: ``inf``, ``nan``): ``(tag, id or
+    None, line, offset, word, characters left out)`` each, for the ``W0130`` note of
+    :func:`read_drawing`."""
+    import xml.parsers.expat as X
+    tags: list = []         # per element: local tag, id, href, line
+    kids: list = []
+    stack: list = []
+    ids: dict = {}
+    bad_data: list = []
+
+    class _Refused(Exception):
+        pass
+
+    def start(tag, attrs):
+        local = tag.rsplit("}", 1)[-1].rsplit(":", 1)[-1]
+        href = attrs.get("href") or attrs.get("http://www.w3.org/1999/xlink}href") or \
+            attrs.get("xlink:href")
+        i = len(tags)
+        tags.append((local, attrs.get("id"), href, p.CurrentLineNumber))
+        kids.append([])
+        if stack:
+            kids[stack[-1]].append(i)
+        if attrs.get("id") is not None:
+            ids.setdefault(attrs["id"], i)
+        data_attr = "d" if local == "path" else "points" if local in ("polyline", "polygon") \
+            else None
+        if data_attr is not None and attrs.get(data_attr):
+            text = attrs[data_attr]
+            err = _path_data_error(text if data_attr == "d" else
+                                   text.replace("M", "?").replace("m", "?"))
+            if err is not None:
+                bad_data.append((local, attrs.get("id"), p.CurrentLineNumber, err[0], err[1],
+                                 len(text) - err[0]))
+        stack.append(i)
+        if len(stack) > 500:
+            raise DrawingError("E0130", f"`{name}` nests its elements more than 500 deep",
+                               "save it again as plain SVG with fewer nested groups",
+                               p.CurrentLineNumber)
+        if len(tags) > 50 * limit + 1000:
+            raise _Refused()
+
+    def end(tag):
+        stack.pop()
+
+    def entity(*a):
+        raise DrawingError("E0130", f"`{name}` declares XML entities (<!ENTITY ...>): not read",
+                           "save it again as plain SVG (Inkscape: Save As, Plain SVG)",
+                           p.CurrentLineNumber)
+    p = X.ParserCreate(namespace_separator="}")
+    p.StartElementHandler, p.EndElementHandler = start, end
+    p.EntityDeclHandler = entity
+    try:
+        p.Parse(data, True)
+    except DrawingError:
+        raise
+    except _Refused:
+        raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
+                           "select fewer with id= or split the drawing") from None
+    except Exception:
+        return []               # not XML: svgelements says so
+    cap = 10 * limit + 1
+    weight: dict = {}
+    busy: set = set()
+
+    def w(i: int) -> int:
+        if i in weight:
+            return weight[i]
+        if i in busy:
+            local, ident, _href, line = tags[i]
+            raise DrawingError("E0130", f"<{local}>" + (f" (id `{ident}`)" if ident else "")
+                               + f" of `{name}` refers to itself through <use>",
+                               "remove the circular <use> reference", line)
+        busy.add(i)
+        local, _ident, href, _line = tags[i]
+        n = 1 if local in ("path", "rect", "circle", "ellipse", "line", "polyline",
+                           "polygon", "text") else 0
+        for k in kids[i]:
+            n = min(cap, n + w(k))
+        if local == "use" and href and href.startswith("#") and href[1:] in ids:
+            n = min(cap, n + w(ids[href[1:]]))
+        busy.discard(i)
+        weight[i] = n
+        return n
+    import sys
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, 20000))
+    try:
+        total = w(0) if tags else 0
+    except RecursionError:
+        raise DrawingError("E0130", f"`{name}` nests its elements too deeply",
+                           "save it again as plain SVG with fewer nested groups") from None
+    finally:
+        sys.setrecursionlimit(old)
+    if total > limit:
+        uses = [i for i, t in enumerate(tags) if t[0] == "use"]
+        if uses:
+            i = max(uses, key=lambda i: (weight.get(i, 0), -i))
+            local, ident, href, line = tags[i]
+            more = "more than " if weight[i] >= cap else ""
+            raise DrawingError("E0304", f"<use>" + (f" (id `{ident}`)" if ident else "")
+                               + f" of `{name}` copies `{href}` into {more}{weight[i]} shapes "
+                                 f"(nested <use> references): the drawing would hold more than "
+                                 f"the {limit} shapes an import may read",
+                               "replace the nested <use> copies by the shapes they copy "
+                               "(Inkscape: Edit > Clone > Unlink Clone), or draw fewer",
+                               line)
+        raise DrawingError("E0130", f"`{name}` has more than {limit} shapes",
+                           "select fewer with id= or split the drawing")
+    return bad_data
+
+
+def _bad_data_note(bad: list, name: str) -> Note:
+    """The ``W0130`` note of the paths whose data stops at a word that is no number
+    (:func:`_svg_prescan`), each with its place."""
+    where = "; ".join(f"<{tag}>" + (f" (id `{i}`)" if i else "") + f" at line {ln}, "
+                      f"character {off + 1}: `{w}` (" + (f"{left} characters left out"
+                                                         if tag == "path" else
+                                                         "the whole shape left out") + ")"
+                      for tag, i, ln, off, w, left in bad[:5])
+    more = f"; and {len(bad) - 5} more" if len(bad) > 5 else ""
+    n = len(bad)
+    return Note("W0130", f"{n} path{'s' if n != 1 else ''} of `{name}` "
+                         f"{'holds' if n == 1 else 'hold'} a number that cannot be read: a "
+                         f"path's data is read up to it: {where}{more}",
+                "write a finite number there (inf and nan are no coordinates), or save the "
+                "drawing again from its program")
+
+
+def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> None:
+    """Read the shape ``el`` into the lists; its numbers checked (:func:`_check_made`: raises
+    :class:`_OutOfRange`)."""
+    made = (len(pieces), len(loops), len(circles), len(ellipses))
+    if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
+        # the implicit values: centre, semi-axes and turn after the element's
+        # transform (a turned ellipse keeps its own cx, cy, rx, ry and a matrix)
+        c = P(el.implicit_center)
+        rx = _mm(float(el.implicit_rx) * scale, "a radius")
+        ry = _mm(float(el.implicit_ry) * scale, "a radius")
+        rot = -_finite(el.rotation, "an angle") if el.rotation else 0.0
+        if rx <= 0 or ry <= 0:
+            return
+        if abs(rx - ry) <= 1e-12 * max(rx, ry):
+            circles.append(Circle(c, rx))
+        else:
+            ellipses.append((c[0], c[1], rx, ry, rot))
+    else:
+        _svg_path(S, S.Path(el), P, pieces, loops, skipped)
+    _check_made(pieces[made[0]:] + [seg for seg, _ in loops[made[1]:]] + circles[made[2]:]
+                + ellipses[made[3]:])
+
+
+def _css_mm(width, vb_width) -> float | None:
+    """Millimetres per user unit from the root ``width`` (a CSS length: mm, cm, in, pt, pc,
+    px or a bare number, px) over the ``viewBox`` width (none: one user unit is one px)."""
+    import re
+    if width is None:
+        return (25.4 / 96) if vb_width is None else None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(mm|cm|in|pt|pc|px|)\s*", str(width))
+    if not m:
+        return None
+    try:
+        w = float(m.group(1))
+    except ValueError:
+        return None
+    per = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96,
+           "": 25.4 / 96}[m.group(2)]
+    return w * per / vb_width if vb_width else per
+
+
+def _svg_path(S, path, P, pieces, loops, skipped) -> None:
+    cur: list = []
+
+    def flush(closed: bool) -> None:
+        nonlocal cur
+        if cur:
+            if closed or math.dist(cur[0].start, cur[-1].end) <= JOIN_TOL:
+                loops.append((cur, "path"))
+            else:
+                pieces.append(cur)
+        cur = []
+
+    for seg in path:
+        if isinstance(seg, S.Move):
+            flush(False)
+            continue
+        if isinstance(seg, S.Close):
+            if cur and math.dist(cur[-1].end, cur[0].start) > JOIN_TOL:
+                cur.append(Line(cur[-1].end, cur[0].start))
+            flush(True)
+            continue
+        a, b = P(seg.start), P(seg.end)
+        if isinstance(seg, S.Line):
+            cur.append(Line(a, b))          # one of zero length: dropped and counted later
+        elif isinstance(seg, S.CubicBezier):
+            cur.append(bezier_spline([[a, P(seg.control1), P(seg.control2), b]]))
+        elif isinstance(seg, S.QuadraticBezier):
+            c = P(seg.control)
+            cur.append(bezier_spline([[a, _lerp(a, c, 2 / 3), _lerp(b, c, 2 / 3), b]]))
+        elif isinstance(seg, S.Arc):
+            if not seg.is_circular():
+                # an elliptical arc: its ellipse in the drawing's frame (P maps the user
+                # units to mm and turns y over: the x axis's image gives the rotation) and
+                # the exact arc from its start through its middle to its end
+                c = P(seg.center)
+                rot = float(seg.get_rotation())
+                rx, ry = float(seg.rx), float(seg.ry)
+                ux = P((seg.center.x + rx * math.cos(rot), seg.center.y + rx * math.sin(rot)))
+                vy = P((seg.center.x - ry * math.sin(rot), seg.center.y + ry * math.cos(rot)))
+                rxm, rym = math.dist(c, ux), math.dist(c, vy)
+                if rxm <= 1e-12 or rym <= 1e-12 or math.dist(a, b) <= 1e-12:
+                    skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
+                    continue
+                cur.append(elliptic_arc(c, rxm, rym, math.atan2(ux[1] - c[1], ux[0] - c[0]),
+                                        a, P(seg.point(0.5)), b))
+                continue
+            c = P(seg.center)
+            sweep = -float(seg.sweep)          # the y axis turns over
+            cur.append(_arc_from(a, b, c, sweep))
+        else:
+            skipped[type(seg).__name__] = skipped.get(type(seg).__name__, 0) + 1
+    flush(False)
+
+
+def _arc_from(p, q, center, sweep) -> Arc:
+    r = 0.5 * (math.dist(p, center) + math.dist(q, center))
+    a1 = math.atan2(p[1] - center[1], p[0] - center[0])
+    return Arc((float(center[0]), float(center[1])), r, a1, sweep)
+
+
+def _skip_notes(skipped: dict, notes: list, name: str) -> None:
+    for what, n in sorted(skipped.items()):
+        if what in ("TEXT", "MTEXT", "text"):
+            notes.append(Note("W0130", f"{n} {what} {'entity' if n == 1 else 'entities'} of "
+                                       f"`{name}` skipped: text is not imported",
+                              "write the text with Text(...) in a `drawing`"))
+        else:
+            notes.append(Note("W0130", f"{n} {what} {'entity' if n == 1 else 'entities'} of "
+                                       f"`{name}` skipped: no exact form here",
+                              "convert it to lines, arcs or splines in the drawing program, "
+                              "or select other layers"))
