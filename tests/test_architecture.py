@@ -60,3 +60,24 @@ def test_readme_layout_names_every_package_and_core_module():
     for m in PKG.glob("*.py"):
         if m.stem != "__init__":
             assert f"`{m.stem}`" in layout, m.stem
+
+
+MAX_MODULE_LINES = 1_200     # issue 63: a module past this is split by what its parts are
+MAX_FUNCTION_LINES = 200     # from `def` to its last line, nested functions included
+
+
+def test_no_module_or_function_is_too_long():
+    """No module under aidl_lang/ over MAX_MODULE_LINES lines (the parser excepted: its
+    grammar actions are one table) and no function over MAX_FUNCTION_LINES."""
+    long_modules, long_functions = [], []
+    for f in sorted(PKG.rglob("*.py")):
+        text = f.read_text()
+        where = f.relative_to(ROOT)
+        if text.count("\n") > MAX_MODULE_LINES and f != PKG / "parser.py":
+            long_modules.append(f"{where} ({text.count(chr(10))} lines)")
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                n = node.end_lineno - node.lineno + 1
+                if n > MAX_FUNCTION_LINES:
+                    long_functions.append(f"{where}:{node.lineno} {node.name} ({n} lines)")
+    assert not long_modules and not long_functions, long_modules + long_functions

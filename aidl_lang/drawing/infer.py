@@ -50,7 +50,7 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
                            recognise)
 from .program import (_Writer, _containers, _ident, _inside, _layer_items, _num, _pt,
                       _string)
-from .read import Drawing, Note
+from .model import Drawing, Note
 
 
 def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:

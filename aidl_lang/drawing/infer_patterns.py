@@ -24,7 +24,7 @@ from ..geometry.curves import Arc, Line
 from .infer_params import _r
 from .infer_shapes import EQUAL_TOL, _snap_angle, circular, recognise
 from .program import _containers, _ident
-from .read import Drawing
+from .model import Drawing
 
 
 # ------------------------------------------------------------------ points
