@@ -67,7 +67,7 @@ def _clipped(x, y, bx, by, u0, v0, u1, v1) -> np.ndarray:
     dx, dy = bx - x, by - y
     t0, t1 = np.zeros(len(x)), np.ones(len(x))
     for p_, q_ in ((-dx, x - u0), (dx, u1 - x), (-dy, y - v0), (dy, v1 - y)):
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             r = q_ / p_
         par = p_ == 0
         t1 = np.where(par & (q_ < 0), 0.0, t1)           # parallel and outside
