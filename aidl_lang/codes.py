@@ -767,7 +767,9 @@ A note, not a warning: a family of the shape checks on the final part stopped be
 looked at everything, so what it would have said about the parts named is not known. Each
 family (holes, pieces, engravings, walls between features, openings, thin walls, slits,
 ledges, text, copies that merge) holds a share of the compile's wall time (a fifth of the
-budget: 3 s of the default 15 s) and stops past it; and none lists more than 3,000,000 pairs
+budget: 3 s of the default 15 s) and stops past it, or before a step that cannot be interrupted
+(one Manifold call) when that step is expected to end past its share or past the compile's
+budget; and none lists more than 3,000,000 pairs
 of edges or shapes within reach of one another (a map of a country imported a few mm wide
 puts every edge within the minimum wall of hundreds of others). Nothing is wrong with the
 part because of it: `--budget 2` gives every check twice the time; a drawing scaled to its

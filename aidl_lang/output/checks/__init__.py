@@ -100,7 +100,13 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
 
 
 class _OutOfShare(Exception):
-    """A family of checks has used its :data:`CHECK_SHARE` of the wall time."""
+    """A family of checks has used its :data:`CHECK_SHARE` of the wall time, or its next step
+    (``ahead`` seconds, > 0) is expected to end past that share or past the compile's
+    deadline."""
+
+    def __init__(self, ahead: float = 0.0, past_deadline: bool = False):
+        super().__init__(ahead)
+        self.ahead, self.past_deadline = ahead, past_deadline
 
 
 class _Shares:
@@ -108,9 +114,13 @@ class _Shares:
     (:data:`CHECK_SHARE` of the budget's seconds, summed over the parts it looks at): a
     family past its share, or refused by :class:`..nearby.TooManyPairs` (a cluster too dense
     to list its pairs), stops where it is, is not run on the parts after, and one ``W0521``
-    note per family says which parts it did not check and why.  The compile's own deadline
-    still ends everything with ``E0304`` (:meth:`tick` checks it first); without one
-    (a test, the live preview's own call) there are no shares, only the pair limit."""
+    note per family says which parts it did not check and why.  A step of a family that
+    cannot be interrupted (one call into Manifold) and is expected to end past the family's
+    share or past the compile's deadline is not started: the family stops with the same note
+    (these checks only warn, so a guess never fails a compile).  The compile's deadline,
+    once passed, still ends everything with ``E0304`` (:meth:`tick` checks it first), as
+    does a step expected to overrun it outside any family; without a deadline (a test, the
+    live preview's own call) there are no shares, only the pair limit."""
 
     def __init__(self, deadline):
         import time
@@ -123,11 +133,17 @@ class _Shares:
         self.family, self.since = None, 0.0
 
     def tick(self, s, ahead: float = 0.0) -> None:
+        if self.family is None:
+            if self.deadline is not None:
+                self.deadline.check("the shape checks", s, ahead)
+            return
         if self.deadline is not None:
-            self.deadline.check("the shape checks", s, ahead)
-        if self.family is not None and (self.spent.get(self.family, 0.0) + self.clock()
-                                        - self.since + ahead > self.seconds):
-            raise _OutOfShare()
+            self.deadline.check("the shape checks", s)
+        now = self.clock()
+        if self.spent.get(self.family, 0.0) + now - self.since + ahead > self.seconds:
+            raise _OutOfShare(ahead)
+        if ahead and self.deadline is not None and now + ahead > self.deadline.at:
+            raise _OutOfShare(ahead, past_deadline=True)
 
     def run(self, family: str, part, fn):
         """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
@@ -141,8 +157,8 @@ class _Shares:
             if part is not None:
                 self.tick(part)
             return fn()
-        except _OutOfShare:
-            self.skipped[family] = ["time", [part]]
+        except _OutOfShare as ex:
+            self.skipped[family] = [ex, [part]]
         except TooManyPairs as ex:
             self.skipped[family] = [ex, [part]]
         finally:
@@ -168,10 +184,17 @@ class _Shares:
             named = list(dict.fromkeys(f"`{p.path}`" for p in parts if p is not None))
             where = (" in " + ", ".join(named[:3]) + (f" and {len(named) - 3} more"
                                                       if len(named) > 3 else "")) if named else ""
-            if why == "time":
+            if isinstance(why, _OutOfShare):
                 total = self.deadline.budget.seconds
-                reason = (f"out of its share of the time ({self.seconds:.3g} s of the "
-                          f"{total:g} s budget)")
+                share = f"its share of the time ({self.seconds:.3g} s of the {total:g} s budget)"
+                if why.past_deadline:
+                    reason = (f"its next step, expected to take about {why.ahead:.3g} s, would "
+                              f"end past the compile's {total:g} s budget: not started")
+                elif why.ahead:
+                    reason = (f"its next step, expected to take about {why.ahead:.3g} s, would "
+                              f"end past {share}: not started")
+                else:
+                    reason = f"out of {share}"
                 hint = "`--budget 2` (or more) gives every check twice the time"
             else:
                 reason = (f"{why.count:,} pairs of edges or shapes within reach of one "

@@ -34,7 +34,6 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     if shape.is_empty():
         return
     segs = 16
-    tick(shape.num_vert() * THIN_SECONDS_PER_VERTEX)
     pieces = _thin(shape, t, loops, tick=tick, least=2 * t * t)
     # The pieces partition what the opening removes, so none reaches 2 t^2 when the whole does
     # not (the same polygon areas summed in another order: the margin is far above the
@@ -309,6 +308,7 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
     (``check_drawing`` 3.65 s -> 0.82 s)."""
     n = shape.num_vert()
     if n <= tile or n <= WHOLE_VERTS and shape.num_contour() <= whole_loops:
+        tick(n * THIN_SECONDS_PER_VERTEX)         # one opening of the whole: uninterruptible
         thin = shape - _open(shape, t)
         if _area(thin) < least:
             return [thin]
