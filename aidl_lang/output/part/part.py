@@ -297,42 +297,81 @@ def _off_outlines(strokes: list[Stroke], parts: list[PartOutline]) -> list[Strok
     part they split (a piece cut off: the laser cuts that stretch once, as the outlines of
     the two pieces): five points of every chord of the segment (2 %, 25 %, 50 %, 75 %, 98 %)
     within :data:`ON_OUTLINE` of a loop of ``parts``.  A segment only partly on an outline
-    stays whole (that stretch is cut twice)."""
+    stays whole (that stretch is cut twice).
+
+    Each sample point is measured only against the outline edges near it: the points go into
+    a grid (:class:`.nearby._Grid`) and each edge, cut into stretches of at most
+    :data:`_STRETCH` mm, asks for the points in its stretches' boxes grown by
+    :data:`ON_OUTLINE` (a point within that distance of an edge is within it of one of its
+    stretches, so inside that stretch's grown box); the distance is then to the whole edge, as
+    before.  Every point against every edge cost points x edges: 11 s for a plate with 2,000
+    closed cuts."""
     from .booleans import _chain_points
+    from .nearby import TooManyPairs, _Grid
     edges = []
     for p in parts:
         for lp in p.loops:
             P = np.asarray(lp.points(), dtype=float).reshape(-1, 2)
             if len(P):
                 edges.append((P, np.roll(P, -1, axis=0)))
-    if not edges:
+    cuts = [(k, seg) for k, st in enumerate(strokes) if st.style == "cut" for seg in st.segments]
+    if not edges or not cuts:
         return strokes
     A = np.vstack([a for a, _ in edges])
     B = np.vstack([b for _, b in edges])
     D = B - A
     L2 = np.maximum((D * D).sum(axis=1), 1e-300)
+    samples, of = [], []
+    for n, (_, seg) in enumerate(cuts):
+        pts = _chain_points([seg])
+        a, b = pts[:-1], pts[1:]
+        m = np.vstack([a + f * (b - a) for f in (0.02, 0.25, 0.5, 0.75, 0.98)])
+        samples.append(m)
+        of.append(np.full(len(m), n))
+    M = np.vstack(samples)
+    owner = np.concatenate(of)
+    # each edge's stretches (pieces of at most _STRETCH mm) and their boxes grown by the distance
+    count = np.maximum(np.ceil(np.sqrt(L2) / _STRETCH), 1).astype(np.intp)
+    edge = np.repeat(np.arange(len(A)), count)
+    k = np.arange(len(edge)) - np.repeat(np.cumsum(count) - count, count)
+    t0 = (k / count[edge])[:, None]
+    t1 = ((k + 1) / count[edge])[:, None]
+    S0, S1 = A[edge] + t0 * D[edge], A[edge] + t1 * D[edge]
+    pad = ON_OUTLINE * (1 + 1e-9) + 1e-12
+    near = np.full(len(M), np.inf)
+    grid = _Grid(M, _STRETCH)
+    todo = [(lo, min(lo + _QUERY, len(edge))) for lo in range(0, len(edge), _QUERY)]
+    while todo:                         # at most _CANDIDATES (point, edge) pairs at a time
+        lo, hi = todo.pop()
+        try:
+            q, i = grid.in_boxes(np.minimum(S0[lo:hi], S1[lo:hi]) - pad,
+                                 np.maximum(S0[lo:hi], S1[lo:hi]) + pad,
+                                 limit=_CANDIDATES if hi - lo > 1 else len(M))
+        except TooManyPairs:
+            todo += [(lo, (lo + hi) // 2), ((lo + hi) // 2, hi)]
+            continue
+        e = edge[lo:hi][q]
+        m = M[i]
+        t = np.clip(((m - A[e]) * D[e]).sum(axis=1) / L2[e], 0.0, 1.0)
+        d = np.hypot(*(A[e] + t[:, None] * D[e] - m).T)
+        np.minimum.at(near, i, d)
+    off = np.bincount(owner, weights=near > ON_OUTLINE, minlength=len(cuts)) > 0
+    kept: dict = {}
+    for (k_, seg), keep in zip(cuts, off):
+        if keep:
+            kept.setdefault(k_, []).append(seg)
     out = []
-    for st in strokes:
+    for k_, st in enumerate(strokes):
         if st.style != "cut":
             out.append(st)
-            continue
-        kept = []
-        for seg in st.segments:
-            pts = _chain_points([seg])
-            a, b = pts[:-1], pts[1:]
-            mids = np.vstack([a + f * (b - a) for f in (0.02, 0.25, 0.5, 0.75, 0.98)])
-            on = True
-            for m in mids:
-                t = np.clip(((m - A) * D).sum(axis=1) / L2, 0.0, 1.0)
-                d = np.hypot(*(A + t[:, None] * D - m).T).min()
-                if d > ON_OUTLINE:
-                    on = False
-                    break
-            if not on:
-                kept.append(seg)
-        if kept:
-            out.append(Stroke(kept, st.style, st.closed, st.source, st.part))
+        elif k_ in kept:
+            out.append(Stroke(kept[k_], st.style, st.closed, st.source, st.part))
     return out
+
+
+_STRETCH = 1.0        # mm: the longest piece of an outline edge asked for the points near it
+_QUERY = 65_536       # stretches asked at once ...
+_CANDIDATES = 1_000_000   # ... and the (point, stretch) candidates measured at once (halved past it)
 
 
 def _part_of(g, owner: dict) -> str:
