@@ -229,6 +229,7 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = Non
             common._SHARING[0] -= 1
             if not common._SHARING[0]:
                 common._SIGNED.clear()
+                common._WITHIN.clear()
 
 
 def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadline) -> None:

@@ -182,6 +182,32 @@ def _signed(poly) -> float:
     return a
 
 
+# each drawing's solid structures by the structures they lie within (what _solids_within
+# answers): id of the drawing's ``own`` -> (that dict, the index), filled while
+# check_drawing runs and emptied after it, as _SIGNED
+_WITHIN: dict = {}
+
+
+def _solids_within(d, s) -> list:
+    """``[(t, faces)]`` of :attr:`Drawing.own` for every solid structure ``t`` that is ``s``
+    or lies within it, in ``own``'s order.  While :func:`check_drawing` runs, from an index
+    of the drawing built once (each solid under itself and its ancestors: O(structures x
+    depth)); asking every structure of ``own`` for every part cost parts x structures (a
+    sheet of 4,000 parts: W0515 ran out of its share)."""
+    own = d.own
+    if not _SHARING[0]:
+        return [(t, f) for t, f in own.items() if t.kind == "solid" and t.is_within(s)]
+    hit = _WITHIN.get(id(own))
+    if hit is None or hit[0] is not own:
+        index: dict = {}
+        for t, faces in own.items():
+            if t.kind == "solid":
+                for a in (t, *t.ancestors()):
+                    index.setdefault(a, []).append((t, faces))
+        hit = _WITHIN[id(own)] = (own, index)
+    return hit[1].get(s, [])
+
+
 def _cut_boxes(cuts) -> np.ndarray:
     """The bounding boxes of the holes' cut regions: n x 4 (x0, y0, x1, y1), mm."""
     return np.array([c.region.bounds() for c in cuts if c.region is not None

@@ -35,7 +35,8 @@ from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import boundary, box_pairs, box_pairs_between, close_pairs
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
-                     _inside, _part_of, _pct, _signed, _significant, _union)
+                     _inside, _part_of, _pct, _signed, _significant, _solids_within,
+                     _union)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -221,9 +222,7 @@ def _solid_faces(d: Drawing, s: Structure, near) -> list:
     order of :attr:`Drawing.own`."""
     x0, y0, x1, y1 = near.bounds()
     out = []
-    for t, faces in d.own.items():
-        if t.kind != "solid" or not t.is_within(s):
-            continue
+    for t, faces in _solids_within(d, s):
         for g, f in faces:
             if f is None or f.is_empty():
                 continue
@@ -285,9 +284,7 @@ def _own_outlines(d: Drawing, s: Structure) -> tuple:
     """The outer loops (counter-clockwise polylines) of every face of part ``s``'s solids and
     their boxes (k x 4): ``(loops, boxes)``."""
     outer = []
-    for t, faces in d.own.items():
-        if t.kind != "solid" or not t.is_within(s):
-            continue
+    for t, faces in _solids_within(d, s):
         for _, f in faces:
             if f is None or f.is_empty():
                 continue

@@ -20,7 +20,7 @@ from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
 from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
-from .common import _area, _cut_openings, _loop_boxes, _union
+from .common import _area, _cut_openings, _loop_boxes, _solids_within, _union
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -210,9 +210,7 @@ def _maker(d: Drawing, s: Structure, piece):
     None.  None when no face covers any of it."""
     best, most = None, 1e-9
     x0, y0, x1, y1 = piece.bounds()
-    for t, faces in d.own.items():
-        if not t.is_within(s) or t.kind != "solid":
-            continue
+    for t, faces in _solids_within(d, s):
         for g, f in faces:
             a, b, c, e = f.bounds()
             if a > x1 or c < x0 or b > y1 or e < y0:
@@ -587,9 +585,7 @@ def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
     from ..part.nearby import close_pairs
     points = np.asarray(points, dtype=float).reshape(-1, 2)
     A, Bq, poly, names = [], [], [], []     # the edges, their face (its number in order)
-    for st, fs in d.own.items():
-        if st.kind != "solid" or not st.is_within(s):
-            continue
+    for st, fs in _solids_within(d, s):
         for g, f in fs:
             if f is None or f.is_empty():
                 continue
