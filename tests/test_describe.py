@@ -148,3 +148,31 @@ def test_shapes_are_named_after_the_primitive_that_drew_them():
                  'engraving: text "OK" 5 high at '):
         assert line in text, (line, text)
     assert "-gon" not in text
+
+
+def _plain(x, where="describe"):
+    """``x`` holds only JSON's own Python types (a NumPy scalar is not one: json refuses it)."""
+    if isinstance(x, dict):
+        for k, v in x.items():
+            assert isinstance(k, str), where
+            _plain(v, f"{where}.{k}")
+    elif isinstance(x, list):
+        for i, v in enumerate(x):
+            _plain(v, f"{where}[{i}]")
+    else:
+        assert x is None or type(x) in (bool, int, float, str), (where, type(x))
+
+
+def test_every_example_describes_itself_as_json(capsys):
+    """`aidl check --describe --json` of every example: plain JSON.  The guitar body and the
+    violin answered `internal error: TypeError: Object of type bool is not JSON serializable`
+    (their symmetry test compared with a NumPy float: a NumPy bool)."""
+    for f in sorted(ROOT_EXAMPLES.glob("*.aidl")):
+        r = aidl_lang.compile(path=str(f))
+        if not r.ok or not r.parts:
+            continue
+        _plain(r.description, f.name)
+    for name in ("guitar_body.aidl", "violin.aidl"):
+        assert main(["check", str(ROOT_EXAMPLES / name), "--describe", "--json"]) == 0
+        doc = json.loads(capsys.readouterr().out)
+        assert doc["describe"]["parts"][0]["symmetry"]["mirror_y"] is True, name

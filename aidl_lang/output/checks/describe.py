@@ -219,8 +219,8 @@ def symmetries(p: PartOutline) -> dict:
     tol = 2 * CHORD_TOL * p.perimeter + 1e-9
     base = shape.translate((-cx, -cy))
 
-    def same(other) -> bool:
-        return (base - other).area() + (other - base).area() <= tol
+    def same(other) -> bool:           # a plain bool: the perimeter may be a NumPy float
+        return bool((base - other).area() + (other - base).area() <= tol)
 
     doc = {"center": _pt((cx, cy)),
            "mirror_x": same(base.mirror((0.0, 1.0))),
@@ -302,19 +302,32 @@ def _inside_box(box, outer) -> bool:
     return box[0] >= outer[0] and box[1] >= outer[1] and box[2] <= outer[2] and box[3] <= outer[3]
 
 
-def notches(output: Output, part) -> list[dict]:
+def _cuts_within(d) -> dict:
+    """Each structure of drawing ``d`` -> the cuts of :attr:`Drawing.cuts` whose owner is it or
+    lies within it, in that order (each cut under its owner and the owner's ancestors)."""
+    out: dict = {}
+    for c in d.cuts:
+        for a in (c.owner, *c.owner.ancestors()):
+            out.setdefault(a, []).append(c)
+    return out
+
+
+def notches(output: Output, part, cuts_within: dict | None = None) -> list[dict]:
     """The notches that holes cut into part ``part``'s outline (a :class:`~.part.PartOutline`):
     ``[{"hole", "edge", "width", "depth", "center", "box"}]`` (mm), for every hole of the part
     whose region reaches past the material it cuts (``hole - before`` has area), so that it
-    opens the outline instead of making an opening.  Empty without the booleans' result."""
+    opens the outline instead of making an opening.  Empty without the booleans' result.
+    ``cuts_within``: :func:`_cuts_within` of the drawing, made once for all its parts."""
     d = output.drawing
     s = getattr(d, "part_of", {}).get(part.name) if d is not None else None
     if s is None:
         return []
+    if cuts_within is None:
+        cuts_within = _cuts_within(d)
     x0, y0, x1, y1 = part_box(part)
     out = []
-    for c in d.cuts:
-        if not (c.owner is s or c.owner.is_within(s)) or c.region.is_empty():
+    for c in cuts_within.get(s, ()):
+        if c.region.is_empty():
             continue
         shape = d.shapes.get(c.hole)
         if shape is None or (shape - c.before).area() <= NOTCH_AREA:
@@ -350,6 +363,18 @@ def describe(output: Output) -> dict:
     shapes = _own_shapes(output)
     parts = []
     kerfs = getattr(output.drawing, "kerf", None) or {}
+    # what each part is asked for, grouped once (a sheet of 2,000 parts asked every row,
+    # text and cut for each part: parts^2)
+    same_shape: dict = {}
+    for r in rows:
+        same_shape.setdefault(r["shape"], []).append(r)
+    texts_of: dict = {}
+    for t in texts:
+        texts_of.setdefault(t["part"], []).append(t)
+    cuts_within = _cuts_within(output.drawing) if output.drawing is not None else {}
+    strokes_of: dict = {}
+    for st in output.cuts:
+        strokes_of.setdefault(st.part, []).append(st)
     for p, row in zip(output.parts, rows):
         x0, y0, x1, y1 = part_box(p)
         outer = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
@@ -357,28 +382,27 @@ def describe(output: Output) -> dict:
         openings = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
                     for lp in p.loops if lp.is_hole]
         openings.sort(key=lambda o: (-o["center"][1], o["center"][0]))
-        copies = [r["path"] for r in rows if r["shape"] == row["shape"] and r is not row]
+        copies = [r["path"] for r in same_shape[row["shape"]] if r is not row]
         parts.append({"name": p.name, "kind": p.kind, "size": [_r(x1 - x0), _r(y1 - y0)],
                       "box": [_r(x0), _r(y0), _r(x1), _r(y1)], "area": _r(abs(p.area)),
                       "outline": outer, "openings": openings,
-                      "engravings": [t for t in texts if t["part"] == p.name],
+                      "engravings": texts_of.get(p.name, []),
                       "copies": copies, "symmetry": symmetries(p),
                       "thickness": _r(p.thickness if p.thickness is not None
                                       else DEFAULT_THICKNESS),
                       "thickness_set": p.thickness is not None,
                       "kerf": _r(kerfs[p.name]) if p.name in kerfs else None,
-                      "notches": notches(output, p),
-                      "through_cuts": _through(output, p.name)})
-    return {"units": "mm", "parts": parts,
-            "engravings": [t for t in texts if t["part"] == ""]}
+                      "notches": notches(output, p, cuts_within),
+                      "through_cuts": _through(strokes_of.get(p.name, ()))})
+    return {"units": "mm", "parts": parts, "engravings": texts_of.get("", [])}
 
 
-def _through(output: Output, part: str) -> list[dict]:
-    """The through-cuts of part ``part``: each stroke of style ``cut`` (its name, the kind
-    of its first segment, its ends and length in mm)."""
+def _through(strokes) -> list[dict]:
+    """The through-cuts ``strokes`` (of style ``cut``, one part's): each one's name, the kind
+    of its first segment, its ends and length in mm."""
     out = []
-    for st in output.cuts:
-        if st.part != part or not st.segments:
+    for st in strokes:
+        if not st.segments:
             continue
         a = st.segments[0]
         b = st.segments[-1]
