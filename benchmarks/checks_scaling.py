@@ -60,10 +60,11 @@ def main(sizes) -> None:
             part, shape = next(iter(roots.items()))
             loops = {part: [p for p in shape.to_polygons()]}
 
-            def holes():
+            def holes():            # as check_drawing runs them: one owner area per part
                 near = C._Near(roots, loops, d.cuts)
+                owner_areas: dict = {}
                 for cut in d.cuts:
-                    C._check_hole(d, cut, roots, DiagnosticSink(), near.local)
+                    C._check_hole(d, cut, roots, DiagnosticSink(), near.local, owner_areas)
 
             def webs():
                 a = C._analyse(d, part, shape, d.cuts, C.MIN_WALL)
