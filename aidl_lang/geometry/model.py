@@ -151,6 +151,18 @@ class Structure(Record):
         return f"<{self.kind} {self.path}>"
 
 
+def within_index(items, structure_of) -> dict:
+    """Each structure -> the ``items`` whose structure (``structure_of(item)``) is it or lies
+    within it, in the items' order: what asking :meth:`Structure.is_within` of every item for
+    every structure gives, in O(items x depth) instead of O(items x structures)."""
+    out: dict = {}
+    for item in items:
+        s = structure_of(item)
+        for a in (s, *s.ancestors()):
+            out.setdefault(a, []).append(item)
+    return out
+
+
 class Point(Record):
     """A point: the indices of its x and y parameters in the model's parameter vector."""
     __slots__ = ("ix", "iy", "owner", "span", "label")

@@ -11,7 +11,7 @@ import threading
 import manifold3d as mf
 import numpy as np
 
-from ...geometry.model import Structure
+from ...geometry.model import Structure, within_index
 from ..part.booleans import Drawing
 
 MIN_FRACTION = 0.02      # of a hole's or child's area
@@ -191,7 +191,7 @@ _WITHIN: dict = {}
 def _solids_within(d, s) -> list:
     """``[(t, faces)]`` of :attr:`Drawing.own` for every solid structure ``t`` that is ``s``
     or lies within it, in ``own``'s order.  While :func:`check_drawing` runs, from an index
-    of the drawing built once (each solid under itself and its ancestors: O(structures x
+    of the drawing built once (:func:`~...geometry.model.within_index`: O(structures x
     depth)); asking every structure of ``own`` for every part cost parts x structures (a
     sheet of 4,000 parts: W0515 ran out of its share)."""
     own = d.own
@@ -199,12 +199,8 @@ def _solids_within(d, s) -> list:
         return [(t, f) for t, f in own.items() if t.kind == "solid" and t.is_within(s)]
     hit = _WITHIN.get(id(own))
     if hit is None or hit[0] is not own:
-        index: dict = {}
-        for t, faces in own.items():
-            if t.kind == "solid":
-                for a in (t, *t.ancestors()):
-                    index.setdefault(a, []).append((t, faces))
-        hit = _WITHIN[id(own)] = (own, index)
+        solids = [(t, f) for t, f in own.items() if t.kind == "solid"]
+        hit = _WITHIN[id(own)] = (own, within_index(solids, lambda tf: tf[0]))
     return hit[1].get(s, [])
 
 

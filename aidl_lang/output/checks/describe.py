@@ -42,6 +42,7 @@ import numpy as np
 
 from ...geometry.curves import Arc, Circle, EllipticArc, Line
 from ...geometry.tessellate import CHORD_TOL
+from ...geometry.model import within_index
 from .inventory import parts_list
 from ..fabrication.layout import _segment_box, part_box
 from ..part.part import Output, PartOutline
@@ -302,28 +303,19 @@ def _inside_box(box, outer) -> bool:
     return box[0] >= outer[0] and box[1] >= outer[1] and box[2] <= outer[2] and box[3] <= outer[3]
 
 
-def _cuts_within(d) -> dict:
-    """Each structure of drawing ``d`` -> the cuts of :attr:`Drawing.cuts` whose owner is it or
-    lies within it, in that order (each cut under its owner and the owner's ancestors)."""
-    out: dict = {}
-    for c in d.cuts:
-        for a in (c.owner, *c.owner.ancestors()):
-            out.setdefault(a, []).append(c)
-    return out
-
-
 def notches(output: Output, part, cuts_within: dict | None = None) -> list[dict]:
     """The notches that holes cut into part ``part``'s outline (a :class:`~.part.PartOutline`):
     ``[{"hole", "edge", "width", "depth", "center", "box"}]`` (mm), for every hole of the part
     whose region reaches past the material it cuts (``hole - before`` has area), so that it
     opens the outline instead of making an opening.  Empty without the booleans' result.
-    ``cuts_within``: :func:`_cuts_within` of the drawing, made once for all its parts."""
+    ``cuts_within``: the drawing's cuts by the structures they lie within
+    (:func:`~...geometry.model.within_index`), made once for all its parts."""
     d = output.drawing
     s = getattr(d, "part_of", {}).get(part.name) if d is not None else None
     if s is None:
         return []
     if cuts_within is None:
-        cuts_within = _cuts_within(d)
+        cuts_within = within_index(d.cuts, lambda c: c.owner)
     x0, y0, x1, y1 = part_box(part)
     out = []
     for c in cuts_within.get(s, ()):
@@ -371,7 +363,8 @@ def describe(output: Output) -> dict:
     texts_of: dict = {}
     for t in texts:
         texts_of.setdefault(t["part"], []).append(t)
-    cuts_within = _cuts_within(output.drawing) if output.drawing is not None else {}
+    cuts_within = (within_index(output.drawing.cuts, lambda c: c.owner)
+                   if output.drawing is not None else {})
     strokes_of: dict = {}
     for st in output.cuts:
         strokes_of.setdefault(st.part, []).append(st)

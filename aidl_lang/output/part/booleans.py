@@ -937,9 +937,12 @@ class Renderer:
         groups: dict = {}
         owners = _meeting(after, before)
         for a, comp in enumerate(after):
-            areas = [((comp ^ before[i]).area(), -i) for i in owners[a]]
-            best = max(areas, default=(0.0, 0))
-            groups.setdefault(-best[1] if best[0] > 0 else 0, []).append(comp)
+            k, most = 0, 0.0                  # the first of the largest overlaps
+            for i in owners[a]:
+                got = (comp ^ before[i]).area()
+                if got > most:
+                    k, most = i, got
+            groups.setdefault(k, []).append(comp)
         removed, pieces = [], []
         for comps in groups.values():
             comps.sort(key=lambda c: -c.area())
