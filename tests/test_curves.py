@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -139,3 +140,34 @@ def test_a_slot_is_two_lines_and_two_half_circles():
         pytest.approx([9.25] * 4, abs=1e-12)
     assert [abs(a.sweep) for a in arcs] == pytest.approx([math.pi, math.pi], abs=1e-12)
     assert [a.radius for a in arcs] == pytest.approx([2.75, 2.75], abs=1e-15)
+
+
+def test_segment_boxes_are_the_design_numbers():
+    """Every segment kind has one exact ``box()`` (geometry/curves.py), which the extent, the
+    PDF tiles, the layout, ``--describe`` and the drawing readers all use."""
+    from aidl_lang.geometry.curves import Arc, Circle, Line
+    assert Line((3, -1), (-2, 4)).box() == (-2, -1, 3, 4)
+    assert Circle((1, 2), 5).box() == (-4, -3, 6, 7)
+    assert Arc((0, 0), 5, 0.0, math.pi).box() == (-5.0, 0.0, 5.0, 5.0)          # upper half
+    assert Arc((0, 0), 5, math.pi, -math.pi).box() == (-5.0, 0.0, 5.0, 5.0)     # the same, clockwise
+    assert Arc((10, 0), 2, -0.25, 0.5).box()[2] == 12.0                         # through 0 degrees
+    assert Arc((0, 0), 1, 0.0, 2 * math.pi).box() == (-1, -1, 1, 1)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-3 * math.pi, 3 * math.pi), st.floats(-2 * math.pi, 2 * math.pi).filter(lambda v: abs(v) > 1e-6),
+       st.floats(0.01, 100))
+def test_an_arc_box_holds_every_point_of_the_arc_and_no_more(a0, sweep, r):
+    """The box holds 2,001 points along the arc and each of its sides is touched by one of
+    them (within the spacing's sagitta)."""
+    from aidl_lang.geometry.curves import Arc
+    arc = Arc((1.5, -2.0), r, a0, sweep)
+    x0, y0, x1, y1 = arc.box()
+    t = a0 + sweep * np.linspace(0, 1, 2001)
+    xs, ys = 1.5 + r * np.cos(t), -2.0 + r * np.sin(t)
+    eps = 1e-12 * (1 + r)
+    assert xs.min() >= x0 - eps and xs.max() <= x1 + eps
+    assert ys.min() >= y0 - eps and ys.max() <= y1 + eps
+    gap = r * (1 - math.cos(abs(sweep) / 2000)) + eps
+    assert xs.min() <= x0 + gap and xs.max() >= x1 - gap
+    assert ys.min() <= y0 + gap and ys.max() >= y1 - gap

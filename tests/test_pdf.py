@@ -408,8 +408,7 @@ def check_tiles(output, data, paper):
 
 
 def on_page(s, window):
-    from aidl_lang.output.part.extent import _segment_box
-    b = _segment_box(s)
+    b = s.box()
     return b[0] <= window[2] and b[2] >= window[0] and b[1] <= window[3] and b[3] >= window[1]
 
 

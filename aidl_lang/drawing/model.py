@@ -187,25 +187,10 @@ class Drawing:
 
 
 def _segs_box(segs) -> tuple[float, float, float, float]:
-    xs, ys = [], []
-    for s in segs:
-        if isinstance(s, (Spline, EllipticArc)):
-            b = s.box()
-            xs += [b[0], b[2]]
-            ys += [b[1], b[3]]
-        elif isinstance(s, Arc):
-            xs += [s.start[0], s.end[0]]
-            ys += [s.start[1], s.end[1]]
-            a0 = min(s.start_angle, s.end_angle)
-            for k in range(math.ceil(a0 / (math.pi / 2) - 1e-12), 
-                           math.floor(max(s.start_angle, s.end_angle) / (math.pi / 2) + 1e-12) + 1):
-                x, y = s.at(k * math.pi / 2)
-                xs.append(x)
-                ys.append(y)
-        else:
-            xs += [s.start[0], s.end[0]]
-            ys += [s.start[1], s.end[1]]
-    return min(xs), min(ys), max(xs), max(ys)
+    """The exact ``(x0, y0, x1, y1)`` of ``segs`` (each segment's ``box()``)."""
+    bs = [x.box() for x in segs]
+    return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+            max(b[3] for b in bs))
 
 
 def bezier_spline(spans: list, steps: list | None = None) -> Spline:

@@ -56,6 +56,11 @@ class Line(Frozen):
     def length(self) -> float:
         return math.dist(self.start, self.end)
 
+    def box(self) -> tuple[float, float, float, float]:
+        """Exact ``(x0, y0, x1, y1)`` (mm)."""
+        (x0, y0), (x1, y1) = self.start, self.end
+        return min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)
+
 
 class Arc(Frozen):
     """Circular arc from ``start_angle`` sweeping ``sweep`` radians (> 0 counter-clockwise)."""
@@ -92,6 +97,31 @@ class Arc(Frozen):
     def length(self) -> float:
         return self.radius * abs(self.sweep)
 
+    def box(self) -> tuple[float, float, float, float]:
+        """Exact ``(x0, y0, x1, y1)`` (mm): the ends' box, grown to ``center +- radius`` on
+        each axis whose extreme (a multiple of 90 degrees) the sweep passes."""
+        cx, cy = self.center
+        r = self.radius
+        if abs(self.sweep) >= 2 * math.pi:
+            return cx - r, cy - r, cx + r, cy + r
+        (sx, sy), (ex, ey) = self.start, self.end
+        x0, x1 = min(sx, ex), max(sx, ex)
+        y0, y1 = min(sy, ey), max(sy, ey)
+        lo, hi = sorted((self.start_angle, self.start_angle + self.sweep))
+        k = math.ceil(lo / (math.pi / 2))
+        while k * math.pi / 2 <= hi:             # each multiple of 90 degrees the arc passes
+            q = k % 4
+            if q == 0:
+                x1 = cx + r
+            elif q == 1:
+                y1 = cy + r
+            elif q == 2:
+                x0 = cx - r
+            else:
+                y0 = cy - r
+            k += 1
+        return x0, y0, x1, y1
+
 
 class Circle(Frozen):
     """A full circle; ``ccw`` False when it is a hole (clockwise) of its part."""
@@ -105,6 +135,11 @@ class Circle(Frozen):
     @property
     def length(self) -> float:
         return 2 * math.pi * self.radius
+
+    def box(self) -> tuple[float, float, float, float]:
+        """Exact ``(x0, y0, x1, y1)`` (mm)."""
+        (cx, cy), r = self.center, self.radius
+        return cx - r, cy - r, cx + r, cy + r
 
 
 class Spline(Frozen):

@@ -184,30 +184,10 @@ def moved(segments, dx: float, dy: float) -> list:
 
 
 def local_box(loops, paths) -> tuple[float, float, float, float]:
-    """The exact ``(x0, y0, x1, y1)`` of the loops and paths in the drawing's coordinates."""
-    xs, ys = [], []
-    for segs in [lp.segments for lp in loops] + list(paths):
-        for s in segs:
-            if isinstance(s, Circle):
-                xs += [s.center[0] - s.radius, s.center[0] + s.radius]
-                ys += [s.center[1] - s.radius, s.center[1] + s.radius]
-            elif isinstance(s, (Spline, EllipticArc)):
-                b = s.box()
-                xs += [b[0], b[2]]
-                ys += [b[1], b[3]]
-            elif isinstance(s, Arc):
-                xs += [s.start[0], s.end[0]]
-                ys += [s.start[1], s.end[1]]
-                lo, hi = sorted((s.start_angle, s.end_angle))
-                k = math.ceil(lo / (math.pi / 2))
-                while k * math.pi / 2 <= hi:
-                    x, y = s.at(k * math.pi / 2)
-                    xs.append(x)
-                    ys.append(y)
-                    k += 1
-            else:
-                xs += [s.start[0], s.end[0]]
-                ys += [s.start[1], s.end[1]]
-    if not xs:
+    """The exact ``(x0, y0, x1, y1)`` of the loops and paths in the drawing's coordinates
+    (each segment's ``box()``)."""
+    bs = [s.box() for segs in [lp.segments for lp in loops] + list(paths) for s in segs]
+    if not bs:
         return (0.0, 0.0, 0.0, 0.0)
-    return min(xs), min(ys), max(xs), max(ys)
+    return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+            max(b[3] for b in bs))

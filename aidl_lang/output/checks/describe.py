@@ -44,7 +44,7 @@ from ...geometry.curves import Arc, Circle, EllipticArc, Line
 from ...geometry.tessellate import CHORD_TOL
 from ...geometry.model import within_index
 from .inventory import parts_list
-from ..fabrication.layout import _segment_box, part_box
+from ..fabrication.layout import part_box
 from ..part.part import Output, PartOutline
 
 __all__ = ["describe", "describe_text"]
@@ -66,7 +66,7 @@ def _box(segments) -> tuple[float, float, float, float]:
     x0 = y0 = math.inf
     x1 = y1 = -math.inf
     for s in segments:
-        a, b, c, d = _segment_box(s)
+        a, b, c, d = s.box()
         x0, y0, x1, y1 = min(x0, a), min(y0, b), max(x1, c), max(y1, d)
     return x0, y0, x1, y1
 
@@ -328,7 +328,7 @@ def notches(output: Output, part, cuts_within: dict | None = None) -> list[dict]
         # the exact box: the part's own outline pieces inside the (polygonal) region's box
         pad = max(0.01, 1e-3 * max(e - a, f - b))
         inner = [g for lp in part.loops for g in lp.segments
-                 if _inside_box(_segment_box(g), (a - pad, b - pad, e + pad, f + pad))]
+                 if _inside_box(g.box(), (a - pad, b - pad, e + pad, f + pad))]
         if inner:
             a, b, e, f = _box(inner)
         gaps = {"top": y1 - f, "bottom": b - y0, "left": a - x0, "right": x1 - e}

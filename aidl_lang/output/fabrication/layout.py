@@ -27,7 +27,6 @@ import math
 
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.offset import OffsetError, offset_loop
-from ..part.extent import _segment_box
 from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
 
 SAFETY = 0.01        # mm added to the gap around each part: chords, the packer's f32 positions
@@ -99,7 +98,7 @@ def part_box(p: PartOutline) -> tuple[float, float, float, float]:
     x1 = y1 = -math.inf
     for lp in p.loops:
         for s in lp.segments:
-            a, b, c, d = _segment_box(s)
+            a, b, c, d = s.box()
             x0, y0, x1, y1 = min(x0, a), min(y0, b), max(x1, c), max(y1, d)
     return x0, y0, x1, y1
 

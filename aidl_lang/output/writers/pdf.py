@@ -303,11 +303,10 @@ def _label(r: int, col: int) -> str:
 
 def _boxes(output: Output) -> list:
     """The exact box of every part and engraving stroke."""
-    from ..part.extent import _segment_box
     out = []
     for segs in [[s for lp in p.loops for s in lp.segments] for p in output.parts] + \
             [st.segments for st in output.engrave]:
-        bs = [_segment_box(s) for s in segs]
+        bs = [s.box() for s in segs]
         if bs:
             out.append((min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
                         max(b[3] for b in bs)))
@@ -321,7 +320,6 @@ def _overlaps(bb, win) -> bool:
 def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
     """The drawing on one page: the window's clip (tiles), the sheet's edge, the cuts, the
     engraving, the part names."""
-    from ..part.extent import _segment_box
     ops = ["q", "1 j 1 J"]
     if tiled:          # draw only inside the window: the overlap is the only shared strip
         a, b = pen.p((win[0], win[1])), pen.p((win[2], win[3]))
@@ -335,7 +333,7 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
     ops += [_rgb(CUT_RGB), f"{CUT_WIDTH:g} w"]
     labels = []
     for p in output.parts:
-        boxes = [_segment_box(s) for lp in p.loops for s in lp.segments]
+        boxes = [s.box() for lp in p.loops for s in lp.segments]
         if not boxes:
             continue
         bb = (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes),
