@@ -222,3 +222,26 @@ def test_off_outlines_is_the_every_pair_measure(seed, sizes):
         assert [(s.style, s.segments) for s in got] == [(s.style, s.segments) for s in want]
     finally:
         P._STRETCH, P._QUERY, P._CANDIDATES = old
+
+
+def test_the_dxf_of_closed_cuts_holds_each_square_once_at_its_design_place():
+    """Re-read by ezdxf: the plate's outline and each closed cut's square as one closed
+    polyline on the cut layer, 6.000000 mm a side where the program puts it, and no second
+    stroke along it (the cut runs on the freed piece's outline: cut once)."""
+    import io
+
+    import ezdxf
+    data = api.compile(source=_square_cuts(50), path="squares.aidl").encode("dxf")
+    doc = ezdxf.read(io.StringIO(data.decode()))
+    ents = list(doc.modelspace())
+    assert all(e.dxftype() == "LWPOLYLINE" and e.closed and e.dxf.layer == "CUT" for e in ents)
+    assert len(ents) == 51
+    boxes = set()
+    for e in ents:
+        P = np.array([(x, y) for x, y, *_ in e.get_points()])
+        x0, y0 = P.min(axis=0)
+        x1, y1 = P.max(axis=0)
+        if x1 - x0 < 100:
+            assert x1 - x0 == pytest.approx(6, abs=1e-9) and y1 - y0 == pytest.approx(6, abs=1e-9)
+            boxes.add((round(x0, 9), round(y0, 9)))
+    assert boxes == {((i % COLS) * 12 + 3, (i // COLS) * 12 + 3) for i in range(50)}
