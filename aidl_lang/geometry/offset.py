@@ -24,10 +24,12 @@ from __future__ import annotations
 
 import math
 
-from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
+from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, crossings,
+                     intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 
 TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent join
+MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is cut (bevel)
 
 
 class OffsetError(ValueError):
@@ -68,9 +70,14 @@ def _forward(orig: Segment, new: Segment) -> bool:
         and abs(new.sweep) <= abs(orig.sweep) + 1e-9
 
 
-def offset_loop(loop: Loop, d: float) -> Loop:
+def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
     """``loop`` offset ``d`` mm (>= 0) to the right of its direction of travel: outward for
     an outer (counter-clockwise) loop, into the hole for a hole (see the module text).
+    ``keep``: indices of segments left where they are (offset 0: an edge shared with a
+    neighbouring piece, cut once along its line); where a kept segment meets an offset one the
+    two carriers are joined where they cross (a kept line is lengthened by ``d`` past a square
+    corner), or, where they do not cross near the corner (a tangent or collinear join), the
+    kept segment runs ``d`` on along its direction and a line steps to the offset one.
     Raises :class:`OffsetError` where a feature is too small for the offset."""
     for g in loop.segments:
         if isinstance(g, EllipticArc):
@@ -86,32 +93,19 @@ def offset_loop(loop: Loop, d: float) -> Loop:
             e.curve = g.curve
             raise e
     segs = loop.segments
-    if d == 0 or not segs:
+    keep = frozenset(keep)
+    if d == 0 or not segs or len(keep) >= len(segs):
         return loop
     if len(segs) == 1 and isinstance(segs[0], Circle):
         return Loop([_right(segs[0], d)])
     n = len(segs)
-    moved = [_right(s, d) for s in segs]
-    # the join before segment k: (end of moved k-1, start of moved k, corner arc or None)
-    joins = []
-    for k in range(n):
-        a, b = segs[k - 1], segs[k]
-        turn = turn_between(a, b)
-        if abs(turn) <= TANGENT_TURN:                 # tangent: the offsets meet
-            p = moved[k - 1].end
-            joins.append((p, p, None))
-        elif turn > 0:                                 # convex: round the corner
-            v = b.start
-            tx, ty = tangent_at(a, True)
-            start = math.atan2(-tx, ty)                # the right normal of a at its end
-            joins.append((moved[k - 1].end, moved[k].start, Arc(v, d, start, turn)))
-        else:                                          # concave: where the offsets cross
-            p = intersect(carrier(moved[k - 1]), carrier(moved[k]), b.start)
-            joins.append((p, p, None))
+    moved = [s if k in keep else _right(s, d) for k, s in enumerate(segs)]
+    # the join before segment k: (end of moved k-1, start of moved k, segments between)
+    joins = [_join(segs[k - 1], segs[k], moved[k - 1], moved[k], d,
+                   ((k - 1) % n in keep, k in keep)) for k in range(n)]
     out: list[Segment] = []
     for k in range(n):
-        if joins[k][2] is not None:
-            out.append(joins[k][2])
+        out += joins[k][2]
         start, end = joins[k][1], joins[(k + 1) % n][0]
         g = moved[k]
         t = with_ends(g, start, end) if (start, end) != (g.start, g.end) else g
@@ -125,8 +119,42 @@ def offset_loop(loop: Loop, d: float) -> Loop:
     return Loop(simplify(out, scale))
 
 
+def _join(a: Segment, b: Segment, ma: Segment, mb: Segment, d: float, kept) -> tuple:
+    """The join at the corner from ``a`` into ``b`` (``ma``, ``mb``: their offsets; ``kept``:
+    (a kept, b kept)): (where ``ma`` ends, where ``mb`` starts, the segments between)."""
+    v = b.start
+    turn = turn_between(a, b)
+    if kept[0] and kept[1]:                            # both on their lines: the corner
+        return (v, v, [])
+    if kept[0] or kept[1]:                             # one kept, one offset
+        pts = crossings(carrier(ma), carrier(mb))
+        if pts and abs(turn) > TANGENT_TURN:
+            p = min(pts, key=lambda q: math.dist(q, v))
+            if math.dist(p, v) <= MITER_LIMIT * d:
+                return (p, p, [])
+        if kept[0]:                                    # a runs d on, then a step to mb
+            tx, ty = tangent_at(a, True)
+            e = (v[0] + d * tx, v[1] + d * ty)
+            if isinstance(a, Line):
+                return (e, mb.start, [Line(e, mb.start)])
+            return (v, mb.start, [Line(v, e), Line(e, mb.start)])
+        tx, ty = tangent_at(b, False)                  # a step from ma onto b, d before it
+        e = (v[0] - d * tx, v[1] - d * ty)
+        if isinstance(b, Line):
+            return (ma.end, e, [Line(ma.end, e)])
+        return (ma.end, v, [Line(ma.end, e), Line(e, v)])
+    if abs(turn) <= TANGENT_TURN:                      # tangent: the offsets meet
+        p = ma.end
+        return (p, p, [])
+    if turn > 0:                                       # convex: round the corner
+        tx, ty = tangent_at(a, True)
+        start = math.atan2(-tx, ty)                    # the right normal of a at its end
+        return (ma.end, mb.start, [Arc(v, d, start, turn)])
+    p = intersect(carrier(ma), carrier(mb), v)         # concave: where the offsets cross
+    return (p, p, [])
+
+
 # ------------------------------------------------------------------ Offset(shape, distance)
-MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is cut (bevel)
 
 
 def sweep_loops(s: Segment, d: float) -> list[Loop]:

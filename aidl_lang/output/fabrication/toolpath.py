@@ -112,6 +112,7 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
         own = _depths([lp for _, lp in got])
         by_part[i] = [(d, lp) for d, (_, lp) in zip(own, got)]
     remaining = sorted(by_part, key=lambda i: -part_depth.get(i, 0))
+    done: dict = {}      # segment key -> the part whose loop cut it (a shared edge: once)
     while remaining:
         deepest = part_depth.get(remaining[0], 0)
         level = [i for i in remaining if part_depth.get(i, 0) == deepest]
@@ -129,9 +130,51 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
                 cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name,
                             list(lp.segments), True) for dd, lp in by_part[i] if dd == d]
                 for c in _tour(cuts, at, after):
-                    out.append(c)
-                    at = after(c)
+                    for c in _once(c, done):
+                        out.append(c)
+                        at = after(c)
     return out
+
+
+def _key(s: Segment) -> tuple:
+    """What makes segment ``s`` the same cut as another, either way round: its kind, its
+    circle and its ends (to 1e-6 mm)."""
+    def r(p):
+        return (round(p[0], 6) + 0.0, round(p[1], 6) + 0.0)
+    if isinstance(s, Circle):
+        return ("C", r(s.center), round(s.radius, 6))
+    ends = tuple(sorted((r(s.start), r(s.end))))
+    if hasattr(s, "center"):
+        return ("A", r(s.center), round(s.radius, 6), ends)
+    return (type(s).__name__, ends)
+
+
+def _once(c: Cut, done: dict) -> list[Cut]:
+    """Closed cut ``c`` without the segments another part's loop has cut already (an edge
+    two pieces share, on its line in both): the open chains left, in the loop's order
+    (``[c]`` when nothing is shared).  ``done``: segment key -> the part that cut it,
+    updated."""
+    keys = [_key(s) for s in c.segments]
+    cut = [done.get(k, c.part) != c.part for k in keys]
+    for k in keys:
+        done.setdefault(k, c.part)
+    if not any(cut):
+        return [c]
+    if all(cut):
+        return []
+    n = len(keys)
+    first = next(i for i in range(n) if cut[i - 1] and not cut[i])   # a chain's start
+    chains, cur = [], []
+    for i in range(first, first + n):
+        if cut[i % n]:
+            if cur:
+                chains.append(cur)
+            cur = []
+        else:
+            cur.append(c.segments[i % n])
+    if cur:
+        chains.append(cur)
+    return [Cut(c.operation, c.part, ch, False) for ch in chains]
 
 
 def travel(cuts: list[Cut], origin: Point = (0.0, 0.0)) -> float:

@@ -84,12 +84,14 @@ class Job:
     """A G-code program and its numbers: ``text``; ``cut`` (mm run cutting, every pass and
     depth), ``travel`` (mm of ``G0`` in XY), ``seconds`` (the job's time at the profile's
     feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
-    ``thickness`` unlike the program's)."""
+    ``thickness`` unlike the program's), ``notes`` (what the program does that the drawing
+    does not say: a shared cut cut once, a lead-in shortened, tabs fitted)."""
     text: str
     cut: float
     travel: float
     seconds: float
     warnings: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
 
     def summary(self, name: str) -> str:
         """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
@@ -104,16 +106,20 @@ def estimate_text(cut: float, travel: float, seconds: float) -> str:
     return f"cut {cut:.1f} mm, travel {travel:.1f} mm, about {t} at the profile's speeds"
 
 
-def read_summary(data: bytes) -> tuple[str, list[str]]:
-    """The estimate line and the warnings of a program :func:`write` wrote (its header),
-    for ``aidl render`` to print."""
-    estimate, warnings = "", []
-    for line in data.decode("ascii", "replace").splitlines()[:12]:
+def read_summary(data: bytes) -> tuple[str, list[str], list[str]]:
+    """The estimate line, the warnings and the notes of a program :func:`write` wrote (its
+    header, the ``;`` lines before ``G21``), for ``aidl render`` to print."""
+    estimate, warnings, notes = "", [], []
+    for line in data.decode("ascii", "replace").splitlines():
+        if not line.startswith(";"):
+            break
         if line.startswith("; cut "):
             estimate = line[2:]
         elif line.startswith("; warning: "):
             warnings.append(line[len("; warning: "):])
-    return estimate, warnings
+        elif line.startswith("; note: "):
+            notes.append(line[len("; note: "):])
+    return estimate, warnings, notes
 
 
 def machine_of(options):
@@ -439,7 +445,10 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     from ..fabrication.toolpath import plan
     m = machine or M.default("laser")
     warnings = _warnings(output, m)
+    notes = []
     if m.kind == "router":
+        from ..fabrication.layout import shared_note
+        notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
         output = tool_path(output, m.tool_diameter)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
@@ -449,9 +458,10 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
     w.warnings = warnings
+    w.notes = notes
     body = _body(w, cuts, m, thick, output)
     head = _header(output, m, w)
-    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings)
+    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes)
 
 
 def tool_path(output: Output, diameter: float) -> Output:
@@ -509,6 +519,7 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
          f"; machine: {m.kind} ({src})",
          f"; {estimate_text(w.cut, w.travel, w.seconds)}",
          *[f"; warning: {x}" for x in w.warnings],
+         *[f"; note: {x}" for x in w.notes],
          "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
          "G21 G90 G17"]
     for name in ("engrave", "score", "cut_inner", "cut_outer"):
