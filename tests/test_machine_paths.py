@@ -82,6 +82,25 @@ def test_router_cuts_the_shared_edge_once_and_keeps_the_outer_edges(tmp_path, ca
     assert "warning" not in said
 
 
+def test_a_t_of_cuts_is_cut_once_per_line(tmp_path, capsys):
+    src = SPLIT.replace("a = Line((30, 0), (30, 30))",
+                        "a = Line((30, 0), (30, 30))\n        b = Line((30, 15), (60, 15))")
+    f, said = _render(tmp_path, capsys, src, "g.gcode", profile='kind = "router"\n')
+    moves = replay(f.read_text(), "router")
+    deepest = min(m.z for m in moves if m.on)
+    cut = _cutting(moves, deepest)
+    xs, ys = _lines_at(cut, 0), _lines_at(cut, 1)
+    assert sorted(xs) == pytest.approx([-R, 30, 60 + R], abs=1e-9)
+    assert sorted(ys) == pytest.approx([-R, 15, 30 + R], abs=1e-9)
+    # the long cut once (the left piece's whole side), the short one from it to the edge
+    assert xs[30.0] == pytest.approx(30 + 2 * R, abs=1e-9)
+    assert ys[15.0] == pytest.approx(30 + R, abs=1e-9)
+    # every outer edge once: 2 x (60 + 30) mm of straight lines less the 4 corner arcs' ends
+    assert sum(m.length for m in cut) == pytest.approx(
+        2 * (60 + 30) + 2 * math.pi * R + 30 + 2 * R + 30 + R, abs=1e-6)
+    assert said.count("note: the shared cut between") == 3
+
+
 def test_kerf_keeps_the_outer_edges_and_cuts_the_shared_line_on_it(tmp_path, capsys):
     f, said = _render(tmp_path, capsys, SPLIT, "p.dxf", "--kerf", "0.2mm")
     xs = set()

@@ -35,7 +35,7 @@ ends ``M5``, ``G0 X0 Y0``, ``M2``.
 
 Router (``kind = "router"``): the paths are the cuts offset by the tool radius (outside the
 outlines, inside the holes: :func:`~..fabrication.layout.compensate` with a kerf of ``tool_diameter``,
-exact lines and arcs), run in the loops' own direction (outlines counter-clockwise, holes
+exact lines and arcs; an edge two pieces share on its own line, cut once, with a note), run in the loops' own direction (outlines counter-clockwise, holes
 clockwise: conventional milling with a clockwise spindle).  ``M3 S<spindle>``, travel at
 ``safe_height`` (``G0 Z``), then down ``depth_per_pass`` at a time (``G1 Z.. F<plunge>``) to
 the part's thickness (``Options.thickness``, else the program's ``thickness``, else 3 mm),
@@ -46,9 +46,11 @@ Plotter (``kind = "plotter"``): the pen is Z: up at ``safe_height`` (``G0 Z``), 
 ``Z0`` (``G1 Z0``); paths as the laser's, ``passes`` times.
 
 Lead-in (profile ``lead_in`` mm, lasers and routers): each closed cut starts that far off its
-start point on the scrap side (to the right of the direction of travel: outside an outline,
-inside a hole), a straight ``G1`` onto the loop; left out where that point is not on the
-scrap side (a hole narrower than the lead-in).
+path on the scrap side (to the right of the direction of travel: outside an outline, inside
+a hole), a straight ``G1`` onto it, which never crosses another cut nor leaves the sheet
+(:func:`lead_in`: shortened, moved to another entry of the loop, or left out, with a note).
+Tabs that do not fit a cut are fewer or smaller (:func:`fit_tabs`, with a note).  The notes
+are ``; note:`` lines of the header (:func:`read_summary`).
 
 :func:`job` gives the program with its numbers (:class:`Job`: cut and travel lengths, the
 time at the profile's speeds, warnings); :func:`write` is the registry's entry.
@@ -548,7 +550,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     # where it started, and the tour goes on from there
     back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
                  if m.kind == "laser" and m.operation(op).passes % 2 == 0)
-    cuts = plan(output, back=back)
+    cuts = plan(output, back=back, once=True)   # a shared edge: cut once
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
     w.warnings = warnings
