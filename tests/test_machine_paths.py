@@ -101,6 +101,33 @@ def test_a_t_of_cuts_is_cut_once_per_line(tmp_path, capsys):
     assert said.count("note: the shared cut between") == 3
 
 
+def test_an_edge_shared_in_part_steps_out_square(tmp_path, capsys):
+    # an L plate cut at x = 30 up to its inner corner: the left piece's right side is shared
+    # from y = 0 to 20 and its own outline from 20 to 30
+    src = """solid plate {
+    body = Polygon(points=[(0, 0), (60, 0), (60, 20), (30, 20), (30, 30), (0, 30)])
+    cut split { a = Line((30, 0), (30, 20)) }
+}
+"""
+    f, said = _render(tmp_path, capsys, src, "l.gcode", profile='kind = "router"\n')
+    moves = replay(f.read_text(), "router")
+    deepest = min(m.z for m in moves if m.on)
+    cut = _cutting(moves, deepest)
+    segs = {(tuple(round(v, 9) for v in m.p), tuple(round(v, 9) for v in m.q)) for m in cut}
+    r = round(R, 9)
+    # the shared line on x = 30 runs r past the inner corner, a square step r across, then
+    # the outline's own offset at x = 30 + r: the right piece's corner (30, 20) stays r
+    # from every tool-centre path but the shared line (a diagonal step came 1.12 mm near)
+    assert ((30.0, -r), (30.0, 20 + r)) in segs
+    assert ((30.0, 20 + r), (30 + r, 20 + r)) in segs
+    assert ((30 + r, 20 + r), (30 + r, 30.0)) in segs
+    for m in cut:
+        if m.g == 1 and not (m.p[0] == m.q[0] == 30.0):
+            for k in range(21):
+                p = (m.p[0] + (m.q[0] - m.p[0]) * k / 20, m.p[1] + (m.q[1] - m.p[1]) * k / 20)
+                assert math.dist(p, (30, 20)) >= R - 1e-9, (m.p, m.q)
+
+
 def test_kerf_keeps_the_outer_edges_and_cuts_the_shared_line_on_it(tmp_path, capsys):
     f, said = _render(tmp_path, capsys, SPLIT, "p.dxf", "--kerf", "0.2mm")
     xs = set()

@@ -119,6 +119,16 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
     return Loop(simplify(out, scale))
 
 
+def _on_carrier(p, g: Line) -> bool:
+    """Point ``p`` lies on line ``g``'s carrier (to 1e-9 of its size)."""
+    (x0, y0), (x1, y1) = g.start, g.end
+    L = math.hypot(x1 - x0, y1 - y0)
+    if L == 0.0:
+        return False
+    scale = max(1.0, abs(x0), abs(y0), abs(x1), abs(y1))
+    return abs((p[0] - x0) * (y1 - y0) - (p[1] - y0) * (x1 - x0)) / L <= 1e-9 * scale
+
+
 def _join(a: Segment, b: Segment, ma: Segment, mb: Segment, d: float, kept) -> tuple:
     """The join at the corner from ``a`` into ``b`` (``ma``, ``mb``: their offsets; ``kept``:
     (a kept, b kept)): (where ``ma`` ends, where ``mb`` starts, the segments between)."""
@@ -132,17 +142,25 @@ def _join(a: Segment, b: Segment, ma: Segment, mb: Segment, d: float, kept) -> t
             p = min(pts, key=lambda q: math.dist(q, v))
             if math.dist(p, v) <= MITER_LIMIT * d:
                 return (p, p, [])
-        if kept[0]:                                    # a runs d on, then a step to mb
+        # a tangent or collinear join: the kept segment runs d on past the corner and a
+        # square step (d across) meets the offset one there, d from the corner everywhere
+        if kept[0]:
             tx, ty = tangent_at(a, True)
             e = (v[0] + d * tx, v[1] + d * ty)
-            if isinstance(a, Line):
-                return (e, mb.start, [Line(e, mb.start)])
-            return (v, mb.start, [Line(v, e), Line(e, mb.start)])
-        tx, ty = tangent_at(b, False)                  # a step from ma onto b, d before it
+            ux, uy = tangent_at(b, False)
+            f = (e[0] + d * uy, e[1] - d * ux)
+            if not (isinstance(mb, Line) and _on_carrier(f, mb)):
+                f = mb.start                           # no square step: straight to mb
+            head = [] if isinstance(a, Line) else [Line(v, e)]
+            return (e if isinstance(a, Line) else v, f, head + [Line(e, f)])
+        tx, ty = tangent_at(b, False)
         e = (v[0] - d * tx, v[1] - d * ty)
-        if isinstance(b, Line):
-            return (ma.end, e, [Line(ma.end, e)])
-        return (ma.end, v, [Line(ma.end, e), Line(e, v)])
+        ux, uy = tangent_at(a, True)
+        f = (e[0] + d * uy, e[1] - d * ux)
+        if not (isinstance(ma, Line) and _on_carrier(f, ma)):
+            f = ma.end
+        tail = [] if isinstance(b, Line) else [Line(e, v)]
+        return (f, e if isinstance(b, Line) else v, [Line(f, e)] + tail)
     if abs(turn) <= TANGENT_TURN:                      # tangent: the offsets meet
         p = ma.end
         return (p, p, [])

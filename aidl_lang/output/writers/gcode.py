@@ -360,7 +360,9 @@ class _Paths:
     beyond them), and the sheet (``page``: (x0, y0, x1, y1) mm, or None), for the lead-ins:
     :meth:`free` is how far a straight move from a point goes before it meets one."""
 
-    def __init__(self, cuts, page):
+    def __init__(self, cuts, page, reach: float):
+        """``reach``: the longest move :meth:`free` is asked about (mm): the size of the
+        grid cells the chords are filed in, so that a question looks at a few cells."""
         import numpy as np
         from ...geometry.curves import sample_xy
         a, b = [], []
@@ -381,6 +383,14 @@ class _Paths:
         self.b = np.asarray(b, dtype=float).reshape(-1, 2)
         self.box = np.column_stack([np.minimum(self.a, self.b), np.maximum(self.a, self.b)])
         self.page = page
+        self.cell = max(float(reach), 1e-3)
+        self.grid: dict = {}
+        lo = np.floor(self.box[:, :2] / self.cell).astype(np.int64)
+        hi = np.floor(self.box[:, 2:] / self.cell).astype(np.int64)
+        for k in range(len(lo)):
+            for i in range(lo[k, 0], hi[k, 0] + 1):
+                for j in range(lo[k, 1], hi[k, 1] + 1):
+                    self.grid.setdefault((i, j), []).append(k)
 
     def free(self, p, u, length: float) -> float:
         """How far (mm, at most ``length``) the move from ``p`` along unit ``u`` goes before
@@ -395,11 +405,14 @@ class _Paths:
                 elif u[k] < 0:
                     t = min(t, (lo - p[k]) / u[k])
         q = (p[0] + u[0] * t, p[1] + u[1] * t)
-        m = (self.box[:, 0] <= max(p[0], q[0])) & (self.box[:, 2] >= min(p[0], q[0])) \
-            & (self.box[:, 1] <= max(p[1], q[1])) & (self.box[:, 3] >= min(p[1], q[1]))
-        if not m.any():
+        x0, y0 = math.floor(min(p[0], q[0]) / self.cell), math.floor(min(p[1], q[1]) / self.cell)
+        x1, y1 = math.floor(max(p[0], q[0]) / self.cell), math.floor(max(p[1], q[1]) / self.cell)
+        near = {k for i in range(x0, x1 + 1) for j in range(y0, y1 + 1)
+                for k in self.grid.get((i, j), ())}
+        if not near:
             return max(t, 0.0)
-        A, B = self.a[m], self.b[m]
+        idx = np.fromiter(near, dtype=np.int64, count=len(near))
+        A, B = self.a[idx], self.b[idx]
         e = B - A
         d = A - np.asarray(p, dtype=float)
         den = u[0] * e[:, 1] - u[1] * e[:, 0]
@@ -695,7 +708,7 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
     else:
         w.rapid(z=m.safe_height)
     spindle = m.operation("cut_outer").spindle if m.kind == "router" else None
-    paths = _Paths(cuts, output.page) if m.lead_in > 0 else None
+    paths = _Paths(cuts, output.page, m.lead_in + LEAD_CLEARANCE) if m.lead_in > 0 else None
     for cut in cuts:
         op = m.operation(cut.operation)
         path = [g for s in cut.segments for g in as_arcs(s)]
