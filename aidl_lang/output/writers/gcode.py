@@ -679,7 +679,9 @@ def _changes(w: _Writer) -> list[str]:
                    f"`{part}` (tabs take at most half of it): cut with {n} tab"
                    f"{'s' if n != 1 else ''} of {width:.3g} mm")
     if len(tabs) > 3:
-        out.append(f"and {len(tabs) - 3} more cuts with fewer or smaller tabs than the profile's")
+        k = len(tabs) - 3
+        out.append(f"and {k} more cut{'s' if k != 1 else ''} with fewer or smaller tabs than "
+                   "the profile's")
     for (what, part), got in w.changed.items():
         who = f"`{part}`" if part else "the drawing"
         if what == "lead":
