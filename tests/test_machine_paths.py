@@ -142,6 +142,17 @@ def test_kerf_keeps_the_outer_edges_and_cuts_the_shared_line_on_it(tmp_path, cap
             "line; each side loses 0.1 mm (half the kerf, 0.2 mm)") in said
 
 
+def test_laser_with_a_kerf_cuts_the_shared_line_once_a_pass(tmp_path, capsys):
+    f, said = _render(tmp_path, capsys, "kerf 0.2 mm\n" + SPLIT, "p.gcode")
+    cut = _cutting(replay(f.read_text()))
+    xs = _lines_at(cut, 0)
+    assert sorted(xs) == pytest.approx([-0.1, 30, 60.1], abs=1e-9)
+    # 2 passes (the built-in laser), the shared line 30.2 mm once in each
+    assert xs[30.0] == pytest.approx(2 * 30.2, abs=1e-9)
+    assert xs[-0.1] == pytest.approx(2 * 30, abs=1e-9)
+    assert "each side loses 0.1 mm (half the kerf, 0.2 mm)" in said
+
+
 def test_laid_out_pieces_are_apart_and_offset_whole(tmp_path, capsys):
     pytest.importorskip("spyrrow")
     f, said = _render(tmp_path, capsys, SPLIT, "p.dxf", "--kerf", "0.2mm", "--layout", "sheet",
