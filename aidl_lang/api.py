@@ -421,7 +421,7 @@ class Result:
         if deadline is not None and nest_time:
             from .limits import Deadline
             deadline = Deadline(deadline.at + nest_time, deadline.budget)
-        cut = for_cutting(self.output, kerf, deadline)
+        cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)
         solid, _ = place(self.output, where, sheet)

@@ -483,11 +483,15 @@ def cmd_render(args) -> int:
     try:
         output = build(res.drawing, res.model.root.name, deadline=res.deadline)
         from ..output import CUT_FORMATS, for_cutting
-        cut = for_cutting(output, kerf, res.deadline)   # --kerf, else the program's `kerf`
-        from ..output.fabrication.layout import through_cut_note
+        # --kerf, else the program's `kerf`; laid out, the pieces of a cut lie apart and each
+        # is offset whole, else an edge two pieces share is cut once along its line
+        cut = for_cutting(output, kerf, res.deadline, apart=bool(args.layout))
+        from ..output.fabrication.layout import shared_note, through_cut_note
         kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
         if kept:
             notes.append(kept)
+        if cut is not output and not args.layout:
+            notes += shared_note(output, kerf if kerf is not None else output.drawing.kerf)
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.fabrication.layout import place, plan
@@ -537,11 +541,12 @@ def cmd_render(args) -> int:
     said = set()
     for o, data in items:                    # G-code: the estimates, the profile's warnings
         if _suffix(o, args) in GCODE_FORMATS:
-            estimate, warnings = read_summary(data)
+            estimate, warnings, said_notes = read_summary(data)
             for w in warnings:
                 if w not in said:
                     said.add(w)
                     print(f"aidl: warning: {w}", file=sys.stderr)
+            notes += [f"note: {n}" for n in said_notes if f"note: {n}" not in notes]
             if estimate and not args.json:
                 notes.append(f"{'standard output' if o == STDOUT else o}: {estimate}")
     if not args.json:

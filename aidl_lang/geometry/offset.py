@@ -24,10 +24,12 @@ from __future__ import annotations
 
 import math
 
-from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, intersect, reverse, simplify,
+from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, crossings,
+                     intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 
 TANGENT_TURN = 1e-9      # radians: a join turning less than this is a tangent join
+MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is cut (bevel)
 
 
 class OffsetError(ValueError):
@@ -68,9 +70,14 @@ def _forward(orig: Segment, new: Segment) -> bool:
         and abs(new.sweep) <= abs(orig.sweep) + 1e-9
 
 
-def offset_loop(loop: Loop, d: float) -> Loop:
+def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
     """``loop`` offset ``d`` mm (>= 0) to the right of its direction of travel: outward for
     an outer (counter-clockwise) loop, into the hole for a hole (see the module text).
+    ``keep``: indices of segments left where they are (offset 0: an edge shared with a
+    neighbouring piece, cut once along its line); where a kept segment meets an offset one the
+    two carriers are joined where they cross (a kept line is lengthened by ``d`` past a square
+    corner), or, where they do not cross near the corner (a tangent or collinear join), the
+    kept segment runs ``d`` on along its direction and a line steps to the offset one.
     Raises :class:`OffsetError` where a feature is too small for the offset."""
     for g in loop.segments:
         if isinstance(g, EllipticArc):
@@ -86,32 +93,19 @@ def offset_loop(loop: Loop, d: float) -> Loop:
             e.curve = g.curve
             raise e
     segs = loop.segments
-    if d == 0 or not segs:
+    keep = frozenset(keep)
+    if d == 0 or not segs or len(keep) >= len(segs):
         return loop
     if len(segs) == 1 and isinstance(segs[0], Circle):
         return Loop([_right(segs[0], d)])
     n = len(segs)
-    moved = [_right(s, d) for s in segs]
-    # the join before segment k: (end of moved k-1, start of moved k, corner arc or None)
-    joins = []
-    for k in range(n):
-        a, b = segs[k - 1], segs[k]
-        turn = turn_between(a, b)
-        if abs(turn) <= TANGENT_TURN:                 # tangent: the offsets meet
-            p = moved[k - 1].end
-            joins.append((p, p, None))
-        elif turn > 0:                                 # convex: round the corner
-            v = b.start
-            tx, ty = tangent_at(a, True)
-            start = math.atan2(-tx, ty)                # the right normal of a at its end
-            joins.append((moved[k - 1].end, moved[k].start, Arc(v, d, start, turn)))
-        else:                                          # concave: where the offsets cross
-            p = intersect(carrier(moved[k - 1]), carrier(moved[k]), b.start)
-            joins.append((p, p, None))
+    moved = [s if k in keep else _right(s, d) for k, s in enumerate(segs)]
+    # the join before segment k: (end of moved k-1, start of moved k, segments between)
+    joins = [_join(segs[k - 1], segs[k], moved[k - 1], moved[k], d,
+                   ((k - 1) % n in keep, k in keep)) for k in range(n)]
     out: list[Segment] = []
     for k in range(n):
-        if joins[k][2] is not None:
-            out.append(joins[k][2])
+        out += joins[k][2]
         start, end = joins[k][1], joins[(k + 1) % n][0]
         g = moved[k]
         t = with_ends(g, start, end) if (start, end) != (g.start, g.end) else g
@@ -125,8 +119,60 @@ def offset_loop(loop: Loop, d: float) -> Loop:
     return Loop(simplify(out, scale))
 
 
+def _on_carrier(p, g: Line) -> bool:
+    """Point ``p`` lies on line ``g``'s carrier (to 1e-9 of its size)."""
+    (x0, y0), (x1, y1) = g.start, g.end
+    L = math.hypot(x1 - x0, y1 - y0)
+    if L == 0.0:
+        return False
+    scale = max(1.0, abs(x0), abs(y0), abs(x1), abs(y1))
+    return abs((p[0] - x0) * (y1 - y0) - (p[1] - y0) * (x1 - x0)) / L <= 1e-9 * scale
+
+
+def _join(a: Segment, b: Segment, ma: Segment, mb: Segment, d: float, kept) -> tuple:
+    """The join at the corner from ``a`` into ``b`` (``ma``, ``mb``: their offsets; ``kept``:
+    (a kept, b kept)): (where ``ma`` ends, where ``mb`` starts, the segments between)."""
+    v = b.start
+    turn = turn_between(a, b)
+    if kept[0] and kept[1]:                            # both on their lines: the corner
+        return (v, v, [])
+    if kept[0] or kept[1]:                             # one kept, one offset
+        pts = crossings(carrier(ma), carrier(mb))
+        if pts and abs(turn) > TANGENT_TURN:
+            p = min(pts, key=lambda q: math.dist(q, v))
+            if math.dist(p, v) <= MITER_LIMIT * d:
+                return (p, p, [])
+        # a tangent or collinear join: the kept segment runs d on past the corner and a
+        # square step (d across) meets the offset one there, d from the corner everywhere
+        if kept[0]:
+            tx, ty = tangent_at(a, True)
+            e = (v[0] + d * tx, v[1] + d * ty)
+            ux, uy = tangent_at(b, False)
+            f = (e[0] + d * uy, e[1] - d * ux)
+            if not (isinstance(mb, Line) and _on_carrier(f, mb)):
+                f = mb.start                           # no square step: straight to mb
+            head = [] if isinstance(a, Line) else [Line(v, e)]
+            return (e if isinstance(a, Line) else v, f, head + [Line(e, f)])
+        tx, ty = tangent_at(b, False)
+        e = (v[0] - d * tx, v[1] - d * ty)
+        ux, uy = tangent_at(a, True)
+        f = (e[0] + d * uy, e[1] - d * ux)
+        if not (isinstance(ma, Line) and _on_carrier(f, ma)):
+            f = ma.end
+        tail = [] if isinstance(b, Line) else [Line(e, v)]
+        return (f, e if isinstance(b, Line) else v, [Line(f, e)] + tail)
+    if abs(turn) <= TANGENT_TURN:                      # tangent: the offsets meet
+        p = ma.end
+        return (p, p, [])
+    if turn > 0:                                       # convex: round the corner
+        tx, ty = tangent_at(a, True)
+        start = math.atan2(-tx, ty)                    # the right normal of a at its end
+        return (ma.end, mb.start, [Arc(v, d, start, turn)])
+    p = intersect(carrier(ma), carrier(mb), v)         # concave: where the offsets cross
+    return (p, p, [])
+
+
 # ------------------------------------------------------------------ Offset(shape, distance)
-MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is cut (bevel)
 
 
 def sweep_loops(s: Segment, d: float) -> list[Loop]:

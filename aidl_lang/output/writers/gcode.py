@@ -35,7 +35,7 @@ ends ``M5``, ``G0 X0 Y0``, ``M2``.
 
 Router (``kind = "router"``): the paths are the cuts offset by the tool radius (outside the
 outlines, inside the holes: :func:`~..fabrication.layout.compensate` with a kerf of ``tool_diameter``,
-exact lines and arcs), run in the loops' own direction (outlines counter-clockwise, holes
+exact lines and arcs; an edge two pieces share on its own line, cut once, with a note), run in the loops' own direction (outlines counter-clockwise, holes
 clockwise: conventional milling with a clockwise spindle).  ``M3 S<spindle>``, travel at
 ``safe_height`` (``G0 Z``), then down ``depth_per_pass`` at a time (``G1 Z.. F<plunge>``) to
 the part's thickness (``Options.thickness``, else the program's ``thickness``, else 3 mm),
@@ -46,9 +46,11 @@ Plotter (``kind = "plotter"``): the pen is Z: up at ``safe_height`` (``G0 Z``), 
 ``Z0`` (``G1 Z0``); paths as the laser's, ``passes`` times.
 
 Lead-in (profile ``lead_in`` mm, lasers and routers): each closed cut starts that far off its
-start point on the scrap side (to the right of the direction of travel: outside an outline,
-inside a hole), a straight ``G1`` onto the loop; left out where that point is not on the
-scrap side (a hole narrower than the lead-in).
+path on the scrap side (to the right of the direction of travel: outside an outline, inside
+a hole), a straight ``G1`` onto it, which never crosses another cut nor leaves the sheet
+(:func:`lead_in`: shortened, moved to another entry of the loop, or left out, with a note).
+Tabs that do not fit a cut are fewer or smaller (:func:`fit_tabs`, with a note).  The notes
+are ``; note:`` lines of the header (:func:`read_summary`).
 
 :func:`job` gives the program with its numbers (:class:`Job`: cut and travel lengths, the
 time at the profile's speeds, warnings); :func:`write` is the registry's entry.
@@ -84,12 +86,14 @@ class Job:
     """A G-code program and its numbers: ``text``; ``cut`` (mm run cutting, every pass and
     depth), ``travel`` (mm of ``G0`` in XY), ``seconds`` (the job's time at the profile's
     feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
-    ``thickness`` unlike the program's)."""
+    ``thickness`` unlike the program's), ``notes`` (what the program does that the drawing
+    does not say: a shared cut cut once, a lead-in shortened, tabs fitted)."""
     text: str
     cut: float
     travel: float
     seconds: float
     warnings: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
 
     def summary(self, name: str) -> str:
         """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
@@ -104,16 +108,20 @@ def estimate_text(cut: float, travel: float, seconds: float) -> str:
     return f"cut {cut:.1f} mm, travel {travel:.1f} mm, about {t} at the profile's speeds"
 
 
-def read_summary(data: bytes) -> tuple[str, list[str]]:
-    """The estimate line and the warnings of a program :func:`write` wrote (its header),
-    for ``aidl render`` to print."""
-    estimate, warnings = "", []
-    for line in data.decode("ascii", "replace").splitlines()[:12]:
+def read_summary(data: bytes) -> tuple[str, list[str], list[str]]:
+    """The estimate line, the warnings and the notes of a program :func:`write` wrote (its
+    header, the ``;`` lines before ``G21``), for ``aidl render`` to print."""
+    estimate, warnings, notes = "", [], []
+    for line in data.decode("ascii", "replace").splitlines():
+        if not line.startswith(";"):
+            break
         if line.startswith("; cut "):
             estimate = line[2:]
         elif line.startswith("; warning: "):
             warnings.append(line[len("; warning: "):])
-    return estimate, warnings
+        elif line.startswith("; note: "):
+            notes.append(line[len("; note: "):])
+    return estimate, warnings, notes
 
 
 def machine_of(options):
@@ -299,12 +307,26 @@ def _split_at(seg, u: float):
             Arc(seg.center, seg.radius, seg.start_angle + a, seg.sweep - a))
 
 
+def fit_tabs(total: float, n: int, width: float) -> tuple[int, float]:
+    """The tabs that fit a cut ``total`` mm long when ``n`` tabs of ``width`` mm are asked
+    for: (count, width).  The tabs take at most half the cut: as many of ``width`` as fit
+    that (fewer than ``n`` when they do not all fit), or where not even one does, one tab of a
+    quarter of the cut; (0, 0) when no tabs are asked for."""
+    if n <= 0 or width <= 0 or total <= 0:
+        return 0, 0.0
+    if total > 2 * n * width:
+        return n, width
+    k = min(n, int(total / (2 * width) * (1 - 1e-12)))
+    return (k, width) if k >= 1 else (1, total / 4)
+
+
 def with_tabs(path: list, n: int, width: float) -> list[tuple]:
-    """``path`` (lines and arcs of a closed cut) as ``(segment, on_tab)`` pieces with ``n``
-    tabs of ``width`` mm, their middles evenly spaced along it, the first half a spacing from
-    the start (none when the path is shorter than twice the tabs)."""
+    """``path`` (lines and arcs of a cut) as ``(segment, on_tab)`` pieces with ``n`` tabs
+    of ``width`` mm, their middles evenly spaced along it, the first half a spacing from the
+    start; the count and width as :func:`fit_tabs` fits them to the path's length."""
     total = sum(s.length for s in path)
-    if n <= 0 or width <= 0 or total <= 2 * n * width:
+    n, width = fit_tabs(total, n, width)
+    if n <= 0:
         return [(s, False) for s in path]
     step = total / n
     marks = []
@@ -329,20 +351,111 @@ def with_tabs(path: list, n: int, width: float) -> list[tuple]:
     return out
 
 
-def _lead_point(cut, path, lead: float, loop_poly):
-    """Where a closed cut's lead-in starts: ``lead`` mm to the right of the path's start
-    (the scrap side), or None when that point is not on the scrap side of the loop."""
-    from ...geometry.curves import tangent_at
+LEAD_CLEARANCE = 0.5   # mm: a lead-in stops this far short of another cut or the sheet's edge
+LEAD_TRIES = 16        # entries of a loop tried for a lead-in that fits whole
+
+
+class _Paths:
+    """Every cut path of a job as chords (the machine's cuts: other parts' material lies
+    beyond them), and the sheet (``page``: (x0, y0, x1, y1) mm, or None), for the lead-ins:
+    :meth:`free` is how far a straight move from a point goes before it meets one."""
+
+    def __init__(self, cuts, page, reach: float):
+        """``reach``: the longest move :meth:`free` is asked about (mm): the size of the
+        grid cells the chords are filed in, so that a question looks at a few cells."""
+        import numpy as np
+        from ...geometry.curves import sample_xy
+        a, b = [], []
+        for c in cuts:
+            if not c.operation.startswith("cut"):
+                continue
+            xs, ys = [], []
+            sample_xy(c.segments, xs, ys)
+            if c.closed:
+                xs.append(xs[0])
+                ys.append(ys[0])
+            else:
+                xs.append(c.end[0])
+                ys.append(c.end[1])
+            a += list(zip(xs[:-1], ys[:-1]))
+            b += list(zip(xs[1:], ys[1:]))
+        self.a = np.asarray(a, dtype=float).reshape(-1, 2)
+        self.b = np.asarray(b, dtype=float).reshape(-1, 2)
+        self.box = np.column_stack([np.minimum(self.a, self.b), np.maximum(self.a, self.b)])
+        self.page = page
+        self.cell = max(float(reach), 1e-3)
+        self.grid: dict = {}
+        lo = np.floor(self.box[:, :2] / self.cell).astype(np.int64)
+        hi = np.floor(self.box[:, 2:] / self.cell).astype(np.int64)
+        for k in range(len(lo)):
+            for i in range(lo[k, 0], hi[k, 0] + 1):
+                for j in range(lo[k, 1], hi[k, 1] + 1):
+                    self.grid.setdefault((i, j), []).append(k)
+
+    def free(self, p, u, length: float) -> float:
+        """How far (mm, at most ``length``) the move from ``p`` along unit ``u`` goes before
+        it meets a cut path (other than at ``p`` itself) or leaves the sheet."""
+        import numpy as np
+        t = length
+        if self.page is not None:
+            x0, y0, x1, y1 = self.page
+            for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
+                if u[k] > 0:
+                    t = min(t, (hi - p[k]) / u[k])
+                elif u[k] < 0:
+                    t = min(t, (lo - p[k]) / u[k])
+        q = (p[0] + u[0] * t, p[1] + u[1] * t)
+        x0, y0 = math.floor(min(p[0], q[0]) / self.cell), math.floor(min(p[1], q[1]) / self.cell)
+        x1, y1 = math.floor(max(p[0], q[0]) / self.cell), math.floor(max(p[1], q[1]) / self.cell)
+        near = {k for i in range(x0, x1 + 1) for j in range(y0, y1 + 1)
+                for k in self.grid.get((i, j), ())}
+        if not near:
+            return max(t, 0.0)
+        idx = np.fromiter(near, dtype=np.int64, count=len(near))
+        A, B = self.a[idx], self.b[idx]
+        e = B - A
+        d = A - np.asarray(p, dtype=float)
+        den = u[0] * e[:, 1] - u[1] * e[:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            tt = (d[:, 0] * e[:, 1] - d[:, 1] * e[:, 0]) / den
+            ss = (d[:, 0] * u[1] - d[:, 1] * u[0]) / den
+        hit = (np.abs(den) > 1e-15) & (tt > 1e-7) & (ss >= -1e-12) & (ss <= 1 + 1e-12)
+        if hit.any():
+            t = min(t, float(tt[hit].min()))
+        return max(t, 0.0)
+
+
+def lead_in(cut, path: list, lead: float, paths: "_Paths"):
+    """A closed cut's lead-in (profile ``lead_in``: ``lead`` mm): ``(path, start, length)``,
+    the path turned to start where the lead-in meets it and the point it starts from, ``lead``
+    mm to the right of the path (the scrap side: outside an outline, inside a hole), or
+    shortened so that it stops :data:`LEAD_CLEARANCE` short of every other cut and of the
+    sheet's edge (it never crosses another part, a hole's far side or the sheet's edge).  The
+    path's own start is tried first, then its other segment ends (up to :data:`LEAD_TRIES`):
+    the first where the whole lead-in fits, else the longest.  ``(path, None, 0)`` when none
+    is at least a quarter of ``lead`` (the cut starts on its path)."""
+    from ...geometry.curves import Loop, tangent_at
     from ..fabrication.toolpath import _inside
-    if lead <= 0 or not cut.closed or not path:
-        return None
-    tx, ty = tangent_at(path[0], False)
-    p0 = path[0].start
-    q = (p0[0] + lead * ty, p0[1] - lead * tx)
-    inside = _inside(q, loop_poly)
-    if (cut.operation == "cut_inner") != inside:
-        return None
-    return q
+    import numpy as np
+    poly = None
+    best = (path, None, 0.0)
+    for j in range(min(len(path), LEAD_TRIES)):
+        s = path[j]
+        tx, ty = tangent_at(s, False)
+        p0 = s.start
+        u = (ty, -tx)                                 # the right of the direction of travel
+        t = min(lead, paths.free(p0, u, lead + LEAD_CLEARANCE) - LEAD_CLEARANCE)
+        if t <= best[2] or t < lead / 4:
+            continue
+        q = (p0[0] + t * u[0], p0[1] + t * u[1])
+        if poly is None:
+            poly = np.asarray(Loop(cut.segments).points())
+        if (cut.operation == "cut_inner") != _inside(q, poly):
+            continue                                  # not the scrap side (a sharp corner)
+        best = (path[j:] + path[:j], q, t)
+        if t >= lead * (1 - 1e-12):
+            break
+    return best
 
 
 # ------------------------------------------------------------------ the program
@@ -355,6 +468,8 @@ class _Writer:
         self.cut = self.travel = self.seconds = 0.0
         self.feed = None
         self.power = None
+        self.notes: list[str] = []
+        self.changed: dict = {}        # (what, part) -> what _prepare changed (_changes)
 
     def out(self, line: str) -> None:
         if len(self.lines) >= MAX_JOB_MOVES:
@@ -439,19 +554,24 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     from ..fabrication.toolpath import plan
     m = machine or M.default("laser")
     warnings = _warnings(output, m)
+    notes = []
     if m.kind == "router":
+        from ..fabrication.layout import shared_note
+        notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
         output = tool_path(output, m.tool_diameter)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
     back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
                  if m.kind == "laser" and m.operation(op).passes % 2 == 0)
-    cuts = plan(output, back=back)
+    cuts = plan(output, back=back, once=True)   # a shared edge: cut once
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
     w.warnings = warnings
+    w.notes = notes
     body = _body(w, cuts, m, thick, output)
+    w.notes += _changes(w)
     head = _header(output, m, w)
-    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings)
+    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes)
 
 
 def tool_path(output: Output, diameter: float) -> Output:
@@ -509,6 +629,7 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
          f"; machine: {m.kind} ({src})",
          f"; {estimate_text(w.cut, w.travel, w.seconds)}",
          *[f"; warning: {x}" for x in w.warnings],
+         *[f"; note: {x}" for x in w.notes],
          "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
          "G21 G90 G17"]
     for name in ("engrave", "score", "cut_inner", "cut_outer"):
@@ -525,9 +646,60 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
     return h
 
 
+def _prepare(w: _Writer, cut, path: list, paths) -> tuple:
+    """A cut's path turned to start at its lead-in (:func:`lead_in`; ``paths``: None without
+    one), the lead-in's start (None: none) and the path as ``(segment, on_tab)`` pieces
+    (:func:`with_tabs` on outer cuts).  What differs from the profile (a lead-in shortened or
+    left out, tabs that do not fit) is kept in ``w.changed`` for :func:`_changes`."""
+    m = w.m
+    lead = None
+    if paths is not None and cut.closed and cut.operation.startswith("cut"):
+        path, lead, t = lead_in(cut, path, m.lead_in, paths)
+        if t < m.lead_in * (1 - 1e-9):
+            w.changed.setdefault(("lead", cut.part), []).append(t)
+    tabs = m.tabs if cut.operation == "cut_outer" else 0
+    if tabs:
+        total = sum(s.length for s in path)
+        got = fit_tabs(total, tabs, m.tab_width)
+        if got != (tabs, m.tab_width):
+            w.changed.setdefault(("tabs", cut.part), []).append((total, *got))
+    pieces = with_tabs(path, tabs, m.tab_width) if tabs else [(s, False) for s in path]
+    return path, lead, pieces
+
+
+def _changes(w: _Writer) -> list[str]:
+    """The notes of what the program does other than the profile says (``w.changed``): a
+    lead-in shortened or left out where another part or the sheet's edge is nearer than it,
+    tabs fewer or smaller where they do not fit the cut."""
+    m, out = w.m, []
+    tabs = [(part, *g) for (what, part), got in w.changed.items() if what == "tabs"
+            for g in got]
+    for part, total, n, width in tabs[:3]:
+        out.append(f"{m.tabs} tabs of {m.tab_width:g} mm do not fit the {total:.4g} mm cut of "
+                   f"`{part}` (tabs take at most half of it): cut with {n} tab"
+                   f"{'s' if n != 1 else ''} of {width:.3g} mm")
+    if len(tabs) > 3:
+        k = len(tabs) - 3
+        out.append(f"and {k} more cut{'s' if k != 1 else ''} with fewer or smaller tabs than "
+                   "the profile's")
+    for (what, part), got in w.changed.items():
+        who = f"`{part}`" if part else "the drawing"
+        if what == "lead":
+            cut_ = [t for t in got if t > 0]
+            if cut_:
+                out.append(f"{len(cut_)} lead-in{'s' if len(cut_) != 1 else ''} of {who} "
+                           f"shortened to {min(cut_):.3g} mm (of {m.lead_in:g} mm): another "
+                           "cut or the sheet's edge is nearer; a lead-in never crosses another "
+                           "part or leaves the sheet")
+            if len(cut_) < len(got):
+                k = len(got) - len(cut_)
+                out.append(f"{k} cut{'s' if k != 1 else ''} of {who} start{'s' if k == 1 else ''}"
+                           f" on {'its' if k == 1 else 'their'} path without a lead-in: no room "
+                           f"for one of {m.lead_in / 4:g} mm or more beside it")
+    return out
+
+
 def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
-    from ...geometry.curves import Loop
-    import numpy as np
     if m.kind == "laser":
         w.out(f"{m.laser_mode} S0")
         w.power = 0.0
@@ -538,17 +710,13 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
     else:
         w.rapid(z=m.safe_height)
     spindle = m.operation("cut_outer").spindle if m.kind == "router" else None
+    paths = _Paths(cuts, output.page, m.lead_in + LEAD_CLEARANCE) if m.lead_in > 0 else None
     for cut in cuts:
         op = m.operation(cut.operation)
         path = [g for s in cut.segments for g in as_arcs(s)]
         if not path:
             continue
-        lead = None
-        if cut.closed and m.lead_in > 0 and cut.operation.startswith("cut"):
-            poly = np.asarray(Loop(cut.segments).points())
-            lead = _lead_point(cut, path, m.lead_in, poly)
-        tabs = m.tabs if cut.operation == "cut_outer" else 0
-        pieces = with_tabs(path, tabs, m.tab_width) if tabs else [(s, False) for s in path]
+        path, lead, pieces = _prepare(w, cut, path, paths)
         start = lead or path[0].start
         if m.kind == "laser":
             power = op.power / 100.0 * m.max_power
