@@ -427,6 +427,8 @@ class Statements:
                 "positive length") + " known before solving", st.value.span,
                 hint=f"use a number or a param: `{eg}`")
         setattr(self.model if self.struct is None else self.struct, word, val)
+        if word == "min_wall" and self.struct is not None:
+            self.struct.min_wall_span = st.span      # where it is: W0101 where it does nothing
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:
