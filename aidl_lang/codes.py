@@ -445,7 +445,12 @@ reported (what burns is its very point), a sharper one at any minimum, so the hi
 blunt the tip, or `min_wall 0` in the part when the tip is asked for. For a wall of one
 shape as the program states it (a 0.34 mm angle leg), the `--json` fix is the statement
 `min_wall W` (W just under the measured width) before the part: a wall this thin, asked for,
-is then accepted; otherwise widen the shape.
+is then accepted; otherwise widen the shape. Through-cuts (`cut`) count too: a web between
+two cuts or a cut and the outline, and a bridge at a cut's free end that stops short of
+another cut, a hole or the outline (two slits ending 0.05 mm apart, a slit ending 0.01 mm from
+the edge), named with the cut, what it stops short of and the width (exact on lines and
+circles: a living hinge's bridges exactly `min_wall` wide pass). End the cut farther away, or
+run it on to meet the other curve when it is meant to cut through.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)

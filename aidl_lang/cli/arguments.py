@@ -230,7 +230,8 @@ def _render_arguments(r) -> None:
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
     r.add_argument("--min-wall", type=_min_wall, default=None, metavar="MM",
                    help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
-                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off; "
+                        "else 0.001 to 1e6)")
     _budget_arg(r)
     _memory_arg(r)
     r.add_argument("--follow-symlinks", action="store_true",
@@ -248,7 +249,8 @@ def _check_arguments(c) -> None:
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
     c.add_argument("--min-wall", type=_min_wall, default=None, metavar="MM",
                    help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
-                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off)")
+                        "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off; "
+                        "else 0.001 to 1e6)")
     c.add_argument("--dof", action="store_true",
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")

@@ -85,8 +85,7 @@ solver should make true as constraints. `thickness 3 mm` (the material, for 3D o
 the parts list), `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
 and `min_wall 0.3 mm` (W0507 warns of walls thinner than 0.5 mm, which a laser burns through;
 a thin wall or sharp tip the request asks for is meant: state `min_wall`, never change a
-requested size; `min_wall 0`: not laser-cut; write it in the part or at the top, never in a
-`cut` or `hole`) are statements without `=` (`thickness = 3 mm` is a mere constant) that
+requested size; `min_wall 0`: not laser-cut) are statements without `=` (`thickness = 3 mm` is a mere constant) that
 stand at the top or inside a structure (for it and its children); `-o x.gcode`: G-code
 (`aidl docs machine`).
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation

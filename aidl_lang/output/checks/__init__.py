@@ -229,10 +229,10 @@ def _idle_min_wall(d: Drawing, sink: DiagnosticSink) -> None:
         part = next((a for a in n.ancestors() if a in parts), None)
         where = (f"in `solid {part.name}` (`{part.path}`: it covers the part's holes and "
                  "through-cuts)" if part is not None else "in the part it is meant for")
-        sink.warning("W0101", f"`min_wall` in {n.kind} `{n.path}` has no effect: a {n.kind} "
-                     "inside a part is not a part of its own, and the wall checks hold each "
-                     "part to its own minimum"
-                     + (f" (`{part.path}`'s)" if part is not None else ""),
+        why = (f"a {n.kind} inside a part is not a part of its own, and the wall checks "
+               f"hold each part to its own minimum (`{part.path}`'s)" if part is not None else
+               f"a {n.kind} that holds no part is not checked for thin walls")
+        sink.warning("W0101", f"`min_wall` in {n.kind} `{n.path}` has no effect: {why}",
                      getattr(n, "min_wall_span", None) or n.span,
                      hint=f"write the `min_wall` statement {where}, or at the top of the file "
                           "for every part")

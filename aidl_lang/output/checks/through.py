@@ -134,6 +134,7 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
     exactly where the nearest point lies inside a chord of a circle; so a bridge exactly
     ``t`` wide, on lines or arcs, passes.  A bridge inside a web already reported (``seen``)
     is not told again, nor the same bridge from its other end."""
+    cuts = [th for th in cuts if th.inside > OFF * th.band.area() > 0]   # else W0522
     if not cuts:
         return
     tick()
