@@ -49,6 +49,14 @@ def test_two_slits_ending_close_leave_a_bridge_named_with_its_width(gap, width):
     assert [p.name for p in c.output.parts] == ["plate"]
 
 
+def test_a_cut_stopping_short_of_another_at_an_angle_leaves_a_bridge():
+    _, ws = _walls(_plate("        a = Line((15, 0), (25, 0))\n"
+                          "        b = Line((15, -5), (19.9, -0.1))"))
+    (w,) = ws
+    assert "`plate.slits.b`" in w.message and "through-cut `plate.slits.a` is 0.1 mm wide" \
+        in w.message, w.message
+
+
 @pytest.mark.parametrize("end, width", [("(0, 14.99)", "0.01"), ("(29.99, 0)", "0.01"),
                                         ("(0, 14.6)", "0.4")])
 def test_a_slit_ending_short_of_the_edge_leaves_a_bridge(end, width):
@@ -66,6 +74,10 @@ def test_a_slit_ending_short_of_the_edge_leaves_a_bridge(end, width):
     # reaching the edge, or past it: no bridge (a cut through)
     "        a = Line((-10, 0), (30, 0))",
     "        a = Line((-10, 0), (31, 0))",
+    # a cut that crosses another and overshoots it by 0.1 mm, square or at 45 degrees: the
+    # corner it leaves is no bridge
+    "        a = Line((-10, 0), (10, 0))\n        b = Line((0, -10), (0, 0.1))",
+    "        a = Line((15, 0), (25, 0))\n        b = Line((15, -5), (20.1, 0.1))",
     # a chain of short lines joined end to end bends within the minimum: no bridge
     "        a = Line((0, -15), (0.2, -14.8))\n        b = Line(a.end, (0.4, -14.8))\n"
     "        c = Line(b.end, (0.4, -10))",

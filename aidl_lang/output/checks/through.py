@@ -127,9 +127,11 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
 
     A free end lies inside the material and reaches nothing (no cut, hole or outline within
     :data:`TOUCH`: an end on another cut is a joint of a longer cut, an end on an edge cuts
-    through it).  Its bridge is the distance to the nearest boundary that is not its own:
-    another cut not joined to it (cuts that touch form one chain, whose own bends are no
-    bridges) or a loop of ``whole`` (the outline or an opening).  Distances are taken on the
+    through it).  Its bridge is the distance to the nearest boundary that is not its own and
+    lies ahead of the end or beside it: another cut not joined to it (cuts that touch form
+    one chain, whose own bends are no bridges) or a loop of ``whole`` (the outline or an
+    opening); behind the end lies the cut's own side (a cut that crosses another and
+    overshoots it by 0.1 mm leaves a corner there, no bridge).  Distances are taken on the
     chords of every curve (within :data:`~aidl_lang.geometry.tessellate.CHORD_TOL`), then
     exactly where the nearest point lies inside a chord of a circle; so a bridge exactly
     ``t`` wide, on lines or arcs, passes.  A bridge inside a web already reported (``seen``)
@@ -140,6 +142,11 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
     tick()
     A, B, F, C, ends = _cut_chords(cuts)
     m = len(cuts)
+    # each end's direction out of its cut (its last chord's, continued)
+    ca, cb, cf = np.concatenate(A), np.concatenate(B), np.concatenate(F)
+    first = np.searchsorted(cf, np.arange(m))
+    last = np.r_[first[1:], len(cf)] - 1
+    out = np.stack([ca[first] - cb[first], cb[last] - ca[last]], axis=1).reshape(-1, 2)
     loops = [np.asarray(p, dtype=float) for p in whole.to_polygons()]
     for k, P in enumerate(loops):
         A.append(P)
@@ -179,8 +186,13 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
     free = np.ones(len(V), dtype=bool)
     free[v[touch]] = False
     free &= _inside(V, loops)
+    # a bridge lies ahead of the end or beside it; what lies behind it (the cut it crossed
+    # and overshot, the corner between them) is the cut's own side, not a bridge
+    toward = ft - V[v]
+    ahead = np.einsum("ij,ij->i", toward, out[v]) >= -1e-3 * (
+        np.hypot(*toward.T) * np.hypot(*out[v].T))
     best: dict = {}             # free end -> (width, chord, foot)
-    for q in np.flatnonzero(free[v] & ~touch & (exact < t - 1e-9 * max(1.0, t))):
+    for q in np.flatnonzero(free[v] & ~touch & ahead & (exact < t - 1e-9 * max(1.0, t))):
         f = int(F[sg[q]])
         if f < m and find(f) == find(int(vf[v[q]])):
             continue
