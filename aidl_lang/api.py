@@ -487,7 +487,9 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
 
     Never raises for a mistake in the program or an unreadable file (``E0004``): those are
     diagnostics and ``ok`` is False.  Raises :class:`TypeError` when neither ``source`` nor
-    ``path`` is given, and :class:`ValueError` for a budget factor outside (0, 1000]."""
+    ``path`` is given, and :class:`ValueError` for a budget factor outside (0, 1000] or a
+    ``min_wall`` that is neither 0 nor from 0.001 to 1e6 mm (NaN, negative, infinite:
+    :func:`~aidl_lang.limits.min_wall_problem`)."""
     from .pipeline import compile_source
     if source is None and path is None:
         raise TypeError("compile() needs source= (the program text) or path= (a file)")
@@ -500,6 +502,11 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
         if not 0 < k <= 1000:
             raise ValueError(f"budget expects a factor between 0 and 1000, got {budget!r}")
         b = DEFAULT_BUDGET.scaled(k)
+    if min_wall is not None:
+        from .limits import min_wall_problem
+        why = min_wall_problem(float(min_wall))
+        if why is not None:
+            raise ValueError(f"min_wall: {why}")
     name = os.fspath(path) if path is not None else "<source>"
     if source is None:
         from .sources import SourceRefused, read_program

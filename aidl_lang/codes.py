@@ -445,7 +445,12 @@ reported (what burns is its very point), a sharper one at any minimum, so the hi
 blunt the tip, or `min_wall 0` in the part when the tip is asked for. For a wall of one
 shape as the program states it (a 0.34 mm angle leg), the `--json` fix is the statement
 `min_wall W` (W just under the measured width) before the part: a wall this thin, asked for,
-is then accepted; otherwise widen the shape.
+is then accepted; otherwise widen the shape. Through-cuts (`cut`) count too: a web between
+two cuts or a cut and the outline, and a bridge at a cut's free end that stops short of
+another cut, a hole or the outline (two slits ending 0.05 mm apart, a slit ending 0.01 mm from
+the edge), named with the cut, what it stops short of and the width (exact on lines and
+circles: a living hinge's bridges exactly `min_wall` wide pass). End the cut farther away, or
+run it on to meet the other curve when it is meant to cut through.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)
@@ -491,7 +496,9 @@ warning (W0503, W0402) explains why. Give the face an inside, or delete it.
 With `--set NAME=VALUE` (or a slider in `aidl serve`), a part has another topology than with
 the program's own defaults: a different number of pieces or openings, two holes that now merge
 (or no longer do), a hole that now breaks through the outline, or two faces of different
-structures that now overlap (or no longer do). Such a change is rarely what a parameter is
+structures that now overlap (or no longer do), a through-cut (`cut`) that now cuts a piece
+off the part (or no longer does: "its through-cuts cut it into 2 parts instead of 1"). Such a
+change is rarely what a parameter is
 for: a bigger count that runs holes into each other, a width that pushes the cradle into the
 handset. The warning names the part, the values and what changed; the baseline is the same
 program compiled with its defaults. Choose another value, make the design follow the param
@@ -693,7 +700,20 @@ the offset clear if a ledge is meant.
         stem = Rectangle(center=(6.7, 25), width=3, height=50)   # 0.2 mm past the head
     }
 """),
-    "W0101": ("statement has no effect", "An expression statement that is neither geometry nor a constraint."),
+    "W0101": ("statement has no effect", """
+An expression statement that is neither geometry nor a constraint. Also a `min_wall`
+statement where no check reads it: inside a structure that is not a part (a `cut`, a `hole`, a
+solid merged into its part). The wall checks hold each part to one minimum, so write it in the
+part (it covers the part's holes and through-cuts) or at the top of the file.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=30)
+        cut slits {
+            min_wall 0.3 mm          # no effect here: write it above `body`, in `plate`
+            a = Line((-20, 0), (20, 0))
+        }
+    }
+"""),
     "W0103": ("a size that depends on solved geometry", """
 A constructor argument that fixes a shape's own size or angle (a `Line`'s `length` and
 `angle`, an `Arc`'s radius and angles, a `rotation`, a rectangle's `width`...) is read once,

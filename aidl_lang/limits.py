@@ -19,6 +19,23 @@ MAX_ITER = 10_000            # iterations of one loop or comprehension (Budget.i
 MAX_GEOMETRY = 50_000        # geometry objects in one model (Budget.geometry)
 MAX_TEMPLATE_DEPTH = 16      # nested template instances
 MAX_EXTENT = 1e6             # |coordinate|, size or length in mm a model may reach (1 km)
+# mm: the least positive minimum wall (`min_wall`, --min-wall): 1 um, below what any laser or
+# router holds; under it the wall checks measured their own rounding (the chords of a gear's
+# teeth as 0.00 mm walls at 1e-5 mm) and at 1e-300 mm the opening vanished (a traceback)
+MIN_WALL_LEAST = 1e-3
+
+
+def min_wall_problem(mm: float) -> str | None:
+    """Why ``mm`` cannot be a minimum wall (``min_wall``, ``--min-wall``), or None when it
+    can: 0 (the wall checks off) or a finite length from :data:`MIN_WALL_LEAST` to
+    :data:`MAX_EXTENT` mm; the words name the allowed range."""
+    if mm == 0 or MIN_WALL_LEAST <= mm <= MAX_EXTENT:     # (NaN fails both)
+        return None
+    what = ("not a number" if mm != mm else "negative" if mm < 0 else
+            "not finite" if mm in (float("inf"), float("-inf")) else
+            "too small" if mm < MIN_WALL_LEAST else "too large")
+    return (f"{mm:g} mm is {what}: a minimum wall is a length from {MIN_WALL_LEAST:g} to "
+            f"{MAX_EXTENT:g} mm, or 0 (no wall checks)")
 
 
 class Budget(Frozen):

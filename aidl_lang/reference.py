@@ -604,8 +604,8 @@ the final-part checks accept: W0507 (thin wall), W0519 (thin slit), W0520 (thin 
 it the minimum is 0.5 mm, what a laser or router holds. State it when a thin wall or a sharp
 tip is what the request asks for (a 0.34 mm leg, an 18-degree corner): the checks then hold the
 part to it, and no requested size has to change. `min_wall 0` turns those checks off (a part
-not cut by a laser or router). A length known before solving, positive or 0 (else E0109);
-`aidl check --min-wall MM` overrides it. A statement, with no `=`: `min_wall = 0.3 mm` is an
+not cut by a laser or router). A length known before solving, 0 or from 0.001 mm to 1e6 mm
+(else E0109); `aidl check --min-wall MM` overrides it (the same range). A statement, with no `=`: `min_wall = 0.3 mm` is an
 ordinary constant (warning W0108).
 """, ["minimum wall", "min wall", "thin wall", "W0507", "minimum_wall", "wall_min"]),
     "lbrn2": ("statement", "`aidl render FILE -o x.lbrn2`: a LightBurn project, a layer per "

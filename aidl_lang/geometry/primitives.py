@@ -18,7 +18,12 @@ from .values import ANG, LEN, NUM, PV, GeomRef, Q, type_name
 
 
 class PrimitiveError(Exception):
-    pass
+    """A primitive's arguments that make no shape (E0108); ``hint``: the fix, when one is
+    known (else the caller gives the signature)."""
+
+    def __init__(self, message: str, hint: str | None = None):
+        super().__init__(message)
+        self.hint = hint
 
 
 def build(ctx, kind: str, args: dict, span) -> Geometry:
@@ -635,7 +640,67 @@ def _check_polygon_points(ctx, pts) -> None:
                                  f"same point ({x0:g}, {y0:g}): an edge of zero length")
     area = sum(xy[i][0] * xy[(i + 1) % n][1] - xy[(i + 1) % n][0] * xy[i][1] for i in range(n))
     if abs(area) <= 1e-9 * scale * scale:
+        _no_area(xy, scale)
+
+
+def _no_area(xy, scale: float) -> None:
+    """The E0108 of a Polygon whose starting points ``xy`` enclose no area: two edges that
+    cross (a "bowtie" whose two halves cancel), with the points' order around their centre
+    as the fix when that order does not cross; else all on one line, or an outline that goes
+    out and back along itself."""
+    crossing = _first_crossing(xy)
+    if crossing is not None:
+        i, j, (x, y) = crossing
+        n = len(xy)
+        hint = "reorder the points so that they go once around the outline without crossing"
+        order = sorted(range(n), key=lambda k: math.atan2(xy[k][1] - sum(p[1] for p in xy) / n,
+                                                          xy[k][0] - sum(p[0] for p in xy) / n))
+        if _first_crossing([xy[k] for k in order]) is None:
+            hint += (": " + ", ".join(f"points[{k}]" for k in order) + " ("
+                     + ", ".join(f"({xy[k][0]:g}, {xy[k][1]:g})" for k in order) + ")")
+        raise PrimitiveError(
+            f"a Polygon's edges cross: edge {i} (points[{i}] to points[{(i + 1) % n}]) crosses "
+            f"edge {j} (points[{j}] to points[{(j + 1) % n}]) at ({x:g}, {y:g}); the outline "
+            "is self-intersecting (a bowtie) and its two halves cancel: it has no area",
+            hint=hint)
+    x0, y0 = xy[0]
+    far = max(xy, key=lambda p: math.hypot(p[0] - x0, p[1] - y0))
+    L = math.hypot(far[0] - x0, far[1] - y0)
+    if all(abs((p[0] - x0) * (far[1] - y0) - (p[1] - y0) * (far[0] - x0)) <= 1e-9 * scale * L
+           for p in xy):
         raise PrimitiveError("a Polygon's points are all on one line: it has no area")
+    raise PrimitiveError("a Polygon's outline goes out and comes back along itself: it "
+                         "encloses no area", hint="give it points that go once around an "
+                         "inside, in order")
+
+
+def _first_crossing(xy) -> tuple | None:
+    """``(i, j, point)``: the first two edges ``i < j`` of the closed polygon ``xy`` (its
+    points in order, mm) that cross each other properly (each edge's ends strictly on both
+    sides of the other), or None; edges sharing a point are not compared.  None too past
+    2,000 points (n^2 pairs, a check not worth its time there)."""
+    import numpy as np            # only on this error's path
+    n = len(xy)
+    if n > 2000:
+        return None
+    P = np.asarray(xy, dtype=float)
+    Q = np.roll(P, -1, axis=0)
+    D = Q - P
+    for i in range(n - 2):
+        j = np.arange(i + 2, n - (1 if i == 0 else 0))
+        if not len(j):
+            continue
+        a = D[i, 0] * (P[j, 1] - P[i, 1]) - D[i, 1] * (P[j, 0] - P[i, 0])
+        b = D[i, 0] * (Q[j, 1] - P[i, 1]) - D[i, 1] * (Q[j, 0] - P[i, 0])
+        c = D[j, 0] * (P[i, 1] - P[j, 1]) - D[j, 1] * (P[i, 0] - P[j, 0])
+        d = D[j, 0] * (Q[i, 1] - P[j, 1]) - D[j, 1] * (Q[i, 0] - P[j, 0])
+        hit = np.flatnonzero((a * b < 0) & (c * d < 0))
+        if len(hit):
+            k = int(j[hit[0]])
+            u = float(c[hit[0]] / (c[hit[0]] - d[hit[0]]))
+            x, y = P[i] + u * D[i]
+            return i, k, (round(float(x), 9) + 0.0, round(float(y), 9) + 0.0)
+    return None
 
 
 def _build_RegularPolygon(ctx, g, a):

@@ -329,7 +329,8 @@ class Calls:
         try:
             g = build(self, kind, conv, node.span)
         except PrimitiveError as ex:
-            raise EvalError("E0108", str(ex), node.span, hint=lookup(kind).signature())
+            raise EvalError("E0108", str(ex), node.span,
+                            hint=getattr(ex, "hint", None) or lookup(kind).signature())
         if kind == "Text":
             from ..geometry.text import missing_glyphs, text_extent
             self.check_size(len(g.data["text"]), node.span, "a Text")

@@ -14,7 +14,7 @@ from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.members import member as geom_member
 from ..geometry.expr import Lin, _new
 from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
-from ..limits import MAX_TEMPLATE_DEPTH
+from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
@@ -417,12 +417,18 @@ class Statements:
         val = Q(self._as_length(v, st.value.span), LEN).const()
         if word == "min_wall" and val is not None and val == 0:
             pass                                 # `min_wall 0`: the wall checks off
+        elif word == "min_wall" and val is not None and min_wall_problem(val) is not None:
+            raise EvalError("E0109", f"`min_wall` {min_wall_problem(val)}", st.value.span,
+                            hint=f"write `min_wall 0` for no wall checks, or a length from "
+                                 f"{MIN_WALL_LEAST:g} mm: `{eg}`")
         elif val is None or not val > 0:
             raise EvalError("E0109", f"`{word}` must be a " + (
                 "positive length (or 0: no minimum)" if word == "min_wall" else
                 "positive length") + " known before solving", st.value.span,
                 hint=f"use a number or a param: `{eg}`")
         setattr(self.model if self.struct is None else self.struct, word, val)
+        if word == "min_wall" and self.struct is not None:
+            self.struct.min_wall_span = st.span      # where it is: W0101 where it does nothing
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:

@@ -209,6 +209,35 @@ class _Shares:
                                 hint=hint))
 
 
+def _idle_min_wall(d: Drawing, sink: DiagnosticSink) -> None:
+    """W0101 for each ``min_wall`` statement that no check reads: one inside a structure
+    that is neither a part nor holds one (a ``cut``, a ``hole``, a solid merged into its
+    part): the wall checks hold a whole part to one minimum, found from the part up
+    (:func:`part_min_wall`), so it must be written in the part or above it."""
+    parts = set(d.part_of.values())
+    if not parts:
+        return
+    above = set(parts)
+    for p in parts:
+        above.update(p.ancestors())
+    root = next(iter(parts))
+    while root.parent is not None:
+        root = root.parent
+    for n in root.subtree():
+        if n in above or getattr(n, "min_wall", None) is None:
+            continue
+        part = next((a for a in n.ancestors() if a in parts), None)
+        where = (f"in `solid {part.name}` (`{part.path}`: it covers the part's holes and "
+                 "through-cuts)" if part is not None else "in the part it is meant for")
+        why = (f"a {n.kind} inside a part is not a part of its own, and the wall checks "
+               f"hold each part to its own minimum (`{part.path}`'s)" if part is not None else
+               f"a {n.kind} that holds no part is not checked for thin walls")
+        sink.warning("W0101", f"`min_wall` in {n.kind} `{n.path}` has no effect: {why}",
+                     getattr(n, "min_wall_span", None) or n.span,
+                     hint=f"write the `min_wall` statement {where}, or at the top of the file "
+                          "for every part")
+
+
 def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = None,
                   deadline=None) -> None:
     """Append the geometry warnings for the booleans' result ``d`` to ``sink``; ``min_wall``
@@ -330,6 +359,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                      "line (engraved), not filled", g.span,
                      hint="share endpoints between lines and arcs so they form a loop, or put "
                           "the curve in a `drawing` structure")
+    _idle_min_wall(d, sink)
     for s, shape in roots.items():
         if s.kind == "solid" and shape.is_empty() and s not in explained and any(
                 not g.construction for n in s.subtree() for g in n.geometry):

@@ -1,8 +1,8 @@
 """``W0510``: a part whose topology changes under ``--set`` (or the live preview's sliders):
-its pieces, openings, merged holes, holes that reach the outline and overlapping faces,
-compared with the program's defaults (:func:`check_topology`, run by the pipeline and the
-live preview when param values are overridden; :func:`topology` is taken once for the
-defaults)."""
+its pieces, openings, merged holes, holes that reach the outline, overlapping faces and the
+pieces its through-cuts cut off, compared with the program's defaults (:func:`check_topology`,
+run by the pipeline and the live preview when param values are overridden; :func:`topology`
+is taken once for the defaults)."""
 from __future__ import annotations
 
 import numpy as np
@@ -17,10 +17,11 @@ from .openings import _analyse
 # ------------------------------------------------------------ topology under `--set` (W0510)
 class Topology(Compared):
     """What W0510 compares of one solid part between the program's defaults and a `--set`."""
-    __slots__ = ("span", "pieces", "openings", "merges", "notches", "contacts", "holes", "faces")
+    __slots__ = ("span", "pieces", "openings", "merges", "notches", "contacts", "holes", "faces",
+                 "freed")
 
     def __init__(self, span: object, pieces: int, openings: int, merges: set, notches: set,
-                 contacts: set, holes: set, faces: set):
+                 contacts: set, holes: set, faces: set, freed: int = 0):
         self.span = span
         self.pieces = pieces
         self.openings = openings
@@ -29,6 +30,7 @@ class Topology(Compared):
         self.contacts = contacts  # frozensets of two face names (different solids) that overlap
         self.holes = holes  # every hole name
         self.faces = faces  # every solid face name
+        self.freed = freed  # pieces its through-cuts cut off (parts `PART.piece1`, ...)
 
 
 def topology(d: Drawing) -> dict:
@@ -48,6 +50,7 @@ def _topology(d: Drawing) -> dict:
     (:func:`_analyse` at the touching distance) or reach the outline, and the faces of
     different solid structures that overlap (candidates from :func:`.nearby.box_pairs`)."""
     roots = _part_roots(d)
+    freed = _freed(d)
     by_part: dict = {}
     for c in d.cuts:
         by_part.setdefault(_part_of(c.owner, roots), []).append(c)
@@ -77,7 +80,19 @@ def _topology(d: Drawing) -> dict:
         out[s.path] = Topology(s.span, pos, len(loops) - pos,
                                {frozenset((a.names[i], a.names[j])) for i, j, _, _ in a.merges},
                                {a.names[j] for j in a.notches}, contacts, set(a.names[1:]),
-                               {n for n, _, _ in faces})
+                               {n for n, _, _ in faces}, freed.get(s.path, 0))
+    return out
+
+
+def _freed(d: Drawing) -> dict:
+    """Part path -> how many pieces its through-cuts cut off: the parts of ``d`` made from
+    its structure under another name (``PART.piece1``, ... :meth:`..booleans.Renderer.part`;
+    a piece enclosed by the part falls out as an opening, counted there)."""
+    out: dict = {}
+    for p in d.parts:
+        s = d.part_of.get(p.name)
+        if s is not None and p.name != s.path:
+            out[s.path] = out.get(s.path, 0) + 1
     return out
 
 
@@ -92,6 +107,9 @@ def topology_changes(base: Topology, new: Topology) -> list[str]:
         out.append(f"{_count(new.pieces, 'piece')} instead of {base.pieces}")
     if new.openings != base.openings:
         out.append(f"{_count(new.openings, 'opening')} instead of {base.openings}")
+    if new.freed != base.freed:
+        out.append(f"its through-cuts cut it into {_count(new.freed + 1, 'part')} instead "
+                   f"of {base.freed + 1}")
     for m in sorted(new.merges - base.merges, key=sorted):
         a, b = sorted(m)
         out.append(f"{a} merges with {b}")
