@@ -9,6 +9,7 @@ import sys
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
 
@@ -321,3 +322,88 @@ def test_the_index_of_solids_is_the_structure_by_structure_answer():
         with common._LOCK:
             common._SHARING[0] -= 1
             common._WITHIN.clear()
+
+
+# 5,000 circles 1 mm apart on one line, in one solid: the gaps' middles all lie at y = 0 and
+# every circle has edges across that height
+ROW = """solid row {{
+    for i in range({n}) {{
+        c = Circle(center=(i, 0), radius=0.4)
+    }}
+}}
+"""
+
+_ROW_CHILD = r"""
+import json, sys, time
+from aidl_lang.limits import Budget
+from aidl_lang.pipeline import compile_source
+t = time.process_time()
+c = compile_source(sys.stdin.read(), "row.aidl", budget=Budget(seconds=60))
+print(json.dumps({"codes": [d.code for d in c.sink.items], "cpu": time.process_time() - t}))
+"""
+
+
+def test_circles_in_a_row_check_their_slits_in_bounded_work():
+    """The slit check's point-in-polygon (common._inside) halved its points in y order while
+    its (edge, point) candidates were many; with 5,000 circles on one line every edge at
+    y = 0 spans every gap middle, so halving never helped: it split down to single points,
+    each searched against every edge (46 s of CPU, then E0304 past the 15 s budget).  Now
+    the distinct points are split as a k-d tree and the edges wholly beside a cell are
+    counted without pairs: the whole compile takes about 3 s of CPU.  (Budget 60 s and a CPU
+    bound of 30 s: wide margins on a loaded machine; the old code ends with E0304.)"""
+    r = subprocess.run([sys.executable, "-c", _ROW_CHILD], input=ROW.format(n=5000),
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr[-2000:]
+    got = json.loads(r.stdout.strip().splitlines()[-1])
+    assert set(got["codes"]) == {"W0504"}, got["codes"]       # 5,000 separate circles
+    assert got["cpu"] < 30, got
+
+
+def _circles(n, r=0.4, k=24):
+    t = np.linspace(0, 2 * np.pi, k, endpoint=False)
+    return [np.column_stack([i + r * np.cos(t), r * np.sin(t)]) for i in range(n)]
+
+
+def test_the_point_in_polygon_split_does_bounded_work_on_a_row_of_circles(monkeypatch):
+    """common._inside on 5,000 circles in a row (120,000 edges) and 20,000 points on their
+    line: the cells of its k-d split are a few per 1,000 points, each tested directly once
+    its candidates are few, each distinct point in one of them; each point in a circle is found
+    inside, each between out."""
+    from aidl_lang.output.checks import common
+    cells, direct = [0], []
+    real = common._inside_direct
+
+    def counted(P, E, *a):
+        direct.append(len(P))
+        return real(P, E, *a)
+    monkeypatch.setattr(common, "_inside_direct", counted)
+    n = 5000
+    between = np.column_stack([np.repeat(np.arange(n) + 0.5, 3), np.tile([0.0, 0.1, -0.0], n)])
+    within = np.column_stack([np.arange(n) + 0.1, np.zeros(n)])
+    got = common._inside(np.vstack([between, within]), common._edges(_circles(n)),
+                         tick=lambda: cells.__setitem__(0, cells[0] + 1))
+    assert not got[:3 * n].any() and got[3 * n:].all()
+    # each distinct point (0.0 and -0.0 are one) tested in one cell at most
+    assert 0 < cells[0] < 1000 and sum(direct) <= 3 * n, (cells, len(direct), sum(direct))
+
+
+coord = st.one_of(st.integers(-4, 4).map(float), st.floats(-6, 6, allow_nan=False))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.lists(st.tuples(coord, coord), min_size=1, max_size=10), min_size=1,
+                max_size=4),
+       st.lists(st.tuples(coord, coord), min_size=0, max_size=40))
+def test_the_point_in_polygon_split_is_the_reference(loops, pts):
+    """With the split forced down to single points (no candidates tested before a split),
+    common._inside gives exactly the per-loop reference, points on vertices, on edges and
+    repeated included."""
+    from aidl_lang.output.checks import common
+    P = np.array(pts + pts[:5], dtype=float).reshape(-1, 2)
+    old = common.INSIDE_LEAF, common.INSIDE_PER_ITEM
+    common.INSIDE_LEAF, common.INSIDE_PER_ITEM = 0, 0
+    try:
+        got = common._inside(P, loops)
+    finally:
+        common.INSIDE_LEAF, common.INSIDE_PER_ITEM = old
+    assert np.array_equal(got, common._inside_loops(P, loops))
