@@ -551,3 +551,65 @@ def test_parts_of_4000_different_circles_end_within_the_budget(tmp_path):
     else:
         assert f"{f}:3:9: error[E0304]" in r.stderr, r.stderr[-2000:]
     assert float(cpu) < 30, cpu
+
+
+DRILLS = """units mm
+param gap = 4
+solid plate {
+    body = Rectangle(center=(50, 0), width=120, height=20)
+    hole drills {
+        for i in range(20) {
+            c = Circle(center=(i * gap, 0), radius=2.5)
+        }
+        a = Circle(center=(100, 5), radius=2)
+        b = Circle(center=(103, 5), radius=2)
+    }
+}
+assembly kit {
+    p = plate()
+}
+"""
+
+
+def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
+    """W0512's pairs of copies and of circles call their tick before each pair's boolean;
+    W0109's holes against every solid and W0510's comparison with the defaults (`--set`)
+    look at the deadline: past it, a located E0304 naming the stage, not minutes more."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.limits import Deadline, OutOfBudget
+    from aidl_lang.output.checks import changes, openings, parts
+    src = DRILLS.replace("assembly kit {\n    p = plate()\n}\n", "")
+    c = compile_source(src, "drills.aidl")
+    h = next(s for s in c.drawing.own if s.kind == "hole")
+    ticks = [0]
+
+    def tick():
+        ticks[0] += 1
+    openings._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
+    assert ticks[0] == 19               # the 20 copies: each overlaps its neighbour
+    ticks[0] = 0
+    openings._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
+    assert ticks[0] == 1                # a and b, two statements 3 mm apart
+    past = Deadline(0.0)
+    with pytest.raises(OutOfBudget):
+        changes.topology(c.drawing, past)
+    stray = "solid base { r = Rectangle(center=(0, 0), width=50, height=50) }\n"
+    c2 = compile_source("assembly kit {\n    " + stray
+                        + "    hole h { c = Circle(center=(0, 0), radius=3) }\n}\n", "stray.aidl")
+    assert "W0109" in [d.code for d in c2.sink.items]
+    with pytest.raises(OutOfBudget) as ex:
+        parts.check_stray_holes(DiagnosticSink(), c2.drawing, past)
+    assert ex.value.where.path == "kit.h"
+    # W0510's comparison with the defaults, past the deadline: E0304 at the part
+    real = Deadline.check
+
+    def late(self, stage, where=None, ahead=0.0):
+        if stage == changes.STAGE:
+            raise OutOfBudget("more than 15 s of wall time", stage, where)
+        return real(self, stage, where, ahead)
+    monkeypatch.setattr(Deadline, "check", late)
+    c3 = compile_source(src, "drills.aidl", overrides={"gap": "6"})
+    e = [d for d in c3.sink.items if d.code == "E0304"]
+    assert e and "in the comparison with the defaults (W0510) of `plate`" in e[0].message, \
+        [d.message for d in c3.sink.items]
+    assert e[0].span is not None and e[0].span.line == 3
