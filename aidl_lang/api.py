@@ -170,7 +170,9 @@ class Result:
     size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
     solve, drawing), ``not_searched`` (the user constraints :meth:`find_redundant` did not
     look at) and ``not_searched_why`` (why: ``"out of time"``, ``"too large"`` or both, joined
-    by " and "; "" when all were searched)."""
+    by " and "; "" when all were searched), ``deadline`` (a
+    :class:`~aidl_lang.limits.Deadline` bounding :attr:`output` and :attr:`description`;
+    None, the default: the program's budget's seconds from each call)."""
 
     def __init__(self, compiled, path: str, source: str | None) -> None:
         self.compiled = compiled
