@@ -170,7 +170,9 @@ class Result:
     size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
     solve, drawing), ``not_searched`` (the user constraints :meth:`find_redundant` did not
     look at) and ``not_searched_why`` (why: ``"out of time"``, ``"too large"`` or both, joined
-    by " and "; "" when all were searched)."""
+    by " and "; "" when all were searched), ``deadline`` (a
+    :class:`~aidl_lang.limits.Deadline` bounding :attr:`output` and :attr:`description`;
+    None, the default: the program's budget's seconds from each call)."""
 
     def __init__(self, compiled, path: str, source: str | None) -> None:
         self.compiled = compiled
@@ -184,6 +186,9 @@ class Result:
         self._sliding = None           # what the freedom left means (find_redundant)
         self.not_searched = 0          # user constraints find_redundant did not look at
         self.not_searched_why = ""     # why ("out of time", "too large")
+        # the wall-time end (limits.Deadline) of the work read from the output after the
+        # compile; None: a fresh budget from each call (_after_deadline)
+        self.deadline = None
 
     # ------------------------------------------------------------------ status
     @property
@@ -345,13 +350,30 @@ class Result:
         circles per part, mm) every writer reads.  Raises :class:`NotCompiled`, and
         :class:`~aidl_lang.output.part.part.OutputError` when the outlines cannot be recovered
         within bounded work (thousands of curves on top of each other)."""
+        return self._built(None)
+
+    def _built(self, deadline):
+        """:attr:`output`, built (once) within ``deadline`` (None: :meth:`_after_deadline`)."""
         self._need("output")
         if self.compiled.drawing is None:
             raise NotCompiled("no output: the solved model failed the extent check (E0305)")
         if self._output is None:
             from .output import build
-            self._output = build(self.compiled.drawing, self.compiled.model.root.name)
+            self._output = build(self.compiled.drawing, self.compiled.model.root.name,
+                                 deadline=deadline or self._after_deadline())
         return self._output
+
+    def _after_deadline(self):
+        """The :class:`~aidl_lang.limits.Deadline` of the output, the parts list and the
+        description: :attr:`deadline` when set (``aidl check --describe`` sets the compile's
+        own, one budget for the whole command), else the program's budget's seconds from now
+        (past it: :class:`~aidl_lang.output.part.part.OutputError`, a located ``E0304``)."""
+        if self.deadline is not None:
+            return self.deadline
+        import time
+        from .limits import Deadline
+        budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
+        return Deadline(time.monotonic() + budget.seconds, budget)
 
     @property
     def description(self) -> dict:
@@ -359,9 +381,13 @@ class Result:
         each part its outline's kind, size and box, each opening's kind (circle ``d``, slot
         ``w`` x ``l``, rectangle, polygon ``n``, outline), centre and size, its engravings
         (text with its string) and place, its copies and symmetries; mm and degrees
-        (:func:`aidl_lang.output.checks.describe.describe`).  Raises :class:`NotCompiled`."""
+        (:func:`aidl_lang.output.checks.describe.describe`): a part of the same shape as one
+        described, with nothing of its own, is one of its ``copies`` (name and box).  Raises
+        :class:`NotCompiled`, and :class:`~aidl_lang.output.part.part.OutputError` past the
+        wall-time budget (:meth:`_after_deadline`)."""
         from .output.checks.describe import describe
-        return describe(self.output)
+        deadline = self._after_deadline()
+        return describe(self._built(deadline), deadline)
 
     def describe(self) -> str:
         """:attr:`description` as compact text, one line per feature, e.g. ``circle d=6 at

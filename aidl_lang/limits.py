@@ -46,7 +46,8 @@ class Budget(Frozen):
     - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
     - ``seconds``: 15 s of wall time for the whole compile: interpreting, solving, the
-      booleans and the shape checks (and, in ``aidl render``, the writers);
+      booleans and the shape checks (and, in ``aidl render``, the writers; in ``aidl parts``
+      the parts list; in ``aidl check --describe`` the description);
     - ``vertices``: 2 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
       :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``);

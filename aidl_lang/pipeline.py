@@ -64,9 +64,12 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
         if overrides and res.drawing is not None and res.ok:
             # W0510: the baseline is the program with its own defaults (its warnings are not
             # reported), compiled once per source and kept (defaults_topology)
-            base = defaults_topology(source, path, min_wall, budget)
-            if base is not None:
-                check_topology(base, res.drawing, overrides, sink)
+            try:
+                base = defaults_topology(source, path, min_wall, budget)
+                if base is not None:
+                    check_topology(base, res.drawing, overrides, sink, res.deadline)
+            except OutOfBudget as ex:
+                report_out_of_budget(sink, ex)
         return res
     except RecursionError as ex:
         sink.sources.setdefault(path, source)
@@ -147,7 +150,8 @@ def defaults_topology(source: str, path: str, min_wall: float | None = None,
         return kept[1]
     base = run_deep(lambda: _compile(DiagnosticSink(), source, path, None, True,
                                      min_wall, budget, shape_checks=False))
-    topo = topology(base.drawing) if base.drawing is not None and base.ok else None
+    topo = topology(base.drawing, base.deadline) if base.drawing is not None and base.ok \
+        else None
     imported = {p: t for p, t in base.sink.sources.items() if p != path}
     while len(_defaults) >= DEFAULTS_KEPT:
         del _defaults[next(iter(_defaults))]           # the least recently used
@@ -307,7 +311,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
             for g, message, hint, *code in drawing.shape_errors:
                 sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
                                     hint=hint))
-            check_stray_holes(sink, drawing)
+            check_stray_holes(sink, drawing, deadline)
             if shape_checks:
                 stage = "the shape checks"
                 check_drawing(drawing, sink, min_wall, deadline)

@@ -9,6 +9,7 @@ import sys
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
 
@@ -321,3 +322,294 @@ def test_the_index_of_solids_is_the_structure_by_structure_answer():
         with common._LOCK:
             common._SHARING[0] -= 1
             common._WITHIN.clear()
+
+
+# 5,000 circles 1 mm apart on one line, in one solid: the gaps' middles all lie at y = 0 and
+# every circle has edges across that height
+ROW = """solid row {{
+    for i in range({n}) {{
+        c = Circle(center=(i, 0), radius=0.4)
+    }}
+}}
+"""
+
+_ROW_CHILD = r"""
+import json, sys, time
+from aidl_lang.limits import Budget
+from aidl_lang.pipeline import compile_source
+t = time.process_time()
+c = compile_source(sys.stdin.read(), "row.aidl", budget=Budget(seconds=60))
+print(json.dumps({"codes": [d.code for d in c.sink.items], "cpu": time.process_time() - t}))
+"""
+
+
+def test_circles_in_a_row_check_their_slits_in_bounded_work():
+    """The slit check's point-in-polygon (common._inside) halved its points in y order while
+    its (edge, point) candidates were many; with 5,000 circles on one line every edge at
+    y = 0 spans every gap middle, so halving never helped: it split down to single points,
+    each searched against every edge (46 s of CPU, then E0304 past the 15 s budget).  Now
+    the distinct points are split as a k-d tree and the edges wholly beside a cell are
+    counted without pairs: the whole compile takes about 3 s of CPU.  (Budget 60 s and a CPU
+    bound of 30 s: wide margins on a loaded machine; the old code ends with E0304.)"""
+    r = subprocess.run([sys.executable, "-c", _ROW_CHILD], input=ROW.format(n=5000),
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr[-2000:]
+    got = json.loads(r.stdout.strip().splitlines()[-1])
+    assert set(got["codes"]) == {"W0504"}, got["codes"]       # 5,000 separate circles
+    assert got["cpu"] < 30, got
+
+
+def _circles(n, r=0.4, k=24):
+    t = np.linspace(0, 2 * np.pi, k, endpoint=False)
+    return [np.column_stack([i + r * np.cos(t), r * np.sin(t)]) for i in range(n)]
+
+
+def test_the_point_in_polygon_split_does_bounded_work_on_a_row_of_circles(monkeypatch):
+    """common._inside on 5,000 circles in a row (120,000 edges) and 20,000 points on their
+    line: the cells of its k-d split are a few per 1,000 points, each tested directly once
+    its candidates are few, each distinct point in one of them; each point in a circle is found
+    inside, each between out."""
+    from aidl_lang.output.checks import common
+    cells, direct = [0], []
+    real = common._inside_direct
+
+    def counted(P, E, *a):
+        direct.append(len(P))
+        return real(P, E, *a)
+    monkeypatch.setattr(common, "_inside_direct", counted)
+    n = 5000
+    between = np.column_stack([np.repeat(np.arange(n) + 0.5, 3), np.tile([0.0, 0.1, -0.0], n)])
+    within = np.column_stack([np.arange(n) + 0.1, np.zeros(n)])
+    got = common._inside(np.vstack([between, within]), common._edges(_circles(n)),
+                         tick=lambda: cells.__setitem__(0, cells[0] + 1))
+    assert not got[:3 * n].any() and got[3 * n:].all()
+    # each distinct point (0.0 and -0.0 are one) tested in one cell at most
+    assert 0 < cells[0] < 1000 and sum(direct) <= 3 * n, (cells, len(direct), sum(direct))
+
+
+coord = st.one_of(st.integers(-4, 4).map(float), st.floats(-6, 6, allow_nan=False))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.lists(st.tuples(coord, coord), min_size=1, max_size=10), min_size=1,
+                max_size=4),
+       st.lists(st.tuples(coord, coord), min_size=0, max_size=40))
+def test_the_point_in_polygon_split_is_the_reference(loops, pts):
+    """With the split forced down to single points (no candidates tested before a split),
+    common._inside gives exactly the per-loop reference, points on vertices, on edges and
+    repeated included."""
+    from aidl_lang.output.checks import common
+    P = np.array(pts + pts[:5], dtype=float).reshape(-1, 2)
+    old = common.INSIDE_LEAF, common.INSIDE_PER_ITEM
+    common.INSIDE_LEAF, common.INSIDE_PER_ITEM = 0, 0
+    try:
+        got = common._inside(P, loops)
+    finally:
+        common.INSIDE_LEAF, common.INSIDE_PER_ITEM = old
+    assert np.array_equal(got, common._inside_loops(P, loops))
+
+
+# n parts of different sizes (circles of radius 1 + i / 1000), each a part of its own
+SIZES = """assembly sheet {{
+    for i in range({n}) {{
+        solid p {{
+            c = Circle(center=(i * 3, 0), radius=1 + i * 0.001)
+        }}
+    }}
+}}
+"""
+
+
+def _pairwise_shapes(parts):
+    """The reference grouping of the parts list: each part against every part that starts a
+    shape (O(n^2) comparisons)."""
+    from aidl_lang.output.checks.inventory import same_shape
+    group = [-1] * len(parts)
+    n = 0
+    for i, p in enumerate(parts):
+        if group[i] >= 0:
+            continue
+        group[i] = n
+        for j in range(i + 1, len(parts)):
+            if group[j] < 0 and parts[j].kind == p.kind and same_shape(p, parts[j]):
+                group[j] = n
+        n += 1
+    return group
+
+
+def test_the_parts_list_groups_shapes_by_a_key_not_by_pairs(monkeypatch):
+    """`aidl parts` compared every part with every part that starts a shape: 4,000 circles
+    of different radii were 8 million comparisons (13.5 s of CPU under `--budget 0.5`, its
+    7.5 s not looked at).  Now the shapes are filed under their kind, segment kinds, area
+    and perimeter (cells of the tolerance) and a part is compared only within its cell and
+    the neighbouring ones: about one comparison a part, the same groups as every pair."""
+    from aidl_lang.output import build
+    from aidl_lang.output.checks import inventory
+    n = 1500
+    c = compile_source(SIZES.format(n=n), "sizes.aidl")
+    assert c.ok
+    out = build(c.drawing, "sheet")
+    calls = [0]
+    real = inventory._same
+
+    def counted(*a):
+        calls[0] += 1
+        return real(*a)
+    monkeypatch.setattr(inventory, "_same", counted)
+    rows = inventory.parts_list(out)
+    assert len({r["shape"] for r in rows}) == n and calls[0] < 3 * n, calls
+
+
+MIXED = """units mm
+assembly kit {
+    for i in range(6) {
+        solid r { body = Rectangle(center=(i * 30, 0), width=20, height=10, angle=i * 30 deg) }
+        solid t { body = Triangle((i * 30, 40), (i * 30 + 12, 40), (i * 30, 40 + (i % 2 + 1) * 5)) }
+        solid h { body = Circle(center=(i * 30, 80), radius=3 + (i % 3) * 2e-8) }
+        hole o { c = Circle(center=(i * 30, 120), radius=2) }
+    }
+    solid m { body = Triangle((0, 200), (-12, 200), (0, 205)) }
+}
+"""
+
+
+def test_the_shape_key_gives_the_groups_of_every_pair():
+    """The grouping by key is the pairwise grouping: turned copies, a mirrored triangle,
+    radii within the tolerance, holes apart from solids of the same outline."""
+    from aidl_lang.output import build
+    from aidl_lang.output.checks import inventory
+    c = compile_source(MIXED, "mixed.aidl")
+    assert c.ok, [d.message for d in c.sink.items if d.is_error]
+    parts = build(c.drawing, "kit").parts
+    got = inventory.shape_groups(parts)
+    assert got == _pairwise_shapes(parts)
+    assert len(set(got)) == 5, got       # rectangle, two triangles (and the mirror), circle, hole
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 6), st.integers(-3, 3), st.booleans()), min_size=1,
+                max_size=30))
+def test_the_shape_key_is_every_pair_near_the_tolerance(radii):
+    """Circles (and pairs of them) whose radii differ by fractions and multiples of the
+    tolerance, across the key's cells: the same groups as every pair."""
+    from aidl_lang.geometry.curves import Circle, Loop
+    from aidl_lang.output.checks import inventory
+    from aidl_lang.output.part.part import PartOutline
+    parts = []
+    for k, (a, b, two) in enumerate(radii):
+        r = 5 + a * 1.2e-8 + b * 1e-6       # 1.2e-8 mm of radius: 0.38e-6 mm^2 of area
+        loops = [Loop([Circle((k * 20.0, 0.0), r)])]
+        if two:
+            loops.append(Loop([Circle((k * 20.0, 0.0), r / 2, ccw=False)]))
+        parts.append(PartOutline(f"p{k}", "solid", loops))
+    assert inventory.shape_groups(parts) == _pairwise_shapes(parts)
+
+
+def test_the_parts_list_and_the_description_past_the_deadline_are_a_located_e0304(
+        monkeypatch, tmp_path, capsys):
+    """Past the wall-time budget, `aidl parts` and `aidl check --describe` stop with the
+    program's located E0304 at the part being listed (they did not look at the deadline)."""
+    from aidl_lang.cli.main import main
+    from aidl_lang.limits import Deadline, OutOfBudget
+    f = tmp_path / "sizes.aidl"
+    f.write_text(SIZES.format(n=40))
+    real = Deadline.check
+    for stage, argv in (("the parts list", ["parts", str(f)]),
+                        ("the description", ["check", str(f), "--describe"])):
+        def late(self, where_stage, where=None, ahead=0.0, stage=stage):
+            if where_stage == stage:
+                raise OutOfBudget(f"more than {self.budget.seconds:g} s of wall time",
+                                  where_stage, where)
+            return real(self, where_stage, where, ahead)
+        monkeypatch.setattr(Deadline, "check", late)
+        assert main(argv) == 1
+        err = capsys.readouterr().err
+        assert f"{f}:3:9: error[E0304]: the program ran out of its evaluation budget in " \
+               f"{stage} of `sheet.p[0]`: more than 15 s of wall time" in err, err
+        assert "internal error" not in err
+
+
+_PARTS_CHILD = r"""
+import resource, sys
+from aidl_lang.cli.main import main
+rc = main(["parts", "--budget", "0.5", sys.argv[1]])
+print("rc", rc, resource.getrusage(resource.RUSAGE_SELF).ru_utime)
+"""
+
+
+def test_parts_of_4000_different_circles_end_within_the_budget(tmp_path):
+    """`aidl parts --budget 0.5` (7.5 s) of 4,000 circles of different radii: ok, 4,000
+    shapes (or a located E0304), a few seconds of CPU (30 s: a wide margin)."""
+    f = tmp_path / "sizes.aidl"
+    f.write_text(SIZES.format(n=4000))
+    r = subprocess.run([sys.executable, "-c", _PARTS_CHILD, str(f)], capture_output=True,
+                       text=True, timeout=600)
+    rc, cpu = r.stdout.split()[-2:]
+    assert rc in ("0", "1"), r.stderr[-2000:]
+    if rc == "0":
+        assert "4000 parts, 4000 shapes" in r.stdout
+    else:
+        assert f"{f}:3:9: error[E0304]" in r.stderr, r.stderr[-2000:]
+    assert float(cpu) < 30, cpu
+
+
+DRILLS = """units mm
+param gap = 4
+solid plate {
+    body = Rectangle(center=(50, 0), width=120, height=20)
+    hole drills {
+        for i in range(20) {
+            c = Circle(center=(i * gap, 0), radius=2.5)
+        }
+        a = Circle(center=(100, 5), radius=2)
+        b = Circle(center=(103, 5), radius=2)
+    }
+}
+assembly kit {
+    p = plate()
+}
+"""
+
+
+def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
+    """W0512's pairs of copies and of circles call their tick before each pair's boolean;
+    W0109's holes against every solid and W0510's comparison with the defaults (`--set`)
+    look at the deadline: past it, a located E0304 naming the stage, not minutes more."""
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.limits import Deadline, OutOfBudget
+    from aidl_lang.output.checks import changes, openings, parts
+    src = DRILLS.replace("assembly kit {\n    p = plate()\n}\n", "")
+    c = compile_source(src, "drills.aidl")
+    h = next(s for s in c.drawing.own if s.kind == "hole")
+    ticks = [0]
+
+    def tick():
+        ticks[0] += 1
+    openings._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
+    assert ticks[0] == 19               # the 20 copies: each overlaps its neighbour
+    ticks[0] = 0
+    openings._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
+    assert ticks[0] == 1                # a and b, two statements 3 mm apart
+    past = Deadline(0.0)
+    with pytest.raises(OutOfBudget):
+        changes.topology(c.drawing, past)
+    stray = "solid base { r = Rectangle(center=(0, 0), width=50, height=50) }\n"
+    c2 = compile_source("assembly kit {\n    " + stray
+                        + "    hole h { c = Circle(center=(0, 0), radius=3) }\n}\n", "stray.aidl")
+    assert "W0109" in [d.code for d in c2.sink.items]
+    with pytest.raises(OutOfBudget) as ex:
+        parts.check_stray_holes(DiagnosticSink(), c2.drawing, past)
+    assert ex.value.where.path == "kit.h"
+    # W0510's comparison with the defaults, past the deadline: E0304 at the part
+    real = Deadline.check
+
+    def late(self, stage, where=None, ahead=0.0):
+        if stage == changes.STAGE:
+            raise OutOfBudget("more than 15 s of wall time", stage, where)
+        return real(self, stage, where, ahead)
+    monkeypatch.setattr(Deadline, "check", late)
+    c3 = compile_source(src, "drills.aidl", overrides={"gap": "6"})
+    e = [d for d in c3.sink.items if d.code == "E0304"]
+    assert e and "in the comparison with the defaults (W0510) of `plate`" in e[0].message, \
+        [d.message for d in c3.sink.items]
+    assert e[0].span is not None and e[0].span.line == 3

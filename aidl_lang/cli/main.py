@@ -161,6 +161,7 @@ def cmd_check(args) -> int:
         extra["units"] = program.units
         extra["values"] = [v.to_json() for v in values]
     if getattr(args, "describe", False) and program.ok:
+        program.deadline = res.deadline     # what the compile left of the one budget
         extra["describe"] = program.description
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
@@ -572,7 +573,9 @@ def cmd_parts(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    rows = parts_list(build(res.drawing, res.model.root.name))
+    # the parts list gets what the compile left of its wall-time budget (E0304 past it)
+    rows = parts_list(build(res.drawing, res.model.root.name, deadline=res.deadline),
+                      res.deadline)
     if args.json:
         print(json.dumps({"ok": True, "unit": "mm", "parts": rows}, indent=2))
     else:

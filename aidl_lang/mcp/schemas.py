@@ -116,7 +116,8 @@ class ValuesResult(_Compiled):
 class DescribeResult(_Compiled):
     text: NotRequired[Annotated[str, Field(description="one line per feature")]]
     describe: NotRequired[Annotated[dict[str, Any], Field(
-        description="each part's outline, openings, engravings, copies and symmetries (mm; "
+        description="each part's outline, openings, engravings, copies (parts of the same "
+                    "shape listed once under the first, each with its box) and symmetries (mm; "
                     "docs/outputs.md, Describing the part)")]]
 
 

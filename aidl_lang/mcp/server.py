@@ -315,9 +315,10 @@ def build_server(root: str, budget: float = 1.0,
         """What the final part is, for checking it without a picture: for each part its
         outline (kind, size, box), each opening with its kind (circle d=..., slot l long, w
         wide, rectangle, star, arc slot, n-gon), centre and size, engravings (text, height and
-        place), copies (parts of the same shape) and symmetries (mirror, n-fold rotation); mm. Returns (structured
-        content, and the same JSON as text): ok, diagnostics, text (one line per feature) and
-        describe (the same as data)."""
+        place), copies (parts of the same shape, listed once under the first with their
+        places) and symmetries (mirror, n-fold rotation); mm. Returns (structured content, and
+        the same JSON as text): ok, diagnostics, text (one line per feature) and describe (the
+        same as data)."""
         try:
             return work.call("describe", source, path, overrides, budget, budget=budget)
         except T.Refused as e:

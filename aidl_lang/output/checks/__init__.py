@@ -276,7 +276,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
         if near is None:
             run("holes", cut.hole, lambda: None)
         elif run("holes", cut.hole, lambda: _check_hole(d, cut, roots, sink, near.local,
-                                                         owner_areas)) == "W0503":
+                                                         owner_areas,
+                                                         lambda: tick(cut.hole))) == "W0503":
             explained.add(_part_of(cut.owner, roots))
     for s, shape in roots.items():
         if s.kind == "solid":
@@ -337,8 +338,9 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
         if s.kind == "hole":
             t = part_min_wall(d, _part_of(s, roots), given)
             run("repeats", s, lambda: (
-                _check_repeated_faces(d, s, sink),
-                _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL)))
+                _check_repeated_faces(d, s, sink, lambda: tick(s)),
+                _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL,
+                                           lambda: tick(s))))
     shares.notes(sink, given if given is not None else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty

@@ -33,22 +33,30 @@ class Topology(Compared):
         self.freed = freed  # pieces its through-cuts cut off (parts `PART.piece1`, ...)
 
 
-def topology(d: Drawing) -> dict:
+STAGE = "the comparison with the defaults (W0510)"
+
+
+def topology(d: Drawing, deadline=None) -> dict:
     """What W0510 compares, per solid part of ``d`` (:func:`_topology`); empty when the part
     is too dense to compare (more pairs than :data:`..nearby.MAX_PAIRS`: no W0510 then,
-    never an unbounded list)."""
+    never an unbounded list).  ``deadline`` (:class:`~aidl_lang.limits.Deadline`): looked at
+    for each part and every 64 face pairs (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
     from ..part.nearby import TooManyPairs
     try:
-        return _topology(d)
+        return _topology(d, deadline)
     except TooManyPairs:
         return {}
 
 
-def _topology(d: Drawing) -> dict:
+def _topology(d: Drawing, deadline=None) -> dict:
     """The :class:`Topology` of every solid part of ``d``, by part path: its pieces and
     openings (counter-clockwise and clockwise loops of its final shape), the holes that merge
     (:func:`_analyse` at the touching distance) or reach the outline, and the faces of
     different solid structures that overlap (candidates from :func:`.nearby.box_pairs`)."""
+    def check(where, k=0):
+        if deadline is not None and k % 64 == 0:
+            deadline.check(STAGE, where)
+
     roots = _part_roots(d)
     freed = _freed(d)
     by_part: dict = {}
@@ -66,14 +74,16 @@ def _topology(d: Drawing) -> dict:
     for s, shape in roots.items():
         if s.kind != "solid":
             continue
+        check(s)
         loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
         pos = sum(_signed(p) > 0 for p in loops)
-        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops)
+        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops, tick=lambda: check(s))
         faces = faces_of.get(s, [])
         contacts = set()
         if len(faces) > 1:
             boxes = [f.bounds() for _, _, f in faces]
-            for i, j in box_pairs(boxes):
+            for k, (i, j) in enumerate(box_pairs(boxes)):
+                check(s, k + 1)
                 (ni, si, fi), (nj, sj, fj) = faces[i], faces[j]
                 if si is not sj and _area(fi ^ fj) > 1e-6:
                     contacts.add(frozenset((ni, nj)))
@@ -133,14 +143,15 @@ def topology_changes(base: Topology, new: Topology) -> list[str]:
     return out
 
 
-def check_topology(base: Drawing | dict, d: Drawing, values: dict, sink: DiagnosticSink) -> None:
+def check_topology(base: Drawing | dict, d: Drawing, values: dict, sink: DiagnosticSink,
+                   deadline=None) -> None:
     """W0510 for each solid part of ``d`` (compiled with the param ``values``) whose
     topology differs from ``base`` (the same program with its defaults: a Drawing, or its
-    :func:`topology` already taken)."""
+    :func:`topology` already taken); ``deadline`` as for :func:`topology`."""
     if not values:
         return
-    before = base if isinstance(base, dict) else topology(base)
-    now = topology(d)
+    before = base if isinstance(base, dict) else topology(base, deadline)
+    now = topology(d, deadline)
     with_ = ", ".join(f"{k}={v}" for k, v in values.items())
     for path, t in now.items():
         b = before.get(path)

@@ -101,50 +101,133 @@ def _inside_loops(pts: np.ndarray, loops) -> np.ndarray:
 
 
 INSIDE_CHUNK = 1_000_000     # (edge, point) candidates :func:`_inside` holds at once (~50 MB)
+INSIDE_LEAF = 65_536         # candidates a cell of the split tests directly, and
+INSIDE_PER_ITEM = 16         # as many per point and edge: below that splitting saves nothing
 
 
-def _inside(pts: np.ndarray, loops) -> np.ndarray:
+def _inside(pts: np.ndarray, loops, tick=None) -> np.ndarray:
     """Even-odd point-in-polygon of ``pts`` (N x 2, mm) against the union of closed ``loops``
-    (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to -x crosses the loops' edges an odd
-    number of times (the crossing-number test, as in W. R. Franklin's ``pnpoly``).
+    (each M x 2, implicitly closed; or their :func:`_edges`): True where a ray to +x crosses
+    the loops' edges an odd number of times (the crossing-number test, as in W. R. Franklin's
+    ``pnpoly``); a point with a coordinate that is not finite is outside.
 
     The edges of all loops are taken together (the parity of the total equals the XOR of the
     per-loop parities) and each edge is tested only against the points whose y lies in its
     half-open y range ``[min(y1, y2), max(y1, y2))``, found by binary search in the points
-    sorted by y; so the work is O((N + E) log N + crossings-candidates), not O(N E), and the
-    memory at most :data:`INSIDE_CHUNK` candidates (the points halved in y order).  The
-    crossing abscissa is computed with the same floating-point expression as the reference
-    :func:`_inside_loops`, so the result is identical to it."""
+    sorted by y.  When those (edge, point) candidates are many (thousands of edges across the
+    same heights: 5,000 circles in a row), the distinct points are split in halves by their
+    median along the longer side of their box, as a k-d tree (:func:`_inside_split`): in each
+    cell an edge wholly to the right of the cell's points crosses the ray of every point in
+    its y range (counted from the sorted range ends, no pairs), one wholly to the left
+    crosses none, and only the edges across the cell go on; a cell is tested directly once
+    its candidates are few.  Every split halves the points, so the work is O((N + E) log N)
+    for edges short beside the points' spread, and the memory at most :data:`INSIDE_CHUNK`
+    candidates.  The crossing abscissa is computed with the same floating-point expression
+    as the reference :func:`_inside_loops` (a cell's left and right are decided with a margin
+    far above its rounding), so the result is identical to it.  ``tick()``: called at each
+    cell (the deadline, :class:`~aidl_lang.limits.Deadline`; it may raise)."""
     pts = np.asarray(pts, dtype=float).reshape(-1, 2)
     n = len(pts)
     x1, y1, x2, y2 = loops if isinstance(loops, tuple) else _edges(loops)
     if not n or not len(x1):
         return np.zeros(n, dtype=bool)
-    x, y = pts[:, 0], pts[:, 1]
+    y = pts[:, 1]
     order = np.argsort(y, kind="stable")
     ys = y[order]
     lo = np.searchsorted(ys, np.minimum(y1, y2), side="left")
     hi = np.searchsorted(ys, np.maximum(y1, y2), side="left")
-    cnt = np.maximum(hi - lo, 0)
-    total = int(cnt.sum())
+    total = int(np.maximum(hi - lo, 0).sum())
     if not total:
         return np.zeros(n, dtype=bool)
-    if total > INSIDE_CHUNK and n > 1:
-        # many edges across the points' y (a comb's teeth): the two halves of the points in
-        # y order apart, so that at most about INSIDE_CHUNK (edge, point) pairs are held
-        res = np.empty(n, dtype=bool)
-        for part in (order[:n // 2], order[n // 2:]):
-            res[part] = _inside(pts[part], (x1, y1, x2, y2))
-        return res
-    edge = np.repeat(np.arange(len(x1)), cnt)
-    start = np.cumsum(cnt) - cnt
-    pt = order[lo[edge] + (np.arange(total) - start[edge])]
-    yy, ex1, ey1, ex2, ey2 = y[pt], x1[edge], y1[edge], x2[edge], y2[edge]
-    cond = (ey1 > yy) != (ey2 > yy)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        xi = ex1 + (yy - ey1) * (ex2 - ex1) / (ey2 - ey1)
-    hit = cond & (x[pt] < xi)
-    return (np.bincount(pt[hit], minlength=n) % 2).astype(bool)
+    if total <= min(INSIDE_CHUNK, INSIDE_LEAF + INSIDE_PER_ITEM * (n + len(x1))):
+        return _inside_direct(pts, (x1, y1, x2, y2), order, lo, hi)
+    res = np.zeros(n, dtype=bool)
+    fin = np.flatnonzero(np.isfinite(pts).all(axis=1))
+    if len(fin):
+        U, inv = np.unique(pts[fin], axis=0, return_inverse=True)
+        res[fin] = _inside_split(U, (x1, y1, x2, y2), tick)[inv.reshape(-1)]
+    return res
+
+
+def _inside_direct(pts, edges, order=None, lo=None, hi=None) -> np.ndarray:
+    """:func:`_inside` by testing every (edge, point) candidate of the y search, in runs of
+    edges of at most :data:`INSIDE_CHUNK` candidates (``order``, ``lo``, ``hi``: the points'
+    y order and each edge's range in it, when at hand)."""
+    n = len(pts)
+    x1, y1, x2, y2 = edges
+    x, y = pts[:, 0], pts[:, 1]
+    if order is None:
+        order = np.argsort(y, kind="stable")
+        ys = y[order]
+        lo = np.searchsorted(ys, np.minimum(y1, y2), side="left")
+        hi = np.searchsorted(ys, np.maximum(y1, y2), side="left")
+    cnt = np.maximum(hi - lo, 0)
+    odd = np.zeros(n, dtype=bool)
+    run = np.cumsum(cnt)
+    a = 0
+    while a < len(cnt):
+        # the edges from a whose candidates fit in one chunk (at least one edge)
+        b = max(a + 1, int(np.searchsorted(run, (run[a - 1] if a else 0) + INSIDE_CHUNK,
+                                           side="right")))
+        c = cnt[a:b]
+        total = int(c.sum())
+        if total:
+            edge = a + np.repeat(np.arange(b - a), c)
+            start = np.cumsum(c) - c
+            pt = order[lo[edge] + (np.arange(total) - start[edge - a])]
+            yy, ex1, ey1, ex2, ey2 = y[pt], x1[edge], y1[edge], x2[edge], y2[edge]
+            cond = (ey1 > yy) != (ey2 > yy)
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                xi = ex1 + (yy - ey1) * (ex2 - ex1) / (ey2 - ey1)
+            odd ^= (np.bincount(pt[cond & (x[pt] < xi)], minlength=n) % 2).astype(bool)
+        a = b
+    return odd
+
+
+def _inside_split(U: np.ndarray, edges, tick=None) -> np.ndarray:
+    """:func:`_inside` of the distinct finite points ``U`` by the k-d split its docstring
+    describes (an explicit stack of cells: (point indices, edge indices))."""
+    x1, y1, x2, y2 = edges
+    ylo, yhi = np.minimum(y1, y2), np.maximum(y1, y2)
+    xlo, xhi = np.minimum(x1, x2), np.maximum(x1, x2)
+    span = max(float(np.max(np.abs(U))), float(np.nanmax(np.abs([xlo, xhi, ylo, yhi]))))
+    m = 1e-9 * (1.0 + span)       # far above the crossing's rounding (a few ulps of span)
+    odd = np.zeros(len(U), dtype=bool)
+    live = np.flatnonzero(ylo < yhi)            # a level edge (or NaN) crosses no ray
+    stack = [(np.arange(len(U)), live)]
+    while stack:
+        if tick is not None:
+            tick()
+        P, E = stack.pop()
+        px, py = U[P, 0], U[P, 1]
+        xa, xb, ya, yb = px.min(), px.max(), py.min(), py.max()
+        E = E[(ylo[E] <= yb) & (yhi[E] > ya)]
+        right = xlo[E] > xb + m
+        if right.any():
+            # wholly right of every point: crosses the ray of each point in its y range
+            R = E[right]
+            c = (np.searchsorted(np.sort(ylo[R]), py, side="right")
+                 - np.searchsorted(np.sort(yhi[R]), py, side="right"))
+            odd[P] ^= (c % 2).astype(bool)
+            E = E[~right]
+        E = E[xhi[E] >= xa - m]                   # wholly left: crosses none
+        if not len(E):
+            continue
+        order = np.argsort(py, kind="stable")
+        ys = py[order]
+        lo = np.searchsorted(ys, ylo[E], side="left")
+        hi = np.searchsorted(ys, yhi[E], side="left")
+        total = int(np.maximum(hi - lo, 0).sum())
+        few = INSIDE_LEAF + INSIDE_PER_ITEM * (len(P) + len(E))
+        if len(P) == 1 or total <= min(INSIDE_CHUNK, few):
+            odd[P] ^= _inside_direct(U[P], (x1[E], y1[E], x2[E], y2[E]), order, lo, hi)
+            continue
+        along = px if xb - xa >= yb - ya else py
+        k = len(P) // 2
+        half = np.argpartition(along, k)
+        stack.append((P[half[:k]], E))
+        stack.append((P[half[k:]], E))
+    return odd
 
 
 def _edges(loops) -> tuple:

@@ -119,28 +119,39 @@ def loop_shape(segments) -> dict:
     return {**doc, "lines": len(lines), "arcs": len(arcs), "curves": n_other}
 
 
-def _own_shapes(output: Output) -> list:
-    """The Stars and ArcSlots drawn as faces of some structure, with their faces' boxes:
-    ``[(geometry, (x0, y0, x1, y1))]`` (mm)."""
-    d = output.drawing
-    if d is None:
-        return []
-    return [(g, f.bounds()) for faces in d.own.values() for g, f in faces
-            if g.kind in ("Star", "ArcSlot")]
+class _Shapes:
+    """The Stars and ArcSlots drawn as faces of some structure (:attr:`Drawing.own`), with
+    their faces' boxes (mm), sorted by the box's left edge: a loop looks only at those whose
+    left edge is within its tolerance of its own (a binary search), not at every one (4,000
+    stars cut as holes were 16 million box comparisons)."""
+
+    def __init__(self, output: Output):
+        d = output.drawing
+        got = [] if d is None else [(f.bounds(), g) for faces in d.own.values()
+                                    for g, f in faces if g.kind in ("Star", "ArcSlot")]
+        got.sort(key=lambda item: item[0][0])
+        self.items = got
+        self.left = [b[0] for b, _ in got]
+
+    def near(self, x0: float, tol: float):
+        import bisect
+        a = bisect.bisect_left(self.left, x0 - tol)
+        b = bisect.bisect_right(self.left, x0 + tol)
+        return [(g, box) for box, g in self.items[a:b]]
 
 
-def _primitive(doc: dict, segments, shapes: list) -> dict:
+def _primitive(doc: dict, segments, shapes: "_Shapes") -> dict:
     """``doc`` (:func:`loop_shape` of ``segments``) named after the primitive that drew the
-    loop, when one of ``shapes`` (:func:`_own_shapes`) did: a face with the loop's box (to
+    loop, when one of ``shapes`` (:class:`_Shapes`) did: a face with the loop's box (to
     twice the chord tolerance: its polygon's vertices lie on the loop) whose kind and solved
     parameters the segments match exactly (a Star: 2 n lines whose ends alternate at the
     outer and inner radius about their mean; an ArcSlot: four arcs of radii R + w/2, w/2,
     R - w/2, w/2).  Else ``doc`` unchanged."""
-    if not shapes:
+    if not shapes.items:
         return doc
     x0, y0, x1, y1 = _box(segments)
     tol = 2 * CHORD_TOL + 1e-6 * max(1.0, abs(x0), abs(y0), abs(x1), abs(y1))
-    for g, (a, b, c, e) in shapes:
+    for g, (a, b, c, e) in shapes.near(x0, tol):
         if max(abs(a - x0), abs(b - y0), abs(c - x1), abs(e - y1)) > tol:
             continue
         got = _star(segments, g) if g.kind == "Star" else _arc_slot(segments, g)
@@ -210,23 +221,38 @@ def _centroid(shape) -> tuple[float, float]:
     return (sx / a, sy / a) if a else (0.0, 0.0)
 
 
-def symmetries(p: PartOutline) -> dict:
+def symmetries(p: PartOutline, check=None) -> dict:
     """``{"center": [x, y], "mirror_x": bool, "mirror_y": bool, "rotation": n}`` of part
     ``p``: mirror about the horizontal line through its centroid (``mirror_x``: y -> -y) and
     the vertical one (``mirror_y``: x -> -x); ``rotation``: the largest n found such that a
-    turn by 360/n degrees maps it onto itself (1: none; 0: any angle, a round part)."""
+    turn by 360/n degrees maps it onto itself (1: none; 0: any angle, a round part).
+    ``check()``: called before each comparison (the deadline; it may raise)."""
     shape = p.shape
     cx, cy = _centroid(shape)
     tol = 2 * CHORD_TOL * p.perimeter + 1e-9
     base = shape.translate((-cx, -cy))
+    # A turn by t changes the second moments of area by 2 d |sin t| (d: their anisotropy), a
+    # mirror by 2 |Ixy|, and an image within `tol` mm^2 of the shape by at most tol r^2: turns
+    # and mirrors that fail this are not tried (one turn of a plate of 4,000 holes by 120
+    # degrees was a 22 s boolean no deadline interrupts)
+    sxx, syy, sxy, r2 = _moments(base)
+    d = math.hypot((sxx - syy) / 2, sxy)
+    slack = 2 * tol * r2 + 1e-9 * (abs(sxx) + abs(syy)) + 1e-12
+
+    def may_turn(degrees: float) -> bool:
+        return math.sqrt(2) * d * abs(math.sin(math.radians(degrees))) <= slack
 
     def same(other) -> bool:           # a plain bool: the perimeter may be a NumPy float
+        if check is not None:
+            check()
         return bool((base - other).area() + (other - base).area() <= tol)
 
+    mirror = 2 * abs(sxy) <= slack
     doc = {"center": _pt((cx, cy)),
-           "mirror_x": same(base.mirror((0.0, 1.0))),
-           "mirror_y": same(base.mirror((1.0, 0.0)))}
-    if same(base.rotate(57.2957795)):             # one radian: not a turn of any small order
+           "mirror_x": mirror and same(base.mirror((0.0, 1.0))),
+           "mirror_y": mirror and same(base.mirror((1.0, 0.0)))}
+    radian = 57.2957795                            # not a turn of any small order
+    if may_turn(radian) and same(base.rotate(radian)):
         doc["rotation"] = 0
         return doc
     cands = set(range(2, 13))
@@ -237,8 +263,27 @@ def symmetries(p: PartOutline) -> dict:
     if holes > 1:
         cands.add(holes)
     doc["rotation"] = next((n for n in sorted(cands, reverse=True)
-                            if same(base.rotate(360.0 / n))), 1)
+                            if may_turn(360.0 / n) and same(base.rotate(360.0 / n))), 1)
     return doc
+
+
+def _moments(shape) -> tuple[float, float, float, float]:
+    """The second moments of area of ``shape`` about the origin, ``(Ixx, Iyy, Ixy)`` =
+    (integral of x^2, of y^2, of x y) in mm^4 (holes negative), and the largest squared
+    distance of a vertex from the origin (mm^2)."""
+    sxx = syy = sxy = r2 = 0.0
+    for P in shape.to_polygons():
+        P = np.asarray(P, dtype=float)
+        if not len(P):
+            continue
+        x, y = P[:, 0], P[:, 1]
+        xn, yn = np.roll(x, -1), np.roll(y, -1)
+        cr = x * yn - xn * y
+        sxx += float((cr * (x * x + x * xn + xn * xn)).sum()) / 12
+        syy += float((cr * (y * y + y * yn + yn * yn)).sum()) / 12
+        sxy += float((cr * (x * yn + 2 * x * y + 2 * xn * yn + xn * y)).sum()) / 24
+        r2 = max(r2, float((x * x + y * y).max()))
+    return sxx, syy, sxy, r2
 
 
 def _text_items(output: Output) -> list[dict]:
@@ -341,25 +386,46 @@ def notches(output: Output, part, cuts_within: dict | None = None) -> list[dict]
     return out
 
 
-def describe(output: Output) -> dict:
+def describe(output: Output, deadline=None) -> dict:
     """The description of ``output`` as JSON-ready data: ``{"units": "mm", "parts": [...],
-    "engravings": [...]}`` (engravings outside every part).  Each part: ``name``, ``kind``,
-    ``size`` [w, h], ``box`` [x0, y0, x1, y1], ``area`` mm^2, ``outline`` (its outer loops'
-    kinds, :func:`loop_shape`), ``openings`` (each inner loop's kind, centre and size),
-    ``engravings``, ``copies`` (the other parts of the same shape), ``symmetry``
-    (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None) and
-    ``notches`` (:func:`notches`) and ``through_cuts`` (each cut along a curve of a ``cut``
-    structure: ``{"name", "kind", "from", "to", "length"}``, mm)."""
-    rows = parts_list(output)
+    "engravings": [...], "count": {"parts", "shapes"}}`` (engravings outside every part;
+    ``count``: how many parts and distinct shapes, :func:`.inventory.parts_list`).
+
+    Each part described: ``name``, ``kind``, ``size`` [w, h], ``box`` [x0, y0, x1, y1],
+    ``area`` mm^2, ``outline`` (its outer loops' kinds, :func:`loop_shape`), ``openings``
+    (each inner loop's kind, centre and size), ``engravings``, ``symmetry``
+    (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None),
+    ``notches`` (:func:`notches`), ``through_cuts`` (each cut along a curve of a ``cut``
+    structure: ``{"name", "kind", "from", "to", "length"}``, mm), ``shape`` (its number in
+    the parts list), ``same_shape`` (how many parts have that shape, itself included) and
+    ``copies``.  A part of the same shape as one described, with no engravings, notches or
+    through-cuts of its own (nor the first) and the same material, is not described again:
+    it is one of the first's ``copies``, ``{"name", "box"}`` (its place, mm), so the
+    description grows with the distinct shapes and one place per copy (6,000 equal circles:
+    one part and 5,999 places, where every part used to list every other).  A copy that
+    differs so is described in full, with ``copy_of`` naming the first part of its shape.
+
+    ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline` (None: no wall-time
+    bound), looked at before each part; past it raises :class:`~..part.part.OutputError`
+    (its ``budget`` naming the part's structure), like the exact outlines."""
+    from ...limits import OutOfBudget
+    from ..part.part import OutputError
+    from .inventory import structure_of
+    rows = parts_list(output, deadline)
+    try:
+        return _describe(output, rows, deadline)
+    except OutOfBudget as ex:
+        if ex.where is None and output.parts:
+            ex.where = structure_of(output, output.parts[0].name)
+        raise OutputError(f"the description ran out of time: {ex.what}", ex) from None
+
+
+def _describe(output: Output, rows: list[dict], deadline) -> dict:
+    from .inventory import structure_of
     texts = _text_items(output)
-    shapes = _own_shapes(output)
+    shapes = _Shapes(output)
     parts = []
     kerfs = getattr(output.drawing, "kerf", None) or {}
-    # what each part is asked for, grouped once (a sheet of 2,000 parts asked every row,
-    # text and cut for each part: parts^2)
-    same_shape: dict = {}
-    for r in rows:
-        same_shape.setdefault(r["shape"], []).append(r)
     texts_of: dict = {}
     for t in texts:
         texts_of.setdefault(t["part"], []).append(t)
@@ -368,26 +434,47 @@ def describe(output: Output) -> dict:
     strokes_of: dict = {}
     for st in output.cuts:
         strokes_of.setdefault(st.part, []).append(st)
+    first: dict = {}          # shape number -> the first part of it described
+    plain: dict = {}          # (shape, material) -> the first described with nothing of its own
     for p, row in zip(output.parts, rows):
+        where = structure_of(output, p.name)
+
+        def check(where=where):
+            if deadline is not None:
+                deadline.check("the description", where)
+        check()
         x0, y0, x1, y1 = part_box(p)
+        box = [_r(x0), _r(y0), _r(x1), _r(y1)]
+        material = (_r(p.thickness if p.thickness is not None else DEFAULT_THICKNESS),
+                    p.thickness is not None, _r(kerfs[p.name]) if p.name in kerfs else None)
+        engraved = texts_of.get(p.name, [])
+        through = _through(strokes_of.get(p.name, ()))
+        cut_in = notches(output, p, cuts_within)
+        own = bool(engraved or through or cut_in)
+        lead = plain.get((row["shape"], material))
+        if lead is not None and not own:
+            lead["copies"].append({"name": p.name, "box": box})
+            continue
         outer = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
                  for lp in p.loops if not lp.is_hole]
         openings = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
                     for lp in p.loops if lp.is_hole]
         openings.sort(key=lambda o: (-o["center"][1], o["center"][0]))
-        copies = [r["path"] for r in same_shape[row["shape"]] if r is not row]
-        parts.append({"name": p.name, "kind": p.kind, "size": [_r(x1 - x0), _r(y1 - y0)],
-                      "box": [_r(x0), _r(y0), _r(x1), _r(y1)], "area": _r(abs(p.area)),
-                      "outline": outer, "openings": openings,
-                      "engravings": texts_of.get(p.name, []),
-                      "copies": copies, "symmetry": symmetries(p),
-                      "thickness": _r(p.thickness if p.thickness is not None
-                                      else DEFAULT_THICKNESS),
-                      "thickness_set": p.thickness is not None,
-                      "kerf": _r(kerfs[p.name]) if p.name in kerfs else None,
-                      "notches": notches(output, p, cuts_within),
-                      "through_cuts": _through(strokes_of.get(p.name, ()))})
-    return {"units": "mm", "parts": parts, "engravings": texts_of.get("", [])}
+        doc = {"name": p.name, "kind": p.kind, "size": [_r(x1 - x0), _r(y1 - y0)],
+               "box": box, "area": _r(abs(p.area)), "outline": outer, "openings": openings,
+               "engravings": engraved, "symmetry": symmetries(p, check),
+               "thickness": material[0], "thickness_set": material[1], "kerf": material[2],
+               "notches": cut_in, "through_cuts": through,
+               "shape": row["shape"], "same_shape": row["copies"], "copies": []}
+        if row["shape"] in first:
+            doc["copy_of"] = first[row["shape"]]
+        else:
+            first[row["shape"]] = p.name
+        if not own:
+            plain[(row["shape"], material)] = doc
+        parts.append(doc)
+    return {"units": "mm", "parts": parts, "engravings": texts_of.get("", []),
+            "count": {"parts": len(rows), "shapes": len({r["shape"] for r in rows})}}
 
 
 def _through(strokes) -> list[dict]:
@@ -488,13 +575,24 @@ def describe_text(doc: dict) -> str:
                        f"{_at(c['to'])}, {_n(c['length'])} mm (cut along, no width)")
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
+        if p.get("copy_of"):
+            out.append(f"  the same shape as `{p['copy_of']}` (described again: engravings, "
+                       "cuts or material of its own)")
         if p["copies"]:
-            out.append("  same shape as: " + ", ".join(f"`{c}`" for c in p["copies"]))
+            k = len(p["copies"])
+            out.append(f"  {k} more part{'s' if k != 1 else ''} of this shape (copies, not "
+                       "described again), at:")
+            for c in p["copies"]:
+                x0, y0, x1, y1 = c["box"]
+                out.append(f"    `{c['name']}` from ({_n(x0)}, {_n(y0)}) to ({_n(x1)}, {_n(y1)})")
         out.append("  symmetry: " + _symmetry(p["symmetry"]))
     for e in doc["engravings"]:
         out.append("engraving (no part): " + _engraving(e))
     if not doc["parts"]:
         out.append("no parts")
+    elif "count" in doc:
+        n, k = doc["count"]["parts"], doc["count"]["shapes"]
+        out.append(f"{n} part{'s' if n != 1 else ''}, {k} shape{'s' if k != 1 else ''}")
     return "\n".join(out)
 
 

@@ -64,11 +64,13 @@ def _intended(hole: Structure, owner: Structure, obj) -> bool:
     return False
 
 
-def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> None:
+def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
+                          tick=lambda: None) -> None:
     """W0512 for hole ``h``: the faces one statement draws several times (in a loop) that
     overlap or touch, so they cut fewer openings than the statement draws (a drill gauge of
     ten holes with nine openings).  Faces of different statements (a keyhole's circle and
-    slot) are one opening by design and are not compared."""
+    slot) are one opening by design and are not compared.  ``tick()``: before each pair's
+    boolean (the deadline)."""
     by_stmt: dict = {}
     for g, f in d.own.get(h, []):
         if g.span is not None and f is not None and not f.is_empty():
@@ -80,6 +82,7 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> Non
         boxes = np.array([f.bounds() for f in shapes], dtype=float)
         merges = []
         for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+            tick()
             common = shapes[i] ^ shapes[j]
             a = _area(common)
             if a > 1e-9:
@@ -103,14 +106,15 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink) -> Non
 
 
 def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
-                               t: float = MIN_WALL) -> None:
+                               t: float = MIN_WALL, tick=lambda: None) -> None:
     """W0512 for hole ``h``: two circles drawn by DIFFERENT statements of the hole that
     overlap partly (neither inside the other), so the hole cuts one opening where the program
     draws two round holes (a drill gauge whose circles are written one by one, two of them
     too close).  Only circles are compared: other faces of one hole overlap by design (a
     keyhole's circle and slot, a cross of two rectangles), and a figure-eight of two circles
     is drawn as a Slot when it is meant.  The copies of one statement are
-    :func:`_check_repeated_faces`'s.  The pairs come from :func:`.nearby.box_pairs`."""
+    :func:`_check_repeated_faces`'s.  The pairs come from :func:`.nearby.box_pairs`;
+    ``tick()`` is called before each pair's boolean (the deadline)."""
     faces = [(g, f) for g, f in d.own.get(h, [])
              if g.kind == "Circle" and f is not None and not f.is_empty()]
     if len(faces) < 2:
@@ -122,6 +126,7 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
     for i, j in sorted(map(tuple, box_pairs(boxes))):
         if faces[i][0].span == faces[j][0].span:
             continue                                   # copies of one statement: W0512 above
+        tick()
         common = shapes[i] ^ shapes[j]
         a = _area(common)
         if a <= MIN_AREA or a >= (1 - 1e-6) * min(areas[i], areas[j]):
@@ -656,11 +661,12 @@ def _report_refilled(a: _Openings, inner: int, outer: int, area: float, refill, 
 
 
 def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
-                owner_areas: dict | None = None) -> str | None:
+                owner_areas: dict | None = None, tick=lambda: None) -> str | None:
     """W0501-W0503 for one cut; ``local(part, region)``: the part's final shape near
     ``region`` (:class:`_Near`), else the whole final shape is intersected;
     ``owner_areas``: the owners' final areas by structure, filled as they are taken (a plate's
-    area is O(its vertices): once per hole, it made 5,000 holes quadratic, issue 38)."""
+    area is O(its vertices): once per hole, it made 5,000 holes quadratic, issue 38);
+    ``tick()``: before each boolean with a shape that may refill it (the deadline)."""
     h, s = cut.hole, cut.owner
     hole_shape = d.shapes.get(h)
     whole = _area(hole_shape)
@@ -701,6 +707,7 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     while node is not part and node.parent is not None:
         a = node.parent
         for name, span, shp, obj in _contributors(d, a, skip=node, objects=True):
+            tick()
             if _significant(_area(cut.region ^ shp), cut_area):
                 into = allowed if _intended(h, s, obj) else groups   # AllowOverlap(hole, this)
                 key = (span, isinstance(obj, Structure)) if span is not None else id(obj)

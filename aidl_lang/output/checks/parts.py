@@ -376,11 +376,13 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
                           -1.0))
 
 
-def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
+def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> None:
     """W0109 for a hole declared in an assembly (a part of its own, so it cuts nothing; issue
     61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
     (the most overlap, one whose name the hole's names first) and carrying the fix that
-    cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly."""
+    cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly.
+    ``deadline`` (:class:`~aidl_lang.limits.Deadline`): looked at for each hole and every
+    256 solids it is compared with (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
     holes = [p for p in drawing.parts if p.kind == "hole"]
     if not holes:
         return
@@ -392,7 +394,9 @@ def check_stray_holes(sink: DiagnosticSink, drawing: Drawing) -> None:
         home = h.parent
         best, best_key = None, None
         hx0, hy0, hx1, hy1 = hp.shape.bounds()
-        for sp in solids:
+        for k, sp in enumerate(solids):
+            if deadline is not None and k % 256 == 0:
+                deadline.check("the shape checks", h)
             t = drawing.part_of.get(sp.name)
             if t is None or not t.is_within(home):
                 continue

@@ -524,10 +524,10 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     across = (foot - V[v])[:, ::-1] * np.array([1.0, -1.0])
     across *= 1e-3 / np.maximum(np.hypot(*across.T), 1e-300)[:, None]
     edges = _edges(loops)
-    empty = ~_inside(mid, edges)          # and where the middle is inside, either side
+    empty = ~_inside(mid, edges, tick)    # and where the middle is inside, either side
     full = np.flatnonzero(~empty)
-    empty[full] = ~(_inside(mid[full] + across[full], edges)
-                    & _inside(mid[full] - across[full], edges))
+    empty[full] = ~(_inside(mid[full] + across[full], edges, tick)
+                    & _inside(mid[full] - across[full], edges, tick))
     v, sg, dist, foot, mid = v[empty], sg[empty], dist[empty], foot[empty], mid[empty]
     if not len(v):
         return
