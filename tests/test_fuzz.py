@@ -524,6 +524,15 @@ def write_malformed_dxf(path, entities):
                     [w] * max(n, 1)
         elif e[0] == "line":
             msp.add_line((0, 0), (e[1], 0))
+        elif e[0] == "hatch":              # an edge path of one ellipse of axis ratio e[1]
+            edge = msp.add_hatch().paths.add_edge_path()
+            edge.add_ellipse((50, 25), (10, 0), 0.5)
+            edge.edges[0].ratio = e[1]
+        elif e[0] == "lwpolyline":         # vertices (x, y, start width, end width, bulge)
+            msp.add_lwpolyline(e[1], format="xyseb", close=e[2])
+        elif e[0] == "arc":
+            a = msp.add_arc((50, 25), e[1], 0, 90)
+            a.dxf.__dict__["end_angle"] = e[2]
         else:
             unknown += 1
     doc.saveas(path)
@@ -541,7 +550,9 @@ def write_malformed_dxf(path, entities):
 def malformed_entities(draw):
     out = []
     for _ in range(draw(st.integers(1, 3))):
-        kind = draw(st.sampled_from(["spline", "spline", "spline", "unknown", "line"]))
+        kind = draw(st.sampled_from(["spline", "spline", "spline", "unknown", "line", "hatch",
+                                     "lwpolyline", "arc"]))
+        odd = st.sampled_from([0.0, -1.0, 1.0, 0.5, 1e300, float("inf"), float("nan")])
         if kind == "spline":
             fit = draw(st.lists(st.sampled_from([(40, 10), (50, 30), (60, 10), (50, 30)]),
                                 max_size=4))
@@ -550,6 +561,14 @@ def malformed_entities(draw):
                         draw(st.sampled_from([0, 1, 2.5, -1])), tuple(fit)))
         elif kind == "line":
             out.append(("line", draw(st.sampled_from([10.0, 0.0, 1e300, float("inf")]))))
+        elif kind == "hatch":
+            out.append(("hatch", draw(odd)))
+        elif kind == "arc":
+            out.append(("arc", draw(odd), draw(odd)))
+        elif kind == "lwpolyline":
+            pts = draw(st.lists(st.tuples(st.sampled_from([0.0, 10.0]), st.sampled_from(
+                [0.0, 10.0]), st.just(0.0), st.just(0.0), odd), max_size=4))
+            out.append(("lwpolyline", pts, draw(st.booleans())))
         else:
             out.append(("unknown",))
     return out

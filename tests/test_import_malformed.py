@@ -198,3 +198,18 @@ def test_an_unclamped_spline_is_read_as_the_same_curve(tmp_path):
 
 def _bern(u):
     return [(1 - u) ** 3, 3 * u * (1 - u) ** 2, 3 * u * u * (1 - u), u ** 3]
+
+
+@pytest.mark.parametrize("ratio", [0.0, float("nan")])
+def test_a_hatch_ellipse_edge_of_no_width_is_counted_not_a_traceback(tmp_path, ratio):
+    """A HATCH edge path holding an ELLIPSE of axis ratio 0: ZeroDivisionError inside ezdxf
+    (found by the widened fuzz).  Now the hatch is skipped and counted, the rest read."""
+    doc, msp = plate()
+    h = msp.add_hatch()
+    p = h.paths.add_edge_path()
+    p.add_ellipse((50, 25), (10, 0), 0.5)
+    p.edges[0].ratio = ratio
+    d = read_drawing(doc_bytes(doc, tmp_path), "s.dxf")
+    the_rest_is_read(d)
+    (n,) = [n.message for n in d.notes if "HATCH" in n.message]
+    assert "1 HATCH of a boundary ELLIPSE: a semi-axis not above 0" in n, n

@@ -760,7 +760,7 @@ def _hatch_paths(e) -> list:
     edges, in the hatch's plane (ezdxf's ``virtual_boundary_path_entities``, whose polyline
     paths fail in ezdxf 1.4)."""
     from ezdxf.entities import LWPolyline
-    from ezdxf.entities.boundary_paths import EdgePath, PolylinePath
+    from ezdxf.entities.boundary_paths import EdgePath, EdgeType, PolylinePath
     from ezdxf.explode import _virtual_edge_path
     attribs = {"layer": e.dxf.get("layer", "0")}
     elevation = float(e.dxf.elevation.z)
@@ -775,7 +775,14 @@ def _hatch_paths(e) -> list:
             p.closed = path.is_closed
             out.append([p])
         elif isinstance(path, EdgePath):
-            out.append(_virtual_edge_path(path, dict(attribs), ocs, elevation))
+            for edge in path.edges:         # ezdxf divides by an ellipse edge's axis ratio
+                if edge.type == EdgeType.ELLIPSE and not 0.0 < float(edge.ratio) < math.inf:
+                    raise _Skip("a boundary ELLIPSE: a semi-axis not above 0", cls="number")
+            try:
+                out.append(_virtual_edge_path(path, dict(attribs), ocs, elevation))
+            except (ArithmeticError, ValueError) as ex:
+                raise _Skip(f"a boundary path that gives no curve ({ex})", cls="number") \
+                    from None
     return out
 
 
