@@ -254,6 +254,8 @@ REGRESSIONS = [
     pytest.param('import "std/shapes.aidl" as s\nsolid t { x = s }', id="namespace-value"),
     pytest.param("solid s { for i in range(3) { solid t { } }; Above(t[0], t[1]) }",
                  id="empty-structures-above"),
+    pytest.param("solid s { c = Circle(center=polar((0, 0), (0, 0), 30 deg), radius=3) }",
+                 id="polar-point-radius"),          # found by the fuzz of issue 70
 ]
 
 

@@ -68,3 +68,20 @@ def test_a_min_wall_whose_square_underflows_checks_nothing_and_is_ok(tmp_path, h
     from ezdxf import bbox
     box = bbox.extents(ezdxf.readfile(tmp_path / "p.dxf").modelspace())
     assert (box.size.x, box.size.y) == (pytest.approx(10, abs=1e-9), pytest.approx(10, abs=1e-9))
+
+
+# ------------------------------------------------------------------ found by the fuzz
+@pytest.mark.parametrize("arg,said", [
+    ("(0, 0), 30 deg", "argument `radius` of `polar` must be a length, got list"),
+    ("3, (1, 1)", "argument `angle` of `polar` must be an angle, got list"),
+])
+def test_polar_of_a_wrong_kind_is_a_located_E0108_with_its_signature(tmp_path, arg, said):
+    """AttributeError: 'NoneType' object has no attribute 'signature' (the hint looked the
+    function up among the shapes and constraints)."""
+    (tmp_path / "p.aidl").write_text(
+        f"solid plate {{\n    c = Circle(center=polar((0, 0), {arg}), radius=3)\n}}\n")
+    r = aidl("check", "p.aidl", cwd=tmp_path)
+    no_internal(r)
+    assert r.returncode == 1
+    assert f"p.aidl:2:23: error[E0108]: {said}" in r.stderr, r.stderr
+    assert "= hint: polar(center, radius, angle)" in r.stderr
