@@ -802,7 +802,8 @@ role written as through-cuts (`cut`), and an SVG path's data that stops at a num
 cannot be read (`inf`, `nan`), with its place.  A DXF entity of a type the reader does not
 know is skipped and counted by type; a SPLINE whose definition gives no curve (a degree
 below 1, too few control points, a count of knots or weights that does not match them, knots
-that decrease, a weight not above 0, fewer than two fit points or two at one place) is
+that decrease, a knot repeated so often that the curve breaks apart, a weight not above 0,
+fewer than two fit points or two at one place) is
 skipped naming its handle and line and what is wrong; the rest of the drawing is read (in
 `aidl import`, a layer of only skipped entities is said, not dropped).
 

@@ -128,6 +128,12 @@ BAD = {
     "one fit point": (lambda m: m.add_spline(fit_points=[(40, 10)]),
                       "one fit point and no control points: a curve needs two or more"),
     "nothing": (lambda m: m.add_spline(), "no control points and no fit points"),
+    # a break inside: ezdxf's Bézier pieces of it joined the two halves with a false span
+    "knot repeated inside": (lambda m: spline(m, ctrl=[(40 + 4 * i, 10 + 9 * (i % 2))
+                                                       for i in range(8)],
+                                              knots=(0,) * 4 + (0.5,) * 4 + (1,) * 4),
+                             "a knot repeated 4 times: the curve breaks apart there (degree 3 "
+                             "allows 3 inside its range, 4 at its ends)"),
 }
 
 
@@ -213,3 +219,63 @@ def test_a_hatch_ellipse_edge_of_no_width_is_counted_not_a_traceback(tmp_path, r
     the_rest_is_read(d)
     (n,) = [n.message for n in d.notes if "HATCH" in n.message]
     assert "1 HATCH of a boundary ELLIPSE: a semi-axis not above 0" in n, n
+
+
+def _de_boor(ctrl, deg, knots, t):
+    """The point at ``t`` of the B-spline (``ctrl``, degree ``deg``, ``knots``), by de Boor's
+    algorithm (written here: ezdxf's own evaluation is off for knots that do not start at 0)."""
+    n = len(ctrl)
+    k = max(i for i in range(deg, n) if knots[i] <= t and knots[i] < knots[n])
+    d = [list(ctrl[j + k - deg]) for j in range(deg + 1)]
+    for r in range(1, deg + 1):
+        for j in range(deg, r - 1, -1):
+            den = knots[j + 1 + k - r] - knots[j + k - deg]
+            al = 0.0 if den == 0 else (t - knots[j + k - deg]) / den
+            d[j] = [(1 - al) * d[j - 1][c] + al * d[j][c] for c in range(2)]
+    return d[deg]
+
+
+def test_every_spline_read_is_the_curve_its_knots_give(tmp_path):
+    """Random knot vectors of the right count (clamped or not, repeated knots): each SPLINE is
+    either read as the curve de Boor's algorithm gives (within 1e-6 mm at 41 parameters) or
+    left out with a note; before, a knot repeated past the degree gave an IndexError or a
+    wrong curve (ezdxf's Bézier pieces of a spline that breaks apart)."""
+    import math
+    import random
+    rnd = random.Random(4)
+    read = left_out = 0
+    for _ in range(120):
+        deg = rnd.randint(1, 3)
+        n = rnd.randint(deg + 1, 7)
+        knots = sorted(rnd.choice([0, 0.5, 1, 2, 3]) for _ in range(n + deg + 1))
+        ctrl = [(rnd.uniform(0, 50), rnd.uniform(0, 50)) for _ in range(n)]
+        doc = ezdxf.new("R2010")
+        doc.units = 4
+        s = doc.modelspace().add_spline()
+        s.dxf.degree = deg
+        s.control_points, s.knots = ctrl, knots
+        try:
+            d = read_drawing(doc_bytes(doc, tmp_path), "s.dxf")
+        except Exception as e:                # nothing else in the drawing: its E0132
+            assert type(e).__name__ == "DrawingError" and "SPLINE" in str(e), e
+            left_out += 1
+            continue
+        (seg,) = [g for p in d.paths for g in p.segments] + \
+            [g for o in d.outlines for g in o.segments]
+        read += 1
+        a, b = knots[deg], knots[n]
+        steps = sorted({k for k in knots if a <= k <= b})      # one Bézier piece a knot step
+        spans = seg.spans
+        assert len(spans) == len(steps) - 1
+        for j in range(41):
+            t = a + (b - a) * j / 40
+            i = min(max(k for k in range(len(steps) - 1) if steps[k] <= t), len(spans) - 1)
+            u = (t - steps[i]) / (steps[i + 1] - steps[i])
+            got = _bez(spans[i], u)
+            assert math.dist(got, _de_boor(ctrl, deg, knots, t)) < 1e-6, (deg, knots, t, got)
+    assert read > 40 and left_out > 20
+
+
+def _bez(b, u):
+    c = _bern(u)
+    return (sum(k * p[0] for k, p in zip(c, b)), sum(k * p[1] for k, p in zip(c, b)))

@@ -624,7 +624,9 @@ def _check_spline(e, P) -> None:
     wrong with the definition of SPLINE ``e`` before ezdxf's tools compute with it (they raise
     ValueError, TypeError, IndexError or LinAlgError): a degree below 1 (past 3: no exact form
     here), fewer control points than the degree needs, a count of knots or weights that does
-    not match the control points, knots that decrease or span nothing, a weight not above 0;
+    not match the control points, knots that decrease or span nothing, a knot repeated past
+    the degree inside the range (the curve breaks apart: ezdxf's Bézier pieces of it are
+    wrong) or past degree + 1 at an end, a weight not above 0;
     without control points, fewer than two fit points or two consecutive ones at one place
     (``P``: a point in mm)."""
     deg = e.dxf.get("degree", 3)
@@ -654,6 +656,13 @@ def _check_spline(e, P) -> None:
         raise _Skip("knots that decrease", cls="spline", named=True)
     if knots and not knots[n] > knots[deg]:
         raise _Skip("knots that span no parameter range", cls="spline", named=True)
+    most = max((knots.count(k) for k in set(knots)), default=0)
+    inner = max((knots.count(k) for k in set(knots) if knots and knots[deg] < k < knots[n]),
+                default=0)
+    if most > deg + 1 or inner > deg:     # past degree + 1 (degree, inside): it breaks apart
+        raise _Skip(f"a knot repeated {max(most, inner)} times: the curve breaks apart there "
+                    f"(degree {deg} allows {deg} inside its range, {deg + 1} at its ends)",
+                    cls="spline", named=True)
     if w and len(w) != n:
         raise _Skip(f"{_plural(len(w), 'weight')} for {n} control points", cls="spline",
                     named=True)
