@@ -600,3 +600,52 @@ def test_malformed_dxf_entities_are_notes_or_a_drawing_error(entities):
     c = check_result(src, prog)
     assert all(d.span is not None for d in c.sink.items), [(d.code, d.message)
                                                            for d in c.sink.items]
+
+
+# malformed SVG elements: a drawing (what was left out in notes) or a DrawingError
+SVG_ELEMENTS = ['<path d="{d}"/>', '<circle cx="{a}" cy="{b}" r="{c}"/>',
+                '<ellipse cx="{a}" cy="{b}" rx="{c}" ry="{a}"/>',
+                '<rect x="{a}" y="{b}" width="{c}" height="{a}" rx="{b}"/>',
+                '<polygon points="{d}"/>', '<polyline points="{d}"/>',
+                '<line x1="{a}" y1="{b}" x2="{c}" y2="{a}"/>',
+                '<g transform="{t}"><path d="{d}"/></g>',
+                '<text x="{a}" y="{b}" font-size="{c}">hi</text>']
+SVG_WORDS = ["M", "m", "L", "l", "H", "v", "C", "s", "Q", "T", "A", "a", "Z", "z", "0", "1", "-1",
+             "10", "1e400", "nan", "0.5", ",", " ", "1e-300", "360", ".5.5", "1e", "+"]
+SVG_NUMBERS = ["0", "1", "-1", "10", "1e400", "nan", "inf", "", "abc", "1e-300", "50%"]
+SVG_TRANSFORMS = ["scale(0)", "scale(1e400)", "rotate(nan)", "matrix(0 0 0 0 0 0)",
+                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)"]
+
+
+@st.composite
+def malformed_svgs(draw):
+    body = []
+    for _ in range(draw(st.integers(1, 3))):
+        body.append(draw(st.sampled_from(SVG_ELEMENTS)).format(
+            d=" ".join(draw(st.lists(st.sampled_from(SVG_WORDS), max_size=12))),
+            a=draw(st.sampled_from(SVG_NUMBERS)), b=draw(st.sampled_from(SVG_NUMBERS)),
+            c=draw(st.sampled_from(SVG_NUMBERS)), t=draw(st.sampled_from(SVG_TRANSFORMS))))
+    w = draw(st.sampled_from(["100mm", "100", "0", "abc", "100in"]))
+    vb = draw(st.sampled_from(["0 0 100 100", "", "0 0 0 0", "nan 0 1 1"]))
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{w}" viewBox="{vb}">'
+            f'<rect x="0" y="0" width="50" height="50"/>{"".join(body)}</svg>')
+
+
+@settings(deadline=None, max_examples=150, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(malformed_svgs())
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 '
+         '100"><path d="z c z -0 A h c t"/></svg>')
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="">'
+         '<text x="1e400" y="10" font-size="1e-300">hi</text></svg>')
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100in" height="100in" viewBox="">'
+         '<g transform="scale(-1 1)"><path d="+ 1 m 1e 0.5"/></g><rect x="50%" y="1e-300" '
+         'width="1e-300" height="50%" rx="1e-300"/></svg>')
+def test_malformed_svg_elements_are_notes_or_a_drawing_error(svg):
+    """Found by this fuzz: path data before its first moveto (TypeError), a text at an
+    infinite place (an internal exception), a length in % with no viewBox (ValueError)."""
+    from aidl_lang.drawing import DrawingError, read_drawing
+    try:
+        read_drawing(svg.encode(), "f.svg")
+    except DrawingError as e:
+        assert e.code in CODES and e.message

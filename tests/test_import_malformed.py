@@ -279,3 +279,39 @@ def test_every_spline_read_is_the_curve_its_knots_give(tmp_path):
 def _bez(b, u):
     c = _bern(u)
     return (sum(k * p[0] for k, p in zip(c, b)), sum(k * p[1] for k, p in zip(c, b)))
+
+
+# ------------------------------------------------------------------ SVG, found by a fuzz
+def _svg(el, viewbox=' viewBox="0 0 100 100"', width="100mm"):
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{width}"'
+            f'{viewbox}><rect x="0" y="0" width="50" height="50"/>{el}</svg>').encode()
+
+
+@pytest.mark.parametrize("d", ["z L 1 1 2 2", "  L 1 1 2 2", "z c z -0 A h c t"])
+def test_svg_path_data_not_starting_with_a_moveto_is_noted(d):
+    """TypeError: 'NoneType' object is not subscriptable (svgelements gives the segments
+    before the first moveto no start point).  SVG 1.1 8.3.9: such data is in error from its
+    start; it is read up to there (nothing) with the note the other bad data gets."""
+    got = read_drawing(_svg(f'<path d="{d}"/>'), "f.svg")
+    assert len(got.outlines) == 1 and not got.paths
+    (n,) = [n.message for n in got.notes]
+    assert "a path's data is read up to it: <path> at line 1" in n, n
+
+
+def test_svg_text_at_an_infinite_place_is_E0130_naming_it():
+    """_OutOfRange (an internal exception) escaped from the text reader; a shape's is E0130."""
+    with pytest.raises(Exception) as e:
+        read_drawing(_svg('<text x="1e400" y="10" font-size="3">hi</text>'), "f.svg")
+    assert type(e.value).__name__ == "DrawingError" and e.value.code == "E0130"
+    assert "<text> of `f.svg` has a coordinate that is infinite" in e.value.message
+
+
+def test_svg_shape_of_a_length_svgelements_cannot_resolve_is_skipped_and_counted():
+    """ValueError "% units were not determined" (a rect at x="50%" in a file with an empty
+    viewBox): now the rect is skipped and counted, the rest read."""
+    got = read_drawing(_svg('<g transform="scale(-1 1)"><path d="M 1 1 L 5 5"/></g>'
+                            '<rect x="50%" y="0" width="1" height="50%" rx="1"/>',
+                            viewbox=' viewBox=""', width="100in"), "f.svg")
+    assert len(got.outlines) == 1
+    assert any("1 rect with a length that cannot be resolved (% units were not determined)"
+               in n.message for n in got.notes), [n.message for n in got.notes]
