@@ -819,7 +819,13 @@ and SVG text are engraved); a DXF without `$INSUNITS` is read as millimetres (gi
 What the import changed is counted too: gaps closed, paths closed where their end crosses
 their start (the overshoot trimmed), small self-crossing loops cut off, open paths on a cut
 role written as through-cuts (`cut`), and an SVG path's data that stops at a number that
-cannot be read (`inf`, `nan`), with its place.
+cannot be read (`inf`, `nan`) or does not begin with a moveto, with its place.  A DXF entity of a type the reader does not
+know is skipped and counted by type; a SPLINE whose definition gives no curve (a degree
+below 1, too few control points, a count of knots or weights that does not match them, knots
+that decrease, a knot repeated so often that the curve breaks apart, a weight not above 0,
+fewer than two fit points or two at one place) is
+skipped naming its handle and line and what is wrong; the rest of the drawing is read (in
+`aidl import`, a layer of only skipped entities is said, not dropped).
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

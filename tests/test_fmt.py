@@ -323,6 +323,27 @@ def test_fmt_handles_the_deep_programs_the_compiler_handles(expr, tmp_path):
     assert r.returncode == 0 and "E0302" not in r.stderr, r.stderr[-500:]
 
 
+@pytest.mark.parametrize("nested", [False, True])
+def test_fmt_of_a_program_too_deep_for_check_gives_checks_located_E0302(tmp_path, nested):
+    """A 20,000-term `1+1+...`: `aidl check` names the statement (E0302 at its line and
+    column); `aidl fmt` said only "aidl: error[E0302]: the program is nested too deeply to
+    compile", with no place.  Now the same located error, and the file is left as it is."""
+    chain = "+".join(["1"] * 20000)
+    src = (f"solid P {{\n  r = Circle((0, 0), {chain})\n}}\n" if not nested else
+           f"solid P {{\n  for i in range(2) {{\n    hole h {{\n"
+           f"      r = Circle((0, 0), {chain})\n    }}\n  }}\n}}\n")
+    f = tmp_path / "deep.aidl"
+    f.write_text(src)
+    at = "deep.aidl:4:7" if nested else "deep.aidl:2:3"
+    said = f"{at}: error[E0302]: expression nested too deeply"
+    for cmd in (["check"], ["fmt"], ["fmt", "--check"]):
+        r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", *cmd, "deep.aidl"],
+                           capture_output=True, text=True, timeout=300, cwd=tmp_path)
+        assert r.returncode == 1 and r.stderr.startswith(said), (cmd, r.stderr[:300])
+        assert "split it into named constants" in r.stderr and "^^^^^^" in r.stderr
+    assert f.read_text() == src
+
+
 def test_fmt_refuses_a_fifo_and_a_device_with_E0004_and_goes_on(tmp_path):
     """`aidl fmt` reads a file as `aidl check` does (issue 37: it opened a FIFO and waited
     forever, and read /dev/zero until memory ran out): each is one located E0004, the other

@@ -4,7 +4,7 @@ import functools
 import re
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from aidl_lang.codes import CODES
@@ -34,9 +34,11 @@ def check_result(src: str, path: str):
     c = compile_source(src, path)
     n_lines = src.count("\n") + 1
     for d in c.sink.items:
-        assert d.code in CODES, d.code
+        assert d.code in CODES and d.code != "E0900", d.code
         assert d.severity in ("error", "warning", "note")
-        assert d.message
+        assert d.message and "internal error" not in d.message
+        # every diagnostic located, but the empty drawing's W0104 (nothing to point at)
+        assert d.span is not None or d.code == "W0104", (d.code, d.message)
         if d.span is not None and d.span.file == path:
             s = d.span
             assert 1 <= s.line <= s.end_line <= n_lines + 1, (d.code, s)
@@ -252,6 +254,8 @@ REGRESSIONS = [
     pytest.param('import "std/shapes.aidl" as s\nsolid t { x = s }', id="namespace-value"),
     pytest.param("solid s { for i in range(3) { solid t { } }; Above(t[0], t[1]) }",
                  id="empty-structures-above"),
+    pytest.param("solid s { c = Circle(center=polar((0, 0), (0, 0), 30 deg), radius=3) }",
+                 id="polar-point-radius"),          # found by the fuzz of issue 70
 ]
 
 
@@ -280,3 +284,368 @@ def test_render_regressions(src):
     if c.ok:
         svg = to_svg(render_model(c.model))
         assert "viewBox" in svg
+
+
+# ------------------------------------------------------------------ issue 70: no internal errors
+# Mutations of programs that use the newer constructs (`cut`, `min_wall`, `CutInto`, `polar`,
+# `Mirrored` of lists), run through the command line's own `check` and `render` in process,
+# machine profiles and malformed DXF entities: each answers with located diagnostics (or a
+# one-line usage error), never a traceback, "internal error" or an unlocated diagnostic.
+SEEDS = [
+    """min_wall 0.3 mm
+solid plate {
+    r = Rectangle(center=(0, 0), width=60, height=40)
+    cut slits {
+        a = Line((-20, 0), (20, 0))
+        b = Line((-20, 5), (20, 5))
+    }
+    hole bolt {
+        c = Circle(center=polar((0, 0), 12, 30 deg), radius=3)
+    }
+    axis = Line((0, -30), (0, 30), construction=true)
+    Fixed(axis)
+    legs = [Circle((5 + 6 * i, 12), 1) for i in range(3)]
+    right = Mirrored(legs, axis)
+}
+""",
+    """assembly kit {
+    solid lid {
+        min_wall 0.5 mm
+        r = Rectangle(center=(0, 0), width=50, height=30)
+    }
+    solid base {
+        r = Rectangle(center=(70, 0), width=50, height=30)
+        cut hinge {
+            for i in range(4) {
+                l = Line((52 + 4 * i, -10), (52 + 4 * i, 10))
+            }
+        }
+    }
+    hole vent {
+        c = Circle(center=(0, 0), radius=5)
+    }
+    CutInto(vent, lid)
+    m = Mirrored([lid], Line((35, -20), (35, 20), construction=true))
+}
+""",
+]
+# what a mutation puts in place of a number, in place of a name, and as a line of its own
+NEW_VALUES = ["0", "-1", "1e-300", "1e300", "0.001", "360", "0 mm", "30 deg", "(0, 0)", "[]",
+              "legs", "axis", "1/0", "sqrt(-1)", "10 ** 400", "polar((0, 0), 0, 0 deg)"]
+NEW_NAMES = ["cut", "min_wall", "CutInto", "polar", "Mirrored", "legs", "axis", "lid", "base",
+             "vent", "slits", "hinge", "right", "Line", "Circle", "self", "Drawing2D"]
+NEW_LINES = ["min_wall 1e-300 mm", "min_wall 0", "min_wall 1e300 mm", "kerf 0.1 mm",
+             "cut c { l = Line((0, 0), (10, 0)) }", "cut e { }", "hole h2 { }",
+             "z = Mirrored(legs, Line((0, 0), (0, 0)))", "z = Mirrored([], axis)",
+             "z = Mirrored([legs, legs], axis)", "CutInto(vent, lid)", "CutInto(lid, vent)",
+             "q = polar((0, 0), 0, 0 deg)", "q = polar(self.bb.center, 1e300, 1 deg)",
+             'd = Drawing2D("bad.dxf")', "hole h3 { c = Circle((0, 0), 100) }",
+             "Mirrored(axis, axis)", "w = Mirrored(right, axis)", "Fixed(axis)",
+             "Coincident(axis.start, axis.end)", "cut k { Line((0, 0), (0, 0)) }"]
+
+
+@st.composite
+def mutated_seeds(draw):
+    """A seed program with one to three mutations that keep most of it well formed: a number
+    or a name replaced, a line inserted or deleted."""
+    src = draw(st.sampled_from(SEEDS))
+    for _ in range(draw(st.integers(1, 3))):
+        op = draw(st.sampled_from(["number", "name", "line", "line", "delete"]))
+        lines = src.split("\n")
+        if op in ("line", "delete"):
+            k = draw(st.integers(1, max(1, len(lines) - 2)))
+            if op == "delete":
+                del lines[k]
+            else:
+                lines.insert(k, "    " + draw(st.sampled_from(NEW_LINES)))
+            src = "\n".join(lines)
+            continue
+        pat = r"\b\d+(\.\d+)?\b" if op == "number" else r"\b[A-Za-z_]\w*\b"
+        toks = [(m.start(), m.end()) for m in re.finditer(pat, src)]
+        a, b = toks[draw(st.integers(0, len(toks) - 1))]
+        src = src[:a] + draw(st.sampled_from(NEW_VALUES if op == "number" else NEW_NAMES)) \
+            + src[b:]
+    return src
+
+
+_WORK = None
+
+
+def _workdir():
+    """One folder for the in-process command line's files (hypothesis runs many examples
+    per test; a function-scoped tmp_path would be shared by them anyway)."""
+    global _WORK
+    if _WORK is None:
+        import tempfile
+        _WORK = tempfile.mkdtemp(prefix="aidl-fuzz-")
+    return _WORK
+
+
+LOCATED = re.compile(r"^\S+:\d+:\d+: (error|warning|note)\[[A-Z]\d{4}\]: ")
+UNLOCATED = re.compile(r"(error|warning|note)\[[A-Z]\d{4}\]")
+
+
+def cli_no_internal(*argv):
+    """``aidl ARGV`` in this process: its exit status and what it printed to stderr, which
+    holds no traceback, no internal error and no diagnostic without its place."""
+    import contextlib
+    import io
+    from aidl_lang.cli.main import main
+    err, out = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
+        rc = main(list(argv))
+    said = err.getvalue()
+    assert rc != 3 and "internal error" not in said and "Traceback" not in said, said
+    for line in said.splitlines():
+        if UNLOCATED.search(line) and not line.startswith(" "):
+            assert LOCATED.match(line), (line, said)
+    return rc, said
+
+
+def _drawing_file(folder):
+    """bad.dxf beside the program: a plate, a spline of 15 degrees and an unknown entity."""
+    import os
+    p = os.path.join(folder, "bad.dxf")
+    if not os.path.exists(p):
+        write_malformed_dxf(p, [("spline", 15, 16, 32, 0, ()), ("unknown",)])
+    return p
+
+
+FUZZ_CLI = settings(deadline=None, max_examples=25, derandomize=True, database=None,
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                           HealthCheck.filter_too_much])
+
+
+@FUZZ_CLI
+@given(mutated_seeds(), st.sampled_from(["svg", "dxf", "gcode"]),
+       st.sampled_from([None, "0", "1e-300", "0.5"]))
+@example(SEEDS[0], "svg", "1e-300")                   # ValueError in the wall check
+@example(SEEDS[0].replace("min_wall 0.3 mm", "min_wall 1e-300 mm"), "dxf", None)
+@example(SEEDS[0].replace("(0, -30), (0, 30)", "(0, 0), (0, 0)"), "dxf", None)  # LinAlgError
+@example(SEEDS[1].replace("[lid]", "[lid, base]"), "gcode", "0")
+@example(SEEDS[1] + 'solid s2 {\n    d = Drawing2D("bad.dxf")\n}\n', "svg", None)
+def test_new_constructs_through_check_and_render_never_fail_internally(src, fmt, wall):
+    import os
+    folder = _workdir()
+    _drawing_file(folder)
+    path = os.path.join(folder, "p.aidl")
+    with open(path, "w") as f:
+        f.write(src)
+    extra = ["--min-wall", wall] if wall is not None else []
+    rc, _ = cli_no_internal("check", path, *extra)
+    out = os.path.join(folder, "p." + fmt)
+    if os.path.exists(out):
+        os.remove(out)
+    rc2, said = cli_no_internal("render", path, "-o", out, *extra)
+    if rc2 != 0:
+        assert not os.path.exists(out), said       # refused: nothing written
+
+
+# machine profiles: any table a TOML file or the API may give is a Machine or one MachineError
+def _profile_values():
+    return st.one_of(st.integers(-10 ** 400, 10 ** 400), st.integers(-3, 200),
+                     st.floats(allow_nan=True, allow_infinity=True), st.booleans(),
+                     st.text(max_size=5), st.lists(st.integers(0, 3), max_size=2),
+                     st.sampled_from([0, 1, 0.001, 1e-300, 5e-324, 1e308, -0.0]))
+
+
+@functools.cache
+def _profile_keys():
+    from aidl_lang.output.fabrication.machine import OP_RANGES, OPERATIONS, RANGES
+    return sorted(RANGES) + ["kind", "units", "laser_mode", "speed", "cut_outer"], \
+        sorted(OP_RANGES), sorted(OPERATIONS)
+
+
+@st.composite
+def profiles(draw):
+    keys, op_keys, ops = _profile_keys()
+    d = {}
+    for k in draw(st.lists(st.sampled_from(keys), max_size=4, unique=True)):
+        d[k] = draw(st.sampled_from(["laser", "router", "plotter", "mm", "inch", "M3", "x"])
+                    if k in ("kind", "units", "laser_mode") else _profile_values())
+    for op in draw(st.lists(st.sampled_from(ops), max_size=2, unique=True)):
+        d[op] = {k: draw(_profile_values())
+                 for k in draw(st.lists(st.sampled_from(op_keys + ["bogus"]), max_size=3,
+                                        unique=True))}
+    return d
+
+
+@settings(deadline=None, max_examples=150, derandomize=True, database=None)
+@given(profiles())
+def test_machine_profiles_are_a_machine_or_one_profile_error(d):
+    from aidl_lang.output.fabrication.machine import Machine, MachineError, from_dict
+    try:
+        m = from_dict(d, "fuzz.toml")
+    except MachineError as e:
+        assert "\n" not in str(e) and "fuzz.toml" in str(e) and len(str(e)) < 600
+    else:
+        assert isinstance(m, Machine)
+
+
+@settings(deadline=None, max_examples=60, derandomize=True, database=None)
+@given(st.lists(st.sampled_from(["tabs = ", "kerf = ", "[cut_outer]\n", "passes = ", "9" * 400,
+                                 "9" * 5000, "1e999", "nan", "-", "\n", '"x"', "0", "[", "]",
+                                 "units = \"inch\"\n", "kind = \"router\"\n", "="]),
+                max_size=12).map("".join))
+def test_machine_profile_files_are_a_machine_or_one_profile_error(text):
+    import os
+    from aidl_lang.output.fabrication.machine import Machine, MachineError, load
+    p = os.path.join(_workdir(), "m.toml")
+    with open(p, "w") as f:
+        f.write(text)
+    try:
+        assert isinstance(load(p), Machine)
+    except MachineError as e:
+        assert "m.toml" in str(e)
+
+
+# malformed DXF entities: read_drawing gives a drawing (what it left out in notes) or a
+# DrawingError, for `aidl import` and Drawing2D alike
+def write_malformed_dxf(path, entities):
+    """A DXF at ``path``: a 100 x 50 plate and a circle, then ``entities``: ``("spline",
+    degree, control points, knots, weights, fit points)`` with raw attributes, ``("unknown",)``
+    an entity type ezdxf does not know, ``("line", x)`` a line to ``(x, 0)``."""
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (100, 0), (100, 50), (0, 50)], close=True)
+    msp.add_circle((20, 20), 3)
+    unknown = 0
+    for e in entities:
+        if e[0] == "spline":
+            _, deg, n, k, w, fit = e
+            s = msp.add_spline(fit_points=list(fit) or None)
+            s.dxf.__dict__["degree"] = deg
+            if n:
+                s.control_points = [(40 + 3 * i, 10 + 7 * (i % 2)) for i in range(n)]
+            if k:
+                s.knots = [min(i, max(k // 2, 1)) / 2 for i in range(k)]
+            if w:
+                s.weights = [1.0 + (i % 2) * (w - 1) for i in range(n or 1)] if w > 0 else \
+                    [w] * max(n, 1)
+        elif e[0] == "line":
+            msp.add_line((0, 0), (e[1], 0))
+        elif e[0] == "hatch":              # an edge path of one ellipse of axis ratio e[1]
+            edge = msp.add_hatch().paths.add_edge_path()
+            edge.add_ellipse((50, 25), (10, 0), 0.5)
+            edge.edges[0].ratio = e[1]
+        elif e[0] == "lwpolyline":         # vertices (x, y, start width, end width, bulge)
+            msp.add_lwpolyline(e[1], format="xyseb", close=e[2])
+        elif e[0] == "arc":
+            a = msp.add_arc((50, 25), e[1], 0, 90)
+            a.dxf.__dict__["end_angle"] = e[2]
+        else:
+            unknown += 1
+    doc.saveas(path)
+    if unknown:
+        with open(path) as f:
+            text = f.read()
+        end = text.index("  0\nENDSEC", text.index("ENTITIES"))
+        raw = "".join(f"  0\nACME_THING\n  5\nF{k:03X}\n330\n1F\n100\nAcDbEntity\n  8\n0\n"
+                      for k in range(unknown))
+        with open(path, "w") as f:
+            f.write(text[:end] + raw + text[end:])
+
+
+@st.composite
+def malformed_entities(draw):
+    out = []
+    for _ in range(draw(st.integers(1, 3))):
+        kind = draw(st.sampled_from(["spline", "spline", "spline", "unknown", "line", "hatch",
+                                     "lwpolyline", "arc"]))
+        odd = st.sampled_from([0.0, -1.0, 1.0, 0.5, 1e300, float("inf"), float("nan")])
+        if kind == "spline":
+            fit = draw(st.lists(st.sampled_from([(40, 10), (50, 30), (60, 10), (50, 30)]),
+                                max_size=4))
+            out.append(("spline", draw(st.sampled_from([-1, 0, 1, 2, 3, 4, 15, 20])),
+                        draw(st.integers(0, 7)) if not fit else 0, draw(st.integers(0, 14)),
+                        draw(st.sampled_from([0, 1, 2.5, -1])), tuple(fit)))
+        elif kind == "line":
+            out.append(("line", draw(st.sampled_from([10.0, 0.0, 1e300, float("inf")]))))
+        elif kind == "hatch":
+            out.append(("hatch", draw(odd)))
+        elif kind == "arc":
+            out.append(("arc", draw(odd), draw(odd)))
+        elif kind == "lwpolyline":
+            pts = draw(st.lists(st.tuples(st.sampled_from([0.0, 10.0]), st.sampled_from(
+                [0.0, 10.0]), st.just(0.0), st.just(0.0), odd), max_size=4))
+            out.append(("lwpolyline", pts, draw(st.booleans())))
+        else:
+            out.append(("unknown",))
+    return out
+
+
+@settings(deadline=None, max_examples=40, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(malformed_entities())
+def test_malformed_dxf_entities_are_notes_or_a_drawing_error(entities):
+    import os
+    from aidl_lang.drawing import DrawingError, read_drawing
+    folder = _workdir()
+    p = os.path.join(folder, "m.dxf")
+    write_malformed_dxf(p, entities)
+    with open(p, "rb") as f:
+        data = f.read()
+    try:
+        d = read_drawing(data, "m.dxf")
+    except DrawingError as e:
+        assert e.code in CODES and e.message
+    else:
+        assert any(c.radius == 3.0 for c in d.circles)          # the rest is read
+    src = 'solid plate {\n    d = Drawing2D("m.dxf")\n}\n'
+    prog = os.path.join(folder, "d.aidl")
+    with open(prog, "w") as f:
+        f.write(src)
+    c = check_result(src, prog)
+    assert all(d.span is not None for d in c.sink.items), [(d.code, d.message)
+                                                           for d in c.sink.items]
+
+
+# malformed SVG elements: a drawing (what was left out in notes) or a DrawingError
+SVG_ELEMENTS = ['<path d="{d}"/>', '<circle cx="{a}" cy="{b}" r="{c}"/>',
+                '<ellipse cx="{a}" cy="{b}" rx="{c}" ry="{a}"/>',
+                '<rect x="{a}" y="{b}" width="{c}" height="{a}" rx="{b}"/>',
+                '<polygon points="{d}"/>', '<polyline points="{d}"/>',
+                '<line x1="{a}" y1="{b}" x2="{c}" y2="{a}"/>',
+                '<g transform="{t}"><path d="{d}"/></g>',
+                '<text x="{a}" y="{b}" font-size="{c}">hi</text>']
+SVG_WORDS = ["M", "m", "L", "l", "H", "v", "C", "s", "Q", "T", "A", "a", "Z", "z", "0", "1", "-1",
+             "10", "1e400", "nan", "0.5", ",", " ", "1e-300", "360", ".5.5", "1e", "+"]
+SVG_NUMBERS = ["0", "1", "-1", "10", "1e400", "nan", "inf", "", "abc", "1e-300", "50%"]
+SVG_TRANSFORMS = ["scale(0)", "scale(1e400)", "rotate(nan)", "matrix(0 0 0 0 0 0)",
+                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)"]
+
+
+@st.composite
+def malformed_svgs(draw):
+    body = []
+    for _ in range(draw(st.integers(1, 3))):
+        body.append(draw(st.sampled_from(SVG_ELEMENTS)).format(
+            d=" ".join(draw(st.lists(st.sampled_from(SVG_WORDS), max_size=12))),
+            a=draw(st.sampled_from(SVG_NUMBERS)), b=draw(st.sampled_from(SVG_NUMBERS)),
+            c=draw(st.sampled_from(SVG_NUMBERS)), t=draw(st.sampled_from(SVG_TRANSFORMS))))
+    w = draw(st.sampled_from(["100mm", "100", "0", "abc", "100in"]))
+    vb = draw(st.sampled_from(["0 0 100 100", "", "0 0 0 0", "nan 0 1 1"]))
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{w}" viewBox="{vb}">'
+            f'<rect x="0" y="0" width="50" height="50"/>{"".join(body)}</svg>')
+
+
+@settings(deadline=None, max_examples=150, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(malformed_svgs())
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 '
+         '100"><path d="z c z -0 A h c t"/></svg>')
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="">'
+         '<text x="1e400" y="10" font-size="1e-300">hi</text></svg>')
+@example('<svg xmlns="http://www.w3.org/2000/svg" width="100in" height="100in" viewBox="">'
+         '<g transform="scale(-1 1)"><path d="+ 1 m 1e 0.5"/></g><rect x="50%" y="1e-300" '
+         'width="1e-300" height="50%" rx="1e-300"/></svg>')
+def test_malformed_svg_elements_are_notes_or_a_drawing_error(svg):
+    """Found by this fuzz: path data before its first moveto (TypeError), a text at an
+    infinite place (an internal exception), a length in % with no viewBox (ValueError)."""
+    from aidl_lang.drawing import DrawingError, read_drawing
+    try:
+        read_drawing(svg.encode(), "f.svg")
+    except DrawingError as e:
+        assert e.code in CODES and e.message

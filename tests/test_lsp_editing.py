@@ -364,3 +364,65 @@ def test_semantic_tokens_and_signature_help_laws(cut, junk, line, ch):
         for a in edits.code_actions("file:///t.aidl", [d]):
             (e,) = a.edit.changes["file:///t.aidl"]
             assert e.range.start.line < len(lines)
+
+
+RENAMES = """\
+solid P {
+    a = Circle((0, 0), 3)
+    b = Circle((5, 0), 3)
+    hole h {
+        c = Circle((0, 0), 1)
+        d = a.radius
+    }
+}
+"""
+
+
+@pytest.mark.asyncio(loop_scope="module")
+@pytest.mark.parametrize("old,new,said", [
+    ("a =", "b", "`b` is already a name in `P` (line 3): renaming `a` to it would define it "
+                 "twice (E0107)"),
+    ("h {", "b", "`b` is already a name in `P` (line 3)"),
+    ("a =", "Circle", "`Circle` is a name of the language"),
+    ("b =", "Fixed", "`Fixed` is a name of the language"),
+    ("c =", "a", "`a` on line 6 would then mean the renamed `c`"),
+    ("a =", "c", "`a` on line 6 would then mean another `c` (defined nearer, line 5)"),
+])
+async def test_a_rename_that_would_change_the_program_is_refused(client: LanguageClient,
+                                                                 tmp_path, old, new, said):
+    """Renaming `a` to its sibling `b` or to `Circle` was accepted, and the program then had
+    E0107 (a name defined twice) or E0111 (`Circle(...)` no longer callable).  Now the rename
+    is an error response saying why; an unrelated name still renames."""
+    uri = (tmp_path / "r.aidl").as_uri()
+    _open(client, uri, RENAMES)
+    with pytest.raises(JsonRpcException) as e:
+        await client.text_document_rename_async(T.RenameParams(
+            text_document=T.TextDocumentIdentifier(uri=uri), position=pos(RENAMES, old),
+            new_name=new))
+    assert said in str(e.value), str(e.value)
+    edit = await client.text_document_rename_async(T.RenameParams(
+        text_document=T.TextDocumentIdentifier(uri=uri), position=pos(RENAMES, old),
+        new_name="fresh"))
+    out = apply(RENAMES, edit.changes[uri])
+    assert out.count("fresh") == (2 if old == "a =" else 1)
+    from aidl_lang.pipeline import compile_source
+    assert compile_source(out, "r.aidl").ok
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_requests_on_a_never_opened_document_answer_nothing_quietly(client: LanguageClient,
+                                                                          tmp_path):
+    """Hover on a URI the client never opened logged "aidl lsp: internal error in hover"
+    (pygls read the missing file).  Now: no hover, nothing logged."""
+    before = len(client.log_messages)
+    for uri in ((tmp_path / "never.aidl").as_uri(), "untitled:Untitled-9"):
+        doc = T.TextDocumentIdentifier(uri=uri)
+        h = await client.text_document_hover_async(T.HoverParams(
+            text_document=doc, position=T.Position(0, 0)))
+        assert h is None
+        await client.text_document_completion_async(T.CompletionParams(
+            text_document=doc, position=T.Position(0, 0)))
+        await client.text_document_definition_async(T.DefinitionParams(
+            text_document=doc, position=T.Position(0, 0)))
+    said = [m.message for m in client.log_messages[before:]]
+    assert not [m for m in said if "internal error" in m], said

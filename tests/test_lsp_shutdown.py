@@ -14,6 +14,14 @@ class _Doc:
 
 
 class _Workspace:
+    """pygls' Workspace as the server uses it: every document asked for is open."""
+
+    class _Open(dict):
+        def __contains__(self, uri):
+            return True
+
+    text_documents = _Open()
+
     def get_text_document(self, uri):
         return _Doc()
 

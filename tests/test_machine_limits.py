@@ -156,3 +156,29 @@ def test_a_profile_file_out_of_range_names_the_file(tmp_path):
         load(f)
     assert str(f) in str(e.value) and "`travel_speed` must be a number from 1 to 100000 " \
         "mm/min, not 0" in str(e.value)
+
+
+@pytest.mark.parametrize("profile,said", [
+    ("tabs = " + "9" * 400, "`tabs` must be a whole number from 0 to 16, not an integer of "
+                            "400 digits"),
+    ("[cut_outer]\npasses = -" + "9" * 400, "`cut_outer.passes` must be a whole number from 1 "
+                                            "to 100, not an integer of 400 digits"),
+    ("kerf = " + "9" * 400, "`kerf` must be a number from 0 to 10 mm, not an integer of 400 "
+                            "digits"),
+    ("kerf = 0.1\ntabs = " + "9" * 5000, "`tabs` on line 2 is a number of more than 4300 "
+                                         "digits"),
+])
+def test_a_profile_integer_of_hundreds_of_digits_is_one_error_naming_the_key(tmp_path, profile,
+                                                                             said):
+    """400 digits: OverflowError converting it to a float (an internal error); 5,000: Python
+    refuses to read it (ValueError from tomllib).  Now one line naming the key and its range,
+    and nothing written."""
+    r = _render(tmp_path, profile + "\n")
+    assert r.returncode == 2, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and said in lines[0] and "r.toml" in lines[0], r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.toml"]
+    with pytest.raises(MachineError) as e:            # a dict (the API, the studio) alike
+        from_dict({"tabs": -10 ** 5000})
+    assert "`tabs` must be a whole number from 0 to 16, not an integer of more than 4000 " \
+        "digits" in str(e.value)

@@ -62,6 +62,7 @@ def _bulge_arc(p, q, b) -> Arc | Line:
 _SKIP_QUIET = {"POINT", "VIEWPORT", "ATTDEF", "ATTRIB", "SEQEND", "VERTEX"}
 
 
+NAMED = 3                # entities named in a note of a defect (a malformed SPLINE)
 MAX_BLOCK_DEPTH = 16     # blocks inside blocks (INSERT in a block definition), as templates
 GARBAGE = 1e15           # mm: a number past this (or inf, nan) is noise: the entity is skipped
 FLAT_TOL = 1e-9          # mm: z values this close lie in one plane parallel to XY
@@ -134,6 +135,7 @@ _REASON_HINT = {
     "z": "the drawing is read in the XY plane: z only places it in 3D",
     "exact": "convert it to lines, arcs or splines in the drawing program, or select other "
              "layers",
+    "spline": "draw the spline again in the drawing program (its definition gives no curve)",
     "hatch": "",
 }
 
@@ -166,7 +168,7 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
     _walk(ctx, list(msp), 0)
     return _dxf_finish(ctx.pieces, ctx.loops, ctx.circles, ctx.ellipses, ctx.hatch_circles,
                        ctx.texts, notes, ctx.skipped, ctx.seen, ctx.widths, ctx.zs, log, unit,
-                       name)
+                       name, ctx.named)
 
 
 def _dxf_unit(doc, name: str, unit: str | None, notes: list) -> tuple[str, float]:
@@ -194,13 +196,31 @@ def _check_layers(doc, msp, name: str, layer, layers: set) -> None:
     known = {ly.dxf.name.lower() for ly in doc.layers}
     missing = [ly for ly in ([layer] if isinstance(layer, str) else layer)
                if ly.lower() not in known]
-    if missing and not any(e.dxf.layer.lower() in layers for e in msp):
+    if missing and not any(entity_layer(e).lower() in layers for e in msp):
         from ..diagnostics import did_you_mean
         sugg = did_you_mean(missing[0], [ly.dxf.name for ly in doc.layers])
         raise DrawingError("E0132", f"`{name}` has no layer `{missing[0]}`",
                            ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
                            if sugg else "layers: " + ", ".join(
                                sorted(ly.dxf.name for ly in doc.layers))[:300])
+
+
+def entity_layer(e) -> str:
+    """The layer of DXF entity ``e`` (``"0"`` when it names none).  An entity of a type
+    ezdxf does not know (a DXFTagStorage: its own attributes raise DXFAttributeError) keeps
+    its group codes as raw tags: its layer is its group 8 there."""
+    if e.dxf.is_supported("layer"):
+        return e.dxf.get("layer", "0")
+    for tags in getattr(getattr(e, "xtags", None), "subclasses", ()):
+        for tag in tags:
+            if tag.code == 8:
+                return str(tag.value)
+    return "0"
+
+
+def _unknown_type(e) -> bool:
+    """Whether ``e`` is of an entity type ezdxf does not know (it has no layer attribute)."""
+    return not e.dxf.is_supported("layer")
 
 
 class _DxfReading:
@@ -225,6 +245,7 @@ class _DxfReading:
         self.texts: list = []
         self.hatch_circles: list = []
         self.skipped: dict = {}
+        self.named: dict = {}      # (kind, reason, class) -> where the first few are
         self.seen: dict = {}
         self.widths: dict = {}
         self.zs: dict = {}
@@ -232,11 +253,18 @@ class _DxfReading:
         self.count = 0
         self.layer = "0"
 
-    def skip(self, kind: str, reason: str, cls: str) -> None:
+    def skip(self, kind: str, reason: str, cls: str, e=None) -> None:
         """Count an entity of ``kind`` left out for ``reason`` (of class ``cls``) on the
-        current layer."""
+        current layer; ``e``, the entity to name in the note (its handle and line: the first
+        :data:`NAMED` of each reason)."""
         by = self.skipped.setdefault((kind, reason, cls), {})
         by[self.layer] = by.get(self.layer, 0) + 1
+        if e is not None:
+            got = self.named.setdefault((kind, reason, cls), [])
+            if len(got) < NAMED:
+                w, _line = self.where(e)
+                if w:
+                    got.append(w)
 
     def P(self, v) -> tuple[float, float]:
         """The point ``v`` (drawing units) in mm, its numbers checked (:func:`_mm`)."""
@@ -245,7 +273,7 @@ class _DxfReading:
     def aci(self, e, inherited) -> int:
         """The ACI colour of ``e``: its own, its layer's (BYLAYER), or ``inherited``, the
         colour of the INSERT that placed it (BYBLOCK)."""
-        c = e.dxf.get("color", 256)
+        c = e.dxf.get("color", 256) if e.dxf.is_supported("color") else 256
         if c == 0 and inherited is not None:          # BYBLOCK: the insert's colour
             return inherited
         if c == 256:
@@ -330,7 +358,7 @@ def _walk(ctx: _DxfReading, entities, depth: int, top=None, inh_layer=None,
             raise DrawingError("E0130", f"`{ctx.name}` has more than {MAX_ENTITIES} entities",
                                "select fewer with layer= or split the drawing")
         t = e.dxftype()
-        ly = e.dxf.get("layer", "0")
+        ly = entity_layer(e)
         if ly == "0" and inh_layer is not None:         # layer 0 in a block: the insert's
             ly = inh_layer
         if t == "INSERT":
@@ -362,7 +390,7 @@ def _read_checked(ctx: _DxfReading, e, t: str, top) -> None:
         _read_entity(e, t, ctx)
         _check_made(ctx.made_since(made))
     except _Skip as s:
-        ctx.skip(s.kind or t, s.what, s.cls)
+        ctx.skip(s.kind or t, s.what, s.cls, (top or e) if s.named else None)
     except _OutOfRange as ex:
         ctx.drop_since(made)
         v = ex.value
@@ -382,7 +410,8 @@ def _read_entity(e, t: str, ctx: _DxfReading) -> None:
     :data:`_ENTITY_READERS`; a type not there has no exact form here (:class:`_Skip`)."""
     reader = _ENTITY_READERS.get(t)
     if reader is None:
-        raise _Skip("no exact form here", cls="exact")
+        raise _Skip("an entity type the DXF reader does not know" if _unknown_type(e) else
+                    "no exact form here", cls="exact")
     reader(e, ctx)
 
 
@@ -586,7 +615,59 @@ def _entity_spline(e, ctx: _DxfReading) -> None:
         ctx.P(v)
     for k in (*e.knots, *e.weights):
         _finite(k, "a knot or weight")
+    _check_spline(e, ctx.P)
     ctx.pieces.append([_dxf_spline(e, ctx.P)])
+
+
+def _check_spline(e, P) -> None:
+    """Raise :class:`_Skip` (class ``spline``, the entity named in the note) saying what is
+    wrong with the definition of SPLINE ``e`` before ezdxf's tools compute with it (they raise
+    ValueError, TypeError, IndexError or LinAlgError): a degree below 1 (past 3: no exact form
+    here), fewer control points than the degree needs, a count of knots or weights that does
+    not match the control points, knots that decrease or span nothing, a knot repeated past
+    the degree inside the range (the curve breaks apart: ezdxf's Bézier pieces of it are
+    wrong) or past degree + 1 at an end, a weight not above 0;
+    without control points, fewer than two fit points or two consecutive ones at one place
+    (``P``: a point in mm)."""
+    deg = e.dxf.get("degree", 3)
+    if deg < 1:
+        raise _Skip(f"degree {deg}: a spline's degree is 1 or more", cls="spline", named=True)
+    if deg > 3:
+        raise _Skip(f"degree {deg}: no exact form here", named=True)
+    n, knots, w = len(e.control_points), list(e.knots), list(e.weights)
+    if n == 0:
+        fit = [P(v) for v in e.fit_points]
+        if len(fit) < 2:
+            raise _Skip("no control points and no fit points" if not fit else
+                        "one fit point and no control points: a curve needs two or more",
+                        cls="spline", named=True)
+        for k, (a, b) in enumerate(zip(fit, fit[1:])):
+            if math.dist(a, b) <= 1e-9:
+                raise _Skip(f"fit points {k + 1} and {k + 2} at one place ({a[0]:g}, "
+                            f"{a[1]:g}) mm", cls="spline", named=True)
+        return
+    if n < deg + 1:
+        raise _Skip(f"{_plural(n, 'control point')}: a spline of degree {deg} needs "
+                    f"{deg + 1} or more", cls="spline", named=True)
+    if knots and len(knots) != n + deg + 1:
+        raise _Skip(f"{len(knots)} knots for {n} control points of degree {deg} (it needs "
+                    f"{n + deg + 1})", cls="spline", named=True)
+    if any(b < a for a, b in zip(knots, knots[1:])):
+        raise _Skip("knots that decrease", cls="spline", named=True)
+    if knots and not knots[n] > knots[deg]:
+        raise _Skip("knots that span no parameter range", cls="spline", named=True)
+    most = max((knots.count(k) for k in set(knots)), default=0)
+    inner = max((knots.count(k) for k in set(knots) if knots and knots[deg] < k < knots[n]),
+                default=0)
+    if most > deg + 1 or inner > deg:     # past degree + 1 (degree, inside): it breaks apart
+        raise _Skip(f"a knot repeated {max(most, inner)} times: the curve breaks apart there "
+                    f"(degree {deg} allows {deg} inside its range, {deg + 1} at its ends)",
+                    cls="spline", named=True)
+    if w and len(w) != n:
+        raise _Skip(f"{_plural(len(w), 'weight')} for {n} control points", cls="spline",
+                    named=True)
+    if any(not x > 0 for x in w):
+        raise _Skip("a weight not above 0", cls="spline", named=True)
 
 
 def _entity_ellipse(e, ctx: _DxfReading) -> None:
@@ -688,7 +769,7 @@ def _hatch_paths(e) -> list:
     edges, in the hatch's plane (ezdxf's ``virtual_boundary_path_entities``, whose polyline
     paths fail in ezdxf 1.4)."""
     from ezdxf.entities import LWPolyline
-    from ezdxf.entities.boundary_paths import EdgePath, PolylinePath
+    from ezdxf.entities.boundary_paths import EdgePath, EdgeType, PolylinePath
     from ezdxf.explode import _virtual_edge_path
     attribs = {"layer": e.dxf.get("layer", "0")}
     elevation = float(e.dxf.elevation.z)
@@ -703,7 +784,14 @@ def _hatch_paths(e) -> list:
             p.closed = path.is_closed
             out.append([p])
         elif isinstance(path, EdgePath):
-            out.append(_virtual_edge_path(path, dict(attribs), ocs, elevation))
+            for edge in path.edges:         # ezdxf divides by an ellipse edge's axis ratio
+                if edge.type == EdgeType.ELLIPSE and not 0.0 < float(edge.ratio) < math.inf:
+                    raise _Skip("a boundary ELLIPSE: a semi-axis not above 0", cls="number")
+            try:
+                out.append(_virtual_edge_path(path, dict(attribs), ocs, elevation))
+            except (ArithmeticError, ValueError) as ex:
+                raise _Skip(f"a boundary path that gives no curve ({ex})", cls="number") \
+                    from None
     return out
 
 
@@ -733,10 +821,11 @@ def _loop_key(segs) -> tuple:
 
 
 def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, skipped, seen,
-                widths, zs, log, unit, name) -> Drawing:
+                widths, zs, log, unit, name, named=None) -> Drawing:
     """The drawing of what was read, a HATCH boundary that repeats an outline drawn by other
     entities read once, and the notes: skipped entities by kind, reason and layer (numbers
-    that are no size in one note), widths ignored, z left out, ezdxf's own log lines."""
+    that are no size in one note; ``named``: the entities a reason names, by handle and
+    line), widths ignored, z left out, ezdxf's own log lines."""
     d = _finish(pieces, loops, circles, ellipses, notes, unit, name, hatch_circles)
     drawn = {_loop_key(o.segments) for o in d.outlines if o.source != "HATCH"}
     keep, dup = [], 0
@@ -770,6 +859,7 @@ def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, s
             bad.append((n, kind, reason, by))
             continue
         word = "entity" if n == 1 else "entities"
+        reason = _with_named(reason, (named or {}).get((kind, reason, cls)), n)
         notes.append(Note("W0130", f"{n} {kind} {word} of `{name}` skipped ({_layers_text(by)})"
                                    f": {reason}", _REASON_HINT.get(cls, "")))
     if bad:
@@ -811,11 +901,20 @@ def _dxf_finish(pieces, loops, circles, ellipses, hatch_circles, texts, notes, s
         kinds.setdefault(t, {})[ly] = n
     held = ", ".join(f"{sum(by.values())} {t} ({_layers_text(by)})"
                      for t, by in sorted(kinds.items()))
-    why = "; ".join(f"{sum(by.values())} {kind}: {reason}"
-                    for (kind, reason, _c), by in sorted(skipped.items()))
+    why = "; ".join(f"{sum(by.values())} {kind}: "
+                    f"{_with_named(reason, (named or {}).get((kind, reason, c)), 0)}"
+                    for (kind, reason, c), by in sorted(skipped.items()))
     d.seen = (f"it holds {held}" if held else "it holds no drawable entities") + \
         (f", left out: {why}" if why else "")
     return d
+
+
+def _with_named(reason: str, which, n: int) -> str:
+    """``reason`` followed by the entities it names (``which``: where the first few are;
+    ``n``: how many there are, ``...`` when more than those)."""
+    if not which:
+        return reason
+    return f"{reason} ({'; '.join(which)}{'; ...' if n > len(which) else ''})"
 
 
 def _dxf_rgb(e, aci: int) -> tuple | None:
@@ -896,18 +995,27 @@ def _fast_dxf(data: bytes):
 class _Skip(Exception):
     """An entity left out: ``what`` (SVG: its kind; DXF: the reason), ``kind`` (DXF: the
     entity type when not the entity's own) and ``cls``, the class of the reason (``plane``,
-    ``number``, ``exact``, ``text``: DXF notes are grouped and given a fix by it)."""
+    ``number``, ``exact``, ``text``, ``spline``: DXF notes are grouped and given a fix by it);
+    ``named``: the note names the entity (a defect of this one, not of its kind)."""
 
-    def __init__(self, what: str, kind: str | None = None, cls: str = "exact") -> None:
-        self.what, self.kind, self.cls = what, kind, cls
+    def __init__(self, what: str, kind: str | None = None, cls: str = "exact",
+                 named: bool = False) -> None:
+        self.what, self.kind, self.cls, self.named = what, kind, cls, named
 
 
 def _dxf_spline(e, P) -> Spline:
+    """The :class:`Spline` of SPLINE ``e`` (checked by :func:`_check_spline`; ``P``: a point
+    in mm): its B-spline (equal weights are no rational curve: dropped; an unclamped one is
+    clamped, :func:`_clamped`) cut into Bézier pieces, each raised to a cubic."""
     bs = e.construction_tool()
     if bs.is_rational:
         w = list(bs.weights())
         if max(w) - min(w) > 1e-12 * max(w):
-            raise _Skip("rational: no exact form here")
+            raise _Skip("rational: no exact form here", named=True)
+        from ezdxf.math import BSpline
+        bs = BSpline(bs.control_points, order=bs.order, knots=bs.knots())
+    if not bs.is_clamped:
+        bs = _clamped(bs)
     deg = bs.degree
     if deg > 3:
         raise _Skip(f"degree {deg}: no exact form here")
@@ -930,3 +1038,21 @@ def _dxf_spline(e, P) -> Spline:
     if len(steps) != len(spans) or min(steps, default=0) <= 0:
         steps = None
     return bezier_spline(spans, steps)
+
+
+def _clamped(bs):
+    """The B-spline ``bs`` (unclamped: its ends are not knots of multiplicity ``order``) as a
+    clamped one: the same curve over its domain ``knots[degree]`` to ``knots[count]``, each end
+    inserted until it is a knot of multiplicity ``order`` and the control points and knots
+    outside dropped (the curve between is unchanged, Boehm's knot insertion)."""
+    from ezdxf.math import BSpline
+    k = list(bs.knots())
+    a, b = k[bs.degree], k[bs.count]
+    for t in (a, b):
+        while list(bs.knots()).count(t) < bs.order:
+            bs = bs.insert_knot(t)
+    k = list(bs.knots())
+    i, j = k.index(a), len(k) - 1 - k[::-1].index(b)
+    sub = k[i:j + 1]
+    return BSpline(list(bs.control_points)[i:i + len(sub) - bs.order], order=bs.order,
+                   knots=sub)

@@ -498,7 +498,7 @@ def layer_names(data: bytes, name: str) -> list[str]:
     SVG."""
     if not name.lower().endswith(".dxf"):
         return [""]
-    from .dxf import MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf
+    from .dxf import MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf, entity_layer
     from .model import DrawingError
     try:
         with _EzdxfLog():            # its log lines: a note of the read, not the terminal
@@ -510,7 +510,7 @@ def layer_names(data: bytes, name: str) -> list[str]:
 
     def walk(entities, inherited, depth) -> None:
         for e in entities:
-            ly = e.dxf.get("layer", "0")
+            ly = entity_layer(e)
             if ly == "0" and inherited is not None:
                 ly = inherited
             if e.dxftype() == "INSERT":
@@ -569,7 +569,11 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                                  deadline=deadline, max_shapes=limit)
             except DrawingError as ex:
                 if ex.code == "E0132" and layer is None:
-                    continue        # a layer of only skipped entities (none at all: below)
+                    # a layer of only skipped entities (none at all: below): what was left
+                    # out of it is said (a layer of only points, say, is not)
+                    if "left out: " in ex.message:
+                        notes.append(Note("W0130", ex.message, ex.hint))
+                    continue
                 raise
             # text is written as Text engravings here (Drawing2D skips it with this note)
             notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)

@@ -118,7 +118,12 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 if el.values.get("visibility") in ("hidden", "collapse") or \
                         el.values.get("display") == "none" or not colour_ok(el):
                     continue
-                got = _svg_text(el, P, scale)
+                try:
+                    got = _svg_text(el, P, scale)
+                except _OutOfRange as ex:          # as a shape's: E0130 naming it
+                    ident_ = getattr(el, "id", None)
+                    raise _range_error(ex, "<text>" + (f" (id `{ident_}`)" if ident_ else ""),
+                                       name) from None
                 if isinstance(got, str):
                     lost_text.append(got)
                 elif got is not None:
@@ -141,6 +146,10 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                                    "select fewer with id= or split the drawing")
             try:
                 _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped)
+            except ValueError as ex:        # svgelements: a length it cannot resolve (a %
+                tag = type(el).__name__.lower()     # with no viewBox to measure it by)
+                why = f"{tag} with a length that cannot be resolved ({str(ex).rstrip('.')})"
+                skipped[why] = skipped.get(why, 0) + 1
             except _OutOfRange as ex:
                 tag = type(el).__name__.lower()
                 ident_ = getattr(el, "id", None)
@@ -210,17 +219,24 @@ def _svg_text(el, P, scale: float):
 _PATH_TOKEN = None
 
 
-def _path_data_error(d: str) -> tuple[int, str] | None:
+def _path_data_error(d: str, path: bool = False) -> tuple[int, str] | None:
     """Where the SVG path data ``d`` stops being readable (SVG 1.1 section 8.3.9: command
     letters, numbers, whitespace and commas): ``(character offset, the word there)``, or
     None.  svgelements stops reading a path at such a word (``inf``, ``nan``, ``1,5e``) and
-    drops the rest of it without a word; the caller counts it (``W0130``)."""
+    drops the rest of it without a word; the caller counts it (``W0130``).  ``path``: ``d``
+    is a path's data, which must begin with a moveto (svgelements gave the segments before
+    it no start point)."""
     import re
     global _PATH_TOKEN
     if _PATH_TOKEN is None:
         _PATH_TOKEN = re.compile(r"[\s,]+|[MmZzLlHhVvCcSsQqTtAa]|"
                                  r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
     i, n = 0, len(d)
+    if path:
+        lead = len(d) - len(d.lstrip(" \t\r\n,"))
+        if lead < n and d[lead] not in "Mm":
+            word = re.match(r"[^\s,]{1,20}", d[lead:])
+            return lead, word.group(0) if word else d[lead:lead + 1]
     while i < n:
         m = _PATH_TOKEN.match(d, i)
         if m is None or m.end() == i:
@@ -268,8 +284,8 @@ def _svg_prescan(data: bytes, name: str, limit: int) -> list:
             else None
         if data_attr is not None and attrs.get(data_attr):
             text = attrs[data_attr]
-            err = _path_data_error(text if data_attr == "d" else
-                                   text.replace("M", "?").replace("m", "?"))
+            err = _path_data_error(text, True) if data_attr == "d" else \
+                _path_data_error(text.replace("M", "?").replace("m", "?"))
             if err is not None:
                 bad_data.append((local, attrs.get("id"), p.CurrentLineNumber, err[0], err[1],
                                  len(text) - err[0]))
@@ -430,6 +446,10 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
                 cur.append(Line(cur[-1].end, cur[0].start))
             flush(True)
             continue
+        if seg.start is None or seg.end is None:
+            # data before its first moveto: in error from its start, so none of it is drawn
+            # (SVG 1.1 8.3.9), as the note says (_path_data_error)
+            return
         a, b = P(seg.start), P(seg.end)
         if isinstance(seg, S.Line):
             cur.append(Line(a, b))          # one of zero length: dropped and counted later

@@ -153,16 +153,42 @@ def _format(source: str, path: str) -> str:
     before = parse(source, path, sink)
     if sink.has_errors:
         raise FormatError(sink)
-    items = _items(source)
-    out = _layout(source, items)
-    # the safety net: same program, same comments
-    sink2 = DiagnosticSink()
-    after = parse(out, path, sink2)
-    same = (not sink2.has_errors and dump(after) == dump(before)
-            and comments(out) == comments(source))
+    try:
+        items = _items(source)
+        out = _layout(source, items)
+        # the safety net: same program, same comments
+        sink2 = DiagnosticSink()
+        after = parse(out, path, sink2)
+        same = (not sink2.has_errors and dump(after) == dump(before)
+                and comments(out) == comments(source))
+    except RecursionError:
+        # an expression too deep to walk (a 20,000-term `1+1+...`): the statement `aidl
+        # check` names, with its error
+        from ..pipeline import _deep_span
+        st = _deep_statement(before.stmts)
+        sink.error("E0302", "expression nested too deeply",
+                   st.span if st is not None else _deep_span(None, path, source),
+                   hint="split it into named constants")
+        raise FormatError(sink) from None
     if not same:
         raise FormatterBug(f"formatting `{path}` would change its program or comments")
     return out
+
+
+def _deep_statement(stmts: list):
+    """The innermost of ``stmts`` (or of their bodies) whose AST is too deep to walk
+    (:func:`dump` raises RecursionError), or None."""
+    for st in stmts:
+        inner = [x for name in ("body", "orelse")
+                 if isinstance(b := getattr(st, name, None), A.Block) for x in b.stmts]
+        found = _deep_statement(inner) if inner else None
+        if found is not None:
+            return found
+        try:
+            dump(st)
+        except RecursionError:
+            return st
+    return None
 
 
 def _layout(source: str, items: list[_Item]) -> str:

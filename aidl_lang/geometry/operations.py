@@ -423,7 +423,14 @@ def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
     from .members import member
     line = about.geom
     a, b = member(line, "start", S), member(line, "end", S)
-    ang = math.atan2(ctx.value_of(b.y - a.y), ctx.value_of(b.x - a.x))
+    dx, dy = ctx.value_of(b.x - a.x), ctx.value_of(b.y - a.y)
+    if not math.hypot(dx, dy) > 1e-9:
+        # a line of no length has no direction: the reflection divides by its length (the
+        # same rule as the constraints' lines, geometry.constraints._direction)
+        raise OperationError(f"`{getattr(line, 'label', None) or 'about'}` has zero length "
+                             f"(its start and end are the same point), so there is no line "
+                             f"to mirror about; give it distinct starting points")
+    ang = math.atan2(dy, dx)
     xf, rot, flip = _reflect(a, b)
     return _copy(ctx, target, xf, rot, flip, name, k, "mirror", ang, indexed=indexed,
                  line=(a, b))

@@ -529,7 +529,9 @@ class Calls:
         if typ in ("length", "angle", "number"):
             if not isinstance(v, Q):
                 raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {type_name(v)}", span,
-                                hint=lookup(fname).signature())
+                                hint=lookup(fname).signature() if lookup(fname) is not None
+                                else FUNCTIONS[fname][2].split(":")[0] if fname in FUNCTIONS
+                                else None)
             want = _DIMS[typ]
             if v.dim == want:
                 return v

@@ -94,6 +94,45 @@ def _uses_in(ix: Index, key, name: str) -> list:
     return sorted(set(out), key=lambda sp: sp.start)
 
 
+def _check_clash(ix: Index, sym, new: str, spans: list) -> None:
+    """Raise :class:`RenameError` when renaming ``sym`` (defined in ``ix``; ``spans``: its
+    definition and uses there) to ``new`` would change the program: the scope that defines it
+    has a ``new`` already (two names of one structure, E0107), a use of another ``new``
+    would then mean ``sym`` (it lies in ``sym``'s scope with no nearer ``new``), or a use of
+    ``sym`` would then mean a nearer ``new``."""
+    home = next((sc for sc in ix.scopes if sc.names.get(sym.name) is sym), None)
+    if home is None:
+        return
+    where = f"`{home.owner.name}`" if home.owner is not None else "this file"
+    other = home.names.get(new)
+    if other is not None:
+        raise RenameError(f"`{new}` is already a name in {where} (line {other.span.line}): "
+                          f"renaming `{sym.name}` to it would define it twice (E0107)")
+
+    def nearest(offset: int):
+        """The scope of ``new`` seen from ``offset`` when it is ``home`` or nearer, else None
+        (``home`` itself when nothing nearer defines it)."""
+        sc = ix.scope_at(offset)
+        while sc is not None:
+            if new in sc.names or sc is home:
+                return sc
+            sc = sc.parent
+        return None
+    from ... import ast as A
+    for sp, node in ix.uses:
+        if isinstance(node, A.Name) and node.id == new and nearest(sp.start) is home:
+            raise RenameError(f"`{new}` on line {sp.line} would then mean the renamed "
+                              f"`{sym.name}` instead of what it means now; choose another name")
+    mine = {sp.start for sp in spans}
+    for sp, node in ix.uses:
+        if sp.start in mine and isinstance(node, A.Name):
+            sc = nearest(sp.start)
+            if sc is not None and sc is not home:
+                raise RenameError(f"`{sym.name}` on line {sp.line} would then mean another "
+                                  f"`{new}` (defined nearer, line {sc.names[new].span.line}); "
+                                  "choose another name")
+
+
 def rename(src: str, line: int, character: int, new_name: str, uri: str, path: str = "doc.aidl",
            open_documents: dict[str, str] | None = None) -> T.WorkspaceEdit:
     """Rename the user name at the position to ``new_name`` everywhere it is visible.
@@ -105,8 +144,15 @@ def rename(src: str, line: int, character: int, new_name: str, uri: str, path: s
         raise RenameError(f"`{new_name}` is not a name (letters, digits, `_`; not starting with a digit)")
     if new_name in R.KEYWORDS or new_name in R.CONSTANTS:      # `solid`, `cut`: ordinary names
         raise RenameError(f"`{new_name}` is a keyword")
+    if R.lookup(new_name) is not None or new_name in R.FUNCTIONS:
+        raise RenameError(f"`{new_name}` is a name of the language (a shape, constraint, "
+                          f"operation or function): a name of the program may not hide it "
+                          f"(a call `{new_name}(...)` would then fail, E0111); choose another "
+                          "name")
     ix, sym, _ = _renamable(src, line, character, path)
     key, name = _key(sym), sym.name
+    if sym.origin is ix and new_name != name:
+        _check_clash(ix, sym, new_name, _uses_in(ix, key, name))
     opened = {str(Path(p).resolve()): t for p, t in (open_documents or {}).items()}
     here = str(Path(path).resolve())
     opened[here] = src

@@ -103,6 +103,8 @@ def _safe(default=None):
                     return await fn(ls, params)
                 except (asyncio.CancelledError, JsonRpcException):
                     raise
+                except NotOpen:
+                    return default
                 except Exception:          # never let the analysis take the server down
                     _report(ls, fn.__name__)
                     return default
@@ -114,6 +116,8 @@ def _safe(default=None):
                 return fn(ls, params)
             except JsonRpcException:
                 raise
+            except NotOpen:
+                return default
             except Exception:
                 _report(ls, fn.__name__)
                 return default
@@ -130,7 +134,15 @@ def _report(ls: LanguageServer, where: str) -> None:
         pass
 
 
+class NotOpen(Exception):
+    """A request about a document the client never opened (or has closed): answered with
+    the request's empty answer (no hover, no completions), not as an internal error."""
+
+
 def _doc(ls: LanguageServer, uri: str):
+    """The open document ``uri`` and its path; :class:`NotOpen` when it is not open."""
+    if uri not in ls.workspace.text_documents:
+        raise NotOpen(uri)
     doc = ls.workspace.get_text_document(uri)
     return doc, (doc.path or "untitled.aidl")
 
@@ -173,7 +185,7 @@ def _schedule(ls: LanguageServer, uri: str, delay: float) -> None:
     async def run():
         try:
             await _publish(ls, uri, delay)
-        except asyncio.CancelledError:
+        except (asyncio.CancelledError, NotOpen):      # closed meanwhile: nothing to say
             pass
         except Exception:
             if not _closing:        # after shutdown, a job whose worker was stopped: quiet

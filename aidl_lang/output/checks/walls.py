@@ -121,8 +121,8 @@ def _separate(pieces: list, areas: list, t: float):
     least = 2 * t * t
     eps = 1e-4 * t
     for piece, a in zip(pieces, areas):
-        if a < least:
-            continue
+        if a < least or not a > 0.0:      # no area is no wall (2 t^2 underflows to 0 below
+            continue                      # t = 1e-162 mm: min_wall 1e-300 mm)
         shaved = piece.offset(-eps, mf.JoinType.Miter, 2.0, 16).offset(eps, mf.JoinType.Miter,
                                                                        2.0, 16)
         parts = shaved.decompose()
@@ -131,7 +131,7 @@ def _separate(pieces: list, areas: list, t: float):
             continue
         for p in parts:
             pa = _area(p)
-            if pa >= least:
+            if pa >= least and pa > 0.0:
                 yield p, pa
 
 

@@ -35,6 +35,7 @@ past it the profile is refused (:class:`MachineError` naming the key and the ran
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 from ..part.part import OutputError
@@ -182,7 +183,30 @@ def load(path) -> Machine:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
         raise MachineError(f"the machine profile `{p}` is not TOML: {e}") from None
+    except ValueError:
+        # an integer past Python's 4,300 digits for conversion (no profile number is near it)
+        raise MachineError(f"machine profile `{p}`: {_long_number(text)}") from None
     return from_dict(data, str(p))
+
+
+def _long_number(text: str) -> str:
+    """Where TOML ``text`` holds a number too long to read (the key and line)."""
+    import re
+    for n, line in enumerate(text.splitlines(), 1):
+        m = re.match(r"\s*([^=\s]+)\s*=\s*[-+]?\d[\d_]{4300,}", line)
+        if m:
+            return f"`{m.group(1)}` on line {n} is a number of more than 4300 digits"
+    return "it holds a number of more than 4300 digits"
+
+
+def _shown(v) -> str:
+    """``v`` as a message shows it: a long integer by its size (its repr may be refused past
+    4,300 digits)."""
+    if isinstance(v, int) and v.bit_length() > 100:
+        if v.bit_length() > 14_000:
+            return "an integer of more than 4000 digits"
+        return f"an integer of {len(str(abs(v)))} digits"
+    return repr(v)
 
 
 def from_dict(data: dict, source: str = "") -> Machine:
@@ -218,10 +242,13 @@ def from_dict(data: dict, source: str = "") -> Machine:
         what = "a whole number" if whole else "a number"
         ok_type = isinstance(v, int) if whole else isinstance(v, (int, float))
         if isinstance(v, bool) or not ok_type or v != v:
-            raise bad(key, f"must be {what} from {shown}, not {v!r}")
-        x = float(v) * k
+            raise bad(key, f"must be {what} from {shown}, not {_shown(v)}")
+        try:
+            x = float(v) * k
+        except OverflowError:            # an integer past a float's range (1.8e308)
+            x = math.inf if v > 0 else -math.inf
         if not low - 1e-12 * max(1.0, abs(low)) <= x <= high * (1 + 1e-12):
-            raise bad(key, f"must be {what} from {shown}, not {v!r}")
+            raise bad(key, f"must be {what} from {shown}, not {_shown(v)}")
         return int(v) if whole else x
 
     values = {}
