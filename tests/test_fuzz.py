@@ -393,8 +393,14 @@ def cli_no_internal(*argv):
     from aidl_lang.cli.main import main
     err, out = io.StringIO(), io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
-        rc = main(list(argv))
+        try:
+            rc = main(list(argv))
+        except SystemExit as e:         # argparse's usage error (--min-wall 1e-300): exit 2
+            rc = e.code
     said = err.getvalue()
+    if rc == 2:
+        assert said.splitlines()[-1].startswith("aidl: error: argument"), said
+        return rc, said
     assert rc != 3 and "internal error" not in said and "Traceback" not in said, said
     for line in said.splitlines():
         if UNLOCATED.search(line) and not line.startswith(" "):

@@ -54,20 +54,23 @@ def test_mirrored_list_about_a_zero_length_line_is_E0108(compile_text):
 # ------------------------------------------------------------------ min_wall far below 1 nm
 @pytest.mark.parametrize("how", ["program", "cli"])
 @pytest.mark.parametrize("value", ["1e-300", "5e-324", "1e-200"])
-def test_a_min_wall_whose_square_underflows_checks_nothing_and_is_ok(tmp_path, how, value):
+def test_a_min_wall_whose_square_underflows_is_refused_and_nothing_written(tmp_path, how, value):
     """2 t^2, the least area of a thin wall, underflows to 0 for t below 1e-162 mm: empty
     pieces of what the opening removed were then measured (ValueError: need at least one array
-    to concatenate).  Now no wall that thin exists: the plate is ok and renders."""
+    to concatenate).  A minimum wall is 0 or 0.001 to 1e6 mm (limits.min_wall_problem): the
+    statement is a located E0109 naming the range, the option a usage error (exit 2); no file
+    is written either way."""
     head = f"min_wall {value} mm\n" if how == "program" else ""
     (tmp_path / "p.aidl").write_text(head + "solid P {\n  r = Rectangle((0,0), 10, 10)\n}\n")
     extra = ["--min-wall", value] if how == "cli" else []
     r = aidl("render", "p.aidl", "-o", "p.dxf", *extra, cwd=tmp_path)
     no_internal(r)
-    assert r.returncode == 0, r.stderr
-    import ezdxf
-    from ezdxf import bbox
-    box = bbox.extents(ezdxf.readfile(tmp_path / "p.dxf").modelspace())
-    assert (box.size.x, box.size.y) == (pytest.approx(10, abs=1e-9), pytest.approx(10, abs=1e-9))
+    assert not (tmp_path / "p.dxf").exists()
+    assert "from 0.001 to 1e+06 mm, or 0" in r.stderr, r.stderr
+    if how == "program":
+        assert r.returncode == 1 and "p.aidl:1:10: error[E0109]" in r.stderr, r.stderr
+    else:
+        assert r.returncode == 2, r.stderr
 
 
 # ------------------------------------------------------------------ found by the fuzz
