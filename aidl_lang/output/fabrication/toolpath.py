@@ -29,6 +29,7 @@ import numpy as np
 
 from ...geometry.curves import Circle, Loop, Segment, reverse
 from ..part.part import Output
+from ..part.shared import cut_once, loop_paths
 
 Point = tuple[float, float]
 
@@ -90,6 +91,8 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
             out.append(c)
             at = after(c)
     parts = [p for p in output.parts if p.loops]
+    once = cut_once(output)         # the pieces of one cut part: each shared edge once
+    index = {id(p): n for n, p in enumerate(output.parts)}
     names = {p.name for p in parts}
     loose = [c for name, cs in through.items() if name not in names for c in cs]
     for c in _tour(loose, at, after):   # through-cuts of no part left (they cut nothing)
@@ -126,8 +129,10 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
                 out.append(c)
                 at = after(c)
             for d in sorted({d for d, _ in by_part[i]}, reverse=True):
-                cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name,
-                            list(lp.segments), True) for dd, lp in by_part[i] if dd == d]
+                # a loop an earlier piece of the same cut part shares: the rest of it, open
+                cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name, segs, closed)
+                        for k, (dd, lp) in enumerate(by_part[i]) if dd == d
+                        for segs, closed in loop_paths(once, index[id(parts[i])], k, lp)]
                 for c in _tour(cuts, at, after):
                     out.append(c)
                     at = after(c)

@@ -961,7 +961,7 @@ class Renderer:
                     k, most = i, got
             groups.setdefault(k, []).append(comp)
         removed, pieces = [], []
-        for comps in groups.values():
+        for k, comps in groups.items():
             comps.sort(key=lambda c: -c.area())
             filled = [_filled(c) for c in comps]
             meets = _meeting(comps, filled)
@@ -974,9 +974,10 @@ class Renderer:
                 around = self.union([filled[j] for j in meets[i] if j != i], s)
                 if (comp - around).area() <= 1e-9 * max(1.0, comp.area()):
                     continue                 # enclosed: falls out with the scrap (a hole)
-                # the piece within the part's outline (exact there), a band wholly inside
-                # it (a cut that does not reach across) closed again: it cuts no area
-                pieces.append(shp ^ grown)
+                # the piece within its piece of the part's outline (exact there; not the
+                # whole part: a sheet of n pieces would cost n^2), a band wholly inside it
+                # (a cut that does not reach across) closed again: it cuts no area
+                pieces.append(before[k] ^ grown)
         self.split.add(s.path)
         # the part less what was cut off: its sides on the cuts, the bands' other stretches
         # (cuts that end inside it) no area.  Each piece cut off taken out with its band
