@@ -305,3 +305,63 @@ solid plate {
     inside = _compile(edge.replace("Line((0, 0), (30, 0))", "Line((0, 1), (30, 1))"), tmp_path)
     assert inside.ok and not [d for d in inside.diagnostics if d.code == "W0522"]
     assert len(inside.output.parts) == 2
+
+
+def test_the_kerf_offsets_the_grid_outside_and_cuts_each_shared_edge_once_on_its_line(tmp_path):
+    """Before: each piece offset on its own, every shared edge cut twice a kerf apart (at
+    0.2 mm: 10.1 and 9.9), the middle square 9.6 mm wide, no word.  Now the plate's outline is
+    offset by half the kerf, each cut runs once on its line on across the offset band, and a
+    note says that each piece is half a kerf short along the cuts."""
+    res = _compile(GRID, tmp_path)
+    out = for_cutting(res.output, 0.2)
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+             if mv.on]
+    # the offset outline (120 mm of sides, four quarter circles of 0.1 mm) and the four
+    # lines carried on to it (30.2 mm each)
+    assert sum(mv.length for mv in moves) == pytest.approx(120 + 0.2 * math.pi + 4 * 30.2,
+                                                           abs=1e-6)
+    for mv in moves:
+        if mv.g != 1:
+            continue
+        (x0, y0), (x1, y1) = mv.p, mv.q
+        on_line = (x0 == x1 and x0 in (10, 20, -0.1, 30.1)) or \
+            (y0 == y1 and y0 in (10, 20, -0.1, 30.1))
+        assert on_line, (mv.p, mv.q)                # nothing at 9.9 or 10.1: no double cut
+    d = _dxf_stretches_any(encode(out, ".dxf").decode())
+    assert sum(d) == pytest.approx(120 + 0.2 * math.pi + 4 * 30.2, abs=1e-6)
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render",
+                          str(tmp_path / "t.aidl"), "-o", str(tmp_path / "g.nc"), "--kerf",
+                          "0.2"], capture_output=True, text=True, timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    said = cli.stdout + cli.stderr
+    assert "note: the kerf offset cuts the edges the pieces of `plate` share once" in said
+    assert "cut 482.9 mm" in said                 # two passes of 241.43 mm
+
+
+def _dxf_stretches_any(text: str) -> list:
+    """The length of each entity on a cut layer (lines, arcs, bulged polylines), mm."""
+    doc = ezdxf.read(io.StringIO(text))
+    out = []
+    for e in doc.modelspace():
+        if not e.dxf.layer.startswith("CUT"):
+            continue
+        if e.dxftype() == "LINE":
+            out.append(math.dist(tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
+        elif e.dxftype() == "ARC":
+            sweep = (e.dxf.end_angle - e.dxf.start_angle) % 360
+            out.append(math.radians(sweep) * e.dxf.radius)
+        elif e.dxftype() == "LWPOLYLINE":
+            pts = [tuple(p) for p in e.get_points("xyb")]
+            pairs = list(zip(pts, pts[1:] + (pts[:1] if e.closed else [])))
+            for (x0, y0, b), (x1, y1, _) in pairs:
+                c = math.dist((x0, y0), (x1, y1))
+                if b == 0:
+                    out.append(c)
+                else:
+                    theta = 4 * math.atan(abs(b))
+                    out.append(theta * c / (2 * math.sin(theta / 2)))
+        else:
+            raise AssertionError(e.dxftype())
+    return out

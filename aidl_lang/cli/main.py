@@ -488,6 +488,10 @@ def cmd_render(args) -> int:
         kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
         if kept:
             notes.append(kept)
+        from ..output.part.shared import kerf_note
+        kept = kerf_note(output, cut)              # ... and the edges of the pieces they cut
+        if kept:
+            notes.append(kept)
         flat, solid = [cut], [output]
         if args.layout:
             from ..output.fabrication.layout import place, plan

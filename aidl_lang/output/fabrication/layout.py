@@ -169,6 +169,8 @@ def compensate(output: Output, kerf, deadline=None) -> Output:
             raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}{_spline_fix(output, e)}") \
                 from None
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
+    from ..part.shared import kerf_pieces          # pieces of a cut part: shared edges on the cut
+    parts = kerf_pieces(output, parts, kerf)
     return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
 
 

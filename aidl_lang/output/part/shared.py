@@ -22,7 +22,7 @@ from __future__ import annotations
 import bisect
 import math
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Spline
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, reverse, tangent_at
 
 SHARED_TOL = 1e-6      # mm: a stretch shorter than this is not shared (ends that only touch)
 TWO_PI = 2 * math.pi
@@ -72,6 +72,119 @@ def _corner(p) -> tuple:
     row's pieces share their ``y0``)."""
     boxes = [s.box() for lp in p.loops for s in lp.segments]
     return (round(min(b[0] for b in boxes), 6), round(min(b[1] for b in boxes), 6))
+
+
+def kerf_pieces(output, parts: list, kerf) -> list:
+    """``parts`` (the kerf-offset outlines of ``output.parts``, in their order; ``kerf``: mm,
+    or a dict part name -> mm) with the pieces of each cut part re-cut from their offset
+    union: the part offset by half the kerf (the union of its pieces' offsets), less its
+    through-cuts, each end on the outline carried on along its tangent across the offset band
+    (:func:`_carried`).  Each outline offset on its own ran its side of a shared edge half a
+    kerf into the neighbour, so the two cuts, a kerf apart, took a whole kerf off each piece
+    there (a 3 x 3 grid of 10 mm squares at kerf 0.2 mm: the middle square 9.6 mm, with no
+    word); re-cut, a shared edge is one cut on the line (:func:`cut_once`), each piece half a
+    kerf short there (:func:`kerf_note` says so), offset outward everywhere else, and the cut
+    runs on straight across the band to the offset outline.  Parts not offset, and parts
+    that are not pieces of a cut part, are returned as they are."""
+    import manifold3d as mf
+
+    from .booleans import SLIT_GROW, SLIT_HALF, _chain_points, _meeting, _quad
+    from .exact import Provenance
+    from .part import PartOutline
+    d = getattr(output, "drawing", None)
+    split = getattr(d, "split", None) or ()
+    if not split:
+        return parts
+    family: dict = {}
+    for i, (p, c) in enumerate(zip(output.parts, parts)):
+        if p.name in split and p.kind == "solid" and c is not p and p.loops:
+            family.setdefault(d.part_of.get(p.name), []).append(i)
+    parts = list(parts)
+    for s, idx in family.items():
+        whole = (getattr(d, "slit_shapes", None) or {}).get(getattr(s, "path", None))
+        k = kerf.get(output.parts[idx[0]].name, 0.0) if isinstance(kerf, dict) else kerf
+        if len(idx) < 2 or whole is None or not k:
+            continue
+        prov = Provenance()
+        grown = [prov.section(parts[i].loops) for i in idx]
+        drawn = [prov.section(output.parts[i].loops) for i in idx]
+        band = mf.CrossSection.batch_boolean(grown, mf.OpType.Add)
+        bands = []
+        for th in d.through:
+            if th.part is s and not th.on_outline and th.segments:
+                segs = _carried(th.segments, whole[0], 4 * k)
+                prov.polygon(Loop(segs + [reverse(x) for x in reversed(segs)]))
+                pts = _chain_points(segs)
+                bands += [_quad(pts[j], pts[j + 1], SLIT_HALF) for j in range(len(pts) - 1)]
+        if not bands:
+            continue
+        comps = (band - mf.CrossSection.batch_boolean(bands, mf.OpType.Add)).decompose()
+        owner = _meeting(comps, drawn)
+        got: dict = {}
+        for c, near in zip(comps, owner):     # each piece of the band to the piece it holds
+            best, most = None, 0.0
+            for j in near:
+                a = (c ^ drawn[j]).area()
+                if a > most:
+                    best, most = j, a
+            if best is not None:
+                got.setdefault(best, []).append(c.offset(SLIT_GROW, mf.JoinType.Miter))
+        todo = sorted(got)
+        shapes = [band ^ mf.CrossSection.batch_boolean(got[j], mf.OpType.Add) for j in todo]
+        for j, loops in zip(todo, prov.loops_of(shapes)):
+            c = parts[idx[j]]
+            parts[idx[j]] = PartOutline(c.name, c.kind, loops, c.thickness)
+    return parts
+
+
+def _carried(segs: list, shape, length: float) -> list:
+    """Chain ``segs`` (a through-cut, exact) with each end that lies on the outline of
+    ``shape`` (a small square round it not wholly inside) carried on ``length`` mm along
+    its tangent, as a :class:`Line`."""
+    import manifold3d as mf
+    out = list(segs)
+    for at_end in (False, True):
+        s = segs[-1] if at_end else segs[0]
+        p = s.end if at_end else s.start
+        h = 1e-5
+        sq = mf.CrossSection([[(p[0] - h, p[1] - h), (p[0] + h, p[1] - h),
+                               (p[0] + h, p[1] + h), (p[0] - h, p[1] + h)]])
+        if (shape ^ sq).area() >= sq.area() * (1 - 1e-6):
+            continue                          # it ends inside the material: left as it is
+        tx, ty = tangent_at(s, at_end)
+        # a line carried on is one longer line (two chords on one carrier would be one edge
+        # of the booleans' result, which the exact recovery matches to a single chord)
+        if at_end:
+            q = (p[0] + length * tx, p[1] + length * ty)
+            if isinstance(s, Line):
+                out[-1] = Line(out[-1].start, q)
+            else:
+                out.append(Line(p, q))
+        else:
+            q = (p[0] - length * tx, p[1] - length * ty)
+            if isinstance(s, Line):
+                out[0] = Line(q, out[0].end)
+            else:
+                out.insert(0, Line(q, p))
+    return out
+
+
+def kerf_note(output, cut) -> str:
+    """The note when the kerf offset (``cut``: :func:`~..fabrication.layout.for_cutting`
+    of ``output``) met pieces of a cut part: their shared edges are cut once on the line,
+    not offset; "" when there is nothing to say."""
+    d = getattr(output, "drawing", None)
+    split = getattr(d, "split", None) or ()
+    if cut is output or not split:
+        return ""
+    names = sorted({d.part_of[p.name].path for p, c in zip(output.parts, cut.parts)
+                    if p.name in split and c is not p and p.name in d.part_of})
+    if not names:
+        return ""
+    which = ", ".join(f"`{n}`" for n in names[:3]) + (" ..." if len(names) > 3 else "")
+    return (f"note: the kerf offset cuts the edges the pieces of {which} share once, on the "
+            "cut: each piece comes out half a kerf short there (one cut cannot be offset "
+            "for the pieces on both sides)")
 
 
 # ------------------------------------------------------------------ carriers and ranges
@@ -226,4 +339,4 @@ def _chains(segs: list, spans: list, kept: list) -> list:
     return chains
 
 
-__all__ = ["cut_once", "loop_paths", "SHARED_TOL"]
+__all__ = ["cut_once", "kerf_note", "kerf_pieces", "loop_paths", "SHARED_TOL"]
