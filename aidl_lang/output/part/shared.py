@@ -16,6 +16,11 @@ spline or ellipse: :func:`_span`) whose parameter ranges overlap by more than
 :data:`SHARED_TOL` mm.  Each carrier keeps the merged ranges cut so far, sorted, so each
 segment costs O(log n): a 40 x 40 grid's 1,600 squares are 6,400 segments on 82 carriers.
 Parts laid apart on a sheet share nothing, and so are cut whole.
+
+With a kerf (:func:`~..fabrication.layout.compensate`), :func:`kerf_pieces` re-cuts the
+pieces of each cut part from the part offset by half the kerf, so that a shared edge stays
+one cut on its line (carried on across the offset band) instead of two cuts a kerf apart;
+:func:`kerf_note` is the note that says each piece is half a kerf short along the cuts.
 """
 from __future__ import annotations
 
@@ -101,71 +106,92 @@ def kerf_pieces(output, parts: list, kerf) -> list:
             family.setdefault(d.part_of.get(p.name), []).append(i)
     parts = list(parts)
     for s, idx in family.items():
-        whole = (getattr(d, "slit_shapes", None) or {}).get(getattr(s, "path", None))
         k = kerf.get(output.parts[idx[0]].name, 0.0) if isinstance(kerf, dict) else kerf
-        if len(idx) < 2 or whole is None or not k:
+        if len(idx) < 2 or not k:
             continue
         prov = Provenance()
         grown = [prov.section(parts[i].loops) for i in idx]
         drawn = [prov.section(output.parts[i].loops) for i in idx]
         band = mf.CrossSection.batch_boolean(grown, mf.OpType.Add)
+        # each piece in its connected pieces (a part may be many: a sheet's), each asked only
+        # of what meets its box: a sheet of n pieces costs O(n log n), not n^2
+        held = [(j, c) for j, sec in enumerate(drawn) for c in sec.decompose()]
+        near_g = [c for sec in grown for c in sec.decompose()]
         bands = []
-        for th in d.through:
-            if th.part is s and not th.on_outline and th.segments:
-                segs = _carried(th.segments, whole[0], 4 * k)
-                prov.polygon(Loop(segs + [reverse(x) for x in reversed(segs)]))
-                pts = _chain_points(segs)
-                bands += [_quad(pts[j], pts[j + 1], SLIT_HALF) for j in range(len(pts) - 1)]
+        chains = [th.segments for th in d.through
+                  if th.part is s and not th.on_outline and th.segments]
+        for segs in _carried(chains, [c for _, c in held], 4 * k):
+            prov.polygon(Loop(segs + [reverse(x) for x in reversed(segs)]))
+            pts = _chain_points(segs)
+            bands += [_quad(pts[j], pts[j + 1], SLIT_HALF) for j in range(len(pts) - 1)]
         if not bands:
             continue
         comps = (band - mf.CrossSection.batch_boolean(bands, mf.OpType.Add)).decompose()
-        owner = _meeting(comps, drawn)
+        owner = _meeting(comps, [c for _, c in held])
         got: dict = {}
         for c, near in zip(comps, owner):     # each piece of the band to the piece it holds
             best, most = None, 0.0
-            for j in near:
-                a = (c ^ drawn[j]).area()
+            for n in near:
+                a = (c ^ held[n][1]).area()
                 if a > most:
-                    best, most = j, a
+                    best, most = held[n][0], a
             if best is not None:
                 got.setdefault(best, []).append(c.offset(SLIT_GROW, mf.JoinType.Miter))
         todo = sorted(got)
-        shapes = [band ^ mf.CrossSection.batch_boolean(got[j], mf.OpType.Add) for j in todo]
+        pieces = [c for j in todo for c in got[j]]
+        # within the offset part (exact there): the offset pieces whose boxes meet its own
+        local = _meeting(pieces, near_g)
+        cut = [c ^ mf.CrossSection.batch_boolean([near_g[i] for i in near], mf.OpType.Add)
+               for c, near in zip(pieces, local)]
+        at = 0
+        shapes = []
+        for j in todo:
+            shapes.append(mf.CrossSection.batch_boolean(cut[at:at + len(got[j])], mf.OpType.Add))
+            at += len(got[j])
         for j, loops in zip(todo, prov.loops_of(shapes)):
             c = parts[idx[j]]
             parts[idx[j]] = PartOutline(c.name, c.kind, loops, c.thickness)
     return parts
 
 
-def _carried(segs: list, shape, length: float) -> list:
-    """Chain ``segs`` (a through-cut, exact) with each end that lies on the outline of
-    ``shape`` (a small square round it not wholly inside) carried on ``length`` mm along
-    its tangent, as a :class:`Line`."""
+def _carried(chains: list, shapes: list, length: float) -> list:
+    """Each chain of ``chains`` (through-cuts, exact segments) with each end that lies on the
+    outline of the region ``shapes`` cover (disjoint CrossSections: a small square round the
+    end not wholly inside them) carried on ``length`` mm along its tangent, as a
+    :class:`Line` (a line's own carrier: the line made longer).  All ends are asked of the
+    shapes their boxes meet at once (:func:`~.booleans._meeting`)."""
     import manifold3d as mf
-    out = list(segs)
-    for at_end in (False, True):
+
+    from .booleans import _meeting
+    h = 1e-5
+    ends = [(c, at_end) for c in range(len(chains)) for at_end in (False, True)]
+    squares = []
+    for c, at_end in ends:
+        p = chains[c][-1].end if at_end else chains[c][0].start
+        squares.append(mf.CrossSection([[(p[0] - h, p[1] - h), (p[0] + h, p[1] - h),
+                                         (p[0] + h, p[1] + h), (p[0] - h, p[1] + h)]]))
+    out = [list(segs) for segs in chains]
+    for (c, at_end), sq, near in zip(ends, squares, _meeting(squares, shapes)):
+        if sum((shapes[i] ^ sq).area() for i in near) >= sq.area() * (1 - 1e-6):
+            continue                          # it ends inside the material: left as it is
+        segs = out[c]
         s = segs[-1] if at_end else segs[0]
         p = s.end if at_end else s.start
-        h = 1e-5
-        sq = mf.CrossSection([[(p[0] - h, p[1] - h), (p[0] + h, p[1] - h),
-                               (p[0] + h, p[1] + h), (p[0] - h, p[1] + h)]])
-        if (shape ^ sq).area() >= sq.area() * (1 - 1e-6):
-            continue                          # it ends inside the material: left as it is
         tx, ty = tangent_at(s, at_end)
         # a line carried on is one longer line (two chords on one carrier would be one edge
         # of the booleans' result, which the exact recovery matches to a single chord)
         if at_end:
             q = (p[0] + length * tx, p[1] + length * ty)
             if isinstance(s, Line):
-                out[-1] = Line(out[-1].start, q)
+                segs[-1] = Line(segs[-1].start, q)
             else:
-                out.append(Line(p, q))
+                segs.append(Line(p, q))
         else:
             q = (p[0] - length * tx, p[1] - length * ty)
             if isinstance(s, Line):
-                out[0] = Line(q, out[0].end)
+                segs[0] = Line(q, segs[0].end)
             else:
-                out.insert(0, Line(q, p))
+                segs.insert(0, Line(q, p))
     return out
 
 
