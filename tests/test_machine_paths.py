@@ -98,7 +98,10 @@ def test_a_t_of_cuts_is_cut_once_per_line(tmp_path, capsys):
     # every outer edge once: 2 x (60 + 30) mm of straight lines less the 4 corner arcs' ends
     assert sum(m.length for m in cut) == pytest.approx(
         2 * (60 + 30) + 2 * math.pi * R + 30 + 2 * R + 30 + R, abs=1e-6)
-    assert said.count("note: the shared cut between") == 3
+    # one note for the cut part (not one a pair of pieces: a grid's would be dozens)
+    assert said.count("shared cut") == 1
+    assert ("note: the 3 shared cuts between the 3 pieces of `plate` are each cut once along "
+            f"their line; each side loses {R:g} mm (half the bit, 3.175 mm) along each") in said
 
 
 def test_an_edge_shared_in_part_steps_out_square(tmp_path, capsys):
