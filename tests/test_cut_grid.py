@@ -203,6 +203,12 @@ def test_the_grid_cuts_each_shared_edge_once_in_every_cutting_output(tmp_path):
         for a, b in re.findall(r"L(\d+) (\d+)", prims):
             walked.append((verts[int(a)], verts[int(b)]))
     assert _count(walked) == once
+    # HP-GL too (the same toolpath; its pen-down paths re-read by ezhpgl): 240 mm, not 720
+    pytest.importorskip("ezhpgl")
+    from test_hpgl import _points, _read
+    _, paths = _read(encode(out, ".plt"))
+    hp = [(tuple(a), tuple(b)) for ops in paths for a, b in zip(_points(ops), _points(ops)[1:])]
+    assert _count(hp) == once
 
 
 def test_a_part_cut_in_three_with_a_t_shares_each_stretch_once(tmp_path):

@@ -36,7 +36,8 @@ TWO_PI = 2 * math.pi
 
 def cut_once(output) -> dict:
     """``{(part index, loop index): [(segments, closed), ...]}`` for each loop of
-    ``output.parts`` that an earlier part of the same split family already cuts in part:
+    ``output.parts`` that an earlier part of the same split family, or a through-cut of the
+    split part left as a stroke (:attr:`~.part.Output.cuts`), already cuts in part:
     the loop's segments less the stretches cut before, as open chains (``closed`` False) in
     the loop's own direction (an empty list: the whole loop is cut already).  Loops not in it
     are cut whole.  Only the parts a through-cut split (``output.drawing.split``) are
@@ -44,6 +45,12 @@ def cut_once(output) -> dict:
     todo = _family(output)
     cover: dict = {}
     out: dict = {}
+    # a through-cut left as a stroke (one that runs on past the outline) cuts its line first
+    names = {output.parts[i].name for i in todo}
+    for st in getattr(output, "cuts", ()):
+        if st.part in names:
+            for s in st.segments:
+                _add(cover, _span(s))
     # row by row from the lowest left corner: which of two pieces cuts their edge is free,
     # and so each piece finds the edges below and left of it cut, and cuts the rest of its
     # outline in one run (in the output's order a piece could be left two stretches apart)
