@@ -98,7 +98,10 @@ def test_a_t_of_cuts_is_cut_once_per_line(tmp_path, capsys):
     # every outer edge once: 2 x (60 + 30) mm of straight lines less the 4 corner arcs' ends
     assert sum(m.length for m in cut) == pytest.approx(
         2 * (60 + 30) + 2 * math.pi * R + 30 + 2 * R + 30 + R, abs=1e-6)
-    assert said.count("note: the shared cut between") == 3
+    # one note for the cut part (not one a pair of pieces: a grid's would be dozens)
+    assert said.count("shared cut") == 1
+    assert ("note: the 3 shared cuts between the 3 pieces of `plate` are each cut once along "
+            f"their line; each side loses {R:g} mm (half the bit, 3.175 mm) along each") in said
 
 
 def test_an_edge_shared_in_part_steps_out_square(tmp_path, capsys):
@@ -140,6 +143,50 @@ def test_kerf_keeps_the_outer_edges_and_cuts_the_shared_line_on_it(tmp_path, cap
     assert sorted(xs) == pytest.approx([-0.1, 30, 60.1], abs=1e-9)
     assert ("note: the shared cut between `plate` and `plate.piece1` is cut once along its "
             "line; each side loses 0.1 mm (half the kerf, 0.2 mm)") in said
+
+
+def test_kerf_on_a_disc_cut_in_two_runs_the_chord_on_to_the_offset_arc(tmp_path, capsys):
+    # the chord is shared, the arcs offset 0.1 mm: each arc runs on to where the chord's line
+    # meets the offset circle (x = +-sqrt(5.1^2 - 1)); before, the smaller half's arc was "too
+    # short for an offset of 0.1 mm" (an arc running on to a kept line was taken for one eaten)
+    src = """solid disc {
+    body = Circle(center=(0, 0), radius=5)
+    cut split { a = Line((-6, 1), (6, 1)) }
+}
+"""
+    f, said = _render(tmp_path, capsys, src, "d.dxf", "--kerf", "0.2mm")
+    x = math.sqrt(5.1 ** 2 - 1)
+    chords, radii, ends = [], set(), []
+    for e in ezdxf.readfile(str(f)).modelspace():
+        if e.dxftype() == "ARC":
+            radii.add(round(e.dxf.radius, 9))
+            for a in (e.dxf.start_angle, e.dxf.end_angle):
+                px, py = e.dxf.radius * math.cos(math.radians(a)), \
+                    e.dxf.radius * math.sin(math.radians(a))
+                assert py == pytest.approx(1, abs=1e-9)
+                ends.append(px)
+            continue
+        if e.dxftype() == "LINE":
+            chords.append((tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
+            continue
+        pts = [tuple(p) for p in e.get_points("xyb")]
+        pairs = zip(pts, pts[1:] + (pts[:1] if e.closed else []))
+        for (x0, y0, b), (x1, y1, _) in pairs:
+            if b == 0:
+                chords.append(((x0, y0), (x1, y1)))
+            else:
+                c = math.dist((x0, y0), (x1, y1))
+                radii.add(round(c / (2 * math.sin(2 * math.atan(abs(b)))), 9))
+    # the chord once: the through-cut as drawn (it runs on past the disc, so it is a stroke
+    # of its own, which cuts the shared line; before, both halves' outlines cut it again)
+    assert len(chords) == 1
+    (p, q) = chords[0]
+    assert sorted([p, q]) == [(-6.0, 1.0), (6.0, 1.0)]
+    # both halves' arcs offset 0.1 mm, each running on to the chord's line
+    assert radii == {5.1}
+    assert sorted(round(v, 9) for v in ends) == pytest.approx([-x, -x, x, x], abs=1e-9)
+    assert ("note: the shared cut between `disc` and `disc.piece1` is cut once along its "
+            "line; each side loses 0.1 mm (half the kerf, 0.2 mm) along it") in said
 
 
 def test_laser_with_a_kerf_cuts_the_shared_line_once_a_pass(tmp_path, capsys):

@@ -487,7 +487,8 @@ def cmd_render(args) -> int:
         # --kerf, else the program's `kerf`; laid out, the pieces of a cut lie apart and each
         # is offset whole, else an edge two pieces share is cut once along its line
         cut = for_cutting(output, kerf, res.deadline, apart=bool(args.layout))
-        from ..output.fabrication.layout import shared_note, through_cut_note
+        from ..output.fabrication.layout import through_cut_note
+        from ..output.part.shared import shared_note
         kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
         if kept:
             notes.append(kept)

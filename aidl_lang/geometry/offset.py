@@ -60,14 +60,16 @@ def _right(s: Segment, d: float) -> Segment:
     return Arc(s.center, r, s.start_angle, s.sweep)
 
 
-def _forward(orig: Segment, new: Segment) -> bool:
-    """True when the trimmed offset ``new`` still runs the way ``orig`` does."""
+def _forward(orig: Segment, new: Segment, reach: float = 0.0) -> bool:
+    """True when the trimmed offset ``new`` still runs the way ``orig`` does; an arc may be
+    no longer than ``orig`` but by ``reach`` mm at each end (where it runs on to a kept
+    neighbour's line: :func:`_join`, at most :data:`MITER_LIMIT` offsets)."""
     if isinstance(orig, Line):
         (x0, y0), (x1, y1) = orig.start, orig.end
         (p0, q0), (p1, q1) = new.start, new.end
         return (p1 - p0) * (x1 - x0) + (q1 - q0) * (y1 - y0) > 0
     return new.sweep != 0 and (new.sweep > 0) == (orig.sweep > 0) \
-        and abs(new.sweep) <= abs(orig.sweep) + 1e-9
+        and abs(new.sweep) <= abs(orig.sweep) + 2 * reach / new.radius + 1e-9
 
 
 def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
@@ -108,8 +110,14 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
         out += joins[k][2]
         start, end = joins[k][1], joins[(k + 1) % n][0]
         g = moved[k]
+        # an arc beside a kept segment may run on to where the kept one's carrier crosses it
+        reach = MITER_LIMIT * d if {(k - 1) % n, (k + 1) % n} & keep and k not in keep \
+            and isinstance(g, Arc) else 0.0
+        if reach:
+            e = math.copysign(reach / g.radius, g.sweep)
+            g = Arc(g.center, g.radius, g.start_angle - e, g.sweep + 2 * e)
         t = with_ends(g, start, end) if (start, end) != (g.start, g.end) else g
-        if not _forward(segs[k], t):
+        if not _forward(segs[k], t, reach):
             x, y = segs[k].start
             raise OffsetError(f"the {'line' if isinstance(segs[k], Line) else 'arc'} from "
                               f"({x:g}, {y:g}) is too short for an offset of {d:g} mm: its "

@@ -25,7 +25,7 @@ One module per family:
   ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
 * :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
-* :mod:`.through`: ``W0522`` a through-cut off the material, ``W0507`` a web thinner than the
+* :mod:`.through`: ``W0522`` a through-cut off the material or along the outline, ``W0507`` a web thinner than the
   minimum between through-cuts (or a through-cut and the outline);
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;

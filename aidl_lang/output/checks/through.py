@@ -1,7 +1,9 @@
 """Checks of through-cuts (a ``cut`` structure's open curves, :class:`~..part.booleans.Through`):
 
 * ``W0522`` a through-cut that cuts nothing: no stretch of it lies on the material of its
-  part (it is drawn off the part, or in a hole), or it has no length;
+  part (it is drawn off the part, or in a hole), or it has no length, or it lies along the
+  part's outline (or a hole's) from end to end: the outline is cut anyway, so it adds nothing
+  (the outputs leave it out: that line is cut once);
 * ``W0507`` a web thinner than the minimum wall that the through-cuts leave: the morphological
   opening (:func:`.walls._thin`) of the part with every through-cut's band taken out
   (:attr:`~..part.booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
@@ -53,6 +55,12 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
                          hint=f"move it onto `{th.part.path}` (a cut that frees a piece runs "
                               "from edge to edge; a slit ends inside the material), or delete "
                               "it; a line to engrave belongs in a `drawing`")
+        elif getattr(th, "on_outline", False):
+            sink.warning("W0522", f"through-cut `{g.label}` adds nothing: it lies along the "
+                         f"outline of `{th.part.path}`, which is cut anyway (the outputs cut "
+                         "it once)", g.span or th.part.span,
+                         hint="delete it; to cut the part along a new line, draw the line "
+                              "across the material")
     for name, (whole, slit) in (getattr(d, "slit_shapes", None) or {}).items():
         s = d.part_of.get(name)
         if s is None or s not in roots:

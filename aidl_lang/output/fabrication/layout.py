@@ -28,6 +28,7 @@ import math
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.offset import OffsetError, offset_loop
 from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
+from ..part.shared import shared_edges
 
 SAFETY = 0.01        # mm added to the gap around each part: chords, the packer's f32 positions
 INSTALL = "pip install 'aidl-lang[layout]'"
@@ -152,17 +153,17 @@ def through_cut_note(output: Output, cut: Output) -> str:
 def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Output:
     """``output`` with every cut of its solid parts offset by half the kerf: outer loops
     outward, holes inward, so the parts come out at their designed size.  An edge two pieces
-    share (:func:`shared_edges`: a cut from edge to edge freed one of them) is cut once along
-    its line, not offset into the neighbour: each side of it loses half the kerf
-    (:func:`shared_note`); ``apart``: not so (each part is cut on its own, as a layout places
-    them).  ``kerf``: mm for every part, or a dict part name -> mm (parts
-    missing from it are not offset).  Engraving and through-cuts (:func:`through_cut_note`)
+    share (:func:`~..part.shared.shared_edges`: a cut from edge to edge freed one of them) is
+    left on its line, not offset into the neighbour, and so cut once: each side of it loses
+    half the kerf (:func:`~..part.shared.shared_note`); ``apart``: not so (each part is cut
+    on its own, as a layout places them).  ``kerf``: mm for every part, or a dict part name ->
+    mm (parts missing from it are not offset).  Engraving and through-cuts (:func:`through_cut_note`)
     are not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
     than the offset; ``deadline`` (a :class:`~aidl_lang.limits.Deadline`, or None) is looked
     at before each part (:class:`~aidl_lang.limits.OutOfBudget` naming the part's structure)."""
     parts = []
     where = output.drawing.part_of if output.drawing is not None else {}
-    shared = {} if apart else shared_edges(output.parts)
+    shared = {} if apart else shared_edges(output)
     for i, p in enumerate(output.parts):
         if deadline is not None:
             deadline.check("the kerf offset", where.get(p.name))
@@ -179,126 +180,6 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
                 from None
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
     return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
-
-
-def shared_edges(parts: list) -> dict:
-    """The edges solid ``parts`` share: where a segment of one part's loop runs along a
-    segment of another's, the other way (the two sides of one cut).  Returns part index ->
-    one ``(loop, keep, neighbours)`` per loop of that part: the loop with its lines split where
-    another part's shared line starts or ends (so that each piece of it is shared whole or
-    not at all), the indices of its shared segments, and for each of them the index of the
-    part on the other side.  Parts sharing nothing are left out.  Lines match when they are
-    collinear and overlap, arcs and circles when they have one circle and swapped ends
-    (within :func:`~..geometry.curves.tolerance`).  Only parts whose boxes touch are compared,
-    and within them only the segments in the boxes' overlap."""
-    import numpy as np
-    from ...geometry.curves import tolerance
-    solid = [i for i, p in enumerate(parts) if p.kind == "solid" and p.loops]
-    if len(solid) < 2:
-        return {}
-    boxes = {i: part_box(parts[i]) for i in solid}
-    scale = max(max(abs(v) for b in boxes.values() for v in b), 1.0)
-    tol = 1e3 * tolerance(scale)          # the booleans' ends agree far closer than 1e-6 mm
-    arr = np.array([boxes[i] for i in solid])
-    pairs = []
-    for a, i in enumerate(solid):
-        near = np.flatnonzero((arr[:, 0] <= arr[a, 2] + tol) & (arr[:, 2] >= arr[a, 0] - tol)
-                              & (arr[:, 1] <= arr[a, 3] + tol) & (arr[:, 3] >= arr[a, 1] - tol))
-        pairs += [(i, solid[b]) for b in near if solid[b] != i]
-    if not pairs:
-        return {}
-    loops = {i: [list(lp.segments) for lp in parts[i].loops] for i in solid}
-    # split lines where another part's line ends inside them (a T: one long edge, two pieces)
-    for i, j in pairs:
-        ov = _overlap(boxes[i], boxes[j], tol)
-        ends = [q for lp in loops[j] for g in lp if isinstance(g, Line) and _box_in(g, ov, tol)
-                for q in (g.start, g.end)]
-        if ends:
-            loops[i] = [_split_lines(lp, ends, ov, tol) for lp in loops[i]]
-    out: dict = {}
-    for i, j in pairs:
-        ov = _overlap(boxes[i], boxes[j], tol)
-        others = [g for lp in loops[j] for g in lp if _box_in(g, ov, tol)]
-        if not others:
-            continue
-        for li, lp in enumerate(loops[i]):
-            for k, g in enumerate(lp):
-                if _box_in(g, ov, tol) and any(_opposite(g, h, tol) for h in others):
-                    got = out.setdefault(i, [dict() for _ in loops[i]])
-                    got[li][k] = j
-    return {i: [(Loop(loops[i][li]), frozenset(ks), [ks[k] for k in sorted(ks)])
-                for li, ks in enumerate(got)] for i, got in out.items()}
-
-
-def _overlap(a, b, tol):
-    return (max(a[0], b[0]) - tol, max(a[1], b[1]) - tol, min(a[2], b[2]) + tol,
-            min(a[3], b[3]) + tol)
-
-
-def _box_in(g, box, tol) -> bool:
-    """Segment ``g``'s box meets ``box``."""
-    x0, y0, x1, y1 = g.box()
-    return x0 <= box[2] and x1 >= box[0] and y0 <= box[3] and y1 >= box[1]
-
-
-def _split_lines(segs: list, ends: list, box, tol) -> list:
-    """``segs`` with each line in ``box`` cut at the points of ``ends`` lying inside it."""
-    out = []
-    for g in segs:
-        if not isinstance(g, Line) or not _box_in(g, box, tol):
-            out.append(g)
-            continue
-        (x0, y0), (x1, y1) = g.start, g.end
-        L = math.hypot(x1 - x0, y1 - y0)
-        if L <= 2 * tol:
-            out.append(g)
-            continue
-        ux, uy = (x1 - x0) / L, (y1 - y0) / L
-        cuts = sorted({round(t, 12) for q in ends
-                       for t in [(q[0] - x0) * ux + (q[1] - y0) * uy]
-                       if tol < t < L - tol and abs((q[0] - x0) * uy - (q[1] - y0) * ux) <= tol})
-        if not cuts:
-            out.append(g)
-            continue
-        pts = [g.start] + [(x0 + t * ux, y0 + t * uy) for t in cuts] + [g.end]
-        out += [Line(a, b) for a, b in zip(pts, pts[1:])]
-    return out
-
-
-def _opposite(g, h, tol) -> bool:
-    """Segments ``g`` and ``h`` are one edge run both ways: a line or arc with the other's
-    ends swapped (and one circle), or one circle turning both ways."""
-    if isinstance(g, Circle) or isinstance(h, Circle):
-        return isinstance(g, Circle) and isinstance(h, Circle) and g.ccw != h.ccw and \
-            math.dist(g.center, h.center) <= tol and abs(g.radius - h.radius) <= tol
-    if type(g) is not type(h) or not isinstance(g, (Line, Arc)):
-        return False
-    if math.dist(g.start, h.end) > tol or math.dist(g.end, h.start) > tol:
-        return False
-    if isinstance(g, Arc):
-        return math.dist(g.center, h.center) <= tol and abs(g.radius - h.radius) <= tol \
-            and (g.sweep > 0) != (h.sweep > 0)
-    return True
-
-
-def shared_note(output: Output, width, what: str = "the kerf") -> list[str]:
-    """One note per pair of pieces of ``output`` that share an edge (:func:`shared_edges`),
-    when cut with ``width`` mm (a kerf or a router's tool diameter: mm, or a dict part name ->
-    mm): the shared cut is cut once along its line, so each side loses half of ``width``
-    there.  ``what``: how the width is named ("the kerf", "the bit")."""
-    said = {}
-    for i, loops in shared_edges(output.parts).items():
-        for _, _, nbs in loops:
-            for j in nbs:
-                a, b = sorted((output.parts[i].name, output.parts[j].name))
-                said[(a, b)] = None
-    out = []
-    for a, b in said:
-        w = max(width.get(a, 0.0), width.get(b, 0.0)) if isinstance(width, dict) else width
-        if w:
-            out.append(f"note: the shared cut between `{a}` and `{b}` is cut once along its "
-                       f"line; each side loses {w / 2:g} mm (half {what}, {w:g} mm) along it")
-    return out
 
 
 def _spline_fix(output: Output, e: OffsetError) -> str:

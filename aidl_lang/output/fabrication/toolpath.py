@@ -15,6 +15,8 @@ operation:
    that frees the part).  A part's through-cuts (a ``cut`` structure's curves: the output's
    strokes of style ``cut``, open or closed) come first of all its cuts, as ``cut_inner``
    (the inner cut's power, speed and passes), each one path along the curve as written.
+3. an edge two pieces of one cut part share is cut once, with the piece cut first
+   (:func:`~..part.shared.cut_once`): the other piece's loop is cut as the open paths left.
 
 Within each group the next path is the nearest to where the last one ended (a greedy
 nearest-neighbour tour, from the origin), an open path may be run backwards and a closed loop
@@ -29,6 +31,7 @@ import numpy as np
 
 from ...geometry.curves import Circle, Loop, Segment, reverse
 from ..part.part import Output
+from ..part.shared import cut_once, loop_paths
 
 Point = tuple[float, float]
 
@@ -65,13 +68,11 @@ def _start(s: Segment) -> Point:
     return tuple(s.start)
 
 
-def plan(output: Output, origin: Point = (0.0, 0.0), back=(), once: bool = False) -> list[Cut]:
+def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
     """The :class:`Cut` s of ``output`` in cut order (the module's docstring), starting from
     ``origin`` (mm).  ``back``: the operations whose open paths the machine runs there and
     back (an even number of passes, :mod:`.writers.gcode`): the tour goes on from where such
-    a path started.  ``once``: an edge two pieces share is cut once (point 3 of the module's
-    docstring; the G-code writer); else every loop stays whole (LightBurn and HPGL keep each
-    part's closed shape, which their own software may offset)."""
+    a path started."""
     back = tuple(back)
 
     def after(c: Cut) -> Point:
@@ -92,6 +93,8 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=(), once: bool = False
             out.append(c)
             at = after(c)
     parts = [p for p in output.parts if p.loops]
+    once = cut_once(output)         # the pieces of one cut part: each shared edge once
+    index = {id(p): n for n, p in enumerate(output.parts)}
     names = {p.name for p in parts}
     loose = [c for name, cs in through.items() if name not in names for c in cs]
     for c in _tour(loose, at, after):   # through-cuts of no part left (they cut nothing)
@@ -114,7 +117,6 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=(), once: bool = False
         own = _depths([lp for _, lp in got])
         by_part[i] = [(d, lp) for d, (_, lp) in zip(own, got)]
     remaining = sorted(by_part, key=lambda i: -part_depth.get(i, 0))
-    done: dict = {}      # segment key -> the part whose loop cut it (a shared edge: once)
     while remaining:
         deepest = part_depth.get(remaining[0], 0)
         level = [i for i in remaining if part_depth.get(i, 0) == deepest]
@@ -129,102 +131,14 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=(), once: bool = False
                 out.append(c)
                 at = after(c)
             for d in sorted({d for d, _ in by_part[i]}, reverse=True):
-                cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name,
-                            list(lp.segments), True) for dd, lp in by_part[i] if dd == d]
+                # a loop an earlier piece of the same cut part shares: the rest of it, open
+                cuts = [Cut("cut_inner" if lp.is_hole else "cut_outer", name, segs, closed)
+                        for k, (dd, lp) in enumerate(by_part[i]) if dd == d
+                        for segs, closed in loop_paths(once, index[id(parts[i])], k, lp)]
                 for c in _tour(cuts, at, after):
-                    for c in (_once(c, done) if once else [c]):
-                        out.append(c)
-                        at = after(c)
+                    out.append(c)
+                    at = after(c)
     return out
-
-
-def _key(s: Segment) -> tuple:
-    """What makes segment ``s`` the same cut as another, either way round: a line its
-    carrier (unit direction, the sign made positive, and distance from the origin, to 1e-6
-    mm), an arc or circle its circle and ends."""
-    def r(p):
-        return (round(p[0], 6) + 0.0, round(p[1], 6) + 0.0)
-    if isinstance(s, Circle):
-        return ("C", r(s.center), round(s.radius, 6))
-    if hasattr(s, "center"):
-        return ("A", r(s.center), round(s.radius, 6), tuple(sorted((r(s.start), r(s.end)))))
-    if type(s).__name__ != "Line":
-        return (type(s).__name__, tuple(sorted((r(s.start), r(s.end)))))
-    (x0, y0), (x1, y1) = s.start, s.end
-    L = math.hypot(x1 - x0, y1 - y0) or 1.0
-    ux, uy = (x1 - x0) / L, (y1 - y0) / L
-    if ux < -1e-12 or (abs(ux) <= 1e-12 and uy < 0):
-        ux, uy = -ux, -uy
-    return ("L", round(ux, 9) + 0.0, round(uy, 9) + 0.0, round(ux * y0 - uy * x0, 6) + 0.0)
-
-
-def _along(s: Segment, key: tuple) -> tuple[float, float]:
-    """Where line ``s`` runs along its carrier ``key`` (:func:`_key`): (from, to) mm."""
-    t0 = s.start[0] * key[1] + s.start[1] * key[2]
-    t1 = s.end[0] * key[1] + s.end[1] * key[2]
-    return min(t0, t1), max(t0, t1)
-
-
-def _left(s: Segment, key: tuple, done: dict, part: str) -> list[Segment]:
-    """The pieces of segment ``s`` that no other part's loop has cut yet (``done``: key ->
-    [(from, to, part)] for lines along one carrier, [(part,)] for arcs and circles)."""
-    got = done.get(key, [])
-    if key[0] != "L":
-        return [] if any(g[-1] != part for g in got) else [s]
-    a, b = _along(s, key)
-    free = [(a, b)]
-    for c, d, who in got:
-        if who == part:
-            continue
-        free = [q for u, v in free for q in ((u, min(v, c)), (max(u, d), v)) if q[1] - q[0] > 1e-6]
-    if free == [(a, b)]:
-        return [s]
-    from ...geometry.curves import Line
-    t0 = s.start[0] * key[1] + s.start[1] * key[2]
-    sign = 1.0 if (s.end[0] * key[1] + s.end[1] * key[2]) >= t0 else -1.0
-    L = s.length
-    out = []
-    for u, v in sorted(free, reverse=sign < 0):
-        p, q = (u, v) if sign > 0 else (v, u)
-        f0, f1 = (p - t0) * sign / L, (q - t0) * sign / L
-        out.append(Line(_lerp(s, f0), _lerp(s, f1)))
-    return out
-
-
-def _lerp(s: Segment, f: float) -> Point:
-    if f <= 0.0:
-        return tuple(s.start)
-    if f >= 1.0:
-        return tuple(s.end)
-    return (s.start[0] + (s.end[0] - s.start[0]) * f, s.start[1] + (s.end[1] - s.start[1]) * f)
-
-
-def _once(c: Cut, done: dict) -> list[Cut]:
-    """Closed cut ``c`` without what another part's loop has cut already (an edge two pieces
-    share, on its line in both; a line may be cut in part): the open chains left, in the
-    loop's order (``[c]`` when nothing is shared).  ``done``: :func:`_left`'s, updated."""
-    keys = [_key(s) for s in c.segments]
-    left = [_left(s, k, done, c.part) for s, k in zip(c.segments, keys)]
-    for s, k in zip(c.segments, keys):
-        done.setdefault(k, []).append((*_along(s, k), c.part) if k[0] == "L" else (c.part,))
-    if all(len(got) == 1 and got[0] is s for got, s in zip(left, c.segments)):
-        return [c]
-    pieces = [g for got in left for g in got]
-    if not pieces:
-        return []
-    # chains: pieces that follow on one another without a gap
-    chains, cur = [], [pieces[0]]
-    for g in pieces[1:]:
-        if _dist(cur[-1].end if not isinstance(cur[-1], Circle) else _start(cur[-1]),
-                 _start(g)) <= 1e-9:
-            cur.append(g)
-        else:
-            chains.append(cur)
-            cur = [g]
-    chains.append(cur)
-    if len(chains) > 1 and _dist(tuple(chains[-1][-1].end), _start(chains[0][0])) <= 1e-9:
-        chains[0] = chains.pop() + chains[0]          # the loop's start was in a chain
-    return [Cut(c.operation, c.part, ch, False) for ch in chains]
 
 
 def travel(cuts: list[Cut], origin: Point = (0.0, 0.0)) -> float:

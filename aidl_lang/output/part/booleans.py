@@ -50,6 +50,11 @@ END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (
 # tolerance of the output (MATCH_TOL, 1e-6 mm, puts the band's sides back on the curve), far
 # above Manifold's grid (1e-8 mm)
 SLIT_HALF = 2.5e-7
+# mm: how far a piece a through-cut frees is grown back over the band (Booleans.slit): past
+# its half of the band, short of the other piece's side (a band between two pieces cut off
+# is covered twice over, the piece that stays keeps its side within MATCH_TOL of the cut)
+SLIT_GROW = 1.5 * SLIT_HALF
+SLIT_OFF = 1e-3    # of a band's own area: a through-cut with less of it on the material cuts nothing
 
 
 class Part(Compared):
@@ -79,16 +84,19 @@ class Through(Compared):
     (zero width) through ``part`` (the part's structure): its exact ``segments`` (mm) and
     ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
     zero-width cut); ``inside``: the band's area inside the part before any through-cut
-    (0: the cut is off the material)."""
-    __slots__ = ("geometry", "part", "segments", "band", "inside")
+    (0: the cut is off the material); ``on_outline``: it lies along the part's outline."""
+    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline")
 
     def __init__(self, geometry: Geometry, part: Structure, segments: list,
-                 band: mf.CrossSection, inside: float = 0.0):
+                 band: mf.CrossSection, inside: float = 0.0, on_outline: bool = False):
         self.geometry = geometry
         self.part = part
         self.segments = segments
         self.band = band
         self.inside = inside
+        # True: it runs along the part's outline (a hole's included) from end to end, the
+        # material on one side only: it adds nothing (not drawn, W0522)
+        self.on_outline = on_outline
 
 
 class Drawing(Compared):
@@ -905,8 +913,6 @@ class Renderer:
         bands = []
         for g, segs in paths:
             self.tick(s)
-            for seg in segs:
-                self._stroke_segment(seg, "cut", g, out)
             # the chords registered (there and back): the band's sides match the curve
             self.exact.polygon(Loop(list(segs) + [reverse(x) for x in reversed(segs)]))
             pts = _chain_points(segs)
@@ -916,16 +922,27 @@ class Renderer:
         # each band's area on the material: against the pieces of the part whose boxes meet
         # its own (the pieces are disjoint, so the sum is its area in the whole part; the
         # whole part for every band cost bands x the part's vertices: 5.9 s for the 2,180
-        # slits of Boxes.py's Lamp sheet)
+        # slits of Boxes.py's Lamp sheet); and on the material more than a band's width in
+        # from the outline (none: the cut lies along the outline, which is cut anyway)
         before = shp.decompose() if not shp.is_empty() else []
-        near = _meeting(bands, before)
-        for (g, segs), band, pieces in zip(paths, bands, near):
+        deep = shp.offset(-2 * SLIT_HALF, mf.JoinType.Miter).decompose() if before else []
+        near, near_deep = _meeting(bands, before), _meeting(bands, deep)
+        cutting = []
+        for (g, segs), band, pieces, inner in zip(paths, bands, near, near_deep):
             self.tick(s)
             inside = sum((band ^ before[i]).area() for i in pieces)
-            self.through.append(Through(g, s, segs, band, inside))
+            th = Through(g, s, segs, band, inside)
+            th.on_outline = inside > 0 and sum((band ^ deep[i]).area() for i in inner) \
+                <= SLIT_OFF * band.area()
+            self.through.append(th)
+            if th.on_outline:       # W0522: not drawn (the outline is cut once), cuts nothing
+                continue
+            for seg in segs:
+                self._stroke_segment(seg, "cut", g, out)
+            cutting.append(band)
         if shp.is_empty():
             return shp, []
-        cut = shp - self.union(bands, s)
+        cut = shp - self.union(cutting, s)
         self.slit_shapes[s.path] = (shp, cut)
         after = cut.decompose()
         if len(after) <= len(before):
@@ -944,18 +961,29 @@ class Renderer:
                     k, most = i, got
             groups.setdefault(k, []).append(comp)
         removed, pieces = [], []
-        for comps in groups.values():
+        for k, comps in groups.items():
             comps.sort(key=lambda c: -c.area())
             filled = [_filled(c) for c in comps]
             meets = _meeting(comps, filled)
             for i, comp in enumerate(comps[1:], 1):
-                removed.append(comp)
+                self.tick(s)
+                # grown back over its half of the bands (to 0.5 SLIT_HALF past the cut's
+                # line): its sides on the cut, a band between two pieces cut off taken whole
+                grown = comp.offset(SLIT_GROW, mf.JoinType.Miter)
+                removed.append(grown)
                 around = self.union([filled[j] for j in meets[i] if j != i], s)
                 if (comp - around).area() <= 1e-9 * max(1.0, comp.area()):
                     continue                 # enclosed: falls out with the scrap (a hole)
-                pieces.append(comp)
+                # the piece within its piece of the part's outline (exact there; not the
+                # whole part: a sheet of n pieces would cost n^2), a band wholly inside it
+                # (a cut that does not reach across) closed again: it cuts no area
+                pieces.append(before[k] ^ grown)
         self.split.add(s.path)
-        # the part less what was cut off (the bands' other stretches stay: no area)
+        # the part less what was cut off: its sides on the cuts, the bands' other stretches
+        # (cuts that end inside it) no area.  Each piece cut off taken out with its band
+        # (not the piece alone): a grid of cuts left the bands between the pieces cut off
+        # in the part, a net of slivers round holes where the pieces were (a 3 x 3 grid:
+        # the part 20 x 20 mm with an 8-gon hole, not one 10 x 10 mm square)
         return shp - self.union(removed, s), pieces
 
     def part(self, s: Structure, out: Drawing) -> None:

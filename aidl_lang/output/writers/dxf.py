@@ -33,6 +33,7 @@ import math
 
 from ..part.extent import extent
 from ..part.part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
+from ..part.shared import cut_once
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
@@ -141,11 +142,16 @@ def to_dxf_document(output: Output):
     # cutting sheet) kept +-1e20; set them here, and ezdxf leaves them (or rewrites the same)
     doc.header["$EXTMIN"] = (x0, y0, 0.0)
     doc.header["$EXTMAX"] = (x1, y1, 0.0)
-    for p in output.parts:
+    once = cut_once(output)      # pieces of one cut part: each shared edge once
+    for i, p in enumerate(output.parts):
         layer = layer_of(p, output)
         if layer not in doc.layers:
             doc.layers.add(layer, color=1)
-        for lp in p.loops:
+        for k, lp in enumerate(p.loops):
+            if (i, k) in once:
+                for segs, closed in once[(i, k)]:
+                    _path(msp, segs, closed, {"layer": layer})
+                continue
             segs = lp.segments
             if len(segs) == 1 and isinstance(segs[0], Circle):
                 msp.add_circle(segs[0].center, segs[0].radius, dxfattribs={"layer": layer})
@@ -159,28 +165,33 @@ def to_dxf_document(output: Output):
     for st in output.engrave:
         # a through-cut on its part's cut layer (CUT when it cuts no part)
         att = {"layer": layers.get(st.part, CUT) if st.style == "cut" else ENGRAVE}
-        if _exploded(st.segments):
-            _pieces(msp, st.segments, att)
-            continue
-        if st.closed and not (len(st.segments) == 1 and isinstance(st.segments[0], Circle)):
-            msp.add_lwpolyline(_bulge_points(st.segments), format="xyb", close=True,
-                               dxfattribs=att)
-            continue
-        for chain in _chains(st.segments):
-            if len(chain) > 1:          # one polyline: the laser does not stop at each joint
-                msp.add_lwpolyline(_bulge_points(chain, closed=False), format="xyb",
-                                   close=False, dxfattribs=att)
-                continue
-            (s,) = chain
-            if isinstance(s, Line):
-                msp.add_line(s.start, s.end, dxfattribs=att)
-            elif isinstance(s, Circle):
-                msp.add_circle(s.center, s.radius, dxfattribs=att)
-            else:                   # DXF arcs run counter-clockwise from start to end angle
-                a, b = (s.start_angle, s.end_angle) if s.sweep > 0 else (s.end_angle, s.start_angle)
-                msp.add_arc(s.center, s.radius, math.degrees(a), math.degrees(b),
-                            dxfattribs=att)
+        _path(msp, st.segments, st.closed, att)
     return doc
+
+
+def _path(msp, segments, closed: bool, att) -> None:
+    """One stroke's or one outline stretch's entities: a chain with a spline or an ellipse
+    exploded, a closed chain one closed ``LWPOLYLINE``, an open one an open ``LWPOLYLINE``
+    per run (one ``LINE``, ``ARC`` or ``CIRCLE`` when it is one segment)."""
+    if _exploded(segments):
+        _pieces(msp, segments, att)
+        return
+    if closed and not (len(segments) == 1 and isinstance(segments[0], Circle)):
+        msp.add_lwpolyline(_bulge_points(segments), format="xyb", close=True, dxfattribs=att)
+        return
+    for chain in _chains(segments):
+        if len(chain) > 1:          # one polyline: the laser does not stop at each joint
+            msp.add_lwpolyline(_bulge_points(chain, closed=False), format="xyb",
+                               close=False, dxfattribs=att)
+            continue
+        (s,) = chain
+        if isinstance(s, Line):
+            msp.add_line(s.start, s.end, dxfattribs=att)
+        elif isinstance(s, Circle):
+            msp.add_circle(s.center, s.radius, dxfattribs=att)
+        else:                   # DXF arcs run counter-clockwise from start to end angle
+            a, b = (s.start_angle, s.end_angle) if s.sweep > 0 else (s.end_angle, s.start_angle)
+            msp.add_arc(s.center, s.radius, math.degrees(a), math.degrees(b), dxfattribs=att)
 
 
 def to_dxf(output: Output) -> str:

@@ -556,14 +556,14 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     warnings = _warnings(output, m)
     notes = []
     if m.kind == "router":
-        from ..fabrication.layout import shared_note
+        from ..part.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
         output = tool_path(output, m.tool_diameter)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
     back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
                  if m.kind == "laser" and m.operation(op).passes % 2 == 0)
-    cuts = plan(output, back=back, once=True)   # a shared edge: cut once
+    cuts = plan(output, back=back)
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
     w.warnings = warnings

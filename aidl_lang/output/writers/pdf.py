@@ -56,6 +56,7 @@ import numpy as np
 
 from ..part.extent import extent
 from ..part.part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
+from ..part.shared import cut_once, loop_paths
 from . import beziers
 
 PT_PER_MM = 72.0 / 25.4
@@ -332,7 +333,8 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
                 "h S"]
     ops += [_rgb(CUT_RGB), f"{CUT_WIDTH:g} w"]
     labels = []
-    for p in output.parts:
+    once = cut_once(output)         # pieces of one cut part: each shared edge once
+    for i, p in enumerate(output.parts):
         boxes = [s.box() for lp in p.loops for s in lp.segments]
         if not boxes:
             continue
@@ -340,8 +342,9 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
               max(b[3] for b in boxes))
         if not _overlaps(bb, win):
             continue
-        for lp in p.loops:
-            ops += pen.path(lp.segments, True)
+        for k, lp in enumerate(p.loops):
+            for segs, closed in loop_paths(once, i, k, lp):
+                ops += pen.path(segs, closed)
         ops.append("S")
         if p.kind == "solid":
             labels.append(p)

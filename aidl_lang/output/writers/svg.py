@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from ..part.extent import extent
+from ..part.shared import cut_once, loop_paths
 from ..part.part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
                     build)
 
@@ -173,7 +174,8 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     solids = [p for p in output.parts if p.kind == "solid"]
     colour = {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)} \
         if len(solids) > 1 and not laser else {}
-    for p in output.parts:
+    once = cut_once(output) if laser else {}    # pieces of one cut part: shared edges once
+    for i, p in enumerate(output.parts):
         g = d.g(id=_id(p.name), **({"class_": p.kind}))
         if len(output.parts) > 1:
             g.set_desc(title=p.name)           # the part's name on hover
@@ -184,8 +186,9 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
             g.update({"fill": colour[p.name], "fill_opacity": _f(PART_FILL_OPACITY),
                       "stroke": colour[p.name]})
         if laser:
-            for lp in p.loops:
-                g.add(_element(d, lp.segments, True))
+            for k, lp in enumerate(p.loops):
+                for segs, closed in loop_paths(once, i, k, lp):
+                    g.add(_element(d, segs, closed))
         else:
             g.add(d.path(d=" ".join(segments_d(lp.segments, True) for lp in p.loops)))
         cut.add(g)

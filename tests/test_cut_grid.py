@@ -1,0 +1,399 @@
+"""Through-cuts that cut a part into pieces (issue 70): a grid of cuts gives exactly its pieces,
+each with its own exact outline, and every cutting output runs each shared edge once.
+
+Before: a plate cut by a `#` (two lines each way, edge to edge) came out as `plate` 20 x 20 mm
+with an 8-gon hole (the bands between the pieces cut off stayed in it) beside eight 10 x 10
+pieces, its DXF a self-touching 8-gon plus a duplicate loop, and the G-code cut 880 mm (two
+passes) where the design is 240 mm a pass; a 40 x 40 grid left `plate` 97.5 x 97.5 mm with
+1,444 holes.  And a cut drawn along the outline was cut on top of the outline, with no word.
+
+Every file here is re-read by an independent reader: ezdxf (DXF), GRBL's moves replayed from
+``gcodeparser``'s reading (G-code), the path data of the SVG read by a plain tokenizer, the
+``cut inner``/``cut outer`` shapes of the LightBurn project by the standard XML parser.
+"""
+from __future__ import annotations
+
+import io
+import math
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+import aidl_lang
+from aidl_lang.output import encode, for_cutting
+from aidl_lang.output.fabrication.machine import from_dict
+from aidl_lang.output.writers import Options
+
+ezdxf = pytest.importorskip("ezdxf")
+
+GRID = """units mm
+solid plate {
+    body = Rectangle(center=(15, 15), width=30, height=30)
+    cut grid {
+        a = Line((0, 10), (30, 10))
+        b = Line((0, 20), (30, 20))
+        c = Line((10, 0), (10, 30))
+        d = Line((20, 0), (20, 30))
+    }
+}
+"""
+ONE_PASS = from_dict({"cut_inner": {"passes": 1}, "cut_outer": {"passes": 1}})
+
+
+def _compile(src: str, tmp_path, name="t.aidl"):
+    p = tmp_path / name
+    p.write_text(src)
+    return aidl_lang.compile(path=str(p))
+
+
+def _grid_src(n: int, step: float = 10.0, edges: bool = False) -> str:
+    """A plate ``n * step`` mm square cut by the lines of an ``n`` x ``n`` grid, edge to edge
+    (``edges``: the outline's own four lines drawn as cuts too)."""
+    size = n * step
+    k = range(0, n + 1) if edges else range(1, n)
+    return f"""units mm
+solid plate {{
+    body = Rectangle(center=({size / 2}, {size / 2}), width={size}, height={size})
+    cut grid {{
+        for i in [{", ".join(str(i) for i in k)}] {{
+            h = Line((0, i * {step}), ({size}, i * {step}))
+            v = Line((i * {step}, 0), (i * {step}, {size}))
+        }}
+    }}
+}}
+"""
+
+
+def _unit_edges(p, q, step=10.0) -> list:
+    """The grid's unit edges (``step`` long, keyed by their rounded ends) that the straight
+    stretch ``p`` -> ``q`` covers; it must run along a grid line from grid point to grid point."""
+    (x0, y0), (x1, y1) = p, q
+    n = round(math.dist(p, q) / step)
+    assert n >= 1 and abs(math.dist(p, q) - n * step) < 1e-6, (p, q)
+    assert abs(x0 - x1) < 1e-9 or abs(y0 - y1) < 1e-9, (p, q)
+    pts = [(x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n) for i in range(n + 1)]
+    return [tuple(sorted(((round(a[0], 6), round(a[1], 6)), (round(b[0], 6), round(b[1], 6)))))
+            for a, b in zip(pts, pts[1:])]
+
+
+def _all_unit_edges(n: int, step=10.0) -> set:
+    size = n * step
+    out = set()
+    for i in range(n + 1):
+        out.update(_unit_edges((0, i * step), (size, i * step), step))
+        out.update(_unit_edges((i * step, 0), (i * step, size), step))
+    return out
+
+
+def _count(stretches, step=10.0) -> dict:
+    got: dict = {}
+    for p, q in stretches:
+        for e in _unit_edges(p, q, step):
+            got[e] = got.get(e, 0) + 1
+    return got
+
+
+def _dxf_stretches(text: str) -> list:
+    """The straight stretches of every entity on a cut layer of a DXF (no arcs here)."""
+    doc = ezdxf.read(io.StringIO(text))
+    out = []
+    for e in doc.modelspace():
+        if not e.dxf.layer.startswith("CUT"):
+            continue
+        if e.dxftype() == "LINE":
+            out.append((tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
+        elif e.dxftype() == "LWPOLYLINE":
+            pts = [tuple(p) for p in e.get_points("xyb")]
+            assert all(abs(b) < 1e-12 for _, _, b in pts)
+            xy = [(x, y) for x, y, _ in pts] + ([pts[0][:2]] if e.closed else [])
+            out += list(zip(xy, xy[1:]))
+        else:
+            raise AssertionError(f"unexpected {e.dxftype()} on {e.dxf.layer}")
+    return out
+
+
+def _gcode_stretches(text: str) -> list:
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(text) if mv.on]
+    assert all(mv.g == 1 for mv in moves)
+    return [(mv.p, mv.q) for mv in moves]
+
+
+def _svg_stretches(text: str) -> list:
+    """The straight stretches of the laser SVG's cut group (``M``/``L``/``Z`` path data; y
+    is flipped back)."""
+    root = ET.fromstring(text)
+    out = []
+    for el in root.iter():
+        if not el.tag.endswith("path") or "d" not in el.attrib:
+            continue
+        here = start = None
+        for cmd, args in re.findall(r"([MLZ])([^MLZ]*)", el.attrib["d"]):
+            nums = [float(v) for v in re.findall(r"-?[\d.]+(?:e-?\d+)?", args)]
+            if cmd == "M":
+                here = start = (nums[0], -nums[1])
+            elif cmd == "L":
+                q = (nums[0], -nums[1])
+                out.append((here, q))
+                here = q
+            else:                               # a closed loop's own last edge ends there
+                if math.dist(here, start) > 1e-9:
+                    out.append((here, start))
+                here = start
+    return out
+
+
+def test_a_grid_of_cuts_gives_exactly_its_nine_squares(tmp_path):
+    res = _compile(GRID, tmp_path)
+    assert res.ok and not res.diagnostics, [d.message for d in res.diagnostics]
+    parts = res.output.parts
+    assert sorted(p.name for p in parts) == ["plate"] + [f"plate.piece{k}" for k in range(1, 9)]
+    cells = set()
+    for p in parts:
+        (lp,) = p.loops                                  # one outline, no hole
+        assert not lp.is_hole and p.area == pytest.approx(100.0, abs=1e-9)
+        xs = [c for s in lp.segments for c in (s.start[0], s.end[0])]
+        ys = [c for s in lp.segments for c in (s.start[1], s.end[1])]
+        assert len(lp.segments) == 4
+        x0, y0 = min(xs), min(ys)
+        assert max(xs) - x0 == pytest.approx(10.0, abs=1e-9)
+        assert max(ys) - y0 == pytest.approx(10.0, abs=1e-9)
+        assert all(abs(c - round(c / 10) * 10) < 1e-9 for c in xs + ys)   # on the cuts exactly
+        cells.add((round(x0), round(y0)))
+    assert cells == {(x, y) for x in (0, 10, 20) for y in (0, 10, 20)}
+    # the parts list says the same: every part 10 x 10, none with a hole
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "parts", str(tmp_path / "t.aidl")],
+                         capture_output=True, text=True, timeout=300)
+    rows = [ln.split() for ln in cli.stdout.splitlines() if ln.startswith("plate")]
+    assert len(rows) == 9, cli.stdout + cli.stderr
+    for row in rows:                          # part shape copies width height area holes ...
+        assert row[3:7] == ["10.000", "10.000", "100.000", "0"], row
+
+
+def test_the_grid_cuts_each_shared_edge_once_in_every_cutting_output(tmp_path):
+    res = _compile(GRID, tmp_path)
+    out = for_cutting(res.output)
+    every = _all_unit_edges(3)              # 24 edges of 10 mm: the design's 240 mm
+    assert len(every) == 24
+    once = {e: 1 for e in every}
+    assert _count(_dxf_stretches(encode(out, ".dxf").decode())) == once
+    assert _count(_svg_stretches(encode(res.output, ".svg", Options(style="laser")).decode())) \
+        == once
+    gcode = encode(out, ".gcode", Options(machine=ONE_PASS)).decode()
+    stretches = _gcode_stretches(gcode)
+    assert _count(stretches) == once
+    assert sum(math.dist(p, q) for p, q in stretches) == pytest.approx(240.0, abs=1e-6)
+    assert "; cut 240.0 mm" in gcode
+    # two passes (the built-in laser's): each edge twice, 480 mm (880 before)
+    two = _gcode_stretches(encode(out, ".gcode").decode())
+    assert _count(two) == {e: 2 for e in every}
+    assert sum(math.dist(p, q) for p, q in two) == pytest.approx(480.0, abs=1e-6)
+    # LightBurn: the cut shapes' vertices walk each edge once
+    root = ET.fromstring(encode(out, ".lbrn2").decode())
+    shapes = [s for s in root.iter("Shape") if s.get("Type") == "Path"]
+    walked = []
+    for s in shapes:
+        verts = [(float(a), float(b))
+                 for a, b in re.findall(r"V(-?[\d.]+) (-?[\d.]+)", s.findtext("VertList"))]
+        prims = s.findtext("PrimList")
+        for a, b in re.findall(r"L(\d+) (\d+)", prims):
+            walked.append((verts[int(a)], verts[int(b)]))
+    assert _count(walked) == once
+    # HP-GL too (the same toolpath; its pen-down paths re-read by ezhpgl): 240 mm, not 720
+    pytest.importorskip("ezhpgl")
+    from test_hpgl import _points, _read
+    _, paths = _read(encode(out, ".plt"))
+    hp = [(tuple(a), tuple(b)) for ops in paths for a, b in zip(_points(ops), _points(ops)[1:])]
+    assert _count(hp) == once
+
+
+def test_a_part_cut_in_three_with_a_t_shares_each_stretch_once(tmp_path):
+    """A cut ending on another: the big piece's edge meets two smaller pieces' edges (a
+    stretch shared in part, not edge for edge): 120 + 30 + 20 = 170 mm in all."""
+    src = """units mm
+solid plate {
+    body = Rectangle(center=(15, 15), width=30, height=30)
+    cut t {
+        a = Line((20, 0), (20, 30))
+        b = Line((0, 15), (20, 15))
+    }
+}
+"""
+    res = _compile(src, tmp_path)
+    assert res.ok and not res.diagnostics, [d.message for d in res.diagnostics]
+    assert sorted(round(p.area, 6) for p in res.output.parts) == [300.0, 300.0, 300.0]
+    out = for_cutting(res.output)
+    g = _gcode_stretches(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(170.0, abs=1e-6)
+    d = _dxf_stretches(encode(out, ".dxf").decode())
+    assert sum(math.dist(p, q) for p, q in d) == pytest.approx(170.0, abs=1e-6)
+    # no stretch twice: every 5 mm step of the design's lines covered once
+    assert _count(g, 5.0) == _count(d, 5.0) and set(_count(g, 5.0).values()) == {1}
+
+
+def test_a_curved_cut_between_two_pieces_is_cut_once(tmp_path):
+    """A quarter circle from edge to edge: the arc is in both outlines and cut once, 120 mm
+    of outline and 7.5 pi mm of arc."""
+    src = """units mm
+solid plate {
+    body = Rectangle(center=(15, 15), width=30, height=30)
+    cut c { a = Arc(center=(0, 0), radius=15, start_angle=0, end_angle=90) }
+}
+"""
+    res = _compile(src, tmp_path)
+    assert res.ok and not res.diagnostics, [d.message for d in res.diagnostics]
+    assert sorted(p.area for p in res.output.parts) == pytest.approx(
+        [225 * math.pi / 4, 900 - 225 * math.pi / 4], abs=1e-6)
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(encode(for_cutting(res.output), ".gcode",
+                                        Options(machine=ONE_PASS)).decode()) if mv.on]
+    assert sum(mv.length for mv in moves) == pytest.approx(120 + 7.5 * math.pi, abs=1e-6)
+    assert sum(mv.g in (2, 3) for mv in moves) == 1          # the arc once
+    doc = ezdxf.read(io.StringIO(encode(for_cutting(res.output), ".dxf").decode()))
+    arcs = [e for e in doc.modelspace() if e.dxftype() == "ARC"]
+    bulges = [b for e in doc.modelspace() if e.dxftype() == "LWPOLYLINE"
+              for *_, b in e.get_points("xyb") if b]
+    assert len(arcs) + len(bulges) == 1
+
+
+def test_a_40_by_40_grid_gives_1600_squares_and_the_design_length(tmp_path):
+    """41 lines each way (the outline's four among them: W0522): 1,600 squares of
+    10 mm, none with a hole (before: the part keeping the name 97.5 x 97.5 mm with 1,444
+    holes); the G-code cuts 41 x 2 x 400 mm once.  The piece finding and the shared edges
+    stay O(n log n) (boxes, sorted ranges): the compile ends ok within its default budget."""
+    res = _compile(_grid_src(40, edges=True), tmp_path)
+    assert res.ok, [d.message for d in res.diagnostics]
+    # the outline's lines (i = 0 and 40 of the loop's `h` and `v`): one W0522 at each line
+    assert sorted((d.code, d.message.split("`")[1]) for d in res.diagnostics) == \
+        [("W0522", "plate.grid.h"), ("W0522", "plate.grid.v")]
+    parts = res.output.parts
+    assert len(parts) == 1600
+    assert all(len(p.loops) == 1 and len(p.loops[0].segments) == 4 for p in parts)
+    assert all(abs(p.area - 100.0) < 1e-6 for p in parts)
+    (plate,) = [p for p in parts if p.name == "plate"]
+    xs = [c for s in plate.loops[0].segments for c in (s.start[0], s.end[0])]
+    assert max(xs) - min(xs) == pytest.approx(10.0, abs=1e-9)
+    g = _gcode_stretches(encode(for_cutting(res.output), ".gcode",
+                                Options(machine=ONE_PASS)).decode())
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(41 * 2 * 400.0, abs=1e-6)
+    assert set(_count(g).values()) == {1} and len(_count(g)) == len(_all_unit_edges(40))
+
+
+def test_a_cut_along_the_outline_is_cut_once_and_w0522(tmp_path):
+    src = GRID.replace("cut grid {", "cut grid {\n        e = Line((0, 0), (30, 0))")
+    edge = """units mm
+solid plate {
+    body = Rectangle(center=(15, 15), width=30, height=30)
+    cut edge {
+        a = Line((0, 0), (30, 0))
+    }
+}
+"""
+    for text, total, line in ((edge, 120.0, 5), (src, 240.0, 5)):
+        res = _compile(text, tmp_path)
+        assert res.ok
+        (w,) = res.diagnostics
+        assert w.code == "W0522" and w.span.line == line and w.severity == "warning"
+        assert "lies along the outline of `plate`" in w.message and "delete it" in w.hint
+        assert not res.output.cuts                   # no stroke on top of the outline
+        out = for_cutting(res.output)
+        g = _gcode_stretches(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+        assert sum(math.dist(p, q) for p, q in g) == pytest.approx(total, abs=1e-6)
+        assert set(_count(g).values()) == {1}
+        d = _dxf_stretches(encode(out, ".dxf").decode())
+        assert _count(d) == _count(g)
+    # a cut that crosses the material next to the outline still cuts (no W0522)
+    inside = _compile(edge.replace("Line((0, 0), (30, 0))", "Line((0, 1), (30, 1))"), tmp_path)
+    assert inside.ok and not [d for d in inside.diagnostics if d.code == "W0522"]
+    assert len(inside.output.parts) == 2
+
+
+def test_the_kerf_offsets_the_grid_outside_and_cuts_each_shared_edge_once_on_its_line(tmp_path):
+    """Before: each piece offset on its own, every shared edge cut twice a kerf apart (at
+    0.2 mm: 10.1 and 9.9), the middle square 9.6 mm wide, no word.  Now the plate's outline is
+    offset by half the kerf, each shared edge stays on its line (run on to the offset outline)
+    and is cut once, and one note says that each side loses half a kerf along them."""
+    res = _compile(GRID, tmp_path)
+    out = for_cutting(res.output, 0.2)
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+             if mv.on]
+    # the offset outline (120 mm of sides, four quarter circles of 0.1 mm) and the four
+    # lines carried on to it (30.2 mm each)
+    assert sum(mv.length for mv in moves) == pytest.approx(120 + 0.2 * math.pi + 4 * 30.2,
+                                                           abs=1e-6)
+    for mv in moves:
+        if mv.g != 1:
+            continue
+        (x0, y0), (x1, y1) = mv.p, mv.q
+        on_line = (x0 == x1 and x0 in (10, 20, -0.1, 30.1)) or \
+            (y0 == y1 and y0 in (10, 20, -0.1, 30.1))
+        assert on_line, (mv.p, mv.q)                # nothing at 9.9 or 10.1: no double cut
+    d = _dxf_stretches_any(encode(out, ".dxf").decode())
+    assert sum(d) == pytest.approx(120 + 0.2 * math.pi + 4 * 30.2, abs=1e-6)
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render",
+                          str(tmp_path / "t.aidl"), "-o", str(tmp_path / "g.nc"), "--kerf",
+                          "0.2"], capture_output=True, text=True, timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    said = cli.stdout + cli.stderr
+    assert ("note: the 12 shared cuts between the 9 pieces of `plate` are each cut once along "
+            "their line; each side loses 0.1 mm (half the kerf, 0.2 mm) along each") in said
+    assert said.count("shared cut") == 1            # one note for the cut part, not 12
+    assert "cut 482.9 mm" in said                 # two passes of 241.43 mm
+
+
+def _dxf_stretches_any(text: str) -> list:
+    """The length of each entity on a cut layer (lines, arcs, bulged polylines), mm."""
+    doc = ezdxf.read(io.StringIO(text))
+    out = []
+    for e in doc.modelspace():
+        if not e.dxf.layer.startswith("CUT"):
+            continue
+        if e.dxftype() == "LINE":
+            out.append(math.dist(tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
+        elif e.dxftype() == "ARC":
+            sweep = (e.dxf.end_angle - e.dxf.start_angle) % 360
+            out.append(math.radians(sweep) * e.dxf.radius)
+        elif e.dxftype() == "LWPOLYLINE":
+            pts = [tuple(p) for p in e.get_points("xyb")]
+            pairs = list(zip(pts, pts[1:] + (pts[:1] if e.closed else [])))
+            for (x0, y0, b), (x1, y1, _) in pairs:
+                c = math.dist((x0, y0), (x1, y1))
+                if b == 0:
+                    out.append(c)
+                else:
+                    theta = 4 * math.atan(abs(b))
+                    out.append(theta * c / (2 * math.sin(theta / 2)))
+        else:
+            raise AssertionError(e.dxftype())
+    return out
+
+
+def test_the_kerf_on_a_sheet_of_2000_discs_cut_in_two_stays_o_n_log_n():
+    """Each piece of the offset sheet is asked only of the pieces whose boxes meet its own:
+    about 3 s of CPU here for the 4,001 parts (asked of the whole sheet, each piece made it
+    n^2: 68 s).  The bound is wide: the CPU of this process, not the wall clock."""
+    import time
+
+    from test_slit_sheets import _split_sheet
+
+    from aidl_lang.limits import Budget
+    from aidl_lang.output.part.part import build
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(_split_sheet(2000), "discs.aidl", budget=Budget(seconds=60))
+    out = build(c.drawing, "sheet")
+    t = time.process_time()
+    cut = for_cutting(out, 0.2)
+    cpu = time.process_time() - t
+    assert len(cut.parts) == 2001 and cpu < 30, cpu
+    # every freed half: its arc offset by 0.1 mm, its chord on the cut (the disc's segment
+    # 1 mm off the centre, r = 5, grown by the arc's 0.1 mm band and the chord's ends)
+    seg = 25 * math.acos(1 / 5) - math.sqrt(24)
+    halves = [p for p in cut.parts if p.name != "sheet"]
+    assert all(seg < p.area < seg + 0.1 * (2 * 5 * math.acos(1 / 5)) + 0.2 for p in halves)
