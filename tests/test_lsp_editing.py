@@ -259,8 +259,9 @@ async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClien
     assert "Circle(center: point" in h.contents.value      # the server answers meanwhile
     fixed = SLOW.replace("10000", "3")
     _change(client, uri, fixed, 2)
-    assert list(await _diagnostics(client, uri, version=2, timeout=30)) == []
-    assert time.monotonic() - t0 < 30
+    # the stale analysis is stopped: not minutes; 60 s is a hang guard (a few s when quiet)
+    assert list(await _diagnostics(client, uri, version=2, timeout=60)) == []
+    assert time.monotonic() - t0 < 60
 
 
 def test_large_document_completion_uses_a_view():
