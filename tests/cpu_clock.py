@@ -43,6 +43,23 @@ def make_clock():
 
 
 @contextlib.contextmanager
+def cpu_time(*names: str):
+    """``with cpu_time():`` the block runs with ``time.monotonic`` (and each of ``names``,
+    e.g. ``"perf_counter"``) on :func:`make_clock`'s clock; for a test that cannot take a
+    fixture (a Hypothesis test runs its body many times under one)."""
+    clock = make_clock()
+    names = ("monotonic",) + names
+    saved = {n: getattr(time, n) for n in names}
+    for n in names:
+        setattr(time, n, clock)
+    try:
+        yield clock
+    finally:
+        for n, f in saved.items():
+            setattr(time, n, f)
+
+
+@contextlib.contextmanager
 def child_cpu():
     """``with child_cpu() as cpu: subprocess.run(...)``; then ``cpu()`` is the user + system
     CPU seconds of the child processes that ended (and were waited for) inside the block."""

@@ -32,6 +32,7 @@ async def _session(root):
             yield session
 
 
+@pytest.mark.timing
 @pytest.mark.asyncio
 async def test_a_slow_call_delays_only_itself(tmp_path):
     """Calls run side by side in the pool of worker processes: a check issued while a slow
