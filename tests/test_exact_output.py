@@ -524,6 +524,7 @@ def test_stl_is_watertight_without_degenerate_facets(outdir, src):
          f"(shortest {edges.min():.3g} mm)")
 
 
+@pytest.mark.timing
 def test_stacked_copies_of_one_outline_are_matched_once():
     """A circle drawn in 2 000 instances at one place (a template recursing `fan(n - 1)`
     twice, fuzz seed 12900 had 32 767): the exact recovery keeps one copy of each chord, so

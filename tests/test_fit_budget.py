@@ -4,10 +4,9 @@ after 31.8 s against a 15 s budget).  The pairs come from a sort and sweep of th
 (checked against every pair here), a part's nearest neighbour from the boxes' distances
 (checked against the plain search over every part), and the deadline is checked before every
 Manifold call."""
-import time
-
 import manifold3d as mf
 import numpy as np
+import pytest
 from hypothesis import given, settings, strategies as st
 
 import aidl_lang
@@ -15,6 +14,8 @@ from aidl_lang.limits import Budget
 from aidl_lang.output.fabrication import assembly
 
 from conftest import ROOT
+
+pytestmark = pytest.mark.timing
 
 # n parts drawn on top of each other on the sheet (every pair overlaps there: W0511's pairs)
 # and placed half a part apart (each overlaps its 40 neighbours in the product: W0517's pairs)
@@ -42,28 +43,30 @@ assembly kit {{
 """
 
 
-def test_overlapping_placed_parts_stop_within_the_budget():
+def test_overlapping_placed_parts_stop_within_the_budget(cpu_clock):
     """1,000 parts on one spot of the sheet (499,500 flat pairs, each a boolean) under a 3 s
     budget: E0304 at the shape checks, ended within the budget plus two seconds (the flat
-    check had no deadline: 6.4 s here before; the suite's other worker shares the cores, and
-    the work between two looks at the deadline grows with the load: 4.55 s seen once)."""
-    t0 = time.monotonic()
+    check had no deadline: 6.4 s here before).  The budget counts this process's CPU seconds
+    (the ``cpu_clock`` fixture): on a machine at load 4-6 the wall clock ran out in the
+    booleans instead, and the wall time of the same work is three times the quiet one."""
+    t0 = cpu_clock()
     r = aidl_lang.compile(STACK.format(n=1000), path=str(ROOT / "stack.aidl"),
                           budget=Budget(seconds=3.0))
-    took = time.monotonic() - t0
+    took = cpu_clock() - t0
     codes = [d.code for d in r.diagnostics if d.severity == "error"]
     assert codes == ["E0304"], codes
     assert "shape checks" in r.diagnostics[0].message or "fit check" in r.diagnostics[0].message
-    assert took < 5.0, took
+    assert took < 3.0 + 2.0, took
 
 
-def test_a_chain_of_placed_parts_is_checked_within_the_budget():
+def test_a_chain_of_placed_parts_is_checked_within_the_budget(cpu_clock):
     """1,500 placed parts, each touching the next: every neighbour is a pair, no part is alone
     (no W0517, no W0518), and the check ends well inside the default budget (the former
-    pair loop over every two parts ran out of it at 3,000)."""
-    t0 = time.monotonic()
+    pair loop over every two parts ran out of it at 3,000).  The budget and the figure are
+    CPU seconds (``cpu_clock``): 10.8 s of wall time were seen at load 4-6 on 2 cores."""
+    t0 = cpu_clock()
     r = aidl_lang.compile(CHAIN.format(n=1500), path=str(ROOT / "chain.aidl"))
-    took = time.monotonic() - t0
+    took = cpu_clock() - t0
     assert r.ok, [str(d) for d in r.diagnostics][:3]
     assert not [d for d in r.diagnostics if d.code in ("W0517", "W0518", "W0511")]
     assert took < 10.0, took

@@ -13,6 +13,8 @@ import pytest
 
 from aidl_lang.pipeline import compile_source
 
+pytestmark = pytest.mark.timing
+
 HERE = pathlib.Path(__file__).resolve().parent
 FILES = sorted((HERE / "programs" / "hostile").glob("*.aidl"))
 SECONDS = 20          # CPU seconds: the budget cases take 2-4 s (the wall clock of a loaded
@@ -27,7 +29,10 @@ def expectation(path: pathlib.Path):
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
-def test_hostile_program(path):
+def test_hostile_program(path, cpu_clock):
+    """The budget counts CPU seconds (the ``cpu_clock`` fixture): the budget that runs out,
+    and where, is the same on a loaded machine (the wall clock could end a program at
+    another stage than the one its first line expects)."""
     code, where = expectation(path)
     t0 = time.process_time()
     c = compile_source(path.read_text(), str(path))
@@ -62,7 +67,8 @@ for src in srcs:
     c = compile_source(src, "m.aidl")
     print([d.code for d in c.sink.items if d.severity == "error"])
 '''
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=300)                 # a hang guard
     assert r.returncode == 0, r.stderr[-2000:]
     assert r.stdout.split("\n")[:2] == ["['E0304']", "['E0304']"], r.stdout + r.stderr[-2000:]
 
@@ -87,8 +93,12 @@ def nasty_programs(draw):
 @given(nasty_programs())
 def test_generated_nasty_programs(src):
     """No exception, every diagnostic located, never ok without a converged solve, no NaN in
-    an SVG, within the (reduced) budget's time; benchmarks/fuzz_nasty.py runs thousands."""
-    assert verdict(src, "nasty.aidl", budget=SMALL, seconds=SMALL.seconds + 10) is None
+    an SVG, within the (reduced) budget's time; benchmarks/fuzz_nasty.py runs thousands.
+    The budget and verdict's "slow" limit count CPU seconds (tests/cpu_clock.py): a loaded
+    machine's wall clock is no measure."""
+    from cpu_clock import cpu_time
+    with cpu_time("perf_counter"):
+        assert verdict(src, "nasty.aidl", budget=SMALL, seconds=SMALL.seconds + 10) is None
 
 
 def test_out_of_memory_is_E0304_and_the_process_goes_on():

@@ -268,15 +268,17 @@ def test_png_default_scale():
     assert pixels_per_mm(1000, 400, width=500) == pytest.approx(0.5)
 
 
+@pytest.mark.timing
 def test_a_drawing_of_19000_holes_is_checked_within_the_budget(tmp_path):
     """A 100 x 190 array of holes in one outline as a Drawing2D (issue 49: `aidl check` ran
     past 300 s): the drawing's loops are nested by their boxes, and the openings check takes
     a face's own holes as its own (no W0515 for each); the check ends within the budget,
-    ok or with a located E0304, never hung."""
+    ok or with a located E0304, never hung.  The child's compile counts CPU seconds against
+    its budget (tests/cpu_clock.py) and its CPU is the figure: at load 4-6 on 2 cores the
+    same run took 62 s of wall time."""
     import subprocess
-    import sys
-    import time
     import ezdxf
+    from cpu_clock import AIDL_CPU, child_cpu
     doc = ezdxf.new("R2010")
     doc.units = 4                                   # mm
     msp = doc.modelspace()
@@ -286,11 +288,10 @@ def test_a_drawing_of_19000_holes_is_checked_within_the_budget(tmp_path):
             msp.add_circle((5 + 10 * i, 5 + 10 * j), 2)
     doc.saveas(tmp_path / "big.dxf")
     (tmp_path / "p.aidl").write_text('solid p {\n    d = Drawing2D("big.dxf")\n}\n')
-    t0 = time.monotonic()
-    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "p.aidl"],
-                       cwd=tmp_path, capture_output=True, text=True, timeout=120)
-    wall = time.monotonic() - t0
-    assert wall < 15 * 1.25 + 10, wall             # the 15 s budget, and the start-up
+    with child_cpu() as cpu:                        # timeout: a hang guard only
+        r = subprocess.run(AIDL_CPU + ["check", "p.aidl"],
+                           cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert cpu() < 15 * 1.25 + 10, cpu()            # the 15 s budget, and the start-up
     assert r.returncode in (0, 1) and "internal error" not in r.stderr
     said = r.stdout + r.stderr
     assert "W0515" not in said

@@ -2,7 +2,7 @@
 
 Each test runs the program headless, writes its drawing into ``tmp_path`` and imports it with
 the real importer; the geometry it must give is stated exactly.  A test skips, naming what it
-lacks, when the program is missing (``.ci/run`` step 2 installs them: ``freecad``, ``kicad``,
+lacks, when the program is missing (``.ci/run`` step 3 installs them: ``freecad``, ``kicad``,
 ``inkscape``).  Measured on Debian 12: FreeCAD 0.20.2 (``freecadcmd``), KiCad 6.0.11 (its
 ``pcbnew`` Python module, in the system's Python), Inkscape 1.2.2."""
 from __future__ import annotations

@@ -472,12 +472,13 @@ def test_the_laser_box_example_checks_clean_and_lays_out(tmp_path):
     assert len(sheets[0].engrave) == len(view.engrave) > 0     # the lid's label went along
 
 
-def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys):
+@pytest.mark.timing
+def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys, cpu_clock):
     """`--nest-time S` is the nesting's own time limit, on top of the compile's wall budget:
     a packer that uses its whole S (here the real plan, then S more seconds counted as spent:
     the deadline moved that much nearer, as a clock would have) does not leave the writers
     after it out of budget (E0304).  (A real wait of 4 s against a 3 s budget raced the
-    compile on a loaded machine.)"""
+    compile on a loaded machine; the budget counts CPU seconds here, ``cpu_clock``.)"""
     from aidl_lang.output.fabrication import layout
     real = layout.plan
 
@@ -494,6 +495,7 @@ def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys):
     assert out.read_text().count("<svg") == 1
 
 
+@pytest.mark.timing
 def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypatch):
     """spyrrow cannot be stopped: 2,000 parts took 20 s past the 15 s budget and were blamed
     on the SVG writer.  The nesting is estimated (parts²) and refused as "the layout"."""

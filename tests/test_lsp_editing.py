@@ -249,6 +249,7 @@ solid s {
 """
 
 
+@pytest.mark.timing
 @pytest.mark.asyncio(loop_scope="module")
 async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClient, tmp_path):
     uri = (tmp_path / "slow.aidl").as_uri()
@@ -259,10 +260,12 @@ async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClien
     assert "Circle(center: point" in h.contents.value      # the server answers meanwhile
     fixed = SLOW.replace("10000", "3")
     _change(client, uri, fixed, 2)
-    assert list(await _diagnostics(client, uri, version=2, timeout=30)) == []
-    assert time.monotonic() - t0 < 30
+    # the stale analysis is stopped: not minutes; 60 s is a hang guard (a few s when quiet)
+    assert list(await _diagnostics(client, uri, version=2, timeout=60)) == []
+    assert time.monotonic() - t0 < 60
 
 
+@pytest.mark.timing
 def test_large_document_completion_uses_a_view():
     # a 10 MB document: completion must not re-analyse all of it
     filler = "".join(f"v{i} = {i} mm  # a long comment to make the file big, ...\n"
@@ -284,6 +287,7 @@ def test_large_document_completion_uses_a_view():
     assert names[:3] == ["w", "peg", "v0"] and len(names) == window.MAX_OUTLINE
 
 
+@pytest.mark.timing
 @pytest.mark.asyncio(loop_scope="module")
 async def test_worker_stops_an_analysis_past_its_time_limit_and_goes_on():
     from aidl_lang.editor.lsp.worker import AnalysisTimeout, Analyzer

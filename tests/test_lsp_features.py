@@ -171,6 +171,7 @@ def test_feed_gives_lines_and_exact_reads_across_puts():
     assert f.readline() == b""
 
 
+@pytest.mark.timing
 def test_cold_start_publishes_first_diagnostics_then_the_solved_ones(tmp_path):
     """A real `aidl lsp`: the first publish is the parse-and-check one, the second (same
     version) the solved one with the error only the solver finds."""

@@ -294,6 +294,7 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
             assert r.is_error and "not `.svg`" in _text(r)
 
 
+@pytest.mark.timing
 def test_a_call_past_its_time_limit_is_stopped_and_the_next_one_runs(tmp_path, monkeypatch):
     """Issue 37: the MCP server compiled in its own process with no hard time limit (Fillet
     on 2,000 stars ran 17-24 s against 15 s).  The compiling tools run in a worker process

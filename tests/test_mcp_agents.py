@@ -32,6 +32,7 @@ async def _session(root):
             yield session
 
 
+@pytest.mark.timing
 @pytest.mark.asyncio
 async def test_a_slow_call_delays_only_itself(tmp_path):
     """Calls run side by side in the pool of worker processes: a check issued while a slow
@@ -43,8 +44,10 @@ async def test_a_slow_call_delays_only_itself(tmp_path):
         r = await session.call_tool("check", {"source": GOOD})
         fast = time.monotonic() - t0
         assert not r.is_error and json.loads(_text(r))["ok"], _text(r)
-        assert fast < 10, f"the fast check waited {fast:.1f} s"
+        # answered while the slow one still runs (not queued behind it); the seconds are a
+        # hang guard only, wide for a loaded machine
         assert not slow.done()
+        assert fast < 60, f"the fast check waited {fast:.1f} s"
         r = await slow
         if r.is_error:                      # a machine too busy to end it within 30 s
             assert "took longer than" in _text(r)

@@ -9,6 +9,11 @@ import pytest
 from aidl_lang import registry
 from aidl_lang.pipeline import compile_source
 
+# Every compile here counts its budget in CPU seconds (``time.monotonic`` is the cpu_clock
+# fixture's clock, tests/cpu_clock.py): a budget that must run out, or must not, does so
+# after the same work on a loaded machine; the figures asserted are CPU seconds too.
+pytestmark = [pytest.mark.timing, pytest.mark.usefixtures("cpu_clock")]
+
 # one instance of every primitive (positional and keyword forms the registry documents)
 PRIMS = {
     "Point": "Point((1, 2))", "Line": "Line((0, 0), (10, 1))",

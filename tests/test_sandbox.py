@@ -10,15 +10,17 @@ import pytest
 from aidl_lang.editor.lsp import analysis as an
 from aidl_lang.pipeline import compile_source
 
+pytestmark = pytest.mark.timing          # the refusals are timed (CPU seconds)
+
 SECRET = "def secret_w(a = 1) -> solid { c = Circle((0, 0), a) }\nsecret_k = 4\n"
 
 
 def run(proj, src, name="main.aidl"):
     p = proj / name
     p.write_text(src)
-    t0 = time.perf_counter()
-    c = compile_source(src, str(p))
-    return c, time.perf_counter() - t0
+    t0 = time.process_time()      # CPU seconds: reading /dev/zero whole would spend them;
+    c = compile_source(src, str(p))   # the wall clock of a loaded machine is no measure
+    return c, time.process_time() - t0
 
 
 def everything(c) -> str:
@@ -104,10 +106,10 @@ def test_fifo_does_not_block(layout):
     the_e0114(c)
     assert dt < 5
     # the language server's analysis follows imports too: it must not block either
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     an.hover('import "x.aidl"\nsolid s { c = Circle((0, 0), 1) }\n', 2, 10,
              path=str(proj / "main.aidl"))
-    assert time.perf_counter() - t0 < 5
+    assert time.process_time() - t0 < 5
 
 
 def test_directory_and_oversized_file(layout):

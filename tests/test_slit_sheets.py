@@ -25,6 +25,9 @@ from aidl_lang.limits import Budget
 from aidl_lang.output.part.booleans import _meeting
 from aidl_lang.pipeline import compile_source
 
+# the budgets count CPU seconds (the cpu_clock fixture, tests/cpu_clock.py), as the figures do
+pytestmark = [pytest.mark.timing, pytest.mark.usefixtures("cpu_clock")]
+
 COLS = 40
 
 
