@@ -27,6 +27,10 @@ from aidl_lang.output import encode, for_cutting
 from aidl_lang.output.fabrication.machine import from_dict
 from aidl_lang.output.writers import Options
 
+# the budgets count CPU seconds (the cpu_clock fixture, tests/cpu_clock.py): big drawings
+# compiled under the default budget reach the same stage however busy the machine is
+pytestmark = [pytest.mark.timing, pytest.mark.usefixtures("cpu_clock")]
+
 ezdxf = pytest.importorskip("ezdxf")
 
 GRID = """units mm

@@ -3,6 +3,8 @@ in words and numbers, read from the exact output model."""
 import json
 from pathlib import Path
 
+import pytest
+
 import aidl_lang
 from aidl_lang.cli.main import main
 
@@ -84,6 +86,8 @@ CIRCLES = """assembly sheet {{
 """
 
 
+@pytest.mark.timing
+@pytest.mark.usefixtures("cpu_clock")    # 1,500 parts under the default budget
 def test_copies_are_described_once_with_their_places(tmp_path, capsys):
     """6,000 equal circles: every part listed its 5,999 copies (`--describe --json` wrote
     970 MB in 89 s and 4.4 GB); now the first is described and the others are its copies,
@@ -249,6 +253,8 @@ def test_every_example_describes_itself_as_json(capsys):
         assert doc["describe"]["parts"][0]["symmetry"]["mirror_y"] is True, name
 
 
+@pytest.mark.timing
+@pytest.mark.usefixtures("cpu_clock")    # a 4,000-hole plate under the default budget
 def test_turns_and_mirrors_the_moments_rule_out_are_not_tried(monkeypatch):
     """A turn changes the second moments of area by 2 d |sin t| and a mirror by 2 |Ixy|; an
     image within the tolerance can change them by at most tol r^2, so the others are not

@@ -18,6 +18,10 @@ import pytest
 from aidl_lang.api import compile as aidl_compile
 from aidl_lang.pipeline import compile_source
 
+# the budgets count CPU seconds (the cpu_clock fixture, tests/cpu_clock.py): big drawings
+# compiled under the default budget reach the same stage however busy the machine is
+pytestmark = [pytest.mark.timing, pytest.mark.usefixtures("cpu_clock")]
+
 
 def _plate(cuts: str, before: str = "", part_wall: str = "") -> str:
     return f"""{before}solid plate {{
