@@ -236,7 +236,14 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`). A program that runs out of memory
+(e.g. `aidl render model.aidl --budget 4`). The wall time reaches every stage after the
+solve too, each looking at it as it goes (every few parts, pairs or cells): the booleans, the
+shape checks, the exact outlines, the writers, `aidl parts`' list and `aidl check
+--describe`'s description (one budget for the whole command; `Result.output` and
+`Result.description` of the Python API, and the MCP `describe`, get a fresh budget per call)
+and the comparison with the defaults under `--set` (W0510): "the program ran out of its
+evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of wall time", at that
+part's structure. A program that runs out of memory
 before any figure of the budget is also `E0304`, wherever it happens (interpreting, solving,
 the booleans, the shape checks, the exact outlines, a writer) and in every front end (the
 CLI, the Python API, `aidl serve`, `aidl studio`, MCP, the editor, `aidl batch`): "the program
