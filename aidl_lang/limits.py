@@ -38,6 +38,22 @@ def min_wall_problem(mm: float) -> str | None:
             f"{MAX_EXTENT:g} mm, or 0 (no wall checks)")
 
 
+def min_wall_argument(text: str) -> float:
+    """``--min-wall MM`` of ``aidl check``, ``render`` and ``batch`` (an argparse ``type``):
+    the length in mm, or :class:`argparse.ArgumentTypeError` with :func:`min_wall_problem`'s
+    words (a usage error, exit 2): NaN, infinities, negatives and lengths below
+    :data:`MIN_WALL_LEAST` are refused, as the ``min_wall`` statement refuses them (E0109)."""
+    import argparse
+    try:
+        mm = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of mm, got `{text}`") from None
+    why = min_wall_problem(mm)
+    if why is not None:
+        raise argparse.ArgumentTypeError(why)
+    return mm
+
+
 class Budget(Frozen):
     """The evaluation budget of one compile.  Defaults (docs/language.md §8.1):
 

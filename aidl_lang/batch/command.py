@@ -16,6 +16,7 @@ import time
 from collections import Counter
 from pathlib import Path
 
+from ..limits import min_wall_argument
 from .row import TIMINGS
 
 
@@ -50,19 +51,6 @@ def _factor(text: str) -> float:
     return k
 
 
-def _min_wall(text: str) -> float:
-    """``--min-wall MM``: 0 or a length from 0.001 to 1e6 mm, as ``aidl check`` takes it."""
-    from ..limits import min_wall_problem
-    try:
-        mm = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of mm, got `{text}`") from None
-    why = min_wall_problem(mm)
-    if why is not None:
-        raise argparse.ArgumentTypeError(why)
-    return mm
-
-
 def add_arguments(p) -> None:
     p.add_argument("inputs", nargs="+", metavar="INPUT",
                    help=".aidl files, folders (every *.aidl below) or .jsonl files of "
@@ -88,7 +76,7 @@ def add_arguments(p) -> None:
                         "`timeout` (default: twice the budget's wall time, 120 s x K)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a param in every program")
-    p.add_argument("--min-wall", type=_min_wall, default=None, metavar="MM",
+    p.add_argument("--min-wall", type=min_wall_argument, default=None, metavar="MM",
                    help="warn (W0507) about walls thinner than this, in mm (default: the "
                         "program's `min_wall`, else 0.5)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")

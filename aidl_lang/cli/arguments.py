@@ -6,7 +6,7 @@ In: the subcommand given (or None); out: :func:`_parser`, the ``ArgumentParser``
 the given subcommand's parser is built (:class:`_Unused` stands in for the others: cold
 start), and every message reads the same as with all of them.  Usage errors exit 2 with a
 short message (:class:`_Parser`); the argument types (:func:`_port`, :func:`_budget_factor`,
-:func:`_memory_size`, :func:`_min_wall`) word a bad value as one.  ``prompt``, ``generate`` and ``eval`` add
+:func:`_memory_size`, :func:`~aidl_lang.limits.min_wall_argument`) word a bad value as one.  ``prompt``, ``generate`` and ``eval`` add
 theirs from :mod:`aidl_lang.cli.llm`, ``batch`` from :mod:`aidl_lang.batch.command`.
 """
 from __future__ import annotations
@@ -14,6 +14,8 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+
+from ..limits import min_wall_argument
 
 
 _COLUMNS: int | None = None
@@ -228,7 +230,7 @@ def _render_arguments(r) -> None:
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    r.add_argument("--min-wall", type=_min_wall, default=None, metavar="MM",
+    r.add_argument("--min-wall", type=min_wall_argument, default=None, metavar="MM",
                    help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
                         "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off; "
                         "else 0.001 to 1e6)")
@@ -247,7 +249,7 @@ def _check_arguments(c) -> None:
     c.add_argument("file", nargs="?")
     c.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     c.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
-    c.add_argument("--min-wall", type=_min_wall, default=None, metavar="MM",
+    c.add_argument("--min-wall", type=min_wall_argument, default=None, metavar="MM",
                    help="warn (W0507, W0519, W0520) about walls and slits thinner than this, in mm; "
                         "overrides the program's `min_wall` statements (default: theirs, else 0.5; 0: off; "
                         "else 0.001 to 1e6)")
@@ -330,21 +332,6 @@ def _budget_factor(text: str) -> float:
     if not 0 < k <= 1000:
         raise argparse.ArgumentTypeError(f"--budget expects a factor between 0 and 1000, got `{text}`")
     return k
-
-
-def _min_wall(text: str) -> float:
-    """``--min-wall MM``: 0 or a length from 0.001 to 1e6 mm
-    (:func:`~aidl_lang.limits.min_wall_problem`); NaN, infinities and negatives are usage
-    errors (exit 2), as the ``min_wall`` statement refuses them (E0109)."""
-    from ..limits import min_wall_problem
-    try:
-        mm = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of mm, got `{text}`") from None
-    why = min_wall_problem(mm)
-    if why is not None:
-        raise argparse.ArgumentTypeError(why)
-    return mm
 
 
 def _budget_arg(p) -> None:
