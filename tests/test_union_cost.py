@@ -108,9 +108,10 @@ def test_the_estimate_of_a_row_is_quadratic_along_y_and_linear_along_x():
         narrow, wide = scanwork.exact_scan_work(r1, 1)
         assert 0.4 * scanwork.scan_work(r1, 1) < narrow + wide <= scanwork.scan_work(r1, 1)
         assert sum(scanwork.exact_scan_work(r1, 0)) < 0.01 * (narrow + wide)
-    assert scanwork.turned_is_cheaper(row(800))
-    assert not scanwork.turned_is_cheaper(column(800))
-    assert not scanwork.turned_is_cheaper(row(100))           # cheap either way: left alone
+    assert scanwork.plan(row(800)) == (True, False)
+    assert scanwork.plan(column(800)) == (False, False)
+    assert scanwork.plan(row(100)) == (False, False)          # cheap either way: left alone
+    assert scanwork.plan(row(800) + column(800), left=1.0) == (False, True)   # a cross: weighed
 
 
 def scan_work_ratio(a, b, axis):
@@ -170,18 +171,25 @@ def test_a_row_united_along_x_writes_the_same_circles(tmp_path, monkeypatch):
     from aidl_lang.output.part import booleans
     src = ROW.format(x="i*3", y="0", n=600)
     turns = []
-    real = booleans.turned_is_cheaper
-    monkeypatch.setattr(booleans, "turned_is_cheaper",
-                        lambda faces: turns.append(real(faces)) or turns[-1])
+    real = booleans.plan
+
+    def spy(faces, left=math.inf):
+        turns.append(real(faces, left)[0])
+        return real(faces, left)
+
+    def plain(faces, left=math.inf):
+        return False, real(faces, left)[1]
+
+    monkeypatch.setattr(booleans, "plan", spy)
     a = compile_source(src, "row.aidl")
     assert turns == [True]
-    monkeypatch.setattr(booleans, "turned_is_cheaper", lambda faces: False)
+    monkeypatch.setattr(booleans, "plan", plain)
     b = compile_source(src, "row.aidl")
     assert a.ok and b.ok
     assert _vertices(a.drawing.parts[0].shape) == _vertices(b.drawing.parts[0].shape)
     sets = []
-    for turn in (real, lambda faces: False):
-        monkeypatch.setattr(booleans, "turned_is_cheaper", turn)
+    for how in (real, plain):
+        monkeypatch.setattr(booleans, "plan", how)
         out = tmp_path / "row.dxf"
         _cli_render(src, tmp_path, out)
         sets.append(sorted((round(e.dxf.center.x, 9), round(e.dxf.center.y, 9),

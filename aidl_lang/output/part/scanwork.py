@@ -12,7 +12,7 @@ face meets the edges of the faces whose interval overlaps its own (2 per contour
 vertices at the same height (equal circles on a row) once each where Clipper counts the height
 once, and a contour crossed by a scan line more than twice (a star, a comb) as crossed twice:
 it decides when the exact count (:func:`exact_scan_work`, from the vertices, O(V log V)) is
-worth taking, and which way to scan (:func:`turned_is_cheaper`).
+worth taking, and which way to scan (:func:`plan`).
 """
 from __future__ import annotations
 
@@ -36,24 +36,18 @@ TURN = ((0.0, -1.0, 0.0), (1.0, 0.0, 0.0))
 TURN_BACK = ((0.0, 1.0, 0.0), (-1.0, 0.0, 0.0))
 
 
-def _sizes(faces: list) -> tuple[np.ndarray, np.ndarray]:
-    """Each face's vertex count and number of contours."""
-    v = np.fromiter((f.num_vert() for f in faces), float, len(faces))
-    k = np.fromiter((f.num_contour() for f in faces), float, len(faces))
-    return v, k
+def _layout(faces: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each face's vertex count, number of contours and bounds (xmin, ymin, xmax, ymax)."""
+    n = len(faces)
+    v = np.fromiter((f.num_vert() for f in faces), float, n)
+    k = np.fromiter((f.num_contour() for f in faces), float, n)
+    b = np.array([f.bounds() for f in faces], float).reshape(n, 4)
+    return v, k, b
 
 
-def scan_work(faces: list, axis: int = 1) -> float:
-    """Estimated scan-line work (active edges x scan beams, no unit) of one union of
-    ``faces`` (``mf.CrossSection``) scanned along ``axis`` (1: y, Clipper's own; 0: x): the
-    sum over faces of their vertex count times twice the contours of the faces whose interval
-    along ``axis`` overlaps theirs.  A row of n equal-sized faces along x costs ~n^2 along y,
-    ~n along x.  O(n log n) in the number of faces."""
-    if not faces:
-        return 0.0
-    v, k = _sizes(faces)
-    b = np.array([f.bounds() for f in faces], float).reshape(len(faces), 4)
-    lo, hi, w = b[:, axis], b[:, axis + 2], 2.0 * k
+def _work(v: np.ndarray, k: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> float:
+    """:func:`scan_work` from the faces' vertex counts, contours and intervals."""
+    w = 2.0 * k
     o = np.argsort(lo, kind="stable")
     slo, clo = lo[o], np.concatenate(([0.0], np.cumsum(w[o])))
     o = np.argsort(hi, kind="stable")
@@ -64,40 +58,52 @@ def scan_work(faces: list, axis: int = 1) -> float:
     return float(v @ (total - below - above))
 
 
+def scan_work(faces: list, axis: int = 1) -> float:
+    """Estimated scan-line work (active edges x scan beams, no unit) of one union of
+    ``faces`` (``mf.CrossSection``) scanned along ``axis`` (1: y, Clipper's own; 0: x): the
+    sum over faces of their vertex count times twice the contours of the faces whose interval
+    along ``axis`` overlaps theirs.  A row of n equal-sized faces along x costs ~n^2 along y,
+    ~n along x.  O(n log n) in the number of faces."""
+    if not faces:
+        return 0.0
+    v, k, b = _layout(faces)
+    return _work(v, k, b[:, axis], b[:, axis + 2])
+
+
 def exact_scan_work(faces: list, axis: int = 1) -> tuple[float, float]:
     """The scan-line work of one union of ``faces`` from their vertices: the sum over the
     distinct coordinates along ``axis`` of the vertices (Clipper's scan beams) of the edges
     that cross or start at that scan line; as (the sum over beams of fewer than :data:`WIDE`
     active edges, the sum over the others).  O(V log V) in the number of vertices."""
-    lows, highs, at = [], [], []
-    for f in faces:
-        for p in f.to_polygons():
-            c = np.asarray(p, dtype=float)[:, axis]
-            if not len(c):
-                continue
-            d = np.roll(c, -1)
-            lows.append(np.minimum(c, d))
-            highs.append(np.maximum(c, d))
-            at.append(c)
-    if not at:
+    polys = [p for f in faces for p in f.to_polygons() if len(p)]
+    if not polys:
         return 0.0, 0.0
-    lo, hi = np.sort(np.concatenate(lows)), np.sort(np.concatenate(highs))
-    beams = np.unique(np.concatenate(at))
+    c = np.concatenate([np.asarray(p, dtype=float)[:, axis] for p in polys])
+    sizes = np.fromiter((len(p) for p in polys), np.int64, len(polys))
+    nxt = np.arange(1, len(c) + 1)
+    ends = np.cumsum(sizes)
+    nxt[ends - 1] = ends - sizes                 # each contour's last vertex: back to its first
+    d = c[nxt]
+    lo, hi = np.sort(np.minimum(c, d)), np.sort(np.maximum(c, d))
+    beams = np.unique(c)
     active = np.searchsorted(lo, beams, "right") - np.searchsorted(hi, beams, "right")
     wide = active >= WIDE
     return float(active[~wide].sum()), float(active[wide].sum())
 
 
-def union_seconds(faces: list, left: float) -> float:
+def union_seconds(faces: list, left: float, vertices: int | None = None) -> float:
     """The least time (s) one ``batch_boolean`` union of ``faces`` is expected to take by its
     scan-line work, looked at only as closely as ``left`` (the seconds before the deadline)
-    needs: 0 when even every face overlapping every other could not come near ``left``; the
-    exact work (:func:`exact_scan_work`) when the estimate (:func:`scan_work`, which can
-    count a non-convex contour short) comes within 4 times of it."""
+    needs (``vertices``: their number of vertices, when known): 0 when even every face
+    overlapping every other could not come near ``left``; the exact work
+    (:func:`exact_scan_work`) when the estimate (:func:`scan_work`, which can count a
+    non-convex contour short) comes within 4 times of it."""
     if len(faces) < 2:
         return 0.0
-    v, k = _sizes(faces)
-    if 2.0 * float(v.sum()) * float(k.sum()) * SECONDS_PER_WIDE_SCAN * 4 <= left:
+    if vertices is None:
+        vertices = sum(f.num_vert() for f in faces)
+    # every face overlapping every other, each contour of at least 3 vertices
+    if 2.0 * vertices * (vertices / 3) * SECONDS_PER_WIDE_SCAN * 4 <= left:
         return 0.0
     if scan_work(faces) * SECONDS_PER_WIDE_SCAN * 4 <= left:
         return 0.0
@@ -105,19 +111,27 @@ def union_seconds(faces: list, left: float) -> float:
     return narrow * SECONDS_PER_SCAN + wide * SECONDS_PER_WIDE_SCAN
 
 
-def turned_is_cheaper(faces: list) -> bool:
-    """Whether the union of ``faces`` should be scanned along x (the faces turned by a quarter
-    turn, :data:`TURN`, and the result back, :data:`TURN_BACK`): its work along y is worth
-    it (more than :data:`TURN_SECONDS`) and :data:`TURN_GAIN` times that along x (a row)."""
+def plan(faces: list, left: float = float("inf")) -> tuple[bool, bool]:
+    """How to unite ``faces`` (in groups, :meth:`~.booleans.Renderer.union`): (turned: scan
+    along x, the faces turned a quarter turn, :data:`TURN`, and the result back,
+    :data:`TURN_BACK`, when the work along y is worth it, more than :data:`TURN_SECONDS`,
+    and :data:`TURN_GAIN` times that along x: a row; watched: the work of uniting them all at
+    once comes within 4 times of ``left``, the seconds before the deadline, so that each
+    group's union is to be weighed (:func:`union_seconds`) before it starts)."""
     if len(faces) < 2:
-        return False
-    v, k = _sizes(faces)
-    if 2.0 * float(v.sum()) * float(k.sum()) * SECONDS_PER_SCAN <= TURN_SECONDS:
-        return False
-    along_y = scan_work(faces, 1)
-    if along_y * SECONDS_PER_SCAN <= TURN_SECONDS:
-        return False
-    return along_y > TURN_GAIN * scan_work(faces, 0)
+        return False, False
+    v = sum(f.num_vert() for f in faces)
+    bound = 2.0 * v * (v / 3)        # every face overlapping every other
+    if bound * SECONDS_PER_SCAN <= TURN_SECONDS and bound * SECONDS_PER_WIDE_SCAN * 4 <= left:
+        return False, False
+    vs, k, b = _layout(faces)
+    along_y = _work(vs, k, b[:, 1], b[:, 3])
+    turn = False
+    if along_y * SECONDS_PER_SCAN > TURN_SECONDS:
+        along_x = _work(vs, k, b[:, 0], b[:, 2])
+        if along_y > TURN_GAIN * along_x:
+            turn, along_y = True, along_x
+    return turn, along_y * SECONDS_PER_WIDE_SCAN * 4 > left
 
 
 def turned(faces: list) -> list:
