@@ -280,3 +280,29 @@ def test_the_shape_checks_past_the_deadline_are_located(monkeypatch):
     [e] = [d for d in c.sink.items if d.code == "E0304"]
     assert e.span is not None and e.span.line == 2, e
     assert "in the shape checks of `a`" in e.message, e.message
+
+
+def test_a_solid_row_of_4000_circles_says_it_falls_apart_within_the_budget(tmp_path):
+    """The same row as a `solid`: W0504's pieces (Manifold's decompose, Clipper's scan line
+    again) took 40 s and ended with E0304 in the shape checks; scanned along x `aidl check` is
+    ok,
+    W0504 naming the first pieces, within the 7.5 s of `--budget 0.5`."""
+    f = tmp_path / "solid.aidl"
+    f.write_text(ROW.format(x="i*3", y="0", n=4000).replace("assembly a", "solid a"))
+    r, cpu = _cli("check", f, "--budget", "0.5")
+    assert r.returncode == 0, r.stderr[-2000:]
+    out = r.stdout + r.stderr
+    assert "solid `a` falls apart into 4000 separate pieces: {`a.ps[0]`}" in out, out[-2000:]
+    assert "E0304" not in out
+    assert cpu < 7.5, cpu
+
+
+def test_the_turned_pieces_are_the_plain_pieces():
+    """scanwork.decompose turns a row's shape and its pieces back exactly: the same pieces
+    (vertex sets) as Manifold's own decompose."""
+    faces = [_circle(3 * i, 0, 1 + i * 1e-4) for i in range(800)]
+    shape = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    plain = {frozenset(_vertices(p)) for p in shape.decompose()}
+    turned = {frozenset(_vertices(p)) for p in scanwork.decompose(shape, loops)}
+    assert len(plain) == 800 and turned == plain

@@ -134,6 +134,23 @@ def plan(faces: list, left: float = float("inf")) -> tuple[bool, bool]:
     return turn, along_y * SECONDS_PER_WIDE_SCAN * 4 > left
 
 
+def decompose(shape: mf.CrossSection, loops: list) -> list:
+    """``shape.decompose()`` (its pieces: Clipper's scan line too), scanned along x when its
+    ``loops`` (its polygons, Nx2 arrays) lie on a row along x (:func:`plan`'s test on the
+    loops as faces); the pieces turned back, exact."""
+    if len(loops) < 2:
+        return shape.decompose()
+    v = np.fromiter((len(p) for p in loops), float, len(loops))
+    lo = np.array([p.min(axis=0) for p in loops], float).reshape(-1, 2)
+    hi = np.array([p.max(axis=0) for p in loops], float).reshape(-1, 2)
+    k = np.ones(len(loops))
+    along_y = _work(v, k, lo[:, 1], hi[:, 1])
+    if along_y * SECONDS_PER_SCAN <= TURN_SECONDS or \
+            along_y <= TURN_GAIN * _work(v, k, lo[:, 0], hi[:, 0]):
+        return shape.decompose()
+    return [turned_back(p) for p in shape.transform(TURN).decompose()]
+
+
 def turned(faces: list) -> list:
     """``faces`` turned a quarter turn counter-clockwise (exact: coordinates swapped and
     negated, applied by Manifold when the shapes are next read)."""
