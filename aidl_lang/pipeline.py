@@ -325,6 +325,8 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
         gc.collect()
         raise OutOfMemory(stage, _first_structure(model))
     except OutOfBudget as ex:
+        if ex.where is None:            # a step of no one structure: at the program's first
+            ex.where = _first_structure(model)
         report_out_of_budget(sink, ex)
         return None
 

@@ -287,7 +287,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
         if s.kind == "solid":
             tick(s)
             run("invisible", s, lambda: _check_invisible(d, s, sink))
-    tick(None)
+    tick(next(iter(roots), None))   # past the deadline: at the first part (E0304 located)
     run("engraving", None, lambda: _check_engraving(d, roots, sink, loops, tick))
     by_part: dict = {}
     for c in d.cuts:

@@ -19,6 +19,7 @@ from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdl
 from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs
+from ..part.scanwork import decompose
 from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
@@ -123,7 +124,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     if sum(_signed(p) > 0 for p in loops) < 2:
         return
     total = _area(shape)
-    pieces = [p for p in shape.decompose() if _area(p) > max(1e-9, 1e-6 * total)]
+    pieces = [p for p in decompose(shape, loops) if _area(p) > max(1e-9, 1e-6 * total)]
     if len(pieces) < 2:
         return
     items = _contributors(d, s)

@@ -18,6 +18,7 @@ that close on no area.
 from __future__ import annotations
 
 import math
+import time
 
 import manifold3d as mf
 import numpy as np
@@ -36,6 +37,7 @@ from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot
                        rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
                        spline_band)
 from .placement import placement_matrix
+from .scanwork import plan, turned, turned_back, union_seconds
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
@@ -207,12 +209,17 @@ class Renderer:
         self.slit_shapes: dict = {}
         self.split: set = set()
 
-    def tick(self, s: Structure | None = None, faces=()) -> None:
+    def tick(self, s: Structure | None = None, faces=(), watched: bool = True) -> None:
         """Look at the deadline before a step; ``faces``: the Manifold shapes one
-        uninterruptible union is about to take (refused when their vertex count says it
-        would end past the deadline)."""
+        uninterruptible union is about to take (refused when their vertex count, or, when
+        ``watched``, their scan-line work (:func:`.scanwork.union_seconds`), says it would
+        end past the deadline)."""
         if self.deadline is not None:
-            ahead = sum(f.num_vert() for f in faces) * UNION_SECONDS_PER_VERTEX
+            vertices = sum(f.num_vert() for f in faces)
+            ahead = vertices * UNION_SECONDS_PER_VERTEX
+            if watched and len(faces) > 1:
+                ahead = max(ahead, union_seconds(faces, self.deadline.at - time.monotonic(),
+                                                 vertices))
             self.deadline.check(self.STAGE, s or self.current, ahead)
 
     def union(self, faces: list, s: Structure | None = None) -> mf.CrossSection:
@@ -221,18 +228,29 @@ class Renderer:
         edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
         line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Disjoint
         faces cost a little more (each level passes them again: 0.3 s instead of 0.1 s for
-        5 000 small circles).  The deadline is checked between groups."""
+        5 000 small circles).  Faces in a row along x are united scanned along x (turned a
+        quarter turn and back, exact: :func:`.scanwork.plan`): 4 000 circles of different
+        radii on a row, 31 s scanned along y, 0.1 s along x.  The deadline is checked
+        between groups (:meth:`tick`), each group weighed by its scan-line work when all the
+        faces' could come near the deadline."""
         if not faces:
             return mf.CrossSection()
+        left = (self.deadline.at - time.monotonic() if self.deadline is not None
+                else float("inf"))
+        turn, watched = plan(faces, left)
+        if turn:
+            faces = turned(faces)
         while len(faces) > UNION_GROUP:
             nxt = []
             for i in range(0, len(faces), UNION_GROUP):
-                self.tick(s, faces[i:i + UNION_GROUP])
+                self.tick(s, faces[i:i + UNION_GROUP], watched)
                 nxt.append(mf.CrossSection.batch_boolean(faces[i:i + UNION_GROUP],
                                                          mf.OpType.Add))
             faces = nxt
-        self.tick(s, faces)
-        return mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
+        self.tick(s, faces, watched)
+        out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
+        self.tick(s)                # a union that ended past the deadline: E0304 at ``s``
+        return turned_back(out) if turn else out
 
     def P(self, p) -> np.ndarray:
         """Point ``p``'s solved position in the root frame (mm), as an array."""
