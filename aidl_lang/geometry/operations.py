@@ -429,7 +429,7 @@ def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
         # same rule as the constraints' lines, geometry.constraints._direction)
         raise OperationError(f"`{getattr(line, 'label', None) or 'about'}` has zero length "
                              f"(its start and end are the same point), so there is no line "
-                             f"to mirror about; give it distinct starting points")
+                             f"to mirror about; give its start and end different places")
     ang = math.atan2(dy, dx)
     xf, rot, flip = _reflect(a, b)
     return _copy(ctx, target, xf, rot, flip, name, k, "mirror", ang, indexed=indexed,
