@@ -171,13 +171,17 @@ def _cross_section(spec):
 
 @settings(max_examples=150, deadline=None)
 @given(_shape_spec, st.integers(0, 2**32 - 1))
+# a circle added, cut by a larger one and cut again leaves a sliver of 3e-9 mm^2 that the
+# grown outline drops (found by this test in CI: points near the sliver's edges were "surely")
+@example([("circle", 2.375, -1.75, 1.5, False), ("circle", 0.0, -0.5, 4.0, True),
+          ("square", 0.0, 0.0, 1.0, False), ("circle", 2.375, -1.75, 1.5, True)], 0)
 def test_points_surely_on_the_material_are_inside_the_grown_part(spec, seed):
     """What `_all_on_material` accepts per point (inside the outline, or within
     `_SURELY_GROWN` of an edge) is inside Manifold's outline grown by ENGRAVE_TOL: points at
     0 to 1.5 ENGRAVE_TOL from the vertices and edges of random unions and differences."""
     import manifold3d as mf
-    from aidl_lang.output.checks import (ENGRAVE_TOL, _SURELY_GROWN, _edges, _inside,
-                                         _within)
+    from aidl_lang.output.checks import ENGRAVE_TOL, _edges, _inside
+    from aidl_lang.output.checks.engravings import _loop_area, _surely_on_material
     shape = _cross_section(spec)
     loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     if not loops:
@@ -190,12 +194,15 @@ def test_points_surely_on_the_material_are_inside_the_grown_part(spec, seed):
     ang = rng.uniform(0, 2 * np.pi, 300)
     r = rng.uniform(0, 1.5 * ENGRAVE_TOL, 300)
     pts = base + np.column_stack([r * np.cos(ang), r * np.sin(ang)])
-    e = _edges(loops)
-    surely = _inside(pts, e) | _within(pts, e, _SURELY_GROWN)
+    surely = _surely_on_material(pts, loops)
     grown = shape.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
     inside = _inside(pts, _edges([np.asarray(p, dtype=float) for p in grown.to_polygons()]))
     assert not (surely & ~inside).any()
-    assert surely.sum() > 100          # the test decides most points
+    # the test decides most points near loops of some area (those under ENGRAVE_TOL^2 it
+    # leaves to the grown outline)
+    big = np.concatenate([np.full(len(p), abs(_loop_area(p)) >= ENGRAVE_TOL ** 2) for p in loops])
+    near_big = big[k]
+    assert near_big.sum() < 30 or surely[near_big].sum() > near_big.sum() / 3
 
 
 # The brute-force reference squares distances and rounds its projection, so at a distance
