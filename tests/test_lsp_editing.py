@@ -254,15 +254,14 @@ solid s {
 async def test_newer_edit_stops_a_stale_expensive_analysis(client: LanguageClient, tmp_path):
     uri = (tmp_path / "slow.aidl").as_uri()
     _open(client, uri, SLOW)              # 10^8 loop iterations: minutes of interpretation
-    t0 = time.monotonic()
     h = await client.text_document_hover_async(T.HoverParams(
         text_document=T.TextDocumentIdentifier(uri=uri), position=pos(SLOW, "Circle")))
     assert "Circle(center: point" in h.contents.value      # the server answers meanwhile
     fixed = SLOW.replace("10000", "3")
     _change(client, uri, fixed, 2)
-    # the stale analysis is stopped: not minutes; 60 s is a hang guard (a few s when quiet)
+    # the stale analysis is stopped and the new version answered (60 s: a hang guard only;
+    # a few s when quiet)
     assert list(await _diagnostics(client, uri, version=2, timeout=60)) == []
-    assert time.monotonic() - t0 < 60
 
 
 @pytest.mark.timing
@@ -298,10 +297,8 @@ async def test_worker_stops_an_analysis_past_its_time_limit_and_goes_on():
         # SLOW runs into its evaluation budget (E0304) after ~1.3 s on a quiet machine: a
         # limit well below that is always passed first (1.5 s raced it)
         az.TIMEOUT = 0.3
-        t = time.monotonic()
-        with pytest.raises(AnalysisTimeout):
+        with pytest.raises(AnalysisTimeout):          # stopped at its limit, not E0304
             await az.diagnostics(SLOW, "slow.aidl", None)
-        assert time.monotonic() - t < 10
         assert az.restarts == 1
         az.TIMEOUT = 60
         (d,) = await az.diagnostics(BROKEN, "b.aidl", None)             # a fresh worker

@@ -39,11 +39,12 @@ SPIN_BUDGET = 400
 LIMIT = 3.0             # s: the wall limit set for SPIN (wall_factor), far below its minutes
 
 
-def until(ready, seconds: float = 120.0) -> None:
-    """Wait for ``ready()`` (a hang guard of ``seconds``, not a measure)."""
-    end = time.monotonic() + seconds
+def until(ready, request: threading.Thread) -> None:
+    """Wait for ``ready()`` while ``request`` (the thread sending the request that makes it
+    so) still runs: no clock, so a loaded machine cannot fail it; the request itself ends
+    at the studio's wall limit, so neither can it hang."""
     while not ready():
-        assert time.monotonic() < end, "never ready"
+        assert request.is_alive(), "the request ended before it was in flight"
         time.sleep(0.02)
 
 
@@ -221,28 +222,25 @@ def test_compiles_on_dask_keep_the_wall_limit_and_refuse_when_full(cluster, tmp_
         answers = {}
 
         def ask(name, source):
-            t0 = time.monotonic()
-            answers[name] = (c.post("/api/view", json={"sid": sid, "source": source}),
-                             time.monotonic() - t0)
+            answers[name] = c.post("/api/view", json={"sid": sid, "source": source})
         # one compile runs past its time, one waits for the cluster's only thread, a third
         # finds the queue full
         runs = [threading.Thread(target=ask, args=("slow", SPIN)),
                 threading.Thread(target=ask, args=("waits", BRACKET))]
         for k, t in enumerate(runs, 1):
             t.start()
-            until(lambda: pool.inflight >= k)
+            until(lambda: pool.inflight >= k, t)
         ask("refused", BRACKET)
         assert "slow" not in answers            # at once: while the slow one still runs
         for t in runs:
             t.join(300)                          # a hang guard
-        r, took = answers["refused"]
+        r = answers["refused"]
         assert r.status_code == 503 and r.headers["Retry-After"] == "5"
-        r, took = answers["waits"]          # compiled once the slow one was stopped, or given
-        assert took < 0.5 + LIMIT + 60      # up past wait + wall (then "busy"): never a hang
+        r = answers["waits"]        # compiled once the slow one was stopped, or "busy" past the wait
         assert (r.status_code, r.json().get("ok")) == (200, True) or \
             (r.status_code == 503 and "busy" in r.json()["error"])
         waited_out = r.status_code == 503
-        r, _ = answers["slow"]
+        r = answers["slow"]
         assert f"longer than {LIMIT:g} s" in r.json()["error"]    # the wall limit, on the cluster
         m = metrics(c)
         assert m[("aidl_studio_busy_total", ())] == 1 + waited_out
