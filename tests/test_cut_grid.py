@@ -100,13 +100,16 @@ def _count(stretches, step=10.0) -> dict:
     return got
 
 
+def _cut_entities(text: str) -> list:
+    """The entities on a cut layer (CUT...) of a DXF, re-read by ezdxf."""
+    doc = ezdxf.read(io.StringIO(text))
+    return [e for e in doc.modelspace() if e.dxf.layer.startswith("CUT")]
+
+
 def _dxf_stretches(text: str) -> list:
     """The straight stretches of every entity on a cut layer of a DXF (no arcs here)."""
-    doc = ezdxf.read(io.StringIO(text))
     out = []
-    for e in doc.modelspace():
-        if not e.dxf.layer.startswith("CUT"):
-            continue
+    for e in _cut_entities(text):
         if e.dxftype() == "LINE":
             out.append((tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
         elif e.dxftype() == "LWPOLYLINE":
@@ -354,11 +357,8 @@ def test_the_kerf_offsets_the_grid_outside_and_cuts_each_shared_edge_once_on_its
 
 def _dxf_stretches_any(text: str) -> list:
     """The length of each entity on a cut layer (lines, arcs, bulged polylines), mm."""
-    doc = ezdxf.read(io.StringIO(text))
     out = []
-    for e in doc.modelspace():
-        if not e.dxf.layer.startswith("CUT"):
-            continue
+    for e in _cut_entities(text):
         if e.dxftype() == "LINE":
             out.append(math.dist(tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]))
         elif e.dxftype() == "ARC":
