@@ -223,8 +223,8 @@ def _face_at(d, s, p):
     nearest to point ``p`` (on the part's outline, so on some face's edge), or None."""
     best, least = None, np.inf
     x, y = float(p[0]), float(p[1])
-    for st, faces in d.own.items():
-        if st.kind != "solid" or not st.is_within(s):
+    for owner, faces in d.own.items():
+        if owner.kind != "solid" or not owner.is_within(s):
             continue
         for g, f in faces:
             if f is None or f.is_empty():

@@ -155,7 +155,7 @@ def test_a_malformed_spline_is_named_and_the_rest_read(tmp_path, case):
     (tmp_path / "p.aidl").write_text('solid plate {\n    d = Drawing2D("s.dxf")\n}\n')
     r = run("check", "p.aidl", cwd=tmp_path)
     no_internal(r)
-    assert r.returncode == 0 and f"p.aidl:2:19: warning[W0130]: 1 SPLINE entity" in r.stderr
+    assert r.returncode == 0 and "p.aidl:2:19: warning[W0130]: 1 SPLINE entity" in r.stderr
 
 
 def _bezier_points(d):
