@@ -142,11 +142,9 @@ def _two_studios_one_redis(url, redis_proc, tmp_path):
         h = b.get("/healthz")
         assert h.status_code == 503 and h.json()["checks"]["compilers"] == "ok"
         assert "Redis" in h.json()["checks"]["store"]
-        t0 = time.monotonic()
         r = b.post("/api/view", json={"sid": sid, "source": BRACKET})
         assert r.status_code == 503 and r.headers["Retry-After"] == "5"
-        # at once, not after a connection timeout: the hang guard is generous for a loaded machine
-        assert "try again" in r.json()["error"] and time.monotonic() - t0 < 30
+        assert "try again" in r.json()["error"]
 
 
 @pytest.fixture(scope="module")
