@@ -524,8 +524,9 @@ class Result:
 
     def summary(self) -> str:
         """One line: the file, ``ok`` with the number of parts and the drawing's size (mm)
-        once it was drawn, or the number of errors and the first one located
-        (``<source>:3:5 E0101 ...``); then the number of warnings."""
+        once it was drawn for a display, or the number of errors and the first one located
+        (``1 error; first: 3:5 E0101 ...``), or ``not drawn:`` and why (a located ``E0304``
+        for a drawing past its bounded work); then the number of warnings."""
         errors = [d for d in self.sink.items if d.is_error]
         warnings = [d for d in self.sink.items if d.severity == "warning"]
         if errors:
@@ -535,7 +536,13 @@ class Result:
                     f"{first.code} {first.message}")
             if len(text) > 160:
                 text = text[:157] + "..."
-        elif self._svg_done and self._svg_problem is None:
+        elif self._svg_done and self._svg_problem:
+            first = self._svg_problem[0]
+            at = f"{first.span.line}:{first.span.col} " if first.span else ""
+            text = f"not drawn: {at}{first.code} {first.message}"
+            if len(text) > 160:
+                text = text[:157] + "..."
+        elif self._svg_done:
             bx = [p.bbox for p in self.parts]
             w = max(b[2] for b in bx) - min(b[0] for b in bx) if bx else 0.0
             h = max(b[3] for b in bx) - min(b[1] for b in bx) if bx else 0.0

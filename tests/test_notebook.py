@@ -142,6 +142,26 @@ def test_every_text_in_the_html_is_escaped():
     assert html.count("<img") == 1 and 'onerror="' not in html
 
 
+def test_a_drawing_past_its_bounded_work_shows_the_located_e0304(cpu_clock):
+    """600 circles stacked at one place: the program compiles, but its exact outlines are
+    refused past 10,000,000 (edge, chord) pairs (an OutputError, whatever the budget): the
+    display says so where the drawing would be, located, as `aidl render` does."""
+    src = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, "
+           "height=20)\n    for i in range(600) { hole h { c = Circle(center=(i * 0.001, "
+           "0), radius=1) } }\n}\n")
+    r = aidl_lang.compile(source=src, path="stacked.aidl", budget=0.3)
+    assert r.ok
+    bundle = r._repr_mimebundle_()
+    assert "image/svg+xml" not in bundle and r._repr_svg_() is None
+    html = bundle["text/html"]
+    assert "<img" not in html
+    assert "stacked.aidl:2:1: error[E0304]: the program ran out of its evaluation budget in " \
+           "the exact outlines of `plate`" in html
+    assert "more than 10,000,000 (edge, chord) pairs" in html
+    assert "\n2 | solid plate {\n  | ^^^^^^^^^^^^^\n" in html
+    assert bundle["text/plain"].startswith("aidl stacked.aidl: not drawn: 2:1 E0304 ")
+
+
 # ------------------------------------------------------------------ the form
 PROGRAM = """param width = 40 mm, min=20 mm, max=80 mm, step=1 mm
 param teeth = 12, min=6, max=60
@@ -286,8 +306,8 @@ def test_the_example_notebook_runs_and_shows_the_drawing_and_the_form(tmp_path, 
         "await asyncio.sleep(0.5)\n"
         "print(before, f.redraws, f.overrides())"))
     client = nbclient.NotebookClient(nb, kernel_name="python3", timeout=120,
-                                     resources={"metadata": {"path": str(NOTEBOOK.parent)}},
-                                     store_widget_state=True)
+                                     startup_timeout=120, store_widget_state=True,
+                                     resources={"metadata": {"path": str(NOTEBOOK.parent)}})
     client.execute()
     code = [c for c in nb.cells if c.cell_type == "code"]
     for c in code:
@@ -297,7 +317,8 @@ def test_the_example_notebook_runs_and_shows_the_drawing_and_the_form(tmp_path, 
     assert img_svg(shown["text/html"]) == shown["image/svg+xml"]
     assert shown["text/plain"] == "aidl ../../examples/bracket.aidl: ok, 1 part, 128 x 40 mm"
     error = code[2].outputs[0].data
-    assert "image/svg+xml" not in error and "error[E0101]: unknown name `wdth`" in error["text/html"]
+    assert "image/svg+xml" not in error
+    assert "error[E0101]: unknown name `wdth`" in error["text/html"]
     view = code[3].outputs[0].data["application/vnd.jupyter.widget-view+json"]
     state = nb.metadata["widgets"]["application/vnd.jupyter.widget-state+json"]["state"]
     models = {k: m["model_name"] for k, m in state.items()}
@@ -305,7 +326,8 @@ def test_the_example_notebook_runs_and_shows_the_drawing_and_the_form(tmp_path, 
     sliders = {m["state"]["description"]: m["state"] for m in state.values()
                if m["model_name"] in ("IntSliderModel", "FloatSliderModel")}
     assert sliders["bolts"]["value"] == 6 and sliders["pitch (mm)"]["value"] == 25
-    assert (sliders["bolts"]["min"], sliders["bolts"]["max"], sliders["bolts"]["step"]) == (0, 10, 1)
+    bolts = sliders["bolts"]
+    assert (bolts["min"], bolts["max"], bolts["step"]) == (0, 10, 1)   # a count's default span
     html = [m["state"]["value"] for m in state.values() if m["model_name"] == "HTMLModel"
             and "aidl-result" in m["state"]["value"]]
     assert len(html) == 1
