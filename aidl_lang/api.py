@@ -189,6 +189,10 @@ class Result:
         # the wall-time end (limits.Deadline) of the work read from the output after the
         # compile; None: a fresh budget from each call (_after_deadline)
         self.deadline = None
+        # the Jupyter display (_display): made once, on the first display
+        self._svg_done = False
+        self._svg_text: str | None = None
+        self._svg_problem: list[Diagnostic] | None = None
 
     # ------------------------------------------------------------------ status
     @property
@@ -497,6 +501,76 @@ class Result:
     def __repr__(self) -> str:
         return f"<aidl Result {self.path} ok={self.ok} diagnostics={len(self.sink.items)}>"
 
+    # ------------------------------------------------------------------ Jupyter
+    def _repr_svg_(self) -> str | None:
+        """The drawing as SVG text for Jupyter (what ``aidl render -o x.svg`` writes: the
+        ``preview`` style, mm page, the program's kerf); None when the program has errors or
+        the output could not be made (the ``text/html`` of :meth:`_repr_mimebundle_` then
+        lists why).  Made on the first call and kept."""
+        return self._display()[0]
+
+    def _repr_mimebundle_(self, include=None, exclude=None) -> dict:
+        """What Jupyter shows (docs/notebook.md): ``image/svg+xml``, the drawing (as
+        :meth:`_repr_svg_`; left out when the program has errors); ``text/html``, the
+        drawing with every diagnostic listed under it (severity, code, ``line:column``,
+        message; HTML-escaped), or, for a program with errors, the located errors (with the
+        source line and caret) instead of a drawing; ``text/plain``, one summary line
+        (:meth:`summary`).  The SVG is made once, on the first display, and kept."""
+        svg, problem = self._display()
+        bundle = {"text/plain": self.summary(), "text/html": _html(self, svg, problem)}
+        if svg is not None:
+            bundle["image/svg+xml"] = svg
+        return bundle
+
+    def summary(self) -> str:
+        """One line: the file, ``ok`` with the number of parts and the drawing's size (mm)
+        once it was drawn for a display, or the number of errors and the first one located
+        (``1 error; first: 3:5 E0101 ...``), or ``not drawn:`` and why (a located ``E0304``
+        for a drawing past its bounded work); then the number of warnings."""
+        errors = [d for d in self.sink.items if d.is_error]
+        warnings = [d for d in self.sink.items if d.severity == "warning"]
+        if errors:
+            first = errors[0]
+            at = f"{first.span.line}:{first.span.col} " if first.span else ""
+            text = (f"{len(errors)} error{'s' if len(errors) != 1 else ''}; first: {at}"
+                    f"{first.code} {first.message}")
+            if len(text) > 160:
+                text = text[:157] + "..."
+        elif self._svg_done and self._svg_problem:
+            first = self._svg_problem[0]
+            at = f"{first.span.line}:{first.span.col} " if first.span else ""
+            text = f"not drawn: {at}{first.code} {first.message}"
+            if len(text) > 160:
+                text = text[:157] + "..."
+        elif self._svg_done:
+            bx = [p.bbox for p in self.parts]
+            w = max(b[2] for b in bx) - min(b[0] for b in bx) if bx else 0.0
+            h = max(b[3] for b in bx) - min(b[1] for b in bx) if bx else 0.0
+            text = f"ok, {len(bx)} part{'s' if len(bx) != 1 else ''}, {w:g} x {h:g} mm"
+        else:
+            text = "ok" if self.ok else "not drawn"
+        if warnings:
+            text += f", {len(warnings)} warning{'s' if len(warnings) != 1 else ''}"
+        return f"aidl {self.path}: {text}"
+
+    def _display(self) -> tuple[str | None, list | None]:
+        """``(svg, problem)`` made once: the SVG text, or None and the diagnostics that say
+        why (the result's errors, or one for an output that could not be made: a located
+        ``E0304`` for bounded work that ran out)."""
+        if not self._svg_done:
+            self._svg_done = True
+            if self.errors:
+                self._svg_problem = self.errors
+            else:
+                from .output import OutputError
+                try:
+                    self._svg_text = self.to_svg()
+                except NotCompiled as e:
+                    self._svg_problem = [Diagnostic("E0305", str(e), None)]
+                except OutputError as e:
+                    self._svg_problem = _output_problem(e)
+        return self._svg_text, self._svg_problem
+
 
 def compile(source: str | None = None, path: str | os.PathLike | None = None,
             overrides: Mapping[str, str | float] | None = None,
@@ -543,6 +617,48 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
     ov = {str(k): str(v) for k, v in (overrides or {}).items()}
     return Result(compile_source(source, name, ov or None, min_wall=min_wall, budget=b),
                   name, source)
+
+
+def _output_problem(e: Exception) -> list[Diagnostic]:
+    """The diagnostic shown instead of a drawing that could not be made: the located
+    ``E0304`` ``aidl render`` prints for bounded work that ran out, else the message."""
+    budget = getattr(e, "budget", None)
+    if budget is not None:
+        from .pipeline import report_out_of_budget
+        sink = DiagnosticSink()
+        report_out_of_budget(sink, budget)
+        return list(sink.items)
+    return [Diagnostic("E0304", str(e), None)]
+
+
+def _html(result: Result, svg: str | None, problem: list[Diagnostic] | None) -> str:
+    """The ``text/html`` of :meth:`Result._repr_mimebundle_`: the drawing (as an ``<img>`` of
+    the SVG, so that several results on one page share no element ids), then a list of the
+    diagnostics (``severity[CODE] line:col message``), or the located errors when there is no
+    drawing; every text escaped."""
+    import base64
+    from html import escape
+    from .diagnostics import render_text
+    parts = [f'<div class="aidl-result"><div style="font-family:monospace">'
+             f'{escape(result.summary())}</div>']
+    if svg is not None:
+        data = base64.b64encode(svg.encode("utf-8")).decode("ascii")
+        parts.append(f'<img style="max-width:100%;background:white" alt="{escape(result.path)}" '
+                     f'src="data:image/svg+xml;base64,{data}">')
+    if problem is not None:
+        sources = result.sink.sources
+        parts.append('<pre style="color:#b00">'
+                     + escape("\n\n".join(render_text(d, sources) for d in problem))
+                     + "</pre>")
+    shown = [d for d in result.sink.items if problem is None or d not in problem]
+    if shown:
+        rows = []
+        for d in shown:
+            at = f"{d.span.line}:{d.span.col}" if d.span else "-"
+            rows.append(f"<li><code>{escape(d.severity)}[{escape(d.code)}]</code> "
+                        f"<code>{escape(at)}</code> {escape(d.message)}</li>")
+        parts.append('<ul class="aidl-diagnostics">' + "".join(rows) + "</ul>")
+    return "".join(parts) + "</div>"
 
 
 def _unreadable(name: str, e: Exception) -> Result:

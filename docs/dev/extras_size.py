@@ -12,7 +12,7 @@ from importlib import metadata as md
 
 from packaging.requirements import Requirement
 
-EXTRAS = ["pdf", "png", "mesh", "step", "layout", "mcp", "batch", "dask", "studio"]
+EXTRAS = ["pdf", "png", "mesh", "step", "layout", "mcp", "batch", "dask", "studio", "notebook"]
 
 
 def key(n: str) -> str:
