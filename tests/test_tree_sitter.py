@@ -1,0 +1,397 @@
+"""tree-sitter-aidl (editors/tree-sitter) against the reference parser.
+
+The grammar is compiled from the committed ``src/parser.c`` and ``src/scanner.c`` with the C
+compiler (cached in the temporary directory by content) and loaded with the ``tree-sitter``
+package; then every ``.aidl`` file of the repository and every ```aidl block of the docs is
+parsed by it and by the Lark parser (aidl_lang/parser.py), and the statement trees must be
+the same: the same statements, of the same kinds, nested the same way (bodies of templates,
+structures, loops, ifs and their else parts), each with the same span (line and column of its
+start and end). And no tree has an ERROR or MISSING node.
+
+Also: the generated files (highlights.scm, the corpora) are fresh, the highlight query
+compiles and colours the registry's names as the TextMate grammar does, errors are recovered
+from (the statements after a bad line are still found), and ``tree-sitter test`` passes where
+the CLI is installed (skipped without it; .ci/run installs it and runs the skipped tests again).
+"""
+from __future__ import annotations
+
+import importlib.util
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import tree_sitter
+
+from aidl_lang import ast as A
+from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.parser import parse
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _generator():
+    """editors/gen_tree_sitter.py (the build of the grammar, the docs blocks, the generated
+    files), loaded from its path: editors/ is not a package."""
+    spec = importlib.util.spec_from_file_location(
+        "gen_tree_sitter", ROOT / "editors" / "gen_tree_sitter.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules.setdefault("gen_tree_sitter", module)
+    spec.loader.exec_module(module)
+    return module
+
+
+G = _generator()
+
+TS = ROOT / "editors" / "tree-sitter"
+SKIP_DIRS = {".git", "node_modules", "build", "dist", "__pycache__"}
+
+
+def _aidl_files() -> list[Path]:
+    """Every .aidl file of the repository (once each: aidl_lang/examples is a link)."""
+    seen, out = set(), []
+    for p in sorted(ROOT.rglob("*.aidl")):
+        parts = p.relative_to(ROOT).parts
+        if any(x in SKIP_DIRS or x.startswith(".venv") for x in parts):
+            continue
+        r = p.resolve()
+        if r not in seen:
+            seen.add(r)
+            out.append(p)
+    return out
+
+
+def _docs_blocks() -> list[tuple[str, str]]:
+    return [(f"{md.relative_to(ROOT)}:{line}", text)
+            for md in G.DOCS for line, text in G.docs_blocks(md)]
+
+
+@pytest.fixture(scope="module")
+def lang():
+    if G.c_compiler() is None:
+        pytest.skip("no C compiler (cc, gcc or clang): the parser is built from src/parser.c")
+    return G.language()
+
+
+@pytest.fixture(scope="module")
+def parser(lang):
+    return tree_sitter.Parser(lang)
+
+
+# ------------------------------------------------------------------ the statement trees
+LARK_KIND = {A.Block: "block", A.UnitsDecl: "units", A.ThicknessDecl: "thickness",
+             A.KerfDecl: "kerf", A.MinWallDecl: "min_wall", A.Import: "import",
+             A.ParamDecl: "param", A.Def: "def", A.StructDecl: "struct", A.Assign: "assign",
+             A.KindAssign: "kind_assign", A.For: "for", A.If: "if", A.ExprStmt: "expr",
+             A.Assert: "assert"}
+TS_KIND = {"block": "block", "units_declaration": "units",
+           "thickness_declaration": "thickness", "kerf_declaration": "kerf",
+           "min_wall_declaration": "min_wall", "import_declaration": "import",
+           "param_declaration": "param", "function_definition": "def",
+           "template_definition": "def", "structure_declaration": "struct",
+           "assignment": "assign", "kind_assignment": "kind_assign", "for_statement": "for",
+           "if_statement": "if", "elif_clause": "if", "expression_statement": "expr",
+           "assert_statement": "assert"}
+
+
+def lark_tree(stmts) -> list:
+    """``[(kind, (line, col, end_line, end_col), [nested statement lists]), ...]``."""
+    out = []
+    for s in stmts:
+        sp = s.span
+        nested = []
+        if isinstance(s, A.Block):
+            nested = [lark_tree(s.stmts)]
+        elif isinstance(s, (A.Def, A.StructDecl, A.For)):
+            nested = [lark_tree(s.body.stmts)]
+        elif isinstance(s, A.If):
+            nested = [lark_tree(s.body.stmts)]
+            if s.orelse is not None:
+                nested.append(lark_tree(s.orelse.stmts))
+        out.append((LARK_KIND[type(s)], (sp.line, sp.col, sp.end_line, sp.end_col), nested))
+    return out
+
+
+class _Columns:
+    """tree-sitter's (row, byte column) points as Lark's 1-based line and character column."""
+
+    def __init__(self, source: str):
+        self.lines = source.encode("utf-8").split(b"\n")
+
+    def __call__(self, point) -> tuple[int, int]:
+        row, col = point
+        return row + 1, len(self.lines[row][:col].decode("utf-8")) + 1
+
+
+def ts_tree(node, cols: _Columns) -> list:
+    return [ts_statement(c, cols) for c in node.named_children if c.type in TS_KIND]
+
+
+def ts_statement(n, cols: _Columns):
+    kind = TS_KIND[n.type]
+    start = n.start_point
+    if n.type == "block":
+        nested = [ts_tree(n, cols)]
+    elif kind in ("def", "struct", "for"):
+        nested = [ts_tree(n.child_by_field_name("body"), cols)]
+    elif kind == "if":
+        if n.type == "elif_clause":         # Lark's elif statement starts at its condition
+            start = n.child_by_field_name("condition").start_point
+        nested = [ts_tree(n.child_by_field_name("consequence"), cols)]
+        alt = n.child_by_field_name("alternative")
+        if alt is not None:
+            body = alt.child_by_field_name("body") if alt.type == "else_clause" else alt
+            nested.append(ts_tree(body, cols) if body.type == "block"
+                          else [ts_statement(body, cols)])
+    else:
+        nested = []
+    return kind, (*cols(start), *cols(n.end_point)), nested
+
+
+def _first_difference(a, b, path="") -> str:
+    for i, (x, y) in enumerate(zip(a, b)):
+        if x[:2] != y[:2]:
+            return f"{path}statement {i + 1}: Lark {x[:2]}, tree-sitter {y[:2]}"
+        for j, (u, v) in enumerate(zip(x[2], y[2])):
+            d = _first_difference(u, v, f"{path}statement {i + 1} ({x[0]}) body {j + 1}: ")
+            if d:
+                return d
+        if len(x[2]) != len(y[2]):
+            return f"{path}statement {i + 1} ({x[0]}): {len(x[2])} vs {len(y[2])} bodies"
+    if len(a) != len(b):
+        return f"{path}Lark has {len(a)} statements, tree-sitter {len(b)}"
+    return ""
+
+
+def _compare(parser, title: str, source: str) -> str:
+    """'' when both parsers agree on ``source`` (and tree-sitter finds no error), else why."""
+    sink = DiagnosticSink()
+    prog = parse(source, title, sink)
+    errors = [d for d in sink.items if d.severity == "error"]
+    assert not errors, f"{title}: the Lark parser rejects it: {errors[0].message}"
+    tree = parser.parse(source.encode("utf-8"))
+    if tree.root_node.has_error:
+        bad = _first_error(tree.root_node)
+        return f"{title}: an ERROR or MISSING node at line {bad[0] + 1}, column {bad[1] + 1}"
+    cols = _Columns(source)
+    diff = _first_difference(lark_tree(prog.stmts), ts_tree(tree.root_node, cols))
+    return f"{title}: {diff}" if diff else ""
+
+
+def _first_error(node):
+    if node.is_error or node.is_missing:
+        return node.start_point
+    for c in node.children:
+        if c.has_error or c.is_missing:
+            return _first_error(c)
+    return node.start_point
+
+
+def _count(items) -> int:
+    return sum(1 + sum(_count(b) for b in nested) for _, _, nested in items)
+
+
+def test_every_aidl_file_has_the_statement_tree_of_the_lark_parse(parser):
+    files = _aidl_files()
+    assert len(files) >= 200, [str(f) for f in files[:5]]
+    assert any(f.parent.name == "stdlib" for f in files)
+    failures = [m for f in files
+                if (m := _compare(parser, str(f.relative_to(ROOT)),
+                                  f.read_text(encoding="utf-8")))]
+    assert not failures, f"{len(failures)} of {len(files)} files differ:\n" + "\n".join(failures)
+
+
+def test_every_docs_example_has_the_statement_tree_of_the_lark_parse(parser):
+    blocks = _docs_blocks()
+    assert len(blocks) >= 50
+    failures = [m for title, text in blocks if (m := _compare(parser, title, text))]
+    assert not failures, f"{len(failures)} of {len(blocks)} blocks differ:\n" + "\n".join(failures)
+
+
+def test_the_trees_are_compared_statement_by_statement(parser):
+    """The comparison sees nesting, kinds and spans (a wrong span or a lost else fails)."""
+    src = ("units mm\nparam w = 40 mm, min=10\nimport \"std/shapes.aidl\" as s\n"
+           "def tab(d=3) -> hole { c = Circle(center=(0, 0), radius=d) }\n"
+           "solid plate {\n  thickness 3 mm\n  kerf 0.1 mm\n  thickness = 2\n"
+           "  hole h = tab(2)\n  for i in range(3) { c = Circle(center=(i, 0), radius=1) }\n"
+           "  if w > 30 { x = 1 }\n  elif w > 20 { x = 2 }\n  else if w > 10 { x = 3 }\n"
+           "  else { x = 4 }\n  assert w > 0, \"positive\"\n  { y = 1 }\n"
+           "  n = w // 2  // half the width\n  z = f\"{w:.1f} mm\"\n}\n")
+    sink = DiagnosticSink()
+    lark = lark_tree(parse(src, "t.aidl", sink).stmts)
+    assert not sink.items
+    tree = parser.parse(src.encode())
+    assert not tree.root_node.has_error
+    mine = ts_tree(tree.root_node, _Columns(src))
+    assert mine == lark
+    kinds = [k for k, _, _ in lark]
+    assert kinds == ["units", "param", "import", "def", "struct"]
+    body = lark[4][2][0]
+    assert [k for k, _, _ in body] == ["thickness", "kerf", "assign", "kind_assign", "for",
+                                       "if", "assert", "block", "assign", "assign"]
+    # the if's else holds the elif (starting at its condition, as Lark's), which holds the
+    # else-if, which holds the last else
+    if_ = body[5]
+    assert if_[1] == (11, 3, 14, 17)
+    elif_ = if_[2][1][0]
+    assert elif_[0] == "if" and elif_[1][:2] == (12, 8)
+    assert _count(lark) == 24
+    moved = [(k, (sp[0], sp[1] + 1, sp[2], sp[3]), n) for k, sp, n in mine]
+    assert _first_difference(lark, moved).startswith("statement 1: Lark ('units', (1, 1,")
+
+
+def test_non_ascii_columns_are_characters_as_lark_counts_them(parser):
+    src = 'x = "é°ü"; y = 90°\n# ünïcode\nsolid s { t = Text("Ωmega", size=3) }\n'
+    assert _compare(parser, "t.aidl", src) == ""
+
+
+# ------------------------------------------------------------------ what the scanner decides
+@pytest.mark.parametrize("src, division", [
+    ("n = w // 2\n", True),
+    ("n = w // 2  # half\n", True),
+    ("c = Circle(center=(0, 0), radius=n//2 * 0.1)\n", True),
+    ("x = (w\n  // 2)\n", True),                       # inside brackets, across a line
+    ("x = 5  // half the width\n", False),             # prose: two words side by side
+    ("x = w  // ≈ the width\n", False),                # a character no expression uses
+    ("x = w  //\n", False),                            # nothing after it
+    ("x = w\n// 2\n", False),                          # at the start of a line
+    ("// w // 2\nx = 1\n", False),
+    ("x = w // n if n else 1\n", True),                # keywords are not prose
+    ('s = f"a//b{w // 2}"\n', True),                   # in an f-string: text, then division
+])
+def test_floor_division_and_slash_comments_are_told_apart_as_lark_does(parser, src, division):
+    sink = DiagnosticSink()
+    parse(src, "t.aidl", sink)
+    assert not [d for d in sink.items if d.severity == "error"]
+    tree = parser.parse(src.encode())
+    assert not tree.root_node.has_error, str(tree.root_node)
+    text = str(tree.root_node)
+    assert ('operator: "//"' in text or "operator: (//)" in text
+            or _has_floor_div(tree.root_node)) == division, text
+    assert _compare(parser, "t.aidl", src) == ""
+
+
+def _has_floor_div(node) -> bool:
+    if node.type == "//":
+        return True
+    return any(_has_floor_div(c) for c in node.children)
+
+
+def test_a_newline_before_else_continues_the_if(parser):
+    src = "if a {\n  x = 1\n}\n# why\n\nelse {\n  x = 2\n}\nelsewhere = 3\n"
+    tree = parser.parse(src.encode())
+    assert not tree.root_node.has_error
+    kinds = [c.type for c in tree.root_node.named_children]
+    assert kinds == ["if_statement", "assignment"]
+    if_ = tree.root_node.named_children[0]
+    assert [c.type for c in if_.named_children] == ["identifier", "block", "comment",
+                                                      "else_clause"]
+    assert _compare(parser, "t.aidl", src) == ""
+
+
+# ------------------------------------------------------------------ errors are recovered from
+@pytest.mark.parametrize("src, after", [
+    ("solid a {\n  x = = 1\n  y = 2\n}\nsolid b { z = 3 }\n", "b"),
+    ("solid a {\n  c = Circle(center=(0, 0), radius=\n}\nsolid b { z = 3 }\n", "b"),
+    ("x = 1 +* 2\nsolid b { z = 3 }\n", "b"),
+])
+def test_after_a_syntax_error_the_next_structure_is_still_found(parser, src, after):
+    sink = DiagnosticSink()
+    parse(src, "t.aidl", sink)
+    assert [d for d in sink.items if d.severity == "error"], "Lark accepts it"
+    tree = parser.parse(src.encode())
+    assert tree.root_node.has_error
+    names = [c.child_by_field_name("name").text.decode()
+             for c in tree.root_node.named_children if c.type == "structure_declaration"]
+    assert after in names, str(tree.root_node)
+
+
+# ------------------------------------------------------------------ generated files, queries
+def test_generated_highlights_and_corpora_are_fresh(lang):
+    assert (TS / "queries" / "highlights.scm").read_text(encoding="utf-8") == G.highlights_scm(), \
+        "run `python editors/gen_tree_sitter.py` and commit the result"
+    for path, text in G.corpora(lang).items():
+        assert path.exists() and path.read_text(encoding="utf-8") == text, \
+            f"{path.relative_to(ROOT)} is stale: run `python editors/gen_tree_sitter.py`"
+
+
+def test_the_grammar_s_units_are_the_lark_grammar_s_and_the_registry_s():
+    from aidl_lang import registry as R
+    from aidl_lang.parser import GRAMMAR
+
+    lark = re.search(r"NUMBER[^\n]*\(mm\|([^)]*)\)", GRAMMAR.read_text()).group(0)
+    lark_units = set(re.search(r"\((mm\|[^)]*)\)", lark).group(1).split("|")) | {"°"}
+    js = (TS / "grammar.js").read_text(encoding="utf-8")
+    ts_units = set(re.findall(r"'([^']+)'", re.search(r"const UNITS = \[(.*?)\]", js).group(1)))
+    assert ts_units == lark_units
+    assert set(R.UNITS_LENGTH) | set(R.UNITS_ANGLE) <= ts_units
+
+
+def test_highlights_colour_the_registry_s_names_as_the_textmate_grammar_does(lang, parser):
+    query = tree_sitter.Query(lang, (TS / "queries" / "highlights.scm").read_text())
+    src = ("units mm\nparam w = 40 mm, min=10\n"
+           "solid plate {\n  body = Rectangle(center=(0, 0), width=w, height=pi)\n"
+           "  Coincident(body.center, self.center)\n  n = floor(w / 3) + helper(2)\n"
+           "  hole h = tab(2)\n  a = 90°\n}\n")
+    tree = parser.parse(src.encode())
+    caps = tree_sitter.QueryCursor(query).captures(tree.root_node)
+    # the Python package does not apply #not-any-of? (Neovim, Helix, Zed and the CLI do):
+    # applied here, from the query's own list
+    text = (TS / "queries" / "highlights.scm").read_text()
+    block = re.search(r"\(#not-any-of\? @function\.call\n(.*?)\)\)", text, re.S)
+    unlisted = set(re.findall(r'"([^"]+)"', block.group(1)))
+    assert {"Rectangle", "Coincident", "floor", "solid", "pi"} <= unlisted
+    caps["function.call"] = [n for n in caps.get("function.call", [])
+                             if n.text.decode() not in unlisted]
+    seen: dict[str, set[str]] = {}
+    for name, nodes in caps.items():
+        for n in nodes:
+            seen.setdefault(n.text.decode(), set()).add(name)
+    assert seen["solid"] == {"keyword.type"} and seen["hole"] == {"keyword.type"}
+    assert seen["plate"] == {"type.definition"}
+    assert seen["Rectangle"] == {"type.builtin"}
+    assert seen["Coincident"] == {"function.builtin"}
+    assert seen["floor"] == {"function.builtin"}
+    assert seen["helper"] == {"function.call"} and seen["tab"] == {"function.call"}
+    assert seen["pi"] == {"constant.builtin"} and seen["self"] == {"variable.builtin"}
+    assert seen["w"] >= {"constant"}                      # the param's name
+    assert seen["mm"] == {"keyword"} and seen["°"] == {"keyword"}
+    assert seen["40 mm"] == {"number"}
+    assert seen["units"] == {"keyword"} and seen["param"] == {"keyword"}
+    assert seen["min"] == {"variable.parameter"} and seen["width"] == {"variable.parameter"}
+    assert seen["center"] == {"property", "variable.parameter"}   # .center, center=
+    # no node has two captures (first-wins and last-wins editors agree)
+    per_node: dict[tuple, set] = {}
+    for name, nodes in caps.items():
+        for n in nodes:
+            per_node.setdefault((n.start_byte, n.end_byte, n.type), set()).add(name)
+    assert all(len(v) == 1 for v in per_node.values()), \
+        {k: v for k, v in per_node.items() if len(v) > 1}
+
+
+def _cli() -> str | None:
+    found = shutil.which("tree-sitter")
+    if found:
+        return found
+    cargo = Path(os.environ.get("CARGO_HOME", Path.home() / ".cargo")) / "bin" / "tree-sitter"
+    return str(cargo) if cargo.exists() else None
+
+
+def test_tree_sitter_test_passes_on_the_corpora(tmp_path):
+    cli = _cli()
+    if cli is None:
+        pytest.skip("the tree-sitter CLI is not installed (cargo install tree-sitter-cli; "
+                    ".ci/run installs it and runs this again)")
+    if G.c_compiler() is None:
+        pytest.skip("no C compiler for the tree-sitter CLI to build the parser with")
+    env = {**os.environ, "TREE_SITTER_DIR": str(tmp_path / "config"),
+           "TREE_SITTER_LIBDIR": str(tmp_path / "lib")}
+    r = subprocess.run([cli, "test"], cwd=TS, capture_output=True, text=True, timeout=900,
+                       env=env)
+    out = r.stdout + r.stderr
+    assert r.returncode == 0, out[-4000:]
+    m = re.search(r"Total parses: (\d+); successful parses: (\d+); failed parses: (\d+)", out)
+    assert m and int(m.group(3)) == 0 and int(m.group(1)) >= 100, out[-2000:]
