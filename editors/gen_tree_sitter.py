@@ -14,7 +14,10 @@ Writes
   committed parser gives it. A source that parses with an ERROR or MISSING node stops the
   script: the grammar is what must change, not the corpus. A docs block meant to show a syntax
   error (the Lark parser rejects it: ``<!-- expect: E0001 -->``) goes to ``docs-errors.txt``
-  with the ``:error`` attribute instead (the test then asks for an ERROR node).
+  with the ``:error`` attribute instead (the test then asks for an ERROR node);
+- ``editors/tree-sitter/test/corpus/errors.txt``: the error-recovery cases of
+  :data:`ERROR_CASES` (sources the Lark parser rejects) with the trees the parser gives them,
+  each holding an ERROR node and the statements around it.
 
 ``--check`` writes nothing and exits 1 if a committed file is out of date. The parser itself
 (``src/``) is ``tree-sitter generate``'s, run in ``editors/tree-sitter`` after ``grammar.js``
@@ -48,8 +51,29 @@ HIGHLIGHTS = TS / "queries" / "highlights.scm"
 CORPUS = TS / "test" / "corpus"
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")),
         *sorted((ROOT / "docs" / "dev").glob("*.md"))]
-# the corpus files written here (others in test/corpus, errors.txt, are written by hand)
-GENERATED_GROUPS = ("examples", "stdlib", "docs", "docs-errors")
+# the corpus files written here (test/corpus holds no other)
+GENERATED_GROUPS = ("examples", "stdlib", "docs", "docs-errors", "errors")
+
+# error recovery: sources the Lark parser rejects, with what the tree keeps around the error
+# (written to errors.txt with the trees the parser gives; each must hold an ERROR node)
+ERROR_CASES = [
+    ("a stray `=`: the ERROR is inside the assignment; the next statement and structure parse",
+     "solid a {\n    x = = 1\n    y = 2\n}\nsolid b { z = 3 }\n"),
+    ("a call left open at the end of a line: the next structure parses",
+     "solid a {\n    c = Circle(center=(0, 0), radius=\n}\nsolid b { z = 3 }\n"),
+    ("a block never closed: the statements after its opening still parse",
+     "solid a {\n    r = Rectangle(width=10, height=5)\nsolid b { z = 3 }\n"),
+    ("two operators in a row: the ERROR is the second; the next top-level statement parses",
+     "param w = 40 mm\nx = 1 +* 2\nunits mm\n"),
+    ("an unclosed string: the next line parses",
+     "solid a {\n    s = \"unclosed\n    t = 2\n}\n"),
+    ("a stray `}`: the structures before and after it parse",
+     "solid a {\n    x = 1 }\n}\nsolid b { }\n"),
+    ("a top-level-only statement inside a block: the block's other statements parse",
+     "solid a {\n    units mm\n    x = 1\n}\n"),
+    ("a missing operand before a newline inside brackets: the closing bracket is found",
+     "solid a {\n    c = Circle(center=(0, 0),\n               radius= )\n    d = 2\n}\n"),
+]
 
 # the grammar's declaration words that are not quoted in grammar/aidl.lark (%declare'd
 # terminals the post-lexer makes of a NAME at the start of a statement)
@@ -144,13 +168,13 @@ def corpus_sources() -> dict[str, list[tuple[str, str]]]:
 
 
 def lark_syntax_errors(source: str, path: str = "<corpus>") -> list:
-    """The syntax errors (E00xx) the Lark parser (aidl_lang/parser.py) reports for ``source``."""
+    """The errors the Lark parser (aidl_lang/parser.py, the parse alone) reports for ``source``."""
     from aidl_lang.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
 
     sink = DiagnosticSink()
     parse(source, path, sink)
-    return [d for d in sink.items if d.severity == "error" and d.code.startswith("E00")]
+    return [d for d in sink.items if d.severity == "error"]
 
 
 # ------------------------------------------------------------------ the corpora
@@ -159,6 +183,12 @@ def sexp(node, field: str | None = None, depth: int = 0) -> str:
     head = "  " * depth + (f"{field}: " if field else "") + "(" + node.type
     if node.is_missing:
         return "  " * depth + (f"{field}: " if field else "") + f"(MISSING {node.type})"
+    if node.type == "ERROR" and node.child_count == 0 and node.text:
+        # an error leaf: the character no token starts with, as the CLI writes it
+        c = node.text.decode("utf-8", "replace")[0]
+        shown = {"\n": "\\n", "\t": "\\t", "\r": "\\r"}.get(c) or (
+            c if c.isascii() and c.isprintable() else f"\\u{ord(c)}")
+        return "  " * depth + (f"{field}: " if field else "") + f"(UNEXPECTED '{shown}')"
     kids = [(c, node.field_name_for_child(i)) for i, c in enumerate(node.children) if c.is_named]
     if not kids:
         return head + ")"
@@ -178,8 +208,8 @@ def corpus_entry(title: str, source: str, tree: str | None, error: bool = False)
     any ``===``/``---`` line of a source (the CLI takes the longest divider)."""
     attrs = ":error\n" if error else ""
     body = source if source.endswith("\n") else source + "\n"
-    out = f"{HEADER}\n{title}\n{attrs}{HEADER}\n\n{body}\n{DIVIDER}\n\n"
-    return out + (tree + "\n" if tree is not None else "")
+    out = f"{HEADER}\n{title}\n{attrs}{HEADER}\n\n{body}\n{DIVIDER}\n"
+    return out + (f"\n{tree}\n" if tree is not None else "")
 
 
 def corpora(lang=None) -> dict[Path, str]:
@@ -202,9 +232,16 @@ def corpora(lang=None) -> dict[Path, str]:
                 bad.append(title)
                 continue
             texts[group].append(corpus_entry(title, source, sexp(tree.root_node)))
+    for title, source in ERROR_CASES:
+        tree = parser.parse(source.encode("utf-8"))
+        assert tree.root_node.has_error, f"error case {title!r} parses without an error"
+        assert lark_syntax_errors(source, title), f"the Lark parser accepts {title!r}"
+        texts["errors"].append(corpus_entry(f"error recovery: {title}", source,
+                                            sexp(tree.root_node)))
     if bad:
         raise ValueError("these parse with an ERROR or MISSING node: " + ", ".join(bad))
-    return {CORPUS / f"{g}.txt": "".join(t) for g, t in texts.items() if t}
+    # the CLI (tree-sitter test --update) writes a blank line between entries
+    return {CORPUS / f"{g}.txt": "\n".join(t) for g, t in texts.items() if t}
 
 
 # ------------------------------------------------------------------ highlights.scm
@@ -355,9 +392,9 @@ def main(argv) -> int:
         targets += sorted(corpora().items())
     stale = write_or_check(targets, argv, Path(__file__).name)
     if "--check" in argv:
-        known = {p for p, _ in targets} | {CORPUS / "errors.txt"}
+        known = {p for p, _ in targets}
         for extra in sorted(set(CORPUS.glob("*.txt")) - known):
-            print(f"{extra.relative_to(ROOT)} is not made by this script nor errors.txt")
+            print(f"{extra.relative_to(ROOT)} is not made by this script: remove it")
             stale = 1
     return stale
 
