@@ -280,6 +280,18 @@ def _has_floor_div(node) -> bool:
     return any(_has_floor_div(c) for c in node.children)
 
 
+@pytest.mark.parametrize("src", [
+    "x = f(1)\n/* old */ y = 2\n",                     # a statement after a block comment
+    "x = f(1)\n/* old */\n(y)\n",                      # a comment on its own line
+    "if a { x = 1 }\n/* then */ else { x = 2 }\n",      # else after it
+    "if a { x = 1 }\n/* then */ elsewhere = 2\n",       # a name that starts like else
+    "x = [1,\n  /* two */ 2]\n",                       # inside brackets: no newline
+])
+def test_block_comments_first_on_a_line_end_the_statement_before_as_lark_reads_them(parser,
+                                                                                    src):
+    assert _compare(parser, "t.aidl", src) == ""
+
+
 def test_a_newline_before_else_continues_the_if(parser):
     src = "if a {\n  x = 1\n}\n# why\n\nelse {\n  x = 2\n}\nelsewhere = 3\n"
     tree = parser.parse(src.encode())

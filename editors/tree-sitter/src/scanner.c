@@ -7,7 +7,7 @@
  *   for a run of blank lines; none before `else`/`elif` (the post-lexer drops those), so
  *   `}` NEWLINE `else {` continues the `if`. The token is empty: the line breaks before it
  *   are its padding, so a comment between them keeps its place;
- * - comments: `# ...`, `/* ... * /`, and `// ...` where `//` is not floor division;
+ * - comments: `# ...`, block comments (slash-star to star-slash), and `// ...` where `//` is not floor division;
  * - `//`: floor division when the parser is after an operand (FLOOR_DIV is valid) and not at
  *   the start of a statement line, unless the rest of the line reads as prose (two words side
  *   by side that are not keywords, or a character no expression uses) -- the rule of
@@ -199,6 +199,23 @@ static bool word_is(TSLexer *lexer, const char *word) {
   return !is_word(lexer->lookahead);
 }
 
+/* Whether the lookahead is the word `else` or `elif` (consumes what it reads). */
+static bool is_else(TSLexer *lexer) {
+  if (lexer->lookahead != 'e') return false;
+  advance(lexer);
+  if (lexer->lookahead != 'l') return false;
+  advance(lexer);
+  if (lexer->lookahead == 's') {
+    advance(lexer);
+    return word_is(lexer, "e");
+  }
+  if (lexer->lookahead == 'i') {
+    advance(lexer);
+    return word_is(lexer, "f");
+  }
+  return false;
+}
+
 bool tree_sitter_aidl_external_scanner_scan(void *payload, TSLexer *lexer,
                                             const bool *valid_symbols) {
   (void)payload;
@@ -251,6 +268,26 @@ bool tree_sitter_aidl_external_scanner_scan(void *payload, TSLexer *lexer,
         }
         advance(lexer);
       }
+      if (newline) {
+        /* a block comment first on a line after a statement: when code follows it on that
+         * line, the statement before ended (the empty NEWLINE before the comment), unless
+         * the code is `else`/`elif`, which continues an `if` */
+        while (lexer->lookahead == ' ' || lexer->lookahead == '\t' || lexer->lookahead == '\r' ||
+               lexer->lookahead == '\f')
+          advance(lexer);
+        int32_t c = lexer->lookahead;
+        if (!(lexer->eof(lexer) || c == '\n' || c == '#' || c == '/' || c == 'e')) {
+          lexer->result_symbol = NEWLINE;
+          return true;
+        }
+        lexer->mark_end(lexer);
+        lexer->result_symbol = COMMENT;
+        if (c == 'e' && !is_else(lexer)) {
+          /* a block comment, then `elsewhere = 1`: the comment goes inside the NEWLINE */
+          lexer->result_symbol = NEWLINE;
+        }
+        return true;
+      }
       lexer->mark_end(lexer);
       lexer->result_symbol = COMMENT;
       return true;
@@ -285,19 +322,7 @@ bool tree_sitter_aidl_external_scanner_scan(void *payload, TSLexer *lexer,
 
   if (newline) {
     /* the (empty) token ends before the next line's first word */
-    if (lexer->lookahead == 'e') {
-      advance(lexer);
-      if (lexer->lookahead == 'l') {
-        advance(lexer);
-        if (lexer->lookahead == 's') {
-          advance(lexer);
-          if (word_is(lexer, "e")) return false;
-        } else if (lexer->lookahead == 'i') {
-          advance(lexer);
-          if (word_is(lexer, "f")) return false;
-        }
-      }
-    }
+    if (is_else(lexer)) return false;
     lexer->result_symbol = NEWLINE;
     return true;
   }
