@@ -292,6 +292,16 @@ def test_block_comments_first_on_a_line_end_the_statement_before_as_lark_reads_t
     assert _compare(parser, "t.aidl", src) == ""
 
 
+@pytest.mark.parametrize("src", [
+    "thickness 3 mm\nkerf -0.1\nmin_wall w\n",       # declarations: a number, a sign, a name
+    "thickness = 3\nkerf = thickness * 2\n",          # names: assigned, read
+    "thickness\n3 mm\n",                              # alone on its line: a name (Lark's too)
+    "kerf # the default\nsolid s { min_wall }\n",
+])
+def test_thickness_kerf_and_min_wall_are_statements_or_names_as_lark_reads_them(parser, src):
+    assert _compare(parser, "t.aidl", src) == ""
+
+
 def test_a_newline_before_else_continues_the_if(parser):
     src = "if a {\n  x = 1\n}\n# why\n\nelse {\n  x = 2\n}\nelsewhere = 3\n"
     tree = parser.parse(src.encode())

@@ -219,7 +219,12 @@ export default grammar({
       optional(seq(',', field('message', $.string))),
     ),
 
-    expression_statement: $ => $._expression,
+    // `thickness` alone on its line is a name, as in the Lark parser (its post-lexer makes a
+    // THICKNESS of it only before a number, a name or a sign)
+    expression_statement: $ => choice(
+      $._expression,
+      alias(choice('thickness', 'kerf', 'min_wall'), $.identifier),
+    ),
 
     block: $ => seq(
       '{',
