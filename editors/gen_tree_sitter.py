@@ -65,7 +65,7 @@ ERROR_CASES = [
      "solid a {\n    r = Rectangle(width=10, height=5)\nsolid b { z = 3 }\n"),
     ("two operators in a row: the ERROR is the second; the next top-level statement parses",
      "param w = 40 mm\nx = 1 +* 2\nunits mm\n"),
-    ("an unclosed string: the next line parses",
+    ("an unclosed string: the ERROR ends at the next line's first name; the block parses",
      "solid a {\n    s = \"unclosed\n    t = 2\n}\n"),
     ("a stray `}`: the structures before and after it parse",
      "solid a {\n    x = 1 }\n}\nsolid b { }\n"),

@@ -302,6 +302,23 @@ def test_thickness_kerf_and_min_wall_are_statements_or_names_as_lark_reads_them(
     assert _compare(parser, "t.aidl", src) == ""
 
 
+def test_strings_hold_their_escapes_and_no_comment(parser):
+    src = 'a = "x # y // z \\" w"\nb = \'it\\\'s\'\nc = f"{a} # {{b}} // \\n"\n'
+    assert _compare(parser, "t.aidl", src) == ""
+    tree = parser.parse(src.encode())
+    kinds = [n.type for n in _walk(tree.root_node)]
+    assert "comment" not in kinds
+    assert kinds.count("escape_sequence") == 3 and kinds.count("interpolation") == 1
+    contents = [n.text.decode() for n in _walk(tree.root_node) if n.type == "string_content"]
+    assert contents == ["x # y // z ", " w", "it", "s", " # {{b}} // "]
+
+
+def _walk(node):
+    yield node
+    for c in node.children:
+        yield from _walk(c)
+
+
 def test_a_newline_before_else_continues_the_if(parser):
     src = "if a {\n  x = 1\n}\n# why\n\nelse {\n  x = 2\n}\nelsewhere = 3\n"
     tree = parser.parse(src.encode())

@@ -65,6 +65,8 @@ export default grammar({
     $._floor_div,
     $._fstring_content_double,
     $._fstring_content_single,
+    $._string_content_double,
+    $._string_content_single,
     $._error_sentinel,
   ],
 
@@ -368,10 +370,19 @@ export default grammar({
 
     unit: _ => choice(...UNITS),
 
-    string: _ => token(choice(
-      /"(\\.|[^"\\\n])*"/,
-      /'(\\.|[^'\\\n])*'/,
-    )),
+    // one line, escapes `\\x` (as the STRING terminal)
+    string: $ => choice(
+      seq(
+        '"',
+        repeat(choice(alias($._string_content_double, $.string_content), $.escape_sequence)),
+        token.immediate('"'),
+      ),
+      seq(
+        "'",
+        repeat(choice(alias($._string_content_single, $.string_content), $.escape_sequence)),
+        token.immediate("'"),
+      ),
+    ),
 
     fstring: $ => choice(
       seq(

@@ -12,7 +12,8 @@
  *   the start of a statement line, unless the rest of the line reads as prose (two words side
  *   by side that are not keywords, or a character no expression uses) -- the rule of
  *   parser.mask_comments and _is_prose, which docs/language.md ("Comments") describes;
- * - the text of an f-string between its quotes and `{...}` interpolations.
+ * - the text of a string between its quotes and escapes, and of an f-string between them and
+ *   its `{...}` interpolations (inside them a `#` or `//` is text, not a comment).
  */
 #include "tree_sitter/parser.h"
 
@@ -26,6 +27,8 @@ enum TokenType {
   FLOOR_DIV,
   FSTRING_CONTENT_DOUBLE,
   FSTRING_CONTENT_SINGLE,
+  STRING_CONTENT_DOUBLE,
+  STRING_CONTENT_SINGLE,
   ERROR_SENTINEL,
 };
 
@@ -162,14 +165,15 @@ static void to_line_end(TSLexer *lexer) {
   while (!lexer->eof(lexer) && lexer->lookahead != '\n') advance(lexer);
 }
 
-/* The text of an f-string up to its closing quote, a `\` escape, a `{` that opens an
- * interpolation (`{{` is text) or the end of the line. */
-static bool scan_fstring_content(TSLexer *lexer, int32_t quote, enum TokenType type) {
+/* The text of a string up to its closing quote, a `\` escape or the end of the line; of an
+ * f-string (`braces`) also up to a `{` that opens an interpolation (`{{` is text). */
+static bool scan_string_content(TSLexer *lexer, int32_t quote, bool braces,
+                                enum TokenType type) {
   bool any = false;
   for (;;) {
     int32_t c = lexer->lookahead;
     if (lexer->eof(lexer) || c == quote || c == '\n' || c == '\\') break;
-    if (c == '{') {
+    if (c == '{' && braces) {
       lexer->mark_end(lexer);
       advance(lexer);
       if (lexer->lookahead != '{') {
@@ -223,9 +227,13 @@ bool tree_sitter_aidl_external_scanner_scan(void *payload, TSLexer *lexer,
 
   if (!recovering) {
     if (valid_symbols[FSTRING_CONTENT_DOUBLE])
-      return scan_fstring_content(lexer, '"', FSTRING_CONTENT_DOUBLE);
+      return scan_string_content(lexer, '"', true, FSTRING_CONTENT_DOUBLE);
     if (valid_symbols[FSTRING_CONTENT_SINGLE])
-      return scan_fstring_content(lexer, '\'', FSTRING_CONTENT_SINGLE);
+      return scan_string_content(lexer, '\'', true, FSTRING_CONTENT_SINGLE);
+    if (valid_symbols[STRING_CONTENT_DOUBLE])
+      return scan_string_content(lexer, '"', false, STRING_CONTENT_DOUBLE);
+    if (valid_symbols[STRING_CONTENT_SINGLE])
+      return scan_string_content(lexer, '\'', false, STRING_CONTENT_SINGLE);
   }
 
   bool crossed = false; /* a line break skipped before the next token */
