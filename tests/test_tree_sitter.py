@@ -434,3 +434,4 @@ def test_tree_sitter_test_passes_on_the_corpora(tmp_path):
     assert r.returncode == 0, out[-4000:]
     m = re.search(r"Total parses: (\d+); successful parses: (\d+); failed parses: (\d+)", out)
     assert m and int(m.group(3)) == 0 and int(m.group(1)) >= 100, out[-2000:]
+    assert "plate.aidl" in out, "the highlight assertions of test/highlight did not run"
