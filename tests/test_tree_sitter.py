@@ -419,6 +419,29 @@ def _cli() -> str | None:
     return str(cargo) if cargo.exists() else None
 
 
+def test_the_parser_is_abi_14_for_neovim_0_10_and_loads(lang):
+    """Neovim 0.10 (tree-sitter 0.22), Emacs 29 and older Helix load parsers of ABI <= 14."""
+    text = (TS / "src" / "parser.c").read_text(encoding="utf-8")
+    assert re.search(r"^#define LANGUAGE_VERSION 14$", text, re.M), \
+        "regenerate with `tree-sitter generate --abi 14` (editors/tree-sitter/README.md)"
+    assert lang.abi_version == 14
+
+
+def test_the_committed_parser_is_generated_from_grammar_js(tmp_path):
+    cli = _cli()
+    if cli is None:
+        pytest.skip("the tree-sitter CLI is not installed (cargo install tree-sitter-cli; "
+                    ".ci/run installs it and runs this again)")
+    out = tmp_path / "src"
+    r = subprocess.run([cli, "generate", "--abi", "14", "-o", str(out)], cwd=TS,
+                       capture_output=True, text=True, timeout=900,
+                       env={**os.environ, "TREE_SITTER_DIR": str(tmp_path / "config")})
+    assert r.returncode == 0, r.stdout + r.stderr
+    for name in ("parser.c", "grammar.json", "node-types.json"):
+        assert (out / name).read_bytes() == (TS / "src" / name).read_bytes(), \
+            f"src/{name} is stale: run `tree-sitter generate --abi 14` in editors/tree-sitter"
+
+
 def test_tree_sitter_test_passes_on_the_corpora(tmp_path):
     cli = _cli()
     if cli is None:

@@ -6,7 +6,7 @@
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #endif
 
-#define LANGUAGE_VERSION 15
+#define LANGUAGE_VERSION 14
 #define STATE_COUNT 310
 #define LARGE_STATE_COUNT 3
 #define SYMBOL_COUNT 133
@@ -17,7 +17,7 @@
 #define MAX_ALIAS_SEQUENCE_LENGTH 9
 #define MAX_RESERVED_WORD_SET_SIZE 0
 #define PRODUCTION_ID_COUNT 35
-#define SUPERTYPE_COUNT 1
+#define SUPERTYPE_COUNT 0
 
 enum ts_symbol_identifiers {
   sym_identifier = 1,
@@ -1492,35 +1492,6 @@ static const TSStateId ts_primary_state_ids[STATE_COUNT] = {
   [309] = 292,
 };
 
-static const TSSymbol ts_supertype_symbols[SUPERTYPE_COUNT] = {
-  sym__expression,
-};
-
-static const TSMapSlice ts_supertype_map_slices[] = {
-  [sym__expression] = {.index = 0, .length = 17},
-};
-
-static const TSSymbol ts_supertype_map_entries[] = {
-  [0] =
-    sym_attribute,
-    sym_binary_expression,
-    sym_boolean_operator,
-    sym_call,
-    sym_comparison_operator,
-    sym_conditional_expression,
-    sym_fstring,
-    sym_identifier,
-    sym_list,
-    sym_list_comprehension,
-    sym_not_operator,
-    sym_number,
-    sym_parenthesized_expression,
-    sym_string,
-    sym_subscript,
-    sym_tuple,
-    sym_unary_expression,
-};
-
 static bool ts_lex(TSLexer *lexer, TSStateId state) {
   START_LEXER();
   eof = lexer->eof(lexer);
@@ -2206,7 +2177,7 @@ static bool ts_lex_keywords(TSLexer *lexer, TSStateId state) {
   }
 }
 
-static const TSLexerMode ts_lex_modes[STATE_COUNT] = {
+static const TSLexMode ts_lex_modes[STATE_COUNT] = {
   [0] = {.lex_state = 0, .external_lex_state = 1},
   [1] = {.lex_state = 15, .external_lex_state = 2},
   [2] = {.lex_state = 15, .external_lex_state = 2},
@@ -12618,7 +12589,6 @@ TS_PUBLIC const TSLanguage *tree_sitter_aidl(void) {
     .state_count = STATE_COUNT,
     .large_state_count = LARGE_STATE_COUNT,
     .production_id_count = PRODUCTION_ID_COUNT,
-    .supertype_count = SUPERTYPE_COUNT,
     .field_count = FIELD_COUNT,
     .max_alias_sequence_length = MAX_ALIAS_SEQUENCE_LENGTH,
     .parse_table = &ts_parse_table[0][0],
@@ -12629,9 +12599,6 @@ TS_PUBLIC const TSLanguage *tree_sitter_aidl(void) {
     .field_names = ts_field_names,
     .field_map_slices = ts_field_map_slices,
     .field_map_entries = ts_field_map_entries,
-    .supertype_map_slices = ts_supertype_map_slices,
-    .supertype_map_entries = ts_supertype_map_entries,
-    .supertype_symbols = ts_supertype_symbols,
     .symbol_metadata = ts_symbol_metadata,
     .public_symbol_map = ts_symbol_map,
     .alias_map = ts_non_terminal_alias_map,
@@ -12650,13 +12617,6 @@ TS_PUBLIC const TSLanguage *tree_sitter_aidl(void) {
       tree_sitter_aidl_external_scanner_deserialize,
     },
     .primary_state_ids = ts_primary_state_ids,
-    .name = "aidl",
-    .max_reserved_word_set_size = 0,
-    .metadata = {
-      .major_version = 0,
-      .minor_version = 1,
-      .patch_version = 0,
-    },
   };
   return &language;
 }
