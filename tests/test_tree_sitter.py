@@ -357,6 +357,19 @@ def test_generated_highlights_and_corpora_are_fresh(lang):
             f"{path.relative_to(ROOT)} is stale: run `python editors/gen_tree_sitter.py`"
 
 
+def test_highlights_name_every_word_of_the_registry():
+    from aidl_lang import registry as R
+    from aidl_lang.editor.highlight import vocabulary
+
+    text = (TS / "queries" / "highlights.scm").read_text(encoding="utf-8")
+    quoted = set(re.findall(r'"([^"\s]+)"', text))
+    words = set(R.ENTRIES) | set(R.SYNONYMS) | set(R.FUNCTIONS) | set(R.CONSTANTS) | set(
+        R.STRUCTURE_KINDS) | set(R.KEYWORDS)
+    assert words <= quoted, sorted(words - quoted)
+    for category in ("primitives", "constraints", "functions", "constants", "structure_kinds"):
+        assert set(vocabulary()[category]) <= quoted, category
+
+
 def test_the_grammar_s_units_are_the_lark_grammar_s_and_the_registry_s():
     from aidl_lang import registry as R
     from aidl_lang.parser import GRAMMAR
