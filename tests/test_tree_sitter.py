@@ -194,6 +194,224 @@ def _count(items) -> int:
     return sum(1 + sum(_count(b) for b in nested) for _, _, nested in items)
 
 
+# ------------------------------------------------------------------ the expression trees
+def _span(n) -> tuple:
+    return n.span.line, n.span.col, n.span.end_line, n.span.end_col
+
+
+def lark_expr(e, spans: bool = True):
+    """An expression of the Lark AST as nested tuples: kind, operators, operands, span (an
+    f-string's parts carry the string's span in the AST, so theirs are left out)."""
+    S = _span if spans else (lambda n: None)
+
+    def r(x):
+        return lark_expr(x, spans)
+    if isinstance(e, A.Num):
+        return "num", e.unit, S(e)
+    if isinstance(e, A.Str):
+        return "str", S(e)
+    if isinstance(e, A.FStr):
+        return "fstr", S(e), [lark_expr(p[0], False) for p in e.parts if isinstance(p, tuple)]
+    if isinstance(e, A.Name):
+        return "name", e.id, S(e)
+    if isinstance(e, A.Call):
+        return ("call", r(e.func), [r(a) for a in e.args],
+                [(k.name, r(k.value)) for k in e.kwargs], S(e))
+    if isinstance(e, A.Member):
+        return "member", r(e.obj), e.name, S(e)
+    if isinstance(e, A.Index):
+        return "index", r(e.obj), r(e.index), S(e)
+    if isinstance(e, (A.BinOp, A.BoolOp)):
+        return "op", e.op, r(e.left), r(e.right), S(e)
+    if isinstance(e, A.Compare):
+        return "compare", e.ops, [r(x) for x in e.operands], S(e)
+    if isinstance(e, (A.Not, A.Neg)):
+        return type(e).__name__, r(e.operand), S(e)
+    if isinstance(e, A.Ternary):
+        return "ternary", r(e.cond), r(e.then), r(e.orelse), S(e)
+    if isinstance(e, (A.TupleLit, A.ListLit)):
+        return type(e).__name__, [r(x) for x in e.items], S(e)
+    if isinstance(e, A.ListComp):
+        return ("comp", r(e.elt), e.var, r(e.iter), None if e.cond is None else r(e.cond),
+                S(e))
+    raise TypeError(type(e))
+
+
+def ts_expr(n, cols: _Columns, spans: bool = True):
+    """:func:`lark_expr` of a tree-sitter expression (parentheses and a `+` sign leave no node
+    in the AST; a `-` before a number is the number)."""
+    S = (lambda x: (*cols(x.start_point), *cols(x.end_point))) if spans else (lambda x: None)
+
+    def r(x):
+        return ts_expr(x, cols, spans)
+    f, t = n.child_by_field_name, n.type
+    named = [c for c in n.named_children if c.type != "comment"]
+    if t == "parenthesized_expression":
+        return r(named[0])
+    if t == "number":
+        unit = f("unit")
+        return "num", unit.text.decode() if unit else None, S(n)
+    if t == "unary_expression":
+        arg = r(f("argument"))
+        if f("operator").type == "+":
+            return arg
+        return ("num", arg[1], S(n)) if arg[0] == "num" else ("Neg", arg, S(n))
+    if t == "string":
+        return "str", S(n)
+    if t == "fstring":
+        return "fstr", S(n), [ts_expr(i.child_by_field_name("expression"), cols, False)
+                              for i in named if i.type == "interpolation"]
+    if t == "identifier":
+        return "name", n.text.decode(), S(n)
+    if t == "call":
+        args = [a for a in f("arguments").named_children if a.type != "comment"]
+        return ("call", r(f("function")), [r(a) for a in args if a.type != "keyword_argument"],
+                [(a.child_by_field_name("name").text.decode(), r(a.child_by_field_name("value")))
+                 for a in args if a.type == "keyword_argument"], S(n))
+    if t == "attribute":
+        return "member", r(f("object")), f("attribute").text.decode(), S(n)
+    if t == "subscript":
+        return "index", r(f("value")), r(f("index")), S(n)
+    if t in ("binary_expression", "boolean_operator"):
+        return "op", f("operator").type, r(f("left")), r(f("right")), S(n)
+    if t == "comparison_operator":
+        ops = [c.type for c in n.children if not c.is_named]
+        return "compare", ops, [r(c) for c in named], S(n)
+    if t == "not_operator":
+        return "Not", r(f("argument")), S(n)
+    if t == "conditional_expression":
+        return "ternary", r(f("condition")), r(f("consequence")), r(f("alternative")), S(n)
+    if t in ("tuple", "list"):
+        return {"tuple": "TupleLit", "list": "ListLit"}[t], [r(c) for c in named], S(n)
+    if t == "list_comprehension":
+        cond = f("filter")
+        return ("comp", r(f("element")), f("variable").text.decode(), r(f("iterable")),
+                None if cond is None else r(cond), S(n))
+    raise TypeError(t)
+
+
+def lark_exprs(stmts, out: list) -> list:
+    """The expressions of the statements, in source order (values, conditions, iterables,
+    param options, template defaults)."""
+    for s in stmts:
+        if isinstance(s, A.Block):
+            lark_exprs(s.stmts, out)
+        elif isinstance(s, A.Assign):
+            out.append(lark_expr(s.value))
+        elif isinstance(s, A.ExprStmt):
+            out.append(lark_expr(s.expr))
+        elif isinstance(s, A.ThicknessDecl):
+            out.append(lark_expr(s.value))
+        elif isinstance(s, A.ParamDecl):
+            out += [lark_expr(s.value)] + [lark_expr(o.value) for o in s.options]
+        elif isinstance(s, A.Def):
+            out += [lark_expr(p.default) for p in s.params if p.default is not None]
+            lark_exprs(s.body.stmts, out)
+        elif isinstance(s, A.StructDecl):
+            lark_exprs(s.body.stmts, out)
+        elif isinstance(s, A.For):
+            out.append(lark_expr(s.iter))
+            lark_exprs(s.body.stmts, out)
+        elif isinstance(s, A.If):
+            out.append(lark_expr(s.cond))
+            lark_exprs(s.body.stmts, out)
+            if s.orelse is not None:
+                lark_exprs(s.orelse.stmts, out)
+        elif isinstance(s, A.Assert):
+            out.append(lark_expr(s.expr))
+    return out
+
+
+def ts_exprs(statements, cols: _Columns, out: list) -> list:
+    for c in statements:
+        f, t = c.child_by_field_name, c.type
+        if t == "block":
+            ts_exprs(c.named_children, cols, out)
+        elif t in ("assignment", "kind_assignment", "thickness_declaration", "kerf_declaration",
+                   "min_wall_declaration"):
+            out.append(ts_expr(f("value"), cols))
+        elif t == "expression_statement":
+            out.append(ts_expr(c.named_children[0], cols))
+        elif t == "param_declaration":
+            out += [ts_expr(f("value"), cols)] + [ts_expr(o.child_by_field_name("value"), cols)
+                                                   for o in c.named_children
+                                                   if o.type == "param_option"]
+        elif t in ("function_definition", "template_definition"):
+            out += [ts_expr(p.child_by_field_name("default"), cols)
+                    for p in f("parameters").named_children
+                    if p.type == "parameter" and p.child_by_field_name("default")]
+            ts_exprs(f("body").named_children, cols, out)
+        elif t == "structure_declaration":
+            ts_exprs(f("body").named_children, cols, out)
+        elif t == "for_statement":
+            out.append(ts_expr(f("iterable"), cols))
+            ts_exprs(f("body").named_children, cols, out)
+        elif t in ("if_statement", "elif_clause"):
+            out.append(ts_expr(f("condition"), cols))
+            ts_exprs(f("consequence").named_children, cols, out)
+            alt = f("alternative")
+            if alt is not None:
+                body = alt if alt.type == "elif_clause" else alt.child_by_field_name("body")
+                ts_exprs(body.named_children if body.type == "block" else [body], cols, out)
+        elif t == "assert_statement":
+            out.append(ts_expr(f("condition"), cols))
+    return out
+
+
+def _compare_expressions(parser, title: str, source: str) -> str:
+    prog = parse(source, title, DiagnosticSink())
+    tree = parser.parse(source.encode("utf-8"))
+    mine = ts_exprs(tree.root_node.named_children, _Columns(source), [])
+    theirs = lark_exprs(prog.stmts, [])
+    if len(mine) != len(theirs):
+        return f"{title}: Lark has {len(theirs)} expressions, tree-sitter {len(mine)}"
+    for a, b in zip(theirs, mine):
+        if a != b:
+            return f"{title}:\n  Lark        {str(a)[:400]}\n  tree-sitter {str(b)[:400]}"
+    return ""
+
+
+def _deep(fn):
+    """``fn()`` in a thread with a large stack and recursion limit (the hostile programs nest
+    expressions 600 deep; the comparison recurses)."""
+    import threading
+
+    result = []
+    old_limit, old_size = sys.getrecursionlimit(), threading.stack_size()
+    sys.setrecursionlimit(20000)
+    threading.stack_size(512 * 1024 * 1024)
+    try:
+        t = threading.Thread(target=lambda: result.append(fn()))
+        t.start()
+        t.join()
+    finally:
+        threading.stack_size(old_size)
+        sys.setrecursionlimit(old_limit)
+    return result[0]
+
+
+def test_every_expression_has_the_tree_of_the_lark_parse(parser):
+    """Operators, precedence, associativity, calls and their arguments, members, literals,
+    units: every expression of every file and docs example, with its span, as the Lark AST."""
+    items = [(str(f.relative_to(ROOT)), f.read_text(encoding="utf-8")) for f in _aidl_files()]
+    items += _docs_blocks()
+    failures = _deep(lambda: [m for title, text in items
+                              if (m := _compare_expressions(parser, title, text))])
+    assert not failures, f"{len(failures)} of {len(items)} differ:\n" + "\n".join(failures)
+
+
+@pytest.mark.parametrize("src", [
+    "x = a == 1 or b == 2\n",              # comparisons inside `or` (was a == (1 or ...))
+    "x = 0 < a <= 3 and not b\n",
+    "x = -2 ** 2 + 2 ** -1 ** 2\n",
+    "x = a if b else c if d else e\n",
+    "x = -a.b(1)[2] * +c // 2 % 3\n",
+    "x = [i * 2 for i in range(3) if i != 1]\n",
+])
+def test_precedence_and_associativity_are_lark_s(parser, src):
+    assert _compare_expressions(parser, "t.aidl", src) == ""
+
+
 def test_every_aidl_file_has_the_statement_tree_of_the_lark_parse(parser):
     files = _aidl_files()
     assert len(files) >= 200, [str(f) for f in files[:5]]

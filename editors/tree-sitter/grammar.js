@@ -240,6 +240,12 @@ export default grammar({
       $.boolean_operator,
       $.not_operator,
       $.comparison_operator,
+      $._primary_expression,
+    ),
+
+    // what binds tighter than a comparison (Lark's `sum` and below): arithmetic, calls,
+    // members, subscripts, atoms
+    _primary_expression: $ => choice(
       $.binary_expression,
       $.unary_expression,
       $.call,
@@ -272,45 +278,46 @@ export default grammar({
 
     not_operator: $ => prec(PREC.not, seq('not', field('argument', $._expression))),
 
-    // a < b <= c: one chain, as Lark's `compare`
+    // a < b <= c: one chain, as Lark's `compare`, whose operands are sums (arithmetic and
+    // what binds tighter): `a == 1 or b == 2` is two comparisons joined by `or`
     comparison_operator: $ => prec.left(PREC.compare, seq(
-      $._expression,
+      $._primary_expression,
       repeat1(seq(
         field('operators', choice('==', '!=', '<=', '>=', '<', '>')),
-        $._expression,
+        $._primary_expression,
       )),
     )),
 
     binary_expression: $ => choice(
       ...[['+', PREC.sum], ['-', PREC.sum]].map(([op, p]) => prec.left(p, seq(
-        field('left', $._expression),
+        field('left', $._primary_expression),
         field('operator', op),
-        field('right', $._expression),
+        field('right', $._primary_expression),
       ))),
       ...['*', '/', '%'].map(op => prec.left(PREC.product, seq(
-        field('left', $._expression),
+        field('left', $._primary_expression),
         field('operator', op),
-        field('right', $._expression),
+        field('right', $._primary_expression),
       ))),
       prec.left(PREC.product, seq(
-        field('left', $._expression),
+        field('left', $._primary_expression),
         field('operator', alias($._floor_div, '//')),
-        field('right', $._expression),
+        field('right', $._primary_expression),
       )),
       prec.right(PREC.power, seq(
-        field('left', $._expression),
+        field('left', $._primary_expression),
         field('operator', '**'),
-        field('right', $._expression),
+        field('right', $._primary_expression),
       )),
     ),
 
     unary_expression: $ => prec(PREC.unary, seq(
       field('operator', choice('-', '+')),
-      field('argument', $._expression),
+      field('argument', $._primary_expression),
     )),
 
     call: $ => prec(PREC.postfix, seq(
-      field('function', $._expression),
+      field('function', $._primary_expression),
       field('arguments', $.argument_list),
     )),
 
@@ -327,13 +334,13 @@ export default grammar({
     ),
 
     attribute: $ => prec(PREC.postfix, seq(
-      field('object', $._expression),
+      field('object', $._primary_expression),
       '.',
       field('attribute', $.identifier),
     )),
 
     subscript: $ => prec(PREC.postfix, seq(
-      field('value', $._expression),
+      field('value', $._primary_expression),
       '[',
       field('index', $._expression),
       ']',
