@@ -6,7 +6,8 @@ package; then every ``.aidl`` file of the repository and every ```aidl block of 
 parsed by it and by the Lark parser (aidl_lang/parser.py), and the statement trees must be
 the same: the same statements, of the same kinds, nested the same way (bodies of templates,
 structures, loops, ifs and their else parts), each with the same span (line and column of its
-start and end). And no tree has an ERROR or MISSING node.
+start and end); and so must every expression in them (operators, precedence, calls, members,
+literals, units, each with its span). And no tree has an ERROR or MISSING node.
 
 Also: the generated files (highlights.scm, the corpora) are fresh, the highlight query
 compiles and colours the registry's names as the TextMate grammar does, errors are recovered
@@ -249,8 +250,8 @@ def ts_expr(n, cols: _Columns, spans: bool = True):
     if t == "parenthesized_expression":
         return r(named[0])
     if t == "number":
-        unit = f("unit")
-        return "num", unit.text.decode() if unit else None, S(n)
+        unit = f("unit").text.decode() if f("unit") else None
+        return "num", "deg" if unit == "°" else unit, S(n)      # as parser.parse_number
     if t == "unary_expression":
         arg = r(f("argument"))
         if f("operator").type == "+":
@@ -407,6 +408,7 @@ def test_every_expression_has_the_tree_of_the_lark_parse(parser):
     "x = a if b else c if d else e\n",
     "x = -a.b(1)[2] * +c // 2 % 3\n",
     "x = [i * 2 for i in range(3) if i != 1]\n",
+    "x = (90°, 2 in, .5e1 mm)\n",
 ])
 def test_precedence_and_associativity_are_lark_s(parser, src):
     assert _compare_expressions(parser, "t.aidl", src) == ""
