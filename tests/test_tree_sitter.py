@@ -380,7 +380,7 @@ def _deep(fn):
     result = []
     old_limit, old_size = sys.getrecursionlimit(), threading.stack_size()
     sys.setrecursionlimit(20000)
-    threading.stack_size(512 * 1024 * 1024)
+    threading.stack_size(128 * 1024 * 1024)
     try:
         t = threading.Thread(target=lambda: result.append(fn()))
         t.start()
