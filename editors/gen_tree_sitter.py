@@ -19,7 +19,9 @@ Writes
   :data:`ERROR_CASES` (sources the Lark parser rejects) with the trees the parser gives them,
   each holding an ERROR node and the statements around it.
 
-``--check`` writes nothing and exits 1 if a committed file is out of date. The parser itself
+``--check`` writes nothing and exits 1 if a committed file is out of date; ``--no-corpus``
+leaves the corpora alone (highlights.scm needs neither a C compiler nor the ``tree-sitter``
+package). The parser itself
 (``src/``) is ``tree-sitter generate``'s, run in ``editors/tree-sitter`` after ``grammar.js``
 changes; the corpora are then regenerated with this script.
 
