@@ -572,9 +572,14 @@ def test_after_a_syntax_error_the_next_structure_is_still_found(parser, src, aft
 def test_generated_highlights_and_corpora_are_fresh(lang):
     assert (TS / "queries" / "highlights.scm").read_text(encoding="utf-8") == G.highlights_scm(), \
         "run `python editors/gen_tree_sitter.py` and commit the result"
-    for path, text in G.corpora(lang).items():
+    made = G.corpora(lang)
+    for path, text in made.items():
         assert path.exists() and path.read_text(encoding="utf-8") == text, \
             f"{path.relative_to(ROOT)} is stale: run `python editors/gen_tree_sitter.py`"
+    assert set((TS / "test" / "corpus").glob("*.txt")) == set(made)
+    entries = sum(t.count(G.HEADER) // 2 for t in made.values())
+    sources = sum(len(v) for v in G.corpus_sources().values()) + len(G.ERROR_CASES)
+    assert entries == sources >= 130
 
 
 def test_highlights_name_every_word_of_the_registry():
