@@ -103,7 +103,7 @@ static bool is_keyword(const int32_t *w, int n) {
 
 /* parser._is_prose on the rest of the line after `//` (rest[0..n)). */
 static bool is_prose(const int32_t *rest, int n) {
-  int32_t code[REST_MAX];
+  int32_t code[REST_MAX + 2]; /* a string left open at the end grows by one */
   int m = 0;
   /* strings become "" (an f/F just before a quote goes with them) */
   for (int i = 0; i < n; i++) {
