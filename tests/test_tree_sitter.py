@@ -696,3 +696,21 @@ def test_tree_sitter_test_passes_on_the_corpora(tmp_path):
     m = re.search(r"Total parses: (\d+); successful parses: (\d+); failed parses: (\d+)", out)
     assert m and int(m.group(3)) == 0 and int(m.group(1)) >= 100, out[-2000:]
     assert "plate.aidl" in out, "the highlight assertions of test/highlight did not run"
+
+
+def test_an_edited_tree_reparses_as_a_fresh_parse(tmp_path):
+    """``tree-sitter fuzz``: random edits to every corpus entry, each tree reparsed
+    incrementally (as editors do on each keystroke) must equal a fresh parse of the text."""
+    cli = _cli()
+    if cli is None:
+        pytest.skip("the tree-sitter CLI is not installed (cargo install tree-sitter-cli; "
+                    ".ci/run installs it and runs this again)")
+    if G.c_compiler() is None:
+        pytest.skip("no C compiler for the tree-sitter CLI to build the parser with")
+    env = {**os.environ, "TREE_SITTER_DIR": str(tmp_path / "config"),
+           "TREE_SITTER_LIBDIR": str(tmp_path / "lib")}
+    r = subprocess.run([cli, "fuzz", "--iterations", "5", "--edits", "3"], cwd=TS,
+                       capture_output=True, text=True, timeout=900, env=env)
+    out = r.stdout + r.stderr
+    assert r.returncode == 0, out[-4000:]
+    assert "stdlib/gears.aidl" in out, out[-2000:]
