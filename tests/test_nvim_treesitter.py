@@ -467,3 +467,52 @@ def test_helix_and_zed_configurations_name_the_grammar_and_the_server():
     # a parser whose symbol is tree_sitter_NAME is loaded by that symbol
     lua = (PLUGIN / "lua" / "aidl_cad" / "treesitter.lua").read_text(encoding="utf-8")
     assert f"M.symbol = '{name}'" in lua or name == "aidl_cad"
+
+
+LSP_PROBE = r"""
+local out = {}
+vim.cmd('edit cad.aidl')
+local ok = vim.wait(60000, function() return #vim.diagnostic.get(0) > 0 end, 50)
+local d = vim.diagnostic.get(0)[1]
+table.insert(out, 'diag=' .. (d and (d.lnum .. ':' .. d.col .. ':' .. d.code) or 'none'))
+vim.cmd('edit other.aidl')
+vim.wait(60000, function() return #vim.lsp.get_clients({ bufnr = 0 }) > 0 end, 50)
+local ids = {}
+for _, name in ipairs({ 'cad.aidl', 'other.aidl' }) do
+  for _, c in ipairs(vim.lsp.get_clients({ bufnr = vim.fn.bufnr(name) })) do
+    table.insert(ids, c.name .. '#' .. c.id)
+  end
+end
+table.insert(out, 'clients=' .. table.concat(ids, ','))
+table.insert(out, 'omnifunc=' .. vim.bo.omnifunc)
+table.insert(out, 'errmsg=' .. vim.v.errmsg)
+vim.fn.writefile(out, 'out.txt')
+vim.cmd('qa!')
+"""
+
+
+def test_neovim_010_starts_the_server_through_vim_lsp_start(tmp_path):
+    """On Neovim >= 0.10 the plugin starts `aidl lsp` with vim.lsp.start (one client for the
+    project's files), the way Neovim 0.7 starts it with vim.lsp.start_client
+    (tests/test_nvim.py): diagnostics arrive, the second file joins the first one's client."""
+    new = next((p for p in _neovims() if p.id == "nvim-0.10-or-newer"), None)
+    nvim = new.values[0] if new else None
+    if nvim is None:
+        pytest.skip("no Neovim >= 0.10 (.ci/run installs one into .venv-nvim)")
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "cad.aidl").write_text("param w = 3 mm\nsolid plate {\n    c = Circel(center=(0, 0), radius=w)\n}\n")
+    (tmp_path / "other.aidl").write_text("solid tab {\n    r = Rectangle(center=(0, 0), width=2, height=1)\n}\n")
+    (tmp_path / "probe.lua").write_text(LSP_PROBE)
+    env = {"PATH": f"{Path(sys.executable).parent}:/usr/bin:/bin", "HOME": str(tmp_path),
+           "XDG_CONFIG_HOME": str(tmp_path / "cfg"), "XDG_DATA_HOME": str(tmp_path / "data"),
+           "XDG_STATE_HOME": str(tmp_path / "state")}
+    r = subprocess.run([nvim, "--headless", "-u", "NONE", "-i", "NONE", "--cmd", f"set rtp^={PLUGIN}",
+                        "-c", "filetype plugin on", "-c", "syntax on", "-c", "luafile probe.lua"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=180, env=env)
+    out = (tmp_path / "out.txt").read_text() if (tmp_path / "out.txt").exists() else r.stdout + r.stderr
+    got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+    assert got.get("diag") == "2:8:E0103", out                 # from `aidl lsp`, found on PATH
+    clients = got["clients"].split(",")
+    assert len(clients) == 2 and clients[0] == clients[1] and clients[0].startswith("aidl#"), out
+    assert got["omnifunc"] == "v:lua.vim.lsp.omnifunc"
+    assert got["errmsg"] == "", out
