@@ -516,3 +516,44 @@ def test_neovim_010_starts_the_server_through_vim_lsp_start(tmp_path):
     assert len(clients) == 2 and clients[0] == clients[1] and clients[0].startswith("aidl#"), out
     assert got["omnifunc"] == "v:lua.vim.lsp.omnifunc"
     assert got["errmsg"] == "", out
+
+
+FIRST_HANDLER_PROBE = r"""
+vim.cmd('edit ex.aidl')
+vim.fn.writefile({ 'started=' .. tostring(vim.g.started), 'err=' .. tostring(vim.g.err),
+                   'lang=' .. tostring(vim.treesitter.language.get_lang('aidl-cad')),
+                   'active=' .. tostring(vim.treesitter.highlighter.active[vim.api.nvim_get_current_buf()] ~= nil) },
+                 'out.txt')
+vim.cmd('qa!')
+"""
+
+
+def test_a_filetype_handler_that_runs_before_the_plugin_starts_tree_sitter(tmp_path):
+    """nvim-treesitter starts the highlighter from its own FileType handler, which can run
+    before the plugin's ftplugin: the parser (its symbol tree_sitter_aidl) is loaded and the
+    filetype mapped to `aidl_cad` when the file is detected, so `vim.treesitter.start()` with
+    no language works there."""
+    new = next((p for p in _neovims() if p.id == "nvim-0.10-or-newer"), None)
+    nvim = new.values[0] if new else None
+    if nvim is None:
+        pytest.skip("no Neovim >= 0.10 (.ci/run installs one into .venv-nvim)")
+    if not (GRAMMAR / "src" / "parser.c").exists():
+        pytest.skip(f"no {GRAMMAR / 'src' / 'parser.c'} (the generated parser)")
+    if CC is None:
+        pytest.skip("no C compiler to build the parser")
+    rt = _build_parser(tmp_path)
+    (tmp_path / "ex.aidl").write_text(EXAMPLE.read_text(encoding="utf-8"), encoding="utf-8")
+    (tmp_path / "probe.lua").write_text(FIRST_HANDLER_PROBE)
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "XDG_CONFIG_HOME": str(tmp_path / "cfg"),
+           "XDG_DATA_HOME": str(tmp_path / "data"), "XDG_STATE_HOME": str(tmp_path / "state")}
+    first = ("autocmd FileType aidl-cad lua local ok, e = pcall(vim.treesitter.start); "
+             "vim.g.started = ok; vim.g.err = e")
+    r = subprocess.run([nvim, "--headless", "-u", "NONE", "-i", "NONE", "--cmd", "let g:aidl_lsp = 0",
+                        "--cmd", "let g:aidl_treesitter = 0", "--cmd", first,
+                        "--cmd", f"set rtp^={PLUGIN}", "--cmd", f"set rtp^={rt}",
+                        "-c", "filetype plugin on", "-c", "luafile probe.lua"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=120, env=env)
+    out = (tmp_path / "out.txt").read_text() if (tmp_path / "out.txt").exists() else r.stdout + r.stderr
+    got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
+    assert got.get("started") == "true", out
+    assert got["lang"] == "aidl_cad" and got["active"] == "true", out
