@@ -557,3 +557,40 @@ def test_a_filetype_handler_that_runs_before_the_plugin_starts_tree_sitter(tmp_p
     got = dict(line.split("=", 1) for line in out.split("\n") if "=" in line)
     assert got.get("started") == "true", out
     assert got["lang"] == "aidl_cad" and got["active"] == "true", out
+
+
+NVIM_TREESITTER_PROBE = r"""
+local entry = require('nvim-treesitter.parsers').get_parser_configs().aidl_cad
+vim.fn.writefile({ vim.fn.json_encode(entry or vim.NIL) }, 'out.json')
+vim.cmd('qa!')
+"""
+
+
+def test_the_plugin_gives_nvim_treesitter_its_parser_entry(tmp_path):
+    """With nvim-treesitter (its `master` branch's parsers module, a stand-in here) the plugin
+    adds `aidl_cad` to its parser configs at start-up: `:TSInstall aidl_cad` builds
+    editors/tree-sitter of this checkout, src/parser.c and src/scanner.c, for the filetype
+    `aidl-cad`."""
+    new = next((p for p in _neovims() if p.id == "nvim-0.10-or-newer"), None)
+    nvim = new.values[0] if new else None
+    if nvim is None:
+        pytest.skip("no Neovim >= 0.10 (.ci/run installs one into .venv-nvim)")
+    fake = tmp_path / "fake" / "lua" / "nvim-treesitter"
+    fake.mkdir(parents=True)
+    (fake / "parsers.lua").write_text(
+        "local configs = {}\nreturn { get_parser_configs = function() return configs end }\n")
+    (tmp_path / "probe.lua").write_text(NVIM_TREESITTER_PROBE)
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "XDG_CONFIG_HOME": str(tmp_path / "cfg"),
+           "XDG_DATA_HOME": str(tmp_path / "data"), "XDG_STATE_HOME": str(tmp_path / "state")}
+    r = subprocess.run([nvim, "--headless", "-u", "NONE", "-i", "NONE",
+                        "--cmd", f"set rtp^={PLUGIN}", "--cmd", f"set rtp^={tmp_path / 'fake'}",
+                        "--cmd", "set loadplugins", "-c", "luafile probe.lua"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=120, env=env)
+    assert (tmp_path / "out.json").exists(), r.stdout + r.stderr
+    entry = json.loads((tmp_path / "out.json").read_text())
+    assert entry["filetype"] == "aidl-cad"
+    info = entry["install_info"]
+    assert Path(info["url"]) == ROOT and info["location"] == "editors/tree-sitter"
+    assert info["files"] == ["src/parser.c", "src/scanner.c"]
+    for f in info["files"]:                     # what nvim-treesitter compiles is there
+        assert (Path(info["url"]) / info["location"] / f).exists() or not (GRAMMAR / "src" / "parser.c").exists()

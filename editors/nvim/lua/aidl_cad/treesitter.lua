@@ -59,6 +59,35 @@ function M.query(name)
   return ok and q or nil
 end
 
+--- The folder of this checkout of AIDL (this file is editors/nvim/lua/aidl_cad/treesitter.lua).
+local function repo_root()
+  local src = debug.getinfo(1, 'S').source:gsub('^@', '')
+  return vim.fn.fnamemodify(src, ':p:h:h:h:h:h')
+end
+
+--- The parser entry for nvim-treesitter (its `master` branch): `:TSInstall aidl_cad` then
+--- builds editors/tree-sitter of this checkout (no download). Added when nvim-treesitter is
+--- loaded (plugin/aidl_cad.lua at start-up; call it again after a lazily loaded
+--- nvim-treesitter). Returns the entry, or nil without nvim-treesitter.
+function M.nvim_treesitter()
+  local ok, parsers = pcall(require, 'nvim-treesitter.parsers')
+  if not ok or type(parsers.get_parser_configs) ~= 'function' then
+    return nil
+  end
+  local configs = parsers.get_parser_configs()
+  configs[M.lang] = configs[M.lang] or {
+    install_info = {
+      url = repo_root(),
+      location = 'editors/tree-sitter',
+      files = { 'src/parser.c', 'src/scanner.c' },
+      requires_generate_from_grammar = false,
+    },
+    filetype = M.filetype,
+    maintainers = {},
+  }
+  return configs[M.lang]
+end
+
 --- Start tree-sitter highlighting for the buffer (0 or nil: the current one). Returns true
 --- when the parser was found and the highlighter runs, false otherwise (nothing changed).
 function M.start(bufnr)
