@@ -16,6 +16,11 @@ function! s:AidlCadDetect() abort
     endif
   endfor
   if l:cad
+    if has('nvim-0.9')
+      " the parser `aidl_cad` (when installed) loaded before any FileType handler runs, so one
+      " that starts tree-sitter first (nvim-treesitter's) finds it (lua/aidl_cad/treesitter.lua)
+      lua pcall(function() local ts = require('aidl_cad.treesitter'); ts.register(); ts.available() end)
+    endif
     set filetype=aidl-cad
   endif
 endfunction

@@ -6,6 +6,10 @@
 " Set `let g:aidl_lsp = 0` to leave the server to your own configuration (e.g. nvim-lspconfig),
 " `let g:aidl_lsp_keymaps = 0` to keep your own maps, `let g:aidl_server_path =
 " '/path/to/.venv/bin/aidl'` to choose the server, `let g:aidl_browser = 'firefox'` the browser.
+" Tree-sitter (lua/aidl_cad/treesitter.lua): when the parser `aidl_cad` is installed
+" (parser/aidl_cad.so on 'runtimepath', docs/editors.md), it colours the buffer instead of the
+" syntax file (`let g:aidl_treesitter = 0` keeps the syntax file) and, with
+" `let g:aidl_treesitter_folds = 1`, folds it by the queries in queries/aidl_cad/folds.scm.
 if exists('b:did_ftplugin')
   finish
 endif
@@ -23,6 +27,9 @@ if has('nvim-0.9')
 endif
 
 if has('nvim-0.7')
+  if get(g:, 'aidl_treesitter', 1)
+    lua require('aidl_cad.treesitter').start(0)
+  endif
   command! -buffer AidlPreview lua require('aidl_cad').preview(0)
   command! -buffer AidlPreviewStop lua require('aidl_cad').preview_stop(0)
   command! -buffer AidlInfo lua require('aidl_cad').info()
