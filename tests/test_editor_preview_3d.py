@@ -1,7 +1,7 @@
 """The VS Code preview's 3D view in a real browser: the webview page that
-editors/vscode/preview.js writes (``html(cspSource, threeBase)``, made by node with the test
-shim), served with the extension's own ``node_modules/three`` over a local HTTP server as a
-webview serves its resources, in Debian's Chromium (SwiftShader WebGL).  The page gets the
+editors/vscode/preview.js writes (``html(cspSource, threeUrl)``, made by node with the test
+shim), served with the extension's bundled three.js (``dist/webview/three.js``, made by ``npm run
+bundle``) over a local HTTP server as a webview serves its resources, in Debian's Chromium (SwiftShader WebGL).  The page gets the
 ``aidl/preview`` result the language server sends with ``assembled: true`` (the phone stand's
 GLB) after its 3D button is pressed; it draws both parts in their colours, a drag orbits, and
 it asks the extension for the assembled product.  Screenshot: out/vscode-preview-3d.png."""
@@ -25,8 +25,8 @@ ROOT = Path(__file__).resolve().parent.parent
 EXT = ROOT / "editors" / "vscode"
 pytest.importorskip("playwright")
 if not Path("/usr/bin/chromium").exists() or shutil.which("node") is None \
-        or not (EXT / "node_modules" / "three" / "build" / "three.module.min.js").exists():
-    pytest.skip("needs Debian's chromium, node and `npm ci` in editors/vscode",
+        or not (EXT / "dist" / "webview" / "three.js").exists():
+    pytest.skip("needs Debian's chromium, node and `npm ci && npm run bundle` in editors/vscode",
                 allow_module_level=True)
 
 MAKE = """
@@ -42,15 +42,15 @@ def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
     from PIL import Image
     from playwright.sync_api import sync_playwright
 
-    # the files a webview would serve: the page and the extension's three.js
+    # the files a webview would serve: the page and the extension's bundled three.js
     site = tmp_path / "site"
     site.mkdir()
-    (site / "three").symlink_to(EXT / "node_modules" / "three")
+    (site / "three.js").symlink_to(EXT / "dist" / "webview" / "three.js")
     srv = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(
         http.server.SimpleHTTPRequestHandler, directory=str(site)))
     base = f"http://127.0.0.1:{srv.server_address[1]}"
     threading.Thread(target=srv.serve_forever, daemon=True).start()
-    page_html = subprocess.run(["node", "-e", MAKE, base, base + "/three"], cwd=EXT,
+    page_html = subprocess.run(["node", "-e", MAKE, base, base + "/three.js"], cwd=EXT,
                                capture_output=True, text=True, timeout=60, check=True).stdout
     nonce = re.search(r"'nonce-([^']+)'", page_html)[1]
     stub = (f'<script nonce="{nonce}">window.sent = []; window.acquireVsCodeApi = () => '
