@@ -32,15 +32,17 @@ class Preview {
     this.timer = null;
     this.last = null;             // the last result posted
     this.assembled = false;       // the 3D view is shown: ask for the assembled product too
-    // the bundled three.js (dist/webview/three.js, made by `npm run bundle`); without it (the
-    // sources run unbundled, never built) the 3D button is hidden
+    // the bundled three.js (dist/webview/three.js, made by `npm run bundle`), the one folder the
+    // page may read; without it (the sources run unbuilt) the 3D button is hidden, and said
     const webviewDir = extensionPath ? path.join(extensionPath, 'dist', 'webview') : null;
-    const hasThree = webviewDir !== null && fs.existsSync(path.join(webviewDir, 'three.js'));
-    const root = hasThree ? vscode.Uri.file(webviewDir) : null;
+    const threeFile = webviewDir && path.join(webviewDir, 'three.js');
+    const hasThree = Boolean(threeFile) && fs.existsSync(threeFile);
+    if (threeFile && !hasThree) log(`no 3D view: ${threeFile} is missing (npm run bundle makes it)`);
     this.panel = vscode.window.createWebviewPanel('aidlPreview', title(document),
       { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true },
-      { enableScripts: true, retainContextWhenHidden: true, localResourceRoots: root ? [root] : [] });
-    const threeUrl = root ? String(this.panel.webview.asWebviewUri(vscode.Uri.file(path.join(webviewDir, 'three.js')))) : null;
+      { enableScripts: true, retainContextWhenHidden: true,
+        localResourceRoots: hasThree ? [vscode.Uri.file(webviewDir)] : [] });
+    const threeUrl = hasThree ? String(this.panel.webview.asWebviewUri(vscode.Uri.file(threeFile))) : null;
     this.panel.webview.html = html(this.panel.webview.cspSource, threeUrl);
     const subs = [];
     subs.push(this.panel.webview.onDidReceiveMessage((m) => this.receive(m)));
