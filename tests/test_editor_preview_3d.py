@@ -17,6 +17,7 @@ import re
 import shutil
 import subprocess
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -34,6 +35,13 @@ require('./test/helpers');
 const { html } = require('./preview');
 process.stdout.write(html(process.argv[1], process.argv[2]));
 """
+
+
+def _poll(page, expression: str, seconds: float, what: str) -> None:
+    end = time.monotonic() + seconds
+    while not page.evaluate(expression):
+        assert time.monotonic() < end, f"timed out ({seconds:g} s) waiting for {what}"
+        time.sleep(0.1)
 
 
 def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
@@ -78,12 +86,14 @@ def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
                 errors = []
                 page.on("pageerror", lambda e: errors.append(str(e)))
                 page.goto(base + "/index.html")
-                page.wait_for_function("window.aidl3d && window.sent.length > 0")   # ready
+                # polled from here: the page's nonce-only script policy refuses the eval of
+                # wait_for_function's polling once its first try finds the page not ready
+                _poll(page, "!!window.aidl3d && window.sent.length > 0", 30, "the page ready")
                 page.click("#mode3d")
                 assert {"type": "assembled", "on": True} in page.evaluate("window.sent")
                 page.evaluate("(r) => window.postMessage({type: 'update', result: r}, '*')", result)
-                page.wait_for_function("document.body.dataset.loaded3d === '1' "
-                                       "|| document.body.dataset.error3d", timeout=30_000)
+                _poll(page, "document.body.dataset.loaded3d === '1' "
+                      "|| !!document.body.dataset.error3d", 30, "the product in 3D")
                 assert page.evaluate("document.body.dataset.error3d") is None and errors == []
                 assert page.locator("#view").is_hidden()
                 page.wait_for_timeout(400)
