@@ -1,7 +1,7 @@
 """The VS Code preview's 3D view in a real browser: the webview page that
-editors/vscode/preview.js writes (``html(cspSource, threeBase)``, made by node with the test
-shim), served with the extension's own ``node_modules/three`` over a local HTTP server as a
-webview serves its resources, in Debian's Chromium (SwiftShader WebGL).  The page gets the
+editors/vscode/preview.js writes (``html(cspSource, threeUrl)``, made by node with the test
+shim), served with the extension's bundled three.js (``dist/webview/three.js``, made by ``npm run
+bundle``) over a local HTTP server as a webview serves its resources, in Debian's Chromium (SwiftShader WebGL).  The page gets the
 ``aidl/preview`` result the language server sends with ``assembled: true`` (the phone stand's
 GLB) after its 3D button is pressed; it draws both parts in their colours, a drag orbits, and
 it asks the extension for the assembled product.  Screenshot: out/vscode-preview-3d.png."""
@@ -17,6 +17,7 @@ import re
 import shutil
 import subprocess
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -25,8 +26,8 @@ ROOT = Path(__file__).resolve().parent.parent
 EXT = ROOT / "editors" / "vscode"
 pytest.importorskip("playwright")
 if not Path("/usr/bin/chromium").exists() or shutil.which("node") is None \
-        or not (EXT / "node_modules" / "three" / "build" / "three.module.min.js").exists():
-    pytest.skip("needs Debian's chromium, node and `npm ci` in editors/vscode",
+        or not (EXT / "dist" / "webview" / "three.js").exists():
+    pytest.skip("needs Debian's chromium, node and `npm ci && npm run bundle` in editors/vscode",
                 allow_module_level=True)
 
 MAKE = """
@@ -36,21 +37,28 @@ process.stdout.write(html(process.argv[1], process.argv[2]));
 """
 
 
+def _poll(page, expression: str, seconds: float, what: str) -> None:
+    end = time.monotonic() + seconds
+    while not page.evaluate(expression):
+        assert time.monotonic() < end, f"timed out ({seconds:g} s) waiting for {what}"
+        time.sleep(0.1)
+
+
 def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
     import aidl_lang
     import numpy as np
     from PIL import Image
     from playwright.sync_api import sync_playwright
 
-    # the files a webview would serve: the page and the extension's three.js
+    # the files a webview would serve: the page and the extension's bundled three.js
     site = tmp_path / "site"
     site.mkdir()
-    (site / "three").symlink_to(EXT / "node_modules" / "three")
+    (site / "three.js").symlink_to(EXT / "dist" / "webview" / "three.js")
     srv = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(
         http.server.SimpleHTTPRequestHandler, directory=str(site)))
     base = f"http://127.0.0.1:{srv.server_address[1]}"
     threading.Thread(target=srv.serve_forever, daemon=True).start()
-    page_html = subprocess.run(["node", "-e", MAKE, base, base + "/three"], cwd=EXT,
+    page_html = subprocess.run(["node", "-e", MAKE, base, base + "/three.js"], cwd=EXT,
                                capture_output=True, text=True, timeout=60, check=True).stdout
     nonce = re.search(r"'nonce-([^']+)'", page_html)[1]
     stub = (f'<script nonce="{nonce}">window.sent = []; window.acquireVsCodeApi = () => '
@@ -78,12 +86,14 @@ def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
                 errors = []
                 page.on("pageerror", lambda e: errors.append(str(e)))
                 page.goto(base + "/index.html")
-                page.wait_for_function("window.aidl3d && window.sent.length > 0")   # ready
+                # polled from here: the page's nonce-only script policy refuses the eval of
+                # wait_for_function's polling once its first try finds the page not ready
+                _poll(page, "!!window.aidl3d && window.sent.length > 0", 30, "the page ready")
                 page.click("#mode3d")
                 assert {"type": "assembled", "on": True} in page.evaluate("window.sent")
                 page.evaluate("(r) => window.postMessage({type: 'update', result: r}, '*')", result)
-                page.wait_for_function("document.body.dataset.loaded3d === '1' "
-                                       "|| document.body.dataset.error3d", timeout=30_000)
+                _poll(page, "document.body.dataset.loaded3d === '1' "
+                      "|| !!document.body.dataset.error3d", 30, "the product in 3D")
                 assert page.evaluate("document.body.dataset.error3d") is None and errors == []
                 assert page.locator("#view").is_hidden()
                 page.wait_for_timeout(400)

@@ -244,7 +244,7 @@ async function explain(code) {
   return r;
 }
 
-let extensionPath = null;        // the extension's folder (three.js for the preview's 3D view)
+let extensionPath = null;        // the extension's folder (dist/webview/three.js: the preview's 3D view)
 
 async function activate(context) {
   extensionPath = context.extensionPath || null;

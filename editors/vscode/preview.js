@@ -13,12 +13,14 @@
 const vscode = require('vscode');
 const path = require('node:path');
 const crypto = require('node:crypto');
+const fs = require('node:fs');
 
 const DEBOUNCE_MS = 120;        // quiet after a keystroke before the picture is asked for
 
 class Preview {
   // getClient(): the running LanguageClient or undefined; log(line): the output channel;
-  // extensionPath: the extension's folder (three.js for the 3D view is in its node_modules).
+  // extensionPath: the extension's folder (the 3D view's bundled three.js is its
+  // dist/webview/three.js).
   constructor(document, getClient, log, onDispose, extensionPath) {
     this.uri = document.uri.toString();
     this.document = document;
@@ -30,12 +32,18 @@ class Preview {
     this.timer = null;
     this.last = null;             // the last result posted
     this.assembled = false;       // the 3D view is shown: ask for the assembled product too
-    const three = extensionPath ? vscode.Uri.file(path.join(extensionPath, 'node_modules', 'three')) : null;
+    // the bundled three.js (dist/webview/three.js, made by `npm run bundle`), the one folder the
+    // page may read; without it (the sources run unbuilt) the 3D button is hidden, and said
+    const webviewDir = extensionPath ? path.join(extensionPath, 'dist', 'webview') : null;
+    const threeFile = webviewDir && path.join(webviewDir, 'three.js');
+    const hasThree = Boolean(threeFile) && fs.existsSync(threeFile);
+    if (threeFile && !hasThree) log(`no 3D view: ${threeFile} is missing (npm run bundle makes it)`);
     this.panel = vscode.window.createWebviewPanel('aidlPreview', title(document),
       { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true },
-      { enableScripts: true, retainContextWhenHidden: true, localResourceRoots: three ? [three] : [] });
-    const threeBase = three ? String(this.panel.webview.asWebviewUri(three)).replace(/\/$/, '') : null;
-    this.panel.webview.html = html(this.panel.webview.cspSource, threeBase);
+      { enableScripts: true, retainContextWhenHidden: true,
+        localResourceRoots: hasThree ? [vscode.Uri.file(webviewDir)] : [] });
+    const threeUrl = hasThree ? String(this.panel.webview.asWebviewUri(vscode.Uri.file(threeFile))) : null;
+    this.panel.webview.html = html(this.panel.webview.cspSource, threeUrl);
     const subs = [];
     subs.push(this.panel.webview.onDidReceiveMessage((m) => this.receive(m)));
     subs.push(vscode.workspace.onDidChangeTextDocument((e) => {
@@ -126,17 +134,16 @@ function title(document) {
   return `Preview ${path.basename(document.uri.fsPath || document.uri.path || 'untitled')}`;
 }
 
-// The 3D view: three.js (the extension's own npm dependency, from its node_modules through
-// the webview's resource URIs; no CDN) shows the assembled product the server sends as base64
+// The 3D view: three.js (the extension's own npm dependency, bundled with its glTF loader and
+// orbit controls into one ES module, dist/webview/three.js, loaded through the webview's
+// resource URI `threeUrl`; no CDN) shows the assembled product the server sends as base64
 // GLB (`aidl/preview` with `assembled: true`): orbit (drag), zoom (wheel), pan (right-drag),
 // the parts in the flat view's colours; the camera stays put across updates.
-function view3d(threeBase, nonce) {
-  if (!threeBase) return '';
-  return `<script type="importmap" nonce="${nonce}">{"imports": {"three": "${threeBase}/build/three.module.min.js"}}</script>
-<script type="module" nonce="${nonce}">
-import * as THREE from "three";
-import { GLTFLoader } from "${threeBase}/examples/jsm/loaders/GLTFLoader.js";
-import { OrbitControls } from "${threeBase}/examples/jsm/controls/OrbitControls.js";
+function view3d(threeUrl, nonce) {
+  if (!threeUrl) return '';
+  return `<script type="module" nonce="${nonce}">
+import * as THREE from "${threeUrl}";
+const { GLTFLoader, OrbitControls } = THREE;
 const host = document.getElementById("view3d");
 let r = null, scene, camera, controls, root = null, framed = false;
 function init() {
@@ -192,7 +199,7 @@ window.aidl3d = { show, frame };
 
 // The page. Everything inline or from the extension's own folder (no CDN, works offline); a
 // nonce-only script policy.
-function html(cspSource, threeBase) {
+function html(cspSource, threeUrl) {
   const nonce = crypto.randomBytes(16).toString('base64');
   return `<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
@@ -235,12 +242,12 @@ function html(cspSource, threeBase) {
 <body>
 <header><span id="status">Compiling&hellip;</span><span id="hover"></span>
   <button id="reset" title="Back to the file's values" hidden>Reset</button>
-  <button id="mode3d" title="The parts placed in 3D by their Place (aidl render --assembled); again: the flat sheet"${threeBase ? '' : ' hidden'}>3D</button>
+  <button id="mode3d" title="The parts placed in 3D by their Place (aidl render --assembled); again: the flat sheet"${threeUrl ? '' : ' hidden'}>3D</button>
   <button id="svg" title="Render to SVG (aidl render)">SVG</button>
   <button id="dxf" title="Render to DXF (aidl render)">DXF</button></header>
 <section id="params"></section>
 <main><div id="view"><div id="empty">Waiting for the language server&hellip;</div></div><div id="view3d" hidden></div></main>
-${view3d(threeBase, nonce)}
+${view3d(threeUrl, nonce)}
 <script nonce="${nonce}">
 (function () {
   const vscode = acquireVsCodeApi();

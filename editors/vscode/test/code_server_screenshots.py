@@ -10,7 +10,9 @@ Preview* beside it, the cursor on the finger holes' ``Circle`` call, so that the
 highlighted), both at 1600 x 1000.  The server is started from this checkout's ``.venv`` (the
 extension's own discovery); ``aidl_lang`` must be installed there.
 
-code-server is not a dependency of the project (nor of CI): it was installed for these pictures
+CI installs a smaller code-server (``install_code_server.sh``, for
+tests/test_vscode_code_server.py) without ripgrep, which this script's Quick Open needs; a full
+one was installed for these pictures
 with npm 4.100.3 (node 20) where there is no internet but the registries, by hand:
 ``npm install --ignore-scripts code-server@4.100.3``; then ``node-pre-gyp rebuild
 --build-from-source`` in ``node_modules/argon2``; in ``node_modules/code-server/lib/vscode``:
