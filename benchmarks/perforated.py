@@ -220,6 +220,9 @@ def run(cmd: list[str], env: dict, cwd: str, timeout: float):
         codes = re.findall(r"\b([EW]0\d{3})\b", text)
         err = [c for c in codes if c.startswith("E")]
         st = err[0] if err else ("ok" if p.returncode == 0 else f"exit {p.returncode}")
+        stage = re.search(r"budget in (the [a-z ]+?) of", text)
+        if st == "E0304" and stage:
+            st += f" ({stage.group(1)})"
     return cpu, mb, st, text
 
 
@@ -242,15 +245,15 @@ def floor(dxf: str, work: str, timeout: float):
                 str(CHORD_TOL)], env, work, timeout)
 
 
-def table(rows) -> None:
-    print(f"{'case':34} {'tree':6} {'ours s':>8} {'floor s':>8} {'ratio':>6} {'MB':>7}  status",
+def header() -> None:
+    print(f"{'case':46} {'tree':6} {'ours s':>8} {'floor s':>8} {'ratio':>6} {'MB':>7}  status",
           flush=True)
 
 
 def row(case: str, tree: str, cpu: float, fl: float | None, mb: float, st: str) -> None:
     fs = f"{fl:8.2f}" if fl else f"{'-':>8}"
     ratio = f"{cpu / fl:6.1f}" if fl else f"{'-':>6}"
-    print(f"{case:34} {tree:6} {cpu:8.2f} {fs} {ratio} {mb:7.0f}  {st}", flush=True)
+    print(f"{case:46} {tree:6} {cpu:8.2f} {fs} {ratio} {mb:7.0f}  {st}", flush=True)
 
 
 def main() -> None:
@@ -279,7 +282,7 @@ def main() -> None:
     extra = ["--budget", f"{a.budget:g}"] if a.budget else []
     work = tempfile.mkdtemp(prefix="aidl-perforated-")
     print(f"# CPU seconds of each fresh process (user + system), peak RSS; files in {work}")
-    table(None)
+    header()
 
     def commands(case: str, fname: str, fl: float | None, render=True) -> None:
         for t in trees:
@@ -290,7 +293,7 @@ def main() -> None:
             for what, cmd in todo:
                 cpu, mb, st, _ = run(cmd, t.env, work, a.timeout)
                 row(f"{case} {what}", t.label, cpu, fl, mb, st)
-                if st == "E0304" and a.rerun and not a.budget:
+                if st.startswith("E0304") and a.rerun and not a.budget:
                     cpu, mb, st, _ = run(cmd + ["--budget", f"{a.rerun:g}"], t.env, work,
                                          a.timeout)
                     row(f"{case} {what} --budget {a.rerun:g}", t.label, cpu, fl, mb, st)
@@ -339,12 +342,16 @@ def main() -> None:
             name = f"{label}.aidl"
             pathlib.Path(work, name).write_text(src)
             for t in trees:
-                cpu, mb, st, text = run(t.aidl("render", name, "--layout", "sheet", "-o",
-                                               f"{label}-{t.label}.svg", *extra),
-                                        t.env, work, a.timeout)
-                m = re.search(r"laid out (\d+) parts on (\d+) sheet", text)
-                row(f"{label} --layout sheet", t.label, cpu, None, mb,
-                    st + (f", {m.group(1)} parts on {m.group(2)} sheet(s)" if m else ""))
+                cmd = t.aidl("render", name, "--layout", "sheet", "-o", f"{label}-{t.label}.svg",
+                             *extra)
+                for more in ([], ["--budget", f"{a.rerun:g}"]):
+                    cpu, mb, st, text = run(cmd + more, t.env, work, a.timeout)
+                    m = re.search(r"laid out (\d+) parts on (\d+) sheet", text)
+                    row(f"{label} --layout sheet" + (" --budget %g" % a.rerun if more else ""),
+                        t.label, cpu, None, mb,
+                        st + (f", {m.group(1)} parts on {m.group(2)} sheet(s)" if m else ""))
+                    if not st.startswith("E0304") or not a.rerun or a.budget:
+                        break
 
 
 if __name__ == "__main__":
