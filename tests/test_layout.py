@@ -521,7 +521,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
         nested.append(len(a[0]))
         return real_nest(*a, **kw)
     monkeypatch.setattr(layout, "_nest", nest)
-    soon = Deadline(time.monotonic() + 0.5 * nest_seconds(n, n), DEFAULT_BUDGET)
+    soon = Deadline(time.monotonic() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
     with pytest.raises(OutputError) as e:
         plan(out, deadline=soon)
     assert nested == []                           # refused before spyrrow ran

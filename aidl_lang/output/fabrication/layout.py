@@ -302,18 +302,24 @@ def _fits(pts, w: float, h: float, angles) -> bool:
 
 
 # spyrrow's first packing (no time to improve) costs about the same for every shape it is
-# given (prepared for its collision checks: 2.5 ms for a rectangle, 16 ms for a part of arcs,
-# CPU on the shared 2-core test machine) and less for each further copy of a shape (0.5 ms),
-# linear in the parts (250 to 1,000); each sheet's nesting packs every part not yet on a
-# sheet.  Low estimates, so that only what surely cannot end in time is refused
-NEST_SECONDS_PER_SHAPE = 1e-3
+# given, growing with its vertices (prepared for its collision checks; CPU on the shared
+# 2-core test machine, 200 shapes: 1.6 ms at 4 vertices, 8.4 ms at 16, 39 ms at 64, 61 ms at
+# 256), and less for each further copy of a shape (0.5 to 2 ms); linear in the parts (250 to
+# 1,000).  Each sheet's nesting packs every part not yet on a sheet.  Low estimates (about a
+# half to a sixth of those), so that only what surely cannot end in time is refused
+NEST_SECONDS_PER_SHAPE = 5e-4
+NEST_SECONDS_PER_VERTEX = 1e-4          # of each shape, up to NEST_VERTICES
+NEST_VERTICES = 256
 NEST_SECONDS_PER_COPY = 2e-4
 
 
-def nest_seconds(shapes: int, parts: int, seconds: float = 0.0) -> float:
-    """A low estimate of one nesting of ``parts`` parts of ``shapes`` different outer outlines
-    (the rest copies): seconds; ``seconds``, the packer's time to improve, on top."""
-    return seconds + NEST_SECONDS_PER_SHAPE * shapes + NEST_SECONDS_PER_COPY * (parts - shapes)
+def nest_seconds(vertices: list[int], parts: int, seconds: float = 0.0) -> float:
+    """A low estimate of one nesting, in seconds: ``vertices``, the vertex count of each
+    different outer outline given to the packer; ``parts``, the parts in all (the rest are
+    copies); ``seconds``, the packer's time to improve, on top."""
+    return (seconds + NEST_SECONDS_PER_SHAPE * len(vertices)
+            + NEST_SECONDS_PER_VERTEX * sum(min(v, NEST_VERTICES) for v in vertices)
+            + NEST_SECONDS_PER_COPY * (parts - len(vertices)))
 
 
 def _assembly(output: Output, solids: list):
@@ -439,13 +445,13 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     for k in shapes:
         groups.setdefault(solids[int(k)].thickness, {})[k] = members[k]
 
-    def check(n: int, parts: int) -> None:
+    def check(ids: list, parts: int) -> None:
         if deadline is None:
             return
         from ...limits import OutOfBudget
         try:
             deadline.check("the layout", _assembly(output, solids),
-                           nest_seconds(n, parts, seconds))
+                           nest_seconds([len(shapes[k]) for k in ids], parts, seconds))
         except OutOfBudget as ex:
             ex.hint = ("each sheet's nesting packs every part not yet placed: lay out fewer "
                        "parts at a time (one assembly per run), or raise the budget with "
@@ -463,13 +469,14 @@ def _sheets(shapes: dict, members: dict, about: dict, Hu: float, Wu: float, inse
     """Sheets for the parts ``members`` (shape id -> the indices of the parts of that grown
     outline, ``shapes``: id -> points; ``about``: str(index) -> the point of the part that
     the outline's origin stands for): nest in the strip, keep what ends within the sheet's
-    usable ``Wu`` x ``Hu``, nest the rest again on the next sheet.  ``check(n, parts)`` is
-    called before each nesting of ``parts`` parts of ``n`` shapes (it raises to refuse it)."""
+    usable ``Wu`` x ``Hu``, nest the rest again on the next sheet.  ``check(ids, parts)`` is
+    called before each nesting of ``parts`` parts of the shapes ``ids`` (it raises to refuse
+    it)."""
     sheets: list[list[tuple[int, Motion]]] = []
     left = {k: list(v) for k, v in members.items()}
     while left:
         if check is not None:
-            check(len(left), sum(len(v) for v in left.values()))
+            check(list(left), sum(len(v) for v in left.values()))
         placed = _nest({k: shapes[k] for k in left}, Hu, rotate, seconds, seed,
                        {k: len(v) for k, v in left.items()})
         here, taken = [], {k: 0 for k in left}
