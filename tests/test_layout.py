@@ -498,16 +498,18 @@ def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys, cp
 @pytest.mark.timing
 def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypatch):
     """spyrrow cannot be stopped: 2,000 parts took 20 s past the 15 s budget and were blamed
-    on the SVG writer.  The nesting is estimated (parts²) and refused as "the layout"."""
+    on the SVG writer.  The nesting is estimated (its shapes and parts: ``nest_seconds``) and
+    refused as "the layout"."""
     import time
     from aidl_lang.limits import DEFAULT_BUDGET, Deadline
     from aidl_lang.output import build
-    from aidl_lang.output.fabrication.layout import NEST_SECONDS_PER_PAIR, plan
+    from aidl_lang.output.fabrication.layout import nest_seconds, plan
     from aidl_lang.output.part.part import OutputError
     from aidl_lang.pipeline import compile_source, report_out_of_budget
     n = 120
-    rows = "\n".join(f"    solid p{i} {{ body = Rectangle(center=({i * 30}, 0), width=20, "
-                     f"height=10) }}" for i in range(n))
+    # each part a shape of its own (no copies: widths 20.0, 20.1, ...)
+    rows = "\n".join(f"    solid p{i} {{ body = Rectangle(center=({i * 30}, 0), "
+                     f"width={20 + i / 10:g}, height=10) }}" for i in range(n))
     res = compile_source(f"units mm\nassembly parts {{\n{rows}\n}}\n", "many.aidl")
     assert res.ok
     out = build(res.drawing, res.model.root.name)
@@ -519,7 +521,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
         nested.append(len(a[0]))
         return real_nest(*a, **kw)
     monkeypatch.setattr(layout, "_nest", nest)
-    soon = Deadline(time.monotonic() + 0.5 * NEST_SECONDS_PER_PAIR * n * n, DEFAULT_BUDGET)
+    soon = Deadline(time.monotonic() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
     with pytest.raises(OutputError) as e:
         plan(out, deadline=soon)
     assert nested == []                           # refused before spyrrow ran
@@ -533,3 +535,52 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     few = build(compile_source("units mm\nassembly parts {\n" + "\n".join(rows.split("\n")[:3])
                                + "\n}\n", "few.aidl").drawing, "model")
     assert sum(len(s) for s in plan(few, deadline=later)) == 3
+
+
+COPIES = """units mm
+assembly a {
+  for i in range(1000) {
+    solid s {
+      r = Rectangle(center=(i * 12, 0), width=10, height=6)
+      hole h { c = Circle(center=(i * 12, 0), radius=1.5) }
+    }
+  }
+}
+"""
+
+
+@pytest.mark.timing
+def test_a_sheet_of_1000_copies_is_laid_out_within_the_default_budget(tmp_path, monkeypatch,
+                                                                       capsys, cpu_clock):
+    """Issue 74: 1,000 copies of a 10 x 6 mm plate were refused before nesting (E0304: the
+    nesting estimated at 1.5e-4 s x parts² = 150 s), and given to the packer as 1,000 shapes
+    it took 2.7 s of CPU.  Copies are now one shape with a demand of 1,000 (prepared once:
+    0.6 s) and the estimate is linear in shapes and parts: `aidl render --layout sheet` ends
+    ok within the default budget (counted in CPU seconds, ``cpu_clock``), one nesting of one
+    shape, every part on the sheet, the gap kept (the DXF re-read)."""
+    from shapely import STRtree
+    from aidl_lang.output.fabrication import layout
+    given = []
+    real = layout._nest
+
+    def nest(shapes, height, angles, seconds, seed, demand=None):
+        given.append((len(shapes), sum(demand.values()) if demand else len(shapes)))
+        return real(shapes, height, angles, seconds, seed, demand)
+    monkeypatch.setattr(layout, "_nest", nest)
+    prog = write(tmp_path, "copies", COPIES)
+    out = tmp_path / "sheet.dxf"
+    assert main(["render", str(prog), "--layout", "sheet", "-o", str(out)]) == 0, \
+        capsys.readouterr().err
+    assert "laid out 1000 parts on 1 sheet of 600 x 400 mm" in capsys.readouterr().out
+    assert given == [(1, 1000)]                 # one shape, 1,000 copies, one nesting
+    parts = dxf_parts(out)
+    assert len(parts) == 1000
+    polys = list(parts.values())
+    sheet = shapely_box(0, 0, 600, 400)
+    hole = math.pi * 1.5 ** 2
+    for p in polys:
+        assert sheet.contains(p) and len(p.interiors) == 1
+        assert p.area == pytest.approx(60 - hole, abs=1e-3)    # the hole sampled
+    tree = STRtree(polys)
+    near = tree.query(polys, predicate="dwithin", distance=3.0 - 1e-6)
+    assert [(i, j) for i, j in near.T if i < j] == []           # 3 mm apart, no overlap

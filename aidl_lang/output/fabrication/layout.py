@@ -241,13 +241,19 @@ def parse_rotate(text: str):
     return tuple(dict.fromkeys(out))
 
 
-def _outline(p: PartOutline, grow: float):
+def _outer(p: PartOutline) -> list:
+    """The part's outer loops as N x 2 arrays of points on the exact curves (mm)."""
+    outer = [lp.points() for lp in p.loops if not lp.is_hole]
+    return [q for q in outer if len(q) >= 3]
+
+
+def _outline(p: PartOutline, grow: float, outer=None):
     """The part's outer outline grown by ``grow`` mm, as an N x 2 array of points that
-    contains the exact curves (one outline: the hull when the part has several)."""
+    contains the exact curves (one outline: the hull when the part has several);
+    ``outer``: :func:`_outer` of the part, when it is at hand."""
     import manifold3d as mf
     import numpy as np
-    outer = [lp.points().tolist() for lp in p.loops if not lp.is_hole]
-    outer = [q for q in outer if len(q) >= 3]
+    outer = [q.tolist() for q in (_outer(p) if outer is None else outer)]
     cs = mf.CrossSection(outer, mf.FillRule.NonZero)
     if len(outer) > 1:
         cs = cs.hull()
@@ -257,6 +263,26 @@ def _outline(p: PartOutline, grow: float):
     if len(polys) > 1:              # several pieces: their hull holds them all
         best = np.asarray(mf.CrossSection(polys, mf.FillRule.NonZero).hull().to_polygons()[0])
     return best
+
+
+# two parts whose outer outlines, moved to a common corner, agree to COPY_TOL mm are copies:
+# the packer is given the first one's grown outline once, with a demand of how many there are
+# (far below SAFETY, which the grown outline holds beyond the exact curves)
+COPY_TOL = 1e-6
+
+
+def _copy_key(p: PartOutline, outer: list):
+    """(key, corner): parts of equal keys are copies of one outer outline, each moved by
+    the difference of their ``corner`` (the lowest x and y of its outline, mm); the key
+    holds the thickness too (a sheet holds one material)."""
+    import numpy as np
+    if not outer:
+        return None, (0.0, 0.0)
+    allpts = np.concatenate(outer)
+    corner = allpts.min(axis=0)
+    key = (p.thickness, tuple(len(q) for q in outer),
+           np.round((allpts - corner) / COPY_TOL).astype(np.int64).tobytes())
+    return key, (float(corner[0]), float(corner[1]))
 
 
 def _shoelace(q) -> float:
@@ -275,10 +301,25 @@ def _fits(pts, w: float, h: float, angles) -> bool:
     return False
 
 
-# spyrrow's first packing (no time to improve) grows as the square of the parts: 100 parts
-# 4 s, 300 parts 33 s on the shared 2-core test machine (benchmarks/layout.py --parts N);
-# a low estimate, so that only what surely cannot end in time is refused
-NEST_SECONDS_PER_PAIR = 1.5e-4
+# spyrrow's first packing (no time to improve) costs about the same for every shape it is
+# given, growing with its vertices (prepared for its collision checks; CPU on the shared
+# 2-core test machine, 200 shapes: 1.6 ms at 4 vertices, 8.4 ms at 16, 39 ms at 64, 61 ms at
+# 256), and less for each further copy of a shape (0.5 to 2 ms); linear in the parts (250 to
+# 1,000).  Each sheet's nesting packs every part not yet on a sheet.  Low estimates (about a
+# half to a sixth of those), so that only what surely cannot end in time is refused
+NEST_SECONDS_PER_SHAPE = 5e-4
+NEST_SECONDS_PER_VERTEX = 1e-4          # of each shape, up to NEST_VERTICES
+NEST_VERTICES = 256
+NEST_SECONDS_PER_COPY = 2e-4
+
+
+def nest_seconds(vertices: list[int], parts: int, seconds: float = 0.0) -> float:
+    """A low estimate of one nesting, in seconds: ``vertices``, the vertex count of each
+    different outer outline given to the packer; ``parts``, the parts in all (the rest are
+    copies); ``seconds``, the packer's time to improve, on top."""
+    return (seconds + NEST_SECONDS_PER_SHAPE * len(vertices)
+            + NEST_SECONDS_PER_VERTEX * sum(min(v, NEST_VERTICES) for v in vertices)
+            + NEST_SECONDS_PER_COPY * (parts - len(vertices)))
 
 
 def _assembly(output: Output, solids: list):
@@ -291,11 +332,14 @@ def _assembly(output: Output, solids: list):
     return s
 
 
-def _nest(shapes: dict, height: float, angles, seconds: int, seed: int):
-    """spyrrow's strip packing of ``shapes`` (id -> points) in a strip ``height`` high:
-    id -> (rotation in degrees, translation)."""
+def _nest(shapes: dict, height: float, angles, seconds: int, seed: int,
+          demand: dict | None = None) -> list:
+    """spyrrow's strip packing of ``shapes`` (id -> points; ``demand``: id -> how many
+    copies, 1 when not given) in a strip ``height`` high: (id, rotation in degrees,
+    translation) for each copy placed, in the packer's order."""
     import spyrrow
-    items = [spyrrow.Item(k, [tuple(map(float, q)) for q in pts], 1,
+    items = [spyrrow.Item(k, [tuple(map(float, q)) for q in pts],
+                          1 if demand is None else demand[k],
                           None if angles is None else list(angles))
              for k, pts in shapes.items()]
     inst = spyrrow.StripPackingInstance("aidl", float(height), items)
@@ -307,8 +351,8 @@ def _nest(shapes: dict, height: float, angles, seconds: int, seed: int):
                                          exploration_time=0, compression_time=0, seed=seed,
                                          num_workers=1)
     sol = inst.solve(cfg)
-    return {it.id: (float(it.rotation), tuple(map(float, it.translation)))
-            for it in sol.placed_items}
+    return [(it.id, float(it.rotation), tuple(map(float, it.translation)))
+            for it in sol.placed_items]
 
 
 def lay_out(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
@@ -347,11 +391,13 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
     from the sheet's edges, turned only by the angles of ``rotate`` (degrees; None: any
     angle).  A sheet holds parts of one thickness (``thickness``/``kerf`` statements: one
-    material per sheet), the thinnest first.  ``seconds``: the packer's time to improve its first packing (0: the first
-    packing, a fraction of a second).  Raises :class:`MissingDependency` without spyrrow and
-    :class:`LayoutError` for a part larger than the sheet.  ``deadline`` (a
+    material per sheet), the thinnest first.  Copies (parts whose outer outlines agree, moved,
+    to :data:`COPY_TOL`) are one shape for the packer with their number as its demand, so 1,000
+    copies are prepared once.  ``seconds``: the packer's time to improve its first packing (0:
+    the first packing, a fraction of a second).  Raises :class:`MissingDependency` without
+    spyrrow and :class:`LayoutError` for a part larger than the sheet.  ``deadline`` (a
     :class:`~aidl_lang.limits.Deadline`, or None): spyrrow cannot be stopped once started, so
-    each nesting is estimated first (:data:`NEST_SECONDS_PER_PAIR` x parts², plus
+    each nesting is estimated first (:func:`nest_seconds` of its shapes and parts, plus
     ``seconds``) and refused when it would end past the deadline (an :class:`OutputError`
     whose ``budget`` names "the layout" and the assembly)."""
     try:
@@ -363,9 +409,19 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     inset = gap / 2
     Wu, Hu = W - 2 * inset, H - 2 * inset
     solids = [p for p in output.parts if p.kind == "solid"]
-    shapes, about = {}, {}
+    # copies (one outer outline moved) are one shape for the packer, with their number
+    shapes, about, members, first_of = {}, {}, {}, {}
     for i, p in enumerate(solids):
-        pts = _outline(p, gap / 2 + SAFETY)
+        outer = _outer(p)
+        key, corner = _copy_key(p, outer)
+        first = first_of.get(key) if key is not None else None
+        if first is not None:
+            j, c0 = first
+            cx, cy = about[str(j)]
+            about[str(i)] = (cx + corner[0] - c0[0], cy + corner[1] - c0[1])
+            members[str(j)].append(i)
+            continue
+        pts = _outline(p, gap / 2 + SAFETY, outer)
         c = ((pts[:, 0].min() + pts[:, 0].max()) / 2, (pts[:, 1].min() + pts[:, 1].max()) / 2)
         pts = pts - c
         if not _fits(pts, Wu, Hu, rotate):
@@ -379,55 +435,70 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
                    ", a smaller --gap, or --rotate any"))
         shapes[str(i)] = pts
         about[str(i)] = c
+        members[str(i)] = [i]
+        if key is not None:
+            first_of[key] = (i, corner)
     sheets: list[list[tuple[int, Motion]]] = []
     # one material per sheet: the parts of each thickness are nested on sheets of their own
     # (thinnest first; parts of no stated thickness last)
     groups: dict = {}
-    for i, p in enumerate(solids):
-        groups.setdefault(p.thickness, {})[str(i)] = shapes[str(i)]
-    def check(n: int) -> None:
+    for k in shapes:
+        groups.setdefault(solids[int(k)].thickness, {})[k] = members[k]
+
+    def check(ids: list, parts: int) -> None:
         if deadline is None:
             return
         from ...limits import OutOfBudget
         try:
             deadline.check("the layout", _assembly(output, solids),
-                           seconds + NEST_SECONDS_PER_PAIR * n * n)
+                           nest_seconds([len(shapes[k]) for k in ids], parts, seconds))
         except OutOfBudget as ex:
-            ex.hint = ("nesting grows as the square of the parts: lay out fewer parts at a "
-                       "time (one assembly per run), or raise the budget with `--budget 2`")
-            raise OutputError(f"the nesting of {n} parts would run past the budget "
+            ex.hint = ("each sheet's nesting packs every part not yet placed: lay out fewer "
+                       "parts at a time (one assembly per run), or raise the budget with "
+                       "`--budget 2`")
+            raise OutputError(f"the nesting of {parts} parts would run past the budget "
                               f"({ex.what}); lay out fewer parts at a time or raise the budget "
                               "(`--budget 2`)", ex) from None
     for t in sorted(groups, key=lambda t: (t is None, t or 0.0)):
-        sheets += _sheets(groups[t], about, Hu, Wu, inset, rotate, seconds, seed, check)
+        sheets += _sheets(shapes, groups[t], about, Hu, Wu, inset, rotate, seconds, seed, check)
     return [{solids[i].name: m for i, m in placed} for placed in sheets]
 
 
-def _sheets(shapes: dict, about: dict, Hu: float, Wu: float, inset: float, rotate,
-            seconds: int, seed: int, check=None) -> list[list[tuple[int, Motion]]]:
-    """Sheets for ``shapes`` (id -> grown outline points): nest in the strip, keep what ends
-    within the sheet's usable ``Wu`` x ``Hu``, nest the rest again on the next sheet.
-    ``check(n)`` is called before each nesting of ``n`` parts (it raises to refuse it)."""
+def _sheets(shapes: dict, members: dict, about: dict, Hu: float, Wu: float, inset: float,
+            rotate, seconds: int, seed: int, check=None) -> list[list[tuple[int, Motion]]]:
+    """Sheets for the parts ``members`` (shape id -> the indices of the parts of that grown
+    outline, ``shapes``: id -> points; ``about``: str(index) -> the point of the part that
+    the outline's origin stands for): nest in the strip, keep what ends within the sheet's
+    usable ``Wu`` x ``Hu``, nest the rest again on the next sheet.  ``check(ids, parts)`` is
+    called before each nesting of ``parts`` parts of the shapes ``ids`` (it raises to refuse
+    it)."""
     sheets: list[list[tuple[int, Motion]]] = []
-    left = dict(shapes)
+    left = {k: list(v) for k, v in members.items()}
     while left:
         if check is not None:
-            check(len(left))
-        placed = _nest(left, Hu, rotate, seconds, seed)
-        here = []
-        for k, (deg, (tx, ty)) in placed.items():
+            check(list(left), sum(len(v) for v in left.values()))
+        placed = _nest({k: shapes[k] for k in left}, Hu, rotate, seconds, seed,
+                       {k: len(v) for k, v in left.items()})
+        here, taken = [], {k: 0 for k in left}
+        for k, deg, (tx, ty) in placed:
+            i = left[k][taken[k]]            # the copies of a shape in the order placed
+            taken[k] += 1
             cs, sn = _rotation(deg)
-            pts = left[k]
+            pts = shapes[k]
             xs = cs * pts[:, 0] - sn * pts[:, 1] + tx
             ys = sn * pts[:, 0] + cs * pts[:, 1] + ty
             if xs.max() <= Wu + 1e-3 and ys.max() <= Hu + 1e-3 and \
                     xs.min() >= -1e-3 and ys.min() >= -1e-3:
-                here.append((int(k), Motion(deg, about[k], (tx + inset, ty + inset))))
+                here.append((i, k, Motion(deg, about[str(i)], (tx + inset, ty + inset))))
         if not here:                   # nothing ended inside: the largest part on its own
-            k = max(left, key=lambda k: abs(_shoelace(left[k])))
-            deg, (tx, ty) = _nest({k: left[k]}, Hu, rotate, seconds, seed)[k]
-            here = [(int(k), Motion(deg, about[k], (tx + inset, ty + inset)))]
-        for i, _ in here:
-            del left[str(i)]
-        sheets.append(sorted(here, key=lambda t: t[0]))
+            k = max(left, key=lambda k: abs(_shoelace(shapes[k])))
+            _, deg, (tx, ty) = _nest({k: shapes[k]}, Hu, rotate, seconds, seed)[0]
+            i = left[k][0]
+            here = [(i, k, Motion(deg, about[str(i)], (tx + inset, ty + inset)))]
+        gone = {i for i, _, _ in here}
+        for k in {k for _, k, _ in here}:
+            left[k] = [i for i in left[k] if i not in gone]
+            if not left[k]:
+                del left[k]
+        sheets.append(sorted(((i, m) for i, _, m in here), key=lambda t: t[0]))
     return sheets

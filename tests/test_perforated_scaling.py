@@ -1,0 +1,115 @@
+"""Issue 74: a perforated sheet costs each stage work in proportion to its holes, end to end.
+
+A panel of N round holes goes through the real pipeline (``compile_source``: reading, the
+interpreter, the solver, the booleans, the final-part checks; ``build``; the DXF writer) under
+cProfile, at N and at 4 N holes, read from a DXF by ``Drawing2D`` and written as an AIDL loop.
+The Python calls of each stage (grouped by the module that runs them; ezdxf's reading and
+writing as a stage of its own) must grow about 4 times (linear; constant work makes it less),
+never the 16 times of a pass over every pair of holes; the whole run the same.  On main before
+issue 74 (500 -> 2,000 holes) every stage grew 3.5-4.0 times, the whole 3.1 (DXF) and 3.8
+(loop).  Array work (NumPy, Manifold) is not a Python call: a stage made array-shaped counts
+few calls, and its time is in the benchmark.  The result is checked too: the DXF
+written holds the outline and every hole as an exact CIRCLE (re-read by ezdxf).
+
+Counts, not time: the figures do not depend on the machine's load.  Times are in
+``benchmarks/perforated.py``.
+"""
+from __future__ import annotations
+
+import cProfile
+import io
+import pstats
+from collections import Counter
+
+import ezdxf
+import pytest
+
+from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.output import Options, build, encode
+from aidl_lang.pipeline import compile_source, run_deep
+from benchmarks.perforated import grid, panel_aidl, reader, write_dxf
+
+# (folder in aidl_lang/, stage); the first that matches names a function's stage
+STAGES = [("aidl_lang/drawing/", "reading"), ("aidl_lang/interp", "interpreter"),
+          ("aidl_lang/solver/", "solver"), ("aidl_lang/geometry/", "geometry"),
+          ("aidl_lang/output/part/", "booleans"), ("aidl_lang/output/checks/", "checks"),
+          ("aidl_lang/output/writers/", "writers"), ("aidl_lang/", "other"),
+          ("/ezdxf/", "ezdxf")]
+# linear work grows 4 times from N to 4 N holes (less with the fixed work of a compile); a
+# pass over pairs grows 16 times, and N log N Python (a sort with a key, a tree) ~4.9 times
+GROWTH = 4.6
+FEW = 200                   # calls at N below which a stage counts as FEW
+SMALL = (25, 20)            # 500 holes; 4 times: (50, 40), 2,000 holes
+
+
+def _stage(filename: str) -> str | None:
+    f = filename.replace("\\", "/")
+    for part, name in STAGES:
+        if part in f:
+            return name
+    return None
+
+
+def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
+    """Calls by stage of compiling and writing the panel to DXF; the number of holes; the DXF."""
+    W, H, centres = grid(nx, ny)
+    folder = tmp_path / f"{how}{nx}x{ny}"
+    folder.mkdir()
+    if how == "dxf":
+        write_dxf(folder / "panel.dxf",
+                  [(-W / 2, -H / 2), (W / 2, -H / 2), (W / 2, H / 2), (-W / 2, H / 2)],
+                  [(x, y, 2.0) for x, y in centres])
+        src = reader("panel.dxf")
+    else:
+        src = panel_aidl(nx, ny)
+    path = folder / "panel.aidl"
+    path.write_text(src)
+    pr = cProfile.Profile()
+
+    def work():
+        # on the compile's own thread (run_deep: cProfile sees one thread), where the
+        # compile then runs as it is, without a thread of its own
+        pr.enable()
+        try:
+            # the wall-time budget scaled: a loaded machine under cProfile may take long
+            res = compile_source(src, str(path), budget=DEFAULT_BUDGET.scaled(20))
+            assert res.ok, [d.message for d in res.sink.items]
+            out = build(res.drawing, res.model.root.name, deadline=res.deadline)
+            return encode(out, ".dxf", Options())
+        finally:
+            pr.disable()
+    data = run_deep(work)
+    calls: Counter = Counter()
+    for (filename, _, _), (_, nc, _, _, _) in pstats.Stats(pr, stream=io.StringIO()).stats.items():
+        stage = _stage(filename)
+        calls["all"] += nc
+        if stage is not None:
+            calls[stage] += nc
+    return calls, len(centres), data
+
+
+def _holes(data: bytes) -> tuple[int, list[float], int]:
+    """Circles, their radii, and closed outlines of the DXF (re-read by ezdxf)."""
+    doc = ezdxf.read(io.StringIO(data.decode()))
+    msp = doc.modelspace()
+    circles = list(msp.query("CIRCLE"))
+    outlines = len(msp.query("LWPOLYLINE")) + len(msp.query("LINE")) // 4
+    return len(circles), sorted({round(c.dxf.radius, 9) for c in circles}), outlines
+
+
+@pytest.mark.parametrize("how", ["dxf", "loop"])
+def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
+    """500 -> 2,000 holes: every stage's Python calls grow at most GROWTH times (linear)."""
+    small, n1, d1 = _run(tmp_path, *SMALL, how)
+    large, n4, d4 = _run(tmp_path, SMALL[0] * 2, SMALL[1] * 2, how)
+    assert (n1, n4) == (500, 2000)
+    for data, n in ((d1, n1), (d4, n4)):
+        circles, radii, outlines = _holes(data)
+        assert circles == n and radii == [2.0] and outlines >= 1
+    # a stage of fewer than FEW calls (array work, or none) may grow to GROWTH x FEW
+    grew = {s: round(large[s] / max(small[s], FEW), 2) for s in large}
+    worst = {s: g for s, g in grew.items() if g > GROWTH}
+    assert not worst, (f"stages past {GROWTH}x from {n1} to {n4} holes: {worst}; calls: "
+                       + str({s: (small[s], large[s]) for s in large}))
+    # the grouping names the stages (a rename of the folders would leave them out)
+    assert {"all", "geometry", "booleans"} <= set(large), large
