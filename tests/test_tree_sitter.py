@@ -1,4 +1,4 @@
-"""tree-sitter-aidl (editors/tree-sitter) against the reference parser.
+"""tree-sitter-aidl-cad (editors/tree-sitter) against the reference parser.
 
 The grammar is compiled from the committed ``src/parser.c`` and ``src/scanner.c`` with the C
 compiler (cached in the temporary directory by content) and loaded with the ``tree-sitter``

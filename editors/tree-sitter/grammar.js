@@ -52,7 +52,7 @@ function statements($, simple, compound) {
 }
 
 export default grammar({
-  name: 'aidl',
+  name: 'aidl_cad',
 
   word: $ => $.identifier,
 

@@ -1,5 +1,5 @@
 /*
- * External scanner of tree-sitter-aidl (Apache-2.0). It reads the four things of AIDL that
+ * External scanner of tree-sitter-aidl-cad (Apache-2.0). It reads the four things of AIDL that
  * depend on more than the next few characters (grammar/aidl.lark and the post-lexer and
  * comment masking of aidl_lang/parser.py):
  *
@@ -34,14 +34,14 @@ enum TokenType {
 
 #define REST_MAX 2048
 
-void *tree_sitter_aidl_external_scanner_create(void) { return NULL; }
-void tree_sitter_aidl_external_scanner_destroy(void *payload) { (void)payload; }
-unsigned tree_sitter_aidl_external_scanner_serialize(void *payload, char *buffer) {
+void *tree_sitter_aidl_cad_external_scanner_create(void) { return NULL; }
+void tree_sitter_aidl_cad_external_scanner_destroy(void *payload) { (void)payload; }
+unsigned tree_sitter_aidl_cad_external_scanner_serialize(void *payload, char *buffer) {
   (void)payload;
   (void)buffer;
   return 0;
 }
-void tree_sitter_aidl_external_scanner_deserialize(void *payload, const char *buffer,
+void tree_sitter_aidl_cad_external_scanner_deserialize(void *payload, const char *buffer,
                                                    unsigned length) {
   (void)payload;
   (void)buffer;
@@ -220,7 +220,7 @@ static bool is_else(TSLexer *lexer) {
   return false;
 }
 
-bool tree_sitter_aidl_external_scanner_scan(void *payload, TSLexer *lexer,
+bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
                                             const bool *valid_symbols) {
   (void)payload;
   bool recovering = valid_symbols[ERROR_SENTINEL];

@@ -15,9 +15,8 @@
 -- vim.treesitter.foldexpr; parser ABI 13-15).
 local M = {}
 
-M.lang = 'aidl_cad'          -- the parser's name (tree_sitter_aidl_cad), a C identifier
+M.lang = 'aidl_cad'          -- the grammar's and the parser's name (symbol tree_sitter_aidl_cad)
 M.filetype = 'aidl-cad'      -- the filetype it serves
-M.symbol = 'aidl'            -- the grammar's own name, when its parser is tree_sitter_aidl
 
 local ts = vim.treesitter
 
@@ -34,15 +33,9 @@ end
 function M.available()
   if ts.language and ts.language.add then                  -- 0.9+
     -- 0.10 raises on a missing parser and returns nothing on success; 0.11 returns true,
-    -- or nil and the reason. A parser built from a grammar named `aidl` has the symbol
-    -- tree_sitter_aidl: tried next (0.10+ take the symbol's name apart from the language's)
-    for _, opts in ipairs({ {}, { symbol_name = M.symbol } }) do
-      local ok, res, err = pcall(ts.language.add, M.lang, opts)
-      if ok and (res ~= nil or err == nil) then
-        return true
-      end
-    end
-    return false
+    -- or nil and the reason. The grammar is named aidl_cad: its symbol is the default one.
+    local ok, res, err = pcall(ts.language.add, M.lang)
+    return ok and (res ~= nil or err == nil)
   end
   local require_language = ts.require_language or (ts.language and ts.language.require_language)
   if not require_language then
