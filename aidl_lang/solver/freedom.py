@@ -20,10 +20,11 @@ import time
 
 import numpy as np
 
+from ..memory import gc_paused
 from ..records import Compared
 from .arrays import unique
 from .diagnose import (DENSE_CELLS, NOT_COUNTED_TIME, _block_rank, _dense_block_rank,
-                       _dense_cut, null_support)
+                       _dense_cut, null_support, used_free_columns)
 from .sliding import Sliding, sliding_text
 
 
@@ -58,6 +59,11 @@ def degrees_of_freedom(solver, floating: bool = True,
     sparse) and each structure's block is cut out of it: the same entries, bit for bit, as
     the structure's own tape gives (each entry sums the same terms in the same order),
     without compiling or evaluating a tape per structure."""
+    with gc_paused():           # a few small records per structure: no cyclic collections
+        return _degrees_of_freedom(solver, floating, deadline)
+
+
+def _degrees_of_freedom(solver, floating: bool, deadline: float | None) -> list[StructureDof]:
     model = solver.model
     x = solver.x
     out = []
@@ -91,8 +97,11 @@ def degrees_of_freedom(solver, floating: bool = True,
         rows = solver.rows_of([s])
         if touching is not None and s.parent is not None and params:
             rows = touching(s, rows, params)
-        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
-        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        if len(rows):
+            sl = solver.slack[rows]
+            cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        else:                   # no row (a pattern's hole placed by its coordinates)
+            cols = np.array(sorted(set(params)), dtype=np.int64)
         systems.append((s, params, rows, cols))
     whole = None
     if not floating:
@@ -144,6 +153,10 @@ def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floatin
     if not len(cols):
         return StructureDof(s, 0, 0)
     if not len(rows):
+        if not floating:
+            # no row: each axis the content can shift along is one frame move (see below)
+            return StructureDof(s, n_unknowns, _shift_axes(solver, s, params, axis,
+                                                           pinned_axes))
         gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis, pinned_axes)
         if not gauge:
             free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
@@ -224,6 +237,21 @@ def _gauge_shifts(solver, s, J, cols, axis: list, pinned_axes=()) -> list:
     return out
 
 
+def _shift_axes(solver, s, params: list, axis: list, pinned_axes=()) -> int:
+    """How many gauge shifts :func:`_gauge_shifts` finds for a structure ``s`` without rows
+    (``params``: its own unknowns and its children's frames, the columns): one per axis with
+    a column that moves along it, none when ``s``'s frame is not an unknown.  The same count,
+    without building the vectors (a pattern of 20,000 holes asks it 20,000 times)."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return 0
+    axes = {axis[i] for i in solver.own.get(id(s), ())}
+    if s.children:
+        cols = set(params)
+        axes.update(a for c in s.children.values() for a, i in ((0, c.fx), (1, c.fy))
+                    if i in cols)
+    return (0 in axes and 0 not in pinned_axes) + (1 in axes and 1 not in pinned_axes)
+
+
 def _held_by_rigid(model) -> set:
     """The ids of the structures whose inside ``Rigid`` holds: each rigid structure and every
     structure below it (the solver moves them only by the rigid structure's frame,
@@ -257,7 +285,7 @@ def _ancestor_rows(solver, x: np.ndarray):
     model = solver.model
     if not any(s.parent is not None for s in model.structures):
         return None
-    cols = np.flatnonzero(solver.free)
+    cols = used_free_columns(solver)      # the unknowns no row uses meet no row
     if not len(cols):
         return None
     whole = solver.whole
@@ -278,8 +306,20 @@ def _ancestor_rows(solver, x: np.ndarray):
     for a in model.structures:
         if a.children:
             owner[np.asarray(solver.rows_of([a]), dtype=np.int64)] = number[id(a)]
+    # the unknowns some row of a structure with children uses: only they can meet an
+    # ancestor's row (a pattern's holes placed by their coordinates meet none), found for
+    # all columns at once instead of per structure
+    of_entry = np.repeat(np.arange(len(cols)), np.diff(indptr))
+    reached = np.zeros(len(solver.free), dtype=bool)
+    reached[cols[of_entry[owner[np.asarray(indices, dtype=np.int64)] >= 0]]] = True
+    reached = reached.tolist()
 
     def touching(s, rows: np.ndarray, params: list) -> np.ndarray:
+        for i in params:
+            if reached[i]:
+                break
+        else:
+            return rows                 # no row of any parent uses them
         chain = []
         a = s.parent
         while a is not None:
