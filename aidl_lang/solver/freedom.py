@@ -105,7 +105,15 @@ def _degrees_of_freedom(solver, floating: bool, deadline: float | None) -> list[
         systems.append((s, params, rows, cols))
     whole = None
     if not floating:
-        whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
+        # the columns some row uses: the others are zero in every structure's block (a
+        # panel's 20,000 holes' frames against its few rows), left out of each rank
+        used = np.zeros(len(solver.free), dtype=bool)
+        used[used_free_columns(solver)] = True
+        used[solver.slack[solver.slack >= 0]] = True
+        systems = [(s, p, r, c, c[used[c]]) for s, p, r, c in systems]
+        whole = _whole_jacobian(solver, x, [u for s, _, r, c, u in systems if len(r) and len(u)])
+    else:
+        systems = [(s, p, r, c, c) for s, p, r, c in systems]
     held = _held_by_rigid(model)
     pinned = solver.pinned_by
     pinned_axes: dict[int, set] = {}      # id(structure) -> axes of its pinned points
@@ -113,13 +121,13 @@ def _degrees_of_freedom(solver, floating: bool, deadline: float | None) -> list[
     for v, _ in solver.pins:
         if axis[v] >= 0:
             pinned_axes.setdefault(id(owner[v]), set()).add(axis[v])
-    for s, params, rows, cols in systems:
+    for s, params, rows, cols, use in systems:
         if deadline is not None and time.monotonic() > deadline and len(rows) and len(cols) \
                 and id(s) not in held:
             d = StructureDof(s, len(params), -1, why="out of time")
         else:
             d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-                        axis, pinned_axes.get(id(s), ()), deadline)
+                        axis, pinned_axes.get(id(s), ()), deadline, use)
         k = pinned.get(id(s), 0)
         if k:
             # geometry pinned in s's frame (system.pinned) is held by the solver, but it is
@@ -139,10 +147,11 @@ def _drawing_circles(g) -> list:
 
 
 def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-            axis, pinned_axes, deadline) -> StructureDof:
+            axis, pinned_axes, deadline, use=None) -> StructureDof:
     """One structure's :class:`StructureDof` (see :func:`degrees_of_freedom`); ``axis`` and
     ``pinned_axes`` as :func:`_gauge_shifts` takes them, ``deadline`` as
-    :func:`degrees_of_freedom`."""
+    :func:`degrees_of_freedom`; ``use``: the columns of ``cols`` some row uses (the count's
+    Jacobian is over them: the others are zero columns, of no rank), None for all."""
     x = solver.x
     n_unknowns = len(params)
     if id(s) in held:
@@ -171,18 +180,19 @@ def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floatin
                        if moving[pos[i]]})
         return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free)
     if not floating:
-        if len(rows) * len(cols) <= DENSE_CELLS:
+        use = cols if use is None else use
+        if len(rows) * len(use) <= DENSE_CELLS:
             if whole is not None:
-                J = _dense_cut(*whole, rows, cols)
+                J = _dense_cut(*whole, rows, use)
             else:
-                J = solver.tape(rows).jacobian(x, cols, dense=True)
+                J = solver.tape(rows).jacobian(x, use, dense=True)
             rank = _dense_block_rank(J)
         else:
-            J = solver.tape(rows).jacobian(x, cols)
+            J = solver.tape(rows).jacobian(x, use)
             rank = _block_rank(J, deadline)
         if rank < 0:
             return StructureDof(s, n_unknowns, -1, why=_why_not(rank))
-        rank += len(_gauge_shifts(solver, s, J, cols, axis, pinned_axes))
+        rank += _gauge_count(solver, s, J, use, params, axis, pinned_axes)
         return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns))
     J = solver.tape(rows).jacobian(x, cols)
     gauge = _gauge_shifts(solver, s, J, cols, axis, pinned_axes)
@@ -235,6 +245,37 @@ def _gauge_shifts(solver, s, J, cols, axis: list, pinned_axes=()) -> list:
         t[k] = 1.0
         out.append(t)
     return out
+
+
+def _gauge_count(solver, s, J, use: np.ndarray, params: list, axis: list,
+                 pinned_axes=()) -> int:
+    """How many gauge shifts :func:`_gauge_shifts` finds for structure ``s`` whose Jacobian
+    ``J`` is over the columns ``use`` only (the columns rows use; the others of ``params``,
+    its own unknowns and children's frames, are zero columns): a shift along an axis with a
+    column moving along it, that changes no row (its columns in ``use`` sum to zero in every
+    row, within 1e-9 of the largest entry).  The count of the vectors, without them."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return 0
+    pos = {c: k for k, c in enumerate(use.tolist())}
+    own = solver.own.get(id(s), ())
+    cols = set(params)
+    scale = None
+    n = 0
+    for a in (0, 1):
+        if a in pinned_axes:
+            continue
+        moving = [i for i in own if axis[i] == a]
+        moving += [i for i in ((c.fx, c.fy)[a] for c in s.children.values()) if i in cols]
+        if not moving:
+            continue
+        k = [pos[i] for i in moving if i in pos]
+        if J.shape[0] and k:
+            if scale is None:
+                scale = max(1.0, float(abs(J).max()))
+            if np.abs(np.asarray(J[:, k].sum(axis=1), dtype=float)).max() > 1e-9 * scale:
+                continue                # some row sees the shift: not the frame's move
+        n += 1
+    return n
 
 
 def _shift_axes(solver, s, params: list, axis: list, pinned_axes=()) -> int:

@@ -141,11 +141,12 @@ class Solver:
         self.frame: dict[int, list[int]] = {}
         root = model.root
         frame, owners = self.is_frame.tolist(), model.param_owner
-        for i in np.flatnonzero(self.free[:len(owners)]).tolist():
-            owner = owners[i] or root
-            if owner is None:
-                continue
-            (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
+        with gc_paused():          # a list per structure: no cyclic collections meanwhile
+            for i in np.flatnonzero(self.free[:len(owners)]).tolist():
+                owner = owners[i] or root
+                if owner is None:
+                    continue
+                (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
         self._tapes: dict[bytes, Tape] = {}
         self._rows_of: dict[tuple, np.ndarray] = {}
         self.failed: set[int] = set()          # ids of constraints given up on
