@@ -38,12 +38,18 @@ class Expressions:
             return self._e_Name(e)
         if t is A.Num:
             v = e.value
-            if e.unit is None and -1e15 <= v <= 1e15:    # _e_Num of a plain finite number
+            u = e.unit
+            if -1e15 <= v <= 1e15 and (u is None or u in UNITS_LENGTH):
+                # _e_Num of a finite number, plain or a length (`10 mm` in a loop's body)
                 c = _new(Lin)
                 c.terms = {}
-                c.const = float(v)
                 q = _new(Q)                  # Q(c, NUM) without the class call
-                q.expr, q.dim, q.owners = c, NUM, _EMPTY
+                if u is None:
+                    c.const = float(v)
+                    q.expr, q.dim, q.owners = c, NUM, _EMPTY
+                else:
+                    c.const = float(v * UNITS_LENGTH[u])
+                    q.expr, q.dim, q.owners = c, LEN, _EMPTY
                 return q
             return self._e_Num(e)
         key = (type(self), t)

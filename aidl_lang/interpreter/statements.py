@@ -450,16 +450,16 @@ class Statements:
         return child
 
     def _loop_suffix(self) -> str:
-        """``[i]`` per enclosing loop of the current structure body (outermost first)."""
-        idx = []
+        """``[i]`` per enclosing loop of the current structure body (outermost first): the
+        innermost loop iteration's ``loop_suffix``, which holds its enclosing loops' too
+        (:meth:`_for_items`); ``""`` outside a loop."""
         sc = self.scope
         while sc is not None and sc.struct is self.struct and sc.parent is not None:
-            if hasattr(sc, "loop_index"):
-                idx.append(sc.loop_index)
+            suffix = sc.__dict__.get("loop_suffix")
+            if suffix is not None:
+                return suffix
             sc = sc.parent
-        if not idx:                      # not inside a loop: no suffix
-            return ""
-        return "".join(f"[{i}]" for i in reversed(idx))
+        return ""
 
     def _check_new_name(self, name: str, span, struct: Structure) -> None:
         prev = self.scope.vars.get(name)
@@ -558,11 +558,13 @@ class Statements:
             outer.vars[name] = vals
 
     def _for_items(self, st: A.For, items, collected, outer) -> None:
+        base = self._loop_suffix()          # the enclosing loops' indices (self.scope: outer)
         for k, item in enumerate(items):
             self.step(st.span)
             sc = Scope(outer, self.struct, self.file)
             sc.vars[st.var] = item
             sc.loop_index = k
+            sc.loop_suffix = f"{base}[{k}]"
             self.scope = sc
             try:
                 for s in st.body.stmts:

@@ -202,6 +202,19 @@ def _dense_block_rank(J: np.ndarray) -> int:
     return rank
 
 
+def used_free_columns(solver) -> np.ndarray:
+    """The free unknowns (increasing indices, ``int64``) that some row of the solve uses: the
+    only columns of its Jacobian that can hold a non-zero.  A pattern of 20,000 holes placed
+    by their coordinates has 80,000 free unknowns and a handful of rows over a few of them;
+    a Jacobian over the few stays dense and small (NumPy only, no SciPy import) where one
+    over all of them held 6 x 80,000 cells, nearly all zero."""
+    t = solver.whole
+    used = np.zeros(len(solver.free), dtype=bool)
+    used[np.asarray(t.a_col, dtype=np.int64)] = True
+    used[np.asarray(t.l_col, dtype=np.int64)] = True
+    return np.flatnonzero(used & np.asarray(solver.free, dtype=bool))
+
+
 def _pin_closure(solver, rows: np.ndarray, x: np.ndarray):
     """The pinning rows that ``rows`` (solver rows) reach: ``(vars, pin_rows)``, the pinned
     parameters the rows read and every pinned parameter those are computed from (increasing),

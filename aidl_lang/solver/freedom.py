@@ -20,10 +20,11 @@ import time
 
 import numpy as np
 
+from ..memory import gc_paused
 from ..records import Compared
 from .arrays import unique
 from .diagnose import (DENSE_CELLS, NOT_COUNTED_TIME, _block_rank, _dense_block_rank,
-                       _dense_cut, null_support)
+                       _dense_cut, null_support, used_free_columns)
 from .sliding import Sliding, sliding_text
 
 
@@ -58,6 +59,11 @@ def degrees_of_freedom(solver, floating: bool = True,
     sparse) and each structure's block is cut out of it: the same entries, bit for bit, as
     the structure's own tape gives (each entry sums the same terms in the same order),
     without compiling or evaluating a tape per structure."""
+    with gc_paused():           # a few small records per structure: no cyclic collections
+        return _degrees_of_freedom(solver, floating, deadline)
+
+
+def _degrees_of_freedom(solver, floating: bool, deadline: float | None) -> list[StructureDof]:
     model = solver.model
     x = solver.x
     out = []
@@ -91,12 +97,23 @@ def degrees_of_freedom(solver, floating: bool = True,
         rows = solver.rows_of([s])
         if touching is not None and s.parent is not None and params:
             rows = touching(s, rows, params)
-        sl = solver.slack[rows] if len(rows) else np.zeros(0, dtype=np.int64)
-        cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        if len(rows):
+            sl = solver.slack[rows]
+            cols = unique(np.concatenate([np.asarray(params, dtype=np.int64), sl[sl >= 0]]))
+        else:                   # no row (a pattern's hole placed by its coordinates)
+            cols = np.array(sorted(set(params)), dtype=np.int64)
         systems.append((s, params, rows, cols))
     whole = None
     if not floating:
-        whole = _whole_jacobian(solver, x, [c for s, _, r, c in systems if len(r) and len(c)])
+        # the columns some row uses: the others are zero in every structure's block (a
+        # panel's 20,000 holes' frames against its few rows), left out of each rank
+        used = np.zeros(len(solver.free), dtype=bool)
+        used[used_free_columns(solver)] = True
+        used[solver.slack[solver.slack >= 0]] = True
+        systems = [(s, p, r, c, c[used[c]]) for s, p, r, c in systems]
+        whole = _whole_jacobian(solver, x, [u for s, _, r, c, u in systems if len(r) and len(u)])
+    else:
+        systems = [(s, p, r, c, c) for s, p, r, c in systems]
     held = _held_by_rigid(model)
     pinned = solver.pinned_by
     pinned_axes: dict[int, set] = {}      # id(structure) -> axes of its pinned points
@@ -104,13 +121,13 @@ def degrees_of_freedom(solver, floating: bool = True,
     for v, _ in solver.pins:
         if axis[v] >= 0:
             pinned_axes.setdefault(id(owner[v]), set()).add(axis[v])
-    for s, params, rows, cols in systems:
+    for s, params, rows, cols, use in systems:
         if deadline is not None and time.monotonic() > deadline and len(rows) and len(cols) \
                 and id(s) not in held:
             d = StructureDof(s, len(params), -1, why="out of time")
         else:
             d = _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-                        axis, pinned_axes.get(id(s), ()), deadline)
+                        axis, pinned_axes.get(id(s), ()), deadline, use)
         k = pinned.get(id(s), 0)
         if k:
             # geometry pinned in s's frame (system.pinned) is held by the solver, but it is
@@ -130,10 +147,11 @@ def _drawing_circles(g) -> list:
 
 
 def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floating,
-            axis, pinned_axes, deadline) -> StructureDof:
+            axis, pinned_axes, deadline, use=None) -> StructureDof:
     """One structure's :class:`StructureDof` (see :func:`degrees_of_freedom`); ``axis`` and
     ``pinned_axes`` as :func:`_gauge_shifts` takes them, ``deadline`` as
-    :func:`degrees_of_freedom`."""
+    :func:`degrees_of_freedom`; ``use``: the columns of ``cols`` some row uses (the count's
+    Jacobian is over them: the others are zero columns, of no rank), None for all."""
     x = solver.x
     n_unknowns = len(params)
     if id(s) in held:
@@ -144,6 +162,10 @@ def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floatin
     if not len(cols):
         return StructureDof(s, 0, 0)
     if not len(rows):
+        if not floating:
+            # no row: each axis the content can shift along is one frame move (see below)
+            return StructureDof(s, n_unknowns, _shift_axes(solver, s, params, axis,
+                                                           pinned_axes))
         gauge = _gauge_shifts(solver, s, np.zeros((0, len(cols))), cols, axis, pinned_axes)
         if not gauge:
             free = (sorted({label_of.get(i, model.param_label[i]) for i in params})
@@ -158,18 +180,19 @@ def _dof_of(solver, model, s, params, rows, cols, whole, held, label_of, floatin
                        if moving[pos[i]]})
         return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns), free)
     if not floating:
-        if len(rows) * len(cols) <= DENSE_CELLS:
+        use = cols if use is None else use
+        if len(rows) * len(use) <= DENSE_CELLS:
             if whole is not None:
-                J = _dense_cut(*whole, rows, cols)
+                J = _dense_cut(*whole, rows, use)
             else:
-                J = solver.tape(rows).jacobian(x, cols, dense=True)
+                J = solver.tape(rows).jacobian(x, use, dense=True)
             rank = _dense_block_rank(J)
         else:
-            J = solver.tape(rows).jacobian(x, cols)
+            J = solver.tape(rows).jacobian(x, use)
             rank = _block_rank(J, deadline)
         if rank < 0:
             return StructureDof(s, n_unknowns, -1, why=_why_not(rank))
-        rank += len(_gauge_shifts(solver, s, J, cols, axis, pinned_axes))
+        rank += _gauge_count(solver, s, J, use, params, axis, pinned_axes)
         return StructureDof(s, n_unknowns, rank - (len(cols) - n_unknowns))
     J = solver.tape(rows).jacobian(x, cols)
     gauge = _gauge_shifts(solver, s, J, cols, axis, pinned_axes)
@@ -224,6 +247,52 @@ def _gauge_shifts(solver, s, J, cols, axis: list, pinned_axes=()) -> list:
     return out
 
 
+def _gauge_count(solver, s, J, use: np.ndarray, params: list, axis: list,
+                 pinned_axes=()) -> int:
+    """How many gauge shifts :func:`_gauge_shifts` finds for structure ``s`` whose Jacobian
+    ``J`` is over the columns ``use`` only (the columns rows use; the others of ``params``,
+    its own unknowns and children's frames, are zero columns): a shift along an axis with a
+    column moving along it, that changes no row (its columns in ``use`` sum to zero in every
+    row, within 1e-9 of the largest entry).  The count of the vectors, without them."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return 0
+    pos = {c: k for k, c in enumerate(use.tolist())}
+    own = solver.own.get(id(s), ())
+    cols = set(params)
+    scale = None
+    n = 0
+    for a in (0, 1):
+        if a in pinned_axes:
+            continue
+        moving = [i for i in own if axis[i] == a]
+        moving += [i for i in ((c.fx, c.fy)[a] for c in s.children.values()) if i in cols]
+        if not moving:
+            continue
+        k = [pos[i] for i in moving if i in pos]
+        if J.shape[0] and k:
+            if scale is None:
+                scale = max(1.0, float(abs(J).max()))
+            if np.abs(np.asarray(J[:, k].sum(axis=1), dtype=float)).max() > 1e-9 * scale:
+                continue                # some row sees the shift: not the frame's move
+        n += 1
+    return n
+
+
+def _shift_axes(solver, s, params: list, axis: list, pinned_axes=()) -> int:
+    """How many gauge shifts :func:`_gauge_shifts` finds for a structure ``s`` without rows
+    (``params``: its own unknowns and its children's frames, the columns): one per axis with
+    a column that moves along it, none when ``s``'s frame is not an unknown.  The same count,
+    without building the vectors (a pattern of 20,000 holes asks it 20,000 times)."""
+    if s.parent is None or not (0 <= s.fx < len(solver.free) and solver.free[s.fx]):
+        return 0
+    axes = {axis[i] for i in solver.own.get(id(s), ())}
+    if s.children:
+        cols = set(params)
+        axes.update(a for c in s.children.values() for a, i in ((0, c.fx), (1, c.fy))
+                    if i in cols)
+    return (0 in axes and 0 not in pinned_axes) + (1 in axes and 1 not in pinned_axes)
+
+
 def _held_by_rigid(model) -> set:
     """The ids of the structures whose inside ``Rigid`` holds: each rigid structure and every
     structure below it (the solver moves them only by the rigid structure's frame,
@@ -257,7 +326,7 @@ def _ancestor_rows(solver, x: np.ndarray):
     model = solver.model
     if not any(s.parent is not None for s in model.structures):
         return None
-    cols = np.flatnonzero(solver.free)
+    cols = used_free_columns(solver)      # the unknowns no row uses meet no row
     if not len(cols):
         return None
     whole = solver.whole
@@ -278,8 +347,20 @@ def _ancestor_rows(solver, x: np.ndarray):
     for a in model.structures:
         if a.children:
             owner[np.asarray(solver.rows_of([a]), dtype=np.int64)] = number[id(a)]
+    # the unknowns some row of a structure with children uses: only they can meet an
+    # ancestor's row (a pattern's holes placed by their coordinates meet none), found for
+    # all columns at once instead of per structure
+    of_entry = np.repeat(np.arange(len(cols)), np.diff(indptr))
+    reached = np.zeros(len(solver.free), dtype=bool)
+    reached[cols[of_entry[owner[np.asarray(indices, dtype=np.int64)] >= 0]]] = True
+    reached = reached.tolist()
 
     def touching(s, rows: np.ndarray, params: list) -> np.ndarray:
+        for i in params:
+            if reached[i]:
+                break
+        else:
+            return rows                 # no row of any parent uses them
         chain = []
         a = s.parent
         while a is not None:

@@ -141,11 +141,12 @@ class Solver:
         self.frame: dict[int, list[int]] = {}
         root = model.root
         frame, owners = self.is_frame.tolist(), model.param_owner
-        for i in np.flatnonzero(self.free[:len(owners)]).tolist():
-            owner = owners[i] or root
-            if owner is None:
-                continue
-            (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
+        with gc_paused():          # a list per structure: no cyclic collections meanwhile
+            for i in np.flatnonzero(self.free[:len(owners)]).tolist():
+                owner = owners[i] or root
+                if owner is None:
+                    continue
+                (self.frame if frame[i] else self.own).setdefault(id(owner), []).append(i)
         self._tapes: dict[bytes, Tape] = {}
         self._rows_of: dict[tuple, np.ndarray] = {}
         self.failed: set[int] = set()          # ids of constraints given up on
@@ -241,7 +242,10 @@ class Solver:
             if hit is not None:
                 return hit
             if len(structs) == 1:          # one owner's rows: already increasing
-                rows = np.asarray(self.rows.by_owner.get(key[0], ()), dtype=np.int64)
+                own = self.rows.by_owner.get(key[0])
+                if own is None:            # none (most structures of a large pattern)
+                    return np.zeros(0, dtype=np.int64)
+                rows = np.asarray(own, dtype=np.int64)
                 self._rows_of[key] = rows
                 return rows
         out = []
@@ -475,7 +479,10 @@ class Solver:
             if self.trace.budget_exceeded:
                 return False
         pending = []                       # (ladder, attempt it waits on)
+        by_owner = self.rows.by_owner
         for s in structs:
+            if id(s) not in by_owner:
+                continue                   # no row of its own: solved as it stands (steps)
             g = self.steps(s)
             try:
                 pending.append((g, next(g)))

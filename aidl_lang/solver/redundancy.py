@@ -20,7 +20,8 @@ from .arrays import unique
 
 from ..geometry.model import Constraint
 from .diagnose import (MAX_DENSE, _components, _dense_components, _dense_cut, _dense_refused,
-                       _order_key, _peeled_rows, _row_entries, _with_pins, dependencies)
+                       _order_key, _peeled_rows, _row_entries, _with_pins, dependencies,
+                       used_free_columns)
 
 
 class Redundant(Compared):
@@ -115,7 +116,7 @@ def _flat_system(solver):
     rows = rows[solver.kind[rows] == 0]
     if not len(rows):
         return None
-    cols = np.flatnonzero(solver.free)
+    cols = used_free_columns(solver)      # the others' columns of J are all zero
     t = solver.tape(rows)
     x = solver.x
     F = t.evaluate(x)
