@@ -14,6 +14,7 @@ import io
 import math
 
 from ..geometry.curves import Arc, Circle, Line, Spline, elliptic_arc
+from ..limits import MAX_EXTENT
 from .chain import _chain, _finish
 from .model import (_OPTS, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError, Note,
                     _check_made, _finite, _lerp, _mm, _OutOfRange, _plural, _range_error,
@@ -385,6 +386,8 @@ def _read_checked(ctx: _DxfReading, e, t: str, top) -> None:
     An entity its reader leaves out (:class:`_Skip`) is counted; one with a number that is
     not finite or past :data:`GARBAGE` is taken back and counted; one with a number beyond
     the model extent is ``E0130`` naming it (:func:`_range_error`)."""
+    if t == "CIRCLE" and _plain_circle(e, ctx):
+        return
     made = ctx.mark()
     try:
         _read_entity(e, t, ctx)
@@ -403,6 +406,35 @@ def _read_checked(ctx: _DxfReading, e, t: str, top) -> None:
         label = t + (f" (in the block of INSERT {w})" if top is not None and w
                      else f" ({w})" if w else "")
         raise _range_error(ex, label, ctx.name, line) from None
+
+
+def _plain_circle(e, ctx: _DxfReading) -> bool:
+    """Read the CIRCLE ``e`` when it is the plain case, and say so: extrusion +Z (or none),
+    at z = 0 (within :data:`FLAT_TOL`), its centre and radius (mm) within the extent and
+    the radius above 0; the same :class:`Circle` :func:`_entity_circle` makes, without its
+    per-entity bookkeeping (a perforated panel is tens of thousands of these).  Anything
+    else is False: the general reader reads it, and says what is wrong with it."""
+    try:
+        dxf = e.dxf
+        if dxf.hasattr("extrusion"):
+            ext = dxf.extrusion
+            if not (ext[0] == 0 and ext[1] == 0 and 0 < ext[2] < math.inf):
+                return False
+        c, k = dxf.center, ctx.scale
+        x, y, z, r = float(c[0]) * k, float(c[1]) * k, float(c[2]) * k, float(dxf.radius) * k
+    except Exception:
+        return False
+    if abs(x) <= MAX_EXTENT and abs(y) <= MAX_EXTENT and abs(z) <= FLAT_TOL \
+            and 0 < r <= MAX_EXTENT:
+        ctx.circles.append(Circle((x, y), r))
+        WORK["plain_circles"] += 1
+        return True
+    return False
+
+
+WORK = {"plain_circles": 0}
+"""Counts of what the reader did, summed over calls (the tests hold the reading linear):
+``plain_circles``, CIRCLEs read by :func:`_plain_circle`."""
 
 
 def _read_entity(e, t: str, ctx: _DxfReading) -> None:

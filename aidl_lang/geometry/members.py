@@ -157,7 +157,10 @@ def member(g: Geometry, name: str, frame):
         if name == "end":
             return _pv(pts[-1 if not g.closed else 0], frame)
     if k == "Drawing2D":
-        if name in ("outlines", "circles"):
+        if name == "circles":            # made when first named (drawing2d.build)
+            from .drawing2d import drawing_circles
+            return [GeomRef(e) for e in drawing_circles(g)]
+        if name == "outlines":
             return [GeomRef(e) for e in g.data.get(name, [])]
         if name == "paths":
             return [GeomRef(e) for e in g.data.get("path_parts", [])]

@@ -1087,92 +1087,9 @@ def _text_along(ctx, g, a) -> None:
 
 
 def _build_Drawing2D(ctx, g, a):
-    """A drawing read by the interpreter (``a["_drawing"]``: outlines, circles, ellipses and
-    paths in mm, y up) placed rigidly at ``at`` (its origin; default (0, 0): where its file
-    puts it) and turned by the held ``rotation``.  The loops are kept exact, in the drawing's
-    own coordinates, in ``g.data`` (:mod:`.drawing2d`); circles are construction Circles
-    whose centres are held at their offsets from the origin, so ``d.circles[i].center`` can
-    be constrained.
-
-    The origin is *held* at a constant ``at`` (a :attr:`~.model.Constraint.hold`, issue 49):
-    along every direction the program's constraints leave free it stays there, so a drawing
-    nothing places sits exactly where its file (or ``at``) puts it, pinned as one rigid body
-    (:func:`~aidl_lang.solver.system.pinned`), instead of floating with 2 freedoms that a
-    solve may shift; a constraint that places it (``d.bb.left == 30``,
-    ``Fixed(d.origin)``) takes that direction over.  A derived ``at`` (another shape's
-    point) is an equation, as for any shape."""
-    from .drawing2d import local_parts
-    from .model import Constraint
-    d = a["_drawing"]
-    rot = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
-    at = a.get("at")
-    at_pv = at if at is not None else PV(0.0, 0.0)
-    o = g.points["origin"] = ctx.point(at_pv, "origin")
-    ox, oy = ctx.value_of(var(o.ix)), ctx.value_of(var(o.iy))
-    if at_pv.obj is None and as_const(at_pv.x) is not None and as_const(at_pv.y) is not None:
-        where = "where `at` puts it" if at is not None else "where its file puts it"
-        for ax, i, v in (("x", o.ix, ox), ("y", o.iy, oy)):      # one hold per axis
-            c = Constraint("internal", ctx.struct, g.span, [Equation(var(i) - v)],
-                           text=f"Drawing2D held at {ax} = {v:g} mm, {where}", implicit=True,
-                           hold=True)
-            ctx.struct.constraints.append(c)
-            ctx.model.constraints.append(c)
-            ctx.model.holds += 1
-    loops, paths, circles, outlines = local_parts(d, rot)
-    g.data.update(loops=loops, paths=paths, file=a["file"], rotation=rot)
-    if ctx.struct.kind == "cut":
-        # its open paths are cut through the part (issue 59)
-        g.data["through_paths"] = len(paths)
-    g.closed = True
-    circ = []
-    eqs = []
-    for i, c in enumerate(circles):
-        (cx, cy), r = c.center, c.radius
-        p = ctx.point(PV(ox + cx, oy + cy), f"circles[{i}].center")
-        eqs += [Equation(var(p.ix) - var(o.ix) - cx), Equation(var(p.iy) - var(o.iy) - cy)]
-        cg = Geometry("Circle", ctx.struct, g.span, points={"center": p}, construction=True)
-        cg.scalars["radius"] = ctx.new_scalar(r, "radius", held=True)
-        cg.closed = True
-        cg.data["part_of"] = g
-        circ.append(cg)
-    if eqs:
-        ctx.internal(g, eqs, "Drawing2D circles (rigid)")
-    g.data["circles"] = circ
-    subs = []
-    for lp in outlines:
-        sg = Geometry("Drawing2D", ctx.struct, g.span, points={"origin": o}, construction=True)
-        sg.data.update(loops=[lp], paths=[], circles=[], file=a["file"], rotation=rot,
-                       part_of=g)
-        sg.closed = True
-        subs.append(sg)
-    g.data["outlines"] = subs
-    ps = []
-    for segs in paths:
-        sg = Geometry("Drawing2D", ctx.struct, g.span, points={"origin": o}, construction=True)
-        sg.data.update(loops=[], paths=[segs], circles=[], file=a["file"], rotation=rot,
-                       part_of=g)
-        ps.append(sg)
-    g.data["path_parts"] = ps
-    n_file_paths = len(paths)
-    e = getattr(d, "engrave", None)
-    if e is not None and not e.empty:
-        # the shapes of the role `engrave` (engrave=, roles="laser"): strokes on the part,
-        # as the texts below (issue 49)
-        from .curves import Arc
-        from .drawing2d import _turn
-        strokes = [[_turn(s, rot) for s in o.segments] for o in e.outlines] + \
-            [[_turn(s, rot) for s in p.segments] for p in e.paths] + \
-            [[_turn(Arc(c.center, c.radius, 0.0, math.pi), rot),
-              _turn(Arc(c.center, c.radius, math.pi, math.pi), rot)] for c in e.circles]
-        g.data["paths"] = list(g.data["paths"]) + strokes
-        paths = g.data["paths"]
-    if getattr(d, "texts", None):
-        # DXF TEXT and MTEXT as engraving strokes (the single-stroke font) in the drawing's
-        # frame, turned with it; they move, turn and mirror as its open paths do
-        from .drawing2d import text_paths
-        g.data["paths"] = list(paths) + text_paths(d.texts, rot)
-    # the paths from here on (the engrave role's shapes, the texts) are engraved on a part
-    g.data["engraved_from"] = n_file_paths
+    """A drawing read by the interpreter, placed rigidly (:func:`.drawing2d.build`)."""
+    from .drawing2d import build
+    build(ctx, g, a, _const)
 
 
 _BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}
