@@ -110,7 +110,7 @@ folder tree; `import "std/NAME.aidl"` reads the standard library. Nothing else c
     "E0130": ("drawing cannot be read", """
 `Drawing2D("FILE")` (or `aidl import FILE`) names a DXF or SVG drawing that cannot be read:
 missing (with did-you-mean from the same folder), outside the program's folder tree, not a
-regular .dxf or .svg file, larger than 5000000 bytes, with more than 20000 entities, not a
+regular .dxf or .svg file, larger than 20000000 bytes, with more than 120000 entities, not a
 DXF or SVG its reader understands, or with an unknown unit; or an entity of it has a
 coordinate, radius or size that is not finite (inf, nan) or beyond the model extent of 1e6 mm
 (1 km), as a program's may not be: the message names the entity (DXF: its kind, handle and

@@ -803,7 +803,7 @@ DETAILS: dict[str, str] = {
                  "outline is needed, with its gap; a self-crossing loop), E0132 (an unknown "
                  "layer, or nothing to import: it names what the file holds and why each "
                  "kind was left out, e.g. entities in a tilted plane), E0304 (blocks that "
-                 "expand past 20000 entities). `aidl import FILE -o part.aidl` turns a drawing into an "
+                 "expand past 120000 entities). `aidl import FILE -o part.aidl` turns a drawing into an "
                  "editable program instead.",
     "Bezier": "A chain of cubic Bézier segments from its control points, as SVG's `C` "
               "and a drawing program's pen tool make them: points=[p0, c1, c2, p1, c3, c4, "

@@ -27,7 +27,7 @@ EXAMPLES = Path(__file__).resolve().parent / "examples"
 
 MAX_IMPORT_BYTES = MAX_SOURCE_BYTES     # size of one imported file
 MAX_IMPORT_PATH = 255            # characters of an import path as written
-MAX_DRAWING_BYTES = 5_000_000    # size of one DXF or SVG drawing (Drawing2D, `aidl import`)
+MAX_DRAWING_BYTES = 20_000_000   # size of one DXF or SVG drawing (Drawing2D, `aidl import`)
 _SANDBOX_HINT = ("import only .aidl files in this file's folder tree (a relative path without "
                  "`..` leaving it), or `std/NAME.aidl`")
 

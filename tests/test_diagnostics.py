@@ -931,9 +931,9 @@ def test_E0130_unreadable_and_huge_drawings(tmp_path):
     (tmp_path / "junk.dxf").write_bytes(b"\x00\x01 not a dxf at all")
     c = _drawing_compile(tmp_path, 'd = Drawing2D("junk.dxf")')
     assert "not a readable DXF" in the_error(c, "E0130").message
-    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 5_000_001)
+    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 20_000_001)
     c = _drawing_compile(tmp_path, 'd = Drawing2D("big.svg")')
-    assert "larger than 5000000 bytes" in the_error(c, "E0130").message
+    assert "larger than 20000000 bytes" in the_error(c, "E0130").message
 
 
 def test_W0130_unsupported_entities_named_and_counted(tmp_path):

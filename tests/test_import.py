@@ -208,9 +208,9 @@ def test_cli_import_refuses_bad_input_and_writes_nothing(tmp_path):
     (tmp_path / "junk.dxf").write_bytes(b"\x00garbage")
     r = run("import", "junk.dxf", "-o", "x.aidl", cwd=tmp_path)
     assert r.returncode == 1 and "not a readable DXF" in r.stderr
-    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 5_000_001)
+    (tmp_path / "big.svg").write_bytes(b"<svg/>" + b" " * 20_000_001)
     r = run("import", "big.svg", "-o", "x.aidl", cwd=tmp_path)
-    assert r.returncode == 1 and "larger than 5000000 bytes" in r.stderr
+    assert r.returncode == 1 and "larger than 20000000 bytes" in r.stderr
     assert not (tmp_path / "x.aidl").exists()
 
 

@@ -263,7 +263,7 @@ def test_many_triangles_end_within_the_budget_and_too_large_says_so(tmp_path):
     assert not (tmp_path / "tri.aidl").exists()
     # a smaller budget holds fewer shapes: refused before svgelements reads them
     r, cpu = _limited(tmp_path, "import", "tri.svg", "--budget", "0.01", "-o", "tri.aidl")
-    assert r.returncode == 1 and cpu < 15 and "has more than 200 shapes" in r.stderr, r.stderr
+    assert r.returncode == 1 and cpu < 15 and "has more than 1200 shapes" in r.stderr, r.stderr
 
 
 @pytest.mark.parametrize("bad", ["inf", "nan", "1e300"])

@@ -17,7 +17,7 @@ from ..geometry.spline import CubicSpline
 from ..limits import MAX_EXTENT
 
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
-MAX_ENTITIES = 20_000    # entities (DXF) or shapes (SVG) read from one drawing
+MAX_ENTITIES = 120_000   # entities (DXF) or shapes (SVG) read from one drawing
 CLOSE_TOL = 0.05         # mm: the default closing tolerance (close_tolerance=, --close-tolerance)
 GAP_NOTE = 0.5           # mm: an open chain whose ends are this close was probably meant closed
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "ft": 304.8,
