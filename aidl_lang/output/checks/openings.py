@@ -460,20 +460,20 @@ def _united(shapes, within=None, plus=None) -> mf.CrossSection:
     from ..part.booleans import UNION_GROUP
     from ..part.scanwork import plan, turned, turned_back
     faces = [f for f in shapes if f is not None and not f.is_empty()]
-    if not faces:
-        return mf.CrossSection()
-    turn, _ = plan(faces)
-    if turn:
-        faces = turned(faces)
+    turn = plan(faces)[0] if faces else False
+    if not turn:                    # not a row: one batch, as :func:`.common._union` does
+        out = _union(([plus] if plus is not None else []) + faces)
+        return out ^ within if within is not None else out
+    faces = turned(faces)
     while len(faces) > UNION_GROUP:
         faces = [mf.CrossSection.batch_boolean(faces[i:i + UNION_GROUP], mf.OpType.Add)
                  for i in range(0, len(faces), UNION_GROUP)]
     out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)
     if within is not None:
-        out = out ^ (turned([within])[0] if turn else within)
+        out = out ^ turned([within])[0]
     if plus is not None and not plus.is_empty():
-        out = out + (turned([plus])[0] if turn else plus)
-    return turned_back(out) if turn else out
+        out = out + turned([plus])[0]
+    return turned_back(out)
 
 
 # ------------------------------------------------------------ webs and merged holes
