@@ -100,6 +100,8 @@ class Provenance:
         """The tessellated polygon (N x 2, closed implicitly) of an exact ``loop``, its
         chords and segment ends recorded."""
         segs = loop.segments
+        if len(segs) == 1 and isinstance(segs[0], Circle):
+            return self._circle(segs[0])
         xs: list = []
         ys: list = []
         ids: list = []
@@ -155,6 +157,31 @@ class Provenance:
         self._a.append(P)
         self._b.append(np.concatenate([P[1:], P[:1]]))      # np.roll(P, -1, axis=0)
         self._c.append(np.asarray(ids, dtype=np.int64))
+        self._index = None
+        return P
+
+    def _circle(self, c: Circle) -> np.ndarray:
+        """:meth:`polygon` of a loop that is one circle: its vertices from the unit circle of
+        its chord count and turn (:func:`_unit_circle`, the same floats as one ``math.cos``
+        per vertex: ``cx + r * cos(t)``, each operation IEEE), its chords recorded."""
+        n = segments_for(c.radius)
+        if self.max_vertices is not None:
+            self.vertices += n
+            if self.vertices > self.max_vertices:
+                raise OutOfBudget(f"outlines of more than {self.max_vertices:,} vertices "
+                                  "(circles and arcs in chords of 0.005 mm)", "the booleans")
+        k = self.carrier_id(carrier(c))
+        cos, sin = _unit_circle(n, bool(c.ccw))
+        cx, cy = c.center
+        r = c.radius
+        P = np.empty((n, 2))
+        np.multiply(cos, r, out=P[:, 0])
+        P[:, 0] += cx
+        np.multiply(sin, r, out=P[:, 1])
+        P[:, 1] += cy
+        self._a.append(P)
+        self._b.append(np.concatenate([P[1:], P[:1]]))
+        self._c.append(np.full(n, k, dtype=np.int64))
         self._index = None
         return P
 
@@ -359,6 +386,25 @@ class Provenance:
         if bad.any():
             self.unmatched += int(bad.sum())
         return cid
+
+
+_UNIT: dict = {}
+
+
+def _unit_circle(n: int, ccw: bool) -> tuple[np.ndarray, np.ndarray]:
+    """``(cos t, sin t)`` for ``t = sg * 2 pi i / n``, i < n (``sg`` = 1 counter-clockwise,
+    else -1), by ``math.cos``/``math.sin`` once per chord count: a plate of 19,000 equal
+    holes computes one table (NumPy's own cos may differ from libm's in the last bit)."""
+    key = (n, ccw)
+    got = _UNIT.get(key)
+    if got is None:
+        sg = 1.0 if ccw else -1.0
+        t = [sg * 2 * math.pi * i / n for i in range(n)]
+        got = (np.array([math.cos(a) for a in t]), np.array([math.sin(a) for a in t]))
+        if len(_UNIT) > 256:
+            _UNIT.clear()
+        _UNIT[key] = got
+    return got
 
 
 def _distinct_chords(A, B, C):

@@ -222,12 +222,45 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
                            dist)                       # in the same order as all of them
         s, v = sk[s], vk[v]
         return _measure(V, A, B, vfeat, sfeat, v, s, dist) if len(s) else empty
-    # large: the segments in runs whose candidates number at most CHUNK (a run is halved
-    # while it has more), each run measured before the next is listed, the kept pairs at
-    # most MAX_PAIRS in all; the same pairs, in the same order, as one query
+    # large: features of whole loops (a plate's holes) are paired run by run (:func:`_run_pairs`,
+    # no candidate within one feature is listed); a feature per vertex (the slit check) by the
+    # grid over the vertices.  Either way the same pairs, in the grid's order (segment, then
+    # the vertex's cell, then the vertex)
     L = np.hypot(*(B - A).T)
-    grid = _Grid(V, max(_median(L), dist, 1e-9))
+    h = max(_median(L), dist, 1e-9)
     lo, hi = np.minimum(A, B) - dist, np.maximum(A, B) + dist
+    out = None
+    if _changes(vfeat) * 8 < len(V) and _changes(sfeat) * 8 < len(A):
+        out = _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h)
+    if out is None:
+        out = _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h)
+    if not out:
+        return empty
+    v, s, d, foot = (np.concatenate([o[k] for o in out]) for k in range(4))
+    key = _cell_keys(V, h)
+    order = np.lexsort((v, key[v], s))
+    return v[order], s[order], d[order], foot[order]
+
+
+def _changes(feat) -> int:
+    """How many times the feature id changes along ``feat``."""
+    return int(np.count_nonzero(feat[1:] != feat[:-1])) if len(feat) > 1 else 0
+
+
+def _cell_keys(P, cell: float) -> np.ndarray:
+    """The cell key of each point of ``P`` in :class:`_Grid` ``(P, cell)`` (the order of its
+    answers)."""
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    h = max(float(cell), float((hi - lo).max()) / 2 ** 20, 1e-9)
+    ij = np.floor((P - lo) / h).astype(np.int64)
+    return ij[:, 1] * (int(ij[:, 0].max()) + 1) + ij[:, 0]
+
+
+def _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list:
+    """The close pairs by the grid over the vertices: each segment's grown box (``lo``-``hi``)
+    searched, :data:`CHUNK` candidates measured at a time (runs of segments from the counts
+    taken once), the kept pairs at most :data:`MAX_PAIRS` in all."""
+    grid = _Grid(V, h)
     out, kept, todo = [], 0, [(0, len(A))]
     while todo:
         i, j = todo.pop()
@@ -243,9 +276,102 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
             if kept > MAX_PAIRS:
                 raise TooManyPairs(kept, MAX_PAIRS)
             out.append(got)
-    if not out:
-        return empty
-    return tuple(np.concatenate([o[k] for o in out]) for k in range(4))
+    return out
+
+
+RUN = 16            # items per run of :func:`_runs_of` at most
+
+
+def _runs_of(P, feat, step, reach: float):
+    """Runs of consecutive items of one feature (at most :data:`RUN`, of length at most
+    ``4 * reach`` along ``step``, the distance from each item to the next; an item whose step
+    is longer than ``reach`` alone): ``(starts, stops, feature)``."""
+    n = len(P)
+    cut = np.r_[True, feat[1:] != feat[:-1]]
+    long_ = step > reach                  # a long item alone (an outline's side)
+    cut |= long_
+    cut[1:] |= long_[:-1]
+    starts = np.flatnonzero(cut)
+    # within each piece, a new run every RUN items or when the length passes 4 * reach
+    pos = np.arange(n) - np.repeat(starts, np.diff(np.r_[starts, n]))
+    csum = np.cumsum(step) - step
+    base = np.repeat(csum[starts], np.diff(np.r_[starts, n]))
+    piece = np.floor((csum - base) / (4 * reach)).astype(np.int64)
+    cut2 = cut.copy()
+    cut2[1:] |= (pos[1:] % RUN == 0) | (piece[1:] != piece[:-1])
+    starts = np.flatnonzero(cut2)
+    return starts, np.r_[starts[1:], n], feat[starts]
+
+
+def _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list | None:
+    """The close pairs of features of whole loops: the vertices and the segments in runs
+    (:func:`_runs_of`), each segment run's box (its segments' boxes grown by the distance)
+    searched for the vertex runs' boxes it meets in a grid over their centres (the vertex
+    runs are short: their half size pads the query), the pairs of runs of different
+    features kept, then every vertex of one run against every segment of the other inside
+    the segment's grown box, :data:`CHUNK` candidates listed and measured at a time.  A
+    vertex within ``dist`` of a segment's box lies in its run's box, which then meets the
+    segment's run's: every pair is found once.  None when one segment run meets more than
+    :data:`MAX_PAIRS` vertex runs (the caller's grid then)."""
+    reach = 4 * h
+    vstep = np.r_[np.hypot(*(V[1:] - V[:-1]).T), 0.0] if len(V) > 1 else np.zeros(len(V))
+    vs, ve, vf = _runs_of(V, vfeat, vstep, reach)
+    ss, se, sf = _runs_of(A, sfeat, np.hypot(*(B - A).T), reach)
+    vlo, vhi = np.minimum.reduceat(V, vs), np.maximum.reduceat(V, vs)
+    slo, shi = np.minimum.reduceat(lo, ss), np.maximum.reduceat(hi, ss)
+    pad = dist * 1e-6 + 1e-9
+    half = (vhi - vlo).max(axis=0) / 2 + pad          # the largest vertex run's half size
+    grid = _Grid((vlo + vhi) / 2, max(2 * float(half.max()), 1e-9))
+    nv, ns = ve - vs, se - ss
+    out: list = []
+    kept = [0]
+    todo = [(0, len(ss))]
+    while todo:
+        i, j = todo.pop()
+        try:
+            q, p = grid.in_boxes(slo[i:j] - half, shi[i:j] + half,
+                                 limit=CHUNK if j - i > 1 else MAX_PAIRS)
+        except TooManyPairs:
+            if j - i == 1:
+                return None
+            m = (i + j) // 2
+            todo += [(m, j), (i, m)]
+            continue
+        q = q + i
+        ok = ((vlo[p] <= shi[q] + pad).all(axis=1) & (vhi[p] >= slo[q] - pad).all(axis=1)
+              & (vf[p] != sf[q]))
+        _expand(V, vfeat, A, B, sfeat, lo, hi, dist, vs[p[ok]], nv[p[ok]], ss[q[ok]],
+                ns[q[ok]], out, kept)
+    return out
+
+
+def _expand(V, vfeat, A, B, sfeat, lo, hi, dist, v0, nv, s0, ns, out: list, kept: list):
+    """Every vertex ``v0[k]`` ... ``v0[k] + nv[k] - 1`` against every segment ``s0[k]`` ...
+    ``s0[k] + ns[k] - 1`` (pairs of runs), the vertex inside the segment's grown box,
+    measured (:func:`_measure`) :data:`CHUNK` candidates at a time into ``out``;
+    ``kept[0]``: the pairs kept so far (:class:`TooManyPairs` past :data:`MAX_PAIRS`)."""
+    cnt = nv * ns
+    ends = np.cumsum(cnt)
+    at = 0
+    while at < len(cnt):
+        base = ends[at - 1] if at else 0
+        stop = max(at + 1, int(np.searchsorted(ends, base + CHUNK, "right")))
+        c = cnt[at:stop]
+        tot = int(c.sum())
+        k = np.repeat(np.arange(at, stop), c)
+        off = np.arange(tot) - np.repeat(np.cumsum(c) - c, c)
+        nsk = ns[k]
+        v = v0[k] + off // nsk
+        s = s0[k] + off % nsk
+        x, y = V[v, 0], V[v, 1]
+        ok = (x >= lo[s, 0]) & (x <= hi[s, 0]) & (y >= lo[s, 1]) & (y <= hi[s, 1])
+        if ok.any():
+            got = _measure(V, A, B, vfeat, sfeat, v[ok], s[ok], dist)
+            kept[0] += len(got[0])
+            if kept[0] > MAX_PAIRS:
+                raise TooManyPairs(kept[0], MAX_PAIRS)
+            out.append(got)
+        at = stop
 
 
 def _measure(V, A, B, vfeat, sfeat, v, s, dist):
