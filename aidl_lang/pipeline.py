@@ -174,6 +174,21 @@ DEEP_STACK = 256 * 1024 * 1024
 DEEP_RECURSION = 60_000
 
 
+def _touch_thread_locals():
+    """Allocate this thread's C++ exception state now, while memory is free.  glibc gives a
+    thread its block of a loaded library's thread-local storage on first use; the C++
+    runtime's first use comes with the first exception thrown on the thread, which under an
+    address-space cap (``--memory``) is Manifold's ``std::bad_alloc`` deep in the booleans:
+    the block cannot be allocated then, and glibc ends the process ("cannot allocate memory
+    for thread-local data: ABORT", exit 127) instead of the ``MemoryError`` that becomes
+    E0304.  ``__cxa_get_globals`` is that first use, made here."""
+    import ctypes
+    try:        # loaded already (Manifold's runtime): dlopen only finds it again
+        ctypes.CDLL("libstdc++.so.6").__cxa_get_globals()
+    except (OSError, AttributeError):      # no libstdc++ (another platform): nothing to touch
+        pass
+
+
 def run_deep(fn):
     """Call ``fn()`` on a thread with a :data:`DEEP_STACK` stack and a recursion limit of
     :data:`DEEP_RECURSION`; returns its result or re-raises its exception."""
@@ -186,6 +201,7 @@ def run_deep(fn):
     def target():
         _deep_state.inside = True
         try:
+            _touch_thread_locals()
             box["value"] = fn()
         except BaseException as ex:          # re-raised in the caller's thread
             box["error"] = ex
