@@ -37,10 +37,19 @@ process.stdout.write(html(process.argv[1], process.argv[2]));
 """
 
 
-def _poll(page, expression: str, seconds: float, what: str) -> None:
-    end = time.monotonic() + seconds
+# seconds: only a hang guard (a page that never answers), never a claim on this machine's
+# speed; each wait ends on the page's own outcome (ready, drawn, or its error) long before
+HANG_GUARD = 300
+
+
+def _poll(page, expression: str, what: str, errors: list) -> None:
+    """Wait until ``expression`` holds in the page; a script error in the page ends the wait
+    at once with that error (the outcome the page promises is one or the other)."""
+    end = time.monotonic() + HANG_GUARD
     while not page.evaluate(expression):
-        assert time.monotonic() < end, f"timed out ({seconds:g} s) waiting for {what}"
+        assert not errors, f"the page failed while waiting for {what}: {errors}"
+        if time.monotonic() > end:
+            pytest.fail(f"the page never reached {what} (hung: {HANG_GUARD} s hang guard)")
         time.sleep(0.1)
 
 
@@ -88,12 +97,12 @@ def test_vscode_preview_shows_the_assembled_product_in_3d(tmp_path):
                 page.goto(base + "/index.html")
                 # polled from here: the page's nonce-only script policy refuses the eval of
                 # wait_for_function's polling once its first try finds the page not ready
-                _poll(page, "!!window.aidl3d && window.sent.length > 0", 30, "the page ready")
+                _poll(page, "!!window.aidl3d && window.sent.length > 0", "the page ready", errors)
                 page.click("#mode3d")
                 assert {"type": "assembled", "on": True} in page.evaluate("window.sent")
                 page.evaluate("(r) => window.postMessage({type: 'update', result: r}, '*')", result)
                 _poll(page, "document.body.dataset.loaded3d === '1' "
-                      "|| !!document.body.dataset.error3d", 30, "the product in 3D")
+                      "|| !!document.body.dataset.error3d", "the product in 3D", errors)
                 assert page.evaluate("document.body.dataset.error3d") is None and errors == []
                 assert page.locator("#view").is_hidden()
                 page.wait_for_timeout(400)
