@@ -496,7 +496,7 @@ def test_nest_time_is_added_to_the_wall_budget(tmp_path, monkeypatch, capsys, cp
 
 
 @pytest.mark.timing
-def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypatch):
+def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypatch, cpu_clock):
     """spyrrow cannot be stopped: 2,000 parts took 20 s past the 15 s budget and were blamed
     on the SVG writer.  The nesting is estimated (its shapes and parts: ``nest_seconds``) and
     refused as "the layout"."""
@@ -521,6 +521,8 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
         nested.append(len(a[0]))
         return real_nest(*a, **kw)
     monkeypatch.setattr(layout, "_nest", nest)
+    # CPU seconds (cpu_clock): the deadline is half the estimate after the same work, however
+    # busy the machine (a wall deadline could pass before the estimate is even asked)
     soon = Deadline(time.monotonic() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
     with pytest.raises(OutputError) as e:
         plan(out, deadline=soon)

@@ -131,7 +131,7 @@ def test_equal_circles_on_a_row_share_their_scan_beams():
     assert scanwork.union_seconds(faces, left=0.01) < 0.01
 
 
-def test_the_estimate_refuses_a_union_that_would_take_too_long():
+def test_the_estimate_refuses_a_union_that_would_take_too_long(cpu_clock):
     """union_seconds: the row of 4,000 different circles scanned along y is ~10 s of work
     (it took 31-45 s), along x (turned) well under 0.1 s; with plenty of time left the exact
     count is not even taken (0)."""
@@ -143,7 +143,7 @@ def test_the_estimate_refuses_a_union_that_would_take_too_long():
     from aidl_lang.output.part.booleans import Renderer
     import time
     c = compile_source(ROW.format(x="i*3", y="0", n=10), "r.aidl")
-    ren = Renderer(c.model, Deadline(time.monotonic() + 1.0))
+    ren = Renderer(c.model, Deadline(time.monotonic() + 1.0))    # CPU seconds: cpu_clock
     with pytest.raises(OutOfBudget) as ex:
         ren.tick(c.model.root, row)
     assert ex.value.where is c.model.root and "would end past" in ex.value.what
