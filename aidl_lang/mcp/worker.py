@@ -30,18 +30,20 @@ def _handler(root: str, budget: float):
 
     def handle(request):
         name, args = request
-        if name not in ("check", "render", "values", "describe", "import_drawing"):
+        if name not in ("check", "render", "values", "describe", "import_drawing",
+                        "write_program"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
         try:
             return True, getattr(T, name)(ws, *args)
         except T.Refused as e:
-            return False, T.Refused(str(e))
+            return False, T.Refused(str(e), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
             from ..limits import is_out_of_memory
             oom = is_out_of_memory(e)
             if not oom:
-                return False, T.Refused(f"internal error: {type(e).__name__}: {e}")
+                return False, T.Refused(f"internal error: {type(e).__name__}: {e}",
+                                        "internal_error")
         return False, out_of_memory(ws, args)       # once the failed frames are gone
     return handle
 
@@ -62,7 +64,7 @@ def out_of_memory(ws, args: tuple):
     sink = out_of_memory_sink(name, source)
     d = sink.items[0]
     return T.Refused(f"{d.code} line {d.span.line if d.span else '-'}: {d.message}; "
-                     f"{d.hint}")
+                     f"{d.hint}", d.code)
 
 
 class Worker(W.Worker):
@@ -91,12 +93,12 @@ class Worker(W.Worker):
         except W.TimedOut:
             raise T.Refused(f"the call took longer than {limit:g} s (twice the budget's "
                             "wall time) and was stopped; build less, or give a larger "
-                            "`budget` (at most 4)") from None
+                            "`budget` (at most 4)", "timed_out") from None
         except W.Died:
             raise T.Refused("the compile ended its worker process (out of memory?); "
-                            "build less") from None
+                            "build less", "worker_died") from None
         except W.NotReady as e:
-            raise T.Refused(str(e)) from None
+            raise T.Refused(str(e), "worker_died") from None
         if ok:
             return value
         raise value
