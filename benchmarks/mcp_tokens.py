@@ -95,10 +95,11 @@ def server_params(root: str):
                                  env=env, cwd=str(Path(__file__).resolve().parent.parent))
 
 
-async def run_jobs(root: str | os.PathLike) -> tuple[dict, dict]:
+async def run_jobs(root: str | os.PathLike, then=None) -> tuple[dict, dict]:
     """Run the four jobs against ``aidl mcp --root ROOT``: ``(figures, results)``, figures
     ``{job: {"calls", "chars", "tokens"}, "_counter": how}``, results ``{job: [(tool,
-    arguments, CallToolResult), ...]}``."""
+    arguments, CallToolResult), ...]}``.  ``then``: an async function of the session, run
+    after the jobs (not counted), for a test's further calls."""
     from mcp.client.session import ClientSession
     from mcp.client.stdio import stdio_client
     how, count = counter()
@@ -161,6 +162,8 @@ async def run_jobs(root: str | os.PathLike) -> tuple[dict, dict]:
                 await call("import", "check", {"source": edited})
                 await call("import", "render", {"source": edited, "output": "plate2.dxf",
                                                 "width": 16})
+            if then is not None:
+                await then(session)
     figures["total"] = {k: sum(figures[j][k] for j in JOBS) for k in ("calls", "chars",
                                                                        "tokens")}
     return figures, results
