@@ -211,7 +211,7 @@ def test_server_info_version_is_the_package_version():
     from aidl_lang.mcp.server import build_server
     import tempfile
     with tempfile.TemporaryDirectory() as d:
-        server = build_server(d)
+        server = build_server(d, warm=False)
     assert version("aidl-lang") and server.version == version("aidl-lang")
 
 

@@ -324,16 +324,20 @@ class _Server(MCPServer):
 
 
 def build_server(root: str, budget: float = 1.0,
-                 prompt: Callable[[], str] | None = None) -> MCPServer:
+                 prompt: Callable[[], str] | None = None, warm: bool = True) -> MCPServer:
     """The server for the allowed folder ``root`` with ``budget`` (a factor of the default
     evaluation budget) as each call's default; ``prompt``: a function that returns the
-    ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
+    ``aidl prompt`` text (given by the command line, which may import the LLM tools);
+    ``warm``: start a worker and compile a small program in it at once, in the background
+    (:meth:`.worker.Pool.warm`), so the first call is as fast as the rest."""
     ws = T.Workspace(root, budget)
     # the compiling tools run side by side in a pool of warm worker processes, each call
     # killed past twice the budget's wall time (aidl_lang/mcp/worker.py): a call always ends,
     # and a slow one delays only itself
     from .worker import Pool
     work = Pool(str(ws.root), budget)
+    if warm:
+        work.warm()
     from importlib.metadata import PackageNotFoundError, version
     try:
         ver = version("aidl-lang")
@@ -523,5 +527,6 @@ def build_server(root: str, budget: float = 1.0,
 
 def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:
     """Serve over stdin/stdout until the client closes them."""
-    build_server(root, budget, prompt).run("stdio")
+    import os
+    build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD")).run("stdio")
     return 0

@@ -620,6 +620,29 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     return doc
 
 
+WARM = """units mm
+solid plate {
+    body = RoundedRectangle(center=(0, 0), width=40, height=20, corner_radius=2)
+    hole bore { c = Circle(center=(10, 0), radius=4) }
+    hole slot { s = Slot(start=(-15, 0), end=(-5, 0), width=3) }
+}
+"""
+
+
+def warm(ws: Workspace) -> dict:
+    """Compile, check, describe and draw a small program (PNG, SVG, DXF, G-code) without
+    writing anything: the imports and first-call work of every tool done once, so the
+    agent's first call costs what the later ones do.  Returns ``{"ok"}``."""
+    r = compile_program(source=WARM, path=str(ws.root / "untitled.aidl"))
+    r.find_redundant()
+    _ = r.parts, r.description, r.values, r.fit
+    for fmt in ("png", "svg", "dxf", "gcode"):
+        r.encode(fmt, width=64) if fmt == "png" else r.encode(fmt)
+    from ..output import for_cutting
+    _job([for_cutting(r.output, None)], None, None)
+    return {"ok": r.ok}
+
+
 def explain(code: str) -> str:
     """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
     an unknown code, naming the known ones."""

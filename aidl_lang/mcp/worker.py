@@ -30,6 +30,8 @@ def _handler(root: str, budget: float):
 
     def handle(request):
         name, args = request
+        if name == "warm":
+            return True, T.warm(ws)
         if name not in ("check", "render", "values", "describe", "import_drawing",
                         "write_program"):
             return False, T.Refused(f"unknown tool `{name}`")
@@ -112,6 +114,21 @@ class Pool(W.Pool):
 
     def __init__(self, root: str, budget: float = 1.0, size: int = POOL_SIZE) -> None:
         super().__init__([Worker(root, budget) for _ in range(max(1, size))])
+
+    def warm(self) -> None:
+        """Start the worker the first call will take and have it compile and draw a small
+        program (:func:`.tools.warm`), in the background: the first call waits for it (it
+        holds that worker) instead of paying for a process start, the imports and the first
+        compile itself (issue 73: the first render was 2.2-2.5 s)."""
+        import threading
+        w = self.idle[-1]
+
+        def run() -> None:
+            try:
+                w.call("warm", budget=T.MAX_BUDGET)
+            except Exception:              # noqa: BLE001 - a failed warm-up: a cold call
+                pass
+        threading.Thread(target=run, name="aidl-mcp-warm", daemon=True).start()
 
     def call(self, name: str, *args, budget: float | None = None):
         """:meth:`Worker.call` in an idle worker (waiting for one when all are busy)."""
