@@ -154,7 +154,11 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert set(prompts) == {"aidl"}
             got = await session.get_prompt("aidl", {})
             [msg] = got.messages
-            assert msg.role == "user" and msg.content.text == system_prompt()
+            assert msg.role == "user" and msg.content.text == for_agents(system_prompt())
+            # the prompt an agent reads names the tools' arguments, not the CLI's flags
+            for flag in ("--set", "--layout", "--assembled", "--describe", "--infer"):
+                assert flag in system_prompt() and flag not in msg.content.text, flag
+            assert 'layout="sheet"' in msg.content.text
             got = await session.get_prompt("aidl", {"request": "a washer 20 mm across"})
             assert got.messages[0].content.text.endswith("Design this part: a washer 20 mm "
                                                          "across\n")

@@ -482,6 +482,13 @@ def build_server(root: str, budget: float = 1.0,
         return T.docs(name)
 
     server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
+    _resources(server, prompt)
+    return server
+
+
+def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
+    """Offer the docs, the prompt (worded for the tools), the standard library and the
+    examples as resources of ``server`` (see the module text)."""
     from ..reference import index_text, topics
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "
@@ -499,14 +506,15 @@ def build_server(root: str, budget: float = 1.0,
     if prompt is not None:
         server.resource("aidl://prompt", name="system prompt", mime_type="text/plain",
                         description="`aidl prompt`: the vocabulary with signatures, and "
-                                    "example programs")(lambda: prompt())
+                                    "example programs, worded for the tools")(
+            lambda: for_agents(prompt()))
 
         @server.prompt(name="aidl", title="Write AIDL",
                        description="The AIDL system prompt (`aidl prompt`): the language, its "
                                    "vocabulary with signatures, the standard library and example "
                                    "programs; `request`: a part to design, appended")
         def aidl_prompt(request: Request = None) -> str:
-            text = prompt()
+            text = for_agents(prompt())
             if request and request.strip():
                 text += f"\nDesign this part: {request.strip()}\n"
             return text
@@ -522,7 +530,6 @@ def build_server(root: str, budget: float = 1.0,
             server.resource(f"aidl://examples/{rel}", name=f"example {rel}",
                             mime_type="text/plain", description="an example program")(
                 _text_of(f, f"examples/{rel}"))
-    return server
 
 
 def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:

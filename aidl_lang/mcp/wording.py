@@ -48,6 +48,14 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"--(?:png-width|dpi)\b", "`width`"),
     (r"; the minimum is set with --min-wall", ""),
     (r" \(follow_symlinks=True writes the file it points to\)", ""),
+    # the prompt's and the docs' mentions of the command line (issue 73): the tools instead
+    (r"`--set (\w+)=([^`]*)`", _override),
+    (r"`aidl render --layout sheet`", '`render` with layout="sheet"'),
+    (r"--layout sheet", 'layout="sheet"'),
+    (r"`--assembled`", "`render` with assembled=true"),
+    (r"`aidl check --describe`", "The `describe` tool"),
+    (r"`aidl import --infer ([^`]+)`", r'`import_drawing` with path="\1"'),
+    (r"`aidl check --values`", "the `values` tool"),
     (r" \(force=True replaces it\)", ": write to another name"),
 ]]
 
