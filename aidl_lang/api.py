@@ -204,6 +204,7 @@ class Result:
         self.source = source
         self.units, self.unit_scale = file_units(source or "")
         self._values: list[Value] | None = None
+        self._sizes: list[Value] | None = None
         self._output = None
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
@@ -248,20 +249,31 @@ class Result:
         """Every named entity's solved values (see :class:`Value`), in model order: for each
         structure its frame ``origin`` and ``bbox``; for each named geometry its points
         (``center``, ``start``, ``end``, corners; a rectangle's ``center`` too) and scalars
-        (``radius`` and its ``diameter``, ``width``, ``height``, a rounded rectangle's
-        ``corner_radius`` (``corner_radius.top_left``, ... for ``corner_radii``), ...).
-        Raises :class:`NotCompiled` when the program did not solve."""
+        (``radius``, ``width``, ``height``, ...; with :meth:`sizes` also each radius's
+        ``diameter`` and a rounded rectangle's ``corner_radius``).  Raises
+        :class:`NotCompiled` when the program did not solve."""
         self._need("values")
         if self._values is None:
             self._values = _values(self.compiled.model, self.unit_scale, self.units)
         return self._values
 
-    def values_matching(self, names: Iterable[str] = ()) -> list[Value]:
-        """The :attr:`values` whose name is one of ``names`` or below one of them (a dotted
-        prefix: ``plate.corner`` covers ``plate.corner[0].h.center``); all of them when
-        ``names`` is empty.  The root structure's name may be left out."""
+    def sizes(self) -> list[Value]:
+        """:attr:`values` with the sizes a maker reads too, each after its geometry's own:
+        a circle's or arc's ``diameter`` (after its ``radius``) and a rounded rectangle's
+        ``corner_radius`` (``corner_radius.bottom_left``, ... for ``corner_radii``), in the
+        file's units (the MCP ``values`` tool lists these).  Raises :class:`NotCompiled`."""
+        self._need("values")
+        if self._sizes is None:
+            self._sizes = _values(self.compiled.model, self.unit_scale, self.units, True)
+        return self._sizes
+
+    def values_matching(self, names: Iterable[str] = (), sizes: bool = False) -> list[Value]:
+        """The :attr:`values` (with ``sizes``: :meth:`sizes`) whose name is one of ``names``
+        or below one of them (a dotted prefix: ``plate.corner`` covers
+        ``plate.corner[0].h.center``); all of them when ``names`` is empty.  The root
+        structure's name may be left out."""
         names = [n.strip() for n in names if n.strip()]
-        vals = self.values
+        vals = self.sizes() if sizes else self.values
         if not names:
             return list(vals)
         root = self.compiled.model.root.name + "."
@@ -753,7 +765,7 @@ def _below(name: str, prefix: str) -> bool:
 
 
 # ------------------------------------------------------------------ solved values
-def _values(model, scale: float, unit: str) -> list[Value]:
+def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
     from .geometry.bbox import numeric_box
     from .geometry.expr import evaluate
     x = model.x
@@ -791,10 +803,10 @@ def _values(model, scale: float, unit: str) -> list[Value]:
                 vals.append(Value(f"{name}.{sn}", "angle", math.degrees(v), "deg", v))
             else:
                 vals.append(Value(f"{name}.{sn}", "number", v, "", v))
-            if sn == "radius" and sc.dim == "length":       # a circle's or arc's size as drawn
+            if sizes and sn == "radius" and sc.dim == "length":   # a circle's size as drawn
                 vals.append(length(f"{name}.diameter", 2 * v))
         # a rounded rectangle's corners (fixed when it is built: data, not solved scalars)
-        if isinstance(g.data.get("corner_radius"), (int, float)):
+        if sizes and isinstance(g.data.get("corner_radius"), (int, float)):
             radii = g.data.get("corner_radii")
             if radii is None:
                 vals.append(length(f"{name}.corner_radius", float(g.data["corner_radius"])))

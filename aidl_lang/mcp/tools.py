@@ -283,10 +283,10 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
     r = ws.compile(source, path, overrides, budget)
     if not r.ok:
         return _summary(ws, r)
-    vals = r.values_matching(names or [])
+    vals = r.values_matching(names or [], sizes=True)
     if names and not vals:
         from ..diagnostics import did_you_mean
-        every = sorted({n for v in r.values for n in _prefixes(v.name)})
+        every = sorted({n for v in r.sizes() for n in _prefixes(v.name)})
         asked = [n for n in names if isinstance(n, str)][:3]
         near = did_you_mean(asked[0], every, 3) if asked else []
         more = f" and {len(names) - 3} more" if len(names) > 3 else ""
