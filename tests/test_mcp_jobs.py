@@ -45,6 +45,9 @@ async def _more(session):
     }
     for key, (tool, args) in calls.items():
         EXTRA[key] = await session.call_tool(tool, args)
+    for topic in ("finger_box", "kerf", "param", "outputs"):
+        EXTRA[f"docs_{topic}"] = await session.call_tool("docs", {"name": topic})
+    EXTRA["topic_resource"] = await session.read_resource("aidl://docs/topic/finger_box")
 
 
 @pytest.fixture(scope="module")
@@ -184,3 +187,16 @@ def test_limits_are_in_the_descriptions(jobs):
         d = EXTRA["tools"][name].description
         assert f"{MAX_ITER:,} items in one loop" in d and f"{MAX_NESTING} deep" in d, name
         assert "20 MB" in d
+
+
+def test_the_docs_served_name_tool_arguments_not_cli_flags(jobs):
+    from aidl_lang.reference import find
+    for topic, flag, said in (("finger_box", "--assembled", "`render` with assembled=true"),
+                              ("kerf", "--kerf", '`render` with kerf="0.2mm"'),
+                              ("param", "--set", "`overrides`"),
+                              ("outputs", "--page", 'page="A4-landscape"')):
+        assert flag in find(topic).render()
+        text = EXTRA[f"docs_{topic}"].content[0].text
+        prose = "\n".join(ln for ln in text.splitlines() if not ln.lstrip().startswith("#"))
+        assert flag not in prose and said in text, (topic, prose)
+    assert "`render` with assembled=true" in EXTRA["topic_resource"].contents[0].text

@@ -486,6 +486,13 @@ def build_server(root: str, budget: float = 1.0,
     return server
 
 
+def _worded(render: Callable[[], str]) -> Callable[[], str]:
+    """``render``'s text worded for the tools (:func:`.wording.for_agents`)."""
+    def read() -> str:
+        return for_agents(render())
+    return read
+
+
 def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
     """Offer the docs, the prompt (worded for the tools), the standard library and the
     examples as resources of ``server`` (see the module text)."""
@@ -496,7 +503,7 @@ def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
     for name, topic in topics().items():
         server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
                         mime_type="text/plain",
-                        description=f"{topic.kind}: {topic.summary}")(topic.render)
+                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
     server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
                     description="The AIDL language reference (docs/language.md)")(
         _text_of(_DOCS / "language.md", "docs/language.md"))

@@ -475,7 +475,7 @@ def docs(name: str | None = None) -> str:
     text, found = lookup_text(name)
     if not found:
         raise Refused(for_agents(text.strip()), "no_match", "name")
-    return text
+    return for_agents(text)
 
 
 def describe(ws: Workspace, source: str | None = None, path: str | None = None,
