@@ -111,14 +111,37 @@ class Layout:
 
     ``sheets``: the number of sheets; ``parts``: the number of parts placed; ``dropped``: the
     engraving strokes outside every part, left out; ``text``: ``laid out 6 parts on 2 sheets
-    of 200 x 150 mm``.  :meth:`encode` gives each sheet's file."""
+    of 200 x 150 mm``; ``where``: one dict part name -> turn in degrees per sheet.
+    :meth:`encode` gives each sheet's file, :meth:`placements` where each part went."""
 
-    def __init__(self, cut: list, solid: list, size: tuple[float, float], dropped: int) -> None:
+    def __init__(self, cut: list, solid: list, size: tuple[float, float], dropped: int,
+                 where: list | None = None) -> None:
         self._cut, self._solid = cut, solid
         self.size = (float(size[0]), float(size[1]))
         self.sheets = len(cut)
         self.parts = sum(len(s.parts) for s in cut)
         self.dropped = dropped
+        self.where = [{name: float(m.deg) for name, m in moves.items()}
+                      for moves in (where or [])]
+
+    def placements(self) -> list[dict]:
+        """Where each part went: ``[{"part", "sheet" (1-based), "rotation" (degrees),
+        "bbox" [x0, y0, x1, y1] mm on the sheet (as designed, before the kerf)}]``, and
+        each sheet's use: :meth:`use`."""
+        out = []
+        for j, sheet in enumerate(self._solid):
+            turns = self.where[j] if j < len(self.where) else {}
+            for p in sheet.parts:
+                box = exact_bbox(seg for lp in p.loops for seg in lp.segments)
+                out.append({"part": p.name, "sheet": j + 1,
+                            "rotation": turns.get(p.name, 0.0),
+                            "bbox": [round(float(v), 6) for v in box]})
+        return out
+
+    def use(self) -> list[float]:
+        """Each sheet's use: the parts' area (holes subtracted) over the sheet's, 0 to 1."""
+        whole = self.size[0] * self.size[1]
+        return [round(sum(float(p.area) for p in s.parts) / whole, 4) for s in self._solid]
 
     @property
     def text(self) -> str:
@@ -181,6 +204,7 @@ class Result:
         self.source = source
         self.units, self.unit_scale = file_units(source or "")
         self._values: list[Value] | None = None
+        self._sizes: list[Value] | None = None
         self._output = None
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
@@ -225,19 +249,31 @@ class Result:
         """Every named entity's solved values (see :class:`Value`), in model order: for each
         structure its frame ``origin`` and ``bbox``; for each named geometry its points
         (``center``, ``start``, ``end``, corners; a rectangle's ``center`` too) and scalars
-        (``radius``, ``width``, ``height``, ...).  Raises :class:`NotCompiled` when the
-        program did not solve."""
+        (``radius``, ``width``, ``height``, ...; with :meth:`sizes` also each radius's
+        ``diameter`` and a rounded rectangle's ``corner_radius``).  Raises
+        :class:`NotCompiled` when the program did not solve."""
         self._need("values")
         if self._values is None:
             self._values = _values(self.compiled.model, self.unit_scale, self.units)
         return self._values
 
-    def values_matching(self, names: Iterable[str] = ()) -> list[Value]:
-        """The :attr:`values` whose name is one of ``names`` or below one of them (a dotted
-        prefix: ``plate.corner`` covers ``plate.corner[0].h.center``); all of them when
-        ``names`` is empty.  The root structure's name may be left out."""
+    def sizes(self) -> list[Value]:
+        """:attr:`values` with the sizes a maker reads too, each after its geometry's own:
+        a circle's or arc's ``diameter`` (after its ``radius``) and a rounded rectangle's
+        ``corner_radius`` (``corner_radius.bottom_left``, ... for ``corner_radii``), in the
+        file's units (the MCP ``values`` tool lists these).  Raises :class:`NotCompiled`."""
+        self._need("values")
+        if self._sizes is None:
+            self._sizes = _values(self.compiled.model, self.unit_scale, self.units, True)
+        return self._sizes
+
+    def values_matching(self, names: Iterable[str] = (), sizes: bool = False) -> list[Value]:
+        """The :attr:`values` (with ``sizes``: :meth:`sizes`) whose name is one of ``names``
+        or below one of them (a dotted prefix: ``plate.corner`` covers
+        ``plate.corner[0].h.center``); all of them when ``names`` is empty.  The root
+        structure's name may be left out."""
         names = [n.strip() for n in names if n.strip()]
-        vals = self.values
+        vals = self.sizes() if sizes else self.values
         if not names:
             return list(vals)
         root = self.compiled.model.root.name + "."
@@ -410,6 +446,22 @@ class Result:
                                 inner, len(p.loops)))
         return out
 
+    @property
+    def fit(self) -> dict:
+        """The fit check of the assembled product (for a program whose parts are placed with
+        ``Place``; the data of its ``W0517``/``W0518``): ``{"checked": bool, "collisions":
+        [{"a", "b", "volume" mm^3, "depth" mm, "box" [x0, y0, z0, x1, y1, z1] mm}],
+        "floating": [{"part", "nearest", "gap" mm}]}``; ``checked`` false (and the lists
+        empty) when nothing is placed or the check did not run.  Overlaps an
+        ``AllowOverlap`` accepts and gaps a template makes by design are not listed.  Raises
+        :class:`NotCompiled`."""
+        self._need("fit")
+        found = getattr(self.compiled.drawing, "fit", None)
+        if not isinstance(found, dict):
+            return {"checked": False, "collisions": [], "floating": []}
+        return {"checked": True, "collisions": list(found["collisions"]),
+                "floating": list(found["floating"])}
+
     def encode(self, fmt: str, kerf: float | None = None, **options) -> bytes:
         """The output in format ``fmt`` (``svg``, ``dxf``, ``pdf``, ``png``, ``stl``, ``3mf``,
         ``step``, ``glb``; a leading dot is allowed) as bytes, as ``aidl render`` writes it: the
@@ -455,7 +507,7 @@ class Result:
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)
         solid, _ = place(self.output, where, sheet)
-        return Layout(flat, solid, sheet, dropped)
+        return Layout(flat, solid, sheet, dropped, where)
 
     def to_svg(self, kerf: float | None = None, **options) -> str:
         """The SVG text (mm page; ``kerf`` and ``options`` as for :meth:`encode`)."""
@@ -713,7 +765,7 @@ def _below(name: str, prefix: str) -> bool:
 
 
 # ------------------------------------------------------------------ solved values
-def _values(model, scale: float, unit: str) -> list[Value]:
+def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
     from .geometry.bbox import numeric_box
     from .geometry.expr import evaluate
     x = model.x
@@ -751,6 +803,17 @@ def _values(model, scale: float, unit: str) -> list[Value]:
                 vals.append(Value(f"{name}.{sn}", "angle", math.degrees(v), "deg", v))
             else:
                 vals.append(Value(f"{name}.{sn}", "number", v, "", v))
+            if sizes and sn == "radius" and sc.dim == "length":   # a circle's size as drawn
+                vals.append(length(f"{name}.diameter", 2 * v))
+        # a rounded rectangle's corners (fixed when it is built: data, not solved scalars)
+        if sizes and isinstance(g.data.get("corner_radius"), (int, float)):
+            radii = g.data.get("corner_radii")
+            if radii is None:
+                vals.append(length(f"{name}.corner_radius", float(g.data["corner_radius"])))
+            else:                                           # bottom_left, ..., top_left
+                for cn, r in zip(("bottom_left", "bottom_right", "top_right", "top_left"),
+                                 radii):
+                    vals.append(length(f"{name}.corner_radius.{cn}", float(r)))
         return vals
 
     def structure(s, base: str) -> list[Value]:

@@ -270,3 +270,47 @@ def test_the_facade_holds_only_the_promised_api():
     assert api.WriteError is write.WriteError is aidl_lang.WriteError is WriteError
     assert issubclass(WriteError, OSError)
     assert callable(params.declared_params) and callable(write.check_output_path)
+
+
+def test_fit_sizes_and_layout_placements_as_data():
+    """Issue 73: the assembled fit check as data (`Result.fit`: the W0517/W0518 figures),
+    the sizes a maker reads (`Result.sizes`: diameters, corner radii) and where a sheet
+    layout put each part (`Layout.placements`, `use`)."""
+    short = aidl_lang.compile(source="""thickness 3 mm
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=40, height=40) }
+    solid wall { r = Rectangle(center=(0, 0), width=40, height=20) }
+    Place(wall, rotation=(90 deg, 0, 0), position=(0, 0, 13.25))
+}""")
+    fit = short.fit
+    assert fit["checked"] and fit["collisions"] == []
+    assert {(f["part"], f["nearest"]) for f in fit["floating"]} >= {("kit.base", "kit.wall")}
+    assert all(f["gap"] == pytest.approx(0.25) for f in fit["floating"])
+    thick = aidl_lang.compile(source='import "std/joints.aidl"\nthickness 3.5 mm\n'
+                                     'assembly kit { box = finger_box(thickness=3 mm) }\n')
+    hits = thick.fit["collisions"]
+    assert len(hits) == 11 and all(h["depth"] == pytest.approx(0.5) for h in hits)
+    assert len([d for d in thick.diagnostics if d.code == "W0517"]) == 11
+    flat = aidl_lang.compile(source=PLATE_SIZES)
+    assert flat.fit == {"checked": False, "collisions": [], "floating": []}
+    got = {v.name: v.value for v in flat.sizes()}
+    assert got["plate.bore.c.diameter"] == pytest.approx(8)
+    assert got["plate.body.corner_radius"] == pytest.approx(3)
+    assert got["plate.tab.corner_radius.top_left"] == pytest.approx(2)
+    assert got["plate.tab.corner_radius.bottom_right"] == pytest.approx(0)
+    assert "plate.bore.c.diameter" not in {v.name for v in flat.values}
+    lay = flat.layout((200, 100), 3.0)
+    [p] = lay.placements()
+    assert p["part"] == "plate" and p["sheet"] == 1
+    x0, y0, x1, y1 = p["bbox"]
+    assert sorted([x1 - x0, y1 - y0]) == pytest.approx([30, 60])
+    assert lay.use() == [pytest.approx(flat.parts[0].area / 20000, abs=1e-4)]
+
+
+PLATE_SIZES = """units mm
+solid plate {
+    body = RoundedRectangle(center=(0, 0), width=60, height=30, corner_radius=3)
+    hole bore { c = Circle(center=(10, 0), radius=4) }
+    tab = RoundedRectangle(center=(-20, 0), width=10, height=10, corner_radii=[2, 1, 0, 1])
+}
+"""

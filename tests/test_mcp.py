@@ -42,6 +42,11 @@ def _text(result) -> str:
     return "\n".join(c.text for c in result.content if c.type == "text")
 
 
+def _doc(result) -> dict:
+    """The structured content of a result (its text is one line: issue 73)."""
+    return result.structured_content
+
+
 @pytest.mark.asyncio
 async def test_mcp_server_over_stdio(tmp_path):
     root = tmp_path / "work"
@@ -56,7 +61,7 @@ async def test_mcp_server_over_stdio(tmp_path):
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
-                                  "import_drawing"}
+                                  "import_drawing", "write_program"}
             assert "source" in tools["check"].input_schema["properties"]
             assert tools["check"].annotations.read_only_hint
             assert not tools["render"].annotations.read_only_hint
@@ -64,19 +69,19 @@ async def test_mcp_server_over_stdio(tmp_path):
             # a broken program: a located diagnostic with its fix
             r = await session.call_tool("check", {"source": BROKEN})
             assert not r.is_error
-            doc = json.loads(_text(r))
+            doc = _doc((r))
             assert doc["ok"] is False
             [d] = doc["diagnostics"]
             assert d["code"] == "E0103" and d["span"]["line"] == 3 and d["span"]["column"] == 9
             assert d["fix"]["replacement"] == "Circle"
 
             # a good one by path: ok, degrees of freedom, parts
-            doc = json.loads(_text(await session.call_tool("check", {"path": "plate.aidl"})))
+            doc = _doc((await session.call_tool("check", {"path": "plate.aidl"})))
             assert doc["ok"] and doc["freedom"]["dof"] >= 0
             assert doc["parts"][0]["holes"] == 1
 
             # describe: the part in words and numbers (the d=8 bore at (10, 0))
-            doc = json.loads(_text(await session.call_tool("describe", {"path": "plate.aidl"})))
+            doc = _doc((await session.call_tool("describe", {"path": "plate.aidl"})))
             assert doc["ok"] and "circle d=8 at (10, 0)" in doc["text"]
             assert doc["describe"]["parts"][0]["openings"][0]["center"] == [10, 0]
             assert tools["describe"].annotations.read_only_hint
@@ -89,14 +94,15 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert img.mime_type == "image/png"
             png = base64.b64decode(img.data)
             assert png[:8] == b"\x89PNG\r\n\x1a\n" and int.from_bytes(png[16:20], "big") == 300
-            assert json.loads(_text(r))["written"] == "plate.dxf"
+            assert _doc((r))["written"] == "plate.dxf"
             assert (root / "plate.dxf").read_text().lstrip().startswith("0")
 
             # a value, in the file's units
-            doc = json.loads(_text(await session.call_tool(
-                "values", {"path": "plate.aidl", "names": ["bore.c"]})))
+            doc = _doc((await session.call_tool(
+                "values", {"path": "plate.aidl", "names": ["bore.c"], "detail": True})))
             assert doc["text"].splitlines() == ["plate.bore.c.center = (10.000, 0.000) mm",
-                                                "plate.bore.c.radius = 4.000 mm"]
+                                                "plate.bore.c.radius = 4.000 mm",
+                                                "plate.bore.c.diameter = 8.000 mm"]
 
             # refused: outside the root, directly, by `..` and through a symlink
             for args in ({"path": str(outside)}, {"path": "../secret.aidl"},
@@ -109,7 +115,7 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert r.is_error and (root / "plate.aidl").read_text() == GOOD
 
             # import_drawing: the DXF just written comes back as its design, and is written
-            doc = json.loads(_text(await session.call_tool(
+            doc = _doc((await session.call_tool(
                 "import_drawing", {"path": "plate.dxf", "output": "back.aidl"})))
             assert doc["ok"] and doc["output"] == "back.aidl", doc
             assert "hole hole1 { h = Circle(center=(10, 0), radius=4) }" in doc["program"]
@@ -148,7 +154,11 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert set(prompts) == {"aidl"}
             got = await session.get_prompt("aidl", {})
             [msg] = got.messages
-            assert msg.role == "user" and msg.content.text == system_prompt()
+            assert msg.role == "user" and msg.content.text == for_agents(system_prompt())
+            # the prompt an agent reads names the tools' arguments, not the CLI's flags
+            for flag in ("--set", "--layout", "--assembled", "--describe", "--infer"):
+                assert flag in system_prompt() and flag not in msg.content.text, flag
+            assert 'layout="sheet"' in msg.content.text
             got = await session.get_prompt("aidl", {"request": "a washer 20 mm across"})
             assert got.messages[0].content.text.endswith("Design this part: a washer 20 mm "
                                                          "across\n")
@@ -205,7 +215,7 @@ def test_server_info_version_is_the_package_version():
     from aidl_lang.mcp.server import build_server
     import tempfile
     with tempfile.TemporaryDirectory() as d:
-        server = build_server(d)
+        server = build_server(d, warm=False)
     assert version("aidl-lang") and server.version == version("aidl-lang")
 
 
@@ -220,7 +230,7 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
-                                  "import_drawing"}
+                                  "import_drawing", "write_program"}
             for t in tools.values():
                 props = t.input_schema["properties"]
                 assert props, t.name
@@ -244,7 +254,7 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
                 assert next(iter(args)) in _text(r), (args, _text(r))
             r = await session.call_tool("render", {"source": GOOD, "style": "laser",
                                                    "width": 64, "budget": 0.5})
-            assert not r.is_error and json.loads(_text(r))["ok"], _text(r)
+            assert not r.is_error and _doc((r))["ok"], _text(r)
 
 
 def test_a_program_path_that_is_not_utf8_or_has_a_bom_reads_as_aidl_check_reads_it(tmp_path):
@@ -279,7 +289,7 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
                     "path": "stand.aidl", "width": 240, "assembled": True,
                     "overrides": {"slot": slot}, "output": "stand.glb"})
                 assert not r.is_error, _text(r)
-                doc = json.loads(_text(r))
+                doc = _doc((r))
                 assert doc["image"]["view"] == "assembled" and doc["written"] == "stand.glb"
                 [img] = [c for c in r.content if c.type == "image"]
                 im = np.asarray(Image.open(io.BytesIO(base64.b64decode(img.data))).convert("RGB"))

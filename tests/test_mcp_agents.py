@@ -14,7 +14,7 @@ mcp = pytest.importorskip("mcp")
 from mcp.client.session import ClientSession  # noqa: E402
 from mcp.client.stdio import stdio_client  # noqa: E402
 
-from test_mcp import GOOD, _server, _text  # noqa: E402
+from test_mcp import GOOD, _doc, _server, _text  # noqa: E402
 
 # seconds of work that ends in E0304: the shape checks of 3,000 overlapping holes stop at
 # their shares of the budget (W0521), then the exact outlines of the stacked circles run past
@@ -43,7 +43,7 @@ async def test_a_slow_call_delays_only_itself(tmp_path):
         t0 = time.monotonic()
         r = await session.call_tool("check", {"source": GOOD})
         fast = time.monotonic() - t0
-        assert not r.is_error and json.loads(_text(r))["ok"], _text(r)
+        assert not r.is_error and _doc((r))["ok"], _text(r)
         # answered while the slow one still runs (not queued behind it); the seconds are a
         # hang guard only, wide for a loaded machine
         assert not slow.done()
@@ -52,7 +52,7 @@ async def test_a_slow_call_delays_only_itself(tmp_path):
         if r.is_error:                      # a machine too busy to end it within 30 s
             assert "took longer than" in _text(r)
         else:
-            doc = json.loads(_text(r))
+            doc = _doc((r))
             assert not doc["ok"] and "E0304" in [d["code"] for d in doc["diagnostics"]]
 
 
@@ -75,11 +75,11 @@ async def test_results_are_structured_content_matching_the_output_schemas(tmp_pa
                 r = await session.call_tool(name, {"source": source, **extra})
                 assert not r.is_error, _text(r)
                 jsonschema.validate(r.structured_content, schema)
-                assert json.loads(_text(r)) == r.structured_content
+                assert _doc((r)) == r.structured_content
                 assert r.structured_content["ok"] is (source == GOOD)
         r = await session.call_tool("values", {"path": "plate.aidl", "names": ["bore.c"]})
         assert [v["name"] for v in r.structured_content["values"]] == [
-            "plate.bore.c.center", "plate.bore.c.radius"]
+            "plate.bore.c.center", "plate.bore.c.radius", "plate.bore.c.diameter"]
         assert r.structured_content["values"][0]["value"] == [10, 0]
         r = await session.call_tool("render", {"path": "plate.aidl", "width": 64})
         assert [c.type for c in r.content] == ["image", "text"]
@@ -200,7 +200,7 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
         lay = r.structured_content["layout"]
         assert lay["sheets"] == 2 and lay["size"] == [200, 150]
         assert lay["files"] == ["sheets/cut-1.svg", "sheets/cut-2.svg"]
-        assert lay["text"] == "laid out 2 parts on 2 sheets of 200 x 150 mm"
+        assert lay["text"].startswith("laid out 2 parts on 2 sheets of 200 x 150 mm, use ")
         assert r.structured_content["written"] == "sheets/cut-1.svg"
         assert [c.type for c in r.content] == ["image", "image", "text"]
         ids = [re.findall(r'id="(part-[^"]+)"', (tmp_path / f).read_text())
@@ -236,7 +236,7 @@ def _said(doc) -> list[str]:
     text: what an agent reads (the rendered text repeats them, with source lines)."""
     out = [doc.get("summary", ""), doc.get("freedom", {}).get("text", "")]
     for d in doc.get("diagnostics", []):
-        out += [d["message"], d["hint"] or "", d["rendered"]]
+        out += [d["message"], d["hint"] or "", d.get("rendered", "")]
         out += [lab["message"] for lab in d["labels"]]
     return [s for s in out if s]
 
@@ -261,7 +261,7 @@ async def test_messages_name_tools_and_arguments_not_command_line_flags(tmp_path
     ]
     async with _session(tmp_path) as session:
         for args, phrase in cases:
-            r = await session.call_tool("check", args)
+            r = await session.call_tool("check", {**args, "detail": True})
             assert not r.is_error, _text(r)
             said = _said(r.structured_content)
             assert any(phrase in s for s in said), (phrase, said)

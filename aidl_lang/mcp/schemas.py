@@ -44,7 +44,8 @@ class Diagnostic(TypedDict):
     hint: str | None
     suggestions: list[str]
     fix: Fix | None
-    rendered: Annotated[str, Field(description="the diagnostic as text, with the source line")]
+    rendered: NotRequired[Annotated[str, Field(
+        description="the diagnostic as text, with the source line (with `detail: true`)")]]
 
 
 class Solve(TypedDict):
@@ -82,10 +83,42 @@ class Part(TypedDict):
     loops: int
 
 
+class Error(TypedDict):
+    """Why a call failed: ``code`` (a program's first error code, E0103, ...; or what kind
+    of refusal: unknown_argument, bad_argument, program_choice, outside_root, symlink,
+    not_found, wrong_kind, no_match, not_unique, output_failed, timed_out, worker_died,
+    internal_error), ``message``, and the ``argument`` at fault when there is one."""
+    code: str
+    message: str
+    argument: NotRequired[str]
+
+
+class Collision(TypedDict):
+    a: str
+    b: str
+    volume: Annotated[float, Field(description="mm³ the two parts share")]
+    depth: Annotated[float, Field(description="mm one runs into the other")]
+    box: Annotated[list[float], Field(description="[x0, y0, z0, x1, y1, z1] mm")]
+
+
+class Floating(TypedDict):
+    part: str
+    nearest: str
+    gap: Annotated[float, Field(description="mm to the nearest part")]
+
+
+class Fit(TypedDict):
+    """The fit check of the assembled product (parts placed with `Place`)."""
+    checked: Annotated[bool, Field(description="false: nothing is placed, no check ran")]
+    collisions: list[Collision]
+    floating: list[Floating]
+
+
 class _Compiled(TypedDict):
     """What every compiling tool returns: ``ok``, the diagnostics, the file's length unit,
-    the solve's statistics and, with errors, a one-line summary of them."""
+    the solve's statistics and, with errors, a one-line summary of them and the ``error``."""
     ok: Annotated[bool, Field(description="no errors, and the program solved")]
+    error: NotRequired[Error]
     diagnostics: NotRequired[list[Diagnostic]]
     units: Annotated[str, Field(description="the file's length unit (mm when it names none)")]
     solve: NotRequired[Solve]
@@ -95,17 +128,28 @@ class _Compiled(TypedDict):
 class CheckResult(_Compiled):
     freedom: NotRequired[Freedom]
     parts: NotRequired[list[Part]]
+    fit: NotRequired[Fit]
+
+
+class WriteResult(CheckResult):
+    """``write_program``: the file written, then checked."""
+    written: NotRequired[Annotated[str, Field(description="the file, relative to the root")]]
+    lines: NotRequired[int]
 
 
 class Value(TypedDict):
     """One solved value of a named entity."""
     name: Annotated[str, Field(description="dotted path, e.g. plate.bore.c.center")]
-    kind: Literal["point", "length", "angle", "number", "box"]
+    kind: Literal["point", "length", "angle", "number", "box", "group"]
     value: Annotated[float | list[float], Field(
         description="in the file's units (angles in degrees); a point [x, y], a box "
-                    "[left, bottom, right, top]")]
+                    "[left, bottom, right, top]; a group: the value all its members share, "
+                    "else the box their points span or [least, greatest]")]
     unit: str
-    mm: Annotated[float | list[float], Field(description="the same in mm (angles: radians)")]
+    mm: NotRequired[Annotated[float | list[float], Field(
+        description="the same in mm (angles: radians); left out where it equals `value`")]]
+    count: NotRequired[Annotated[int, Field(description="a group: how many values")]]
+    of: NotRequired[Annotated[str, Field(description="a group: its members' kind")]]
 
 
 class ValuesResult(_Compiled):
@@ -133,6 +177,21 @@ class LayoutInfo(TypedDict):
     size: Annotated[list[float], Field(description="[width, height] of a sheet, mm")]
     files: Annotated[list[str], Field(description="the files written, one per sheet")]
     text: Annotated[str, Field(description="e.g. laid out 6 parts on 2 sheets of 600 x 400 mm")]
+    use: Annotated[list[float], Field(description="per sheet: the parts' area over the "
+                                                  "sheet's, 0 to 1")]
+    placements: Annotated[list[dict[str, Any]], Field(
+        description="per part: {part, sheet (1-based), rotation (degrees), bbox [x0, y0, "
+                    "x1, y1] mm on the sheet}")]
+
+
+class Job(TypedDict):
+    """What cutting the written drawing takes, as the G-code writer plans it."""
+    cut_mm: Annotated[float, Field(description="mm cut, every pass")]
+    travel_mm: Annotated[float, Field(description="mm moved with the tool off")]
+    seconds: Annotated[float, Field(description="the job's time at the machine profile's "
+                                                "speeds (acceleration ignored)")]
+    machine: Annotated[str, Field(description="the profile's kind: laser, router, plotter")]
+    text: str
 
 
 class RenderResult(_Compiled):
@@ -142,6 +201,8 @@ class RenderResult(_Compiled):
         description="the file written (the first sheet's with a layout), relative to the "
                     "allowed folder")]]
     layout: NotRequired[LayoutInfo]
+    job: NotRequired[Job]
+    fit: NotRequired[Fit]
 
 
 class ImportNote(TypedDict):
@@ -164,3 +225,4 @@ class ImportResult(TypedDict):
     notes: NotRequired[list[ImportNote]]
     output: NotRequired[Annotated[str, Field(description="the .aidl file written")]]
     diagnostics: NotRequired[list[ImportProblem]]
+    error: NotRequired[Error]

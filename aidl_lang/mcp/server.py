@@ -27,11 +27,26 @@ from mcp.shared.exceptions import MCPError
 from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
+from ..limits import DEFAULT_BUDGET, MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..output.writers import FORMATS
+from ..parser import MAX_NESTING
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
+from ..sources import MAX_DRAWING_BYTES
+from . import compact as C
 from . import tools as T
-from .schemas import CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult
+from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult,
+                      WriteResult)
 from .wording import for_agents
+
+# what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
+# said in the descriptions of the tools that compile
+LIMITS = (f"Limits: a program of at most {T.MAX_SOURCE:,} characters, brackets nested at "
+          f"most {MAX_NESTING} deep, at most {MAX_ITER:,} items in one loop, templates "
+          f"nested {MAX_TEMPLATE_DEPTH} deep, {DEFAULT_BUDGET.steps:,} loop steps and "
+          f"{DEFAULT_BUDGET.objects:,} objects per compile, {DEFAULT_BUDGET.seconds:g} s "
+          f"(x `budget`); a DXF or SVG drawing of at most "
+          f"{MAX_DRAWING_BYTES // 1_000_000} MB. Past one: a located E0304 (or E0003, "
+          f"E0301), not a hang.")
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
 # JSON Schema of `tools/list`, and checks calls against it before a tool runs.
@@ -113,9 +128,32 @@ Units = Annotated[Literal["mm", "cm", "m", "in", "ft", "pt", "px"] | None, Field
     description="The drawing's unit, instead of the DXF's $INSUNITS or the SVG's size.")]
 ProgramOutput = Annotated[str | None, Field(
     description="Also write the program to this .aidl file, relative to the allowed folder.")]
-Names = Annotated[list[str] | None, Field(
+Names = Annotated[list[Annotated[str, Field(max_length=500)]] | None, Field(
     description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
-                "root structure's name may be left out); default: every value.")]
+                "root structure's name may be left out); default: every value. Names that "
+                "match nothing are an error (no_match) with the nearest names.",
+    max_length=200)]
+Detail = Annotated[bool, Field(
+    description="Every item in full: each copy of a pattern or loop, each alike opening or "
+                "cut, and each diagnostic's `rendered` text. Default: lists of more than "
+                f"{C.GROUP_AT} alike items said once with their count (`count`, `alike`, "
+                "`within`; values: kind `group`).")]
+WritePath = Annotated[str, Field(
+    description="The .aidl file to write, relative to the allowed folder (its folders are "
+                "made; never through a symbolic link).")]
+WriteText = Annotated[str | None, Field(
+    description="The whole program: the file becomes this text.", max_length=T.MAX_SOURCE)]
+Old = Annotated[str | None, Field(
+    description="Patch: the text to replace, found exactly once in the file (with `new`).",
+    max_length=T.MAX_SOURCE)]
+New = Annotated[str | None, Field(
+    description="Patch: the replacement of `old`, or of the characters `start` to `end`.",
+    max_length=T.MAX_SOURCE)]
+Start = Annotated[int | None, Field(
+    description="Patch: the first character replaced, a 0-based offset (a diagnostic's "
+                "`span.start`, a fix's span).", ge=0)]
+End = Annotated[int | None, Field(
+    description="Patch: the offset after the last character replaced (`span.end`).", ge=0)]
 Code = Annotated[str, Field(
     description="A diagnostic code, e.g. E0103 or W0402 (any case).", min_length=1,
     max_length=16)]
@@ -160,6 +198,56 @@ def _json(doc: dict) -> str:
     return json.dumps(doc, indent=1)
 
 
+def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
+           ) -> CallToolResult:
+    """A compiling tool's result: ``doc`` as structured content, compact unless ``detail``
+    (:mod:`.compact`), the pictures, and one line of text; a program with errors also
+    carries ``error`` (its first error's code and the summary)."""
+    if "diagnostics" in doc and isinstance(doc["diagnostics"], list) and tool != "import_drawing":
+        doc["diagnostics"] = C.diagnostics(doc["diagnostics"], detail)
+    if tool == "values" and "values" in doc:
+        doc["values"] = C.values(doc["values"], doc.get("units", "mm"), detail)
+        if not detail:
+            doc.pop("text", None)
+    if tool == "describe":
+        doc = C.describe(doc, detail)
+    if not doc.get("ok") and "error" not in doc:
+        first = next((d for d in doc.get("diagnostics", [])
+                      if d.get("severity", "error") == "error"), None)
+        if first is not None:
+            doc["error"] = {"code": first["code"],
+                            "message": doc.get("summary") or first["message"]}
+    pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
+    return CallToolResult(content=pictures + [TextContent(type="text", text=C.line(tool, doc))],
+                          structured_content=doc)
+
+
+def refusal(code: str, message: str, argument: str | None = None) -> CallToolResult:
+    """A refused call: a tool error whose structured content is ``{"ok": false, "error":
+    {"code", "message", "argument"?}}`` (:func:`.compact.error`), the same in one line."""
+    doc = C.error(code, for_agents(message), argument)
+    return CallToolResult(content=[TextContent(type="text", text=C.line("", doc))],
+                          structured_content=doc, is_error=True)
+
+
+def _validation(exc: BaseException) -> tuple[str, str | None]:
+    """The message and argument of the SDK's argument check that failed (a pydantic
+    ``ValidationError``), without pydantic's links: ``width: Input should be less than or
+    equal to 4096 (got 5000)``."""
+    errors = getattr(exc, "errors", None)
+    if not callable(errors):
+        return str(exc).split("\n")[0], None
+    said, first = [], None
+    for e in errors()[:5]:
+        loc = [str(x) for x in e.get("loc", ()) if x != "arguments"]
+        name = loc[0] if loc else None
+        first = first or name
+        got = repr(e.get("input"))
+        got = got if len(got) <= 60 else got[:57] + "..."
+        said.append(f"`{'.'.join(loc) or '?'}`: {e.get('msg', 'invalid')} (got {got})")
+    return "; ".join(said) or "invalid arguments", first
+
+
 # a tool that compiles takes its program as `source` or `path`, exactly one of them (a null
 # one is not given)
 PROGRAM_CHOICE = [{"required": ["source"], "properties": {"source": {"type": "string"}}},
@@ -175,6 +263,9 @@ def _tool(fn: Callable, annotations: ToolAnnotations, structured: bool) -> Tool:
     tool.parameters["additionalProperties"] = False
     if "source" in tool.parameters["properties"]:
         tool.parameters["oneOf"] = PROGRAM_CHOICE
+    if tool.name in ("check", "render", "values", "describe", "write_program",
+                     "import_drawing"):
+        tool.description = (tool.description or "").rstrip() + "\n" + LIMITS
     return tool
 
 
@@ -195,8 +286,27 @@ class _Server(MCPServer):
             try:
                 T.check_arguments(name, arguments, self.accepted[name])
             except T.Refused as e:
-                raise ToolError(str(e)) from None
-        return await super().call_tool(name, arguments, context)
+                return refusal(e.code, str(e), e.argument)
+        try:
+            return await super().call_tool(name, arguments, context)
+        except ToolError as e:
+            from mcp.server.mcpserver.exceptions import UnexpectedToolError
+            cause: BaseException | None = e
+            while cause is not None and not isinstance(cause, T.Refused):
+                cause = cause.__cause__
+            if isinstance(cause, T.Refused):
+                return refusal(cause.code, str(cause), cause.argument)
+            if isinstance(e, UnexpectedToolError):
+                return refusal("internal_error", f"`{name}` failed inside aidl (please "
+                                                 "report it)")
+            cause = e.__cause__
+            if cause is not None and hasattr(cause, "errors"):
+                message, argument = _validation(cause)
+                return refusal("bad_argument", f"arguments of `{name}`: {message}", argument)
+            text = str(e)
+            prefix = f"Error executing tool {name}: "
+            return refusal("bad_argument", text[len(prefix):] if text.startswith(prefix)
+                           else text)
 
     async def get_prompt(self, name: str, arguments: dict | None = None, context=None):
         prompts = {p.name: p for p in await self.list_prompts()}
@@ -214,16 +324,20 @@ class _Server(MCPServer):
 
 
 def build_server(root: str, budget: float = 1.0,
-                 prompt: Callable[[], str] | None = None) -> MCPServer:
+                 prompt: Callable[[], str] | None = None, warm: bool = True) -> MCPServer:
     """The server for the allowed folder ``root`` with ``budget`` (a factor of the default
     evaluation budget) as each call's default; ``prompt``: a function that returns the
-    ``aidl prompt`` text (given by the command line, which may import the LLM tools)."""
+    ``aidl prompt`` text (given by the command line, which may import the LLM tools);
+    ``warm``: start a worker and compile a small program in it at once, in the background
+    (:meth:`.worker.Pool.warm`), so the first call is as fast as the rest."""
     ws = T.Workspace(root, budget)
     # the compiling tools run side by side in a pool of warm worker processes, each call
     # killed past twice the budget's wall time (aidl_lang/mcp/worker.py): a call always ends,
     # and a slow one delays only itself
     from .worker import Pool
     work = Pool(str(ws.root), budget)
+    if warm:
+        work.warm()
     from importlib.metadata import PackageNotFoundError, version
     try:
         ver = version("aidl-lang")
@@ -237,9 +351,6 @@ def build_server(root: str, budget: float = 1.0,
             return fn
         return register
 
-    def refused(e: Exception) -> ToolError:
-        return ToolError(for_agents(str(e)))
-
     # hints for hosts: check, values and explain only read; render writes only when given
     # `output` (never outside the root); nothing reaches the network
     reads = ToolAnnotations(read_only_hint=True, idempotent_hint=True, open_world_hint=False)
@@ -248,21 +359,35 @@ def build_server(root: str, budget: float = 1.0,
 
     @tool(reads)
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-              dof: Dof = False, budget: Budget = None) -> CheckResult:
+              dof: Dof = False, budget: Budget = None,
+              detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing.
 
         Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder);
         a Drawing2D("x.dxf") reads a drawing beside the program (source: in the folder).
-        `overrides` sets params like `aidl --set` ({"width": "40 mm"}); `dof` adds degrees of
-        freedom per structure; `budget` multiplies the evaluation budget (at most 4).
-        Returns (structured content, and the same JSON as text): ok, diagnostics (code,
-        severity, message, span with 1-based line and column, labels, hint, suggestions, fix),
-        solve statistics, freedom (degrees of freedom left) and parts (name, kind, bbox [x0,
-        y0, x1, y1] mm, area mm2, holes)."""
-        try:
-            return work.call("check", source, path, overrides, dof, budget, budget=budget)
-        except T.Refused as e:
-            raise refused(e) from None
+        `overrides` sets params ({"width": "40 mm"}); `dof` adds degrees of freedom per
+        structure; `budget` multiplies the evaluation budget (at most 4).
+        Returns structured content (and one line of text): ok, diagnostics (code, severity,
+        message, span with 1-based line and column and 0-based start/end, labels, hint,
+        suggestions, fix), solve statistics, freedom (degrees of freedom left), parts (name,
+        kind, bbox [x0, y0, x1, y1] mm, area mm2, holes) and fit (the assembled product's
+        fit check: {checked, collisions: [{a, b, volume, depth, box}], floating: [{part,
+        nearest, gap}]}); with errors, error {code, message}. """
+        return answer("check", work.call("check", source, path, overrides, dof, budget,
+                                         budget=budget), detail=detail)
+
+    @tool(writes)
+    def write_program(path: WritePath, text: WriteText = None, old: Old = None,
+                      new: New = None, start: Start = None, end: End = None,
+                      dof: Dof = False, detail: Detail = False
+                      ) -> Annotated[CallToolResult, WriteResult]:
+        """Write a program file inside the allowed folder, then check it (as `check`):
+        the whole `text`, or a patch of the file as it is: `old` -> `new` (`old` found
+        exactly once), or the characters `start` to `end` (0-based, as a diagnostic's span
+        and fix give them) -> `new`. Then `check`, `render`, `values` and `describe` take it
+        by `path`. Returns check's result with written (the path) and lines."""
+        return answer("write_program", work.call("write_program", path, text, old, new, start,
+                                                 end, dof), detail=detail)
 
     @tool(writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
@@ -270,84 +395,83 @@ def build_server(root: str, budget: float = 1.0,
                budget: Budget = None, assembled: Assembled = False, layout: LayoutKind = None,
                sheet: Sheet = None, gap: Gap = None, rotate: Rotate = None, kerf: Kerf = None,
                thickness: Thickness = None, machine: Machine = None,
-               page: Page = None) -> Annotated[CallToolResult, RenderResult]:
+               page: Page = None, detail: Detail = False
+               ) -> Annotated[CallToolResult, RenderResult]:
         """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
-        JSON summary (ok, diagnostics, parts).  `output`: also write the drawing to this file
+        summary (ok, diagnostics, parts, fit).  `output`: also write the drawing to this file
         inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
         .gcode for a GRBL laser, router or plotter per `machine`, .pdf a 1:1 printed template,
-        tiled over `page` paper, .png, .stl, .3mf, .step, .glb).
-        `style`: preview (filled) or laser (hairlines).
+        tiled over `page` paper, .png, .stl, .3mf, .step, .glb); a cutting output adds job
+        {cut_mm, travel_mm, seconds (at the `machine` profile's speeds, the laser's by
+        default), machine, text}.  `style`: preview (filled) or laser (hairlines).
         `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
         boxed in red.  `layout`: "sheet" lays the parts out on cutting sheets (`sheet`
-        size, `gap`, `rotate`), a picture and a file per sheet; `kerf` offsets the cuts,
-        `thickness` sets the extrusion of 3D outputs (as `aidl render`'s options).  When the
-        program has errors there is no picture, only the diagnostics.  The summary is
-        structured content (and the same JSON as text)."""
-        try:
-            doc, pngs = work.call("render", source, path, output, width, overrides, budget,
-                                  style, assembled, layout, sheet, gap, rotate, kerf,
-                                  thickness, machine, page, budget=budget)
-        except T.Refused as e:
-            raise refused(e) from None
-        pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
-        return CallToolResult(content=pictures + [TextContent(type="text", text=_json(doc))],
-                              structured_content=doc)
+        size, `gap`, `rotate`), a picture and a file per sheet, with layout {sheets, size,
+        files, use per sheet, placements [{part, sheet, rotation, bbox}]}; `kerf` offsets the
+        cuts, `thickness` sets the extrusion of 3D outputs.  When the program has errors
+        there is no picture, only the diagnostics and error.  Structured content, and one
+        line of text."""
+        doc, pngs = work.call("render", source, path, output, width, overrides, budget,
+                              style, assembled, layout, sheet, gap, rotate, kerf,
+                              thickness, machine, page, budget=budget)
+        return answer("render", doc, pngs, detail)
 
     @tool(reads)
     def values(source: Source = None, path: ProgramPath = None, names: Names = None,
-               overrides: Overrides = None, budget: Budget = None) -> ValuesResult:
+               overrides: Overrides = None, budget: Budget = None,
+               detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
         """The solved values of named entities, in the file's units: each structure's frame
         origin and bounding box, each named geometry's points (center, start, end, corners)
-        and sizes (radius, width, height), every copy of a pattern too, from the original
-        (corners[0], corners[1].c.center, each at its real origin).  `names` filters by
-        dotted prefix (e.g. ["plate.bore", "plate.body.width"]); the root structure's name
-        may be left out.
-        Returns (structured content, and the same JSON as text): ok, units, values [{name,
-        kind, value, unit, mm}] and text (one `name = value unit` line each)."""
-        try:
-            return work.call("values", source, path, names, overrides, budget, budget=budget)
-        except T.Refused as e:
-            raise refused(e) from None
+        and sizes (radius and diameter, width, height, a rounded rectangle's corner_radius),
+        every copy of a pattern too, from the original (corners[0], corners[1].c.center, each
+        at its real origin).  `names` filters by dotted prefix (e.g. ["plate.bore",
+        "plate.body.width"]); the root structure's name may be left out.
+        Returns structured content (and one line of text): ok, units, values [{name, kind,
+        value, unit, mm (when not the same as value)}]; more than 12 copies of one name
+        (cut_a[0].start, cut_a[1].start, ...) are one {name: "cut_a[*].start", kind: "group",
+        count, value} unless `detail` (which also adds text, one `name = value unit` line
+        each)."""
+        return answer("values", work.call("values", source, path, names, overrides, budget,
+                                          budget=budget), detail=detail)
 
     @tool(reads)
     def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-                 budget: Budget = None) -> DescribeResult:
+                 budget: Budget = None,
+                 detail: Detail = False) -> Annotated[CallToolResult, DescribeResult]:
         """What the final part is, for checking it without a picture: for each part its
         outline (kind, size, box), each opening with its kind (circle d=..., slot l long, w
         wide, rectangle, star, arc slot, n-gon), centre and size, engravings (text, height and
         place), copies (parts of the same shape, listed once under the first with their
-        places) and symmetries (mirror, n-fold rotation); mm. Returns (structured content, and
-        the same JSON as text): ok, diagnostics, text (one line per feature) and describe (the
-        same as data)."""
-        try:
-            return work.call("describe", source, path, overrides, budget, budget=budget)
-        except T.Refused as e:
-            raise refused(e) from None
+        places) and symmetries (mirror, n-fold rotation); mm. More than 12 alike openings or
+        cuts are said once with their count and the box of their places, unless `detail`.
+        Returns structured content (and one line of text): ok, diagnostics, text (one line
+        per feature) and describe (the same as data)."""
+        return answer("describe", work.call("describe", source, path, overrides, budget,
+                                            budget=budget), detail=detail)
 
     @tool(writes)
     def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
-                       budget: Budget = None) -> ImportResult:
+                       budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
         """Turn a DXF or SVG drawing into an AIDL program to edit (`aidl import`).  With
         `infer` (the default) the program is the design a person would write: the outline as
         RoundedRectangle, Slot, RegularPolygon..., holes named by what they are
         (corner_holes, bolt_circle, bore, slot) with loops for patterns, one param per
         repeated size, every shape held where the drawing has it; exact to 1e-6 mm.  Returns
-        (structured content, and the same JSON as text): ok, program (the text), notes (what
-        was skipped), output (the file written); or ok false and diagnostics."""
-        try:
-            return work.call("import_drawing", path, infer, parts, units, output, budget,
-                             budget=budget)
-        except T.Refused as e:
-            raise refused(e) from None
+        structured content (and one line of text): ok, program (the text), notes (what was
+        skipped), output (the file written: then `write_program` patches it and the other
+        tools take it by `path`); or ok false, diagnostics and error."""
+        doc = work.call("import_drawing", path, infer, parts, units, output, budget,
+                        budget=budget)
+        if not doc.get("ok") and doc.get("diagnostics"):
+            d = doc["diagnostics"][0]
+            doc["error"] = {"code": d["code"], "message": d["message"]}
+        return answer("import_drawing", doc)
 
     @tool(reads, structured=False)
     def explain(code: Code) -> str:
         """What a diagnostic code (E0103, W0402, ...) means, with an example."""
-        try:
-            return T.explain(code)
-        except T.Refused as e:
-            raise refused(e) from None
+        return T.explain(code)
 
     @tool(reads, structured=False)
     def docs(name: TopicName = None) -> str:
@@ -355,12 +479,23 @@ def build_server(root: str, budget: float = 1.0,
         `aidl docs NAME`): signature, the unit of every parameter, members and an example
         program that compiles.  Any case or style finds a name (SpurGear, spur-gear); no
         name: the list of topics."""
-        try:
-            return T.docs(name)
-        except T.Refused as e:
-            raise refused(e) from None
+        return T.docs(name)
 
     server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
+    _resources(server, prompt)
+    return server
+
+
+def _worded(render: Callable[[], str]) -> Callable[[], str]:
+    """``render``'s text worded for the tools (:func:`.wording.for_agents`)."""
+    def read() -> str:
+        return for_agents(render())
+    return read
+
+
+def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
+    """Offer the docs, the prompt (worded for the tools), the standard library and the
+    examples as resources of ``server`` (see the module text)."""
     from ..reference import index_text, topics
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "
@@ -368,7 +503,7 @@ def build_server(root: str, budget: float = 1.0,
     for name, topic in topics().items():
         server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
                         mime_type="text/plain",
-                        description=f"{topic.kind}: {topic.summary}")(topic.render)
+                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
     server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
                     description="The AIDL language reference (docs/language.md)")(
         _text_of(_DOCS / "language.md", "docs/language.md"))
@@ -378,14 +513,15 @@ def build_server(root: str, budget: float = 1.0,
     if prompt is not None:
         server.resource("aidl://prompt", name="system prompt", mime_type="text/plain",
                         description="`aidl prompt`: the vocabulary with signatures, and "
-                                    "example programs")(lambda: prompt())
+                                    "example programs, worded for the tools")(
+            lambda: for_agents(prompt()))
 
         @server.prompt(name="aidl", title="Write AIDL",
                        description="The AIDL system prompt (`aidl prompt`): the language, its "
                                    "vocabulary with signatures, the standard library and example "
                                    "programs; `request`: a part to design, appended")
         def aidl_prompt(request: Request = None) -> str:
-            text = prompt()
+            text = for_agents(prompt())
             if request and request.strip():
                 text += f"\nDesign this part: {request.strip()}\n"
             return text
@@ -401,10 +537,10 @@ def build_server(root: str, budget: float = 1.0,
             server.resource(f"aidl://examples/{rel}", name=f"example {rel}",
                             mime_type="text/plain", description="an example program")(
                 _text_of(f, f"examples/{rel}"))
-    return server
 
 
 def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:
     """Serve over stdin/stdout until the client closes them."""
-    build_server(root, budget, prompt).run("stdio")
+    import os
+    build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD")).run("stdio")
     return 0

@@ -23,7 +23,16 @@ MAX_PNG_WIDTH = 4096      # pixels
 
 class Refused(Exception):
     """The request is turned down; the message says why (shown to the agent as a tool
-    error)."""
+    error), ``code`` what kind of refusal it is (:data:`.compact.CODES`), ``argument`` the
+    argument at fault when there is one."""
+
+    def __init__(self, message: str, code: str = "bad_argument",
+                 argument: str | None = None) -> None:
+        super().__init__(message)
+        self.code, self.argument = code, argument
+
+    def __reduce__(self):                     # across the worker's pipe, with its code
+        return (Refused, (str(self), self.code, self.argument))
 
 
 def one_program(source: str | None, path: str | None) -> None:
@@ -31,7 +40,7 @@ def one_program(source: str | None, path: str | None) -> None:
     :class:`Refused`."""
     if (source is None) == (path is None):
         raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
-                      "inside the allowed folder)")
+                      "inside the allowed folder)", "program_choice")
 
 
 def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
@@ -46,7 +55,8 @@ def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
         said = ", ".join(f"`{a}`" for a in unknown)
         raise Refused(f"unknown argument{'s' if len(unknown) > 1 else ''} {said} for `{tool}`"
                       + (f"; did you mean `{near[0]}`?" if near else ";")
-                      + f" `{tool}` takes: {', '.join(accepted)}")
+                      + f" `{tool}` takes: {', '.join(accepted)}", "unknown_argument",
+                      unknown[0])
     if "source" in accepted and "path" in accepted:
         one_program(arguments.get("source"), arguments.get("path"))
 
@@ -75,11 +85,38 @@ class Workspace:
         except (OSError, ValueError):          # a link swapped while it was resolved
             raise Refused(f"`{path}` changed while it was being resolved; try again") from None
         if real != self.root and self.root not in real.parents:
+            link = self._link_in(p)
+            if link is not None:
+                raise Refused(f"`{path}` goes through the symbolic link `{link[0]}` (inside "
+                              f"the allowed folder), which points to `{link[1]}`: that target "
+                              f"is outside the allowed folder {self.root} (the server's "
+                              "`--root`); only files inside it can be read or written",
+                              "outside_root", "path")
             raise Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
-                          "--root); only files inside it can be read or written")
+                          "`--root`); only files inside it can be read or written",
+                          "outside_root", "path")
         if must_exist and not real.is_file():
-            raise Refused(f"`{path}` is not a file in {self.root}")
+            raise Refused(f"`{path}` is not a file in {self.root}", "not_found", "path")
         return real
+
+    def _link_in(self, p: Path) -> tuple[str, str] | None:
+        """``(link, target)``: the first symbolic link below the root on the way to ``p``
+        (an absolute path written below the root), relative to the root, with what it points
+        to; None when ``p`` is not written below the root or has none."""
+        try:
+            rel = Path(os.path.normpath(p)).relative_to(self.root)
+        except ValueError:
+            return None
+        at = self.root
+        for part in rel.parts:
+            at = at / part
+            if os.path.islink(at):
+                try:
+                    target = os.readlink(at)
+                except OSError:
+                    target = "?"
+                return at.relative_to(self.root).as_posix(), target
+        return None
 
     def output(self, path: str) -> Path:
         """The output file ``path`` (relative to the root, or absolute inside it) as a path
@@ -91,7 +128,8 @@ class Workspace:
             raise Refused("give a path as a non-empty string")
         p = Path(path)
         outside = Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
-                          "--root); only files inside it can be read or written")
+                          "`--root`); only files inside it can be read or written",
+                          "outside_root", "output")
         if p.is_absolute():
             try:
                 p = p.relative_to(self.root)
@@ -106,12 +144,20 @@ class Workspace:
             elif part not in ("", "."):
                 parts.append(part)
                 if os.path.islink(self.root.joinpath(*parts)):
-                    raise Refused(f"`{path}` goes through the symbolic link "
-                                  f"`{'/'.join(parts)}`; outputs are never written through a "
-                                  "link, even one inside the allowed folder: give a path of "
-                                  "real folders")
+                    try:
+                        to = f" (to `{os.readlink(self.root.joinpath(*parts))}`)"
+                    except OSError:
+                        to = ""
+                    link = "is" if len(parts) == len([q for q in p.parts
+                                                      if q not in ("", ".")]) else \
+                        "goes through"
+                    raise Refused(f"`{path}` {link} the symbolic link "
+                                  f"`{'/'.join(parts)}`{to}; files are never written through "
+                                  "a link, even one inside the allowed folder: give a path of "
+                                  "real folders and files", "symlink", "output")
         if not parts:
-            raise Refused(f"`{path}` is the allowed folder itself; give a file name")
+            raise Refused(f"`{path}` is the allowed folder itself; give a file name",
+                          "bad_argument", "output")
         return self.root.joinpath(*parts)
 
     def relative(self, p: Path | str) -> str:
@@ -129,12 +175,14 @@ class Workspace:
         k = self.budget if budget is None else budget
         if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
             raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
-                          f"{MAX_BUDGET:g}; got {budget!r}")
+                          f"{MAX_BUDGET:g}; got {budget!r}", "bad_argument", "budget")
         if overrides is not None and not isinstance(overrides, dict):
-            raise Refused("overrides maps param names to values, e.g. {\"width\": \"40 mm\"}")
+            raise Refused("overrides maps param names to values, e.g. {\"width\": \"40 mm\"}",
+                          "bad_argument", "overrides")
         if source is not None:
             if len(source) > MAX_SOURCE:
-                raise Refused(f"the program is longer than {MAX_SOURCE} characters")
+                raise Refused(f"the program is longer than {MAX_SOURCE} characters",
+                              "bad_argument", "source")
             return compile_program(source=source, path=str(self.root / "untitled.aidl"),
                                    overrides=overrides, budget=k)
         real, text = self.read(path)
@@ -154,12 +202,12 @@ class Workspace:
             if suffix in (".dxf", ".svg"):
                 why += (f"; a program imports a drawing with Drawing2D(\"{path}\") "
                         "(DXF and SVG, docs/import.md)")
-            raise Refused(why)
+            raise Refused(why, "wrong_kind", "path")
         data = self.read_bytes(real, MAX_SOURCE, path)
         try:
             return real, decode_program(data, path)
         except SourceRefused as e:
-            raise Refused(e.message) from None
+            raise Refused(e.message, "wrong_kind", "path") from None
 
     def read_bytes(self, real: Path, limit: int, path: str) -> bytes:
         """The bytes of ``real`` (a real path :meth:`inside` gave), opened once from the root's
@@ -172,7 +220,7 @@ class Workspace:
             finally:
                 os.close(fd)
         except OSError as e:
-            raise Refused(f"cannot read `{path}`: {e}") from None
+            raise Refused(f"cannot read `{path}`: {e}", "not_found", "path") from None
 
 
 def _summary(ws: Workspace, r: Result) -> dict:
@@ -206,6 +254,7 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
         doc["freedom"] = r.freedom(detail=bool(dof))
         doc["freedom"]["text"] = for_agents(doc["freedom"]["text"])
         doc["parts"] = parts
+        doc["fit"] = r.fit
     return doc
 
 
@@ -234,10 +283,26 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
     r = ws.compile(source, path, overrides, budget)
     if not r.ok:
         return _summary(ws, r)
-    vals = r.values_matching(names or [])
+    vals = r.values_matching(names or [], sizes=True)
+    if names and not vals:
+        from ..diagnostics import did_you_mean
+        every = sorted({n for v in r.sizes() for n in _prefixes(v.name)})
+        asked = [n for n in names if isinstance(n, str)][:3]
+        near = did_you_mean(asked[0], every, 3) if asked else []
+        more = f" and {len(names) - 3} more" if len(names) > 3 else ""
+        raise Refused(f"no value matches {', '.join(f'`{n[:80]}`' for n in asked)}{more}"
+                      + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near
+                         else "; call `values` without `names` for every name"),
+                      "no_match", "names")
     return {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
-            "text": "\n".join(v.text() for v in vals) or
-            f"no value matches {' '.join(names or [])}"}
+            "text": "\n".join(v.text() for v in vals)}
+
+
+def _prefixes(name: str) -> list[str]:
+    """``a.b[0].c`` -> ``a``, ``a.b``, ``a.b[0]``, ``a.b[0].c``: the names ``values`` takes."""
+    import re
+    cuts = [m.start() for m in re.finditer(r"[.\[]", name)]
+    return [name[:k] for k in cuts if k] + [name]
 
 
 def _mm(value, name: str, example: str, zero: bool = False, most: float | None = None
@@ -352,9 +417,14 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                                                         **drawn)):
                     _write_inside(ws, f, data, prog, ws.relative(f))
                 doc["written"] = ws.relative(files[0])
+            use = sheets.use()
             doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
                              "files": [ws.relative(f) for f in files] if target else [],
-                             "text": sheets.text}
+                             "text": sheets.text + ", use " + ", ".join(
+                                 f"{u * 100:.0f}%" for u in use),
+                             "use": use, "placements": sheets.placements()}
+            if target is not None and target.suffix.lower() not in _SOLID_FORMATS:
+                doc["job"] = _job(sheets._cut, prof, thick_mm)
         else:
             pngs = [r.encode("png", kerf_mm, assembled=assembled, **drawn)]
             if target is not None:
@@ -363,12 +433,36 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                                 page=page, **drawn)
                 _write_inside(ws, target, data, prog, output)
                 doc["written"] = ws.relative(out)
+                if not assembled and out.suffix.lower() not in _SOLID_FORMATS:
+                    from ..output import for_cutting
+                    doc["job"] = _job([for_cutting(r.output, kerf_mm)], prof, thick_mm)
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
-        raise Refused(str(e)) from None
+        raise Refused(str(e), "output_failed", "output") from None
     doc["parts"] = [p.to_json() for p in r.parts]
+    doc["fit"] = r.fit
     doc["image"] = {"format": "png", "width": width,
                     "view": "assembled" if assembled else "flat"}
     return doc, pngs
+
+
+_SOLID_FORMATS = (".stl", ".3mf", ".step", ".stp", ".glb", ".png")
+
+
+def _job(outputs: list, machine, thickness: float | None) -> dict:
+    """The job figures of cutting ``outputs`` (one per sheet; the kerf applied) on
+    ``machine`` (None: the built-in laser), as the G-code writer plans them
+    (:func:`aidl_lang.output.writers.gcode.job`): ``{"cut_mm", "travel_mm", "seconds",
+    "machine", "text"}``, summed over the sheets."""
+    from ..output.writers.gcode import estimate_text, job
+    cut = travel = seconds = 0.0
+    kind = "laser" if machine is None else machine.kind
+    for out in outputs:
+        j = job(out, machine, thickness)
+        cut, travel, seconds = cut + j.cut, travel + j.travel, seconds + j.seconds
+    return {"cut_mm": round(cut, 3), "travel_mm": round(travel, 3),
+            "seconds": round(seconds, 1), "machine": kind,
+            "text": estimate_text(cut, travel, seconds).replace(
+                "the profile's", f"the {kind} profile's")}
 
 
 def docs(name: str | None = None) -> str:
@@ -380,8 +474,8 @@ def docs(name: str | None = None) -> str:
         return for_agents(index_text())
     text, found = lookup_text(name)
     if not found:
-        raise Refused(for_agents(text.strip()))
-    return text
+        raise Refused(for_agents(text.strip()), "no_match", "name")
+    return for_agents(text)
 
 
 def describe(ws: Workspace, source: str | None = None, path: str | None = None,
@@ -442,7 +536,7 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     from ..sources import MAX_DRAWING_BYTES
     real = ws.inside(path, must_exist=True)
     if Path(path).suffix.lower() not in (".dxf", ".svg"):
-        raise Refused(f"`{path}` is not a .dxf or .svg drawing")
+        raise Refused(f"`{path}` is not a .dxf or .svg drawing", "wrong_kind", "path")
     if units is not None and units not in ("mm", "cm", "m", "in", "ft", "pt", "px"):
         raise Refused(f"units is one of mm, cm, m, in, ft, pt, px; got {units!r}")
     target = ws.output(output) if output is not None else None
@@ -465,9 +559,88 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
         try:
             _write_inside(ws, target, text.encode("utf-8"), None, output)
         except OSError as e:
-            raise Refused(str(e)) from None
+            raise Refused(str(e), "output_failed", "output") from None
         doc["output"] = ws.relative(target)
     return doc
+
+
+def write_program(ws: Workspace, path: str, text: str | None = None, old: str | None = None,
+                  new: str | None = None, start: int | None = None, end: int | None = None,
+                  dof: bool = False) -> dict:
+    """Write the program file ``path`` (``.aidl``, inside the root, never through a link,
+    its folders made) and check it: the whole ``text``; or a patch of the file as it is:
+    ``old`` -> ``new`` (``old`` found exactly once), or the characters ``start`` to ``end``
+    (0-based offsets, end excluded, as a diagnostic's span and fix give them) replaced with
+    ``new``.  Returns :func:`check`'s result of the file written, with ``written`` (the path)
+    and ``lines``.  Raises :class:`Refused` (``no_match``: ``old`` not found; ``not_unique``:
+    found more than once; ``bad_argument``: a mix of the three ways, or offsets outside the
+    file)."""
+    ways = [text is not None, old is not None, start is not None or end is not None]
+    if sum(ways) != 1:
+        raise Refused("give one of: `text` (the whole program), `old` with `new` (replace "
+                      "that text, found once), or `start` and `end` with `new` (replace "
+                      "those characters)", "bad_argument", "text")
+    if not isinstance(path, str) or Path(path).suffix.lower() != ".aidl":
+        raise Refused(f"`{path}` is not an .aidl file: `write_program` writes programs",
+                      "wrong_kind", "path")
+    target = ws.output(path)
+    ws.inside(path)                           # (no link on the way: the same file)
+    if text is None:
+        if new is None:
+            raise Refused("`new` is the replacement text (\"\" to delete)", "bad_argument",
+                          "new")
+        _, current = ws.read(path)
+        if old is not None:
+            n = current.count(old) if old else 0
+            if n != 1:
+                at = [i + 1 for i, ln in enumerate(current.splitlines()) if old and old in ln]
+                raise Refused(f"`old` is found {n} times in `{path}`"
+                              + (f" (lines {', '.join(map(str, at[:10]))})" if at else "")
+                              + ": give text found exactly once (add the words around it), "
+                                "or `start` and `end`", "no_match" if n == 0 else "not_unique",
+                              "old")
+            text = current.replace(old, new, 1)
+        else:
+            if not (isinstance(start, int) and isinstance(end, int)
+                    and 0 <= start <= end <= len(current)):
+                raise Refused(f"`start` and `end` are character offsets with 0 <= start <= "
+                              f"end <= {len(current)} (the file's length); got {start!r}, "
+                              f"{end!r}", "bad_argument", "start")
+            text = current[:start] + new + current[end:]
+    if len(text) > MAX_SOURCE:
+        raise Refused(f"the program is longer than {MAX_SOURCE} characters", "bad_argument",
+                      "text")
+    try:
+        _write_inside(ws, target, text.encode("utf-8"), None, path)
+    except OSError as e:
+        raise Refused(str(e), "output_failed", "path") from None
+    doc = check(ws, path=ws.relative(target), dof=dof)
+    doc["written"] = ws.relative(target)
+    doc["lines"] = text.count("\n") + (not text.endswith("\n") and bool(text))
+    return doc
+
+
+WARM = """units mm
+solid plate {
+    body = RoundedRectangle(center=(0, 0), width=40, height=20, corner_radius=2)
+    hole bore { c = Circle(center=(10, 0), radius=4) }
+    hole slot { s = Slot(start=(-15, 0), end=(-5, 0), width=3) }
+}
+"""
+
+
+def warm(ws: Workspace) -> dict:
+    """Compile, check, describe and draw a small program (PNG, SVG, DXF, G-code) without
+    writing anything: the imports and first-call work of every tool done once, so the
+    agent's first call costs what the later ones do.  Returns ``{"ok"}``."""
+    r = compile_program(source=WARM, path=str(ws.root / "untitled.aidl"))
+    r.find_redundant()
+    _ = r.parts, r.description, r.values, r.fit
+    for fmt in ("png", "svg", "dxf", "gcode"):
+        r.encode(fmt, width=64) if fmt == "png" else r.encode(fmt)
+    from ..output import for_cutting
+    _job([for_cutting(r.output, None)], None, None)
+    return {"ok": r.ok}
 
 
 def explain(code: str) -> str:
@@ -476,6 +649,7 @@ def explain(code: str) -> str:
     from ..codes import CODES
     c = (code or "").strip().upper()
     if c not in CODES:
-        raise Refused(f"unknown code `{code}`; known codes: {', '.join(sorted(CODES))}")
+        raise Refused(f"unknown code `{code}`; known codes: {', '.join(sorted(CODES))}",
+                      "no_match", "code")
     title, text = CODES[c]
     return f"{c}: {title}\n\n{text.strip()}"

@@ -48,6 +48,24 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"--(?:png-width|dpi)\b", "`width`"),
     (r"; the minimum is set with --min-wall", ""),
     (r" \(follow_symlinks=True writes the file it points to\)", ""),
+    # the prompt's and the docs' mentions of the command line (issue 73): the tools instead
+    (r"`--set (\w+)=([^`]*)`", _override),
+    (r"`aidl render --layout sheet`", '`render` with layout="sheet"'),
+    (r"--layout sheet", 'layout="sheet"'),
+    (r"`--assembled`", "`render` with assembled=true"),
+    (r"`aidl check --describe`", "The `describe` tool"),
+    (r"`aidl import --infer ([^`]+)`", r'`import_drawing` with path="\1"'),
+    (r"`aidl check --values`", "the `values` tool"),
+    # the reference's topics (`docs`)
+    (r"`aidl render --set NAME=VALUE`", "the tools' `overrides` ({\"NAME\": VALUE})"),
+    (r"`aidl render --kerf ([^`]+)`", r'`render` with kerf="\1"'),
+    (r"`aidl render --thickness`", "`render`'s `thickness`"),
+    (r"`--machine FILE`", "`machine` (a profile file in the allowed folder)"),
+    (r"`--machine (router)` or `(plotter)`", r'`machine="\1"` or `"\2"`'),
+    (r"`aidl render FILE --assembled -o ([^`]+)`", r'`render` with assembled=true, output="\1"'),
+    (r"`aidl\s+render\s+--assembled`", "`render` with assembled=true"),
+    (r"`--page ([^`]+)`", r'`page="\1"`'),
+    (r"`--kerf`", "`kerf`"),
     (r" \(force=True replaces it\)", ": write to another name"),
 ]]
 

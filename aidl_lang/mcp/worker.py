@@ -30,18 +30,22 @@ def _handler(root: str, budget: float):
 
     def handle(request):
         name, args = request
-        if name not in ("check", "render", "values", "describe", "import_drawing"):
+        if name == "warm":
+            return True, T.warm(ws)
+        if name not in ("check", "render", "values", "describe", "import_drawing",
+                        "write_program"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
         try:
             return True, getattr(T, name)(ws, *args)
         except T.Refused as e:
-            return False, T.Refused(str(e))
+            return False, T.Refused(str(e), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
             from ..limits import is_out_of_memory
             oom = is_out_of_memory(e)
             if not oom:
-                return False, T.Refused(f"internal error: {type(e).__name__}: {e}")
+                return False, T.Refused(f"internal error: {type(e).__name__}: {e}",
+                                        "internal_error")
         return False, out_of_memory(ws, args)       # once the failed frames are gone
     return handle
 
@@ -62,7 +66,7 @@ def out_of_memory(ws, args: tuple):
     sink = out_of_memory_sink(name, source)
     d = sink.items[0]
     return T.Refused(f"{d.code} line {d.span.line if d.span else '-'}: {d.message}; "
-                     f"{d.hint}")
+                     f"{d.hint}", d.code)
 
 
 class Worker(W.Worker):
@@ -91,12 +95,12 @@ class Worker(W.Worker):
         except W.TimedOut:
             raise T.Refused(f"the call took longer than {limit:g} s (twice the budget's "
                             "wall time) and was stopped; build less, or give a larger "
-                            "`budget` (at most 4)") from None
+                            "`budget` (at most 4)", "timed_out") from None
         except W.Died:
             raise T.Refused("the compile ended its worker process (out of memory?); "
-                            "build less") from None
+                            "build less", "worker_died") from None
         except W.NotReady as e:
-            raise T.Refused(str(e)) from None
+            raise T.Refused(str(e), "worker_died") from None
         if ok:
             return value
         raise value
@@ -110,6 +114,21 @@ class Pool(W.Pool):
 
     def __init__(self, root: str, budget: float = 1.0, size: int = POOL_SIZE) -> None:
         super().__init__([Worker(root, budget) for _ in range(max(1, size))])
+
+    def warm(self) -> None:
+        """Start the worker the first call will take and have it compile and draw a small
+        program (:func:`.tools.warm`), in the background: the first call waits for it (it
+        holds that worker) instead of paying for a process start, the imports and the first
+        compile itself (issue 73: the first render was 2.2-2.5 s)."""
+        import threading
+        w = self.idle[-1]
+
+        def run() -> None:
+            try:
+                w.call("warm", budget=T.MAX_BUDGET)
+            except Exception:              # noqa: BLE001 - a failed warm-up: a cold call
+                pass
+        threading.Thread(target=run, name="aidl-mcp-warm", daemon=True).start()
 
     def call(self, name: str, *args, budget: float | None = None):
         """:meth:`Worker.call` in an idle worker (waiting for one when all are busy)."""

@@ -24,10 +24,16 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         pl = getattr(s, "placement", None)
         return (pl[2] if pl is not None and pl[2] is not None else getattr(s, "span", None))
     from .parts import _allowed
+    # the fit as data (the MCP tools' `fit`): what the warnings below say, AllowOverlap's
+    # meant overlaps and the templates' designed gaps left out
+    d.fit = {"checked": True, "collisions": [], "floating": []}
     for c in hits:
         sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
         if sa_ is not None and sb_ is not None and _allowed(sa_, sb_):
             continue                     # AllowOverlap(a, b): meant (a press fit, an inlay)
+        d.fit["collisions"].append({"a": c.a, "b": c.b, "volume": round(c.volume, 6),
+                                    "depth": round(c.depth, 6),
+                                    "box": [round(v, 6) for v in c.box]})
         x0, y0, z0, x1, y1, z1 = c.box
         sa = at(c.a)
         labels = [Label(sa, f"`{c.a}` is placed here", primary=False)] if sa else []
@@ -49,6 +55,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     for g in gaps:
         if templates(g.part) and templates(g.nearest):
             continue            # a gap a stdlib template places by design (gear_train's lift=)
+        d.fit["floating"].append({"part": g.part, "nearest": g.nearest, "gap": round(g.gap, 6)})
         sink.warning("W0518", f"assembled, part `{g.part}` touches no other part: the nearest, "
                      f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
                      hint=f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "

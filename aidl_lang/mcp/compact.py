@@ -1,0 +1,246 @@
+"""The MCP tools' results made short for agents (issue 73): one line of text beside the
+structured content (never the structured content repeated as text), long lists of alike
+items summarised with their count (``93 alike: through-cut ... 15 mm``) unless the call asks
+for ``detail``, and one error shape for every failure: ``{"ok": false, "error": {"code",
+"message", "argument"?}}`` (docs/mcp.md, "Results" and "Errors").
+
+Error codes (``error.code``): a program's own first error code (``E0103``, ...) when the
+program has errors, else one of :data:`CODES`.
+"""
+from __future__ import annotations
+
+import json
+import re
+
+# the codes of a refused call, each with what it means (docs/mcp.md lists them)
+CODES = {
+    "unknown_argument": "an argument the tool does not take",
+    "bad_argument": "an argument of the wrong type, out of its range, or a missing one",
+    "program_choice": "both or neither of `source` and `path`",
+    "outside_root": "a path outside the allowed folder (also through a symbolic link)",
+    "symlink": "an output or program file written through a symbolic link",
+    "not_found": "a file that does not exist, or is not a regular file",
+    "wrong_kind": "a file of the wrong kind (a drawing where a program is taken, ...)",
+    "no_match": "`values` names that match no value; `write_program` text not found",
+    "not_unique": "`write_program`'s `old` text found more than once",
+    "output_failed": "an output that could not be made or written",
+    "timed_out": "a call stopped past twice its budget's wall time",
+    "worker_died": "the compile ended its worker process",
+    "internal_error": "a fault of aidl itself (please report it)",
+}
+
+GROUP_AT = 12      # a list longer than this is summarised by alike items, unless `detail`
+_PLACE = ("center", "from", "to", "box", "value", "mm")
+_INDEX = re.compile(r"\[\d+\]")
+
+
+def error(code: str, message: str, argument: str | None = None) -> dict:
+    """``{"ok": false, "error": {...}}``: the structured content of a refused call."""
+    e = {"code": code, "message": message}
+    if argument:
+        e["argument"] = argument
+    return {"ok": False, "error": e}
+
+
+def _points(v) -> list[tuple[float, float]]:
+    """The (x, y) points of a place value: a point, a box [x0, y0, x1, y1] or a number."""
+    if isinstance(v, (list, tuple)):
+        if len(v) == 2 and all(isinstance(c, (int, float)) for c in v):
+            return [(float(v[0]), float(v[1]))]
+        if len(v) == 4 and all(isinstance(c, (int, float)) for c in v):
+            return [(float(v[0]), float(v[1])), (float(v[2]), float(v[3]))]
+    return []
+
+
+def group(items: list, detail: bool = False) -> list:
+    """``items`` (dicts) with alike ones (equal but for their places: ``center``, ``from``,
+    ``to``, ``box``, the index in their name) summarised as one ``{"count", "alike": the
+    first, "within": [x0, y0, x1, y1] of their places}`` each, when the list is longer than
+    :data:`GROUP_AT` and not ``detail``; else ``items`` as they are."""
+    if detail or len(items) <= GROUP_AT or not all(isinstance(i, dict) for i in items):
+        return items
+    groups: dict[str, list] = {}
+    for it in items:
+        key = {k: (_INDEX.sub("[*]", v) if k == "name" and isinstance(v, str) else v)
+               for k, v in it.items() if k not in _PLACE}
+        groups.setdefault(json.dumps(key, sort_keys=True, default=str), []).append(it)
+    out = []
+    for members in groups.values():
+        if len(members) == 1:
+            out.append(members[0])
+            continue
+        pts = [p for m in members for k in _PLACE[:4] for p in _points(m.get(k))]
+        g = {"count": len(members), "alike": members[0]}
+        if pts:
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            g["within"] = [min(xs), min(ys), max(xs), max(ys)]
+        out.append(g)
+    return out
+
+
+_COORD = re.compile(r"\((-?[\d.]+(?:e[-+]?\d+)?), (-?[\d.]+(?:e[-+]?\d+)?)\)")
+
+
+def _n(v: float) -> str:
+    return f"{round(v, 6):g}"
+
+
+def text_lines(text: str, detail: bool = False) -> str:
+    """``text`` (one feature a line) with more than :data:`GROUP_AT` lines alike but for
+    their coordinates and indices said once: ``93 alike, within x -20..20, y -34.5..34.5:
+    through-cut: Line `flex.cut_a` from (x, y) to (x, y), 15 mm``."""
+    lines = text.splitlines()
+    if detail or len(lines) <= GROUP_AT:
+        return text
+    keys = [_INDEX.sub("[*]", _COORD.sub("(x, y)", ln)) for ln in lines]
+    count: dict[str, int] = {}
+    for k in keys:
+        count[k] = count.get(k, 0) + 1
+    out, said = [], set()
+    for ln, k in zip(lines, keys):
+        if count[k] <= 2:
+            out.append(ln)
+            continue
+        if k in said:
+            continue
+        said.add(k)
+        pts = [(float(a), float(b)) for ln2, k2 in zip(lines, keys) if k2 == k
+               for a, b in _COORD.findall(ln2)]
+        where = ""
+        if pts:
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            where = f", within x {_n(min(xs))}..{_n(max(xs))}, y {_n(min(ys))}..{_n(max(ys))}"
+        indent = k[:len(k) - len(k.lstrip())]
+        out.append(f"{indent}{count[k]} alike{where}: {k.strip()}")
+    return "\n".join(out)
+
+
+def diagnostics(diags: list[dict], detail: bool = False) -> list[dict]:
+    """The diagnostics without their ``rendered`` text (the message, span, hint and fix say
+    it) unless ``detail``."""
+    if detail:
+        return diags
+    return [{k: v for k, v in d.items() if k != "rendered"} for d in diags]
+
+
+def describe(doc: dict, detail: bool = False) -> dict:
+    """A ``describe`` result's data with each part's openings, through-cuts, notches and
+    copies grouped (:func:`group`) and its text's alike lines said once (:func:`text_lines`),
+    unless ``detail``."""
+    if detail or "describe" not in doc:
+        return doc
+    d = dict(doc["describe"])
+    parts = []
+    for p in d.get("parts", []):
+        p = dict(p)
+        for k in ("openings", "through_cuts", "notches", "copies"):
+            if isinstance(p.get(k), list):
+                p[k] = group(p[k])
+        parts.append(p)
+    d["parts"] = parts
+    out = dict(doc, describe=d)
+    if "text" in doc:
+        out["text"] = text_lines(doc["text"])
+    return out
+
+
+def values(vals: list[dict], units: str, detail: bool = False) -> list[dict]:
+    """``values`` entries compact unless ``detail``: ``mm`` left out where it equals
+    ``value`` (a file in mm), and the copies of a pattern or loop (``cut_a[0].start``,
+    ``cut_a[1].start``, ... more than :data:`GROUP_AT`) as one ``{"name":
+    "cut_a[*].start", "kind": "group", "count", "value": the one value they share or the
+    [x0, y0, x1, y1] their points span, "unit"}``."""
+    if detail:
+        return vals
+    slim = [{k: v for k, v in x.items() if not (k == "mm" and x["value"] == v)} for x in vals]
+    by: dict[str, list] = {}
+    for x in slim:
+        by.setdefault(_INDEX.sub("[*]", x["name"]), []).append(x)
+    out, done = [], set()
+    for x in slim:
+        key = _INDEX.sub("[*]", x["name"])
+        members = by[key]
+        if len(members) <= GROUP_AT:
+            out.append(x)
+            continue
+        if key in done:
+            continue
+        done.add(key)
+        vs = [m["value"] for m in members]
+        if all(v == vs[0] for v in vs):
+            value = vs[0]
+        else:
+            pts = [p for v in vs for p in _points(v)]
+            if pts:
+                value = [min(p[0] for p in pts), min(p[1] for p in pts),
+                         max(p[0] for p in pts), max(p[1] for p in pts)]
+            else:
+                nums = [v for v in vs if isinstance(v, (int, float))]
+                value = [min(nums), max(nums)] if nums else vs[0]
+        out.append({"name": key, "kind": "group", "count": len(members), "value": value,
+                    "unit": members[0]["unit"], "of": members[0]["kind"]})
+    return out
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+def _warnings(doc: dict) -> str:
+    ws = [d["code"] for d in doc.get("diagnostics", []) if d.get("severity") == "warning"]
+    if not ws:
+        return "no warnings"
+    codes = sorted(set(ws))
+    return _plural(len(ws), "warning") + " (" + ", ".join(codes) + ")"
+
+
+def _parts(doc: dict) -> str:
+    ps = doc.get("parts") or []
+    if not ps:
+        return "no parts"
+    shown = []
+    for p in ps[:3]:
+        x0, y0, x1, y1 = p["bbox"]
+        shown.append(f"{p['name']} {_n(x1 - x0)} x {_n(y1 - y0)} mm, "
+                     + _plural(p["holes"], "hole"))
+    more = f", +{len(ps) - 3} more" if len(ps) > 3 else ""
+    return _plural(len(ps), "part") + " (" + "; ".join(shown) + more + ")"
+
+
+def line(tool: str, doc: dict) -> str:
+    """The one line of text beside a result's structured content."""
+    if "error" in doc and not doc.get("ok"):
+        e = doc["error"]
+        return f"error {e['code']}: {e['message']}"
+    if not doc.get("ok", True):
+        return "not ok: " + doc.get("summary", "see diagnostics")
+    said = ["ok"]
+    if tool == "write_program":
+        said = [f"wrote {doc.get('written')}", "ok" if doc.get("ok") else "not ok"]
+    if tool in ("check", "render", "write_program"):
+        said.append(_parts(doc))
+    if tool == "check" or tool == "write_program":
+        f = doc.get("freedom") or {}
+        if f.get("dof") is not None:
+            said.append(f"{f['dof']} degrees of freedom left")
+        if "fit" in doc:
+            fit = doc["fit"]
+            said.append("fit: " + (f"{len(fit['collisions'])} collisions, "
+                                   f"{len(fit['floating'])} floating" if fit["checked"]
+                                   else "not checked (no Place)"))
+    if tool == "render":
+        if doc.get("written"):
+            said.append(f"wrote {doc['written']}")
+        if doc.get("job"):
+            said.append(doc["job"]["text"])
+        if doc.get("layout"):
+            said.append(doc["layout"]["text"])
+    if tool == "values":
+        vs = doc.get("values", [])
+        g = [v for v in vs if v.get("kind") == "group"]
+        said.append(_plural(len(vs), "value") + (f" ({len(g)} groups of copies; "
+                                                 "detail=true lists each)" if g else ""))
+    if tool == "describe" and doc.get("text"):
+        said.append(doc["text"].splitlines()[-1])
+    said.append(_warnings(doc))
+    return "; ".join(said) + " (details: structured content)"
