@@ -425,7 +425,8 @@ _DEFS = {
                 doc="any number of shapes, structures (drawings too) or lists of them keep "
                     "their placement to each other; a structure moves, never bends."),
     "AllowOverlap": _c([A("a", "any"), A("b", "any", doc="and every further argument, as "
-                         "a list")], cat="operation", varargs=True,
+                         "a list")], [A("a", "any", doc="a list: its items")],
+                       cat="operation", varargs=True,
                        doc="these (or lists) may overlap: refilled hole (W0501), assembly "
                            "parts (W0511)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],

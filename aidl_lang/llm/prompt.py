@@ -97,8 +97,8 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
 A warning on a design exactly as requested is accepted in the program, never by changing a
-requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
-W0517), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
+requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508 between two holes, W0511,
+W0512 written in the hole, W0517; name a pattern's list for all its copies), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: shapes could still move (valid; pin
 what matters).

@@ -45,6 +45,7 @@ import numpy as np
 
 from ...diagnostics import DiagnosticSink
 from ..part.booleans import Drawing
+from .allowances import check_allowances
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
@@ -96,7 +97,8 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
             "text": ("text over text or marks", "W0513"),
             "repeats": ("copies that merge", "W0512"),
             "through": ("through-cuts", "W0507, W0522"),
-            "interpenetration": ("parts that interpenetrate", "W0511")}
+            "interpenetration": ("parts that interpenetrate", "W0511"),
+            "allowances": ("AllowOverlap statements", "W0523")}
 
 
 class _OutOfShare(Exception):
@@ -341,6 +343,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 _check_repeated_faces(d, s, sink, lambda: tick(s)),
                 _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL,
                                            lambda: tick(s))))
+    run("allowances", None, lambda: check_allowances(d, sink, lambda: tick(None)))
     shares.notes(sink, given if given is not None else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty
