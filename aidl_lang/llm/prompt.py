@@ -52,7 +52,8 @@ on stays exactly where it is written (no `Fixed` just in case). A point at a rad
 from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
 also fit its mirror image). Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates
-(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
+(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it;
+`flexible=true` (Triangle, Polygon, Polyline, Spline, Bezier) lets them move its points. A definition
 may only use names defined above it; constraint statements may name geometry defined later.
 A child structure's geometry is `child.name`, the current one is `self`; every geometry and
 structure has `.bb` (bounding box). A structure's box covers all it holds, holes included (a

@@ -1,0 +1,30 @@
+"""Issue 73, "what models reach for": what the prompt left untold and the messages did not
+say.  A Triangle (any shape) with literal corners is rigid; the conflict it takes part in
+says `flexible=true` lets its points follow the constraints, and the prompt teaches it for
+every shape that takes it."""
+TRIANGLE = """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    t = Triangle((0, 0), (10, 0), (5, 8)%s)
+    Coincident(t.c, body.top_right)
+    Coincident(t.a, body.center)
+}
+"""
+
+
+def test_a_conflict_with_a_literal_triangle_says_flexible_true_and_that_solves_it(compile_text):
+    c = compile_text(TRIANGLE % "")
+    (e,) = [d for d in c.sink.items if d.code == "E0401"]
+    assert "The Triangle (line 3) keeps the shape its literal coordinates give" in e.hint
+    assert "add `flexible=true` to its call" in e.hint
+    c = compile_text(TRIANGLE % ", flexible=true")
+    assert c.ok and not c.sink.errors()
+
+
+def test_the_prompt_teaches_flexible_for_every_shape_that_takes_it():
+    from aidl_lang.llm.prompt import system_prompt
+    from aidl_lang.registry import ENTRIES
+    text = system_prompt(examples=False)
+    line = next(l for l in text.splitlines() if "flexible=true" in l)
+    takers = sorted(n for n, e in ENTRIES.items()
+                    if any(a.name == "flexible" for v in e.variants for a in v))
+    assert takers and all(n in line for n in takers), (takers, line)
