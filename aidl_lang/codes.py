@@ -850,6 +850,17 @@ writes the call), or delete the statement.
         AllowOverlap(a, b)          # 30 mm apart: W0523
     }
 """),
+    "W0524": ("line of zero length in a drawing", """
+A `Line` of a `drawing` whose start and end are one point (`Line((x, y), (x, y))`, often a
+loop's formula that gives both ends the same value): it engraves no line, only a plunge at a
+point, and nothing holds its two points (each is a free starting guess, so the degrees of
+freedom left count them). One warning per statement, with the number of its copies. Give the
+Line two different points, or delete it; a dot is a small Circle.
+
+    drawing strings {
+        for i in range(5) { s = Line((-30 + 15 * i, 0), (-30 + 15 * i, 0)) }   # W0524
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

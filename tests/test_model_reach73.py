@@ -28,3 +28,25 @@ def test_the_prompt_teaches_flexible_for_every_shape_that_takes_it():
     takers = sorted(n for n, e in ENTRIES.items()
                     if any(a.name == "flexible" for v in e.variants for a in v))
     assert takers and all(n in line for n in takers), (takers, line)
+
+
+RACKET = """solid racket {
+    head = Ellipse(center=(0, 0), rx=40, ry=55)
+    drawing strings {
+        for i in range(5) {
+            s = Line((-30 + 15 * i, -40), (-30 + 15 * i, 40))
+            dot = Line((-30 + 15 * i, 0), (-30 + 15 * i, 0))
+        }
+    }
+}
+"""
+
+
+def test_a_drawing_line_of_zero_length_is_W0524_once_per_statement_located(compile_text):
+    c = compile_text(RACKET)
+    (w,) = [d for d in c.sink.items if d.code == "W0524"]
+    assert (w.span.line, w.span.col) == (6, 19)
+    assert w.message.startswith("`racket.strings.dot` is a Line of zero length (5 copies): its "
+                                "start and end are both at (-30, 0)")
+    c = compile_text(RACKET.replace("(-30 + 15 * i, 0))", "(-25 + 15 * i, 0))"))
+    assert not [d for d in c.sink.items if d.code == "W0524"]

@@ -76,7 +76,8 @@ copies beside the original, in the original's structure.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
-Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b, ...)` keeps
+Line, an Arc, a Slot or Rectangle by start and end) may turn; a Line needs two different points
+(`Line((x, y), (x, y))` draws nothing: W0524). `Rigid(a, b, ...)` keeps
 shapes placed relative to each other (moved together);
 `Rigid(s)` makes a structure move whole, never bent; `Rigid(s1, s2, ...)` moves any number of
 structures as one body.
