@@ -50,3 +50,44 @@ def test_a_drawing_line_of_zero_length_is_W0524_once_per_statement_located(compi
                                 "start and end are both at (-30, 0)")
     c = compile_text(RACKET.replace("(-30 + 15 * i, 0))", "(-25 + 15 * i, 0))"))
     assert not [d for d in c.sink.items if d.code == "W0524"]
+
+
+def test_an_AllowOverlap_naming_holes_30_mm_apart_is_W0523_at_the_statement(compile_text):
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=80, height=40)\n"
+           "    hole a { c = Circle(center=(-20, 0), radius=5) }\n"
+           "    hole b { c = Circle(center=(%s, 0), radius=5) }\n    AllowOverlap(a, b)\n}\n")
+    c = compile_text(src % "20")
+    (w,) = [d for d in c.sink.items if d.code == "W0523"]
+    assert (w.span.line, w.span.col) == (5, 5) and "`plate.a`, `plate.b`" in w.message
+    c = compile_text(src % "-12")          # they overlap: it silences the W0508
+    assert not [d for d in c.sink.items if d.code in ("W0523", "W0508")]
+
+
+CORNERS = """thickness 1.5875 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    hole corners {
+        a = Rectangle(center=(-49, 19), width=4, height=4)
+        b = Rectangle(center=(49, 19), width=4, height=4)
+    }
+    hole nut { hex = RegularPolygon(center=(0, 0), sides=6, radius=10) }
+}
+"""
+
+
+def test_describe_states_the_thickness_as_written_a_hexagons_side_and_one_notch_per_cut_out(
+        tmp_path, capsys):
+    import json
+    from aidl_lang.cli.main import main
+    f = tmp_path / "corners.aidl"
+    f.write_text(CORNERS)
+    assert main(["check", str(f), "--describe"]) == 0
+    out = capsys.readouterr().out
+    assert "material: 1.5875 mm thick" in out              # was 1.587
+    assert "6-gon 20 x 17.321, side 10 at (0, 0)" in out    # was no side
+    notches = [ln for ln in out.splitlines() if "notch in the top edge" in ln]
+    assert [n.split(",")[0:2] for n in notches] == [["  notch in the top edge: 3 wide", " 3 deep"]] * 2
+    assert "at (-48.5, 18.5)" in notches[0] and "at (48.5, 18.5)" in notches[1]   # was one, 100 wide
+    assert main(["check", str(f), "--describe", "--json"]) == 0
+    part = json.loads(capsys.readouterr().out)["describe"]["parts"][0]
+    assert part["thickness"] == 1.5875 and [n["width"] for n in part["notches"]] == [3, 3]
