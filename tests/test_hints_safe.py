@@ -238,3 +238,14 @@ def test_AllowOverlap_of_the_spokes_original_alone_is_not_W0523_but_W0501_remain
     assert not [d for d in c.sink.items if d.code == "W0523"]   # the original overlaps too
     (w,) = [d for d in c.sink.items if d.code == "W0501"]
     assert "7 copies" in w.message and "AllowOverlap(rim.opening, spokes)" in w.hint
+
+
+def test_W0501_for_an_unnamed_patterns_copies_says_to_name_it_and_offers_no_broad_fix(compiled):
+    src = SPOKES.replace("    spokes = CircularPattern", "    CircularPattern")
+    c = compiled("spokes_unnamed", src)
+    (w,) = [d for d in c.sink.items if d.code == "W0501"]
+    assert "(`NAME = ` before it) and add `AllowOverlap(rim.opening, spoke, NAME)`" in w.hint
+    assert w.fix is None and "self" not in w.hint     # was AllowOverlap(..., self): all of wheel
+    fixed = compiled("spokes_named", SPOKES.replace("\n}\n",
+                                                   "\n    AllowOverlap(rim.opening, spoke, spokes)\n}\n"))
+    assert not [d for d in fixed.sink.items if d.code in ("W0501", "W0523")]

@@ -892,17 +892,22 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
         also = "; AllowOverlap already allows " + ", ".join(said(allowed.values()))
     if drawn_in:
         also += "; drawn inside the opening, so meant: " + ", ".join(said(drawn_in.values()))
-    refs = []
+    refs, unnamed = [], False
     for *_, objs in groups.values():
         # every object of the group (a pattern's original and its copies are one statement's
         # group: `spoke` and the list `spokes` both, so that one call allows all of them)
         for o in objs:
+            if not isinstance(o, Structure) and not o.name and o.owner is outer:
+                unnamed = True          # a copy of a pattern whose list has no name
+                continue
             r = _ref(o, outer)
             if r not in refs:
                 refs.append(r)
     labels = [Label(span, "refills the hole", primary=False)
               for _, span, _, _, _ in groups.values() if span is not None]
-    stmt = f"AllowOverlap({hole_ref}, {', '.join(refs)})"
+    stmt = f"AllowOverlap({hole_ref}, {', '.join(refs + ['NAME'] * unnamed)})"
+    how = (f"name the pattern statement that copies it (`NAME = ` before it) and add "
+           f"`{stmt}` to `{outer.path}`" if unnamed else f"write `{stmt}` in `{outer.path}`")
     sink.warning(
         "W0501",
         f"hole `{h.path}` is refilled by {who}: only {_pct(survives, cut_area)} of it still "
@@ -910,8 +915,8 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
         h.span, labels=labels,
         hint=(f"a hole cuts only the solid it is declared in (`{s.path}`); declare the hole in "
               f"`{outer.path}`, the common parent, so that it cuts everything united there, "
-              "or move it clear of the solids that cover it; if the overlap is intended, "
-              f"write `{stmt}` in `{outer.path}`"), fix=_insert_fix(outer, stmt, sink))
+              f"or move it clear of the solids that cover it; if the overlap is intended, {how}"),
+        fix=None if unnamed else _insert_fix(outer, stmt, sink))
 
 
 def _ref(obj, base: Structure) -> str:
