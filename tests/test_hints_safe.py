@@ -83,10 +83,16 @@ CORRECTING = {"W0109"}      # fixes that change the part they name (and the stra
 
 
 def _programs():
+    """The cases, then every example, test program and model run, each text once (a model
+    run's `before/` and `after/` often hold the same program)."""
     out = [(name, src) for name, (src, _) in CASES.items()]
+    seen = {src for _, src in out}
     for p in EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl")) \
             + sorted((ROOT / "data" / "model_runs").glob("**/*.aidl")):
-        out.append((str(p.relative_to(ROOT)), p.read_text()))
+        src = p.read_text()
+        if src not in seen:
+            seen.add(src)
+            out.append((str(p.relative_to(ROOT)), src))
     return out
 
 
