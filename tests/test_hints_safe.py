@@ -255,3 +255,10 @@ def test_W0501_for_an_unnamed_patterns_copies_says_to_name_it_and_offers_no_broa
     fixed = compiled("spokes_named", SPOKES.replace("\n}\n",
                                                    "\n    AllowOverlap(rim.opening, spoke, spokes)\n}\n"))
     assert not [d for d in fixed.sink.items if d.code in ("W0501", "W0523")]
+
+
+def test_W0515_round_an_island_offers_no_hole_that_would_cut_it_away(compiled):
+    src = TRIANGLE.replace("\n}\n", "\n    dot = Circle(center=(-12, 15), radius=3)\n}\n")
+    c = compiled("island", src)
+    (w,) = [d for d in c.sink.items if d.code == "W0515"]
+    assert w.fix is None and "leaves out the material inside it" in w.hint

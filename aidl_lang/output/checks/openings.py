@@ -380,16 +380,23 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
               if g.span is not None and g.span != g0.span]
     owner = owners[0]
     name = _free_name(owner, "window")
-    pts = ", ".join(f"({x:.3f}, {y:.3f})" for x, y in _outline_inside(region, min(w, h)))
-    stmt = f"hole {name} {{ p = Polygon([{pts}]); Fixed(p) }}"
+    final = d.shapes.get(s)
+    if final is not None and _area(region ^ final) > MIN_AREA:
+        # material inside the opening (a piece of its own): a hole of the opening's outline
+        # would cut it away, so no statement is offered
+        stmt, meant = None, (f"declare it in `{owner.path}` with a `hole` over it that leaves "
+                             "out the material inside it")
+    else:
+        pts = ", ".join(f"({x:.3f}, {y:.3f})" for x, y in _outline_inside(region, min(w, h)))
+        stmt = f"hole {name} {{ p = Polygon([{pts}]); Fixed(p) }}"
+        meant = (f"declare it in `{owner.path}` with a hole of its own outline (a hair inside "
+                 f"it, so that it cuts no material): `{stmt}`")
     sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
                  f"({cx:.1f}, {cy:.1f}) is enclosed by {who} in `{owner.path}`: no hole cuts "
                  "it, the shapes merge around it", g0.span or owner.span, labels=labels,
                  hint="if it is not meant, make the shapes around it overlap to fill it (or "
-                      "move them apart so that it opens onto the edge); if it is meant, "
-                      f"declare it in `{owner.path}` with a hole of its own outline (a hair "
-                      "inside it, so that it cuts no material): "
-                      f"`{stmt}`", fix=_insert_fix(owner, stmt, sink))
+                      f"move them apart so that it opens onto the edge); if it is meant, {meant}",
+                 fix=_insert_fix(owner, stmt, sink) if stmt else None)
 
 
 def _outline_inside(region, size: float) -> list:
