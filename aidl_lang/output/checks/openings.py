@@ -903,9 +903,10 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     for *_, objs in groups.values():
         # every object of the group (a pattern's original and its copies are one statement's
         # group: `spoke` and the list `spokes` both, so that one call allows all of them)
+        named = any(not isinstance(o, Structure) and o.name for o in objs)
         for o in objs:
-            if not isinstance(o, Structure) and not o.name and o.owner is outer:
-                unnamed = True          # a copy of a pattern whose list has no name
+            if named and not isinstance(o, Structure) and not o.name and o.owner is outer:
+                unnamed = True          # a copy of a named shape by a pattern with no name
                 continue
             r = _ref(o, outer)
             if r not in refs:
