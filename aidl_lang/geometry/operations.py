@@ -444,7 +444,9 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     :func:`aidl_lang.output.checks.openings._intended`); every two solid structures among them
     (parts of an assembly) may interpenetrate (W0511:
     :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
-    ``overlap_ok`` sets.  Raises :class:`OperationError` for an argument that is no shape or
+    ``overlap_ok`` sets; the call itself (``span``, the things named) in the ``allowances`` of
+    ``S``, the structure it is written in (W0523: one that allows nothing).  One argument is
+    a list (``AllowOverlap(c)``: a loop's copies in a hole, W0512).  Raises :class:`OperationError` for an argument that is no shape or
     structure, or when nothing is named that the two rules concern (no hole, fewer than two
     solid structures)."""
     objs = []
