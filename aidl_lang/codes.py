@@ -393,7 +393,9 @@ united there:
 When the refill is intended (a boss over a relief cut, say), silence it for that pair only
 with `AllowOverlap(body.key, shackle)` written in `lock` (`aidl docs AllowOverlap`). It takes
 any number of refillers and lists: `AllowOverlap(rim.inner, spoke, frame)`, where `spoke` is
-the list a `for` loop made, allows all the spokes and the frame; the hint writes that call.
+the list a `for` loop made, allows all the spokes and the frame; the hint writes that call,
+naming a pattern's list beside its original (`AllowOverlap(rim.inner, spoke, spokes)` for
+`spokes = CircularPattern(spoke, 8, ...)`) so that every copy is allowed.
 A shape drawn inside the opening (at least half of its area lies in the hole: a wheel's hub
 and spokes in its rim's opening, a moon in a window) is put there on purpose and not
 reported; only what covers the hole from outside it is.
@@ -480,6 +482,9 @@ hole in a rim's opening) is the design and not warned; one that covers the openi
 it (a tab reaching over a window, with a hole inside the window) is named with the area the
 inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holding both solids
 marks the refill as intended (it silences this warning and W0501 for the pair).
+Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
+`AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
+shapes in one hole structure).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)
@@ -545,6 +550,9 @@ gauge's holes written out one by one) that overlap partly (neither inside the ot
 reported the same way, with the depth of the overlap, the common area and how far to move
 one; other shapes of one hole (a keyhole's circle and slot, a cross of two rectangles) may
 overlap by design, and a figure-eight of two circles is drawn as one Slot when it is meant.
+One opening meant of several overlapping shapes (a scalloped bite of three circles) is said
+with `AllowOverlap(a, b, c)` (or `AllowOverlap(c)` for a loop's list) in the hole, as the hint
+writes: the shapes it names together are not compared.
 
     hole drills {
         for i in range(10) {
@@ -602,8 +610,10 @@ negative gap, a larger size). A larger one enclosed by the faces of ONE solid st
 some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
 meant: the warning names the faces around it, its size (width x height of its box, area) and
 centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
-over it, as the hint writes (a Rectangle of its box, which squares off a round opening; a
-hole lying inside an opening that the solids enclose is not W0502). Not warned: an opening framed by several solid structures (a
+over it, as the hint (and the `--json` fix) writes: a Polygon of the opening's own outline, a
+hair inside it, so that it cuts no material whatever the opening's shape (a triangle beside
+a brace stays a triangle; a hole lying inside an opening that the solids enclose is not
+W0502). Not warned: an opening framed by several solid structures (a
 telephone's cradle between its base and handset), or by faces that only abut edge to edge (a
 frame of bars), or one that a hole cuts or covers.
 
@@ -822,6 +832,33 @@ wall between two cuts, or a cut and the outline, is W0507.
             a = Line(start=(40, 0), end=(50, 0))       # beside the panel: cuts nothing
             b = Line(start=(-30, -15), end=(30, -15))  # along its bottom edge: adds nothing
         }
+    }
+"""),
+    "W0523": ("AllowOverlap that allows nothing", """
+An `AllowOverlap` statement none of whose names overlap or touch in the final drawing, so it
+silences no warning: it concerns a hole and what refills it (W0501), two holes that cut one
+opening (W0508), the shapes of one hole that merge (W0512), or two parts of an assembly
+(W0511; a program that places its parts in 3D with `Place` is not judged, W0517). Usually it
+names other shapes than meant (a pattern's original where its copies overlap: name the
+pattern's list), or an edit moved the overlap away. Name the shapes a warning named (its hint
+writes the call), or delete the statement.
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=80, height=40)
+        hole a { c = Circle(center=(-20, 0), radius=5) }
+        hole b { c = Circle(center=(20, 0), radius=5) }
+        AllowOverlap(a, b)          # 30 mm apart: W0523
+    }
+"""),
+    "W0524": ("line of zero length in a drawing", """
+A `Line` of a `drawing` whose start and end are one point (`Line((x, y), (x, y))`, often a
+loop's formula that gives both ends the same value): it engraves no line, only a plunge at a
+point, and nothing holds its two points (each is a free starting guess, so the degrees of
+freedom left count them). One warning per statement, with the number of its copies. Give the
+Line two different points, or delete it; a dot is a small Circle.
+
+    drawing strings {
+        for i in range(5) { s = Line((-30 + 15 * i, 0), (-30 + 15 * i, 0)) }   # W0524
     }
 """),
     "W0130": ("drawing entities skipped", """

@@ -596,6 +596,22 @@ def _where(c) -> str:
     return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
 
 
+def _literal_note(items) -> str:
+    """A hint's note on the shapes of a conflict held by their literal coordinates (a
+    Triangle, Polygon, Polyline, Spline or Bezier whose points are all numbers): they keep
+    their shape unless ``flexible=true`` (issue 73: models did not know Triangle takes it)."""
+    kinds = sorted({(c.text or "").split(" shape (literal")[0] for c, _ in items
+                    if (c.text or "").endswith("shape (literal coordinates)")})
+    if not kinds:
+        return ""
+    lines = sorted({c.span.line for c, _ in items
+                    if (c.text or "").endswith("shape (literal coordinates)") and c.span})
+    at = f" (line {', '.join(map(str, lines))})" if lines else ""
+    return (f". The {' and '.join(kinds)}{at} keep{'s' if len(lines) < 2 else ''} the shape "
+            "its literal coordinates give; if its points should follow the constraints, add "
+            "`flexible=true` to its call")
+
+
 def _rigid_note(s) -> str:
     """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
     moved, never bent, so a conflict there may ask for a change of shape."""
@@ -698,7 +714,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others" + _rigid_note(first.owner)),
+                  "others" + _rigid_note(first.owner) + _literal_note(items)),
             labels=labels))
         shown += 1
     if shown:

@@ -425,9 +425,10 @@ _DEFS = {
                 doc="any number of shapes, structures (drawings too) or lists of them keep "
                     "their placement to each other; a structure moves, never bends."),
     "AllowOverlap": _c([A("a", "any"), A("b", "any", doc="and every further argument, as "
-                         "a list")], cat="operation", varargs=True,
-                       doc="these (or lists) may overlap: refilled hole (W0501), assembly "
-                           "parts (W0511)."),
+                         "a list")], [A("a", "any", doc="a list: its items")],
+                       cat="operation", varargs=True,
+                       doc="these (or lists) may overlap: refilled hole (W0501), holes "
+                           "(W0508, W0512), assembly parts (W0511)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",

@@ -371,7 +371,8 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
         return None
     if kind == "AllowOverlap":
-        return _allow_overlap([args["a"], args["b"]])
+        return _allow_overlap([args["a"]] + ([args["b"]] if args.get("b") is not None else []),
+                              S, args.get("_span"))
     if kind == "Rigid":
         return _rigid(ctx, _flat([args[k] for k in "ab" if args.get(k) is not None]))
     if kind == "Mirrored" and isinstance(args["target"], list):
@@ -436,14 +437,16 @@ def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
                  line=(a, b))
 
 
-def _allow_overlap(items: list) -> None:
+def _allow_overlap(items: list, S=None, span=None) -> None:
     """``AllowOverlap(a, b, ...)``: the shapes and structures named (lists, such as the
     copies a loop makes, are spread out) may overlap.  Each hole among them (a hole structure,
     or a shape in one) may be refilled by every other (W0501, W0508:
     :func:`aidl_lang.output.checks.openings._intended`); every two solid structures among them
     (parts of an assembly) may interpenetrate (W0511:
     :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
-    ``overlap_ok`` sets.  Raises :class:`OperationError` for an argument that is no shape or
+    ``overlap_ok`` sets; the call itself (``span``, the things named) in the ``allowances`` of
+    ``S``, the structure it is written in (W0523: one that allows nothing).  One argument is
+    a list (``AllowOverlap(c)``: a loop's copies in a hole, W0512).  Raises :class:`OperationError` for an argument that is no shape or
     structure, or when nothing is named that the two rules concern (no hole, fewer than two
     solid structures)."""
     objs = []
@@ -483,6 +486,10 @@ def _allow_overlap(items: list) -> None:
                              "parts (of an assembly) that may overlap; got "
                              + " and ".join(_what(StructRef(o) if isinstance(o, Structure)
                                                   else GeomRef(o)) for o in objs))
+    if S is not None:
+        # kept where it is written, with its statement, for W0523 (one that allows nothing:
+        # aidl_lang.output.checks.allowances)
+        S.allowances = list(getattr(S, "allowances", ())) + [(span, objs)]
     return None
 
 

@@ -149,6 +149,8 @@ class Calls:
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             if cname == "CutInto":
                 return self._cut_into(conv, node, spans)
+            if cname == "AllowOverlap":
+                conv = dict(conv, _span=node.span)     # W0523 locates one that allows nothing
             try:
                 return apply(self, cname, conv, name)
             except OperationError as ex:

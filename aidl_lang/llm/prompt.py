@@ -52,7 +52,8 @@ on stays exactly where it is written (no `Fixed` just in case). A point at a rad
 from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
 also fit its mirror image). Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates
-(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it. A definition
+(`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it;
+`flexible=true` (Triangle, Polygon, Polyline, Spline, Bezier) frees its points. A definition
 may only use names defined above it; constraint statements may name geometry defined later.
 A child structure's geometry is `child.name`, the current one is `self`; every geometry and
 structure has `.bb` (bounding box). A structure's box covers all it holds, holes included (a
@@ -75,7 +76,7 @@ copies beside the original, in the original's structure.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
-Line, an Arc, a Slot or Rectangle by start and end) may turn. `Rigid(a, b, ...)` keeps
+Line, an Arc, a Slot or Rectangle by start and end) may turn; a Line needs two distinct points (W0524). `Rigid(a, b, ...)` keeps
 shapes placed relative to each other (moved together);
 `Rigid(s)` makes a structure move whole, never bent; `Rigid(s1, s2, ...)` moves any number of
 structures as one body.
@@ -98,7 +99,7 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
 A warning on a design exactly as requested is accepted in the program, never by changing a
 requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
-W0517), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
+W0512, W0517), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: shapes could still move (valid; pin
 what matters).

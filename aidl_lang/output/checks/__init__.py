@@ -23,7 +23,9 @@ One module per family:
 * :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
   adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate,
   ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
-* :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut;
+* :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut,
+  ``W0524`` a drawing's Line of zero length;
+* :mod:`.allowances`: ``W0523`` an ``AllowOverlap`` that allows nothing;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
 * :mod:`.through`: ``W0522`` a through-cut off the material or along the outline, ``W0507`` a web thinner than the
   minimum between through-cuts (or a through-cut and the outline);
@@ -45,11 +47,13 @@ import numpy as np
 
 from ...diagnostics import DiagnosticSink
 from ..part.booleans import Drawing
+from .allowances import check_allowances
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
                      _inside_loops, _part_of, _part_roots, _signed, _union)
-from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _n_samples, _sample,
+from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
+                         _n_samples, _sample,
                          _samples, _within)
 from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
                        _check_repeated_faces,
@@ -96,7 +100,8 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
             "text": ("text over text or marks", "W0513"),
             "repeats": ("copies that merge", "W0512"),
             "through": ("through-cuts", "W0507, W0522"),
-            "interpenetration": ("parts that interpenetrate", "W0511")}
+            "interpenetration": ("parts that interpenetrate", "W0511"),
+            "allowances": ("AllowOverlap statements", "W0523")}
 
 
 class _OutOfShare(Exception):
@@ -341,6 +346,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 _check_repeated_faces(d, s, sink, lambda: tick(s)),
                 _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL,
                                            lambda: tick(s))))
+    run("allowances", None, lambda: check_allowances(d, sink, lambda: tick(None)))
+    _check_zero_lines(d, sink)
     shares.notes(sink, given if given is not None else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():
         explained.add(_part_of(getattr(g, "owner", g), roots))     # an E0406 says why the part is empty

@@ -318,3 +318,25 @@ def _cut_openings(loops: list, cuts) -> np.ndarray:
                               hb)
     out[np.asarray(inner, dtype=np.intp)[pairs[:, 0]]] = True
     return out
+
+
+def _insert_fix(struct: Structure, stmt: str, sink=None):
+    """A :class:`~aidl_lang.diagnostics.Fix` that writes the statement ``stmt`` as the last
+    of structure ``struct``'s body (before its closing ``}``), indented one step inside it,
+    or None when the structure is not in a source of ``sink`` (the program's own files: a
+    stdlib template's, a generated one is not edited); ``sink``'s ``sources`` also tell
+    whether the ``}`` stands on a line of its own."""
+    from ...diagnostics import Fix, Span, in_stdlib
+    sp = getattr(struct, "span", None)
+    if sp is None or not sp.file or sp.end <= sp.start or in_stdlib(sp.file):
+        return None
+    src = getattr(sink, "sources", {}).get(sp.file) if sink is not None else None
+    if src is None or sp.end > len(src) or src[sp.end - 1] != "}":
+        return None                 # not a file of the program's own (a stdlib template's)
+    col = sp.end_col - 1                              # the closing brace's column (1-based)
+    line = src[src.rfind("\n", 0, sp.end - 1) + 1:sp.end - 1]
+    alone = not line.strip()
+    at = Span(sp.file, sp.end_line, col, sp.end_line, col, sp.end - 1, sp.end - 1)
+    pad = line[:len(line) - len(line.lstrip())]
+    text = f"    {stmt}\n{pad}" if alone else f"\n{pad}    {stmt}\n{pad}"
+    return Fix(at, text)

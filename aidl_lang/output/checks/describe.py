@@ -98,6 +98,9 @@ def loop_shape(segments) -> dict:
             ax = _angle(lines[0].end[0] - lines[0].start[0], lines[0].end[1] - lines[0].start[1])
             w, h, ang = (a, b, ax) if ax < 45 or ax >= 135 else (b, a, (ax + 90) % 180)
             return {**doc, "kind": "rectangle", "w": _r(w), "h": _r(h), "angle": _r(ang)}
+        lengths = [ln.length for ln in lines]
+        if max(lengths) - min(lengths) < SAME:     # equal sides (a RegularPolygon): its side
+            return {**doc, "kind": "polygon", "n": len(lines), "side": _r(lengths[0])}
         return {**doc, "kind": "polygon", "n": len(lines)}
     if len(lines) == 2 and len(arcs) == 2 and abs(arcs[0].radius - arcs[1].radius) < SAME \
             and all(abs(abs(a.sweep) - math.pi) < 1e-6 for a in arcs):
@@ -369,21 +372,35 @@ def notches(output: Output, part, cuts_within: dict | None = None) -> list[dict]
         shape = d.shapes.get(c.hole)
         if shape is None or (shape - c.before).area() <= NOTCH_AREA:
             continue                            # inside the material: an opening, listed above
-        a, b, e, f = c.region.bounds()
-        # the exact box: the part's own outline pieces inside the (polygonal) region's box
-        pad = max(0.01, 1e-3 * max(e - a, f - b))
-        inner = [g for lp in part.loops for g in lp.segments
-                 if _inside_box(g.box(), (a - pad, b - pad, e + pad, f + pad))]
-        if inner:
-            a, b, e, f = _box(inner)
-        gaps = {"top": y1 - f, "bottom": b - y0, "left": a - x0, "right": x1 - e}
-        edge = min(gaps, key=gaps.get)
-        width, depth = (e - a, f - b) if edge in ("top", "bottom") else (f - b, e - a)
-        out.append({"hole": c.hole.path, "edge": edge, "width": _r(width), "depth": _r(depth),
-                    "center": [_r((a + e) / 2), _r((b + f) / 2)],
-                    "box": [_r(a), _r(b), _r(e), _r(f)]})
+        pieces = shape.decompose() if shape.num_contour() > 1 else [shape]
+        for piece in pieces:                    # one notch per cut-out (two corners: two)
+            if (piece - c.before).area() <= NOTCH_AREA:
+                continue                        # this piece is an opening
+            region = piece ^ c.region if len(pieces) > 1 else c.region
+            if region.is_empty():
+                continue
+            out.append(_notch(part, c, region, (x0, y0, x1, y1)))
     out.sort(key=lambda n: (-n["center"][1], n["center"][0]))
     return out
+
+
+def _notch(part, c, region, box) -> dict:
+    """One notch of :func:`notches`: the cut ``c``'s ``region`` (one piece) in the part of
+    box ``box``, named by the edge it opens onto."""
+    x0, y0, x1, y1 = box
+    a, b, e, f = region.bounds()
+    # the exact box: the part's own outline pieces inside the (polygonal) region's box
+    pad = max(0.01, 1e-3 * max(e - a, f - b))
+    inner = [g for lp in part.loops for g in lp.segments
+             if _inside_box(g.box(), (a - pad, b - pad, e + pad, f + pad))]
+    if inner:
+        a, b, e, f = _box(inner)
+    gaps = {"top": y1 - f, "bottom": b - y0, "left": a - x0, "right": x1 - e}
+    edge = min(gaps, key=gaps.get)
+    width, depth = (e - a, f - b) if edge in ("top", "bottom") else (f - b, e - a)
+    return {"hole": c.hole.path, "edge": edge, "width": _r(width), "depth": _r(depth),
+            "center": [_r((a + e) / 2), _r((b + f) / 2)],
+            "box": [_r(a), _r(b), _r(e), _r(f)]}
 
 
 def describe(output: Output, deadline=None) -> dict:
@@ -445,7 +462,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         check()
         x0, y0, x1, y1 = part_box(p)
         box = [_r(x0), _r(y0), _r(x1), _r(y1)]
-        material = (_r(p.thickness if p.thickness is not None else DEFAULT_THICKNESS),
+        # the thickness as the program states it (1.5875 mm, not 1.588): to 1e-9 mm
+        material = (_r(p.thickness if p.thickness is not None else DEFAULT_THICKNESS, 9),
                     p.thickness is not None, _r(kerfs[p.name]) if p.name in kerfs else None)
         engraved = texts_of.get(p.name, [])
         through = _through(strokes_of.get(p.name, ()))
@@ -536,7 +554,8 @@ def shape_text(s: dict) -> str:
                f"{_n(a1 + s['sweep'])} deg about {_at(s['center'])}"
     size = f"{_n(s['size'][0])} x {_n(s['size'][1])}"
     if k == "polygon":
-        return f"{s['n']}-gon {size} at {_at(s['center'])}"
+        side = f", side {_n(s['side'])}" if s.get("side") else ""
+        return f"{s['n']}-gon {size}{side} at {_at(s['center'])}"
     what = ", ".join(f"{s[key]} {key if s[key] != 1 else key[:-1]}" for key in
                      ("lines", "arcs", "curves") if s.get(key))
     return f"outline {size} at {_at(s['center'])} ({what})"
@@ -552,7 +571,7 @@ def describe_text(doc: dict) -> str:
                    + f": {_n(w)} x {_n(h)} mm, from ({_n(x0)}, {_n(y0)}) to ({_n(x1)}, {_n(y1)}),"
                    f" area {_n(round(p['area'], 2))} mm^2")
         if "thickness" in p:
-            out.append(f"  material: {_n(p['thickness'])} mm thick"
+            out.append(f"  material: {p['thickness']:.10g} mm thick"
                        + ("" if p["thickness_set"] else " (no `thickness` stated: the default)")
                        + (f", kerf {_n(p['kerf'])} mm" if p.get("kerf") else ", no kerf"))
         for o in p["outline"]:

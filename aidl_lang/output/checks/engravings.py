@@ -581,3 +581,26 @@ def _polyline(item) -> np.ndarray:
         P = _sample(item)
         return np.vstack([P, P[:1]])
     return _sample(item)
+
+
+def _check_zero_lines(d: Drawing, sink: DiagnosticSink) -> None:
+    """W0524 for each statement of a ``drawing`` whose Line has no length (its start and
+    end at one place, within 1e-9 mm: ``Line((x, y), (x, y))``): it engraves no line, only a
+    plunge at a point, and nothing holds its two points (each a free starting guess).  One
+    warning per statement, with the number of its copies (a loop's)."""
+    by_span: dict = {}
+    for style, item, g in d.strokes:
+        if style != "drawing" or g is None or item[0] != "line" or g.span is None:
+            continue
+        p, q = np.asarray(item[1], dtype=float), np.asarray(item[2], dtype=float)
+        if float(np.hypot(*(q - p))) <= 1e-9:
+            by_span.setdefault(g.span, []).append((g, p))
+    for span, hits in by_span.items():
+        g, p = hits[0]
+        many = f" ({len(hits)} copies)" if len(hits) > 1 else ""
+        sink.warning("W0524", f"`{g.label}` is a Line of zero length{many}: its start and end "
+                     f"are both at ({p[0]:.6g}, {p[1]:.6g}), so it engraves no line (a "
+                     "plunge at a point) and nothing holds its two points", span,
+                     hint="give the Line two different points (its end where the stroke should "
+                          "end, e.g. `Line((x, y), (x + 10, y))`), or delete it; a dot is a "
+                          "small Circle")

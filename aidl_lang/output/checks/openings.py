@@ -35,8 +35,8 @@ from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import boundary, box_pairs, box_pairs_between, close_pairs
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
-                     _inside, _part_of, _pct, _signed, _significant, _solids_within,
-                     _union)
+                     _insert_fix, _inside, _part_of, _pct, _signed, _significant,
+                     _solids_within, _union)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -82,6 +82,8 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
         boxes = np.array([f.bounds() for f in shapes], dtype=float)
         merges = []
         for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+            if _allowed_pair(h, faces[i][0], faces[j][0]):
+                continue                               # AllowOverlap(c): one opening, meant
             tick()
             common = shapes[i] ^ shapes[j]
             a = _area(common)
@@ -97,12 +99,16 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
         how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
                if a > 0 else f"copies {i + 1} and {j + 1} touch")
         more = f" ({len(merges)} such pairs)" if len(merges) > 1 else ""
+        ref = _ref(g, h)
+        stmt = f"AllowOverlap({ref})" if ref != "self" else None
+        meant = (f", or say so: write `{stmt}` in `{h.path}`" if stmt else "")
         sink.warning("W0512", f"`{g.label}` of hole `{h.path}` is drawn {len(faces)} times but "
                      f"cuts {openings} opening{'s' if openings != 1 else ''}: {how}{more}",
                      span,
                      hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
                           "(or make them smaller) so that material is left between them; if one "
-                          "opening is meant, draw it as one shape (a Slot, a Polygon)")
+                          f"opening is meant, draw it as one shape (a Slot, a Polygon){meant}",
+                     fix=_insert_fix(h, stmt, sink) if stmt else None)
 
 
 def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
@@ -126,6 +132,8 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
     for i, j in sorted(map(tuple, box_pairs(boxes))):
         if faces[i][0].span == faces[j][0].span:
             continue                                   # copies of one statement: W0512 above
+        if _allowed_pair(h, faces[i][0], faces[j][0]):
+            continue                                   # AllowOverlap(a, b): one opening, meant
         tick()
         common = shapes[i] ^ shapes[j]
         a = _area(common)
@@ -140,6 +148,9 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
     more = f"; {len(merges) - 1} more such pair{'s' if len(merges) > 2 else ''}" \
         if len(merges) > 1 else ""
     labels = [Label(gi.span, f"`{gi.label}` is here", primary=False)] if gi.span else []
+    refs = list(dict.fromkeys(_ref(faces[k][0], h) for m in merges for k in m[:2]))
+    stmt = f"AllowOverlap({', '.join(refs)})" if "self" not in refs else None
+    meant = (f", or say so: write `{stmt}` in `{h.path}` (a scalloped bite)" if stmt else "")
     sink.warning("W0512", f"circles `{gj.label}` and `{gi.label}` of hole `{h.path}` overlap "
                  f"by {depth:.2f} mm ({a:.2f} mm^2 in common), so they cut one opening: the "
                  f"hole draws {len(faces)} circles but cuts {openings} "
@@ -147,7 +158,15 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
                  labels=labels,
                  hint=f"move `{gj.label}` {depth + t:.2f} mm further from `{gi.label}` (or make "
                       "one smaller) so that material is left between them; if one opening is "
-                      "meant, draw it as one shape (a Slot)")
+                      f"meant, draw it as one shape (a Slot){meant}",
+                 fix=_insert_fix(h, stmt, sink) if stmt else None)
+
+
+def _allowed_pair(h: Structure, a, b) -> bool:
+    """``AllowOverlap`` written in hole ``h`` names both of its shapes ``a`` and ``b`` (or
+    lists holding them): the one opening they cut is meant (W0512)."""
+    ok = getattr(h, "overlap_ok", None)
+    return bool(ok) and a in ok and b in ok
 
 
 def _perimeter(cs) -> float:
@@ -361,14 +380,47 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
               if g.span is not None and g.span != g0.span]
     owner = owners[0]
     name = _free_name(owner, "window")
+    final = d.shapes.get(s)
+    if final is not None and _area(region ^ final) > MIN_AREA:
+        # material inside the opening (a piece of its own): a hole of the opening's outline
+        # would cut it away, so no statement is offered
+        stmt, meant = None, (f"declare it in `{owner.path}` with a `hole` over it that leaves "
+                             "out the material inside it")
+    else:
+        pts = ", ".join(f"({x:.3f}, {y:.3f})" for x, y in _outline_inside(region, min(w, h)))
+        stmt = f"hole {name} {{ p = Polygon([{pts}]); Fixed(p) }}"
+        meant = (f"declare it in `{owner.path}` with a hole of its own outline (a hair inside "
+                 f"it, so that it cuts no material): `{stmt}`")
     sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
                  f"({cx:.1f}, {cy:.1f}) is enclosed by {who} in `{owner.path}`: no hole cuts "
                  "it, the shapes merge around it", g0.span or owner.span, labels=labels,
                  hint="if it is not meant, make the shapes around it overlap to fill it (or "
-                      "move them apart so that it opens onto the edge); if it is meant, "
-                      f"declare it in `{owner.path}`: `hole {name} {{ r = Rectangle("
-                      f"center=({cx:.2f}, {cy:.2f}), width={w:.2f}, height={h:.2f}); "
-                      "Fixed(r) }`")
+                      f"move them apart so that it opens onto the edge); if it is meant, {meant}",
+                 fix=_insert_fix(owner, stmt, sink) if stmt else None)
+
+
+def _outline_inside(region, size: float) -> list:
+    """The outline of the opening ``region`` (a CrossSection of one loop; ``size`` mm its
+    smaller side) as at most about 24 vertices that lie inside it (an inset by twice the
+    simplification's tolerance, which starts at 0.005 mm and doubles, up to a 20th of
+    ``size``, while more are left): a hole of this polygon declares the opening and cuts no
+    material, whatever its shape (a triangle between a brace and its legs stays a triangle,
+    where a Rectangle of its box cut through the brace; a round opening's polygon lies a
+    little inside the circle).  Counter-clockwise ``[(x, y)]`` mm, rounded to 0.001 mm
+    (less than the inset)."""
+    eps, best = 0.005, None
+    while True:
+        inner = region.offset(-2 * eps, mf.JoinType.Miter, 2.0, 16).simplify(eps)
+        loops = [np.asarray(q, dtype=float) for q in inner.to_polygons()]
+        loops = [P for P in loops if len(P) >= 3 and _signed(P) > 0]
+        if loops:
+            best = max(loops, key=_signed)
+        if best is None or len(best) <= 24 or eps * 2 > size / 20:
+            break
+        eps *= 2
+    if best is None:                      # too thin to inset: the outline itself
+        best = max((np.asarray(q, dtype=float) for q in region.to_polygons()), key=_signed)
+    return [(float(x), float(y)) for x, y in best]
 
 
 class _Near:
@@ -624,6 +676,8 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
+        if a.cuts and _holes_allowed(a.cuts[i - 1], a.cuts[j - 1]):
+            continue                  # AllowOverlap(first, second): one opening, meant
         inner = _inner(a, i, j, common)
         if inner is not None and a.cuts:
             refill = _refiller(a.cuts[i + j - inner - 1], a.cuts[inner - 1], shapes)
@@ -647,11 +701,16 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             how = f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)"
             far = f"{depth + t:.2f} mm" if t > 0 else f"{depth:.2f} mm"
         labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
+        where, stmt = _allow_holes(a.cuts[i - 1].hole, a.cuts[j - 1].hole) if a.cuts \
+            else (None, None)
+        meant = (f"write `{stmt}` in `{where.path}` (or draw both shapes in one hole "
+                 "structure, whose faces may overlap)" if stmt else
+                 "draw both shapes in one hole structure (the faces of one hole may overlap)")
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
                      hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
-                          "material is left between them; if one opening is meant, draw both "
-                          "shapes in one hole structure (the faces of one hole may overlap)")
+                          f"material is left between them; if one opening is meant, {meant}",
+                     fix=_insert_fix(where, stmt, sink) if stmt else None)
     inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
         covered.add(frozenset((a.names[i], a.names[j])))
@@ -671,6 +730,29 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                           "router cannot hold a thinner wall); the minimum is set with "
                           "--min-wall")
     return covered
+
+
+def _holes_allowed(ci, cj) -> bool:
+    """``AllowOverlap`` names the holes of cuts ``ci`` and ``cj`` together (or lists or
+    structures holding them): the one opening they cut is meant (W0508)."""
+    return _intended(ci.hole, ci.owner, cj.hole) or _intended(cj.hole, cj.owner, ci.hole)
+
+
+def _allow_holes(hi: Structure, hj: Structure) -> tuple:
+    """The ``AllowOverlap`` statement that says two merging holes ``hi`` and ``hj`` cut one
+    opening as meant, and the structure to write it in (their nearest common ancestor):
+    ``(structure, statement)``, or ``(None, None)`` when either would be named ``self``."""
+    common = hi.parent
+    while common is not None and not hj.is_within(common):
+        common = common.parent
+    if common is None:
+        return None, None
+    refs = [_ref(hi, common), _ref(hj, common)]
+    if "self" in refs:
+        return None, None
+    if refs[0] == refs[1]:                       # two copies of one pattern: the list
+        return common, f"AllowOverlap({refs[0]})"
+    return common, f"AllowOverlap({refs[0]}, {refs[1]})"
 
 
 def _refiller(outer, inner, shapes: dict | None = None):
@@ -781,14 +863,16 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
             if _significant(_area(cut.region ^ shp), cut_area):
                 into = allowed if _intended(h, s, obj) else groups   # AllowOverlap(hole, this)
                 key = (span, isinstance(obj, Structure)) if span is not None else id(obj)
-                into.setdefault(key, [obj, span, a, []])[3].append(shp)
+                g = into.setdefault(key, [obj, span, a, [], []])
+                g[3].append(shp)
+                g[4].append(obj)
         if node.parent is part:
             break
         node = a
     # shapes drawn inside the opening (a hub and spokes in a rim's opening, a moon in a
     # window) are put there on purpose: only what covers the hole from outside it is reported
     drawn_in = {}
-    for key, (obj, span, a, shapes) in list(groups.items()):
+    for key, (obj, span, a, shapes, _) in list(groups.items()):
         shp = shapes[0] if len(shapes) == 1 else _union(shapes)
         if _area(shp ^ hole_shape) >= DRAWN_IN * _area(shp):
             drawn_in[key] = groups.pop(key)
@@ -802,7 +886,7 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
 
     def said(gs):
         out = []
-        for obj, span, _, shapes in gs:
+        for obj, span, _, shapes, _ in gs:
             share = _area(cut.region ^ (shapes[0] if len(shapes) == 1 else _union(shapes)))
             what = f"solid `{obj.path}`" if isinstance(obj, Structure) else f"`{obj.label}`"
             many = f"{len(shapes)} copies, " if len(shapes) > 1 else ""
@@ -815,13 +899,23 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
         also = "; AllowOverlap already allows " + ", ".join(said(allowed.values()))
     if drawn_in:
         also += "; drawn inside the opening, so meant: " + ", ".join(said(drawn_in.values()))
-    refs = []
-    for obj, _, _, shapes in groups.values():
-        r = _ref(obj, outer)
-        if r not in refs:
-            refs.append(r)
+    refs, unnamed = [], False
+    for *_, objs in groups.values():
+        # every object of the group (a pattern's original and its copies are one statement's
+        # group: `spoke` and the list `spokes` both, so that one call allows all of them)
+        named = any(not isinstance(o, Structure) and o.name for o in objs)
+        for o in objs:
+            if named and not isinstance(o, Structure) and not o.name and o.owner is outer:
+                unnamed = True          # a copy of a named shape by a pattern with no name
+                continue
+            r = _ref(o, outer)
+            if r not in refs:
+                refs.append(r)
     labels = [Label(span, "refills the hole", primary=False)
-              for _, span, _, _ in groups.values() if span is not None]
+              for _, span, _, _, _ in groups.values() if span is not None]
+    stmt = f"AllowOverlap({hole_ref}, {', '.join(refs + ['NAME'] * unnamed)})"
+    how = (f"name the pattern statement that copies it (`NAME = ` before it) and add "
+           f"`{stmt}` to `{outer.path}`" if unnamed else f"write `{stmt}` in `{outer.path}`")
     sink.warning(
         "W0501",
         f"hole `{h.path}` is refilled by {who}: only {_pct(survives, cut_area)} of it still "
@@ -829,8 +923,8 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
         h.span, labels=labels,
         hint=(f"a hole cuts only the solid it is declared in (`{s.path}`); declare the hole in "
               f"`{outer.path}`, the common parent, so that it cuts everything united there, "
-              "or move it clear of the solids that cover it; if the overlap is intended, "
-              f"write `AllowOverlap({hole_ref}, {', '.join(refs)})` in `{outer.path}`"))
+              f"or move it clear of the solids that cover it; if the overlap is intended, {how}"),
+        fix=None if unnamed else _insert_fix(outer, stmt, sink))
 
 
 def _ref(obj, base: Structure) -> str:
