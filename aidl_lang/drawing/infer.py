@@ -48,8 +48,8 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
                              _polar_polys, _runs, _tick_families, _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .program import (_Writer, _containers, _ident, _inside, _layer_items, _num, _pt,
-                      _string)
+from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
+                      _length, _num, _paths, _pt, _string)
 from .model import Drawing, Note
 
 
@@ -123,6 +123,8 @@ class _Part:
         self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
         self.used: set = set()
         self.shift: tuple | None = None     # (x term, y term) added to every position
+        self.anchor: tuple | None = None    # (body Shape, its size params): edges to place by
+        self.named: list = []               # [(point, name)]: centres written once, shared
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -134,6 +136,42 @@ class _Part:
             return _center(c)
         return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
                                for i in (0, 1)) + ")"
+
+    def at(self, v: float, axis: int, ref: float | None = None) -> str:
+        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
+        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
+        width (height) param, so that a new width moves what sits by an edge with the edge
+        and keeps what sits by the centre there (ties go to the centre)."""
+        if self.anchor is None:
+            return self.center((v, v))[1:-1].split(", ")[axis]
+        sh, sizes = self.anchor
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        r = v if ref is None else ref
+        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
+        if side == 0:
+            return self.center((v, v))[1:-1].split(", ")[axis]
+        d = v - (c + side * half)
+        term = f"{'-' if side < 0 else ''}{sizes[key]} / 2"
+        if abs(d) > ROUND_TOL:
+            term += f" + {_r(d)}" if d > 0 else f" - {_r(-d)}"
+        return self.plus(c, term, axis)
+
+    def pos(self, c) -> str:
+        """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return nm
+        return f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+
+    def origin(self, c) -> tuple[str, str, bool]:
+        """The x and y text of a pattern's centre ``c`` and whether it is a shared centre
+        (a feature the pattern surrounds) or the body's centre."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return f"{nm}.x", f"{nm}.y", True
+        on_body = self.anchor is not None and math.dist(self.anchor[0].center, c) <= EQUAL_TOL
+        return self.at(c[0], 0), self.at(c[1], 1), on_body
 
     def p(self, name: str, value: float, comment: str = "", unit: str = "mm",
           times: int = 1) -> str:
@@ -199,6 +237,8 @@ class _Part:
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
         self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
         self.w.emit(depth, f"Fixed({nm})")
+        if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
+            self.anchor = (sh, sizes)
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         for chain in tabs or []:
@@ -206,13 +246,13 @@ class _Part:
             if isinstance(chain, Shape):
                 st.kinds[chain.kind] += 1
                 st.in_shapes += 3
-                self.shape_line(depth, tn, chain, self.center(chain.center))
+                self.shape_line(depth, tn, chain, self.pos(chain.center))
                 self.w.emit(depth, f"Fixed({tn})")
                 continue
             t = recognise(chain)
             if t is not None and t.kind != "Polygon":
                 st.kinds[t.kind] += 1
-                self.shape_line(depth, tn, t, self.center(t.center))
+                self.shape_line(depth, tn, t, self.pos(t.center))
                 self.w.emit(depth, f"Fixed({tn})")
             elif t is not None:
                 self.shape_line(depth, tn, t, "")
@@ -272,6 +312,7 @@ class _Part:
             groups.setdefault(key, []).append(sh)
         singles = []
         centres = []          # bolt circle centres, for naming a bore
+        self.share_centres(depth, groups, body)
         for key, g in groups.items():
             if len(g) == 1 or g[0].kind == "Polygon":
                 singles += g
@@ -281,6 +322,31 @@ class _Part:
                 singles += g
         for sh in singles:
             self.single(depth, sh, body, centres)
+
+    def share_centres(self, depth: int, groups: dict, body) -> None:
+        """A feature that a pattern of other holes surrounds (a bore inside its motor
+        holes, a window inside its screws): its centre written once as a name
+        (``bore_c = (x, y)``) that both use, so moving one moves the other."""
+        many = [g for g in groups.values() if len(g) > 1 and g[0].kind != "Polygon"]
+        mids = [(sum(h.center[0] for h in g) / len(g), sum(h.center[1] for h in g) / len(g))
+                for g in many]
+        for g in groups.values():
+            if len(g) != 1 or g[0].kind not in ("Circle", "Rectangle", "RoundedRectangle",
+                                                 "RegularPolygon"):
+                continue
+            sh = g[0]
+            if not any(math.dist(m, sh.center) <= EQUAL_TOL for m in mids):
+                continue
+            if any(math.dist(q, sh.center) <= EQUAL_TOL for q, _ in self.named):
+                continue
+            base = "bore" if sh.kind == "Circle" else _hole_name(sh)
+            hn = self.name(base)
+            self.used.discard(hn)           # the hole itself takes the name (single)
+            var = _ident(hn + "_c", self.used)
+            self.w.emit(depth, f"{var} = {self.pos(sh.center)}")
+            self.named.append((sh.center, var))
+            self.shared_kind = getattr(self, "shared_kind", {})
+            self.shared_kind[var] = sh.kind
 
     def compound_hole(self, depth: int, segs: list, body) -> None:
         """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
@@ -314,7 +380,7 @@ class _Part:
             rect, tabs = got
             hn = self.name("window")
             w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"h = {_ctor(rect, self.center(rect.center))}")
+            w.emit(depth + 1, f"h = {_ctor(rect, self.pos(rect.center))}")
             fixed = ["h"]
             for k, t in enumerate(tabs):
                 nm = f"tab{k + 1}"
@@ -369,7 +435,9 @@ class _Part:
         sh = g[0]
         base = _hole_name(sh)
         # four at the corners of the body, centred on it
-        if len(g) == 4 and body is not None and body[0].kind != "Circle":
+        mid_all = (sum(c[0] for c in cs) / len(cs), sum(c[1] for c in cs) / len(cs))
+        if len(g) == 4 and body is not None and body[0].kind != "Circle" and \
+                self.surrounds(mid_all) is None:
             bsh, bsizes, bname = body
             gr = _grid(cs)
             if gr is not None and gr[4] == 2 and gr[5] == 2:
@@ -396,22 +464,23 @@ class _Part:
                     w.emit(depth, "}")
                     self.stats.patterns["corner"] += 1
                     return True
-        # a bolt circle: circles evenly round a centre
+        # a bolt circle: circles evenly round a centre, its count a param
         if sh.kind == "Circle":
             pol = _polar(cs)
             if pol is not None:
-                (cx, cy), R, a0, n = pol
-                hn = self.name("bolt_circle")
-                pcd = self.p(f"{hn}_d", 2 * R, "pitch circle diameter")
-                sizes = self.size_params(f"{hn}_hole", sh, True)
-                ang = f"{_deg(a0)} + i * {_num(360 / n, 1e-10)} deg" if abs(a0) > 1e-15 \
-                    else f"i * {_num(360 / n, 1e-10)} deg"
-                c = f"({self.plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
-                    f"{self.plus(cy, f'{pcd} / 2 * sin({ang})', 1)})"
-                w.emit(depth, f"for i in range({n}) {{")
-                self.hole_block(depth + 1, hn, sh, c, sizes)
+                C, R, a0, n = pol
+                around = self.surrounds(C)
+                hn = self.name("motor_holes" if around == "Circle" and n == 4 else "bolt_circle")
+                pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
+                sizes = self.size_params(hn, sh, True)
+                cnt = self.p(f"{hn}_n", n, "holes", unit="")
+                ang = f"{_deg(a0)} + i * 360 deg / {cnt}" if abs(a0) > 1e-15 \
+                    else f"i * 360 deg / {cnt}"
+                w.emit(depth, f"for i in range({cnt}) {{")
+                self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
+                                sizes)
                 w.emit(depth, "}")
-                centres.append((cx, cy))
+                centres.append(C)
                 self.stats.patterns["bolt circle"] += 1
                 return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
@@ -425,7 +494,7 @@ class _Part:
                 hn = self.name(base + "s")
                 sizes = self.size_params(hn, sh, True)
                 ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2") if sym_x \
-                    else self.center((x1, y1))[1:-1].split(", ")[0]
+                    else self.at(x1, 0)
                 # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
                 if sym_y:
                     dy = y2 - y1 if sym_x else abs(y2 - y1)
@@ -433,7 +502,7 @@ class _Part:
                     name = hn + ("_spacing_y" if sym_x else "_spacing")
                     ey = self.plus(B[1], f"{sign} * {self.p(name, abs(dy))} / 2", 1)
                 else:
-                    ey = self.center((x1, y1))[1:-1].split(", ")[1]
+                    ey = self.at(y1, 1)
                 w.emit(depth, "for s in [-1, 1] {")
                 self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
                 w.emit(depth, "}")
@@ -442,30 +511,7 @@ class _Part:
         # a row, a column or a grid
         gr = _grid(cs)
         if gr is not None:
-            x0, y0, dx, dy, nx, ny = gr
-            hn = self.name(base + "s")
-            sizes = self.size_params(hn, sh, True)
-            here = self.center((x0, y0))[1:-1].split(", ")
-            ex, ey = here
-            if nx > 1:
-                px = self.p(hn + "_pitch_x" if ny > 1 else hn + "_pitch", dx, times=nx)
-                ex = self.plus(x0, f"i * {px}")
-            if ny > 1:
-                py = self.p(hn + "_pitch_y" if nx > 1 else hn + "_pitch", dy, times=ny)
-                ey = self.plus(y0, f"j * {py}", 1)
-            c = f"({ex}, {ey})"
-            d = depth
-            if nx > 1:
-                w.emit(d, f"for i in range({nx}) {{")
-                d += 1
-            if ny > 1:
-                w.emit(d, f"for j in range({ny}) {{")
-                d += 1
-            self.hole_block(d, hn, sh, c, sizes)
-            for _ in range(d - depth):
-                d -= 1
-                w.emit(d, "}")
-            self.stats.patterns["grid" if nx > 1 and ny > 1 else "row"] += 1
+            self.grid(depth, sh, base, gr)
             return True
         ln = _line(cs)
         if ln is not None:
@@ -500,27 +546,94 @@ class _Part:
                     hn = self.name(base + "s")
                     pitch = self.p(hn + "_pitch", step, times=len(run))
                     first = run[0][1].center
+                    mid = (run[0][0] + run[-1][0]) / 2
                     c = [None, None]
-                    c[1 - axis] = self.plus(first[1 - axis], f"i * {pitch}", 1 - axis)
-                    c[axis] = self.center(first)[1:-1].split(", ")[axis]
-                    w.emit(depth, f"for i in range({len(run)}) {{")
+                    f0 = self.at(first[1 - axis], 1 - axis, ref=mid)
+                    c[1 - axis] = f"i * {pitch}" if f0 == "0" else f"{f0} + i * {pitch}"
+                    c[axis] = self.at(first[axis], axis)
+                    cnt = self.p(hn + "_n", len(run), unit="")
+                    w.emit(depth, f"for i in range({cnt}) {{")
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
                     w.emit(depth, "}")
                     self.stats.patterns["row"] += 1
                     for _, m in run:
                         rest.remove(m)
-        for s in rest:
+        if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
+            hn = self.name(base + "s")
+            pts = ", ".join(self.pos(m.center) for m in rest)
+            w.emit(depth, f"for c in [{pts}] {{")
+            self.hole_block(depth + 1, hn, sh, "c", sizes)
+            w.emit(depth, "}")
+            rest = rest[:0] + rest
+        for s in rest if len(rest) == 1 else []:
             self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
-                            s, self.center(s.center), sizes)
+                            s, self.pos(s.center), sizes)
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
+
+    def surrounds(self, c) -> str | None:
+        """The kind of the shared-centre feature at ``c`` (:meth:`share_centres`), or None."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return getattr(self, "shared_kind", {}).get(nm)
+        return None
+
+    def grid(self, depth: int, sh: Shape, base: str, gr: tuple) -> None:
+        """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:
+        centred on the feature it surrounds or on the body where it is (``(i - (n - 1) /
+        2) * pitch``), else from its first instance placed by the nearest edge or centre;
+        one pitch param when the steps are equal both ways."""
+        x0, y0, dx, dy, nx, ny = gr
+        mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
+        around = self.surrounds(mid)
+        hn = self.name({"Circle": "motor_holes"}.get(around, "screw_holes") if around
+                       and sh.kind == "Circle" else base + "s")
+        sizes = self.size_params(hn, sh, True)
+        both = nx > 1 and ny > 1
+        one = both and abs(dx - dy) <= EQUAL_TOL
+        ox, oy, centred = self.origin(mid)
+        body_c = self.anchor[0].center if self.anchor is not None else None
+        out = []
+        loops = []
+        for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
+            if n == 1:
+                out.append(self.at(v0, axis))
+                continue
+            if one:
+                pitch = self.p(hn + "_pitch", step, times=max(nx, ny)) if axis == 0 else \
+                    out_pitch
+                out_pitch = pitch
+            else:
+                pitch = self.p(hn + ("_pitch_x" if axis == 0 else "_pitch_y") if both
+                               else hn + "_pitch", step, times=n)
+            cnt = self.p(hn + (("_cols" if axis == 0 else "_rows") if both else "_n"), n,
+                         unit="")
+            loops.append(f"for {var} in range({cnt}) {{")
+            here = centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
+            if here:
+                o = (ox, oy)[axis]
+                term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
+                out.append(term if o == "0" else f"{o} + {term}")
+            else:
+                first = self.at(v0, axis, ref=mid[axis])
+                out.append(f"{var} * {pitch}" if first == "0" else f"{first} + {var} * {pitch}")
+        d = depth
+        for ln in loops:
+            self.w.emit(d, ln)
+            d += 1
+        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes)
+        for _ in loops:
+            d -= 1
+            self.w.emit(d, "}")
+        self.stats.patterns["grid" if both else "row"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list) -> None:
         base = _hole_name(sh)
         sizes: dict = {}
         if sh.kind == "Circle":
             on_axis = any(math.dist(sh.center, c) <= EQUAL_TOL for c in centres) or \
+                self.surrounds(sh.center) is not None or \
                 (body is not None and math.dist(sh.center, body[0].center) <= EQUAL_TOL)
             if on_axis:
                 base = "bore"
@@ -531,7 +644,7 @@ class _Part:
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
             return
-        self.hole_block(depth, hn, sh, self.center(sh.center), sizes)
+        self.hole_block(depth, hn, sh, self.pos(sh.center), sizes)
 
 
 # ------------------------------------------------------------------ drawings (engravings)
@@ -666,7 +779,19 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         hn = part.name("oval")
         w.emit(depth + 1, f"hole {hn} {{ e = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg) }}")
-    eng = Drawing(paths=list(d.paths), texts=list(d.texts), engrave=d.engrave)
+    # a cut role's open paths are through-cuts (as `aidl import` writes them); its loops
+    # that cross themselves stay engraved, counted
+    cut = [p for p in d.paths if p.crossing is None] if d.paths_cut else []
+    if cut:
+        w.emit(depth + 1, "cut cuts {")
+        w.cut_paths += len(cut)
+        w.cut_length += sum(_length(p.segments) for p in cut)
+        _paths(w, depth + 2, cut, name)
+        w.emit(depth + 1, "}")
+    drawn = [p for p in d.paths if not any(p is q for q in cut)]
+    if d.paths_cut:
+        w.crossed += len(drawn)
+    eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
     if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
         w.emit(depth + 1, "drawing engraving {")
         _engraving(w, depth + 2, eng, stats)
@@ -714,7 +839,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                 if abs(dx) > ROUND_TOL else None
             sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
                 if abs(dy) > ROUND_TOL else None
-            w.emit(depth, f"for k in range({n}) {{")
+            w.emit(depth, f"for k in range({params.add(pre + 'n', n, 'copies', unit='')}) {{")
             _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
             if multi:
                 w.emit(depth + 1, f"Fixed({name})")
@@ -730,6 +855,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(depth, f"Fixed({names[0]})")
     if multi:
         w.emit(0, "}")
+    _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
     head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
     text = "\n".join(head + params.lines + w.lines) + "\n"

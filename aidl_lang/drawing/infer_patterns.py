@@ -29,11 +29,15 @@ from .model import Drawing
 
 # ------------------------------------------------------------------ points
 def _steps(vals: list) -> float | None:
-    """The common step of sorted ``vals`` (None when the steps differ)."""
-    d = [b - a for a, b in zip(vals, vals[1:])]
-    if not d or any(abs(x - d[0]) > EQUAL_TOL for x in d):
+    """The common step of sorted ``vals``: ``(last - first) / (n - 1)`` when every value
+    lies within EQUAL_TOL of ``first + k * step`` (a pitch holds every instance, not only
+    each step: steps each 0.9e-7 mm longer than the first add up); else None."""
+    if len(vals) < 2:
         return None
-    return d[0]
+    step = (vals[-1] - vals[0]) / (len(vals) - 1)
+    if any(abs(v - (vals[0] + k * step)) > EQUAL_TOL for k, v in enumerate(vals)):
+        return None
+    return step
 
 
 def _distinct(vals: list) -> list:
@@ -200,7 +204,8 @@ def _runs(idx_pos: list, step: float) -> list[list]:
     ``(position, item)`` pairs."""
     runs: list[list] = []
     for pos, it in idx_pos:
-        if runs and abs(pos - runs[-1][-1][0] - step) <= EQUAL_TOL:
+        # against the run's first member: every member within EQUAL_TOL of start + k step
+        if runs and abs(pos - runs[-1][0][0] - len(runs[-1]) * step) <= EQUAL_TOL:
             runs[-1].append((pos, it))
         else:
             runs.append([(pos, it)])
@@ -383,7 +388,7 @@ def _same_sig(a, b) -> bool:
 # what a Drawing holds that the inferred writer writes (a field it does not know, added to
 # the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
 _KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
-          "engrave"}
+          "engrave", "paths_cut"}
 
 
 def _unknown(d: Drawing) -> bool:
