@@ -200,10 +200,11 @@ def test_a_sheet_of_copies_with_parts_is_one_loop_of_solids(tmp_path):
     doc.saveas(tmp_path / "sheet.dxf")
     text, notes = import_drawing((tmp_path / "sheet.dxf").read_bytes(), "sheet.dxf",
                                  parts=True, infer=True)
-    assert "for k in range(part_n) {" in text and text.count("solid ") == 1, text
-    assert "param part_n = 3  # copies" in text
-    assert "RoundedRectangle(center=(20 + k * part_pitch, 12.5)" in text
-    assert "param part_pitch = 50 mm" in text and "hole corner_holes" in text
+    # the parts named for what they are (`plate`, not `part`), their count a param
+    assert "for k in range(plate_n) {" in text and text.count("solid ") == 1, text
+    assert "param plate_n = 3  # copies" in text and "solid plate {" in text
+    assert "RoundedRectangle(center=(20 + k * plate_pitch, 12.5)" in text
+    assert "param plate_pitch = 50 mm" in text and "hole corner_holes" in text
     res = aidl_lang.compile(text, path=tmp_path / "sheet.aidl")
     assert res.ok, [str(d) for d in res.errors]
     (tmp_path / "back.dxf").write_text(res.to_dxf())

@@ -45,11 +45,11 @@ from ..geometry.curves import Arc, Line, Loop
 from .infer_attachments import _attachments, _circle_attachments
 from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
 from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_chain,
-                             _polar_polys, _runs, _tick_families, _unknown)
+                             _polar_polys, _runs, _stagger, _tick_families, _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
-                      _length, _num, _paths, _pt, _string)
+                      _length, _num, _pt, _string)
 from .model import Drawing, Note
 
 
@@ -467,6 +467,10 @@ class _Part:
         # a bolt circle: circles evenly round a centre, its count a param
         if sh.kind == "Circle":
             pol = _polar(cs)
+            sq = _grid(cs) if len(cs) == 4 else None
+            if pol is not None and sq is not None and sq[4] == sq[5] == 2 and \
+                    abs(sq[2] - sq[3]) <= EQUAL_TOL and len(_r(sq[2])) < len(_r(2 * pol[1])):
+                pol = None      # a square given by its side (31 mm), not its circle (43.84)
             if pol is not None:
                 C, R, a0, n = pol
                 around = self.surrounds(C)
@@ -512,6 +516,10 @@ class _Part:
         gr = _grid(cs)
         if gr is not None:
             self.grid(depth, sh, base, gr)
+            return True
+        st = _stagger(cs)
+        if st is not None:
+            self.stagger(depth, sh, base, st)
             return True
         ln = _line(cs)
         if ln is not None:
@@ -627,6 +635,48 @@ class _Part:
             d -= 1
             self.w.emit(d, "}")
         self.stats.patterns["grid" if both else "row"] += 1
+
+    def stagger(self, depth: int, sh: Shape, base: str, st: tuple) -> None:
+        """A staggered (hex) grid (``st`` from :func:`_stagger`) as one pattern: one pitch,
+        the rows' step ``pitch * sqrt(3) / 2`` when it is a hex grid (else its own param),
+        the counts params; each row centred on the body or the feature it surrounds where
+        the grid is, else from its first hole."""
+        xa, na, xb, nb, pitch, y0, dy, rows = st
+        mid = ((xa + xa + (na - 1) * pitch) / 2, y0 + dy * (rows - 1) / 2)
+        mid_b = (xb + xb + (nb - 1) * pitch) / 2
+        hn = self.name(base + "s")
+        sizes = self.size_params(hn, sh, True)
+        p = self.p(hn + "_pitch", pitch, times=max(na, rows))
+        if abs(dy - pitch * math.sqrt(3) / 2) <= ROUND_TOL / rows:
+            step = f"{p} * sqrt(3) / 2"
+        else:
+            step = self.p(hn + "_row_pitch", dy, times=rows)
+        cols = self.p(hn + "_cols", na, "in the first row, a row between one less or more" if
+                      na != nb else "", unit="")
+        nrows = self.p(hn + "_rows", rows, unit="")
+        n_j = cols if na == nb else f"{cols} - j % 2" if nb < na else f"{cols} + j % 2"
+        ox, oy, centred = self.origin(mid)
+        body_c = self.anchor[0].center if self.anchor is not None else None
+
+        def here(axis):
+            return centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
+        if here(0) and abs(mid_b - mid[0]) <= EQUAL_TOL:
+            term = f"(i - ({n_j} - 1) / 2) * {p}"
+            ex = term if ox == "0" else f"{ox} + {term}"
+        else:
+            sign = "+" if xb > xa else "-"
+            ex = f"{self.at(xa, 0, ref=mid[0])} {sign} j % 2 * {p} / 2 + i * {p}"
+        if here(1):
+            term = f"(j - ({nrows} - 1) / 2) * {step}"
+            ey = term if oy == "0" else f"{oy} + {term}"
+        else:
+            ey = f"{self.at(y0, 1, ref=mid[1])} + j * {step}"
+        self.w.emit(depth, f"for j in range({nrows}) {{")
+        self.w.emit(depth + 1, f"for i in range({n_j}) {{")
+        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
+        self.w.emit(depth + 1, "}")
+        self.w.emit(depth, "}")
+        self.stats.patterns["staggered grid"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list) -> None:
         base = _hole_name(sh)
@@ -786,7 +836,12 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth + 1, "cut cuts {")
         w.cut_paths += len(cut)
         w.cut_length += sum(_length(p.segments) for p in cut)
-        _paths(w, depth + 2, cut, name)
+        for i, p in enumerate(cut):
+            if w.chain(depth + 2, p.segments, False, f"p{i + 1}_"):
+                _emit_holds(w, depth + 2, _holds(p.segments, f"p{i + 1}_", False), "q")
+            else:
+                w.notes.append(Note("W0130", f"a cut path of `{name}` holds a piece no "
+                                             f"statement writes: left out"))
         w.emit(depth + 1, "}")
     drawn = [p for p in d.paths if not any(p is q for q in cut)]
     if d.paths_cut:
@@ -806,6 +861,51 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth, "}")
 
 
+def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
+    """``layers`` with each layer of loops alone (no paths, texts or engravings) whose every
+    loop lies inside an outer loop of one other layer's drawing (a ``HOLES`` layer beside
+    ``OUTLINE``, as PCB and panel programs export) moved into that layer: its loops become
+    that part's holes, not a solid of their own.  Returns the layers and a line for the
+    program's head per move (``holes: layer `HOLES` in `OUTLINE```)."""
+    import numpy as np
+    from .program import _probe
+
+    def loops(d):
+        return [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+    cand = [k for k, (ly, d) in enumerate(layers)
+            if not ly.upper().startswith("ENGRAVE") and (d.outlines or d.circles)]
+    if len(cand) < 2:
+        return layers, []
+    outer = {}
+    for k in cand:
+        ls = loops(layers[k][1])
+        outer[k] = [np.asarray(Loop(list(s)).points(), dtype=float)
+                    for s, c in zip(ls, _containers(ls)) if not c]
+    into: dict = {}
+    for k in cand:
+        d = layers[k][1]
+        if d.paths or d.texts or (d.engrave is not None and not d.engrave.empty):
+            continue
+        probes = [_probe(s) for s in loops(d)]
+        for j in cand:
+            if j == k or j in into:
+                continue
+            if all(any(len(P) >= 3 and _inside(q, P) for P in outer[j]) for q in probes):
+                into[k] = j
+                break
+    if not into:
+        return layers, []
+    from dataclasses import replace
+    out = {k: d for k, (_, d) in enumerate(layers)}
+    for k, j in into.items():
+        src, dst = out[k], out[j]
+        out[j] = replace(dst, outlines=dst.outlines + src.outlines,
+                         circles=dst.circles + src.circles, ellipses=dst.ellipses + src.ellipses,
+                         notes=dst.notes)
+    head = [f"holes: layer `{layers[k][0]}` in `{layers[j][0]}`" for k, j in into.items()]
+    return [(ly, out[k]) for k, (ly, _) in enumerate(layers) if k not in into], head
+
+
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
                         deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
@@ -817,8 +917,10 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     w = _Writer(deadline)
     params = _Params()
     stats = _Stats()
+    layers, moved = _hole_layers(layers)
     items = _layer_items(layers, parts, deadline, source, w.notes)
     items = _copies(items, deadline)
+    items = _named_parts(items)
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -857,9 +959,35 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
+    head += ["# " + ln for ln in _summary(stats) + moved] + ["units mm"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
+
+
+# layer names that say nothing of the part on them (CAD's layer 0, a laser's CUT layer)
+_GENERIC = {"l_0", "cut_", "cut", "part", "outline", "outlines", "contour", "profile",
+            "default", "layer1", "layer_1", "l_1"}
+
+
+def _named_parts(items: list) -> list:
+    """``items`` with a solid on a layer whose name says nothing (:data:`_GENERIC`) named
+    for what its body is: ``plate`` (a rectangle or polygon), ``disc`` (a circle), else
+    ``part``; each name once."""
+    used = {it[1] for it in items}
+    out = []
+    for it in items:
+        kind, name, d = it[:3]
+        if kind != "solid" or name.lower() not in _GENERIC:
+            out.append(it)
+            continue
+        loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+        big = max(loops, key=lambda s: abs(Loop(list(s)).area), default=None)
+        sh = recognise(big) if big is not None else None
+        word = "part" if sh is None else "disc" if sh.kind == "Circle" else "plate"
+        used.discard(name)
+        new = _ident(word, used)
+        out.append((kind, new, d) + tuple(it[3:]))
+    return out
 
 
 def _short_names(names: list) -> dict:

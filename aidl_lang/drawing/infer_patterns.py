@@ -99,6 +99,31 @@ def _grid(centers: list):
     return xs[0], ys[0], dx, dy, len(xs), len(ys)
 
 
+def _stagger(centers: list):
+    """``(x0 even, n even, x0 odd, n odd, pitch, y0, row step, rows)`` when ``centers`` are a
+    staggered (hex) grid: rows on equal steps in y, each row on one pitch, the even rows
+    alike and the odd rows alike shifted half a pitch (their counts equal or one apart);
+    every centre checked to EQUAL_TOL; else None."""
+    ys = _distinct([p[1] for p in centers])
+    if len(ys) < 3 or _steps(ys) is None:
+        return None
+    rows = [sorted(p[0] for p in centers if abs(p[1] - y) <= EQUAL_TOL) for y in ys]
+    if sum(len(r) for r in rows) != len(centers) or any(len(r) < 2 for r in rows):
+        return None
+    pitch = _steps(rows[0])
+    if pitch is None or pitch <= EQUAL_TOL:
+        return None
+    for k, r in enumerate(rows):
+        ref = rows[k % 2]
+        if len(r) != len(ref) or abs(r[0] - ref[0]) > EQUAL_TOL or \
+                any(abs(x - (r[0] + i * pitch)) > EQUAL_TOL for i, x in enumerate(r)):
+            return None
+    (a, b) = rows[0], rows[1]
+    if abs(abs(b[0] - a[0]) - pitch / 2) > EQUAL_TOL or abs(len(a) - len(b)) > 1:
+        return None
+    return a[0], len(a), b[0], len(b), pitch, ys[0], _steps(ys), len(ys)
+
+
 def _line(centers: list):
     """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
     n = len(centers)
