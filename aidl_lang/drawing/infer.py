@@ -843,6 +843,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
                 w.notes.append(Note("W0130", f"a cut path of `{name}` holds a piece no "
                                              f"statement writes: left out"))
         w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(cuts)")
     drawn = [p for p in d.paths if not any(p is q for q in cut)]
     if d.paths_cut:
         w.crossed += len(drawn)
