@@ -152,6 +152,31 @@ def comb(width=120.0, height=30.0, count=7, pitch=15.0, notch=6.0, hole=4.0) -> 
     return _bytes(doc)
 
 
+def arduino(width=100.0, height=70.0, hole=3.2) -> bytes:
+    """An Arduino Uno plate: the board's four holes where the board puts them (no pattern),
+    the board centred on the plate."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    ox, oy = width / 2 - 68.58 / 2, height / 2 - 53.34 / 2
+    for x, y in ((13.97, 2.54), (15.24, 50.8), (66.04, 7.62), (66.04, 35.56)):
+        m.add_circle((ox + x, oy + y), hole / 2)
+    return _bytes(doc)
+
+
+def brackets(leg=40.0, width=15.0, hole=4.0, gap=10.0) -> bytes:
+    """A mirrored pair of L-brackets (one drawn, the other its mirror image about x = 0),
+    a hole in each leg."""
+    doc, m = _doc()
+    for s in (1, -1):
+        x0 = s * gap / 2
+        pts = [(x0, 0), (x0 + s * leg, 0), (x0 + s * leg, width), (x0 + s * width, width),
+               (x0 + s * width, leg), (x0, leg)]
+        m.add_lwpolyline(pts if s > 0 else pts[::-1], close=True)
+        m.add_circle((x0 + s * (leg + width) / 2, width / 2), hole / 2)
+        m.add_circle((x0 + s * width / 2, (leg + width) / 2), hole / 2)
+    return _bytes(doc)
+
+
 # name: (function, [(label, param pattern, current value, new value, keyword)])
 DRAWINGS = {
     "nema17": (nema17, [
@@ -201,5 +226,14 @@ DRAWINGS = {
         ("notch pitch", r"notches_pitch", 15, 14, "pitch"),
         ("notch count", r"notches_n", 7, 6, "count"),
         ("mounting hole size", r"holes_d", 4, 5, "hole"),
+        ("comb width", r"width", 120, 140, "width"),
+    ]),
+    "arduino": (arduino, [
+        ("plate width", r"width", 100, 120, "width"),
+        ("hole size", r"holes?_d", 3.2, 3.4, "hole"),
+    ]),
+    "brackets": (brackets, [
+        ("hole size", r"holes?_d", 4, 5, "hole"),
+        ("leg length", r"\w*leg\w*", 40, 50, "leg"),
     ]),
 }

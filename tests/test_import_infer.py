@@ -249,14 +249,15 @@ solid p {
 
 def test_mirrored_pairs_are_one_loop_and_stay_symmetric(tmp_path):
     """Two slots mirrored about the body's axis and two holes through its centre: `for s in
-    [-1, 1]`, and a new spacing keeps them symmetric."""
+    [-1, 1]`, and a new inset (the slots sit by the side edges) keeps them symmetric."""
     text, first, again, second = _round_trip(tmp_path, PAIRS, "pairs")
-    assert "Slot(center=(10 + s * slots_spacing / 2, 5)" in text
-    assert "param slots_spacing = 50 mm" in text
+    # the slots sit nearer the side edges (15 mm) than the centre (25 mm): kept from them
+    assert "Slot(center=(10 + s * (width / 2 - slots_inset), 5)" in text
+    assert "param slots_inset = 15 mm" in text
     assert "Circle(center=(10 + s * holes_spacing / 2, 5 + s * holes_spacing_y / 2)" in text
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
-    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"slots_spacing": "60"})
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"slots_inset": "10"})
     assert res.ok
     (tmp_path / "e.dxf").write_text(res.to_dxf())
     arcs = [k for k in dxf_compare.curves(tmp_path / "e.dxf") if k[0] == "A"]

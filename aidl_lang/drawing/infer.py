@@ -42,10 +42,11 @@ import math
 from collections import Counter
 
 from ..geometry.curves import Arc, Line, Loop
-from .infer_attachments import _attachments, _circle_attachments
+from .infer_attachments import _attachments, _circle_attachments, _notches
 from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
 from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_chain,
-                             _polar_polys, _runs, _stagger, _tick_families, _unknown)
+                             _polar_polys, _runs, _stagger, _steps, _tick_families,
+                             _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
@@ -204,6 +205,10 @@ class _Part:
             if got is not None:
                 sh, teeth = got
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
+            got = _notches(segs)
+            if got is not None:
+                return self.notched(depth, segs, first, got)
+        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
                 sh, tabs = got
@@ -264,6 +269,55 @@ class _Part:
                 abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             return sh, sizes, nm
         return None
+
+    def notched(self, depth: int, segs: list, first: bool, got: tuple) -> tuple:
+        """A rectangle with equal notches cut into one side (:func:`_notches`): the
+        rectangle, and the notches as one row of ``hole``s flush with that side (their
+        count, pitch, width and depth params; centred on the body where they are)."""
+        rect, side, centres, w, dep = got
+        self.stats.kinds["Rectangle"] += 1
+        self.stats.in_shapes += len(segs)
+        nm = self.name("body" if first else "outline")
+        sizes = {"width": self.p("width", rect.args["width"]),
+                 "height": self.p("height", rect.args["height"])} if first else {}
+        self.shape_line(depth, nm, rect, self.center(rect.center), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
+        if sizes:
+            self.anchor = (rect, sizes)
+        n = len(centres)
+        along = 0 if side in ("top", "bottom") else 1
+        across = 1 - along
+        hn = self.name("notches")
+        pitch = _steps(centres)
+        cnt = self.p(hn + "_n", n, unit="")
+        nw = self.p(hn + "_width", w)
+        nd = self.p(hn + "_depth", dep)
+        c = rect.center
+        mid = (centres[0] + centres[-1]) / 2
+        if pitch is not None:
+            pp = self.p(hn + "_pitch", pitch, times=n)
+            if abs(mid - c[along]) <= EQUAL_TOL:
+                pos = self.plus(c[along], f"(i - ({cnt} - 1) / 2) * {pp}", along)
+            else:
+                f0 = self.at(centres[0], along, ref=mid)
+                pos = f"i * {pp}" if f0 == "0" else f"{f0} + i * {pp}"
+            head = f"for i in range({cnt}) {{"
+        else:
+            pos = "x"
+            head = f"for x in [{', '.join(self.at(v, along) for v in centres)}] {{"
+        size = sizes.get("height" if across else "width") or \
+            _r(rect.args["height" if across else "width"])
+        sign = "" if side in ("top", "right") else "-"
+        dpos = self.plus(c[across], f"{sign}({size} / 2 - {nd} / 2)", across)
+        xy = (pos, dpos) if along == 0 else (dpos, pos)
+        wh = (nw, nd) if along == 0 else (nd, nw)
+        self.w.emit(depth, head)
+        self.w.emit(depth + 1, f"hole {hn} {{ h = Rectangle(center=({xy[0]}, {xy[1]}), "
+                               f"width={wh[0]}, height={wh[1]}) }}")
+        self.w.emit(depth + 1, f"Fixed({hn}.h)")
+        self.w.emit(depth, "}")
+        self.stats.patterns["notches in a side"] += 1
+        return rect, sizes, nm
 
     def teeth(self, depth: int, base: Shape, teeth: list, word: str) -> None:
         """The polygons standing out of a circle: one loop when they are one polygon turned
@@ -497,8 +551,15 @@ class _Part:
             if (sym_x and (same_y or sym_y)) or (sym_y and same_x):
                 hn = self.name(base + "s")
                 sizes = self.size_params(hn, sh, True)
-                ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2") if sym_x \
-                    else self.at(x1, 0)
+                half = self.anchor[0].args["width"] / 2 if self.anchor is not None else None
+                if sym_x and half is not None and half - x2 + B[0] < x2 - B[0]:
+                    # nearer the side edges than the centre: each kept from its edge
+                    ex = self.plus(B[0], f"s * ({self.anchor[1]['width']} / 2 - "
+                                         f"{self.p(hn + '_inset', half - x2 + B[0], 'from the edges')})")
+                elif sym_x:
+                    ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2")
+                else:
+                    ex = self.at(x1, 0)
                 # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
                 if sym_y:
                     dy = y2 - y1 if sym_x else abs(y2 - y1)
@@ -568,7 +629,11 @@ class _Part:
                         rest.remove(m)
         if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
             hn = self.name(base + "s")
-            pts = ", ".join(self.pos(m.center) for m in rest)
+            # placed together, by the reference nearest their middle (a board's holes move
+            # as one when the plate grows)
+            mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0])}, "
+                            f"{self.at(m.center[1], 1, mid[1])})" for m in rest)
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
