@@ -612,10 +612,11 @@ class _Part:
                 for run in _runs(pos, step):
                     if len(run) < 3:
                         continue
-                    hn = self.name(base + "s")
-                    pitch = self.p(hn + "_pitch", step, times=len(run))
                     first = run[0][1].center
                     mid = (run[0][0] + run[-1][0]) / 2
+                    hn = self.name_near(base + "s", (mid, first[axis]) if axis else
+                                        (first[axis], mid))
+                    pitch = self.p(hn + "_pitch", step, times=len(run))
                     c = [None, None]
                     f0 = self.at(first[1 - axis], 1 - axis, ref=mid)
                     c[1 - axis] = f"i * {pitch}" if f0 == "0" else f"{f0} + i * {pitch}"
@@ -628,10 +629,10 @@ class _Part:
                     for _, m in run:
                         rest.remove(m)
         if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
-            hn = self.name(base + "s")
             # placed together, by the reference nearest their middle (a board's holes move
             # as one when the plate grows)
             mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+            hn = self.name_near(base + "s", mid)
             pts = ", ".join(f"({self.at(m.center[0], 0, mid[0])}, "
                             f"{self.at(m.center[1], 1, mid[1])})" for m in rest)
             w.emit(depth, f"for c in [{pts}] {{")
@@ -644,6 +645,22 @@ class _Part:
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
+
+    def name_near(self, base: str, c) -> str:
+        """``base`` when it is free, else named for where ``c`` sits on the body
+        (``top_holes``, ``left_holes``, ``centre_holes``), else numbered."""
+        if base not in self.used or self.anchor is None:
+            return self.name(base)
+        return self._near(base, c)
+
+    def _near(self, base: str, c) -> str:
+        sh = self.anchor[0]
+        words = []
+        for axis, key, lo, hi in ((1, "height", "bottom", "top"), (0, "width", "left", "right")):
+            d = c[axis] - sh.center[axis]
+            if abs(d) > sh.args[key] / 4:
+                words.append(hi if d > 0 else lo)
+        return self.name("_".join(words or ["centre"]) + "_" + base)
 
     def surrounds(self, c) -> str | None:
         """The kind of the shared-centre feature at ``c`` (:meth:`share_centres`), or None."""
