@@ -84,7 +84,8 @@ def test_a_pitch_holds_every_instance_to_1e_7(tmp_path):
 def test_holes_on_their_own_layer_are_the_parts_holes(tmp_path):
     """A front panel as panel programs export it (OUTLINE and HOLES layers): once a solid of
     discs beside the plate (W0504); now one `plate` with a row of pot holes centred on it
-    and corner holes, said in the head, no warning, exact."""
+    and corner holes, said in the head, no warning, exact.  A layer named otherwise (POCKET)
+    stays a part of its own."""
     (tmp_path / "fp.dxf").write_bytes(front_panel())
     text, _ = import_drawing((tmp_path / "fp.dxf").read_bytes(), "fp.dxf", infer=True)
     assert "# holes: layer `HOLES` in `OUTLINE`" in text
@@ -94,6 +95,10 @@ def test_holes_on_their_own_layer_are_the_parts_holes(tmp_path):
     assert res.ok and not [d for d in res.diagnostics if d.severity == "warning"]
     (tmp_path / "back.dxf").write_text(res.to_dxf())
     assert same(tmp_path / "fp.dxf", tmp_path / "back.dxf", 1e-7)
+    # a layer not named for holes (a pocket, a score line) is not made a through-hole
+    pocket = front_panel().replace(b"\nHOLES\n", b"\nPOCKET\n")
+    text, _ = import_drawing(pocket, "fp.dxf", infer=True)
+    assert "# holes:" not in text and text.count("solid ") == 2
 
 
 @pytest.mark.parametrize("name", ["nema17", "flange", "grille", "lcd_panel"])

@@ -39,6 +39,7 @@ ticks, copies of a part) and :mod:`.infer_params` (numbers, params and construct
 from __future__ import annotations
 
 import math
+import re
 from collections import Counter
 
 from ..geometry.curves import Arc, Line, Loop
@@ -944,10 +945,15 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth, "}")
 
 
+# a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)
+_HOLE_LAYER = re.compile(r"hole|drill|npth|pth|cut_?outs?|inner|interior|mount", re.I)
+
+
 def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
-    """``layers`` with each layer of loops alone (no paths, texts or engravings) whose every
-    loop lies inside an outer loop of one other layer's drawing (a ``HOLES`` layer beside
-    ``OUTLINE``, as PCB and panel programs export) moved into that layer: its loops become
+    """``layers`` with each layer named for holes (:data:`_HOLE_LAYER`) of loops alone (no
+    paths, texts or engravings) whose every loop lies inside an outer loop of one other
+    layer's drawing (a ``HOLES`` layer beside ``OUTLINE``, as PCB and panel programs
+    export) moved into that layer: its loops become
     that part's holes, not a solid of their own.  Returns the layers and a line for the
     program's head per move (``holes: layer `HOLES` in `OUTLINE```)."""
     import numpy as np
@@ -959,19 +965,22 @@ def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
             if not ly.upper().startswith("ENGRAVE") and (d.outlines or d.circles)]
     if len(cand) < 2:
         return layers, []
+    # only a layer named for holes moves (a POCKET or SCORE layer inside the outline is not
+    # a through-hole: it stays a part of its own, as `aidl import` writes it)
+    holey = {k for k in cand if _HOLE_LAYER.search(layers[k][0])}
     outer = {}
     for k in cand:
         ls = loops(layers[k][1])
         outer[k] = [np.asarray(Loop(list(s)).points(), dtype=float)
                     for s, c in zip(ls, _containers(ls)) if not c]
     into: dict = {}
-    for k in cand:
+    for k in sorted(holey):
         d = layers[k][1]
         if d.paths or d.texts or (d.engrave is not None and not d.engrave.empty):
             continue
         probes = [_probe(s) for s in loops(d)]
         for j in cand:
-            if j == k or j in into:
+            if j == k or j in into or j in holey:
                 continue
             if all(any(len(P) >= 3 and _inside(q, P) for P in outer[j]) for q in probes):
                 into[k] = j
