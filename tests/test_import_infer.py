@@ -340,6 +340,9 @@ def test_mounting_plate_comes_back_as_its_design(mounting):
     assert "diameter=plate_corner_hole_d)" in text and "param plate_corner_hole_d = 5 mm" in text
     assert "param plate_motor_holes_pcd = 40 mm" in text and "for k in range(w_n) {" in text
     assert "hole bore { h = Circle(center=bore_c, diameter=plate_bore_d) }" in text
+    # the label's 13 stroke polygons are the text they draw (was: 13 Polygon/Polyline)
+    assert 'Text("MOTOR MOUNT", position=(7, -34), size=3.5' in text
+    assert "Polygon(" not in text and "Polyline(" not in text
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
     assert again.freedom()["dof"] == 0

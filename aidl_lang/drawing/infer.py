@@ -50,6 +50,7 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
                              _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
+from .infer_text import stroke_text
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
 from .model import Drawing, Note
@@ -823,12 +824,27 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
 
 def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
-    recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
+    a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
+    it is (:func:`~.infer_text.stroke_text`), recognised shapes, ``Polygon``/``Polyline``
+    for runs of lines, else exact chains."""
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
     for dd in parts:
-        for segs in [circular(o.segments) for o in dd.outlines] + [[c] for c in dd.circles]:
+        skip: set = set()
+        lined = [o for o in list(dd.outlines) + list(dd.paths)
+                 if all(isinstance(g, Line) for g in o.segments)]
+        if len(lined) >= 2 and not dd.circles and len(lined) == len(dd.outlines) + len(dd.paths):
+            found = stroke_text([(g.start, g.end) for o in lined for g in o.segments])
+            if found is not None:
+                text, pos, size = found
+                k += 1
+                w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
+                              f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
+                stats.patterns["stroke text"] += 1
+                skip = {id(o) for o in lined}
+        for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
+                [[c] for c in dd.circles]:
             k += 1
             sh = recognise(segs)
             if sh is not None:
@@ -842,7 +858,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
             held.append(f"g{k}")
-        strokes = [p for p in dd.paths if len(p.segments) == 1 and
+        strokes = [p for p in dd.paths if len(p.segments) == 1 and id(p) not in skip and
                    isinstance(p.segments[0], Line)]
         fams, used = _tick_families([(p.segments[0].start, p.segments[0].end)
                                      for p in strokes])
@@ -852,7 +868,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             _write_family(w, depth, f, k)
             stats.patterns["ticks in a row" if f[0] == "row" else "ticks round a centre"] += 1
         for p in dd.paths:
-            if id(p) in done:
+            if id(p) in done or id(p) in skip:
                 continue
             k += 1
             closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None

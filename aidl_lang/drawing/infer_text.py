@@ -1,0 +1,152 @@
+"""``aidl import --infer``: engraved strokes that are a line of text in the built-in stroke
+font (issue 71; docs/import.md, "Inferring the design"; used by :func:`~.infer._engraving`).
+
+In: line segments ``((x0, y0), (x1, y1))`` in mm (the engraving's polylines and polygons of
+lines, as AIDL writes a ``Text``).  Out: ``(text, position, size)`` for ``Text(text,
+position=, size=, anchor="start", valign="baseline")`` when the segments are exactly that
+text's strokes (:func:`~aidl_lang.geometry.text.text_strokes`, unturned), each within
+:data:`TOL`; else None.  Decoded glyph by glyph from the leftmost stroke: the first glyph
+fixes the scale and the pen's origin, each next one is the glyph whose strokes all lie at
+the pen (a space where none does), until every segment is used; the text found is then drawn
+again by :func:`~aidl_lang.geometry.text.text_strokes` and must give every segment back.
+"""
+from __future__ import annotations
+
+import math
+
+from ..geometry.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
+
+TOL = 1e-7          # mm: each stroke end of the text found against the drawing's
+MAX_SEGMENTS = 4000
+MAX_SPACES = 3      # spaces in a row between two glyphs
+
+
+class _Index:
+    """The segments by the cells of their ends, each found once."""
+
+    def __init__(self, segs: list, cell: float) -> None:
+        self.segs, self.cell = segs, cell
+        self.used = [False] * len(segs)
+        self.cells: dict = {}
+        for i, (a, b) in enumerate(segs):
+            for p in (a, b):
+                self.cells.setdefault(self._c(p), set()).add(i)
+
+    def _c(self, p) -> tuple:
+        return (math.floor(p[0] / self.cell), math.floor(p[1] / self.cell))
+
+    def find(self, a, b, taken: set) -> int | None:
+        cx, cy = self._c(a)
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for i in self.cells.get((cx + dx, cy + dy), ()):
+                    if self.used[i] or i in taken:
+                        continue
+                    s, e = self.segs[i]
+                    if (math.dist(s, a) <= TOL and math.dist(e, b) <= TOL) or \
+                            (math.dist(e, a) <= TOL and math.dist(s, b) <= TOL):
+                        return i
+        return None
+
+
+def _glyph_segments() -> list:
+    """``[(char, [segments in font units at pen 0], advance)]``: letters and digits first,
+    then the rest, the glyphs of more segments first (a glyph whose strokes are a part of
+    another's is tried after it)."""
+    out = []
+    for c, (strokes, adv) in _glyphs().items():
+        segs = [s for st in strokes for s in zip(st, st[1:])]
+        if segs and c.isprintable() and not c.isspace():
+            out.append((c, segs, adv))
+    out.sort(key=lambda t: (not t[0].isalnum(), -len(t[1]), t[0]))
+    return out
+
+
+def _place(segs, k: float, ox: float, oy: float) -> list:
+    return [((ox + k * a[0], oy + k * a[1]), (ox + k * b[0], oy + k * b[1])) for a, b in segs]
+
+
+def _match(ix: _Index, segs, k, ox, oy) -> list | None:
+    taken: set = set()
+    for a, b in _place(segs, k, ox, oy):
+        i = ix.find(a, b, taken)
+        if i is None:
+            return None
+        taken.add(i)
+    return list(taken)
+
+
+def _starts(segs: list, glyphs: list):
+    """Every ``(scale, origin x, origin y)`` by which a glyph's segment is the leftmost
+    segment of the drawing (unturned: parallel, the same way or reversed)."""
+    s0 = min(segs, key=lambda s: min(s[0][0], s[1][0]))
+    v = (s0[1][0] - s0[0][0], s0[1][1] - s0[0][1])
+    L = math.hypot(*v)
+    for c, gs, adv in glyphs:
+        for a, b in gs:
+            for p, q in ((a, b), (b, a)):
+                g = (q[0] - p[0], q[1] - p[1])
+                lg = math.hypot(*g)
+                if lg <= 1e-12:
+                    continue
+                k = L / lg
+                if abs(v[0] - k * g[0]) <= TOL and abs(v[1] - k * g[1]) <= TOL:
+                    yield k, s0[0][0] - k * p[0], s0[0][1] - k * p[1]
+
+
+def stroke_text(segs: list):
+    """``(text, (x, y), size)`` of the one unturned line of built-in-font text whose strokes
+    ``segs`` are (every segment used, each end within :data:`TOL`), or None."""
+    if not 2 <= len(segs) <= MAX_SEGMENTS:
+        return None
+    glyphs = _glyph_segments()
+    space = _glyphs().get(" ", ((), 0.0))[1]
+    tried = 0
+    for k, ox, oy in _starts(segs, glyphs):
+        tried += 1
+        if tried > 64 or k <= 1e-9:
+            return None
+        ix = _Index(segs, max(1e-3, 64 * TOL))
+        text, pen, left, spaces = "", 0.0, len(segs), 0
+        while left:
+            for c, gs, adv in glyphs:
+                got = _match(ix, gs, k, ox + k * pen, oy)
+                if got is not None:
+                    for i in got:
+                        ix.used[i] = True
+                    left -= len(got)
+                    text += " " * spaces + c
+                    pen += adv
+                    spaces = 0
+                    break
+            else:
+                spaces += 1
+                pen += space
+                if spaces > MAX_SPACES or space <= 0:
+                    break
+        if left or len(text) < 2:
+            continue
+        found = _check(text, k, ox, oy, segs)
+        if found is not None:
+            return found
+    return None
+
+
+def _check(text: str, k: float, ox: float, oy: float, segs: list):
+    """The text drawn again as ``Text`` draws it: ``(text, position, size)`` when it gives
+    every segment back, else None."""
+    raw = _raw(text)
+    lo = min(p[0] for s in raw for p in s)
+    size = k * _cap_height()
+    pos = (ox + k * lo, oy + k * _baseline())
+    again = [((pos[0] + a[0], pos[1] + a[1]), (pos[0] + b[0], pos[1] + b[1]))
+             for a, b in text_strokes(text, size, "start", "baseline")]
+    if len(again) != len(segs):
+        return None
+    ix = _Index(segs, max(1e-3, 64 * TOL))
+    for a, b in again:
+        i = ix.find(a, b, set())
+        if i is None:
+            return None
+        ix.used[i] = True
+    return text, pos, size
