@@ -109,3 +109,20 @@ def test_maker_edits_do_what_was_meant(tmp_path, name):
     screw spacing round its window; before: 4 of these 17 did what was meant."""
     exact, ok, n, failed = run_one(name, tmp_path)
     assert exact and ok == n, failed
+
+
+def test_stroke_text_comes_back_as_text(tmp_path):
+    """The name tag's engraved strokes (three texts, `l` and `I` one glyph in the font): three
+    `Text(...)` with the words the example wrote, the rest of the drawing exact."""
+    from pathlib import Path
+    src = Path(__file__).resolve().parent.parent / "examples/name_tag.aidl"
+    res = aidl_lang.compile(src.read_text(), path=src)
+    (tmp_path / "nt.dxf").write_text(res.to_dxf())
+    text, _ = import_drawing((tmp_path / "nt.dxf").read_bytes(), "nt.dxf", infer=True)
+    for want in ("HELLO my name is", "ADA LOVELACE", "Analytical Engine Programmer"):
+        assert f'Text("{want}", position=' in text, text
+    assert "Polyline(" not in text and "Polygon(" not in text
+    again = aidl_lang.compile(text, path=tmp_path / "nt.aidl")
+    assert again.ok, [str(d) for d in again.errors]
+    (tmp_path / "back.dxf").write_text(again.to_dxf())
+    assert same(tmp_path / "nt.dxf", tmp_path / "back.dxf", 1e-7)

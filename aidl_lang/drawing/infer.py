@@ -50,7 +50,7 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
                              _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .infer_text import stroke_text
+from .infer_text import stroke_texts
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
 from .model import Drawing, Note
@@ -834,15 +834,15 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
         skip: set = set()
         lined = [o for o in list(dd.outlines) + list(dd.paths)
                  if all(isinstance(g, Line) for g in o.segments)]
-        if len(lined) >= 2 and not dd.circles and len(lined) == len(dd.outlines) + len(dd.paths):
-            found = stroke_text([(g.start, g.end) for o in lined for g in o.segments])
-            if found is not None:
-                text, pos, size = found
-                k += 1
-                w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
-                              f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
-                stats.patterns["stroke text"] += 1
-                skip = {id(o) for o in lined}
+        found = stroke_texts([[(g.start, g.end) for g in o.segments] for o in lined]) \
+            if len(lined) <= 2000 else []
+        for text, pos, size, whole in found:
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
+                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
+            stats.patterns["stroke text"] += 1
+            held.append(f"t{k}")
+            skip |= {id(lined[i]) for i in whole}
         for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
                 [[c] for c in dd.circles]:
             k += 1

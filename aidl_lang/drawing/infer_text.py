@@ -18,7 +18,7 @@ from ..geometry.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
 
 TOL = 1e-7          # mm: each stroke end of the text found against the drawing's
 MAX_SEGMENTS = 4000
-MAX_SPACES = 3      # spaces in a row between two glyphs
+MAX_SPACES = 1      # spaces in a row between two glyphs (two words)
 
 
 class _Index:
@@ -76,10 +76,9 @@ def _match(ix: _Index, segs, k, ox, oy) -> list | None:
     return list(taken)
 
 
-def _starts(segs: list, glyphs: list):
-    """Every ``(scale, origin x, origin y)`` by which a glyph's segment is the leftmost
-    segment of the drawing (unturned: parallel, the same way or reversed)."""
-    s0 = min(segs, key=lambda s: min(s[0][0], s[1][0]))
+def _starts(s0, glyphs: list):
+    """Every ``(scale, origin x, origin y)`` by which a glyph's segment is the segment
+    ``s0`` (unturned: parallel, the same way or reversed)."""
     v = (s0[1][0] - s0[0][0], s0[1][1] - s0[0][1])
     L = math.hypot(*v)
     for c, gs, adv in glyphs:
@@ -90,45 +89,137 @@ def _starts(segs: list, glyphs: list):
                 if lg <= 1e-12:
                     continue
                 k = L / lg
-                if abs(v[0] - k * g[0]) <= TOL and abs(v[1] - k * g[1]) <= TOL:
-                    yield k, s0[0][0] - k * p[0], s0[0][1] - k * p[1]
+                if k > 1e-9 and abs(v[0] - k * g[0]) <= TOL and abs(v[1] - k * g[1]) <= TOL:
+                    yield c, gs, k, s0[0][0] - k * p[0], s0[0][1] - k * p[1]
+
+
+def _decode(ix: _Index, glyphs: list, space: float, k: float, ox: float, oy: float):
+    """The text read from the pen at ``(ox, oy)`` on scale ``k``: glyph after glyph (a
+    space where none lies at the pen), and the segments it used."""
+    text, pen, spaces, used = "", 0.0, 0, []
+    while True:
+        for c, gs, adv in glyphs:
+            got = _match(ix, gs, k, ox + k * pen, oy)
+            if got is not None:
+                for i in got:
+                    ix.used[i] = True
+                used += got
+                text += " " * spaces + c
+                pen += adv
+                spaces = 0
+                break
+        else:
+            spaces += 1
+            pen += space
+            if spaces > MAX_SPACES or space <= 0:
+                return text, used
+
+
+MAX_TRIES = 100     # texts read in all (a start whose glyph lies whole at it)
+MAX_LOOKS = 5000    # (start segment, glyph, scale) hypotheses looked at in all
+
+
+def _left(ix: _Index, glyphs: list, space: float, k: float, ox: float, oy: float):
+    """The glyphs before the pen at ``ox`` (a text's start found inside it): ``(the new
+    origin x, their text, the segments they used)``."""
+    text, used = "", []
+    while True:
+        for n in range(MAX_SPACES + 1):
+            hit = None
+            for c, gs, adv in glyphs:
+                x = ox - k * (adv + n * space)
+                got = _match(ix, gs, k, x, oy)
+                if got is not None:
+                    hit = (c, x, got)
+                    break
+            if hit is not None:
+                break
+        if hit is None:
+            return ox, text, used
+        c, ox, got = hit
+        for i in got:
+            ix.used[i] = True
+        used += got
+        text = c + " " * n + text
+
+
+def stroke_texts(polys: list) -> list:
+    """The lines of unturned built-in-font text among ``polys`` (each a list of segments
+    ``((x0, y0), (x1, y1))`` in mm: a polyline or polygon of the engraving): ``[(text,
+    (x, y), size, {indices of the polys it is})]``, each text two or more glyphs made of
+    whole polys and drawn again by ``Text`` to :data:`TOL`.  What is no text (a tick, a
+    shape) is left.  At most :data:`MAX_TRIES` hypotheses in all, the strokes of several
+    segments (a glyph's) tried before single lines (a tick's)."""
+    segs = [s for p in polys for s in p]
+    if not 2 <= len(segs) <= MAX_SEGMENTS:
+        return []
+    owner = [i for i, p in enumerate(polys) for _ in p]
+    members: dict = {}
+    for j, i in enumerate(owner):
+        members.setdefault(i, []).append(j)
+    glyphs = _glyph_segments()
+    space = _glyphs().get(" ", ((), 0.0))[1]
+    ix = _Index(segs, max(1e-3, 64 * TOL))
+    out: list = []
+    tries = looks = 0
+    while ix.used.count(False) >= 2 and tries < MAX_TRIES:
+        order = sorted((j for j in range(len(segs)) if not ix.used[j]),
+                       key=lambda j: (len(members[owner[j]]) == 1,
+                                      min(segs[j][0][0], segs[j][1][0]), j))
+        found = None
+        for j0 in order:
+            seen: set = set()
+            for c, gs, k, ox, oy in _starts(segs[j0], glyphs):
+                key = (round(k, 9), round(ox, 6), round(oy, 6))
+                if key in seen:
+                    continue
+                seen.add(key)
+                looks += 1
+                if looks > MAX_LOOKS:
+                    tries = MAX_TRIES + 1
+                    break
+                if _match(ix, gs, k, ox, oy) is None:
+                    continue            # the glyph the start is of is not whole here
+                tries += 1
+                if tries > MAX_TRIES:
+                    break
+                x0, pre, before = _left(ix, glyphs, space, k, ox, oy)
+                text, used = _decode(ix, glyphs, space, k, ox, oy)
+                text, used, ox = pre + text, before + used, x0
+                whole = {owner[j] for j in used}
+                good = sum(ch.isalnum() for ch in text) >= 2 and not text.startswith(" ") \
+                    and j0 in used and sum(len(members[i]) for i in whole) == len(used) \
+                    and any(len(gs) >= 3 for ch, gs, _ in glyphs if ch in text)
+                got = _check(text, k, ox, oy, [segs[j] for j in used]) if good else None
+                if got is None:
+                    for j in used:
+                        ix.used[j] = False
+                    continue
+                found = (_words(got[0]),) + got[1:] + (whole,)
+                break
+            if found is not None or tries > MAX_TRIES:
+                break
+        if found is None:
+            break
+        out.append(found)
+    return out
+
+
+def _words(text: str) -> str:
+    """``I`` and ``l`` are one glyph in the font: ``l`` beside a lower-case letter."""
+    out = list(text)
+    for i, c in enumerate(out):
+        if c == "I" and any(0 <= j < len(out) and out[j].islower() for j in (i - 1, i + 1)):
+            out[i] = "l"
+    return "".join(out)
 
 
 def stroke_text(segs: list):
     """``(text, (x, y), size)`` of the one unturned line of built-in-font text whose strokes
     ``segs`` are (every segment used, each end within :data:`TOL`), or None."""
-    if not 2 <= len(segs) <= MAX_SEGMENTS:
-        return None
-    glyphs = _glyph_segments()
-    space = _glyphs().get(" ", ((), 0.0))[1]
-    tried = 0
-    for k, ox, oy in _starts(segs, glyphs):
-        tried += 1
-        if tried > 64 or k <= 1e-9:
-            return None
-        ix = _Index(segs, max(1e-3, 64 * TOL))
-        text, pen, left, spaces = "", 0.0, len(segs), 0
-        while left:
-            for c, gs, adv in glyphs:
-                got = _match(ix, gs, k, ox + k * pen, oy)
-                if got is not None:
-                    for i in got:
-                        ix.used[i] = True
-                    left -= len(got)
-                    text += " " * spaces + c
-                    pen += adv
-                    spaces = 0
-                    break
-            else:
-                spaces += 1
-                pen += space
-                if spaces > MAX_SPACES or space <= 0:
-                    break
-        if left or len(text) < 2:
-            continue
-        found = _check(text, k, ox, oy, segs)
-        if found is not None:
-            return found
+    got = stroke_texts([[s] for s in segs])
+    if len(got) == 1 and len(got[0][3]) == len(segs):
+        return got[0][:3]
     return None
 
 
