@@ -640,8 +640,8 @@ class _Part:
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
-            rest = rest[:0] + rest
-        for s in rest if len(rest) == 1 else []:
+        elif rest:
+            s = rest[0]
             self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
                             s, self.pos(s.center), sizes)
         if rest:

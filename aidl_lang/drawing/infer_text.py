@@ -214,15 +214,6 @@ def _words(text: str) -> str:
     return "".join(out)
 
 
-def stroke_text(segs: list):
-    """``(text, (x, y), size)`` of the one unturned line of built-in-font text whose strokes
-    ``segs`` are (every segment used, each end within :data:`TOL`), or None."""
-    got = stroke_texts([[s] for s in segs])
-    if len(got) == 1 and len(got[0][3]) == len(segs):
-        return got[0][:3]
-    return None
-
-
 def _check(text: str, k: float, ox: float, oy: float, segs: list):
     """The text drawn again as ``Text`` draws it: ``(text, position, size)`` when it gives
     every segment back, else None."""
