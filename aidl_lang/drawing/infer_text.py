@@ -13,6 +13,7 @@ again by :func:`~aidl_lang.geometry.text.text_strokes` and must give every segme
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 from ..geometry.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
 
@@ -76,19 +77,37 @@ def _match(ix: _Index, segs, k, ox, oy) -> list | None:
     return list(taken)
 
 
+@lru_cache(maxsize=1)
+def _by_direction() -> dict:
+    """The glyphs' segments by their direction (radians mod pi, to 1e-3): ``{bucket: [(char,
+    its segments, the segment's ends p, q in the direction's sense)]}``."""
+    out: dict = {}
+    for c, gs, adv in _glyph_segments():
+        for a, b in gs:
+            g = (b[0] - a[0], b[1] - a[1])
+            if math.hypot(*g) <= 1e-12:
+                continue
+            t = math.atan2(g[1], g[0])
+            p, q = (a, b) if 0 <= t < math.pi else (b, a)
+            out.setdefault(round(math.atan2(q[1] - p[1], q[0] - p[0]) % math.pi, 3),
+                           []).append((c, gs, p, q))
+    return out
+
+
 def _starts(s0, glyphs: list):
-    """Every ``(scale, origin x, origin y)`` by which a glyph's segment is the segment
-    ``s0`` (unturned: parallel, the same way or reversed)."""
+    """Every ``(char, its segments, scale, origin x, origin y)`` by which a glyph's segment is
+    the segment ``s0`` (unturned: parallel, the same way or reversed)."""
     v = (s0[1][0] - s0[0][0], s0[1][1] - s0[0][1])
     L = math.hypot(*v)
-    for c, gs, adv in glyphs:
-        for a, b in gs:
-            for p, q in ((a, b), (b, a)):
+    if L <= 1e-12:
+        return
+    key = round(math.atan2(v[1], v[0]) % math.pi, 3)
+    table = _by_direction()
+    for b in {key, round(key - 1e-3, 3), round(key + 1e-3, 3), 0.0, round(math.pi, 3)}:
+        for c, gs, a, bq in table.get(b, ()):
+            for p, q in ((a, bq), (bq, a)):
                 g = (q[0] - p[0], q[1] - p[1])
-                lg = math.hypot(*g)
-                if lg <= 1e-12:
-                    continue
-                k = L / lg
+                k = L / math.hypot(*g)
                 if k > 1e-9 and abs(v[0] - k * g[0]) <= TOL and abs(v[1] - k * g[1]) <= TOL:
                     yield c, gs, k, s0[0][0] - k * p[0], s0[0][1] - k * p[1]
 
@@ -148,8 +167,9 @@ def stroke_texts(polys: list) -> list:
     ``((x0, y0), (x1, y1))`` in mm: a polyline or polygon of the engraving): ``[(text,
     (x, y), size, {indices of the polys it is})]``, each text two or more glyphs made of
     whole polys and drawn again by ``Text`` to :data:`TOL`.  What is no text (a tick, a
-    shape) is left.  At most :data:`MAX_TRIES` hypotheses in all, the strokes of several
-    segments (a glyph's) tried before single lines (a tick's)."""
+    shape) is left.  At most :data:`MAX_TRIES` reads and :data:`MAX_LOOKS` hypotheses in
+    all, started on strokes of several segments only (a text of one-line glyphs alone,
+    ``HI``, stays strokes)."""
     segs = [s for p in polys for s in p]
     if not 2 <= len(segs) <= MAX_SEGMENTS:
         return []
@@ -163,9 +183,11 @@ def stroke_texts(polys: list) -> list:
     out: list = []
     tries = looks = 0
     while ix.used.count(False) >= 2 and tries < MAX_TRIES:
-        order = sorted((j for j in range(len(segs)) if not ix.used[j]),
-                       key=lambda j: (len(members[owner[j]]) == 1,
-                                      min(segs[j][0][0], segs[j][1][0]), j))
+        # starts on strokes of several segments (a glyph's; a tick is one line): a text is
+        # read from any of its glyphs, both ways
+        order = sorted((j for j in range(len(segs)) if not ix.used[j] and
+                        len(members[owner[j]]) > 1),
+                       key=lambda j: (min(segs[j][0][0], segs[j][1][0]), j))
         found = None
         for j0 in order:
             seen: set = set()
