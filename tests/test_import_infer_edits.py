@@ -126,3 +126,32 @@ def test_stroke_text_comes_back_as_text(tmp_path):
     assert again.ok, [str(d) for d in again.errors]
     (tmp_path / "back.dxf").write_text(again.to_dxf())
     assert same(tmp_path / "nt.dxf", tmp_path / "back.dxf", 1e-7)
+
+
+def test_a_slanted_row_has_its_pitch_and_count_as_params(tmp_path):
+    """Five holes evenly along a slanted line: once `i * 12`, `i * 9` literals; now
+    `polar(first, i * holes_pitch, angle)` on `holes_pitch = 15` and `holes_n = 5`, exact,
+    and a new count adds holes along the same line."""
+    src = """units mm
+solid p {
+    body = Rectangle(center=(50, 30), width=100, height=60)
+    for i in range(5) { hole h { c = Circle(center=(10 + i * 12, 8 + i * 9), radius=2) } }
+}
+"""
+    res = aidl_lang.compile(src, path=tmp_path / "s.aidl")
+    (tmp_path / "s.dxf").write_text(res.to_dxf())
+    text, _ = import_drawing((tmp_path / "s.dxf").read_bytes(), "s.dxf", infer=True)
+    assert "param holes_pitch = 15 mm" in text and "for i in range(holes_n) {" in text, text
+    again = aidl_lang.compile(text, path=tmp_path / "i.aidl", overrides={"holes_n": "6"})
+    assert again.ok, [str(d) for d in again.errors]
+    centres = sorted(round(c[1][0][0], 6) for c in _circles(again))
+    assert centres == [10.0, 22.0, 34.0, 46.0, 58.0, 70.0]
+
+
+def _circles(res) -> list:
+    import tempfile
+    from pathlib import Path
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "c.dxf"
+        p.write_text(res.to_dxf())
+        return [c for c in dxf_compare.curves(p) if c[0] == "C"]

@@ -589,9 +589,13 @@ class _Part:
             p0, (dx, dy), n = ln
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            c = f"({self.plus(p0[0], f'i * {_num(dx, ROUND_TOL / n)}')}, " \
-                f"{self.plus(p0[1], f'i * {_num(dy, ROUND_TOL / n)}', 1)})"
-            w.emit(depth, f"for i in range({n}) {{")
+            # a slanted row: its pitch along it and its count params, from its first hole
+            mid = (p0[0] + dx * (n - 1) / 2, p0[1] + dy * (n - 1) / 2)
+            first = f"({self.at(p0[0], 0, mid[0])}, {self.at(p0[1], 1, mid[1])})"
+            pitch = self.p(hn + "_pitch", math.hypot(dx, dy), times=n)
+            cnt = self.p(hn + "_n", n, unit="")
+            c = f"polar({first}, i * {pitch}, {_deg(math.atan2(dy, dx))})"
+            w.emit(depth, f"for i in range({cnt}) {{")
             self.hole_block(depth + 1, hn, sh, c, sizes)
             w.emit(depth, "}")
             self.stats.patterns["row"] += 1
