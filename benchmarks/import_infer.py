@@ -80,15 +80,25 @@ def feature_params(text: str) -> list[tuple[str, int, int]]:
         for j in range(i - 1, -1, -1):
             d = len(lines[j]) - len(lines[j].lstrip())
             if d < depth and lines[j].lstrip().startswith("for "):
-                m = re.search(r"range\((\d+)\)", lines[j])
-                n *= int(m.group(1)) if m else len(re.search(r"\[(.*)\]", lines[j]).group(1)
-                                                   .split(","))
+                n *= loop_count(text, lines[j])
                 depth = d
             elif d < depth:
                 depth = d
         if n > 1:
             out.append((p, n, PIECES[kind]))
     return out
+
+
+def loop_count(text: str, line: str) -> int:
+    """How many times a ``for`` line runs: ``range(4)``, ``range(holes_n)`` (a count param,
+    ``range(holes_cols - j % 2)`` by its first row), or a list's items (``[-1, 1]``, a list
+    of points)."""
+    m = re.search(r"range\((\w+)", line)
+    if m:
+        w = m.group(1)
+        return int(w) if w.isdigit() else int(value_of(text, w))
+    items = re.search(r"\[(.*)\]", line).group(1)
+    return items.count("(") or len(items.split(","))
 
 
 def value_of(text: str, p: str) -> float:

@@ -94,14 +94,19 @@ def test_plate_comes_back_as_its_design(plate):
     text, first, again, second = plate
     assert "body = RoundedRectangle(center=(0, 0), width=width, height=height, " \
            "corner_radius=corner_radius)" in text
-    assert text.count("Slot(") == 1 and "for i in range(2) {" in text     # two slots, a loop
+    # two slots, a loop, placed from the right edge they sit by; counts are params
+    assert text.count("Slot(") == 1 and "for i in range(slots_n) {" in text
+    assert "Slot(center=(width / 2 - 28 + i * slots_pitch, 0)" in text
     assert "for sx in [-1, 1] {" in text and "hole corner_holes" in text
-    assert "for i in range(6) {" in text and "hole bolt_circle" in text
-    assert "hole bore { h = Circle(center=(-15, 0), diameter=bore_d) }" in text
-    assert "param bolt_circle_d = 36 mm" in text and "param corner_hole_d = 4 mm" in text
+    assert "for i in range(bolt_circle_n) {" in text and "hole bolt_circle" in text
+    assert "param bolt_circle_n = 6" in text and "i * 360 deg / bolt_circle_n" in text
+    # the bolt circle is centred on the bore it surrounds: one centre for both
+    assert "bore_c = (-15, 0)" in text and "polar(bore_c, bolt_circle_pcd / 2, " in text
+    assert "hole bore { h = Circle(center=bore_c, diameter=bore_d) }" in text
+    assert "param bolt_circle_pcd = 36 mm" in text and "param corner_hole_d = 4 mm" in text
     assert "param corner_inset = 6 mm" in text and "param width = 100 mm" in text
     hand = len(PLATE.splitlines())
-    assert len(text.splitlines()) <= 1.5 * hand, text
+    assert len(text.splitlines()) <= 1.6 * hand + 3, text    # (counts are params too)
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
     assert again.freedom()["dof"] == 0, again.freedom()["text"]
@@ -113,7 +118,7 @@ def _circles(path) -> list:
 
 @pytest.mark.parametrize("param, value, changed", [
     ("corner_hole_d", "6", 4),        # the four corner holes' radius: 2 -> 3
-    ("bolt_circle_d", "40", 6),       # the six bolt holes move out to a 40 mm circle
+    ("bolt_circle_pcd", "40", 6),     # the six bolt holes move out to a 40 mm circle
 ])
 def test_one_param_changes_every_instance_and_nothing_else(plate, tmp_path, param, value,
                                                           changed):
@@ -195,9 +200,11 @@ def test_a_sheet_of_copies_with_parts_is_one_loop_of_solids(tmp_path):
     doc.saveas(tmp_path / "sheet.dxf")
     text, notes = import_drawing((tmp_path / "sheet.dxf").read_bytes(), "sheet.dxf",
                                  parts=True, infer=True)
-    assert "for k in range(3) {" in text and text.count("solid ") == 1, text
-    assert "RoundedRectangle(center=(20 + k * part_pitch, 12.5)" in text
-    assert "param part_pitch = 50 mm" in text and "hole corner_holes" in text
+    # the parts named for what they are (`plate`, not `part`), their count a param
+    assert "for k in range(plate_n) {" in text and text.count("solid ") == 1, text
+    assert "param plate_n = 3  # copies" in text and "solid plate {" in text
+    assert "RoundedRectangle(center=(20 + k * plate_pitch, 12.5)" in text
+    assert "param plate_pitch = 50 mm" in text and "hole corner_holes" in text
     res = aidl_lang.compile(text, path=tmp_path / "sheet.aidl")
     assert res.ok, [str(d) for d in res.errors]
     (tmp_path / "back.dxf").write_text(res.to_dxf())
@@ -219,8 +226,10 @@ def test_svg_rounded_rect_and_a_row_of_holes(tmp_path):
     text, notes = import_drawing(SVG.encode(), "p.svg", infer=True)
     assert "body = RoundedRectangle(center=(50, -30), width=width, height=height, " \
            "corner_radius=corner_radius)" in text and "param corner_radius = 5 mm" in text
-    assert "hole holes { h = Circle(center=(20 + i * holes_pitch, -30), diameter=holes_d) }" \
-        in text and "for i in range(4) {" in text and "param holes_pitch = 20 mm" in text
+    # the row is centred on the body: a new pitch or count keeps it centred
+    assert "hole holes { h = Circle(center=(50 + (i - (holes_n - 1) / 2) * holes_pitch, -30), " \
+           "diameter=holes_d) }" in text and "for i in range(holes_n) {" in text
+    assert "param holes_pitch = 20 mm" in text and "param holes_n = 4" in text
     res = aidl_lang.compile(text, path=tmp_path / "p.aidl")
     assert res.ok and res.freedom()["dof"] == 0
     assert res.parts[0].bbox == pytest.approx((0, -60, 100, 0), abs=1e-9)
@@ -240,14 +249,15 @@ solid p {
 
 def test_mirrored_pairs_are_one_loop_and_stay_symmetric(tmp_path):
     """Two slots mirrored about the body's axis and two holes through its centre: `for s in
-    [-1, 1]`, and a new spacing keeps them symmetric."""
+    [-1, 1]`, and a new inset (the slots sit by the side edges) keeps them symmetric."""
     text, first, again, second = _round_trip(tmp_path, PAIRS, "pairs")
-    assert "Slot(center=(10 + s * slots_spacing / 2, 5)" in text
-    assert "param slots_spacing = 50 mm" in text
+    # the slots sit nearer the side edges (15 mm) than the centre (25 mm): kept from them
+    assert "Slot(center=(10 + s * (width / 2 - slots_inset), 5)" in text
+    assert "param slots_inset = 15 mm" in text
     assert "Circle(center=(10 + s * holes_spacing / 2, 5 + s * holes_spacing_y / 2)" in text
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
-    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"slots_spacing": "60"})
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"slots_inset": "10"})
     assert res.ok
     (tmp_path / "e.dxf").write_text(res.to_dxf())
     arcs = [k for k in dxf_compare.curves(tmp_path / "e.dxf") if k[0] == "A"]
@@ -326,13 +336,49 @@ def test_mounting_plate_comes_back_as_its_design(mounting):
     assert len(text.splitlines()) <= 1.5 * 69
     assert "body = RoundedRectangle(center=(0, 0), width=plate_width" in text
     assert "tab = Slot(" in text
-    assert "hole slots { h = Slot(" in text and "for i in range(4) {" in text
+    assert "hole slots { h = Slot(" in text and "for i in range(plate_slots_n) {" in text
     assert "diameter=plate_corner_hole_d)" in text and "param plate_corner_hole_d = 5 mm" in text
-    assert "param plate_bolt_circle_d = 40 mm" in text and "for k in range(4) {" in text
-    assert "hole bore { h = Circle(center=(-20, 0), diameter=plate_bore_d) }" in text
+    assert "param plate_motor_holes_pcd = 40 mm" in text and "for k in range(w_n) {" in text
+    assert "hole bore { h = Circle(center=bore_c, diameter=plate_bore_d) }" in text
+    # the label's 13 stroke polygons are the text they draw (was: 13 Polygon/Polyline)
+    assert 'Text("MOTOR MOUNT", position=(7, -34), size=3.5' in text
+    assert "Polygon(" not in text and "Polyline(" not in text
     left, extra = _same(first, second)
     assert not left and not extra, (left[:3], extra[:3])
     assert again.freedom()["dof"] == 0
+
+
+def _features(path) -> dict:
+    """The mounting plate's corner holes (r 2.5), bore (r 11), motor holes (r 1.7) by their
+    centres, and its two slots by their end arcs' centres (r 2.75)."""
+    out: dict = {}
+    for c in dxf_compare.curves(path):
+        if c[0] not in ("C", "A"):
+            continue
+        r = round(c[2][0], 6)
+        name = {2.5: "corner", 11.0: "bore", 1.7: "motor", 2.75: "slot"}.get(r)
+        if name and (c[0] == "C" or name == "slot"):
+            out.setdefault(name, set()).add(tuple(round(v, 6) for v in c[1][0]))
+    return {k: sorted(v) for k, v in out.items()}
+
+
+def test_a_new_plate_width_keeps_what_sits_by_an_edge_by_that_edge(mounting, tmp_path):
+    """The issue's "done when": the inferred mounting plate with a new `plate_width` (120 ->
+    150): the corner holes keep 8 mm to the side edges, the slots (by the right edge) keep
+    30 and 16 mm to it, the bore and its motor holes (by the centre) keep theirs to the
+    centre; before, every feature was placed by absolute numbers and only the corners moved."""
+    text, first, _, _ = mounting
+    res = aidl_lang.compile(text, path=tmp_path / "w.aidl", overrides={"plate_width": "150"})
+    assert res.ok, [str(d) for d in res.errors]
+    (tmp_path / "w.dxf").write_text(res.to_dxf())
+    old, new = _features(first), _features(tmp_path / "w.dxf")
+    assert sorted(60 - abs(x) for x, _ in old["corner"]) == [8] * 4
+    assert sorted(75 - abs(x) for x, _ in new["corner"]) == [8] * 4
+    assert [75 - x for x, _ in new["slot"][::-1]][:1] == [16.0]
+    assert sorted({round(60 - x, 6) for x, _ in old["slot"]}) == \
+        sorted({round(75 - x, 6) for x, _ in new["slot"]}) == [16.0, 30.0]
+    assert old["bore"] == new["bore"] == [(-20.0, 0.0)]
+    assert old["motor"] == new["motor"] and len(new["motor"]) == 4
 
 
 EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))

@@ -39,17 +39,20 @@ ticks, copies of a part) and :mod:`.infer_params` (numbers, params and construct
 from __future__ import annotations
 
 import math
+import re
 from collections import Counter
 
 from ..geometry.curves import Arc, Line, Loop
-from .infer_attachments import _attachments, _circle_attachments
+from .infer_attachments import _attachments, _circle_attachments, _notches
 from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
 from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_chain,
-                             _polar_polys, _runs, _tick_families, _unknown)
+                             _polar_polys, _runs, _stagger, _steps, _tick_families,
+                             _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .program import (_Writer, _containers, _ident, _inside, _layer_items, _num, _pt,
-                      _string)
+from .infer_text import stroke_texts
+from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
+                      _length, _num, _pt, _string)
 from .model import Drawing, Note
 
 
@@ -123,6 +126,8 @@ class _Part:
         self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
         self.used: set = set()
         self.shift: tuple | None = None     # (x term, y term) added to every position
+        self.anchor: tuple | None = None    # (body Shape, its size params): edges to place by
+        self.named: list = []               # [(point, name)]: centres written once, shared
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -134,6 +139,42 @@ class _Part:
             return _center(c)
         return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
                                for i in (0, 1)) + ")"
+
+    def at(self, v: float, axis: int, ref: float | None = None) -> str:
+        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
+        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
+        width (height) param, so that a new width moves what sits by an edge with the edge
+        and keeps what sits by the centre there (ties go to the centre)."""
+        if self.anchor is None:
+            return self.center((v, v))[1:-1].split(", ")[axis]
+        sh, sizes = self.anchor
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        r = v if ref is None else ref
+        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
+        if side == 0:
+            return self.center((v, v))[1:-1].split(", ")[axis]
+        d = v - (c + side * half)
+        term = f"{'-' if side < 0 else ''}{sizes[key]} / 2"
+        if abs(d) > ROUND_TOL:
+            term += f" + {_r(d)}" if d > 0 else f" - {_r(-d)}"
+        return self.plus(c, term, axis)
+
+    def pos(self, c) -> str:
+        """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return nm
+        return f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+
+    def origin(self, c) -> tuple[str, str, bool]:
+        """The x and y text of a pattern's centre ``c`` and whether it is a shared centre
+        (a feature the pattern surrounds) or the body's centre."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return f"{nm}.x", f"{nm}.y", True
+        on_body = self.anchor is not None and math.dist(self.anchor[0].center, c) <= EQUAL_TOL
+        return self.at(c[0], 0), self.at(c[1], 1), on_body
 
     def p(self, name: str, value: float, comment: str = "", unit: str = "mm",
           times: int = 1) -> str:
@@ -165,6 +206,10 @@ class _Part:
             got = _circle_attachments(segs)
             if got is not None:
                 sh, teeth = got
+        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
+            got = _notches(segs)
+            if got is not None:
+                return self.notched(depth, segs, first, got)
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
@@ -199,6 +244,8 @@ class _Part:
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
         self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
         self.w.emit(depth, f"Fixed({nm})")
+        if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
+            self.anchor = (sh, sizes)
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         for chain in tabs or []:
@@ -206,13 +253,13 @@ class _Part:
             if isinstance(chain, Shape):
                 st.kinds[chain.kind] += 1
                 st.in_shapes += 3
-                self.shape_line(depth, tn, chain, self.center(chain.center))
+                self.shape_line(depth, tn, chain, self.pos(chain.center))
                 self.w.emit(depth, f"Fixed({tn})")
                 continue
             t = recognise(chain)
             if t is not None and t.kind != "Polygon":
                 st.kinds[t.kind] += 1
-                self.shape_line(depth, tn, t, self.center(t.center))
+                self.shape_line(depth, tn, t, self.pos(t.center))
                 self.w.emit(depth, f"Fixed({tn})")
             elif t is not None:
                 self.shape_line(depth, tn, t, "")
@@ -224,6 +271,55 @@ class _Part:
                 abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             return sh, sizes, nm
         return None
+
+    def notched(self, depth: int, segs: list, first: bool, got: tuple) -> tuple:
+        """A rectangle with equal notches cut into one side (:func:`_notches`): the
+        rectangle, and the notches as one row of ``hole``s flush with that side (their
+        count, pitch, width and depth params; centred on the body where they are)."""
+        rect, side, centres, w, dep = got
+        self.stats.kinds["Rectangle"] += 1
+        self.stats.in_shapes += len(segs)
+        nm = self.name("body" if first else "outline")
+        sizes = {"width": self.p("width", rect.args["width"]),
+                 "height": self.p("height", rect.args["height"])} if first else {}
+        self.shape_line(depth, nm, rect, self.center(rect.center), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
+        if sizes:
+            self.anchor = (rect, sizes)
+        n = len(centres)
+        along = 0 if side in ("top", "bottom") else 1
+        across = 1 - along
+        hn = self.name("notches")
+        pitch = _steps(centres)
+        cnt = self.p(hn + "_n", n, unit="")
+        nw = self.p(hn + "_width", w)
+        nd = self.p(hn + "_depth", dep)
+        c = rect.center
+        mid = (centres[0] + centres[-1]) / 2
+        if pitch is not None:
+            pp = self.p(hn + "_pitch", pitch, times=n)
+            if abs(mid - c[along]) <= EQUAL_TOL:
+                pos = self.plus(c[along], f"(i - ({cnt} - 1) / 2) * {pp}", along)
+            else:
+                f0 = self.at(centres[0], along, ref=mid)
+                pos = f"i * {pp}" if f0 == "0" else f"{f0} + i * {pp}"
+            head = f"for i in range({cnt}) {{"
+        else:
+            pos = "x"
+            head = f"for x in [{', '.join(self.at(v, along) for v in centres)}] {{"
+        size = sizes.get("height" if across else "width") or \
+            _r(rect.args["height" if across else "width"])
+        sign = "" if side in ("top", "right") else "-"
+        dpos = self.plus(c[across], f"{sign}({size} / 2 - {nd} / 2)", across)
+        xy = (pos, dpos) if along == 0 else (dpos, pos)
+        wh = (nw, nd) if along == 0 else (nd, nw)
+        self.w.emit(depth, head)
+        self.w.emit(depth + 1, f"hole {hn} {{ h = Rectangle(center=({xy[0]}, {xy[1]}), "
+                               f"width={wh[0]}, height={wh[1]}) }}")
+        self.w.emit(depth + 1, f"Fixed({hn}.h)")
+        self.w.emit(depth, "}")
+        self.stats.patterns["notches in a side"] += 1
+        return rect, sizes, nm
 
     def teeth(self, depth: int, base: Shape, teeth: list, word: str) -> None:
         """The polygons standing out of a circle: one loop when they are one polygon turned
@@ -272,6 +368,7 @@ class _Part:
             groups.setdefault(key, []).append(sh)
         singles = []
         centres = []          # bolt circle centres, for naming a bore
+        self.share_centres(depth, groups, body)
         for key, g in groups.items():
             if len(g) == 1 or g[0].kind == "Polygon":
                 singles += g
@@ -281,6 +378,31 @@ class _Part:
                 singles += g
         for sh in singles:
             self.single(depth, sh, body, centres)
+
+    def share_centres(self, depth: int, groups: dict, body) -> None:
+        """A feature that a pattern of other holes surrounds (a bore inside its motor
+        holes, a window inside its screws): its centre written once as a name
+        (``bore_c = (x, y)``) that both use, so moving one moves the other."""
+        many = [g for g in groups.values() if len(g) > 1 and g[0].kind != "Polygon"]
+        mids = [(sum(h.center[0] for h in g) / len(g), sum(h.center[1] for h in g) / len(g))
+                for g in many]
+        for g in groups.values():
+            if len(g) != 1 or g[0].kind not in ("Circle", "Rectangle", "RoundedRectangle",
+                                                 "RegularPolygon"):
+                continue
+            sh = g[0]
+            if not any(math.dist(m, sh.center) <= EQUAL_TOL for m in mids):
+                continue
+            if any(math.dist(q, sh.center) <= EQUAL_TOL for q, _ in self.named):
+                continue
+            base = "bore" if sh.kind == "Circle" else _hole_name(sh)
+            hn = self.name(base)
+            self.used.discard(hn)           # the hole itself takes the name (single)
+            var = _ident(hn + "_c", self.used)
+            self.w.emit(depth, f"{var} = {self.pos(sh.center)}")
+            self.named.append((sh.center, var))
+            self.shared_kind = getattr(self, "shared_kind", {})
+            self.shared_kind[var] = sh.kind
 
     def compound_hole(self, depth: int, segs: list, body) -> None:
         """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
@@ -314,7 +436,7 @@ class _Part:
             rect, tabs = got
             hn = self.name("window")
             w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"h = {_ctor(rect, self.center(rect.center))}")
+            w.emit(depth + 1, f"h = {_ctor(rect, self.pos(rect.center))}")
             fixed = ["h"]
             for k, t in enumerate(tabs):
                 nm = f"tab{k + 1}"
@@ -369,7 +491,9 @@ class _Part:
         sh = g[0]
         base = _hole_name(sh)
         # four at the corners of the body, centred on it
-        if len(g) == 4 and body is not None and body[0].kind != "Circle":
+        mid_all = (sum(c[0] for c in cs) / len(cs), sum(c[1] for c in cs) / len(cs))
+        if len(g) == 4 and body is not None and body[0].kind != "Circle" and \
+                self.surrounds(mid_all) is None:
             bsh, bsizes, bname = body
             gr = _grid(cs)
             if gr is not None and gr[4] == 2 and gr[5] == 2:
@@ -396,22 +520,27 @@ class _Part:
                     w.emit(depth, "}")
                     self.stats.patterns["corner"] += 1
                     return True
-        # a bolt circle: circles evenly round a centre
+        # a bolt circle: circles evenly round a centre, its count a param
         if sh.kind == "Circle":
             pol = _polar(cs)
+            sq = _grid(cs) if len(cs) == 4 else None
+            if pol is not None and sq is not None and sq[4] == sq[5] == 2 and \
+                    abs(sq[2] - sq[3]) <= EQUAL_TOL and len(_r(sq[2])) < len(_r(2 * pol[1])):
+                pol = None      # a square given by its side (31 mm), not its circle (43.84)
             if pol is not None:
-                (cx, cy), R, a0, n = pol
-                hn = self.name("bolt_circle")
-                pcd = self.p(f"{hn}_d", 2 * R, "pitch circle diameter")
-                sizes = self.size_params(f"{hn}_hole", sh, True)
-                ang = f"{_deg(a0)} + i * {_num(360 / n, 1e-10)} deg" if abs(a0) > 1e-15 \
-                    else f"i * {_num(360 / n, 1e-10)} deg"
-                c = f"({self.plus(cx, f'{pcd} / 2 * cos({ang})')}, " \
-                    f"{self.plus(cy, f'{pcd} / 2 * sin({ang})', 1)})"
-                w.emit(depth, f"for i in range({n}) {{")
-                self.hole_block(depth + 1, hn, sh, c, sizes)
+                C, R, a0, n = pol
+                around = self.surrounds(C)
+                hn = self.name("motor_holes" if around == "Circle" and n == 4 else "bolt_circle")
+                pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
+                sizes = self.size_params(hn, sh, True)
+                cnt = self.p(f"{hn}_n", n, "holes", unit="")
+                ang = f"{_deg(a0)} + i * 360 deg / {cnt}" if abs(a0) > 1e-15 \
+                    else f"i * 360 deg / {cnt}"
+                w.emit(depth, f"for i in range({cnt}) {{")
+                self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
+                                sizes)
                 w.emit(depth, "}")
-                centres.append((cx, cy))
+                centres.append(C)
                 self.stats.patterns["bolt circle"] += 1
                 return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
@@ -424,8 +553,15 @@ class _Part:
             if (sym_x and (same_y or sym_y)) or (sym_y and same_x):
                 hn = self.name(base + "s")
                 sizes = self.size_params(hn, sh, True)
-                ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2") if sym_x \
-                    else self.center((x1, y1))[1:-1].split(", ")[0]
+                half = self.anchor[0].args["width"] / 2 if self.anchor is not None else None
+                if sym_x and half is not None and half - x2 + B[0] < x2 - B[0]:
+                    # nearer the side edges than the centre: each kept from its edge
+                    ex = self.plus(B[0], f"s * ({self.anchor[1]['width']} / 2 - "
+                                         f"{self.p(hn + '_inset', half - x2 + B[0], 'from the edges')})")
+                elif sym_x:
+                    ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2")
+                else:
+                    ex = self.at(x1, 0)
                 # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
                 if sym_y:
                     dy = y2 - y1 if sym_x else abs(y2 - y1)
@@ -433,7 +569,7 @@ class _Part:
                     name = hn + ("_spacing_y" if sym_x else "_spacing")
                     ey = self.plus(B[1], f"{sign} * {self.p(name, abs(dy))} / 2", 1)
                 else:
-                    ey = self.center((x1, y1))[1:-1].split(", ")[1]
+                    ey = self.at(y1, 1)
                 w.emit(depth, "for s in [-1, 1] {")
                 self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
                 w.emit(depth, "}")
@@ -442,39 +578,24 @@ class _Part:
         # a row, a column or a grid
         gr = _grid(cs)
         if gr is not None:
-            x0, y0, dx, dy, nx, ny = gr
-            hn = self.name(base + "s")
-            sizes = self.size_params(hn, sh, True)
-            here = self.center((x0, y0))[1:-1].split(", ")
-            ex, ey = here
-            if nx > 1:
-                px = self.p(hn + "_pitch_x" if ny > 1 else hn + "_pitch", dx, times=nx)
-                ex = self.plus(x0, f"i * {px}")
-            if ny > 1:
-                py = self.p(hn + "_pitch_y" if nx > 1 else hn + "_pitch", dy, times=ny)
-                ey = self.plus(y0, f"j * {py}", 1)
-            c = f"({ex}, {ey})"
-            d = depth
-            if nx > 1:
-                w.emit(d, f"for i in range({nx}) {{")
-                d += 1
-            if ny > 1:
-                w.emit(d, f"for j in range({ny}) {{")
-                d += 1
-            self.hole_block(d, hn, sh, c, sizes)
-            for _ in range(d - depth):
-                d -= 1
-                w.emit(d, "}")
-            self.stats.patterns["grid" if nx > 1 and ny > 1 else "row"] += 1
+            self.grid(depth, sh, base, gr)
+            return True
+        st = _stagger(cs)
+        if st is not None:
+            self.stagger(depth, sh, base, st)
             return True
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
             hn = self.name(base + "s")
             sizes = self.size_params(hn, sh, True)
-            c = f"({self.plus(p0[0], f'i * {_num(dx, ROUND_TOL / n)}')}, " \
-                f"{self.plus(p0[1], f'i * {_num(dy, ROUND_TOL / n)}', 1)})"
-            w.emit(depth, f"for i in range({n}) {{")
+            # a slanted row: its pitch along it and its count params, from its first hole
+            mid = (p0[0] + dx * (n - 1) / 2, p0[1] + dy * (n - 1) / 2)
+            first = f"({self.at(p0[0], 0, mid[0])}, {self.at(p0[1], 1, mid[1])})"
+            pitch = self.p(hn + "_pitch", math.hypot(dx, dy), times=n)
+            cnt = self.p(hn + "_n", n, unit="")
+            c = f"polar({first}, i * {pitch}, {_deg(math.atan2(dy, dx))})"
+            w.emit(depth, f"for i in range({cnt}) {{")
             self.hole_block(depth + 1, hn, sh, c, sizes)
             w.emit(depth, "}")
             self.stats.patterns["row"] += 1
@@ -497,30 +618,160 @@ class _Part:
                 for run in _runs(pos, step):
                     if len(run) < 3:
                         continue
-                    hn = self.name(base + "s")
-                    pitch = self.p(hn + "_pitch", step, times=len(run))
                     first = run[0][1].center
+                    mid = (run[0][0] + run[-1][0]) / 2
+                    hn = self.name_near(base + "s", (mid, first[axis]) if axis else
+                                        (first[axis], mid))
+                    pitch = self.p(hn + "_pitch", step, times=len(run))
                     c = [None, None]
-                    c[1 - axis] = self.plus(first[1 - axis], f"i * {pitch}", 1 - axis)
-                    c[axis] = self.center(first)[1:-1].split(", ")[axis]
-                    w.emit(depth, f"for i in range({len(run)}) {{")
+                    f0 = self.at(first[1 - axis], 1 - axis, ref=mid)
+                    c[1 - axis] = f"i * {pitch}" if f0 == "0" else f"{f0} + i * {pitch}"
+                    c[axis] = self.at(first[axis], axis)
+                    cnt = self.p(hn + "_n", len(run), unit="")
+                    w.emit(depth, f"for i in range({cnt}) {{")
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
                     w.emit(depth, "}")
                     self.stats.patterns["row"] += 1
                     for _, m in run:
                         rest.remove(m)
-        for s in rest:
+        if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
+            # placed together, by the reference nearest their middle (a board's holes move
+            # as one when the plate grows)
+            mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+            hn = self.name_near(base + "s", mid)
+            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0])}, "
+                            f"{self.at(m.center[1], 1, mid[1])})" for m in rest)
+            w.emit(depth, f"for c in [{pts}] {{")
+            self.hole_block(depth + 1, hn, sh, "c", sizes)
+            w.emit(depth, "}")
+        elif rest:
+            s = rest[0]
             self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
-                            s, self.center(s.center), sizes)
+                            s, self.pos(s.center), sizes)
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
+
+    def name_near(self, base: str, c) -> str:
+        """``base`` when it is free, else named for where ``c`` sits on the body
+        (``top_holes``, ``left_holes``, ``centre_holes``), else numbered."""
+        if base not in self.used or self.anchor is None:
+            return self.name(base)
+        return self._near(base, c)
+
+    def _near(self, base: str, c) -> str:
+        sh = self.anchor[0]
+        words = []
+        for axis, key, lo, hi in ((1, "height", "bottom", "top"), (0, "width", "left", "right")):
+            d = c[axis] - sh.center[axis]
+            if abs(d) > sh.args[key] / 4:
+                words.append(hi if d > 0 else lo)
+        return self.name("_".join(words or ["centre"]) + "_" + base)
+
+    def surrounds(self, c) -> str | None:
+        """The kind of the shared-centre feature at ``c`` (:meth:`share_centres`), or None."""
+        for q, nm in self.named:
+            if math.dist(q, c) <= EQUAL_TOL:
+                return getattr(self, "shared_kind", {}).get(nm)
+        return None
+
+    def grid(self, depth: int, sh: Shape, base: str, gr: tuple) -> None:
+        """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:
+        centred on the feature it surrounds or on the body where it is (``(i - (n - 1) /
+        2) * pitch``), else from its first instance placed by the nearest edge or centre;
+        one pitch param when the steps are equal both ways."""
+        x0, y0, dx, dy, nx, ny = gr
+        mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
+        around = self.surrounds(mid)
+        hn = self.name({"Circle": "motor_holes"}.get(around, "screw_holes") if around
+                       and sh.kind == "Circle" else base + "s")
+        sizes = self.size_params(hn, sh, True)
+        both = nx > 1 and ny > 1
+        one = both and abs(dx - dy) <= EQUAL_TOL
+        ox, oy, centred = self.origin(mid)
+        body_c = self.anchor[0].center if self.anchor is not None else None
+        out = []
+        loops = []
+        for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
+            if n == 1:
+                out.append(self.at(v0, axis))
+                continue
+            if one:
+                pitch = self.p(hn + "_pitch", step, times=max(nx, ny)) if axis == 0 else \
+                    out_pitch
+                out_pitch = pitch
+            else:
+                pitch = self.p(hn + ("_pitch_x" if axis == 0 else "_pitch_y") if both
+                               else hn + "_pitch", step, times=n)
+            cnt = self.p(hn + (("_cols" if axis == 0 else "_rows") if both else "_n"), n,
+                         unit="")
+            loops.append(f"for {var} in range({cnt}) {{")
+            here = centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
+            if here:
+                o = (ox, oy)[axis]
+                term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
+                out.append(term if o == "0" else f"{o} + {term}")
+            else:
+                first = self.at(v0, axis, ref=mid[axis])
+                out.append(f"{var} * {pitch}" if first == "0" else f"{first} + {var} * {pitch}")
+        d = depth
+        for ln in loops:
+            self.w.emit(d, ln)
+            d += 1
+        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes)
+        for _ in loops:
+            d -= 1
+            self.w.emit(d, "}")
+        self.stats.patterns["grid" if both else "row"] += 1
+
+    def stagger(self, depth: int, sh: Shape, base: str, st: tuple) -> None:
+        """A staggered (hex) grid (``st`` from :func:`_stagger`) as one pattern: one pitch,
+        the rows' step ``pitch * sqrt(3) / 2`` when it is a hex grid (else its own param),
+        the counts params; each row centred on the body or the feature it surrounds where
+        the grid is, else from its first hole."""
+        xa, na, xb, nb, pitch, y0, dy, rows = st
+        mid = ((xa + xa + (na - 1) * pitch) / 2, y0 + dy * (rows - 1) / 2)
+        mid_b = (xb + xb + (nb - 1) * pitch) / 2
+        hn = self.name(base + "s")
+        sizes = self.size_params(hn, sh, True)
+        p = self.p(hn + "_pitch", pitch, times=max(na, rows))
+        if abs(dy - pitch * math.sqrt(3) / 2) <= ROUND_TOL / rows:
+            step = f"{p} * sqrt(3) / 2"
+        else:
+            step = self.p(hn + "_row_pitch", dy, times=rows)
+        cols = self.p(hn + "_cols", na, "in the first row, a row between one less or more" if
+                      na != nb else "", unit="")
+        nrows = self.p(hn + "_rows", rows, unit="")
+        n_j = cols if na == nb else f"{cols} - j % 2" if nb < na else f"{cols} + j % 2"
+        ox, oy, centred = self.origin(mid)
+        body_c = self.anchor[0].center if self.anchor is not None else None
+
+        def here(axis):
+            return centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
+        if here(0) and abs(mid_b - mid[0]) <= EQUAL_TOL:
+            term = f"(i - ({n_j} - 1) / 2) * {p}"
+            ex = term if ox == "0" else f"{ox} + {term}"
+        else:
+            sign = "+" if xb > xa else "-"
+            ex = f"{self.at(xa, 0, ref=mid[0])} {sign} j % 2 * {p} / 2 + i * {p}"
+        if here(1):
+            term = f"(j - ({nrows} - 1) / 2) * {step}"
+            ey = term if oy == "0" else f"{oy} + {term}"
+        else:
+            ey = f"{self.at(y0, 1, ref=mid[1])} + j * {step}"
+        self.w.emit(depth, f"for j in range({nrows}) {{")
+        self.w.emit(depth + 1, f"for i in range({n_j}) {{")
+        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
+        self.w.emit(depth + 1, "}")
+        self.w.emit(depth, "}")
+        self.stats.patterns["staggered grid"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list) -> None:
         base = _hole_name(sh)
         sizes: dict = {}
         if sh.kind == "Circle":
             on_axis = any(math.dist(sh.center, c) <= EQUAL_TOL for c in centres) or \
+                self.surrounds(sh.center) is not None or \
                 (body is not None and math.dist(sh.center, body[0].center) <= EQUAL_TOL)
             if on_axis:
                 base = "bore"
@@ -531,7 +782,7 @@ class _Part:
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
             return
-        self.hole_block(depth, hn, sh, self.center(sh.center), sizes)
+        self.hole_block(depth, hn, sh, self.pos(sh.center), sizes)
 
 
 # ------------------------------------------------------------------ drawings (engravings)
@@ -577,12 +828,27 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
 
 def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
-    recognised shapes, ``Polygon``/``Polyline`` for runs of lines, else exact chains."""
+    a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
+    it is (:func:`~.infer_text.stroke_text`), recognised shapes, ``Polygon``/``Polyline``
+    for runs of lines, else exact chains."""
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
     for dd in parts:
-        for segs in [circular(o.segments) for o in dd.outlines] + [[c] for c in dd.circles]:
+        skip: set = set()
+        lined = [o for o in list(dd.outlines) + list(dd.paths)
+                 if all(isinstance(g, Line) for g in o.segments)]
+        found = stroke_texts([[(g.start, g.end) for g in o.segments] for o in lined]) \
+            if len(lined) <= 2000 else []
+        for text, pos, size, whole in found:
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
+                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
+            stats.patterns["stroke text"] += 1
+            held.append(f"t{k}")
+            skip |= {id(lined[i]) for i in whole}
+        for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
+                [[c] for c in dd.circles]:
             k += 1
             sh = recognise(segs)
             if sh is not None:
@@ -596,7 +862,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
             held.append(f"g{k}")
-        strokes = [p for p in dd.paths if len(p.segments) == 1 and
+        strokes = [p for p in dd.paths if len(p.segments) == 1 and id(p) not in skip and
                    isinstance(p.segments[0], Line)]
         fams, used = _tick_families([(p.segments[0].start, p.segments[0].end)
                                      for p in strokes])
@@ -606,7 +872,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             _write_family(w, depth, f, k)
             stats.patterns["ticks in a row" if f[0] == "row" else "ticks round a centre"] += 1
         for p in dd.paths:
-            if id(p) in done:
+            if id(p) in done or id(p) in skip:
                 continue
             k += 1
             closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
@@ -666,7 +932,25 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         hn = part.name("oval")
         w.emit(depth + 1, f"hole {hn} {{ e = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg) }}")
-    eng = Drawing(paths=list(d.paths), texts=list(d.texts), engrave=d.engrave)
+    # a cut role's open paths are through-cuts (as `aidl import` writes them); its loops
+    # that cross themselves stay engraved, counted
+    cut = [p for p in d.paths if p.crossing is None] if d.paths_cut else []
+    if cut:
+        w.emit(depth + 1, "cut cuts {")
+        w.cut_paths += len(cut)
+        w.cut_length += sum(_length(p.segments) for p in cut)
+        for i, p in enumerate(cut):
+            if w.chain(depth + 2, p.segments, False, f"p{i + 1}_"):
+                _emit_holds(w, depth + 2, _holds(p.segments, f"p{i + 1}_", False), "q")
+            else:
+                w.notes.append(Note("W0130", f"a cut path of `{name}` holds a piece no "
+                                             f"statement writes: left out"))
+        w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(cuts)")
+    drawn = [p for p in d.paths if not any(p is q for q in cut)]
+    if d.paths_cut:
+        w.crossed += len(drawn)
+    eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
     if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
         w.emit(depth + 1, "drawing engraving {")
         _engraving(w, depth + 2, eng, stats)
@@ -681,6 +965,59 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth, "}")
 
 
+# a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)
+_HOLE_LAYER = re.compile(r"hole|drill|npth|pth|cut_?outs?|inner|interior|mount", re.I)
+
+
+def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
+    """``layers`` with each layer named for holes (:data:`_HOLE_LAYER`) of loops alone (no
+    paths, texts or engravings) whose every loop lies inside an outer loop of one other
+    layer's drawing (a ``HOLES`` layer beside ``OUTLINE``, as PCB and panel programs
+    export) moved into that layer: its loops become
+    that part's holes, not a solid of their own.  Returns the layers and a line for the
+    program's head per move (``holes: layer `HOLES` in `OUTLINE```)."""
+    import numpy as np
+    from .program import _probe
+
+    def loops(d):
+        return [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+    cand = [k for k, (ly, d) in enumerate(layers)
+            if not ly.upper().startswith("ENGRAVE") and (d.outlines or d.circles)]
+    if len(cand) < 2:
+        return layers, []
+    # only a layer named for holes moves (a POCKET or SCORE layer inside the outline is not
+    # a through-hole: it stays a part of its own, as `aidl import` writes it)
+    holey = {k for k in cand if _HOLE_LAYER.search(layers[k][0])}
+    outer = {}
+    for k in cand:
+        ls = loops(layers[k][1])
+        outer[k] = [np.asarray(Loop(list(s)).points(), dtype=float)
+                    for s, c in zip(ls, _containers(ls)) if not c]
+    into: dict = {}
+    for k in sorted(holey):
+        d = layers[k][1]
+        if d.paths or d.texts or (d.engrave is not None and not d.engrave.empty):
+            continue
+        probes = [_probe(s) for s in loops(d)]
+        for j in cand:
+            if j == k or j in into or j in holey:
+                continue
+            if all(any(len(P) >= 3 and _inside(q, P) for P in outer[j]) for q in probes):
+                into[k] = j
+                break
+    if not into:
+        return layers, []
+    from dataclasses import replace
+    out = {k: d for k, (_, d) in enumerate(layers)}
+    for k, j in into.items():
+        src, dst = out[k], out[j]
+        out[j] = replace(dst, outlines=dst.outlines + src.outlines,
+                         circles=dst.circles + src.circles, ellipses=dst.ellipses + src.ellipses,
+                         notes=dst.notes)
+    head = [f"holes: layer `{layers[k][0]}` in `{layers[j][0]}`" for k, j in into.items()]
+    return [(ly, out[k]) for k, (ly, _) in enumerate(layers) if k not in into], head
+
+
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
                         deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
@@ -692,8 +1029,10 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     w = _Writer(deadline)
     params = _Params()
     stats = _Stats()
+    layers, moved = _hole_layers(layers)
     items = _layer_items(layers, parts, deadline, source, w.notes)
     items = _copies(items, deadline)
+    items = _named_parts(items)
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -714,7 +1053,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                 if abs(dx) > ROUND_TOL else None
             sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
                 if abs(dy) > ROUND_TOL else None
-            w.emit(depth, f"for k in range({n}) {{")
+            w.emit(depth, f"for k in range({params.add(pre + 'n', n, 'copies', unit='')}) {{")
             _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
             if multi:
                 w.emit(depth + 1, f"Fixed({name})")
@@ -730,10 +1069,37 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(depth, f"Fixed({names[0]})")
     if multi:
         w.emit(0, "}")
+    _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats)] + ["units mm"]
+    head += ["# " + ln for ln in _summary(stats) + moved] + ["units mm"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
+
+
+# layer names that say nothing of the part on them (CAD's layer 0, a laser's CUT layer)
+_GENERIC = {"l_0", "cut_", "cut", "part", "outline", "outlines", "contour", "profile",
+            "default", "layer1", "layer_1", "l_1"}
+
+
+def _named_parts(items: list) -> list:
+    """``items`` with a solid on a layer whose name says nothing (:data:`_GENERIC`) named
+    for what its body is: ``plate`` (a rectangle or polygon), ``disc`` (a circle), else
+    ``part``; each name once."""
+    used = {it[1] for it in items}
+    out = []
+    for it in items:
+        kind, name, d = it[:3]
+        if kind != "solid" or name.lower() not in _GENERIC:
+            out.append(it)
+            continue
+        loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
+        big = max(loops, key=lambda s: abs(Loop(list(s)).area), default=None)
+        sh = recognise(big) if big is not None else None
+        word = "part" if sh is None else "disc" if sh.kind == "Circle" else "plate"
+        used.discard(name)
+        new = _ident(word, used)
+        out.append((kind, new, d) + tuple(it[3:]))
+    return out
 
 
 def _short_names(names: list) -> dict:

@@ -272,3 +272,67 @@ def _collinear(p: Line, q: Line) -> bool:
         return False
     return abs(ux * vy - uy * vx) / lu <= EQUAL_TOL and ux * vx + uy * vy > 0
 
+
+
+def _notches(segs: list):
+    """A loop of axis-aligned lines that is a rectangle with equal rectangular notches cut
+    into one side (a cable comb's slots): ``(rectangle Shape, side, [notch centres along
+    the side, sorted], notch width along the side, depth)``, ``side`` one of ``"top"``,
+    ``"bottom"``, ``"left"``, ``"right"``; or None.  Checked: every piece off the rectangle
+    is one of the notches' three sides, the notches equal (EQUAL_TOL), and the loop's area
+    the rectangle's less the notches'."""
+    if len(segs) < 12 or len(segs) > 4096 or not all(isinstance(s, Line) for s in segs):
+        return None
+    pts = [s.start for s in segs]
+    x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
+    y0, y1 = min(p[1] for p in pts), max(p[1] for p in pts)
+    sides = {"left": (0, x0), "right": (0, x1), "bottom": (1, y0), "top": (1, y1)}
+
+    def side_of(p):
+        return {k for k, (ax, v) in sides.items() if abs(p[ax] - v) <= EQUAL_TOL}
+
+    def on_boundary(s):
+        return bool(side_of(s.start) & side_of(s.end))
+    n = len(segs)
+    start = next((i for i in range(n) if on_boundary(segs[i])), None)
+    if start is None:
+        return None
+    runs, cur = [], []
+    for k in range(1, n + 1):
+        s = segs[(start + k) % n]
+        if on_boundary(s):
+            if cur:
+                runs.append(cur)
+                cur = []
+        else:
+            cur.append(s)
+    notches = []
+    for run in runs:
+        if len(run) != 3:
+            return None
+        a, b, c = run[0].start, run[1].start, run[2].start
+        d = run[2].end
+        common = side_of(a) & side_of(d)
+        if len(common) != 1:
+            return None
+        side = common.pop()
+        ax, v = sides[side]
+        along = 1 - ax
+        depth = abs(b[ax] - v)
+        if abs(abs(c[ax] - v) - depth) > EQUAL_TOL or abs(b[along] - a[along]) > EQUAL_TOL \
+                or abs(d[along] - c[along]) > EQUAL_TOL or depth <= EQUAL_TOL:
+            return None
+        lo, hi = sorted((a[along], d[along]))
+        notches.append((side, (lo + hi) / 2, hi - lo, depth))
+    if len(notches) < 2 or len({t[0] for t in notches}) != 1:
+        return None
+    w, dep = notches[0][2], notches[0][3]
+    if any(abs(t[2] - w) > EQUAL_TOL or abs(t[3] - dep) > EQUAL_TOL for t in notches):
+        return None
+    W, H = x1 - x0, y1 - y0
+    area = 0.5 * abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(pts, pts[1:] + pts[:1])))
+    if abs(area - (W * H - len(notches) * w * dep)) > 1e-9 * max(W * H, 1.0):
+        return None
+    rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2),
+                 {"width": W, "height": H, "rotation": 0.0}, ("Rectangle", W, H, 0.0), 4)
+    return rect, notches[0][0], sorted(t[1] for t in notches), w, dep

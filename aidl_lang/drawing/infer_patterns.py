@@ -29,11 +29,15 @@ from .model import Drawing
 
 # ------------------------------------------------------------------ points
 def _steps(vals: list) -> float | None:
-    """The common step of sorted ``vals`` (None when the steps differ)."""
-    d = [b - a for a, b in zip(vals, vals[1:])]
-    if not d or any(abs(x - d[0]) > EQUAL_TOL for x in d):
+    """The common step of sorted ``vals``: ``(last - first) / (n - 1)`` when every value
+    lies within EQUAL_TOL of ``first + k * step`` (a pitch holds every instance, not only
+    each step: steps each 0.9e-7 mm longer than the first add up); else None."""
+    if len(vals) < 2:
         return None
-    return d[0]
+    step = (vals[-1] - vals[0]) / (len(vals) - 1)
+    if any(abs(v - (vals[0] + k * step)) > EQUAL_TOL for k, v in enumerate(vals)):
+        return None
+    return step
 
 
 def _distinct(vals: list) -> list:
@@ -93,6 +97,31 @@ def _grid(centers: list):
                        for p in centers):
                 return None
     return xs[0], ys[0], dx, dy, len(xs), len(ys)
+
+
+def _stagger(centers: list):
+    """``(x0 even, n even, x0 odd, n odd, pitch, y0, row step, rows)`` when ``centers`` are a
+    staggered (hex) grid: rows on equal steps in y, each row on one pitch, the even rows
+    alike and the odd rows alike shifted half a pitch (their counts equal or one apart);
+    every centre checked to EQUAL_TOL; else None."""
+    ys = _distinct([p[1] for p in centers])
+    if len(ys) < 3 or _steps(ys) is None:
+        return None
+    rows = [sorted(p[0] for p in centers if abs(p[1] - y) <= EQUAL_TOL) for y in ys]
+    if sum(len(r) for r in rows) != len(centers) or any(len(r) < 2 for r in rows):
+        return None
+    pitch = _steps(rows[0])
+    if pitch is None or pitch <= EQUAL_TOL:
+        return None
+    for k, r in enumerate(rows):
+        ref = rows[k % 2]
+        if len(r) != len(ref) or abs(r[0] - ref[0]) > EQUAL_TOL or \
+                any(abs(x - (r[0] + i * pitch)) > EQUAL_TOL for i, x in enumerate(r)):
+            return None
+    (a, b) = rows[0], rows[1]
+    if abs(abs(b[0] - a[0]) - pitch / 2) > EQUAL_TOL or abs(len(a) - len(b)) > 1:
+        return None
+    return a[0], len(a), b[0], len(b), pitch, ys[0], _steps(ys), len(ys)
 
 
 def _line(centers: list):
@@ -200,7 +229,8 @@ def _runs(idx_pos: list, step: float) -> list[list]:
     ``(position, item)`` pairs."""
     runs: list[list] = []
     for pos, it in idx_pos:
-        if runs and abs(pos - runs[-1][-1][0] - step) <= EQUAL_TOL:
+        # against the run's first member: every member within EQUAL_TOL of start + k step
+        if runs and abs(pos - runs[-1][0][0] - len(runs[-1]) * step) <= EQUAL_TOL:
             runs[-1].append((pos, it))
         else:
             runs.append([(pos, it)])
@@ -383,7 +413,7 @@ def _same_sig(a, b) -> bool:
 # what a Drawing holds that the inferred writer writes (a field it does not know, added to
 # the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
 _KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
-          "engrave"}
+          "engrave", "paths_cut"}
 
 
 def _unknown(d: Drawing) -> bool:

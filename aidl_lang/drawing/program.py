@@ -474,6 +474,13 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
         _structure(w, 1 if multi else 0, kind, name, d)
     if multi:
         w.emit(0, "}")
+    _cut_notes(w, source)
+    return "\n".join(w.lines) + "\n", w.notes
+
+
+def _cut_notes(w: _Writer, source: str) -> None:
+    """The notes of a cut role's open paths written as through-cuts and of its loops that
+    cross themselves (engraved), from the counts ``w`` kept; appended to ``w.notes``."""
     if w.cut_paths:
         n = w.cut_paths
         w.notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` "
@@ -489,7 +496,6 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
                                      f"engraved (`drawing paths`), neither a hole nor a "
                                      f"through-cut", "redraw the loop without the crossing in "
                                      "the drawing program, then import again"))
-    return "\n".join(w.lines) + "\n", w.notes
 
 
 def layer_names(data: bytes, name: str) -> list[str]:

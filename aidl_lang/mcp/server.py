@@ -456,11 +456,12 @@ def build_server(root: str, budget: float = 1.0,
         """Turn a DXF or SVG drawing into an AIDL program to edit (`aidl import`).  With
         `infer` (the default) the program is the design a person would write: the outline as
         RoundedRectangle, Slot, RegularPolygon..., holes named by what they are
-        (corner_holes, bolt_circle, bore, slot) with loops for patterns, one param per
-        repeated size, every shape held where the drawing has it; exact to 1e-6 mm.  Returns
-        structured content (and one line of text): ok, program (the text), notes (what was
-        skipped), output (the file written: then `write_program` patches it and the other
-        tools take it by `path`); or ok false, diagnostics and error."""
+        (corner_holes, bolt_circle, motor_holes, bore, slots, notches) with loops for
+        patterns, one param per repeated size, pitch and count, features placed from the
+        body's nearest edge or centre, every shape held where the drawing has it; exact to
+        1e-6 mm.  Returns structured content (and one line of text): ok, program (the text),
+        notes (what was skipped), output (the file written: then `write_program` patches it
+        and the other tools take it by `path`); or ok false, diagnostics and error."""
         doc = work.call("import_drawing", path, infer, parts, units, output, budget,
                         budget=budget)
         if not doc.get("ok") and doc.get("diagnostics"):

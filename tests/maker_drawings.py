@@ -1,0 +1,239 @@
+"""Drawings a maker would bring to ``aidl import --infer`` (issue 71), written as a CAD user
+exports them: plain ``LINE``/``ARC``/``CIRCLE``/``LWPOLYLINE`` entities in mm, the origin at
+the plate's lower-left corner, some with the holes on a layer of their own.  Each drawing is a
+function of its design's numbers, so the drawing a person meant after an edit is the same
+function with the edited number; :data:`DRAWINGS` lists each with the edits a person would
+make through the inferred program's params (a size, a pitch, a count, the body's width).
+
+An edit is ``(label, param name pattern, current value, new value, the function's keyword
+for it)``: the inferred program's param whose name matches the pattern (``re.fullmatch``,
+any part prefix allowed) and whose value is the current one is set to the new value; the
+program rendered must be the drawing of the function with that keyword, up to a translation
+(the plate may grow about its centre where the drawing grows from its corner).
+
+Used by benchmarks/infer_edits.py (the share of edits that do what was meant) and
+tests/test_import_infer_edits.py (the key edits).
+"""
+from __future__ import annotations
+
+import io
+import math
+
+import ezdxf
+
+
+def _doc():
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    return doc, doc.modelspace()
+
+
+def _bytes(doc) -> bytes:
+    s = io.StringIO()
+    doc.write(s)
+    return s.getvalue().encode()
+
+
+def _rect(m, x0, y0, w, h, layer="0"):
+    m.add_lwpolyline([(x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h)], close=True,
+                     dxfattribs={"layer": layer})
+
+
+def _slot(m, cx, cy, length, width, layer="0"):
+    """A vertical slot: two lines and two half-circle arcs."""
+    r, a = width / 2, (length - width) / 2
+    m.add_line((cx - r, cy - a), (cx - r, cy + a), dxfattribs={"layer": layer})
+    m.add_line((cx + r, cy - a), (cx + r, cy + a), dxfattribs={"layer": layer})
+    m.add_arc((cx, cy + a), r, 0, 180, dxfattribs={"layer": layer})
+    m.add_arc((cx, cy - a), r, 180, 360, dxfattribs={"layer": layer})
+
+
+def nema17(width=60.0, height=60.0, bore=22.0, spacing=31.0, hole=3.4) -> bytes:
+    """A NEMA 17 motor mount: the bore on the plate's centre, four M3 holes round it."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    c = (width / 2, height / 2)
+    m.add_circle(c, bore / 2)
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            m.add_circle((c[0] + sx * spacing / 2, c[1] + sy * spacing / 2), hole / 2)
+    return _bytes(doc)
+
+
+def rpi(width=160.0, height=70.0, hole=2.7, pitch_x=58.0, pitch_y=49.0) -> bytes:
+    """A Raspberry Pi mount at the left of a longer plate: its four holes 8 mm from the left
+    edge, centred on the plate's height (70 mm: 49 + 2 x 10.5, the plate sized round them)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for i in range(2):
+        for j in range(2):
+            m.add_circle((8 + i * pitch_x, height / 2 + (j - 0.5) * pitch_y), hole / 2)
+    return _bytes(doc)
+
+
+def flange(diameter=100.0, bore=40.0, pcd=75.0, count=8, hole=8.0) -> bytes:
+    """A round flange: a bore and a bolt circle of ``count`` holes."""
+    doc, m = _doc()
+    c = (diameter / 2, diameter / 2)
+    m.add_circle(c, diameter / 2)
+    m.add_circle(c, bore / 2)
+    for k in range(count):
+        a = 2 * math.pi * k / count
+        m.add_circle((c[0] + pcd / 2 * math.cos(a), c[1] + pcd / 2 * math.sin(a)), hole / 2)
+    return _bytes(doc)
+
+
+def grille(width=80.0, height=80.0, hole=5.0, pitch=7.0, corner=3.4) -> bytes:
+    """A fan grille: a hex (staggered) grid of holes of 7 x 7 rows centred on the plate, a
+    corner hole 5 mm in from each side."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    c = (width / 2, height / 2)
+    dy = pitch * math.sqrt(3) / 2
+    for j in range(-3, 4):
+        off = pitch / 2 if j % 2 else 0.0
+        for i in range(-3, 4 if not j % 2 else 3):
+            m.add_circle((c[0] + i * pitch + off, c[1] + j * dy), hole / 2)
+    for sx in (5, width - 5):
+        for sy in (5, height - 5):
+            m.add_circle((sx, sy), corner / 2)
+    return _bytes(doc)
+
+
+def slot_panel(width=150.0, height=60.0, count=6, pitch=20.0, length=30.0, slot=6.0) -> bytes:
+    """A panel with a row of vertical slots centred on it."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for k in range(count):
+        _slot(m, width / 2 + (k - (count - 1) / 2) * pitch, height / 2, length, slot)
+    return _bytes(doc)
+
+
+def front_panel(width=120.0, height=60.0, pot=7.0, pitch=30.0, corner=3.2) -> bytes:
+    """A front panel as panel programs export it: the outline on layer OUTLINE, the holes on
+    layer HOLES -- three pot holes in a row centred on the panel, a corner hole in each
+    corner."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height, "OUTLINE")
+    for k in (-1, 0, 1):
+        m.add_circle((width / 2 + k * pitch, height / 2), pot / 2, dxfattribs={"layer": "HOLES"})
+    for sx in (5, width - 5):
+        for sy in (5, height - 5):
+            m.add_circle((sx, sy), corner / 2, dxfattribs={"layer": "HOLES"})
+    return _bytes(doc)
+
+
+def lcd_panel(width=140.0, height=90.0, screw=3.0, spacing_x=75.0, spacing_y=31.0) -> bytes:
+    """A panel for a 16x2 LCD: the window (71 x 24) above the centre, its four screws round
+    it."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    c = (width / 2, height / 2 + 10)
+    _rect(m, c[0] - 35.5, c[1] - 12, 71, 24)
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            m.add_circle((c[0] + sx * spacing_x / 2, c[1] + sy * spacing_y / 2), screw / 2)
+    return _bytes(doc)
+
+
+def comb(width=120.0, height=30.0, count=7, pitch=15.0, notch=6.0, hole=4.0) -> bytes:
+    """A cable comb: ``count`` notches 15 mm deep in its top edge, centred; a mounting hole
+    10 mm in from each end."""
+    doc, m = _doc()
+    pts = [(0, 0), (width, 0), (width, height)]
+    xs = [width / 2 + (k - (count - 1) / 2) * pitch for k in range(count)]
+    for x in reversed(xs):
+        pts += [(x + notch / 2, height), (x + notch / 2, height - 15),
+                (x - notch / 2, height - 15), (x - notch / 2, height)]
+    pts.append((0, height))
+    m.add_lwpolyline(pts, close=True)
+    for x in (10, width - 10):
+        m.add_circle((x, 7), hole / 2)
+    return _bytes(doc)
+
+
+def arduino(width=100.0, height=70.0, hole=3.2) -> bytes:
+    """An Arduino Uno plate: the board's four holes where the board puts them (no pattern),
+    the board centred on the plate."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    ox, oy = width / 2 - 68.58 / 2, height / 2 - 53.34 / 2
+    for x, y in ((13.97, 2.54), (15.24, 50.8), (66.04, 7.62), (66.04, 35.56)):
+        m.add_circle((ox + x, oy + y), hole / 2)
+    return _bytes(doc)
+
+
+def brackets(leg=40.0, width=15.0, hole=4.0, gap=10.0) -> bytes:
+    """A mirrored pair of L-brackets (one drawn, the other its mirror image about x = 0),
+    a hole in each leg."""
+    doc, m = _doc()
+    for s in (1, -1):
+        x0 = s * gap / 2
+        pts = [(x0, 0), (x0 + s * leg, 0), (x0 + s * leg, width), (x0 + s * width, width),
+               (x0 + s * width, leg), (x0, leg)]
+        m.add_lwpolyline(pts if s > 0 else pts[::-1], close=True)
+        m.add_circle((x0 + s * (leg + width) / 2, width / 2), hole / 2)
+        m.add_circle((x0 + s * width / 2, (leg + width) / 2), hole / 2)
+    return _bytes(doc)
+
+
+# name: (function, [(label, param pattern, current value, new value, keyword)])
+DRAWINGS = {
+    "nema17": (nema17, [
+        ("plate width", r"width", 60, 70, "width"),
+        ("motor hole spacing", r"motor_holes_(pitch|spacing)", 31, 26, "spacing"),
+        ("motor hole size", r"motor_holes_d", 3.4, 3.5, "hole"),
+        ("bore size", r"bore_d", 22, 24, "bore"),
+    ]),
+    "rpi": (rpi, [
+        ("plate width", r"width", 160, 180, "width"),
+        ("hole size", r"holes_d", 2.7, 2.5, "hole"),
+        ("pitch x", r"holes_pitch_x", 58, 60, "pitch_x"),
+        ("pitch y", r"holes_pitch_y", 49, 45, "pitch_y"),
+    ]),
+    "flange": (flange, [
+        ("body diameter", r"diameter", 100, 110, "diameter"),
+        ("bolt count", r"bolt_circle_n", 8, 6, "count"),
+        ("pitch circle", r"bolt_circle_pcd", 75, 80, "pcd"),
+        ("hole size", r"bolt_circle_d", 8, 9, "hole"),
+        ("bore size", r"bore_d", 40, 42, "bore"),
+    ]),
+    "grille": (grille, [
+        ("plate width", r"width", 80, 90, "width"),
+        ("grille pitch", r"\w*pitch\w*", 7, 8, "pitch"),
+        ("grille hole size", r"holes_d", 5, 4, "hole"),
+        ("corner hole size", r"corner_hole_d", 3.4, 3, "corner"),
+    ]),
+    "slot_panel": (slot_panel, [
+        ("panel width", r"width", 150, 170, "width"),
+        ("slot pitch", r"slots_pitch", 20, 22, "pitch"),
+        ("slot count", r"slots_n", 6, 5, "count"),
+        ("slot length", r"slots_length", 30, 32, "length"),
+    ]),
+    "front_panel": (front_panel, [
+        ("panel width", r"width", 120, 140, "width"),
+        ("pot pitch", r"holes_pitch", 30, 25, "pitch"),
+        ("pot size", r"holes_d", 7, 9.5, "pot"),
+        ("corner hole size", r"corner_hole_d", 3.2, 3.5, "corner"),
+    ]),
+    "lcd_panel": (lcd_panel, [
+        ("panel width", r"width", 140, 160, "width"),
+        ("screw spacing x", r"screw_holes_pitch_x", 75, 80, "spacing_x"),
+        ("screw spacing y", r"screw_holes_pitch_y", 31, 33, "spacing_y"),
+        ("screw size", r"screw_holes_d", 3, 3.4, "screw"),
+    ]),
+    "comb": (comb, [
+        ("notch pitch", r"notches_pitch", 15, 14, "pitch"),
+        ("notch count", r"notches_n", 7, 6, "count"),
+        ("mounting hole size", r"holes_d", 4, 5, "hole"),
+        ("comb width", r"width", 120, 140, "width"),
+    ]),
+    "arduino": (arduino, [
+        ("plate width", r"width", 100, 120, "width"),
+        ("hole size", r"holes?_d", 3.2, 3.4, "hole"),
+    ]),
+    "brackets": (brackets, [
+        ("hole size", r"holes?_d", 4, 5, "hole"),
+        ("leg length", r"\w*leg\w*", 40, 50, "leg"),
+    ]),
+}
