@@ -158,11 +158,14 @@ function hoverExtension(hover) {
  * Make an AIDL editor in `parent` (an element with a CSS height; the editor fills it).
  * `onChange(text)` is called with the whole text after each user edit (not after setText);
  * `hover(text, pos)` resolves to null or plain text shown in a tooltip; `wrap`: long lines
- * wrap instead of scrolling sideways.
+ * wrap instead of scrolling sideways.  Tab is not bound: it moves the focus to the next control,
+ * as CodeMirror's `indentWithTab` guidance asks of a page a keyboard user must leave
+ * (indent with Ctrl-] and Ctrl-[, Cmd on a Mac); `tabIndents: true` binds it to indent instead
+ * (then Escape, Tab leaves the editor).
  */
 export function createEditor(parent, {
   doc = "", onChange = (text) => {}, hover = async (text, pos) => null, readOnly = false,
-  wrap = false,
+  wrap = false, tabIndents = false,
 } = {}) {
   const extensions = [
     lineNumbers(),
@@ -186,7 +189,7 @@ export function createEditor(parent, {
     lintGutter(),
     keymap.of([
       ...closeBracketsKeymap, ...defaultKeymap, ...searchKeymap, ...historyKeymap,
-      ...completionKeymap, ...lintKeymap, indentWithTab,
+      ...completionKeymap, ...lintKeymap, ...(tabIndents ? [indentWithTab] : []),
     ]),
     theme,
     EditorState.readOnly.of(!!readOnly),
