@@ -639,41 +639,55 @@ async function refreshFiles() {
     li.appendChild(del); ul.appendChild(li);
   }
 }
-// "Open my drawing": a DXF or SVG opened as an editable design (`aidl import --infer`: its
-// shapes, sizes and params) or as the drawing itself (`Drawing2D`), else kept as a file
-async function upload() {
+// a file name the server takes: letters, digits, `.`, `_` and `-` (at most 64): `My plate
+// (2).dxf` is sent as `My_plate_2_.dxf`
+function fileName(name) {
+  const ext = (/\.[A-Za-z0-9]+$/.exec(name) || [""])[0];
+  return (name.slice(0, name.length - ext.length).replace(/[^\w.-]+/g, "_")
+    .slice(0, 64 - ext.length) || "drawing") + ext;
+}
+async function send(f, how) {       // the upload's answer, or {error}
+  const q = how ? `&import=${how}` : "";
+  try {
+    const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`,
+                          { method: "POST", body: f });
+    const doc = await r.json().catch(() => ({}));
+    return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
+  } catch (e) { return { error: String(e.message || e) }; }
+}
+
+// "Your drawings": a file kept for the program (Drawing2D("name.dxf"), import "name.aidl")
+$("upload").onchange = async () => {
   const f = $("upload").files[0];
   if (!f) return;
-  // the server takes letters, digits, `.`, `_` and `-` (at most 64): `My plate (2).dxf` is
-  // kept as `My_plate_2_.dxf`
-  const ext = (/\.[A-Za-z0-9]+$/.exec(f.name) || [""])[0];
-  const name = (f.name.slice(0, f.name.length - ext.length).replace(/[^\w.-]+/g, "_")
-    .slice(0, 64 - ext.length) || "drawing") + ext;
-  const drawing = /\.(dxf|svg)$/i.test(name);
-  const how = drawing ? document.querySelector('input[name="open-as"]:checked').value : "file";
-  const said = $("upload-status");
-  said.textContent = `reading ${name}…`;
-  let doc = {}, r = null;
-  try {
-    const q = how === "file" ? "" : `&import=${how}`;
-    r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(name)}${q}`, { method: "POST", body: f });
-    doc = await r.json().catch(() => ({}));
-  } catch (e) { doc = { error: String(e.message || e) }; }
+  const doc = await send(f, null);
   $("upload").value = "";
-  if (!r || !r.ok) said.textContent = doc.error || `the upload failed (HTTP ${r ? r.status : "no answer"})`;
-  else if (doc.import_error) said.textContent = `${doc.name} is kept, but cannot be opened: ${doc.import_error}`;
-  else if (doc.program) {
-    $("title").textContent = doc.name;
-    state.entry = null;
-    setProgram(doc.program, {});
-    said.textContent = `opened ${doc.name} ${how === "infer" ? "as an editable design" : "as a drawing"}`
-      + (doc.notes && doc.notes.length ? `; ${doc.notes.join("; ")}` : "");
-  } else said.textContent = `${doc.name} is kept for your program`;
+  $("upload-status").textContent = doc.error || `${doc.name} is kept for your program`;
+  refreshFiles(); schedule(0);
+};
+
+// "Open my drawing": a DXF or SVG opened as an editable design (`aidl import --infer`: its
+// shapes, sizes and params as sliders) or as the drawing itself (`Drawing2D`)
+$("open-drawing").onclick = () => { $("drawing-status").textContent = ""; $("drawing-dialog").showModal(); };
+$("drawing-file").onchange = async () => {
+  const f = $("drawing-file").files[0];
+  if (!f) return;
+  const how = document.querySelector('input[name="open-as"]:checked').value;
+  const said = $("drawing-status");
+  said.textContent = `reading ${f.name}…`;
+  const doc = await send(f, how);
+  $("drawing-file").value = "";
   window.studio.uploaded = doc;
+  if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
+  $("drawing-dialog").close();
+  $("title").textContent = doc.name;
+  state.entry = null;
+  setProgram(doc.program, {});
+  $("upload-status").textContent = `opened ${doc.name} ${how === "infer" ? "as an editable design" : "as a drawing"}`
+    + (doc.notes && doc.notes.length ? `; ${doc.notes.join("; ")}` : "");
   refreshFiles();
-  if (!doc.program) schedule(0);
-}
-$("upload").onchange = upload;
+  $("params-summary").focus();
+};
 
 // ------------------------------------------------------------------ start
 let editor = null;
@@ -694,7 +708,7 @@ async function start() {
   window.addEventListener("pagehide", () =>
     navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
   if (!EMBED) {
-    editor = createEditor($("code"), { doc: "", hover, wrap: true,
+    editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
       onChange: (text) => { state.source = text; schedule(250); } });
     editor.goto = (line, col) => {
       const doc = editor.view.state.doc;
