@@ -60,8 +60,9 @@ function onKey(e) {
   const a = arrows[e.key];
   if (a && e.shiftKey) c._pan(a[0] * pan, a[1] * pan);
   else if (a) { if (a[0]) c._rotateLeft(a[0] * turn); else c._rotateUp(a[1] * turn); }
-  else if (e.key === "+" || e.key === "=") c._dollyIn(1.2);
-  else if (e.key === "-" || e.key === "_") c._dollyOut(1.2);
+  // (OrbitControls' _dollyOut(k) divides the distance by k: closer; _dollyIn(k) multiplies)
+  else if (e.key === "+" || e.key === "=") c._dollyOut(1.25);
+  else if (e.key === "-" || e.key === "_") c._dollyIn(1.25);
   else if (e.key === "f" || e.key === "F" || e.key === "Home") { frame(); e.preventDefault(); return; }
   else return;
   e.preventDefault();
