@@ -488,6 +488,11 @@ async function openGallery() {
       c.dataset.text = `${e.title} ${e.purpose} ${(e.tags || []).join(" ")} ${e.kind}`.toLowerCase();
       const img = document.createElement("img");
       img.loading = "lazy"; img.alt = e.title; img.src = `/api/thumb/${e.id}.svg`;
+      // a busy studio answers 503 (nothing kept): ask again a few times, later each time
+      let tries = 0;
+      img.onerror = () => {
+        if (++tries <= 4) setTimeout(() => { img.src = `/api/thumb/${e.id}.svg?try=${tries}`; }, 1500 * tries);
+      };
       const kind = document.createElement("div"); kind.className = "kind"; kind.textContent = e.kind;
       const t = document.createElement("strong"); t.textContent = e.title;
       const p = document.createElement("p"); p.textContent = e.purpose;
