@@ -9,14 +9,17 @@ Routes:
 * ``GET /``, ``GET /embed``: the page (the embed shows one design's picture and sliders, for an
   ``<iframe>`` on another site).  ``GET /static/NAME``: its files, from a table read at start-up
   (no path is joined onto the filesystem).
-* ``GET /api/config``: formats, machines, limits, whether "Describe the part" is on.
+* ``GET /api/config``: formats (``available``: this server can make it), machines, PDF paper
+  sizes, limits, whether "Describe the part" is on.
 * ``GET /api/gallery``, ``GET /api/gallery/ID``, ``GET /api/thumb/ID.svg``: the gallery.
 * ``GET /api/docs?name=NAME``: ``aidl docs NAME`` (the code pane's hover).
 * ``POST /api/session``, ``POST /api/close``: a tab's session (its upload folder).
 * ``POST /api/upload?sid=..&name=..`` (the file as the body), ``GET /api/files?sid=..``,
   ``POST /api/delete``: a session's drawings and imports.  ``&import=infer`` (or
   ``pieces``) on the upload of a ``.dxf``/``.svg`` also answers the drawing as a program to
-  edit (``aidl import [--infer]``): ``program`` and ``notes``, or ``import_error``.
+  edit (``aidl import [--infer]``): ``program`` and ``notes``, or ``import_error``;
+  ``&import=drawing``: a program that uses it as it is (``Drawing2D``).
+* ``GET /favicon.ico``: the page's icon.
 * ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
   params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
@@ -67,7 +70,7 @@ from .store import StoreDown, down, limiter_storage, open_store
 TYPES = {"html": "text/html; charset=utf-8", "js": "text/javascript; charset=utf-8",
          "css": "text/css; charset=utf-8", "json": "application/json",
          "txt": "text/plain; charset=utf-8", "md": "text/plain; charset=utf-8",
-         "svg": "image/svg+xml", "png": "image/png"}
+         "svg": "image/svg+xml", "png": "image/png", "ico": "image/x-icon"}
 MAX_VALUES = 256            # customizer values in one request
 MAX_VALUE = 256             # characters of one value (and of a name)
 MAX_BODY = MAX_SOURCE_BYTES + 65_536
@@ -359,7 +362,12 @@ def _page_routes(st: Studio) -> list[Route]:
         return Response(data, media_type=kind, headers={"Cache-Control": "public, max-age=3600",
                                                         "X-Content-Type-Options": "nosniff"})
 
-    return [Route("/", index), Route("/embed", embed), Route("/static/{name:path}", static)]
+    async def favicon(request):         # browsers ask for it whatever the page links
+        return Response(st.static["favicon.ico"], media_type="image/x-icon",
+                        headers={"Cache-Control": "public, max-age=86400"})
+
+    return [Route("/", index), Route("/embed", embed), Route("/static/{name:path}", static),
+            Route("/favicon.ico", favicon)]
 
 
 def _reference_routes(st: Studio, guarded) -> list[Route]:
@@ -374,9 +382,10 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
             if (f.module, f.function) not in seen:
                 seen.add((f.module, f.function))
                 formats.append({"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
-                                "assembled": f.assembled})
+                                "assembled": f.assembled, "available": compiler.can_make(k)})
         return JSONResponse({
             "formats": formats,
+            "pages": compiler.PAGES,
             "machines": list(compiler.MACHINES),
             "model": {"model": settings.model.get("model")} if settings.model else None,
             "limits": {"source_bytes": MAX_SOURCE_BYTES, "rate": settings.rate,
@@ -458,9 +467,9 @@ def _session_routes(st: Studio, guarded) -> list[Route]:
                 raise Refused(f"an upload has at most {MAX_UPLOAD:,} bytes")
         doc = st.folders.upload(sid, name, bytes(body))
         how = request.query_params.get("import")
-        if how in ("infer", "pieces"):
+        if how in ("infer", "pieces", "drawing"):
             got = await st.compile(("import", st.folders.folder(sid), doc["name"],
-                                    how == "infer"), sid)
+                                    "drawing" if how == "drawing" else how == "infer"), sid)
             if "program" in got:
                 doc.update(program=got["program"], notes=got["notes"])
             else:

@@ -20,7 +20,8 @@ Requests (tuples, the first item names the kind):
   ``view`` of this program and these values drew (no second compile), else compiled.
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
 * ``("import", folder, name, infer)``: the uploaded drawing ``name`` of the session's folder
-  as a program (``aidl import [--infer]``): ``{"program", "notes"}`` or ``{"error"}``.
+  as a program (``aidl import [--infer]``; ``infer="drawing"``: a program that uses the
+  drawing as it is, ``Drawing2D``): ``{"program", "notes"}`` or ``{"error"}``.
 
 Answers are dicts or tuples; a mistake in the program is a diagnostic, a bug an ``E0900``,
 never an exception through the pipe.
@@ -29,6 +30,7 @@ from __future__ import annotations
 
 import io
 import os
+import re
 import zipfile
 from collections import OrderedDict
 
@@ -39,6 +41,16 @@ MAX_CLAMPS = 4                  # compiles that move values back into dependent 
 RETIRE_RSS = 900 << 20          # bytes: a worker past this answers, then is replaced
 MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
+PAGES = ("A4", "Letter", "A3", "Legal")     # PDF paper a download may tile over (+ -landscape)
+
+
+def can_make(fmt: str) -> bool:
+    """Whether this installation writes format ``fmt`` (``step``, ``.step``, ...): STEP needs
+    OCP (the ``step`` extra); the page offers only the formats this is true of."""
+    if str(fmt).lower().lstrip(".") in ("step", "stp"):
+        import importlib.util
+        return importlib.util.find_spec("OCP") is not None
+    return True
 
 
 SESSION = "SESSION"              # what a visitor sees of the session's folder
@@ -49,11 +61,14 @@ def hide_paths(obj, folder: str):
     ``folder`` written ``SESSION`` in every string (spans' ``file``, labels, messages, hints,
     rendered texts, the SVG) and the studio's data folder above it ``SESSION/..``: no server
     path reaches a visitor (docs/studio.md).  Bytes (a download) are left as they are."""
+    from ..diagnostics import _stdlib_roots
     folder = os.path.normpath(str(folder))
     pairs = []
     for f in dict.fromkeys((folder, os.path.realpath(folder))):
         pairs.append((f, SESSION))
         pairs.append((os.path.dirname(f), SESSION + "/.."))
+    # a standard-library file as a program imports it (std/gears.aidl), as messages show it
+    pairs[:0] = [(r, "std/") for r in _stdlib_roots()]
 
     def fix(v):
         if isinstance(v, str):
@@ -125,6 +140,8 @@ def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
     from ..sources import MAX_DRAWING_BYTES
     if not name.lower().endswith((".dxf", ".svg")):
         return {"error": f"`{name}` is not a .dxf or .svg drawing"}
+    if infer == "drawing":
+        return drawing_program(folder, name)
     try:
         fd = open_beneath(folder, name)
         try:
@@ -140,6 +157,44 @@ def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
                          + (f" (help: {e.hint})" if e.hint else "")}
     return {"program": text,
             "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in notes]}
+
+
+def drawing_program(folder: str, name: str) -> dict:
+    """A program that uses the upload ``name`` as it is (``Drawing2D``): a ``solid`` of its
+    closed outlines, or a ``drawing`` (lines only) when it has open paths or nothing closed;
+    its size in a comment.  ``{"program", "notes"}`` or ``{"error"}`` as :func:`import_upload`."""
+    from ..drawing.model import DrawingError
+    from ..drawing.read import read_drawing
+    from ..files import open_beneath, read_regular
+    from ..sources import MAX_DRAWING_BYTES
+    try:
+        fd = open_beneath(folder, name)
+        try:
+            data = read_regular(fd, MAX_DRAWING_BYTES, name)
+        finally:
+            os.close(fd)
+        d = read_drawing(data, name)
+    except OSError as e:
+        return {"error": f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}"}
+    except DrawingError as e:
+        return {"error": f"{name}: error[{e.code}]: {e.message}"
+                         + (f" (help: {e.hint})" if e.hint else "")}
+    import json
+    import re
+    closed = bool(d.outlines or d.circles or d.ellipses)
+    kind = "solid" if closed and not d.paths else "drawing"
+    box = d.box()
+    size = f", {box[2] - box[0]:.6g} x {box[3] - box[1]:.6g} mm" if box else ""
+    ident = re.sub(r"\W", "_", os.path.splitext(name)[0]).strip("_").lower() or "part"
+    if not ident[0].isalpha():
+        ident = "part_" + ident
+    why = "" if kind == "solid" else \
+        "\n# a drawing (lines only): it has open paths, so it is engraved or drawn, not cut out"
+    program = (f"# {name} as it is{size} (Drawing2D: its curves exactly, where the file puts "
+               f"them){why}\n{kind} {ident} {{\n"
+               f"    shape = Drawing2D({json.dumps(name)})\n}}\n")
+    return {"program": program,
+            "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in d.notes][:8]}
 
 
 def out_of_memory_answer(request) -> dict:
@@ -322,7 +377,10 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     0.1-100: the sheet's thickness for the 3D formats), ``machine`` (``laser``, ``router``,
     ``plotter``: the G-code profile), ``assembled`` (bool: the 3D formats with every part
     placed), ``sheet`` ([width, height] mm with ``layout`` true: the cutting sheet, every part
-    nested on sheets of that size; several sheets come as a ZIP of one file per sheet)."""
+    nested on sheets of that size; several sheets come as a ZIP of one file per sheet),
+    ``page`` (PDF: the paper it is tiled over 1:1, ``A4``, ``Letter-landscape``, ... of
+    :data:`PAGES`, as ``aidl render --page``).  G-code without ``layout`` has the drawing's
+    lower-left corner on the machine's origin (the sheet's corner: no negative coordinate)."""
     from .. import api
     from ..output import ASSEMBLED_FORMATS, FORMATS
     from ..output.part.part import MissingDependency, OutputError
@@ -338,6 +396,7 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
         if machine is not None and machine not in MACHINES:
             raise ValueError(f"machine expects one of {', '.join(MACHINES)}, got `{machine}`")
         assembled = bool(settings.get("assembled")) and suffix in ASSEMBLED_FORMATS
+        page = _page(settings.get("page")) if suffix == ".pdf" else None
         layout = bool(settings.get("layout")) and FORMATS[suffix].cut
         sheet = settings.get("sheet") or [600, 400]
         if layout:
@@ -354,7 +413,7 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
                 "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
                                 for d in res.diagnostics_json() if d["severity"] == "error"][:8]}
     name = res.compiled.model.root.name if res.compiled.model is not None else "part"
-    options = {"thickness": thickness, "machine": machine, "assembled": assembled}
+    options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
     media = FORMATS[suffix].media
     try:
         if layout:
@@ -367,6 +426,8 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
                 for i, data in enumerate(sheets, 1):
                     z.writestr(f"{name}-sheet-{i}{suffix}", data)
             return buf.getvalue(), f"{name}-sheets.zip", "application/zip"
+        if FORMATS[suffix].module == "gcode" and not assembled:
+            return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
         return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
     except (MissingDependency, OutputError, ValueError) as e:
         if getattr(e, "budget", None) is not None:      # bounded work or memory: E0304
@@ -376,6 +437,56 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
                     "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
                                     for d in res.diagnostics_json() if d["severity"] == "error"]}
         return {"error": str(e)}
+
+
+def _page(v) -> str | None:
+    """The PDF paper of a download's settings (``A4``, ``letter-landscape``: any case), or None;
+    raises :class:`ValueError` naming the choices."""
+    if v is None or v == "":
+        return None
+    text = str(v)[:40]
+    base = text.lower().removesuffix("-landscape")
+    if base not in (p.lower() for p in PAGES):
+        raise ValueError(f"page expects one of {', '.join(PAGES)} (or -landscape), got `{text}`")
+    return text
+
+
+def at_origin(output, by=(0.0, 0.0)):
+    """``output`` moved so that its lower-left corner (the exact bounding box of every cut
+    and stroke) is at ``by`` (mm; default (0, 0))."""
+    from ..output import Output
+    from ..output.fabrication.layout import Motion
+    boxes = [s.box() for p in output.parts for lp in p.loops for s in lp.segments]
+    boxes += [s.box() for st in output.engrave for s in st.segments]
+    if not boxes:
+        return output
+    x0, y0 = min(b[0] for b in boxes), min(b[1] for b in boxes)
+    m = Motion(0.0, (x0, y0), by)
+    return Output([m.part(p) for p in output.parts], [m.stroke(st) for st in output.engrave],
+                  output.title, None, None)
+
+
+_XY = re.compile(r"(?<![A-Z])([XY])(-?\d+(?:\.\d*)?)")
+
+
+def gcode_at_origin(output, kerf, suffix: str, options: dict) -> bytes:
+    """The G-code of ``output`` (offset by the ``kerf``, :func:`~..output.for_cutting`) with
+    the job's lower-left corner on the machine's origin, the sheet's corner: the drawing's
+    box at (0, 0), then moved again by what the tool path reaches past it (a router's tool
+    radius, a lead-in), so that no X or Y of the job is negative."""
+    from ..output import Options, encode, for_cutting
+    cut = for_cutting(output, kerf)
+    data = encode(at_origin(cut), suffix, Options(**options))
+    lows = {"X": 0.0, "Y": 0.0}
+    for line in data.decode("ascii", "replace").splitlines():
+        code = line.split(";", 1)[0].split("(", 1)[0].upper()
+        if not code.startswith(("G0", "G1", "G2", "G3")):
+            continue
+        for axis, v in _XY.findall(code):
+            lows[axis] = min(lows[axis], float(v))
+    if lows["X"] < 0 or lows["Y"] < 0:
+        data = encode(at_origin(cut, (-lows["X"], -lows["Y"])), suffix, Options(**options))
+    return data
 
 
 def thumbnail(entry_id: str) -> str:

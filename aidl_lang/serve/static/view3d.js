@@ -12,12 +12,19 @@ const host = document.getElementById("viewer3d");
 const state = { renderer: null, scene: null, camera: null, controls: null, root: null,
                 framed: false, seq: 0 };
 // read by the browser test: loads finished, the part names and their colours, the last error
-window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame, clear,
-                 camera: () => state.camera ? state.camera.position.toArray() : null };
+window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame, clear, reach,
+                 framed: 0, camera: () => state.camera ? state.camera.position.toArray() : null };
 
 function init() {
   const r = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   r.setPixelRatio(window.devicePixelRatio || 1);
+  // the keyboard reaches the view too: focused, arrow keys turn it, Shift+arrows pan, + and -
+  // zoom, F (or Home) looks at the whole product again
+  Object.assign(r.domElement, { tabIndex: 0 });
+  r.domElement.setAttribute("role", "img");
+  r.domElement.setAttribute("aria-label", "the assembled product in 3D: arrow keys turn it, "
+    + "Shift and arrow keys pan, + and - zoom, F shows all of it");
+  r.domElement.addEventListener("keydown", onKey);
   host.appendChild(r.domElement);
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
@@ -45,8 +52,46 @@ function resize() {
   state.camera.updateProjectionMatrix();
 }
 
+function onKey(e) {
+  const c = state.controls;
+  if (!c || e.altKey || e.ctrlKey || e.metaKey) return;
+  const turn = Math.PI / 18, pan = 20;          // 10 degrees; 20 pixels
+  const arrows = { ArrowLeft: [1, 0], ArrowRight: [-1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
+  const a = arrows[e.key];
+  if (a && e.shiftKey) c._pan(a[0] * pan, a[1] * pan);
+  else if (a) { if (a[0]) c._rotateLeft(a[0] * turn); else c._rotateUp(a[1] * turn); }
+  // (OrbitControls' _dollyOut(k) divides the distance by k: closer; _dollyIn(k) multiplies)
+  else if (e.key === "+" || e.key === "=") c._dollyOut(1.25);
+  else if (e.key === "-" || e.key === "_") c._dollyIn(1.25);
+  else if (e.key === "f" || e.key === "F" || e.key === "Home") { frame(); e.preventDefault(); return; }
+  else return;
+  e.preventDefault();
+  c.update();
+}
+
+// how far the product reaches across the view: the largest |x| or |y| of its bounding box's
+// corners in normalized device coordinates (1: the pane's edge; more: it runs out of the
+// pane; Infinity: a corner behind the camera); 0 with no model
+function reach() {
+  if (!state.root || !state.camera) return 0;
+  const box = new THREE.Box3().setFromObject(state.root);
+  if (box.isEmpty()) return 0;
+  state.camera.updateMatrixWorld();
+  let most = 0;
+  for (let i = 0; i < 8; i++) {
+    const p = new THREE.Vector3(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+                                i & 4 ? box.max.z : box.min.z);
+    const v = p.clone().applyMatrix4(state.camera.matrixWorldInverse);
+    if (v.z >= 0) return Infinity;
+    p.project(state.camera);
+    most = Math.max(most, Math.abs(p.x), Math.abs(p.y));
+  }
+  return most;
+}
+
 function frame() {    // look at the whole product from above its front-left corner
   if (!state.root) return;
+  window.aidl3d.framed += 1;
   const box = new THREE.Box3().setFromObject(state.root);
   const c = box.getCenter(new THREE.Vector3());
   const r = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
@@ -77,6 +122,7 @@ async function load(url, opts = {}) {   // opts.reframe: a new design, look at a
   try {
     const gltf = await new GLTFLoader().loadAsync(url);
     if (seq !== state.seq) return;               // a newer picture was asked for meanwhile
+    const before = reach();                       // the old model all in view (<= 1)?
     if (state.root) {
       state.scene.remove(state.root);
       state.root.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
@@ -104,7 +150,9 @@ async function load(url, opts = {}) {   // opts.reframe: a new design, look at a
       colours[name] = "#" + colour.getHexString(THREE.SRGBColorSpace);
     });
     state.scene.add(state.root);
-    if (!state.framed) { frame(); state.framed = true; }
+    // a new design is framed; a changed one keeps the camera unless it grew out of the view
+    // (the old model was all in view, the new one is not: not when the user zoomed in)
+    if (!state.framed || (before <= 1 && reach() > 1)) { frame(); state.framed = true; }
     Object.assign(window.aidl3d, { parts, colours, error: null });
     window.aidl3d.loaded += 1;
   } catch (e) {

@@ -149,6 +149,15 @@ function building(on, fresh = false) {
   $("building3d").textContent = "building…";
 }
 
+// a message's place: line:column in the code pane's program, else the file it is in (a
+// standard-library file as the program imports it, std/gears.aidl:298:5), never that file's
+// line numbers as if they were the program's
+function inProgram(span) { return !span.file || /(^|\/)main\.aidl$/.test(span.file); }
+function placeOf(span) {
+  const at = `${span.line}:${span.column}`;
+  return inProgram(span) ? at : `${String(span.file).replace(/^SESSION\//, "")}:${at}`;
+}
+
 function showDiagnostics(diags, error) {
   const ul = $("diagnostics");
   ul.innerHTML = "";
@@ -161,16 +170,17 @@ function showDiagnostics(diags, error) {
   for (const d of diags) {
     const li = document.createElement("li");
     li.className = d.severity;
-    const where = d.span ? `${d.span.line}:${d.span.column} ` : "";
+    const where = d.span ? `${placeOf(d.span)} ` : "";
     li.textContent = `${where}${d.severity}${d.code ? "[" + d.code + "]" : ""}: ${d.message}`;
     if (d.hint) {
       const h = document.createElement("div"); h.className = "hint";
       h.textContent = "help: " + d.hint; li.appendChild(h);
     }
-    if (d.span && editor) li.onclick = () => editor.goto(d.span.line, d.span.column);
+    if (d.span && editor && inProgram(d.span)) li.onclick = () => editor.goto(d.span.line, d.span.column);
+    else li.classList.add("elsewhere");
     ul.appendChild(li);
   }
-  if (editor) editor.setDiagnostics(diags.filter((d) => d.span && (!d.span.file || d.span.file.endsWith("main.aidl")))
+  if (editor) editor.setDiagnostics(diags.filter((d) => d.span && inProgram(d.span))
     .map((d) => ({ from: d.span.line, col: d.span.column, to_line: d.span.end_line,
                    to_col: d.span.end_column, severity: d.severity === "note" ? "info" : d.severity,
                    message: d.message + (d.hint ? "\nhelp: " + d.hint : ""), code: d.code })));
@@ -274,30 +284,77 @@ function showParams(params, clamped) {
   }
 }
 
+// A slider's stops: its grid (min + k step), its two ends and its default, exact: the range
+// input has step="any" and its value is put on the nearest stop, so the end reads 480 when
+// the grid from 0.4 by 0.8 stops at 479.6, and a default of 120 off the grid is reachable.
+// The keys move stop by stop (arrows, Page Up/Down: 10, Home/End: the ends).
+function snap(p, v) {
+  const near = (a, b) => (Math.abs(a - v) <= Math.abs(b - v) ? a : b);
+  let best = p.min;
+  if (p.step > 0) {
+    let g = p.min + Math.round((v - p.min) / p.step) * p.step;
+    if (g > p.max) g -= p.step;
+    best = near(Math.max(g, p.min), best);
+  }
+  best = near(p.max, best);
+  if (typeof p.default === "number" && p.default >= p.min && p.default <= p.max) best = near(p.default, best);
+  return Number(best.toFixed(9));
+}
+function nextStop(p, v, dir) {          // the stop after v in direction dir (+1, -1)
+  const eps = 1e-9 * Math.max(1, Math.abs(v));
+  const cands = [p.min, p.max];
+  if (typeof p.default === "number") cands.push(p.default);
+  if (p.step > 0) {
+    const k = (v - p.min) / p.step;
+    cands.push(p.min + (dir > 0 ? Math.floor(k + 1e-9) + 1 : Math.ceil(k - 1e-9) - 1) * p.step);
+  }
+  const ok = cands.filter((c) => c >= p.min - eps && c <= p.max + eps && (dir > 0 ? c > v + eps : c < v - eps));
+  if (!ok.length) return v;
+  return Number((dir > 0 ? Math.min(...ok) : Math.max(...ok)).toFixed(9));
+}
+function stopKeys(r, apply) {
+  r.addEventListener("keydown", (e) => {
+    const p = r._param;
+    let v = Number(r.value);
+    const k = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 10, PageDown: -10 }[e.key];
+    if (k) { for (let i = 0; i < Math.abs(k); i++) v = nextStop(p, v, Math.sign(k)); }
+    else if (e.key === "Home") v = p.min;
+    else if (e.key === "End") v = p.max;
+    else return;
+    e.preventDefault();
+    if (v !== Number(r.value)) apply(v);
+  });
+}
+
 function control(p) {
   const row = document.createElement("div");
   row.className = "param"; row.dataset.name = p.name;
-  const name = document.createElement("span"); name.className = "name"; name.textContent = p.name;
+  const id = "param-" + p.name.replace(/[^\w-]/g, "_");
+  const name = document.createElement("label"); name.className = "name"; name.textContent = p.name;
+  name.htmlFor = id;
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
   const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", v !== p.default); schedule(30); };
   if (p.kind === "bool") {
-    const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name;
+    const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
     line.appendChild(cb);
   } else if (p.kind === "string") {
-    const t = document.createElement("input"); t.type = "text"; t.name = p.name;
+    const t = document.createElement("input"); t.type = "text"; t.name = p.name; t.id = id;
     t.oninput = () => change(t.value);
     line.appendChild(t);
   } else {
     const r = document.createElement("input");
-    Object.assign(r, { type: "range", name: p.name, min: p.min, max: p.max, step: p.step });
-    r.setAttribute("aria-label", p.name);
+    Object.assign(r, { type: "range", name: p.name, min: p.min, max: p.max, step: "any", id });
+    r._param = p;
     const n = document.createElement("input");
-    Object.assign(n, { type: "number", name: p.name + "-value", step: p.step });
-    r.oninput = () => { n.value = r.value; change(Number(r.value)); };
-    n.onchange = () => { const v = Number(n.value); if (Number.isFinite(v)) { r.value = v; change(v); } };
+    Object.assign(n, { type: "number", name: p.name + "-value", step: "any" });
+    n.setAttribute("aria-label", `${p.name}${p.unit ? ", " + p.unit : ""}`);
+    const put = (v) => { r.value = v; n.value = v; change(v); };
+    r.oninput = () => put(snap(r._param, Number(r.value)));
+    stopKeys(r, put);
+    n.onchange = () => { const v = Number(n.value); if (Number.isFinite(v)) put(v); };
     const u = document.createElement("span"); u.className = "unit";
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
     line.append(r, n, u);
@@ -310,9 +367,9 @@ function setControl(row, p, v) {
   if (p.kind === "bool") inputs[0].checked = !!v;
   else if (p.kind === "string") inputs[0].value = v;
   else {
-    if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max) || String(inputs[0].step) !== String(p.step)) {
-      Object.assign(inputs[0], { min: p.min, max: p.max, step: p.step });
-      inputs[1].step = p.step;
+    inputs[0]._param = p;                   // its stops (a range may follow other params)
+    if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max)) {
+      Object.assign(inputs[0], { min: p.min, max: p.max });
       const u = row.querySelector(".unit");
       if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
     }
@@ -342,9 +399,13 @@ async function load3d() {
   // than the download); a newer picture's request makes this one's answer stale: dropped
   const seq = ++state.glbSeq;
   const shown = window.studio.views;
-  const reframe = state.reframe;
+  // a share link's values are sent once the params are known: its 3D is framed again
+  // until a model with all of them is shown (not left framed on the defaults)
+  const sent = chosen();
+  const withLink = !!state.linkValues && state.params.length > 0;   // the link's values were sent
+  const reframe = state.reframe || !!state.linkValues;
   try {
-    const r = await post("/api/glb", { sid: state.sid, source: state.source, values: chosen(),
+    const r = await post("/api/glb", { sid: state.sid, source: state.source, values: sent,
                                        settings: { thickness: settings().thickness } }, true);
     if (!r.ok) {
       const why = (await r.json().catch(() => ({}))).error || `HTTP ${r.status}`;
@@ -363,6 +424,7 @@ async function load3d() {
     URL.revokeObjectURL(url);
     if (seq !== state.glbSeq || window.aidl3d.loaded === before) return;
     if (reframe) state.reframe = false;
+    if (withLink) state.linkValues = null;
     window.studio.glbs += 1;
     window.studio.glbView = shown;          // the view whose 3D is on the screen
     window.studio.builtAt[shown] = performance.now();
@@ -377,7 +439,8 @@ async function load3d() {
 function showDownloads() {
   const box = $("downloads");
   const order = ["dxf", "svg", "pdf", "gcode", "lbrn2", "plt", "png", "stl", "3mf", "step", "glb"];
-  const formats = [...state.config.formats].sort((a, b) => {
+  // only the formats this server can make (STEP needs the `step` extra on the server)
+  const formats = state.config.formats.filter((f) => f.available !== false).sort((a, b) => {
     const ia = order.indexOf(a.ext), ib = order.indexOf(b.ext);
     return (ia < 0 ? 99 : ia) - (ib < 0 ? 99 : ib);
   });
@@ -399,6 +462,7 @@ async function download(f) {
   $("download-status").textContent = `making ${f.ext.toUpperCase()}…`;
   try {
     const extra = f.cut ? {} : { layout: false, assembled: f.assembled };
+    if (f.ext === "pdf" && $("page").value) extra.page = $("page").value;   // tiled 1:1 on paper
     const { blob, name } = await fetchFile(f.ext, extra);
     const a = document.createElement("a");
     a.href = URL.createObjectURL(blob); a.download = name;
@@ -410,6 +474,7 @@ async function download(f) {
   }
 }
 $("thickness").addEventListener("change", () => { building(true); load3d(); });     // the 3D panels' thickness
+$("fit3d").onclick = () => { if (window.aidl3d) window.aidl3d.frame(); };
 
 // ------------------------------------------------------------------ the gallery
 async function openGallery() {
@@ -423,11 +488,18 @@ async function openGallery() {
       c.dataset.text = `${e.title} ${e.purpose} ${(e.tags || []).join(" ")} ${e.kind}`.toLowerCase();
       const img = document.createElement("img");
       img.loading = "lazy"; img.alt = e.title; img.src = `/api/thumb/${e.id}.svg`;
+      // a busy studio answers 503 (nothing kept): ask again a few times, later each time
+      let tries = 0;
+      img.onerror = () => {
+        if (++tries <= 4) setTimeout(() => { img.src = `/api/thumb/${e.id}.svg?try=${tries}`; }, 1500 * tries);
+      };
       const kind = document.createElement("div"); kind.className = "kind"; kind.textContent = e.kind;
       const t = document.createElement("strong"); t.textContent = e.title;
       const p = document.createElement("p"); p.textContent = e.purpose;
       c.append(img, kind, t, p);
-      c.onclick = () => { dlg.close(); openEntry(e.id); };
+      // the dialog gives the focus back to what opened it; a chosen design's parameters
+      // are where a keyboard user goes next
+      c.onclick = () => { dlg.close(); openEntry(e.id); $("params-summary").focus(); };
       cards.appendChild(c);
     }
   }
@@ -452,6 +524,7 @@ function setProgram(source, values) {
   state.paramKey = "";
   state.lastSvg = null;
   state.reframe = true;
+  state.linkValues = null;                  // (a share link sets its own after this)
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
   state.fitNext = true;                     // the flat view shows all of the new design
   building(true, true);
@@ -571,14 +644,54 @@ async function refreshFiles() {
     li.appendChild(del); ul.appendChild(li);
   }
 }
+// a file name the server takes: letters, digits, `.`, `_` and `-` (at most 64): `My plate
+// (2).dxf` is sent as `My_plate_2_.dxf`
+function fileName(name) {
+  const ext = (/\.[A-Za-z0-9]+$/.exec(name) || [""])[0];
+  return (name.slice(0, name.length - ext.length).replace(/[^\w.-]+/g, "_")
+    .slice(0, 64 - ext.length) || "drawing") + ext;
+}
+async function send(f, how) {       // the upload's answer, or {error}
+  const q = how ? `&import=${how}` : "";
+  try {
+    const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`,
+                          { method: "POST", body: f });
+    const doc = await r.json().catch(() => ({}));
+    return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
+  } catch (e) { return { error: String(e.message || e) }; }
+}
+
+// "Your drawings": a file kept for the program (Drawing2D("name.dxf"), import "name.aidl")
 $("upload").onchange = async () => {
   const f = $("upload").files[0];
   if (!f) return;
-  const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(f.name)}`, { method: "POST", body: f });
-  const doc = await r.json().catch(() => ({}));
-  if (!r.ok) alert(doc.error || `upload failed (HTTP ${r.status})`);
+  const doc = await send(f, null);
   $("upload").value = "";
+  $("upload-status").textContent = doc.error || `${doc.name} is kept for your program`;
   refreshFiles(); schedule(0);
+};
+
+// "Open my drawing": a DXF or SVG opened as an editable design (`aidl import --infer`: its
+// shapes, sizes and params as sliders) or as the drawing itself (`Drawing2D`)
+$("open-drawing").onclick = () => { $("drawing-status").textContent = ""; $("drawing-dialog").showModal(); };
+$("drawing-file").onchange = async () => {
+  const f = $("drawing-file").files[0];
+  if (!f) return;
+  const how = document.querySelector('input[name="open-as"]:checked').value;
+  const said = $("drawing-status");
+  said.textContent = `reading ${f.name}…`;
+  const doc = await send(f, how);
+  $("drawing-file").value = "";
+  window.studio.uploaded = doc;
+  if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
+  $("drawing-dialog").close();
+  $("title").textContent = doc.name;
+  state.entry = null;
+  setProgram(doc.program, {});
+  $("upload-status").textContent = `opened ${doc.name} ${how === "infer" ? "as an editable design" : "as a drawing"}`
+    + (doc.notes && doc.notes.length ? `; ${doc.notes.join("; ")}` : "");
+  refreshFiles();
+  $("params-summary").focus();
 };
 
 // ------------------------------------------------------------------ start
@@ -600,7 +713,7 @@ async function start() {
   window.addEventListener("pagehide", () =>
     navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
   if (!EMBED) {
-    editor = createEditor($("code"), { doc: "", hover, wrap: true,
+    editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
       onChange: (text) => { state.source = text; schedule(250); } });
     editor.goto = (line, col) => {
       const doc = editor.view.state.doc;
@@ -624,6 +737,7 @@ async function start() {
       if (s.machine) $("machine").value = s.machine;
       if (s.layout != null) $("layout").checked = !!s.layout;
       setProgram(String(doc.source || ""), doc.values || {});
+      if (doc.values && Object.keys(doc.values).length) state.linkValues = doc.values;
     } catch (e) {
       status("this link is damaged: it does not hold a design");
     }

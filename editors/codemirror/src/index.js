@@ -43,7 +43,8 @@ const theme = EditorView.theme({
   "&.cm-focused": { outline: "none" },
   ".cm-scroller": { fontFamily: MONO, lineHeight: "1.5", overflow: "auto" },
   ".cm-content": { caretColor: "#24292f" },
-  ".cm-gutters": { backgroundColor: "#f6f8fa", color: "#8c959f", borderRight: "1px solid #e1e4e8" },
+  // line numbers at 5:1 contrast on the gutter (WCAG AA; was #8c959f, 2.85:1)
+  ".cm-gutters": { backgroundColor: "#f6f8fa", color: "#57606a", borderRight: "1px solid #e1e4e8" },
   ".cm-activeLine": { backgroundColor: "#f5f8ff" },
   ".cm-activeLineGutter": { backgroundColor: "#eaeef2", color: "#24292f" },
   "&.cm-focused .cm-selectionBackground, .cm-selectionBackground, ::selection":
@@ -65,7 +66,7 @@ const theme = EditorView.theme({
   ".cm-aidl-number": { color: "#0550ae" },
   ".cm-aidl-unit": { color: "#1a7f37" },
   ".cm-aidl-string": { color: "#0a3069" },
-  ".cm-aidl-comment": { color: "#6e7781", fontStyle: "italic" },
+  ".cm-aidl-comment": { color: "#57606a", fontStyle: "italic" },   // 5.9:1 on the active line
   ".cm-aidl-operator": { color: "#57606a" },
 }, { dark: false });
 
@@ -158,11 +159,15 @@ function hoverExtension(hover) {
  * Make an AIDL editor in `parent` (an element with a CSS height; the editor fills it).
  * `onChange(text)` is called with the whole text after each user edit (not after setText);
  * `hover(text, pos)` resolves to null or plain text shown in a tooltip; `wrap`: long lines
- * wrap instead of scrolling sideways.
+ * wrap instead of scrolling sideways; `label`: the text area's accessible name (screen
+ * readers; it is also a tab stop of its own, tabindex 0).  Tab is not bound: it moves the focus to the next control,
+ * as CodeMirror's `indentWithTab` guidance asks of a page a keyboard user must leave
+ * (indent with Ctrl-] and Ctrl-[, Cmd on a Mac); `tabIndents: true` binds it to indent instead
+ * (then Escape, Tab leaves the editor).
  */
 export function createEditor(parent, {
   doc = "", onChange = (text) => {}, hover = async (text, pos) => null, readOnly = false,
-  wrap = false,
+  wrap = false, tabIndents = false, label = "AIDL program",
 } = {}) {
   const extensions = [
     lineNumbers(),
@@ -186,9 +191,10 @@ export function createEditor(parent, {
     lintGutter(),
     keymap.of([
       ...closeBracketsKeymap, ...defaultKeymap, ...searchKeymap, ...historyKeymap,
-      ...completionKeymap, ...lintKeymap, indentWithTab,
+      ...completionKeymap, ...lintKeymap, ...(tabIndents ? [indentWithTab] : []),
     ]),
     theme,
+    EditorView.contentAttributes.of({ "aria-label": String(label), tabindex: "0" }),
     EditorState.readOnly.of(!!readOnly),
     EditorView.updateListener.of((u) => {
       if (!u.docChanged || !u.transactions.some((tr) => tr.docChanged && !tr.annotation(external))) {
