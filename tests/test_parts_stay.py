@@ -148,3 +148,22 @@ def test_following_w0109s_fix_moves_no_part(lid):
     x0, y0, x1, y1 = after["kit.box.lid"]
     assert hole.bbox == pytest.approx(((x0 + x1) / 2 - 10, (y0 + y1) / 2 - 10,
                                        (x0 + x1) / 2 + 10, (y0 + y1) / 2 + 10), abs=EXACT)
+
+
+def test_two_parts_meet_halfway_and_the_hole_cut_into_one_goes_to_it():
+    """In an assembly, parts related to each other still both move (as before); a hole the
+    assembly cuts into one of them moves to it (before: `a` went 25 mm up to meet the hole
+    halfway, and the parts met at 16.667 / 66.667)."""
+    v = _values(_compile("""
+assembly kit {
+    solid a { body = Rectangle(center=(0, 0), width=40, height=20) }
+    solid b { body = Rectangle(center=(100, 0), width=40, height=20) }
+    hole h { c = Circle(center=(0, 50), radius=3) }
+    RightOf(b, a, gap=10)
+    CenterInside(h, a)
+    CutInto(h, a)
+}
+"""))
+    assert v["kit.a.body.center"] == pytest.approx((25, 0), abs=EXACT)
+    assert v["kit.b.body.center"] == pytest.approx((75, 0), abs=EXACT)
+    assert v["kit.h.c.center"] == pytest.approx((25, 0), abs=EXACT)

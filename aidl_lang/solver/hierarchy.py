@@ -162,7 +162,7 @@ class Solver:
         self.batching = True          # False: plain post-order, one attempt at a time
         self.use_small = True         # small row sets in Python floats (small.py)
         self.any_rigid = any(getattr(t, "rigid", False) for t in model.structures)
-        self.cut_parts = _cut_parts(model)    # CutInto: the parts a hole is placed on
+        self.cut_parts = _cut_parts(model)    # an assembly's parts, beside its holes
         self._not_small: set[int] = set()     # rows small.py does not compile
 
     # ------------------------------------------------------------------ helpers
@@ -657,10 +657,10 @@ class Solver:
 
     def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"
-        frees): ``s``'s own unknowns; and for each child of ``s`` holding a part that a
-        hole cuts into from outside that child (``CutInto(lid_hole, box.lid)`` written in
-        ``s``: the child ``box``), every unknown of that child's subtree held, its frame
-        freed."""
+        frees): ``s``'s own unknowns; and when ``s`` is an assembly that declares a hole
+        (``hole lid_hole {...}`` beside ``box = finger_box(...)``, with ``CutInto(lid_hole,
+        box.lid)``), every unknown of its other children (``box``) held, their frames freed
+        in stage own (relations between parts are met there as before: both move)."""
         first = own([s])
         held = set(first)
         for c in self.cut_parts.get(id(s), ()):
@@ -700,30 +700,17 @@ class Solver:
 
 
 def _cut_parts(model: Model) -> dict[int, list]:
-    """``id(structure)`` -> its children holding a part that a hole outside that child cuts
-    into (``CutInto``): the structure where both meet (their lowest common ancestor) is
-    where the constraints placing the hole on the part are solved.  A hole declared in an
-    assembly without ``CutInto`` (``W0109``, whose fix writes it) makes every other child of
-    that assembly such a part, so that the fix moves nothing."""
+    """``id(assembly)`` -> its children that are parts (not holes), for each assembly that
+    declares a hole: a hole declared in an assembly is placed on a part of it (and cut into
+    it with ``CutInto(lid_hole, box.lid)``, where both meet; without it, ``W0109``, whose
+    fix writes it, so that the fix moves nothing), so those children are held like a
+    structure's own geometry (:meth:`Solver._part_unknowns`)."""
     out: dict[int, list] = {}
     for t in model.structures:
-        q = getattr(t, "cuts_into", None)
-        if q is None:
-            a = t.parent
-            if t.kind in ("hole", "cut") and a is not None and a.kind == "assembly":
-                kids = out.setdefault(id(a), [])
-                for c in a.children.values():
-                    if c.kind not in ("hole", "cut") and all(k is not c for k in kids):
-                        kids.append(c)
-            continue
-        up = {id(a) for a in t.ancestors()}
-        c = q
-        while c.parent is not None and id(c.parent) not in up:
-            c = c.parent
-        if c.parent is not None and not t.is_within(c):
-            kids = out.setdefault(id(c.parent), [])
-            if all(k is not c for k in kids):
-                kids.append(c)
+        a = t.parent
+        if t.kind in ("hole", "cut") and a is not None and a.kind == "assembly" \
+                and id(a) not in out:
+            out[id(a)] = [c for c in a.children.values() if c.kind not in ("hole", "cut")]
     return out
 
 
