@@ -580,7 +580,6 @@ class Solver:
                 self.failed.add(id(self.rows.constraint[r]))
         return False
 
-
     def _features_first(self, s: Structure, local: np.ndarray, order: int, own, frames):
         """Parts stay, features move (issue 73): the stages tried at ``s`` before the
         paper's, when one of ``s``'s constraints relates its own geometry (a part's) to a
@@ -673,7 +672,7 @@ class Solver:
     def _related(self, rows: np.ndarray, held: set) -> bool:
         """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
         and held values do not count)."""
-        free, n, exprs = self.free, self.n_model, self.rows.exprs
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
         for r in rows.tolist():
             vs: set = set()
             row_vars(exprs[r], vs)
@@ -688,9 +687,16 @@ class Solver:
                 return True
         return False
 
+    def _free_list(self) -> list:
+        """:attr:`free` as a list of bools (indexed one at a time in Python), made once."""
+        f = self.__dict__.get("_free")
+        if f is None:
+            f = self._free = self.free.tolist()
+        return f
+
     def _own_rows(self, rows: np.ndarray, held: set) -> np.ndarray:
         """A mask of ``rows``: those that read no unknown outside ``held``."""
-        free, n, exprs = self.free, self.n_model, self.rows.exprs
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
         mask = np.zeros(len(rows), dtype=bool)
         for k, r in enumerate(rows.tolist()):
             vs: set = set()
