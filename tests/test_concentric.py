@@ -59,7 +59,10 @@ def test_concentric_with_a_gear_names_the_member():
 def test_concentric_with_the_named_gear_member():
     r = aidl_lang.compile(source=GEAR.format("g.hub"))
     assert r.ok, [(d.code, d.message) for d in r.errors]
-    assert r.value("a.c.center").mm == pytest.approx((30, -4), abs=1e-9)
+    # the circle is `a`'s own geometry, the gear a child solid: the part stays where it is
+    # written and the gear comes to it (issue 73; before, the circle went to (30, -4))
+    assert r.value("a.c.center").mm == pytest.approx((0, 0), abs=1e-9)
+    assert r.value("a.g.hub.center").mm == pytest.approx((0, 0), abs=1e-9)
 
 
 def test_concentric_with_a_shape_without_center():

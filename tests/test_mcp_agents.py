@@ -302,7 +302,8 @@ async def test_values_list_every_copy_of_a_pattern_at_its_real_origin(tmp_path):
         got = await values("holes", "bolt", "first", "first_pattern", "plate.center")
         bolt = got["bracket.bolt.origin"]
         for k in range(4):
-            assert got[f"bracket.holes[{k}].c.center"] == pytest.approx([-36 + 20 * k, 12])
+            # the plate stays at its written (0, 0) (issue 73): the row starts 0.75 pitch in
+            assert got[f"bracket.holes[{k}].c.center"] == pytest.approx([-30 + 20 * k, 12])
             assert got[f"bracket.holes[{k}].origin"] == pytest.approx([bolt[0] + 20 * k, bolt[1]])
         assert got["bracket.holes[0].c.radius"] == got["bracket.bolt.c.radius"] == 3
         cx, cy = got["bracket.plate.center"]

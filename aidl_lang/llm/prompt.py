@@ -46,9 +46,9 @@ comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
 radians: write `cos(i * 10 deg)`).
 
-Dimensions given to constructors (width, radius, rotation, ...) are held; positions are
-starting guesses that the solver moves to satisfy the constraints; what no constraint pulls
-on stays exactly where it is written (no `Fixed` just in case). A point at a radius and angle
+Constructor dimensions (width, radius, ...) are held; positions are starting guesses: what
+no constraint pulls on stays exactly where it is written; a part stays, its features (holes,
+child solids, pattern targets) are placed on it (no `Fixed` needed). A point at a radius and angle
 from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
 also fit its mirror image). Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates

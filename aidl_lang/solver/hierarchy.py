@@ -10,6 +10,11 @@ only ``S``'s own constraints are solved; everything deeper is held.  When that f
 * stage 2 (geometric deepening), ``d = 1 .. depth``: all frames stay free and all parameters of
   the structures down to depth ``d`` become unknowns, with the constraints at those levels.
 
+Before those stages, when a constraint of ``S`` relates ``S``'s own geometry (a part) to a
+descendant's (a feature: a hole, a child solid, a pattern's target), the part is placed by
+its own constraints and held while the features move (:meth:`Solver._features_first`,
+issue 73: parts stay, features move); only when that fails do the stages above move it.
+
 The solve of ``S`` fails only when stage 2 has reached the bottom of its subtree (then the
 subtree was solved flat and the system is inconsistent or intractable).  Frames are cheaper to
 move than geometry (column scaling), so a solved substructure moves rigidly before it deforms.
@@ -34,7 +39,7 @@ from ..geometry.model import Model, Structure
 from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
-from .holds import build_rows
+from .holds import build_rows, row_vars
 from .system import LINK, SIGN, Rows, pin_values, pinned, pinned_none
 from .reduce import reduce
 from .small import SMALL_ROWS, small_tape
@@ -157,6 +162,7 @@ class Solver:
         self.batching = True          # False: plain post-order, one attempt at a time
         self.use_small = True         # small row sets in Python floats (small.py)
         self.any_rigid = any(getattr(t, "rigid", False) for t in model.structures)
+        self.cut_parts = _cut_parts(model)    # an assembly's parts, beside its holes
         self._not_small: set[int] = set()     # rows small.py does not compile
 
     # ------------------------------------------------------------------ helpers
@@ -534,6 +540,8 @@ class Solver:
                                for i in self.own.get(id(t), ())]
         frames = lambda structs: [i for t in structs if id(t) not in no_frame
                                   for i in self.frame.get(id(t), ())]
+        if s.children and (yield from self._features_first(s, local, order, own, frames)):
+            return True
         # stage 0: only this structure's own unknowns
         last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
         if (yield last):
@@ -571,6 +579,145 @@ class Solver:
             if abs(v) > CHECK_TOL:
                 self.failed.add(id(self.rows.constraint[r]))
         return False
+
+    def _features_first(self, s: Structure, local: np.ndarray, order: int, own, frames):
+        """Parts stay, features move (issue 73): the stages tried at ``s`` before the
+        paper's, when one of ``s``'s constraints relates its own geometry (a part's) to a
+        descendant's (a hole, a child solid, a pattern's target; or a part to a hole that
+        ``CutInto`` cuts into it).  A generator like :meth:`steps`, with its ``own`` and
+        ``frames`` (the unknowns of structures, less those of rigid ones); returns whether
+        ``s`` was solved.
+
+        The part's unknowns (:meth:`_part_unknowns`) are held while the rest moves (stage
+        "features", the paper's two deepenings without the part: the descendants' frames
+        one level deeper at a time, then also the geometry of the descendants that have no
+        frame of their own to move, copies made by a pattern or a mirror).  The first such
+        attempt takes every row of ``s`` (it ends at once when they all hold, as the local
+        stage would); when it fails, the part is placed by the rows that read nothing else
+        (stage "own") and the features stages follow.  So a hole placed on a plate goes to
+        the plate, and the plate stays where it is written.  When no stage succeeds (the
+        part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
+        to change shape, ...) the point is restored and the paper's ladder runs as before,
+        moving the part."""
+        held, first = self._part_unknowns(s, own, frames)
+        if not held or not self._related(local, held):
+            return False
+        stages = self._feature_stages(s, held, own, frames)
+        top = next(stages, None)
+        if top is None:
+            return False
+        if (yield Attempt("features", top[0], top[1], top[2], order=order)):
+            return True
+        saved = None
+        rows = local[self._own_rows(local, held)]
+        if len(rows):
+            cols = self._cols(first, rows)
+            saved = (cols, self.x[cols].copy())
+            att = Attempt("own", 0, rows, cols, order=order)
+            if not (yield att):
+                return False
+            if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
+                                                 order=order)):
+                return True                # the part placed, the first stage again
+        for d, rows, cols in stages:
+            if self.trace.budget_exceeded:
+                break
+            if (yield Attempt("features", d, rows, cols, order=order)):
+                return True
+        if saved is not None:              # back to where the paper's ladder starts
+            cols, values = saved
+            self.x = self.x.copy()
+            self.x[cols] = values
+        return False
+
+    def _feature_stages(self, s: Structure, held: set, own, frames):
+        """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
+        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns."""
+        levels = _levels(s)
+        D = len(levels) - 1
+        upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
+        below = lambda d: [t for lv in levels[1:d + 1] for t in lv]
+        for d in range(1, D + 1):          # descendants translate
+            params = [i for i in frames(below(d)) if i not in held]
+            if params:
+                rows = self.rows_of(upto(d - 1))
+                yield d, rows, self._cols(params, rows)
+        # then the geometry of what cannot translate by itself (a pattern's or a mirror's
+        # copies, held on the frame of the structure that made them) follows: a feature
+        # that can translate is not deformed to spare its part (its `Fixed` frame holds)
+        all_frames = frames(below(D))
+        for d in range(1, D + 1):
+            params = [i for i in all_frames + own([t for t in below(d)
+                                                   if id(t) not in self.frame])
+                      if i not in held]
+            if params:
+                rows = self.rows_of(upto(max(d, D - 1)))
+                yield d, rows, self._cols(params, rows)
+
+    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list]:
+        """(the unknowns the features-first stages hold at ``s``, those its stage "own"
+        frees): ``s``'s own unknowns; and when ``s`` is an assembly that declares a hole
+        (``hole lid_hole {...}`` beside ``box = finger_box(...)``, with ``CutInto(lid_hole,
+        box.lid)``), every unknown of its other children (``box``) held, their frames freed
+        in stage own (relations between parts are met there as before: both move)."""
+        first = own([s])
+        held = set(first)
+        for c in self.cut_parts.get(id(s), ()):
+            sub = list(c.subtree())
+            held.update(frames(sub))
+            held.update(own(sub))
+            first += frames([c])
+        return held, first
+
+    def _related(self, rows: np.ndarray, held: set) -> bool:
+        """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
+        and held values do not count)."""
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        for r in rows.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            inside = outside = False
+            for v in vs:
+                if v < n and free[v]:
+                    if v in held:
+                        inside = True
+                    else:
+                        outside = True
+            if inside and outside:
+                return True
+        return False
+
+    def _free_list(self) -> list:
+        """:attr:`free` as a list of bools (indexed one at a time in Python), made once."""
+        f = self.__dict__.get("_free")
+        if f is None:
+            f = self._free = self.free.tolist()
+        return f
+
+    def _own_rows(self, rows: np.ndarray, held: set) -> np.ndarray:
+        """A mask of ``rows``: those that read no unknown outside ``held``."""
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        mask = np.zeros(len(rows), dtype=bool)
+        for k, r in enumerate(rows.tolist()):
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            mask[k] = not any(v < n and free[v] and v not in held for v in vs)
+        return mask
+
+
+def _cut_parts(model: Model) -> dict[int, list]:
+    """``id(assembly)`` -> its children that are parts (not holes), for each assembly that
+    declares a hole: a hole declared in an assembly is placed on a part of it (and cut into
+    it with ``CutInto(lid_hole, box.lid)``, where both meet; without it, ``W0109``, whose
+    fix writes it, so that the fix moves nothing), so those children are held like a
+    structure's own geometry (:meth:`Solver._part_unknowns`)."""
+    out: dict[int, list] = {}
+    for t in model.structures:
+        a = t.parent
+        if t.kind in ("hole", "cut") and a is not None and a.kind == "assembly" \
+                and id(a) not in out:
+            out[id(a)] = [c for c in a.children.values() if c.kind not in ("hole", "cut")]
+    return out
 
 
 def _count(ids, n: int, which: np.ndarray) -> dict[int, int]:

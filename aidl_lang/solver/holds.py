@@ -26,7 +26,8 @@ def build_rows(model: Model, x: np.ndarray) -> Rows:
 HOLD_MOVES = 1e-6   # a held unknown's share of the null space (norm) above which it moves
 
 
-def _row_vars(e, out: set) -> None:
+def row_vars(e, out: set) -> None:
+    """Add to ``out`` the parameter indices that the residual expression ``e`` reads."""
     stack = [e]
     while stack:
         a = stack.pop()
@@ -72,21 +73,21 @@ def settle_holds(rows: Rows, model: Model, x: np.ndarray) -> Rows:
     is_hold[hold] = True
     is_hold[list(released)] = True
     by_var: dict[int, list] = {}
-    row_vars: dict[int, list] = {}
+    vars_of: dict[int, list] = {}
     for r, e in enumerate(exprs):
         if kind[r] == SIGN or is_hold[r]:
             continue
         vs: set = set()
-        _row_vars(e, vs)
+        row_vars(e, vs)
         vs = [v for v in vs if v < len(free) and free[v]]
         if vs:
-            row_vars[r] = vs
+            vars_of[r] = vs
             for v in vs:
                 by_var.setdefault(v, []).append(r)
     hold_var = []                      # each hold row's unknown (-1: none, a held origin)
     for r in hold:
         vs: set = set()
-        _row_vars(exprs[r], vs)
+        row_vars(exprs[r], vs)
         vs = [v for v in vs if v < len(free) and free[v]]
         hold_var.append(vs[0] if len(vs) == 1 else -1)
     # the rows connected to each hold's unknown
@@ -105,7 +106,7 @@ def settle_holds(rows: Rows, model: Model, x: np.ndarray) -> Rows:
                 if r in rs:
                     continue
                 rs.add(r)
-                for u in row_vars[r]:
+                for u in vars_of[r]:
                     if u not in seen:
                         seen.add(u)
                         stack.append(u)
