@@ -548,9 +548,9 @@ def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
     """``d`` (its open paths on a cut role) with each open path that lies in no outline and
     ends within :data:`~.model.GAP_NOTE` of its start closed across that gap into an outline
     of its own: a part's outline drawn open (Boxes.py leaves its burn-corrected corners so,
-    0.14 mm apart), which a laser cuts out as a part; the loop is joined as the reader joins
-    a gap (:func:`~.chain._meet`: a line's end moved, else a short line added), its small
-    loops where it crosses itself cut off (:func:`~.chain._trim_small_loops`); one that still
+    0.14 mm apart), which a laser cuts out as a part; the gap is bridged by a line (the
+    pieces drawn are kept exactly), small loops where the loop crosses itself cut off
+    (:func:`~.chain._trim_small_loops`); one that still
     crosses itself stays a path.  A ``W0130`` appended to ``notes`` counts them and names
     the largest gap."""
     import dataclasses
@@ -558,7 +558,7 @@ def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
     import numpy as np
 
     from ..geometry.curves import reverse
-    from .chain import OVERSHOOT, _crossing, _meet, _trim_small_loops
+    from .chain import OVERSHOOT, _crossing, _trim_small_loops
     from .model import CLOSE_TOL, GAP_NOTE
     if not d.paths_cut or not d.paths:
         return d
@@ -573,8 +573,7 @@ def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
                                                for P in polys):
             keep.append(p)
             continue
-        a, b = _meet(segs[-1], segs[0])
-        loop = b + segs[1:-1] + a
+        loop = segs + [Line(segs[-1].end, segs[0].start)]
         if _crossing(loop) is not None:
             loop, _k = _trim_small_loops(loop, max(CLOSE_TOL, OVERSHOOT), True)
         o = Outline(loop, p.source)
