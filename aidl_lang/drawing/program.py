@@ -410,10 +410,15 @@ def _copies(loops: list, depths: list, kind: str) -> dict:
     for (role, _key), idx in groups.items():
         if len(idx) < 2 or role == 0:          # islands are written as solids of their own
             continue
-        out[idx[0]] = [loops[i][1][0].start for i in idx]
-        for i in idx[1:]:
-            out[i] = []
+        for k in range(0, len(idx), COPIES_PER_LOOP):
+            run = idx[k:k + COPIES_PER_LOOP]
+            out[run[0]] = [loops[i][1][0].start for i in run]
+            for i in run[1:]:
+                out[i] = []
     return out
+
+
+COPIES_PER_LOOP = 1000      # places in one `for` (a loop holds at most 10 000 items: E0301)
 
 
 def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
