@@ -875,7 +875,14 @@ below 1, too few control points, a count of knots or weights that does not match
 that decrease, a knot repeated so often that the curve breaks apart, a weight not above 0,
 fewer than two fit points or two at one place) is
 skipped naming its handle and line and what is wrong; the rest of the drawing is read (in
-`aidl import`, a layer of only skipped entities is said, not dropped).
+`aidl import`, a layer of only skipped entities is said, not dropped).  Every default
+is said: a DXF with no HEADER section (ezdxf's own default header says metres) is read as
+millimetres; a TEXT or MTEXT of height 0 or negative takes its text style's fixed height,
+else it is skipped; an SVG shape of negative size is not drawn and a negative `rx`/`ry`
+ignored (SVG: `auto`), a size in percent read as the viewBox's size, a viewBox of negative
+width or height left out (not mirrored).  With `--parts`, an open path on a cut role that
+lies in no part is cut, not engraved: closed into a part when it ends within 0.5 mm of its
+start, a cut of the part it reaches, else a sheet-level cut.
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

@@ -2,7 +2,7 @@
 the DXF the imported program renders to, over a corpus of real drawings (issue 59).
 
 Run:  .venv/bin/python benchmarks/import_cut_length.py [--laser FOLDER ...] [FOLDER ...]
-      [--only NAME ...] [--full-checks-below N] [-v]
+      [--only NAME ...] [--parts] [-v]
 
 For each ``.svg``/``.dxf`` (``.gz`` too) of the folders (those after ``--laser`` imported with
 ``--roles laser``, Boxes.py's colours):
@@ -159,7 +159,8 @@ def program_figures(text: str, name: str) -> tuple[bool, float, float, int]:
             _dxf_length(doc, lambda ly: ly.upper().startswith("ENGRAVE")), n_text)
 
 
-def run(folder: pathlib.Path, laser: bool, only: set, verbose: bool) -> collections.Counter:
+def run(folder: pathlib.Path, laser: bool, only: set, verbose: bool,
+        parts: bool = False) -> collections.Counter:
     row: collections.Counter = collections.Counter()
     for p in files_of(folder):
         data, name = read(p)
@@ -168,7 +169,8 @@ def run(folder: pathlib.Path, laser: bool, only: set, verbose: bool) -> collecti
         row["files"] += 1
         t0 = time.perf_counter()
         try:
-            text, _notes = import_drawing(data, name, roles="laser" if laser else None)
+            text, _notes = import_drawing(data, name, roles="laser" if laser else None,
+                                         parts=parts)
         except DrawingError as ex:
             row["refused " + ex.code] += 1
             continue
@@ -198,11 +200,13 @@ def main(argv=None) -> int:
     ap.add_argument("--laser", nargs="*", type=pathlib.Path, default=[],
                     help="folders imported with --roles laser")
     ap.add_argument("--only", nargs="*", default=[], help="file names (no suffix) to measure")
+    ap.add_argument("--parts", action="store_true",
+                    help="import as `aidl import --parts` (one solid per outer loop)")
     ap.add_argument("-v", "--verbose", action="store_true")
     a = ap.parse_args(argv)
     only = set(a.only)
     for f, laser in [(f, False) for f in a.folders] + [(f, True) for f in a.laser]:
-        r = run(f, laser, only, a.verbose)
+        r = run(f, laser, only, a.verbose, a.parts)
         share = r["cut_mm"] / r["file_mm"] if r["file_mm"] else 0.0
         refused = ", ".join(f"{k} {v}" for k, v in sorted(r.items()) if k.startswith("refused"))
         print(f"{f.name + (' (--roles laser)' if laser else '')}: {r['files']} files, "

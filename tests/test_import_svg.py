@@ -249,9 +249,11 @@ def test_many_triangles_end_within_the_budget_and_too_large_says_so(tmp_path):
              'viewBox="0 0 500 500">']
     size = 0
     while size < 640_000:
-        x, y = rnd.uniform(0, 490), rnd.uniform(0, 490)
-        parts.append(f'<path d="M{x:.3f} {y:.3f} L{x + 5:.3f} {y:.3f} L{x + 2:.3f} '
-                     f'{y + 4:.3f} Z"/>')
+        x, y, w = rnd.uniform(0, 490), rnd.uniform(0, 490), rnd.uniform(3, 6)
+        # each of its own size, one side curved (copies of one shape are written once in
+        # a `for`, a loop of lines as one Polygon: a big drawing of those fits a program)
+        parts.append(f'<path d="M{x:.3f} {y:.3f} L{x + w:.3f} {y:.3f} C{x + 4:.3f} '
+                     f'{y + 2:.3f} {x + 3:.3f} {y + 3:.3f} {x + 2:.3f} {y + 4:.3f} Z"/>')
         size += len(parts[-1]) + 1
     parts.append("</svg>")
     (tmp_path / "tri.svg").write_text("\n".join(parts))

@@ -483,10 +483,15 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
         hit = _crossing(segs)
         if hit is not None and opts.close_tol > 0:
             # small loops where it crosses itself (a kerf-corrected inner corner) cut off
-            trimmed, k = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)
-            if k and _crossing(trimmed) is None:
-                segs, hit = trimmed, None
-                crumbs += k
+            bound = max(opts.close_tol, OVERSHOOT)
+            for turn in (segs, segs[len(segs) // 2:] + segs[:len(segs) // 2]):
+                # a small loop across the loop's first point (Boxes.py's key cut-outs
+                # end with one) is found from a start half way round
+                trimmed, k = _trim_small_loops(turn, bound, True)
+                if k and _crossing(trimmed) is None:
+                    segs, hit = trimmed, None
+                    crumbs += k
+                    break
         if hit is not None:          # kept as a stroke; an error where an outline is needed
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue

@@ -138,6 +138,8 @@ _REASON_HINT = {
              "layers",
     "spline": "draw the spline again in the drawing program (its definition gives no curve)",
     "hatch": "",
+    "height": "give the text a height above 0 in the drawing program (or its text style a "
+              "fixed height)",
 }
 
 
@@ -157,7 +159,7 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
     :class:`_EzdxfLog` of ezdxf's own lines)."""
     doc = _open_dxf(data, name)
     notes: list[Note] = []
-    unit, scale = _dxf_unit(doc, name, unit, notes)
+    unit, scale = _dxf_unit(doc, name, unit, notes, _has_header(data))
     layers = None if layer is None else {s.lower() for s in
                                          ([layer] if isinstance(layer, str) else layer)}
     colors = None if color is None else set([color] if isinstance(color, (int, float))
@@ -167,20 +169,34 @@ def _read_dxf_doc(data: bytes, name: str, layer, color, unit: str | None, log) -
         _check_layers(doc, msp, name, layer, layers)
     ctx = _DxfReading(doc, data, name, scale, layers, colors)
     _walk(ctx, list(msp), 0)
+    if ctx.style_height:
+        n = sum(ctx.style_height.values())
+        its = "its" if n == 1 else "their"
+        notes.append(Note("W0130", f"{n} text{'s' if n != 1 else ''} of `{name}` with no "
+                                   f"height of {its} own (" + ", ".join(
+                                       f"{w}: {k}" for w, k in sorted(ctx.style_height.items()))
+                                   + f"): written at {its} text style's fixed height",
+                          "give the text its own height in the drawing program"))
     return _dxf_finish(ctx.pieces, ctx.loops, ctx.circles, ctx.ellipses, ctx.hatch_circles,
                        ctx.texts, notes, ctx.skipped, ctx.seen, ctx.widths, ctx.zs, log, unit,
                        name, ctx.named)
 
 
-def _dxf_unit(doc, name: str, unit: str | None, notes: list) -> tuple[str, float]:
+def _dxf_unit(doc, name: str, unit: str | None, notes: list,
+              header: bool = True) -> tuple[str, float]:
     """The drawing's unit and its millimetres: ``unit`` when given (``units=``), else the
-    header's ``$INSUNITS`` (:data:`INSUNITS_MM`; 0, unitless, is millimetres with a note in
-    ``notes``).  Raises :class:`DrawingError` ``E0130`` for an unknown ``$INSUNITS``."""
+    header's ``$INSUNITS`` (:data:`INSUNITS_MM`).  A file that gives no unit is read as
+    millimetres with a note in ``notes``: ``$INSUNITS`` 0 (unitless) or absent, or no HEADER
+    section at all (``header`` False, :func:`_has_header`: ezdxf then makes a default header
+    of its own, whose ``$INSUNITS`` 6, metres, the file never said).  Raises
+    :class:`DrawingError` ``E0130`` for an unknown ``$INSUNITS``."""
     if unit is not None:
         return unit, UNIT_MM[unit]
-    code = int(doc.header.get("$INSUNITS", 0) or 0)
+    code = int(doc.header.get("$INSUNITS", 0) or 0) if header else 0
     if code == 0:
-        notes.append(Note("W0130", f"`{name}` gives no unit ($INSUNITS = 0): read as "
+        why = "no HEADER section" if not header else (
+            "$INSUNITS = 0" if "$INSUNITS" in doc.header else "no $INSUNITS in its header")
+        notes.append(Note("W0130", f"`{name}` gives no unit ({why}): read as "
                                    f"millimetres", 'give units="in" (or another unit) '
                                                    "to read it in another unit"))
         return "mm", 1.0
@@ -188,6 +204,17 @@ def _dxf_unit(doc, name: str, unit: str | None, notes: list) -> tuple[str, float
         raise DrawingError("E0130", f"`{name}` has an unknown unit ($INSUNITS = {code})",
                            'give units="mm" (or another unit)')
     return INSUNITS_MM[code]
+
+
+def _has_header(data: bytes) -> bool:
+    """Whether the DXF ``data`` (ASCII or binary) has a HEADER section: a ``2`` tag whose
+    value is ``HEADER`` (group code 2, then the name; binary: the code as one or two bytes,
+    the name ended by a zero byte).  ezdxf fills a file without one with its own defaults,
+    so its header cannot tell."""
+    import re
+    if data.startswith(b"AutoCAD Binary DXF"):
+        return re.search(rb"\x02(?:\x00)?HEADER\x00", data) is not None
+    return re.search(rb"(?m)^[ \t]*2[ \t]*\r?\n[ \t]*HEADER[ \t]*\r?$", data) is not None
 
 
 def _check_layers(doc, msp, name: str, layer, layers: set) -> None:
@@ -251,6 +278,7 @@ class _DxfReading:
         self.widths: dict = {}
         self.zs: dict = {}
         self.sizes: dict = {}
+        self.style_height: dict = {}     # texts of no height of their own: why -> count
         self.count = 0
         self.layer = "0"
 
@@ -596,13 +624,22 @@ def _entity_circle(e, ctx: _DxfReading) -> None:
     ctx.circles.append(Circle(c, r))
 
 
+FULL_TURN_DEG = 1e-9     # degrees: an ARC whose end angle is this close to its start is whole
+
+
 def _entity_arc(e, ctx: _DxfReading) -> None:
     """ARC: a piece of one :class:`Arc`, counter-clockwise from its start angle (clockwise
-    seen from an extrusion down); a zero sweep is the whole circle."""
+    seen from an extrusion down).  An ARC whose end angle is its start angle (a whole turn,
+    0 to 360 degrees, or any span of whole turns; within :data:`FULL_TURN_DEG`) is the
+    whole circle: a :class:`Circle`, as a CIRCLE is."""
     c, r, flip = _ocs_circle(e, "ARC", ctx)
-    a1 = math.radians(_finite(e.dxf.start_angle, "an angle"))
-    a2 = math.radians(_finite(e.dxf.end_angle, "an angle"))
-    sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+    d1 = _finite(e.dxf.start_angle, "an angle")
+    d2 = _finite(e.dxf.end_angle, "an angle")
+    span = (d2 - d1) % 360.0
+    if span <= FULL_TURN_DEG or span >= 360.0 - FULL_TURN_DEG:
+        ctx.circles.append(Circle(c, r))
+        return
+    a1, sweep = math.radians(d1), math.radians(span)
     ctx.pieces.append([Arc(c, r, math.pi - a1, -sweep) if flip else Arc(c, r, a1, sweep)])
 
 
@@ -771,12 +808,20 @@ def _entity_hatch(e, ctx: _DxfReading) -> None:
 
 def _entity_text(e, ctx: _DxfReading) -> None:
     """TEXT and MTEXT: their lines into ``texts`` (:func:`_dxf_text`); mirrored text (an
-    extrusion down) is skipped."""
+    extrusion down) is skipped; one whose height is not above 0 takes its style's fixed
+    height (counted for a note), else is skipped (:func:`~.dxf_text.text_height`)."""
+    from .dxf_text import text_height
     t = e.dxftype()
     if t == "TEXT" or e.dxf.hasattr("extrusion"):
         if _ocs_flipped(e):                  # mirrored text: not read
             raise _Skip("mirrored (extrusion down): not read", cls="text")
-    ctx.texts.extend(_dxf_text(e, t, ctx.P, ctx.scale))
+    h, why = text_height(e, t, ctx.doc)
+    if why is not None and h <= 0:
+        raise _Skip(f"{why}, and its text style has no fixed height: not read", cls="height",
+                    named=True)
+    if why is not None:
+        ctx.style_height[why] = ctx.style_height.get(why, 0) + 1
+    ctx.texts.extend(_dxf_text(e, t, ctx.P, ctx.scale, h))
 
 
 # the reader of each entity kind (INSERT is expanded by the walk itself: before the
@@ -971,26 +1016,24 @@ _HALIGN = {0: "start", 1: "middle", 2: "end", 3: "middle", 4: "middle", 5: "midd
 _VALIGN = {0: "baseline", 1: "bottom", 2: "middle", 3: "top"}
 
 
-def _dxf_text(e, t: str, P, scale: float) -> list:
+def _dxf_text(e, t: str, P, scale: float, height: float) -> list:
     """The lines of a TEXT or MTEXT entity as ``(text, position, height, rotation, anchor,
-    valign)`` in mm and radians: the insertion (or alignment) point, the height as the cap
-    height, MTEXT's lines one below the other (5/3 of the height apart, times its line
-    spacing factor)."""
+    valign)`` in mm and radians: its words with their codes decoded
+    (:func:`~.dxf_text.dxf_words`), the insertion (or alignment) point, ``height`` (drawing
+    units) as the cap height, MTEXT's lines one below the other (5/3 of the height apart,
+    times its line spacing factor)."""
     import math as m
+    from .dxf_text import dxf_words
+    lines = dxf_words(e, t)
+    h = float(height) * scale
     if t == "TEXT":
-        text = e.dxf.get("text", "")
-        h = float(e.dxf.get("height", 2.5)) * scale
+        text = lines[0] if lines else ""
         rot = m.radians(float(e.dxf.get("rotation", 0.0)))
         ha, va = int(e.dxf.get("halign", 0)), int(e.dxf.get("valign", 0))
         at = e.dxf.insert if (ha, va) == (0, 0) or not e.dxf.hasattr("align_point") \
             else e.dxf.align_point
         return [(text, P(at), h, rot, _HALIGN.get(ha, "start"), _VALIGN.get(va, "baseline"))] \
             if text.strip() else []
-    try:
-        lines = e.plain_text().splitlines()
-    except Exception:
-        lines = [e.text]
-    h = float(e.dxf.get("char_height", 2.5)) * scale
     try:
         rot = m.radians(float(e.get_rotation()))
     except Exception:

@@ -150,9 +150,27 @@ class _Writer:
         self.cut_paths = 0          # open paths written as through-cuts, and their length
         self.cut_length = 0.0
         self.crossed = 0            # loops on a cut role that cross themselves: engraved
+        self.compact = False        # a big drawing: repeated loops as loops, line loops
+        self.rel = None             # (x, y): points written relative to `p` (a copy's place)
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
+
+    def pt(self, p) -> str:
+        """The point ``p`` as written: ``(x, y)``, or relative to the loop variable ``p``
+        of a copy written once (``(p[0] + 1.5, p[1] - 2)``, ``p``) when :attr:`rel` is the
+        first point of the copy written."""
+        if self.rel is None:
+            return _pt(p)
+        dx, dy = p[0] - self.rel[0], p[1] - self.rel[1]
+        if _num(dx) == "0" and _num(dy) == "0":
+            return "p"
+
+        def rel(i, v):
+            t = _num(v)
+            return f"p[{i}]" if t == "0" else f"p[{i}] - {t[1:]}" if t.startswith("-") \
+                else f"p[{i}] + {t}"
+        return f"({rel(0, dx)}, {rel(1, dy)})"
 
     def chain(self, depth: int, segs: list, closed: bool, prefix: str) -> bool:
         """Statements for a chain of segments sharing end points; False (nothing written)
@@ -164,10 +182,10 @@ class _Writer:
             if pts is None:         # its own control points: a closed Bezier chain
                 ctrl = _bezier_points(segs[0].spans)
                 ctrl[-1] = ctrl[0]
-                out.append(f"{prefix}0 = Bezier(points=[{', '.join(_pt(p) for p in ctrl)}], "
+                out.append(f"{prefix}0 = Bezier(points=[{', '.join(self.pt(p) for p in ctrl)}], "
                            f"closed=true)")
             else:
-                out.append(f"{prefix}0 = Spline(points=[{', '.join(_pt(p) for p in pts)}], "
+                out.append(f"{prefix}0 = Spline(points=[{', '.join(self.pt(p) for p in pts)}], "
                            f"closed=true)")
             for t in out:
                 self.emit(depth, t)
@@ -177,9 +195,9 @@ class _Writer:
         n = len(segs)
         for i, s in enumerate(segs):
             nm = f"{prefix}{i}"
-            start = prev_end if prev_end is not None else _pt(s.start)
+            start = prev_end if prev_end is not None else self.pt(s.start)
             last = closed and i == n - 1
-            end = first_start if last else _pt(s.end)
+            end = first_start if last else self.pt(s.end)
             if isinstance(s, Line):
                 out.append(f"{nm} = Line(start={start}, end={end})")
                 cs, ce = f"{nm}.start", f"{nm}.end"
@@ -187,10 +205,10 @@ class _Writer:
                 if abs(abs(s.sweep) - 2 * math.pi) < 1e-12:
                     return False
                 if s.sweep > 0:
-                    out.append(f"{nm} = Arc(center={_pt(s.center)}, start={start}, end={end})")
+                    out.append(f"{nm} = Arc(center={self.pt(s.center)}, start={start}, end={end})")
                     cs, ce = f"{nm}.start", f"{nm}.end"
                 else:           # an Arc runs counter-clockwise: swap the ends
-                    out.append(f"{nm} = Arc(center={_pt(s.center)}, start={end}, end={start})")
+                    out.append(f"{nm} = Arc(center={self.pt(s.center)}, start={end}, end={start})")
                     cs, ce = f"{nm}.end", f"{nm}.start"
             elif isinstance(s, EllipticArc):
                 if s.whole:
@@ -199,7 +217,7 @@ class _Writer:
                 # piece is written from its end (as an Arc)
                 t0, sw = (s.start_param, s.sweep) if s.sweep > 0 else (s.end_param, -s.sweep)
                 e = s.curve
-                out.append(f"{nm} = Ellipse(center={_pt(e.center)}, rx={_num(e.rx)}, "
+                out.append(f"{nm} = Ellipse(center={self.pt(e.center)}, rx={_num(e.rx)}, "
                            f"ry={_num(e.ry)}, rotation={_num(e.rotation, 0)} rad, "
                            f"start_angle={_num(t0, 0)} rad, end_angle={_num(t0 + sw, 0)} rad)")
                 cs, ce = (f"{nm}.start", f"{nm}.end") if s.sweep > 0 else \
@@ -208,10 +226,10 @@ class _Writer:
                 pts = _spline_points(s, False)
                 if pts is None:     # not through its span ends: its own control points
                     ctrl = _bezier_points(s.spans)
-                    inner = ", ".join([start] + [_pt(p) for p in ctrl[1:-1]] + [end])
+                    inner = ", ".join([start] + [self.pt(p) for p in ctrl[1:-1]] + [end])
                     out.append(f"{nm} = Bezier(points=[{inner}])")
                 else:
-                    inner = ", ".join([start] + [_pt(p) for p in pts[1:-1]] + [end])
+                    inner = ", ".join([start] + [self.pt(p) for p in pts[1:-1]] + [end])
                     out.append(f"{nm} = Spline(points=[{inner}])")
                 cs, ce = f"{nm}.start", f"{nm}.end"
             else:
@@ -278,14 +296,24 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
     used: set = set()
     k = 0
     islands = []
+    copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
+        places = copies.get(k - 1)
+        if places == []:                 # a copy of a loop written before: in its loop
+            continue
+        if places:
+            w.emit(depth + 1, f"for p in [{', '.join(_pt(q) for q in places)}] {{")
+            w.rel, depth = places[0], depth + 1
         if kind == "drawing" or dep == 0:
             _loop(w, depth + 1, segs, f"{tag}{k}_", None)
         elif dep % 2 == 1:
             _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
         else:
             islands.append((segs, k))
+        if places:
+            w.rel, depth = None, depth - 1
+            w.emit(depth + 1, "}")
     # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
@@ -342,6 +370,57 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         w.emit(depth, "}")
 
 
+def _shape_key(segs) -> tuple | None:
+    """A key equal for two loops that are one shape moved (each point within 1e-9 mm of the
+    other's, relative to the loop's first point, pieces of the same kinds in the same order):
+    lines, arcs and spline pieces; None for others (a lone circle is one statement anyway)."""
+    if len(segs) < 2:
+        return None
+    x0, y0 = segs[0].start
+
+    def r(q):
+        return (round((q[0] - x0) * 1e9), round((q[1] - y0) * 1e9))
+    key = []
+    for sg in segs:
+        if isinstance(sg, Line):
+            key.append(("L", r(sg.end)))
+        elif isinstance(sg, Arc):
+            key.append(("A", r(sg.center), r(sg.end), sg.sweep > 0))
+        elif isinstance(sg, Spline):
+            key.append(("S", tuple(r(q) for b in sg.spans for q in b),
+                        tuple(round(h, 12) for h in sg.curve.h)))
+        else:
+            return None
+    return tuple(key)
+
+
+def _copies(loops: list, depths: list, kind: str) -> dict:
+    """The loops of a structure that repeat one shape moved (:func:`_shape_key`), as
+    ``{index of the first: [each copy's first point], index of another copy: []}``: the
+    first is written once in a ``for p in [...]`` loop over the places, relative to ``p``
+    (:meth:`_Writer.pt`), the others not at all.  Copies are grouped by role too (an outer
+    loop, a hole, an island)."""
+    groups: dict = {}
+    for i, ((_tag, segs), dep) in enumerate(zip(loops, depths)):
+        key = _shape_key(segs)
+        if key is not None:
+            role = "outer" if kind == "drawing" or dep == 0 else dep % 2
+            groups.setdefault((role, key), []).append(i)
+    out: dict = {}
+    for (role, _key), idx in groups.items():
+        if len(idx) < 2 or role == 0:          # islands are written as solids of their own
+            continue
+        for k in range(0, len(idx), COPIES_PER_LOOP):
+            run = idx[k:k + COPIES_PER_LOOP]
+            out[run[0]] = [loops[i][1][0].start for i in run]
+            for i in run[1:]:
+                out[i] = []
+    return out
+
+
+COPIES_PER_LOOP = 1000      # places in one `for` (a loop holds at most 10 000 items: E0301)
+
+
 def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
     """The statements of open paths (and loops that cross themselves), ``p1_0 = ...``."""
     for i, p in enumerate(paths):
@@ -380,11 +459,13 @@ def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
     _texts(w, depth, d.texts, f"{prefix}t")
 
 
-def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | None]:
+def _split_parts(d: Drawing, deadline=None,
+                 joined: list | None = None) -> tuple[list[Drawing], Drawing | None]:
     """The separate parts of a sheet: one :class:`Drawing` per outer loop (a loop inside an
     even number of others, islands included) with its holes (the loops just inside it) and
     the paths, ellipses, texts and engravings that lie in it; and what lies in no part (a
-    Drawing, or None)."""
+    Drawing, or None).  An open path on a cut role (``d.paths_cut``) that starts outside
+    every part goes to the part it reaches (:func:`_reached`), appended to ``joined``."""
     loops = [o for o in d.outlines] + list(d.circles)
     segs = [o.segments if isinstance(o, Outline) else [o] for o in loops]
     inside = _containers(segs, deadline)
@@ -413,7 +494,14 @@ def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | No
                 best = i
         return parts[best] if best is not None else loose
     for p in d.paths:
-        owner_of(_probe(p.segments)).paths.append(p)
+        owner = owner_of(_probe(p.segments))
+        if owner is loose and d.paths_cut and p.crossing is None:
+            j = _reached(p, [polys[i] for i in roots])
+            if j is not None:
+                owner = parts[roots[j]]
+                if joined is not None:
+                    joined.append(p)
+        owner.paths.append(p)
     for el in d.ellipses:
         owner_of((el[0], el[1])).ellipses.append(el)
     for t in d.texts:
@@ -435,6 +523,88 @@ def _split_parts(d: Drawing, deadline=None) -> tuple[list[Drawing], Drawing | No
     return out, left
 
 
+def _reached(p: Path, polys: list) -> int | None:
+    """The index of the polygon (a part's outline, sampled) that the open path ``p`` enters
+    (one of its pieces' ends inside it) or comes back to (an end within :data:`GAP_NOTE` of
+    its edge), the nearest first; None when it reaches none."""
+    import numpy as np
+    from .model import GAP_NOTE
+    ends = [s.start for s in p.segments] + [p.end]
+    for i, P in enumerate(polys):
+        if len(P) >= 3 and any(_inside(q, P) for q in ends):
+            return i
+    best = None
+    for i, P in enumerate(polys):
+        if len(P) < 2:
+            continue
+        A, B = P, np.roll(P, -1, axis=0)
+        AB = B - A
+        L2 = np.maximum((AB ** 2).sum(axis=1), 1e-300)
+        for q in (p.start, p.end):
+            t = np.clip(((q[0] - A[:, 0]) * AB[:, 0] + (q[1] - A[:, 1]) * AB[:, 1]) / L2, 0, 1)
+            dist = float(np.min(np.hypot(A[:, 0] + t * AB[:, 0] - q[0],
+                                         A[:, 1] + t * AB[:, 1] - q[1])))
+            if dist <= GAP_NOTE and (best is None or dist < best[0]):
+                best = (dist, i)
+    return None if best is None else best[1]
+
+
+def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
+    """``d`` (its open paths on a cut role) with each open path that lies in no outline and
+    ends within :data:`~.model.GAP_NOTE` of its start closed across that gap into an outline
+    of its own: a part's outline drawn open (Boxes.py leaves its burn-corrected corners so,
+    0.14 mm apart), which a laser cuts out as a part; the gap is bridged by a line (the
+    pieces drawn are kept exactly), small loops where the loop crosses itself cut off
+    (:func:`~.chain._trim_small_loops`); one that still
+    crosses itself stays a path.  A ``W0130`` appended to ``notes`` counts them and names
+    the largest gap."""
+    import dataclasses
+
+    import numpy as np
+
+    from ..geometry.curves import reverse
+    from .chain import OVERSHOOT, _crossing, _trim_small_loops
+    from .model import CLOSE_TOL, GAP_NOTE
+    if not d.paths_cut or not d.paths:
+        return d
+    polys = [np.asarray(Loop(list(o.segments)).points(), dtype=float) for o in d.outlines]
+    polys += [np.asarray(Loop([c]).points(), dtype=float) for c in d.circles]
+    new, keep, gaps = [], [], []
+    for p in d.paths:
+        g = math.dist(p.start, p.end)
+        segs = list(p.segments)
+        if p.crossing is not None or not 0 < g <= GAP_NOTE or len(segs) < 2 or \
+                _length(segs) <= 10 * g or any(len(P) >= 3 and _inside(_probe(segs), P)
+                                               for P in polys):
+            keep.append(p)
+            continue
+        loop = segs + [Line(segs[-1].end, segs[0].start)]
+        if _crossing(loop) is not None:
+            loop, _k = _trim_small_loops(loop, max(CLOSE_TOL, OVERSHOOT), True)
+        o = Outline(loop, p.source)
+        if _crossing(loop) is not None or abs(o.area) <= g * _length(segs):
+            keep.append(p)
+            continue
+        if o.area < 0:
+            o.segments = [reverse(s) for s in reversed(loop)]
+        new.append(o)
+        gaps.append((g, p.end))
+    if not new:
+        return d
+    n = len(new)
+    g, at = max(gaps)
+    notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` on a cut "
+                               f"role {'lies' if n == 1 else 'lie'} in no part and "
+                               f"{'ends' if n == 1 else 'end'} within {GAP_NOTE:g} mm of "
+                               f"{'its' if n == 1 else 'their'} start: closed across the gap "
+                               f"into the outline of a part (the largest gap {g:.3g} mm, at "
+                               f"({at[0]:.6g}, {at[1]:.6g}) mm)",
+                      "close the outline in the drawing program, or give engrave= (by layer "
+                      "or colour) for paths that are to be engraved"))
+    outlines = sorted(list(d.outlines) + new, key=lambda o: -abs(o.area))
+    return dataclasses.replace(d, outlines=outlines, paths=keep)
+
+
 def _engrave_of(d: Drawing) -> Drawing:
     if d.engrave is None:
         d.engrave = Drawing(unit=d.unit)
@@ -450,6 +620,9 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
         c = segs[0]
         w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={_pt(c.center)}, "
                       f"radius={_num(c.radius)})")
+    elif w.compact and len(segs) >= 3 and all(isinstance(s, Line) for s in segs):
+        # a big drawing: a loop of lines as the points of one Polygon
+        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
     elif not w.chain(depth, segs, True, prefix):
         w.notes.append(Note("W0130", "an outline holds a piece no statement writes (a "
                                      "whole circle or ellipse inside a chain): left out"))
@@ -458,13 +631,20 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
 
 
 def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
-               deadline=None) -> tuple[str, list[Note]]:
+               deadline=None, compact: bool = False) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer (``(layer name, Drawing)``, in order),
     and the notes of what was left out.  ``source``: the drawing's file name, for the
     header comment.  ``parts``: a sheet of parts, one ``solid`` per outer loop (its holes,
-    paths, texts and engravings with it) in one ``assembly`` (:func:`_split_parts`)."""
+    paths, texts and engravings with it) in one ``assembly`` (:func:`_split_parts`).
+    ``compact``: a drawing too big to write piece by piece: each loop of lines one
+    ``Polygon``, loops that repeat one shape moved written once in a ``for`` loop over their
+    places (:func:`_copies`), as exact (1e-9 mm)."""
     w = _Writer(deadline)
+    w.compact = compact
     w.emit(0, f"# imported from {source} by `aidl import`: edit freely")
+    if compact:
+        w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
+                  "a `for` over their places)")
     w.emit(0, "units mm")
     items = _layer_items(layers, parts, deadline, source, w.notes)
     multi = len(items) > 1
@@ -496,6 +676,17 @@ def _cut_notes(w: _Writer, source: str) -> None:
                                      f"engraved (`drawing paths`), neither a hole nor a "
                                      f"through-cut", "redraw the loop without the crossing in "
                                      "the drawing program, then import again"))
+
+
+def _say_cuts(notes: list, source: str, paths: list, what: str) -> None:
+    """The ``W0130`` of the open cut ``paths`` of ``source`` that lie in no part: their
+    count, length and ``what`` became of them."""
+    n = len(paths)
+    notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` on a cut "
+                               f"role ({sum(_length(p.segments) for p in paths):.6g} mm) "
+                               f"{what}", "move them into a part in the drawing program, or "
+                                          "give engrave= (by layer or colour) for paths that "
+                                          "are to be engraved"))
 
 
 def layer_names(data: bytes, name: str) -> list[str]:
@@ -596,6 +787,8 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                          close_tolerance=close_tolerance, cut=cut, engrave=engrave,
                          ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
         text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
+        if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
+            text, more = to_program(read, base, parts=parts, deadline=deadline, compact=True)
     except OutOfBudget as ex:
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
@@ -618,11 +811,28 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
     for layer, d in layers:
         kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
+            d = _close_loose_cuts(d, source, notes)
         if parts and kind == "solid":
-            pieces, loose = _split_parts(d, deadline)
+            joined: list = []
+            pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
             for k, pd in enumerate(pieces):
                 items.append(("solid", _ident(f"{base}{k + 1}", used), pd))
+            if joined:
+                _say_cuts(notes, source, joined, "found outside every part but reaching one: "
+                                                 "written as cuts of the part each reaches")
+            cuts = [p for p in loose.paths if p.crossing is None] \
+                if loose is not None and d.paths_cut else []
+            if cuts:            # a cut role's paths in no part: cut by a sheet-level solid
+                loose.paths = [p for p in loose.paths if p.crossing is not None]
+                items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+                              Drawing(unit=d.unit, paths=cuts, paths_cut=True)))
+                _say_cuts(notes, source, cuts, f"in no part, reaching none: written as the "
+                                               f"sheet-level cut `{items[-1][1]}` (a solid of "
+                                               f"cuts alone: the laser cuts along them)")
+                if loose.empty and not loose.texts and loose.engrave is None:
+                    loose = None
             if loose is not None:
                 items.append(("drawing", _ident(f"{layer or 'sheet'}_loose", used), loose))
                 n = len(loose.paths) + len(loose.ellipses) + len(loose.texts)

@@ -21,12 +21,13 @@ from .model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _chec
 
 def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
     import svgelements as S
+    notes: list[Note] = []
+    data = _svg_root(data, name, unit, notes)
     try:
         svg = S.SVG.parse(io.BytesIO(data), reify=True, ppi=96.0)
     except Exception as ex:
         raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
                            "save it as plain SVG") from None
-    notes: list[Note] = []
     # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
     # user unit) and apply the exact mm per user unit from the width attribute and viewBox
     vb = getattr(svg, "viewbox", None)
@@ -67,6 +68,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
     texts: list = []
     lost_text: list = []            # "`the words` (why)", each a text not written
     skipped: dict[str, int] = {}
+    spec: list = []                 # shapes in error by the SVG spec (_spec_checked)
     count = 0
 
     def P(p):
@@ -140,6 +142,9 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                     el.values.get("points"), str) and _path_data_error(
                     el.values["points"].replace("M", "?").replace("m", "?")) is not None:
                 continue        # svgelements would pair the numbers after it wrongly: noted
+            el = _spec_checked(S, el, svg, spec)
+            if el is None:              # a negative size: SVG draws no such shape (noted)
+                continue
             count += 1
             if count > opts.max_shapes:
                 raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
@@ -156,6 +161,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 raise _range_error(ex, f"<{tag}>" + (f" (id `{ident_}`)" if ident_ else ""),
                                    name) from None
     _skip_notes(skipped, notes, name)
+    _spec_notes(spec, notes, name)
     if lost_text:
         n = len(lost_text)
         notes.append(Note("W0130", f"{n} text{'s' if n != 1 else ''} of `{name}` not "
@@ -409,7 +415,8 @@ def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> 
 
 def _css_mm(width, vb_width) -> float | None:
     """Millimetres per user unit from the root ``width`` (a CSS length: mm, cm, in, pt, pc,
-    px or a bare number, px) over the ``viewBox`` width (none: one user unit is one px)."""
+    px or a bare number, px) over the ``viewBox`` width (none: one user unit is one px, the
+    width only sizes the viewport, SVG 2 section 8.2)."""
     import re
     if width is None:
         return (25.4 / 96) if vb_width is None else None
@@ -422,7 +429,8 @@ def _css_mm(width, vb_width) -> float | None:
         return None
     per = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96,
            "": 25.4 / 96}[m.group(2)]
-    return w * per / vb_width if vb_width else per
+    # no viewBox: no viewport transform, a user unit is a CSS px whatever the width says
+    return w * per / vb_width if vb_width else 25.4 / 96
 
 
 def _svg_path(S, path, P, pieces, loops, skipped) -> None:
@@ -500,3 +508,122 @@ def _skip_notes(skipped: dict, notes: list, name: str) -> None:
                                        f"`{name}` skipped: no exact form here",
                               "convert it to lines, arcs or splines in the drawing program, "
                               "or select other layers"))
+
+
+# ------------------------------------------------------------------ errors by the SVG spec
+_NUMBER = r"\s*([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)"
+
+
+def _negative(v) -> bool:
+    """Whether the attribute value ``v`` (a length: ``-3``, ``-2mm``) is below 0."""
+    import re
+    m = re.match(_NUMBER, str(v)) if v is not None else None
+    return m is not None and float(m.group(1)) < 0
+
+
+def _svg_root(data: bytes, name: str, unit: str | None, notes: list) -> bytes:
+    """``data`` with what the SVG spec makes no size of the root ``<svg>`` left out, each
+    said in a ``W0130`` appended to ``notes``: a ``viewBox`` of negative width or height is an
+    error that disables it (SVG 2 section 8.6: svgelements would mirror the drawing by it),
+    so the user unit is one px; a ``width`` or ``height`` in percent refers to a containing
+    block a file does not have, so both are left out and the drawing is its ``viewBox``'s
+    size, one user unit one px (CSS: 96 to the inch; svgelements would take the percentage
+    of a 1000 px window, or of the viewBox, shrinking or shifting the drawing).  ``unit``
+    (``units=``) sets the user unit itself: the percentages are then left out unsaid."""
+    import re
+    tag = re.search(rb"<(?:[A-Za-z_][\w.-]*:)?svg\b(?:[^>\"']|\"[^\"]*\"|'[^']*')*>", data)
+    if tag is None:
+        return data
+    head = tag.group(0)
+    attr = re.compile(rb"""(\s)(width|height|viewBox)\s*=\s*("[^"]*"|'[^']*')""")
+    vals = {m.group(2).decode(): m.group(3)[1:-1].decode("utf-8", "replace")
+            for m in attr.finditer(head)}
+    drop = set()
+    vb = vals.get("viewBox")
+    if vb is not None:
+        nums = re.findall(_NUMBER, vb)
+        if len(nums) == 4 and (float(nums[2]) < 0 or float(nums[3]) < 0):
+            drop.add("viewBox")
+            notes.append(Note("W0130", f"`{name}` has a viewBox of negative "
+                                       f"{'width' if float(nums[2]) < 0 else 'height'} "
+                                       f"(viewBox=\"{vb}\"), an error in SVG: the viewBox is "
+                                       f"left out, not mirrored"
+                                       + ("" if unit else "; one user unit read as one px "
+                                                          "(0.2646 mm)"),
+                              'give units="mm" (or another unit) for the size of a user unit, '
+                              "or fix the viewBox in the drawing program"))
+    pct = [k for k in ("width", "height") if "%" in vals.get(k, "")]
+    if pct:
+        drop.update(("width", "height"))
+        if unit is None:
+            what = ", ".join(f'{k}="{vals[k]}"' for k in pct)
+            notes.append(Note("W0130", f"`{name}` gives its size in percent ({what}), which a "
+                                       f"file has nothing to take it of: read "
+                                       + ("at the size of its viewBox, " if vb is not None
+                                          and "viewBox" not in drop else "")
+                                       + "one user unit as one px (0.2646 mm)",
+                              'give units="mm" (or another unit) for the size of a user unit'))
+    if not drop:
+        return data
+    new = attr.sub(lambda m: m.group(0) if m.group(2).decode() not in drop else m.group(1)
+                   + b"data-aidl-dropped-" + m.group(2) + b'=""', head)
+    return data[:tag.start()] + new + data[tag.end():]
+
+
+def _spec_checked(S, el, svg, spec: list):
+    """The shape ``el`` as the SVG spec draws it (SVG 2 chapter 7, geometry properties), or
+    None when it draws nothing: a ``rect`` of negative ``width`` or ``height`` and a
+    ``circle`` of negative ``r`` are not drawn (an illegal value: the initial 0); a negative
+    ``rx`` or ``ry`` of a ``rect`` or ``ellipse`` is ignored (``auto``: the other radius,
+    both ignored: a rect of square corners, no ellipse).  Each case is appended to ``spec``
+    as ``(drawn, "<rect> width=\"-3\"")`` for the note (:func:`_spec_notes`); ``svg``: the
+    root, whose viewport sizes a rebuilt shape's percentages."""
+    if isinstance(el, S.Path) or not isinstance(el, (S.Rect, S.Circle, S.Ellipse)):
+        return el
+    v = el.values
+    tag = "rect" if isinstance(el, S.Rect) else "circle" if isinstance(el, S.Circle) \
+        else "ellipse"
+    ident = getattr(el, "id", None)
+    label = f"<{tag}>" + (f" (id `{ident}`)" if ident else "")
+    sizes = {"rect": ("width", "height"), "circle": ("r",), "ellipse": ()}[tag]
+    bad = [k for k in sizes if _negative(v.get(k))]
+    if bad:
+        spec.append((False, label + " " + " ".join(f'{k}="{v.get(k)}"' for k in bad)))
+        return None
+    radii = [k for k in ("rx", "ry") if tag != "circle" and _negative(v.get(k))]
+    if not radii:
+        return el
+    spec.append((True, label + " " + " ".join(f'{k}="{v.get(k)}"' for k in radii)))
+    good = [k for k in ("rx", "ry") if k not in radii and v.get(k) is not None]
+    fixed = dict(v)
+    for k in radii:
+        if good:
+            fixed[k] = v.get(good[0])
+        elif tag == "rect":
+            fixed[k] = "0"                   # both auto: square corners
+        else:
+            return None                      # an ellipse of no radius: not drawn
+    new = type(el)(fixed)
+    try:
+        new.render(ppi=96.0, width=float(svg.width or 1000), height=float(svg.height or 1000))
+        new.reify()
+    except Exception:
+        return el
+    return new
+
+
+def _spec_notes(spec: list, notes: list, name: str) -> None:
+    """The ``W0130`` notes of :func:`_spec_checked`'s cases: the shapes not drawn, the radii
+    ignored (the first five of each named)."""
+    for drawn, what, hint in ((False, "not drawn: a negative size is an error in SVG",
+                               "fix the size in the drawing program (a browser does not draw "
+                               "them either)"),
+                              (True, "drawn with the negative radius ignored, as SVG does "
+                                     "(auto: the other radius, else 0)",
+                               "fix the radius in the drawing program")):
+        got = [w for d, w in spec if d is drawn]
+        if got:
+            n = len(got)
+            shown = "; ".join(got[:5]) + (f"; and {n - 5} more" if n > 5 else "")
+            notes.append(Note("W0130", f"{n} shape{'s' if n != 1 else ''} of `{name}` "
+                                       f"{what}: {shown}", hint))
