@@ -75,11 +75,14 @@ function chosenRaw(values = state.values) {
   }
   return out;
 }
-function texts(raw) {          // as `aidl render --set` takes them (the param's kind, or a guess)
-  const out = {};
+// as `aidl render --set` takes them: by the param's kind; before the program's first answer, as
+// a shared link wrote them (or a guess, for a link of before they were written)
+function texts(raw) {
+  const out = {}, given = state.givenTexts || {};
   for (const [k, v] of Object.entries(raw)) {
     const p = state.params.find((q) => q.name === k);
-    out[k] = p ? setText(p, v) : typeof v === "boolean" ? String(v) : typeof v === "number" ? fmt(v) : JSON.stringify(String(v));
+    out[k] = p ? setText(p, v) : typeof given[k] === "string" ? given[k]
+      : typeof v === "boolean" ? String(v) : typeof v === "number" ? fmt(v) : JSON.stringify(String(v));
   }
   return out;
 }
@@ -519,9 +522,9 @@ async function openEntry(id) {
   setProgram(e.source, {});
 }
 
-function setProgram(source, values) {
+function setProgram(source, values, given = null) {
   state.source = source;
-  newProgram(values);
+  newProgram(values, given);
   state.lastSvg = null;
   state.reframe = true;
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
@@ -533,8 +536,9 @@ function setProgram(source, values) {
 
 // a session's values belong to one program: another program (a card, a paste, a shared link,
 // a described part) starts from its own values, and from the given ones
-function newProgram(values = {}) {
+function newProgram(values = {}, given = null) {
   state.values = { ...values };
+  state.givenTexts = given;
   state.params = [];
   state.paramKey = "";
 }
@@ -569,7 +573,8 @@ async function unpack(text) {
 }
 async function link(path) {
   const values = chosenRaw();
-  const packed = await pack({ v: 1, source: state.source, values, settings: settings(), title: $("title").textContent });
+  const packed = await pack({ v: 1, source: state.source, values, set: texts(values), settings: settings(),
+                              title: $("title").textContent });
   return `${location.origin}${path}#p=${packed}`;
 }
 async function share(kind) {
@@ -716,7 +721,7 @@ async function start() {
       if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
       if (s.machine) $("machine").value = s.machine;
       if (s.layout != null) $("layout").checked = !!s.layout;
-      setProgram(String(doc.source || ""), doc.values || {});
+      setProgram(String(doc.source || ""), doc.values || {}, doc.set || null);
     } catch (e) {
       status("this link is damaged: it does not hold a design");
     }
