@@ -70,8 +70,10 @@ class Session:
         self.program: A.Program | None = None
         self.values: dict[str, str] = {}          # customizer values, as --set texts
         self.params: list[Param] = []
+        self.defaults: dict[str, object] = {}     # the program's own param values (display units)
         self.svg: str | None = None               # the last good picture
         self.svg_values: dict[str, str] = {}      # the values it was drawn with
+        self.svg_source: str | None = None        # and the program text it was drawn from
         self.diagnostics: list[dict] = []
         self.ok = False
         self.dof: list[dict] = []
@@ -87,23 +89,27 @@ class Session:
         self.budget = DEFAULT_BUDGET              # each compile's evaluation budget
 
     # ------------------------------------------------------------------ public
-    def load(self, source: str | None = None) -> dict:
+    def load(self, source: str | None = None, assumed: dict | None = None) -> dict:
         """Re-read and recompile the file (or compile ``source``, the program's text given by
         the caller, ``aidl studio``'s code pane: the file is then only its name and where its
         imports and drawings are resolved from); keep customizer values whose param still
-        exists and whose default did not change.  Never raises: an internal error (a bug in aidl)
-        becomes an ``E0900`` diagnostic beside the last good picture, is logged, and the next
-        save is compiled as usual."""
+        exists and whose default did not change (:func:`keep_values`).  ``assumed``: ``{name:
+        default}`` (display units, as the params' ``default``) the values were chosen against
+        (the studio's page says it with each request); None: the defaults of this session's
+        last load.  The params' ``default`` is always the program's own value, from a compile
+        without customizer values, whatever values this session held before.  Never raises: an
+        internal error (a bug in aidl) becomes an ``E0900`` diagnostic beside the last good
+        picture, is logged, and the next save is compiled as usual."""
         t0 = time.perf_counter()
         try:
-            return self._load(t0, source)
+            return self._load(t0, source, assumed)
         except Exception as e:          # noqa: BLE001 - a bug must not stop the live reload
             self.program = None
             self.solver = self._row_keys = None
             self._dof_pending = self._checks_pending = None
             return self._publish(Result(self._failed(e, "compiling the file")), t0)
 
-    def _load(self, t0: float, source: str | None = None) -> dict:
+    def _load(self, t0: float, source: str | None = None, assumed: dict | None = None) -> dict:
         sink = DiagnosticSink()
         try:
             # as `aidl check` reads it: a regular file only (a FIFO swapped in is refused, not
@@ -124,15 +130,15 @@ class Session:
             return self._publish(Result(sink), t0)
         self.program = program
         self.solver = self._row_keys = None             # a new program: nothing warm to reuse
-        old_defaults = {p.name: p.default for p in self.params}
+        old_defaults = self.defaults if assumed is None else assumed
         base = self._compile({})
         self._base = base.drawing if base.ok else None    # W0510's baseline: the defaults
-        params = self._params(base.fctx, {}) if base.fctx is not None else []
-        defaults = {p.name: p.default for p in params}
+        # the program's own values are its defaults (never values this session held before)
+        params = self._params(base.fctx, {}, defaults={}) if base.fctx is not None else []
+        self.defaults = {p.name: p.default for p in params}
         # kept: a value whose param is still there with the same default (or is new: the
         # first load keeps the values a caller set before it)
-        self.values = {k: v for k, v in self.values.items()
-                       if k in defaults and old_defaults.get(k, defaults[k]) == defaults[k]}
+        self.values = keep_values(self.values, self.defaults, old_defaults)
         res = base
         if self.values and base.ok:
             res = self._compile(self.values)
@@ -323,6 +329,7 @@ class Session:
         if res.ok:
             self.svg = res.svg
             self.svg_values = dict(self.values)
+            self.svg_source = self.source
             # the picture's exact Output (aidl studio's 3D view is made from it)
             self.shown = (self.version, res.output)
         self.last = dict(res.timings, total_ms=_ms(t0), warm=res.warm)
@@ -339,19 +346,42 @@ class Session:
         return _internal(e, stage)
 
     # ------------------------------------------------------------------ params
-    def _params(self, fctx, values: dict[str, str]) -> list[Param]:
+    def _params(self, fctx, values: dict[str, str], defaults: dict | None = None) -> list[Param]:
+        """The customizer's params of the compile whose interpreter file is ``fctx``, each
+        with the program's own value as its ``default`` (``defaults``, else those of the last
+        load: :attr:`defaults`), never a value of ``values``."""
         decls = {st.name: st for st in self.program.stmts if isinstance(st, A.ParamDecl)}
         ranges = getattr(fctx, "param_ranges", {})
-        old = {p.name: p for p in self.params}
+        defaults = self.defaults if defaults is None else defaults
         out = []
         for name, st in decls.items():
             v = fctx.params.get(name)
-            prev = old.get(name) if name in values else None
             p = _param(name, v, ranges.get(name), st.span.line if st.span else 0,
-                       prev.default if prev is not None else None)
+                       defaults.get(name))
             if p is not None:
                 out.append(p)
         return out
+
+
+def same_default(a, b) -> bool:
+    """Whether two params' defaults (display units: numbers, booleans, texts) are the same
+    value: numbers to 1e-9 relative, a boolean only equal to a boolean."""
+    if isinstance(a, bool) or isinstance(b, bool):
+        return isinstance(a, bool) and isinstance(b, bool) and a == b
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)):
+        return abs(a - b) <= 1e-9 * max(1.0, abs(a), abs(b))
+    return a == b
+
+
+def keep_values(values: dict[str, str], defaults: dict, assumed: dict | None) -> dict[str, str]:
+    """The customizer ``values`` that still apply to a program whose params' own values are
+    ``defaults``: a value whose param is still there, with the default it was chosen against
+    (``assumed``: ``{name: default}``; a name it does not hold: any default).  A value for a
+    param the program no longer has, or whose default the program changed, is dropped (the
+    slider goes to the program's new value)."""
+    assumed = assumed or {}
+    return {k: v for k, v in values.items()
+            if k in defaults and (k not in assumed or same_default(assumed[k], defaults[k]))}
 
 
 def _internal(e: BaseException, stage: str) -> DiagnosticSink:

@@ -20,8 +20,11 @@ Routes:
   edit (``aidl import [--infer]``): ``program`` and ``notes``, or ``import_error``;
   ``&import=drawing``: a program that uses it as it is (``Drawing2D``).
 * ``GET /favicon.ico``: the page's icon.
-* ``POST /api/view``: ``{"sid", "source", "values"}`` -> the preview (SVG, diagnostics,
-  params).  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
+* ``POST /api/view``: ``{"sid", "source", "values", "defaults"}`` -> the preview (SVG,
+  diagnostics, params, the ``values`` it was drawn with, the ``dropped`` ones; see
+  :func:`.compiler.view`).  One preview of a session compiles at a time; one that waited
+  while a newer one of the session came is answered ``{"superseded": true}`` uncompiled.
+  ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
   smaller mesh than the download, made from the preview's drawing; gzip when the browser
   takes it).
@@ -207,6 +210,37 @@ def program_of(doc: dict) -> tuple[str, dict]:
     return source, out
 
 
+def defaults_of(doc: dict) -> dict:
+    """The ``defaults`` of a view request (``{name: default}``: the params' defaults the page's
+    values were chosen against; numbers, booleans or short texts), checked.  Raises
+    :class:`Refused`."""
+    got = doc.get("defaults") or {}
+    if not isinstance(got, dict) or len(got) > MAX_VALUES:
+        raise Refused(f"`defaults` is an object of at most {MAX_VALUES} param defaults")
+    for k, v in got.items():
+        if not isinstance(v, (str, int, float, bool)) or len(k) > MAX_VALUE \
+                or len(str(v)) > MAX_VALUE:
+            raise Refused(f"the default of `{str(k)[:40]}` is not a short text, number or "
+                          "true/false")
+    return got
+
+
+class Latest:
+    """One session's previews: at most one compiles at a time, and of those that wait for
+    it only the newest is compiled (the others are answered ``superseded``): a drag costs
+    the compile in flight and one for its last values, however many moves it sent."""
+
+    def __init__(self) -> None:
+        import asyncio
+        self.lock = asyncio.Lock()
+        self.ticket = 0                 # the newest request's number
+        self.users = 0                  # requests holding or waiting for the lock
+
+
+SUPERSEDED = {"ok": False, "superseded": True, "svg": None, "params": None, "diagnostics": [],
+              "error": "a newer change of this design was asked for: this one was not compiled"}
+
+
 class Studio:
     """The server's state: settings, compile workers, session folders, rate limiter, the
     gallery's thumbnails."""
@@ -226,10 +260,11 @@ class Studio:
         self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
         self.affinity: dict[str, W.Worker] = {}
+        self.latest: dict[str, Latest] = {}       # sid -> its previews in flight
         self.thumbs: dict[str, str] = {}
         self.describing = 0
         self.static = static_files()
-        self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0}
+        self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0, "superseded": 0}
         self.metrics = Metrics(self)
 
     def check_rate(self, request: Request, cost: int = 1) -> None:
@@ -280,6 +315,27 @@ class Studio:
         if isinstance(answer, dict) and answer.pop("retire", False):
             w.retiring = True           # its memory grew: a fresh process for its next request
         return answer
+
+    async def newest(self, sid: str, request_data: tuple) -> dict:
+        """Compile the preview ``request_data`` of session ``sid`` once every earlier one of
+        the session has answered, unless a newer one came meanwhile: then answer
+        :data:`SUPERSEDED` without compiling (:class:`Latest`)."""
+        slot = self.latest.get(sid)
+        if slot is None:
+            slot = self.latest[sid] = Latest()
+        slot.ticket += 1
+        slot.users += 1
+        me = slot.ticket
+        try:
+            async with slot.lock:
+                if me != slot.ticket:
+                    self.served["superseded"] += 1
+                    return dict(SUPERSEDED)
+                return await self.compile(request_data, sid)
+        finally:
+            slot.users -= 1
+            if not slot.users and self.latest.get(sid) is slot:
+                del self.latest[sid]
 
     def stop(self) -> None:
         self.pool.stop()
@@ -498,7 +554,7 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         sid = doc.get("sid", "")
         folder = st.folders.folder(sid)
         source, values = program_of(doc)
-        answer = await st.compile(("view", sid, folder, source, values), sid)
+        answer = await st.newest(sid, ("view", sid, folder, source, values, defaults_of(doc)))
         if "error" in answer and "svg" not in answer:
             return JSONResponse({"ok": False, "svg": None, "params": None, "diagnostics": [],
                                  "error": answer["error"]})

@@ -4,9 +4,10 @@ gallery thumbnail.  Nothing here touches HTTP; every request and answer is plain
 
 Requests (tuples, the first item names the kind):
 
-* ``("view", sid, folder, source, values)``: the live preview, a JSON-ready dict as
-  ``aidl serve`` sends it (``ok``, ``svg``, ``diagnostics``, ``params``, ``values``, ``timing``;
-  see :meth:`aidl_lang.serve.session.Session.view`) with the shape checks included.  Each
+* ``("view", sid, folder, source, values[, defaults])``: the live preview, a JSON-ready dict
+  as ``aidl serve`` sends it (``ok``, ``svg``, ``diagnostics``, ``params``, ``values``,
+  ``timing``; see :meth:`aidl_lang.serve.session.Session.view`) with the shape checks
+  included, and ``dropped`` (:func:`view`: the values that are not this program's).  Each
   session (``sid``) keeps a warm :class:`~aidl_lang.serve.session.Session` in the worker
   (at most :data:`MAX_SESSIONS`, the least recently used dropped): a slider move re-solves on
   the compiled tapes instead of compiling again.  The program is named ``folder/main.aidl``,
@@ -216,10 +217,21 @@ def out_of_memory_answer(request) -> dict:
 
 
 def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
-         budget=None) -> dict:
+         defaults: dict | None = None, budget=None) -> dict:
     """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"});
-    ``budget``: a :class:`~aidl_lang.limits.Budget` (None: the default)."""
-    from ..serve.session import Session
+    ``defaults``: ``{name: default}`` (display units, as the answer's params give them) the
+    page chose ``values`` against; ``budget``: a :class:`~aidl_lang.limits.Budget` (None:
+    the default).
+
+    The answer depends on the request only, never on what this worker compiled before for
+    the session (its other worker may have answered the previous request): the params'
+    ``default`` is the program's own value; a value whose param the program does not have,
+    or whose default differs from the one in ``defaults``, is dropped and named in
+    ``dropped`` (a new program starts from its own values); ``values`` is what the picture
+    was drawn with (the kept values, and the ``clamped`` ones moved into their ranges).  An
+    answer whose program does not check has no ``params`` and no ``svg`` (the last good
+    picture of another program is not this program's)."""
+    from ..serve.session import Session, keep_values
     s = sessions.pop(sid, None)
     if s is None:
         s = Session(os.path.join(folder, "main.aidl"))
@@ -229,31 +241,40 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     while len(sessions) > MAX_SESSIONS:
         sessions.popitem(last=False)
     values = {str(k): str(v) for k, v in (values or {}).items()}
+    assumed = defaults if isinstance(defaults, dict) else {}
     files = _listing(folder)        # an upload changes what the same program draws
     if s.source != source or s.program is None or files != getattr(s, "files", None):
         s.files = files
-        s.values = values
-        doc = s.load(source)
-        if values and doc.get("ok") and s.values != values:
-            # load drops the value of a param whose default the edit changed: the page's
-            # values (what its sliders show) apply
-            doc = s.set_params(values)
+        s.values = dict(values)
+        doc = s.load(source, assumed=assumed)
+        kept = keep_values(values, s.defaults, assumed) if s.program is not None else {}
+        if kept and doc.get("ok") and s.values != kept:
+            # load drops the values its compile with them fails: the visitor's values (what
+            # the sliders show) apply, with their error or moved into their ranges (below)
+            doc = s.set_params(kept)
             doc = s.update_checks() or doc
-    elif values != s.values:
-        doc = s.set_params(values)
-        doc = s.update_checks() or doc
     else:
-        doc = s.view()
+        kept = keep_values(values, s.defaults, assumed)
+        if kept != s.values:
+            doc = s.set_params(kept)
+            doc = s.update_checks() or doc
+        else:
+            doc = s.view()
     clamped: dict = {}
-    if not doc.get("ok"):
+    if not doc.get("ok") and s.program is not None:
         settled, clamped = settle(s.set_params, s.values, doc)
         if clamped:
             doc = s.update_checks() or settled
         elif settled is not doc:
-            s.set_params(values)        # no better: the visitor's values, and their error
+            s.set_params(kept)          # no better: the visitor's values, and their error
     doc = dict(doc)
     if clamped:
         doc["clamped"] = clamped
+    doc["dropped"] = sorted(set(values) - set(kept))
+    if s.program is None:
+        doc["params"] = None            # the params of a program that checked before, not this
+    if s.svg_source != source:          # the last good picture is another program's
+        doc["svg"], doc["values"] = None, {}
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc

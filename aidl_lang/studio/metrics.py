@@ -159,7 +159,9 @@ class _Live:
                                 "compile requests waiting for a worker", value=pool.waiting)
         for name, key, about in (("busy", "busy", "busy answers (503)"),
                                  ("rate_limited", "limited", "rate-limited answers (429)"),
-                                 ("compile_timeouts", "timeouts", "compiles stopped past time")):
+                                 ("compile_timeouts", "timeouts", "compiles stopped past time"),
+                                 ("superseded", "superseded",
+                                  "previews not compiled: a newer one of the session came")):
             yield CounterMetricFamily(f"aidl_studio_{name}", about, value=st.served[key])
         restarts = getattr(pool, "restarts", None)
         if restarts is None:

@@ -5,6 +5,9 @@ import "/static/view3d.js";
 
 const $ = (id) => document.getElementById(id);
 const EMBED = location.pathname === "/embed";
+// values: what the visitor set ({name: number | bool | text}, display units: a slider moved, a
+// shared link's), never a value the page was merely shown; params: the current program's, from
+// its last answer ([] until the first: a new program's values are then sent as they are)
 const state = {
   sid: null, source: "", values: {}, params: [], paramKey: "", entry: null,
   seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
@@ -53,13 +56,40 @@ function settings() {
            layout: $("layout").checked, sheet: [num("sheet-w") || 600, num("sheet-h") || 400] };
 }
 
-function chosen() {            // the customizer's values that differ from the program's
+// The values a request carries: those the visitor set that differ from the program's own (the
+// params' `default`, which the server takes from the program itself, never from a request).
+// One test for the preview, its 3D, the downloads and the share link.
+function same(a, b) {
+  if (typeof a === "number" && typeof b === "number") return Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(a), Math.abs(b));
+  return a === b;
+}
+function chosenRaw(values = state.values) {
   const out = {};
+  if (!state.params.length) {                 // a new program's first request: sent as they are
+    for (const [k, v] of Object.entries(values)) if (v !== undefined) out[k] = v;
+    return out;
+  }
   for (const p of state.params) {
-    const v = state.values[p.name];
-    if (v !== undefined && v !== p.default) out[p.name] = setText(p, v);
+    const v = values[p.name];
+    if (v !== undefined && !same(v, p.default)) out[p.name] = v;
   }
   return out;
+}
+// as `aidl render --set` takes them: by the param's kind; before the program's first answer, as
+// a shared link wrote them (or a guess, for a link of before they were written)
+function texts(raw) {
+  const out = {}, given = state.givenTexts || {};
+  for (const [k, v] of Object.entries(raw)) {
+    const p = state.params.find((q) => q.name === k);
+    out[k] = p ? setText(p, v) : typeof given[k] === "string" ? given[k]
+      : typeof v === "boolean" ? String(v) : typeof v === "number" ? fmt(v) : JSON.stringify(String(v));
+  }
+  return out;
+}
+function chosen() { return texts(chosenRaw()); }
+function sameValues(a, b) {
+  const ka = Object.keys(a), kb = Object.keys(b);
+  return ka.length === kb.length && ka.every((k) => k in b && same(a[k], b[k]));
 }
 
 function fmt(x) { return x == null ? "" : String(Math.round(x * 1e6) / 1e6); }
@@ -74,23 +104,45 @@ function setText(p, v) {       // the value as `aidl render --set` takes it
 function schedule(delay = 200) {
   clearTimeout(state.timer);
   window.studio.idle = false;
+  building2d(true);
   state.timer = setTimeout(() => { state.timer = null; compile(); }, delay);
 }
 
+// the flat view while its picture is not the sliders' (a change on its way): dimmed at once,
+// "building…" when the right picture takes longer than a blink
+function building2d(on) {
+  const pane = $("flat");
+  let note = $("building-flat");
+  if (!note) {
+    note = document.createElement("span");
+    Object.assign(note, { id: "building-flat", className: "pane-note", hidden: true, textContent: "building…" });
+    note.setAttribute("role", "status");
+    pane.appendChild(note);
+  }
+  pane.classList.toggle("building", on);
+  clearTimeout(state.building2dTimer);
+  if (on) {
+    status("building…");
+    state.building2dTimer = setTimeout(() => { note.hidden = !pane.classList.contains("building"); }, 250);
+  } else note.hidden = true;
+}
+
+// One preview in flight; a change made meanwhile is compiled when it answers (the latest values
+// only: a drag costs one compile after its last move). An answer is shown only when it is the
+// current program's with the values the sliders hold now; else it is dropped.
 async function compile() {
   if (state.inflight) { state.again = true; return; }
   state.inflight = true;
   const seq = ++state.seq;
-  status("compiling…");
   const t0 = performance.now();
   try {
-    const values = chosen();
-    const view = await post("/api/view", { sid: state.sid, source: state.source, values });
-    if (seq === state.seq) {
-      show(view, performance.now() - t0);
-      // a shared link's values are known by name before the params' kinds: send them again
-      if (JSON.stringify(chosen()) !== JSON.stringify(values)) state.again = true;
-    }
+    const source = state.source, raw = chosenRaw(), values = texts(raw), defaults = {};
+    for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
+    const view = await post("/api/view", { sid: state.sid, source, values, defaults });
+    if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
+    else if (view.superseded) state.again = true;
+    else if (answered(view, raw)) { state.shownSent = values; show(view, performance.now() - t0); }
+    else state.again = true;        // the sliders moved on meanwhile: not their picture
   } catch (e) {
     window.studio.errors.push(String(e.message || e));
     if (e.retry) { state.again = false; setTimeout(compile, e.retry * 1000); }
@@ -102,25 +154,45 @@ async function compile() {
   }
 }
 
+// The answer to a preview sent with the values `raw`: its program's params taken (their
+// defaults and ranges), the values it dropped (not this program's) and moved into their ranges
+// (clamped) applied where the visitor has not changed them since; true when the sliders now
+// hold the values it was made for.
+function answered(view, raw) {
+  const made = { ...raw };
+  for (const name of view.dropped || []) {
+    delete made[name];
+    if (same(state.values[name], raw[name])) delete state.values[name];
+  }
+  for (const [name, v] of Object.entries(view.clamped || {})) {
+    made[name] = v;
+    if (same(state.values[name], raw[name])) state.values[name] = v;
+  }
+  if (view.params) state.params = view.params;
+  return sameValues(chosenRaw(made), chosenRaw());
+}
+
 function show(view, ms) {
   state.view = view;
   window.studio.view = view;
   const diags = view.diagnostics || [];
   const errors = diags.filter((d) => d.severity === "error").length;
+  if (view.params) showParams(view.params);     // the form first: the picture lands on its values
+  building2d(false);
   if (view.error) status(view.error);
   else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
                       : `${errors} error${errors === 1 ? "" : "s"}: showing the last good picture`);
   $("flat").classList.toggle("stale", !view.ok);
-  if (view.svg && view.svg !== state.lastSvg) {
+  // only a picture of this program with these values: an error keeps the page's last picture
+  if (view.ok && view.svg && view.svg !== state.lastSvg) {
     state.lastSvg = view.svg;
     if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
     state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
     $("flat-img").src = state.svgUrl;         // an <img>: the SVG runs no script, loads nothing
-  } else if (!view.svg && !state.lastSvg) {
+  } else if (!state.lastSvg) {                // a new program with no picture yet: none
     $("flat-img").removeAttribute("src");
   }
   showDiagnostics(diags, view.error);
-  if (view.params) showParams(view.params, view.clamped);
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
   if (view.ok) { building(true); load3d(); }
@@ -262,12 +334,12 @@ $("flat-img").addEventListener("load", () => { if (state.fitNext) { state.fitNex
 new ResizeObserver(() => flatLayout()).observe($("flat"));
 
 // ------------------------------------------------------------------ the customizer
-function showParams(params, clamped) {
-  // the form is built again only for other params; a range that follows other params (its
-  // min or max depends on them) is updated in place, so a slider being dragged stays in hand
+function showParams(params) {
+  // the form is built again only for other params (a new program); a range that follows other
+  // params (its min or max depends on them) and the values are updated in place, so a slider
+  // being dragged stays in hand
   const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default]));
   state.params = params;
-  for (const [name, v] of Object.entries(clamped || {})) state.values[name] = v;   // moved into its range by the server
   const form = $("params");
   if (key !== state.paramKey) {
     state.paramKey = key;
@@ -276,11 +348,12 @@ function showParams(params, clamped) {
     for (const p of params) form.appendChild(control(p));
   }
   for (const p of params) {
-    if (state.values[p.name] === undefined) state.values[p.name] = p.value;
     const row = form.querySelector(`[data-name="${CSS.escape(p.name)}"]`);
     if (!row) continue;
-    setControl(row, p, state.values[p.name]);
-    row.classList.toggle("changed", state.values[p.name] !== p.default);
+    // the visitor's value, else the one this picture was made with (a param that follows others)
+    const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
+    setControl(row, p, v);
+    row.classList.toggle("changed", !same(v, p.default));
   }
 }
 
@@ -335,7 +408,7 @@ function control(p) {
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
-  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", v !== p.default); schedule(30); };
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); schedule(30); };
   if (p.kind === "bool") {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
@@ -373,9 +446,10 @@ function setControl(row, p, v) {
       const u = row.querySelector(".unit");
       if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
     }
-    if (document.activeElement !== inputs[0] && document.activeElement !== inputs[1]) {
-      inputs[0].value = v; inputs[1].value = v;
-    }
+    // a shown answer holds the sliders' values: the slider in hand is set to what it holds (or
+    // to where its range moved it); a number being typed is left alone
+    inputs[0].value = v;
+    if (document.activeElement !== inputs[1]) inputs[1].value = v;
   }
 }
 
@@ -405,7 +479,9 @@ async function load3d() {
   const withLink = !!state.linkValues && state.params.length > 0;   // the link's values were sent
   const reframe = state.reframe || !!state.linkValues;
   try {
-    const r = await post("/api/glb", { sid: state.sid, source: state.source, values: sent,
+    // the picture's own values (as the server drew it): its model is made from its outlines
+    const values = (state.view && state.view.ok && state.view.values) || state.shownSent || sent;
+    const r = await post("/api/glb", { sid: state.sid, source: state.source, values,
                                        settings: { thickness: settings().thickness } }, true);
     if (!r.ok) {
       const why = (await r.json().catch(() => ({}))).error || `HTTP ${r.status}`;
@@ -518,10 +594,9 @@ async function openEntry(id) {
   setProgram(e.source, {});
 }
 
-function setProgram(source, values) {
+function setProgram(source, values, given = null) {
   state.source = source;
-  state.values = { ...values };
-  state.paramKey = "";
+  newProgram(values, given);
   state.lastSvg = null;
   state.reframe = true;
   state.linkValues = null;                  // (a share link sets its own after this)
@@ -530,6 +605,26 @@ function setProgram(source, values) {
   building(true, true);
   if (editor) editor.setText(source);
   schedule(0);
+}
+
+// a session's values belong to one program: another program (a card, a paste, a shared link,
+// a described part) starts from its own values, and from the given ones
+function newProgram(values = {}, given = null) {
+  state.values = { ...values };
+  state.givenTexts = given;
+  state.params = [];
+  state.paramKey = "";
+}
+
+// most of the program replaced at once (a paste over it, or the whole text deleted): another
+// program, not an edit of this one
+function replaced(before, after) {
+  if (!after.trim()) return true;
+  const n = Math.min(before.length, after.length);
+  let i = 0, j = 0;
+  while (i < n && before[i] === after[i]) i++;
+  while (j < n - i && before[before.length - 1 - j] === after[after.length - 1 - j]) j++;
+  return before.length - i - j > before.length / 2 && after.length - i - j > after.length / 2;
 }
 
 // ------------------------------------------------------------------ share links and embeds
@@ -550,9 +645,9 @@ async function unpack(text) {
   return JSON.parse(await new Response(stream).text());
 }
 async function link(path) {
-  const values = {};
-  for (const p of state.params) if (state.values[p.name] !== undefined && state.values[p.name] !== p.default) values[p.name] = state.values[p.name];
-  const packed = await pack({ v: 1, source: state.source, values, settings: settings(), title: $("title").textContent });
+  const values = chosenRaw();
+  const packed = await pack({ v: 1, source: state.source, values, set: texts(values), settings: settings(),
+                              title: $("title").textContent });
   return `${location.origin}${path}#p=${packed}`;
 }
 async function share(kind) {
@@ -714,7 +809,10 @@ async function start() {
     navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
   if (!EMBED) {
     editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
-      onChange: (text) => { state.source = text; schedule(250); } });
+      onChange: (text) => {
+        if (replaced(state.source, text)) newProgram();
+        state.source = text; schedule(250);
+      } });
     editor.goto = (line, col) => {
       const doc = editor.view.state.doc;
       const l = doc.line(Math.max(1, Math.min(line, doc.lines)));
@@ -736,7 +834,7 @@ async function start() {
       if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
       if (s.machine) $("machine").value = s.machine;
       if (s.layout != null) $("layout").checked = !!s.layout;
-      setProgram(String(doc.source || ""), doc.values || {});
+      setProgram(String(doc.source || ""), doc.values || {}, doc.set || null);
       if (doc.values && Object.keys(doc.values).length) state.linkValues = doc.values;
     } catch (e) {
       status("this link is damaged: it does not hold a design");
