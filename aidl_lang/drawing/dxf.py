@@ -520,7 +520,8 @@ def _placed_conic(e, t: str, ctx: _DxfReading) -> None:
                     cls="plane")
     ctx.at_z(t, c.z)
     cm = ctx.P(c)
-    um, vm = (u.x * k, u.y * k), (v.x * k, v.y * k)
+    um = (_mm(u.x * k, "a semi-axis"), _mm(u.y * k, "a semi-axis"))
+    vm = (_mm(v.x * k, "a semi-axis"), _mm(v.y * k, "a semi-axis"))
     got = whole_curve(cm, um, vm) if sweep is None else arc_curve(cm, um, vm, t0, sweep)
     if got is None:
         raise _Skip("flattened by its INSERT to no area", cls="number")

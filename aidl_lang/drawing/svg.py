@@ -413,7 +413,9 @@ def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped,
         m = el.transform
         a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
         o = P(m.point_in_matrix_space((float(el.cx), float(el.cy))))
-        got = whole_curve(o, (a * rx * scale, -b * rx * scale), (c * ry * scale, -d * ry * scale))
+        u = (_mm(a * rx * scale, "a radius"), _mm(-b * rx * scale, "a radius"))
+        v = (_mm(c * ry * scale, "a radius"), _mm(-d * ry * scale, "a radius"))
+        got = whole_curve(o, u, v)
         if got is None:
             if flat is not None:
                 flat.append(_svg_label(el))
@@ -505,14 +507,15 @@ def _svg_arc(seg, P, a, b, scale: float):
     cx, cy = float(seg.center.x), float(seg.center.y)
     u = (float(seg.prx.x) - cx, float(seg.prx.y) - cy)
     v = (float(seg.pry.x) - cx, float(seg.pry.y) - cy)
-    det = u[0] * v[1] - u[1] * v[0]
+    um, vm = ((_mm(w[0] * scale, "a semi-axis"), _mm(-w[1] * scale, "a semi-axis"))
+              for w in (u, v))                  # P's linear part: y turns over
     if singular(u, v) or math.dist(a, b) <= 1e-12:
         return None
+    det = u[0] * v[1] - u[1] * v[0]
     sx, sy = float(seg.start.x) - cx, float(seg.start.y) - cy
     t0 = math.atan2((u[0] * sy - u[1] * sx) / det, (sx * v[1] - sy * v[0]) / det)
     sweep = _finite(seg.sweep, "an angle") * (1.0 if det > 0 else -1.0)
-    mm = (lambda w: (w[0] * scale, -w[1] * scale))     # P's linear part: y turns over
-    return arc_curve(P(seg.center), mm(u), mm(v), t0, sweep, a, b)
+    return arc_curve(P(seg.center), um, vm, t0, sweep, a, b)
 
 
 def _flat_note(flat: list, data: bytes, name: str) -> Note:
