@@ -838,7 +838,10 @@ below 1, too few control points, a count of knots or weights that does not match
 that decrease, a knot repeated so often that the curve breaks apart, a weight not above 0,
 fewer than two fit points or two at one place) is
 skipped naming its handle and line and what is wrong; the rest of the drawing is read (in
-`aidl import`, a layer of only skipped entities is said, not dropped).
+`aidl import`, a layer of only skipped entities is said, not dropped).  A shape under a
+transform with no area (an SVG `matrix(a,b,c,d,e,f)` with a*d = b*c or a scale of 0, a DXF
+INSERT of x or y scale 0) is not drawn, named by its id and line (SVG) or handle and line
+(DXF); any other transform is applied exactly.
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

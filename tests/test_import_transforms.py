@@ -315,6 +315,60 @@ def test_an_insert_of_scale_0_is_a_note_naming_it():
     assert "scale other than 0" in n.hint
 
 
+def _on_conic(got, want: Conic) -> bool:
+    """Whether the piece ``got`` (Arc or EllipticArc) is the arc ``want``: its ends, and its
+    inner points on it within its range, to 1e-9 mm times its size."""
+    tol = 1e-9 * want.size
+    a, b = want.at(want.t0), want.at(want.t0 + want.sweep)
+    if not ((math.dist(got.start, a) <= tol and math.dist(got.end, b) <= tol) or
+            (math.dist(got.start, b) <= tol and math.dist(got.end, a) <= tol)):
+        return False
+    for q in read_curve(got)[0]:
+        miss, t = want.miss(q)
+        if miss > tol or not want.in_range(t):
+            return False
+    return True
+
+
+def test_bulges_and_hatch_edges_in_nested_inserts_are_exact_elliptic_arcs():
+    """A closed LWPOLYLINE slot (two bulges of 1: half circles), a HATCH of the same slot
+    and a HATCH of one full-circle edge, in a block turned 45 deg inside a block scaled
+    (1, 3): every half circle is the exact elliptic arc, the lines their images, the
+    full-circle edge the whole ellipse (ezdxf's nested INSERT put them elsewhere)."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    inner = doc.blocks.new("IN")
+    slot = [(0, 0, 0), (10, 0, 1), (10, 4, 0), (0, 4, 1)]
+    inner.add_lwpolyline(slot, format="xyb", close=True)
+    h = inner.add_hatch()
+    h.paths.add_polyline_path([(x + 20, y, b) for x, y, b in slot], is_closed=True)
+    h2 = inner.add_hatch()
+    h2.paths.add_edge_path().add_arc((50, 0), 3, 0, 360)
+    doc.blocks.new("OUT").add_blockref("IN", (0, 0), dxfattribs={"rotation": 45})
+    doc.modelspace().add_blockref("OUT", (0, 0), dxfattribs={"yscale": 3})
+    d = read_drawing(dxf_text(doc), "slots.dxf")
+    assert not d.notes, [n.message for n in d.notes]
+    r = math.sqrt(0.5)
+    A = np.diag([1.0, 3.0]) @ np.array([[r, -r], [r, r]])
+    assert len(d.outlines) == 2
+    for o, dx in zip(sorted(d.outlines, key=lambda o: o.segments[0].start[0]), (0, 20)):
+        kinds = sorted(type(x).__name__ for x in o.segments)
+        assert kinds == ["EllipticArc", "EllipticArc", "Line", "Line"], kinds
+        halves = [Conic((dx + 10, 2), (2, 0), (0, 2), -math.pi / 2, math.pi).mapped(A, 0),
+                  Conic((dx, 2), (2, 0), (0, 2), math.pi / 2, math.pi).mapped(A, 0)]
+        arcs = [x for x in o.segments if isinstance(x, EllipticArc)]
+        assert all(any(_on_conic(x, w) for x in arcs) for w in halves)
+        lines = {frozenset((tuple(np.round(x.start, 9)), tuple(np.round(x.end, 9))))
+                 for x in o.segments if isinstance(x, Line)}
+        assert lines == {frozenset(tuple(np.round(A @ p, 9)) for p in pair) for pair in
+                         (((dx, 0), (dx + 10, 0)), ((dx + 10, 4), (dx, 4)))}
+    (got,) = d.ellipses
+    assert not d.circles
+    want = Conic((50, 0), (3, 0), (0, 3)).mapped(A, 0)
+    assert all(on_read(want.at(t), got) <= 1e-9 * want.size for t in np.linspace(0, TAU, 19))
+    assert all(want.miss(q)[0] <= 1e-9 * want.size for q in read_curve(got)[0])
+
+
 # ------------------------------------------------------------------ the laws
 coord = st.floats(-40, 40, allow_nan=False)
 radius = st.floats(1, 20, allow_nan=False)

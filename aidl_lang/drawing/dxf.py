@@ -3,7 +3,8 @@ out (:func:`_read_dxf`).  One reader per entity kind behind a table (:data:`_ENT
 ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are arcs), ``SPLINE``
 (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics), ``ELLIPSE`` (whole, or an
 exact ``EllipticArc``), ``HATCH`` boundary paths (closed loops), ``TEXT``/``MTEXT``; an
-``INSERT``/``MINSERT`` places its block, every copy, under the entity budget (``E0304``).  An
+``INSERT``/``MINSERT`` places its block, every copy, under the entity budget (``E0304``) and
+its full matrix, nested INSERTs composed, curves exact (:mod:`.affine`).  An
 entity not in the XY plane, one whose numbers give no shape and a kind with no exact form here
 are skipped and counted in ``W0130`` notes by kind, reason and layer (:func:`_dxf_finish`).
 Units: ``$INSUNITS`` (:data:`INSUNITS_MM`, exact factors; 0 is read as millimetres with a
@@ -788,8 +789,10 @@ def _entity_ellipse(e, ctx: _DxfReading) -> None:
 def _entity_hatch(e, ctx: _DxfReading) -> None:
     """HATCH: its boundary paths (polyline paths with bulges; edge paths of lines, arcs,
     ellipses and splines, each edge read by its own reader), each a closed loop: an island
-    is a loop inside another, so it becomes a hole as any inner loop does."""
-    _ocs_flipped(e)
+    is a loop inside another, so it becomes a hole as any inner loop does; in a block
+    (``ctx.m``) each edge is placed as its kind is (:func:`_read_placed`)."""
+    if ctx.m is None:
+        _ocs_flipped(e)
     l0 = len(ctx.loops)
     for path in _hatch_paths(e):
         n0 = len(ctx.pieces)
@@ -797,6 +800,12 @@ def _entity_hatch(e, ctx: _DxfReading) -> None:
             xt = x.dxftype()
             if xt == "ARC" and len(path) == 1 and \
                     (float(x.dxf.end_angle) - float(x.dxf.start_angle)) % 360.0 == 0.0:
+                if ctx.m is not None:                   # placed: a circle or an ellipse
+                    n = len(ctx.circles)
+                    _placed_conic(x, "CIRCLE", ctx)
+                    ctx.hatch_circles.extend(ctx.circles[n:])
+                    del ctx.circles[n:]
+                    continue
                 flip = _ocs_flipped(x)                  # a full-circle edge: a circle
                 c = ctx.P(x.dxf.center)
                 r = _mm(float(x.dxf.radius) * ctx.scale, "a radius")

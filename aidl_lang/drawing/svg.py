@@ -2,7 +2,9 @@
 (:func:`_read_svg`).  A path's lines, circular and elliptical arcs, cubic and quadratic
 Béziers (:func:`_svg_path`), the ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline``
 and ``line`` elements (:func:`_svg_element`) and ``<text>`` (:func:`_svg_text`), in millimetres
-with the y axis up: the root's ``width`` against its ``viewBox`` (CSS units, 96 px to the
+with the y axis up, each under its transform exactly (a circle, ellipse or arc under a skew or
+any ``matrix``: the true ellipse or elliptic arc, :mod:`.affine`; a singular transform: the
+shape left out, named in a ``W0130`` note): the root's ``width`` against its ``viewBox`` (CSS units, 96 px to the
 inch: :func:`_css_mm`), or ``units=``; selected by element id, group id or Inkscape layer
 label, and by colour.  Before svgelements reads the file, :func:`_svg_prescan` counts what it
 draws with expat (XML entities refused, nested ``<use>`` multiplied out: ``E0304``) and finds
