@@ -457,21 +457,30 @@ def _insert_map(at, sx, sy, rot_deg, down: bool, base=(0.0, 0.0)):
     return F @ L, F @ (np.asarray(at, float) - L @ np.asarray(base, float))
 
 
+bulge = st.one_of(st.floats(0.1, 3), st.floats(-3, -0.1))
+
+
 @LAWS
-@given(kind=st.sampled_from(["circle", "arc", "ellipse", "line"]), c=st.tuples(coord, coord),
-       r1=radius, ratio=st.floats(0.2, 1.0), phi=angle, a1=st.floats(0, 360),
-       a2=st.floats(0, 360), p2=st.tuples(coord, coord), down=st.booleans(),
+@given(kind=st.sampled_from(["circle", "arc", "ellipse", "line", "bulge"]),
+       c=st.tuples(coord, coord), r1=radius, ratio=st.floats(0.2, 1.0), phi=angle,
+       a1=st.floats(0, 360), a2=st.floats(0, 360), p2=st.tuples(coord, coord),
+       down=st.booleans(), bulge=bulge,
        ins=st.tuples(st.tuples(coord, coord), scale, scale, st.floats(-180, 180),
                      st.booleans()),
        out=st.tuples(st.tuples(coord, coord), scale, scale, st.floats(-180, 180),
                      st.booleans()),
-       base=st.tuples(coord, coord))
+       base=st.tuples(coord, coord), uniform=st.booleans())
 def test_law_dxf_nested_inserts_place_every_curve_exactly(kind, c, r1, ratio, phi, a1, a2,
-                                                          p2, down, ins, out, base):
-    """A CIRCLE, ARC (extrusion +Z or -Z), partial ELLIPSE or LINE in a block placed by an
-    INSERT (scaled non-uniformly, either sign, turned, extrusion +Z or -Z) inside a block
-    (with a base point) placed by another such INSERT is read as the exact image under the
-    product of the two maps (a shear in general, which no INSERT holds)."""
+                                                          p2, down, bulge, ins, out, base,
+                                                          uniform):
+    """A CIRCLE, ARC (extrusion +Z or -Z), partial ELLIPSE, LINE or LWPOLYLINE bulge in a
+    block placed by an INSERT (scaled non-uniformly, either sign, turned, extrusion +Z or
+    -Z) inside a block (with a base point) placed by another such INSERT is read as the
+    exact image under the product of the two maps (a shear in general, which no INSERT
+    holds; with ``uniform`` scales a similarity: circles stay circles, arcs arcs)."""
+    if uniform:                         # |x scale| = |y scale|: mirrors and turns only
+        ins = (ins[0], ins[1], math.copysign(ins[1], ins[2]), *ins[3:])
+        out = (out[0], out[1], math.copysign(out[1], out[2]), *out[3:])
     sweep_deg = (a2 - a1) % 360
     if kind == "arc":
         assume(5 < sweep_deg < 355)
@@ -492,6 +501,16 @@ def test_law_dxf_nested_inserts_place_every_curve_exactly(kind, c, r1, ratio, ph
         U = np.array([math.cos(phi), math.sin(phi)]) * r1
         inner.add_ellipse((c[0], c[1]), (U[0], U[1], 0), ratio, t0, t1)
         want = Conic(c, U, np.array([-U[1], U[0]]) * ratio, t0, (t1 - t0) % TAU)
+    elif kind == "bulge":               # the arc of bulge b from c to p2 (tan of sweep / 4)
+        dd = math.dist(c, p2)
+        assume(dd > 1)
+        th = 4 * math.atan(bulge)
+        m = (np.asarray(c, float) + p2) / 2
+        n = np.array([-(p2[1] - c[1]), p2[0] - c[0]]) / dd       # left of c -> p2
+        cc = m + n * (dd / 2) / math.tan(th / 2)
+        r = math.dist(cc, c)
+        inner.add_lwpolyline([(c[0], c[1], bulge), (p2[0], p2[1], 0.0)], format="xyb")
+        want = Conic(cc, (r, 0), (0, r), math.atan2(c[1] - cc[1], c[0] - cc[0]), th)
     else:
         assume(math.dist(c, p2) > 1)
         inner.add_line(c, p2)
