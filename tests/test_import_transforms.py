@@ -208,6 +208,24 @@ def test_a_rect_under_a_turn_is_turned():
     assert {(round(g.start[0], 9), round(g.start[1], 9)) for g in o.segments} == want
 
 
+def test_a_skewed_rounded_plate_imports_to_a_program_of_its_exact_area():
+    """A rounded rectangle (40 x 20, corners r 5) with a hole (r 4) under ``skewX(20)
+    scale(1, 1.5)``: `aidl import` writes its corners as elliptic arcs (`Ellipse(...,
+    start_angle=, end_angle=)`) and the hole as an `Ellipse`; the program compiles to a part
+    whose area is the plate's times the map's determinant (1.5), 1092.41 mm2, to 1e-6 mm2
+    (was 134.74 mm2: the rect read without its transform, in px)."""
+    body = ('<g transform="translate(10,10) skewX(20) scale(1,1.5)"><rect x="0" y="0" '
+            'width="40" height="20" rx="5"/><circle cx="20" cy="10" r="4"/></g>')
+    text, notes = import_drawing(svg(body), "plate.svg")
+    assert not notes, [n.message for n in notes]
+    assert text.count("start_angle=") == 4 and text.count("Ellipse(") == 5, text
+    res = aidl_lang.compile(source=text, path="plate.aidl")
+    assert res.ok, [x.message for x in res.diagnostics]
+    (part,) = res.output.parts
+    want = 1.5 * (40 * 20 - (4 - math.pi) * 25 - math.pi * 16)
+    assert abs(part.area - want) < 1e-6, (part.area, want)
+
+
 def test_a_singular_svg_transform_is_a_located_note_not_a_circle_of_r_7():
     """``matrix(1,1,1,1,0,0)`` (issue 71: was a circle of r 7.07) and a ``scale(0)`` group:
     each shape left out, named in one W0130 note (id and line, or its own numbers); the
