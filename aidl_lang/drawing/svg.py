@@ -550,6 +550,8 @@ def _flattened(S, el) -> bool:
         a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
     except (TypeError, ValueError, AttributeError):
         return False
+    if not all(math.isfinite(x) for x in (a, b, c, d)):
+        return False                # not a number: the range checks say so (E0130)
     return singular((a, b), (c, d))
 
 
