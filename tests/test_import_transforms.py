@@ -387,6 +387,21 @@ def test_bulges_and_hatch_edges_in_nested_inserts_are_exact_elliptic_arcs():
     assert all(want.miss(q)[0] <= 1e-9 * want.size for q in read_curve(got)[0])
 
 
+def test_an_ellipse_under_a_nearly_uniform_scale_is_exact():
+    """An ELLIPSE (100 x 30, at 45 deg) in a block scaled (1, 1 + 1e-6): its axes' images
+    are 5e-7 off perpendicular, which ezdxf's ``ConstructionEllipse.transform`` takes as
+    perpendicular (its 1e-6 cut-off), 5.1e-6 mm off the true curve; read here from the
+    conjugate semi-diameters, within 1e-9 mm times its size."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    U = np.array([1.0, 1.0]) * 50 * math.sqrt(2)
+    doc.blocks.new("E").add_ellipse((0, 0), (U[0], U[1], 0), 0.3)
+    doc.modelspace().add_blockref("E", (0, 0), dxfattribs={"yscale": 1 + 1e-6})
+    d = read_drawing(dxf_text(doc), "e.dxf")
+    want = Conic((0, 0), U, np.array([-U[1], U[0]]) * 0.3).mapped(np.diag([1, 1 + 1e-6]), 0)
+    assert_same_curve(d, want)
+
+
 # ------------------------------------------------------------------ the laws
 coord = st.floats(-40, 40, allow_nan=False)
 radius = st.floats(1, 20, allow_nan=False)
