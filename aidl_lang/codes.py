@@ -882,7 +882,10 @@ else it is skipped; an SVG shape of negative size is not drawn and a negative `r
 ignored (SVG: `auto`), a size in percent read as the viewBox's size, a viewBox of negative
 width or height left out (not mirrored).  With `--parts`, an open path on a cut role that
 lies in no part is cut, not engraved: closed into a part when it ends within 0.5 mm of its
-start, a cut of the part it reaches, else a sheet-level cut.
+start, a cut of the part it reaches, else a sheet-level cut.  A shape under a
+transform with no area (an SVG `matrix(a,b,c,d,e,f)` with a*d = b*c or a scale of 0, a DXF
+INSERT of x or y scale 0) is not drawn, named by its id and line (SVG) or handle and line
+(DXF); any other transform is applied exactly.
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

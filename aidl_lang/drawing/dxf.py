@@ -3,7 +3,8 @@ out (:func:`_read_dxf`).  One reader per entity kind behind a table (:data:`_ENT
 ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are arcs), ``SPLINE``
 (non-rational, degree 1 to 3: its Bézier pieces, raised to cubics), ``ELLIPSE`` (whole, or an
 exact ``EllipticArc``), ``HATCH`` boundary paths (closed loops), ``TEXT``/``MTEXT``; an
-``INSERT``/``MINSERT`` places its block, every copy, under the entity budget (``E0304``).  An
+``INSERT``/``MINSERT`` places its block, every copy, under the entity budget (``E0304``) and
+its full matrix, nested INSERTs composed, curves exact (:mod:`.affine`).  An
 entity not in the XY plane, one whose numbers give no shape and a kind with no exact form here
 are skipped and counted in ``W0130`` notes by kind, reason and layer (:func:`_dxf_finish`).
 Units: ``$INSUNITS`` (:data:`INSUNITS_MM`, exact factors; 0 is read as millimetres with a
@@ -13,12 +14,13 @@ from __future__ import annotations
 import io
 import math
 
-from ..geometry.curves import Arc, Circle, Line, Spline, elliptic_arc
+from ..geometry.curves import Arc, Circle, Line, elliptic_arc
 from ..limits import MAX_EXTENT
+from .affine import arc_curve, dxf_conic, flattens, whole_curve
 from .chain import _chain, _finish
+from .dxf_spline import _check_spline, _dxf_spline
 from .model import (_OPTS, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError, Note,
-                    _check_made, _finite, _lerp, _mm, _OutOfRange, _plural, _range_error,
-                    bezier_spline)
+                    _check_made, _finite, _mm, _OutOfRange, _plural, _range_error, _Skip)
 
 
 # DXF $INSUNITS: (name, millimetres) exactly (ezdxf's factors are off by 1e-11 for inches)
@@ -140,6 +142,7 @@ _REASON_HINT = {
     "hatch": "",
     "height": "give the text a height above 0 in the drawing program (or its text style a "
               "fixed height)",
+    "singular": "give the INSERT a scale other than 0 in the drawing program, or delete it",
 }
 
 
@@ -281,6 +284,7 @@ class _DxfReading:
         self.style_height: dict = {}     # texts of no height of their own: why -> count
         self.count = 0
         self.layer = "0"
+        self.m = None              # the block's Matrix44 of the entity being read, or None
 
     def skip(self, kind: str, reason: str, cls: str, e=None) -> None:
         """Count an entity of ``kind`` left out for ``reason`` (of class ``cls``) on the
@@ -375,10 +379,12 @@ class _DxfReading:
 
 # ------------------------------------------------------------------ walking the entities
 def _walk(ctx: _DxfReading, entities, depth: int, top=None, inh_layer=None,
-          inh_color=None) -> None:
-    """Read ``entities`` (the model space's, or those an INSERT placed: ``top`` the INSERT of
-    the model space, ``depth`` how deep in blocks, ``inh_layer`` and ``inh_color`` what an
-    entity on layer 0 or of colour BYBLOCK takes) into ``ctx``: each counted against
+          inh_color=None, m=None) -> None:
+    """Read ``entities`` (the model space's, or a block's an INSERT places: ``top`` the INSERT
+    of the model space, ``depth`` how deep in blocks, ``inh_layer`` and ``inh_color`` what an
+    entity on layer 0 or of colour BYBLOCK takes, ``m`` the ezdxf ``Matrix44`` from the
+    block's coordinates to the world's, every INSERT's on the way composed) into ``ctx``:
+    each counted against
     :data:`MAX_ENTITIES` (``E0130``), an INSERT expanded (:func:`_expand_insert`), the
     selection and the roles applied, the rest read by its reader (:func:`_read_checked`)."""
     for e in entities:
@@ -391,7 +397,7 @@ def _walk(ctx: _DxfReading, entities, depth: int, top=None, inh_layer=None,
         if ly == "0" and inh_layer is not None:         # layer 0 in a block: the insert's
             ly = inh_layer
         if t == "INSERT":
-            _expand_insert(ctx, e, depth, top or e, ly, ctx.aci(e, inh_color))
+            _expand_insert(ctx, e, depth, top or e, ly, ctx.aci(e, inh_color), m)
             continue
         if ctx.layers is not None and ly.lower() not in ctx.layers:
             continue
@@ -405,6 +411,7 @@ def _walk(ctx: _DxfReading, entities, depth: int, top=None, inh_layer=None,
                 [ly], _dxf_rgb(e, ctx.aci(e, inh_color)), ctx.aci(e, inh_color)):
             continue            # roles (cut=, engrave=, ignore=): another role's entity
                                 # (in a block: the insert's layer and colour, as above)
+        ctx.m = m
         _read_checked(ctx, e, t, top)
 
 
@@ -414,7 +421,7 @@ def _read_checked(ctx: _DxfReading, e, t: str, top) -> None:
     An entity its reader leaves out (:class:`_Skip`) is counted; one with a number that is
     not finite or past :data:`GARBAGE` is taken back and counted; one with a number beyond
     the model extent is ``E0130`` naming it (:func:`_range_error`)."""
-    if t == "CIRCLE" and _plain_circle(e, ctx):
+    if t == "CIRCLE" and ctx.m is None and _plain_circle(e, ctx):
         return
     made = ctx.mark()
     try:
@@ -472,15 +479,101 @@ def _read_entity(e, t: str, ctx: _DxfReading) -> None:
     if reader is None:
         raise _Skip("an entity type the DXF reader does not know" if _unknown_type(e) else
                     "no exact form here", cls="exact")
-    reader(e, ctx)
+    if ctx.m is None:
+        reader(e, ctx)
+    else:
+        _read_placed(e, t, reader, ctx)
+
+
+def _read_placed(e, t: str, reader, ctx: _DxfReading) -> None:
+    """Read entity ``e`` of a block under the block's matrix ``ctx.m``, exactly: a CIRCLE,
+    ARC or ELLIPSE as the ellipse (a circle under a similarity) its conjugate semi-diameters
+    give (:func:`_placed_conic`); a polyline with bulges under a map that is no similarity
+    as its lines and arcs, each so; a HATCH's boundary edges each so; anything else as
+    ezdxf's transformed copy (lines, splines, polylines, text: an affine map keeps them)."""
+    from ezdxf.entities.dxfentity import CopyNotSupported
+    from ezdxf.math import NonUniformScalingError
+    if t in ("CIRCLE", "ARC", "ELLIPSE"):
+        return _placed_conic(e, t, ctx)
+    if t == "HATCH":
+        return reader(e, ctx)               # its edges come back here
+    if t in ("LWPOLYLINE", "POLYLINE") and not _similar(ctx.m) and any(
+            abs(float(b)) > 0 for b in _bulges(e, t)):
+        if e.has_width:
+            ctx.widths[(t, ctx.layer)] = ctx.widths.get((t, ctx.layer), 0) + 1
+        for x in e.virtual_entities():      # its lines and arcs, in the block's frame
+            _read_entity(x, x.dxftype(), ctx)
+        return
+    try:
+        x = e.copy()
+        x.transform(ctx.m)
+    except (CopyNotSupported, NonUniformScalingError, NotImplementedError) as ex:
+        raise _Skip(f"cannot be placed by its INSERT ({type(ex).__name__})") from None
+    m, ctx.m = ctx.m, None
+    try:
+        reader(x, ctx)
+    finally:
+        ctx.m = m
+
+
+def _bulges(e, t: str) -> list:
+    """The bulges of LWPOLYLINE or POLYLINE ``e``."""
+    if t == "LWPOLYLINE":
+        return [b for _x, _y, b in e.get_points("xyb")]
+    return [v.dxf.get("bulge", 0.0) for v in e.vertices]
+
+
+def _similar(m) -> bool:
+    """Whether the ezdxf ``Matrix44`` ``m`` maps the XY plane by a similarity (turns,
+    mirrors and one scale: a circle stays a circle)."""
+    from ezdxf.math import X_AXIS, Y_AXIS
+    ux, uy = m.transform_direction(X_AXIS), m.transform_direction(Y_AXIS)
+    a, b = ux.magnitude, uy.magnitude
+    return abs(a - b) <= 1e-12 * max(a, b) and abs(ux.dot(uy)) <= 1e-12 * a * b
+
+
+def _placed_conic(e, t: str, ctx: _DxfReading) -> None:
+    """CIRCLE, ARC or ELLIPSE ``e`` of a block under ``ctx.m``: its centre and conjugate
+    semi-diameters (:func:`~.affine.dxf_conic`) mapped by the matrix, then the exact curve
+    (:func:`~.affine.whole_curve`, :func:`~.affine.arc_curve`: a Circle or Arc when the map
+    is a similarity, else an ellipse or EllipticArc); out of the XY plane it is skipped."""
+    try:
+        c, u, v, t0, sweep = dxf_conic(e, t)
+    except ValueError as ex:
+        raise _Skip(str(ex), cls="number") from None
+    m, k = ctx.m, ctx.scale
+    c = m.transform(c)
+    u, v = m.transform_directions((u, v))
+    if (abs(u.z) + abs(v.z)) * k > FLAT_TOL:
+        raise _Skip("not in the drawing plane: its INSERT turns it out of the XY plane",
+                    cls="plane")
+    ctx.at_z(t, c.z)
+    cm = ctx.P(c)
+    um = (_mm(u.x * k, "a semi-axis"), _mm(u.y * k, "a semi-axis"))
+    vm = (_mm(v.x * k, "a semi-axis"), _mm(v.y * k, "a semi-axis"))
+    got = whole_curve(cm, um, vm) if sweep is None else arc_curve(cm, um, vm, t0, sweep)
+    if got is None:
+        raise _Skip("flattened by its INSERT to no area", cls="number")
+    if sweep is not None:
+        ctx.pieces.append([got])
+    elif isinstance(got, Circle):
+        ctx.circles.append(got)
+    else:
+        ctx.ellipses.append(got)
 
 
 # ------------------------------------------------------------------ blocks
-def _expand_insert(ctx: _DxfReading, e, depth: int, top, eff_layer: str, eff_color) -> None:
+def _expand_insert(ctx: _DxfReading, e, depth: int, top, eff_layer: str, eff_color,
+                   parent=None) -> None:
     """Read what the INSERT or MINSERT ``e`` places (every copy of an array) by
     :func:`_walk`, its size checked first (:func:`_check_insert`; ``top``: the INSERT of the
     model space it is under; ``eff_layer``, ``eff_color``: what its entities on layer 0 or
-    of colour BYBLOCK take); a block ezdxf cannot place is skipped and counted."""
+    of colour BYBLOCK take; ``parent``: the matrix of the block ``e`` is in, or None): the
+    block's own entities under the copy's full matrix (``Insert.matrix44()`` times
+    ``parent``: nested blocks compose their scales, turns, mirrors and extrusions, exact
+    where an INSERT could not hold the product), read by :func:`_read_placed`.  A copy whose
+    x or y scale is 0 (a singular map) is skipped with a note naming the INSERT; a block
+    ezdxf cannot place is skipped and counted."""
     rows, cols = int(e.dxf.get("row_count", 1) or 1), int(e.dxf.get("column_count", 1) or 1)
     arr = rows * cols > 1
     label_top, line = ctx.where(top)
@@ -495,19 +588,25 @@ def _expand_insert(ctx: _DxfReading, e, depth: int, top, eff_layer: str, eff_col
     else:
         inserts = [e]
 
-    def cb(x, reason) -> None:
-        ctx.skip(x.dxftype(), f"cannot be placed by its INSERT ({reason})", "exact")
     for ins in inserts:
         try:
-            ents = list(ins.virtual_entities(skipped_entity_callback=cb))
-        except DrawingError:
-            raise
+            m = ins.matrix44() if parent is None else ins.matrix44() @ parent
+            blk = ins.block()
+            if blk is None:
+                raise LookupError
+            ents = [x for x in blk if x.dxftype() != "ATTDEF"]
         except Exception as ex:
             ctx.layer = eff_layer
             ctx.skip(kind, f"its block `{e.dxf.name}` cannot be placed ({type(ex).__name__})",
                      "exact")
             continue
-        _walk(ctx, ents, depth + 1, top, eff_layer, eff_color)
+        if flattens(m):
+            ctx.layer = eff_layer
+            sx, sy = (float(e.dxf.get(a, 1.0)) for a in ("xscale", "yscale"))
+            ctx.skip(kind, f"its block `{e.dxf.name}` not placed: x scale {sx:g}, y scale "
+                           f"{sy:g} flatten it to no area (a singular map)", "singular", e)
+            continue
+        _walk(ctx, ents, depth + 1, top, eff_layer, eff_color, m)
 
 
 def _check_insert(ctx: _DxfReading, e, depth: int, head: str, line, rows: int,
@@ -688,57 +787,6 @@ def _entity_spline(e, ctx: _DxfReading) -> None:
     ctx.pieces.append([_dxf_spline(e, ctx.P)])
 
 
-def _check_spline(e, P) -> None:
-    """Raise :class:`_Skip` (class ``spline``, the entity named in the note) saying what is
-    wrong with the definition of SPLINE ``e`` before ezdxf's tools compute with it (they raise
-    ValueError, TypeError, IndexError or LinAlgError): a degree below 1 (past 3: no exact form
-    here), fewer control points than the degree needs, a count of knots or weights that does
-    not match the control points, knots that decrease or span nothing, a knot repeated past
-    the degree inside the range (the curve breaks apart: ezdxf's Bézier pieces of it are
-    wrong) or past degree + 1 at an end, a weight not above 0;
-    without control points, fewer than two fit points or two consecutive ones at one place
-    (``P``: a point in mm)."""
-    deg = e.dxf.get("degree", 3)
-    if deg < 1:
-        raise _Skip(f"degree {deg}: a spline's degree is 1 or more", cls="spline", named=True)
-    if deg > 3:
-        raise _Skip(f"degree {deg}: no exact form here", named=True)
-    n, knots, w = len(e.control_points), list(e.knots), list(e.weights)
-    if n == 0:
-        fit = [P(v) for v in e.fit_points]
-        if len(fit) < 2:
-            raise _Skip("no control points and no fit points" if not fit else
-                        "one fit point and no control points: a curve needs two or more",
-                        cls="spline", named=True)
-        for k, (a, b) in enumerate(zip(fit, fit[1:])):
-            if math.dist(a, b) <= 1e-9:
-                raise _Skip(f"fit points {k + 1} and {k + 2} at one place ({a[0]:g}, "
-                            f"{a[1]:g}) mm", cls="spline", named=True)
-        return
-    if n < deg + 1:
-        raise _Skip(f"{_plural(n, 'control point')}: a spline of degree {deg} needs "
-                    f"{deg + 1} or more", cls="spline", named=True)
-    if knots and len(knots) != n + deg + 1:
-        raise _Skip(f"{len(knots)} knots for {n} control points of degree {deg} (it needs "
-                    f"{n + deg + 1})", cls="spline", named=True)
-    if any(b < a for a, b in zip(knots, knots[1:])):
-        raise _Skip("knots that decrease", cls="spline", named=True)
-    if knots and not knots[n] > knots[deg]:
-        raise _Skip("knots that span no parameter range", cls="spline", named=True)
-    most = max((knots.count(k) for k in set(knots)), default=0)
-    inner = max((knots.count(k) for k in set(knots) if knots and knots[deg] < k < knots[n]),
-                default=0)
-    if most > deg + 1 or inner > deg:     # past degree + 1 (degree, inside): it breaks apart
-        raise _Skip(f"a knot repeated {max(most, inner)} times: the curve breaks apart there "
-                    f"(degree {deg} allows {deg} inside its range, {deg + 1} at its ends)",
-                    cls="spline", named=True)
-    if w and len(w) != n:
-        raise _Skip(f"{_plural(len(w), 'weight')} for {n} control points", cls="spline",
-                    named=True)
-    if any(not x > 0 for x in w):
-        raise _Skip("a weight not above 0", cls="spline", named=True)
-
-
 def _entity_ellipse(e, ctx: _DxfReading) -> None:
     """ELLIPSE: a whole one as ``(cx, cy, rx, ry, rotation)``, a partial one as a piece of
     one exact :class:`~aidl_lang.geometry.curves.EllipticArc`."""
@@ -778,8 +826,10 @@ def _entity_ellipse(e, ctx: _DxfReading) -> None:
 def _entity_hatch(e, ctx: _DxfReading) -> None:
     """HATCH: its boundary paths (polyline paths with bulges; edge paths of lines, arcs,
     ellipses and splines, each edge read by its own reader), each a closed loop: an island
-    is a loop inside another, so it becomes a hole as any inner loop does."""
-    _ocs_flipped(e)
+    is a loop inside another, so it becomes a hole as any inner loop does; in a block
+    (``ctx.m``) each edge is placed as its kind is (:func:`_read_placed`)."""
+    if ctx.m is None:
+        _ocs_flipped(e)
     l0 = len(ctx.loops)
     for path in _hatch_paths(e):
         n0 = len(ctx.pieces)
@@ -787,6 +837,12 @@ def _entity_hatch(e, ctx: _DxfReading) -> None:
             xt = x.dxftype()
             if xt == "ARC" and len(path) == 1 and \
                     (float(x.dxf.end_angle) - float(x.dxf.start_angle)) % 360.0 == 0.0:
+                if ctx.m is not None:                   # placed: a circle or an ellipse
+                    n = len(ctx.circles)
+                    _placed_conic(x, "CIRCLE", ctx)
+                    ctx.hatch_circles.extend(ctx.circles[n:])
+                    del ctx.circles[n:]
+                    continue
                 flip = _ocs_flipped(x)                  # a full-circle edge: a circle
                 c = ctx.P(x.dxf.center)
                 r = _mm(float(x.dxf.radius) * ctx.scale, "a radius")
@@ -1065,69 +1121,3 @@ def _fast_dxf(data: bytes):
         return ezdxf.read(io.StringIO(text))
     except Exception:
         return None
-
-
-class _Skip(Exception):
-    """An entity left out: ``what`` (SVG: its kind; DXF: the reason), ``kind`` (DXF: the
-    entity type when not the entity's own) and ``cls``, the class of the reason (``plane``,
-    ``number``, ``exact``, ``text``, ``spline``: DXF notes are grouped and given a fix by it);
-    ``named``: the note names the entity (a defect of this one, not of its kind)."""
-
-    def __init__(self, what: str, kind: str | None = None, cls: str = "exact",
-                 named: bool = False) -> None:
-        self.what, self.kind, self.cls, self.named = what, kind, cls, named
-
-
-def _dxf_spline(e, P) -> Spline:
-    """The :class:`Spline` of SPLINE ``e`` (checked by :func:`_check_spline`; ``P``: a point
-    in mm): its B-spline (equal weights are no rational curve: dropped; an unclamped one is
-    clamped, :func:`_clamped`) cut into Bézier pieces, each raised to a cubic."""
-    bs = e.construction_tool()
-    if bs.is_rational:
-        w = list(bs.weights())
-        if max(w) - min(w) > 1e-12 * max(w):
-            raise _Skip("rational: no exact form here", named=True)
-        from ezdxf.math import BSpline
-        bs = BSpline(bs.control_points, order=bs.order, knots=bs.knots())
-    if not bs.is_clamped:
-        bs = _clamped(bs)
-    deg = bs.degree
-    if deg > 3:
-        raise _Skip(f"degree {deg}: no exact form here")
-    knots = list(bs.knots())
-    spans = []
-    for ctrl in bs.bezier_decomposition():
-        pts = [P(v) for v in ctrl]
-        if deg == 1:
-            a, b = pts
-            pts = [a, _lerp(a, b, 1 / 3), _lerp(a, b, 2 / 3), b]
-        elif deg == 2:
-            a, b, c = pts
-            pts = [a, _lerp(a, b, 2 / 3), _lerp(c, b, 2 / 3), c]
-        spans.append(pts)
-    distinct = []
-    for k in knots[deg:len(knots) - deg]:
-        if not distinct or k - distinct[-1] > 1e-15 * max(1.0, abs(k)):
-            distinct.append(k)
-    steps = [b - a for a, b in zip(distinct, distinct[1:])]
-    if len(steps) != len(spans) or min(steps, default=0) <= 0:
-        steps = None
-    return bezier_spline(spans, steps)
-
-
-def _clamped(bs):
-    """The B-spline ``bs`` (unclamped: its ends are not knots of multiplicity ``order``) as a
-    clamped one: the same curve over its domain ``knots[degree]`` to ``knots[count]``, each end
-    inserted until it is a knot of multiplicity ``order`` and the control points and knots
-    outside dropped (the curve between is unchanged, Boehm's knot insertion)."""
-    from ezdxf.math import BSpline
-    k = list(bs.knots())
-    a, b = k[bs.degree], k[bs.count]
-    for t in (a, b):
-        while list(bs.knots()).count(t) < bs.order:
-            bs = bs.insert_knot(t)
-    k = list(bs.knots())
-    i, j = k.index(a), len(k) - 1 - k[::-1].index(b)
-    sub = k[i:j + 1]
-    return BSpline(list(bs.control_points)[i:i + len(sub) - bs.order], order=bs.order,
-                   knots=sub)

@@ -105,6 +105,17 @@ def _range_error(ex: _OutOfRange, entity: str, name: str, line: int | None = Non
                         "the drawing, or select other layers or ids", line)
 
 
+class _Skip(Exception):
+    """An entity left out: ``what`` (SVG: its kind; DXF: the reason), ``kind`` (DXF: the
+    entity type when not the entity's own) and ``cls``, the class of the reason (``plane``,
+    ``number``, ``exact``, ``text``, ``spline``: DXF notes are grouped and given a fix by it);
+    ``named``: the note names the entity (a defect of this one, not of its kind)."""
+
+    def __init__(self, what: str, kind: str | None = None, cls: str = "exact",
+                 named: bool = False) -> None:
+        self.what, self.kind, self.cls, self.named = what, kind, cls, named
+
+
 @dataclass
 class Note:
     """A warning about the drawing (``W0130``: entities skipped, with their count)."""

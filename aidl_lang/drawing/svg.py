@@ -2,7 +2,9 @@
 (:func:`_read_svg`).  A path's lines, circular and elliptical arcs, cubic and quadratic
 Béziers (:func:`_svg_path`), the ``rect``, ``circle``, ``ellipse``, ``polygon``, ``polyline``
 and ``line`` elements (:func:`_svg_element`) and ``<text>`` (:func:`_svg_text`), in millimetres
-with the y axis up: the root's ``width`` against its ``viewBox`` (CSS units, 96 px to the
+with the y axis up, each under its transform exactly (a circle, ellipse or arc under a skew or
+any ``matrix``: the true ellipse or elliptic arc, :mod:`.affine`; a singular transform: the
+shape left out, named in a ``W0130`` note): the root's ``width`` against its ``viewBox`` (CSS units, 96 px to the
 inch: :func:`_css_mm`), or ``units=``; selected by element id, group id or Inkscape layer
 label, and by colour.  Before svgelements reads the file, :func:`_svg_prescan` counts what it
 draws with expat (XML entities refused, nested ``<use>`` multiplied out: ``E0304``) and finds
@@ -13,7 +15,8 @@ from __future__ import annotations
 import io
 import math
 
-from ..geometry.curves import Arc, Circle, Line, elliptic_arc
+from ..geometry.curves import Circle, Line
+from .affine import arc_curve, singular, whole_curve
 from .chain import _finish
 from .model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,
                     _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
@@ -69,6 +72,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
     lost_text: list = []            # "`the words` (why)", each a text not written
     skipped: dict[str, int] = {}
     spec: list = []                 # shapes in error by the SVG spec (_spec_checked)
+    flat: list = []                 # shapes under a transform with no area: not drawn
     count = 0
 
     def P(p):
@@ -150,7 +154,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                 raise DrawingError("E0130", f"`{name}` has more than {opts.max_shapes} shapes",
                                    "select fewer with id= or split the drawing")
             try:
-                _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped)
+                _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped, flat)
             except ValueError as ex:        # svgelements: a length it cannot resolve (a %
                 tag = type(el).__name__.lower()     # with no viewBox to measure it by)
                 why = f"{tag} with a length that cannot be resolved ({str(ex).rstrip('.')})"
@@ -162,6 +166,9 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                                    name) from None
     _skip_notes(skipped, notes, name)
     _spec_notes(spec, notes, name)
+    flat_note = _flat_note(flat, data, name) if flat else None
+    if flat_note is not None:
+        notes.append(flat_note)
     if lost_text:
         n = len(lost_text)
         notes.append(Note("W0130", f"{n} text{'s' if n != 1 else ''} of `{name}` not "
@@ -170,6 +177,8 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                           "write them with Text(...) in a `drawing` of the part"))
     d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
     d.texts = texts
+    if flat_note is not None:         # the message of an import that gives nothing
+        d.seen = "left out: " + flat_note.message
     return d
 
 
@@ -390,25 +399,43 @@ def _bad_data_note(bad: list, name: str) -> Note:
                 "drawing again from its program")
 
 
-def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped) -> None:
-    """Read the shape ``el`` into the lists; its numbers checked (:func:`_check_made`: raises
-    :class:`_OutOfRange`)."""
+def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped,
+                 flat: list | None = None) -> None:
+    """Read the shape ``el`` into the lists, its transform applied exactly (a circle or
+    ellipse under any affine map is the true ellipse, :mod:`.affine`); its numbers checked
+    (:func:`_check_made`: raises :class:`_OutOfRange`).  A shape whose transform (the
+    groups' and its own, in all) has no area, a singular matrix, is not drawn: its label
+    goes to ``flat`` (:func:`_svg_label`) for the ``W0130`` note."""
     made = (len(pieces), len(loops), len(circles), len(ellipses))
+    if _flattened(S, el):
+        if flat is not None:
+            flat.append(_svg_label(el))
+        return
     if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
-        # the implicit values: centre, semi-axes and turn after the element's
-        # transform (a turned ellipse keeps its own cx, cy, rx, ry and a matrix)
-        c = P(el.implicit_center)
-        rx = _mm(float(el.implicit_rx) * scale, "a radius")
-        ry = _mm(float(el.implicit_ry) * scale, "a radius")
-        rot = -_finite(el.rotation, "an angle") if el.rotation else 0.0
-        if rx <= 0 or ry <= 0:
+        # the element's own cx, cy, rx, ry under what is left of its transform (svgelements
+        # folds a scale and a shift into them, not a turn, skew or mirror): the images of its
+        # semi-axes are conjugate semi-diameters of the ellipse drawn
+        rx, ry = float(el.rx), float(el.ry)
+        if not (rx > 0 and ry > 0):
             return
-        if abs(rx - ry) <= 1e-12 * max(rx, ry):
-            circles.append(Circle(c, rx))
+        m = el.transform
+        a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
+        o = P(m.point_in_matrix_space((float(el.cx), float(el.cy))))
+        u = (_mm(a * rx * scale, "a radius"), _mm(-b * rx * scale, "a radius"))
+        v = (_mm(c * ry * scale, "a radius"), _mm(-d * ry * scale, "a radius"))
+        got = whole_curve(o, u, v)
+        if got is None:
+            if flat is not None:
+                flat.append(_svg_label(el))
+        elif isinstance(got, Circle):
+            circles.append(got)
         else:
-            ellipses.append((c[0], c[1], rx, ry, rot))
+            ellipses.append(got)
     else:
-        _svg_path(S, S.Path(el), P, pieces, loops, skipped)
+        path = S.Path(el)
+        if not path.transform.is_identity():        # a rect or polygon svgelements left
+            path = abs(path)                          # under its transform: applied
+        _svg_path(S, path, P, pieces, loops, skipped, scale)
     _check_made(pieces[made[0]:] + [seg for seg, _ in loops[made[1]:]] + circles[made[2]:]
                 + ellipses[made[3]:])
 
@@ -433,7 +460,9 @@ def _css_mm(width, vb_width) -> float | None:
     return w * per / vb_width if vb_width else 25.4 / 96
 
 
-def _svg_path(S, path, P, pieces, loops, skipped) -> None:
+def _svg_path(S, path, P, pieces, loops, skipped, scale: float) -> None:
+    """The segments of the svgelements ``path`` (its transform applied: user units, y
+    down) as pieces and loops in mm (``P``: a point in mm; ``scale``: mm per unit)."""
     cur: list = []
 
     def flush(closed: bool) -> None:
@@ -467,34 +496,84 @@ def _svg_path(S, path, P, pieces, loops, skipped) -> None:
             c = P(seg.control)
             cur.append(bezier_spline([[a, _lerp(a, c, 2 / 3), _lerp(b, c, 2 / 3), b]]))
         elif isinstance(seg, S.Arc):
-            if not seg.is_circular():
-                # an elliptical arc: its ellipse in the drawing's frame (P maps the user
-                # units to mm and turns y over: the x axis's image gives the rotation) and
-                # the exact arc from its start through its middle to its end
-                c = P(seg.center)
-                rot = float(seg.get_rotation())
-                rx, ry = float(seg.rx), float(seg.ry)
-                ux = P((seg.center.x + rx * math.cos(rot), seg.center.y + rx * math.sin(rot)))
-                vy = P((seg.center.x - ry * math.sin(rot), seg.center.y + ry * math.cos(rot)))
-                rxm, rym = math.dist(c, ux), math.dist(c, vy)
-                if rxm <= 1e-12 or rym <= 1e-12 or math.dist(a, b) <= 1e-12:
-                    skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
-                    continue
-                cur.append(elliptic_arc(c, rxm, rym, math.atan2(ux[1] - c[1], ux[0] - c[0]),
-                                        a, P(seg.point(0.5)), b))
+            got = _svg_arc(seg, P, a, b, scale)
+            if got is None:
+                skipped["elliptical arc"] = skipped.get("elliptical arc", 0) + 1
                 continue
-            c = P(seg.center)
-            sweep = -float(seg.sweep)          # the y axis turns over
-            cur.append(_arc_from(a, b, c, sweep))
+            cur.append(got)
         else:
             skipped[type(seg).__name__] = skipped.get(type(seg).__name__, 0) + 1
     flush(False)
 
 
-def _arc_from(p, q, center, sweep) -> Arc:
-    r = 0.5 * (math.dist(p, center) + math.dist(q, center))
-    a1 = math.atan2(p[1] - center[1], p[0] - center[0])
-    return Arc((float(center[0]), float(center[1])), r, a1, sweep)
+def _svg_arc(seg, P, a, b, scale: float):
+    """The exact circular or elliptic arc of the svgelements ``Arc`` ``seg`` from ``a`` to
+    ``b`` (mm), or None when it spans no area or no length.  svgelements keeps an arc under
+    a transform as its centre and the images ``prx``, ``pry`` of the points at parameter 0
+    and a quarter turn: conjugate semi-diameters ``u``, ``v`` (perpendicular only under a
+    similarity); its ``sweep`` is the parameter's, its sign turned over by a mirror (so the
+    parameter runs by ``sweep`` times the sign of ``u x v``).  The start's parameter comes
+    from ``u``, ``v`` (:mod:`.affine`)."""
+    cx, cy = float(seg.center.x), float(seg.center.y)
+    u = (float(seg.prx.x) - cx, float(seg.prx.y) - cy)
+    v = (float(seg.pry.x) - cx, float(seg.pry.y) - cy)
+    um, vm = ((_mm(w[0] * scale, "a semi-axis"), _mm(-w[1] * scale, "a semi-axis"))
+              for w in (u, v))                  # P's linear part: y turns over
+    if singular(u, v) or math.dist(a, b) <= 1e-12:
+        return None
+    det = u[0] * v[1] - u[1] * v[0]
+    sx, sy = float(seg.start.x) - cx, float(seg.start.y) - cy
+    t0 = math.atan2((u[0] * sy - u[1] * sx) / det, (sx * v[1] - sy * v[0]) / det)
+    sweep = _finite(seg.sweep, "an angle") * (1.0 if det > 0 else -1.0)
+    return arc_curve(P(seg.center), um, vm, t0, sweep, a, b)
+
+
+def _flat_note(flat: list, data: bytes, name: str) -> Note:
+    """The ``W0130`` note of the shapes ``flat`` (:func:`_svg_label`) left out because their
+    transform is singular, each with its line when it has an id."""
+    import re
+
+    def where(label: str) -> str:
+        m = re.search(r"\(id `(.*)`\)$", label)
+        at = data.find(f'id="{m.group(1)}"'.encode()) if m else -1
+        line = data.count(b"\n", 0, at) + 1
+        return label + (f" at line {line}" if at >= 0 else "")
+    n = len(flat)
+    shown = "; ".join(where(x) for x in flat[:5]) + (f"; and {n - 5} more" if n > 5 else "")
+    return Note("W0130", f"{n} shape{'s' if n != 1 else ''} of `{name}` not drawn: "
+                         f"{'its' if n == 1 else 'their'} transform has no area (a singular "
+                         f"matrix flattens {'it' if n == 1 else 'them'} onto a line or a "
+                         f"point): {shown}",
+                "fix the transform in the drawing (a scale of 0, or a matrix(a,b,c,d,e,f) "
+                "with a*d = b*c, draws nothing), or delete the shape")
+
+
+def _flattened(S, el) -> bool:
+    """Whether the transform of shape ``el`` in all (its groups' and its own, as svgelements
+    gathers them in its ``transform`` value) is singular: no area (a zero scale,
+    ``matrix(1,1,1,1,0,0)``)."""
+    try:
+        m = S.Matrix(el.values.get("transform", "")) if el.values.get("transform") \
+            else el.transform
+        a, b, c, d = float(m.a), float(m.b), float(m.c), float(m.d)
+    except (TypeError, ValueError, AttributeError):
+        return False
+    if not all(math.isfinite(x) for x in (a, b, c, d)):
+        return False                # not a number: the range checks say so (E0130)
+    return singular((a, b), (c, d))
+
+
+def _svg_label(el) -> str:
+    """``<circle> (id `c`)``, or the element's own numbers when it has no id."""
+    tag = {"SimpleLine": "line"}.get(type(el).__name__, type(el).__name__.lower())
+    ident = getattr(el, "id", None)
+    if ident:
+        return f"<{tag}> (id `{ident}`)"
+    own = [f'{k}="{el.values[k]}"' for k in ("x", "y", "cx", "cy", "r", "rx", "ry", "width",
+                                             "height", "x1", "y1", "d", "points")
+           if isinstance(el.values.get(k), str)]
+    text = " ".join(own)
+    return f"<{tag} {text[:60]}{'...' if len(text) > 60 else ''}>" if own else f"<{tag}>"
 
 
 def _skip_notes(skipped: dict, notes: list, name: str) -> None:
