@@ -220,7 +220,10 @@ def test_compiles_on_dask_keep_the_wall_limit_and_refuse_when_full(cluster, tmp_
         answers = {}
 
         def ask(name, source):
-            answers[name] = c.post("/api/view", json={"sid": sid, "source": source})
+            # a session of its own: one session's previews are compiled one at a time (a
+            # newer one supersedes those waiting), and this test is about the cluster's queue
+            own = c.post("/api/session").json()["sid"]
+            answers[name] = c.post("/api/view", json={"sid": own, "source": source})
         # one compile runs past its time, one waits for the cluster's only thread, a third
         # finds the queue full
         runs = [threading.Thread(target=ask, args=("slow", SPIN)),

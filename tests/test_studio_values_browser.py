@@ -46,7 +46,10 @@ const read = () => {
     const n = row.querySelector('input[type=number]');
     if (r) {       // the value as the field says it; the slider's thumb on its nearest step
       sliders[row.dataset.name] = Number(n.value);
-      if (Math.abs(Number(r.value) - Number(n.value)) > Number(r.step) / 2 + 1e-9) off.push([row.dataset.name, r.value, n.value]);
+      // the range input's step is "any" (the page puts it on its stops): half the param's step
+      const p = (window.studio.state.params || []).find((q) => q.name === row.dataset.name);
+      const half = p && p.step > 0 ? p.step / 2 : 0;
+      if (Math.abs(Number(r.value) - Number(n.value)) > half + 1e-9) off.push([row.dataset.name, r.value, n.value]);
     } else if (c) sliders[row.dataset.name] = c.checked;
   }
   const v = window.studio.view || {};
@@ -213,7 +216,7 @@ def test_a_fast_drag_costs_one_compile_and_shows_only_its_own_pictures(browser):
     # compile in flight when it ended and one for its last values
     page.evaluate("""async () => {
         const r = document.querySelector('input[type=range][name="length"]');
-        const lo = Number(r.min), step = Number(r.step);
+        const lo = Number(r.min), step = window.studio.state.params.find((p) => p.name === r.name).step;
         for (const [k, gap] of [[1, 10], [2, 10], [3, 10], [4, 10], [5, 10], [6, 10], [7, 10], [8, 10]]) {
           r.value = lo + 20 * k * step; r.dispatchEvent(new Event('input', { bubbles: true }));
           await new Promise((ok) => setTimeout(ok, gap));
@@ -222,13 +225,14 @@ def test_a_fast_drag_costs_one_compile_and_shows_only_its_own_pictures(browser):
     assert view_compiles(page) - before <= 2
     page.evaluate("""async () => {
         const r = document.querySelector('input[type=range][name="width"]');
-        const lo = Number(r.min), step = Number(r.step);
+        const lo = Number(r.min), step = window.studio.state.params.find((p) => p.name === r.name).step;
         for (let k = 1; k <= 8; k++) {
           r.value = lo + 10 * k * step; r.dispatchEvent(new Event('input', { bubbles: true }));
           await new Promise((ok) => setTimeout(ok, 60));
         } }""")
     now = settled(page)
-    w = page.eval_on_selector('input[type=range][name="width"]', "e => Number(e.min) + 80 * Number(e.step)")
+    w = page.eval_on_selector('input[type=range][name="width"]',
+                             "e => Number(e.min) + 80 * window.studio.state.params.find((p) => p.name === 'width').step")
     assert now["sliders"]["width"] == pytest.approx(w)
 
 
