@@ -7,16 +7,12 @@ before issue 73, 3921 / 35451 / 2103 / 924 tokens; after, about 1400 / 1700 / 14
 One server for the module; its further calls check the error shape, the patch tool, the
 symlink refusal and the limits in the descriptions."""
 import asyncio
-import os
-import sys
-from pathlib import Path
 
 import pytest
 
 pytest.importorskip("mcp")
 ezdxf = pytest.importorskip("ezdxf")
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "benchmarks"))
-import mcp_tokens as M  # noqa: E402
+from benchmarks import mcp_tokens as M  # noqa: E402
 
 BUDGET = {"plate": 2500, "hinge": 2500, "box": 2500, "import": 1500}   # tokens (chars/4)
 EXTRA: dict = {}
