@@ -102,3 +102,14 @@ def test_a_dxf_text_with_percent_codes_imports_without_a_missing_glyph(tmp_path)
     r = aidl_lang.compile(text, path=tmp_path / "t.aidl")
     assert r.ok, [str(d) for d in r.errors]
     assert not [d for d in r.diagnostics if d.code == "W0105"], [str(d) for d in r.diagnostics]
+
+
+def test_engraved_symbols_read_back_as_text(tmp_path):
+    """`aidl import` reads the strokes of the built-in font back as `Text` (docs/import.md):
+    the symbols too; `⌀` is drawn as `Ø` is, so it reads back as `Ø` (the same strokes)."""
+    from aidl_lang.drawing.infer import import_drawing
+    r = aidl_lang.compile('drawing labels {\n    t = Text("MOTOR Ø5 45° ±0.1 2×M3 ⌀8", '
+                          '(0, 0), size=10, anchor="start")\n}\n')
+    text, notes = import_drawing(r.to_dxf().encode(), "x.dxf", infer=True)
+    assert not notes and "Line(" not in text, text
+    assert 'Text("MOTOR Ø5 45° ±0.1 2×M3 Ø8", position=(0, 0), size=10' in text, text
