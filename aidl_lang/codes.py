@@ -793,7 +793,8 @@ SVG would be empty. Add shapes, or instantiate a template. A file of only templa
 constants is a library and gets no warning.
 """),
     "W0105": ("character not in the engraving font", """
-`Text` is drawn with a single-stroke (Hershey) font that covers printable ASCII. Characters
+`Text` is drawn with a single-stroke (Hershey) font that covers printable ASCII and the
+symbols of dimensions `° ± × µ Ø ø ⌀` (what DXF's `%%d %%p %%c` decode to). Characters
 outside it (accents, other scripts, tabs, symbols such as `☃`) cannot be drawn and are left
 out; the warning names each one with its code point.
 

@@ -1,5 +1,10 @@
 """Single-stroke text from the Hershey fonts (PyPI ``Hershey-Fonts``; font ``futural``).
 
+The font draws printable ASCII and the symbols of dimensions that DXF text codes decode to
+(:data:`SYMBOLS`): ``°`` ``±`` ``×`` from the package's Hershey simplex math font
+(``mathlow``), ``µ`` from its simplex Greek (``greek``), and ``Ø`` ``ø`` ``⌀`` composed of
+futural's ``O`` (``o``) and a slash corner to corner of its box; all in futural's units.
+
 Sizes are cap heights in mm.  :func:`text_strokes` gives polylines relative to the anchor point.
 """
 from __future__ import annotations
@@ -13,7 +18,17 @@ CAP = 21.0   # Hershey "futural" cap height in font units (normalize_rendering(1
 FONT = "futural"
 
 
-_GLYPHS_FORMAT = 1
+_GLYPHS_FORMAT = 2                 # 2: the symbols of SYMBOLS added (issue 71)
+
+# character -> (Hershey font of the package, its character there): the same simplex strokes in
+# the same units as futural (their digits and `+` are futural's, point for point)
+_BORROWED = {"°": ("mathlow", "`"), "±": ("mathlow", "!"), "×": ("mathlow", "#"),
+             "µ": ("greek", "m"), "μ": ("greek", "m")}
+# character -> (futural's glyph, the slash added, from its lower left to its upper right, in
+# the font's raw units: y down, baseline 9, cap line -12)
+_SLASHED = {"Ø": ("O", ((-8, 9), (8, -12))), "⌀": ("O", ((-8, 9), (8, -12))),
+            "ø": ("o", ((-6, 9), (7, -5)))}
+SYMBOLS = "°±×µμØø⌀"
 
 
 @lru_cache(maxsize=1)
@@ -55,11 +70,22 @@ def _glyphs_from_package() -> dict:
     f.load_default_font(FONT)
     f.normalize_rendering(1.0)
     o = f.render_options
-    out = {}
-    for ch, g in f.all_glyphs.items():
-        strokes = tuple(tuple(((x - g.left_offset) * o["scalex"], o["yofs"] + y * o["scaley"])
-                              for x, y in stroke) for stroke in g.strokes)
-        out[ch] = (strokes, o["spacing"] + o["scalex"] * g.char_width)
+
+    def norm(strokes, left_offset, char_width):
+        return (tuple(tuple(((x - left_offset) * o["scalex"], o["yofs"] + y * o["scaley"])
+                            for x, y in stroke) for stroke in strokes),
+                o["spacing"] + o["scalex"] * char_width)
+    out = {ch: norm(g.strokes, g.left_offset, g.char_width) for ch, g in f.all_glyphs.items()}
+    fonts: dict = {}
+    for ch, (font, src) in _BORROWED.items():
+        if font not in fonts:
+            fonts[font] = HersheyFonts()
+            fonts[font].load_default_font(font)
+        g = fonts[font].all_glyphs[src]
+        out[ch] = norm(g.strokes, g.left_offset, g.char_width)
+    for ch, (src, slash) in _SLASHED.items():
+        g = f.all_glyphs[src]
+        out[ch] = norm([*g.strokes, list(slash)], g.left_offset, g.char_width)
     return out
 
 
@@ -183,12 +209,12 @@ def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "b
 
 
 def missing_glyphs(text: str) -> list[str]:
-    """Characters of ``text`` the single-stroke font cannot draw (it covers printable ASCII;
-    spaces and newlines are layout, not glyphs), each once, in order."""
+    """Characters of ``text`` the single-stroke font cannot draw (it covers printable ASCII and
+    :data:`SYMBOLS`; spaces and newlines are layout, not glyphs), each once, in order."""
     out: list[str] = []
     for ch in text:
         if ch in " \n" or ch in out:
             continue
-        if not (32 < ord(ch) < 127) or not _raw(ch):
+        if (not (32 < ord(ch) < 127) and ch not in SYMBOLS) or not _raw(ch):
             out.append(ch)
     return out

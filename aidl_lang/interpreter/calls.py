@@ -344,8 +344,9 @@ class Calls:
                 self.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "
                                   f"{'they are' if len(lost) > 1 else 'it is'} left out of the "
                                   "drawing", spans.get("text", node.span),
-                                  hint="the single-stroke font draws printable ASCII only; "
-                                       "write the text in ASCII (e.g. `e` for `é`)")
+                                  hint="the single-stroke font draws printable ASCII and "
+                                       "° ± × µ Ø ø ⌀ only; write the text in ASCII "
+                                       "(e.g. `e` for `é`)")
         r = _new(GeomRef)              # GeomRef(g) without the class call
         r.geom = g
         return r
