@@ -13,11 +13,11 @@ from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.members import member as geom_member
 from ..geometry.expr import Lin, _new
-from ..geometry.values import (LEN, NUM, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
-from .common import (DEG, POISON, FileCtx, Scope, _Silent, _common_ancestor, _is_geometry_stmt, _is_plain_const)
+from .common import (DEG, POISON, FileCtx, Scope, _Silent, _a, _common_ancestor, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
 
 # what a statement may raise and still be reported and skipped (Statements._stmt_failed)
@@ -637,6 +637,7 @@ class Statements:
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
+        self._adapt_args(d, vals)
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
@@ -662,6 +663,37 @@ class Statements:
             self.template_depth -= 1
             self.file = saved_file
         return StructRef(child)
+
+    def _adapt_args(self, d, vals: dict) -> None:
+        """Give each argument of template ``d`` the unit kind of its parameter's default, at the call.
+
+        A parameter whose default is written with a unit (``thickness=3 mm``, ``angle=30 deg``)
+        is a length (angle): a bare number given to it is in the *caller's* file unit (degrees),
+        as everywhere a length is expected, so that it does not stay bare inside a template of
+        another file (where ``floor(run / finger)`` would be a length^-1). A value of another
+        kind is ``E0109`` at the argument (``thickness=3 deg``), not at a use in the template.
+        ``vals`` maps a parameter to ``(value, argument node)`` and is changed in place."""
+        for p in d.params:
+            got = vals.get(p.name)
+            dflt = p.default
+            if got is None or type(dflt) is not A.Num or dflt.unit is None:
+                continue
+            v, node = got
+            if type(v) is not Q or v.const() is None:
+                continue
+            want = LEN if dflt.unit in UNITS_LENGTH else ANG
+            if v.dim == want:
+                continue
+            kind = "length" if want is LEN else "angle"
+            if v.dim == NUM:
+                f = self.file
+                k = (f.unit_scale if f else 1.0) if want is LEN else DEG
+                vals[p.name] = (Q.num(v.const() * k, want), node)
+                continue
+            shown = _src(self.sink, dflt.span) or f"{_fmt_num(dflt.value)} {dflt.unit}"
+            raise EvalError("E0109", f"`{d.name}`: `{p.name}` is {_a(kind)} like its default "
+                            f"`{shown}`, got {_a(dim_name(v.dim))}", node.span,
+                            hint=f"give `{p.name}` {_a(kind)}, e.g. `{p.name}={shown}`")
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
