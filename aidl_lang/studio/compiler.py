@@ -131,31 +131,45 @@ def handler(budget: float = 1.0):
     return handle
 
 
+def _upload_bytes(folder: str, name: str) -> bytes:
+    """The bytes of the session's upload ``name``, opened once beneath ``folder`` without
+    following a link, at most the drawings' size limit; ``OSError`` when it cannot be."""
+    from ..files import open_beneath, read_regular
+    from ..sources import MAX_DRAWING_BYTES
+    fd = open_beneath(folder, name)
+    try:
+        return read_regular(fd, MAX_DRAWING_BYTES, name)
+    finally:
+        os.close(fd)
+
+
+def _unreadable(name: str, e: OSError) -> dict:
+    return {"error": f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}"}
+
+
+def _refused(name: str, e) -> dict:
+    """A :class:`~aidl_lang.drawing.model.DrawingError` as the page shows it."""
+    return {"error": f"{name}: error[{e.code}]: {e.message}"
+                     + (f" (help: {e.hint})" if e.hint else "")}
+
+
 def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
     """The upload ``name`` (a ``.dxf`` or ``.svg`` of the session's ``folder``, read without
     following a link) as an AIDL program: ``{"program", "notes"}``, its notes as ``aidl
     import`` prints them; ``{"error"}`` for a drawing the importer refuses (docs/import.md)."""
     from ..drawing.infer import import_drawing
     from ..drawing.model import DrawingError
-    from ..files import open_beneath, read_regular
-    from ..sources import MAX_DRAWING_BYTES
     if not name.lower().endswith((".dxf", ".svg")):
         return {"error": f"`{name}` is not a .dxf or .svg drawing"}
     if infer == "drawing":
         return drawing_program(folder, name)
     try:
-        fd = open_beneath(folder, name)
-        try:
-            data = read_regular(fd, MAX_DRAWING_BYTES, name)
-        finally:
-            os.close(fd)
+        text, notes = import_drawing(_upload_bytes(folder, name), name, infer=infer,
+                                     budget=budget)
     except OSError as e:
-        return {"error": f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}"}
-    try:
-        text, notes = import_drawing(data, name, infer=infer, budget=budget)
+        return _unreadable(name, e)
     except DrawingError as e:
-        return {"error": f"{name}: error[{e.code}]: {e.message}"
-                         + (f" (help: {e.hint})" if e.hint else "")}
+        return _refused(name, e)
     return {"program": text,
             "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in notes]}
 
@@ -166,20 +180,12 @@ def drawing_program(folder: str, name: str) -> dict:
     its size in a comment.  ``{"program", "notes"}`` or ``{"error"}`` as :func:`import_upload`."""
     from ..drawing.model import DrawingError
     from ..drawing.read import read_drawing
-    from ..files import open_beneath, read_regular
-    from ..sources import MAX_DRAWING_BYTES
     try:
-        fd = open_beneath(folder, name)
-        try:
-            data = read_regular(fd, MAX_DRAWING_BYTES, name)
-        finally:
-            os.close(fd)
-        d = read_drawing(data, name)
+        d = read_drawing(_upload_bytes(folder, name), name)
     except OSError as e:
-        return {"error": f"cannot read `{name}`: {getattr(e, 'strerror', None) or e}"}
+        return _unreadable(name, e)
     except DrawingError as e:
-        return {"error": f"{name}: error[{e.code}]: {e.message}"
-                         + (f" (help: {e.hint})" if e.hint else "")}
+        return _refused(name, e)
     import json
     import re
     closed = bool(d.outlines or d.circles or d.ellipses)
