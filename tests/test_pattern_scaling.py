@@ -19,20 +19,7 @@ from aidl_lang.solver import freedom
 from aidl_lang.solver.freedom import degrees_of_freedom, freedom_text
 from aidl_lang.solver.redundancy import redundancies
 from aidl_lang.solver.tape import Tape
-
-
-def panel(nx: int, ny: int, pitch: float = 10.0, r: float = 2.0) -> str:
-    """The issue's panel: a rectangle and nx x ny holes in a loop (benchmarks' generator)."""
-    W, H = nx * pitch, ny * pitch
-    return f"""solid panel {{
-  body = Rectangle(center=(0, 0), width={W} mm, height={H} mm)
-  for i in range({nx}) {{
-    for j in range({ny}) {{
-      hole h {{ c = Circle(center=({-W / 2 + pitch / 2} mm + i * {pitch} mm, {-H / 2 + pitch / 2} mm + j * {pitch} mm), radius={r} mm) }}
-    }}
-  }}
-}}
-"""
+from benchmarks.perforated import panel_aidl as panel   # the issue's panel: a loop of holes
 
 
 def _counts(nx: int, ny: int, monkeypatch) -> dict:
