@@ -49,7 +49,6 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"; the minimum is set with --min-wall", ""),
     (r" \(follow_symlinks=True writes the file it points to\)", ""),
     # the prompt's and the docs' mentions of the command line (issue 73): the tools instead
-    (r"`--set (\w+)=([^`]*)`", _override),
     (r"`aidl render --layout sheet`", '`render` with layout="sheet"'),
     (r"--layout sheet", 'layout="sheet"'),
     (r"`--assembled`", "`render` with assembled=true"),
