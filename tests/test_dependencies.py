@@ -98,8 +98,9 @@ def _guards(tree: ast.AST) -> dict[int, list[tuple[int, str]]]:
 def imports_of(path: Path) -> list[tuple[str, int, bool, bool]]:
     """(top-level module, line, guarded, at import time) of every absolute import in ``path``
     (at import time: not inside a function)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"), str(path))
-    guards = _guards(tree)
+    text = path.read_text(encoding="utf-8")
+    tree = ast.parse(text, str(path))
+    guards = _guards(tree) if "importorskip" in text else {}
     out: list[tuple[str, int, bool, bool]] = []
 
     def names(node) -> list[str]:
@@ -116,6 +117,8 @@ def imports_of(path: Path) -> list[tuple[str, int, bool, bool]]:
 
     def visit(node, scopes, in_try):
         for child in ast.iter_child_nodes(node):
+            if isinstance(child, ast.expr):
+                continue                   # an import is a statement: no need to look inside
             for name in names(child):
                 top = name.split(".")[0]
                 skipped = any(mod == top and line < child.lineno
@@ -225,17 +228,24 @@ def test_every_test_that_needs_ocp_is_marked_step():
     """A test that needs OCP (``pytest.importorskip("OCP")`` in it, or a call to a helper that
     does) skips under the README's command and carries ``@pytest.mark.step``: .ci/run runs
     ``-m step`` again in a venv with the ``step`` extra, so it cannot stay skipped for ever."""
-    trees = {p: ast.parse(p.read_text(encoding="utf-8")) for p in TESTS.glob("*.py")}
+    texts = {p: p.read_text(encoding="utf-8") for p in TESTS.glob("*.py")}
 
     def skips_ocp(fn) -> bool:
         return any(isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute)
                    and n.func.attr == "importorskip" and n.args
                    and isinstance(n.args[0], ast.Constant) and n.args[0].value == "OCP"
                    for n in ast.walk(fn))
-    functions = [(p, f) for p, t in trees.items() for f in ast.walk(t)
-                 if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef))]
-    helpers = {f.name for _, f in functions if not f.name.startswith("test_") and skips_ocp(f)}
+
+    def functions_of(paths):
+        return [(p, f) for p in paths for f in ast.walk(ast.parse(texts[p]))
+                if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef))]
+    # only a file that names OCP can skip on it, and only a file that names such a helper
+    # can call it (parsing every test file took 15 s of the suite)
+    helpers = {f.name for _, f in functions_of([p for p, t in texts.items() if "OCP" in t])
+               if not f.name.startswith("test_") and skips_ocp(f)}
     assert {"step_faces", "step_edge_points"} <= helpers
+    functions = functions_of([p for p, t in texts.items()
+                              if "OCP" in t or any(h in t for h in helpers)])
     unmarked = []
     for p, f in functions:
         if not f.name.startswith("test_"):
