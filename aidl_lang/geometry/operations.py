@@ -191,6 +191,7 @@ class _Cloner:
             raise EvalError("E0303", f"more than {most} geometry objects", self.ctx.cur_span,
                             hint="use fewer or larger repetitions, or raise `--budget`")
         new = Geometry(g.kind, dest, g.span, construction=g.construction, closed=g.closed)
+        new.copied = True          # made by Mirrored or a pattern: it follows its original
         if dest is not g.owner:
             # a copy of a structure: its shapes keep their names (`holes[1].c`, read by
             # `aidl check --values`); a copy of a shape next to it is named by its assignment

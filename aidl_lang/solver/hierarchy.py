@@ -677,12 +677,13 @@ class Solver:
             mine = set(first)
             drawn: set = set()
             for g in s.geometry:
-                if not g.construction:
+                if not g.construction and not g.__dict__.get("copied"):
                     _unknowns(g, drawn)
-            if drawn & mine:               # a drawn part to hold: its helpers move
-                cons: set = set()
-                for g in made:
-                    _unknowns(g, cons)
+            if drawn & mine:               # a drawn part to hold: its helpers move, and the
+                cons: set = set()          # copies made of its shapes follow them (a mirror
+                for g in s.geometry:       # about a construction line the solve turns)
+                    if g.construction or g.__dict__.get("copied"):
+                        _unknowns(g, cons)
                 cons = (cons & mine) - drawn
                 helpers = [i for i in first if i in cons]
                 first = [i for i in first if i not in cons]

@@ -23,6 +23,7 @@ from ..part.scanwork import decompose
 from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
+MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart
 
 
 def _allowed(a: Structure, b: Structure) -> bool:
@@ -155,7 +156,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     apart = ""
     if cutters:
         shapes = ", ".join(items[k][0] for k in split[:3])
-        holes = ", ".join(f"`{h.path}`" for h in cutters[:4])
+        holes = ", ".join(f"`{h.path}`" for h in cutters[:4]) + (", ..." if len(cutters) > 4 else "")
         many = len(cutters) > 1
         apart = f" ({'holes' if many else 'hole'} {holes} cut{'' if many else 's'} {shapes} apart)"
         hint = (f"move, shorten or shrink {'those holes' if len(cutters) > 1 else 'that hole'} "
@@ -172,16 +173,26 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
 def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:
     """The holes of part ``s`` that cut one of the ``split`` shapes (its contributors found
     in two pieces: ``(name, span, shape)``) apart: those without which ``shape`` would have
-    fewer pieces (at most 8 candidates measured: W0504 is rare, its cause named once)."""
+    fewer pieces (at most :data:`MAX_CUTTERS` holes whose box meets a split shape's are
+    measured, one union with the part each: W0504 is rare, its cause named once)."""
     out = []
 
     def outer(x) -> int:
         return sum(_signed(np.asarray(p, dtype=float)) > 0 for p in x.to_polygons())
     base = outer(shape)
+    boxes = [shp.bounds() for _, _, shp in split]
+    tried = 0
     for c in d.cuts:
         if c.region is None or c.region.is_empty() or not c.owner.is_within(s) \
                 and c.owner is not s or c.hole in out:
             continue
+        b = c.region.bounds()
+        if not any(x0 <= b[2] and x1 >= b[0] and y0 <= b[3] and y1 >= b[1]
+                   for x0, y0, x1, y1 in boxes):
+            continue
+        tried += 1
+        if tried > MAX_CUTTERS:
+            break
         back = [c.region ^ shp for _, _, shp in split]
         back = [x for x in back if _area(x) > MIN_AREA]
         if not back:
