@@ -132,3 +132,23 @@ def test_W0404_on_holes_tied_to_each_other_followed_one_at_a_time_leaves_nothing
     assert not ws
     assert v["plate.top_screw.c.center"] == pytest.approx((0, 30.15), abs=EXACT)
     assert v["plate.bottom_screw.c.center"] == pytest.approx((0, -30.15), abs=EXACT)
+
+
+def test_a_reused_pattern_name_is_told_to_take_its_own_name(tmp_path):
+    src = """solid p {
+    body = Rectangle(center=(0, 0), width=60, height=30)
+    hole a { c = Circle(center=(-10, 0), radius=2) }
+    hole b { c = Circle(center=(-10, 8), radius=2) }
+    x = LinearPattern(a, 2, (10, 0))
+    x = LinearPattern(b, 2, (10, 0))
+}
+"""
+    c = _compile(src, tmp_path)
+    ((code, msg),) = _errors(c)
+    # was "name the copy: `copy = ...`" to a copy that was named
+    assert code == "E0108" and msg.endswith("give these copies a name of their own (`x_2 = ...`)")
+    (d,) = [d for d in c.sink.items if d.severity == "error"]
+    assert (d.span.line, d.span.col) == (6, 9)
+    c2 = _compile(src.replace("    x = LinearPattern(b", "    x_2 = LinearPattern(b"), tmp_path, "q.aidl")
+    assert not _errors(c2) and c2.drawing.parts[0].shape.area() == pytest.approx(
+        60 * 30 - 4 * 3.141592653589793 * 4, rel=1e-3)

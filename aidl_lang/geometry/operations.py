@@ -310,7 +310,8 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
         nm = base if k == 0 and not indexed else f"{base}[{k}]"
         if nm in home.children:
             raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
-                                 f"name the copy: `copy = ...`")
+                                 + (f"give these copies a name of their own (`{name}_2 = ...`)"
+                                    if name else "name the copy: `copy = ...`"))
         out = StructRef(cl.struct(target.struct, home, nm))
     else:
         home = target.geom.owner
