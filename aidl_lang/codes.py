@@ -367,7 +367,10 @@ constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, 
 the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
 (harmless)". A structure declared inside a standard-library template is the template's affair
-and is not reported to its user.
+and is not reported to its user. Features tied only to each other (two screw holes with
+`VerticalDistance(a, b, 60.3)`) slide together and are each reported: tie one and check again
+(the others follow it, the rest is named by direction); tying both with `.bb.center ==`
+repeats the distance (W0401).
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)
@@ -415,6 +418,9 @@ a constraint places it with a gap, or it touches the body at a single point (a r
 resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
 edge; if they really are separate parts, make the structure an
 `assembly` (its parts are separate by design and are not checked against each other).
+When a hole cuts one shape apart (a slot across a strip, a ring of overlapping arc slots
+around a hub), the warning names the hole(s) and the shape, and the hint says to move,
+shorten or shrink them: an `assembly` there would ship a part in pieces.
 """),
     "W0505": ("engraving off the material", """
 A drawing inside a solid part runs outside the part's outline or across one of its holes, where

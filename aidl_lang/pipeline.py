@@ -490,13 +490,13 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
     if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
         return None
     sl = sliding(solver)
-    for t, axes in sl.features:
-        if id(t) not in sl.constrained or id(t) in sl.bounded:
-            continue            # placed by its coordinates alone, as AIDL allows, or free
-            #                     only within the room an inequality leaves: not warned
-        if t.span is not None and in_stdlib(t.span.file):
-            continue            # a structure inside a standard-library template: the
-            #                     template's own affair, not its user's (issue 61)
+    warned = [(t, axes) for t, axes in sl.features
+              if id(t) in sl.constrained and id(t) not in sl.bounded
+              and not (t.span is not None and in_stdlib(t.span.file))]
+    # placed by its coordinates alone, as AIDL allows, or free only within the room an
+    # inequality leaves: not warned; nor a structure inside a standard-library template
+    # (the template's own affair, not its user's, issue 61)
+    for t, axes in warned:
         part = t.parent
         while part is not None and part.parent is not None and part.parent.kind != "assembly":
             part = part.parent
@@ -510,7 +510,11 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
                      hint=f"tie it to a shape of its part with a constraint in the parent "
                           f"(e.g. {ex}); `Fixed({name})` holds it only where the part is "
                           "fixed too; where the whole part sits may stay free, that is "
-                          "harmless")
+                          "harmless" + (
+                              "; tie one feature, then check again: features tied to each "
+                              "other (`VerticalDistance(a, b, ...)`) follow it, and a second "
+                              "`.bb.center ==` would repeat them (W0401)"
+                              if len(warned) > 1 else ""))
     return sl
 
 

@@ -191,6 +191,7 @@ class _Cloner:
             raise EvalError("E0303", f"more than {most} geometry objects", self.ctx.cur_span,
                             hint="use fewer or larger repetitions, or raise `--budget`")
         new = Geometry(g.kind, dest, g.span, construction=g.construction, closed=g.closed)
+        new.copied = True          # made by Mirrored or a pattern: it follows its original
         if dest is not g.owner:
             # a copy of a structure: its shapes keep their names (`holes[1].c`, read by
             # `aidl check --values`); a copy of a shape next to it is named by its assignment
@@ -288,6 +289,13 @@ class _Cloner:
         return v
 
 
+def _loop_suffix(ctx) -> str:
+    """``[i]`` per loop around the statement being run (``""`` outside loops, or for a
+    context that does not run loops)."""
+    f = getattr(ctx, "_loop_suffix", None)
+    return f() if f is not None else ""
+
+
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
           indexed: bool = False, line=None):
     S = ctx.struct
@@ -296,11 +304,14 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)
         home = target.struct.parent or S
-        base = name or f"{target.struct.name}_{what}"
+        # a named copy in a loop is named per iteration as a structure there is (`rings[0][1]`
+        # of `rings = CircularPattern(...)` in `for`): each iteration's copies their own names
+        base = name + _loop_suffix(ctx) if name else f"{target.struct.name}_{what}"
         nm = base if k == 0 and not indexed else f"{base}[{k}]"
         if nm in home.children:
             raise OperationError(f"`{home.path}` already has a child named `{nm}`; "
-                                 f"name the copy: `copy = ...`")
+                                 + (f"give these copies a name of their own (`{name}_2 = ...`)"
+                                    if name else "name the copy: `copy = ...`"))
         out = StructRef(cl.struct(target.struct, home, nm))
     else:
         home = target.geom.owner

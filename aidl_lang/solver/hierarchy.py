@@ -540,7 +540,8 @@ class Solver:
                                for i in self.own.get(id(t), ())]
         frames = lambda structs: [i for t in structs if id(t) not in no_frame
                                   for i in self.frame.get(id(t), ())]
-        if s.children and (yield from self._features_first(s, local, order, own, frames)):
+        if (s.children or _helpers(s)) \
+                and (yield from self._features_first(s, local, order, own, frames)):
             return True
         # stage 0: only this structure's own unknowns
         last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
@@ -599,10 +600,10 @@ class Solver:
         part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
         to change shape, ...) the point is restored and the paper's ladder runs as before,
         moving the part."""
-        held, first = self._part_unknowns(s, own, frames)
+        held, first, helpers = self._part_unknowns(s, own, frames)
         if not held or not self._related(local, held):
             return False
-        stages = self._feature_stages(s, held, own, frames)
+        stages = self._feature_stages(s, held, own, frames, helpers)
         top = next(stages, None)
         if top is None:
             return False
@@ -630,15 +631,21 @@ class Solver:
             self.x[cols] = values
         return False
 
-    def _feature_stages(self, s: Structure, held: set, own, frames):
+    def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
         """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
-        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns."""
+        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns.
+        ``helpers``: the unknowns of ``s``'s own construction geometry, free in every stage
+        (a construction square for a bolt pattern goes to the plate, not the plate to it)."""
         levels = _levels(s)
         D = len(levels) - 1
         upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
         below = lambda d: [t for lv in levels[1:d + 1] for t in lv]
+        helpers = list(helpers)
+        if helpers:                        # the part's helpers alone, against its own rows
+            rows = self.rows_of([s])
+            yield 0, rows, self._cols(helpers, rows)
         for d in range(1, D + 1):          # descendants translate
-            params = [i for i in frames(below(d)) if i not in held]
+            params = helpers + [i for i in frames(below(d)) if i not in held]
             if params:
                 rows = self.rows_of(upto(d - 1))
                 yield d, rows, self._cols(params, rows)
@@ -647,27 +654,46 @@ class Solver:
         # that can translate is not deformed to spare its part (its `Fixed` frame holds)
         all_frames = frames(below(D))
         for d in range(1, D + 1):
-            params = [i for i in all_frames + own([t for t in below(d)
-                                                   if id(t) not in self.frame])
-                      if i not in held]
+            params = helpers + [i for i in all_frames + own([t for t in below(d)
+                                                             if id(t) not in self.frame])
+                                if i not in held]
             if params:
                 rows = self.rows_of(upto(max(d, D - 1)))
                 yield d, rows, self._cols(params, rows)
 
-    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list]:
+    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"
-        frees): ``s``'s own unknowns; and when ``s`` is an assembly that declares a hole
+        frees, those of its construction geometry): ``s``'s own unknowns less those of its
+        construction geometry (a helper, placed on the part like a feature: issue 73's
+        model run, a NEMA 17 plate moved 15 mm to meet its construction bolt square); and
+        when ``s`` is an assembly that declares a hole
         (``hole lid_hole {...}`` beside ``box = finger_box(...)``, with ``CutInto(lid_hole,
         box.lid)``), every unknown of its other children (``box``) held, their frames freed
         in stage own (relations between parts are met there as before: both move)."""
         first = own([s])
+        helpers: list = []
+        made = _helpers(s)
+        if made:
+            mine = set(first)
+            drawn: set = set()
+            for g in s.geometry:
+                if not g.construction and not g.__dict__.get("copied"):
+                    _unknowns(g, drawn)
+            if drawn & mine:               # a drawn part to hold: its helpers move, and the
+                cons: set = set()          # copies made of its shapes follow them (a mirror
+                for g in s.geometry:       # about a construction line the solve turns)
+                    if g.construction or g.__dict__.get("copied"):
+                        _unknowns(g, cons)
+                cons = (cons & mine) - drawn
+                helpers = [i for i in first if i in cons]
+                first = [i for i in first if i not in cons]
         held = set(first)
         for c in self.cut_parts.get(id(s), ()):
             sub = list(c.subtree())
             held.update(frames(sub))
             held.update(own(sub))
             first += frames([c])
-        return held, first
+        return held, first, helpers
 
     def _related(self, rows: np.ndarray, held: set) -> bool:
         """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
@@ -703,6 +729,24 @@ class Solver:
             row_vars(exprs[r], vs)
             mask[k] = not any(v < n and free[v] and v not in held for v in vs)
         return mask
+
+
+def _helpers(s: Structure) -> list:
+    """``s``'s own construction geometry (``construction=true``): solved, never drawn."""
+    return [g for g in s.geometry if g.construction]
+
+
+def _unknowns(g, out: set) -> None:
+    """Add the parameter indices of geometry ``g`` (its points, scalars and parts) to
+    ``out``."""
+    for p in g.points.values():
+        out.add(p.ix)
+        out.add(p.iy)
+    for sc in g.scalars.values():
+        out.add(sc.index)
+    for part in g.parts.values():
+        if hasattr(part, "points"):
+            _unknowns(part, out)
 
 
 def _cut_parts(model: Model) -> dict[int, list]:

@@ -24,6 +24,7 @@ merge or reach the outline."""
 from __future__ import annotations
 
 import math
+import re
 
 import manifold3d as mf
 import numpy as np
@@ -693,7 +694,11 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                          f"the two cut one opening, and {a.names[inner]} cuts nothing of its "
                          f"own ({common:.2f} mm^2)", a.spans[inner], labels=labels,
                          hint=f"move {a.names[inner]} clear of {outer} (its size or position may "
-                              "be in another unit or frame than meant), or delete it")
+                              "be in another unit or frame than meant), or delete one of the "
+                              f"two: as drawn the opening is {outer}'s (a countersink or "
+                              "counterbore is a second depth, which a through cut cannot make: "
+                              "keep the screw's through hole and delete the wider one, or "
+                              "engrave the wider outline in a `drawing`)")
             continue
         if common is None:
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
@@ -705,6 +710,9 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             else (None, None)
         meant = (f"write `{stmt}` in `{where.path}` (or draw both shapes in one hole "
                  "structure, whose faces may overlap)" if stmt else
+                 "name the pattern statement that copies them (`NAME = ` before it) and "
+                 "write `AllowOverlap(NAME)` after it (the list holds the original and every "
+                 "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
@@ -738,10 +746,17 @@ def _holes_allowed(ci, cj) -> bool:
     return _intended(ci.hole, ci.owner, cj.hole) or _intended(cj.hole, cj.owner, ci.hole)
 
 
+# a reference the program can write: names, indices and members (`rings[0][1]`, `a.b[2]`); a
+# copy made by a pattern with no name is `ring[0]_pattern[1]`, which no program can write
+_NAMEABLE = re.compile(r"[A-Za-z_]\w*(\[\d+\])*(\.[A-Za-z_]\w*(\[\d+\])*)*\Z")
+
+
 def _allow_holes(hi: Structure, hj: Structure) -> tuple:
     """The ``AllowOverlap`` statement that says two merging holes ``hi`` and ``hj`` cut one
     opening as meant, and the structure to write it in (their nearest common ancestor):
-    ``(structure, statement)``, or ``(None, None)`` when either would be named ``self``."""
+    ``(structure, statement)``, ``(None, None)`` when either would be named ``self``, and
+    ``(structure, "")`` when one is a copy made by a pattern with no name (the pattern's
+    statement must be named first: ``NAME = CircularPattern(...)``)."""
     common = hi.parent
     while common is not None and not hj.is_within(common):
         common = common.parent
@@ -750,6 +765,8 @@ def _allow_holes(hi: Structure, hj: Structure) -> tuple:
     refs = [_ref(hi, common), _ref(hj, common)]
     if "self" in refs:
         return None, None
+    if not all(_NAMEABLE.match(r) for r in refs):
+        return common, ""                        # a copy of a pattern with no name
     if refs[0] == refs[1]:                       # two copies of one pattern: the list
         return common, f"AllowOverlap({refs[0]})"
     return common, f"AllowOverlap({refs[0]}, {refs[1]})"

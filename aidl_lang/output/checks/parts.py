@@ -23,6 +23,7 @@ from ..part.scanwork import decompose
 from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
+MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart
 
 
 def _allowed(a: Structure, b: Structure) -> bool:
@@ -132,7 +133,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     # a fifth): only those are measured, and only contributors whose box meets the piece's
     # (every piece against every contributor was 25 M intersections for 5 000 circles)
     boxes = np.array([shp.bounds() for _, _, shp in items], dtype=float).reshape(-1, 4)
-    groups = []
+    groups, seen, split = [], {}, []
     for p in pieces[:6]:
         b = p.bounds()
         near = np.flatnonzero((boxes[:, 0] <= b[2]) & (boxes[:, 2] >= b[0])
@@ -142,17 +143,65 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
             n, _, shp = items[k]
             if _area(p ^ shp) > max(1e-9, 1e-6 * _area(shp)):
                 names.append(n)
+                seen[k] = seen.get(k, 0) + 1
+                if seen[k] == 2:
+                    split.append(k)     # one shape in two pieces: a hole cut it apart
                 if len(names) > 4:
                     break
         groups.append("{" + ", ".join(names[:4]) + (", ..." if len(names) > 4 else "") + "}")
+    hint = ("make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
+            "(touching at a point is not enough), or, if they are separate parts, make the "
+            "structure an `assembly`")
+    cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
+    apart = ""
+    if cutters:
+        shapes = ", ".join(items[k][0] for k in split[:3])
+        holes = ", ".join(f"`{h.path}`" for h in cutters[:4]) + (", ..." if len(cutters) > 4 else "")
+        many = len(cutters) > 1
+        apart = f" ({'holes' if many else 'hole'} {holes} cut{'' if many else 's'} {shapes} apart)"
+        hint = (f"move, shorten or shrink {'those holes' if len(cutters) > 1 else 'that hole'} "
+                "so that material joins the pieces where it crosses (or widen the shape "
+                "there); only if the pieces are meant to be separate parts, make the "
+                "structure an `assembly`")
     sink.warning(
         "W0504",
         f"solid `{s.path}` falls apart into {len(pieces)} separate pieces: "
-        + "; ".join(groups) + ("; ..." if len(pieces) > 6 else ""),
-        s.span,
-        hint="make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
-             "(touching at a point is not enough), or, if they are separate parts, make the "
-             "structure an `assembly`")
+        + "; ".join(groups) + ("; ..." if len(pieces) > 6 else "") + apart,
+        s.span, hint=hint)
+
+
+def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:
+    """The holes of part ``s`` that cut one of the ``split`` shapes (its contributors found
+    in two pieces: ``(name, span, shape)``) apart: those without which ``shape`` would have
+    fewer pieces (at most :data:`MAX_CUTTERS` holes whose box meets a split shape's are
+    measured, one union with the part each: W0504 is rare, its cause named once)."""
+    out = []
+
+    def outer(x) -> int:
+        return sum(_signed(np.asarray(p, dtype=float)) > 0 for p in x.to_polygons())
+    base = outer(shape)
+    boxes = [shp.bounds() for _, _, shp in split]
+    tried = 0
+    for c in d.cuts:
+        if c.region is None or c.region.is_empty() or not c.owner.is_within(s) \
+                and c.owner is not s or c.hole in out:
+            continue
+        b = c.region.bounds()
+        if not any(x0 <= b[2] and x1 >= b[0] and y0 <= b[3] and y1 >= b[1]
+                   for x0, y0, x1, y1 in boxes):
+            continue
+        tried += 1
+        if tried > MAX_CUTTERS:
+            break
+        back = [c.region ^ shp for _, _, shp in split]
+        back = [x for x in back if _area(x) > MIN_AREA]
+        if not back:
+            continue
+        if outer(_union([shape] + back)) < base:
+            out.append(c.hole)
+        if len(out) >= 8:
+            break
+    return out
 
 
 def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool = True) -> None:
