@@ -16,7 +16,8 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     touches no other (a tab short of its slot: the gap)."""
     from ..fabrication.assembly import extrude, fit, normals_of
     parts = [(p.name, p.kind, p.shape, d.thickness.get(p.name)) for p in d.parts]
-    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline), deadline,
+    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline,
+                             bends=getattr(d, "bends", None)), deadline,
                      normals_of(d.placement))
 
     def at(name):

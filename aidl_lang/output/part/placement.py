@@ -53,3 +53,91 @@ def placement_matrix(s: Structure, x) -> np.ndarray:
     to_local = np.eye(4)
     to_local[0, 3], to_local[1, 3] = -ox, -oy
     return M @ to_local
+
+
+# ------------------------------------------------------------------ bends (``Bend``)
+# The most vertices a bent part's refined mesh may hold: past it the bend zones' edges are left
+# longer (the chord error grows, never the time)
+MAX_BENT_VERTICES = 200_000
+
+
+def bends_of(s: Structure, x) -> list[tuple[float, float, float]]:
+    """The ``Bend``s of part ``s`` on the flat sheet: ``[(at, angle, radius)]`` sorted by
+    ``at``, each the bend line's x in absolute sheet coordinates (mm; the ``at`` written, in
+    the part's frame, plus the frame offsets, ``x`` the solved values), its angle (radians,
+    positive: the part's top face, z = thickness, inside the bend) and inside radius (mm);
+    [] when the program bends it nowhere."""
+    got = getattr(s, "bends", None)
+    if not got:
+        return []
+    ox = sum(float(x[a.fx]) for a in [s, *s.ancestors()])
+    return sorted((float(at) + ox, float(angle), float(radius)) for at, angle, radius, _ in got)
+
+
+def bend_zones(bends, t: float) -> list[tuple[float, float, float, float]]:
+    """Each bend's zone on the flat sheet: ``(x0, x1, angle, radius)``, centred on its line
+    ``at`` and ``|angle| * (radius + t / 2)`` wide (the sheet's middle keeps its length: a
+    K-factor of 0.5), for material ``t`` mm thick."""
+    out = []
+    for at, a, r in bends:
+        w = abs(a) * (r + t / 2)
+        out.append((at - w / 2, at + w / 2, a, r))
+    return out
+
+
+def bend_points(v: np.ndarray, bends, t: float) -> np.ndarray:
+    """The points ``v`` (n x 3, the flat sheet: x, y mm, z 0..``t`` up through the thickness)
+    of a part bent by ``bends`` (:func:`bends_of`), in the same frame: the part left of the
+    first bend zone stays; in a zone a point at flat x goes round the bend's axis (parallel to
+    y, ``radius`` from the face inside the bend) by ``angle`` times its way across the zone,
+    its depth in the sheet kept (the inside face at the radius); past a zone the rest of the
+    part turns rigidly by ``angle`` and runs on along the last tangent.  y never changes."""
+    v = np.asarray(v, dtype=float)
+    out = v.copy()
+    X = np.eye(3)                           # (x, z, 1) of the frame so far: flat -> bent
+    done = np.zeros(len(v), dtype=bool)
+    for x0, x1, a, r in bend_zones(bends, t):
+        before = ~done & (v[:, 0] < x0)
+        out[before, 0], out[before, 2] = _apply(X, v[before, 0], v[before, 2])
+        done |= before
+        zone = ~done & (v[:, 0] <= x1)
+        rn = r + t / 2
+        s = 1.0 if a >= 0 else -1.0
+        z = v[zone, 2] if s > 0 else t - v[zone, 2]       # depth from the outside face
+        phi = (v[zone, 0] - x0) / rn
+        rho = t + r - z
+        bx, bz = x0 + rho * np.sin(phi), (t + r) - rho * np.cos(phi)
+        out[zone, 0], out[zone, 2] = _apply(X, bx, bz if s > 0 else t - bz)
+        done |= zone
+        # past the zone: turned by the angle about the axis, then on along the tangent
+        c, sn = np.cos(a), np.sin(a)
+        cz = t + r if s > 0 else -r                        # the axis' z on the flat sheet
+        B = np.array([[c, -sn, 0.0], [sn, c, 0.0], [0.0, 0.0, 1.0]])
+        # the zone's end x1 goes to where the axis turns x0 by the angle: rotate about (x0, cz)
+        # after shifting the rest back by the zone's width
+        T1 = np.array([[1.0, 0.0, -(x1 - x0)], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+        about = np.array([[1.0, 0.0, x0], [0.0, 1.0, cz], [0.0, 0.0, 1.0]])
+        back = np.array([[1.0, 0.0, -x0], [0.0, 1.0, -cz], [0.0, 0.0, 1.0]])
+        X = X @ about @ B @ back @ T1
+    rest = ~done
+    out[rest, 0], out[rest, 2] = _apply(X, v[rest, 0], v[rest, 2])
+    return out
+
+
+def _apply(X: np.ndarray, px: np.ndarray, pz: np.ndarray):
+    return X[0, 0] * px + X[0, 1] * pz + X[0, 2], X[1, 0] * px + X[1, 1] * pz + X[1, 2]
+
+
+def refine_for_bends(m, bends, t: float, tol: float):
+    """The ``manifold3d.Manifold`` ``m`` (a part extruded on the flat sheet) with its edges
+    split to at most ``sqrt(8 * tol * radius)`` mm (the smallest inside radius; at least
+    t / 8), so each chord of a bend leaves its arc by at most ``tol`` mm (a sagitta of
+    L^2 / 8R), within :data:`MAX_BENT_VERTICES` (longer edges past it); ``m`` when not bent."""
+    if not bends:
+        return m
+    rmin = max(min(r for _, _, r in bends), t / 8)
+    length = float(np.sqrt(8.0 * tol * rmin))
+    x0, y0, z0, x1, y1, z1 = m.bounding_box()
+    area = 2 * (x1 - x0) * (y1 - y0) + 2 * (x1 - x0 + y1 - y0) * (z1 - z0)
+    length = max(length, float(np.sqrt(area / MAX_BENT_VERTICES)))
+    return m.refine_to_length(length)
