@@ -83,13 +83,18 @@ def extrude(parts, where: dict, thickness: float | None = None, deadline=None,
 
 def bent(m, bends, t: float, tol: float | None = None):
     """The ``manifold3d.Manifold`` ``m`` (a part extruded on the flat sheet, ``t`` mm thick)
-    bent by its ``bends`` (:func:`~..part.placement.bend_points`): its edges split so each
-    chord stays within ``tol`` mm (default ``CHORD_TOL``) of the bent surface
+    bent by its ``bends`` (:func:`~..part.placement.bend_points`): cut across its bend zones so
+    each chord stays within ``tol`` mm (default ``CHORD_TOL``) of the bent surface
     (:func:`~..part.placement.refine_for_bends`), then every vertex moved."""
+    import manifold3d as mf
     from ...geometry.tessellate import CHORD_TOL
     from ..part.placement import bend_points, refine_for_bends
-    m = refine_for_bends(m, bends, t, CHORD_TOL if tol is None else tol)
-    return m.warp_batch(lambda v: bend_points(np.asarray(v, dtype=float), bends, t))
+    mesh = m.to_mesh64()
+    v, f = refine_for_bends(np.asarray(mesh.vert_properties, dtype=float)[:, :3],
+                            np.asarray(mesh.tri_verts, dtype=np.int64), bends, t,
+                            CHORD_TOL if tol is None else tol)
+    return mf.Manifold(mf.Mesh64(vert_properties=bend_points(v, bends, t),
+                                 tri_verts=f.astype(np.uint64)))
 
 
 def _rgba(colour: str) -> list[int]:

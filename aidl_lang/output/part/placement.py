@@ -56,9 +56,9 @@ def placement_matrix(s: Structure, x) -> np.ndarray:
 
 
 # ------------------------------------------------------------------ bends (``Bend``)
-# The most vertices a bent part's refined mesh may hold: past it the bend zones' edges are left
-# longer (the chord error grows, never the time)
-MAX_BENT_VERTICES = 200_000
+# The most cutting planes across a part's bend zones (refine_for_bends): past it they are set
+# farther apart (the chord error grows, never the work)
+MAX_BENT_PLANES = 2000
 
 
 def bends_of(s: Structure, x) -> list[tuple[float, float, float]]:
@@ -128,16 +128,64 @@ def _apply(X: np.ndarray, px: np.ndarray, pz: np.ndarray):
     return X[0, 0] * px + X[0, 1] * pz + X[0, 2], X[1, 0] * px + X[1, 1] * pz + X[1, 2]
 
 
-def refine_for_bends(m, bends, t: float, tol: float):
-    """The ``manifold3d.Manifold`` ``m`` (a part extruded on the flat sheet) with its edges
-    split to at most ``sqrt(8 * tol * radius)`` mm (the smallest inside radius; at least
-    t / 8), so each chord of a bend leaves its arc by at most ``tol`` mm (a sagitta of
-    L^2 / 8R), within :data:`MAX_BENT_VERTICES` (longer edges past it); ``m`` when not bent."""
-    if not bends:
-        return m
+def refine_for_bends(v: np.ndarray, f: np.ndarray, bends, t: float, tol: float):
+    """The mesh ``v`` (n x 3, the flat sheet), ``f`` (m x 3 vertex indices) of a part to be
+    bent, cut across by planes x = const through each bend zone, at most ``sqrt(8 * tol *
+    radius)`` mm apart (the smallest inside radius; at least t / 8), so each triangle in a zone
+    spans so little of its arc that its chord leaves the bent surface by at most ``tol`` mm
+    (a sagitta of L^2 / 8R; the bend is a cylinder along y, so only x needs cutting); every
+    cut splits the triangles it crosses at a vertex shared by both sides of each edge, so a
+    watertight mesh stays watertight.  At most :data:`MAX_BENT_PLANES` planes in all (the
+    chords grow past it, never the work).  Returns the new ``(v, f)``."""
+    zones = bend_zones(bends, t)
     rmin = max(min(r for _, _, r in bends), t / 8)
-    length = float(np.sqrt(8.0 * tol * rmin))
-    x0, y0, z0, x1, y1, z1 = m.bounding_box()
-    area = 2 * (x1 - x0) * (y1 - y0) + 2 * (x1 - x0 + y1 - y0) * (z1 - z0)
-    length = max(length, float(np.sqrt(area / MAX_BENT_VERTICES)))
-    return m.refine_to_length(length)
+    step = float(np.sqrt(8.0 * tol * rmin))
+    total = sum(x1 - x0 for x0, x1, _, _ in zones)
+    step = max(step, total / MAX_BENT_PLANES)
+    for x0, x1, _, _ in zones:
+        n = max(1, int(np.ceil((x1 - x0) / step)))
+        for c in np.linspace(x0, x1, n + 1):
+            v, f = _cut_x(v, f, float(c))
+    return v, f
+
+
+def _cut_x(v: np.ndarray, f: np.ndarray, c: float):
+    """The mesh ``(v, f)`` with every triangle the plane x = ``c`` crosses split along it
+    (one new vertex per crossed edge, shared by the triangles on both sides of it)."""
+    d = v[:, 0] - c
+    side = np.where(np.abs(d) < 1e-12, 0, np.sign(d)).astype(int)
+    E = np.stack([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]], axis=1)          # m x 3 x 2
+    cross = side[E[..., 0]] * side[E[..., 1]] < 0
+    if not cross.any():
+        return v, f
+    ce = np.sort(E[cross], axis=1)
+    uniq, inv = np.unique(ce, axis=0, return_inverse=True)
+    a, b = uniq[:, 0], uniq[:, 1]
+    w = d[a] / (d[a] - d[b])
+    P = v[a] + w[:, None] * (v[b] - v[a])
+    P[:, 0] = c
+    mid = np.full(cross.shape, -1, dtype=np.int64)
+    mid[cross] = len(v) + inv.ravel()
+    v = np.vstack([v, P])
+    k = cross.sum(axis=1)
+    out = [f[k == 0]]
+    rows = np.flatnonzero(k == 2)
+    if len(rows):
+        r = np.argmin(cross[rows], axis=1)              # the edge not crossed ...
+        lone = (r + 2) % 3                              # ... is opposite the lone vertex
+        L = f[rows, lone]
+        B = f[rows, (lone + 1) % 3]
+        C = f[rows, (lone + 2) % 3]
+        mLB = mid[rows, lone]
+        mCL = mid[rows, (lone + 2) % 3]
+        out += [np.stack([L, mLB, mCL], 1), np.stack([mLB, B, C], 1), np.stack([mLB, C, mCL], 1)]
+    rows = np.flatnonzero(k == 1)
+    if len(rows):
+        e = np.argmax(cross[rows], axis=1)              # the crossed edge ...
+        p = (e + 2) % 3                                 # ... is opposite the vertex on the plane
+        Pv = f[rows, p]
+        B = f[rows, (p + 1) % 3]
+        C = f[rows, (p + 2) % 3]
+        m = mid[rows, e]
+        out += [np.stack([Pv, B, m], 1), np.stack([Pv, m, C], 1)]
+    return v, np.vstack(out)

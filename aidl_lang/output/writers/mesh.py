@@ -31,8 +31,8 @@ def bodies(output: Output, thickness: float | None = None,
     """(part name, ``trimesh.Trimesh``) per solid part.  ``thickness`` (mm) overrides the
     parts' own; without either, :data:`DEFAULT_THICKNESS`.  ``assembled``: each body moved
     by its part's placement (the booleans' ``Drawing.placement``; the sheet where none) after
-    its ``Bend``s (``Drawing.bends``: :func:`~..part.placement.bend_points`, its edges split so
-    every chord is within ``CHORD_TOL`` of the bent surface)."""
+    its ``Bend``s (``Drawing.bends``: :func:`~..part.placement.bend_points`, cut across its bend
+    zones so every chord is within ``CHORD_TOL`` of the bent surface)."""
     import manifold3d as mf
     trimesh = _trimesh()
     d = output.drawing
@@ -47,12 +47,11 @@ def bodies(output: Output, thickness: float | None = None,
         t = float(thickness or p.thickness or DEFAULT_THICKNESS)
         m = mf.Manifold.extrude(p.shape, t)
         bends = bent.get(p.name)
-        if bends:
-            m = refine_for_bends(m, bends, t, CHORD_TOL)
         mesh = m.to_mesh64()
         v = _exact(np.asarray(mesh.vert_properties, dtype=float)[:, :3], p.loops)
         f = np.asarray(mesh.tri_verts, dtype=np.int64)
         if bends:
+            v, f = refine_for_bends(v, f, bends, t, CHORD_TOL)
             flat, v = v, bend_points(v, bends, t)
             f = _weld_ends(flat, v, f)
         M = where.get(p.name)
