@@ -93,6 +93,16 @@ def test_the_studio_view_shows_the_wall_bent(flex):
         [-L / 2, -W / 2, T, L / 2, W / 2, H - T], abs=1e-6)
 
 
+def test_a_lip_at_zero_clearance_touches_the_bent_wall_without_a_collision():
+    """The inside face's chords fall on those of the lip's concentric corner arcs (the same
+    count of chords over the quarter): touching, no W0517 (0.171 mm^3 each lip with the
+    planes spaced by the sagitta bound alone)."""
+    r = aidl_lang.compile(source='import "std/boxes.aidl"\nthickness 3 mm\n'
+                                 'assembly kit { b = flex_box(clearance=0 mm) }\n')
+    assert r.ok and [d.code for d in r.sink.items] == []
+    assert r.fit["checked"] and r.fit["collisions"] == []
+
+
 BENT = """thickness 3 mm
 assembly kit {
     solid base { r = Rectangle(center=(0, 0), width=60, height=40) }

@@ -130,62 +130,80 @@ def _apply(X: np.ndarray, px: np.ndarray, pz: np.ndarray):
 
 def refine_for_bends(v: np.ndarray, f: np.ndarray, bends, t: float, tol: float):
     """The mesh ``v`` (n x 3, the flat sheet), ``f`` (m x 3 vertex indices) of a part to be
-    bent, cut across by planes x = const through each bend zone, at most ``sqrt(8 * tol *
-    radius)`` mm apart (the smallest inside radius; at least t / 8), so each triangle in a zone
-    spans so little of its arc that its chord leaves the bent surface by at most ``tol`` mm
-    (a sagitta of L^2 / 8R; the bend is a cylinder along y, so only x needs cutting); every
-    cut splits the triangles it crosses at a vertex shared by both sides of each edge, so a
-    watertight mesh stays watertight.  At most :data:`MAX_BENT_PLANES` planes in all (the
-    chords grow past it, never the work).  Returns the new ``(v, f)``."""
+    bent, cut across each bend zone by evenly spaced planes x = const: as many as the chords
+    of an arc of the inside radius over the bend's angle need
+    (:func:`~aidl_lang.geometry.tessellate.segments_for`, the tessellation of every arc
+    written), times the least whole number that keeps the outside face's chords within ``tol``
+    mm too, so the inside face's vertices fall on those of a concentric arc drawn with that
+    radius (a lid's lip at zero clearance touches the wall, and shares no volume with it).  The
+    bend is a cylinder along y: only x needs cutting.  Each cut splits the triangles it crosses
+    at a vertex shared by both sides of each edge, so a watertight mesh stays watertight.  At
+    most :data:`MAX_BENT_PLANES` planes in all (fewer past it: the chords grow, never the
+    work).  Returns the new ``(v, f)``."""
+    from ...geometry.tessellate import segments_for
     zones = bend_zones(bends, t)
-    rmin = max(min(r for _, _, r in bends), t / 8)
-    step = float(np.sqrt(8.0 * tol * rmin))
-    total = sum(x1 - x0 for x0, x1, _, _ in zones)
-    step = max(step, total / MAX_BENT_PLANES)
-    for x0, x1, _, _ in zones:
-        n = max(1, int(np.ceil((x1 - x0) / step)))
-        for c in np.linspace(x0, x1, n + 1):
-            v, f = _cut_x(v, f, float(c))
-    return v, f
+    counts = []
+    for x0, x1, a, r in zones:
+        inner = segments_for(r, abs(a), tol, least=1)
+        counts.append(inner * int(np.ceil(segments_for(r + t, abs(a), tol, least=1) / inner)))
+    if sum(counts) > MAX_BENT_PLANES:
+        counts = [max(1, c * MAX_BENT_PLANES // sum(counts)) for c in counts]
+    planes = np.unique(np.concatenate([np.linspace(x0, x1, n + 1)
+                                       for (x0, x1, _, _), n in zip(zones, counts)]))
+    return _cut_x(v, f, planes)
 
 
-def _cut_x(v: np.ndarray, f: np.ndarray, c: float):
-    """The mesh ``(v, f)`` with every triangle the plane x = ``c`` crosses split along it
-    (one new vertex per crossed edge, shared by the triangles on both sides of it)."""
-    d = v[:, 0] - c
-    side = np.where(np.abs(d) < 1e-12, 0, np.sign(d)).astype(int)
-    E = np.stack([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]], axis=1)          # m x 3 x 2
-    cross = side[E[..., 0]] * side[E[..., 1]] < 0
-    if not cross.any():
+def _cut_x(v: np.ndarray, f: np.ndarray, planes: np.ndarray):
+    """The mesh ``(v, f)`` cut by the planes x = ``planes`` (sorted): each triangle a plane
+    crosses is clipped to every slab between two planes (a convex polygon: the triangle's
+    boundary points within the slab, in order, fanned into triangles, its orientation kept);
+    a point where an edge crosses a plane is one new vertex, shared by the triangles on both
+    sides of the edge, so the mesh stays watertight and grows by about three triangles per
+    slab a triangle spans (not by a fan per plane)."""
+    x = v[:, 0]
+    tx = x[f]
+    lo, hi = tx.min(axis=1), tx.max(axis=1)
+    first = np.searchsorted(planes, lo, side="right")       # the first plane > the least x
+    last = np.searchsorted(planes, hi, side="left")         # past the last plane < the most x
+    crossing = np.flatnonzero(last > first)
+    if not len(crossing):
         return v, f
-    ce = np.sort(E[cross], axis=1)
-    uniq, inv = np.unique(ce, axis=0, return_inverse=True)
-    a, b = uniq[:, 0], uniq[:, 1]
-    w = d[a] / (d[a] - d[b])
-    P = v[a] + w[:, None] * (v[b] - v[a])
-    P[:, 0] = c
-    mid = np.full(cross.shape, -1, dtype=np.int64)
-    mid[cross] = len(v) + inv.ravel()
-    v = np.vstack([v, P])
-    k = cross.sum(axis=1)
-    out = [f[k == 0]]
-    rows = np.flatnonzero(k == 2)
-    if len(rows):
-        r = np.argmin(cross[rows], axis=1)              # the edge not crossed ...
-        lone = (r + 2) % 3                              # ... is opposite the lone vertex
-        L = f[rows, lone]
-        B = f[rows, (lone + 1) % 3]
-        C = f[rows, (lone + 2) % 3]
-        mLB = mid[rows, lone]
-        mCL = mid[rows, (lone + 2) % 3]
-        out += [np.stack([L, mLB, mCL], 1), np.stack([mLB, B, C], 1), np.stack([mLB, C, mCL], 1)]
-    rows = np.flatnonzero(k == 1)
-    if len(rows):
-        e = np.argmax(cross[rows], axis=1)              # the crossed edge ...
-        p = (e + 2) % 3                                 # ... is opposite the vertex on the plane
-        Pv = f[rows, p]
-        B = f[rows, (p + 1) % 3]
-        C = f[rows, (p + 2) % 3]
-        m = mid[rows, e]
-        out += [np.stack([Pv, B, m], 1), np.stack([Pv, m, C], 1)]
-    return v, np.vstack(out)
+    new: list = []
+    ids: dict = {}
+
+    def cut(a: int, b: int, k: int) -> int:
+        key = (a, b, k) if a < b else (b, a, k)
+        i = ids.get(key)
+        if i is None:
+            c = planes[k]
+            w = (c - x[a]) / (x[b] - x[a])
+            p = v[a] + w * (v[b] - v[a])
+            p[0] = c
+            i = ids[key] = len(v) + len(new)
+            new.append(p)
+        return i
+
+    out = [f[np.setdiff1d(np.arange(len(f)), crossing)]]
+    tris = []
+    for n in crossing.tolist():
+        ring = []                                  # (vertex id, x) round the triangle
+        tri = f[n]
+        for e in range(3):
+            a, b = int(tri[e]), int(tri[(e + 1) % 3])
+            ring.append((a, x[a]))
+            xa, xb = x[a], x[b]
+            ks = np.flatnonzero((planes > min(xa, xb)) & (planes < max(xa, xb)))
+            if xb < xa:
+                ks = ks[::-1]
+            ring += [(cut(a, b, int(k)), planes[k]) for k in ks]
+        xs = np.array([q[1] for q in ring])
+        bounds = np.concatenate([[-np.inf], planes[first[n]:last[n]], [np.inf]])
+        for s0, s1 in zip(bounds[:-1], bounds[1:]):
+            poly = [ring[i][0] for i in np.flatnonzero((xs >= s0) & (xs <= s1))]
+            for i in range(1, len(poly) - 1):
+                tris.append((poly[0], poly[i], poly[i + 1]))
+    v = np.vstack([v, np.array(new).reshape(-1, 3)])
+    f = np.vstack(out + [np.array(tris, dtype=np.int64).reshape(-1, 3)])
+    # drop triangles of no area (a slab the triangle only touches at a vertex on its plane)
+    e1, e2 = v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]]
+    return v, f[np.linalg.norm(np.cross(e1, e2), axis=1) > 1e-18]
