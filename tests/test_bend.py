@@ -144,6 +144,16 @@ def test_the_fit_check_meets_a_part_where_the_bent_leg_goes():
     assert hit["volume"] == pytest.approx(36, abs=1e-6)
 
 
+def test_bends_whose_zones_overlap_are_refused_at_the_second():
+    """Each bend takes pi / 2 * (2 + 1.5) = 5.498 mm of the sheet: two 4 mm apart overlap."""
+    src = BENT.replace("BEND", "Bend(wall, at=20, angle=90 deg, radius=2)\n"
+                               "    Bend(wall, at=24, angle=90 deg, radius=2)")
+    r = aidl_lang.compile(source=src)
+    (e,) = r.errors
+    assert e.code == "E0108" and "5.498 and 5.498 mm" in e.message and "4 mm apart" in e.message
+    assert (e.span.line, e.span.col) == (7, 5) and "at least 5.498 mm apart" in e.hint
+
+
 @pytest.mark.parametrize("bend, code, at, says", [
     ("Bend(base.r, at=20, angle=90 deg)", "E0108", "base.r", "bends a structure"),
     ("Bend(wall, at=20, angle=0 deg, radius=2)", "E0108", "0 deg", "at most 360 deg"),
