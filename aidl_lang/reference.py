@@ -662,7 +662,8 @@ picture) writes every part extruded and placed, one named object per part. The f
 warns W0517 when two placed parts collide (a slot narrower than its partner's thickness, with
 the figure) and W0518 when a part touches no other (a tab short of its slot, with the gap).
 `finger_box` in std/joints.aidl places its panels; examples/phone_stand.aidl is a
-cross-halving joint.
+cross-halving joint. `Bend(part, at=x, angle=a, radius=r)` bends a part (a living hinge) in
+the assembled product only (`flex_box` in std/boxes.aidl bends its wall round the corners).
 """, ["assembly 3d", "3d", "place", "placement", "assemble", "fit check", "collision", "W0517",
       "W0518"]),
     "outputs": ("statement", "`aidl render FILE -o x.svg` (.dxf, .pdf, .png, .stl, .3mf, "
@@ -1046,6 +1047,12 @@ EXAMPLES: dict[str, str] = {
              "width=60, height=40) }\n    solid wall { r = Rectangle(center=(0, 15), width=60, "
              "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"
              "    Place(wall, rotation=(90 deg, 0, 0), position=(0, 20, 3))\n}\n",
+    "Bend": "thickness 3 mm\n\nassembly kit {\n    solid base { r = Rectangle(center=(0, 0), "
+            "width=60, height=40) }\n    solid wall { r = Rectangle(center=(10, 60), width=80, "
+            "height=30) }\n    # stood on the base's front edge, its top face inward\n"
+            "    Place(wall, rotation=(90 deg, 0, 180 deg), position=(0, -20, -42))\n"
+            "    # assembled, bent inward by 90 deg at x = 20 round a 2 mm inside radius\n"
+            "    Bend(wall, at=20, angle=90 deg, radius=2)\n}\n",
     "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
     "CutInto": "import \"std/joints.aidl\"\n\nthickness 3 mm\n\nassembly kit {\n"
                "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"

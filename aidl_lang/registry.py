@@ -385,6 +385,15 @@ _DEFS = {
                     "point p (x, y in its frame, z up through its thickness) goes to "
                     "R p + position; position (x, y, z) lengths, rotation (rx, ry, rz) angles "
                     "turned about x, then y, then z; both known before solving."),
+    "Bend": _c([A("part", "boxed"), A("at", "length"), A("angle", "angle"),
+                A("radius", "length", 0.0)],
+               cat="placement",
+               doc="Bend a part (a living hinge's band, a folded panel) in the assembled view "
+                   "only: along the line x = at of its frame (parallel to y, the middle of the "
+                   "bend), by angle (positive: its top face, z = thickness, inside the bend) "
+                   "round an inside radius; the bend is angle * (radius + thickness / 2) wide "
+                   "on the sheet, the part left of it stays where Place puts it, the rest "
+                   "turns; all known before solving. The sheet stays flat."),
     # ------------------------------------------------------------ operations
     "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
                    doc="A copy of geometry or a structure mirrored about a line; it follows the "

@@ -390,7 +390,7 @@ import "std/plates.aidl"
 # the wall's middle line (the straight sides and four quarter arcs), its ends
 # meeting mid-front, with a `living_hinge` over each arc. `length` x `width`
 # x `height` (mm) and `radius` are outer sizes when `outside=true`, else
-# inner. Assembled, the wall is shown unbent, standing along the back.
+# inner. Assembled, the wall is shown bent round the corners (`Bend`).
 # Members: `base`, `lid`, `lip` (base's, lid's), `wall`.
 def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3 mm, clearance=0.3 mm,
              outside=true, cx=0 mm, cy=0 mm) -> assembly {
@@ -443,5 +443,10 @@ def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3
     wall.strip.center == (wx, wy)
     Place(base, position=(-cx, -cy, 0 mm))
     Place(lid, position=(-cx - lo - gap, -cy, ho - t))
-    Place(wall, rotation=(90 deg, 0, 0), position=(-wx, wo / 2, t + hw / 2 - wy))
+    # assembled: the strip's start stands mid-front, its top face inward, and bends round each
+    # corner over its hinge (inside radius ro - t: its outer face on the base's outline)
+    Place(wall, rotation=(90 deg, 0, 180 deg), position=(cx - lo / 2, -wo / 2, t + hw / 2 - wy))
+    for u in us {
+        Bend(wall, at=cx - lo / 2 + u, angle=90 deg, radius=ro - t)
+    }
 }

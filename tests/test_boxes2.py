@@ -7,7 +7,8 @@ collision (W0517) and no loose part (W0518) at kerf 0 and 0.15 mm, and material 
 `thickness` collides (W0517). Beyond: the hinged lid swings open past 90 degrees without
 touching a wall (the lid and cheeks turned about the pin in Manifold), the drawer's clearance
 all round is measured on the assembled solids, and the flex box's wall is as long as the base's
-perimeter at the wall's middle line, from the base's outline and corner arcs in the DXF.
+perimeter at the wall's middle line, from the base's outline and corner arcs in the DXF, and
+assembled it wraps the base's outline.
 """
 import io
 import math
@@ -281,16 +282,15 @@ def test_flex_box_wall_is_as_long_as_the_base_perimeter(tmp_path, outside, dims)
         assert max(g) - min(g) < arc
 
 
-def test_flex_box_wall_stands_unbent_along_the_back(tmp_path):
-    """The wall cannot be placed bent: assembled, it stands on the base along the back edge,
-    its outer face in the back's plane, its ends running on past the corners."""
+def test_flex_box_wall_wraps_the_base_outline(tmp_path):
+    """Assembled, the wall stands on the base bent round its corners (`Bend`, tests/test_bend.py):
+    its outer face on the base's outline, between the base and the lid (it stood unbent along
+    the back, its ends running on past the corners)."""
     L, W, H = 120.0, 80.0, 50.0
     r = compile_src(tmp_path, program(FLEX.format(L=L, W=W, H=H, o="true")))
     bodies = dict(assembly.solids(r.output))
     x0, y0, z0, x1, y1, z1 = bodies["kit.b.wall"].bounding_box()
-    perimeter = 2 * (L - 30) + 2 * (W - 30) + 2 * math.pi * (15 - T / 2)
-    assert (x0, x1, y0, y1, z0, z1) == pytest.approx(
-        (-perimeter / 2, perimeter / 2, W / 2 - T, W / 2, T, H - T), abs=1e-6)
+    assert (x0, x1, y0, y1, z0, z1) == pytest.approx((-L / 2, L / 2, -W / 2, W / 2, T, H - T), abs=1e-6)
 
 
 # ------------------------------------------------------------------------------ the fit check

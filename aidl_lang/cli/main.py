@@ -523,6 +523,10 @@ def cmd_render(args) -> int:
         if args.assembled and not getattr(res.drawing, "placement", None):
             notes.append("note: no part is placed (`Place`): the assembled product is the "
                          "parts as on the sheet")
+        if args.assembled and getattr(res.drawing, "bends", None) and any(
+                j[2] in (".step", ".stp") for j in jobs):
+            notes.append("note: STEP shows the bent parts (`Bend`) flat, as cut; .3mf, .glb "
+                         "and .stl show them bent")
         items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)

@@ -15,8 +15,10 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     narrower than its partner's thickness: the depth is by how much), W0518 for a part that
     touches no other (a tab short of its slot: the gap)."""
     from ..fabrication.assembly import extrude, fit, normals_of
+    _check_bends(d, sink)
     parts = [(p.name, p.kind, p.shape, d.thickness.get(p.name)) for p in d.parts]
-    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline), deadline,
+    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline,
+                             bends=getattr(d, "bends", None)), deadline,
                      normals_of(d.placement))
 
     def at(name):
@@ -60,3 +62,24 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
                      hint=f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "
                           "with its `Place`, or lengthen the tab")
+
+
+def _check_bends(d: Drawing, sink: DiagnosticSink) -> None:
+    """E0108 at a ``Bend`` whose zone on the sheet (``|angle| * (radius + thickness / 2)``
+    wide, known once the part's thickness is) runs into the previous bend's of its part."""
+    from ..fabrication.assembly import DEFAULT_THICKNESS
+    from ..part.placement import bend_zones
+    for name, bends in (getattr(d, "bends", None) or {}).items():
+        t = float(d.thickness.get(name) or DEFAULT_THICKNESS)
+        s = d.part_of.get(name)
+        spans = [b[3] for b in sorted(getattr(s, "bends", None) or [], key=lambda b: b[0])]
+        zones = bend_zones(bends, t)
+        for k in range(1, len(zones)):
+            if zones[k][0] < zones[k - 1][1] - 1e-9:
+                w0, w1 = zones[k - 1][1] - zones[k - 1][0], zones[k][1] - zones[k][0]
+                sink.error("E0108", f"the bends of `{name}` overlap on the sheet: each takes "
+                           f"|angle| * (radius + thickness / 2) of it, {w0:.4g} and {w1:.4g} mm "
+                           f"here, centred {bends[k][0] - bends[k - 1][0]:.4g} mm apart",
+                           spans[k] if k < len(spans) else None,
+                           hint=f"set them at least {(w0 + w1) / 2:.4g} mm apart, or make "
+                                "the radius or the angle smaller")

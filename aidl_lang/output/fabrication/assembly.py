@@ -46,28 +46,55 @@ def solids(output: Output, thickness: float | None = None) -> list[tuple[str, ob
     """(part name, ``manifold3d.Manifold``) per solid part: its profile extruded by its
     thickness (``thickness`` mm overrides) and placed."""
     return extrude([(p.name, p.kind, p.shape, p.thickness) for p in output.parts],
-                   placements(output), thickness)
+                   placements(output), thickness, bends=bends_of(output))
 
 
-def extrude(parts, where: dict, thickness: float | None = None, deadline=None
-            ) -> list[tuple[str, object]]:
+def bends_of(output: Output) -> dict[str, list]:
+    """Part name -> its ``Bend``s on the sheet (:func:`~..part.placement.bends_of`); {}."""
+    d = output.drawing
+    return dict(getattr(d, "bends", None) or {}) if d is not None else {}
+
+
+def extrude(parts, where: dict, thickness: float | None = None, deadline=None,
+            bends: dict | None = None) -> list[tuple[str, object]]:
     """(name, ``manifold3d.Manifold``) of each solid of ``parts`` = [(name, kind,
-    CrossSection, thickness mm or None)], extruded and moved by ``where[name]`` (4x4).
-    ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked before each part (raises
-    :class:`~aidl_lang.limits.OutOfBudget`)."""
+    CrossSection, thickness mm or None)], extruded, bent by ``bends[name]`` (its ``Bend``s:
+    :func:`~..part.placement.bend_points`, chords within ``CHORD_TOL``) and moved by
+    ``where[name]`` (4x4).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked
+    before each part (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
     import manifold3d as mf
     out = []
+    bends = bends or {}
     for name, kind, shape, t in parts:
         if kind != "solid" or shape is None or shape.is_empty():
             continue
         if deadline is not None:
             deadline.check("the fit check", None)
-        m = mf.Manifold.extrude(shape, float(thickness or t or DEFAULT_THICKNESS))
+        t = float(thickness or t or DEFAULT_THICKNESS)
+        m = mf.Manifold.extrude(shape, t)
+        if bends.get(name):
+            m = bent(m, bends[name], t)
         M = where.get(name)
         if M is not None:
             m = m.transform(np.asarray(M[:3, :4], dtype=float))
         out.append((name, m))
     return out
+
+
+def bent(m, bends, t: float, tol: float | None = None):
+    """The ``manifold3d.Manifold`` ``m`` (a part extruded on the flat sheet, ``t`` mm thick)
+    bent by its ``bends`` (:func:`~..part.placement.bend_points`): cut across its bend zones so
+    each chord stays within ``tol`` mm (default ``CHORD_TOL``) of the bent surface
+    (:func:`~..part.placement.refine_for_bends`), then every vertex moved."""
+    import manifold3d as mf
+    from ...geometry.tessellate import CHORD_TOL
+    from ..part.placement import bend_points, refine_for_bends
+    mesh = m.to_mesh64()
+    v, f = refine_for_bends(np.asarray(mesh.vert_properties, dtype=float)[:, :3],
+                            np.asarray(mesh.tri_verts, dtype=np.int64), bends, t,
+                            CHORD_TOL if tol is None else tol)
+    return mf.Manifold(mf.Mesh64(vert_properties=bend_points(v, bends, t),
+                                 tri_verts=f.astype(np.uint64)))
 
 
 def _rgba(colour: str) -> list[int]:

@@ -36,7 +36,7 @@ from .exact import Provenance
 from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot_outline,
                        rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
                        spline_band)
-from .placement import placement_matrix
+from .placement import bends_of, placement_matrix
 from .scanwork import plan, turned, turned_back, union_seconds
 
 CLOSE_TOL = 1e-6
@@ -157,6 +157,8 @@ class Drawing(Compared):
     # Part name -> 4x4 matrix from the flat sheet (x, y in mm, z up through the thickness) to
     # the assembled product, when the program places parts (`Place`); else None
     placement = None
+    # Part name -> its `Bend`s on the sheet, [(at mm, angle rad, inside radius mm)] (bends_of)
+    bends = {}
 
     @property
     def circles(self) -> list[tuple[float, float, float]]:
@@ -1055,6 +1057,7 @@ class Renderer:
                     into[name] = float(t)
         if any(getattr(s, "placement", None) is not None for s in self.m.structures):
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
+        out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
         return out
 
 

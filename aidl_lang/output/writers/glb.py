@@ -57,7 +57,8 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
     :func:`view_tolerance`; every vertex still on the exact curve), one mesh per distinct
     shape (parts of the same outline and thickness, such as a planetary set's planets, share
     one mesh, each part a node moved to its place), and each part's colour a material
-    (``baseColorFactor``, linear) instead of a colour per vertex.  One named node per solid
+    (``baseColorFactor``, linear) instead of a colour per vertex; a part with ``Bend``s
+    shown bent, its chords within ``tol`` of the bent surface.  One named node per solid
     part, as :func:`to_glb` (mm; glTF's y is up, the viewer turns the product's z up).
     Not a download: the files stay exact (:func:`to_glb`).  Raises
     :class:`~..part.part.OutputError` when there is no solid part (a drawing of lines only)."""
@@ -66,12 +67,14 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
     import manifold3d as mf
     import numpy as np
 
-    from ..fabrication.assembly import placements
+    from ..fabrication.assembly import bends_of, placements
+    from ..fabrication.assembly import bent as bend
     from .mesh import DEFAULT_THICKNESS
     trimesh = _trimesh()
     tol = view_tolerance(output) if tol is None else tol
     colour = colours(output)
     where = placements(output) if assembled else {}
+    bent = bends_of(output) if assembled else {}
     sc = trimesh.Scene()
     shapes: dict[bytes, str] = {}
     node_colour: dict[str, str] = {}
@@ -85,7 +88,8 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
         origin = polys[0].min(axis=0)
         local = [q - origin for q in polys]
         t = float(thickness or p.thickness or DEFAULT_THICKNESS)
-        h = hashlib.sha1(repr(round(t, 9)).encode())
+        bends = [(at - float(origin[0]), a, r) for at, a, r in bent.get(p.name, ())]
+        h = hashlib.sha1(repr((round(t, 9), bends)).encode())
         for q in local:
             h.update(np.round(q, 6).tobytes())
         key = h.digest()
@@ -97,7 +101,8 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
         geom = shapes.get(key)
         if geom is None:
             m = mf.Manifold.extrude(mf.CrossSection([q.tolist() for q in local],
-                                                    mf.FillRule.NonZero), t).to_mesh64()
+                                                    mf.FillRule.NonZero), t)
+            m = (bend(m, bends, t, tol) if bends else m).to_mesh64()
             mesh = trimesh.Trimesh(vertices=np.asarray(m.vert_properties)[:, :3],
                                    faces=np.asarray(m.tri_verts, dtype=np.int64), process=False)
             if not len(mesh.faces):

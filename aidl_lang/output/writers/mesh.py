@@ -30,25 +30,62 @@ def bodies(output: Output, thickness: float | None = None,
            assembled: bool = False) -> list[tuple[str, object]]:
     """(part name, ``trimesh.Trimesh``) per solid part.  ``thickness`` (mm) overrides the
     parts' own; without either, :data:`DEFAULT_THICKNESS`.  ``assembled``: each body moved
-    by its part's placement (the booleans' ``Drawing.placement``; the sheet where none)."""
+    by its part's placement (the booleans' ``Drawing.placement``; the sheet where none) after
+    its ``Bend``s (``Drawing.bends``: :func:`~..part.placement.bend_points`, cut across its bend
+    zones so every chord is within ``CHORD_TOL`` of the bent surface)."""
     import manifold3d as mf
     trimesh = _trimesh()
     d = output.drawing
     where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
+    bent = (getattr(d, "bends", None) or {}) if assembled and d is not None else {}
+    from ...geometry.tessellate import CHORD_TOL
+    from ..part.placement import bend_points, refine_for_bends
     out = []
     for p in output.parts:
         if p.kind != "solid" or p.shape is None or p.shape.is_empty():
             continue
-        t = thickness or p.thickness or DEFAULT_THICKNESS
-        m = mf.Manifold.extrude(p.shape, float(t))
+        t = float(thickness or p.thickness or DEFAULT_THICKNESS)
+        m = mf.Manifold.extrude(p.shape, t)
+        bends = bent.get(p.name)
         mesh = m.to_mesh64()
         v = _exact(np.asarray(mesh.vert_properties, dtype=float)[:, :3], p.loops)
+        f = np.asarray(mesh.tri_verts, dtype=np.int64)
+        if bends:
+            v, f = refine_for_bends(v, f, bends, t, CHORD_TOL)
+            flat, v = v, bend_points(v, bends, t)
+            f = _weld_ends(flat, v, f)
         M = where.get(p.name)
         if M is not None:
             v = v @ M[:3, :3].T + M[:3, 3]
-        f = np.asarray(mesh.tri_verts, dtype=np.int64)
-        out.append((p.name, trimesh.Trimesh(vertices=v, faces=f, process=False)))
+        tm = trimesh.Trimesh(vertices=v, faces=f, process=False)
+        if bends:
+            tm.remove_unreferenced_vertices()
+        out.append((p.name, tm))
     return out
+
+
+def _weld_ends(flat: np.ndarray, v: np.ndarray, f: np.ndarray, tol: float = 1e-6) -> np.ndarray:
+    """The faces ``f`` of a bent part whose two ends meet (a wall bent all round: its end
+    faces, at the flat sheet's least and greatest x, land on each other, every vertex of their
+    rims within ``tol`` mm): both end faces dropped and the one rim's vertices used for the
+    other's, so the
+    ring is one closed solid (watertight when a reader merges equal vertices) instead of a
+    strip touching itself; ``f`` unchanged when the ends do not meet."""
+    x = flat[:, 0]
+    a = np.flatnonzero(np.abs(x - x.min()) < tol)
+    b = np.flatnonzero(np.abs(x - x.max()) < tol)
+    ends = np.isin(f, a).all(axis=1) | np.isin(f, b).all(axis=1)
+    rim = np.unique(f[~ends])            # the end faces' edges: their vertices other faces hold
+    a, b = np.intersect1d(a, rim), np.intersect1d(b, rim)
+    if len(a) != len(b) or len(a) < 3 or len(a) > 20_000:
+        return f
+    d = np.linalg.norm(v[b][:, None, :] - v[a][None, :, :], axis=2)
+    near = d.argmin(axis=1)
+    if d[np.arange(len(b)), near].max() > tol or len(set(near.tolist())) != len(a):
+        return f
+    to = np.arange(len(v))
+    to[b] = a[near]
+    return to[f[~ends]]
 
 
 def _exact(v: np.ndarray, loops) -> np.ndarray:

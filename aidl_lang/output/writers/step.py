@@ -164,7 +164,8 @@ def _moved(shape, M):
 def to_step(output: Output, thickness: float | None = None, assembled: bool = False) -> bytes:
     """AP214 STEP bytes of every solid part, extruded (mm): one solid per part, named after
     it (an XCAF document: the product names a STEP reader shows) and coloured like the flat
-    assembly view; ``assembled``: each placed by its ``Place``."""
+    assembly view; ``assembled``: each placed by its ``Place`` (a part's ``Bend``s are not
+    applied: it stays flat, as cut; the mesh formats show it bent, and ``aidl render`` says so)."""
     _ocp()
     from OCP.Interface import Interface_Static
     from OCP.Quantity import Quantity_Color, Quantity_TOC_RGB

@@ -24,15 +24,15 @@ syntax keyword aidlCadPrimitive Sweep Text ThickLine Thicken Trace Trapezoid Tri
 syntax keyword aidlCadPrimitive Wire ZigZag convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
-syntax keyword aidlCadConstraint CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear Concentric
-syntax keyword aidlCadConstraint CornerPattern CutInto Diameter Distance DistanceX DistanceY Equal EqualLength
-syntax keyword aidlCadConstraint EqualRadius Fillet Fix Fixed Gap GridPattern Horizontal HorizontalDistance
-syntax keyword aidlCadConstraint HorizontallyCentered Inside IntendedOverlap Join LeftOf Length LinearPattern Lock
-syntax keyword aidlCadConstraint Midpoint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle OnLine
-syntax keyword aidlCadConstraint OnTopOf Orthogonal Over OverlapOK Parallel Perpendicular Place PlaceAt
-syntax keyword aidlCadConstraint PointOnLine Radius RectangularPattern RightOf Rigid RigidGroup Same Symmetric
-syntax keyword aidlCadConstraint Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical VerticalDistance
-syntax keyword aidlCadConstraint VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Bend CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear
+syntax keyword aidlCadConstraint Concentric CornerPattern CutInto Diameter Distance DistanceX DistanceY Equal
+syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Gap GridPattern Horizontal
+syntax keyword aidlCadConstraint HorizontalDistance HorizontallyCentered Inside IntendedOverlap Join LeftOf Length LinearPattern
+syntax keyword aidlCadConstraint Lock Midpoint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle
+syntax keyword aidlCadConstraint OnLine OnTopOf Orthogonal Over OverlapOK Parallel Perpendicular Place
+syntax keyword aidlCadConstraint PlaceAt PointOnLine Radius RectangularPattern RightOf Rigid RigidGroup Same
+syntax keyword aidlCadConstraint Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical
+syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min mirror norm polar
