@@ -832,17 +832,6 @@ def _source(v, what: str) -> Geometry:
                              f"cubic spline is not a cubic spline, and outputs here are exact "
                              f"or refused; draw the grown outline as a second Spline through "
                              f"offset points, or offset a Polygon or arcs instead")
-    if g.kind == "Ellipse" and what == "Hull":
-        raise PrimitiveError("Hull of an Ellipse is not supported: the hull's sides would be "
-                             "lines tangent to the ellipse, and outputs here are exact or "
-                             "refused; hull Circles (an ellipse's hull with circles of its "
-                             "curvature is close), or draw the outline yourself")
-    if g.kind == "Ellipse":
-        raise PrimitiveError(f"{what} of an Ellipse cannot be exact: the offset of an ellipse "
-                             f"is no ellipse (a curve of degree 8, which no output format here "
-                             f"holds), and outputs here are exact or refused; draw the grown "
-                             f"outline as an Ellipse of its own (rx and ry each grown: close to "
-                             f"the offset, not equal to it), or a Spline through offset points")
     if not g.closed or g.kind == "Text":
         raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
                              f"Slot, ...), not a {g.kind}")

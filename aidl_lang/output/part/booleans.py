@@ -29,6 +29,7 @@ from ...geometry.ellipse import ellipse
 from ...geometry.model import Geometry, Model, Structure
 from ...geometry.hull import hull_loop
 from ...geometry.offset import offset_pieces
+from ...geometry.biarc import without_ellipses
 from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
@@ -557,6 +558,9 @@ class Renderer:
     def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
         if d == 0 or base.is_empty():
             return base
+        # an ellipse is offset as its biarcs (the offset of an ellipse is no ellipse):
+        # within geometry.biarc.BIARC_TOL of the true offset curve
+        loops = without_ellipses(loops)[0]
         pieces = [self.exact.face(lp) for lp in offset_pieces(loops, d, join)]
         band = self.union(pieces)
         return base + band if d > 0 else base - band
