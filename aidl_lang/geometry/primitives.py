@@ -889,6 +889,49 @@ def _build_Hull(ctx, g, a):
     _consume(g, [_source(v, "Hull") for v in items])
 
 
+CLIPPED = ("Line", "Arc", "Polyline")       # open curves an Intersect clips
+
+
+def _build_Intersect(ctx, g, a):
+    """What the closed shapes have in common; open curves among them are clipped to it (a
+    clip: ``g.data["clip"]``, the open sources, drawn as lines).  Lists are flattened."""
+    raw = a["shapes"] if "shapes" in a else \
+        [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
+    items: list = []
+    stack = list(raw) if isinstance(raw, (list, tuple)) else [raw]
+    while stack:
+        v = stack.pop(0)
+        if isinstance(v, (list, tuple)):
+            stack[0:0] = list(v)
+        else:
+            items.append(v)
+    closed, open_ = [], []
+    for v in items:
+        if not isinstance(v, GeomRef):
+            raise PrimitiveError(f"Intersect takes shapes (a Circle, Rectangle, Ellipse, "
+                                 f"Polygon, ...) and open Lines, Arcs or Polylines to clip, "
+                                 f"got {type_name(v)}")
+        src = v.geom
+        if src.closed and src.kind != "Text":
+            closed.append(src)
+        elif src.kind in CLIPPED:
+            open_.append(src)
+        else:
+            raise PrimitiveError(f"Intersect cannot take a {src.kind}: give closed shapes "
+                                 f"(their common area) and open Lines, Arcs or Polylines "
+                                 f"(clipped to it)")
+    if not closed:
+        raise PrimitiveError("Intersect needs at least one closed shape: the area to keep "
+                             "(e.g. `Intersect(strings, head)` with `head` an Ellipse)")
+    if not open_ and len(closed) < 2:
+        raise PrimitiveError("Intersect needs two closed shapes (their common area), or open "
+                             "Lines, Arcs or Polylines and the closed shape to clip them to")
+    _consume(g, open_ + closed)
+    g.closed = not open_
+    g.data["clip"] = list(open_)
+    g.data["region"] = list(closed)
+
+
 _STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline", "Bezier")
 
 

@@ -84,7 +84,8 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
            "Triangle", "Polygon",
-           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull", "Stroke", "Sector"}
+           "RegularPolygon", "Trapezoid", "Offset", "Shell", "Hull", "Stroke", "Sector",
+           "Intersect"}
 
 
 def empty_faces(d: Drawing) -> list:
