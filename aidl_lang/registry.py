@@ -199,7 +199,7 @@ _DEFS = {
                    A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
-                      "output; Hull and Fillet at a line or arc exact, Offset/Shell within 1e-4 mm.",
+                      "output (an Offset or Shell of it: within 1e-4 mm).",
                   members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
@@ -290,9 +290,8 @@ _DEFS = {
     "Intersect": _p([A("shapes", "any")],
                     [A("shape1", "any"), A("shape2", "any")]
                     + [A(f"shape{i}", "any", None) for i in range(3, 7)],
-                    doc="What the closed shapes have in common (a list, or up to six); with "
-                        "open Lines, Arcs or Polylines among them (or lists of them): those "
-                        "clipped to it, drawn as lines. The shapes are not drawn.",
+                    doc="The area common to closed shapes; open Lines, Arcs, Polylines "
+                        "among them are clipped to it. Not drawn.",
                     members=DERIVED_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point", None), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),

@@ -926,10 +926,14 @@ def _build_Intersect(ctx, g, a):
     if not open_ and len(closed) < 2:
         raise PrimitiveError("Intersect needs two closed shapes (their common area), or open "
                              "Lines, Arcs or Polylines and the closed shape to clip them to")
-    _consume(g, open_ + closed)
+    _consume(g, open_ + closed)      # (copies remap the sources: see region_of)
     g.closed = not open_
-    g.data["clip"] = list(open_)
-    g.data["region"] = list(closed)
+
+
+def region_of(g: Geometry) -> tuple[list, list]:
+    """An ``Intersect``'s (closed shapes, open curves to clip) from its sources."""
+    src = g.data["sources"]
+    return [s for s in src if s.closed], [s for s in src if not s.closed]
 
 
 _STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline", "Bezier")

@@ -30,6 +30,7 @@ from ...geometry.model import Geometry, Model, Structure
 from ...geometry.hull import hull_loop
 from ...geometry.offset import offset_pieces
 from ...geometry.biarc import without_ellipses
+from ...geometry.primitives import region_of
 from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
@@ -497,7 +498,7 @@ class Renderer:
         """The area an ``Intersect``'s closed shapes have in common (Manifold's intersection
         of their exact sections, put back on their exact curves by :mod:`.exact`); None and
         an E0406 at the call when they have none."""
-        region = g.data["region"]
+        region = region_of(g)[0]
         out = None
         for src in region:
             loops = self.loops_of(src)
@@ -517,12 +518,13 @@ class Renderer:
         common area of its closed shapes: each curve cut where it crosses the area's
         outline (exact crossings of the carriers), a piece kept when its middle is inside."""
         from ...geometry.clip import clip
-        if len(g.data["region"]) == 1:
-            loops = self.loops_of(g.data["region"][0])
+        region, curves = region_of(g)
+        if len(region) == 1:
+            loops = self.loops_of(region[0])
         else:
             sec = self._common(g)
             loops = self.exact.loops(sec) if sec is not None else []
-        return clip([seg for src in g.data["clip"] for seg in self.pieces(src)], loops)
+        return clip([seg for src in curves for seg in self.pieces(src)], loops)
 
     def stroke_path(self, g: Geometry) -> list:
         """The exact segments of a Stroke's path in order, each piece turned to start where
