@@ -28,6 +28,12 @@ drawing strings {
     mains = [Line((x, -50), (x, 50)) for x in range(-50, 51, 10)]
     s = Intersect(mains, frame)
 }
+solid badge {
+    disc = Circle(center=(0, -200), radius=40)
+    rim = Ellipse(center=(0, -200), rx=30, ry=20, construction=true)
+    bow = Arc(center=(0, -290), radius=100, start_angle=45 deg, end_angle=135 deg)
+    s = Intersect(bow, rim)
+}
 drawing ticks {
     c = Circle(center=(400, 0), radius=20, construction=true)
     q = Rectangle(center=(410, 0), width=20, height=60, construction=true)
@@ -142,3 +148,16 @@ def test_wrong_use_is_located_at_the_call(tmp_path, body, code, words):
     assert [d.code for d in errs] == [code], [(d.code, d.message) for d in c.sink.items]
     assert words in errs[0].message
     assert (errs[0].span.line, errs[0].span.col) == (4, 9)
+
+
+def test_an_arc_clipped_in_a_solid_is_engraved_between_its_crossings(done):
+    from aidl_lang.geometry.ellipse import ellipse
+    _, ents = done
+    (arc,) = [v for v in _layer(ents, "ENGRAVE") if v.dxftype() == "ARC"
+              and v.dxf.center.y < -250]
+    assert arc.dxf.radius == pytest.approx(100, abs=1e-12)
+    e = ellipse((0, -200), 30, 20, 0.0)[0]
+    for p in (_xy(arc.start_point), _xy(arc.end_point)):
+        assert abs(e.implicit(p)) <= 1e-12              # ends exactly on the ellipse
+        assert abs(math.dist(p, (0, -290)) - 100) <= 1e-9
+    assert arc.start_point.x == pytest.approx(-arc.end_point.x, abs=1e-9)
