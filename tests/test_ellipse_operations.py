@@ -32,6 +32,10 @@ solid cam {
     c = Circle(center=(160, 110), radius=8)
     h = Hull(e, c)
 }
+solid kite {
+    r = Rectangle(center=(200, 100), width=40, height=40)
+    h = Hull(Ellipse(center=(200, 100), rx=30, ry=10, rotation=45 deg), r)
+}
 solid umbrella {
     canopy = Ellipse(center=(100, 200), rx=40, ry=20)
     handle = Rectangle(center=(100, 170), width=6, height=30)
@@ -185,6 +189,29 @@ def test_hull_of_an_ellipse_and_a_circle_touches_both(parts):
         assert max(side) <= 1e-9 or min(side) >= -1e-9       # a tangent, not a secant
     (arc,) = [v for v in ents if v.dxftype() == "ARC"]
     assert arc.dxf.radius == pytest.approx(8, abs=1e-9)
+
+
+def test_hull_of_an_ellipse_and_a_polygon_is_supported_by_both(parts):
+    from shapely.geometry import MultiPoint
+    ents = parts["kite"]
+    e = _ellipse(200, 100, 30, 10, 45)
+    corners = [(200 + sx * 20, 100 + sy * 20) for sx in (-1, 1) for sy in (-1, 1)]
+    src = [e.at(2 * math.pi * k / 4000) for k in range(4000)] + corners
+    lines = [v for v in ents if v.dxftype() == "LINE"]
+    # the ellipse pokes past two corners (30 > 20 sqrt 2): two elliptic arcs, four lines
+    assert sorted(v.dxftype() for v in ents) == ["ELLIPSE", "ELLIPSE"] + ["LINE"] * 4
+    for v in lines:
+        p, q = _xy(v.dxf.start), _xy(v.dxf.end)
+        for end in (p, q):
+            assert abs(e.implicit(end)) <= 1e-12 or min(math.dist(end, c) for c in corners) \
+                <= 1e-9
+        n = (p[1] - q[1], q[0] - p[0])
+        side = [n[0] * (x - p[0]) + n[1] * (y - p[1]) for x, y in src]
+        tol = 1e-9 * math.hypot(*n)
+        assert max(side) <= tol or min(side) >= -tol          # every source on one side
+    pts = _points(ents, 1e-4)                    # the DXF outline, finely flattened
+    ring = MultiPoint(src).convex_hull
+    assert abs(ring.area - MultiPoint(pts).convex_hull.area) <= 1e-3
 
 
 def test_fillet_between_an_ellipse_and_a_line_is_a_tangent_arc(parts):

@@ -344,7 +344,8 @@ def envelope_hull(loops: list[Loop]) -> Loop | None:
     """The exact convex hull of outlines holding elliptic arcs (and lines, arcs, circles):
     the upper envelope of the pieces' support functions over the direction ``phi`` of the
     outward normal.  Each piece's share is found on :data:`ENVELOPE_SAMPLES` directions and
-    its ends by bisection to the last bit; the hull runs along each supporting piece (an
+    its ends by bisection to the last bit (a piece that beats both sides at a switching
+    direction, missed between two samples, is sampled there and the envelope found again); the hull runs along each supporting piece (an
     :class:`~.curves.EllipticArc` of its own ellipse, an :class:`~.curves.Arc` of its own
     circle) and along the line tangent to two consecutive ones at the switching direction,
     whose ends lie on the two curves.  None when the hull encloses no area."""
@@ -354,15 +355,24 @@ def envelope_hull(loops: list[Loop]) -> Loop | None:
         return None
     N = ENVELOPE_SAMPLES
     phis = [TWO_PI * k / N for k in range(N)]
-    lab = [_best(sites, p) for p in phis]
-    sw: list = []
-    for k in range(N):
-        a, b = phis[k], phis[k] + TWO_PI / N
-        ia, ib = lab[k], lab[(k + 1) % N]
-        if ia != ib:
-            _switches(sites, a, ia, b, ib, sw)
     scale = max(1.0, max(abs(v) for lp in loops for s in lp.segments for v in s.box()))
     tol = 1e-9 * scale
+    for _ in range(8):
+        lab = [_best(sites, p) for p in phis]
+        sw: list = []
+        for k in range(len(phis)):
+            a = phis[k]
+            b = phis[k + 1] if k + 1 < len(phis) else phis[0] + TWO_PI
+            ia, ib = lab[k], lab[(k + 1) % len(phis)]
+            if ia != ib:
+                _switches(sites, a, ia, b, ib, sw)
+        # a site the sampling missed (a point or small circle past a tangent line by less
+        # than the samples' spacing) wins at a switching direction: sample it there, again
+        missed = [phi for phi, k in sw if sites[_best(sites, phi)].support(phi)
+                  > sites[k].support(phi) + tol]
+        if not missed:
+            break
+        phis = sorted(set(phis) | {m % TWO_PI for m in missed})
     if not sw:
         s = sites[lab[0]]
         if s.kind == "E":
