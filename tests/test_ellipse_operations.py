@@ -36,6 +36,11 @@ solid kite {
     r = Rectangle(center=(200, 100), width=40, height=40)
     h = Hull(Ellipse(center=(200, 100), rx=30, ry=10, rotation=45 deg), r)
 }
+solid pair {
+    a = Circle(center=(300, 100), radius=20)
+    c = Circle(center=(320, 110), radius=10)
+    Fillet(2)
+}
 solid umbrella {
     canopy = Ellipse(center=(100, 200), rx=40, ry=20)
     handle = Rectangle(center=(100, 170), width=6, height=30)
@@ -248,3 +253,15 @@ def test_chamfer_at_an_ellipse_corner_takes_its_length_along_the_ellipse(parts):
     half = 30 * math.sqrt(1 - 1 / 9) - 2
     assert sorted((flat.dxf.start.x, flat.dxf.end.x)) == pytest.approx([250 - half, 250 + half],
                                                                         abs=1e-9)
+
+
+def test_fillet_beside_an_arc_over_half_a_turn_is_made(parts):
+    # the small circle's arc outside the big one turns 220 deg: its corners were left sharp
+    # (the tangent point's place along it was taken the short way round, past its end)
+    fillets = [v for v in parts["pair"] if v.dxftype() == "ARC"
+               and abs(v.dxf.radius - 2) <= 1e-9]
+    assert len(fillets) == 2
+    for v in fillets:
+        c = (v.dxf.center.x, v.dxf.center.y)
+        assert math.dist(c, (300, 100)) == pytest.approx(22, abs=1e-9)
+        assert math.dist(c, (320, 110)) == pytest.approx(12, abs=1e-9)

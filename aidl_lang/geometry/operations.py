@@ -873,8 +873,9 @@ def _fraction(g, p, from_end: bool) -> float:
         t = d / abs(g.sweep) if g.sweep else 0.0
     else:
         a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
-        d = (a - g.start_angle) * (1 if g.sweep > 0 else -1)
-        d = (d + math.pi) % (2 * math.pi) - math.pi          # nearest turn
+        d = ((a - g.start_angle) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
+        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
+            d -= 2 * math.pi                                  # (an arc over half a turn too)
         t = d / abs(g.sweep) if g.sweep else 0.0
     return 1.0 - t if from_end else t
 
