@@ -136,6 +136,16 @@ def test_offset_of_an_ellipse_is_within_its_stated_bound_both_ways(parts):
         (x, y), (tx, ty) = e.at(t), e.tangent(t)
         far = max(far, _to_arcs(ents, (x + 3 * ty, y - 3 * tx)))
     assert far <= BOUND, far
+    # its area is Steiner's: the ellipse's + d x perimeter + pi d^2 (to the flattening's
+    # 1e-5 mm sagitta over a 210 mm outline)
+    from aidl_lang.geometry.curves import EllipticArc
+    pts = []
+    for v in ents:
+        q = [(p.x, p.y) for p in v.construction_tool().flattening(1e-5)]
+        pts += q if not pts or math.dist(q[0], pts[-1]) < math.dist(q[-1], pts[-1]) else q[::-1]
+    area = abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]))) / 2
+    steiner = math.pi * 800 + 3 * EllipticArc(e, 0.0, 2 * math.pi).length + 9 * math.pi
+    assert abs(area - steiner) <= 0.01, area - steiner
     # and the arcs join tangent: each arc's end direction is the next one's start direction
     for a, b in zip(ents, ents[1:] + ents[:1]):
         assert math.dist(_xy(a.end_point), _xy(b.start_point)) <= 1e-9
