@@ -318,8 +318,9 @@ error points at the `Spline`. Choose the corners with `Fillet(r, at=[...])` away
 spline, or let the spline itself turn smoothly there (give it a point at the corner).
 (`Offset`, `Inset`, `Shell` and `Hull` of a Spline are refused at their call, E0108, and a
 cutting layout's kerf on a part with a spline is refused naming the Spline.) The same holds
-at a corner on an `Ellipse`, whose offset is no ellipse: the error points at the `Ellipse`,
-and its `Offset`, `Inset`, `Shell`, `Hull` and kerf are refused likewise.
+at a corner where an `Ellipse` meets another ellipse or a spline: the error points at the
+`Ellipse` (where it meets a line or an arc the fillet is exact; its `Offset`, `Inset` and
+`Shell` are within 1e-4 mm, its `Hull` exact; a kerf on it is refused).
 
     solid pick {
         body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)

@@ -963,6 +963,9 @@ EXAMPLES: dict[str, str] = {
                     "wide around the circle", "ring"),
     "Hull": _solid("a = Circle(center=(0, 0), radius=10)\nb = Circle(center=(30, 0), "
                    "radius=5)\nh = Hull(a, b)", "cam"),
+    "Intersect": _solid("a = Circle(center=(0, 0), radius=30)\nb = Circle(center=(30, 0), "
+                        "radius=30)\nk = Intersect(a, b)    # the lens both circles cover",
+                        "lens"),
     "Text": _solid("body = RoundedRectangle(center=(0, 0), width=50, height=20, "
                    "corner_radius=3)\ndrawing label {\n    t = Text(\"AIDL\", position=(0, -3), "
                    "size=7, valign=\"middle\")\n    ring = Circle(center=(0, -46), radius=49, "

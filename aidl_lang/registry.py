@@ -199,7 +199,7 @@ _DEFS = {
                    A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
-                      "output; Offset, Shell, Hull and Fillet corners on it are refused.",
+                      "output (an Offset or Shell of it: within 1e-4 mm).",
                   members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
@@ -287,6 +287,12 @@ _DEFS = {
                + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six), not drawn.",
                members=DERIVED_MEMBERS),
+    "Intersect": _p([A("shapes", "any")],
+                    [A("shape1", "any"), A("shape2", "any")]
+                    + [A(f"shape{i}", "any", None) for i in range(3, 7)],
+                    doc="The area common to closed shapes; open Lines, Arcs, Polylines "
+                        "among them are clipped to it. Not drawn.",
+                    members=DERIVED_MEMBERS),
     "Text": _p([A("text", "string"), A("position", "point", None), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0),
@@ -491,6 +497,9 @@ SYNONYMS: dict[str, str] = {
     "DXF": "Drawing2D",
     "SVG": "Drawing2D",
     "convex_hull": "Hull",
+    "Intersection": "Intersect",
+    "Clip": "Intersect",
+    "Common": "Intersect",
     "RectangularPattern": "GridPattern",
     "ArrayPattern": "GridPattern",
     "AtOffset": "At",
@@ -596,6 +605,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
                "of": "path", "paths": "path", "thickness": "width", "stroke_width": "width",
                "line_width": "width", "caps": "cap", "end": "cap", "ends": "cap",
                "cap_style": "cap", "end_cap": "cap"},
+    "Intersect": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
+                  "children": "shapes", "of": "shapes"},
     "Hull": {"items": "shapes", "objects": "shapes", "geometries": "shapes",
              "children": "shapes", "of": "shapes"},
     "RoundedRectangle": {"radii": "corner_radii", "corner_radius_list": "corner_radii",

@@ -48,8 +48,6 @@ HALLUCINATIONS = {
     "Cut": "booleans come from structure kinds: put the cut-out in a `hole NAME { ... }` child "
            "(into a part of a template instance: declare the hole beside it and write "
            "`CutInto(NAME, box.lid)`)",
-    "Intersection": "there is no intersection boolean: " + _BOOL,
-    "Intersect": "there is no intersection boolean: " + _BOOL,
     "Hole": "a hole is a structure: `hole NAME { c = Circle(center=(0, 0), radius=3) }` inside a solid",
     "Square": "write `Rectangle(center=..., width=s, height=s)`",
     "Box": "write `Rectangle(center=..., width=..., height=...)`",

@@ -167,3 +167,23 @@ assembly kit {
     assert v["kit.a.body.center"] == pytest.approx((25, 0), abs=EXACT)
     assert v["kit.b.body.center"] == pytest.approx((75, 0), abs=EXACT)
     assert v["kit.h.c.center"] == pytest.approx((25, 0), abs=EXACT)
+
+
+def test_a_knob_drawn_beside_the_ellipse_in_one_solid_comes_to_it():
+    """The same knob drawn as a shape of the ellipse's own solid, not a child: the first
+    drawn closed shape is the part and stays (before: they met halfway, the ellipse at
+    (0, 3.5) and the knob at (0, 28.5)); a Fixed knob still moves the part to it."""
+    src = """
+solid mirror {
+    body = Ellipse(center=(0, 0), rx=40, ry=25)
+    knob = Circle(center=(0, 32), radius=5)
+    Coincident(knob.center, body)
+    AlignCenterX(knob, body)
+}
+"""
+    v = _values(_compile(src))
+    assert v["mirror.body.center"] == pytest.approx((0, 0), abs=EXACT)
+    assert v["mirror.knob.center"] == pytest.approx((0, 25), abs=EXACT)
+    fixed = _values(_compile(src.replace("AlignCenterX", "Fixed(knob)\n    AlignCenterX")))
+    assert fixed["mirror.knob.center"] == pytest.approx((0, 32), abs=EXACT)
+    assert fixed["mirror.body.center"] == pytest.approx((0, 7), abs=EXACT)

@@ -89,11 +89,16 @@ SHAPES.update({k: v for k, v in {
     # issue 39: a drawing read from a file (the bundled board: an outline and four holes)
     "Drawing2D": 's = Drawing2D("std/drawings/pcb_board.dxf", layer="Edge.Cuts", '
                  'at=(12, 5), rotation=10 deg)',
+    # issue 73: the common area of an ellipse and a turned rectangle (elliptic arcs, lines)
+    "Intersect": "h1 = Ellipse(center=(12, 5), rx=8, ry=4, rotation=25 deg)\n"
+                 "    h2 = Rectangle(center=(14, 5), width=9, height=12, rotation=30 deg)\n"
+                 "    s = Intersect(h1, h2)",
 }.items() if k in ENTRIES})
 # bounding boxes that are not the shape's own, in the original too: an inset's is its
 # shape's, a Hull's and a Shell's their sources' (grown), a RoundedRectangle's its corners',
 # an Ellipse's outline is chords (issue 36 section 2, branch `exact`)
-BB_APPROX = {"Inset", "Shell", "Hull", "Offset", "RoundedRectangle", "Ellipse", "Stroke"}
+BB_APPROX = {"Inset", "Shell", "Hull", "Offset", "RoundedRectangle", "Ellipse", "Stroke",
+             "Intersect"}
 # open curves and marks: the law on their exact curve (points along it), not on an area
 CURVES = {
     "Point": "s = Point(12, 5)",

@@ -33,6 +33,7 @@ SAMPLE = {
     "AlignCenterX": "r2, r1", "AlignCenterY": "r2, r1", "OnLine": "p, l1", "OnCircle": "p, a1",
     # shapes made from shapes: the sample changes the drawn area, not the solution
     "Offset": "r2, 2", "Inset": "r1, 3", "Hull": "r1, r2",
+    "Intersect": "r1, Circle(center=(20, 15), radius=10)",
     "Drawing2D": "\"std/drawings/pcb_board.dxf\", layer=\"Edge.Cuts\", at=(60, 0)",
     "Spline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",
     "Polyline": "points=[(200, 0), (230, 0), (215, 25)], closed=true",

@@ -220,6 +220,11 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
                 else:
                     ys.append(cy + R * dy)
         return
+    if k == "Intersect":
+        # inside its first closed shape: that shape's box (larger than the common area's)
+        first = next(s for s in g.data["sources"] if s.closed)
+        _geom_candidates(first, frame, x, xs, ys, offs)
+        return
     if k in ("Offset", "Shell", "Hull", "Stroke"):
         # the sources' boxes (they are construction geometry, left out of the structure's
         # box): a hull's box is theirs; an outward offset's (round joins) theirs grown by the

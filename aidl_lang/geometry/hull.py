@@ -118,7 +118,11 @@ def _support(site, phi: float) -> float:
 
 def hull_loop(loops: list[Loop]) -> Loop | None:
     """The exact convex hull (a counter-clockwise :class:`~.curves.Loop`) of the outlines
-    ``loops`` (any orientation); None when it encloses no area (all points on one line)."""
+    ``loops`` (any orientation); None when it encloses no area (all points on one line).
+    Outlines holding elliptic arcs go to :func:`envelope_hull`."""
+    from .curves import EllipticArc
+    if any(isinstance(s, EllipticArc) for lp in loops for s in lp.segments):
+        return envelope_hull(loops)
     sites, samples = _sites(loops)
     if len(samples) < 3:
         return None
@@ -202,5 +206,196 @@ def hull_loop(loops: list[Loop]) -> Loop | None:
         p = (s[0] + s[2] * math.cos(a_out), s[1] + s[2] * math.sin(a_out))
         q = (t[0] + t[2] * math.cos(a_out), t[1] + t[2] * math.sin(a_out))
         segs.append(Line(p, q))
+    lp = Loop(simplify(segs, scale))
+    return lp if lp.segments and lp.area > tol else None
+
+
+# ------------------------------------------------------------ hulls with ellipses
+ENVELOPE_SAMPLES = 2048     # directions where the first guess of the supporting site is made
+SNAP = 1e-6                 # rad: a turn this close to an arc's end is its end
+
+
+def _ellipse_support(e, phi: float):
+    """``(h, t)``: the support of ellipse ``e`` in the direction ``phi`` and the parameter of
+    its point there (where its outward normal points along ``phi``)."""
+    a = phi - e.rotation
+    nx, ny = math.cos(a), math.sin(a)
+    t = math.atan2(e.ry * ny, e.rx * nx)
+    return (e.center[0] * math.cos(phi) + e.center[1] * math.sin(phi)
+            + math.hypot(e.rx * nx, e.ry * ny)), t
+
+
+def _in_ranges(ranges, a: float) -> bool:
+    return any(sw >= TWO_PI - 1e-12 or (a - lo + 1e-12) % TWO_PI <= sw + 2e-12
+               for lo, sw in ranges)
+
+
+class _Site:
+    """One piece the hull may run along: a point (``kind`` "P"), a circle ("C": ranges of the
+    outward normal's angle) or an ellipse ("E": ranges of its parameter)."""
+    __slots__ = ("kind", "data", "ranges")
+
+    def __init__(self, kind, data, ranges):
+        self.kind, self.data, self.ranges = kind, data, ranges
+
+    def support(self, phi: float) -> float:
+        c, s = math.cos(phi), math.sin(phi)
+        if self.kind == "P":
+            return self.data[0] * c + self.data[1] * s
+        if self.kind == "C":
+            if not _in_ranges(self.ranges, phi):
+                return -math.inf
+            cx, cy, r = self.data
+            return cx * c + cy * s + r
+        h, t = _ellipse_support(self.data, phi)
+        return h if _in_ranges(self.ranges, t) else -math.inf
+
+    def param(self, phi: float) -> float:
+        """The angle (circle) or parameter (ellipse) of the site's point supporting ``phi``,
+        snapped to the end of a range within :data:`SNAP`."""
+        a = phi if self.kind == "C" else _ellipse_support(self.data, phi)[1]
+        for lo, sw in self.ranges:
+            if sw >= TWO_PI - 1e-12:
+                continue
+            for end in (lo, lo + sw):
+                d = (a - end + math.pi) % TWO_PI - math.pi
+                if abs(d) <= SNAP:
+                    return a - d
+        return a
+
+    def point(self, phi: float):
+        if self.kind == "P":
+            return self.data
+        a = self.param(phi)
+        if self.kind == "C":
+            cx, cy, r = self.data
+            return (cx + r * math.cos(a), cy + r * math.sin(a))
+        return self.data.at(a)
+
+
+def _envelope_sites(loops: list[Loop]) -> list[_Site]:
+    from .curves import EllipticArc
+    sites: list[_Site] = []
+    index: dict = {}
+
+    def add(key, kind, data, rng):
+        k = index.get(key)
+        if k is None:
+            k = index[key] = len(sites)
+            sites.append(_Site(kind, data, []))
+        if rng is not None and rng not in sites[k].ranges:
+            sites[k].ranges.append(rng)
+
+    for lp in loops:
+        for s in lp.segments:
+            if not isinstance(s, Circle) and not (isinstance(s, EllipticArc) and s.whole):
+                for p in (s.start, s.end):
+                    add(("P", round(p[0], 9), round(p[1], 9)), "P", (float(p[0]), float(p[1])),
+                        None)
+            if isinstance(s, Line):
+                continue
+            if isinstance(s, EllipticArc):
+                e = s.curve
+                rng = (0.0, TWO_PI) if s.whole else \
+                    ((s.start_param, s.sweep) if s.sweep > 0 else (s.end_param, -s.sweep))
+                add(("E", round(e.center[0], 9), round(e.center[1], 9), round(e.rx, 9),
+                     round(e.ry, 9), round(e.rotation, 12)), "E", e, rng)
+                continue
+            if isinstance(s, Circle):
+                rng = (0.0, TWO_PI)
+            else:
+                rng = (s.start_angle, s.sweep) if s.sweep > 0 else (s.end_angle, -s.sweep)
+            add(("C",) + tuple(round(float(v), 9) for v in (*s.center, s.radius)), "C",
+                (float(s.center[0]), float(s.center[1]), float(s.radius)), rng)
+    return sites
+
+
+def _best(sites, phi: float) -> int:
+    best, k = -math.inf, 0
+    for i, s in enumerate(sites):
+        h = s.support(phi)
+        if h > best:
+            best, k = h, i
+    return k
+
+
+def _switches(sites, a: float, ia: int, b: float, ib: int, out: list, depth: int = 0) -> None:
+    """Append ``(phi, site)`` for every change of the supporting site between directions
+    ``a`` (site ``ia``) and ``b`` (site ``ib``), found by bisection to the last bit."""
+    while True:
+        m = 0.5 * (a + b)
+        if m <= a or m >= b:
+            break
+        im = _best(sites, m)
+        if im == ia:
+            a = m
+        elif im == ib:
+            b = m
+        else:
+            if depth < 64:
+                _switches(sites, a, ia, m, im, out, depth + 1)
+                _switches(sites, m, im, b, ib, out, depth + 1)
+                return
+            a = m
+    out.append((b, ib))
+
+
+def envelope_hull(loops: list[Loop]) -> Loop | None:
+    """The exact convex hull of outlines holding elliptic arcs (and lines, arcs, circles):
+    the upper envelope of the pieces' support functions over the direction ``phi`` of the
+    outward normal.  Each piece's share is found on :data:`ENVELOPE_SAMPLES` directions and
+    its ends by bisection to the last bit (a piece that beats both sides at a switching
+    direction, missed between two samples, is sampled there and the envelope found again); the hull runs along each supporting piece (an
+    :class:`~.curves.EllipticArc` of its own ellipse, an :class:`~.curves.Arc` of its own
+    circle) and along the line tangent to two consecutive ones at the switching direction,
+    whose ends lie on the two curves.  None when the hull encloses no area."""
+    from .curves import EllipticArc
+    sites = _envelope_sites(loops)
+    if not sites:
+        return None
+    N = ENVELOPE_SAMPLES
+    phis = [TWO_PI * k / N for k in range(N)]
+    scale = max(1.0, max(abs(v) for lp in loops for s in lp.segments for v in s.box()))
+    tol = 1e-9 * scale
+    for _ in range(8):
+        lab = [_best(sites, p) for p in phis]
+        sw: list = []
+        for k in range(len(phis)):
+            a = phis[k]
+            b = phis[k + 1] if k + 1 < len(phis) else phis[0] + TWO_PI
+            ia, ib = lab[k], lab[(k + 1) % len(phis)]
+            if ia != ib:
+                _switches(sites, a, ia, b, ib, sw)
+        # a site the sampling missed (a point or small circle past a tangent line by less
+        # than the samples' spacing) wins at a switching direction: sample it there, again
+        missed = [phi for phi, k in sw if sites[_best(sites, phi)].support(phi)
+                  > sites[k].support(phi) + tol]
+        if not missed:
+            break
+        phis = sorted(set(phis) | {m % TWO_PI for m in missed})
+    if not sw:
+        s = sites[lab[0]]
+        if s.kind == "E":
+            return Loop([EllipticArc(s.data, 0.0, TWO_PI)])
+        if s.kind == "C":
+            return Loop([Circle(s.data[:2], s.data[2])])
+        return None
+    segs: list = []
+    n = len(sw)
+    for j in range(n):
+        phi_in, k = sw[j - 1]
+        phi_out, nxt = sw[j]
+        s = sites[k]
+        turn = (phi_out - phi_in) % TWO_PI
+        if s.kind == "C" and turn > 1e-12:
+            a0 = s.param(phi_in)
+            a1 = s.param(phi_out)
+            segs.append(Arc(s.data[:2], s.data[2], a0, (a1 - a0) % TWO_PI or TWO_PI))
+        elif s.kind == "E" and turn > 1e-12:
+            t0, t1 = s.param(phi_in), s.param(phi_out)
+            segs.append(EllipticArc(s.data, t0, (t1 - t0) % TWO_PI or TWO_PI))
+        p, q = s.point(phi_out), sites[nxt].point(phi_out)
+        if math.dist(p, q) > tol:
+            segs.append(Line(p, q))
     lp = Loop(simplify(segs, scale))
     return lp if lp.segments and lp.area > tol else None

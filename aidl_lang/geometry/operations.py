@@ -816,6 +816,11 @@ def corners(loop, size: float, fillet: bool, only=None):
         if abs(turn) <= CORNER_TURN or not chosen or (not fillet and turn < 0):
             continue
         el = next((g for g in (a, b) if isinstance(g, EllipticArc)), None)
+        if el is not None and not isinstance(a if el is b else b, (EllipticArc, Spline)):
+            # an ellipse beside a line or an arc: the fillet's centre is found on the
+            # ellipse's offset curve (a root in its parameter), the chamfer's ends by arc length
+            cut[k] = _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
+            continue
         if el is not None:
             what = "Fillet" if fillet else "Chamfer"
             raise SplineCorner(
@@ -865,16 +870,23 @@ def _offset(g, d: float):
 
 def _fraction(g, p, from_end: bool) -> float:
     """How far along segment ``g`` point ``p`` (on its carrier) lies from its start (or its
-    end), as a fraction of its length; negative before it."""
-    from .curves import Line
+    end), as a fraction of its length; negative before it (an elliptic arc: of its
+    parameter's sweep)."""
+    from .curves import EllipticArc, Line
     if isinstance(g, Line):
         (x0, y0), (x1, y1) = g.start, g.end
         L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
         t = ((p[0] - x0) * (x1 - x0) + (p[1] - y0) * (y1 - y0)) / L2 if L2 else 0.0
+    elif isinstance(g, EllipticArc):
+        d = ((g.curve.foot(p) - g.start_param) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
+        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
+            d -= 2 * math.pi
+        t = d / abs(g.sweep) if g.sweep else 0.0
     else:
         a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
-        d = (a - g.start_angle) * (1 if g.sweep > 0 else -1)
-        d = (d + math.pi) % (2 * math.pi) - math.pi          # nearest turn
+        d = ((a - g.start_angle) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
+        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
+            d -= 2 * math.pi                                  # (an arc over half a turn too)
         t = d / abs(g.sweep) if g.sweep else 0.0
     return 1.0 - t if from_end else t
 
@@ -885,15 +897,18 @@ def _fillet_at(a, b, turn: float, r: float):
     ``r`` toward the corner's inside cross, it must run the way both segments run where it
     touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
     the corner."""
-    from .curves import Arc, carrier, crossings, foot, tangent_at
+    from .curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
     s = 1.0 if turn > 0 else -1.0
-    oa, ob = _offset(a, s * r), _offset(b, s * r)
-    if oa is None or ob is None:
-        return None
     p = b.start
     best = None
-    for c in crossings(oa, ob):
-        ta, tb = foot(carrier(a), c), foot(carrier(b), c)
+    if isinstance(a, EllipticArc) or isinstance(b, EllipticArc):
+        found = _ellipse_centres(a, b, s, r)
+    else:
+        oa, ob = _offset(a, s * r), _offset(b, s * r)
+        if oa is None or ob is None:
+            return None
+        found = [(c, foot(carrier(a), c), foot(carrier(b), c)) for c in crossings(oa, ob)]
+    for c, ta, tb in found:
         # offsets that only nearly touch give their touching point, which may lie off the
         # circle of radius r around the tangent points: not a fillet
         tol = 1e-9 * max(1.0, abs(c[0]), abs(c[1]))
@@ -918,6 +933,63 @@ def _fillet_at(a, b, turn: float, r: float):
         if best is None or d < best[0]:
             best = (d, (ta, tb, Arc(c, r, a1, sw)))
     return best[1] if best is not None else None
+
+
+ELLIPSE_SCAN = 64      # parameter steps over the half of an elliptic arc next to a corner
+
+
+def _ellipse_centres(a, b, s: float, r: float) -> list:
+    """``[(centre, point on a, point on b)]`` of the arcs of radius ``r`` tangent to the
+    elliptic arc and the line or arc beside it on the corner's inside (``s`` = 1: the left):
+    the centre is the ellipse's point ``P(t)`` moved ``r`` along its normal, ``t`` the root of
+    its signed distance from the other segment's carrier offset by ``r`` (sign changes over
+    :data:`ELLIPSE_SCAN` steps of the half next to the corner, then bisection to the last
+    bit); the tangent point on the ellipse is ``P(t)`` itself, on the other its foot."""
+    from .curves import EllipticArc, carrier, foot
+    el_first = isinstance(a, EllipticArc)
+    el, other = (a, b) if el_first else (b, a)
+    if isinstance(other, EllipticArc):
+        return []
+    oo = _offset(other, s * r)
+    if oo is None:
+        return []
+    e, sg = el.curve, (1.0 if el.sweep > 0 else -1.0)
+
+    def centre(t):
+        tx, ty = e.tangent(t)
+        q = e.at(t)
+        return (q[0] - s * r * sg * ty, q[1] + s * r * sg * tx)
+
+    def gap(t):
+        x, y = centre(t)
+        if oo[0] == "L":
+            _, px, py, ux, uy = oo
+            return ux * (y - py) - uy * (x - px)
+        return math.hypot(x - oo[1], y - oo[2]) - oo[3]
+
+    near = el.end_param if el_first else el.start_param
+    far = el.start_param + el.sweep / 2
+    ts = [near + (far - near) * i / ELLIPSE_SCAN for i in range(ELLIPSE_SCAN + 1)]
+    gs = [gap(t) for t in ts]
+    out = []
+    for i in range(ELLIPSE_SCAN):
+        if gs[i] == 0.0 or gs[i] * gs[i + 1] < 0:
+            lo, hi, glo = ts[i], ts[i + 1], gs[i]
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                if mid in (lo, hi):
+                    break
+                gm = gap(mid)
+                if (gm < 0) == (glo < 0) and gm != 0.0:
+                    lo, glo = mid, gm
+                else:
+                    hi = mid
+            t = lo if gs[i] == 0.0 else 0.5 * (lo + hi)
+            c = centre(t)
+            pe, po = e.at(t), foot(carrier(other), c)
+            out.append((c, pe, po) if el_first else (c, po, pe))
+            break                       # the crossing nearest the corner
+    return out
 
 
 def with_ends_at(g, t, start: bool = False):
@@ -958,7 +1030,17 @@ def _chamfer(a, b, d: float):
 def _along(g, d: float, from_end: bool):
     """The point ``d`` mm (at most half the segment) from ``g``'s end (or start)."""
     from .curves import Line
+    from .curves import EllipticArc
     d = min(d, g.length / 2)
+    if isinstance(g, EllipticArc):       # the parameter whose arc length is d: bisection
+        lo, hi = 0.0, abs(g.sweep) / 2
+        sg = 1.0 if g.sweep > 0 else -1.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            piece = EllipticArc(g.curve, g.end_param - sg * mid if from_end else g.start_param,
+                                sg * mid)
+            lo, hi = (mid, hi) if piece.length < d else (lo, mid)
+        return g.at(g.end_param - sg * lo if from_end else g.start_param + sg * lo)
     if isinstance(g, Line):
         (x0, y0), (x1, y1) = g.start, g.end
         L = g.length or 1.0

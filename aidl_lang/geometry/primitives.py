@@ -832,17 +832,6 @@ def _source(v, what: str) -> Geometry:
                              f"cubic spline is not a cubic spline, and outputs here are exact "
                              f"or refused; draw the grown outline as a second Spline through "
                              f"offset points, or offset a Polygon or arcs instead")
-    if g.kind == "Ellipse" and what == "Hull":
-        raise PrimitiveError("Hull of an Ellipse is not supported: the hull's sides would be "
-                             "lines tangent to the ellipse, and outputs here are exact or "
-                             "refused; hull Circles (an ellipse's hull with circles of its "
-                             "curvature is close), or draw the outline yourself")
-    if g.kind == "Ellipse":
-        raise PrimitiveError(f"{what} of an Ellipse cannot be exact: the offset of an ellipse "
-                             f"is no ellipse (a curve of degree 8, which no output format here "
-                             f"holds), and outputs here are exact or refused; draw the grown "
-                             f"outline as an Ellipse of its own (rx and ry each grown: close to "
-                             f"the offset, not equal to it), or a Spline through offset points")
     if not g.closed or g.kind == "Text":
         raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
                              f"Slot, ...), not a {g.kind}")
@@ -898,6 +887,53 @@ def _build_Hull(ctx, g, a):
     if not items:
         raise PrimitiveError("Hull needs at least one shape")
     _consume(g, [_source(v, "Hull") for v in items])
+
+
+CLIPPED = ("Line", "Arc", "Polyline")       # open curves an Intersect clips
+
+
+def _build_Intersect(ctx, g, a):
+    """What the closed shapes have in common; open curves among them are clipped to it (a
+    clip: ``g.data["clip"]``, the open sources, drawn as lines).  Lists are flattened."""
+    raw = a["shapes"] if "shapes" in a else \
+        [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
+    items: list = []
+    stack = list(raw) if isinstance(raw, (list, tuple)) else [raw]
+    while stack:
+        v = stack.pop(0)
+        if isinstance(v, (list, tuple)):
+            stack[0:0] = list(v)
+        else:
+            items.append(v)
+    closed, open_ = [], []
+    for v in items:
+        if not isinstance(v, GeomRef):
+            raise PrimitiveError(f"Intersect takes shapes (a Circle, Rectangle, Ellipse, "
+                                 f"Polygon, ...) and open Lines, Arcs or Polylines to clip, "
+                                 f"got {type_name(v)}")
+        src = v.geom
+        if src.closed and src.kind != "Text":
+            closed.append(src)
+        elif src.kind in CLIPPED:
+            open_.append(src)
+        else:
+            raise PrimitiveError(f"Intersect cannot take a {src.kind}: give closed shapes "
+                                 f"(their common area) and open Lines, Arcs or Polylines "
+                                 f"(clipped to it)")
+    if not closed:
+        raise PrimitiveError("Intersect needs at least one closed shape: the area to keep "
+                             "(e.g. `Intersect(strings, head)` with `head` an Ellipse)")
+    if not open_ and len(closed) < 2:
+        raise PrimitiveError("Intersect needs two closed shapes (their common area), or open "
+                             "Lines, Arcs or Polylines and the closed shape to clip them to")
+    _consume(g, open_ + closed)      # (copies remap the sources: see region_of)
+    g.closed = not open_
+
+
+def region_of(g: Geometry) -> tuple[list, list]:
+    """An ``Intersect``'s (closed shapes, open curves to clip) from its sources."""
+    src = g.data["sources"]
+    return [s for s in src if s.closed], [s for s in src if not s.closed]
 
 
 _STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline", "Bezier")

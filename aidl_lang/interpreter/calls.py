@@ -26,7 +26,7 @@ _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
 _GEOM_KINDS = {"line": ("Line", "Slot"), "circular": ("Circle", "Arc"),
                "curve": ("Line", "Circle", "Arc")}
 # shapes made from other shapes (their source must be in the same structure: E0201's hint)
-DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke")
+DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke", "Intersect")
 
 
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)

@@ -60,7 +60,7 @@ class Attempt(Compared):
     def __init__(self, stage: str, depth: int, rows: np.ndarray, cols: np.ndarray,
                  ok: bool = False, iterations: int = 0, rounds: int = 0, order: int = 0,
                  x_end: np.ndarray | None = None):
-        self.stage = stage  # "local", "translate", "deform" or "flat"
+        self.stage = stage  # "local", "translate", "deform", "flat", "features" or "shapes"
         self.depth = depth
         self.rows = rows
         self.cols = cols
@@ -543,6 +543,8 @@ class Solver:
         if (s.children or _helpers(s)) \
                 and (yield from self._features_first(s, local, order, own, frames)):
             return True
+        if (yield from self._shape_first(s, local, order, own)):
+            return True
         # stage 0: only this structure's own unknowns
         last = Attempt("local", 0, local, self._cols(own([s]), local), order=order)
         if (yield last):
@@ -630,6 +632,27 @@ class Solver:
             self.x = self.x.copy()
             self.x[cols] = values
         return False
+
+    def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
+        """Parts stay within one structure (issue 73): when one of a solid's constraints
+        relates its first drawn closed shape (the part: ``body = Ellipse(...)``) to another
+        of its shapes (``knob = Circle(...)``, ``Coincident(knob.center, body)``), an
+        attempt first solves its rows with the part's unknowns held, so the knob goes to the
+        body and the body stays where it is written.  When that fails (the knob is
+        ``Fixed``, or only the part can move) the point is unchanged and the paper's stages
+        follow as before.  A generator like :meth:`steps`; returns whether ``s`` was
+        solved."""
+        part = _part_shape(s)
+        if part is None:
+            return False
+        mine = own([s])
+        held = {i for p in part.points.values() for i in (p.ix, p.iy)}
+        held.update(sc.index for sc in part.scalars.values())
+        held.intersection_update(mine)
+        cols = [i for i in mine if i not in held]
+        if not held or not cols or not self._related(local, held):
+            return False
+        return (yield Attempt("shapes", 0, local, self._cols(cols, local), order=order))
 
     def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
         """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
@@ -747,6 +770,18 @@ def _unknowns(g, out: set) -> None:
     for part in g.parts.values():
         if hasattr(part, "points"):
             _unknowns(part, out)
+
+
+def _part_shape(s: Structure):
+    """A solid's part among its own shapes: the first drawn closed one (not construction
+    geometry, not a copy made by a pattern), or None."""
+    if s.kind != "solid":
+        return None
+    for g in s.geometry:
+        if g.closed and not g.construction and g.pattern_original is None \
+                and g.kind not in ("Text", "Point"):
+            return g
+    return None
 
 
 def _cut_parts(model: Model) -> dict[int, list]:

@@ -106,7 +106,8 @@ def empty_faces(d: Drawing) -> list:
             if f is None or f.is_empty():
                 out.setdefault(id(g), (s, g, 0.0))
         for g in s.geometry:
-            if not g.construction and (g.kind in _CLOSED or g.kind == "Polyline" and g.closed) \
+            if not g.construction and (g.kind in _CLOSED or g.kind in ("Polyline", "Intersect")
+                                     and g.closed) \
                     and id(g) not in shaped \
                     and id(g) not in errored:
                 out.setdefault(id(g), (s, g, 0.0))

@@ -29,6 +29,8 @@ from ...geometry.ellipse import ellipse
 from ...geometry.model import Geometry, Model, Structure
 from ...geometry.hull import hull_loop
 from ...geometry.offset import offset_pieces
+from ...geometry.biarc import without_ellipses
+from ...geometry.primitives import region_of
 from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
@@ -45,7 +47,7 @@ UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
 # 480,000 vertices in 3.5 s, 7.3 us; half of it, so that only a union sure to end past the
 # deadline is refused before it starts, as the shape checks' estimates in checks/walls.py)
 UNION_SECONDS_PER_VERTEX = 3.5e-6
-DERIVED = ("Offset", "Shell", "Stroke")   # shapes whose outline is a boolean of pieces
+DERIVED = ("Offset", "Shell", "Stroke", "Intersect")   # outlines that are booleans of pieces
 END_CELL = 0.25           # mm: grid cell of the curve ends chained into loops (>= _tol at 1e6 mm)
 # mm: half the width of the band a through-cut (a `cut` structure's open curve) takes out of
 # its part where the part is analysed (what it separates, the webs it leaves): far below every
@@ -464,6 +466,10 @@ class Renderer:
             out = self._stroke(g)
             self.derived[id(g)] = out
             return out
+        if g.kind == "Intersect":
+            out = self._common(g)
+            self.derived[id(g)] = out
+            return out
         src = g.data["sources"][0]
         loops = self.loops_of(src)
         base = self.exact.section(loops) if loops else mf.CrossSection()
@@ -489,6 +495,38 @@ class Renderer:
             out = None
         self.derived[id(g)] = out
         return out
+
+    def _common(self, g: Geometry) -> mf.CrossSection | None:
+        """The area an ``Intersect``'s closed shapes have in common (Manifold's intersection
+        of their exact sections, put back on their exact curves by :mod:`.exact`); None and
+        an E0406 at the call when they have none."""
+        region = region_of(g)[0]
+        out = None
+        for src in region:
+            loops = self.loops_of(src)
+            sec = self.exact.section(loops) if loops else mf.CrossSection()
+            out = sec if out is None else out ^ sec
+        if out is None or out.is_empty() or out.area() <= 1e-12:
+            names = ", ".join(f"`{s.label}`" for s in region)
+            self.shape_errors.append((g, (
+                f"`{g.label}`: {names} have no area in common: the Intersect is empty"),
+                "place the shapes so that they overlap (an Intersect keeps only the area "
+                "inside all of them)"))
+            return None
+        return out
+
+    def clipped(self, g: Geometry) -> list:
+        """The exact pieces of a clipping ``Intersect``'s open curves that lie inside the
+        common area of its closed shapes: each curve cut where it crosses the area's
+        outline (exact crossings of the carriers), a piece kept when its middle is inside."""
+        from ...geometry.clip import clip
+        region, curves = region_of(g)
+        if len(region) == 1:
+            loops = self.loops_of(region[0])
+        else:
+            sec = self._common(g)
+            loops = self.exact.loops(sec) if sec is not None else []
+        return clip([seg for src in curves for seg in self.pieces(src)], loops)
 
     def stroke_path(self, g: Geometry) -> list:
         """The exact segments of a Stroke's path in order, each piece turned to start where
@@ -559,6 +597,9 @@ class Renderer:
     def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
         if d == 0 or base.is_empty():
             return base
+        # an ellipse is offset as its biarcs (the offset of an ellipse is no ellipse):
+        # within geometry.biarc.BIARC_TOL of the true offset curve
+        loops = without_ellipses(loops)[0]
         pieces = [self.exact.face(lp) for lp in offset_pieces(loops, d, join)]
         band = self.union(pieces)
         return base + band if d > 0 else base - band
@@ -603,8 +644,8 @@ class Renderer:
             if g.kind in ("Line", "Arc", "EllipticArc") or (g.kind in ("Spline", "Bezier", "Polyline")
                                              and not g.closed):
                 open_curves.append(g)
-            elif g.kind == "Text":
-                self.draw_lines(g, out)
+            elif g.kind == "Text" or (g.kind == "Intersect" and not g.closed):
+                self.draw_lines(g, out)         # (a clip's pieces: lines, as a drawing's)
             elif g.kind == "Point":
                 continue
             else:
@@ -750,6 +791,10 @@ class Renderer:
             for segs in paths:
                 for seg in segs:
                     self._stroke_segment(seg, "drawing", g, out)
+            return
+        if g.kind == "Intersect" and not g.closed:
+            for seg in self.clipped(g):
+                self._stroke_segment(seg, "drawing", g, out)
             return
         if g.kind in ("Line", "Arc", "Spline", "Bezier", "EllipticArc") or (g.kind == "Polyline" and not g.closed):
             out.lines.append(("drawing", self.curve(g)))

@@ -14,14 +14,14 @@ syntax keyword aidlCadKeyword as assert def import param units
 syntax keyword aidlCadSelf self
 syntax keyword aidlCadConstant False PI True false pi tau true
 syntax keyword aidlCadPrimitive AnnularSector AnnulusSegment Arc ArcSlot BSpline Band Bezier BezierChain
-syntax keyword aidlCadPrimitive BezierCurve BezierPath BezierSpline Chain Circle CircularSector ConvexHull CubicBezier
-syntax keyword aidlCadPrimitive CubicSpline Curve DXF Drawing2D Ellipse Expand FitSpline Grow
-syntax keyword aidlCadPrimitive Hull ImportDXF ImportDrawing ImportSVG Inset Interpolate InterpolatedCurve Line
-syntax keyword aidlCadPrimitive LineString Offset OpenPolygon Outset Path Pie PieSlice Point
-syntax keyword aidlCadPrimitive PolyLine Polygon Polyline Rectangle RegularPolygon RingSegment RoundedRectangle SVG
-syntax keyword aidlCadPrimitive Sector Shell Shrink Slot SmoothCurve Spline Star Stroke
-syntax keyword aidlCadPrimitive Sweep Text ThickLine Thicken Trace Trapezoid Triangle Wedge
-syntax keyword aidlCadPrimitive Wire ZigZag convex_hull
+syntax keyword aidlCadPrimitive BezierCurve BezierPath BezierSpline Chain Circle CircularSector Clip Common
+syntax keyword aidlCadPrimitive ConvexHull CubicBezier CubicSpline Curve DXF Drawing2D Ellipse Expand
+syntax keyword aidlCadPrimitive FitSpline Grow Hull ImportDXF ImportDrawing ImportSVG Inset Interpolate
+syntax keyword aidlCadPrimitive InterpolatedCurve Intersect Intersection Line LineString Offset OpenPolygon Outset
+syntax keyword aidlCadPrimitive Path Pie PieSlice Point PolyLine Polygon Polyline Rectangle
+syntax keyword aidlCadPrimitive RegularPolygon RingSegment RoundedRectangle SVG Sector Shell Shrink Slot
+syntax keyword aidlCadPrimitive SmoothCurve Spline Star Stroke Sweep Text ThickLine Thicken
+syntax keyword aidlCadPrimitive Trace Trapezoid Triangle Wedge Wire ZigZag convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
 syntax keyword aidlCadConstraint Bend CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear

@@ -71,14 +71,15 @@
 ((identifier) @type.builtin
   (#any-of? @type.builtin
     "AnnularSector" "AnnulusSegment" "Arc" "ArcSlot" "BSpline" "Band" "Bezier" "BezierChain"
-    "BezierCurve" "BezierPath" "BezierSpline" "Chain" "Circle" "CircularSector" "ConvexHull"
-    "CubicBezier" "CubicSpline" "Curve" "DXF" "Drawing2D" "Ellipse" "Expand" "FitSpline"
-    "Grow" "Hull" "ImportDXF" "ImportDrawing" "ImportSVG" "Inset" "Interpolate"
-    "InterpolatedCurve" "Line" "LineString" "Offset" "OpenPolygon" "Outset" "Path" "Pie"
-    "PieSlice" "Point" "PolyLine" "Polygon" "Polyline" "Rectangle" "RegularPolygon"
-    "RingSegment" "RoundedRectangle" "SVG" "Sector" "Shell" "Shrink" "Slot" "SmoothCurve"
-    "Spline" "Star" "Stroke" "Sweep" "Text" "ThickLine" "Thicken" "Trace" "Trapezoid"
-    "Triangle" "Wedge" "Wire" "ZigZag" "convex_hull"))
+    "BezierCurve" "BezierPath" "BezierSpline" "Chain" "Circle" "CircularSector" "Clip"
+    "Common" "ConvexHull" "CubicBezier" "CubicSpline" "Curve" "DXF" "Drawing2D" "Ellipse"
+    "Expand" "FitSpline" "Grow" "Hull" "ImportDXF" "ImportDrawing" "ImportSVG" "Inset"
+    "Interpolate" "InterpolatedCurve" "Intersect" "Intersection" "Line" "LineString"
+    "Offset" "OpenPolygon" "Outset" "Path" "Pie" "PieSlice" "Point" "PolyLine" "Polygon"
+    "Polyline" "Rectangle" "RegularPolygon" "RingSegment" "RoundedRectangle" "SVG" "Sector"
+    "Shell" "Shrink" "Slot" "SmoothCurve" "Spline" "Star" "Stroke" "Sweep" "Text"
+    "ThickLine" "Thicken" "Trace" "Trapezoid" "Triangle" "Wedge" "Wire" "ZigZag"
+    "convex_hull"))
 
 ((identifier) @function.builtin
   (#any-of? @function.builtin
@@ -110,26 +111,27 @@
     "AllowOverlap" "Anchor" "Angle" "AnnularSector" "AnnulusSegment" "Arc" "ArcSlot"
     "ArrayPattern" "At" "AtCorners" "AtMidpoint" "AtOffset" "BSpline" "Band" "Below" "Bend"
     "Bezier" "BezierChain" "BezierCurve" "BezierPath" "BezierSpline" "CenterInside"
-    "Centered" "Chain" "Chamfer" "Circle" "CircularPattern" "CircularSector" "Coincide"
-    "Coincident" "Collinear" "Concentric" "Contains" "ConvexHull" "CornerPattern"
-    "CubicBezier" "CubicSpline" "Curve" "CutInto" "DXF" "Diameter" "Distance" "DistanceX"
-    "DistanceY" "Drawing2D" "Ellipse" "Equal" "EqualLength" "EqualRadius" "Expand" "False"
-    "Fillet" "FitSpline" "Fix" "Fixed" "Gap" "GridPattern" "Grow" "Horizontal"
-    "HorizontalDistance" "HorizontallyCentered" "Hull" "ImportDXF" "ImportDrawing"
-    "ImportSVG" "Inset" "Inside" "IntendedOverlap" "Interpolate" "InterpolatedCurve" "Join"
-    "LeftOf" "Length" "Line" "LineString" "LinearPattern" "Lock" "Midpoint" "Mirror"
-    "MirrorSymmetric" "Mirrored" "MoveTogether" "Offset" "OnArc" "OnCircle" "OnLine"
-    "OnTopOf" "OpenPolygon" "Orthogonal" "Outset" "Over" "OverlapOK" "PI" "Parallel" "Path"
-    "Perpendicular" "Pie" "PieSlice" "Place" "PlaceAt" "Point" "PointOnLine" "PolyLine"
-    "Polygon" "Polyline" "Radius" "Rectangle" "RectangularPattern" "RegularPolygon"
-    "RightOf" "Rigid" "RigidGroup" "RingSegment" "RoundedRectangle" "SVG" "Same" "Sector"
-    "Shell" "Shrink" "Slot" "SmoothCurve" "Spline" "Star" "Stroke" "Sweep" "Symmetric"
-    "Taller" "Tangent" "Text" "ThickLine" "Thicken" "ToTheLeftOf" "ToTheRightOf" "Trace"
-    "Trapezoid" "Triangle" "True" "Under" "Underneath" "Vertical" "VerticalDistance"
-    "VerticallyCentered" "Wedge" "Wider" "Wire" "Within" "ZigZag" "abs" "acos" "asin"
-    "assembly" "atan" "atan2" "ceil" "convex_hull" "cos" "cut" "degrees" "distance"
-    "drawing" "false" "floor" "hole" "len" "max" "min" "mirror" "norm" "pi" "polar"
-    "radians" "range" "round" "self" "sin" "solid" "sqrt" "square" "str" "tan" "tau" "true"))
+    "Centered" "Chain" "Chamfer" "Circle" "CircularPattern" "CircularSector" "Clip"
+    "Coincide" "Coincident" "Collinear" "Common" "Concentric" "Contains" "ConvexHull"
+    "CornerPattern" "CubicBezier" "CubicSpline" "Curve" "CutInto" "DXF" "Diameter"
+    "Distance" "DistanceX" "DistanceY" "Drawing2D" "Ellipse" "Equal" "EqualLength"
+    "EqualRadius" "Expand" "False" "Fillet" "FitSpline" "Fix" "Fixed" "Gap" "GridPattern"
+    "Grow" "Horizontal" "HorizontalDistance" "HorizontallyCentered" "Hull" "ImportDXF"
+    "ImportDrawing" "ImportSVG" "Inset" "Inside" "IntendedOverlap" "Interpolate"
+    "InterpolatedCurve" "Intersect" "Intersection" "Join" "LeftOf" "Length" "Line"
+    "LineString" "LinearPattern" "Lock" "Midpoint" "Mirror" "MirrorSymmetric" "Mirrored"
+    "MoveTogether" "Offset" "OnArc" "OnCircle" "OnLine" "OnTopOf" "OpenPolygon" "Orthogonal"
+    "Outset" "Over" "OverlapOK" "PI" "Parallel" "Path" "Perpendicular" "Pie" "PieSlice"
+    "Place" "PlaceAt" "Point" "PointOnLine" "PolyLine" "Polygon" "Polyline" "Radius"
+    "Rectangle" "RectangularPattern" "RegularPolygon" "RightOf" "Rigid" "RigidGroup"
+    "RingSegment" "RoundedRectangle" "SVG" "Same" "Sector" "Shell" "Shrink" "Slot"
+    "SmoothCurve" "Spline" "Star" "Stroke" "Sweep" "Symmetric" "Taller" "Tangent" "Text"
+    "ThickLine" "Thicken" "ToTheLeftOf" "ToTheRightOf" "Trace" "Trapezoid" "Triangle" "True"
+    "Under" "Underneath" "Vertical" "VerticalDistance" "VerticallyCentered" "Wedge" "Wider"
+    "Wire" "Within" "ZigZag" "abs" "acos" "asin" "assembly" "atan" "atan2" "ceil"
+    "convex_hull" "cos" "cut" "degrees" "distance" "drawing" "false" "floor" "hole" "len"
+    "max" "min" "mirror" "norm" "pi" "polar" "radians" "range" "round" "self" "sin" "solid"
+    "sqrt" "square" "str" "tan" "tau" "true"))
 
 ; ---- operators and punctuation
 ["+" "-" "*" "/" "//" "%" "**"] @operator
