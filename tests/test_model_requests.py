@@ -390,13 +390,13 @@ def test_centroid_of_a_triangle_and_a_polygon():
     assert abs(v["plate.a.c.center"][1] - (-10 / 3)) < 1e-12     # not the box's center (0)
 
 
-def test_the_prompt_says_what_corner_pattern_keeps_and_that_shell_refuses_an_ellipse():
+def test_the_prompt_says_what_corner_pattern_keeps_and_how_an_ellipse_is_offset():
     from aidl_lang.llm.prompt import system_prompt
     text = system_prompt(examples=False)
     corner = next(ln for ln in text.splitlines() if ln.startswith("- CornerPattern("))
     assert "bottom-left" in corner and "Fixed stays put" in corner
     ellipse = next(ln for ln in text.splitlines() if ln.startswith("- Ellipse("))
-    assert "Offset, Shell, Hull and Fillet" in ellipse
+    assert "Offset or Shell of it: within 1e-4 mm" in ellipse      # issue 73: taken, bound said
     assert 'mirror="y"' in next(ln for ln in text.splitlines() if ln.startswith("- Polygon("))
     members = [ln for ln in text.splitlines() if ln.startswith("- ") and " | points:" in ln]
     assert "centroid" in next(ln for ln in members if "Triangle" in ln.split("|")[0])
