@@ -829,7 +829,7 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
 def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
-    it is (:func:`~.infer_text.stroke_text`), recognised shapes, ``Polygon``/``Polyline``
+    it is, at any turn (:func:`~.infer_text.stroke_texts`), recognised shapes, ``Polygon``/``Polyline``
     for runs of lines, else exact chains."""
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
@@ -840,10 +840,11 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                  if all(isinstance(g, Line) for g in o.segments)]
         found = stroke_texts([[(g.start, g.end) for g in o.segments] for o in lined]) \
             if len(lined) <= 2000 else []
-        for text, pos, size, whole in found:
+        for text, pos, size, deg, whole in found:
             k += 1
+            turn = f", rotation={_num(deg)} deg" if deg else ""
             w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
-                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
+                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\"{turn})")
             stats.patterns["stroke text"] += 1
             held.append(f"t{k}")
             skip |= {id(lined[i]) for i in whole}

@@ -2,13 +2,15 @@
 font (issue 71; docs/import.md, "Inferring the design"; used by :func:`~.infer._engraving`).
 
 In: line segments ``((x0, y0), (x1, y1))`` in mm (the engraving's polylines and polygons of
-lines, as AIDL writes a ``Text``).  Out: ``(text, position, size)`` for ``Text(text,
-position=, size=, anchor="start", valign="baseline")`` when the segments are exactly that
-text's strokes (:func:`~aidl_lang.geometry.text.text_strokes`, unturned), each within
-:data:`TOL`; else None.  Decoded glyph by glyph from the leftmost stroke: the first glyph
-fixes the scale and the pen's origin, each next one is the glyph whose strokes all lie at
-the pen (a space where none does), until every segment is used; the text found is then drawn
-again by :func:`~aidl_lang.geometry.text.text_strokes` and must give every segment back.
+lines, as AIDL writes a ``Text``).  Out: ``(text, position, size, rotation)`` for ``Text(text,
+position=, size=, anchor="start", valign="baseline", rotation=)`` when the segments are
+exactly that text's strokes (:func:`~aidl_lang.geometry.text.text_strokes`, at any turn),
+each within :data:`TOL`; else None.  Decoded glyph by glyph from the leftmost stroke: the
+first glyph fixes the scale, the turn and the pen's origin (unturned: from one segment's
+direction; turned: from two joined segments, whose angle and length ratio do not change
+under a turn), each next one is the glyph whose strokes all lie at the pen (a space where
+none does), until every segment is used; the text found is then drawn again by
+:func:`~aidl_lang.geometry.text.text_strokes` and must give every segment back.
 """
 from __future__ import annotations
 
@@ -63,13 +65,23 @@ def _glyph_segments() -> list:
     return out
 
 
-def _place(segs, k: float, ox: float, oy: float) -> list:
-    return [((ox + k * a[0], oy + k * a[1]), (ox + k * b[0], oy + k * b[1])) for a, b in segs]
+def _place(segs, h) -> list:
+    """Glyph segments in font units placed by the hypothesis ``h = (k, c, s, ox, oy)``:
+    scale ``k``, turn ``(cos, sin)``, the pen's origin ``(ox, oy)`` in mm."""
+    k, c, s, ox, oy = h
+    return [((ox + k * (a[0] * c - a[1] * s), oy + k * (a[0] * s + a[1] * c)),
+             (ox + k * (b[0] * c - b[1] * s), oy + k * (b[0] * s + b[1] * c))) for a, b in segs]
 
 
-def _match(ix: _Index, segs, k, ox, oy) -> list | None:
+def _at(h, pen: float):
+    """The hypothesis with its origin moved ``pen`` font units along the reading direction."""
+    k, c, s, ox, oy = h
+    return (k, c, s, ox + k * pen * c, oy + k * pen * s)
+
+
+def _match(ix: _Index, segs, h) -> list | None:
     taken: set = set()
-    for a, b in _place(segs, k, ox, oy):
+    for a, b in _place(segs, h):
         i = ix.find(a, b, taken)
         if i is None:
             return None
@@ -95,8 +107,8 @@ def _by_direction() -> dict:
 
 
 def _starts(s0, glyphs: list):
-    """Every ``(char, its segments, scale, origin x, origin y)`` by which a glyph's segment is
-    the segment ``s0`` (unturned: parallel, the same way or reversed)."""
+    """Every unturned hypothesis ``(char, its segments, (k, 1, 0, ox, oy))`` by which a
+    glyph's segment is the segment ``s0`` (parallel, the same way or reversed)."""
     v = (s0[1][0] - s0[0][0], s0[1][1] - s0[0][1])
     L = math.hypot(*v)
     if L <= 1e-12:
@@ -109,16 +121,75 @@ def _starts(s0, glyphs: list):
                 g = (q[0] - p[0], q[1] - p[1])
                 k = L / math.hypot(*g)
                 if k > 1e-9 and abs(v[0] - k * g[0]) <= TOL and abs(v[1] - k * g[1]) <= TOL:
-                    yield c, gs, k, s0[0][0] - k * p[0], s0[0][1] - k * p[1]
+                    yield c, gs, (k, 1.0, 0.0, s0[0][0] - k * p[0], s0[0][1] - k * p[1])
 
 
-def _decode(ix: _Index, glyphs: list, space: float, k: float, ox: float, oy: float):
-    """The text read from the pen at ``(ox, oy)`` on scale ``k``: glyph after glyph (a
-    space where none lies at the pen), and the segments it used."""
+PAIR_STEP = 1e-2    # the pair table's buckets: turn (radians) and log of the length ratio
+
+
+def _pair_key(a, b):
+    """``(turn from a to b, log(|b| / |a|))`` of two segments, each ``((x0, y0), (x1,
+    y1))``: unchanged by a turn, a shift and a scale; None for a segment of no length."""
+    u = (a[1][0] - a[0][0], a[1][1] - a[0][1])
+    v = (b[1][0] - b[0][0], b[1][1] - b[0][1])
+    la, lb = math.hypot(*u), math.hypot(*v)
+    if la <= 1e-12 or lb <= 1e-12:
+        return None
+    return (math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]),
+            math.log(lb / la))
+
+
+@lru_cache(maxsize=1)
+def _by_pair() -> dict:
+    """Every two segments of one glyph that meet end to start (either segment reversed
+    where that makes them meet: a stroke read either way, two strokes joined by the
+    reader), by :func:`_pair_key` in :data:`PAIR_STEP` buckets: ``{bucket: [(char, its
+    segments, a, b)]}``."""
+    out: dict = {}
+    for c, gs, adv in _glyph_segments():
+        ends = [s for g in gs for s in (g, (g[1], g[0]))]
+        for a in ends:
+            for b in ends:
+                if a[1] != b[0] or {a, (a[1], a[0])} == {b, (b[1], b[0])}:
+                    continue
+                key = _pair_key(a, b)
+                if key is not None:
+                    out.setdefault((round(key[0] / PAIR_STEP), round(key[1] / PAIR_STEP)),
+                                   []).append((c, gs, a, b))
+    return out
+
+
+def _turned_starts(s0, s1):
+    """Every turned hypothesis ``(char, its segments, (k, cos, sin, ox, oy))`` by which two
+    segments of a glyph that meet are ``s0`` then ``s1`` (``s0``'s end on ``s1``'s
+    start)."""
+    key = _pair_key(s0, s1)
+    if key is None:
+        return
+    t0, r0 = round(key[0] / PAIR_STEP), round(key[1] / PAIR_STEP)
+    table = _by_pair()
+    for dt in (-1, 0, 1):
+        for dr in (-1, 0, 1):
+            for c, gs, a, b in table.get((t0 + dt, r0 + dr), ()):
+                g = (a[1][0] - a[0][0], a[1][1] - a[0][1])
+                v = (s0[1][0] - s0[0][0], s0[1][1] - s0[0][1])
+                k = math.hypot(*v) / math.hypot(*g)
+                turn = math.atan2(v[1], v[0]) - math.atan2(g[1], g[0])
+                cs, sn = math.cos(turn), math.sin(turn)
+                h = (k, cs, sn, s0[0][0] - k * (a[0][0] * cs - a[0][1] * sn),
+                     s0[0][1] - k * (a[0][0] * sn + a[0][1] * cs))
+                (p, q), = _place([b], h)
+                if k > 1e-9 and math.dist(p, s1[0]) <= TOL and math.dist(q, s1[1]) <= TOL:
+                    yield c, gs, h
+
+
+def _decode(ix: _Index, glyphs: list, space: float, h):
+    """The text read from the pen at ``h``'s origin: glyph after glyph (a space where none
+    lies at the pen), and the segments it used."""
     text, pen, spaces, used = "", 0.0, 0, []
     while True:
         for c, gs, adv in glyphs:
-            got = _match(ix, gs, k, ox + k * pen, oy)
+            got = _match(ix, gs, _at(h, pen))
             if got is not None:
                 for i in got:
                     ix.used[i] = True
@@ -134,41 +205,69 @@ def _decode(ix: _Index, glyphs: list, space: float, k: float, ox: float, oy: flo
                 return text, used
 
 
-MAX_TRIES = 100     # texts read in all (a start whose glyph lies whole at it)
-MAX_LOOKS = 5000    # (start segment, glyph, scale) hypotheses looked at in all
+MAX_TRIES = 400     # reads that found no text, in all (a start whose glyph lies whole at it)
+MAX_LOOKS = 5000    # (start segment, glyph, scale) hypotheses looked at, in all ...
+LOOKS_PER_TEXT = 500    # ... and this many more for each text found
+STARTS = 2          # segments of each polyline a read starts on (its first ones)
 
 
-def _left(ix: _Index, glyphs: list, space: float, k: float, ox: float, oy: float):
-    """The glyphs before the pen at ``ox`` (a text's start found inside it): ``(the new
-    origin x, their text, the segments they used)``."""
+def _left(ix: _Index, glyphs: list, space: float, h):
+    """The glyphs before the pen at ``h``'s origin (a text's start found inside it): ``(the
+    new hypothesis, their text, the segments they used)``."""
     text, used = "", []
     while True:
         for n in range(MAX_SPACES + 1):
             hit = None
             for c, gs, adv in glyphs:
-                x = ox - k * (adv + n * space)
-                got = _match(ix, gs, k, x, oy)
+                x = _at(h, -(adv + n * space))
+                got = _match(ix, gs, x)
                 if got is not None:
                     hit = (c, x, got)
                     break
             if hit is not None:
                 break
         if hit is None:
-            return ox, text, used
-        c, ox, got = hit
+            return h, text, used
+        c, h, got = hit
         for i in got:
             ix.used[i] = True
         used += got
         text = c + " " * n + text
 
 
+def _hypotheses(segs: list, owner: list, j0: int, glyphs: list):
+    """The hypotheses started on segment ``j0``: unturned first, then turned ones from it
+    and the next segment of its polyline where they meet."""
+    yield from _starts(segs[j0], glyphs)
+    if j0 + 1 < len(segs) and owner[j0 + 1] == owner[j0] and \
+            math.dist(segs[j0][1], segs[j0 + 1][0]) <= TOL:
+        for c, gs, h in _turned_starts(segs[j0], segs[j0 + 1]):
+            if abs(h[2]) > 1e-12 or h[1] < 0:
+                yield c, gs, h
+
+
+def _text_ok(text: str, glyphs: list, upright: bool) -> bool:
+    """A reading is a text: two or more letters or digits with a glyph of three or more
+    segments among them; or, ``upright`` (unturned), one digit of two or more segments or
+    one letter of three or more alone (a dial's or a ruler's numbers; a turned glyph alone
+    is a letter of text along a curve, kept as strokes)."""
+    n = {ch: len(gs) for ch, gs, _ in glyphs}
+    if text.startswith(" "):
+        return False
+    if len(text) == 1:
+        return upright and n.get(text, 0) >= (2 if text.isdigit() else 3) and text.isalnum()
+    return sum(ch.isalnum() for ch in text) >= 2 and any(n.get(ch, 0) >= 3 for ch in text)
+
+
 def stroke_texts(polys: list) -> list:
-    """The lines of unturned built-in-font text among ``polys`` (each a list of segments
-    ``((x0, y0), (x1, y1))`` in mm: a polyline or polygon of the engraving): ``[(text,
-    (x, y), size, {indices of the polys it is})]``, each text two or more glyphs made of
-    whole polys and drawn again by ``Text`` to :data:`TOL`.  What is no text (a tick, a
-    shape) is left.  At most :data:`MAX_TRIES` reads and :data:`MAX_LOOKS` hypotheses in
-    all, started on strokes of several segments only (a text of one-line glyphs alone,
+    """The lines of built-in-font text among ``polys`` (each a list of segments ``((x0,
+    y0), (x1, y1))`` in mm: a polyline or polygon of the engraving), at any turn: ``[(text,
+    (x, y), size, rotation in degrees, {indices of the polys it is})]``, each text made of
+    whole polys and drawn again by ``Text`` to :data:`TOL` (:func:`_text_ok` says which
+    readings count).  What is no text (a tick, a shape) is left.  At most
+    :data:`MAX_TRIES` reads that find nothing and :data:`MAX_LOOKS` hypotheses (plus
+    :data:`LOOKS_PER_TEXT` per text found) in all, started on the first :data:`STARTS`
+    segments of strokes of several segments only (a text of one-line glyphs alone,
     ``HI``, stays strokes)."""
     segs = [s for p in polys for s in p]
     if not 2 <= len(segs) <= MAX_SEGMENTS:
@@ -182,40 +281,42 @@ def stroke_texts(polys: list) -> list:
     ix = _Index(segs, max(1e-3, 64 * TOL))
     out: list = []
     tries = looks = 0
+    dead: set = set()       # segments of a glyph whose read found no text: no more starts
     while ix.used.count(False) >= 2 and tries < MAX_TRIES:
-        # starts on strokes of several segments (a glyph's; a tick is one line): a text is
-        # read from any of its glyphs, both ways
-        order = sorted((j for j in range(len(segs)) if not ix.used[j] and
-                        len(members[owner[j]]) > 1),
+        # starts on the first segments of strokes of several segments (a glyph's; a tick
+        # is one line): a text is read from any of its glyphs, both ways
+        order = sorted((j for j in range(len(segs)) if not ix.used[j] and j not in dead and
+                        len(members[owner[j]]) > 1 and j - members[owner[j]][0] < STARTS),
                        key=lambda j: (min(segs[j][0][0], segs[j][1][0]), j))
         found = None
         for j0 in order:
             seen: set = set()
-            for c, gs, k, ox, oy in _starts(segs[j0], glyphs):
-                key = (round(k, 9), round(ox, 6), round(oy, 6))
+            for c, gs, h in _hypotheses(segs, owner, j0, glyphs):
+                key = tuple(round(v, 9) for v in h[:3]) + (round(h[3], 6), round(h[4], 6))
                 if key in seen:
-                    continue
-                seen.add(key)
+                    continue            # read from this placement already
                 looks += 1
-                if looks > MAX_LOOKS:
+                if looks > MAX_LOOKS + LOOKS_PER_TEXT * len(out):
                     tries = MAX_TRIES + 1
                     break
-                if _match(ix, gs, k, ox, oy) is None:
+                first = _match(ix, gs, h)
+                if first is None:
                     continue            # the glyph the start is of is not whole here
-                tries += 1
-                if tries > MAX_TRIES:
-                    break
-                x0, pre, before = _left(ix, glyphs, space, k, ox, oy)
-                text, used = _decode(ix, glyphs, space, k, ox, oy)
-                text, used, ox = pre + text, before + used, x0
+                seen.add(key)
+                h0, pre, before = _left(ix, glyphs, space, h)
+                text, used = _decode(ix, glyphs, space, h)
+                text, used = pre + text, before + used
                 whole = {owner[j] for j in used}
-                good = sum(ch.isalnum() for ch in text) >= 2 and not text.startswith(" ") \
-                    and j0 in used and sum(len(members[i]) for i in whole) == len(used) \
-                    and any(len(gs) >= 3 for ch, gs, _ in glyphs if ch in text)
-                got = _check(text, k, ox, oy, [segs[j] for j in used]) if good else None
+                good = _text_ok(text, glyphs, h[2] == 0.0 and h[1] > 0) and j0 in used and \
+                    sum(len(members[i]) for i in whole) == len(used)
+                got = _check(text, h0, [segs[j] for j in used]) if good else None
                 if got is None:
                     for j in used:
                         ix.used[j] = False
+                    dead.update(first)
+                    tries += 1
+                    if tries > MAX_TRIES:
+                        break
                     continue
                 found = (_words(got[0]),) + got[1:] + (whole,)
                 break
@@ -236,15 +337,27 @@ def _words(text: str) -> str:
     return "".join(out)
 
 
-def _check(text: str, k: float, ox: float, oy: float, segs: list):
-    """The text drawn again as ``Text`` draws it: ``(text, position, size)`` when it gives
-    every segment back, else None."""
+def _turn(c: float, s: float) -> float:
+    """The turn of ``(cos, sin)`` in degrees, in (-180, 180], a whole millionth of a degree
+    when it is one within 1e-9 degrees (as a program writes it)."""
+    deg = math.degrees(math.atan2(s, c))
+    near = round(deg, 6)
+    deg = near if abs(near - deg) <= 1e-9 else deg
+    return 180.0 if deg == -180.0 else deg + 0.0
+
+
+def _check(text: str, h, segs: list):
+    """The text drawn again as ``Text`` draws it: ``(text, position, size, rotation in
+    degrees)`` when it gives every segment back, else None."""
+    k, c, s, ox, oy = h
     raw = _raw(text)
-    lo = min(p[0] for s in raw for p in s)
+    lo = min(p[0] for s_ in raw for p in s_)
     size = k * _cap_height()
-    pos = (ox + k * lo, oy + k * _baseline())
+    deg = _turn(c, s)
+    rot = math.radians(deg)
+    (pos, _), = _place([((lo, _baseline()), (lo, _baseline()))], h)
     again = [((pos[0] + a[0], pos[1] + a[1]), (pos[0] + b[0], pos[1] + b[1]))
-             for a, b in text_strokes(text, size, "start", "baseline")]
+             for a, b in text_strokes(text, size, "start", "baseline", rot)]
     if len(again) != len(segs):
         return None
     ix = _Index(segs, max(1e-3, 64 * TOL))
@@ -253,4 +366,4 @@ def _check(text: str, k: float, ox: float, oy: float, segs: list):
         if i is None:
             return None
         ix.used[i] = True
-    return text, pos, size
+    return text, pos, size, deg
