@@ -80,9 +80,13 @@ def _at(h, pen: float):
 
 
 def _match(ix: _Index, segs, h) -> list | None:
+    """The drawing's segments that are the glyph ``segs`` placed by ``h``, or None (placed
+    one at a time: most tries fail at the first)."""
     taken: set = set()
-    for a, b in _place(segs, h):
-        i = ix.find(a, b, taken)
+    k, c, s, ox, oy = h
+    for a, b in segs:
+        i = ix.find((ox + k * (a[0] * c - a[1] * s), oy + k * (a[0] * s + a[1] * c)),
+                    (ox + k * (b[0] * c - b[1] * s), oy + k * (b[0] * s + b[1] * c)), taken)
         if i is None:
             return None
         taken.add(i)
@@ -246,16 +250,17 @@ def _hypotheses(segs: list, owner: list, j0: int, glyphs: list):
                 yield c, gs, h
 
 
-def _text_ok(text: str, glyphs: list, upright: bool) -> bool:
+def _text_ok(text: str, glyphs: list, single: bool) -> bool:
     """A reading is a text: two or more letters or digits with a glyph of three or more
-    segments among them; or, ``upright`` (unturned), one digit of two or more segments or
-    one letter of three or more alone (a dial's or a ruler's numbers; a turned glyph alone
-    is a letter of text along a curve, kept as strokes)."""
+    segments among them; or, when ``single`` (upright, and no longer text is left to
+    read: an ``n`` of a text upside down is a ``u``), one digit of two or more segments
+    alone (a dial's or a ruler's numbers; a turned glyph alone is a letter of text along a
+    curve, kept as strokes)."""
     n = {ch: len(gs) for ch, gs, _ in glyphs}
     if text.startswith(" "):
         return False
     if len(text) == 1:
-        return upright and n.get(text, 0) >= (2 if text.isdigit() else 3) and text.isalnum()
+        return single and text.isdigit() and n.get(text, 0) >= 2
     return sum(ch.isalnum() for ch in text) >= 2 and any(n.get(ch, 0) >= 3 for ch in text)
 
 
@@ -282,10 +287,13 @@ def stroke_texts(polys: list) -> list:
     out: list = []
     tries = looks = 0
     dead: set = set()       # segments of a glyph whose read found no text: no more starts
-    while ix.used.count(False) >= 2 and tries < MAX_TRIES:
+    singles = False         # texts of one glyph: once no longer one is found ...
+    later: set = set()      # ... read from these starts only (where one was seen)
+    while ix.used.count(False) >= 1 and tries < MAX_TRIES:
         # starts on the first segments of strokes of several segments (a glyph's; a tick
         # is one line): a text is read from any of its glyphs, both ways
-        order = sorted((j for j in range(len(segs)) if not ix.used[j] and j not in dead and
+        order = sorted((j for j in (later if singles else range(len(segs)))
+                        if not ix.used[j] and j not in dead and
                         len(members[owner[j]]) > 1 and j - members[owner[j]][0] < STARTS),
                        key=lambda j: (min(segs[j][0][0], segs[j][1][0]), j))
         found = None
@@ -307,12 +315,16 @@ def stroke_texts(polys: list) -> list:
                 text, used = _decode(ix, glyphs, space, h)
                 text, used = pre + text, before + used
                 whole = {owner[j] for j in used}
-                good = _text_ok(text, glyphs, h[2] == 0.0 and h[1] > 0) and j0 in used and \
+                good = _text_ok(text, glyphs, singles and h[2] == 0.0 and h[1] > 0) and \
+                    j0 in used and \
                     sum(len(members[i]) for i in whole) == len(used)
                 got = _check(text, h0, [segs[j] for j in used]) if good else None
                 if got is None:
                     for j in used:
                         ix.used[j] = False
+                    if not singles and h[2] == 0.0 and h[1] > 0 and \
+                            _text_ok(text, glyphs, True):
+                        later.add(j0)
                     dead.update(first)
                     tries += 1
                     if tries > MAX_TRIES:
@@ -323,7 +335,10 @@ def stroke_texts(polys: list) -> list:
             if found is not None or tries > MAX_TRIES:
                 break
         if found is None:
-            break
+            if singles or tries > MAX_TRIES:
+                break
+            singles, dead = True, set()
+            continue
         out.append(found)
     return out
 
