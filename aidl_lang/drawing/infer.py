@@ -51,6 +51,7 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
 from .infer_text import stroke_texts
+from .infer_mirror import mirrored_pair, write_pair
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
 from .model import Drawing, Note
@@ -1061,6 +1062,12 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             w.emit(depth, "}")
             stats.patterns["row of parts"] += 1
             continue
+        elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
+            word = _named_parts([("solid", "part", pair[0])])[0][1]
+            write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, ""))
+            stats.patterns["mirrored part"] += 1
+            name = name if name != word else word + "s"
         else:
             _solid(w, params, stats, depth, name, d, short[name] + "_" if solids > 1 else "")
         names.append(name)
