@@ -79,7 +79,7 @@ def _round_trip(tmp_path, src: str | None, name: str, path=None, first_result=No
     return text, first, again, second
 
 
-def _texts(res) -> collections.Counter:
+def _texts(res) -> tuple:
     """The strings of a compiled program's ``Text`` shapes, those laid along a curve apart:
     ``(straight, along)``."""
     out = (collections.Counter(), collections.Counter())
@@ -404,16 +404,16 @@ def test_every_example_round_trips_exactly(example, tmp_path):
     """What is recognised is exact and what is not stays an exact chain: every example
     rendered to DXF, inferred and rendered again gives the same curves to 1e-7 mm (issue
     71), held where the file put it (no degree of freedom left) with no warning; every
-    straight text of the example (turned or not, a ruler's single digits too) is a ``Text``
-    of the same string again (was: 11 of the 44 in the examples; text laid along a circle,
-    the protractor's numbers, stays exact strokes)."""
+    text of the example (turned or not, a ruler's single digits, the protractor's numbers
+    laid along its arcs) is a ``Text`` of the same string again, straight or along a
+    circle as it was (was: 11 of the 83 texts of the examples)."""
     first_res: list = []
     text, first, again, second = _round_trip(tmp_path, None, example.stem, path=example,
                                              first_result=first_res)
     left, extra = _same(first, second, 1e-7)
     assert not left and not extra, (left[:3], extra[:3])
-    (want, along), (got, _) = _texts(first_res[0]), _texts(again)
-    assert got == want, (want - got, got - want)
+    (want, along), (got, got_along) = _texts(first_res[0]), _texts(again)
+    assert got == want and got_along == along, (want - got, got - want, along - got_along)
     warned = [d for d in again.diagnostics if d.severity == "warning"]
     assert not warned, [str(d) for d in warned][:2]
     assert again.freedom()["dof"] == 0, again.freedom()["text"]

@@ -50,7 +50,7 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
                              _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .infer_text import stroke_texts
+from .infer_text import along_texts, stroke_texts
 from .infer_mirror import mirrored_pair, write_pair
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
@@ -848,6 +848,21 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                           f"size={_num(size)}, anchor=\"start\", valign=\"baseline\"{turn})")
             stats.patterns["stroke text"] += 1
             held.append(f"t{k}")
+            skip |= {id(lined[i]) for i in whole}
+        rings: dict = {}
+        for text, (c, r), deg, size, whole in along_texts(
+                [[(g.start, g.end) for g in o.segments] for o in lined],
+                {i for *_, wh in found for i in wh}) if len(lined) <= 2000 else []:
+            key = (round(c[0], 6), round(c[1], 6), round(r, 6))
+            if key not in rings:
+                rings[key] = f"ring{len(rings) + 1}"
+                w.emit(depth, f"{rings[key]} = Circle(center={_pt(c)}, radius={_num(r)}, "
+                              f"construction=true)")
+                held.append(rings[key])
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, along={rings[key]}, angle={_num(deg)} "
+                          f"deg, size={_num(size)})")
+            stats.patterns["stroke text"] += 1
             skip |= {id(lined[i]) for i in whole}
         for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
                 [[c] for c in dd.circles]:

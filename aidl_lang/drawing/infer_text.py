@@ -382,3 +382,182 @@ def _check(text: str, h, segs: list):
             return None
         ix.used[i] = True
     return text, pos, size, deg
+
+
+MAX_ALONG = 400     # glyphs alone looked at for text laid along a circle
+
+
+def along_texts(polys: list, taken: set) -> list:
+    """Text laid along a circle (``Text(text, along=c, angle=a, size=)``, its middle at
+    ``a``, each letter upright on the circle, reading clockwise) among the ``polys`` not in
+    ``taken`` (indices of polys already read as text): ``[(text, (centre, radius), angle in
+    degrees, size, {indices of the polys it is})]``.  Each letter is found alone, turned
+    (:func:`_turned_starts`); two or more on one circle (the lines through each letter's
+    baseline middle square to it meet at one centre) whose middles are the font's advances
+    apart along it are one text, drawn again by
+    :func:`~aidl_lang.geometry.text.text_strokes_along` and checked to :data:`TOL`."""
+    from ..geometry.text import text_strokes_along
+    idx = [i for i, p in enumerate(polys) if i not in taken]
+    segs = [s for i in idx for s in polys[i]]
+    owner = [i for i in idx for _ in polys[i]]
+    if len(segs) < 4 or len(segs) > MAX_SEGMENTS:
+        return []
+    members: dict = {}
+    for j, i in enumerate(owner):
+        members.setdefault(i, []).append(j)
+    glyphs = _glyph_segments()
+    adv = {c: a for c, _, a in glyphs}
+    ix = _Index(segs, max(1e-3, 64 * TOL))
+    base = _baseline()
+    cands = []      # per letter: its readings (a round glyph reads turned half a turn too)
+    for i in idx:
+        if len(cands) >= MAX_ALONG:
+            break
+        js = members[i]
+        if len(js) < 2 or ix.used[js[0]]:
+            continue
+        best: list = []
+        for c, gs, h in _turned_starts(segs[js[0]], segs[js[1]]):
+            got = _match(ix, gs, h)
+            if got is None or (best and len(gs) < len(best[0][1])):
+                continue
+            whole = {owner[j] for j in got}
+            if sum(len(members[p]) for p in whole) == len(got):
+                best = [b for b in best if len(b[1]) == len(gs)] + [(c, gs, h, got, whole)]
+        if not best:
+            continue
+        for j in best[0][3]:
+            ix.used[j] = True
+        one = []
+        for c, gs, h, got, whole in best:
+            k, cs, sn, ox, oy = h
+            m = _place([((adv[c] / 2, base), (adv[c] / 2, base))], h)[0][0]
+            one.append((c, k, math.atan2(sn, cs), m, whole))
+        cands.append(one)
+    out: list = []
+    left = list(range(len(cands)))
+    while len(left) >= 2:
+        ring = None
+        for a in cands[left[0]]:
+            for b_i in left[1:]:
+                for b in cands[b_i]:
+                    ring = _ring(a, b)
+                    if ring is not None:
+                        break
+                if ring is not None:
+                    break
+            if ring is not None:
+                break
+        if ring is None:
+            left.pop(0)
+            continue
+        (cx, cy), r, k = ring
+        on, lts = [], []
+        for i in left:
+            hit = next((lt for lt in cands[i] if abs(lt[1] - k) <= 1e-9 * max(1.0, k) and
+                        abs(math.dist(lt[3], (cx, cy)) - r) <= 10 * TOL and
+                        abs(math.remainder(math.atan2(lt[3][1] - cy, lt[3][0] - cx) -
+                                           lt[2] - math.pi / 2, 2 * math.pi)) <= 1e-7), None)
+            if hit is not None:
+                on.append(i)
+                lts.append(hit)
+        if not on:
+            left.pop(0)
+            continue
+        left = [i for i in left if i not in on]
+        # clockwise: the reading order along the circle
+        ang = [math.atan2(lt[3][1] - cy, lt[3][0] - cx) for lt in lts]
+        order = sorted(range(len(lts)), key=lambda n: -ang[n])
+        gaps = [(ang[order[n - 1]] - ang[order[n]]) % (2 * math.pi) for n in range(len(order))]
+        cut = max(range(len(order)), key=lambda n: gaps[n])   # start after the widest gap
+        order = order[cut:] + order[:cut]
+        out += _along_words([lts[n] for n in order], (cx, cy), r,
+                            {n: ang[o] for n, o in enumerate(order)}, list(range(len(order))),
+                            text_strokes_along, polys)
+    return out
+
+
+def _tidy(v: float, most: int = 9) -> float:
+    """``v`` as the number of fewest decimals (at most ``most``) within 1e-9 of it."""
+    for digits in range(most + 1):
+        r = round(v, digits)
+        if abs(r - v) <= 1e-9:
+            return r + 0.0
+    return v
+
+
+def _ring(a, b):
+    """The circle two letters stand upright on: ``(centre, radius, scale)`` where the lines
+    up through their baseline middles meet below both, or None."""
+    if abs(a[1] - b[1]) > 1e-9 * max(1.0, a[1]):
+        return None
+    ua = (-math.sin(a[2]), math.cos(a[2]))
+    ub = (-math.sin(b[2]), math.cos(b[2]))
+    den = ua[0] * ub[1] - ua[1] * ub[0]
+    if abs(den) < 1e-9:
+        return None
+    d = (b[3][0] - a[3][0], b[3][1] - a[3][1])
+    t = (d[0] * ub[1] - d[1] * ub[0]) / den
+    u = (d[0] * ua[1] - d[1] * ua[0]) / den
+    if t >= 0 or u >= 0 or abs(t - u) > 1e-6 * abs(t):
+        return None             # the centre above a letter, or not as far from both
+    return (a[3][0] + t * ua[0], a[3][1] + t * ua[1]), -t, a[1]
+
+
+def _along_words(lts: list, centre, r: float, ang: dict, ids: list, strokes_along,
+                 polys: list) -> list:
+    """The letters of one circle, in reading order, cut into texts where the next letter is
+    not the font's advance on (a space at most), each checked again whole."""
+    glyph_adv = {c: a for c, _, a in _glyph_segments()}
+    space = _glyphs().get(" ", ((), 0.0))[1]
+    words, cur = [], []
+    for n, lt in enumerate(lts):
+        if cur:
+            prev = cur[-1]
+            k = lt[1]
+            step = (ang[ids[n - 1]] - ang[ids[n]]) % (2 * math.pi) * r / k   # font units
+            want = (glyph_adv[prev[0]] + glyph_adv[lt[0]]) / 2
+            if abs(step - want) <= 1e-6 * max(1.0, want):
+                cur.append(lt)
+                continue
+            if abs(step - want - space) <= 1e-6 * max(1.0, want):
+                cur.append((" ",) + lt[1:])
+                cur.append(lt)
+                continue
+            words.append(cur)
+            cur = []
+        cur.append(lt)
+    if cur:
+        words.append(cur)
+    out = []
+    for w in words:
+        real = [lt for lt in w if lt[0] != " "]
+        text = "".join(lt[0] for lt in w)
+        if len(real) < 2 and not (len(real) == 1 and text.isdigit()):
+            continue
+        k = real[0][1]
+        size = k * _cap_height()
+        raw = _raw(text)
+        xs = [p[0] for s in raw for p in s]
+        centre, r = (_tidy(centre[0]), _tidy(centre[1])), _tidy(r)
+        t0 = math.atan2(real[0][3][1] - centre[1], real[0][3][0] - centre[0])
+        angle = t0 + (glyph_adv[real[0][0]] / 2 - (min(xs) + max(xs)) / 2) * k / r
+        deg = _tidy(math.degrees(angle), 6)
+        deg = 180.0 if deg == -180.0 else deg
+        whole = set().union(*(lt[4] for lt in real))
+        mine = [s for i in whole for s in polys[i]]
+        again = [((centre[0] + a[0], centre[1] + a[1]), (centre[0] + b[0], centre[1] + b[1]))
+                 for a, b in strokes_along(text, size, r, math.radians(deg))]
+        if len(again) != len(mine):
+            continue
+        ix = _Index(mine, max(1e-3, 64 * TOL))
+        ok = True
+        for a, b in again:
+            i = ix.find(a, b, set())
+            if i is None:
+                ok = False
+                break
+            ix.used[i] = True
+        if ok:
+            out.append((_words(text), (centre, r), deg, size, whole))
+    return out
