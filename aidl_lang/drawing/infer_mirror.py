@@ -18,6 +18,7 @@ from .model import Drawing
 
 TOL = 1e-7              # mm: a mirrored piece against the other part's
 MAX_PIECES = 4000       # pieces of a part compared (one for one, by their rounded keys)
+MAX_LOOPS = 400         # loops of a solid looked at for two parts (found by containment)
 
 
 def _box(d: Drawing):
@@ -78,7 +79,7 @@ def mirrored_pair(d: Drawing, deadline=None):
     mirror image about a vertical or horizontal line (the module's docstring), else None.
     The first part is the one to the left (below)."""
     if d.paths or d.texts or d.ellipses or d.engrave is not None or \
-            len(d.outlines) + len(d.circles) < 2:
+            not 2 <= len(d.outlines) + len(d.circles) <= MAX_LOOPS:
         return None
     from .program import _split_parts
     parts, loose = _split_parts(d, deadline)

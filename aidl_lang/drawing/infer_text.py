@@ -11,6 +11,8 @@ direction; turned: from two joined segments, whose angle and length ratio do not
 under a turn), each next one is the glyph whose strokes all lie at the pen (a space where
 none does), until every segment is used; the text found is then drawn again by
 :func:`~aidl_lang.geometry.text.text_strokes` and must give every segment back.
+:func:`along_texts`: what is left, read as text laid along a circle (each letter upright on
+it), ``Text(text, along=, angle=, size=)``.
 """
 from __future__ import annotations
 
