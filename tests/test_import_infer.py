@@ -473,7 +473,8 @@ def test_a_part_and_its_mirror_image_are_one_part_and_mirrored(tmp_path):
     """A pair of L-brackets, one drawn and the other its mirror image about x = 0 (issue 71:
     both stayed raw polygons, one solid falling apart, W0504): the first bracket is one solid,
     the other `Mirrored(...)` of it about a held line, in an assembly; exact to 1e-7 mm, no
-    warning, nothing free; a new hole size changes the four holes, mirrored."""
+    warning, nothing free; a new hole size changes the four holes, mirrored; with `--parts`
+    the same, two parts to nest."""
     from maker_drawings import brackets
     (tmp_path / "b.dxf").write_bytes(brackets())
     text, _ = import_drawing(brackets(), "b.dxf", infer=True)
@@ -494,4 +495,12 @@ def test_a_part_and_its_mirror_image_are_one_part_and_mirrored(tmp_path):
     (tmp_path / "e.dxf").write_text(res.to_dxf())
     (tmp_path / "want.dxf").write_bytes(brackets(hole=5.0))
     left, extra = _same(tmp_path / "want.dxf", tmp_path / "e.dxf", 1e-7)
+    assert not left and not extra, (left[:3], extra[:3])
+    # as a sheet of parts (--parts): the same pair, two parts to nest
+    sheet, _ = import_drawing(brackets(), "b.dxf", infer=True, parts=True)
+    assert "plate_mirror = Mirrored(plate, about=axis)" in sheet, sheet
+    res = aidl_lang.compile(sheet, path=tmp_path / "s.aidl")
+    assert res.ok and len(res.parts) == 2, [str(d) for d in res.errors]
+    (tmp_path / "s.dxf").write_text(res.to_dxf())
+    left, extra = _same(tmp_path / "b.dxf", tmp_path / "s.dxf", 1e-7)
     assert not left and not extra, (left[:3], extra[:3])

@@ -51,7 +51,7 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
 from .infer_text import along_texts, stroke_texts
-from .infer_mirror import mirrored_pair, write_pair
+from .infer_mirror import mirrored_pair, pair_items, write_pair
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
 from .model import Drawing, Note
@@ -1049,7 +1049,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     layers, moved = _hole_layers(layers)
     items = _layer_items(layers, parts, deadline, source, w.notes)
     items = _copies(items, deadline)
-    items = _named_parts(items)
+    items = _named_parts(pair_items(items, deadline) if parts else items)
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0

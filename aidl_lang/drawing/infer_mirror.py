@@ -139,3 +139,30 @@ def write_pair(w, depth: int, name: str, first: Drawing, axis: tuple, box: tuple
     w.emit(depth + 1, "Fixed(axis)")
     w.emit(depth + 1, f"{inner}_mirror = Mirrored({inner}, about=axis)")
     w.emit(depth, "}")
+
+
+def pair_items(items: list, deadline=None) -> list:
+    """``items`` (``(kind, name, drawing, ...)``, as :func:`~.infer.to_program_inferred`
+    has them) with two solids in a row that are a part and its mirror image (a sheet of
+    parts, ``--parts``) made one solid of both, which is then written as the part and
+    ``Mirrored`` of it."""
+    import os
+    out, i = [], 0
+    while i < len(items):
+        a = items[i]
+        if i + 1 < len(items) and len(a) == 3 and len(items[i + 1]) == 3 and \
+                a[0] == items[i + 1][0] == "solid":
+            b = items[i + 1]
+            both = Drawing(outlines=list(a[2].outlines) + list(b[2].outlines),
+                           circles=list(a[2].circles) + list(b[2].circles), unit=a[2].unit,
+                           paths_cut=a[2].paths_cut)
+            if not (a[2].paths or b[2].paths or a[2].texts or b[2].texts or a[2].ellipses or
+                    b[2].ellipses or a[2].engrave is not None or b[2].engrave is not None) \
+                    and mirrored_pair(both, deadline) is not None:
+                name = os.path.commonprefix([a[1], b[1]]).rstrip("_0123456789")
+                out.append(("solid", name if len(name) >= 2 and name != "l" else "part", both))
+                i += 2
+                continue
+        out.append(a)
+        i += 1
+    return out
