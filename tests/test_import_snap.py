@@ -123,16 +123,18 @@ def test_snapped_curves_lie_within_the_tolerance_of_the_files_beziers(snapped):
     assert 1e-4 < worst <= 0.01, worst
 
 
-def test_without_snap_the_beziers_stay_exact_and_a_bad_tolerance_is_refused(tmp_path):
+def test_without_snap_the_beziers_stay_exact_and_a_bad_tolerance_is_refused(tmp_path, capsys):
     """No `--snap`: no Bézier is a circle (exact curves only, as before); `--snap 0` and
-    `--snap 1ft` are refused with what to write."""
+    `--snap 1ft` are refused with what to write (the CLI's own parser, in process)."""
+    from aidl_lang.cli.main import main
     from aidl_lang.drawing.infer import import_drawing
     text, _ = import_drawing(_svg().encode(), "plate.svg", infer=True)
     assert "Circle(" not in text and "# snapped" not in text
     (tmp_path / "p.svg").write_text(_svg())
-    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "import", "--snap", "1ft",
-                        "p.svg"], cwd=tmp_path, capture_output=True, text=True, timeout=120)
-    assert r.returncode == 2 and "`1ft` is no length: write it as 0.01mm" in r.stderr, r.stderr
+    with pytest.raises(SystemExit) as ex:
+        main(["import", "--snap", "1ft", str(tmp_path / "p.svg")])
+    assert ex.value.code == 2
+    assert "`1ft` is no length: write it as 0.01mm" in capsys.readouterr().err
     from aidl_lang.cli.arguments import _snap_tolerance
     with pytest.raises(argparse.ArgumentTypeError, match="more than 0 and at most 10 mm"):
         _snap_tolerance("0")
