@@ -281,6 +281,11 @@ def _import_arguments(im) -> None:
     im.add_argument("--infer", action="store_true",
                     help="write the design, not the pieces: recognised shapes (Slot, "
                          "RoundedRectangle, ...), loops for patterns, named params")
+    im.add_argument("--snap", type=_snap_tolerance, default=None, metavar="TOL",
+                    help="take cubic Bezier curves that are circles or arcs within TOL (e.g. "
+                         "0.01mm, 0.001in; a bare number is mm) as true circles and arcs, "
+                         "near-equal radii as one; the program's header says what was snapped "
+                         "and the largest deviation (off by default: exact curves only)")
     im.add_argument("--close-tolerance", type=float, default=None, metavar="MM",
                     help="close chains whose ends meet within MM (default 0.05; 0: only "
                          "ends that meet)")
@@ -295,6 +300,23 @@ def _import_arguments(im) -> None:
                          "left out)")
     _budget_arg(im)
     _memory_arg(im)
+
+
+def _snap_tolerance(text: str) -> float:
+    """``--snap``'s tolerance in mm: a number with an optional unit (mm, cm, in)."""
+    import argparse
+    import re
+    from ..drawing.snap import MAX_SNAP
+    m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|cm|in)?\s*", text)
+    if not m:
+        raise argparse.ArgumentTypeError(f"`{text}` is no length: write it as 0.01mm, "
+                                         f"0.001in or 0.01 (mm)")
+    v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "in": 25.4}[m.group(2) or "mm"]
+    if not 0 < v <= MAX_SNAP:
+        raise argparse.ArgumentTypeError(f"`{text}` is {v:g} mm: the tolerance must be more "
+                                         f"than 0 and at most {MAX_SNAP:g} mm (0.01mm suits "
+                                         f"Boxes.py's 3-decimal Béziers)")
+    return v
 
 
 def _studio_arguments(so) -> None:

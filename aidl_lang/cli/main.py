@@ -629,7 +629,8 @@ def cmd_import(args) -> int:
                                      parts=args.parts, close_tolerance=args.close_tolerance,
                                      cut=sel(args.cut), engrave=sel(args.engrave),
                                      ignore=sel(args.ignore), roles=args.roles,
-                                     budget=_budget(args), infer=args.infer)
+                                     budget=_budget(args), infer=args.infer,
+                                     snap=args.snap)
     except (OSError, FileRefused) as ex:
         print(f"{src}: error[E0130]: cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}",
               file=sys.stderr)

@@ -50,7 +50,8 @@ from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_ch
                              _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .infer_text import stroke_texts
+from .infer_text import along_texts, stroke_texts
+from .infer_mirror import mirrored_pair, pair_items, write_pair
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
                       _length, _num, _pt, _string)
 from .model import Drawing, Note
@@ -829,7 +830,7 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
 def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
-    it is (:func:`~.infer_text.stroke_text`), recognised shapes, ``Polygon``/``Polyline``
+    it is, at any turn (:func:`~.infer_text.stroke_texts`), recognised shapes, ``Polygon``/``Polyline``
     for runs of lines, else exact chains."""
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
@@ -840,12 +841,28 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                  if all(isinstance(g, Line) for g in o.segments)]
         found = stroke_texts([[(g.start, g.end) for g in o.segments] for o in lined]) \
             if len(lined) <= 2000 else []
-        for text, pos, size, whole in found:
+        for text, pos, size, deg, whole in found:
             k += 1
+            turn = f", rotation={_num(deg)} deg" if deg else ""
             w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
-                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\")")
+                          f"size={_num(size)}, anchor=\"start\", valign=\"baseline\"{turn})")
             stats.patterns["stroke text"] += 1
             held.append(f"t{k}")
+            skip |= {id(lined[i]) for i in whole}
+        rings: dict = {}
+        for text, (c, r), deg, size, whole in along_texts(
+                [[(g.start, g.end) for g in o.segments] for o in lined],
+                {i for *_, wh in found for i in wh}) if len(lined) <= 2000 else []:
+            key = (round(c[0], 6), round(c[1], 6), round(r, 6))
+            if key not in rings:
+                rings[key] = f"ring{len(rings) + 1}"
+                w.emit(depth, f"{rings[key]} = Circle(center={_pt(c)}, radius={_num(r)}, "
+                              f"construction=true)")
+                held.append(rings[key])
+            k += 1
+            w.emit(depth, f"t{k} = Text({_string(text)}, along={rings[key]}, angle={_num(deg)} "
+                          f"deg, size={_num(size)})")
+            stats.patterns["stroke text"] += 1
             skip |= {id(lined[i]) for i in whole}
         for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
                 [[c] for c in dd.circles]:
@@ -1032,7 +1049,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     layers, moved = _hole_layers(layers)
     items = _layer_items(layers, parts, deadline, source, w.notes)
     items = _copies(items, deadline)
-    items = _named_parts(items)
+    items = _named_parts(pair_items(items, deadline) if parts else items)
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -1060,6 +1077,12 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             w.emit(depth, "}")
             stats.patterns["row of parts"] += 1
             continue
+        elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
+            word = _named_parts([("solid", "part", pair[0])])[0][1]
+            write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, ""))
+            stats.patterns["mirrored part"] += 1
+            name = name if name != word else word + "s"
         else:
             _solid(w, params, stats, depth, name, d, short[name] + "_" if solids > 1 else "")
         names.append(name)

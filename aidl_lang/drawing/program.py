@@ -732,7 +732,7 @@ def _count_segments(d: Drawing) -> int:
 def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, color=None,
                    ident=None, parts: bool = False, close_tolerance: float | None = None,
                    cut=None, engrave=None, ignore=None, roles=None,
-                   budget=None, writer=None) -> tuple[str, list[Note]]:
+                   budget=None, writer=None, snap: float | None = None) -> tuple[str, list[Note]]:
     """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
     notes (skipped entities, left-out loops).  ``budget`` (a
     :class:`~aidl_lang.limits.Budget`, default the compile's): the wall time of the whole
@@ -741,7 +741,9 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     ``budget.geometry`` statements) is ``E0304``, naming ``Drawing2D`` (nothing is
     written).  ``writer``: the function that writes the program from the layers read
     (default :func:`to_program`; ``aidl import --infer`` passes
-    :func:`~.infer.to_program_inferred` through :func:`~.infer.import_drawing`).  Raises
+    :func:`~.infer.to_program_inferred` through :func:`~.infer.import_drawing`).  ``snap``
+    (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
+    (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
     :class:`~.read.DrawingError`."""
     import time
     from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
@@ -757,6 +759,7 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
         layers = [layer] if layer is not None else layer_names(data, name)
         read: list[tuple[str, Drawing]] = []
         notes: list[Note] = []
+        snapped: list = []
         total = 0
         for ly in layers:
             try:
@@ -775,6 +778,9 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
             # text is written as Text engravings here (Drawing2D skips it with this note)
             notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)
                       and all(n.message != m.message for m in notes)]     # once, not per layer
+            if snap:
+                from .snap import snap_drawing
+                snapped.append(snap_drawing(d, snap))
             read.append((ly if isinstance(ly, str) else "_".join(ly), d))
             total += _count_segments(d)
             if total > budget.geometry:
@@ -793,6 +799,10 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
                            "or raise --budget") from None
+    if snap:
+        from .snap import header_line
+        head, _, rest = text.partition("\n")
+        text = f"{head}\n# {header_line(snapped, snap)}\n{rest}"
     size = len(text.encode("utf-8"))
     if size > MAX_IMPORT_BYTES:
         raise DrawingError("E0304", f"the program of `{base}` would be {size} bytes, more than "
