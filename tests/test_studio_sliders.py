@@ -163,3 +163,31 @@ def test_gallery_pictures_are_made_once_for_every_server_of_a_build(tmp_path, mo
         for eid in CHEAP:
             assert "data-x" not in c.get(f"/api/thumb/{eid}.svg").text
     assert made == CHEAP[:1]
+
+
+def test_a_view_walks_no_old_objects_and_collects_after_its_answer(handle):
+    """The cycle collector's older generations wait until the answer is sent (the worker's
+    ``idle``): during a lid box move no collection of generation 1 or 2 (with CPython's
+    defaults, 700/10/10: several), after it the defaults are back."""
+    import gc
+    e = gallery.entry("generator/lid_box")
+    seen = []
+
+    def note(phase, info):
+        if phase == "start":
+            seen.append(info["generation"])
+    normal = gc.get_threshold()
+    with tempfile.TemporaryDirectory() as folder:
+        handle(("view", "gc", folder, e.source, {}))
+        handle.idle()
+        gc.callbacks.append(note)
+        try:
+            answer = handle(("view", "gc", folder, e.source, {"length": "150 mm"}))
+            during = list(seen)
+            handle.idle()
+        finally:
+            gc.callbacks.remove(note)
+    assert answer["ok"] and answer["svg"]
+    assert [g for g in during if g >= 1] == [] and len(during) <= 3, during
+    assert seen[len(during):][:1] == [1]        # the request's survivors, after the answer
+    assert gc.get_threshold() == normal

@@ -43,11 +43,13 @@ RETIRE_RSS = 900 << 20          # bytes: a worker past this answers, then is rep
 MACHINES = ("laser", "router", "plotter")
 MAX_SHEET = 5000.0              # mm: the largest sheet side a download may ask for
 PAGES = ("A4", "Letter", "A3", "Legal")     # PDF paper a download may tile over (+ -landscape)
-# objects: while a request compiles, Python's cycle collector runs only on this many new
-# objects (generation 0) and never walks the older heap (a full collection in the middle of a
-# planetary slider move: 0.1 to 0.4 s of its 0.5 to 1.7 s); the rest is collected after the
-# answer is sent (:func:`collect_garbage`)
+# while a request compiles, Python's cycle collector runs on every YOUNG_OBJECTS new objects
+# (generation 0), on the request's survivors every YOUNG_ROUNDS of those (generation 1: a long
+# compile's garbage stays bounded), and never walks the whole heap (a full collection in the
+# middle of a planetary slider move: 0.1 to 0.4 s of its 0.5 to 1.7 s); the rest is collected
+# after the answer is sent (:func:`collect_garbage`)
 YOUNG_OBJECTS = 50_000
+YOUNG_ROUNDS = 20
 
 
 def can_make(fmt: str) -> bool:
@@ -109,7 +111,7 @@ def handler(budget: float = 1.0):
     def handle(request):
         kind = request[0]
         oom = False
-        gc.set_threshold(YOUNG_OBJECTS, 1 << 30, 1 << 30)     # collect_garbage restores it
+        gc.set_threshold(YOUNG_OBJECTS, YOUNG_ROUNDS, 1 << 30)    # collect_garbage: back
         try:
             if kind == "view":
                 answer = view(sessions, *request[1:], budget=scaled)
