@@ -22,7 +22,9 @@ def handle():
 def _cold(handle, source, values):
     """The picture of ``values`` from a session that never drew anything before."""
     with tempfile.TemporaryDirectory() as folder:
-        return handle(("view", "cold-" + folder, folder, source, values))
+        answer = handle(("view", "cold-" + folder, folder, source, values))
+        handle.idle()               # as the worker does after each answer
+        return answer
 
 
 @pytest.mark.parametrize("eid,moves", [
