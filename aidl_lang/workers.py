@@ -4,7 +4,9 @@ that is killed when it runs past its limit, so one slow or hungry program never 
 
 :class:`Worker` keeps one process (``multiprocessing``, spawn).  It is started with a *target*,
 a top-level function ``target(*args) -> handle`` run once in the new process (imports, warm
-caches); ``handle(request) -> answer`` then answers every request sent over the pipe.  Both
+caches); ``handle(request) -> answer`` then answers every request sent over the pipe (and
+``handle.idle()``, when the handler has one, runs after each answer is sent: work the asker
+need not wait for, such as collecting the request's garbage).  Both
 request and answer must pickle.  A request that has not answered within its ``seconds`` kills
 the process (:class:`TimedOut`); a process that dies (out of memory: ``memory`` caps its
 address space with ``RLIMIT_AS``) raises :class:`Died`; the next request starts a fresh one.
@@ -80,6 +82,9 @@ def _main(conn, target, args: tuple, memory: int | None) -> None:
         except (EOFError, OSError):
             return
         conn.send(handle(request))
+        idle = getattr(handle, "idle", None)
+        if idle is not None:
+            idle()
 
 
 class Worker:

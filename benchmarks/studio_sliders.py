@@ -2,28 +2,36 @@
 
     .venv/bin/python benchmarks/studio_sliders.py                 # every entry
     .venv/bin/python benchmarks/studio_sliders.py --only planetary --runs 3
+    .venv/bin/python benchmarks/studio_sliders.py --tree /work/main     # that tree's code too
 
 For each entry of :func:`aidl_lang.studio.gallery.entries` one warm session is opened
-through the studio's own path, :func:`aidl_lang.studio.compiler.view` (the worker's
-``Session``, as ``/api/view`` uses it), on the entry's defaults; then each slider (a param
+through the studio's own path, the compile worker's handler
+(:func:`aidl_lang.studio.compiler.handler`: ``("view", ...)`` requests, as ``/api/view``
+sends them, answered by the worker's warm ``Session``; after each answer the handler's
+``idle``, when it has one, runs untimed, as the worker runs it after sending the answer),
+on the entry's defaults; then each slider (a param
 with ``min``/``max``) is moved to its minimum and to its maximum, one move at a time from the
 defaults, and the time of that ``view`` call (the answer carries the SVG) is taken: CPU
 seconds of this process (the main figure: the machine is shared) and wall seconds.  Printed:
 per entry the number of moves, the median and the slowest move (CPU and wall), and whether
 every move answered ``ok`` with an SVG; then the slowest entries overall.  Bounds are the
 form's (:func:`~aidl_lang.studio.gallery.param_rows`); an integer param moves to whole ends.
+``--tree DIR``: the same run again with ``DIR``'s ``aidl_lang`` (another checkout), printed
+after this tree's.
 """
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
-from collections import OrderedDict
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+ROOT = Path(os.environ.get("AIDL_BENCH_TREE") or Path(__file__).resolve().parents[1])
+sys.path.insert(0, str(ROOT))
 
 
 def _value(row: dict, v) -> str:
@@ -45,19 +53,25 @@ def moves(entry) -> list[dict]:
     return out
 
 
-def bench(entry, runs: int = 1) -> dict:
-    from aidl_lang.studio.compiler import view
-    sessions: OrderedDict = OrderedDict()
+def bench(entry, handle, runs: int = 1) -> dict:
+    idle = getattr(handle, "idle", lambda: None)
+
+    def view(folder, values):
+        doc = handle(("view", "s-" + entry.id, folder, entry.source, values))
+        return doc
     with tempfile.TemporaryDirectory() as folder:
-        view(sessions, "s", folder, entry.source, {})            # warm: the defaults
+        view(folder, {})                                        # warm: the defaults
+        idle()
         cpu, wall, bad = [], [], 0
         for mv in moves(entry):
             for _ in range(runs):
-                view(sessions, "s", folder, entry.source, {})    # back to the defaults
+                view(folder, {})                                # back to the defaults
+                idle()
                 c0, w0 = time.process_time(), time.perf_counter()
-                doc = view(sessions, "s", folder, entry.source, mv)
+                doc = view(folder, mv)
                 cpu.append(time.process_time() - c0)
                 wall.append(time.perf_counter() - w0)
+                idle()                                          # after the answer is sent
                 bad += not (doc.get("ok") and doc.get("svg"))
     return {"id": entry.id, "moves": len(cpu), "cpu": cpu, "wall": wall, "bad": bad}
 
@@ -66,15 +80,19 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--only", default="", help="entries whose id contains this")
     ap.add_argument("--runs", type=int, default=1, help="times each move is made")
+    ap.add_argument("--tree", default="", help="another checkout to run the same on, after")
     a = ap.parse_args(argv)
+    from aidl_lang.studio.compiler import handler
     from aidl_lang.studio.gallery import entries
+    handle = handler()
+    print(f"tree: {ROOT}")
     rows = []
     print(f"{'entry':40s} {'moves':>5s} {'cpu med':>8s} {'cpu max':>8s} "
           f"{'wall med':>8s} {'wall max':>8s} {'not ok':>6s}")
     for e in entries():
         if a.only not in e.id:
             continue
-        r = bench(e, a.runs)
+        r = bench(e, handle, a.runs)
         rows.append(r)
         if not r["cpu"]:
             print(f"{e.id:40s} {0:5d}  (no sliders)")
@@ -87,6 +105,10 @@ def main(argv=None) -> int:
     print("\nslowest (median CPU s per move):")
     for r in rows[:5]:
         print(f"  {r['id']:40s} {statistics.median(r['cpu']):.3f}")
+    if a.tree:
+        sys.stdout.flush()
+        again = [sys.executable, __file__, "--only", a.only, "--runs", str(a.runs)]
+        return subprocess.call(again, env=dict(os.environ, AIDL_BENCH_TREE=a.tree))
     return 0
 
 

@@ -465,10 +465,15 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
         if gallery.entry(eid) is None:
             return refusal(404, "no such design in the gallery")
         svg = st.thumbs.get(eid)
-        if svg is None:
-            svg = await st.compile(("thumb", eid))
-            if not isinstance(svg, str):
-                svg = ""
+        if svg is None:         # made once for every server of this build (the disk cache)
+            e = gallery.entry(eid)
+            svg = gallery.kept_thumbnail(e)
+            if svg is None:
+                svg = await st.compile(("thumb", eid))
+                if not isinstance(svg, str):
+                    svg = ""
+                if svg:
+                    gallery.keep_thumbnail(e, svg)
             st.thumbs[eid] = svg
         if not svg:
             return refusal(404, "this design has no picture")

@@ -164,7 +164,8 @@ def thumbnail(entry: Entry, size: int = 240) -> str:
     """A small SVG of the entry's default render (the designed shape, no kerf): the page of
     :meth:`aidl_lang.api.Result.to_svg` (user units: mm) shown at most ``size`` x ``size``
     pixels (``width``/``height`` in px, aspect kept), coordinates rounded to 0.01 mm.
-    Compiles the program each time (about 0.01 to 0.3 s): the caller caches it.  Raises
+    Compiles the program each time (about 0.01 to 0.3 s): the caller keeps it
+    (:func:`keep_thumbnail`, :func:`kept_thumbnail`).  Raises
     :class:`ValueError` naming the first error when the program does not compile."""
     r = compile_entry(entry)
     if not r.ok:
@@ -180,6 +181,75 @@ def thumbnail(entry: Entry, size: int = 240) -> str:
         svg = re.sub(r'(<svg\b[^>]*?)\bheight="[^"]*"', rf'\1height="{px_h}px"', svg, count=1)
         svg = re.sub(r'(<svg\b[^>]*?)\bwidth="[^"]*"', rf'\1width="{px_w}px"', svg, count=1)
     return re.sub(r"(\d\.\d\d)\d+", r"\1", svg)
+
+
+THUMBS = "gallery"          # the thumbnails' folder in the user's cache (aidl_lang.cache)
+
+
+@functools.cache
+def code_fingerprint() -> str:
+    """A digest of this installation of ``aidl_lang``: its version and the name, size and
+    modification time of every file of the package (code, grammar, standard library,
+    drawings), so a picture kept by one build is never shown by another (a checkout edited
+    without a new version number included)."""
+    import hashlib
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        v = version("aidl-lang")
+    except PackageNotFoundError:
+        v = "unknown"
+    root = Path(__file__).resolve().parent.parent
+    h = hashlib.sha256(v.encode())
+    for folder, dirs, files in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if d != "__pycache__")
+        for f in sorted(files):
+            try:
+                st = os.stat(os.path.join(folder, f))
+            except OSError:
+                continue
+            h.update(f"{os.path.relpath(os.path.join(folder, f), root)}\0{st.st_size}\0"
+                     f"{st.st_mtime_ns}\n".encode())
+    return h.hexdigest()
+
+
+def thumbnail_key(entry: Entry, size: int = 240) -> str:
+    """What a kept thumbnail of ``entry`` is filed under: a digest of the program's text,
+    the picture's ``size`` and :func:`code_fingerprint`."""
+    import hashlib
+    text = f"{code_fingerprint()}\0{size}\0{entry.source}"
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def _thumb_path(key: str) -> Path | None:
+    from ..cache import cache_dir
+    base = cache_dir()
+    if base is None:
+        return None
+    folder = base / THUMBS
+    try:
+        folder.mkdir(mode=0o700, exist_ok=True)
+    except OSError:
+        return None
+    return folder / f"{key[:32]}.svg"
+
+
+def kept_thumbnail(entry: Entry, size: int = 240) -> str | None:
+    """The thumbnail of ``entry`` made before (by this or another server, this build, the
+    same program text: :func:`thumbnail_key`) and kept in the user's cache
+    (``~/.cache/aidl/gallery``, :mod:`aidl_lang.cache`: checked, this user's own), or None."""
+    from ..cache import read_checked
+    key = thumbnail_key(entry, size)
+    path = _thumb_path(key)
+    return read_checked(path, key) if path is not None else None
+
+
+def keep_thumbnail(entry: Entry, svg: str, size: int = 240) -> bool:
+    """Keep ``svg`` as ``entry``'s thumbnail for :func:`kept_thumbnail`; False when the
+    cache cannot be written (the picture is then only kept in memory)."""
+    from ..cache import write_checked
+    key = thumbnail_key(entry, size)
+    path = _thumb_path(key)
+    return path is not None and write_checked(path, key, svg)
 
 
 @functools.cache

@@ -122,8 +122,8 @@ class Gap:
     gap: float
 
 
-def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = None
-        ) -> tuple[list[Collision], list[Gap]]:
+def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = None,
+        plates: dict | None = None) -> tuple[list[Collision], list[Gap]]:
     """The fit check of the assembled product with Manifold's 3D booleans: every pair of parts
     whose solids overlap by more than :data:`VOLUME_TOL` (and :data:`DEPTH_TOL` deep), and,
     with two parts or more, every part that comes no nearer than :data:`GAP_TOL` to any
@@ -136,7 +136,13 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     stopping at the first box farther than the best gap found.  ``deadline``: a
     :class:`~aidl_lang.limits.Deadline` checked before every boolean and every distance
     (raises :class:`~aidl_lang.limits.OutOfBudget`), so the check ends within the compile's
-    budget plus one Manifold call."""
+    budget plus one Manifold call.
+
+    ``plates``: part name -> (``CrossSection``, 4x4 placement or None, thickness mm), the
+    plates ``bodies`` were extruded from (:func:`plates_of`): two parallel plates whose
+    sheets are apart along their normal, or meet face to face over a common area (a carrier
+    stacked on its gears), are decided from their outlines in 2D (:func:`_stacked`), without
+    the 3D boolean (the same answer: 20 to 60 ms a pair of toothed plates -> under 1 ms)."""
     def tick():
         if deadline is not None:
             deadline.check("the fit check", None)
@@ -148,6 +154,12 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     for i, j in box_pairs(boxes, GAP_TOL):
         tick()
         (na, ma), (nb, mb) = bodies[i], bodies[j]
+        if plates is not None and na in plates and nb in plates:
+            stacked = _stacked(plates[na], plates[nb])
+            if stacked is not None:
+                if stacked:
+                    touching.update((i, j))
+                continue
         common = ma ^ mb
         vol = float(common.volume()) if not common.is_empty() else 0.0
         if vol > VOLUME_TOL:
@@ -185,6 +197,51 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
             if not any(g.part == best[1] and g.nearest == bodies[i][0] for g in gaps):
                 gaps.append(Gap(bodies[i][0], best[1], best[0]))    # a pair is said once
     return hits, gaps
+
+
+def plates_of(parts, where: dict, thickness: float | None = None,
+              bends: dict | None = None) -> dict:
+    """Part name -> (``CrossSection``, 4x4 placement or None, thickness mm) of each flat solid
+    of ``parts`` (as :func:`extrude` takes them), for :func:`fit`'s ``plates``; a part with
+    ``Bend``s (``bends[name]``) is no plate: the 3D booleans decide it."""
+    bends = bends or {}
+    return {name: (shape, where.get(name), float(thickness or t or DEFAULT_THICKNESS))
+            for name, kind, shape, t in parts
+            if kind == "solid" and shape is not None and not shape.is_empty()
+            and not bends.get(name)}
+
+
+def _rigid(M) -> np.ndarray | None:
+    """``M`` (4x4, None: identity) when its 3x3 part is a rotation or a mirror, else None."""
+    M = np.eye(4) if M is None else np.asarray(M, dtype=float)
+    R = M[:3, :3]
+    return M if np.allclose(R.T @ R, np.eye(3), rtol=0.0, atol=1e-12) else None
+
+
+def _stacked(a, b) -> bool | None:
+    """Two plates ``(CrossSection, placement, thickness)`` decided without a 3D boolean:
+    ``False`` when their sheets are parallel and more than :data:`GAP_TOL` apart along the
+    normal (no common volume, nothing within reach); ``True`` when they are parallel, meet in
+    one plane (faces flush, within 1e-9 mm) and their outlines share an area there (they
+    touch: no common volume, 0 apart); ``None`` for everything else (the 3D booleans say)."""
+    Ma, Mb = _rigid(a[1]), _rigid(b[1])
+    if Ma is None or Mb is None:
+        return None
+    Ra = Ma[:3, :3]
+    R = Ra.T @ Mb[:3, :3]                       # b in a's frame
+    t = Ra.T @ (Mb[:3, 3] - Ma[:3, 3])
+    if abs(abs(R[2, 2]) - 1.0) > 1e-12 or np.abs(R[2, :2]).max() > 1e-12 \
+            or np.abs(R[:2, 2]).max() > 1e-12:
+        return None                             # not parallel
+    zb = sorted((t[2], t[2] + R[2, 2] * b[2]))
+    gap = max(0.0, zb[0]) - min(a[2], zb[1])    # > 0: apart along the normal
+    if gap > GAP_TOL:
+        return False
+    if abs(gap) > 1e-9:
+        return None
+    flat = b[0].transform(np.array([[R[0, 0], R[0, 1], t[0]], [R[1, 0], R[1, 1], t[1]]]))
+    area = (a[0] ^ flat).area()
+    return True if area > 1e-6 and area * 1e-9 < VOLUME_TOL / 2 else None
 
 
 def box_pairs(boxes: np.ndarray, pad: float = 0.0) -> list[tuple[int, int]]:
