@@ -167,3 +167,18 @@ def test_a_misused_bend_is_located(bend, code, at, says):
     assert e.code == code and says in e.message
     # at the argument at fault: line 6, its column (1-based, after 4 spaces of indent)
     assert (e.span.line, e.span.col) == (6, 4 + bend.index(at) + 1)
+
+
+def test_a_bent_part_parallel_to_a_plate_is_fitted_in_3d_not_as_a_flat_plate():
+    """The fit check's 2D shortcut (two parallel plates apart along their normal touch
+    nothing) must not take a bent part for its flat sheet: a panel standing 10 mm behind the
+    docs' wall, parallel to its unbent start, is where the leg turns in: W0517, 3 x 3 x 10 =
+    90 mm^3 (taken as a flat plate it was 'touches no other part', W0518)."""
+    src = BENT.replace("BEND", "Bend(wall, at=20, angle=90 deg, radius=2)\n"
+                               "    solid panel { r = Rectangle(center=(20.75, 60), width=6, height=10) }\n"
+                               "    Place(panel, rotation=(90 deg, 0, 180 deg), position=(0, -10, -42))")
+    r = aidl_lang.compile(source=src)
+    assert [d.code for d in r.sink.items] == ["W0517"]
+    (hit,) = r.fit["collisions"]
+    assert {hit["a"], hit["b"]} == {"kit.wall", "kit.panel"}
+    assert hit["volume"] == pytest.approx(90, abs=1e-6)
