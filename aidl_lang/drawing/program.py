@@ -291,11 +291,22 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
     loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
-    depths = [len(c) for c in _containers([segs for _, segs in loops], w.deadline)]
+    inside = _containers([segs for _, segs in loops], w.deadline)
+    depths = [len(c) for c in inside]
     w.emit(depth, f"{kind} {name} {{")
     used: set = set()
     k = 0
     islands = []
+    # a hole inside an island (a loop inside three others, five, ...) is the island's hole,
+    # written in the island's solid (in the outer solid it cut nothing: W0508, its cut lost)
+    island_holes: dict = {}
+    if kind != "drawing":
+        for i, dep in enumerate(depths):
+            if dep >= 3 and dep % 2 == 1:
+                owner = [j for j in inside[i] if depths[j] == dep - 1]
+                if owner:
+                    island_holes.setdefault(owner[0], []).append(i)
+    deep = {i for v in island_holes.values() for i in v}
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -307,6 +318,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             w.rel, depth = places[0], depth + 1
         if kind == "drawing" or dep == 0:
             _loop(w, depth + 1, segs, f"{tag}{k}_", None)
+        elif k - 1 in deep:             # written in its island's solid (below)
+            pass
         elif dep % 2 == 1:
             _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
         else:
@@ -367,6 +380,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
     for segs, k in islands:
         w.emit(depth, f"solid {name}_island{k} {{")
         _loop(w, depth + 1, segs, f"o{k}_", None)
+        for i in island_holes.get(k - 1, ()):
+            _loop(w, depth + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
         w.emit(depth, "}")
 
 
@@ -404,7 +419,8 @@ def _copies(loops: list, depths: list, kind: str) -> dict:
     for i, ((_tag, segs), dep) in enumerate(zip(loops, depths)):
         key = _shape_key(segs)
         if key is not None:
-            role = "outer" if kind == "drawing" or dep == 0 else dep % 2
+            # islands and their holes (depth 3, 5, ...: written in the island) are role 0
+            role = "outer" if kind == "drawing" or dep == 0 else dep % 2 if dep == 1 else 0
             groups.setdefault((role, key), []).append(i)
     out: dict = {}
     for (role, _key), idx in groups.items():
