@@ -73,3 +73,26 @@ def test_a_hole_in_an_island_is_the_islands_hole(island):
     assert "W0508" not in codes                           # "cuts nothing of its own"
     island_solid = text[text.index("_island"):]
     assert "hole hole4" in island_solid and "start=(70, -60)" in island_solid   # written in it
+
+
+# --------------------------------------------- an outline that crosses itself (PaperBox flaps)
+@pytest.fixture(scope="module")
+def flap():
+    """A panel whose glue flap's slanted edge ends 0.2 mm past the panel's edge, which then
+    runs back across it (PaperBox: its one cut path crosses itself so at each flap; the whole
+    path was engraved, 10.3 % of its cut kept)."""
+    svg = _svg([("M 60 56 L 110 60.2 L 110.1 60 H 10 V 10 H 60 Z", "rgb(0,0,0)")])
+    return _cut(svg, "flap")
+
+
+def test_an_outline_that_crosses_itself_is_split_at_the_crossing_and_cut(flap):
+    text, notes, cut, _codes = flap
+    want = math.hypot(50, 4.2) + math.hypot(0.1, 0.2) + 100.1 + 50 + 50 + 46
+    assert cut == pytest.approx(want, abs=1e-6)           # was 0: engraved
+    assert "drawing paths" not in text
+    # the big loop and the crumb between the two crossing edges, which meet at (107.619.., 60)
+    x = 60 + 50 * 4 / 4.2
+    assert text.count("Line(start=") == 8
+    assert f"({x!r}, -60)" in text or f"({round(x, 12)!r}, -60)" in text
+    assert any("crosses itself: split at the crossings into 2 loops" in n.message
+               for n in notes)
