@@ -96,3 +96,22 @@ def test_an_outline_that_crosses_itself_is_split_at_the_crossing_and_cut(flap):
     assert f"({x!r}, -60)" in text or f"({round(x, 12)!r}, -60)" in text
     assert any("crosses itself: split at the crossings into 2 loops" in n.message
                for n in notes)
+
+
+# ------------------------------------------- parts drawn overlapping (UnevenHeightBox's walls)
+@pytest.fixture(scope="module")
+def overlap():
+    """Two walls drawn overlapping by 0.4 mm on the sheet (UnevenHeightBox: three pairs of
+    its walls so; one solid fused each pair and lost the cut lines inside, 83.6 % kept)."""
+    svg = _svg([("M 10 10 H 110 V 60.2 H 10 Z", "rgb(0,0,0)"),
+                ("M 10 110 H 110 V 59.8 H 10 Z", "rgb(0,0,0)")])
+    return _cut(svg, "overlap")
+
+
+def test_parts_that_overlap_are_solids_of_their_own(overlap):
+    text, notes, cut, _codes = overlap
+    assert cut == pytest.approx(2 * (200 + 2 * 50.2), abs=1e-6)     # was 400: fused
+    assert text.count("solid ") == 2 and "assembly drawing_import {" in text
+    assert any(n.message.startswith("1 pair of parts of `overlap.svg` on a cut role "
+                                    "overlap: each part is written as a solid of its own")
+               for n in notes)

@@ -829,7 +829,17 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
-        if parts and kind == "solid":
+        crossed = 0 if parts or kind != "solid" or not d.paths_cut else \
+            _overlapping_parts(d, deadline)
+        if crossed:
+            notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
+                                       f"of `{source}` on a cut role overlap: each part is "
+                                       f"written as a solid of its own (`assembly "
+                                       f"drawing_import`), as `--parts` does (one solid would "
+                                       f"fuse them and lose the cut lines where they overlap)",
+                              "move the parts apart in the drawing program if they are not "
+                              "to overlap on the sheet"))
+        if (parts or crossed) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -861,3 +871,42 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         else:
             items.append((kind, _ident(layer or "part", used), d))
     return items
+
+
+def _overlapping_parts(d: Drawing, deadline=None) -> int:
+    """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
+    (share an area, on the loops' sampled polygons): parts drawn overlapping
+    on a laser sheet (Boxes.py's UnevenHeightBox walls), which one solid would fuse, losing
+    the cut lines inside the union."""
+    import numpy as np
+    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    if len(loops) < 2:
+        return 0
+    inside = _containers(loops, deadline)
+    outer = [i for i, c in enumerate(inside) if not c]
+    polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
+    box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+           for i, P in polys.items() if len(P) >= 3}
+    keys = sorted(box)
+    pairs = 0
+    for a_i, i in enumerate(keys):
+        if deadline is not None:
+            deadline.check("finding the parts that overlap")
+        for j in keys[a_i + 1:]:
+            a, b = box[i], box[j]
+            if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
+                continue
+            if _polygons_overlap(polys[i], polys[j]):
+                pairs += 1
+    return pairs
+
+
+def _polygons_overlap(P, Q) -> bool:
+    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) share an area: their
+    intersection (Manifold's 2D booleans) is larger than 1e-6 of the smaller (parts that only
+    touch, or run along one another, do not overlap)."""
+    import manifold3d as mf
+    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
+    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
+    both = (a ^ b).area()
+    return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
