@@ -115,3 +115,23 @@ def test_parts_that_overlap_are_solids_of_their_own(overlap):
     assert any(n.message.startswith("1 pair of parts of `overlap.svg` on a cut role "
                                     "overlap: each part is written as a solid of its own")
                for n in notes)
+
+
+# -------------------------------- a corner curve that loops round on itself (Gridfinity slots)
+@pytest.fixture(scope="module")
+def curl():
+    """A slot whose inner corners are Boxes.py's corner loops (a cubic from the corner round
+    and back), one of them rounded so that it ends 0.001 mm short of its start and crosses
+    itself (GridfinityTrayLayout: 11 slots so, engraved, 56.3 % of its cut kept)."""
+    svg = _svg([("M 10 10 H 110 V 110 H 10 Z", "rgb(0,0,0)"),
+                ("M 55 50 H 60 C 60.1 50 60 50.1 60 50 V 40 C 60 39.9 60.1 40 59.999 40 H 40 "
+                 "C 39.9 40 40 39.9 40 40 V 50 C 40 50.1 39.9 50 40 50 H 55 Z", "rgb(0,0,255)")])
+    return _cut(svg, "curl")
+
+
+def test_a_corner_curve_that_crosses_itself_is_cut_off_and_the_slot_cut(curl):
+    text, notes, cut, _codes = curl
+    assert "drawing paths" not in text and "hole hole2 {" in text
+    # the plate and the slot's 20 x 10 mm edge (the corner loops, 0.14 mm each, are crumbs)
+    assert 400 + 60 - 0.01 <= cut <= 400 + 60 + 4 * 0.15          # was 400: engraved
+    assert any("crosses itself: split at the crossings" in n.message for n in notes)

@@ -259,7 +259,8 @@ def test_a_cut_loop_that_crosses_itself_is_split_at_the_crossing_into_holes():
     assert len(holes) == 2 and all(h.count("= Line(") == 3 and "(20, -20)" in h for h in holes)
     assert any(n.message == "1 loop of `bow.svg` crosses itself: split at the crossings into "
                             "2 loops that do not, every line kept (a laser cuts each out: a "
-                            "part, a hole or a crumb)" for n in notes)
+                            "part, a hole or a crumb; a corner curve that loops round on "
+                            "itself is cut off at its ends)" for n in notes)
     c = aidl_lang.compile(source=text, path="bow.aidl")
     assert c.ok
     # the two triangles meet at the crossing: one opening, as the laser cuts it

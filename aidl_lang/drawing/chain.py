@@ -383,9 +383,32 @@ def _lobes(segs: list) -> list | None:
             return None
         two = _split_crossing(cur, hit)
         if two is None:
-            return None
+            flat = _unloop(cur, hit)
+            if flat is None:
+                return None
+            todo.append(flat)
+            continue
         todo += [two[0], two[1]]
     return out
+
+
+def _unloop(segs: list, hit) -> list | None:
+    """``segs`` with the curve piece near ``hit`` that loops round on itself and ends within
+    :data:`OVERSHOOT` of its start (a cubic that crosses itself: Boxes.py's corner loops,
+    rounded so their ends miss by 0.001 mm) replaced by the line from its start to its end
+    (the crumb the laser cuts off there), or None when there is none."""
+    r = CROSSING_NEAR
+    for k, sg in enumerate(segs):
+        b = _box_of(sg)
+        if not isinstance(sg, Spline) or not (b[0] - r <= hit[0] <= b[2] + r and
+                                              b[1] - r <= hit[1] <= b[3] + r):
+            continue
+        gap = math.dist(sg.start, sg.end)
+        if gap <= OVERSHOOT and _piece_length(sg) > 3 * gap:
+            rest = segs[:k] + ([Line(sg.start, sg.end)] if gap > JOIN_TOL else []) + \
+                segs[k + 1:]
+            return rest if len(rest) >= 2 else None
+    return None
 
 
 DEGENERATE_ABS = JOIN_TOL    # mm: a piece all of whose points lie this close to its start
@@ -590,7 +613,8 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                                    f"{'itself' if len(split) == 1 else 'themselves'}: split at "
                                    f"the crossings into {sum(split)} loops that do not, every "
                                    f"line kept (a laser cuts each out: a part, a hole or a "
-                                   f"crumb)", "redraw the outline without the crossing in the "
+                                   f"crumb; a corner curve that loops round on itself is cut "
+                                   f"off at its ends)", "redraw the outline without the crossing in the "
                                               "drawing program if a crumb is not meant"))
     for segs in open_:
         d.paths.append(Path(list(segs)))
