@@ -594,6 +594,8 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             continue
         for segs in parts:
             o = Outline(list(segs), src)
+            if len(parts) > 1 and abs(o.area) <= LOBE_MIN ** 2:
+                continue        # a curve drawn out and back over itself: no area, no loop
             if o.area < 0:
                 from ..geometry.curves import reverse
                 o.segments = [reverse(s) for s in reversed(o.segments)]
