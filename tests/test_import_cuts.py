@@ -243,20 +243,28 @@ def test_unreadable_numbers_in_path_data_are_counted_with_their_place():
     assert sorted(round(p.segments[0].end[0], 9) for p in d.paths) == [20, 20]
 
 
-def test_a_cut_loop_that_crosses_itself_stays_an_engraving():
+def test_a_cut_loop_that_crosses_itself_is_split_at_the_crossing_into_holes():
     """A bow tie on a cut role (it crosses itself at (20, 20), far from a small loop): a
-    closed curve in a `cut` is a hole's edge, which must not cross itself, so it stays the
-    `drawing paths` engraving it was, counted; the open slit beside it is a through-cut."""
+    laser cuts both its triangles out, so it is split at the crossing into the two loops,
+    each a hole, every line kept (it was an engraving: its 97 mm of cut lost, issue 71); the
+    open slit beside it is a through-cut."""
     body = [f'<path d="M 0 0 H 100 V 60 H 0 Z" stroke="{BLACK}" />',
             f'<path d="M 10 10 L 30 30 L 30 10 L 10 30 Z" stroke="{BLUE}" />',
             f'<path d="M 60 10 V 50" stroke="{BLUE}" />']
     text, notes = import_drawing(_svg(body), "bow.svg", roles="laser")
     cut = text.split("cut cuts {", 1)[1].split("}", 1)[0]
     assert cut.strip() == "p1_0 = Line(start=(60, -10), end=(60, -50))"
-    assert "drawing paths {" in text.split("cut cuts {", 1)[1]
-    assert any(n.message == "1 loop of `bow.svg` on a cut role crosses itself: engraved "
-                            "(`drawing paths`), neither a hole nor a through-cut" for n in notes)
-    assert aidl_lang.compile(source=text, path="bow.aidl").ok
+    assert "drawing paths {" not in text
+    holes = [h.split("}", 1)[0] for h in text.split("hole hole")[1:]]
+    assert len(holes) == 2 and all(h.count("= Line(") == 3 and "(20, -20)" in h for h in holes)
+    assert any(n.message == "1 loop of `bow.svg` crosses itself: split at the crossings into "
+                            "2 loops that do not, every line kept (a laser cuts each out: a "
+                            "part, a hole or a crumb; a corner curve that loops round on "
+                            "itself is cut off at its ends)" for n in notes)
+    c = aidl_lang.compile(source=text, path="bow.aidl")
+    assert c.ok
+    # the two triangles meet at the crossing: one opening, as the laser cuts it
+    assert [d.code for d in c.sink.items] == ["W0508"]
 
 
 # ------------------------------------------------------------------ Drawing2D in a program

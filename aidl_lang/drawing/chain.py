@@ -5,7 +5,8 @@ duplicates removed (:func:`_dedupe`), pieces chained end to end on a grid of the
 (:func:`_chain`), a path whose end runs past its start closed at the crossing
 (:func:`_overshoot`), gaps within the closing tolerance closed (:func:`_meet`), a loop's small
 loops where it crosses itself cut off (:func:`_trim_small_loops`), a loop that still crosses
-itself (:func:`_crossing`) kept as a path.  Crossings are exact on the pieces' own carriers
+itself (:func:`_crossing`) split at its crossings on a cut role (:func:`_lobes`), else kept
+as a path.  Crossings are exact on the pieces' own carriers
 (:func:`~aidl_lang.geometry.curves.crossings`)."""
 from __future__ import annotations
 
@@ -323,6 +324,93 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     return out, n_cut
 
 
+MAX_LOBES = 64           # a loop that crosses itself is split into at most this many loops
+CROSSING_NEAR = 0.1      # mm: an exact crossing this near the chords' is the one they found
+LOBE_MIN = 1e-3          # mm: a loop split off shorter than this is no loop (a touch)
+
+
+def _split_crossing(segs: list, hit) -> tuple[list, list] | None:
+    """The closed loop ``segs`` split at its crossing near ``hit`` (a point :func:`_crossing`
+    found on the chords) into the two loops that meet there, ``(from the crossing round to
+    it on the first piece's side, the rest)``: the two crossing pieces cut at the exact
+    crossing of their carriers (:func:`~aidl_lang.geometry.curves.crossings`), so every piece
+    drawn is kept, end to end, in one loop or the other.  None when no exact crossing of two
+    pieces lies within :data:`CROSSING_NEAR` of ``hit`` (with a loop longer than
+    :data:`LOBE_MIN` on each side)."""
+    from ..geometry.curves import carrier, crossings
+    r = CROSSING_NEAR
+    near = [i for i, sg in enumerate(segs)
+            if (lambda b: b[0] - r <= hit[0] <= b[2] + r and
+                b[1] - r <= hit[1] <= b[3] + r)(_box_of(sg))]
+    best = None
+    for ii, i in enumerate(near):
+        for j in near[ii + 1:]:
+            try:
+                pts = crossings(carrier(segs[i]), carrier(segs[j]))
+            except Exception:
+                continue
+            for x in pts:
+                d = math.dist(x, hit)
+                if d > r or (best is not None and d >= best[0]):
+                    continue
+                sa, sb = _split_at(segs[i], x), _split_at(segs[j], x)
+                if sa is None or sb is None:
+                    continue
+                first = [sa[1]] + segs[i + 1:j] + [sb[0]]
+                rest = [sb[1]] + segs[j + 1:] + segs[:i] + [sa[0]]
+                first = [q for q in first if _piece_length(q) > JOIN_TOL]
+                rest = [q for q in rest if _piece_length(q) > JOIN_TOL]
+                if sum(map(_piece_length, first)) > LOBE_MIN and \
+                        sum(map(_piece_length, rest)) > LOBE_MIN:
+                    best = (d, first, rest)
+    return None if best is None else (best[1], best[2])
+
+
+def _lobes(segs: list) -> list | None:
+    """The loops a closed loop that crosses itself is made of, each crossing none: split at
+    its crossings one by one (:func:`_split_crossing`), every piece kept.  A laser cuts
+    along every line, so each loop is a piece of the sheet (a part, a hole in one, or a crumb
+    where the line crosses itself).  None when a crossing cannot be placed exactly or the loop
+    makes more than :data:`MAX_LOBES` loops."""
+    out, todo = [], [list(segs)]
+    while todo:
+        cur = todo.pop()
+        hit = _crossing(cur)
+        if hit is None:
+            out.append(cur)
+            continue
+        if len(out) + len(todo) + 2 > MAX_LOBES:
+            return None
+        two = _split_crossing(cur, hit)
+        if two is None:
+            flat = _unloop(cur, hit)
+            if flat is None:
+                return None
+            todo.append(flat)
+            continue
+        todo += [two[0], two[1]]
+    return out
+
+
+def _unloop(segs: list, hit) -> list | None:
+    """``segs`` with the curve piece near ``hit`` that loops round on itself and ends within
+    :data:`OVERSHOOT` of its start (a cubic that crosses itself: Boxes.py's corner loops,
+    rounded so their ends miss by 0.001 mm) replaced by the line from its start to its end
+    (the crumb the laser cuts off there), or None when there is none."""
+    r = CROSSING_NEAR
+    for k, sg in enumerate(segs):
+        b = _box_of(sg)
+        if not isinstance(sg, Spline) or not (b[0] - r <= hit[0] <= b[2] + r and
+                                              b[1] - r <= hit[1] <= b[3] + r):
+            continue
+        gap = math.dist(sg.start, sg.end)
+        if gap <= OVERSHOOT and _piece_length(sg) > 3 * gap:
+            rest = segs[:k] + ([Line(sg.start, sg.end)] if gap > JOIN_TOL else []) + \
+                segs[k + 1:]
+            return rest if len(rest) >= 2 else None
+    return None
+
+
 DEGENERATE_ABS = JOIN_TOL    # mm: a piece all of whose points lie this close to its start
 DEGENERATE_REL = 1e-8       # ... or this share of the drawing's largest coordinate is dropped
 
@@ -476,6 +564,7 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                                                  "--close-tolerance 0`) to keep them open"))
     d = Drawing(circles=circles, ellipses=ellipses, notes=notes, unit=unit)
     crumbs = 0
+    split: list = []                # loops that crossed themselves: the loops each made
     for segs, src in [(c, "") for c in closed] + loops:
         if len(segs) == 1 and isinstance(segs[0], Circle):
             d.circles.append(segs[0])
@@ -492,14 +581,25 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                     segs, hit = trimmed, None
                     crumbs += k
                     break
+        parts = [segs]
+        if hit is not None and opts.close_tol > 0 and opts.split_crossings:
+            # still crossing, on a cut role: split at its crossings into loops that cross nothing, every
+            # line kept (Boxes.py's PaperBox flaps, a slot whose edges cross)
+            lobes = _lobes(_trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0])
+            if lobes is not None:
+                parts, hit = lobes, None
+                split.append(len(lobes))
         if hit is not None:          # kept as a stroke; an error where an outline is needed
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue
-        o = Outline(list(segs), src)
-        if o.area < 0:
-            from ..geometry.curves import reverse
-            o.segments = [reverse(s) for s in reversed(o.segments)]
-        d.outlines.append(o)
+        for segs in parts:
+            o = Outline(list(segs), src)
+            if len(parts) > 1 and abs(o.area) <= LOBE_MIN ** 2:
+                continue        # a curve drawn out and back over itself: no area, no loop
+            if o.area < 0:
+                from ..geometry.curves import reverse
+                o.segments = [reverse(s) for s in reversed(o.segments)]
+            d.outlines.append(o)
     d.outlines.sort(key=lambda o: -abs(o.area))
     if crumbs:
         notes.append(Note("W0130", f"{crumbs} small loop{'s' if crumbs > 1 else ''} of `{name}` "
@@ -509,6 +609,15 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
                                    f"runs through the crossing",
                           "give close_tolerance=0 (`aidl import --close-tolerance 0`) to "
                           "keep them as drawn"))
+    if split:
+        notes.append(Note("W0130", f"{len(split)} loop{'s' if len(split) > 1 else ''} of "
+                                   f"`{name}` cross{'es' if len(split) == 1 else ''} "
+                                   f"{'itself' if len(split) == 1 else 'themselves'}: split at "
+                                   f"the crossings into {sum(split)} loops that do not, every "
+                                   f"line kept (a laser cuts each out: a part, a hole or a "
+                                   f"crumb; a corner curve that loops round on itself is cut "
+                                   f"off at its ends)", "redraw the outline without the crossing in the "
+                                              "drawing program if a crumb is not meant"))
     for segs in open_:
         d.paths.append(Path(list(segs)))
     d.circles = [Circle(c.center, c.radius) for c in d.circles]

@@ -231,11 +231,14 @@ def _plural(n: int, word: str) -> str:
 class _Options:
     """What :func:`read_drawing` asks of the readers beyond the selection: the closing
     tolerance (mm), the wall-time :class:`~aidl_lang.limits.Deadline` (or None), the role
-    filter ``keep(layer, rgb, aci)`` (or None: everything) and the shape budget."""
+    filter ``keep(layer, rgb, aci)`` (or None: everything), the shape budget, and whether a
+    loop that crosses itself is split at its crossings (``split_crossings``: on a cut role,
+    where a laser cuts every line) instead of kept as a stroke."""
     close_tol: float = CLOSE_TOL
     deadline: object = None
     keep: object = None
     max_shapes: int = MAX_ENTITIES
+    split_crossings: bool = False
 
 
 _OPTS: "contextvars.ContextVar[_Options]" = contextvars.ContextVar("aidl_drawing_opts",

@@ -291,11 +291,22 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
     loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
-    depths = [len(c) for c in _containers([segs for _, segs in loops], w.deadline)]
+    inside = _containers([segs for _, segs in loops], w.deadline)
+    depths = [len(c) for c in inside]
     w.emit(depth, f"{kind} {name} {{")
     used: set = set()
     k = 0
     islands = []
+    # a hole inside an island (a loop inside three others, five, ...) is the island's hole,
+    # written in the island's solid (in the outer solid it cut nothing: W0508, its cut lost)
+    island_holes: dict = {}
+    if kind != "drawing":
+        for i, dep in enumerate(depths):
+            if dep >= 3 and dep % 2 == 1:
+                owner = [j for j in inside[i] if depths[j] == dep - 1]
+                if owner:
+                    island_holes.setdefault(owner[0], []).append(i)
+    deep = {i for v in island_holes.values() for i in v}
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -307,6 +318,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             w.rel, depth = places[0], depth + 1
         if kind == "drawing" or dep == 0:
             _loop(w, depth + 1, segs, f"{tag}{k}_", None)
+        elif k - 1 in deep:             # written in its island's solid (below)
+            pass
         elif dep % 2 == 1:
             _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
         else:
@@ -367,6 +380,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
     for segs, k in islands:
         w.emit(depth, f"solid {name}_island{k} {{")
         _loop(w, depth + 1, segs, f"o{k}_", None)
+        for i in island_holes.get(k - 1, ()):
+            _loop(w, depth + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
         w.emit(depth, "}")
 
 
@@ -404,7 +419,8 @@ def _copies(loops: list, depths: list, kind: str) -> dict:
     for i, ((_tag, segs), dep) in enumerate(zip(loops, depths)):
         key = _shape_key(segs)
         if key is not None:
-            role = "outer" if kind == "drawing" or dep == 0 else dep % 2
+            # islands and their holes (depth 3, 5, ...: written in the island) are role 0
+            role = "outer" if kind == "drawing" or dep == 0 else dep % 2 if dep == 1 else 0
             groups.setdefault((role, key), []).append(i)
     out: dict = {}
     for (role, _key), idx in groups.items():
@@ -823,7 +839,17 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
-        if parts and kind == "solid":
+        crossed = 0 if parts or kind != "solid" or not d.paths_cut else \
+            _overlapping_parts(d, deadline)
+        if crossed:
+            notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
+                                       f"of `{source}` on a cut role overlap: each part is "
+                                       f"written as a solid of its own (`assembly "
+                                       f"drawing_import`), as `--parts` does (one solid would "
+                                       f"fuse them and lose the cut lines where they overlap)",
+                              "move the parts apart in the drawing program if they are not "
+                              "to overlap on the sheet"))
+        if (parts or crossed) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -855,3 +881,42 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         else:
             items.append((kind, _ident(layer or "part", used), d))
     return items
+
+
+def _overlapping_parts(d: Drawing, deadline=None) -> int:
+    """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
+    (share an area, on the loops' sampled polygons): parts drawn overlapping
+    on a laser sheet (Boxes.py's UnevenHeightBox walls), which one solid would fuse, losing
+    the cut lines inside the union."""
+    import numpy as np
+    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    if len(loops) < 2:
+        return 0
+    inside = _containers(loops, deadline)
+    outer = [i for i, c in enumerate(inside) if not c]
+    polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
+    box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+           for i, P in polys.items() if len(P) >= 3}
+    keys = sorted(box)
+    pairs = 0
+    for a_i, i in enumerate(keys):
+        if deadline is not None:
+            deadline.check("finding the parts that overlap")
+        for j in keys[a_i + 1:]:
+            a, b = box[i], box[j]
+            if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
+                continue
+            if _polygons_overlap(polys[i], polys[j]):
+                pairs += 1
+    return pairs
+
+
+def _polygons_overlap(P, Q) -> bool:
+    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) share an area: their
+    intersection (Manifold's 2D booleans) is larger than 1e-6 of the smaller (parts that only
+    touch, or run along one another, do not overlap)."""
+    import manifold3d as mf
+    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
+    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
+    both = (a ^ b).area()
+    return both > 1e-6 * max(1e-6, min(a.area(), b.area()))

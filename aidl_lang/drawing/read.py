@@ -21,8 +21,9 @@ no number (``inf``, ``nan``) is read up to it and counted with its place.
 Loose pieces are joined end to end (within :data:`JOIN_TOL`) into chains: a chain that comes
 back to its start is an outline, otherwise a path; a chain whose end runs past its start,
 crossing it, is closed at the crossing (:func:`~.chain._overshoot`), and a loop's small
-loops where it crosses itself are cut off (:func:`~.chain._trim_small_loops`).  A loop that
-crosses itself, a selection that finds nothing and a file past :data:`MAX_ENTITIES` raise
+loops where it crosses itself are cut off (:func:`~.chain._trim_small_loops`), and on a cut
+role a loop that still crosses itself is split at its crossings (:func:`~.chain._lobes`).  A
+loop that crosses itself, a selection that finds nothing and a file past :data:`MAX_ENTITIES` raise
 :class:`DrawingError` (its ``code``, ``message`` and ``hint``: the caller places it at the
 call).
 
@@ -114,7 +115,8 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
         return keep
     out = []
     for want in ("cut", "engrave"):
-        token = _OPTS.set(_Options(tol, deadline, keep_for(want), base.max_shapes))
+        token = _OPTS.set(_Options(tol, deadline, keep_for(want), base.max_shapes,
+                                   split_crossings=want == "cut"))
         try:
             out.append(_read_one(data, name, layer, color, ident, unit, keep_text,
                                  allow_empty=True))
