@@ -178,8 +178,8 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
     from aidl_lang.output.fabrication.toolpath import TOUR_SMALL, Cut, _depths, _depths_each, _tour
     rng = np.random.default_rng(74)
     cuts = []
-    for k in range(700):
-        x, y = (rng.integers(0, 30, 2) * 5.0) if on_grid else rng.uniform(0, 300, 2)
+    for k in range(400):
+        x, y = (rng.integers(0, 20, 2) * 5.0) if on_grid else rng.uniform(0, 200, 2)
         kind = k % 3
         if kind == 0:
             cuts.append(Cut("cut_inner", "p", [Circle((x, y), 1.0)], True))
@@ -189,11 +189,11 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
             cuts.append(Cut("cut_outer", "p", [Line((x, y), (x + 2, y)), Line((x + 2, y), (x + 2, y + 2)),
                                                Line((x + 2, y + 2), (x, y))], True))
     assert len(cuts) > TOUR_SMALL
-    for at in ((-50.0, 0.0), (150.0, 150.0)):
+    for at in [(-50.0, 0.0)] if on_grid else [(150.0, 150.0)]:
         got, want = _tour(cuts, at), _tour_whole(cuts, at)
         assert [(c.segments, c.closed) for c in got] == [(c.segments, c.closed) for c in want]
     loops = [Loop([Circle((float(x), float(y)), float(r))]) for x, y, r in
-             zip(rng.uniform(0, 60, 400), rng.uniform(0, 60, 400), rng.uniform(0.5, 20, 400))]
+             zip(rng.uniform(0, 60, 250), rng.uniform(0, 60, 250), rng.uniform(0.5, 20, 250))]
     polys = [lp.points() for lp in loops]
     boxes = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in polys])
     probe = np.array([p[0] for p in polys])
