@@ -117,9 +117,9 @@ class _Manifold:
 
 
 def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
-    """Calls by stage of compiling and writing the panel to DXF and ordering its cuts, with
-    the array work of the booleans' unions and of the cut order; the number of holes; the
-    DXF."""
+    """Calls by stage of compiling and writing the panel to DXF (and, written as a loop,
+    ordering its cuts), with the array work of the booleans' unions and of the cut order; the
+    number of holes; the DXF."""
     W, H, centres = grid(nx, ny)
     folder = tmp_path / f"{how}{nx}x{ny}"
     folder.mkdir()
@@ -147,8 +147,9 @@ def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
             res = compile_source(src, str(path), budget=DEFAULT_BUDGET.scaled(20))
             assert res.ok, [d.message for d in res.sink.items]
             out = build(res.drawing, res.model.root.name, deadline=res.deadline)
-            cuts = toolpath.plan(out)
-            assert sum(c.operation == "cut_inner" for c in cuts) == len(centres)
+            if how == "loop":           # (the same cut order from either)
+                cuts = toolpath.plan(out)
+                assert sum(c.operation == "cut_inner" for c in cuts) == len(centres)
             return encode(out, ".dxf", Options())
         finally:
             pr.disable()
@@ -189,4 +190,5 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
     assert not worst, (f"stages past {GROWTH}x from {n1} to {n4} holes: {worst}; calls: "
                        + str({s: (small[s], large[s]) for s in large}))
     # the grouping names the stages (a rename of the folders would leave them out)
-    assert {"all", "geometry", "booleans", "manifold", "toolpath"} <= set(large), large
+    assert {"all", "geometry", "booleans", "manifold"} <= set(large), large
+    assert how == "dxf" or "toolpath" in large, large
