@@ -229,11 +229,12 @@ class Renderer:
         line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Faces whose
         boxes are apart (:func:`_apart`: the holes of a perforated sheet) are united in one
         pass, the same polygons in the same order as in groups, where each level would pass
-        them all again (20,000 holes: 0.27 s instead of 0.95 s).  Faces in a row along x are united scanned along x (turned a
-        quarter turn and back, exact: :func:`.scanwork.plan`): 4 000 circles of different
-        radii on a row, 31 s scanned along y, 0.1 s along x.  The deadline is checked
-        between groups (:meth:`tick`), each group weighed by its scan-line work when all the
-        faces' could come near the deadline."""
+        them all again (20,000 holes: 0.27 s instead of 0.95 s).  Faces in a row along x
+        are united scanned along x (turned a quarter turn and back, exact:
+        :func:`.scanwork.plan`): 4 000 circles of different radii on a row, 31 s scanned
+        along y, 0.1 s along x.  The deadline is checked between groups (:meth:`tick`), each
+        group weighed by its scan-line work when all the faces' could come near the
+        deadline."""
         if not faces:
             return mf.CrossSection()
         left = (self.deadline.at - time.monotonic() if self.deadline is not None
