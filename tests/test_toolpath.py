@@ -186,8 +186,9 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
         elif kind == 1:
             cuts.append(Cut("score", "p", [Line((x, y), (x + 3, y + 1))], False))
         else:
-            cuts.append(Cut("cut_outer", "p", [Line((x, y), (x + 2, y)), Line((x + 2, y), (x + 2, y + 2)),
-                                               Line((x + 2, y + 2), (x, y))], True))
+            tri = [Line((x, y), (x + 2, y)), Line((x + 2, y), (x + 2, y + 2)),
+                   Line((x + 2, y + 2), (x, y))]
+            cuts.append(Cut("cut_outer", "p", tri, True))
     assert len(cuts) > TOUR_SMALL
     for at in [(-50.0, 0.0)] if on_grid else [(150.0, 150.0)]:
         got, want = _tour(cuts, at), _tour_whole(cuts, at)
