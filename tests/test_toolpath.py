@@ -144,3 +144,60 @@ def test_every_hole_is_cut_before_its_outline(holes):
                  f"{body}\n}}\n")
     ops = [c.operation for c in cuts]
     assert ops == ["cut_inner"] * len(holes) + ["cut_outer"]
+
+
+def _tour_whole(cuts, at):
+    """The tour as it was before the grid (issue 74): each step measures every entry left."""
+    import numpy as np
+    from aidl_lang.output.fabrication.toolpath import _enter, _entries
+    entries = [_entries(c) for c in cuts]
+    E = np.array([p for es in entries for p in es], dtype=float)
+    owner = np.repeat(np.arange(len(cuts)), [len(es) for es in entries])
+    index = np.concatenate([np.arange(len(es)) for es in entries])
+    alive = np.ones(len(E), dtype=bool)
+    out = []
+    for _ in range(len(cuts)):
+        d = np.hypot(E[:, 0] - at[0], E[:, 1] - at[1])
+        d[~alive] = np.inf
+        best = int(np.argmin(d))
+        k = int(owner[best])
+        alive[owner == k] = False
+        out.append(_enter(cuts[k], int(index[best])))
+        at = out[-1].end
+    return out
+
+
+@pytest.mark.parametrize("on_grid", [False, True])
+def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid):
+    """Issue 74: past TOUR_SMALL entries the tour looks its next entry up in a grid, and the
+    depths find the boxes around each loop's point through a grid: the same order (equally
+    near entries on a grid of holes: the first) and the same depths as every entry measured
+    and every box tested at each step."""
+    import numpy as np
+    from aidl_lang.geometry.curves import Circle, Line, Loop
+    from aidl_lang.output.fabrication.toolpath import TOUR_SMALL, Cut, _depths, _depths_each, _tour
+    rng = np.random.default_rng(74)
+    cuts = []
+    for k in range(400):
+        x, y = (rng.integers(0, 20, 2) * 5.0) if on_grid else rng.uniform(0, 200, 2)
+        kind = k % 3
+        if kind == 0:
+            cuts.append(Cut("cut_inner", "p", [Circle((x, y), 1.0)], True))
+        elif kind == 1:
+            cuts.append(Cut("score", "p", [Line((x, y), (x + 3, y + 1))], False))
+        else:
+            tri = [Line((x, y), (x + 2, y)), Line((x + 2, y), (x + 2, y + 2)),
+                   Line((x + 2, y + 2), (x, y))]
+            cuts.append(Cut("cut_outer", "p", tri, True))
+    assert len(cuts) > TOUR_SMALL
+    for at in [(-50.0, 0.0)] if on_grid else [(150.0, 150.0)]:
+        got, want = _tour(cuts, at), _tour_whole(cuts, at)
+        assert [(c.segments, c.closed) for c in got] == [(c.segments, c.closed) for c in want]
+    loops = [Loop([Circle((float(x), float(y)), float(r))]) for x, y, r in
+             zip(rng.uniform(0, 60, 250), rng.uniform(0, 60, 250), rng.uniform(0.5, 20, 250))]
+    polys = [lp.points() for lp in loops]
+    boxes = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()] for p in polys])
+    probe = np.array([p[0] for p in polys])
+    area = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
+    depth = _depths(loops)
+    assert depth == _depths_each(polys, boxes, probe, area) and max(depth) >= 10

@@ -101,7 +101,8 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
         out.append(c)
         at = after(c)
     loops = [(i, lp) for i, p in enumerate(parts) for lp in p.loops]
-    depth = _depths([lp for _, lp in loops])
+    polys: dict = {}                # id(loop) -> its polyline, made once for both depths
+    depth = _depths([lp for _, lp in loops], polys)
     # a part's depth: how deep its outline lies (an island in another part's window is deeper)
     part_depth = {}
     for (i, lp), d in zip(loops, depth):
@@ -114,7 +115,7 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
     # around this one's (parts that overlap, e.g. a router's paths offset by the tool radius
     # on parts closer than the tool) must not put an outline before its own holes
     for i, got in by_part.items():
-        own = _depths([lp for _, lp in got])
+        own = _depths([lp for _, lp in got], polys)
         by_part[i] = [(d, lp) for d, (_, lp) in zip(own, got)]
     remaining = sorted(by_part, key=lambda i: -part_depth.get(i, 0))
     while remaining:
@@ -158,8 +159,11 @@ def _dist(a: Point, b: Point) -> float:
 def _tour(cuts: list[Cut], at: Point, after=lambda c: c.end) -> list[Cut]:
     """``cuts`` in a greedy nearest-neighbour order from ``at``: each next cut is the one with
     an entry (an open path's either end, a closed loop's segment ends) nearest to where the
-    last ended; an open path is turned round, a loop rotated to start there.  Each step is
-    one array operation over the entries left (n cuts of k entries: O(n^2 k))."""
+    last ended (of equally near entries the first); an open path is turned round, a loop
+    rotated to start there.  Up to :data:`TOUR_SMALL` entries each step is one array
+    operation over the entries left; more are looked up in a grid (:class:`_Entries`): the
+    same order, in about constant work per step where the entries are spread (20,000 holes:
+    10.7 s -> about 1 s)."""
     if not cuts:
         return []
     entries = [_entries(c) for c in cuts]
@@ -167,17 +171,92 @@ def _tour(cuts: list[Cut], at: Point, after=lambda c: c.end) -> list[Cut]:
     owner = np.repeat(np.arange(len(cuts)), [len(es) for es in entries])
     index = np.concatenate([np.arange(len(es)) for es in entries])
     alive = np.ones(len(E), dtype=bool)
+    grid = _Entries(E) if len(E) > TOUR_SMALL else None
+    first = np.concatenate(([0], np.cumsum([len(es) for es in entries])))
     out = []
     for _ in range(len(cuts)):
-        d = np.hypot(E[:, 0] - at[0], E[:, 1] - at[1])
-        d[~alive] = np.inf
-        best = int(np.argmin(d))
+        if grid is None:
+            d = np.hypot(E[:, 0] - at[0], E[:, 1] - at[1])
+            d[~alive] = np.inf
+            best = int(np.argmin(d))
+        else:
+            best = grid.nearest(at, alive)
         k = int(owner[best])
-        alive[owner == k] = False
+        alive[first[k]:first[k + 1]] = False            # = alive[owner == k]
+        if grid is not None:
+            grid.drop(first[k], first[k + 1])
         c = _enter(cuts[k], int(index[best]))
         out.append(c)
         at = after(c)
     return out
+
+
+TOUR_SMALL = 256      # entries of one tour searched whole at each step
+
+
+class _Entries:
+    """The entries of a tour (``E``, n x 2, mm) in a uniform grid of about two per cell, with
+    the number of live entries of each cell, for :meth:`nearest`."""
+
+    def __init__(self, E: np.ndarray):
+        self.E = E
+        lo, hi = E.min(axis=0), E.max(axis=0)
+        span = np.maximum(hi - lo, 1e-9)
+        h = max(float(np.sqrt(span[0] * span[1] * 2.0 / len(E))), float(span.max()) / 2048,
+                1e-9)
+        self.lo, self.h = lo, h
+        self.nx = int(min(2048, span[0] // h + 1))
+        self.ny = int(min(2048, span[1] // h + 1))
+        ij = self._cell(E)
+        key = ij[:, 1] * self.nx + ij[:, 0]
+        self.order = np.argsort(key, kind="stable")
+        self.start = np.searchsorted(key[self.order], np.arange(self.nx * self.ny + 1))
+        self.live = np.bincount(key, minlength=self.nx * self.ny).reshape(self.ny, self.nx)
+        self.key = key
+
+    def _cell(self, P) -> np.ndarray:
+        ij = np.floor((np.asarray(P, dtype=float).reshape(-1, 2) - self.lo) / self.h)
+        return np.clip(ij, 0, [self.nx - 1, self.ny - 1]).astype(np.int64)
+
+    def drop(self, a: int, b: int) -> None:
+        """Entries ``a:b`` are gone (their cut is done)."""
+        np.subtract.at(self.live.reshape(-1), self.key[a:b], 1)
+
+    def _gather(self, x0, y0, x1, y1) -> np.ndarray:
+        """The entries (indices into ``E``) of the cells x0..x1, y0..y1."""
+        parts = [self.order[self.start[y * self.nx + x0]:self.start[y * self.nx + x1 + 1]]
+                 for y in range(y0, y1 + 1)]
+        return np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
+
+    def nearest(self, at: Point, alive: np.ndarray) -> int:
+        """The live entry nearest to ``at`` (the least index of equally near ones): the
+        distances are those of the whole-array search, over the cells of every entry no
+        farther than the nearest one found in the smallest square of cells around ``at``
+        that holds a live entry."""
+        cx, cy = (int(v) for v in self._cell(at)[0])
+        r = 1
+        while True:
+            x0, x1 = max(cx - r, 0), min(cx + r, self.nx - 1)
+            y0, y1 = max(cy - r, 0), min(cy + r, self.ny - 1)
+            if self.live[y0:y1 + 1, x0:x1 + 1].any():
+                break
+            r *= 2
+        idx = self._gather(x0, y0, x1, y1)
+        idx = idx[alive[idx]]
+        d = np.hypot(self.E[idx, 0] - at[0], self.E[idx, 1] - at[1])
+        reach = float(d.min())
+        # every entry within `reach` of `at`: the cells of the box around it (one more cell
+        # each way: a point on a cell's edge)
+        a = np.floor((np.array([at[0] - reach, at[1] - reach]) - self.lo) / self.h) - 1
+        b = np.floor((np.array([at[0] + reach, at[1] + reach]) - self.lo) / self.h) + 1
+        X0, Y0 = (int(v) for v in np.clip(a, 0, [self.nx - 1, self.ny - 1]))
+        X1, Y1 = (int(v) for v in np.clip(b, 0, [self.nx - 1, self.ny - 1]))
+        if X0 < x0 or Y0 < y0 or X1 > x1 or Y1 > y1:
+            idx = self._gather(min(X0, x0), min(Y0, y0), max(X1, x1), max(Y1, y1))
+            idx = idx[alive[idx]]
+            d = np.hypot(self.E[idx, 0] - at[0], self.E[idx, 1] - at[1])
+        ties = idx[d == d.min()]
+        return int(ties.min())
 
 
 def _entries(c: Cut) -> list[Point]:
@@ -196,19 +275,50 @@ def _enter(c: Cut, j: int) -> Cut:
     return c
 
 
-def _depths(loops: list[Loop]) -> list[int]:
+def _depths(loops: list[Loop], made: dict | None = None) -> list[int]:
     """For each loop, how many of the others enclose it (a point of it inside their
-    polylines, by the even-odd rule), the bounding boxes tested first."""
+    polylines, by the even-odd rule), the bounding boxes tested first: the loops whose box
+    holds a loop's point found through a grid of the points (:class:`..part.nearby._Grid`),
+    each box's points tested in one array operation; every box against every point when
+    they would be too many pairs.  ``made``: ``{id(loop): polyline}`` already made (kept
+    and added to)."""
     n = len(loops)
     if n < 2:
         return [0] * n
-    polys = [lp.points() for lp in loops]
+    made = {} if made is None else made
+    polys = []
+    for lp in loops:
+        p = made.get(id(lp))
+        if p is None:
+            p = made[id(lp)] = lp.points()
+        polys.append(p)
     boxes = np.array([[p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()]
                       if len(p) else [0.0, 0.0, 0.0, 0.0] for p in polys])
     # a point on each loop: its first vertex (a loop touches no other, so any of its points
     # is inside exactly the loops that enclose it)
     probe = np.array([p[0] if len(p) else (0.0, 0.0) for p in polys])
     area = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
+    from ..part.nearby import TooManyPairs, _Grid, _median
+    try:
+        cell = max(_median(np.maximum(boxes[:, 2:] - boxes[:, :2], 0.0).ravel()), 1e-6)
+        j, i = _Grid(probe, cell).in_boxes(boxes[:, :2], boxes[:, 2:])
+    except TooManyPairs:
+        return _depths_each(polys, boxes, probe, area)
+    keep = area[j] > area[i]
+    j, i = j[keep], i[keep]
+    out = np.zeros(n, dtype=np.int64)
+    order = np.argsort(j, kind="stable")
+    j, i = j[order], i[order]
+    cuts = np.flatnonzero(np.r_[True, j[1:] != j[:-1]]) if len(j) else np.zeros(0, int)
+    for a, b in zip(cuts.tolist(), cuts[1:].tolist() + [len(j)]):
+        who = i[a:b]
+        out[who[_inside_all(probe[who], polys[int(j[a])])]] += 1
+    return out.tolist()
+
+
+def _depths_each(polys, boxes, probe, area) -> list[int]:
+    """:func:`_depths` one loop at a time against every box."""
+    n = len(polys)
     depth = []
     for i in range(n):
         x, y = probe[i]
@@ -216,6 +326,22 @@ def _depths(loops: list[Loop]) -> list[int]:
                               & (y <= boxes[:, 3]) & (area > area[i]))
         depth.append(sum(1 for j in cand if _inside((x, y), polys[j])))
     return depth
+
+
+def _inside_all(P: np.ndarray, poly: np.ndarray) -> np.ndarray:
+    """:func:`_inside` of each point of ``P`` (m x 2), the same operations on each; in
+    blocks of at most 4,000,000 (point, edge) pairs."""
+    a = poly
+    b = np.roll(poly, -1, axis=0)
+    out = np.zeros(len(P), dtype=bool)
+    step = max(1, 4_000_000 // max(1, len(a)))
+    for s in range(0, len(P), step):
+        x, y = P[s:s + step, :1], P[s:s + step, 1:]
+        cross = (a[:, 1] > y) != (b[:, 1] > y)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            xs = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+        out[s:s + step] = np.count_nonzero(cross & (x < xs), axis=1) % 2 == 1
+    return out
 
 
 def _inside(p: Point, poly: np.ndarray) -> bool:

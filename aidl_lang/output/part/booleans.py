@@ -230,13 +230,15 @@ class Renderer:
         """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
         results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
         edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
-        line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Disjoint
-        faces cost a little more (each level passes them again: 0.3 s instead of 0.1 s for
-        5 000 small circles).  Faces in a row along x are united scanned along x (turned a
-        quarter turn and back, exact: :func:`.scanwork.plan`): 4 000 circles of different
-        radii on a row, 31 s scanned along y, 0.1 s along x.  The deadline is checked
-        between groups (:meth:`tick`), each group weighed by its scan-line work when all the
-        faces' could come near the deadline."""
+        line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Faces whose
+        boxes are apart (:func:`_apart`: the holes of a perforated sheet) are united in one
+        pass, the same polygons in the same order as in groups, where each level would pass
+        them all again (20,000 holes: 0.27 s instead of 0.95 s).  Faces in a row along x
+        are united scanned along x (turned a quarter turn and back, exact:
+        :func:`.scanwork.plan`): 4 000 circles of different radii on a row, 31 s scanned
+        along y, 0.1 s along x.  The deadline is checked between groups (:meth:`tick`), each
+        group weighed by its scan-line work when all the faces' could come near the
+        deadline."""
         if not faces:
             return mf.CrossSection()
         left = (self.deadline.at - time.monotonic() if self.deadline is not None
@@ -244,7 +246,10 @@ class Renderer:
         turn, watched = plan(faces, left)
         if turn:
             faces = turned(faces)
-        while len(faces) > UNION_GROUP:
+        # faces apart (no two boxes meet) unite in one pass: in groups every level would pass
+        # them all again, for the same result (the same polygons in the same order)
+        grouped = len(faces) > UNION_GROUP and not _apart(faces)
+        while grouped and len(faces) > UNION_GROUP:
             nxt = []
             for i in range(0, len(faces), UNION_GROUP):
                 self.tick(s, faces[i:i + UNION_GROUP], watched)
@@ -1104,6 +1109,19 @@ class Renderer:
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
         return out
+
+
+def _apart(faces: list) -> bool:
+    """True when no two of ``faces`` (non-empty ``CrossSection`` s) have boxes that meet
+    (touching counts as meeting): their union is every face as it is, so it is the same
+    however they are grouped.  False for an empty face or too many pairs to list."""
+    from .nearby import TooManyPairs, box_pairs
+    if any(f.is_empty() for f in faces):
+        return False
+    try:
+        return not len(box_pairs(np.array([f.bounds() for f in faces], float)))
+    except TooManyPairs:
+        return False
 
 
 def _chain_points(segs: list) -> np.ndarray:

@@ -51,7 +51,11 @@ STACKED_HINT = ("draw each curve once: copies at the same place (a pattern or te
                 "repeated without moving it) add nothing to the part; this bound is the same "
                 "at every `--budget`")
 POLYGONS_PER_CHECK = 256      # polygons recovered between two looks at the deadline (~25 ms)
-MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)
+MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a few seconds)...
+# ... or this many per edge matched, when more: the 2,250,000 edges of 50,000 holes have ~4.5
+# each; curves stacked on top of each other give hundreds or thousands
+CANDIDATES_PER_EDGE = 16
+WHOLE_PER_BLOCK = 4096        # whole-circle polygons of one size measured at once
 
 
 class Provenance:
@@ -217,22 +221,62 @@ class Provenance:
         if not flat:
             return [[] for _ in shapes]
         A = np.concatenate(flat)
-        B = np.concatenate([np.roll(P, -1, axis=0) for P in flat])
+        sizes = np.array([len(P) for P in flat], dtype=np.int64)
+        starts = np.cumsum(sizes) - sizes
+        nxt = np.arange(1, len(A) + 1)              # each polygon's vertices turned by one
+        nxt[starts + sizes - 1] = starts            # (np.roll(P, -1) of each)
+        B = A.take(nxt, axis=0)
         scale = max(1.0, float(np.abs(A).max()))
         cid = self._chords().match(A, B, MATCH_TOL + 1e-11 * scale)
         self.unmatched += int((cid < 0).sum())
-        out, at, done = [], 0, 0
+        whole = self._whole_circles(A, cid, starts, sizes)
+        out, done = [], 0
         for ps in polys:
             loops = []
             for P in ps:
                 if deadline is not None and done % POLYGONS_PER_CHECK == 0:
                     deadline.check("the exact outlines")
+                lp = whole.get(done)
+                if lp is None:
+                    at = int(starts[done])
+                    lp = self.recover(P, cid[at:at + len(P)])
                 done += 1
-                lp = self.recover(P, cid[at:at + len(P)])
-                at += len(P)
                 if lp.segments:
                     loops.append(lp)
             out.append(loops)
+        return out
+
+    def _whole_circles(self, A, cid, starts, sizes) -> dict:
+        """``{polygon: Loop}`` of the polygons (``A[starts[i]:starts[i] + sizes[i]]``, edges'
+        carriers ``cid``) whose every edge is on one circle: :meth:`recover`'s loop of each
+        (the whole :class:`Circle` the polygon's way round, or an empty loop when the edges
+        turn less than a full turn about its center: part of one circle, no area), the
+        polygons of one size at a time in array operations (the holes of a perforated
+        sheet: one row each)."""
+        carriers = self.carriers
+        if not carriers:
+            return {}
+        lo = np.minimum.reduceat(cid, starts)
+        one = (lo == np.maximum.reduceat(cid, starts)) & (lo >= 0) & (sizes >= 3)
+        is_circle = np.array([c[0] == "C" for c in carriers])
+        one &= is_circle[np.maximum(lo, 0)]
+        out: dict = {}
+        for m in np.unique(sizes[one]).tolist():
+            rows = np.flatnonzero(one & (sizes == m))
+            for b in range(0, len(rows), WHOLE_PER_BLOCK):
+                r = rows[b:b + WHOLE_PER_BLOCK]
+                C = np.array([carriers[k][1:3] for k in lo[r].tolist()])
+                # the same operations as _sweep_sum's, a row per polygon (a row's sum is the
+                # same pairwise sum as a polygon's own array's, bit for bit)
+                idx = starts[r, None] + np.arange(m + 1) % m
+                X = A[idx, 0] - C[:, :1]
+                Y = A[idx, 1] - C[:, 1:]
+                a = np.arctan2(X[:, :-1] * Y[:, 1:] - Y[:, :-1] * X[:, 1:],
+                               X[:, :-1] * X[:, 1:] + Y[:, :-1] * Y[:, 1:])
+                for i, k, total in zip(r.tolist(), lo[r].tolist(), a.sum(axis=1).tolist()):
+                    c = carriers[k]
+                    out[i] = (Loop([Circle((c[1], c[2]), c[3], total > 0)])
+                              if abs(abs(total) - 2 * math.pi) < 1e-6 else Loop([]))
         return out
 
     def recover(self, poly: np.ndarray, cid: np.ndarray | None = None) -> Loop:
@@ -418,6 +462,16 @@ def _distinct_chords(A, B, C):
     swap = (A[:, 0] > B[:, 0]) | ((A[:, 0] == B[:, 0]) & (A[:, 1] > B[:, 1]))
     lo = np.where(swap[:, None], B, A)
     hi = np.where(swap[:, None], A, B)
+    # first one sort of a hash of each chord (its floats' bits, -0.0 as 0.0): equal chords
+    # hash alike, so chords whose hashes all differ have no repeats (a perforated sheet's
+    # 900,000 chords: one sort of one key, not five)
+    h = C.astype(np.uint64)
+    with np.errstate(over="ignore"):
+        for col in (lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]):
+            h = (h ^ (col + 0.0).view(np.uint64)) * np.uint64(0x100000001B3)
+    h.sort()
+    if not (h[1:] == h[:-1]).any():
+        return A, B, C
     order = np.lexsort((C, hi[:, 1], hi[:, 0], lo[:, 1], lo[:, 0]))
     lo, hi, c = lo[order], hi[order], C[order]
     new = np.r_[True, (lo[1:] != lo[:-1]).any(axis=1) | (hi[1:] != hi[:-1]).any(axis=1)
@@ -494,7 +548,9 @@ class _Grid:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
         q = np.concatenate(qs)
         c = np.concatenate(cs)
-        pair = np.sort(q * len(self.A) + c)          # np.unique without importing numpy.ma
+        # np.unique without importing numpy.ma; sorted stably: the pairs come in three runs of
+        # ascending edges (one per column of cells), which a merge sort takes 3 times faster
+        pair = np.sort(q * len(self.A) + c, kind="stable")
         pair = pair[np.r_[True, pair[1:] != pair[:-1]]]
         q, c = pair // len(self.A), pair % len(self.A)
         a, b = self.A.take(c, axis=0), self.B.take(c, axis=0)      # = A[c], B[c] (faster)
@@ -533,19 +589,41 @@ class _Grid:
         return lo, cnt
 
     def match(self, P, Q, tol) -> np.ndarray:
+        """The carrier of each query edge ``P[i] -> Q[i]`` (N x 2 each, mm): that of a chord
+        holding it within ``tol`` (mm) either way round, -1 for none (see the module
+        docstring); raises :class:`~aidl_lang.limits.OutOfBudget` past
+        :data:`MAX_CANDIDATES` candidate pairs (or :data:`CANDIDATES_PER_EDGE` per edge).
+        The edges are looked up in the order of their midpoints' cells (a search of the
+        sorted cell keys in sorted order walks the table once: ten times faster than in the
+        polygons' order at 900,000 edges); the answer is the same in any order."""
+        n = len(P)
+        if not len(self.keys):
+            return np.full(n, -1, dtype=np.int64)
+        M = (P + Q) / 2
+        order = np.argsort(self._key(M), kind="stable")
+        cid, multi = self._match_sorted(P.take(order, axis=0), Q.take(order, axis=0),
+                                         M.take(order, axis=0), tol)
+        out = np.empty(n, dtype=np.int64)
+        out[order] = cid
+        if multi:
+            _settle(out, {int(order[qi]): ks for qi, ks in multi.items()})
+        return out
+
+    def _match_sorted(self, P, Q, M, tol) -> tuple[np.ndarray, dict]:
+        """:meth:`match` of edges in the order of their cells: each edge's first carrier
+        (the least index) and ``{edge: [carriers, ascending]}`` of the edges several
+        carriers hold (edges numbered as given), for :func:`_settle`."""
         n = len(P)
         cid = np.full(n, -1, dtype=np.int64)
-        if not len(self.keys):
-            return cid
-        M = (P + Q) / 2
         # each query edge's candidate chords: the samples of its midpoint's cell and the eight
         # around it (_cells); first only how many, to refuse before any work is done
         one = self._cells(M) if n <= EDGES_PER_BLOCK else None      # one block: kept
         ends = np.cumsum(one[1].sum(axis=0) if one is not None else np.concatenate(
             [self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
              for b in range(0, n, EDGES_PER_BLOCK)]))
-        if ends[-1] > MAX_CANDIDATES:
-            raise OutOfBudget(f"more than {MAX_CANDIDATES:,} (edge, chord) pairs to match "
+        most = max(MAX_CANDIDATES, CANDIDATES_PER_EDGE * n)
+        if ends[-1] > most:
+            raise OutOfBudget(f"more than {most:,} (edge, chord) pairs to match "
                               "(thousands of curves drawn on top of each other)",
                               "the exact outlines", hint=STACKED_HINT)
         # the queries in blocks of at most PAIRS_PER_BLOCK candidate pairs, so that memory
@@ -565,7 +643,7 @@ class _Grid:
         q = np.concatenate(qs)
         k = np.concatenate(ks)
         if not len(q):
-            return cid
+            return cid, {}
         # several chords may hold one (short) edge, where curves meet: keep them all for now
         first = np.full(n, -1, dtype=np.int64)
         order = np.lexsort((k, q))
@@ -573,19 +651,23 @@ class _Grid:
         starts = np.flatnonzero(np.r_[True, q[1:] != q[:-1]])
         first[q[starts]] = k[starts]
         multi = np.r_[q[1:] == q[:-1], False] | np.r_[False, q[1:] == q[:-1]]
-        cid = first
-        if multi.any():
-            # an edge several chords hold (a short edge where curves meet) takes the carrier
-            # it shares with a neighbouring edge, else the first
-            cand: dict = {}
-            for qi, ki in zip(q[multi].tolist(), k[multi].tolist()):
-                cand.setdefault(qi, []).append(ki)
-            for qi, ks in cand.items():
-                for nb in (int(cid[qi - 1]), int(cid[(qi + 1) % n])):
-                    if nb in ks:
-                        cid[qi] = nb
-                        break
-        return cid
+        cand: dict = {}
+        for qi, ki in zip(q[multi].tolist(), k[multi].tolist()):
+            cand.setdefault(qi, []).append(ki)
+        return first, cand
+
+
+def _settle(cid: np.ndarray, cand: dict) -> None:
+    """An edge several chords hold (a short edge where curves meet: ``cand`` ``{edge:
+    [carriers]}``) takes the carrier it shares with a neighbouring edge of ``cid`` (the edges
+    in order, each after the ones before it settled), else its first."""
+    n = len(cid)
+    for qi in sorted(cand):
+        ks = cand[qi]
+        for nb in (int(cid[qi - 1]), int(cid[(qi + 1) % n])):
+            if nb in ks:
+                cid[qi] = nb
+                break
 
 
 def _runs(cid: np.ndarray, carriers: list, scale: float):
