@@ -691,3 +691,38 @@ def test_the_facing_search_keeps_every_facing_pair_in_order(seed):
     assert len(want[0]) > 200
     for a, b in zip(want, got):
         assert np.array_equal(a, b)
+
+
+def test_cornerless_loops_are_those_the_step_check_passes_over():
+    """parts._check_steps skips, all at once (parts._cornerless), the loops it would pass
+    over one by one for having fewer than two corners: on circles, polygons, sawteeth, loops
+    with repeated vertices and tiny ones, a loop is said cornerless only when the per-loop
+    turns (with its zero-length edges dropped) have fewer than two past CORNER."""
+    from aidl_lang.output.checks.parts import CORNER, _cornerless
+    rng = np.random.default_rng(5)
+    loops = []
+    for k in range(300):
+        n = int(rng.integers(3, 60))
+        a = np.sort(rng.random(n)) * 2 * np.pi if k % 2 else np.linspace(0, 2 * np.pi, n,
+                                                                          endpoint=False)
+        r = 1 + (0.3 * rng.random(n) if k % 3 == 0 else 0)
+        P = np.column_stack([r * np.cos(a), r * np.sin(a)]) + rng.uniform(-50, 50, 2)
+        if k % 7 == 0:
+            P = np.repeat(P, 2, axis=0)                  # every vertex twice: zero edges
+        loops.append(P)
+
+    def per_loop(P):
+        e = np.roll(P, -1, axis=0) - P
+        L = np.hypot(*e.T)
+        keep = L > 1e-9
+        e = e[keep]
+        if keep.sum() < 4:
+            return True
+        ep = np.roll(e, 1, axis=0)
+        turn = np.degrees(np.arctan2(ep[:, 0] * e[:, 1] - ep[:, 1] * e[:, 0],
+                                     np.einsum("ij,ij->i", ep, e)))
+        return np.count_nonzero(np.abs(turn) > CORNER) < 2
+    got = _cornerless(loops)
+    want = np.array([per_loop(P) for P in loops])
+    assert not np.any(got & ~want)                       # never skips a loop it must look at
+    assert np.count_nonzero(got) > 50                    # and skips the round ones at once
