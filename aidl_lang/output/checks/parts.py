@@ -260,10 +260,10 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     if cut_open is None:
         cut_open = _cut_openings(loops, cuts)
     found = []
-    plain = _cornerless(loops)
-    for P, opening, skip in zip(loops, cut_open, plain):
-        if opening or skip:
-            continue                             # an opening a hole cuts; no two corners
+    mine = [P for P, opening in zip(loops, cut_open) if not opening]   # not a hole's opening
+    for P, skip in zip(mine, _cornerless(mine)):
+        if skip:
+            continue                             # fewer than two corners
         P = np.asarray(P, dtype=float)
         e = np.roll(P, -1, axis=0) - P
         L = np.hypot(*e.T)

@@ -555,3 +555,26 @@ def boundary(loops, fid: int):
     B = np.concatenate([np.concatenate([p[1:], p[:1]]) for p in polys])
     f = np.full(len(V), fid, dtype=np.intp)
     return V, f, V, B, f
+
+
+def boundaries(groups: list, first: int):
+    """What :func:`boundary` gives for each group of closed loops ``groups[k]`` with feature
+    ``first + k``, concatenated in that order, in a few array operations (not a dozen per
+    group: 20,000 holes' regions).  ``(V, vfeat, A, B, sfeat)``."""
+    polys, fids = [], []
+    for k, loops in enumerate(groups):
+        for p in loops:
+            p = np.asarray(p, dtype=float).reshape(-1, 2)
+            if len(p) >= 2:
+                polys.append(p)
+                fids.append(first + k)
+    if not polys:
+        z = np.zeros((0, 2))
+        return z, np.zeros(0, np.intp), z, z, np.zeros(0, np.intp)
+    V = np.concatenate(polys)
+    sizes = np.array([len(p) for p in polys], dtype=np.intp)
+    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+    idx = np.arange(len(V))
+    B = V[start + (idx - start + 1) % np.repeat(sizes, sizes)]
+    f = np.repeat(np.array(fids, dtype=np.intp), sizes)
+    return V, f, V, B, f
