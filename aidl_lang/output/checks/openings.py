@@ -33,7 +33,8 @@ from ...diagnostics import DiagnosticSink, Label
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
-from ..part.nearby import boundaries, boundary, box_pairs, box_pairs_between, close_pairs
+from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
+                           close_pairs)
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
                      _insert_fix, _inside, _loop_boxes, _part_of, _pct, _signed, _significant,
                      _solids_within, _union)

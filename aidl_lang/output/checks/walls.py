@@ -503,7 +503,8 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     that almost meet: a dog-bone tag whose end circles nearly touch beyond the bar).
 
     Found as a gap search between the non-adjacent edges of one loop
-    (:func:`.nearby.close_pairs_facing`, every vertex against the segments within ``t`` that run against one of its tangents, O(n log n)):
+    (:func:`.nearby.close_pairs_facing`, every vertex against the segments within ``t``
+    that run against one of its tangents, O(n log n)):
     a pair counts when the two stretches face each other (the vertex's tangent and the
     segment's direction are opposite within 30 degrees, :data:`FACING`) and the middle of the
     gap lies outside the material.  The loops of holes' openings are left out (a hole drawn

@@ -12,6 +12,9 @@ keeps the geometry checks (:mod:`.checks`) O(n log n) in the number of holes.
   minimum distance between two non-crossing polygon boundaries is the least of these (it is
   reached at a vertex of one of them).  A grid over the vertices is searched in each
   segment's bounding box grown by the distance.
+* :func:`close_pairs_facing`: the same pairs within closed loops where only a vertex whose
+  tangent runs against the segment matters (W0519's slits): the segments by direction
+  class, each against the vertices that can face it (no neighbours along a curve).
 
 Small inputs (at most :data:`SMALL_BOXES` boxes, :data:`SMALL_VERTS` vertices) are measured
 more simply: every pair of boxes, and each segment against the vertices in its y band (found
