@@ -473,8 +473,8 @@ class _Near:
         self.loops[part] = lp
         found: dict = {i: [] for i in range(len(regions))}
         if lp:
-            boxes = [(p[:, 0].min(), p[:, 1].min(), p[:, 0].max(), p[:, 1].max()) for p in lp]
-            pairs = box_pairs(boxes + [r.bounds() for r in regions])
+            pairs = box_pairs(np.vstack([_loop_boxes(lp), np.array(
+                [r.bounds() for r in regions], dtype=float).reshape(-1, 4)]))
             n = len(lp)
             for i, j in pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]:
                 found[int(j) - n].append(int(i))
