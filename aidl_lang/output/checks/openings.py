@@ -216,17 +216,18 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
     shapes (two solids that nearly meet around a gap).  ``tick()``: the compile's deadline,
     looked at as the openings are searched.  ``cut_open``: :func:`.common._cut_openings` of
     ``loops``, when the caller has it."""
-    inner = [k for k, P in enumerate(loops) if _signed(P) < 0]
+    signed = [_signed(P) for P in loops]         # once per loop (20,000 holes: 3 times)
+    inner = [k for k, a in enumerate(signed) if a < 0]
     if not inner:
         return
     if cut_open is None:
         cut_open = _cut_openings(loops, cuts)
     limit = max(2 * t * t, 1.0)
-    _check_enclosed(d, s, [loops[k] for k in inner if -_signed(loops[k]) >= limit], cuts, sink,
+    _check_enclosed(d, s, [loops[k] for k in inner if -signed[k] >= limit], cuts, sink,
                     tick)
     for k in inner:
         P = loops[k]
-        area = -_signed(P)
+        area = -signed[k]
         if area >= limit or cut_open[k]:
             continue
         x0, y0 = P.min(axis=0)
