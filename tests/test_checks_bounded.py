@@ -118,15 +118,16 @@ def test_a_family_past_its_share_of_the_time_says_what_it_did_not_check(monkeypa
 
 def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
     """Past the pair limit the search stops before listing them (output/part/nearby.py's
-    TooManyPairs) and W0519 says so instead of a warning."""
+    TooManyPairs) and W0519 says so instead of a warning.  (The slit search lists only
+    the vertices that face a segment, 6 per direction class for this tag: limit 5.)"""
     from aidl_lang.output.part import nearby
-    monkeypatch.setattr(nearby, "MAX_PAIRS", 50)
-    monkeypatch.setattr(nearby, "CHUNK", 20)
+    monkeypatch.setattr(nearby, "MAX_PAIRS", 5)
+    monkeypatch.setattr(nearby, "CHUNK", 2)
     monkeypatch.setattr(nearby, "SMALL_VERTS", 10)      # the chunked grid path
     c = compile_source(TAG, "tag.aidl")
     assert not c.sink.has_errors
     (note,) = [d for d in c.sink.items if d.code == "W0521" and "(W0519)" in d.message]
-    assert "more than the 50 it measures" in note.message
+    assert "more than the 5 it measures" in note.message
     assert "W0519" not in [d.code for d in c.sink.items]
 
 
@@ -621,3 +622,107 @@ def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
     assert e and "in the comparison with the defaults (W0510) of `plate`" in e[0].message, \
         [d.message for d in c3.sink.items]
     assert e[0].span is not None and e[0].span.line == 3
+
+
+HANG_GUARD = 300.0      # s: a search that has not ended by then never will (it looped)
+
+
+def test_one_segment_whose_box_holds_too_many_vertices_is_refused_not_looped(monkeypatch):
+    """The grid search halves a run of segments whose boxes hold more than CHUNK vertices;
+    a single segment whose box alone held more than MAX_PAIRS was pushed again, forever (a
+    triangle plate's long diagonal over millions of chords of its openings, at --budget 2).
+    Now TooManyPairs (the check's W0521 note); here 5,000 vertices under one diagonal."""
+    import threading
+
+    from aidl_lang.output.part import nearby
+    monkeypatch.setattr(nearby, "MAX_PAIRS", 100)
+    monkeypatch.setattr(nearby, "CHUNK", 50)
+    V = np.random.default_rng(1).random((5000, 2)) * 10
+    A, B = np.array([[0.0, 0.0], [0.0, 0.5]]), np.array([[10.0, 10.0], [0.0, 1.0]])
+    got: dict = {}
+
+    def search():
+        try:
+            nearby.close_pairs(V, np.arange(5000), A, B, np.array([-1, -2]), 0.5,
+                               others=False)
+        except nearby.TooManyPairs as ex:
+            got["count"] = ex.count
+    t = threading.Thread(target=search, daemon=True)
+    t.start()
+    t.join(HANG_GUARD)
+    assert not t.is_alive(), "the search looped"
+    assert got["count"] > 100, got
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_facing_search_keeps_every_facing_pair_in_order(seed):
+    """walls._check_slits asks nearby.close_pairs_facing for its pairs: on a large input
+    (rings of over SMALL_VERTS vertices: zigzags, hairpins, circles, random walks) the pairs
+    whose vertex faces its segment (walls._facing, 30 degrees) are those of close_pairs over
+    every vertex, with the same distances, feet and order."""
+    from aidl_lang.output.checks.walls import FACING, _facing, _ring
+    from aidl_lang.output.part import nearby
+    rng = np.random.default_rng(seed)
+    loops = []
+    for k in range(60):
+        n = int(rng.integers(20, 200))
+        kind = k % 3
+        if kind == 0:       # a zigzag hairpin: sides facing across 0.1-0.6 mm
+            x = np.linspace(0, 10, n // 2)
+            w = rng.uniform(0.1, 0.6)
+            P = np.concatenate([np.column_stack([x, np.zeros_like(x)]),
+                                np.column_stack([x[::-1], np.full_like(x, w)])])
+        elif kind == 1:     # a circle
+            a = np.linspace(0, 2 * np.pi, n, endpoint=False)
+            P = rng.uniform(0.2, 3) * np.column_stack([np.cos(a), np.sin(a)])
+        else:               # a random walk, closed
+            P = np.cumsum(rng.normal(0, 0.3, (n, 2)), axis=0)
+        loops.append(P + rng.uniform(0, 60, 2))
+    V, nxt, prv = _ring(loops)
+    assert len(V) > nearby.SMALL_VERTS
+    idx = np.arange(len(V))
+
+    def facing(res):
+        v, s, d, foot = res
+        ok = _facing(V, nxt, prv, v, s, FACING)
+        return v[ok], s[ok], d[ok], foot[ok]
+    want = facing(nearby.close_pairs(V, idx, V, V[nxt], idx, 0.5, others=False))
+    got = facing(nearby.close_pairs_facing(V, nxt, prv, 0.5, FACING))
+    assert len(want[0]) > 200
+    for a, b in zip(want, got):
+        assert np.array_equal(a, b)
+
+
+def test_cornerless_loops_are_those_the_step_check_passes_over():
+    """parts._check_steps skips, all at once (parts._cornerless), the loops it would pass
+    over one by one for having fewer than two corners: on circles, polygons, sawteeth, loops
+    with repeated vertices and tiny ones, a loop is said cornerless only when the per-loop
+    turns (with its zero-length edges dropped) have fewer than two past CORNER."""
+    from aidl_lang.output.checks.parts import CORNER, _cornerless
+    rng = np.random.default_rng(5)
+    loops = []
+    for k in range(300):
+        n = int(rng.integers(3, 60))
+        a = np.sort(rng.random(n)) * 2 * np.pi if k % 2 else np.linspace(0, 2 * np.pi, n,
+                                                                          endpoint=False)
+        r = 1 + (0.3 * rng.random(n) if k % 3 == 0 else 0)
+        P = np.column_stack([r * np.cos(a), r * np.sin(a)]) + rng.uniform(-50, 50, 2)
+        if k % 7 == 0:
+            P = np.repeat(P, 2, axis=0)                  # every vertex twice: zero edges
+        loops.append(P)
+
+    def per_loop(P):
+        e = np.roll(P, -1, axis=0) - P
+        L = np.hypot(*e.T)
+        keep = L > 1e-9
+        e = e[keep]
+        if keep.sum() < 4:
+            return True
+        ep = np.roll(e, 1, axis=0)
+        turn = np.degrees(np.arctan2(ep[:, 0] * e[:, 1] - ep[:, 1] * e[:, 0],
+                                     np.einsum("ij,ij->i", ep, e)))
+        return np.count_nonzero(np.abs(turn) > CORNER) < 2
+    got = _cornerless(loops)
+    want = np.array([per_loop(P) for P in loops])
+    assert not np.any(got & ~want)                       # never skips a loop it must look at
+    assert np.count_nonzero(got) > 50                    # and skips the round ones at once

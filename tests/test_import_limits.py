@@ -204,3 +204,35 @@ def test_a_drawing_just_over_the_byte_limit_is_refused_at_the_call(tmp_path):
     assert r.returncode == 1
     assert r.stderr.startswith("p.aidl:2:17: error[E0130]: drawing `big.dxf` is larger than "
                                "20000000 bytes"), r.stderr
+
+
+def test_aidl_import_budget_scales_the_shape_limit_of_a_dxf_as_of_an_svg(tmp_path, capsys,
+                                                                          monkeypatch):
+    """`aidl import --budget K` scales the shapes one drawing may give (MAX_ENTITIES x K):
+    the SVG reader honoured it, the DXF reader counted to the unscaled 120,000 and read all
+    250 circles first (then E0304 on the program's size).  Now the DXF stops at 240 (K
+    0.002) with E0130 naming the scaled limit, as the same SVG does (``import_drawing``, what
+    the command runs).  The files written by ezdxf and by hand."""
+    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.read import DrawingError
+    from aidl_lang.limits import DEFAULT_BUDGET
+    rows = ['<svg xmlns="http://www.w3.org/2000/svg" width="600mm" height="600mm" '
+            'viewBox="0 0 600 600">']
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 4
+    m = doc.modelspace()
+    for k in range(250):
+        x, y = 5 + k % 50 * 10, 5 + k // 50 * 10
+        m.add_circle((x, y), 2)
+        rows.append(f'<circle cx="{x}" cy="{y}" r="2"/>')
+    doc.saveas(tmp_path / "many.dxf")
+    from aidl_lang.cli.main import main
+    monkeypatch.chdir(tmp_path)
+    assert main(["import", "many.dxf", "--budget", "0.002"]) == 1    # the command, in process
+    out, err = capsys.readouterr()
+    assert not out and err.startswith("many.dxf: error[E0130]: `many.dxf` has more than 240 "
+                                      "entities"), (out[:200], err)
+    svg = "\n".join(rows + ["</svg>"]).encode()
+    with pytest.raises(DrawingError) as ex:
+        import_drawing(svg, "many.svg", budget=DEFAULT_BUDGET.scaled(0.002))
+    assert (ex.value.code, ex.value.message) == ("E0130", "`many.svg` has more than 240 shapes")

@@ -192,3 +192,38 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
     # the grouping names the stages (a rename of the folders would leave them out)
     assert {"all", "geometry", "booleans", "manifold"} <= set(large), large
     assert how == "dxf" or "toolpath" in large, large
+
+
+def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkeypatch):
+    """W0519's search (walls._check_slits) of a DXF panel of 100 round holes (4,504 chord
+    vertices: the large path): it measured each vertex against the chords beside it on its
+    own circle (21,608 candidate pairs, 4.8 per vertex; 3.2 million at 20,000 holes, past the
+    pair limit at 50,000: the slits went unchecked, W0521), every one then dropped as not
+    facing.  Now only vertices whose tangent runs against the segment are searched: 2 here
+    (the outline's corners), none per hole.  Counts of pairs measured, not time."""
+    from aidl_lang.output import checks
+    from aidl_lang.output.part import nearby
+    seen = {"pairs": 0, "vertices": 0, "on": False}
+    measure, slits = nearby._measure, checks._check_slits
+
+    def counted_measure(V, A, B, vfeat, sfeat, v, s, dist):
+        if seen["on"]:
+            seen["pairs"] += len(v)
+        return measure(V, A, B, vfeat, sfeat, v, s, dist)
+
+    def counted_slits(d, s, loops, *args, **kw):
+        seen["on"], seen["vertices"] = True, seen["vertices"] + sum(len(P) for P in loops)
+        try:
+            return slits(d, s, loops, *args, **kw)
+        finally:
+            seen["on"] = False
+    monkeypatch.setattr(nearby, "_measure", counted_measure)
+    monkeypatch.setattr(checks, "_check_slits", counted_slits)
+    W, H, centres = grid(10, 10)
+    write_dxf(tmp_path / "panel.dxf",
+              [(-W / 2, -H / 2), (W / 2, -H / 2), (W / 2, H / 2), (-W / 2, H / 2)],
+              [(x, y, 2.0) for x, y in centres])
+    res = compile_source(reader("panel.dxf"), str(tmp_path / "panel.aidl"))
+    assert res.ok and not res.sink.items, [d.message for d in res.sink.items]
+    assert seen["vertices"] > nearby.SMALL_VERTS, seen          # the large path
+    assert seen["pairs"] <= 10, seen                            # was 21,608

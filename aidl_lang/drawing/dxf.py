@@ -386,11 +386,14 @@ def _walk(ctx: _DxfReading, entities, depth: int, top=None, inh_layer=None,
     block's coordinates to the world's, every INSERT's on the way composed) into ``ctx``:
     each counted against
     :data:`MAX_ENTITIES` (``E0130``), an INSERT expanded (:func:`_expand_insert`), the
-    selection and the roles applied, the rest read by its reader (:func:`_read_checked`)."""
+    selection and the roles applied, the rest read by its reader (:func:`_read_checked`).
+    The limit is the reading's ``max_shapes`` (:data:`MAX_ENTITIES`, or ``aidl import``'s
+    scaled by its ``--budget``, as the SVG reader's)."""
+    limit = _OPTS.get().max_shapes
     for e in entities:
         ctx.count += 1
-        if ctx.count > MAX_ENTITIES:
-            raise DrawingError("E0130", f"`{ctx.name}` has more than {MAX_ENTITIES} entities",
+        if ctx.count > limit:
+            raise DrawingError("E0130", f"`{ctx.name}` has more than {limit} entities",
                                "select fewer with layer= or split the drawing")
         t = e.dxftype()
         ly = entity_layer(e)
@@ -614,7 +617,8 @@ def _check_insert(ctx: _DxfReading, e, depth: int, head: str, line, rows: int,
     """Raises :class:`DrawingError` ``E0304`` (``head``: the INSERT as the message names it,
     ``line``: its line) when the block of INSERT ``e`` (``rows`` x ``cols`` copies) inserts
     itself, nests blocks past :data:`MAX_BLOCK_DEPTH`, or places more entities, each copy
-    counted (:func:`_block_size`), than :data:`MAX_ENTITIES` leaves."""
+    counted (:func:`_block_size`), than the reading's limit (:data:`MAX_ENTITIES`, or
+    ``aidl import``'s scaled one) leaves."""
     name = ctx.name
     arr = rows * cols > 1
     try:
@@ -632,13 +636,14 @@ def _check_insert(ctx: _DxfReading, e, depth: int, head: str, line, rows: int,
         raise DrawingError("E0304", f"{head} of `{name}` nests blocks more than "
                                     f"{MAX_BLOCK_DEPTH} deep", "explode some of the blocks "
                                                                "in the drawing program", line)
-    if ctx.count + n > MAX_ENTITIES:
+    limit = _OPTS.get().max_shapes
+    if ctx.count + n > limit:
         each = f" ({_plural(size, 'entity')} each)"
         grid = f"an array of {rows} x {cols} copies of block `{e.dxf.name}`{each}" if arr \
             else f"block `{e.dxf.name}`"
         raise DrawingError("E0304", f"{head} of `{name}` is {grid}: "
                                     f"{n:,} entities in all, "
-                                    f"more than the {MAX_ENTITIES:,} entities one drawing "
+                                    f"more than the {limit:,} entities one drawing "
                                     f"may give",
                            "draw one copy and repeat it with a `for` loop in the program, "
                            "or select other layers", line)

@@ -310,9 +310,10 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     if cut_open is None:
         cut_open = _cut_openings(loops, cuts)
     found = []
-    for P, opening in zip(loops, cut_open):
-        if opening:
-            continue                             # an opening a hole cuts
+    mine = [P for P, opening in zip(loops, cut_open) if not opening]   # not a hole's opening
+    for P, skip in zip(mine, _cornerless(mine)):
+        if skip:
+            continue                             # fewer than two corners
         P = np.asarray(P, dtype=float)
         e = np.roll(P, -1, axis=0) - P
         L = np.hypot(*e.T)
@@ -367,6 +368,32 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                      hint=f"align the edges (move or resize `{poke.label}` by {side:.2f} mm, or "
                           "tie them with a constraint) or make the offset clear (at least "
                           f"{t:g} mm) if a ledge is meant")
+
+
+def _cornerless(loops) -> np.ndarray:
+    """Which ``loops`` :func:`_check_steps` would pass over for having fewer than two
+    corners (turns sharper than :data:`CORNER`), for all loops at once: the same turns (the
+    same arithmetic on the same edges) without a dozen NumPy calls per loop (a plate of
+    20,000 round holes read from a DXF: 0.57 -> 0.1 s).  A loop with an edge of at most
+    1e-9 mm (dropped before the turns are taken), or of fewer than 4 vertices, is not
+    said cornerless: it takes the per-loop path."""
+    sizes = np.array([len(P) for P in loops], dtype=np.intp)
+    out = np.zeros(len(loops), dtype=bool)
+    if not len(loops) or sizes.min() < 1:
+        return out
+    V = np.concatenate([np.asarray(P, dtype=float).reshape(-1, 2) for P in loops])
+    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+    size = np.repeat(sizes, sizes)
+    idx = np.arange(len(V))
+    e = V[start + (idx - start + 1) % size] - V
+    ep = e[start + (idx - start - 1) % size]
+    L = np.hypot(*e.T)
+    turn = np.degrees(np.arctan2(ep[:, 0] * e[:, 1] - ep[:, 1] * e[:, 0],
+                                 np.einsum("ij,ij->i", ep, e)))
+    first = np.cumsum(sizes) - sizes
+    corners = np.add.reduceat((np.abs(turn) > CORNER).astype(np.intp), first)
+    short = np.add.reduceat((L <= 1e-9).astype(np.intp), first)
+    return (corners < 2) & (short == 0) & (sizes >= 4)
 
 
 BUMP = 2.0           # degrees: a concave turn this sharp is where two faces' edges cross

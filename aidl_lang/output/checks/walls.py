@@ -503,7 +503,8 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     that almost meet: a dog-bone tag whose end circles nearly touch beyond the bar).
 
     Found as a gap search between the non-adjacent edges of one loop
-    (:func:`.nearby.close_pairs`, every vertex against the segments within ``t``, O(n log n)):
+    (:func:`.nearby.close_pairs_facing`, every vertex against the segments within ``t``
+    that run against one of its tangents, O(n log n)):
     a pair counts when the two stretches face each other (the vertex's tangent and the
     segment's direction are opposite within 30 degrees, :data:`FACING`) and the middle of the
     gap lies outside the material.  The loops of holes' openings are left out (a hole drawn
@@ -512,7 +513,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     one Bezier, a V-notch of one polygon, is meant) is reported: its least width, its
     length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth).
     ``cut_open``: :func:`.common._cut_openings` of ``loops``, when the caller has it."""
-    from ..part.nearby import close_pairs
+    from ..part.nearby import close_pairs_facing
     from .common import _edges, _inside
     if t <= 0 or not loops:
         return
@@ -524,9 +525,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         return
     tick()
     V, nxt, prv = _ring(keep)
-    idx = np.arange(len(V))
-    B = V[nxt]
-    v, sg, dist, foot = close_pairs(V, idx, V, B, idx, t, others=False)
+    v, sg, dist, foot = close_pairs_facing(V, nxt, prv, t, FACING)
     if not len(v):
         return
     ok = (v != nxt[sg]) & (dist > 1e-6) & _facing(V, nxt, prv, v, sg, FACING)

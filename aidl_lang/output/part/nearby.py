@@ -12,6 +12,9 @@ keeps the geometry checks (:mod:`.checks`) O(n log n) in the number of holes.
   minimum distance between two non-crossing polygon boundaries is the least of these (it is
   reached at a vertex of one of them).  A grid over the vertices is searched in each
   segment's bounding box grown by the distance.
+* :func:`close_pairs_facing`: the same pairs within closed loops where only a vertex whose
+  tangent runs against the segment matters (W0519's slits): the segments by direction
+  class, each against the vertices that can face it (no neighbours along a curve).
 
 Small inputs (at most :data:`SMALL_BOXES` boxes, :data:`SMALL_VERTS` vertices) are measured
 more simply: every pair of boxes, and each segment against the vertices in its y band (found
@@ -237,9 +240,72 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
     if not out:
         return empty
     v, s, d, foot = (np.concatenate([o[k] for o in out]) for k in range(4))
+    return _in_grid_order(V, h, v, s, d, foot)
+
+
+def _in_grid_order(V, h: float, v, s, d, foot):
+    """``(v, s, d, foot)`` sorted as :func:`close_pairs` answers a large input: by segment,
+    then the vertex's cell in :class:`_Grid` ``(V, h)``, then the vertex."""
     key = _cell_keys(V, h)
     order = np.lexsort((v, key[v], s))
     return v[order], s[order], d[order], foot[order]
+
+
+FACING_BINS = 6     # direction classes of :func:`close_pairs_facing` (60 degrees each)
+
+
+def close_pairs_facing(V, nxt, prv, dist: float, cos_max: float):
+    """What ``close_pairs(V, idx, V, V[nxt], idx, dist, others=False)`` answers (``idx``:
+    every vertex its own feature), with at least every pair whose vertex has a tangent
+    (``V[nxt[v]] - V[v]`` or ``V[v] - V[prv[v]]``) running against the segment (``V[s]`` to
+    ``V[nxt[s]]``, the cosine of their angle below ``-cos_max``, ``0 <= cos_max < 1``), in the
+    same order; pairs that do not face each other may be left out.
+
+    ``V`` (n x 2, mm) the vertices of closed loops, ``nxt``/``prv`` the index of the next and
+    previous vertex of each one's loop.  A large input (over :data:`SMALL_VERTS` vertices) is
+    searched by direction: the segments in :data:`FACING_BINS` classes of their direction,
+    each class against only the vertices with a tangent within the facing angle (and 2 degrees
+    more) of its opposite.  The neighbours along a curve (a perforated plate's 900,000 chords:
+    each within ``dist`` of the next three, 2.7 million pairs, every one then dropped as not
+    facing) are never listed: 20,000 holes 3.8 -> 0.9 s.  :class:`TooManyPairs` as
+    :func:`close_pairs`: past :data:`MAX_PAIRS` in one class or in all together."""
+    V = np.asarray(V, dtype=float).reshape(-1, 2)
+    B = V[nxt]
+    idx = np.arange(len(V))
+    if len(V) <= SMALL_VERTS:
+        return close_pairs(V, idx, V, B, idx, dist, others=False)
+    D = B - V
+    ang = np.arctan2(D[:, 1], D[:, 0])                  # each segment's direction, -pi..pi
+    width = 2 * np.pi / FACING_BINS
+    cls = np.minimum((ang + np.pi) // width, FACING_BINS - 1).astype(np.intp)
+    # facing: the tangent within arccos(cos_max) of the segment's opposite direction; so
+    # within half a class, that angle and a margin of the class's middle, turned round
+    reach = width / 2 + float(np.arccos(cos_max)) + np.radians(2)
+    tang = (ang, ang[prv])                              # a vertex's two tangents' directions
+    out, kept = [], 0
+    for k in range(FACING_BINS):
+        segs = np.flatnonzero(cls == k)
+        if not len(segs):
+            continue
+        back = (k + 0.5) * width                        # the class's middle (-pi + ...) + pi
+        near = np.zeros(len(V), dtype=bool)
+        for a in tang:
+            near |= np.abs((a - back + np.pi) % (2 * np.pi) - np.pi) <= reach
+        verts = np.flatnonzero(near)
+        if not len(verts):
+            continue
+        v, s, d, foot = close_pairs(V.take(verts, axis=0), verts, V.take(segs, axis=0),
+                                    B.take(segs, axis=0), segs, dist, others=False)
+        if len(v):
+            out.append((verts[v], segs[s], d, foot))
+            kept += len(v)
+            if kept > MAX_PAIRS:            # the classes' pairs together, as one search's
+                raise TooManyPairs(kept, MAX_PAIRS)
+    if not out:
+        return (np.zeros(0, np.intp), np.zeros(0, np.intp), np.zeros(0), np.zeros((0, 2)))
+    v, s, d, foot = (np.concatenate([o[k] for o in out]) for k in range(4))
+    h = max(_median(np.hypot(*D.T)), dist, 1e-9)
+    return _in_grid_order(V, h, v, s, d, foot)
 
 
 def _changes(feat) -> int:
@@ -267,6 +333,8 @@ def _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list:
         try:
             q, p = grid.in_boxes(lo[i:j], hi[i:j], limit=CHUNK if j - i > 1 else MAX_PAIRS)
         except TooManyPairs:
+            if j - i == 1:      # one segment's box alone holds too many: halving cannot help
+                raise           # (it pushed the same segment again, forever)
             m = (i + j) // 2
             todo += [(m, j), (i, m)]
             continue
@@ -492,4 +560,27 @@ def boundary(loops, fid: int):
     V = np.concatenate(polys)
     B = np.concatenate([np.concatenate([p[1:], p[:1]]) for p in polys])
     f = np.full(len(V), fid, dtype=np.intp)
+    return V, f, V, B, f
+
+
+def boundaries(groups: list, first: int):
+    """What :func:`boundary` gives for each group of closed loops ``groups[k]`` with feature
+    ``first + k``, concatenated in that order, in a few array operations (not a dozen per
+    group: 20,000 holes' regions).  ``(V, vfeat, A, B, sfeat)``."""
+    polys, fids = [], []
+    for k, loops in enumerate(groups):
+        for p in loops:
+            p = np.asarray(p, dtype=float).reshape(-1, 2)
+            if len(p) >= 2:
+                polys.append(p)
+                fids.append(first + k)
+    if not polys:
+        z = np.zeros((0, 2))
+        return z, np.zeros(0, np.intp), z, z, np.zeros(0, np.intp)
+    V = np.concatenate(polys)
+    sizes = np.array([len(p) for p in polys], dtype=np.intp)
+    start = np.repeat(np.cumsum(sizes) - sizes, sizes)
+    idx = np.arange(len(V))
+    B = V[start + (idx - start + 1) % np.repeat(sizes, sizes)]
+    f = np.repeat(np.array(fids, dtype=np.intp), sizes)
     return V, f, V, B, f
