@@ -5,7 +5,7 @@ paths) took 15.3 s in the booleans, past the default budget (E0304): every throu
 was intersected with the whole part to find its area on the material, and each piece a cut
 freed was intersected with every piece of the part as it was (and, to find whether it falls
 out, compared with the union of all the others).  Now each band and each piece meets only
-the pieces whose bounding boxes meet its own (:func:`~aidl_lang.output.part.booleans._meeting`):
+the pieces whose bounding boxes meet its own (:func:`~aidl_lang.output.part.nearby.meeting`):
 the Lamp in 3.6 s, the sheets below in a few seconds where they took 11 to 60 s.  And
 the exact output drops the through-cuts that run along a split part's outline (cut once, as
 the outline) by asking a grid of their sample points for the edges near each
@@ -22,7 +22,7 @@ from hypothesis import given, settings, strategies as st
 
 from aidl_lang import api
 from aidl_lang.limits import Budget
-from aidl_lang.output.part.booleans import _meeting
+from aidl_lang.output.part.nearby import meeting as _meeting
 from aidl_lang.pipeline import compile_source
 
 # the budgets count CPU seconds (the cpu_clock fixture, tests/cpu_clock.py), as the figures do

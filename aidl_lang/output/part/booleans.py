@@ -35,6 +35,7 @@ from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
+from .nearby import faces_apart, meeting
 from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot_outline,
                        rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
                        spline_band)
@@ -231,7 +232,7 @@ class Renderer:
         results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
         edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
         line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Faces whose
-        boxes are apart (:func:`_apart`: the holes of a perforated sheet) are united in one
+        boxes are apart (:func:`.nearby.faces_apart`: the holes of a perforated sheet) are united in one
         pass, the same polygons in the same order as in groups, where each level would pass
         them all again (20,000 holes: 0.27 s instead of 0.95 s).  Faces in a row along x
         are united scanned along x (turned a quarter turn and back, exact:
@@ -248,7 +249,7 @@ class Renderer:
             faces = turned(faces)
         # faces apart (no two boxes meet) unite in one pass: in groups every level would pass
         # them all again, for the same result (the same polygons in the same order)
-        grouped = len(faces) > UNION_GROUP and not _apart(faces)
+        grouped = len(faces) > UNION_GROUP and not faces_apart(faces)
         while grouped and len(faces) > UNION_GROUP:
             nxt = []
             for i in range(0, len(faces), UNION_GROUP):
@@ -996,7 +997,7 @@ class Renderer:
         # from the outline (none: the cut lies along the outline, which is cut anyway)
         before = shp.decompose() if not shp.is_empty() else []
         deep = shp.offset(-2 * SLIT_HALF, mf.JoinType.Miter).decompose() if before else []
-        near, near_deep = _meeting(bands, before), _meeting(bands, deep)
+        near, near_deep = meeting(bands, before), meeting(bands, deep)
         cutting = []
         for (g, segs), band, pieces, inner in zip(paths, bands, near, near_deep):
             self.tick(s)
@@ -1022,7 +1023,7 @@ class Renderer:
         # meet are intersected (one whose box misses another's shares no area with it), so a
         # sheet cut into thousands of pieces costs O(n log n) box tests, not n^2 booleans.
         groups: dict = {}
-        owners = _meeting(after, before)
+        owners = meeting(after, before)
         for a, comp in enumerate(after):
             k, most = 0, 0.0                  # the first of the largest overlaps
             for i in owners[a]:
@@ -1034,7 +1035,7 @@ class Renderer:
         for k, comps in groups.items():
             comps.sort(key=lambda c: -c.area())
             filled = [_filled(c) for c in comps]
-            meets = _meeting(comps, filled)
+            meets = meeting(comps, filled)
             for i, comp in enumerate(comps[1:], 1):
                 self.tick(s)
                 # grown back over its half of the bands (to 0.5 SLIT_HALF past the cut's
@@ -1111,19 +1112,6 @@ class Renderer:
         return out
 
 
-def _apart(faces: list) -> bool:
-    """True when no two of ``faces`` (non-empty ``CrossSection`` s) have boxes that meet
-    (touching counts as meeting): their union is every face as it is, so it is the same
-    however they are grouped.  False for an empty face or too many pairs to list."""
-    from .nearby import TooManyPairs, box_pairs
-    if any(f.is_empty() for f in faces):
-        return False
-    try:
-        return not len(box_pairs(np.array([f.bounds() for f in faces], float)))
-    except TooManyPairs:
-        return False
-
-
 def _chain_points(segs: list) -> np.ndarray:
     """The polyline (N x 2, mm) of a chain of exact open segments, from the first start to
     the last end (arcs and curves in chords within CHORD_TOL)."""
@@ -1149,23 +1137,6 @@ def _quad(p, q, h: float) -> mf.CrossSection:
     n = np.array([-u[1], u[0]])
     a, b = np.asarray(p, dtype=float) - u, np.asarray(q, dtype=float) + u
     return mf.CrossSection([[tuple(a - n), tuple(b - n), tuple(b + n), tuple(a + n)]])
-
-
-def _meeting(a: list, b: list) -> list:
-    """For each shape of ``a`` (CrossSections), the indices (ascending) of the shapes of ``b``
-    whose bounding boxes meet its own (touching counts): the only ones it can share area
-    with.  By :func:`.nearby.box_pairs_between` (a grid past a few thousand pairs)."""
-    from .nearby import box_pairs_between
-    out: list = [[] for _ in a]
-    if not a or not b:
-        return out
-    boxes = [np.array([c.bounds() for c in shapes], dtype=float).reshape(-1, 4)
-             for shapes in (a, b)]
-    for i, j in box_pairs_between(*boxes):
-        out[i].append(int(j))
-    for js in out:
-        js.sort()
-    return out
 
 
 def _filled(c: mf.CrossSection) -> mf.CrossSection:

@@ -584,3 +584,31 @@ def boundaries(groups: list, first: int):
     B = V[start + (idx - start + 1) % np.repeat(sizes, sizes)]
     f = np.repeat(np.array(fids, dtype=np.intp), sizes)
     return V, f, V, B, f
+
+
+def faces_apart(faces: list) -> bool:
+    """True when no two of ``faces`` (non-empty ``CrossSection`` s) have boxes that meet
+    (touching counts as meeting): their union is every face as it is, so it is the same
+    however they are grouped.  False for an empty face or too many pairs to list."""
+    if any(f.is_empty() for f in faces):
+        return False
+    try:
+        return not len(box_pairs(np.array([f.bounds() for f in faces], float)))
+    except TooManyPairs:
+        return False
+
+
+def meeting(a: list, b: list) -> list:
+    """For each shape of ``a`` (CrossSections), the indices (ascending) of the shapes of ``b``
+    whose bounding boxes meet its own (touching counts): the only ones it can share area
+    with.  By :func:`box_pairs_between` (a grid past a few thousand pairs)."""
+    out: list = [[] for _ in a]
+    if not a or not b:
+        return out
+    boxes = [np.array([c.bounds() for c in shapes], dtype=float).reshape(-1, 4)
+             for shapes in (a, b)]
+    for i, j in box_pairs_between(*boxes):
+        out[i].append(int(j))
+    for js in out:
+        js.sort()
+    return out
