@@ -214,17 +214,18 @@ def test_cli_import_refuses_bad_input_and_writes_nothing(tmp_path):
     assert not (tmp_path / "x.aidl").exists()
 
 
-def test_too_many_entities_is_refused(tmp_path, monkeypatch):
+def test_too_many_entities_is_refused(tmp_path):
+    """The reading's shape limit (``max_shapes``: MAX_ENTITIES, or `aidl import --budget`'s
+    scaled one) refuses a DXF of more entities with a located E0130."""
     from aidl_lang.drawing import DrawingError, read_drawing
-    from aidl_lang.drawing import dxf as R
     doc = ezdxf.new("R2010")
     for i in range(30):
         doc.modelspace().add_line((i, 0), (i, 1))
     p = tmp_path / "many.dxf"
     doc.saveas(p)
-    monkeypatch.setattr(R, "MAX_ENTITIES", 20)
+    assert len(read_drawing(p.read_bytes(), "many.dxf", max_shapes=30).paths) == 30
     with pytest.raises(DrawingError) as e:
-        read_drawing(p.read_bytes(), "many.dxf")
+        read_drawing(p.read_bytes(), "many.dxf", max_shapes=20)
     assert e.value.code == "E0130" and "more than 20 entities" in e.value.message
 
 
