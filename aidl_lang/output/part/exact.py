@@ -261,7 +261,7 @@ class Provenance:
         is_circle = np.array([c[0] == "C" for c in carriers])
         one &= is_circle[np.maximum(lo, 0)]
         out: dict = {}
-        for m in np.unique(sizes[one]).tolist():
+        for m in sorted(set(sizes[one].tolist())):     # np.unique imports numpy.ma
             rows = np.flatnonzero(one & (sizes == m))
             for b in range(0, len(rows), WHOLE_PER_BLOCK):
                 r = rows[b:b + WHOLE_PER_BLOCK]
