@@ -187,3 +187,23 @@ solid mirror {
     fixed = _values(_compile(src.replace("AlignCenterX", "Fixed(knob)\n    AlignCenterX")))
     assert fixed["mirror.knob.center"] == pytest.approx((0, 32), abs=EXACT)
     assert fixed["mirror.body.center"] == pytest.approx((0, 7), abs=EXACT)
+
+
+def test_the_shapes_own_constraints_place_the_part_before_the_knob_comes_to_it():
+    """Within one solid, the part's own row (``body.center.y == body.center.x + 5``, which
+    no pinning meets) places it first (the least move: (-2.5, 2.5)), then the knob comes to
+    it (before: stage shapes failed on that row and everything moved, the body to
+    (-0.75, 4.25), further than its own row asks, to meet the knob)."""
+    src = """
+solid mirror {
+    body = Ellipse(center=(0, 0), rx=40, ry=25)
+    knob = Circle(center=(0, 32), radius=5)
+    body.center.y == body.center.x + 5
+    Coincident(knob.center, body)
+    AlignCenterX(knob, body)
+}
+"""
+    v = _values(_compile(src))
+    assert v["mirror.body.center"] == pytest.approx((-2.5, 2.5), abs=EXACT)
+    assert v["mirror.knob.center"] == pytest.approx((-2.5, 27.5), abs=EXACT)
+    assert v["mirror.body.rx"] == pytest.approx(40, abs=EXACT)

@@ -9,7 +9,7 @@ import contextlib
 import pathlib
 
 import numpy as np
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, freedom, redundancy, sliding
@@ -135,6 +135,10 @@ _PARENT = st.sampled_from([
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.tuples(st.lists(_PIECE, max_size=4), _PARENT), min_size=1, max_size=3),
        st.booleans())
+# the part (the circle, the solid's first closed shape) placed by its own row `c.center.y
+# == 2` (pinned, or stage own) before the arc goes to it (stage shapes): was 2.658 mm apart
+@example([(["Distance(c.center, arc.center, 9)", "c.center.y == 2"], "AlignCenterX({k}, body)")],
+         False)
 def test_pinned_solve_equals_the_unpinned_one(kids, fixed_body):
     """Random structures of pinned, partly pinned and free geometry under a parent relating
     them: the same diagnostics, values, counts, W0401 and sliding with and without pinning."""

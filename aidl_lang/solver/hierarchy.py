@@ -639,9 +639,13 @@ class Solver:
         of its shapes (``knob = Circle(...)``, ``Coincident(knob.center, body)``), an
         attempt first solves its rows with the part's unknowns held, so the knob goes to the
         body and the body stays where it is written.  When that fails (the knob is
-        ``Fixed``, or only the part can move) the point is unchanged and the paper's stages
-        follow as before.  A generator like :meth:`steps`; returns whether ``s`` was
-        solved."""
+        ``Fixed``, or only the part can move) the part is first placed by its own rows, those
+        that read none of the other shapes' unknowns (stage "own": ``c.center.y == 2`` on the
+        part; as :meth:`_features_first` does), and stage shapes runs again; when that fails
+        too the point is restored and the paper's stages follow as before.  So the solve is
+        the same whether such an affine row is met by pinning (:func:`.system.pinned`: the
+        value is no unknown, the row no row) or by the solve.  A generator like
+        :meth:`steps`; returns whether ``s`` was solved."""
         part = _part_shape(s)
         if part is None:
             return False
@@ -652,7 +656,24 @@ class Solver:
         cols = [i for i in mine if i not in held]
         if not held or not cols or not self._related(local, held):
             return False
-        return (yield Attempt("shapes", 0, local, self._cols(cols, local), order=order))
+        shapes = self._cols(cols, local)
+        if (yield Attempt("shapes", 0, local, shapes, order=order)):
+            return True
+        rows = local[self._own_rows(local, held)]
+        if not len(rows):
+            return False
+        first = [i for i in mine if i in held]
+        own_cols = self._cols(first, rows)
+        saved = self.x[own_cols].copy()
+        att = Attempt("own", 0, rows, own_cols, order=order)
+        if not (yield att):
+            return False
+        moved = not np.array_equal(self.x[own_cols], saved)   # (a substitution takes no step)
+        if moved and (yield Attempt("shapes", 0, local, shapes, order=order)):
+            return True                    # the part placed, the other shapes to it
+        self.x = self.x.copy()             # back to where the paper's stages start
+        self.x[own_cols] = saved
+        return False
 
     def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
         """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
