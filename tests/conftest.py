@@ -111,22 +111,6 @@ def _children_any_state() -> set[int]:
 
 _CHECK = pathlib.Path("/proc/self/stat").exists()
 
-# ------------------------------------------------------------------ the long files first
-# pytest-xdist (`-n auto --dist loadfile`, pyproject.toml) hands whole files to its workers in
-# the order collected; the browser, packaging and batch files (25-95 s each) sorted late by
-# name, so one worker ran the last of them while the other had nothing left (a 1-2 minute
-# tail on 2 cores).  They go first, longest first (benchmarks/suite_times.py); the order of
-# the tests inside each file is kept.
-LONG_FILES = ("test_packaging.py", "test_studio_values_browser.py", "test_studio_page.py",
-              "test_studio_browser.py", "test_studio_forms.py", "test_batch.py",
-              "test_import_corpus.py", "test_mcp_agents.py", "test_serve_browser.py",
-              "test_studio_views.py", "test_studio_gallery.py", "test_studio.py")
-
-
-def pytest_collection_modifyitems(session, config, items):
-    rank = {name: i for i, name in enumerate(LONG_FILES)}
-    items.sort(key=lambda item: rank.get(item.path.name, len(LONG_FILES)))
-
 
 def pytest_configure(config):
     if _CHECK:
