@@ -52,17 +52,17 @@ def flex_3mf(flex):
 
 
 def test_the_flex_box_3mf_has_its_wall_bent_round_the_corners(flex_3mf):
-    wall = flex_3mf["round_box.box.wall"]
+    panel = flex_3mf["round_box.box.wall"]       # the hinge panel's mesh (mm)
     others = {n: m for n, m in flex_3mf.items() if n != "round_box.box.wall"}
     assert set(others) == {f"round_box.box.{n}" for n in ("base", "lid", "lip[0]", "lip[1]")}
     for name, m in flex_3mf.items():
         assert m.is_watertight and m.is_volume, name
     # a ring (its two ends meet mid-front and are welded): a closed surface of genus 1
-    assert wall.euler_number == 0
+    assert panel.euler_number == 0
     # on the base's outline, between the base and the lid (before: x -178.1 .. 178.1, y 37 .. 40)
-    assert wall.bounds.ravel() == pytest.approx([-L / 2, -W / 2, T, L / 2, W / 2, H - T], abs=1e-6)
+    assert panel.bounds.ravel() == pytest.approx([-L / 2, -W / 2, T, L / 2, W / 2, H - T], abs=1e-6)
     # at the corners every vertex lies between the inside radius and the outside one
-    v = wall.vertices
+    v = panel.vertices
     for sx in (-1, 1):
         for sy in (-1, 1):
             cx, cy = sx * (L / 2 - R), sy * (W / 2 - R)
@@ -70,12 +70,12 @@ def test_the_flex_box_3mf_has_its_wall_bent_round_the_corners(flex_3mf):
             d = np.hypot(v[at, 0] - cx, v[at, 1] - cy)
             assert at.sum() > 500
             assert d.min() == pytest.approx(R - T, abs=1e-6) and d.max() == pytest.approx(R, abs=1e-6)
-    # the strip's volume kept: a chord leaves its arc by at most 0.005 mm, a segment of at most
-    # 2/3 of that times its length, over both faces' arcs (radii 20 and 17), 44 mm high
-    lost = 2 / 3 * 0.005 * (H - 2 * T) * 2 * math.pi * (R + R - T)
-    assert abs(wall.volume - RUN * (H - 2 * T) * T) < lost
+    # the strip's volume (mm^3) kept: a chord leaves its arc by at most 0.005 mm, a segment of
+    # at most 2/3 of that times its length, over both faces' arcs (radii 20 and 17), 44 mm high
+    chord_loss_mm3 = 2 / 3 * 0.005 * (H - 2 * T) * 2 * math.pi * (R + R - T)
+    assert abs(panel.volume - RUN * (H - 2 * T) * T) < chord_loss_mm3
     # no volume shared with any other panel (Manifold's 3D booleans on the meshes re-read)
-    shell = _manifold(wall)
+    shell = _manifold(panel)
     for name, m in others.items():
         assert (shell ^ _manifold(m)).volume() < 1e-3, name
 
@@ -130,18 +130,25 @@ def test_one_bend_lands_on_its_arithmetic(tmp_path):
     assert v[:, 2].max() == pytest.approx(33, abs=1e-9)
 
 
-def test_the_fit_check_meets_a_part_where_the_bent_leg_goes():
-    """A 4 x 4 mm block 10 mm up, where the docs' wall turns inward after its bend: bent, the
-    wall's leg (x -22.25..-19.25, 3 mm thick) runs through it: W0517, 3 x 4 x 3 = 36 mm^3
-    (unbent, the wall ran on along the front and the block touched nothing)."""
-    src = BENT.replace("BEND", "Bend(wall, at=20, angle=90 deg, radius=2)\n"
-                               "    solid post { r = Rectangle(center=(-20.75, 0), width=4, height=4) }\n"
-                               "    Place(post, position=(0, 0, 10))")
+@pytest.mark.parametrize("other, place, volume", [
+    # a 4 x 4 mm block 10 mm up where the wall turns inward: the leg (x -22.25..-19.25, 3 mm
+    # thick) runs through it, 3 x 4 x 3 = 36 mm^3 (unbent, the wall touched nothing there)
+    ("post { r = Rectangle(center=(-20.75, 0), width=4, height=4) }",
+     "Place(post, position=(0, 0, 10))", 36.0),
+    # a panel standing parallel 10 mm behind the wall's unbent start, where the leg turns in:
+    # 3 x 3 x 10 = 90 mm^3 (the fit check's 2D shortcut for parallel plates took the bent wall
+    # for its flat sheet: "touches no other part", W0518)
+    ("panel { r = Rectangle(center=(20.75, 60), width=6, height=10) }",
+     "Place(panel, rotation=(90 deg, 0, 180 deg), position=(0, -10, -42))", 90.0),
+], ids=["block", "parallel-panel"])
+def test_the_fit_check_meets_a_part_where_the_bent_leg_goes(other, place, volume):
+    src = BENT.replace("BEND", f"Bend(wall, at=20, angle=90 deg, radius=2)\n"
+                               f"    solid {other}\n    {place}")
     r = aidl_lang.compile(source=src)
     assert [d.code for d in r.sink.items] == ["W0517"]
     (hit,) = r.fit["collisions"]
-    assert {hit["a"], hit["b"]} == {"kit.wall", "kit.post"}
-    assert hit["volume"] == pytest.approx(36, abs=1e-6)
+    assert {hit["a"], hit["b"]} == {"kit.wall", "kit." + other.split()[0]}
+    assert hit["volume"] == pytest.approx(volume, abs=1e-6)
 
 
 def test_bends_whose_zones_overlap_are_refused_at_the_second():
@@ -167,18 +174,3 @@ def test_a_misused_bend_is_located(bend, code, at, says):
     assert e.code == code and says in e.message
     # at the argument at fault: line 6, its column (1-based, after 4 spaces of indent)
     assert (e.span.line, e.span.col) == (6, 4 + bend.index(at) + 1)
-
-
-def test_a_bent_part_parallel_to_a_plate_is_fitted_in_3d_not_as_a_flat_plate():
-    """The fit check's 2D shortcut (two parallel plates apart along their normal touch
-    nothing) must not take a bent part for its flat sheet: a panel standing 10 mm behind the
-    docs' wall, parallel to its unbent start, is where the leg turns in: W0517, 3 x 3 x 10 =
-    90 mm^3 (taken as a flat plate it was 'touches no other part', W0518)."""
-    src = BENT.replace("BEND", "Bend(wall, at=20, angle=90 deg, radius=2)\n"
-                               "    solid panel { r = Rectangle(center=(20.75, 60), width=6, height=10) }\n"
-                               "    Place(panel, rotation=(90 deg, 0, 180 deg), position=(0, -10, -42))")
-    r = aidl_lang.compile(source=src)
-    assert [d.code for d in r.sink.items] == ["W0517"]
-    (hit,) = r.fit["collisions"]
-    assert {hit["a"], hit["b"]} == {"kit.wall", "kit.panel"}
-    assert hit["volume"] == pytest.approx(90, abs=1e-6)
