@@ -103,7 +103,13 @@ def _quiet_shutdown() -> None:
     """Mute Dask's and Tornado's loggers for an interrupted run's shutdown: cancelling
     mid-flight makes distributed's own callbacks log tracebacks at ERROR (a NameError in
     ``distributed.utils.sync``'s cancel, seen on a fresh clone), which reached the user
-    beside the one line an interrupt prints (batch/command.py)."""
+    beside the one line an interrupt prints (batch/command.py).  Every logger of those
+    families is muted, the children Dask's config sets a level on included."""
     import logging
-    for name in ("distributed", "tornado", "asyncio"):
+    # Dask's logging config gives some children their own level (``tornado.application``
+    # at ERROR, ``distributed.client`` at WARNING): muting the parents alone left them on
+    families = ("distributed", "tornado", "asyncio")
+    names = [n for n in list(logging.root.manager.loggerDict)
+             if n.split(".")[0] in families] + list(families)
+    for name in names:
         logging.getLogger(name).setLevel(logging.CRITICAL + 1)
