@@ -24,6 +24,7 @@ from aidl_lang import api
 from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.drawing import DrawingError
 from aidl_lang.drawing.program import import_drawing
+from aidl_lang.limits import Budget
 from aidl_lang.pipeline import _compile, compile_source, run_deep
 
 DATA = pathlib.Path(__file__).resolve().parent / "data" / "ezdxf"
@@ -72,15 +73,19 @@ FULL_CHECKS_BELOW = 2000
 # Under that size but slow in the same checks (text engravings: thousands of strokes); the
 # same reason.
 NO_CHECKS = {"examples_dxf_text_fonts.dxf"}
+# What these tests check is the import's result, not its speed (the budget's own tests are
+# test_import_limits.py's): the largest samples (edgeminer, 10 s on a quiet machine) ran past
+# the default 15 s of wall time when the machine was busy
+ROOMY = Budget(seconds=120)
 
 
 def compiled(text: str, name: str):
     n = len(SEGMENT.findall(text))
     if n < FULL_CHECKS_BELOW and name not in NO_CHECKS:
-        return compile_source(text, name.replace(".dxf", ".aidl"))
+        return compile_source(text, name.replace(".dxf", ".aidl"), budget=ROOMY)
     sink = DiagnosticSink()
     return run_deep(lambda: _compile(sink, text, name.replace(".dxf", ".aidl"), None, True,
-                                     shape_checks=False))
+                                     budget=ROOMY, shape_checks=False))
 
 
 def errors(c) -> list[str]:
@@ -93,10 +98,10 @@ def test_every_ezdxf_sample_imports_to_a_program_that_compiles(gz):
     data = gzip.decompress((DATA / gz).read_bytes())
     if name in REFUSED:
         with pytest.raises(DrawingError) as ex:
-            import_drawing(data, name)
+            import_drawing(data, name, budget=ROOMY)
         assert ex.value.code == REFUSED[name], ex.value.message
         return
-    text, notes = import_drawing(data, name)
+    text, notes = import_drawing(data, name, budget=ROOMY)
     assert all(n.code == "W0130" for n in notes)
     c = compiled(text, name)
     assert errors(c) == [], (name, errors(c)[:3])
