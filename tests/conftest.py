@@ -113,12 +113,26 @@ _CHECK = pathlib.Path("/proc/self/stat").exists()
 
 
 def pytest_configure(config):
+    if not _worker(config):
+        _compile_bytecode()
     if _CHECK:
         try:
             import ctypes
             ctypes.CDLL(None, use_errno=True).prctl(36, 1, 0, 0, 0)   # PR_SET_CHILD_SUBREAPER
         except (OSError, AttributeError):
             pass
+
+
+def _compile_bytecode() -> None:
+    """Byte-compile the package and the benchmarks once, before the workers start: the suite
+    starts hundreds of Python processes (the CLI, studio and language servers, batch
+    workers), and where ``PYTHONDONTWRITEBYTECODE`` is set (this machine, CI) none of them
+    writes what it compiles, so each compiled every module it imports from source again:
+    0.25-1 s of CPU a process (test_cli + test_render_cli + test_lsp: 19.1 -> 10.9 s CPU).
+    Python reads the files written here whatever that variable says; 0.7 s."""
+    import compileall
+    for folder in ("aidl_lang", "benchmarks"):
+        compileall.compile_dir(ROOT / folder, quiet=1)
 
 
 @pytest.hookimpl(trylast=True)
