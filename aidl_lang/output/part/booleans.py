@@ -227,7 +227,7 @@ class Renderer:
                                                  vertices))
             self.deadline.check(self.STAGE, s or self.current, ahead)
 
-    def union(self, faces: list, s: Structure | None = None) -> mf.CrossSection:
+    def union(self, faces: list, s: Structure | None = None, frame: bool = False):
         """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
         results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
         edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
@@ -239,9 +239,10 @@ class Renderer:
         :func:`.scanwork.plan`): 4 000 circles of different radii on a row, 31 s scanned
         along y, 0.1 s along x.  The deadline is checked between groups (:meth:`tick`), each
         group weighed by its scan-line work when all the faces' could come near the
-        deadline."""
+        deadline.  A CrossSection; ``frame=True``: (the union as scanned, turned), for
+        booleans with it scanned the same way (:meth:`shape`)."""
         if not faces:
-            return mf.CrossSection()
+            return (mf.CrossSection(), False) if frame else mf.CrossSection()
         left = (self.deadline.at - time.monotonic() if self.deadline is not None
                 else float("inf"))
         turn, watched = plan(faces, left)
@@ -260,6 +261,8 @@ class Renderer:
         self.tick(s, faces, watched)
         out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
         self.tick(s)                # a union that ended past the deadline: E0304 at ``s``
+        if frame:
+            return out, turn
         return turned_back(out) if turn else out
 
     def P(self, p) -> np.ndarray:
@@ -879,13 +882,16 @@ class Renderer:
         self.current = s
         acc = self.union(faces, s)
         if holes:
-            cut = self.union([h for _, h in holes], s)
-            for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
+            # the holes cut scanned as they were united (a row of 5,000 circles along x:
+            # 1.05 s scanned across it, 0.03 s along it, turned and back, exact)
+            cut, turn = self.union([h for _, h in holes], s, frame=True)
+            here, back = (turned([acc])[0], turned_back) if turn else (acc, lambda x: x)
+            for poly in back(here ^ cut).to_polygons():     # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
             for c, h in holes:
                 self.tick(s)
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
-            acc = acc - cut
+            acc = back(here - cut)
         if getattr(s, "finish", None) and not acc.is_empty():
             try:
                 # the deadline covers the exact recovery and every loop's fillets
