@@ -227,3 +227,103 @@ def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkey
     assert res.ok and not res.sink.items, [d.message for d in res.sink.items]
     assert seen["vertices"] > nearby.SMALL_VERTS, seen          # the large path
     assert seen["pairs"] <= 10, seen                            # was 21,608
+
+
+# ------------------------------------------------ 5,000 circles in a row (benchmarks' collinear)
+ROW = 600          # circles 1 mm apart: past the booleans' turn (scanwork.plan, ~430 circles)
+
+
+@pytest.fixture(scope="module")
+def long_row():
+    """The collinear plate of ``benchmarks/perforated.py`` at ROW holes of r 0.6 mm (they
+    overlap: one long opening), compiled once; the holes' union as the booleans hand it to
+    the part's last booleans (``Renderer.union(..., frame=True)``: (shape, turned))."""
+    from benchmarks.perforated import collinear_aidl
+    framed = []
+    real = booleans.Renderer.union
+
+    def union(self, faces, s=None, frame=False):
+        got = real(self, faces, s, frame=frame)
+        if frame:
+            framed.append(got)
+        return got
+    mp = pytest.MonkeyPatch()
+    mp.setattr(booleans.Renderer, "union", union)
+    try:
+        res = compile_source(collinear_aidl(ROW, 0.6), "row.aidl", min_wall=0)
+    finally:
+        mp.undo()
+    return res, framed
+
+
+def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkeypatch):
+    """A plate minus ROW overlapping circles in a row.  Clipper2 scans along y: a row along x
+    puts every circle's edges on each scan line, and its booleans and offsets then cost far
+    more than along the row (at 5,000 holes the plate minus the row took 1.05 s scanned
+    across it, 0.03 s along it; the whole row's opening 15 s and 0.18 s).  What is handed
+    to Clipper is checked here by its extent along the scan line, not timed.
+
+    The booleans cut the holes in the frame they were united in (turned a quarter turn: the
+    row lies along y there), where the union was turned back first before.  W0507's opening
+    (``walls._thin``) opens its tiles of the row turned (each opened shape at most
+    ``TURN_ASPECT`` times wider than tall; the tiles were 20 times wider), and clips the
+    tiles in arrays (``_clip_ring``: the region of Clipper's intersection with each tile's
+    box), with the same pieces as the whole opening."""
+    from aidl_lang.output.checks import walls
+    from aidl_lang.output.part.scanwork import turned, turned_back
+    res, framed = long_row
+    assert res.ok
+    (part,) = res.drawing.parts
+    # the booleans: one union of the holes, returned as scanned (turned), cut as it is
+    ((cut, turn),) = framed
+    x0, y0, x1, y1 = cut.bounds()
+    assert turn and y1 - y0 > 100 * (x1 - x0)                # the row along y: scanned along
+    plate = (ROW + 3) * 6.0
+    assert part.shape.area() == pytest.approx(plate - cut.area(), abs=1e-6)
+    assert part.shape.num_contour() == 2                 # the plate and its one long opening
+    # W0507's opening: tiles opened turned, clipped in arrays
+    t = 0.5
+    opened, clips = [], []
+    real_open, real_clip = walls._open, walls._clip_loops
+
+    def counted_open(shape, t):
+        a, b, c, e = shape.bounds()
+        opened.append((c - a) / (e - b))
+        return real_open(shape, t)
+
+    def checked_clip(loops, boxes, a, b, c, e):
+        got = real_clip(loops, boxes, a, b, c, e)
+        if len(clips) < 4:              # the region: Clipper's intersection with the box
+            box = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+            want = mf.CrossSection([p.tolist() for p in loops], mf.FillRule.Positive) ^ box
+            mine = mf.CrossSection([p.tolist() for p in got[0]], mf.FillRule.Positive)
+            clips.append(((mine ^ want).area(), want.area(), mine.area()))
+        return got
+    monkeypatch.setattr(walls, "_open", counted_open)
+    monkeypatch.setattr(walls, "_clip_loops", checked_clip)
+    shape = part.shape ^ mf.CrossSection.square((150.0, 6.0)).translate((-2.0, -3.0))
+    assert shape.num_vert() > walls.TILE_VERTS                # the first 150 mm, in tiles
+    pieces = walls._thin(shape, t, least=2 * t * t, whole_loops=0)
+    assert len(opened) > 1 and len(clips) > 1                 # in tiles, clipped
+    assert max(opened) <= 1 / walls.TURN_ASPECT, opened       # each opened turned
+    for common, want, mine in clips:
+        assert common == pytest.approx(want, abs=1e-6) and mine == pytest.approx(want, abs=1e-6)
+    flat = turned([shape])[0]
+    whole = turned_back(flat - real_open(flat, t))
+    assert sum(p.area() for p in pieces) == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
+
+
+def test_the_webs_distances_in_one_pass_are_each_webs_own():
+    """``openings._seg_distances`` (every web's centre to its two features' segments at once,
+    in chunks) gives what ``_seg_distance`` gives for each point alone, to the bit, with
+    features of no segment (inf) among them and chunks that split the points."""
+    from aidl_lang.output.checks.openings import _seg_distance, _seg_distances
+    rng = np.random.default_rng(7)
+    sf = np.sort(rng.choice([0, 1, 2, 4, 5, 9], size=300))   # features 3, 6-8: no segment
+    A, B = rng.normal(size=(300, 2)), rng.normal(size=(300, 2))
+    B[5] = A[5]                                               # a zero-length segment
+    P = rng.normal(size=(40, 2)) * 2
+    F = rng.integers(0, 10, size=40)
+    want = [_seg_distance(p, A[sf == f], B[sf == f]) for p, f in zip(P, F)]
+    for chunk in (1, 50, 1 << 20):
+        assert _seg_distances(P, F, sf, A, B, chunk=chunk).tolist() == want
