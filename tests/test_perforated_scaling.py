@@ -327,3 +327,35 @@ def test_the_webs_distances_in_one_pass_are_each_webs_own():
     want = [_seg_distance(p, A[sf == f], B[sf == f]) for p, f in zip(P, F)]
     for chunk in (1, 50, 1 << 20):
         assert _seg_distances(P, F, sf, A, B, chunk=chunk).tolist() == want
+
+
+def test_loops_clipped_in_arrays_are_clippers_intersection():
+    """``walls._clip_loops`` (loops crossing the box projected onto it, ``_clip_ring``): the
+    region of the clipped loops is Clipper's intersection of the shape with the box, for a
+    plate with holes near, across and around the box's edges and corners, boxes cutting
+    through holes, between them, inside one and around the whole."""
+    from aidl_lang.output.checks import walls
+    from aidl_lang.output.checks.common import _loop_boxes
+    rng = np.random.default_rng(3)
+    plate = mf.CrossSection.square((40.0, 20.0)) - mf.CrossSection.batch_boolean(
+        [mf.CrossSection.circle(float(r), 24).translate((float(x), float(y)))
+         for x, y, r in zip(rng.uniform(0, 40, 30), rng.uniform(0, 20, 30),
+                            rng.uniform(0.5, 3, 30))], mf.OpType.Add)
+    star = mf.CrossSection([[(20 + 9 * np.cos(k * np.pi / 7) * (1 + k % 2),
+                              10 + 4 * np.sin(k * np.pi / 7) * (1 + k % 2))
+                             for k in range(14)]])
+    for shape in (plate, plate - star, star):
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+        boxes = _loop_boxes(loops)
+        for a, b, c, e in [(5, 5, 15, 12), (-1, -1, 41, 21), (0, 0, 40, 20), (19, 9, 21, 11),
+                           (10.3, -5, 10.31, 30), (-3, 4, 50, 4.5), *rng.uniform(-2, 42, (8, 4))]:
+            a, c = sorted((a, c))
+            b, e = sorted((b, e))
+            got, got_boxes = walls._clip_loops(loops, boxes, a, b, c, e)
+            box = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+            want = shape ^ box
+            mine = mf.CrossSection([p.tolist() for p in got], mf.FillRule.Positive)
+            # (to Clipper's grid: it rounds the points where edges cross the box to 1e-8 mm)
+            assert mine.area() == pytest.approx(want.area(), abs=1e-6)
+            assert (mine ^ want).area() == pytest.approx(want.area(), abs=1e-6)
+            assert np.array_equal(got_boxes, _loop_boxes(got))

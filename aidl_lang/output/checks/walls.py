@@ -468,8 +468,16 @@ def _clip_ring(loops: list, a: float, b: float, c: float, e: float) -> list:
     nothing); loops left with no area are dropped.  A list of (m, 2) arrays; the loops that
     remain may run along the box's edges and touch themselves there, which a
     ``CrossSection`` built from them with ``FillRule.Positive`` resolves."""
-    V, nxt, _ = _ring(loops)
-    loop = np.repeat(np.arange(len(loops)), [len(P) for P in loops])
+    V = np.concatenate(loops)
+    owner = np.repeat(np.arange(len(loops)), [len(P) for P in loops])
+    # a vertex outside the box between two of the same region outside it (beyond one edge
+    # line, or one corner: a convex region) is dropped before anything else: the chord
+    # between its neighbours stays in that region and projects onto the same edge line (or
+    # corner), so a long stretch outside costs two passes and no Python below
+    V, owner = _outside_dropped(V, owner, a, b, c, e)
+    if not len(V):
+        return []
+    nxt = _next_in_runs(owner)
     D = V[nxt] - V
     T = np.full((len(V), 4), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -481,11 +489,32 @@ def _clip_ring(loops: list, a: float, b: float, c: float, e: float) -> list:
     edge = np.repeat(np.arange(len(V)), count)
     k = np.arange(len(edge)) - np.repeat(np.cumsum(count) - count, count)
     u = np.where(k == 0, 0.0, T[edge, np.maximum(k - 1, 0)])
-    P = V[edge] + u[:, None] * D[edge]
-    owner = loop[edge]
-    # a vertex outside the box between two of the same region outside it (beyond one edge
-    # line, or one corner) is dropped at once: the three project onto one edge line (or one
-    # corner), so a long stretch outside costs no Python below
+    P, owner = _outside_dropped(V[edge] + u[:, None] * D[edge], owner[edge], a, b, c, e)
+    P[:, 0] = np.clip(P[:, 0], a, c)
+    P[:, 1] = np.clip(P[:, 1], b, e)
+    out = []
+    for start, stop in zip(*_runs(owner)):
+        Q = _shorten(P[start:stop], a, b, c, e)
+        if len(Q) >= 3 and (_within(Q, a, b, c, e) or abs(_shoelace(Q)) > 0.0):
+            out.append(Q)
+    return out
+
+
+def _next_in_runs(owner: np.ndarray) -> np.ndarray:
+    """For each entry of ``owner`` (loop numbers, each loop's entries together) the index of
+    the next entry of its own loop, the last back to the first."""
+    starts, stops = _runs(owner)
+    size = np.repeat(stops - starts, stops - starts)
+    first = np.repeat(starts, stops - starts)
+    return first + (np.arange(len(owner)) - first + 1) % size
+
+
+def _outside_dropped(P: np.ndarray, owner: np.ndarray, a: float, b: float, c: float,
+                     e: float):
+    """``(P, owner)`` without the vertices that lie outside the box in the same one of the
+    eight regions around it as both their neighbours in their loop (``owner``)."""
+    if not len(P):
+        return P, owner
     region = (np.where(P[:, 0] < a, 0, np.where(P[:, 0] > c, 2, 1)) * 3
               + np.where(P[:, 1] < b, 0, np.where(P[:, 1] > e, 2, 1)))
     starts, stops = _runs(owner)
@@ -495,15 +524,7 @@ def _clip_ring(loops: list, a: float, b: float, c: float, e: float) -> list:
     after = first + (idx - first + 1) % size
     before = first + (idx - first - 1) % size
     keep = (region == 4) | (region != region[after]) | (region != region[before])
-    P, owner = P[keep], owner[keep]
-    P[:, 0] = np.clip(P[:, 0], a, c)
-    P[:, 1] = np.clip(P[:, 1], b, e)
-    out = []
-    for start, stop in zip(*_runs(owner)):
-        Q = _shorten(P[start:stop], a, b, c, e)
-        if len(Q) >= 3 and (_within(Q, a, b, c, e) or abs(_shoelace(Q)) > 0.0):
-            out.append(Q)
-    return out
+    return P[keep], owner[keep]
 
 
 def _runs(owner: np.ndarray):
