@@ -538,18 +538,27 @@ def _shorten(Q: np.ndarray, a: float, b: float, c: float, e: float) -> np.ndarra
     middle vertex of three consecutive ones on one edge line of the box (until none is
     left); the winding number of every point inside the box is kept."""
     while len(Q) >= 3:
-        Q = Q[np.any(Q != np.roll(Q, 1, axis=0), axis=1)]
-        if len(Q) < 3:
+        n = len(Q)
+        # only vertices on the box's edges can repeat or lie between two on one edge line
+        # (the loop's own vertices inside are Clipper's: distinct)
+        k = np.flatnonzero((Q[:, 0] == a) | (Q[:, 0] == c) | (Q[:, 1] == b) | (Q[:, 1] == e))
+        if not len(k):
             break
-        prv, nx = np.roll(Q, 1, axis=0), np.roll(Q, -1, axis=0)
-        mid = np.zeros(len(Q), dtype=bool)
+        keep = np.ones(n, dtype=bool)
+        keep[k[np.all(Q[k] == Q[k - 1], axis=1)]] = False       # repeated: the first stays
+        if not keep.all():
+            Q = Q[keep]
+            continue
+        P, prv, nx = Q[k], Q[k - 1], Q[(k + 1) % n]
+        mid = np.zeros(len(k), dtype=bool)
         for axis, at in ((0, a), (0, c), (1, b), (1, e)):
-            mid |= (Q[:, axis] == at) & (prv[:, axis] == at) & (nx[:, axis] == at)
+            mid |= (P[:, axis] == at) & (prv[:, axis] == at) & (nx[:, axis] == at)
         if not mid.any():
             break
-        if mid.all():                         # all on one edge line: no area
+        if mid.all() and len(k) == n:          # all on one edge line: no area
             return Q[:0]
-        Q = Q[~mid]
+        keep[k[mid]] = False
+        Q = Q[keep]
     return Q
 
 
