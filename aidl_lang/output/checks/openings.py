@@ -513,6 +513,7 @@ def _united(shapes, within=None, plus=None) -> mf.CrossSection:
     same turn (a row of 5,000 circles intersected with the plate they cut: 5 s scanned
     across the row; the plate in the first group: 6 s)."""
     from ..part.booleans import UNION_GROUP
+    from ..part.nearby import faces_apart
     from ..part.scanwork import plan, turned, turned_back
     faces = [f for f in shapes if f is not None and not f.is_empty()]
     turn = plan(faces)[0] if faces else False
@@ -520,7 +521,10 @@ def _united(shapes, within=None, plus=None) -> mf.CrossSection:
         out = _union(([plus] if plus is not None else []) + faces)
         return out ^ within if within is not None else out
     faces = turned(faces)
-    while len(faces) > UNION_GROUP:
+    # faces apart (a row of holes with walls between them) unite in one pass, the same
+    # polygons in the same order, as :meth:`..part.booleans.Renderer.union` does
+    grouped = len(faces) > UNION_GROUP and not faces_apart(faces)
+    while grouped and len(faces) > UNION_GROUP:
         faces = [mf.CrossSection.batch_boolean(faces[i:i + UNION_GROUP], mf.OpType.Add)
                  for i in range(0, len(faces), UNION_GROUP)]
     out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)
