@@ -235,8 +235,11 @@ class Tree:
         return [sys.executable, "-m", "aidl_lang.cli", *args]
 
     def where(self) -> str:
+        # run outside any checkout: the current folder comes first on sys.path (the tree
+        # before showed as this one when run from this one's root)
         return subprocess.run([sys.executable, "-c", "import aidl_lang; print(aidl_lang.__file__)"],
-                              env=self.env, capture_output=True, text=True).stdout.strip()
+                              env=self.env, capture_output=True, text=True,
+                              cwd=tempfile.gettempdir()).stdout.strip()
 
 
 def floor(dxf: str, work: str, timeout: float):

@@ -227,3 +227,179 @@ def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkey
     assert res.ok and not res.sink.items, [d.message for d in res.sink.items]
     assert seen["vertices"] > nearby.SMALL_VERTS, seen          # the large path
     assert seen["pairs"] <= 10, seen                            # was 21,608
+
+
+# ------------------------------------------------ 5,000 circles in a row (benchmarks' collinear)
+ROW = 600          # circles 1 mm apart: past the booleans' turn (scanwork.plan, ~430 circles)
+
+
+@pytest.fixture(scope="module")
+def long_row():
+    """The collinear plate of ``benchmarks/perforated.py`` at ROW holes of r 0.6 mm (they
+    overlap: one long opening), compiled once; the holes' union as the booleans hand it to
+    the part's last booleans (``Renderer.union(..., frame=True)``: (shape, turned))."""
+    from benchmarks.perforated import collinear_aidl
+    framed = []
+    real = booleans.Renderer.union
+
+    def union(self, faces, s=None, frame=False):
+        got = real(self, faces, s, frame=frame)
+        if frame:
+            framed.append(got)
+        return got
+    mp = pytest.MonkeyPatch()
+    mp.setattr(booleans.Renderer, "union", union)
+    try:
+        res = compile_source(collinear_aidl(ROW, 0.6), "row.aidl", min_wall=0)
+    finally:
+        mp.undo()
+    return res, framed
+
+
+def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkeypatch):
+    """A plate minus ROW overlapping circles in a row.  Clipper2 scans along y: a row along x
+    puts every circle's edges on each scan line, and its booleans and offsets then cost far
+    more than along the row (at 5,000 holes the plate minus the row took 1.05 s scanned
+    across it, 0.03 s along it; the whole row's opening 15 s and 0.18 s).  What is handed
+    to Clipper is checked here by its extent along the scan line, not timed.
+
+    The booleans cut the holes in the frame they were united in (turned a quarter turn: the
+    row lies along y there), where the union was turned back first before.  W0507's opening
+    (``walls._thin``) opens its tiles of the row turned (each opened shape at most
+    ``TURN_ASPECT`` times wider than tall; the tiles were 20 times wider), and clips the
+    tiles in arrays (``_clip_ring``: the region of Clipper's intersection with each tile's
+    box), with the same pieces as the whole opening."""
+    from aidl_lang.output.checks import walls
+    from aidl_lang.output.part.scanwork import turned, turned_back
+    res, framed = long_row
+    assert res.ok
+    (part,) = res.drawing.parts
+    # the booleans: one union of the holes, returned as scanned (turned), cut as it is
+    ((cut, turn),) = framed
+    x0, y0, x1, y1 = cut.bounds()
+    assert turn and y1 - y0 > 100 * (x1 - x0)                # the row along y: scanned along
+    plate = (ROW + 3) * 6.0
+    assert part.shape.area() == pytest.approx(plate - cut.area(), abs=1e-6)
+    assert part.shape.num_contour() == 2                 # the plate and its one long opening
+    # W0507's opening: tiles opened turned, clipped in arrays
+    t = 0.5
+    opened, clips = [], []
+    real_open, real_clip = walls._open, walls._clip_loops
+
+    def counted_open(shape, t):
+        a, b, c, e = shape.bounds()
+        opened.append((c - a) / (e - b))
+        return real_open(shape, t)
+
+    def checked_clip(loops, boxes, a, b, c, e):
+        got = real_clip(loops, boxes, a, b, c, e)
+        if len(clips) < 4:              # the region: Clipper's intersection with the box
+            box = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+            want = mf.CrossSection([p.tolist() for p in loops], mf.FillRule.Positive) ^ box
+            mine = mf.CrossSection([p.tolist() for p in got[0]], mf.FillRule.Positive)
+            clips.append(((mine ^ want).area(), want.area(), mine.area()))
+        return got
+    monkeypatch.setattr(walls, "_open", counted_open)
+    monkeypatch.setattr(walls, "_clip_loops", checked_clip)
+    shape = part.shape ^ mf.CrossSection.square((150.0, 6.0)).translate((-2.0, -3.0))
+    assert shape.num_vert() > walls.TILE_VERTS                # the first 150 mm, in tiles
+    pieces = walls._thin(shape, t, least=2 * t * t, whole_loops=0)
+    assert len(opened) > 1 and len(clips) > 1                 # in tiles, clipped
+    assert max(opened) <= 1 / walls.TURN_ASPECT, opened       # each opened turned
+    for common, want, mine in clips:
+        assert common == pytest.approx(want, abs=1e-6) and mine == pytest.approx(want, abs=1e-6)
+    flat = turned([shape])[0]
+    whole = turned_back(flat - real_open(flat, t))
+    assert sum(p.area() for p in pieces) == pytest.approx(whole.area(), rel=1e-6, abs=1e-6)
+
+
+def test_the_webs_distances_in_one_pass_are_each_webs_own():
+    """``openings._seg_distances`` (every web's centre to its two features' segments at once,
+    in chunks) gives what ``_seg_distance`` gives for each point alone, to the bit, with
+    features of no segment (inf) among them and chunks that split the points."""
+    from aidl_lang.output.checks.openings import _seg_distance, _seg_distances
+    rng = np.random.default_rng(7)
+    sf = np.sort(rng.choice([0, 1, 2, 4, 5, 9], size=300))   # features 3, 6-8: no segment
+    A, B = rng.normal(size=(300, 2)), rng.normal(size=(300, 2))
+    B[5] = A[5]                                               # a zero-length segment
+    P = rng.normal(size=(40, 2)) * 2
+    F = rng.integers(0, 10, size=40)
+    want = [_seg_distance(p, A[sf == f], B[sf == f]) for p, f in zip(P, F)]
+    for chunk in (1, 50, 1 << 20):
+        assert _seg_distances(P, F, sf, A, B, chunk=chunk).tolist() == want
+
+
+def test_loops_clipped_in_arrays_are_clippers_intersection():
+    """``walls._clip_loops`` (loops crossing the box projected onto it, ``_clip_ring``): the
+    region of the clipped loops is Clipper's intersection of the shape with the box, for a
+    plate with holes near, across and around the box's edges and corners, boxes cutting
+    through holes, between them, inside one and around the whole."""
+    from aidl_lang.output.checks import walls
+    from aidl_lang.output.checks.common import _loop_boxes
+    rng = np.random.default_rng(3)
+    plate = mf.CrossSection.square((40.0, 20.0)) - mf.CrossSection.batch_boolean(
+        [mf.CrossSection.circle(float(r), 24).translate((float(x), float(y)))
+         for x, y, r in zip(rng.uniform(0, 40, 30), rng.uniform(0, 20, 30),
+                            rng.uniform(0.5, 3, 30))], mf.OpType.Add)
+    star = mf.CrossSection([[(20 + 9 * np.cos(k * np.pi / 7) * (1 + k % 2),
+                              10 + 4 * np.sin(k * np.pi / 7) * (1 + k % 2))
+                             for k in range(14)]])
+    for shape in (plate, plate - star, star):
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+        boxes = _loop_boxes(loops)
+        for a, b, c, e in [(5, 5, 15, 12), (-1, -1, 41, 21), (0, 0, 40, 20), (19, 9, 21, 11),
+                           (10.3, -5, 10.31, 30), (-3, 4, 50, 4.5), *rng.uniform(-2, 42, (8, 4))]:
+            a, c = sorted((a, c))
+            b, e = sorted((b, e))
+            got, got_boxes = walls._clip_loops(loops, boxes, a, b, c, e)
+            box = mf.CrossSection.square((c - a, e - b)).translate((a, b))
+            want = shape ^ box
+            mine = mf.CrossSection([p.tolist() for p in got], mf.FillRule.Positive)
+            # (to Clipper's grid: it rounds the points where edges cross the box to 1e-8 mm)
+            assert mine.area() == pytest.approx(want.area(), abs=1e-6)
+            assert (mine ^ want).area() == pytest.approx(want.area(), abs=1e-6)
+            assert np.array_equal(got_boxes, _loop_boxes(got))
+
+
+def test_holes_whose_boxes_are_apart_are_not_intersected(monkeypatch):
+    """W0508's search for overlapping holes (``openings._analyse``) pairs the holes within
+    the wall's reach by their boxes; a pair whose boxes do not meet has nothing in common and
+    is no longer intersected: 100 holes of r 0.4 mm 1 mm apart (0.2 mm walls, reported as
+    W0507 webs) measure each hole's area twice (the region kept, its area: 200 areas; 299
+    before, one per neighbour pair's intersection too)."""
+    from aidl_lang.output import checks
+    from aidl_lang.output.checks import openings
+    from benchmarks.perforated import collinear_aidl
+    areas, inside = [], []
+    real, analyse = openings._area, checks._analyse
+
+    def counted(*args, **kw):
+        inside.append(1)
+        try:
+            return analyse(*args, **kw)
+        finally:
+            inside.pop()
+    monkeypatch.setattr(openings, "_area", lambda s: (inside and areas.append(1), real(s))[1])
+    monkeypatch.setattr(checks, "_analyse", counted)
+    res = compile_source(collinear_aidl(100, 0.4), "row.aidl")
+    webs = [d for d in res.sink.items if d.code == "W0507"]
+    assert len(webs) == 99 and all(" is 0.20 mm wide" in d.message for d in webs)
+    assert not [d for d in res.sink.items if d.code == "W0508"]
+    assert len(areas) == 200, len(areas)
+
+
+def test_holes_apart_in_a_row_are_united_in_one_pass(monkeypatch):
+    """``openings._united`` (the holes of a part filled, for W0507's outline) of 500 holes of
+    r 0.4 mm 1 mm apart in a row: scanned along the row, and, their boxes apart, in one
+    ``batch_boolean`` over their vertices once (12,000; in groups of 16, then the groups'
+    results, and theirs: 36,000 before), with the same union."""
+    from aidl_lang.output.checks import openings
+    from aidl_lang.output.part.scanwork import plan
+    holes = [mf.CrossSection.circle(0.4, 24).translate((float(i), 0.0)) for i in range(500)]
+    assert plan(holes)[0]                                     # the row: scanned along it
+    work: Counter = Counter()
+    monkeypatch.setattr(openings, "mf", _Manifold(work))
+    got = openings._united(holes)
+    assert work["manifold"] == sum(h.num_vert() for h in holes) == 12_000
+    want = mf.CrossSection.batch_boolean(holes, mf.OpType.Add)
+    assert got.num_contour() == 500 and got.area() == pytest.approx(want.area(), rel=1e-12)

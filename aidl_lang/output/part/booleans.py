@@ -40,7 +40,7 @@ from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot
                        rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
                        spline_band)
 from .placement import bends_of, placement_matrix
-from .scanwork import plan, turned, turned_back, union_seconds
+from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
@@ -60,7 +60,7 @@ SLIT_HALF = 2.5e-7
 # is covered twice over, the piece that stays keeps its side within MATCH_TOL of the cut)
 SLIT_GROW = 1.5 * SLIT_HALF
 SLIT_OFF = 1e-3    # of a band's own area: a through-cut with less of it on the material cuts nothing
-
+HALF_TURN = ((-1.0, 0.0, 0.0), (0.0, -1.0, 0.0))    # exact: a turned union turned clockwise
 
 class Part(Compared):
     """One part of the booleans' result: its structure's final shape (mm)."""
@@ -227,7 +227,7 @@ class Renderer:
                                                  vertices))
             self.deadline.check(self.STAGE, s or self.current, ahead)
 
-    def union(self, faces: list, s: Structure | None = None) -> mf.CrossSection:
+    def union(self, faces: list, s: Structure | None = None, frame: bool = False):
         """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
         results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
         edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
@@ -239,9 +239,10 @@ class Renderer:
         :func:`.scanwork.plan`): 4 000 circles of different radii on a row, 31 s scanned
         along y, 0.1 s along x.  The deadline is checked between groups (:meth:`tick`), each
         group weighed by its scan-line work when all the faces' could come near the
-        deadline."""
+        deadline.  A CrossSection; ``frame=True``: (the union as scanned, turned), for
+        booleans with it scanned the same way (:meth:`shape`)."""
         if not faces:
-            return mf.CrossSection()
+            return (mf.CrossSection(), False) if frame else mf.CrossSection()
         left = (self.deadline.at - time.monotonic() if self.deadline is not None
                 else float("inf"))
         turn, watched = plan(faces, left)
@@ -260,6 +261,8 @@ class Renderer:
         self.tick(s, faces, watched)
         out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
         self.tick(s)                # a union that ended past the deadline: E0304 at ``s``
+        if frame:
+            return out, turn
         return turned_back(out) if turn else out
 
     def P(self, p) -> np.ndarray:
@@ -879,13 +882,19 @@ class Renderer:
         self.current = s
         acc = self.union(faces, s)
         if holes:
-            cut = self.union([h for _, h in holes], s)
-            for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
+            # the holes cut scanned along a row as they were united (5,000 circles along x:
+            # 1.05 s scanned across it, 0.03 s along it), turned clockwise (exact), where
+            # Clipper gives the loops in the order it gives them scanned across
+            cut, turn = self.union([h for _, h in holes], s, frame=True)
+            here, back = ((acc.transform(TURN_BACK), lambda x: x.transform(TURN)) if turn
+                          else (acc, lambda x: x))
+            cut = cut.transform(HALF_TURN) if turn else cut
+            for poly in back(here ^ cut).to_polygons():     # the part of each hole that cuts
                 out.hole_outlines.append(np.asarray(poly))
             for c, h in holes:
                 self.tick(s)
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
-            acc = acc - cut
+            acc = back(here - cut)
         if getattr(s, "finish", None) and not acc.is_empty():
             try:
                 # the deadline covers the exact recovery and every loop's fillets
