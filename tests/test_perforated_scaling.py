@@ -157,13 +157,21 @@ def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
             assert res.ok, [d.message for d in res.sink.items]
             exact = res.drawing.exact
             work["arrays kept"] = sum(isinstance(x, np.ndarray) for x in exact._b + exact._c)
+            holes = res.drawing.hole_outlines           # (main before: a list of arrays)
+            work["hole outlines made"] = sum(isinstance(x, np.ndarray)
+                                             for x in getattr(holes, "_items", holes))
             out = build(res.drawing, res.model.root.name, deadline=res.deadline)
             if how == "loop":           # (the same cut order from either)
                 counting[0] = False     # (the writers that order cuts do it paused)
                 cuts = toolpath.plan(out)
                 counting[0] = True
                 assert sum(c.operation == "cut_inner" for c in cuts) == len(centres)
-            return encode(out, ".dxf", Options())
+            data = encode(out, ".dxf", Options())
+            pr.disable()
+            # read (the SVG's `--show holes`): each hole's outline, the circle's 45 chords
+            # (a DXF's holes are its Drawing2D's own, no hole structures)
+            assert [len(P) for P in holes] == [45] * len(centres) * (how == "loop")
+            return data
         finally:
             pr.disable()
     gc.callbacks.append(counted)
@@ -211,6 +219,9 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
     # (exact._pieces), not two more arrays per hole kept from the booleans to the writer
     # (main before: 4,002 arrays at 2,000 holes, 1,002 at 500; the outline's carriers: one)
     assert small["arrays kept"] <= 1 and large["arrays kept"] <= 1, large["arrays kept"]
+    # the part of each hole that cuts (`--show holes` only) is made when read, not the
+    # solid's shape intersected with its holes and an array per hole in every compile
+    assert small["hole outlines made"] == 0 == large["hole outlines made"], large
     # the collector is paused through the booleans, the checks, the exact outlines and the
     # writer (as through the parser, the interpreter and the solver): a pass when each ends
     # (4-5 here), not one every 700 objects made (main before: 500 -> 2,000 holes 12 -> 39

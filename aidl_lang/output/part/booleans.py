@@ -104,6 +104,34 @@ class Through(Compared):
         self.on_outline = on_outline
 
 
+class HoleOutlines:
+    """:attr:`Drawing.hole_outlines` (a list of N x 2 arrays, mm, when read): the part of each
+    hole that cuts; a solid's made from its shape and its holes' union when first read."""
+    __slots__ = ("_items",)
+
+    def __init__(self):
+        self._items: list = []          # (shape, holes) pairs not yet made, then arrays
+
+    def cut(self, shape: mf.CrossSection, holes: mf.CrossSection | None) -> None:
+        self._items.append((shape, holes))          # (None: the whole shape, a hole part)
+
+    def _made(self) -> list:            # (only the SVG's `--show holes` reads them)
+        if any(isinstance(x, tuple) for x in self._items):
+            self._items = [np.asarray(q) for x in self._items for q in (
+                (x[0] if x[1] is None else x[0] ^ x[1]).to_polygons()
+                if isinstance(x, tuple) else [x])]
+        return self._items
+
+    def __iter__(self):
+        return iter(self._made())
+    def __len__(self) -> int:                                           # noqa: E301
+        return len(self._made())
+    def __getitem__(self, i):                                           # noqa: E301
+        return self._made()[i]
+    def __eq__(self, other):                                            # noqa: E301
+        return list(self) == list(other)
+
+
 class Drawing(Compared):
     """The booleans' result of a model: its parts, lines, cuts and each structure's own shape."""
     __slots__ = ("parts", "lines", "hole_outlines", "open_curves", "exact", "strokes", "shapes",
@@ -120,7 +148,7 @@ class Drawing(Compared):
                  part_of: dict | None = None, thickness: dict | None = None):
         self.parts = [] if parts is None else parts
         self.lines = [] if lines is None else lines  # (style, Nx2 polyline)
-        self.hole_outlines = [] if hole_outlines is None else hole_outlines
+        self.hole_outlines = HoleOutlines() if hole_outlines is None else hole_outlines
         self.open_curves = [] if open_curves is None else open_curves
         # the exact curves behind every polygon handed to Manifold (:mod:`.exact`)
         self.exact = exact
@@ -230,11 +258,10 @@ class Renderer:
     def union(self, faces: list, s: Structure | None = None) -> mf.CrossSection:
         """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
         results, and so on.  One ``batch_boolean`` over all faces costs about vertices x
-        edges crossing a scan line: 1 000 concentric circles (every one crosses every scan
-        line) took 10 s; united in groups the inner ones vanish early (0.04 s).  Faces whose
-        boxes are apart (:func:`.nearby.faces_apart`: the holes of a perforated sheet) are united in one
-        pass, the same polygons in the same order as in groups, where each level would pass
-        them all again (20,000 holes: 0.27 s instead of 0.95 s).  Faces in a row along x
+        edges crossing a scan line: 1 000 concentric circles took 10 s; in groups the inner
+        ones vanish early (0.04 s).  Faces whose boxes are apart (:func:`.nearby.faces_apart`:
+        a perforated sheet's holes) unite in one pass (20,000 holes: 0.27 s, not 0.95 s), the
+        same polygons in the same order as in groups.  Faces in a row along x
         are united scanned along x (turned a quarter turn and back, exact:
         :func:`.scanwork.plan`): 4 000 circles of different radii on a row, 31 s scanned
         along y, 0.1 s along x.  The deadline is checked between groups (:meth:`tick`), each
@@ -880,8 +907,7 @@ class Renderer:
         acc = self.union(faces, s)
         if holes:
             cut = self.union([h for _, h in holes], s)
-            for poly in (acc ^ cut).to_polygons():      # the part of each hole that cuts
-                out.hole_outlines.append(np.asarray(poly))
+            out.hole_outlines.cut(acc, cut)             # the part of each hole that cuts
             for c, h in holes:
                 self.tick(s)
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
@@ -1074,8 +1100,7 @@ class Renderer:
             out.part_of[name] = s
             self.split.add(name)
         if s.kind == "hole":
-            for poly in shp.to_polygons():
-                out.hole_outlines.append(np.asarray(poly))
+            out.hole_outlines.cut(shp, None)
 
     def run(self) -> Drawing:
         out = Drawing()
