@@ -18,6 +18,10 @@ the arrays the cut order (``toolpath.plan``, the G-code, HP-GL and LightBurn wri
 each step of its nearest-neighbour tour measured every entry left and each loop's depth
 tested every other loop's box: 16 times the work at 4 times the holes.
 
+Per-hole objects kept are counted too: the arrays the exact recovery keeps per circle before
+its chords are indexed, the hole outlines made before anything reads them, and the cyclic
+collector's passes over the model (each walks its tens of thousands of objects).
+
 Counts, not time: the figures do not depend on the machine's load.  Times are in
 ``benchmarks/perforated.py``.
 """
