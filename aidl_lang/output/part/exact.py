@@ -70,7 +70,11 @@ class Provenance:
         self.max_vertices = max_vertices      # the budget's ``vertices`` (None: no limit)
         self.vertices = 0                     # tessellated so far
         self._key: dict = {}
-        self._a: list = []            # chord starts, ends (x, y) and carrier index
+        # chord starts (x, y), ends and carrier index, a piece per polygon: an end of None is
+        # the polygon's next vertex (its starts turned by one), a carrier index of an int is
+        # every chord's (one circle): made in one array for all polygons when the chords are
+        # indexed (_chords), not two arrays per hole kept meanwhile (50,000 holes: 100,000)
+        self._a: list = []
         self._b: list = []
         self._c: list = []
         self._ends: list = []         # (x, y, carrier before, carrier after)
@@ -159,7 +163,7 @@ class Provenance:
             return np.zeros((0, 2))
         P = np.column_stack([np.asarray(xs, float), np.asarray(ys, float)])
         self._a.append(P)
-        self._b.append(np.concatenate([P[1:], P[:1]]))      # np.roll(P, -1, axis=0)
+        self._b.append(None)                # np.roll(P, -1, axis=0), made in _chords
         self._c.append(np.asarray(ids, dtype=np.int64))
         self._index = None
         return P
@@ -184,8 +188,8 @@ class Provenance:
         np.multiply(sin, r, out=P[:, 1])
         P[:, 1] += cy
         self._a.append(P)
-        self._b.append(np.concatenate([P[1:], P[:1]]))
-        self._c.append(np.full(n, k, dtype=np.int64))
+        self._b.append(None)
+        self._c.append(k)
         self._index = None
         return P
 
@@ -412,9 +416,7 @@ class Provenance:
     # ------------------------------------------------------------ edge -> chord
     def _chords(self):
         if self._index is None:
-            A = np.concatenate(self._a) if self._a else np.zeros((0, 2))
-            B = np.concatenate(self._b) if self._b else np.zeros((0, 2))
-            C = np.concatenate(self._c) if self._c else np.zeros(0, dtype=np.int64)
+            A, B, C = _pieces(self._a, self._b, self._c)
             A, B, C = _distinct_chords(A, B, C)
             self._a, self._b, self._c = [A], [B], [C]
             self._index = _Grid(A, B, C)
@@ -430,6 +432,28 @@ class Provenance:
         if bad.any():
             self.unmatched += int(bad.sum())
         return cid
+
+
+def _pieces(a: list, b: list, c: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The chords ``(A, B, C)`` (starts and ends, n x 2 mm; carrier indices, n) of the pieces
+    of :class:`Provenance`: ``a[i]`` a piece's starts, ``b[i]`` its ends or None (its starts
+    turned by one: a closed polygon's next vertex), ``c[i]`` its carrier indices or one
+    index for all of them."""
+    if not a:
+        return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros(0, dtype=np.int64)
+    A = np.concatenate(a)
+    sizes = np.array([len(P) for P in a], dtype=np.int64)
+    starts = np.cumsum(sizes) - sizes
+    nxt = np.arange(1, len(A) + 1)
+    full = sizes > 0
+    nxt[(starts + sizes - 1)[full]] = starts[full]      # each piece's np.roll(P, -1)
+    B = A.take(nxt, axis=0)
+    C = np.empty(len(A), dtype=np.int64)
+    for at, n, ends, ids in zip(starts.tolist(), sizes.tolist(), b, c):
+        if ends is not None:
+            B[at:at + n] = ends
+        C[at:at + n] = ids
+    return A, B, C
 
 
 _UNIT: dict = {}

@@ -24,6 +24,7 @@ import numpy as np
 from ...records import Compared
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
 from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
+from ...memory import gc_paused
 from .booleans import Drawing
 
 __all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
@@ -243,7 +244,12 @@ def build(drawing: Drawing, title: str = "", thickness=None, deadline=None) -> O
     :class:`~aidl_lang.limits.Deadline` (``aidl render``), or None for no wall-time bound.
     Raises :class:`OutputError` (with its ``budget``) when the exact outlines cannot be
     recovered within bounded work (thousands of curves on top of each other) or before the
-    deadline."""
+    deadline.  The collector is paused meanwhile (:func:`~aidl_lang.memory.gc_paused`)."""
+    with gc_paused():
+        return _build(drawing, title, thickness, deadline)
+
+
+def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
     from .exact import Provenance
     exact = drawing.exact if drawing.exact is not None else Provenance()
     out = Output(title=title, drawing=drawing)

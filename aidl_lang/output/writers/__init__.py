@@ -180,8 +180,10 @@ def encode(output: Output, suffix: str, options: Options | None = None,
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None
     from ...limits import OutOfMemory, is_out_of_memory
+    from ...memory import gc_paused
     try:
-        return fmt.write(output, options or Options())
+        with gc_paused():           # its entities: many small objects, no cycles to collect
+            return fmt.write(output, options or Options())
     except (MemoryError, SystemError) as ex:
         if not is_out_of_memory(ex):
             raise
