@@ -147,6 +147,29 @@ def test_close_pairs_in_runs_are_the_pairs_of_one_query(monkeypatch):
         assert np.array_equal(a, b)
 
 
+def test_close_pairs_skips_the_feature_pairs_asked_and_only_them():
+    """``close_pairs(..., skip=pairs of features)`` (``openings._analyse``: holes known to
+    overlap are not measured again) answers what it answers without ``skip`` less the pairs
+    of those features, in the same order: small inputs, the grid (a feature per 7 vertices)
+    and the runs (a feature per 60 vertices of a walk), pairs given either way round."""
+    from aidl_lang.output.part import nearby
+    rng = np.random.default_rng(3)
+    V = np.cumsum(rng.normal(size=(4500, 2)) * 0.3, axis=0)    # a walk: runs of a feature
+    A, B = V, np.roll(V, -1, axis=0)
+    for n, per in ((300, 7), (4500, 7), (4500, 60)):
+        f = np.arange(n) // per
+        whole = nearby.close_pairs(V[:n], f, A[:n], B[:n], f, 0.3)
+        fa, fb = f[whole[0]], f[whole[1]]
+        skip = np.unique(np.column_stack([fa, fb]), axis=0)[::2]
+        skip[::2] = skip[::2, ::-1].copy()
+        got = nearby.close_pairs(V[:n], f, A[:n], B[:n], f, 0.3, skip=skip)
+        keys = {(int(a), int(b)) for a, b in skip} | {(int(b), int(a)) for a, b in skip}
+        left = np.array([(int(a), int(b)) not in keys for a, b in zip(fa, fb)])
+        assert 0 < left.sum() < len(left)
+        for a, b in zip(whole, got):
+            assert np.array_equal(a[left], b)
+
+
 @pytest.mark.parametrize("example", ["telephone", "violin", "bottle_opener"])
 def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
     """W0519 and W0520 name the shapes on a slit's or ledge's sides by one search of the

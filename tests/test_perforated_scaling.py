@@ -40,9 +40,9 @@ import manifold3d as mf
 import numpy as np
 
 from aidl_lang.limits import DEFAULT_BUDGET
-from aidl_lang.output import Options, build, encode
+from aidl_lang.output import Options, build, checks, encode
 from aidl_lang.output.fabrication import toolpath
-from aidl_lang.output.part import booleans
+from aidl_lang.output.part import booleans, nearby
 from aidl_lang.pipeline import compile_source, run_deep
 from benchmarks.perforated import grid, panel_aidl, reader, write_dxf
 
@@ -144,6 +144,25 @@ def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
     mp = pytest.MonkeyPatch()
     mp.setattr(booleans, "mf", _Manifold(work))
     mp.setattr(toolpath, "np", _NumPy(work, "toolpath"))
+    from aidl_lang.output.part import exact as exact_mod
+    real_cells, real_match = exact_mod._Grid._cells, exact_mod._Grid.match
+
+    def cells(grid, M):                 # edges looked up in the exact recovery's grid
+        work["cell lookups"] += len(M)
+        return real_cells(grid, M)
+
+    def match(grid, P, Q, tol):         # edges matched
+        work["edges matched"] += len(P)
+        return real_match(grid, P, Q, tol)
+    mp.setattr(exact_mod._Grid, "_cells", cells)
+    mp.setattr(exact_mod._Grid, "match", match)
+    from aidl_lang.output.checks import openings
+    real_local = openings._Near.local
+
+    def local(near, part, region):      # a hole's neighbourhood to intersect (W0501)
+        work["hole intersections"] += 1
+        return real_local(near, part, region)
+    mp.setattr(openings._Near, "local", local)
 
     counting = [True]
 
@@ -232,6 +251,14 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
     # passes from a DXF, 10 -> 50 as a loop; 861 passes, 0.68 s CPU at 20,000 holes)
     assert small["collections"] <= 8 and large["collections"] <= 8, \
         (small["collections"], large["collections"])
+    # the exact recovery looks each edge's cells up once, kept from the count to the match
+    # (main before: twice past 10,000 edges: 500 holes' 22,504 edges 45,008 lookups)
+    assert large["edges matched"] > 10_000, large["edges matched"]
+    for w in (small, large):
+        assert w["cell lookups"] == w["edges matched"], (w["cell lookups"], w["edges matched"])
+    # the panel's own holes are not intersected with its shape for W0501 (no structure
+    # between them and the panel could refill them; main before: one per hole, 500 / 2,000)
+    assert small["hole intersections"] == 0 == large["hole intersections"], large
 
 
 def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkeypatch):
@@ -241,8 +268,6 @@ def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkey
     pair limit at 50,000: the slits went unchecked, W0521), every one then dropped as not
     facing.  Now only vertices whose tangent runs against the segment are searched: 2 here
     (the outline's corners), none per hole.  Counts of pairs measured, not time."""
-    from aidl_lang.output import checks
-    from aidl_lang.output.part import nearby
     seen = {"pairs": 0, "vertices": 0, "on": False}
     measure, slits = nearby._measure, checks._check_slits
 
@@ -287,13 +312,51 @@ def long_row():
         if frame:
             framed.append(got)
         return got
+    measured = {"inside": 0, "pairs": 0, "refills": 0}
+    real_measure, analyse = nearby._measure, checks._analyse
+
+    def counted_measure(V, A, B, vfeat, sfeat, v, s, dist):
+        measured["pairs"] += len(v) if measured["inside"] else 0
+        return real_measure(V, A, B, vfeat, sfeat, v, s, dist)
+
+    def counted_analyse(*args, **kw):
+        measured["inside"] += 1
+        try:
+            return analyse(*args, **kw)
+        finally:
+            measured["inside"] -= 1
     mp = pytest.MonkeyPatch()
     mp.setattr(booleans.Renderer, "union", union)
+    mp.setattr(nearby, "_measure", counted_measure)
+    mp.setattr(checks, "_analyse", counted_analyse)
+    from aidl_lang.output.checks import openings
+    real_refill = openings._Near._near_refill
+
+    def refill(near, part, regions):    # the row's opening within the holes (one boolean)
+        measured["refills"] += 1
+        return real_refill(near, part, regions)
+    mp.setattr(openings._Near, "_near_refill", refill)
     try:
         res = compile_source(collinear_aidl(ROW, 0.6), "row.aidl", min_wall=0)
     finally:
         mp.undo()
-    return res, framed
+    return res, framed, measured
+
+
+def test_holes_found_overlapping_are_not_measured_or_intersected_again(long_row):
+    """W0508/W0507's search (``openings._analyse``): the holes of the row overlap (found by
+    intersecting them first: ROW - 1 merges); their boundaries' close pairs were then
+    measured too and dropped as merged (1,198 vertex-segment pairs here; 107,221 at the
+    default wall, 0.34 s of the 5,000-hole check).  They are skipped before they are
+    measured (``close_pairs(skip=...)``): none here, nothing else is near."""
+    res, _, measured = long_row
+    merges = [d for d in res.sink.items if d.code == "W0508"]
+    assert len(merges) == ROW - 1 == len(res.sink.items)
+    assert measured["pairs"] == 0, measured
+    # nor is the plate's shape within its own holes made for W0501 (no structure between
+    # the plate and its holes could refill them; main before: one union of the row, 0.07 s
+    # at 5,000 holes)
+    assert measured["refills"] == 0, measured
 
 
 def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkeypatch):
@@ -311,7 +374,7 @@ def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkey
     box), with the same pieces as the whole opening."""
     from aidl_lang.output.checks import walls
     from aidl_lang.output.part.scanwork import turned, turned_back
-    res, framed = long_row
+    res, framed, _ = long_row
     assert res.ok
     (part,) = res.drawing.parts
     # the booleans: one union of the holes, returned as scanned (turned), cut as it is
@@ -407,7 +470,6 @@ def test_holes_whose_boxes_are_apart_are_not_intersected(monkeypatch):
     is no longer intersected: 100 holes of r 0.4 mm 1 mm apart (0.2 mm walls, reported as
     W0507 webs) measure each hole's area twice (the region kept, its area: 200 areas; 299
     before, one per neighbour pair's intersection too)."""
-    from aidl_lang.output import checks
     from aidl_lang.output.checks import openings
     from benchmarks.perforated import collinear_aidl
     areas, inside = [], []

@@ -623,28 +623,32 @@ class _Grid:
         n = len(P)
         if not len(self.keys):
             return np.full(n, -1, dtype=np.int64)
-        M = (P + Q) / 2
-        order = np.argsort(self._key(M), kind="stable")
-        cid, multi = self._match_sorted(P.take(order, axis=0), Q.take(order, axis=0),
-                                         M.take(order, axis=0), tol)
+        order = np.argsort(self._key((P + Q) / 2), kind="stable")
+        cid, multi = self._match_sorted(P.take(order, axis=0), Q.take(order, axis=0), tol)
         out = np.empty(n, dtype=np.int64)
         out[order] = cid
         if multi:
             _settle(out, {int(order[qi]): ks for qi, ks in multi.items()})
         return out
 
-    def _match_sorted(self, P, Q, M, tol) -> tuple[np.ndarray, dict]:
+    def _match_sorted(self, P, Q, tol) -> tuple[np.ndarray, dict]:
         """:meth:`match` of edges in the order of their cells: each edge's first carrier
         (the least index) and ``{edge: [carriers, ascending]}`` of the edges several
         carriers hold (edges numbered as given), for :func:`_settle`."""
         n = len(P)
         cid = np.full(n, -1, dtype=np.int64)
         # each query edge's candidate chords: the samples of its midpoint's cell and the eight
-        # around it (_cells); first only how many, to refuse before any work is done
-        one = self._cells(M) if n <= EDGES_PER_BLOCK else None      # one block: kept
-        ends = np.cumsum(one[1].sum(axis=0) if one is not None else np.concatenate(
-            [self._cells(M[b:b + EDGES_PER_BLOCK])[1].sum(axis=0)
-             for b in range(0, n, EDGES_PER_BLOCK)]))
+        # around it (_cells); first only how many, to refuse before any work is done.  The
+        # cells found are kept for the matching (int32 where the table allows: 24 bytes an
+        # edge, less than the midpoints kept before; looked up again there, 20,000 holes'
+        # 900,000 edges: 0.42 -> 0.21 s)
+        wide = np.int64 if len(self.keys) >= 2 ** 31 else np.int32
+        LO = np.empty((3, n), dtype=wide)
+        CNT = np.empty((3, n), dtype=wide)
+        for b in range(0, n, EDGES_PER_BLOCK):
+            LO[:, b:b + EDGES_PER_BLOCK], CNT[:, b:b + EDGES_PER_BLOCK] = \
+                self._cells((P[b:b + EDGES_PER_BLOCK] + Q[b:b + EDGES_PER_BLOCK]) / 2)
+        ends = np.cumsum(CNT.sum(axis=0, dtype=np.int64))
         most = max(MAX_CANDIDATES, CANDIDATES_PER_EDGE * n)
         if ends[-1] > most:
             raise OutOfBudget(f"more than {most:,} (edge, chord) pairs to match "
@@ -658,9 +662,7 @@ class _Grid:
             base = ends[at - 1] if at else 0
             stop = max(at + 1, int(np.searchsorted(ends, base + PAIRS_PER_BLOCK, "right")))
             stop = min(stop, at + EDGES_PER_BLOCK)
-            lo, cnt = one if one is not None and at == 0 and stop == n else \
-                self._cells(M[at:stop])
-            q, k = self._candidates(P, Q, tol, lo, cnt, at)
+            q, k = self._candidates(P, Q, tol, LO[:, at:stop], CNT[:, at:stop], at)
             qs.append(q)
             ks.append(k)
             at = stop

@@ -198,7 +198,8 @@ def _candidates(c, R, idx) -> np.ndarray:
     return np.concatenate(out).astype(np.intp) if out else np.zeros((0, 2), dtype=np.intp)
 
 
-def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool = True):
+def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool = True,
+                skip=None):
     """The (vertex, segment) pairs of different features closer than ``dist``.
 
     ``vertices`` (N x 2) with their feature ids ``vfeat``; segments from ``seg_a`` to
@@ -206,6 +207,10 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
     segment indices, the exact distances and the nearest points on the segments (K x 2).
     ``others=False`` skips the first cut of small inputs (each feature's vertices against
     the box of the other features' segments), which only pays when features are few.
+    ``skip``: pairs of feature ids (K x 2, non-negative, either order) whose pairs are
+    neither measured nor returned (holes already known to overlap, :func:`..checks.openings.
+    _analyse`: a row of 5,000 overlapping circles measured 460,000 such pairs); the other
+    pairs come as without it, in the same order.
     :class:`TooManyPairs` past :data:`MAX_PAIRS` pairs (the candidates of a large input are
     measured :data:`CHUNK` at a time, so memory stays bounded)."""
     V = np.asarray(vertices, dtype=float).reshape(-1, 2)
@@ -215,6 +220,7 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
     if not len(V) or not len(A):
         return empty
     vfeat, sfeat = np.asarray(vfeat), np.asarray(sfeat)
+    keep = _Skip(skip) if skip is not None and len(skip) else None
     if len(V) <= SMALL_VERTS and len(A) <= SMALL_VERTS:
         if others:
             vk, sk = _within_others(V, vfeat, np.minimum(A, B) - dist,
@@ -224,6 +230,9 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
         s, v = _band_pairs(V.take(vk, axis=0), A.take(sk, axis=0), B.take(sk, axis=0),
                            dist)                       # in the same order as all of them
         s, v = sk[s], vk[v]
+        if keep is not None and len(s):
+            ok = keep(vfeat[v], sfeat[s])
+            s, v = s[ok], v[ok]
         return _measure(V, A, B, vfeat, sfeat, v, s, dist) if len(s) else empty
     # large: features of whole loops (a plate's holes) are paired run by run (:func:`_run_pairs`,
     # no candidate within one feature is listed); a feature per vertex (the slit check) by the
@@ -234,9 +243,9 @@ def close_pairs(vertices, vfeat, seg_a, seg_b, sfeat, dist: float, others: bool 
     lo, hi = np.minimum(A, B) - dist, np.maximum(A, B) + dist
     out = None
     if _changes(vfeat) * 8 < len(V) and _changes(sfeat) * 8 < len(A):
-        out = _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h)
+        out = _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h, keep)
     if out is None:
-        out = _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h)
+        out = _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h, keep)
     if not out:
         return empty
     v, s, d, foot = (np.concatenate([o[k] for o in out]) for k in range(4))
@@ -322,7 +331,23 @@ def _cell_keys(P, cell: float) -> np.ndarray:
     return ij[:, 1] * (int(ij[:, 0].max()) + 1) + ij[:, 0]
 
 
-def _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list:
+class _Skip:
+    """``close_pairs``'s ``skip``: called with two arrays of feature ids, True where the pair
+    is not skipped."""
+
+    def __init__(self, skip):
+        sk = np.asarray(skip, dtype=np.int64).reshape(-1, 2)
+        self.keys = np.unique(np.minimum(sk[:, 0], sk[:, 1]) * (1 << 32)
+                              + np.maximum(sk[:, 0], sk[:, 1]))
+
+    def __call__(self, fa, fb) -> np.ndarray:
+        fa, fb = np.asarray(fa, dtype=np.int64), np.asarray(fb, dtype=np.int64)
+        key = np.minimum(fa, fb) * (1 << 32) + np.maximum(fa, fb)
+        at = np.minimum(np.searchsorted(self.keys, key), len(self.keys) - 1)
+        return self.keys[at] != key
+
+
+def _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h, keep=None) -> list:
     """The close pairs by the grid over the vertices: each segment's grown box (``lo``-``hi``)
     searched, :data:`CHUNK` candidates measured at a time (runs of segments from the counts
     taken once), the kept pairs at most :data:`MAX_PAIRS` in all."""
@@ -338,6 +363,9 @@ def _grid_chunks(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list:
             m = (i + j) // 2
             todo += [(m, j), (i, m)]
             continue
+        if len(q) and keep is not None:
+            ok = keep(vfeat[p], sfeat[q + i])
+            q, p = q[ok], p[ok]
         if len(q):
             got = _measure(V, A, B, vfeat, sfeat, p, q + i, dist)
             kept += len(got[0])
@@ -371,7 +399,7 @@ def _runs_of(P, feat, step, reach: float):
     return starts, np.r_[starts[1:], n], feat[starts]
 
 
-def _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list | None:
+def _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h, keep=None) -> list | None:
     """The close pairs of features of whole loops: the vertices and the segments in runs
     (:func:`_runs_of`), each segment run's box (its segments' boxes grown by the distance)
     searched for the vertex runs' boxes it meets in a grid over their centres (the vertex
@@ -408,6 +436,8 @@ def _run_pairs(V, vfeat, A, B, sfeat, lo, hi, dist, h) -> list | None:
         q = q + i
         ok = ((vlo[p] <= shi[q] + pad).all(axis=1) & (vhi[p] >= slo[q] - pad).all(axis=1)
               & (vf[p] != sf[q]))
+        if keep is not None:            # runs of features whose pairs are skipped
+            ok &= keep(vf[p], sf[q])
         _expand(V, vfeat, A, B, sfeat, lo, hi, dist, vs[p[ok]], nv[p[ok]], ss[q[ok]],
                 ns[q[ok]], out, kept)
     return out
