@@ -481,6 +481,47 @@ def _drop_in(segs: list, tol: float, dropped: dict) -> list:
     return out
 
 
+def _inside(x: float, y: float, xs: list, ys: list) -> bool:
+    """Whether ``(x, y)`` lies inside the polygon ``xs``, ``ys`` (even-odd)."""
+    inside, n = False, len(xs)
+    for i in range(n):
+        x0, y0, x1, y1 = xs[i - 1], ys[i - 1], xs[i], ys[i]
+        if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+            inside = not inside
+    return inside
+
+
+def _corner_loops(segs: list) -> tuple[list, int]:
+    """``segs`` (a counter-clockwise loop) with each segment that is a loop of its own (a
+    curve that ends where it starts: Boxes.py's kerf-corrected inner corner, a cubic of
+    0.14 mm round from the corner into the material and back) run so that what it encloses is
+    cut out as a laser cuts it: clockwise inside the loop (else its inside counts twice and
+    fills, and its cut is lost), counter-clockwise outside it.  Returns them and how many
+    were turned round."""
+    from ..geometry.curves import reverse, sample_xy
+    at = [i for i, s in enumerate(segs) if not isinstance(s, Circle)
+          and math.dist(s.start, s.end) <= 1e-9 and _piece_length(s) > 0]
+    if not at or len(at) == len(segs):
+        return segs, 0
+    xs: list = []
+    ys: list = []
+    sample_xy([s for i, s in enumerate(segs) if i not in set(at)], xs, ys)
+    out, turned = list(segs), 0
+    for i in at:
+        lx: list = []
+        ly: list = []
+        sample_xy([segs[i]], lx, ly)
+        a = Loop([segs[i]]).area
+        if len(lx) < 3 or a == 0.0:
+            continue
+        cx = sum(lx) / len(lx)                   # a point of what the loop encloses
+        cy = sum(ly) / len(ly)
+        if (a > 0) == _inside(cx, cy, xs, ys):
+            out[i] = reverse(segs[i])
+            turned += 1
+    return out, turned
+
+
 def _drop_degenerate(pieces, loops, circles, ellipses, notes, name, hatch_circles=()):
     """The pieces, loops, circles and ellipses of a drawing without what is one point: a
     line, arc, Bézier span or elliptical arc all of whose points lie within
@@ -599,6 +640,8 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             if o.area < 0:
                 from ..geometry.curves import reverse
                 o.segments = [reverse(s) for s in reversed(o.segments)]
+            if opts.split_crossings:             # a cut role: corner loops cut
+                o.segments = _corner_loops(o.segments)[0]
             d.outlines.append(o)
     d.outlines.sort(key=lambda o: -abs(o.area))
     if crumbs:
