@@ -174,3 +174,29 @@ def test_corner_loops_that_end_where_they_start_are_cut(corner_loops):
     # (ezdxf's chords of 0.0005 mm on a loop's 0.03 mm bend read it ~0.6 % short: 0.005 mm)
     assert want - 0.006 <= cut <= want + 1e-6            # was want - 0.290: the notch's 2 loops
     assert "hole hole" in text and not {"W0508", "W0522", "W0504"} & set(codes)
+
+
+# ------------------------------- a curve out to a cusp and back beside itself (BinTray's slots)
+@pytest.fixture(scope="module")
+def spike():
+    """A part whose acute corner is Boxes.py's burn-corrected one (BinTray's dividers): the
+    edge comes in at 45 deg, a cubic runs on out to a cusp and the next comes back round the
+    corner's rounding 0.0005 mm beside it, so the chords cross though the curves do not.
+    BinTray's 12 dividers so were engraved as crossing loops (82.5 % of its cut kept); kept
+    as drawn, the booleans leave the 0.0005 mm sliver between them as a void (W0515) and the
+    exact outline cuts the spike's curve twice."""
+    d = ("M 167.495 438.542 L 164.729 441.307 C 164.748 441.288 164.773 441.278 164.800 441.278 "
+         "C 164.745 441.278 164.700 441.323 164.700 441.378 V 480 H 200 V 438.542 Z")
+    return _cut(_svg([(d, "rgb(0,0,0)")], 300, 500), "spike")
+
+
+def test_a_curve_out_to_a_cusp_and_back_beside_itself_is_cut_once(spike):
+    text, notes, cut, codes = spike
+    out = _cubic_length((164.729, 441.307), (164.748, 441.288), (164.773, 441.278), (164.8, 441.278))
+    back = _cubic_length((164.8, 441.278), (164.745, 441.278), (164.7, 441.323), (164.7, 441.378))
+    edges = math.hypot(2.766, 2.765) + (480 - 441.378) + 35.3 + (480 - 438.542) + 32.505
+    assert "drawing paths" not in text and not {"W0515", "W0505"} & set(codes)
+    # the spike cut once: the edges and the rounding from where the edge meets it (the part
+    # of `back` beside `out` and `out` itself are the spike, 0.157 mm); was 0 (engraved)
+    assert edges + back - out - 0.08 <= cut <= edges + back + 1e-6
+    assert not any("cross" in n.message for n in notes)

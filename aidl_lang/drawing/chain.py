@@ -162,9 +162,10 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
     return closed, paths
 
 
-def _crossing(segs) -> tuple[float, float] | None:
+def _crossing(segs, skip=()) -> tuple[float, float] | None:
     """A point where the closed loop ``segs`` crosses itself, or None (on its chords within
-    0.005 mm of the curves)."""
+    0.005 mm of the curves); crossings within :data:`CROSSING_NEAR` of a point of ``skip``
+    (where the curves themselves do not cross) are passed over."""
     import numpy as np
     pts = Loop(list(segs)).points()
     P = np.asarray(pts, dtype=float)
@@ -185,11 +186,11 @@ def _crossing(segs) -> tuple[float, float] | None:
         o3 = orient(c, d, a)
         o4 = orient(c, d, b)
         hit = (o1 * o2 < 0) & (o3 * o4 < 0)
-        if hit.any():
-            k = int(np.argmax(hit))
+        for k in np.flatnonzero(hit).tolist():
             t = o1[k] / (o1[k] - o2[k])
             x, y = c[k] + t * (d[k] - c[k])
-            return float(x), float(y)
+            if not any(math.hypot(x - p[0], y - p[1]) <= CROSSING_NEAR for p in skip):
+                return float(x), float(y)
     return None
 
 
@@ -372,10 +373,10 @@ def _lobes(segs: list) -> list | None:
     along every line, so each loop is a piece of the sheet (a part, a hole in one, or a crumb
     where the line crosses itself).  None when a crossing cannot be placed exactly or the loop
     makes more than :data:`MAX_LOBES` loops."""
-    out, todo = [], [list(segs)]
+    out, todo = [], [(list(segs), ())]
     while todo:
-        cur = todo.pop()
-        hit = _crossing(cur)
+        cur, skip = todo.pop()
+        hit = _crossing(cur, skip)
         if hit is None:
             out.append(cur)
             continue
@@ -384,12 +385,46 @@ def _lobes(segs: list) -> list | None:
         two = _split_crossing(cur, hit)
         if two is None:
             flat = _unloop(cur, hit)
-            if flat is None:
+            if flat is not None:
+                todo.append((flat, skip))
+            elif not _crosses_near(cur, hit):
+                # only the chords cross there: the curves run a hair apart (Boxes.py's acute
+                # corner, a curve out to a cusp and back beside itself 0.0005 mm away)
+                todo.append((cur, skip + (hit,)))
+            else:
                 return None
-            todo.append(flat)
             continue
-        todo += [two[0], two[1]]
+        todo += [(two[0], ()), (two[1], ())]
     return out
+
+
+def _crosses_near(segs: list, hit) -> bool:
+    """Whether two pieces of the loop ``segs`` that are not neighbours, or two neighbours
+    more than :data:`LOBE_MIN` from the point they share, cross within :data:`CROSSING_NEAR` of ``hit`` (exact
+    crossings of their carriers, on both pieces); a crossing the chords show that none of
+    these explains is the chords' own."""
+    from ..geometry.curves import carrier, crossings
+    r = CROSSING_NEAR
+    n = len(segs)
+    near = [i for i, sg in enumerate(segs)
+            if (lambda b: b[0] - r <= hit[0] <= b[2] + r and
+                b[1] - r <= hit[1] <= b[3] + r)(_box_of(sg))]
+    for ii, i in enumerate(near):
+        for j in near[ii + 1:]:
+            try:
+                pts = crossings(carrier(segs[i]), carrier(segs[j]))
+            except Exception:
+                return True
+            for x in pts:
+                if math.dist(x, hit) > r or _split_at(segs[i], x) is None or \
+                        _split_at(segs[j], x) is None:
+                    continue
+                shared = [p for p in ((segs[i].end,) if j == i + 1 else ()) +
+                          ((segs[i].start,) if (i == 0 and j == n - 1) else ())]
+                if any(math.dist(x, p) <= LOBE_MIN for p in shared):
+                    continue         # their shared point (found a hair off where they touch)
+                return True
+    return False
 
 
 def _unloop(segs: list, hit) -> list | None:
@@ -522,6 +557,60 @@ def _corner_loops(segs: list) -> tuple[list, int]:
     return out, turned
 
 
+SPIKE_TOL = 0.005        # mm: a curve out to a cusp and back this near itself is cut once
+
+
+def _beside(s, other, tol: float) -> bool:
+    """Whether every point of segment ``s`` (its chord ends) lies within ``tol`` of
+    ``other``'s carrier."""
+    from ..geometry.curves import carrier, distance_to, sample_xy
+    xs: list = []
+    ys: list = []
+    sample_xy([s], xs, ys)
+    c = carrier(other)
+    return all(distance_to(c, p) <= tol for p in list(zip(xs, ys)) + [s.end])
+
+
+def _cusp_spikes(segs: list) -> tuple[list, int]:
+    """The closed loop ``segs`` without its spikes: a piece that runs out to a cusp (the
+    loop turns round there) and the next one that comes back beside it within
+    :data:`SPIKE_TOL` (Boxes.py's acute corner with a burn correction: a curve out along
+    the corner's rounding and back 0.0005 mm beside it, which its chords see as a crossing).
+    A laser cuts the spike once and it adds nothing to the part: the shorter piece is left
+    out, the longer one cut at the foot of the shorter one's far end (on its own carrier)
+    and a line bridges the hair between them.  Returns the loop and how many spikes."""
+    from ..geometry.curves import carrier, foot, tangent_at
+    out, n_cut, i = list(segs), 0, 0
+    while i < len(out) and len(out) > 3:
+        a, b = out[i], out[(i + 1) % len(out)]
+        ta, tb = tangent_at(a, True), tangent_at(b, False)
+        if isinstance(a, Circle) or isinstance(b, Circle) or \
+                ta[0] * tb[0] + ta[1] * tb[1] > -0.999:
+            i += 1
+            continue
+        short_first = _piece_length(a) <= _piece_length(b)
+        sh, lg = (a, b) if short_first else (b, a)
+        tip = sh.start if short_first else sh.end          # the short piece's far end
+        at = foot(carrier(lg), tip)
+        cut = _split_at(lg, at)
+        if cut is None or math.dist(tip, at) > SPIKE_TOL or not _beside(sh, lg, SPIKE_TOL):
+            i += 1
+            continue
+        keep = cut[1] if short_first else cut[0]
+        bridge = [Line(tip, at)] if math.dist(tip, at) > JOIN_TOL else []
+        if bridge and not short_first:
+            bridge = [Line(at, tip)]
+        new = bridge + [keep] if short_first else [keep] + bridge
+        if i + 1 < len(out):
+            out[i:i + 2] = new
+        else:                                              # the pair wraps round
+            out = new[1:] + out[1:i] + new[:1] if not short_first else \
+                new + out[1:i]
+        n_cut += 1
+        i = max(0, i - 1)
+    return out, n_cut
+
+
 def _drop_degenerate(pieces, loops, circles, ellipses, notes, name, hatch_circles=()):
     """The pieces, loops, circles and ellipses of a drawing without what is one point: a
     line, arc, Bézier span or elliptical arc all of whose points lie within
@@ -611,6 +700,10 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             d.circles.append(segs[0])
             continue
         hit = _crossing(segs)
+        if hit is not None and opts.split_crossings:
+            segs, k = _cusp_spikes(segs)         # a curve out and back beside itself
+            if k:
+                hit = _crossing(segs)
         if hit is not None and opts.close_tol > 0:
             # small loops where it crosses itself (a kerf-corrected inner corner) cut off
             bound = max(opts.close_tol, OVERSHOOT)
@@ -626,10 +719,13 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
         if hit is not None and opts.close_tol > 0 and opts.split_crossings:
             # still crossing, on a cut role: split at its crossings into loops that cross nothing, every
             # line kept (Boxes.py's PaperBox flaps, a slot whose edges cross)
-            lobes = _lobes(_trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0])
+            whole = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0]
+            lobes = _lobes(whole)
             if lobes is not None:
                 parts, hit = lobes, None
-                split.append(len(lobes))
+                if len(lobes) > 1 or len(lobes[0]) != len(whole) or \
+                        any(p is not q for p, q in zip(lobes[0], whole)):
+                    split.append(len(lobes))     # (not when only its chords cross)
         if hit is not None:          # kept as a stroke; an error where an outline is needed
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue
