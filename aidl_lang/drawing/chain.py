@@ -597,6 +597,9 @@ def _cusp_spikes(segs: list) -> tuple[list, int]:
             i += 1
             continue
         keep = cut[1] if short_first else cut[0]
+        if _piece_length(keep) <= JOIN_TOL:                # out and back, end to end
+            i += 1
+            continue
         bridge = [Line(tip, at)] if math.dist(tip, at) > JOIN_TOL else []
         if bridge and not short_first:
             bridge = [Line(at, tip)]
