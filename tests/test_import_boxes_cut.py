@@ -200,3 +200,25 @@ def test_a_curve_out_to_a_cusp_and_back_beside_itself_is_cut_once(spike):
     # of `back` beside `out` and `out` itself are the spike, 0.157 mm); was 0 (engraved)
     assert edges + back - out - 0.08 <= cut <= edges + back + 1e-6
     assert not any("cross" in n.message for n in notes)
+
+
+# ------------------- a loop split where a finger crosses a curved edge (WallPliersHolder's sides)
+@pytest.fixture(scope="module")
+def finger_over_curve():
+    """A side whose last finger's edge (x = 131.4) runs 0.14 mm past the curved top edge that
+    crosses it (WallPliersHolder: both its sides so).  Split at the crossings, the part's
+    loop starts with the piece of the curve after the crossing, whose curve's own middle
+    lies before it, in a crumb: the part was taken as a hole of the crumb (W0502, 81 % of the
+    file's cut kept)."""
+    d = ("M 128.5 113.2 C 130.155 113.2 131.793 112.874 133.322 112.241 L 180 60 V 10 H 131.4 "
+         "V 113 H 128.5 Z")
+    return _cut(_svg([(d, "rgb(0,0,0)")], 300, 300), "finger_over_curve")
+
+
+def test_a_loop_split_at_a_crossing_stays_a_part_not_a_hole_of_its_crumb(finger_over_curve):
+    text, _notes, cut, codes = finger_over_curve
+    want = _cubic_length((128.5, 113.2), (130.155, 113.2), (131.793, 112.874),
+                         (133.322, 112.241)) + math.hypot(180 - 133.322, 112.241 - 60) + \
+        50 + (180 - 131.4) + 103 + 2.9 + 0.2
+    assert "hole " not in text and "W0502" not in codes
+    assert cut == pytest.approx(want, abs=1e-3)           # was 6.28: the part a hole

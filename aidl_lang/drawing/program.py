@@ -261,7 +261,9 @@ def _probe(segs) -> tuple[float, float]:
     if isinstance(s, Arc):
         return s.at(s.start_angle + s.sweep / 2)
     if isinstance(s, Spline):
-        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at(0.5)
+        # a point of the piece itself (a piece of a curve split at a crossing: the curve's
+        # own middle may lie on the other side of the crossing, in another loop)
+        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at((s.u0 + s.u1) / 2)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
