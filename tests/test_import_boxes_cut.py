@@ -222,3 +222,38 @@ def test_a_loop_split_at_a_crossing_stays_a_part_not_a_hole_of_its_crumb(finger_
         50 + (180 - 131.4) + 103 + 2.9 + 0.2
     assert "hole " not in text and "W0502" not in codes
     assert cut == pytest.approx(want, abs=1e-3)           # was 6.28: the part a hole
+
+
+# ---------------------- a through-cut along a piece's edge, 1e-13 mm off vertical (PoleHook)
+_RING = ("M 587.000 119.200 V 45.200 M 595.000 45.200 V 119.200 M 614.100 82.200"
+         " C 614.100 75.088 612.056 68.125 608.211 62.142"
+         " C 604.365 56.159 598.881 51.407 592.412 48.453"
+         " C 585.942 45.498 578.760 44.465 571.720 45.478"
+         " C 564.680 46.490 558.080 49.504 552.705 54.162"
+         " C 547.330 58.819 543.407 64.924 541.403 71.748"
+         " C 539.399 78.572 539.399 85.828 541.403 92.652"
+         " C 543.407 99.476 547.330 105.581 552.705 110.238"
+         " C 558.080 114.896 564.680 117.910 571.720 118.922"
+         " C 578.760 119.935 585.942 118.902 592.412 115.947"
+         " C 598.881 112.993 604.365 108.241 608.211 102.258"
+         " C 612.056 96.275 614.100 89.312 614.100 82.200 Z")
+
+
+@pytest.fixture(scope="module")
+def chords():
+    """PoleHook's ring: a disc (one closed cubic path) with two lines across it, drawn 1.3 and
+    4.6 mm past it at both ends (through-cuts that free three pieces).  The line at x = 595
+    runs on past the disc, so it is cut whole and the pieces' edge along it should not be cut
+    again; the edge came out of the booleans 1e-13 mm off vertical, its direction (rounded)
+    the other way, so it was taken for another line and cut twice (64.9 mm: PoleHook
+    101.1 % of its cut)."""
+    return _cut(_svg([(_RING, "rgb(0,0,0)")], 700, 200), "chords")
+
+
+def test_a_through_cut_along_a_pieces_edge_is_cut_once(chords):
+    import svgelements as S
+    _text, _notes, cut, _codes = chords
+    drawn = float(S.Path(_RING).length(error=1e-6))      # the disc and the two lines
+    # was drawn + 62.3 (the edge at x = 595 cut twice); the line at x = 587 ends 1.27 mm
+    # past the disc at both ends and lies on the pieces' edge: it is cut as their edge
+    assert drawn - 2 * 1.28 <= cut <= drawn + 1e-3
