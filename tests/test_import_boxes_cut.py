@@ -257,3 +257,22 @@ def test_a_through_cut_along_a_pieces_edge_is_cut_once(chords):
     # was drawn + 62.3 (the edge at x = 595 cut twice); the line at x = 587 ends 1.27 mm
     # past the disc at both ends and lies on the pieces' edge: it is cut as their edge
     assert drawn - 2 * 1.28 <= cut <= drawn + 1e-3
+
+
+# ------------------------------------- parts whose joint's tabs interlock (JointPanel's panels)
+@pytest.fixture(scope="module")
+def interlocked():
+    """Two panels drawn as Boxes.py's JointPanel lays them out: the lower one's joint tab
+    pokes 2 mm up into the upper one (the burn correction overlaps them by 0.2 mm), and its
+    path starts along that tab, so its first point lies inside the upper panel: it was taken
+    for a hole of the smaller upper panel (JointPanel: 34.1 % of its cut kept)."""
+    upper = "M 10 10 H 110 V 60.2 H 10 Z"
+    lower = "M 40 58 H 60 V 59.8 H 110 V 130 H 10 V 59.8 H 40 Z"
+    return _cut(_svg([(upper, "rgb(0,0,0)"), (lower, "rgb(0,0,0)")]), "interlocked")
+
+
+def test_parts_whose_tabs_interlock_are_parts_not_holes(interlocked):
+    text, _notes, cut, codes = interlocked
+    assert "hole " not in text and text.count("solid ") == 2 and "W0502" not in codes
+    want = 2 * (100 + 50.2) + (20 + 2 * 1.8 + 50 + 70.2 + 100 + 70.2 + 30)
+    assert cut == pytest.approx(want, abs=1e-6)
