@@ -162,16 +162,22 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
     return closed, paths
 
 
-def _crossing(segs, skip=()) -> tuple[float, float] | None:
+def _crossing(segs) -> tuple[float, float] | None:
     """A point where the closed loop ``segs`` crosses itself, or None (on its chords within
-    0.005 mm of the curves); crossings within :data:`CROSSING_NEAR` of a point of ``skip``
-    (where the curves themselves do not cross) are passed over."""
+    0.005 mm of the curves)."""
+    return next(_chord_hits(segs), None)
+
+
+def _chord_hits(segs):
+    """The points where the chords of the closed loop ``segs`` cross (within 0.005 mm of
+    the curves), one by one, in the loop's order (a generator: a caller that passes over a
+    hit goes on from it, the chords before it not measured again)."""
     import numpy as np
     pts = Loop(list(segs)).points()
     P = np.asarray(pts, dtype=float)
     n = len(P)
     if n < 4 or n > MAX_CROSSING_CHORDS:
-        return None
+        return
     A, B = P, np.roll(P, -1, axis=0)
     for i in range(n - 2):
         j0, j1 = i + 2, n if i > 0 else n - 1
@@ -189,9 +195,7 @@ def _crossing(segs, skip=()) -> tuple[float, float] | None:
         for k in np.flatnonzero(hit).tolist():
             t = o1[k] / (o1[k] - o2[k])
             x, y = c[k] + t * (d[k] - c[k])
-            if not any(math.hypot(x - p[0], y - p[1]) <= CROSSING_NEAR for p in skip):
-                return float(x), float(y)
-    return None
+            yield float(x), float(y)
 
 
 OVERSHOOT = 0.5          # mm: a path whose end runs this far past its start is closed there
@@ -330,7 +334,7 @@ CROSSING_NEAR = 0.1      # mm: an exact crossing this near the chords' is the on
 LOBE_MIN = 1e-3          # mm: a loop split off shorter than this is no loop (a touch)
 
 
-def _split_crossing(segs: list, hit) -> tuple[list, list] | None:
+def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     """The closed loop ``segs`` split at its crossing near ``hit`` (a point :func:`_crossing`
     found on the chords) into the two loops that meet there, ``(from the crossing round to
     it on the first piece's side, the rest)``: the two crossing pieces cut at the exact
@@ -340,9 +344,9 @@ def _split_crossing(segs: list, hit) -> tuple[list, list] | None:
     :data:`LOBE_MIN` on each side)."""
     from ..geometry.curves import carrier, crossings
     r = CROSSING_NEAR
-    near = [i for i, sg in enumerate(segs)
-            if (lambda b: b[0] - r <= hit[0] <= b[2] + r and
-                b[1] - r <= hit[1] <= b[3] + r)(_box_of(sg))]
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    near = [i for i, b in enumerate(boxes)
+            if b[0] - r <= hit[0] <= b[2] + r and b[1] - r <= hit[1] <= b[3] + r]
     best = None
     for ii, i in enumerate(near):
         for j in near[ii + 1:]:
@@ -373,32 +377,35 @@ def _lobes(segs: list) -> list | None:
     along every line, so each loop is a piece of the sheet (a part, a hole in one, or a crumb
     where the line crosses itself).  None when a crossing cannot be placed exactly or the loop
     makes more than :data:`MAX_LOBES` loops."""
-    out, todo = [], [(list(segs), ())]
+    out, todo = [], [list(segs)]
     while todo:
-        cur, skip = todo.pop()
-        hit = _crossing(cur, skip)
-        if hit is None:
-            out.append(cur)
-            continue
-        if len(out) + len(todo) + 2 > MAX_LOBES:
-            return None
-        two = _split_crossing(cur, hit)
-        if two is None:
-            flat = _unloop(cur, hit)
-            if flat is not None:
-                todo.append((flat, skip))
-            elif not _crosses_near(cur, hit):
-                # only the chords cross there: the curves run a hair apart (Boxes.py's acute
-                # corner, a curve out to a cusp and back beside itself 0.0005 mm away)
-                todo.append((cur, skip + (hit,)))
-            else:
+        cur = todo.pop()
+        boxes = [_box_of(sg) for sg in cur]
+        skip: list = []
+        for hit in _chord_hits(cur):
+            if any(math.hypot(hit[0] - p[0], hit[1] - p[1]) <= CROSSING_NEAR for p in skip):
+                continue
+            if len(out) + len(todo) + 2 > MAX_LOBES:
                 return None
-            continue
-        todo += [(two[0], ()), (two[1], ())]
+            two = _split_crossing(cur, hit, boxes)
+            if two is not None:
+                todo += [two[0], two[1]]
+                break
+            flat = _unloop(cur, hit, boxes)
+            if flat is not None:
+                todo.append(flat)
+                break
+            if _crosses_near(cur, hit, boxes):
+                return None
+            # only the chords cross there: the curves run a hair apart (Boxes.py's acute
+            # corner, a curve out to a cusp and back beside itself 0.0005 mm away)
+            skip.append(hit)
+        else:
+            out.append(cur)
     return out
 
 
-def _crosses_near(segs: list, hit) -> bool:
+def _crosses_near(segs: list, hit, boxes=None) -> bool:
     """Whether two pieces of the loop ``segs`` that are not neighbours, or two neighbours
     more than :data:`LOBE_MIN` from the point they share, cross within :data:`CROSSING_NEAR` of ``hit`` (exact
     crossings of their carriers, on both pieces); a crossing the chords show that none of
@@ -406,9 +413,9 @@ def _crosses_near(segs: list, hit) -> bool:
     from ..geometry.curves import carrier, crossings
     r = CROSSING_NEAR
     n = len(segs)
-    near = [i for i, sg in enumerate(segs)
-            if (lambda b: b[0] - r <= hit[0] <= b[2] + r and
-                b[1] - r <= hit[1] <= b[3] + r)(_box_of(sg))]
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    near = [i for i, b in enumerate(boxes)
+            if b[0] - r <= hit[0] <= b[2] + r and b[1] - r <= hit[1] <= b[3] + r]
     for ii, i in enumerate(near):
         for j in near[ii + 1:]:
             try:
@@ -427,14 +434,14 @@ def _crosses_near(segs: list, hit) -> bool:
     return False
 
 
-def _unloop(segs: list, hit) -> list | None:
+def _unloop(segs: list, hit, boxes=None) -> list | None:
     """``segs`` with the curve piece near ``hit`` that loops round on itself and ends within
     :data:`OVERSHOOT` of its start (a cubic that crosses itself: Boxes.py's corner loops,
     rounded so their ends miss by 0.001 mm) replaced by the line from its start to its end
     (the crumb the laser cuts off there), or None when there is none."""
     r = CROSSING_NEAR
-    for k, sg in enumerate(segs):
-        b = _box_of(sg)
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    for k, (sg, b) in enumerate(zip(segs, boxes)):
         if not isinstance(sg, Spline) or not (b[0] - r <= hit[0] <= b[2] + r and
                                               b[1] - r <= hit[1] <= b[3] + r):
             continue
