@@ -329,6 +329,9 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     return out, n_cut
 
 
+# a loop whose chords cross where its curves do not is still engraved: kept as an outline,
+# its exact outline took minutes to recover (Lamp: build 3.4 s -> over 190 s)
+PASS_CHORD_CROSSINGS = False
 MAX_LOBES = 64           # a loop that crosses itself is split into at most this many loops
 CROSSING_NEAR = 0.1      # mm: an exact crossing this near the chords' is the one they found
 LOBE_MIN = 1e-3          # mm: a loop split off shorter than this is no loop (a touch)
@@ -395,10 +398,9 @@ def _lobes(segs: list) -> list | None:
             if flat is not None:
                 todo.append(flat)
                 break
-            if _crosses_near(cur, hit, boxes):
+            if _crosses_near(cur, hit, boxes) or not PASS_CHORD_CROSSINGS:
                 return None
-            # only the chords cross there: the curves run a hair apart (Boxes.py's acute
-            # corner, a curve out to a cusp and back beside itself 0.0005 mm away)
+            # only the chords cross there: the curves run a hair apart
             skip.append(hit)
         else:
             out.append(cur)
