@@ -165,12 +165,19 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
 def _crossing(segs) -> tuple[float, float] | None:
     """A point where the closed loop ``segs`` crosses itself, or None (on its chords within
     0.005 mm of the curves)."""
+    return next(_chord_hits(segs), None)
+
+
+def _chord_hits(segs):
+    """The points where the chords of the closed loop ``segs`` cross (within 0.005 mm of
+    the curves), one by one, in the loop's order (a generator: a caller that passes over a
+    hit goes on from it, the chords before it not measured again)."""
     import numpy as np
     pts = Loop(list(segs)).points()
     P = np.asarray(pts, dtype=float)
     n = len(P)
     if n < 4 or n > MAX_CROSSING_CHORDS:
-        return None
+        return
     A, B = P, np.roll(P, -1, axis=0)
     for i in range(n - 2):
         j0, j1 = i + 2, n if i > 0 else n - 1
@@ -185,12 +192,10 @@ def _crossing(segs) -> tuple[float, float] | None:
         o3 = orient(c, d, a)
         o4 = orient(c, d, b)
         hit = (o1 * o2 < 0) & (o3 * o4 < 0)
-        if hit.any():
-            k = int(np.argmax(hit))
+        for k in np.flatnonzero(hit).tolist():
             t = o1[k] / (o1[k] - o2[k])
             x, y = c[k] + t * (d[k] - c[k])
-            return float(x), float(y)
-    return None
+            yield float(x), float(y)
 
 
 OVERSHOOT = 0.5          # mm: a path whose end runs this far past its start is closed there
@@ -324,12 +329,15 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     return out, n_cut
 
 
+# a loop whose chords cross where its curves do not is still engraved: kept as an outline,
+# its exact outline took minutes to recover (Lamp: build 3.4 s -> over 190 s)
+PASS_CHORD_CROSSINGS = False
 MAX_LOBES = 64           # a loop that crosses itself is split into at most this many loops
 CROSSING_NEAR = 0.1      # mm: an exact crossing this near the chords' is the one they found
 LOBE_MIN = 1e-3          # mm: a loop split off shorter than this is no loop (a touch)
 
 
-def _split_crossing(segs: list, hit) -> tuple[list, list] | None:
+def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     """The closed loop ``segs`` split at its crossing near ``hit`` (a point :func:`_crossing`
     found on the chords) into the two loops that meet there, ``(from the crossing round to
     it on the first piece's side, the rest)``: the two crossing pieces cut at the exact
@@ -339,9 +347,9 @@ def _split_crossing(segs: list, hit) -> tuple[list, list] | None:
     :data:`LOBE_MIN` on each side)."""
     from ..geometry.curves import carrier, crossings
     r = CROSSING_NEAR
-    near = [i for i, sg in enumerate(segs)
-            if (lambda b: b[0] - r <= hit[0] <= b[2] + r and
-                b[1] - r <= hit[1] <= b[3] + r)(_box_of(sg))]
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    near = [i for i, b in enumerate(boxes)
+            if b[0] - r <= hit[0] <= b[2] + r and b[1] - r <= hit[1] <= b[3] + r]
     best = None
     for ii, i in enumerate(near):
         for j in near[ii + 1:]:
@@ -375,31 +383,67 @@ def _lobes(segs: list) -> list | None:
     out, todo = [], [list(segs)]
     while todo:
         cur = todo.pop()
-        hit = _crossing(cur)
-        if hit is None:
-            out.append(cur)
-            continue
-        if len(out) + len(todo) + 2 > MAX_LOBES:
-            return None
-        two = _split_crossing(cur, hit)
-        if two is None:
-            flat = _unloop(cur, hit)
-            if flat is None:
+        boxes = [_box_of(sg) for sg in cur]
+        skip: list = []
+        for hit in _chord_hits(cur):
+            if any(math.hypot(hit[0] - p[0], hit[1] - p[1]) <= CROSSING_NEAR for p in skip):
+                continue
+            if len(out) + len(todo) + 2 > MAX_LOBES:
                 return None
-            todo.append(flat)
-            continue
-        todo += [two[0], two[1]]
+            two = _split_crossing(cur, hit, boxes)
+            if two is not None:
+                todo += [two[0], two[1]]
+                break
+            flat = _unloop(cur, hit, boxes)
+            if flat is not None:
+                todo.append(flat)
+                break
+            if _crosses_near(cur, hit, boxes) or not PASS_CHORD_CROSSINGS:
+                return None
+            # only the chords cross there: the curves run a hair apart
+            skip.append(hit)
+        else:
+            out.append(cur)
     return out
 
 
-def _unloop(segs: list, hit) -> list | None:
+def _crosses_near(segs: list, hit, boxes=None) -> bool:
+    """Whether two pieces of the loop ``segs`` that are not neighbours, or two neighbours
+    more than :data:`LOBE_MIN` from the point they share, cross within :data:`CROSSING_NEAR` of ``hit`` (exact
+    crossings of their carriers, on both pieces); a crossing the chords show that none of
+    these explains is the chords' own."""
+    from ..geometry.curves import carrier, crossings
+    r = CROSSING_NEAR
+    n = len(segs)
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    near = [i for i, b in enumerate(boxes)
+            if b[0] - r <= hit[0] <= b[2] + r and b[1] - r <= hit[1] <= b[3] + r]
+    for ii, i in enumerate(near):
+        for j in near[ii + 1:]:
+            try:
+                pts = crossings(carrier(segs[i]), carrier(segs[j]))
+            except Exception:
+                return True
+            for x in pts:
+                if math.dist(x, hit) > r or _split_at(segs[i], x) is None or \
+                        _split_at(segs[j], x) is None:
+                    continue
+                shared = [p for p in ((segs[i].end,) if j == i + 1 else ()) +
+                          ((segs[i].start,) if (i == 0 and j == n - 1) else ())]
+                if any(math.dist(x, p) <= LOBE_MIN for p in shared):
+                    continue         # their shared point (found a hair off where they touch)
+                return True
+    return False
+
+
+def _unloop(segs: list, hit, boxes=None) -> list | None:
     """``segs`` with the curve piece near ``hit`` that loops round on itself and ends within
     :data:`OVERSHOOT` of its start (a cubic that crosses itself: Boxes.py's corner loops,
     rounded so their ends miss by 0.001 mm) replaced by the line from its start to its end
     (the crumb the laser cuts off there), or None when there is none."""
     r = CROSSING_NEAR
-    for k, sg in enumerate(segs):
-        b = _box_of(sg)
+    boxes = boxes or [_box_of(sg) for sg in segs]
+    for k, (sg, b) in enumerate(zip(segs, boxes)):
         if not isinstance(sg, Spline) or not (b[0] - r <= hit[0] <= b[2] + r and
                                               b[1] - r <= hit[1] <= b[3] + r):
             continue
@@ -479,6 +523,104 @@ def _drop_in(segs: list, tol: float, dropped: dict) -> list:
         else:
             out.append(s)
     return out
+
+
+def _inside(x: float, y: float, xs: list, ys: list) -> bool:
+    """Whether ``(x, y)`` lies inside the polygon ``xs``, ``ys`` (even-odd)."""
+    inside, n = False, len(xs)
+    for i in range(n):
+        x0, y0, x1, y1 = xs[i - 1], ys[i - 1], xs[i], ys[i]
+        if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+            inside = not inside
+    return inside
+
+
+def _corner_loops(segs: list) -> tuple[list, int]:
+    """``segs`` (a counter-clockwise loop) with each segment that is a loop of its own (a
+    curve that ends where it starts: Boxes.py's kerf-corrected inner corner, a cubic of
+    0.14 mm round from the corner into the material and back) run so that what it encloses is
+    cut out as a laser cuts it: clockwise inside the loop (else its inside counts twice and
+    fills, and its cut is lost), counter-clockwise outside it.  Returns them and how many
+    were turned round."""
+    from ..geometry.curves import reverse, sample_xy
+    at = [i for i, s in enumerate(segs) if not isinstance(s, Circle)
+          and math.dist(s.start, s.end) <= 1e-9 and _piece_length(s) > 0]
+    if not at or len(at) == len(segs):
+        return segs, 0
+    xs: list = []
+    ys: list = []
+    sample_xy([s for i, s in enumerate(segs) if i not in set(at)], xs, ys)
+    out, turned = list(segs), 0
+    for i in at:
+        lx: list = []
+        ly: list = []
+        sample_xy([segs[i]], lx, ly)
+        a = Loop([segs[i]]).area
+        if len(lx) < 3 or a == 0.0:
+            continue
+        cx = sum(lx) / len(lx)                   # a point of what the loop encloses
+        cy = sum(ly) / len(ly)
+        if (a > 0) == _inside(cx, cy, xs, ys):
+            out[i] = reverse(segs[i])
+            turned += 1
+    return out, turned
+
+
+SPIKE_TOL = 0.005        # mm: a curve out to a cusp and back this near itself is cut once
+
+
+def _beside(s, other, tol: float) -> bool:
+    """Whether every point of segment ``s`` (its chord ends) lies within ``tol`` of
+    ``other``'s carrier."""
+    from ..geometry.curves import carrier, distance_to, sample_xy
+    xs: list = []
+    ys: list = []
+    sample_xy([s], xs, ys)
+    c = carrier(other)
+    return all(distance_to(c, p) <= tol for p in list(zip(xs, ys)) + [s.end])
+
+
+def _cusp_spikes(segs: list) -> tuple[list, int]:
+    """The closed loop ``segs`` without its spikes: a piece that runs out to a cusp (the
+    loop turns round there) and the next one that comes back beside it within
+    :data:`SPIKE_TOL` (Boxes.py's acute corner with a burn correction: a curve out along
+    the corner's rounding and back 0.0005 mm beside it, which its chords see as a crossing).
+    A laser cuts the spike once and it adds nothing to the part: the shorter piece is left
+    out, the longer one cut at the foot of the shorter one's far end (on its own carrier)
+    and a line bridges the hair between them.  Returns the loop and how many spikes."""
+    from ..geometry.curves import carrier, foot, tangent_at
+    out, n_cut, i = list(segs), 0, 0
+    while i < len(out) and len(out) > 3:
+        a, b = out[i], out[(i + 1) % len(out)]
+        ta, tb = tangent_at(a, True), tangent_at(b, False)
+        if isinstance(a, Circle) or isinstance(b, Circle) or \
+                ta[0] * tb[0] + ta[1] * tb[1] > -0.999:
+            i += 1
+            continue
+        short_first = _piece_length(a) <= _piece_length(b)
+        sh, lg = (a, b) if short_first else (b, a)
+        tip = sh.start if short_first else sh.end          # the short piece's far end
+        at = foot(carrier(lg), tip)
+        cut = _split_at(lg, at)
+        if cut is None or math.dist(tip, at) > SPIKE_TOL or not _beside(sh, lg, SPIKE_TOL):
+            i += 1
+            continue
+        keep = cut[1] if short_first else cut[0]
+        if _piece_length(keep) <= JOIN_TOL:                # out and back, end to end
+            i += 1
+            continue
+        bridge = [Line(tip, at)] if math.dist(tip, at) > JOIN_TOL else []
+        if bridge and not short_first:
+            bridge = [Line(at, tip)]
+        new = bridge + [keep] if short_first else [keep] + bridge
+        if i + 1 < len(out):
+            out[i:i + 2] = new
+        else:                                              # the pair wraps round
+            out = new[1:] + out[1:i] + new[:1] if not short_first else \
+                new + out[1:i]
+        n_cut += 1
+        i = max(0, i - 1)
+    return out, n_cut
 
 
 def _drop_degenerate(pieces, loops, circles, ellipses, notes, name, hatch_circles=()):
@@ -570,6 +712,10 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             d.circles.append(segs[0])
             continue
         hit = _crossing(segs)
+        if hit is not None and opts.split_crossings:
+            segs, k = _cusp_spikes(segs)         # a curve out and back beside itself
+            if k:
+                hit = _crossing(segs)
         if hit is not None and opts.close_tol > 0:
             # small loops where it crosses itself (a kerf-corrected inner corner) cut off
             bound = max(opts.close_tol, OVERSHOOT)
@@ -585,10 +731,13 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
         if hit is not None and opts.close_tol > 0 and opts.split_crossings:
             # still crossing, on a cut role: split at its crossings into loops that cross nothing, every
             # line kept (Boxes.py's PaperBox flaps, a slot whose edges cross)
-            lobes = _lobes(_trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0])
+            whole = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0]
+            lobes = _lobes(whole)
             if lobes is not None:
                 parts, hit = lobes, None
-                split.append(len(lobes))
+                if len(lobes) > 1 or len(lobes[0]) != len(whole) or \
+                        any(p is not q for p, q in zip(lobes[0], whole)):
+                    split.append(len(lobes))     # (not when only its chords cross)
         if hit is not None:          # kept as a stroke; an error where an outline is needed
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue
@@ -599,6 +748,8 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             if o.area < 0:
                 from ..geometry.curves import reverse
                 o.segments = [reverse(s) for s in reversed(o.segments)]
+            if opts.split_crossings:             # a cut role: corner loops cut
+                o.segments = _corner_loops(o.segments)[0]
             d.outlines.append(o)
     d.outlines.sort(key=lambda o: -abs(o.area))
     if crumbs:

@@ -261,19 +261,26 @@ def _probe(segs) -> tuple[float, float]:
     if isinstance(s, Arc):
         return s.at(s.start_angle + s.sweep / 2)
     if isinstance(s, Spline):
-        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at(0.5)
+        # a point of the piece itself (a piece of a curve split at a crossing: the curve's
+        # own middle may lie on the other side of the crossing, in another loop)
+        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at((s.u0 + s.u1) / 2)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
 def _containers(loops: list, deadline=None) -> list[list[int]]:
     """For each loop (a list of segments) the indices of the other loops it lies inside (its
-    probe point inside their polygon): each probe is tested only against the loops whose box
+    probe point inside their polygon, and their area larger than its own: two parts drawn
+    overlapping, their joint's tabs interlocked, each have points inside the other, and
+    neither is the other's hole): each probe is tested only against the loops whose box
     holds it, so a sheet of 10 000 separate shapes takes a moment, not the hour that testing
     every pair took."""
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
     boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
                       if len(P) else (np.inf, np.inf, -np.inf, -np.inf) for P in polys])
+    areas = [abs(float(np.dot(P[:, 0], np.roll(P[:, 1], -1)) -
+                       np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2 if len(P) >= 3 else 0.0
+             for P in polys]
     out = []
     for i, segs in enumerate(loops):
         if deadline is not None and i % 256 == 0:
@@ -285,7 +292,7 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
         cand = np.flatnonzero((boxes[:, 0] <= x) & (x <= boxes[:, 2]) & (boxes[:, 1] <= y)
                               & (y <= boxes[:, 3]))
         out.append([int(j) for j in cand if j != i and len(polys[j]) >= 3
-                    and _inside((x, y), polys[j])])
+                    and areas[j] > areas[i] and _inside((x, y), polys[j])])
     return out
 
 

@@ -867,6 +867,12 @@ def _spline_run(c, a, b, P, first: int, last: int):
     edges ``first..last`` follow; None when the exact ends come in the wrong order (an
     overlap thinner than the chords could show)."""
     n = len(P)
+    if not c.closed and last > first and math.dist(c.ctrl[0], c.ctrl[-1]) <= 1e-7 and \
+            math.dist(a, c.ctrl[0]) <= 1e-7 and math.dist(b, c.ctrl[0]) <= 1e-7:
+        # an open curve that ends where it starts (a corner loop), run from that point round
+        # to it: the whole curve, the way its vertices go (the point's foot is either end)
+        fwd = c.foot(tuple(P[(first + 1) % n])) <= c.foot(tuple(P[last % n]))
+        return Spline(c, 0.0, float(c.n)) if fwd else Spline(c, float(c.n), 0.0)
     ua, ub = c.foot(a), c.foot(b)
     # the run's own vertices say which way it goes along the curve, and how far
     v0 = P[first % n]

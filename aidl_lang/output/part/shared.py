@@ -213,9 +213,12 @@ def _span(s) -> tuple:
         if L == 0:
             return (None, 0.0, 0.0, True, SHARED_TOL, False)
         ux, uy = (x1 - x0) / L, (y1 - y0) / L
-        if ux < 0 or (ux == 0 and uy < 0):
-            ux, uy = -ux, -uy
-        key = ("L", round(ux, 9) + 0.0, round(uy, 9) + 0.0, round(ux * y0 - uy * x0, 7) + 0.0)
+        rx, ry = round(ux, 9) + 0.0, round(uy, 9) + 0.0
+        if rx < 0 or (rx == 0 and ry < 0):
+            # (the rounded direction decides: a line 1e-13 mm off vertical is the vertical's
+            # carrier, run either way)
+            ux, uy, rx, ry = -ux, -uy, -rx + 0.0, -ry + 0.0
+        key = ("L", rx, ry, round(ux * y0 - uy * x0, 7) + 0.0)
         t0, t1 = ux * x0 + uy * y0, ux * x1 + uy * y1
         return (key, min(t0, t1), max(t0, t1), t1 >= t0, SHARED_TOL, False)
     if isinstance(s, (Arc, Circle)):
