@@ -102,19 +102,24 @@ def test_generated_nasty_programs(src):
 
 
 def test_out_of_memory_is_E0304_and_the_process_goes_on():
-    """A template doubling itself 14 levels deep (32 767 structures, inside the object budget)
-    under a 600 MB address-space limit: a located E0304 "ran out of memory", not E0302 or a
-    MemoryError; the memory is freed (reference cycles collected), so the next program in
-    the same process compiles (fuzz chunks died or hung after one MemoryError)."""
+    """A template doubling itself 15 levels deep (65 535 structures; the object and geometry
+    budgets raised, so that memory is what runs out) under a 600 MB address-space limit: a
+    located E0304 "ran out of memory", not E0302 or a MemoryError; the memory is freed
+    (reference cycles collected), so the next program in the same process compiles (fuzz
+    chunks died or hung after one MemoryError).  14 levels, inside the default budget, came to
+    fit in 600 MB once the exact recovery kept no chord arrays per circle (W0509), and at a
+    cap just above what they need the compile crawled (one run past 10 minutes at 500 MB)."""
     code = r'''
 import resource
 resource.setrlimit(resource.RLIMIT_AS, (600_000_000, 600_000_000))
 from aidl_lang.pipeline import compile_source
 src = ("def fan(n = 3) -> assembly {\n    if n > 0 {\n        s0 = fan(n - 1)\n"
        "        s1 = fan(n - 1)\n    }\n    c = Circle((0, 0), 1)\n}\n"
-       "solid top {\n    v = fan(14)\n}\n")
+       "solid top {\n    v = fan(15)\n}\n")
 from aidl_lang.limits import Budget
-c = compile_source(src, "m.aidl", budget=Budget(seconds=120))    # memory, not time, runs out
+# memory, not time or the counts, runs out
+c = compile_source(src, "m.aidl", budget=Budget(seconds=120, objects=2_000_000,
+                                                steps=10_000_000, geometry=2_000_000))
 print([(d.code, d.span.line, d.span.col, d.message[:29]) for d in c.sink.items])
 print(compile_source("solid s { c = Circle((0, 0), 1) }\n", "ok.aidl").ok)
 '''
