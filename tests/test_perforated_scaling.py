@@ -346,9 +346,9 @@ def long_row():
 def test_holes_found_overlapping_are_not_measured_or_intersected_again(long_row):
     """W0508/W0507's search (``openings._analyse``): the holes of the row overlap (found by
     intersecting them first: ROW - 1 merges); their boundaries' close pairs were then
-    measured too and dropped as merged (1,198 vertex-segment pairs here; 107,221 at the
-    default wall, 0.34 s of the 5,000-hole check).  They are skipped before they are
-    measured (``close_pairs(skip=...)``): none here, nothing else is near."""
+    measured too and dropped as merged (1,198 vertex-segment pairs here; 107,221 with the
+    default minimum wall thickness, 0.34 s of the 5,000-hole check).  They are skipped
+    before they are measured (``close_pairs(skip=...)``): none here, nothing else is near."""
     res, _, measured = long_row
     merges = [d for d in res.sink.items if d.code == "W0508"]
     assert len(merges) == ROW - 1 == len(res.sink.items)
