@@ -418,18 +418,30 @@ def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkey
 
 def test_the_webs_distances_in_one_pass_are_each_webs_own():
     """``openings._seg_distances`` (every web's centre to its two features' segments at once,
-    in chunks) gives what ``_seg_distance`` gives for each point alone, to the bit, with
-    features of no segment (inf) among them and chunks that split the points."""
-    from aidl_lang.output.checks.openings import _seg_distance, _seg_distances
+    in chunks) is each point's distance to its feature's segments as Shapely measures it,
+    with features of no segment (inf) and a zero-length segment among them and chunks that
+    split the points."""
+    import math
+
+    import shapely
+    from aidl_lang.output.checks.openings import _seg_distances
     rng = np.random.default_rng(7)
     sf = np.sort(rng.choice([0, 1, 2, 4, 5, 9], size=300))   # features 3, 6-8: no segment
     A, B = rng.normal(size=(300, 2)), rng.normal(size=(300, 2))
     B[5] = A[5]                                               # a zero-length segment
     P = rng.normal(size=(40, 2)) * 2
     F = rng.integers(0, 10, size=40)
-    want = [_seg_distance(p, A[sf == f], B[sf == f]) for p, f in zip(P, F)]
+
+    def shapely_distance(p, f):
+        pieces = [shapely.LineString([a, b]) if (a != b).any() else shapely.Point(a)
+                  for a, b in zip(A[sf == f], B[sf == f])]
+        return shapely.distance(shapely.Point(p), shapely.GeometryCollection(pieces)) \
+            if pieces else math.inf
+    want = [shapely_distance(p, f) for p, f in zip(P, F)]
+    assert sum(math.isinf(w) for w in want) >= 5                # points of empty features
     for chunk in (1, 50, 1 << 20):
-        assert _seg_distances(P, F, sf, A, B, chunk=chunk).tolist() == want
+        assert _seg_distances(P, F, sf, A, B, chunk=chunk).tolist() == pytest.approx(
+            want, abs=1e-12)
 
 
 def test_loops_clipped_in_arrays_are_clippers_intersection():

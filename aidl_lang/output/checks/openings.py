@@ -23,7 +23,6 @@ n log n in the number of holes; :func:`_analyse` also gives :mod:`.changes` the 
 merge or reach the outline."""
 from __future__ import annotations
 
-import math
 import re
 
 import manifold3d as mf
@@ -669,8 +668,8 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,
 def _seg_distances(P: np.ndarray, F: np.ndarray, sf: np.ndarray, A: np.ndarray,
                    B: np.ndarray, chunk: int = 1 << 20) -> np.ndarray:
     """For each point ``P[q]`` (mm) the least distance (mm) to the segments ``A[k]``-``B[k]``
-    of feature ``F[q]`` (``sf``: each segment's feature, sorted), inf where it has none: what
-    :func:`_seg_distance` gives for each, in passes over at most ``chunk`` pairs."""
+    of feature ``F[q]`` (``sf``: each segment's feature, sorted), inf where it has none, in
+    passes over at most ``chunk`` point-segment pairs."""
     out = np.full(len(P), np.inf)
     s0, s1 = np.searchsorted(sf, F), np.searchsorted(sf, F + 1)
     L = s1 - s0
@@ -695,18 +694,6 @@ def _seg_distances(P: np.ndarray, F: np.ndarray, sf: np.ndarray, A: np.ndarray,
             out[q0:q1][some] = np.sqrt(least)
         q0 = q1
     return out
-
-
-def _seg_distance(p, A, B) -> float:
-    """The least distance (mm) from point ``p`` to the segments ``A[k]``-``B[k]``."""
-    if not len(A):
-        return math.inf
-    d = B - A
-    L2 = np.einsum("ij,ij->i", d, d)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", p - A, d) / L2, 0.0), 0.0, 1.0)
-    e = A + t[:, None] * d - p
-    return float(np.sqrt(np.einsum("ij,ij->i", e, e).min()))
 
 
 def _inner(a: _Openings, i: int, j: int, common) -> int | None:
