@@ -477,7 +477,7 @@ def _clip_ring(loops: list, a: float, b: float, c: float, e: float) -> list:
     V, owner = _outside_dropped(V, owner, a, b, c, e)
     if not len(V):
         return []
-    nxt = _next_in_runs(owner)
+    nxt = _neighbours(owner)[1]
     D = V[nxt] - V
     T = np.full((len(V), 4), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -500,13 +500,15 @@ def _clip_ring(loops: list, a: float, b: float, c: float, e: float) -> list:
     return out
 
 
-def _next_in_runs(owner: np.ndarray) -> np.ndarray:
-    """For each entry of ``owner`` (loop numbers, each loop's entries together) the index of
-    the next entry of its own loop, the last back to the first."""
+def _neighbours(owner: np.ndarray):
+    """For each entry of ``owner`` (loop numbers, each loop's entries together) the indices
+    of the entries before and after it in its own loop (closed: the last's next is the
+    first): ``(before, after)``."""
     starts, stops = _runs(owner)
     size = np.repeat(stops - starts, stops - starts)
     first = np.repeat(starts, stops - starts)
-    return first + (np.arange(len(owner)) - first + 1) % size
+    idx = np.arange(len(owner)) - first
+    return first + (idx - 1) % size, first + (idx + 1) % size
 
 
 def _outside_dropped(P: np.ndarray, owner: np.ndarray, a: float, b: float, c: float,
@@ -517,12 +519,7 @@ def _outside_dropped(P: np.ndarray, owner: np.ndarray, a: float, b: float, c: fl
         return P, owner
     region = (np.where(P[:, 0] < a, 0, np.where(P[:, 0] > c, 2, 1)) * 3
               + np.where(P[:, 1] < b, 0, np.where(P[:, 1] > e, 2, 1)))
-    starts, stops = _runs(owner)
-    size = np.repeat(stops - starts, stops - starts)
-    first = np.repeat(starts, stops - starts)
-    idx = np.arange(len(P))
-    after = first + (idx - first + 1) % size
-    before = first + (idx - first - 1) % size
+    before, after = _neighbours(owner)
     keep = (region == 4) | (region != region[after]) | (region != region[before])
     return P[keep], owner[keep]
 
