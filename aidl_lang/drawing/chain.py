@@ -329,9 +329,6 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     return out, n_cut
 
 
-# a loop whose chords cross where its curves do not is still engraved: kept as an outline,
-# its exact outline took minutes to recover (Lamp: build 3.4 s -> over 190 s)
-PASS_CHORD_CROSSINGS = False
 MAX_LOBES = 64           # a loop that crosses itself is split into at most this many loops
 CROSSING_NEAR = 0.1      # mm: an exact crossing this near the chords' is the one they found
 LOBE_MIN = 1e-3          # mm: a loop split off shorter than this is no loop (a touch)
@@ -383,57 +380,25 @@ def _lobes(segs: list) -> list | None:
     out, todo = [], [list(segs)]
     while todo:
         cur = todo.pop()
-        boxes = [_box_of(sg) for sg in cur]
-        skip: list = []
-        for hit in _chord_hits(cur):
-            if any(math.hypot(hit[0] - p[0], hit[1] - p[1]) <= CROSSING_NEAR for p in skip):
-                continue
-            if len(out) + len(todo) + 2 > MAX_LOBES:
-                return None
-            two = _split_crossing(cur, hit, boxes)
-            if two is not None:
-                todo += [two[0], two[1]]
-                break
-            flat = _unloop(cur, hit, boxes)
-            if flat is not None:
-                todo.append(flat)
-                break
-            if _crosses_near(cur, hit, boxes) or not PASS_CHORD_CROSSINGS:
-                return None
-            # only the chords cross there: the curves run a hair apart
-            skip.append(hit)
-        else:
+        hit = _crossing(cur)
+        if hit is None:
             out.append(cur)
+            continue
+        if len(out) + len(todo) + 2 > MAX_LOBES:
+            return None
+        boxes = [_box_of(sg) for sg in cur]
+        two = _split_crossing(cur, hit, boxes)
+        if two is not None:
+            todo += [two[0], two[1]]
+            continue
+        flat = _unloop(cur, hit, boxes)
+        if flat is None:
+            # no exact crossing there: only the chords cross, the curves a hair apart - the
+            # loop stays whole (engraved); passing over such crossings made Lamp's exact
+            # outline take minutes to recover (build 3.4 s -> over 190 s)
+            return None
+        todo.append(flat)
     return out
-
-
-def _crosses_near(segs: list, hit, boxes=None) -> bool:
-    """Whether two pieces of the loop ``segs`` that are not neighbours, or two neighbours
-    more than :data:`LOBE_MIN` from the point they share, cross within :data:`CROSSING_NEAR` of ``hit`` (exact
-    crossings of their carriers, on both pieces); a crossing the chords show that none of
-    these explains is the chords' own."""
-    from ..geometry.curves import carrier, crossings
-    r = CROSSING_NEAR
-    n = len(segs)
-    boxes = boxes or [_box_of(sg) for sg in segs]
-    near = [i for i, b in enumerate(boxes)
-            if b[0] - r <= hit[0] <= b[2] + r and b[1] - r <= hit[1] <= b[3] + r]
-    for ii, i in enumerate(near):
-        for j in near[ii + 1:]:
-            try:
-                pts = crossings(carrier(segs[i]), carrier(segs[j]))
-            except Exception:
-                return True
-            for x in pts:
-                if math.dist(x, hit) > r or _split_at(segs[i], x) is None or \
-                        _split_at(segs[j], x) is None:
-                    continue
-                shared = [p for p in ((segs[i].end,) if j == i + 1 else ()) +
-                          ((segs[i].start,) if (i == 0 and j == n - 1) else ())]
-                if any(math.dist(x, p) <= LOBE_MIN for p in shared):
-                    continue         # their shared point (found a hair off where they touch)
-                return True
-    return False
 
 
 def _unloop(segs: list, hit, boxes=None) -> list | None:
