@@ -360,6 +360,29 @@ def test_slot_crossing_the_edge_of_a_disc(outdir):
     assert loop_defects(segs, tangent="auto") == [], show(src, segs)
 
 
+def test_a_circle_whole_in_one_part_and_cut_in_another(outdir):
+    """The same circle (one carrier) is a whole hole of part p and notches the edge of part q:
+    the whole one is found without the chord grid (exact._tessellated), the cut one is still
+    an arc of that circle, not chords (the grid of the other pieces misses its edges, which
+    are then matched against every chord)."""
+    src = """assembly a {
+    solid p {
+        s = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(10, 0), radius=4) }
+    }
+    solid q {
+        s = Rectangle(center=(0, -12), width=40, height=20)
+        hole h { c = Circle(center=(10, 0), radius=4) }
+    }
+}"""
+    loops = _loops(render(outdir, src, ".dxf"))
+    assert sorted(count(lp) for lp in loops) == [(0, 0, 1), (4, 0, 0), (5, 1, 0)], \
+        [show(src, lp) for lp in loops]
+    for lp in loops:
+        check_on_design(lp, _rect_lines(0, 0, 40, 20) + _rect_lines(0, -12, 40, 20),
+                        [((10, 0), 4)], src)
+
+
 # ------------------------------------------------------------------ the bundled examples
 # radii a program asks for that are not circles of the solved model: the Fillet radius of
 # examples/bracket.aidl (`param fillet = 3 mm`)

@@ -56,6 +56,7 @@ MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a fe
 # each; curves stacked on top of each other give hundreds or thousands
 CANDIDATES_PER_EDGE = 16
 WHOLE_PER_BLOCK = 4096        # whole-circle polygons of one size measured at once
+NEAR_CARRIERS = 1e-5          # mm: circles this near in centre and radius: the grid decides
 
 
 class Provenance:
@@ -80,6 +81,7 @@ class Provenance:
         self._ends: list = []         # (x, y, carrier before, carrier after)
         self._eg = None               # their grid (_ends_grid), with how many it holds
         self._index = None
+        self._partial = None          # (pieces, circles left out, grid): _grid_without
         self.unmatched = 0
 
     # ------------------------------------------------------------ forward: faces
@@ -231,9 +233,17 @@ class Provenance:
         nxt[starts + sizes - 1] = starts            # (np.roll(P, -1) of each)
         B = A.take(nxt, axis=0)
         scale = max(1.0, float(np.abs(A).max()))
-        cid = self._chords().match(A, B, MATCH_TOL + 1e-11 * scale)
-        self.unmatched += int((cid < 0).sum())
-        whole = self._whole_circles(A, cid, starts, sizes)
+        tol = MATCH_TOL + 1e-11 * scale
+        whole, intact = self._tessellated(A, starts, sizes, tol)
+        rest = np.ones(len(flat), dtype=bool)
+        rest[list(whole)] = False
+        if rest.any():
+            edges = np.repeat(rest, sizes)
+            cid = self._match_rest(A, B, edges, tol, intact)
+            self.unmatched += int((cid[edges] < 0).sum())
+            kept = np.flatnonzero(rest)
+            found = self._whole_circles(A, cid, starts[kept], sizes[kept])
+            whole.update({int(kept[i]): lp for i, lp in found.items()})
         out, done = [], 0
         for ps in polys:
             loops = []
@@ -249,6 +259,102 @@ class Provenance:
                     loops.append(lp)
             out.append(loops)
         return out
+
+    def _tessellated(self, A, starts, sizes, tol: float) -> tuple[dict, set]:
+        """``({polygon: Loop}, carriers)``: the result polygons (``A[starts[i]:starts[i] +
+        sizes[i]]``) that are a circle's tessellation as :meth:`_circle` makes it, each the
+        whole :class:`Circle` its way round, and those circles' carrier indices.  A polygon
+        counts when it has the circle's chord count of vertices, each within ``tol`` (mm) of
+        one of the circle's own vertices and the next vertex of the polygon at the next of
+        the circle's, one way round: then every edge is one of the circle's chords, the
+        answer the chord grid gives (:meth:`_whole_circles`).  These are the holes no boolean
+        touched, most of a perforated sheet's polygons; they are found without the grid: each
+        polygon's centroid and mean radius looked up among the circle carriers (a k-d tree,
+        ``scipy.spatial.cKDTree``), then every vertex compared in array operations, the
+        polygons of one size at a time.  A circle within :data:`NEAR_CARRIERS` of another
+        (in centre and radius) is left to the grid, which settles between them."""
+        from scipy.spatial import cKDTree
+        ids = [k for k, c in enumerate(self.carriers) if c[0] == "C"]
+        if not ids:
+            return {}, set()
+        C = np.array([self.carriers[k][1:4] for k in ids], dtype=float)
+        tree = cKDTree(C)
+        alone = np.ones(len(ids), dtype=bool)
+        alone[tree.query_pairs(NEAR_CARRIERS, output_type="ndarray").ravel()] = False
+        poly = np.repeat(np.arange(len(sizes)), sizes)
+        M = np.add.reduceat(A, starts) / sizes[:, None]
+        D = A - M.take(poly, axis=0)
+        R = np.add.reduceat(np.hypot(D[:, 0], D[:, 1]), starts) / sizes
+        dist, at = tree.query(np.column_stack([M, R]), distance_upper_bound=NEAR_CARRIERS)
+        hit = np.isfinite(dist)
+        at = np.where(hit, at, 0)
+        hit &= alone[at]
+        counts = {r: segments_for(r) for r in set(C[at[hit], 2].tolist())}
+        hit[hit] = sizes[hit] == np.array([counts[r] for r in C[at[hit], 2].tolist()],
+                                          dtype=np.int64)
+        out: dict = {}
+        intact: set = set()
+        for m in sorted(set(sizes[hit].tolist())):
+            cos, sin = _unit_circle(m, True)
+            rows = np.flatnonzero(hit & (sizes == m))
+            for b in range(0, len(rows), WHOLE_PER_BLOCK):
+                r = rows[b:b + WHOLE_PER_BLOCK]
+                c = C[at[r]]
+                idx = starts[r, None] + np.arange(m)
+                X = A[idx, 0] - c[:, :1]
+                Y = A[idx, 1] - c[:, 1:2]
+                j = np.rint(np.arctan2(Y, X) * (m / (2 * math.pi))).astype(np.int64) % m
+                near = ((np.abs(X - c[:, 2:] * cos[j]) <= tol)
+                        & (np.abs(Y - c[:, 2:] * sin[j]) <= tol))
+                step = (np.roll(j, -1, axis=1) - j) % m
+                ccw = (step == 1).all(axis=1)
+                ok = near.all(axis=1) & (ccw | (step == m - 1).all(axis=1))
+                for i, k, turn in zip(r[ok].tolist(), at[r[ok]].tolist(), ccw[ok].tolist()):
+                    cr = self.carriers[ids[k]]
+                    out[i] = Loop([Circle((cr[1], cr[2]), cr[3], turn)])
+                    intact.add(ids[k])
+        return out, intact
+
+    def _match_rest(self, A, B, edges, tol: float, intact: set) -> np.ndarray:
+        """The carrier of each edge ``A[i] -> B[i]`` where ``edges[i]`` (-1 elsewhere, and
+        where no chord holds it), as the chord grid of every piece gives it.  The pieces that
+        are one of the ``intact`` circles whole are left out of the grid when it is not built
+        yet (:meth:`_tessellated` found them in the result, their chords all there: a
+        perforated sheet's outline is then matched against a grid of its own few chords, not
+        the 2,250,000 of 50,000 holes); an edge that grid leaves unmatched (the same circle
+        drawn twice, once cut) is matched again against the whole grid."""
+        out = np.full(len(A), -1, dtype=np.int64)
+        at = np.flatnonzero(edges)
+        P, Q = A.take(at, axis=0), B.take(at, axis=0)
+        grid = self._index
+        if grid is None and intact:
+            grid = self._grid_without(intact)
+        if grid is None:
+            grid = self._chords()
+        cid = grid.match(P, Q, tol)
+        if grid is not self._index:
+            miss = np.flatnonzero(cid < 0)
+            if len(miss):
+                cid[miss] = self._chords().match(P.take(miss, axis=0), Q.take(miss, axis=0), tol)
+        out[at] = cid
+        return out
+
+    def _grid_without(self, intact: set):
+        """The chord grid of the pieces other than whole circles of ``intact`` (kept until a
+        piece is added, for a later call whose intact circles include these); None when
+        every piece is in it (the whole grid, :meth:`_chords`, is then the one)."""
+        got = self._partial
+        if got is not None and got[0] == len(self._a) and got[1] <= intact:
+            return got[2]
+        keep = [i for i, c in enumerate(self._c) if not (isinstance(c, int) and c in intact)]
+        if len(keep) == len(self._c):
+            return None
+        A, B, C = _distinct_chords(*_pieces([self._a[i] for i in keep],
+                                            [self._b[i] for i in keep],
+                                            [self._c[i] for i in keep]))
+        grid = _Grid(A, B, C)
+        self._partial = (len(self._a), frozenset(intact), grid)
+        return grid
 
     def _whole_circles(self, A, cid, starts, sizes) -> dict:
         """``{polygon: Loop}`` of the polygons (``A[starts[i]:starts[i] + sizes[i]]``, edges'
