@@ -35,6 +35,7 @@ from collections import Counter
 
 import ezdxf
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import manifold3d as mf
 import numpy as np
@@ -300,6 +301,47 @@ def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkey
     assert res.ok and not res.sink.items, [d.message for d in res.sink.items]
     assert seen["vertices"] > nearby.SMALL_VERTS, seen          # the large path
     assert seen["pairs"] <= 10, seen                            # was 21,608
+
+
+def _circle_loop(cx, cy, r, n, turn=0.0, cw=True):
+    t = turn + 2 * np.pi * np.arange(n) / n
+    P = np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
+    return P[::-1] if cw else P
+
+
+@settings(max_examples=12, deadline=None, derandomize=True)
+@given(st.lists(st.tuples(st.floats(0.2, 3.0), st.floats(-0.3, 0.8), st.integers(8, 60),
+                          st.floats(0, 6.3)), min_size=60, max_size=60),
+       st.floats(0.1, 2.0))
+def test_the_slit_search_leaves_out_only_circles_that_pair_with_nothing(rows, t):
+    """walls._lone_circles (a law): a loop it leaves out of W0519's search holds no vertex
+    and no edge of a pair the search measures and keeps on all the loops (close_pairs_facing,
+    then not adjacent, apart, facing: walls._check_slits's own filters), so the warnings are
+    the same; circles of a grid (some -0.3 to 0.8 mm from their neighbour or the outline, radii
+    0.2-3 mm, 8-60 chords, any phase, either way round), in a square outline."""
+    from aidl_lang.output.checks import walls
+    loops = [np.array([[-40.0, -40.0], [40.0, -40.0], [40.0, 40.0], [-40.0, 40.0]])]
+    for k, (r, gap, n, turn) in enumerate(rows):
+        cy = -36 + 8 * (k // 10)
+        if k % 10 == 0:         # against the outline, `gap` from it
+            cx = -40 + r + gap
+        elif k % 10 == 1:       # against the one before
+            cx = prev[0] + prev[1] + r + gap
+        else:
+            cx = -36 + 8 * (k % 10)
+        prev = (cx, r)
+        loops.append(_circle_loop(cx, cy, r, n, turn, cw=k % 7 != 0))
+    V, nxt, prv = walls._ring(loops)
+    if len(V) <= nearby.SMALL_VERTS:
+        loops += [_circle_loop(0, 50, 4, nearby.SMALL_VERTS)]   # past the small path
+        V, nxt, prv = walls._ring(loops)
+    of = np.repeat(np.arange(len(loops)), [len(P) for P in loops])
+    v, sg, dist, _ = nearby.close_pairs_facing(V, nxt, prv, t, walls.FACING)
+    ok = (v != nxt[sg]) & (dist > 1e-6) & walls._facing(V, nxt, prv, v, sg, walls.FACING)
+    paired = set(of[v[ok]].tolist()) | set(of[sg[ok]].tolist())
+    out = set(np.flatnonzero(walls._lone_circles(loops, t)).tolist())
+    assert not out & paired, sorted(out & paired)
+    assert out, "no circle left out"
 
 
 # ------------------------------------------------ 5,000 circles in a row (benchmarks' collinear)
