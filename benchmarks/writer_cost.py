@@ -9,9 +9,11 @@ Two programs per N: ``parts`` (an assembly of N one-circle parts: the per-part c
 ``holes`` (one plate with about N round holes: the per-segment cost).  Each is compiled once
 (``budget=100``, so a busy machine does not end it), its exact output built, and each format
 encoded once in this process; printed: the writer's wall time, seconds per item (part, loop
-or segment) or per vertex (STL, 3MF), and ``estimate / measured`` (the estimate must stay
-above 1: the constants in ``aidl_lang/output/writers/__init__.py (each Format's per_item, per_vertex)`` are these figures rounded up about
-twice).  A format whose library is missing is skipped; STEP is slow (about 2 ms a loop), so
+or segment) or per vertex (STL, 3MF), and ``estimate / measured`` (the constants in
+``aidl_lang/output/writers/__init__.py``, each Format's per_item or per_vertex, are these
+figures rounded up about twice, so the ratio stays above 1 on a busy machine; SVG's and DXF's
+are a quiet machine's CPU per item, so their ratio is about 1 on a quiet machine and under it
+on a busy one: they are refused only when sure to end past the deadline).  A format whose library is missing is skipped; STEP is slow (about 2 ms a loop), so
 it runs on the N = 500 programs only unless named with ``--formats``."""
 from __future__ import annotations
 

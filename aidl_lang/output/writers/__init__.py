@@ -79,11 +79,16 @@ class Format:
 # an item being a part, a loop or a segment (engraving strokes' segments included); STL, 3MF
 # and GLB per vertex of the drawing's shapes (their triangles follow the tessellation); PNG adds
 # its pixels (SECONDS_PER_PIXEL), every writer its start (WRITER_START: its library's import).
+# SVG and DXF, the formats of the largest sheets, are the CPU a writer takes on a quiet machine
+# (the larger of the parts and holes programs, not rounded up), so that a writer is refused
+# only when it is sure to end past the deadline: the estimate twice over refused the DXF of a
+# perforated sheet of 50,000 holes (15.5 s for a writer of 2.4 s) that fits the 15 s budget; on
+# a busy machine a writer may end past the deadline by about its own time (issue 74).
 FORMATS: dict[str, Format] = {
     ".svg": Format("svg", "write", "image/svg+xml", "vector drawing: laser software, browsers",
-                   text=True, cut=True, empty=True, per_item=100e-6),
+                   text=True, cut=True, empty=True, per_item=15e-6),
     ".dxf": Format("dxf", "write", "application/dxf", "CAD exchange: laser and CNC software",
-                   text=True, cut=True, empty=True, per_item=150e-6),
+                   text=True, cut=True, empty=True, per_item=40e-6),
     ".pdf": Format("pdf", "write", "application/pdf",
                    "1:1 printed template (scroll saw, hand cutting)", cut=True, empty=True,
                    per_item=300e-6),
@@ -127,10 +132,11 @@ SECONDS_PER_PIXEL = 1e-7
 
 
 def writer_seconds(output: Output, suffix: str, options: Options | None = None) -> float:
-    """An upper estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
+    """An estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
     (:data:`WRITER_START`, each :class:`Format`'s ``per_item`` or ``per_vertex``,
-    :data:`SECONDS_PER_PIXEL`), so that a writer sure to end past the deadline is refused
-    before it starts.  A PNG over :data:`~.png.MAX_SIDE` or :data:`~.png.MAX_AREA` costs only
+    :data:`SECONDS_PER_PIXEL`; for SVG and DXF a quiet machine's time, for the others about
+    twice a busy one's), so that a writer sure to end past the deadline is refused before it
+    starts.  A PNG over :data:`~.png.MAX_SIDE` or :data:`~.png.MAX_AREA` costs only
     the start: :func:`~.png.to_png` refuses it before drawing."""
     suffix = suffix.lower()
     fmt = FORMATS.get(suffix)
