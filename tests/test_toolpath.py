@@ -201,3 +201,52 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
     area = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
     depth = _depths(loops)
     assert depth == _depths_each(polys, boxes, probe, area) and max(depth) >= 10
+
+
+def _sheet(n, rng, on_grid):
+    """An output of ``n`` parts, each a 4 mm square with a round hole, spread on a sheet."""
+    from aidl_lang.geometry.curves import Circle, Line, Loop
+    from aidl_lang.output.part.part import Output, PartOutline
+    parts = []
+    for k in range(n):
+        x, y = (rng.integers(0, 30, 2) * 10.0) if on_grid else rng.uniform(0, 600, 2)
+        sq = [(x, y), (x + 4, y), (x + 4, y + 4), (x, y + 4)]
+        outline = Loop([Line(sq[i], sq[(i + 1) % 4]) for i in range(4)])
+        parts.append(PartOutline(f"p{k}", "solid", [outline, Loop([Circle((x + 2, y + 2), 1.0,
+                                                                           False)])]))
+    return Output(parts=parts)
+
+
+@pytest.mark.parametrize("on_grid", [False, True])
+def test_the_parts_are_taken_nearest_first_through_a_grid(on_grid):
+    """Issue 74: the next part of a sheet is the one whose nearest loop start is nearest (of
+    equally near ones the first), found through a grid of the starts: the same order as
+    every part measured at each step (as before: parts x parts distances, the G-code of
+    20,000 parts 258 s), and the work grows linearly: 250 -> 1,000 parts, at most 4.5 times
+    the Python calls (the old search: 12.5 times)."""
+    import cProfile
+    import pstats
+    import numpy as np
+    from aidl_lang.output.fabrication.toolpath import _start
+    rng = np.random.default_rng(7)
+    out = _sheet(300, rng, on_grid)
+    cuts = plan(out)
+    left, at, seen = list(out.parts), (0.0, 0.0), set()
+    for c in cuts:
+        if c.part not in seen:          # a part begins: the one nearest the tool
+            p = min(left, key=lambda p: min(math.dist(at, _start(lp.segments[0]))
+                                            for lp in p.loops))
+            assert c.part == p.name, (c.part, p.name, at)
+            left.remove(p)
+            seen.add(c.part)
+        at = c.end
+    assert not left
+    if on_grid:
+        return
+    calls = []
+    for n in (250, 1000):
+        sheet = _sheet(n, rng, on_grid)
+        pr = cProfile.Profile()
+        pr.runcall(plan, sheet)
+        calls.append(sum(nc for (_, _, _), (_, nc, _, _, _) in pstats.Stats(pr).stats.items()))
+    assert calls[1] <= 4.5 * calls[0], calls
