@@ -81,7 +81,7 @@ class Provenance:
         self._ends: list = []         # (x, y, carrier before, carrier after)
         self._eg = None               # their grid (_ends_grid), with how many it holds
         self._index = None
-        self._partial = None          # (pieces, circles left out, grid): _grid_without
+        self._partial = None          # (circles left out, their grid): _grid_without
         self.unmatched = 0
 
     # ------------------------------------------------------------ forward: faces
@@ -167,7 +167,7 @@ class Provenance:
         self._a.append(P)
         self._b.append(None)                # np.roll(P, -1, axis=0), made in _chords
         self._c.append(np.asarray(ids, dtype=np.int64))
-        self._index = None
+        self._index = self._partial = None
         return P
 
     def _circle(self, c: Circle) -> np.ndarray:
@@ -192,7 +192,7 @@ class Provenance:
         self._a.append(P)
         self._b.append(None)
         self._c.append(k)
-        self._index = None
+        self._index = self._partial = None
         return P
 
     def face(self, loop: Loop, area: float | None = None) -> mf.CrossSection:
@@ -344,8 +344,8 @@ class Provenance:
         piece is added, for a later call whose intact circles include these); None when
         every piece is in it (the whole grid, :meth:`_chords`, is then the one)."""
         got = self._partial
-        if got is not None and got[0] == len(self._a) and got[1] <= intact:
-            return got[2]
+        if got is not None and got[0] <= intact:
+            return got[1]
         keep = [i for i, c in enumerate(self._c) if not (isinstance(c, int) and c in intact)]
         if len(keep) == len(self._c):
             return None
@@ -353,7 +353,7 @@ class Provenance:
                                             [self._b[i] for i in keep],
                                             [self._c[i] for i in keep]))
         grid = _Grid(A, B, C)
-        self._partial = (len(self._a), frozenset(intact), grid)
+        self._partial = (frozenset(intact), grid)
         return grid
 
     def _whole_circles(self, A, cid, starts, sizes) -> dict:
