@@ -5,8 +5,9 @@ duplicates removed (:func:`_dedupe`), pieces chained end to end on a grid of the
 (:func:`_chain`), a path whose end runs past its start closed at the crossing
 (:func:`_overshoot`), gaps within the closing tolerance closed (:func:`_meet`), a loop's small
 loops where it crosses itself cut off (:func:`_trim_small_loops`), a loop that still crosses
-itself (:func:`_crossing`) split at its crossings on a cut role (:func:`_lobes`), else kept
-as a path.  Crossings are exact on the pieces' own carriers
+itself (:func:`_crossing`) split at its crossings on a cut role (:func:`_lobes`), else at
+the points it passes through twice, a crumb pinched off there cut off (:func:`_pinched_lobes`),
+else kept as a path.  Crossings are exact on the pieces' own carriers
 (:func:`~aidl_lang.geometry.curves.crossings`)."""
 from __future__ import annotations
 
@@ -221,6 +222,17 @@ def _split_at(s, x) -> tuple | None:
     return a, b
 
 
+def _distinct(pts, tol: float = 1e-9) -> list:
+    """The points ``pts`` (mm) in their order without the repeats of one within ``tol`` of
+    an earlier one: two curves that touch (a corner curve run back along the edge it left)
+    give their touching point many times, each one cut and measured again."""
+    out: list = []
+    for p in pts:
+        if all(abs(p[0] - q[0]) > tol or abs(p[1] - q[1]) > tol for q in out):
+            out.append(p)
+    return out
+
+
 def _overshoot(segs: list, bound: float):
     """The closed loop of the open chain ``segs`` whose end crosses its own start (a path
     drawn past its start so that the beam closes it, as Boxes.py's D-bores end 0.1 mm past
@@ -250,7 +262,7 @@ def _overshoot(segs: list, bound: float):
                 continue
             a, b = segs[i], segs[j]
             try:
-                pts = crossings(carrier(a), carrier(b))
+                pts = _distinct(crossings(carrier(a), carrier(b)))
             except Exception:
                 continue
             for x in pts:
@@ -280,6 +292,13 @@ def _box_of(s) -> tuple:
     return _segs_box([s])
 
 
+def _is_corner_loop(s) -> bool:
+    """Whether segment ``s`` is a loop of its own (a curve that ends where it starts:
+    Boxes.py's kerf-corrected inner corner, :func:`_corner_loops`)."""
+    return not isinstance(s, Circle) and math.dist(s.start, s.end) <= 1e-9 and \
+        _piece_length(s) > 0
+
+
 def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int]:
     """``segs`` (a chain; ``closed``: a loop) without the small loops it makes where it
     crosses itself and comes back within ``bound`` mm along itself: the pieces between the
@@ -307,7 +326,7 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
                     ba[1] > bb[3] + 1e-9:
                 continue
             try:
-                pts = crossings(carrier(a), carrier(b))
+                pts = _distinct(crossings(carrier(a), carrier(b)))
             except Exception:
                 continue
             for x in pts:
@@ -315,6 +334,9 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
                 if sa is None or sb is None or _piece_length(sa[0]) <= JOIN_TOL or \
                         _piece_length(sb[1]) <= JOIN_TOL:
                     continue
+                if _piece_length(sa[1]) <= JOIN_TOL and _piece_length(sb[0]) <= JOIN_TOL \
+                        and all(_is_corner_loop(q) for q in out[i + 1:j]):
+                    continue        # corner loops at the joint: cut by _corner_loops
                 if run + _piece_length(sa[1]) + _piece_length(sb[0]) <= bound:
                     hit = (j, sa[0], sb[1])
                     break
@@ -351,7 +373,7 @@ def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     for ii, i in enumerate(near):
         for j in near[ii + 1:]:
             try:
-                pts = crossings(carrier(segs[i]), carrier(segs[j]))
+                pts = _distinct(crossings(carrier(segs[i]), carrier(segs[j])))
             except Exception:
                 continue
             for x in pts:
@@ -399,6 +421,61 @@ def _lobes(segs: list) -> list | None:
             return None
         todo.append(flat)
     return out
+
+
+def _pinches(segs: list) -> list:
+    """The closed loop ``segs`` split at each point it passes through twice (a vertex where
+    one piece starts and, further round, another starts again within :data:`JOIN_TOL`): the
+    loops that touch there, every piece kept in one of them, in the order drawn.  Boxes.py's
+    burn-corrected acute corner comes into the corner, runs out 0.1 mm along the rounding and
+    back to the corner, then leaves it: the outline and a crumb pinched off at the corner."""
+    out, todo = [], [list(segs)]
+    while todo:
+        cur = todo.pop()
+        seen: dict = {}
+        found = None
+        for k, sg in enumerate(cur):
+            key = (round(sg.start[0] / JOIN_TOL), round(sg.start[1] / JOIN_TOL))
+            i = seen.get(key)
+            if i is not None and k - i > 1 and not (i == 0 and k == len(cur) - 1):
+                found = (i, k)
+                break
+            seen.setdefault(key, k)
+        if found is None:
+            out.append(cur)
+            continue
+        i, k = found
+        todo += [cur[k:] + cur[:i], cur[i:k]]
+    return out
+
+
+CRUMB_MAX = OVERSHOOT    # mm: a loop pinched off no longer than this is a crumb
+
+
+def _pinched_lobes(segs: list) -> tuple[list, list] | None:
+    """The loops of the closed loop ``segs`` that crosses itself where it is split at the
+    points it passes through twice (:func:`_pinches`), each split at its own crossings
+    (:func:`_lobes`): ``(loops that cross nothing, crumbs)``, a crumb a loop pinched off no
+    longer than :data:`CRUMB_MAX` mm whose crossings cannot be placed (a curve out and back
+    a hair beside itself: the laser cuts it off, it adds nothing to the part).  None when the
+    loop has no such point or a longer loop's crossing cannot be placed."""
+    pieces = _pinches(segs)
+    if len(pieces) < 2:
+        return None
+    loops: list = []
+    crumbs: list = []
+    for q in pieces:
+        if _crossing(q) is None:
+            loops.append(q)
+            continue
+        lobes = _lobes(_trim_small_loops(q, OVERSHOOT, True)[0])
+        if lobes is not None:
+            loops += lobes
+        elif sum(map(_piece_length, q)) <= CRUMB_MAX:
+            crumbs.append(q)
+        else:
+            return None
+    return loops, crumbs
 
 
 def _unloop(segs: list, hit, boxes=None) -> list | None:
@@ -508,8 +585,7 @@ def _corner_loops(segs: list) -> tuple[list, int]:
     fills, and its cut is lost), counter-clockwise outside it.  Returns them and how many
     were turned round."""
     from ..geometry.curves import reverse, sample_xy
-    at = [i for i, s in enumerate(segs) if not isinstance(s, Circle)
-          and math.dist(s.start, s.end) <= 1e-9 and _piece_length(s) > 0]
+    at = [i for i, s in enumerate(segs) if _is_corner_loop(s)]
     if not at or len(at) == len(segs):
         return segs, 0
     xs: list = []
@@ -698,7 +774,15 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             # line kept (Boxes.py's PaperBox flaps, a slot whose edges cross)
             whole = _trim_small_loops(segs, max(opts.close_tol, OVERSHOOT), True)[0]
             lobes = _lobes(whole)
-            if lobes is not None:
+            pinched = _pinched_lobes(segs) if lobes is None else None
+            if pinched is not None:
+                # a crumb pinched off at a corner (Boxes.py's acute corner) is cut off, as
+                # the small loops above; the loops it leaves cross nothing
+                parts, hit = pinched[0], None
+                crumbs += len(pinched[1])
+                if len(parts) > 1:
+                    split.append(len(parts))
+            elif lobes is not None:
                 parts, hit = lobes, None
                 if len(lobes) > 1 or len(lobes[0]) != len(whole) or \
                         any(p is not q for p, q in zip(lobes[0], whole)):
