@@ -625,7 +625,7 @@ def _lone_circles(loops: list, t: float) -> np.ndarray:
     vertex lies at least ``r_in + r_min * cos(30 deg + h)`` from it (``r_in``: the least
     distance from the centre to an edge's line; ``r_min``: the least radius).  Another loop
     is within ``t`` of it only when the centre is within ``r + t`` of one of that loop's
-    edges (a k-d tree over the circles' centres, ``scipy.spatial.cKDTree``, and
+    edges (the circles' boxes grown by ``t / 2``, :func:`.nearby.box_pairs`, and
     :func:`.nearby.close_pairs` against the other loops' edges, each O(n log n)).  A
     perforated sheet's 50,000 holes: none searched, 2.2 million vertices fewer.  Inputs
     the search takes quickly anyway (up to :data:`.nearby.SMALL_VERTS` vertices) and
@@ -657,8 +657,7 @@ def _lone_circles(loops: list, t: float) -> np.ndarray:
         return drop
     idx = idx[rmax[idx] <= 4 * _median(rmax[idx])]     # a few large ones: searched as before
     C, r = M[idx], rmax[idx]
-    from scipy.spatial import cKDTree
-    pairs = cKDTree(C).query_pairs(2 * float(r.max()) + t, output_type="ndarray")
+    pairs = box_pairs(np.column_stack([C - r[:, None], C + r[:, None]]), t / 2)
     if len(pairs) > 8 * len(idx):
         return drop
     near = np.zeros(len(idx), dtype=bool)

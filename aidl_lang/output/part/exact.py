@@ -56,7 +56,7 @@ MAX_CANDIDATES = 10_000_000   # candidate pairs in all (OutOfBudget beyond: a fe
 # each; curves stacked on top of each other give hundreds or thousands
 CANDIDATES_PER_EDGE = 16
 WHOLE_PER_BLOCK = 4096        # whole-circle polygons of one size measured at once
-NEAR_CARRIERS = 1e-5          # mm: circles this near in centre and radius: the grid decides
+CARRIER_DIGITS = 6            # decimals (mm) a result circle is looked up by (_tessellated)
 
 
 class Provenance:
@@ -269,26 +269,27 @@ class Provenance:
         the circle's, one way round: then every edge is one of the circle's chords, the
         answer the chord grid gives (:meth:`_whole_circles`).  These are the holes no boolean
         touched, most of a perforated sheet's polygons; they are found without the grid: each
-        polygon's centroid and mean radius looked up among the circle carriers (a k-d tree,
-        ``scipy.spatial.cKDTree``), then every vertex compared in array operations, the
-        polygons of one size at a time.  A circle within :data:`NEAR_CARRIERS` of another
-        (in centre and radius) is left to the grid, which settles between them."""
-        from scipy.spatial import cKDTree
+        polygon's centroid and mean radius looked up among the circle carriers by their
+        values to :data:`CARRIER_DIGITS` decimals (a dict), then every vertex compared in
+        array operations, the polygons of one size at a time.  Two circles with the same
+        rounded values are left to the grid, which settles between them; a polygon whose
+        rounding falls on the other side of a digit from its circle's, too (the grid's answer
+        either way)."""
         ids = [k for k, c in enumerate(self.carriers) if c[0] == "C"]
         if not ids:
             return {}, set()
         C = np.array([self.carriers[k][1:4] for k in ids], dtype=float)
-        tree = cKDTree(C)
-        alone = np.ones(len(ids), dtype=bool)
-        alone[tree.query_pairs(NEAR_CARRIERS, output_type="ndarray").ravel()] = False
+        where: dict = {}
+        for i, key in enumerate(map(tuple, np.round(C, CARRIER_DIGITS).tolist())):
+            where[key] = -1 if key in where else i          # two alike: the grid's
         poly = np.repeat(np.arange(len(sizes)), sizes)
         M = np.add.reduceat(A, starts) / sizes[:, None]
         D = A - M.take(poly, axis=0)
         R = np.add.reduceat(np.hypot(D[:, 0], D[:, 1]), starts) / sizes
-        dist, at = tree.query(np.column_stack([M, R]), distance_upper_bound=NEAR_CARRIERS)
-        hit = np.isfinite(dist)
-        at = np.where(hit, at, 0)
-        hit &= alone[at]
+        keys = np.round(np.column_stack([M, R]), CARRIER_DIGITS).tolist()
+        at = np.array([where.get(tuple(k), -1) for k in keys], dtype=np.int64)
+        hit = at >= 0
+        at = np.maximum(at, 0)
         counts = {r: segments_for(r) for r in set(C[at[hit], 2].tolist())}
         hit[hit] = sizes[hit] == np.array([counts[r] for r in C[at[hit], 2].tolist()],
                                           dtype=np.int64)
