@@ -274,9 +274,17 @@ def _overshoot(segs: list, bound: float):
 
 
 def _box_of(s) -> tuple:
+    """A box ``(x0, y0, x1, y1)`` that holds segment ``s``: exact for a line, an arc or an
+    ellipse's arc; a curve piece's control points' (its hull holds it): the box only tells
+    which pieces may meet, and the control points are read where the exact box solves
+    each span's derivative for its roots (RoyalGame: 21,398 boxes, 7.7 of 28 s)."""
     if isinstance(s, Line):
         return (min(s.start[0], s.end[0]), min(s.start[1], s.end[1]),
                 max(s.start[0], s.end[0]), max(s.start[1], s.end[1]))
+    if isinstance(s, Spline) and s.spans:
+        xs = [p[0] for b in s.spans for p in b]
+        ys = [p[1] for b in s.spans for p in b]
+        return (min(xs), min(ys), max(xs), max(ys))
     return _segs_box([s])
 
 
@@ -391,7 +399,7 @@ def _lobes(segs: list) -> list | None:
         if two is not None:
             todo += [two[0], two[1]]
             continue
-        flat = _unloop(cur, hit, boxes)
+        flat = _unloop(cur, hit)         # (its own exact boxes: it takes the first curve)
         if flat is None:
             # no exact crossing there: only the chords cross, the curves a hair apart - the
             # loop stays whole (engraved); passing over such crossings made Lamp's exact
@@ -407,7 +415,7 @@ def _unloop(segs: list, hit, boxes=None) -> list | None:
     rounded so their ends miss by 0.001 mm) replaced by the line from its start to its end
     (the crumb the laser cuts off there), or None when there is none."""
     r = CROSSING_NEAR
-    boxes = boxes or [_box_of(sg) for sg in segs]
+    boxes = boxes or [_segs_box([sg]) for sg in segs]
     for k, (sg, b) in enumerate(zip(segs, boxes)):
         if not isinstance(sg, Spline) or not (b[0] - r <= hit[0] <= b[2] + r and
                                               b[1] - r <= hit[1] <= b[3] + r):
