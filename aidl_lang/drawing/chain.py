@@ -644,7 +644,8 @@ def _cusp_crossings(segs: list, bound: float) -> tuple[list, int]:
     and cross 0.002 mm from it), both are cut at that crossing, exact on their own curves
     (:func:`_cusp_spline_crossings`, :func:`_split_at`), and the loop
     between it and the cusp (at most ``bound`` mm of line) is left out: a laser cuts it
-    off as a crumb, and a closed outline that loops over itself is no outline (E0108).  Of
+    off as a crumb, and a closed Bézier outline (a loop of curve pieces alone: the one
+    statement the compiler checks so) that loops over itself is no outline (E0108).  Of
     several such crossings the farthest from the cusp within ``bound`` is taken.  Returns
     the loop and the number of loops cut out."""
     from ..geometry.curves import tangent_at
@@ -770,10 +771,6 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
         if len(segs) == 1 and isinstance(segs[0], Circle):
             d.circles.append(segs[0])
             continue
-        if opts.close_tol > 0:
-            # tiny loops beside its cusps cut off (chords do not see them; the compiler does)
-            segs, k = _cusp_crossings(segs, max(opts.close_tol, OVERSHOOT))
-            crumbs += k
         hit = _crossing(segs)
         if hit is not None and opts.split_crossings:
             segs, k = _cusp_spikes(segs)         # a curve out and back beside itself
@@ -805,6 +802,11 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             d.paths.append(Path(list(segs), "crosses itself", crossing=hit))
             continue
         for segs in parts:
+            if opts.close_tol > 0 and all(isinstance(s, Spline) for s in segs):
+                # written as one closed Bezier, which must not cross itself (E0108): tiny
+                # loops beside its cusps cut off (the chords do not see them)
+                segs, k = _cusp_crossings(segs, max(opts.close_tol, OVERSHOOT))
+                crumbs += k
             o = Outline(list(segs), src)
             if len(parts) > 1 and abs(o.area) <= LOBE_MIN ** 2:
                 continue        # a curve drawn out and back over itself: no area, no loop
