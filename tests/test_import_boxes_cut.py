@@ -308,3 +308,44 @@ def test_parts_whose_tabs_interlock_are_parts_not_holes(interlocked):
     assert "hole " not in text and text.count("solid ") == 2 and "W0502" not in codes
     want = 2 * (100 + 50.2) + (20 + 2 * 1.8 + 50 + 70.2 + 100 + 70.2 + 30)
     assert cut == pytest.approx(want, abs=1e-6)
+
+
+# ----------------------- two curves that cross 0.002 mm beside their cusp (FanHole's blades)
+_BLADE = ("M 25.875 17.702 C 20.438 21.652 16.086 26.912 13.225 32.993"
+          " C 13.245 32.949 13.232 32.898 13.193 32.869 C 13.215 32.885 13.229 32.909 13.233 32.935"
+          " C 13.920 37.361 15.761 41.529 18.569 45.019 C 21.377 48.509 25.055 51.198 29.232 52.816"
+          " C 33.409 54.434 37.938 54.925 42.365 54.237 C 42.391 54.233 42.418 54.240 42.439 54.255"
+          " C 42.425 54.245 42.408 54.239 42.391 54.237 C 42.373 54.235 42.355 54.238 42.339 54.245"
+          " C 42.323 54.252 42.309 54.264 42.299 54.278 C 42.289 54.292 42.282 54.309 42.281 54.327"
+          " C 42.279 54.344 42.282 54.362 42.289 54.378 C 42.300 54.401 42.318 54.419 42.341 54.428"
+          " C 37.794 52.516 33.792 49.503 30.697 45.661 C 27.602 41.819 25.510 37.269 24.609 32.418"
+          " C 23.708 27.567 24.026 22.569 25.535 17.872 C 25.527 17.895 25.529 17.921 25.539 17.944"
+          " C 25.547 17.962 25.561 17.977 25.578 17.987 C 25.595 17.998 25.614 18.003 25.634 18.002"
+          " C 25.654 18.001 25.673 17.995 25.689 17.983")
+
+
+@pytest.fixture(scope="module")
+def blade():
+    """One of FanHole's ten blade holes as Boxes.py draws it (one subpath, blue): the blade's
+    edge ends at a cusp (25.535, 17.872) where the burn-corrected end cap turns back 0.004
+    rad off it, and the two curves cross again 0.002 mm from the cusp.  The loop crosses
+    itself elsewhere too, so it is split into loops; the one with the cusp looped over itself
+    there, which the chords (0.005 mm) do not see but the compiler does: E0108, FanHole and
+    RoyalGame (its pieces' holes) not compiled."""
+    return _cut(_svg([(_BLADE, "rgb(0,0,255)")], 120, 110), "blade")
+
+
+def test_curves_that_cross_beside_their_cusp_lose_the_crumb_and_compile(blade):
+    text, notes, cut, codes = blade
+    drawn, cur = 0.0, None
+    for cmd, nums in ((c[0], [float(v) for v in c[1:].split()]) for c in
+                      _BLADE.replace("C", "|C").replace("M", "|M").split("|")[1:]):
+        pts = list(zip(nums[::2], nums[1::2]))
+        if cmd == "C":
+            drawn += _cubic_length(cur, *pts)
+        cur = pts[-1]
+    assert "E0108" not in codes                           # was 1 (not compiled)
+    # every line cut but the overshoot past the start (0.17 mm) and the small loops cut off
+    # (the cusp's 0.004 mm crumb, the corner's curl): 104.21 of 105.20 mm
+    assert drawn - 1.0 <= cut <= drawn + 1e-6
+    assert any("small loop" in n.message for n in notes)

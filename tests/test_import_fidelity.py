@@ -289,3 +289,38 @@ def test_a_small_loop_across_a_loops_first_point_is_cut_off():
     assert not d.paths and len(d.outlines) == 1
     assert abs(d.outlines[0].area) == pytest.approx(400, abs=1e-9)
     assert any("1 small loop of `key.svg` cut off" in n.message for n in d.notes)
+
+
+def test_islands_of_one_shape_are_written_once_in_a_compact_program(monkeypatch):
+    """GridfinityBaseSplit's 126 base pieces lie in the plate's cut-outs (islands: each a
+    solid of its own with its four magnet holes): written one by one, even compact, its
+    program was 1,044,664 bytes and refused (E0304 "would be more than 1000000 bytes", at
+    any --budget); islands of one shape moved, holes too, are now written once in a `for`
+    over their places (766,636 bytes, compiled, 100.00 % of its cut)."""
+    import aidl_lang.limits as L
+    piece = ("M {x} {y} L {x2} {y} C {x3} {y} {x3} {y} {x3} {y1} L {x3} {y4} "
+             "C {x3} {y5} {x3} {y5} {x2} {y5} L {x} {y5} Z")
+    paths = ["M 0 0 L 200 0 L 200 100 L 0 100 Z", "M 5 5 L 195 5 L 195 95 L 5 95 Z"]
+    circles = []
+    for i in range(3):
+        x, y = 10.1 + 60 * i, 20.3
+        paths.append(piece.format(x=x, y=y, x2=x + 40, x3=x + 40.5, y1=y + 0.5, y4=y + 39.5,
+                                  y5=y + 40))
+        circles += [(x + 8, y + 8), (x + 32, y + 32)]
+    body = "".join(f'<path d="{d}" stroke="black" fill="none"/>' for d in paths) + "".join(
+        f'<circle cx="{cx}" cy="{cy}" r="3" stroke="black" fill="none"/>' for cx, cy in circles)
+    data = _svg('width="200mm" height="100mm" viewBox="0 0 200 100"', body)
+    plain, _ = import_drawing(data, "islands.svg")
+    monkeypatch.setattr(L, "MAX_SOURCE_BYTES", len(plain.encode()) - 1)
+    compact, _ = import_drawing(data, "islands.svg")
+    monkeypatch.undo()
+    assert plain.count("solid part_island") == 3 and "for p in" not in plain
+    assert compact.count("solid part_island") == 1 and len(compact) < 0.8 * len(plain)
+    assert re.search(r"\nfor p in \[(\((10|70|130)\.1, -20\.3\)(, )?){3}\] \{\n"
+                     r"    solid part_island\d+ \{", compact)
+    a, b = _render_dxf(plain, "plain.aidl"), _render_dxf(compact, "compact.aidl")
+    # the same entities on cut layers (named by the solid: `part_island3` or each copy's;
+    # a Polygon of the compact program may start at another corner)
+    ea, eb = ([(t, ly.startswith("CUT"), sorted(set(pts))) for t, ly, pts in _entities(x)]
+              for x in (a, b))
+    assert sorted(ea) == sorted(eb) and len(ea) == 2 + 3 * 6 + 6 and all(c for _, c, _ in ea)

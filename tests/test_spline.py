@@ -726,3 +726,28 @@ def test_a_closed_bezier_through_cusps_is_no_crossing():
     c = compile_source(eight, "eight.aidl")
     assert [d.code for d in c.sink.items if d.is_error] == ["E0108"]
     assert "crosses itself at (0, 0)" in c.sink.items[0].message
+
+
+def test_curves_that_run_along_each_other_start_few_newton_polishes(monkeypatch):
+    """Two cubics within 1e-4 mm of each other along 30 mm (a curve drawn back over another,
+    as Boxes.py's burn-corrected end caps along a fan blade's edge): the box halving leaves
+    2,048 small box pairs along the stretch and each was polished by Newton (FanHole's import:
+    9.3 of its 10.2 s CPU in crossings); 33 of them, evenly along, still find the crossing."""
+    import aidl_lang.geometry.spline as S
+    line = [(0, 0), (10, 10 / 3), (20, 20 / 3), (30, 10)]           # y = x / 3
+    a = S.bezier_chain(line)
+    b = S.bezier_chain([(x, y + e) for (x, y), e in zip(line, (-1e-4, 4e-5, 4e-5, 1e-4))])
+    calls = []
+    newton = S.newton2
+    monkeypatch.setattr(S, "newton2", lambda *x, **k: calls.append(1) or newton(*x, **k))
+    found = a.cross_spline(b)
+    assert len(calls) == S.RUN_SEEDS + 1                  # was 2,048
+    assert len(found) == 1
+    (u, v), = found
+    # b is a lifted by -1e-4 (1-t)^3 + 1.2e-4 (1-t)^2 t + 1.2e-4 (1-t) t^2 + 1e-4 t^3: it
+    # crosses where that is 0, on the line
+    t = v % 1
+    lift = -1e-4 * (1 - t) ** 3 + 1.2e-4 * (1 - t) ** 2 * t + 1.2e-4 * (1 - t) * t * t \
+        + 1e-4 * t ** 3
+    x, y = b.at(v)
+    assert abs(lift) < 1e-12 and abs(y - x / 3) < 1e-12 and math.dist(a.at(u), (x, y)) < 1e-9

@@ -384,12 +384,52 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             _structure_body(w, depth + 2, e, "g")
             w.emit(depth + 1, "}")
     w.emit(depth, "}")
-    for segs, k in islands:
-        w.emit(depth, f"solid {name}_island{k} {{")
-        _loop(w, depth + 1, segs, f"o{k}_", None)
+    for run in _island_runs(islands, island_holes, loops, w.compact):
+        segs, k = run[0]
+        inner = depth
+        if len(run) > 1:                 # islands of one shape moved: written once
+            w.emit(depth, f"for p in [{', '.join(_pt(q[0].start) for q, _ in run)}] {{")
+            w.rel, inner = segs[0].start, depth + 1
+        w.emit(inner, f"solid {name}_island{k} {{")
+        _loop(w, inner + 1, segs, f"o{k}_", None)
         for i in island_holes.get(k - 1, ()):
-            _loop(w, depth + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
-        w.emit(depth, "}")
+            _loop(w, inner + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
+        w.emit(inner, "}")
+        if len(run) > 1:
+            w.rel = None
+            w.emit(depth, "}")
+
+
+def _island_runs(islands: list, island_holes: dict, loops: list, compact: bool) -> list:
+    """The islands of a structure (``(outline segments, loop number)``) in runs to write
+    together: with ``compact``, islands that are one shape moved, their holes too (each
+    hole's shape and its place from the outline's first point within 1e-9 mm,
+    :func:`_shape_key`), in runs of at most :data:`COPIES_PER_LOOP`, written once in a ``for``
+    over their places (Boxes.py's GridfinityBaseSplit: 126 base pieces, each a solid of
+    its own with its four magnet holes); else each alone."""
+    if not compact:
+        return [[isl] for isl in islands]
+    groups: dict = {}
+    alone = []
+    for segs, k in islands:
+        key = _shape_key(segs)
+        x0, y0 = segs[0].start
+        holes = []
+        for i in island_holes.get(k - 1, ()):
+            h = loops[i][1]
+            if len(h) == 1 and isinstance(h[0], Circle):
+                hk = ("C", round(h[0].radius * 1e9))
+                q = h[0].center
+            else:
+                hk, q = _shape_key(h), h[0].start
+            holes.append((round((q[0] - x0) * 1e9), round((q[1] - y0) * 1e9), hk))
+        if key is None or any(h[2] is None for h in holes):
+            alone.append([(segs, k)])
+            continue
+        groups.setdefault((key, tuple(sorted(holes))), []).append((segs, k))
+    runs = [idx[j:j + COPIES_PER_LOOP] for idx in groups.values()
+            for j in range(0, len(idx), COPIES_PER_LOOP)]
+    return sorted(runs + alone, key=lambda r: r[0][1])
 
 
 def _shape_key(segs) -> tuple | None:
@@ -641,7 +681,7 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
         prefix = "c" if len(segs) == 1 and isinstance(segs[0], Circle) else "e"
     if len(segs) == 1 and isinstance(segs[0], Circle):
         c = segs[0]
-        w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={_pt(c.center)}, "
+        w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={w.pt(c.center)}, "
                       f"radius={_num(c.radius)})")
     elif w.compact and len(segs) >= 3 and all(isinstance(s, Line) for s in segs):
         # a big drawing: a loop of lines as the points of one Polygon

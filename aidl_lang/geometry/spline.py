@@ -491,7 +491,13 @@ class CubicSpline:
         out = []
         for i in range(self.n):
             for j in range(other.n):
-                _cross_bez(self.span(i), other.span(j), i, j, out, check)
+                pair: list = []
+                _cross_bez(self.span(i), other.span(j), i, j, pair, check)
+                if len(pair) > RUN_LEAVES:
+                    # the spans run along each other (within 1e-3 mm: a curve drawn out and
+                    # back over another): a few of the leaves along the stretch will do
+                    pair = pair[::-(-len(pair) // RUN_SEEDS)] + pair[-1:]
+                out += pair
         res = []
         for u, v in out:
             u, v = newton2(self, other, u, v)
@@ -629,6 +635,8 @@ def newton2(a: CubicSpline, b: CubicSpline, u: float, v: float, iters: int = 40)
 
 
 MAX_LEAVES = 2048     # small box pairs of one span pair: past it the spans run along each other
+RUN_LEAVES = 64       # more leaves than crossing spans make (9 crossings, 4 leaves each at most)
+RUN_SEEDS = 32        # ... then Newton starts from this many of them, evenly along
 
 
 def _cross_bez(A, B, i, j, out, check=None) -> bool:
