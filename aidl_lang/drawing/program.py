@@ -973,6 +973,10 @@ def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
         H = np.asarray(Loop(list(segs)).points(), dtype=float)
         X, Y = P[:, 0], P[:, 1]
         X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
+        lo, hi = H.min(axis=0), H.max(axis=0)
+        if not np.any((np.maximum(X, X2) >= lo[0]) & (np.minimum(X, X2) <= hi[0]) &
+                      (np.maximum(Y, Y2) >= lo[1]) & (np.minimum(Y, Y2) <= hi[1])):
+            continue            # no edge of the owner near it: inside, as its probe is
         hx, hy = H[:, 0:1], H[:, 1:2]
         cond = (Y > hy) != (Y2 > hy)
         with np.errstate(divide="ignore", invalid="ignore"):
