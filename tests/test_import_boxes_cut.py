@@ -325,8 +325,9 @@ def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut():
     c = compile_source(text, "notch.aidl")
     assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
     assert "hole hole2" in text and "solid sheet_cuts {" in text
-    assert any("1 piece of hole of `notch.svg` drawn across their part's edge lie outside it "
-               "(30 mm): the part keeps the notch" in n.message for n in notes), notes
+    assert any("1 piece of hole of `notch.svg` on a cut role drawn across its part's edge "
+               "lies outside the part (30 mm): the part keeps the notch, and it is written as "
+               "the sheet-level cut `sheet_cuts`" in n.message for n in notes), notes
     doc = ezdxf.read(io.StringIO(to_dxf(build(c.drawing, "notch"))))
     cut, plates = 0.0, []
     for e in doc.modelspace():

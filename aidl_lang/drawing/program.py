@@ -893,8 +893,9 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                           Drawing(unit=d.unit, paths=notch, paths_cut=True)))
             n = len(notch)
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
-                                       f"{'s' if n != 1 else ''} of `{source}` drawn across "
-                                       f"their part's edge lie outside it "
+                                       f"{'s' if n != 1 else ''} of `{source}` on a cut role "
+                                       f"drawn across {'their' if n != 1 else 'its'} part's "
+                                       f"edge {'lie' if n != 1 else 'lies'} outside the part "
                                        f"({sum(_length(p.segments) for p in notch):.6g} mm): "
                                        f"the part keeps the notch, and "
                                        f"{'they are' if n != 1 else 'it is'} written as the "
