@@ -950,11 +950,13 @@ def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
     an odd number of others) that has sampled points outside its owner is cut exactly
     (:func:`~.chain._split_at`, each piece on its own carrier) at the points where it crosses
     the owner's edge; the runs of pieces whose middles lie outside the owner are returned as
-    open paths (mm), in the hole's order.  Whole circles are left as they are."""
+    open paths (mm), in the hole's order, but for those no longer than
+    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are."""
     import numpy as np
 
     from ..geometry.curves import carrier, crossings
     from .chain import _distinct, _piece_length, _split_at
+    from .model import GAP_NOTE
     loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
     if len(loops) < 2:
         return []
@@ -1018,5 +1020,8 @@ def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
                 cur = []
         if cur:
             runs.append(cur)
-        out += [Path(r, "the part of a hole outside its part") for r in runs]
+        # a run within the gap a laser closes anyway (Boxes.py's 0.1 mm burn-correction
+        # overlaps, Lamp's and SmallPartsTray2's) is no cut of its own
+        out += [Path(r, "the part of a hole outside its part") for r in runs
+                if _length(r) > GAP_NOTE]
     return out
