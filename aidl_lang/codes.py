@@ -893,7 +893,9 @@ lies in no part is cut, not engraved: closed into a part when it ends within 0.5
 start, a cut of the part it reaches, else a sheet-level cut.  A shape under a
 transform with no area (an SVG `matrix(a,b,c,d,e,f)` with a*d = b*c or a scale of 0, a DXF
 INSERT of x or y scale 0) is not drawn, named by its id and line (SVG) or handle and line
-(DXF); any other transform is applied exactly.
+(DXF); any other transform is applied exactly.  On a cut role, a hole drawn across its
+part's edge is the part's notch, and the rest of its loop (outside the part) is a
+sheet-level cut, counted with its length.
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

@@ -349,3 +349,38 @@ def test_curves_that_cross_beside_their_cusp_lose_the_crumb_and_compile(blade):
     # (the cusp's 0.004 mm crumb, the corner's curl): 104.21 of 105.20 mm
     assert drawn - 1.0 <= cut <= drawn + 1e-6
     assert any("small loop" in n.message for n in notes)
+
+
+# ------------------------------ a hole drawn across its part's edge (WallChiselHolder's slots)
+def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut():
+    """A 100 x 60 plate and a 20 x 10 slot across its right edge (x 110): the plate keeps
+    the notch (the slot's inner half), and the slot's outer half, in no part, is still cut
+    (WallChiselHolder's 10 slots: 97.33 % of its cut kept, their outer halves lost)."""
+    import ezdxf
+
+    from aidl_lang.output.part.part import build
+    from aidl_lang.output.writers.dxf import to_dxf
+    svg = _svg([("M 10 10 H 110 V 70 H 10 Z", "rgb(0,0,0)"),
+                ("M 100 30 H 120 V 40 H 100 Z", "rgb(0,0,255)")])
+    text, notes = import_drawing(svg, "notch.svg", roles="laser")
+    c = compile_source(text, "notch.aidl")
+    assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
+    assert "hole hole2" in text and "solid sheet_cuts {" in text
+    assert any("1 piece of hole of `notch.svg` on a cut role drawn across its part's edge "
+               "lies outside the part (30 mm): the part keeps the notch, and it is written as "
+               "the sheet-level cut `sheet_cuts`" in n.message for n in notes), notes
+    doc = ezdxf.read(io.StringIO(to_dxf(build(c.drawing, "notch"))))
+    cut, plates = 0.0, []
+    for e in doc.modelspace():
+        assert e.dxf.layer.upper().startswith("CUT"), e.dxf.layer
+        if e.dxftype() == "LWPOLYLINE":
+            p = [(x, y) for x, y, *_ in e.get_points()]
+            cut += sum(math.dist(a, b) for a, b in zip(p, p[1:] + p[:1]))
+            plates.append(abs(sum(a[0] * b[1] - b[0] * a[1]
+                                  for a, b in zip(p, p[1:] + p[:1]))) / 2)
+        else:
+            cut += math.dist(e.dxf.start.vec2, e.dxf.end.vec2)
+    assert plates == [pytest.approx(100 * 60 - 10 * 10, abs=1e-6)]     # the notch kept
+    # the plate with its notch (320 - 10 + 30) and the slot's outer rest (10 + 10 + 10):
+    # was 340 (the rest not cut)
+    assert cut == pytest.approx(340 + 30, abs=1e-6)

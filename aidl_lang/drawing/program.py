@@ -886,6 +886,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
+        notch = _outside_remainders(d, deadline) if kind == "solid" and d.paths_cut else []
         crossed = 0 if parts or kind != "solid" or not d.paths_cut else \
             _overlapping_parts(d, deadline)
         if crossed:
@@ -927,6 +928,19 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                     "are notes"))
         else:
             items.append((kind, _ident(layer or "part", used), d))
+        if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
+            items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+                          Drawing(unit=d.unit, paths=notch, paths_cut=True)))
+            n = len(notch)
+            notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
+                                       f"{'s' if n != 1 else ''} of `{source}` on a cut role "
+                                       f"drawn across {'their' if n != 1 else 'its'} part's "
+                                       f"edge {'lie' if n != 1 else 'lies'} outside the part "
+                                       f"({sum(_length(p.segments) for p in notch):.6g} mm): "
+                                       f"the part keeps the notch, and "
+                                       f"{'they are' if n != 1 else 'it is'} written as the "
+                                       f"sheet-level cut `{items[-1][1]}` (the laser cuts "
+                                       f"along {'them' if n != 1 else 'it'})"))
     return items
 
 
@@ -967,3 +981,87 @@ def _polygons_overlap(P, Q) -> bool:
     b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
     both = (a ^ b).area()
     return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
+
+
+def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
+    """The pieces of ``d``'s holes that lie outside the loop they are holes of: a hole drawn
+    across its part's edge (Boxes.py's WallChiselHolder slots) is the part's notch, and the
+    rest of its loop, in no part, is still asked to be cut.  Each hole outline (a loop inside
+    an odd number of others) that has sampled points outside its owner is cut exactly
+    (:func:`~.chain._split_at`, each piece on its own carrier) at the points where it crosses
+    the owner's edge; the runs of pieces whose middles lie outside the owner are returned as
+    open paths (mm), in the hole's order, but for those no longer than
+    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are."""
+    import numpy as np
+
+    from ..geometry.curves import carrier, crossings
+    from .chain import _distinct, _piece_length, _split_at
+    from .model import GAP_NOTE
+    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    if len(loops) < 2:
+        return []
+    inside = _containers(loops, deadline)
+    depth = [len(c) for c in inside]
+    out: list[Path] = []
+    for i, segs in enumerate(loops[:len(d.outlines)]):
+        if depth[i] % 2 == 0:
+            continue
+        owner = [j for j in inside[i] if depth[j] == depth[i] - 1]
+        if not owner:
+            continue
+        if deadline is not None:
+            deadline.check("finding the holes that cross their part's edge")
+        own = loops[owner[0]]
+        P = np.asarray(Loop(list(own)).points(), dtype=float)
+        H = np.asarray(Loop(list(segs)).points(), dtype=float)
+        X, Y = P[:, 0], P[:, 1]
+        X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
+        lo, hi = H.min(axis=0), H.max(axis=0)
+        if not np.any((np.maximum(X, X2) >= lo[0]) & (np.minimum(X, X2) <= hi[0]) &
+                      (np.maximum(Y, Y2) >= lo[1]) & (np.minimum(Y, Y2) <= hi[1])):
+            continue            # no edge of the owner near it: inside, as its probe is
+        hx, hy = H[:, 0:1], H[:, 1:2]
+        cond = (Y > hy) != (Y2 > hy)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            xs = X + (hy - Y) * (X2 - X) / (Y2 - Y)
+        if np.all(np.count_nonzero(cond & (hx < xs), axis=1) % 2 == 1):
+            continue                                   # every sample inside: a plain hole
+        pieces = []
+        for s in segs:
+            hits = []
+            for t in own:
+                for x in crossings(carrier(s), carrier(t)):
+                    if _split_at(t, x) is not None or min(math.dist(x, t.start),
+                                                          math.dist(x, t.end)) <= 1e-9:
+                        hits.append(x)
+            hits = [x for x in _distinct(hits) if min(math.dist(x, s.start),
+                                                      math.dist(x, s.end)) > 1e-9]
+            hits.sort(key=lambda x: _piece_length(_split_at(s, x)[0])
+                      if _split_at(s, x) is not None else math.inf)
+            rest = s
+            for x in hits:
+                cut = _split_at(rest, x)
+                if cut is None:
+                    continue
+                pieces.append(cut[0])
+                rest = cut[1]
+            pieces.append(rest)
+        flags = [not _inside(_probe([p]), P) for p in pieces]
+        if all(flags) or not any(flags):
+            continue
+        k = flags.index(False)                         # start the walk at a piece inside
+        runs: list = []
+        cur: list = []
+        for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
+            if f:
+                cur.append(p)
+            elif cur:
+                runs.append(cur)
+                cur = []
+        if cur:
+            runs.append(cur)
+        # a run within the gap a laser closes anyway (Boxes.py's 0.1 mm burn-correction
+        # overlaps, Lamp's and SmallPartsTray2's) is no cut of its own
+        out += [Path(r, "the part of a hole outside its part") for r in runs
+                if _length(r) > GAP_NOTE]
+    return out
