@@ -886,9 +886,11 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
             d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
-        notch = _outside_remainders(d, deadline) if kind == "solid" and d.paths_cut else []
-        crossed = 0 if parts or kind != "solid" or not d.paths_cut else \
-            _overlapping_parts(d, deadline)
+        # which loops lie inside which, found once for both questions below
+        inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
+            else None
+        notch = _outside_remainders(d, inside, deadline) if inside is not None else []
+        crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -944,16 +946,20 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
     return items
 
 
-def _overlapping_parts(d: Drawing, deadline=None) -> int:
+def _loops_of(d: Drawing) -> list:
+    """``d``'s closed loops (lists of segments): its outlines, then its circles."""
+    return [o.segments for o in d.outlines] + [[c] for c in d.circles]
+
+
+def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
     """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
     (share an area, on the loops' sampled polygons): parts drawn overlapping
     on a laser sheet (Boxes.py's UnevenHeightBox walls), which one solid would fuse, losing
-    the cut lines inside the union."""
+    the cut lines inside the union.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
-    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    loops = _loops_of(d)
     if len(loops) < 2:
         return 0
-    inside = _containers(loops, deadline)
     outer = [i for i, c in enumerate(inside) if not c]
     polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
     box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
@@ -983,7 +989,7 @@ def _polygons_overlap(P, Q) -> bool:
     return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
 
 
-def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
+def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
     """The pieces of ``d``'s holes that lie outside the loop they are holes of: a hole drawn
     across its part's edge (Boxes.py's WallChiselHolder slots) is the part's notch, and the
     rest of its loop, in no part, is still asked to be cut.  Each hole outline (a loop inside
@@ -991,16 +997,16 @@ def _outside_remainders(d: Drawing, deadline=None) -> list[Path]:
     (:func:`~.chain._split_at`, each piece on its own carrier) at the points where it crosses
     the owner's edge; the runs of pieces whose middles lie outside the owner are returned as
     open paths (mm), in the hole's order, but for those no longer than
-    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are."""
+    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are.
+    ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
 
     from ..geometry.curves import carrier, crossings
     from .chain import _distinct, _piece_length, _split_at
     from .model import GAP_NOTE
-    loops = [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    loops = _loops_of(d)
     if len(loops) < 2:
         return []
-    inside = _containers(loops, deadline)
     depth = [len(c) for c in inside]
     out: list[Path] = []
     for i, segs in enumerate(loops[:len(d.outlines)]):
