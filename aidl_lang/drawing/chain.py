@@ -575,16 +575,6 @@ def _drop_in(segs: list, tol: float, dropped: dict) -> list:
     return out
 
 
-def _inside(x: float, y: float, xs: list, ys: list) -> bool:
-    """Whether ``(x, y)`` lies inside the polygon ``xs``, ``ys`` (even-odd)."""
-    inside, n = False, len(xs)
-    for i in range(n):
-        x0, y0, x1, y1 = xs[i - 1], ys[i - 1], xs[i], ys[i]
-        if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
-            inside = not inside
-    return inside
-
-
 def _corner_loops(segs: list) -> tuple[list, int]:
     """``segs`` (a counter-clockwise loop) with each segment that is a loop of its own (a
     curve that ends where it starts: Boxes.py's kerf-corrected inner corner, a cubic of
@@ -592,13 +582,17 @@ def _corner_loops(segs: list) -> tuple[list, int]:
     cut out as a laser cuts it: clockwise inside the loop (else its inside counts twice and
     fills, and its cut is lost), counter-clockwise outside it.  Returns them and how many
     were turned round."""
+    import numpy as np
+
     from ..geometry.curves import reverse, sample_xy
+    from ..geometry.drawing2d import _inside
     at = [i for i, s in enumerate(segs) if _is_corner_loop(s)]
     if not at or len(at) == len(segs):
         return segs, 0
     xs: list = []
     ys: list = []
     sample_xy([s for i, s in enumerate(segs) if i not in set(at)], xs, ys)
+    P = np.column_stack([xs, ys])
     out, turned = list(segs), 0
     for i in at:
         lx: list = []
@@ -609,7 +603,7 @@ def _corner_loops(segs: list) -> tuple[list, int]:
             continue
         cx = sum(lx) / len(lx)                   # a point of what the loop encloses
         cy = sum(ly) / len(ly)
-        if (a > 0) == _inside(cx, cy, xs, ys):
+        if (a > 0) == _inside((cx, cy), P):
             out[i] = reverse(segs[i])
             turned += 1
     return out, turned

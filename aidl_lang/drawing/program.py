@@ -1002,12 +1002,14 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
     import numpy as np
 
     from ..geometry.curves import carrier, crossings
+    from ..geometry.drawing2d import _inside_many
     from .chain import _distinct, _piece_length, _split_at
     from .model import GAP_NOTE
     loops = _loops_of(d)
     if len(loops) < 2:
         return []
     depth = [len(c) for c in inside]
+    polygon: dict = {}              # an owner's sampled polygon, made once for all its holes
     out: list[Path] = []
     for i, segs in enumerate(loops[:len(d.outlines)]):
         if depth[i] % 2 == 0:
@@ -1018,7 +1020,9 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
         if deadline is not None:
             deadline.check("finding the holes that cross their part's edge")
         own = loops[owner[0]]
-        P = np.asarray(Loop(list(own)).points(), dtype=float)
+        if owner[0] not in polygon:
+            polygon[owner[0]] = np.asarray(Loop(list(own)).points(), dtype=float)
+        P = polygon[owner[0]]
         H = np.asarray(Loop(list(segs)).points(), dtype=float)
         X, Y = P[:, 0], P[:, 1]
         X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
@@ -1026,11 +1030,7 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
         if not np.any((np.maximum(X, X2) >= lo[0]) & (np.minimum(X, X2) <= hi[0]) &
                       (np.maximum(Y, Y2) >= lo[1]) & (np.minimum(Y, Y2) <= hi[1])):
             continue            # no edge of the owner near it: inside, as its probe is
-        hx, hy = H[:, 0:1], H[:, 1:2]
-        cond = (Y > hy) != (Y2 > hy)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            xs = X + (hy - Y) * (X2 - X) / (Y2 - Y)
-        if np.all(np.count_nonzero(cond & (hx < xs), axis=1) % 2 == 1):
+        if _inside_many(H[:, 0], H[:, 1], P).all():
             continue                                   # every sample inside: a plain hole
         pieces = []
         for s in segs:
@@ -1042,8 +1042,11 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
                         hits.append(x)
             hits = [x for x in _distinct(hits) if min(math.dist(x, s.start),
                                                       math.dist(x, s.end)) > 1e-9]
-            hits.sort(key=lambda x: _piece_length(_split_at(s, x)[0])
-                      if _split_at(s, x) is not None else math.inf)
+
+            def along(x, s=s) -> float:     # how far along s the hit lies
+                cut = _split_at(s, x)
+                return _piece_length(cut[0]) if cut is not None else math.inf
+            hits.sort(key=along)
             rest = s
             for x in hits:
                 cut = _split_at(rest, x)

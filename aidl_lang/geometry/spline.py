@@ -496,7 +496,7 @@ class CubicSpline:
                 if len(pair) > RUN_LEAVES:
                     # the spans run along each other (within 1e-3 mm: a curve drawn out and
                     # back over another): a few of the leaves along the stretch will do
-                    pair = pair[::-(-len(pair) // RUN_SEEDS)] + pair[-1:]
+                    pair = pair[::math.ceil(len(pair) / RUN_SEEDS)] + pair[-1:]
                 out += pair
         res = []
         for u, v in out:

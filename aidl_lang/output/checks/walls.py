@@ -643,11 +643,12 @@ def _lone_circles(loops: list, t: float) -> np.ndarray:
     D = V - M.take(of, axis=0)
     R = np.hypot(D[:, 0], D[:, 1])
     rmax, rmin = np.maximum.reduceat(R, starts), np.minimum.reduceat(R, starts)
-    E = V.take(nxt, axis=0) - V
+    E = V.take(nxt, axis=0) - V                 # each vertex's edge, and the next edge
+    En = E.take(nxt, axis=0)
     L = np.hypot(E[:, 0], E[:, 1])
     rin = np.minimum.reduceat(np.abs(E[:, 0] * D[:, 1] - E[:, 1] * D[:, 0])
                               / np.maximum(L, 1e-300), starts)
-    turn = E[:, 0] * E.take(nxt, axis=0)[:, 1] - E[:, 1] * E.take(nxt, axis=0)[:, 0]
+    turn = E[:, 0] * En[:, 1] - E[:, 1] * En[:, 0]
     convex = (np.minimum.reduceat(turn, starts) > 0) | (np.maximum.reduceat(turn, starts) < 0)
     h = np.arcsin(np.minimum(1.0, np.maximum.reduceat(L, starts) / np.maximum(2 * rmax, 1e-300)))
     own = rin + rmin * np.cos(np.arccos(FACING) + h)

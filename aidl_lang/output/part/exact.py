@@ -82,6 +82,7 @@ class Provenance:
         self._eg = None               # their grid (_ends_grid), with how many it holds
         self._index = None
         self._partial = None          # (circles left out, their grid): _grid_without
+        self._circles = None          # (carriers, the circles' index): _circle_index
         self.unmatched = 0
 
     # ------------------------------------------------------------ forward: faces
@@ -275,13 +276,9 @@ class Provenance:
         rounded values are left to the grid, which settles between them; a polygon whose
         rounding falls on the other side of a digit from its circle's, too (the grid's answer
         either way)."""
-        ids = [k for k, c in enumerate(self.carriers) if c[0] == "C"]
+        ids, C, where = self._circle_index()
         if not ids:
             return {}, set()
-        C = np.array([self.carriers[k][1:4] for k in ids], dtype=float)
-        where: dict = {}
-        for i, key in enumerate(map(tuple, np.round(C, CARRIER_DIGITS).tolist())):
-            where[key] = -1 if key in where else i          # two alike: the grid's
         poly = np.repeat(np.arange(len(sizes)), sizes)
         M = np.add.reduceat(A, starts) / sizes[:, None]
         D = A - M.take(poly, axis=0)
@@ -315,6 +312,22 @@ class Provenance:
                     out[i] = Loop([Circle((cr[1], cr[2]), cr[3], turn)])
                     intact.add(ids[k])
         return out, intact
+
+    def _circle_index(self) -> tuple[list, np.ndarray, dict]:
+        """``(ids, C, where)`` of the circle carriers: their carrier indices, their ``(cx,
+        cy, r)`` (k x 3, mm) and ``{values to CARRIER_DIGITS decimals: row of C}`` (-1 for
+        two alike); made again only when a carrier has been added since (a compile asks
+        for the exact loops of every finish and offset: once per carrier, not per call)."""
+        got = self._circles
+        if got is not None and got[0] == len(self.carriers):
+            return got[1]
+        ids = [k for k, c in enumerate(self.carriers) if c[0] == "C"]
+        C = np.array([self.carriers[k][1:4] for k in ids], dtype=float).reshape(-1, 3)
+        where: dict = {}
+        for i, key in enumerate(map(tuple, np.round(C, CARRIER_DIGITS).tolist())):
+            where[key] = -1 if key in where else i          # two alike: the grid's
+        self._circles = (len(self.carriers), (ids, C, where))
+        return ids, C, where
 
     def _match_rest(self, A, B, edges, tol: float, intact: set) -> np.ndarray:
         """The carrier of each edge ``A[i] -> B[i]`` where ``edges[i]`` (-1 elsewhere, and
