@@ -267,13 +267,18 @@ def _probe(segs) -> tuple[float, float]:
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
+NOTCH_AREA = 0.25   # a loop drawn across a larger one's edge is its notch: at most this of its area
+NOTCH_SHARE = 0.1   # ... with at least this share of its own area inside it
+
+
 def _containers(loops: list, deadline=None) -> list[list[int]]:
     """For each loop (a list of segments) the indices of the other loops it lies inside (its
     probe point inside their polygon, and their area larger than its own: two parts drawn
     overlapping, their joint's tabs interlocked, each have points inside the other, and
     neither is the other's hole): each probe is tested only against the loops whose box
     holds it, so a sheet of 10 000 separate shapes takes a moment, not the hour that testing
-    every pair took."""
+    every pair took.  A loop drawn across the edge of a part or island (:func:`_notches`)
+    is that loop's hole (its notch) whatever its probe point."""
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
     boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
@@ -282,6 +287,7 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
                        np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2 if len(P) >= 3 else 0.0
              for P in polys]
     out = []
+    across: dict = {}       # loop -> the larger loops whose box its box meets, probe outside
     for i, segs in enumerate(loops):
         if deadline is not None and i % 256 == 0:
             deadline.check("finding the holes of the drawing")
@@ -289,11 +295,56 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
         if not len(boxes):
             out.append([])
             continue
-        cand = np.flatnonzero((boxes[:, 0] <= x) & (x <= boxes[:, 2]) & (boxes[:, 1] <= y)
-                              & (y <= boxes[:, 3]))
-        out.append([int(j) for j in cand if j != i and len(polys[j]) >= 3
-                    and areas[j] > areas[i] and _inside((x, y), polys[j])])
+        lo, hi = boxes[i, :2], boxes[i, 2:]
+        meet = np.flatnonzero((boxes[:, 0] <= hi[0]) & (lo[0] <= boxes[:, 2]) &
+                              (boxes[:, 1] <= hi[1]) & (lo[1] <= boxes[:, 3]))
+        cand = [int(j) for j in meet if j != i and len(polys[j]) >= 3 and areas[j] > areas[i]]
+        out.append([j for j in cand if boxes[j, 0] <= x <= boxes[j, 2] and
+                    boxes[j, 1] <= y <= boxes[j, 3] and _inside((x, y), polys[j])])
+        if not (len(segs) == 1 and isinstance(segs[0], Circle)):
+            across[i] = [j for j in cand if areas[i] <= NOTCH_AREA * areas[j] and
+                         j not in out[i]]
+    _notches(out, across, polys, areas, deadline)
     return out
+
+
+def _notches(out: list, across: dict, polys: list, areas: list, deadline=None) -> None:
+    """Make each loop drawn across the edge of a larger part or island a hole of it, in
+    ``out`` (:func:`_containers`' lists, changed in place): a loop ``i`` (not a whole circle)
+    of at most :data:`NOTCH_AREA` of the area of a loop ``j`` whose outline it crosses, with at
+    least :data:`NOTCH_SHARE` of its own area inside ``j`` (Manifold's 2D intersection of the
+    sampled polygons), that its probe point put beside ``j`` (its containers some of ``j``'s),
+    gets ``j``'s containers and ``j``: Boxes.py's WallChiselHolder slots across a plate's
+    edge are the plate's notches wherever their probe falls (the outer rest of their outline
+    is cut by :func:`_outside_remainders`).  The size and share keep apart what is not a
+    notch: parts drawn touching, their shared edges overlapping by a burn correction
+    (UnevenHeightBox's walls: 1.6 % of the smaller, and 0.4 to 2.7 times its area), stay
+    parts.  ``j`` must be a part or island (inside an even number of loops): a loop across
+    a hole's edge is left as its probe puts it.  ``across``: loop -> the candidate ``j``."""
+    from ..geometry.drawing2d import _inside_many
+    import manifold3d as mf
+    import numpy as np
+    found = {}
+    for i, cand in across.items():
+        H = polys[i]
+        lo, hi = H.min(axis=0), H.max(axis=0) if len(H) else (None, None)
+        for j in cand:
+            P = polys[j]            # a corner of one inside the other: they may overlap
+            Q = P[np.all((P >= lo) & (P <= hi), axis=1)] if len(H) >= 3 else P[:0]
+            if len(H) < 3 or not (_inside_many(H[:, 0], H[:, 1], P).any() or
+                                  _inside_many(Q[:, 0], Q[:, 1], H).any()):
+                continue
+            if deadline is not None:
+                deadline.check("finding the holes that cross their part's edge")
+            share = (mf.CrossSection([H.tolist()], mf.FillRule.NonZero) ^
+                     mf.CrossSection([polys[j].tolist()], mf.FillRule.NonZero)).area()
+            if share >= NOTCH_SHARE * areas[i]:
+                found.setdefault(i, []).append((-share, j))
+    for i in sorted(found, key=lambda k: -areas[k]):    # a larger loop's own place first
+        for _, j in sorted(found[i]):                   # the largest share first
+            if len(out[j]) % 2 == 0 and set(out[i]) <= set(out[j]):
+                out[i] = out[j] + [j]
+                break
 
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
@@ -890,7 +941,8 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
             else None
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
-        crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
+        crossed, touched = (0, 0) if parts or inside is None else \
+            _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -899,7 +951,14 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                        f"fuse them and lose the cut lines where they overlap)",
                               "move the parts apart in the drawing program if they are not "
                               "to overlap on the sheet"))
-        if (parts or crossed) and kind == "solid":
+        if touched:
+            notes.append(Note("W0130", f"{touched} pair{'s' if touched != 1 else ''} of parts "
+                                       f"of `{source}` on a cut role touch along an edge: "
+                                       f"each part is written as a solid of its own "
+                                       f"(`assembly drawing_import`), as `--parts` does (one "
+                                       f"solid would fuse them and lose the cut along the "
+                                       f"edge they share)"))
+        if (parts or crossed or touched) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -951,21 +1010,23 @@ def _loops_of(d: Drawing) -> list:
     return [o.segments for o in d.outlines] + [[c] for c in d.circles]
 
 
-def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
+def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
     """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
-    (share an area, on the loops' sampled polygons): parts drawn overlapping
-    on a laser sheet (Boxes.py's UnevenHeightBox walls), which one solid would fuse, losing
-    the cut lines inside the union.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
+    (share an area, on the loops' sampled polygons), and how many others touch along an
+    edge (:func:`_polygons_touch`): parts drawn overlapping on a laser sheet (Boxes.py's
+    UnevenHeightBox walls) or sharing an edge (WallChiselHolder's walls), which one solid
+    would fuse, losing the cut lines inside the union.  ``inside``: :func:`_containers` of
+    :func:`_loops_of`."""
     import numpy as np
     loops = _loops_of(d)
     if len(loops) < 2:
-        return 0
+        return 0, 0
     outer = [i for i, c in enumerate(inside) if not c]
     polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
     box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
            for i, P in polys.items() if len(P) >= 3}
     keys = sorted(box)
-    pairs = 0
+    pairs = touch = 0
     for a_i, i in enumerate(keys):
         if deadline is not None:
             deadline.check("finding the parts that overlap")
@@ -975,7 +1036,9 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
                 continue
             if _polygons_overlap(polys[i], polys[j]):
                 pairs += 1
-    return pairs
+            elif _polygons_touch(polys[i], polys[j]):
+                touch += 1
+    return pairs, touch
 
 
 def _polygons_overlap(P, Q) -> bool:
@@ -987,6 +1050,20 @@ def _polygons_overlap(P, Q) -> bool:
     b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
     both = (a ^ b).area()
     return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
+
+
+def _polygons_touch(P, Q, reach: float = 1e-3) -> bool:
+    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) that do not overlap run
+    along one another for more than :data:`~.model.GAP_NOTE` (0.5 mm): the area of ``Q``
+    within ``reach`` mm of ``P`` (``P`` offset by it, square joins: Manifold's 2D booleans),
+    divided by ``reach``, is the length of the edge they share; parts that touch at a corner
+    share none."""
+    import manifold3d as mf
+
+    from .model import GAP_NOTE
+    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero).offset(reach, mf.JoinType.Square)
+    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
+    return (a ^ b).area() > GAP_NOTE * reach
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
