@@ -869,6 +869,20 @@ Line two different points, or delete it; a dot is a small Circle.
         for i in range(5) { s = Line((-30 + 15 * i, 0), (-30 + 15 * i, 0)) }   # W0524
     }
 """),
+    "W0525": ("sheet-level cut across a part", """
+A `cut` directly in an assembly is a sheet-level cut: the laser cuts along each of its curves
+where it is drawn, in no part (the rest of a slot drawn across a plate's edge, lines in the
+scrap between parts; `aidl import` writes the cut paths of a drawing that lie in no part so).
+This curve runs across the material of a part: the laser cuts that part there, but the part's
+outline, area, 3D view and fit check are without the cut. To cut the part, move the curve into
+a `cut` inside the part's solid; a sheet-level cut belongs beside the parts, off their material.
+
+    assembly sheet {
+        solid plate { r = Rectangle(center=(0, 0), width=60, height=40) }
+        cut scrap { a = Line(start=(40, -10), end=(40, 10)) }     # beside the plate: fine
+        cut slits { b = Line(start=(-10, 0), end=(10, 0)) }       # across the plate: W0525
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

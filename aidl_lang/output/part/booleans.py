@@ -148,6 +148,9 @@ class Drawing(Compared):
     # wall check measures); the names of parts a through-cut split (their loops hold the cut
     # where it separates)
     through = ()
+    # the curves of the sheet-level cuts (a `cut` in an assembly): (geometry, its cut
+    # structure, [N x 2 polylines, mm])
+    sheet_cuts = ()
     slit_shapes = {}
     split = frozenset()
     # Part name -> minimum wall in mm (`min_wall 0.3 mm`, found like the thickness; 0: the
@@ -212,6 +215,7 @@ class Renderer:
         self.spline_source: dict = {}        # CubicSpline -> the Spline geometry drawn as it
         self.through_paths: list = []        # (geometry, exact segments) of through-cuts
         self.through: list = []
+        self.sheet_cuts: list = []           # (geometry, its cut, [N x 2 polylines, mm])
         self.slit_shapes: dict = {}
         self.split: set = set()
 
@@ -788,26 +792,28 @@ class Renderer:
         out.strokes.append((style, ("arc", np.array(seg.center), seg.radius, seg.start_angle,
                                     seg.end_angle), g))
 
-    def draw_lines(self, g: Geometry, out: Drawing) -> None:
+    def draw_lines(self, g: Geometry, out: Drawing, style: str = "drawing") -> None:
+        """The lines of a drawing's geometry ``g`` as exact strokes of ``style`` (``drawing``:
+        engraved; ``cut``: a sheet-level cut, :meth:`sheet_cut`) and as polylines."""
         if g.kind == "Drawing2D":
             loops, paths = self.drawing2d(g)
             for lp in loops:
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))
                 pl = lp.points()
-                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
-                out.strokes.append(("drawing", ("poly", pl, lp), g))
+                out.lines.append((style, np.vstack([pl, pl[:1]])))
+                out.strokes.append((style, ("poly", pl, lp), g))
             for segs in paths:
                 for seg in segs:
-                    self._stroke_segment(seg, "drawing", g, out)
+                    self._stroke_segment(seg, style, g, out)
             return
         if g.kind == "Intersect" and not g.closed:
             for seg in self.clipped(g):
-                self._stroke_segment(seg, "drawing", g, out)
+                self._stroke_segment(seg, style, g, out)
             return
         if g.kind in ("Line", "Arc", "Spline", "Bezier", "EllipticArc") or (g.kind == "Polyline" and not g.closed):
-            out.lines.append(("drawing", self.curve(g)))
-            self.stroke(g, "drawing", out)
+            out.lines.append((style, self.curve(g)))
+            self.stroke(g, style, out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
             along = g.data.get("along")
@@ -821,8 +827,8 @@ class Renderer:
             if segs:      # every stroke moved to the position in one array operation
                 ab = p + np.asarray(segs, dtype=float)          # k x 2 (ends) x 2 (x, y)
                 for pts in ab:
-                    out.lines.append(("drawing", pts))
-                    out.strokes.append(("drawing", ("line", pts[0], pts[1]), g))
+                    out.lines.append((style, pts))
+                    out.strokes.append((style, ("line", pts[0], pts[1]), g))
         elif g.kind == "Point":
             return
         elif g.kind == "Circle":
@@ -831,16 +837,16 @@ class Renderer:
             circle = Circle((float(c[0]), float(c[1])), r)
             self.exact.carrier_id(carrier(circle))
             pts = Loop([circle]).points()
-            out.lines.append(("drawing", np.vstack([pts, pts[:1]])))
-            out.strokes.append(("drawing", ("circle", c, r), g))
+            out.lines.append((style, np.vstack([pts, pts[:1]])))
+            out.strokes.append((style, ("circle", c, r), g))
         else:
             lp = self.outline(g)
             if lp is not None and lp.segments:
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))
                 pl = lp.points()
-                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
-                out.strokes.append(("drawing", ("poly", pl, lp), g))
+                out.lines.append((style, np.vstack([pl, pl[:1]])))
+                out.strokes.append((style, ("poly", pl, lp), g))
 
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
@@ -923,8 +929,28 @@ class Renderer:
                 self.drawing(c, out)
             elif c.kind == "assembly":
                 self.assembly(c, out)
+            elif c.kind == "cut":           # a sheet-level cut
+                self.sheet_cut(c, out)
             else:
                 self.part(c, out)
+
+    def sheet_cut(self, c: Structure, out: Drawing) -> None:
+        """A ``cut`` directly in an assembly, a sheet-level cut (language.md 2.5): each curve,
+        open or closed, is cut along as drawn, in no part (``cut`` strokes whose part is "");
+        each curve's polylines go to :attr:`sheet_cuts` for the check that it crosses no part
+        (W0525, :func:`..checks.through.check_sheet_cuts`)."""
+        for g in c.geometry:
+            self.current = c
+            self.tick(c)
+            if g.construction:
+                self.construct(g, out)
+                continue
+            mark = len(out.lines)
+            self.draw_lines(g, out, "cut")
+            if len(out.lines) > mark:
+                self.sheet_cuts.append((g, c, [pts for _, pts in out.lines[mark:]]))
+        for k in c.children.values():        # only cuts (E0125)
+            self.sheet_cut(k, out)
 
     def drawing(self, s: Structure, out: Drawing) -> None:
         for g in s.geometry:
@@ -1101,6 +1127,7 @@ class Renderer:
         out.exact = self.exact
         out.empty_faces = self.empty_faces
         out.through, out.slit_shapes = self.through, self.slit_shapes
+        out.sheet_cuts = self.sheet_cuts
         out.split = frozenset(self.split)
         out.shape_errors = self.shape_errors
         out.spline_source = self.spline_source
