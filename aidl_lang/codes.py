@@ -172,8 +172,10 @@ not larger than `max`, and `step` is positive.  Choose a value inside the range 
     "E0125": ("a `cut` where it cuts nothing", """
 A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
 through the solid the cut sits in. So a cut belongs inside a `solid` (or inside another `cut`),
-and holds only curves and other cuts. At the top level, in an `assembly`, a `drawing` (whose
-lines are engraved) or a `hole` (removed whole already) it has no material to cut:
+or directly in an `assembly`, where it is a sheet-level cut (cut where it is drawn, in no part:
+W0525 if it runs across a part), and holds only curves and other cuts. At the top level (a
+program of one cut), in a `drawing` (whose lines are engraved) or a `hole` (removed whole
+already) it has no material to cut:
 
     drawing marks { cut slits { l = Line(start=(0, 0), end=(10, 0)) } }   # error
 
