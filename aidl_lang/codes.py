@@ -172,8 +172,10 @@ not larger than `max`, and `step` is positive.  Choose a value inside the range 
     "E0125": ("a `cut` where it cuts nothing", """
 A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
 through the solid the cut sits in. So a cut belongs inside a `solid` (or inside another `cut`),
-and holds only curves and other cuts. At the top level, in an `assembly`, a `drawing` (whose
-lines are engraved) or a `hole` (removed whole already) it has no material to cut:
+or directly in an `assembly`, where it is a sheet-level cut (cut where it is drawn, in no part:
+W0525 if it runs across a part), and holds only curves and other cuts. At the top level (a
+program of one cut), in a `drawing` (whose lines are engraved) or a `hole` (removed whole
+already) it has no material to cut:
 
     drawing marks { cut slits { l = Line(start=(0, 0), end=(10, 0)) } }   # error
 
@@ -867,6 +869,20 @@ Line two different points, or delete it; a dot is a small Circle.
 
     drawing strings {
         for i in range(5) { s = Line((-30 + 15 * i, 0), (-30 + 15 * i, 0)) }   # W0524
+    }
+"""),
+    "W0525": ("sheet-level cut across a part", """
+A `cut` directly in an assembly is a sheet-level cut: the laser cuts along each of its curves
+where it is drawn, in no part (the rest of a slot drawn across a plate's edge, lines in the
+scrap between parts; `aidl import` writes the cut paths of a drawing that lie in no part so).
+This curve runs across the material of a part: the laser cuts that part there, but the part's
+outline, area, 3D view and fit check are without the cut. To cut the part, move the curve into
+a `cut` inside the part's solid; a sheet-level cut belongs beside the parts, off their material.
+
+    assembly sheet {
+        solid plate { r = Rectangle(center=(0, 0), width=60, height=40) }
+        cut scrap { a = Line(start=(40, -10), end=(40, 10)) }     # beside the plate: fine
+        cut slits { b = Line(start=(-10, 0), end=(10, 0)) }       # across the plate: W0525
     }
 """),
     "W0130": ("drawing entities skipped", """

@@ -699,11 +699,15 @@ its 3D view are unchanged, unless the cut separates material: one that runs from
 or closes a loop with the outline, itself or another cut, frees the piece, which becomes a
 part of its own (or falls out as a hole when enclosed). A closed curve cuts a hole. Outputs
 cut it on the part's cut layer, before the part's holes and outline, once along the line;
-`--kerf` leaves it where it is (a line has no side). A cut belongs in a solid (E0125);
-`cut` stays usable as an ordinary name. W0522: a cut off the material; W0507: a web thinner
-than the minimum wall between cuts. Templates may return it: `def f(...) -> cut`,
+`--kerf` leaves it where it is (a line has no side). A cut belongs in a solid (E0125), or
+directly in an assembly, beside the parts: a sheet-level cut, cut where it is drawn in no part
+(scrap lines, the rest of a slot drawn across a plate's edge; `aidl import` writes cut paths
+that lie in no part so; `--layout` leaves it out, with a note); across a part's material it is
+W0525 (move it into that solid). `cut` stays usable as an ordinary name. W0522: a cut off the
+material; W0507: a web thinner than the minimum wall between cuts. Templates may return it: `def f(...) -> cut`,
 `cut c = f(...)`.
-""", ["slit", "through-cut", "through cut", "cut line", "kerf cut", "relief cut"]),
+""", ["slit", "through-cut", "through cut", "cut line", "kerf cut", "relief cut",
+      "sheet-level cut", "sheet cut"]),
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes, on the `engrave` layer; nothing is filled or cut. Text is only allowed in a

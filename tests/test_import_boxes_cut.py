@@ -365,7 +365,10 @@ def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut():
     text, notes = import_drawing(svg, "notch.svg", roles="laser")
     c = compile_source(text, "notch.aidl")
     assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
-    assert "hole hole2" in text and "solid sheet_cuts {" in text
+    assert "hole hole2" in text and "cut sheet_cuts {" in text
+    import aidl_lang
+    codes = {d.code for d in aidl_lang.compile(text, "notch.aidl").diagnostics}
+    assert not codes & {"W0509", "W0522", "W0525"}, codes
     assert any("1 piece of hole of `notch.svg` on a cut role drawn across its part's edge "
                "lies outside the part (30 mm): the part keeps the notch, and it is written as "
                "the sheet-level cut `sheet_cuts`" in n.message for n in notes), notes

@@ -223,7 +223,11 @@ def test_cut_paths_in_no_part_are_cut_not_engraved(loose):
     rest a sheet-level cut; all on the cut layer."""
     text, notes, doc = loose
     assert "sheet_loose" not in text and "drawing" not in text
-    assert "solid sheet_cuts {" in text
+    assert "cut sheet_cuts {" in text and "solid sheet_cuts" not in text
+    # the program as the import meant it: no warning that it cuts nothing or comes out empty
+    import aidl_lang
+    codes = {d.code for d in aidl_lang.compile(text, "loose.aidl").diagnostics}
+    assert not codes & {"W0509", "W0522", "W0525"}, codes
     assert any("1 open path of `loose.svg` on a cut role lies in no part and ends within "
                "0.5 mm of its start: closed across the gap into the outline of a part "
                "(the largest gap 0.141 mm" in n for n in notes), notes

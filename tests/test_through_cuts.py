@@ -13,7 +13,8 @@ unit), one ``LINE`` on the wall's cut layer in the DXF (ezdxf), a black line in 
 (pdfplumber).  A slit that runs from edge to edge frees the corner as a part of its own (both
 outlines exact, no stroke left on the cut); three lines closing a triangle cut a hole; a
 line, an arc and a polyline come out of the DXF to 1e-9 mm.  Each new message has its test:
-E0125 wherever a cut cuts nothing, W0522, W0507 for a thin web, the kerf note."""
+E0125 wherever a cut cuts nothing, W0522, W0507 for a thin web, the kerf note; a `cut` in an
+assembly is a sheet-level cut (W0525 where it crosses a part)."""
 import io
 import math
 import re
@@ -270,8 +271,6 @@ solid panel {
     ("solid p {\n    r = Rectangle(center=(0, 0), width=40, height=20)\n"
      "    hole h { c = Circle(center=(0, 0), radius=3)\n"
      "        cut s { l = Line(start=(0, 0), end=(10, 0)) } }\n}\n", "hole `h`"),
-    ("def hinge() -> cut { l = Line(start=(0, 0), end=(10, 0)) }\nh = hinge()\n"
-     "solid p { r = Rectangle(center=(0, 0), width=40, height=20) }\n", "assembly `model`"),
     ("solid p {\n    r = Rectangle(center=(0, 0), width=40, height=20)\n"
      "    cut s { solid x { c = Circle(center=(0, 0), radius=3) } }\n}\n", "not a solid"),
 ])
@@ -379,3 +378,54 @@ def _on(p, line, tol=TOL) -> bool:
     if u < -1e-12 or u > 1 + 1e-12:
         return False
     return math.hypot(p[0] - ax - u * dx, p[1] - ay - u * dy) <= tol
+
+
+# ------------------------------------------------------------------ sheet-level cuts
+SHEET = """
+assembly sheet {
+    solid plate {
+        r = Rectangle(center=(0, 0), width=60, height=40)
+        hole h { c = Circle(center=(10, 0), radius=5) }
+        Fixed(r)
+    }
+    cut scrap {
+        a = Line(start=(40, -10), end=(40, 10))
+        b = Arc(center=(50, 0), radius=5, start_angle=0 deg, end_angle=180 deg)
+        c = Circle(center=(70, 0), radius=3)
+        d = Line(start=(10, -5), end=(10, 5))
+    }
+    cut slits { e = Line(start=(-10, 0), end=(-20, 0)) }
+}
+"""
+
+
+def test_a_cut_in_an_assembly_is_a_sheet_level_cut(tmp_path, capsys):
+    """A `cut` directly in an assembly: every curve, open or closed, cut where it is drawn, in
+    no part (a slot's rest off a plate's edge, scrap between parts: what `aidl import` writes).
+    Off the material (beside the plate, inside its hole) it is said nothing; across the
+    plate's material it is W0525 with the fix; the plate stays whole; `--layout sheet` leaves
+    the sheet-level strokes out with a note."""
+    from aidl_lang.cli.main import main
+    res = _compile(SHEET, tmp_path)
+    assert [(d.code, d.span.line) for d in res.diagnostics if d.severity != "info"] == \
+        [("W0525", 14)], [d.message for d in res.diagnostics]
+    (w,) = [d for d in res.diagnostics if d.code == "W0525"]
+    assert "`sheet.slits.e`" in w.message and "`sheet.plate`" in w.message
+    assert "move the curve into a `cut` inside solid `sheet.plate`" in w.hint
+    (part,) = res.output.parts
+    assert part.area == pytest.approx(2400 - 25 * math.pi, abs=1e-6)
+    doc = ezdxf.read(io.StringIO(encode(for_cutting(res.output), ".dxf").decode()))
+    got = sorted((e.dxftype(), e.dxf.layer.upper()[:3]) for e in doc.modelspace())
+    assert got == sorted([("LWPOLYLINE", "CUT"), ("CIRCLE", "CUT"), ("CIRCLE", "CUT"),
+                          ("LINE", "CUT"), ("LINE", "CUT"), ("LINE", "CUT"), ("ARC", "CUT")])
+    (c3,) = [e for e in doc.modelspace() if e.dxftype() == "CIRCLE" and e.dxf.radius < 4]
+    assert tuple(c3.dxf.center)[:2] == pytest.approx((70, 0), abs=TOL)
+    assert c3.dxf.radius == pytest.approx(3, abs=TOL)
+    (arc,) = [e for e in doc.modelspace() if e.dxftype() == "ARC"]
+    assert (arc.dxf.start_angle, arc.dxf.end_angle) == pytest.approx((0, 180), abs=1e-9)
+    f = tmp_path / "s.aidl"
+    f.write_text(SHEET)
+    pytest.importorskip("spyrrow")          # the nesting library is an extra
+    assert main(["render", str(f), "--layout", "sheet", "-o", str(tmp_path / "s.dxf")]) == 0
+    assert "note: 5 sheet-level cut strokes outside every part left out of the layout" \
+        in capsys.readouterr().out

@@ -508,8 +508,14 @@ def cmd_render(args) -> int:
                          f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
                          f"{sheet[0]:g} x {sheet[1]:g} mm" + _materials(flat))
             if dropped:
-                notes.append(f"note: {dropped} engraving stroke{'s' if dropped != 1 else ''} "
-                             "outside every part left out of the layout")
+                placed = {name for moves in where for name in moves}
+                sheet_level = sum(1 for st in cut.engrave
+                                  if st.style == "cut" and st.part not in placed)
+                kinds = [f"{n} {what} stroke{'s' if n != 1 else ''}" for n, what in
+                         ((dropped - sheet_level, "engraving"), (sheet_level, "sheet-level cut"))
+                         if n]
+                notes.append(f"note: {' and '.join(kinds)} outside every part left out of the "
+                             "layout")
         if len(flat) > 1 and STDOUT in outs:
             print(f"aidl: error: the layout has {len(flat)} sheets and standard output takes "
                   "one: write them to files (-o cut.svg writes cut-1.svg, cut-2.svg, ...)",

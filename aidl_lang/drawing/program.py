@@ -535,6 +535,14 @@ def _copies(loops: list, depths: list, kind: str) -> dict:
 COPIES_PER_LOOP = 1000      # places in one `for` (a loop holds at most 10 000 items: E0301)
 
 
+def _sheet_cut(w: _Writer, depth: int, name: str, d: Drawing) -> None:
+    """A sheet-level cut, ``cut NAME { ... }`` directly in the assembly (language.md 2.5):
+    the cut role's paths of ``d`` that lie in no part, cut where they are drawn."""
+    w.emit(depth, f"cut {name} {{")
+    _paths(w, depth + 1, d.paths, name)
+    w.emit(depth, "}")
+
+
 def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
     """The statements of open paths (and loops that cross themselves), ``p1_0 = ...``."""
     for i, p in enumerate(paths):
@@ -761,11 +769,14 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
                   "a `for` over their places)")
     w.emit(0, "units mm")
     items = _layer_items(layers, parts, deadline, source, w.notes)
-    multi = len(items) > 1
+    multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
     for kind, name, d in items:
-        _structure(w, 1 if multi else 0, kind, name, d)
+        if kind == "cut":
+            _sheet_cut(w, 1, name, d)
+        else:
+            _structure(w, 1 if multi else 0, kind, name, d)
     if multi:
         w.emit(0, "}")
     _cut_notes(w, source)
@@ -969,13 +980,14 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                                  "written as cuts of the part each reaches")
             cuts = [p for p in loose.paths if p.crossing is None] \
                 if loose is not None and d.paths_cut else []
-            if cuts:            # a cut role's paths in no part: cut by a sheet-level solid
+            if cuts:            # a cut role's paths in no part: a sheet-level cut
                 loose.paths = [p for p in loose.paths if p.crossing is not None]
-                items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+                items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
                               Drawing(unit=d.unit, paths=cuts, paths_cut=True)))
                 _say_cuts(notes, source, cuts, f"in no part, reaching none: written as the "
-                                               f"sheet-level cut `{items[-1][1]}` (a solid of "
-                                               f"cuts alone: the laser cuts along them)")
+                                               f"sheet-level cut `{items[-1][1]}` (a `cut` "
+                                               f"in the assembly: the laser cuts along them "
+                                               f"where they are drawn)")
                 if loose.empty and not loose.texts and loose.engrave is None:
                     loose = None
             if loose is not None:
@@ -990,7 +1002,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         else:
             items.append((kind, _ident(layer or "part", used), d))
         if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
-            items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+            items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
                           Drawing(unit=d.unit, paths=notch, paths_cut=True)))
             n = len(notch)
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"

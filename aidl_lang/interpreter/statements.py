@@ -892,23 +892,24 @@ def _fmt_q(v: float, dim) -> str:
 
 def _check_cut_place(name: str, kind: str, parent, span, template) -> None:
     """E0125 for a ``cut`` where it cuts nothing: a cut's curves are through-cuts of the solid
-    it sits in (directly or in another cut), so a cut at the top, in an assembly, a drawing
-    or a hole, and anything but a cut inside a cut, is refused with the fix."""
+    it sits in (directly or in another cut), or, directly in an assembly, sheet-level cuts
+    (the laser cuts along them on the sheet, in no part: language.md 2.5), so a cut at the
+    top, in a drawing or a hole, and anything but a cut inside a cut, is refused with the
+    fix."""
     what = f"`{name} = {template}(...)`" if template else f"`{kind} {name}`"
     if kind == "cut":
         if parent is None:
             raise EvalError("E0125", f"{what}: a `cut` at the top level has no material to "
                             "cut through", span,
                             hint="put it inside the solid it cuts: `solid plate { body = "
-                                 "Rectangle(...)  cut slits { ... } }`")
-        if parent.kind in ("solid", "cut"):
+                                 "Rectangle(...)  cut slits { ... } }` (or, to cut the sheet "
+                                 "in no part, in an assembly beside the parts)")
+        if parent.kind in ("solid", "cut", "assembly"):
             return
         fix = {"drawing": "a drawing's lines are engraved, not cut: move the cut into the "
                           "solid it cuts through",
                "hole": "a hole is removed whole already: draw the curve in the hole's "
-                       "solid, in a `cut` beside the hole",
-               "assembly": "an assembly has no material of its own: move the cut into the "
-                           "solid (part) it cuts through"}.get(parent.kind, "")
+                       "solid, in a `cut` beside the hole"}.get(parent.kind, "")
         raise EvalError("E0125", f"{what} is inside {parent.kind} `{parent.name}`: a `cut` "
                         "cuts through the solid it sits in", span, hint=fix)
     raise EvalError("E0125", f"{what}: a `cut` holds only curves (through-cuts) and other "

@@ -52,7 +52,8 @@ KIND_DOCS = {
     "solid": "`solid NAME { ... }` — filled material; children are unioned, `hole` children cut.",
     "hole": "`hole NAME { ... }` — a cut-out: subtracted from the enclosing solid.",
     "cut": "`cut NAME { ... }` — through-cuts inside a solid: the laser cuts along each curve "
-           "as written (open curves too, zero width); a closed curve cuts a hole.",
+           "as written (open curves too, zero width); a closed curve cuts a hole. Directly in "
+           "an assembly: a sheet-level cut, cut where drawn, in no part.",
     "drawing": "`drawing NAME { ... }` — engraved lines and text: drawn, not filled.",
     "assembly": "`assembly NAME { ... }` — a group of parts laid out side by side.",
 }

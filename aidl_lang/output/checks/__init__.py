@@ -61,7 +61,7 @@ from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overla
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_stray_holes, empty_faces)
 from .text import _check_text_overlap
-from .through import check_through
+from .through import check_sheet_cuts, check_through
 from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
@@ -327,6 +327,10 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 run("steps", s, lambda: _check_steps(d, s, loops[s], cuts, min_wall, sink,
                                                      tick=lambda: tick(s),
                                                      cut_open=shared.get("cut_open")))
+    if getattr(d, "sheet_cuts", ()):
+        tick(None)
+        run("sheet cuts", None, lambda: check_sheet_cuts(
+            d, roots, sink, tick=lambda ahead=0.0: tick(None, ahead)))
     if getattr(d, "through", ()):
         tick(None)
         run("through", None, lambda: check_through(

@@ -15,7 +15,10 @@
   the outline that it stops short of.  A bridge has no length, so the opening above removes
   next to nothing there (two slits ending 0.05 mm apart held two halves of a plate by a 50 um
   bridge, and the check said nothing): it is measured directly, as the distance from the end
-  to the nearest other boundary, exact on lines and circles.
+  to the nearest other boundary, exact on lines and circles;
+* ``W0525`` a sheet-level cut (a ``cut`` directly in an assembly) that runs across a part's
+  material (:func:`check_sheet_cuts`): the laser cuts that part there, but the part (its
+  outline, area, 3D view, fit check) does not hold the cut.
 """
 from __future__ import annotations
 
@@ -25,7 +28,8 @@ import numpy as np
 from ...diagnostics import DiagnosticSink
 from ...geometry.curves import Line, Loop, carrier, distance_to
 from ...geometry.tessellate import CHORD_TOL
-from ..part.booleans import SLIT_HALF, Drawing
+from ..part.booleans import SLIT_HALF, Drawing, _quad
+from ..part.nearby import meeting
 from ..part.nearby import close_pairs
 from .common import _inside, _signed
 from .walls import _thin
@@ -73,6 +77,39 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
         seen: list = []         # the webs reported below: a bridge in one is not told again
         _webs(s, whole, slit, cuts, t, sink, seen, tick)
         _end_bridges(d, s, whole, cuts, t, sink, seen, tick)
+
+
+def check_sheet_cuts(d: Drawing, roots: dict, sink: DiagnosticSink,
+                     tick=lambda ahead=0.0: None) -> None:
+    """W0525 (the module docstring) for each curve of a sheet-level cut of ``d``
+    (:attr:`~..part.booleans.Drawing.sheet_cuts`) whose band (:data:`SLIT_HALF` either side)
+    has more than :data:`OFF` of its area on a part's final shape (``roots``: part structure
+    -> shape); a curve only touching a part's outline, or lying in its holes, is off it.
+    Each curve is measured only against the parts whose bounding boxes meet its own."""
+    items = getattr(d, "sheet_cuts", ())
+    parts = [(s, shp) for s, shp in roots.items() if not shp.is_empty()]
+    if not items or not parts:
+        return
+    bands = []
+    for _, _, polys in items:
+        tick()
+        quads = [_quad(P[i], P[i + 1], SLIT_HALF) for P in polys for i in range(len(P) - 1)]
+        bands.append(mf.CrossSection.batch_boolean(quads, mf.OpType.Add) if quads
+                     else mf.CrossSection())
+    for (g, c, _), band, near in zip(items, bands, meeting(bands, [shp for _, shp in parts])):
+        whole = band.area()
+        for i in near:
+            tick()
+            s, shp = parts[i]
+            if (band ^ shp).area() > OFF * whole > 0:
+                sink.warning("W0525", f"sheet-level cut `{g.label}` runs across the material of "
+                             f"part `{s.path}`: the laser cuts `{s.path}` there, but the part "
+                             "does not hold the cut (its outline, area and 3D view are without "
+                             "it)", g.span or c.span,
+                             hint=f"to cut `{s.path}`, move the curve into a `cut` inside "
+                                  f"solid `{s.path}`; a sheet-level cut (a `cut` in an assembly) "
+                                  "belongs beside the parts, off their material")
+                break
 
 
 def _webs(s, whole, slit, cuts: list, t: float, sink: DiagnosticSink, seen: list,

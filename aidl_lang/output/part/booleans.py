@@ -23,7 +23,6 @@ import time
 import manifold3d as mf
 import numpy as np
 
-from ...records import Compared
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse
 from ...geometry.ellipse import ellipse
 from ...geometry.model import Geometry, Model, Structure
@@ -35,12 +34,12 @@ from ...geometry.operations import SplineCorner, finish
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
-from .hole_outlines import HoleOutlines
 from .nearby import faces_apart, meeting
 from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot_outline,
                        rounded_outline, rounded_outline_radii, sector_outline, slot_outline,
                        spline_band)
 from .placement import bends_of, placement_matrix
+from .result import Cut, Drawing, Part, Through
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
 
 CLOSE_TOL = 1e-6
@@ -62,129 +61,6 @@ SLIT_HALF = 2.5e-7
 SLIT_GROW = 1.5 * SLIT_HALF
 SLIT_OFF = 1e-3    # of a band's own area: a through-cut with less of it on the material cuts nothing
 HALF_TURN = ((-1.0, 0.0, 0.0), (0.0, -1.0, 0.0))    # exact: a turned union turned clockwise
-
-class Part(Compared):
-    """One part of the booleans' result: its structure's final shape (mm)."""
-    __slots__ = ("name", "kind", "shape")
-
-    def __init__(self, name: str, kind: str, shape: mf.CrossSection):
-        self.name = name
-        self.kind = kind  # solid | hole (a hole with no solid to cut)
-        self.shape = shape
-
-
-class Cut(Compared):
-    """A hole child ``hole`` of the solid ``owner``: ``region`` is what it removed (mm)."""
-    __slots__ = ("hole", "owner", "before", "region")
-
-    def __init__(self, hole: Structure, owner: Structure, before: mf.CrossSection,
-                 region: mf.CrossSection):
-        self.hole = hole
-        self.owner = owner
-        self.before = before  # the owner's shape before its holes
-        self.region = region  # before ∩ hole
-
-
-class Through(Compared):
-    """A through-cut: an open curve ``geometry`` of a ``cut`` structure, cut along as written
-    (zero width) through ``part`` (the part's structure): its exact ``segments`` (mm) and
-    ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
-    zero-width cut); ``inside``: the band's area inside the part before any through-cut
-    (0: the cut is off the material); ``on_outline``: it lies along the part's outline."""
-    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline")
-
-    def __init__(self, geometry: Geometry, part: Structure, segments: list,
-                 band: mf.CrossSection, inside: float = 0.0, on_outline: bool = False):
-        self.geometry = geometry
-        self.part = part
-        self.segments = segments
-        self.band = band
-        self.inside = inside
-        # True: it runs along the part's outline (a hole's included) from end to end, the
-        # material on one side only: it adds nothing (not drawn, W0522)
-        self.on_outline = on_outline
-
-
-class Drawing(Compared):
-    """The booleans' result of a model: its parts, lines, cuts and each structure's own shape."""
-    __slots__ = ("parts", "lines", "hole_outlines", "open_curves", "exact", "strokes", "shapes",
-                 "own", "cuts", "construction", "part_of", "thickness")
-
-    def __init__(self, parts: list[Part] | None = None,
-                 lines: list[tuple[str, np.ndarray]] | None = None,
-                 hole_outlines: list[np.ndarray] | None = None,
-                 open_curves: list[Geometry] | None = None, exact: Provenance | None = None,
-                 strokes: list[tuple[str, tuple, Geometry | None]] | None = None,
-                 shapes: dict | None = None, own: dict | None = None,
-                 cuts: list[Cut] | None = None,
-                 construction: list[tuple[str, tuple, Geometry | None]] | None = None,
-                 part_of: dict | None = None, thickness: dict | None = None):
-        self.parts = [] if parts is None else parts
-        self.lines = [] if lines is None else lines  # (style, Nx2 polyline)
-        self.hole_outlines = HoleOutlines() if hole_outlines is None else hole_outlines
-        self.open_curves = [] if open_curves is None else open_curves
-        # the exact curves behind every polygon handed to Manifold (:mod:`.exact`)
-        self.exact = exact
-        # engraving in exact form: ("line", p, q) | ("arc", c, r, a1, a2) | ("circle", c, r) |
-        # ("poly", Nx2 closed polyline); with its style and source geometry
-        self.strokes = [] if strokes is None else strokes
-        self.shapes = {} if shapes is None else shapes  # Structure -> its final CrossSection
-        self.own = {} if own is None else own  # Structure -> [(Geometry, CrossSection)]
-        self.cuts = [] if cuts is None else cuts
-        self.construction = [] if construction is None else construction
-        self.part_of = {} if part_of is None else part_of  # Part name -> its Structure
-        # Part name -> thickness in mm (`thickness 3 mm`: the structure's own, an ancestor's, or
-        # the file's); parts without one are missing
-        self.thickness = {} if thickness is None else thickness
-
-    # faces that close on no area: [(structure, geometry or first curve of the loop, area
-    # mm^2)], set by the renderer (an attribute, not a field: records of at most 12 fields
-    # are made from templates, docs/dev/performance.md)
-    empty_faces = ()
-    # Part name -> kerf in mm (`kerf 0.15 mm`, found like the thickness); set by the renderer
-    kerf = None
-    # the through-cuts (:class:`Through`) of every part, and Part name -> (the part's shape
-    # before its through-cuts, the same with every through-cut's band taken out: the webs the
-    # wall check measures); the names of parts a through-cut split (their loops hold the cut
-    # where it separates)
-    through = ()
-    slit_shapes = {}
-    split = frozenset()
-    # Part name -> minimum wall in mm (`min_wall 0.3 mm`, found like the thickness; 0: the
-    # wall checks off); parts without one are checked at the compile's default
-    min_wall = None
-    # [(geometry, message, hint[, code])]: an Offset or Shell that leaves nothing (E0406), a
-    # Fillet or Chamfer at a spline's corner (E0407)
-    shape_errors = ()
-    # CubicSpline -> the Spline geometry it was drawn from (located refusals after the solve)
-    spline_source = {}
-    # Part name -> 4x4 matrix from the flat sheet (x, y in mm, z up through the thickness) to
-    # the assembled product, when the program places parts (`Place`); else None
-    placement = None
-    # Part name -> its `Bend`s on the sheet, [(at mm, angle rad, inside radius mm)] (bends_of)
-    bends = {}
-
-    @property
-    def circles(self) -> list[tuple[float, float, float]]:
-        """Every circle of the solved model's outlines, absolute: (cx, cy, r) in mm."""
-        if self.exact is None:
-            return []
-        return [c[1:] for c in self.exact.carriers if c[0] == "C"]
-
-    def bounds(self):
-        xs, ys = [], []
-        for p in self.parts:
-            if not p.shape.is_empty():
-                b = p.shape.bounds()
-                xs += [b[0], b[2]]
-                ys += [b[1], b[3]]
-        for _, pl in self.lines:
-            if len(pl):
-                xs += [pl[:, 0].min(), pl[:, 0].max()]
-                ys += [pl[:, 1].min(), pl[:, 1].max()]
-        if not xs:
-            return (0.0, 0.0, 1.0, 1.0)
-        return (min(xs), min(ys), max(xs), max(ys))
 
 
 class Renderer:
@@ -212,6 +88,7 @@ class Renderer:
         self.spline_source: dict = {}        # CubicSpline -> the Spline geometry drawn as it
         self.through_paths: list = []        # (geometry, exact segments) of through-cuts
         self.through: list = []
+        self.sheet_cuts: list = []           # (geometry, its cut, [N x 2 polylines, mm])
         self.slit_shapes: dict = {}
         self.split: set = set()
 
@@ -788,26 +665,28 @@ class Renderer:
         out.strokes.append((style, ("arc", np.array(seg.center), seg.radius, seg.start_angle,
                                     seg.end_angle), g))
 
-    def draw_lines(self, g: Geometry, out: Drawing) -> None:
+    def draw_lines(self, g: Geometry, out: Drawing, style: str = "drawing") -> None:
+        """The lines of a drawing's geometry ``g`` as exact strokes of ``style`` (``drawing``:
+        engraved; ``cut``: a sheet-level cut, :meth:`sheet_cut`) and as polylines."""
         if g.kind == "Drawing2D":
             loops, paths = self.drawing2d(g)
             for lp in loops:
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))
                 pl = lp.points()
-                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
-                out.strokes.append(("drawing", ("poly", pl, lp), g))
+                out.lines.append((style, np.vstack([pl, pl[:1]])))
+                out.strokes.append((style, ("poly", pl, lp), g))
             for segs in paths:
                 for seg in segs:
-                    self._stroke_segment(seg, "drawing", g, out)
+                    self._stroke_segment(seg, style, g, out)
             return
         if g.kind == "Intersect" and not g.closed:
             for seg in self.clipped(g):
-                self._stroke_segment(seg, "drawing", g, out)
+                self._stroke_segment(seg, style, g, out)
             return
         if g.kind in ("Line", "Arc", "Spline", "Bezier", "EllipticArc") or (g.kind == "Polyline" and not g.closed):
-            out.lines.append(("drawing", self.curve(g)))
-            self.stroke(g, "drawing", out)
+            out.lines.append((style, self.curve(g)))
+            self.stroke(g, style, out)
         elif g.kind == "Text":
             p = self.P(g.points["position"])
             along = g.data.get("along")
@@ -821,8 +700,8 @@ class Renderer:
             if segs:      # every stroke moved to the position in one array operation
                 ab = p + np.asarray(segs, dtype=float)          # k x 2 (ends) x 2 (x, y)
                 for pts in ab:
-                    out.lines.append(("drawing", pts))
-                    out.strokes.append(("drawing", ("line", pts[0], pts[1]), g))
+                    out.lines.append((style, pts))
+                    out.strokes.append((style, ("line", pts[0], pts[1]), g))
         elif g.kind == "Point":
             return
         elif g.kind == "Circle":
@@ -831,16 +710,16 @@ class Renderer:
             circle = Circle((float(c[0]), float(c[1])), r)
             self.exact.carrier_id(carrier(circle))
             pts = Loop([circle]).points()
-            out.lines.append(("drawing", np.vstack([pts, pts[:1]])))
-            out.strokes.append(("drawing", ("circle", c, r), g))
+            out.lines.append((style, np.vstack([pts, pts[:1]])))
+            out.strokes.append((style, ("circle", c, r), g))
         else:
             lp = self.outline(g)
             if lp is not None and lp.segments:
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))
                 pl = lp.points()
-                out.lines.append(("drawing", np.vstack([pl, pl[:1]])))
-                out.strokes.append(("drawing", ("poly", pl, lp), g))
+                out.lines.append((style, np.vstack([pl, pl[:1]])))
+                out.strokes.append((style, ("poly", pl, lp), g))
 
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
@@ -923,8 +802,28 @@ class Renderer:
                 self.drawing(c, out)
             elif c.kind == "assembly":
                 self.assembly(c, out)
+            elif c.kind == "cut":           # a sheet-level cut
+                self.sheet_cut(c, out)
             else:
                 self.part(c, out)
+
+    def sheet_cut(self, c: Structure, out: Drawing) -> None:
+        """A ``cut`` directly in an assembly, a sheet-level cut (language.md 2.5): each curve,
+        open or closed, is cut along as drawn, in no part (``cut`` strokes whose part is "");
+        each curve's polylines go to :attr:`sheet_cuts` for the check that it crosses no part
+        (W0525, :func:`..checks.through.check_sheet_cuts`)."""
+        for g in c.geometry:
+            self.current = c
+            self.tick(c)
+            if g.construction:
+                self.construct(g, out)
+                continue
+            mark = len(out.lines)
+            self.draw_lines(g, out, "cut")
+            if len(out.lines) > mark:
+                self.sheet_cuts.append((g, c, [pts for _, pts in out.lines[mark:]]))
+        for k in c.children.values():        # only cuts (E0125)
+            self.sheet_cut(k, out)
 
     def drawing(self, s: Structure, out: Drawing) -> None:
         for g in s.geometry:
@@ -1101,6 +1000,7 @@ class Renderer:
         out.exact = self.exact
         out.empty_faces = self.empty_faces
         out.through, out.slit_shapes = self.through, self.slit_shapes
+        out.sheet_cuts = self.sheet_cuts
         out.split = frozenset(self.split)
         out.shape_errors = self.shape_errors
         out.spline_source = self.spline_source
