@@ -18,6 +18,7 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from .model import Drawing, Note, Outline, Path
+from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch, _runs, _split_where_crossed
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -267,10 +268,6 @@ def _probe(segs) -> tuple[float, float]:
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
 
-NOTCH_AREA = 0.25   # a loop drawn across a larger one's edge is its notch: at most this of its area
-NOTCH_SHARE = 0.1   # ... with at least this share of its own area inside it
-
-
 def _containers(loops: list, deadline=None) -> list[list[int]]:
     """For each loop (a list of segments) the indices of the other loops it lies inside (its
     probe point inside their polygon, and their area larger than its own: two parts drawn
@@ -306,45 +303,6 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
                          j not in out[i]]
     _notches(out, across, polys, areas, deadline)
     return out
-
-
-def _notches(out: list, across: dict, polys: list, areas: list, deadline=None) -> None:
-    """Make each loop drawn across the edge of a larger part or island a hole of it, in
-    ``out`` (:func:`_containers`' lists, changed in place): a loop ``i`` (not a whole circle)
-    of at most :data:`NOTCH_AREA` of the area of a loop ``j`` whose outline it crosses, with at
-    least :data:`NOTCH_SHARE` of its own area inside ``j`` (Manifold's 2D intersection of the
-    sampled polygons), that its probe point put beside ``j`` (its containers some of ``j``'s),
-    gets ``j``'s containers and ``j``: Boxes.py's WallChiselHolder slots across a plate's
-    edge are the plate's notches wherever their probe falls (the outer rest of their outline
-    is cut by :func:`_outside_remainders`).  The size and share keep apart what is not a
-    notch: parts drawn touching, their shared edges overlapping by a burn correction
-    (UnevenHeightBox's walls: 1.6 % of the smaller, and 0.4 to 2.7 times its area), stay
-    parts.  ``j`` must be a part or island (inside an even number of loops): a loop across
-    a hole's edge is left as its probe puts it.  ``across``: loop -> the candidate ``j``."""
-    from ..geometry.drawing2d import _inside_many
-    import manifold3d as mf
-    import numpy as np
-    found = {}
-    for i, cand in across.items():
-        H = polys[i]
-        lo, hi = H.min(axis=0), H.max(axis=0) if len(H) else (None, None)
-        for j in cand:
-            P = polys[j]            # a corner of one inside the other: they may overlap
-            Q = P[np.all((P >= lo) & (P <= hi), axis=1)] if len(H) >= 3 else P[:0]
-            if len(H) < 3 or not (_inside_many(H[:, 0], H[:, 1], P).any() or
-                                  _inside_many(Q[:, 0], Q[:, 1], H).any()):
-                continue
-            if deadline is not None:
-                deadline.check("finding the holes that cross their part's edge")
-            share = (mf.CrossSection([H.tolist()], mf.FillRule.NonZero) ^
-                     mf.CrossSection([polys[j].tolist()], mf.FillRule.NonZero)).area()
-            if share >= NOTCH_SHARE * areas[i]:
-                found.setdefault(i, []).append((-share, j))
-    for i in sorted(found, key=lambda k: -areas[k]):    # a larger loop's own place first
-        for _, j in sorted(found[i]):                   # the largest share first
-            if len(out[j]) % 2 == 0 and set(out[i]) <= set(out[j]):
-                out[i] = out[j] + [j]
-                break
 
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
@@ -1004,16 +962,20 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
             items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
                           Drawing(unit=d.unit, paths=notch, paths_cut=True)))
-            n = len(notch)
+            edge = [p for p in notch if p.source == EDGE_ACROSS]
+            n, e = len(notch) - len(edge), len(edge)
+            ln = sum(_length(p.segments) for p in edge)
+            also = (f", and {e} piece{'s' if e != 1 else ''} of the part's edge drawn across "
+                    f"the notch ({ln:.6g} mm)") if e else ""
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
                                        f"{'s' if n != 1 else ''} of `{source}` on a cut role "
                                        f"drawn across {'their' if n != 1 else 'its'} part's "
                                        f"edge {'lie' if n != 1 else 'lies'} outside the part "
-                                       f"({sum(_length(p.segments) for p in notch):.6g} mm): "
-                                       f"the part keeps the notch, and "
-                                       f"{'they are' if n != 1 else 'it is'} written as the "
-                                       f"sheet-level cut `{items[-1][1]}` (the laser cuts "
-                                       f"along {'them' if n != 1 else 'it'})"))
+                                       f"({sum(_length(p.segments) for p in notch) - ln:.6g} "
+                                       f"mm){also}: the part keeps the "
+                                       f"notch, and {'they are' if n + e != 1 else 'it is'} "
+                                       f"written as the sheet-level cut `{items[-1][1]}` (the "
+                                       f"laser cuts along {'them' if n + e != 1 else 'it'})"))
     return items
 
 
@@ -1064,35 +1026,21 @@ def _polygons_overlap(P, Q) -> bool:
     return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
 
 
-def _polygons_touch(P, Q, reach: float = 1e-3) -> bool:
-    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) that do not overlap run
-    along one another for more than :data:`~.model.GAP_NOTE` (0.5 mm): the area of ``Q``
-    within ``reach`` mm of ``P`` (``P`` offset by it, square joins: Manifold's 2D booleans),
-    divided by ``reach``, is the length of the edge they share; parts that touch at a corner
-    share none."""
-    import manifold3d as mf
-
-    from .model import GAP_NOTE
-    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero).offset(reach, mf.JoinType.Square)
-    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
-    return (a ^ b).area() > GAP_NOTE * reach
-
-
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
-    """The pieces of ``d``'s holes that lie outside the loop they are holes of: a hole drawn
-    across its part's edge (Boxes.py's WallChiselHolder slots) is the part's notch, and the
-    rest of its loop, in no part, is still asked to be cut.  Each hole outline (a loop inside
-    an odd number of others) that has sampled points outside its owner is cut exactly
-    (:func:`~.chain._split_at`, each piece on its own carrier) at the points where it crosses
-    the owner's edge; the runs of pieces whose middles lie outside the owner are returned as
-    open paths (mm), in the hole's order, but for those no longer than
-    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are.
-    ``inside``: :func:`_containers` of :func:`_loops_of`."""
+    """The pieces of ``d``'s holes that lie outside the loop they are holes of, and the
+    pieces of that loop's edge inside them: a hole drawn across its part's edge (Boxes.py's
+    WallChiselHolder slots) is the part's notch, and the rest of its loop, in no part, is
+    still asked to be cut, as is the part's edge drawn across the notch.  Each hole outline
+    (a loop inside an odd number of others) that has sampled points outside its owner is
+    cut exactly (:func:`_split_where_crossed`) at the points where it crosses the owner's
+    edge, and the owner's edge where it crosses the hole; the runs of the hole's pieces
+    whose middles lie outside the owner, then of the owner's pieces whose middles lie inside
+    the hole, are returned as open paths (mm), in their loop's order, but for those no
+    longer than :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are
+    left as they are.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
 
-    from ..geometry.curves import carrier, crossings
     from ..geometry.drawing2d import _inside_many
-    from .chain import _distinct, _piece_length, _split_at
     from .model import GAP_NOTE
     loops = _loops_of(d)
     if len(loops) < 2:
@@ -1121,45 +1069,17 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
             continue            # no edge of the owner near it: inside, as its probe is
         if _inside_many(H[:, 0], H[:, 1], P).all():
             continue                                   # every sample inside: a plain hole
-        pieces = []
-        for s in segs:
-            hits = []
-            for t in own:
-                for x in crossings(carrier(s), carrier(t)):
-                    if _split_at(t, x) is not None or min(math.dist(x, t.start),
-                                                          math.dist(x, t.end)) <= 1e-9:
-                        hits.append(x)
-            hits = [x for x in _distinct(hits) if min(math.dist(x, s.start),
-                                                      math.dist(x, s.end)) > 1e-9]
-
-            def along(x, s=s) -> float:     # how far along s the hit lies
-                cut = _split_at(s, x)
-                return _piece_length(cut[0]) if cut is not None else math.inf
-            hits.sort(key=along)
-            rest = s
-            for x in hits:
-                cut = _split_at(rest, x)
-                if cut is None:
-                    continue
-                pieces.append(cut[0])
-                rest = cut[1]
-            pieces.append(rest)
-        flags = [not _inside(_probe([p]), P) for p in pieces]
-        if all(flags) or not any(flags):
+        pieces, _ = _split_where_crossed(segs, own)
+        runs = [(r, "the part of a hole outside its part")
+                for r in _runs(pieces, [not _inside(_probe([p]), P) for p in pieces])]
+        if not runs:
             continue
-        k = flags.index(False)                         # start the walk at a piece inside
-        runs: list = []
-        cur: list = []
-        for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
-            if f:
-                cur.append(p)
-            elif cur:
-                runs.append(cur)
-                cur = []
-        if cur:
-            runs.append(cur)
+        # the owner's edge across the notch (split where its segments meet the hole's box)
+        edge, near = _split_where_crossed(own, segs, (lo[0], lo[1], hi[0], hi[1]))
+        runs += [(r, EDGE_ACROSS)
+                 for r in _runs(edge, [n and _inside(_probe([p]), H)
+                                       for p, n in zip(edge, near)])]
         # a run within the gap a laser closes anyway (Boxes.py's 0.1 mm burn-correction
         # overlaps, Lamp's and SmallPartsTray2's) is no cut of its own
-        out += [Path(r, "the part of a hole outside its part") for r in runs
-                if _length(r) > GAP_NOTE]
+        out += [Path(r, why) for r, why in runs if _length(r) > GAP_NOTE]
     return out
