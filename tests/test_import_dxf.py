@@ -436,3 +436,6 @@ def test_an_import_parses_the_dxf_once_and_keeps_ezdxfs_log_note(monkeypatch):
     parses.clear()          # each import its own parse (nothing kept between them)
     import_drawing(text.encode(), "dup.dxf")
     assert parses == ["dup.dxf"]
+    parses.clear()          # a Drawing2D's read with roles: its two roles, one parse
+    read_drawing(text.encode(), "dup.dxf", engrave="MARKS")
+    assert parses == ["dup.dxf"]

@@ -114,7 +114,10 @@ def one_parse():
     of it, and ezdxf's parse is most of the import's time (a 20,000-hole panel: 3.5 s a
     parse, three of them).  The document is only read, never changed; ezdxf's log lines of
     the parse are said again on each later read (for the ``W0130`` note of the read that
-    keeps them)."""
+    keeps them).  Inside another, the outer one's."""
+    if _PARSED.get() is not None:
+        yield
+        return
     token = _PARSED.set({})
     try:
         yield
