@@ -17,6 +17,7 @@ import math
 import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from .hole_cuts import inner_rests, polygons_overlap
 from .model import Drawing, Note, Outline, Path
 
 
@@ -890,6 +891,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
             else None
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
+        inner = inner_rests(_loops_of(d), inside, deadline) if inside is not None else []
         crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
@@ -930,9 +932,12 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                     "are notes"))
         else:
             items.append((kind, _ident(layer or "part", used), d))
-        if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
+        if notch or inner:  # the rests of holes across their part's edge or in another hole
             items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
-                          Drawing(unit=d.unit, paths=notch, paths_cut=True)))
+                          Drawing(unit=d.unit, paths=notch + inner, paths_cut=True)))
+            if inner:
+                _say_inner(notes, source, inner, items[-1][1])
+        if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
             n = len(notch)
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
                                        f"{'s' if n != 1 else ''} of `{source}` on a cut role "
@@ -944,6 +949,20 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                        f"sheet-level cut `{items[-1][1]}` (the laser cuts "
                                        f"along {'them' if n != 1 else 'it'})"))
     return items
+
+
+def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
+    """The ``W0130`` of the pieces ``inner`` of holes drawn overlapping that lie inside
+    another hole of their part (:func:`~.hole_cuts.inner_rests`), written as the sheet-level
+    cut ``name``."""
+    n, s = len(inner), "s" if len(inner) != 1 else ""
+    notes.append(Note("W0130", f"{n} piece{s} of holes of `{source}` on a cut role drawn "
+                               f"overlapping {'lie' if n != 1 else 'lies'} inside another "
+                               f"hole of {'their' if n != 1 else 'its'} part "
+                               f"({sum(_length(p.segments) for p in inner):.6g} mm): the part "
+                               f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
+                               f" written as the sheet-level cut `{name}` (the laser cuts "
+                               f"along {'them' if n != 1 else 'it'})"))
 
 
 def _loops_of(d: Drawing) -> list:
@@ -973,20 +992,9 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
             a, b = box[i], box[j]
             if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
                 continue
-            if _polygons_overlap(polys[i], polys[j]):
+            if polygons_overlap(polys[i], polys[j]):
                 pairs += 1
     return pairs
-
-
-def _polygons_overlap(P, Q) -> bool:
-    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) share an area: their
-    intersection (Manifold's 2D booleans) is larger than 1e-6 of the smaller (parts that only
-    touch, or run along one another, do not overlap)."""
-    import manifold3d as mf
-    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
-    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
-    both = (a ^ b).area()
-    return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
