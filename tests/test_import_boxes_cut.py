@@ -403,6 +403,8 @@ def test_the_arcs_of_overlapping_holes_inside_the_opening_are_cut():
     c = compile_source(text, "gears.aidl")
     assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
     assert "hole hole2 {" in text and "hole hole3 {" in text       # holes stay holes
+    # one opening is meant: said, so no W0508 (two holes that cut one opening)
+    assert "AllowOverlap(hole2, hole3)" in text and "W0508" not in [d.code for d in c.sink.items]
     a1, a2 = math.atan2(12, 16), math.atan2(12, 9)      # half the angle each arc spans
     inner = {20.0: 2 * a1 * 20, 15.0: 2 * a2 * 15}      # the arc of each inside the other
     assert any(f"2 pieces of holes of `gears.svg` on a cut role drawn overlapping lie inside "

@@ -42,32 +42,34 @@ def overlapping_holes(loops: list, inside: list, deadline=None) -> tuple[dict, d
             holes.setdefault(owner[0], []).append(i)
     poly: dict = {}
     partners: dict = {}
+
+    def polygon(i):
+        if i not in poly:
+            poly[i] = np.asarray(Loop(list(loops[i])).points(), dtype=float)
+        return poly[i]
     for group in holes.values():
         if len(group) < 2:
             continue
         if deadline is not None:
             deadline.check("finding the holes that overlap")
-        for i in group:
-            poly[i] = np.asarray(Loop(list(loops[i])).points(), dtype=float)
-        keys = [i for i in group if len(poly[i]) >= 3]
-        if len(keys) < 2:
-            continue
-        box = np.array([(poly[i][:, 0].min(), poly[i][:, 1].min(), poly[i][:, 0].max(),
-                         poly[i][:, 1].max()) for i in keys])
+        # boxes holding the loops (no sampling): the polygons only of holes whose boxes meet
+        box = np.array([_loop_box(loops[i]) for i in group])
         order = np.argsort(box[:, 0], kind="stable")
         x0 = box[order, 0]
         for a, ia in enumerate(order):
             for ib in order[a + 1:np.searchsorted(x0, box[ia, 2], "right")]:
                 if box[ib, 1] > box[ia, 3] or box[ia, 1] > box[ib, 3]:
                     continue
-                i, j = sorted((keys[ia], keys[ib]))
-                if polygons_overlap(poly[i], poly[j]):
+                i, j = sorted((group[ia], group[ib]))
+                P, Q = polygon(i), polygon(j)
+                if len(P) >= 3 and len(Q) >= 3 and polygons_overlap(P, Q):
                     partners.setdefault(i, []).append(j)
                     partners.setdefault(j, []).append(i)
     return partners, poly
 
 
-def inner_rests(loops: list, inside: list, deadline=None) -> list[Path]:
+def inner_rests(loops: list, inside: list, deadline=None,
+                pairs: set | None = None) -> list[Path]:
     """The pieces of the holes among ``loops`` (closed loops: lists of segments, mm) that
     lie inside another hole of the same part, as open paths (mm).  Each hole that shares an
     area with other holes of its part (:func:`overlapping_holes`; ``inside`` as there) is cut
@@ -75,9 +77,15 @@ def inner_rests(loops: list, inside: list, deadline=None) -> list[Path]:
     whose middles lie inside one of those holes are returned in the hole's order, but for
     those no longer than :data:`~.model.GAP_NOTE` (a burn-correction overlap).  A hole that
     crosses none of them (one drawn twice) gives nothing.  ``deadline``: a
-    :class:`~aidl_lang.limits.Deadline` checked per part and per hole, or None."""
+    :class:`~aidl_lang.limits.Deadline` checked per part and per hole, or None.  ``pairs``:
+    a set to which each pair of overlapping holes is added, as the frozenset of the ids of
+    their loops' first segments (so that the writer can say that the two may cut one
+    opening, whichever part the loops are written in)."""
     from ..geometry.drawing2d import _inside
     partners, poly = overlapping_holes(loops, inside, deadline)
+    if pairs is not None:
+        pairs.update(frozenset((id(loops[i][0]), id(loops[j][0])))
+                     for i, js in partners.items() for j in js)
     out: list[Path] = []
     for i in sorted(partners):
         if deadline is not None:
@@ -116,6 +124,13 @@ def _middle(s) -> tuple[float, float]:
         from ..geometry.spline import bez_at
         return bez_at(s.spans[len(s.spans) // 2], 0.5)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+
+
+def _loop_box(segs: list) -> tuple[float, float, float, float]:
+    """A box (mm) holding the loop ``segs``: the union of its segments' :func:`_hull_box`."""
+    bs = [_hull_box(t) for t in segs]
+    return (min(b[0] for b in bs), min(b[1] for b in bs), max(b[2] for b in bs),
+            max(b[3] for b in bs))
 
 
 def _hull_box(s) -> tuple[float, float, float, float]:

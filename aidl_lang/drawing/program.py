@@ -153,6 +153,7 @@ class _Writer:
         self.crossed = 0            # loops on a cut role that cross themselves: engraved
         self.compact = False        # a big drawing: repeated loops as loops, line loops
         self.rel = None             # (x, y): points written relative to `p` (a copy's place)
+        self.overlaps: set = set()  # holes drawn overlapping on a cut role (hole_cuts)
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -315,6 +316,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
                 if owner:
                     island_holes.setdefault(owner[0], []).append(i)
     deep = {i for v in island_holes.values() for i in v}
+    named: list = []            # (its first segment's id, name) of each hole written alone
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -329,12 +331,21 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         elif k - 1 in deep:             # written in its island's solid (below)
             pass
         elif dep % 2 == 1:
-            _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
+            hole = _ident(f"hole{k}", used)
+            _loop(w, depth + 1, segs, "", hole)
+            if not places:
+                named.append((id(segs[0]), hole))
         else:
             islands.append((segs, k))
         if places:
             w.rel, depth = None, depth - 1
             w.emit(depth + 1, "}")
+    # holes drawn overlapping on a cut role (their inner pieces a sheet-level cut): one opening
+    if w.overlaps and named:
+        order = {ident: (n, hole) for n, (ident, hole) in enumerate(named)}
+        for a, b in sorted(sorted((order[i] for i in pair)) for pair in w.overlaps
+                           if all(i in order for i in pair)):
+            w.emit(depth + 1, f"AllowOverlap({a[1]}, {b[1]})")
     # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
@@ -710,7 +721,7 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
         w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
                   "a `for` over their places)")
     w.emit(0, "units mm")
-    items = _layer_items(layers, parts, deadline, source, w.notes)
+    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     multi = len(items) > 1
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -875,7 +886,8 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     return text, notes + more
 
 
-def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> list:
+def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
+                 overlaps: set | None = None) -> list:
     """``[(kind, name, drawing)]``: each layer's drawing as the structure it is written as
     (``drawing`` for an ENGRAVE layer or text alone, else ``solid``), with unique names; with
     ``parts``, a solid layer's outer loops each a solid of its own (:func:`_split_parts`) and
@@ -891,7 +903,8 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
             else None
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
-        inner = inner_rests(_loops_of(d), inside, deadline) if inside is not None else []
+        inner = inner_rests(_loops_of(d), inside, deadline, overlaps) \
+            if inside is not None else []
         crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
@@ -932,12 +945,9 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                     "are notes"))
         else:
             items.append((kind, _ident(layer or "part", used), d))
-        if notch or inner:  # the rests of holes across their part's edge or in another hole
-            items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
-                          Drawing(unit=d.unit, paths=notch + inner, paths_cut=True)))
-            if inner:
-                _say_inner(notes, source, inner, items[-1][1])
         if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
+            items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+                          Drawing(unit=d.unit, paths=notch, paths_cut=True)))
             n = len(notch)
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
                                        f"{'s' if n != 1 else ''} of `{source}` on a cut role "
@@ -948,6 +958,13 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                        f"{'they are' if n != 1 else 'it is'} written as the "
                                        f"sheet-level cut `{items[-1][1]}` (the laser cuts "
                                        f"along {'them' if n != 1 else 'it'})"))
+        if inner:       # the pieces of holes drawn overlapping inside another: on the sheet
+            if notch:                   # with the outer rests, in their sheet-level cut
+                items[-1][2].paths = notch + inner
+            else:
+                items.append(("solid", _ident(f"{layer or 'sheet'}_cuts", used),
+                              Drawing(unit=d.unit, paths=inner, paths_cut=True)))
+            _say_inner(notes, source, inner, items[-1][1])
     return items
 
 
