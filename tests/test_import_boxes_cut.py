@@ -405,6 +405,13 @@ def test_the_arcs_of_overlapping_holes_inside_the_opening_are_cut():
     assert "hole hole2 {" in text and "hole hole3 {" in text       # holes stay holes
     # one opening is meant: said, so no W0508 (two holes that cut one opening)
     assert "AllowOverlap(hole2, hole3)" in text and "W0508" not in [d.code for d in c.sink.items]
+    # whole circles (SVG <circle>s) are cut the same: arcs from their crossings
+    circles = _svg([("M 10 10 H 110 V 110 H 10 Z", "rgb(0,0,0)")]).replace(
+        b"</g>", b'<circle cx="60" cy="75" r="20" stroke="rgb(0,0,255)" />'
+                 b'<circle cx="60" cy="50" r="15" stroke="rgb(0,0,255)" /></g>')
+    text2, _ = import_drawing(circles, "gears.svg", roles="laser")
+    assert "Circle(center=(60, -75), radius=20)" in text2
+    assert text2[text2.index("sheet_cuts"):] == text[text.index("sheet_cuts"):]
     a1, a2 = math.atan2(12, 16), math.atan2(12, 9)      # half the angle each arc spans
     inner = {20.0: 2 * a1 * 20, 15.0: 2 * a2 * 15}      # the arc of each inside the other
     assert any(f"2 pieces of holes of `gears.svg` on a cut role drawn overlapping lie inside "
