@@ -18,6 +18,7 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
+from .hole_cuts import inner_rests, polygons_overlap
 from .model import Drawing, Note, Outline, Path
 
 
@@ -153,6 +154,7 @@ class _Writer:
         self.crossed = 0            # loops on a cut role that cross themselves: engraved
         self.compact = False        # a big drawing: repeated loops as loops, line loops
         self.rel = None             # (x, y): points written relative to `p` (a copy's place)
+        self.overlaps: set = set()  # holes drawn overlapping on a cut role (hole_cuts)
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -330,6 +332,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
                 if owner:
                     island_holes.setdefault(owner[0], []).append(i)
     deep = {i for v in island_holes.values() for i in v}
+    named: list = []            # (its first segment's id, name) of each hole written alone
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -344,12 +347,21 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         elif k - 1 in deep:             # written in its island's solid (below)
             pass
         elif dep % 2 == 1:
-            _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
+            hole = _ident(f"hole{k}", used)
+            _loop(w, depth + 1, segs, "", hole)
+            if not places:
+                named.append((id(segs[0]), hole))
         else:
             islands.append((segs, k))
         if places:
             w.rel, depth = None, depth - 1
             w.emit(depth + 1, "}")
+    # holes drawn overlapping on a cut role (their inner pieces a sheet-level cut): one opening
+    if w.overlaps and named:
+        order = {ident: (n, hole) for n, (ident, hole) in enumerate(named)}
+        for a, b in sorted(sorted((order[i] for i in pair)) for pair in w.overlaps
+                           if all(i in order for i in pair)):
+            w.emit(depth + 1, f"AllowOverlap({a[1]}, {b[1]})")
     # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
@@ -737,7 +749,7 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
         w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
                   "a `for` over their places)")
     w.emit(0, "units mm")
-    items = _layer_items(layers, parts, deadline, source, w.notes)
+    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -908,7 +920,8 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     return text, notes + more
 
 
-def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> list:
+def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
+                 overlaps: set | None = None) -> list:
     """``[(kind, name, drawing)]``: each layer's drawing as the structure it is written as
     (``drawing`` for an ENGRAVE layer or text alone, else ``solid``), with unique names; with
     ``parts``, a solid layer's outer loops each a solid of its own (:func:`_split_parts`) and
@@ -924,6 +937,8 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
             else None
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
+        inner = inner_rests(_loops_of(d), inside, deadline, overlaps) \
+            if inside is not None else []
         crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
@@ -978,7 +993,28 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                        f"{'they are' if n != 1 else 'it is'} written as the "
                                        f"sheet-level cut `{items[-1][1]}` (the laser cuts "
                                        f"along {'them' if n != 1 else 'it'})"))
+        if inner:       # the pieces of holes drawn overlapping inside another: on the sheet
+            if notch:                   # with the outer rests, in their sheet-level cut
+                items[-1][2].paths = notch + inner
+            else:
+                items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
+                              Drawing(unit=d.unit, paths=inner, paths_cut=True)))
+            _say_inner(notes, source, inner, items[-1][1])
     return items
+
+
+def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
+    """The ``W0130`` of the pieces ``inner`` of holes drawn overlapping that lie inside
+    another hole of their part (:func:`~.hole_cuts.inner_rests`), written as the sheet-level
+    cut ``name``."""
+    n, s = len(inner), "s" if len(inner) != 1 else ""
+    notes.append(Note("W0130", f"{n} piece{s} of holes of `{source}` on a cut role drawn "
+                               f"overlapping {'lie' if n != 1 else 'lies'} inside another "
+                               f"hole of {'their' if n != 1 else 'its'} part "
+                               f"({sum(_length(p.segments) for p in inner):.6g} mm): the part "
+                               f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
+                               f" written as the sheet-level cut `{name}` (the laser cuts "
+                               f"along {'them' if n != 1 else 'it'})"))
 
 
 def _loops_of(d: Drawing) -> list:
@@ -1008,20 +1044,9 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
             a, b = box[i], box[j]
             if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
                 continue
-            if _polygons_overlap(polys[i], polys[j]):
+            if polygons_overlap(polys[i], polys[j]):
                 pairs += 1
     return pairs
-
-
-def _polygons_overlap(P, Q) -> bool:
-    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) share an area: their
-    intersection (Manifold's 2D booleans) is larger than 1e-6 of the smaller (parts that only
-    touch, or run along one another, do not overlap)."""
-    import manifold3d as mf
-    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
-    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
-    both = (a ^ b).area()
-    return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
