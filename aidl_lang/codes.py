@@ -911,7 +911,8 @@ transform with no area (an SVG `matrix(a,b,c,d,e,f)` with a*d = b*c or a scale o
 INSERT of x or y scale 0) is not drawn, named by its id and line (SVG) or handle and line
 (DXF); any other transform is applied exactly.  On a cut role, a hole drawn across its
 part's edge is the part's notch, and the rest of its loop (outside the part) is a
-sheet-level cut, counted with its length.
+sheet-level cut, counted with its length; so are the pieces of holes of one part drawn
+overlapping that lie inside another of them (the opening is their union).
 
     board = Drawing2D("board.dxf")     # warning: 2 HATCH entities of `board.dxf` skipped
 """),

@@ -410,3 +410,32 @@ def test_ezdxf_log_lines_become_notes_not_terminal_output(tmp_path):
     assert not [ln for ln in lines if ln.startswith("Found non-unique")], r.stderr
     assert any(ln.startswith("dup.dxf: warning[W0130]: ezdxf, reading `dup.dxf`, said: "
                              "\"Found non-unique entity handle") for ln in lines), r.stderr
+
+
+def test_an_import_parses_the_dxf_once_and_keeps_ezdxfs_log_note(monkeypatch):
+    """`aidl import` parsed a DXF three times (its layer names, then each role of each layer
+    read it again): a 20,000-hole panel spent 10.6 of its 15 s budget in ezdxf's parser and
+    was refused.  Now once per import; ezdxf's log lines of that parse still make the note
+    of the read (said again on each later read)."""
+    from aidl_lang.drawing import dxf as dxf_mod
+    from aidl_lang.drawing.program import import_drawing
+    doc, msp = new()
+    a = msp.add_line((0, 0), (10, 0), dxfattribs={"layer": "CUT"})
+    msp.add_line((10, 0), (10, 10), dxfattribs={"layer": "CUT"})
+    msp.add_circle((5, 5), 2, dxfattribs={"layer": "HOLES"})
+    b = msp.add_line((0, 20), (10, 20), dxfattribs={"layer": "MARKS"})
+    text = text_of(doc).decode().replace(f"\n  5\n{b.dxf.handle}\n", f"\n  5\n{a.dxf.handle}\n")
+    parses = []
+    real = dxf_mod._parse_dxf
+    monkeypatch.setattr(dxf_mod, "_parse_dxf", lambda data, name: parses.append(name) or
+                        real(data, name))
+    program, notes = import_drawing(text.encode(), "dup.dxf", engrave="MARKS")
+    assert parses == ["dup.dxf"]
+    assert sum("Found non-unique entity handle" in n.message for n in notes) == 1, notes
+    assert "Circle(center=(5, 5), radius=2)" in program
+    parses.clear()          # each import its own parse (nothing kept between them)
+    import_drawing(text.encode(), "dup.dxf")
+    assert parses == ["dup.dxf"]
+    parses.clear()          # a Drawing2D's read with roles: its two roles, one parse
+    read_drawing(text.encode(), "dup.dxf", engrave="MARKS")
+    assert parses == ["dup.dxf"]

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import io
 import math
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 from ..geometry.curves import Arc, Circle, Line, elliptic_arc
 from ..limits import MAX_EXTENT
@@ -101,10 +103,50 @@ class _EzdxfLog:
         self.log.propagate = self.saved
 
 
+# within :func:`one_parse`: id(data) -> (data, its document, ezdxf's log lines of the parse)
+_PARSED: ContextVar[dict | None] = ContextVar("aidl_dxf_parsed", default=None)
+
+
+@contextmanager
+def one_parse():
+    """Within it, the DXF of one ``data`` (the same bytes object) is parsed once: ``aidl
+    import`` reads a file for its layer names, then each layer, and each role (cut, engrave)
+    of it, and ezdxf's parse is most of the import's time (a 20,000-hole panel: 3.5 s a
+    parse, three of them).  The document is only read, never changed; ezdxf's log lines of
+    the parse are said again on each later read (for the ``W0130`` note of the read that
+    keeps them).  Inside another, the outer one's."""
+    if _PARSED.get() is not None:
+        yield
+        return
+    token = _PARSED.set({})
+    try:
+        yield
+    finally:
+        _PARSED.reset(token)
+
+
 def _open_dxf(data: bytes, name: str):
     """The ezdxf document of the DXF ``data`` (ASCII or binary, read from these bytes: the
-    file is opened once): ezdxf's normal loader, its recover mode when that fails.  Raises
-    :class:`DrawingError` ``E0130``."""
+    file is opened once; within :func:`one_parse` also parsed once): ezdxf's normal loader,
+    its recover mode when that fails.  Raises :class:`DrawingError` ``E0130``."""
+    parsed = _PARSED.get()
+    if parsed is None:
+        return _parse_dxf(data, name)
+    hit = parsed.get(id(data))
+    if hit is not None and hit[0] is data:
+        import logging
+        log = logging.getLogger("ezdxf")
+        for line in hit[2]:
+            log.warning("%s", line)
+        return hit[1]
+    with _EzdxfLog() as log:            # beside the caller's: the lines to say again
+        doc = _parse_dxf(data, name)
+    parsed[id(data)] = (data, doc, log.lines)
+    return doc
+
+
+def _parse_dxf(data: bytes, name: str):
+    """:func:`_open_dxf` without the sharing."""
     doc = _fast_dxf(data)
     if doc is not None:
         return doc

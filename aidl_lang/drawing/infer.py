@@ -1047,7 +1047,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     params = _Params()
     stats = _Stats()
     layers, moved = _hole_layers(layers)
-    items = _layer_items(layers, parts, deadline, source, w.notes)
+    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     items = _copies(items, deadline)
     items = _named_parts(pair_items(items, deadline) if parts else items)
     solids = sum(1 for it in items if it[0] == "solid")

@@ -12,7 +12,8 @@ NOTCH_SHARE = 0.1   # ... and at least this share of its own area inside it
 EDGE_ACROSS = "a part's edge across its notch"     # the source of such a piece of edge cut
 
 
-def _notches(out: list, across: dict, polys: list, areas: list, deadline=None) -> None:
+def _notches(out: list, across: dict, polys: list, loops: list, areas: list,
+             deadline=None) -> None:
     """Make each loop drawn across the edge of a larger part or island a hole of it, in
     ``out`` (:func:`~.program._containers`' lists, changed in place): a loop ``i`` (not a whole circle)
     of at most :data:`NOTCH_AREA` of the area of a loop ``j`` whose outline it crosses, with at
@@ -24,10 +25,13 @@ def _notches(out: list, across: dict, polys: list, areas: list, deadline=None) -
     notch: parts drawn touching, their shared edges overlapping by a burn correction
     (UnevenHeightBox's walls: 1.6 % of the smaller, and 0.4 to 2.7 times its area), stay
     parts.  ``j`` must be a part or island (inside an even number of loops): a loop across
-    a hole's edge is left as its probe puts it.  ``across``: loop -> the candidate ``j``."""
+    a hole's edge is left as its probe puts it.  ``across``: loop -> the candidate ``j``;
+    ``polys``: each loop's sampled polygon (None for a whole circle: sampled here when it is
+    a candidate), ``loops`` their segments, ``areas`` their areas (mm^2)."""
     import manifold3d as mf
     import numpy as np
 
+    from ..geometry.curves import Loop
     from ..geometry.drawing2d import _inside_many
     found: dict = {}
     for i, cand in across.items():
@@ -36,6 +40,8 @@ def _notches(out: list, across: dict, polys: list, areas: list, deadline=None) -
             continue
         lo, hi = H.min(axis=0), H.max(axis=0)
         for j in cand:
+            if polys[j] is None:
+                polys[j] = np.asarray(Loop(list(loops[j])).points(), dtype=float)
             P = polys[j]            # a corner of one inside the other: they may overlap
             Q = P[np.all((P >= lo) & (P <= hi), axis=1)]
             if not (_inside_many(H[:, 0], H[:, 1], P).any() or

@@ -17,6 +17,8 @@ import math
 import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ..geometry.drawing2d import _inside, _inside_many
+from .hole_cuts import inner_rests, polygons_overlap
 from .model import Drawing, Note, Outline, Path
 from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch, _runs, _split_where_crossed
 
@@ -153,6 +155,7 @@ class _Writer:
         self.crossed = 0            # loops on a cut role that cross themselves: engraved
         self.compact = False        # a big drawing: repeated loops as loops, line loops
         self.rel = None             # (x, y): points written relative to `p` (a copy's place)
+        self.overlaps: set = set()  # holes drawn overlapping on a cut role (hole_cuts)
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append("    " * depth + text)
@@ -243,18 +246,6 @@ class _Writer:
         return True
 
 
-def _inside(p, loop_pts) -> bool:
-    import numpy as np
-    x, y = p
-    P = loop_pts
-    X, Y = P[:, 0], P[:, 1]
-    X2, Y2 = np.roll(X, -1), np.roll(Y, -1)
-    cond = (Y > y) != (Y2 > y)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        xs = X + (y - Y) * (X2 - X) / (Y2 - Y)
-    return bool(np.count_nonzero(cond & (x < xs)) % 2)
-
-
 def _probe(segs) -> tuple[float, float]:
     s = segs[0]
     if isinstance(s, Circle):
@@ -273,35 +264,66 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     probe point inside their polygon, and their area larger than its own: two parts drawn
     overlapping, their joint's tabs interlocked, each have points inside the other, and
     neither is the other's hole): each probe is tested only against the loops whose box
-    holds it, so a sheet of 10 000 separate shapes takes a moment, not the hour that testing
-    every pair took.  A loop drawn across the edge of a part or island (:func:`_notches`)
-    is that loop's hole (its notch) whatever its probe point."""
+    holds it, found through a grid (:func:`~..output.part.nearby.box_pairs_between`), so a
+    sheet of 20,000 holes takes a moment (each probe against every box: 4.3 s).  A loop
+    drawn across the edge of a larger part or island (:func:`~.notches._notches`) is that
+    loop's hole (its notch) whatever its probe point."""
     import numpy as np
-    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
-    boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
-                      if len(P) else (np.inf, np.inf, -np.inf, -np.inf) for P in polys])
-    areas = [abs(float(np.dot(P[:, 0], np.roll(P[:, 1], -1)) -
-                       np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2 if len(P) >= 3 else 0.0
-             for P in polys]
-    out = []
-    across: dict = {}       # loop -> the larger loops whose box its box meets, probe outside
-    for i, segs in enumerate(loops):
-        if deadline is not None and i % 256 == 0:
-            deadline.check("finding the holes of the drawing")
-        x, y = _probe(segs)
-        if not len(boxes):
-            out.append([])
+
+    from ..output.part.nearby import box_pairs_between
+    # a whole circle is measured as itself (its area, a distance), not as its polygon
+    polys = [None if len(segs) == 1 and isinstance(segs[0], Circle) else
+             np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
+    areas, boxes, real = [], [], []
+    for j, (segs, P) in enumerate(zip(loops, polys)):
+        if P is None:
+            (cx, cy), r = segs[0].center, segs[0].radius
+            areas.append(math.pi * r * r)
+            boxes.append((cx - r, cy - r, cx + r, cy + r))
+            real.append(j)
             continue
-        lo, hi = boxes[i, :2], boxes[i, 2:]
-        meet = np.flatnonzero((boxes[:, 0] <= hi[0]) & (lo[0] <= boxes[:, 2]) &
-                              (boxes[:, 1] <= hi[1]) & (lo[1] <= boxes[:, 3]))
-        cand = [int(j) for j in meet if j != i and len(polys[j]) >= 3 and areas[j] > areas[i]]
-        out.append([j for j in cand if boxes[j, 0] <= x <= boxes[j, 2] and
-                    boxes[j, 1] <= y <= boxes[j, 3] and _inside((x, y), polys[j])])
-        if not (len(segs) == 1 and isinstance(segs[0], Circle)):
-            across[i] = [j for j in cand if areas[i] <= NOTCH_AREA * areas[j] and
-                         j not in out[i]]
-    _notches(out, across, polys, areas, deadline)
+        areas.append(abs(float(np.dot(P[:, 0], np.roll(P[:, 1], -1)) -
+                               np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2
+                     if len(P) >= 3 else 0.0)
+        if len(P) >= 3:
+            boxes.append((P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()))
+            real.append(j)
+    probes = np.array([_probe(segs) for segs in loops], dtype=float).reshape(-1, 2)
+    out: list[list[int]] = [[] for _ in loops]
+    if deadline is not None:
+        deadline.check("finding the holes of the drawing")
+    pairs = box_pairs_between(np.hstack([probes, probes]), np.array(boxes, dtype=float))
+    A = np.asarray(areas)
+    i_all, j_all = pairs[:, 0], np.asarray(real, dtype=np.intp)[pairs[:, 1]]
+    keep = (i_all != j_all) & (A[j_all] > A[i_all])
+    i_all, j_all = i_all[keep], j_all[keep]
+    order = np.argsort(j_all, kind="stable")          # each container's probes at once
+    i_all, j_all = i_all[order], j_all[order]
+    starts = np.flatnonzero(np.r_[True, j_all[1:] != j_all[:-1]]) if len(j_all) else []
+    for a, b in zip(starts, list(starts[1:]) + [len(j_all)]):
+        if deadline is not None:
+            deadline.check("finding the holes of the drawing")
+        j, ii = int(j_all[a]), i_all[a:b]
+        x, y = probes[ii, 0], probes[ii, 1]
+        if polys[j] is None:
+            (cx, cy), r = loops[j][0].center, loops[j][0].radius
+            hit = np.hypot(x - cx, y - cy) < r
+        else:
+            hit = _inside_many(x, y, polys[j])
+        for i in ii[hit].tolist():
+            out[i].append(j)
+    for js in out:
+        js.sort()
+    # a loop drawn across the edge of a larger part: its notch whatever its probe point
+    small = [k for k, i in enumerate(real) if polys[i] is not None]
+    across: dict = {}
+    for a, b in box_pairs_between(np.array(boxes, dtype=float)[small],
+                                  np.array(boxes, dtype=float)).tolist():
+        i, j = real[small[a]], real[b]
+        if i != j and areas[i] <= NOTCH_AREA * areas[j] and j not in out[i]:
+            across.setdefault(i, []).append(j)
+    if across:
+        _notches(out, across, polys, loops, areas, deadline)
     return out
 
 
@@ -323,6 +345,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
                 if owner:
                     island_holes.setdefault(owner[0], []).append(i)
     deep = {i for v in island_holes.values() for i in v}
+    named: list = []            # (its first segment's id, name) of each hole written alone
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -337,12 +360,21 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         elif k - 1 in deep:             # written in its island's solid (below)
             pass
         elif dep % 2 == 1:
-            _loop(w, depth + 1, segs, "", _ident(f"hole{k}", used))
+            hole = _ident(f"hole{k}", used)
+            _loop(w, depth + 1, segs, "", hole)
+            if not places:
+                named.append((id(segs[0]), hole))
         else:
             islands.append((segs, k))
         if places:
             w.rel, depth = None, depth - 1
             w.emit(depth + 1, "}")
+    # holes drawn overlapping on a cut role (their inner pieces a sheet-level cut): one opening
+    if w.overlaps and named:
+        order = {ident: (n, hole) for n, (ident, hole) in enumerate(named)}
+        for a, b in sorted(sorted((order[i] for i in pair)) for pair in w.overlaps
+                           if all(i in order for i in pair)):
+            w.emit(depth + 1, f"AllowOverlap({a[1]}, {b[1]})")
     # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
     import numpy as np
     polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
@@ -397,8 +429,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         segs, k = run[0]
         inner = depth
         if len(run) > 1:                 # islands of one shape moved: written once
-            w.emit(depth, f"for p in [{', '.join(_pt(q[0].start) for q, _ in run)}] {{")
-            w.rel, inner = segs[0].start, depth + 1
+            w.emit(depth, f"for p in [{', '.join(_pt(_place(q)) for q, _ in run)}] {{")
+            w.rel, inner = _place(segs), depth + 1
         w.emit(inner, f"solid {name}_island{k} {{")
         _loop(w, inner + 1, segs, f"o{k}_", None)
         for i in island_holes.get(k - 1, ()):
@@ -422,16 +454,12 @@ def _island_runs(islands: list, island_holes: dict, loops: list, compact: bool) 
     alone = []
     for segs, k in islands:
         key = _shape_key(segs)
-        x0, y0 = segs[0].start
+        x0, y0 = _place(segs)
         holes = []
         for i in island_holes.get(k - 1, ()):
             h = loops[i][1]
-            if len(h) == 1 and isinstance(h[0], Circle):
-                hk = ("C", round(h[0].radius * 1e9))
-                q = h[0].center
-            else:
-                hk, q = _shape_key(h), h[0].start
-            holes.append((round((q[0] - x0) * 1e9), round((q[1] - y0) * 1e9), hk))
+            q = _place(h)
+            holes.append((round((q[0] - x0) * 1e9), round((q[1] - y0) * 1e9), _shape_key(h)))
         if key is None or any(h[2] is None for h in holes):
             alone.append([(segs, k)])
             continue
@@ -444,7 +472,10 @@ def _island_runs(islands: list, island_holes: dict, loops: list, compact: bool) 
 def _shape_key(segs) -> tuple | None:
     """A key equal for two loops that are one shape moved (each point within 1e-9 mm of the
     other's, relative to the loop's first point, pieces of the same kinds in the same order):
-    lines, arcs and spline pieces; None for others (a lone circle is one statement anyway)."""
+    lines, arcs and spline pieces; a lone circle by its radius (a 20,000-hole panel's holes
+    written once each passed the program's size limit); None for others."""
+    if len(segs) == 1 and isinstance(segs[0], Circle):
+        return ("C", round(segs[0].radius * 1e9))
     if len(segs) < 2:
         return None
     x0, y0 = segs[0].start
@@ -484,10 +515,15 @@ def _copies(loops: list, depths: list, kind: str) -> dict:
             continue
         for k in range(0, len(idx), COPIES_PER_LOOP):
             run = idx[k:k + COPIES_PER_LOOP]
-            out[run[0]] = [loops[i][1][0].start for i in run]
+            out[run[0]] = [_place(loops[i][1]) for i in run]
             for i in run[1:]:
                 out[i] = []
     return out
+
+
+def _place(segs):
+    """Where a copy of a loop is (:func:`_copies`): its first point, a lone circle's centre."""
+    return segs[0].center if isinstance(segs[0], Circle) else segs[0].start
 
 
 COPIES_PER_LOOP = 1000      # places in one `for` (a loop holds at most 10 000 items: E0301)
@@ -726,7 +762,7 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
         w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
                   "a `for` over their places)")
     w.emit(0, "units mm")
-    items = _layer_items(layers, parts, deadline, source, w.notes)
+    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -838,46 +874,49 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     base = name.replace("\\", "/").rsplit("/", 1)[-1]
     too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "
                "in a solid (`aidl docs Drawing2D`), or import a part of it with --layer")
+    from .dxf import one_parse
     try:
-        layers = [layer] if layer is not None else layer_names(data, name)
-        read: list[tuple[str, Drawing]] = []
-        notes: list[Note] = []
-        snapped: list = []
-        total = 0
-        for ly in layers:
-            try:
-                d = read_drawing(data, name, layer=ly or None, color=color, ident=ident,
-                                 unit=unit, keep_text=True, close_tolerance=close_tolerance,
-                                 cut=cut, engrave=engrave, ignore=ignore, roles=roles,
-                                 deadline=deadline, max_shapes=limit)
-            except DrawingError as ex:
-                if ex.code == "E0132" and layer is None:
-                    # a layer of only skipped entities (none at all: below): what was left
-                    # out of it is said (a layer of only points, say, is not)
-                    if "left out: " in ex.message:
-                        notes.append(Note("W0130", ex.message, ex.hint))
-                    continue
-                raise
-            # text is written as Text engravings here (Drawing2D skips it with this note)
-            notes += [n for n in d.notes if not (d.texts and "text is not imported" in n.message)
-                      and all(n.message != m.message for m in notes)]     # once, not per layer
-            if snap:
-                from .snap import snap_drawing
-                snapped.append(snap_drawing(d, snap))
-            read.append((ly if isinstance(ly, str) else "_".join(ly), d))
-            total += _count_segments(d)
-            if total > budget.geometry:
-                raise DrawingError("E0304", f"`{base}` holds {total} or more lines, arcs and "
-                                            f"curves: the program would have more than the "
-                                            f"{budget.geometry} geometry objects a program may "
-                                            f"build", too_big)
-        if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
-            read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
-                         close_tolerance=close_tolerance, cut=cut, engrave=engrave,
-                         ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
-        text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
-        if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
-            text, more = to_program(read, base, parts=parts, deadline=deadline, compact=True)
+        with one_parse():       # a DXF parsed once for its layers, each layer and role
+            layers = [layer] if layer is not None else layer_names(data, name)
+            read: list[tuple[str, Drawing]] = []
+            notes: list[Note] = []
+            snapped: list = []
+            total = 0
+            for ly in layers:
+                try:
+                    d = read_drawing(data, name, layer=ly or None, color=color, ident=ident,
+                                     unit=unit, keep_text=True, close_tolerance=close_tolerance,
+                                     cut=cut, engrave=engrave, ignore=ignore, roles=roles,
+                                     deadline=deadline, max_shapes=limit)
+                except DrawingError as ex:
+                    if ex.code == "E0132" and layer is None:
+                        # a layer of only skipped entities (none at all: below): what was left
+                        # out of it is said (a layer of only points, say, is not)
+                        if "left out: " in ex.message:
+                            notes.append(Note("W0130", ex.message, ex.hint))
+                        continue
+                    raise
+                # text is written as Text engravings here (Drawing2D skips it with this note)
+                notes += [n for n in d.notes            # each once, not once per layer
+                          if not (d.texts and "text is not imported" in n.message)
+                          and all(n.message != m.message for m in notes)]
+                if snap:
+                    from .snap import snap_drawing
+                    snapped.append(snap_drawing(d, snap))
+                read.append((ly if isinstance(ly, str) else "_".join(ly), d))
+                total += _count_segments(d)
+                if total > budget.geometry:
+                    raise DrawingError("E0304", f"`{base}` holds {total} or more lines, arcs and "
+                                                f"curves: the program would have more than the "
+                                                f"{budget.geometry} geometry objects a program may "
+                                                f"build", too_big)
+            if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
+                read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
+                             close_tolerance=close_tolerance, cut=cut, engrave=engrave,
+                             ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
+            text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
+            if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
+                text, more = to_program(read, base, parts=parts, deadline=deadline, compact=True)
     except OutOfBudget as ex:
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
@@ -894,7 +933,8 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     return text, notes + more
 
 
-def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> list:
+def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
+                 overlaps: set | None = None) -> list:
     """``[(kind, name, drawing)]``: each layer's drawing as the structure it is written as
     (``drawing`` for an ENGRAVE layer or text alone, else ``solid``), with unique names; with
     ``parts``, a solid layer's outer loops each a solid of its own (:func:`_split_parts`) and
@@ -910,6 +950,8 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
         inside = _containers(_loops_of(d), deadline) if kind == "solid" and d.paths_cut \
             else None
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
+        inner = inner_rests(_loops_of(d), inside, deadline, overlaps) \
+            if inside is not None else []
         crossed, touched = (0, 0) if parts or inside is None else \
             _overlapping_parts(d, inside, deadline)
         if crossed:
@@ -976,7 +1018,28 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list) -> lis
                                        f"notch, and {'they are' if n + e != 1 else 'it is'} "
                                        f"written as the sheet-level cut `{items[-1][1]}` (the "
                                        f"laser cuts along {'them' if n + e != 1 else 'it'})"))
+        if inner:       # the pieces of holes drawn overlapping inside another: on the sheet
+            if notch:                   # with the outer rests, in their sheet-level cut
+                items[-1][2].paths = notch + inner
+            else:
+                items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
+                              Drawing(unit=d.unit, paths=inner, paths_cut=True)))
+            _say_inner(notes, source, inner, items[-1][1])
     return items
+
+
+def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
+    """The ``W0130`` of the pieces ``inner`` of holes drawn overlapping that lie inside
+    another hole of their part (:func:`~.hole_cuts.inner_rests`), written as the sheet-level
+    cut ``name``."""
+    n, s = len(inner), "s" if len(inner) != 1 else ""
+    notes.append(Note("W0130", f"{n} piece{s} of holes of `{source}` on a cut role drawn "
+                               f"overlapping {'lie' if n != 1 else 'lies'} inside another "
+                               f"hole of {'their' if n != 1 else 'its'} part "
+                               f"({sum(_length(p.segments) for p in inner):.6g} mm): the part "
+                               f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
+                               f" written as the sheet-level cut `{name}` (the laser cuts "
+                               f"along {'them' if n != 1 else 'it'})"))
 
 
 def _loops_of(d: Drawing) -> list:
@@ -1008,22 +1071,11 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, in
             a, b = box[i], box[j]
             if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
                 continue
-            if _polygons_overlap(polys[i], polys[j]):
+            if polygons_overlap(polys[i], polys[j]):
                 pairs += 1
             elif _polygons_touch(polys[i], polys[j]):
                 touch += 1
     return pairs, touch
-
-
-def _polygons_overlap(P, Q) -> bool:
-    """Whether closed polygons ``P`` and ``Q`` (arrays of points, mm) share an area: their
-    intersection (Manifold's 2D booleans) is larger than 1e-6 of the smaller (parts that only
-    touch, or run along one another, do not overlap)."""
-    import manifold3d as mf
-    a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero)
-    b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
-    both = (a ^ b).area()
-    return both > 1e-6 * max(1e-6, min(a.area(), b.area()))
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
@@ -1040,7 +1092,6 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
     left as they are.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
 
-    from ..geometry.drawing2d import _inside_many
     from .model import GAP_NOTE
     loops = _loops_of(d)
     if len(loops) < 2:

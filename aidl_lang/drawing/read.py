@@ -114,14 +114,16 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
             return r == want
         return keep
     out = []
-    for want in ("cut", "engrave"):
-        token = _OPTS.set(_Options(tol, deadline, keep_for(want), base.max_shapes,
-                                   split_crossings=want == "cut"))
-        try:
-            out.append(_read_one(data, name, layer, color, ident, unit, keep_text,
-                                 allow_empty=True))
-        finally:
-            _OPTS.reset(token)
+    from .dxf import one_parse
+    with one_parse():           # each role reads the same file: parsed once
+        for want in ("cut", "engrave"):
+            token = _OPTS.set(_Options(tol, deadline, keep_for(want), base.max_shapes,
+                                       split_crossings=want == "cut"))
+            try:
+                out.append(_read_one(data, name, layer, color, ident, unit, keep_text,
+                                     allow_empty=True))
+            finally:
+                _OPTS.reset(token)
     d, e = out
     d.paths_cut = True
     if not e.empty or e.texts:

@@ -29,8 +29,7 @@ from ...diagnostics import DiagnosticSink
 from ...geometry.curves import Line, Loop, carrier, distance_to
 from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import SLIT_HALF, Drawing, _quad
-from ..part.nearby import meeting
-from ..part.nearby import close_pairs
+from ..part.nearby import close_pairs, meeting
 from .common import _inside, _signed
 from .walls import _thin
 
@@ -85,7 +84,7 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
 def check_sheet_cuts(d: Drawing, roots: dict, sink: DiagnosticSink,
                      tick=lambda ahead=0.0: None) -> None:
     """W0525 (the module docstring) for each curve of a sheet-level cut of ``d``
-    (:attr:`~..part.booleans.Drawing.sheet_cuts`) whose band (:data:`SLIT_HALF` either side)
+    (:attr:`~..part.result.Drawing.sheet_cuts`) whose band (:data:`SLIT_HALF` either side)
     has more than :data:`OFF` of its area on a part's final shape (``roots``: part structure
     -> shape), and more than :data:`ENDS` mm of its length (the tessellated curved edge it
     ends on); a curve only touching a part's outline, or lying in its holes, is off it.
