@@ -315,10 +315,11 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     for js in out:
         js.sort()
     # a loop drawn across the edge of a larger part: its notch whatever its probe point
-    small = [k for k, i in enumerate(real) if polys[i] is not None]
+    big = NOTCH_AREA * max(areas, default=0.0)
+    small = [k for k, i in enumerate(real) if polys[i] is not None and areas[i] <= big]
     across: dict = {}
-    for a, b in box_pairs_between(np.array(boxes, dtype=float)[small],
-                                  np.array(boxes, dtype=float)).tolist():
+    for a, b in (box_pairs_between(np.array(boxes, dtype=float)[small],
+                                   np.array(boxes, dtype=float)).tolist() if small else ()):
         i, j = real[small[a]], real[b]
         if i != j and areas[i] <= NOTCH_AREA * areas[j] and j not in out[i]:
             across.setdefault(i, []).append(j)
