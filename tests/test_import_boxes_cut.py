@@ -352,26 +352,33 @@ def test_curves_that_cross_beside_their_cusp_lose_the_crumb_and_compile(blade):
 
 
 # ------------------------------ a hole drawn across its part's edge (WallChiselHolder's slots)
-def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut():
+@pytest.mark.parametrize("slot", ["M 100 30 H 120 V 40 H 100 Z",
+                                  "M 120 35 V 30 H 100 V 40 H 120 Z"],
+                         ids=["probe_inside", "probe_outside"])
+def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut(slot):
     """A 100 x 60 plate and a 20 x 10 slot across its right edge (x 110): the plate keeps
-    the notch (the slot's inner half), and the slot's outer half, in no part, is still cut
-    (WallChiselHolder's 10 slots: 97.33 % of its cut kept, their outer halves lost)."""
+    the notch (the slot's inner half), and the slot's outer half and the plate's edge across
+    the notch, in no part, are still cut (WallChiselHolder's 10 slots: 97.33 % of its cut
+    kept, their outer halves lost; then the edge across each notch, 5.88 mm a slot, lost).
+    Drawn from outside the plate (its probe point, the middle of its first line, at
+    x = 120), the slot was a part of its own overlapping the plate (the plate without the
+    notch, W0511; WallChiselHolder's left column: 98.93 %)."""
     import ezdxf
 
     from aidl_lang.output.part.part import build
     from aidl_lang.output.writers.dxf import to_dxf
-    svg = _svg([("M 10 10 H 110 V 70 H 10 Z", "rgb(0,0,0)"),
-                ("M 100 30 H 120 V 40 H 100 Z", "rgb(0,0,255)")])
+    svg = _svg([("M 10 10 H 110 V 70 H 10 Z", "rgb(0,0,0)"), (slot, "rgb(0,0,255)")])
     text, notes = import_drawing(svg, "notch.svg", roles="laser")
     c = compile_source(text, "notch.aidl")
     assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
     assert "hole hole2" in text and "cut sheet_cuts {" in text
-    import aidl_lang
-    codes = {d.code for d in aidl_lang.compile(text, "notch.aidl").diagnostics}
-    assert not codes & {"W0509", "W0522", "W0525"}, codes
+    assert text.count("solid ") == 1                     # was 2 (probe outside): one part
+    codes = {d.code for d in c.sink.items}
+    assert not codes & {"W0507", "W0509", "W0511", "W0522", "W0525"}, codes
     assert any("1 piece of hole of `notch.svg` on a cut role drawn across its part's edge "
-               "lies outside the part (30 mm): the part keeps the notch, and it is written as "
-               "the sheet-level cut `sheet_cuts`" in n.message for n in notes), notes
+               "lies outside the part (30 mm), and 1 piece of the part's edge drawn across "
+               "the notch (10 mm): the part keeps the notch, and they are written as the "
+               "sheet-level cut `sheet_cuts`" in n.message for n in notes), notes
     doc = ezdxf.read(io.StringIO(to_dxf(build(c.drawing, "notch"))))
     cut, plates = 0.0, []
     for e in doc.modelspace():
@@ -384,9 +391,51 @@ def test_a_hole_across_its_parts_edge_is_a_notch_and_its_outer_rest_is_cut():
         else:
             cut += math.dist(e.dxf.start.vec2, e.dxf.end.vec2)
     assert plates == [pytest.approx(100 * 60 - 10 * 10, abs=1e-6)]     # the notch kept
-    # the plate with its notch (320 - 10 + 30) and the slot's outer rest (10 + 10 + 10):
-    # was 340 (the rest not cut)
-    assert cut == pytest.approx(340 + 30, abs=1e-6)
+    # the plate with its notch (320 - 10 + 30), the slot's outer rest (10 + 10 + 10) and
+    # the plate's edge across the notch (10): was 340 (the rest not cut), then 370
+    assert cut == pytest.approx(340 + 30 + 10, abs=1e-6)
+
+
+def test_a_part_sharing_an_edge_with_a_larger_one_stays_a_part():
+    """A 10 x 10 tab drawn against a 100 x 60 plate's edge, sharing it, beside a 10 x 10
+    tab drawn across the edge by 0.1 mm (a burn correction): neither is a notch of the
+    plate (too little of it inside); each part is a solid of its own, its whole outline cut
+    (one solid fused the plate and the first tab, losing the 10 mm edge they share)."""
+    import ezdxf
+
+    from aidl_lang.output.part.part import build
+    from aidl_lang.output.writers.dxf import to_dxf
+    svg = _svg([("M 10 10 H 110 V 70 H 10 Z", "rgb(0,0,0)"),
+                ("M 110 20 H 120 V 30 H 110 Z", "rgb(0,0,0)"),
+                ("M 120 60 V 50 H 109.9 V 60 Z", "rgb(0,0,0)")])
+    text, notes = import_drawing(svg, "tabs.svg", roles="laser")
+    assert "hole " not in text and text.count("solid ") == 3
+    assert any(n.message.startswith("1 pair of parts of `tabs.svg` on a cut role touch along "
+                                    "an edge: each part is written as a solid of its own")
+               for n in notes), notes
+    c = compile_source(text, "tabs.aidl")
+    assert c.ok and c.drawing is not None, [str(d) for d in c.diagnostics][:3]
+    doc = ezdxf.read(io.StringIO(to_dxf(build(c.drawing, "tabs"))))
+    cut = 0.0
+    for e in doc.modelspace():
+        p = [(x, y) for x, y, *_ in e.get_points()]
+        cut += sum(math.dist(a, b) for a, b in zip(p, p[1:] + p[:1]))
+    assert cut == pytest.approx(320 + 40 + 40.2, abs=1e-6)    # was 360.2: 10 mm lost
+
+
+def test_a_notchs_outer_rest_ending_on_a_curved_edge_is_no_cut_across_the_part():
+    """A slot across the curved edge of a bite out of a plate (two cubic Béziers, as
+    Boxes.py draws WallChiselHolder's circles): the slot's outer rest, a sheet-level cut,
+    ends exactly where it crosses the curve, but the part's shape is made of the curve's
+    chords (0.005 mm off it), so the ends of the cut's band lay up to 0.004 mm on the part:
+    W0525 said it ran across the part's material (11 times on WallChiselHolder)."""
+    bite = ("M 10 10 H 110 V 30 C 104.477 30 100 34.477 100 40 "
+            "C 100 45.523 104.477 50 110 50 V 70 H 10 Z")
+    text, notes, _cut_mm, codes = _cut(_svg([(bite, "rgb(0,0,0)"),
+                                             ("M 103 33 V 36 H 97 V 33 Z", "rgb(0,0,255)")]),
+                                       "bite")
+    assert "hole hole2" in text and "cut sheet_cuts {" in text
+    assert "W0525" not in codes, codes                    # was 1
 
 
 # --------------------------------------------- holes drawn overlapping (Planetary2's gear plate)

@@ -20,6 +20,7 @@ from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
 from .hole_cuts import inner_rests, polygons_overlap
 from .model import Drawing, Note, Outline, Path
+from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch, _runs, _split_where_crossed
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -264,7 +265,9 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     overlapping, their joint's tabs interlocked, each have points inside the other, and
     neither is the other's hole): each probe is tested only against the loops whose box
     holds it, found through a grid (:func:`~..output.part.nearby.box_pairs_between`), so a
-    sheet of 20,000 holes takes a moment (each probe against every box: 4.3 s)."""
+    sheet of 20,000 holes takes a moment (each probe against every box: 4.3 s).  A loop
+    drawn across the edge of a larger part or island (:func:`~.notches._notches`) is that
+    loop's hole (its notch) whatever its probe point."""
     import numpy as np
 
     from ..output.part.nearby import box_pairs_between
@@ -311,6 +314,17 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
             out[i].append(j)
     for js in out:
         js.sort()
+    # a loop drawn across the edge of a larger part: its notch whatever its probe point
+    big = NOTCH_AREA * max(areas, default=0.0)
+    small = [k for k, i in enumerate(real) if polys[i] is not None and areas[i] <= big]
+    across: dict = {}
+    for a, b in (box_pairs_between(np.array(boxes, dtype=float)[small],
+                                   np.array(boxes, dtype=float)).tolist() if small else ()):
+        i, j = real[small[a]], real[b]
+        if i != j and areas[i] <= NOTCH_AREA * areas[j] and j not in out[i]:
+            across.setdefault(i, []).append(j)
+    if across:
+        _notches(out, across, polys, loops, areas, deadline)
     return out
 
 
@@ -939,7 +953,8 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
         notch = _outside_remainders(d, inside, deadline) if inside is not None else []
         inner = inner_rests(_loops_of(d), inside, deadline, overlaps) \
             if inside is not None else []
-        crossed = 0 if parts or inside is None else _overlapping_parts(d, inside, deadline)
+        crossed, touched = (0, 0) if parts or inside is None else \
+            _overlapping_parts(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -948,7 +963,14 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
                                        f"fuse them and lose the cut lines where they overlap)",
                               "move the parts apart in the drawing program if they are not "
                               "to overlap on the sheet"))
-        if (parts or crossed) and kind == "solid":
+        if touched:
+            notes.append(Note("W0130", f"{touched} pair{'s' if touched != 1 else ''} of parts "
+                                       f"of `{source}` on a cut role touch along an edge: "
+                                       f"each part is written as a solid of its own "
+                                       f"(`assembly drawing_import`), as `--parts` does (one "
+                                       f"solid would fuse them and lose the cut along the "
+                                       f"edge they share)"))
+        if (parts or crossed or touched) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -983,16 +1005,20 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
         if notch:       # the rest of a hole drawn across its part's edge: cut on the sheet
             items.append(("cut", _ident(f"{layer or 'sheet'}_cuts", used),
                           Drawing(unit=d.unit, paths=notch, paths_cut=True)))
-            n = len(notch)
+            edge = [p for p in notch if p.source == EDGE_ACROSS]
+            n, e = len(notch) - len(edge), len(edge)
+            ln = sum(_length(p.segments) for p in edge)
+            also = (f", and {e} piece{'s' if e != 1 else ''} of the part's edge drawn across "
+                    f"the notch ({ln:.6g} mm)") if e else ""
             notes.append(Note("W0130", f"{n} piece{'s' if n != 1 else ''} of hole"
                                        f"{'s' if n != 1 else ''} of `{source}` on a cut role "
                                        f"drawn across {'their' if n != 1 else 'its'} part's "
                                        f"edge {'lie' if n != 1 else 'lies'} outside the part "
-                                       f"({sum(_length(p.segments) for p in notch):.6g} mm): "
-                                       f"the part keeps the notch, and "
-                                       f"{'they are' if n != 1 else 'it is'} written as the "
-                                       f"sheet-level cut `{items[-1][1]}` (the laser cuts "
-                                       f"along {'them' if n != 1 else 'it'})"))
+                                       f"({sum(_length(p.segments) for p in notch) - ln:.6g} "
+                                       f"mm){also}: the part keeps the "
+                                       f"notch, and {'they are' if n + e != 1 else 'it is'} "
+                                       f"written as the sheet-level cut `{items[-1][1]}` (the "
+                                       f"laser cuts along {'them' if n + e != 1 else 'it'})"))
         if inner:       # the pieces of holes drawn overlapping inside another: on the sheet
             if notch:                   # with the outer rests, in their sheet-level cut
                 items[-1][2].paths = notch + inner
@@ -1022,21 +1048,23 @@ def _loops_of(d: Drawing) -> list:
     return [o.segments for o in d.outlines] + [[c] for c in d.circles]
 
 
-def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
+def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
     """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
-    (share an area, on the loops' sampled polygons): parts drawn overlapping
-    on a laser sheet (Boxes.py's UnevenHeightBox walls), which one solid would fuse, losing
-    the cut lines inside the union.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
+    (share an area, on the loops' sampled polygons), and how many others touch along an
+    edge (:func:`_polygons_touch`): parts drawn overlapping on a laser sheet (Boxes.py's
+    UnevenHeightBox walls) or sharing an edge (WallChiselHolder's walls), which one solid
+    would fuse, losing the cut lines inside the union.  ``inside``: :func:`_containers` of
+    :func:`_loops_of`."""
     import numpy as np
     loops = _loops_of(d)
     if len(loops) < 2:
-        return 0
+        return 0, 0
     outer = [i for i, c in enumerate(inside) if not c]
     polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
     box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
            for i, P in polys.items() if len(P) >= 3}
     keys = sorted(box)
-    pairs = 0
+    pairs = touch = 0
     for a_i, i in enumerate(keys):
         if deadline is not None:
             deadline.check("finding the parts that overlap")
@@ -1046,23 +1074,25 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> int:
                 continue
             if polygons_overlap(polys[i], polys[j]):
                 pairs += 1
-    return pairs
+            elif _polygons_touch(polys[i], polys[j]):
+                touch += 1
+    return pairs, touch
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
-    """The pieces of ``d``'s holes that lie outside the loop they are holes of: a hole drawn
-    across its part's edge (Boxes.py's WallChiselHolder slots) is the part's notch, and the
-    rest of its loop, in no part, is still asked to be cut.  Each hole outline (a loop inside
-    an odd number of others) that has sampled points outside its owner is cut exactly
-    (:func:`~.chain._split_at`, each piece on its own carrier) at the points where it crosses
-    the owner's edge; the runs of pieces whose middles lie outside the owner are returned as
-    open paths (mm), in the hole's order, but for those no longer than
-    :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are left as they are.
-    ``inside``: :func:`_containers` of :func:`_loops_of`."""
+    """The pieces of ``d``'s holes that lie outside the loop they are holes of, and the
+    pieces of that loop's edge inside them: a hole drawn across its part's edge (Boxes.py's
+    WallChiselHolder slots) is the part's notch, and the rest of its loop, in no part, is
+    still asked to be cut, as is the part's edge drawn across the notch.  Each hole outline
+    (a loop inside an odd number of others) that has sampled points outside its owner is
+    cut exactly (:func:`_split_where_crossed`) at the points where it crosses the owner's
+    edge, and the owner's edge where it crosses the hole; the runs of the hole's pieces
+    whose middles lie outside the owner, then of the owner's pieces whose middles lie inside
+    the hole, are returned as open paths (mm), in their loop's order, but for those no
+    longer than :data:`~.model.GAP_NOTE` (a burn-correction overlap).  Whole circles are
+    left as they are.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
 
-    from ..geometry.curves import carrier, crossings
-    from .chain import _distinct, _piece_length, _split_at
     from .model import GAP_NOTE
     loops = _loops_of(d)
     if len(loops) < 2:
@@ -1091,45 +1121,17 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
             continue            # no edge of the owner near it: inside, as its probe is
         if _inside_many(H[:, 0], H[:, 1], P).all():
             continue                                   # every sample inside: a plain hole
-        pieces = []
-        for s in segs:
-            hits = []
-            for t in own:
-                for x in crossings(carrier(s), carrier(t)):
-                    if _split_at(t, x) is not None or min(math.dist(x, t.start),
-                                                          math.dist(x, t.end)) <= 1e-9:
-                        hits.append(x)
-            hits = [x for x in _distinct(hits) if min(math.dist(x, s.start),
-                                                      math.dist(x, s.end)) > 1e-9]
-
-            def along(x, s=s) -> float:     # how far along s the hit lies
-                cut = _split_at(s, x)
-                return _piece_length(cut[0]) if cut is not None else math.inf
-            hits.sort(key=along)
-            rest = s
-            for x in hits:
-                cut = _split_at(rest, x)
-                if cut is None:
-                    continue
-                pieces.append(cut[0])
-                rest = cut[1]
-            pieces.append(rest)
-        flags = [not _inside(_probe([p]), P) for p in pieces]
-        if all(flags) or not any(flags):
+        pieces, _ = _split_where_crossed(segs, own)
+        runs = [(r, "the part of a hole outside its part")
+                for r in _runs(pieces, [not _inside(_probe([p]), P) for p in pieces])]
+        if not runs:
             continue
-        k = flags.index(False)                         # start the walk at a piece inside
-        runs: list = []
-        cur: list = []
-        for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
-            if f:
-                cur.append(p)
-            elif cur:
-                runs.append(cur)
-                cur = []
-        if cur:
-            runs.append(cur)
+        # the owner's edge across the notch (split where its segments meet the hole's box)
+        edge, near = _split_where_crossed(own, segs, (lo[0], lo[1], hi[0], hi[1]))
+        runs += [(r, EDGE_ACROSS)
+                 for r in _runs(edge, [n and _inside(_probe([p]), H)
+                                       for p, n in zip(edge, near)])]
         # a run within the gap a laser closes anyway (Boxes.py's 0.1 mm burn-correction
         # overlaps, Lamp's and SmallPartsTray2's) is no cut of its own
-        out += [Path(r, "the part of a hole outside its part") for r in runs
-                if _length(r) > GAP_NOTE]
+        out += [Path(r, why) for r, why in runs if _length(r) > GAP_NOTE]
     return out

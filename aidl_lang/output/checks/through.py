@@ -34,6 +34,9 @@ from .common import _inside, _signed
 from .walls import _thin
 
 OFF = 1e-3      # of the band's own area: a through-cut with less of it inside cuts nothing
+# mm of a sheet-level cut's length on a part that W0525 lets pass: a cut that ends on a part's
+# curved edge (a notch's outer rest) runs up to CHORD_TOL over the edge's chords at each end
+ENDS = 4 * CHORD_TOL
 # mm: an end this close to another cut or an edge reaches it (the bands meet: the analysis
 # separates there), so it leaves no bridge
 TOUCH = 2 * SLIT_HALF
@@ -83,7 +86,8 @@ def check_sheet_cuts(d: Drawing, roots: dict, sink: DiagnosticSink,
     """W0525 (the module docstring) for each curve of a sheet-level cut of ``d``
     (:attr:`~..part.result.Drawing.sheet_cuts`) whose band (:data:`SLIT_HALF` either side)
     has more than :data:`OFF` of its area on a part's final shape (``roots``: part structure
-    -> shape); a curve only touching a part's outline, or lying in its holes, is off it.
+    -> shape), and more than :data:`ENDS` mm of its length (the tessellated curved edge it
+    ends on); a curve only touching a part's outline, or lying in its holes, is off it.
     Each curve is measured only against the parts whose bounding boxes meet its own."""
     items = getattr(d, "sheet_cuts", ())
     parts = [(s, shp) for s, shp in roots.items() if not shp.is_empty()]
@@ -100,7 +104,7 @@ def check_sheet_cuts(d: Drawing, roots: dict, sink: DiagnosticSink,
         for i in near:
             tick()
             s, shp = parts[i]
-            if (band ^ shp).area() > OFF * whole > 0:
+            if (band ^ shp).area() > max(OFF * whole, ENDS * 2 * SLIT_HALF) and whole > 0:
                 sink.warning("W0525", f"sheet-level cut `{g.label}` runs across the material of "
                              f"part `{s.path}`: the laser cuts `{s.path}` there, but the part "
                              "does not hold the cut (its outline, area and 3D view are without "
