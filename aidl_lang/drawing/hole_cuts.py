@@ -31,9 +31,11 @@ def overlapping_holes(loops: list, inside: list, deadline=None) -> tuple[dict, d
     their sampled polygons (N x 2 arrays).  A hole is a loop inside an odd number of others
     (``inside``: for each loop the indices of the loops it lies inside,
     :func:`~.program._containers`), its part the one of those one level up.  Only holes whose
-    boxes overlap are compared (a sweep along x: a plate of 5,000 holes is not 12 million
-    pairs).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked per part, or None."""
+    boxes overlap are compared (:func:`~..output.part.nearby.box_pairs`: a plate of 5,000
+    holes is not 12 million pairs).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked per part, or None."""
     import numpy as np
+
+    from ..output.part.nearby import box_pairs
     depth = [len(c) for c in inside]
     holes: dict = {}                                    # a part's loop -> its holes
     for i in range(len(loops)):
@@ -52,19 +54,16 @@ def overlapping_holes(loops: list, inside: list, deadline=None) -> tuple[dict, d
             continue
         if deadline is not None:
             deadline.check("finding the holes that overlap")
-        # boxes holding the loops (no sampling): the polygons only of holes whose boxes meet
+        # boxes holding the loops (no sampling): the polygons only of holes whose boxes meet,
+        # found through a grid (a sweep along x met every hole of a column: 1.1 s for a panel
+        # of 20,000 holes in 141 columns)
         box = np.array([_loop_box(loops[i]) for i in group])
-        order = np.argsort(box[:, 0], kind="stable")
-        x0 = box[order, 0]
-        for a, ia in enumerate(order):
-            for ib in order[a + 1:np.searchsorted(x0, box[ia, 2], "right")]:
-                if box[ib, 1] > box[ia, 3] or box[ia, 1] > box[ib, 3]:
-                    continue
-                i, j = sorted((group[ia], group[ib]))
-                P, Q = polygon(i), polygon(j)
-                if len(P) >= 3 and len(Q) >= 3 and polygons_overlap(P, Q):
-                    partners.setdefault(i, []).append(j)
-                    partners.setdefault(j, []).append(i)
+        for ia, ib in box_pairs(box).tolist():
+            i, j = sorted((group[ia], group[ib]))
+            P, Q = polygon(i), polygon(j)
+            if len(P) >= 3 and len(Q) >= 3 and polygons_overlap(P, Q):
+                partners.setdefault(i, []).append(j)
+                partners.setdefault(j, []).append(i)
     return partners, poly
 
 
