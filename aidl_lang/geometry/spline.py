@@ -234,6 +234,9 @@ def _poly(b, k: int) -> np.ndarray:
     return np.array([-p0 + 3 * p1 - 3 * p2 + p3, 3 * p0 - 6 * p1 + 3 * p2, -3 * p0 + 3 * p1, p0])
 
 
+ROOT_LEAD = 1e-14      # of the largest coefficient: a leading one below it is dropped
+
+
 def _der(c: np.ndarray) -> np.ndarray:
     """Derivative of power-basis coefficients (highest first), length kept minus one."""
     n = len(c) - 1
@@ -241,13 +244,19 @@ def _der(c: np.ndarray) -> np.ndarray:
 
 
 def _real_roots(coef: np.ndarray, lo=-1e-9, hi=1 + 1e-9) -> list[float]:
-    c = np.trim_zeros(np.asarray(coef, dtype=float), "f")
+    """The real roots in ``[lo, hi]`` (clamped to [0, 1]) of the polynomial ``coef`` (power
+    basis, highest first).  Leading coefficients below ``ROOT_LEAD`` of the largest are
+    dropped: their roots lie past 1e14 (far outside the span), and a subnormal one (a control
+    point at 2.2e-309 mm) overflowed NumPy's companion matrix to inf (LinAlgError)."""
+    c = np.asarray(coef, dtype=float)
+    scale = float(np.abs(c).max()) if len(c) else 0.0
+    if scale == 0.0 or not math.isfinite(scale):
+        return []
+    c = c / scale
+    c = c[np.argmax(np.abs(c) > ROOT_LEAD):] if (np.abs(c) > ROOT_LEAD).any() else c[:0]
     if len(c) <= 1:
         return []
-    scale = float(np.abs(c).max())
-    if scale == 0.0:
-        return []
-    r = np.roots(c / scale)
+    r = np.roots(c)
     out = []
     for z in r:
         if abs(z.imag) <= 1e-7 and lo <= z.real <= hi:
