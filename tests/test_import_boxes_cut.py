@@ -499,3 +499,37 @@ def test_the_arcs_of_overlapping_holes_inside_the_opening_are_cut():
     assert {r: len(v) for r, v in arcs.items()} == {20.0: 1, 15.0: 1}
     assert {r: v[0] for r, v in arcs.items()} == {r: pytest.approx(v, abs=1e-6)
                                                   for r, v in inner.items()}
+
+
+def test_a_slot_across_a_round_plates_edge_is_a_notch_and_its_rests_are_cut():
+    """A slot across the edge of a round plate (a whole circle) was an internal error
+    (AttributeError: 'Circle' object has no attribute 'start': the crossing search of the
+    notch's rest took every edge for a line or arc); the circle is now cut at the crossings
+    like any other edge: the plate keeps the notch, the slot's outer rest and the arc of the
+    plate's edge across the notch are the sheet-level cut, each exact."""
+    import ezdxf
+
+    import aidl_lang
+    from aidl_lang.output import encode, for_cutting
+    svg = (b'<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+           b'viewBox="0 0 100 100"><circle cx="50" cy="50" r="30" stroke="rgb(0,0,0)" '
+           b'fill="none"/><path d="M 75 45 H 90 V 55 H 75 Z" stroke="rgb(0,0,255)" '
+           b'fill="none"/></svg>')
+    text, notes = import_drawing(svg, "round.svg", roles="laser")
+    assert "cut sheet_cuts {" in text
+    res = aidl_lang.compile(text, "round.aidl")
+    assert res.ok and not [d for d in res.diagnostics if d.severity != "info"], \
+        [d.message for d in res.diagnostics]
+    x = 50 + math.sqrt(30 ** 2 - 5 ** 2)            # where the slot's sides cross the circle
+    # the plate: the disc less the slot's part inside it (integral of the chord widths)
+    inside = 5 * math.sqrt(875) + 900 * math.asin(1 / 6) - 10 * 25
+    (part,) = res.output.parts
+    assert part.area == pytest.approx(math.pi * 900 - inside, abs=1e-6)
+    doc = ezdxf.read(io.StringIO(encode(for_cutting(res.output), ".dxf").decode()))
+    lines = sum(math.dist(e.dxf.start.vec2, e.dxf.end.vec2)
+                for e in doc.modelspace() if e.dxftype() == "LINE")
+    (arc,) = [e for e in doc.modelspace() if e.dxftype() == "ARC"]
+    assert lines == pytest.approx(2 * (90 - x) + 10, abs=1e-6)          # the outer rest
+    assert arc.dxf.radius == pytest.approx(30, abs=1e-9)                 # the edge across
+    assert arc.dxf.end_angle - arc.dxf.start_angle == pytest.approx(
+        2 * math.degrees(math.asin(5 / 30)), abs=1e-9)

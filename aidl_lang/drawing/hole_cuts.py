@@ -90,25 +90,12 @@ def inner_rests(loops: list, inside: list, deadline=None,
         if deadline is not None:
             deadline.check("cutting the holes that overlap at their crossings")
         js = partners[i]
-        pieces = cut_at_crossings(loops[i], [t for j in js for t in loops[j]])
+        pieces, _ = cut_at_crossings(loops[i], [t for j in js for t in loops[j]])
         if len(pieces) < 2:
             continue
         flags = [any(_inside(_middle(p), poly[j]) for j in js) for p in pieces]
-        if all(flags) or not any(flags):
-            continue
-        k = flags.index(False)                         # start the walk at a piece outside
-        runs: list = []
-        cur: list = []
-        for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
-            if f:
-                cur.append(p)
-            elif cur:
-                runs.append(cur)
-                cur = []
-        if cur:
-            runs.append(cur)
-        out += [Path(r, "the part of a hole inside another hole of its part") for r in runs
-                if sum(p.length for p in r) > GAP_NOTE]
+        out += [Path(r, "the part of a hole inside another hole of its part")
+                for r in runs_of(pieces, flags) if sum(p.length for p in r) > GAP_NOTE]
     return out
 
 
@@ -142,13 +129,15 @@ def _hull_box(s) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def cut_at_crossings(segs: list, others: list) -> list:
-    """The closed loop ``segs`` (segments, mm) cut exactly at every point where it crosses a
-    segment of ``others`` (:func:`~aidl_lang.geometry.curves.crossings` of their carriers,
-    each point on both segments): its pieces in its order, each on its own carrier
-    (:func:`~.chain._split_at`: a line stays a line, an arc an arc, a curve the same curve);
-    a whole circle that is crossed is first made the full-turn arc from its first crossing,
-    turning as it does."""
+def cut_at_crossings(segs: list, others: list, box=None) -> tuple[list, list]:
+    """``(pieces, near)``: the closed loop ``segs`` (segments, mm) cut exactly at every point
+    where it crosses a segment of ``others`` (:func:`~aidl_lang.geometry.curves.crossings` of
+    their carriers, each point on both segments), its pieces in its order, each on its own
+    carrier (:func:`~.chain._split_at`: a line stays a line, an arc an arc, a curve the same
+    curve); a whole circle that is crossed is first made the full-turn arc from its first
+    crossing, turning as it does.  With ``box`` (``(x0, y0, x1, y1)``, mm) only the segments
+    whose box meets it are cut, the others kept whole; ``near`` says which pieces come of
+    segments that were cut (all, without ``box``)."""
     from ..geometry.curves import carrier, crossings
     from .chain import _distinct, _piece_length, _split_at
 
@@ -167,11 +156,20 @@ def cut_at_crossings(segs: list, others: list) -> list:
         return _distinct(pts)
 
     pieces: list = []
+    near: list = []
     for s in segs:
+        b = s.box() if box is not None else None
+        if b is not None and (b[0] > box[2] or box[0] > b[2] or b[1] > box[3] or
+                              box[1] > b[3]):
+            pieces.append(s)
+            near.append(False)
+            continue
+        n = len(pieces)
         xs = hits(s)
         if isinstance(s, Circle):
             if not xs:
                 pieces.append(s)
+                near.append(True)
                 continue
             (cx, cy), x0 = s.center, xs[0]
             s = Arc(s.center, s.radius, math.atan2(x0[1] - cy, x0[0] - cx),
@@ -189,4 +187,25 @@ def cut_at_crossings(segs: list, others: list) -> list:
                 pieces.append(cut[0])
                 rest = cut[1]
         pieces.append(rest)
-    return pieces
+        near += [True] * (len(pieces) - n)
+    return pieces, near
+
+
+def runs_of(pieces: list, flags: list) -> list:
+    """The runs of consecutive ``pieces`` of a closed loop whose ``flags`` are true (a run
+    may go on past the loop's start), in the loop's order: none when every flag or none is
+    true."""
+    if all(flags) or not any(flags):
+        return []
+    k = flags.index(False)                         # start the walk at a piece not flagged
+    runs: list = []
+    cur: list = []
+    for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
+        if f:
+            cur.append(p)
+        elif cur:
+            runs.append(cur)
+            cur = []
+    if cur:
+        runs.append(cur)
+    return runs

@@ -1,11 +1,10 @@
 """Loops drawn across another loop's edge, for ``aidl import`` (:mod:`.program`): a small
 loop across a part's edge is the part's notch whatever its probe point (:func:`_notches`),
-parts that share an edge are told apart (:func:`_polygons_touch`), and a loop is cut where
-another crosses it (:func:`_split_where_crossed`, :func:`_runs`) to keep the cut of a
-notch's outer rest and of the part's edge across it."""
+and parts that share an edge are told apart (:func:`_polygons_touch`); a loop is cut where
+another crosses it by :func:`~.hole_cuts.cut_at_crossings` and :func:`~.hole_cuts.runs_of`
+to keep the cut of a notch's outer rest and of the part's edge across it."""
 from __future__ import annotations
 
-import math
 
 NOTCH_AREA = 0.25   # a loop across a larger one's edge is its notch: at most this of its area
 NOTCH_SHARE = 0.1   # ... and at least this share of its own area inside it
@@ -72,65 +71,3 @@ def _polygons_touch(P, Q, reach: float = 1e-3) -> bool:
     a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero).offset(reach, mf.JoinType.Square)
     b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
     return (a ^ b).area() > GAP_NOTE * reach
-
-
-def _split_where_crossed(segs: list, others: list, box=None) -> tuple[list, list]:
-    """``(pieces, near)``: the segments ``segs`` cut exactly (:func:`~.chain._split_at`,
-    each piece on its own carrier) at the points where they cross a segment of ``others``,
-    in their order; with ``box`` (``(x0, y0, x1, y1)``, mm) only the segments whose box meets
-    it are cut, the others kept whole, ``near`` saying which pieces come of cut ones."""
-    from ..geometry.curves import carrier, crossings
-    from .chain import _distinct, _piece_length, _split_at
-    pieces: list = []
-    near: list = []
-    for s in segs:
-        b = s.box() if box is not None else None
-        if b is not None and (b[0] > box[2] or box[0] > b[2] or b[1] > box[3] or
-                              box[1] > b[3]):
-            pieces.append(s)
-            near.append(False)
-            continue
-        hits = []
-        for t in others:
-            for x in crossings(carrier(s), carrier(t)):
-                if _split_at(t, x) is not None or min(math.dist(x, t.start),
-                                                      math.dist(x, t.end)) <= 1e-9:
-                    hits.append(x)
-        hits = [x for x in _distinct(hits) if min(math.dist(x, s.start),
-                                                  math.dist(x, s.end)) > 1e-9]
-
-        def along(x, s=s) -> float:     # how far along s the hit lies
-            cut = _split_at(s, x)
-            return _piece_length(cut[0]) if cut is not None else math.inf
-        hits.sort(key=along)
-        rest = s
-        n = len(pieces)
-        for x in hits:
-            cut = _split_at(rest, x)
-            if cut is None:
-                continue
-            pieces.append(cut[0])
-            rest = cut[1]
-        pieces.append(rest)
-        near += [True] * (len(pieces) - n)
-    return pieces, near
-
-
-def _runs(pieces: list, flags: list) -> list:
-    """The runs of consecutive ``pieces`` of a closed loop whose ``flags`` are true (a run
-    may go on past the loop's start), in the loop's order: none when every flag or none is
-    true."""
-    if all(flags) or not any(flags):
-        return []
-    k = flags.index(False)                         # start the walk at a piece not flagged
-    runs: list = []
-    cur: list = []
-    for p, f in zip(pieces[k:] + pieces[:k], flags[k:] + flags[:k]):
-        if f:
-            cur.append(p)
-        elif cur:
-            runs.append(cur)
-            cur = []
-    if cur:
-        runs.append(cur)
-    return runs

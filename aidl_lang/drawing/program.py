@@ -18,9 +18,9 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
-from .hole_cuts import inner_rests, polygons_overlap
+from .hole_cuts import cut_at_crossings, inner_rests, polygons_overlap, runs_of
 from .model import Drawing, Note, Outline, Path
-from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch, _runs, _split_where_crossed
+from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -1085,7 +1085,7 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
     WallChiselHolder slots) is the part's notch, and the rest of its loop, in no part, is
     still asked to be cut, as is the part's edge drawn across the notch.  Each hole outline
     (a loop inside an odd number of others) that has sampled points outside its owner is
-    cut exactly (:func:`_split_where_crossed`) at the points where it crosses the owner's
+    cut exactly (:func:`~.hole_cuts.cut_at_crossings`) at the points where it crosses the owner's
     edge, and the owner's edge where it crosses the hole; the runs of the hole's pieces
     whose middles lie outside the owner, then of the owner's pieces whose middles lie inside
     the hole, are returned as open paths (mm), in their loop's order, but for those no
@@ -1121,15 +1121,15 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
             continue            # no edge of the owner near it: inside, as its probe is
         if _inside_many(H[:, 0], H[:, 1], P).all():
             continue                                   # every sample inside: a plain hole
-        pieces, _ = _split_where_crossed(segs, own)
+        pieces, _ = cut_at_crossings(segs, own)
         runs = [(r, "the part of a hole outside its part")
-                for r in _runs(pieces, [not _inside(_probe([p]), P) for p in pieces])]
+                for r in runs_of(pieces, [not _inside(_probe([p]), P) for p in pieces])]
         if not runs:
             continue
         # the owner's edge across the notch (split where its segments meet the hole's box)
-        edge, near = _split_where_crossed(own, segs, (lo[0], lo[1], hi[0], hi[1]))
+        edge, near = cut_at_crossings(own, segs, (lo[0], lo[1], hi[0], hi[1]))
         runs += [(r, EDGE_ACROSS)
-                 for r in _runs(edge, [n and _inside(_probe([p]), H)
+                 for r in runs_of(edge, [n and _inside(_probe([p]), H)
                                        for p, n in zip(edge, near)])]
         # a run within the gap a laser closes anyway (Boxes.py's 0.1 mm burn-correction
         # overlaps, Lamp's and SmallPartsTray2's) is no cut of its own
