@@ -388,6 +388,8 @@ BAD_LINES = [
     ('{"jsonrpc": "2.0", "id": 7, "method": 5}', -32600),
     ('{"jsonrpc": "1.0", "id": 8, "method": "ping"}', -32600),
     ("42", -32600),
+    ('{"jsonrpc": "2.0", "id": NaN, "method": "ping"}', -32700),     # not JSON (RFC 8259)
+    ("[" * 100_000 + "]" * 100_000, -32700),                          # nested too deep
 ]
 
 

@@ -29,16 +29,20 @@ from mcp_types import INVALID_REQUEST, PARSE_ERROR
 def rejection(line: str) -> types.ErrorData | None:
     """Why one line of stdin is no JSON-RPC message MCP takes, or None when it is one.
 
-    -32700 Parse error: not JSON.  -32600 Invalid Request: JSON but not one message object
+    -32700 Parse error: not JSON (NaN and Infinity are not), or nested deeper than Python's
+    recursion limit.  -32600 Invalid Request: JSON but not one message object
     (an array: ``[]`` or a batch; a number, string, ...), an id that is no string or integer
     (MCP's RequestId; a bool, float, object, array or null), or an object no JSON-RPC message
     shape fits (``jsonrpc`` not "2.0", ``method`` not a string, ...).  A response (``result``
     or ``error``, no ``method``) is passed on as it is: a response is never answered.
     """
     try:
-        doc = json.loads(line)
+        doc = json.loads(line, parse_constant=_not_json)
     except ValueError as exc:
         return types.ErrorData(code=PARSE_ERROR, message=f"Parse error: the line is not JSON ({exc})")
+    except RecursionError:      # RFC 8259, section 9: a parser may limit the nesting
+        return types.ErrorData(code=PARSE_ERROR, message="Parse error: the line's JSON is "
+                                                         "nested too deep")
     if isinstance(doc, list):
         what = "an empty array" if not doc else f"a batch of {len(doc)}"
         return types.ErrorData(code=INVALID_REQUEST, message=(
@@ -65,6 +69,10 @@ def rejection(line: str) -> types.ErrorData | None:
 
 
 _JSON_TYPES = {int: "number", float: "number", str: "string", bool: "boolean", type(None): "null"}
+
+
+def _not_json(word: str):
+    raise ValueError(f"{word} is not a JSON value")     # Python's json reads NaN, Infinity
 
 
 def _is_request_id(value) -> bool:
@@ -118,6 +126,7 @@ async def serve(lowlevel, options) -> None:
             async with anyio.create_task_group() as tg:
                 tg.start_soon(_forward, rejected, write)
                 await lowlevel.run(read, write, options)
+                tg.cancel_scope.cancel()        # stdin is closed: nothing more to answer
 
 
 async def _forward(rejected, write) -> None:
