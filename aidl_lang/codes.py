@@ -38,11 +38,16 @@ The called name is not a primitive (Circle, Rectangle, ...), a constraint (Coinc
 
     Rotate(body, 30 deg)     # there is no Rotate: use `rotation=30 deg` or Angle(...)
 """),
-    "E0104": ("wrong number of arguments", """
+    "E0104": ("wrong number or combination of arguments", """
 The call has more positional arguments than the primitive or constraint takes, in any of its
-forms. The hint lists the accepted forms.
+forms, or arguments that no one form takes together. The message names the arguments that do
+not fit with the others (those outside a form the rest complete); the hint lists the accepted
+forms.
 
     Circle((0, 0), 5, 7)     # Circle(center, radius)
+    Arc(radius=5, start=(0, 0), end=(10, 0))
+        # `Arc` has no form taking `radius` with `start` and `end`: Arc(center, start, end),
+        # Arc(center, radius, start_angle, end_angle) or Arc(start, through, end)
 """),
     "E0105": ("unknown keyword argument", """
 A keyword argument that the primitive, constraint or template does not have.

@@ -373,3 +373,65 @@ async def test_every_resource_uri_of_the_docs_is_served(tmp_path):
             for uri in sorted(said):
                 got = await session.read_resource(uri)
                 assert got.contents[0].text.strip(), uri
+
+
+# A line that is no JSON-RPC message, and the error JSON-RPC 2.0 answers it with (issue 83):
+# the SDK dropped each of these (an object/boolean/float/null id read as a notification).
+BAD_LINES = [
+    ("{not json", -32700),
+    ("[]", -32600),
+    ('[{"jsonrpc": "2.0", "id": 1, "method": "ping"}]', -32600),    # a batch (MCP 2025-06)
+    ('{"jsonrpc": "2.0", "id": {}, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": true, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": 1.5, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": null, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": 7, "method": 5}', -32600),
+    ('{"jsonrpc": "1.0", "id": 8, "method": "ping"}', -32600),
+    ("42", -32600),
+    ('{"jsonrpc": "2.0", "id": NaN, "method": "ping"}', -32700),     # not JSON (RFC 8259)
+    ("[" * 100_000 + "]" * 100_000, -32700),                          # nested too deep
+]
+
+
+def test_lines_that_are_no_message_get_json_rpc_errors_and_the_server_goes_on(tmp_path):
+    """A real `aidl mcp`: each bad line gets one error reply with id null and the code of
+    JSON-RPC 2.0 section 5; a response sent by the client (id null) gets none; a ping after
+    each is answered with its own id, so nothing was dropped or left waiting."""
+    import select
+    import subprocess
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    env["AIDL_MCP_COLD"] = "1"
+    p = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
+                         cwd=str(ROOT), env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                         stderr=subprocess.DEVNULL)
+
+    def send(line: str) -> None:
+        p.stdin.write(line.encode() + b"\n")
+        p.stdin.flush()
+
+    def reply() -> dict:
+        ready, _, _ = select.select([p.stdout], [], [], 30)
+        assert ready, "no reply in 30 s"
+        return json.loads(p.stdout.readline())
+
+    try:
+        send(json.dumps({"jsonrpc": "2.0", "id": 0, "method": "initialize", "params": {
+            "protocolVersion": "2025-06-18", "capabilities": {},
+            "clientInfo": {"name": "test", "version": "1"}}}))
+        assert reply()["id"] == 0
+        send('{"jsonrpc": "2.0", "method": "notifications/initialized"}')
+        for n, (line, code) in enumerate(BAD_LINES, start=100):
+            send(line)
+            answer = reply()
+            assert answer["jsonrpc"] == "2.0" and answer["id"] is None, (line, answer)
+            assert answer["error"]["code"] == code, (line, answer)
+            send(json.dumps({"jsonrpc": "2.0", "id": n, "method": "ping"}))
+            assert reply() == {"jsonrpc": "2.0", "id": n, "result": {}}
+        # a response, even one with id null, is never answered; blank lines are skipped
+        send('{"jsonrpc": "2.0", "id": null, "error": {"code": -32600, "message": "no"}}')
+        send("")
+        send(json.dumps({"jsonrpc": "2.0", "id": "last", "method": "ping"}))
+        assert reply() == {"jsonrpc": "2.0", "id": "last", "result": {}}
+    finally:
+        p.stdin.close()
+        p.wait(30)

@@ -5,6 +5,7 @@ and the page's security headers."""
 from __future__ import annotations
 
 import io
+import json
 import os
 import threading
 from pathlib import Path
@@ -71,6 +72,30 @@ def test_a_view_then_a_warm_slider_move_and_a_dxf_read_back(client):
     box = bbox.extents(e for e in doc.modelspace() if e.dxf.layer.upper() == "CUT")
     assert box.size.x == pytest.approx(x1 - x0, abs=1e-6)
     assert box.size.y == pytest.approx(y1 - y0, abs=1e-6)
+
+
+RANGED = ("units mm\nparam w = 40 mm, min=20 mm, max=80 mm\n"
+          "solid p { body = Rectangle(center=(0, 0), width=w, height=20) }\n")
+
+
+def test_a_form_value_out_of_range_or_of_the_wrong_kind_is_said_without_the_cli(client):
+    """The page's values come from its fields and sliders: a value out of its range (a
+    download does not move it into the range as the view does) or of the wrong kind is
+    said naming the field `w`, never the command line's `--set` (issue 83)."""
+    sid = session(client)
+    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
+                                               "values": {"w": "95mm"}})
+    assert r.status_code == 422 and "--set" not in r.text
+    [d] = r.json()["diagnostics"]
+    assert d["code"] == "E0124" and d["message"] == (
+        "the field `w` = `95mm`: 95 mm is outside the range 20 mm .. 80 mm declared for `w`")
+    v = view(client, sid, RANGED, {"w": "95mm"})     # the view moves it in: 80 mm, drawn
+    assert v["ok"] and v["clamped"] == {"w": 80.0}
+    v = view(client, sid, RANGED, {"w": "50 deg"})
+    assert not v["ok"] and "--set" not in json.dumps(v)
+    [d] = v["diagnostics"]
+    assert d["code"] == "E0113" and d["message"].startswith("the field `w` = `50 deg`: ")
+    assert d["hint"] == "give it in a length unit, e.g. `40mm` in the field `w`"
 
 
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):

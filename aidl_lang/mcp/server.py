@@ -33,6 +33,7 @@ from ..parser import MAX_NESTING
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from ..sources import MAX_DRAWING_BYTES
 from . import compact as C
+from . import stdio
 from . import tools as T
 from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult,
                       WriteResult)
@@ -321,6 +322,12 @@ class _Server(MCPServer):
                     raise MCPError(INVALID_PARAMS, f"`{k}` is text of at most {MAX_REQUEST} "
                                                    "characters")
         return await super().get_prompt(name, arguments, context)
+
+    async def run_stdio_async(self) -> None:
+        """The SDK's stdio serving, with JSON-RPC's error replies to lines that are no
+        message (the SDK drops them: :mod:`.stdio`)."""
+        await stdio.serve(self._lowlevel_server,
+                          self._lowlevel_server.create_initialization_options())
 
 
 def build_server(root: str, budget: float = 1.0,

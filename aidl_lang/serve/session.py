@@ -38,6 +38,7 @@ from ..solver.holds import build_rows
 from ..sources import SourceRefused, read_program
 from ..typecheck import check
 from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
+from .wording import for_forms
 
 
 
@@ -400,6 +401,9 @@ def _internal(e: BaseException, stage: str) -> DiagnosticSink:
 
 
 def _diag_json(d: Diagnostic, sources: dict) -> dict:
+    """``d`` as the page shows it, a param value named as the form's field, not as ``--set``
+    (:func:`.wording.for_forms`)."""
+    d.reword(for_forms)
     j = d.to_json(sources)
     return {k: j[k] for k in ("code", "severity", "message", "span", "hint", "rendered")}
 
