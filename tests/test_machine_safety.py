@@ -252,22 +252,26 @@ def test_laid_out_lead_ins_keep_the_clearance(tmp_path, capsys):
 
 
 def test_a_lead_in_tangent_to_a_disc_is_moved_or_said():
-    """A disc whose tangent line passes through a plate's corner: the straight lead-in from
-    that corner touched the disc (distance 0) with no note."""
+    """The plate's lead-in runs from (10, 20) down onto its corner (10, 10) (alone, as
+    before); a disc of radius 5 at (15, 15) touches that line: the lead-in ran tangent to it
+    at distance 0 with no note (the ray test missed the disc's chords, which lie inside the
+    circle); now it starts at another corner, its whole 10 mm clear of the disc."""
     src = """assembly kit {
     solid a {
         body = Rectangle(center=(0, 0), width=20, height=20)
         Fixed(body)
     }
     solid d {
-        disc = Circle(center=(-5, -16), radius=5)
+        disc = Circle(center=(15, 15), radius=5)
         Fixed(disc)
     }
 }
 """
     import dataclasses
     job = gcode.job(_output(src), dataclasses.replace(DEFAULTS["laser"], lead_in=10))
-    check_lead_ins(job, 10)
+    got = check_lead_ins(job, 10)
+    assert len(got) == 2 * 2 and all(g[0] == pytest.approx(10, abs=1e-9) for g in got)
+    assert min(g[1] for g in got) > CLEAR
 
 
 # ------------------------------------------------------------------ 4. profile numbers
