@@ -335,3 +335,108 @@ def test_power_0_everywhere_reports_no_cut(tmp_path, capsys):
     assert "p.gcode: cut 0.0 mm (370.3 mm more with the beam off: power 0)" in said.out
     assert said.err.count("aidl: warning: the machine profile") == 2      # inner and outer
     assert not any(m.on for m in replay((tmp_path / "p.gcode").read_text()))
+
+
+# ------------------------------------------------------------------ 3. the router's bit
+def _slit_plate(bridge: float, extra: str = "") -> str:
+    """A 60 x 40 plate with a slit along x = 30 stopped ``bridge`` mm short of both edges."""
+    return f"""solid plate {{
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    cut slit {{
+        l = Line((30, {bridge}), (30, {40 - bridge}))
+    }}{extra}
+    Fixed(body)
+}}
+"""
+
+
+def _render_cli(tmp_path, capsys, src, out, *args):
+    p = tmp_path / "t.aidl"
+    p.write_text(src)
+    code = main(["render", str(p), "-o", str(tmp_path / out), *args])
+    said = capsys.readouterr()
+    assert code == 0, said.err
+    return (tmp_path / out), said.out + said.err
+
+
+def _pieces_after_the_bit(text: str, r: float) -> int:
+    """The plate (60 x 40) less every full-depth cutting move of the replayed router file
+    widened by the bit's radius (shapely): how many pieces the router leaves, counted apart
+    from the writer."""
+    from shapely.geometry import box
+    from shapely.ops import unary_union
+    moves = replay(text, "router")
+    deepest = min(m.z for m in moves if m.on)
+    swept = unary_union([LineString(_pts(m)).buffer(r, 64) for m in moves
+                         if m.on and m.p != m.q and m.z == deepest])
+    left = box(0, 0, 60, 40).difference(swept)
+    return len([g for g in getattr(left, "geoms", [left]) if g.area > 1e-6])
+
+
+@pytest.mark.parametrize("bridge, pieces", [(1.0, 2), (1.5, 2), (1.6, 1), (3.0, 1)])
+def test_a_slit_the_router_widens_through_the_edges_is_W0510(tmp_path, capsys, bridge, pieces):
+    """The design's numbers: bridges of 1 and 1.5 mm are less than the 3.175 mm bit's
+    radius (1.5875 mm): the slot runs through both edges and the plate comes out in two
+    pieces (said by nothing before); 1.6 and 3 mm leave bridges of 0.0125 and 1.41 mm."""
+    f, said = _render_cli(tmp_path, capsys, _slit_plate(bridge), "p.gcode", "--machine",
+                          "router")
+    assert _pieces_after_the_bit(f.read_text(), R) == pieces     # the replayed file agrees
+    if pieces == 1:
+        assert "W0510" not in said and "bridge" not in said
+        return
+    assert f"t.aidl:3:5: warning[W0510]: part `plate` comes out of the router in 2 pieces, " \
+        "not 1" in said
+    assert (f"(between through-cut `plate.slit.l` and the outline of `plate`: {bridge:g} mm "
+            "wide, less than the bit's reach, 1.5875 mm)") in said
+    assert said.count("comes out of the router") == 1      # located once, not again unlocated
+    assert "; warning: part `plate` comes out of the router in 2 pieces" in f.read_text()
+
+
+def test_the_laser_and_a_small_bit_leave_the_slit_alone(tmp_path, capsys):
+    _, said = _render_cli(tmp_path, capsys, _slit_plate(1.0), "p.gcode")
+    assert "W0510" not in said
+    (tmp_path / "m.toml").write_text('kind = "router"\ntool_diameter = 1.5\n')
+    f, said = _render_cli(tmp_path, capsys, _slit_plate(1.0), "p.gcode", "--machine",
+                          str(tmp_path / "m.toml"))
+    assert "W0510" not in said and "bridge" not in said
+    assert _pieces_after_the_bit(f.read_text(), 0.75) == 1
+
+
+def test_a_bridge_the_bit_cuts_away_without_splitting_is_a_note(tmp_path, capsys):
+    """A slit 1 mm from a hole and another slit 2 mm from it: the bit joins them (less than
+    its radius, less than its diameter) but the plate stays one piece: notes."""
+    extra = """
+    hole h { c = Circle(center=(45, 20), radius=5) }
+    cut near { l = Line((39, 10), (39, 30)) }
+    cut twin { l = Line((32, 10), (32, 30)) }"""
+    f, said = _render_cli(tmp_path, capsys, _slit_plate(3.0, extra), "p.gcode", "--machine",
+                          "router")
+    assert "W0510" not in said
+    assert ("note: the router's bit (3.175 mm across) joins through-cut `plate.near.l` to a "
+            "hole of `plate`: the bridge between them is 1 mm wide, less than its radius "
+            "(1.5875 mm), and is cut away") in said
+    assert ("joins through-cut `plate.slit.l` to through-cut `plate.twin.l`: the bridge "
+            "between them is 2 mm wide, less than its diameter (3.175 mm)") in said
+
+
+@LAW
+@given(st.floats(0.2, 4.0), st.floats(0.2, 4.0), st.sampled_from([1.0, 3.175, 6.0]))
+def test_the_router_splits_a_plate_exactly_when_both_bridges_are_narrower_than_its_reach(
+        low, high, tool):
+    """A slit from ``low`` mm above the plate's bottom to ``high`` mm below its top: the
+    plate comes apart exactly when both bridges are less than the tool radius; the G-code
+    says W0510 then and only then."""
+    import dataclasses
+    src = f"""solid plate {{
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    cut slit {{ l = Line((30, {low:.3f}), (30, {40 - high:.3f})) }}
+    Fixed(body)
+}}
+"""
+    r = tool / 2
+    if min(abs(low - r), abs(high - r)) < 0.01:
+        return                                           # too close to call by sampling
+    job = gcode.job(_output(src), dataclasses.replace(DEFAULTS["router"], tool_diameter=tool))
+    split = round(low, 3) < r and round(high, 3) < r
+    assert _pieces_after_the_bit(job.text, r) == (2 if split else 1)
+    assert any("comes out of the router in 2 pieces" in w for w in job.warnings) == split

@@ -643,6 +643,9 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     if m.kind == "router":
         from ..part.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
+        more, split = router_notes(output, m.tool_diameter)
+        notes += more
+        warnings += split
         output = tool_path(output, m.tool_diameter)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
@@ -659,6 +662,23 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     head = _header(output, m, w)
     return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes,
                sum(w.dark.values()))
+
+
+W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
+
+
+def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]:
+    """What a router's bit of ``diameter`` mm does to ``output``'s through-cuts beyond the
+    design (:func:`~..fabrication.bridges.router_bridges`): the notes of the bridges it cuts
+    through (three at most, then their count) and the warnings of the parts it cuts into
+    more pieces (each ending :data:`W0510_TAG`)."""
+    from ..fabrication.bridges import bridge_note, router_bridges, split_message
+    bridges, splits = router_bridges(output, diameter)
+    split = {s.part for s in splits}
+    said = [bridge_note(b, diameter) for b in bridges if b.part not in split]
+    notes = said[:3] + ([f"and {len(said) - 3} more bridges the bit cuts away"]
+                        if len(said) > 3 else [])
+    return notes, [split_message(s, diameter) + W0510_TAG for s in splits]
 
 
 def tool_path(output: Output, diameter: float) -> Output:
