@@ -127,15 +127,23 @@ def _pts(m, step=0.02):
 
 
 def lead_in_clearances(text: str, kind: str = "laser"):
-    """Each lead-in of the replayed ``text`` (a run's first move when it is a straight line
-    from a point off the rest of the run: onto its loop from the scrap) as ``(length,
+    """Each lead-in of the replayed ``text`` (a run's first move after a travel when it is a
+    straight line from a point off the rest of the run: onto its loop from the scrap) as ``(length,
     distance to the nearest other cut path or lead-in, distance to its own loop's path from
     0.52 mm on)``, by shapely."""
+    moves = replay(text, kind)
+    after_travel, last = set(), None          # the moves whose last XY move was a travel
+    for mv in moves:
+        if last is not None and last.g == 0:
+            after_travel.add(id(mv))
+        if mv.p != mv.q:
+            last = mv
     leads, runs = [], []
-    for run in paths(replay(text, kind)):
+    for run in paths(moves):
         m = run[0]
         rest = [p for mv in run[1:] for p in _pts(mv)]
-        if m.g == 1 and len(rest) > 1 and LineString(rest).distance(Point(m.p)) > 1e-6:
+        if m.g == 1 and id(m) in after_travel and len(rest) > 1 and \
+                LineString(rest).distance(Point(m.p)) > 1e-6:
             leads.append(m)
             runs.append(LineString(rest))
         else:

@@ -47,8 +47,11 @@ Plotter (``kind = "plotter"``): the pen is Z: up at ``safe_height`` (``G0 Z``), 
 
 Lead-in (profile ``lead_in`` mm, lasers and routers): each closed cut starts that far off its
 path on the scrap side (to the right of the direction of travel: outside an outline, inside
-a hole), a straight ``G1`` onto it, which never crosses another cut nor leaves the sheet
-(:func:`lead_in`: shortened, moved to another entry of the loop, or left out, with a note).
+a hole), a straight ``G1`` onto it, every point of which keeps :data:`LEAD_CLEARANCE` from
+every other cut and the sheet's edge (:func:`lead_in`: shortened, moved to another entry of
+the loop, or left out, with a note).  The first travel is always written, also to X0 Y0:
+where the head is when the program starts is unknown.  A router's bit that cuts a part apart
+(through-cuts nearer its edges than the bit's reach) is a warning (:func:`router_notes`).
 Tabs that do not fit a cut are fewer or smaller (:func:`fit_tabs`, with a note).  The notes
 are ``; note:`` lines of the header (:func:`read_summary`).
 
