@@ -666,16 +666,16 @@ from test_machine_safety import CLEAR, lead_in_clearances  # noqa: E402
 MACHINE_SEEDS = [
     """assembly kit {
     solid a {
-        body = Rectangle(center=(0, 0), width=40, height=40)
-        hole h { c = Circle(center=(5, 5), radius=6) }
+        body = Rectangle(center=(0, 0), width=20, height=20)
+        hole h { c = Circle(center=(2, 2), radius=5) }
         Fixed(body)
     }
     solid b {
-        body = Rectangle(center=(40.5, 3), width=40, height=30)
+        body = Rectangle(center=(20.3, 0), width=20, height=20)
         Fixed(body)
     }
     solid c {
-        disc = Circle(center=(15, 36), radius=15)
+        disc = Circle(center=(40.6, 0), radius=10)
         Fixed(disc)
     }
 }
