@@ -661,25 +661,13 @@ def test_malformed_svg_elements_are_notes_or_a_drawing_error(svg):
 # and router slits near edges, holes and each other (the bit's bridges), mutated; each is
 # rendered as G-code with a lead-in profile, a router profile with tabs or the plotter:
 # never an internal error, and every lead-in of the file keeps the promised clearance
-from test_machine_safety import CLEAR, lead_in_clearances  # noqa: E402
+from test_machine_safety import CLEAR, kit, lead_in_clearances  # noqa: E402
 
 MACHINE_SEEDS = [
-    """assembly kit {
-    solid a {
-        body = Rectangle(center=(0, 0), width=20, height=20)
-        hole h { c = Circle(center=(2, 2), radius=5) }
-        Fixed(body)
-    }
-    solid b {
-        body = Rectangle(center=(20.3, 0), width=20, height=20)
-        Fixed(body)
-    }
-    solid c {
-        disc = Circle(center=(40.6, 0), radius=10)
-        Fixed(disc)
-    }
-}
-""",
+    kit("body = Rectangle(center=(0, 0), width=20, height=20)\n"
+        "hole h { c = Circle(center=(2, 2), radius=5) }",
+        "body = Rectangle(center=(20.3, 0), width=20, height=20)",
+        "body = Circle(center=(40.6, 0), radius=10)"),
     """solid plate {
     body = Rectangle(center=(30, 20), width=60, height=40)
     hole h { c = Circle(center=(45, 20), radius=5) }

@@ -166,6 +166,15 @@ def lead_in_clearances(text: str, kind: str = "laser"):
     return out
 
 
+def kit(*solids: str) -> str:
+    """An assembly of solids `a`, `b`, ... each given as its lines (``body = ...``, a hole
+    line), each held where it is drawn (``Fixed(body)``)."""
+    parts = [f"    solid {chr(97 + i)} {{\n"
+             + "".join(f"        {ln}\n" for ln in lines.split("\n"))
+             + "        Fixed(body)\n    }\n" for i, lines in enumerate(solids)]
+    return "assembly kit {\n" + "".join(parts) + "}\n"
+
+
 SHAPES = st.one_of(
     st.tuples(st.just("rect"), st.floats(6, 30), st.floats(6, 30)),
     st.tuples(st.just("disc"), st.floats(3, 15), st.just(0.0)))
@@ -178,7 +187,7 @@ def layouts(draw):
     keep clear of its neighbours."""
     src, x = [], 0.0
     n = draw(st.integers(2, 4))
-    for i in range(n):
+    for _ in range(n):
         kind, a, b = draw(SHAPES)
         gap = draw(st.sampled_from([0.05, 0.3, 0.6, 1.0, 3.0]))
         dy = draw(st.floats(-8, 8))
@@ -190,10 +199,10 @@ def layouts(draw):
         size = min(w, a if kind == "disc" else b)
         if size >= 12 and draw(st.booleans()):          # a hole the router's tool fits
             r = size / 5
-            hole = f"\n        hole h {{ c = Circle(center=({cx:.4f}, {dy:.4f}), radius={r:.4f}) }}"
-        src.append(f"    solid p{i} {{\n        body = {body}{hole}\n        Fixed(body)\n    }}")
+            hole = f"\nhole h {{ c = Circle(center=({cx:.4f}, {dy:.4f}), radius={r:.4f}) }}"
+        src.append(f"body = {body}{hole}")
         x += gap + w
-    return "assembly kit {\n" + "\n".join(src) + "\n}\n"
+    return kit(*src)
 
 
 def check_lead_ins(job, lead: float, kind: str = "laser"):
@@ -224,21 +233,9 @@ def test_no_lead_in_comes_nearer_than_the_clearance_to_another_cut(src, lead, ki
         assert any("without a lead-in" in t for t in job.notes), job.notes
 
 
-NEIGHBOURS = """assembly kit {
-    solid a {
-        body = Rectangle(center=(0, 0), width=40, height=40)
-        Fixed(body)
-    }
-    solid b {
-        body = Rectangle(center=(0, 50), width=40, height=40)
-        Fixed(body)
-    }
-    solid c {
-        disc = Circle(center=(60, 0), radius=15)
-        Fixed(disc)
-    }
-}
-"""
+NEIGHBOURS = kit("body = Rectangle(center=(0, 0), width=40, height=40)",
+                 "body = Rectangle(center=(0, 50), width=40, height=40)",
+                 "body = Circle(center=(60, 0), radius=15)")
 
 
 def test_laid_out_lead_ins_keep_the_clearance(tmp_path, capsys):
@@ -264,17 +261,8 @@ def test_a_lead_in_tangent_to_a_disc_is_moved_or_said():
     before); a disc of radius 5 at (15, 15) touches that line: the lead-in ran tangent to it
     at distance 0 with no note (the ray test missed the disc's chords, which lie inside the
     circle); now it starts at another corner, its whole 10 mm clear of the disc."""
-    src = """assembly kit {
-    solid a {
-        body = Rectangle(center=(0, 0), width=20, height=20)
-        Fixed(body)
-    }
-    solid d {
-        disc = Circle(center=(15, 15), radius=5)
-        Fixed(disc)
-    }
-}
-"""
+    src = kit("body = Rectangle(center=(0, 0), width=20, height=20)",
+              "body = Circle(center=(15, 15), radius=5)")
     import dataclasses
     job = gcode.job(_output(src), dataclasses.replace(DEFAULTS["laser"], lead_in=10))
     got = check_lead_ins(job, 10)

@@ -25,8 +25,9 @@ SLIVER = 1e-6     # mm^2: pieces of less area left by the booleans' rounding are
 
 @dataclass(frozen=True)
 class Bridge:
-    """Material between through-cut ``cut`` (its geometry's path) and ``other`` (words: ``the outline of `p```,
-    ``a hole of `p```, ``through-cut `p.s.l```) of part ``part``: ``width`` mm in the design;
+    """Material between through-cut ``cut`` (its geometry's path) and ``other`` (words:
+    ``the outline of `p```, ``a hole of `p```, ``through-cut `p.s.l```) of part ``part``:
+    ``width`` mm in the design;
     ``left`` mm of it after the bit (``width`` less the tool radius, twice for two
     through-cuts), negative where the bit cuts through it."""
     part: str

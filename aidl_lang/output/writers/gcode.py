@@ -360,7 +360,8 @@ def with_tabs(path: list, n: int, width: float) -> list[tuple]:
     return out
 
 
-LEAD_CLEARANCE = 0.5   # mm: a lead-in keeps at least this far from every other cut and the sheet's edge
+# mm: every point of a lead-in keeps at least this far from every other cut and the sheet's edge
+LEAD_CLEARANCE = 0.5
 LEAD_TRIES = 16        # entries of a loop tried for a lead-in that fits whole
 LEAD_CHORD_TOL = 0.01  # mm: added to the clearance for the chords the cuts are sampled as
 
