@@ -448,9 +448,9 @@ class _Paths:
         A = np.empty((len(idx), 2))
         B = np.empty((len(idx), 2))
         A[mine], B[mine] = self.a[idx[mine]], self.b[idx[mine]]
-        for n, k in enumerate(idx):
-            if k < 0:
-                A[n], B[n] = self.leads[-k - 1]
+        if not mine.all():                     # lead-ins, filed as -1, -2, ...
+            got = np.array([self.leads[-k - 1] for k in idx[~mine].tolist()], dtype=float)
+            A[~mine], B[~mine] = got[:, 0], got[:, 1]
         lo, hi = _capsule_spans(np.asarray(p, dtype=float), np.asarray(u, dtype=float),
                                 A, B, c)
         ownk = np.zeros(len(idx), dtype=bool)
