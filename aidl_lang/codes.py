@@ -518,7 +518,7 @@ warning (W0503, W0402) explains why. Give the face an inside, or delete it.
         m = Mirrored(l, about=l)     # the same segment back: a loop of zero area
     }
 """),
-    "W0510": ("part changes topology under a param value", """
+    "W0510": ("part changes topology under a param value or the router's bit", """
 With `--set NAME=VALUE` (or a slider in `aidl serve`), a part has another topology than with
 the program's own defaults: a different number of pieces or openings, two holes that now merge
 (or no longer do), a hole that now breaks through the outline, or two faces of different
@@ -534,6 +534,21 @@ fit.
     # aidl check examples/bracket.aidl --set bolts=5
     # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges
     #                 with hole `bracket.first_pattern[4]`
+
+Also from `aidl render --machine router` (G-code): a part the router's bit cuts into more
+pieces than the design has. A through-cut has no width in the design; the bit cuts it as wide
+as itself, round past each end, so a bridge of material narrower than the bit's radius between
+a through-cut and the part's outline or a hole (narrower than its diameter between two
+through-cuts) is cut away. A slit stopped 1 mm short of both edges of a plate comes out, with a
+3.175 mm bit, as a slot through both edges: two pieces where `aidl check` and `aidl parts`
+say one. The warning is located at the through-cut and gives the bridge's width and the bit's
+reach; a bridge cut away that splits nothing is a note in the G-code. Leave bridges wider than
+the bit's radius or use a smaller tool (the profile's `tool_diameter`).
+
+    solid plate {
+        body = Rectangle(center=(30, 20), width=60, height=40)
+        cut slit { l = Line((30, 1), (30, 39)) }     # 1 mm bridges: less than 1.5875 mm
+    }
 """),
     "W0511": ("parts of an assembly interpenetrate", """
 Two separate parts (the solid children of an assembly) overlap: parts cut from a sheet cannot

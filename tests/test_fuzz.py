@@ -655,3 +655,74 @@ def test_malformed_svg_elements_are_notes_or_a_drawing_error(svg):
         read_drawing(svg.encode(), "f.svg")
     except DrawingError as e:
         assert e.code in CODES and e.message
+
+
+# machine jobs: seeds with parts laid close (lead-ins must keep clear of their neighbours)
+# and router slits near edges, holes and each other (the bit's bridges), mutated; each is
+# rendered as G-code with a lead-in profile, a router profile with tabs or the plotter:
+# never an internal error, and every lead-in of the file keeps the promised clearance
+from test_machine_safety import CLEAR, kit, lead_in_clearances  # noqa: E402
+
+MACHINE_SEEDS = [
+    kit("body = Rectangle(center=(0, 0), width=20, height=20)\n"
+        "hole h { c = Circle(center=(2, 2), radius=5) }",
+        "body = Rectangle(center=(20.3, 0), width=20, height=20)",
+        "body = Circle(center=(40.6, 0), radius=10)"),
+    """solid plate {
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    hole h { c = Circle(center=(45, 20), radius=5) }
+    cut slit {
+        l = Line((30, 1), (30, 39))
+    }
+    cut near {
+        for i in range(3) {
+            l = Line((8 + 2 * i, 2), (8 + 2 * i, 18))
+        }
+    }
+    Fixed(body)
+}
+""",
+]
+MACHINE_PROFILES = ["lead_in = 5\n", "lead_in = 30\n", 'kind = "router"\nlead_in = 3\ntabs = 2\n',
+                    'kind = "router"\ntool_diameter = 6\n', 'kind = "plotter"\n']
+
+
+@st.composite
+def mutated_machine_seeds(draw):
+    """A machine seed with one or two of its numbers replaced (sizes, gaps, slit ends)."""
+    src = draw(st.sampled_from(MACHINE_SEEDS))
+    for _ in range(draw(st.integers(1, 2))):
+        toks = [(m.start(), m.end()) for m in re.finditer(r"\b\d+(\.\d+)?\b", src)]
+        a, b = toks[draw(st.integers(0, len(toks) - 1))]
+        src = src[:a] + draw(st.sampled_from(["0", "0.5", "1", "1.6", "2", "3", "39.5", "60",
+                                              "1e-300", "1e300", "-1"])) + src[b:]
+    return src
+
+
+@settings(deadline=None, max_examples=20, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(mutated_machine_seeds(), st.sampled_from(MACHINE_PROFILES))
+@example(MACHINE_SEEDS[0], MACHINE_PROFILES[1])
+@example(MACHINE_SEEDS[1], MACHINE_PROFILES[2])
+def test_machine_jobs_of_mutated_programs_keep_their_promises(src, profile):
+    import os
+    folder = _workdir()
+    path = os.path.join(folder, "m.aidl")
+    with open(path, "w") as f:
+        f.write(src)
+    prof = os.path.join(folder, "fuzz-machine.toml")
+    with open(prof, "w") as f:
+        f.write(profile)
+    out = os.path.join(folder, "m.gcode")
+    if os.path.exists(out):
+        os.remove(out)
+    rc, said = cli_no_internal("render", path, "-o", out, "--machine", prof)
+    if rc != 0:
+        assert not os.path.exists(out), said
+        return
+    kind = "router" if "router" in profile else "plotter" if "plotter" in profile else "laser"
+    with open(out) as f:
+        text = f.read()
+    if kind != "plotter":
+        for length, d_other, d_own in lead_in_clearances(text, kind):
+            assert d_other >= CLEAR - 1e-6 and d_own >= CLEAR - 1e-6, (length, d_other, said)
