@@ -500,7 +500,8 @@ class Result:
         deadline = self.compiled.deadline
         if deadline is not None and nest_time:
             from .limits import Deadline
-            deadline = Deadline(deadline.at + nest_time, deadline.budget)
+            from .output.fabrication.layout import nest_cpu_seconds
+            deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget)
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)

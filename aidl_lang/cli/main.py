@@ -498,9 +498,12 @@ def cmd_render(args) -> int:
         if args.layout:
             from ..output.fabrication.layout import place, plan
             if args.nest_time and res.deadline is not None:
-                # the nesting's own time limit comes on top of the compile's wall budget
+                # the nesting's own time limit comes on top of the compile's budget (the CPU
+                # seconds of its threads)
                 from ..limits import Deadline
-                res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
+                from ..output.fabrication.layout import nest_cpu_seconds
+                res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
+                                        res.deadline.budget)
             where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
