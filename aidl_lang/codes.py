@@ -229,8 +229,10 @@ instance to other parts with constraints in the parent structure.
 One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
-one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of wall time
-for the whole compile. Each construct's own limit
+one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of CPU time
+for the whole compile (this process's CPU seconds, all its threads: the same program gets the
+same answer on a quiet machine and on a busy one; wall time is only an outer guard, at 10 times
+the CPU seconds, for a machine that gives the compile less than a tenth of a core). Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
@@ -243,13 +245,13 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`). The wall time reaches every stage after the
+(e.g. `aidl render model.aidl --budget 4`). The CPU time reaches every stage after the
 solve too, each looking at it as it goes (every few parts, pairs or cells): the booleans, the
 shape checks, the exact outlines, the writers, `aidl parts`' list and `aidl check
 --describe`'s description (one budget for the whole command; `Result.output` and
 `Result.description` of the Python API, and the MCP `describe`, get a fresh budget per call)
 and the comparison with the defaults under `--set` (W0510): "the program ran out of its
-evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of wall time", at that
+evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of CPU time", at that
 part's structure. A program that runs out of memory
 before any figure of the budget is also `E0304`, wherever it happens (interpreting, solving,
 the booleans, the shape checks, the exact outlines, a writer) and in every front end (the
@@ -833,7 +835,7 @@ out; the warning names each one with its code point.
 A note, not a warning: a family of the shape checks on the final part stopped before it had
 looked at everything, so what it would have said about the parts named is not known. Each
 family (holes, pieces, engravings, walls between features, openings, thin walls, slits,
-ledges, text, copies that merge) holds a share of the compile's wall time (a fifth of the
+ledges, text, copies that merge) holds a share of the compile's CPU time (a fifth of the
 budget: 3 s of the default 15 s) and stops past it, or before a step that cannot be interrupted
 (one Manifold call) when that step is expected to end past its share or past the compile's
 budget; and none lists more than 3,000,000 pairs

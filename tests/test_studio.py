@@ -31,7 +31,7 @@ SLOW = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, 
 SPIN = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
         "    for i in range(10000) { for j in range(10000) { k = i * j } }\n}\n")
 SPIN_BUDGET = 400
-LIMIT = 3.0             # s: the wall limit set for SPIN (wall_factor), far below its minutes
+LIMIT = 3.0             # s: the wall limit set for SPIN (kill_after), far below its minutes
 
 
 @pytest.fixture
@@ -173,11 +173,11 @@ def test_a_full_studio_answers_busy_and_a_long_compile_is_stopped(tmp_path):
     app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, wait=0.3,
                               budget=SPIN_BUDGET))
     studio = app.state.studio
-    pool, generous = studio.pool, studio.settings.wall_factor
+    pool, generous = studio.pool, studio.settings.kill_after
     with TestClient(app) as c:
         sid = session(c)
         view(c, sid, BRACKET)                              # the worker is warm
-        studio.settings.wall_factor = LIMIT / (15 * SPIN_BUDGET)     # a compile's limit: LIMIT
+        studio.settings.kill_after = LIMIT     # a compile's limit: LIMIT
         slow: dict = {}
         t = threading.Thread(target=lambda: slow.update(
             r=c.post("/api/view", json={"sid": sid, "source": SPIN, "values": {}})))
@@ -194,7 +194,7 @@ def test_a_full_studio_answers_busy_and_a_long_compile_is_stopped(tmp_path):
         doc = slow["r"].json()
         assert slow["r"].status_code == 200 and not doc["ok"]
         assert doc["error"].startswith(f"the compile took longer than {LIMIT:g} s"), doc
-        studio.settings.wall_factor = generous
+        studio.settings.kill_after = generous
         assert view(c, sid, BRACKET)["ok"]                 # and the next one runs
 
 

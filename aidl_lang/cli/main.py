@@ -19,10 +19,10 @@ from __future__ import annotations
 import json
 import os
 import sys
-import time
 from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
+from ..limits import now
 from ..solver import solve_text
 from .arguments import SUBCOMMANDS, _parser
 
@@ -125,10 +125,10 @@ def cmd_check(args) -> int:
     res = program.compiled
     extra = {}
     dofs = None
-    # the whole run has one wall-time budget (15 s x --budget) from the start of the compile:
+    # the whole run has one budget (15 s x --budget) from the start of the compile:
     # the freedom count and the redundancy search get what the parse, solve and checks left
     end = (res.deadline.at if res.deadline is not None
-           else time.monotonic() + _budget(args).seconds)
+           else now() + _budget(args).seconds)
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
@@ -174,7 +174,7 @@ def cmd_check(args) -> int:
             n = program.not_searched
             why = program.not_searched_why
             if why == "out of time":
-                why += (f": the budget's {_budget(args).seconds:g} s of wall time; --budget K "
+                why += (f": the budget's {_budget(args).seconds:g} s of CPU time; --budget K "
                         "gives K times more" if args.dof else
                         f": the search's {REDUNDANCY_SECONDS:g} s; `--dof` searches in the "
                         "whole budget")
@@ -498,9 +498,12 @@ def cmd_render(args) -> int:
         if args.layout:
             from ..output.fabrication.layout import place, plan
             if args.nest_time and res.deadline is not None:
-                # the nesting's own time limit comes on top of the compile's wall budget
+                # the nesting's own time limit comes on top of the compile's budget (the CPU
+                # seconds of its threads)
                 from ..limits import Deadline
-                res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
+                from ..output.fabrication.layout import nest_cpu_seconds
+                res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
+                                        res.deadline.budget)
             where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
@@ -613,7 +616,7 @@ def cmd_parts(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    # the parts list gets what the compile left of its wall-time budget (E0304 past it)
+    # the parts list gets what the compile left of its budget (E0304 past it)
     rows = parts_list(build(res.drawing, res.model.root.name, deadline=res.deadline),
                       res.deadline)
     if args.json:

@@ -865,12 +865,11 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
     (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
     :class:`~.read.DrawingError`."""
-    import time
     from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
     from ..limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
     from .read import MAX_ENTITIES, DrawingError, read_drawing
     budget = budget or DEFAULT_BUDGET
-    deadline = Deadline(time.monotonic() + budget.seconds, budget)
+    deadline = Deadline.starting(budget)
     limit = max(1, int(MAX_ENTITIES * budget.geometry / DEFAULT_BUDGET.geometry))
     base = name.replace("\\", "/").rsplit("/", 1)[-1]
     too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "

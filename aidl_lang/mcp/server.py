@@ -64,7 +64,7 @@ Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
                 "file's units, as the string \"40\") or {\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
     description=f"A factor of the default evaluation budget (steps, objects, sizes, 15 s of "
-                f"wall time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
+                f"CPU time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
                 f"(`aidl mcp --budget`).",
     gt=0, le=T.MAX_BUDGET)]
 Dof = Annotated[bool, Field(
@@ -339,7 +339,7 @@ def build_server(root: str, budget: float = 1.0,
     (:meth:`.worker.Pool.warm`), so the first call is as fast as the rest."""
     ws = T.Workspace(root, budget)
     # the compiling tools run side by side in a pool of warm worker processes, each call
-    # killed past twice the budget's wall time (aidl_lang/mcp/worker.py): a call always ends,
+    # killed past the budget's wall guard (aidl_lang/mcp/worker.py): a call always ends,
     # and a slow one delays only itself
     from .worker import Pool
     work = Pool(str(ws.root), budget)

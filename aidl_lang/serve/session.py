@@ -312,11 +312,10 @@ class Session:
         self.dof = []
         if solver is None:
             return
-        import time
-        from ..limits import DEFAULT_BUDGET
+        from ..limits import DEFAULT_BUDGET, now
         from ..solver.freedom import degrees_of_freedom
         try:            # bounded as a compile is (issue 48): a structure past it is not counted
-            end = time.monotonic() + DEFAULT_BUDGET.seconds
+            end = now() + DEFAULT_BUDGET.seconds
             self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,
                          "dof": d.dof if d.rank >= 0 else None, "floating": d.floating[:12]}
                         for d in degrees_of_freedom(solver, deadline=end)]
