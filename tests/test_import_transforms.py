@@ -812,7 +812,12 @@ def svg_elements(draw):
             segs.append(("A", draw(size), draw(size), draw(angle), draw(angle), draw(sweep)))
         else:
             segs.append((k, *[draw(point) for _ in range(" LQC".index(k))]))
-    return _path(draw(point), segs, draw(st.booleans()))
+    text, prims = _path(draw(point), segs, draw(st.booleans()))
+    ends = [np.asarray(pr[1], float) if pr[0] in "ML" else np.asarray(pr[-1], float)
+            if pr[0] in "CQ" else _arc_end(*pr[1:4], pr[4] + pr[5])
+            for pr in prims if pr[0] != "Z"]
+    assume(all(math.dist(a, b) > 1 for a, b in zip(ends, ends[1:])))   # no piece of no length
+    return text, prims
 
 
 transform_op = st.one_of(
