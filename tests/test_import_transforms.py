@@ -864,3 +864,24 @@ def test_law_every_svg_element_under_a_transform_chain_is_its_mapped_path(shape,
     got, want = read_drawing(svg(body), "law.svg"), read_drawing(svg(ref), "ref.svg")
     assert not got.notes and not want.notes, [n.message for n in got.notes + want.notes]
     assert _hausdorff(got, want) <= 1e-7, (body, ref)
+
+
+@pytest.mark.parametrize("tr, det", [("scale(-1,-1)", 1.0), ("scale(-2 -2)", 4.0),
+                                     ("matrix(-1,0,0,-2,0,0)", 2.0)])
+def test_a_plate_under_a_negative_scale_keeps_its_round_hole(tr, det, tmp_path):
+    """Issue 83's transforms over a 50 x 30 plate with a hole of r 5: `aidl import` and
+    `Drawing2D` both give the part of area (1500 - 25 pi) |det| (the hole was dropped: 1500
+    |det|; the circle under matrix(-1,0,0,-2,...) is the 5 x 10 ellipse)."""
+    body = (f'<g transform="{tr}"><rect x="-60" y="-40" width="50" height="30"/>'
+            '<circle cx="-35" cy="-25" r="5"/></g>')
+    want = (1500 - 25 * math.pi) * det
+    text, notes = import_drawing(svg(body), "plate.svg")
+    assert not notes, [n.message for n in notes]
+    res = aidl_lang.compile(source=text, path="plate.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    assert abs(sum(p.area for p in res.output.parts) - want) <= 1e-6, text
+    (tmp_path / "plate.svg").write_bytes(svg(body))
+    res = aidl_lang.compile(source='solid s {\n    d = Drawing2D("plate.svg")\n}\n',
+                            path=str(tmp_path / "s.aidl"))
+    assert res.ok, [str(d) for d in res.errors]
+    assert abs(sum(p.area for p in res.output.parts) - want) <= 1e-6
