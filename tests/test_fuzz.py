@@ -615,12 +615,17 @@ SVG_ELEMENTS = ['<path d="{d}"/>', '<circle cx="{a}" cy="{b}" r="{c}"/>',
                 '<polygon points="{d}"/>', '<polyline points="{d}"/>',
                 '<line x1="{a}" y1="{b}" x2="{c}" y2="{a}"/>',
                 '<g transform="{t}"><path d="{d}"/></g>',
+                '<g transform="{t}"><circle cx="{a}" cy="{b}" r="{c}"/></g>',
+                '<g transform="{t}"><ellipse cx="{a}" cy="{b}" rx="{c}" ry="{a}"/></g>',
+                '<g transform="{t}"><rect x="{a}" y="{b}" width="{c}" height="{a}" rx="{c}"/></g>',
                 '<text x="{a}" y="{b}" font-size="{c}">hi</text>']
 SVG_WORDS = ["M", "m", "L", "l", "H", "v", "C", "s", "Q", "T", "A", "a", "Z", "z", "0", "1", "-1",
              "10", "1e400", "nan", "0.5", ",", " ", "1e-300", "360", ".5.5", "1e", "+"]
 SVG_NUMBERS = ["0", "1", "-1", "10", "1e400", "nan", "inf", "", "abc", "1e-300", "50%"]
 SVG_TRANSFORMS = ["scale(0)", "scale(1e400)", "rotate(nan)", "matrix(0 0 0 0 0 0)",
-                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)"]
+                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)",
+                  "scale(-1,-1)", "scale(-2 -2)", "matrix(-1,0,0,-2,0,0)", "scale(-1e-300)",
+                  "scale(-1 -1) skewX(30)", "scale(-1e300 -1)"]
 
 
 @st.composite
@@ -726,3 +731,39 @@ def test_machine_jobs_of_mutated_programs_keep_their_promises(src, profile):
     if kind != "plotter":
         for length, d_other, d_own in lead_in_clearances(text, kind):
             assert d_other >= CLEAR - 1e-6 and d_own >= CLEAR - 1e-6, (length, d_other, said)
+
+
+# well-formed shapes under mirrors and negative scales: every one drawn (issue 83: a circle
+# or ellipse under scale(-1,-1) was dropped without a word)
+NEGATIVE_SCALES = ["scale(-1,-1)", "scale(-2 -2)", "matrix(-1,0,0,-2,0,0)", "scale(-1 1)",
+                   "scale(1,-0.5)", "scale(-0.5,-3)", "matrix(-1,0.5,0,-2,10,5)",
+                   "rotate(30) scale(-1,-2)", "scale(-1,-1) skewY(20)"]
+SHAPES = ['<circle cx="{x}" cy="{y}" r="4"/>', '<ellipse cx="{x}" cy="{y}" rx="5" ry="2"/>',
+          '<rect x="{x}" y="{y}" width="6" height="3"/>',
+          '<rect x="{x}" y="{y}" width="6" height="3" rx="1" ry="0.5"/>',
+          '<polygon points="{x},{y} {x1},{y} {x},{y1}"/>',
+          '<polyline points="{x},{y} {x1},{y} {x1},{y1}"/>',
+          '<line x1="{x}" y1="{y}" x2="{x1}" y2="{y1}"/>',
+          '<path d="M {x} {y} C {x1} {y} {x1} {y1} {x} {y1} A 3 2 0 0 1 {x} {y} Z"/>',
+          '<path d="M {x} {y} Q {x1} {y} {x1} {y1}"/>']
+
+
+@settings(deadline=None, max_examples=60, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(SHAPES), st.sampled_from(NEGATIVE_SCALES),
+                          st.booleans()), min_size=1, max_size=4))
+def test_shapes_under_negative_scales_are_each_drawn(shapes):
+    """Each shape (every element type), under a group's or its own mirror or negative scale,
+    is drawn: one closed loop, circle, ellipse or open path each (they lie 40 units apart),
+    no note; none left out."""
+    from aidl_lang.drawing import read_drawing
+    body = []
+    for i, (shape, t, own) in enumerate(shapes):
+        x, y = 40.0 * i + 5, 7.0
+        el = shape.format(x=x, y=y, x1=x + 6, y1=y + 5)
+        body.append(el.replace("/>", f' transform="{t}"/>') if own else
+                    f'<g transform="{t}">{el}</g>')
+    d = read_drawing(('<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="200mm" '
+                      'viewBox="0 0 200 200">' + "".join(body) + "</svg>").encode(), "n.svg")
+    assert not d.notes, [n.message for n in d.notes]
+    assert len(d.outlines) + len(d.circles) + len(d.ellipses) + len(d.paths) == len(shapes)

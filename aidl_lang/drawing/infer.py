@@ -53,7 +53,7 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
 from .infer_text import along_texts, stroke_texts
 from .infer_mirror import mirrored_pair, pair_items, write_pair
 from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
-                      _length, _num, _pt, _string)
+                      _length, _num, _pt, _string, _whole_ellipse)
 from .model import Drawing, Note
 
 
@@ -920,18 +920,16 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
-    dep = [len(c) for c in _containers(loops, w.deadline)] if loops else []
+    # whole ellipses are loops too: a part's outline, a hole, an island in a hole
+    every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
+    dep = [len(c) for c in _containers(every, w.deadline)] if every else []
     outer = [segs for segs, k in zip(loops, dep) if k == 0]
     holes = [segs for segs, k in zip(loops, dep) if k % 2 == 1]
     islands = [segs for segs, k in zip(loops, dep) if k and k % 2 == 0]
-    # whole ellipses: holes when inside an outline
-    import numpy as np
-    polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops] \
-        if d.ellipses else []
-    ell_holes, ell_body = [], []
-    for el in d.ellipses:
-        inside = sum(1 for P in polys if len(P) >= 3 and _inside((el[0], el[1]), P))
-        (ell_holes if inside % 2 else ell_body).append(el)
+    ell_dep = dep[len(loops):]
+    ell_body = [el for el, k in zip(d.ellipses, ell_dep) if k == 0]
+    ell_holes = [el for el, k in zip(d.ellipses, ell_dep) if k % 2 == 1]
+    ell_islands = [el for el, k in zip(d.ellipses, ell_dep) if k and k % 2 == 0]
     w.emit(depth, f"solid {name} {{")
     body = None
     outer.sort(key=lambda s: -abs(Loop(list(s)).area))
@@ -979,6 +977,11 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         isl = _Part(w, params, stats, prefix)
         isl.shift = shift
         isl.body(depth + 1, segs, False)
+        w.emit(depth, "}")
+    for k, (cx, cy, rx, ry, rot) in enumerate(ell_islands, start=len(islands) + 1):
+        w.emit(depth, f"solid {name}_island{k} {{")
+        w.emit(depth + 1, f"oval = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
+                          f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
         w.emit(depth, "}")
 
 
