@@ -52,8 +52,8 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
                            recognise)
 from .infer_text import along_texts, stroke_texts
 from .infer_mirror import mirrored_pair, pair_items, write_pair
-from .program import (_Writer, _containers, _cut_notes, _ident, _inside, _layer_items,
-                      _length, _num, _pt, _string)
+from .program import (_Names, _Writer, _containers, _cut_notes, _ident, _inside,
+                      _layer_items, _length, _num, _pt, _string)
 from .model import Drawing, Note
 
 
@@ -125,7 +125,7 @@ class _Part:
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
         self.w, self.params, self.stats, self.prefix = w, params, stats, prefix
-        self.used: set = set()
+        self.used: set = _Names()
         self.shift: tuple | None = None     # (x term, y term) added to every position
         self.anchor: tuple | None = None    # (body Shape, its size params): edges to place by
         self.named: list = []               # [(point, name)]: centres written once, shared
@@ -185,10 +185,13 @@ class _Part:
         return _ident(base, self.used)
 
     def numbered(self, base: str) -> str:
-        k = 1
+        """``base`` with the first free number from 1 (``hole1``), counting on from the
+        last one given (:class:`~.program._Names`: not from 1 for each of 20,000 holes)."""
+        k = self.used.next.get(("numbered", base), 1)
         while f"{base}{k}" in self.used:
             k += 1
         self.used.add(f"{base}{k}")
+        self.used.next[("numbered", base)] = k + 1
         return f"{base}{k}"
 
     def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
@@ -249,6 +252,7 @@ class _Part:
             self.anchor = (sh, sizes)
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
+        own = {id(x) for x in segs}
         for chain in tabs or []:
             tn = self.name("tab")
             if isinstance(chain, Shape):
@@ -267,7 +271,7 @@ class _Part:
                 self.w.emit(depth, f"Fixed({tn})")
             elif self.w.chain(depth, chain, True, tn + "_s"):
                 _emit_holds(self.w, depth, _holds(chain, tn + "_s"))
-            st.in_shapes += sum(1 for s in chain if any(s is x for x in segs))
+            st.in_shapes += sum(1 for s in chain if id(s) in own)
         if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
                 abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             return sh, sizes, nm
@@ -605,6 +609,7 @@ class _Part:
         # one by one, one size param for all
         sizes = self.size_params(base, sh, True)
         rest = list(g)
+        done: set = set()               # (ids) in rows: left out of `rest` after each axis
         for axis in (1, 0):             # equal y: a row along x; equal x: a column
             lines: dict = {}
             for m in rest:
@@ -633,8 +638,8 @@ class _Part:
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
                     w.emit(depth, "}")
                     self.stats.patterns["row"] += 1
-                    for _, m in run:
-                        rest.remove(m)
+                    done.update(id(m) for _, m in run)
+            rest = [m for m in rest if id(m) not in done]
         if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
             # placed together, by the reference nearest their middle (a board's holes move
             # as one when the plate grows)
@@ -964,7 +969,8 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
                                              f"statement writes: left out"))
         w.emit(depth + 1, "}")
         w.emit(depth + 1, "Fixed(cuts)")
-    drawn = [p for p in d.paths if not any(p is q for q in cut)]
+    cut_ids = {id(p) for p in cut}
+    drawn = [p for p in d.paths if id(p) not in cut_ids]
     if d.paths_cut:
         w.crossed += len(drawn)
     eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
