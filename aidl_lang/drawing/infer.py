@@ -356,8 +356,7 @@ class _Part:
     def holes(self, depth: int, loops: list, body) -> None:
         shapes = []
         for k, segs in enumerate(loops):
-            if self.w.deadline is not None and k % 128 == 0:
-                self.w.deadline.check("recognising the holes of the drawing")
+            self.check(k, "recognising the holes of the drawing")
             self.stats.pieces += len(segs)
             sh = recognise(segs)
             if sh is None:
@@ -374,15 +373,22 @@ class _Part:
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
-        for key, g in groups.items():
+        for k, (key, g) in enumerate(groups.items()):
             if len(g) == 1 or g[0].kind == "Polygon":
                 singles += g
                 continue
+            self.check(k, "finding the patterns of the holes", every=1)
             done = self.pattern(depth, g, body, centres)
             if not done:
                 singles += g
-        for sh in singles:
+        for k, sh in enumerate(singles):
+            self.check(k, "writing the holes")
             self.single(depth, sh, body, centres)
+
+    def check(self, k: int, stage: str, every: int = 128) -> None:
+        """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
+        if self.w.deadline is not None and k % every == 0:
+            self.w.deadline.check(stage)
 
     def share_centres(self, depth: int, groups: dict, body) -> None:
         """A feature that a pattern of other holes surrounds (a bore inside its motor
@@ -614,7 +620,8 @@ class _Part:
             lines: dict = {}
             for m in rest:
                 lines.setdefault(round(m.center[axis], 6), []).append(m)
-            for members in lines.values():
+            for k, members in enumerate(lines.values()):
+                self.check(k, "finding the rows among the holes", every=8)
                 if len(members) < 3:
                     continue
                 pos = sorted(((m.center[1 - axis], m) for m in members), key=lambda t: t[0])
@@ -869,8 +876,10 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
                           f"deg, size={_num(size)})")
             stats.patterns["stroke text"] += 1
             skip |= {id(lined[i]) for i in whole}
-        for segs in [circular(o.segments) for o in dd.outlines if id(o) not in skip] + \
-                [[c] for c in dd.circles]:
+        for j, segs in enumerate([circular(o.segments) for o in dd.outlines
+                                  if id(o) not in skip] + [[c] for c in dd.circles]):
+            if w.deadline is not None and j % 128 == 0:
+                w.deadline.check("recognising the engraved shapes")
             k += 1
             sh = recognise(segs)
             if sh is not None:
@@ -884,6 +893,8 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             w.emit(depth, f"g{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
             held.append(f"g{k}")
+        if w.deadline is not None:
+            w.deadline.check("finding the engraved ticks")
         strokes = [p for p in dd.paths if len(p.segments) == 1 and id(p) not in skip and
                    isinstance(p.segments[0], Line)]
         fams, used = _tick_families([(p.segments[0].start, p.segments[0].end)
@@ -893,7 +904,9 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             k += 1
             _write_family(w, depth, f, k)
             stats.patterns["ticks in a row" if f[0] == "row" else "ticks round a centre"] += 1
-        for p in dd.paths:
+        for j, p in enumerate(dd.paths):
+            if w.deadline is not None and j % 128 == 0:
+                w.deadline.check("writing the engraved paths")
             if id(p) in done or id(p) in skip:
                 continue
             k += 1
@@ -934,7 +947,9 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     polys = [np.asarray(Loop(list(s)).points(), dtype=float) for s in loops] \
         if d.ellipses else []
     ell_holes, ell_body = [], []
-    for el in d.ellipses:
+    for k, el in enumerate(d.ellipses):
+        if w.deadline is not None and k % 64 == 0:
+            w.deadline.check("finding the ellipses that are holes")
         inside = sum(1 for P in polys if len(P) >= 3 and _inside((el[0], el[1]), P))
         (ell_holes if inside % 2 else ell_body).append(el)
     w.emit(depth, f"solid {name} {{")
@@ -962,6 +977,8 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.cut_paths += len(cut)
         w.cut_length += sum(_length(p.segments) for p in cut)
         for i, p in enumerate(cut):
+            if w.deadline is not None and i % 128 == 0:
+                w.deadline.check("writing the cut paths")
             if w.chain(depth + 2, p.segments, False, f"p{i + 1}_"):
                 _emit_holds(w, depth + 2, _holds(p.segments, f"p{i + 1}_", False), "q")
             else:
@@ -992,7 +1009,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
 _HOLE_LAYER = re.compile(r"hole|drill|npth|pth|cut_?outs?|inner|interior|mount", re.I)
 
 
-def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
+def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list, list[str]]:
     """``layers`` with each layer named for holes (:data:`_HOLE_LAYER`) of loops alone (no
     paths, texts or engravings) whose every loop lies inside an outer loop of one other
     layer's drawing (a ``HOLES`` layer beside ``OUTLINE``, as PCB and panel programs
@@ -1015,7 +1032,7 @@ def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
     for k in cand:
         ls = loops(layers[k][1])
         outer[k] = [np.asarray(Loop(list(s)).points(), dtype=float)
-                    for s, c in zip(ls, _containers(ls)) if not c]
+                    for s, c in zip(ls, _containers(ls, deadline)) if not c]
     into: dict = {}
     for k in sorted(holey):
         d = layers[k][1]
@@ -1025,6 +1042,8 @@ def _hole_layers(layers: list[tuple[str, Drawing]]) -> tuple[list, list[str]]:
         for j in cand:
             if j == k or j in into or j in holey:
                 continue
+            if deadline is not None:
+                deadline.check("finding the layers of holes")
             if all(any(len(P) >= 3 and _inside(q, P) for P in outer[j]) for q in probes):
                 into[k] = j
                 break
@@ -1049,10 +1068,11 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     was recognised (pieces -> shapes, patterns) and the tolerances; and the notes of what was
     left out.  Lengths in mm.  Raises :class:`~aidl_lang.limits.OutOfBudget` past the
     deadline (:func:`~.program.import_drawing` words it as ``E0304``)."""
+    _refuse_too_large(layers, source, deadline)
     w = _Writer(deadline)
     params = _Params()
     stats = _Stats()
-    layers, moved = _hole_layers(layers)
+    layers, moved = _hole_layers(layers, deadline)
     items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     items = _copies(items, deadline)
     items = _named_parts(pair_items(items, deadline) if parts else items)
@@ -1103,6 +1123,41 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     head += ["# " + ln for ln in _summary(stats) + moved] + ["units mm"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
+
+
+# CPU seconds of inferring a design, to refuse one sure to end past the deadline before it
+# starts: a start and each piece of the drawing (a quiet machine, issue 83: the 20,000-hole
+# panel 0.69 s, 35 us a piece; the slowest drawings measured, 8,000 holes in no one
+# pattern or each of its own size, 46 us)
+INFER_START = 0.05
+INFER_PER_PIECE = 60e-6
+
+
+def infer_seconds(layers: list[tuple[str, Drawing]]) -> float:
+    """The estimate (s) of :func:`to_program_inferred` of ``layers``: :data:`INFER_START`
+    and :data:`INFER_PER_PIECE` for each line, arc, curve, circle, ellipse and text."""
+    from .program import _count_segments
+    return INFER_START + INFER_PER_PIECE * sum(_count_segments(d) for _, d in layers)
+
+
+def _refuse_too_large(layers: list, source: str, deadline) -> None:
+    """``E0304`` (a :class:`~.model.DrawingError`) before any inference when
+    :func:`infer_seconds` of ``layers`` would end past ``deadline`` (the import's)."""
+    if deadline is None:
+        return
+    from ..limits import OutOfBudget
+    from .model import DrawingError
+    from .program import _count_segments
+    try:
+        deadline.check("inferring the design", ahead=infer_seconds(layers))
+    except OutOfBudget as ex:
+        pieces = sum(_count_segments(d) for _, d in layers)
+        raise DrawingError(
+            "E0304", f"inferring the design of `{source}` ({pieces} lines, arcs, curves and "
+                     f"texts) would end past the budget ({ex.what}): refused before it "
+                     f"started",
+            "import it without --infer (its exact pieces), a part of it with --layer, or "
+            "raise --budget") from None
 
 
 # layer names that say nothing of the part on them (CAD's layer 0, a laser's CUT layer)
