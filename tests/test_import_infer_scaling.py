@@ -12,8 +12,9 @@ each ``infer*.py`` (a loop's turns inside one call are no calls), must grow abou
 each node of the lattice along every centre (20,000 holes: 2e8 comparisons, 10.8 s CPU),
 ``_stagger`` scanned every centre for each row, ``_line`` and ``_polar`` matched each place
 along the whole list, ``_periodic`` tried every length, ``_Part.numbered`` (and ``_ident``)
-counted from 1 for each name, the rows fallback removed each member from a list, and the cut
-paths were told from the rest by a scan (500 -> 2,000: 9.9 - 16 times).  Calls counted, not
+counted from 1 for each name, the rows fallback removed each member from a list, the shared
+centres (``bore_c``) were looked up along every one, and the cut paths were told from the
+rest by a scan (500 -> 2,000: 5.2 - 16 times).  Calls counted, not
 time: the figures do not depend on the machine's load; times are in
 ``benchmarks/infer_scaling.py``.
 
@@ -118,6 +119,21 @@ def sizes(n):
     return doc, f"hole hole{n} {{"
 
 
+def bores(n):
+    """``n`` / 4 features of their own sizes, each a bore and the pair of equal holes about
+    it (``n`` / 2 holes): each bore's centre named once (``bore_c``) and shared with its
+    pair."""
+    k = n // 4
+    doc, msp = _doc()
+    _plate(msp, 20 * k + 20, 40)
+    for m in range(k):
+        x = 15 + 20 * m
+        msp.add_circle((x, 20), 4 + m * 1e-4)
+        for s in (-1, 1):
+            msp.add_circle((x + 6 * s, 20 + 3 * s), 1 + m * 1e-4)
+    return doc, f"bore_c_{n // 4} ="
+
+
 def ticks(n):
     """``n`` engraved ticks 2 mm apart, their lengths of no period (longer every 7th and
     the last)."""
@@ -140,7 +156,8 @@ def slits(n):
 
 
 FAMILIES = {"panel": panel, "stagger": stagger, "slanted": slanted, "bolt_circle": bolt_circle,
-            "scattered": scattered, "sizes": sizes, "ticks": ticks, "slits": slits}
+            "scattered": scattered, "sizes": sizes, "bores": bores, "ticks": ticks,
+            "slits": slits}
 
 
 def _bytes(doc) -> bytes:

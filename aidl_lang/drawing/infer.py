@@ -44,9 +44,9 @@ from collections import Counter
 from ..geometry.curves import Arc, Line, Loop
 from .infer_attachments import _attachments, _circle_attachments, _notches
 from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
-from .infer_patterns import (_copies, _grid, _line, _periodic, _polar, _polar_chain,
-                             _polar_polys, _runs, _stagger, _steps, _tick_families,
-                             _unknown)
+from .infer_patterns import (_Cells, _copies, _grid, _line, _periodic, _polar,
+                             _polar_chain, _polar_polys, _runs, _stagger, _steps,
+                             _tick_families, _unknown)
 from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
 from .infer_text import along_texts, stroke_texts
@@ -128,7 +128,8 @@ class _Part:
         self.used: set = _Names()
         self.shift: tuple | None = None     # (x term, y term) added to every position
         self.anchor: tuple | None = None    # (body Shape, its size params): edges to place by
-        self.named: list = []               # [(point, name)]: centres written once, shared
+        self.named = _Cells([])             # centres written once, shared (their names:
+        self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -163,17 +164,19 @@ class _Part:
 
     def pos(self, c) -> str:
         """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
-        for q, nm in self.named:
-            if math.dist(q, c) <= EQUAL_TOL:
-                return nm
-        return f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+        return self.shared(c) or f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+
+    def shared(self, c) -> str | None:
+        """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
+        hit = self.named.near(c)
+        return self.named_as[hit[0]] if hit else None
 
     def origin(self, c) -> tuple[str, str, bool]:
         """The x and y text of a pattern's centre ``c`` and whether it is a shared centre
         (a feature the pattern surrounds) or the body's centre."""
-        for q, nm in self.named:
-            if math.dist(q, c) <= EQUAL_TOL:
-                return f"{nm}.x", f"{nm}.y", True
+        nm = self.shared(c)
+        if nm is not None:
+            return f"{nm}.x", f"{nm}.y", True
         on_body = self.anchor is not None and math.dist(self.anchor[0].center, c) <= EQUAL_TOL
         return self.at(c[0], 0), self.at(c[1], 1), on_body
 
@@ -395,23 +398,24 @@ class _Part:
         holes, a window inside its screws): its centre written once as a name
         (``bore_c = (x, y)``) that both use, so moving one moves the other."""
         many = [g for g in groups.values() if len(g) > 1 and g[0].kind != "Polygon"]
-        mids = [(sum(h.center[0] for h in g) / len(g), sum(h.center[1] for h in g) / len(g))
-                for g in many]
+        mids = _Cells([(sum(h.center[0] for h in g) / len(g),
+                        sum(h.center[1] for h in g) / len(g)) for g in many])
         for g in groups.values():
             if len(g) != 1 or g[0].kind not in ("Circle", "Rectangle", "RoundedRectangle",
                                                  "RegularPolygon"):
                 continue
             sh = g[0]
-            if not any(math.dist(m, sh.center) <= EQUAL_TOL for m in mids):
+            if not mids.near(sh.center):
                 continue
-            if any(math.dist(q, sh.center) <= EQUAL_TOL for q, _ in self.named):
+            if self.shared(sh.center) is not None:
                 continue
             base = "bore" if sh.kind == "Circle" else _hole_name(sh)
             hn = self.name(base)
             self.used.discard(hn)           # the hole itself takes the name (single)
             var = _ident(hn + "_c", self.used)
             self.w.emit(depth, f"{var} = {self.pos(sh.center)}")
-            self.named.append((sh.center, var))
+            self.named.add(sh.center)
+            self.named_as.append(var)
             self.shared_kind = getattr(self, "shared_kind", {})
             self.shared_kind[var] = sh.kind
 
@@ -683,10 +687,8 @@ class _Part:
 
     def surrounds(self, c) -> str | None:
         """The kind of the shared-centre feature at ``c`` (:meth:`share_centres`), or None."""
-        for q, nm in self.named:
-            if math.dist(q, c) <= EQUAL_TOL:
-                return getattr(self, "shared_kind", {}).get(nm)
-        return None
+        nm = self.shared(c)
+        return None if nm is None else getattr(self, "shared_kind", {}).get(nm)
 
     def grid(self, depth: int, sh: Shape, base: str, gr: tuple) -> None:
         """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:

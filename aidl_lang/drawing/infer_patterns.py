@@ -70,22 +70,42 @@ def _polar(centers: list):
     return (cx, cy), R, a0, n
 
 
+class _Cells:
+    """Points (mm) hashed into square cells of 2 EQUAL_TOL, so that the points within
+    EQUAL_TOL of a place are found in the nine cells about it, not along the whole list."""
+
+    def __init__(self, points: list) -> None:
+        self.points, self.cells = [], {}
+        for p in points:
+            self.add(p)
+
+    def add(self, p) -> int:
+        """Point ``p`` added; its index."""
+        self.points.append(p)
+        self.cells.setdefault(self._key(p), []).append(len(self.points) - 1)
+        return len(self.points) - 1
+
+    @staticmethod
+    def _key(p) -> tuple[int, int]:
+        return math.floor(p[0] / (2 * EQUAL_TOL)), math.floor(p[1] / (2 * EQUAL_TOL))
+
+    def near(self, q) -> list[int]:
+        """The indices of the points within EQUAL_TOL of ``q``, in the points' order."""
+        cx, cy = self._key(q)
+        return sorted(i for a in (cx - 1, cx, cx + 1) for b in (cy - 1, cy, cy + 1)
+                      for i in self.cells.get((a, b), ())
+                      if math.dist(self.points[i], q) <= EQUAL_TOL)
+
+
 def _each_once(points: list, targets) -> bool:
     """Whether each of ``targets`` (in turn) has a point of ``points`` within EQUAL_TOL
-    not taken by an earlier one, the first such point in ``points``' order taken: the
-    points hashed into cells of 2 EQUAL_TOL, each target looking in the nine cells about
-    it, not along the whole list (a bolt circle or a slanted row of 20,000 holes: 2e8
-    distances)."""
-    cell = 2 * EQUAL_TOL
-    cells: dict = {}
-    for i, p in enumerate(points):
-        cells.setdefault((math.floor(p[0] / cell), math.floor(p[1] / cell)), []).append(i)
+    not taken by an earlier one, the first such point in ``points``' order taken (found in
+    :class:`_Cells`, not along the list: a bolt circle or a slanted row of 20,000 holes,
+    2e8 distances)."""
+    cells = _Cells(points)
     taken: set = set()
     for q in targets:
-        cx, cy = math.floor(q[0] / cell), math.floor(q[1] / cell)
-        hit = min((i for a in (cx - 1, cx, cx + 1) for b in (cy - 1, cy, cy + 1)
-                   for i in cells.get((a, b), ()) if i not in taken
-                   and math.dist(points[i], q) <= EQUAL_TOL), default=None)
+        hit = next((i for i in cells.near(q) if i not in taken), None)
         if hit is None:
             return False
         taken.add(hit)
