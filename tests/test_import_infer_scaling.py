@@ -341,3 +341,26 @@ def test_the_20000_hole_panel_infers_within_the_budget(tmp_path):
     text = (tmp_path / "p.aidl").read_text()
     assert "param holes_cols = 141" in text and "param holes_rows = 141" in text
     assert "# patterns: 1 grid" in text and text.count("hole holes") == 1
+
+
+def test_each_bore_of_a_shared_centre_has_its_own_name(tmp_path):
+    """Three bores, each with the pair of equal holes about it (``bores(12)``): each bore is
+    its own hole, ``bore``, ``bore_2``, ``bore_3`` (before: every one ``hole bore``, and the
+    program was E0107 "`bore` is already defined"), and the program renders to the
+    drawing's nine circles (re-read by ezdxf)."""
+    doc, _ = bores(12)
+    want = sorted((round(c.dxf.center.x, 9), round(c.dxf.center.y, 9), round(c.dxf.radius, 9))
+                  for c in doc.modelspace().query("CIRCLE"))
+    text, _ = import_drawing(_bytes(doc), "b.dxf", infer=True)
+    assert [ln.split("{")[0].strip() for ln in text.splitlines() if "hole bore" in ln] == \
+        ["hole bore", "hole bore_2", "hole bore_3"], text
+    res = aidl_lang.compile(text, path=tmp_path / "b.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    out = tmp_path / "b.dxf"
+    out.write_text(res.to_dxf())
+    got = sorted((round(c.dxf.center.x, 9), round(c.dxf.center.y, 9), round(c.dxf.radius, 9))
+                 for c in ezdxf.readfile(out).modelspace().query("CIRCLE"))
+    assert len(got) == len(want) == 9
+    dx, dy = got[0][0] - want[0][0], got[0][1] - want[0][1]
+    assert [v for x, y, r in got for v in (x - dx, y - dy, r)] == \
+        pytest.approx([v for p in want for v in p], abs=1e-9)

@@ -790,8 +790,9 @@ class _Part:
                 (body is not None and math.dist(sh.center, body[0].center) <= EQUAL_TOL)
             if on_axis:
                 base = "bore"
-                sizes = {"diameter": self.p(self.name("bore") + "_d", 2 * sh.args["radius"])}
-                self.used.discard("bore")
+                own = self.name("bore")         # (the next free: bore, bore_2, ...)
+                sizes = {"diameter": self.p(own + "_d", 2 * sh.args["radius"])}
+                self.used.discard(own)          # the hole itself takes it, below
         hn = self.numbered(base) if base == "hole" else self.name(base)
         if sh.kind == "Polygon":
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
