@@ -29,7 +29,6 @@ import io
 import math
 import pstats
 import sys
-import time
 from collections import Counter
 
 import ezdxf
@@ -39,7 +38,7 @@ import aidl_lang
 from aidl_lang.drawing import infer, infer_shapes
 from aidl_lang.drawing.infer import import_drawing, to_program_inferred
 from aidl_lang.drawing.model import DrawingError
-from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
 
 GROWTH = 4.6        # linear: 4 times (less with fixed work); pairs: 16; n log n Python ~4.9
 FEW = 200           # calls at N below which a module counts as FEW
@@ -253,7 +252,7 @@ class _Counting(Deadline):
     :class:`OutOfBudget`) at the ``stop``-th look."""
 
     def __init__(self, stop: int | None = None):
-        super().__init__(time.monotonic() + 1e6)
+        super().__init__(now() + 1e6)
         self.seen: Counter = Counter()
         self.stop = stop
 
@@ -288,12 +287,12 @@ def test_a_design_past_the_deadline_is_refused_before_any_inference(monkeypatch)
         return real(segs)
     monkeypatch.setattr(infer, "recognise", counted)
     with pytest.raises(DrawingError) as ex:
-        to_program_inferred(layers, "panel.dxf", deadline=Deadline(time.monotonic() + 0.01))
+        to_program_inferred(layers, "panel.dxf", deadline=Deadline(now() + 0.01))
     assert ex.value.code == "E0304" and "refused before it started" in ex.value.message
     assert "2004 lines, arcs, curves and texts" in ex.value.message, ex.value.message
     assert "--budget" in ex.value.hint and not seen
     assert 0.1 < infer.infer_seconds(layers) < 1.0
-    far = to_program_inferred(layers, "panel.dxf", deadline=Deadline(time.monotonic() + 1e6))
+    far = to_program_inferred(layers, "panel.dxf", deadline=Deadline(now() + 1e6))
     assert far == to_program_inferred(layers, "panel.dxf")
 
 
