@@ -2,7 +2,8 @@
 
 A scalar is a :class:`Q`: an expression over the parameter vector (mm / radians) with a
 dimension ``(L, A)`` — length exponent and angle exponent.  ``(0, 0)`` is a bare number: it takes
-the file's length unit where a length is expected and degrees where an angle is expected.
+the file's length unit where a length is expected and degrees where an angle is expected,
+except a :class:`Radians` (``pi``, ``tau`` and numbers made from them), which is radians there.
 Points are :class:`PV` (x, y expressions in the frame of the structure being evaluated).
 Every value records the structures whose geometry it references (``owners``) so that the
 validity rules can be checked where the value is used.
@@ -39,6 +40,33 @@ class Q(Record):
 
     def const(self) -> float | None:
         return as_const(self.expr)
+
+
+class Radians(Q):
+    """A bare number that counts radians: ``pi``, ``tau``, and what arithmetic with plain
+    numbers makes of them (``2 * pi / n``, ``-pi``, ``tau - 0.1``; not ``pi * pi`` or
+    ``1 / pi``).  In plain arithmetic it is the number it is (3.14159...); where it meets an
+    angle (``+``, ``-``, comparisons, ``min``/``max``, an angle argument) it is that many
+    radians, not degrees: ``theta + pi / 2`` is ``theta + 90 deg`` (issue 84: ``tau -
+    2 * theta`` read tau as 6.28 deg).  Its ``dim`` is :data:`NUM`."""
+    __slots__ = ()
+
+
+def radians_of(q: "Q") -> "Q":
+    """``q`` as a :class:`Radians` (same expression and owners)."""
+    return Radians(q.expr, q.dim, q.owners)
+
+
+def rad_power(q) -> int:
+    """1 for a :class:`Radians`, 0 for any other value: the power of the radian a bare
+    number carries (``pi * pi``: 2, ``1 / pi``: -1; only 1 is read as radians)."""
+    return 1 if type(q) is Radians else 0
+
+
+def angle_scale(q, deg: float) -> float:
+    """The factor that makes the bare number ``q`` an angle in radians: 1 for a
+    :class:`Radians` (``pi``), ``deg`` (pi / 180) for any other bare number."""
+    return 1.0 if type(q) is Radians else deg
 
 
 class PV(Record):
@@ -188,13 +216,15 @@ def owners_in(vals) -> frozenset:
 
 
 def unify_add(a: Q, b: Q, scale: float, deg: float) -> tuple[Expr, Expr, tuple]:
-    """Bring two operands of + - or a comparison to one dimension (bare numbers adapt)."""
+    """Bring two operands of + - or a comparison to one dimension (bare numbers adapt: to a
+    length in the file's unit ``scale``, to an angle in degrees ``deg``, or in radians for a
+    :class:`Radians`).  Raises :class:`UnitError` for two different dimensions."""
     if a.dim == b.dim:
         return a.expr, b.expr, a.dim
     if a.dim == NUM:
-        return lift(a.expr) * _coef(b.dim, scale, deg), b.expr, b.dim
+        return lift(a.expr) * _coef(b.dim, scale, angle_scale(a, deg)), b.expr, b.dim
     if b.dim == NUM:
-        return a.expr, lift(b.expr) * _coef(a.dim, scale, deg), a.dim
+        return a.expr, lift(b.expr) * _coef(a.dim, scale, angle_scale(b, deg)), a.dim
     raise UnitError(f"cannot combine a {dim_name(a.dim)} with a {dim_name(b.dim)}")
 
 

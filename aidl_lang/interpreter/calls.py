@@ -13,8 +13,9 @@ from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.members import member as geom_member
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build
-from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
-                               Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
+from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, Radians,
+                               StructRef, Template, UnitError, angle_scale, dim_name, mul_dim, owners_in,
+                               owners_of, type_name)
 from ..limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
@@ -273,7 +274,7 @@ class Calls:
                                 hint="use numbers and params: a bend is not solved, e.g. "
                                      "`Bend(wall, at=40, angle=90 deg, radius=5)`")
             scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0)
-                                              if dim is LEN else DEG)
+                                              if dim is LEN else angle_scale(q, DEG))
             vals[k] = float(c) * scale
         if not 0 < abs(vals["angle"]) <= 2 * math.pi:
             raise EvalError("E0108", f"the `angle` of `Bend` is {math.degrees(vals['angle']):g} "
@@ -312,7 +313,8 @@ class Calls:
             if c is None:
                 raise EvalError("E0109", f"`{what}` of `Place` must be known before solving",
                                 span, hint="use numbers and params: a placement is not solved")
-            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN else DEG)
+            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN
+                                              else angle_scale(q, DEG))
             v = float(c) * scale
             if dim is LEN and not abs(v) <= MAX_EXTENT:
                 raise EvalError("E0305", f"`position` of `Place` is {v:g} mm, beyond the model "
@@ -587,7 +589,7 @@ class Calls:
             if v.dim == NUM:
                 if self.floor_results and typ == "length" and id(v) in self.floor_results:
                     self._floor_used(v, span)
-                k = self.unit_scale if typ == "length" else DEG
+                k = self.unit_scale if typ == "length" else angle_scale(v, DEG)   # pi: radians
                 e = v.expr
                 if type(e) is Lin and not e.terms:     # a number: what mul() gives, directly
                     return Q(_lin({}, k * e.const), want, v.owners)
@@ -747,7 +749,7 @@ class Calls:
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):
                 raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
-            if q[0].dim == NUM:
+            if q[0].dim == NUM and type(q[0]) is not Radians:     # `cos(3 * pi)` is meant
                 self._plain_radians(nm, q[0].const(), sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm in ("asin", "acos", "atan"):
