@@ -43,30 +43,41 @@ class Q(Record):
 
 
 class Radians(Q):
-    """A bare number that counts radians: ``pi``, ``tau``, and what arithmetic with plain
-    numbers makes of them (``2 * pi / n``, ``-pi``, ``tau - 0.1``; not ``pi * pi`` or
-    ``1 / pi``).  In plain arithmetic it is the number it is (3.14159...); where it meets an
-    angle (``+``, ``-``, comparisons, ``min``/``max``, an angle argument) it is that many
-    radians, not degrees: ``theta + pi / 2`` is ``theta + 90 deg`` (issue 84: ``tau -
-    2 * theta`` read tau as 6.28 deg).  Its ``dim`` is :data:`NUM`."""
+    """A value that carries radians as a unit of its own: ``pi`` and ``tau`` (``power`` 1),
+    and what arithmetic makes of them, the power of the radian counted as any unit's is:
+    ``2 * pi / n``, ``-pi``, ``tau - 0.1`` (a plain number next to radians is radians, as
+    in ``sin``), ``pi * module / pitch_r`` (an arc length over a radius) have power 1;
+    ``pi * pi`` 2, ``1 / pi`` -1, ``pi / pi`` 0 (a plain number again).  In arithmetic it is
+    the number it is (3.14159...); a bare number of power 1 that meets an angle (``+``,
+    ``-``, comparisons, ``min``/``max``, ``atan2``, an angle argument) is that many radians,
+    not degrees: ``theta + pi / 2`` is ``theta + 90 deg`` (issue 84: ``tau - 2 * theta`` read
+    tau as 6.28 deg).  ``dim`` is its dimension as for any :class:`Q`; ``power`` is kept in
+    the instance's ``__dict__`` (1 unless set)."""
     __slots__ = ()
+    power = 1
 
 
-def radians_of(q: "Q") -> "Q":
-    """``q`` as a :class:`Radians` (same expression and owners)."""
-    return Radians(q.expr, q.dim, q.owners)
+def radians_of(q: "Q", power: int = 1) -> "Q":
+    """``q`` (same expression, dimension and owners) carrying radians to ``power``: a
+    :class:`Radians`, or a plain :class:`Q` for power 0."""
+    if not power:
+        return q if type(q) is Q else Q(q.expr, q.dim, q.owners)
+    r = Radians(q.expr, q.dim, q.owners)
+    if power != 1:
+        r.power = power
+    return r
 
 
 def rad_power(q) -> int:
-    """1 for a :class:`Radians`, 0 for any other value: the power of the radian a bare
-    number carries (``pi * pi``: 2, ``1 / pi``: -1; only 1 is read as radians)."""
-    return 1 if type(q) is Radians else 0
+    """The power of the radian ``q`` carries: ``q.power`` for a :class:`Radians`, else 0."""
+    return q.power if type(q) is Radians else 0
 
 
 def angle_scale(q, deg: float) -> float:
-    """The factor that makes the bare number ``q`` an angle in radians: 1 for a
-    :class:`Radians` (``pi``), ``deg`` (pi / 180) for any other bare number."""
-    return 1.0 if type(q) is Radians else deg
+    """The factor that makes the bare number ``q`` an angle in radians: 1 for a number of
+    radians (a :class:`Radians` of power 1: ``pi``, ``tau / 8``), ``deg`` (pi / 180) for
+    any other bare number."""
+    return 1.0 if type(q) is Radians and q.power == 1 else deg
 
 
 class PV(Record):

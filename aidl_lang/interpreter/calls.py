@@ -13,9 +13,9 @@ from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.members import member as geom_member
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build
-from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, Radians,
-                               StructRef, Template, UnitError, angle_scale, dim_name, mul_dim, owners_in,
-                               owners_of, type_name)
+from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+                               Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
+                               rad_power, radians_of, type_name)
 from ..limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
@@ -727,7 +727,9 @@ class Calls:
             acc = qs[0]
             for q in qs[1:]:
                 a, b, d = self._unify(acc, q, sp)
-                acc = Q(func(nm, a, b), d, acc.owners | q.owners)
+                # the least of radians is radians (`max(pi / 8, tau / n)`)
+                k = rad_power(acc) if rad_power(acc) == rad_power(q) else 0
+                acc = radians_of(Q(func(nm, a, b), d, acc.owners | q.owners), k)
             return acc
         if nm == "norm":
             p = self._to_point(args[0], sp) if not isinstance(args[0], Q) else None
@@ -749,7 +751,7 @@ class Calls:
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):
                 raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
-            if q[0].dim == NUM and type(q[0]) is not Radians:     # `cos(3 * pi)` is meant
+            if q[0].dim == NUM and rad_power(q[0]) != 1:          # `cos(3 * pi)` is meant
                 self._plain_radians(nm, q[0].const(), sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm in ("asin", "acos", "atan"):
@@ -767,7 +769,7 @@ class Calls:
                 raise EvalError("E0112", f"`sqrt` of a negative number ({_fmt_num(c)})", sp)
             return Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners)
         if nm == "abs":
-            return Q(func("abs", q[0].expr), q[0].dim, q[0].owners)
+            return radians_of(Q(func("abs", q[0].expr), q[0].dim, q[0].owners), rad_power(q[0]))
         if nm == "square":
             return Q(q[0].expr * q[0].expr, mul_dim(q[0].dim, q[0].dim), q[0].owners)
         if nm in ("round", "floor", "ceil"):

@@ -316,7 +316,8 @@ class Expressions:
     def _e_Neg(self, e):
         v = self.eval(e.operand)
         if isinstance(v, Q):
-            return type(v)(-lift(v.expr), v.dim, v.owners)      # -pi stays radians
+            q = Q(-lift(v.expr), v.dim, v.owners)
+            return q if type(v) is Q else radians_of(q, rad_power(v))      # -pi: radians
         if isinstance(v, PV):
             return PV(-lift(v.x), -lift(v.y), None, v.owners)
         raise EvalError("E0108", f"cannot negate a {type_name(v)}", e.span)
@@ -395,18 +396,29 @@ class Expressions:
         return self._q_op(op, l, r, e)
 
     def _radians_op(self, op: str, l: Q, r: Q, e: A.BinOp) -> Q:
-        """``l op r`` where ``pi``, ``tau`` or a number made from them (:class:`Radians`) takes
-        part: the value of :meth:`_q_op` (next to an angle the radians are read as radians,
-        :func:`~aidl_lang.geometry.values.unify_add`), kept a :class:`Radians` when it is a
-        bare number of radians to the first power: ``2 * pi / n``, ``tau - 0.1`` (a plain
-        number next to radians is radians, as in ``sin``), not ``pi * pi``, ``1 / pi`` or
-        ``pi / pi``."""
+        """``l op r`` where ``pi``, ``tau`` or a value made from them (:class:`Radians`)
+        takes part: the value of :meth:`_q_op` (next to an angle a number of radians is read
+        as radians, :func:`~aidl_lang.geometry.values.unify_add`), carrying the radian to the
+        power units combine to: ``2 * pi / n`` and ``pi * module / pitch_r`` 1, ``pi * pi``
+        2, ``pi / pi`` 0; ``+``/``-`` keep the power of their side that has one (``tau -
+        0.1``: a plain number next to radians is radians, as in ``sin``), and a sum of two
+        different powers has none."""
         q = self._q_op(op, l, r, e)
-        if q.dim != NUM or l.dim != NUM or r.dim != NUM:
-            return q
+        if q.dim != NUM and ANG in (l.dim, r.dim) and op in ("+", "-"):
+            return q                    # radians met an angle: an angle, read in radians
         a, b = rad_power(l), rad_power(r)
-        k = a + b if op == "*" else a - b if op == "/" else max(a, b) if op in ("+", "-") else 0
-        return radians_of(q) if k == 1 else q
+        if op == "*":
+            k = a + b
+        elif op == "/":
+            k = a - b
+        elif op in ("+", "-"):
+            k = a if not b or a == b else b if not a else 0
+        elif op == "**" and not b:
+            c = r.const()
+            k = int(a * c) if c is not None and c == int(c) else 0
+        else:
+            k = 0
+        return radians_of(q, k) if k else q
 
     def floor_as_length(self, e: A.BinOp, exact: float, q: Q, use) -> None:
         """W0106: the floor division ``e`` (exactly ``exact``, floored to ``q``) gives a length
