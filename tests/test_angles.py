@@ -85,8 +85,8 @@ def _values(src: str, *names: str) -> list[float]:
 
 
 def test_pi_is_180_deg_next_to_an_angle_and_a_number_elsewhere():
-    """Where `pi` meets an angle it is pi radians; in plain arithmetic (a length, an
-    f-string, `sin`) it is the number 3.14159 as before."""
+    """Where `pi` meets an angle it is pi radians; in plain arithmetic (a length, `sin`) it
+    is the number 3.14159 as before."""
     src = """
 module = 2 mm
 pitch_r = 20 mm
@@ -97,19 +97,25 @@ d = 10 deg + max(pi / 2, tau / 8)
 e = 10 deg - pi * pi / pi
 f = 10 deg + pi / pi
 g = 10 deg + 2 * (pi + 1) / 2
+h = 10 deg + round(pi / 4, 3)
+i = 10 deg + sqrt(pi * pi)
+c3 = cos(3 * pi)
 circ = 2 * pi * 10 mm
 num = pi / 2
 s6 = sin(pi / 6)
 """
     r = aidl_lang.compile(source=src + "solid s { b = Rectangle(center=(0, 0), width=1, height=1) }")
     assert r.ok and not r.diagnostics
-    v = {n: r.value(n).value for n in ("a", "b", "c", "d", "e", "f", "g", "circ", "num", "s6")}
+    v = {n: r.value(n).value for n in ("a", "b", "c", "d", "e", "f", "g", "h", "i", "c3", "circ",
+                                         "num", "s6")}
     assert v["a"] == pytest.approx(120) and v["b"] == pytest.approx(-35)
     assert v["c"] == pytest.approx(10 + 18)            # pi * 2 / 20 rad = 18 deg
     assert v["d"] == pytest.approx(100)
     assert v["e"] == pytest.approx(-170)               # pi * pi / pi: radians again
     assert v["f"] == pytest.approx(11)                 # pi / pi: the plain number 1, degrees
     assert v["g"] == pytest.approx(10 + math.degrees(math.pi + 1))   # 1 next to pi: radians
+    assert v["h"] == pytest.approx(10 + math.degrees(0.785)) and v["i"] == pytest.approx(190)
+    assert v["c3"] == pytest.approx(-1)                # and no W0107: 3 pi is meant as radians
     assert v["circ"] == pytest.approx(20 * math.pi) and v["num"] == pytest.approx(math.pi / 2)
     assert v["s6"] == pytest.approx(0.5)
     assert r.value("circ").unit == "mm" and r.value("num").unit == ""

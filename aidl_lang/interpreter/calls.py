@@ -767,7 +767,9 @@ class Calls:
             c = q[0].const()
             if c is not None and c < 0:
                 raise EvalError("E0112", f"`sqrt` of a negative number ({_fmt_num(c)})", sp)
-            return Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners)
+            k = rad_power(q[0])                 # sqrt(pi * pi): radians
+            return radians_of(Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners),
+                              k // 2 if k % 2 == 0 else 0)
         if nm == "abs":
             return radians_of(Q(func("abs", q[0].expr), q[0].dim, q[0].owners), rad_power(q[0]))
         if nm == "square":
@@ -777,10 +779,11 @@ class Calls:
             if c is None:
                 raise EvalError("E0118", f"`{nm}` of a solved value", sp,
                                 hint="round params and constants only")
+            k = rad_power(q[0])                 # round(pi / 4, 3): still radians
             if nm == "round":
                 nd = int(q[1].const() or 0) if len(q) > 1 else 0
-                return Q.num(round(c, nd), q[0].dim)
-            return Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim)
+                return radians_of(Q.num(round(c, nd), q[0].dim), k)
+            return radians_of(Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim), k)
         if nm == "radians":
             return Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
         if nm == "degrees":
