@@ -227,3 +227,39 @@ def test_law_radians_added_to_an_angle_are_radians(theta, x):
     for i in range(2):
         assert v[f"cs{i}"] == pytest.approx(v[f"ca{i}"] * v[f"cx{i}"] - v[f"sa{i}"] * v[f"sx{i}"], abs=1e-9)
         assert v[f"sn{i}"] == pytest.approx(v[f"sa{i}"] * v[f"cx{i}"] + v[f"ca{i}"] * v[f"sx{i}"], abs=1e-9)
+
+
+# ------------------------------------------------------------------ the corpus
+def test_no_program_of_the_corpus_changes(monkeypatch):
+    """Every program of the examples, the standard library, tests/programs, the benchmarks and
+    the model-written runs under data/ that names `pi` or `tau` or imports a file: none of
+    them reads a number made from pi as an angle, so each gives the same value under the
+    rule as before it (the rule changes only programs that mixed pi with angles, which were
+    wrong: 3.14 deg).  Read during interpretation, where the rule acts."""
+    from pathlib import Path
+    import re
+
+    import aidl_lang.geometry.values as values
+    import aidl_lang.interpreter.calls as calls
+    import aidl_lang.interpreter.statements as statements
+    from aidl_lang.pipeline import compile_source
+    root = Path(__file__).resolve().parents[1]
+    met = []
+
+    def counting(q, deg, _real=values.angle_scale):
+        k = _real(q, deg)
+        if k == 1.0:
+            met.append(q.const())
+        return k
+    for m in (values, calls, statements):
+        monkeypatch.setattr(m, "angle_scale", counting)
+    files = [p for d in ("examples", "aidl_lang/examples", "stdlib", "tests/programs", "data",
+                         "benchmarks") for p in sorted((root / d).rglob("*.aidl"))]
+    chosen = [p for p in files if re.search(r"\b(pi|PI|tau)\b|^import", p.read_text(), re.M)]
+    assert len(files) > 200 and len(chosen) > 50
+    for p in chosen:
+        compile_source(p.read_text(), str(p), do_solve=False)
+        assert not met, (p, met)
+    # and the door sign does meet it
+    compile_source(MOON.replace("TURN", "tau"), "moon.aidl", do_solve=False)
+    assert met
