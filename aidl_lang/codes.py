@@ -787,7 +787,8 @@ before code (`aidl docs comments`); if it was meant as a comment, write `#`.
 `sin`, `cos` and `tan` read a plain number as radians, unlike arguments that are angles
 (`rotation=30` is 30 degrees). A plain number past a whole turn (2 pi) there is almost surely
 meant as degrees: labels every 10 degrees written `cos(i * 10)` land at 10 rad = 573 deg, scattered
-round the circle. Write the unit: `cos(i * 10 deg)`. Warned once per call.
+round the circle. Write the unit: `cos(i * 10 deg)`. Warned once per call; not for a number
+made from `pi` or `tau` (`cos(3 * pi)`), which counts radians (`aidl docs pi`).
 
     x = 40 * cos(i * 10)       # radians: write cos(i * 10 deg)
 """),

@@ -758,9 +758,19 @@ otherwise it starts a comment (`// note` on its own line, `x = f(a) // half of i
     "functions": ("statement", "sin, cos, sqrt, min, max, range, ...: functions and "
                   "constants.", "\n".join(
         [f"`{n}`: {doc}" for n, (_lo, _hi, doc) in FUNCTIONS.items()]
-        + ["Constants: pi, tau, true, false. Functions take no keyword arguments, but "
-           "`mirror(points, about=...)`."]),
+        + ["Constants: pi, tau (radians: `aidl docs pi`), true, false. Functions take no "
+           "keyword arguments, but `mirror(points, about=...)`."]),
         ["function list", "math"]),
+    "pi": ("statement", "`pi`, `tau`: numbers that count radians; next to an angle `pi` is "
+           "180 deg.", """
+`pi` (also `PI`) is 3.14159..., `tau` is 2 pi: plain numbers in arithmetic (`2 * pi * r` is a
+circumference, `sin(pi / 6)` is 0.5), not angles. They count radians: where `pi`, `tau` or a
+number made from them (`2 * pi / n`, `pi * module / pitch_r`, `tau - 0.1`) meets an angle (in
+`+`, `-`, a comparison, `min`/`max`, or given for an angle: `rotation=pi / 4`), it is that many
+radians, where any other bare number is degrees: `theta + pi / 2` is `theta + 90 deg`, and
+`theta + k * (tau - 2 * theta) / n` steps from `theta` to a whole turn less `theta`. `pi / pi`
+is a plain number again. `180 deg`, `360 deg` or `tau * 1 rad` say the same explicitly.
+""", ["PI", "tau", "constants"]),
 }
 
 # ---------------------------------------------------------------- details of entries
@@ -1169,6 +1179,11 @@ EXAMPLES: dict[str, str] = {
         "n = 7 // 2    # floor division: 3, a count\nfor i in range(n) {\n    hole bore { "
         "c = Circle(center=(-8 + 8 * i, 0), radius=2) }\n}\nFixed(body)\n"
         "Fixed(bore[0])\nFixed(bore[1])\nFixed(bore[2])", "plate"),
+    "pi": "tilt = 10 deg\n" + _solid("body = Rectangle(center=(0, 0), width=60, height=30, "
+                                      "rotation=tilt + pi / 2)   # 100 deg\nfor k in range(6) {\n"
+                                      "    hole bolt { c = Circle(center=(10 * cos(k * tau / 6), "
+                                      "10 * sin(k * tau / 6)), radius=2) }\n}\nFixed(body)\n"
+                                      "Fixed(bolt[0])", "plate"),
     "functions": _solid("for i in range(6) {\n    hole bolt { c = Circle(center=(20 * "
                         "cos(i * 60 deg), 20 * sin(i * 60 deg)), radius=max(2, sqrt(9))) }\n}\n"
                         "disc = Circle(center=(0, 0), radius=30)\nFixed(disc)\n"

@@ -2,7 +2,8 @@
 
 A scalar is a :class:`Q`: an expression over the parameter vector (mm / radians) with a
 dimension ``(L, A)`` — length exponent and angle exponent.  ``(0, 0)`` is a bare number: it takes
-the file's length unit where a length is expected and degrees where an angle is expected.
+the file's length unit where a length is expected and degrees where an angle is expected,
+except a :class:`Radians` (``pi``, ``tau`` and numbers made from them), which is radians there.
 Points are :class:`PV` (x, y expressions in the frame of the structure being evaluated).
 Every value records the structures whose geometry it references (``owners``) so that the
 validity rules can be checked where the value is used.
@@ -39,6 +40,44 @@ class Q(Record):
 
     def const(self) -> float | None:
         return as_const(self.expr)
+
+
+class Radians(Q):
+    """A value that carries radians as a unit of its own: ``pi`` and ``tau`` (``power`` 1),
+    and what arithmetic makes of them, the power of the radian counted as any unit's is:
+    ``2 * pi / n``, ``-pi``, ``tau - 0.1`` (a plain number next to radians is radians, as
+    in ``sin``), ``pi * module / pitch_r`` (an arc length over a radius) have power 1;
+    ``pi * pi`` 2, ``1 / pi`` -1, ``pi / pi`` 0 (a plain number again).  In arithmetic it is
+    the number it is (3.14159...); a bare number of power 1 that meets an angle (``+``,
+    ``-``, comparisons, ``min``/``max``, ``atan2``, an angle argument) is that many radians,
+    not degrees: ``theta + pi / 2`` is ``theta + 90 deg`` (issue 84: ``tau - 2 * theta`` read
+    tau as 6.28 deg).  ``dim`` is its dimension as for any :class:`Q`; ``power`` is kept in
+    the instance's ``__dict__`` (1 unless set)."""
+    __slots__ = ()
+    power = 1
+
+
+def radians_of(q: "Q", power: int = 1) -> "Q":
+    """``q`` (same expression, dimension and owners) carrying radians to ``power``: a
+    :class:`Radians`, or a plain :class:`Q` for power 0."""
+    if not power:
+        return q if type(q) is Q else Q(q.expr, q.dim, q.owners)
+    r = Radians(q.expr, q.dim, q.owners)
+    if power != 1:
+        r.power = power
+    return r
+
+
+def rad_power(q) -> int:
+    """The power of the radian ``q`` carries: ``q.power`` for a :class:`Radians`, else 0."""
+    return q.power if type(q) is Radians else 0
+
+
+def angle_scale(q, deg: float) -> float:
+    """The factor that makes the bare number ``q`` an angle in radians: 1 for a number of
+    radians (a :class:`Radians` of power 1: ``pi``, ``tau / 8``), ``deg`` (pi / 180) for
+    any other bare number."""
+    return 1.0 if type(q) is Radians and q.power == 1 else deg
 
 
 class PV(Record):
@@ -188,13 +227,15 @@ def owners_in(vals) -> frozenset:
 
 
 def unify_add(a: Q, b: Q, scale: float, deg: float) -> tuple[Expr, Expr, tuple]:
-    """Bring two operands of + - or a comparison to one dimension (bare numbers adapt)."""
+    """Bring two operands of + - or a comparison to one dimension (bare numbers adapt: to a
+    length in the file's unit ``scale``, to an angle in degrees ``deg``, or in radians for a
+    :class:`Radians`).  Raises :class:`UnitError` for two different dimensions."""
     if a.dim == b.dim:
         return a.expr, b.expr, a.dim
     if a.dim == NUM:
-        return lift(a.expr) * _coef(b.dim, scale, deg), b.expr, b.dim
+        return lift(a.expr) * _coef(b.dim, scale, angle_scale(a, deg)), b.expr, b.dim
     if b.dim == NUM:
-        return a.expr, lift(b.expr) * _coef(a.dim, scale, deg), a.dim
+        return a.expr, lift(b.expr) * _coef(a.dim, scale, angle_scale(b, deg)), a.dim
     raise UnitError(f"cannot combine a {dim_name(a.dim)} with a {dim_name(b.dim)}")
 
 

@@ -14,7 +14,8 @@ from ..geometry.members import member as geom_member
 from ..geometry.model import Constraint, Equation, Point, Scalar
 from ..geometry.primitives import PrimitiveError, build
 from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
-                               Template, UnitError, dim_name, mul_dim, owners_in, owners_of, type_name)
+                               Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
+                               rad_power, radians_of, type_name)
 from ..limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
@@ -273,7 +274,7 @@ class Calls:
                                 hint="use numbers and params: a bend is not solved, e.g. "
                                      "`Bend(wall, at=40, angle=90 deg, radius=5)`")
             scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0)
-                                              if dim is LEN else DEG)
+                                              if dim is LEN else angle_scale(q, DEG))
             vals[k] = float(c) * scale
         if not 0 < abs(vals["angle"]) <= 2 * math.pi:
             raise EvalError("E0108", f"the `angle` of `Bend` is {math.degrees(vals['angle']):g} "
@@ -312,7 +313,8 @@ class Calls:
             if c is None:
                 raise EvalError("E0109", f"`{what}` of `Place` must be known before solving",
                                 span, hint="use numbers and params: a placement is not solved")
-            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN else DEG)
+            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN
+                                              else angle_scale(q, DEG))
             v = float(c) * scale
             if dim is LEN and not abs(v) <= MAX_EXTENT:
                 raise EvalError("E0305", f"`position` of `Place` is {v:g} mm, beyond the model "
@@ -587,7 +589,7 @@ class Calls:
             if v.dim == NUM:
                 if self.floor_results and typ == "length" and id(v) in self.floor_results:
                     self._floor_used(v, span)
-                k = self.unit_scale if typ == "length" else DEG
+                k = self.unit_scale if typ == "length" else angle_scale(v, DEG)   # pi: radians
                 e = v.expr
                 if type(e) is Lin and not e.terms:     # a number: what mul() gives, directly
                     return Q(_lin({}, k * e.const), want, v.owners)
@@ -725,7 +727,9 @@ class Calls:
             acc = qs[0]
             for q in qs[1:]:
                 a, b, d = self._unify(acc, q, sp)
-                acc = Q(func(nm, a, b), d, acc.owners | q.owners)
+                # the least of radians is radians (`max(pi / 8, tau / n)`)
+                k = rad_power(acc) if rad_power(acc) == rad_power(q) else 0
+                acc = radians_of(Q(func(nm, a, b), d, acc.owners | q.owners), k)
             return acc
         if nm == "norm":
             p = self._to_point(args[0], sp) if not isinstance(args[0], Q) else None
@@ -747,7 +751,7 @@ class Calls:
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):
                 raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
-            if q[0].dim == NUM:
+            if q[0].dim == NUM and rad_power(q[0]) != 1:          # `cos(3 * pi)` is meant
                 self._plain_radians(nm, q[0].const(), sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm in ("asin", "acos", "atan"):
@@ -763,9 +767,11 @@ class Calls:
             c = q[0].const()
             if c is not None and c < 0:
                 raise EvalError("E0112", f"`sqrt` of a negative number ({_fmt_num(c)})", sp)
-            return Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners)
+            k = rad_power(q[0])                 # sqrt(pi * pi): radians
+            return radians_of(Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners),
+                              k // 2 if k % 2 == 0 else 0)
         if nm == "abs":
-            return Q(func("abs", q[0].expr), q[0].dim, q[0].owners)
+            return radians_of(Q(func("abs", q[0].expr), q[0].dim, q[0].owners), rad_power(q[0]))
         if nm == "square":
             return Q(q[0].expr * q[0].expr, mul_dim(q[0].dim, q[0].dim), q[0].owners)
         if nm in ("round", "floor", "ceil"):
@@ -773,10 +779,11 @@ class Calls:
             if c is None:
                 raise EvalError("E0118", f"`{nm}` of a solved value", sp,
                                 hint="round params and constants only")
+            k = rad_power(q[0])                 # round(pi / 4, 3): still radians
             if nm == "round":
                 nd = int(q[1].const() or 0) if len(q) > 1 else 0
-                return Q.num(round(c, nd), q[0].dim)
-            return Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim)
+                return radians_of(Q.num(round(c, nd), q[0].dim), k)
+            return radians_of(Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim), k)
         if nm == "radians":
             return Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
         if nm == "degrees":

@@ -11,8 +11,8 @@ from ..diagnostics import EvalError, did_you_mean
 from ..geometry.bbox import BBTerm
 from ..geometry.expr import Lin, _lin, _new, as_const, func, lift
 from ..geometry.members import member as geom_member, member_names
-from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
-                               dim_name, mul_dim, type_name)
+from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, Radians,
+                               StructRef, dim_name, mul_dim, rad_power, radians_of, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
 from .common import (DEG, POISON, Scope, _Silent, _a, _fmt_num, show)
 
@@ -121,10 +121,10 @@ class Expressions:
             return True
         if e.id in ("false", "False"):
             return False
-        if e.id in ("pi", "PI"):
-            return Q.num(math.pi)
+        if e.id in ("pi", "PI"):           # a number of radians: 180 deg next to an angle
+            return radians_of(Q.num(math.pi))
         if e.id == "tau":
-            return Q.num(2 * math.pi)
+            return radians_of(Q.num(2 * math.pi))
         # a structure's own name or an enclosing structure's name
         s = self.struct
         while s is not None:
@@ -316,7 +316,8 @@ class Expressions:
     def _e_Neg(self, e):
         v = self.eval(e.operand)
         if isinstance(v, Q):
-            return Q(-lift(v.expr), v.dim, v.owners)
+            q = Q(-lift(v.expr), v.dim, v.owners)
+            return q if type(v) is Q else radians_of(q, rad_power(v))      # -pi: radians
         if isinstance(v, PV):
             return PV(-lift(v.x), -lift(v.y), None, v.owners)
         raise EvalError("E0108", f"cannot negate a {type_name(v)}", e.span)
@@ -390,7 +391,34 @@ class Expressions:
             r = Q.num(float(r))
         if not isinstance(l, Q) or not isinstance(r, Q):
             raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span)
+        if type(l) is Radians or type(r) is Radians:
+            return self._radians_op(op, l, r, e)
         return self._q_op(op, l, r, e)
+
+    def _radians_op(self, op: str, l: Q, r: Q, e: A.BinOp) -> Q:
+        """``l op r`` where ``pi``, ``tau`` or a value made from them (:class:`Radians`)
+        takes part: the value of :meth:`_q_op` (next to an angle a number of radians is read
+        as radians, :func:`~aidl_lang.geometry.values.unify_add`), carrying the radian to the
+        power units combine to: ``2 * pi / n`` and ``pi * module / pitch_r`` 1, ``pi * pi``
+        2, ``pi / pi`` 0; ``+``/``-`` keep the power of their side that has one (``tau -
+        0.1``: a plain number next to radians is radians, as in ``sin``), and a sum of two
+        different powers has none."""
+        q = self._q_op(op, l, r, e)
+        if q.dim != NUM and ANG in (l.dim, r.dim) and op in ("+", "-"):
+            return q                    # radians met an angle: an angle, read in radians
+        a, b = rad_power(l), rad_power(r)
+        if op == "*":
+            k = a + b
+        elif op == "/":
+            k = a - b
+        elif op in ("+", "-"):
+            k = a if not b or a == b else b if not a else 0
+        elif op == "**" and not b:
+            c = r.const()
+            k = int(a * c) if c is not None and c == int(c) else 0
+        else:
+            k = 0
+        return radians_of(q, k) if k else q
 
     def floor_as_length(self, e: A.BinOp, exact: float, q: Q, use) -> None:
         """W0106: the floor division ``e`` (exactly ``exact``, floored to ``q``) gives a length

@@ -13,7 +13,7 @@ from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.members import member as geom_member
 from ..geometry.expr import Lin, _new
-from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, owners_of, type_name, unify_add)
+from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
@@ -679,7 +679,7 @@ class Statements:
             if got is None or type(dflt) is not A.Num or dflt.unit is None:
                 continue
             v, node = got
-            if type(v) is not Q or v.const() is None:
+            if not isinstance(v, Q) or v.const() is None:
                 continue
             want = LEN if dflt.unit in UNITS_LENGTH else ANG
             if v.dim == want:
@@ -687,7 +687,7 @@ class Statements:
             kind = "length" if want is LEN else "angle"
             if v.dim == NUM:
                 f = self.file
-                k = (f.unit_scale if f else 1.0) if want is LEN else DEG
+                k = (f.unit_scale if f else 1.0) if want is LEN else angle_scale(v, DEG)
                 vals[p.name] = (Q.num(v.const() * k, want), node)
                 continue
             shown = _src(self.sink, dflt.span) or f"{_fmt_num(dflt.value)} {dflt.unit}"
