@@ -401,3 +401,84 @@ def test_the_kerf_on_a_sheet_of_2000_discs_cut_in_two_stays_o_n_log_n():
     seg = 25 * math.acos(1 / 5) - math.sqrt(24)
     halves = [p for p in cut.parts if p.name != "sheet"]
     assert all(seg < p.area < seg + 0.1 * (2 * 5 * math.acos(1 / 5)) + 0.2 for p in halves)
+
+
+# ------------------------------------------------------------------ crossing slits at scale
+def _slit_grid_src(n: int, span: bool, step: float = 2.0) -> str:
+    """A plate ``(n + 1) * step`` mm square crossed by ``n`` horizontal and ``n`` vertical
+    slits ``step`` apart, written with a ``for`` loop: from edge to edge (``span``) or
+    stopping 0.5 mm short of the edges."""
+    size = (n + 1) * step
+    lo, hi = (0.0, size) if span else (0.5, size - 0.5)
+    return f"""units mm
+solid plate {{
+    body = Rectangle(center=({size / 2}, {size / 2}), width={size}, height={size})
+    cut grid {{
+        for i in range(1, {n + 1}) {{
+            h = Line(({lo}, i * {step}), ({hi}, i * {step}))
+            v = Line((i * {step}, {lo}), (i * {step}, {hi}))
+        }}
+    }}
+    Fixed(body)
+}}
+"""
+
+
+def shapely_parts(outline, cuts) -> list:
+    """The areas (mm^2, ascending) of the parts a plate with outer outline ``outline`` (a
+    closed polyline, mm) comes out as, cut along the polylines ``cuts`` (zero width), by
+    Shapely alone: the faces of the outline and the cuts noded together (``polygonize``;
+    a cut that ends inside a face, a slit, splits nothing), less each face that lies inside
+    another face's outline (it falls out, a hole of that one)."""
+    import shapely
+    from shapely.geometry import LineString, Polygon
+    plate = Polygon(outline)
+    lines = [plate.exterior] + [LineString(c).intersection(plate) for c in cuts]
+    faces = list(shapely.polygonize([shapely.union_all(lines)]).geoms)
+    filled = [Polygon(f.exterior) for f in faces]
+    tree = shapely.STRtree(filled)
+    parts = []
+    for i, f in enumerate(faces):
+        p = f.representative_point()
+        if not any(j != i and filled[j].contains(p) for j in tree.query(p)):
+            parts.append(f.area)
+    return sorted(parts)
+
+
+@pytest.mark.parametrize("span", [True, False], ids=["edge to edge", "stopping short"])
+def test_a_100_by_100_grid_of_crossing_slits_gives_its_pieces_within_the_budget(tmp_path, span):
+    """100 slits each way across a 202 mm plate.  Before: `parts` and `render` refused at any
+    `--budget` ("more than 10,000,000 (edge, chord) pairs to match (thousands of curves drawn
+    on top of each other)"): the exact outlines' grid of chords took cells of the median
+    chord, here a whole slit (202 mm), so each of the 40,804 result edges met every slit.
+    Now: 101 x 101 squares of 4 mm^2 (edge to edge), or one part, the frame 2 mm wide whose
+    10,000 cells fall out (stopping short), as Shapely counts them, each edge cut once."""
+    pytest.importorskip("shapely")
+    src = _slit_grid_src(100, span)
+    res = _compile(src, tmp_path)
+    assert res.ok, [d.message for d in res.diagnostics]
+    size = 202.0
+    cuts = []
+    lo, hi = (0.0, size) if span else (0.5, size - 0.5)
+    for i in range(1, 101):
+        cuts += [[(lo, 2.0 * i), (hi, 2.0 * i)], [(2.0 * i, lo), (2.0 * i, hi)]]
+    want = shapely_parts([(0, 0), (size, 0), (size, size), (0, size)], cuts)
+    got = sorted(p.area for p in res.output.parts)
+    assert len(want) == (10201 if span else 1)
+    assert len(got) == len(want)
+    assert got == pytest.approx(want, abs=1e-6)
+    if not span:
+        assert got == pytest.approx([size ** 2 - 198.0 ** 2], abs=1e-6)
+    # the command line, at its default budget: the parts list and a laser SVG
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "parts", str(tmp_path / "t.aidl")],
+                         capture_output=True, text=True, timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    assert f"{len(want)} part{'s' if span else ''}, 1 shape" in cli.stdout
+    svg = tmp_path / "g.svg"
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", str(tmp_path / "t.aidl"),
+                          "-o", str(svg), "--svg-style", "laser"], capture_output=True, text=True,
+                         timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    if span:                                   # each 2 mm edge of the 101 x 101 cells once
+        counted = _count(_svg_stretches(svg.read_text()), 2.0)
+        assert counted == {e: 1 for e in _all_unit_edges(101, 2.0)}
