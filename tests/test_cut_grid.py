@@ -482,3 +482,119 @@ def test_a_100_by_100_grid_of_crossing_slits_gives_its_pieces_within_the_budget(
     if span:                                   # each 2 mm edge of the 101 x 101 cells once
         counted = _count(_svg_stretches(svg.read_text()), 2.0)
         assert counted == {e: 1 for e in _all_unit_edges(101, 2.0)}
+
+
+# ------------------------------------------------------------------ each place cut once
+PLATE = """units mm
+solid plate {{
+    body = Rectangle(center=(15, 15), width=30, height=30)
+    cut c {{
+        {cut}
+    }}
+    Fixed(body)
+}}
+"""
+
+
+@pytest.mark.parametrize("cut, along, extra", [
+    # the first side on the bottom edge, the second up into the plate
+    ("p = Polyline([(0, 0), (10, 0), (10, 10)])", "segment 1 of 2, from (0, 0) to (10, 0)",
+     [((10, 0), (10, 10))]),
+    # the last side on the right edge
+    ("p = Polyline([(20, 10), (30, 10), (30, 20)])", "segment 2 of 2, from (30, 10) to (30, 20)",
+     [((20, 10), (30, 10))]),
+    # the middle side on the bottom edge, between two slits up into the plate
+    ("p = Polyline([(10, 10), (10, 0), (20, 0), (20, 10)])",
+     "segment 2 of 3, from (10, 0) to (20, 0)", [((10, 0), (10, 10)), ((20, 0), (20, 10))]),
+    # a closed run of two sides on the outline, from the left edge round the corner
+    ("p = Polyline([(0, 20), (0, 30), (10, 30), (10, 20)])",
+     "segments 1 to 2 of 3, from (0, 20) to (10, 30)", [((10, 30), (10, 20))]),
+], ids=["first", "last", "middle", "two"])
+def test_a_polyline_side_along_the_outline_is_w0522_on_its_line_and_cut_once(
+        tmp_path, cut, along, extra):
+    """Before: the side of a Polyline drawn on the plate's edge was cut with the edge, twice a
+    pass (4 times with the laser's two passes), with no word; a Line there was W0522 and cut
+    once.  Every segment is now judged as a Line would be: W0522 on the Polyline's line,
+    naming the segment, and the G-code (replayed) and the DXF (ezdxf) cut each 10 mm of the
+    design once: the outline's 120 mm and the sides off the outline."""
+    res = _compile(PLATE.format(cut=cut), tmp_path)
+    assert res.ok
+    (w,) = res.diagnostics
+    assert (w.code, w.span.line, w.span.col) == ("W0522", 5, 13)
+    assert f"`plate.c.p` adds nothing along {along}" in w.message
+    assert "lies along the outline of `plate`" in w.message
+    assert len(res.output.parts) == 1
+    want = _count([((0, 0), (30, 0)), ((30, 0), (30, 30)), ((30, 30), (0, 30)),
+                   ((0, 30), (0, 0))] + extra)
+    assert set(want.values()) == {1}
+    out = for_cutting(res.output)
+    g = _gcode_stretches(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+    assert _count(g) == want
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(120 + 10 * len(extra), abs=1e-6)
+    assert _count(_dxf_stretches(encode(out, ".dxf").decode())) == want
+    two = _gcode_stretches(encode(out, ".gcode").decode())       # two passes: each twice
+    assert _count(two) == {e: 2 for e in want}
+
+
+def test_overlapping_collinear_slits_are_w0522_naming_both_and_cut_once(tmp_path):
+    """Two slits on one line, overlapping by 8 mm.  Before: the 8 mm were cut twice a pass
+    (296 mm for the laser's two passes, where the design is 2 x 140), with no word.  Now
+    W0522 names both, on the later one's line, and the G-code, DXF, SVG and LightBurn cut each
+    millimetre of [5, 25] once; a slit that only meets another end to end is no overlap."""
+    res = _compile(PLATE.format(cut="a = Line((5, 15), (20, 15))\n        "
+                                    "b = Line((12, 15), (25, 15))\n        "
+                                    "e = Line((25, 15), (28, 15))"), tmp_path)
+    assert res.ok
+    (w,) = res.diagnostics
+    assert (w.code, w.span.line) == ("W0522", 6)
+    assert "`plate.c.b` runs along through-cut `plate.c.a` for 8 mm" in w.message
+    out = for_cutting(res.output)
+    want = _count([((0, 0), (30, 0)), ((30, 0), (30, 30)), ((30, 30), (0, 30)),
+                   ((0, 30), (0, 0)), ((5, 15), (28, 15))], 1.0)
+    assert set(want.values()) == {1}
+    g = _gcode_stretches(encode(out, ".gcode", Options(machine=ONE_PASS)).decode())
+    assert _count(g, 1.0) == want
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(143.0, abs=1e-6)
+    assert _count(_dxf_stretches(encode(out, ".dxf").decode()), 1.0) == want
+    assert _count(_svg_stretches(encode(res.output, ".svg", Options(style="laser")).decode()),
+                  1.0) == want
+    # copies of one slit at one place (a loop that does not move it): cut once, one warning
+    res = _compile(PLATE.format(cut="for i in range(3) { s = Line((5, 15), (20, 15)) }"),
+                   tmp_path)
+    assert [d.code for d in res.diagnostics] == ["W0522"]
+    g = _gcode_stretches(encode(for_cutting(res.output), ".gcode",
+                                Options(machine=ONE_PASS)).decode())
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(135.0, abs=1e-6)
+
+
+def test_arcs_along_a_round_outline_or_each_other_are_w0522_and_cut_once(tmp_path):
+    """A quarter Arc on a disc's own circle, and two half circles of one radius overlapping
+    by a quarter.  Before: neither was said (the Arc's chords and the outline's differ, so its
+    band reached past the test's 1 um strip) and the overlap was cut twice.  Now each is
+    W0522 and the G-code (replayed, arcs as G2/G3) cuts the outline and three quarters of
+    the inner circle, once."""
+    src = """units mm
+solid disc {
+    body = Circle(center=(0, 0), radius=20)
+    cut c {
+        a = Arc(center=(0, 0), radius=20, start_angle=0, end_angle=90)
+        b = Arc(center=(0, 0), radius=10, start_angle=0, end_angle=180)
+        e = Arc(center=(0, 0), radius=10, start_angle=90, end_angle=270)
+    }
+    Fixed(body)
+}
+"""
+    res = _compile(src, tmp_path)
+    assert res.ok
+    got = sorted((d.code, d.span.line, d.message.split(":")[0]) for d in res.diagnostics)
+    assert got == [("W0522", 5, "through-cut `disc.c.a` adds nothing"),
+                   ("W0522", 7, "through-cut `disc.c.e` runs along through-cut `disc.c.b` "
+                                "for 15.71 mm")]
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(encode(for_cutting(res.output), ".gcode",
+                                        Options(machine=ONE_PASS)).decode()) if mv.on]
+    assert sum(mv.length for mv in moves) == pytest.approx(40 * math.pi + 15 * math.pi,
+                                                           abs=1e-6)
+    inner = [mv for mv in moves if mv.g in (2, 3) and abs(mv.radius - 10) < 1e-9]
+    assert sum(abs(mv.sweep) for mv in inner) == pytest.approx(1.5 * math.pi, abs=1e-9)

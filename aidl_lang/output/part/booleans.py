@@ -31,6 +31,7 @@ from ...geometry.offset import offset_pieces
 from ...geometry.biarc import without_ellipses
 from ...geometry.primitives import region_of
 from ...geometry.operations import SplineCorner, finish
+from ...geometry.tessellate import CHORD_TOL
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
 from .exact import Provenance
@@ -888,7 +889,7 @@ class Renderer:
         enclosed by another falls out (a hole) and any other is a part of its own.  Returns
         ``(the part's shape, [the shapes of the pieces cut off])``; the part's shape is
         ``shp`` itself when nothing is separated (the cuts take no area)."""
-        bands = []
+        bands, seg_bands = [], []
         for g, segs in paths:
             self.tick(s)
             # the chords registered (there and back): the band's sides match the curve
@@ -897,27 +898,52 @@ class Renderer:
             out.lines.append(("cut", pts))
             bands.append(self.union([_quad(pts[i], pts[i + 1], SLIT_HALF)
                                      for i in range(len(pts) - 1)], s))
+            # each segment's own band (a curve of one segment: the curve's), so that every
+            # segment of a Polyline, Spline or Bezier is judged as a Line would be
+            seg_bands.append([bands[-1]] if len(segs) == 1 else [
+                self.union([_quad(P[i], P[i + 1], SLIT_HALF) for i in range(len(P) - 1)], s)
+                for P in (_chain_points([seg]) for seg in segs)])
         # each band's area on the material: against the pieces of the part whose boxes meet
         # its own (the pieces are disjoint, so the sum is its area in the whole part; the
         # whole part for every band cost bands x the part's vertices: 5.9 s for the 2,180
-        # slits of Boxes.py's Lamp sheet); and on the material more than a band's width in
-        # from the outline (none: the cut lies along the outline, which is cut anyway)
+        # slits of Boxes.py's Lamp sheet); and each segment's on the material more than a
+        # band's width in from the outline (none: it lies along the outline, cut anyway)
+        # (a curve's chords and the outline's differ: an arc on a round outline lies up to
+        # CHORD_TOL inside the outline's chords, so curves are measured that much further in)
         before = shp.decompose() if not shp.is_empty() else []
-        deep = shp.offset(-2 * SLIT_HALF, mf.JoinType.Miter).decompose() if before else []
-        near, near_deep = meeting(bands, before), meeting(bands, deep)
+        flat = [b for bs in seg_bands for b in bs]
+        curved = [not isinstance(seg, Line) for _, segs in paths for seg in segs]
+        deep, seg_deep = {}, {}
+        for bent in {False, True} & set(curved):
+            deep[bent] = shp.offset(-2 * SLIT_HALF - (CHORD_TOL if bent else 0.0),
+                                    mf.JoinType.Miter).decompose() if before else []
+            seg_deep[bent] = meeting(flat, deep[bent])
+        near, seg_near = meeting(bands, before), meeting(flat, before)
         cutting = []
-        for (g, segs), band, pieces, inner in zip(paths, bands, near, near_deep):
+        at = 0
+        for (g, segs), band, pieces, bs in zip(paths, bands, near, seg_bands):
             self.tick(s)
             inside = sum((band ^ before[i]).area() for i in pieces)
             th = Through(g, s, segs, band, inside)
-            th.on_outline = inside > 0 and sum((band ^ deep[i]).area() for i in inner) \
-                <= SLIT_OFF * band.area()
+            along = []
+            for k, b in enumerate(bs, at):
+                area = b.area()
+                on = sum((b ^ before[i]).area() for i in seg_near[k])
+                bent = curved[k]
+                if on > SLIT_OFF * area and sum((b ^ deep[bent][i]).area()
+                                                for i in seg_deep[bent][k]) <= SLIT_OFF * area:
+                    along.append(k - at)
+            at += len(bs)
+            th.along = tuple(along)
+            th.on_outline = inside > 0 and len(along) == len(segs)
             self.through.append(th)
             if th.on_outline:       # W0522: not drawn (the outline is cut once), cuts nothing
                 continue
-            for seg in segs:
-                self._stroke_segment(seg, "cut", g, out)
-            cutting.append(band)
+            for k, seg in enumerate(segs):
+                if k not in along:  # a segment along the outline: W0522, not drawn either
+                    self._stroke_segment(seg, "cut", g, out)
+            cutting.append(band if not along else
+                           self.union([b for k, b in enumerate(bs) if k not in along], s))
         if shp.is_empty():
             return shp, []
         cut = shp - self.union(cutting, s)
