@@ -424,23 +424,33 @@ solid plate {{
 """
 
 
-def shapely_parts(outline, cuts) -> list:
+def shapely_parts(outline, cuts, width: float = 1e-3) -> list:
     """The areas (mm^2, ascending) of the parts a plate with outer outline ``outline`` (a
     closed polyline, mm) comes out as, cut along the polylines ``cuts`` (zero width), by
     Shapely alone: the faces of the outline and the cuts noded together (``polygonize``;
-    a cut that ends inside a face, a slit, splits nothing), less each face that lies inside
-    another face's outline (it falls out, a hole of that one)."""
+    a cut that ends inside a face, a slit, splits nothing), less those that fall out.  A face
+    falls out (a hole of another) when, on the plate less the cuts drawn ``width`` mm wide
+    (square ends, as the laser cuts them, however fine), its piece lies inside another
+    piece's outer outline: a face that a cut joins to the outside, or whose corner lies where
+    cuts cross, is a part of its own (no piece closes round it)."""
     import shapely
     from shapely.geometry import LineString, Polygon
     plate = Polygon(outline)
     lines = [plate.exterior] + [LineString(c).intersection(plate) for c in cuts]
     faces = list(shapely.polygonize([shapely.union_all(lines)]).geoms)
-    filled = [Polygon(f.exterior) for f in faces]
-    tree = shapely.STRtree(filled)
+    cutaway = shapely.union_all([LineString(c).buffer(width / 2, cap_style="square")
+                                 for c in cuts])
+    material = plate.difference(cutaway)
+    pieces = list(getattr(material, "geoms", [material]))
+    filled = [Polygon(p.exterior) for p in pieces]
+    by_piece, by_filled = shapely.STRtree(pieces), shapely.STRtree(filled)
     parts = []
-    for i, f in enumerate(faces):
-        p = f.representative_point()
-        if not any(j != i and filled[j].contains(p) for j in tree.query(p)):
+    for f in faces:
+        inner = f.buffer(-width).difference(cutaway)    # clear of a slit that ends in f
+        p = (inner if not inner.is_empty else f).representative_point()
+        (k,) = [j for j in by_piece.query(p) if pieces[j].contains(p)]
+        if not any(j != k and filled[j].contains(pieces[k])
+                   for j in by_filled.query(pieces[k])):
             parts.append(f.area)
     return sorted(parts)
 
@@ -598,3 +608,109 @@ solid disc {
                                                            abs=1e-6)
     inner = [mv for mv in moves if mv.g in (2, 3) and abs(mv.radius - 10) < 1e-9]
     assert sum(abs(mv.sweep) for mv in inner) == pytest.approx(1.5 * math.pi, abs=1e-9)
+
+
+# ------------------------------------------------------------------ the law, against Shapely
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+W, H, STEP = 40, 30, 5          # the plate, and the lattice every cut's corners lie on
+
+
+def _lattice(inner: bool = False):
+    """A lattice point of the plate (on its edge too unless ``inner``)."""
+    lo = 1 if inner else 0
+    return st.tuples(st.integers(lo, W // STEP - lo), st.integers(lo, H // STEP - lo)).map(
+        lambda ij: (ij[0] * STEP, ij[1] * STEP))
+
+
+@st.composite
+def _cut(draw):
+    """One cut: ``(kind, points)``.  ``line``: between two lattice points (edge to edge, a
+    slit, along an edge); ``along``: a Polyline whose first side runs along an edge of the
+    plate and whose second goes in to an inner point; ``overlap``: two slits on one lattice
+    line that overlap by at least one step."""
+    kind = draw(st.sampled_from(["line", "line", "along", "overlap"]))
+    if kind == "line":
+        p, q = draw(_lattice()), draw(_lattice())
+        if p == q:
+            q = (W - p[0], H - p[1]) if (W - p[0], H - p[1]) != p else (0, 0)
+        return kind, [[p, q]]
+    if kind == "along":
+        edge = draw(st.sampled_from(["bottom", "top", "left", "right"]))
+        n = (W if edge in ("bottom", "top") else H) // STEP
+        a = draw(st.integers(0, n - 1))
+        b = draw(st.integers(a + 1, n))
+        run = [(a * STEP, b * STEP), (b * STEP, a * STEP)][draw(st.integers(0, 1))]
+        fixed = {"bottom": 0, "top": H, "left": 0, "right": W}[edge]
+        ends = [((t, fixed) if edge in ("bottom", "top") else (fixed, t)) for t in run]
+        return kind, [ends + [draw(_lattice(inner=True))]]
+    across = draw(st.booleans())          # along x, else along y
+    n = (W if across else H) // STEP
+    fixed = draw(st.integers(1, (H if across else W) // STEP - 1)) * STEP
+    a = draw(st.integers(0, n - 2))
+    b = draw(st.integers(a + 2, n))
+    c = draw(st.integers(a, b - 1))       # the second starts before the first ends ...
+    d = draw(st.integers(max(c + 1, a + 1), n))     # ... and overlaps it by a step or more
+    pts = [(a, b), (c, d)]
+    return kind, [[((x * STEP, fixed) if across else (fixed, x * STEP)) for x in ab]
+                  for ab in pts]
+
+
+def _law_src(cuts: list) -> tuple[str, dict]:
+    """The program of ``cuts`` (:func:`_cut`), and line number -> (kind, points) of each
+    curve in it."""
+    lines = ["units mm", "solid plate {",
+             f"    body = Rectangle(center=({W / 2}, {H / 2}), width={W}, height={H})",
+             "    cut c {"]
+    where = {}
+    for k, (kind, curves) in enumerate(cuts):
+        for m, pts in enumerate(curves):
+            text = ", ".join(f"({x}, {y})" for x, y in pts)
+            where[len(lines) + 1] = (kind, pts)
+            lines.append(f"        c{k}_{m} = " + (f"Polyline([{text}])" if len(pts) > 2 else
+                                                    f"Line({text})"))
+    lines += ["    }", "    Fixed(body)", "}", ""]
+    return "\n".join(lines), where
+
+
+@settings(max_examples=110, deadline=None)
+@given(st.lists(_cut(), min_size=1, max_size=6))
+def test_random_cut_programs_match_shapely_and_cut_each_place_once(tmp_path_factory, cuts):
+    """Law: a 40 x 30 mm plate cut by random lines between points of a 5 mm lattice (edge
+    to edge, slits, along an edge), Polylines whose first side runs along an edge, and
+    collinear slits that overlap.  The parts (count and areas) are Shapely's (the faces of
+    the noded outline and cuts, less those that fall out: :func:`shapely_parts`); the G-code
+    (one pass, replayed) cuts exactly the union of the outline and the cuts, each place once
+    (its length is the union's, Shapely's ``union_all``); W0522 is on the line of every
+    Polyline whose side runs along the edge, on no line that has nothing along the outline or
+    another cut, and some W0522 says "runs along" wherever two cuts overlap."""
+    import shapely
+    from shapely.geometry import LineString, Polygon
+    tmp = tmp_path_factory.mktemp("law")
+    src, where = _law_src(cuts)
+    res = _compile(src, tmp)
+    assert res.ok, src
+    polylines = [pts for _, pts in where.values()]
+    outline = [(0, 0), (W, 0), (W, H), (0, H)]
+    want = shapely_parts(outline, polylines)
+    got = sorted(p.area for p in res.output.parts)
+    assert len(got) == len(want), src
+    assert got == pytest.approx(want, abs=1e-6), src
+    # each place once: the G-code's length is that of the union of the outline and the cuts
+    plate = Polygon(outline)
+    union = shapely.union_all([plate.exterior] + [LineString(p) for p in polylines])
+    g = _gcode_stretches(encode(for_cutting(res.output), ".gcode",
+                                Options(machine=ONE_PASS)).decode())
+    assert sum(math.dist(p, q) for p, q in g) == pytest.approx(union.length, abs=1e-6), src
+    # W0522: where a side lies along the outline, or a cut along another
+    told = {d.span.line for d in res.diagnostics if d.code == "W0522"}
+    segs = {ln: [LineString(pair) for pair in zip(pts, pts[1:])] for ln, (_, pts) in where.items()}
+    on_edge = {ln for ln, ss in segs.items()
+               if any(s.difference(plate.exterior).length < 1e-9 for s in ss)}
+    overlaps = {ln for ln, ss in segs.items() for m, tt in segs.items() if m != ln
+                for s in ss for t in tt
+                if s.intersection(t).difference(plate.exterior).length > 1e-6}
+    assert {ln for ln, (kind, _) in where.items() if kind == "along"} <= told, src
+    assert told <= on_edge | overlaps, src
+    if overlaps:
+        assert any("runs along" in d.message for d in res.diagnostics), src

@@ -903,6 +903,7 @@ class Renderer:
             seg_bands.append([bands[-1]] if len(segs) == 1 else [
                 self.union([_quad(P[i], P[i + 1], SLIT_HALF) for i in range(len(P) - 1)], s)
                 for P in (_chain_points([seg]) for seg in segs)])
+        self._collinear_runs(paths)
         # each band's area on the material: against the pieces of the part whose boxes meet
         # its own (the pieces are disjoint, so the sum is its area in the whole part; the
         # whole part for every band cost bands x the part's vertices: 5.9 s for the 2,180
@@ -989,6 +990,41 @@ class Renderer:
         # in the part, a net of slivers round holes where the pieces were (a 3 x 3 grid:
         # the part 20 x 20 mm with an 8-gon hole, not one 10 x 10 mm square)
         return shp - self.union(removed, s), pieces
+
+    def _collinear_runs(self, paths: list) -> None:
+        """Register, for the lines of through-cuts ``paths`` that overlap or meet end to end
+        on one carrier (two slits on one line), the line of their whole run (there and
+        back), so that an edge of a piece the run cuts off is held by one chord: each edge
+        is matched to the chord that holds it whole (:class:`.exact.Provenance`), and an
+        edge from the plate's edge across both slits to a crossing, held by neither, kept
+        Manifold's vertices, 1e-7 mm off (the pieces' shared edge then on two carriers, cut
+        twice)."""
+        from .shared import _span
+        runs: dict = {}             # carrier -> [(lo, hi, point at lo, point at hi)]
+        for _, segs in paths:
+            for seg in segs:
+                if isinstance(seg, Line):
+                    key, lo, hi, fwd, tol, _ = _span(seg)
+                    if key is not None and hi - lo > tol:
+                        a, b = (seg.start, seg.end) if fwd else (seg.end, seg.start)
+                        runs.setdefault(key, []).append((lo, hi, a, b, tol))
+        for rs in runs.values():
+            if len(rs) < 2:
+                continue
+            rs.sort(key=lambda r: r[:2])
+            merged = [list(rs[0])]
+            count = [1]
+            for lo, hi, a, b, tol in rs[1:]:
+                if lo <= merged[-1][1] + tol:
+                    count[-1] += 1
+                    if hi > merged[-1][1]:
+                        merged[-1][1], merged[-1][3] = hi, b
+                else:
+                    merged.append([lo, hi, a, b, tol])
+                    count.append(1)
+            for (_, _, a, b, _), n in zip(merged, count):
+                if n > 1:
+                    self.exact.polygon(Loop([Line(a, b), Line(b, a)]))
 
     def part(self, s: Structure, out: Drawing) -> None:
         at = len(out.parts)             # a part is drawn under the parts of its drawings
