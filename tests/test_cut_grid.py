@@ -714,3 +714,28 @@ def test_random_cut_programs_match_shapely_and_cut_each_place_once(tmp_path_fact
     assert told <= on_edge | overlaps, src
     if overlaps:
         assert any("runs along" in d.message for d in res.diagnostics), src
+
+
+def test_a_bezier_span_along_the_outline_is_w0522_and_cut_once(tmp_path):
+    """A Bezier of two spans, the first on the bottom edge (collinear control points), the
+    second into the plate: judged span by span like a Polyline's sides.  Before: no word, and
+    the first span cut with the edge (10 mm more a pass).  The G-code (replayed; the span as
+    arcs within its tolerance) cuts the outline and the second span once: 120 mm plus the
+    span's length, by 2,001 points of its Bernstein form."""
+    res = _compile(PLATE.format(cut="b = Bezier(points=[(0, 0), (3, 0), (7, 0), (10, 0), "
+                                    "(10, 5), (15, 10), (20, 10)])"), tmp_path)
+    assert res.ok
+    (w,) = res.diagnostics
+    assert (w.code, w.span.line) == ("W0522", 5)
+    assert "adds nothing along segment 1 of 2, from (0, 0) to (10, 0)" in w.message
+    t = [i / 2000 for i in range(2001)]
+    P = [(10, 0), (10, 5), (15, 10), (20, 10)]
+    pts = [tuple(sum(c * p[d] for c, p in zip(((1 - s) ** 3, 3 * s * (1 - s) ** 2,
+                                                 3 * s * s * (1 - s), s ** 3), P))
+                 for d in (0, 1)) for s in t]
+    span = sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+    pytest.importorskip("gcodeparser")
+    from test_gcode import replay
+    moves = [mv for mv in replay(encode(for_cutting(res.output), ".gcode",
+                                        Options(machine=ONE_PASS)).decode()) if mv.on]
+    assert sum(mv.length for mv in moves) == pytest.approx(120 + span, abs=0.01)

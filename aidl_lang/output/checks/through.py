@@ -93,7 +93,7 @@ def _along_outline(th, sink: DiagnosticSink) -> None:
     along = getattr(th, "along", ())
     if not along:
         return
-    g, segs = th.geometry, th.segments
+    g, segs = th.geometry, getattr(th, "units", None) or th.segments
     runs: list = []
     for k in along:
         if runs and runs[-1][1] == k - 1:
@@ -132,7 +132,7 @@ def _overlapping(d: Drawing, sink: DiagnosticSink, tick) -> None:
     cuts = [th for th in getattr(d, "through", ())
             if not getattr(th, "on_outline", False) and th.inside > OFF * th.band.area() > 0]
     for i, th in enumerate(cuts):
-        for k, seg in enumerate(th.segments):
+        for k, seg in enumerate(getattr(th, "units", None) or th.segments):
             if k in getattr(th, "along", ()):
                 continue
             key, lo, hi, _, tol, wrap = _span(seg)

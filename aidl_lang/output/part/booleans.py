@@ -889,7 +889,7 @@ class Renderer:
         enclosed by another falls out (a hole) and any other is a part of its own.  Returns
         ``(the part's shape, [the shapes of the pieces cut off])``; the part's shape is
         ``shp`` itself when nothing is separated (the cuts take no area)."""
-        bands, seg_bands = [], []
+        bands, seg_bands, seg_units = [], [], []
         for g, segs in paths:
             self.tick(s)
             # the chords registered (there and back): the band's sides match the curve
@@ -900,9 +900,11 @@ class Renderer:
                                      for i in range(len(pts) - 1)], s))
             # each segment's own band (a curve of one segment: the curve's), so that every
             # segment of a Polyline, Spline or Bezier is judged as a Line would be
-            seg_bands.append([bands[-1]] if len(segs) == 1 else [
+            units = _units(segs)
+            seg_bands.append([bands[-1]] if len(units) == 1 else [
                 self.union([_quad(P[i], P[i + 1], SLIT_HALF) for i in range(len(P) - 1)], s)
-                for P in (_chain_points([seg]) for seg in segs)])
+                for P in (_chain_points([u]) for _, u in units)])
+            seg_units.append(units)
         self._collinear_runs(paths)
         # each band's area on the material: against the pieces of the part whose boxes meet
         # its own (the pieces are disjoint, so the sum is its area in the whole part; the
@@ -913,7 +915,7 @@ class Renderer:
         # CHORD_TOL inside the outline's chords, so curves are measured that much further in)
         before = shp.decompose() if not shp.is_empty() else []
         flat = [b for bs in seg_bands for b in bs]
-        curved = [not isinstance(seg, Line) for _, segs in paths for seg in segs]
+        curved = [not isinstance(u, Line) for units in seg_units for _, u in units]
         deep, seg_deep = {}, {}
         for bent in {False, True} & set(curved):
             deep[bent] = shp.offset(-2 * SLIT_HALF - (CHORD_TOL if bent else 0.0),
@@ -922,7 +924,8 @@ class Renderer:
         near, seg_near = meeting(bands, before), meeting(flat, before)
         cutting = []
         at = 0
-        for (g, segs), band, pieces, bs in zip(paths, bands, near, seg_bands):
+        for (g, segs), band, pieces, bs, units in zip(paths, bands, near, seg_bands,
+                                                      seg_units):
             self.tick(s)
             inside = sum((band ^ before[i]).area() for i in pieces)
             th = Through(g, s, segs, band, inside)
@@ -936,13 +939,18 @@ class Renderer:
                     along.append(k - at)
             at += len(bs)
             th.along = tuple(along)
-            th.on_outline = inside > 0 and len(along) == len(segs)
+            th.units = [u for _, u in units] if len(units) > len(segs) else segs
+            th.on_outline = inside > 0 and len(along) == len(units)
             self.through.append(th)
             if th.on_outline:       # W0522: not drawn (the outline is cut once), cuts nothing
                 continue
-            for k, seg in enumerate(segs):
-                if k not in along:  # a segment along the outline: W0522, not drawn either
-                    self._stroke_segment(seg, "cut", g, out)
+            cut_along = {units[k][0] for k in along}
+            for k, (j, u) in enumerate(units):
+                if j not in cut_along:
+                    if k == 0 or units[k - 1][0] != j:
+                        self._stroke_segment(segs[j], "cut", g, out)    # the segment whole
+                elif k not in along:    # the rest of a segment a stretch of which is along
+                    self._stroke_segment(u, "cut", g, out)              # the outline: W0522
             cutting.append(band if not along else
                            self.union([b for k, b in enumerate(bs) if k not in along], s))
         if shp.is_empty():
@@ -1079,6 +1087,24 @@ class Renderer:
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
         return out
+
+
+def _units(segs: list) -> list:
+    """``[(index of the segment, piece)]``: the pieces of the exact open segments ``segs``
+    that the through-cut checks judge one by one: each segment, an open Spline's (a Bezier's)
+    one per span, so that a Bezier's span on the outline is judged as a Polyline's side."""
+    out = []
+    for j, seg in enumerate(segs):
+        if isinstance(seg, Spline) and not seg.curve.closed:
+            lo, hi = sorted((seg.u0, seg.u1))
+            at = [lo] + [float(i) for i in range(math.floor(lo) + 1, math.ceil(hi))] + [hi]
+            if len(at) > 2:
+                pairs = list(zip(at, at[1:]))
+                out += [(j, Spline(seg.curve, a, b)) for a, b in pairs] if seg.u1 >= seg.u0 \
+                    else [(j, Spline(seg.curve, b, a)) for a, b in reversed(pairs)]
+                continue
+        out.append((j, seg))
+    return out
 
 
 def _chain_points(segs: list) -> np.ndarray:

@@ -41,12 +41,14 @@ class Through(Compared):
     ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
     zero-width cut); ``inside``: the band's area inside the part before any through-cut
     (0: the cut is off the material); ``on_outline``: it lies along the part's outline;
-    ``along``: the indices of its segments that lie along the outline."""
-    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline", "along")
+    ``along``: the indices of its ``units`` (its segments, an open Spline's spans) that lie
+    along the outline."""
+    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline", "along",
+                 "units")
 
     def __init__(self, geometry: Geometry, part: Structure, segments: list,
                  band: mf.CrossSection, inside: float = 0.0, on_outline: bool = False,
-                 along: tuple = ()):
+                 along: tuple = (), units: list | None = None):
         self.geometry = geometry
         self.part = part
         self.segments = segments
@@ -58,6 +60,8 @@ class Through(Compared):
         # the segments (indices into ``segments``) that each lie along the outline: each adds
         # nothing (not drawn, W0522), whatever the curve (a Polyline's first side, say)
         self.along = along
+        # the pieces judged one by one: its segments, an open Spline's (Bezier's) by span
+        self.units = segments if units is None else units
 
 
 class Drawing(Compared):
