@@ -549,8 +549,8 @@ def test_a_polyline_side_along_the_outline_is_w0522_on_its_line_and_cut_once(
 def test_overlapping_collinear_slits_are_w0522_naming_both_and_cut_once(tmp_path):
     """Two slits on one line, overlapping by 8 mm.  Before: the 8 mm were cut twice a pass
     (296 mm for the laser's two passes, where the design is 2 x 140), with no word.  Now
-    W0522 names both, on the later one's line, and the G-code, DXF, SVG and LightBurn cut each
-    millimetre of [5, 25] once; a slit that only meets another end to end is no overlap."""
+    W0522 names both, on the later one's line, and the G-code, DXF and SVG cut each
+    millimetre of [5, 28] once; a slit that only meets another end to end is no overlap."""
     res = _compile(PLATE.format(cut="a = Line((5, 15), (20, 15))\n        "
                                     "b = Line((12, 15), (25, 15))\n        "
                                     "e = Line((25, 15), (28, 15))"), tmp_path)

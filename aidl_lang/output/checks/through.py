@@ -3,7 +3,9 @@
 * ``W0522`` a through-cut that cuts nothing: no stretch of it lies on the material of its
   part (it is drawn off the part, or in a hole), or it has no length, or it lies along the
   part's outline (or a hole's) from end to end: the outline is cut anyway, so it adds nothing
-  (the outputs leave it out: that line is cut once);
+  (the outputs leave it out: that line is cut once); or a segment of one does, while the rest
+  cuts (:func:`_along_outline`: a Polyline's side, a Bezier's span); or it runs along another
+  through-cut of its part (:func:`_overlapping`: overlapping collinear slits, copies);
 * ``W0507`` a web thinner than the minimum wall that the through-cuts leave: the morphological
   opening (:func:`.walls._thin`) of the part with every through-cut's band taken out
   (:attr:`~..part.booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
