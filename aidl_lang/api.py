@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Literal
 
 from .diagnostics import Diagnostic, DiagnosticSink
-from .limits import DEFAULT_BUDGET, Budget
+from .limits import DEFAULT_BUDGET, Budget, now
 
 __all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError"]
 
@@ -300,15 +300,14 @@ class Result:
         ..."}``; with ``detail``, ``"structures"``: per structure ``{"structure", "unknowns",
         "dof", "floating"}`` (entities still free to move; costs a null-space computation;
         ``dof`` None and ``"not_counted"`` the reason for a structure not counted).
-        ``deadline`` (``time.monotonic()``) bounds the count; by default the program's
-        wall-time budget from now (15 s), so no call runs unbounded (issue 48).  Raises
+        ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds) bounds the count; by default
+        the program's budget from now (15 s of CPU time), so no call runs unbounded (issue 48).  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
-        import time
         from .solver.freedom import degrees_of_freedom, freedom_text
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
-            deadline = time.monotonic() + budget.seconds
+            deadline = now() + budget.seconds
         from .limits import is_out_of_memory, memory_text
         try:
             dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail,
@@ -353,7 +352,7 @@ class Result:
         """Look for constraints that others already imply and add each as a ``W0401`` warning
         to :attr:`diagnostics` (what ``aidl check`` does; docs/solver.md §6); returns those
         warnings.  ``seconds`` bounds the search (None: no bound), and so does ``deadline``
-        (a ``time.monotonic()`` value: the end of the run's budget), ``max_rows``
+        (a :func:`aidl_lang.limits.now` value: the end of the run's budget in CPU seconds), ``max_rows``
         the blocks of rows it ranks; the user constraints not looked at (out of time, or in
         a block too large) are counted in :attr:`not_searched`.  Runs once per result; []
         when the program did not solve.  A search that runs out of memory adds one located
@@ -410,10 +409,9 @@ class Result:
         (past it: :class:`~aidl_lang.output.part.part.OutputError`, a located ``E0304``)."""
         if self.deadline is not None:
             return self.deadline
-        import time
         from .limits import Deadline
         budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
-        return Deadline(time.monotonic() + budget.seconds, budget)
+        return Deadline.starting(budget)
 
     @property
     def description(self) -> dict:
@@ -502,7 +500,8 @@ class Result:
         deadline = self.compiled.deadline
         if deadline is not None and nest_time:
             from .limits import Deadline
-            deadline = Deadline(deadline.at + nest_time, deadline.budget)
+            from .output.fabrication.layout import nest_cpu_seconds
+            deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget)
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)

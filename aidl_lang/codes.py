@@ -38,11 +38,16 @@ The called name is not a primitive (Circle, Rectangle, ...), a constraint (Coinc
 
     Rotate(body, 30 deg)     # there is no Rotate: use `rotation=30 deg` or Angle(...)
 """),
-    "E0104": ("wrong number of arguments", """
+    "E0104": ("wrong number or combination of arguments", """
 The call has more positional arguments than the primitive or constraint takes, in any of its
-forms. The hint lists the accepted forms.
+forms, or arguments that no one form takes together. The message names the arguments that do
+not fit with the others (those outside a form the rest complete); the hint lists the accepted
+forms.
 
     Circle((0, 0), 5, 7)     # Circle(center, radius)
+    Arc(radius=5, start=(0, 0), end=(10, 0))
+        # `Arc` has no form taking `radius` with `start` and `end`: Arc(center, start, end),
+        # Arc(center, radius, start_angle, end_angle) or Arc(start, through, end)
 """),
     "E0105": ("unknown keyword argument", """
 A keyword argument that the primitive, constraint or template does not have.
@@ -224,8 +229,10 @@ instance to other parts with constraints in the parent structure.
 One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
-one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of wall time
-for the whole compile. Each construct's own limit
+one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of CPU time
+for the whole compile (this process's CPU seconds, all its threads: the same program gets the
+same answer on a quiet machine and on a busy one; wall time is only an outer guard, at 10 times
+the CPU seconds, for a machine that gives the compile less than a tenth of a core). Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
@@ -238,13 +245,13 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`). The wall time reaches every stage after the
+(e.g. `aidl render model.aidl --budget 4`). The CPU time reaches every stage after the
 solve too, each looking at it as it goes (every few parts, pairs or cells): the booleans, the
 shape checks, the exact outlines, the writers, `aidl parts`' list and `aidl check
 --describe`'s description (one budget for the whole command; `Result.output` and
 `Result.description` of the Python API, and the MCP `describe`, get a fresh budget per call)
 and the comparison with the defaults under `--set` (W0510): "the program ran out of its
-evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of wall time", at that
+evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of CPU time", at that
 part's structure. A program that runs out of memory
 before any figure of the budget is also `E0304`, wherever it happens (interpreting, solving,
 the booleans, the shape checks, the exact outlines, a writer) and in every front end (the
@@ -513,7 +520,7 @@ warning (W0503, W0402) explains why. Give the face an inside, or delete it.
         m = Mirrored(l, about=l)     # the same segment back: a loop of zero area
     }
 """),
-    "W0510": ("part changes topology under a param value", """
+    "W0510": ("part changes topology under a param value or the router's bit", """
 With `--set NAME=VALUE` (or a slider in `aidl serve`), a part has another topology than with
 the program's own defaults: a different number of pieces or openings, two holes that now merge
 (or no longer do), a hole that now breaks through the outline, or two faces of different
@@ -529,6 +536,21 @@ fit.
     # aidl check examples/bracket.aidl --set bolts=5
     # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges
     #                 with hole `bracket.first_pattern[4]`
+
+Also from `aidl render --machine router` (G-code): a part the router's bit cuts into more
+pieces than the design has. A through-cut has no width in the design; the bit cuts it as wide
+as itself, round past each end, so a bridge of material narrower than the bit's radius between
+a through-cut and the part's outline or a hole (narrower than its diameter between two
+through-cuts) is cut away. A slit stopped 1 mm short of both edges of a plate comes out, with a
+3.175 mm bit, as a slot through both edges: two pieces where `aidl check` and `aidl parts`
+say one. The warning is located at the through-cut and gives the bridge's width and the bit's
+reach; a bridge cut away that splits nothing is a note in the G-code. Leave bridges wider than
+the bit's radius or use a smaller tool (the profile's `tool_diameter`).
+
+    solid plate {
+        body = Rectangle(center=(30, 20), width=60, height=40)
+        cut slit { l = Line((30, 1), (30, 39)) }     # 1 mm bridges: less than 1.5875 mm
+    }
 """),
     "W0511": ("parts of an assembly interpenetrate", """
 Two separate parts (the solid children of an assembly) overlap: parts cut from a sheet cannot
@@ -813,7 +835,7 @@ out; the warning names each one with its code point.
 A note, not a warning: a family of the shape checks on the final part stopped before it had
 looked at everything, so what it would have said about the parts named is not known. Each
 family (holes, pieces, engravings, walls between features, openings, thin walls, slits,
-ledges, text, copies that merge) holds a share of the compile's wall time (a fifth of the
+ledges, text, copies that merge) holds a share of the compile's CPU time (a fifth of the
 budget: 3 s of the default 15 s) and stops past it, or before a step that cannot be interrupted
 (one Manifold call) when that step is expected to end past its share or past the compile's
 budget; and none lists more than 3,000,000 pairs

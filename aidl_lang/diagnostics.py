@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import os
 from collections import namedtuple
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 from .records import Compared
@@ -106,6 +106,15 @@ class Diagnostic(Compared):
     @property
     def is_error(self) -> bool:
         return self.severity == "error"
+
+    def reword(self, word: Callable[[str | None], str | None]) -> None:
+        """Pass the message, the hint and every label's message through ``word`` in place
+        (the command line's phrases worded for agents or for a form); the rendered text
+        follows."""
+        self.message = word(self.message)
+        self.hint = word(self.hint)
+        for lab in self.labels:
+            lab.message = word(lab.message)
 
     def to_json(self, sources: "dict[str, str] | None" = None) -> dict:
         return {

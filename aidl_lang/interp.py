@@ -28,7 +28,8 @@ from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
-from .limits import DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, Budget
+from .limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
+                     cpu_text, now, wall_text)
 from .memory import gc_paused
 from .sources import STDLIB
 
@@ -51,7 +52,9 @@ class Interpreter(Statements, Calls, Expressions):
                  budget: Budget = DEFAULT_BUDGET, deadline: float | None = None):
         self.sink = sink
         self.budget = budget
-        self.deadline = deadline if deadline is not None else time.monotonic() + budget.seconds
+        # the compile's end on the budget's clock (CPU seconds, limits.now) and its wall guard
+        self.deadline = deadline if deadline is not None else now() + budget.seconds
+        self.wall_end = time.monotonic() + WALL_GUARD * max(self.deadline - now(), 0.0)
         self.steps = 0
         self.objects = 0
         self.chars = 0                                # characters of every string built so far
@@ -96,7 +99,7 @@ class Interpreter(Statements, Calls, Expressions):
     # ------------------------------------------------------------------ the budget
     def step(self, span=None) -> None:
         """Count one evaluation step (loop iteration, comprehension element, call, template
-        instance); checks the wall-time deadline every 128 steps."""
+        instance); checks the deadline every 128 steps."""
         self.steps += 1
         if self.steps > self.budget.steps:
             raise BudgetExhausted(f"more than {self.budget.steps:,} evaluation steps (loop "
@@ -106,14 +109,16 @@ class Interpreter(Statements, Calls, Expressions):
             self.check_time(span)
 
     def check_time(self, span=None) -> None:
-        """The wall-time deadline (the budget's last resort)."""
-        if time.monotonic() > self.deadline:
-            raise BudgetExhausted(f"more than {self.budget.seconds:g} s of wall time",
-                                  span or self.cur_span, self.frames)
+        """The deadline (the budget's last resort): its CPU seconds, or its wall guard."""
+        if now() > self.deadline:
+            raise BudgetExhausted(cpu_text(self.budget.seconds), span or self.cur_span, self.frames)
+        if time.monotonic() > self.wall_end:
+            raise BudgetExhausted(wall_text(self.budget.seconds), span or self.cur_span,
+                                  self.frames)
 
     def count_object(self, span=None) -> None:
         """Count one point, geometry object, structure or constraint against the budget;
-        checks the wall-time deadline every 128 objects (one pattern call makes thousands of
+        checks the deadline every 128 objects (one pattern call makes thousands of
         copies in a single step: fuzz seed 15501, 100,000 copies, 127 s past a 15 s budget)."""
         self.objects += 1
         if self.objects > self.budget.objects:

@@ -5,13 +5,17 @@ The per-construct limits (``MAX_ITER``, ``MAX_TEMPLATE_DEPTH``...) are the first
 stops one construct that is too large by itself.  The :class:`Budget` bounds the product: every
 loop iteration, comprehension element, call and template instance is one *step*; geometry
 points, geometry objects, structures and constraints share one *object* count; every string or list a program
-builds is limited in size; and wall time is the last resort.  A program that goes past any of
+builds is limited in size; and CPU seconds are the last resort (:func:`now`, the budget's clock: this
+process's CPU time, so a program gets the same answer on a quiet machine and a busy one), with wall
+time only as an outer guard at :data:`WALL_GUARD` times the seconds.  A program that goes past any of
 them gets one located diagnostic (``E0304``) naming the loops and template instances on the
 stack (after the solve: the structure and the stage, :class:`OutOfBudget`), never a hang, a
 crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
 every budget figure by ``K``.
 """
 from __future__ import annotations
+
+import time
 
 from .records import Frozen
 
@@ -61,9 +65,10 @@ class Budget(Frozen):
       instances (about 2 s of interpretation);
     - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
-    - ``seconds``: 15 s of wall time for the whole compile: interpreting, solving, the
-      booleans and the shape checks (and, in ``aidl render``, the writers; in ``aidl parts``
-      the parts list; in ``aidl check --describe`` the description);
+    - ``seconds``: 15 s of CPU time (:func:`now`) for the whole compile: interpreting,
+      solving, the booleans and the shape checks (and, in ``aidl render``, the writers; in
+      ``aidl parts`` the parts list; in ``aidl check --describe`` the description); wall
+      time is an outer guard at :data:`WALL_GUARD` x that (150 s);
     - ``vertices``: 3 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
       :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``; a perforated sheet of
@@ -99,7 +104,7 @@ MAX_SOURCE_BYTES = 1_000_000
 
 class OutOfBudget(Exception):
     """The budget ran out after the solve: in the booleans, the shape checks or a writer.
-    ``what``: which figure (``more than 15 s of wall time``); ``stage``: where (``the
+    ``what``: which figure (``more than 15 s of CPU time``); ``stage``: where (``the
     booleans``); ``where``: the structure being worked on (with ``path`` and ``span``), or
     ``None``; ``hint``: the fix when it is not "build less or raise ``--budget``" (a bound
     that no budget raises).  :func:`aidl_lang.pipeline.after_solve` turns it into one located
@@ -168,23 +173,73 @@ def size_text(n: int) -> str:
     return f"{n / (1 << 20):.0f} MB"
 
 
+# The wall-time guard of a budget: a compile also ends once WALL_GUARD x its seconds of wall time
+# have passed, whatever CPU it got (a machine that gives it less than a tenth of a core, or a
+# stage that waits); the servers kill a worker's request at this multiple too (issue 83)
+WALL_GUARD = 10.0
+# s past the wall guard before a server kills the worker running a compile (the compile's own
+# guard ends it first, with its located E0304, unless it is stuck in one call into C code)
+WALL_GRACE = 10.0
+
+
+def wall_limit(seconds: float) -> float:
+    """The wall-time limit (s) after which a server (``aidl mcp``, ``aidl studio``, ``aidl
+    batch``, the LSP) kills the worker process of a compile whose budget is ``seconds`` of CPU
+    time: :data:`WALL_GUARD` x ``seconds`` + :data:`WALL_GRACE` (160 s for the default 15 s)."""
+    return WALL_GUARD * seconds + WALL_GRACE
+
+
+def now() -> float:
+    """The budget's clock, in seconds: this process's CPU time (``time.process_time()``, every
+    thread of the process: the compile's own and the libraries' it calls).  A compile's
+    ``deadline`` floats and :attr:`Deadline.at` are values of this clock, so the same program
+    reaches its budget after the same work on a quiet machine and on one where every core is
+    busy (issue 83: the 20,000-hole panel was E0304 at load 10 and ``ok`` at load 0).  A process
+    runs one compile at a time (every front end compiles in its own worker process or thread
+    joined before the next), so its CPU time is that compile's."""
+    return time.process_time()
+
+
 class Deadline:
-    """The wall-time end of one compile (``time.monotonic()`` seconds) and the budget it
-    comes from; :meth:`check` raises :class:`OutOfBudget` once it has passed."""
+    """The end of one compile on the budget's clock (:func:`now`: CPU seconds) and the budget
+    it comes from, with its wall-time guard (``wall_at``, ``time.monotonic()`` seconds;
+    by default :data:`WALL_GUARD` times the CPU seconds left when it is made); :meth:`check`
+    raises :class:`OutOfBudget` once either has passed."""
 
-    __slots__ = ("at", "budget")
+    __slots__ = ("at", "budget", "wall_at")
 
-    def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET):
+    def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET, wall_at: float | None = None):
         self.at, self.budget = at, budget
+        self.wall_at = (wall_at if wall_at is not None
+                        else time.monotonic() + WALL_GUARD * max(at - now(), 0.0))
+
+    @classmethod
+    def starting(cls, budget: Budget = DEFAULT_BUDGET) -> "Deadline":
+        """The deadline of a compile that starts now with ``budget``: ``budget.seconds`` CPU
+        seconds from :func:`now`, and :data:`WALL_GUARD` times that of wall time."""
+        return cls(now() + budget.seconds, budget)
 
     def check(self, stage: str, where=None, ahead: float = 0.0) -> None:
-        """Raise :class:`OutOfBudget` once the deadline has passed, or when a step expected to
-        take ``ahead`` seconds (a single call into Manifold that cannot be interrupted) would
-        end past it: refused before it starts."""
-        import time
-        now = time.monotonic()
-        if now > self.at:
-            raise OutOfBudget(f"more than {self.budget.seconds:g} s of wall time", stage, where)
-        if now + ahead > self.at:
+        """Raise :class:`OutOfBudget` once the deadline has passed (its CPU seconds, or the wall
+        guard), or when a step expected to take ``ahead`` CPU seconds (a single call into
+        Manifold that cannot be interrupted) would end past it: refused before it starts."""
+        t = now()
+        if t > self.at:
+            raise OutOfBudget(cpu_text(self.budget.seconds), stage, where)
+        if time.monotonic() > self.wall_at:
+            raise OutOfBudget(wall_text(self.budget.seconds), stage, where)
+        if t + ahead > self.at:
             raise OutOfBudget(f"about {ahead:.3g} s more would end past the "
-                              f"{self.budget.seconds:g} s of wall time", stage, where)
+                              f"{self.budget.seconds:g} s of CPU time", stage, where)
+
+
+def cpu_text(seconds: float) -> str:
+    """What ran out, for ``E0304``, when a compile used its ``seconds`` of CPU time."""
+    return f"more than {seconds:g} s of CPU time"
+
+
+def wall_text(seconds: float) -> str:
+    """What ran out, for ``E0304``, when the wall-time guard of a ``seconds`` budget passed."""
+    return (f"more than {WALL_GUARD * seconds:g} s of wall time ({WALL_GUARD:g} x its "
+            f"{seconds:g} s of CPU time: this machine gave the compile less than "
+            f"{1 / WALL_GUARD:.0%} of a core)")

@@ -18,7 +18,7 @@ from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_pat
 from .interp import Interpreter
 from .memory import gc_paused
 from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
-                     OutOfMemory, is_out_of_memory, memory_fix, memory_text)
+                     OutOfMemory, is_out_of_memory, memory_fix, memory_text, now)
 from .geometry.expr import Lin, Nl
 from .geometry.model import Model
 from .parser import parse
@@ -42,7 +42,7 @@ class Compiled(Compared):
         self.drawing = drawing  # the booleans' result, when the solve converged
         self.solve_seconds = solve_seconds  # wall time of the solve alone (``aidl batch`` rows)
         self.params = params  # the main file's params: name -> value (Q, bool, str)
-        self.deadline = deadline  # the compile's wall-time end, for the writers after it
+        self.deadline = deadline  # the compile's end (limits.Deadline), for the writers after it
 
     @property
     def ok(self) -> bool:
@@ -267,7 +267,7 @@ _deep_state = threading.local()
 
 def _compile(sink, source, path, overrides, do_solve, min_wall=None,
              budget: Budget = DEFAULT_BUDGET, shape_checks: bool = True) -> Compiled:
-    deadline = time.monotonic() + budget.seconds
+    deadline = now() + budget.seconds
     program = parse(source, path, sink)
     if sink.has_errors:
         return Compiled(sink)
@@ -442,13 +442,13 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     """W0401 for each user constraint that others already imply (``aidl check``; what it
     measures: :func:`aidl_lang.solver.redundancy.redundancies`).  ``seconds`` bounds the search
     (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
-    unknowns that it ranks; ``deadline`` (``time.monotonic()``: the run's end) bounds it
+    unknowns that it ranks; ``deadline`` (:func:`~aidl_lang.limits.now`: the run's end in CPU seconds) bounds it
     too.  Returns the number of user constraints not looked at (out of time, or in a block
     too large)."""
     from .solver.diagnose import MAX_DENSE
     from .solver.redundancy import redundancies
     if seconds is not None:
-        end = time.monotonic() + seconds
+        end = now() + seconds
         deadline = end if deadline is None else min(deadline, end)
     skipped: list = []
     reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
@@ -695,7 +695,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
     if result.out_of_time:
         sink.add(Diagnostic(
             "E0304", "the program ran out of its evaluation budget while solving: more than "
-            "its wall time", None, "error",
+            "its CPU time", None, "error",
             hint="simplify the model, or raise the budget with `--budget 2` (or more)"))
     elif result.budget_exceeded:
         sink.add(Diagnostic(

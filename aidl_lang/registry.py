@@ -822,29 +822,54 @@ def bind_variant(entry: Entry, npos: int, kwnames: list[str]):
 
 
 def _bind_variant(entry: Entry, npos: int, kwnames: list[str]):
-    best, best_reason = None, None
+    misfits = []        # (variant, extra keywords as written, missing, given twice)
     for v in entry.variants:
         names = [a.name for a in v]
         ren = rename_args(entry, v, npos, kwnames)
         kwnames_c = [ren[k] for k in kwnames]
-        npos_max = sum(not a.kw_only for a in v)
-        if npos > npos_max and not entry.varargs:
-            best_reason = best_reason or f"takes at most {npos_max} arguments, got {npos}"
+        if npos > sum(not a.kw_only for a in v) and not entry.varargs:
             continue
         bound = set(names[:npos])
-        bad = [k for k in kwnames_c if k not in names]
-        if bad:
-            best_reason = best_reason or f"has no argument `{bad[0]}`"
-            continue
-        if any(k in bound for k in kwnames_c) or len(set(kwnames_c)) < len(kwnames_c):
-            dup = next((k for k in kwnames_c if k in bound or kwnames_c.count(k) > 1))
-            best_reason = f"argument `{dup}` given twice"
-            continue
+        extra = [k for k in kwnames if ren[k] not in names]
+        dup = next((k for k in kwnames_c if k in bound or kwnames_c.count(k) > 1), None)
         given = bound | set(kwnames_c)
         missing = [a.name for a in v if a.required and a.name not in given]
-        if missing:
-            if best_reason is None or best_reason.startswith("has no"):
-                best_reason = f"missing argument `{missing[0]}`"
-            continue
-        return v, ren, None
-    return best, {}, best_reason
+        if not extra and dup is None and not missing:
+            return v, ren, None
+        misfits.append((v, extra, missing, dup))
+    return None, {}, _misfit_reason(entry, npos, kwnames, misfits)
+
+
+def _misfit_reason(entry: Entry, npos: int, kwnames: list[str], misfits: list) -> str:
+    """Why a call with ``npos`` positional and ``kwnames`` keyword arguments binds none of
+    ``entry``'s forms, from each reachable form's ``(variant, extra, missing, dup)``: too many
+    positional arguments for every form; a keyword no form has; an argument given twice; the
+    required argument that would complete a form taking every argument given; else the
+    arguments that do not fit with the others (issue 83: `Arc(radius=, start=, end=)` said
+    "no argument `radius`").  Those are the ones outside a form the call completes when there
+    is one (the arguments of a complete form are never the culprits), else outside the form
+    they fit best; the hint of the caller lists the forms."""
+    if not misfits:
+        most = max(sum(not a.kw_only for a in v) for v in entry.variants)
+        return f"takes at most {most} arguments, got {npos}"
+    unknown = [k for k in kwnames if all(k in extra for _v, extra, _m, _d in misfits)]
+    if unknown:
+        return f"has no argument `{unknown[0]}`"
+    takes_all = [m for m in misfits if not m[1]]
+    if takes_all:
+        dup = next((d for _v, _e, _m, d in takes_all if d is not None), None)
+        if dup is not None:
+            return f"argument `{dup}` given twice"
+        _v, _e, missing, _d = min(takes_all, key=lambda m: len(m[2]))
+        return f"missing argument `{missing[0]}`"
+    _v, extra, _m, _d = min(misfits, key=lambda m: (bool(m[2]), len(m[1]), len(m[2])))
+    fitting = [f"`{k}`" for k in kwnames if k not in extra]
+    if npos:
+        fitting.append(f"{npos} positional argument{'s' if npos > 1 else ''}")
+    return (f"has no form taking {_and([f'`{k}`' for k in extra])}"
+            + (f" with {_and(fitting)}" if fitting else " together"))
+
+
+def _and(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]

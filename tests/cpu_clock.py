@@ -1,10 +1,12 @@
 """A compile's clock that does not depend on how busy the machine is, for the tests of budgets.
 
-The compile's budget is wall time (``time.monotonic()``: aidl_lang/limits.py ``Deadline``,
-the checks' shares, the interpreter's look at the clock).  On a machine at load 4-6 on 2 cores
-a compile gets a third of a core, so a test that expects "ok within the budget", "W0521 at the
-family's share" or "E0304 in the shape checks" saw E0304 earlier, in another stage, or a wall
-time three times the quiet one.  Here ``time.monotonic`` is replaced by :func:`clock`: this
+Since issue 83 the compile's budget is CPU seconds itself (aidl_lang/limits.py ``now``,
+``Deadline``; tests/test_budget_clock.py), with wall time only as its outer guard at
+``limits.WALL_GUARD`` times the seconds, and the servers' wall-time limits
+(``limits.wall_limit``) far beyond it.  This helper remains for the tests that time their own
+work or wait on ``time.monotonic`` beside a compile: on a machine at load 4-6 on 2 cores a
+process gets a third of a core, and a wall-clock figure is three times the quiet one.  Here
+``time.monotonic`` is replaced by :func:`clock`: this
 process's CPU seconds (``time.process_time``), so the same work reaches the same deadline
 however loaded the machine is; it never runs slower than a tenth of the wall clock, so a loop
 that waits (sleeps) on ``time.monotonic`` still ends.

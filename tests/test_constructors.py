@@ -1,9 +1,12 @@
 """Constructor variants: Triangle by base and height, Trapezoid, Arc through three points,
 Ellipse (held semi-axes and rotation, drawn as a polyline loop, bounding box exact)."""
 import math
+import re
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from aidl_lang.output import area, render_model
 
@@ -180,3 +183,68 @@ def test_text_center_is_the_middle_of_its_strokes(compile_text):
     pt = g["p"].points["p"]
     assert (x[pt.ix], x[pt.iy]) == pytest.approx((10 + (x0 + x1) / 2, 30 + (y0 + y1) / 2),
                                                 abs=1e-9)
+
+
+def test_an_arc_with_arguments_no_form_takes_together_names_them(compile_text):
+    """`Arc(radius=, start=, end=)` was "`Arc` has no argument `radius`" (issue 83): `radius` is
+    an argument of Arc, only not with `start` and `end`; the hint lists the three forms."""
+    c = compile_text("solid s {\n    a = Arc(radius=5, start=(0, 0), end=(10, 0))\n}\n")
+    [d] = [d for d in c.sink.items if d.is_error]
+    assert (d.code, d.message) == ("E0104", "`Arc` has no form taking `radius` with `start` "
+                                            "and `end`")
+    assert (d.span.line, d.span.col) == (2, 9)
+    assert d.hint.count("Arc(") == 3 and "radius: length, start_angle: angle" in d.hint
+
+
+def _forms_law_entries():
+    from aidl_lang.registry import ENTRIES, arg_synonyms
+    out = []
+    for e in ENTRIES.values():
+        if len(e.variants) > 1:
+            syn = arg_synonyms(e.name)       # a name that is also another's synonym (Slot's
+            names = sorted({a.name for v in e.variants for a in v} - set(syn))  # `angle`): out
+            out.append((e, names))
+    return out
+
+
+FORMS_LAW = _forms_law_entries()
+
+
+@settings(max_examples=300, deadline=None)
+@given(data=st.data())
+def test_a_call_that_fits_no_form_names_the_right_culprits(data):
+    """For every constructor of several forms and any set S of its argument names (keywords)
+    that binds no form, the reason never says a given argument is missing or unknown; it is
+    either the missing argument that completes a form taking all of S, or it names the
+    culprits C and the fitting F (C + F = S) where no form takes all of S and, when a form
+    is complete with S, C is exactly what lies outside such a form (its own arguments are
+    never called wrong), else F fits one form."""
+    from aidl_lang.registry import choose_variant
+    entry, names = data.draw(st.sampled_from(FORMS_LAW))
+    given_ = data.draw(st.lists(st.sampled_from(names), unique=True, min_size=1,
+                                max_size=len(names)))
+    S = set(given_)
+    forms = [({a.name for a in v}, {a.name for a in v if a.required}) for v in entry.variants]
+    variant, reason = choose_variant(entry, 0, given_)
+    fits = [f for f, req in forms if S <= f and req <= S]
+    if variant is not None:
+        assert fits
+        return
+    assert not fits, (entry.name, given_, reason)
+    assert "has no argument" not in reason and "given twice" not in reason
+    m = re.fullmatch(r"missing argument `(\w+)`", reason)
+    if m:
+        assert m.group(1) not in S
+        assert any(S <= f and m.group(1) in req for f, req in forms), (entry.name, given_)
+        return
+    m = re.fullmatch(r"has no form taking (.+?)(?: with (.+)| together)", reason)
+    assert m, (entry.name, given_, reason)
+    culprits = set(re.findall(r"`(\w+)`", m.group(1)))
+    fitting = set(re.findall(r"`(\w+)`", m.group(2) or ""))
+    assert culprits and culprits | fitting == S and not culprits & fitting
+    assert not any(S <= f for f, _req in forms)
+    complete = [f for f, req in forms if req <= S]
+    if complete:
+        assert any(culprits == S - f for f in complete), (entry.name, given_, reason)
+    else:
+        assert any(fitting <= f for f, _req in forms), (entry.name, given_, reason)

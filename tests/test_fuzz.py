@@ -615,12 +615,17 @@ SVG_ELEMENTS = ['<path d="{d}"/>', '<circle cx="{a}" cy="{b}" r="{c}"/>',
                 '<polygon points="{d}"/>', '<polyline points="{d}"/>',
                 '<line x1="{a}" y1="{b}" x2="{c}" y2="{a}"/>',
                 '<g transform="{t}"><path d="{d}"/></g>',
+                '<g transform="{t}"><circle cx="{a}" cy="{b}" r="{c}"/></g>',
+                '<g transform="{t}"><ellipse cx="{a}" cy="{b}" rx="{c}" ry="{a}"/></g>',
+                '<g transform="{t}"><rect x="{a}" y="{b}" width="{c}" height="{a}" rx="{c}"/></g>',
                 '<text x="{a}" y="{b}" font-size="{c}">hi</text>']
 SVG_WORDS = ["M", "m", "L", "l", "H", "v", "C", "s", "Q", "T", "A", "a", "Z", "z", "0", "1", "-1",
              "10", "1e400", "nan", "0.5", ",", " ", "1e-300", "360", ".5.5", "1e", "+"]
 SVG_NUMBERS = ["0", "1", "-1", "10", "1e400", "nan", "inf", "", "abc", "1e-300", "50%"]
 SVG_TRANSFORMS = ["scale(0)", "scale(1e400)", "rotate(nan)", "matrix(0 0 0 0 0 0)",
-                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)"]
+                  "skewX(90)", "translate(1e300)", "scale(-1 1)", "matrix(1,2)",
+                  "scale(-1,-1)", "scale(-2 -2)", "matrix(-1,0,0,-2,0,0)", "scale(-1e-300)",
+                  "scale(-1 -1) skewX(30)", "scale(-1e300 -1)"]
 
 
 @st.composite
@@ -655,3 +660,110 @@ def test_malformed_svg_elements_are_notes_or_a_drawing_error(svg):
         read_drawing(svg.encode(), "f.svg")
     except DrawingError as e:
         assert e.code in CODES and e.message
+
+
+# machine jobs: seeds with parts laid close (lead-ins must keep clear of their neighbours)
+# and router slits near edges, holes and each other (the bit's bridges), mutated; each is
+# rendered as G-code with a lead-in profile, a router profile with tabs or the plotter:
+# never an internal error, and every lead-in of the file keeps the promised clearance
+from test_machine_safety import CLEAR, kit, lead_in_clearances  # noqa: E402
+
+MACHINE_SEEDS = [
+    kit("body = Rectangle(center=(0, 0), width=20, height=20)\n"
+        "hole h { c = Circle(center=(2, 2), radius=5) }",
+        "body = Rectangle(center=(20.3, 0), width=20, height=20)",
+        "body = Circle(center=(40.6, 0), radius=10)"),
+    """solid plate {
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    hole h { c = Circle(center=(45, 20), radius=5) }
+    cut slit {
+        l = Line((30, 1), (30, 39))
+    }
+    cut near {
+        for i in range(3) {
+            l = Line((8 + 2 * i, 2), (8 + 2 * i, 18))
+        }
+    }
+    Fixed(body)
+}
+""",
+]
+MACHINE_PROFILES = ["lead_in = 5\n", "lead_in = 30\n", 'kind = "router"\nlead_in = 3\ntabs = 2\n',
+                    'kind = "router"\ntool_diameter = 6\n', 'kind = "plotter"\n']
+
+
+@st.composite
+def mutated_machine_seeds(draw):
+    """A machine seed with one or two of its numbers replaced (sizes, gaps, slit ends)."""
+    src = draw(st.sampled_from(MACHINE_SEEDS))
+    for _ in range(draw(st.integers(1, 2))):
+        toks = [(m.start(), m.end()) for m in re.finditer(r"\b\d+(\.\d+)?\b", src)]
+        a, b = toks[draw(st.integers(0, len(toks) - 1))]
+        src = src[:a] + draw(st.sampled_from(["0", "0.5", "1", "1.6", "2", "3", "39.5", "60",
+                                              "1e-300", "1e300", "-1"])) + src[b:]
+    return src
+
+
+@settings(deadline=None, max_examples=20, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(mutated_machine_seeds(), st.sampled_from(MACHINE_PROFILES))
+@example(MACHINE_SEEDS[0], MACHINE_PROFILES[1])
+@example(MACHINE_SEEDS[1], MACHINE_PROFILES[2])
+def test_machine_jobs_of_mutated_programs_keep_their_promises(src, profile):
+    import os
+    folder = _workdir()
+    path = os.path.join(folder, "m.aidl")
+    with open(path, "w") as f:
+        f.write(src)
+    prof = os.path.join(folder, "fuzz-machine.toml")
+    with open(prof, "w") as f:
+        f.write(profile)
+    out = os.path.join(folder, "m.gcode")
+    if os.path.exists(out):
+        os.remove(out)
+    rc, said = cli_no_internal("render", path, "-o", out, "--machine", prof)
+    if rc != 0:
+        assert not os.path.exists(out), said
+        return
+    kind = "router" if "router" in profile else "plotter" if "plotter" in profile else "laser"
+    with open(out) as f:
+        text = f.read()
+    if kind != "plotter":
+        for length, d_other, d_own in lead_in_clearances(text, kind):
+            assert d_other >= CLEAR - 1e-6 and d_own >= CLEAR - 1e-6, (length, d_other, said)
+
+
+# well-formed shapes under mirrors and negative scales: every one drawn (issue 83: a circle
+# or ellipse under scale(-1,-1) was dropped without a word)
+NEGATIVE_SCALES = ["scale(-1,-1)", "scale(-2 -2)", "matrix(-1,0,0,-2,0,0)", "scale(-1 1)",
+                   "scale(1,-0.5)", "scale(-0.5,-3)", "matrix(-1,0.5,0,-2,10,5)",
+                   "rotate(30) scale(-1,-2)", "scale(-1,-1) skewY(20)"]
+SHAPES = ['<circle cx="{x}" cy="{y}" r="4"/>', '<ellipse cx="{x}" cy="{y}" rx="5" ry="2"/>',
+          '<rect x="{x}" y="{y}" width="6" height="3"/>',
+          '<rect x="{x}" y="{y}" width="6" height="3" rx="1" ry="0.5"/>',
+          '<polygon points="{x},{y} {x1},{y} {x},{y1}"/>',
+          '<polyline points="{x},{y} {x1},{y} {x1},{y1}"/>',
+          '<line x1="{x}" y1="{y}" x2="{x1}" y2="{y1}"/>',
+          '<path d="M {x} {y} C {x1} {y} {x1} {y1} {x} {y1} A 3 2 0 0 1 {x} {y} Z"/>',
+          '<path d="M {x} {y} Q {x1} {y} {x1} {y1}"/>']
+
+
+@settings(deadline=None, max_examples=60, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.tuples(st.sampled_from(SHAPES), st.sampled_from(NEGATIVE_SCALES),
+                          st.booleans()), min_size=1, max_size=4))
+def test_shapes_under_negative_scales_are_each_drawn(shapes):
+    """Each shape (every element type), under a group's or its own mirror or negative scale,
+    is drawn: one closed loop, circle, ellipse or open path each (they lie 40 units apart),
+    no note; none left out."""
+    from aidl_lang.drawing import read_drawing
+    body = []
+    for i, (shape, t, own) in enumerate(shapes):
+        x, y = 40.0 * i + 5, 7.0
+        el = shape.format(x=x, y=y, x1=x + 6, y1=y + 5)
+        body.append(el.replace("/>", f' transform="{t}"/>') if own else
+                    f'<g transform="{t}">{el}</g>')
+    d = read_drawing(('<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="200mm" '
+                      'viewBox="0 0 200 200">' + "".join(body) + "</svg>").encode(), "n.svg")
+    assert not d.notes, [n.message for n in d.notes]
+    assert len(d.outlines) + len(d.circles) + len(d.ellipses) + len(d.paths) == len(shapes)

@@ -52,10 +52,11 @@ class Move:
         return (d - 2 * math.pi) if d else -2 * math.pi
 
 
-def replay(text: str, kind: str = "laser") -> list[Move]:
+def replay(text: str, kind: str = "laser", origin=(0.0, 0.0)) -> list[Move]:
     """Every motion of ``text`` as GRBL runs it.  ``on``: the tool cuts (laser: M3/M4 with
-    S > 0; router and plotter: Z below 0, or at 0 for a pen)."""
-    x = y = 0.0
+    S > 0; router and plotter: Z below 0, or at 0 for a pen).  ``origin``: where the head
+    is when the program starts; None: unknown (a move from there starts at (None, None))."""
+    x, y = origin if origin is not None else (None, None)
     z = None
     f = s = None
     spindle = False
@@ -80,7 +81,8 @@ def replay(text: str, kind: str = "laser") -> list[Move]:
             s = float(prm["S"])
         if code not in (0, 1, 2, 3):
             continue
-        nx, ny = float(prm.get("X", x)), float(prm.get("Y", y))
+        nx = float(prm["X"]) if "X" in prm else x
+        ny = float(prm["Y"]) if "Y" in prm else y
         nz = float(prm["Z"]) if "Z" in prm else z
         center = None
         if code in (2, 3):

@@ -462,3 +462,207 @@ def test_import_writes_the_numbers_the_drawing_meant_not_float_noise():
     doc.write(buf)
     text, _notes = import_drawing(buf.getvalue().encode(), "noise.dxf")
     assert "Circle(center=(0.3, 44), radius=1.7)" in text
+
+
+# ------------------------------------------------------------------ islands of any curve
+# Issue 83: an ELLIPSE island inside a round hole (a DXF ELLIPSE, an SVG <ellipse>) was
+# written into the part, where the hole cut it away: the island's cut was lost.  Whole
+# ellipses are now loops like outlines and circles, so an island is one whatever its curve.
+PLATE = 100 * 60 - math.pi * 20 ** 2            # 100 x 60 plate, a hole of r 20 at (50, 30)
+
+
+def _dxf_lines(dxf_text: str) -> list:
+    """The curves of a DXF as polylines, by ezdxf alone: each entity flattened to within
+    1e-5 mm (ezdxf's own flattening of each curve, a polyline's by its lines and arcs), a
+    closed one closed exactly (a circle's end is 1e-15 off its start); shapely LineStrings."""
+    import io
+
+    import shapely
+    lines = []
+    for e in ezdxf.read(io.StringIO(dxf_text)).modelspace():
+        for g in (e.virtual_entities() if e.dxftype() in ("LWPOLYLINE", "POLYLINE") else [e]):
+            pts = [g.dxf.start, g.dxf.end] if g.dxftype() == "LINE" else \
+                list(g.flattening(1e-5))
+            if pts[0].isclose(pts[-1], abs_tol=1e-9):
+                pts[-1] = pts[0]
+            lines.append(shapely.LineString([(v.x, v.y) for v in pts]))
+    return lines
+
+
+def _even_odd_area(dxf_text: str) -> float:
+    """The area (mm2) the DXF's curves (:func:`_dxf_lines`) enclose by the even-odd rule,
+    found with ezdxf and shapely alone: the faces of their linework (shapely.polygonize),
+    each counted when a ray from a point inside it crosses the linework an odd number of
+    times."""
+    import numpy as np
+    import shapely
+    lines = _dxf_lines(dxf_text)
+    segs = np.array([s for ln in lines for s in zip(ln.coords[:-1], ln.coords[1:])])
+    (x1, y1), (x2, y2) = segs[:, 0].T, segs[:, 1].T
+    area = 0.0
+    for face in shapely.polygonize(shapely.unary_union(lines).geoms).geoms:
+        px, py = face.representative_point().coords[0]
+        up = (y1 > py) != (y2 > py)
+        xs = x1[up] + (py - y1[up]) * (x2[up] - x1[up]) / (y2[up] - y1[up])
+        if np.count_nonzero(xs > px) % 2:
+            area += face.area
+    return area
+
+
+def _island_dxf(kind: str):
+    """A plate (closed LWPOLYLINE) with a round hole holding an island of ``kind``, written
+    by ezdxf (mm); and the island's area, from its own numbers (a spline's: shapely of
+    ezdxf's flattening of it)."""
+    import io
+
+    import shapely
+    from ezdxf import path as epath
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (100, 0), (100, 60), (0, 60)], close=True)
+    msp.add_circle((50, 30), 20)
+    if kind == "circle":
+        msp.add_circle((50, 30), 8)
+        isl = math.pi * 64
+    elif kind == "ellipse":                                  # semi-axes 10 and 5, turned
+        msp.add_ellipse((50, 30), major_axis=(8, 6), ratio=0.5)
+        isl = math.pi * 50
+    elif kind == "spline":
+        e = msp.add_open_spline([(40, 25), (50, 18), (62, 25), (62, 36), (50, 42), (38, 36),
+                                 (40, 25)])                # closed by its ends
+        isl = shapely.Polygon([(v.x, v.y) for v in
+                               epath.make_path(e).flattening(1e-6)]).area
+    elif kind == "polyline":                                 # a hexagon, one side bulged
+        pts = [(50 + 9 * math.cos(k * math.pi / 3), 30 + 9 * math.sin(k * math.pi / 3))
+               for k in range(6)]
+        msp.add_lwpolyline([(*p, 0.0) for p in pts], format="xyb", close=True)
+        isl = 3 * math.sqrt(3) / 2 * 81
+    else:                                                    # a stadium: two arcs, two lines
+        msp.add_line((45, 26), (55, 26))
+        msp.add_arc((55, 30), 4, -90, 90)
+        msp.add_line((55, 34), (45, 34))
+        msp.add_arc((45, 30), 4, 90, 270)
+        isl = 10 * 8 + math.pi * 16
+    s = io.StringIO()
+    doc.write(s)
+    return s.getvalue().encode(), isl
+
+
+ISLAND_SVG = {
+    "ellipse": ('<ellipse cx="50" cy="30" rx="10" ry="5" transform="rotate(30 50 30)"/>',
+                math.pi * 50),
+    "circle": ('<circle cx="50" cy="30" r="8"/>', math.pi * 64),
+    "polygon": ('<polygon points="42,24 58,24 58,36 42,36"/>', 16 * 12),
+    "arc path": ('<path d="M 45 26 H 55 A 4 4 0 0 1 55 34 H 45 A 4 4 0 0 1 45 26 Z"/>',
+                 10 * 8 + math.pi * 16),
+}
+
+
+def _writers():
+    from aidl_lang.drawing.infer import import_drawing as infer_import
+    from aidl_lang.drawing.program import import_drawing
+    return {"plain": lambda b, n: import_drawing(b, n),
+            "parts": lambda b, n: import_drawing(b, n, parts=True),
+            "infer": lambda b, n: infer_import(b, n, infer=True)}
+
+
+@pytest.mark.parametrize("writer", ["plain", "parts", "infer"])
+@pytest.mark.parametrize("kind", ["ellipse", "circle", "spline", "polyline", "arcs"])
+def test_an_island_of_any_curve_in_a_round_hole_stays_an_island_dxf(kind, writer):
+    """A plate with a round hole holding an island of each curve type (DXF, written by
+    ezdxf): `aidl import` (plain, --parts, --infer) writes the island as a solid of its own,
+    so the compiled part's area is plate - hole + island (exact formulas; Manifold's area
+    to 1e-6 mm2, the program's DXF re-read by ezdxf and measured by shapely to 0.01 mm2);
+    the ellipse comes back as one ELLIPSE of its semi-axes.  The ellipse island was written
+    into the part and cut away by the hole (area 4743.36 of 4900.44)."""
+    data, isl = _island_dxf(kind)
+    text, notes = _writers()[writer](data, "plate.dxf")
+    assert not notes, [n.message for n in notes]
+    res = aidl_lang.compile(source=text, path="plate.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    want = PLATE + isl
+    tol = 1e-6 if kind != "spline" else 1e-3
+    assert abs(sum(p.area for p in res.output.parts) - want) <= tol, text
+    dxf = res.encode("dxf").decode()
+    assert abs(_even_odd_area(dxf) - want) <= 0.01
+    if kind == "ellipse":
+        import io
+        (e,) = ezdxf.read(io.StringIO(dxf)).modelspace().query("ELLIPSE")
+        assert e.dxf.center.isclose((50, 30, 0), abs_tol=1e-9)
+        assert abs(e.dxf.major_axis.magnitude - 10) <= 1e-9 and abs(e.dxf.ratio - 0.5) <= 1e-9
+
+
+@pytest.mark.parametrize("writer", ["plain", "parts", "infer"])
+@pytest.mark.parametrize("kind", sorted(ISLAND_SVG))
+def test_an_island_of_any_curve_in_a_round_hole_stays_an_island_svg(kind, writer):
+    """The same plate drawn in SVG (a rect, a circle, and the island an <ellipse> turned 30
+    degrees, a <circle>, a <polygon>, a path of arcs and lines): the island is kept."""
+    shape, isl = ISLAND_SVG[kind]
+    data = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" '
+            'viewBox="0 0 100 60"><rect x="0" y="0" width="100" height="60"/>'
+            f'<circle cx="50" cy="30" r="20"/>{shape}</svg>').encode()
+    text, notes = _writers()[writer](data, "plate.svg")
+    assert not notes, [n.message for n in notes]
+    res = aidl_lang.compile(source=text, path="plate.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    assert abs(sum(p.area for p in res.output.parts) - (PLATE + isl)) <= 1e-6, text
+    dxf = res.encode("dxf").decode()
+    assert abs(_even_odd_area(dxf) - (PLATE + isl)) <= 0.01
+    if kind == "ellipse":
+        import io
+        (e,) = ezdxf.read(io.StringIO(dxf)).modelspace().query("ELLIPSE")
+        assert abs(e.dxf.major_axis.magnitude - 10) <= 1e-9 and abs(e.dxf.ratio - 0.5) <= 1e-9
+        # rotate(30) turns clockwise on the page (SVG's y axis points down): -30 degrees
+        turn = math.degrees(math.atan2(e.dxf.major_axis.y, e.dxf.major_axis.x)) % 180
+        assert abs(turn - 150) <= 1e-7, turn
+
+
+@pytest.mark.parametrize("writer", ["plain", "parts", "infer"])
+def test_holes_in_an_elliptical_plate_are_holes(writer):
+    """An elliptical plate (ELLIPSE, semi-axes 40 and 25) with a round hole and a slot: the
+    ellipse is a loop like any other, the part's outline, so they are its holes (the
+    circle was written as material beside it: area 3141.59 + 0)."""
+    import io
+    doc = _doc()
+    msp = doc.modelspace()
+    msp.add_ellipse((0, 0), major_axis=(40, 0), ratio=25 / 40)
+    msp.add_circle((-15, 0), 6)
+    msp.add_lwpolyline([(5, -3), (25, -3), (25, 3), (5, 3)], close=True)
+    s = io.StringIO()
+    doc.write(s)
+    text, notes = _writers()[writer](s.getvalue().encode(), "oval.dxf")
+    assert not notes, [n.message for n in notes]
+    res = aidl_lang.compile(source=text, path="oval.aidl")
+    assert res.ok, [str(d) for d in res.errors]
+    want = math.pi * 40 * 25 - math.pi * 36 - 20 * 6
+    assert abs(sum(p.area for p in res.output.parts) - want) <= 1e-6, text
+    assert abs(_even_odd_area(res.encode("dxf").decode()) - want) <= 0.01
+
+
+def test_a_circle_and_an_ellipse_hole_drawn_overlapping_on_a_cut_role_cut_every_line():
+    """Boxes.py's way with holes drawn overlapping (Planetary2), with an ellipse among them
+    (laser roles): the two cut one opening (`AllowOverlap`, no W0508), and the pieces of
+    each inside the other are the sheet-level cut, so the program's DXF (re-read by ezdxf)
+    cuts every line drawn: the plate's 320 mm, the circle's and both ellipses' perimeters
+    (numpy, 400,000 chords), to 1e-4 mm.  The ellipse was no loop there: W0508 on the
+    design as drawn, and its 30.64 mm inside the circle and the circle's inside it not cut."""
+    import numpy as np
+    from aidl_lang.drawing.program import import_drawing
+    svg = b"""<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm"
+    viewBox="0 0 100 60"><g stroke="#000000" fill="none">
+    <rect x="0" y="0" width="100" height="60"/><ellipse cx="40" cy="30" rx="15" ry="8"/>
+    <circle cx="55" cy="30" r="8"/><ellipse cx="80" cy="30" rx="6" ry="20"/></g></svg>"""
+    text, notes = import_drawing(svg, "l.svg", roles="laser")
+    assert "AllowOverlap(hole2, hole3)" in text, text
+    (n,) = notes
+    assert n.message.startswith("2 pieces of holes of `l.svg` on a cut role drawn "
+                                "overlapping lie inside another hole of their part (30.6433 mm)")
+    res = aidl_lang.compile(source=text, path="l.aidl")
+    assert res.ok and not res.diagnostics, [str(d) for d in res.diagnostics]
+
+    def perimeter(a, b):
+        t = np.linspace(0, 2 * np.pi, 400_001)
+        return float(np.hypot(np.diff(a * np.cos(t)), np.diff(b * np.sin(t))).sum())
+    want = 320 + 2 * math.pi * 8 + perimeter(15, 8) + perimeter(6, 20)
+    got = sum(ln.length for ln in _dxf_lines(res.encode("dxf").decode()))
+    assert abs(got - want) <= 1e-4, (got, want)

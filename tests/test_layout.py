@@ -8,6 +8,8 @@ rigidly (area and perimeter within 1e-6, from the exact output model and from th
 """
 from __future__ import annotations
 
+from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+
 import json
 import math
 import re
@@ -523,7 +525,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     monkeypatch.setattr(layout, "_nest", nest)
     # CPU seconds (cpu_clock): the deadline is half the estimate after the same work, however
     # busy the machine (a wall deadline could pass before the estimate is even asked)
-    soon = Deadline(time.monotonic() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
+    soon = Deadline(budget_clock() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
     with pytest.raises(OutputError) as e:
         plan(out, deadline=soon)
     assert nested == []                           # refused before spyrrow ran
@@ -533,7 +535,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     assert d.code == "E0304" and d.span.line == 2
     assert "in the layout of `parts`" in d.message and f"{n} parts" in str(e.value)
     # the same parts with time to spare are laid out (and the first few alone)
-    later = Deadline(time.monotonic() + 600, DEFAULT_BUDGET)
+    later = Deadline(budget_clock() + 600, DEFAULT_BUDGET)
     few = build(compile_source("units mm\nassembly parts {\n" + "\n".join(rows.split("\n")[:3])
                                + "\n}\n", "few.aidl").drawing, "model")
     assert sum(len(s) for s in plan(few, deadline=later)) == 3

@@ -308,8 +308,9 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
 def test_a_call_past_its_time_limit_is_stopped_and_the_next_one_runs(tmp_path, monkeypatch):
     """Issue 37: the MCP server compiled in its own process with no hard time limit (Fillet
     on 2,000 stars ran 17-24 s against 15 s).  The compiling tools run in a worker process
-    killed past twice the budget's wall time, as `aidl batch` does; the call is refused
-    saying so and the next call gets a fresh worker.  The limit is made tiny here."""
+    killed past the budget's wall guard (limits.wall_limit: 10 x its CPU seconds + 10 s), as
+    `aidl batch` does; the call is refused saying so and the next call gets a fresh worker.  The
+    limit is made tiny here."""
     from aidl_lang.mcp import tools as T
     from aidl_lang.mcp import worker as W
     src = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
@@ -317,17 +318,17 @@ def test_a_call_past_its_time_limit_is_stopped_and_the_next_one_runs(tmp_path, m
     w = W.Worker(str(tmp_path))
     try:
         first = w.proc
-        monkeypatch.setattr(W, "WALL_FACTOR", 1e-4)              # 1.5 ms
+        monkeypatch.setattr(W, "wall_limit", lambda seconds: 1e-4 * seconds)   # 1.5 ms
         with pytest.raises(T.Refused, match="took longer than 0.0015 s .* was stopped"):
             w.call("check", src, None, None, False, None)
         assert w.proc is None and w.restarts == 1
-        monkeypatch.setattr(W, "WALL_FACTOR", 2.0)
+        monkeypatch.undo()
         doc = w.call("check", "solid p { body = Rectangle(center=(0, 0), width=4, height=2) }",
                      None, None, False, None)
         assert doc["ok"] and w.proc is not first and w.proc.is_alive()
         with pytest.raises(T.Refused, match="budget"):            # the tool's own refusals
             w.call("check", "solid p {}", None, None, False, 99.0, budget=99.0)
-        assert w.seconds(None) == 30.0 and w.seconds(4) == 120.0 and w.seconds(-1) == 30.0
+        assert w.seconds(None) == 160.0 and w.seconds(4) == 610.0 and w.seconds(-1) == 160.0
     finally:
         w.stop()
 
@@ -373,3 +374,65 @@ async def test_every_resource_uri_of_the_docs_is_served(tmp_path):
             for uri in sorted(said):
                 got = await session.read_resource(uri)
                 assert got.contents[0].text.strip(), uri
+
+
+# A line that is no JSON-RPC message, and the error JSON-RPC 2.0 answers it with (issue 83):
+# the SDK dropped each of these (an object/boolean/float/null id read as a notification).
+BAD_LINES = [
+    ("{not json", -32700),
+    ("[]", -32600),
+    ('[{"jsonrpc": "2.0", "id": 1, "method": "ping"}]', -32600),    # a batch (MCP 2025-06)
+    ('{"jsonrpc": "2.0", "id": {}, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": true, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": 1.5, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": null, "method": "ping"}', -32600),
+    ('{"jsonrpc": "2.0", "id": 7, "method": 5}', -32600),
+    ('{"jsonrpc": "1.0", "id": 8, "method": "ping"}', -32600),
+    ("42", -32600),
+    ('{"jsonrpc": "2.0", "id": NaN, "method": "ping"}', -32700),     # not JSON (RFC 8259)
+    ("[" * 100_000 + "]" * 100_000, -32700),                          # nested too deep
+]
+
+
+def test_lines_that_are_no_message_get_json_rpc_errors_and_the_server_goes_on(tmp_path):
+    """A real `aidl mcp`: each bad line gets one error reply with id null and the code of
+    JSON-RPC 2.0 section 5; a response sent by the client (id null) gets none; a ping after
+    each is answered with its own id, so nothing was dropped or left waiting."""
+    import select
+    import subprocess
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    env["AIDL_MCP_COLD"] = "1"
+    p = subprocess.Popen([sys.executable, "-m", "aidl_lang.cli", "mcp", "--root", str(tmp_path)],
+                         cwd=str(ROOT), env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                         stderr=subprocess.DEVNULL)
+
+    def send(line: str) -> None:
+        p.stdin.write(line.encode() + b"\n")
+        p.stdin.flush()
+
+    def reply() -> dict:
+        ready, _, _ = select.select([p.stdout], [], [], 30)
+        assert ready, "no reply in 30 s"
+        return json.loads(p.stdout.readline())
+
+    try:
+        send(json.dumps({"jsonrpc": "2.0", "id": 0, "method": "initialize", "params": {
+            "protocolVersion": "2025-06-18", "capabilities": {},
+            "clientInfo": {"name": "test", "version": "1"}}}))
+        assert reply()["id"] == 0
+        send('{"jsonrpc": "2.0", "method": "notifications/initialized"}')
+        for n, (line, code) in enumerate(BAD_LINES, start=100):
+            send(line)
+            answer = reply()
+            assert answer["jsonrpc"] == "2.0" and answer["id"] is None, (line, answer)
+            assert answer["error"]["code"] == code, (line, answer)
+            send(json.dumps({"jsonrpc": "2.0", "id": n, "method": "ping"}))
+            assert reply() == {"jsonrpc": "2.0", "id": n, "result": {}}
+        # a response, even one with id null, is never answered; blank lines are skipped
+        send('{"jsonrpc": "2.0", "id": null, "error": {"code": -32600, "message": "no"}}')
+        send("")
+        send(json.dumps({"jsonrpc": "2.0", "id": "last", "method": "ping"}))
+        assert reply() == {"jsonrpc": "2.0", "id": "last", "result": {}}
+    finally:
+        p.stdin.close()
+        p.wait(30)

@@ -254,6 +254,56 @@ def test_errors_in_the_form_are_shown_located():
     assert svg_figures(img_svg(f.output.value))["loops"] == 1   # no hole
 
 
+PLATE = ("units mm\nparam width = 120 mm\nparam teeth = 12, min=6, max=60\nparam holes = true\n"
+         "solid p { body = Rectangle(center=(0, 0), width=width, height=20) }\n")
+
+
+def drawn_width(f) -> float:
+    """The width of the form's drawing (mm, wider than its 20 mm height): its SVG page less
+    the margin of 5 % of the larger side on each side."""
+    return svg_figures(img_svg(f.output.value))["size"][0] / 1.1
+
+
+@pytest.mark.parametrize("values, said", [
+    ({"width": -5}, "`width` = -5 mm is outside its control's range 30 .. 240 mm; nothing "
+                    "changed (`param width` declares no range: its `min=` and `max=` give it one)"),
+    ({"width": 1e9}, "`width` = 1000000000 mm is outside its control's range 30 .. 240 mm"),
+    ({"teeth": 61}, "`teeth` = 61 is outside its control's range 6 .. 60; nothing changed"),
+    ({"width": "abc"}, "`width` takes a number in mm, not 'abc'; nothing changed"),
+    ({"width": float("nan")}, "`width` takes a number in mm, not nan"),
+    ({"teeth": 7.5}, "`teeth` takes a whole number, not 7.5"),
+    ({"width": 150, "holes": "yes"}, "`holes` takes True or False, not 'yes'"),
+])
+def test_a_refused_set_says_why_in_one_line_and_changes_nothing(values, said):
+    """Issue 83: `set(width=-5)` was clamped to 30 mm (and 1e9 to 240 mm) and drawn without a
+    word; a wrong type was traitlets' TraitError; `set(width=150, holes="yes")` left the
+    width control at 150 under a drawing 120 mm wide.  Now each is a FormError (a
+    ValueError) saying what and why, and the controls, the result and the drawing are as
+    before it."""
+    from aidl_lang.notebook import FormError, form
+    f = form(PLATE, path="plate.aidl")
+    assert drawn_width(f) == pytest.approx(120)
+    before = (f.values, f.result, f.output.value, f.redraws)
+    with pytest.raises(FormError) as e:
+        f.set(**values)
+    assert isinstance(e.value, ValueError) and said in str(e.value) and "\n" not in str(e.value)
+    assert (f.values, f.result, f.output.value, f.redraws) == before
+    assert f.values == {"width": 120, "teeth": 12, "holes": True}
+    r = f.set(width=150, teeth=60)                # the ends of the ranges are in them
+    assert r.ok and drawn_width(f) == pytest.approx(150) and f.values["teeth"] == 60
+
+
+def test_a_refused_set_is_one_line_in_ipython(capsys):
+    """IPython shows a FormError as its one line (`_render_traceback_`), not a traceback."""
+    from IPython.core.interactiveshell import InteractiveShell
+    shell = InteractiveShell()
+    shell.run_cell("from aidl_lang.notebook import form\n"
+                   f"f = form({PLATE!r})\n"
+                   "f.set(width='abc')\n")
+    out = capsys.readouterr().out
+    assert out == "FormError: `width` takes a number in mm, not 'abc'; nothing changed\n"
+
+
 def test_a_program_that_does_not_compile_gives_a_form_without_controls():
     from aidl_lang.notebook import form
     f = form("solid p { c = Circle(center=(0, 0), radius=r) }")

@@ -168,7 +168,9 @@ def test_bad_values_keep_the_last_picture(tmp_path):
     v = s.set_params({"w": "50 deg"})
     assert not v["ok"] and v["svg"] == good
     assert [(d["code"], d["message"]) for d in v["diagnostics"]] == [
-        ("E0113", "`--set w=50 deg`: `w` is a length like its default `40 mm`, got an angle")]
+        ("E0113", "the field `w` = `50 deg`: `w` is a length like its default `40 mm`, got "
+                  "an angle")]
+    assert "--set" not in json.dumps(v)                 # the page has a field, not `--set`
     # a save that changes w's default drops the slider value; others are kept
     s.set_params({"w": "60mm", "turns": "5"})
     f.write_text(RANGED.replace("param w = 40 mm", "param w = 50 mm"))

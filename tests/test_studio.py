@@ -5,6 +5,7 @@ and the page's security headers."""
 from __future__ import annotations
 
 import io
+import json
 import os
 import threading
 from pathlib import Path
@@ -30,7 +31,7 @@ SLOW = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, 
 SPIN = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
         "    for i in range(10000) { for j in range(10000) { k = i * j } }\n}\n")
 SPIN_BUDGET = 400
-LIMIT = 3.0             # s: the wall limit set for SPIN (wall_factor), far below its minutes
+LIMIT = 3.0             # s: the wall limit set for SPIN (kill_after), far below its minutes
 
 
 @pytest.fixture
@@ -71,6 +72,30 @@ def test_a_view_then_a_warm_slider_move_and_a_dxf_read_back(client):
     box = bbox.extents(e for e in doc.modelspace() if e.dxf.layer.upper() == "CUT")
     assert box.size.x == pytest.approx(x1 - x0, abs=1e-6)
     assert box.size.y == pytest.approx(y1 - y0, abs=1e-6)
+
+
+RANGED = ("units mm\nparam w = 40 mm, min=20 mm, max=80 mm\n"
+          "solid p { body = Rectangle(center=(0, 0), width=w, height=20) }\n")
+
+
+def test_a_form_value_out_of_range_or_of_the_wrong_kind_is_said_without_the_cli(client):
+    """The page's values come from its fields and sliders: a value out of its range (a
+    download does not move it into the range as the view does) or of the wrong kind is
+    said naming the field `w`, never the command line's `--set` (issue 83)."""
+    sid = session(client)
+    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
+                                               "values": {"w": "95mm"}})
+    assert r.status_code == 422 and "--set" not in r.text
+    [d] = r.json()["diagnostics"]
+    assert d["code"] == "E0124" and d["message"] == (
+        "the field `w` = `95mm`: 95 mm is outside the range 20 mm .. 80 mm declared for `w`")
+    v = view(client, sid, RANGED, {"w": "95mm"})     # the view moves it in: 80 mm, drawn
+    assert v["ok"] and v["clamped"] == {"w": 80.0}
+    v = view(client, sid, RANGED, {"w": "50 deg"})
+    assert not v["ok"] and "--set" not in json.dumps(v)
+    [d] = v["diagnostics"]
+    assert d["code"] == "E0113" and d["message"].startswith("the field `w` = `50 deg`: ")
+    assert d["hint"] == "give it in a length unit, e.g. `40mm` in the field `w`"
 
 
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
@@ -148,11 +173,11 @@ def test_a_full_studio_answers_busy_and_a_long_compile_is_stopped(tmp_path):
     app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, wait=0.3,
                               budget=SPIN_BUDGET))
     studio = app.state.studio
-    pool, generous = studio.pool, studio.settings.wall_factor
+    pool, generous = studio.pool, studio.settings.kill_after
     with TestClient(app) as c:
         sid = session(c)
         view(c, sid, BRACKET)                              # the worker is warm
-        studio.settings.wall_factor = LIMIT / (15 * SPIN_BUDGET)     # a compile's limit: LIMIT
+        studio.settings.kill_after = LIMIT     # a compile's limit: LIMIT
         slow: dict = {}
         t = threading.Thread(target=lambda: slow.update(
             r=c.post("/api/view", json={"sid": sid, "source": SPIN, "values": {}})))
@@ -169,7 +194,7 @@ def test_a_full_studio_answers_busy_and_a_long_compile_is_stopped(tmp_path):
         doc = slow["r"].json()
         assert slow["r"].status_code == 200 and not doc["ok"]
         assert doc["error"].startswith(f"the compile took longer than {LIMIT:g} s"), doc
-        studio.settings.wall_factor = generous
+        studio.settings.kill_after = generous
         assert view(c, sid, BRACKET)["ok"]                 # and the next one runs
 
 

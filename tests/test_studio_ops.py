@@ -36,7 +36,7 @@ SLOW = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, 
 SPIN = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
         "    for i in range(10000) { for j in range(10000) { k = i * j } }\n}\n")
 SPIN_BUDGET = 400
-LIMIT = 3.0             # s: the wall limit set for SPIN (wall_factor), far below its minutes
+LIMIT = 3.0             # s: the wall limit set for SPIN (kill_after), far below its minutes
 
 
 def until(ready, request: threading.Thread) -> None:
@@ -216,7 +216,7 @@ def test_compiles_on_dask_keep_the_wall_limit_and_refuse_when_full(cluster, tmp_
         assert c.get("/healthz").json()["checks"]["compilers"] == "ok"
         sid = c.post("/api/session").json()["sid"]
         assert c.post("/api/view", json={"sid": sid, "source": BRACKET}).json()["ok"]  # warm
-        studio.settings.wall_factor = LIMIT / (15 * SPIN_BUDGET)     # a compile's limit: LIMIT
+        studio.settings.kill_after = LIMIT     # a compile's limit: LIMIT
         answers = {}
 
         def ask(name, source):

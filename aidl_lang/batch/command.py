@@ -16,7 +16,7 @@ import time
 from collections import Counter
 from pathlib import Path
 
-from ..limits import min_wall_argument
+from ..limits import DEFAULT_BUDGET, min_wall_argument, wall_limit
 from .row import TIMINGS
 
 
@@ -73,7 +73,8 @@ def add_arguments(p) -> None:
                    help="multiply each program's evaluation budget by K (docs/language.md §8.1)")
     p.add_argument("--timeout", type=_positive(float), default=None, metavar="SECONDS",
                    help="hard time-out per program: its worker is stopped and the row says "
-                        "`timeout` (default: twice the budget's wall time, 120 s x K)")
+                        "`timeout` (default: 10 times the budget's CPU seconds and 10 s, "
+                        "160 s for K 1)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a param in every program")
     p.add_argument("--min-wall", type=min_wall_argument, default=None, metavar="MM",
@@ -137,7 +138,7 @@ def run_batch(inputs: list[str], out: str | Path, *, render: list[str] = (),
     if render:
         _check_writers(list(render))
     workers = workers or default_workers()
-    timeout = timeout or 120.0 * budget
+    timeout = timeout or wall_limit(DEFAULT_BUDGET.seconds * budget)
     # absolute: the workers (Dask's too) write there whatever their working folder
     cfg = {"render": list(render), "out_dir": os.path.abspath(out_dir) if render else None,
            "min_wall": min_wall}

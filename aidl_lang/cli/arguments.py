@@ -226,7 +226,7 @@ def _render_arguments(r) -> None:
                         "(default), or any")
     r.add_argument("--nest-time", type=int, default=0, metavar="S",
                    help="seconds the nesting may spend improving its first packing (default 0); "
-                        "added to the --budget wall time")
+                        "added to the --budget (its CPU seconds: S x the cores)")
     r.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="override a model param, e.g. --set width=40mm")
     r.add_argument("--json", action="store_true", help="machine-readable diagnostics on stdout")
@@ -358,7 +358,7 @@ def _budget_factor(text: str) -> float:
 
 def _budget_arg(p) -> None:
     p.add_argument("--budget", type=_budget_factor, default=1.0, metavar="K",
-                   help="multiply the evaluation budget (steps, objects, sizes, time; "
+                   help="multiply the evaluation budget (steps, objects, sizes, CPU seconds; "
                         "docs/language.md §8.1) by K, e.g. --budget 4")
 
 

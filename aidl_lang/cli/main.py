@@ -19,10 +19,10 @@ from __future__ import annotations
 import json
 import os
 import sys
-import time
 from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
+from ..limits import now
 from ..solver import solve_text
 from .arguments import SUBCOMMANDS, _parser
 
@@ -125,10 +125,10 @@ def cmd_check(args) -> int:
     res = program.compiled
     extra = {}
     dofs = None
-    # the whole run has one wall-time budget (15 s x --budget) from the start of the compile:
+    # the whole run has one budget (15 s x --budget) from the start of the compile:
     # the freedom count and the redundancy search get what the parse, solve and checks left
     end = (res.deadline.at if res.deadline is not None
-           else time.monotonic() + _budget(args).seconds)
+           else now() + _budget(args).seconds)
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
@@ -174,7 +174,7 @@ def cmd_check(args) -> int:
             n = program.not_searched
             why = program.not_searched_why
             if why == "out of time":
-                why += (f": the budget's {_budget(args).seconds:g} s of wall time; --budget K "
+                why += (f": the budget's {_budget(args).seconds:g} s of CPU time; --budget K "
                         "gives K times more" if args.dof else
                         f": the search's {REDUNDANCY_SECONDS:g} s; `--dof` searches in the "
                         "whole budget")
@@ -498,9 +498,12 @@ def cmd_render(args) -> int:
         if args.layout:
             from ..output.fabrication.layout import place, plan
             if args.nest_time and res.deadline is not None:
-                # the nesting's own time limit comes on top of the compile's wall budget
+                # the nesting's own time limit comes on top of the compile's budget (the CPU
+                # seconds of its threads)
                 from ..limits import Deadline
-                res.deadline = Deadline(res.deadline.at + args.nest_time, res.deadline.budget)
+                from ..output.fabrication.layout import nest_cpu_seconds
+                res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
+                                        res.deadline.budget)
             where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
             flat, dropped = place(cut, where, sheet)
             solid, _ = place(output, where, sheet)
@@ -533,6 +536,10 @@ def cmd_render(args) -> int:
                 j[2] in (".step", ".stp") for j in jobs):
             notes.append("note: STEP shows the bent parts (`Bend`) flat, as cut; .3mf, .glb "
                          "and .stl show them bent")
+        routed = machine is not None and machine.kind == "router" and any(
+            j[2] in (".gcode", ".nc") for j in jobs)
+        if routed:
+            _router_splits(res, output, machine.tool_diameter)
         items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
@@ -549,12 +556,14 @@ def cmd_render(args) -> int:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
-    from ..output.writers.gcode import GCODE_FORMATS, read_summary
+    from ..output.writers.gcode import GCODE_FORMATS, W0510_TAG, read_summary
     said = set()
     for o, data in items:                    # G-code: the estimates, the profile's warnings
         if _suffix(o, args) in GCODE_FORMATS:
             estimate, warnings, said_notes = read_summary(data)
             for w in warnings:
+                if w.endswith(W0510_TAG):        # said as a located W0510 (_router_splits)
+                    continue
                 if w not in said:
                     said.add(w)
                     print(f"aidl: warning: {w}", file=sys.stderr)
@@ -571,6 +580,29 @@ def cmd_render(args) -> int:
     return 0
 
 
+def _router_splits(res, output, diameter: float) -> None:
+    """W0510 in ``res.sink`` for each part of ``output`` (the design) that a router's bit of
+    ``diameter`` mm cuts into more pieces than the design has (through-cuts nearer the
+    part's edges, holes or each other than the bit's reach), located at the through-cut's
+    structure (else the part's)."""
+    from ..output.fabrication.bridges import router_bridges, split_message
+    _, splits = router_bridges(output, diameter)
+    for sp in splits:
+        node = res.drawing.part_of.get(sp.part)
+        if node is None:
+            continue
+        path = sp.bridges[0].cut
+        rest = path[len(sp.part) + 1:].split(".") if path.startswith(sp.part + ".") else []
+        for name in rest:
+            child = node.children.get(name) if hasattr(node, "children") else None
+            if child is None:
+                break
+            node = child
+        res.sink.warning("W0510", split_message(sp, diameter), node.span,
+                         hint="the design (`aidl check`, `aidl parts`) has one piece; the bit "
+                              "cuts the through-cut as wide as itself, round past its ends")
+
+
 def cmd_parts(args) -> int:
     from ..pipeline import compile_source
     from ..output import build
@@ -584,7 +616,7 @@ def cmd_parts(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False)
         return 1
-    # the parts list gets what the compile left of its wall-time budget (E0304 past it)
+    # the parts list gets what the compile left of its budget (E0304 past it)
     rows = parts_list(build(res.drawing, res.model.root.name, deadline=res.deadline),
                       res.deadline)
     if args.json:

@@ -77,13 +77,13 @@ def inner_rests(loops: list, inside: list, deadline=None,
     those no longer than :data:`~.model.GAP_NOTE` (a burn-correction overlap).  A hole that
     crosses none of them (one drawn twice) gives nothing.  ``deadline``: a
     :class:`~aidl_lang.limits.Deadline` checked per part and per hole, or None.  ``pairs``:
-    a set to which each pair of overlapping holes is added, as the frozenset of the ids of
-    their loops' first segments (so that the writer can say that the two may cut one
-    opening, whichever part the loops are written in)."""
+    a set to which each pair of overlapping holes is added, as the frozenset of their
+    :func:`loop_key` (so that the writer can say that the two may cut one opening,
+    whichever part the loops are written in)."""
     from ..geometry.drawing2d import _inside
     partners, poly = overlapping_holes(loops, inside, deadline)
     if pairs is not None:
-        pairs.update(frozenset((id(loops[i][0]), id(loops[j][0])))
+        pairs.update(frozenset((loop_key(loops[i]), loop_key(loops[j])))
                      for i, js in partners.items() for j in js)
     out: list[Path] = []
     for i in sorted(partners):
@@ -97,6 +97,15 @@ def inner_rests(loops: list, inside: list, deadline=None,
         out += [Path(r, "the part of a hole inside another hole of its part")
                 for r in runs_of(pieces, flags) if sum(p.length for p in r) > GAP_NOTE]
     return out
+
+
+def loop_key(segs: list):
+    """A key of the closed loop ``segs`` (segments) that stays the same however often the
+    loop is built from its drawing: its first segment's identity; a whole ellipse's own
+    value (a :class:`~aidl_lang.geometry.curves.EllipticArc` made afresh from the drawing's
+    numbers each time, :func:`~.program._whole_ellipse`)."""
+    s = segs[0]
+    return s if isinstance(s, EllipticArc) and s.whole else id(s)
 
 
 def _middle(s) -> tuple[float, float]:

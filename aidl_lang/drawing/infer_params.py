@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from .infer_shapes import ROUND_TOL, Shape
-from .program import _ident, _num, _pt
+from .program import _Names, _ident, _num, _pt
 
 
 def _r(v: float) -> str:
@@ -29,7 +29,7 @@ class _Params:
 
     def __init__(self) -> None:
         self.lines: list[str] = []
-        self.used: set = set()
+        self.used: set = _Names()
 
     def add(self, name: str, value: float, comment: str = "", unit: str = "mm",
             times: int = 1) -> str:

@@ -18,6 +18,7 @@ when there is none.  Every pattern is checked member by member to
 """
 from __future__ import annotations
 
+import bisect
 import math
 
 from ..geometry.curves import Arc, Line
@@ -61,23 +62,54 @@ def _polar(centers: list):
     if R <= EQUAL_TOL or max(rad) - min(rad) > EQUAL_TOL:
         return None
     step = 2 * math.pi / n
-    angs = sorted(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers)
-    a0 = angs[0] % step
-    from .infer_shapes import _snap_angle
+    a0 = min(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers) % step
     a0 = _snap_angle(a0, R)
-    want = sorted((a0 + k * step) % (2 * math.pi) for k in range(n))
-    got = list(centers)
-    for k in range(n):
-        a = a0 + k * step
-        q = (cx + R * math.cos(a), cy + R * math.sin(a))
-        for i, p in enumerate(got):
-            if math.dist(p, q) <= EQUAL_TOL:
-                del got[i]
-                break
-        else:
-            return None
-    del want
+    if not _each_once(centers, ((cx + R * math.cos(a0 + k * step),
+                                 cy + R * math.sin(a0 + k * step)) for k in range(n))):
+        return None
     return (cx, cy), R, a0, n
+
+
+class _Cells:
+    """Points (mm) hashed into square cells of 2 EQUAL_TOL, so that the points within
+    EQUAL_TOL of a place are found in the nine cells about it, not along the whole list."""
+
+    def __init__(self, points: list) -> None:
+        self.points, self.cells = [], {}
+        for p in points:
+            self.add(p)
+
+    def add(self, p) -> int:
+        """Point ``p`` added; its index."""
+        self.points.append(p)
+        self.cells.setdefault(self._key(p), []).append(len(self.points) - 1)
+        return len(self.points) - 1
+
+    @staticmethod
+    def _key(p) -> tuple[int, int]:
+        return math.floor(p[0] / (2 * EQUAL_TOL)), math.floor(p[1] / (2 * EQUAL_TOL))
+
+    def near(self, q) -> list[int]:
+        """The indices of the points within EQUAL_TOL of ``q``, in the points' order."""
+        cx, cy = self._key(q)
+        return sorted(i for a in (cx - 1, cx, cx + 1) for b in (cy - 1, cy, cy + 1)
+                      for i in self.cells.get((a, b), ())
+                      if math.dist(self.points[i], q) <= EQUAL_TOL)
+
+
+def _each_once(points: list, targets) -> bool:
+    """Whether each of ``targets`` (in turn) has a point of ``points`` within EQUAL_TOL
+    not taken by an earlier one, the first such point in ``points``' order taken (found in
+    :class:`_Cells`, not along the list: a bolt circle or a slanted row of 20,000 holes,
+    2e8 distances)."""
+    cells = _Cells(points)
+    taken: set = set()
+    for q in targets:
+        hit = next((i for i in cells.near(q) if i not in taken), None)
+        if hit is None:
+            return False
+        taken.add(hit)
+    return True
 
 
 def _grid(centers: list):
@@ -91,12 +123,28 @@ def _grid(centers: list):
     dy = _steps(ys) if len(ys) > 1 else 0.0
     if dx is None or dy is None:
         return None
-    for x in xs:
-        for y in ys:
-            if not any(abs(p[0] - x) <= EQUAL_TOL and abs(p[1] - y) <= EQUAL_TOL
-                       for p in centers):
-                return None
+    # every node (x, y) of the lattice holds a centre within EQUAL_TOL on both axes: each
+    # centre marks the nodes it holds (found by binary search in xs and ys), not each node
+    # a scan of every centre (20,000 holes: 4e8 comparisons)
+    held = set()
+    for p in centers:
+        for i in _near(xs, p[0]):
+            held.update((i, j) for j in _near(ys, p[1]))
+    if len(held) != len(centers):
+        return None
     return xs[0], ys[0], dx, dy, len(xs), len(ys)
+
+
+def _near(vals: list, v: float) -> list[int]:
+    """The indices ``k`` of sorted ``vals`` with ``abs(v - vals[k]) <= EQUAL_TOL``
+    (a binary search; at most two of :func:`_distinct`'s values)."""
+    k = bisect.bisect_left(vals, v - 2 * EQUAL_TOL)
+    out = []
+    while k < len(vals) and vals[k] <= v + 2 * EQUAL_TOL:
+        if abs(v - vals[k]) <= EQUAL_TOL:
+            out.append(k)
+        k += 1
+    return out
 
 
 def _stagger(centers: list):
@@ -107,7 +155,13 @@ def _stagger(centers: list):
     ys = _distinct([p[1] for p in centers])
     if len(ys) < 3 or _steps(ys) is None:
         return None
-    rows = [sorted(p[0] for p in centers if abs(p[1] - y) <= EQUAL_TOL) for y in ys]
+    # each centre in the rows within EQUAL_TOL of its y (a binary search), not each row a
+    # scan of every centre
+    rows: list = [[] for _ in ys]
+    for p in centers:
+        for k in _near(ys, p[1]):
+            rows[k].append(p[0])
+    rows = [sorted(r) for r in rows]
     if sum(len(r) for r in rows) != len(centers) or any(len(r) < 2 for r in rows):
         return None
     pitch = _steps(rows[0])
@@ -131,15 +185,8 @@ def _line(centers: list):
         return None
     a, b = min(centers), max(centers)
     d = ((b[0] - a[0]) / (n - 1), (b[1] - a[1]) / (n - 1))
-    got = list(centers)
-    for k in range(n):
-        q = (a[0] + k * d[0], a[1] + k * d[1])
-        for i, p in enumerate(got):
-            if math.dist(p, q) <= EQUAL_TOL:
-                del got[i]
-                break
-        else:
-            return None
+    if not _each_once(centers, ((a[0] + k * d[0], a[1] + k * d[1]) for k in range(n))):
+        return None
     return a, d, n
 
 
@@ -216,9 +263,32 @@ def _polar_polys(teeth: list, C):
 
 # ------------------------------------------------------------------ ticks
 def _periodic(vals: list) -> list:
-    """The shortest list ``P`` with ``vals[i] == P[i % len(P)]`` (within EQUAL_TOL)."""
+    """The shortest list ``P`` with ``vals[i] == P[i % len(P)]`` (within EQUAL_TOL).
+
+    Only the periods of the values' labels can be one (two values within EQUAL_TOL are in
+    one cluster of the sorted values whose gaps are at most EQUAL_TOL, so they have one
+    label): those come from the labels' prefix function (Knuth-Morris-Pratt), shortest
+    first, each then checked value by value; not every length from 1 checked (20,000 ticks
+    of no period: 2e8 comparisons)."""
     n = len(vals)
-    for p in range(1, n + 1):
+    if n == 0:
+        return vals
+    label = [0] * n
+    order = sorted(range(n), key=vals.__getitem__)
+    for a, b in zip(order, order[1:]):
+        label[b] = label[a] + (vals[b] - vals[a] > EQUAL_TOL)
+    border = [0] * n            # the longest proper border of label[:i + 1]
+    for i in range(1, n):
+        k = border[i - 1]
+        while k and label[i] != label[k]:
+            k = border[k - 1]
+        border[i] = k + (label[i] == label[k])
+    periods = []
+    k = border[-1]
+    while k:
+        periods.append(n - k)
+        k = border[k - 1]
+    for p in periods:
         if all(abs(vals[i] - vals[i % p]) <= EQUAL_TOL for i in range(n)):
             return vals[:p]
     return vals

@@ -18,7 +18,7 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
-from .hole_cuts import cut_at_crossings, inner_rests, polygons_overlap, runs_of
+from .hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
 from .model import Drawing, Note, Outline, Path
 from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
 
@@ -62,16 +62,38 @@ def _pt(p) -> str:
     return f"({_num(p[0])}, {_num(p[1])})"
 
 
+class _Names(set):
+    """A set of names given by :func:`_ident` that remembers, per base, the first suffix
+    not yet tried (``next``), so the ``n``-th name of one base costs one look, not ``n``
+    (20,000 holes of their own sizes: 2e8 looks); a name discarded forgets them all (it
+    may be free again)."""
+
+    def __init__(self, *names) -> None:
+        super().__init__(*names)
+        self.next: dict = {}
+
+    def discard(self, name) -> None:
+        super().discard(name)
+        self.next.clear()
+
+
 def _ident(s: str, used: set) -> str:
+    """``s`` made an identifier (lower case, not a keyword), ``_2``, ``_3``, ... added until
+    it is not in ``used``; added to ``used``.  A :class:`_Names` ``used`` starts from the
+    suffix its last name of the base reached."""
     s = re.sub(r"[^A-Za-z0-9_]", "_", s).strip("_").lower() or "part"
     if s[0].isdigit():
         s = "l_" + s
     if s in _KEYWORDS:
         s += "_"
-    base, i = s, 2
+    hints = getattr(used, "next", None)
+    base = s
+    i = 2 if hints is None else hints.get(base, 2)
     while s in used:
         s = f"{base}_{i}"
         i += 1
+    if hints is not None:
+        hints[base] = i
     used.add(s)
     return s
 
@@ -329,7 +351,10 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
 
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
-    loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles]
+    # every closed curve a loop, whatever its kind: which loops lie inside which makes a
+    # part's outline, its hole, an island in the hole (a solid of its own), ...
+    loops = [("o", o.segments) for o in d.outlines] + [("c", [c]) for c in d.circles] + \
+        [("e", [_whole_ellipse(el)]) for el in d.ellipses]
     inside = _containers([segs for _, segs in loops], w.deadline)
     depths = [len(c) for c in inside]
     w.emit(depth, f"{kind} {name} {{")
@@ -346,7 +371,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
                 if owner:
                     island_holes.setdefault(owner[0], []).append(i)
     deep = {i for v in island_holes.values() for i in v}
-    named: list = []            # (its first segment's id, name) of each hole written alone
+    named: list = []            # (its loop_key, name) of each hole written alone
     copies = _copies(loops, depths, kind) if w.compact else {}
     for (tag, segs), dep in zip(loops, depths):
         k += 1
@@ -364,7 +389,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             hole = _ident(f"hole{k}", used)
             _loop(w, depth + 1, segs, "", hole)
             if not places:
-                named.append((id(segs[0]), hole))
+                named.append((loop_key(segs), hole))
         else:
             islands.append((segs, k))
         if places:
@@ -376,21 +401,6 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         for a, b in sorted(sorted((order[i] for i in pair)) for pair in w.overlaps
                            if all(i in order for i in pair)):
             w.emit(depth + 1, f"AllowOverlap({a[1]}, {b[1]})")
-    # an ellipse's centre against the loops around it (a whole ellipse in an outline: a hole)
-    import numpy as np
-    polys = [np.asarray(Loop(list(segs)).points(), dtype=float) for _, segs in loops] \
-        if d.ellipses and kind != "drawing" else []
-    for cx, cy, rx, ry, rot in d.ellipses:
-        k += 1
-        shape = (f"Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, ry={_num(ry)}, "
-                 f"rotation={_num(math.degrees(rot))} deg)")
-        inside = sum(1 for P in polys if len(P) >= 3 and _inside((cx, cy), P))
-        if kind != "drawing" and inside % 2 == 1:      # an island in an outline: a hole
-            w.emit(depth + 1, f"hole {_ident(f'hole{k}', used)} {{")
-            w.emit(depth + 2, f"e = {shape}")
-            w.emit(depth + 1, "}")
-        else:
-            w.emit(depth + 1, f"e{k} = {shape}")
     if d.texts:
         inner = depth + 1 if kind == "drawing" else depth + 2
         if kind != "drawing":
@@ -579,19 +589,21 @@ def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
 def _split_parts(d: Drawing, deadline=None,
                  joined: list | None = None) -> tuple[list[Drawing], Drawing | None]:
     """The separate parts of a sheet: one :class:`Drawing` per outer loop (a loop inside an
-    even number of others, islands included) with its holes (the loops just inside it) and
-    the paths, ellipses, texts and engravings that lie in it; and what lies in no part (a
+    even number of others, islands included; a whole circle or ellipse is a loop too,
+    :func:`_loops_of`) with its holes (the loops just inside it) and the paths, texts and
+    engravings that lie in it; and what lies in no part (a
     Drawing, or None).  An open path on a cut role (``d.paths_cut``) that starts outside
     every part goes to the part it reaches (:func:`_reached`), appended to ``joined``."""
-    loops = [o for o in d.outlines] + list(d.circles)
-    segs = [o.segments if isinstance(o, Outline) else [o] for o in loops]
+    loops = [o for o in d.outlines] + list(d.circles) + list(d.ellipses)
+    segs = _loops_of(d)
     inside = _containers(segs, deadline)
     depth = [len(c) for c in inside]
     roots = [i for i in range(len(loops)) if depth[i] % 2 == 0]
     parts = {i: Drawing(unit=d.unit, paths_cut=d.paths_cut) for i in roots}
 
     def put(part: Drawing, loop) -> None:
-        (part.outlines if isinstance(loop, Outline) else part.circles).append(loop)
+        (part.outlines if isinstance(loop, Outline) else part.circles
+         if isinstance(loop, Circle) else part.ellipses).append(loop)
     for i in roots:
         put(parts[i], loops[i])
     for i in range(len(loops)):
@@ -619,8 +631,6 @@ def _split_parts(d: Drawing, deadline=None,
                 if joined is not None:
                     joined.append(p)
         owner.paths.append(p)
-    for el in d.ellipses:
-        owner_of((el[0], el[1])).ellipses.append(el)
     for t in d.texts:
         owner_of(t[1]).texts.append(t)
     e = getattr(d, "engrave", None)
@@ -737,6 +747,11 @@ def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> 
         c = segs[0]
         w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={w.pt(c.center)}, "
                       f"radius={_num(c.radius)})")
+    elif len(segs) == 1 and isinstance(segs[0], EllipticArc) and segs[0].whole:
+        e = segs[0].curve
+        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Ellipse(center={w.pt(e.center)}, "
+                      f"rx={_num(e.rx)}, ry={_num(e.ry)}, "
+                      f"rotation={_num(math.degrees(e.rotation))} deg)")
     elif w.compact and len(segs) >= 3 and all(isinstance(s, Line) for s in segs):
         # a big drawing: a loop of lines as the points of one Polygon
         w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
@@ -865,12 +880,11 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
     (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
     :class:`~.read.DrawingError`."""
-    import time
     from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
     from ..limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
     from .read import MAX_ENTITIES, DrawingError, read_drawing
     budget = budget or DEFAULT_BUDGET
-    deadline = Deadline(time.monotonic() + budget.seconds, budget)
+    deadline = Deadline.starting(budget)
     limit = max(1, int(MAX_ENTITIES * budget.geometry / DEFAULT_BUDGET.geometry))
     base = name.replace("\\", "/").rsplit("/", 1)[-1]
     too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "
@@ -1044,8 +1058,19 @@ def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
 
 
 def _loops_of(d: Drawing) -> list:
-    """``d``'s closed loops (lists of segments): its outlines, then its circles."""
-    return [o.segments for o in d.outlines] + [[c] for c in d.circles]
+    """``d``'s closed loops (lists of segments): its outlines, then its circles, then its
+    whole ellipses (:func:`_whole_ellipse`)."""
+    return [o.segments for o in d.outlines] + [[c] for c in d.circles] + \
+        [[_whole_ellipse(el)] for el in d.ellipses]
+
+
+def _whole_ellipse(el: tuple) -> EllipticArc:
+    """The whole ellipse ``(cx, cy, rx, ry, rotation)`` of a :class:`Drawing` (mm, radians)
+    as a loop's one segment, its numbers as the drawing gives them (written back as they
+    are: :func:`_loop`)."""
+    from ..geometry.ellipse import EllipseCurve
+    cx, cy, rx, ry, rot = el
+    return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
 
 
 def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:

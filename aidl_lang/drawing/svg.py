@@ -27,7 +27,10 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
     notes: list[Note] = []
     data = _svg_root(data, name, unit, notes)
     try:
-        svg = S.SVG.parse(io.BytesIO(data), reify=True, ppi=96.0)
+        # reify=False: svgelements' reification folds a transform's scale into a circle's,
+        # ellipse's or rect's own numbers, the signs of a negative one too (scale(-1,-1): r
+        # -5), so each shape keeps its own numbers and its whole transform, applied here
+        svg = S.SVG.parse(io.BytesIO(data), reify=False, ppi=96.0)
     except Exception as ex:
         raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
                            "save it as plain SVG") from None
@@ -412,9 +415,9 @@ def _svg_element(S, el, P, scale, pieces, loops, circles, ellipses, skipped,
             flat.append(_svg_label(el))
         return
     if isinstance(el, (S.Circle, S.Ellipse)) and not isinstance(el, S.Path):
-        # the element's own cx, cy, rx, ry under what is left of its transform (svgelements
-        # folds a scale and a shift into them, not a turn, skew or mirror): the images of its
-        # semi-axes are conjugate semi-diameters of the ellipse drawn
+        # the element's own cx, cy, rx, ry under its whole transform (the file is read
+        # without svgelements' reification, :func:`_read_svg`): the images of its semi-axes
+        # are conjugate semi-diameters of the ellipse drawn, whatever the map's signs
         rx, ry = float(el.rx), float(el.ry)
         if not (rx > 0 and ry > 0):
             return
@@ -685,7 +688,6 @@ def _spec_checked(S, el, svg, spec: list):
     new = type(el)(fixed)
     try:
         new.render(ppi=96.0, width=float(svg.width or 1000), height=float(svg.height or 1000))
-        new.reify()
     except Exception:
         return el
     return new

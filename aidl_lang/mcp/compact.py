@@ -24,7 +24,7 @@ CODES = {
     "no_match": "`values` names that match no value; `write_program` text not found",
     "not_unique": "`write_program`'s `old` text found more than once",
     "output_failed": "an output that could not be made or written",
-    "timed_out": "a call stopped past twice its budget's wall time",
+    "timed_out": "a call stopped past 10 times its budget's CPU seconds of wall time",
     "worker_died": "the compile ended its worker process",
     "internal_error": "a fault of aidl itself (please report it)",
 }

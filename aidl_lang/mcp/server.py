@@ -33,6 +33,7 @@ from ..parser import MAX_NESTING
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from ..sources import MAX_DRAWING_BYTES
 from . import compact as C
+from . import stdio
 from . import tools as T
 from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult,
                       WriteResult)
@@ -63,7 +64,7 @@ Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
                 "file's units, as the string \"40\") or {\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
     description=f"A factor of the default evaluation budget (steps, objects, sizes, 15 s of "
-                f"wall time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
+                f"CPU time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
                 f"(`aidl mcp --budget`).",
     gt=0, le=T.MAX_BUDGET)]
 Dof = Annotated[bool, Field(
@@ -322,6 +323,12 @@ class _Server(MCPServer):
                                                    "characters")
         return await super().get_prompt(name, arguments, context)
 
+    async def run_stdio_async(self) -> None:
+        """The SDK's stdio serving, with JSON-RPC's error replies to lines that are no
+        message (the SDK drops them: :mod:`.stdio`)."""
+        await stdio.serve(self._lowlevel_server,
+                          self._lowlevel_server.create_initialization_options())
+
 
 def build_server(root: str, budget: float = 1.0,
                  prompt: Callable[[], str] | None = None, warm: bool = True) -> MCPServer:
@@ -332,7 +339,7 @@ def build_server(root: str, budget: float = 1.0,
     (:meth:`.worker.Pool.warm`), so the first call is as fast as the rest."""
     ws = T.Workspace(root, budget)
     # the compiling tools run side by side in a pool of warm worker processes, each call
-    # killed past twice the budget's wall time (aidl_lang/mcp/worker.py): a call always ends,
+    # killed past the budget's wall guard (aidl_lang/mcp/worker.py): a call always ends,
     # and a slow one delays only itself
     from .worker import Pool
     work = Pool(str(ws.root), budget)

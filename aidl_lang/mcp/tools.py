@@ -454,14 +454,15 @@ def _job(outputs: list, machine, thickness: float | None) -> dict:
     (:func:`aidl_lang.output.writers.gcode.job`): ``{"cut_mm", "travel_mm", "seconds",
     "machine", "text"}``, summed over the sheets."""
     from ..output.writers.gcode import estimate_text, job
-    cut = travel = seconds = 0.0
+    cut = travel = seconds = dark = 0.0
     kind = "laser" if machine is None else machine.kind
     for out in outputs:
         j = job(out, machine, thickness)
         cut, travel, seconds = cut + j.cut, travel + j.travel, seconds + j.seconds
+        dark += j.dark
     return {"cut_mm": round(cut, 3), "travel_mm": round(travel, 3),
             "seconds": round(seconds, 1), "machine": kind,
-            "text": estimate_text(cut, travel, seconds).replace(
+            "text": estimate_text(cut, travel, seconds, dark).replace(
                 "the profile's", f"the {kind} profile's")}
 
 

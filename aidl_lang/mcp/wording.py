@@ -83,7 +83,4 @@ def reword_diagnostics(diagnostics) -> None:
     """Reword each :class:`~aidl_lang.diagnostics.Diagnostic` of ``diagnostics`` (message,
     hint, labels) in place with :func:`for_agents`; its rendered text follows."""
     for d in diagnostics:
-        d.message = for_agents(d.message)
-        d.hint = for_agents(d.hint)
-        for lab in d.labels:
-            lab.message = for_agents(lab.message)
+        d.reword(for_agents)

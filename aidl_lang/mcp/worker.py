@@ -4,9 +4,10 @@ cannot be stopped, a process can (issue 37; ``aidl batch`` does the same with it
 
 :class:`Worker` keeps one process (``multiprocessing``, spawn) with its own
 :class:`~.tools.Workspace`; a call is sent over a pipe and its answer (or its
-:class:`~.tools.Refused`) comes back.  A call that has not answered after twice the budget's
-wall time (15 s x the call's ``budget``, so 30 s by default) kills the process and is refused
-with a message saying so; the next call starts a fresh process.  The compile's own deadline
+:class:`~.tools.Refused`) comes back.  A call that has not answered within
+:func:`aidl_lang.limits.wall_limit` of its budget (10 x its 15 s x ``budget`` of CPU time, plus
+10 s: 160 s by default) kills the process and is refused with a message saying so; the next call
+starts a fresh process.  The compile's own deadline
 normally ends it first, with a located ``E0304``: this is the last resort for what the
 deadline cannot interrupt (one long call into a C library).
 
@@ -17,9 +18,9 @@ process is started on a worker's first call), and waits for one when all are bus
 from __future__ import annotations
 
 from .. import workers as W
+from ..limits import DEFAULT_BUDGET, wall_limit
 from . import tools as T
 
-WALL_FACTOR = 2.0           # a call may run this many times the budget's wall time
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
 
 
@@ -79,11 +80,10 @@ class Worker(W.Worker):
 
     def seconds(self, budget: float | None) -> float:
         """The time limit of a call with ``budget`` (None: the server's)."""
-        from ..limits import DEFAULT_BUDGET
         ok = isinstance(budget, (int, float)) and not isinstance(budget, bool) \
             and 0 < budget <= T.MAX_BUDGET
         k = budget if ok else self.budget        # a bad one is refused by the tool itself
-        return WALL_FACTOR * DEFAULT_BUDGET.seconds * float(k)
+        return wall_limit(DEFAULT_BUDGET.seconds * float(k))
 
     def call(self, name: str, *args, budget: float | None = None):
         """``tools.NAME(workspace, *args)`` in the worker; its result, or raises
@@ -93,9 +93,9 @@ class Worker(W.Worker):
         try:
             ok, value = self.request((name, args), limit)
         except W.TimedOut:
-            raise T.Refused(f"the call took longer than {limit:g} s (twice the budget's "
-                            "wall time) and was stopped; build less, or give a larger "
-                            "`budget` (at most 4)", "timed_out") from None
+            raise T.Refused(f"the call took longer than {limit:g} s of wall time (10 times "
+                            "its budget's CPU seconds) and was stopped; build less, or give "
+                            "a larger `budget` (at most 4)", "timed_out") from None
         except W.Died:
             raise T.Refused("the compile ended its worker process (out of memory?); "
                             "build less", "worker_died") from None

@@ -20,6 +20,6 @@ missing.
 """
 from __future__ import annotations
 
-from .controls import NOTEBOOK_EXTRA, Form, form
+from .controls import NOTEBOOK_EXTRA, Form, FormError, form
 
-__all__ = ["form", "Form", "NOTEBOOK_EXTRA"]
+__all__ = ["form", "Form", "FormError", "NOTEBOOK_EXTRA"]

@@ -7,9 +7,17 @@ import os
 
 from .. import api
 
-__all__ = ["form", "Form", "NOTEBOOK_EXTRA"]
+__all__ = ["form", "Form", "FormError", "NOTEBOOK_EXTRA"]
 
 NOTEBOOK_EXTRA = "pip install 'aidl-lang[notebook]'"
+
+
+class FormError(ValueError):
+    """A value :meth:`Form.set` refuses (of the wrong type, or outside its control's range):
+    nothing changed.  IPython shows it as its one line, not a traceback."""
+
+    def _render_traceback_(self) -> list[str]:
+        return [f"FormError: {self}"]
 
 
 def _widgets():
@@ -119,17 +127,31 @@ class Form:
         return out
 
     def set(self, **values) -> api.Result:
-        """Move controls to ``values`` (name → value in the display units) and redraw at
-        once (no debounce); returns the new result.  Raises :class:`KeyError` for a name
-        that is not a param of the form (with the names it has)."""
+        """Move controls to ``values`` (name → value in the display units: mm, degrees) and
+        redraw at once (no debounce); returns the new result.
+
+        All or nothing: every value is checked before any control moves, and a refused
+        ``set`` changes no control and no drawing.  Raises :class:`KeyError` for a name that
+        is not a param of the form (with the names it has), and :class:`FormError` (a
+        :class:`ValueError`, shown in a notebook as its one line) for a value of the wrong
+        type (a number for a slider, a whole number for a count, True/False for a checkbox,
+        text for a text box) or outside its control's range (the param's ``min=``/``max=``,
+        or the span around the file's value when it declares none)."""
         unknown = [n for n in values if n not in self.controls]
         if unknown:
             raise KeyError(f"no param {', '.join(map(repr, unknown))}; the form has "
                            + (", ".join(self.controls) or "none"))
+        params = {p.name: p for p in self.params}
+        checked = {n: _checked(params[n], self.controls[n], v) for n, v in values.items()}
+        before = {n: self.controls[n].value for n in checked}
         self._quiet = True
         try:
-            for n, v in values.items():
+            for n, v in checked.items():
                 self.controls[n].value = v
+        except Exception as e:          # a control refusing what was checked: none moves
+            for n, v in before.items():
+                self.controls[n].value = v
+            raise FormError(f"{n}: {e}") from None
         finally:
             self._quiet = False
         return self.redraw()
@@ -178,6 +200,38 @@ class Form:
     def __repr__(self) -> str:
         return (f"<aidl Form {self.path}: {len(self.controls)} controls "
                 f"({', '.join(self.controls) or 'none'}); {self.result.summary()}>")
+
+
+def _checked(p, control, v):
+    """The value ``v`` for ``control``, the control of param ``p`` (a
+    :class:`~aidl_lang.serve.params.Param`), as the control holds it; raises
+    :class:`FormError` for a value of another type than the control's or outside its range
+    (inclusive, in the display units)."""
+    import math
+    kind = type(control).__name__
+    if kind == "Checkbox":
+        if not isinstance(v, bool):
+            raise FormError(f"`{p.name}` takes True or False, not {v!r}; nothing changed")
+        return v
+    if kind == "Text":
+        if not isinstance(v, str):
+            raise FormError(f"`{p.name}` takes text (a str), not {v!r}; nothing changed")
+        return v
+    unit = f" {p.unit}" if p.unit else ""
+    what = "a whole number" if kind == "IntSlider" else f"a number{f' in {p.unit}' if unit else ''}"
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise FormError(f"`{p.name}` takes {what}, not {v!r}; nothing changed")
+    if kind == "IntSlider":
+        if not float(v).is_integer():
+            raise FormError(f"`{p.name}` takes {what}, not {v!r}; nothing changed")
+        v = int(v)
+    if not control.min <= v <= control.max:
+        raise FormError(
+            f"`{p.name}` = {_fmt(v)}{unit} is outside its control's range {_fmt(control.min)} .. "
+            f"{_fmt(control.max)}{unit}; nothing changed"
+            + ("" if p.declared else f" (`param {p.name}` declares no range: its `min=` and "
+                                     f"`max=` give it one)"))
+    return v
 
 
 def _integral(p) -> bool:

@@ -38,6 +38,7 @@ from ..solver.holds import build_rows
 from ..sources import SourceRefused, read_program
 from ..typecheck import check
 from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
+from .wording import for_forms
 
 
 
@@ -311,11 +312,10 @@ class Session:
         self.dof = []
         if solver is None:
             return
-        import time
-        from ..limits import DEFAULT_BUDGET
+        from ..limits import DEFAULT_BUDGET, now
         from ..solver.freedom import degrees_of_freedom
         try:            # bounded as a compile is (issue 48): a structure past it is not counted
-            end = time.monotonic() + DEFAULT_BUDGET.seconds
+            end = now() + DEFAULT_BUDGET.seconds
             self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,
                          "dof": d.dof if d.rank >= 0 else None, "floating": d.floating[:12]}
                         for d in degrees_of_freedom(solver, deadline=end)]
@@ -400,6 +400,9 @@ def _internal(e: BaseException, stage: str) -> DiagnosticSink:
 
 
 def _diag_json(d: Diagnostic, sources: dict) -> dict:
+    """``d`` as the page shows it, a param value named as the form's field, not as ``--set``
+    (:func:`.wording.for_forms`)."""
+    d.reword(for_forms)
     j = d.to_json(sources)
     return {k: j[k] for k in ("code", "severity", "message", "span", "hint", "rendered")}
 

@@ -83,7 +83,7 @@ def solve(model: Model, flat: bool = False, diagnose: bool = True,
     """Solve ``model`` in place (``model.x`` is updated even on failure, for diagnostics).
 
     ``flat=True`` solves everything at once instead of hierarchically (for benchmarks);
-    ``deadline`` (a ``time.monotonic()`` value) stops the solve and the conflict search when
+    ``deadline`` (a :func:`aidl_lang.limits.now` value: CPU seconds) stops the solve and the conflict search when
     passed (``SolveResult.out_of_time``)."""
     solver = Solver(model)
     solver.deadline = deadline

@@ -28,10 +28,9 @@ check does not pay SciPy's import.
 """
 from __future__ import annotations
 
-import time
-
 import numpy as np
 
+from ..limits import now
 from ..records import Compared
 from .arrays import unique
 
@@ -81,7 +80,7 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None,
     dependent row's coefficients come from one triangular solve ``L^T c = Q v`` instead of a
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
-    Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (``time.monotonic()``,
+    Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds,
     looked at before every row) it stops early: one row costs at most ``3 rank n`` flops, so
     the pass needs no estimate before it starts.
 
@@ -99,7 +98,7 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None,
         basis["Q"], basis["indep"] = Q, indep
     k = 0
     for step, r in enumerate(order):
-        if deadline is not None and time.monotonic() > deadline:
+        if deadline is not None and now() > deadline:
             return
         v = np.asarray(J[r], dtype=float)
         nv = float(np.linalg.norm(v))
@@ -326,7 +325,7 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
     deadline = getattr(solver, "deadline", None)
     # the greedy pass looks at the deadline before every row: no estimate needed
     for r, support, coef in dependencies(Jd, order, deadline):
-        if len(out) >= MAX_CONFLICTS or (deadline is not None and time.monotonic() > deadline):
+        if len(out) >= MAX_CONFLICTS or (deadline is not None and now() > deadline):
             break                        # the best sets found so far
         members = [r] + support
         # a dependency J_r = sum c_i J_i is consistent when the residuals obey it too
@@ -467,7 +466,7 @@ def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndar
             return NOT_COUNTED_SIZE, np.zeros(n, dtype=bool)
         Ad = Ac[:, cc].toarray()
         dependent = {r for r, _, _ in dependencies(Ad, list(range(len(core))), deadline)}
-        if deadline is not None and time.monotonic() > deadline:
+        if deadline is not None and now() > deadline:
             return NOT_COUNTED_TIME, np.zeros(n, dtype=bool)
         norm = np.linalg.norm(Ad, axis=1)         # rows the greedy pass skips: nothing to add
         independent = [i for i in range(len(core))
@@ -477,7 +476,7 @@ def _sparse_null_support(A, deadline: float | None = None) -> tuple[int, np.ndar
     r = B.shape[0]
     if r >= n:
         return r, np.zeros(n, dtype=bool)
-    if deadline is not None and time.monotonic() > deadline:
+    if deadline is not None and now() > deadline:
         return NOT_COUNTED_TIME, np.zeros(n, dtype=bool)
     K = sp.bmat([[sp.identity(n), B.T], [B, None]], format="csc")
     try:
@@ -501,7 +500,7 @@ def _dense_refused(m: int, n: int, deadline: float | None, k: int = 0) -> str:
     flops = float(m) * float(n) * float(min(m, n)) + 2.0 * m * n * k
     if flops > MAX_SVD_FLOPS:
         return "too large"
-    if deadline is not None and time.monotonic() + flops / SVD_FLOPS_PER_SECOND > deadline:
+    if deadline is not None and now() + flops / SVD_FLOPS_PER_SECOND > deadline:
         return "out of time"
     return ""
 
@@ -512,12 +511,12 @@ def _svd_too_large(m: int, n: int) -> bool:
 
 
 def _svd_too_late(m: int, n: int, deadline: float | None) -> bool:
-    """Whether a dense SVD of ``m`` x ``n`` would end past ``deadline`` (``time.monotonic()``;
+    """Whether a dense SVD of ``m`` x ``n`` would end past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds;
     None: never), at :data:`SVD_FLOPS_PER_SECOND`."""
     if deadline is None:
         return False
     flops = float(m) * float(n) * float(min(m, n))
-    return time.monotonic() + flops / SVD_FLOPS_PER_SECOND > deadline
+    return now() + flops / SVD_FLOPS_PER_SECOND > deadline
 
 
 def _row_entries(W, rows) -> tuple[np.ndarray, np.ndarray]:

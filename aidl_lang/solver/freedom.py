@@ -16,10 +16,9 @@ count); what the freedom means (which parts and features slide) is :mod:`.slidin
 """
 from __future__ import annotations
 
-import time
-
 import numpy as np
 
+from ..limits import now
 from ..memory import gc_paused
 from ..records import Compared
 from .arrays import unique
@@ -49,7 +48,7 @@ def degrees_of_freedom(solver, floating: bool = True,
                        deadline: float | None = None) -> list[StructureDof]:
     """Per-structure degrees of freedom and floating entities, at the solver's current point
     (call after solving).  ``floating=False`` counts only (singular values, no null space:
-    what the summary line of ``aidl check`` needs).  Past ``deadline`` (``time.monotonic()``,
+    what the summary line of ``aidl check`` needs).  Past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds,
     the run's end), or where a dense SVD would end past it (at
     :data:`~.diagnose.SVD_FLOPS_PER_SECOND`), a structure is not counted: rank -1, ``why``
     "out of time" (or "too large" past :data:`~.diagnose.MAX_SVD_FLOPS`).
@@ -122,7 +121,7 @@ def _degrees_of_freedom(solver, floating: bool, deadline: float | None) -> list[
         if axis[v] >= 0:
             pinned_axes.setdefault(id(owner[v]), set()).add(axis[v])
     for s, params, rows, cols, use in systems:
-        if deadline is not None and time.monotonic() > deadline and len(rows) and len(cols) \
+        if deadline is not None and now() > deadline and len(rows) and len(cols) \
                 and id(s) not in held:
             d = StructureDof(s, len(params), -1, why="out of time")
         else:

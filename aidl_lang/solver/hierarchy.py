@@ -28,10 +28,10 @@ of a held value (:meth:`Solver.set_value`) only reruns Newton.
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
 
+from ..limits import now
 from ..records import Compared, Record
 from .arrays import unique
 
@@ -99,7 +99,7 @@ class Solver:
     ``x``: extended parameter vector (model parameters, then inequality slacks), mm / rad.
     """
 
-    deadline: float | None = None       # time.monotonic() after which solving stops
+    deadline: float | None = None       # limits.now() (CPU s) after which solving stops
     pinning = True                      # False: pinned geometry stays unknown (for tests)
 
     def __init__(self, model: Model):
@@ -276,7 +276,7 @@ class Solver:
         if left <= 0:
             tr.budget_exceeded = True
             return 0
-        if self.deadline is not None and time.monotonic() > self.deadline:
+        if self.deadline is not None and now() > self.deadline:
             tr.budget_exceeded = tr.out_of_time = True
             return 0
         return left

@@ -11,10 +11,9 @@ are in :func:`redundancies`'s docstring; docs/solver.md.
 """
 from __future__ import annotations
 
-import time
-
 import numpy as np
 
+from ..limits import now
 from ..records import Compared
 from .arrays import unique
 
@@ -62,7 +61,7 @@ def redundancies(solver, deadline: float | None = None,
 
     The flat system is split into connected components (rows sharing unknowns); each, up to
     :data:`MAX_DENSE` rows, is ranked densely.  Only consistent systems are looked at (a
-    failed solve reports conflicts instead).  Past ``deadline`` (``time.monotonic()``) the
+    failed solve reports conflicts instead).  Past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds) the
     blocks not yet ranked are left out, and so are blocks of more than ``max_rows`` rows
     (after the rows independent of all others by structure are peeled off,
     :func:`_peeled_rows`); the user constraints so left out are appended to ``skipped``, and
@@ -91,7 +90,7 @@ def redundancies(solver, deadline: float | None = None,
     found = _Found()
     for comp in unique(lab[live]):
         local = np.flatnonzero((lab == comp) & live)
-        if deadline is not None and time.monotonic() > deadline:
+        if deadline is not None and now() > deadline:
             found.leave_out((id(cons[i]) for i in local), "out of time")
             continue
         if len(local) == 1:                 # one row, independent of all others
@@ -241,7 +240,7 @@ def _search_block(J, local: np.ndarray, lc: list, keys: np.ndarray, peeled, posi
         found.leave_out((id(c) for c in lc), "too large")
         return
     b.find_dependencies(keys, deadline)
-    if deadline is not None and time.monotonic() > deadline:
+    if deadline is not None and now() > deadline:
         found.leave_out((id(c) for c in lc), "out of time")  # the basis may be incomplete
         return
     b.constructors_span()
@@ -255,7 +254,7 @@ def _search_block(J, local: np.ndarray, lc: list, keys: np.ndarray, peeled, posi
     # the constructors' rows: what a constraint says beyond them is measured modulo
     # their span (the greedy pass's first basis rows ``Qi``), see rank_c
     for k, idx in mine.items():
-        if deadline is not None and time.monotonic() > deadline:
+        if deadline is not None and now() > deadline:
             found.leave_out((id(c) for c in lc), "out of time")  # a block is reported whole or not
             break
         _measure(b, k, idx, touched.get(k, ()), found, deadline)

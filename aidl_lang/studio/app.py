@@ -37,7 +37,7 @@ compiles on a Dask cluster (``--scheduler``, :mod:`.remote`) let any process of 
 answer any request.
 
 Many users: each compile runs in a worker process (:mod:`aidl_lang.workers`) with the
-compile's budget, a wall-time limit and a memory cap; a request waits at most
+compile's budget (CPU seconds), a wall-time limit (ten times that, and 10 s) and a memory cap; a request waits at most
 ``wait`` seconds for a worker and at most ``queue`` requests wait, past that the answer is
 ``503`` with ``Retry-After`` and a message the page shows.  Each client (its address; behind
 a proxy, uvicorn's ``--forwarded-allow-ips``) has a rate limit (``limits``' moving window):
@@ -64,7 +64,7 @@ from starlette.responses import JSONResponse, PlainTextResponse, Response, Strea
 from starlette.routing import Route
 
 from .. import workers as W
-from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES
+from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES, wall_limit
 from . import compiler
 from .metrics import Metrics, RequestMetrics
 from .sessions import MAX_UPLOAD, Refused, new_id
@@ -88,7 +88,7 @@ class Settings:
     compilers: int = 2              # compile worker processes per server process
     memory_mb: int = 1500           # address-space cap of one compile worker
     budget: float = 1.0             # factor of the default evaluation budget
-    wall_factor: float = 2.0        # a compile is killed past this many times the budget's wall
+    kill_after: float = 0.0         # s of wall time a compile may run; 0: limits.wall_limit
     wait: float = 10.0              # s a request waits for a free worker before "busy"
     queue: int = 16                 # requests that may wait at once before "busy" at once
     rate: str = "300/minute"        # per client (``limits`` notation)
@@ -123,8 +123,9 @@ class Settings:
 
     @property
     def seconds(self) -> float:
-        """The wall-time limit of one compile request."""
-        return self.wall_factor * DEFAULT_BUDGET.seconds * self.budget
+        """The wall-time limit of one compile request (:func:`~aidl_lang.limits.wall_limit`:
+        its budget is CPU seconds, so a busy server does not refuse what a quiet one accepts)."""
+        return self.kill_after or wall_limit(DEFAULT_BUDGET.seconds * self.budget)
 
 
 def static_files() -> dict[str, bytes]:

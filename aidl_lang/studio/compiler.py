@@ -460,8 +460,7 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
                       budget=budget)
     if not res.ok:
         return {"error": "the program does not compile with these values",
-                "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
-                                for d in res.diagnostics_json() if d["severity"] == "error"][:8]}
+                "diagnostics": _errors(res)[:8]}
     name = res.compiled.model.root.name if res.compiled.model is not None else "part"
     options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
     media = FORMATS[suffix].media
@@ -483,10 +482,19 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
         if getattr(e, "budget", None) is not None:      # bounded work or memory: E0304
             from ..pipeline import report_out_of_budget
             report_out_of_budget(res.sink, e.budget)
-            return {"error": str(e),
-                    "diagnostics": [{k: d[k] for k in ("code", "severity", "message", "rendered")}
-                                    for d in res.diagnostics_json() if d["severity"] == "error"]}
+            return {"error": str(e), "diagnostics": _errors(res)}
         return {"error": str(e)}
+
+
+def _errors(res) -> list[dict]:
+    """The errors of the compile ``res`` (an :class:`~aidl_lang.api.Result`) as the page shows
+    them: code, severity, message, rendered text, a param value named as the form's field
+    (:func:`~aidl_lang.serve.wording.for_forms`), not as the command line's ``--set``."""
+    from ..serve.wording import for_forms
+    for d in res.diagnostics:
+        d.reword(for_forms)
+    return [{k: d[k] for k in ("code", "severity", "message", "rendered")}
+            for d in res.diagnostics_json() if d["severity"] == "error"]
 
 
 def _page(v) -> str | None:

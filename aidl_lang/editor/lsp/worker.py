@@ -28,6 +28,8 @@ import sys
 import threading
 import time
 
+from ...limits import DEFAULT_BUDGET, wall_limit
+
 
 def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,
                      values: dict[str, str] | None = None, extra: dict | None = None) -> list[dict]:
@@ -77,7 +79,9 @@ class Analyzer:
     written from a thread too, so a large document never blocks the event loop."""
 
     GRACE = 0.5            # seconds a stale job may keep running before its worker is killed
-    TIMEOUT = 30.0         # seconds after which any job is stopped
+    # seconds of wall time after which any job is stopped: the compile's own budget (CPU
+    # seconds) ends it first, with its E0304; this is the wall guard (limits.wall_limit)
+    TIMEOUT = wall_limit(DEFAULT_BUDGET.seconds)
     SPARE = True           # keep a second warm worker to take over from a killed one
 
     def __init__(self, proc: subprocess.Popen | None = None,

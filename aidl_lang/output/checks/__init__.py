@@ -87,7 +87,7 @@ def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
     return own.get(name, MIN_WALL) if name is not None else MIN_WALL
 
 
-CHECK_SHARE = 0.2     # of the budget's wall time (3 s of the default 15 s): what each family
+CHECK_SHARE = 0.2     # of the budget's CPU time (3 s of the default 15 s): what each family
                       # of checks below may take over all the parts before it stops (W0521)
 
 # the families of checks that hold a share, in the order they run: (name, codes)
@@ -105,7 +105,7 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
 
 
 class _OutOfShare(Exception):
-    """A family of checks has used its :data:`CHECK_SHARE` of the wall time, or its next step
+    """A family of checks has used its :data:`CHECK_SHARE` of the CPU time, or its next step
     (``ahead`` seconds, > 0) is expected to end past that share or past the compile's
     deadline."""
 
@@ -115,7 +115,7 @@ class _OutOfShare(Exception):
 
 
 class _Shares:
-    """Each family of checks (:data:`FAMILIES`) with its share of the compile's wall time
+    """Each family of checks (:data:`FAMILIES`) with its share of the compile's CPU time
     (:data:`CHECK_SHARE` of the budget's seconds, summed over the parts it looks at): a
     family past its share, or refused by :class:`..nearby.TooManyPairs` (a cluster too dense
     to list its pairs), stops where it is, is not run on the parts after, and one ``W0521``
@@ -128,8 +128,8 @@ class _Shares:
     live preview's own call) there are no shares, only the pair limit."""
 
     def __init__(self, deadline):
-        import time
-        self.clock = time.monotonic
+        from ...limits import now
+        self.clock = now               # the budget's clock: CPU seconds
         self.deadline = deadline
         self.seconds = (deadline.budget.seconds * CHECK_SHARE if deadline is not None
                         else float("inf"))

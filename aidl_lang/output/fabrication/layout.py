@@ -24,6 +24,7 @@ parts (the packer takes outer outlines only).
 from __future__ import annotations
 
 import math
+import os
 
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.offset import OffsetError, offset_loop
@@ -311,13 +312,22 @@ NEST_SECONDS_PER_SHAPE = 5e-4
 NEST_SECONDS_PER_VERTEX = 1e-4          # of each shape, up to NEST_VERTICES
 NEST_VERTICES = 256
 NEST_SECONDS_PER_COPY = 2e-4
+# threads of spyrrow's exploration when it is given time to improve (``--nest-time S``): one a
+# core, so S seconds of it are S x NEST_WORKERS CPU seconds of the compile's budget
+NEST_WORKERS = os.cpu_count() or 1
+
+
+def nest_cpu_seconds(seconds: float) -> float:
+    """The CPU seconds (the budget's clock, :func:`aidl_lang.limits.now`) of ``seconds`` of
+    spyrrow's improving: it runs :data:`NEST_WORKERS` threads for that long."""
+    return seconds * NEST_WORKERS
 
 
 def nest_seconds(vertices: list[int], parts: int, seconds: float = 0.0) -> float:
     """A low estimate of one nesting, in seconds: ``vertices``, the vertex count of each
     different outer outline given to the packer; ``parts``, the parts in all (the rest are
-    copies); ``seconds``, the packer's time to improve, on top."""
-    return (seconds + NEST_SECONDS_PER_SHAPE * len(vertices)
+    copies); ``seconds``, the packer's time to improve, on top (:func:`nest_cpu_seconds`)."""
+    return (nest_cpu_seconds(seconds) + NEST_SECONDS_PER_SHAPE * len(vertices)
             + NEST_SECONDS_PER_VERTEX * sum(min(v, NEST_VERTICES) for v in vertices)
             + NEST_SECONDS_PER_COPY * (parts - len(vertices)))
 
@@ -345,7 +355,7 @@ def _nest(shapes: dict, height: float, angles, seconds: int, seed: int,
     inst = spyrrow.StripPackingInstance("aidl", float(height), items)
     if seconds > 0:
         cfg = spyrrow.StripPackingConfig(early_termination=True, total_computation_time=seconds,
-                                         seed=seed)
+                                         seed=seed, num_workers=NEST_WORKERS)
     else:
         cfg = spyrrow.StripPackingConfig(early_termination=True, total_computation_time=None,
                                          exploration_time=0, compression_time=0, seed=seed,

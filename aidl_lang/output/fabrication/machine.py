@@ -141,6 +141,11 @@ OP_RANGES: dict[str, tuple[float, float, str]] = {
     "plunge": (1.0, 100_000.0, "mm/min"),
     "spindle": (0.0, 100_000.0, "rpm"),
 }
+# mm: the least positive length of the keys that may also be 0 (none): a lead-in, a tab, a
+# tool are 0 or at least a step of the machine (0.01 mm, as `depth_per_pass`); a lead-in of
+# 1e-308 mm ran through the lead-in search to a note of "no room for one of 2.5e-309 mm"
+LENGTH_LEAST = 0.01
+_ZERO_OR_LEAST = ("tool_diameter", "tab_width", "tab_height", "lead_in")
 _WHOLE = ("tabs", "passes")          # whole numbers
 _PLAIN = ("max_power", "power", "spindle", "tabs", "passes")   # not lengths: never scaled
 # router passes of one cut (thickness / depth_per_pass, rounded up): past it the G-code writer
@@ -249,6 +254,11 @@ def from_dict(data: dict, source: str = "") -> Machine:
             x = math.inf if v > 0 else -math.inf
         if not low - 1e-12 * max(1.0, abs(low)) <= x <= high * (1 + 1e-12):
             raise bad(key, f"must be {what} from {shown}, not {_shown(v)}")
+        if name in _ZERO_OR_LEAST and 0 < x < LENGTH_LEAST * (1 - 1e-12):
+            least = f"{LENGTH_LEAST:g} to {high:g} {unit}"
+            if k != 1.0:
+                least += f" ({LENGTH_LEAST / k:.3g} to {high / k:.3g} in)"
+            raise bad(key, f"must be 0 (none) or a number from {least}, not {_shown(v)}")
         return int(v) if whole else x
 
     values = {}
@@ -261,6 +271,11 @@ def from_dict(data: dict, source: str = "") -> Machine:
         values["laser_mode"] = data["laser_mode"]
     if "tabs" in data:
         values["tabs"] = number("tabs", data["tabs"], *RANGES["tabs"])
+    tabs = values.get("tabs", base.tabs)
+    if tabs >= 1 and values.get("tab_width", base.tab_width) == 0:
+        # "4 tabs of 0 mm do not fit": a tab is a length along the cut
+        raise bad("tab_width", f"must be greater than 0 with `tabs = {tabs}`: a number from "
+                  f"{LENGTH_LEAST:g} to {RANGES['tab_width'][1]:g} mm (or `tabs = 0`: no tabs)")
     ops = {}
     for name in OPERATIONS:
         got = data.get(name, {})

@@ -18,7 +18,6 @@ that close on no area.
 from __future__ import annotations
 
 import math
-import time
 
 import manifold3d as mf
 import numpy as np
@@ -33,7 +32,7 @@ from ...geometry.primitives import region_of
 from ...geometry.operations import SplineCorner, finish
 from ...geometry.tessellate import CHORD_TOL
 from ...geometry.text import text_strokes
-from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
 from .exact import Provenance
 from .nearby import faces_apart, meeting
 from .outlines import (_arc_through, _band, _polygon, _shoelace, _weld, arc_slot_outline,
@@ -102,7 +101,7 @@ class Renderer:
             vertices = sum(f.num_vert() for f in faces)
             ahead = vertices * UNION_SECONDS_PER_VERTEX
             if watched and len(faces) > 1:
-                ahead = max(ahead, union_seconds(faces, self.deadline.at - time.monotonic(),
+                ahead = max(ahead, union_seconds(faces, self.deadline.at - now(),
                                                  vertices))
             self.deadline.check(self.STAGE, s or self.current, ahead)
 
@@ -121,7 +120,7 @@ class Renderer:
         booleans with it scanned the same way (:meth:`shape`)."""
         if not faces:
             return (mf.CrossSection(), False) if frame else mf.CrossSection()
-        left = (self.deadline.at - time.monotonic() if self.deadline is not None
+        left = (self.deadline.at - now() if self.deadline is not None
                 else float("inf"))
         turn, watched = plan(faces, left)
         if turn:

@@ -47,8 +47,11 @@ Plotter (``kind = "plotter"``): the pen is Z: up at ``safe_height`` (``G0 Z``), 
 
 Lead-in (profile ``lead_in`` mm, lasers and routers): each closed cut starts that far off its
 path on the scrap side (to the right of the direction of travel: outside an outline, inside
-a hole), a straight ``G1`` onto it, which never crosses another cut nor leaves the sheet
-(:func:`lead_in`: shortened, moved to another entry of the loop, or left out, with a note).
+a hole), a straight ``G1`` onto it, every point of which keeps :data:`LEAD_CLEARANCE` from
+every other cut and the sheet's edge (:func:`lead_in`: shortened, moved to another entry of
+the loop, or left out, with a note).  The first travel is always written, also to X0 Y0:
+where the head is when the program starts is unknown.  A router's bit that cuts a part apart
+(through-cuts nearer its edges than the bit's reach) is a warning (:func:`router_notes`).
 Tabs that do not fit a cut are fewer or smaller (:func:`fit_tabs`, with a note).  The notes
 are ``; note:`` lines of the header (:func:`read_summary`).
 
@@ -87,25 +90,31 @@ class Job:
     depth), ``travel`` (mm of ``G0`` in XY), ``seconds`` (the job's time at the profile's
     feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
     ``thickness`` unlike the program's), ``notes`` (what the program does that the drawing
-    does not say: a shared cut cut once, a lead-in shortened, tabs fitted)."""
+    does not say: a shared cut cut once, a lead-in shortened, tabs fitted); ``dark`` (mm a
+    laser ran at an operation's power 0: not cut, not in ``cut``)."""
     text: str
     cut: float
     travel: float
     seconds: float
     warnings: list = field(default_factory=list)
     notes: list = field(default_factory=list)
+    dark: float = 0.0
 
     def summary(self, name: str) -> str:
         """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
         speeds``."""
-        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds)}"
+        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds, self.dark)}"
 
 
-def estimate_text(cut: float, travel: float, seconds: float) -> str:
+def estimate_text(cut: float, travel: float, seconds: float, dark: float = 0.0) -> str:
+    """The job's numbers in words (``cut``, ``travel``, ``dark``: mm; ``seconds``); ``dark``:
+    the mm run with the beam off at an operation's power 0, said apart from the cut."""
     s = int(round(seconds))
     t = f"{s // 3600} h {s % 3600 // 60} min" if s >= 3600 else \
         f"{s // 60} min {s % 60} s" if s >= 60 else f"{s} s"
-    return f"cut {cut:.1f} mm, travel {travel:.1f} mm, about {t} at the profile's speeds"
+    off = f" ({dark:.1f} mm more with the beam off: power 0)" if dark > 0 else ""
+    return (f"cut {cut:.1f} mm{off}, travel {travel:.1f} mm, about {t} at the profile's "
+            "speeds")
 
 
 def read_summary(data: bytes) -> tuple[str, list[str], list[str]]:
@@ -351,22 +360,27 @@ def with_tabs(path: list, n: int, width: float) -> list[tuple]:
     return out
 
 
-LEAD_CLEARANCE = 0.5   # mm: a lead-in stops this far short of another cut or the sheet's edge
+# mm: every point of a lead-in keeps at least this far from every other cut and the sheet's edge
+LEAD_CLEARANCE = 0.5
 LEAD_TRIES = 16        # entries of a loop tried for a lead-in that fits whole
+LEAD_CHORD_TOL = 0.01  # mm: added to the clearance for the chords the cuts are sampled as
 
 
 class _Paths:
     """Every cut path of a job as chords (the machine's cuts: other parts' material lies
-    beyond them), and the sheet (``page``: (x0, y0, x1, y1) mm, or None), for the lead-ins:
-    :meth:`free` is how far a straight move from a point goes before it meets one."""
+    beyond them), each with the index of its cut, the lead-ins chosen so far, and the sheet
+    (``page``: (x0, y0, x1, y1) mm, or None), for the lead-ins: :meth:`room` is how long a
+    straight lead-in from a point can be and keep :data:`LEAD_CLEARANCE` from all of them."""
 
     def __init__(self, cuts, page, reach: float):
-        """``reach``: the longest move :meth:`free` is asked about (mm): the size of the
+        """``reach``: the longest lead-in :meth:`room` is asked about (mm): the size of the
         grid cells the chords are filed in, so that a question looks at a few cells."""
         import numpy as np
         from ...geometry.curves import sample_xy
-        a, b = [], []
-        for c in cuts:
+        a, b, owner = [], [], []
+        self.index = {}
+        for k, c in enumerate(cuts):
+            self.index[id(c)] = k
             if not c.operation.startswith("cut"):
                 continue
             xs, ys = [], []
@@ -379,58 +393,125 @@ class _Paths:
                 ys.append(c.end[1])
             a += list(zip(xs[:-1], ys[:-1]))
             b += list(zip(xs[1:], ys[1:]))
+            owner += [k] * (len(xs) - 1)
         self.a = np.asarray(a, dtype=float).reshape(-1, 2)
         self.b = np.asarray(b, dtype=float).reshape(-1, 2)
-        self.box = np.column_stack([np.minimum(self.a, self.b), np.maximum(self.a, self.b)])
+        self.owner = np.asarray(owner, dtype=np.int64)
         self.page = page
         self.cell = max(float(reach), 1e-3)
         self.grid: dict = {}
-        lo = np.floor(self.box[:, :2] / self.cell).astype(np.int64)
-        hi = np.floor(self.box[:, 2:] / self.cell).astype(np.int64)
-        for k in range(len(lo)):
-            for i in range(lo[k, 0], hi[k, 0] + 1):
-                for j in range(lo[k, 1], hi[k, 1] + 1):
-                    self.grid.setdefault((i, j), []).append(k)
+        for k in range(len(self.a)):
+            self._file(k, self.a[k], self.b[k])
+        self.leads: list = []          # the lead-ins chosen: (start, end), owner -1
 
-    def free(self, p, u, length: float) -> float:
-        """How far (mm, at most ``length``) the move from ``p`` along unit ``u`` goes before
-        it meets a cut path (other than at ``p`` itself) or leaves the sheet."""
+    def _file(self, k: int, p, q) -> None:
+        lo = [math.floor(min(p[i], q[i]) / self.cell) for i in (0, 1)]
+        hi = [math.floor(max(p[i], q[i]) / self.cell) for i in (0, 1)]
+        for i in range(lo[0], hi[0] + 1):
+            for j in range(lo[1], hi[1] + 1):
+                self.grid.setdefault((i, j), []).append(k)
+
+    def add_lead(self, p, q) -> None:
+        """A lead-in from ``p`` to ``q`` is cut: the next lead-ins keep clear of it too."""
+        self.leads.append((tuple(p), tuple(q)))
+        self._file(-len(self.leads), p, q)
+
+    def room(self, p, u, length: float, own=None) -> float:
+        """How long (mm, at most ``length``) a straight move from ``p`` (a point of cut
+        ``own``'s path) along unit ``u`` can be while every point of it stays at least
+        :data:`LEAD_CLEARANCE` from every other cut's path and lead-in (0 when ``p`` itself
+        is nearer than that to one), from its own cut's path once it is that far from ``p``
+        (a hole's far side), and from the sheet's edge.  The set of points of the move
+        nearer than the clearance to one chord is an interval of it (the move's line through
+        the chord's capsule): the move stops where the first interval begins."""
         import numpy as np
-        t = length
+        c = LEAD_CLEARANCE + LEAD_CHORD_TOL
+        t = float(length)
         if self.page is not None:
             x0, y0, x1, y1 = self.page
             for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
-                if u[k] > 0:
-                    t = min(t, (hi - p[k]) / u[k])
-                elif u[k] < 0:
-                    t = min(t, (lo - p[k]) / u[k])
+                if u[k] > 1e-15:           # towards the high edge: stop the clearance short
+                    t = min(t, (hi - c - p[k]) / u[k])
+                elif u[k] < -1e-15:
+                    t = min(t, (lo + c - p[k]) / u[k])
+        if t <= 0:
+            return 0.0
         q = (p[0] + u[0] * t, p[1] + u[1] * t)
-        x0, y0 = math.floor(min(p[0], q[0]) / self.cell), math.floor(min(p[1], q[1]) / self.cell)
-        x1, y1 = math.floor(max(p[0], q[0]) / self.cell), math.floor(max(p[1], q[1]) / self.cell)
+        x0, y0 = (math.floor((min(p[i], q[i]) - c) / self.cell) for i in (0, 1))
+        x1, y1 = (math.floor((max(p[i], q[i]) + c) / self.cell) for i in (0, 1))
         near = {k for i in range(x0, x1 + 1) for j in range(y0, y1 + 1)
                 for k in self.grid.get((i, j), ())}
         if not near:
-            return max(t, 0.0)
+            return t
         idx = np.fromiter(near, dtype=np.int64, count=len(near))
-        A, B = self.a[idx], self.b[idx]
-        e = B - A
-        d = A - np.asarray(p, dtype=float)
-        den = u[0] * e[:, 1] - u[1] * e[:, 0]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            tt = (d[:, 0] * e[:, 1] - d[:, 1] * e[:, 0]) / den
-            ss = (d[:, 0] * u[1] - d[:, 1] * u[0]) / den
-        hit = (np.abs(den) > 1e-15) & (tt > 1e-7) & (ss >= -1e-12) & (ss <= 1 + 1e-12)
+        mine = idx >= 0
+        A = np.empty((len(idx), 2))
+        B = np.empty((len(idx), 2))
+        A[mine], B[mine] = self.a[idx[mine]], self.b[idx[mine]]
+        if not mine.all():                     # lead-ins, filed as -1, -2, ...
+            got = np.array([self.leads[-k - 1] for k in idx[~mine].tolist()], dtype=float)
+            A[~mine], B[~mine] = got[:, 0], got[:, 1]
+        lo, hi = _capsule_spans(np.asarray(p, dtype=float), np.asarray(u, dtype=float),
+                                A, B, c)
+        ownk = np.zeros(len(idx), dtype=bool)
+        if own is not None:
+            ownk[mine] = self.owner[idx[mine]] == own
+        # its own path: only beyond the clearance from p (the move starts on it)
+        start = np.where(ownk, c + LEAD_CHORD_TOL, 0.0)
+        hit = hi > start
         if hit.any():
-            t = min(t, float(tt[hit].min()))
+            t = min(t, float(np.maximum(lo[hit], start[hit]).min()) - 1e-9)
         return max(t, 0.0)
+
+
+def _capsule_spans(p, u, A, B, r):
+    """For each chord ``A[k]``-``B[k]`` (n x 2), the span ``[lo, hi]`` of the parameters s
+    of the line ``p + s u`` (``u`` a unit vector) whose points are nearer than ``r`` to the
+    chord (its capsule of radius ``r``); ``lo = inf``, ``hi = -inf`` where none is.  The
+    capsule is convex: its span is the union of those of its two end discs and its middle
+    rectangle."""
+    import numpy as np
+    inf = np.inf
+    lo = np.full(len(A), inf)
+    hi = np.full(len(A), -inf)
+    for E in (A, B):                         # the discs at the ends
+        d = p - E
+        bb = d @ u
+        disc = bb * bb - ((d * d).sum(1) - r * r)
+        ok = disc > 0
+        root = np.sqrt(np.where(ok, disc, 0.0))
+        lo = np.where(ok, np.minimum(lo, -bb - root), lo)
+        hi = np.where(ok, np.maximum(hi, -bb + root), hi)
+    e = B - A
+    L = np.hypot(e[:, 0], e[:, 1])
+    good = L > 0
+    eh = np.where(good[:, None], e / np.where(good, L, 1.0)[:, None], 0.0)
+    nh = np.column_stack([-eh[:, 1], eh[:, 0]])
+    d = p - A
+    s_lo = np.full(len(A), -inf)
+    s_hi = np.full(len(A), inf)
+    for f0, f1, a, b in (((d * eh).sum(1), eh @ u, 0.0, L),
+                         ((d * nh).sum(1), nh @ u, -r, r)):
+        flat = np.abs(f1) < 1e-15
+        inside = (a <= f0) & (f0 <= b)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t0 = (a - f0) / np.where(flat, 1.0, f1)
+            t1 = (b - f0) / np.where(flat, 1.0, f1)
+        s_lo = np.where(flat, np.where(inside, s_lo, inf), np.maximum(s_lo, np.minimum(t0, t1)))
+        s_hi = np.where(flat, np.where(inside, s_hi, -inf), np.minimum(s_hi, np.maximum(t0, t1)))
+    rect = good & (s_lo < s_hi)
+    lo = np.where(rect, np.minimum(lo, s_lo), lo)
+    hi = np.where(rect, np.maximum(hi, s_hi), hi)
+    return lo, hi
 
 
 def lead_in(cut, path: list, lead: float, paths: "_Paths"):
     """A closed cut's lead-in (profile ``lead_in``: ``lead`` mm): ``(path, start, length)``,
     the path turned to start where the lead-in meets it and the point it starts from, ``lead``
     mm to the right of the path (the scrap side: outside an outline, inside a hole), or
-    shortened so that it stops :data:`LEAD_CLEARANCE` short of every other cut and of the
-    sheet's edge (it never crosses another part, a hole's far side or the sheet's edge).  The
+    shortened so that every point of it keeps :data:`LEAD_CLEARANCE` from every other cut,
+    lead-in and the sheet's edge, and from its own path's far side (:meth:`_Paths.room`: it
+    never crosses nor runs beside another part, a hole's far side or the sheet's edge).  The
     path's own start is tried first, then its other segment ends (up to :data:`LEAD_TRIES`):
     the first where the whole lead-in fits, else the longest.  ``(path, None, 0)`` when none
     is at least a quarter of ``lead`` (the cut starts on its path)."""
@@ -439,12 +520,13 @@ def lead_in(cut, path: list, lead: float, paths: "_Paths"):
     import numpy as np
     poly = None
     best = (path, None, 0.0)
+    own = paths.index.get(id(cut))
     for j in range(min(len(path), LEAD_TRIES)):
         s = path[j]
         tx, ty = tangent_at(s, False)
         p0 = s.start
         u = (ty, -tx)                                 # the right of the direction of travel
-        t = min(lead, paths.free(p0, u, lead + LEAD_CLEARANCE) - LEAD_CLEARANCE)
+        t = paths.room(p0, u, lead, own)
         if t <= best[2] or t < lead / 4:
             continue
         q = (p0[0] + t * u[0], p0[1] + t * u[1])
@@ -455,6 +537,8 @@ def lead_in(cut, path: list, lead: float, paths: "_Paths"):
         best = (path[j:] + path[:j], q, t)
         if t >= lead * (1 - 1e-12):
             break
+    if best[1] is not None:
+        paths.add_lead(best[1], best[0][0].start)
     return best
 
 
@@ -463,13 +547,17 @@ class _Writer:
     def __init__(self, machine):
         self.m = machine
         self.lines: list[str] = []
-        self.x = self.y = 0.0
+        # where the head is: unknown (None) until the first travel, which is therefore always
+        # written, beam off / tool up, even to X0 Y0 (a job used to start cutting wherever
+        # the head was); the estimates count that travel from the origin
+        self.x = self.y = None
         self.z = None
         self.cut = self.travel = self.seconds = 0.0
         self.feed = None
         self.power = None
         self.notes: list[str] = []
         self.changed: dict = {}        # (what, part) -> what _prepare changed (_changes)
+        self.dark: dict = {}           # operation -> mm a laser ran at power 0 (no cut)
 
     def out(self, line: str) -> None:
         if len(self.lines) >= MAX_JOB_MOVES:
@@ -496,7 +584,7 @@ class _Writer:
             if (x, y) == (self.x, self.y) and z is None:
                 return
             w += [f"X{num(x)}", f"Y{num(y)}"]
-            d = math.hypot(x - self.x, y - self.y)
+            d = math.hypot(x - (self.x or 0.0), y - (self.y or 0.0))
             self.travel += d
             self.x, self.y = x, y
         if z is not None:
@@ -528,12 +616,12 @@ class _Writer:
         if isinstance(s, Line):
             L = math.hypot(ex - self.x, ey - self.y)
             if L == 0.0:
-                return
+                return 0.0
             self.out(f"G1 X{num(ex)} Y{num(ey)}")
         else:
             if (ex, ey) == (self.x, self.y):
                 # an arc too short for 1e-10 mm: G2/G3 to its own start is a whole circle
-                return
+                return 0.0
             i, j = _round(s.center[0] - self.x), _round(s.center[1] - self.y)
             L = s.length
             self.out(f"{'G3' if s.sweep > 0 else 'G2'} X{num(ex)} Y{num(ey)} "
@@ -542,6 +630,7 @@ class _Writer:
             self.cut += L
         self.seconds += L / self.feed * 60.0
         self.x, self.y = ex, ey
+        return L
 
 
 def job(output: Output, machine=None, thickness: float | None = None) -> Job:
@@ -558,6 +647,9 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     if m.kind == "router":
         from ..part.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
+        more, split = router_notes(output, m.tool_diameter)
+        notes += more
+        warnings += split
         output = tool_path(output, m.tool_diameter)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
@@ -570,8 +662,27 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     w.notes = notes
     body = _body(w, cuts, m, thick, output)
     w.notes += _changes(w)
+    w.warnings += _dark_warnings(w)
     head = _header(output, m, w)
-    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes)
+    return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes,
+               sum(w.dark.values()))
+
+
+W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
+
+
+def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]:
+    """What a router's bit of ``diameter`` mm does to ``output``'s through-cuts beyond the
+    design (:func:`~..fabrication.bridges.router_bridges`): the notes of the bridges it cuts
+    through (three at most, then their count) and the warnings of the parts it cuts into
+    more pieces (each ending :data:`W0510_TAG`)."""
+    from ..fabrication.bridges import bridge_note, router_bridges, split_message
+    bridges, splits = router_bridges(output, diameter)
+    split = {s.part for s in splits}
+    said = [bridge_note(b, diameter) for b in bridges if b.part not in split]
+    notes = said[:3] + ([f"and {len(said) - 3} more bridges the bit cuts away"]
+                        if len(said) > 3 else [])
+    return notes, [split_message(s, diameter) + W0510_TAG for s in splits]
 
 
 def tool_path(output: Output, diameter: float) -> Output:
@@ -627,7 +738,7 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
          f"; machine: {m.kind} ({src})",
-         f"; {estimate_text(w.cut, w.travel, w.seconds)}",
+         f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()))}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],
          "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
@@ -667,6 +778,16 @@ def _prepare(w: _Writer, cut, path: list, paths) -> tuple:
     return path, lead, pieces
 
 
+def _dark_warnings(w: _Writer) -> list[str]:
+    """A laser operation at power 0 (``w.dark``): its moves run with the beam off and cut
+    nothing; one warning naming the profile's setting, the length not counted as cut."""
+    m = w.m
+    src = f"the machine profile `{m.source}`" if m.source else "the machine profile"
+    return [f"{src} gives `{op}.power = 0`: the {mm:.1f} mm of {op.replace('_', ' ')} run with "
+            f"the beam off and cut nothing (not counted as cut); give `{op}.power` above 0, "
+            "up to 100 %, to cut them" for op, mm in w.dark.items()]
+
+
 def _changes(w: _Writer) -> list[str]:
     """The notes of what the program does other than the profile says (``w.changed``): a
     lead-in shortened or left out where another part or the sheet's edge is nearer than it,
@@ -689,13 +810,14 @@ def _changes(w: _Writer) -> list[str]:
             if cut_:
                 out.append(f"{len(cut_)} lead-in{'s' if len(cut_) != 1 else ''} of {who} "
                            f"shortened to {min(cut_):.3g} mm (of {m.lead_in:g} mm): another "
-                           "cut or the sheet's edge is nearer; a lead-in never crosses another "
-                           "part or leaves the sheet")
+                           "cut or the sheet's edge is nearer; a lead-in keeps "
+                           f"{LEAD_CLEARANCE:g} mm from every other cut and the sheet's edge")
             if len(cut_) < len(got):
                 k = len(got) - len(cut_)
                 out.append(f"{k} cut{'s' if k != 1 else ''} of {who} start{'s' if k == 1 else ''}"
                            f" on {'its' if k == 1 else 'their'} path without a lead-in: no room "
-                           f"for one of {m.lead_in / 4:g} mm or more beside it")
+                           f"for one of {m.lead_in / 4:g} mm or more that keeps "
+                           f"{LEAD_CLEARANCE:g} mm from the other cuts")
     return out
 
 
@@ -720,16 +842,21 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
         start = lead or path[0].start
         if m.kind == "laser":
             power = op.power / 100.0 * m.max_power
+            lit = power > 0          # at power 0 the moves cut nothing (_dark_warnings)
+            dark = 0.0
             back = [] if cut.closed else [(reverse(s), tab) for s, tab in reversed(pieces)]
             for k in range(max(1, op.passes)):
                 if k == 0 or lead:
                     w.rapid(*start, off=True)
                 if lead:
                     w.setting(op.speed, power)
-                    w.segment(Line(lead, path[0].start))
+                    dark += w.segment(Line(lead, path[0].start), lit)
                 for s, on_tab in (back if back and k % 2 else pieces):
                     w.setting(op.speed, 0.0 if on_tab else power)
-                    w.segment(s, not on_tab)
+                    got = w.segment(s, lit and not on_tab)
+                    dark += 0.0 if on_tab else got
+            if not lit:
+                w.dark[cut.operation] = w.dark.get(cut.operation, 0.0) + dark
         elif m.kind == "plotter":
             for k in range(max(1, op.passes)):
                 if k == 0 or not cut.closed:
