@@ -848,22 +848,31 @@ real size (or a smaller `--min-wall`) has fewer edges within reach.
     aidl check usa.aidl
     # note[W0521]: not checked: slits (W0519) in `borders`: out of its share of the time (3 s of the 15 s budget)
 """),
-    "W0522": ("through-cut that cuts nothing", """
+    "W0522": ("through-cut that cuts nothing (or a stretch already cut)", """
 A curve of a `cut` structure is a through-cut: the laser cuts along it through the part. This
 one has no stretch on the material of its part (it is drawn beside the part, or inside a hole),
 or no length (its ends on each other), so it cuts nothing. Move it onto the part, or delete it; a line meant to be engraved belongs in
 a `drawing`. A through-cut drawn along the part's outline (or a hole's) from end to end adds
 nothing either: the outline is cut anyway, and the outputs cut that line once (no stroke is
 written for the cut). Delete it; to cut the part along a new line, draw it across the
-material. A through-cut that separates material makes the piece it cuts off a part of its
-own (or a hole, when the piece is enclosed); one that leaves a web thinner than the minimum
-wall between two cuts, or a cut and the outline, is W0507.
+material. Every segment of every curve is judged alike: a Polyline (Spline, Bezier) whose
+first side lies on the outline while the rest cuts into the part is W0522 naming that side
+(start the curve past it), and the outputs cut the outline there once. So is a through-cut
+that runs along another of the same part (two slits on one line that overlap, an arc over
+another of the same circle, copies of one cut at one place): the warning names both, and the
+outputs cut the stretch they share once. Cuts that only meet end to end share nothing. A
+through-cut that separates material makes the piece it cuts off a part of its own (or a hole,
+when the piece is enclosed); one that leaves a web thinner than the minimum wall between two
+cuts, or a cut and the outline, is W0507.
 
     solid panel {
         body = Rectangle(center=(0, 0), width=60, height=30)
         cut slits {
             a = Line(start=(40, 0), end=(50, 0))       # beside the panel: cuts nothing
             b = Line(start=(-30, -15), end=(30, -15))  # along its bottom edge: adds nothing
+            c = Polyline([(-30, -15), (-20, -15), (-20, 0)])   # its first side: the same
+            d = Line(start=(0, 5), end=(20, 5))
+            e = Line(start=(10, 5), end=(25, 5))       # runs along d for 10 mm
         }
     }
 """),

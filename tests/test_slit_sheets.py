@@ -249,3 +249,25 @@ def test_the_dxf_of_closed_cuts_holds_each_square_once_at_its_design_place():
             assert x1 - x0 == pytest.approx(6, abs=1e-9) and y1 - y0 == pytest.approx(6, abs=1e-9)
             boxes.add((round(x0, 9), round(y0, 9)))
     assert boxes == {((i % COLS) * 12 + 3, (i // COLS) * 12 + 3) for i in range(50)}
+
+
+def test_meeting_of_90601_squares_is_listed_in_blocks():
+    """The 301 x 301 squares a grid of 300 slits each way cuts a plate into (2 mm each, the
+    pieces of `aidl parts` on such a plate): each meets itself and its 8 neighbours, (3 x 301
+    - 2)^2 pairs in all.  Before: the grid query listed its 6.3 million candidates at once and
+    refused past 3 million (TooManyPairs: an internal error of `aidl parts`); now the queries
+    go in blocks of at most 3 million, and only a dense cluster is refused."""
+    from aidl_lang.output.part.nearby import MAX_PAIRS, TooManyPairs, box_pairs_between
+    n = 301
+    i, j = np.divmod(np.arange(n * n), n)
+    boxes = np.column_stack([2.0 * i, 2.0 * j, 2.0 * i + 2, 2.0 * j + 2])
+    pairs = box_pairs_between(boxes, boxes)
+    assert len(pairs) == (3 * n - 2) ** 2
+    di = np.abs(i[pairs[:, 0]] - i[pairs[:, 1]])
+    dj = np.abs(j[pairs[:, 0]] - j[pairs[:, 1]])
+    assert di.max() == 1 and dj.max() == 1
+    # a cluster where every box meets every other is still refused, not listed
+    k = int(np.sqrt(2 * MAX_PAIRS)) + 64
+    same = np.tile([0.0, 0.0, 1.0, 1.0], (k, 1)) + np.linspace(0, 1e-3, k)[:, None]
+    with pytest.raises(TooManyPairs):
+        box_pairs_between(same, same)

@@ -291,12 +291,12 @@ def test_text_in_a_cut_is_e0120_with_the_fix(tmp_path):
 
 def test_cut_stays_an_ordinary_name(tmp_path):
     src = """
-def hinge(cut = 15 mm) -> cut { l = Line(start=(0, 0), end=(cut, 0)) }
+def hinge(cut = 15 mm, y = 0 mm) -> cut { l = Line(start=(0, y), end=(cut, y)) }
 solid panel {
     body = Rectangle(center=(0, 0), width=60, height=30)
     cut = 10 mm
     h = hinge(cut=cut)
-    cut c = hinge()
+    cut c = hinge(y=5 mm)
     Fixed(body)
 }
 """

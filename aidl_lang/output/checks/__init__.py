@@ -27,8 +27,8 @@ One module per family:
   ``W0524`` a drawing's Line of zero length;
 * :mod:`.allowances`: ``W0523`` an ``AllowOverlap`` that allows nothing;
 * :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
-* :mod:`.through`: ``W0522`` a through-cut off the material or along the outline, ``W0507`` a web thinner than the
-  minimum between through-cuts (or a through-cut and the outline);
+* :mod:`.through`: ``W0522`` a through-cut off the material or along the outline (or a segment of one), or one
+  along another, ``W0507`` a web thinner than the minimum between through-cuts (or a through-cut and the outline);
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;
 * :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';

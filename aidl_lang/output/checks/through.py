@@ -3,7 +3,9 @@
 * ``W0522`` a through-cut that cuts nothing: no stretch of it lies on the material of its
   part (it is drawn off the part, or in a hole), or it has no length, or it lies along the
   part's outline (or a hole's) from end to end: the outline is cut anyway, so it adds nothing
-  (the outputs leave it out: that line is cut once);
+  (the outputs leave it out: that line is cut once); or a segment of one does, while the rest
+  cuts (:func:`_along_outline`: a Polyline's side, a Bezier's span); or it runs along another
+  through-cut of its part (:func:`_overlapping`: overlapping collinear slits, copies);
 * ``W0507`` a web thinner than the minimum wall that the through-cuts leave: the morphological
   opening (:func:`.walls._thin`) of the part with every through-cut's band taken out
   (:attr:`~..part.booleans.Drawing.slit_shapes`) removes more than the opening of the part itself;
@@ -30,6 +32,7 @@ from ...geometry.curves import Line, Loop, carrier, distance_to
 from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import SLIT_HALF, Drawing, _quad
 from ..part.nearby import close_pairs, meeting
+from ..part.shared import TWO_PI, _span
 from .common import _inside, _signed
 from .walls import _thin
 
@@ -67,6 +70,9 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
                          "it once)", g.span or th.part.span,
                          hint="delete it; to cut the part along a new line, draw the line "
                               "across the material")
+        else:
+            _along_outline(th, sink)
+    _overlapping(d, sink, tick)
     for name, (whole, slit) in (getattr(d, "slit_shapes", None) or {}).items():
         s = d.part_of.get(name)
         if s is None or s not in roots:
@@ -79,6 +85,94 @@ def check_through(d: Drawing, roots: dict, sink: DiagnosticSink, min_wall_of,
         seen: list = []         # the webs reported below: a bridge in one is not told again
         _webs(s, whole, slit, cuts, t, sink, seen, tick)
         _end_bridges(d, s, whole, cuts, t, sink, seen, tick)
+
+
+def _along_outline(th, sink: DiagnosticSink) -> None:
+    """W0522 for each run of segments of through-cut ``th`` that lies along its part's
+    outline (:attr:`~..part.result.Through.along`) while the rest of the curve cuts: the
+    outline cuts that stretch anyway, and the outputs cut it once (a Polyline's first side
+    drawn on the plate's edge was cut there twice a pass, with no word)."""
+    along = getattr(th, "along", ())
+    if not along:
+        return
+    g, segs = th.geometry, getattr(th, "units", None) or th.segments
+    runs: list = []
+    for k in along:
+        if runs and runs[-1][1] == k - 1:
+            runs[-1][1] = k
+        else:
+            runs.append([k, k])
+    for a, b in runs:
+        p, q = segs[a].start, segs[b].end
+        where = (f"segment {a + 1}" if a == b else f"segments {a + 1} to {b + 1}") + \
+            f" of {len(segs)}, from {_xy(p)} to {_xy(q)}"
+        if a == 0:
+            fix = f"start the curve at {_xy(q)}"
+        elif b == len(segs) - 1:
+            fix = f"end the curve at {_xy(p)}"
+        else:
+            fix = f"draw it as two curves, one ending at {_xy(p)} and one from {_xy(q)}"
+        sink.warning("W0522", f"through-cut `{g.label}` adds nothing along {where}: that "
+                     f"stretch lies along the outline of `{th.part.path}`, which is cut "
+                     "anyway (the outputs cut it once)", g.span or th.part.span,
+                     hint=f"{fix}; the rest of `{g.label}` cuts as drawn")
+
+
+def _xy(p) -> str:
+    return f"({float(p[0]):.4g}, {float(p[1]):.4g})"
+
+
+def _overlapping(d: Drawing, sink: DiagnosticSink, tick) -> None:
+    """W0522 for two through-cuts of one part that run along each other (collinear slits
+    that overlap, one arc over another of the same circle): the stretch both cover is cut
+    once by the outputs (:func:`~..part.part._cut_once`), so the later cut adds
+    nothing there.  Shared as between the pieces of a cut part (:func:`~..part.shared._span`:
+    one carrier, parameter ranges overlapping by more than
+    :data:`~..part.shared.SHARED_TOL` mm): each carrier's ranges sorted, O(n log n); one
+    warning per pair of cuts, naming both."""
+    ranges: dict = {}           # (part, carrier) -> [(lo, hi, cut index, segment, tol)]
+    cuts = [th for th in getattr(d, "through", ())
+            if not getattr(th, "on_outline", False) and th.inside > OFF * th.band.area() > 0]
+    for i, th in enumerate(cuts):
+        for k, seg in enumerate(getattr(th, "units", None) or th.segments):
+            if k in getattr(th, "along", ()):
+                continue
+            key, lo, hi, _, tol, wrap = _span(seg)
+            if key is None or hi - lo <= tol:
+                continue
+            for turn in ((0.0, TWO_PI) if wrap else (0.0,)):
+                ranges.setdefault((th.part, key), []).append((lo + turn, hi + turn, i, k, tol))
+    told = set()
+    for (_, key), rs in ranges.items():
+        if len(rs) < 2:
+            continue
+        tick()
+        rs.sort()
+        reach, owner = -np.inf, None         # the farthest end so far, and whose it is
+        for lo, hi, i, k, tol in rs:
+            if owner is not None and owner != (i, k) and reach - lo > tol:
+                pair = (min(owner[0], i), max(owner[0], i))
+                if pair not in told:
+                    told.add(pair)
+                    _tell_overlap(cuts[pair[0]], cuts[pair[1]], key, min(reach, hi) - lo,
+                                  sink)
+            if hi > reach:
+                reach, owner = hi, (i, k)
+
+
+def _tell_overlap(first, second, key: tuple, length: float, sink: DiagnosticSink) -> None:
+    """W0522 for through-cut ``second`` running along ``first`` (the same one: back along
+    itself) on carrier ``key`` (:func:`~..part.shared._span`) for ``length`` of its
+    parameter."""
+    a, b = first.geometry, second.geometry
+    mm = length if key[0] == "L" else length * key[3] if key[0] == "C" else None
+    how = f" for {mm:.4g} mm" if mm is not None else ""
+    other = "back along itself" if first is second else f"along through-cut `{a.label}`"
+    sink.warning("W0522", f"through-cut `{b.label}` runs {other}{how}: the outputs cut that "
+                 f"stretch of `{second.part.path}` once, so `{b.label}` adds nothing there",
+                 b.span or a.span or second.part.span,
+                 hint="end one cut where the other begins, or draw the two as one curve; "
+                      "copies of one cut at one place: draw it once")
 
 
 def check_sheet_cuts(d: Drawing, roots: dict, sink: DiagnosticSink,

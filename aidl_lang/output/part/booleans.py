@@ -30,6 +30,7 @@ from ...geometry.offset import offset_pieces
 from ...geometry.biarc import without_ellipses
 from ...geometry.primitives import region_of
 from ...geometry.operations import SplineCorner, finish
+from ...geometry.tessellate import CHORD_TOL
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
 from .exact import Provenance
@@ -887,7 +888,7 @@ class Renderer:
         enclosed by another falls out (a hole) and any other is a part of its own.  Returns
         ``(the part's shape, [the shapes of the pieces cut off])``; the part's shape is
         ``shp`` itself when nothing is separated (the cuts take no area)."""
-        bands = []
+        bands, seg_bands, seg_units = [], [], []
         for g, segs in paths:
             self.tick(s)
             # the chords registered (there and back): the band's sides match the curve
@@ -896,27 +897,61 @@ class Renderer:
             out.lines.append(("cut", pts))
             bands.append(self.union([_quad(pts[i], pts[i + 1], SLIT_HALF)
                                      for i in range(len(pts) - 1)], s))
+            # each segment's own band (a curve of one segment: the curve's), so that every
+            # segment of a Polyline, Spline or Bezier is judged as a Line would be
+            units = _units(segs)
+            seg_bands.append([bands[-1]] if len(units) == 1 else [
+                self.union([_quad(P[i], P[i + 1], SLIT_HALF) for i in range(len(P) - 1)], s)
+                for P in (_chain_points([u]) for _, u in units)])
+            seg_units.append(units)
+        self._collinear_runs(paths)
         # each band's area on the material: against the pieces of the part whose boxes meet
         # its own (the pieces are disjoint, so the sum is its area in the whole part; the
         # whole part for every band cost bands x the part's vertices: 5.9 s for the 2,180
-        # slits of Boxes.py's Lamp sheet); and on the material more than a band's width in
-        # from the outline (none: the cut lies along the outline, which is cut anyway)
+        # slits of Boxes.py's Lamp sheet); and each segment's on the material more than a
+        # band's width in from the outline (none: it lies along the outline, cut anyway)
+        # (a curve's chords and the outline's differ: an arc on a round outline lies up to
+        # CHORD_TOL inside the outline's chords, so curves are measured that much further in)
         before = shp.decompose() if not shp.is_empty() else []
-        deep = shp.offset(-2 * SLIT_HALF, mf.JoinType.Miter).decompose() if before else []
-        near, near_deep = meeting(bands, before), meeting(bands, deep)
+        flat = [b for bs in seg_bands for b in bs]
+        curved = [not isinstance(u, Line) for units in seg_units for _, u in units]
+        deep, seg_deep = {}, {}
+        for bent in {False, True} & set(curved):
+            deep[bent] = shp.offset(-2 * SLIT_HALF - (CHORD_TOL if bent else 0.0),
+                                    mf.JoinType.Miter).decompose() if before else []
+            seg_deep[bent] = meeting(flat, deep[bent])
+        near, seg_near = meeting(bands, before), meeting(flat, before)
         cutting = []
-        for (g, segs), band, pieces, inner in zip(paths, bands, near, near_deep):
+        at = 0
+        for (g, segs), band, pieces, bs, units in zip(paths, bands, near, seg_bands,
+                                                      seg_units):
             self.tick(s)
             inside = sum((band ^ before[i]).area() for i in pieces)
             th = Through(g, s, segs, band, inside)
-            th.on_outline = inside > 0 and sum((band ^ deep[i]).area() for i in inner) \
-                <= SLIT_OFF * band.area()
+            along = []
+            for k, b in enumerate(bs, at):
+                area = b.area()
+                on = sum((b ^ before[i]).area() for i in seg_near[k])
+                bent = curved[k]
+                if on > SLIT_OFF * area and sum((b ^ deep[bent][i]).area()
+                                                for i in seg_deep[bent][k]) <= SLIT_OFF * area:
+                    along.append(k - at)
+            at += len(bs)
+            th.along = tuple(along)
+            th.units = [u for _, u in units] if len(units) > len(segs) else segs
+            th.on_outline = inside > 0 and len(along) == len(units)
             self.through.append(th)
             if th.on_outline:       # W0522: not drawn (the outline is cut once), cuts nothing
                 continue
-            for seg in segs:
-                self._stroke_segment(seg, "cut", g, out)
-            cutting.append(band)
+            cut_along = {units[k][0] for k in along}
+            for k, (j, u) in enumerate(units):
+                if j not in cut_along:
+                    if k == 0 or units[k - 1][0] != j:
+                        self._stroke_segment(segs[j], "cut", g, out)    # the segment whole
+                elif k not in along:    # the rest of a segment a stretch of which is along
+                    self._stroke_segment(u, "cut", g, out)              # the outline: W0522
+            cutting.append(band if not along else
+                           self.union([b for k, b in enumerate(bs) if k not in along], s))
         if shp.is_empty():
             return shp, []
         cut = shp - self.union(cutting, s)
@@ -962,6 +997,41 @@ class Renderer:
         # in the part, a net of slivers round holes where the pieces were (a 3 x 3 grid:
         # the part 20 x 20 mm with an 8-gon hole, not one 10 x 10 mm square)
         return shp - self.union(removed, s), pieces
+
+    def _collinear_runs(self, paths: list) -> None:
+        """Register, for the lines of through-cuts ``paths`` that overlap or meet end to end
+        on one carrier (two slits on one line), the line of their whole run (there and
+        back), so that an edge of a piece the run cuts off is held by one chord: each edge
+        is matched to the chord that holds it whole (:class:`.exact.Provenance`), and an
+        edge from the plate's edge across both slits to a crossing, held by neither, kept
+        Manifold's vertices, 1e-7 mm off (the pieces' shared edge then on two carriers, cut
+        twice)."""
+        from .shared import _span
+        runs: dict = {}             # carrier -> [(lo, hi, point at lo, point at hi)]
+        for _, segs in paths:
+            for seg in segs:
+                if isinstance(seg, Line):
+                    key, lo, hi, fwd, tol, _ = _span(seg)
+                    if key is not None and hi - lo > tol:
+                        a, b = (seg.start, seg.end) if fwd else (seg.end, seg.start)
+                        runs.setdefault(key, []).append((lo, hi, a, b, tol))
+        for rs in runs.values():
+            if len(rs) < 2:
+                continue
+            rs.sort(key=lambda r: r[:2])
+            merged = [list(rs[0])]
+            count = [1]
+            for lo, hi, a, b, tol in rs[1:]:
+                if lo <= merged[-1][1] + tol:
+                    count[-1] += 1
+                    if hi > merged[-1][1]:
+                        merged[-1][1], merged[-1][3] = hi, b
+                else:
+                    merged.append([lo, hi, a, b, tol])
+                    count.append(1)
+            for (_, _, a, b, _), n in zip(merged, count):
+                if n > 1:
+                    self.exact.polygon(Loop([Line(a, b), Line(b, a)]))
 
     def part(self, s: Structure, out: Drawing) -> None:
         at = len(out.parts)             # a part is drawn under the parts of its drawings
@@ -1016,6 +1086,24 @@ class Renderer:
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
         return out
+
+
+def _units(segs: list) -> list:
+    """``[(index of the segment, piece)]``: the pieces of the exact open segments ``segs``
+    that the through-cut checks judge one by one: each segment, an open Spline's (a Bezier's)
+    one per span, so that a Bezier's span on the outline is judged as a Polyline's side."""
+    out = []
+    for j, seg in enumerate(segs):
+        if isinstance(seg, Spline) and not seg.curve.closed:
+            lo, hi = sorted((seg.u0, seg.u1))
+            at = [lo] + [float(i) for i in range(math.floor(lo) + 1, math.ceil(hi))] + [hi]
+            if len(at) > 2:
+                pairs = list(zip(at, at[1:]))
+                out += [(j, Spline(seg.curve, a, b)) for a, b in pairs] if seg.u1 >= seg.u0 \
+                    else [(j, Spline(seg.curve, b, a)) for a, b in reversed(pairs)]
+                continue
+        out.append((j, seg))
+    return out
 
 
 def _chain_points(segs: list) -> np.ndarray:

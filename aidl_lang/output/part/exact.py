@@ -45,6 +45,7 @@ MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord 
 SNAP_TOL = 1e-6        # mm: a result vertex this close to an input segment end is that end
 PAIRS_PER_BLOCK = 100_000     # candidate (edge, chord) pairs matched at once (~10 MB)
 CHORDS_PER_BLOCK = 20_000     # chords sampled into the grid at once (~10 MB)
+MAX_SAMPLES = 1_000_000       # chord samples the grid may hold past 16 a chord (~16 MB)
 EDGES_PER_BLOCK = 10_000      # result edges looked up in the grid at once (~2 MB)
 CARRIERS_PER_EDGE = 8         # chords kept per result edge (the nearest)
 STACKED_HINT = ("draw each curve once: copies at the same place (a pattern or template "
@@ -644,8 +645,16 @@ class _Grid:
         total = float(L.sum())
         med = float(np.sort(L)[m // 2])
         span = float(max(np.abs(A).max(), np.abs(B).max()))
-        # cells small enough to hold few chords, few enough that a cell's key fits int64
-        self.cell = h = max(med, total / (16 * m + 1024), 1e-6, span / 2 ** 30)
+        lo, hi = np.minimum(A.min(axis=0), B.min(axis=0)), np.maximum(A.max(axis=0), B.max(axis=0))
+        # the area of the chords' box per mm of chord: the mean gap between long chords (a
+        # grid of n slits across a plate: its pitch).  Cells of the median chord alone were
+        # the plate's size there, so every result edge met every slit: a 100 x 100 grid of
+        # slits, 40,804 edges x 200 slits, was refused as curves drawn on top of each other
+        gap = float(np.prod(np.maximum(hi - lo, 1e-9))) / max(total, 1e-300)
+        # cells small enough to hold few chords, few enough that a cell's key fits int64 and
+        # the samples number at most about MAX_SAMPLES (or 16 a chord)
+        self.cell = h = max(min(med, gap), total / max(16 * m + 1024, MAX_SAMPLES), 1e-6,
+                            span / 2 ** 30)
         ns = np.maximum(1, np.ceil(L / h).astype(np.int64))           # pieces per chord
         # the samples' cells, CHORDS_PER_BLOCK chords at a time: the sample points of all
         # chords at once were the largest temporaries of a compile (issue 26)

@@ -291,8 +291,58 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
     split = getattr(drawing, "split", ())
     if split:
         strokes = _off_outlines(strokes, [p for p in out.parts if p.name in split])
-    out.engrave = _join(strokes)
+    out.engrave = _join(_cut_once(strokes, out.parts))
     return out
+
+
+def _cut_once(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
+    """``strokes`` with each ``cut`` stroke less the stretches already cut: those along the
+    outline of a part (the outline is cut anyway) and those along an earlier ``cut`` stroke
+    (two slits drawn over each other), so every cutting output cuts each place once a pass
+    (docs/outputs.md, "Through-cuts").  Exact, on every kind of segment alike (a Polyline's
+    side on the plate's edge, a Line part of whose length runs along a notch's side, an Arc
+    over another of one circle): shared as between the pieces of a cut part
+    (:func:`.shared._span`: one carrier, parameter ranges overlapping by more than
+    :data:`.shared.SHARED_TOL` mm); the rest of a segment is its own piece
+    (:func:`.shared._piece`).  Each carrier's ranges are kept sorted: O(n log n).  Other
+    strokes, and cut strokes that share nothing, are kept as they are (the same objects)."""
+    from .shared import _add, _piece, _span, _uncovered
+    if not any(st.style == "cut" for st in strokes):
+        return strokes
+    cover: dict = {}
+    for p in parts:
+        for lp in p.loops:
+            for seg in lp.segments:
+                _add(cover, _span(seg))
+    out = []
+    for st in strokes:
+        if st.style != "cut":
+            out.append(st)
+            continue
+        spans = [_span(seg) for seg in st.segments]
+        kept = [_uncovered(cover, x) for x in spans]
+        if all(len(r) == 1 and r[0] == (x[1], x[2]) for r, x in zip(kept, spans)):
+            out.append(st)
+        else:
+            run: list = []              # the stroke's pieces left, each run without a gap
+            for seg, x, pieces in zip(st.segments, spans, kept):
+                _, a, b, fwd, tol, _ = x
+                for lo, hi in (pieces if fwd else pieces[::-1]):
+                    piece = _piece(seg, x, lo, hi)
+                    if run and not _joins(run[-1].end, piece.start):
+                        out.append(Stroke(run, st.style, False, st.source, st.part))
+                        run = []
+                    run.append(piece)
+            if run:
+                closed = st.closed and len(run) == len(st.segments) and run[0] is st.segments[0]
+                out.append(Stroke(run, st.style, closed, st.source, st.part))
+        for x in spans:                 # this stroke cuts its line from now on
+            _add(cover, x)
+    return out
+
+
+def _joins(p, q) -> bool:
+    return abs(p[0] - q[0]) <= 1e-9 and abs(p[1] - q[1]) <= 1e-9
 
 
 ON_OUTLINE = 0.02     # mm: a through-cut this near a split part's outline is that outline

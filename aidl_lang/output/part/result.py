@@ -40,11 +40,15 @@ class Through(Compared):
     (zero width) through ``part`` (the part's structure): its exact ``segments`` (mm) and
     ``band``, the strip :data:`SLIT_HALF` either side of it (the analysis' stand-in for the
     zero-width cut); ``inside``: the band's area inside the part before any through-cut
-    (0: the cut is off the material); ``on_outline``: it lies along the part's outline."""
-    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline")
+    (0: the cut is off the material); ``on_outline``: it lies along the part's outline;
+    ``along``: the indices of its ``units`` (its segments, an open Spline's spans) that lie
+    along the outline."""
+    __slots__ = ("geometry", "part", "segments", "band", "inside", "on_outline", "along",
+                 "units")
 
     def __init__(self, geometry: Geometry, part: Structure, segments: list,
-                 band: mf.CrossSection, inside: float = 0.0, on_outline: bool = False):
+                 band: mf.CrossSection, inside: float = 0.0, on_outline: bool = False,
+                 along: tuple = (), units: list | None = None):
         self.geometry = geometry
         self.part = part
         self.segments = segments
@@ -53,6 +57,11 @@ class Through(Compared):
         # True: it runs along the part's outline (a hole's included) from end to end, the
         # material on one side only: it adds nothing (not drawn, W0522)
         self.on_outline = on_outline
+        # the segments (indices into ``segments``) that each lie along the outline: each adds
+        # nothing (not drawn, W0522), whatever the curve (a Polyline's first side, say)
+        self.along = along
+        # the pieces judged one by one: its segments, an open Spline's (Bezier's) by span
+        self.units = segments if units is None else units
 
 
 class Drawing(Compared):

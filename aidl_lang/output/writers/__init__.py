@@ -83,7 +83,11 @@ class Format:
 # (the larger of the parts and holes programs, not rounded up), so that a writer is refused
 # only when it is sure to end past the deadline: the estimate twice over refused the DXF of a
 # perforated sheet of 50,000 holes (15.5 s for a writer of 2.4 s) that fits the 15 s budget; on
-# a busy machine a writer may end past the deadline by about its own time (issue 74).
+# a busy machine a writer may end past the deadline by about its own time (issue 74).  The
+# machine formats (G-code, LightBurn, HP-GL) likewise: the largest of the parts and holes
+# programs' figures at N = 500 and 2,000 (50-116 us), rounded up to 120-150 us; 300-600 us
+# (4 to 23 times the measure, 17 to 37 on a grid of slits: 61,000 lines) refused the G-code
+# of a 100 x 100 grid of slits, a writer of 1.0 s, as 18.9 s past the budget (issue 83).
 FORMATS: dict[str, Format] = {
     ".svg": Format("svg", "write", "image/svg+xml", "vector drawing: laser software, browsers",
                    text=True, cut=True, empty=True, per_item=15e-6),
@@ -106,18 +110,18 @@ FORMATS: dict[str, Format] = {
                    assembled=True, per_vertex=60e-6),
     ".gcode": Format("gcode", "write", "text/x.gcode",
                      "G-code (GRBL) for a laser, router or plotter (--machine)",
-                     text=True, cut=True, per_item=300e-6),
+                     text=True, cut=True, per_item=150e-6),
     ".nc": Format("gcode", "write", "text/x.gcode", "G-code (GRBL), as .gcode",
-                  text=True, cut=True, per_item=300e-6),
+                  text=True, cut=True, per_item=150e-6),
     ".lbrn2": Format("lightburn", "write", "application/x-lightburn",
                      "LightBurn project: a layer per operation", text=True, cut=True,
-                     per_item=200e-6),
+                     per_item=120e-6),
     ".plt": Format("hpgl", "write", "application/vnd.hp-hpgl",
                    "HPGL for vinyl cutters and pen plotters", text=True, cut=True,
-                   per_item=600e-6),
+                   per_item=150e-6),
     ".hpgl": Format("hpgl", "write", "application/vnd.hp-hpgl",
                     "HPGL for vinyl cutters and pen plotters (.plt)", text=True, cut=True,
-                    per_item=600e-6),
+                    per_item=150e-6),
 }
 # the formats a cutter reads (and their preview): written with the kerf offset applied; STL,
 # 3MF, STEP and GLB are the designed solid and never offset
