@@ -25,7 +25,7 @@ from pathlib import Path
 
 from . import ast as A
 from .cache import cache_dir, read_checked, write_checked
-from .diagnostics import DiagnosticSink, Label, Span
+from .diagnostics import DiagnosticSink, Label, Span, as_lf
 from .memory import gc_paused
 
 # a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
@@ -1276,6 +1276,9 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
 def _parse_text(source: str, path: str, sink: DiagnosticSink):
     """The parse with error recovery: ``(program, masked text)`` (text ``None`` when
     nesting was refused)."""
+    # a lone CR ends a line as LF does (diagnostics.LINE_BREAK: as an editor shows it), a `#`
+    # comment with it; offsets, lines and columns are the same in both texts
+    source = as_lf(source)
     sink.sources[path] = source
     if "\x00" in source:
         source = source.replace("\x00", " ")
@@ -1335,7 +1338,7 @@ def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     try:
-        node = _run_lalr(text, "expr")
+        node = _run_lalr(as_lf(text), "expr")
     finally:
         _STATE.builder = prev
     if builder.failed:
