@@ -14,13 +14,11 @@ only: applied, the document came out twice.
 from __future__ import annotations
 
 import re
-import sys
 
 import pytest
-import pytest_lsp
 from hypothesis import HealthCheck, given, settings, strategies as st
 from lsprotocol import types as T
-from pytest_lsp import ClientServerConfig, LanguageClient
+from pytest_lsp import LanguageClient
 
 import aidl_lang
 from aidl_lang.diagnostics import LINE_BREAK, as_lf, split_lines
@@ -144,17 +142,11 @@ def test_any_line_breaks_compile_format_and_lsp_format_as_lf(src):
 
 
 # ------------------------------------------------------------------ a real server
-@pytest_lsp.fixture(config=ClientServerConfig(
-    server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio"]))
-async def client(lsp_client: LanguageClient):
-    await lsp_client.initialize_session(T.InitializeParams(
-        capabilities=pytest_lsp.client_capabilities("visual-studio-code"),
-        initialization_options={"debounce": 0}))
-    yield
-    await lsp_client.shutdown_session()
+# the server of test_lsp_editing: stdio as vscode-languageclient starts it, no debounce
+from test_lsp_editing import client  # noqa: E402,F401
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_server_formatting_and_symbols_of_cr_and_mixed_documents(client: LanguageClient,
                                                                        tmp_path):
     docs = {

@@ -13,9 +13,8 @@ import subprocess
 import sys
 
 import pytest
-import pytest_lsp
 from lsprotocol import types as T
-from pytest_lsp import ClientServerConfig, LanguageClient
+from pytest_lsp import LanguageClient
 
 from conftest import ROOT
 
@@ -67,16 +66,8 @@ def _column(text: str, line: int, character: int) -> int:
     return len(s) + 1
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(
-    server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio"]))
-async def client(lsp_client: LanguageClient):
-    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
-    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
-    await lsp_client.initialize_session(T.InitializeParams(
-        capabilities=pytest_lsp.client_capabilities("visual-studio-code"),
-        initialization_options={"debounce": 0}))
-    yield
-    await lsp_client.shutdown_session()
+# the server of test_lsp_editing: stdio as vscode-languageclient starts it, no debounce
+from test_lsp_editing import client  # noqa: E402,F401
 
 
 async def _published(client: LanguageClient, uri: str) -> list[T.Diagnostic]:
@@ -86,7 +77,7 @@ async def _published(client: LanguageClient, uri: str) -> list[T.Diagnostic]:
             return p.diagnostics
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_the_server_publishes_what_aidl_check_reports_for_every_program(client, tmp_path):
     assert len(PROGRAMS) >= 80
     redundant = tmp_path / "redundant.aidl"          # the W0401 beside them

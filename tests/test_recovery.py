@@ -10,13 +10,11 @@ structure after an unclosed `(`.
 """
 from __future__ import annotations
 
-import sys
 
 import pytest
-import pytest_lsp
 from hypothesis import HealthCheck, given, settings, strategies as st
 from lsprotocol import types as T
-from pytest_lsp import ClientServerConfig, LanguageClient
+from pytest_lsp import LanguageClient
 
 from aidl_lang import ast as A
 from aidl_lang.diagnostics import DiagnosticSink
@@ -110,16 +108,11 @@ def test_the_issue_s_cases(src, kept):
 
 
 # ------------------------------------------------------------------ a real server
-@pytest_lsp.fixture(config=ClientServerConfig(
-    server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio"]))
-async def client(lsp_client: LanguageClient):
-    await lsp_client.initialize_session(T.InitializeParams(
-        capabilities=pytest_lsp.client_capabilities("visual-studio-code")))
-    yield
-    await lsp_client.shutdown_session()
+# the server of test_lsp_editing: stdio as vscode-languageclient starts it, no debounce
+from test_lsp_editing import client  # noqa: E402,F401
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_the_server_outlines_every_structure_after_an_unclosed_paren(client, tmp_path):
     src = ("solid a {\n    r = Rectangle(center=(0, 0), width=10, height=5)\n}\n"
            "solid b {\n    c = Circle(center=(0, 0), radius=3\n}\n"
