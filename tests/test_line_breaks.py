@@ -153,6 +153,8 @@ async def test_server_formatting_and_symbols_of_cr_and_mixed_documents(client: L
         "cr.aidl": "x=1\ry=2 # c\rsolid s {\rbody = Rectangle(center=(0, 0), width=x, height=y)\r}\r",
         "mixed.aidl": "x=1 # c\ry=2\r\nsolid s {\nbody = Rectangle(center=(0, 0), width=x, height=y)\r}\n",
         "crlf.aidl": "x=1\r\ny=2\r\nsolid s {\r\nbody = Rectangle(center=(0, 0), width=x, height=y)\r\n}\r\n",
+        # no line break to a client (str.splitlines breaks at them: pygls did)
+        "ff.aidl": "x=1 # a\x0cb\u2028c\x85d\ny=2\nsolid s {\nbody = Rectangle(center=(0, 0), width=x, height=y)\n}\n",
     }
     for name, src in docs.items():
         uri = (tmp_path / name).as_uri()

@@ -23,6 +23,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import logging
+import re
 import traceback
 
 from lsprotocol import converters
@@ -31,6 +32,7 @@ from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInva
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
+from pygls.workspace import TextDocument
 
 from ...diagnostics import as_lf
 from ..fmt import newline_of
@@ -207,6 +209,8 @@ async def initialized(ls: LanguageServer, params: T.InitializedParams):
 @server.feature(T.INITIALIZE)
 @_safe()
 def initialize(ls: LanguageServer, params: T.InitializeParams):
+    # the workspace pygls has just made keeps each document as a _Document
+    ls.workspace._create_text_document = functools.partial(_Document.made_by, ls.workspace)
     opts = params.initialization_options
     if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
         _settings["debounce"] = max(0.0, float(opts["debounce"]))
@@ -225,6 +229,26 @@ async def shutdown(ls: LanguageServer, params):
     _pending.clear()
     if _analyzer is not None:
         _analyzer.close()
+
+
+class _Document(TextDocument):
+    """pygls' document with the lines a client counts, ended by CR LF, a lone CR or LF only
+    (:data:`aidl_lang.diagnostics.LINE_BREAK`): pygls splits with ``str.splitlines``, which
+    also breaks at a form feed, a vertical tab, U+001C-U+001E, U+0085, U+2028 and U+2029, so
+    an edit on a line after one of them (in a comment, in a string) landed a line late."""
+
+    @property
+    def lines(self) -> tuple[str, ...]:
+        return tuple(_LINE.findall(self.source))
+
+    @classmethod
+    def made_by(cls, workspace, doc_uri: str, source=None, version=None, language_id=None):
+        """What ``Workspace._create_text_document`` makes, as a :class:`_Document`."""
+        return cls(doc_uri, source=source, version=version, language_id=language_id,
+                   sync_kind=workspace._sync_kind, position_codec=workspace._position_codec)
+
+
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")     # a line with its break
 
 
 def _lines_as_lf(ls: LanguageServer, uri: str) -> None:
