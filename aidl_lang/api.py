@@ -35,6 +35,12 @@ from typing import Literal
 from .diagnostics import Diagnostic, DiagnosticSink
 from .limits import DEFAULT_BUDGET, Budget, now
 
+# `aidl check`, the language server and MCP's `check` look for redundant constraints (W0401)
+# for at most this long, in blocks of at most this many rows sharing unknowns (`aidl check
+# --dof` looks without these bounds; docs/solver.md, section 6)
+REDUNDANCY_SECONDS = 1.0
+REDUNDANCY_ROWS = 1000
+
 __all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError"]
 
 
@@ -347,7 +353,8 @@ class Result:
                 self._sliding = sliding(solver)
         return self._sliding
 
-    def find_redundant(self, seconds: float | None = 1.0, max_rows: int | None = 1000,
+    def find_redundant(self, seconds: float | None = REDUNDANCY_SECONDS,
+                       max_rows: int | None = REDUNDANCY_ROWS,
                        deadline: float | None = None) -> list[Diagnostic]:
         """Look for constraints that others already imply and add each as a ``W0401`` warning
         to :attr:`diagnostics` (what ``aidl check`` does; docs/solver.md §6); returns those

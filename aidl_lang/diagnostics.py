@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 from collections import namedtuple
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -20,6 +21,29 @@ from .records import Compared
 # The package's own folder (a link to the repository's ``stdlib/`` in a checkout, the files in
 # a wheel), resolved: never ``site-packages/stdlib``, which would be another package's
 STDLIB = (Path(__file__).resolve().parent / "stdlib").resolve()
+
+
+# A line break, as the Language Server Protocol and every editor count lines: CR LF, a lone CR,
+# or LF (not Python's ``str.splitlines``, which also breaks at form feeds, vertical tabs and
+# U+2028).  The lexer, the line and column of every diagnostic, ``aidl fmt``, the language
+# server's positions and edits and the editors' grammars all end lines here: what an editor
+# shows as a line is a line to the compiler (a ``#`` comment ends at a lone CR too).
+LINE_BREAK = re.compile(r"\r\n|\r|\n")
+
+
+def as_lf(text: str) -> str:
+    """``text`` with each lone CR (a line break of its own) as LF: the same length, so every
+    offset, line and column holds, and every line break now ends in LF (a CR LF's CR stays,
+    blank space to the lexer).  What the parser, the pipeline and the language server read."""
+    return _LONE_CR.sub("\n", text) if "\r" in text else text
+
+
+_LONE_CR = re.compile(r"\r(?!\n)")
+
+
+def split_lines(text: str) -> list[str]:
+    """The lines of ``text`` without their breaks (:data:`LINE_BREAK`); ``""`` has one line."""
+    return LINE_BREAK.split(text)
 
 
 @functools.cache
@@ -213,7 +237,7 @@ def _nearest(name: str, cands: tuple, n: int) -> tuple:
 
 
 def _line_text(src: str, line: int) -> str:
-    lines = src.splitlines()
+    lines = split_lines(src)
     return lines[line - 1] if 0 < line <= len(lines) else ""
 
 

@@ -25,7 +25,7 @@ from pathlib import Path
 
 from . import ast as A
 from .cache import cache_dir, read_checked, write_checked
-from .diagnostics import DiagnosticSink, Label, Span
+from .diagnostics import DiagnosticSink, Label, Span, as_lf
 from .memory import gc_paused
 
 # a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
@@ -915,19 +915,45 @@ def _slash_hint(sink: DiagnosticSink, slashes: list, text: str, pos: int) -> Non
 
 
 def _blank_logical_line(text: str, pos: int) -> str:
-    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines."""
+    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines.
+
+    It goes on over the next lines while a ``(`` or ``[`` is open, as long as they read as its
+    continuation: indented deeper than its first line, or starting with a closing bracket.  A
+    bracket left open by a typo so blanks its own line, not the rest of the file."""
     start = text.rfind("\n", 0, pos) + 1
     end = text.find("\n", pos)
     end = len(text) if end < 0 else end
+    first = text[start:end]
+    indent = len(first) - len(first.lstrip(" \t"))
     # extend forward while () / [] are open
-    depth = sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[start:end])
+    depth = sum(1 if c in "([" else -1 if c in ")]" else 0 for c in first)
     while depth > 0 and end < len(text):
         nxt = text.find("\n", end + 1)
         nxt = len(text) if nxt < 0 else nxt
+        line = text[end + 1:nxt]
+        body = line.lstrip(" \t")
+        if body and len(line) - len(body) <= indent and body[0] not in ")]":
+            break
         depth += sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[end:nxt])
         end = nxt
-    seg = "".join(c if c in "{}\n" else " " for c in text[start:end])
+    seg = "\n".join(_blank_keeping_blocks(line) for line in text[start:end].split("\n"))
     return text[:start] + seg + text[end:]
+
+
+def _blank_keeping_blocks(line: str) -> str:
+    """``line`` blanked but for the braces that open or close a block: all of them when they
+    balance on the line (``if a { x = 1 }``), else a ``{`` that ends it and a ``}`` that starts
+    it (``solid a {``, ``} else {``); a brace typed inside an expression (``Circle(c{enter``)
+    would nest or close the blocks around it."""
+    if line.count("{") == line.count("}"):
+        return "".join(c if c in "{}" else " " for c in line)
+    body = line.strip(" \t\r")
+    out = [" "] * len(line)
+    if body.startswith("}"):
+        out[line.index("}")] = "}"
+    if body.endswith("{"):
+        out[line.rindex("{")] = "{"
+    return "".join(out)
 
 
 def _expected_text(expected) -> str:
@@ -1276,6 +1302,9 @@ def _parse(source: str, path: str, sink: DiagnosticSink) -> A.Program:
 def _parse_text(source: str, path: str, sink: DiagnosticSink):
     """The parse with error recovery: ``(program, masked text)`` (text ``None`` when
     nesting was refused)."""
+    # a lone CR ends a line as LF does (diagnostics.LINE_BREAK: as an editor shows it), a `#`
+    # comment with it; offsets, lines and columns are the same in both texts
+    source = as_lf(source)
     sink.sources[path] = source
     if "\x00" in source:
         source = source.replace("\x00", " ")
@@ -1301,25 +1330,13 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
     _tables()
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
-    seen: set[int] = set()
     try:
-        for _attempt in range(MAX_ERRORS + 1):
-            builder.failed.clear()
-            try:
-                stmts = _run_lalr(text, "start")
-                break
-            except (UnexpectedToken, UnexpectedCharacters) as e:
-                pos = _error_pos(e, text)
-                if pos in seen or len(seen) >= MAX_ERRORS:
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
-                seen.add(pos)
-                _report(e, text, path, pos, sink)
-                _slash_hint(sink, slashes, text, pos)
-                if pos >= len(text.rstrip()):
-                    return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
-                text = _blank_logical_line(text, pos)
-        else:
-            return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
+        stmts = _recovering_parse(text, path, sink, slashes, builder)
+        if stmts is None and not builder.failed:
+            # the line-by-line recovery gave up (a bracket never closed, a brace too many, an
+            # error it cannot step over): the statements of each top-level piece that parses
+            # on its own are kept, every error in the others was reported or is beyond them
+            stmts = _recover_by_pieces(masked, path, builder)
     finally:
         _STATE.builder = prev
     if builder.failed:
@@ -1329,13 +1346,98 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
     return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts), masked
 
 
+def _recovering_parse(text: str, path: str, sink: DiagnosticSink, slashes: list,
+                      builder: "_Builder") -> list | None:
+    """The statements of ``text``, each syntax error reported to ``sink`` and its logical
+    line blanked before the next try (:func:`_blank_logical_line`); None when it gives up: an
+    error where one was already, at the end of the text, or more than :data:`MAX_ERRORS`."""
+    seen: set[int] = set()
+    for _attempt in range(MAX_ERRORS + 1):
+        builder.failed.clear()
+        try:
+            return _run_lalr(text, "start")
+        except (UnexpectedToken, UnexpectedCharacters) as e:
+            pos = _error_pos(e, text)
+            if pos in seen or len(seen) >= MAX_ERRORS:
+                return None
+            seen.add(pos)
+            _report(e, text, path, pos, sink)
+            _slash_hint(sink, slashes, text, pos)
+            if pos >= len(text.rstrip()):
+                return None
+            text = _blank_logical_line(text, pos)
+    return None
+
+
+# a line that starts a top-level declaration whatever the braces before it say: `solid name {`,
+# `def name(`, `name name(` (a template's short form), `param`, `import`, `units`
+_DECLARATION = re.compile(r"(?:[A-Za-z_]\w*[ \t]+[A-Za-z_]\w*[ \t]*[({]|(?:def|param|import|units)\b)")
+_NOT_CODE = re.compile(r"#[^\n]*|/\*(?:.|\n)*?(?:\*/|\Z)")
+
+
+def _top_level_pieces(text: str) -> list[tuple[int, int]]:
+    """``(start, end)`` offsets of what seem to be the top-level statements of ``text`` (masked,
+    LF line breaks): a piece starts at a line that starts with a name at column 0 when every
+    bracket before it is closed, or that starts a declaration (:data:`_DECLARATION`) whatever
+    they are: a bracket or brace left open by a syntax error does not swallow what follows."""
+    bare = _NOT_CODE.sub(lambda m: re.sub(r"[^\n]", " ", m.group()),
+                         _STRINGS.sub(lambda m: " " * len(m.group()), text))
+    starts, depth, pos = [], 0, 0
+    for line in bare.split("\n"):
+        if line[:1].isalpha() or line[:1] == "_":
+            if depth <= 0 or _DECLARATION.match(line):
+                starts.append(pos)
+                depth = 0
+        depth += sum(map(_BRACKET_STEP.__getitem__, _ANY_BRACKET.findall(line)))
+        pos += len(line) + 1
+    starts.append(len(text))
+    return [(a, b) for a, b in zip(starts, starts[1:]) if text[a:b].strip()]
+
+
+def _recover_by_pieces(text: str, path: str, builder: "_Builder") -> list:
+    """The statements of every top-level piece of ``text`` (:func:`_top_level_pieces`) that
+    parses on its own, with the line recovery of :func:`_recovering_parse` (its errors are not
+    reported again), in order.  Each piece is parsed after a blank of its own length (spaces,
+    then its line breaks), so its spans are those of ``text``."""
+    stmts: list = []
+    for a, b in _top_level_pieces(text):
+        lines = text.count("\n", 0, a)
+        piece = " " * (a - lines) + "\n" * lines + text[a:b]
+        got = _recovering_parse(piece, path, DiagnosticSink(), [], builder)
+        if got is None and not builder.failed:
+            # a `(` or `[` never closed swallows the piece up to its end, where the error is
+            # found: its own line blanked, the rest of the piece parses
+            for at in reversed(_unclosed(piece)):
+                piece = _blank_logical_line(piece, at)
+            got = _recovering_parse(piece, path, DiagnosticSink(), [], builder)
+        if got is not None and not builder.failed:
+            stmts.extend(got)
+        builder.failed.clear()
+    return stmts
+
+
+def _unclosed(text: str) -> list[int]:
+    """The offsets of the ``(`` and ``[`` of ``text`` (masked) that nothing closes, strings and
+    comments aside."""
+    bare = _NOT_CODE.sub(lambda m: " " * len(m.group()),
+                         _STRINGS.sub(lambda m: " " * len(m.group()), text))
+    stack: list[int] = []
+    for m in _ANY_BRACKET.finditer(bare):
+        c = m.group()
+        if c in "([":
+            stack.append(m.start())
+        elif c in ")]" and stack:
+            stack.pop()
+    return stack
+
+
 def parse_expression(text: str, path: str, sink: DiagnosticSink) -> A.Node:
     """Parse one expression (``--set`` values); raises :class:`ParseError` when it does not parse
     (an error inside an f-string is also reported to ``sink``)."""
     builder = _Builder(path, sink)
     prev, _STATE.builder = getattr(_STATE, "builder", None), builder
     try:
-        node = _run_lalr(text, "expr")
+        node = _run_lalr(as_lf(text), "expr")
     finally:
         _STATE.builder = prev
     if builder.failed:

@@ -14,7 +14,7 @@ import warnings
 import numpy as np
 
 from .records import Compared
-from .diagnostics import Diagnostic, DiagnosticSink, Label, in_stdlib, shown_path
+from .diagnostics import Diagnostic, DiagnosticSink, Label, as_lf, in_stdlib, shown_path
 from .interp import Interpreter
 from .memory import gc_paused
 from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
@@ -59,6 +59,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
     sink = DiagnosticSink()
     if source.startswith("\ufeff"):       # a UTF-8 byte order mark is not part of the program
         source = source[1:]
+    source = as_lf(source)               # a lone CR is a line break (diagnostics.LINE_BREAK)
     try:
         res = run_deep(lambda: _compile(sink, source, path, overrides, do_solve, min_wall,
                                         budget))

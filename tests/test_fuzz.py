@@ -8,7 +8,7 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from aidl_lang.codes import CODES
-from aidl_lang.diagnostics import render_text
+from aidl_lang.diagnostics import LINE_BREAK, render_text, split_lines
 from aidl_lang.pipeline import compile_source
 from aidl_lang.output import render_model, to_svg
 
@@ -32,7 +32,7 @@ FUZZ = settings(deadline=None, max_examples=150, derandomize=True, database=None
 def check_result(src: str, path: str):
     """compile_source answers without raising, and its diagnostics are well formed."""
     c = compile_source(src, path)
-    n_lines = src.count("\n") + 1
+    n_lines = len(split_lines(src))          # CR LF, CR and LF each end a line
     for d in c.sink.items:
         assert d.code in CODES and d.code != "E0900", d.code
         assert d.severity in ("error", "warning", "note")
@@ -84,6 +84,35 @@ def mutated_examples(draw):
 def test_mutated_examples_never_raise(case):
     path, src = case
     check_result(src, path)
+
+
+@st.composite
+def line_break_mutations(draw):
+    """A mutated example whose line breaks are turned, at random, into CR or CR LF, and whose
+    lines get a `#` comment ending at a lone CR with code after it (issue 83)."""
+    path, src = draw(mutated_examples())
+    lines = src.split("\n")
+    for _ in range(draw(st.integers(1, 6))):
+        k = draw(st.integers(0, len(lines) - 1))
+        if draw(st.booleans()):        # a comment, a CR, then the next line's code
+            lines[k] = lines[k] + "  # " + draw(st.sampled_from(["note", "x = (", "{", "'"]))
+    breaks = [draw(st.sampled_from(["\n", "\r", "\r\n"])) for _ in lines[1:]]
+    out = lines[0]
+    for br, line in zip(breaks, lines[1:]):
+        out += br + line
+    return path, out
+
+
+@settings(FUZZ, max_examples=40)
+@given(line_break_mutations())
+def test_mutated_examples_with_cr_line_breaks_compile_as_their_lf_version(case):
+    """Never raises, and the diagnostics (code, line, column) are the LF version's: a lone CR
+    in a comment or between statements is a line break, as every editor shows it."""
+    path, src = case
+    got = check_result(src, path)
+    ref = compile_source(LINE_BREAK.sub("\n", src), path)
+    where = [(d.code, d.span and (d.span.line, d.span.col)) for d in got.sink.items]
+    assert where == [(d.code, d.span and (d.span.line, d.span.col)) for d in ref.sink.items]
 
 
 # ------------------------------------------------------------------ random text

@@ -568,6 +568,34 @@ def test_after_a_syntax_error_the_next_structure_is_still_found(parser, src, aft
     assert after in names, str(tree.root_node)
 
 
+def _statements_by_offset(node) -> list:
+    out = []
+    for c in node.named_children:
+        if c.type in TS_KIND:
+            out.append((c.type, c.start_byte, c.end_byte, _statements_by_offset(c)))
+        elif c.type in ("block", "structure_body"):
+            out.extend(_statements_by_offset(c))
+    return out
+
+
+@pytest.mark.parametrize("src", [
+    "x = 1 # note\ry = 2\nsolid s {\r    c = Circle(center=(0, 0), radius=y)\r}\r",
+    "x = 1 // note\ry = x // 2\r\nz = 'a'\r",
+    "x = f(1)\r/* old */ y = 2\r\nif x > 0 { a = 1 }\r/* c */\relse { a = 2 }\r",
+])
+def test_a_lone_cr_ends_a_line_and_a_comment_as_lf_does(parser, src):
+    """A line break is CR LF, a lone CR or LF (issue 83): the scanner reads the text as it
+    reads its LF version (same bytes, so the same offsets), a `#` comment ending at the CR."""
+    from aidl_lang.diagnostics import as_lf
+    tree, ref = parser.parse(src.encode()), parser.parse(as_lf(src).encode())
+    assert not tree.root_node.has_error and not ref.root_node.has_error
+    got = _statements_by_offset(tree.root_node)
+    assert got == _statements_by_offset(ref.root_node) and len(got) >= 3
+    sink = DiagnosticSink()
+    prog = parse(src, "t.aidl", sink)
+    assert not sink.has_errors and [s.span.start for s in prog.stmts] == [g[1] for g in got]
+
+
 # ------------------------------------------------------------------ generated files, queries
 def test_generated_highlights_and_corpora_are_fresh(lang):
     assert (TS / "queries" / "highlights.scm").read_text(encoding="utf-8") == G.highlights_scm(), \

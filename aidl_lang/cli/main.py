@@ -91,11 +91,9 @@ def _read(path: str, as_json: bool) -> str | None:
         return None
 
 
-# plain `aidl check` looks for redundant constraints (W0401) for at most this long, in blocks
-# of at most this many rows sharing unknowns; `--dof` looks without these bounds
-# (docs/solver.md, section 6)
-REDUNDANCY_SECONDS = 1.0
-REDUNDANCY_ROWS = 1000
+# plain `aidl check` looks for redundant constraints (W0401) within these bounds, as the
+# language server does; `--dof` looks without them (docs/solver.md, section 6)
+from ..api import REDUNDANCY_ROWS, REDUNDANCY_SECONDS  # noqa: E402
 
 
 def _check_file(args, parser) -> None:

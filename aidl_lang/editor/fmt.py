@@ -25,7 +25,7 @@ import re
 from dataclasses import dataclass
 
 from .. import ast as A
-from ..diagnostics import DiagnosticSink
+from ..diagnostics import LINE_BREAK, DiagnosticSink
 from ..parser import _lex, mask_comments, parse
 
 INDENT = 4
@@ -117,17 +117,24 @@ def _space(prev: _Item, cur: _Item, prev_kind: str | None, in_parens: bool) -> s
     return " "
 
 
-def format_file_text(text: str, path: str = "<stdin>") -> str:
+def newline_of(text: str) -> str:
+    """The line ending ``aidl fmt`` writes for ``text``: its first line break's (CR LF, CR or
+    LF: :data:`aidl_lang.diagnostics.LINE_BREAK`), LF when it has none."""
+    m = LINE_BREAK.search(text)
+    return m.group() if m else "\n"
+
+
+def format_file_text(text: str, path: str = "<stdin>", newline: str | None = None) -> str:
     """:func:`format_source` for a file's whole text, keeping what the file had: a UTF-8 byte
-    order mark stays, and the line endings stay (CRLF, CR or LF, whichever comes first)."""
+    order mark stays, and every line ends as its first line does (CR LF, CR or LF:
+    :func:`newline_of`; ``newline`` given, as that says), so a file of mixed line endings
+    comes out with one kind.  The program is read with the line breaks the compiler reads
+    (``aidl check``'s: a lone CR ends a line, and a ``#`` comment)."""
     bom = text.startswith("\ufeff")
     if bom:
         text = text[1:]
-    ends = [i for i in (text.find("\r"), text.find("\n")) if i >= 0]
-    first = min(ends, default=-1)
-    newline = "\n"
-    if first >= 0 and text[first] == "\r":
-        newline = "\r\n" if text[first + 1:first + 2] == "\n" else "\r"
+    if newline is None:
+        newline = newline_of(text)
     out = format_source(text, path)
     if newline != "\n":
         out = out.replace("\n", newline)

@@ -25,7 +25,7 @@ from lsprotocol import types as T
 
 from ... import ast as A
 from ... import registry as R
-from ...diagnostics import DiagnosticSink, Span
+from ...diagnostics import DiagnosticSink, Span, as_lf
 from ...parser import _blank_logical_line, mask_comments, parse
 from . import plain
 from .worker import diagnostics_json
@@ -61,6 +61,7 @@ KIND_DOCS = {
 
 # ------------------------------------------------------------------ positions
 def _line_starts(src: str) -> list[int]:
+    src = as_lf(src)                # a lone CR ends a line (diagnostics.LINE_BREAK)
     starts = [0]
     for m in re.finditer("\n", src):
         starts.append(m.end())
@@ -73,6 +74,7 @@ def _u16len(s: str) -> int:
 
 def offset_at(src: str, line: int, character: int) -> int:
     """The string offset of an LSP position (0-based line, UTF-16 character), clamped."""
+    src = as_lf(src)
     starts = _line_starts(src)
     if line >= len(starts):
         return len(src)
@@ -89,6 +91,7 @@ def offset_at(src: str, line: int, character: int) -> int:
 
 def position_at(src: str, offset: int) -> T.Position:
     offset = max(0, min(offset, len(src)))
+    src = as_lf(src)                # a lone CR ends a line (diagnostics.LINE_BREAK)
     line = src.count("\n", 0, offset)
     s = src.rfind("\n", 0, offset) + 1
     return T.Position(line=line, character=_u16len(src[s:offset]))
@@ -739,12 +742,14 @@ def document_symbols(src: str, path: str = "doc.aidl") -> list[T.DocumentSymbol]
     return out
 
 
-def formatting(src: str, path: str = "doc.aidl") -> list[T.TextEdit]:
-    """One edit replacing the document with its ``aidl fmt`` layout; none if it has errors or
-    is already formatted."""
-    from ..fmt import FormatError, format_source
+def formatting(src: str, path: str = "doc.aidl", newline: str | None = None) -> list[T.TextEdit]:
+    """One edit replacing the document with its ``aidl fmt`` layout (:func:`.fmt.format_file_text`:
+    every line ending as the document's first, or ``newline``); none if it has errors or is
+    already formatted.  The edit's end is the document's end as a client counts lines (CR LF,
+    CR or LF), so applied it leaves exactly the formatted text."""
+    from ..fmt import FormatError, format_file_text
     try:
-        out = format_source(src, path)
+        out = format_file_text(src, path, newline)
     except FormatError:
         return []
     if out == src:

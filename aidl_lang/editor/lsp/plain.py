@@ -19,7 +19,7 @@ import os
 import re
 from pathlib import Path
 
-from ...diagnostics import Span, shown_path
+from ...diagnostics import Span, shown_path, split_lines
 
 _SEVERITY = {"error": 1, "warning": 2, "note": 3}
 
@@ -59,7 +59,7 @@ def span_range(src: str, sp: Span, lines: list[str] | None = None) -> dict:
     """The LSP range (a dict) of a :class:`Span` (1-based lines/columns, end column
     exclusive); never empty (an empty span covers one character)."""
     if lines is None:
-        lines = src.split("\n")
+        lines = split_lines(src)
 
     def at(line: int, col: int) -> tuple[int, int]:
         li = max(0, line - 1)
@@ -80,7 +80,7 @@ def diagnostic_json(src: str, path: str, d, uri: str | None = None,
     ``relatedInformation`` for the labels; suggested fixes go in ``data.fixes``
     (:func:`fix_edits`)."""
     if lines is None:
-        lines = src.split("\n")
+        lines = split_lines(src)
     msg = d.message
     if d.hint:
         msg += f"\nhint: {d.hint}"
@@ -112,7 +112,7 @@ def diagnostic_json(src: str, path: str, d, uri: str | None = None,
 
 def sink_json(src: str, path: str, items, uri: str | None = None) -> list[dict]:
     """Every diagnostic of a sink's ``items`` as LSP dicts (:func:`diagnostic_json`)."""
-    lines = src.split("\n")
+    lines = split_lines(src)
     return [diagnostic_json(src, path, d, uri, lines) for d in items]
 
 

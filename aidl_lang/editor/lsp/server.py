@@ -23,6 +23,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import logging
+import re
 import traceback
 
 from lsprotocol import converters
@@ -31,7 +32,10 @@ from pygls.exceptions import JsonRpcException, JsonRpcInternalError, JsonRpcInva
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
+from pygls.workspace import TextDocument
 
+from ...diagnostics import as_lf
+from ..fmt import newline_of
 from . import analysis, edits, features, preview, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
 
@@ -85,6 +89,7 @@ _settings = {"debounce": DEBOUNCE}
 _analyzer: Analyzer | None = None
 _closing = False          # set by shutdown: pending analyses end quietly
 _early: dict = {}          # uri -> (version, text, worker answer) from :mod:`.boot`
+_newline: dict[str, str] = {}   # uri -> the line ending the client's text has first
 
 
 def _get_analyzer() -> Analyzer:
@@ -204,6 +209,8 @@ async def initialized(ls: LanguageServer, params: T.InitializedParams):
 @server.feature(T.INITIALIZE)
 @_safe()
 def initialize(ls: LanguageServer, params: T.InitializeParams):
+    # the workspace pygls has just made keeps each document as a _Document
+    ls.workspace._create_text_document = functools.partial(_Document.made_by, ls.workspace)
     opts = params.initialization_options
     if isinstance(opts, dict) and isinstance(opts.get("debounce"), (int, float)):
         _settings["debounce"] = max(0.0, float(opts["debounce"]))
@@ -224,10 +231,43 @@ async def shutdown(ls: LanguageServer, params):
         _analyzer.close()
 
 
+class _Document(TextDocument):
+    """pygls' document with the lines a client counts, ended by CR LF, a lone CR or LF only
+    (:data:`aidl_lang.diagnostics.LINE_BREAK`): pygls splits with ``str.splitlines``, which
+    also breaks at a form feed, a vertical tab, U+001C-U+001E, U+0085, U+2028 and U+2029, so
+    an edit on a line after one of them (in a comment, in a string) landed a line late."""
+
+    @property
+    def lines(self) -> tuple[str, ...]:
+        return tuple(_LINE.findall(self.source))
+
+    @classmethod
+    def made_by(cls, workspace, doc_uri: str, source=None, version=None, language_id=None):
+        """What ``Workspace._create_text_document`` makes, as a :class:`_Document`."""
+        return cls(doc_uri, source=source, version=version, language_id=language_id,
+                   sync_kind=workspace._sync_kind, position_codec=workspace._position_codec)
+
+
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")     # a line with its break
+
+
+def _lines_as_lf(ls: LanguageServer, uri: str) -> None:
+    """After pygls applied an open or a change: the document as the server reads it has each
+    lone CR as LF (:func:`aidl_lang.diagnostics.as_lf`: the same lines, columns and offsets as
+    the client's, whose lines end at CR LF, CR or LF), so every feature counts lines as the
+    client does; the line ending its formatting writes is kept (the client's first)."""
+    doc = ls.workspace.get_text_document(uri)
+    text = doc.source
+    _newline[uri] = newline_of(text)
+    if "\r" in text:
+        doc._source = as_lf(text)
+
+
 @server.feature(T.TEXT_DOCUMENT_DID_OPEN)
 @_safe()
 def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
     d = params.text_document
+    _lines_as_lf(ls, d.uri)
     early = _early.pop(d.uri, None)           # analysed by the start-up front already
     if early is not None and early[0] == d.version and early[1] == d.text:
         answer = early[2]
@@ -244,6 +284,7 @@ def did_open(ls: LanguageServer, params: T.DidOpenTextDocumentParams):
 @server.feature(T.TEXT_DOCUMENT_DID_CHANGE)
 @_safe()
 def did_change(ls: LanguageServer, params: T.DidChangeTextDocumentParams):
+    _lines_as_lf(ls, params.text_document.uri)
     _get_analyzer().editing = True         # a warm spare worker is worth its start from now on
     _schedule(ls, params.text_document.uri, _settings["debounce"])
 
@@ -261,6 +302,7 @@ def did_close(ls: LanguageServer, params: T.DidCloseTextDocumentParams):
     if old is not None:
         old.cancel()
     _published.pop(params.text_document.uri, None)
+    _newline.pop(params.text_document.uri, None)
     features.forget(params.text_document.uri)
     preview.SERVER_GOOD.forget(params.text_document.uri)
     if _analyzer is not None:
@@ -341,7 +383,7 @@ def _too_large(doc, what: str) -> None:
 def formatting(ls: LanguageServer, params: T.DocumentFormattingParams):
     doc, path = _doc(ls, params.text_document.uri)
     _too_large(doc, "formatting")
-    return analysis.formatting(doc.source, path)
+    return analysis.formatting(doc.source, path, _newline.get(params.text_document.uri))
 
 
 @server.feature(T.TEXT_DOCUMENT_CODE_ACTION,

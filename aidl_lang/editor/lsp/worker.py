@@ -34,7 +34,9 @@ from ...limits import DEFAULT_BUDGET, wall_limit
 def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,
                      values: dict[str, str] | None = None, extra: dict | None = None) -> list[dict]:
     """The pipeline's diagnostics for ``src`` (a file at ``path``) as LSP ``Diagnostic`` dicts
-    (:mod:`.plain`; no lsprotocol import, so the worker process starts without it).
+    (:mod:`.plain`; no lsprotocol import, so the worker process starts without it): those
+    ``aidl check`` reports, the redundant constraints (``W0401``) included, looked for within
+    the same bounds (:data:`aidl_lang.api.REDUNDANCY_SECONDS`, ``REDUNDANCY_ROWS``).
 
     ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
     another file (an import) are put on line 1 with their location in the message.  When the
@@ -45,10 +47,13 @@ def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = 
     """
     from ...pipeline import compile_source
     res = compile_source(src, path, do_solve=solve)
-    if res.ok and res.solve is not None and res.solve.converged and (
-            values is not None or extra is not None):
+    if res.ok and res.solve is not None:
         from ...api import Result
         result = Result(res, path, src)
+        # the redundant constraints (W0401) `aidl check` reports, within its bounds and budget
+        result.find_redundant(deadline=res.deadline.at if res.deadline is not None else None)
+    if res.ok and res.solve is not None and res.solve.converged and (
+            values is not None or extra is not None):
         if values is not None:
             values.update((v.name, v.text()) for v in result.values)
         if extra is not None:

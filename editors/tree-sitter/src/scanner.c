@@ -161,8 +161,12 @@ static bool is_prose(const int32_t *rest, int n) {
   return false;
 }
 
+/* A line ends at CR LF, a lone CR or LF, as editors and the LSP count lines (LINE_BREAK in
+ * aidl_lang/diagnostics.py): a `#` comment ends at a lone CR too. */
+static bool is_line_break(int32_t c) { return c == '\n' || c == '\r'; }
+
 static void to_line_end(TSLexer *lexer) {
-  while (!lexer->eof(lexer) && lexer->lookahead != '\n') advance(lexer);
+  while (!lexer->eof(lexer) && !is_line_break(lexer->lookahead)) advance(lexer);
 }
 
 /* The text of a string up to its closing quote, a `\` escape or the end of the line; of an
@@ -172,7 +176,7 @@ static bool scan_string_content(TSLexer *lexer, int32_t quote, bool braces,
   bool any = false;
   for (;;) {
     int32_t c = lexer->lookahead;
-    if (lexer->eof(lexer) || c == quote || c == '\n' || c == '\\') break;
+    if (lexer->eof(lexer) || c == quote || is_line_break(c) || c == '\\') break;
     if (c == '{' && braces) {
       lexer->mark_end(lexer);
       advance(lexer);
@@ -239,10 +243,10 @@ bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
   bool crossed = false; /* a line break skipped before the next token */
   for (;;) {
     int32_t c = lexer->lookahead;
-    if (c == '\n') {
+    if (is_line_break(c)) {
       crossed = true;
       skip(lexer);
-    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == 0xa0 ||
+    } else if (c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == 0xa0 ||
                c == 0xfeff) {
       skip(lexer);
     } else {
@@ -280,11 +284,10 @@ bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
         /* a block comment first on a line after a statement: when code follows it on that
          * line, the statement before ended (the empty NEWLINE before the comment), unless
          * the code is `else`/`elif`, which continues an `if` */
-        while (lexer->lookahead == ' ' || lexer->lookahead == '\t' || lexer->lookahead == '\r' ||
-               lexer->lookahead == '\f')
+        while (lexer->lookahead == ' ' || lexer->lookahead == '\t' || lexer->lookahead == '\f')
           advance(lexer);
         int32_t c = lexer->lookahead;
-        if (!(lexer->eof(lexer) || c == '\n' || c == '#' || c == '/' || c == 'e')) {
+        if (!(lexer->eof(lexer) || is_line_break(c) || c == '#' || c == '/' || c == 'e')) {
           lexer->result_symbol = NEWLINE;
           return true;
         }
@@ -306,7 +309,7 @@ bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
       if (valid_symbols[FLOOR_DIV] && !newline) {
         int32_t rest[REST_MAX];
         int n = 0;
-        while (!lexer->eof(lexer) && lexer->lookahead != '\n') {
+        while (!lexer->eof(lexer) && !is_line_break(lexer->lookahead)) {
           if (n < REST_MAX) rest[n++] = lexer->lookahead;
           advance(lexer);
         }
