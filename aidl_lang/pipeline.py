@@ -415,10 +415,23 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
         return
     from .geometry.assertions import describe, failed
     for a, bad in failed(model, held_only):
-        sink.error("E0405", describe(a, bad), a.span,
-                   hint="an `assert` states what must be true of the design; change the values "
-                        "or constraints so that it holds (it is not a constraint: the solver "
-                        "does not try to satisfy it)")
+        sink.add(Diagnostic("E0405", describe(a, bad), a.span, "error",
+                            hint="an `assert` states what must be true of the design; change "
+                                 "the values or constraints so that it holds (it is not a "
+                                 "constraint: the solver does not try to satisfy it)"),
+                 calls=instance_calls(a.owner))
+
+
+def instance_calls(s) -> list:
+    """The template calls (outermost first: ``("`name`", call span)``) that made structure
+    ``s`` or the instance it is in: where its diagnostics in a template's file are reported
+    (:func:`aidl_lang.diagnostics.at_call_site`)."""
+    out = []
+    while s is not None:
+        if s.template:
+            out.append((f"`{s.template}`", s.span))
+        s = s.parent
+    return out[::-1]
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:
