@@ -231,8 +231,8 @@ def at_call_site(d: Diagnostic, calls, main: str) -> Diagnostic:
     span; each call between (inside a template of another file) is a note ("inside
     `gear_train`: `spur_gear` is called here"), and the original place the last note
     ("inside `spur_gear`, at std/gears.aidl:17:5"), before ``d``'s own labels.  A fix in
-    another file is dropped (the user edits the call), and a hint's "line N" names its
-    file.  Unchanged when ``calls`` does not start in ``main``.  Returns ``d``."""
+    another file is dropped (the user edits the call), and a "line N" in the message or
+    the hint names its file.  Unchanged when ``calls`` does not start in ``main``.  Returns ``d``."""
     calls = [c for c in calls if c[1] is not None]
     if not calls or calls[0][1].file != main or d.span is None:
         return d
@@ -247,11 +247,19 @@ def at_call_site(d: Diagnostic, calls, main: str) -> Diagnostic:
     d.span = calls[0][1]
     if d.fix is not None and d.fix.span is not None and d.fix.span.file != main:
         d.fix = None
-    if d.hint:
-        import re
-        shown = shown_path(sp.file)
-        d.hint = re.sub(r"\b(line \d+)\b(?! of )", lambda m: f"{m.group(1)} of {shown}", d.hint)
+    d.message, d.hint = _lines_of(d.message, sp.file), _lines_of(d.hint, sp.file)
     return d
+
+
+def _lines_of(text: str | None, file: str) -> str | None:
+    """``text`` with each "line N" that names no file said to be of ``file`` ("line 31 of
+    std/gears.aidl"): a diagnostic moved to the call names lines of the template."""
+    if not text or "line " not in text:
+        return text
+    import re
+    shown = shown_path(file)
+    return re.sub(r"(?<!\.aidl )\b(line \d+)\b(?! of )", lambda m: f"{m.group(1)} of {shown}",
+                  text)
 
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:
