@@ -209,12 +209,12 @@ class DiagnosticSink:
         return d
 
     def error(self, code: str, message: str, span: Span | None, hint: str | None = None,
-              **kw) -> Diagnostic:
-        return self.add(Diagnostic(code, message, span, "error", hint, **kw))
+              calls=None, **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "error", hint, **kw), calls)
 
     def warning(self, code: str, message: str, span: Span | None, hint: str | None = None,
-                **kw) -> Diagnostic:
-        return self.add(Diagnostic(code, message, span, "warning", hint, **kw))
+                calls=None, **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "warning", hint, **kw), calls)
 
     @property
     def has_errors(self) -> bool:

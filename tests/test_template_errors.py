@@ -229,6 +229,21 @@ def test_two_calls_of_one_template_each_named(tmp_path):
                    (5, "30 mm <= 20 mm is false", 4), (6, "40 mm <= 20 mm is false", 4)]
 
 
+def test_a_conflict_inside_the_second_call_is_at_the_second_call(tmp_path):
+    """A conflict found by the solver inside a template's instance is at that instance's
+    call (by its structure), not at the template's first call."""
+    (tmp_path / "lib.aidl").write_text("def bar(w=10 mm) -> solid {\n"
+                                       "    body = Rectangle(center=(0, 0), width=10, height=5 mm)\n"
+                                       "    Length(body.top, w)\n}\n")
+    src = 'import "lib.aidl"\nsolid top {\n    a = bar(w=10 mm)\n    b = bar(w=12 mm)\n}\n'
+    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    (e,) = r.errors
+    assert e.code == "E0401" and "`top.b`" in e.message and e.span.line == 4
+    assert [(lab.span.line, lab.message.split(",")[0]) for lab in e.labels[:1]] == \
+        [(3, "inside `bar`")]
+    assert "line 3 of " in e.hint and "line 2 of " in e.hint
+
+
 def test_a_line_named_inside_a_template_says_its_file(tmp_path):
     """A message or hint naming a line of the template names the file too, and a fix located
     in the template is left out (the user edits the call)."""
