@@ -178,6 +178,11 @@ class DiagnosticSink:
                    for c in self.callers):
             self.callers.append((span.file, span.start, end, tuple(calls)))
 
+    def follow(self, other: "DiagnosticSink") -> None:
+        """Place diagnostics as ``other`` does (its program's file and the template calls it
+        recorded): a later stage's own sink, such as a preview's deferred shape checks."""
+        self.main, self.callers = other.main, other.callers
+
     def callers_of(self, span: Span) -> tuple:
         """The calls (outermost first) that reach ``span`` in another file: the innermost
         recorded template text holding it, else its file's import; () when none."""
