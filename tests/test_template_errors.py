@@ -8,17 +8,16 @@ between and the template's own line kept as notes: in the API's diagnostics, `ai
 refuses; a law nests templates of imported files at generated depths and lines."""
 import json
 import re
-import sys
 
 import pytest
-import pytest_lsp
 from hypothesis import given, settings, strategies as st
 from lsprotocol import types as T
-from pytest_lsp import ClientServerConfig, LanguageClient
+from pytest_lsp import LanguageClient
 
 import aidl_lang
 from aidl_lang.diagnostics import STDLIB
 from aidl_lang.mcp import tools as M
+from test_lsp import _open, client  # noqa: F401 - the language server over stdio (pytest-lsp)
 
 # the issue's case: five lines, the template's assert on gears.aidl's own line
 ISSUE = """import "std/gears.aidl"
@@ -213,16 +212,21 @@ def test_law_nested_templates_report_at_the_outermost_call(tmp_path_factory, dep
     assert not any(lab.primary for lab in e.labels)
 
 
+def _with_lib(folder, lib: str, src: str, name: str = "lib.aidl"):
+    """``src`` compiled as ``folder/m.aidl`` beside ``lib`` written as ``folder/name``."""
+    (folder / name).write_text(lib)
+    return aidl_lang.compile(source=src, path=folder / "m.aidl")
+
+
 def test_two_calls_of_one_template_each_named(tmp_path):
     """The same template called twice, failing twice (once while interpreting, once after
     solving): one error at each call, not one at the template's line."""
-    (tmp_path / "lib.aidl").write_text("def post(w=10 mm, n=1) -> solid {\n"
-                                       "    body = Rectangle(center=(0, 0), width=w, height=5 mm)\n"
-                                       '    assert n >= 1, "at least one"\n'
-                                       '    assert body.width <= 20 mm, "too wide"\n}\n')
-    src = ('import "lib.aidl"\nsolid top {\n    a = post(n=0)\n    b = post(n=-1)\n'
-           "    c = post(w=30 mm)\n    d = post(w=40 mm)\n}\n")
-    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    r = _with_lib(tmp_path, "def post(w=10 mm, n=1) -> solid {\n"
+                  "    body = Rectangle(center=(0, 0), width=w, height=5 mm)\n"
+                  '    assert n >= 1, "at least one"\n'
+                  '    assert body.width <= 20 mm, "too wide"\n}\n',
+                  'import "lib.aidl"\nsolid top {\n    a = post(n=0)\n    b = post(n=-1)\n'
+                  "    c = post(w=30 mm)\n    d = post(w=40 mm)\n}\n")
     got = sorted((d.span.line, d.message.split(": ")[-1], d.labels[-1].span.line)
                  for d in r.errors)
     assert got == [(3, "0 >= 1 is false", 3), (4, "-1 >= 1 is false", 3),
@@ -232,11 +236,10 @@ def test_two_calls_of_one_template_each_named(tmp_path):
 def test_a_conflict_inside_the_second_call_is_at_the_second_call(tmp_path):
     """A conflict found by the solver inside a template's instance is at that instance's
     call (by its structure), not at the template's first call."""
-    (tmp_path / "lib.aidl").write_text("def bar(w=10 mm) -> solid {\n"
-                                       "    body = Rectangle(center=(0, 0), width=10, height=5 mm)\n"
-                                       "    Length(body.top, w)\n}\n")
-    src = 'import "lib.aidl"\nsolid top {\n    a = bar(w=10 mm)\n    b = bar(w=12 mm)\n}\n'
-    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    r = _with_lib(tmp_path, "def bar(w=10 mm) -> solid {\n"
+                  "    body = Rectangle(center=(0, 0), width=10, height=5 mm)\n"
+                  "    Length(body.top, w)\n}\n",
+                  'import "lib.aidl"\nsolid top {\n    a = bar(w=10 mm)\n    b = bar(w=12 mm)\n}\n')
     (e,) = r.errors
     assert e.code == "E0401" and "`top.b`" in e.message and e.span.line == 4
     assert [(lab.span.line, lab.message.split(",")[0]) for lab in e.labels[:1]] == \
@@ -247,11 +250,9 @@ def test_a_conflict_inside_the_second_call_is_at_the_second_call(tmp_path):
 def test_a_line_named_inside_a_template_says_its_file(tmp_path):
     """A message or hint naming a line of the template names the file too, and a fix located
     in the template is left out (the user edits the call)."""
-    (tmp_path / "lib.aidl").write_text("# helpers\ndef post(h=10 mm) -> solid {\n"
-                                       "    body = Rectangle(center=(0, 0), width=w, height=h)\n"
-                                       "    w = 4 mm\n}\n")
-    src = 'import "lib.aidl"\nsolid top {\n    p = post()\n}\n'
-    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    r = _with_lib(tmp_path, "# helpers\ndef post(h=10 mm) -> solid {\n"
+                  "    body = Rectangle(center=(0, 0), width=w, height=h)\n    w = 4 mm\n}\n",
+                  'import "lib.aidl"\nsolid top {\n    p = post()\n}\n')
     (e,) = r.errors
     lib = str(tmp_path / "lib.aidl")
     assert e.code == "E0101" and e.span.line == 3 and e.fix is None
@@ -260,10 +261,10 @@ def test_a_line_named_inside_a_template_says_its_file(tmp_path):
 
 
 def test_an_imported_file_s_syntax_error_is_at_the_import(tmp_path):
-    (tmp_path / "broken.aidl").write_text("def bad() -> solid {\n"
-                                          "    body = Rectangle(center=(0, 0), width=, height=5)\n}\n")
-    src = '# a plate\nimport "broken.aidl"\nsolid top { body = Circle(center=(0, 0), radius=3) }\n'
-    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    r = _with_lib(tmp_path, "def bad() -> solid {\n"
+                  "    body = Rectangle(center=(0, 0), width=, height=5)\n}\n",
+                  '# a plate\nimport "broken.aidl"\nsolid top { body = Circle(center=(0, 0), radius=3) }\n',
+                  "broken.aidl")
     (e,) = r.errors
     assert e.code == "E0001" and (e.span.file, e.span.line) == (str(tmp_path / "m.aidl"), 2)
     (note,) = e.labels
@@ -272,17 +273,6 @@ def test_an_imported_file_s_syntax_error_is_at_the_import(tmp_path):
 
 
 # ------------------------------------------------------------------ the language server
-@pytest_lsp.fixture(config=ClientServerConfig(
-    server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
-async def client(lsp_client: LanguageClient):
-    lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
-    lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
-    await lsp_client.initialize_session(T.InitializeParams(
-        capabilities=pytest_lsp.client_capabilities("visual-studio-code")))
-    yield
-    await lsp_client.shutdown_session()
-
-
 async def _solved_diagnostics(client: LanguageClient, uri: str):
     """The diagnostics published for ``uri`` once they hold an error (the start-up's
     parse-and-check ones, empty here, come first)."""
@@ -305,9 +295,7 @@ async def test_language_server_puts_template_errors_on_the_call(client: Language
         src = ISSUE if k == 0 else _program(lib, name, args)
         p.write_text(src)
         uri = p.as_uri()
-        client.text_document_did_open(T.DidOpenTextDocumentParams(
-            text_document=T.TextDocumentItem(uri=uri, language_id="aidl-cad", version=1,
-                                             text=src)))
+        _open(client, uri, src)
         diags = await _solved_diagnostics(client, uri)
         errs = [d for d in diags if d.severity == T.DiagnosticSeverity.Error]
         assert all((d.range.start.line, d.range.start.character) == (3, 8) for d in errs), \
