@@ -166,22 +166,23 @@ class DiagnosticSink:
         # (file, start, end, calls): a template's text (an imported file's: end -1) and the
         # calls of its first instance (import)
         self.callers: list[tuple[str, int, int, tuple]] = []
+        self._called: set = set()                    # (file, start, end) of ``callers``
 
     def called(self, span: Span | None, calls) -> None:
         """Record ``calls`` (outermost first) as how the text at ``span`` (a template's
         definition; an imported file: ``Span(file, ...)`` with ``end`` -1) was first reached
         from the program, unless already known or in the program's own file."""
-        if span is None or not span.file or span.file == self.main or not calls:
+        if span is None or span.file == self.main or not calls or not span.file:
             return
-        end = span.end if span.end > span.start else -1
-        if not any(c[0] == span.file and c[1] == span.start and c[2] == end
-                   for c in self.callers):
-            self.callers.append((span.file, span.start, end, tuple(calls)))
+        key = (span.file, span.start, span.end if span.end > span.start else -1)
+        if key not in self._called:      # once per template (a loop makes thousands)
+            self._called.add(key)
+            self.callers.append((*key, tuple(calls)))
 
     def follow(self, other: "DiagnosticSink") -> None:
         """Place diagnostics as ``other`` does (its program's file and the template calls it
         recorded): a later stage's own sink, such as a preview's deferred shape checks."""
-        self.main, self.callers = other.main, other.callers
+        self.main, self.callers, self._called = other.main, other.callers, other._called
 
     def callers_of(self, span: Span) -> tuple:
         """The calls (outermost first) that reach ``span`` in another file: the innermost
