@@ -151,8 +151,9 @@ class DiagnosticSink:
     A diagnostic located in another file than the program compiled (``main``: a template of
     the standard library or of an imported file) is moved to the call in the program
     (:func:`at_call_site`): to the live call stack ``calls`` while the interpreter runs a
-    template instance or loads an import, else to the first call of the template (or import
-    of the file) whose text holds it, recorded in ``callers``."""
+    template instance or loads an import; later (the solve, the shape checks) to the calls
+    the stage gives, else to the instance the message names (``owners``), else to the first
+    call of the template (or import of the file) whose text holds it (``callers``)."""
 
     def __init__(self) -> None:
         self.items: list[Diagnostic] = []
@@ -167,13 +168,19 @@ class DiagnosticSink:
         # calls of its first instance (import)
         self.callers: list[tuple[str, int, int, tuple]] = []
         self._called: set = set()                    # (file, start, end) of ``callers``
+        # the path of each instance of a template of another file -> its calls: a later
+        # stage's diagnostic naming a structure inside one is at that instance's call
+        self.owners: dict[str, tuple] = {}
 
-    def called(self, span: Span | None, calls) -> None:
+    def called(self, span: Span | None, calls, owner: str | None = None) -> None:
         """Record ``calls`` (outermost first) as how the text at ``span`` (a template's
         definition; an imported file: ``Span(file, ...)`` with ``end`` -1) was first reached
-        from the program, unless already known or in the program's own file."""
+        from the program, unless already known or in the program's own file; ``owner``: the
+        path of the instance they made (``plate.b``)."""
         if span is None or span.file == self.main or not calls or not span.file:
             return
+        if owner is not None:
+            self.owners[owner] = tuple(calls)
         key = (span.file, span.start, span.end if span.end > span.start else -1)
         if key not in self._called:      # once per template (a loop makes thousands)
             self._called.add(key)
@@ -183,6 +190,23 @@ class DiagnosticSink:
         """Place diagnostics as ``other`` does (its program's file and the template calls it
         recorded): a later stage's own sink, such as a preview's deferred shape checks."""
         self.main, self.callers, self._called = other.main, other.callers, other._called
+        self.owners = other.owners
+
+    def instance_of(self, d: Diagnostic) -> tuple:
+        """The calls that reach ``d``'s span in another file: those of the instance its
+        message names (a structure inside an instance of the template holding the span:
+        `plate.b.eye`), else the template's first call (:meth:`callers_of`)."""
+        first = self.callers_of(d.span)
+        if not first or not self.owners:
+            return first
+        import re
+        for name in re.findall(r"`([A-Za-z_][\w.\[\]]*)`", d.message):
+            parts = name.split(".")
+            for k in range(len(parts), 0, -1):
+                calls = self.owners.get(".".join(parts[:k]))
+                if calls is not None and calls[-1][0] == first[-1][0]:
+                    return calls
+        return first
 
     def callers_of(self, span: Span) -> tuple:
         """The calls (outermost first) that reach ``span`` in another file: the innermost
@@ -200,11 +224,11 @@ class DiagnosticSink:
         there (found by key: a flood of 100,000 errors stays linear).  A diagnostic located
         in another file than ``main`` is first moved to the program's call
         (:func:`at_call_site`) by ``calls`` (outermost first) when given, else by the live
-        call stack or the recorded callers."""
+        call stack, else by the instance its message names (:meth:`instance_of`)."""
         if d.fix is None and d.suggestions and d.span is not None and d.code in ("E0101", "E0102", "E0103"):
             d.fix = Fix(d.span, d.suggestions[0])      # the span is exactly the misspelt name
         if self.main and d.span is not None and d.span.file and d.span.file != self.main:
-            at_call_site(d, calls or self.calls or self.callers_of(d.span), self.main)
+            at_call_site(d, calls or self.calls or self.instance_of(d), self.main)
         if self._indexed != len(self.items):            # ``items`` was edited in place
             self._keys = {(x.code, x.span, x.message) for x in self.items}
         key = (d.code, d.span, d.message)

@@ -247,6 +247,19 @@ def test_a_conflict_inside_the_second_call_is_at_the_second_call(tmp_path):
     assert "line 3 of " in e.hint and "line 2 of " in e.hint
 
 
+def test_a_shape_warning_is_at_the_call_of_the_instance_it_names(tmp_path):
+    """A shape check's warning on the second instance of a std template (its eye refilled by
+    the plate) is at the second call: the instance its message names, not the first call."""
+    src = ('import "std/shapes.aidl"\nsolid plate {\n'
+           "    body = Rectangle(center=(0, 0), width=100, height=100)\n"
+           "    a = rounded_tab(cx=0 mm, cy=200 mm)\n    b = rounded_tab(cx=0 mm, cy=0 mm)\n}\n")
+    r = aidl_lang.compile(source=src, path=tmp_path / "m.aidl")
+    (w,) = [d for d in r.diagnostics if d.code == "W0501"]
+    assert "`plate.b.eye`" in w.message and (w.span.line, w.span.col) == (5, 9)
+    assert w.labels[0].message.startswith("inside `rounded_tab`, at std/shapes.aidl:")
+    assert _line(w.labels[0].span.file, w.labels[0].span.line).strip() == "hole eye {"
+
+
 def test_a_line_named_inside_a_template_says_its_file(tmp_path):
     """A message or hint naming a line of the template names the file too, and a fix located
     in the template is left out (the user edits the call)."""

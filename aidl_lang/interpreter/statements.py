@@ -648,7 +648,7 @@ class Statements:
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         self.sink.calls.append((f"`{d.name}`", call.span))      # errors inside: at the call
-        self.sink.called(d.span, self.sink.calls)
+        self.sink.called(d.span, self.sink.calls, child.path)
         saved_file = self.file
         tscope = Scope(t.scope, child, t.scope.file)
         self.file = t.scope.file
