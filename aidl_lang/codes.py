@@ -298,7 +298,8 @@ by other errors.
     "E0405": ("assertion failed", """
 An `assert` statement's condition is false at the solved values (every false one is reported;
 after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
-after it and the values found, in the file's units. An `assert` is a check, not a constraint: the
+after it and the values found, in the file's units; one inside a template of another file (the standard
+library's, an imported one) is reported at the template's call, its own line a note. An `assert` is a check, not a constraint: the
 solver never moves geometry to satisfy it. Change the values or constraints so that it holds.
 
     param width = 400 mm

@@ -170,19 +170,89 @@ class EvalError(Exception):
 
 
 class DiagnosticSink:
-    """Collects diagnostics; remembers source text per file for rendering."""
+    """Collects diagnostics; remembers source text per file for rendering.
+
+    A diagnostic located in another file than the program compiled (``main``: a template of
+    the standard library or of an imported file) is moved to the call in the program
+    (:func:`at_call_site`): to the live call stack ``calls`` while the interpreter runs a
+    template instance or loads an import; later (the solve, the shape checks) to the calls
+    the stage gives, else to the instance the message names (``owners``), else to the first
+    call of the template (or import of the file) whose text holds it (``callers``)."""
 
     def __init__(self) -> None:
         self.items: list[Diagnostic] = []
         self.sources: dict[str, str] = {}
         self._keys: set = set()      # (code, span, message) of ``items``, when ``_indexed`` long
         self._indexed = 0
+        self.main: str | None = None                  # the file of the program compiled
+        # the template instances and imports being run, outermost first: (what, call span),
+        # what as a message names it ("`spur_gear`", "the file `lib.aidl`")
+        self.calls: list[tuple[str, Span]] = []
+        # (file, start, end, calls): a template's text (an imported file's: end -1) and the
+        # calls of its first instance (import)
+        self.callers: list[tuple[str, int, int, tuple]] = []
+        self._called: set = set()                    # (file, start, end) of ``callers``
+        # the path of each instance of a template of another file -> its calls: a later
+        # stage's diagnostic naming a structure inside one is at that instance's call
+        self.owners: dict[str, tuple] = {}
 
-    def add(self, d: Diagnostic) -> Diagnostic:
+    def called(self, span: Span | None, calls, owner: str | None = None) -> None:
+        """Record ``calls`` (outermost first) as how the text at ``span`` (a template's
+        definition; an imported file: ``Span(file, ...)`` with ``end`` -1) was first reached
+        from the program, unless already known or in the program's own file; ``owner``: the
+        path of the instance they made (``plate.b``)."""
+        if span is None or span.file == self.main or not calls or not span.file:
+            return
+        if owner is not None:
+            self.owners[owner] = tuple(calls)
+        key = (span.file, span.start, span.end if span.end > span.start else -1)
+        if key not in self._called:      # once per template (a loop makes thousands)
+            self._called.add(key)
+            self.callers.append((*key, tuple(calls)))
+
+    def follow(self, other: "DiagnosticSink") -> None:
+        """Place diagnostics as ``other`` does (its program's file and the template calls it
+        recorded): a later stage's own sink, such as a preview's deferred shape checks."""
+        self.main, self.callers, self._called = other.main, other.callers, other._called
+        self.owners = other.owners
+
+    def instance_of(self, d: Diagnostic) -> tuple:
+        """The calls that reach ``d``'s span in another file: those of the instance its
+        message names (a structure inside an instance of the template holding the span:
+        `plate.b.eye`), else the template's first call (:meth:`callers_of`)."""
+        first = self.callers_of(d.span)
+        if not first or not self.owners:
+            return first
+        import re
+        for name in re.findall(r"`([A-Za-z_][\w.\[\]]*)`", d.message):
+            parts = name.split(".")
+            for k in range(len(parts), 0, -1):
+                calls = self.owners.get(".".join(parts[:k]))
+                if calls is not None and calls[-1][0] == first[-1][0]:
+                    return calls
+        return first
+
+    def callers_of(self, span: Span) -> tuple:
+        """The calls (outermost first) that reach ``span`` in another file: the innermost
+        recorded template text holding it, else its file's import; () when none."""
+        best, size = (), None
+        for file, a, b, calls in self.callers:
+            if file == span.file and a <= span.start and (b < 0 or span.start < b):
+                n = float("inf") if b < 0 else b - a
+                if size is None or n < size:
+                    best, size = calls, n
+        return best
+
+    def add(self, d: Diagnostic, calls=None) -> Diagnostic:
         """Append ``d`` unless a diagnostic with the same code, span and message is already
-        there (found by key: a flood of 100,000 errors stays linear)."""
+        there (found by key: a flood of 100,000 errors stays linear).  A diagnostic located
+        in another file than ``main`` is first moved to the program's call
+        (:func:`at_call_site`) by ``calls`` (outermost first) when given, else by the live
+        call stack, else by the instance its message names (:meth:`instance_of`)."""
         if d.fix is None and d.suggestions and d.span is not None and d.code in ("E0101", "E0102", "E0103"):
             d.fix = Fix(d.span, d.suggestions[0])      # the span is exactly the misspelt name
+        if self.main and d.span is not None and d.span.file and d.span.file != self.main:
+            at_call_site(d, calls or self.calls or self.instance_of(d), self.main)
         if self._indexed != len(self.items):            # ``items`` was edited in place
             self._keys = {(x.code, x.span, x.message) for x in self.items}
         key = (d.code, d.span, d.message)
@@ -193,12 +263,12 @@ class DiagnosticSink:
         return d
 
     def error(self, code: str, message: str, span: Span | None, hint: str | None = None,
-              **kw) -> Diagnostic:
-        return self.add(Diagnostic(code, message, span, "error", hint, **kw))
+              calls=None, **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "error", hint, **kw), calls)
 
     def warning(self, code: str, message: str, span: Span | None, hint: str | None = None,
-                **kw) -> Diagnostic:
-        return self.add(Diagnostic(code, message, span, "warning", hint, **kw))
+                calls=None, **kw) -> Diagnostic:
+        return self.add(Diagnostic(code, message, span, "warning", hint, **kw), calls)
 
     @property
     def has_errors(self) -> bool:
@@ -206,6 +276,44 @@ class DiagnosticSink:
 
     def errors(self) -> list[Diagnostic]:
         return [d for d in self.items if d.is_error]
+
+
+def at_call_site(d: Diagnostic, calls, main: str) -> Diagnostic:
+    """Move ``d``, located in a template or an imported file, to the program's call (issue 86).
+
+    ``calls`` are ``(what, span)`` outermost first: the call in ``main`` becomes the primary
+    span; each call between (inside a template of another file) is a note ("inside
+    `gear_train`: `spur_gear` is called here"), and the original place the last note
+    ("inside `spur_gear`, at std/gears.aidl:17:5"), before ``d``'s own labels.  A fix in
+    another file is dropped (the user edits the call), and a "line N" in the message or
+    the hint names its file.  Unchanged when ``calls`` does not start in ``main``.  Returns ``d``."""
+    calls = [c for c in calls if c[1] is not None]
+    if not calls or calls[0][1].file != main or d.span is None:
+        return d
+    sp = d.span
+    notes = [Label(s, f"inside {calls[i][0]}: {what} is "
+                      f"{'imported' if what.startswith('the file') else 'called'} here",
+                   primary=False)
+             for i, (what, s) in enumerate(calls[1:])]
+    where = f"{shown_path(sp.file)}:{sp.line}:{sp.col}"
+    notes.append(Label(sp, f"inside {calls[-1][0]}, at {where}", primary=False))
+    d.labels = notes + list(d.labels)
+    d.span = calls[0][1]
+    if d.fix is not None and d.fix.span is not None and d.fix.span.file != main:
+        d.fix = None
+    d.message, d.hint = _lines_of(d.message, sp.file), _lines_of(d.hint, sp.file)
+    return d
+
+
+def _lines_of(text: str | None, file: str) -> str | None:
+    """``text`` with each "line N" that names no file said to be of ``file`` ("line 31 of
+    std/gears.aidl"): a diagnostic moved to the call names lines of the template."""
+    if not text or "line " not in text:
+        return text
+    import re
+    shown = shown_path(file)
+    return re.sub(r"(?<!\.aidl )\b(line \d+)\b(?! of )", lambda m: f"{m.group(1)} of {shown}",
+                  text)
 
 
 def did_you_mean(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:

@@ -89,6 +89,8 @@ class Interpreter(Statements, Calls, Expressions):
         records) that reference counting frees, and the collector's full passes over a large
         heap were up to half the time (docs/dev/performance.md, "The interpreter").  What a run
         makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
+        if self.sink.main is None:       # diagnostics in other files: at the call (issue 86)
+            self.sink.main = program.path
         with gc_paused():
             try:
                 return Statements.run(self, program)
@@ -181,8 +183,9 @@ class Interpreter(Statements, Calls, Expressions):
             e = self._override_misuse(e)
             if e is None:
                 return
-        key = (e.code, e.span)
-        if key in self.reported:         # the same error in every iteration of a loop: once
+        # the same error in every iteration of a loop: once (per call of the template it is in)
+        key = (e.code, e.span, self.sink.calls[0][1] if self.sink.calls else None)
+        if key in self.reported:
             return
         self.reported.add(key)
         self.sink.add(Diagnostic(e.code, e.message, e.span, "error", e.hint,

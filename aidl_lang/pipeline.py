@@ -332,7 +332,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                     drawing = render_model(model, deadline)
                 for g, message, hint, *code in drawing.shape_errors:
                     sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
-                                        hint=hint))
+                                        hint=hint), calls=instance_calls(g.owner))
                 check_stray_holes(sink, drawing, deadline)
                 if shape_checks:
                     stage = "the shape checks"
@@ -416,10 +416,24 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
         return
     from .geometry.assertions import describe, failed
     for a, bad in failed(model, held_only):
-        sink.error("E0405", describe(a, bad), a.span,
-                   hint="an `assert` states what must be true of the design; change the values "
-                        "or constraints so that it holds (it is not a constraint: the solver "
-                        "does not try to satisfy it)")
+        sink.add(Diagnostic("E0405", describe(a, bad), a.span, "error",
+                            hint="an `assert` states what must be true of the design; change "
+                                 "the values or constraints so that it holds (it is not a "
+                                 "constraint: the solver does not try to satisfy it)"),
+                 calls=instance_calls(a.owner))
+
+
+def instance_calls(s) -> list:
+    """The template calls (outermost first: ``("`name`", call span)``) that made structure
+    ``s`` or the instance it is in: where a diagnostic on its geometry, constraints or
+    asserts in a template's file is reported (:func:`aidl_lang.diagnostics.at_call_site`;
+    one on a structure itself, whose span is in its parent's text: ``s.parent``'s)."""
+    out = []
+    while s is not None:
+        if s.template:
+            out.append((f"`{s.template}`", s.span))
+        s = s.parent
+    return out[::-1]
 
 
 def check_branches(sink: DiagnosticSink, model: Model) -> None:
@@ -433,7 +447,8 @@ def check_branches(sink: DiagnosticSink, model: Model) -> None:
                 sink.warning("W0403", f"`{c.describe()}` ended on another branch than it started "
                              "on: a line now points the opposite way", c.span,
                              hint="give starting positions closer to the intended shape, so "
-                                  "the nearest branch is the one you mean")
+                                  "the nearest branch is the one you mean",
+                             calls=instance_calls(c.owner))
                 break
 
 
@@ -476,7 +491,8 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         sink.add(Diagnostic("W0401", msg, c.span, "warning",
                             hint="harmless now, but if one of these values changes the model "
                                  "becomes over-constrained; drop one of them only if it repeats "
-                                 "the same intent", labels=labels))
+                                 "the same intent", labels=labels),
+                 calls=instance_calls(c.owner))
     return len(skipped)
 
 
@@ -512,7 +528,7 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
               f"`{name}.bb.center == (..., ...)`")
         sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
                      f"`{part.path if part is not None else t.path}`: only its starting "
-                     "position places it there", t.span,
+                     "position places it there", t.span, calls=instance_calls(t.parent),
                      hint=f"tie it to a shape of its part with a constraint in the parent "
                           f"(e.g. {ex}); `Fixed({name})` holds it only where the part is "
                           "fixed too; where the whole part sits may stay free, that is "
@@ -583,7 +599,7 @@ def _report_groups(sink: DiagnosticSink, reds: list) -> set:
             "W0401", f"{names} say the same thing: each follows from the "
                      f"{'other' if len(members) == 2 else 'others'}{also}, so "
                      f"{len(drop)} of the {len(members)} can go", drop[0].span, "warning",
-            hint=hint, labels=labels))
+            hint=hint, labels=labels), calls=instance_calls(drop[0].owner))
     return done
 
 
@@ -684,7 +700,7 @@ def _against_held(sink: DiagnosticSink, model: Model, c) -> bool:
         c.span, "error",
         hint="a size given to a constructor is held, not solved: give the constructor the "
              f"size you want and drop `{c.describe()}`, or change it to agree",
-        labels=labels))
+        labels=labels), calls=instance_calls(c.owner))
     return True
 
 
@@ -725,7 +741,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
                   "others" + _rigid_note(first.owner) + _literal_note(items)),
-            labels=labels))
+            labels=labels), calls=instance_calls(first.owner))
         shown += 1
     if shown:
         return
@@ -757,4 +773,4 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
               f"constructors: {names}. Check that no two of them demand different values "
               "for the same thing, and that the starting positions are near the intended "
               "shape"),
-        labels=labels))
+        labels=labels), calls=instance_calls(first.owner))

@@ -65,7 +65,9 @@ def test_stdlib_locations_read_std_not_the_install_path():
     src = 'import "std/gears.aidl"\nsolid part {\n    p = spur_gear(teeth=12, module=1 mm, bore=30 mm)\n}\n'
     rc, _, err = run_cli("check", _write(src, "bore"))
     assert rc == 1
-    assert "std/gears.aidl:32:5: error[E0405]" in err, err
+    # at the call (issue 86), the template's line a note that reads std/
+    assert "bore.aidl:3:9: error[E0405]" in err, err
+    assert "  --> std/gears.aidl:32:5\n" in err and "inside `spur_gear`, at std/gears.aidl:32:5" in err
     assert "/stdlib/" not in err and "site-packages" not in err
 
 

@@ -235,7 +235,11 @@ def test_gear_with_pointed_teeth_is_a_located_error(tmp_path):
     assert not r.ok
     (e,) = r.errors
     assert e.code == "E0405" and "teeth come to a point" in e.message
-    assert e.span.file.endswith("gears.aidl")
+    # at the call in the program (issue 86), the template's assert a note
+    assert (e.span.file, e.span.line) == (str(p), 2)
+    note = e.labels[0]
+    assert note.span.file.endswith("gears.aidl") and "inside `spur_gear`" in note.message
+    assert "assert tip_half > 0" in open(note.span.file).read().splitlines()[note.span.line - 1]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -138,16 +138,18 @@ def test_a_drawing_opens_as_it_is_with_drawing2d(client, sid):
     assert v["ok"], v["diagnostics"]
 
 
-def test_a_standard_library_message_is_located_in_the_library_file(client, sid):
-    """The planetary set at planet = 8 has messages in std/gears.aidl: their spans name that
-    file as the program imports it (the page shows std/gears.aidl:298:5), never the server's
-    path to it nor a bare line number the page would put in the user's program."""
+def test_a_standard_library_message_is_located_at_the_call(client, sid):
+    """The planetary set at planet = 8 has messages raised in std/gears.aidl: they are at the
+    call of `planetary` in the program (issue 86), the library's line named in their text as
+    the program imports it (std/gears.aidl:298:5), never the server's path to it."""
     form = (ROOT / "aidl_lang" / "studio" / "forms" / "planetary.aidl").read_text()
     v = client.post("/api/view", json={"sid": sid, "source": form, "values": {"planet": "8"}}).json()
     spans = [d["span"] for d in v["diagnostics"] if d.get("span")]
     assert spans, v["diagnostics"]
     assert all(not s["file"].startswith("/") for s in spans), spans
-    assert {s["file"] for s in spans} == {"std/gears.aidl"}
+    call = form.splitlines().index(next(x for x in form.splitlines() if "= planetary(" in x)) + 1
+    assert {(s["file"], s["line"]) for s in spans} == {("SESSION/main.aidl", call)}
+    assert all("  --> std/gears.aidl:" in d["rendered"] for d in v["diagnostics"])
     text = str(v)
     assert str(ROOT) not in text
 

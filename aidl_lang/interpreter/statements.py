@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from .. import ast as A
-from ..diagnostics import EvalError, did_you_mean
+from ..diagnostics import EvalError, Span, did_you_mean
 from ..geometry.bbox import contains_bbox
 from ..geometry.model import Constraint, Equation, Model, Structure
 from ..geometry.members import member as geom_member
@@ -283,14 +283,20 @@ class Statements:
                 text = read_import(target, raw)
             except ImportRefused as ex:
                 raise EvalError(ex.code, ex.message, st.path_span, hint=ex.hint)
-            prog = parse_import(text, key, self.sink)
-            self.loading.append(key)
-            saved = (self.scope, self.file)
+            # errors in the file (its syntax, its constants): at the import
+            self.sink.calls.append((f"the file `{raw}`", st.span))
+            self.sink.called(Span(key, 1, 1, 1, 1, 0, -1), self.sink.calls)
             try:
-                self.loaded[key] = self._load_file_decls(prog, is_main=False)
+                prog = parse_import(text, key, self.sink)
+                self.loading.append(key)
+                saved = (self.scope, self.file)
+                try:
+                    self.loaded[key] = self._load_file_decls(prog, is_main=False)
+                finally:
+                    self.scope, self.file = saved
+                    self.loading.pop()
             finally:
-                self.scope, self.file = saved
-                self.loading.pop()
+                self.sink.calls.pop()
         sub = self.loaded[key]
         if st.alias:
             fctx.scope.vars[st.alias] = Namespace(st.alias, sub.scope)
@@ -641,6 +647,8 @@ class Statements:
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
+        self.sink.calls.append((f"`{d.name}`", call.span))      # errors inside: at the call
+        self.sink.called(d.span, self.sink.calls, child.path)
         saved_file = self.file
         tscope = Scope(t.scope, child, t.scope.file)
         self.file = t.scope.file
@@ -660,6 +668,7 @@ class Statements:
             self._run_body(child, d.body, tscope)
         finally:
             self.frames.pop()
+            self.sink.calls.pop()
             self.template_depth -= 1
             self.file = saved_file
         return StructRef(child)

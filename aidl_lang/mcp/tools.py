@@ -236,8 +236,23 @@ def _summary(ws: Workspace, r: Result) -> dict:
     if not r.ok:
         n = len(r.errors)
         doc["summary"] = f"{n} error{'s' if n != 1 else ''}: " + "; ".join(
-            f"{d.code} line {d.span.line if d.span else '-'}: {d.message}" for d in r.errors[:5])
+            f"{d.code} line {d.span.line if d.span else '-'}: {d.message}{_inside(d)}"
+            for d in r.errors[:5])
     return doc
+
+
+def _inside(d) -> str:
+    """`` (inside `spur_gear`, at std/gears.aidl:17:5)`` for a diagnostic raised inside a
+    template of another file (its line is the call's: issue 86; templates that call
+    templates: ``inside `gear_pair` > `spur_gear`, at ...``), else ""."""
+    outer = []
+    for lab in d.labels:
+        if not lab.message.startswith("inside "):
+            break
+        if ", at " in lab.message:
+            return f" (inside {' > '.join(outer + [lab.message[7:]])})"
+        outer.append(lab.message[7:].split(": ", 1)[0])
+    return ""
 
 
 def check(ws: Workspace, source: str | None = None, path: str | None = None,

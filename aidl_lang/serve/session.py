@@ -83,7 +83,7 @@ class Session:
         self.version = 0                          # bumps on every load / set_params
         self.shown: tuple | None = None           # (version, Output) of the svg
         self._dof_pending: Solver | None = None
-        self._checks_pending: tuple | None = None  # (version, drawing) of set_params' picture
+        self._checks_pending: tuple | None = None  # (version, drawing, sink) of set_params' picture
         self._base: object = None                 # the defaults' Drawing, then its topology
         self.last: dict = {}                      # timings and warm/cold of the last compile
         from ..limits import DEFAULT_BUDGET
@@ -176,7 +176,8 @@ class Session:
         if res.fctx is not None:
             self.params = self._params(res.fctx, self.values)
         view = self._publish(res, t0)
-        self._checks_pending = (self.version, res.drawing) if res.drawing is not None else None
+        self._checks_pending = ((self.version, res.drawing, res.sink) if res.drawing is not None
+                                else None)
         return view
 
     def update_checks(self) -> dict | None:
@@ -189,6 +190,7 @@ class Session:
             return None
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
+        sink.follow(pending[2])         # what a template made: at its call in the program
         try:
             check_drawing(pending[1], sink)
             self._topology_checks(pending[1], sink)

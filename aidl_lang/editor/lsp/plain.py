@@ -73,12 +73,14 @@ def span_range(src: str, sp: Span, lines: list[str] | None = None) -> dict:
 
 
 def diagnostic_json(src: str, path: str, d, uri: str | None = None,
-                    lines: list[str] | None = None) -> dict:
+                    lines: list[str] | None = None, sources: dict | None = None) -> dict:
     """One pipeline :class:`~aidl_lang.diagnostics.Diagnostic` as an LSP ``Diagnostic`` dict
-    (see the module doc). Diagnostics located in another file (an import) are put on line 1
-    with their location in the message; ``uri`` (the document's) enables
-    ``relatedInformation`` for the labels; suggested fixes go in ``data.fixes``
-    (:func:`fix_edits`)."""
+    (see the module doc). A diagnostic raised inside a template of another file is at its
+    call in the document already (the pipeline moved it: issue 86), the template's place a
+    label; one still located in another file is put on line 1 with its location in the
+    message.  ``uri`` (the document's) enables ``relatedInformation`` for the labels (those
+    in other files with their file's URI, placed by ``sources``); suggested fixes go in
+    ``data.fixes`` (:func:`fix_edits`)."""
     if lines is None:
         lines = split_lines(src)
     msg = d.message
@@ -100,8 +102,9 @@ def diagnostic_json(src: str, path: str, d, uri: str | None = None,
         if href:
             out["codeDescription"] = {"href": href}
     if uri is not None:
-        related = [{"location": {"uri": uri, "range": span_range(src, lab.span, lines)},
-                    "message": lab.message or "here"} for lab in d.labels if lab.span.file == path]
+        related = [{"location": _location(src, path, uri, lab.span, lines, sources),
+                    "message": lab.message or "here"} for lab in d.labels
+                   if lab.span.file == path or _file_uri(lab.span.file)]
         if related:
             out["relatedInformation"] = related
     fixes = fix_edits(src, path, d, lines) if d.span is not None and d.span.file == path else []
@@ -110,10 +113,36 @@ def diagnostic_json(src: str, path: str, d, uri: str | None = None,
     return out
 
 
-def sink_json(src: str, path: str, items, uri: str | None = None) -> list[dict]:
-    """Every diagnostic of a sink's ``items`` as LSP dicts (:func:`diagnostic_json`)."""
+def _file_uri(file: str | None) -> str | None:
+    """The ``file://`` URI of a span's file (another than the document: a template's), or
+    None when it is no absolute path."""
+    if not file or not os.path.isabs(file):
+        return None
+    return Path(file).as_uri()
+
+
+def _location(src: str, path: str, uri: str, sp: Span, lines: list[str],
+              sources: dict | None) -> dict:
+    """The LSP ``Location`` of a label's span: in the document, or in another file (a
+    template's note, issue 86), its range in that file's text from ``sources`` (the
+    columns as characters when it is not there)."""
+    if sp.file == path:
+        return {"uri": uri, "range": span_range(src, sp, lines)}
+    other = (sources or {}).get(sp.file)
+    if other is None:
+        r = rng(pos(max(0, sp.line - 1), max(0, sp.col - 1)),
+                pos(max(0, sp.end_line - 1), max(0, sp.end_col - 1)))
+    else:
+        r = span_range(other, sp)
+    return {"uri": _file_uri(sp.file), "range": r}
+
+
+def sink_json(src: str, path: str, items, uri: str | None = None,
+              sources: dict | None = None) -> list[dict]:
+    """Every diagnostic of a sink's ``items`` as LSP dicts (:func:`diagnostic_json`);
+    ``sources`` (the sink's: file -> text) places the notes in other files."""
     lines = split_lines(src)
-    return [diagnostic_json(src, path, d, uri, lines) for d in items]
+    return [diagnostic_json(src, path, d, uri, lines, sources) for d in items]
 
 
 def fix_edits(src: str, path: str, d, lines: list[str] | None = None) -> list[dict]:

@@ -38,8 +38,10 @@ def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = 
     ``aidl check`` reports, the redundant constraints (``W0401``) included, looked for within
     the same bounds (:data:`aidl_lang.api.REDUNDANCY_SECONDS`, ``REDUNDANCY_ROWS``).
 
-    ``solve=False`` stops after interpretation (cheaper while typing). Diagnostics located in
-    another file (an import) are put on line 1 with their location in the message.  When the
+    ``solve=False`` stops after interpretation (cheaper while typing). A diagnostic raised
+    inside a template of another file is at its call, the template's place in
+    ``relatedInformation``; one still located in another file is put on line 1 with its
+    location in the message.  When the
     file solves and ``values`` is a dict, it receives the solved values of the named entities
     (name -> ``Value.text()``, :mod:`aidl_lang.api`) for :func:`.analysis.value_hover`; ``extra``, a
     dict, receives what :func:`.hints.solved_facts` makes of the solved model (inlay hints and
@@ -60,7 +62,7 @@ def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = 
             from .hints import solved_facts
             extra.update(solved_facts(result))
     from .plain import sink_json
-    return sink_json(src, path, res.sink.items, uri)
+    return sink_json(src, path, res.sink.items, uri, res.sink.sources)
 
 
 class AnalysisTimeout(Exception):
