@@ -73,6 +73,9 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # full-length cuts, per column), `cut_b` (the end cuts).
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
                  kerf_width=0 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> cut {
+    assert width > 0 mm and height > 0 mm, "the hinge's width and height are more than 0"
+    assert pitch > 0 mm and cut > 0 mm and bridge > 0 mm, "the pitch, the cuts and the bridges are more than 0"
+    assert kerf_width >= 0 mm and overrun >= 0 mm, "the kerf width and the overrun are 0 or more"
     period = cut + bridge
     rows = max(1, floor((height - bridge) / period))
     cols = max(1, floor(width / pitch) + 1)
@@ -116,6 +119,8 @@ def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
 # little closer). Members: `ch` (the characters' Texts, spaces left out).
 def text_on_arc(text="AIDL", radius=30 mm, size=5 mm, angle=90 deg, spacing=0.9,
                 cx=0 mm, cy=0 mm) -> drawing {
+    assert radius > 0 mm and size > 0 mm, "the arc's radius and the text's size are more than 0"
+    assert spacing > 0, "the spacing is more than 0"
     n = len(text)
     step = spacing * size / radius * 1 rad
     for i in range(n) {

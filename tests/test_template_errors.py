@@ -57,7 +57,7 @@ TABLE = [
     ("plates", "keyhole", "slot_width=9 mm"),
     ("plates", "slot", "width=-5 mm"),
     ("plates", "living_hinge", "pitch=0 mm"),
-    ("plates", "text_on_arc", "text=5"),
+    ("plates", "text_on_arc", "radius=-30 mm"),
     ("shapes", "washer", "inner=-5 mm"),
     ("shapes", "bolt_circle", "hole_d=-5 mm"),
     ("shapes", "rounded_tab", "length=5 mm"),
@@ -138,6 +138,23 @@ def test_an_error_inside_a_std_template_is_at_the_call(lib, name, args, tmp_path
     assert doc["summary"].split(": ", 1)[1].startswith(f"{r.errors[0].code} line 4: ")
     assert re.search(rf"\(inside `{name}`( > `\w+`)*, at std/{lib}\.aidl:\d+:\d+\)",
                      doc["summary"])
+
+
+@pytest.mark.parametrize("name,args,said", [
+    ("living_hinge", "width=-30 mm", "the hinge's width and height are more than 0"),
+    ("living_hinge", "cut=-5 mm", "the pitch, the cuts and the bridges are more than 0"),
+    ("text_on_arc", "size=-5 mm", "the arc's radius and the text's size are more than 0"),
+    ("text_on_arc", "radius=-30 mm", "the arc's radius and the text's size are more than 0"),
+])
+def test_a_negative_size_of_a_hinge_or_an_arc_of_text_is_refused_at_the_call(name, args, said,
+                                                                             tmp_path):
+    """Found with the table: these compiled without a word (a hinge of negative width cut its
+    slits mirrored, text of negative size was drawn upside down); now each is the template's
+    assert (E0405) at the call, line 4."""
+    p = tmp_path / "t.aidl"
+    r = aidl_lang.compile(source=_program("plates", name, args), path=p)
+    [e] = r.errors
+    assert e.code == "E0405" and said in e.message and (e.span.file, e.span.line) == (str(p), 4)
 
 
 def test_the_issue_s_five_line_program_names_line_4(tmp_path, capsys):
