@@ -436,3 +436,17 @@ def test_lines_that_are_no_message_get_json_rpc_errors_and_the_server_goes_on(tm
     finally:
         p.stdin.close()
         p.wait(30)
+
+
+def test_check_with_dof_does_not_send_the_agent_to_check_with_dof(tmp_path):
+    """Issue 86: with `dof: true` passed, the freedom text still said "call `check` with
+    dof=true for the details"; now it points at the answer's own `structures`."""
+    from aidl_lang.mcp import tools as T
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    hole h { c = Circle(center=(5, 0), radius=2) }\n}\n")
+    ws = T.Workspace(str(tmp_path))
+    plain = T.check(ws, source=src)["freedom"]["text"]
+    asked = T.check(ws, source=src, dof=True)["freedom"]
+    assert "call `check` with dof=true" in plain
+    assert "dof=true" not in asked["text"] and "`structures`" in asked["text"]
+    assert asked["structures"]

@@ -267,7 +267,10 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     doc = _summary(ws, r)
     if r.ok:
         doc["freedom"] = r.freedom(detail=bool(dof))
-        doc["freedom"]["text"] = for_agents(doc["freedom"]["text"])
+        text = doc["freedom"]["text"]
+        if dof:     # the details are in this answer: not "call `check` with dof=true" again
+            text = text.replace(", see --dof", " (each structure in `structures`)")
+        doc["freedom"]["text"] = for_agents(text)
         doc["parts"] = parts
         doc["fit"] = r.fit
     return doc
