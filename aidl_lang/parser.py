@@ -1351,22 +1351,29 @@ def _recovering_parse(text: str, path: str, sink: DiagnosticSink, slashes: list,
     """The statements of ``text``, each syntax error reported to ``sink`` and its logical
     line blanked before the next try (:func:`_blank_logical_line`); None when it gives up: an
     error where one was already, at the end of the text, or more than :data:`MAX_ERRORS`."""
+    return _recovered(text, path, sink, slashes, builder)[0]
+
+
+def _recovered(text: str, path: str, sink: DiagnosticSink, slashes: list,
+               builder: "_Builder") -> tuple[list | None, str]:
+    """:func:`_recovering_parse`'s statements (or None) and the text it parsed last (its
+    error lines blanked: of the same length as ``text``)."""
     seen: set[int] = set()
     for _attempt in range(MAX_ERRORS + 1):
         builder.failed.clear()
         try:
-            return _run_lalr(text, "start")
+            return _run_lalr(text, "start"), text
         except (UnexpectedToken, UnexpectedCharacters) as e:
             pos = _error_pos(e, text)
             if pos in seen or len(seen) >= MAX_ERRORS:
-                return None
+                return None, text
             seen.add(pos)
             _report(e, text, path, pos, sink)
             _slash_hint(sink, slashes, text, pos)
             if pos >= len(text.rstrip()):
-                return None
+                return None, text
             text = _blank_logical_line(text, pos)
-    return None
+    return None, text
 
 
 # a line that starts a top-level declaration whatever the braces before it say: `solid name {`,
@@ -1397,23 +1404,42 @@ def _top_level_pieces(text: str) -> list[tuple[int, int]]:
 def _recover_by_pieces(text: str, path: str, builder: "_Builder") -> list:
     """The statements of every top-level piece of ``text`` (:func:`_top_level_pieces`) that
     parses on its own, with the line recovery of :func:`_recovering_parse` (its errors are not
-    reported again), in order.  Each piece is parsed after a blank of its own length (spaces,
-    then its line breaks), so its spans are those of ``text``."""
-    stmts: list = []
+    reported again), in order.  Each piece is first tried alone (:func:`_repaired_piece`); then
+    the text is parsed once with every repair made and every piece that does not parse blanked
+    (the same length, so every span is that of ``text``): linear in the pieces (parsing each
+    piece after a blank as long as the text before it took 25 s for 12,000 structures)."""
+    out, at = [], 0
     for a, b in _top_level_pieces(text):
-        lines = text.count("\n", 0, a)
-        piece = " " * (a - lines) + "\n" * lines + text[a:b]
-        got = _recovering_parse(piece, path, DiagnosticSink(), [], builder)
-        if got is None and not builder.failed:
-            # a `(` or `[` never closed swallows the piece up to its end, where the error is
-            # found: its own line blanked, the rest of the piece parses
+        fixed = _repaired_piece(text[a:b], path, builder)
+        out += [text[at:a], fixed if fixed is not None else _blank(text[a:b])]
+        at = b
+    out.append(text[at:])
+    stmts, _ = _recovered("".join(out), path, DiagnosticSink(), [], builder)
+    if stmts is None or builder.failed:
+        builder.failed.clear()
+        return []
+    return stmts
+
+
+def _repaired_piece(piece: str, path: str, builder: "_Builder") -> str | None:
+    """``piece`` (one top-level piece) with the lines the line recovery blanks blanked, when it
+    then parses on its own; a ``(`` or ``[`` never closed swallows the piece up to its end,
+    where the error is found: its own line is blanked first.  None when it does not parse."""
+    for attempt in (0, 1):
+        if attempt:
             for at in reversed(_unclosed(piece)):
                 piece = _blank_logical_line(piece, at)
-            got = _recovering_parse(piece, path, DiagnosticSink(), [], builder)
-        if got is not None and not builder.failed:
-            stmts.extend(got)
+        got, parsed = _recovered(piece, path, DiagnosticSink(), [], builder)
+        ok = got is not None and not builder.failed
         builder.failed.clear()
-    return stmts
+        if ok:
+            return parsed
+    return None
+
+
+def _blank(text: str) -> str:
+    """``text`` as blanks of the same length, its line breaks kept."""
+    return re.sub(r"[^\n]", " ", text)
 
 
 def _unclosed(text: str) -> list[int]:
