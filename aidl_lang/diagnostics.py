@@ -223,7 +223,6 @@ class DiagnosticSink:
         first = self.callers_of(d.span)
         if not first or not self.owners:
             return first
-        import re
         for name in re.findall(r"`([A-Za-z_][\w.\[\]]*)`", d.message):
             parts = name.split(".")
             for k in range(len(parts), 0, -1):
@@ -310,7 +309,6 @@ def _lines_of(text: str | None, file: str) -> str | None:
     std/gears.aidl"): a diagnostic moved to the call names lines of the template."""
     if not text or "line " not in text:
         return text
-    import re
     shown = shown_path(file)
     return re.sub(r"(?<!\.aidl )\b(line \d+)\b(?! of )", lambda m: f"{m.group(1)} of {shown}",
                   text)
