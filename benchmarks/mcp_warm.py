@@ -1,6 +1,13 @@
-"""CPU seconds of `aidl mcp`'s cold start and of its first and second `render` (issue 73):
+"""CPU seconds of `aidl mcp`'s cold start and of its first and second `render` (issue 73), and
+the wall seconds an agent waits (issue 86's warm start):
 
     python benchmarks/mcp_warm.py [--cold]     # --cold: the server without its warm-up
+    python benchmarks/mcp_warm.py --wall [N]   # N runs of: spawn -> initialize, then a first render
+
+``--wall`` starts the installed ``aidl`` command (the console script beside this Python, else
+``python -m aidl_lang.cli``) as a client would, times the ``initialize`` answer from the spawn
+and the first ``render`` right after it (no waiting for the warm-up), and prints each run and
+the worst.  Wall time: run it on the machine you mean (it says the load average).
 
 Starts the server with the SDK's stdio client, initialises it (the server process's CPU
 seconds then: the cold start), waits until the warm-up is done (the workers' CPU settles),
@@ -60,5 +67,38 @@ async def main(cold: bool) -> None:
                 print(f"render {k}: {cpu(server) - before:.2f} CPU s")
 
 
+async def wall_once() -> tuple[float, float]:
+    """``(initialize, first render)`` in wall seconds for one fresh server."""
+    from mcp.client.session import ClientSession
+    from mcp.client.stdio import stdio_client
+    root = tempfile.mkdtemp()
+    Path(root, "plate.aidl").write_text(M.PLATE)
+    params = M.server_params(root)
+    script = Path(sys.executable).with_name("aidl")
+    if script.exists():
+        params.command, params.args = str(script), ["mcp", "--root", root]
+    start = time.perf_counter()
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            ready = time.perf_counter()
+            r = await session.call_tool("render", {"path": "plate.aidl", "output": "plate.svg"})
+            assert not r.is_error, r
+            return ready - start, time.perf_counter() - ready
+
+
+def wall(runs: int) -> None:
+    times = [asyncio.run(wall_once()) for _ in range(runs)]
+    for k, (init, first) in enumerate(times, 1):
+        print(f"run {k}: initialize {init:.2f} s, first render {first:.2f} s (wall)")
+    print(f"worst: initialize {max(t[0] for t in times):.2f} s, first render "
+          f"{max(t[1] for t in times):.2f} s; load average {os.getloadavg()[0]:.1f}")
+
+
 if __name__ == "__main__":
-    asyncio.run(main("--cold" in sys.argv[1:]))
+    args = sys.argv[1:]
+    if "--wall" in args:
+        rest = [a for a in args if a.isdigit()]
+        wall(int(rest[0]) if rest else 5)
+    else:
+        asyncio.run(main("--cold" in args))
