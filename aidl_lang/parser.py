@@ -996,10 +996,14 @@ class _Lines:
 
     def continued(self, toks: list) -> None:
         """Mark the lines that start inside an open ``(`` or ``[`` (an expression carried on):
-        :meth:`stmt` gives them the indentation of the line the statement starts on."""
+        :meth:`stmt` gives them the indentation of the line the statement starts on.  A ``{``
+        or ``}`` ends any expression left open (blocks are statements: no expression holds
+        one), so one unclosed ``(`` does not make the rest of the file its continuation."""
         self.cont = [False] * (len(self.indent) + 1)
         depth, line = 0, 1
         for t, sp in toks:
+            if t in ("LBRACE", "RBRACE"):
+                depth = 0
             if sp.line > line:
                 for k in range(line + 1, sp.line + 1):
                     self.cont[k - 1] = depth > 0
@@ -1008,12 +1012,14 @@ class _Lines:
                 depth += 1
             elif t in ("RPAR", "RSQB") and depth:
                 depth -= 1
+        self.start = list(range(len(self.cont) + 1))     # line -> the line its statement starts on
+        for k in range(2, len(self.cont) + 1):
+            if self.cont[k - 1]:
+                self.start[k] = self.start[k - 1]
 
     def stmt(self, line: int) -> int | None:
         """The indentation of the statement that ``line`` is part of."""
-        while line > 1 and self.cont[line - 1]:
-            line -= 1
-        return self.of(line)
+        return self.of(self.start[line] if 0 < line < len(self.start) else line)
 
     def first_on_line(self, sp) -> bool:
         ln = self.lines[sp.line - 1]

@@ -151,3 +151,29 @@ def test_the_recovery_by_pieces_grows_linearly_with_the_file(monkeypatch):
     the file).  Now each piece is tried alone and the file parsed once with the repairs."""
     small, large = _lexed_by_recovery(250, monkeypatch), _lexed_by_recovery(1000, monkeypatch)
     assert large <= 4.6 * small, (small, large)
+
+
+def test_one_unclosed_paren_is_weighed_once_not_at_every_later_brace(monkeypatch):
+    """The `(` left open in one of 3,000 structures made every later line a continuation of
+    its expression (blocks cannot be inside one), so each later `}` was weighed against the
+    rest of the file (129 look-aheads, and the statement's start found by walking back every
+    line: 12,000 structures took 13 s in `_bracket_problems`).  Now the `}` ends it: one
+    look-ahead, and the problem is still reported at the `(`'s line with the line to close."""
+    from aidl_lang import parser
+    calls = []
+    real = parser._plain_cost
+
+    def counted(toks, i, stack):
+        calls.append(len(toks) - i)
+        return real(toks, i, stack)
+    monkeypatch.setattr(parser, "_plain_cost", counted)
+    n = 3000
+    parts = [f"solid s{i} {{\n    c = Circle(center=({i}, 0), radius=1)\n}}" for i in range(n)]
+    parts[1500] = parts[1500].replace("radius=1)", "radius=1")
+    problems = parser._bracket_problems("\n".join(parts) + "\n", "big.aidl")
+    assert len(problems) == 1
+    (_lo, _hi), code, message, span, hint, _labels = problems[0]
+    assert (code, message, span.line) == ("E0001", "`(` is never closed", 3 * 1500 + 2)
+    assert hint == f"add `)` at the end of line {3 * 1500 + 2}, where the statement ends " \
+                   "(the next line starts a new one)"
+    assert len(calls) <= 3, len(calls)
